@@ -1,0 +1,283 @@
+"""Run a model: validate, choose the rung, time it, and never return NaN or inf.
+
+:func:`run` is the one way every caller (the service, the benchmarks, a
+Python user) evaluates a model, so rung selection, timing and the finiteness
+guarantee live in one place. :func:`sweep` evaluates one input over a range,
+the curves the papers plot.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from .errors import BudgetExceeded, EngineError, InputOutOfRange
+from .spec import Check, ModelSpec, RunContext, Value
+
+DEFAULT_TOLERANCE = 0.01
+MAX_SWEEP_POINTS = 2000
+DEFAULT_BUDGET_S = 10.0
+
+
+@dataclass
+class RunResult:
+    """A model evaluation as the service returns it (SI values, units, provenance)."""
+
+    model: str
+    results: dict[str, Value]
+    units: dict[str, str]
+    rung: str
+    error_estimate: float | None
+    elapsed_s: float
+    inputs: dict[str, Any]
+    checks: list[Check] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+    series: dict[str, list[float]] = field(default_factory=dict)
+
+
+@dataclass
+class SweepResult:
+    """One input varied over ``values``; ``results[name][i]`` belongs to ``values[i]``."""
+
+    model: str
+    vary: str
+    values: list[float]
+    results: dict[str, list[Value]]
+    units: dict[str, str]
+    rung: str
+    elapsed_s: float
+    notes: list[str] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+
+
+def choose_rung(
+    spec: ModelSpec, inputs: Mapping[str, Any], fidelity: str, tolerance: float
+) -> tuple[str, list[str]]:
+    """Pick the rung to run and say why.
+
+    A named rung runs as asked. ``"auto"`` takes the cheapest rung (the spec
+    lists them cheapest first) whose a-priori error estimate is within
+    ``tolerance``; if none is, the most accurate applicable rung runs and the
+    note says the tolerance was not met.
+    """
+    if fidelity != "auto":
+        if fidelity not in spec.rung_names:
+            raise InputOutOfRange(
+                f"fidelity = {fidelity!r} is not allowed: must be 'auto' or one of "
+                + ", ".join(repr(r) for r in spec.rung_names),
+                field="fidelity",
+            )
+        return fidelity, []
+    applicable: list[tuple[str, float]] = []
+    for rung in spec.rungs:
+        estimate = rung.estimate(inputs)
+        if estimate is None or not math.isfinite(estimate):
+            continue
+        applicable.append((rung.name, estimate))
+        if estimate <= tolerance:
+            skipped = applicable[:-1]
+            why = (
+                f"auto: chose {rung.name!r}, estimated error {estimate:.2g} "
+                f"≤ tolerance {tolerance:.2g}"
+            )
+            if skipped:
+                why += "; cheaper rungs estimated " + ", ".join(f"{n} {e:.2g}" for n, e in skipped)
+            return rung.name, [why]
+    if not applicable:
+        name = spec.rungs[-1].name
+        return name, [f"auto: no rung gave an error estimate; ran {name!r}"]
+    name, estimate = min(applicable, key=lambda item: item[1])
+    return name, [
+        f"auto: no rung meets tolerance {tolerance:.2g}; ran the most accurate, {name!r} "
+        f"(estimated error {estimate:.2g})"
+    ]
+
+
+def _finite(value: Value) -> bool:
+    return not isinstance(value, float) or math.isfinite(value)
+
+
+def run(
+    spec: ModelSpec,
+    inputs: Mapping[str, Any],
+    *,
+    fidelity: str | None = None,
+    tolerance: float | None = None,
+    outputs: Iterable[str] | None = None,
+    budget_s: float | None = DEFAULT_BUDGET_S,
+) -> RunResult:
+    """Evaluate ``spec`` on SI ``inputs``.
+
+    ``outputs`` limits the work to the named outputs and series (all when
+    None). Non-finite values never leave: they become None with a note.
+    """
+    values, warnings = spec.validate(inputs)
+    tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
+    if not (math.isfinite(tol) and 0.0 < tol < 1.0):
+        raise InputOutOfRange(
+            f"tolerance = {tol:g} is not allowed: must be > 0 and < 1", field="tolerance"
+        )
+    known = {o.name for o in spec.outputs}
+    wanted = frozenset(known if outputs is None else outputs)
+    unknown = sorted(wanted - known)
+    if unknown:
+        raise InputOutOfRange(
+            f"unknown output(s) {', '.join(unknown)}; {spec.name} offers "
+            + ", ".join(sorted(known)),
+            field="outputs",
+        )
+    rung, notes = choose_rung(spec, values, fidelity or spec.default_fidelity, tol)
+    start = time.perf_counter()
+    ctx = RunContext(
+        rung=rung,
+        outputs=wanted,
+        tolerance=tol,
+        deadline=None if budget_s is None else start + budget_s,
+    )
+    result = spec.compute(values, ctx)
+    elapsed = time.perf_counter() - start
+
+    units = {o.name: o.unit for o in spec.outputs}
+    scalars: dict[str, Value] = {}
+    series: dict[str, list[float]] = {}
+    notes = notes + result.notes
+    for name, value in result.values.items():
+        if name not in wanted:
+            continue
+        if isinstance(value, np.generic):
+            value = value.item()
+        if not _finite(value):
+            notes.append(f"{name} could not be computed for these inputs (non-finite); null")
+            value = None
+        scalars[name] = value
+    for name, seq in result.series.items():
+        if name not in wanted:
+            continue
+        arr = np.asarray(seq, dtype=float)
+        if not np.all(np.isfinite(arr)):
+            notes.append(f"series {name} had non-finite points; omitted")
+            continue
+        series[name] = arr.tolist()
+    error = result.error_estimate
+    if error is not None and not math.isfinite(error):
+        notes.append("the error estimate is unbounded for these inputs; null")
+        error = None
+    return RunResult(
+        model=spec.name,
+        results=scalars,
+        units={n: units[n] for n in (*scalars, *series)},
+        rung=result.rung,
+        error_estimate=error,
+        elapsed_s=elapsed,
+        inputs=values,
+        checks=result.checks,
+        notes=notes,
+        warnings=warnings + result.warnings,
+        series=series,
+    )
+
+
+def sweep_values(start: float, stop: float, num: int, scale: str = "linear") -> np.ndarray:
+    """The points of a sweep; ``scale="log"`` spaces them geometrically."""
+    if not 2 <= num <= MAX_SWEEP_POINTS:
+        raise InputOutOfRange(
+            f"num = {num} is not allowed: a sweep has 2…{MAX_SWEEP_POINTS} points", field="num"
+        )
+    if scale == "log":
+        if start <= 0 or stop <= 0:
+            raise InputOutOfRange("a log sweep needs start > 0 and stop > 0", field="start")
+        return np.geomspace(start, stop, num)
+    return np.linspace(start, stop, num)
+
+
+def sweep(
+    spec: ModelSpec,
+    base: Mapping[str, Any],
+    vary: str,
+    values: Sequence[float],
+    *,
+    outputs: Iterable[str] | None = None,
+    fidelity: str | None = None,
+    tolerance: float | None = None,
+    budget_s: float | None = DEFAULT_BUDGET_S,
+) -> SweepResult:
+    """Evaluate ``spec`` with ``vary`` set to each of ``values``, the rest from ``base``.
+
+    A point that the model refuses (an infeasible design, say) is None in
+    every output, with one note naming the point and the reason.
+    """
+    try:
+        param = spec.param(vary)
+    except KeyError:
+        raise InputOutOfRange(
+            f"vary = {vary!r} is not an input of {spec.name}", field="vary"
+        ) from None
+    if not param.is_numeric:
+        raise InputOutOfRange(f"vary = {vary!r} is not a numeric input", field="vary")
+    checked = [param.check(int(v) if param.kind == "int" else v) for v in values]
+    wanted = list(outputs) if outputs is not None else None
+    start = time.perf_counter()
+    deadline = None if budget_s is None else start + budget_s
+    names: list[str] = []
+    results: dict[str, list[Value]] = {}
+    notes: list[str] = []
+    warnings: list[str] = []
+    rung = ""
+    for i, value in enumerate(checked):
+        remaining = None if deadline is None else deadline - time.perf_counter()
+        if remaining is not None and remaining <= 0:
+            raise BudgetExceeded(
+                f"sweep stopped after {i} of {len(checked)} points at its {budget_s:g} s budget",
+                field="num",
+            )
+        try:
+            point = run(
+                spec,
+                {**base, vary: value},
+                fidelity=fidelity,
+                tolerance=tolerance,
+                outputs=wanted,
+                budget_s=remaining,
+            )
+        except InputOutOfRange as exc:
+            if exc.field != vary:
+                raise
+            point = None
+            notes.append(f"{vary} = {value:g}: {exc.message}")
+        except EngineError as exc:
+            point = None
+            notes.append(f"{vary} = {value:g}: {exc.message}")
+        if point is not None:
+            rung = rung or point.rung
+            if not names:
+                names = list(point.results)
+                for n in names:
+                    results[n] = [None] * i
+            for n in names:
+                results[n].append(point.results.get(n))
+            for w in point.warnings:
+                if w not in warnings:
+                    warnings.append(w)
+        else:
+            for n in names:
+                results[n].append(None)
+    if not names:
+        notes.append("no point of the sweep could be computed")
+    units = {o.name: o.unit for o in spec.outputs}
+    return SweepResult(
+        model=spec.name,
+        vary=vary,
+        values=[float(v) for v in checked],
+        results=results,
+        units={n: units[n] for n in names},
+        rung=rung,
+        elapsed_s=time.perf_counter() - start,
+        notes=notes,
+        warnings=warnings,
+    )

@@ -1,0 +1,334 @@
+"""How a model declares itself: inputs, outputs, rungs, and the result it returns.
+
+A :class:`ModelSpec` is the one source of truth for a model's inputs, their SI
+units, defaults and valid ranges. The service builds its request schema, the
+form builds its fields and the docs list the model from the same object; the
+engine enforces the same ranges in :meth:`ModelSpec.validate`, so a direct
+Python caller gets the same checks as a REST caller.
+
+Units are SI base units written in a syntax the unit library at the edge can
+parse: ``m``, ``kg``, ``s``, ``N``, ``N*m``, ``Pa``, ``rad``, ``rad/s``,
+``W``, ``J``, ``N/m``, ``N*m/rad``, ``kg*m^2``; ``1`` means dimensionless.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+from .errors import InputOutOfRange
+
+ParamKind = Literal["float", "int", "choice", "bool"]
+OutputKind = Literal["float", "int", "bool", "str"]
+Value = float | int | bool | str | None
+
+
+@dataclass(frozen=True)
+class Param:
+    """One named input of a model.
+
+    ``minimum``/``maximum`` are the hard range (refused outside it, in SI
+    units); ``recommended`` is the range the source recommends (a warning
+    outside it). A param with ``default=None`` and ``required=False`` is
+    optional: absent means "not given", and the model decides what that means.
+    """
+
+    name: str
+    unit: str
+    description: str
+    default: float | int | str | bool | None = None
+    required: bool = False
+    minimum: float | None = None
+    maximum: float | None = None
+    exclusive_minimum: bool = False
+    exclusive_maximum: bool = False
+    recommended: tuple[float, float] | None = None
+    kind: ParamKind = "float"
+    choices: tuple[str, ...] = ()
+    label: str | None = None
+    symbol: str | None = None
+    display_unit: str | None = None
+    group: str | None = None
+
+    @property
+    def is_numeric(self) -> bool:
+        return self.kind in ("float", "int")
+
+    def range_text(self) -> str:
+        """The allowed range in words, e.g. ``> 0 m and ≤ 1 m``."""
+        if self.kind == "choice":
+            return "one of " + ", ".join(repr(c) for c in self.choices)
+        if self.kind == "bool":
+            return "true or false"
+        unit = "" if self.unit == "1" else f" {self.unit}"
+        parts = []
+        if self.minimum is not None:
+            parts.append(f"{'>' if self.exclusive_minimum else '≥'} {self.minimum:g}{unit}")
+        if self.maximum is not None:
+            parts.append(f"{'<' if self.exclusive_maximum else '≤'} {self.maximum:g}{unit}")
+        what = "an integer" if self.kind == "int" else "a finite number"
+        return what + (" " + " and ".join(parts) if parts else "")
+
+    def check(self, value: Any) -> Any:
+        """Return ``value`` converted to this param's kind, or raise InputOutOfRange."""
+        if self.kind == "choice":
+            if value not in self.choices:
+                raise self._error(value)
+            return value
+        if self.kind == "bool":
+            if not isinstance(value, bool):
+                raise self._error(value)
+            return value
+        if isinstance(value, bool) or not isinstance(value, int | float):
+            raise self._error(value)
+        if self.kind == "int":
+            if isinstance(value, float):
+                if not value.is_integer():
+                    raise self._error(value)
+                value = int(value)
+        else:
+            value = float(value)
+            if not math.isfinite(value):
+                raise self._error(value)
+            if value == 0.0:
+                value = 0.0  # fold -0.0
+        lo, hi = self.minimum, self.maximum
+        if lo is not None and (value <= lo if self.exclusive_minimum else value < lo):
+            raise self._error(value)
+        if hi is not None and (value >= hi if self.exclusive_maximum else value > hi):
+            raise self._error(value)
+        return value
+
+    def _error(self, value: Any) -> InputOutOfRange:
+        shown = f"{value:g}" if isinstance(value, float) else repr(value)
+        unit = "" if self.unit == "1" or not self.is_numeric else f" {self.unit}"
+        return InputOutOfRange(
+            f"{self.name} = {shown}{unit} is not allowed: must be {self.range_text()}",
+            field=self.name,
+            minimum=self.minimum,
+            maximum=self.maximum,
+            exclusive_minimum=self.exclusive_minimum,
+            exclusive_maximum=self.exclusive_maximum,
+            unit=self.unit,
+        )
+
+    def describe(self) -> dict[str, Any]:
+        """JSON-ready description for the model catalogue."""
+        return {
+            "name": self.name,
+            "label": self.label or self.name.replace("_", " "),
+            "symbol": self.symbol,
+            "kind": self.kind,
+            "unit": self.unit,
+            "display_unit": self.display_unit or self.unit,
+            "default": self.default,
+            "required": self.required,
+            "minimum": self.minimum,
+            "maximum": self.maximum,
+            "exclusive_minimum": self.exclusive_minimum,
+            "exclusive_maximum": self.exclusive_maximum,
+            "recommended": list(self.recommended) if self.recommended else None,
+            "choices": list(self.choices) or None,
+            "range": self.range_text(),
+            "group": self.group,
+            "description": self.description,
+        }
+
+
+@dataclass(frozen=True)
+class Output:
+    """One named result of a model (scalar) or one time series (``series=True``)."""
+
+    name: str
+    unit: str
+    description: str
+    kind: OutputKind = "float"
+    series: bool = False
+    label: str | None = None
+    display_unit: str | None = None
+
+    def describe(self) -> dict[str, Any]:
+        return {
+            "name": self.name,
+            "label": self.label or self.name.replace("_", " "),
+            "kind": self.kind,
+            "series": self.series,
+            "unit": self.unit,
+            "display_unit": self.display_unit or self.unit,
+            "description": self.description,
+        }
+
+
+@dataclass(frozen=True)
+class Rung:
+    """One way of computing a model, cheapest first in :attr:`ModelSpec.rungs`.
+
+    ``estimate`` gives the a-priori relative error for given inputs, or None
+    where the rung does not apply to them (``fidelity: "auto"`` skips it).
+    """
+
+    name: str
+    description: str
+    estimate: Callable[[Mapping[str, Any]], float | None]
+    typical_error: str = ""
+    typical_time: str = ""
+
+    def describe(self) -> dict[str, Any]:
+        return {
+            "name": self.name,
+            "description": self.description,
+            "typical_error": self.typical_error,
+            "typical_time": self.typical_time,
+        }
+
+
+@dataclass(frozen=True)
+class Check:
+    """A design condition and whether this design meets it, with an actionable sentence."""
+
+    name: str
+    ok: bool
+    detail: str
+
+
+@dataclass
+class Result:
+    """What a model's compute function returns (the runner adds timing and units)."""
+
+    values: dict[str, Value]
+    rung: str
+    error_estimate: float | None
+    checks: list[Check] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+    series: dict[str, list[float]] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class RunContext:
+    """What a compute function is asked for beyond the inputs.
+
+    ``outputs`` is the set of output (and series) names the caller wants;
+    compute only what they need. ``deadline`` is a ``time.perf_counter()``
+    value after which long computations raise BudgetExceeded.
+    """
+
+    rung: str
+    outputs: frozenset[str]
+    tolerance: float
+    deadline: float | None = None
+    max_steps: int = 1_000_000
+
+    def wants(self, *names: str) -> bool:
+        """True if any of ``names`` was asked for."""
+        return any(n in self.outputs for n in names)
+
+
+Compute = Callable[[Mapping[str, Any], RunContext], Result]
+
+
+@dataclass(frozen=True)
+class ModelSpec:
+    """A model: its identity, inputs, outputs, rungs and compute function."""
+
+    name: str
+    path: str
+    title: str
+    family: str
+    summary: str
+    source: str
+    inputs: tuple[Param, ...]
+    outputs: tuple[Output, ...]
+    rungs: tuple[Rung, ...]
+    compute: Compute
+    default_fidelity: str = "auto"
+
+    def __post_init__(self) -> None:
+        names = [p.name for p in self.inputs]
+        if len(set(names)) != len(names):
+            raise ValueError(f"{self.name}: duplicate input names")
+        reserved = {"fidelity", "tolerance", "outputs"}
+        if reserved & set(names):
+            raise ValueError(f"{self.name}: inputs may not use the names {sorted(reserved)}")
+        if not self.rungs:
+            raise ValueError(f"{self.name}: at least one rung is required")
+        if self.default_fidelity not in ("auto", *self.rung_names):
+            raise ValueError(f"{self.name}: unknown default_fidelity {self.default_fidelity!r}")
+
+    @property
+    def rung_names(self) -> tuple[str, ...]:
+        return tuple(r.name for r in self.rungs)
+
+    @property
+    def output_names(self) -> tuple[str, ...]:
+        return tuple(o.name for o in self.outputs)
+
+    def param(self, name: str) -> Param:
+        for p in self.inputs:
+            if p.name == name:
+                return p
+        raise KeyError(name)
+
+    def rung(self, name: str) -> Rung:
+        for r in self.rungs:
+            if r.name == name:
+                return r
+        raise KeyError(name)
+
+    def validate(self, raw: Mapping[str, Any]) -> tuple[dict[str, Any], list[str]]:
+        """Check SI inputs against the declared ranges and fill defaults.
+
+        Returns the complete input dict (optional inputs that were not given
+        are None) and warnings for values outside the source's recommended
+        range. Raises InputOutOfRange naming the first bad field.
+        """
+        known = {p.name for p in self.inputs}
+        for key in raw:
+            if key not in known:
+                raise InputOutOfRange(f"unknown input {key!r} for model {self.name}", field=key)
+        values: dict[str, Any] = {}
+        warnings: list[str] = []
+        for p in self.inputs:
+            given = raw.get(p.name)
+            if given is None:
+                if p.required:
+                    raise InputOutOfRange(f"{p.name} is required", field=p.name)
+                values[p.name] = p.default
+                continue
+            value = p.check(given)
+            values[p.name] = value
+            if p.recommended and p.is_numeric:
+                lo, hi = p.recommended
+                if not lo <= value <= hi:
+                    unit = "" if p.unit == "1" else f" {p.unit}"
+                    warnings.append(
+                        f"{p.name} = {value:g}{unit} is outside the range the source "
+                        f"recommends ({lo:g}…{hi:g}{unit})"
+                    )
+        return values, warnings
+
+    def describe(self) -> dict[str, Any]:
+        """JSON-ready catalogue entry (``GET /api/v1/models``)."""
+        return {
+            "name": self.name,
+            "path": self.path,
+            "title": self.title,
+            "family": self.family,
+            "summary": self.summary,
+            "source": self.source,
+            "default_fidelity": self.default_fidelity,
+            "inputs": [p.describe() for p in self.inputs],
+            "outputs": [o.describe() for o in self.outputs],
+            "rungs": [r.describe() for r in self.rungs],
+        }
+
+
+def fixed_error(error: float) -> Callable[[Mapping[str, Any]], float]:
+    """An ``estimate`` for a rung whose error does not depend on the inputs."""
+
+    def estimate(_: Mapping[str, Any]) -> float:
+        return error
+
+    return estimate

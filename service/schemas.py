@@ -1,0 +1,278 @@
+"""Pydantic request and response models, generated from each model's spec.
+
+Nothing here knows any physics: field names, units, defaults, ranges and
+descriptions all come from :class:`engine.ModelSpec`, so the OpenAPI schema
+cannot drift from what the engine enforces. Ranges are checked by the same
+:meth:`engine.Param.check` the engine uses.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Annotated, Any, Literal
+
+from pydantic import (
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    WithJsonSchema,
+    create_model,
+)
+from pydantic_core import PydanticCustomError
+
+from engine import InputOutOfRange, ModelSpec, Param
+
+from .units import MAX_UNIT_STRING, UnitError, to_si
+
+SIValue = float | int | bool | str | None
+
+
+class CheckOut(BaseModel):
+    name: str
+    ok: bool
+    detail: str
+
+
+class ErrorItem(BaseModel):
+    type: str
+    loc: list[str | int]
+    msg: str
+    field: str | None = None
+    ctx: dict[str, Any] | None = None
+
+
+class ErrorResponse(BaseModel):
+    detail: list[ErrorItem]
+
+
+def _literal(values: tuple[str, ...]) -> Any:
+    """``Literal[values]`` built at run time (the values come from a spec)."""
+    return Literal.__getitem__(values)
+
+
+def _list_of(item: Any) -> Any:
+    return list.__class_getitem__(item)
+
+
+def _number_schema(p: Param) -> dict[str, Any]:
+    schema: dict[str, Any] = {"type": "integer" if p.kind == "int" else "number"}
+    if p.minimum is not None:
+        schema["exclusiveMinimum" if p.exclusive_minimum else "minimum"] = p.minimum
+    if p.maximum is not None:
+        schema["exclusiveMaximum" if p.exclusive_maximum else "maximum"] = p.maximum
+    return schema
+
+
+def _field_schema(p: Param) -> dict[str, Any]:
+    unit = "dimensionless" if p.unit == "1" else p.unit
+    schema: dict[str, Any] = {
+        "title": p.label or p.name.replace("_", " "),
+        "description": f"{p.description} [{unit}; {p.range_text()}]",
+        "anyOf": [
+            _number_schema(p),
+            {
+                "type": "string",
+                "maxLength": MAX_UNIT_STRING,
+                "description": "a number with a unit, e.g. '45 mm'",
+            },
+        ],
+        "x-unit": p.unit,
+    }
+    if not p.required:
+        schema["anyOf"].append({"type": "null"})
+    if p.default is not None:
+        schema["default"] = p.default
+    if p.recommended:
+        schema["x-recommended"] = list(p.recommended)
+    return schema
+
+
+def _numeric_validator(p: Param) -> Callable[[Any], Any]:
+    def validate(value: Any) -> Any:
+        if value is None and not p.required:
+            return None
+        if isinstance(value, str):
+            try:
+                value = to_si(value, p.unit)
+            except UnitError as exc:
+                raise PydanticCustomError(
+                    "unit_error", "{field}: {reason}", {"field": p.name, "reason": str(exc)}
+                ) from None
+        elif isinstance(value, bool) or not isinstance(value, int | float):
+            raise PydanticCustomError(
+                "number_type",
+                "{field} must be a number in {unit} or a string with a unit",
+                {"field": p.name, "unit": p.unit},
+            )
+        try:
+            return p.check(value)
+        except InputOutOfRange as exc:
+            raise PydanticCustomError(
+                "out_of_range", "{msg}", {"msg": exc.message, **_range_ctx(p)}
+            ) from None
+
+    return validate
+
+
+def _range_ctx(p: Param) -> dict[str, Any]:
+    return {
+        "minimum": p.minimum,
+        "maximum": p.maximum,
+        "exclusive_minimum": p.exclusive_minimum,
+        "exclusive_maximum": p.exclusive_maximum,
+        "unit": p.unit,
+    }
+
+
+def _field(p: Param, *, all_optional: bool = False) -> tuple[Any, Any]:
+    """The (type, FieldInfo) pair for one input."""
+    description = p.description
+    if p.kind == "choice":
+        annotation: Any = _literal(p.choices)
+        default = p.default
+        return (
+            annotation if p.required and not all_optional else annotation | None,
+            Field(
+                default=... if p.required and not all_optional else default, description=description
+            ),
+        )
+    if p.kind == "bool":
+        return (
+            bool | None,
+            Field(default=p.default, description=description, strict=True),
+        )
+    annotated = Annotated[
+        Any, BeforeValidator(_numeric_validator(p)), WithJsonSchema(_field_schema(p))
+    ]
+    required = p.required and not all_optional
+    return annotated, Field(default=... if required else p.default, description=description)
+
+
+def _class_name(spec: ModelSpec, suffix: str) -> str:
+    return "".join(part.capitalize() for part in spec.name.replace("/", ".").split(".")) + suffix
+
+
+def inputs_model(spec: ModelSpec, *, all_optional: bool = False) -> type[BaseModel]:
+    """A model holding only ``spec``'s inputs (unknown fields are refused)."""
+    fields: dict[str, Any] = {p.name: _field(p, all_optional=all_optional) for p in spec.inputs}
+    suffix = "SweepBase" if all_optional else "Inputs"
+    return create_model(
+        _class_name(spec, suffix),
+        __config__=ConfigDict(extra="forbid"),
+        **fields,
+    )
+
+
+def _fidelity_type(spec: ModelSpec) -> Any:
+    return _literal(("auto", *spec.rung_names))
+
+
+def request_model(spec: ModelSpec) -> type[BaseModel]:
+    """The body of ``POST /api/v1<path>``: inputs plus fidelity, tolerance and outputs."""
+    output_names = _literal(spec.output_names)
+    return create_model(
+        _class_name(spec, "Request"),
+        __base__=inputs_model(spec),
+        fidelity=(
+            _fidelity_type(spec),
+            Field(
+                default=spec.default_fidelity,
+                description="'auto' picks the cheapest rung whose error estimate meets "
+                "`tolerance`; or name a rung",
+            ),
+        ),
+        tolerance=(
+            float | None,
+            Field(default=None, gt=0, lt=1, description="relative tolerance for 'auto' (0.01)"),
+        ),
+        outputs=(
+            _list_of(output_names) | None,
+            Field(
+                default=None,
+                max_length=len(spec.outputs),
+                description="compute only these outputs (all when absent)",
+            ),
+        ),
+    )
+
+
+def results_model(spec: ModelSpec) -> type[BaseModel]:
+    """The ``results`` object: each scalar output, present when it was asked for."""
+    kinds: dict[str, Any] = {"float": float, "int": int, "bool": bool, "str": str}
+    fields: dict[str, Any] = {}
+    for o in spec.outputs:
+        if o.series:
+            continue
+        unit = "dimensionless" if o.unit == "1" else o.unit
+        fields[o.name] = (
+            kinds[o.kind] | None,
+            Field(default=None, description=f"{o.description} [{unit}]"),
+        )
+    return create_model(_class_name(spec, "Results"), **fields)
+
+
+def response_model(spec: ModelSpec) -> type[BaseModel]:
+    return create_model(
+        _class_name(spec, "Response"),
+        model=(str, Field(description="model name")),
+        results=(results_model(spec), Field(description="requested outputs, SI values")),
+        units=(dict[str, str], Field(description="SI unit of each result and series")),
+        rung=(str, Field(description="the rung that ran")),
+        error_estimate=(
+            float | None,
+            Field(description="estimated relative error of the results (null: not known)"),
+        ),
+        elapsed_s=(float, Field(description="compute time, seconds")),
+        checks=(list[CheckOut], Field(default_factory=list)),
+        notes=(list[str], Field(default_factory=list)),
+        warnings=(list[str], Field(default_factory=list)),
+        series=(
+            dict[str, list[float]],
+            Field(default_factory=dict, description="time series for plots, SI values"),
+        ),
+        inputs=(
+            dict[str, SIValue],
+            Field(default_factory=dict, description="every input used, defaults filled, SI"),
+        ),
+    )
+
+
+def sweep_request_model(spec: ModelSpec) -> type[BaseModel]:
+    numeric = tuple(p.name for p in spec.inputs if p.is_numeric)
+    scalar_outputs = tuple(o.name for o in spec.outputs if not o.series)
+    return create_model(
+        _class_name(spec, "SweepRequest"),
+        __config__=ConfigDict(extra="forbid"),
+        base=(
+            inputs_model(spec, all_optional=True),
+            Field(default_factory=dict, description="inputs held fixed (defaults fill the rest)"),
+        ),
+        vary=(_literal(numeric), Field(description="the input to vary")),
+        start=(
+            float | str,
+            Field(description="first value: SI number or string with a unit"),
+        ),
+        stop=(float | str, Field(description="last value: SI number or string with a unit")),
+        num=(int, Field(default=50, ge=2, le=2000, description="number of points")),
+        scale=(_literal(("linear", "log")), Field(default="linear")),
+        outputs=(
+            _list_of(_literal(scalar_outputs)) | None,
+            Field(default=None, max_length=len(scalar_outputs)),
+        ),
+        fidelity=(_fidelity_type(spec), Field(default=spec.default_fidelity)),
+        tolerance=(float | None, Field(default=None, gt=0, lt=1)),
+    )
+
+
+class SweepResponse(BaseModel):
+    model: str
+    vary: str
+    unit: str
+    values: list[float]
+    results: dict[str, list[SIValue]]
+    units: dict[str, str]
+    rung: str
+    elapsed_s: float
+    notes: list[str] = Field(default_factory=list)
+    warnings: list[str] = Field(default_factory=list)

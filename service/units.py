@@ -1,0 +1,95 @@
+"""Unit strings at the API edge: "45 mm", "1450 rpm", "8e4 MPa", "1.1 kW", "45 deg".
+
+A value arrives either as a number in SI base units or as a string holding a
+number and a unit. The string must match a small grammar (a decimal number,
+then unit names joined by ``*``, ``/``, ``·`` or spaces, each with an
+optional one-digit exponent) before pint sees it; pint then parses only the
+unit part, never the number. That keeps pint's expression evaluator, which
+would happily compute ``10**10**10`` for minutes, away from user input, and
+nothing is ever passed to ``eval``.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from functools import lru_cache
+from typing import Any
+
+import pint
+
+MAX_UNIT_STRING = 64
+
+_NUMBER = r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d{1,3})?"
+_ATOM = r"(?:[A-Za-zµμΩ%]+|°)(?:(?:\^|\*\*)-?\d)?"
+_UNIT = rf"{_ATOM}(?:\s*[*/·]\s*{_ATOM}|\s+{_ATOM})*"
+_QUANTITY = re.compile(rf"\s*({_NUMBER})\s*({_UNIT})?\s*")
+
+# Dimensionless inputs (counts, ratios, friction coefficients) accept these only;
+# pint treats angles as dimensionless too, and "45 deg" is no friction coefficient.
+_DIMENSIONLESS_UNITS = {"%": 0.01, "percent": 0.01, "ppm": 1e-6}
+
+_REGISTRY: Any = pint.UnitRegistry()
+
+
+class UnitError(ValueError):
+    """A unit string that cannot be read, or whose dimension does not fit."""
+
+
+def _normalise(unit: str) -> str:
+    unit = unit.replace("·", "*").replace("μ", "u").replace("µ", "u")
+    return re.sub(r"°", "degree", unit)
+
+
+@lru_cache(maxsize=1024)
+def _factor(unit: str, target: str) -> float:
+    """Multiplier taking a value in ``unit`` to ``target`` (both unit expressions)."""
+    try:
+        parsed = _REGISTRY.parse_units(_normalise(unit))
+    except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError) as exc:
+        raise UnitError(f"unknown unit {unit!r}") from exc
+    except Exception as exc:  # pint raises assorted errors on malformed input
+        raise UnitError(f"cannot read the unit {unit!r}") from exc
+    try:
+        factor = _REGISTRY.Quantity(1.0, parsed).to(target).magnitude
+    except pint.errors.DimensionalityError as exc:
+        raise UnitError(f"{unit!r} has the wrong dimension: expected {target}") from exc
+    return float(factor)
+
+
+def to_si(text: str, target: str) -> float:
+    """Read ``text`` ("45 mm") and return its magnitude in ``target`` (an SI unit).
+
+    >>> round(to_si("1450 rpm", "rad/s"), 3)
+    151.844
+    >>> to_si("45 mm", "m")
+    0.045
+    >>> to_si("0.5", "m")
+    0.5
+    """
+    if len(text) > MAX_UNIT_STRING:
+        raise UnitError(f"a unit string has at most {MAX_UNIT_STRING} characters")
+    match = _QUANTITY.fullmatch(text)
+    if match is None:
+        raise UnitError(f"cannot read {text!r}: expected a number and a unit, like '45 mm'")
+    number, unit = match.group(1), match.group(2)
+    value = float(number)
+    if not unit:
+        return value
+    if target == "1":
+        factor = _DIMENSIONLESS_UNITS.get(unit.strip())
+        if factor is None:
+            raise UnitError(f"{unit!r} has the wrong dimension: expected a plain number")
+    else:
+        factor = _factor(unit.strip(), target)
+    result = value * factor
+    if not math.isfinite(result):
+        raise UnitError(f"{text!r} is not a finite quantity")
+    return result
+
+
+def convert(value: float, unit: str, target: str) -> float:
+    """Convert a magnitude between two unit expressions (for the form and docs)."""
+    if unit == target:
+        return value
+    return value * _factor(unit, target)

@@ -1,0 +1,83 @@
+import math
+
+import pytest
+
+import engine
+from engine import InfeasibleDesign, InputOutOfRange
+
+from .toy import TOY
+
+BASE = {"diameter": 0.2}
+
+
+def test_defaults_filled_and_exact_value():
+    r = engine.run(TOY, BASE, fidelity="exact")
+    # J = 1 * 0.2² / 8 = 0.005; T = 0.5 * 0.005 * 100² = 25
+    assert r.results["inertia"] == pytest.approx(0.005, rel=1e-15)
+    assert r.results["energy"] == pytest.approx(25.0, rel=1e-15)
+    assert r.inputs["mass"] == 1.0 and r.inputs["extra_load"] is None
+    assert r.units["energy"] == "J"
+    assert r.rung == "exact" and r.elapsed_s >= 0
+
+
+def test_auto_picks_cheapest_rung_meeting_tolerance():
+    loose = engine.run(TOY, BASE, tolerance=0.1)
+    tight = engine.run(TOY, BASE, tolerance=1e-3)
+    assert loose.rung == "rough" and "auto: chose 'rough'" in loose.notes[0]
+    assert tight.rung == "exact" and "rough 0.05" in tight.notes[0]
+    assert loose.results["energy"] == pytest.approx(25.0 * 1.05)
+
+
+def test_outputs_limit_the_work():
+    r = engine.run(TOY, BASE, outputs=["inertia"])
+    assert set(r.results) == {"inertia"} and r.series == {}
+
+
+def test_non_finite_becomes_null_with_note():
+    r = engine.run(TOY, {**BASE, "blowup": True})
+    assert r.results["ratio"] is None
+    assert any("ratio could not be computed" in n for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    ("inputs", "field"),
+    [
+        ({"diameter": -1.0}, "diameter"),
+        ({"diameter": 0.0}, "diameter"),
+        ({"diameter": math.nan}, "diameter"),
+        ({"diameter": math.inf}, "diameter"),
+        ({"diameter": 0.1, "count": 2.5}, "count"),
+        ({"diameter": 0.1, "angle": math.pi / 2}, "angle"),
+        ({"diameter": 0.1, "mode": "other"}, "mode"),
+        ({"diameter": 0.1, "colour": 1}, "colour"),
+        ({}, "diameter"),
+    ],
+)
+def test_out_of_range_names_field(inputs, field):
+    with pytest.raises(InputOutOfRange) as info:
+        engine.run(TOY, inputs)
+    assert info.value.field == field
+    assert field in info.value.message
+
+
+def test_recommended_range_warns():
+    r = engine.run(TOY, {**BASE, "speed": 600.0})
+    assert any("recommends" in w for w in r.warnings)
+
+
+def test_infeasible_raises():
+    with pytest.raises(InfeasibleDesign):
+        engine.run(TOY, {**BASE, "mode": "broken"})
+
+
+def test_sweep_matches_single_runs():
+    values = engine.sweep_values(0.1, 0.3, 5)
+    s = engine.sweep(TOY, BASE, "diameter", values.tolist(), outputs=["energy"], fidelity="exact")
+    for d, e in zip(s.values, s.results["energy"], strict=True):
+        assert e == pytest.approx(0.5 * d**2 / 8 * 100.0**2)
+
+
+def test_sweep_log_and_bounds():
+    assert engine.sweep_values(1e-3, 1.0, 4, "log").tolist() == pytest.approx([1e-3, 1e-2, 1e-1, 1])
+    with pytest.raises(InputOutOfRange):
+        engine.sweep_values(0, 1, engine.MAX_SWEEP_POINTS + 1)
