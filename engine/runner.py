@@ -17,7 +17,7 @@ from typing import Any
 import numpy as np
 
 from .errors import BudgetExceeded, EngineError, InputOutOfRange
-from .spec import Check, ModelSpec, RunContext, Value
+from .spec import Check, ModelSpec, Param, RunContext, Value
 
 DEFAULT_TOLERANCE = 0.01
 MAX_SWEEP_POINTS = 2000
@@ -220,9 +220,14 @@ def sweep(
         ) from None
     if not param.is_numeric:
         raise InputOutOfRange(f"vary = {vary!r} is not a numeric input", field="vary")
-    checked = [param.check(int(v) if param.kind == "int" else v) for v in values]
     wanted = list(outputs) if outputs is not None else None
     start = time.perf_counter()
+    if spec.vectorized is not None and len(values) > 1:
+        fast = _sweep_vectorized(spec, base, param, values, wanted, fidelity, tolerance)
+        if fast is not None:
+            fast.elapsed_s = time.perf_counter() - start
+            return fast
+    checked = [param.check(int(v) if param.kind == "int" else v) for v in values]
     deadline = None if budget_s is None else start + budget_s
     names: list[str] = []
     results: dict[str, list[Value]] = {}
@@ -280,4 +285,68 @@ def sweep(
         elapsed_s=time.perf_counter() - start,
         notes=notes,
         warnings=warnings,
+    )
+
+
+def _sweep_vectorized(
+    spec: ModelSpec,
+    base: Mapping[str, Any],
+    param: Param,
+    values: Sequence[float],
+    outputs: list[str] | None,
+    fidelity: str | None,
+    tolerance: float | None,
+) -> SweepResult | None:
+    """One array evaluation instead of a loop, when the model offers it for the rung.
+
+    Returns None (the caller loops) when the rung chosen for the first point
+    is not vectorised.
+    """
+    assert spec.vectorized is not None
+    arr = np.asarray(values, dtype=float)
+    param.check(float(arr.min()) if param.kind == "float" else int(arr.min()))
+    param.check(float(arr.max()) if param.kind == "float" else int(arr.max()))
+    if param.kind == "int":
+        if not np.all(arr == np.round(arr)):
+            raise InputOutOfRange(f"{param.name} must be an integer", field=param.name)
+        arr = arr.astype(np.int64)
+    elif not np.all(np.isfinite(arr)):
+        raise InputOutOfRange(f"{param.name} must be finite", field=param.name)
+    first, warnings = spec.validate({**base, param.name: arr[0].item()})
+    tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
+    rung, notes = choose_rung(spec, first, fidelity or spec.default_fidelity, tol)
+    if rung not in spec.vector_rungs:
+        return None
+    known = [o.name for o in spec.outputs if not o.series]
+    wanted = known if outputs is None else [n for n in outputs if n in known]
+    ctx = RunContext(rung=rung, outputs=frozenset(wanted), tolerance=tol)
+    result = spec.vectorized({**first, param.name: arr}, ctx)
+    results: dict[str, list[Value]] = {}
+    bad = np.zeros(arr.shape, dtype=bool)
+    for name in wanted:
+        if name not in result.values:
+            continue
+        column = np.broadcast_to(np.asarray(result.values[name]), arr.shape)
+        if column.dtype.kind == "f":
+            finite = np.isfinite(column)
+            bad |= ~finite
+            listed: list[Value] = column.tolist()
+            if not finite.all():
+                listed = [v if ok else None for v, ok in zip(listed, finite.tolist(), strict=True)]
+            results[name] = listed
+        else:
+            results[name] = column.tolist()
+    if bad.any():
+        notes.append(f"{int(bad.sum())} of {arr.size} points could not be computed; null there")
+    units = {o.name: o.unit for o in spec.outputs}
+    return SweepResult(
+        model=spec.name,
+        vary=param.name,
+        values=arr.astype(float).tolist(),
+        results=results,
+        units={n: units[n] for n in results},
+        rung=rung,
+        elapsed_s=0.0,
+        notes=notes + result.notes,
+        warnings=warnings + result.warnings,
     )

@@ -148,6 +148,8 @@ class Output:
     series: bool = False
     label: str | None = None
     display_unit: str | None = None
+    #: For a series: the name of the series it is plotted against (e.g. "time").
+    x: str | None = None
 
     def describe(self) -> dict[str, Any]:
         return {
@@ -155,6 +157,7 @@ class Output:
             "label": self.label or self.name.replace("_", " "),
             "kind": self.kind,
             "series": self.series,
+            "x": self.x,
             "unit": self.unit,
             "display_unit": self.display_unit or self.unit,
             "description": self.description,
@@ -244,6 +247,14 @@ class ModelSpec:
     rungs: tuple[Rung, ...]
     compute: Compute
     default_fidelity: str = "auto"
+    #: Reference input sets (SI, partial: defaults fill the rest); the first is
+    #: the source's worked case. Benchmarks, stability tests and the form use them.
+    examples: tuple[Mapping[str, Any], ...] = ()
+    #: Optional array version of ``compute`` for sweeps: called with the varied
+    #: input as a numpy array (others scalar); returns arrays (NaN where a point
+    #: cannot be computed). Used only when the chosen rung is in ``vector_rungs``.
+    vectorized: Compute | None = None
+    vector_rungs: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         names = [p.name for p in self.inputs]
@@ -322,6 +333,7 @@ class ModelSpec:
             "inputs": [p.describe() for p in self.inputs],
             "outputs": [o.describe() for o in self.outputs],
             "rungs": [r.describe() for r in self.rungs],
+            "examples": [dict(e) for e in self.examples],
         }
 
 

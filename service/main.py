@@ -17,6 +17,7 @@ from engine import ModelSpec
 from . import errors
 from .api import catalogue_router, model_router
 from .config import Settings
+from .extra import EXTRA_ROUTERS
 
 Scope = MutableMapping[str, Any]
 Message = MutableMapping[str, Any]
@@ -108,6 +109,8 @@ def create_app(
     app.include_router(catalogue_router(models))
     for spec in models:
         app.include_router(model_router(spec))
+    for router in EXTRA_ROUTERS:
+        app.include_router(router)
     if settings.cors_origins:
         app.add_middleware(
             CORSMiddleware,

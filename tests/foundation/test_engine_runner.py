@@ -81,3 +81,19 @@ def test_sweep_log_and_bounds():
     assert engine.sweep_values(1e-3, 1.0, 4, "log").tolist() == pytest.approx([1e-3, 1e-2, 1e-1, 1])
     with pytest.raises(InputOutOfRange):
         engine.sweep_values(0, 1, engine.MAX_SWEEP_POINTS + 1)
+
+
+def test_vectorized_sweep_equals_loop_and_nulls_bad_points():
+    values = [0.1, 1.0, 6.0]
+    fast = engine.sweep(TOY, BASE, "diameter", values, outputs=["energy"], fidelity="exact")
+    assert fast.results["energy"][:2] == pytest.approx([0.5 * d**2 / 8 * 1e4 for d in values[:2]])
+    assert fast.results["energy"][2] is None and "1 of 3 points" in fast.notes[-1]
+    slow = engine.sweep(TOY, BASE, "diameter", values[:2], outputs=["energy"], fidelity="rough")
+    assert slow.rung == "rough" and slow.results["energy"][0] == pytest.approx(
+        1.05 * 0.5 * 0.01 / 8 * 1e4
+    )
+
+
+def test_vectorized_sweep_checks_range():
+    with pytest.raises(InputOutOfRange):
+        engine.sweep(TOY, BASE, "diameter", [0.1, 20.0], fidelity="exact")

@@ -48,6 +48,15 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
 
 
+def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    import numpy as np
+
+    d = np.asarray(x["diameter"], dtype=float)
+    energy = 0.5 * x["mass"] * d**2 / 8.0 * x["speed"] ** 2
+    energy = np.where(d > 5.0, np.nan, energy)  # pretend big discs burst
+    return Result(values={"energy": energy}, rung=ctx.rung, error_estimate=1e-15)
+
+
 TOY = ModelSpec(
     name="toy.disc",
     path="/toy/disc",
@@ -114,4 +123,7 @@ TOY = ModelSpec(
         Rung("exact", "exact", fixed_error(1e-15)),
     ),
     compute=_compute,
+    examples=({"diameter": 0.2},),
+    vectorized=_vectorized,
+    vector_rungs=("exact",),
 )

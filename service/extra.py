@@ -1,0 +1,11 @@
+"""Routes that are not a model evaluation (e.g. a catalogue of control methods).
+
+Each family that needs one adds its router here; :func:`service.main.create_app`
+includes them all under ``/api/v1``. Keep them as thin as the model routes.
+"""
+
+from __future__ import annotations
+
+from fastapi import APIRouter
+
+EXTRA_ROUTERS: list[APIRouter] = []
