@@ -47,6 +47,14 @@ Coulomb coefficient f on the flanks, ρ = atan f, the flank's reaction tilts by
 tan(α − ρ) instead of tan α. f = 0 is the paper. Where α ≤ ρ the push never
 overcomes the friction: the clutch never slips (InfeasibleDesign).
 
+Groove depth: the paper sets the spring deflection Δ equal to the groove depth
+and says only that it must be "agreed with the ball diameter d". We take the
+groove to be too deep when Δ > d/2: the ball's centre then sits below the rim,
+it cannot protrude far enough to carry the other half-coupling, and climbing
+out it meets the rim with its upper half and wedges (the paper's fig. 6 edge
+case). This is a failing check, not a refusal. Of the paper's own range
+(Δ = 4…10 mm with d = 10 mm) only Δ ≤ 5 mm passes.
+
 Spring checks (not in the paper; standard helical compression spring design):
 spring index C = D/d0, Wahl factor K_w = (4C − 1)/(4C − 4) + 0.615/C, wire
 shear stress τ = 8 F D K_w / (π d0³).
@@ -1019,7 +1027,7 @@ def _forward_values(x: Mapping[str, Any]) -> dict[str, Any]:
         f,
         x["spring_arrangement"],
     )
-    at = limit if x["torque"] is None else np.broadcast_to(x["torque"], np.shape(limit))
+    at = limit if x["torque"] is None else x["torque"]
     tangential = ball_tangential_force(at, x["ball_circle_diameter"], x["ball_count"], kr)
     index = spring_index(dm, d0)
     return {

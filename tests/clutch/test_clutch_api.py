@@ -165,13 +165,30 @@ def test_setting_flags_a_deflection_deeper_than_the_ball_radius():
 
 @pytest.mark.parametrize("spec", [BALL_CLUTCH, BALL_CLUTCH_SETTING])
 @pytest.mark.parametrize(
-    "vary", ["spring_wire_diameter", "groove_angle", "flank_friction", "spring_deflection"]
+    "vary",
+    [
+        "spring_wire_diameter",
+        "groove_angle",
+        "flank_friction",
+        "spring_deflection",
+        "ball_count",
+        "load_factor",
+        "torque",
+    ],
 )
 def test_vectorized_sweep_equals_single_runs(spec, vary):
+    if vary not in {p.name for p in spec.inputs}:
+        vary = "target_torque"
     base = dict(spec.examples[0])
     p = spec.param(vary)
-    lo = {"groove_angle": 5 * DEG, "flank_friction": 0.0}.get(vary, 0.5e-3)
-    hi = {"groove_angle": 85 * DEG, "flank_friction": 0.9}.get(vary, 4e-3)
+    lo, hi = {
+        "groove_angle": (5 * DEG, 85 * DEG),
+        "flank_friction": (0.0, 0.9),
+        "ball_count": (1, 9),
+        "load_factor": (0.5, 1.0),
+        "torque": (0.0, 2.0),
+        "target_torque": (0.1, 2.0),
+    }.get(vary, (0.5e-3, 4e-3))
     values = np.linspace(lo, hi, 9)
     fast = engine.sweep(spec, base, vary, values.tolist())
     names = list(fast.results)
