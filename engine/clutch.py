@@ -677,6 +677,150 @@ def wire_diameter_for_force(
     return _out(ratio**0.25)
 
 
+def spring_deflection_for_torque(
+    torque: FloatArray,
+    ball_circle_diameter: FloatArray,
+    groove_angle: FloatArray,
+    shear_modulus: FloatArray,
+    wire_diameter: FloatArray,
+    mean_diameter: FloatArray,
+    active_coils: FloatArray,
+    ball_count: FloatArray = 1,
+    load_factor: FloatArray = 0.85,
+    flank_friction: FloatArray = 0.0,
+    arrangement: str = "common",
+) -> FloatArray:
+    r"""Nut setting (spring compression) that makes the clutch slip at ``torque``.
+
+    .. math::
+        \Delta = \frac{8 D^3 i_p}{G d_0^4} \cdot \frac{2 T \tan(\alpha - \rho)}{D_0 s}
+
+    Parameters
+    ----------
+    torque : float
+        Target slipping torque, [N*m]
+    ball_circle_diameter : float
+        Diameter D0 of the ball circle, [m]
+    groove_angle : float
+        Flank angle α, [rad]
+    shear_modulus : float
+        Shear modulus G, [Pa]
+    wire_diameter : float
+        Wire diameter d0, [m]
+    mean_diameter : float
+        Mean coil diameter D, [m]
+    active_coils : float
+        Active coils i_p, [-]
+    ball_count : int, optional
+        Number of balls i (``per_ball`` only), [-]
+    load_factor : float, optional
+        K_r (``per_ball`` only), [-]
+    flank_friction : float, optional
+        Flank friction coefficient f, [-]
+    arrangement : {"common", "per_ball"}, optional
+        Spring arrangement, as in :func:`torque_limit`
+
+    Returns
+    -------
+    deflection : float
+        Spring compression Δ; NaN where α ≤ atan f, [m]
+
+    Notes
+    -----
+    [001, eq. 1–3] solved for Δ: :func:`spring_force_for_torque` then
+    :func:`spring_deflection_for_force`.
+
+    Examples
+    --------
+    >>> round(spring_deflection_for_torque(0.5, 0.05, math.radians(45.0),
+    ...                                    8e10, 0.004, 0.045, 5) * 1e3, 4)
+    3.5596
+    """
+    force = spring_force_for_torque(
+        torque,
+        ball_circle_diameter,
+        groove_angle,
+        ball_count,
+        load_factor,
+        flank_friction,
+        arrangement,
+    )
+    return spring_deflection_for_force(
+        force, shear_modulus, wire_diameter, mean_diameter, active_coils
+    )
+
+
+def wire_diameter_for_torque(
+    torque: FloatArray,
+    ball_circle_diameter: FloatArray,
+    groove_angle: FloatArray,
+    shear_modulus: FloatArray,
+    mean_diameter: FloatArray,
+    active_coils: FloatArray,
+    deflection: FloatArray,
+    ball_count: FloatArray = 1,
+    load_factor: FloatArray = 0.85,
+    flank_friction: FloatArray = 0.0,
+    arrangement: str = "common",
+) -> FloatArray:
+    r"""Wire diameter that makes the clutch slip at ``torque`` for a chosen compression Δ.
+
+    .. math::
+        d_0 = \left(\frac{8 D^3 i_p}{G \Delta} \cdot
+              \frac{2 T \tan(\alpha - \rho)}{D_0 s}\right)^{1/4}
+
+    Parameters
+    ----------
+    torque : float
+        Target slipping torque, [N*m]
+    ball_circle_diameter : float
+        Diameter D0 of the ball circle, [m]
+    groove_angle : float
+        Flank angle α, [rad]
+    shear_modulus : float
+        Shear modulus G, [Pa]
+    mean_diameter : float
+        Mean coil diameter D (held fixed), [m]
+    active_coils : float
+        Active coils i_p (held fixed), [-]
+    deflection : float
+        Chosen compression Δ, [m]
+    ball_count : int, optional
+        Number of balls i (``per_ball`` only), [-]
+    load_factor : float, optional
+        K_r (``per_ball`` only), [-]
+    flank_friction : float, optional
+        Flank friction coefficient f, [-]
+    arrangement : {"common", "per_ball"}, optional
+        Spring arrangement, as in :func:`torque_limit`
+
+    Returns
+    -------
+    diameter : float
+        Wire diameter d0; NaN where α ≤ atan f, [m]
+
+    Notes
+    -----
+    [001, eq. 1–3] solved for d0 (a fourth root: eq. 2 is a power law in d0).
+
+    Examples
+    --------
+    >>> round(wire_diameter_for_torque(0.5, 0.05, math.radians(45.0),
+    ...                                8e10, 0.045, 5, 0.004) * 1e3, 4)
+    3.885
+    """
+    force = spring_force_for_torque(
+        torque,
+        ball_circle_diameter,
+        groove_angle,
+        ball_count,
+        load_factor,
+        flank_friction,
+        arrangement,
+    )
+    return wire_diameter_for_force(force, shear_modulus, mean_diameter, active_coils, deflection)
+
+
 # --------------------------------------------------------------------------
 # Model specs: clutch.ball (forward) and clutch.ball_setting (inverse)
 # --------------------------------------------------------------------------

@@ -13,6 +13,7 @@ from engine.clutch import (
     ball_tangential_force,
     flank_push_factor,
     spring_deflection_for_force,
+    spring_deflection_for_torque,
     spring_force,
     spring_force_for_torque,
     spring_index,
@@ -21,6 +22,7 @@ from engine.clutch import (
     torque_limit,
     wahl_factor,
     wire_diameter_for_force,
+    wire_diameter_for_torque,
 )
 
 DEG = math.pi / 180.0
@@ -170,3 +172,9 @@ def test_inverse_of_forward_is_identity(
         deflection, rel=1e-9
     )
     assert wire_diameter_for_force(back, g, mean, coils, deflection) == pytest.approx(d0, rel=1e-9)
+    assert spring_deflection_for_torque(
+        torque, ring, alpha, g, d0, mean, coils, balls, kr, f, arr
+    ) == pytest.approx(deflection, rel=1e-9)
+    assert wire_diameter_for_torque(
+        torque, ring, alpha, g, mean, coils, deflection, balls, kr, f, arr
+    ) == pytest.approx(d0, rel=1e-9)
