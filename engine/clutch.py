@@ -1317,6 +1317,9 @@ BALL_CLUTCH = ModelSpec(
     ),
     rungs=(_RUNG,),
     compute=_compute_ball,
+    # one rung: by default run it plainly; "auto" would note that the frictionless
+    # default cannot meet 1 % (the estimate is the effect of neglected flank friction)
+    default_fidelity="closed_form",
     examples=(
         # [001] worked case: D0 = 50 mm, i = 4, d = 10 mm, D = 45 mm, i_p = 5, α = 45°,
         # G = 8·10⁴ MPa; d0 = 0.5…4 mm and Δ = 4…10 mm: d0 = 4 mm, Δ = 4 mm is the one
@@ -1537,6 +1540,9 @@ BALL_CLUTCH_SETTING = ModelSpec(
     ),
     rungs=(_RUNG,),
     compute=_compute_setting,
+    # one rung: by default run it plainly; "auto" would note that the frictionless
+    # default cannot meet 1 % (the estimate is the effect of neglected flank friction)
+    default_fidelity="closed_form",
     examples=(
         # The paper's clutch (D0 = 50 mm, i = 4, d = 10 mm, D = 45 mm, i_p = 5, α = 45°,
         # d0 = 4 mm) set for 0.5 N·m; the wire for Δ = 4 mm.
