@@ -6,9 +6,10 @@ schema, the form and ``GET /api/v1/models`` all derive from this tuple.
 
 from __future__ import annotations
 
+from .nutrunner import NUTRUNNER_DRIVE
 from .spec import ModelSpec
 
-MODELS: tuple[ModelSpec, ...] = ()
+MODELS: tuple[ModelSpec, ...] = (NUTRUNNER_DRIVE,)
 
 
 def get_model(name: str) -> ModelSpec:
