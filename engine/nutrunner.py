@@ -18,7 +18,8 @@ The paper gives two models:
 
 This module holds those equations as pure functions on SI floats (or numpy
 arrays), two refinements the catalogue asks for (the gear ratio between shaft
-and spindle, and a real motor's torque–speed curve integrated by quadrature),
+and spindle, and a real motor's torque–speed curve integrated by quadrature in
+:mod:`engine.motor_spinup`),
 and the :data:`NUTRUNNER_DRIVE` spec that the service serves at
 ``/nutrunner/drive``.
 
@@ -30,14 +31,22 @@ docstrings and in each result's notes.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from scipy import integrate
 
 from .errors import InfeasibleDesign, InputOutOfRange
+from .motor_spinup import (
+    MotorCurve,
+    kloss_breakdown_slip,
+    kloss_slip_torque,
+    kloss_torque,
+    linear_motor_torque,
+    spin_up_profile,
+    spin_up_time,
+)
 from .spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
 
 __all__ = [
@@ -49,17 +58,10 @@ __all__ = [
     "impact_torque",
     "impact_torque_geared",
     "kinetic_energy",
-    "kloss_breakdown_slip",
-    "kloss_spin_up_time",
-    "kloss_torque",
-    "linear_motor_torque",
-    "linear_spin_up_time",
     "max_spindle_torque",
     "part_energies",
     "shaft_shear_stress",
-    "spin_up_time",
     "spindle_speed",
-    "torque_limited_constant_power_spin_up_time",
     "torsional_stiffness",
     "twist_angle",
 ]
@@ -360,7 +362,7 @@ def acceleration_time(kinetic_energy: Any, motor_power: Any) -> Any:
     [000, eq. 1–2]. The printed eq. 5 is garbled; this form follows from the
     theorem and the chain (MODELS.md §1). Constant power from standstill is an
     idealisation (it needs infinite torque at :math:`\omega = 0`); see
-    :func:`spin_up_time` for a real motor.
+    :func:`engine.motor_spinup.spin_up_time` for a real motor.
 
     Examples
     --------
@@ -581,392 +583,6 @@ def shaft_shear_stress(torque: Any, diameter: Any) -> Any:
     79.58
     """
     return 16.0 * torque / (math.pi * diameter**3)
-
-
-# ---------------------------------------------------------------------------
-# Motor torque–speed curves and the spin-up integral (beyond the source)
-# ---------------------------------------------------------------------------
-
-
-def linear_motor_torque(speed: Any, stall_torque: float, no_load_speed: float) -> Any:
-    r"""Torque of a motor with a straight torque–speed line (DC, universal, linearised).
-
-    .. math::
-        M(\omega) = M_{st}\left(1 - \frac{\omega}{\omega_0}\right)
-
-    Parameters
-    ----------
-    speed : float
-        Shaft speed :math:`\omega`, [rad/s]
-    stall_torque : float
-        Torque at standstill :math:`M_{st}`, [N*m]
-    no_load_speed : float
-        Speed at zero torque :math:`\omega_0`, [rad/s]
-
-    Returns
-    -------
-    M : float
-        Motor torque, [N*m]
-
-    Examples
-    --------
-    >>> linear_motor_torque(50.0, 20.0, 200.0)
-    15.0
-    """
-    return stall_torque * (1.0 - speed / no_load_speed)
-
-
-def kloss_breakdown_slip(
-    rated_speed: float, synchronous_speed: float, overload_ratio: float
-) -> float:
-    r"""Breakdown (critical) slip of an induction motor from its catalogue data.
-
-    .. math::
-        s_n = 1 - \frac{\omega_n}{\omega_s}, \qquad
-        s_k = s_n\left(\lambda + \sqrt{\lambda^2 - 1}\right),
-        \qquad \lambda = \frac{M_k}{M_n}
-
-    Parameters
-    ----------
-    rated_speed : float
-        Rated speed :math:`\omega_n`, [rad/s]
-    synchronous_speed : float
-        Synchronous speed :math:`\omega_s`, [rad/s]
-    overload_ratio : float
-        Breakdown over rated torque :math:`\lambda > 1`, [-]
-
-    Returns
-    -------
-    s_k : float
-        Breakdown slip, [-]
-
-    Notes
-    -----
-    The simplified Kloss formula (stator resistance neglected), solved for
-    :math:`s_k` at the rated point.
-
-    Examples
-    --------
-    >>> round(kloss_breakdown_slip(1400.0, 1500.0, 2.5), 4)
-    0.3194
-    """
-    s_n = 1.0 - rated_speed / synchronous_speed
-    return s_n * (overload_ratio + math.sqrt(overload_ratio**2 - 1.0))
-
-
-def kloss_torque(
-    speed: Any, breakdown_torque: float, synchronous_speed: float, breakdown_slip: float
-) -> Any:
-    r"""Torque of an induction motor by the simplified Kloss formula.
-
-    .. math::
-        M(s) = \frac{2 M_k}{s/s_k + s_k/s}, \qquad s = 1 - \frac{\omega}{\omega_s}
-
-    Parameters
-    ----------
-    speed : float
-        Shaft speed :math:`\omega`, [rad/s]
-    breakdown_torque : float
-        Maximum (pull-out) torque :math:`M_k`, [N*m]
-    synchronous_speed : float
-        Synchronous speed :math:`\omega_s`, [rad/s]
-    breakdown_slip : float
-        Slip at maximum torque :math:`s_k`, [-]
-
-    Returns
-    -------
-    M : float
-        Motor torque, [N*m]
-
-    Notes
-    -----
-    Neglects stator resistance and skin effect; for cage motors it
-    under-estimates the starting torque (often by 20–40 %), so spin-up
-    times from it are on the long side.
-
-    Examples
-    --------
-    >>> round(kloss_torque(0.0, 20.0, 157.0, 1.0), 6)
-    20.0
-    """
-    s = 1.0 - speed / synchronous_speed
-    return 2.0 * breakdown_torque * s * breakdown_slip / (s**2 + breakdown_slip**2)
-
-
-def linear_spin_up_time(
-    equivalent_inertia: float, stall_torque: float, no_load_speed: float, speed: float
-) -> float:
-    r"""Closed-form spin-up time of an inertia on a linear torque–speed line.
-
-    .. math::
-        t = \int_0^{\omega} \frac{J\,d\omega'}{M_{st}(1 - \omega'/\omega_0)}
-          = \frac{J\omega_0}{M_{st}}\ln\frac{\omega_0}{\omega_0 - \omega}
-
-    Parameters
-    ----------
-    equivalent_inertia : float
-        :math:`J` at the motor shaft, [kg*m^2]
-    stall_torque : float
-        :math:`M_{st}`, [N*m]
-    no_load_speed : float
-        :math:`\omega_0 > \omega`, [rad/s]
-    speed : float
-        Speed to reach :math:`\omega`, [rad/s]
-
-    Returns
-    -------
-    t : float
-        Spin-up time, [s]
-
-    Examples
-    --------
-    >>> round(linear_spin_up_time(0.01, 10.0, 200.0, 100.0), 6)
-    0.138629
-    """
-    return equivalent_inertia * no_load_speed / stall_torque * -math.log1p(-speed / no_load_speed)
-
-
-def kloss_spin_up_time(
-    equivalent_inertia: float,
-    breakdown_torque: float,
-    synchronous_speed: float,
-    breakdown_slip: float,
-    speed: float,
-) -> float:
-    r"""Closed-form spin-up time of an inertia on the Kloss curve.
-
-    .. math::
-        t = \frac{J\omega_s}{2M_k}\left[\frac{1 - s_e^2}{2 s_k} + s_k\ln\frac{1}{s_e}\right],
-        \qquad s_e = 1 - \frac{\omega}{\omega_s}
-
-    Parameters
-    ----------
-    equivalent_inertia : float
-        :math:`J` at the motor shaft, [kg*m^2]
-    breakdown_torque : float
-        :math:`M_k`, [N*m]
-    synchronous_speed : float
-        :math:`\omega_s > \omega`, [rad/s]
-    breakdown_slip : float
-        :math:`s_k`, [-]
-    speed : float
-        Speed to reach :math:`\omega`, [rad/s]
-
-    Returns
-    -------
-    t : float
-        Spin-up time, [s]
-
-    Notes
-    -----
-    :math:`\int J\,d\omega/M` with :math:`d\omega = -\omega_s ds`; used to
-    check the quadrature of :func:`spin_up_time`.
-
-    Examples
-    --------
-    >>> round(kloss_spin_up_time(0.05, 20.0, 157.08, 0.3, 146.6), 4)
-    0.4853
-    """
-    s_e = 1.0 - speed / synchronous_speed
-    return (
-        equivalent_inertia
-        * synchronous_speed
-        / (2.0 * breakdown_torque)
-        * ((1.0 - s_e**2) / (2.0 * breakdown_slip) - breakdown_slip * math.log(s_e))
-    )
-
-
-def torque_limited_constant_power_spin_up_time(
-    equivalent_inertia: float, motor_power: float, torque_limit: float, speed: float
-) -> float:
-    r"""Spin-up time of a motor giving constant power above a torque limit.
-
-    .. math::
-        M(\omega) = \min(M_c, P/\omega),\quad \omega_c = P/M_c:\qquad
-        t = \frac{J\omega^2}{2P}\left[1 + \left(\frac{\omega_c}{\omega}\right)^2\right]
-        \quad (\omega \ge \omega_c)
-
-    Parameters
-    ----------
-    equivalent_inertia : float
-        :math:`J`, [kg*m^2]
-    motor_power : float
-        :math:`P`, [W]
-    torque_limit : float
-        :math:`M_c`, [N*m]
-    speed : float
-        Speed to reach :math:`\omega`, [rad/s]
-
-    Returns
-    -------
-    t : float
-        Spin-up time, [s]
-
-    Notes
-    -----
-    The honest version of the source's constant power from standstill
-    [000, eq. 5]: it exceeds :math:`T/P` by exactly
-    :math:`(\omega_c/\omega)^2`, which vanishes as the torque limit grows.
-    Below :math:`\omega_c` the time is :math:`J\omega/M_c`.
-
-    Examples
-    --------
-    >>> round(torque_limited_constant_power_spin_up_time(0.01, 1000.0, 100.0, 100.0), 6)
-    0.0505
-    """
-    w_c = motor_power / torque_limit
-    if speed <= w_c:
-        return equivalent_inertia * speed / torque_limit
-    return equivalent_inertia * (speed**2 + w_c**2) / (2.0 * motor_power)
-
-
-@dataclass(frozen=True)
-class MotorCurve:
-    """A motor torque–speed curve for :func:`spin_up_time`.
-
-    ``torque(ω)`` in N·m for ω in rad/s (numpy-vectorised); ``limit_speed`` is
-    the speed where the torque falls to zero (None if it never does);
-    ``kinks`` are speeds where the curve has a corner.
-    """
-
-    kind: str
-    torque: Callable[[Any], Any]
-    limit_speed: float | None = None
-    kinks: tuple[float, ...] = ()
-
-
-def spin_up_time(
-    equivalent_inertia: float, curve: MotorCurve, speed: float, *, rtol: float = 1e-10
-) -> tuple[float, float]:
-    r"""Time for a motor to spin an inertia up to ``speed``, by adaptive quadrature.
-
-    .. math::
-        t = \int_0^{\omega} \frac{J_{eq}\,d\omega'}{M(\omega')}
-
-    Parameters
-    ----------
-    equivalent_inertia : float
-        :math:`J_{eq}` at the motor shaft, [kg*m^2]
-    curve : MotorCurve
-        The motor's torque–speed curve, [N*m] against [rad/s]
-    speed : float
-        Speed to reach, [rad/s]
-    rtol : float, optional
-        Relative tolerance asked of the quadrature, [-]
-
-    Returns
-    -------
-    t : float
-        Spin-up time, [s]
-    abserr : float
-        Absolute error estimate of the quadrature, [s]
-
-    Raises
-    ------
-    InfeasibleDesign
-        When the torque is zero or negative somewhere on the way (the motor
-        never reaches ``speed``).
-
-    Notes
-    -----
-    :math:`J\,d\omega/dt = M(\omega)` separates, so the time is a single
-    quadrature (``scipy.integrate.quad``, QUADPACK) rather than an ODE.
-    Where the torque falls to zero at :math:`\omega_0` (no-load or
-    synchronous speed) the integrand grows like :math:`1/(\omega_0-\omega)`;
-    the substitution :math:`\omega = \omega_0(1 - e^{-x})`,
-    :math:`d\omega = (\omega_0 - \omega)\,dx` turns it into the bounded
-    :math:`J(\omega_0-\omega)/M(\omega)` on a finite interval
-    :math:`[0, -\ln(1-\omega/\omega_0)]`, so working speeds close to
-    :math:`\omega_0` stay accurate. Not in the source, whose eq. 5 assumes
-    constant power from standstill.
-
-    Examples
-    --------
-    >>> curve = MotorCurve("linear", lambda w: linear_motor_torque(w, 10.0, 200.0), 200.0)
-    >>> t, err = spin_up_time(0.01, curve, 100.0)
-    >>> round(t, 6), err < 1e-12
-    (0.138629, True)
-    """
-    _check_reaches(curve, speed)
-    j = equivalent_inertia
-    if curve.limit_speed is not None:
-        w0 = curve.limit_speed
-        x_end = -math.log1p(-speed / w0)
-
-        def integrand_x(x: float) -> float:
-            gap = w0 * math.exp(-x)
-            return float(j * gap / curve.torque(w0 - gap))
-
-        t, err = integrate.quad(integrand_x, 0.0, x_end, epsabs=0.0, epsrel=rtol, limit=200)
-    else:
-        points = [k for k in curve.kinks if 0.0 < k < speed] or None
-
-        def integrand_w(w: float) -> float:
-            return float(j / curve.torque(w))
-
-        t, err = integrate.quad(
-            integrand_w, 0.0, speed, epsabs=0.0, epsrel=rtol, limit=200, points=points
-        )
-    return float(t), float(err)
-
-
-def spin_up_profile(
-    equivalent_inertia: float, curve: MotorCurve, speed: float, points: int = 101
-) -> tuple[np.ndarray, np.ndarray]:
-    """Motor speed against time during spin-up, for a plot.
-
-    Cumulative 8-point Gauss–Legendre over ``points - 1`` sub-intervals (in
-    the substituted variable of :func:`spin_up_time` where the torque falls
-    to zero). Returns ``(time [s], motor speed [rad/s])``, both starting at 0.
-
-    Examples
-    --------
-    >>> curve = MotorCurve("linear", lambda w: linear_motor_torque(w, 10.0, 200.0), 200.0)
-    >>> t, w = spin_up_profile(0.01, curve, 100.0, points=5)
-    >>> round(float(t[-1]), 6), float(w[-1])
-    (0.138629, 100.0)
-    """
-    _check_reaches(curve, speed)
-    nodes, weights = np.polynomial.legendre.leggauss(8)
-    j = equivalent_inertia
-    if curve.limit_speed is not None:
-        w0 = curve.limit_speed
-        x = np.linspace(0.0, -math.log1p(-speed / w0), points)
-        a, b = x[:-1, None], x[1:, None]
-        xq = 0.5 * (a + b) + 0.5 * (b - a) * nodes
-        gap = w0 * np.exp(-xq)
-        f = j * gap / curve.torque(w0 - gap)
-        w = w0 * -np.expm1(-x)
-    else:
-        w = np.linspace(0.0, speed, points)
-        a, b = w[:-1, None], w[1:, None]
-        wq = 0.5 * (a + b) + 0.5 * (b - a) * nodes
-        f = j / curve.torque(wq)
-    dt = 0.5 * (b - a)[:, 0] * (f @ weights)
-    t = np.concatenate(([0.0], np.cumsum(dt)))
-    w[-1] = speed
-    return t, w
-
-
-def _check_reaches(curve: MotorCurve, speed: float) -> None:
-    """Raise InfeasibleDesign if the torque is not positive all the way to ``speed``."""
-    if curve.limit_speed is not None and speed >= curve.limit_speed:
-        raise InfeasibleDesign(
-            f"the motor can never reach the working speed {speed:.4g} rad/s "
-            f"({speed * 30 / math.pi:.0f} rpm): its torque falls to zero at "
-            f"{curve.limit_speed:.4g} rad/s ({curve.limit_speed * 30 / math.pi:.0f} rpm); "
-            "lower the working speed or choose a faster motor",
-            field="motor_speed",
-        )
-    probe = np.linspace(0.0, speed, 257)
-    torque = np.asarray(curve.torque(probe), dtype=float)
-    if not np.all(torque > 0.0):
-        bad = float(probe[np.argmax(~(torque > 0.0))])
-        raise InfeasibleDesign(
-            f"the motor can never reach the working speed {speed:.4g} rad/s: its torque is "
-            f"not positive at {bad:.4g} rad/s; choose a stronger motor or a lower speed",
-            field="motor_curve",
-        )
 
 
 # ---------------------------------------------------------------------------
@@ -1340,7 +956,12 @@ def _motor_curve(x: Mapping[str, Any]) -> MotorCurve | None:
 
     if kind == "linear":
         m_st, w0 = need("stall_torque"), need("no_load_speed")
-        return MotorCurve(kind, lambda w: linear_motor_torque(w, m_st, w0), w0)
+        return MotorCurve(
+            kind,
+            lambda w: linear_motor_torque(w, m_st, w0),
+            w0,
+            torque_below_limit=lambda gap: m_st * gap / w0,
+        )
     if kind == "constant_power":
         m_c, power = need("stall_torque"), float(x["motor_power"])
         w_c = power / m_c
@@ -1361,7 +982,12 @@ def _motor_curve(x: Mapping[str, Any]) -> MotorCurve | None:
             field="breakdown_torque",
         )
     s_k = kloss_breakdown_slip(w_n, w_s, m_k / m_n)
-    return MotorCurve(kind, lambda w: kloss_torque(w, m_k, w_s, s_k), w_s)
+    return MotorCurve(
+        kind,
+        lambda w: kloss_torque(w, m_k, w_s, s_k),
+        w_s,
+        torque_below_limit=lambda gap: kloss_slip_torque(gap / w_s, m_k, s_k),
+    )
 
 
 @dataclass(frozen=True)
