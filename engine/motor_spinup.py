@@ -413,7 +413,8 @@ def spin_up_profile(
 
     Cumulative 8-point Gauss–Legendre over ``points - 1`` sub-intervals (in
     the substituted variable of :func:`spin_up_time` where the torque falls
-    to zero). Returns ``(time [s], motor speed [rad/s])``, both starting at 0.
+    to zero; the curve's kinks are added as grid points). Returns
+    ``(time [s], motor speed [rad/s])``, both starting at 0.
 
     Examples
     --------
@@ -434,7 +435,8 @@ def spin_up_profile(
         f = j * gap / curve.torque(w0 - gap)
         w = w0 * -np.expm1(-x)
     else:
-        w = np.linspace(0.0, speed, points)
+        kinks = [k for k in curve.kinks if 0.0 < k < speed]
+        w = np.unique(np.concatenate((np.linspace(0.0, speed, points), kinks)))
         a, b = w[:-1, None], w[1:, None]
         wq = 0.5 * (a + b) + 0.5 * (b - a) * nodes
         f = j / curve.torque(wq)

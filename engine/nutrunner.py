@@ -1189,6 +1189,20 @@ def _checks(x: Mapping[str, Any], values: Mapping[str, Any]) -> tuple[list[Check
     return checks, warnings
 
 
+def _constant_power_note(x: Mapping[str, Any]) -> str:
+    """What the given motor curve says about this rung's constant-power spin-up time."""
+    try:
+        ratio = _curve_time_ratio(x)
+    except (InfeasibleDesign, InputOutOfRange) as exc:
+        return f"the motor curve given is not used by this rung, and it fails: {exc.message}"
+    assert ratio is not None
+    return (
+        "this rung assumes constant power from standstill [000, eq. 5]; the "
+        f"{x['motor_curve']} motor curve given changes the spin-up time by "
+        f"{1.0 / (1.0 + ratio) - 1.0:+.1%} (rung motor_curve)"
+    )
+
+
 def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     d = _drive(x)
     geared = ctx.rung != "closed_form"
@@ -1213,6 +1227,8 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"{effect:+.2%} from the source's form (which puts M on both)"
         )
         error = _estimate_gear_ratio(x) if ctx.rung == "gear_ratio" else None
+    if ctx.rung != "motor_curve" and x["motor_curve"] != "none":
+        notes.append(_constant_power_note(x))
     series: dict[str, list[float]] = {}
     wants_series = ctx.wants("time", "motor_speed_curve", "flywheel_speed_curve")
     w = float(x["motor_speed"])

@@ -195,3 +195,13 @@ def test_negative_torque_on_the_way_is_infeasible():
     curve = MotorCurve("odd", lambda w: 10.0 - 0.25 * w + 0.001 * w**2)  # < 0 near 125
     with pytest.raises(InfeasibleDesign, match="not positive"):
         spin_up_time(0.1, curve, 150.0)
+
+
+def test_constant_power_rungs_say_what_the_given_curve_would_change():
+    r = run(SPEC, EXAMPLE_INDUCTION_MOTOR)  # default rung: the paper's
+    assert r.rung == "closed_form"
+    # 0.196415/0.118792 − 1 = +65.3 %; the estimate is |T/P / t_curve − 1| = 0.395 or the u-effect
+    assert any("changes the spin-up time by +65.3%" in n for n in r.notes)
+    assert r.error_estimate == pytest.approx(1 - 0.118792 / 0.196415, rel=1e-4)
+    bad = run(SPEC, {**EXAMPLE_INDUCTION_MOTOR, "synchronous_speed": 100.0}, fidelity="gear_ratio")
+    assert any("it fails: rated_speed" in n for n in bad.notes)
