@@ -595,12 +595,20 @@ _RPM = math.pi / 30.0
 
 
 def _part(name: str, label: str, group: str, eq: str, mass: bool, **kw: Any) -> Param:
-    what = "mass" if mass else "outer diameter"
+    """A mass or diameter of one of the discs 1…5 (``label`` like "the flywheel 3")."""
+    if mass:
+        text = f"Mass of {label}, a solid uniform disc"
+    elif "gear" in label:
+        text = f"Pitch diameter of {label}, also taken as its disc diameter"
+    elif "pulley" in label:
+        text = f"Diameter of {label}, also taken as the belt's pitch diameter"
+    else:
+        text = f"Outer diameter of {label}, a solid uniform disc"
     bounds = _MASS if mass else _DIAMETER
     return Param(
         name,
         "kg" if mass else "m",
-        f"{label.capitalize()} {what}, a solid uniform disc [000, {eq}]",
+        f"{text} [000, {eq}]",
         required=True,
         group=group,
         **{**bounds, **kw},
@@ -632,14 +640,14 @@ _INPUTS: tuple[Param, ...] = (
         symbol="ω",
         group="motor",
     ),
-    _part("coupling_mass", "safety coupling 1", "drive", "eq. 3–4", True, symbol="m1"),
-    _part("coupling_diameter", "safety coupling 1", "drive", "eq. 3–4", False, symbol="D1"),
-    _part("motor_pulley_mass", "motor pulley 2", "drive", "eq. 3–4", True, symbol="m2"),
-    _part("motor_pulley_diameter", "motor pulley 2", "drive", "eq. 3–5", False, symbol="D2"),
+    _part("coupling_mass", "the safety coupling 1", "drive", "eq. 3–4", True, symbol="m1"),
+    _part("coupling_diameter", "the safety coupling 1", "drive", "eq. 3–4", False, symbol="D1"),
+    _part("motor_pulley_mass", "the motor pulley 2", "drive", "eq. 3–4", True, symbol="m2"),
+    _part("motor_pulley_diameter", "the motor pulley 2", "drive", "eq. 3–5", False, symbol="D2"),
     Param(
         "flywheel_mass",
         "kg",
-        "Flywheel 3 (the driven pulley) mass, a solid uniform disc [000, eq. 3–4]",
+        "Mass of the flywheel 3 (the driven pulley), a solid uniform disc [000, eq. 3–4]",
         required=True,
         minimum=0.0,
         exclusive_minimum=True,
@@ -649,14 +657,17 @@ _INPUTS: tuple[Param, ...] = (
         group="drive",
     ),
     _part(
-        "flywheel_diameter", "flywheel 3 (driven pulley)", "drive", "eq. 3–5", False, symbol="D3"
+        "flywheel_diameter",
+        "the flywheel 3 (the driven pulley)",
+        "drive",
+        "eq. 3–5",
+        False,
+        symbol="D3",
     ),
-    _part("drive_gear_mass", "drive gear 4", "drive", "eq. 3–4", True, symbol="m4"),
-    _part("drive_gear_diameter", "drive gear 4 (pitch)", "drive", "eq. 3–5", False, symbol="D4"),
+    _part("drive_gear_mass", "the drive gear 4", "drive", "eq. 3–4", True, symbol="m4"),
+    _part("drive_gear_diameter", "the drive gear 4", "drive", "eq. 3–5", False, symbol="D4"),
     _part("spindle_gear_mass", "one spindle gear 5", "drive", "eq. 3–4", True, symbol="m5"),
-    _part(
-        "spindle_gear_diameter", "spindle gear 5 (pitch)", "drive", "eq. 3–5", False, symbol="D5"
-    ),
+    _part("spindle_gear_diameter", "one spindle gear 5", "drive", "eq. 3–5", False, symbol="D5"),
     Param(
         "spindle_count",
         "1",
