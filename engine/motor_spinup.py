@@ -353,6 +353,10 @@ def spin_up_time(
     InfeasibleDesign
         When the torque is zero or negative somewhere on the way (the motor
         never reaches ``speed``).
+    SolverFailed
+        When QUADPACK warns and its error estimate exceeds 1e-6 of the time
+        (a curve without ``torque_below_limit`` evaluated within ~1e-10 of
+        its limit speed, say).
 
     Notes
     -----
