@@ -14,7 +14,7 @@ import math
 import numpy as np
 import pytest
 
-from engine import InfeasibleDesign, InputOutOfRange, run, sweep
+from engine import InfeasibleDesign, InputOutOfRange, RunContext, run, sweep
 from engine.nutrunner import (
     EXAMPLE_INDUCTION_MOTOR,
     EXAMPLE_LIGHT_TRUCK,
@@ -262,3 +262,22 @@ def test_examples_are_complete_and_valid():
         r = run(SPEC, example, fidelity="auto")
         assert all(v is not None for v in r.results.values())
     assert run(SPEC, EXAMPLE_INDUCTION_MOTOR, fidelity="auto").rung == "motor_curve"
+
+
+def test_vectorized_large_array_is_finite_and_broadcast():
+    """The array form behind sweeps: 10⁵ points over four decades of spindle diameter."""
+    x, _ = SPEC.validate(BASE)
+    d = np.geomspace(1e-4, 2.0, 100_000)
+    names = frozenset(o.name for o in SPEC.outputs if not o.series)
+    assert SPEC.vectorized is not None
+    r = SPEC.vectorized({**x, "spindle_diameter": d}, RunContext("gear_ratio", names, 0.01))
+    assert set(r.values) == names - {
+        "drive_inertia",
+        "constant_power_time",
+        "time_vs_constant_power",
+    }
+    for name, value in r.values.items():
+        arr = np.broadcast_to(np.asarray(value, dtype=float), d.shape)
+        assert np.all(np.isfinite(arr)), name
+    m = np.asarray(r.values["impact_torque"])
+    assert np.all(np.diff(m) > 0)  # a stiffer spindle takes a larger torque
