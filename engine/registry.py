@@ -7,9 +7,10 @@ schema, the form and ``GET /api/v1/models`` all derive from this tuple.
 from __future__ import annotations
 
 from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
+from .nutrunner import NUTRUNNER_DRIVE
 from .spec import ModelSpec
 
-MODELS: tuple[ModelSpec, ...] = (BALL_CLUTCH, BALL_CLUTCH_SETTING)
+MODELS: tuple[ModelSpec, ...] = (NUTRUNNER_DRIVE, BALL_CLUTCH, BALL_CLUTCH_SETTING)
 
 
 def get_model(name: str) -> ModelSpec:
