@@ -6,9 +6,11 @@ schema, the form and ``GET /api/v1/models`` all derive from this tuple.
 
 from __future__ import annotations
 
+from .preload_models import CONTROL as PRELOAD_CONTROL
+from .preload_models import TIGHTENING as PRELOAD_TIGHTENING
 from .spec import ModelSpec
 
-MODELS: tuple[ModelSpec, ...] = ()
+MODELS: tuple[ModelSpec, ...] = (PRELOAD_TIGHTENING, PRELOAD_CONTROL)
 
 
 def get_model(name: str) -> ModelSpec:
