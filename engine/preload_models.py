@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from . import preload as pl
@@ -508,7 +508,16 @@ TIGHTENING = ModelSpec(
 # --------------------------------------------------------------------------- control
 
 CONTROL_INPUTS: tuple[Param, ...] = (
-    *BOLT_INPUTS,
+    *(
+        replace(
+            p,
+            description="Nominal preload (middle of the method's band); when absent the "
+            "band's top is the permissible preload (yield control: the preload at yield)",
+        )
+        if p.name == "preload"
+        else p
+        for p in BOLT_INPUTS
+    ),
     Param(
         "required_clamp_force",
         "N",
@@ -791,12 +800,14 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
     # Elongation and angle through one compliance [004, eq. 4, 7, 8, 9].
     needs_grip = method.controls in ("angle", "elongation", "displacement")
+    stretch: float | None = None  # bolt + parts compliance, when the grip is known
     if x.get("clamped_length") is not None:
         lengths, diameters = _grip_sections(bolt, x)
         youngs = float(x["youngs_modulus"])
         compliance = pl.axial_compliance(lengths, diameters, youngs)
         parts = float(x.get("clamped_compliance") or 0.0)
-        angle = pl.nut_rotation_angle(nominal, compliance + parts, bolt.pitch)
+        stretch = compliance + parts
+        angle = pl.nut_rotation_angle(nominal, stretch, bolt.pitch)
         values.update(
             bolt_compliance=compliance,
             clamped_compliance=parts,
@@ -877,23 +888,31 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "at yield (minimum R_p0.2) and the bolt must be ductile ([004])"
         )
 
-    cheaper: list[str] = []
+    passing: list[ControlMethod] = []
     for other in METHODS:
-        if other.family != method.family or other.cost_rank >= method.cost_rank:
+        if other.family != method.family:
             continue
-        if (
-            other.controls in ("angle", "displacement", "elongation")
-            and x.get("clamped_length") is None
-        ):
+        if other.controls in ("angle", "displacement", "elongation") and stretch is None:
             continue
-        _, o_min, o_max = _method_band(other, permissible, at_yield, given)
+        if other.controls == "displacement" and x.get("coupling_outer_diameter") is None:
+            continue
+        o_nominal, o_min, o_max = _method_band(other, permissible, at_yield, given)
+        if other.controls in ("angle", "displacement") and stretch is not None:
+            o_angle = pl.nut_rotation_angle(o_nominal, stretch, bolt.pitch)
+            if o_angle * other.scatter < ANGLE_READING_ERROR:
+                continue  # too short for angle control, as the check above says
         if o_min >= required and o_max <= at_yield * (1.0 + 1e-12):
-            cheaper.append(other.key)
+            passing.append(other)
+    passing.sort(key=lambda m: (m.cost_rank, m.key))
+    cheaper = [m.key for m in passing if m.cost_rank < method.cost_rank]
     values["cheaper_methods"] = ", ".join(cheaper) if cheaper else "none"
-    if method.assumption:
-        notes.append(f"the scatter of {method.key} is an assumption: {method.scatter_source}")
-    else:
-        notes.append(f"scatter of {method.key}: {method.scatter_source}")
+    values["passing_methods"] = ", ".join(m.key for m in passing) if passing else "none"
+    notes.append(f"scatter of {method.key}: {method.scatter_source}")
+    if method.key == "torque_then_angle":
+        notes.append(
+            "the snug torque and the angle come from the joint's experimental torque–angle "
+            "diagram ([004]); the angle here counts from the snug point"
+        )
 
     series: dict[str, list[float]] = {}
     scatter_wanted = ctx.wants(
@@ -945,6 +964,11 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "give thread_friction_min with thread_friction_max (and bearing_friction_min with "
             "bearing_friction_max)",
             field="thread_friction_min",
+        )
+    elif scatter_wanted:
+        notes.append(
+            "no friction range given (thread_friction_min/max, bearing_friction_min/max): "
+            "no preload histogram"
         )
 
     return Result(
@@ -1022,6 +1046,12 @@ CONTROL_OUTPUTS: tuple[Output, ...] = (
         "cheaper_methods",
         "1",
         "Cheaper methods of the same family that would also pass both checks ('none' if none)",
+        kind="str",
+    ),
+    Output(
+        "passing_methods",
+        "1",
+        "Every method of the same family that passes both checks, cheapest first",
         kind="str",
     ),
     Output("bolt_compliance", "m/N", "λ_b = Σ l_i/(E A_i) incl. m/3 at d3 ([004, eq. 4, 7])"),

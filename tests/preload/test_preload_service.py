@@ -246,7 +246,12 @@ def test_control_suggests_a_cheaper_method_that_also_passes(api):
         },
     )["results"]
     assert tight["min_meets_clamp"] is True
-    assert "torque_wrench" not in tight["cheaper_methods"]
+    # F_M = 43.11 kN, F at yield 47.90 kN, need 1.25·24 = 30 kN: bottoms of the bands are
+    # torque 43.11/1.857 = 23.2 ✗, angle 43.11/1.5 = 28.7 ✗, washer 43.11/1.222 = 35.3 ✓,
+    # yield control 47.90/1.4 = 34.2 ✓, torque-then-angle 43.11/1.4 = 30.8 kN but its angle
+    # (49° on this 100 mm grip) read to 15° is worse than its ±17 % ✗, micrometer 28.7 ✗
+    assert tight["cheaper_methods"] == "measuring_washer_ring, torque_gradient, strain_gauge"
+    assert tight["passing_methods"].endswith("ultrasound")
 
 
 def test_control_angle_and_elongation_agree_through_one_compliance(api):
