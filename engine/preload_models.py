@@ -361,6 +361,12 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"the frictionless torque is {share:.1%} of the total; [004, eq. 14] says "
             "5…15 % is usual"
         )
+    if x["preload_convention"] == "elastic":
+        notes.append(
+            f"elastic convention [004, eq. 3, 5]: ν = ξ/n_T; with a plain shank (ξ = 1) "
+            f"ν = {nu:g} means a safety factor on yield n_T = {1 / nu:.3g} ([004]: 1.2…1.4). "
+            "A0 is the stress area here; [004, eq. 6] takes d0 = d1"
+        )
     if formula == "approx":
         notes.append(
             "approx: [004, eq. 15] with d2 ≈ d and R_T ≈ 0.25 (D_f + d_h); with one "

@@ -414,3 +414,31 @@ def test_control_never_nan_inf_or_500(
         out = r.json()
         assert all(v is not None for v in out["results"].values()), out["notes"]
         assert len(out["series"]["preload_counts"]) == bins
+
+
+@pytest.mark.parametrize("path", [TIGHT, CTRL])
+def test_every_example_runs_clean(api, path):
+    from engine.preload_models import CONTROL, TIGHTENING
+
+    spec = TIGHTENING if path == TIGHT else CONTROL
+    for example in spec.examples:
+        body = _ok(api, path, dict(example))
+        assert all(v is not None for v in body["results"].values())
+        assert not body["warnings"], body["warnings"]
+
+
+def test_elastic_note_states_the_safety_factor(api):
+    body = _ok(
+        api, TIGHT, {"thread_diameter": 0.012, "preload_convention": "elastic", "utilization": 0.8}
+    )
+    assert any("n_T = 1.25" in n for n in body["notes"])
+
+
+def test_auto_says_when_vdi_formula_misses_a_tight_tolerance(api):
+    body = _ok(api, TIGHT, {"thread_diameter": 0.012, "tolerance": 1e-4})
+    assert body["rung"] == "closed_form"
+    assert "no rung meets tolerance" in body["notes"][0]
+    exact = _ok(
+        api, TIGHT, {"thread_diameter": 0.012, "tolerance": 1e-4, "torque_formula": "exact"}
+    )
+    assert exact["error_estimate"] == 0.0 and "≤ tolerance" in exact["notes"][0]
