@@ -8,9 +8,17 @@ from __future__ import annotations
 
 from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
 from .nutrunner import NUTRUNNER_DRIVE
+from .preload_models import CONTROL as PRELOAD_CONTROL
+from .preload_models import TIGHTENING as PRELOAD_TIGHTENING
 from .spec import ModelSpec
 
-MODELS: tuple[ModelSpec, ...] = (NUTRUNNER_DRIVE, BALL_CLUTCH, BALL_CLUTCH_SETTING)
+MODELS: tuple[ModelSpec, ...] = (
+    NUTRUNNER_DRIVE,
+    BALL_CLUTCH,
+    BALL_CLUTCH_SETTING,
+    PRELOAD_TIGHTENING,
+    PRELOAD_CONTROL,
+)
 
 
 def get_model(name: str) -> ModelSpec:

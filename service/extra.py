@@ -8,4 +8,6 @@ from __future__ import annotations
 
 from fastapi import APIRouter
 
-EXTRA_ROUTERS: list[APIRouter] = []
+from .preload import router as preload_router
+
+EXTRA_ROUTERS: list[APIRouter] = [preload_router]
