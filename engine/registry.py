@@ -6,9 +6,10 @@ schema, the form and ``GET /api/v1/models`` all derive from this tuple.
 
 from __future__ import annotations
 
+from .rare_impact import RARE_IMPACT
 from .spec import ModelSpec
 
-MODELS: tuple[ModelSpec, ...] = ()
+MODELS: tuple[ModelSpec, ...] = (RARE_IMPACT,)
 
 
 def get_model(name: str) -> ModelSpec:
