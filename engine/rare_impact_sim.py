@@ -372,9 +372,10 @@ def stage1_fast(
     if expected > max_steps:
         raise BudgetExceeded(
             f"the simulation would take about {expected:.2g} steps (budget {max_steps:g}): the "
-            "half-coupling oscillates very fast compared with the spin-up (stiff springs or "
-            "light parts), which is exactly where the closed form is accurate; use "
-            "fidelity 'closed_form' or 'auto'",
+            f"half-coupling would oscillate about {expected / STEPS_PER_PERIOD:.2g} times "
+            "before release (stiff springs, light parts or a slow spin-up), which is exactly "
+            "where the quasi-static closed form is accurate; use fidelity 'closed_form' or "
+            "'auto'",
             field="fidelity",
         )
     stride = max(1, int(expected / _SERIES_POINTS)) if record else 0
