@@ -42,8 +42,10 @@ by the error estimate:
   as accurate as the integrator;
 * the kernel is compiled with numba (``cache=True``: numba keeps the cache
   next to this file and falls back to a user cache directory when the package
-  is read-only; the first call of a fresh install compiles in about a
-  second). A fixed-step explicit RK4 loop over two state variables is the
+  is read-only, or set ``NUMBA_CACHE_DIR``; with no writable place at all it
+  compiles without caching). The module is imported only when the simulation
+  rung runs; its first call in a process costs about 1.5 s (numba import and
+  cache load) or 2.5 s (first compile of a fresh install). A fixed-step explicit RK4 loop over two state variables is the
   cheapest thing that meets the accuracy target, and compiled it costs a few
   tens of nanoseconds per step; without numba the same code runs as plain
   Python, about 100× slower but identical in result.
@@ -101,7 +103,10 @@ def _jit(func: Callable[..., Any]) -> Callable[..., Any]:
         import numba
     except ImportError:  # pragma: no cover - numba is a declared dependency
         return func
-    return numba.njit(cache=True, nogil=True)(func)
+    try:
+        return numba.njit(cache=True, nogil=True)(func)
+    except RuntimeError:  # pragma: no cover - no writable cache directory at all
+        return numba.njit(cache=False, nogil=True)(func)
 
 
 @dataclass(frozen=True)
