@@ -45,8 +45,8 @@ by the error estimate:
   is read-only, or set ``NUMBA_CACHE_DIR``; with no writable place at all it
   compiles without caching). The module is imported only when the simulation
   rung runs; its first call in a process costs about 1.5 s (numba import and
-  cache load) or 2.5 s (first compile of a fresh install). A fixed-step explicit RK4 loop over two state variables is the
-  cheapest thing that meets the accuracy target, and compiled it costs a few
+  cache load) or 2.5 s (first compile of a fresh install). A fixed-step
+  explicit RK4 loop over two state variables is the cheapest thing that meets the accuracy target, and compiled it costs a few
   tens of nanoseconds per step; without numba the same code runs as plain
   Python, about 100× slower but identical in result.
 
