@@ -46,9 +46,10 @@ by the error estimate:
   compiles without caching). The module is imported only when the simulation
   rung runs; its first call in a process costs about 1.5 s (numba import and
   cache load) or 2.5 s (first compile of a fresh install). A fixed-step
-  explicit RK4 loop over two state variables is the cheapest thing that meets the accuracy target, and compiled it costs a few
-  tens of nanoseconds per step; without numba the same code runs as plain
-  Python, about 100× slower but identical in result.
+  explicit RK4 loop over two state variables is the cheapest thing that
+  meets the accuracy target; compiled, it costs a few tens of nanoseconds
+  per step; without numba the same code runs as plain Python, about 100×
+  slower but identical in result.
 
 The work is bounded: the expected number of steps is known before starting
 (span / h) and a run that would exceed ``ctx.max_steps`` stops at once with
