@@ -484,6 +484,13 @@ def time_to_travel(distance: Any, b: Any, k: Any) -> Any:
     >>> float(time_to_travel(0.005, 293.101, 346.41))  # beyond 2B/k² = 4.885 mm
     inf
     """
+    if isinstance(distance, float) and isinstance(b, float) and isinstance(k, float):
+        if b <= 0.0:
+            return math.inf
+        qs = distance * k * k / (2.0 * b)
+        if qs > 1.0 + 1e-12:
+            return math.inf
+        return 2.0 / k * math.asin(math.sqrt(min(max(qs, 0.0), 1.0)))
     b_arr = np.asarray(b, dtype=float)
     with np.errstate(divide="ignore", invalid="ignore"):
         q = np.asarray(distance * k * k / (2.0 * b_arr), dtype=float)
@@ -524,6 +531,10 @@ def spring_height_limit(
     >>> spring_height_limit(0.85, 9.80665, 50000.0, 50000.0)
     inf
     """
+    if all(isinstance(v, float) for v in (moving_mass, gravity, power_spring_rate,
+                                          return_spring_rate)):  # fmt: skip
+        d = return_spring_rate - power_spring_rate
+        return 2.0 * moving_mass * gravity / d if d > 0.0 else math.inf
     diff = np.asarray(return_spring_rate - power_spring_rate, dtype=float)
     with np.errstate(divide="ignore", invalid="ignore"):
         out = np.where(
@@ -565,6 +576,11 @@ def min_return_spring_rate(
     >>> round(min_return_spring_rate(0.4, 9.80665, 0.0, 0.005, 0.005), 1)  # 2 m g / h
     1569.1
     """
+    if all(isinstance(v, float) for v in (striker_mass, gravity, return_spring_preload,
+                                          engagement_height, jaw_height)):  # fmt: skip
+        arm = return_spring_preload + engagement_height - 0.5 * jaw_height
+        load = striker_mass * gravity
+        return 0.0 if load <= 0.0 else (load / arm if arm > 0.0 else math.inf)
     lever = np.asarray(return_spring_preload + engagement_height - 0.5 * jaw_height, dtype=float)
     weight = np.asarray(striker_mass * gravity, dtype=float)
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -662,6 +678,20 @@ def relock_margin(
 # ---------------------------------------------------------------------------
 
 _SIMULATION_ERROR = 1e-6
+#: Outputs that need the spin-up (stage 1); the others come from stages 2-4 alone.
+_STAGE1_OUTPUTS = (
+    "release_speed",
+    "spin_up_time",
+    "engagement_window",
+    "full_engagement",
+    "engagement_margin",
+    "time",
+    "flywheel_speed",
+    "z1",
+    "z2",
+    "z3",
+    "z4",
+)
 
 
 def _moving_mass(x: Mapping[str, Any]) -> Any:
@@ -727,6 +757,18 @@ def _closed_form_estimate(x: Mapping[str, Any]) -> float | None:
     except (ArithmeticError, ValueError):
         return None
     err = max(dw, dt)
+    return err if math.isfinite(err) else None
+
+
+def _closed_form_output_error(x: Mapping[str, Any], ctx: RunContext) -> float | None:
+    """Estimated error of the outputs asked for (stage 2-4 outputs alone are exact)."""
+    if not ctx.wants(*_STAGE1_OUTPUTS):
+        return 0.0
+    try:
+        dw, dt = quasi_static_release_error(x)
+    except (ArithmeticError, ValueError):
+        return None
+    err = max(dw, dt) if ctx.wants("spin_up_time") else dw
     return err if math.isfinite(err) else None
 
 
@@ -911,12 +953,18 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     warnings: list[str] = []
     series: dict[str, list[float]] = {}
     w_nl = x["motor_no_load_speed"]
-    if ctx.rung == "simulation":
+    stage1_needed = ctx.wants(*_STAGE1_OUTPUTS)
+    if ctx.rung == "simulation" and not stage1_needed:
+        notes.append(
+            "simulation: no requested output depends on the spin-up, so stage 1 was not "
+            "integrated; stages 2-4 are exact and the checks use the quasi-static release speed"
+        )
+    if ctx.rung == "simulation" and stage1_needed:
         from .rare_impact_sim import simulate
 
         sim = simulate(x, ctx)
         omega_rel, t_spin = sim.release_speed, sim.spin_up_time
-        error = _SIMULATION_ERROR
+        error: float | None = _SIMULATION_ERROR
         notes += sim.notes
         warnings += sim.warnings
         series = sim.series
@@ -924,17 +972,24 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     else:
         omega_rel = omega_m
         t_spin = spin_up_time(x["flywheel_inertia"], x["motor_torque"], omega_m, w_nl)
-        dw, dt = quasi_static_release_error(x)
-        error = max(dw, dt) if ctx.wants("spin_up_time") else dw
-        notes.append(
-            "closed form: quasi-static spin-up [002, after eq. 4] (general-angle balance"
-            + (
+        if ctx.rung == "simulation":
+            error = _SIMULATION_ERROR
+        else:
+            error = _closed_form_output_error(x, ctx)
+            angle = (
                 ", equal to the paper's 45° form)"
                 if math.isclose(x["cone_angle"], math.pi / 4)
                 else ")"
             )
-            + f"; estimated error {dw:.2g} in release speed, {dt:.2g} in spin-up time"
-        )
+            notes.append(
+                "closed form: quasi-static spin-up [002, after eq. 4] (general-angle balance"
+                + angle
+                + (
+                    f"; estimated error {error:.2g}"
+                    if error is not None
+                    else "; its error could not be estimated for these inputs"
+                )
+            )
         durations = None
     m2_total = float(_moving_mass(x))
     c1, c3 = x["power_spring_rate"], x["return_spring_rate"]

@@ -277,3 +277,9 @@ def test_time_to_travel_is_consistent_with_the_simulated_stage2():
     r = run(RARE_IMPACT, R, fidelity="simulation")
     b, k = r.results["oscillation_B"], r.results["oscillation_k"]
     assert r.results["engagement_time"] == pytest.approx(time_to_travel(0.004, b, k))
+
+
+def test_stage2_outputs_alone_need_no_stage1_integration():
+    r = run(RARE_IMPACT, STIFF, fidelity="simulation", outputs=["oscillation_k", "relock_margin"])
+    assert set(r.results) == {"oscillation_k", "relock_margin"}  # no BudgetExceeded: no stage 1
+    assert any("not integrated" in n for n in r.notes)
