@@ -383,6 +383,7 @@ def stage1_fast(
             "where the quasi-static closed form is accurate; use fidelity 'closed_form' or "
             "'auto'",
             field="fidelity",
+            expected_steps=expected,
         )
     stride = max(1, int(expected / _SERIES_POINTS)) if record else 0
     cap = _SERIES_POINTS * 3 + 8 if record else 1
