@@ -522,6 +522,12 @@ def simulate(x: Mapping[str, Any], ctx: RunContext) -> SimulationResult:
         f"period ({s1.steps} steps), first crossing of h1 located on the Hermite "
         "interpolant and polished by Newton; stages 2-4 exact"
     ]
+    if problem.t_liftoff > 0.0:
+        rpm = problem.omega(problem.t_liftoff) * 30.0 / math.pi
+        notes.append(
+            f"the half-coupling rests on its stop until t = {problem.t_liftoff:.4g} s, when the "
+            f"flywheel reaches the lift-off speed {rpm:.0f} rpm"
+        )
     warnings: list[str] = []
     if problem.snap:
         notes.append(

@@ -193,3 +193,14 @@ def test_vectorized_sweep_nulls_points_that_never_engage_or_never_spin_up():
     s = sweep(RARE_IMPACT, {**R, "motor_no_load_speed": 300.0}, "roller_mass", [0.05, 0.02],
               fidelity="closed_form")  # fmt: skip
     assert s.results["spin_up_time"][0] is not None and s.results["spin_up_time"][1] is None
+
+
+def test_vectorized_sweep_over_extreme_angles_is_finite():
+    angles = np.concatenate(
+        [np.geomspace(1e-6, 0.5, 40), math.pi / 2 - np.geomspace(0.5, 1e-6, 40)]
+    )
+    s = sweep(RARE_IMPACT, R, "cone_angle", angles, fidelity="closed_form")
+    for name, column in s.results.items():
+        for v in column:
+            assert v is None or isinstance(v, bool) or math.isfinite(v), name
+    assert all(v is not None for v in s.results["release_speed"])
