@@ -31,6 +31,7 @@ from engine.rare_impact import (
     RARE_IMPACT,
     REFERENCE_DESIGN,
     _release_speed_of,
+    quasi_static_release_error,
     spin_up_time,
 )
 from engine.rare_impact_sim import (
@@ -173,7 +174,8 @@ def measure() -> list[dict[str, Any]]:
                 case,
                 _median_time(closed, 2000),
                 _error(t_cf, w_cf, t_ref, w_ref),
-                "quasi-static release speed [002, after eq. 4] and analytic spin-up",
+                "quasi-static release speed [002, after eq. 4] and analytic spin-up; "
+                f"a-priori error estimate {max(quasi_static_release_error(x)):.1e}",
             )
         )
     return rows

@@ -85,6 +85,9 @@ __all__ = [
 ]
 
 G0 = 9.80665
+#: Factor on the first-order error bound of the quasi-static spin-up (see
+#: :func:`quasi_static_release_error`).
+SAFETY = 2.0
 
 
 # ---------------------------------------------------------------------------
@@ -324,8 +327,10 @@ def quasi_static_release_error(x: Mapping[str, Any]) -> tuple[float, float]:
     ratio :math:`\dot z_e/(\Omega\,\cdot)` is the flywheel's acceleration
     measured against the roller/half-coupling natural frequency: slow spin-up
     or stiff springs make the closed form exact. The oscillation's phase at
-    release is unknown, so this is a bound on the magnitude (tests compare it
-    with the simulation).
+    release is unknown, so this bounds the magnitude; over 448 random designs
+    the simulated error reached up to 0.9996 of the first-order bound, so it
+    is multiplied by ``SAFETY = 2`` to cover the neglected higher orders (the
+    tests check the bound against the simulation, also on random designs).
     """
     c1, c2 = x["power_spring_rate"], x["auxiliary_spring_rate"]
     lam1, lam2 = x["power_spring_preload"], x["auxiliary_spring_preload"]
@@ -352,9 +357,9 @@ def quasi_static_release_error(x: Mapping[str, Any]) -> tuple[float, float]:
         if wd_0 <= 0.0:
             return math.inf, math.inf
         t_s = (6.0 * h1 * m_e / (2.0 * a_push * x0 * w_0 * wd_0)) ** (1.0 / 3.0)
-        dw = wd_0 * t_s / w_0
+        dw = SAFETY * wd_0 * t_s / w_0
         t_0 = spin_up_time(inertia, torque, w_0, w_nl)
-        return dw, t_s / t_0
+        return dw, SAFETY * t_s / t_0
 
     def accel(w: float) -> float:
         return torque / inertia if w_nl is None else torque / inertia * (1.0 - w / w_nl)
@@ -374,7 +379,7 @@ def quasi_static_release_error(x: Mapping[str, Any]) -> tuple[float, float]:
     om_0, om_m = math.sqrt(k_0 / m_e), math.sqrt(k_m / m_e)
     amp = (abs(zd_0) / om_0 + abs(zdd_0) / om_0**2) * math.sqrt(om_0 / om_m)
     err = amp + abs(zdd_m) / om_m**2
-    dw = err * k_m / (2.0 * f_m)
+    dw = SAFETY * err * k_m / (2.0 * f_m)
     wd_m = accel(w_m)
     t_m = spin_up_time(inertia, torque, w_m, w_nl)
     dt = dw * w_m / (wd_m * t_m) if wd_m > 0 else math.inf

@@ -293,3 +293,38 @@ def test_stage2_outputs_alone_need_no_stage1_integration():
     r = run(RARE_IMPACT, STIFF, fidelity="simulation", outputs=["oscillation_k", "relock_margin"])
     assert set(r.results) == {"oscillation_k", "relock_margin"}  # no BudgetExceeded: no stage 1
     assert any("not integrated" in n for n in r.notes)
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    c1=st.floats(1e3, 1e6),
+    c2=st.floats(1e2, 1e5),
+    lam1=st.floats(0.0, 0.02),
+    lam2=st.floats(1e-4, 0.02),
+    alpha=st.floats(0.1, 1.47),
+    mp=st.floats(0.005, 0.5),
+    n=st.integers(1, 12),
+    x0=st.floats(0.01, 0.1),
+    inertia=st.floats(1e-3, 1.0),
+    torque=st.floats(0.1, 50.0),
+    h1=st.floats(5e-4, 0.02),
+    no_load=st.one_of(st.none(), st.floats(50.0, 5000.0)),
+)
+def test_property_closed_form_within_its_estimate_of_the_simulation(
+    c1, c2, lam1, lam2, alpha, mp, n, x0, inertia, torque, h1, no_load
+):
+    x = {**R, "power_spring_rate": c1, "auxiliary_spring_rate": c2, "power_spring_preload": lam1,
+         "auxiliary_spring_preload": lam2, "cone_angle": alpha, "roller_mass": mp,
+         "roller_count": n, "roller_radius": x0, "flywheel_inertia": inertia,
+         "motor_torque": torque, "release_travel": h1, "motor_no_load_speed": no_load}  # fmt: skip
+    wanted = ["release_speed", "spin_up_time"]
+    try:
+        sim = run(RARE_IMPACT, x, fidelity="simulation", outputs=wanted)
+    except EngineError:
+        return
+    if sim.rung != "simulation":
+        return
+    cf = run(RARE_IMPACT, x, fidelity="closed_form", outputs=wanted)
+    est_w, est_t = quasi_static_release_error(full(x))
+    assert abs(cf.results["release_speed"] / sim.results["release_speed"] - 1) <= est_w
+    assert abs(cf.results["spin_up_time"] / sim.results["spin_up_time"] - 1) <= est_t
