@@ -38,6 +38,13 @@ What the source leaves open, and what this module does about it
   :math:`2(\lambda_3 + h_2 - m_3 g/c_3) \ge h_3`: that exact condition of
   eq. 3 (half-coupling at rest, rollers unloaded, as the paper takes it)
   is what :func:`min_return_spring_rate` returns.
+* The release-speed formula assumes the balance at :math:`h_1` is stable.
+  With heavy preloads or a small cone angle the stage-1 stiffness is already
+  negative at lift-off and the half-coupling snaps straight to :math:`h_1`
+  (:func:`released_at_liftoff`); the release speed is then the lift-off
+  speed, above the paper's value. The source does not discuss this.
+* Stage 2 starts from rest, as eq. 5 does (the half-coupling's stage-1
+  velocity at release is neglected).
 
 Reference design
 ----------------
@@ -1063,6 +1070,13 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if not math.isfinite(values["spring_height_limit"]):
         values["spring_height_limit"] = None
         notes.append("spring_height_limit is null: with c3 ≤ c1 eq. 6 sets no limit")
+    if ctx.wants("min_return_spring_rate") and g != 0.0:
+        notes.append(
+            "min_return_spring_rate is the exact condition of [002, eq. 3] for a striker that "
+            "starts its return at rest, m3·g/(λ3 + h2 − h3/2); the paper's static "
+            "c3 = m3·g/(h − z3) only holds the weight (with λ3 = 0 and h2 = h3 = h it asks "
+            "m3·g/h, half the 2·m3·g/h a return from rest needs)"
+        )
     if not math.isfinite(values["min_return_spring_rate"]):
         values["min_return_spring_rate"] = None
         notes.append(
