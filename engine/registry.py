@@ -10,12 +10,14 @@ from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
 from .nutrunner import NUTRUNNER_DRIVE
 from .preload_models import CONTROL as PRELOAD_CONTROL
 from .preload_models import TIGHTENING as PRELOAD_TIGHTENING
+from .rare_impact import RARE_IMPACT
 from .spec import ModelSpec
 
 MODELS: tuple[ModelSpec, ...] = (
     NUTRUNNER_DRIVE,
     BALL_CLUTCH,
     BALL_CLUTCH_SETTING,
+    RARE_IMPACT,
     PRELOAD_TIGHTENING,
     PRELOAD_CONTROL,
 )

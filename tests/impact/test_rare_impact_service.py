@@ -1,0 +1,48 @@
+"""The rare-impact model over HTTP: registered, unit strings, verdicts as 422 not 500."""
+
+import pytest
+from fastapi.testclient import TestClient
+
+from service import create_app
+
+
+@pytest.fixture(scope="module")
+def api() -> TestClient:
+    return TestClient(create_app(), raise_server_exceptions=False)
+
+
+def test_listed_with_rungs_and_display_units(api):
+    m = api.get("/api/v1/models/impact.rare").json()
+    assert m["path"] == "/impact/rare"
+    assert [r["name"] for r in m["rungs"]] == ["closed_form", "simulation"]
+    units = {p["name"]: p["display_unit"] for p in m["inputs"]}
+    assert units["cone_angle"] == "deg" and units["power_spring_rate"] == "N/mm"
+    assert units["roller_mass"] == "g" and units["motor_no_load_speed"] == "rpm"
+
+
+def test_unit_strings_give_the_reference_release_speed(api):
+    r = api.post(
+        "/api/v1/impact/rare",
+        json={"cone_angle": "45 deg", "power_spring_rate": "50 N/mm", "roller_mass": "50 g",
+              "fidelity": "closed_form"},
+    )  # fmt: skip
+    assert r.status_code == 200, r.text
+    assert r.json()["results"]["release_speed"] == pytest.approx(236.0163, rel=1e-6)
+
+
+def test_weak_motor_is_a_422_with_a_sentence(api):
+    r = api.post("/api/v1/impact/rare", json={"motor_no_load_speed": "1000 rpm"})
+    assert r.status_code == 422
+    assert "never reaches the release speed" in r.text
+
+
+def test_sweep_endpoint_uses_the_vectorized_closed_form(api):
+    r = api.post(
+        "/api/v1/impact/rare/sweep",
+        json={"base": {}, "vary": "cone_angle", "start": "10 deg", "stop": "80 deg", "num": 50,
+              "fidelity": "closed_form", "outputs": ["release_speed", "full_engagement"]},
+    )  # fmt: skip
+    assert r.status_code == 200, r.text
+    body = r.json()
+    assert body["rung"] == "closed_form" and len(body["results"]["release_speed"]) == 50
+    assert all(v is None or v > 0 for v in body["results"]["release_speed"])
