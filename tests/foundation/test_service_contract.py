@@ -132,6 +132,17 @@ def test_sweep(toy):
     assert body["unit"] == "rad/s" and body["units"] == {"energy": "J"}
 
 
+def test_sweep_without_base_uses_defaults(toy):
+    r = toy.post(
+        "/api/v1/toy/disc/sweep",
+        json={"vary": "diameter", "start": 0.1, "stop": 0.2, "num": 2, "fidelity": "exact"},
+    )
+    assert r.status_code == 200, r.text
+    assert r.json()["results"]["energy"] == pytest.approx(
+        [0.5 * 0.01 / 8 * 1e4, 0.5 * 0.04 / 8 * 1e4]
+    )
+
+
 def test_sweep_bounds(toy):
     r = toy.post(
         "/api/v1/toy/disc/sweep",
