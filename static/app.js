@@ -69,10 +69,14 @@ function unitChoices(si, display) {
   return choices;
 }
 
-/** A number written for a text field: enough digits to round-trip a unit conversion. */
-function fieldNumber(x) {
+/**
+ * A number written into a text field. Loaded values (sent as their exact SI
+ * value until edited) show 7 significant figures; a typed value converted to
+ * another unit keeps 10, enough to give the same answer.
+ */
+function fieldNumber(x, sig = 10) {
   if (!Number.isFinite(x)) return "";
-  return String(Number(x.toPrecision(10)));
+  return String(Number(x.toPrecision(sig)));
 }
 
 /** Significant figures a result deserves, from its relative error estimate. */
@@ -245,6 +249,7 @@ function fieldRow(p) {
     p.label, p.symbol ? el("span", { class: "symbol" }, ` ${p.symbol}`) : null, p.required ? el("span", { class: "req", title: "required" }, " *") : null);
   return el("div", { class: "field", "data-field": p.name },
     label, el("div", { class: "control" }, input, unitSel),
+    p.description ? el("div", { class: "desc", title: p.description }, p.description) : null,
     el("div", { class: "hint", id: "hint-" + p.name }, hintText(p)),
     el("div", { class: "error", id: "err-" + p.name, role: "alert" }));
 }
@@ -296,7 +301,7 @@ function changeUnit(p, input, sel) {
   const v = input.value.trim();
   if (!touched(input) && input.dataset.si !== undefined) {
     // still the loaded value: convert from its exact SI value, and keep it untouched
-    input.value = input.dataset.shown = fieldNumber(Number(input.dataset.si) / next);
+    input.value = input.dataset.shown = fieldNumber(Number(input.dataset.si) / next, 7);
   } else if (v !== "" && Number.isFinite(Number(v))) input.value = fieldNumber((Number(v) * prev) / next);
   sel.dataset.prev = sel.value;
   document.getElementById("hint-" + p.name).textContent = hintText(p);
@@ -318,8 +323,11 @@ function fillForm(m, key) {
     const v = p.name in values ? values[p.name] : p.default;
     if (p.kind === "bool") input.checked = Boolean(v);
     else if (p.kind === "choice") input.value = v ?? "";
-    else {
-      input.value = v === null || v === undefined ? "" : fieldNumber(inUnit(v, currentUnit(p)));
+    else if (typeof v === "string") {
+      input.value = v; // a unit string ("45 mm"): sent as written
+      delete input.dataset.si;
+    } else {
+      input.value = v === null || v === undefined ? "" : fieldNumber(inUnit(v, currentUnit(p)), 7);
       if (v === null || v === undefined) delete input.dataset.si;
       else input.dataset.si = String(v);
     }
@@ -351,7 +359,7 @@ function applyParams(m, params) {
       const opt = [...sel.options].find((o) => norm(o.value) === norm(match[2]) || norm(o.textContent) === norm(match[2]));
       if (opt) {
         sel.value = opt.value; sel.dataset.prev = opt.value; input.value = match[1];
-        if (input.dataset.si !== undefined) input.dataset.shown = fieldNumber(Number(input.dataset.si) / Number(opt.dataset.factor));
+        if (input.dataset.si !== undefined) input.dataset.shown = fieldNumber(Number(input.dataset.si) / Number(opt.dataset.factor), 7);
       }
       else input.value = raw; // the API will parse it, or say why not
     } else input.value = match && (!match[2] || sel?.dataset.api === match[2]) ? match[1] : raw;
@@ -455,9 +463,11 @@ async function post(path, body) {
 
 /** Server errors at their fields; the rest in the error box. */
 function showErrors(data, box) {
-  const general = [];
+  const general = [], marked = new Set();
   for (const d of data.detail || []) {
-    if (!(d.field && setError(d.field, d.msg))) general.push(d.msg);
+    if (d.field && marked.has(d.field)) continue; // the first message per field is shown
+    if (d.field && setError(d.field, d.msg)) marked.add(d.field);
+    else general.push(d.msg);
   }
   box.replaceChildren(...general.map((g) => el("p", { class: "error" }, g)));
 }
@@ -533,7 +543,8 @@ function renderResult(m, data) {
     rows.push(el("tr", { "data-output": o.name },
       el("th", { scope: "row", title: o.description }, o.label),
       el("td", { class: "num", "data-si": v === null ? "null" : String(v), "data-factor": u.factor }, shown),
-      el("td", { class: "unit" }, typeof v === "number" ? u.label : "")));
+      el("td", { class: "unit" }, typeof v === "number" ? u.label : ""),
+      el("td", { class: "desc" }, o.description)));
   }
   const rung = m.rungs.find((r) => r.name === data.rung);
   const meta = el("p", { class: "meta", id: "meta" },
@@ -625,7 +636,7 @@ function chartWidth(container) {
  * "<name>_start"/"<name>_end" (or "_begin"/"_end") in that unit, e.g. the
  * striker's engagement window. Generic: any model can return such a pair.
  */
-function windows(m, data, xUnit) {
+function windows(m, data, xUnit, x0 = 0) {
   const out = [];
   for (const [k, v] of Object.entries(data.results)) {
     const mt = k.match(/^(.*)_(start|begin)$/);
@@ -634,10 +645,18 @@ function windows(m, data, xUnit) {
     if (typeof end !== "number" || norm(data.units[k]) !== norm(xUnit)) continue;
     out.push({ label: mt[1].replaceAll("_", " "), from: v, to: end });
   }
+  // a duration named like a window ("engagement_time", "engagement_window", "*_window"),
+  // with no start/end pair, is shaded from the start of the series
+  for (const [k, v] of Object.entries(data.results)) {
+    if (typeof v !== "number" || !(v > 0) || norm(data.units[k]) !== norm(xUnit)) continue;
+    if (!/window|^engagement_time$/.test(k)) continue;
+    const label = k.replace(/_(time|window)$/, "").replaceAll("_", " ") + " window";
+    if (!out.some((b) => k.startsWith(b.label.replaceAll(" ", "_")))) out.push({ label, from: x0, to: x0 + v });
+  }
   return out;
 }
 
-function makeChart(container, kind, { title, xLabel, yLabel, x, ys, bars = false, bands = [], xRange = null, xLog = false }) {
+function makeChart(container, kind, { title, xLabel, yLabel, x, ys, bars = false, bands = [], marks = [], xRange = null, xLog = false }) {
   const colors = ["#1f5f99", "#c0392b", "#2e8b57", "#8e44ad"];
   const opts = {
     title,
@@ -663,6 +682,18 @@ function makeChart(container, kind, { title, xLabel, yLabel, x, ys, bars = false
           ctx.fillStyle = "#8a6d00";
           ctx.font = `${12 * devicePixelRatio}px system-ui`;
           ctx.fillText(b.label, Math.min(x0, x1) + 4, u.bbox.top + 14 * devicePixelRatio);
+          ctx.restore();
+        }
+        for (const mk of marks) {
+          const px = u.valToPos(mk.at, "x", true);
+          if (!(px >= u.bbox.left && px <= u.bbox.left + u.bbox.width)) continue;
+          ctx.save();
+          ctx.strokeStyle = "#888";
+          ctx.setLineDash([6 * devicePixelRatio, 4 * devicePixelRatio]);
+          ctx.beginPath(); ctx.moveTo(px, u.bbox.top); ctx.lineTo(px, u.bbox.top + u.bbox.height); ctx.stroke();
+          ctx.fillStyle = "#555";
+          ctx.font = `${12 * devicePixelRatio}px system-ui`;
+          ctx.fillText(mk.label, px + 4, u.bbox.top + 14 * devicePixelRatio);
           ctx.restore();
         }
       }],
@@ -701,7 +732,7 @@ function renderSeries(m, data) {
     } else if (xs.length !== ys.length) continue;
     else if (/bin|edge|hist/i.test(o.x + o.name)) bars = true;
     const x = xs.map((v) => v / xu.factor);
-    const bands = xo ? windows(m, data, xo.unit).map((b) => ({ ...b, from: b.from / xu.factor, to: b.to / xu.factor })) : [];
+    const bands = xo && !bars ? windows(m, data, xo.unit, xs[0]).map((b) => ({ ...b, from: b.from / xu.factor, to: b.to / xu.factor })) : [];
     makeChart(box, "series", {
       title: o.label + (bars ? " (histogram)" : ""),
       xLabel, yLabel: `${o.label}${yu.label ? " [" + yu.label + "]" : ""}`,
@@ -737,6 +768,13 @@ function sweepPanel(m) {
     el("div", { id: "sweep-plot", class: "plots" }));
   queueMicrotask(() => sweepDefaults(m));
   return panel;
+}
+
+/** A dashed line at the design in the form (its varied input's current value). */
+function designMark(m, p, u) {
+  const input = document.getElementById("in-" + p.name);
+  const si = !touched(input) && input.dataset.si !== undefined ? Number(input.dataset.si) : Number(input.value) * u.factor;
+  return Number.isFinite(si) ? [{ at: si / u.factor, label: "this design" }] : [];
 }
 
 /** A range around the current value of the varied input, inside its allowed range. */
@@ -812,7 +850,7 @@ async function runSweep(m) {
     title: `${o.label} against ${p.label} (method ${data.rung}, ${fmtTime(data.elapsed_s)})`,
     xLabel: `${p.label}${u.label ? " [" + u.label + "]" : ""}`,
     yLabel: `${o.label}${ou.label ? " [" + ou.label + "]" : ""}`,
-    x, ys: [{ label: o.label, data: y }], xLog: req.scale === "log",
+    x, ys: [{ label: o.label, data: y }], xLog: req.scale === "log", marks: designMark(m, p, u),
   });
   const msgs = [...data.warnings.map((w) => "⚠ " + w), ...data.notes];
   document.getElementById("sweep-notes").replaceChildren(...msgs.slice(0, 6).map((n) => el("p", {}, n)),
