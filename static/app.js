@@ -569,6 +569,7 @@ function renderResult(m, data) {
     el("div", { class: "downloads" },
       el("button", { type: "button", id: "download-json", onclick: () => downloadJSON(m, data) }, "Download JSON"),
       el("button", { type: "button", id: "download-csv", onclick: () => downloadCSV(m, data) }, "Download CSV")),
+    Object.values(data.series).some((v) => v.length) ? el("p", { class: "muted" }, "Drag across a plot to zoom in; double-click to zoom out.") : null,
     el("div", { id: "series-plots", class: "plots" })].filter(Boolean));
   renderSeries(m, data);
 }
@@ -636,7 +637,7 @@ function chartWidth(container) {
  * "<name>_start"/"<name>_end" (or "_begin"/"_end") in that unit, e.g. the
  * striker's engagement window. Generic: any model can return such a pair.
  */
-function windows(m, data, xUnit, x0 = 0) {
+function windows(m, data, xUnit) {
   const out = [];
   for (const [k, v] of Object.entries(data.results)) {
     const mt = k.match(/^(.*)_(start|begin)$/);
@@ -644,14 +645,6 @@ function windows(m, data, xUnit, x0 = 0) {
     const end = data.results[mt[1] + "_end"];
     if (typeof end !== "number" || norm(data.units[k]) !== norm(xUnit)) continue;
     out.push({ label: mt[1].replaceAll("_", " "), from: v, to: end });
-  }
-  // a duration named like a window ("engagement_time", "engagement_window", "*_window"),
-  // with no start/end pair, is shaded from the start of the series
-  for (const [k, v] of Object.entries(data.results)) {
-    if (typeof v !== "number" || !(v > 0) || norm(data.units[k]) !== norm(xUnit)) continue;
-    if (!/window|^engagement_time$/.test(k)) continue;
-    const label = k.replace(/_(time|window)$/, "").replaceAll("_", " ") + " window";
-    if (!out.some((b) => k.startsWith(b.label.replaceAll(" ", "_")))) out.push({ label, from: x0, to: x0 + v });
   }
   return out;
 }
@@ -706,12 +699,17 @@ function makeChart(container, kind, { title, xLabel, yLabel, x, ys, bars = false
   return chart;
 }
 
-/** Every series output against its declared x series; a bins x (one longer) draws as a histogram. */
+/**
+ * Every series output against its declared x series. Curves sharing an x series
+ * and a unit share a chart (e.g. the travel of each part against time); a
+ * series whose x holds bin edges (one longer) or bins draws as a histogram.
+ */
 function renderSeries(m, data) {
   destroyCharts("series");
   const box = document.getElementById("series-plots");
   const byName = Object.fromEntries(m.outputs.map((o) => [o.name, o]));
   const usedAsX = new Set(m.outputs.filter((o) => o.series && o.x).map((o) => o.x));
+  const charts = new Map(); // key -> chart spec, in the order the model lists its outputs
   for (const o of m.outputs) {
     const ys = data.series[o.name];
     if (!o.series || !ys || !ys.length) continue;
@@ -719,9 +717,9 @@ function renderSeries(m, data) {
     const yu = outputUnit(o);
     const y = ys.map((v) => (v === null ? null : v / yu.factor));
     let xs = o.x ? data.series[o.x] : null;
-    const xo = o.x ? byName[o.x] : null;
+    const xo = o.x && xs ? byName[o.x] : null;
     const xu = xo ? outputUnit(xo) : { factor: 1, label: "" };
-    let xLabel = xo ? `${xo.label}${xu.label ? " [" + xu.label + "]" : ""}` : "sample";
+    const xLabel = xo ? `${xo.label}${xu.label ? " [" + xu.label + "]" : ""}` : "sample";
     let bars = false, xRange = null;
     if (!xs) xs = ys.map((_, i) => i);
     else if (xs.length === ys.length + 1) {
@@ -731,12 +729,20 @@ function renderSeries(m, data) {
       xs = ys.map((_, i) => (xs[i] + xs[i + 1]) / 2);
     } else if (xs.length !== ys.length) continue;
     else if (/bin|edge|hist/i.test(o.x + o.name)) bars = true;
-    const x = xs.map((v) => v / xu.factor);
-    const bands = xo && !bars ? windows(m, data, xo.unit, xs[0]).map((b) => ({ ...b, from: b.from / xu.factor, to: b.to / xu.factor })) : [];
+    const key = bars ? "bars:" + o.name : `${xo ? o.x : "index:" + ys.length}|${norm(o.unit)}`;
+    if (!charts.has(key)) {
+      const x = xs.map((v) => v / xu.factor);
+      const bands = xo && !bars ? windows(m, data, xo.unit).map((b) => ({ ...b, from: b.from / xu.factor, to: b.to / xu.factor })) : [];
+      charts.set(key, { xLabel, unit: yu.label, x, ys: [], bars, bands, xRange });
+    }
+    charts.get(key).ys.push({ label: o.label, data: y });
+  }
+  for (const c of charts.values()) {
+    const names = c.ys.map((s) => s.label).join(", ");
     makeChart(box, "series", {
-      title: o.label + (bars ? " (histogram)" : ""),
-      xLabel, yLabel: `${o.label}${yu.label ? " [" + yu.label + "]" : ""}`,
-      x, ys: [{ label: o.label, data: y }], bars, bands, xRange,
+      title: names + (c.bars ? " (histogram)" : ""),
+      xLabel: c.xLabel, yLabel: `${names.length <= 40 ? names : c.ys[0].label + ", …"}${c.unit ? " [" + c.unit + "]" : ""}`,
+      x: c.x, ys: c.ys, bars: c.bars, bands: c.bands, xRange: c.xRange,
     });
   }
 }
