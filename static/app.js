@@ -469,6 +469,11 @@ function showErrors(data, box) {
     if (d.field && setError(d.field, d.msg)) marked.add(d.field);
     else general.push(d.msg);
   }
+  if (marked.size) {
+    general.unshift(`Not computed: ${[...marked].join(", ")} ${marked.size > 1 ? "were" : "was"} refused; see the marked field${marked.size > 1 ? "s" : ""}.`);
+    const first = document.querySelector(".field.invalid input, .field.invalid select");
+    if (first) { first.scrollIntoView({ block: "center" }); first.focus({ preventScroll: true }); }
+  }
   box.replaceChildren(...general.map((g) => el("p", { class: "error" }, g)));
 }
 
