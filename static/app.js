@@ -18,6 +18,10 @@ const state = {
   lastResponse: null, // its JSON answer (status 200 only)
   lastSweep: null, // {request, response}
   charts: [], // uPlot instances to destroy on re-render
+  example: "0", // the example (or "defaults") the form was loaded with
+  sweepParams: null, // the last sweep's settings, kept in the address bar
+  seq: 0, // answers to an older request than the latest are dropped
+  sweepSeq: 0,
 };
 window.calcState = state; // for the browser test and for curious users in the console
 
@@ -157,6 +161,14 @@ async function route() {
   if (!m) return renderHome();
   if (state.model !== m || params.size > 1) showModel(m, params);
   if (params.has("ex") || [...params.keys()].some((k) => m.inputs.some((p) => p.name === k))) await compute();
+  if (params.has("sv") && document.getElementById("sweep-vary")) {
+    // a shared sweep: its input, output, range, points and scale
+    const set = (id, key) => { if (params.has(key)) document.getElementById(id).value = params.get(key); };
+    set("sweep-vary", "sv");
+    sweepDefaults(m);
+    for (const [id, key] of [["sweep-output", "so"], ["sweep-start", "s0"], ["sweep-stop", "s1"], ["sweep-num", "sn"], ["sweep-scale", "ss"]]) set(id, key);
+    await runSweep(m);
+  }
 }
 
 function renderHome() {
@@ -177,6 +189,7 @@ function renderHome() {
 function showModel(m, params = new URLSearchParams()) {
   state.model = m;
   state.lastResponse = null;
+  state.sweepParams = null;
   destroyCharts();
   for (const a of document.querySelectorAll("nav a")) a.classList.toggle("active", a.dataset.model === m.name);
   const sec = document.getElementById("model");
@@ -395,6 +408,11 @@ function setError(name, msg) {
   if (!slot) return false;
   slot.textContent = msg;
   slot.closest(".field")?.classList.toggle("invalid", Boolean(msg));
+  const input = document.getElementById("in-" + name);
+  if (input) {
+    if (msg) input.setAttribute("aria-invalid", "true");
+    else input.removeAttribute("aria-invalid");
+  }
   return true;
 }
 
@@ -487,7 +505,9 @@ async function compute() {
   const out = document.getElementById("result");
   const box = document.getElementById("error-box");
   out.classList.add("busy");
+  const seq = ++state.seq;
   const { ok, data } = await post(m.path, body);
+  if (seq !== state.seq || state.model !== m) return; // a newer request or another model
   out.classList.remove("busy");
   for (const p of m.inputs) setError(p.name, "");
   box.replaceChildren();
@@ -520,6 +540,7 @@ function updateHash(m, body) {
   }
   params.set("fidelity", body.fidelity);
   if ("tolerance" in body) params.set("tol", fieldNumber(body.tolerance * 100));
+  for (const [k, v] of Object.entries(state.sweepParams || {})) params.set(k, v);
   history.replaceState(null, "", "#" + params.toString());
 }
 
@@ -543,12 +564,26 @@ function renderResult(m, data) {
   for (const o of m.outputs) {
     if (o.series || !(o.name in data.results)) continue;
     const v = data.results[o.name];
-    const u = outputUnit(o);
-    const shown = typeof v === "number" ? fmt(v / u.factor, o.kind === "int" ? 12 : sig) : fmt(v);
+    const choices = unitChoices(o.unit, o.display_unit);
+    const u = choices[0];
+    const digits = o.kind === "int" ? 12 : sig;
+    const shown = typeof v === "number" ? fmt(v / u.factor, digits) : fmt(v);
+    const cell = el("td", { class: "num", "data-si": v === null ? "null" : String(v), "data-factor": u.factor }, shown);
+    let unitCell = typeof v === "number" ? u.label : "";
+    if (typeof v === "number" && choices.length > 1 && o.kind !== "int") {
+      // another unit for this result: the same SI value, converted
+      unitCell = el("select", { class: "result-unit", "aria-label": `${o.label} unit` },
+        ...choices.map((c, i) => el("option", { value: String(i) }, c.label)));
+      unitCell.addEventListener("change", () => {
+        const c = choices[Number(unitCell.value)];
+        cell.dataset.factor = c.factor;
+        cell.textContent = fmt(v / c.factor, digits);
+      });
+    }
     rows.push(el("tr", { "data-output": o.name },
       el("th", { scope: "row", title: o.description }, o.label),
-      el("td", { class: "num", "data-si": v === null ? "null" : String(v), "data-factor": u.factor }, shown),
-      el("td", { class: "unit" }, typeof v === "number" ? u.label : ""),
+      cell,
+      el("td", { class: "unit" }, unitCell),
       el("td", { class: "desc" }, o.description)));
   }
   const rung = m.rungs.find((r) => r.name === data.rung);
@@ -829,7 +864,9 @@ async function runSweep(m) {
   const errBox = document.getElementById("sweep-error");
   errBox.textContent = "";
   for (const p2 of m.inputs) setError(p2.name, "");
+  const seq = ++state.sweepSeq;
   const { ok, data } = await post(m.path + "/sweep", req);
+  if (seq !== state.sweepSeq || state.model !== m) return;
   destroyCharts("sweep");
   const plot = document.getElementById("sweep-plot");
   plot.replaceChildren();
@@ -848,6 +885,11 @@ async function runSweep(m) {
     return;
   }
   state.lastSweep = { request: req, response: data };
+  state.sweepParams = {
+    sv: vary, so: output, s0: document.getElementById("sweep-start").value.trim(),
+    s1: document.getElementById("sweep-stop").value.trim(), sn: String(num), ss: req.scale,
+  };
+  updateHash(m, { ...requestBody(m), ...fidelityBody() });
   if (!Array.isArray(data.results[output])) {
     errBox.textContent = `The sweep returned no values of ${output} (method ${data.rung}); try another output or method.`;
     document.body.dataset.sweep = "empty";
@@ -868,6 +910,14 @@ async function runSweep(m) {
     ...(msgs.length > 6 ? [el("p", { class: "muted" }, `… and ${msgs.length - 6} more`)] : []));
   document.body.dataset.sweep = "ok";
 }
+
+let resizeTimer = null;
+window.addEventListener("resize", () => {
+  clearTimeout(resizeTimer);
+  resizeTimer = setTimeout(() => {
+    for (const c of state.charts) c.chart.setSize({ width: chartWidth(c.chart.root.parentElement.parentElement), height: 280 });
+  }, 150);
+});
 
 init().catch((e) => {
   document.getElementById("model").replaceChildren(el("p", { class: "error" }, "Could not load the model catalogue: " + e));

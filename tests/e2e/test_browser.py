@@ -557,3 +557,30 @@ def test_infeasible_design_and_unit_strings(page, base_url):
     assert "required" in page.inner_text("#err-diameter")
     assert _submit(page) == "error"
     assert "required" in page.inner_text("#err-diameter")
+
+
+def test_result_units_and_a_shared_sweep(page, base_url):
+    _open(page, base_url, f"m={STRIKER.name}")
+    assert _submit(page) == "ok"
+    # a result shown in another unit is the same SI value converted
+    row = page.locator('#results tr[data-output="peak_travel"]')
+    assert row.locator("td.num").inner_text() == "10.0000"  # 0.01 m in mm, 6 figures
+    row.locator("select.result-unit").select_option(label="m")
+    assert row.locator("td.num").inner_text() == "0.0100000"
+    # a sweep is part of the link: a fresh page computes and sweeps the same
+    page.select_option("#sweep-output", "travel_time")
+    page.select_option("#sweep-vary", "mass")
+    page.fill("#sweep-num", "7")
+    page.click("#sweep-run")
+    page.wait_for_selector("body[data-sweep]")
+    sweep = page.evaluate("window.calcState.lastSweep")
+    assert len(sweep["response"]["values"]) == 7
+    assert "sv=mass" in page.url and "so=travel_time" in page.url
+    other = page.context.new_page()
+    other.goto(page.url)
+    other.wait_for_selector("body[data-sweep]")
+    again = other.evaluate("window.calcState.lastSweep")
+    assert again["request"] == sweep["request"]
+    assert again["response"]["results"] == sweep["response"]["results"]
+    assert _canvas_ink(other, "#sweep-plot")[0] > 500
+    other.close()
