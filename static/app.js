@@ -214,7 +214,7 @@ function showModel(m, params = new URLSearchParams()) {
   const examples = el("select", { id: "example", "aria-label": "load a worked example" },
     el("option", { value: "" }, "Load…"),
     el("option", { value: "defaults" }, "source defaults"),
-    ...m.examples.map((_, i) => el("option", { value: String(i) }, i === 0 ? "worked example (source)" : `example ${i + 1}`)));
+    ...m.examples.map((_, i) => el("option", { value: String(i) }, `example ${i + 1}${i === 0 ? " (the model's reference case)" : ""}`)));
   examples.addEventListener("change", () => {
     if (examples.value !== "") fillForm(m, examples.value);
     examples.value = "";
@@ -386,7 +386,10 @@ function applyParams(m, params) {
 function fidelityRow(m) {
   const sel = el("select", { id: "fidelity", name: "fidelity" },
     el("option", { value: "auto" }, "auto: cheapest method within the tolerance"),
-    ...m.rungs.map((r) => el("option", { value: r.name, title: r.description }, `${r.name}${r.typical_error ? " (" + r.typical_error + ")" : ""}`)));
+    ...m.rungs.map((r) => {
+      const err = r.typical_error.length > 48 ? r.typical_error.slice(0, 47) + "…" : r.typical_error;
+      return el("option", { value: r.name, title: `${r.description}; typical error ${r.typical_error || "not stated"}` }, `${r.name}${err ? " (" + err + ")" : ""}`);
+    }));
   sel.value = m.default_fidelity;
   sel.addEventListener("change", syncTolerance);
   const tol = el("input", { id: "tolerance", name: "tolerance", type: "text", inputmode: "decimal", size: 5, value: "1" });
