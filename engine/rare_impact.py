@@ -695,6 +695,8 @@ _STAGE1_OUTPUTS = (
     "release_speed",
     "spin_up_time",
     "engagement_window",
+    "engagement_start",
+    "engagement_end",
     "full_engagement",
     "engagement_margin",
     "time",
@@ -1042,6 +1044,8 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "oscillation_k": k,
         "max_striker_travel": float(max_striker_travel(b, k)),
         "engagement_window": window,
+        "engagement_start": t_spin,
+        "engagement_end": t_spin + window,
         "full_engagement": bool(t_eng <= window),
         "spring_height_limit": float(spring_height_limit(m2_total, g, c1, c3)),
         "min_return_spring_rate": float(
@@ -1152,6 +1156,8 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "max_striker_travel": max_striker_travel(b, k),
             "engagement_time": t_eng,
             "engagement_window": window,
+            "engagement_start": t_spin,
+            "engagement_end": t_spin + window,
             "full_engagement": t_eng <= window,
             "engagement_margin": (window - t_eng) / window,
             "spring_height_limit": spring_height_limit(m2_total, g, c1, c3),
@@ -1463,6 +1469,20 @@ _OUTPUTS: tuple[Output, ...] = (
         "engagement_window",
         "s",
         "φ_eng/ω_M: time the anvil's opening takes to pass [002, after eq. 5]",
+        display_unit="ms",
+    ),
+    Output(
+        "engagement_start",
+        "s",
+        "time from motor start at which the striker is freed and the engagement window "
+        "opens (= spin_up_time); with engagement_end it places the window on the time series",
+        display_unit="ms",
+    ),
+    Output(
+        "engagement_end",
+        "s",
+        "time from motor start at which the anvil's opening has passed: "
+        "spin_up_time + engagement_window",
         display_unit="ms",
     ),
     Output(

@@ -321,6 +321,8 @@ def _sweep_vectorized(
     wanted = known if outputs is None else [n for n in outputs if n in known]
     ctx = RunContext(rung=rung, outputs=frozenset(wanted), tolerance=tol)
     result = spec.vectorized({**first, param.name: arr}, ctx)
+    if any(name not in result.values for name in wanted):
+        return None  # the array version does not give every asked output: loop instead
     results: dict[str, list[Value]] = {}
     bad = np.zeros(arr.shape, dtype=bool)
     for name in wanted:

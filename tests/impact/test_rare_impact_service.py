@@ -46,3 +46,16 @@ def test_sweep_endpoint_uses_the_vectorized_closed_form(api):
     body = r.json()
     assert body["rung"] == "closed_form" and len(body["results"]["release_speed"]) == 50
     assert all(v is None or v > 0 for v in body["results"]["release_speed"])
+
+
+def test_engagement_window_placed_on_the_time_axis(api):
+    from engine.rare_impact import REFERENCE_DESIGN
+
+    body = api.post(
+        "/api/v1/impact/rare", json={**REFERENCE_DESIGN, "fidelity": "simulation"}
+    ).json()
+    r = body["results"]
+    # the window opens at release (end of stage 1) and lasts φ_eng/ω_M
+    assert r["engagement_start"] == r["spin_up_time"]
+    assert r["engagement_end"] - r["engagement_start"] == pytest.approx(r["engagement_window"])
+    assert body["series"]["time"][0] <= r["engagement_start"] <= r["engagement_end"]
