@@ -184,7 +184,13 @@ def request_model(spec: ModelSpec) -> type[BaseModel]:
         ),
         tolerance=(
             float | None,
-            Field(default=None, gt=0, lt=1, description="relative tolerance for 'auto' (0.01)"),
+            Field(
+                default=None,
+                gt=0,
+                lt=1,
+                allow_inf_nan=False,
+                description="relative tolerance for 'auto' (0.01)",
+            ),
         ),
         outputs=(
             _list_of(output_names) | None,
@@ -261,7 +267,7 @@ def sweep_request_model(spec: ModelSpec) -> type[BaseModel]:
             Field(default=None, max_length=len(scalar_outputs)),
         ),
         fidelity=(_fidelity_type(spec), Field(default=spec.default_fidelity)),
-        tolerance=(float | None, Field(default=None, gt=0, lt=1)),
+        tolerance=(float | None, Field(default=None, gt=0, lt=1, allow_inf_nan=False)),
     )
 
 
