@@ -247,12 +247,14 @@ def response_model(spec: ModelSpec) -> type[BaseModel]:
 def sweep_request_model(spec: ModelSpec) -> type[BaseModel]:
     numeric = tuple(p.name for p in spec.inputs if p.is_numeric)
     scalar_outputs = tuple(o.name for o in spec.outputs if not o.series)
+    base = inputs_model(spec, all_optional=True)
     return create_model(
         _class_name(spec, "SweepRequest"),
         __config__=ConfigDict(extra="forbid"),
         base=(
-            inputs_model(spec, all_optional=True),
-            Field(default_factory=dict, description="inputs held fixed (defaults fill the rest)"),
+            base,
+            # a model instance, not a dict: the route calls base.model_dump() (found by fuzzing)
+            Field(default_factory=base, description="inputs held fixed (defaults fill the rest)"),
         ),
         vary=(_literal(numeric), Field(description="the input to vary")),
         start=(

@@ -61,7 +61,7 @@ class EnginePool:
         self.threads = threads
         self.capacity = threads + queue
         self.grace_s = grace_s
-        self._executor = ThreadPoolExecutor(max_workers=threads, thread_name_prefix="engine")
+        self._executor: ThreadPoolExecutor | None = None
         self._lock = threading.Lock()
         self._in_flight = 0
 
@@ -95,7 +95,10 @@ class EnginePool:
                 )
             return fn(remaining)
 
-        future = self._executor.submit(job)
+        with self._lock:
+            if self._executor is None:
+                self._executor = ThreadPoolExecutor(self.threads, thread_name_prefix="engine")
+            future = self._executor.submit(job)
         future.add_done_callback(self._release)
         try:
             return await asyncio.wait_for(asyncio.wrap_future(future), budget_s + self.grace_s)
@@ -109,4 +112,8 @@ class EnginePool:
             ) from None
 
     def shutdown(self) -> None:
-        self._executor.shutdown(wait=False, cancel_futures=True)
+        """Drop queued work and let the threads end; a later call starts a fresh pool."""
+        with self._lock:
+            executor, self._executor = self._executor, None
+        if executor is not None:
+            executor.shutdown(wait=False, cancel_futures=True)
