@@ -86,7 +86,7 @@ def _unreadable(exc: BaseException | None) -> str | None:
 async def _http(_: Request, exc: Exception) -> JSONResponse:
     assert isinstance(exc, StarletteHTTPException)
     msg = str(exc.detail)
-    kind = "http_error"
+    kind = getattr(exc, "kind", "http_error")
     if exc.status_code == 400:
         reason = _unreadable(exc.__cause__)
         if reason:

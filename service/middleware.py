@@ -17,6 +17,8 @@ import uuid
 from collections.abc import Awaitable, Callable, MutableMapping
 from typing import Any
 
+from starlette.exceptions import HTTPException
+
 Scope = MutableMapping[str, Any]
 Message = MutableMapping[str, Any]
 Receive = Callable[[], Awaitable[Message]]
@@ -159,7 +161,7 @@ class BodyGuard:
             if message["type"] == "http.request":
                 seen += len(message.get("body", b""))
                 if seen > self.limit:
-                    raise _TooLarge
+                    raise BodyTooLarge(self.limit)
             return message
 
         async def watch(message: Message) -> None:
@@ -169,18 +171,13 @@ class BodyGuard:
 
         try:
             await self.app(scope, limited, watch)
-        except _TooLarge:
+        except BodyTooLarge:
             if started:  # pragma: no cover - every route reads its body before answering
                 raise
             await self._too_large(send)
 
     async def _too_large(self, send: Send) -> None:
-        await _refuse(
-            send,
-            413,
-            "body_too_large",
-            f"request body over the {self.limit}-byte limit (MAX_BODY_BYTES)",
-        )
+        await _refuse(send, 413, BodyTooLarge.kind, BodyTooLarge(self.limit).detail)
 
 
 async def _refuse(send: Send, status: int, kind: str, msg: str) -> None:
@@ -200,5 +197,11 @@ async def _refuse(send: Send, status: int, kind: str, msg: str) -> None:
     await send({"type": "http.response.body", "body": body})
 
 
-class _TooLarge(Exception):
-    pass
+class BodyTooLarge(HTTPException):
+    """Raised from ``receive`` mid-body; FastAPI re-raises HTTP exceptions from body reading,
+    so the 413 survives its "error parsing the body" catch-all."""
+
+    kind = "body_too_large"
+
+    def __init__(self, limit: int) -> None:
+        super().__init__(413, f"request body over the {limit}-byte limit (MAX_BODY_BYTES)")
