@@ -86,14 +86,34 @@ def start_server(workers: int, toy: bool) -> tuple[subprocess.Popen[bytes], str]
     raise SystemExit("the server did not answer /healthz within 30 s")
 
 
+def cpu_seconds(pid: int | None) -> float | None:
+    """User + system CPU time of ``pid`` and its children (uvicorn workers), from /proc."""
+    if pid is None or not Path("/proc").is_dir():
+        return None
+    tick = os.sysconf("SC_CLK_TCK")
+    total = 0.0
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            fields = stat.read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        proc_pid, ppid = int(stat.parent.name), int(fields[1])
+        if pid in (proc_pid, ppid):
+            total += (int(fields[11]) + int(fields[12])) / tick
+    return total
+
+
 def probe(client: httpx.Client, path: str, body: dict[str, Any], n: int = 5) -> float | None:
-    times = []
-    for _ in range(n):
+    """Median answer time of ``n`` calls (one call when it takes over 0.5 s); None on error."""
+    times: list[float] = []
+    while len(times) < n:
         t = time.perf_counter()
         r = client.post(path, json=body)
         times.append(time.perf_counter() - t)
         if r.status_code != 200:
             return None
+        if times[-1] > 0.5:
+            break
     return statistics.median(times)
 
 
@@ -137,6 +157,7 @@ def hammer(
     requests: int,
     seconds: float,
     concurrency: int,
+    server_pid: int | None = None,
 ) -> dict[str, Any]:
     """Closed loop: ``concurrency`` clients until ``requests`` answers or ``seconds`` pass."""
     latencies: list[float] = []
@@ -163,13 +184,21 @@ def hammer(
                     statuses[r.status_code] = statuses.get(r.status_code, 0) + 1
 
     threads = [threading.Thread(target=client_loop) for _ in range(concurrency)]
+    cpu_before = cpu_seconds(server_pid)
     start = time.perf_counter()
     for th in threads:
         th.start()
     for th in threads:
         th.join()
     wall = time.perf_counter() - start
+    cpu_after = cpu_seconds(server_pid)
     latencies.sort()
+    # warm-up requests (20 per client) are included in the CPU but not in the count
+    server_cpu_ms = (
+        round((cpu_after - cpu_before) * 1e3 / (len(latencies) + 20 * concurrency), 3)
+        if cpu_before is not None and cpu_after is not None
+        else None
+    )
 
     def pct(p: float) -> float:
         return round(latencies[min(len(latencies) - 1, int(p * len(latencies)))] * 1e3, 2)
@@ -184,6 +213,7 @@ def hammer(
         "p50_ms": pct(0.50),
         "p99_ms": pct(0.99),
         "max_ms": round(latencies[-1] * 1e3, 2),
+        "server_cpu_ms_per_request": server_cpu_ms,
     }
 
 
@@ -227,13 +257,14 @@ def main(argv: list[str] | None = None) -> int:
                     chosen = {"model": m["name"], "path": path, "rung": "auto"}
                     chosen["body"] = dict(m["examples"][0]) if m["examples"] else {}
                     closed, sim = (chosen, sim) if key == "closed" else (closed, chosen)
+        pid = proc.pid if proc is not None else None
         results: dict[str, Any] = {
-            "healthz": hammer(url, "GET", "/healthz", None, requests, seconds, concurrency)
+            "healthz": hammer(url, "GET", "/healthz", None, requests, seconds, concurrency, pid)
         }
         for key, chosen, n in (("closed_form", closed, requests), ("simulation", sim, requests)):
             if chosen is None:
                 continue
-            r = hammer(url, "POST", chosen["path"], chosen["body"], n, seconds, concurrency)
+            r = hammer(url, "POST", chosen["path"], chosen["body"], n, seconds, concurrency, pid)
             results[key] = {"model": chosen["model"], "rung": chosen["rung"], **r}
     finally:
         if proc is not None:
@@ -266,12 +297,12 @@ def main(argv: list[str] | None = None) -> int:
     out = Path(args.out)
     out.parent.mkdir(parents=True, exist_ok=True)
     out.write_text(json.dumps(report, indent=2) + "\n")
-    print(f"{'endpoint':<44} {'req/s':>8} {'p50 ms':>8} {'p99 ms':>8}  statuses")
+    print(f"{'endpoint':<44} {'req/s':>8} {'p50 ms':>8} {'p99 ms':>8} {'cpu ms':>7}  statuses")
     for key, r in results.items():
         label = f"{key} {r['path']}" + (f" [{r['rung']}]" if "rung" in r else "")
         print(
-            f"{label:<44} {r['requests_per_s']:>8} {r['p50_ms']:>8} {r['p99_ms']:>8}  "
-            f"{r['statuses']}"
+            f"{label:<44} {r['requests_per_s']:>8} {r['p50_ms']:>8} {r['p99_ms']:>8} "
+            f"{r['server_cpu_ms_per_request'] or '-':>7}  {r['statuses']}"
         )
     print(json.dumps(targets), f"-> {out}")
     missed = targets and not (targets["throughput_target_met"] and targets["p99_target_met"])

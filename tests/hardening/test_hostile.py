@@ -201,3 +201,14 @@ def test_every_numeric_input_of_every_model_survives_hostile_values(
             if not isinstance(value, float) or value != value or abs(value) == float("inf"):
                 # not a finite number: refused, naming this input
                 assert any(i["field"] == p.name for i in items), (where, items)
+
+
+@pytest.mark.parametrize("text", ["1e999", "-1e999 mm", "1e308 km"])
+def test_unit_strings_that_overflow_are_refused(toy: TestClient, text: str) -> None:
+    r = toy.post("/api/v1/toy/disc", json={"diameter": text})
+    assert r.status_code == 422
+    (item,) = r.json()["detail"]
+    assert (
+        item["field"] == "diameter"
+        and item["msg"] == f"diameter: {text!r} is not a finite quantity"
+    )
