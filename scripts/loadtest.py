@@ -118,16 +118,20 @@ def probe(client: httpx.Client, path: str, body: dict[str, Any], n: int = 5) -> 
 
 
 def choose(url: str) -> tuple[dict[str, Any] | None, dict[str, Any] | None]:
-    """(closed-form endpoint, simulation endpoint): each {path, body, model, rung}."""
+    """(closed-form endpoint, simulation endpoint): each {model, path, rung, body}.
+
+    Deterministic: the first (model, rung) in registry order whose rung name says
+    closed form (resp. simulation) and that answers its first example with 200;
+    without such names, the fastest (resp. a time-series model, else the slowest).
+    """
     with httpx.Client(base_url=url, timeout=30) as client:
         models = client.get("/api/v1/models").json()["models"]
         candidates = []
         for m in models:
             example = dict(m["examples"][0]) if m["examples"] else {}
-            has_series = any(o["series"] for o in m["outputs"])
             for rung in m["rungs"]:
                 body = {**example, "fidelity": rung["name"]}
-                t = probe(client, "/api/v1" + m["path"], body)
+                t = probe(client, "/api/v1" + m["path"], body, n=3)
                 if t is not None:
                     candidates.append(
                         {
@@ -138,14 +142,16 @@ def choose(url: str) -> tuple[dict[str, Any] | None, dict[str, Any] | None]:
                             "probe_s": t,
                             "closed_word": bool(CLOSED_WORDS.search(rung["name"])),
                             "sim_word": bool(SIM_WORDS.search(rung["name"])),
-                            "series": has_series,
+                            "series": any(o["series"] for o in m["outputs"]),
                         }
                     )
     if not candidates:
         return None, None
-    closed = min(candidates, key=lambda c: (not c["closed_word"], c["probe_s"]))
-    sims = [c for c in candidates if c is not closed]
-    sim = max(sims, key=lambda c: (c["sim_word"], c["series"], c["probe_s"])) if sims else None
+    named = [c for c in candidates if c["closed_word"]]
+    closed = named[0] if named else min(candidates, key=lambda c: c["probe_s"])
+    rest = [c for c in candidates if c is not closed]
+    sims = [c for c in rest if c["sim_word"]] or [c for c in rest if c["series"]]
+    sim = sims[0] if sims else (max(rest, key=lambda c: c["probe_s"]) if rest else None)
     return closed, sim
 
 

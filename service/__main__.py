@@ -9,9 +9,11 @@ from __future__ import annotations
 
 import argparse
 import copy
+import socket
 from typing import Any
 
 import uvicorn
+import uvicorn.config
 from uvicorn.config import LOGGING_CONFIG
 
 from .config import Settings
@@ -51,6 +53,8 @@ def main(argv: list[str] | None = None) -> None:
         help="module:function building the app (tests and the load test serve toy models)",
     )
     args = parser.parse_args(argv)
+    if args.workers > 1:
+        _listen_with_nodelay()
     uvicorn.run(
         args.factory,
         factory=True,
@@ -63,6 +67,26 @@ def main(argv: list[str] | None = None) -> None:
         server_header=False,
         date_header=False,
     )
+
+
+def _listen_with_nodelay() -> None:
+    """Set TCP_NODELAY on the listening socket uvicorn shares between worker processes.
+
+    uvicorn opens it with ``proto=0``, so asyncio does not set TCP_NODELAY on the
+    connections, and every keep-alive answer (headers and body sent apart) waits
+    ~40 ms for the client's delayed ACK: measured 45 ms per request with
+    ``--workers 2`` against 1.5 ms with one worker. Linux copies the option from
+    the listening socket to each accepted one.
+    """
+    original = uvicorn.config.Config.bind_socket
+
+    def bind_socket(self: uvicorn.config.Config) -> socket.socket:
+        sock = original(self)
+        if sock.family in (socket.AF_INET, socket.AF_INET6):
+            sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+        return sock
+
+    uvicorn.config.Config.bind_socket = bind_socket  # type: ignore[method-assign]
 
 
 if __name__ == "__main__":

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from fastapi import APIRouter, HTTPException
+from fastapi.responses import JSONResponse
 from pydantic import BaseModel
 
 import engine
@@ -122,7 +123,7 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
     async def evaluate(body: request) -> Any:  # type: ignore[valid-type]
         inputs = _inputs(body)
 
-        def work(budget_s: float) -> dict[str, Any]:
+        def work(budget_s: float) -> JSONResponse:
             result = engine.run(
                 spec,
                 inputs,
@@ -132,7 +133,8 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
                 budget_s=budget_s,
                 max_steps=lim.max_steps,
             )
-            return _response(result, lim.max_series_points)
+            # serialised here, in the worker thread: a long series never blocks the event loop
+            return JSONResponse(_response(result, lim.max_series_points))
 
         return await lim.pool.run(work, lim.budget_s, f"{spec.name}")
 
@@ -140,8 +142,8 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
         values = _sweep_points(spec, body)
         base = {k: v for k, v in body.base.model_dump().items() if v is not None}  # type: ignore[attr-defined]
 
-        def work(budget_s: float) -> engine.SweepResult:
-            return engine.sweep(
+        def work(budget_s: float) -> JSONResponse:
+            result = engine.sweep(
                 spec,
                 base,
                 body.vary,  # type: ignore[attr-defined]
@@ -152,20 +154,22 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
                 budget_s=budget_s,
                 max_steps=lim.max_steps,
             )
+            return JSONResponse(
+                {
+                    "model": result.model,
+                    "vary": result.vary,
+                    "unit": spec.param(result.vary).unit,
+                    "values": result.values,
+                    "results": result.results,
+                    "units": result.units,
+                    "rung": result.rung,
+                    "elapsed_s": result.elapsed_s,
+                    "notes": result.notes,
+                    "warnings": result.warnings,
+                }
+            )
 
-        result = await lim.pool.run(work, lim.budget_s, f"{spec.name} sweep")
-        return {
-            "model": result.model,
-            "vary": result.vary,
-            "unit": spec.param(result.vary).unit,
-            "values": result.values,
-            "results": result.results,
-            "units": result.units,
-            "rung": result.rung,
-            "elapsed_s": result.elapsed_s,
-            "notes": result.notes,
-            "warnings": result.warnings,
-        }
+        return await lim.pool.run(work, lim.budget_s, f"{spec.name} sweep")
 
     router.add_api_route(
         spec.path,
