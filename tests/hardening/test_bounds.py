@@ -173,3 +173,26 @@ def test_settings_refuse_nonsense_at_start_up(monkeypatch: pytest.MonkeyPatch) -
     monkeypatch.setenv("BUDGET_S", "nan")
     with pytest.raises(ValueError, match="BUDGET_S must be positive"):
         Settings()
+
+
+def test_time_spent_queueing_counts_against_the_budget() -> None:
+    # one thread: the second request waits behind a 0.6 s computation, longer than its budget
+    settings = Settings(engine_threads=1, engine_queue=4, budget_s=0.4, budget_grace_s=1.0)
+    app = create_app(models=MODELS, settings=settings)
+
+    async def scenario() -> tuple[httpx.Response, httpx.Response]:
+        transport = httpx.ASGITransport(app=app)
+        async with httpx.AsyncClient(transport=transport, base_url="http://t") as c:
+            first = asyncio.create_task(c.post("/api/v1/toy/stubborn", json={"seconds": 0.6}))
+            while app.state.engine_pool.in_flight == 0:
+                await asyncio.sleep(0.005)
+            second = await c.post("/api/v1/toy/disc", json={"diameter": 0.1})
+            return await first, second
+
+    first, second = asyncio.run(scenario())
+    assert first.status_code == 200  # late, but within the grace: its answer is still sent
+    item = only_error(second, 422)
+    assert item["type"] == "budget_exceeded"
+    assert item["msg"] == (
+        "toy.disc waited its whole 0.4 s wall-clock budget (BUDGET_S) for a free worker"
+    )

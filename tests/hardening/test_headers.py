@@ -197,6 +197,13 @@ def test_access_log_is_one_json_line_without_the_body(
     assert all(secret not in rec.getMessage() for rec in caplog.records)
 
 
+def test_access_log_records_a_500(toy: TestClient, caplog: pytest.LogCaptureFixture) -> None:
+    with caplog.at_level(logging.INFO, logger="service.access"):
+        toy.post("/api/v1/toy/crash", json={}, headers={"x-request-id": "crash-1"})
+    (line,) = [rec.getMessage() for rec in caplog.records if rec.name == "service.access"]
+    assert json.loads(line)["status"] == 500 and json.loads(line)["request_id"] == "crash-1"
+
+
 def test_access_log_can_be_switched_off(caplog: pytest.LogCaptureFixture) -> None:
     c = TestClient(create_app(models=[TOY], settings=Settings(access_log=False)))
     with caplog.at_level(logging.INFO, logger="service.access"):
