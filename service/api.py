@@ -199,9 +199,12 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
 def catalogue_router(models: Sequence[ModelSpec]) -> APIRouter:
     router = APIRouter(prefix=API_PREFIX, tags=["catalogue"])
 
+    catalogue = {"models": [spec.describe() for spec in models]}  # fixed once the app is built
+    entries = {spec.name: entry for spec, entry in zip(models, catalogue["models"], strict=True)}
+
     @router.get("/models", summary="Every model: inputs, units, ranges, outputs, rungs")
     def list_models() -> dict[str, Any]:
-        return {"models": [spec.describe() for spec in models]}
+        return catalogue
 
     @router.get(
         "/models/{name}",
@@ -209,9 +212,8 @@ def catalogue_router(models: Sequence[ModelSpec]) -> APIRouter:
         responses={404: {"model": schemas.ErrorResponse, "description": "no such model"}},
     )
     def get_model(name: str) -> dict[str, Any]:
-        for spec in models:
-            if spec.name == name:
-                return spec.describe()
-        raise HTTPException(status_code=404, detail=f"no model named {name!r}")
+        if name in entries:
+            return entries[name]
+        raise HTTPException(status_code=404, detail=f"no model named {name[:80]!r}")
 
     return router
