@@ -28,6 +28,10 @@ What the pool adds on top
   ``ENGINE_QUEUE`` wait; one more gets 503 with ``Retry-After`` at once
   instead of an unbounded queue.
 
+Cost: the hop to a thread and back is about 0.1 ms of CPU per request
+(measured in-process on preload.tightening: ~0.37 ms through the pool against
+~0.26 ms inline), the price of never running a computation on the event loop.
+
 A thread cannot be killed, so a model that ignores its deadline forever would
 keep its slot: the warning logged on every hard timeout names the model so it
 can be fixed. Scale across cores with ``python -m service --workers N``.
