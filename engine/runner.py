@@ -22,6 +22,7 @@ from .spec import Check, ModelSpec, Param, RunContext, Value
 DEFAULT_TOLERANCE = 0.01
 MAX_SWEEP_POINTS = 2000
 DEFAULT_BUDGET_S = 10.0
+DEFAULT_MAX_STEPS = 1_000_000
 
 
 @dataclass
@@ -111,11 +112,14 @@ def run(
     tolerance: float | None = None,
     outputs: Iterable[str] | None = None,
     budget_s: float | None = DEFAULT_BUDGET_S,
+    max_steps: int = DEFAULT_MAX_STEPS,
 ) -> RunResult:
     """Evaluate ``spec`` on SI ``inputs``.
 
     ``outputs`` limits the work to the named outputs and series (all when
     None). Non-finite values never leave: they become None with a note.
+    ``budget_s`` and ``max_steps`` reach the model as ``ctx.deadline`` and
+    ``ctx.max_steps``; a model past either raises BudgetExceeded.
     """
     values, warnings = spec.validate(inputs)
     tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
@@ -139,6 +143,7 @@ def run(
         outputs=wanted,
         tolerance=tol,
         deadline=None if budget_s is None else start + budget_s,
+        max_steps=max_steps,
     )
     result = spec.compute(values, ctx)
     elapsed = time.perf_counter() - start
@@ -206,6 +211,7 @@ def sweep(
     fidelity: str | None = None,
     tolerance: float | None = None,
     budget_s: float | None = DEFAULT_BUDGET_S,
+    max_steps: int = DEFAULT_MAX_STEPS,
 ) -> SweepResult:
     """Evaluate ``spec`` with ``vary`` set to each of ``values``, the rest from ``base``.
 
@@ -249,6 +255,7 @@ def sweep(
                 tolerance=tolerance,
                 outputs=wanted,
                 budget_s=remaining,
+                max_steps=max_steps,
             )
         except InputOutOfRange as exc:
             if exc.field != vary:

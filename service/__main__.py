@@ -1,12 +1,44 @@
-"""``python -m service [--host H] [--port P]``: serve the API and the form with uvicorn."""
+"""``python -m service [--host H] [--port P] [--workers N]``: serve the API and the form.
+
+uvicorn's own access log is off: :class:`service.middleware.FrontDoor` writes
+one JSON line per request to stdout instead (method, path, status,
+duration_ms, request_id; never a body). ``ACCESS_LOG=0`` silences it.
+"""
 
 from __future__ import annotations
 
 import argparse
+import copy
+import socket
+from typing import Any
 
 import uvicorn
+import uvicorn.config
+from uvicorn.config import LOGGING_CONFIG
 
 from .config import Settings
+
+
+def log_config(level: str) -> dict[str, Any]:
+    """uvicorn's logging set-up plus the service's loggers (access lines as bare JSON)."""
+    config: dict[str, Any] = copy.deepcopy(LOGGING_CONFIG)
+    config["formatters"]["json_line"] = {"format": "%(message)s"}
+    config["handlers"]["json_access"] = {
+        "class": "logging.StreamHandler",
+        "formatter": "json_line",
+        "stream": "ext://sys.stdout",
+    }
+    config["loggers"]["service"] = {
+        "handlers": ["default"],
+        "level": level.upper(),
+        "propagate": False,
+    }
+    config["loggers"]["service.access"] = {
+        "handlers": ["json_access"],
+        "level": level.upper(),
+        "propagate": False,
+    }
+    return config
 
 
 def main(argv: list[str] | None = None) -> None:
@@ -15,17 +47,46 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("--host", default=settings.host, help="bind address (HOST)")
     parser.add_argument("--port", type=int, default=settings.port, help="port (PORT)")
     parser.add_argument("--workers", type=int, default=1, help="worker processes")
+    parser.add_argument(
+        "--factory",
+        default="service.main:create_app",
+        help="module:function building the app (tests and the load test serve toy models)",
+    )
     args = parser.parse_args(argv)
+    if args.workers > 1:
+        _listen_with_nodelay()
     uvicorn.run(
-        "service.main:create_app",
+        args.factory,
         factory=True,
         host=args.host,
         port=args.port,
         workers=args.workers,
         log_level=settings.log_level,
+        log_config=log_config(settings.log_level),
+        access_log=False,
         server_header=False,
         date_header=False,
     )
+
+
+def _listen_with_nodelay() -> None:
+    """Set TCP_NODELAY on the listening socket uvicorn shares between worker processes.
+
+    uvicorn opens it with ``proto=0``, so asyncio does not set TCP_NODELAY on the
+    connections, and every keep-alive answer (headers and body sent apart) waits
+    ~40 ms for the client's delayed ACK: measured 45 ms per request with
+    ``--workers 2`` against 1.5 ms with one worker. Linux copies the option from
+    the listening socket to each accepted one.
+    """
+    original = uvicorn.config.Config.bind_socket
+
+    def bind_socket(self: uvicorn.config.Config) -> socket.socket:
+        sock = original(self)
+        if sock.family in (socket.AF_INET, socket.AF_INET6):
+            sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+        return sock
+
+    uvicorn.config.Config.bind_socket = bind_socket  # type: ignore[method-assign]
 
 
 if __name__ == "__main__":

@@ -1,34 +1,74 @@
 """The generic model endpoints: one POST and one sweep per registered model.
 
 Routes are a few lines each: turn the validated body into SI inputs, call
-:func:`engine.run` or :func:`engine.sweep`, return what it gives. Engine
-errors become HTTP statuses in :mod:`service.errors`.
+:func:`engine.run` or :func:`engine.sweep` in the engine pool
+(:mod:`service.workers`) with the request's budgets, return what it gives.
+Engine errors become HTTP statuses in :mod:`service.errors`.
 """
 
+import math
 from collections.abc import Sequence
+from dataclasses import dataclass
 from typing import Any
 
 from fastapi import APIRouter, HTTPException
+from fastapi.responses import JSONResponse
 from pydantic import BaseModel
 
 import engine
 from engine import ModelSpec
+from engine.runner import DEFAULT_BUDGET_S, DEFAULT_MAX_STEPS
 
 from . import schemas
 from .units import UnitError, to_si
+from .workers import EnginePool
 
 API_PREFIX = "/api/v1"
 _COMMON = ("fidelity", "tolerance", "outputs")
 _ERRORS: dict[int | str, dict[str, Any]] = {
-    422: {"model": schemas.ErrorResponse, "description": "invalid input or infeasible design"},
+    400: {"model": schemas.ErrorResponse, "description": "the body is not readable JSON"},
+    413: {"model": schemas.ErrorResponse, "description": "request body over MAX_BODY_BYTES"},
+    415: {"model": schemas.ErrorResponse, "description": "the body is not application/json"},
+    422: {
+        "model": schemas.ErrorResponse,
+        "description": "invalid input, infeasible design, or a bound exceeded "
+        "(wall-clock or step budget, series length)",
+    },
+    503: {"model": schemas.ErrorResponse, "description": "every engine worker is busy; retry"},
 }
+
+
+class LimitExceeded(engine.EngineError):
+    """A result over one of the service's bounds (422, naming the bound)."""
+
+    kind = "limit_exceeded"
+
+
+@dataclass(frozen=True)
+class Limits:
+    """The bounds every model call runs under (from :class:`service.config.Settings`)."""
+
+    pool: EnginePool
+    budget_s: float = DEFAULT_BUDGET_S
+    max_steps: int = DEFAULT_MAX_STEPS
+    max_series_points: int = 10_000
 
 
 def _inputs(body: BaseModel) -> dict[str, Any]:
     return {k: v for k, v in body.model_dump(exclude=set(_COMMON)).items() if v is not None}
 
 
-def _response(result: engine.RunResult) -> dict[str, Any]:
+def _response(result: engine.RunResult, max_series_points: int) -> dict[str, Any]:
+    for name, points in result.series.items():
+        if len(points) > max_series_points:
+            raise LimitExceeded(
+                f"the series {name!r} has {len(points)} points, over the limit of "
+                f"{max_series_points} (MAX_SERIES_POINTS); leave it out with `outputs` "
+                "or simulate a shorter span",
+                field="outputs",
+                limit=max_series_points,
+                points=len(points),
+            )
     return {
         "model": result.model,
         "results": result.results,
@@ -52,51 +92,84 @@ def _bound(spec: ModelSpec, name: str, value: float | str) -> float:
             return to_si(value, unit)
         except UnitError as exc:
             raise engine.InputOutOfRange(f"{exc}", field=name) from None
+    if not math.isfinite(value):
+        raise engine.InputOutOfRange(f"{name}: a sweep end must be a finite number", field=name)
     return float(value)
 
 
-def model_router(spec: ModelSpec) -> APIRouter:
+def _sweep_points(spec: ModelSpec, body: Any) -> list[float]:
+    start = _bound(spec, body.vary, body.start)
+    stop = _bound(spec, body.vary, body.stop)
+    if not math.isfinite(stop - start):
+        # linspace over ±1e308 overflows to inf/nan; no input range is that wide
+        param = spec.param(body.vary)
+        raise engine.InputOutOfRange(
+            f"{body.vary}: start and stop must lie within {param.range_text()}", field=body.vary
+        )
+    values: list[float] = engine.sweep_values(start, stop, body.num, body.scale).tolist()
+    return values
+
+
+def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
     """``POST <path>`` and ``POST <path>/sweep`` for one model."""
+    if limits is None:
+        limits = Limits(pool=EnginePool(threads=4, queue=64, grace_s=1.0))
+    lim = limits
     router = APIRouter(prefix=API_PREFIX, tags=[spec.family])
     request = schemas.request_model(spec)
     response = schemas.response_model(spec)
     sweep_request = schemas.sweep_request_model(spec)
 
-    def evaluate(body: request) -> Any:  # type: ignore[valid-type]
-        result = engine.run(
-            spec,
-            _inputs(body),
-            fidelity=body.fidelity,  # type: ignore[attr-defined]
-            tolerance=body.tolerance,  # type: ignore[attr-defined]
-            outputs=body.outputs,  # type: ignore[attr-defined]
-        )
-        return _response(result)
+    async def evaluate(body: request) -> Any:  # type: ignore[valid-type]
+        inputs = _inputs(body)
 
-    def sweep(body: sweep_request) -> Any:  # type: ignore[valid-type]
-        start = _bound(spec, body.vary, body.start)  # type: ignore[attr-defined]
-        stop = _bound(spec, body.vary, body.stop)  # type: ignore[attr-defined]
-        values = engine.sweep_values(start, stop, body.num, body.scale)  # type: ignore[attr-defined]
-        result = engine.sweep(
-            spec,
-            {k: v for k, v in body.base.model_dump().items() if v is not None},  # type: ignore[attr-defined]
-            body.vary,  # type: ignore[attr-defined]
-            values.tolist(),
-            outputs=body.outputs,  # type: ignore[attr-defined]
-            fidelity=body.fidelity,  # type: ignore[attr-defined]
-            tolerance=body.tolerance,  # type: ignore[attr-defined]
-        )
-        return {
-            "model": result.model,
-            "vary": result.vary,
-            "unit": spec.param(result.vary).unit,
-            "values": result.values,
-            "results": result.results,
-            "units": result.units,
-            "rung": result.rung,
-            "elapsed_s": result.elapsed_s,
-            "notes": result.notes,
-            "warnings": result.warnings,
-        }
+        def work(budget_s: float) -> JSONResponse:
+            result = engine.run(
+                spec,
+                inputs,
+                fidelity=body.fidelity,  # type: ignore[attr-defined]
+                tolerance=body.tolerance,  # type: ignore[attr-defined]
+                outputs=body.outputs,  # type: ignore[attr-defined]
+                budget_s=budget_s,
+                max_steps=lim.max_steps,
+            )
+            # serialised here, in the worker thread: a long series never blocks the event loop
+            return JSONResponse(_response(result, lim.max_series_points))
+
+        return await lim.pool.run(work, lim.budget_s, f"{spec.name}")
+
+    async def sweep(body: sweep_request) -> Any:  # type: ignore[valid-type]
+        values = _sweep_points(spec, body)
+        base = {k: v for k, v in body.base.model_dump().items() if v is not None}  # type: ignore[attr-defined]
+
+        def work(budget_s: float) -> JSONResponse:
+            result = engine.sweep(
+                spec,
+                base,
+                body.vary,  # type: ignore[attr-defined]
+                values,
+                outputs=body.outputs,  # type: ignore[attr-defined]
+                fidelity=body.fidelity,  # type: ignore[attr-defined]
+                tolerance=body.tolerance,  # type: ignore[attr-defined]
+                budget_s=budget_s,
+                max_steps=lim.max_steps,
+            )
+            return JSONResponse(
+                {
+                    "model": result.model,
+                    "vary": result.vary,
+                    "unit": spec.param(result.vary).unit,
+                    "values": result.values,
+                    "results": result.results,
+                    "units": result.units,
+                    "rung": result.rung,
+                    "elapsed_s": result.elapsed_s,
+                    "notes": result.notes,
+                    "warnings": result.warnings,
+                }
+            )
+
+        return await lim.pool.run(work, lim.budget_s, f"{spec.name} sweep")
 
     router.add_api_route(
         spec.path,
@@ -126,15 +199,21 @@ def model_router(spec: ModelSpec) -> APIRouter:
 def catalogue_router(models: Sequence[ModelSpec]) -> APIRouter:
     router = APIRouter(prefix=API_PREFIX, tags=["catalogue"])
 
+    catalogue = {"models": [spec.describe() for spec in models]}  # fixed once the app is built
+    entries = {spec.name: entry for spec, entry in zip(models, catalogue["models"], strict=True)}
+
     @router.get("/models", summary="Every model: inputs, units, ranges, outputs, rungs")
     def list_models() -> dict[str, Any]:
-        return {"models": [spec.describe() for spec in models]}
+        return catalogue
 
-    @router.get("/models/{name}", summary="One model's catalogue entry")
+    @router.get(
+        "/models/{name}",
+        summary="One model's catalogue entry",
+        responses={404: {"model": schemas.ErrorResponse, "description": "no such model"}},
+    )
     def get_model(name: str) -> dict[str, Any]:
-        for spec in models:
-            if spec.name == name:
-                return spec.describe()
-        raise HTTPException(status_code=404, detail=f"no model named {name!r}")
+        if name in entries:
+            return entries[name]
+        raise HTTPException(status_code=404, detail=f"no model named {name[:80]!r}")
 
     return router

@@ -1,9 +1,17 @@
-"""Settings from the environment, each with an embedded default (nothing to configure)."""
+"""Settings from the environment, each with an embedded default (nothing to configure).
+
+The bounds on work (``BUDGET_S``, ``MAX_STEPS``, ``MAX_SERIES_POINTS``,
+``MAX_BODY_BYTES``, ``ENGINE_THREADS``, ``ENGINE_QUEUE``) are read once when
+the app is built; a value that is not a positive number stops the service at
+start-up with a message naming the variable, rather than at the first request.
+"""
 
 from __future__ import annotations
 
 import os
 from dataclasses import dataclass, field
+
+from engine.runner import DEFAULT_BUDGET_S, DEFAULT_MAX_STEPS
 
 
 def _origins() -> tuple[str, ...]:
@@ -11,12 +19,48 @@ def _origins() -> tuple[str, ...]:
     return tuple(o.strip() for o in raw.split(",") if o.strip())
 
 
+def _int(name: str, default: int) -> int:
+    return int(os.environ.get(name, str(default)))
+
+
+def _float(name: str, default: float) -> float:
+    return float(os.environ.get(name, str(default)))
+
+
 @dataclass(frozen=True)
 class Settings:
     host: str = field(default_factory=lambda: os.environ.get("HOST", "127.0.0.1"))
-    port: int = field(default_factory=lambda: int(os.environ.get("PORT", "8000")))
+    port: int = field(default_factory=lambda: _int("PORT", 8000))
     cors_origins: tuple[str, ...] = field(default_factory=_origins)
-    max_body_bytes: int = field(
-        default_factory=lambda: int(os.environ.get("MAX_BODY_BYTES", str(256 * 1024)))
-    )
+    max_body_bytes: int = field(default_factory=lambda: _int("MAX_BODY_BYTES", 256 * 1024))
     log_level: str = field(default_factory=lambda: os.environ.get("LOG_LEVEL", "info"))
+    #: Wall-clock budget of one model evaluation or sweep, queueing included [s].
+    budget_s: float = field(default_factory=lambda: _float("BUDGET_S", DEFAULT_BUDGET_S))
+    #: Step budget handed to every model (ODE steps, iterations) as ``ctx.max_steps``.
+    max_steps: int = field(default_factory=lambda: _int("MAX_STEPS", DEFAULT_MAX_STEPS))
+    #: Longest time series one response may carry [points per series].
+    max_series_points: int = field(default_factory=lambda: _int("MAX_SERIES_POINTS", 10_000))
+    #: Threads that run model computations at once (per server process).
+    engine_threads: int = field(default_factory=lambda: _int("ENGINE_THREADS", 4))
+    #: Computations that may wait for a thread; beyond that a request gets 503.
+    engine_queue: int = field(default_factory=lambda: _int("ENGINE_QUEUE", 64))
+    #: How long past its budget a computation that ignores its deadline is waited for [s].
+    budget_grace_s: float = field(default_factory=lambda: _float("BUDGET_GRACE_S", 1.0))
+    #: One JSON line per request on the ``service.access`` logger.
+    access_log: bool = field(
+        default_factory=lambda: os.environ.get("ACCESS_LOG", "1").lower() not in ("0", "false")
+    )
+
+    def __post_init__(self) -> None:
+        positive = {
+            "MAX_BODY_BYTES": self.max_body_bytes,
+            "BUDGET_S": self.budget_s,
+            "MAX_STEPS": self.max_steps,
+            "MAX_SERIES_POINTS": self.max_series_points,
+            "ENGINE_THREADS": self.engine_threads,
+        }
+        for name, value in positive.items():
+            if not value > 0:
+                raise ValueError(f"{name} must be positive, not {value!r}")
+        if self.engine_queue < 0 or self.budget_grace_s < 0:
+            raise ValueError("ENGINE_QUEUE and BUDGET_GRACE_S must not be negative")

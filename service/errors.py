@@ -3,8 +3,10 @@
 * invalid input (pydantic) and engine errors: 422, ``loc`` is the field path
   (``["body", "ball_diameter"]``) and ``msg`` names the allowed range;
 * an infeasible design: 422 with ``type: "infeasible_design"`` and a plain sentence;
-* HTTP errors (404, 405, 413): their status, same shape;
-* anything unexpected: 500 with a generic message; the trace goes to the log only.
+* HTTP errors (400 unreadable body, 404, 405, 413, 415): their status, same shape;
+* every engine worker busy: 503 with ``Retry-After``;
+* anything unexpected: 500 with a generic message and the request id; the
+  trace goes to the log only.
 """
 
 from __future__ import annotations
@@ -19,6 +21,9 @@ from fastapi.responses import JSONResponse
 from starlette.exceptions import HTTPException as StarletteHTTPException
 
 from engine import EngineError
+
+from .middleware import security_headers
+from .workers import Busy
 
 log = logging.getLogger("service")
 
@@ -65,20 +70,60 @@ async def _engine(_: Request, exc: Exception) -> JSONResponse:
     )
 
 
+def _unreadable(exc: BaseException | None) -> str | None:
+    """Why FastAPI could not parse a body (it says only "error parsing the body")."""
+    if isinstance(exc, RecursionError):
+        return "the JSON body is nested too deeply"
+    if isinstance(exc, UnicodeDecodeError):
+        return f"the body is not valid UTF-8 (byte {exc.start})"
+    if isinstance(exc, ValueError) and "digits" in str(exc):
+        return "a number in the JSON body has too many digits"
+    if exc is not None:
+        return "the body is not valid JSON"
+    return None
+
+
 async def _http(_: Request, exc: Exception) -> JSONResponse:
     assert isinstance(exc, StarletteHTTPException)
+    msg = str(exc.detail)
+    kind = getattr(exc, "kind", "http_error")
+    if exc.status_code == 400:
+        reason = _unreadable(exc.__cause__)
+        if reason:
+            msg, kind = reason, "json_invalid"
     return JSONResponse(
         status_code=exc.status_code,
-        content=error_body("http_error", str(exc.detail), []),
+        content=error_body(kind, msg, []),
         headers=getattr(exc, "headers", None),
     )
 
 
+async def _busy(_: Request, exc: Exception) -> JSONResponse:
+    return JSONResponse(
+        status_code=503,
+        content=error_body("busy", str(exc), []),
+        headers={"retry-after": "1"},
+    )
+
+
 async def _unexpected(request: Request, exc: Exception) -> JSONResponse:
-    log.exception("unhandled error on %s %s", request.method, request.url.path, exc_info=exc)
+    # Sent by Starlette's outermost error middleware, outside FrontDoor: add its headers here.
+    request_id = request.scope.get("state", {}).get("request_id")
+    log.exception(
+        "unhandled error on %s %s (request %s)",
+        request.method,
+        request.url.path,
+        request_id,
+        exc_info=exc,
+    )
     return JSONResponse(
         status_code=500,
-        content=error_body("internal_error", "internal error; it was logged on the server", []),
+        content=error_body(
+            "internal_error",
+            f"internal error; it was logged on the server (request id {request_id})",
+            [],
+        ),
+        headers=security_headers(request_id),
     )
 
 
@@ -86,4 +131,5 @@ def install(app: FastAPI) -> None:
     app.add_exception_handler(RequestValidationError, _validation)
     app.add_exception_handler(EngineError, _engine)
     app.add_exception_handler(StarletteHTTPException, _http)
+    app.add_exception_handler(Busy, _busy)
     app.add_exception_handler(Exception, _unexpected)

@@ -1,29 +1,67 @@
-"""Build the FastAPI application: health, catalogue, one router per model, the form."""
+"""Build the FastAPI application: health, catalogue, one router per model, the form.
+
+Middleware, outermost first: :class:`~service.middleware.FrontDoor` (request
+id, security headers, access log), CORS when ``CORS_ORIGINS`` names origins
+(closed otherwise: no ``Access-Control-*`` header is ever sent),
+:class:`~service.middleware.BodyGuard` (415 for non-JSON bodies, 413 over
+``MAX_BODY_BYTES``). Model computations run in :mod:`service.workers`.
+
+``/docs`` (Swagger UI) and ``/redoc`` load their scripts from a CDN and
+Swagger UI starts with one inline script, which the page's strict CSP
+forbids. Rather than weaken the CSP everywhere, those two pages carry their
+own: the CDN is allowed for scripts and styles, and the inline script only
+by its SHA-256 hash (no ``'unsafe-inline'`` for scripts). Without the CDN
+(an offline workshop) /docs stays blank; ``/openapi.json`` and
+``GET /api/v1/models`` hold the same information.
+"""
 
 from __future__ import annotations
 
-import json
-from collections.abc import Awaitable, Callable, MutableMapping, Sequence
+import base64
+import hashlib
+import re
+from collections.abc import AsyncIterator, Sequence
+from contextlib import asynccontextmanager
 from pathlib import Path
-from typing import Any
 
 from fastapi import FastAPI
 from fastapi.middleware.cors import CORSMiddleware
+from fastapi.openapi.docs import get_redoc_html, get_swagger_ui_html
+from fastapi.responses import HTMLResponse
 from fastapi.staticfiles import StaticFiles
 
 import engine
 from engine import ModelSpec
 
 from . import errors
-from .api import catalogue_router, model_router
+from .api import Limits, catalogue_router, model_router
 from .config import Settings
 from .extra import EXTRA_ROUTERS
+from .middleware import BodyGuard, FrontDoor
+from .workers import EnginePool
 
-Scope = MutableMapping[str, Any]
-Message = MutableMapping[str, Any]
-Receive = Callable[[], Awaitable[Message]]
-Send = Callable[[Message], Awaitable[None]]
-ASGIApp = Callable[[Scope, Receive, Send], Awaitable[None]]
+_CDN = "https://cdn.jsdelivr.net"
+
+
+def docs_csp(html: str) -> str:
+    """The CSP for a docs page: its CDN, and its inline scripts by hash only."""
+    hashes = " ".join(
+        "'sha256-" + base64.b64encode(hashlib.sha256(m.encode()).digest()).decode() + "'"
+        for m in re.findall(r"<script>(.*?)</script>", html, flags=re.S)
+    )
+    return (
+        f"default-src 'none'; script-src 'self' {_CDN} {hashes}; "
+        f"style-src 'self' 'unsafe-inline' {_CDN} https://fonts.googleapis.com; "
+        "font-src https://fonts.gstatic.com data:; "
+        f"img-src 'self' data: {_CDN} https://fastapi.tiangolo.com; "
+        "connect-src 'self'; worker-src blob:; object-src 'none'; base-uri 'none'; "
+        "frame-ancestors 'none'"
+    )
+
+
+def _docs_page(page: HTMLResponse) -> HTMLResponse:
+    text = bytes(page.body).decode()
+    return HTMLResponse(text, headers={"content-security-policy": docs_csp(text)})
 
 
 def static_dir() -> Path:
@@ -35,63 +73,24 @@ def static_dir() -> Path:
     raise RuntimeError("static/index.html not found next to the service package")
 
 
-class BodyLimit:
-    """Refuse request bodies over ``limit`` bytes with 413, before they are read whole."""
-
-    def __init__(self, app: ASGIApp, limit: int) -> None:
-        self.app = app
-        self.limit = limit
-
-    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
-        if scope["type"] != "http":
-            await self.app(scope, receive, send)
-            return
-        headers = dict(scope.get("headers") or [])
-        length = headers.get(b"content-length")
-        if length is not None and (not length.isdigit() or int(length) > self.limit):
-            await self._refuse(send)
-            return
-        seen = 0
-
-        async def limited() -> Message:
-            nonlocal seen
-            message = await receive()
-            if message["type"] == "http.request":
-                seen += len(message.get("body", b""))
-                if seen > self.limit:
-                    raise _TooLarge
-            return message
-
-        try:
-            await self.app(scope, limited, send)
-        except _TooLarge:
-            await self._refuse(send)
-
-    async def _refuse(self, send: Send) -> None:
-        body = json.dumps(
-            errors.error_body(
-                "body_too_large", f"request body over the {self.limit}-byte limit", []
-            )
-        ).encode()
-        await send(
-            {
-                "type": "http.response.start",
-                "status": 413,
-                "headers": [(b"content-type", b"application/json")],
-            }
-        )
-        await send({"type": "http.response.body", "body": body})
-
-
-class _TooLarge(Exception):
-    pass
-
-
 def create_app(
     models: Sequence[ModelSpec] | None = None, settings: Settings | None = None
 ) -> FastAPI:
     models = engine.MODELS if models is None else models
     settings = settings or Settings()
+    pool = EnginePool(settings.engine_threads, settings.engine_queue, settings.budget_grace_s)
+    limits = Limits(
+        pool=pool,
+        budget_s=settings.budget_s,
+        max_steps=settings.max_steps,
+        max_series_points=settings.max_series_points,
+    )
+
+    @asynccontextmanager
+    async def lifespan(_: FastAPI) -> AsyncIterator[None]:
+        yield
+        pool.shutdown()
+
     app = FastAPI(
         title="Tightening-tool calculator",
         version="1.0",
@@ -99,25 +98,42 @@ def create_app(
         description="Every input is a number in SI base units or a string with a unit "
         "('45 mm', '1450 rpm'); every result is SI, with its unit alongside. "
         "See GET /api/v1/models for the catalogue.",
+        docs_url=None,
+        redoc_url=None,
+        lifespan=lifespan,
     )
     errors.install(app)
+    app.state.engine_pool = pool
 
     @app.get("/healthz", tags=["service"], summary="Liveness")
     def healthz() -> dict[str, str]:
         return {"status": "ok"}
 
+    swagger = _docs_page(get_swagger_ui_html(openapi_url="/openapi.json", title=app.title))
+    redoc = _docs_page(get_redoc_html(openapi_url="/openapi.json", title=app.title))
+
+    @app.get("/docs", include_in_schema=False)
+    def docs() -> HTMLResponse:
+        return swagger
+
+    @app.get("/redoc", include_in_schema=False)
+    def redoc_page() -> HTMLResponse:
+        return redoc
+
     app.include_router(catalogue_router(models))
     for spec in models:
-        app.include_router(model_router(spec))
+        app.include_router(model_router(spec, limits))
     for router in EXTRA_ROUTERS:
         app.include_router(router)
+    app.add_middleware(BodyGuard, limit=settings.max_body_bytes)
     if settings.cors_origins:
         app.add_middleware(
             CORSMiddleware,
             allow_origins=list(settings.cors_origins),
             allow_methods=["GET", "POST"],
-            allow_headers=["content-type"],
+            allow_headers=["content-type", "x-request-id"],
+            expose_headers=["x-request-id"],
         )
-    app.add_middleware(BodyLimit, limit=settings.max_body_bytes)
+    app.add_middleware(FrontDoor, log_requests=settings.access_log)
     app.mount("/", StaticFiles(directory=static_dir(), html=True), name="static")
     return app

@@ -184,7 +184,13 @@ def request_model(spec: ModelSpec) -> type[BaseModel]:
         ),
         tolerance=(
             float | None,
-            Field(default=None, gt=0, lt=1, description="relative tolerance for 'auto' (0.01)"),
+            Field(
+                default=None,
+                gt=0,
+                lt=1,
+                allow_inf_nan=False,
+                description="relative tolerance for 'auto' (0.01)",
+            ),
         ),
         outputs=(
             _list_of(output_names) | None,
@@ -241,15 +247,14 @@ def response_model(spec: ModelSpec) -> type[BaseModel]:
 def sweep_request_model(spec: ModelSpec) -> type[BaseModel]:
     numeric = tuple(p.name for p in spec.inputs if p.is_numeric)
     scalar_outputs = tuple(o.name for o in spec.outputs if not o.series)
-    base_model = inputs_model(spec, all_optional=True)
+    base = inputs_model(spec, all_optional=True)
     return create_model(
         _class_name(spec, "SweepRequest"),
         __config__=ConfigDict(extra="forbid"),
         base=(
-            base_model,
-            Field(
-                default_factory=base_model, description="inputs held fixed (defaults fill the rest)"
-            ),
+            base,
+            # a model instance, not a dict: the route calls base.model_dump() (found by fuzzing)
+            Field(default_factory=base, description="inputs held fixed (defaults fill the rest)"),
         ),
         vary=(_literal(numeric), Field(description="the input to vary")),
         start=(
@@ -264,7 +269,7 @@ def sweep_request_model(spec: ModelSpec) -> type[BaseModel]:
             Field(default=None, max_length=len(scalar_outputs)),
         ),
         fidelity=(_fidelity_type(spec), Field(default=spec.default_fidelity)),
-        tolerance=(float | None, Field(default=None, gt=0, lt=1)),
+        tolerance=(float | None, Field(default=None, gt=0, lt=1, allow_inf_nan=False)),
     )
 
 

@@ -74,6 +74,8 @@ def to_si(text: str, target: str) -> float:
         raise UnitError(f"cannot read {text!r}: expected a number and a unit, like '45 mm'")
     number, unit = match.group(1), match.group(2)
     value = float(number)
+    if not math.isfinite(value):  # "1e999" overflows float
+        raise UnitError(f"{text!r} is not a finite quantity")
     if not unit:
         return value
     if target == "1":

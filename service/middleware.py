@@ -1,0 +1,207 @@
+"""Plain ASGI middleware (no per-request objects beyond a closure): cheap enough for every call.
+
+* :class:`FrontDoor` (outermost): a request id, security headers on every
+  response, one JSON access-log line per request (never the body).
+* :class:`BodyGuard`: JSON bodies only (415 otherwise) and at most
+  ``MAX_BODY_BYTES`` (413), counted as the bytes arrive, so a chunked body
+  without ``content-length`` is cut off as soon as it passes the limit.
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+import re
+import time
+import uuid
+from collections.abc import Awaitable, Callable, MutableMapping
+from typing import Any
+
+from starlette.exceptions import HTTPException
+
+Scope = MutableMapping[str, Any]
+Message = MutableMapping[str, Any]
+Receive = Callable[[], Awaitable[Message]]
+Send = Callable[[Message], Awaitable[None]]
+ASGIApp = Callable[[Scope, Receive, Send], Awaitable[None]]
+
+access_log = logging.getLogger("service.access")
+
+#: The page and every API answer: nothing but our own files, no frames, no plugins.
+STRICT_CSP = (
+    "default-src 'self'; script-src 'self'; style-src 'self'; img-src 'self' data:; "
+    "connect-src 'self'; object-src 'none'; base-uri 'none'; frame-ancestors 'none'; "
+    "form-action 'self'"
+)
+
+#: Sent with every response (the CSP only when the route did not set its own, see /docs).
+SECURITY_HEADERS: tuple[tuple[bytes, bytes], ...] = (
+    (b"x-content-type-options", b"nosniff"),
+    (b"x-frame-options", b"DENY"),
+    (b"referrer-policy", b"no-referrer"),
+    (b"cross-origin-opener-policy", b"same-origin"),
+)
+_CSP = b"content-security-policy"
+_REQUEST_ID = re.compile(rb"[A-Za-z0-9._-]{1,64}")
+
+
+def security_headers(request_id: str | None = None) -> dict[str, str]:
+    """The same headers as a dict, for responses sent outside the middleware (500s)."""
+    headers = {k.decode(): v.decode() for k, v in SECURITY_HEADERS}
+    headers[_CSP.decode()] = STRICT_CSP
+    if request_id:
+        headers["x-request-id"] = request_id
+    return headers
+
+
+class FrontDoor:
+    """Request id, security headers and a structured access log for every HTTP request.
+
+    The request id is the caller's ``X-Request-ID`` when it is a short token
+    (letters, digits, ``._-``), else a fresh one; it is echoed in the
+    response header, kept in ``scope["state"]["request_id"]`` for error
+    handlers, and written in the log line::
+
+        {"method": "POST", "path": "/api/v1/toy/disc", "status": 200,
+         "duration_ms": 1.42, "request_id": "3f2a…"}
+    """
+
+    def __init__(self, app: ASGIApp, *, log_requests: bool = True) -> None:
+        self.app = app
+        self.log_requests = log_requests
+        self._csp = STRICT_CSP.encode()
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http":
+            await self.app(scope, receive, send)
+            return
+        start = time.perf_counter()
+        given = _header(scope, b"x-request-id")
+        rid = given if given and _REQUEST_ID.fullmatch(given) else uuid.uuid4().hex.encode()
+        request_id = rid.decode()
+        scope.setdefault("state", {})["request_id"] = request_id
+        status = 500
+
+        async def send_with_headers(message: Message) -> None:
+            nonlocal status
+            if message["type"] == "http.response.start":
+                status = message["status"]
+                headers = [(k, v) for k, v in message.get("headers", ()) if k.lower() != b"server"]
+                if not any(k.lower() == _CSP for k, _ in headers):
+                    headers.append((_CSP, self._csp))
+                headers.extend(SECURITY_HEADERS)
+                headers.append((b"x-request-id", rid))
+                message["headers"] = headers
+            await send(message)
+
+        try:
+            await self.app(scope, receive, send_with_headers)
+        finally:
+            if self.log_requests and access_log.isEnabledFor(logging.INFO):
+                access_log.info(
+                    json.dumps(
+                        {
+                            "method": scope.get("method"),
+                            "path": scope.get("path"),
+                            "status": status,
+                            "duration_ms": round((time.perf_counter() - start) * 1e3, 3),
+                            "request_id": request_id,
+                        }
+                    )
+                )
+
+
+def _header(scope: Scope, name: bytes) -> bytes | None:
+    for key, value in scope.get("headers") or ():
+        if key.lower() == name:
+            return bytes(value)
+    return None
+
+
+def _is_json(content_type: bytes | None) -> bool:
+    if not content_type:
+        return False
+    media = content_type.split(b";", 1)[0].strip().lower()
+    return media == b"application/json" or (
+        media.startswith(b"application/") and media.endswith(b"+json")
+    )
+
+
+class BodyGuard:
+    """Refuse non-JSON bodies (415) and bodies over ``limit`` bytes (413), before they are read."""
+
+    def __init__(self, app: ASGIApp, limit: int) -> None:
+        self.app = app
+        self.limit = limit
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http":
+            await self.app(scope, receive, send)
+            return
+        if scope.get("method") in ("POST", "PUT", "PATCH") and not _is_json(
+            _header(scope, b"content-type")
+        ):
+            await _refuse(
+                send,
+                415,
+                "unsupported_media_type",
+                "send the body as JSON with the header content-type: application/json",
+            )
+            return
+        length = _header(scope, b"content-length")
+        if length is not None and (not length.isdigit() or int(length) > self.limit):
+            await self._too_large(send)
+            return
+        seen = 0
+        started = False
+
+        async def limited() -> Message:
+            nonlocal seen
+            message = await receive()
+            if message["type"] == "http.request":
+                seen += len(message.get("body", b""))
+                if seen > self.limit:
+                    raise BodyTooLarge(self.limit)
+            return message
+
+        async def watch(message: Message) -> None:
+            nonlocal started
+            started = started or message["type"] == "http.response.start"
+            await send(message)
+
+        try:
+            await self.app(scope, limited, watch)
+        except BodyTooLarge:
+            if started:  # pragma: no cover - every route reads its body before answering
+                raise
+            await self._too_large(send)
+
+    async def _too_large(self, send: Send) -> None:
+        await _refuse(send, 413, BodyTooLarge.kind, BodyTooLarge(self.limit).detail)
+
+
+async def _refuse(send: Send, status: int, kind: str, msg: str) -> None:
+    from .errors import error_body  # errors imports this module
+
+    body = json.dumps(error_body(kind, msg, [])).encode()
+    await send(
+        {
+            "type": "http.response.start",
+            "status": status,
+            "headers": [
+                (b"content-type", b"application/json"),
+                (b"content-length", str(len(body)).encode()),
+            ],
+        }
+    )
+    await send({"type": "http.response.body", "body": body})
+
+
+class BodyTooLarge(HTTPException):
+    """Raised from ``receive`` mid-body; FastAPI re-raises HTTP exceptions from body reading,
+    so the 413 survives its "error parsing the body" catch-all."""
+
+    kind = "body_too_large"
+
+    def __init__(self, limit: int) -> None:
+        super().__init__(413, f"request body over the {limit}-byte limit (MAX_BODY_BYTES)")
