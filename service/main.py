@@ -6,13 +6,12 @@ id, security headers, access log), CORS when ``CORS_ORIGINS`` names origins
 :class:`~service.middleware.BodyGuard` (415 for non-JSON bodies, 413 over
 ``MAX_BODY_BYTES``). Model computations run in :mod:`service.workers`.
 
-``/docs`` (Swagger UI) and ``/redoc`` load their scripts from a CDN and
-Swagger UI starts with one inline script, which the page's strict CSP
-forbids. Rather than weaken the CSP everywhere, those two pages carry their
-own: the CDN is allowed for scripts and styles, and the inline script only
-by its SHA-256 hash (no ``'unsafe-inline'`` for scripts). Without the CDN
-(an offline workshop) /docs stays blank; ``/openapi.json`` and
-``GET /api/v1/models`` hold the same information.
+``/docs`` (Swagger UI) is served from the copy vendored in
+``static/vendor/swagger-ui``, so it works offline behind a firewall; ``/redoc``
+loads ReDoc from a CDN (online only). Both start with one inline script,
+which the page's strict CSP forbids. Rather than weaken the CSP everywhere,
+those two pages carry their own: the inline script is allowed only by its
+SHA-256 hash (no ``'unsafe-inline'`` for scripts), and /redoc also its CDN.
 """
 
 from __future__ import annotations
@@ -43,12 +42,19 @@ from .workers import EnginePool
 _CDN = "https://cdn.jsdelivr.net"
 
 
-def docs_csp(html: str) -> str:
-    """The CSP for a docs page: its CDN, and its inline scripts by hash only."""
+def docs_csp(html: str, *, cdn: bool = True) -> str:
+    """The CSP for a docs page: its inline scripts by hash only, and its CDN if it uses one."""
     hashes = " ".join(
         "'sha256-" + base64.b64encode(hashlib.sha256(m.encode()).digest()).decode() + "'"
         for m in re.findall(r"<script>(.*?)</script>", html, flags=re.S)
     )
+    if not cdn:
+        return (
+            f"default-src 'none'; script-src 'self' {hashes}; "
+            "style-src 'self' 'unsafe-inline'; img-src 'self' data:; "
+            "connect-src 'self'; worker-src blob:; object-src 'none'; base-uri 'none'; "
+            "frame-ancestors 'none'"
+        )
     return (
         f"default-src 'none'; script-src 'self' {_CDN} {hashes}; "
         f"style-src 'self' 'unsafe-inline' {_CDN} https://fonts.googleapis.com; "
@@ -59,9 +65,9 @@ def docs_csp(html: str) -> str:
     )
 
 
-def _docs_page(page: HTMLResponse) -> HTMLResponse:
+def _docs_page(page: HTMLResponse, *, cdn: bool = True) -> HTMLResponse:
     text = bytes(page.body).decode()
-    return HTMLResponse(text, headers={"content-security-policy": docs_csp(text)})
+    return HTMLResponse(text, headers={"content-security-policy": docs_csp(text, cdn=cdn)})
 
 
 def static_dir() -> Path:
@@ -109,7 +115,16 @@ def create_app(
     def healthz() -> dict[str, str]:
         return {"status": "ok"}
 
-    swagger = _docs_page(get_swagger_ui_html(openapi_url="/openapi.json", title=app.title))
+    swagger = _docs_page(
+        get_swagger_ui_html(
+            openapi_url="/openapi.json",
+            title=app.title,
+            swagger_js_url="/vendor/swagger-ui/swagger-ui-bundle.js",
+            swagger_css_url="/vendor/swagger-ui/swagger-ui.css",
+            swagger_favicon_url="/vendor/swagger-ui/favicon-32x32.png",
+        ),
+        cdn=False,
+    )
     redoc = _docs_page(get_redoc_html(openapi_url="/openapi.json", title=app.title))
 
     @app.get("/docs", include_in_schema=False)

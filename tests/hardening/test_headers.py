@@ -255,3 +255,15 @@ def test_real_server_sends_no_banner_and_logs_json_lines(tmp_path: Path) -> None
         entries[0].items()
     )
     assert entries[1]["status"] == 422 and "SECRET-9" not in log
+
+
+def test_docs_work_offline_from_the_vendored_swagger_ui(toy: TestClient) -> None:
+    page = toy.get("/docs")
+    csp = page.headers["content-security-policy"]
+    # every script and stylesheet the page names is served here; the CSP allows no other host
+    assets = re.findall(r"""(?:src|href)=["']([^"']+)["']""", page.text)
+    assert "/vendor/swagger-ui/swagger-ui-bundle.js" in assets
+    for url in assets:
+        assert url.startswith("/"), url
+        assert toy.get(url).status_code == 200, url
+    assert "http" not in csp
