@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import argparse
 import datetime
+import functools
 import importlib.util
 import itertools
 import json
@@ -206,7 +207,7 @@ def measure_sweeps(spec: ModelSpec, budget_s: float) -> list[dict[str, Any]]:
             )
             direct = _best_of(3, lambda ctx=ctx: vectorized({**base, vary: values}, ctx))  # type: ignore[misc]
             through = _best_of(
-                3,
+                2,
                 lambda rung=rung: engine.sweep(spec, base, vary, values, fidelity=rung),  # type: ignore[misc,arg-type]
             )
             rows.append(
@@ -274,14 +275,18 @@ def _sweep_row(
 
 
 def measure_outputs(spec: ModelSpec, seconds: float) -> list[dict[str, Any]]:
-    """Time of the most accurate rung at example 0 with all outputs, then each alone."""
+    """Time of the costliest applicable rung at example 0 with all outputs, then each alone.
+
+    The costliest rung (the last applicable one, rungs being declared cheapest
+    first) is where computing only what is asked saves the most.
+    """
     if not spec.examples:
         return []
     example = spec.examples[0]
-    ref = reference_rung(spec, example)
-    if ref is None:
+    rungs = applicable_rungs(spec, example)
+    if not rungs:
         return []
-    rung = ref[0].name
+    rung = rungs[-1][0].name
     try:
         engine.run(spec, example, fidelity=rung, budget_s=None)
     except EngineError:
@@ -319,10 +324,23 @@ def run_extras(paths: Sequence[Path]) -> tuple[list[dict[str, Any]], list[str]]:
             module = importlib.util.module_from_spec(module_spec)
             module_spec.loader.exec_module(module)
             for row in module.measure():
-                rows.append({"kind": "extra", "source": path.name, **row})
+                rows.append({**json_safe(row), "kind": "extra", "source": path.name})
         except Exception:
             failures.append(f"{path.name}: {traceback.format_exc(limit=3)}")
     return rows, failures
+
+
+def json_safe(value: Any) -> Any:
+    """``value`` with numpy scalars as Python numbers and non-finite floats as None."""
+    if isinstance(value, dict):
+        return {str(k): json_safe(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [json_safe(v) for v in value]
+    if isinstance(value, np.generic):
+        value = value.item()
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value
 
 
 def is_baseline(row: dict[str, Any]) -> bool:
@@ -440,7 +458,8 @@ def table(results: dict[str, Any]) -> str:
     for row in results["rows"]:
         honest = {True: "yes", False: "NO", None: "-"}[row.get("honest")]
         lines.append(
-            f"{row['model']:<22} {row['method']!s:<18} {row.get('case', ''):<24} "
+            f"{row.get('model', '?'):<22} {row.get('method', '?')!s:<18} "
+            f"{row.get('case', ''):<24} "
             f"{_fmt_time(row.get('time_s')):>10} {_fmt_time(row.get('compute_s')):>10} "
             f"{_fmt_err(row.get('error')):>9} {_fmt_err(row.get('estimate')):>9} {honest:>6}  "
             + (", ".join(row.get("outputs_compared", [])) or str(row.get("notes", "")))
@@ -473,12 +492,21 @@ def collect(models: Sequence[ModelSpec], seconds: float, extras: Sequence[Path])
     sweeps: list[dict[str, Any]] = []
     outputs: list[dict[str, Any]] = []
     started = time.perf_counter()
+    failures: list[str] = []
     for spec in models:
-        rows += measure_rungs(spec, seconds)
-        sweeps += measure_sweeps(spec, budget_s=60.0)
-        outputs += measure_outputs(spec, seconds / 2)
-    extra_rows, failures = run_extras(extras)
+        parts: tuple[tuple[str, list[dict[str, Any]], Callable[[], list[dict[str, Any]]]], ...] = (
+            ("rungs", rows, functools.partial(measure_rungs, spec, seconds)),
+            ("sweeps", sweeps, functools.partial(measure_sweeps, spec, 60.0)),
+            ("outputs", outputs, functools.partial(measure_outputs, spec, seconds / 2)),
+        )
+        for part, into, measure in parts:
+            try:
+                into.extend(measure())
+            except Exception:
+                failures.append(f"{spec.name} {part}: {traceback.format_exc(limit=3)}")
+    extra_rows, extra_failures = run_extras(extras)
     rows += extra_rows
+    failures += extra_failures
     return {
         "machine": machine(),
         "models": [spec.name for spec in models],
@@ -540,7 +568,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     extras = [] if args.no_extras else sorted(HERE.glob("extra_*.py"))
     results = collect(models, args.seconds, extras)
     args.out.mkdir(parents=True, exist_ok=True)
-    (args.out / "results.json").write_text(json.dumps(results, indent=1, allow_nan=False) + "\n")
+    text = json.dumps(json_safe(results), indent=1, allow_nan=False)
+    (args.out / "results.json").write_text(text + "\n")
     if not args.no_plot:
         plot(results["rows"], args.out / "pareto.png")
     print(table(results))

@@ -16,7 +16,7 @@ from typing import Any
 
 import pytest
 from fastapi.testclient import TestClient
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, event, given, settings
 from hypothesis import strategies as st
 
 from engine import ModelSpec
@@ -41,6 +41,7 @@ def test_engine_run_is_finite_or_refuses(spec: ModelSpec, data: st.DataObject) -
     fidelity = data.draw(fidelities(spec), label="fidelity")
     tolerance = data.draw(st.sampled_from((None, 0.3, 1e-3, 1e-9)), label="tolerance")
     result = run_checked(spec, request, fidelity=fidelity, tolerance=tolerance)
+    event("refused" if result is None else "answered")  # --hypothesis-show-statistics
     if result is not None:
         assert result.rung in spec.rung_names
         for name, value in result.results.items():

@@ -132,7 +132,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     theta = 2.0 * np.arcsin(np.minimum(s, 1.0))
     time = np.where(ok, theta / np.sqrt(k / m), np.nan)
     speed = np.where(ok, np.sqrt(np.maximum(0.0, h * (2.0 * f - k * h) / m)), np.nan)
-    values = {"time": time, "speed": speed, "peak": 2.0 * f / k}
+    values = {"time": time, "speed": speed, "peak": np.where(ok, 2.0 * f / k, np.nan)}
     return Result(
         values={n: v for n, v in values.items() if ctx.wants(n)},
         rung=ctx.rung,
