@@ -481,6 +481,13 @@ def table(results: dict[str, Any]) -> str:
                 f"{_fmt_time(row['time_only_s']):>10} vs {_fmt_time(row['time_all_s']):>10} "
                 f"(×{row['ratio']:.2f})"
             )
+    order = [
+        f"{name}: {'yes' if info['holds'] else 'NO'} ("
+        + ", ".join(f"{r} {_fmt_time(t)}" for r, t in info["median_time_s"].items())
+        + ")"
+        for name, info in results["rungs_order"].items()
+    ]
+    lines += ["", "Rungs declared cheapest first, and measured so:", *order]
     if results["failures"]:
         lines += ["", "Extra benchmarks that failed:", *results["failures"]]
     return "\n".join(lines)

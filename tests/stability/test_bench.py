@@ -93,3 +93,10 @@ def test_pipeline_writes_rows_sweeps_and_extras(tmp_path: Path):
     pytest.importorskip("matplotlib")
     bench.plot(results["rows"], tmp_path / "pareto.png")
     assert (tmp_path / "pareto.png").stat().st_size > 10_000
+
+
+def test_median_time_repeats_and_batches():
+    calls = []
+    per_call, reps = bench.median_time(lambda: calls.append(1), seconds=0.01, min_reps=5)
+    # warm-up once, then at least five batches; a no-op is batched (≥ 1 ms per batch)
+    assert reps >= 5 and len(calls) == reps + 1 and 0.0 < per_call < 1e-3

@@ -69,6 +69,14 @@ def _run_everywhere(spec: ModelSpec, case: dict[str, Any]) -> int:
 
 
 @pytest.mark.parametrize("spec", MODELS_UNDER_TEST, ids=ids)
+def test_examples_are_complete_valid_requests(spec: ModelSpec) -> None:
+    """The grids, the benchmark and the form start from the examples: each must run as given."""
+    assert spec.examples, f"{spec.name} declares no example"
+    for example in spec.examples:
+        assert run_checked(spec, example) is not None, f"{spec.name}: example {example} refused"
+
+
+@pytest.mark.parametrize("spec", MODELS_UNDER_TEST, ids=ids)
 def test_each_input_at_its_extremes(spec: ModelSpec) -> None:
     cases = single_extremes(spec)
     assert cases, f"{spec.name} has no numeric input to push to its extremes"
