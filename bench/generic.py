@@ -111,6 +111,9 @@ def as_kind(param: Param, value: float) -> float | int:
 
 
 def complete_example(spec: ModelSpec, index: int = 0) -> dict[str, Any]:
-    """Example ``index`` with every input the model would fill from its defaults written out."""
+    """Example ``index`` with every input written out as the runner passes it to compute.
+
+    Optional inputs that were not given are None, as :meth:`ModelSpec.validate` leaves them.
+    """
     values, _ = spec.validate(spec.examples[index])
-    return {k: v for k, v in values.items() if v is not None}
+    return values

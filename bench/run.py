@@ -166,7 +166,12 @@ def _failure(spec: ModelSpec, method: str, case: str, why: str) -> dict[str, Any
 
 
 def _sweep_input(spec: ModelSpec, base: dict[str, Any]) -> tuple[str, float, float] | None:
-    """A float input to sweep and a range around the example: ×0.5…×1.5, kept in range."""
+    """A float input to sweep and a range around the example: ×0.5…×1.5, kept in range.
+
+    The first input (the example's own first) whose whole range the model
+    accepts: a quick 5-point sweep must not be refused (an input tied to a
+    table, such as a thread size, is skipped).
+    """
     given = list(spec.examples[0]) if spec.examples else []
     order = given + [p.name for p in spec.inputs if p.name not in given]
     for name in order:
@@ -179,12 +184,16 @@ def _sweep_input(spec: ModelSpec, base: dict[str, Any]) -> tuple[str, float, flo
         lo, hi = (0.5 * value, 1.5 * value) if value > 0 else (value - 1.0, value + 1.0)
         lo, hi = max(lo, bounds[0]), min(hi, bounds[1])
         if lo < hi:
+            try:
+                engine.sweep(spec, base, name, np.linspace(lo, hi, 5).tolist(), budget_s=10.0)
+            except EngineError:
+                continue
             return name, lo, hi
     return None
 
 
 def measure_sweeps(spec: ModelSpec, budget_s: float) -> list[dict[str, Any]]:
-    """Vectorised 10⁶-point sweeps and a 200-point sweep of the most accurate rung."""
+    """Vectorised 10⁶-point sweeps; 200-point sweeps of each looped rung and the most accurate."""
     if not spec.examples:
         return []
     try:
@@ -387,7 +396,7 @@ def plot(rows: Sequence[dict[str, Any]], path: Path) -> None:
         groups.setdefault((row["model"], str(row["method"])), []).append(row)
     models = sorted({model for model, _ in groups})
     colours = {m: plt.get_cmap("tab10")(i % 10) for i, m in enumerate(models)}
-    fig, ax = plt.subplots(figsize=(9, 6), layout="constrained")
+    fig, ax = plt.subplots(figsize=(13, 7), layout="constrained")
     for (model, method), members in sorted(groups.items()):
         time_s = statistics.median(r["time_s"] for r in members)
         errors = [r["error"] for r in members if r.get("error") is not None]
@@ -415,14 +424,18 @@ def plot(rows: Sequence[dict[str, Any]], path: Path) -> None:
             linewidths=1.5,
             label=label,
         )
-        ax.annotate(method, (time_s, error), xytext=(5, 4), textcoords="offset points", fontsize=7)
+        if not baseline:  # baselines' long names are in the legend only
+            ax.annotate(
+                method[:18], (time_s, error), xytext=(5, 4), textcoords="offset points", fontsize=7
+            )
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("median time per evaluation [s]")
     ax.set_ylabel("achieved relative error (worst over cases and outputs)")
     ax.set_title(
-        "Speed against accuracy: filled = engine rung, square = solver baseline, "
-        "hollow circle = reference rung",
+        "Speed against accuracy (worst case over each method's cases)\n"
+        "filled circle: engine rung or method · hollow circle: reference rung, at its own "
+        "estimate · square: general solver baseline",
         fontsize=9,
     )
     ax.axhline(ERROR_FLOOR, color="grey", lw=0.5, ls=":")
@@ -474,7 +487,7 @@ def table(results: dict[str, Any]) -> str:
                 f"target < {_fmt_time(row['target_s'])} {met} {row['notes']}"
             )
     if results["outputs"]:
-        lines += ["", "One output asked for (most accurate rung, example 0) vs all outputs"]
+        lines += ["", "One output asked for vs all outputs (costliest applicable rung, example 0)"]
         for row in results["outputs"]:
             lines.append(
                 f"{row['model']:<22} {row['method']:<18} {row['output']:<24} "
