@@ -69,7 +69,10 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     omega = math.sqrt(k / m)
     values: dict[str, Any] = {}
     notes: list[str] = []
-    if ctx.rung == "rigid":
+    estimate: float | None = 0.0  # peak alone is exact on every rung
+    if not ctx.wants("time", "speed"):
+        pass  # the peak alone needs no rung's work, least of all the simulation
+    elif ctx.rung == "rigid":
         values["time"] = math.sqrt(2.0 * m * h / f)
         values["speed"] = math.sqrt(2.0 * f * h / m)
         estimate = _rigid_estimate(x)
