@@ -18,6 +18,10 @@ $(VENV)/.installed-dev: pyproject.toml
 	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e '.[dev]'
 	touch $@ $(VENV)/.installed-run
 
+$(VENV)/.installed-bench: $(VENV)/.installed-dev
+	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e '.[dev,bench]'
+	touch $@
+
 install: $(VENV)/.installed-run
 
 run: $(VENV)/.installed-run
@@ -27,6 +31,10 @@ test: $(VENV)/.installed-dev
 	PY=$(BIN)/python scripts/check
 
 check: test
+
+# Speed against accuracy for every registered model: bench/results.json, bench/pareto.png, a table.
+bench: $(VENV)/.installed-bench
+	$(BIN)/python -m bench.run
 
 clean:
 	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache .hypothesis

@@ -1,0 +1,102 @@
+"""The benchmark's own arithmetic and its pipeline, on the toys (figures are not asserted)."""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from bench import run as bench
+from bench.generic import extremes, reference_rung, relative_errors
+from engine import Param, Result, RunContext
+from tests.foundation.toy import TOY
+
+from .toys import SPRING
+
+
+def test_relative_errors_over_common_float_outputs():
+    # energy: |26.25 − 25| / 25 = 0.05; inertia 0 vs 0 counts as 0; a bool is never compared;
+    # an output missing from either side, or a reference of exactly 0, is skipped
+    got = relative_errors(
+        TOY,
+        {"energy": 26.25, "inertia": 0.0, "fast": True, "ratio": 2.0},
+        {"energy": 25.0, "inertia": 0.0, "fast": False, "ratio": 0.0},
+    )
+    assert got == {"energy": pytest.approx(0.05), "inertia": 0.0}
+
+
+def test_extremes_nudge_exclusive_bounds_inside():
+    angle = TOY.param("angle")  # (0, π/2) exclusive both ends
+    lo, hi = extremes(angle)
+    assert 0.0 < lo < 1e-8 and math.pi / 2 * (1 - 2e-9) < hi < math.pi / 2
+    angle.check(lo), angle.check(hi)
+    assert extremes(TOY.param("count")) == (1.0, 100.0)
+    assert extremes(
+        Param("n", "1", "n", kind="int", minimum=0, maximum=5, exclusive_minimum=True)
+    ) == (
+        1.0,
+        5.0,
+    )
+    assert extremes(Param("free", "m", "unbounded"), 2.0) == (-2000.0, 2000.0)
+    assert extremes(TOY.param("mode")) is None
+
+
+def test_reference_is_the_most_accurate_applicable_rung():
+    # u = 0.01·100/10 = 0.1: every rung applies; exact's 1e-12 is the smallest estimate
+    assert reference_rung(SPRING, SPRING.examples[0])[0].name == "exact"
+    # u = 1.5: rigid does not apply
+    assert [r.name for r, _ in bench.applicable_rungs(SPRING, SPRING.examples[1])] == [
+        "exact",
+        "simulation",
+    ]
+
+
+def _crash(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    raise ZeroDivisionError("a model bug")
+
+
+def test_pipeline_writes_rows_sweeps_and_extras(tmp_path: Path):
+    extra = tmp_path / "extra_fake.py"
+    extra.write_text(
+        "def measure():\n"
+        "    return [{'model': 'toy.spring', 'method': 'solve_ivp DOP853', 'case': 'ref',\n"
+        "             'time_s': 1e-3, 'error': 1e-7, 'notes': 'baseline'}]\n"
+    )
+    broken = tmp_path / "extra_broken.py"
+    broken.write_text("def measure():\n    raise RuntimeError('no solver')\n")
+    crash = dataclasses.replace(SPRING, name="toy.crash", compute=_crash)
+    results = bench.collect([SPRING, crash], seconds=0.005, extras=[extra, broken])
+    json.dumps(results, allow_nan=False)
+    rungs = [r for r in results["rows"] if r["kind"] == "rung"]
+    # three examples: all three rungs on the first, exact and simulation on the other two
+    assert len(rungs) == 7
+    rigid = next(r for r in rungs if r["method"] == "rigid")
+    # rigid at u = 0.1: speed off by 1/√(1 − u/2) − 1 = 0.02598, within its estimate u/3
+    assert rigid["error"] == pytest.approx(1 / math.sqrt(0.95) - 1, rel=1e-6)
+    assert rigid["honest"] is True and rigid["outputs_compared"] == ["peak", "speed", "time"]
+    assert all(r["honest"] is None for r in rungs if r["method"] == "exact")
+    (baseline,) = [r for r in results["rows"] if r["kind"] == "extra"]
+    assert bench.is_baseline(baseline) and baseline["source"] == "extra_fake.py"
+    # a model or an extra that crashes is reported and the rest still measured
+    failed = [f.split(":")[0] for f in results["failures"]]
+    assert failed == ["toy.crash rungs", "toy.crash sweeps", "toy.crash outputs", "extra_broken.py"]
+    assert "no solver" in results["failures"][-1]
+    swept = {(s["method"], s["points"]) for s in results["sweeps"]}
+    assert swept == {("exact", 1_000_000), ("rigid", 200), ("simulation", 200), ("exact", 200)}
+    assert {o["output"] for o in results["outputs"]} == {"time", "speed", "peak"}
+    assert "rigid" in bench.table(results)
+    pytest.importorskip("matplotlib")
+    bench.plot(results["rows"], tmp_path / "pareto.png")
+    assert (tmp_path / "pareto.png").stat().st_size > 10_000
+
+
+def test_median_time_repeats_and_batches():
+    calls = []
+    per_call, reps = bench.median_time(lambda: calls.append(1), seconds=0.01, min_reps=5)
+    # warm-up once, then at least five batches; a no-op is batched (≥ 1 ms per batch)
+    assert reps >= 5 and len(calls) == reps + 1 and 0.0 < per_call < 1e-3
