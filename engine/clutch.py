@@ -1409,7 +1409,11 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
     _require_workable(x, wire)
     with np.errstate(all="ignore"):
-        v = {k: float(val) for k, val in _setting_values(x).items()}
+        v: dict[str, Any] = {k: float(val) for k, val in _setting_values(x).items()}
+    no_coil = deflection is not None and v["required_wire_spring_index"] <= 1.0
+    if no_coil:
+        # no coil exists for C <= 1: its stress is not a number, say so rather than NaN
+        v["required_wire_shear_stress"] = None
     alpha, f = x["groove_angle"], x["flank_friction"]
     allow = x["allowable_shear_stress"]
     checks: list[Check] = []
@@ -1427,7 +1431,7 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
     if deflection is not None:
         idx = v["required_wire_spring_index"]
-        if idx <= 1.0:
+        if no_coil:
             checks.append(
                 Check(
                     "required_wire_spring_index",
@@ -1456,6 +1460,11 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "size and re-set the deflection.",
         _SPRING_NOTE,
     ]
+    if no_coil:
+        notes.append(
+            "required_wire_shear_stress is null: the wire that would give the target torque "
+            "at this deflection is as thick as the coil itself (spring index ≤ 1)"
+        )
     return Result(
         values={k: val for k, val in v.items() if ctx.wants(k)},
         rung=ctx.rung,

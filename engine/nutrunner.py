@@ -1129,8 +1129,22 @@ _FLOOR = 1e-12  # float rounding of the closed forms
 
 
 def _estimate_closed_form(x: Mapping[str, Any]) -> float:
-    """Gear-ratio effect on M and, with a motor curve, the constant-power idealisation."""
-    gear = abs(float(_gear_effect(_drive(x))))
+    """Largest relative change the gear ratio makes to any torque output, either way round.
+
+    Spindle quantities scale with M_paper/M_geared, shaft quantities (torque, twist,
+    stress) with M_paper/(u·M_geared), and M_max with the ratio of the torques left
+    after the idle spindles' friction (while both stay positive). Each ratio r counts
+    as max(|r − 1|, |1/r − 1|), so the estimate bounds the difference whichever rung
+    is taken as the reference. With a motor curve, the constant-power idealisation of
+    the spin-up time counts too.
+    """
+    d = _drive(x)
+    m_paper, m_geared = float(d.m_paper), float(d.m_geared)
+    ratios = [m_paper / m_geared, m_paper / (float(d.u) * m_geared)]
+    friction = (x["spindle_count"] - 1) * x["idle_spindle_friction_torque"]
+    if min(m_paper, m_geared) > friction:
+        ratios.append((m_paper - friction) / (m_geared - friction))
+    gear = max(max(abs(r - 1.0), abs(1.0 / r - 1.0)) for r in ratios)
     return max(_FLOOR, gear, _idealisation_error(x))
 
 

@@ -1178,6 +1178,16 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
         for n, v in values.items()
         if ctx.wants(n)
     }
+    if w_nl is not None:
+        # where the motor never reaches the release speed the scalar model refuses the whole
+        # design (spin_up_time raises InfeasibleDesign): no output of that point stands
+        never = np.broadcast_to(np.asarray(omega_m) >= w_nl, shape)
+        if never.any():
+            refused = np.asarray(None, dtype=object)  # a bool output has no NaN: null it
+            out = {
+                n: np.where(never, refused if v.dtype == bool else np.nan, v)
+                for n, v in out.items()
+            }
     values_out: dict[str, Any] = dict(out)
     return Result(values=values_out, rung=ctx.rung, error_estimate=None)
 

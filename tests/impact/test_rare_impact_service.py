@@ -59,3 +59,25 @@ def test_engagement_window_placed_on_the_time_axis(api):
     assert r["engagement_start"] == r["spin_up_time"]
     assert r["engagement_end"] - r["engagement_start"] == pytest.approx(r["engagement_window"])
     assert body["series"]["time"][0] <= r["engagement_start"] <= r["engagement_end"]
+
+
+def test_array_sweep_refuses_the_points_the_scalar_model_refuses():
+    import engine
+    from engine.rare_impact import RARE_IMPACT, REFERENCE_DESIGN
+
+    values = [1e-4, 10.0, 300.0]  # no-load speeds: the first two are below ω_M ≈ 236 rad/s
+    wanted = ["release_speed", "full_engagement"]
+    s = engine.sweep(
+        RARE_IMPACT, REFERENCE_DESIGN, "motor_no_load_speed", values, outputs=wanted,
+        fidelity="closed_form",
+    )  # fmt: skip
+    single = engine.run(
+        RARE_IMPACT, {**REFERENCE_DESIGN, "motor_no_load_speed": 300.0}, fidelity="closed_form"
+    )
+    assert s.results["release_speed"][:2] == [None, None]
+    assert s.results["full_engagement"][:2] == [None, None]
+    assert s.results["release_speed"][2] == pytest.approx(single.results["release_speed"])
+    for v in values[:2]:
+        with pytest.raises(engine.InfeasibleDesign):
+            engine.run(RARE_IMPACT, {**REFERENCE_DESIGN, "motor_no_load_speed": v},
+                       fidelity="closed_form")  # fmt: skip

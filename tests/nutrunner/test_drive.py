@@ -74,7 +74,10 @@ def test_closed_form_by_hand():
     assert v["gear_ratio"] == 2.0
     # τ = 16 M/(π d³): spindle 16·2475.76/(π·0.032³) = 384.8 MPa
     assert v["spindle_shear_stress"] == pytest.approx(384.79e6, rel=1e-4)
-    assert r.error_estimate == pytest.approx(abs(v["gear_ratio_torque_change"]))
+    # the estimate is the largest change the gear ratio makes to any output, either way
+    # round: the shaft torque, u·M(u)/M = 2·(1 − 0.16578) = 1.66844, i.e. 0.668
+    assert r.error_estimate == pytest.approx(2 * (1 + v["gear_ratio_torque_change"]) - 1)
+    assert r.error_estimate == pytest.approx(0.668443, rel=1e-5)
     assert any("gear ratio u = D4/D5 = 2" in n for n in r.notes)
     assert all(c.ok for c in r.checks)
 
@@ -118,9 +121,9 @@ def test_rungs_agree_when_gear_ratio_is_one(d):
 
 def test_auto_without_motor_curve_uses_gear_ratio_when_u_matters():
     r = run(SPEC, BASE, fidelity="auto")
-    # closed_form estimate = |M(u)/M − 1| = 16.6 % > 1 %; gear_ratio applies; no motor curve
+    # closed_form estimate = shaft torque change u·M(u)/M − 1 = 66.8 % > 1 %; no motor curve
     assert r.rung == "gear_ratio"
-    assert "closed_form 0.17" in r.notes[0]
+    assert "closed_form 0.67" in r.notes[0]
 
 
 def test_gear_ratio_moves_torque_down_when_u_above_one_and_up_below():
