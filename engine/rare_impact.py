@@ -605,13 +605,13 @@ def min_return_spring_rate(
 
 
 def return_time(
-    striker_mass: float,
-    gravity: float,
-    return_spring_rate: float,
-    return_spring_preload: float,
-    engagement_height: float,
-    jaw_height: float,
-) -> float:
+    striker_mass: Any,
+    gravity: Any,
+    return_spring_rate: Any,
+    return_spring_preload: Any,
+    engagement_height: Any,
+    jaw_height: Any,
+) -> Any:
     r"""Time for the return spring to bring the striker back the jaw height [s] (inf: never).
 
     Exact solution of [002, eq. 3] with the half-coupling at rest:
@@ -625,19 +625,20 @@ def return_time(
     >>> round(return_time(0.4, 9.80665, 52000.0, 0.0021, 0.004, 0.0035), 7)
     0.0031574
     """
-    k3 = math.sqrt(return_spring_rate / striker_mass)
+    k3 = np.sqrt(np.asarray(return_spring_rate / striker_mass, dtype=float))
     d = return_spring_preload + engagement_height - striker_mass * gravity / return_spring_rate
-    return float(time_to_travel(jaw_height, d * k3 * k3, k3))
+    out = np.asarray(time_to_travel(jaw_height, d * k3 * k3, k3), dtype=float)
+    return float(out) if out.ndim == 0 else out
 
 
 def relock_time(
-    stepped_shaft_mass: float,
-    gravity: float,
-    auxiliary_spring_rate: float,
-    auxiliary_spring_preload: float,
-    release_travel: float,
-    friction_force: float,
-) -> float:
+    stepped_shaft_mass: Any,
+    gravity: Any,
+    auxiliary_spring_rate: Any,
+    auxiliary_spring_preload: Any,
+    release_travel: Any,
+    friction_force: Any,
+) -> Any:
     r"""Time for the auxiliary spring to push the stepped shaft back the release travel [s].
 
     Exact solution of [002, eq. 4]:
@@ -653,13 +654,14 @@ def relock_time(
     >>> round(relock_time(0.05, 9.80665, 2000.0, 0.008, 0.005, 10.92), 7)
     0.0060247
     """
-    k4 = math.sqrt(auxiliary_spring_rate / stepped_shaft_mass)
+    k4 = np.sqrt(np.asarray(auxiliary_spring_rate / stepped_shaft_mass, dtype=float))
     d = (
         auxiliary_spring_preload
         + release_travel
         + (stepped_shaft_mass * gravity - friction_force) / auxiliary_spring_rate
     )
-    return float(time_to_travel(release_travel, d * k4 * k4, k4))
+    out = np.asarray(time_to_travel(release_travel, d * k4 * k4, k4), dtype=float)
+    return float(out) if out.ndim == 0 else out
 
 
 def relock_margin(
@@ -1170,6 +1172,15 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 c3,
                 lam3,
                 x["roller_friction"],
+            ),
+            "return_time": return_time(x["striker_mass"], g, c3, lam3, h2, x["jaw_height"]),
+            "relock_time": relock_time(
+                x["stepped_shaft_mass"],
+                g,
+                x["auxiliary_spring_rate"],
+                x["auxiliary_spring_preload"],
+                h1,
+                c3 * lam3 * x["roller_friction"],
             ),
         }
     shape = np.broadcast(*[np.asarray(v) for v in x.values() if v is not None]).shape

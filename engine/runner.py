@@ -328,8 +328,16 @@ def _sweep_vectorized(
     wanted = known if outputs is None else [n for n in outputs if n in known]
     ctx = RunContext(rung=rung, outputs=frozenset(wanted), tolerance=tol)
     result = spec.vectorized({**first, param.name: arr}, ctx)
-    if any(name not in result.values for name in wanted):
-        return None  # the array version does not give every asked output: loop instead
+    missing = [name for name in wanted if name not in result.values]
+    if missing:
+        # an output the array version lacks may simply not belong to this rung; loop only
+        # if the scalar model gives it at the first point
+        try:
+            scalar = spec.compute(first, ctx).values
+        except EngineError:
+            scalar = {}
+        if any(scalar.get(name) is not None for name in missing):
+            return None
     results: dict[str, list[Value]] = {}
     bad = np.zeros(arr.shape, dtype=bool)
     for name in wanted:

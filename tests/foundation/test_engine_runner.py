@@ -97,3 +97,9 @@ def test_vectorized_sweep_equals_loop_and_nulls_bad_points():
 def test_vectorized_sweep_checks_range():
     with pytest.raises(InputOutOfRange):
         engine.sweep(TOY, BASE, "diameter", [0.1, 20.0], fidelity="exact")
+
+
+def test_vectorized_sweep_loops_when_the_array_path_lacks_an_asked_output():
+    # the toy's array version gives only energy; inertia belongs to the rung, so the loop runs
+    s = engine.sweep(TOY, BASE, "diameter", [0.1, 0.2], outputs=["inertia"], fidelity="exact")
+    assert s.results["inertia"] == pytest.approx([0.1**2 / 8, 0.2**2 / 8])
