@@ -85,7 +85,7 @@ def median_time(
 
 
 def _example_name(spec: ModelSpec, index: int) -> str:
-    return "example 0 (source case)" if index == 0 else f"example {index}"
+    return "example 0 (reference case)" if index == 0 else f"example {index}"
 
 
 def measure_rungs(spec: ModelSpec, seconds: float) -> list[dict[str, Any]]:
