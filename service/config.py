@@ -46,6 +46,11 @@ class Settings:
     engine_queue: int = field(default_factory=lambda: _int("ENGINE_QUEUE", 64))
     #: How long past its budget a computation that ignores its deadline is waited for [s].
     budget_grace_s: float = field(default_factory=lambda: _float("BUDGET_GRACE_S", 1.0))
+    #: Run every model's first example once per rung at start-up, in the background, so
+    #: the first user request does not pay one-off costs (numba's cache load, ~1.5 s).
+    warm_up: bool = field(
+        default_factory=lambda: os.environ.get("WARM_UP", "1").lower() not in ("0", "false")
+    )
     #: One JSON line per request on the ``service.access`` logger.
     access_log: bool = field(
         default_factory=lambda: os.environ.get("ACCESS_LOG", "1").lower() not in ("0", "false")

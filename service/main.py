@@ -17,8 +17,10 @@ SHA-256 hash (no ``'unsafe-inline'`` for scripts), and /redoc also its CDN.
 from __future__ import annotations
 
 import base64
+import contextlib
 import hashlib
 import re
+import threading
 from collections.abc import AsyncIterator, Sequence
 from contextlib import asynccontextmanager
 from pathlib import Path
@@ -70,6 +72,20 @@ def _docs_page(page: HTMLResponse, *, cdn: bool = True) -> HTMLResponse:
     return HTMLResponse(text, headers={"content-security-policy": docs_csp(text, cdn=cdn)})
 
 
+def warm_up(models: Sequence[ModelSpec]) -> None:
+    """Evaluate each model's first example once per rung, ignoring every outcome.
+
+    Some rungs pay a one-off cost on their first call in a process (the
+    rare-impact simulation loads its numba-compiled kernel, ~1.5 s); paying it
+    here, in a background thread at start-up, keeps it off the first request.
+    """
+    for spec in models:
+        for example in spec.examples[:1]:
+            for rung in spec.rung_names:
+                with contextlib.suppress(Exception):
+                    engine.run(spec, example, fidelity=rung)
+
+
 def static_dir() -> Path:
     """``service/static`` in an installed wheel, ``static/`` beside the package in a checkout."""
     here = Path(__file__).resolve().parent
@@ -94,6 +110,8 @@ def create_app(
 
     @asynccontextmanager
     async def lifespan(_: FastAPI) -> AsyncIterator[None]:
+        if settings.warm_up:
+            threading.Thread(target=warm_up, args=(models,), name="warm-up", daemon=True).start()
         yield
         pool.shutdown()
 

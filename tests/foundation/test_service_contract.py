@@ -174,3 +174,19 @@ def test_openapi_and_static(toy):
     assert toy.get("/docs").status_code == 200
     page = toy.get("/")
     assert page.status_code == 200 and "<html" in page.text
+
+
+def test_warm_up_runs_every_rung_of_the_first_example_and_swallows_refusals():
+    from service.main import warm_up
+
+    calls = []
+
+    def compute(x, ctx):
+        calls.append(ctx.rung)
+        raise RuntimeError("a warm-up failure must not escape")
+
+    import dataclasses
+
+    broken = dataclasses.replace(TOY, compute=compute)
+    warm_up([broken])
+    assert calls == ["rough", "exact"]
