@@ -1050,12 +1050,14 @@ def _index_check(name: str, index: float, kw: float) -> Check:
     return Check(name, lo <= index <= hi, detail)
 
 
-def _stress_check(name: str, stress: float, allowable: float | None) -> list[Check]:
+def _stress_check(
+    name: str, stress: float, allowable: float | None, which: str = "wire"
+) -> list[Check]:
     if allowable is None:
         return []
     ok = stress <= allowable
     detail = (
-        f"wire shear stress {stress / 1e6:.4g} MPa "
+        f"{which} shear stress {stress / 1e6:.4g} MPa "
         + ("≤" if ok else ">")
         + f" allowable {allowable / 1e6:.4g} MPa"
         + ("" if ok else ": use thicker wire, a smaller coil diameter or a lower setting")
@@ -1077,12 +1079,16 @@ def _groove_check(name: str, depth: float, ball_diameter: float, what: str) -> C
             f"groove depth ({what}) {depth * 1e3:.4g} mm ≤ ball radius {ball_diameter * 500:.4g} mm"
         )
     else:
-        deeper = "the whole ball" if depth >= ball_diameter else "the ball radius"
+        deeper = (
+            f"even the whole ball (d = {ball_diameter * 1e3:.4g} mm)"
+            if depth >= ball_diameter
+            else f"the ball radius (d/2 = {ball_diameter * 500:.4g} mm)"
+        )
         detail = (
-            f"groove depth ({what}) {depth * 1e3:.4g} mm exceeds {deeper} "
-            f"(d/2 = {ball_diameter * 500:.4g} mm): the ball's centre sits below the rim, "
-            "so it cannot climb out cleanly (it wedges on the rim); use larger balls, "
-            "a shallower groove, or a stiffer spring with less deflection"
+            f"groove depth ({what}) {depth * 1e3:.4g} mm exceeds {deeper}: the ball's "
+            "centre would sit below the rim, so it cannot climb out cleanly (it wedges on "
+            "the rim); use larger balls, a shallower groove, or a stiffer spring with less "
+            "deflection"
         )
     return Check(name, ok, detail)
 
@@ -1420,7 +1426,12 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if wire is not None:
         kw = float(wahl_factor(v["spring_index"]))
         checks.append(_index_check("spring_index", v["spring_index"], kw))
-        checks += _stress_check("spring_shear_stress", v["spring_shear_stress"], allow)
+        checks += _stress_check(
+            "spring_shear_stress",
+            v["spring_shear_stress"],
+            allow,
+            f"given wire ({wire * 1e3:.4g} mm) at the required deflection,",
+        )
         checks.append(
             _groove_check(
                 "required_deflection_groove_depth",
@@ -1444,7 +1455,10 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         else:
             checks.append(_index_check("required_wire_spring_index", idx, float(wahl_factor(idx))))
             checks += _stress_check(
-                "required_wire_shear_stress", v["required_wire_shear_stress"], allow
+                "required_wire_shear_stress",
+                v["required_wire_shear_stress"],
+                allow,
+                f"required wire ({v['required_wire_diameter'] * 1e3:.4g} mm)",
             )
         checks.append(
             _groove_check("groove_depth", deflection, x["ball_diameter"], "= given deflection")

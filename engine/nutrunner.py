@@ -1243,7 +1243,8 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         notes.append(
             f"as in the source, shaft 7 and spindle 8 carry the same torque; with the gear "
             f"ratio u = D4/D5 = {d.u:.4g} the spindle torque would change by {effect:+.2%} "
-            "(rung gear_ratio)"
+            f"and the shaft torque (twist, stress) by {d.u * (1.0 + effect) - 1.0:+.2%} "
+            "(rung gear_ratio); the error estimate is the larger change, either way round"
         )
         error: float | None = _estimate_closed_form(x)
     else:

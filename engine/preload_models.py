@@ -227,6 +227,12 @@ def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
         notes.append(f"bearing face D_f = d_w,min = {outer * 1e3:g} mm (ISO 4017 hexagon head)")
     if x.get("hole_diameter") is not None:
         hole = float(x["hole_diameter"])
+        if hole < d:
+            raise InputOutOfRange(
+                f"hole_diameter d_h = {hole * 1e3:g} mm is smaller than the thread diameter "
+                f"d = {d * 1e3:g} mm: the bolt would not pass through the clamped part",
+                field="hole_diameter",
+            )
     else:
         series = str(x.get("hole_series") or "medium")
         hole = th.clearance_hole(d, series)
@@ -350,11 +356,6 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 f"{sigma_eq / bolt.yield_strength:.1%} of the yield strength"
                 + ("" if ok else ": lower the preload, or choose a stronger property class"),
             )
-        )
-    if bolt.hole_diameter < bolt.diameter:
-        warnings.append(
-            f"hole_diameter {bolt.hole_diameter * 1e3:g} mm is smaller than the thread "
-            f"diameter {bolt.diameter * 1e3:g} mm"
         )
     if not 0.05 <= share <= 0.15:
         notes.append(
@@ -840,8 +841,14 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
                         f"the reading error stays within the method's ±{method.scatter:.0%}"
                         if big_enough
                         else f"needs ≥ {math.degrees(ANGLE_READING_ERROR / method.scatter):.0f}° "
-                        "for the method's accuracy; the bolt is too short for angle control "
-                        "([004]): use torque or elongation control"
+                        "for the method's accuracy; "
+                        + (
+                            "the bolt is too short for angle control ([004]): use torque or "
+                            "elongation control"
+                            if method.controls == "angle"
+                            else "the make-up turn is too small to read from the marks: use "
+                            "the dynamometric wrench or the locking ring"
+                        )
                     ),
                 )
             )

@@ -55,6 +55,33 @@ class SweepResult:
     elapsed_s: float
     notes: list[str] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
+    #: The rung that ran at each point (None where the point was refused): ``auto``
+    #: chooses per point, so a sweep across a regime change may mix rungs.
+    rungs: list[str | None] = field(default_factory=list)
+    #: Each point's error estimate (None where refused or not known).
+    error_estimates: list[float | None] = field(default_factory=list)
+
+
+def _rung_summary(rungs: Sequence[str | None]) -> tuple[str, list[str]]:
+    """The sweep's ``rung`` field and, when points differ, a note saying how."""
+    counts: dict[str, int] = {}
+    for r in rungs:
+        if r is not None:
+            counts[r] = counts.get(r, 0) + 1
+    if len(counts) <= 1:
+        return next(iter(counts), ""), []
+    return ", ".join(counts), [
+        "auto chose the rung per point: "
+        + ", ".join(f"{r} at {n} point{'s' if n > 1 else ''}" for r, n in counts.items())
+        + " (see rungs)"
+    ]
+
+
+def _fidelity(spec: ModelSpec, fidelity: str | None, tolerance: float | None) -> str:
+    """The fidelity asked for: given, else 'auto' when a tolerance is given, else the default."""
+    if fidelity is not None:
+        return fidelity
+    return "auto" if tolerance is not None else spec.default_fidelity
 
 
 def choose_rung(
@@ -136,7 +163,7 @@ def run(
             + ", ".join(sorted(known)),
             field="outputs",
         )
-    rung, notes = choose_rung(spec, values, fidelity or spec.default_fidelity, tol)
+    rung, notes = choose_rung(spec, values, _fidelity(spec, fidelity, tolerance), tol)
     start = time.perf_counter()
     ctx = RunContext(
         rung=rung,
@@ -161,6 +188,11 @@ def run(
             notes.append(f"{name} could not be computed for these inputs (non-finite); null")
             value = None
         scalars[name] = value
+    if outputs is not None:
+        series_names = {o.name for o in spec.outputs if o.series}
+        for name in sorted(wanted - set(scalars) - series_names):
+            scalars[name] = None
+            notes.append(f"{name} is not computed by {result.rung!r} for these inputs; null")
     for name, seq in result.series.items():
         if name not in wanted:
             continue
@@ -239,7 +271,9 @@ def sweep(
     results: dict[str, list[Value]] = {}
     notes: list[str] = []
     warnings: list[str] = []
-    rung = ""
+    rungs: list[str | None] = []
+    errors: list[float | None] = []
+    first_refusal: EngineError | None = None
     for i, value in enumerate(checked):
         remaining = None if deadline is None else deadline - time.perf_counter()
         if remaining is not None and remaining <= 0:
@@ -257,16 +291,15 @@ def sweep(
                 budget_s=remaining,
                 max_steps=max_steps,
             )
-        except InputOutOfRange as exc:
-            if exc.field != vary:
-                raise
-            point = None
-            notes.append(f"{vary} = {value:g}: {exc.message}")
         except EngineError as exc:
+            # a point the model refuses (infeasible, or a cross-field range that this
+            # value breaks) is null; if every point is refused, the first refusal stands
             point = None
+            first_refusal = first_refusal or exc
             notes.append(f"{vary} = {value:g}: {exc.message}")
+        rungs.append(None if point is None else point.rung)
+        errors.append(None if point is None else point.error_estimate)
         if point is not None:
-            rung = rung or point.rung
             if not names:
                 names = list(point.results)
                 for n in names:
@@ -280,7 +313,10 @@ def sweep(
             for n in names:
                 results[n].append(None)
     if not names:
+        if isinstance(first_refusal, InputOutOfRange) and first_refusal.field != vary:
+            raise first_refusal  # the fixed inputs themselves are out of range
         notes.append("no point of the sweep could be computed")
+    rung, mixed = _rung_summary(rungs)
     units = {o.name: o.unit for o in spec.outputs}
     return SweepResult(
         model=spec.name,
@@ -290,8 +326,10 @@ def sweep(
         units={n: units[n] for n in names},
         rung=rung,
         elapsed_s=time.perf_counter() - start,
-        notes=notes,
+        notes=mixed + notes,
         warnings=warnings,
+        rungs=rungs,
+        error_estimates=errors,
     )
 
 
@@ -321,9 +359,21 @@ def _sweep_vectorized(
         raise InputOutOfRange(f"{param.name} must be finite", field=param.name)
     first, warnings = spec.validate({**base, param.name: arr[0].item()})
     tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
-    rung, notes = choose_rung(spec, first, fidelity or spec.default_fidelity, tol)
+    asked = _fidelity(spec, fidelity, tolerance)
+    rung, notes = choose_rung(spec, first, asked, tol)
     if rung not in spec.vector_rungs:
         return None
+    estimates: list[float | None] = [None] * arr.size
+    if asked == "auto":
+        if arr.size > MAX_SWEEP_POINTS:
+            notes.append(f"auto chose {rung!r} from the first point of this long sweep")
+        else:
+            # auto decides per point; one array call only if every point chose the same rung
+            for i, v in enumerate(arr.tolist()):
+                point, _ = spec.validate({**base, param.name: v})
+                if choose_rung(spec, point, "auto", tol)[0] != rung:
+                    return None
+                estimates[i] = spec.rung(rung).estimate(point)
     known = [o.name for o in spec.outputs if not o.series]
     wanted = known if outputs is None else [n for n in outputs if n in known]
     ctx = RunContext(rung=rung, outputs=frozenset(wanted), tolerance=tol)
@@ -366,4 +416,6 @@ def _sweep_vectorized(
         elapsed_s=0.0,
         notes=notes + result.notes,
         warnings=warnings + result.warnings,
+        rungs=[None if b else rung for b in bad.tolist()],
+        error_estimates=[None if b else e for b, e in zip(bad.tolist(), estimates, strict=True)],
     )

@@ -166,6 +166,8 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
                     "elapsed_s": result.elapsed_s,
                     "notes": result.notes,
                     "warnings": result.warnings,
+                    "rungs": result.rungs,
+                    "error_estimates": result.error_estimates,
                 }
             )
 

@@ -43,7 +43,11 @@ def _json_safe(value: Any) -> Any:
 def error_body(
     kind: str, msg: str, loc: list[Any], ctx: dict[str, Any] | None = None
 ) -> dict[str, Any]:
-    field = ".".join(str(p) for p in loc[1:]) if len(loc) > 1 and loc[0] == "body" else None
+    field = (
+        ".".join(str(p) for p in loc[1:])
+        if len(loc) > 1 and loc[0] == "body" and isinstance(loc[1], str)
+        else None
+    )
     item: dict[str, Any] = {"type": kind, "loc": loc, "msg": msg, "field": field}
     if ctx:
         item["ctx"] = _json_safe(ctx)
@@ -54,6 +58,16 @@ async def _validation(_: Request, exc: Exception) -> JSONResponse:
     assert isinstance(exc, RequestValidationError)
     items = []
     for err in exc.errors():
+        if err.get("type") == "json_invalid":
+            # malformed JSON is a bad request, like a body that is not UTF-8: 400, no field
+            position = err.get("loc", ("body", "?"))[-1]
+            reason = (err.get("ctx") or {}).get("error", "JSON decode error")
+            return JSONResponse(
+                status_code=400,
+                content=error_body(
+                    "json_invalid", f"the body is not valid JSON: {reason} (at {position})", []
+                ),
+            )
         loc = [p for p in err.get("loc", ()) if p not in ("function-after", "function-before")]
         ctx = err.get("ctx")
         items.append(

@@ -175,11 +175,12 @@ def request_model(spec: ModelSpec) -> type[BaseModel]:
         _class_name(spec, "Request"),
         __base__=inputs_model(spec),
         fidelity=(
-            _fidelity_type(spec),
+            _fidelity_type(spec) | None,
             Field(
-                default=spec.default_fidelity,
+                default=None,
                 description="'auto' picks the cheapest rung whose error estimate meets "
-                "`tolerance`; or name a rung",
+                f"`tolerance`; or name a rung. Absent: {spec.default_fidelity!r}, or "
+                "'auto' when a tolerance is given",
             ),
         ),
         tolerance=(
@@ -268,7 +269,14 @@ def sweep_request_model(spec: ModelSpec) -> type[BaseModel]:
             _list_of(_literal(scalar_outputs)) | None,
             Field(default=None, max_length=len(scalar_outputs)),
         ),
-        fidelity=(_fidelity_type(spec), Field(default=spec.default_fidelity)),
+        fidelity=(
+            _fidelity_type(spec) | None,
+            Field(
+                default=None,
+                description=f"as for a single evaluation (absent: {spec.default_fidelity!r}, "
+                "or 'auto' when a tolerance is given); auto chooses per point",
+            ),
+        ),
         tolerance=(float | None, Field(default=None, gt=0, lt=1, allow_inf_nan=False)),
     )
 
@@ -284,3 +292,9 @@ class SweepResponse(BaseModel):
     elapsed_s: float
     notes: list[str] = Field(default_factory=list)
     warnings: list[str] = Field(default_factory=list)
+    rungs: list[str | None] = Field(
+        default_factory=list, description="the rung that ran at each point (null: refused)"
+    )
+    error_estimates: list[float | None] = Field(
+        default_factory=list, description="each point's estimated relative error"
+    )

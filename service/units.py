@@ -7,6 +7,11 @@ optional one-digit exponent) before pint sees it; pint then parses only the
 unit part, never the number. That keeps pint's expression evaluator, which
 would happily compute ``10**10**10`` for minutes, away from user input, and
 nothing is ever passed to ``eval``.
+
+A frequency without an angle unit ("50 Hz", "1400 min^-1", "25 1/s") given
+for an angular speed is read as a rotational frequency, i.e. revolutions per
+unit time (×2π to rad/s), as drive catalogues mean it. Common spellings are
+accepted: "Nm", "N.m", "N·m", "kg·m²", "RPM", "rev/min".
 """
 
 from __future__ import annotations
@@ -22,7 +27,7 @@ MAX_UNIT_STRING = 64
 
 _NUMBER = r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d{1,3})?"
 _ATOM = r"(?:[A-Za-zµμΩ%]+|°)(?:(?:\^|\*\*)-?\d)?"
-_UNIT = rf"{_ATOM}(?:\s*[*/·]\s*{_ATOM}|\s+{_ATOM})*"
+_UNIT = rf"{_ATOM}(?:\s*[*/·.]\s*{_ATOM}|\s+{_ATOM})*"
 _QUANTITY = re.compile(rf"\s*({_NUMBER})\s*({_UNIT})?\s*")
 
 # Dimensionless inputs (counts, ratios, friction coefficients) accept these only;
@@ -30,6 +35,15 @@ _QUANTITY = re.compile(rf"\s*({_NUMBER})\s*({_UNIT})?\s*")
 _DIMENSIONLESS_UNITS = {"%": 0.01, "percent": 0.01, "ppm": 1e-6}
 
 _REGISTRY: Any = pint.UnitRegistry()
+# spellings workshop users type that pint does not know
+_REGISTRY.define("Nm = newton * meter")
+_REGISTRY.define("RPM = revolution / minute")
+_REGISTRY.define("rev = revolution")
+
+#: pint unit names that carry an angle; a frequency without one ("Hz", "min^-1")
+#: given for an angular speed counts revolutions, as engineers mean it.
+_ANGLE_UNITS = ("radian", "degree", "rev", "RPM", "rpm", "turn", "arcminute", "arcsecond", "grade")
+_SUPERSCRIPTS = {"²": "^2", "³": "^3", "⁴": "^4", "⁻¹": "^-1", "⁻²": "^-2"}
 
 
 class UnitError(ValueError):
@@ -38,7 +52,15 @@ class UnitError(ValueError):
 
 def _normalise(unit: str) -> str:
     unit = unit.replace("·", "*").replace("μ", "u").replace("µ", "u")
+    unit = re.sub(r"(?<=[A-Za-z])\.(?=[A-Za-z])", "*", unit)  # "N.m"
     return re.sub(r"°", "degree", unit)
+
+
+def _plain(text: str) -> str:
+    """Superscript exponents ("m²", "min⁻¹") written the way the grammar reads them."""
+    for sup, plain in _SUPERSCRIPTS.items():
+        text = text.replace(sup, plain)
+    return text
 
 
 @lru_cache(maxsize=1024)
@@ -53,7 +75,12 @@ def _factor(unit: str, target: str) -> float:
     try:
         factor = _REGISTRY.Quantity(1.0, parsed).to(target).magnitude
     except pint.errors.DimensionalityError as exc:
-        raise UnitError(f"{unit!r} has the wrong dimension: expected {target}") from exc
+        raise UnitError(
+            f"{unit!r} has the wrong dimension: expected {target} (write products as 'N*m')"
+        ) from exc
+    names = " ".join(str(name) for name in parsed._units)
+    if target.startswith("rad/") and not any(a in names for a in _ANGLE_UNITS):
+        factor *= 2.0 * math.pi  # Hz, 1/min for a speed: revolutions per unit time
     return float(factor)
 
 
@@ -69,7 +96,7 @@ def to_si(text: str, target: str) -> float:
     """
     if len(text) > MAX_UNIT_STRING:
         raise UnitError(f"a unit string has at most {MAX_UNIT_STRING} characters")
-    match = _QUANTITY.fullmatch(text)
+    match = _QUANTITY.fullmatch(_plain(text))
     if match is None:
         raise UnitError(f"cannot read {text!r}: expected a number and a unit, like '45 mm'")
     number, unit = match.group(1), match.group(2)

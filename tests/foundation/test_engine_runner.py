@@ -1,11 +1,13 @@
+import dataclasses
 import math
 
 import pytest
 
 import engine
-from engine import InfeasibleDesign, InputOutOfRange
+from engine import InfeasibleDesign, InputOutOfRange, Rung, fixed_error
 
 from .toy import TOY
+from .toy import _compute as toy_compute
 
 BASE = {"diameter": 0.2}
 
@@ -103,3 +105,72 @@ def test_vectorized_sweep_loops_when_the_array_path_lacks_an_asked_output():
     # the toy's array version gives only energy; inertia belongs to the rung, so the loop runs
     s = engine.sweep(TOY, BASE, "diameter", [0.1, 0.2], outputs=["inertia"], fidelity="exact")
     assert s.results["inertia"] == pytest.approx([0.1**2 / 8, 0.2**2 / 8])
+
+
+def _speed_sensitive_toy():
+    """TOY whose rough rung is 5 % off and says so only above 10 rad/s (estimate speed/1000)."""
+    return dataclasses.replace(
+        TOY,
+        rungs=(
+            Rung("rough", "off at speed", lambda x: x["speed"] / 1000.0),
+            Rung("exact", "exact", fixed_error(1e-15)),
+        ),
+        vectorized=None,
+    )
+
+
+def test_auto_sweep_chooses_the_rung_per_point_and_says_so():
+    toy = _speed_sensitive_toy()
+    s = engine.sweep(toy, BASE, "speed", [1.0, 5.0, 50.0, 100.0], outputs=["energy"])
+    # estimates 0.001, 0.005 ≤ 0.01 → rough; 0.05, 0.1 > 0.01 → exact
+    assert s.rungs == ["rough", "rough", "exact", "exact"]
+    assert s.error_estimates == pytest.approx([0.05, 0.05, 1e-15, 1e-15])
+    assert s.rung == "rough, exact" and "rough at 2 points, exact at 2 points" in s.notes[0]
+    e = [0.5 * 0.2**2 / 8 * w**2 for w in (1.0, 5.0, 50.0, 100.0)]
+    assert s.results["energy"] == pytest.approx([1.05 * e[0], 1.05 * e[1], e[2], e[3]])
+    # the same points swept the other way give the same values
+    back = engine.sweep(toy, BASE, "speed", [100.0, 50.0, 5.0, 1.0], outputs=["energy"])
+    assert back.results["energy"] == pytest.approx(s.results["energy"][::-1])
+
+
+def test_auto_array_sweep_loops_when_points_choose_different_rungs():
+    toy = dataclasses.replace(
+        TOY,
+        rungs=(Rung("rough", "off", lambda x: x["diameter"]), Rung("exact", "", fixed_error(0))),
+        vector_rungs=("rough", "exact"),
+    )
+    s = engine.sweep(toy, BASE, "diameter", [0.001, 0.5], outputs=["energy"])
+    assert s.rungs == ["rough", "exact"]  # not the first point's choice everywhere
+
+
+def test_tolerance_without_fidelity_means_auto():
+    toy = dataclasses.replace(_speed_sensitive_toy(), default_fidelity="rough")
+    assert engine.run(toy, BASE).rung == "rough"  # the default rung
+    r = engine.run(toy, BASE, tolerance=0.01)  # speed 100: rough estimates 0.1
+    assert r.rung == "exact" and r.notes[0].startswith("auto:")
+
+
+def test_an_output_asked_by_name_comes_back_null_with_a_note_when_not_computed():
+    def compute(x, ctx):
+        return engine.Result(values={"inertia": 1.0}, rung=ctx.rung, error_estimate=0.0)
+
+    toy = dataclasses.replace(TOY, compute=compute)
+    r = engine.run(toy, BASE, outputs=["inertia", "energy"])
+    assert r.results == {"inertia": 1.0, "energy": None}
+    assert any("energy is not computed" in n for n in r.notes)
+    assert "energy" not in engine.run(toy, BASE).results  # all outputs: only what was computed
+
+
+def test_sweep_nulls_points_that_break_a_cross_field_range_and_names_them():
+    def compute(x, ctx):
+        if x["speed"] > 50.0:
+            raise InputOutOfRange("mass must exceed speed / 50", field="mass")
+        return toy_compute(x, ctx)
+
+    toy = dataclasses.replace(TOY, compute=compute, vectorized=None)
+    s = engine.sweep(toy, BASE, "speed", [10.0, 100.0], outputs=["energy"], fidelity="exact")
+    assert s.results["energy"][1] is None and s.rungs == ["exact", None]
+    assert "speed = 100: mass must exceed" in s.notes[-1]
+    with pytest.raises(InputOutOfRange) as info:  # every point refused: the fixed input is at fault
+        engine.sweep(toy, BASE, "speed", [60.0, 100.0], fidelity="exact")
+    assert info.value.field == "mass"

@@ -19,6 +19,17 @@ from service.units import UnitError, to_si
         ("0.3", "m", 0.3),
         ("2 kg*m^2", "kg*m^2", 2.0),
         ("45°", "rad", 0.7853981633974483),
+        # a frequency given for an angular speed is revolutions per unit time
+        ("50 Hz", "rad/s", 50 * 2 * 3.141592653589793),
+        ("1400 min^-1", "rad/s", 1400 * 2 * 3.141592653589793 / 60),
+        ("1400 min⁻¹", "rad/s", 1400 * 2 * 3.141592653589793 / 60),
+        ("1400 RPM", "rad/s", 1400 * 2 * 3.141592653589793 / 60),
+        ("1400 rev/min", "rad/s", 1400 * 2 * 3.141592653589793 / 60),
+        ("90 deg/s", "rad/s", 3.141592653589793 / 2),
+        ("10 Nm", "N*m", 10.0),
+        ("5 N.m", "N*m", 5.0),
+        ("0.02 kg·m²", "kg*m^2", 0.02),
+        ("2 N/mm", "N/m", 2000.0),
     ],
 )
 def test_reads_practical_units(text, unit, expected):

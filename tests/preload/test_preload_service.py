@@ -442,3 +442,14 @@ def test_auto_says_when_vdi_formula_misses_a_tight_tolerance(api):
         api, TIGHT, {"thread_diameter": 0.012, "tolerance": 1e-4, "torque_formula": "exact"}
     )
     assert exact["error_estimate"] == 0.0 and "≤ tolerance" in exact["notes"][0]
+
+
+def test_a_hole_smaller_than_the_bolt_is_refused_naming_the_field(api):
+    r = api.post(
+        "/api/v1/preload/tightening",
+        json={"thread_diameter": "12 mm", "property_class": "8.8", "thread_friction": 0.12,
+              "bearing_friction": 0.12, "hole_diameter": "11 mm"},
+    )  # fmt: skip
+    assert r.status_code == 422
+    (item,) = r.json()["detail"]
+    assert item["field"] == "hole_diameter" and "would not pass through" in item["msg"]
