@@ -364,16 +364,17 @@ def _sweep_vectorized(
     if rung not in spec.vector_rungs:
         return None
     estimates: list[float | None] = [None] * arr.size
-    if asked == "auto":
-        if arr.size > MAX_SWEEP_POINTS:
+    if arr.size > MAX_SWEEP_POINTS:
+        if asked == "auto":
             notes.append(f"auto chose {rung!r} from the first point of this long sweep")
-        else:
-            # auto decides per point; one array call only if every point chose the same rung
-            for i, v in enumerate(arr.tolist()):
-                point, _ = spec.validate({**base, param.name: v})
-                if choose_rung(spec, point, "auto", tol)[0] != rung:
-                    return None
-                estimates[i] = spec.rung(rung).estimate(point)
+    else:
+        # each point's estimate; auto decides per point, so one array call serves only
+        # if every point chose the same rung
+        for i, v in enumerate(arr.tolist()):
+            point, _ = spec.validate({**base, param.name: v})
+            if asked == "auto" and choose_rung(spec, point, "auto", tol)[0] != rung:
+                return None
+            estimates[i] = spec.rung(rung).estimate(point)
     known = [o.name for o in spec.outputs if not o.series]
     wanted = known if outputs is None else [n for n in outputs if n in known]
     ctx = RunContext(rung=rung, outputs=frozenset(wanted), tolerance=tol)

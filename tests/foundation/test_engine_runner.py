@@ -141,6 +141,8 @@ def test_auto_array_sweep_loops_when_points_choose_different_rungs():
     )
     s = engine.sweep(toy, BASE, "diameter", [0.001, 0.5], outputs=["energy"])
     assert s.rungs == ["rough", "exact"]  # not the first point's choice everywhere
+    fixed = engine.sweep(toy, BASE, "diameter", [0.001, 0.5], outputs=["energy"], fidelity="rough")
+    assert fixed.rungs == ["rough", "rough"] and fixed.error_estimates == [0.001, 0.5]
 
 
 def test_tolerance_without_fidelity_means_auto():
