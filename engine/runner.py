@@ -344,8 +344,9 @@ def _sweep_vectorized(
 ) -> SweepResult | None:
     """One array evaluation instead of a loop, when the model offers it for the rung.
 
-    Returns None (the caller loops) when the rung chosen for the first point
-    is not vectorised.
+    Returns None (the caller loops) when the rung chosen for the first point is
+    not vectorised, when ``auto`` chooses different rungs at different points,
+    or when the array version lacks an asked output the scalar rung gives.
     """
     assert spec.vectorized is not None
     arr = np.asarray(values, dtype=float)

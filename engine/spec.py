@@ -247,8 +247,9 @@ class ModelSpec:
     rungs: tuple[Rung, ...]
     compute: Compute
     default_fidelity: str = "auto"
-    #: Reference input sets (SI, partial: defaults fill the rest); the first is
-    #: the source's worked case. Benchmarks, stability tests and the form use them.
+    #: Reference input sets (SI, partial: defaults fill the rest); the first is the
+    #: reference case (the source's worked case where the source prints one).
+    #: Benchmarks, stability tests and the form use them.
     examples: tuple[Mapping[str, Any], ...] = ()
     #: Optional array version of ``compute`` for sweeps: called with the varied
     #: input as a numpy array (others scalar); returns arrays (NaN where a point

@@ -115,10 +115,3 @@ def to_si(text: str, target: str) -> float:
     if not math.isfinite(result):
         raise UnitError(f"{text!r} is not a finite quantity")
     return result
-
-
-def convert(value: float, unit: str, target: str) -> float:
-    """Convert a magnitude between two unit expressions (for the form and docs)."""
-    if unit == target:
-        return value
-    return value * _factor(unit, target)
