@@ -6,7 +6,7 @@ physics as documented functions citing their source equations, and a
 """
 
 from .errors import BudgetExceeded, EngineError, InfeasibleDesign, InputOutOfRange, SolverFailed
-from .registry import MODELS, get_model
+from .models import MODELS, get_model
 from .runner import MAX_SWEEP_POINTS, RunResult, SweepResult, run, sweep, sweep_values
 from .spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
 

@@ -10,7 +10,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import engine
-from engine.clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
+from engine.models.clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
 from service import create_app
 
 DEG = math.pi / 180.0

@@ -6,17 +6,19 @@ import numpy as np
 import pytest
 
 from engine import InfeasibleDesign, run, sweep
-from engine.rare_impact import (
+from engine.models.rare_impact import (
     HORIZONTAL_DESIGN,
     RARE_IMPACT,
     REFERENCE_DESIGN,
+    released_at_liftoff,
+)
+from engine.rare_impact import (
     effective_stage1_mass,
     liftoff_speed,
     max_striker_travel,
     min_return_spring_rate,
     quasi_static_release_error,
     release_speed,
-    released_at_liftoff,
     relock_margin,
     spin_up_time,
     spring_height_limit,

@@ -49,7 +49,7 @@ def test_sweep_endpoint_uses_the_vectorized_closed_form(api):
 
 
 def test_engagement_window_placed_on_the_time_axis(api):
-    from engine.rare_impact import REFERENCE_DESIGN
+    from engine.models.rare_impact import REFERENCE_DESIGN
 
     body = api.post(
         "/api/v1/impact/rare", json={**REFERENCE_DESIGN, "fidelity": "simulation"}
@@ -63,7 +63,7 @@ def test_engagement_window_placed_on_the_time_axis(api):
 
 def test_array_sweep_refuses_the_points_the_scalar_model_refuses():
     import engine
-    from engine.rare_impact import RARE_IMPACT, REFERENCE_DESIGN
+    from engine.models.rare_impact import RARE_IMPACT, REFERENCE_DESIGN
 
     values = [1e-4, 10.0, 300.0]  # no-load speeds: the first two are below ω_M ≈ 236 rad/s
     wanted = ["release_speed", "full_engagement"]

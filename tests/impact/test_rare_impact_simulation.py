@@ -11,9 +11,8 @@ from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
 from engine import BudgetExceeded, EngineError, InfeasibleDesign, RunContext, run
+from engine.models.rare_impact import RARE_IMPACT, REFERENCE_DESIGN
 from engine.rare_impact import (
-    RARE_IMPACT,
-    REFERENCE_DESIGN,
     quasi_static_release_error,
     striker_oscillation,
     striker_travel,

@@ -15,10 +15,8 @@ import numpy as np
 import pytest
 
 from engine import InfeasibleDesign, InputOutOfRange, RunContext, run, sweep
+from engine.models.nutrunner import EXAMPLE_INDUCTION_MOTOR, EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
 from engine.nutrunner import (
-    EXAMPLE_INDUCTION_MOTOR,
-    EXAMPLE_LIGHT_TRUCK,
-    NUTRUNNER_DRIVE,
     impact_torque,
     impact_torque_geared,
     kinetic_energy,

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from engine import InfeasibleDesign, InputOutOfRange, SolverFailed, run
+from engine.models.nutrunner import EXAMPLE_INDUCTION_MOTOR, EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
 from engine.motor_spinup import (
     MotorCurve,
     kloss_breakdown_slip,
@@ -20,7 +21,6 @@ from engine.motor_spinup import (
     spin_up_time,
     torque_limited_constant_power_spin_up_time,
 )
-from engine.nutrunner import EXAMPLE_INDUCTION_MOTOR, EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
 
 SPEC = NUTRUNNER_DRIVE
 BASE = EXAMPLE_LIGHT_TRUCK

@@ -10,7 +10,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from engine import EngineError, run
-from engine.nutrunner import EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
+from engine.models.nutrunner import EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
 from service import create_app
 
 SPEC = NUTRUNNER_DRIVE

@@ -418,7 +418,7 @@ def test_control_never_nan_inf_or_500(
 
 @pytest.mark.parametrize("path", [TIGHT, CTRL])
 def test_every_example_runs_clean(api, path):
-    from engine.preload_models import CONTROL, TIGHTENING
+    from engine.models.preload import CONTROL, TIGHTENING
 
     spec = TIGHTENING if path == TIGHT else CONTROL
     for example in spec.examples:

@@ -15,9 +15,8 @@ import math
 import pytest
 
 from engine import run
+from engine.models.nutrunner import EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
 from engine.nutrunner import (
-    EXAMPLE_LIGHT_TRUCK,
-    NUTRUNNER_DRIVE,
     STEEL_SHEAR_MODULUS,
     impact_torque,
     max_spindle_torque,

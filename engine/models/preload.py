@@ -13,11 +13,11 @@ from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from typing import Any
 
-from . import preload as pl
-from . import threads as th
-from .errors import EngineError, InputOutOfRange
-from .preload_methods import METHOD_KEYS, METHODS, ControlMethod, get_method
-from .spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from .. import preload as pl
+from .. import threads as th
+from ..errors import EngineError, InputOutOfRange
+from ..preload_methods import METHOD_KEYS, METHODS, ControlMethod, get_method
+from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
 
 SOURCE = (
     "[004] review of preload selection and tightening control (seeds/004), eq. 2–19, "
