@@ -34,6 +34,7 @@ from ..clutch import (
 )
 from ..errors import InfeasibleDesign, InputOutOfRange
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from ._common import DEG, count, friction_coefficient, length
 
 # --------------------------------------------------------------------------
 # Model specs: clutch.ball (forward) and clutch.ball_setting (inverse)
@@ -45,41 +46,33 @@ TYPICAL_FLANK_FRICTION = 0.1
 #: Scatter assumed for a friction coefficient the user gives.
 FLANK_FRICTION_SCATTER = 0.03
 
-_DEG = math.pi / 180.0
-
-
-def _length(name: str, description: str, lo: float, hi: float, **kw: Any) -> Param:
-    return Param(name, "m", description, minimum=lo, maximum=hi, display_unit="mm", **kw)
-
 
 def _common_params(*, wire_required: bool, deflection_required: bool) -> tuple[Param, ...]:
     return (
-        _length(
+        length(
             "ball_circle_diameter",
             "D0, diameter of the circle of ball centres [001, eq. 1]",
-            1e-3,
-            2.0,
+            minimum=1e-3,
+            maximum=2.0,
             required=True,
             symbol="D0",
             group="balls",
         ),
-        Param(
+        count(
             "ball_count",
-            "1",
             "i, number of balls [001, eq. 1]",
             required=True,
-            kind="int",
             minimum=1,
             maximum=100,
             symbol="i",
             group="balls",
         ),
-        _length(
+        length(
             "ball_diameter",
             "d, ball diameter; the groove depth (= Δ in the source) is checked against "
             "d/2 [001, text after eq. 1]",
-            1e-4,
-            0.2,
+            minimum=1e-4,
+            maximum=0.2,
             required=True,
             symbol="d",
             group="balls",
@@ -111,31 +104,28 @@ def _common_params(*, wire_required: bool, deflection_required: bool) -> tuple[P
             symbol="K_r",
             group="balls",
         ),
-        Param(
+        friction_coefficient(
             "flank_friction",
-            "1",
             "f, Coulomb friction between ball and flank; the axial push becomes "
             "F_t tan(α − atan f); 0 is the paper's frictionless case [001, eq. 3]",
             default=0.0,
-            minimum=0.0,
-            maximum=1.0,
             symbol="f",
             group="balls",
         ),
-        _length(
+        length(
             "spring_wire_diameter",
             "d0, spring wire diameter [001, eq. 2]",
-            1e-5,
-            0.05,
+            minimum=1e-5,
+            maximum=0.05,
             required=wire_required,
             symbol="d0",
             group="spring",
         ),
-        _length(
+        length(
             "spring_mean_diameter",
             "D, mean coil diameter of the spring [001, eq. 2]",
-            1e-4,
-            0.5,
+            minimum=1e-4,
+            maximum=0.5,
             required=True,
             symbol="D",
             group="spring",
@@ -150,11 +140,11 @@ def _common_params(*, wire_required: bool, deflection_required: bool) -> tuple[P
             symbol="i_p",
             group="spring",
         ),
-        _length(
+        length(
             "spring_deflection",
             "Δ, spring compression, taken equal to the groove depth as in [001, eq. 2]",
-            1e-6,
-            0.5,
+            minimum=1e-6,
+            maximum=0.5,
             required=deflection_required,
             symbol="Δ",
             group="spring",
@@ -233,8 +223,8 @@ def _require_workable(x: Mapping[str, Any], wire: float | None) -> None:
     rho = math.atan(f)
     if alpha <= rho:
         raise InfeasibleDesign(
-            f"the clutch never slips: the flank angle α = {alpha / _DEG:.3g}° is not above the "
-            f"friction angle atan f = {rho / _DEG:.3g}°, so the balls wedge in the grooves at "
+            f"the clutch never slips: the flank angle α = {alpha / DEG:.3g}° is not above the "
+            f"friction angle atan f = {rho / DEG:.3g}°, so the balls wedge in the grooves at "
             "any torque; make the flanks flatter (larger α) or reduce the flank friction",
             field="groove_angle",
         )
@@ -311,15 +301,15 @@ def _angle_check(alpha: float) -> Check:
     lo, hi = RECOMMENDED_GROOVE_ANGLE
     ok = lo <= alpha <= hi
     if ok:
-        detail = f"groove angle {alpha / _DEG:.4g}° is within the source's 20…70°"
+        detail = f"groove angle {alpha / DEG:.4g}° is within the source's 20…70°"
     elif alpha < lo:
         detail = (
-            f"groove angle {alpha / _DEG:.4g}° < 20°: steep flanks make the limit very "
+            f"groove angle {alpha / DEG:.4g}° < 20°: steep flanks make the limit very "
             "sensitive to friction and wear (the clutch may lock); use 20…70° [001]"
         )
     else:
         detail = (
-            f"groove angle {alpha / _DEG:.4g}° > 70°: shallow flanks need a very strong "
+            f"groove angle {alpha / DEG:.4g}° > 70°: shallow flanks need a very strong "
             "spring and the balls ride out under small shocks; use 20…70° [001]"
         )
     return Check("groove_angle", ok, detail)

@@ -39,6 +39,7 @@ from ..nutrunner import (
     twist_angle,
 )
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from ._common import RPM, count
 
 # ---------------------------------------------------------------------------
 # The model spec
@@ -46,7 +47,6 @@ from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
 
 _DIAMETER: dict[str, Any] = {"minimum": 1e-4, "maximum": 2.0, "display_unit": "mm"}
 _MASS: dict[str, Any] = {"minimum": 0.0, "maximum": 1e3, "display_unit": "kg"}
-_RPM = math.pi / 30.0
 
 
 def _part(name: str, label: str, group: str, eq: str, mass: bool, **kw: Any) -> Param:
@@ -123,12 +123,10 @@ _INPUTS: tuple[Param, ...] = (
     _part("drive_gear_diameter", "the drive gear 4", "drive", "eq. 3–5", False, symbol="D4"),
     _part("spindle_gear_mass", "one spindle gear 5", "drive", "eq. 3–4", True, symbol="m5"),
     _part("spindle_gear_diameter", "one spindle gear 5", "drive", "eq. 3–5", False, symbol="D5"),
-    Param(
+    count(
         "spindle_count",
-        "1",
         "Number of spindles z (one per wheel nut) [000, eq. 4, 10]",
         required=True,
-        kind="int",
         minimum=1,
         maximum=32,
         recommended=(4, 12),
@@ -798,7 +796,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 EXAMPLE_LIGHT_TRUCK: dict[str, Any] = {
     "motor_power": 1100.0,
-    "motor_speed": 1400.0 * _RPM,
+    "motor_speed": 1400.0 * RPM,
     "coupling_mass": 1.2,
     "coupling_diameter": 0.09,
     "motor_pulley_mass": 0.8,
@@ -822,8 +820,8 @@ EXAMPLE_LIGHT_TRUCK: dict[str, Any] = {
 EXAMPLE_INDUCTION_MOTOR: dict[str, Any] = {
     **EXAMPLE_LIGHT_TRUCK,
     "motor_curve": "induction",
-    "synchronous_speed": 1500.0 * _RPM,
-    "breakdown_torque": 2.2 * 1100.0 / (1400.0 * _RPM),
+    "synchronous_speed": 1500.0 * RPM,
+    "breakdown_torque": 2.2 * 1100.0 / (1400.0 * RPM),
     "rotor_inertia": 0.0035,
     "belt_efficiency": 0.95,
     "gear_efficiency": 0.97,

@@ -18,6 +18,7 @@ from .. import threads as th
 from ..errors import EngineError, InputOutOfRange
 from ..preload_methods import METHOD_KEYS, METHODS, ControlMethod, get_method
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from ._common import count, friction_coefficient
 
 SOURCE = (
     "[004] review of preload selection and tightening control (seeds/004), eq. 2–19, "
@@ -75,24 +76,18 @@ BOLT_INPUTS: tuple[Param, ...] = (
         minimum=0.0,
         exclusive_minimum=True,
     ),
-    Param(
+    friction_coefficient(
         "thread_friction",
-        "1",
         "Thread friction coefficient μ_G (f_p in [004])",
         default=0.12,
-        minimum=0.0,
-        maximum=1.0,
         recommended=(0.04, 0.4),
         symbol="μ_G",
         group="friction",
     ),
-    Param(
+    friction_coefficient(
         "bearing_friction",
-        "1",
         "Bearing-face friction coefficient μ_K (f_T in [004])",
         default=0.12,
-        minimum=0.0,
-        maximum=1.0,
         recommended=(0.04, 0.4),
         symbol="μ_K",
         group="friction",
@@ -655,37 +650,25 @@ CONTROL_INPUTS: tuple[Param, ...] = (
         minimum=0.0,
         exclusive_minimum=True,
     ),
-    Param(
+    friction_coefficient(
         "thread_friction_min",
-        "1",
         "Friction scatter: lowest μ_G (with thread_friction_max, gives the preload "
         "histogram at a fixed torque)",
-        minimum=0.0,
-        maximum=1.0,
         group="scatter",
     ),
-    Param(
+    friction_coefficient(
         "thread_friction_max",
-        "1",
         "Friction scatter: highest μ_G",
-        minimum=0.0,
-        maximum=1.0,
         group="scatter",
     ),
-    Param(
+    friction_coefficient(
         "bearing_friction_min",
-        "1",
         "Friction scatter: lowest μ_K (bearing_friction when absent)",
-        minimum=0.0,
-        maximum=1.0,
         group="scatter",
     ),
-    Param(
+    friction_coefficient(
         "bearing_friction_max",
-        "1",
         "Friction scatter: highest μ_K",
-        minimum=0.0,
-        maximum=1.0,
         group="scatter",
     ),
     Param(
@@ -697,22 +680,18 @@ CONTROL_INPUTS: tuple[Param, ...] = (
         minimum=0.0,
         exclusive_minimum=True,
     ),
-    Param(
+    count(
         "histogram_bins",
-        "1",
         "Number of preload bins",
         default=10,
-        kind="int",
         minimum=2,
         maximum=100,
         group="scatter",
     ),
-    Param(
+    count(
         "sample_size",
-        "1",
         "Bolts the histogram counts are scaled to (38 in [004, fig. 5])",
         default=38,
-        kind="int",
         minimum=1,
         maximum=1_000_000,
         group="scatter",

@@ -33,6 +33,7 @@ from ..rare_impact import (
 )
 from ..rare_impact_sim import simulate
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from ._common import count, friction_coefficient, in_mm, in_ms, in_n_per_mm, in_rpm, positive
 
 # ---------------------------------------------------------------------------
 # The model: inputs, outputs, rungs
@@ -139,22 +140,6 @@ def _simulation_estimate(x: Mapping[str, Any]) -> float:
     return _SIMULATION_ERROR
 
 
-def _mm(v: float) -> str:
-    return f"{v * 1e3:.3g} mm"
-
-
-def _nmm(v: float) -> str:
-    return f"{v * 1e-3:.4g} N/mm"
-
-
-def _ms(v: float) -> str:
-    return f"{v * 1e3:.3g} ms"
-
-
-def _rpm(v: float) -> str:
-    return f"{v * 30.0 / math.pi:.0f} rpm"
-
-
 def design_checks(x: Mapping[str, Any], omega_m: float) -> list[Check]:
     """The paper's conditions for this design, each with a sentence a designer can act on.
 
@@ -180,8 +165,8 @@ def design_checks(x: Mapping[str, Any], omega_m: float) -> list[Check]:
             Check(
                 "c3 > c1",
                 True,
-                f"the return spring ({_nmm(c3)}) is stiffer than the power spring "
-                f"({_nmm(c1)}), as [002, eq. 6] asks",
+                f"the return spring ({in_n_per_mm(c3)}) is stiffer than the power spring "
+                f"({in_n_per_mm(c1)}), as [002, eq. 6] asks",
             )
         )
     else:
@@ -189,9 +174,10 @@ def design_checks(x: Mapping[str, Any], omega_m: float) -> list[Check]:
             Check(
                 "c3 > c1",
                 False,
-                f"the return spring ({_nmm(c3)}) is not stiffer than the power spring "
-                f"({_nmm(c1)}); the paper asks c3 > c1 [002, eq. 6] (for a vertical tool with "
-                "balanced preloads): raise the return-spring rate or soften the power spring",
+                f"the return spring ({in_n_per_mm(c3)}) is not stiffer than the power "
+                f"spring ({in_n_per_mm(c1)}); the paper asks c3 > c1 [002, eq. 6] (for a vertical "
+                "tool with balanced preloads): raise the return-spring rate or soften the power "
+                "spring",
             )
         )
     balanced = math.isclose(c1 * lam1, c3 * lam3, rel_tol=1e-3)
@@ -204,11 +190,11 @@ def design_checks(x: Mapping[str, Any], omega_m: float) -> list[Check]:
             "λ1 < λ3",
             lam1 < lam3,
             (
-                f"the power-spring preload ({_mm(lam1)}) is below the return-spring preload "
-                f"({_mm(lam3)}), as the paper asks [002, after eq. 6]"
+                f"the power-spring preload ({in_mm(lam1)}) is below the return-spring preload "
+                f"({in_mm(lam3)}), as the paper asks [002, after eq. 6]"
                 if lam1 < lam3
-                else f"the power-spring preload ({_mm(lam1)}) is not below the return-spring "
-                f"preload ({_mm(lam3)}); the paper asks λ1 < λ3 [002, after eq. 6]: lower λ1 "
+                else f"the power-spring preload ({in_mm(lam1)}) is not below the return-spring "
+                f"preload ({in_mm(lam3)}); the paper asks λ1 < λ3 [002, after eq. 6]: lower λ1 "
                 "or raise λ3" + (contradiction if balanced else "")
             ),
         )
@@ -216,18 +202,18 @@ def design_checks(x: Mapping[str, Any], omega_m: float) -> list[Check]:
     limit_text = (
         "eq. 6 sets no limit (c3 ≤ c1)"
         if not math.isfinite(limit)
-        else f"eq. 6's balanced-preload limit 2M2g/(c3 − c1) is {_mm(limit)}"
+        else f"eq. 6's balanced-preload limit 2M2g/(c3 − c1) is {in_mm(limit)}"
     )
     checks.append(
         Check(
             "eq. 6 (engagement height)",
             reach >= h2,
             (
-                f"the springs carry the striker up to 2B/k² = {_mm(reach)} ≥ the engagement "
-                f"height {_mm(h2)} [002, eq. 5-6]; {limit_text}"
+                f"the springs carry the striker up to 2B/k² = {in_mm(reach)} ≥ the engagement "
+                f"height {in_mm(h2)} [002, eq. 5-6]; {limit_text}"
                 if reach >= h2
-                else f"the springs carry the striker only 2B/k² = {_mm(reach)}, less than the "
-                f"engagement height {_mm(h2)} [002, eq. 5-6]: it can never engage fully. Raise "
+                else f"the springs carry the striker only 2B/k² = {in_mm(reach)}, less than the "
+                f"engagement height {in_mm(h2)} [002, eq. 5-6]: it can never engage fully. Raise "
                 f"the power spring's force at release c1(λ1 + h1), lower the return-spring "
                 f"preload c3·λ3 or the engagement height; {limit_text}"
             ),
@@ -239,15 +225,16 @@ def design_checks(x: Mapping[str, Any], omega_m: float) -> list[Check]:
             "return",
             c3 >= c3_min,
             (
-                f"the return spring ({_nmm(c3)}) brings the striker back out of the jaws "
-                f"(needs ≥ {_nmm(c3_min)}) [002, eq. 3]"
+                f"the return spring ({in_n_per_mm(c3)}) brings the striker back out of the jaws "
+                f"(needs ≥ {in_n_per_mm(c3_min)}) [002, eq. 3]"
                 if c3 >= c3_min
                 else (
-                    f"the return spring ({_nmm(c3)}) cannot bring the striker back the jaw "
-                    f"height {_mm(h3)} (needs ≥ {_nmm(c3_min)}) [002, eq. 3]: raise c3 or λ3"
+                    f"the return spring ({in_n_per_mm(c3)}) cannot bring the striker back the "
+                    f"jaw height {in_mm(h3)} (needs ≥ {in_n_per_mm(c3_min)}) [002, eq. 3]: "
+                    "raise c3 or λ3"
                     if math.isfinite(c3_min)
                     else f"no return-spring rate brings the striker back the jaw height "
-                    f"{_mm(h3)} from a preload λ3 = {_mm(lam3)} [002, eq. 3]: raise λ3 or h2"
+                    f"{in_mm(h3)} from a preload λ3 = {in_mm(lam3)} [002, eq. 3]: raise λ3 or h2"
                 )
             ),
         )
@@ -275,8 +262,8 @@ def design_checks(x: Mapping[str, Any], omega_m: float) -> list[Check]:
             Check(
                 "full engagement",
                 True,
-                f"the striker travels the engagement height {_mm(h2)} in {_ms(t_eng)}, inside "
-                f"the {_ms(window)} the flywheel takes to turn through the anvil's opening "
+                f"the striker travels the engagement height {in_mm(h2)} in {in_ms(t_eng)}, inside "
+                f"the {in_ms(window)} the flywheel takes to turn through the anvil's opening "
                 f"[002, after eq. 5]",
             )
         )
@@ -285,10 +272,10 @@ def design_checks(x: Mapping[str, Any], omega_m: float) -> list[Check]:
             Check(
                 "full engagement",
                 False,
-                f"edge blow: the striker needs {_ms(t_eng)} to travel {_mm(h2)} but the anvil's "
-                f"opening passes in {_ms(window)} at {_rpm(omega_m)} [002, after eq. 5]; make "
-                "the power spring stiffer or the moving parts lighter, widen the opening, or "
-                "lower the release speed",
+                f"edge blow: the striker needs {in_ms(t_eng)} to travel {in_mm(h2)} but the "
+                f"anvil's opening passes in {in_ms(window)} at {in_rpm(omega_m)} [002, after "
+                "eq. 5]; make the power spring stiffer or the moving parts lighter, widen the "
+                "opening, or lower the release speed",
             )
         )
     else:
@@ -296,8 +283,8 @@ def design_checks(x: Mapping[str, Any], omega_m: float) -> list[Check]:
             Check(
                 "full engagement",
                 False,
-                f"edge blow: the striker never reaches the engagement height {_mm(h2)} (it "
-                f"travels at most {_mm(reach)}) [002, eq. 5]; see the eq. 6 check",
+                f"edge blow: the striker never reaches the engagement height {in_mm(h2)} (it "
+                f"travels at most {in_mm(reach)}) [002, eq. 5]; see the eq. 6 check",
             )
         )
     return checks
@@ -548,21 +535,6 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     return Result(values=values_out, rung=ctx.rung, error_estimate=None)
 
 
-def _positive(name: str, unit: str, description: str, default: float, maximum: float,
-              display: str, **kw: Any) -> Param:  # fmt: skip
-    return Param(
-        name,
-        unit,
-        description,
-        default=default,
-        minimum=0.0,
-        exclusive_minimum=True,
-        maximum=maximum,
-        display_unit=display,
-        **kw,
-    )
-
-
 def _preload(name: str, description: str, default: float, symbol: str) -> Param:
     return Param(
         name,
@@ -578,24 +550,24 @@ def _preload(name: str, description: str, default: float, symbol: str) -> Param:
 
 
 _INPUTS: tuple[Param, ...] = (
-    _positive(
+    positive(
         "flywheel_inertia",
         "kg*m^2",
         "I_M: moment of inertia of the flywheel with half-coupling, shaft and striker [002, eq. 1]",
-        0.02,
-        100.0,
-        "kg*m^2",
+        default=0.02,
+        maximum=100.0,
+        display_unit="kg*m^2",
         symbol="I_M",
         group="drive",
     ),
-    _positive(
+    positive(
         "motor_torque",
         "N*m",
         "M: motor torque on the flywheel (the stall torque when a no-load speed is given) "
         "[002, eq. 1]",
-        5.0,
-        1e5,
-        "N*m",
+        default=5.0,
+        maximum=1e5,
+        display_unit="N*m",
         symbol="M",
         group="drive",
     ),
@@ -611,34 +583,32 @@ _INPUTS: tuple[Param, ...] = (
         symbol="ω_nl",
         group="drive",
     ),
-    _positive(
+    positive(
         "roller_mass",
         "kg",
         "m_p: mass of one centrifugal roller [002, eq. 1]",
-        0.05,
-        100.0,
-        "g",
+        default=0.05,
+        maximum=100.0,
+        display_unit="g",
         symbol="m_p",
         group="rollers",
     ),
-    Param(
+    count(
         "roller_count",
-        "1",
         "n: number of centrifugal rollers [002, eq. 1]",
         default=6,
-        kind="int",
         minimum=1,
         maximum=64,
         symbol="n",
         group="rollers",
     ),
-    _positive(
+    positive(
         "roller_radius",
         "m",
         "x_0: radius of the rollers' centres at rest [002, eq. 1]",
-        0.04,
-        2.0,
-        "mm",
+        default=0.04,
+        maximum=2.0,
+        display_unit="mm",
         symbol="x_0",
         group="rollers",
     ),
@@ -657,63 +627,63 @@ _INPUTS: tuple[Param, ...] = (
         symbol="α",
         group="rollers",
     ),
-    _positive(
+    positive(
         "half_coupling_mass",
         "kg",
         "m_1: mass of the half-coupling [002, eq. 1]",
-        0.15,
-        1e3,
-        "kg",
+        default=0.15,
+        maximum=1e3,
+        display_unit="kg",
         symbol="m_1",
         group="masses",
     ),
-    _positive(
+    positive(
         "stepped_shaft_mass",
         "kg",
         "m_2: mass of the stepped central shaft [002, eq. 1]",
-        0.05,
-        1e3,
-        "kg",
+        default=0.05,
+        maximum=1e3,
+        display_unit="kg",
         symbol="m_2",
         group="masses",
     ),
-    _positive(
+    positive(
         "striker_mass",
         "kg",
         "m_3: mass of the striker [002, eq. 2]",
-        0.4,
-        1e3,
-        "kg",
+        default=0.4,
+        maximum=1e3,
+        display_unit="kg",
         symbol="m_3",
         group="masses",
     ),
-    _positive(
+    positive(
         "power_spring_rate",
         "N/m",
         "c_1: rate of the power spring [002, eq. 1]",
-        50000.0,
-        1e9,
-        "N/mm",
+        default=50000.0,
+        maximum=1e9,
+        display_unit="N/mm",
         symbol="c_1",
         group="springs",
     ),
-    _positive(
+    positive(
         "auxiliary_spring_rate",
         "N/m",
         "c_2: rate of the auxiliary spring [002, eq. 1]",
-        2000.0,
-        1e9,
-        "N/mm",
+        default=2000.0,
+        maximum=1e9,
+        display_unit="N/mm",
         symbol="c_2",
         group="springs",
     ),
-    _positive(
+    positive(
         "return_spring_rate",
         "N/m",
         "c_3: rate of the return spring [002, eq. 2]",
-        52000.0,
-        1e9,
-        "N/mm",
+        default=52000.0,
+        maximum=1e9,
+        display_unit="N/mm",
         symbol="c_3",
         group="springs",
     ),
@@ -735,34 +705,34 @@ _INPUTS: tuple[Param, ...] = (
         0.0021,
         "λ_3",
     ),
-    _positive(
+    positive(
         "release_travel",
         "m",
         "h_1: axial travel of half-coupling and shaft at which the striker is released "
         "[002, eq. 1]",
-        0.005,
-        0.5,
-        "mm",
+        default=0.005,
+        maximum=0.5,
+        display_unit="mm",
         symbol="h_1",
         group="geometry",
     ),
-    _positive(
+    positive(
         "engagement_height",
         "m",
         "h_2: travel of the striker into full engagement with the anvil [002, eq. 2]",
-        0.004,
-        0.5,
-        "mm",
+        default=0.004,
+        maximum=0.5,
+        display_unit="mm",
         symbol="h_2",
         group="geometry",
     ),
-    _positive(
+    positive(
         "jaw_height",
         "m",
         "h_3: height of the anvil's jaws, the striker's return travel [002, eq. 3]",
-        0.0035,
-        0.5,
-        "mm",
+        default=0.0035,
+        maximum=0.5,
+        display_unit="mm",
         symbol="h_3",
         group="geometry",
     ),
@@ -779,13 +749,10 @@ _INPUTS: tuple[Param, ...] = (
         symbol="φ_eng",
         group="geometry",
     ),
-    Param(
+    friction_coefficient(
         "roller_friction",
-        "1",
         "f: friction coefficient of the rollers on the cones [002, eq. 4]",
         default=0.1,
-        minimum=0.0,
-        maximum=1.0,
         symbol="f",
         group="springs",
     ),
