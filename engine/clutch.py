@@ -8,7 +8,7 @@ balls climb out of the grooves, lift the disk and roll on the end face: the
 clutch slips and clicks.
 
 The source is Malashchenko, Semenyuk, Lysiak, "Parameters of double action
-ball overturn coupling" (seed 001, a scan whose Cyrillic came out as Latin
+ball overturn coupling" ([001], a scan whose Cyrillic came out as Latin
 look-alikes). Its equations, as read:
 
 * [001, eq. 1] forces on one ball, K_r = 0.85…0.9 the load non-uniformity

@@ -1,7 +1,7 @@
 r"""Drive of a multi-spindle impact nut-runner: spin-up time and impact torque.
 
 Source [000]: the parameters of a multi-spindle wheel-nut runner's drive
-(seeds/000, MODELS.md §1). A motor 6 (power :math:`P`, shaft speed
+(see docs/sources.md and :mod:`engine.sources`). A motor 6 (power :math:`P`, shaft speed
 :math:`\omega`) turns a safety jaw coupling 1 and a motor pulley 2; a V-belt
 drives the flywheel 3 (the driven pulley) on shaft 7, which carries the drive
 gear 4; the drive gear meshes with :math:`z` spindle gears 5, each coupled to
@@ -24,7 +24,8 @@ and the :data:`NUTRUNNER_DRIVE` spec that the service serves at
 ``/nutrunner/drive``.
 
 Where the source is unclear (its eq. 3–5 and 7–8 are illegible or garbled in
-the only copy), the reconstruction follows MODELS.md §1 and is said so in the
+the only copy), the reconstruction is described under [000] in docs/sources.md
+and is said so in the
 docstrings and in each result's notes.
 """
 
@@ -203,8 +204,8 @@ def part_energies(
     Notes
     -----
     The terms of [000, eq. 3–4]; the printed equations are illegible, so the
-    form follows MODELS.md §1 (the theorem the paper names and its kinematic
-    chain).
+    form follows from the theorem the paper names and its kinematic chain
+    (reconstruction described under [000] in docs/sources.md).
 
     Examples
     --------
@@ -343,8 +344,9 @@ def acceleration_time(kinetic_energy: Any, motor_power: Any) -> Any:
     -----
     From the work–energy theorem :math:`T_1 - T_0 = A = P t`, :math:`T_0 = 0`
     [000, eq. 1–2]. The printed eq. 5 is garbled; this form follows from the
-    theorem and the chain (MODELS.md §1). Constant power from standstill is an
-    idealisation (it needs infinite torque at :math:`\omega = 0`); see
+    theorem and the chain (reconstruction: [000] in docs/sources.md).
+    Constant power from standstill is an idealisation (it needs infinite
+    torque at :math:`\omega = 0`); see
     :func:`engine.motor_spinup.spin_up_time` for a real motor.
 
     Examples
@@ -415,9 +417,10 @@ def impact_torque(kinetic_energy: Any, shaft_stiffness: Any, spindle_stiffness: 
     Notes
     -----
     Energy conservation :math:`T = M\varphi_7/2 + M\varphi_8/2`
-    [000, eq. 7–8; the printed form is illegible, reconstructed in MODELS.md
-    §1]. The same torque acts on shaft and spindle, as in the source, which
-    ignores the gear ratio between them (see :func:`impact_torque_geared`).
+    [000, eq. 7–8; the printed form is illegible, reconstructed as described
+    under [000] in docs/sources.md]. The same torque acts on shaft and
+    spindle, as in the source, which ignores the gear ratio between them
+    (see :func:`impact_torque_geared`).
     Socket, nut and joint compliance and all losses are ignored, so this is an
     upper bound valid while both parts stay elastic.
 
@@ -459,7 +462,7 @@ def impact_torque_geared(
     Notes
     -----
     The energy balance of [000, eq. 7–8] with the torque on shaft 7 equal to
-    :math:`u M` (gear 4 drives gear 5; MODELS.md §1 notes). Equals
+    :math:`u M` (gear 4 drives gear 5, which the source ignores). Equals
     :func:`impact_torque` when :math:`u = 1`.
 
     Examples

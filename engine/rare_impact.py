@@ -11,7 +11,7 @@ edge to edge (an *edge blow*, the failure this analysis prevents). After the
 blow the return spring brings the striker back (stage 3) and the auxiliary
 spring re-locks the shaft (stage 4). Source: [002] (Vodolazskaya and
 Iskritsky, "Dynamics of the percussive mechanism of a rare-impact nut wrench
-with an axially moving striker"; [003] is a scan of it), catalogue MODELS.md §3.
+with an axially moving striker"; [003] is a scan of it); see docs/sources.md.
 
 Every function here is a closed form on SI floats (most also accept numpy
 arrays, for sweeps). The full time simulation is in

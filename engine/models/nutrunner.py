@@ -687,7 +687,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     values = _closed_values(x, d, geared)
     notes = [
         "eq. 3–5 and 7–8 of the source are illegible; T and t = T/P are reconstructed from "
-        "the work–energy theorem and the kinematic chain it names (MODELS.md §1)",
+        "the work–energy theorem and the kinematic chain it names (see [000] in docs/sources.md)",
         "the impact torque ignores socket, nut and joint compliance and all losses, as the "
         "source does: an upper bound while shaft and spindle stay elastic",
     ]
@@ -841,7 +841,8 @@ NUTRUNNER_DRIVE = ModelSpec(
     ),
     source=(
         "[000] Parameters of the drive of a multi-spindle nut-runner (Ukrainian journal "
-        "article, seeds/000), eq. 1–10; MODELS.md §1"
+        "article), eq. 1–10; reconstructions in docs/sources.md; motor curves by the "
+        "Kloss formula"
     ),
     inputs=_INPUTS,
     outputs=_OUTPUTS,
@@ -856,7 +857,7 @@ NUTRUNNER_DRIVE = ModelSpec(
         ),
         Rung(
             "gear_ratio",
-            "As closed_form, but shaft 7 carries u·M with u = D4/D5 (MODELS.md §1 notes)",
+            "As closed_form, but shaft 7 carries u·M with u = D4/D5 (the source ignores u)",
             _estimate_gear_ratio,
             typical_error="the constant-power idealisation of the spin-up time",
             typical_time="~50 µs",

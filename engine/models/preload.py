@@ -21,8 +21,9 @@ from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
 from ._common import count, friction_coefficient
 
 SOURCE = (
-    "[004] review of preload selection and tightening control (seeds/004), eq. 2–19, "
-    "fig. 1–9; VDI 2230-1:2015 steps R7 and R13, Table A8; ISO 68-1, 261, 273, 898-1, 4017"
+    "[004] review of preload selection and tightening control, eq. 2–19, "
+    "fig. 1–9; VDI 2230-1:2015 steps R7 and R13, Table A8;"
+    " ISO 68-1, ISO 261, ISO 273, ISO 898-1, ISO 4017"
 )
 
 #: Angle-reading error of [004] (10…15°), taken at its upper end.

@@ -1,4 +1,4 @@
-"""The nut-runner drive model (seed 000): hand-computed cases, rung agreement, invariants.
+"""The nut-runner drive model [000]: hand-computed cases, rung agreement, invariants.
 
 The reference design is ``EXAMPLE_LIGHT_TRUCK`` (illustrative: the source gives
 no worked numbers): P = 1.1 kW, ω = 1400 rpm, coupling 1.2 kg / 90 mm, pulley
@@ -145,7 +145,10 @@ def test_time_scales_with_speed_squared_and_torque_with_sqrt_energy(k):
 
 
 def test_eq5_reduces_when_all_ratios_are_one():
-    """MODELS.md §1: with D2 = D3 and D4 = D5, t = ω²/(16P)·Σ m_k D_k² (z·m5)."""
+    """[000, eq. 3–5] as reconstructed (docs/sources.md).
+
+    With D2 = D3 and D4 = D5, t = ω²/(16P)·Σ m_k D_k² (z·m5).
+    """
     x = {**BASE, "flywheel_diameter": 0.08, "spindle_gear_diameter": 0.1}
     v = run(SPEC, x).results
     ms = 1.2 * 0.09**2 + 0.8 * 0.08**2 + 12 * 0.08**2 + 2.5 * 0.1**2 + 6 * 0.5 * 0.1**2
