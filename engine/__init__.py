@@ -8,7 +8,14 @@ what every citation such as ``[001, eq. 2]`` refers to.
 """
 
 from . import sources
-from .errors import BudgetExceeded, EngineError, InfeasibleDesign, InputOutOfRange, SolverFailed
+from .errors import (
+    BudgetExceeded,
+    Cancelled,
+    EngineError,
+    InfeasibleDesign,
+    InputOutOfRange,
+    SolverFailed,
+)
 from .models import MODELS, get_model
 from .runner import MAX_SWEEP_POINTS, RunResult, SweepResult, run, sweep, sweep_values
 from .spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
@@ -17,6 +24,7 @@ __all__ = [
     "MAX_SWEEP_POINTS",
     "MODELS",
     "BudgetExceeded",
+    "Cancelled",
     "Check",
     "EngineError",
     "InfeasibleDesign",

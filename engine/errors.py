@@ -52,3 +52,9 @@ class BudgetExceeded(EngineError):
     """A computation stopped at its wall-clock or step budget."""
 
     kind = "budget_exceeded"
+
+
+class Cancelled(EngineError):
+    """The caller withdrew the request (its client disconnected): stopped at a budget check."""
+
+    kind = "cancelled"

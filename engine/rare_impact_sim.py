@@ -65,6 +65,7 @@ use it to validate the fast integrator.
 from __future__ import annotations
 
 import math
+import threading
 import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
@@ -72,7 +73,7 @@ from typing import Any, Protocol
 
 import numpy as np
 
-from .errors import BudgetExceeded, SolverFailed
+from .errors import BudgetExceeded, Cancelled, SolverFailed
 from .rare_impact import (
     effective_stage1_mass,
     liftoff_speed,
@@ -100,6 +101,9 @@ class Budget(Protocol):
 
     @property
     def max_steps(self) -> int: ...
+
+    @property
+    def cancel(self) -> threading.Event | None: ...
 
     def wants(self, *names: str) -> bool: ...
 
@@ -382,6 +386,7 @@ def stage1_fast(
     deadline: float | None = None,
     max_steps: int = 1_000_000,
     steps_per_period: int | None = None,
+    cancel: threading.Event | None = None,
 ) -> Stage1Result:
     """Integrate stage 1 with the compiled fixed-step RK4 (see the module notes).
 
@@ -420,6 +425,8 @@ def stage1_fast(
     t, z, v = p.t_liftoff, 0.0, 0.0
     steps = 0
     while True:
+        if cancel is not None and cancel.is_set():
+            raise Cancelled(f"the stage-1 simulation was cancelled after {steps} steps")
         if deadline is not None and time.perf_counter() > deadline:
             raise BudgetExceeded(
                 f"the stage-1 simulation stopped at its time budget after {steps} steps "
@@ -542,7 +549,13 @@ def simulate(x: Mapping[str, Any], ctx: Budget) -> SimulationResult:
     """All four stages: stage 1 integrated, stages 2-4 exact; series if asked."""
     problem = stage1_problem(x)
     want_series = ctx.wants("time", "flywheel_speed", "z1", "z2", "z3", "z4")
-    s1 = stage1_fast(problem, record=want_series, deadline=ctx.deadline, max_steps=ctx.max_steps)
+    s1 = stage1_fast(
+        problem,
+        record=want_series,
+        deadline=ctx.deadline,
+        max_steps=ctx.max_steps,
+        cancel=ctx.cancel,
+    )
     notes = [
         f"simulation: stage 1 by compiled RK4, {STEPS_PER_PERIOD} steps per oscillation "
         f"period ({s1.steps} steps), first crossing of h1 located on the Hermite "

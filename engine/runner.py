@@ -9,6 +9,7 @@ the curves the papers plot.
 from __future__ import annotations
 
 import math
+import threading
 import time
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -16,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import BudgetExceeded, EngineError, InputOutOfRange
+from .errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange
 from .spec import Check, ModelSpec, Param, RunContext, Value
 
 DEFAULT_TOLERANCE = 0.01
@@ -140,13 +141,16 @@ def run(
     outputs: Iterable[str] | None = None,
     budget_s: float | None = DEFAULT_BUDGET_S,
     max_steps: int = DEFAULT_MAX_STEPS,
+    cancel: threading.Event | None = None,
 ) -> RunResult:
     """Evaluate ``spec`` on SI ``inputs``.
 
     ``outputs`` limits the work to the named outputs and series (all when
     None). Non-finite values never leave: they become None with a note.
     ``budget_s`` and ``max_steps`` reach the model as ``ctx.deadline`` and
-    ``ctx.max_steps``; a model past either raises BudgetExceeded.
+    ``ctx.max_steps``; a model past either raises BudgetExceeded. ``cancel``
+    reaches it as ``ctx.cancel``: once set, the model stops at its next budget
+    check with :class:`Cancelled`.
     """
     values, warnings = spec.validate(inputs)
     tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
@@ -171,6 +175,7 @@ def run(
         tolerance=tol,
         deadline=None if budget_s is None else start + budget_s,
         max_steps=max_steps,
+        cancel=cancel,
     )
     result = spec.compute(values, ctx)
     elapsed = time.perf_counter() - start
@@ -244,6 +249,7 @@ def sweep(
     tolerance: float | None = None,
     budget_s: float | None = DEFAULT_BUDGET_S,
     max_steps: int = DEFAULT_MAX_STEPS,
+    cancel: threading.Event | None = None,
 ) -> SweepResult:
     """Evaluate ``spec`` with ``vary`` set to each of ``values``, the rest from ``base``.
 
@@ -275,6 +281,8 @@ def sweep(
     errors: list[float | None] = []
     first_refusal: EngineError | None = None
     for i, value in enumerate(checked):
+        if cancel is not None and cancel.is_set():
+            raise Cancelled(f"sweep cancelled after {i} of {len(checked)} points")
         remaining = None if deadline is None else deadline - time.perf_counter()
         if remaining is not None and remaining <= 0:
             raise BudgetExceeded(
@@ -290,7 +298,10 @@ def sweep(
                 outputs=wanted,
                 budget_s=remaining,
                 max_steps=max_steps,
+                cancel=cancel,
             )
+        except Cancelled:
+            raise  # the whole sweep was withdrawn, not this point refused
         except EngineError as exc:
             # a point the model refuses (infeasible, or a cross-field range that this
             # value breaks) is null; if every point is refused, the first refusal stands

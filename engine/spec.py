@@ -14,11 +14,13 @@ parse: ``m``, ``kg``, ``s``, ``N``, ``N*m``, ``Pa``, ``rad``, ``rad/s``,
 from __future__ import annotations
 
 import math
+import threading
+import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
-from .errors import InputOutOfRange
+from .errors import BudgetExceeded, Cancelled, InputOutOfRange
 from .sources import SOURCES, cited_ids
 
 ParamKind = Literal["float", "int", "choice", "bool"]
@@ -178,6 +180,9 @@ class Rung:
     estimate: Callable[[Mapping[str, Any]], float | None]
     typical_error: str = ""
     typical_time: str = ""
+    #: Milliseconds or more per call (a simulation, an iteration): the service runs it in
+    #: its heavy lane, so cheap rungs never queue behind it.
+    heavy: bool = False
 
     def describe(self) -> dict[str, Any]:
         return {
@@ -224,6 +229,16 @@ class RunContext:
     tolerance: float
     deadline: float | None = None
     max_steps: int = 1_000_000
+    #: Set by the caller to withdraw the request; long computations test it where they
+    #: test ``deadline`` (:meth:`check_budget`) and raise :class:`Cancelled`.
+    cancel: threading.Event | None = None
+
+    def check_budget(self, what: str = "the computation") -> None:
+        """Raise Cancelled if the caller withdrew, BudgetExceeded past the deadline."""
+        if self.cancel is not None and self.cancel.is_set():
+            raise Cancelled(f"{what} was cancelled: the client disconnected")
+        if self.deadline is not None and time.perf_counter() > self.deadline:
+            raise BudgetExceeded(f"{what} stopped at its wall-clock budget")
 
     def wants(self, *names: str) -> bool:
         """True if any of ``names`` was asked for."""

@@ -6,22 +6,24 @@ Routes are a few lines each: turn the validated body into SI inputs, call
 Engine errors become HTTP statuses in :mod:`service.errors`.
 """
 
+import asyncio
 import math
+import threading
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from fastapi import APIRouter, HTTPException
-from fastapi.responses import JSONResponse
+from fastapi import APIRouter, HTTPException, Request
 from pydantic import BaseModel
 
 import engine
+import engine.runner
 from engine import ModelSpec
 from engine.runner import DEFAULT_BUDGET_S, DEFAULT_MAX_STEPS
 
 from . import schemas
 from .units import UnitError, to_si
-from .workers import EnginePool
+from .workers import EnginePool, Lane, Ticket, watch_disconnect
 
 API_PREFIX = "/api/v1"
 _COMMON = ("fidelity", "tolerance", "outputs")
@@ -34,7 +36,11 @@ _ERRORS: dict[int | str, dict[str, Any]] = {
         "description": "invalid input, infeasible design, or a bound exceeded "
         "(wall-clock or step budget, series length)",
     },
-    503: {"model": schemas.ErrorResponse, "description": "every engine worker is busy; retry"},
+    503: {
+        "model": schemas.ErrorResponse,
+        "description": "no engine slot came free within the admission wait; retry after "
+        "the Retry-After header's seconds",
+    },
 }
 
 
@@ -110,20 +116,70 @@ def _sweep_points(spec: ModelSpec, body: Any) -> list[float]:
     return values
 
 
+def _fidelity_of(spec: ModelSpec, body: Any) -> str:
+    if body.fidelity is not None:
+        return str(body.fidelity)
+    return "auto" if body.tolerance is not None else spec.default_fidelity
+
+
+def _rung_for(spec: ModelSpec, body: Any, inputs: dict[str, Any]) -> str | None:
+    """The rung this request will run (None if the inputs are refused: that is quick)."""
+    fidelity = _fidelity_of(spec, body)
+    if fidelity != "auto":
+        return fidelity
+    try:
+        values, _ = spec.validate(inputs)
+        tol = engine.runner.DEFAULT_TOLERANCE if body.tolerance is None else body.tolerance
+        return engine.runner.choose_rung(spec, values, "auto", tol)[0]
+    except Exception:
+        return None
+
+
+def _lane(
+    spec: ModelSpec, body: Any, inputs: dict[str, Any], pool: EnginePool, sweep: bool
+) -> Lane:
+    """Heavy lane for a heavy rung, and for a sweep that loops (no array path for its rung)."""
+    heavy = {r.name for r in spec.rungs if r.heavy}
+    if not heavy and not sweep:
+        return pool.quick
+    rung = _rung_for(spec, body, inputs)
+    if rung in heavy:
+        return pool.heavy
+    if sweep and (spec.vectorized is None or rung not in spec.vector_rungs):
+        return pool.heavy
+    return pool.quick
+
+
+async def _in_lane(request: Request, lane: Lane, fn: Any, budget_s: float, what: str) -> Any:
+    """Run ``fn`` in ``lane``, withdrawing it if the client disconnects meanwhile."""
+    client = request.client.host if request.client else "?"
+    ticket = Ticket(client)
+    watcher = asyncio.create_task(watch_disconnect(request.receive, ticket))
+    try:
+        return await lane.run(fn, budget_s, what, ticket)
+    finally:
+        watcher.cancel()
+
+
 def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
-    """``POST <path>`` and ``POST <path>/sweep`` for one model."""
+    """``POST <path>`` and ``POST <path>/sweep`` for one model.
+
+    Each route returns a plain dict that FastAPI validates against the route's
+    ``response_model`` (``schemas.response_model(spec)``, ``schemas.SweepResponse``)
+    before it is sent: the schema published in OpenAPI is enforced on every answer.
+    """
     if limits is None:
-        limits = Limits(pool=EnginePool(threads=4, queue=64, grace_s=1.0))
+        limits = Limits(pool=EnginePool())
     lim = limits
     router = APIRouter(prefix=API_PREFIX, tags=[spec.family])
-    request = schemas.request_model(spec)
+    request_model = schemas.request_model(spec)
     response = schemas.response_model(spec)
     sweep_request = schemas.sweep_request_model(spec)
 
-    async def evaluate(body: request) -> Any:  # type: ignore[valid-type]
+    async def evaluate(body: request_model, request: Request) -> Any:  # type: ignore[valid-type]
         inputs = _inputs(body)
 
-        def work(budget_s: float) -> JSONResponse:
+        def work(budget_s: float, cancel: threading.Event) -> dict[str, Any]:
             result = engine.run(
                 spec,
                 inputs,
@@ -132,17 +188,18 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
                 outputs=body.outputs,  # type: ignore[attr-defined]
                 budget_s=budget_s,
                 max_steps=lim.max_steps,
+                cancel=cancel,
             )
-            # serialised here, in the worker thread: a long series never blocks the event loop
-            return JSONResponse(_response(result, lim.max_series_points))
+            return _response(result, lim.max_series_points)
 
-        return await lim.pool.run(work, lim.budget_s, f"{spec.name}")
+        lane = _lane(spec, body, inputs, lim.pool, sweep=False)
+        return await _in_lane(request, lane, work, lim.budget_s, spec.name)
 
-    async def sweep(body: sweep_request) -> Any:  # type: ignore[valid-type]
+    async def sweep(body: sweep_request, request: Request) -> Any:  # type: ignore[valid-type]
         values = _sweep_points(spec, body)
         base = {k: v for k, v in body.base.model_dump().items() if v is not None}  # type: ignore[attr-defined]
 
-        def work(budget_s: float) -> JSONResponse:
+        def work(budget_s: float, cancel: threading.Event) -> dict[str, Any]:
             result = engine.sweep(
                 spec,
                 base,
@@ -153,25 +210,26 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
                 tolerance=body.tolerance,  # type: ignore[attr-defined]
                 budget_s=budget_s,
                 max_steps=lim.max_steps,
+                cancel=cancel,
             )
-            return JSONResponse(
-                {
-                    "model": result.model,
-                    "vary": result.vary,
-                    "unit": spec.param(result.vary).unit,
-                    "values": result.values,
-                    "results": result.results,
-                    "units": result.units,
-                    "rung": result.rung,
-                    "elapsed_s": result.elapsed_s,
-                    "notes": result.notes,
-                    "warnings": result.warnings,
-                    "rungs": result.rungs,
-                    "error_estimates": result.error_estimates,
-                }
-            )
+            return {
+                "model": result.model,
+                "vary": result.vary,
+                "unit": spec.param(result.vary).unit,
+                "values": result.values,
+                "results": result.results,
+                "units": result.units,
+                "rung": result.rung,
+                "elapsed_s": result.elapsed_s,
+                "notes": result.notes,
+                "warnings": result.warnings,
+                "rungs": result.rungs,
+                "error_estimates": result.error_estimates,
+            }
 
-        return await lim.pool.run(work, lim.budget_s, f"{spec.name} sweep")
+        point = {**base, body.vary: values[0]}  # type: ignore[attr-defined]
+        lane = _lane(spec, body, point, lim.pool, sweep=True)
+        return await _in_lane(request, lane, work, lim.budget_s, f"{spec.name} sweep")
 
     router.add_api_route(
         spec.path,

@@ -1,7 +1,9 @@
 """Settings from the environment, each with an embedded default (nothing to configure).
 
 The bounds on work (``BUDGET_S``, ``MAX_STEPS``, ``MAX_SERIES_POINTS``,
-``MAX_BODY_BYTES``, ``ENGINE_THREADS``, ``ENGINE_QUEUE``) are read once when
+``MAX_BODY_BYTES``, the lanes' ``ENGINE_THREADS``, ``ENGINE_QUEUE``, ``HEAVY_SLOTS``,
+``HEAVY_QUEUE``, ``HEAVY_PER_CLIENT``, ``ADMISSION_WAIT_S``, and the connection
+bounds ``MAX_CONNECTIONS``, ``HEADER_TIMEOUT_S``, ``BODY_TIMEOUT_S``) are read once when
 the app is built; a value that is not a positive number stops the service at
 start-up with a message naming the variable, rather than at the first request.
 """
@@ -17,6 +19,10 @@ from engine.runner import DEFAULT_BUDGET_S, DEFAULT_MAX_STEPS
 def _origins() -> tuple[str, ...]:
     raw = os.environ.get("CORS_ORIGINS", "")
     return tuple(o.strip() for o in raw.split(",") if o.strip())
+
+
+def _cores() -> int:
+    return max(1, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else 1)
 
 
 def _int(name: str, default: int) -> int:
@@ -40,10 +46,26 @@ class Settings:
     max_steps: int = field(default_factory=lambda: _int("MAX_STEPS", DEFAULT_MAX_STEPS))
     #: Longest time series one response may carry [points per series].
     max_series_points: int = field(default_factory=lambda: _int("MAX_SERIES_POINTS", 10_000))
-    #: Threads that run model computations at once (per server process).
+    #: Threads of the quick lane (closed forms, cheap single points), per server process.
     engine_threads: int = field(default_factory=lambda: _int("ENGINE_THREADS", 4))
-    #: Computations that may wait for a thread; beyond that a request gets 503.
+    #: Quick computations that may wait for a thread; beyond that a request gets 503.
     engine_queue: int = field(default_factory=lambda: _int("ENGINE_QUEUE", 64))
+    #: Slots of the heavy lane (simulations, looping sweeps): one per core by default.
+    heavy_slots: int = field(default_factory=lambda: _int("HEAVY_SLOTS", _cores()))
+    #: Heavy computations that may wait for a slot.
+    heavy_queue: int = field(default_factory=lambda: _int("HEAVY_QUEUE", 16))
+    #: Heavy slots one client (address) may hold at once: its fair share.
+    heavy_per_client: int = field(
+        default_factory=lambda: _int("HEAVY_PER_CLIENT", max(1, _cores() // 2))
+    )
+    #: How long a request may wait for a slot before it gets 503 with Retry-After [s].
+    admission_wait_s: float = field(default_factory=lambda: _float("ADMISSION_WAIT_S", 0.5))
+    #: Concurrent connections per process (uvicorn's limit; over it: 503).
+    max_connections: int = field(default_factory=lambda: _int("MAX_CONNECTIONS", 1000))
+    #: A request's headers must arrive within this many seconds of its first byte [s].
+    header_timeout_s: float = field(default_factory=lambda: _float("HEADER_TIMEOUT_S", 10.0))
+    #: Each piece of a request body must arrive within this many seconds [s].
+    body_timeout_s: float = field(default_factory=lambda: _float("BODY_TIMEOUT_S", 10.0))
     #: How long past its budget a computation that ignores its deadline is waited for [s].
     budget_grace_s: float = field(default_factory=lambda: _float("BUDGET_GRACE_S", 1.0))
     #: Run every model's first example once per rung at start-up, in the background, so
@@ -63,9 +85,15 @@ class Settings:
             "MAX_STEPS": self.max_steps,
             "MAX_SERIES_POINTS": self.max_series_points,
             "ENGINE_THREADS": self.engine_threads,
+            "HEAVY_SLOTS": self.heavy_slots,
+            "HEAVY_PER_CLIENT": self.heavy_per_client,
+            "ADMISSION_WAIT_S": self.admission_wait_s,
+            "MAX_CONNECTIONS": self.max_connections,
+            "HEADER_TIMEOUT_S": self.header_timeout_s,
+            "BODY_TIMEOUT_S": self.body_timeout_s,
         }
         for name, value in positive.items():
             if not value > 0:
                 raise ValueError(f"{name} must be positive, not {value!r}")
-        if self.engine_queue < 0 or self.budget_grace_s < 0:
-            raise ValueError("ENGINE_QUEUE and BUDGET_GRACE_S must not be negative")
+        if self.engine_queue < 0 or self.heavy_queue < 0 or self.budget_grace_s < 0:
+            raise ValueError("ENGINE_QUEUE, HEAVY_QUEUE and BUDGET_GRACE_S must not be negative")

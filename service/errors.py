@@ -4,9 +4,10 @@
   (``["body", "ball_diameter"]``) and ``msg`` names the allowed range;
 * an infeasible design: 422 with ``type: "infeasible_design"`` and a plain sentence;
 * HTTP errors (400 unreadable body, 404, 405, 413, 415): their status, same shape;
-* every engine worker busy: 503 with ``Retry-After``;
-* anything unexpected: 500 with a generic message and the request id; the
-  trace goes to the log only.
+* no engine slot within the admission wait: 503 with ``Retry-After``;
+* a computation withdrawn because its client disconnected: 499 (access log only);
+* anything unexpected: 500 with a generic message and the request id, and
+  ``Connection: close`` (:class:`service.middleware.FrontDoor`); one log line.
 """
 
 from __future__ import annotations
@@ -20,9 +21,8 @@ from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
 from starlette.exceptions import HTTPException as StarletteHTTPException
 
-from engine import EngineError
+from engine import Cancelled, EngineError
 
-from .middleware import security_headers
 from .workers import Busy
 
 log = logging.getLogger("service")
@@ -79,8 +79,10 @@ async def _validation(_: Request, exc: Exception) -> JSONResponse:
 async def _engine(_: Request, exc: Exception) -> JSONResponse:
     assert isinstance(exc, EngineError)
     loc: list[Any] = ["body", exc.field] if exc.field else ["body"]
+    # 499 (nginx's "client closed request"): nobody reads it, the access log shows it
+    status = 499 if isinstance(exc, Cancelled) else 422
     return JSONResponse(
-        status_code=422, content=error_body(exc.kind, exc.message, loc, exc.context)
+        status_code=status, content=error_body(exc.kind, exc.message, loc, exc.context)
     )
 
 
@@ -113,31 +115,11 @@ async def _http(_: Request, exc: Exception) -> JSONResponse:
 
 
 async def _busy(_: Request, exc: Exception) -> JSONResponse:
+    assert isinstance(exc, Busy)
     return JSONResponse(
         status_code=503,
         content=error_body("busy", str(exc), []),
-        headers={"retry-after": "1"},
-    )
-
-
-async def _unexpected(request: Request, exc: Exception) -> JSONResponse:
-    # Sent by Starlette's outermost error middleware, outside FrontDoor: add its headers here.
-    request_id = request.scope.get("state", {}).get("request_id")
-    log.exception(
-        "unhandled error on %s %s (request %s)",
-        request.method,
-        request.url.path,
-        request_id,
-        exc_info=exc,
-    )
-    return JSONResponse(
-        status_code=500,
-        content=error_body(
-            "internal_error",
-            f"internal error; it was logged on the server (request id {request_id})",
-            [],
-        ),
-        headers=security_headers(request_id),
+        headers={"retry-after": str(exc.retry_after)},
     )
 
 
@@ -146,4 +128,5 @@ def install(app: FastAPI) -> None:
     app.add_exception_handler(EngineError, _engine)
     app.add_exception_handler(StarletteHTTPException, _http)
     app.add_exception_handler(Busy, _busy)
-    app.add_exception_handler(Exception, _unexpected)
+    # Anything else is caught by service.middleware.FrontDoor: 500, one log line,
+    # Connection: close.

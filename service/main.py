@@ -28,7 +28,7 @@ from pathlib import Path
 from fastapi import FastAPI
 from fastapi.middleware.cors import CORSMiddleware
 from fastapi.openapi.docs import get_redoc_html, get_swagger_ui_html
-from fastapi.responses import HTMLResponse
+from fastapi.responses import HTMLResponse, JSONResponse
 from fastapi.staticfiles import StaticFiles
 
 import engine
@@ -100,7 +100,15 @@ def create_app(
 ) -> FastAPI:
     models = engine.MODELS if models is None else models
     settings = settings or Settings()
-    pool = EnginePool(settings.engine_threads, settings.engine_queue, settings.budget_grace_s)
+    pool = EnginePool(
+        settings.engine_threads,
+        settings.engine_queue,
+        settings.budget_grace_s,
+        heavy_slots=settings.heavy_slots,
+        heavy_queue=settings.heavy_queue,
+        heavy_per_client=settings.heavy_per_client,
+        wait_s=settings.admission_wait_s,
+    )
     limits = Limits(
         pool=pool,
         budget_s=settings.budget_s,
@@ -132,6 +140,20 @@ def create_app(
     @app.get("/healthz", tags=["service"], summary="Liveness")
     def healthz() -> dict[str, str]:
         return {"status": "ok"}
+
+    @app.get(
+        "/readyz",
+        tags=["service"],
+        summary="Readiness: 503 while either engine lane cannot admit work",
+        responses={503: {"description": "a lane has no free slot and a full queue"}},
+    )
+    async def readyz() -> JSONResponse:
+        ready = pool.ready()
+        return JSONResponse(
+            {"status": "ready" if ready else "busy", "lanes": pool.state()},
+            status_code=200 if ready else 503,
+            headers=None if ready else {"retry-after": "1"},
+        )
 
     swagger = _docs_page(
         get_swagger_ui_html(

@@ -26,6 +26,7 @@ Send = Callable[[Message], Awaitable[None]]
 ASGIApp = Callable[[Scope, Receive, Send], Awaitable[None]]
 
 access_log = logging.getLogger("service.access")
+error_log = logging.getLogger("service")
 
 #: The page and every API answer: nothing but our own files, no frames, no plugins.
 STRICT_CSP = (
@@ -81,10 +82,12 @@ class FrontDoor:
         request_id = rid.decode()
         scope.setdefault("state", {})["request_id"] = request_id
         status = 500
+        started = False
 
         async def send_with_headers(message: Message) -> None:
-            nonlocal status
+            nonlocal status, started
             if message["type"] == "http.response.start":
+                started = True
                 status = message["status"]
                 headers = [(k, v) for k, v in message.get("headers", ()) if k.lower() != b"server"]
                 if not any(k.lower() == _CSP for k, _ in headers):
@@ -96,6 +99,26 @@ class FrontDoor:
 
         try:
             await self.app(scope, receive, send_with_headers)
+        except Exception as exc:  # the one place every unexpected error ends
+            status = 500
+            # one line, no traceback: the type and where it was raised are enough to
+            # find it, and a flood of bad requests cannot flood the log
+            tb = exc.__traceback__
+            while tb is not None and tb.tb_next is not None:
+                tb = tb.tb_next
+            where = f"{tb.tb_frame.f_code.co_filename}:{tb.tb_lineno}" if tb else "?"
+            error_log.error(
+                "internal error %s at %s on %s %s (request %s)",
+                type(exc).__name__,
+                where,
+                scope.get("method"),
+                scope.get("path"),
+                request_id,
+            )
+            if not started:
+                await _send_500(send, request_id, rid)
+            # else: the answer is half sent; returning without finishing it makes the
+            # server close the connection, which is all a client can be told now
         finally:
             if self.log_requests and access_log.isEnabledFor(logging.INFO):
                 access_log.info(
@@ -109,6 +132,33 @@ class FrontDoor:
                         }
                     )
                 )
+
+
+async def _send_500(send: Send, request_id: str, rid: bytes) -> None:
+    """500 with the request id, the security headers, and ``Connection: close``.
+
+    The connection is closed after it: whatever state the failure left behind,
+    the next request on this keep-alive connection starts on a fresh one.
+    """
+    from .errors import error_body  # errors imports this module
+
+    body = json.dumps(
+        error_body(
+            "internal_error",
+            f"internal error; it was logged on the server (request id {request_id})",
+            [],
+        )
+    ).encode()
+    headers = [
+        (b"content-type", b"application/json"),
+        (b"content-length", str(len(body)).encode()),
+        (b"connection", b"close"),
+        (_CSP, STRICT_CSP.encode()),
+        *SECURITY_HEADERS,
+        (b"x-request-id", rid),
+    ]
+    await send({"type": "http.response.start", "status": 500, "headers": headers})
+    await send({"type": "http.response.body", "body": body})
 
 
 def _header(scope: Scope, name: bytes) -> bytes | None:

@@ -1,109 +1,274 @@
-"""Where model computations run: a bounded pool of threads, each call with a deadline.
+"""Where model computations run: two lanes of threads, admission by a short wait, cancellation.
 
-Why threads and not processes
------------------------------
-* Most requests are closed forms that take microseconds. A process pool would
-  pickle every request and result across a pipe (hundreds of microseconds to
-  milliseconds), which would cost more than the physics and break the
-  throughput target for closed forms; specs also hold closures that do not
-  pickle, so a process pool would have to re-import the registry by name.
-* The heavy rungs are numpy/scipy: their kernels release the GIL, and pure
-  Python stepping yields it every ``sys.getswitchinterval()`` (5 ms), so the
-  event loop and quick requests keep running beside a slow one (shown in
-  ``tests/service/test_isolation.py``).
-* The engine already has a cooperative budget: :func:`engine.run` hands every
-  model ``ctx.deadline`` and ``ctx.max_steps``, and a model past either raises
-  :class:`engine.BudgetExceeded` (422, naming the budget).
+Lanes
+-----
+* **quick**: closed forms and single points of cheap rungs (microseconds).
+  ``ENGINE_THREADS`` run at once, ``ENGINE_QUEUE`` may wait.
+* **heavy**: a rung declared ``heavy`` (simulations), and sweeps that loop
+  (every sweep without an array path for its rung). ``HEAVY_SLOTS`` run at
+  once, ``HEAVY_QUEUE`` may wait, and one client (its address) holds at most
+  ``HEAVY_PER_CLIENT`` slots; a freed slot goes to the waiting client that
+  holds the fewest, oldest first, so one client sending many sweeps cannot
+  take the lane from the others.
 
-What the pool adds on top
--------------------------
-* The deadline counts from the moment the request is admitted, queueing
-  included: the model gets what is left of ``BUDGET_S``.
-* A hard ceiling: a computation that ignores its deadline is waited for
-  ``BUDGET_S + BUDGET_GRACE_S`` at most; the request then gets 422
-  ``budget_exceeded`` and the thread finishes in the background. It still
-  holds its slot until it does, so a model that never stops cannot make the
-  process start ever more threads.
-* Bounded admission: at most ``ENGINE_THREADS`` computations run and
-  ``ENGINE_QUEUE`` wait; one more gets 503 with ``Retry-After`` at once
-  instead of an unbounded queue.
+Cheap work therefore never waits behind heavy work: the lanes share no
+thread and no queue. The heavy kernels release the GIL (numba ``nogil``,
+numpy), and pure-Python stepping yields it every ``sys.getswitchinterval()``.
 
-Cost: the hop to a thread and back is about 0.1 ms of CPU per request
-(measured in-process on preload.tightening: ~0.37 ms through the pool against
-~0.26 ms inline), the price of never running a computation on the event loop.
+Admission
+---------
+A request that cannot start within ``ADMISSION_WAIT_S`` (or finds the lane's
+queue full) gets 503 with ``Retry-After`` (:class:`Busy`): the server's
+state, honestly reported, never blamed on the input. The wall-clock budget
+``BUDGET_S`` starts when the computation does, so 422 ``budget_exceeded``
+means the computation itself ran past it.
 
-A thread cannot be killed, so a model that ignores its deadline forever would
-keep its slot: the warning logged on every hard timeout names the model so it
-can be fixed. Scale across cores with ``python -m service --workers N``.
+Cancellation
+------------
+Each request carries a :class:`threading.Event`; the route sets it when the
+client disconnects (:func:`watch_disconnect`). The engine tests it at every
+budget check (``ctx.check_budget()``, the simulation's chunk loop, each
+sweep point) and stops with :class:`engine.Cancelled`; the slot is released
+as soon as the thread returns. A waiting request whose client leaves gives
+up its place at once.
+
+A hard ceiling remains for a model that ignores its budget: it is waited for
+``BUDGET_S + BUDGET_GRACE_S`` at most; the request gets 422
+``budget_exceeded`` and the thread finishes in the background, still holding
+its slot, so a model that never stops cannot make the process start ever
+more threads (the warning names the model so it can be fixed).
+
+Why threads and not processes: most requests take microseconds, and pickling
+a request and its result across a pipe would cost more than the physics;
+specs also hold closures that do not pickle. Scale across cores with
+``python -m service --workers N``.
 """
 
 from __future__ import annotations
 
 import asyncio
+import itertools
 import logging
+import math
 import threading
 import time
 from collections.abc import Callable
 from concurrent.futures import Future, ThreadPoolExecutor
+from dataclasses import dataclass, field
 from typing import Any, TypeVar
 
-from engine import BudgetExceeded
+from engine import BudgetExceeded, Cancelled
 
 log = logging.getLogger("service")
 
 T = TypeVar("T")
 
+Receive = Callable[[], Any]
+
 
 class Busy(Exception):
-    """Every worker slot and queue place is taken (503)."""
+    """No slot could be had within the admission wait (503 with Retry-After)."""
+
+    def __init__(self, message: str, retry_after: int = 1) -> None:
+        super().__init__(message)
+        self.retry_after = retry_after
 
 
-class EnginePool:
-    """Run ``fn(remaining_budget_s)`` in a bounded thread pool with a wall-clock budget."""
+@dataclass
+class _Waiter:
+    client: str
+    seq: int
+    granted: asyncio.Future[None]
 
-    def __init__(self, threads: int, queue: int, grace_s: float) -> None:
-        self.threads = threads
-        self.capacity = threads + queue
+
+@dataclass
+class Ticket:
+    """One request's claim on the engine: its client, and the event that withdraws it."""
+
+    client: str
+    cancel: threading.Event = field(default_factory=threading.Event)
+    gone: asyncio.Event = field(default_factory=asyncio.Event)
+
+    def withdraw(self) -> None:
+        self.cancel.set()
+        self.gone.set()
+
+
+async def watch_disconnect(receive: Receive, ticket: Ticket) -> None:
+    """Withdraw ``ticket`` when the client disconnects (after the body has been read)."""
+    while True:
+        message = await receive()
+        if message.get("type") == "http.disconnect":
+            ticket.withdraw()
+            return
+
+
+class Lane:
+    """Bounded slots with a short admission wait and a per-client share.
+
+    Everything but the worker threads runs on the event loop, so the counters
+    need no lock; a thread's end is handed back with ``call_soon_threadsafe``.
+    """
+
+    def __init__(
+        self,
+        name: str,
+        *,
+        slots: int,
+        queue: int,
+        per_client: int,
+        wait_s: float,
+        grace_s: float,
+    ) -> None:
+        self.name = name
+        self.slots = slots
+        self.queue = queue
+        self.per_client = max(1, min(per_client, slots))
+        self.wait_s = wait_s
         self.grace_s = grace_s
+        self.running = 0
+        self._by_client: dict[str, int] = {}
+        self._waiters: list[_Waiter] = []
+        self._seq = itertools.count()
+        self._ends: list[float] = []  # when each running computation's budget runs out
         self._executor: ThreadPoolExecutor | None = None
         self._lock = threading.Lock()
-        self._in_flight = 0
+
+    # --- state -----------------------------------------------------------------------------
+    @property
+    def waiting(self) -> int:
+        return len(self._waiters)
 
     @property
     def in_flight(self) -> int:
-        """Computations admitted and not finished (running, queued or abandoned)."""
-        return self._in_flight
+        """Computations running (abandoned ones included) or waiting for a slot."""
+        return self.running + len(self._waiters)
 
-    def _release(self, _: Future[Any]) -> None:
-        with self._lock:
-            self._in_flight -= 1
+    def can_admit(self) -> bool:
+        """True while a new request would get a slot or a place in the queue."""
+        return self.running < self.slots or len(self._waiters) < self.queue
 
-    async def run(self, fn: Callable[[float], T], budget_s: float, what: str) -> T:
-        """``fn`` gets the seconds left of ``budget_s`` when a thread picks it up."""
-        with self._lock:
-            if self._in_flight >= self.capacity:
-                raise Busy(
-                    f"the server is busy: {self.capacity} computations are already "
-                    "running or queued; retry in a moment"
-                )
-            self._in_flight += 1
-        deadline = time.perf_counter() + budget_s
+    def state(self) -> dict[str, Any]:
+        return {
+            "slots": self.slots,
+            "running": self.running,
+            "waiting": len(self._waiters),
+            "queue": self.queue,
+        }
 
-        def job() -> T:
-            remaining = deadline - time.perf_counter()
-            if remaining <= 0:
-                raise BudgetExceeded(
-                    f"{what} waited its whole {budget_s:g} s wall-clock budget (BUDGET_S) "
-                    "for a free worker",
-                    budget_s=budget_s,
-                )
-            return fn(remaining)
+    def retry_after(self) -> int:
+        """Seconds until the soonest running computation must end (at least 1)."""
+        if not self._ends:
+            return 1
+        return max(1, math.ceil(min(self._ends) - time.perf_counter()))
 
-        with self._lock:
-            if self._executor is None:
-                self._executor = ThreadPoolExecutor(self.threads, thread_name_prefix="engine")
-            future = self._executor.submit(job)
-        future.add_done_callback(self._release)
+    # --- slots -----------------------------------------------------------------------------
+    def _eligible(self, client: str) -> bool:
+        return self.running < self.slots and self._by_client.get(client, 0) < self.per_client
+
+    def _take(self, client: str) -> None:
+        self.running += 1
+        self._by_client[client] = self._by_client.get(client, 0) + 1
+
+    def _release(self, client: str, end: float) -> None:
+        self.running -= 1
+        left = self._by_client[client] - 1
+        if left:
+            self._by_client[client] = left
+        else:
+            del self._by_client[client]
+        self._ends.remove(end)
+        self._grant()
+
+    def _grant(self) -> None:
+        while self.running < self.slots and self._waiters:
+            eligible = [w for w in self._waiters if self._eligible(w.client)]
+            if not eligible:
+                return
+            best = min(eligible, key=lambda w: (self._by_client.get(w.client, 0), w.seq))
+            self._waiters.remove(best)
+            self._take(best.client)
+            best.granted.set_result(None)
+
+    def _busy(self, what: str, why: str) -> Busy:
+        return Busy(
+            f"the server is busy: {why} in the {self.name} lane; {what} was not started, "
+            "retry in a moment",
+            retry_after=self.retry_after(),
+        )
+
+    async def _acquire(self, ticket: Ticket, what: str) -> None:
+        if not self._waiters and self._eligible(ticket.client):
+            self._take(ticket.client)
+            return
+        if len(self._waiters) >= self.queue:
+            raise self._busy(what, f"{self.running} computations run and {self.queue} wait")
+        waiter = _Waiter(ticket.client, next(self._seq), asyncio.get_running_loop().create_future())
+        self._waiters.append(waiter)
+        self._grant()  # a free slot that waiters ahead cannot use (at their share) is ours
+        gone: asyncio.Future[Any] = asyncio.ensure_future(ticket.gone.wait())
+        both: set[asyncio.Future[Any]] = {waiter.granted, gone}
+        try:
+            await asyncio.wait(both, timeout=self.wait_s, return_when="FIRST_COMPLETED")
+        except BaseException:
+            self._abandon(waiter)
+            raise
+        finally:
+            gone.cancel()
+        if not waiter.granted.done():
+            self._abandon(waiter)
+            if ticket.cancel.is_set():
+                raise Cancelled(f"{what} was withdrawn: the client disconnected")
+            raise self._busy(what, f"no slot came free within {self.wait_s:g} s (ADMISSION_WAIT_S)")
+        if ticket.cancel.is_set():
+            self._release_now(ticket.client)
+            raise Cancelled(f"{what} was withdrawn: the client disconnected")
+
+    def _abandon(self, waiter: _Waiter) -> None:
+        if waiter in self._waiters:
+            self._waiters.remove(waiter)
+        elif waiter.granted.done() and not waiter.granted.cancelled():
+            self._release_now(waiter.client)  # granted in the same turn: hand it on
+        waiter.granted.cancel()
+
+    def _release_now(self, client: str) -> None:
+        self.running -= 1
+        left = self._by_client[client] - 1
+        if left:
+            self._by_client[client] = left
+        else:
+            del self._by_client[client]
+        self._grant()
+
+    # --- running ---------------------------------------------------------------------------
+    async def run(
+        self,
+        fn: Callable[[float, threading.Event], T],
+        budget_s: float,
+        what: str,
+        ticket: Ticket,
+    ) -> T:
+        """``fn(budget_s, cancel)`` in a thread of this lane, once a slot is had."""
+        await self._acquire(ticket, what)
+        end = time.perf_counter() + budget_s
+        self._ends.append(end)
+        loop = asyncio.get_running_loop()
+        try:
+            with self._lock:
+                if self._executor is None:
+                    self._executor = ThreadPoolExecutor(
+                        self.slots, thread_name_prefix=f"engine-{self.name}"
+                    )
+                future = self._executor.submit(fn, budget_s, ticket.cancel)
+        except BaseException:
+            self._release(ticket.client, end)
+            raise
+
+        def done(_: Future[Any]) -> None:
+            if not loop.is_closed():  # a test's loop may end before an abandoned thread
+                loop.call_soon_threadsafe(self._release, ticket.client, end)
+
+        future.add_done_callback(done)
         try:
             return await asyncio.wait_for(asyncio.wrap_future(future), budget_s + self.grace_s)
         except TimeoutError:
@@ -121,3 +286,45 @@ class EnginePool:
             executor, self._executor = self._executor, None
         if executor is not None:
             executor.shutdown(wait=False, cancel_futures=True)
+
+
+class EnginePool:
+    """The two lanes, and whether the engine can admit work (``/readyz``)."""
+
+    def __init__(
+        self,
+        threads: int = 4,
+        queue: int = 64,
+        grace_s: float = 1.0,
+        *,
+        heavy_slots: int = 2,
+        heavy_queue: int = 16,
+        heavy_per_client: int = 1,
+        wait_s: float = 0.5,
+    ) -> None:
+        self.quick = Lane(
+            "quick", slots=threads, queue=queue, per_client=threads, wait_s=wait_s, grace_s=grace_s
+        )
+        self.heavy = Lane(
+            "heavy",
+            slots=heavy_slots,
+            queue=heavy_queue,
+            per_client=heavy_per_client,
+            wait_s=wait_s,
+            grace_s=grace_s,
+        )
+
+    @property
+    def in_flight(self) -> int:
+        """Computations admitted and not finished, in both lanes (waiting ones included)."""
+        return self.quick.in_flight + self.heavy.in_flight
+
+    def ready(self) -> bool:
+        return self.quick.can_admit() and self.heavy.can_admit()
+
+    def state(self) -> dict[str, Any]:
+        return {"quick": self.quick.state(), "heavy": self.heavy.state()}
+
+    def shutdown(self) -> None:
+        self.quick.shutdown()
+        self.heavy.shutdown()

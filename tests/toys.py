@@ -409,8 +409,8 @@ TOY_ODE = ModelSpec(
         Output("x", "m", "displacement", series=True, x="time"),
     ),
     rungs=(
-        Rung("RK45", "explicit", fixed_error(1e-6)),
-        Rung("LSODA", "stiff-aware", fixed_error(1e-6)),
+        Rung("RK45", "explicit", fixed_error(1e-6), heavy=True),
+        Rung("LSODA", "stiff-aware", fixed_error(1e-6), heavy=True),
     ),
     compute=_ode,
     default_fidelity="RK45",
@@ -423,8 +423,11 @@ def _spin(x: Mapping[str, Any], ctx: RunContext) -> Result:
     n = 0
     while time.perf_counter() < end:
         n += 1
-        if n % 1000 == 0 and ctx.deadline is not None and time.perf_counter() > ctx.deadline:
-            raise BudgetExceeded("spin stopped at its wall-clock budget", field="seconds")
+        if n % 1000 == 0:
+            try:
+                ctx.check_budget("spin")
+            except BudgetExceeded as exc:
+                raise BudgetExceeded(exc.message, field="seconds") from None
     return Result(values={"loops": float(n)}, rung=ctx.rung, error_estimate=None)
 
 
@@ -437,7 +440,7 @@ def _crash(x: Mapping[str, Any], ctx: RunContext) -> Result:
     raise ZeroDivisionError("secret internal detail")
 
 
-def _timed(name: str, compute: Any) -> ModelSpec:
+def _timed(name: str, compute: Any, heavy: bool = True) -> ModelSpec:
     return ModelSpec(
         name=f"toy.{name}",
         path=f"/toy/{name}",
@@ -447,7 +450,7 @@ def _timed(name: str, compute: Any) -> ModelSpec:
         source="none",
         inputs=(Param("seconds", "s", "how long", default=0.0, minimum=0.0, maximum=60.0),),
         outputs=(Output("loops", "1", "loops done"),),
-        rungs=(Rung("only", "the only one", fixed_error(0.0)),),
+        rungs=(Rung("only", "the only one", fixed_error(0.0), heavy=heavy),),
         compute=compute,
         examples=({},),
     )
@@ -455,7 +458,7 @@ def _timed(name: str, compute: Any) -> ModelSpec:
 
 TOY_SPIN = _timed("spin", _spin)
 TOY_STUBBORN = _timed("stubborn", _sleep)
-TOY_CRASH = _timed("crash", _crash)
+TOY_CRASH = _timed("crash", _crash, heavy=False)
 
 #: Well-behaved test models (the fuzzer and the load test run over these).
 WELL_BEHAVED = (TOY, TOY_ODE)

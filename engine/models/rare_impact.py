@@ -327,6 +327,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 tolerance=ctx.tolerance,
                 deadline=ctx.deadline,
                 max_steps=ctx.max_steps,
+                cancel=ctx.cancel,
             )
             notes.append(
                 f"simulation: would need about {exc.context['expected_steps']:.2g} steps (the "
@@ -939,6 +940,7 @@ RARE_IMPACT = ModelSpec(
             _simulation_estimate,
             typical_error="≤ 1e-6 (measured ~1e-9 against a tight DOP853 reference)",
             typical_time="~0.3 ms (plus a one-off 1-3 s numba load in a fresh process)",
+            heavy=True,
         ),
     ),
     compute=_compute,

@@ -3,12 +3,11 @@
 Body size (413, with and without content-length), sweep points (422 ``num``),
 series length (422 ``MAX_SERIES_POINTS``), the wall-clock budget (422
 ``budget_exceeded``, cooperative and hard ceiling), the step budget, and a
-full engine pool (503 with Retry-After).
+full lane (503 with Retry-After: tests/service/test_lanes.py).
 """
 
 from __future__ import annotations
 
-import asyncio
 import re
 import time
 from collections.abc import Iterator
@@ -138,28 +137,6 @@ def test_model_that_ignores_its_deadline_gets_a_hard_ceiling() -> None:
     assert elapsed < 2.5  # answered at ~0.5 s, long before the model's 3 s
 
 
-def test_full_pool_answers_503_at_once() -> None:
-    app = create_app(models=MODELS, settings=Settings(engine_threads=1, engine_queue=0))
-
-    async def scenario() -> tuple[httpx.Response, httpx.Response, float]:
-        transport = httpx.ASGITransport(app=app)
-        async with httpx.AsyncClient(transport=transport, base_url="http://t") as c:
-            slow = asyncio.create_task(c.post("/api/v1/toy/spin", json={"seconds": 1.0}))
-            while app.state.engine_pool.in_flight == 0:
-                await asyncio.sleep(0.01)
-            start = time.perf_counter()
-            busy = await c.post("/api/v1/toy/disc", json={"diameter": 0.1})
-            waited = time.perf_counter() - start
-            return busy, await slow, waited
-
-    busy, slow, waited = asyncio.run(scenario())
-    item = only_error(busy, 503)
-    assert item["type"] == "busy" and "retry in a moment" in str(item["msg"])
-    assert busy.headers["retry-after"] == "1"
-    assert slow.status_code == 200
-    assert waited < 0.9  # refused without waiting for the 1 s computation
-
-
 def test_settings_refuse_nonsense_at_start_up(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setenv("BUDGET_S", "2.5")
     monkeypatch.setenv("MAX_SERIES_POINTS", "123")
@@ -171,26 +148,3 @@ def test_settings_refuse_nonsense_at_start_up(monkeypatch: pytest.MonkeyPatch) -
     monkeypatch.setenv("BUDGET_S", "nan")
     with pytest.raises(ValueError, match="BUDGET_S must be positive"):
         Settings()
-
-
-def test_time_spent_queueing_counts_against_the_budget() -> None:
-    # one thread: the second request waits behind a 0.6 s computation, longer than its budget
-    settings = Settings(engine_threads=1, engine_queue=4, budget_s=0.4, budget_grace_s=1.0)
-    app = create_app(models=MODELS, settings=settings)
-
-    async def scenario() -> tuple[httpx.Response, httpx.Response]:
-        transport = httpx.ASGITransport(app=app)
-        async with httpx.AsyncClient(transport=transport, base_url="http://t") as c:
-            first = asyncio.create_task(c.post("/api/v1/toy/stubborn", json={"seconds": 0.6}))
-            while app.state.engine_pool.in_flight == 0:
-                await asyncio.sleep(0.005)
-            second = await c.post("/api/v1/toy/disc", json={"diameter": 0.1})
-            return await first, second
-
-    first, second = asyncio.run(scenario())
-    assert first.status_code == 200  # late, but within the grace: its answer is still sent
-    item = only_error(second, 422)
-    assert item["type"] == "budget_exceeded"
-    assert item["msg"] == (
-        "toy.disc waited its whole 0.4 s wall-clock budget (BUDGET_S) for a free worker"
-    )

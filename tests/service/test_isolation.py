@@ -22,7 +22,9 @@ SLOW_S = 1.5
 
 
 def test_quick_requests_answer_while_a_slow_one_runs() -> None:
-    app = create_app(models=[TOY, TOY_ODE, TOY_SPIN], settings=Settings(budget_s=10))
+    # one client sends both heavy requests (spin, ode): give it both heavy slots
+    settings = Settings(budget_s=10, heavy_slots=2, heavy_per_client=2)
+    app = create_app(models=[TOY, TOY_ODE, TOY_SPIN], settings=settings)
 
     async def scenario() -> tuple[float, list[float], list[int], int]:
         transport = httpx.ASGITransport(app=app)
