@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange
+from .errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange, SolverFailed
 from .spec import Check, ModelSpec, Param, RunContext, Value
 
 DEFAULT_TOLERANCE = 0.01
@@ -177,7 +177,17 @@ def run(
         max_steps=max_steps,
         cancel=cancel,
     )
-    result = spec.compute(values, ctx)
+    try:
+        result = spec.compute(values, ctx)
+    except ArithmeticError as exc:
+        # a safety net under the declared ranges: a combination of extreme inputs that
+        # overflows or divides by zero is refused (422), never a crash (500)
+        raise SolverFailed(
+            f"{spec.name} cannot be evaluated for these inputs: the arithmetic failed "
+            f"({type(exc).__name__}); values this extreme lie outside what the model "
+            "computes reliably",
+            error=type(exc).__name__,
+        ) from None
     elapsed = time.perf_counter() - start
 
     units = {o.name: o.unit for o in spec.outputs}

@@ -92,7 +92,10 @@ class Param:
                     raise self._error(value)
                 value = int(value)
         else:
-            value = float(value)
+            try:
+                value = float(value)
+            except OverflowError:  # an integer literal of 309+ digits
+                raise self._error(value) from None
             if not math.isfinite(value):
                 raise self._error(value)
             if value == 0.0:
@@ -106,6 +109,8 @@ class Param:
 
     def _error(self, value: Any) -> InputOutOfRange:
         shown = f"{value:g}" if isinstance(value, float) else repr(value)
+        if isinstance(value, int) and len(shown) > 20:
+            shown = f"an integer of {len(shown)} digits"
         unit = "" if self.unit == "1" or not self.is_numeric else f" {self.unit}"
         return InputOutOfRange(
             f"{self.name} = {shown}{unit} is not allowed: must be {self.range_text()}",

@@ -90,22 +90,23 @@ def _response(result: engine.RunResult, max_series_points: int) -> dict[str, Any
     }
 
 
-def _bound(spec: ModelSpec, name: str, value: float | str) -> float:
-    """A sweep end point in SI units; unit strings use the varied input's unit."""
+def _bound(spec: ModelSpec, name: str, value: float | str, end: str) -> float:
+    """A sweep end point (``end``: start or stop) in SI units; unit strings use the varied
+    input's unit."""
     unit = spec.param(name).unit
     if isinstance(value, str):
         try:
             return to_si(value, unit)
         except UnitError as exc:
-            raise engine.InputOutOfRange(f"{exc}", field=name) from None
+            raise engine.InputOutOfRange(f"{end} ({name}): {exc}", field=end) from None
     if not math.isfinite(value):
-        raise engine.InputOutOfRange(f"{name}: a sweep end must be a finite number", field=name)
+        raise engine.InputOutOfRange(f"{end} ({name}) must be a finite number", field=end)
     return float(value)
 
 
 def _sweep_points(spec: ModelSpec, body: Any) -> list[float]:
-    start = _bound(spec, body.vary, body.start)
-    stop = _bound(spec, body.vary, body.stop)
+    start = _bound(spec, body.vary, body.start, "start")
+    stop = _bound(spec, body.vary, body.stop, "stop")
     if not math.isfinite(stop - start):
         # linspace over ±1e308 overflows to inf/nan; no input range is that wide
         param = spec.param(body.vary)

@@ -29,6 +29,7 @@ from fastapi import FastAPI
 from fastapi.middleware.cors import CORSMiddleware
 from fastapi.openapi.docs import get_redoc_html, get_swagger_ui_html
 from fastapi.responses import HTMLResponse, JSONResponse
+from fastapi.routing import APIRoute
 from fastapi.staticfiles import StaticFiles
 
 import engine
@@ -175,12 +176,16 @@ def create_app(
     def redoc_page() -> HTMLResponse:
         return redoc
 
-    app.include_router(catalogue_router(models))
-    for spec in models:
-        app.include_router(model_router(spec, limits))
-    for router in EXTRA_ROUTERS:
+    routers = [catalogue_router(models), *(model_router(s, limits) for s in models), *EXTRA_ROUTERS]
+    for router in routers:
         app.include_router(router)
-    app.add_middleware(BodyGuard, limit=settings.max_body_bytes)
+    json_paths = frozenset(
+        r.path
+        for router in routers
+        for r in router.routes
+        if isinstance(r, APIRoute) and "POST" in (r.methods or ())
+    )
+    app.add_middleware(BodyGuard, limit=settings.max_body_bytes, json_paths=json_paths)
     if settings.cors_origins:
         app.add_middleware(
             CORSMiddleware,

@@ -180,17 +180,33 @@ def _is_json(content_type: bytes | None) -> bool:
 class BodyGuard:
     """Refuse non-JSON bodies (415) and bodies over ``limit`` bytes (413), before they are read."""
 
-    def __init__(self, app: ASGIApp, limit: int) -> None:
+    def __init__(self, app: ASGIApp, limit: int, json_paths: frozenset[str] | None = None) -> None:
         self.app = app
         self.limit = limit
+        #: Paths that take a JSON body by POST; any other path or method goes to the router
+        #: unchecked, which answers 404/405 (None: every POST, PUT and PATCH is checked).
+        self.json_paths = json_paths
+
+    def _wants_json(self, scope: Scope) -> bool:
+        if self.json_paths is None:
+            return scope.get("method") in ("POST", "PUT", "PATCH")
+        return scope.get("method") == "POST" and scope.get("path") in self.json_paths
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         if scope["type"] != "http":
             await self.app(scope, receive, send)
             return
-        if scope.get("method") in ("POST", "PUT", "PATCH") and not _is_json(
-            _header(scope, b"content-type")
+        if (
+            self.json_paths is not None
+            and scope.get("path") in self.json_paths
+            and scope.get("method") not in ("POST", "OPTIONS")
         ):
+            # the form's static mount at "/" would answer 404 for these: say 405
+            await _refuse(
+                send, 405, "method_not_allowed", "this path takes POST", [(b"allow", b"POST")]
+            )
+            return
+        if self._wants_json(scope) and not _is_json(_header(scope, b"content-type")):
             await _refuse(
                 send,
                 415,
@@ -230,7 +246,9 @@ class BodyGuard:
         await _refuse(send, 413, BodyTooLarge.kind, BodyTooLarge(self.limit).detail)
 
 
-async def _refuse(send: Send, status: int, kind: str, msg: str) -> None:
+async def _refuse(
+    send: Send, status: int, kind: str, msg: str, extra: list[tuple[bytes, bytes]] | None = None
+) -> None:
     from .errors import error_body  # errors imports this module
 
     body = json.dumps(error_body(kind, msg, [])).encode()
@@ -241,6 +259,7 @@ async def _refuse(send: Send, status: int, kind: str, msg: str) -> None:
             "headers": [
                 (b"content-type", b"application/json"),
                 (b"content-length", str(len(body)).encode()),
+                *(extra or ()),
             ],
         }
     )

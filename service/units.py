@@ -78,6 +78,8 @@ def _factor(unit: str, target: str) -> float:
         raise UnitError(
             f"{unit!r} has the wrong dimension: expected {target} (write products as 'N*m')"
         ) from exc
+    except Exception as exc:  # "m*dB": pint cannot multiply logarithmic or offset units
+        raise UnitError(f"cannot convert {unit!r} to {target}") from exc
     names = " ".join(str(name) for name in parsed._units)
     if target.startswith("rad/") and not any(a in names for a in _ANGLE_UNITS):
         factor *= 2.0 * math.pi  # Hz, 1/min for a speed: revolutions per unit time

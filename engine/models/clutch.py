@@ -97,9 +97,8 @@ def _common_params(*, wire_required: bool, deflection_required: bool) -> tuple[P
             "1",
             "K_r, load non-uniformity factor between the balls, 0.85…0.9 [001, eq. 1]",
             default=0.85,
-            minimum=0.0,
+            minimum=0.1,  # a tenth of a fair share; 1e-200 crashed the model (issue 20)
             maximum=1.0,
-            exclusive_minimum=True,
             recommended=RECOMMENDED_LOAD_FACTOR,
             symbol="K_r",
             group="balls",

@@ -243,8 +243,7 @@ _INPUTS: tuple[Param, ...] = (
         "rated_torque",
         "N*m",
         "Induction curve: rated torque (default motor_power / rated_speed)",
-        minimum=0.0,
-        exclusive_minimum=True,
+        minimum=1e-3,  # 1 mN*m; 1e-150 crashed the motor curve (issue 20)
         maximum=1e6,
         display_unit="N*m",
         group="motor curve",
@@ -293,8 +292,7 @@ _INPUTS: tuple[Param, ...] = (
         "1",
         "V-belt efficiency while accelerating (1 = the source's lossless drive)",
         default=1.0,
-        minimum=0.0,
-        exclusive_minimum=True,
+        minimum=0.01,  # 1 %; 1e-30 divided the motor torque down to zero (issue 20)
         maximum=1.0,
         recommended=(0.85, 1.0),
         group="motor curve",
@@ -304,8 +302,7 @@ _INPUTS: tuple[Param, ...] = (
         "1",
         "Gear mesh 4–5 efficiency while accelerating (1 = the source's lossless drive)",
         default=1.0,
-        minimum=0.0,
-        exclusive_minimum=True,
+        minimum=0.01,  # 1 %; 1e-30 divided the motor torque down to zero (issue 20)
         maximum=1.0,
         recommended=(0.9, 1.0),
         group="motor curve",

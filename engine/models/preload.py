@@ -588,8 +588,7 @@ CONTROL_INPUTS: tuple[Param, ...] = (
         maximum=1.0,
         display_unit="mm",
         group="joint",
-        minimum=0.0,
-        exclusive_minimum=True,
+        minimum=1e-4,  # 0.1 mm; 1e-300 divided by zero (issue 20)
     ),
     Param(
         "reduced_length",
@@ -629,8 +628,7 @@ CONTROL_INPUTS: tuple[Param, ...] = (
         maximum=1e12,
         display_unit="GPa",
         group="joint",
-        minimum=0.0,
-        exclusive_minimum=True,
+        minimum=1e9,  # 1 GPa, below any bolt material; 5e-324 crashed the model (issue 20)
     ),
     Param(
         "clamped_compliance",

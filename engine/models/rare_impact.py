@@ -551,22 +551,25 @@ def _preload(name: str, description: str, default: float, symbol: str) -> Param:
 
 
 _INPUTS: tuple[Param, ...] = (
-    positive(
+    Param(
         "flywheel_inertia",
         "kg*m^2",
         "I_M: moment of inertia of the flywheel with half-coupling, shaft and striker [002, eq. 1]",
         default=0.02,
+        # 1e-6 kg*m^2 (a 20 g disc of 2 cm radius); 1e-300 crashed the model (issue 20)
+        minimum=1e-6,
         maximum=100.0,
         display_unit="kg*m^2",
         symbol="I_M",
         group="drive",
     ),
-    positive(
+    Param(
         "motor_torque",
         "N*m",
         "M: motor torque on the flywheel (the stall torque when a no-load speed is given) "
         "[002, eq. 1]",
         default=5.0,
+        minimum=1e-3,  # 1 mN*m; 5e-324 made the simulation's step count NaN (issue 20)
         maximum=1e5,
         display_unit="N*m",
         symbol="M",
@@ -584,11 +587,12 @@ _INPUTS: tuple[Param, ...] = (
         symbol="ω_nl",
         group="drive",
     ),
-    positive(
+    Param(
         "roller_mass",
         "kg",
         "m_p: mass of one centrifugal roller [002, eq. 1]",
         default=0.05,
+        minimum=1e-4,  # 0.1 g; 1e-320 divided by zero (issue 20)
         maximum=100.0,
         display_unit="g",
         symbol="m_p",
@@ -603,11 +607,12 @@ _INPUTS: tuple[Param, ...] = (
         symbol="n",
         group="rollers",
     ),
-    positive(
+    Param(
         "roller_radius",
         "m",
         "x_0: radius of the rollers' centres at rest [002, eq. 1]",
         default=0.04,
+        minimum=1e-4,  # 0.1 mm; 5e-324 divided by zero (issue 20)
         maximum=2.0,
         display_unit="mm",
         symbol="x_0",
@@ -619,9 +624,9 @@ _INPUTS: tuple[Param, ...] = (
         "α: angle of the conical faces of half-coupling and striker [002, eq. 1]; the paper's "
         "closed form is for 45°",
         default=math.pi / 4,
-        minimum=0.0,
+        # 1°: a flatter cone has no axial push to speak of (1e-300 divided by zero, issue 20)
+        minimum=math.radians(1.0),
         maximum=math.pi / 2,
-        exclusive_minimum=True,
         exclusive_maximum=True,
         recommended=(math.radians(15.0), math.radians(75.0)),
         display_unit="deg",
@@ -743,8 +748,7 @@ _INPUTS: tuple[Param, ...] = (
         "φ_eng: the anvil's opening, the angle the flywheel turns while the striker must "
         "engage [002, after eq. 5]",
         default=math.radians(120.0),
-        minimum=0.0,
-        exclusive_minimum=True,
+        minimum=math.radians(0.1),  # 0.1°; 5e-324 divided by zero (issue 20)
         maximum=2.0 * math.pi,
         display_unit="deg",
         symbol="φ_eng",

@@ -134,9 +134,9 @@ def test_hostile_sweep_ends(toy: TestClient) -> None:
     base = {"base": {"diameter": 0.2}, "vary": "speed", "num": 3}
     cases = [
         ({"start": -1e308, "stop": 1e308}, "speed", "start and stop must lie within"),
-        ({"start": "inf rpm", "stop": 1}, "speed", "cannot read"),
-        ({"start": 0, "stop": "10**10**10 rpm"}, "speed", "cannot read"),
-        ({"start": 0, "stop": "5 kg"}, "speed", "wrong dimension"),
+        ({"start": "inf rpm", "stop": 1}, "start", "cannot read"),
+        ({"start": 0, "stop": "10**10**10 rpm"}, "stop", "cannot read"),
+        ({"start": 0, "stop": "5 kg"}, "stop", "wrong dimension"),
     ]
     for ends, field, fragment in cases:
         r = toy.post("/api/v1/toy/disc/sweep", json={**base, **ends})
