@@ -8,10 +8,11 @@ the curves the papers plot.
 
 from __future__ import annotations
 
+import contextlib
 import math
 import threading
 import time
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -128,6 +129,24 @@ def choose_rung(
     ]
 
 
+@contextlib.contextmanager
+def _arithmetic_refused(spec: ModelSpec) -> Iterator[None]:
+    """A safety net under the declared ranges: a combination of extreme inputs that
+    overflows or divides by zero is refused (SolverFailed, 422), never a crash (500).
+    numpy's overflow/invalid warnings are silenced: a non-finite result becomes null with a
+    note (numpy's error state is per thread)."""
+    try:
+        with np.errstate(all="ignore"):
+            yield
+    except ArithmeticError as exc:
+        raise SolverFailed(
+            f"{spec.name} cannot be evaluated for these inputs: the arithmetic failed "
+            f"({type(exc).__name__}); values this extreme lie outside what the model "
+            "computes reliably",
+            error=type(exc).__name__,
+        ) from None
+
+
 def _finite(value: Value) -> bool:
     return not isinstance(value, float) or math.isfinite(value)
 
@@ -167,7 +186,8 @@ def run(
             + ", ".join(sorted(known)),
             field="outputs",
         )
-    rung, notes = choose_rung(spec, values, _fidelity(spec, fidelity, tolerance), tol)
+    with _arithmetic_refused(spec):
+        rung, notes = choose_rung(spec, values, _fidelity(spec, fidelity, tolerance), tol)
     start = time.perf_counter()
     ctx = RunContext(
         rung=rung,
@@ -177,17 +197,8 @@ def run(
         max_steps=max_steps,
         cancel=cancel,
     )
-    try:
+    with _arithmetic_refused(spec):
         result = spec.compute(values, ctx)
-    except ArithmeticError as exc:
-        # a safety net under the declared ranges: a combination of extreme inputs that
-        # overflows or divides by zero is refused (422), never a crash (500)
-        raise SolverFailed(
-            f"{spec.name} cannot be evaluated for these inputs: the arithmetic failed "
-            f"({type(exc).__name__}); values this extreme lie outside what the model "
-            "computes reliably",
-            error=type(exc).__name__,
-        ) from None
     elapsed = time.perf_counter() - start
 
     units = {o.name: o.unit for o in spec.outputs}
@@ -277,7 +288,11 @@ def sweep(
     wanted = list(outputs) if outputs is not None else None
     start = time.perf_counter()
     if spec.vectorized is not None and len(values) > 1:
-        fast = _sweep_vectorized(spec, base, param, values, wanted, fidelity, tolerance)
+        try:
+            with _arithmetic_refused(spec):
+                fast = _sweep_vectorized(spec, base, param, values, wanted, fidelity, tolerance)
+        except SolverFailed:
+            fast = None  # loop instead: the points that fail are null, with a note
         if fast is not None:
             fast.elapsed_s = time.perf_counter() - start
             return fast
