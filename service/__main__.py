@@ -1,5 +1,10 @@
 """``python -m service [--host H] [--port P] [--workers N]``: serve the API and the form.
 
+Connections: at most ``MAX_CONNECTIONS`` at once (uvicorn answers 503 beyond),
+each request head within ``HEADER_TIMEOUT_S`` (:mod:`service.connections`),
+each body chunk within ``BODY_TIMEOUT_S``; on SIGTERM, open requests get
+``SHUTDOWN_TIMEOUT_S`` to finish. Error lines are rate-limited per kind.
+
 uvicorn's own access log is off: :class:`service.middleware.FrontDoor` writes
 one JSON line per request to stdout instead (method, path, status,
 duration_ms, request_id; never a body). ``ACCESS_LOG=0`` silences it.
@@ -17,11 +22,15 @@ import uvicorn.config
 from uvicorn.config import LOGGING_CONFIG
 
 from .config import Settings
+from .connections import protocol
 
 
 def log_config(level: str) -> dict[str, Any]:
     """uvicorn's logging set-up plus the service's loggers (access lines as bare JSON)."""
     config: dict[str, Any] = copy.deepcopy(LOGGING_CONFIG)
+    config.setdefault("filters", {})["flood"] = {"()": "service.connections.FloodGuard"}
+    config["handlers"]["default"]["filters"] = ["flood"]
+    config["loggers"]["asyncio"] = {"handlers": ["default"], "level": "WARNING", "propagate": False}
     config["formatters"]["json_line"] = {"format": "%(message)s"}
     config["handlers"]["json_access"] = {
         "class": "logging.StreamHandler",
@@ -66,6 +75,10 @@ def main(argv: list[str] | None = None) -> None:
         access_log=False,
         server_header=False,
         date_header=False,
+        http=protocol(),
+        limit_concurrency=settings.max_connections,
+        timeout_keep_alive=5,
+        timeout_graceful_shutdown=settings.shutdown_timeout_s,
     )
 
 

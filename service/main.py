@@ -185,7 +185,12 @@ def create_app(
         for r in router.routes
         if isinstance(r, APIRoute) and "POST" in (r.methods or ())
     )
-    app.add_middleware(BodyGuard, limit=settings.max_body_bytes, json_paths=json_paths)
+    app.add_middleware(
+        BodyGuard,
+        limit=settings.max_body_bytes,
+        json_paths=json_paths,
+        body_timeout_s=settings.body_timeout_s,
+    )
     if settings.cors_origins:
         app.add_middleware(
             CORSMiddleware,

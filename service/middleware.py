@@ -9,6 +9,7 @@
 
 from __future__ import annotations
 
+import asyncio
 import json
 import logging
 import re
@@ -180,9 +181,16 @@ def _is_json(content_type: bytes | None) -> bool:
 class BodyGuard:
     """Refuse non-JSON bodies (415) and bodies over ``limit`` bytes (413), before they are read."""
 
-    def __init__(self, app: ASGIApp, limit: int, json_paths: frozenset[str] | None = None) -> None:
+    def __init__(
+        self,
+        app: ASGIApp,
+        limit: int,
+        json_paths: frozenset[str] | None = None,
+        body_timeout_s: float = 10.0,
+    ) -> None:
         self.app = app
         self.limit = limit
+        self.body_timeout_s = body_timeout_s
         #: Paths that take a JSON body by POST; any other path or method goes to the router
         #: unchecked, which answers 404/405 (None: every POST, PUT and PATCH is checked).
         self.json_paths = json_paths
@@ -220,14 +228,21 @@ class BodyGuard:
             return
         seen = 0
         started = False
+        complete = False
 
         async def limited() -> Message:
-            nonlocal seen
-            message = await receive()
+            nonlocal seen, complete
+            if complete:  # the body is in: what follows is http.disconnect, whenever it comes
+                return await receive()
+            try:
+                message = await asyncio.wait_for(receive(), self.body_timeout_s)
+            except TimeoutError:
+                raise BodyTimeout(self.body_timeout_s) from None
             if message["type"] == "http.request":
                 seen += len(message.get("body", b""))
                 if seen > self.limit:
                     raise BodyTooLarge(self.limit)
+                complete = not message.get("more_body", False)
             return message
 
         async def watch(message: Message) -> None:
@@ -241,6 +256,10 @@ class BodyGuard:
             if started:  # pragma: no cover - every route reads its body before answering
                 raise
             await self._too_large(send)
+        except BodyTimeout as exc:
+            if started:  # pragma: no cover
+                raise
+            await _refuse(send, 408, BodyTimeout.kind, exc.detail, [(b"connection", b"close")])
 
     async def _too_large(self, send: Send) -> None:
         await _refuse(send, 413, BodyTooLarge.kind, BodyTooLarge(self.limit).detail)
@@ -274,3 +293,14 @@ class BodyTooLarge(HTTPException):
 
     def __init__(self, limit: int) -> None:
         super().__init__(413, f"request body over the {limit}-byte limit (MAX_BODY_BYTES)")
+
+
+class BodyTimeout(HTTPException):
+    """A body chunk did not arrive within ``BODY_TIMEOUT_S`` (408, connection closed)."""
+
+    kind = "body_timeout"
+
+    def __init__(self, timeout_s: float) -> None:
+        super().__init__(
+            408, f"the request body stalled for {timeout_s:g} s (BODY_TIMEOUT_S); send it whole"
+        )

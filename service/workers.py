@@ -133,6 +133,7 @@ class Lane:
         self._ends: list[float] = []  # when each running computation's budget runs out
         self._executor: ThreadPoolExecutor | None = None
         self._lock = threading.Lock()
+        self._running: set[threading.Event] = set()  # the cancel events of running work
 
     # --- state -----------------------------------------------------------------------------
     @property
@@ -170,7 +171,8 @@ class Lane:
         self.running += 1
         self._by_client[client] = self._by_client.get(client, 0) + 1
 
-    def _release(self, client: str, end: float) -> None:
+    def _release(self, client: str, end: float, cancel: threading.Event) -> None:
+        self._running.discard(cancel)
         self.running -= 1
         left = self._by_client[client] - 1
         if left:
@@ -252,6 +254,7 @@ class Lane:
         await self._acquire(ticket, what)
         end = time.perf_counter() + budget_s
         self._ends.append(end)
+        self._running.add(ticket.cancel)
         loop = asyncio.get_running_loop()
         try:
             with self._lock:
@@ -261,12 +264,12 @@ class Lane:
                     )
                 future = self._executor.submit(fn, budget_s, ticket.cancel)
         except BaseException:
-            self._release(ticket.client, end)
+            self._release(ticket.client, end, ticket.cancel)
             raise
 
         def done(_: Future[Any]) -> None:
             if not loop.is_closed():  # a test's loop may end before an abandoned thread
-                loop.call_soon_threadsafe(self._release, ticket.client, end)
+                loop.call_soon_threadsafe(self._release, ticket.client, end, ticket.cancel)
 
         future.add_done_callback(done)
         try:
@@ -281,7 +284,13 @@ class Lane:
             ) from None
 
     def shutdown(self) -> None:
-        """Drop queued work and let the threads end; a later call starts a fresh pool."""
+        """Cancel running work (it stops at its next budget check), drop queued work.
+
+        The process can then exit within its stop timeout instead of waiting up to
+        BUDGET_S for each running computation; a later call starts a fresh pool.
+        """
+        for cancel in list(self._running):
+            cancel.set()
         with self._lock:
             executor, self._executor = self._executor, None
         if executor is not None:

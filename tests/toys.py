@@ -464,6 +464,11 @@ TOY_CRASH = _timed("crash", _crash, heavy=False)
 WELL_BEHAVED = (TOY, TOY_ODE)
 
 
+def crash_app(settings: Settings | None = None) -> FastAPI:
+    """A disc, a spin and a crash: for tests that run a real server process."""
+    return create_app(models=(TOY, TOY_SPIN, TOY_CRASH), settings=settings)
+
+
 def toy_app(settings: Settings | None = None) -> FastAPI:
     """The service over the well-behaved toys (``python -m service --factory ...:toy_app``)."""
     return create_app(models=WELL_BEHAVED, settings=settings)
