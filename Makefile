@@ -8,14 +8,20 @@ BIN := $(VENV)/bin
 
 .PHONY: run test test-fast check bench install clean
 
-$(VENV)/.installed-run: pyproject.toml
+# Dependencies come pinned from the lock files (scripts/lock regenerates them from
+# pyproject.toml); the project itself is installed on top without resolving again.
+PIP := $(BIN)/python -m pip install --quiet --disable-pip-version-check
+
+$(VENV)/.installed-run: pyproject.toml requirements.lock
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e .
+	$(PIP) -r requirements.lock
+	$(PIP) --no-deps -e .
 	touch $@
 
-$(VENV)/.installed-dev: pyproject.toml
+$(VENV)/.installed-dev: pyproject.toml requirements-dev.lock
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e '.[dev]'
+	$(PIP) -r requirements-dev.lock
+	$(PIP) --no-deps -e '.[dev]'
 	touch $@ $(VENV)/.installed-run
 
 $(VENV)/.installed-bench: $(VENV)/.installed-dev
