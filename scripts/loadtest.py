@@ -18,8 +18,12 @@ Endpoint choice (override with ``--closed /path`` and ``--sim /path``):
 With an empty registry the server runs the test toys instead
 (``tests.toys:toy_app``), so the script works on any checkout.
 
+Lanes (issue 20): the closed form again while 8 more clients keep sending the
+heaviest request (a 2,000-point simulation sweep of a stiff rare-impact design);
+its p99 must stay under 50 ms (``--no-heavy`` skips this part).
+
 Targets (issue 8): closed form ≥ 50 % of /healthz throughput, closed-form
-p99 < 50 ms. ``--check`` exits 1 when either is missed.
+p99 < 50 ms. ``--check`` exits 1 when one is missed.
 
 Usage::
 
@@ -223,6 +227,67 @@ def hammer(
     }
 
 
+#: The heaviest request the issue found (issue 20): a 2,000-point simulation sweep of a stiff
+#: rare-impact design, each taking the whole 10 s budget. Four of them stalled a closed form 9 s.
+HEAVIEST = (
+    "/api/v1/impact/rare/sweep",
+    {
+        "base": {"power_spring_rate": 5e6, "flywheel_inertia": 0.02},
+        "vary": "motor_torque",
+        "start": 4.9,
+        "stop": 5.0,
+        "num": 2000,
+        "fidelity": "simulation",
+    },
+)
+
+
+def beside_heavy(
+    url: str,
+    closed: dict[str, Any],
+    heavy: tuple[str, dict[str, Any]],
+    requests: int,
+    seconds: float,
+    concurrency: int,
+    heavy_clients: int = 8,
+) -> dict[str, Any]:
+    """Closed-form latency while ``heavy_clients`` keep sending the heaviest request."""
+    stop = threading.Event()
+    heavy_status: dict[int, int] = {}
+    heavy_ms: list[float] = []
+    lock = threading.Lock()
+
+    def heavy_loop() -> None:
+        with httpx.Client(base_url=url, timeout=60) as client:
+            while not stop.is_set():
+                t = time.perf_counter()
+                r = client.post(heavy[0], json=heavy[1])
+                with lock:
+                    heavy_status[r.status_code] = heavy_status.get(r.status_code, 0) + 1
+                    heavy_ms.append((time.perf_counter() - t) * 1e3)
+                if r.status_code == 503:  # honour Retry-After, as a polite client would
+                    stop.wait(min(float(r.headers.get("retry-after", "1")), 2.0))
+
+    threads = [threading.Thread(target=heavy_loop) for _ in range(heavy_clients)]
+    for th in threads:
+        th.start()
+    time.sleep(1.0)  # let the heavy lane fill
+    r = hammer(url, "POST", closed["path"], closed["body"], requests, seconds, concurrency)
+    stop.set()
+    for th in threads:
+        th.join()
+    heavy_ms.sort()
+    return {
+        "model": closed["model"],
+        "rung": closed["rung"],
+        **r,
+        "heavy_clients": heavy_clients,
+        "heavy_path": heavy[0],
+        "heavy_statuses": {str(k): v for k, v in sorted(heavy_status.items())},
+        "heavy_p50_ms": round(heavy_ms[len(heavy_ms) // 2], 1) if heavy_ms else None,
+    }
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--url", help="an already running server (loopback only)")
@@ -234,6 +299,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--sim", help="simulation endpoint path")
     parser.add_argument("--out", default=str(ROOT / "bench" / "loadtest.json"))
     parser.add_argument("--check", action="store_true", help="exit 1 if a target is missed")
+    parser.add_argument(
+        "--no-heavy",
+        action="store_true",
+        help="skip the closed form beside 8 clients of the heaviest request (issue 20)",
+    )
     args = parser.parse_args(argv)
     requests = max(1, min(args.requests, 20_000))
     seconds = max(1.0, min(args.seconds, 120.0))
@@ -272,6 +342,22 @@ def main(argv: list[str] | None = None) -> int:
                 continue
             r = hammer(url, "POST", chosen["path"], chosen["body"], n, seconds, concurrency, pid)
             results[key] = {"model": chosen["model"], "rung": chosen["rung"], **r}
+        if closed is not None and not args.no_heavy:
+            with httpx.Client(base_url=url) as client:
+                paths = {
+                    "/api/v1" + m["path"] for m in client.get("/api/v1/models").json()["models"]
+                }
+            heavy = (
+                HEAVIEST
+                if HEAVIEST[0].removesuffix("/sweep") in paths
+                else (sim["path"], sim["body"])
+                if sim is not None
+                else None
+            )
+            if heavy is not None:
+                results["closed_form_beside_heavy"] = beside_heavy(
+                    url, closed, heavy, requests, seconds, concurrency
+                )
     finally:
         if proc is not None:
             proc.terminate()
@@ -289,6 +375,10 @@ def main(argv: list[str] | None = None) -> int:
             "closed_form_p99_ms": results["closed_form"]["p99_ms"],
             "p99_target_met": results["closed_form"]["p99_ms"] < 50.0,
         }
+        if "closed_form_beside_heavy" in results:
+            p99 = results["closed_form_beside_heavy"]["p99_ms"]
+            targets["closed_form_p99_beside_heavy_ms"] = p99
+            targets["lanes_target_met"] = p99 < 50.0
     report = {
         "when": datetime.now(UTC).isoformat(timespec="seconds"),
         "url": url,
@@ -311,7 +401,11 @@ def main(argv: list[str] | None = None) -> int:
             f"{r['server_cpu_ms_per_request'] or '-':>7}  {r['statuses']}"
         )
     print(json.dumps(targets), f"-> {out}")
-    missed = targets and not (targets["throughput_target_met"] and targets["p99_target_met"])
+    missed = targets and not (
+        targets["throughput_target_met"]
+        and targets["p99_target_met"]
+        and targets.get("lanes_target_met", True)
+    )
     return 1 if args.check and missed else 0
 
 
