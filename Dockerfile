@@ -35,7 +35,7 @@ EXPOSE 8000
 # liveness only: /readyz says whether the engine can take work right now
 HEALTHCHECK --interval=5s --timeout=3s --start-period=20s --retries=3 \
     CMD ["python", "-c", "import sys, urllib.request; sys.exit(urllib.request.urlopen('http://127.0.0.1:8000/healthz', timeout=2).status != 200)"]
-# SIGTERM: uvicorn stops accepting, open requests get SHUTDOWN_TIMEOUT_S (5 s), running
+# SIGTERM: uvicorn stops accepting, open requests get SHUTDOWN_TIMEOUT_S (3 s), running
 # computations are cancelled; `docker stop` waits 10 s by default.
 STOPSIGNAL SIGTERM
 CMD ["python", "-m", "service", "--host", "0.0.0.0", "--port", "8000"]

@@ -65,7 +65,7 @@ class Settings:
     #: A request's headers must arrive within this many seconds of its first byte [s].
     header_timeout_s: float = field(default_factory=lambda: _float("HEADER_TIMEOUT_S", 10.0))
     #: On SIGTERM, how long open requests may take to finish before the process exits [s].
-    shutdown_timeout_s: int = field(default_factory=lambda: _int("SHUTDOWN_TIMEOUT_S", 5))
+    shutdown_timeout_s: int = field(default_factory=lambda: _int("SHUTDOWN_TIMEOUT_S", 3))
     #: Each piece of a request body must arrive within this many seconds [s].
     body_timeout_s: float = field(default_factory=lambda: _float("BODY_TIMEOUT_S", 10.0))
     #: How long past its budget a computation that ignores its deadline is waited for [s].

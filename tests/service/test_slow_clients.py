@@ -150,7 +150,7 @@ def test_sigterm_under_load_stops_within_the_stop_timeout(
     stopped = time.monotonic() - start
     for t in threads:
         t.join(5)
-    assert stopped < 10, stopped  # SHUTDOWN_TIMEOUT_S is 5 s
+    assert stopped < 10, stopped  # SHUTDOWN_TIMEOUT_S is 3 s, then running work is cancelled
     # one line for the 500 of the test above, and no traceback anywhere
     assert out.count("slow-500") == 1, out[-3000:]
     assert "Traceback" not in out, out[-3000:]
