@@ -19,9 +19,9 @@ from ..clutch import (
     RECOMMENDED_GROOVE_ANGLE,
     RECOMMENDED_LOAD_FACTOR,
     WORKABLE_SPRING_INDEX,
-    ball_axial_force,
     ball_normal_force,
     ball_tangential_force,
+    combined_push_factor,
     flank_push_factor,
     spring_deflection_for_force,
     spring_force_for_torque,
@@ -34,6 +34,7 @@ from ..clutch import (
 )
 from ..errors import InfeasibleDesign, InputOutOfRange
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from . import _clutch_asbuilt as asbuilt
 from ._common import DEG, count, friction_coefficient, length
 
 # --------------------------------------------------------------------------
@@ -47,7 +48,7 @@ TYPICAL_FLANK_FRICTION = 0.1
 FLANK_FRICTION_SCATTER = 0.03
 
 
-def _common_params(*, wire_required: bool, deflection_required: bool) -> tuple[Param, ...]:
+def _common_params(*, deflection_required: bool) -> tuple[Param, ...]:
     return (
         length(
             "ball_circle_diameter",
@@ -114,27 +115,25 @@ def _common_params(*, wire_required: bool, deflection_required: bool) -> tuple[P
         ),
         length(
             "spring_wire_diameter",
-            "d0, spring wire diameter [001, eq. 2]",
+            "d0, wire diameter of the helical spring [001, eq. 2]",
             minimum=1e-5,
             maximum=0.05,
-            required=wire_required,
+            required=False,
             symbol="d0",
             group="spring",
         ),
         length(
             "spring_mean_diameter",
-            "D, mean coil diameter of the spring [001, eq. 2]",
+            "D, mean coil diameter of the helical spring [001, eq. 2]",
             minimum=1e-4,
             maximum=0.5,
-            required=True,
             symbol="D",
             group="spring",
         ),
         Param(
             "spring_active_coils",
             "1",
-            "i_p, number of active coils [001, eq. 2]",
-            required=True,
+            "i_p, number of active coils of the helical spring [001, eq. 2]",
             minimum=1.0,
             maximum=1000.0,
             symbol="i_p",
@@ -142,7 +141,8 @@ def _common_params(*, wire_required: bool, deflection_required: bool) -> tuple[P
         ),
         length(
             "spring_deflection",
-            "Δ, spring compression, taken equal to the groove depth as in [001, eq. 2]",
+            "Δ, spring compression with the balls seated (the nut setting); the paper also "
+            "takes it as the groove depth [001, eq. 2], which ball_lift separates",
             minimum=1e-6,
             maximum=0.5,
             required=deflection_required,
@@ -360,18 +360,17 @@ def _friction_note(alpha: float, f: float) -> str:
 
 
 _SPRING_NOTE = (
-    "Δ is taken, as in the paper, both as the spring compression at slip and as the "
-    "groove depth; the rise of the spring force as the ball climbs (rate × climb) is "
-    "neglected, so the torque to push a ball fully out is somewhat higher."
+    "required_spring_force and the deflection or wire that give it set the torque at which "
+    "the balls start to move (zero lift, [001, eq. 3]); while they climb the spring is "
+    "compressed further, see required_peak_setting and the stresses over the lift."
 )
 
 
 def _forward_values(x: Mapping[str, Any]) -> dict[str, Any]:
     """Every output of clutch.ball, on floats or arrays (one input may be an array)."""
-    g, d0, dm = x["shear_modulus"], x["spring_wire_diameter"], x["spring_mean_diameter"]
+    spring = asbuilt.Spring(x)
     alpha, f, kr = x["groove_angle"], x["flank_friction"], x["load_factor"]
-    rate = spring_rate(g, d0, dm, x["spring_active_coils"])
-    force = np.asarray(rate) * np.asarray(x["spring_deflection"])
+    force = spring.force(x["spring_deflection"])
     limit = torque_limit(
         force,
         x["ball_circle_diameter"],
@@ -381,35 +380,56 @@ def _forward_values(x: Mapping[str, Any]) -> dict[str, Any]:
         f,
         x["spring_arrangement"],
     )
+    if x["driving_groove_angle"] is not None:
+        # both flanks lift the ball: the same spring holds less torque
+        limit = (
+            np.asarray(limit)
+            * flank_push_factor(alpha, f)
+            / combined_push_factor(alpha, f, x["driving_groove_angle"])
+        )
     at = limit if x["torque"] is None else x["torque"]
     tangential = ball_tangential_force(at, x["ball_circle_diameter"], x["ball_count"], kr)
-    index = spring_index(dm, d0)
-    return {
+    values: dict[str, Any] = {
         "spring_force": force,
         "torque_limit": limit,
         "ball_tangential_force": tangential,
-        "ball_axial_force": ball_axial_force(tangential, alpha, f),
+        "ball_axial_force": np.asarray(tangential)
+        * combined_push_factor(alpha, f, x["driving_groove_angle"]),
         "ball_normal_force": ball_normal_force(tangential, alpha, f),
-        "spring_index": index,
-        "wahl_factor": wahl_factor(index),
-        "spring_shear_stress": spring_shear_stress(force, dm, d0),
-        "spring_rate": rate,
     }
+    if spring.kind == "helical":
+        d0, dm = x["spring_wire_diameter"], x["spring_mean_diameter"]
+        index = spring_index(dm, d0)
+        values["spring_index"] = index
+        values["wahl_factor"] = wahl_factor(index)
+        values["spring_shear_stress"] = spring_shear_stress(force, dm, d0)
+        values["spring_rate"] = spring_rate(spring.shear_modulus, d0, dm, x["spring_active_coils"])
+    values.update(asbuilt.extra_values(x, spring, limit))
+    return values
 
 
 def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    _require_workable(x, x["spring_wire_diameter"])
+    asbuilt.require_spring(x, wire_needed=True)
+    helical = x["spring_type"] == "helical"
+    _require_workable(x, x["spring_wire_diameter"] if helical else None)
     with np.errstate(all="ignore"):
-        v = {k: float(val) for k, val in _forward_values(x).items()}
+        v: dict[str, Any] = {k: float(val) for k, val in _forward_values(x).items()}
     alpha, f = x["groove_angle"], x["flank_friction"]
     push = float(flank_push_factor(alpha, f))
-    checks = [
-        _index_check("spring_index", v["spring_index"], v["wahl_factor"]),
-        *_stress_check(
+    spring = asbuilt.Spring(x)
+    lift = asbuilt.lift_of(x)
+    checks: list[Check] = []
+    if helical:
+        checks.append(_index_check("spring_index", v["spring_index"], v["wahl_factor"]))
+        checks += _stress_check(
             "spring_shear_stress", v["spring_shear_stress"], x["allowable_shear_stress"]
-        ),
+        )
+    checks += [
         _groove_check(
-            "groove_depth", x["spring_deflection"], x["ball_diameter"], "= spring deflection Δ"
+            "groove_depth",
+            lift,
+            x["ball_diameter"],
+            "= spring deflection Δ" if x["ball_lift"] is None else "= ball lift h",
         ),
         _angle_check(alpha),
     ]
@@ -427,21 +447,28 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 + ("" if ok else ": the clutch slips at this torque"),
             )
         )
+    checks += asbuilt.checks(x, spring, v)
     notes = [
         *_arrangement_notes(x, v["spring_force"], push),
         _friction_note(alpha, f),
         f"ball forces are for the most-loaded ball (K_r = {x['load_factor']:g}) {where}; "
         "F_a = F_t tan(α − ρ), F_N = F_t / (cos α + f sin α) [001, eq. 1].",
-        _SPRING_NOTE,
+        *asbuilt.notes(x, spring, v),
     ]
-    if x["allowable_shear_stress"] is None:
-        notes.append("give allowable_shear_stress to check the spring wire's strength")
+    if helical and x["allowable_shear_stress"] is None and x["spring_material"] == "custom":
+        notes.append(
+            "give allowable_shear_stress or spring_material to check the spring wire's strength"
+        )
+    wanted_series = {"lift", "torque_curve", "spring_force_curve", "spring_stress_curve"}
+    series = asbuilt.series(x, spring) if any(ctx.wants(n) for n in wanted_series) else {}
     return Result(
         values={k: val for k, val in v.items() if ctx.wants(k)},
         rung=ctx.rung,
         error_estimate=_estimate(x),
         checks=checks,
         notes=notes,
+        warnings=asbuilt.warnings(x),
+        series=series,
     )
 
 
@@ -458,6 +485,11 @@ def _masked(values: Mapping[str, Any], ok: npt.NDArray[np.bool_]) -> dict[str, A
 
 
 def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    if x["spring_type"] != "helical" or x["spring_wire_diameter"] is None:
+        # disc springs (and refusals) go point by point through the scalar compute
+        return Result(values={}, rung=ctx.rung, error_estimate=None)
+    if x["spring_material"] != "custom" and np.ndim(x["spring_wire_diameter"]) > 0:
+        return Result(values={}, rung=ctx.rung, error_estimate=None)
     with np.errstate(all="ignore"):
         values = _masked(_forward_values(x), _feasible_mask(x, x["spring_wire_diameter"]))
     return Result(
@@ -483,7 +515,7 @@ BALL_CLUTCH = ModelSpec(
         "ball overturn coupling, eq. 1–3; spring checks after Wahl"
     ),
     inputs=(
-        *_common_params(wire_required=True, deflection_required=True),
+        *_common_params(deflection_required=True),
         Param(
             "torque",
             "N*m",
@@ -494,9 +526,15 @@ BALL_CLUTCH = ModelSpec(
             symbol="T",
         ),
         _allowable_param(),
+        *asbuilt.params(),
     ),
     outputs=(
-        Output("spring_force", "N", "F_spring = G d0⁴ Δ / (8 D³ i_p) [001, eq. 2]"),
+        Output(
+            "spring_force",
+            "N",
+            "spring force at the setting Δ: G d0⁴ Δ / (8 D³ i_p) [001, eq. 2], or the disc "
+            "stack's (DIN EN 16983)",
+        ),
         Output(
             "torque_limit",
             "N*m",
@@ -524,6 +562,7 @@ BALL_CLUTCH = ModelSpec(
             display_unit="MPa",
         ),
         Output("spring_rate", "N/m", "c = G d0⁴/(8 D³ i_p) [001, eq. 2]", display_unit="N/mm"),
+        *asbuilt.outputs(),
     ),
     rungs=(_RUNG,),
     compute=_compute_ball,
@@ -728,7 +767,7 @@ BALL_CLUTCH_SETTING = ModelSpec(
             display_unit="N*m",
             symbol="T",
         ),
-        *_common_params(wire_required=False, deflection_required=False),
+        *_common_params(deflection_required=False),
         _allowable_param(),
     ),
     outputs=(
