@@ -808,3 +808,155 @@ def solve_setting(
 
 
 Candidate = Callable[[float], Mapping[str, Any]]
+
+
+# --------------------------------------------------------------------------
+# The inverse on the as-built inputs (clutch.ball_setting)
+# --------------------------------------------------------------------------
+
+
+def setting_outputs() -> tuple[Output, ...]:
+    """The as-built outputs of clutch.ball_setting."""
+    return (
+        Output(
+            "required_peak_setting",
+            "m",
+            "nut setting (spring deflection with the balls seated) whose PEAK torque over the "
+            "lift is the target, with the given spring; null where none reaches it",
+            display_unit="mm",
+        ),
+        Output(
+            "peak_setting_stress_max",
+            "Pa",
+            "largest spring stress over the lift at required_peak_setting",
+            display_unit="MPa",
+        ),
+        Output(
+            "suggested_wire_diameter",
+            "m",
+            "smallest preferred wire (EN 10270-1 sizes, index 4…12, same D and i_p) that "
+            "reaches the target peak torque within the permissible stress",
+            display_unit="mm",
+        ),
+        Output(
+            "suggested_wire_setting",
+            "m",
+            "nut setting of the suggested wire for the target peak torque",
+            display_unit="mm",
+        ),
+        Output(
+            "suggested_disc_parallel",
+            "1",
+            "fewest discs in parallel per pack (same discs and series count) that reach the "
+            "target peak torque within σ_OM ≤ yield and without passing flat",
+            kind="int",
+        ),
+        Output(
+            "suggested_disc_setting",
+            "m",
+            "stack setting with the suggested number of discs in parallel",
+            display_unit="mm",
+        ),
+    )
+
+
+def _upper_setting(x: Mapping[str, Any], spring: Spring, force: float) -> float:
+    if spring.kind == "disc":
+        return float(x["disc_series"] * x["disc_cone_height"])
+    rate = float(spring.force(1.0))
+    return max(force / rate, 1e-9) * 1.000001
+
+
+def _peak_setting(
+    x: Mapping[str, Any], spring: Spring, target: float, force: float
+) -> tuple[float, float] | None:
+    """(setting, largest stress over the lift) for the target peak torque, or None."""
+    delta = solve_setting(x, spring, target, _upper_setting(x, spring, force))
+    if delta is None:
+        return None
+    c = characteristic(x, spring, delta)
+    if spring.kind == "disc":
+        per_disc = (delta + float(c["total_lift"])) / x["disc_series"]
+        if per_disc > x["disc_cone_height"]:
+            return None  # reached only past flat
+    return delta, float(c["spring_stress_max"])
+
+
+def setting_values(x: Mapping[str, Any], force: float) -> tuple[dict[str, Any], list[str]]:
+    """As-built outputs of the inverse and the notes that explain them (scalar inputs)."""
+    target = float(x["target_torque"])
+    values: dict[str, Any] = {}
+    notes: list[str] = []
+    helical = x["spring_type"] == "helical"
+    if not helical or x["spring_wire_diameter"] is not None:
+        spring = Spring(x)
+        found = _peak_setting(x, spring, target, force)
+        if found is None:
+            notes.append(
+                "required_peak_setting is null: no setting of this spring gives the target as "
+                "its peak torque (the lift alone overshoots it, or a disc stack would pass flat)"
+            )
+        else:
+            values["required_peak_setting"], values["peak_setting_stress_max"] = found
+    if helical and x["spring_mean_diameter"] is not None:
+        values.update(_suggest_wire(x, target, force, notes))
+    if not helical:
+        values.update(_suggest_parallel(x, target, force, notes))
+    return values, notes
+
+
+def _suggest_wire(
+    x: Mapping[str, Any], target: float, force: float, notes: list[str]
+) -> dict[str, Any]:
+    if x["spring_material"] == "custom" and x["allowable_shear_stress"] is None:
+        notes.append("give spring_material or allowable_shear_stress for a suggested wire diameter")
+        return {}
+    dm = x["spring_mean_diameter"]
+    for d_mm in sp.STANDARD_WIRE_DIAMETERS:
+        d = d_mm * 1e-3
+        if not 4.0 <= dm / d <= 12.0:
+            continue
+        trial = {**x, "spring_wire_diameter": d}
+        try:
+            spring = Spring(trial)
+            allow = spring.permissible()
+        except InputOutOfRange:
+            continue  # outside the material's table
+        found = _peak_setting(trial, spring, target, force)
+        if found is None or allow is None or found[1] > allow:
+            continue
+        notes.append(
+            f"suggested wire {d_mm:g} mm: the thinnest preferred size that reaches "
+            f"{target:.4g} N·m at its peak with {found[1] / 1e6:.4g} MPa ≤ {allow / 1e6:.4g} MPa"
+        )
+        return {"suggested_wire_diameter": d, "suggested_wire_setting": found[0]}
+    notes.append("no preferred wire with spring index 4…12 reaches the target within its stress")
+    return {}
+
+
+def _suggest_parallel(
+    x: Mapping[str, Any], target: float, force: float, notes: list[str]
+) -> dict[str, Any]:
+    for n in range(1, 9):
+        trial = {**x, "disc_parallel": n}
+        spring = Spring(trial)
+        found = _peak_setting(trial, spring, target, force)
+        if found is not None and found[1] <= float(x["disc_yield_strength"]):
+            return {"suggested_disc_parallel": n, "suggested_disc_setting": found[0]}
+    notes.append("no stack of up to 8 of these discs in parallel reaches the target")
+    return {}
+
+
+def disc_breakaway_setting(x: Mapping[str, Any], force: float) -> float | None:
+    """Stack setting whose force is ``force`` on the rising branch; None if none gives it."""
+    spring = Spring(x)
+    region = sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])
+    top = region[0] if region is not None else x["disc_cone_height"]
+    upper = float(x["disc_series"] * min(top, x["disc_cone_height"]))
+
+    def excess(delta: float) -> float:
+        return float(spring.force(delta)) - force
+
+    if excess(upper) < 0.0:
+        return None
+    return float(brentq(excess, 0.0, upper, xtol=1e-13, rtol=1e-12))

@@ -491,13 +491,31 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if x["spring_material"] != "custom" and np.ndim(x["spring_wire_diameter"]) > 0:
         return Result(values={}, rung=ctx.rung, error_estimate=None)
     with np.errstate(all="ignore"):
-        values = _masked(_forward_values(x), _feasible_mask(x, x["spring_wire_diameter"]))
+        values = _masked(_chunked_forward(x), _feasible_mask(x, x["spring_wire_diameter"]))
     return Result(
         values={k: v for k, v in values.items() if ctx.wants(k)},
         rung=ctx.rung,
         error_estimate=None,
         notes=[f"spring_arrangement = {x['spring_arrangement']}; see a single run's notes"],
     )
+
+
+#: Points of a swept input evaluated at once (the characteristic holds 81 per point).
+_CHUNK = 20_000
+
+
+def _chunked_forward(x: Mapping[str, Any]) -> dict[str, Any]:
+    """:func:`_forward_values` over a long swept input, a chunk at a time (bounded memory)."""
+    swept = [k for k, v in x.items() if isinstance(v, np.ndarray) and v.ndim > 0]
+    if not swept or np.size(x[swept[0]]) <= _CHUNK:
+        return _forward_values(x)
+    key, arr = swept[0], np.asarray(x[swept[0]])
+    parts = [_forward_values({**x, key: arr[i : i + _CHUNK]}) for i in range(0, arr.size, _CHUNK)]
+    return {
+        k: np.concatenate([np.broadcast_to(p[k], np.shape(arr[i * _CHUNK : (i + 1) * _CHUNK]))
+                           for i, p in enumerate(parts)])
+        for k in parts[0]
+    }  # fmt: skip
 
 
 BALL_CLUTCH = ModelSpec(
@@ -650,23 +668,40 @@ def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
 
 def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
     wire, deflection = x["spring_wire_diameter"], x["spring_deflection"]
-    if wire is None and deflection is None:
+    helical = x["spring_type"] == "helical"
+    if helical and wire is None and deflection is None:
         raise InputOutOfRange(
             "give spring_wire_diameter (to get the deflection that sets the target torque) "
             "or spring_deflection (to get the wire diameter), or both",
             field="spring_wire_diameter",
         )
-    _require_workable(x, wire)
-    with np.errstate(all="ignore"):
-        v: dict[str, Any] = {k: float(val) for k, val in _setting_values(x).items()}
-    no_coil = deflection is not None and v["required_wire_spring_index"] <= 1.0
+    asbuilt.require_spring(x, wire_needed=False)
+    _require_workable(x, wire if helical else None)
+    if helical:
+        with np.errstate(all="ignore"):
+            v: dict[str, Any] = {k: float(val) for k, val in _setting_values(x).items()}
+    else:
+        force = spring_force_for_torque(
+            x["target_torque"],
+            x["ball_circle_diameter"],
+            x["groove_angle"],
+            x["ball_count"],
+            x["load_factor"],
+            x["flank_friction"],
+            x["spring_arrangement"],
+        )
+        v = {"required_spring_force": float(force)}
+        v["required_deflection"] = asbuilt.disc_breakaway_setting(x, float(force))
+    extra, extra_notes = asbuilt.setting_values(x, v["required_spring_force"])
+    v.update(extra)
+    no_coil = helical and deflection is not None and v["required_wire_spring_index"] <= 1.0
     if no_coil:
         # no coil exists for C <= 1: its stress is not a number, say so rather than NaN
         v["required_wire_shear_stress"] = None
     alpha, f = x["groove_angle"], x["flank_friction"]
     allow = x["allowable_shear_stress"]
     checks: list[Check] = []
-    if wire is not None:
+    if helical and wire is not None:
         kw = float(wahl_factor(v["spring_index"]))
         checks.append(_index_check("spring_index", v["spring_index"], kw))
         checks += _stress_check(
@@ -678,12 +713,12 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         checks.append(
             _groove_check(
                 "required_deflection_groove_depth",
-                v["required_deflection"],
+                asbuilt.lift_of(x, v["required_deflection"]),
                 x["ball_diameter"],
-                "= required deflection",
+                "= required deflection" if x["ball_lift"] is None else "= ball lift h",
             )
         )
-    if deflection is not None:
+    if helical and deflection is not None:
         idx = v["required_wire_spring_index"]
         if no_coil:
             checks.append(
@@ -704,8 +739,27 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 f"required wire ({v['required_wire_diameter'] * 1e3:.4g} mm)",
             )
         checks.append(
-            _groove_check("groove_depth", deflection, x["ball_diameter"], "= given deflection")
+            _groove_check(
+                "groove_depth",
+                asbuilt.lift_of(x, deflection),
+                x["ball_diameter"],
+                "= given deflection" if x["ball_lift"] is None else "= ball lift h",
+            )
         )
+    if v.get("peak_setting_stress_max") is not None:
+        limit = asbuilt.Spring(x).permissible()
+        if limit is not None:
+            ok = v["peak_setting_stress_max"] <= limit
+            checks.append(
+                Check(
+                    "peak_setting_stress_max",
+                    ok,
+                    f"largest spring stress over the lift at the peak setting "
+                    f"{v['peak_setting_stress_max'] / 1e6:.4g} MPa "
+                    + ("≤" if ok else ">")
+                    + f" permissible {limit / 1e6:.4g} MPa",
+                )
+            )
     checks.append(_angle_check(alpha))
     push = float(flank_push_factor(alpha, f))
     notes = [
@@ -716,6 +770,7 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "deflection, d0 = (8 F D³ i_p / (G Δ))^¼ [001, eq. 2]; round it to a stock wire "
         "size and re-set the deflection.",
         _SPRING_NOTE,
+        *extra_notes,
     ]
     if no_coil:
         notes.append(
@@ -732,7 +787,9 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 
 def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    if x["spring_wire_diameter"] is None and x["spring_deflection"] is None:
+    if x["spring_type"] != "helical" or (
+        x["spring_wire_diameter"] is None and x["spring_deflection"] is None
+    ):
         return Result(values={}, rung=ctx.rung, error_estimate=None)
     with np.errstate(all="ignore"):
         values = _setting_values(x)
@@ -769,6 +826,7 @@ BALL_CLUTCH_SETTING = ModelSpec(
         ),
         *_common_params(deflection_required=False),
         _allowable_param(),
+        *asbuilt.params(),
     ),
     outputs=(
         Output(
@@ -803,6 +861,7 @@ BALL_CLUTCH_SETTING = ModelSpec(
             "wire stress of the required wire at the required force",
             display_unit="MPa",
         ),
+        *asbuilt.setting_outputs(),
     ),
     rungs=(_RUNG,),
     compute=_compute_setting,
