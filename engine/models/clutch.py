@@ -365,6 +365,16 @@ _SPRING_NOTE = (
     "compressed further, see required_peak_setting and the stresses over the lift."
 )
 
+#: True of every answer of both clutch models (the runner adds it to the notes).
+ASSUMPTIONS = (
+    (
+        "Quasi-static, rigid parts, ball inertia neglected. torque_limit is the paper's "
+        "zero-lift value [001, eq. 3]; while the balls climb the spring is compressed by the "
+        "lift, so the torque and the spring force and stress follow the characteristic "
+        "(peak_torque, spring_stress_max)."
+    ),
+)
+
 
 def _forward_values(x: Mapping[str, Any]) -> dict[str, Any]:
     """Every output of clutch.ball, on floats or arrays (one input may be an array)."""
@@ -462,7 +472,7 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
     wanted_series = {"lift", "torque_curve", "spring_force_curve", "spring_stress_curve"}
     series = asbuilt.series(x, spring) if any(ctx.wants(n) for n in wanted_series) else {}
     return Result(
-        values={k: val for k, val in v.items() if ctx.wants(k)},
+        values=dict(v),
         rung=ctx.rung,
         error_estimate=_estimate(x),
         checks=checks,
@@ -493,7 +503,7 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
     with np.errstate(all="ignore"):
         values = _masked(_chunked_forward(x), _feasible_mask(x, x["spring_wire_diameter"]))
     return Result(
-        values={k: v for k, v in values.items() if ctx.wants(k)},
+        values=values,
         rung=ctx.rung,
         error_estimate=None,
         notes=[f"spring_arrangement = {x['spring_arrangement']}; see a single run's notes"],
@@ -520,7 +530,6 @@ def _chunked_forward(x: Mapping[str, Any]) -> dict[str, Any]:
 
 BALL_CLUTCH = ModelSpec(
     name="clutch.ball",
-    path="/clutch/ball",
     title="Ball safety clutch: torque limit",
     family="clutch",
     summary=(
@@ -587,6 +596,7 @@ BALL_CLUTCH = ModelSpec(
     # one rung: by default run it plainly; "auto" would note that the frictionless
     # default cannot meet 1 % (the estimate is the effect of neglected flank friction)
     default_fidelity="closed_form",
+    assumptions=ASSUMPTIONS,
     examples=(
         # [001] worked case: D0 = 50 mm, i = 4, d = 10 mm, D = 45 mm, i_p = 5, α = 45°,
         # G = 8·10⁴ MPa; d0 = 0.5…4 mm and Δ = 4…10 mm: d0 = 4 mm, Δ = 4 mm is the one
@@ -778,7 +788,7 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "at this deflection is as thick as the coil itself (spring index ≤ 1)"
         )
     return Result(
-        values={k: val for k, val in v.items() if ctx.wants(k)},
+        values=v,
         rung=ctx.rung,
         error_estimate=_estimate(x),
         checks=checks,
@@ -795,7 +805,7 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         values = _setting_values(x)
         values = _masked(values, _feasible_mask(x, x["spring_wire_diameter"]))
     return Result(
-        values={k: v for k, v in values.items() if ctx.wants(k)},
+        values=values,
         rung=ctx.rung,
         error_estimate=None,
     )
@@ -803,7 +813,6 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 BALL_CLUTCH_SETTING = ModelSpec(
     name="clutch.ball_setting",
-    path="/clutch/ball/setting",
     title="Ball safety clutch: setting for a target torque",
     family="clutch",
     summary=(
@@ -868,6 +877,7 @@ BALL_CLUTCH_SETTING = ModelSpec(
     # one rung: by default run it plainly; "auto" would note that the frictionless
     # default cannot meet 1 % (the estimate is the effect of neglected flank friction)
     default_fidelity="closed_form",
+    assumptions=ASSUMPTIONS,
     examples=(
         # The paper's clutch (D0 = 50 mm, i = 4, d = 10 mm, D = 45 mm, i_p = 5, α = 45°,
         # d0 = 4 mm) set for 0.5 N·m; the wire for Δ = 4 mm.
