@@ -34,6 +34,7 @@ PHYSICS = [
     "preload_methods",
     "rare_impact",
     "rare_impact_sim",
+    "springs",
     "threads",
 ]
 
