@@ -22,11 +22,15 @@ from scipy.optimize import brentq
 
 from .. import springs as sp
 from ..clutch import (
+    RECOMMENDED_SERVICE_FACTOR,
     SELF_LOCKING_MARGIN,
     combined_push_factor,
     friction_sensitivity,
     residual_torque,
 )
+from ..clutch import acceleration_torque as cl_acceleration_torque
+from ..clutch import rated_torque as cl_rated_torque
+from ..clutch import required_slip_torque as cl_required_slip_torque
 from ..errors import InputOutOfRange
 from ..spec import Check, Output, Param
 from ._common import DEG, count, friction_coefficient, length, positive
@@ -925,6 +929,17 @@ def _suggest_wire(
         found = _peak_setting(trial, spring, target, force)
         if found is None or allow is None or found[1] > allow:
             continue
+        if x["spring_free_length"] is not None:
+            travel = found[0] + float(characteristic(trial, spring, found[0])["total_lift"])
+            room = float(sp.solid_length(d, x["spring_active_coils"]))
+            room += float(sp.minimum_gap_sum(d, dm, x["spring_active_coils"]))
+            if x["spring_free_length"] - travel < room:
+                continue  # would go solid
+        else:
+            notes.append(
+                "spring_free_length not given: the suggested wire's setting is not limited by "
+                "its solid length"
+            )
         notes.append(
             f"suggested wire {d_mm:g} mm: the thinnest preferred size that reaches "
             f"{target:.4g} N·m at its peak with {found[1] / 1e6:.4g} MPa ≤ {allow / 1e6:.4g} MPa"
@@ -960,3 +975,107 @@ def disc_breakaway_setting(x: Mapping[str, Any], force: float) -> float | None:
     if excess(upper) < 0.0:
         return None
     return float(brentq(excess, 0.0, upper, xtol=1e-13, rtol=1e-12))
+
+
+# --------------------------------------------------------------------------
+# Sizing from the drive (clutch.ball_setting)
+# --------------------------------------------------------------------------
+
+
+def sizing_params() -> tuple[Param, ...]:
+    """Inputs that give the required slip torque from the drive."""
+    return (
+        positive(
+            "drive_torque",
+            "N*m",
+            "rated (or peak working) torque of the drive; or give drive_power and drive_speed",
+            maximum=1e6,
+            display_unit="N*m",
+            group="drive",
+        ),
+        positive("drive_power", "W", "rated power P of the drive", maximum=1e7, group="drive"),
+        positive(
+            "drive_speed",
+            "rad/s",
+            "speed ω of the clutch's shaft at rated power",
+            maximum=1e5,
+            display_unit="rpm",
+            group="drive",
+        ),
+        Param(
+            "service_factor",
+            "1",
+            "K on the rated torque, 1.5 (smooth) … 3 (shocks) as torque-limiter makers advise",
+            default=2.0,
+            minimum=1.0,
+            maximum=10.0,
+            recommended=RECOMMENDED_SERVICE_FACTOR,
+            group="drive",
+        ),
+        positive(
+            "drive_start_torque",
+            "N*m",
+            "peak torque of the motor while starting (e.g. its breakdown torque)",
+            maximum=1e6,
+            display_unit="N*m",
+            group="drive",
+        ),
+        positive(
+            "drive_inertia",
+            "kg*m^2",
+            "J_A, inertia on the driving side of the clutch",
+            maximum=1e4,
+            group="drive",
+        ),
+        positive(
+            "load_inertia",
+            "kg*m^2",
+            "J_L, inertia on the driven side, referred to the clutch's speed",
+            maximum=1e4,
+            group="drive",
+        ),
+    )
+
+
+def sizing_outputs() -> tuple[Output, ...]:
+    """Outputs of the sizing from the drive."""
+    return (
+        Output(
+            "rated_drive_torque",
+            "N*m",
+            "T_N: drive_torque, or P/ω",
+            display_unit="N*m",
+        ),
+        Output(
+            "start_torque",
+            "N*m",
+            "T_a = T_start J_L/(J_A + J_L): what the clutch carries while the motor accelerates "
+            "the load",
+            display_unit="N*m",
+        ),
+        Output(
+            "required_slip_torque",
+            "N*m",
+            "max(K T_N, T_a); the target torque when target_torque is not given",
+            display_unit="N*m",
+        ),
+    )
+
+
+def sizing(x: Mapping[str, Any]) -> dict[str, Any]:
+    """Rated, start and required slip torque from the drive inputs; {} without a drive."""
+    if x["drive_torque"] is not None:
+        rated = float(x["drive_torque"])
+    elif x["drive_power"] is not None and x["drive_speed"] is not None:
+        rated = float(cl_rated_torque(x["drive_power"], x["drive_speed"]))
+    else:
+        return {}
+    out: dict[str, Any] = {"rated_drive_torque": rated}
+    start = 0.0
+    if None not in (x["drive_start_torque"], x["drive_inertia"], x["load_inertia"]):
+        start = float(
+            cl_acceleration_torque(x["drive_start_torque"], x["drive_inertia"], x["load_inertia"])
+        )
+        out["start_torque"] = start
+    out["required_slip_torque"] = float(cl_required_slip_torque(rated, x["service_factor"], start))
+    return out

@@ -539,7 +539,8 @@ BALL_CLUTCH = ModelSpec(
     ),
     source=(
         "[001] Malashchenko V.O., Semenyuk V.F., Lysiak B.R., Parameters of double action "
-        "ball overturn coupling, eq. 1–3; spring checks after Wahl"
+        "ball overturn coupling, eq. 1–3; spring checks after Wahl; helical springs to "
+        "EN 13906-1 with wire to EN 10270-1 and EN 10270-3; disc springs to DIN EN 16983"
     ),
     inputs=(
         *_common_params(deflection_required=True),
@@ -639,6 +640,39 @@ BALL_CLUTCH = ModelSpec(
             "torque": 0.5,
             "allowable_shear_stress": 5e8,
         },
+        # an ordinary limiter: a DH spring preloaded 30 mm by the nut, a 2 mm groove
+        {
+            "ball_circle_diameter": 0.05,
+            "ball_count": 4,
+            "ball_diameter": 0.01,
+            "groove_angle": math.radians(45.0),
+            "flank_friction": 0.1,
+            "face_friction": 0.01,
+            "spring_wire_diameter": 0.004,
+            "spring_mean_diameter": 0.032,
+            "spring_active_coils": 8.0,
+            "spring_free_length": 0.09,
+            "spring_deflection": 0.03,
+            "ball_lift": 0.002,
+            "spring_material": "EN10270-1-DH",
+        },
+        # a disc-spring limiter set past the discs' force maximum: the torque falls
+        {
+            "ball_circle_diameter": 0.05,
+            "ball_count": 6,
+            "ball_diameter": 0.005,
+            "groove_angle": math.radians(45.0),
+            "flank_friction": 0.1,
+            "face_friction": 0.01,
+            "spring_type": "disc",
+            "disc_outer_diameter": 0.04,
+            "disc_inner_diameter": 0.0204,
+            "disc_thickness": 0.001,
+            "disc_cone_height": 0.002,
+            "disc_series": 2,
+            "spring_deflection": 0.0024,
+            "ball_lift": 0.0004,
+        },
     ),
     vectorized=_vectorized_ball,
     vector_rungs=("closed_form",),
@@ -677,6 +711,34 @@ def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
 
 
 def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    drive = asbuilt.sizing(x)
+    drive_notes: list[str] = []
+    drive_checks: list[Check] = []
+    if x["target_torque"] is None:
+        if not drive:
+            raise InputOutOfRange(
+                "give target_torque, or the drive: drive_torque, or drive_power and drive_speed",
+                field="target_torque",
+            )
+        x = {**x, "target_torque": drive["required_slip_torque"]}
+        drive_notes.append(
+            f"target torque = required slip torque {drive['required_slip_torque']:.4g} N·m = "
+            f"max(K T_N, T_a) with K = {x['service_factor']:g}, T_N = "
+            f"{drive['rated_drive_torque']:.4g} N·m"
+            + (f", T_a = {drive['start_torque']:.4g} N·m" if "start_torque" in drive else "")
+        )
+    elif drive:
+        ok = x["target_torque"] >= drive["required_slip_torque"]
+        drive_checks.append(
+            Check(
+                "target_covers_drive",
+                ok,
+                f"target {x['target_torque']:.4g} N·m "
+                + ("≥" if ok else "<")
+                + f" required slip torque {drive['required_slip_torque']:.4g} N·m"
+                + ("" if ok else ": the clutch would slip in normal work or at every start"),
+            )
+        )
     wire, deflection = x["spring_wire_diameter"], x["spring_deflection"]
     helical = x["spring_type"] == "helical"
     if helical and wire is None and deflection is None:
@@ -704,6 +766,8 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         v["required_deflection"] = asbuilt.disc_breakaway_setting(x, float(force))
     extra, extra_notes = asbuilt.setting_values(x, v["required_spring_force"])
     v.update(extra)
+    v.update(drive)
+    extra_notes = drive_notes + extra_notes
     no_coil = helical and deflection is not None and v["required_wire_spring_index"] <= 1.0
     if no_coil:
         # no coil exists for C <= 1: its stress is not a number, say so rather than NaN
@@ -771,6 +835,7 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 )
             )
     checks.append(_angle_check(alpha))
+    checks += drive_checks
     push = float(flank_push_factor(alpha, f))
     notes = [
         *_arrangement_notes(x, v["required_spring_force"], push),
@@ -797,8 +862,10 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 
 def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    if x["spring_type"] != "helical" or (
-        x["spring_wire_diameter"] is None and x["spring_deflection"] is None
+    if (
+        x["target_torque"] is None
+        or x["spring_type"] != "helical"
+        or (x["spring_wire_diameter"] is None and x["spring_deflection"] is None)
     ):
         return Result(values={}, rung=ctx.rung, error_estimate=None)
     with np.errstate(all="ignore"):
@@ -825,8 +892,8 @@ BALL_CLUTCH_SETTING = ModelSpec(
         Param(
             "target_torque",
             "N*m",
-            "the slipping torque wanted [001, eq. 3 solved for the spring]",
-            required=True,
+            "the slipping torque wanted [001, eq. 3 solved for the spring]; absent, the "
+            "required slip torque from the drive (drive_torque or drive_power and drive_speed)",
             minimum=0.0,
             exclusive_minimum=True,
             maximum=1e6,
@@ -836,6 +903,7 @@ BALL_CLUTCH_SETTING = ModelSpec(
         *_common_params(deflection_required=False),
         _allowable_param(),
         *asbuilt.params(),
+        *asbuilt.sizing_params(),
     ),
     outputs=(
         Output(
@@ -871,6 +939,7 @@ BALL_CLUTCH_SETTING = ModelSpec(
             display_unit="MPa",
         ),
         *asbuilt.setting_outputs(),
+        *asbuilt.sizing_outputs(),
     ),
     rungs=(_RUNG,),
     compute=_compute_setting,
@@ -891,6 +960,27 @@ BALL_CLUTCH_SETTING = ModelSpec(
             "spring_mean_diameter": 0.045,
             "spring_active_coils": 5.0,
             "spring_deflection": 0.004,
+        },
+        # an ordinary limiter sized from its drive: 0.37 kW at 1450 rpm, service factor 2,
+        # a motor starting at 6 N·m against three times its own inertia
+        {
+            "ball_circle_diameter": 0.05,
+            "ball_count": 4,
+            "ball_diameter": 0.01,
+            "groove_angle": math.radians(45.0),
+            "flank_friction": 0.1,
+            "spring_wire_diameter": 0.004,
+            "spring_mean_diameter": 0.032,
+            "spring_active_coils": 8.0,
+            "spring_free_length": 0.09,
+            "ball_lift": 0.002,
+            "spring_material": "EN10270-1-DH",
+            "drive_power": 370.0,
+            "drive_speed": 1450.0 * math.pi / 30.0,
+            "service_factor": 2.0,
+            "drive_start_torque": 6.0,
+            "drive_inertia": 1e-3,
+            "load_inertia": 3e-3,
         },
     ),
     vectorized=_vectorized_setting,
