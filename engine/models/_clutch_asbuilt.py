@@ -381,14 +381,14 @@ class Spring:
         )["OM"]
         return np.abs(om)
 
-    def permissible(self) -> float | None:
+    def permissible(self) -> Any:
+        """Permissible stress [Pa] (an array when the swept input is), or None."""
         x = self.x
         if self.kind == "disc":
-            return float(x["disc_yield_strength"])
+            return x["disc_yield_strength"]
         if self.material is not None:
             return sp.permissible_shear_stress(self.material.name, x["spring_wire_diameter"])
-        allow = x["allowable_shear_stress"]
-        return None if allow is None else float(allow)
+        return x["allowable_shear_stress"]
 
 
 def require_spring(x: Mapping[str, Any], *, wire_needed: bool) -> None:
@@ -465,12 +465,8 @@ def characteristic(x: Mapping[str, Any], spring: Spring, deflection: Any = None)
     force = spring.force(total)
     stress = spring.stress(total)
     push = combined_push_factor(beta, x["flank_friction"], x["driving_groove_angle"])
-    torque = (
-        np.asarray(_sharing(x))[..., None]
-        * np.asarray(x["ball_circle_diameter"])[..., None]
-        * force
-        / (2.0 * push)
-    )
+    # x's arrays already carry the trailing (lift) axis
+    torque = np.asarray(_sharing(x)) * np.asarray(x["ball_circle_diameter"]) * force / (2.0 * push)
     peak = np.argmax(torque, axis=-1)[..., None]
 
     def at(arr: Any, idx: Any) -> Any:
@@ -529,17 +525,20 @@ def extra_values(x: Mapping[str, Any], spring: Spring, limit: Any) -> dict[str, 
             )
             if np.ndim(d) == 0:
                 values["tensile_strength"] = sp.tensile_strength(spring.material.name, d)
-        if x["spring_free_length"] is not None:
+        scalar = all(np.ndim(a) == 0 for a in (x["spring_free_length"], dm, values["peak_torque"]))
+        if x["spring_free_length"] is not None and scalar:
             e_mod = (
                 spring.material.elastic_modulus if spring.material else 2.6 * spring.shear_modulus
             )
-            values["buckling_deflection"] = sp.buckling_deflection(
+            s_k = sp.buckling_deflection(
                 x["spring_free_length"],
                 dm,
                 sp.SEATING_COEFFICIENTS[x["spring_seating"]],
                 spring.shear_modulus,
                 e_mod,
             )
+            # inf: the spring cannot buckle; said as null (and in the check), never inf
+            values["buckling_deflection"] = None if math.isinf(float(s_k)) else s_k
     else:
         single = sp.disc_force_flat(
             x["disc_outer_diameter"],
@@ -549,10 +548,9 @@ def extra_values(x: Mapping[str, Any], spring: Spring, limit: Any) -> dict[str, 
             x["disc_elastic_modulus"],
         )
         values["disc_force_flat"] = single * x["disc_parallel"]
-    if np.ndim(values["peak_torque"]) == 0:
-        allow = spring.permissible()
-        if allow is not None:
-            values["permissible_stress"] = allow
+    allow = spring.permissible()
+    if allow is not None:
+        values["permissible_stress"] = allow
     return values
 
 
@@ -596,6 +594,7 @@ def checks(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[C
     )
     allow = spring.permissible()
     if allow is not None:
+        allow = float(allow)
         s = float(v["spring_stress_max"])
         ok = s <= allow
         what = "wire shear stress τ_k" if spring.kind == "helical" else "disc stress |σ_OM|"
@@ -924,6 +923,7 @@ def _suggest_wire(
         try:
             spring = Spring(trial)
             allow = spring.permissible()
+            allow = None if allow is None else float(allow)
         except InputOutOfRange:
             continue  # outside the material's table
         found = _peak_setting(trial, spring, target, force)

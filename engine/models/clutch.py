@@ -423,7 +423,9 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
     helical = x["spring_type"] == "helical"
     _require_workable(x, x["spring_wire_diameter"] if helical else None)
     with np.errstate(all="ignore"):
-        v: dict[str, Any] = {k: float(val) for k, val in _forward_values(x).items()}
+        v: dict[str, Any] = {
+            k: None if val is None else float(val) for k, val in _forward_values(x).items()
+        }
     alpha, f = x["groove_angle"], x["flank_friction"]
     push = float(flank_push_factor(alpha, f))
     spring = asbuilt.Spring(x)

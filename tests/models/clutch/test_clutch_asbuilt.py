@@ -218,9 +218,13 @@ def test_setting_for_a_target_peak_torque_round_trips():
             spring_wire_diameter=thinner * 1e-3,
             target_torque=8.0,
         ).results
-        assert s2["required_peak_setting"] is None or s2[
-            "peak_setting_stress_max"
-        ] > 0.5 * sp.tensile_strength("EN10270-1-DH", thinner * 1e-3)
+        too_weak = s2["peak_setting_stress_max"] > 0.5 * sp.tensile_strength(
+            "EN10270-1-DH", thinner * 1e-3
+        )
+        d2 = thinner * 1e-3
+        travel = s2["required_peak_setting"] + 0.002 + 0.005 * (1 - math.sin(45 * DEG))
+        room = sp.solid_length(d2, 8.0) + sp.minimum_gap_sum(d2, 0.032, 8.0)
+        assert too_weak or 0.090 - travel < room  # over-stressed, or it would go solid
 
 
 def test_setting_without_lift_keeps_todays_numbers():
