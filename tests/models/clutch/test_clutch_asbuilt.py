@@ -267,3 +267,25 @@ def test_sizing_from_the_drive():
     assert cl.required_slip_torque(tn, 2.0, 0.0) == pytest.approx(2 * tn)
     # a load torque shares by the other inertia: T_L J_A/(J_A + J_L)
     assert cl.acceleration_torque(0.0, 0.01, 0.03, 4.0) == pytest.approx(1.0)
+
+
+def test_nutrunner_coupling_1_gets_its_slip_torque():
+    from engine.models.nutrunner import NUTRUNNER_DRIVE
+
+    ex = dict(NUTRUNNER_DRIVE.examples[0])
+    v = engine.run(NUTRUNNER_DRIVE, ex).results
+    # K P/ω = 2 × 1100 W / 146.6 rad/s = 15.006 N·m
+    assert v["coupling_slip_torque"] == pytest.approx(
+        2.0 * ex["motor_power"] / ex["motor_speed"], rel=1e-12
+    )
+    k3 = engine.run(NUTRUNNER_DRIVE, {**ex, "coupling_service_factor": 3.0}).results
+    assert k3["coupling_slip_torque"] == pytest.approx(1.5 * v["coupling_slip_torque"])
+    # a motor with a large breakdown torque: the start through the coupling governs
+    strong = engine.run(
+        NUTRUNNER_DRIVE, {**ex, "breakdown_torque": 200.0, "rotor_inertia": 1e-3}
+    ).results
+    j_load = v["equivalent_inertia"] - 2 * v["coupling_energy"] / ex["motor_speed"] ** 2
+    j_drive = 1e-3 + 2 * v["coupling_energy"] / ex["motor_speed"] ** 2
+    assert strong["coupling_slip_torque"] == pytest.approx(
+        max(200.0 * j_load / (j_drive + j_load), v["coupling_slip_torque"]), rel=1e-9
+    )
