@@ -32,7 +32,7 @@ from ..clutch import acceleration_torque as cl_acceleration_torque
 from ..clutch import rated_torque as cl_rated_torque
 from ..clutch import required_slip_torque as cl_required_slip_torque
 from ..errors import InputOutOfRange
-from ..spec import Check, Output, Param
+from ..spec import Check, Output, Param, Plot, Window
 from ._common import DEG, count, friction_coefficient, length, positive
 
 #: Points on the flank (and as many over the rim) of the characteristic.
@@ -295,7 +295,20 @@ def outputs() -> tuple[Output, ...]:
             "N",
             "force of the disc stack pressed flat (DIN EN 16983 closed form)",
         ),
-        Output("lift", "m", "lift of the balls (x-axis of the characteristic)", series=True),
+        Output(
+            "flank_lift",
+            "m",
+            "h, lift at which the balls reach the rim (ball_lift, or Δ as in the paper)",
+            display_unit="mm",
+        ),
+        Output(
+            "lift",
+            "m",
+            "lift of the balls (x-axis of the characteristic)",
+            series=True,
+            display_unit="mm",
+            plot=Plot(windows=(Window("over the rim", "flank_lift", "total_lift"),)),
+        ),
         Output(
             "torque_curve",
             "N*m",
@@ -478,6 +491,7 @@ def characteristic(x: Mapping[str, Any], spring: Spring, deflection: Any = None)
         "lift_at_peak": at(lift, peak),
         "torque_at_rim": at(torque, rim),
         "total_lift": lift[..., -1],
+        "flank_lift": lift[..., POINTS - 1],
         "spring_force_at_peak": at(force, peak),
         "spring_stress_at_peak": at(stress, peak),
         "spring_force_max": np.max(np.broadcast_to(force, torque.shape), axis=-1),
