@@ -53,6 +53,7 @@ __all__ = [
     "disc_falling_region",
     "disc_force",
     "disc_force_flat",
+    "disc_k4",
     "disc_stresses",
     "disc_thickness_for_flat_force",
     "helical_natural_frequency",
@@ -1101,3 +1102,49 @@ def disc_thickness_for_flat_force(
         / (4.0 * np.asarray(elastic_modulus) * np.asarray(height_ratio))
     )
     return _out(t4**0.25)
+
+
+def disc_k4(
+    thickness: FloatArray, reduced_thickness: FloatArray, free_height: FloatArray
+) -> FloatArray:
+    r"""Factor K4 of a disc spring with contact flats (group 3), DIN EN 16983.
+
+    .. math::
+        C_1 = \frac{(t'/t)^2}{\left(\frac{l_0}{4t} - \frac{t'}{t} + \frac34\right)
+              \left(\frac{5 l_0}{8t} - \frac{t'}{t} + \frac38\right)}, \quad
+        C_2 = \frac{C_1}{(t'/t)^3}\left[\frac{5}{32}\left(\frac{l_0}{t} - 1\right)^2
+              + 1\right], \quad
+        K_4 = \sqrt{-\frac{C_1}{2} + \sqrt{\left(\frac{C_1}{2}\right)^2 + C_2}}
+
+    Parameters
+    ----------
+    thickness : float
+        t, nominal thickness, [m]
+    reduced_thickness : float
+        t', thickness reduced for the contact flats (≈ 0.94…0.96 t), [m]
+    free_height : float
+        l0, free height of the disc (the same with and without flats), [m]
+
+    Returns
+    -------
+    k4 : float
+        K4; 1 for a disc without flats (t' = t), [-]
+
+    Notes
+    -----
+    DIN EN 16983 (formerly DIN 2092), discs with contact flats: use t' for t and
+    h0' = l0 − t' for h0 in :func:`disc_force` and :func:`disc_stresses`, with
+    this K4.
+
+    Examples
+    --------
+    >>> round(disc_k4(0.008, 0.008, 0.0106), 12)
+    1.0
+    >>> round(disc_k4(0.008, 0.0075, 0.0106), 4)
+    1.0834
+    """
+    ratio = np.asarray(reduced_thickness, dtype=float) / np.asarray(thickness, dtype=float)
+    l0_t = np.asarray(free_height, dtype=float) / np.asarray(thickness, dtype=float)
+    c1 = ratio**2 / ((l0_t / 4.0 - ratio + 0.75) * (5.0 * l0_t / 8.0 - ratio + 0.375))
+    c2 = c1 / ratio**3 * (5.0 / 32.0 * (l0_t - 1.0) ** 2 + 1.0)
+    return _out(np.sqrt(-c1 / 2.0 + np.sqrt((c1 / 2.0) ** 2 + c2)))

@@ -148,3 +148,17 @@ def test_stack_friction_raises_loading_and_lowers_unloading():
     down = sp.stack_force(1000.0, 3, 0.03, 0.03, loading=False)
     assert up == pytest.approx(3000 / 0.91) and down == pytest.approx(3000 / 1.09)
     assert sp.stack_force(1000.0, 3) == 3000.0
+
+
+def test_k4_is_one_without_flats_and_grows_with_the_reduction():
+    for l0 in (0.0100, 0.0106, 0.0120):
+        assert sp.disc_k4(0.008, 0.008, l0) == pytest.approx(1.0, abs=1e-12)
+    k = [sp.disc_k4(0.008, t, 0.0106) for t in (0.0080, 0.0078, 0.0076, 0.0075)]
+    assert k == sorted(k) and k[-1] > 1.0
+    # with K4 the flats disc (t', h0' = l0 - t') is stiffer than the same t', h0' without
+    t_r = 0.0075
+    h0r = 0.0106 - t_r
+    args = (0.125, 0.064, t_r, h0r)
+    assert sp.disc_force(0.5 * h0r, *args, k4=sp.disc_k4(0.008, t_r, 0.0106)) > sp.disc_force(
+        0.5 * h0r, *args
+    )
