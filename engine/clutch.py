@@ -58,6 +58,20 @@ case). This is a failing check, not a refusal. Of the paper's own range
 Spring checks (not in the paper; standard helical compression spring design):
 spring index C = D/d0, Wahl factor K_w = (4C − 1)/(4C − 4) + 0.615/C, wire
 shear stress τ = 8 F D K_w / (π d0³).
+
+The clutch as built (beyond the paper; the paper's eq. 1–3 are its zero-lift
+point): the ball climbs the flank by the lift h (the groove depth, which the
+paper equates with the spring's setting Δ) and then rolls over the rim, rising
+(d/2)(1 − sin α) more (:func:`rim_rise`, :func:`lift_points`); the spring is
+compressed by the lift, so the torque follows :func:`torque_against_lift` and
+peaks where the spring force and the contact angle balance (at the rim for a
+helical spring; at the start for disc springs set past their force maximum,
+:mod:`engine.springs`). In the paper's case the spring reaches c(Δ + Δ) at the
+peak: its stress doubles, 45.4 → 90.8 MPa. An inclined driving flank α′ ([001,
+fig. 6]) adds its own push (:func:`combined_push_factor`); the margin to
+self-locking and dT/df (:func:`friction_sensitivity`); the residual torque on
+the face (:func:`residual_torque`); sizing from the drive
+(:func:`rated_torque`, :func:`acceleration_torque`, :func:`required_slip_torque`).
 """
 
 from __future__ import annotations
