@@ -414,10 +414,11 @@ def require_spring(x: Mapping[str, Any], *, wire_needed: bool) -> None:
             raise InputOutOfRange(
                 "spring_type = disc needs disc_cone_height", field="disc_cone_height"
             )
-        if x["disc_inner_diameter"] >= x["disc_outer_diameter"]:
+        if x["disc_inner_diameter"] * 1.05 >= x["disc_outer_diameter"]:
             raise InputOutOfRange(
                 f"disc_inner_diameter = {x['disc_inner_diameter'] * 1e3:g} mm is not below "
-                f"disc_outer_diameter = {x['disc_outer_diameter'] * 1e3:g} mm",
+                f"disc_outer_diameter / 1.05 = {x['disc_outer_diameter'] / 1.05 * 1e3:.4g} mm: "
+                "a ring that narrow is not a disc spring (Almen–László loses all precision)",
                 field="disc_inner_diameter",
             )
         return
@@ -748,7 +749,19 @@ def _helical_length_checks(
 
 
 def warnings(x: Mapping[str, Any]) -> list[str]:
-    """A non-standard wire size is a warning (it can be drawn, at a price)."""
+    """A non-standard wire size or disc proportion is a warning (it can be made, at a price)."""
+    if x["spring_type"] == "disc":
+        out = []
+        delta = x["disc_outer_diameter"] / x["disc_inner_diameter"]
+        slender = x["disc_outer_diameter"] / x["disc_thickness"]
+        if not 1.75 <= delta <= 2.5:
+            out.append(
+                f"De/Di = {delta:.3g} is outside 1.75…2.5, the proportions of DIN EN 16983's "
+                "series, for which the Almen–László relations were checked"
+            )
+        if not 16.0 <= slender <= 40.0:
+            out.append(f"De/t = {slender:.3g} is outside DIN EN 16983's 16…40")
+        return out
     wire = x["spring_wire_diameter"]
     if x["spring_type"] != "helical" or wire is None:
         return []
