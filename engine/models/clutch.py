@@ -376,8 +376,12 @@ ASSUMPTIONS = (
 )
 
 
-def _forward_values(x: Mapping[str, Any]) -> dict[str, Any]:
-    """Every output of clutch.ball, on floats or arrays (one input may be an array)."""
+def _forward_values(x: Mapping[str, Any], as_built: bool = True) -> dict[str, Any]:
+    """Every output of clutch.ball, on floats or arrays (one input may be an array).
+
+    ``as_built=False`` leaves out the characteristic (81 lifts per point), for long
+    sweeps that ask only for the paper's outputs.
+    """
     spring = asbuilt.Spring(x)
     alpha, f, kr = x["groove_angle"], x["flank_friction"], x["load_factor"]
     force = spring.force(x["spring_deflection"])
@@ -414,7 +418,8 @@ def _forward_values(x: Mapping[str, Any]) -> dict[str, Any]:
         values["wahl_factor"] = wahl_factor(index)
         values["spring_shear_stress"] = spring_shear_stress(force, dm, d0)
         values["spring_rate"] = spring_rate(spring.shear_modulus, d0, dm, x["spring_active_coils"])
-    values.update(asbuilt.extra_values(x, spring, limit))
+    if as_built:
+        values.update(asbuilt.extra_values(x, spring, limit))
     return values
 
 
@@ -502,8 +507,11 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
         return Result(values={}, rung=ctx.rung, error_estimate=None)
     if x["spring_material"] != "custom" and np.ndim(x["spring_wire_diameter"]) > 0:
         return Result(values={}, rung=ctx.rung, error_estimate=None)
+    as_built = any(ctx.wants(o.name) for o in asbuilt.outputs())
     with np.errstate(all="ignore"):
-        values = _masked(_chunked_forward(x), _feasible_mask(x, x["spring_wire_diameter"]))
+        values = _masked(
+            _chunked_forward(x, as_built), _feasible_mask(x, x["spring_wire_diameter"])
+        )
     return Result(
         values=values,
         rung=ctx.rung,
@@ -516,11 +524,11 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
 _CHUNK = 20_000
 
 
-def _chunked_forward(x: Mapping[str, Any]) -> dict[str, Any]:
+def _chunked_forward(x: Mapping[str, Any], as_built: bool = True) -> dict[str, Any]:
     """:func:`_forward_values` over a long swept input, a chunk at a time (bounded memory)."""
     swept = [k for k, v in x.items() if isinstance(v, np.ndarray) and v.ndim > 0]
-    if not swept or np.size(x[swept[0]]) <= _CHUNK:
-        return _forward_values(x)
+    if not as_built or not swept or np.size(x[swept[0]]) <= _CHUNK:
+        return _forward_values(x, as_built)
     key, arr = swept[0], np.asarray(x[swept[0]])
     parts = [_forward_values({**x, key: arr[i : i + _CHUNK]}) for i in range(0, arr.size, _CHUNK)]
     return {
