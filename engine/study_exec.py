@@ -106,6 +106,9 @@ class DaskExecutor:
                         silence_logs=40,
                     )
                     self._client = Client(self._cluster, set_as_default=False)
+                    # the local workers share this machine with the service: lower their
+                    # priority so single calculations get the cores first
+                    self._client.run(os.nice, 10)
             return self._client
 
     def map(
@@ -120,13 +123,24 @@ class DaskExecutor:
             client.submit(evaluate_chunk, _name(args[0]), *args[1:], pure=False) for args in calls
         ]
         index = {f.key: i for i, f in enumerate(futures)}
-        done = as_completed(futures, loop=client.loop, with_results=False)
+        finished = threading.Event()
+
+        def watch() -> None:
+            # cancel the pending chunks the moment the study is cancelled, not when the
+            # next chunk happens to finish
+            while not finished.wait(0.02):
+                if cancel.is_set():
+                    client.cancel([f for f in futures if not f.done()])
+                    return
+
+        threading.Thread(target=watch, name="study-cancel", daemon=True).start()
         try:
-            for fut in done:
+            for fut in as_completed(futures, loop=client.loop, with_results=False):
                 if cancel.is_set():
                     break
                 yield index[fut.key], fut.result()
         finally:
+            finished.set()
             pending = [f for f in futures if not f.done()]
             if pending:
                 client.cancel(pending)
