@@ -11,6 +11,7 @@ derandomised: ~30 examples per operation, same every run.
 
 from __future__ import annotations
 
+import pytest
 import schemathesis
 from hypothesis import HealthCheck, settings
 from schemathesis.checks import (
@@ -21,8 +22,9 @@ from schemathesis.checks import (
 
 from service import create_app
 from service.config import Settings
+from tests.toys import toy_app
 
-from .toys import toy_app
+pytestmark = pytest.mark.fuzz
 
 CHECKS = [not_a_server_error, status_code_conformance, response_schema_conformance]
 BUDGET = settings(

@@ -1,14 +1,6 @@
 """The rare-impact model over HTTP: registered, unit strings, verdicts as 422 not 500."""
 
 import pytest
-from fastapi.testclient import TestClient
-
-from service import create_app
-
-
-@pytest.fixture(scope="module")
-def api() -> TestClient:
-    return TestClient(create_app(), raise_server_exceptions=False)
 
 
 def test_listed_with_rungs_and_display_units(api):

@@ -5,13 +5,11 @@ from __future__ import annotations
 import math
 
 import pytest
-from fastapi.testclient import TestClient
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from engine import EngineError, run
 from engine.models.nutrunner import EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
-from service import create_app
 
 SPEC = NUTRUNNER_DRIVE
 
@@ -128,11 +126,6 @@ def test_motor_curve_finite_or_a_clear_engine_error(x, curve):
     assert all(math.isfinite(p) for s in r.series.values() for p in s)
     # auto never crashes either
     run(SPEC, {**x, **curve}, fidelity="auto")
-
-
-@pytest.fixture(scope="module")
-def api() -> TestClient:
-    return TestClient(create_app(), raise_server_exceptions=False)
 
 
 @settings(

@@ -41,7 +41,7 @@ def test_paper_case_with_display_units():
     r = post("", body)
     assert r.status_code == 200, r.text
     out = r.json()
-    # see tests/clutch/test_clutch_functions.py for the arithmetic
+    # see tests/models/clutch/test_clutch_functions.py for the arithmetic
     assert out["results"]["torque_limit"] == pytest.approx(0.56186557, rel=1e-7)
     assert out["results"]["spring_force"] == pytest.approx(22.4746228, rel=1e-7)
     assert out["units"]["torque_limit"] == "N*m"

@@ -17,17 +17,10 @@ import engine
 from engine import ModelSpec
 from service import create_app
 from service.config import Settings
-from tests.foundation.toy import TOY
-
-from .toys import WELL_BEHAVED
+from tests.toys import WELL_BEHAVED
 
 JSON = "application/json"
 LONG = "1 " + "m*" * 5000 + "m"
-
-
-@pytest.fixture(scope="module")
-def toy() -> TestClient:
-    return TestClient(create_app(models=[TOY]), raise_server_exceptions=False)
 
 
 def _body(fields: str) -> bytes:

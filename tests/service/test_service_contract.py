@@ -3,16 +3,8 @@
 import math
 
 import pytest
-from fastapi.testclient import TestClient
 
-from service import create_app
-
-from .toy import TOY
-
-
-@pytest.fixture(scope="module")
-def toy() -> TestClient:
-    return TestClient(create_app(models=[TOY]), raise_server_exceptions=False)
+from tests.toys import TOY
 
 
 def test_healthz(toy):

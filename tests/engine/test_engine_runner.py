@@ -5,9 +5,8 @@ import pytest
 
 import engine
 from engine import InfeasibleDesign, InputOutOfRange, Rung, fixed_error
-
-from .toy import TOY
-from .toy import _compute as toy_compute
+from tests.toys import TOY
+from tests.toys import _disc as toy_compute
 
 BASE = {"diameter": 0.2}
 

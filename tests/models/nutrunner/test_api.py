@@ -6,10 +6,8 @@ import itertools
 import math
 
 import pytest
-from fastapi.testclient import TestClient
 
 from engine.models.nutrunner import EXAMPLE_INDUCTION_MOTOR, EXAMPLE_LIGHT_TRUCK
-from service import create_app
 
 URL = "/api/v1/nutrunner/drive"
 
@@ -34,11 +32,6 @@ TYPED = {
     "spindle_length": "300 mm",
     "idle_spindle_friction_torque": "10 N*m",
 }
-
-
-@pytest.fixture(scope="module")
-def api() -> TestClient:
-    return TestClient(create_app(), raise_server_exceptions=False)
 
 
 def test_listed_with_units_ranges_and_rungs(api):

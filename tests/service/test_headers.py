@@ -21,9 +21,7 @@ from fastapi.testclient import TestClient
 from service import create_app
 from service.config import Settings
 from service.middleware import STRICT_CSP
-from tests.foundation.toy import TOY
-
-from .toys import TOY_CRASH
+from tests.toys import TOY, TOY_CRASH
 
 ROOT = Path(__file__).resolve().parents[2]
 SECURITY = {
@@ -223,7 +221,7 @@ def test_real_server_sends_no_banner_and_logs_json_lines(tmp_path: Path) -> None
     log_path = tmp_path / "out.log"
     out = log_path.open("wb")
     env = {**os.environ, "PYTHONUNBUFFERED": "1"}
-    factory = "tests.hardening.toys:toy_app"
+    factory = "tests.toys:toy_app"
     proc = subprocess.Popen(
         [sys.executable, "-m", "service", "--port", str(port), "--factory", factory],
         cwd=ROOT,

@@ -4,20 +4,13 @@ import itertools
 import math
 
 import pytest
-from fastapi.testclient import TestClient
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from engine.preload_methods import METHOD_KEYS, METHODS
-from service import create_app
 
 TIGHT = "/api/v1/preload/tightening"
 CTRL = "/api/v1/preload/control"
-
-
-@pytest.fixture(scope="module")
-def api() -> TestClient:
-    return TestClient(create_app(), raise_server_exceptions=False)
 
 
 def _ok(api, path, body):

@@ -19,9 +19,7 @@ from fastapi.testclient import TestClient
 
 from service import create_app
 from service.config import Settings
-from tests.foundation.toy import TOY
-
-from .toys import TOY_ODE, TOY_SPIN, TOY_STUBBORN
+from tests.toys import TOY, TOY_ODE, TOY_SPIN, TOY_STUBBORN
 
 MODELS = [TOY, TOY_ODE, TOY_SPIN, TOY_STUBBORN]
 

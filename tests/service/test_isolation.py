@@ -16,9 +16,7 @@ import httpx
 
 from service import create_app
 from service.config import Settings
-from tests.foundation.toy import TOY
-
-from .toys import TOY_ODE, TOY_SPIN
+from tests.toys import TOY, TOY_ODE, TOY_SPIN
 
 SLOW_S = 1.5
 
