@@ -16,7 +16,7 @@ import engine
 
 from .test_browser import base_url, browser  # noqa: F401  (fixtures)
 
-pytestmark = pytest.mark.slow
+pytestmark = [pytest.mark.slow, pytest.mark.browser]
 
 RARE = engine.get_model("impact.rare")
 
