@@ -117,6 +117,8 @@ class Job:
     total: int
     keep_points: bool
     state: str = "queued"
+    #: What a running job is doing: starting the cluster, evaluating, summarising.
+    phase: str = "waiting for a study thread"
     done: int = 0
     created: float = field(default_factory=time.time)
     started: float | None = None
@@ -140,6 +142,7 @@ class Job:
             "job": self.id,
             "model": self.model,
             "state": self.state,
+            "phase": self.phase if self.active else self.state,
             "progress": {
                 "done": self.done,
                 "total": self.total,
@@ -236,11 +239,17 @@ class Studies:
     def _work(self, job: Job, spec: ModelSpec, study: Study) -> None:
         job.state, job.started = "running", time.time()
 
-        def progress(done: int, _total: int) -> None:
+        def progress(done: int, total: int) -> None:
             job.done = done
+            job.phase = "summarising" if done == total else "evaluating"
 
-        executor = InProcess() if job.total <= self.settings.inprocess_points else self.dask()
         try:
+            if job.total <= self.settings.inprocess_points:
+                executor: InProcess | DaskExecutor = InProcess()
+            else:
+                executor = self.dask()
+                job.phase = "starting the Dask workers"
+                executor.client()
             result = run_study(
                 spec,
                 study,

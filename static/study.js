@@ -213,7 +213,8 @@ async function poll() {
   $("#study-progress").value = p.fraction;
   const rate = p.rate_per_s ? `${fmt(p.rate_per_s, 3)} designs/s` : "";
   const eta = p.eta_s !== null && p.eta_s !== undefined ? `, ${fmt(p.eta_s, 2)} s left` : "";
-  $("#study-status").textContent = `${j.state}: ${p.done.toLocaleString("en")} of ${p.total.toLocaleString("en")} designs ${rate}${eta}`;
+  const phase = j.state === "running" && j.phase ? ` (${j.phase})` : "";
+  $("#study-status").textContent = `${j.state}${phase}: ${p.done.toLocaleString("en")} of ${p.total.toLocaleString("en")} designs ${rate}${eta}`;
   if (j.state === "queued" || j.state === "running") {
     timer = setTimeout(poll, 300);
     return;

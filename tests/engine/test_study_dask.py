@@ -144,3 +144,37 @@ def test_a_separate_scheduler_with_two_workers_gives_the_same_result(reference, 
         _equal(reference, run_study(RARE, _study(), executor))
     finally:
         executor.close()
+
+
+def test_the_service_sends_a_study_to_the_scheduler_it_is_told(
+    reference, scheduler, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from fastapi.testclient import TestClient
+
+    from service import create_app
+
+    monkeypatch.setenv("DASK_SCHEDULER", scheduler)
+    monkeypatch.setenv("STUDY_INPROCESS_POINTS", "0")
+    study = _study()
+    body = {
+        "base": dict(study.base),
+        "variables": [
+            {k: v for k, v in vars(var).items() if v is not None} for var in study.variables
+        ],
+        "method": study.method,
+        "samples": study.samples,
+        "seed": study.seed,
+        "fidelity": study.fidelity,
+        "feasible_when": study.feasible_when,
+    }
+    with TestClient(create_app()) as client:
+        job = client.post("/api/v1/impact/rare/study", json=body).json()["job"]
+        deadline = time.monotonic() + 120
+        while (state := client.get(f"/api/v1/jobs/{job}").json())["state"] in ("queued", "running"):
+            assert time.monotonic() < deadline, state
+            time.sleep(0.1)
+    assert state["state"] == "done", state
+    strip = ("elapsed_s", "compute_s")
+    got = {k: v for k, v in state["result"].items() if k not in strip}
+    want = {k: v for k, v in reference.summary.items() if k not in strip}
+    assert got == want
