@@ -40,7 +40,6 @@ def _param(name: str, lo: float, hi: float) -> Param:
 
 TOY_SA = ModelSpec(
     name="toy.ishigami",
-    path="/toy/ishigami",
     title="Ishigami function",
     family="toy",
     summary="Sensitivity-analysis test functions with analytic Sobol' indices.",
