@@ -364,7 +364,7 @@ function drawHistogram(name) {
 
 function colour(t) {
   // a perceptually ordered blue → yellow ramp (viridis endpoints)
-  const a = [68, 1, 84], b = [33, 145, 140], c = [253, 231, 37];
+  const a = [68, 1, 84], b = [33, 145, 140], c = [0xfd, 0xe7, 0x25];
   const mix = (p, q, u) => p.map((v, i) => Math.round(v + (q[i] - v) * u));
   const rgb = t < 0.5 ? mix(a, b, t * 2) : mix(b, c, (t - 0.5) * 2);
   return `rgb(${rgb.join(",")})`;
