@@ -135,16 +135,19 @@ def bolt_compliance(
     3.3276
     """
     if head not in HEAD_LENGTH_FACTOR:
-        raise InputOutOfRange(f"head = {head!r} is not allowed: must be 'hex' or 'socket'", field="head")
+        raise InputOutOfRange(
+            f"head = {head!r} is not allowed: must be 'hex' or 'socket'", field="head"
+        )
     if joint not in NUT_LENGTH_FACTOR:
         raise InputOutOfRange(
-            f"joint_type = {joint!r} is not allowed: must be 'through' or 'tapped'", field="joint_type"
+            f"joint_type = {joint!r} is not allowed: must be 'through' or 'tapped'",
+            field="joint_type",
         )
     e_nut = youngs_modulus if nut_youngs_modulus is None else nut_youngs_modulus
     a_n, a_d3 = _area(diameter), _area(minor_diameter)
     return BoltCompliance(
         head=HEAD_LENGTH_FACTOR[head] * diameter / (youngs_modulus * a_n),
-        shank=sum(li / (youngs_modulus * _area(di)) for li, di in sections),
+        shank=sum((li / (youngs_modulus * _area(di)) for li, di in sections), 0.0),
         free_thread=free_thread_length / (youngs_modulus * a_d3),
         engaged_thread=ENGAGED_THREAD_FACTOR * diameter / (youngs_modulus * a_d3),
         nut=NUT_LENGTH_FACTOR[joint] * diameter / (e_nut * a_n),

@@ -7,6 +7,7 @@ schema, the form and ``GET /api/v1/models`` all derive from this tuple.
 from __future__ import annotations
 
 from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
+from .joint_models import VDI2230 as JOINT_VDI2230
 from .nutrunner import NUTRUNNER_DRIVE
 from .preload_models import CONTROL as PRELOAD_CONTROL
 from .preload_models import TIGHTENING as PRELOAD_TIGHTENING
@@ -20,6 +21,7 @@ MODELS: tuple[ModelSpec, ...] = (
     RARE_IMPACT,
     PRELOAD_TIGHTENING,
     PRELOAD_CONTROL,
+    JOINT_VDI2230,
 )
 
 
