@@ -17,7 +17,7 @@ symbols, in the open secondary sources named in each docstring:
 Where the brief for this model and VDI's numbering differ: VDI 2230-1 numbers
 the alternating stress R9, the surface pressure R10, the length of engagement
 (thread stripping) R11 and slipping R12. Surface pressure and thread stripping
-are not computed here (see :data:`engine.models.joint` hooks).
+are not computed here (see :data:`engine.models.joint.CHECK_HOOKS`).
 """
 
 from __future__ import annotations

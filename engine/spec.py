@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 from typing import Any, Literal
 
 from .errors import InputOutOfRange
+from .sources import SOURCES, cited_ids
 
 ParamKind = Literal["float", "int", "choice", "bool"]
 OutputKind = Literal["float", "int", "bool", "str"]
@@ -277,6 +278,11 @@ class ModelSpec:
     def output_names(self) -> tuple[str, ...]:
         return tuple(o.name for o in self.outputs)
 
+    @property
+    def sources(self) -> tuple[str, ...]:
+        """Ids of the sources (:mod:`engine.sources`) that :attr:`source` cites."""
+        return tuple(sorted(cited_ids(self.source)))
+
     def param(self, name: str) -> Param:
         for p in self.inputs:
             if p.name == name:
@@ -330,6 +336,9 @@ class ModelSpec:
             "family": self.family,
             "summary": self.summary,
             "source": self.source,
+            "sources": [
+                {"id": i, "reference": SOURCES[i].reference()} for i in self.sources if i in SOURCES
+            ],
             "default_fidelity": self.default_fidelity,
             "inputs": [p.describe() for p in self.inputs],
             "outputs": [o.describe() for o in self.outputs],
