@@ -250,8 +250,7 @@ SOURCES: dict[str, Source] = {
         Source(
             id="BAT",
             kind="textbook",
-            title="BAT - Bolt Analysis Tool (open-source ECSS-E-HB-32-23A / VDI 2230 "
-            "calculator)",
+            title="BAT - Bolt Analysis Tool (open-source ECSS-E-HB-32-23A / VDI 2230 calculator)",
             authors="M. Sams (GitHub misams/BAT)",
             year="2021 (v0.8.4)",
             published="https://github.com/misams/BAT, src/Ecss.py, src/BoltAnalysisBase.py",
