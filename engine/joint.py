@@ -735,13 +735,14 @@ def preload_bounds_from_torque(
     prevailing_torque: float,
     per_newton_low_friction: float,
     per_newton_high_friction: float,
+    prevailing_torque_min: float | None = None,
 ) -> tuple[float, float]:
     r"""Assembly preload range from a torque specification and the friction box.
 
     .. math::
-        F_{M,min} = \frac{M_A (1 - t) - M_{\ddot u}}{k(\mu_{G,max}, \mu_{K,max})},
+        F_{M,min} = \frac{M_A (1 - t) - M_{\ddot u,max}}{k(\mu_{G,max}, \mu_{K,max})},
         \qquad
-        F_{M,max} = \frac{M_A (1 + t) - M_{\ddot u}}{k(\mu_{G,min}, \mu_{K,min})}
+        F_{M,max} = \frac{M_A (1 + t) - M_{\ddot u,min}}{k(\mu_{G,min}, \mu_{K,min})}
 
     where k = M/F is the torque per newton of preload (thread plus bearing).
 
@@ -752,11 +753,13 @@ def preload_bounds_from_torque(
     torque_tolerance : float
         t, the tool's relative torque tolerance (±), [-]
     prevailing_torque : float
-        M_ü, the prevailing (locking) torque that produces no preload, [N*m]
+        M_ü,max, the largest prevailing (locking) torque, which produces no preload, [N*m]
     per_newton_low_friction : float
         k at the low-friction corner (μ_G,min, μ_K,min), [m]
     per_newton_high_friction : float
         k at the high-friction corner (μ_G,max, μ_K,max), [m]
+    prevailing_torque_min : float, optional
+        M_ü,min; M_ü,max when None, [N*m]
 
     Returns
     -------
@@ -778,8 +781,9 @@ def preload_bounds_from_torque(
     >>> round(lo), round(hi)
     (31500, 64308)
     """
+    least = prevailing_torque if prevailing_torque_min is None else prevailing_torque_min
     low = max(torque * (1.0 - torque_tolerance) - prevailing_torque, 0.0)
-    high = max(torque * (1.0 + torque_tolerance) - prevailing_torque, 0.0)
+    high = max(torque * (1.0 + torque_tolerance) - least, 0.0)
     return low / per_newton_high_friction, high / per_newton_low_friction
 
 

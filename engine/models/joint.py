@@ -383,6 +383,15 @@ JOINT_INPUTS: tuple[Param, ...] = (
         group="tightening",
     ),
     Param(
+        "prevailing_torque_min",
+        "N*m",
+        "Smallest prevailing torque M_ü,min (sets the highest preload); prevailing_torque when "
+        "absent",
+        minimum=0.0,
+        maximum=1e5,
+        group="tightening",
+    ),
+    Param(
         "controlled",
         "1",
         "Tightened with a controlled method (false: by feel, [004] warns of over-tightening "
@@ -608,10 +617,19 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     k_low = _per_newton(bolt, mu_g_lo, mu_k_lo)
     k_high = _per_newton(bolt, mu_g_hi, mu_k_hi)
     m_u = float(x["prevailing_torque"])
+    m_u_min = m_u if x.get("prevailing_torque_min") is None else float(x["prevailing_torque_min"])
+    if m_u_min > m_u:
+        raise InputOutOfRange(
+            f"prevailing_torque_min = {m_u_min:g} N*m exceeds prevailing_torque = {m_u:g} N*m: "
+            f"must be ≤ {m_u:g} N*m",
+            field="prevailing_torque_min",
+        )
     if x.get("tightening_torque") is not None:
         torque = float(x["tightening_torque"])
         tol = float(x["torque_tolerance"])
-        fm_min, fm_max = jt.preload_bounds_from_torque(torque, tol, m_u, k_low, k_high)
+        fm_min, fm_max = jt.preload_bounds_from_torque(
+            torque, tol, m_u, k_low, k_high, m_u_min
+        )
         alpha_a = fm_max / fm_min if fm_min > 0.0 else math.inf
         notes.append(
             f"torque {torque:.4g} N·m ± {tol:.0%}, prevailing {m_u:.3g} N·m, μ_G "
