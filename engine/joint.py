@@ -348,7 +348,8 @@ def clamped_compliance(
     r"""Compliance of the clamped plates by VDI 2230's deformation cone and sleeve.
 
     .. math::
-        \delta_P = \sum_i \frac{1}{E_i}\int_{z_i}^{z_{i+1}}\frac{dz}{\tfrac{\pi}{4}(D(z)^2 - d_h^2)},
+        \delta_P = \sum_i \frac{1}{E_i}
+            \int_{z_i}^{z_{i+1}}\frac{dz}{\tfrac{\pi}{4}(D(z)^2 - d_h^2)},
         \qquad D(z) = \min(d_W + 2 s(z)\tan\varphi,\ D_A)
 
     where s(z) is the distance from the nearer bearing face (through-bolted:
@@ -809,7 +810,8 @@ def service_stress(
 
     .. math::
         \sigma_{z} = \frac{F_{S,max}}{A_0},\quad
-        \tau = \frac{F_M \tfrac{d_2}{2}\left(\tfrac{P}{\pi d_2} + 1.155\mu_G\right)}{\pi d_0^3/16},\quad
+        \tau = \frac{F_M \tfrac{d_2}{2}\left(\tfrac{P}{\pi d_2} + 1.155\mu_G\right)}
+            {\pi d_0^3/16},\quad
         \sigma_{red,B} = \sqrt{\sigma_z^2 + 3 (k_\tau \tau)^2}
 
     Parameters

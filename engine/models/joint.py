@@ -314,7 +314,8 @@ JOINT_INPUTS: tuple[Param, ...] = (
     Param(
         "thread_friction_max",
         "1",
-        "Largest thread friction μ_G,max (sets the lowest preload at a torque); μ_G,min when absent",
+        "Largest thread friction μ_G,max (sets the lowest preload at a torque); μ_G,min "
+        "when absent",
         minimum=0.0,
         maximum=1.0,
         group="friction",
@@ -497,7 +498,7 @@ def _shank_sections(bolt: Bolt, x: Mapping[str, Any], grip: float) -> tuple[list
     return [s for s in sections if s[0] > 0.0], free
 
 
-def _per_newton(bolt: Bolt, mu_g: float, mu_k: float) -> float:
+def _per_newton(bolt: Bolt, mu_g: float, mu_k: float) -> tuple[float, float]:
     k_thread, k_bearing = pl.tightening_torque_per_preload(
         bolt.pitch,
         bolt.pitch_diameter,
@@ -508,7 +509,7 @@ def _per_newton(bolt: Bolt, mu_g: float, mu_k: float) -> float:
         bolt.hole_diameter,
         "vdi2230",
     )
-    return float(k_thread) + float(k_bearing)
+    return float(k_thread), float(k_bearing)
 
 
 def _kn(force: float) -> str:
@@ -601,7 +602,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
     # R7 permissible preload at the smallest section -----------------------------------------
     d0, where = jt.smallest_section(bolt.stress_diameter, sections)
-    a0 = 0.25 * math.pi * d0 * d0
+    a0 = bolt.stress_area if where == "thread" else 0.25 * math.pi * d0 * d0
     nu = float(x["utilization"])
     beta = float(pl.torsion_factor(bolt.pitch, bolt.pitch_diameter, d0, mu_g_lo, "vdi2230"))
     f_mzul = pl.assembly_preload(bolt.yield_strength, a0, beta, nu)
@@ -614,8 +615,8 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
 
     # assembly preload range: torque specification or design at F_M,zul ------------------
-    k_low = _per_newton(bolt, mu_g_lo, mu_k_lo)
-    k_high = _per_newton(bolt, mu_g_hi, mu_k_hi)
+    kt_low, kb_low = _per_newton(bolt, mu_g_lo, mu_k_lo)
+    k_low, k_high = kt_low + kb_low, sum(_per_newton(bolt, mu_g_hi, mu_k_hi))
     m_u = float(x["prevailing_torque"])
     m_u_min = m_u if x.get("prevailing_torque_min") is None else float(x["prevailing_torque_min"])
     if m_u_min > m_u:
@@ -627,9 +628,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if x.get("tightening_torque") is not None:
         torque = float(x["tightening_torque"])
         tol = float(x["torque_tolerance"])
-        fm_min, fm_max = jt.preload_bounds_from_torque(
-            torque, tol, m_u, k_low, k_high, m_u_min
-        )
+        fm_min, fm_max = jt.preload_bounds_from_torque(torque, tol, m_u, k_low, k_high, m_u_min)
         alpha_a = fm_max / fm_min if fm_min > 0.0 else math.inf
         notes.append(
             f"torque {torque:.4g} N·m ± {tol:.0%}, prevailing {m_u:.3g} N·m, μ_G "
@@ -645,7 +644,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
         fm_max = f_mzul
         fm_min = f_mzul / alpha_a
-        design_torque = f_mzul * k_low + m_u
+        design_torque = f_mzul * kt_low + f_mzul * kb_low + m_u
         notes.append(
             f"no torque given: tightened to F_M,zul = {_kn(f_mzul)} with α_A = {alpha_a:.3g} "
             f"({method.key if x.get('tightening_factor') is None else 'as given'}); "
@@ -963,7 +962,7 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
         "R13: M_A for F_M,zul at μ_min plus M_ü (or the torque given)",
     ),
     _f("residual_clamp_force_min", "R12: F_KR,min = F_M,min − (1 − Φ_n) F_A − F_Z − ΔF_th"),
-    _f("separation_load", "F_A at which the joint opens from the lowest assembly preload"),
+    _f("separation_load", "R5/R12: F_A at which the joint opens from the lowest assembly preload"),
     _f("max_working_load", "R5–R7: largest F_A whose required window fits under F_M,zul"),
     _f("max_bolt_force", "R8: F_S,max = F_M,max + Φ_n F_A,max"),
     Output("working_stress", "Pa", "R8: σ_red,B (k_τ = 0.5)", display_unit="MPa"),

@@ -754,7 +754,7 @@ def _smallest_section(bolt: Bolt, x: Mapping[str, Any], notes: list[str]) -> tup
             )
         sections.append((float(x["reduced_length"]), float(x["reduced_diameter"])))
     d0, where = jt.smallest_section(bolt.stress_diameter, sections)
-    area0 = 0.25 * math.pi * d0 * d0
+    area0 = bolt.stress_area if where == "thread" else 0.25 * math.pi * d0 * d0
     if where == "shank":
         notes.append(
             f"smallest section is the shank, d_0 = {d0 * 1e3:.4g} mm < d_S = "

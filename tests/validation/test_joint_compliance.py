@@ -68,7 +68,8 @@ def test_through_bolted_cone_angle_is_the_same_fit_as_bat():
 
 
 def test_mixed_plates_differ_from_bat_by_its_substitute_area():
-    # BAT case M8 hex (d_uh 11.6 mm), Ti 3 mm + S355 5 + 5 mm, D_A 30 mm: BAT prints 7.124590e-07 mm/N
+    # BAT case M8 hex (d_uh 11.6 mm), Ti 3 mm + S355 5 + 5 mm, D_A 30 mm:
+    # BAT prints 7.124590e-07 mm/N
     c = jt.clamped_compliance(
         [0.003, 0.005, 0.005], [110e9, 200e9, 200e9], 0.0116, 0.008, 0.030, "through"
     )
