@@ -807,7 +807,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if not CHECK_HOOKS:
         notes.append(
             "surface pressure under head and nut (VDI R10) and length of engagement / thread "
-            "stripping (VDI R11) are not checked by this model"
+            "stripping (VDI R11) are not checked by this model yet"
         )
 
     # angle and elongation at the nominal preload [004, eq. 7–8] ---------------------------------
@@ -881,18 +881,14 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             window_assembly_min=[fm_min] * len(loads),
             window_assembly_max=[fm_max] * len(loads),
         )
-    notes.append(
-        "VDI 2230-1 text not available to us: relations as reproduced in ECSS-E-HB-32-23A and "
-        "misams/BAT; see docs/sources.md"
-    )
     return Result(
-        values={k: v for k, v in values.items() if ctx.wants(k)},
+        values=values,
         rung=ctx.rung,
         error_estimate=0.0,
         checks=checks,
         notes=notes,
         warnings=warnings,
-        series={k: v for k, v in series.items() if ctx.wants(k)},
+        series=series,
     )
 
 
@@ -1086,6 +1082,12 @@ VDI2230 = ModelSpec(
     outputs=JOINT_OUTPUTS,
     rungs=(CLOSED_FORM,),
     compute=_compute,
+    assumptions=(
+        "VDI 2230-1's text was not available to us: its relations as reproduced in "
+        "ECSS-E-HB-32-23A and implemented in misams/BAT (docs/sources.md)",
+        "concentric clamping and loading (no bending, Φ_en = Φ_n); the nut's bearing face as "
+        "large as the head's",
+    ),
     examples=(
         # M12 8.8 through 2 × 20 mm steel, 8 kN alternating 0…8 kN, 2 kN transverse
         {
