@@ -86,7 +86,11 @@ def _plate_inputs(i: int) -> tuple[Param, ...]:
             f"plate{i}_expansion",
             "1/K",
             f"Thermal expansion coefficient α_{i} of plate {i}"
-            + (" (steel 11.5e-6 /K)" if first else "; plate 1's when absent"),
+            + (
+                " (steel 11.5e-6 /K; type e.g. '23e-6 K^-1')"
+                if first
+                else "; plate 1's when absent"
+            ),
             default=STEEL_ALPHA if first else None,
             minimum=0.0,
             maximum=1e-3,
