@@ -477,9 +477,9 @@ def embedding(roughness: str, load: str, bearing_faces: int, interfaces: int) ->
     load : str
         ``"axial"`` or ``"transverse"``
     bearing_faces : int
-        n_K: 2 for head and nut, 1 for a tapped joint
+        n_K: 2 for head and nut, 1 for a tapped joint, [-]
     interfaces : int
-        n_T: inner interfaces between clamped parts (and the tapped part)
+        n_T: inner interfaces between clamped parts (and the tapped part), [-]
 
     Returns
     -------
@@ -936,7 +936,7 @@ def joint_diagram(
     embedding_force : float
         F_Z, [N]
     points : int
-        Number of points on the deformation axis
+        Number of points on the deformation axis, [-]
 
     Returns
     -------

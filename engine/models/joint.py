@@ -1070,7 +1070,6 @@ CLOSED_FORM = Rung(
 
 VDI2230 = ModelSpec(
     name="joint.vdi2230",
-    path="/joint/vdi2230",
     title="Bolted joint: stiffness, service loads, losses and the preload window (VDI 2230)",
     family="joint",
     summary=(
