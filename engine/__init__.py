@@ -18,7 +18,18 @@ from .errors import (
 )
 from .models import MODELS, get_model
 from .runner import MAX_SWEEP_POINTS, RunResult, SweepResult, run, sweep, sweep_values
-from .spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
+from .spec import (
+    Check,
+    ModelSpec,
+    Output,
+    Param,
+    Plot,
+    Result,
+    RunContext,
+    Rung,
+    Window,
+    fixed_error,
+)
 
 __all__ = [
     "MAX_SWEEP_POINTS",
@@ -32,12 +43,14 @@ __all__ = [
     "ModelSpec",
     "Output",
     "Param",
+    "Plot",
     "Result",
     "RunContext",
     "RunResult",
     "Rung",
     "SolverFailed",
     "SweepResult",
+    "Window",
     "fixed_error",
     "get_model",
     "run",

@@ -40,6 +40,7 @@ from .api import Limits, catalogue_router, model_router
 from .config import Settings
 from .extra import EXTRA_ROUTERS
 from .middleware import BodyGuard, FrontDoor
+from .studies import Studies, StudySettings, study_router
 from .workers import EnginePool
 
 _CDN = "https://cdn.jsdelivr.net"
@@ -117,12 +118,15 @@ def create_app(
         max_series_points=settings.max_series_points,
     )
 
+    studies = Studies(StudySettings())
+
     @asynccontextmanager
     async def lifespan(_: FastAPI) -> AsyncIterator[None]:
         if settings.warm_up:
             threading.Thread(target=warm_up, args=(models,), name="warm-up", daemon=True).start()
         yield
         pool.shutdown()
+        studies.shutdown()
 
     app = FastAPI(
         title="Tightening-tool calculator",
@@ -179,6 +183,10 @@ def create_app(
     routers = [catalogue_router(models), *(model_router(s, limits) for s in models), *EXTRA_ROUTERS]
     for router in routers:
         app.include_router(router)
+    studies_router = study_router(models, studies)
+    app.include_router(studies_router)
+    app.state.studies = studies
+    routers.append(studies_router)
     json_paths = frozenset(
         r.path
         for router in routers
