@@ -40,7 +40,6 @@ def _kernel(x: Any, ctx: RunContext) -> Result:
 
 TOY_KERNEL = ModelSpec(
     name="toy.kernel",
-    path="/toy/kernel",
     title="kernel",
     family="toy",
     summary="test-only: a heavy rung that releases the GIL",

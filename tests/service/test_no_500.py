@@ -8,6 +8,7 @@ model bug) sends ``Connection: close`` and logs one line with the request id.
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import math
 import warnings
@@ -122,7 +123,7 @@ def test_arithmetic_failure_inside_a_model_is_422_not_500() -> None:
         energy = 1.0 / (x["diameter"] - 0.5)
         return engine.Result(values={"energy": energy}, rung=ctx.rung, error_estimate=None)
 
-    spec = engine.ModelSpec(**{**TOY.__dict__, "compute": divide, "vectorized": None})
+    spec = dataclasses.replace(TOY, compute=divide, vectorized=None)
     with pytest.raises(engine.SolverFailed, match="ZeroDivisionError"):
         engine.run(spec, {"diameter": 0.5}, fidelity="exact")
     # in a sweep that point is null with a note; its neighbours are computed
