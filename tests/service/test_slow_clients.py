@@ -150,6 +150,8 @@ def test_sigterm_under_load_stops_within_the_stop_timeout(
     stopped = time.monotonic() - start
     for t in threads:
         t.join(5)
+    for c in clients:
+        c.close()
     assert stopped < 10, stopped  # SHUTDOWN_TIMEOUT_S is 3 s, then running work is cancelled
     # one line for the 500 of the test above, and no traceback anywhere
     assert out.count("slow-500") == 1, out[-3000:]

@@ -198,9 +198,10 @@ def test_vectorized_sweep_nulls_points_that_never_engage_or_never_spin_up():
 
 
 def test_vectorized_sweep_over_extreme_angles_is_finite():
-    angles = np.concatenate(
-        [np.geomspace(1e-6, 0.5, 40), math.pi / 2 - np.geomspace(0.5, 1e-6, 40)]
-    )
+    # from the declared minimum (1°: issue 20 found 1e-300 crashing) to just below 90°
+    lo = RARE_IMPACT.param("cone_angle").minimum
+    assert lo == pytest.approx(math.radians(1.0))
+    angles = np.concatenate([np.geomspace(lo, 0.5, 40), math.pi / 2 - np.geomspace(0.5, 1e-6, 40)])
     s = sweep(RARE_IMPACT, R, "cone_angle", angles, fidelity="closed_form")
     for name, column in s.results.items():
         for v in column:
