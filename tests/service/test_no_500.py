@@ -156,3 +156,23 @@ def test_post_routes_answer_405_for_a_wrong_method(real: TestClient) -> None:
     # with a non-JSON body too: the method is wrong before the media type is
     r = real.put("/api/v1/impact/rare", content=b"x=1", headers={"content-type": "text/plain"})
     assert r.status_code == 405
+
+
+def test_the_response_model_governs_every_answer() -> None:
+    """Routes return data that FastAPI validates against ``response_model`` (issue 13): a
+    model bug that returns text where the schema says number is caught at run time (500,
+    one log line), never sent as a malformed answer."""
+
+    def wrong(x: Any, ctx: RunContext) -> engine.Result:
+        return engine.Result(values={"energy": "lots"}, rung=ctx.rung, error_estimate=None)
+
+    spec = dataclasses.replace(TOY, compute=wrong, vectorized=None)
+    c = TestClient(
+        create_app(models=[spec], settings=Settings(warm_up=False, access_log=False)),
+        raise_server_exceptions=False,
+    )
+    r = c.post("/api/v1/toy/disc", json={"diameter": 0.1, "outputs": ["energy"]})
+    assert r.status_code == 500 and "lots" not in r.text
+    ok = create_app(models=[TOY], settings=Settings(warm_up=False, access_log=False))
+    good = TestClient(ok).post("/api/v1/toy/disc", json={"diameter": 0.1, "outputs": ["energy"]})
+    assert good.status_code == 200 and set(good.json()["results"]) == {"energy"}
