@@ -329,6 +329,13 @@ def sweep(
                 fast = _sweep_vectorized(spec, base, param, values, wanted, fidelity, tolerance)
         except SolverFailed:
             fast = None  # loop instead: the points that fail are null, with a note
+        except EngineError:
+            raise
+        except Exception:
+            # the array path is an optimisation and the scalar model the reference: where
+            # the array path fails on inputs the scalar one refuses or handles (issue 20's
+            # fuzzing found one), the loop answers
+            fast = None
         if fast is not None:
             fast.elapsed_s = time.perf_counter() - start
             return fast

@@ -13,6 +13,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
+import numpy as np
 from fastapi import APIRouter, HTTPException, Request
 from pydantic import BaseModel
 
@@ -113,7 +114,13 @@ def _sweep_points(spec: ModelSpec, body: Any) -> list[float]:
         raise engine.InputOutOfRange(
             f"{body.vary}: start and stop must lie within {param.range_text()}", field=body.vary
         )
-    values: list[float] = engine.sweep_values(start, stop, body.num, body.scale).tolist()
+    with np.errstate(all="ignore"):  # geomspace over 1e308 overflows: refused below
+        values: list[float] = engine.sweep_values(start, stop, body.num, body.scale).tolist()
+    if not all(math.isfinite(v) for v in values):
+        param = spec.param(body.vary)
+        raise engine.InputOutOfRange(
+            f"{body.vary}: start and stop must lie within {param.range_text()}", field=body.vary
+        )
     return values
 
 

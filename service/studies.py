@@ -39,7 +39,8 @@ from engine import ModelSpec
 from engine.study import DISTRIBUTIONS, METHODS, Study, Variable, plan, points_table
 from engine.study_exec import Cancelled, DaskExecutor, InProcess, StudyRun, run_study
 
-from .api import API_PREFIX
+from .api import _ERRORS, API_PREFIX
+from .schemas import ErrorResponse
 from .units import UnitError, to_si
 
 _KEEP_JOBS = 64
@@ -385,16 +386,27 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
                 "returns 202 with a job to poll at GET /api/v1/jobs/{id}."
             ),
             operation_id=spec.name.replace(".", "_") + "_study",
+            responses=_ERRORS,
         )
 
     for spec in models:
         add(spec)
 
-    @router.get("/jobs/{job_id}", summary="A study's state, progress and, when done, result")
+    no_job: dict[int | str, dict[str, Any]] = {
+        404: {"model": ErrorResponse, "description": "no such job"}
+    }
+
+    @router.get(
+        "/jobs/{job_id}",
+        summary="A study's state, progress and, when done, result",
+        responses=no_job,
+    )
     def get_job(job_id: str) -> dict[str, Any]:
         return studies.get(job_id).describe()
 
-    @router.delete("/jobs/{job_id}", summary="Cancel a study and free its workers")
+    @router.delete(
+        "/jobs/{job_id}", summary="Cancel a study and free its workers", responses=no_job
+    )
     def cancel_job(job_id: str) -> dict[str, Any]:
         return studies.cancel(job_id).describe()
 
@@ -402,6 +414,7 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
         "/jobs/{job_id}/points.csv",
         summary="The raw points of a finished study (asked with keep_points)",
         response_class=Response,
+        responses=no_job,
     )
     def points(job_id: str) -> Response:
         job = studies.get(job_id)
