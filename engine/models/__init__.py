@@ -13,6 +13,7 @@ schema, the form and ``GET /api/v1/models`` all derive from this tuple.
 from __future__ import annotations
 
 from ..spec import ModelSpec
+from .blow import BLOW
 from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
 from .nutrunner import NUTRUNNER_DRIVE
 from .preload import CONTROL as PRELOAD_CONTROL
@@ -26,6 +27,7 @@ MODELS: tuple[ModelSpec, ...] = (
     RARE_IMPACT,
     PRELOAD_TIGHTENING,
     PRELOAD_CONTROL,
+    BLOW,
 )
 
 
