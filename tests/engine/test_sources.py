@@ -26,6 +26,7 @@ CITING = [
 ]
 #: Physics modules: pure functions, never the spec machinery.
 PHYSICS = [
+    "blow",
     "clutch",
     "motor_spinup",
     "nutrunner",

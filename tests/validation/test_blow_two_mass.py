@@ -75,8 +75,9 @@ def test_hard_joint_takes_fewer_blows_than_soft():
     hard, soft = 600.0 / math.radians(30.0), 600.0 / math.radians(720.0)
     for method in ("energy", "simulation"):
         n = [
-            blow_series(BlowProblem(0.03, 1e-3, 2.3e4, 94.0, k, 1.1), 60.0, method,
-                        target_torque=600.0).blows_to_target  # fmt: skip
+            blow_series(
+                BlowProblem(0.03, 1e-3, 2.3e4, 94.0, k, 1.1), 60.0, method, target_torque=600.0
+            ).blows_to_target
             for k in (hard, soft)
         ]
         assert n[0] is not None and n[1] is not None and n[0] < n[1]
