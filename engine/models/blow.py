@@ -24,6 +24,7 @@ from ..blow import (
     clutch_preload_window,
     energy_blow,
     energy_blow_error,
+    energy_peak_error,
     iso5393_rate,
     joint_rate,
     rigid_blow_torque,
@@ -476,12 +477,13 @@ def _thread(x: Mapping[str, Any]) -> tuple[Any, float, list[str]] | None:
             "thread_pitch": x["thread_pitch"],
             "bearing_outer_diameter": x["bearing_outer_diameter"],
             "hole_diameter": x["hole_diameter"],
+            "yield_strength": 1.0,  # strength is not used here: skip the class lookup
         }
     )
     kg, kk, _ = torque_coefficients(
         bolt, x["thread_friction"], x["bearing_friction"], x["torque_formula"]
     )
-    return bolt, kg + kk, [n for n in notes if "property class" not in n]
+    return bolt, kg + kk, [n for n in notes if not n.startswith("yield strength")]
 
 
 def _target(x: Mapping[str, Any], per_preload: float | None) -> float | None:
@@ -560,16 +562,28 @@ def _setup(x: Mapping[str, Any]) -> tuple[_Tool, float, float, BlowProblem, Any]
     return tool, k, float(x["snug_torque"]), p, thread
 
 
-def _energy_estimate(x: Mapping[str, Any]) -> float | None:
+#: Outputs whose energy-rung error is the nut's kick (energy_peak_error), not the torque's.
+_PEAK_OUTPUTS = ("peak_torque", "peak_per_blow")
+
+
+def _energy_errors(x: Mapping[str, Any]) -> tuple[float, float] | None:
+    """(error of the joint torques, error of the peak torques) of the energy rung."""
     if x["source"] == "clutch":
         return None
     try:
-        _, k, _, p, _ = _setup(x)
+        _, k, t0, p, _ = _setup(x)
         if k <= 0.0:
             return None
-        return energy_blow_error(p.tool_inertia, p.struck_inertia, p.stiffness, k, p.restitution)
+        after = energy_blow_error(p.tool_inertia, p.struck_inertia, p.stiffness, k, p.restitution)
+        peak = energy_blow(p.energy, p.stiffness, k, t0, p.breakaway, p.drive_torque)[0]
+        return after, after + energy_peak_error(p, peak)
     except (ArithmeticError, ValueError):
         return None
+
+
+def _energy_estimate(x: Mapping[str, Any]) -> float | None:
+    errors = _energy_errors(x)
+    return None if errors is None else max(errors)
 
 
 def _rigid_estimate(x: Mapping[str, Any]) -> float | None:
@@ -793,7 +807,8 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
         error = _rigid_estimate(x)
     elif ctx.rung == "energy":
-        error = _energy_estimate(x)
+        errors = _energy_errors(x)
+        error = None if errors is None else errors[1 if ctx.wants(*_PEAK_OUTPUTS) else 0]
         notes.append(
             "energy: E + N·φ_t = T_p²/(2C) + (T_p² − T_0²)/(2k_j) per blow, struck inertia and "
             "damping neglected; the estimated error concerns the joint torque after each blow, "
@@ -907,7 +922,8 @@ BLOW = ModelSpec(
             "energy balance per blow with the joint's rate in series with the tool, struck "
             "inertia neglected; blow after blow",
             _energy_estimate,
-            typical_error="2·J_s/J_t·(C/(C+k_j))² + (1 − e²)/2 on the joint torque",
+            typical_error="2·J_s/J_t·(C/(C+k_j))² + (1 − e²)/2 on the joint torque; plus "
+            "ω0·√(C·J_r)/T_p on the peak torque (the nut's kick)",
             typical_time="~0.1 ms",
         ),
         Rung(
