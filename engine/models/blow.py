@@ -141,8 +141,8 @@ _INPUTS: tuple[Param, ...] = (
     Param(
         "drive_torque",
         "N*m",
-        "torque that keeps driving the tool during the blow (e.g. the motor), at the nut",
-        default=0.0,
+        "torque that keeps driving the tool during the blow (e.g. the motor), at the nut; "
+        "absent: none",
         minimum=-1e5,
         maximum=1e5,
         group="source",
@@ -151,8 +151,7 @@ _INPUTS: tuple[Param, ...] = (
         "coupling_slip_torque",
         "N*m",
         "slipping torque of the nut-runner's safety coupling 1 at the motor shaft, fed into "
-        "the blow while it slips [000, text] (source nutrunner)",
-        default=0.0,
+        "the blow while it slips [000, text] (source nutrunner); absent: none",
         minimum=0.0,
         maximum=1e5,
         group="nut-runner",
@@ -413,7 +412,7 @@ def _need(x: Mapping[str, Any], names: tuple[str, ...], why: str) -> None:
 def _tool(x: Mapping[str, Any]) -> _Tool:
     src = x["source"]
     notes: list[str] = []
-    drive = float(x["drive_torque"])
+    drive = float(x["drive_torque"] or 0.0)
     if src == "energy":
         _need(x, ("tool_energy", "tool_inertia", "tool_stiffness"), "with source 'energy'")
         e, j, c = float(x["tool_energy"]), float(x["tool_inertia"]), float(x["tool_stiffness"])
@@ -429,7 +428,7 @@ def _tool(x: Mapping[str, Any]) -> _Tool:
         c8 = nr.torsional_stiffness(g, x["spindle_diameter"], x["spindle_length"])
         c = c7 * c8 / (c7 + c8)
         drag = (x["spindle_count"] - 1) * x["idle_spindle_friction_torque"]
-        feed = x["coupling_slip_torque"] * w / w5
+        feed = float(x["coupling_slip_torque"] or 0.0) * w / w5
         drive += feed - drag
         notes.append(
             f"nut-runner: drive energy T = {e:.4g} J [000, eq. 3–4] at spindle speed "
