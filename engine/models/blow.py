@@ -380,6 +380,14 @@ _OUTPUTS: tuple[Output, ...] = (
     ),
     Output("peak_per_blow", "N*m", "peak torque of each blow", series=True, x="blow_number"),
     Output(
+        "rotation_per_blow",
+        "rad",
+        "nut rotation in each blow",
+        series=True,
+        x="blow_number",
+        display_unit="deg",
+    ),
+    Output(
         "time_in_blow", "s", "time in the first blow (simulation)", series=True, display_unit="ms"
     ),
     Output(
@@ -827,6 +835,8 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "torque_per_blow": list(series.torque_after),
         "peak_per_blow": list(series.peak),
     }
+    if ctx.rung != "rigid":
+        out_series["rotation_per_blow"] = list(series.rotation)
     if per is not None:
         out_series["preload_per_blow"] = [t / per for t in series.torque_after]
     if series.first is not None and len(series.first.time):

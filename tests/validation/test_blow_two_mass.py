@@ -81,3 +81,19 @@ def test_hard_joint_takes_fewer_blows_than_soft():
             for k in (hard, soft)
         ]
         assert n[0] is not None and n[1] is not None and n[0] < n[1]
+
+
+def test_nutrunner_source_reproduces_the_papers_spindle_torque():
+    # the rigid rung with source 'nutrunner' is nutrunner.drive's closed form:
+    # M_max = √(2T·C7C8/(C7 + C8)) − (z − 1)·M_tr [000, eq. 7–8, 10]
+    from engine import run
+    from engine.models import get_model
+    from engine.models.blow import BLOW, NUTRUNNER_HARD
+
+    drive = get_model("nutrunner.drive")
+    paper = run(drive, drive.examples[0], fidelity="closed_form").results
+    blow = run(BLOW, NUTRUNNER_HARD, fidelity="rigid").results
+    assert blow["tool_energy_used"] == pytest.approx(paper["kinetic_energy"], rel=1e-12)
+    assert blow["rigid_torque"] == pytest.approx(paper["max_spindle_torque"], rel=1e-12)
+    assert blow["peak_torque"] == pytest.approx(paper["max_spindle_torque"], rel=1e-12)
+    assert blow["tool_speed"] == pytest.approx(paper["spindle_gear_speed"], rel=1e-12)
