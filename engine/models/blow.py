@@ -326,7 +326,7 @@ _INPUTS: tuple[Param, ...] = (
         default=2.1e11,
         group="joint compliance",
     ),
-    count("max_blows", "most blows to try", minimum=1, maximum=2000, default=100),
+    count("max_blows", "most blows to try", minimum=1, maximum=1000, default=100),
 )
 
 # --------------------------------------------------------------------------- outputs
@@ -738,6 +738,25 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     max_blows = int(x["max_blows"])
     if target is not None and t0 >= target:
         raise InputOutOfRange("snug_torque must be below the target torque", field="snug_torque")
+    e = p.energy
+    saturation = (p.drive_torque + math.sqrt(p.drive_torque**2 + 2 * e * p.stiffness)) / p.breakaway
+    tool_values: dict[str, Any] = {
+        "tool_energy_used": e,
+        "tool_inertia_used": p.tool_inertia,
+        "tool_speed": p.speed,
+        "tool_stiffness_used": p.stiffness,
+        "joint_rate_used": k,
+        "rigid_torque": rigid_blow_torque(e, p.stiffness) + p.drive_torque,
+        "saturation_torque": saturation,
+    }
+    if not ctx.wants(*(o.name for o in _OUTPUTS if o.name not in tool_values)):
+        notes.append("no requested output needs the blows: none was run")
+        return Result(
+            values={kk: v for kk, v in tool_values.items() if ctx.wants(kk)},
+            rung=ctx.rung,
+            error_estimate=0.0,
+            notes=notes,
+        )
     series = blow_series(
         p,
         t0,
@@ -748,8 +767,6 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         max_steps=ctx.max_steps,
         deadline=ctx.deadline,
     )
-    e = p.energy
-    saturation = (p.drive_torque + math.sqrt(p.drive_torque**2 + 2 * e * p.stiffness)) / p.breakaway
 
     def preload(t: float) -> float | None:
         return None if per is None else t / per
