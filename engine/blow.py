@@ -353,6 +353,22 @@ def energy_blow_error(
     the examples); with a free struck side (:math:`k_j = T_0 = 0`) it exceeds 1:
     the energy rung does not apply.
 
+    Parameters
+    ----------
+    tool_inertia, struck_inertia : float
+        J_t and J_s, [kg*m^2]
+    stiffness : float
+        C, [N*m/rad]
+    rate : float
+        k_j, [N*m/rad]
+    restitution : float, optional
+        e, [-]
+
+    Returns
+    -------
+    float
+        Relative error of the joint torque after a blow, [-]
+
     Examples
     --------
     >>> round(energy_blow_error(0.03, 0.001, 2.0e4, 1000.0), 4)
@@ -377,6 +393,16 @@ def contact_restitution(damping_ratio: float) -> float:
     which needs the dashpot to pull; with a one-sided contact it understates
     e (0.80 asks ζ = 0.071 by that formula, which really gives 0.81). e cannot
     fall below about 0.135 (critical damping) in this model.
+
+    Parameters
+    ----------
+    damping_ratio : float
+        ζ of the contact's relative motion, 0 ≤ ζ < 1, [-]
+
+    Returns
+    -------
+    e : float
+        Coefficient of restitution, [-]
 
     Examples
     --------
@@ -745,6 +771,12 @@ def simulate_blow(
         T_0, joint torque when the blow starts, [N*m]
     record : bool
         Keep about 400 points of the spring torque against time
+    max_steps : int
+        Step budget of the blow, [-]; BudgetExceeded past it
+    deadline : float or None
+        ``time.perf_counter()`` value after which the run stops (BudgetExceeded), [s]
+    steps_per_period : int or None
+        Override of :data:`STEPS_PER_PERIOD` (convergence tests), [-]
 
     Returns
     -------
@@ -832,7 +864,24 @@ def simulate_blow_reference(
     """The same blow by scipy's ``solve_ivp``, one solve per stick/slip phase with terminal events.
 
     Independent of the compiled kernel (its own right-hand side and scipy's
-    event location). Returns (peak torque, nut rotation, RHS evaluations).
+    event location); the peak is read on a 2001-point grid of each phase's
+    dense output.
+
+    Parameters
+    ----------
+    p : BlowProblem
+        Tool, struck side and joint
+    start_torque : float
+        T_0, [N*m]
+    rtol : float
+        Relative tolerance of the solver, [-]
+    method : str
+        solve_ivp method
+
+    Returns
+    -------
+    tuple
+        (peak torque [N*m], nut rotation [rad], RHS evaluations [-])
     """
     from scipy.integrate import solve_ivp
 
@@ -994,6 +1043,18 @@ def energy_peak_error(p: BlowProblem, peak: float) -> float:
     :math:`\omega_0\sqrt{CJ_r}`. The joint torque after the blow is much less
     sensitive (:func:`energy_blow_error`).
 
+    Parameters
+    ----------
+    p : BlowProblem
+        Tool, struck side and joint
+    peak : float
+        The energy rung's peak torque T_p, [N*m]
+
+    Returns
+    -------
+    float
+        Relative error of the peak torque, [-]
+
     >>> round(energy_peak_error(BlowProblem(0.03, 0.001, 2.0e4, 90.0, 1000.0), 484.6), 3)
     0.817
     """
@@ -1018,6 +1079,29 @@ def blow_series(
     when a blow no longer turns the nut (the joint holds against the blow:
     saturation), or after ``max_blows``. The rigid rung takes the joint to the
     blow's peak torque in one blow ([000, eq. 7–8, 10]: √(2EC) + N).
+
+    Parameters
+    ----------
+    p : BlowProblem
+        Tool, struck side and joint
+    start_torque : float
+        Joint torque before the first blow (snug), [N*m]
+    method : str
+        ``rigid``, ``energy`` or ``simulation``
+    target_torque : float or None
+        Stop at the first blow that reaches it, [N*m]
+    max_blows : int
+        Most blows, [-]
+    record_first : bool
+        Keep the torque against time of the first blow (simulation)
+    max_steps : int
+        Step budget of all blows together, [-]
+    deadline : float or None
+        ``time.perf_counter()`` value after which the run stops, [s]
+
+    Returns
+    -------
+    BlowSeries
     """
     peaks: list[float] = []
     rots: list[float] = []

@@ -717,7 +717,7 @@ def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
             )
         )
     return Result(
-        values={k: v for k, v in values.items() if ctx.wants(k)},
+        values=values,
         rung=ctx.rung,
         error_estimate=None,
         checks=checks,
@@ -752,7 +752,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if not ctx.wants(*(o.name for o in _OUTPUTS if o.name not in tool_values)):
         notes.append("no requested output needs the blows: none was run")
         return Result(
-            values={kk: v for kk, v in tool_values.items() if ctx.wants(kk)},
+            values=tool_values,
             rung=ctx.rung,
             error_estimate=0.0,
             notes=notes,
@@ -860,12 +860,12 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         out_series["time_in_blow"] = series.first.time.tolist()
         out_series["torque_in_blow"] = series.first.torque.tolist()
     return Result(
-        values={kk: v for kk, v in values.items() if ctx.wants(kk)},
+        values=values,
         rung=ctx.rung,
         error_estimate=error,
         checks=checks,
         notes=notes,
-        series={kk: v for kk, v in out_series.items() if ctx.wants(kk)},
+        series=out_series,
     )
 
 
@@ -919,7 +919,6 @@ CLUTCH_M10: dict[str, Any] = {
 
 BLOW = ModelSpec(
     name="blow.joint",
-    path="/blow/joint",
     title="Blow into a joint: torque and preload per blow, blows to target",
     family="blow",
     summary=(
