@@ -23,6 +23,7 @@ import engine
 FAMILIES: dict[str, tuple[str, ...]] = {
     "blow": ("blow.joint",),
     "clutch": ("clutch.ball", "clutch.ball_setting"),
+    "joint": ("joint.vdi2230",),
     "motor_spinup": ("nutrunner.drive",),
     "nutrunner": ("nutrunner.drive",),
     "preload": ("preload.tightening", "preload.control"),

@@ -29,6 +29,7 @@ CITING = [
 PHYSICS = [
     "blow",
     "clutch",
+    "joint",
     "motor_spinup",
     "nutrunner",
     "preload",
