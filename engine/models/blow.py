@@ -30,6 +30,7 @@ from ..blow import (
     rigid_blow_torque,
 )
 from ..errors import InputOutOfRange
+from ..joint import clamped_compliance as vdi_clamped_compliance
 from ..rare_impact import liftoff_speed, release_speed
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
 from ._common import DEG, RPM, count, friction_coefficient, length, positive, quantity
@@ -307,7 +308,7 @@ _INPUTS: tuple[Param, ...] = (
     positive(
         "clamped_compliance",
         "m/N",
-        "δ_P of the clamped parts ('joint')",
+        "δ_P of the clamped parts ('joint'; absent: VDI 2230-1 R3 cone over clamped_length)",
         maximum=1e-3,
         group="joint compliance",
     ),
@@ -321,7 +322,7 @@ _INPUTS: tuple[Param, ...] = (
     positive(
         "youngs_modulus",
         "Pa",
-        "E of the bolt",
+        "E of the bolt (and of the plates for the cone)",
         maximum=1e12,
         default=2.1e11,
         group="joint compliance",
@@ -527,8 +528,18 @@ def _rate(x: Mapping[str, Any], target: float | None, thread: Any) -> tuple[floa
         raise InputOutOfRange(
             "joint_rate_from 'joint' needs thread_diameter", field="thread_diameter"
         )
-    _need(x, ("clamped_compliance",), "with joint_rate_from 'joint'")
     bolt, per_preload, _ = thread
+    delta_p = x.get("clamped_compliance")
+    how_p = "as given"
+    if delta_p is None:
+        _need(x, ("clamped_length",), "with joint_rate_from 'joint' (or give clamped_compliance)")
+        delta_p = vdi_clamped_compliance(
+            [x["clamped_length"]],
+            [x["youngs_modulus"]],
+            bolt.bearing_outer_diameter,
+            bolt.hole_diameter,
+        ).total
+        how_p = "VDI 2230-1 R3 deformation cone, one plate of l_K, wide plates, through bolt"
     delta_s = x.get("bolt_compliance")
     how_s = "as given"
     if delta_s is None:
@@ -538,11 +549,11 @@ def _rate(x: Mapping[str, Any], target: float | None, thread: Any) -> tuple[floa
             [x["clamped_length"], 0.8 * d / 3.0], [d, d3], x["youngs_modulus"]
         )
         how_s = "plain shank over l_K plus a third of the nut height at d3 [004, eq. 4, 7]"
-    k = joint_rate(per_preload, bolt.pitch, float(delta_s), float(x["clamped_compliance"]))
+    k = joint_rate(per_preload, bolt.pitch, float(delta_s), float(delta_p))
     return k, (
         f"joint: k_j = (k_G + k_K)·P/(2π(δ_S + δ_P)) = {k:.4g} N·m/rad with k_G + k_K = "
         f"{per_preload * 1e3:.4g} mm (tightening relation), δ_S = {float(delta_s):.4g} m/N "
-        f"({how_s}), δ_P = {float(x['clamped_compliance']):.4g} m/N [004, eq. 8]"
+        f"({how_s}), δ_P = {float(delta_p):.4g} m/N ({how_p}) [004, eq. 8]"
     )
 
 

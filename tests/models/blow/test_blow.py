@@ -158,3 +158,15 @@ def test_free_blow_rebounds_with_the_asked_restitution(e):
     # the jaws part where the force (not the twist) returns to zero: a kink inside an RK4
     # step, which costs accuracy: the simulation rung claims 5e-5 with damping
     assert math.sqrt(4.0 * out.energy_left - 1.0) == pytest.approx(e, rel=5e-5)
+
+
+def test_joint_rate_from_the_vdi_cone_when_the_plates_compliance_is_absent():
+    from engine.joint import clamped_compliance
+
+    x = {k: v for k, v in RARE_IMPACT_M16.items() if k != "clamped_compliance"}
+    r = run(BLOW, x, fidelity="energy", outputs=["joint_rate_used"])
+    # M16: d_W = 22.49 mm (ISO 4017), d_h = 17.5 mm (ISO 273 medium), l_K = 40 mm, steel
+    plates = clamped_compliance([0.04], [2.1e11], 0.02249, 0.0175).total
+    given = run(BLOW, {**x, "clamped_compliance": plates}, fidelity="energy")
+    assert r.results["joint_rate_used"] == pytest.approx(given.results["joint_rate_used"], rel=1e-3)
+    assert any("deformation cone" in n for n in r.notes)
