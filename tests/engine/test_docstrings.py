@@ -30,11 +30,13 @@ FAMILIES: dict[str, tuple[str, ...]] = {
     "preload_methods": ("preload.tightening", "preload.control"),
     "rare_impact": ("impact.rare",),
     "rare_impact_sim": ("impact.rare",),
+    "springs": ("clutch.ball", "clutch.ball_setting"),
     "threads": ("preload.tightening", "preload.control"),
 }
 
 #: Not physics: look-ups by key, documented in prose.
 NOT_PHYSICS = {"preload_methods.catalogue", "preload_methods.get_method"}
+NOT_PHYSICS |= {"springs.SpringMaterial"}  # a data record, documented in prose
 #: Physics functions still without a numpydoc Parameters section (their arguments
 #: are the paper's symbols, explained in the module docstring). The list may only
 #: shrink: a new function must document its parameters, and documenting one of

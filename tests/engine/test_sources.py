@@ -36,6 +36,7 @@ PHYSICS = [
     "preload_methods",
     "rare_impact",
     "rare_impact_sim",
+    "springs",
     "threads",
 ]
 
