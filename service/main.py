@@ -155,7 +155,7 @@ def create_app(
 
     @app.get("/report", include_in_schema=False)
     def report(request: Request) -> RedirectResponse:
-        """``/report?m=…&ex=0&…``: the form's calculation report for a link's query (for archiving)."""
+        """``/report?m=…&ex=0&…``: the calculation report of a link's query (to archive)."""
         query = request.url.query
         return RedirectResponse(
             "./#" + (query + "&" if query else "") + "view=report", status_code=303
