@@ -327,6 +327,7 @@ function showModel(m, params = new URLSearchParams()) {
   form.append(el("div", { class: "actions" },
     el("button", { type: "submit", id: "compute" }, "Compute"), examples,
     el("button", { type: "button", id: "copy-link", onclick: copyLink }, "Copy link")),
+  designNames(m, params),
   el("div", { class: "actions files" },
     el("button", { type: "button", id: "show-report", onclick: () => showView("report") }, "Calculation report"),
     el("button", { type: "button", id: "save-design", onclick: () => saveDesign(m) }, "Save design"),
@@ -338,7 +339,7 @@ function showModel(m, params = new URLSearchParams()) {
   const stale = el("p", { id: "stale-note", class: "stale-note", role: "status", hidden: true },
     "Inputs changed: compute again ", el("button", { type: "button", onclick: compute }, "Compute"));
   sec.append(form, el("div", { id: "error-box", role: "alert" }), stale, el("div", { id: "result" }), sweepPanel(m),
-    reportSection(m, params), el("section", { id: "compare", class: "compare", "aria-label": "comparison of designs" }));
+    reportSection(m), el("section", { id: "compare", class: "compare", "aria-label": "comparison of designs" }));
 
   fillForm(m, params.get("ex") ?? (m.examples.length ? "0" : "defaults"));
   applyParams(m, params);
@@ -1318,17 +1319,23 @@ function downloadSweep(m, kind) {
 // ---------------------------------------------------------------- report
 
 /** The calculation report: a view on screen (view=report), and what the page prints. */
-function reportSection(m, params) {
-  const project = el("input", { id: "report-project", type: "text", value: params.get("proj") ?? "", placeholder: "project", "aria-label": "project" });
-  const part = el("input", { id: "report-part", type: "text", value: params.get("part") ?? "", placeholder: "part / joint", "aria-label": "part name" });
+/** Project and part name: kept in the link, the design file and the report's header. */
+function designNames(m, params) {
+  const project = el("input", { id: "report-project", type: "text", value: params.get("proj") ?? "", placeholder: "project" });
+  const part = el("input", { id: "report-part", type: "text", value: params.get("part") ?? "", placeholder: "part / joint" });
   for (const f of [project, part]) f.addEventListener("change", () => updateHash(m, { ...requestBody(m), ...fidelityBody() }));
+  return el("div", { class: "actions names" },
+    el("label", { for: "report-project" }, "Project"), project, el("label", { for: "report-part" }, "Part"), part);
+}
+
+function reportSection(m) {
   return el("section", { id: "report", class: "report", "aria-label": "calculation report" },
     el("div", { class: "report-bar no-print" },
       el("button", { type: "button", id: "print-report", onclick: () => window.print() }, "Print / save as PDF"),
       el("button", { type: "button", id: "close-report", onclick: () => showView(null) }, "Back to the form")),
     el("header", { class: "report-head" },
       el("h2", {}, "Calculation report: ", m.title),
-      el("p", { class: "report-ids" }, el("label", {}, "Project ", project), " ", el("label", {}, "Part ", part)),
+      el("p", { class: "report-ids", id: "report-ids" }),
       el("p", { class: "report-meta", id: "report-meta" })),
     el("div", { id: "report-body" }, el("p", { class: "muted" }, "Compute to fill the report.")));
 }
@@ -1381,6 +1388,8 @@ function renderReport(m) {
   if (!body || !data) return;
   destroyCharts("report");
   const now = new Date();
+  const proj = document.getElementById("report-project").value.trim(), part = document.getElementById("report-part").value.trim();
+  document.getElementById("report-ids").replaceChildren("Project ", el("strong", {}, proj || "—"), " · Part ", el("strong", {}, part || "—"));
   document.getElementById("report-meta").replaceChildren(
     `${now.toISOString().slice(0, 16).replace("T", " ")} UTC · service ${state.version || "?"} · model `,
     el("code", {}, m.name), " · ", el("a", { href: location.href, class: "report-link" }, "link to this calculation"));
@@ -1389,7 +1398,7 @@ function renderReport(m) {
     el("p", { class: "eq-what" }, e.summary.replace(/\s*\[[^\]]*\]\.?$/, ""), e.source ? el("span", { class: "muted" }, ` ${e.source}`) : null),
     ...e.latex.map(equationNode)));
   const seriesBox = el("div", { class: "plots report-plots" });
-  body.replaceChildren(
+  body.replaceChildren(...[
     el("p", { class: "summary" }, m.summary),
     el("p", { class: "source" }, el("strong", {}, "Source: "), m.source),
     sources.length ? el("ul", { class: "sources" }, ...sources) : null,
@@ -1399,7 +1408,7 @@ function renderReport(m) {
       el("div", {}, el("h3", {}, "Results"), ...resultParts(m, data))),
     eqs.length ? el("h3", {}, "Equations used") : null,
     eqs.length ? el("div", { class: "equations" }, ...eqs) : null,
-    seriesBox);
+    seriesBox].filter(Boolean));
   if (Object.values(data.series).some((v) => v.length)) renderSeries(m, data, seriesBox, "report");
   if (state.lastSweep?.response) plotSweep(m, seriesBox.appendChild(el("div", {})), "report");
 }
