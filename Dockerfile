@@ -1,5 +1,5 @@
 # Slim runtime image: no dev dependencies, non-root, health-checked.
-# tests/test_container.py repeats these steps (install, then CMD) in a fresh venv,
+# tests/e2e/test_container.py repeats these steps (install, then CMD) in a fresh venv,
 # since no Docker engine runs on the CI machines.
 FROM python:3.11-slim
 

@@ -6,7 +6,7 @@ HOST ?= 127.0.0.1
 PORT ?= 8000
 BIN := $(VENV)/bin
 
-.PHONY: run test check bench install clean
+.PHONY: run test test-fast check bench install clean
 
 $(VENV)/.installed-run: pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -31,6 +31,12 @@ test: $(VENV)/.installed-dev
 	PY=$(BIN)/python scripts/check
 
 check: test
+
+# The inner loop: format, lint, types and every test but the browser, fresh-venv installs,
+# servers and fuzzing (pytest markers, see pyproject.toml); under a minute. CI runs `make test`.
+FAST := not slow and not browser and not install and not fuzz
+test-fast: $(VENV)/.installed-dev
+	PY=$(BIN)/python scripts/check -q -m "$(FAST)"
 
 # Speed against accuracy for every registered model: bench/results.json, bench/pareto.png, a table.
 bench: $(VENV)/.installed-bench

@@ -26,6 +26,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from engine import run
+from engine.models.nutrunner import EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
 from engine.motor_spinup import (
     MotorCurve,
     kloss_breakdown_slip,
@@ -38,7 +39,6 @@ from engine.motor_spinup import (
     spin_up_time,
     torque_limited_constant_power_spin_up_time,
 )
-from engine.nutrunner import EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
 from engine.spec import RunContext
 
 MODEL = "nutrunner.drive"

@@ -27,13 +27,8 @@ from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from engine.rare_impact import (
-    RARE_IMPACT,
-    REFERENCE_DESIGN,
-    _release_speed_of,
-    quasi_static_release_error,
-    spin_up_time,
-)
+from engine.models.rare_impact import RARE_IMPACT, REFERENCE_DESIGN, _release_speed_of
+from engine.rare_impact import quasi_static_release_error, spin_up_time
 from engine.rare_impact_sim import (
     STEPS_PER_PERIOD,
     stage1_fast,

@@ -565,8 +565,7 @@ def toy_models() -> list[ModelSpec]:
     root = str(HERE.parent)
     if root not in sys.path:
         sys.path.insert(0, root)
-    from tests.foundation.toy import TOY
-    from tests.stability.toys import TOYS
+    from tests.toys import TOY, TOYS
 
     return [TOY, *TOYS]
 

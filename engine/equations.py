@@ -85,6 +85,10 @@ def equations_of(fn: Callable[..., Any], limit: int = 16) -> tuple[dict[str, Any
         if latex:
             summary = doc.strip().split("\n\n")[0].replace("\n", " ")
             cites = list(dict.fromkeys(c.strip() for c in _CITE.findall(doc)))
+            # a bare "[004]" says less than "[004, eq. 10]" beside it
+            cites = [
+                c for c in cites if not any(o != c and o.startswith(c[:-1] + ",") for o in cites)
+            ]
             out.append(
                 {
                     "function": f.__name__,

@@ -4,7 +4,7 @@ Not in the source [000]: its eq. 5 assumes constant power from standstill,
 which needs infinite torque at zero speed. A real motor has a torque–speed
 curve :math:`M(\omega)`; the rigid drive obeys :math:`J\,d\omega/dt =
 M(\omega)`, which separates, so the spin-up time is a single quadrature
-:math:`t = \int_0^\omega J\,d\omega'/M(\omega')` (MODELS.md §1 notes).
+:math:`t = \int_0^\omega J\,d\omega'/M(\omega')`, the higher-fidelity variant of [000, eq. 5].
 Curves offered: a straight line (stall torque, no-load speed), an induction
 motor by the simplified Kloss formula, and constant power above a torque
 limit (the honest version of the source's idealisation). Closed forms of the

@@ -272,7 +272,7 @@ def thread_torque(
     Notes
     -----
     [004, eq. 10], lost from the text; the standard textbook relation
-    stands in, as MODELS.md §4 says.
+    stands in (see [004] in docs/sources.md).
 
     Examples
     --------

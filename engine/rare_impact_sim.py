@@ -68,7 +68,7 @@ import math
 import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 
@@ -80,7 +80,6 @@ from .rare_impact import (
     spin_up_time,
     striker_oscillation,
 )
-from .spec import RunContext
 
 __all__ = [
     "STEPS_PER_PERIOD",
@@ -91,6 +90,19 @@ __all__ = [
     "stage1_problem",
     "stage1_reference",
 ]
+
+
+class Budget(Protocol):
+    """What :func:`simulate` needs of the run's context (``engine.spec.RunContext`` fits)."""
+
+    @property
+    def deadline(self) -> float | None: ...
+
+    @property
+    def max_steps(self) -> int: ...
+
+    def wants(self, *names: str) -> bool: ...
+
 
 #: RK4 steps per shortest oscillation period of the half-coupling.
 STEPS_PER_PERIOD = 200
@@ -381,7 +393,7 @@ def stage1_fast(
     The reference design: the quasi-static closed form says 236.0163 rad/s
     at 0.944065 s; the half-coupling's lag and oscillation release it at
 
-    >>> from engine.rare_impact import REFERENCE_DESIGN
+    >>> from engine.models.rare_impact import REFERENCE_DESIGN
     >>> r = stage1_fast(stage1_problem(REFERENCE_DESIGN))
     >>> round(r.w_release, 4), round(r.t_release, 6)
     (235.9862, 0.943945)
@@ -526,7 +538,7 @@ def _travel_time(distance: float, amplitude: float, k: float) -> float:
     return 2.0 / k * math.asin(math.sqrt(min(max(q, 0.0), 1.0)))
 
 
-def simulate(x: Mapping[str, Any], ctx: RunContext) -> SimulationResult:
+def simulate(x: Mapping[str, Any], ctx: Budget) -> SimulationResult:
     """All four stages: stage 1 integrated, stages 2-4 exact; series if asked."""
     problem = stage1_problem(x)
     want_series = ctx.wants("time", "flywheel_speed", "z1", "z2", "z3", "z4")

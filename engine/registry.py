@@ -1,31 +1,10 @@
-"""Every model the product offers, in the order the catalogue lists them.
+"""Kept so that ``from engine.registry import MODELS, get_model`` still works.
 
-Adding a model is adding its spec here: the service's endpoints, the OpenAPI
-schema, the form and ``GET /api/v1/models`` all derive from this tuple.
+The registry is :mod:`engine.models` (one declaration module per family).
 """
 
 from __future__ import annotations
 
-from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
-from .nutrunner import NUTRUNNER_DRIVE
-from .preload_models import CONTROL as PRELOAD_CONTROL
-from .preload_models import TIGHTENING as PRELOAD_TIGHTENING
-from .rare_impact import RARE_IMPACT
-from .spec import ModelSpec
+from .models import MODELS, get_model
 
-MODELS: tuple[ModelSpec, ...] = (
-    NUTRUNNER_DRIVE,
-    BALL_CLUTCH,
-    BALL_CLUTCH_SETTING,
-    RARE_IMPACT,
-    PRELOAD_TIGHTENING,
-    PRELOAD_CONTROL,
-)
-
-
-def get_model(name: str) -> ModelSpec:
-    """The spec called ``name`` (e.g. ``"clutch.ball"``)."""
-    for spec in MODELS:
-        if spec.name == name:
-            return spec
-    raise KeyError(name)
+__all__ = ["MODELS", "get_model"]

@@ -16,7 +16,7 @@ Endpoint choice (override with ``--closed /path`` and ``--sim /path``):
   numeric, ...), else a model with a time series output, else the slowest.
 
 With an empty registry the server runs the test toys instead
-(``tests.hardening.toys:toy_app``), so the script works on any checkout.
+(``tests.toys:toy_app``), so the script works on any checkout.
 
 Targets (issue 8): closed form ≥ 50 % of /healthz throughput, closed-form
 p99 < 50 ms. ``--check`` exits 1 when either is missed.
@@ -66,7 +66,7 @@ def start_server(workers: int, toy: bool) -> tuple[subprocess.Popen[bytes], str]
     port = free_port()
     cmd = [sys.executable, "-m", "service", "--workers", str(workers)]
     if toy:
-        cmd += ["--factory", "tests.hardening.toys:toy_app"]
+        cmd += ["--factory", "tests.toys:toy_app"]
     cmd += ["--host", "127.0.0.1", "--port", str(port)]
     # the access log stays on (it is part of the cost being measured), to a null sink
     proc = subprocess.Popen(

@@ -218,4 +218,10 @@ def catalogue_router(models: Sequence[ModelSpec]) -> APIRouter:
             return entries[name]
         raise HTTPException(status_code=404, detail=f"no model named {name[:80]!r}")
 
+    sources = {"sources": engine.sources.catalogue()}
+
+    @router.get("/sources", summary="Every cited source: [000, eq. 5] resolves here")
+    def list_sources() -> dict[str, Any]:
+        return sources
+
     return router

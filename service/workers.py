@@ -10,7 +10,7 @@ Why threads and not processes
 * The heavy rungs are numpy/scipy: their kernels release the GIL, and pure
   Python stepping yields it every ``sys.getswitchinterval()`` (5 ms), so the
   event loop and quick requests keep running beside a slow one (shown in
-  ``tests/hardening/test_isolation.py``).
+  ``tests/service/test_isolation.py``).
 * The engine already has a cooperative budget: :func:`engine.run` hands every
   model ``ctx.deadline`` and ``ctx.max_steps``, and a model past either raises
   :class:`engine.BudgetExceeded` (422, naming the budget).

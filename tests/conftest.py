@@ -1,12 +1,34 @@
+"""Fixtures shared by every test group.
+
+Layout: ``tests/engine`` (runner, spec, sources, layout), ``tests/service``
+(HTTP contract, limits, hostile input, fuzzing), ``tests/models/<family>``
+(one family's functions and model), ``tests/validation`` (published numbers),
+``tests/stability`` (extremes and rungs over every model), ``tests/e2e``
+(browser, static files, container). Test-only models: :mod:`tests.toys`.
+"""
+
 from __future__ import annotations
 
 import pytest
 from fastapi.testclient import TestClient
 
 from service import create_app
+from tests.toys import TOY
 
 
 @pytest.fixture(scope="session")
 def client() -> TestClient:
     """The real app with every registered model."""
     return TestClient(create_app())
+
+
+@pytest.fixture(scope="session")
+def api() -> TestClient:
+    """The real app, answering a model's crash with a 500 instead of raising it."""
+    return TestClient(create_app(), raise_server_exceptions=False)
+
+
+@pytest.fixture(scope="module")
+def toy() -> TestClient:
+    """The app over the ``toy.disc`` model alone (modules may override it)."""
+    return TestClient(create_app(models=[TOY]), raise_server_exceptions=False)

@@ -36,11 +36,9 @@ import pytest
 
 import engine
 from service import create_app
-from tests.foundation.toy import TOY
+from tests.toys import STRIKER, TOY
 
-from .toys import STRIKER
-
-pytestmark = pytest.mark.slow
+pytestmark = [pytest.mark.slow, pytest.mark.browser]
 
 # E2E_CHROMIUM overrides the browser path (e.g. to check the skip/fail paths)
 CHROMIUM = os.environ.get("E2E_CHROMIUM", "/usr/bin/chromium")

@@ -12,7 +12,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 from service import create_app
-from tests.foundation.toy import TOY
+from tests.toys import TOY
 
 STATIC = Path(__file__).parents[2] / "static"
 PAGE_FILES = ["index.html", "app.js", "style.css", "units.json"]

@@ -28,15 +28,13 @@ from engine import (
     RunContext,
     SolverFailed,
 )
-from tests.foundation.toy import TOY
-
-from .toys import TOYS
+from tests.toys import TOY, TOYS
 
 #: Every registered model, then the test-only toys (they keep the suite honest
 #: while the registry is empty and show each hazard on a known answer).
 MODELS_UNDER_TEST: tuple[ModelSpec, ...] = (*engine.MODELS, TOY, *TOYS)
 
-#: Inputs held fixed per model: the foundation toy's ``blowup`` switch makes a
+#: Inputs held fixed per model: the disc toy's ``blowup`` switch makes a
 #: non-finite output on purpose (to test the runner's guard), not a hazard.
 FIXED: dict[str, dict[str, Any]] = {"toy.disc": {"blowup": False}}
 

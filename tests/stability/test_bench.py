@@ -14,9 +14,7 @@ import pytest
 from bench import run as bench
 from bench.generic import extremes, reference_rung, relative_errors
 from engine import Param, Result, RunContext
-from tests.foundation.toy import TOY
-
-from .toys import SPRING
+from tests.toys import SPRING, TOY
 
 
 def test_relative_errors_over_common_float_outputs():

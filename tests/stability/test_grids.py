@@ -1,6 +1,6 @@
 """Explicit grids at the hazards: each input at its extremes, and pairs of extremes together.
 
-Random draws rarely land exactly on a bound; the hazards in MODELS.md live
+Random draws rarely land exactly on a bound; the numerical hazards live
 there (angles near 0 and 90°, c3 → c1, D_f → d_h, stiff springs with light
 parts, a motor too weak). Starting from each model's worked example, every
 numeric input goes to its minimum and its maximum (exclusive bounds nudged

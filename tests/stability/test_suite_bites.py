@@ -19,11 +19,11 @@ from fastapi.testclient import TestClient
 
 from engine import ModelSpec, Result, RunContext
 from service import create_app
+from tests.toys import SPRING
 
 from .common import BUDGET_S, BUDGET_SLACK_S, run_checked
 from .test_property import post
 from .test_rungs import assert_rungs_agree
-from .toys import SPRING
 
 #: u = h k / F = 1e-17: an angle whose 1 − cos θ is lost in double precision.
 TINY_LIFT = {"mass": 1.0, "stiffness": 1e-3, "force": 1e3, "height": 1e-11}

@@ -1,4 +1,4 @@
-"""Validation against [001] (seed 001_fdb4a958c9c08828): Malashchenko, Semenyuk, Lysiak,
+"""Validation against [001] (docs/sources.md): Malashchenko, Semenyuk, Lysiak,
 "Parameters of double action ball overturn coupling".
 
 The paper's worked case: D0 = 50 mm, i = 4, d = 10 mm, d0 = 0.5…4 mm, Δ = 4…10 mm,

@@ -1,9 +1,9 @@
-"""Validation of nutrunner.drive against its source, seed 000 (MODELS.md §1).
+"""Validation of nutrunner.drive against its source, [000] (docs/sources.md).
 
-Source: "Parameters of the drive of a multi-spindle nut-runner" (seeds/000,
+Source: "Parameters of the drive of a multi-spindle nut-runner" ([000] in docs/sources.md,
 Ukrainian). The paper derives eq. 1–10 symbolically and prints no worked
 numbers, so there is no published case to reproduce. What can be validated is
-each equation as the paper states it (where legible) or as MODELS.md §1
+each equation as the paper states it (where legible) or as docs/sources.md
 reconstructs it (eq. 3–5, 7–8), on hand-computed numbers, plus the one
 numeric case the shared style guide quotes for eq. 7–8.
 """
@@ -15,9 +15,8 @@ import math
 import pytest
 
 from engine import run
+from engine.models.nutrunner import EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
 from engine.nutrunner import (
-    EXAMPLE_LIGHT_TRUCK,
-    NUTRUNNER_DRIVE,
     STEEL_SHEAR_MODULUS,
     impact_torque,
     max_spindle_torque,
@@ -52,7 +51,7 @@ def test_eq10_friction_of_idle_spindles():
 
 
 def test_eq5_reduces_as_models_md_says():
-    """MODELS.md §1: with all speed ratios 1, t = ω²/(16P)·Σ m_k D_k² (z·m5 for gears 5)."""
+    """[000, eq. 3–5] as reconstructed: all speed ratios 1 give t = ω²/(16P)·Σ m_k D_k² (z·m5)."""
     x = {
         **EXAMPLE_LIGHT_TRUCK,
         "motor_pulley_diameter": 0.2,
@@ -82,7 +81,7 @@ def test_eq1_2_work_energy_theorem():
 
 
 def test_paper_form_vs_gear_ratio_is_reported():
-    """MODELS.md §1 note: the paper ignores u = D4/D5; the result says by how much."""
+    """[000] (docs/sources.md): the paper ignores u = D4/D5; the result says by how much."""
     r = run(NUTRUNNER_DRIVE, EXAMPLE_LIGHT_TRUCK)
     # u = 2: √((1/C7 + 1/C8)/(4/C7 + 1/C8)) − 1 = −16.58 %
     c7 = math.pi * 8e10 * 0.045**4 / 6.4

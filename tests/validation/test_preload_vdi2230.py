@@ -13,7 +13,7 @@ both follow from VDI 2230 step R7 (F_M) and R13 (M_A), which the engine uses.
 import pytest
 
 from engine import run
-from engine.preload_models import CONTROL, TIGHTENING
+from engine.models.preload import CONTROL, TIGHTENING
 
 # (d mm, P mm, class, μ, F_M kN, M_A N·m) as printed
 VDI_FINE_THREADS = [

@@ -12,9 +12,8 @@ import numpy as np
 import pytest
 
 from engine import run
+from engine.models.rare_impact import RARE_IMPACT, REFERENCE_DESIGN
 from engine.rare_impact import (
-    RARE_IMPACT,
-    REFERENCE_DESIGN,
     max_striker_travel,
     release_speed,
     relock_margin,

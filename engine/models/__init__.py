@@ -1,0 +1,40 @@
+"""Every model the product offers, in the order the catalogue lists them.
+
+One declaration module per family (``engine/models/<family>.py``) holds each
+model's :class:`~engine.spec.ModelSpec`: inputs with units and ranges, outputs,
+rungs, compute/check glue and the sentences of its notes. The equations they
+call live in ``engine/<family>.py``; the sources they cite in
+:mod:`engine.sources` (``docs/sources.md``).
+
+Adding a model is adding its spec here: the service's endpoints, the OpenAPI
+schema, the form and ``GET /api/v1/models`` all derive from this tuple.
+"""
+
+from __future__ import annotations
+
+from ..spec import ModelSpec
+from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
+from .nutrunner import NUTRUNNER_DRIVE
+from .preload import CONTROL as PRELOAD_CONTROL
+from .preload import TIGHTENING as PRELOAD_TIGHTENING
+from .rare_impact import RARE_IMPACT
+
+MODELS: tuple[ModelSpec, ...] = (
+    NUTRUNNER_DRIVE,
+    BALL_CLUTCH,
+    BALL_CLUTCH_SETTING,
+    RARE_IMPACT,
+    PRELOAD_TIGHTENING,
+    PRELOAD_CONTROL,
+)
+
+
+def get_model(name: str) -> ModelSpec:
+    """The spec called ``name`` (e.g. ``"clutch.ball"``)."""
+    for spec in MODELS:
+        if spec.name == name:
+            return spec
+    raise KeyError(name)
+
+
+__all__ = ["MODELS", "get_model"]

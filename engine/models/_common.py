@@ -1,0 +1,101 @@
+"""The shared vocabulary of the model declarations.
+
+Param builders for the kinds of input every family has (a length, a friction
+coefficient, a count, a positive quantity), one formatter for quantities in
+sentences (checks, notes, warnings) and the constants more than one family
+uses. A declaration module imports these instead of spelling out the same
+``Param(...)`` keywords or f-string scalings again.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from ..spec import Param
+
+#: One degree, [rad].
+DEG = math.pi / 180.0
+#: One revolution per minute, [rad/s].
+RPM = math.pi / 30.0
+
+#: Display units for sentences: unit -> (factor from SI, suffix).
+_SCALES: dict[str, tuple[float, str]] = {
+    "m": (1.0, " m"),
+    "mm": (1e3, " mm"),
+    "µm": (1e6, " µm"),
+    "s": (1.0, " s"),
+    "ms": (1e3, " ms"),
+    "N": (1.0, " N"),
+    "kN": (1e-3, " kN"),
+    "N*m": (1.0, " N·m"),
+    "N/mm": (1e-3, " N/mm"),
+    "MPa": (1e-6, " MPa"),
+    "rpm": (1.0 / RPM, " rpm"),
+    "deg": (1.0 / DEG, "°"),
+    "%": (100.0, " %"),
+    "kg": (1.0, " kg"),
+    "J": (1.0, " J"),
+    "W": (1.0, " W"),
+}
+
+
+def quantity(value: float, unit: str, fmt: str = ".3g") -> str:
+    """An SI ``value`` written in ``unit`` for a sentence, e.g. ``quantity(0.0042, "mm")``.
+
+    >>> quantity(0.0042, "mm")
+    '4.2 mm'
+    >>> quantity(50000.0, "N/mm", ".4g")
+    '50 N/mm'
+    >>> quantity(157.07963, "rpm", ".0f")
+    '1500 rpm'
+    >>> quantity(math.radians(45.0), "deg")
+    '45°'
+    """
+    factor, suffix = _SCALES[unit]
+    return f"{value * factor:{fmt}}{suffix}"
+
+
+def length(name: str, description: str, *, minimum: float, maximum: float, **kw: Any) -> Param:
+    """A length input, [m], shown in mm on the form."""
+    kw.setdefault("display_unit", "mm")
+    return Param(name, "m", description, minimum=minimum, maximum=maximum, **kw)
+
+
+def positive(name: str, unit: str, description: str, *, maximum: float, **kw: Any) -> Param:
+    """A quantity that must be strictly positive and at most ``maximum`` (SI ``unit``)."""
+    return Param(
+        name, unit, description, minimum=0.0, exclusive_minimum=True, maximum=maximum, **kw
+    )
+
+
+def friction_coefficient(name: str, description: str, **kw: Any) -> Param:
+    """A Coulomb friction coefficient, dimensionless, 0…1 unless ``maximum`` says otherwise."""
+    kw.setdefault("minimum", 0.0)
+    kw.setdefault("maximum", 1.0)
+    return Param(name, "1", description, **kw)
+
+
+def count(name: str, description: str, *, minimum: int, maximum: int, **kw: Any) -> Param:
+    """A whole number of things (balls, spindles, rollers, bins)."""
+    return Param(name, "1", description, kind="int", minimum=minimum, maximum=maximum, **kw)
+
+
+def in_mm(value: float) -> str:
+    """A length [m] in mm, 3 significant digits: ``in_mm(0.0042)`` is ``'4.2 mm'``."""
+    return quantity(value, "mm")
+
+
+def in_ms(value: float) -> str:
+    """A time [s] in ms, 3 significant digits."""
+    return quantity(value, "ms")
+
+
+def in_n_per_mm(value: float) -> str:
+    """A spring rate [N/m] in N/mm, 4 significant digits."""
+    return quantity(value, "N/mm", ".4g")
+
+
+def in_rpm(value: float) -> str:
+    """An angular speed [rad/s] in whole rpm."""
+    return quantity(value, "rpm", ".0f")

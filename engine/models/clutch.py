@@ -1,0 +1,793 @@
+"""The ``clutch.ball`` and ``clutch.ball_setting`` models: inputs, outputs, rungs, checks, notes.
+
+The equations are in :mod:`engine.clutch` (source [001], see docs/sources.md);
+this module declares the two models and turns a request into calls of those
+functions, checks and sentences.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from ..clutch import (
+    ARRANGEMENTS,
+    RECOMMENDED_GROOVE_ANGLE,
+    RECOMMENDED_LOAD_FACTOR,
+    WORKABLE_SPRING_INDEX,
+    ball_axial_force,
+    ball_normal_force,
+    ball_tangential_force,
+    flank_push_factor,
+    spring_deflection_for_force,
+    spring_force_for_torque,
+    spring_index,
+    spring_rate,
+    spring_shear_stress,
+    torque_limit,
+    wahl_factor,
+    wire_diameter_for_force,
+)
+from ..errors import InfeasibleDesign, InputOutOfRange
+from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from ._common import DEG, count, friction_coefficient, length
+
+# --------------------------------------------------------------------------
+# Model specs: clutch.ball (forward) and clutch.ball_setting (inverse)
+# --------------------------------------------------------------------------
+
+#: Friction coefficient of lubricated steel flanks, used to say how much an
+#: ignored friction would move the result (f = 0 is the paper's idealisation).
+TYPICAL_FLANK_FRICTION = 0.1
+#: Scatter assumed for a friction coefficient the user gives.
+FLANK_FRICTION_SCATTER = 0.03
+
+
+def _common_params(*, wire_required: bool, deflection_required: bool) -> tuple[Param, ...]:
+    return (
+        length(
+            "ball_circle_diameter",
+            "D0, diameter of the circle of ball centres [001, eq. 1]",
+            minimum=1e-3,
+            maximum=2.0,
+            required=True,
+            symbol="D0",
+            group="balls",
+        ),
+        count(
+            "ball_count",
+            "i, number of balls [001, eq. 1]",
+            required=True,
+            minimum=1,
+            maximum=100,
+            symbol="i",
+            group="balls",
+        ),
+        length(
+            "ball_diameter",
+            "d, ball diameter; the groove depth (= Δ in the source) is checked against "
+            "d/2 [001, text after eq. 1]",
+            minimum=1e-4,
+            maximum=0.2,
+            required=True,
+            symbol="d",
+            group="balls",
+        ),
+        Param(
+            "groove_angle",
+            "rad",
+            "α, flank angle of the grooves; F_a = F_t tan α [001, eq. 1]; "
+            "the source recommends 20…70°",
+            required=True,
+            minimum=0.0,
+            maximum=math.pi / 2,
+            exclusive_minimum=True,
+            exclusive_maximum=True,
+            recommended=RECOMMENDED_GROOVE_ANGLE,
+            display_unit="deg",
+            symbol="α",
+            group="balls",
+        ),
+        Param(
+            "load_factor",
+            "1",
+            "K_r, load non-uniformity factor between the balls, 0.85…0.9 [001, eq. 1]",
+            default=0.85,
+            minimum=0.0,
+            maximum=1.0,
+            exclusive_minimum=True,
+            recommended=RECOMMENDED_LOAD_FACTOR,
+            symbol="K_r",
+            group="balls",
+        ),
+        friction_coefficient(
+            "flank_friction",
+            "f, Coulomb friction between ball and flank; the axial push becomes "
+            "F_t tan(α − atan f); 0 is the paper's frictionless case [001, eq. 3]",
+            default=0.0,
+            symbol="f",
+            group="balls",
+        ),
+        length(
+            "spring_wire_diameter",
+            "d0, spring wire diameter [001, eq. 2]",
+            minimum=1e-5,
+            maximum=0.05,
+            required=wire_required,
+            symbol="d0",
+            group="spring",
+        ),
+        length(
+            "spring_mean_diameter",
+            "D, mean coil diameter of the spring [001, eq. 2]",
+            minimum=1e-4,
+            maximum=0.5,
+            required=True,
+            symbol="D",
+            group="spring",
+        ),
+        Param(
+            "spring_active_coils",
+            "1",
+            "i_p, number of active coils [001, eq. 2]",
+            required=True,
+            minimum=1.0,
+            maximum=1000.0,
+            symbol="i_p",
+            group="spring",
+        ),
+        length(
+            "spring_deflection",
+            "Δ, spring compression, taken equal to the groove depth as in [001, eq. 2]",
+            minimum=1e-6,
+            maximum=0.5,
+            required=deflection_required,
+            symbol="Δ",
+            group="spring",
+        ),
+        Param(
+            "shear_modulus",
+            "Pa",
+            "G, shear modulus of the spring wire; 8·10⁴ MPa for steel [001, eq. 2]",
+            default=8e10,
+            minimum=1e9,
+            maximum=5e11,
+            display_unit="MPa",
+            symbol="G",
+            group="spring",
+        ),
+        Param(
+            "spring_arrangement",
+            "1",
+            "'common': one spring presses all balls through the disk (the paper's fig. 1), "
+            "T = D0 F/(2 tan(α−ρ)); 'per_ball': each ball has its own spring, "
+            "T = K_r D0 i F/(2 tan(α−ρ)), the paper's published formula [001, eq. 3]",
+            default="common",
+            kind="choice",
+            choices=ARRANGEMENTS,
+            group="spring",
+        ),
+    )
+
+
+def _allowable_param() -> Param:
+    return Param(
+        "allowable_shear_stress",
+        "Pa",
+        "allowable wire shear stress (Wahl-corrected); optional, checked when given",
+        minimum=0.0,
+        exclusive_minimum=True,
+        maximum=1e10,
+        display_unit="MPa",
+        group="spring",
+    )
+
+
+def _estimate(x: Mapping[str, Any]) -> float | None:
+    """Relative error of the closed form from the flank friction it is given.
+
+    The closed form is exact for its idealisation (rigid parts, quasi-static,
+    Coulomb friction on the flanks only). Its largest real uncertainty is the
+    friction: with f = 0 (the paper) we report how much a lubricated steel
+    flank (f = 0.1) would raise the limit; with f given, how much a scatter of
+    ±0.03 in f moves it. NaN-free: None where the shifted friction locks.
+    """
+    alpha, f = float(x["groove_angle"]), float(x["flank_friction"])
+    delta = TYPICAL_FLANK_FRICTION if f == 0.0 else FLANK_FRICTION_SCATTER
+    push = math.tan(alpha - math.atan(f))
+    shifted = math.tan(alpha - math.atan(f + delta))
+    if push <= 0.0 or shifted <= 0.0:
+        return None
+    return push / shifted - 1.0
+
+
+_RUNG = Rung(
+    "closed_form",
+    "Closed form of [001, eq. 1–3] with flank friction: quasi-static, rigid parts, "
+    "ball inertia and the friction of disk, spring and ball rolling neglected, spring "
+    "force constant while the ball climbs. Error estimate: the shift a typical flank "
+    "friction (f = 0.1 if f = 0 was assumed, else ±0.03 on the given f) would cause.",
+    _estimate,
+    typical_error="0…25 % from friction when f = 0 is assumed; a few % with f given",
+    typical_time="< 1 ms",
+)
+
+
+def _require_workable(x: Mapping[str, Any], wire: float | None) -> None:
+    """Cross-field refusals shared by both specs (scalar inputs only)."""
+    alpha, f = x["groove_angle"], x["flank_friction"]
+    rho = math.atan(f)
+    if alpha <= rho:
+        raise InfeasibleDesign(
+            f"the clutch never slips: the flank angle α = {alpha / DEG:.3g}° is not above the "
+            f"friction angle atan f = {rho / DEG:.3g}°, so the balls wedge in the grooves at "
+            "any torque; make the flanks flatter (larger α) or reduce the flank friction",
+            field="groove_angle",
+        )
+    if wire is not None and wire >= x["spring_mean_diameter"]:
+        raise InputOutOfRange(
+            f"spring_wire_diameter = {wire * 1e3:g} mm is not below the spring's mean coil "
+            f"diameter D = {x['spring_mean_diameter'] * 1e3:g} mm: such a coil cannot exist "
+            "(spring index D/d0 must exceed 1)",
+            field="spring_wire_diameter",
+        )
+
+
+def _index_check(name: str, index: float, kw: float) -> Check:
+    lo, hi = WORKABLE_SPRING_INDEX
+    if index < lo:
+        detail = (
+            f"spring index D/d0 = {index:.4g} < {lo:g}: hard to coil and the inner fibre is "
+            f"over-stressed (Wahl factor {kw:.3g}); use a larger coil diameter or thinner wire"
+        )
+    elif index > hi:
+        detail = (
+            f"spring index D/d0 = {index:.4g} > {hi:g}: a slender, floppy coil that buckles and "
+            "tangles; use thicker wire or a smaller coil diameter"
+        )
+    else:
+        detail = f"spring index D/d0 = {index:.4g} is within {lo:g}…{hi:g}"
+    return Check(name, lo <= index <= hi, detail)
+
+
+def _stress_check(
+    name: str, stress: float, allowable: float | None, which: str = "wire"
+) -> list[Check]:
+    if allowable is None:
+        return []
+    ok = stress <= allowable
+    detail = (
+        f"{which} shear stress {stress / 1e6:.4g} MPa "
+        + ("≤" if ok else ">")
+        + f" allowable {allowable / 1e6:.4g} MPa"
+        + ("" if ok else ": use thicker wire, a smaller coil diameter or a lower setting")
+    )
+    return [Check(name, ok, detail)]
+
+
+def _groove_check(name: str, depth: float, ball_diameter: float, what: str) -> Check:
+    """Groove depth (= spring deflection Δ in the source) against the ball radius.
+
+    A ball sunk deeper than its radius has its centre below the groove rim: it
+    can no longer protrude far enough to carry the other half-coupling's
+    flank, and climbing out it meets the rim with its upper half, which wedges
+    rather than lifts it. So the depth must not exceed d/2.
+    """
+    ok = depth <= ball_diameter / 2.0
+    if ok:
+        detail = (
+            f"groove depth ({what}) {depth * 1e3:.4g} mm ≤ ball radius {ball_diameter * 500:.4g} mm"
+        )
+    else:
+        deeper = (
+            f"even the whole ball (d = {ball_diameter * 1e3:.4g} mm)"
+            if depth >= ball_diameter
+            else f"the ball radius (d/2 = {ball_diameter * 500:.4g} mm)"
+        )
+        detail = (
+            f"groove depth ({what}) {depth * 1e3:.4g} mm exceeds {deeper}: the ball's "
+            "centre would sit below the rim, so it cannot climb out cleanly (it wedges on "
+            "the rim); use larger balls, a shallower groove, or a stiffer spring with less "
+            "deflection"
+        )
+    return Check(name, ok, detail)
+
+
+def _angle_check(alpha: float) -> Check:
+    lo, hi = RECOMMENDED_GROOVE_ANGLE
+    ok = lo <= alpha <= hi
+    if ok:
+        detail = f"groove angle {alpha / DEG:.4g}° is within the source's 20…70°"
+    elif alpha < lo:
+        detail = (
+            f"groove angle {alpha / DEG:.4g}° < 20°: steep flanks make the limit very "
+            "sensitive to friction and wear (the clutch may lock); use 20…70° [001]"
+        )
+    else:
+        detail = (
+            f"groove angle {alpha / DEG:.4g}° > 70°: shallow flanks need a very strong "
+            "spring and the balls ride out under small shocks; use 20…70° [001]"
+        )
+    return Check("groove_angle", ok, detail)
+
+
+def _arrangement_notes(x: Mapping[str, Any], force: float, push: float) -> list[str]:
+    d0_, i, kr = x["ball_circle_diameter"], x["ball_count"], x["load_factor"]
+    common = d0_ * force / (2.0 * push)
+    per_ball = kr * i * common
+    if x["spring_arrangement"] == "common":
+        first = (
+            f"spring_arrangement = common: one spring presses all {i} balls through the "
+            "disk (the paper's fig. 1), T = D0 F_spring / (2 tan(α − ρ)) with no K_r, because "
+            "statics fixes the sum of the balls' tangential forces however unevenly they "
+            "share it. The paper's eq. 3 sets ONE ball's axial force equal to the WHOLE "
+            f"spring force, which holds only for one spring per ball: it would give "
+            f"K_r i = {kr * i:.4g} times more, {per_ball:.4g} N·m."
+        )
+    else:
+        first = (
+            f"spring_arrangement = per_ball: each of the {i} balls has its own spring of "
+            "these dimensions (the paper's eq. 3, F_a = F_spring for the most-loaded ball), "
+            "T = K_r D0 i F_spring / (2 tan(α − ρ)). With one common spring, as the paper's "
+            f"fig. 1 draws, the same spring would give K_r i = {kr * i:.4g} times less, "
+            f"{common:.4g} N·m."
+        )
+    return [
+        first,
+        "The scanned final formula [001, after eq. 3] shows K_r in the denominator, "
+        "contrary to its own eq. 1; this follows eq. 1–3 (K_r multiplies; the printed "
+        f"formula would give 1/K_r² = {1.0 / kr**2:.3g} times the per-ball value).",
+    ]
+
+
+def _friction_note(alpha: float, f: float) -> str:
+    if f == 0.0:
+        typical = math.tan(alpha) / math.tan(alpha - math.atan(TYPICAL_FLANK_FRICTION)) - 1.0
+        return (
+            "flank_friction = 0, the paper's frictionless case: with lubricated steel flanks "
+            f"(f ≈ {TYPICAL_FLANK_FRICTION:g}) the limit would be {typical:.1%} higher; give "
+            "flank_friction to include it."
+        )
+    rise = math.tan(alpha) / math.tan(alpha - math.atan(f)) - 1.0
+    return (
+        f"flank friction f = {f:g} (ρ = {math.degrees(math.atan(f)):.3g}°) raises the limit "
+        f"by {rise:.1%} over the paper's frictionless formula."
+    )
+
+
+#: True of every answer of both clutch models (the runner adds it to the notes).
+ASSUMPTIONS = (
+    (
+        "Δ is taken, as in the paper, both as the spring compression at slip and as the "
+        "groove depth; the rise of the spring force as the ball climbs (rate × climb) is "
+        "neglected, so the torque to push a ball fully out is somewhat higher."
+    ),
+)
+
+
+def _forward_values(x: Mapping[str, Any]) -> dict[str, Any]:
+    """Every output of clutch.ball, on floats or arrays (one input may be an array)."""
+    g, d0, dm = x["shear_modulus"], x["spring_wire_diameter"], x["spring_mean_diameter"]
+    alpha, f, kr = x["groove_angle"], x["flank_friction"], x["load_factor"]
+    rate = spring_rate(g, d0, dm, x["spring_active_coils"])
+    force = np.asarray(rate) * np.asarray(x["spring_deflection"])
+    limit = torque_limit(
+        force,
+        x["ball_circle_diameter"],
+        alpha,
+        x["ball_count"],
+        kr,
+        f,
+        x["spring_arrangement"],
+    )
+    at = limit if x["torque"] is None else x["torque"]
+    tangential = ball_tangential_force(at, x["ball_circle_diameter"], x["ball_count"], kr)
+    index = spring_index(dm, d0)
+    return {
+        "spring_force": force,
+        "torque_limit": limit,
+        "ball_tangential_force": tangential,
+        "ball_axial_force": ball_axial_force(tangential, alpha, f),
+        "ball_normal_force": ball_normal_force(tangential, alpha, f),
+        "spring_index": index,
+        "wahl_factor": wahl_factor(index),
+        "spring_shear_stress": spring_shear_stress(force, dm, d0),
+        "spring_rate": rate,
+    }
+
+
+def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    _require_workable(x, x["spring_wire_diameter"])
+    with np.errstate(all="ignore"):
+        v = {k: float(val) for k, val in _forward_values(x).items()}
+    alpha, f = x["groove_angle"], x["flank_friction"]
+    push = float(flank_push_factor(alpha, f))
+    checks = [
+        _index_check("spring_index", v["spring_index"], v["wahl_factor"]),
+        *_stress_check(
+            "spring_shear_stress", v["spring_shear_stress"], x["allowable_shear_stress"]
+        ),
+        _groove_check(
+            "groove_depth", x["spring_deflection"], x["ball_diameter"], "= spring deflection Δ"
+        ),
+        _angle_check(alpha),
+    ]
+    where = "at the torque limit"
+    if x["torque"] is not None:
+        where = f"at the given torque {x['torque']:.4g} N·m"
+        ok = x["torque"] <= v["torque_limit"]
+        checks.append(
+            Check(
+                "torque_below_limit",
+                ok,
+                f"torque {x['torque']:.4g} N·m "
+                + ("≤" if ok else ">")
+                + f" torque limit {v['torque_limit']:.4g} N·m"
+                + ("" if ok else ": the clutch slips at this torque"),
+            )
+        )
+    notes = [
+        *_arrangement_notes(x, v["spring_force"], push),
+        _friction_note(alpha, f),
+        f"ball forces are for the most-loaded ball (K_r = {x['load_factor']:g}) {where}; "
+        "F_a = F_t tan(α − ρ), F_N = F_t / (cos α + f sin α) [001, eq. 1].",
+    ]
+    if x["allowable_shear_stress"] is None:
+        notes.append("give allowable_shear_stress to check the spring wire's strength")
+    return Result(
+        values=dict(v),
+        rung=ctx.rung,
+        error_estimate=_estimate(x),
+        checks=checks,
+        notes=notes,
+    )
+
+
+def _feasible_mask(x: Mapping[str, Any], wire: Any) -> npt.NDArray[np.bool_]:
+    """Where the scalar compute would not refuse (the slip and coil conditions)."""
+    ok = np.asarray(x["groove_angle"]) > np.arctan(x["flank_friction"])
+    if wire is not None:
+        ok = ok & (np.asarray(wire) < np.asarray(x["spring_mean_diameter"]))
+    return np.asarray(ok, dtype=bool)
+
+
+def _masked(values: Mapping[str, Any], ok: npt.NDArray[np.bool_]) -> dict[str, Any]:
+    return {k: np.where(ok, np.asarray(v, dtype=float), np.nan) for k, v in values.items()}
+
+
+def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    with np.errstate(all="ignore"):
+        values = _masked(_forward_values(x), _feasible_mask(x, x["spring_wire_diameter"]))
+    return Result(
+        values=values,
+        rung=ctx.rung,
+        error_estimate=None,
+        notes=[f"spring_arrangement = {x['spring_arrangement']}; see a single run's notes"],
+    )
+
+
+BALL_CLUTCH = ModelSpec(
+    name="clutch.ball",
+    path="/clutch/ball",
+    title="Ball safety clutch: torque limit",
+    family="clutch",
+    summary=(
+        "Slipping torque of a double-action ball safety clutch (torque limiter) from its "
+        "ball circle, groove angle and spring; ball and spring forces at the limit or at a "
+        "given torque, with spring index, Wahl factor and wire stress checks."
+    ),
+    source=(
+        "[001] Malashchenko V.O., Semenyuk V.F., Lysiak B.R., Parameters of double action "
+        "ball overturn coupling, eq. 1–3; spring checks after Wahl"
+    ),
+    inputs=(
+        *_common_params(wire_required=True, deflection_required=True),
+        Param(
+            "torque",
+            "N*m",
+            "optional: torque at which to give the ball forces (instead of at the limit)",
+            minimum=0.0,
+            maximum=1e6,
+            display_unit="N*m",
+            symbol="T",
+        ),
+        _allowable_param(),
+    ),
+    outputs=(
+        Output("spring_force", "N", "F_spring = G d0⁴ Δ / (8 D³ i_p) [001, eq. 2]"),
+        Output(
+            "torque_limit",
+            "N*m",
+            "slipping torque: common D0 F/(2 tan(α−ρ)); per_ball K_r i D0 F/(2 tan(α−ρ)) "
+            "[001, eq. 3]",
+            display_unit="N*m",
+        ),
+        Output(
+            "ball_tangential_force",
+            "N",
+            "F_t = 2T/(K_r D0 i) on the most-loaded ball, at the limit or at `torque` [001, eq. 1]",
+        ),
+        Output("ball_axial_force", "N", "F_a = F_t tan(α − atan f) [001, eq. 1 with friction]"),
+        Output(
+            "ball_normal_force",
+            "N",
+            "F_N = F_t/(cos α + f sin α), normal to the flank [001, eq. 1 with friction]",
+        ),
+        Output("spring_index", "1", "C = D/d0"),
+        Output("wahl_factor", "1", "K_w = (4C−1)/(4C−4) + 0.615/C"),
+        Output(
+            "spring_shear_stress",
+            "Pa",
+            "τ = 8 F D K_w/(π d0³) at the spring force",
+            display_unit="MPa",
+        ),
+        Output("spring_rate", "N/m", "c = G d0⁴/(8 D³ i_p) [001, eq. 2]", display_unit="N/mm"),
+    ),
+    rungs=(_RUNG,),
+    compute=_compute_ball,
+    # one rung: by default run it plainly; "auto" would note that the frictionless
+    # default cannot meet 1 % (the estimate is the effect of neglected flank friction)
+    default_fidelity="closed_form",
+    assumptions=ASSUMPTIONS,
+    examples=(
+        # [001] worked case: D0 = 50 mm, i = 4, d = 10 mm, D = 45 mm, i_p = 5, α = 45°,
+        # G = 8·10⁴ MPa; d0 = 0.5…4 mm and Δ = 4…10 mm: d0 = 4 mm, Δ = 4 mm is the one
+        # point of those ranges whose spring index (11.25) and groove depth (≤ d/2) pass.
+        {
+            "ball_circle_diameter": 0.05,
+            "ball_count": 4,
+            "ball_diameter": 0.01,
+            "groove_angle": math.radians(45.0),
+            "load_factor": 0.85,
+            "spring_wire_diameter": 0.004,
+            "spring_mean_diameter": 0.045,
+            "spring_active_coils": 5.0,
+            "spring_deflection": 0.004,
+            "shear_modulus": 8e10,
+            "spring_arrangement": "common",
+            "flank_friction": 0.0,
+        },
+        {
+            "ball_circle_diameter": 0.05,
+            "ball_count": 4,
+            "ball_diameter": 0.01,
+            "groove_angle": math.radians(45.0),
+            "spring_wire_diameter": 0.004,
+            "spring_mean_diameter": 0.045,
+            "spring_active_coils": 5.0,
+            "spring_deflection": 0.004,
+            "spring_arrangement": "per_ball",
+        },
+        {
+            "ball_circle_diameter": 0.05,
+            "ball_count": 4,
+            "ball_diameter": 0.01,
+            "groove_angle": math.radians(45.0),
+            "spring_wire_diameter": 0.004,
+            "spring_mean_diameter": 0.045,
+            "spring_active_coils": 5.0,
+            "spring_deflection": 0.004,
+            "flank_friction": 0.1,
+            "torque": 0.5,
+            "allowable_shear_stress": 5e8,
+        },
+    ),
+    vectorized=_vectorized_ball,
+    vector_rungs=("closed_form",),
+)
+
+
+def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
+    """Every output of clutch.ball_setting, on floats or arrays."""
+    g, dm, ip = x["shear_modulus"], x["spring_mean_diameter"], x["spring_active_coils"]
+    force = spring_force_for_torque(
+        x["target_torque"],
+        x["ball_circle_diameter"],
+        x["groove_angle"],
+        x["ball_count"],
+        x["load_factor"],
+        x["flank_friction"],
+        x["spring_arrangement"],
+    )
+    out: dict[str, Any] = {"required_spring_force": force}
+    wire, deflection = x["spring_wire_diameter"], x["spring_deflection"]
+    if wire is not None:
+        out["spring_rate"] = spring_rate(g, wire, dm, ip)
+        out["required_deflection"] = spring_deflection_for_force(force, g, wire, dm, ip)
+        out["spring_index"] = spring_index(dm, wire)
+        out["spring_shear_stress"] = spring_shear_stress(force, dm, wire)
+    if deflection is not None:
+        new_wire = wire_diameter_for_force(force, g, dm, ip, deflection)
+        out["required_wire_diameter"] = new_wire
+        new_index = spring_index(dm, new_wire)
+        out["required_wire_spring_index"] = new_index
+        # No coil exists for C <= 1 (the wire would fill the coil): no stress there.
+        out["required_wire_shear_stress"] = np.where(
+            np.asarray(new_index) > 1.0, spring_shear_stress(force, dm, new_wire), np.nan
+        )
+    return out
+
+
+def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    wire, deflection = x["spring_wire_diameter"], x["spring_deflection"]
+    if wire is None and deflection is None:
+        raise InputOutOfRange(
+            "give spring_wire_diameter (to get the deflection that sets the target torque) "
+            "or spring_deflection (to get the wire diameter), or both",
+            field="spring_wire_diameter",
+        )
+    _require_workable(x, wire)
+    with np.errstate(all="ignore"):
+        v: dict[str, Any] = {k: float(val) for k, val in _setting_values(x).items()}
+    no_coil = deflection is not None and v["required_wire_spring_index"] <= 1.0
+    if no_coil:
+        # no coil exists for C <= 1: its stress is not a number, say so rather than NaN
+        v["required_wire_shear_stress"] = None
+    alpha, f = x["groove_angle"], x["flank_friction"]
+    allow = x["allowable_shear_stress"]
+    checks: list[Check] = []
+    if wire is not None:
+        kw = float(wahl_factor(v["spring_index"]))
+        checks.append(_index_check("spring_index", v["spring_index"], kw))
+        checks += _stress_check(
+            "spring_shear_stress",
+            v["spring_shear_stress"],
+            allow,
+            f"given wire ({wire * 1e3:.4g} mm) at the required deflection,",
+        )
+        checks.append(
+            _groove_check(
+                "required_deflection_groove_depth",
+                v["required_deflection"],
+                x["ball_diameter"],
+                "= required deflection",
+            )
+        )
+    if deflection is not None:
+        idx = v["required_wire_spring_index"]
+        if no_coil:
+            checks.append(
+                Check(
+                    "required_wire_spring_index",
+                    False,
+                    f"the required wire ({v['required_wire_diameter'] * 1e3:.4g} mm) is not "
+                    f"thinner than the coil (D = {x['spring_mean_diameter'] * 1e3:g} mm): no "
+                    "such spring exists; use a larger coil, more deflection or fewer coils",
+                )
+            )
+        else:
+            checks.append(_index_check("required_wire_spring_index", idx, float(wahl_factor(idx))))
+            checks += _stress_check(
+                "required_wire_shear_stress",
+                v["required_wire_shear_stress"],
+                allow,
+                f"required wire ({v['required_wire_diameter'] * 1e3:.4g} mm)",
+            )
+        checks.append(
+            _groove_check("groove_depth", deflection, x["ball_diameter"], "= given deflection")
+        )
+    checks.append(_angle_check(alpha))
+    push = float(flank_push_factor(alpha, f))
+    notes = [
+        *_arrangement_notes(x, v["required_spring_force"], push),
+        _friction_note(alpha, f),
+        "required_deflection is the nut setting (spring compression) that gives the target "
+        "torque with the given wire; required_wire_diameter gives it at the given "
+        "deflection, d0 = (8 F D³ i_p / (G Δ))^¼ [001, eq. 2]; round it to a stock wire "
+        "size and re-set the deflection.",
+    ]
+    if no_coil:
+        notes.append(
+            "required_wire_shear_stress is null: the wire that would give the target torque "
+            "at this deflection is as thick as the coil itself (spring index ≤ 1)"
+        )
+    return Result(
+        values=v,
+        rung=ctx.rung,
+        error_estimate=_estimate(x),
+        checks=checks,
+        notes=notes,
+    )
+
+
+def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    if x["spring_wire_diameter"] is None and x["spring_deflection"] is None:
+        return Result(values={}, rung=ctx.rung, error_estimate=None)
+    with np.errstate(all="ignore"):
+        values = _setting_values(x)
+        values = _masked(values, _feasible_mask(x, x["spring_wire_diameter"]))
+    return Result(
+        values=values,
+        rung=ctx.rung,
+        error_estimate=None,
+    )
+
+
+BALL_CLUTCH_SETTING = ModelSpec(
+    name="clutch.ball_setting",
+    path="/clutch/ball/setting",
+    title="Ball safety clutch: setting for a target torque",
+    family="clutch",
+    summary=(
+        "The inverse of clutch.ball: the spring force a target slipping torque needs, the "
+        "spring compression (nut setting) that gives it with a given wire, and the wire "
+        "diameter that gives it at a chosen compression."
+    ),
+    source=BALL_CLUTCH.source,
+    inputs=(
+        Param(
+            "target_torque",
+            "N*m",
+            "the slipping torque wanted [001, eq. 3 solved for the spring]",
+            required=True,
+            minimum=0.0,
+            exclusive_minimum=True,
+            maximum=1e6,
+            display_unit="N*m",
+            symbol="T",
+        ),
+        *_common_params(wire_required=False, deflection_required=False),
+        _allowable_param(),
+    ),
+    outputs=(
+        Output(
+            "required_spring_force",
+            "N",
+            "F = 2 T tan(α−ρ)/(D0 s), s = 1 (common) or K_r i (per_ball) [001, eq. 1–3]",
+        ),
+        Output(
+            "required_deflection",
+            "m",
+            "Δ = 8 F D³ i_p/(G d0⁴) with the given wire: the nut setting [001, eq. 2]",
+            display_unit="mm",
+        ),
+        Output(
+            "required_wire_diameter",
+            "m",
+            "d0 = (8 F D³ i_p/(G Δ))^¼ at the given deflection [001, eq. 2]",
+            display_unit="mm",
+        ),
+        Output("spring_rate", "N/m", "rate of the given wire's spring", display_unit="N/mm"),
+        Output("spring_index", "1", "D/d0 of the given wire"),
+        Output(
+            "spring_shear_stress",
+            "Pa",
+            "wire stress of the given wire at the required force",
+            display_unit="MPa",
+        ),
+        Output("required_wire_spring_index", "1", "D/d0 of the required wire"),
+        Output(
+            "required_wire_shear_stress",
+            "Pa",
+            "wire stress of the required wire at the required force",
+            display_unit="MPa",
+        ),
+    ),
+    rungs=(_RUNG,),
+    compute=_compute_setting,
+    # one rung: by default run it plainly; "auto" would note that the frictionless
+    # default cannot meet 1 % (the estimate is the effect of neglected flank friction)
+    default_fidelity="closed_form",
+    assumptions=ASSUMPTIONS,
+    examples=(
+        # The paper's clutch (D0 = 50 mm, i = 4, d = 10 mm, D = 45 mm, i_p = 5, α = 45°,
+        # d0 = 4 mm) set for 0.5 N·m; the wire for Δ = 4 mm.
+        {
+            "target_torque": 0.5,
+            "ball_circle_diameter": 0.05,
+            "ball_count": 4,
+            "ball_diameter": 0.01,
+            "groove_angle": math.radians(45.0),
+            "spring_wire_diameter": 0.004,
+            "spring_mean_diameter": 0.045,
+            "spring_active_coils": 5.0,
+            "spring_deflection": 0.004,
+        },
+    ),
+    vectorized=_vectorized_setting,
+    vector_rungs=("closed_form",),
+)

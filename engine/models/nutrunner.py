@@ -1,0 +1,885 @@
+"""The ``nutrunner.drive`` model: inputs, outputs, rungs, checks and notes.
+
+The equations are in :mod:`engine.nutrunner` (source [000], see docs/sources.md);
+this module declares the model the service serves and turns a request into
+calls of those functions, checks and sentences.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from ..errors import InfeasibleDesign, InputOutOfRange
+from ..motor_spinup import (
+    MotorCurve,
+    kloss_breakdown_slip,
+    kloss_slip_torque,
+    kloss_torque,
+    linear_motor_torque,
+    spin_up_profile,
+    spin_up_time,
+)
+from ..nutrunner import (
+    STEEL_SHEAR_MODULUS,
+    acceleration_time,
+    disc_inertia,
+    equivalent_inertia,
+    flywheel_speed,
+    impact_torque,
+    impact_torque_geared,
+    max_spindle_torque,
+    part_energies,
+    shaft_shear_stress,
+    torsional_stiffness,
+    twist_angle,
+)
+from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from ._common import RPM, count
+
+# ---------------------------------------------------------------------------
+# The model spec
+# ---------------------------------------------------------------------------
+
+_DIAMETER: dict[str, Any] = {"minimum": 1e-4, "maximum": 2.0, "display_unit": "mm"}
+_MASS: dict[str, Any] = {"minimum": 0.0, "maximum": 1e3, "display_unit": "kg"}
+
+
+def _part(name: str, label: str, group: str, eq: str, mass: bool, **kw: Any) -> Param:
+    """A mass or diameter of one of the discs 1…5 (``label`` like "the flywheel 3")."""
+    if mass:
+        text = f"Mass of {label}, a solid uniform disc"
+    elif "gear" in label:
+        text = f"Pitch diameter of {label}, also taken as its disc diameter"
+    elif "pulley" in label:
+        text = f"Diameter of {label}, also taken as the belt's pitch diameter"
+    else:
+        text = f"Outer diameter of {label}, a solid uniform disc"
+    bounds = _MASS if mass else _DIAMETER
+    return Param(
+        name,
+        "kg" if mass else "m",
+        f"{text} [000, {eq}]",
+        required=True,
+        group=group,
+        **{**bounds, **kw},
+    )
+
+
+_INPUTS: tuple[Param, ...] = (
+    Param(
+        "motor_power",
+        "W",
+        "Motor power P, delivered at constant power during spin-up [000, eq. 2, 5]",
+        required=True,
+        minimum=1.0,
+        maximum=1e6,
+        recommended=(250.0, 3e4),
+        display_unit="kW",
+        symbol="P",
+        group="motor",
+    ),
+    Param(
+        "motor_speed",
+        "rad/s",
+        "Motor shaft speed ω at the end of spin-up (the working speed at impact) [000, eq. 3–5]",
+        required=True,
+        minimum=0.1,
+        maximum=1e4,
+        recommended=(50.0, 320.0),
+        display_unit="rpm",
+        symbol="ω",
+        group="motor",
+    ),
+    _part("coupling_mass", "the safety coupling 1", "drive", "eq. 3–4", True, symbol="m1"),
+    _part("coupling_diameter", "the safety coupling 1", "drive", "eq. 3–4", False, symbol="D1"),
+    _part("motor_pulley_mass", "the motor pulley 2", "drive", "eq. 3–4", True, symbol="m2"),
+    _part("motor_pulley_diameter", "the motor pulley 2", "drive", "eq. 3–5", False, symbol="D2"),
+    Param(
+        "flywheel_mass",
+        "kg",
+        "Mass of the flywheel 3 (the driven pulley), a solid uniform disc [000, eq. 3–4]",
+        required=True,
+        minimum=0.0,
+        exclusive_minimum=True,
+        maximum=1e3,
+        display_unit="kg",
+        symbol="m3",
+        group="drive",
+    ),
+    _part(
+        "flywheel_diameter",
+        "the flywheel 3 (the driven pulley)",
+        "drive",
+        "eq. 3–5",
+        False,
+        symbol="D3",
+    ),
+    _part("drive_gear_mass", "the drive gear 4", "drive", "eq. 3–4", True, symbol="m4"),
+    _part("drive_gear_diameter", "the drive gear 4", "drive", "eq. 3–5", False, symbol="D4"),
+    _part("spindle_gear_mass", "one spindle gear 5", "drive", "eq. 3–4", True, symbol="m5"),
+    _part("spindle_gear_diameter", "one spindle gear 5", "drive", "eq. 3–5", False, symbol="D5"),
+    count(
+        "spindle_count",
+        "Number of spindles z (one per wheel nut) [000, eq. 4, 10]",
+        required=True,
+        minimum=1,
+        maximum=32,
+        recommended=(4, 12),
+        symbol="z",
+        group="drive",
+    ),
+    Param(
+        "shaft_diameter",
+        "m",
+        "Diameter of the flywheel shaft 7 [000, eq. 9]",
+        required=True,
+        **_DIAMETER,
+        symbol="d7",
+        group="shafts",
+    ),
+    Param(
+        "shaft_length",
+        "m",
+        "Twisted length of the flywheel shaft 7 [000, eq. 9]",
+        required=True,
+        minimum=1e-4,
+        maximum=5.0,
+        display_unit="mm",
+        symbol="l7",
+        group="shafts",
+    ),
+    Param(
+        "spindle_diameter",
+        "m",
+        "Diameter of a spindle 8 [000, eq. 9]",
+        required=True,
+        **_DIAMETER,
+        symbol="d8",
+        group="shafts",
+    ),
+    Param(
+        "spindle_length",
+        "m",
+        "Twisted length of a spindle 8 [000, eq. 9]",
+        required=True,
+        minimum=1e-4,
+        maximum=5.0,
+        display_unit="mm",
+        symbol="l8",
+        group="shafts",
+    ),
+    Param(
+        "shear_modulus",
+        "Pa",
+        "Shear modulus G of shaft and spindle; 8·10¹⁰ Pa (steel) in the source [000, eq. 9]",
+        default=STEEL_SHEAR_MODULUS,
+        minimum=1e9,
+        maximum=5e11,
+        recommended=(7.5e10, 8.3e10),
+        display_unit="GPa",
+        symbol="G",
+        group="shafts",
+    ),
+    Param(
+        "idle_spindle_friction_torque",
+        "N*m",
+        "Friction-clutch torque M_tr of each idle spindle, taken off the blow [000, eq. 10]",
+        default=0.0,
+        minimum=0.0,
+        maximum=1e5,
+        display_unit="N*m",
+        symbol="M_tr",
+        group="shafts",
+    ),
+    Param(
+        "shear_yield_strength",
+        "Pa",
+        "Optional shear yield strength of shaft and spindle steel; when given, a check "
+        "says whether the blow keeps them elastic (the source's model needs that)",
+        minimum=1e6,
+        maximum=5e9,
+        display_unit="MPa",
+        symbol="τ_y",
+        group="shafts",
+    ),
+    Param(
+        "motor_curve",
+        "1",
+        "Torque–speed curve for the motor_curve rung: 'none'; 'linear' (stall_torque, "
+        "no_load_speed); 'induction' (Kloss formula from rated_torque, rated_speed, "
+        "breakdown_torque, synchronous_speed); 'constant_power' (motor_power above the "
+        "torque limit stall_torque). Not in the source.",
+        default="none",
+        kind="choice",
+        choices=("none", "linear", "induction", "constant_power"),
+        group="motor curve",
+    ),
+    Param(
+        "stall_torque",
+        "N*m",
+        "Linear curve: torque at standstill; constant_power curve: the torque limit",
+        minimum=0.0,
+        exclusive_minimum=True,
+        maximum=1e6,
+        display_unit="N*m",
+        group="motor curve",
+    ),
+    Param(
+        "no_load_speed",
+        "rad/s",
+        "Linear curve: speed at which the torque falls to zero",
+        minimum=0.0,
+        exclusive_minimum=True,
+        maximum=2e4,
+        display_unit="rpm",
+        group="motor curve",
+    ),
+    Param(
+        "rated_torque",
+        "N*m",
+        "Induction curve: rated torque (default motor_power / rated_speed)",
+        minimum=0.0,
+        exclusive_minimum=True,
+        maximum=1e6,
+        display_unit="N*m",
+        group="motor curve",
+    ),
+    Param(
+        "rated_speed",
+        "rad/s",
+        "Induction curve: rated speed (default motor_speed)",
+        minimum=0.0,
+        exclusive_minimum=True,
+        maximum=2e4,
+        display_unit="rpm",
+        group="motor curve",
+    ),
+    Param(
+        "breakdown_torque",
+        "N*m",
+        "Induction curve: breakdown (pull-out) torque, above the rated torque",
+        minimum=0.0,
+        exclusive_minimum=True,
+        maximum=1e6,
+        display_unit="N*m",
+        group="motor curve",
+    ),
+    Param(
+        "synchronous_speed",
+        "rad/s",
+        "Induction curve: synchronous speed (1500 rpm for a 4-pole 50 Hz motor)",
+        minimum=0.0,
+        exclusive_minimum=True,
+        maximum=2e4,
+        display_unit="rpm",
+        group="motor curve",
+    ),
+    Param(
+        "rotor_inertia",
+        "kg*m^2",
+        "Motor rotor inertia, added to the spin-up (not to the blow: coupling 1 slips)",
+        default=0.0,
+        minimum=0.0,
+        maximum=1e3,
+        group="motor curve",
+    ),
+    Param(
+        "belt_efficiency",
+        "1",
+        "V-belt efficiency while accelerating (1 = the source's lossless drive)",
+        default=1.0,
+        minimum=0.0,
+        exclusive_minimum=True,
+        maximum=1.0,
+        recommended=(0.85, 1.0),
+        group="motor curve",
+    ),
+    Param(
+        "gear_efficiency",
+        "1",
+        "Gear mesh 4–5 efficiency while accelerating (1 = the source's lossless drive)",
+        default=1.0,
+        minimum=0.0,
+        exclusive_minimum=True,
+        maximum=1.0,
+        recommended=(0.9, 1.0),
+        group="motor curve",
+    ),
+)
+
+_OUTPUTS: tuple[Output, ...] = (
+    Output(
+        "kinetic_energy", "J", "Kinetic energy T of parts 1…5 at the working speed [000, eq. 3–4]"
+    ),
+    Output("acceleration_time", "s", "Spin-up time: T/P [000, eq. 5], or ∫J dω/M(ω) (motor_curve)"),
+    Output(
+        "shaft_stiffness", "N*m/rad", "Torsional stiffness C7 of the flywheel shaft [000, eq. 9]"
+    ),
+    Output("spindle_stiffness", "N*m/rad", "Torsional stiffness C8 of a spindle [000, eq. 9]"),
+    Output(
+        "impact_torque",
+        "N*m",
+        "Peak torque M on the struck spindle [000, eq. 7–8]; with the gear ratio in the "
+        "gear_ratio and motor_curve rungs",
+    ),
+    Output("max_spindle_torque", "N*m", "M_max = M − (z−1)·M_tr [000, eq. 10]"),
+    Output(
+        "shaft_twist", "rad", "Twist of shaft 7 during the blow [000, eq. 6]", display_unit="deg"
+    ),
+    Output(
+        "spindle_twist",
+        "rad",
+        "Twist of spindle 8 during the blow [000, eq. 6]",
+        display_unit="deg",
+    ),
+    Output("shaft_torque", "N*m", "Torque on shaft 7 during the blow: M (source) or u·M (geared)"),
+    Output("coupling_energy", "J", "Kinetic energy of coupling 1 [000, eq. 3]"),
+    Output("motor_pulley_energy", "J", "Kinetic energy of motor pulley 2 [000, eq. 3]"),
+    Output("flywheel_energy", "J", "Kinetic energy of flywheel 3 [000, eq. 3]"),
+    Output("drive_gear_energy", "J", "Kinetic energy of drive gear 4 [000, eq. 3]"),
+    Output("spindle_gears_energy", "J", "Kinetic energy of all z spindle gears 5 [000, eq. 3]"),
+    Output(
+        "equivalent_inertia",
+        "kg*m^2",
+        "Inertia of parts 1…5 referred to the motor shaft, 2T/ω² [000, eq. 3–4]",
+    ),
+    Output("flywheel_speed", "rad/s", "Flywheel speed ω3 = ω·D2/D3", display_unit="rpm"),
+    Output("spindle_gear_speed", "rad/s", "Spindle gear speed ω5 = ω3·D4/D5", display_unit="rpm"),
+    Output("gear_ratio", "1", "u = D4/D5, shaft torque over spindle torque"),
+    Output(
+        "gear_ratio_torque_change",
+        "1",
+        "Relative change of the impact torque when the gear ratio is taken into account: "
+        "M(u)/M(source) − 1",
+    ),
+    Output(
+        "shaft_shear_stress",
+        "Pa",
+        "Peak shear stress in shaft 7, 16·M7/(π d7³)",
+        display_unit="MPa",
+    ),
+    Output(
+        "spindle_shear_stress",
+        "Pa",
+        "Peak shear stress in spindle 8, 16·M/(π d8³)",
+        display_unit="MPa",
+    ),
+    Output(
+        "drive_inertia",
+        "kg*m^2",
+        "motor_curve: inertia accelerated by the motor at its shaft (rotor, parts 1…5, "
+        "divided by the belt and gear efficiencies)",
+    ),
+    Output(
+        "constant_power_time", "s", "motor_curve: the source's constant-power time T/P [000, eq. 5]"
+    ),
+    Output(
+        "time_vs_constant_power",
+        "1",
+        "motor_curve: spin-up time over the constant-power time, minus 1",
+    ),
+    Output("time", "s", "Time during spin-up (x-axis of the speed curves)", series=True),
+    Output(
+        "motor_speed_curve",
+        "rad/s",
+        "Motor speed against time during spin-up",
+        series=True,
+        x="time",
+        display_unit="rpm",
+    ),
+    Output(
+        "flywheel_speed_curve",
+        "rad/s",
+        "Flywheel speed against time during spin-up",
+        series=True,
+        x="time",
+        display_unit="rpm",
+    ),
+)
+
+
+def _motor_curve(x: Mapping[str, Any]) -> MotorCurve | None:
+    """The motor curve described by the inputs, or None for 'none'.
+
+    Raises InputOutOfRange naming the missing or inconsistent field.
+    """
+    kind = x["motor_curve"]
+    if kind == "none":
+        return None
+
+    def need(name: str) -> float:
+        value = x.get(name)
+        if value is None:
+            raise InputOutOfRange(f"{name} is required when motor_curve = {kind!r}", field=name)
+        return float(value)
+
+    if kind == "linear":
+        m_st, w0 = need("stall_torque"), need("no_load_speed")
+        return MotorCurve(
+            kind,
+            lambda w: linear_motor_torque(w, m_st, w0),
+            w0,
+            torque_below_limit=lambda gap: m_st * gap / w0,
+        )
+    if kind == "constant_power":
+        m_c, power = need("stall_torque"), float(x["motor_power"])
+        w_c = power / m_c
+        return MotorCurve(kind, lambda w: power / np.maximum(w, w_c), None, (w_c,))
+    w_s = need("synchronous_speed")
+    m_k = need("breakdown_torque")
+    w_n = float(x["rated_speed"] if x.get("rated_speed") is not None else x["motor_speed"])
+    if not w_n < w_s:
+        raise InputOutOfRange(
+            f"rated_speed = {w_n:.4g} rad/s must be below synchronous_speed = {w_s:.4g} rad/s "
+            "(an induction motor runs with slip)",
+            field="rated_speed" if x.get("rated_speed") is not None else "synchronous_speed",
+        )
+    m_n = float(x["rated_torque"]) if x.get("rated_torque") is not None else x["motor_power"] / w_n
+    if not m_k > m_n:
+        raise InputOutOfRange(
+            f"breakdown_torque = {m_k:.4g} N*m must exceed the rated torque {m_n:.4g} N*m",
+            field="breakdown_torque",
+        )
+    s_k = kloss_breakdown_slip(w_n, w_s, m_k / m_n)
+    return MotorCurve(
+        kind,
+        lambda w: kloss_torque(w, m_k, w_s, s_k),
+        w_s,
+        torque_below_limit=lambda gap: kloss_slip_torque(gap / w_s, m_k, s_k),
+    )
+
+
+@dataclass(frozen=True)
+class _Drive:
+    """Everything the closed forms give, for one design (floats or arrays)."""
+
+    energies: tuple[Any, Any, Any, Any, Any]
+    energy: Any
+    w3: Any
+    w5: Any
+    u: Any
+    c7: Any
+    c8: Any
+    m_paper: Any
+    m_geared: Any
+
+
+def _drive(x: Mapping[str, Any]) -> _Drive:
+    w = x["motor_speed"]
+    energies = part_energies(
+        w,
+        x["coupling_mass"],
+        x["coupling_diameter"],
+        x["motor_pulley_mass"],
+        x["motor_pulley_diameter"],
+        x["flywheel_mass"],
+        x["flywheel_diameter"],
+        x["drive_gear_mass"],
+        x["drive_gear_diameter"],
+        x["spindle_gear_mass"],
+        x["spindle_gear_diameter"],
+        x["spindle_count"],
+    )
+    energy = energies[0] + energies[1] + energies[2] + energies[3] + energies[4]
+    w3 = flywheel_speed(w, x["motor_pulley_diameter"], x["flywheel_diameter"])
+    u = x["drive_gear_diameter"] / x["spindle_gear_diameter"]
+    g = x["shear_modulus"]
+    c7 = torsional_stiffness(g, x["shaft_diameter"], x["shaft_length"])
+    c8 = torsional_stiffness(g, x["spindle_diameter"], x["spindle_length"])
+    return _Drive(
+        energies=energies,
+        energy=energy,
+        w3=w3,
+        w5=w3 * u,
+        u=u,
+        c7=c7,
+        c8=c8,
+        m_paper=impact_torque(energy, c7, c8),
+        m_geared=impact_torque_geared(energy, c7, c8, u),
+    )
+
+
+def _gear_effect(d: _Drive) -> Any:
+    """M(u)/M(source) − 1 = √((1/C7 + 1/C8)/(u²/C7 + 1/C8)) − 1, free of T."""
+    return np.sqrt((1.0 / d.c7 + 1.0 / d.c8) / (d.u**2 / d.c7 + 1.0 / d.c8)) - 1.0
+
+
+def _closed_values(x: Mapping[str, Any], d: _Drive, geared: bool) -> dict[str, Any]:
+    m = d.m_geared if geared else d.m_paper
+    m7 = d.u * m if geared else m
+    t1, t2, t3, t4, t5 = d.energies
+    return {
+        "kinetic_energy": d.energy,
+        "acceleration_time": acceleration_time(d.energy, x["motor_power"]),
+        "shaft_stiffness": d.c7,
+        "spindle_stiffness": d.c8,
+        "impact_torque": m,
+        "max_spindle_torque": max_spindle_torque(
+            m, x["spindle_count"], x["idle_spindle_friction_torque"]
+        ),
+        "shaft_twist": twist_angle(m7, d.c7),
+        "spindle_twist": twist_angle(m, d.c8),
+        "shaft_torque": m7,
+        "coupling_energy": t1,
+        "motor_pulley_energy": t2,
+        "flywheel_energy": t3,
+        "drive_gear_energy": t4,
+        "spindle_gears_energy": t5,
+        "equivalent_inertia": 2.0 * d.energy / x["motor_speed"] ** 2,
+        "flywheel_speed": d.w3,
+        "spindle_gear_speed": d.w5,
+        "gear_ratio": d.u,
+        "gear_ratio_torque_change": _gear_effect(d),
+        "shaft_shear_stress": shaft_shear_stress(m7, x["shaft_diameter"]),
+        "spindle_shear_stress": shaft_shear_stress(m, x["spindle_diameter"]),
+    }
+
+
+def _drive_inertia(x: Mapping[str, Any], d: _Drive) -> float:
+    w = x["motor_speed"]
+    return float(
+        equivalent_inertia(
+            disc_inertia(x["coupling_mass"], x["coupling_diameter"]),
+            disc_inertia(x["motor_pulley_mass"], x["motor_pulley_diameter"]),
+            disc_inertia(x["flywheel_mass"], x["flywheel_diameter"]),
+            disc_inertia(x["drive_gear_mass"], x["drive_gear_diameter"]),
+            disc_inertia(x["spindle_gear_mass"], x["spindle_gear_diameter"]),
+            x["spindle_count"],
+            d.w3 / w,
+            d.u,
+            x["rotor_inertia"],
+            x["belt_efficiency"],
+            x["gear_efficiency"],
+        )
+    )
+
+
+def _curve_time_ratio(x: Mapping[str, Any]) -> float | None:
+    """Constant-power time over motor-curve time, minus 1 (None without a curve)."""
+    curve = _motor_curve(x)
+    if curve is None:
+        return None
+    d = _drive(x)
+    t_curve, _ = spin_up_time(_drive_inertia(x, d), curve, float(x["motor_speed"]), rtol=1e-6)
+    return float(acceleration_time(d.energy, x["motor_power"]) / t_curve - 1.0)
+
+
+def _idealisation_error(x: Mapping[str, Any]) -> float:
+    """How far the constant-power time is from the motor curve's (0 without a curve)."""
+    try:
+        ratio = _curve_time_ratio(x)
+    except (InfeasibleDesign, InputOutOfRange):
+        return 1.0  # the constant-power time is meaningless if the motor cannot get there
+    return 0.0 if ratio is None else abs(ratio)
+
+
+_FLOOR = 1e-12  # float rounding of the closed forms
+
+
+def _estimate_closed_form(x: Mapping[str, Any]) -> float:
+    """Largest relative change the gear ratio makes to any torque output, either way round.
+
+    Spindle quantities scale with M_paper/M_geared, shaft quantities (torque, twist,
+    stress) with M_paper/(u·M_geared), and M_max with the ratio of the torques left
+    after the idle spindles' friction (while both stay positive). Each ratio r counts
+    as max(|r − 1|, |1/r − 1|), so the estimate bounds the difference whichever rung
+    is taken as the reference. With a motor curve, the constant-power idealisation of
+    the spin-up time counts too.
+    """
+    d = _drive(x)
+    m_paper, m_geared = float(d.m_paper), float(d.m_geared)
+    ratios = [m_paper / m_geared, m_paper / (float(d.u) * m_geared)]
+    friction = (x["spindle_count"] - 1) * x["idle_spindle_friction_torque"]
+    if min(m_paper, m_geared) > friction:
+        ratios.append((m_paper - friction) / (m_geared - friction))
+    gear = max(max(abs(r - 1.0), abs(1.0 / r - 1.0)) for r in ratios)
+    return max(_FLOOR, gear, _idealisation_error(x))
+
+
+def _estimate_gear_ratio(x: Mapping[str, Any]) -> float:
+    """With a motor curve: the constant-power idealisation; else rounding only."""
+    return max(_FLOOR, _idealisation_error(x))
+
+
+def _estimate_motor_curve(x: Mapping[str, Any]) -> float | None:
+    """Quadrature tolerance; None when no motor curve is given."""
+    return None if x["motor_curve"] == "none" else 1e-8
+
+
+def _checks(x: Mapping[str, Any], values: Mapping[str, Any]) -> tuple[list[Check], list[str]]:
+    checks: list[Check] = []
+    warnings: list[str] = []
+    m = float(values["impact_torque"])
+    m_max = float(values["max_spindle_torque"])
+    z, m_tr = int(x["spindle_count"]), float(x["idle_spindle_friction_torque"])
+    if m_max > 0.0:
+        checks.append(
+            Check(
+                "max_spindle_torque_positive",
+                True,
+                f"the idle spindles' friction takes {(z - 1) * m_tr:.4g} N*m of the "
+                f"{m:.4g} N*m blow; {m_max:.4g} N*m reach the nut",
+            )
+        )
+    else:
+        detail = (
+            f"the friction of the {z - 1} idle spindles, {(z - 1) * m_tr:.4g} N*m, absorbs "
+            f"the whole {m:.4g} N*m blow (M_max = {m_max:.4g} N*m): lower the friction-clutch "
+            f"torque below {m / max(z - 1, 1):.4g} N*m per spindle, or raise the blow energy"
+        )
+        checks.append(Check("max_spindle_torque_positive", False, detail))
+        warnings.append("no torque reaches the nut: " + detail)
+    if z >= 2:
+        d4, d5 = float(x["drive_gear_diameter"]), float(x["spindle_gear_diameter"])
+        pitch = (d4 + d5) * math.sin(math.pi / z)
+        checks.append(
+            Check(
+                "spindle_gears_fit",
+                pitch > d5,
+                f"neighbouring spindle gears' centres are {pitch * 1e3:.4g} mm apart on the "
+                f"{(d4 + d5) * 1e3:.4g} mm circle; a gear is {d5 * 1e3:.4g} mm across"
+                + ("" if pitch > d5 else ": they overlap, use smaller spindle gears or fewer"),
+            )
+        )
+    tau_y = x.get("shear_yield_strength")
+    if tau_y is not None:
+        for part, key in (("shaft 7", "shaft_shear_stress"), ("spindle 8", "spindle_shear_stress")):
+            tau = float(values[key])
+            ok = tau <= tau_y
+            checks.append(
+                Check(
+                    f"{key.removesuffix('_shear_stress')}_elastic",
+                    ok,
+                    f"{part}: peak shear stress {tau / 1e6:.4g} MPa vs yield {tau_y / 1e6:.4g} MPa"
+                    + (
+                        ""
+                        if ok
+                        else "; it yields, so the elastic model over-states the torque: "
+                        "thicken it or lower the blow energy"
+                    ),
+                )
+            )
+    return checks, warnings
+
+
+def _constant_power_note(x: Mapping[str, Any]) -> str:
+    """What the given motor curve says about this rung's constant-power spin-up time."""
+    try:
+        ratio = _curve_time_ratio(x)
+    except (InfeasibleDesign, InputOutOfRange) as exc:
+        return f"the motor curve given is not used by this rung, and it fails: {exc.message}"
+    assert ratio is not None
+    return (
+        "this rung assumes constant power from standstill [000, eq. 5]; the "
+        f"{x['motor_curve']} motor curve given changes the spin-up time by "
+        f"{1.0 / (1.0 + ratio) - 1.0:+.1%} (rung motor_curve)"
+    )
+
+
+#: True of every answer (the runner adds them to the notes; the catalogue lists them).
+ASSUMPTIONS = (
+    "eq. 3–5 and 7–8 of the source are illegible; T and t = T/P are reconstructed from "
+    "the work–energy theorem and the kinematic chain it names (see [000] in docs/sources.md)",
+    "the impact torque ignores socket, nut and joint compliance and all losses, as the "
+    "source does: an upper bound while shaft and spindle stay elastic",
+)
+
+
+def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    d = _drive(x)
+    geared = ctx.rung != "closed_form"
+    values = _closed_values(x, d, geared)
+    notes: list[str] = []
+    effect = float(values["gear_ratio_torque_change"])
+    if ctx.rung == "closed_form":
+        notes.append(
+            f"as in the source, shaft 7 and spindle 8 carry the same torque; with the gear "
+            f"ratio u = D4/D5 = {d.u:.4g} the spindle torque would change by {effect:+.2%} "
+            f"and the shaft torque (twist, stress) by {d.u * (1.0 + effect) - 1.0:+.2%} "
+            "(rung gear_ratio); the error estimate is the larger change, either way round"
+        )
+        error: float | None = _estimate_closed_form(x)
+    else:
+        notes.append(
+            f"shaft 7 carries u·M with u = D4/D5 = {d.u:.4g}; this moves the spindle torque by "
+            f"{effect:+.2%} from the source's form (which puts M on both)"
+        )
+        error = _estimate_gear_ratio(x) if ctx.rung == "gear_ratio" else None
+    if ctx.rung != "motor_curve" and x["motor_curve"] != "none":
+        notes.append(_constant_power_note(x))
+    series: dict[str, list[float]] = {}
+    wants_series = ctx.wants("time", "motor_speed_curve", "flywheel_speed_curve")
+    w = float(x["motor_speed"])
+    if ctx.rung == "motor_curve":
+        curve = _motor_curve(x)
+        if curve is None:
+            raise InputOutOfRange(
+                "the motor_curve rung needs a torque–speed curve: set motor_curve to "
+                "'linear', 'induction' or 'constant_power' with its inputs",
+                field="motor_curve",
+            )
+        j_drive = _drive_inertia(x, d)
+        t_curve, abserr = spin_up_time(j_drive, curve, w)
+        t_cp = float(values["acceleration_time"])
+        error = max(abserr / t_curve, 1e-15)
+        values["acceleration_time"] = t_curve
+        values["drive_inertia"] = j_drive
+        values["constant_power_time"] = t_cp
+        values["time_vs_constant_power"] = t_curve / t_cp - 1.0
+        notes.append(
+            f"spin-up by quadrature of J dω/M(ω) on the {curve.kind} curve: {t_curve:.4g} s, "
+            f"{t_curve / t_cp - 1.0:+.1%} against the source's constant-power {t_cp:.4g} s"
+        )
+        if curve.kind == "induction":
+            notes.append(
+                "the Kloss formula neglects stator resistance and under-estimates a cage "
+                "motor's starting torque, so this time is on the long side"
+            )
+        m_end = float(curve.torque(w))
+        m_peak = float(np.max(curve.torque(np.linspace(0.0, w, 257))))
+        check = Check(
+            "motor_reaches_speed",
+            True,
+            f"the motor reaches {w * 30 / math.pi:.0f} rpm in {t_curve:.3g} s; its torque "
+            f"there is {m_end:.4g} N*m ({m_end / m_peak:.0%} of its peak on the way)",
+        )
+        if wants_series:
+            times, speeds = spin_up_profile(j_drive, curve, w)
+            series = {"time": times.tolist(), "motor_speed_curve": speeds.tolist()}
+    else:
+        check = None
+        if wants_series:
+            # constant power: T ∝ ω² grows linearly in time, so ω(t) = ω·√(t/t_end)
+            speeds = np.linspace(0.0, w, 101)
+            times = float(values["acceleration_time"]) * (speeds / w) ** 2
+            series = {"time": times.tolist(), "motor_speed_curve": speeds.tolist()}
+    if series:
+        series["flywheel_speed_curve"] = (
+            np.asarray(series["motor_speed_curve"]) * float(d.w3) / w
+        ).tolist()
+    checks, warnings = _checks(x, values)
+    if check is not None:
+        checks.insert(0, check)
+    return Result(
+        values=values,
+        rung=ctx.rung,
+        error_estimate=error,
+        checks=checks,
+        notes=notes,
+        warnings=warnings,
+        series=series,
+    )
+
+
+def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    """Closed forms on arrays (one input varied), for sweeps."""
+    arrays = {
+        k: (np.asarray(v, dtype=float) if isinstance(v, np.ndarray) else v) for k, v in x.items()
+    }
+    d = _drive(arrays)
+    values = _closed_values(arrays, d, geared=ctx.rung != "closed_form")
+    warnings = []
+    m_max = np.asarray(values["max_spindle_torque"])
+    if np.any(m_max <= 0.0):
+        warnings.append(
+            f"at {int(np.sum(m_max <= 0.0))} points the idle spindles' friction absorbs the "
+            "whole blow (max_spindle_torque ≤ 0)"
+        )
+    return Result(
+        values=values,
+        rung=ctx.rung,
+        error_estimate=None,
+        warnings=warnings,
+    )
+
+
+EXAMPLE_LIGHT_TRUCK: dict[str, Any] = {
+    "motor_power": 1100.0,
+    "motor_speed": 1400.0 * RPM,
+    "coupling_mass": 1.2,
+    "coupling_diameter": 0.09,
+    "motor_pulley_mass": 0.8,
+    "motor_pulley_diameter": 0.08,
+    "flywheel_mass": 12.0,
+    "flywheel_diameter": 0.25,
+    "drive_gear_mass": 2.5,
+    "drive_gear_diameter": 0.10,
+    "spindle_gear_mass": 0.5,
+    "spindle_gear_diameter": 0.05,
+    "spindle_count": 6,
+    "shaft_diameter": 0.045,
+    "shaft_length": 0.20,
+    "spindle_diameter": 0.032,
+    "spindle_length": 0.30,
+    "shear_modulus": STEEL_SHEAR_MODULUS,
+    "idle_spindle_friction_torque": 10.0,
+}
+"""Illustrative six-nut light-truck wheel-nut runner: the source gives no worked numbers."""
+
+EXAMPLE_INDUCTION_MOTOR: dict[str, Any] = {
+    **EXAMPLE_LIGHT_TRUCK,
+    "motor_curve": "induction",
+    "synchronous_speed": 1500.0 * RPM,
+    "breakdown_torque": 2.2 * 1100.0 / (1400.0 * RPM),
+    "rotor_inertia": 0.0035,
+    "belt_efficiency": 0.95,
+    "gear_efficiency": 0.97,
+}
+"""The same drive on a 1.1 kW 4-pole cage motor (breakdown 2.2× rated), belt and gear losses."""
+
+NUTRUNNER_DRIVE = ModelSpec(
+    name="nutrunner.drive",
+    path="/nutrunner/drive",
+    title="Multi-spindle impact nut-runner drive",
+    family="nutrunner",
+    summary=(
+        "Spin-up time of a wheel-nut runner's motor–belt–flywheel–gear drive and the "
+        "torque one blow puts on a spindle, from the drive's kinetic energy stored as "
+        "elastic twist of the flywheel shaft and the spindle. The source gives no worked "
+        "example; examples[0] is an illustrative six-nut light-truck runner."
+    ),
+    source=(
+        "[000] Parameters of the drive of a multi-spindle nut-runner (Ukrainian journal "
+        "article), eq. 1–10; reconstructions in docs/sources.md; motor curves by the "
+        "Kloss formula"
+    ),
+    inputs=_INPUTS,
+    outputs=_OUTPUTS,
+    rungs=(
+        Rung(
+            "closed_form",
+            "The source's model: t = T/P at constant power, one torque M on shaft and "
+            "spindle [000, eq. 1–10]",
+            _estimate_closed_form,
+            typical_error="0 when D4 = D5; the gear-ratio effect (tens of %) otherwise",
+            typical_time="~50 µs",
+        ),
+        Rung(
+            "gear_ratio",
+            "As closed_form, but shaft 7 carries u·M with u = D4/D5 (the source ignores u)",
+            _estimate_gear_ratio,
+            typical_error="the constant-power idealisation of the spin-up time",
+            typical_time="~50 µs",
+        ),
+        Rung(
+            "motor_curve",
+            "gear_ratio torque; spin-up t = ∫J_eq dω/M(ω) by adaptive quadrature on a real "
+            "motor curve (linear, Kloss induction, or torque-limited constant power) with "
+            "rotor inertia and belt/gear efficiency; needs motor_curve ≠ 'none'",
+            _estimate_motor_curve,
+            typical_error="quadrature error ~1e-10 (the curve itself is the model)",
+            typical_time="~1 ms",
+        ),
+    ),
+    compute=_compute,
+    default_fidelity="closed_form",
+    examples=(EXAMPLE_LIGHT_TRUCK, EXAMPLE_INDUCTION_MOTOR),
+    assumptions=ASSUMPTIONS,
+    vectorized=_vectorized,
+    vector_rungs=("closed_form", "gear_ratio"),
+)

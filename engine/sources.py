@@ -1,0 +1,287 @@
+"""The sources the engine cites, machine-readable (``GET /api/v1/sources``).
+
+Every citation in a docstring, a spec or a result's notes names one of these:
+``[000, eq. 5]`` is equation 5 of source ``"000"``; ``VDI 2230-1 R7`` is step
+R7 of source ``"VDI2230"``. ``docs/sources.md`` holds the same list in prose
+(full references, what each source covers, what had to be reconstructed).
+The papers' equation numbers are the papers' own.
+
+>>> get_source("001").title
+'Parameters of double action ball overturn coupling'
+>>> sorted(cited_ids("as [001, eq. 2] and VDI 2230-1:2015 step R7 say"))
+['001', 'VDI2230']
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import asdict, dataclass
+from typing import Any, Literal
+
+SourceKind = Literal["paper", "standard", "textbook"]
+
+
+@dataclass(frozen=True)
+class Source:
+    """One cited document."""
+
+    id: str
+    kind: SourceKind
+    title: str
+    authors: str
+    year: str
+    published: str
+    #: What the engine takes from it (equations, tables, steps).
+    covers: str
+    #: Where the copy is illegible or the text inconsistent: what was reconstructed and how.
+    reconstruction: str = ""
+    #: The title in the original language, where the source is not in English.
+    original_title: str = ""
+
+    def reference(self) -> str:
+        """One line: authors, title, where published, year."""
+        return f"[{self.id}] {self.authors}: {self.title}. {self.published}, {self.year}."
+
+    def describe(self) -> dict[str, Any]:
+        """JSON-ready entry for the catalogue."""
+        return {**asdict(self), "reference": self.reference()}
+
+
+_UNKNOWN = "not printed in the available copy"
+
+SOURCES: dict[str, Source] = {
+    s.id: s
+    for s in (
+        Source(
+            id="000",
+            kind="paper",
+            title="Parameters of the drive of a multi-spindle nut-runner",
+            original_title="Параметри привода багатошпиндельного гайкокрута (Ukrainian); "
+            "English abstract: 'Parameters of multiple-spindle power nut-driver'",
+            authors=_UNKNOWN,
+            year=_UNKNOWN,
+            published="Ukrainian technical journal article (journal " + _UNKNOWN + ")",
+            covers="Multi-spindle impact wheel-nut runner: kinematic chain motor 6 -> coupling 1 "
+            "-> pulley 2 -> belt -> flywheel 3 -> drive gear 4 -> z spindle gears 5; spin-up "
+            "time from the work-energy theorem (eq. 1-5), impact torque from energy "
+            "conservation in the twisted shaft 7 and spindle 8 (eq. 6-9), maximum spindle "
+            "torque (eq. 10). Model nutrunner.drive.",
+            reconstruction="Eq. 3-5 (kinetic energy and acceleration time) and eq. 7-8 (energy "
+            "balance) are illegible or garbled in the only copy. Reconstructed from the "
+            "theorems the paper names and the kinematic chain it describes: "
+            "T = (1/16) sum m_k D_k^2 w_k^2 (z m5 for the spindle gears), t = T/P, "
+            "M = sqrt(2 T C7 C8 / (C7 + C8)). The paper puts the same torque on shaft 7 and "
+            "spindle 8, ignoring the gear ratio u = D4/D5; the gear_ratio rung adds it "
+            "(M = sqrt(2T / (u^2/C7 + 1/C8))) and the result says by how much it differs.",
+        ),
+        Source(
+            id="001",
+            kind="paper",
+            title="Parameters of double action ball overturn coupling",
+            original_title="Параметри кулькової обгінної муфти подвійної дії (Ukrainian)",
+            authors="V. O. Malashchenko (Lviv Polytechnic National University), V. F. Semenyuk "
+            "(Odesa Polytechnic National University), B. R. Lysiak (Drohobych machine-building "
+            "company)",
+            year=_UNKNOWN,
+            published="Ukrainian technical journal article (journal " + _UNKNOWN + ")",
+            covers="Double-action ball overrunning (safety) clutch: forces on one ball with the "
+            "load non-uniformity factor K_r = 0.85-0.9 (eq. 1), spring force of a helical "
+            "compression spring (eq. 2), axial balance without friction (eq. 3), the torque "
+            "limit (after eq. 3), the worked case of its figures 4-5 (D0 = 50 mm, i = 4, "
+            "d = 10 mm, D = 45 mm, i_p = 5, alpha = 45 deg). Models clutch.ball and "
+            "clutch.ball_setting.",
+            reconstruction="The copy is a scan whose Cyrillic came out as Latin look-alikes. The "
+            "printed final formula shows K_r dividing, contradicting eq. 1; the engine follows "
+            "eq. 1-3 (the printed form is 1/K_r^2, 1.38 at K_r = 0.85, times ours). Eq. 3 sets "
+            "one ball's axial force equal to the whole spring force, true only with one spring "
+            "per ball (arrangement 'per_ball'); the single spring of the paper's figure 1 "
+            "('common', the default) gives T = D0 F / (2 tan alpha). Flank friction "
+            "(argued small but present in the paper's second half) enters as "
+            "tan(alpha - atan f).",
+        ),
+        Source(
+            id="002",
+            kind="paper",
+            title="Dynamics of the percussive mechanism of a rare-impact nut wrench with an "
+            "axially moving striker",
+            original_title="Динамика ударного механизма редкоударного гайковерта с осевым "
+            "перемещением бойка (Russian; Ukrainian and English abstracts)",
+            authors="N. V. Vodolazskaya (DonNTU, Donetsk), V. M. Iskritsky (DGMA, Kramatorsk)",
+            year=_UNKNOWN + " (its reference list goes up to 2005)",
+            published="Ukrainian collection of scientific papers (title " + _UNKNOWN + ")",
+            covers="One impact in four stages: spin-up with centrifugal rollers on cones "
+            "(eq. 1), engagement throw of the striker (eq. 2, closed form eq. 5), return "
+            "(eq. 3), re-locking (eq. 4); release speed (after eq. 4), spring choice (eq. 6), "
+            "full engagement inside the anvil's opening. Model impact.rare.",
+            reconstruction="The release speed is printed for alpha = 45 deg with a single "
+            "travel h; the same quasi-static balance of eq. 1 is used for any cone angle (it "
+            "reduces to the printed form at 45 deg). Stage 1 carries no weight term although "
+            "eq. 2 and 4 show gravity; as in the paper it is weightless and the notes give the "
+            "size of the omission. The conditions c3 > c1, lambda1 < lambda3 and "
+            "c1 lambda1 = c3 lambda3 cannot hold together; each is reported as printed. The "
+            "return condition c3 = m3 g/(h - z3) is a static balance; the exact condition of "
+            "eq. 3 is used. With heavy preloads or small cone angles the balance at h1 is "
+            "unstable (snap-through at lift-off), which the paper does not discuss. The paper "
+            "gives no numbers: the reference design is ours.",
+        ),
+        Source(
+            id="003",
+            kind="paper",
+            title="Scan of [002] (same article, Ukrainian and Russian abstracts)",
+            authors="N. V. Vodolazska, V. M. Iskritsky",
+            year=_UNKNOWN,
+            published="a second, scanned copy of [002]",
+            covers="Used only to read equations that are unclear in the text of [002].",
+        ),
+        Source(
+            id="004",
+            kind="paper",
+            title="Selection of preload and control of tightening of threaded joints (review)",
+            original_title="Вибір попереднього затягування (Ukrainian; section title, the "
+            "article's own title is " + _UNKNOWN + ")",
+            authors=_UNKNOWN,
+            year=_UNKNOWN,
+            published="Ukrainian technical journal article, oil and gas equipment context "
+            "(sucker rods)",
+            covers="Design preload and its limits (eq. 2-6), elongation and nut-angle control "
+            "(eq. 7-9), thread, bearing and wrench torque (eq. 10-13), frictionless torque "
+            "(eq. 14), approximations (eq. 15-19), control methods and their preload scatter "
+            "(fig. 1-9, Thum and Debus: 38 bolts 5/8 in at 80 N m). Models preload.tightening "
+            "and preload.control.",
+            reconstruction="Eq. 1, 10 and 12 are missing from the text; the standard textbook "
+            "relations stand in (thread torque F (d2/2) tan(psi + rho'), bearing-face radius "
+            "(Df^3 - dh^3) / (3 (Df^2 - dh^2))) and the docstrings say so. Thread geometry "
+            "follows ISO 68-1 / ISO 724 and ISO 898-1 (the review gives none).",
+        ),
+        Source(
+            id="VDI2230",
+            kind="standard",
+            title="Systematic calculation of highly stressed bolted joints - Joints with one "
+            "cylindrical bolt",
+            authors="VDI (Verein Deutscher Ingenieure)",
+            year="2015",
+            published="VDI 2230 Part 1:2015-11, Beuth, Berlin",
+            covers="Torsion-corrected equivalent stress and permissible assembly preload "
+            "F_M,zul (step R7, utilisation nu = 0.9), tightening torque "
+            "M_A = F_M (0.16 P + 0.58 d2 mu_G + D_Km/2 mu_K) (step R13, used with nu = 0.9 in "
+            "Table A1), tightening factor alpha_A by tightening method (Table A8). Models "
+            "preload.tightening and preload.control.",
+            reconstruction="The text is paywalled; relations and table values were taken from "
+            "cited secondary sources and cross-checked against printed worked values; the "
+            "docstrings name the step.",
+        ),
+        Source(
+            id="ISO68-1",
+            kind="standard",
+            title="ISO general purpose screw threads - Basic profile - Part 1: Metric screw "
+            "threads",
+            authors="ISO",
+            year="1998",
+            published="ISO 68-1:1998",
+            covers="Basic profile H = (sqrt 3 / 2) P: pitch diameter d2 = d - 0.6495 P, minor "
+            "diameters (engine.threads).",
+        ),
+        Source(
+            id="ISO261",
+            kind="standard",
+            title="ISO general purpose metric screw threads - General plan",
+            authors="ISO",
+            year="1998",
+            published="ISO 261:1998",
+            covers="Coarse and fine pitches per nominal diameter, M3-M39 (engine.threads).",
+        ),
+        Source(
+            id="ISO273",
+            kind="standard",
+            title="Fasteners - Clearance holes for bolts and screws",
+            authors="ISO",
+            year="1979",
+            published="ISO 273:1979",
+            covers="Fine, medium and coarse clearance-hole diameters (bearing-face inner "
+            "diameter, engine.threads.clearance_hole).",
+        ),
+        Source(
+            id="ISO724",
+            kind="standard",
+            title="ISO general-purpose metric screw threads - Basic dimensions",
+            authors="ISO",
+            year="1993",
+            published="ISO 724:1993",
+            covers="Basic dimensions d2, d1 derived from ISO 68-1 (engine.threads).",
+        ),
+        Source(
+            id="ISO898-1",
+            kind="standard",
+            title="Mechanical properties of fasteners made of carbon steel and alloy steel - "
+            "Part 1: Bolts, screws and studs with specified property classes",
+            authors="ISO",
+            year="2013",
+            published="ISO 898-1:2013",
+            covers="Stress area A_s = (pi/4) ((d2 + d3)/2)^2, yield and tensile strength of "
+            "property classes 4.6-12.9 (engine.threads).",
+        ),
+        Source(
+            id="ISO4017",
+            kind="standard",
+            title="Fasteners - Hexagon head screws - Product grades A and B",
+            authors="ISO",
+            year="edition not stated in the engine",
+            published="ISO 4017",
+            covers="Width across flats s and bearing-face diameter d_w of hexagon heads "
+            "(engine.threads.hex_bearing_diameter).",
+        ),
+        Source(
+            id="Wahl",
+            kind="textbook",
+            title="Mechanical Springs",
+            authors="A. M. Wahl",
+            year="1963",
+            published="2nd ed., McGraw-Hill, New York",
+            covers="Stress-correction factor K_w = (4C - 1)/(4C - 4) + 0.615/C and wire shear "
+            "stress of helical springs (clutch spring checks, beyond [001]).",
+        ),
+        Source(
+            id="Kloss",
+            kind="textbook",
+            title="Simplified Kloss formula for the torque-slip curve of an induction motor",
+            authors="M. Kloss; as in standard electric-drive textbooks",
+            year="1910s (textbook form)",
+            published="e.g. any electric machines textbook (T = 2 T_b / (s/s_b + s_b/s))",
+            covers="Induction-motor torque-speed curve for the motor_curve rung of "
+            "nutrunner.drive (engine.motor_spinup), beyond [000].",
+        ),
+    )
+}
+
+#: Patterns that cite a source in text, and the id each resolves to.
+_PATTERNS: tuple[tuple[re.Pattern[str], str | None], ...] = (
+    (re.compile(r"\[(\d{3})(?=[,\]])"), None),
+    (re.compile(r"\bVDI 2230"), "VDI2230"),
+    (re.compile(r"\bISO 68-1\b"), "ISO68-1"),
+    (re.compile(r"\bISO 261\b"), "ISO261"),
+    (re.compile(r"\bISO 273\b"), "ISO273"),
+    (re.compile(r"\bISO 724\b"), "ISO724"),
+    (re.compile(r"\bISO 898-1\b"), "ISO898-1"),
+    (re.compile(r"\bISO 4017\b"), "ISO4017"),
+    (re.compile(r"\bWahl\b"), "Wahl"),
+    (re.compile(r"\bKloss\b"), "Kloss"),
+)
+
+
+def cited_ids(text: str) -> set[str]:
+    """The source ids a text cites: ``[002, eq. 5]`` gives ``"002"``, ``VDI 2230`` ``"VDI2230"``."""
+    found: set[str] = set()
+    for pattern, fixed in _PATTERNS:
+        for match in pattern.finditer(text):
+            found.add(fixed if fixed is not None else match.group(1))
+    return found
+
+
+def get_source(source_id: str) -> Source:
+    """The source called ``source_id``; KeyError if there is none."""
+    return SOURCES[source_id]
+
+
+def catalogue() -> list[dict[str, Any]]:
+    """Every source, JSON-ready, in citation order."""
+    return [s.describe() for s in SOURCES.values()]

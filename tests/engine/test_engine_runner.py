@@ -1,0 +1,177 @@
+import dataclasses
+import math
+
+import pytest
+
+import engine
+from engine import InfeasibleDesign, InputOutOfRange, Rung, fixed_error
+from tests.toys import TOY
+from tests.toys import _disc as toy_compute
+
+BASE = {"diameter": 0.2}
+
+
+def test_defaults_filled_and_exact_value():
+    r = engine.run(TOY, BASE, fidelity="exact")
+    # J = 1 * 0.2² / 8 = 0.005; T = 0.5 * 0.005 * 100² = 25
+    assert r.results["inertia"] == pytest.approx(0.005, rel=1e-15)
+    assert r.results["energy"] == pytest.approx(25.0, rel=1e-15)
+    assert r.inputs["mass"] == 1.0 and r.inputs["extra_load"] is None
+    assert r.units["energy"] == "J"
+    assert r.rung == "exact" and r.elapsed_s >= 0
+
+
+def test_auto_picks_cheapest_rung_meeting_tolerance():
+    loose = engine.run(TOY, BASE, tolerance=0.1)
+    tight = engine.run(TOY, BASE, tolerance=1e-3)
+    assert loose.rung == "rough" and "auto: chose 'rough'" in loose.notes[0]
+    assert tight.rung == "exact" and "rough 0.05" in tight.notes[0]
+    assert loose.results["energy"] == pytest.approx(25.0 * 1.05)
+
+
+def test_outputs_limit_the_work():
+    r = engine.run(TOY, BASE, outputs=["inertia"])
+    assert set(r.results) == {"inertia"} and r.series == {}
+
+
+def test_non_finite_becomes_null_with_note():
+    r = engine.run(TOY, {**BASE, "blowup": True})
+    assert r.results["ratio"] is None
+    assert any("ratio could not be computed" in n for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    ("inputs", "field"),
+    [
+        ({"diameter": -1.0}, "diameter"),
+        ({"diameter": 0.0}, "diameter"),
+        ({"diameter": math.nan}, "diameter"),
+        ({"diameter": math.inf}, "diameter"),
+        ({"diameter": 0.1, "count": 2.5}, "count"),
+        ({"diameter": 0.1, "angle": math.pi / 2}, "angle"),
+        ({"diameter": 0.1, "mode": "other"}, "mode"),
+        ({"diameter": 0.1, "colour": 1}, "colour"),
+        ({}, "diameter"),
+    ],
+)
+def test_out_of_range_names_field(inputs, field):
+    with pytest.raises(InputOutOfRange) as info:
+        engine.run(TOY, inputs)
+    assert info.value.field == field
+    assert field in info.value.message
+
+
+def test_recommended_range_warns():
+    r = engine.run(TOY, {**BASE, "speed": 600.0})
+    assert any("recommends" in w for w in r.warnings)
+
+
+def test_infeasible_raises():
+    with pytest.raises(InfeasibleDesign):
+        engine.run(TOY, {**BASE, "mode": "broken"})
+
+
+def test_sweep_matches_single_runs():
+    values = engine.sweep_values(0.1, 0.3, 5)
+    s = engine.sweep(TOY, BASE, "diameter", values.tolist(), outputs=["energy"], fidelity="exact")
+    for d, e in zip(s.values, s.results["energy"], strict=True):
+        assert e == pytest.approx(0.5 * d**2 / 8 * 100.0**2)
+
+
+def test_sweep_log_and_bounds():
+    assert engine.sweep_values(1e-3, 1.0, 4, "log").tolist() == pytest.approx([1e-3, 1e-2, 1e-1, 1])
+    with pytest.raises(InputOutOfRange):
+        engine.sweep_values(0, 1, engine.MAX_SWEEP_POINTS + 1)
+
+
+def test_vectorized_sweep_equals_loop_and_nulls_bad_points():
+    values = [0.1, 1.0, 6.0]
+    fast = engine.sweep(TOY, BASE, "diameter", values, outputs=["energy"], fidelity="exact")
+    assert fast.results["energy"][:2] == pytest.approx([0.5 * d**2 / 8 * 1e4 for d in values[:2]])
+    assert fast.results["energy"][2] is None and "1 of 3 points" in fast.notes[-1]
+    slow = engine.sweep(TOY, BASE, "diameter", values[:2], outputs=["energy"], fidelity="rough")
+    assert slow.rung == "rough" and slow.results["energy"][0] == pytest.approx(
+        1.05 * 0.5 * 0.01 / 8 * 1e4
+    )
+
+
+def test_vectorized_sweep_checks_range():
+    with pytest.raises(InputOutOfRange):
+        engine.sweep(TOY, BASE, "diameter", [0.1, 20.0], fidelity="exact")
+
+
+def test_vectorized_sweep_loops_when_the_array_path_lacks_an_asked_output():
+    # the toy's array version gives only energy; inertia belongs to the rung, so the loop runs
+    s = engine.sweep(TOY, BASE, "diameter", [0.1, 0.2], outputs=["inertia"], fidelity="exact")
+    assert s.results["inertia"] == pytest.approx([0.1**2 / 8, 0.2**2 / 8])
+
+
+def _speed_sensitive_toy():
+    """TOY whose rough rung is 5 % off and says so only above 10 rad/s (estimate speed/1000)."""
+    return dataclasses.replace(
+        TOY,
+        rungs=(
+            Rung("rough", "off at speed", lambda x: x["speed"] / 1000.0),
+            Rung("exact", "exact", fixed_error(1e-15)),
+        ),
+        vectorized=None,
+    )
+
+
+def test_auto_sweep_chooses_the_rung_per_point_and_says_so():
+    toy = _speed_sensitive_toy()
+    s = engine.sweep(toy, BASE, "speed", [1.0, 5.0, 50.0, 100.0], outputs=["energy"])
+    # estimates 0.001, 0.005 ≤ 0.01 → rough; 0.05, 0.1 > 0.01 → exact
+    assert s.rungs == ["rough", "rough", "exact", "exact"]
+    assert s.error_estimates == pytest.approx([0.05, 0.05, 1e-15, 1e-15])
+    assert s.rung == "rough, exact" and "rough at 2 points, exact at 2 points" in s.notes[0]
+    e = [0.5 * 0.2**2 / 8 * w**2 for w in (1.0, 5.0, 50.0, 100.0)]
+    assert s.results["energy"] == pytest.approx([1.05 * e[0], 1.05 * e[1], e[2], e[3]])
+    # the same points swept the other way give the same values
+    back = engine.sweep(toy, BASE, "speed", [100.0, 50.0, 5.0, 1.0], outputs=["energy"])
+    assert back.results["energy"] == pytest.approx(s.results["energy"][::-1])
+
+
+def test_auto_array_sweep_loops_when_points_choose_different_rungs():
+    toy = dataclasses.replace(
+        TOY,
+        rungs=(Rung("rough", "off", lambda x: x["diameter"]), Rung("exact", "", fixed_error(0))),
+        vector_rungs=("rough", "exact"),
+    )
+    s = engine.sweep(toy, BASE, "diameter", [0.001, 0.5], outputs=["energy"])
+    assert s.rungs == ["rough", "exact"]  # not the first point's choice everywhere
+    fixed = engine.sweep(toy, BASE, "diameter", [0.001, 0.5], outputs=["energy"], fidelity="rough")
+    assert fixed.rungs == ["rough", "rough"] and fixed.error_estimates == [0.001, 0.5]
+
+
+def test_tolerance_without_fidelity_means_auto():
+    toy = dataclasses.replace(_speed_sensitive_toy(), default_fidelity="rough")
+    assert engine.run(toy, BASE).rung == "rough"  # the default rung
+    r = engine.run(toy, BASE, tolerance=0.01)  # speed 100: rough estimates 0.1
+    assert r.rung == "exact" and r.notes[0].startswith("auto:")
+
+
+def test_an_output_asked_by_name_comes_back_null_with_a_note_when_not_computed():
+    def compute(x, ctx):
+        return engine.Result(values={"inertia": 1.0}, rung=ctx.rung, error_estimate=0.0)
+
+    toy = dataclasses.replace(TOY, compute=compute)
+    r = engine.run(toy, BASE, outputs=["inertia", "energy"])
+    assert r.results == {"inertia": 1.0, "energy": None}
+    assert any("energy is not computed" in n for n in r.notes)
+    assert "energy" not in engine.run(toy, BASE).results  # all outputs: only what was computed
+
+
+def test_sweep_nulls_points_that_break_a_cross_field_range_and_names_them():
+    def compute(x, ctx):
+        if x["speed"] > 50.0:
+            raise InputOutOfRange("mass must exceed speed / 50", field="mass")
+        return toy_compute(x, ctx)
+
+    toy = dataclasses.replace(TOY, compute=compute, vectorized=None)
+    s = engine.sweep(toy, BASE, "speed", [10.0, 100.0], outputs=["energy"], fidelity="exact")
+    assert s.results["energy"][1] is None and s.rungs == ["exact", None]
+    assert "speed = 100: mass must exceed" in s.notes[-1]
+    with pytest.raises(InputOutOfRange) as info:  # every point refused: the fixed input is at fault
+        engine.sweep(toy, BASE, "speed", [60.0, 100.0], fidelity="exact")
+    assert info.value.field == "mass"
