@@ -856,8 +856,10 @@ function resultParts(m, data, { interactive = false } = {}) {
     : null;
   const warnings = data.warnings.length
     ? el("ul", { class: "warnings", id: interactive ? "warnings" : null }, ...data.warnings.map((w) => el("li", {}, "⚠ ", w))) : null;
-  const notes = data.notes.length
-    ? el("ul", { class: "notes", id: interactive ? "notes" : null }, ...data.notes.map((n) => el("li", {}, n))) : null;
+  // the report lists the model's assumptions once, under their own heading
+  const noteList = interactive ? data.notes : data.notes.filter((n) => !(m.assumptions || []).includes(n));
+  const notes = noteList.length
+    ? el("ul", { class: "notes", id: interactive ? "notes" : null }, ...noteList.map((n) => el("li", {}, n))) : null;
   const table = el("div", { class: "table-wrap" },
     el("table", { id: interactive ? "results" : null, class: "results" }, el("tbody", {}, ...resultRows(m, data, { interactive, withDesc: interactive }))));
   if (!interactive) return [meta, table, checks ? el("h3", {}, "Checks") : null, checks, warnings ? el("h3", {}, "Warnings") : null, warnings, notes ? el("h3", {}, "Notes") : null, notes].filter(Boolean);
@@ -1403,6 +1405,8 @@ function renderReport(m) {
     el("p", { class: "source" }, el("strong", {}, "Source: "), m.source),
     sources.length ? el("ul", { class: "sources" }, ...sources) : null,
     checkSummary(data),
+    (m.assumptions || []).length ? el("h3", {}, "Assumptions") : null,
+    (m.assumptions || []).length ? el("ul", { class: "notes assumptions" }, ...m.assumptions.map((x) => el("li", {}, x))) : null,
     el("div", { class: "two-col" },
       el("div", {}, el("h3", {}, "Inputs"), inputsTable(m, data)),
       el("div", {}, el("h3", {}, "Results"), ...resultParts(m, data))),
@@ -1554,16 +1558,21 @@ function threadPicker(m, ps) {
   const sel = el("select", { id: "thread-picker", "aria-describedby": "thread-picker-hint" },
     el("option", { value: "" }, "— type diameter and pitch —"),
     ...threads.map((t, i) => el("option", { value: String(i) }, `${t.designation}${t.series ? " (" + t.series + ")" : ""}`)));
-  sel.addEventListener("change", () => {
-    const t = threads[Number(sel.value)];
-    if (!t) return;
+  const fill = (t) => {
     for (const [p, v] of [[d, t.diameter], [pitch, t.pitch]]) {
       const input = document.getElementById("in-" + p.name);
       input.value = fieldNumber(v / currentUnit(p).factor, 10);
       checkField(p);
     }
     markStale();
-  });
+  };
+  sel.addEventListener("change", () => { if (threads[Number(sel.value)]) fill(threads[Number(sel.value)]); });
+  // a designation typed into the diameter field ("M12", "M12x1.25") is read from the catalogue too
+  queueMicrotask(() => document.getElementById("in-" + d.name)?.addEventListener("change", (e) => {
+    const key = (s) => String(s).toUpperCase().replaceAll(" ", "").replaceAll("×", "X");
+    const i = threads.findIndex((t) => key(t.designation) === key(e.target.value));
+    if (i >= 0) { sel.value = String(i); fill(threads[i]); }
+  }));
   return el("div", { class: "field picker" }, el("label", { for: "thread-picker" }, "Thread (ISO designation)"),
     el("div", { class: "control" }, sel),
     el("div", { class: "hint", id: "thread-picker-hint" }, "fills the thread diameter and pitch"));

@@ -872,6 +872,12 @@ def test_thread_picker_fills_diameter_and_pitch(page, base_url):
     assert page.input_value("#in-thread_diameter") == "12"
     assert page.input_value("#in-thread_pitch") == "1.25"
     assert "R_p0.2 640 MPa" in page.inner_text("#in-property_class")
+    # a designation typed into the diameter field is read from the catalogue
+    page.fill("#in-thread_diameter", "m12")
+    page.dispatch_event("#in-thread_diameter", "change")
+    assert page.input_value("#in-thread_diameter") == "12"
+    assert page.input_value("#in-thread_pitch") == "1.75"
+    page.select_option("#thread-picker", label="M12x1.25 (fine)")
     assert _submit(page) == "ok"
     assert page.evaluate("window.calcState.lastResponse.inputs.thread_pitch") == pytest.approx(
         0.00125
