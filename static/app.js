@@ -134,7 +134,7 @@ const IMPERIAL = new Set(["in", "ft", "in²", "in³", "lb", "lbf", "kip", "lbf·
 /** Outputs that are ratios, shown in %: shares, utilisations, deviations, scatters, margins. */
 function isRatio(o) {
   return norm(o.unit) === "1" && o.kind === "float"
-    && /share|utili[sz]ation|deviation|scatter|relative|margin|fraction|efficiency/.test(o.name);
+    && /share|utili[sz]ation|deviation|scatter|relative|margin|fraction|efficiency|change/.test(o.name);
 }
 
 /** A readable name: the spec's label, or its description when the label is only a code ("z1"). */
@@ -1395,7 +1395,7 @@ function renderReport(m) {
   document.getElementById("report-meta").replaceChildren(
     `${now.toISOString().slice(0, 16).replace("T", " ")} UTC · service ${state.version || "?"} · model `,
     el("code", {}, m.name), " · ", el("a", { href: location.href, class: "report-link" }, "link to this calculation"));
-  const sources = (m.sources || []).map((x) => el("li", {}, `[${x.id}] ${x.reference}`));
+  const sources = (m.sources || []).map((x) => el("li", {}, String(x.reference).startsWith("[") ? x.reference : `[${x.id}] ${x.reference}`));
   const eqs = (m.equations || []).map((e) => el("div", { class: "eq-row" },
     el("p", { class: "eq-what" }, e.summary.replace(/\s*\[[^\]]*\]\.?$/, ""), e.source ? el("span", { class: "muted" }, ` ${e.source}`) : null),
     ...e.latex.map(equationNode)));
@@ -1519,7 +1519,9 @@ function renderCompare(model) {
   for (const p of model.inputs) {
     const vals = cols.map((c) => (c.ok ? c.data.inputs[p.name] : undefined));
     if (vals.every((v) => v === null || v === undefined)) continue;
-    const u = p.kind === "float" ? unitChoices(p.unit, p.display_unit)[0] : { factor: 1, label: "" };
+    const choices = unitChoices(p.unit, p.display_unit);
+    const u = p.kind !== "float" ? { factor: 1, label: "" }
+      : (state.imperial && choices.find((c) => IMPERIAL.has(c.label))) || choices[0];
     rows.push(row(p.label, u.label, vals, (v) => (typeof v === "number" ? group(short(v / u.factor, 6)) : v === undefined || v === null ? "—" : choiceText(String(v)))));
   }
   rows.push(el("tr", { class: "group" }, el("th", { colspan: cols.length + 1 }, "Results")));
