@@ -331,8 +331,8 @@ function showModel(m, params = new URLSearchParams()) {
   el("div", { class: "actions files" },
     el("button", { type: "button", id: "show-report", onclick: () => showView("report") }, "Calculation report"),
     el("button", { type: "button", id: "save-design", onclick: () => saveDesign(m) }, "Save design"),
-    el("label", { class: "button", for: "open-design" }, "Open design…"), openOne,
-    el("label", { class: "button", for: "compare-designs" }, "Compare designs…"), openMany));
+    openOne, el("label", { class: "button", for: "open-design" }, "Open design…"),
+    openMany, el("label", { class: "button", for: "compare-designs" }, "Compare designs…")));
   form.addEventListener("submit", (e) => { e.preventDefault(); compute(); });
   form.addEventListener("input", markStale);
   form.addEventListener("change", markStale);
@@ -732,6 +732,16 @@ function markStale() {
   const stale = Boolean(state.lastSnapshot) && !sameSnapshot(state.lastSnapshot, snapshot(m));
   note.hidden = !stale;
   document.getElementById("result").classList.toggle("stale", stale);
+  // the sweep answers its own inputs (all but the one it varies)
+  const sw = state.lastSweep;
+  const plot = document.getElementById("sweep-plot");
+  if (plot && sw?.snapshot) {
+    const now = snapshot(m);
+    delete now[sw.request.vary];
+    const sweepStale = !sameSnapshot(sw.snapshot, now);
+    plot.classList.toggle("stale", sweepStale);
+    document.getElementById("sweep-stale").hidden = !sweepStale;
+  }
   document.getElementById("report")?.classList.toggle("stale", stale);
   document.body.dataset.stale = stale ? "1" : "0";
 }
@@ -1143,6 +1153,7 @@ function sweepPanel(m) {
       el("button", { type: "button", id: "sweep-run", onclick: () => runSweep(m) }, "Sweep")),
     el("div", { class: "error", id: "sweep-error", role: "alert" }),
     el("div", { id: "sweep-notes", class: "notes" }),
+    el("p", { id: "sweep-stale", class: "stale-note", role: "status", hidden: true }, "Inputs changed: sweep again"),
     el("div", { id: "sweep-plot", class: "plots" }),
     el("div", { class: "downloads", id: "sweep-downloads", hidden: true },
       el("button", { type: "button", id: "sweep-csv", onclick: () => downloadSweep(m, "csv") }, "Download sweep CSV"),
@@ -1245,7 +1256,9 @@ async function runSweep(m) {
     document.body.dataset.sweep = "error";
     return;
   }
-  state.lastSweep = { request: req, response: data, unit: u };
+  const snap = snapshot(m);
+  delete snap[vary];
+  state.lastSweep = { request: req, response: data, unit: u, snapshot: snap };
   state.sweepParams = {
     sv: vary, su: u.api || u.label, so: outputs.join(","), s0: document.getElementById("sweep-start").value.trim(),
     s1: document.getElementById("sweep-stop").value.trim(), sn: String(num), ss: req.scale,

@@ -676,6 +676,12 @@ def test_a_shared_sweep_link_keeps_its_unit(page, base_url):
     assert again["response"]["results"] == sweep["response"]["results"]
     # two outputs in two units: twin axes, one canvas
     assert len(_canvas_ink(other, "#sweep-plot")) == 1
+    # the sweep is marked stale when an input it kept fixed changes, not the one it varies
+    assert other.is_hidden("#sweep-stale")
+    other.fill("#in-speed", "1")
+    assert other.is_hidden("#sweep-stale")
+    other.fill("#in-mass", str(float(other.input_value("#in-mass")) * 2))
+    assert other.is_visible("#sweep-stale")
     # and the sweep downloads
     with other.expect_download() as dl:
         other.click("#sweep-csv")
