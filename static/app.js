@@ -1051,7 +1051,7 @@ function dataTable(title, xLabel, x, ys) {
     rows.push(el("tr", {}, el("td", {}, fmt(x[i], 5)), ...ys.map((s) => el("td", {}, fmt(s.data[i], 5)))));
   }
   return el("details", { class: "data-table" },
-    el("summary", {}, "Table of the plotted values" + (step > 1 ? ` (every ${step}th point)` : "")),
+    el("summary", {}, "Table of the plotted values" + (step > 1 ? ` (one point in ${step})` : "")),
     el("div", { class: "table-wrap" }, el("table", { "aria-label": title },
       el("thead", {}, el("tr", {}, el("th", {}, xLabel), ...ys.map((s) => el("th", {}, s.label + (s.unit ? ` [${s.unit}]` : ""))))),
       el("tbody", {}, ...rows))));
@@ -1110,8 +1110,9 @@ function renderSeries(m, data, box = document.getElementById("series-plots"), ki
   }
   for (const c of charts.values()) {
     const names = c.ys.map((s) => s.label).join(", ");
+    const title = names.length <= 60 ? names : `${c.ys[0].label} and ${c.ys.length - 1} more`;
     makeChart(box, kind, {
-      title: names + (c.bars ? " (histogram)" : ""),
+      title: title + (c.bars ? " (histogram)" : ""),
       xLabel: c.xLabel, yLabel: `${names.length <= 32 ? names : c.ys[0].label + ", …"}${c.unit ? " [" + c.unit + "]" : ""}`,
       x: c.x, ys: c.ys, bars: c.bars, bands: c.bands, xRange: c.xRange, marks: c.marks,
     });
