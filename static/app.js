@@ -1390,11 +1390,12 @@ function inputsTable(m, data) {
       shown = p.kind === "int" ? String(v) : group(short(v / u.factor, 6));
       unit = u.label;
     } else shown = typeof v === "boolean" ? (v ? "yes" : "no") : choiceText(String(v));
+    const cites = [...new Set((p.description || "").match(/\[\d{3}[^\]]*\]/g) || [])].join(" ");
     rows.push(el("tr", {}, el("th", { scope: "row" }, p.label, p.symbol ? el("span", { class: "symbol" }, " " + p.symbol) : null),
-      el("td", { class: "num" }, shown), el("td", { class: "unit" }, unit), el("td", { class: "from" }, given)));
+      el("td", { class: "num" }, shown), el("td", { class: "unit" }, unit), el("td", { class: "from" }, given, cites ? el("span", { class: "muted" }, " " + cites) : null)));
   }
   return el("table", { class: "results inputs", id: "report-inputs" },
-    el("thead", {}, el("tr", {}, el("th", {}, "input"), el("th", {}, "value"), el("th", {}, "unit"), el("th", {}, "from"))),
+    el("thead", {}, el("tr", {}, el("th", {}, "input"), el("th", {}, "value"), el("th", {}, "unit"), el("th", {}, "from, source"))),
     el("tbody", {}, ...rows));
 }
 
