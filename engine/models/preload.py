@@ -474,7 +474,6 @@ TIGHTENING_ASSUMPTIONS = (
 
 TIGHTENING = ModelSpec(
     name="preload.tightening",
-    path="/preload/tightening",
     title="Bolt preload and tightening torque",
     family="preload",
     summary=(
@@ -1085,7 +1084,6 @@ CONTROL_OUTPUTS: tuple[Output, ...] = (
 
 CONTROL = ModelSpec(
     name="preload.control",
-    path="/preload/control",
     title="Preload control: target value, preload band and friction scatter",
     family="preload",
     summary=(

@@ -894,7 +894,6 @@ HORIZONTAL_DESIGN: dict[str, Any] = {**REFERENCE_DESIGN, "gravity": 0.0}
 
 RARE_IMPACT = ModelSpec(
     name="impact.rare",
-    path="/impact/rare",
     title="Rare-impact wrench: striker engagement",
     family="impact",
     summary=(
