@@ -362,6 +362,10 @@ function fieldRow(p) {
       ...p.choices.map((c) => el("option", { value: c }, state.choiceNames[c] ?? c)));
   } else if (p.kind === "bool") {
     input = el("input", { id, name: p.name, type: "checkbox", "aria-describedby": described });
+  } else if (p.kind === "text") {
+    // free text (a fastener designation, issue 15); the choices are suggestions
+    input = el("input", { id, name: p.name, type: "text", size: 22, maxlength: 64, list: "list-" + p.name, "aria-describedby": described });
+    unitSel = el("datalist", { id: "list-" + p.name }, ...(p.choices || []).map((c) => el("option", { value: c })));
   } else {
     input = el("input", { id, name: p.name, type: "text", inputmode: "decimal", size: 12, "aria-describedby": described });
     const choices = unitChoices(p.unit, p.display_unit);
@@ -403,6 +407,7 @@ function inUnit(si, unit) {
 /** "default 100 rpm · allowed > 0 and ≤ 1e4 mm · recommended …", in the unit chosen. */
 function hintText(p) {
   const parts = [];
+  if (p.kind === "text") return (p.required ? "" : "optional · ") + (p.choices?.length ? `e.g. ${p.choices.slice(0, 3).join(", ")}` : "text");
   if (p.kind === "choice" || p.kind === "bool") {
     if (p.default !== null && p.default !== undefined) parts.push(`default ${state.choiceNames[p.default] ?? p.default}`);
     if (p.kind === "choice" && !p.choices.some((c) => state.choiceNames[c])) parts.push(`one of ${p.choices.join(", ")}`);
@@ -453,7 +458,7 @@ function fillForm(m, key) {
     const input = document.getElementById("in-" + p.name);
     const v = p.name in values ? values[p.name] : p.default;
     if (p.kind === "bool") input.checked = Boolean(v);
-    else if (p.kind === "choice") input.value = v ?? "";
+    else if (p.kind === "choice" || p.kind === "text") input.value = v ?? "";
     else if (typeof v === "string") {
       input.value = v; // a unit string ("45 mm"): sent as written
       delete input.dataset.si;
@@ -484,7 +489,7 @@ function applyParams(m, params) {
     const raw = params.get(p.name);
     const input = document.getElementById("in-" + p.name);
     if (p.kind === "bool") { input.checked = raw === "true"; continue; }
-    if (p.kind === "choice") { input.value = raw; continue; }
+    if (p.kind === "choice" || p.kind === "text") { input.value = raw; continue; }
     const match = raw.match(/^\s*(\S+)\s*(.*)$/);
     const sel = document.getElementById("unit-" + p.name);
     if (match && sel && sel.tagName === "SELECT" && match[2]) {
@@ -574,7 +579,7 @@ function requestBody(m, { skip = null } = {}) {
     if (p.kind === "bool") { body[p.name] = input.checked; continue; }
     const raw = input.value.trim();
     if (raw === "") continue;
-    if (p.kind === "choice") { body[p.name] = raw; continue; }
+    if (p.kind === "choice" || p.kind === "text") { body[p.name] = raw; continue; }
     const u = currentUnit(p);
     if (!touched(input) && input.dataset.si !== undefined) body[p.name] = Number(input.dataset.si);
     else if (Number.isFinite(parseNum(raw))) body[p.name] = u.api ? `${dotted(raw)} ${u.api}` : parseNum(raw);
@@ -689,7 +694,7 @@ function formInputs(m) {
     const raw = input.value.trim();
     if (p.kind === "bool") out[p.name] = String(input.checked);
     else if (raw === "") { if (touched(input)) out[p.name] = ""; }
-    else if (p.kind === "choice" || !Number.isFinite(parseNum(raw))) out[p.name] = raw;
+    else if (p.kind === "choice" || p.kind === "text" || !Number.isFinite(parseNum(raw))) out[p.name] = raw;
     else {
       const u = currentUnit(p);
       out[p.name] = u.api ? `${raw} ${u.api}` : raw;
@@ -705,7 +710,7 @@ function snapshot(m) {
     const input = document.getElementById("in-" + p.name);
     if (p.kind === "bool") { snap[p.name] = input.checked; continue; }
     const raw = input.value.trim();
-    if (p.kind === "choice") { snap[p.name] = raw; continue; }
+    if (p.kind === "choice" || p.kind === "text") { snap[p.name] = raw; continue; }
     if (!touched(input) && input.dataset.si !== undefined) snap[p.name] = Number(input.dataset.si);
     else if (Number.isFinite(parseNum(raw))) snap[p.name] = parseNum(raw) * currentUnit(p).factor;
     else snap[p.name] = raw;
