@@ -655,6 +655,9 @@ async function compute() {
     destroyCharts("series");
     out.replaceChildren();
     showErrors(data, box);
+    // the report says why there is nothing to report
+    document.getElementById("report-body")?.replaceChildren(el("p", { class: "error" }, "Not computed: "),
+      el("ul", {}, ...(data.detail || []).map((d) => el("li", {}, d.msg))));
     markStale();
     document.body.dataset.result = "error";
     return;
