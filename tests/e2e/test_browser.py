@@ -808,8 +808,8 @@ def test_save_open_and_compare_designs(page, base_url, tmp_path):
 def _pdf_tools() -> None:
     import shutil
 
-    if not (shutil.which("pdfinfo") and shutil.which("pdftoppm")):
-        _cannot_run("pdfinfo/pdftoppm are missing: apt-get install -y poppler-utils")
+    if not all(shutil.which(t) for t in ("pdfinfo", "pdftoppm", "pdftotext")):
+        _cannot_run("pdfinfo/pdftoppm/pdftotext are missing: apt-get install -y poppler-utils")
 
 
 @pytest.mark.parametrize("name", [s.name for s in (*REAL, STRIKER)])
