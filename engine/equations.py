@@ -1,7 +1,7 @@
 """The equations a model uses, read from the docstrings of the engine functions it calls.
 
-Every engine function documents its equation in a ``.. math::`` block (fluids
-style, see STYLE.md). :func:`equations_of` starts at a model's compute
+Every engine function documents its equation in a ``.. math::`` block (the
+fluids docstring style). :func:`equations_of` starts at a model's compute
 function, follows the engine functions it calls (directly or through an
 imported engine module, ``th.stress_area``), depth first in the order they
 are named, and returns each function's summary line, its LaTeX and its
