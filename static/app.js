@@ -343,6 +343,8 @@ function showModel(m, params = new URLSearchParams()) {
 
   fillForm(m, params.get("ex") ?? (m.examples.length ? "0" : "defaults"));
   applyParams(m, params);
+  // imperial chosen earlier: the fields the link does not set open in imperial units
+  if (state.imperial) setFieldSystem(m, true, (p) => !params.has(p.name));
 }
 
 function rungTable(m) {
@@ -1603,21 +1605,26 @@ function threadPicker(m, ps) {
     el("div", { class: "hint", id: "thread-picker-hint" }, "fills the thread diameter and pitch"));
 }
 
-/** Metric or imperial: every field, result, plot and sweep at once. */
-function switchSystem(imperial) {
-  state.imperial = imperial;
-  localStorage.setItem("unit-system", imperial ? "imperial" : "metric");
-  const m = state.model;
-  if (!m) return;
+/** Each field's unit to its first imperial (or metric) choice; loaded values keep their exact SI value. */
+function setFieldSystem(m, imperial, which = () => true) {
   for (const p of m.inputs) {
     const sel = document.getElementById("unit-" + p.name);
-    if (!sel || sel.tagName !== "SELECT") continue;
+    if (!sel || sel.tagName !== "SELECT" || !which(p)) continue;
     const opts = [...sel.options];
     const want = imperial ? opts.find((o) => IMPERIAL.has(o.textContent)) : opts.find((o) => !IMPERIAL.has(o.textContent));
     if (!want || want.value === sel.value) continue;
     sel.value = want.value;
     sel.dispatchEvent(new Event("change"));
   }
+}
+
+/** Metric or imperial: every field, result, plot and sweep at once. */
+function switchSystem(imperial) {
+  state.imperial = imperial;
+  localStorage.setItem("unit-system", imperial ? "imperial" : "metric");
+  const m = state.model;
+  if (!m) return;
+  setFieldSystem(m, imperial);
   if (state.lastResponse) {
     renderResult(m, state.lastResponse);
     renderReport(m);

@@ -729,8 +729,15 @@ def test_stale_results_are_marked_and_units_read_by_people(page, base_url):
     assert _submit(page) == "ok"
     for k, v in page.evaluate("window.calcState.lastResponse.results").items():
         assert _same(v, first[k], 1e-9), k
+    # the choice stays for the next form; a link's own units win over it
+    _open(page, base_url, f"m={TOY.name}")
+    assert page.inner_text("#unit-diameter option:checked") == "in"
+    _open(page, base_url, f"m={TOY.name}&ex=0&diameter=150%20mm")
+    assert page.inner_text("#unit-diameter option:checked") == "mm"
+    assert page.inner_text("#unit-mass option:checked") == "lb"
     page.select_option("#unit-system", "metric")
     assert page.inner_text("#unit-diameter option:checked") == "mm"
+    assert page.inner_text("#unit-mass option:checked") == "kg"
 
 
 def test_histogram_bins_span_full_width_with_limit_lines(page, api, base_url):
