@@ -1433,7 +1433,7 @@ function renderReport(m) {
     (m.assumptions || []).length ? el("h3", {}, "Assumptions") : null,
     (m.assumptions || []).length ? el("ul", { class: "notes assumptions" }, ...m.assumptions.map((x) => el("li", {}, x))) : null,
     el("div", { class: "two-col" },
-      el("div", {}, el("h3", {}, "Inputs"), inputsTable(m, data)),
+      el("div", {}, el("h3", {}, "Inputs"), el("div", { class: "table-wrap" }, inputsTable(m, data))),
       el("div", {}, el("h3", {}, "Results"), ...resultParts(m, data))),
     eqs.length ? el("h3", {}, "Equations used") : null,
     eqs.length ? el("div", { class: "equations" }, ...eqs) : null,

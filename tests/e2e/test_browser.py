@@ -642,6 +642,12 @@ def test_every_model_fits_a_phone_and_a_desktop(page, api, base_url, name):
     if name == "preload.control":
         DOCS_SHOTS.mkdir(parents=True, exist_ok=True)
         page.screenshot(path=str(DOCS_SHOTS / "phone-form.png"), full_page=False)
+    # the report view fits too
+    page.click("#show-report")
+    assert page.is_visible("#report-body")
+    _no_horizontal_scroll(page)
+    page.click("#close-report")
+    assert page.is_visible("#form")
     page.set_viewport_size(DESKTOP)
     page.wait_for_timeout(250)  # the plots follow the window's width
     _no_horizontal_scroll(page)
