@@ -22,6 +22,7 @@ import engine
 #: Physics module -> the models whose inputs share its parameter names.
 FAMILIES: dict[str, tuple[str, ...]] = {
     "clutch": ("clutch.ball", "clutch.ball_setting"),
+    "joint": ("joint.vdi2230",),
     "motor_spinup": ("nutrunner.drive",),
     "nutrunner": ("nutrunner.drive",),
     "preload": ("preload.tightening", "preload.control"),

@@ -28,6 +28,7 @@ CITING = [
 #: Physics modules: pure functions, never the spec machinery.
 PHYSICS = [
     "clutch",
+    "joint",
     "motor_spinup",
     "nutrunner",
     "preload",
