@@ -232,6 +232,17 @@ SOURCES: dict[str, Source] = {
             "(engine.threads.hex_bearing_diameter).",
         ),
         Source(
+            id="ISO5393",
+            kind="standard",
+            title="Rotary tools for threaded fasteners - Performance test method",
+            authors="ISO",
+            year="2017",
+            published="ISO 5393:2017 (3rd edition)",
+            covers="Test joints of blow.joint: a hard joint reaches the target torque 30 deg "
+            "after snug, a soft joint 720 deg (27 and 648 deg from 10 % to 100 % of the "
+            "target), read as linear torque rates k_j = T_target / angle.",
+        ),
+        Source(
             id="ECSS-E-HB-32-23A",
             kind="standard",
             title="Space engineering - Threaded fasteners handbook",
@@ -377,6 +388,7 @@ _PATTERNS: tuple[tuple[re.Pattern[str], str | None], ...] = (
     (re.compile(r"\bISO 724\b"), "ISO724"),
     (re.compile(r"\bISO 898-1\b"), "ISO898-1"),
     (re.compile(r"\bISO 4017\b"), "ISO4017"),
+    (re.compile(r"\bISO 5393\b"), "ISO5393"),
     (re.compile(r"\bWahl\b"), "Wahl"),
     (re.compile(r"\bKloss\b"), "Kloss"),
     (re.compile(r"\bEN 13906-1\b"), "EN13906-1"),

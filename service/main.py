@@ -25,10 +25,10 @@ from collections.abc import AsyncIterator, Sequence
 from contextlib import asynccontextmanager
 from pathlib import Path
 
-from fastapi import FastAPI
+from fastapi import FastAPI, Request
 from fastapi.middleware.cors import CORSMiddleware
 from fastapi.openapi.docs import get_redoc_html, get_swagger_ui_html
-from fastapi.responses import HTMLResponse, JSONResponse
+from fastapi.responses import HTMLResponse, JSONResponse, RedirectResponse
 from fastapi.routing import APIRoute
 from fastapi.staticfiles import StaticFiles
 
@@ -98,7 +98,9 @@ def static_dir() -> Path:
 
 
 def create_app(
-    models: Sequence[ModelSpec] | None = None, settings: Settings | None = None
+    models: Sequence[ModelSpec] | None = None,
+    settings: Settings | None = None,
+    study_settings: StudySettings | None = None,
 ) -> FastAPI:
     models = engine.MODELS if models is None else models
     settings = settings or Settings()
@@ -118,7 +120,7 @@ def create_app(
         max_series_points=settings.max_series_points,
     )
 
-    studies = Studies(StudySettings())
+    studies = Studies(study_settings or StudySettings())
 
     @asynccontextmanager
     async def lifespan(_: FastAPI) -> AsyncIterator[None]:
@@ -179,6 +181,14 @@ def create_app(
     @app.get("/redoc", include_in_schema=False)
     def redoc_page() -> HTMLResponse:
         return redoc
+
+    @app.get("/report", include_in_schema=False)
+    def report(request: Request) -> RedirectResponse:
+        """``/report?m=…&ex=0&…``: the calculation report of a link's query (to archive)."""
+        query = request.url.query
+        return RedirectResponse(
+            "./#" + (query + "&" if query else "") + "view=report", status_code=303
+        )
 
     routers = [catalogue_router(models), *(model_router(s, limits) for s in models), *EXTRA_ROUTERS]
     for router in routers:

@@ -21,6 +21,7 @@ import engine
 
 #: Physics module -> the models whose inputs share its parameter names.
 FAMILIES: dict[str, tuple[str, ...]] = {
+    "blow": ("blow.joint",),
     "clutch": ("clutch.ball", "clutch.ball_setting"),
     "joint": ("joint.vdi2230",),
     "motor_spinup": ("nutrunner.drive",),
