@@ -970,6 +970,7 @@ BLOW = ModelSpec(
             typical_error="≤ 1e-6 lossless, 5e-5 with restitution < 1 (checked against "
             "scipy solve_ivp and closed forms)",
             typical_time="~0.5 ms per blow (one-off numba load in a fresh process)",
+            heavy=True,  # blow after blow: the service's heavy lane (issue 20)
         ),
     ),
     compute=_compute,
