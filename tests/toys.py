@@ -27,10 +27,12 @@ from engine import (
     ModelSpec,
     Output,
     Param,
+    Plot,
     Result,
     RunContext,
     Rung,
     SolverFailed,
+    Window,
     fixed_error,
 )
 from service import create_app
@@ -611,13 +613,27 @@ STRIKER = ModelSpec(
         Output("engagement_end", "s", "window closes", display_unit="ms"),
         Output("stiffness_ratio", "1", "c / (1000 m)"),
         Output("reaches", "1", "the striker reaches h in the window", kind="bool"),
-        Output("time", "s", "time", series=True, display_unit="ms"),
+        Output(
+            "time",
+            "s",
+            "time",
+            series=True,
+            display_unit="ms",
+            plot=Plot(windows=(Window("engagement", "engagement_start", "engagement_end"),)),
+        ),
         Output("travel", "m", "striker travel", series=True, x="time", display_unit="mm"),
         Output(
             "flywheel_speed", "rad/s", "flywheel speed", series=True, x="time", display_unit="rpm"
         ),
         Output("preload_bins", "N", "bin edges", series=True, display_unit="kN"),
-        Output("preload_count", "1", "bolts per bin", series=True, x="preload_bins"),
+        Output(
+            "preload_count",
+            "1",
+            "bolts per bin",
+            series=True,
+            x="preload_bins",
+            plot=Plot(bars=True),
+        ),
     ),
     rungs=(
         Rung("rough", "2 % off", fixed_error(0.02), typical_error="2 %"),

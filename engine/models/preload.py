@@ -17,7 +17,7 @@ from .. import preload as pl
 from .. import threads as th
 from ..errors import EngineError, InputOutOfRange
 from ..preload_methods import METHOD_KEYS, METHODS, ControlMethod, get_method
-from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from ..spec import Check, ModelSpec, Output, Param, Plot, Result, RunContext, Rung
 from ._common import count, friction_coefficient
 
 SOURCE = (
@@ -369,10 +369,6 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "approx: [004, eq. 15] with d2 ≈ d and R_T ≈ 0.25 (D_f + d_h); with one "
             "friction coefficient it is [004, eq. 19]"
         )
-    notes.append(
-        "[004, eq. 10 and 12] are missing from the review's text; the standard thread-torque "
-        "and annular friction-radius relations stand in"
-    )
     values: dict[str, Any] = {
         "assembly_preload": force,
         "permissible_preload": permissible,
@@ -399,7 +395,7 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "yield_rule_deviation": (thumb_yield - total) / total if total > 0 else math.inf,
     }
     return Result(
-        values={k: v for k, v in values.items() if ctx.wants(k)},
+        values=values,
         rung=ctx.rung,
         error_estimate=deviation,
         checks=checks,
@@ -470,6 +466,12 @@ TIGHTENING_OUTPUTS: tuple[Output, ...] = (
     Output("yield_rule_deviation", "1", "(0.07 σ_T d³ − M_A) / M_A"),
 )
 
+#: True of every preload.tightening answer (the runner adds it to the notes).
+TIGHTENING_ASSUMPTIONS = (
+    "[004, eq. 10 and 12] are missing from the review's text; the standard thread-torque "
+    "and annular friction-radius relations stand in",
+)
+
 TIGHTENING = ModelSpec(
     name="preload.tightening",
     path="/preload/tightening",
@@ -486,6 +488,7 @@ TIGHTENING = ModelSpec(
     outputs=TIGHTENING_OUTPUTS,
     rungs=(CLOSED_FORM,),
     compute=_tightening,
+    assumptions=TIGHTENING_ASSUMPTIONS,
     examples=(
         # VDI 2230 Table A1 case: M12 8.8, μ_G = μ_K = 0.12, ν = 0.9
         {"thread_diameter": 0.012, "property_class": "8.8", "thread_friction": 0.12},
@@ -965,13 +968,13 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
 
     return Result(
-        values={k: v for k, v in values.items() if ctx.wants(k)},
+        values=values,
         rung=ctx.rung,
         error_estimate=_formula_deviation(bolt, x),
         checks=checks,
         notes=notes,
         warnings=warnings,
-        series={k: v for k, v in series.items() if ctx.wants(k)},
+        series=series,
     )
 
 
@@ -1076,6 +1079,7 @@ CONTROL_OUTPUTS: tuple[Output, ...] = (
         "Friction scatter: expected number of bolts (of sample_size) per bin",
         series=True,
         x="preload_bins",
+        plot=Plot(bars=True),
     ),
 )
 
