@@ -15,7 +15,7 @@ with an axially moving striker"; [003] is a scan of it); see docs/sources.md.
 
 Every function here is a closed form on SI floats (most also accept numpy
 arrays, for sweeps). The full time simulation is in
-:mod:`engine.rare_impact_sim`.
+:mod:`engine.rare_impact_cycle` (with the Lagrangian stage 1 the model uses).
 
 What the source leaves open, and what this module does about it
 ----------------------------------------------------------------

@@ -32,7 +32,7 @@ PHYSICS = [
     "preload",
     "preload_methods",
     "rare_impact",
-    "rare_impact_sim",
+    "rare_impact_cycle",
     "threads",
 ]
 
