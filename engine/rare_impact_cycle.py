@@ -99,7 +99,8 @@ auxiliary :math:`c_2^+(\lambda_2 - y_{sh})` the shaft, return
 * **Stage 3** [002, eq. 3] with the rollers: two degrees of freedom
   :math:`(y_h, y_s)` coupled through the rollers,
   :math:`x = x_0 + \kappa(y_s - y_h)`, mass matrix from
-  :math:`T = \tfrac12 m_1\dot y_h^2 + \tfrac12 m_3\dot y_s^2 + \tfrac12 n m_p(\dot x^2 + \dot y_r^2)`;
+  :math:`T = \tfrac12 m_1\dot y_h^2 + \tfrac12 m_3\dot y_s^2
+  + \tfrac12 n m_p(\dot x^2 + \dot y_r^2)`;
   the half-coupling's stop at :math:`y_h = 0` is plastic (its generalised
   impulse only). The return is over when the striker has come back the jaw
   height (:math:`y_s = h_2 - h_3`, the paper's :math:`z_3 = h_3`), and the
@@ -136,15 +137,15 @@ __all__ = [
     "Geometry",
     "closed_form_cycle",
     "closed_form_errors",
-    "quasi_static_error",
-    "relock_friction",
-    "simulate_cycle_scipy",
-    "snaps_at_liftoff",
     "geometry",
     "liftoff_speed_of",
+    "quasi_static_error",
     "release_radius_of",
     "release_speed_of",
+    "relock_friction",
     "simulate_cycle",
+    "simulate_cycle_scipy",
+    "snaps_at_liftoff",
     "stage1_effective_mass",
 ]
 
@@ -201,7 +202,9 @@ def _geo(x: Mapping[str, Any]) -> Geometry:
 
 
 def stage1_effective_mass(x: Mapping[str, Any]) -> float:
-    r"""Mass the stage-1 axial equation moves, :math:`m_e = m_1 + m_2 + n m_p(\kappa^2+\rho^2)` [kg].
+    r"""Mass the stage-1 axial equation moves [kg].
+
+    :math:`m_e = m_1 + m_2 + n m_p(\kappa^2+\rho^2)`.
 
     ``paper``: the printed :math:`m_1 + m_2 + n m_p/(2\tan^2\alpha)` [002, eq. 1].
 
@@ -256,7 +259,8 @@ def release_speed_of(x: Mapping[str, Any]) -> float:
     (``paper``: :math:`A = n m_p/(2\tan\alpha)`, W = 0 [002, after eq. 4]);
     where the half-coupling snaps through (:func:`snaps_at_liftoff`), the
     lift-off speed times :math:`(J + n m_p x_0^2)/(J + n m_p r^2)` (the rollers
-    fly out faster than the motor acts: angular momentum is conserved). Raises InfeasibleDesign when the preloads do not
+    fly out faster than the motor acts: angular momentum is conserved).
+    Raises InfeasibleDesign when the preloads do not
     hold the half-coupling on its stop against gravity.
 
     Reference design, symmetric V, g = 0: (350 + 26)/(6·0.05·0.5·0.0425) = 58980.4,
@@ -294,9 +298,11 @@ def liftoff_speed_of(x: Mapping[str, Any]) -> float:
     .. math::
         \omega_0 = \sqrt{(c_1\lambda_1 + c_2\lambda_2 + W)/(A x_0)}
 
+    (100 + 16)/(6·0.05·0.5·0.04) = 19333.3, root 139.04 rad/s:
+
     >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
     >>> round(liftoff_speed_of({**R, "roller_geometry": "symmetric_v", "gravity": 0.0}), 2)
-    182.57
+    139.04
     """
     g = _geo(x)
     f0 = (
@@ -309,7 +315,9 @@ def liftoff_speed_of(x: Mapping[str, Any]) -> float:
 
 def _stage1_stiffness(x: Mapping[str, Any], g: Geometry, w: float) -> float:
     """:math:`K(\\omega) = c_1 + c_2 - A\\kappa\\omega^2` [N/m]: negative means snap-through."""
-    return x["power_spring_rate"] + x["auxiliary_spring_rate"] - _push_per_w2(x, g) * g.kappa * w * w
+    return (
+        x["power_spring_rate"] + x["auxiliary_spring_rate"] - _push_per_w2(x, g) * g.kappa * w * w
+    )
 
 
 def snaps_at_liftoff(x: Mapping[str, Any]) -> bool:
@@ -593,9 +601,9 @@ def _jit(func: Callable[..., Any]) -> Callable[..., Any]:
     except ImportError:  # pragma: no cover - numba is a declared dependency
         return func
     try:
-        return numba.njit(cache=True, nogil=True)(func)
+        return numba.njit(cache=True, nogil=True, error_model="numpy")(func)
     except RuntimeError:  # pragma: no cover - no writable cache directory at all
-        return numba.njit(cache=False, nogil=True)(func)
+        return numba.njit(cache=False, nogil=True, error_model="numpy")(func)
 
 
 # parameter vector indices
@@ -913,7 +921,8 @@ class _Recorder:
 
     def add(self, mode: int, bufs: tuple[np.ndarray, ...], n: int) -> None:
         if self.on and n > 0:
-            self.parts.append((mode, *(b[:n].copy() for b in bufs)))
+            t, w, q0, q1 = (b[:n].copy() for b in bufs)
+            self.parts.append((mode, t, w, q0, q1))
 
 
 def _events(*rows: tuple[int, float, float, float, float]) -> tuple[np.ndarray, ...]:
@@ -1003,7 +1012,7 @@ def simulate_cycle(
     >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
     >>> o = simulate_cycle({**R, "roller_geometry": "symmetric_v"})
     >>> round(o.release_speed, 2), round(o.engagement_time * 1e3, 3)
-    (243.44, 6.701)
+    (244.12, 6.558)
     """
     g = _geo(x)
     p = _params(x, g)
@@ -1310,7 +1319,9 @@ RETURN_COUPLING = 4.0
 
 
 def quasi_static_error(x: Mapping[str, Any]) -> tuple[float, float, float]:
-    r"""A-priori errors of the quasi-static stage 1: (release speed rel., spin-up time rel., release velocity [m/s]).
+    r"""A-priori errors of the quasi-static stage 1.
+
+    Returns (release speed, relative; spin-up time, relative; release velocity [m/s]).
 
     The derivation of :func:`engine.rare_impact.quasi_static_release_error`
     with the geometry's push :math:`A = n m_p\kappa`, stiffness
@@ -1368,7 +1379,7 @@ def quasi_static_error(x: Mapping[str, Any]) -> tuple[float, float, float]:
         return k, dz_dw * wd, d2z_dw2 * wd * wd + dz_dw * wdd
 
     k_0, zd_0, zdd_0 = rates(w_0, x0)
-    k_m, zd_m, zdd_m = rates(w_m, r)
+    k_m, _, zdd_m = rates(w_m, r)
     om_0, om_m = math.sqrt(k_0 / m_e), math.sqrt(k_m / m_e)
     amp = (abs(zd_0) / om_0 + abs(zdd_0) / om_0**2) * math.sqrt(om_0 / om_m)
     err = amp + abs(zdd_m) / om_m**2

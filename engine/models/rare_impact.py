@@ -154,9 +154,7 @@ def _geometry_note(x: Mapping[str, Any], w_m: float) -> str:
             w_o = release_speed_of({**x, "roller_geometry": other})
         except EngineError:
             continue
-        parts.append(
-            f"{_GEOMETRY_TEXT[other]} {in_rpm(w_o)} ({100.0 * (w_o / w_m - 1.0):+.1f} %)"
-        )
+        parts.append(f"{_GEOMETRY_TEXT[other]} {in_rpm(w_o)} ({100.0 * (w_o / w_m - 1.0):+.1f} %)")
     text = (
         f"roller geometry: {_GEOMETRY_TEXT[geo]}; the quasi-static release speed under the "
         "other readings of [002, eq. 1] would be " + ", ".join(parts)
@@ -395,9 +393,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "engagement_start": o.spin_up_time,
         "engagement_end": o.spin_up_time + window,
         "full_engagement": bool(o.blow and o.engagement_time <= window),
-        "engagement_margin": (
-            (window - o.engagement_time) / window if o.blow else None
-        ),
+        "engagement_margin": ((window - o.engagement_time) / window if o.blow else None),
         "blow_time": _none_if_inf(t_blow),
         "spring_height_limit": _none_if_inf(upper),
         "min_return_spring_rate": _none_if_inf(
@@ -446,9 +442,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         notes.append("relock_time is null: the stepped shaft does not get back to re-lock")
     if g != 0.0 and x["roller_geometry"] == "paper":
         m12 = x["half_coupling_mass"] + x["stepped_shaft_mass"]
-        force = c1 * (lam1 + h1) + x["auxiliary_spring_rate"] * (
-            x["auxiliary_spring_preload"] + h1
-        )
+        force = c1 * (lam1 + h1) + x["auxiliary_spring_rate"] * (x["auxiliary_spring_preload"] + h1)
         notes.append(
             "the paper's stage 1 leaves out the weight of half-coupling and shaft ([002, eq. 1]; "
             "eqs. 2 and 4 show it acting against the stage-1 travel); counting it would raise "

@@ -8,11 +8,10 @@ import pytest
 from engine import InfeasibleDesign, run, sweep
 from engine.models.rare_impact import (
     HORIZONTAL_DESIGN,
-    RARE_IMPACT,
     PAPER_DESIGN,
+    RARE_IMPACT,
     REFERENCE_DESIGN,
 )
-from engine.rare_impact_cycle import quasi_static_error, snaps_at_liftoff
 from engine.rare_impact import (
     effective_stage1_mass,
     liftoff_speed,
@@ -26,6 +25,7 @@ from engine.rare_impact import (
     striker_travel,
     time_to_travel,
 )
+from engine.rare_impact_cycle import quasi_static_error, snaps_at_liftoff
 
 R = REFERENCE_DESIGN
 
