@@ -559,8 +559,12 @@ def closed_form_cycle(x: Mapping[str, Any]) -> CycleOutcome:
     w_m = release_speed_of(x)
     r = release_radius_of(x)
     t_spin = _time_to_speed(x, _inertia_at(x, g, r), w_m)
-    if not math.isfinite(t_spin):
-        raise _never_fast_enough(x, w_m)
+    w_0 = liftoff_speed_of(x)
+    if not (
+        math.isfinite(t_spin)
+        and math.isfinite(_time_to_speed(x, _inertia_at(x, g, x["roller_radius"]), w_0))
+    ):
+        raise _never_fast_enough(x, max(w_m, w_0))
     v_rel = quasi_static_release_velocity(x, w_m)
     s2 = _stage2_closed(x, v_rel, g)
     h2, h3 = x["engagement_height"], x["jaw_height"]
@@ -653,7 +657,9 @@ def _rhs(mode, p, w, q0, q1, v0, v1):  # type: ignore[no-untyped-def]
         if mode == 4:
             return 0.0, 0.0, qs / m22
         qh = _sp_c(p[0], p[1] - q0) + (p[7] + nm * p[14]) * p[6]
-        det = m11 * m22 - m12 * m12
+        # m11 m22 - m12² without its cancellation (κ → ∞ at small cone angles)
+        det = p[7] * p[9] + nm * (p[7] * (k2 + p[15] * p[15]) + p[9] * (k2 + p[14] * p[14]))
+        det += nm * nm * k2 * (p[14] + p[15]) ** 2
         return 0.0, (m22 * qh - m12 * qs) / det, (m11 * qs - m12 * qh) / det
     # mode 6: the shaft's return against friction (moving forward only; see the driver)
     f = _sp_c(p[2], p[3] + p[19] - q0) + p[8] * p[6] - p[21]
@@ -1037,8 +1043,8 @@ def simulate_cycle(
     t_l = _time_to_speed(x, inertia_0, w_0)
     r = release_radius_of(x)
     t_qs = _time_to_speed(x, _inertia_at(x, g, r), w_qs)
-    if not math.isfinite(t_qs):
-        raise _never_fast_enough(x, w_qs)
+    if not (math.isfinite(t_qs) and math.isfinite(t_l)):
+        raise _never_fast_enough(x, max(w_qs, w_0))
     m_e = stage1_effective_mass(x)
     w_nl = x.get("motor_no_load_speed")
     span = max(t_qs - t_l, 0.0)
@@ -1153,7 +1159,9 @@ def simulate_cycle(
 
     # ---- stage 3: return with the rollers; the blow stopped the flywheel and the sandwich ----
     m11, m12, m22 = _stage3_matrices(x, g)
-    w_hi = math.sqrt(max(c1, c3) / min(m11 - m12 * m12 / m22, m22 - m12 * m12 / m11))
+    det = m1 * m3 + nm * (m1 * (g.kappa**2 + g.a_s**2) + m3 * (g.kappa**2 + g.a_h**2))
+    det += nm * nm * g.kappa**2 * (g.a_h + g.a_s) ** 2  # m11 m22 - m12², cancellation-free
+    w_hi = math.sqrt(max(c1, c3) / min(det / m22, det / m11))
     w_lo = math.sqrt(max(min(c1, c3), 1e-300) / (m11 + m22 + 2.0 * abs(m12)))
     h3s = 2.0 * math.pi / (steps_per_period * w_hi)
     t_blow_ = t_blow
