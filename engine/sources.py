@@ -166,9 +166,10 @@ SOURCES: dict[str, Source] = {
             "M_A = F_M (0.16 P + 0.58 d2 mu_G + D_Km/2 mu_K) (step R13, used with nu = 0.9 in "
             "Table A1), tightening factor alpha_A by tightening method (Table A8). Models "
             "preload.tightening and preload.control.",
-            reconstruction="The text is paywalled; relations and table values were taken from "
-            "cited secondary sources and cross-checked against printed worked values; the "
-            "docstrings name the step.",
+            reconstruction="The text is paywalled and was not available; the validation pins "
+            "the engine to Table A2 (fine threads, nu = 0.9) as reproduced in Bossard's "
+            "technical tables F.049/F.050 and the Mastik catalogue p. 685; the docstrings "
+            "name the step.",
         ),
         Source(
             id="ISO68-1",
@@ -231,6 +232,37 @@ SOURCES: dict[str, Source] = {
             "(engine.threads.hex_bearing_diameter).",
         ),
         Source(
+            id="ECSS-E-HB-32-23A",
+            kind="standard",
+            title="Space engineering - Threaded fasteners handbook",
+            authors="ESA-ESTEC, Requirements and Standards Division",
+            year="2010",
+            published="ECSS-E-HB-32-23A, 16 April 2010, Noordwijk (free download from ecss.nl)",
+            covers="Open secondary source for the VDI 2230 relations of the joint model "
+            "(engine.joint): bolt compliance by sections (sect. 7.5.5, Table 7-1), "
+            "clamped-part compliance by the deformation cone and sleeve (sect. 7.6.3, "
+            "eq. 7.6.8-7.6.14), embedding table (Table 6-3, after VDI 2230 Table 5.4/1), "
+            "thermal preload change (sect. 6.3.5), preload range from a torque specification "
+            "with min/max friction and prevailing torque (eq. 6.3.14-6.3.15), worked example "
+            "sect. 7.14. Model joint.vdi2230.",
+            reconstruction="Read through misams/BAT, which implements it and carries the "
+            "worked example's numbers; we did not have the PDF itself.",
+        ),
+        Source(
+            id="BAT",
+            kind="textbook",
+            title="BAT - Bolt Analysis Tool (open-source ECSS-E-HB-32-23A / VDI 2230 calculator)",
+            authors="M. Sams (GitHub misams/BAT)",
+            year="2021 (v0.8.4)",
+            published="https://github.com/misams/BAT, src/Ecss.py, src/BoltAnalysisBase.py",
+            covers="Independent implementation run side by side with engine.joint on "
+            "2026-11-23: clamped-part compliance (cone/sleeve), bolt compliance, load factor, "
+            "preload range of the ECSS sect. 7.14 worked example "
+            "(tests/validation/test_joint_compliance.py). Its cone formula puts the nominal "
+            "diameter d where VDI 2230 has the hole d_h, and it spreads one substitute area "
+            "over plates of different E; the tests say by how much that differs.",
+        ),
+        Source(
             id="Wahl",
             kind="textbook",
             title="Mechanical Springs",
@@ -244,11 +276,25 @@ SOURCES: dict[str, Source] = {
             id="Kloss",
             kind="textbook",
             title="Simplified Kloss formula for the torque-slip curve of an induction motor",
-            authors="M. Kloss; as in standard electric-drive textbooks",
-            year="1910s (textbook form)",
+            authors="after M. Kloss, as given in electric-drive textbooks",
+            year="textbook relation, no single edition cited",
             published="e.g. any electric machines textbook (T = 2 T_b / (s/s_b + s_b/s))",
             covers="Induction-motor torque-speed curve for the motor_curve rung of "
             "nutrunner.drive (engine.motor_spinup), beyond [000].",
+        ),
+        Source(
+            id="Saltelli2010",
+            kind="paper",
+            title="Variance based sensitivity analysis of model output. Design and estimator "
+            "for the total sensitivity index",
+            authors="A. Saltelli, P. Annoni, I. Azzini, F. Campolongo, M. Ratto, S. Tarantola",
+            year="2010",
+            published="Computer Physics Communications 181(2), 259-270",
+            covers="The sampling design (matrices A, B, AB_i) and the first-order Sobol' "
+            "estimator of engine.study; the total index uses Jansen's estimator (M. J. W. "
+            "Jansen, Computer Physics Communications 117, 35-43, 1999). Validated against the "
+            "Ishigami function's analytic indices (T. Ishigami, T. Homma, 1990; Saltelli et al., "
+            "Global Sensitivity Analysis: The Primer, Wiley 2008, §4.8).",
         ),
     )
 }
@@ -265,6 +311,8 @@ _PATTERNS: tuple[tuple[re.Pattern[str], str | None], ...] = (
     (re.compile(r"\bISO 4017\b"), "ISO4017"),
     (re.compile(r"\bWahl\b"), "Wahl"),
     (re.compile(r"\bKloss\b"), "Kloss"),
+    (re.compile(r"\bECSS-E-HB-32-23A\b"), "ECSS-E-HB-32-23A"),
+    (re.compile(r"\bmisams/BAT\b"), "BAT"),
 )
 
 

@@ -276,8 +276,8 @@ Compute = Callable[[Mapping[str, Any], RunContext], Result]
 class ModelSpec:
     """A model: its identity, inputs, outputs, rungs and compute function."""
 
+    #: ``<family>.<model>``; the model's URL path is derived from it (see :attr:`path`).
     name: str
-    path: str
     title: str
     family: str
     summary: str
@@ -300,8 +300,11 @@ class ModelSpec:
     #: reconstructions): the runner adds them to each result's notes, and the
     #: catalogue lists them.
     assumptions: tuple[str, ...] = ()
+    #: Derived from :attr:`name`: ``clutch.ball_setting`` is served at ``/clutch/ball_setting``.
+    path: str = field(init=False)
 
     def __post_init__(self) -> None:
+        object.__setattr__(self, "path", "/" + self.name.replace(".", "/"))
         names = [p.name for p in self.inputs]
         if len(set(names)) != len(names):
             raise ValueError(f"{self.name}: duplicate input names")

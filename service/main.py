@@ -39,6 +39,7 @@ from .api import Limits, catalogue_router, model_router
 from .config import Settings
 from .extra import EXTRA_ROUTERS
 from .middleware import BodyGuard, FrontDoor
+from .studies import Studies, StudySettings, study_router
 from .workers import EnginePool
 
 _CDN = "https://cdn.jsdelivr.net"
@@ -108,12 +109,15 @@ def create_app(
         max_series_points=settings.max_series_points,
     )
 
+    studies = Studies(StudySettings())
+
     @asynccontextmanager
     async def lifespan(_: FastAPI) -> AsyncIterator[None]:
         if settings.warm_up:
             threading.Thread(target=warm_up, args=(models,), name="warm-up", daemon=True).start()
         yield
         pool.shutdown()
+        studies.shutdown()
 
     app = FastAPI(
         title="Tightening-tool calculator",
@@ -158,6 +162,8 @@ def create_app(
         app.include_router(model_router(spec, limits))
     for router in EXTRA_ROUTERS:
         app.include_router(router)
+    app.include_router(study_router(models, studies))
+    app.state.studies = studies
     app.add_middleware(BodyGuard, limit=settings.max_body_bytes)
     if settings.cors_origins:
         app.add_middleware(

@@ -85,7 +85,6 @@ def _disc_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 TOY = ModelSpec(
     name="toy.disc",
-    path="/toy/disc",
     title="Spinning disc",
     family="toy",
     summary="Kinetic energy of a uniform disc.",
@@ -285,7 +284,6 @@ def _spring_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 SPRING = ModelSpec(
     name="toy.spring",
-    path="/toy/spring",
     title="Mass on a spring lifted by a constant force (test toy)",
     family="toy",
     summary="Time and speed at which a mass pushed by a constant force against a spring "
@@ -384,7 +382,6 @@ def _ode(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 TOY_ODE = ModelSpec(
     name="toy.ode",
-    path="/toy/ode",
     title="Damped oscillator (simulation)",
     family="toy",
     summary="x'' + c x' + k x = 0 from x = 1, integrated numerically.",
@@ -442,7 +439,6 @@ def _crash(x: Mapping[str, Any], ctx: RunContext) -> Result:
 def _timed(name: str, compute: Any) -> ModelSpec:
     return ModelSpec(
         name=f"toy.{name}",
-        path=f"/toy/{name}",
         title=name,
         family="toy",
         summary="test-only",
@@ -533,7 +529,6 @@ def _striker(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 STRIKER = ModelSpec(
     name="toy.striker",
-    path="/toy/striker",
     title="Toy striker with plots",
     family="toy-plots",
     summary="A spring-driven striker, a spinning flywheel and a scatter histogram (test only).",

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from ..spec import ModelSpec
 from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
+from .joint import VDI2230 as JOINT_VDI2230
 from .nutrunner import NUTRUNNER_DRIVE
 from .preload import CONTROL as PRELOAD_CONTROL
 from .preload import TIGHTENING as PRELOAD_TIGHTENING
@@ -26,6 +27,7 @@ MODELS: tuple[ModelSpec, ...] = (
     RARE_IMPACT,
     PRELOAD_TIGHTENING,
     PRELOAD_CONTROL,
+    JOINT_VDI2230,
 )
 
 

@@ -472,7 +472,6 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 BALL_CLUTCH = ModelSpec(
     name="clutch.ball",
-    path="/clutch/ball",
     title="Ball safety clutch: torque limit",
     family="clutch",
     summary=(
@@ -709,7 +708,6 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 BALL_CLUTCH_SETTING = ModelSpec(
     name="clutch.ball_setting",
-    path="/clutch/ball/setting",
     title="Ball safety clutch: setting for a target torque",
     family="clutch",
     summary=(

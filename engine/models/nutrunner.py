@@ -834,7 +834,6 @@ EXAMPLE_INDUCTION_MOTOR: dict[str, Any] = {
 
 NUTRUNNER_DRIVE = ModelSpec(
     name="nutrunner.drive",
-    path="/nutrunner/drive",
     title="Multi-spindle impact nut-runner drive",
     family="nutrunner",
     summary=(

@@ -925,7 +925,6 @@ PAPER_DESIGN: dict[str, Any] = {**REFERENCE_DESIGN, "roller_geometry": "paper"}
 
 RARE_IMPACT = ModelSpec(
     name="impact.rare",
-    path="/impact/rare",
     title="Rare-impact wrench: striker engagement",
     family="impact",
     summary=(
