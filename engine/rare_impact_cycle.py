@@ -181,6 +181,15 @@ GEOMETRIES = ("symmetric_v", "single_cone", "paper")
 def geometry(name: str, cone_angle: float) -> Geometry:
     """The kinematics of ``name`` (one of :data:`GEOMETRIES`) at cone angle α [rad].
 
+    Parameters
+    ----------
+    name : str
+        One of :data:`GEOMETRIES`
+    cone_angle : float
+        Cone angle α of the conical faces, [rad]
+
+    Notes
+    -----
     >>> g = geometry("symmetric_v", math.pi / 4)
     >>> round(g.kappa, 12), g.a_h, g.a_s
     (0.5, 0.5, 0.5)
@@ -206,6 +215,13 @@ def stage1_effective_mass(x: Mapping[str, Any]) -> float:
 
     :math:`m_e = m_1 + m_2 + n m_p(\kappa^2+\rho^2)`.
 
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+
+    Notes
+    -----
     ``paper``: the printed :math:`m_1 + m_2 + n m_p/(2\tan^2\alpha)` [002, eq. 1].
 
     >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
@@ -240,6 +256,13 @@ def _push_per_w2(x: Mapping[str, Any], g: Geometry) -> float:
 def release_radius_of(x: Mapping[str, Any]) -> float:
     r"""Roller centre radius at release, :math:`r = x_0 + \kappa h_1` [m].
 
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+
+    Notes
+    -----
     >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
     >>> round(release_radius_of({**R, "roller_geometry": "symmetric_v"}), 6)
     0.0425
@@ -252,6 +275,13 @@ def release_radius_of(x: Mapping[str, Any]) -> float:
 def release_speed_of(x: Mapping[str, Any]) -> float:
     r"""Quasi-static release speed of the chosen geometry [rad/s] (module notes).
 
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+
+    Notes
+    -----
     .. math::
         \omega_M = \sqrt{\frac{c_1(\lambda_1 + h_1) + c_2(\lambda_2 + h_1) + W}{A\,r}}
 
@@ -295,6 +325,13 @@ def release_speed_of(x: Mapping[str, Any]) -> float:
 def liftoff_speed_of(x: Mapping[str, Any]) -> float:
     r"""Speed at which the rollers' push first beats preloads and weight [rad/s].
 
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+
+    Notes
+    -----
     .. math::
         \omega_0 = \sqrt{(c_1\lambda_1 + c_2\lambda_2 + W)/(A x_0)}
 
@@ -321,7 +358,13 @@ def _stage1_stiffness(x: Mapping[str, Any], g: Geometry, w: float) -> float:
 
 
 def snaps_at_liftoff(x: Mapping[str, Any]) -> bool:
-    """True where the stage-1 stiffness is already negative at lift-off (release at lift-off)."""
+    """True where the stage-1 stiffness is already negative at lift-off (release at lift-off).
+
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+    """
     g = _geo(x)
     return _stage1_stiffness(x, g, liftoff_speed_of(x)) < 0.0
 
@@ -403,6 +446,21 @@ class CycleOutcome:
 def linear_reach(y0: float, v0: float, acc: float, w2: float, level: float) -> tuple[float, float]:
     r"""First time :math:`\ddot y = acc - w^2(y - y_0)`, from :math:`(y_0, v_0)`, reaches ``level``.
 
+    Parameters
+    ----------
+    y0 : float
+        Start position, [m]
+    v0 : float
+        Start velocity, [m/s]
+    acc : float
+        Acceleration at the start position, [m/s^2]
+    w2 : float
+        Stiffness per unit mass (square of the angular frequency), [1/s^2]
+    level : float
+        Position to reach, [m]
+
+    Notes
+    -----
     Returns ``(t, velocity there)``, ``(inf, nan)`` if never. Exact
     (harmonic for :math:`w^2 > 0`, parabolic for 0); the angle is taken with
     atan2 on cancellation-free terms, so tiny travels keep full precision.
@@ -507,7 +565,13 @@ def _stage3_matrices(
 
 
 def relock_friction(x: Mapping[str, Any]) -> float:
-    """Friction force the shaft meets in stage 4, :math:`f\\,c_3\\lambda_3` [N] [002, eq. 4]."""
+    """Friction force the shaft meets in stage 4, :math:`f\\,c_3\\lambda_3` [N] [002, eq. 4].
+
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+    """
     return float(x["roller_friction"] * x["return_spring_rate"] * x["return_spring_preload"])
 
 
@@ -529,6 +593,15 @@ def _stage4_closed(x: Mapping[str, Any]) -> float:
 def quasi_static_release_velocity(x: Mapping[str, Any], w_m: float) -> float:
     r"""Lift speed of the half-coupling at release on the quasi-static path [m/s].
 
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+    w_m : float
+        Release speed, [rad/s]
+
+    Notes
+    -----
     .. math::
         \dot z_e = \frac{dz_e}{d\omega}\dot\omega = \frac{2A\omega r}{K(\omega)}\,
             \frac{M(\omega)}{J + n m_p r^2}
@@ -551,6 +624,13 @@ def quasi_static_release_velocity(x: Mapping[str, Any], w_m: float) -> float:
 def closed_form_cycle(x: Mapping[str, Any]) -> CycleOutcome:
     """The cheap rung: quasi-static stage 1 and the piecewise-linear stages 2 and 4.
 
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+
+    Notes
+    -----
     Stage 3 is the paper's reduction with the rollers' inertia kept: the
     half-coupling held, the striker and the rollers' share moving,
     :math:`M_{22}\\ddot y_s = -c_3(\\lambda_3 + y_s) + (m_3 + n m_p a_s)g`.
@@ -1013,6 +1093,19 @@ def simulate_cycle(
 ) -> CycleOutcome:
     """The whole impact as one hybrid simulation (module notes); series when ``record``.
 
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+    record : bool
+        Keep a decimated trajectory for the series
+    deadline : float, optional
+        ``time.perf_counter()`` value after which the run stops (BudgetExceeded), [s]
+    max_steps : int
+        Largest number of RK4 steps, [-]
+    steps_per_period : int
+        RK4 steps per shortest natural period of each mode, [-]
+
     Examples
     --------
     >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
@@ -1329,6 +1422,13 @@ RETURN_COUPLING = 4.0
 def quasi_static_error(x: Mapping[str, Any]) -> tuple[float, float, float]:
     r"""A-priori errors of the quasi-static stage 1.
 
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+
+    Notes
+    -----
     Returns (release speed, relative; spin-up time, relative; release velocity [m/s]).
 
     The derivation of :func:`engine.rare_impact.quasi_static_release_error`
@@ -1403,6 +1503,15 @@ def quasi_static_error(x: Mapping[str, Any]) -> tuple[float, float, float]:
 def closed_form_errors(x: Mapping[str, Any], outcome: CycleOutcome) -> dict[str, float]:
     """Estimated relative error of each closed-form output group for these inputs.
 
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+    outcome : CycleOutcome
+        The closed form's outcome for ``x``
+
+    Notes
+    -----
     Keys: ``stage1`` (release speed, spin-up time, window), ``engagement``
     (engagement time and margin, reach), ``return``, ``relock``.
     """
@@ -1472,7 +1581,7 @@ class _RunScipy(_Run):
                 # skips it (a crossing *back* still counts)
                 def ev(t: float, y: np.ndarray, e: int = e) -> float:
                     return float(
-                        ec0[e] * y[1] + ec1[e] * y[2] - elvl[e] - edir[e] * 1e-15 * x_scale(p)
+                        ec0[e] * y[1] + ec1[e] * y[2] - elvl[e] - edir[e] * 1e-15 * _x_scale(p)
                     )
 
             ev.terminal = True  # type: ignore[attr-defined]
@@ -1491,7 +1600,7 @@ class _RunScipy(_Run):
             y0,
             method=self.method,
             rtol=self.rtol,
-            atol=self.rtol * max(x_scale(p), 1e-300),
+            atol=self.rtol * max(_x_scale(p), 1e-300),
             events=fns,
             **kwargs,
         )
@@ -1507,7 +1616,7 @@ class _RunScipy(_Run):
         return 1, i, (float(te), *map(float, ye))  # type: ignore[return-value]
 
 
-def x_scale(p: np.ndarray) -> float:
+def _x_scale(p: np.ndarray) -> float:
     """A length scale of the mechanism for absolute tolerances [m]."""
     return float(min(p[H1], p[H2]))
 
@@ -1518,6 +1627,19 @@ def simulate_cycle_scipy(
 ) -> tuple[CycleOutcome, int]:  # fmt: skip
     """The cycle of :func:`simulate_cycle` with each mode integrated by ``solve_ivp``.
 
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+    rtol : float
+        Relative tolerance of ``solve_ivp``, [-]
+    method : str
+        ``solve_ivp`` method name
+    max_step_fraction : float, optional
+        Largest step as a fraction of the mode's shortest period, [-]
+
+    Notes
+    -----
     Terminal events at the same levels. ``max_step_fraction`` bounds the step to
     that fraction of the mode's shortest period (None: scipy's own control,
     which can step over a grazing first crossing). Returns (outcome, RHS evaluations).
