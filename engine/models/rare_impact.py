@@ -336,6 +336,15 @@ def _none_if_inf(v: float) -> float | None:
     return v if math.isfinite(v) else None
 
 
+def _named_series(o: CycleOutcome) -> dict[str, list[float]]:
+    """The recorded series under their output names (none when nothing was recorded)."""
+    if not o.series.get("time"):
+        return {}
+    out = {k: v for k, v in o.series.items() if k != "roller_radius_series"}
+    out["roller_position"] = o.series["roller_radius_series"]
+    return out
+
+
 def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     o = _outcome(x, ctx)
     notes = list(o.notes)
@@ -450,20 +459,13 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
     checks = design_checks(x, o)
     return Result(
-        values={n: v for n, v in values.items() if ctx.wants(n)},
+        values=values,
         rung=ctx.rung,
         error_estimate=error,
         checks=checks,
         notes=notes,
         warnings=warnings,
-        series={
-            n: s
-            for n, s in {
-                **{k: v for k, v in o.series.items() if k != "roller_radius_series"},
-                "roller_position": o.series.get("roller_radius_series", []),
-            }.items()
-            if ctx.wants(n) and s
-        },
+        series=_named_series(o),
     )
 
 
