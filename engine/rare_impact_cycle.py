@@ -755,7 +755,7 @@ def _gfun(mode, kind, p, w, q0, q1, v0, v1):  # type: ignore[no-untyped-def]
         return v0
     if kind == 2:
         return v1
-    # kind 3: stop reaction on the half-coupling in mode 4 (positive: it leaves the stop)
+    # kind 3: what presses the half-coupling onto its stop in mode 4 (negative: it leaves)
     nm = p[11] * p[10]
     k2 = p[13] * p[13]
     m12 = nm * (-k2 + p[14] * p[15])
@@ -1281,7 +1281,7 @@ def simulate_cycle(
             rows.append((0, 1.0, 0.0, 0.0, 1.0))  # half-coupling onto its stop
         else:
             labels += ["leave", "stuck"]
-            rows.append((3, 0.0, 0.0, 0.0, 1.0))  # stop reaction reverses: leaves the stop
+            rows.append((3, 0.0, 0.0, 0.0, -1.0))  # the stop would have to pull: leaves it
             rows.append((2, 0.0, 0.0, 0.0, 1.0))  # turning back above home: never gets home
         status, which, state = run.go(
             mode, state, h3s, t3_end, _events(*rows), (t3_end - t_blow_) / h3s
