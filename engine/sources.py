@@ -232,6 +232,17 @@ SOURCES: dict[str, Source] = {
             "(engine.threads.hex_bearing_diameter).",
         ),
         Source(
+            id="ISO5393",
+            kind="standard",
+            title="Rotary tools for threaded fasteners - Performance test method",
+            authors="ISO",
+            year="2017",
+            published="ISO 5393:2017 (3rd edition)",
+            covers="Test joints of blow.joint: a hard joint reaches the target torque 30 deg "
+            "after snug, a soft joint 720 deg (27 and 648 deg from 10 % to 100 % of the "
+            "target), read as linear torque rates k_j = T_target / angle.",
+        ),
+        Source(
             id="ECSS-E-HB-32-23A",
             kind="standard",
             title="Space engineering - Threaded fasteners handbook",
@@ -282,6 +293,74 @@ SOURCES: dict[str, Source] = {
             covers="Induction-motor torque-speed curve for the motor_curve rung of "
             "nutrunner.drive (engine.motor_spinup), beyond [000].",
         ),
+        # --- issue 17 (clutch helper): springs for the clutch as built ---
+        Source(
+            id="EN13906-1",
+            kind="standard",
+            title="Cylindrical helical springs made from round wire and bar - Calculation and "
+            "design - Part 1: Compression springs",
+            authors="CEN/TC 407",
+            year="2013",
+            published="EN 13906-1:2013",
+            covers="Helical compression springs: rate, shear stress and Bergstrasser's stress "
+            "correction factor k = (w + 0.5)/(w - 0.75), permissible shear stress 0.5 R_m for "
+            "cold-coiled springs, solid length, minimum sum of gaps S_a, buckling by the "
+            "seating coefficient nu, natural frequency (engine.springs).",
+            reconstruction="Paywalled; the relations are the standard's as reproduced in spring "
+            "makers' handbooks, and checked in tests against textbook worked examples.",
+        ),
+        Source(
+            id="EN16983",
+            kind="standard",
+            title="Disc springs - Quality specifications - Dimensions (calculation of the "
+            "former DIN 2092)",
+            authors="CEN",
+            year="2017",
+            published="DIN EN 16983:2017 (replaces DIN 2092 and DIN 2093)",
+            covers="Disc springs after Almen and Laszlo: factors K1, K2, K3 (K4 for contact "
+            "flats), force F(s), force at flat, stresses at OM, I, II, III, IV, stacks in "
+            "series and parallel with the friction factors w_M, w_R (engine.springs).",
+            reconstruction="Paywalled; the Almen-Laszlo relations are as printed in DIN 2092 "
+            "and disc-spring makers' handbooks; the K-factors are checked against Carvill's "
+            "table.",
+        ),
+        Source(
+            id="EN10270",
+            kind="standard",
+            title="Steel wire for mechanical springs - Part 1: Patented cold drawn unalloyed "
+            "spring steel wire; Part 3: Stainless spring steel wire",
+            authors="ECISS/TC 106",
+            year="2011 (Part 1, +A1:2017); 2011 (Part 3)",
+            published="EN 10270-1, EN 10270-3",
+            covers="Minimum tensile strength R_m by wire diameter of grades SH and DH "
+            "(EN 10270-1) and X10CrNi18-8, 1.4310 (EN 10270-3); preferred wire diameters "
+            "(engine.springs).",
+            reconstruction="Paywalled. The SH/DH rows for 0.30, 0.32, 0.34 mm were checked "
+            "against a public transcription of the table; the other rows and the 1.4310 table "
+            "are transcribed and not re-checked (see engine/springs.py).",
+        ),
+        Source(
+            id="Bhandari",
+            kind="textbook",
+            title="Design of Machine Elements",
+            authors="V. B. Bhandari",
+            year="3rd ed., 2010",
+            published="Tata McGraw-Hill, New Delhi; worked examples as computed in the FOSSEE "
+            "Scilab Textbook Companion no. 764",
+            covers="Chapter 'Springs': Example 10.1 (a helical spring for 1250 N and 30 mm: "
+            "wire 6.625 mm, free length 109.34 mm) and Example 10.3 (Wahl factors for C = 5-8), "
+            "pinned in tests/validation/test_springs_textbooks.py.",
+        ),
+        Source(
+            id="Carvill",
+            kind="textbook",
+            title="Mechanical Engineer's Data Handbook",
+            authors="J. Carvill",
+            year="1993",
+            published="Butterworth-Heinemann, Oxford",
+            covers="Belleville washer spring: table of the factors k1, k2, k3 against Do/Di "
+            "(1.4-5.0), pinned in tests/validation/test_springs_textbooks.py.",
+        ),
         Source(
             id="Saltelli2010",
             kind="paper",
@@ -309,8 +388,14 @@ _PATTERNS: tuple[tuple[re.Pattern[str], str | None], ...] = (
     (re.compile(r"\bISO 724\b"), "ISO724"),
     (re.compile(r"\bISO 898-1\b"), "ISO898-1"),
     (re.compile(r"\bISO 4017\b"), "ISO4017"),
+    (re.compile(r"\bISO 5393\b"), "ISO5393"),
     (re.compile(r"\bWahl\b"), "Wahl"),
     (re.compile(r"\bKloss\b"), "Kloss"),
+    (re.compile(r"\bEN 13906-1\b"), "EN13906-1"),
+    (re.compile(r"\bEN 16983\b"), "EN16983"),
+    (re.compile(r"\bEN 10270-[13]\b"), "EN10270"),
+    (re.compile(r"\bBhandari\b"), "Bhandari"),
+    (re.compile(r"\bCarvill\b"), "Carvill"),
     (re.compile(r"\bECSS-E-HB-32-23A\b"), "ECSS-E-HB-32-23A"),
     (re.compile(r"\bmisams/BAT\b"), "BAT"),
 )

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import csv
 import io
+import itertools
 import json
 import math
 import os
@@ -582,3 +583,34 @@ def test_result_units_and_a_shared_sweep(page, base_url):
     assert again["response"]["results"] == sweep["response"]["results"]
     assert _canvas_ink(other, "#sweep-plot")[0] > 500
     other.close()
+
+
+def test_disc_spring_clutch_plots_its_falling_torque_against_lift(page, base_url):
+    """Issue 17: the disc-spring limiter (clutch.ball, example 4) plots torque, spring force
+    and stress against lift, the span over the rim shaded; the torque falls from the start."""
+    from engine.models.clutch import BALL_CLUTCH
+
+    index = next(i for i, ex in enumerate(BALL_CLUTCH.examples) if ex.get("spring_type") == "disc")
+    _open(page, base_url, f"m=clutch.ball&ex={index}")
+    page.wait_for_selector("body[data-result]")
+    assert page.evaluate("document.body.dataset.result") == "ok"
+    series = page.evaluate("window.calcState.lastResponse.series")
+    torque = series["torque_curve"]
+    assert len(torque) == len(series["lift"]) == 81
+    assert all(b < a for a, b in itertools.pairwise(torque[:41]))  # falls along the flank
+    ink = _canvas_ink(page, "#series-plots")
+    assert ink and all(n > 500 for n in ink), ink
+    amber = page.eval_on_selector_all(
+        "#series-plots .chart canvas",
+        """cs => cs.map(c => {
+            const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+            let n = 0;
+            for (let i = 0; i < d.length; i += 4)
+                if (d[i] === 255 && Math.abs(d[i+1] - 193) < 3 && d[i+2] < 12
+                    && Math.abs(d[i+3] - 64) < 3) n++;
+            return n;
+        })""",
+    )
+    assert all(n > 1000 for n in amber), amber  # "over the rim" shaded on every chart
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    page.screenshot(path=str(SHOTS / "clutch--disc-spring-falling-curve.png"), full_page=True)

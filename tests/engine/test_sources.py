@@ -27,6 +27,7 @@ CITING = [
 ]
 #: Physics modules: pure functions, never the spec machinery.
 PHYSICS = [
+    "blow",
     "clutch",
     "joint",
     "motor_spinup",
@@ -35,6 +36,7 @@ PHYSICS = [
     "preload_methods",
     "rare_impact",
     "rare_impact_cycle",
+    "springs",
     "threads",
 ]
 
