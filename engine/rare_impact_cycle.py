@@ -1456,8 +1456,13 @@ def quasi_static_error(x: Mapping[str, Any]) -> tuple[float, float, float]:
     w_0 = liftoff_speed_of(x)
     w_m = release_speed_of(x)
     inertia_share = 0.0
-    if w_nl is not None and not g.paper:
-        inertia_share = (inertia - _inertia_at(x, g, x0)) / inertia
+    if w_nl is not None and not g.paper and w_m < w_nl:
+        # the closed form runs the whole spin-up on the inertia at release; a relative
+        # inertia error δ moves t = -τ ln(1 - ω/ω_nl) by δ·(ω/ω_nl)/((1 - ω/ω_nl)·|ln(1 - ω/ω_nl)|)
+        # near the no-load speed (1 for a constant torque); SAFETY for the Coriolis torque
+        u = w_m / w_nl
+        amplify = max(u / ((1.0 - u) * -math.log1p(-u)), 1.0)
+        inertia_share = SAFETY * amplify * (inertia - _inertia_at(x, g, x0)) / inertia
 
     def accel(w: float) -> float:
         return torque / inertia if w_nl is None else torque / inertia * (1.0 - w / w_nl)
@@ -1470,7 +1475,7 @@ def quasi_static_error(x: Mapping[str, Any]) -> tuple[float, float, float]:
         # plus the share of the flywheel's inertia the rollers take on the way out: the
         # closed form assumes the snap conserves angular momentum, the motor may refill it
         share = 0.0 if g.paper else (inertia - _inertia_at(x, g, x0)) / inertia
-        dw = SAFETY * wd_0 * t_s / w_0 + share
+        dw = SAFETY * (wd_0 * t_s / w_0 + share)
         t_0 = _time_to_speed(x, inertia, w_0)
         v_snap = h1 * math.sqrt(-_stage1_stiffness(x, g, w_0) / m_e)
         # t = L/M: the time is off by as much as the speed (constant torque)
