@@ -74,45 +74,6 @@ METRIC_FINE_PITCHES_MM: dict[float, tuple[float, ...]] = {
     64.0: (4.0,),
 }
 
-#: Stress areas A_s [mm²] as printed in ISO 898-1:2013 (Tables 4–7), for validation.
-ISO898_STRESS_AREA_MM2: dict[tuple[float, float], float] = {
-    (3.0, 0.5): 5.03,
-    (3.5, 0.6): 6.78,
-    (4.0, 0.7): 8.78,
-    (5.0, 0.8): 14.2,
-    (6.0, 1.0): 20.1,
-    (8.0, 1.25): 36.6,
-    (10.0, 1.5): 58.0,
-    (12.0, 1.75): 84.3,
-    (14.0, 2.0): 115.0,
-    (16.0, 2.0): 157.0,
-    (18.0, 2.5): 192.0,
-    (20.0, 2.5): 245.0,
-    (22.0, 2.5): 303.0,
-    (24.0, 3.0): 353.0,
-    (27.0, 3.0): 459.0,
-    (30.0, 3.5): 561.0,
-    (33.0, 3.5): 694.0,
-    (36.0, 4.0): 817.0,
-    (39.0, 4.0): 976.0,
-    (8.0, 1.0): 39.2,
-    (10.0, 1.25): 61.2,
-    (10.0, 1.0): 64.5,
-    (12.0, 1.5): 88.1,
-    (12.0, 1.25): 92.1,
-    (14.0, 1.5): 125.0,
-    (16.0, 1.5): 167.0,
-    (18.0, 1.5): 216.0,
-    (20.0, 1.5): 272.0,
-    (22.0, 1.5): 333.0,
-    (24.0, 2.0): 384.0,
-    (27.0, 2.0): 496.0,
-    (30.0, 2.0): 621.0,
-    (33.0, 2.0): 761.0,
-    (36.0, 3.0): 865.0,
-    (39.0, 3.0): 1030.0,
-}
-
 # --------------------------------------------------------------------------- inch threads
 
 #: Unified inch sizes 1/4…1-1/2: name -> (major diameter [in], UNC tpi, UNF tpi).
@@ -131,38 +92,6 @@ UNIFIED_SIZES: dict[str, tuple[float, int, int]] = {
     "1-1/4": (1.25, 7, 12),
     "1-3/8": (1.375, 6, 12),
     "1-1/2": (1.5, 6, 12),
-}
-
-#: Tensile stress areas A_t [in²] as printed in ASME B1.1 (Table 2A / FED-STD-H28), validation.
-UNIFIED_STRESS_AREA_IN2: dict[tuple[str, int], float] = {
-    ("1/4", 20): 0.0318,
-    ("1/4", 28): 0.0364,
-    ("5/16", 18): 0.0524,
-    ("5/16", 24): 0.0580,
-    ("3/8", 16): 0.0775,
-    ("3/8", 24): 0.0878,
-    ("7/16", 14): 0.1063,
-    ("7/16", 20): 0.1187,
-    ("1/2", 13): 0.1419,
-    ("1/2", 20): 0.1599,
-    ("9/16", 12): 0.182,
-    ("9/16", 18): 0.203,
-    ("5/8", 11): 0.226,
-    ("5/8", 18): 0.256,
-    ("3/4", 10): 0.334,
-    ("3/4", 16): 0.373,
-    ("7/8", 9): 0.462,
-    ("7/8", 14): 0.509,
-    ("1", 8): 0.606,
-    ("1", 12): 0.663,
-    ("1-1/8", 7): 0.763,
-    ("1-1/8", 12): 0.856,
-    ("1-1/4", 7): 0.969,
-    ("1-1/4", 12): 1.073,
-    ("1-3/8", 6): 1.155,
-    ("1-3/8", 12): 1.315,
-    ("1-1/2", 6): 1.405,
-    ("1-1/2", 12): 1.581,
 }
 
 #: ASME B18.2.1 heavy-hex-free "hex cap screw": width across flats F [in] per size
@@ -1229,8 +1158,8 @@ _DIN_TO_ISO = {
     "DIN 7991": "ISO 10642",
 }
 _GRADE_TAIL = re.compile(
-    r"(?:^|\s)((?:SAE\s*(?:J429\s*)?(?:GRADE\s*)?|GRADE\s*|GR\.?\s*)[258]|(?:ASTM\s*)?A193[\s-]*B7|B7"
-    r"|A[24]-[578]0|\d{1,2}\.\d)$"
+    r"(?:^|\s)((?:SAE\s*(?:J429\s*)?(?:GRADE\s*)?|GRADE\s*|GR\.?\s*)(?:2|5|8)|(?:ASTM\s*)?A193[\s-]*B7|B7"
+    r"|A[24]-(?:5|7|8)0|\d{1,2}\.\d)$"
 )
 
 
@@ -1477,10 +1406,46 @@ def nut_dilation_factor(width_across_flats: float | None, diameter: float) -> fl
     return -(r**2) + 3.8 * r - 2.61
 
 
-#: Alexander's thread-bending factor where a thread strips (VDI 2230-1 R10: C2 = C3 = 0.897
-#: at a strength ratio R_S = 1). Kept constant here: VDI lets C3 rise to about 1.05 for a
-#: much softer internal thread (R_S → 0.4); the constant is conservative by up to ~15 %.
+#: Alexander's thread-bending factor where a thread strips at equal strength (R_S = 1).
 THREAD_BENDING_FACTOR = 0.897
+
+
+def thread_bending_factors(strength_ratio: float) -> tuple[float, float]:
+    r"""Alexander's thread-bending factors (C2 of the bolt thread, C3 of the internal thread).
+
+    .. math::
+        C_3 = 0.728 + 1.769 R_S - 2.896 R_S^2 + 1.296 R_S^3 \quad (0.4 < R_S < 1)
+
+    .. math::
+        C_2 = 5.594 - 13.682 R_S + 14.107 R_S^2 - 6.057 R_S^3 + 0.9353 R_S^4 \quad (1 < R_S \le 2.2)
+
+    Parameters
+    ----------
+    strength_ratio : float
+        R_S = τ_BM A_SN / (τ_BS A_SS): internal over external thread strength, [-]
+
+    Returns
+    -------
+    tuple of float
+        (C2, C3), [-]; 0.897 where the relation does not apply; R_S is held
+        inside 0.4…2.2 (VDI 2230-1 R10 after Alexander)
+
+    Examples
+    --------
+    >>> [round(c, 3) for c in thread_bending_factors(1.0)]
+    [0.897, 0.897]
+    >>> [round(c, 3) for c in thread_bending_factors(0.2)]
+    [0.897, 1.055]
+    """
+    r = strength_ratio
+    c2 = c3 = THREAD_BENDING_FACTOR
+    if r < 1.0:
+        x = max(r, 0.4)
+        c3 = 0.728 + 1.769 * x - 2.896 * x**2 + 1.296 * x**3
+    elif r > 1.0:
+        x = min(r, 2.2)
+        c2 = 5.594 - 13.682 * x + 14.107 * x**2 - 6.057 * x**3 + 0.9353 * x**4
+    return c2, c3
 
 
 @dataclass(frozen=True)
@@ -1493,6 +1458,10 @@ class Stripping:
     min_engagement_length: float
     min_engagement_internal: float
     min_engagement_external: float
+    strength_ratio: float
+    c1: float
+    c2: float
+    c3: float
 
     @property
     def strip_force(self) -> float:
@@ -1516,7 +1485,7 @@ def thread_stripping(
     *,
     width_across_flats: float | None = None,
     c1: float | None = None,
-    c3: float = THREAD_BENDING_FACTOR,
+    bending: bool = True,
 ) -> Stripping:
     r"""Bolt breaking force, stripping forces at ``length`` and the minimum engagement.
 
@@ -1546,8 +1515,8 @@ def thread_stripping(
         s of a nut (dilation factor C1); None for a tapped hole, [m]
     c1 : float, optional
         Override of C1, [-]
-    c3 : float
-        Thread-bending factor applied to both threads (C2 = C3), [-]
+    bending : bool
+        Apply Alexander's thread-bending factors C2/C3 (False: C2 = C3 = 1), [-]
 
     Returns
     -------
@@ -1556,14 +1525,16 @@ def thread_stripping(
     Notes
     -----
     VDI 2230-1 R10 after Alexander (1977): the bolt must break before either
-    thread strips. The lengths are full-thread engagement; a tapped hole or nut
-    needs about 0.8 P more for the entry chamfers (VDI 2230-1 R10).
-    With C1 = C3 = 1 this is the plain shear-area rule of FED-STD-H28.
+    thread strips. The lengths are full-thread engagement, without the entry
+    chamfers and run-out (the open BAT implementation of R10 adds 2 P for
+    them). With C1 = C2 = C3 = 1 this is the plain shear-area rule of
+    FED-STD-H28. R_S below 0.4 (a much softer internal thread) is held at 0.4,
+    where C3 = 1.055.
 
     Examples
     --------
     >>> s = thread_stripping(0.010, 0.0015, 0.009026, 0.008376, 58.0e-6, 830e6,
-    ...                      498e6, 186e6, 0.010, c1=1.0, c3=1.0)
+    ...                      498e6, 186e6, 0.010, c1=1.0, bending=False)
     >>> round(s.min_engagement_length * 1e3, 2)
     9.42
     """
@@ -1571,8 +1542,10 @@ def thread_stripping(
     f_break = bolt_tensile_strength * stress_area
     a_n = internal_thread_shear_area(diameter, pitch, pitch_diameter, 1.0)
     a_s = external_thread_shear_area(pitch, pitch_diameter, nut_minor_diameter, 1.0)
+    ratio = internal_shear_strength * a_n / (bolt_shear_strength * a_s)
+    c2, c3 = thread_bending_factors(ratio) if bending else (1.0, 1.0)
     per_m_n = c1 * c3 * internal_shear_strength * a_n
-    per_m_s = c1 * c3 * bolt_shear_strength * a_s
+    per_m_s = c1 * c2 * bolt_shear_strength * a_s
     l_n = f_break / per_m_n
     l_s = f_break / per_m_s
     return Stripping(
@@ -1582,6 +1555,10 @@ def thread_stripping(
         min_engagement_length=max(l_n, l_s),
         min_engagement_internal=l_n,
         min_engagement_external=l_s,
+        strength_ratio=ratio,
+        c1=c1,
+        c2=c2,
+        c3=c3,
     )
 
 
