@@ -118,7 +118,7 @@ def test_heads_differ_where_the_standards_differ():
     assert socket.drive == "hex key" and socket.drive_size == pytest.approx(6e-3)
     assert csk.drive_size == pytest.approx(5e-3) and csk.cone_angle == pytest.approx(math.pi / 2)
     assert hex_.drive == "wrench" and hex_.drive_size == pytest.approx(13e-3)
-    assert f.head("ISO 4017", f.unified_thread("1/2")).bearing_diameter == pytest.approx(
+    assert f.head(f.UNIFIED_HEX, f.unified_thread("1/2")).bearing_diameter == pytest.approx(
         0.95 * 0.75 * INCH
     )
     with pytest.raises(InputOutOfRange, match="EN 1665 has no M3") as err:
