@@ -253,7 +253,8 @@ SOURCES: dict[str, Source] = {
         Source(
             id="ISO262",
             kind="standard",
-            title="ISO general purpose metric screw threads - Selected sizes for screws, bolts and nuts",
+            title="ISO general purpose metric screw threads - Selected sizes for screws, bolts and "
+            "nuts",
             authors="ISO",
             year="1998",
             published="ISO 262:1998",
@@ -262,20 +263,24 @@ SOURCES: dict[str, Source] = {
         Source(
             id="ISO3506-1",
             kind="standard",
-            title="Fasteners - Mechanical properties of corrosion-resistant stainless steel fasteners - Part 1: Bolts, screws and studs",
+            title="Fasteners - Mechanical properties of corrosion-resistant stainless steel "
+            "fasteners - Part 1: Bolts, screws and studs",
             authors="ISO",
             year="2009",
             published="ISO 3506-1:2009",
-            covers="Austenitic A2/A4 property classes 50, 70, 80: R_p0.2 210/450/600 MPa, R_m 500/700/800 MPa; 70 and 80 up to M24, 50 up to M39 (engine.fasteners).",
+            covers="Austenitic A2/A4 property classes 50, 70, 80: R_p0.2 210/450/600 MPa, R_m "
+            "500/700/800 MPa; 70 and 80 up to M24, 50 up to M39 (engine.fasteners).",
         ),
         Source(
             id="ISO898-2",
             kind="standard",
-            title="Mechanical properties of fasteners made of carbon steel and alloy steel - Part 2: Nuts with specified property classes",
+            title="Mechanical properties of fasteners made of carbon steel and alloy"
+            " steel - Part 2: Nuts with specified property classes",
             authors="ISO",
             year="2012",
             published="ISO 898-2:2012",
-            covers="Nut property classes (04, 05, 6, 8, 9, 10, 12) and styles paired with bolt classes (engine.fasteners).",
+            covers="Nut property classes (04, 05, 6, 8, 9, 10, 12) and styles paired with bolt "
+            "classes (engine.fasteners).",
         ),
         Source(
             id="SAEJ429",
@@ -284,12 +289,14 @@ SOURCES: dict[str, Source] = {
             authors="SAE International",
             year="2014",
             published="SAE J429",
-            covers="Grades 2, 5, 8: proof, yield and tensile strength by size range, 1/4-1-1/2 in (engine.fasteners).",
+            covers="Grades 2, 5, 8: proof, yield and tensile strength by size range, 1/4-1-1/2 in "
+            "(engine.fasteners).",
         ),
         Source(
             id="ASTMA193",
             kind="standard",
-            title="Standard Specification for Alloy-Steel and Stainless Steel Bolting for High Temperature or High Pressure Service and Other Special Purpose Applications",
+            title="Standard Specification for Alloy-Steel and Stainless Steel Bolting for High "
+            "Temperature or High Pressure Service and Other Special Purpose Applications",
             authors="ASTM International",
             year="2020",
             published="ASTM A193/A193M",
@@ -302,16 +309,19 @@ SOURCES: dict[str, Source] = {
             authors="ASME",
             year="2019",
             published="ASME B1.1",
-            covers="UNC/UNF series (threads per inch), basic pitch diameter E = D - 0.649519 p, tensile stress area A_t = 0.7854 (D - 0.9743 p)^2 (engine.fasteners).",
+            covers="UNC/UNF series (threads per inch), basic pitch diameter E = D - 0.649519 p, "
+            "tensile stress area A_t = 0.7854 (D - 0.9743 p)^2 (engine.fasteners).",
         ),
         Source(
             id="ASMEB18.2.1",
             kind="standard",
-            title="Square, Hex, Heavy Hex, and Askew Head Bolts and Hex, Heavy Hex, Hex Flange, Lobed Head, and Lag Screws (Inch Series)",
+            title="Square, Hex, Heavy Hex, and Askew Head Bolts and Hex, Heavy Hex, Hex Flange, "
+            "Lobed Head, and Lag Screws (Inch Series)",
             authors="ASME",
             year="2012",
             published="ASME B18.2.1",
-            covers="Hex cap screw width across flats F and head height H, 1/4-1-1/2 in; bearing face taken as 0.95 F (engine.fasteners).",
+            covers="Hex cap screw width across flats F and head height H, 1/4-1-1/2 in;"
+            " bearing face taken as 0.95 F (engine.fasteners).",
         ),
         Source(
             id="ASMEB18.2.8",
@@ -338,7 +348,8 @@ SOURCES: dict[str, Source] = {
             authors="ISO",
             year="2004",
             published="ISO 4762:2004",
-            covers="Head diameter, head height k = d, hexagon socket size s, bearing diameter d_w,min (engine.fasteners).",
+            covers="Head diameter, head height k = d, hexagon socket size s, bearing"
+            " diameter d_w,min (engine.fasteners).",
         ),
         Source(
             id="EN1665",
@@ -347,7 +358,8 @@ SOURCES: dict[str, Source] = {
             authors="CEN",
             year="1997",
             published="EN 1665:1997",
-            covers="Flange bearing diameter d_w,min, width across flats s, head height k, M5-M20 (engine.fasteners).",
+            covers="Flange bearing diameter d_w,min, width across flats s, head height k, M5-M20 "
+            "(engine.fasteners).",
         ),
         Source(
             id="ISO10642",
@@ -356,7 +368,8 @@ SOURCES: dict[str, Source] = {
             authors="ISO",
             year="2004",
             published="ISO 10642:2004",
-            covers="90 deg countersunk head: actual head diameter d_k,min, head height, socket size (engine.fasteners).",
+            covers="90 deg countersunk head: actual head diameter d_k,min, head height,"
+            " socket size (engine.fasteners).",
         ),
         Source(
             id="ISO2936",
@@ -365,7 +378,8 @@ SOURCES: dict[str, Source] = {
             authors="ISO",
             year="2014",
             published="ISO 2936:2014",
-            covers="Minimum test torque of hexagon keys by key size: the drive-torque limit of socket screws (engine.fasteners).",
+            covers="Minimum test torque of hexagon keys by key size: the drive-torque"
+            " limit of socket screws (engine.fasteners).",
         ),
         Source(
             id="ISO4032",
@@ -428,7 +442,8 @@ SOURCES: dict[str, Source] = {
             authors="CEN",
             year="2011",
             published="EN 1561:2011",
-            covers="Informative shear strength of grey cast iron, about 1.1 R_m (engine.fasteners materials).",
+            covers="Informative shear strength of grey cast iron, about 1.1 R_m (engine.fasteners "
+            "materials).",
         ),
         Source(
             id="EN1563",
@@ -437,7 +452,8 @@ SOURCES: dict[str, Source] = {
             authors="CEN",
             year="2011",
             published="EN 1563:2011",
-            covers="Informative shear strength of nodular iron, about 0.9 R_m (engine.fasteners materials).",
+            covers="Informative shear strength of nodular iron, about 0.9 R_m (engine.fasteners "
+            "materials).",
         ),
         Source(
             id="Alexander",
@@ -446,16 +462,20 @@ SOURCES: dict[str, Source] = {
             authors="E. M. Alexander",
             year="1977",
             published="SAE Technical Paper 770420",
-            covers="Thread-stripping model: shear areas of internal and external threads, nut dilation factor C1, thread-bending factors C2/C3; the basis of VDI 2230-1 R10 (engine.fasteners.thread_stripping).",
+            covers="Thread-stripping model: shear areas of internal and external threads, nut "
+            "dilation factor C1, thread-bending factors C2/C3; the basis of VDI 2230-1 R10 "
+            "(engine.fasteners.thread_stripping).",
         ),
         Source(
             id="FED-STD-H28",
             kind="standard",
-            title="Screw-Thread Standards for Federal Services, Section 2: Unified inch screw threads",
+            title="Screw-Thread Standards for Federal Services, Section 2: Unified inch screw "
+            "threads",
             authors="US General Services Administration",
             year="1978",
             published="FED-STD-H28/2B",
-            covers="Shear areas of internal and external threads per length of engagement (Appendix B), with tau = 0.6 R_m practice (engine.fasteners).",
+            covers="Shear areas of internal and external threads per length of engagement"
+            " (Appendix B), with tau = 0.6 R_m practice (engine.fasteners).",
         ),
     )
 }

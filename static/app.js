@@ -244,6 +244,10 @@ function fieldRow(p) {
       ...p.choices.map((c) => el("option", { value: c }, c)));
   } else if (p.kind === "bool") {
     input = el("input", { id, name: p.name, type: "checkbox" });
+  } else if (p.kind === "text") {
+    // free text (a fastener designation); the choices are suggestions (issue 15)
+    input = el("input", { id, name: p.name, type: "text", size: 22, maxlength: 64, list: "list-" + p.name });
+    unitSel = el("datalist", { id: "list-" + p.name }, ...(p.choices || []).map((c) => el("option", { value: c })));
   } else {
     input = el("input", { id, name: p.name, type: "text", inputmode: "decimal", size: 12 });
     const choices = unitChoices(p.unit, p.display_unit);
@@ -285,6 +289,7 @@ function inUnit(si, unit) {
 /** "default 100 rpm · allowed > 0 and ≤ 1e4 mm · recommended …", in the unit chosen. */
 function hintText(p) {
   const parts = [];
+  if (p.kind === "text") return (p.required ? "" : "optional · ") + (p.choices && p.choices.length ? `e.g. ${p.choices.slice(0, 3).join(", ")}` : "text");
   if (p.kind === "choice" || p.kind === "bool") {
     if (p.default !== null && p.default !== undefined) parts.push(`default ${p.default}`);
     if (p.kind === "choice") parts.push(`one of ${p.choices.join(", ")}`);
@@ -335,7 +340,7 @@ function fillForm(m, key) {
     const input = document.getElementById("in-" + p.name);
     const v = p.name in values ? values[p.name] : p.default;
     if (p.kind === "bool") input.checked = Boolean(v);
-    else if (p.kind === "choice") input.value = v ?? "";
+    else if (p.kind === "choice" || p.kind === "text") input.value = v ?? "";
     else if (typeof v === "string") {
       input.value = v; // a unit string ("45 mm"): sent as written
       delete input.dataset.si;
@@ -365,7 +370,7 @@ function applyParams(m, params) {
     const raw = params.get(p.name);
     const input = document.getElementById("in-" + p.name);
     if (p.kind === "bool") { input.checked = raw === "true"; continue; }
-    if (p.kind === "choice") { input.value = raw; continue; }
+    if (p.kind === "choice" || p.kind === "text") { input.value = raw; continue; }
     const match = raw.match(/^\s*(\S+)\s*(.*)$/);
     const sel = document.getElementById("unit-" + p.name);
     if (match && sel && sel.tagName === "SELECT" && match[2]) {
@@ -453,7 +458,7 @@ function requestBody(m, { skip = null } = {}) {
     if (p.kind === "bool") { body[p.name] = input.checked; continue; }
     const raw = input.value.trim();
     if (raw === "") continue;
-    if (p.kind === "choice") { body[p.name] = raw; continue; }
+    if (p.kind === "choice" || p.kind === "text") { body[p.name] = raw; continue; }
     const u = currentUnit(p);
     if (!touched(input) && input.dataset.si !== undefined) body[p.name] = Number(input.dataset.si);
     else if (Number.isFinite(Number(raw))) body[p.name] = u.api ? `${raw} ${u.api}` : Number(raw);
@@ -534,7 +539,7 @@ function updateHash(m, body) {
     const input = document.getElementById("in-" + p.name);
     if (!touched(input)) continue;
     if (p.kind === "bool") params.set(p.name, String(input.checked));
-    else if (p.kind === "choice" || !Number.isFinite(Number(input.value.trim())) || input.value.trim() === "") {
+    else if (p.kind === "choice" || p.kind === "text" || !Number.isFinite(Number(input.value.trim())) || input.value.trim() === "") {
       params.set(p.name, input.value.trim());
     } else {
       const u = currentUnit(p);
