@@ -651,14 +651,14 @@ SOCKET_HEAD_MM: dict[float, tuple[float, float, float]] = {
 
 #: EN 1665 hexagon bolts with flange: s, k,max, d_w,min [mm] (M5…M20).
 FLANGE_HEAD_MM: dict[float, tuple[float, float, float]] = {
-    5.0: (8.0, 5.4, 9.8),
+    5.0: (8.0, 5.8, 9.8),
     6.0: (10.0, 6.6, 12.2),
     8.0: (13.0, 8.1, 15.8),
-    10.0: (15.0, 9.2, 19.6),
-    12.0: (18.0, 11.5, 23.8),
-    14.0: (21.0, 12.8, 27.6),
-    16.0: (24.0, 14.4, 31.9),
-    20.0: (30.0, 17.1, 39.9),
+    10.0: (16.0, 10.4, 19.6),
+    12.0: (18.0, 11.8, 23.8),
+    14.0: (21.0, 13.7, 27.6),
+    16.0: (24.0, 15.4, 31.9),
+    20.0: (30.0, 18.9, 39.9),
 }
 
 #: ISO 10642 countersunk socket screws (90° head): hex key s, k,max, d_k,min (actual) [mm].
