@@ -1073,7 +1073,9 @@ MATERIALS: dict[str, Material] = {
         _m("E295", "steel", 710, 470, 0.6),
         _m("C45 (normalised)", "steel", 770, 620, 0.6),
         _m("42CrMo4 (QT)", "steel", 850, 900, 0.6),
-        _m("X5CrNi18-10", "steel", 630, 500, 0.6),
+        # 210: the aircraft-structures script's table (X5CrNiMo18-10, annealed); other
+        # secondary quotes of VDI 2230 give up to 630 for cold-worked grades: conservative
+        _m("X5CrNi18-10", "steel", 210, 500, 0.6, "p_G: lecture script Table 9.12 (conservative)"),
         _m("EN-GJL-250", "cast iron", 850, 250, 1.1),
         _m("EN-GJS-400", "cast iron", 600, 400, 0.9),
         _m("EN-GJS-500", "cast iron", 750, 500, 0.9),

@@ -177,3 +177,39 @@ def test_thread_stripping_machinecalcs_worked_example():
     assert s.weaker == "internal"
     # "10 mm just clears the bolt-tensile target"
     assert s.internal_strip_force > s.bolt_breaking_force
+
+
+def test_surface_pressure_worked_example_aircraft_structures_script():
+    """Lecture notes "13 Schraubenverbindungen IV", §5 (after the script "Bauelemente der
+    Luftfahrzeuge 1", V5.0.16, 2025, §9.12.2): the M10 example, d_W = 16 mm,
+    d_h = 10.5 mm, F_S,max = 27 376 N: "A_P = π/4 (16² − 10.5²) = 114.5 mm²,
+    p = 27 376/114.5 = 239 N/mm² < 370 (AlZnMgCu)".
+    """
+    assert f.bearing_area(16e-3, 10.5e-3) * 1e6 == pytest.approx(114.5, abs=0.05)
+    assert f.surface_pressure(27_376.0, 16e-3, 10.5e-3) / 1e6 == pytest.approx(239, abs=0.5)
+    # the same through the model, as the check in service (VDI 2230-1 R9)
+    from engine import run
+    from engine.models.preload import TIGHTENING
+
+    res = run(
+        TIGHTENING,
+        {
+            "thread_diameter": 0.010,
+            "property_class": "10.9",
+            "bearing_outer_diameter": 16e-3,
+            "hole_diameter": 10.5e-3,
+            "working_bolt_force": 27_376.0,
+            "limiting_surface_pressure": 370e6,
+        },
+    )
+    assert res.results["surface_pressure_head_working"] / 1e6 == pytest.approx(239, abs=0.5)
+    assert next(c for c in res.checks if c.name == "surface_pressure_working").ok
+
+
+# The same script's Table 9.12 of limiting surface pressures p_G [N/mm²]
+SCRIPT_PG = [("42CrMo4 (QT)", 850), ("TiAl6V4", 1000), ("EN AW-7075 T6", 370), ("X5CrNi18-10", 210)]
+
+
+@pytest.mark.parametrize(("name", "p_g"), SCRIPT_PG)
+def test_limiting_surface_pressures_against_a_printed_table(name, p_g):
+    assert f.MATERIALS[name].limiting_surface_pressure == pytest.approx(p_g * 1e6)
