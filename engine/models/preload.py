@@ -981,6 +981,11 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if scatter_wanted and has_range:
         g_range = _range(x, "thread_friction", mu_g)
         k_range = _range(x, "bearing_friction", mu_k)
+        if bolt.bearing_friction_factor != 1.0:  # a countersunk head: μ_K acts on the cone
+            k_range = (
+                k_range[0] * bolt.bearing_friction_factor,
+                k_range[1] * bolt.bearing_friction_factor,
+            )
         fixed = torque if x.get("scatter_torque") is None else float(x["scatter_torque"])
         hist = pl.friction_scatter_histogram(
             fixed,

@@ -27,6 +27,7 @@ CITING = [
 #: Physics modules: pure functions, never the spec machinery.
 PHYSICS = [
     "clutch",
+    "fasteners",
     "motor_spinup",
     "nutrunner",
     "preload",
