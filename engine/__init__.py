@@ -11,7 +11,18 @@ from . import sources
 from .errors import BudgetExceeded, EngineError, InfeasibleDesign, InputOutOfRange, SolverFailed
 from .models import MODELS, get_model
 from .runner import MAX_SWEEP_POINTS, RunResult, SweepResult, run, sweep, sweep_values
-from .spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
+from .spec import (
+    Check,
+    ModelSpec,
+    Output,
+    Param,
+    Plot,
+    Result,
+    RunContext,
+    Rung,
+    Window,
+    fixed_error,
+)
 
 __all__ = [
     "MAX_SWEEP_POINTS",
@@ -24,12 +35,14 @@ __all__ = [
     "ModelSpec",
     "Output",
     "Param",
+    "Plot",
     "Result",
     "RunContext",
     "RunResult",
     "Rung",
     "SolverFailed",
     "SweepResult",
+    "Window",
     "fixed_error",
     "get_model",
     "run",

@@ -420,6 +420,17 @@ def spin_up_profile(
     to zero; the curve's kinks are added as grid points). Returns
     ``(time [s], motor speed [rad/s])``, both starting at 0.
 
+    Parameters
+    ----------
+    equivalent_inertia : float
+        Inertia of the drive referred to the motor shaft, [kg*m^2]
+    curve : MotorCurve
+        The motor's torque–speed curve
+    speed : float
+        Motor speed to reach, [rad/s]
+    points : int
+        Points of the profile, [-]
+
     Examples
     --------
     >>> curve = MotorCurve("linear", lambda w: linear_motor_torque(w, 10.0, 200.0), 200.0)

@@ -1014,11 +1014,11 @@ def friction_scatter_histogram(
     formula : str
         Torque formula, see :func:`tightening_torque_per_preload`
     bins : int
-        Number of equal-width preload bins
+        Number of equal-width preload bins, [-]
     sample_size : int
-        Number of bolts the counts are scaled to (38 as in [004, fig. 5])
+        Number of bolts the counts are scaled to (38 as in [004, fig. 5]), [-]
     grid : int
-        Points per friction coefficient of the quadrature grid
+        Points per friction coefficient of the quadrature grid, [-]
 
     Returns
     -------

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -127,6 +127,28 @@ def choose_rung(
     ]
 
 
+def _fallback(
+    spec: ModelSpec, rung: str, inputs: Mapping[str, Any], exc: BudgetExceeded
+) -> tuple[str, float, float] | None:
+    """The rung to run instead of ``rung`` after ``exc`` (per :attr:`Rung.fallback`), or None.
+
+    Returns the fallback's name, the declining rung's estimate and the fallback's.
+
+    Only a rung that declined up front (``expected_steps`` in the error: it would need
+    more steps than allowed) falls back, and only to a rung whose estimated error for
+    these inputs is no larger than the declining rung's own: the answer still meets
+    what was asked of it. A deadline overrun part-way is not rescued.
+    """
+    declining = spec.rung(rung)
+    if declining.fallback is None or "expected_steps" not in exc.context:
+        return None
+    own = declining.estimate(inputs)
+    theirs = spec.rung(declining.fallback).estimate(inputs)
+    if own is None or theirs is None or not math.isfinite(theirs) or theirs > own:
+        return None
+    return declining.fallback, own, theirs
+
+
 def _finite(value: Value) -> bool:
     return not isinstance(value, float) or math.isfinite(value)
 
@@ -172,13 +194,26 @@ def run(
         deadline=None if budget_s is None else start + budget_s,
         max_steps=max_steps,
     )
-    result = spec.compute(values, ctx)
+    try:
+        result = spec.compute(values, ctx)
+    except BudgetExceeded as exc:
+        found = _fallback(spec, rung, values, exc)
+        if found is None:
+            raise
+        fallback, own, theirs = found
+        ctx = replace(ctx, rung=fallback)
+        notes.append(
+            f"{rung!r} would need about {exc.context['expected_steps']:.2g} steps (budget "
+            f"{max_steps:g}); ran its declared fallback {fallback!r} instead, whose estimated "
+            f"error {theirs:.2g} is within {rung!r}'s own {own:.2g}"
+        )
+        result = spec.compute(values, ctx)
     elapsed = time.perf_counter() - start
 
     units = {o.name: o.unit for o in spec.outputs}
     scalars: dict[str, Value] = {}
     series: dict[str, list[float]] = {}
-    notes = notes + result.notes
+    notes = notes + list(spec.assumptions) + result.notes
     for name, value in result.values.items():
         if name not in wanted:
             continue

@@ -166,9 +166,10 @@ SOURCES: dict[str, Source] = {
             "M_A = F_M (0.16 P + 0.58 d2 mu_G + D_Km/2 mu_K) (step R13, used with nu = 0.9 in "
             "Table A1), tightening factor alpha_A by tightening method (Table A8). Models "
             "preload.tightening and preload.control.",
-            reconstruction="The text is paywalled; relations and table values were taken from "
-            "cited secondary sources and cross-checked against printed worked values; the "
-            "docstrings name the step.",
+            reconstruction="The text is paywalled and was not available; the validation pins "
+            "the engine to Table A2 (fine threads, nu = 0.9) as reproduced in Bossard's "
+            "technical tables F.049/F.050 and the Mastik catalogue p. 685; the docstrings "
+            "name the step.",
         ),
         Source(
             id="ISO68-1",
@@ -244,8 +245,8 @@ SOURCES: dict[str, Source] = {
             id="Kloss",
             kind="textbook",
             title="Simplified Kloss formula for the torque-slip curve of an induction motor",
-            authors="M. Kloss; as in standard electric-drive textbooks",
-            year="1910s (textbook form)",
+            authors="after M. Kloss, as given in electric-drive textbooks",
+            year="textbook relation, no single edition cited",
             published="e.g. any electric machines textbook (T = 2 T_b / (s/s_b + s_b/s))",
             covers="Induction-motor torque-speed curve for the motor_curve rung of "
             "nutrunner.drive (engine.motor_spinup), beyond [000].",

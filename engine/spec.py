@@ -153,6 +153,36 @@ class Param:
 
 
 @dataclass(frozen=True)
+class Window:
+    """A span to shade on a chart: between the values of two scalar outputs."""
+
+    label: str
+    #: Scalar outputs in the unit of the chart's x axis (e.g. "engagement_start").
+    start: str
+    end: str
+
+    def describe(self) -> dict[str, Any]:
+        return {"label": self.label, "start": self.start, "end": self.end}
+
+
+@dataclass(frozen=True)
+class Plot:
+    """How the form draws a series output (it reads this instead of guessing from names).
+
+    A series is drawn against the series its :attr:`Output.x` names; curves with
+    the same x series and unit share a chart. ``bars`` draws it as a histogram
+    (its x series holds bin centres, or bin edges one longer). ``windows`` on an
+    x-axis series shades those spans on every chart drawn against it.
+    """
+
+    bars: bool = False
+    windows: tuple[Window, ...] = ()
+
+    def describe(self) -> dict[str, Any]:
+        return {"bars": self.bars, "windows": [w.describe() for w in self.windows]}
+
+
+@dataclass(frozen=True)
 class Output:
     """One named result of a model (scalar) or one time series (``series=True``)."""
 
@@ -165,6 +195,8 @@ class Output:
     display_unit: str | None = None
     #: For a series: the name of the series it is plotted against (e.g. "time").
     x: str | None = None
+    #: For a series: how the form draws it (histogram, shaded windows).
+    plot: Plot | None = None
 
     def describe(self) -> dict[str, Any]:
         return {
@@ -173,6 +205,7 @@ class Output:
             "kind": self.kind,
             "series": self.series,
             "x": self.x,
+            "plot": self.plot.describe() if self.plot else None,
             "unit": self.unit,
             "display_unit": self.display_unit or self.unit,
             "description": self.description,
@@ -192,6 +225,11 @@ class Rung:
     estimate: Callable[[Mapping[str, Any]], float | None]
     typical_error: str = ""
     typical_time: str = ""
+    #: A rung the runner runs instead when this one declines up front for lack of
+    #: budget (BudgetExceeded with ``expected_steps``: it would need more steps than
+    #: allowed), provided that rung's estimated error for these inputs is no larger
+    #: than this one's. The result names the rung that ran and says why.
+    fallback: str | None = None
 
     def describe(self) -> dict[str, Any]:
         return {
@@ -199,6 +237,7 @@ class Rung:
             "description": self.description,
             "typical_error": self.typical_error,
             "typical_time": self.typical_time,
+            "fallback": self.fallback,
         }
 
 
@@ -251,8 +290,8 @@ Compute = Callable[[Mapping[str, Any], RunContext], Result]
 class ModelSpec:
     """A model: its identity, inputs, outputs, rungs and compute function."""
 
+    #: ``<family>.<model>``; the model's URL path is derived from it (see :attr:`path`).
     name: str
-    path: str
     title: str
     family: str
     summary: str
@@ -271,8 +310,15 @@ class ModelSpec:
     #: cannot be computed). Used only when the chosen rung is in ``vector_rungs``.
     vectorized: Compute | None = None
     vector_rungs: tuple[str, ...] = ()
+    #: Sentences true of every answer of this model (idealisations the source makes,
+    #: reconstructions): the runner adds them to each result's notes, and the
+    #: catalogue lists them.
+    assumptions: tuple[str, ...] = ()
+    #: Derived from :attr:`name`: ``clutch.ball_setting`` is served at ``/clutch/ball_setting``.
+    path: str = field(init=False)
 
     def __post_init__(self) -> None:
+        object.__setattr__(self, "path", "/" + self.name.replace(".", "/"))
         names = [p.name for p in self.inputs]
         if len(set(names)) != len(names):
             raise ValueError(f"{self.name}: duplicate input names")
@@ -283,6 +329,23 @@ class ModelSpec:
             raise ValueError(f"{self.name}: at least one rung is required")
         if self.default_fidelity not in ("auto", *self.rung_names):
             raise ValueError(f"{self.name}: unknown default_fidelity {self.default_fidelity!r}")
+        for r in self.rungs:
+            if r.fallback is not None and r.fallback not in self.rung_names:
+                raise ValueError(
+                    f"{self.name}: rung {r.name!r} falls back to unknown {r.fallback!r}"
+                )
+        outputs = {o.name: o for o in self.outputs}
+        for o in self.outputs:
+            if o.x is not None and not (o.x in outputs and outputs[o.x].series):
+                raise ValueError(
+                    f"{self.name}: output {o.name!r} is plotted against {o.x!r}, no series"
+                )
+            for w in o.plot.windows if o.plot else ():
+                for end in (w.start, w.end):
+                    if end not in outputs or outputs[end].series:
+                        raise ValueError(
+                            f"{self.name}: window {w.label!r} names {end!r}, no scalar"
+                        )
 
     @property
     def rung_names(self) -> tuple[str, ...]:
@@ -357,6 +420,7 @@ class ModelSpec:
             "inputs": [p.describe() for p in self.inputs],
             "outputs": [o.describe() for o in self.outputs],
             "rungs": [r.describe() for r in self.rungs],
+            "assumptions": list(self.assumptions),
             "examples": [dict(e) for e in self.examples],
         }
 

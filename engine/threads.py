@@ -320,6 +320,11 @@ def coarse_pitch(diameter: float) -> float:
     Raises InputOutOfRange (field ``thread_pitch``) for a diameter that has
     no tabulated coarse pitch.
 
+    Parameters
+    ----------
+    diameter : float
+        Nominal thread diameter d, [m]
+
     Examples
     --------
     >>> coarse_pitch(0.012)
@@ -338,6 +343,11 @@ def coarse_pitch(diameter: float) -> float:
 
 def standard_pitches(diameter: float) -> tuple[float, ...]:
     """Coarse then common fine ISO 261 pitches [m] for a size (empty if none).
+
+    Parameters
+    ----------
+    diameter : float
+        Nominal thread diameter d, [m]
 
     Examples
     --------
@@ -360,6 +370,11 @@ def hex_bearing_diameter(diameter: float) -> float:
     Raises InputOutOfRange (field ``bearing_outer_diameter``) for a size
     without a tabulated head.
 
+    Parameters
+    ----------
+    diameter : float
+        Nominal thread diameter d, [m]
+
     Examples
     --------
     >>> hex_bearing_diameter(0.010)
@@ -380,6 +395,13 @@ def clearance_hole(diameter: float, series: str = "medium") -> float:
 
     Raises InputOutOfRange (field ``hole_diameter``) for a size without a
     tabulated hole, (field ``hole_series``) for an unknown series.
+
+    Parameters
+    ----------
+    diameter : float
+        Nominal thread diameter d, [m]
+    series : str
+        "fine", "medium" or "coarse"
 
     Examples
     --------
@@ -407,6 +429,13 @@ def property_class_strengths(name: str, diameter: float) -> tuple[float, float]:
     Applies the size step of ISO 898-1 (8.8: 640/800 MPa up to M16,
     660/830 MPa above). Raises InputOutOfRange (field ``property_class``) for
     an unknown class or a size the class is not defined for.
+
+    Parameters
+    ----------
+    name : str
+        Property class, e.g. "8.8"
+    diameter : float
+        Nominal thread diameter d, [m]
 
     Examples
     --------

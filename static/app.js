@@ -681,18 +681,17 @@ function chartWidth(container) {
 }
 
 /**
- * Shaded time windows for a chart whose x unit is ``xUnit``: pairs of results
- * "<name>_start"/"<name>_end" (or "_begin"/"_end") in that unit, e.g. the
- * striker's engagement window. Generic: any model can return such a pair.
+ * Shaded windows on a chart drawn against the x series ``xo``: the spans its
+ * ``plot.windows`` declare, each between two scalar results in the x unit
+ * (e.g. the striker's engagement window).
  */
-function windows(m, data, xUnit) {
+function windows(xo, data) {
   const out = [];
-  for (const [k, v] of Object.entries(data.results)) {
-    const mt = k.match(/^(.*)_(start|begin)$/);
-    if (!mt || typeof v !== "number") continue;
-    const end = data.results[mt[1] + "_end"];
-    if (typeof end !== "number" || norm(data.units[k]) !== norm(xUnit)) continue;
-    out.push({ label: mt[1].replaceAll("_", " "), from: v, to: end });
+  for (const w of (xo.plot && xo.plot.windows) || []) {
+    const from = data.results[w.start], to = data.results[w.end];
+    if (typeof from !== "number" || typeof to !== "number") continue;
+    if (norm(data.units[w.start]) !== norm(xo.unit)) continue;
+    out.push({ label: w.label, from, to });
   }
   return out;
 }
@@ -750,7 +749,8 @@ function makeChart(container, kind, { title, xLabel, yLabel, x, ys, bars = false
 /**
  * Every series output against its declared x series. Curves sharing an x series
  * and a unit share a chart (e.g. the travel of each part against time); a
- * series whose x holds bin edges (one longer) or bins draws as a histogram.
+ * series whose x holds bin edges (one longer) or that declares ``plot.bars``
+ * draws as a histogram.
  */
 function renderSeries(m, data) {
   destroyCharts("series");
@@ -776,11 +776,11 @@ function renderSeries(m, data) {
       xRange = [xs[0] / xu.factor, xs[xs.length - 1] / xu.factor];
       xs = ys.map((_, i) => (xs[i] + xs[i + 1]) / 2);
     } else if (xs.length !== ys.length) continue;
-    else if (/bin|edge|hist/i.test(o.x + o.name)) bars = true;
+    else if (o.plot && o.plot.bars) bars = true;
     const key = bars ? "bars:" + o.name : `${xo ? o.x : "index:" + ys.length}|${norm(o.unit)}`;
     if (!charts.has(key)) {
       const x = xs.map((v) => v / xu.factor);
-      const bands = xo && !bars ? windows(m, data, xo.unit).map((b) => ({ ...b, from: b.from / xu.factor, to: b.to / xu.factor })) : [];
+      const bands = xo && !bars ? windows(xo, data).map((b) => ({ ...b, from: b.from / xu.factor, to: b.to / xu.factor })) : [];
       charts.set(key, { xLabel, unit: yu.label, x, ys: [], bars, bands, xRange });
     }
     charts.get(key).ys.push({ label: o.label, data: y });

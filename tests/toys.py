@@ -27,10 +27,12 @@ from engine import (
     ModelSpec,
     Output,
     Param,
+    Plot,
     Result,
     RunContext,
     Rung,
     SolverFailed,
+    Window,
     fixed_error,
 )
 from service import create_app
@@ -83,7 +85,6 @@ def _disc_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 TOY = ModelSpec(
     name="toy.disc",
-    path="/toy/disc",
     title="Spinning disc",
     family="toy",
     summary="Kinetic energy of a uniform disc.",
@@ -283,7 +284,6 @@ def _spring_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 SPRING = ModelSpec(
     name="toy.spring",
-    path="/toy/spring",
     title="Mass on a spring lifted by a constant force (test toy)",
     family="toy",
     summary="Time and speed at which a mass pushed by a constant force against a spring "
@@ -382,7 +382,6 @@ def _ode(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 TOY_ODE = ModelSpec(
     name="toy.ode",
-    path="/toy/ode",
     title="Damped oscillator (simulation)",
     family="toy",
     summary="x'' + c x' + k x = 0 from x = 1, integrated numerically.",
@@ -440,7 +439,6 @@ def _crash(x: Mapping[str, Any], ctx: RunContext) -> Result:
 def _timed(name: str, compute: Any) -> ModelSpec:
     return ModelSpec(
         name=f"toy.{name}",
-        path=f"/toy/{name}",
         title=name,
         family="toy",
         summary="test-only",
@@ -531,7 +529,6 @@ def _striker(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 STRIKER = ModelSpec(
     name="toy.striker",
-    path="/toy/striker",
     title="Toy striker with plots",
     family="toy-plots",
     summary="A spring-driven striker, a spinning flywheel and a scatter histogram (test only).",
@@ -611,13 +608,27 @@ STRIKER = ModelSpec(
         Output("engagement_end", "s", "window closes", display_unit="ms"),
         Output("stiffness_ratio", "1", "c / (1000 m)"),
         Output("reaches", "1", "the striker reaches h in the window", kind="bool"),
-        Output("time", "s", "time", series=True, display_unit="ms"),
+        Output(
+            "time",
+            "s",
+            "time",
+            series=True,
+            display_unit="ms",
+            plot=Plot(windows=(Window("engagement", "engagement_start", "engagement_end"),)),
+        ),
         Output("travel", "m", "striker travel", series=True, x="time", display_unit="mm"),
         Output(
             "flywheel_speed", "rad/s", "flywheel speed", series=True, x="time", display_unit="rpm"
         ),
         Output("preload_bins", "N", "bin edges", series=True, display_unit="kN"),
-        Output("preload_count", "1", "bolts per bin", series=True, x="preload_bins"),
+        Output(
+            "preload_count",
+            "1",
+            "bolts per bin",
+            series=True,
+            x="preload_bins",
+            plot=Plot(bars=True),
+        ),
     ),
     rungs=(
         Rung("rough", "2 % off", fixed_error(0.02), typical_error="2 %"),

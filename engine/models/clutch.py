@@ -359,10 +359,13 @@ def _friction_note(alpha: float, f: float) -> str:
     )
 
 
-_SPRING_NOTE = (
-    "Δ is taken, as in the paper, both as the spring compression at slip and as the "
-    "groove depth; the rise of the spring force as the ball climbs (rate × climb) is "
-    "neglected, so the torque to push a ball fully out is somewhat higher."
+#: True of every answer of both clutch models (the runner adds it to the notes).
+ASSUMPTIONS = (
+    (
+        "Δ is taken, as in the paper, both as the spring compression at slip and as the "
+        "groove depth; the rise of the spring force as the ball climbs (rate × climb) is "
+        "neglected, so the torque to push a ball fully out is somewhat higher."
+    ),
 )
 
 
@@ -432,12 +435,11 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
         _friction_note(alpha, f),
         f"ball forces are for the most-loaded ball (K_r = {x['load_factor']:g}) {where}; "
         "F_a = F_t tan(α − ρ), F_N = F_t / (cos α + f sin α) [001, eq. 1].",
-        _SPRING_NOTE,
     ]
     if x["allowable_shear_stress"] is None:
         notes.append("give allowable_shear_stress to check the spring wire's strength")
     return Result(
-        values={k: val for k, val in v.items() if ctx.wants(k)},
+        values=dict(v),
         rung=ctx.rung,
         error_estimate=_estimate(x),
         checks=checks,
@@ -461,7 +463,7 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
     with np.errstate(all="ignore"):
         values = _masked(_forward_values(x), _feasible_mask(x, x["spring_wire_diameter"]))
     return Result(
-        values={k: v for k, v in values.items() if ctx.wants(k)},
+        values=values,
         rung=ctx.rung,
         error_estimate=None,
         notes=[f"spring_arrangement = {x['spring_arrangement']}; see a single run's notes"],
@@ -470,7 +472,6 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 BALL_CLUTCH = ModelSpec(
     name="clutch.ball",
-    path="/clutch/ball",
     title="Ball safety clutch: torque limit",
     family="clutch",
     summary=(
@@ -530,6 +531,7 @@ BALL_CLUTCH = ModelSpec(
     # one rung: by default run it plainly; "auto" would note that the frictionless
     # default cannot meet 1 % (the estimate is the effect of neglected flank friction)
     default_fidelity="closed_form",
+    assumptions=ASSUMPTIONS,
     examples=(
         # [001] worked case: D0 = 50 mm, i = 4, d = 10 mm, D = 45 mm, i_p = 5, α = 45°,
         # G = 8·10⁴ MPa; d0 = 0.5…4 mm and Δ = 4…10 mm: d0 = 4 mm, Δ = 4 mm is the one
@@ -676,7 +678,6 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "torque with the given wire; required_wire_diameter gives it at the given "
         "deflection, d0 = (8 F D³ i_p / (G Δ))^¼ [001, eq. 2]; round it to a stock wire "
         "size and re-set the deflection.",
-        _SPRING_NOTE,
     ]
     if no_coil:
         notes.append(
@@ -684,7 +685,7 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "at this deflection is as thick as the coil itself (spring index ≤ 1)"
         )
     return Result(
-        values={k: val for k, val in v.items() if ctx.wants(k)},
+        values=v,
         rung=ctx.rung,
         error_estimate=_estimate(x),
         checks=checks,
@@ -699,7 +700,7 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         values = _setting_values(x)
         values = _masked(values, _feasible_mask(x, x["spring_wire_diameter"]))
     return Result(
-        values={k: v for k, v in values.items() if ctx.wants(k)},
+        values=values,
         rung=ctx.rung,
         error_estimate=None,
     )
@@ -707,7 +708,6 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 BALL_CLUTCH_SETTING = ModelSpec(
     name="clutch.ball_setting",
-    path="/clutch/ball/setting",
     title="Ball safety clutch: setting for a target torque",
     family="clutch",
     summary=(
@@ -770,6 +770,7 @@ BALL_CLUTCH_SETTING = ModelSpec(
     # one rung: by default run it plainly; "auto" would note that the frictionless
     # default cannot meet 1 % (the estimate is the effect of neglected flank friction)
     default_fidelity="closed_form",
+    assumptions=ASSUMPTIONS,
     examples=(
         # The paper's clutch (D0 = 50 mm, i = 4, d = 10 mm, D = 45 mm, i_p = 5, α = 45°,
         # d0 = 4 mm) set for 0.5 N·m; the wire for Δ = 4 mm.

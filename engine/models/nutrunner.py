@@ -681,16 +681,20 @@ def _constant_power_note(x: Mapping[str, Any]) -> str:
     )
 
 
+#: True of every answer (the runner adds them to the notes; the catalogue lists them).
+ASSUMPTIONS = (
+    "eq. 3–5 and 7–8 of the source are illegible; T and t = T/P are reconstructed from "
+    "the work–energy theorem and the kinematic chain it names (see [000] in docs/sources.md)",
+    "the impact torque ignores socket, nut and joint compliance and all losses, as the "
+    "source does: an upper bound while shaft and spindle stay elastic",
+)
+
+
 def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     d = _drive(x)
     geared = ctx.rung != "closed_form"
     values = _closed_values(x, d, geared)
-    notes = [
-        "eq. 3–5 and 7–8 of the source are illegible; T and t = T/P are reconstructed from "
-        "the work–energy theorem and the kinematic chain it names (see [000] in docs/sources.md)",
-        "the impact torque ignores socket, nut and joint compliance and all losses, as the "
-        "source does: an upper bound while shaft and spindle stay elastic",
-    ]
+    notes: list[str] = []
     effect = float(values["gear_ratio_torque_change"])
     if ctx.rung == "closed_form":
         notes.append(
@@ -762,7 +766,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if check is not None:
         checks.insert(0, check)
     return Result(
-        values={k: v for k, v in values.items() if ctx.wants(k)},
+        values=values,
         rung=ctx.rung,
         error_estimate=error,
         checks=checks,
@@ -787,7 +791,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "whole blow (max_spindle_torque ≤ 0)"
         )
     return Result(
-        values={k: v for k, v in values.items() if ctx.wants(k)},
+        values=values,
         rung=ctx.rung,
         error_estimate=None,
         warnings=warnings,
@@ -830,7 +834,6 @@ EXAMPLE_INDUCTION_MOTOR: dict[str, Any] = {
 
 NUTRUNNER_DRIVE = ModelSpec(
     name="nutrunner.drive",
-    path="/nutrunner/drive",
     title="Multi-spindle impact nut-runner drive",
     family="nutrunner",
     summary=(
@@ -875,6 +878,7 @@ NUTRUNNER_DRIVE = ModelSpec(
     compute=_compute,
     default_fidelity="closed_form",
     examples=(EXAMPLE_LIGHT_TRUCK, EXAMPLE_INDUCTION_MOTOR),
+    assumptions=ASSUMPTIONS,
     vectorized=_vectorized,
     vector_rungs=("closed_form", "gear_ratio"),
 )

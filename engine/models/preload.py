@@ -17,7 +17,7 @@ from .. import preload as pl
 from .. import threads as th
 from ..errors import EngineError, InputOutOfRange
 from ..preload_methods import METHOD_KEYS, METHODS, ControlMethod, get_method
-from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from ..spec import Check, ModelSpec, Output, Param, Plot, Result, RunContext, Rung
 from . import _fasteners as fz
 from ._common import count, friction_coefficient
 
@@ -415,10 +415,6 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "approx: [004, eq. 15] with d2 ≈ d and R_T ≈ 0.25 (D_f + d_h); with one "
             "friction coefficient it is [004, eq. 19]"
         )
-    notes.append(
-        "[004, eq. 10 and 12] are missing from the review's text; the standard thread-torque "
-        "and annular friction-radius relations stand in"
-    )
     values: dict[str, Any] = {
         "assembly_preload": force,
         "permissible_preload": permissible,
@@ -446,7 +442,7 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
     }
     _add_bought_part_checks(x, bolt, force, total, values, checks, notes)
     return Result(
-        values={k: v for k, v in values.items() if ctx.wants(k)},
+        values=values,
         rung=ctx.rung,
         error_estimate=deviation,
         checks=checks,
@@ -518,9 +514,14 @@ TIGHTENING_OUTPUTS: tuple[Output, ...] = (
     *fz.CHECK_OUTPUTS,
 )
 
+#: True of every preload.tightening answer (the runner adds it to the notes).
+TIGHTENING_ASSUMPTIONS = (
+    "[004, eq. 10 and 12] are missing from the review's text; the standard thread-torque "
+    "and annular friction-radius relations stand in",
+)
+
 TIGHTENING = ModelSpec(
     name="preload.tightening",
-    path="/preload/tightening",
     title="Bolt preload and tightening torque",
     family="preload",
     summary=(
@@ -534,6 +535,7 @@ TIGHTENING = ModelSpec(
     outputs=TIGHTENING_OUTPUTS,
     rungs=(CLOSED_FORM,),
     compute=_tightening,
+    assumptions=TIGHTENING_ASSUMPTIONS,
     examples=(
         # VDI 2230 Table A1 case: M12 8.8, μ_G = μ_K = 0.12, ν = 0.9
         {"thread_diameter": 0.012, "property_class": "8.8", "thread_friction": 0.12},
@@ -1029,13 +1031,13 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
 
     return Result(
-        values={k: v for k, v in values.items() if ctx.wants(k)},
+        values=values,
         rung=ctx.rung,
         error_estimate=_formula_deviation(bolt, x),
         checks=checks,
         notes=notes,
         warnings=warnings,
-        series={k: v for k, v in series.items() if ctx.wants(k)},
+        series=series,
     )
 
 
@@ -1140,13 +1142,13 @@ CONTROL_OUTPUTS: tuple[Output, ...] = (
         "Friction scatter: expected number of bolts (of sample_size) per bin",
         series=True,
         x="preload_bins",
+        plot=Plot(bars=True),
     ),
     *fz.CHECK_OUTPUTS,
 )
 
 CONTROL = ModelSpec(
     name="preload.control",
-    path="/preload/control",
     title="Preload control: target value, preload band and friction scatter",
     family="preload",
     summary=(

@@ -13,7 +13,6 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import BudgetExceeded
 from ..rare_impact import (
     G0,
     engagement_window,
@@ -32,7 +31,7 @@ from ..rare_impact import (
     time_to_travel,
 )
 from ..rare_impact_sim import simulate
-from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from ..spec import Check, ModelSpec, Output, Param, Plot, Result, RunContext, Rung, Window
 from ._common import count, friction_coefficient, in_mm, in_ms, in_n_per_mm, in_rpm, positive
 
 # ---------------------------------------------------------------------------
@@ -311,29 +310,9 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
     sim = None
     if ctx.rung == "simulation" and stage1_needed:
-        try:
-            sim = simulate(x, ctx)
-        except BudgetExceeded as exc:
-            # Too many oscillations to integrate: exactly where the quasi-static closed form
-            # is accurate. Run it instead when it meets the simulation's own target.
-            estimate = _closed_form_estimate(x)
-            if "expected_steps" not in exc.context or estimate is None:
-                raise
-            if estimate > _SIMULATION_ERROR:
-                raise
-            ctx = RunContext(
-                rung="closed_form",
-                outputs=ctx.outputs,
-                tolerance=ctx.tolerance,
-                deadline=ctx.deadline,
-                max_steps=ctx.max_steps,
-            )
-            notes.append(
-                f"simulation: would need about {exc.context['expected_steps']:.2g} steps (the "
-                "half-coupling oscillates very fast against the spin-up); ran the closed form "
-                f"instead, whose estimated error {estimate:.2g} is within the simulation's "
-                f"{_SIMULATION_ERROR:g}; no time series"
-            )
+        # Too many oscillations to integrate raises BudgetExceeded(expected_steps=...): exactly
+        # where the quasi-static closed form is accurate, the rung's declared fallback.
+        sim = simulate(x, ctx)
     if sim is not None:
         omega_rel, t_spin = sim.release_speed, sim.spin_up_time
         error: float | None = _SIMULATION_ERROR
@@ -453,13 +432,13 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
     checks = design_checks(x, omega_rel)
     return Result(
-        values={n: v for n, v in values.items() if ctx.wants(n)},
+        values=values,
         rung=ctx.rung,
         error_estimate=error,
         checks=checks,
         notes=notes,
         warnings=warnings,
-        series={n: s for n, s in series.items() if ctx.wants(n)},
+        series=series,
     )
 
 
@@ -519,7 +498,6 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     out = {
         n: np.broadcast_to(np.asarray(v, dtype=bool if n == "full_engagement" else float), shape)
         for n, v in values.items()
-        if ctx.wants(n)
     }
     if w_nl is not None:
         # where the motor never reaches the release speed the scalar model refuses the whole
@@ -860,7 +838,14 @@ _OUTPUTS: tuple[Output, ...] = (
         "duration of stage 4, the stepped shaft's travel back over h_1 [002, eq. 4]",
         display_unit="ms",
     ),
-    Output("time", "s", "time from motor start (simulation)", series=True, display_unit="ms"),
+    Output(
+        "time",
+        "s",
+        "time from motor start (simulation)",
+        series=True,
+        display_unit="ms",
+        plot=Plot(windows=(Window("engagement", "engagement_start", "engagement_end"),)),
+    ),
     Output(
         "flywheel_speed",
         "rad/s",
@@ -909,7 +894,6 @@ HORIZONTAL_DESIGN: dict[str, Any] = {**REFERENCE_DESIGN, "gravity": 0.0}
 
 RARE_IMPACT = ModelSpec(
     name="impact.rare",
-    path="/impact/rare",
     title="Rare-impact wrench: striker engagement",
     family="impact",
     summary=(
@@ -939,6 +923,7 @@ RARE_IMPACT = ModelSpec(
             _simulation_estimate,
             typical_error="≤ 1e-6 (measured ~1e-9 against a tight DOP853 reference)",
             typical_time="~0.3 ms (plus a one-off 1-3 s numba load in a fresh process)",
+            fallback="closed_form",
         ),
     ),
     compute=_compute,

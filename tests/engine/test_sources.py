@@ -8,6 +8,7 @@ and ``docs/sources.md``; no import circle in ``engine/``.
 from __future__ import annotations
 
 import ast
+import importlib
 import re
 from pathlib import Path
 
@@ -133,3 +134,25 @@ def test_no_import_circle_in_engine():
 
     for start in sorted(modules - packages):
         visit(start, [start])
+
+
+def _layout_rows() -> list[str]:
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    section = readme.split("### From a model's name", 1)[1].split("### The tree", 1)[0]
+    return [line for line in section.splitlines() if line.startswith("| `")]
+
+
+@pytest.mark.parametrize("spec", engine.MODELS, ids=lambda s: s.name)
+def test_readme_leads_from_each_model_name_to_existing_files(spec):
+    rows = [r for r in _layout_rows() if f"`{spec.name}`" in r.split("|")[1]]
+    assert rows, f"add a row for {spec.name} to the README's layout table"
+    cells = rows[0].split("|")
+    paths = re.findall(r"`([\w/.]+(?:\.py|/))`", rows[0])
+    assert paths and all((ROOT / p).exists() for p in paths), [
+        p for p in paths if not (ROOT / p).exists()
+    ]
+    assert any(p.startswith("engine/models/") for p in paths)
+    assert any(p.startswith("tests/validation/") for p in paths)
+    decl = importlib.import_module(spec.compute.__module__).__file__
+    assert decl and Path(decl).relative_to(ROOT).as_posix() in cells[3]
+    assert set(spec.sources) & set(re.findall(r"\[([\w-]+)\]", cells[4])), spec.sources

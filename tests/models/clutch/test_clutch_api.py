@@ -90,7 +90,7 @@ def test_never_slips_is_a_plain_422():
     assert r.status_code == 422
     (item,) = r.json()["detail"]
     assert item["type"] == "infeasible_design" and "never slips" in item["msg"]
-    r = post("/setting", {**BALL_CLUTCH_SETTING.examples[0], "flank_friction": 1.0})
+    r = post("_setting", {**BALL_CLUTCH_SETTING.examples[0], "flank_friction": 1.0})
     assert r.status_code == 422 and r.json()["detail"][0]["type"] == "infeasible_design"
 
 
@@ -132,7 +132,7 @@ def test_warnings_and_failing_checks():
 
 def test_setting_is_the_inverse_over_http():
     ex = BALL_CLUTCH_SETTING.examples[0]
-    out = post("/setting", ex).json()
+    out = post("_setting", ex).json()
     res = out["results"]
     # F = 2 T tan 45° / D0 = 2·0.5/0.05 = 20 N; Δ = 20/5618.6557 = 3.5595703 mm;
     # d0 = (8·20·0.045³·5/(8e10·0.004))^¼ = (2.278125e-10)^¼ = 3.8850301 mm
@@ -149,15 +149,15 @@ def test_setting_is_the_inverse_over_http():
 def test_setting_needs_wire_or_deflection_and_gives_what_it_can():
     ex = dict(BALL_CLUTCH_SETTING.examples[0])
     only_wire = {k: v for k, v in ex.items() if k != "spring_deflection"}
-    res = post("/setting", only_wire).json()["results"]
+    res = post("_setting", only_wire).json()["results"]
     assert "required_deflection" in res and "required_wire_diameter" not in res
     neither = {k: v for k, v in only_wire.items() if k != "spring_wire_diameter"}
-    r = post("/setting", neither)
+    r = post("_setting", neither)
     assert r.status_code == 422 and r.json()["detail"][0]["field"] == "spring_wire_diameter"
 
 
 def test_setting_flags_a_deflection_deeper_than_the_ball_radius():
-    out = post("/setting", {**BALL_CLUTCH_SETTING.examples[0], "target_torque": 2.0}).json()
+    out = post("_setting", {**BALL_CLUTCH_SETTING.examples[0], "target_torque": 2.0}).json()
     # F = 80 N -> Δ = 80/5618.66 = 14.2 mm > d/2 = 5 mm (and > d)
     c = checks(out)["required_deflection_groove_depth"]
     assert not c["ok"] and "whole ball" in c["detail"]
@@ -262,7 +262,7 @@ def test_extremes_never_nan_inf_or_500(alpha, wire, mean, f, arr, torque):
     for key in FINITE_KEYS:
         assert isinstance(res[key], float) and math.isfinite(res[key]), (key, res[key])
     setting = post(
-        "/setting",
+        "_setting",
         {
             **BALL_CLUTCH_SETTING.examples[0],
             "groove_angle": alpha,
