@@ -15,8 +15,8 @@ An embedded catalogue (no network) and the pure functions that read it:
   (VDI 2230-1 Table A9) and shear strength.
 
 And the checks a bought fastener needs beyond its preload: the surface
-pressure under head, nut or washer (VDI 2230-1 R9), the length of engagement
-that makes the bolt break before a thread strips (VDI 2230-1 R10, after
+pressure under head, nut or washer (VDI 2230-1 R10), the length of engagement
+that makes the bolt break before a thread strips (VDI 2230-1 R11, after
 Alexander's shear-area model) and the torque the drive (hex key) carries.
 
 The catalogue keys sizes in the standards' own units (mm, inch); every public
@@ -1228,7 +1228,7 @@ def parse_designation(text: str, *, field: str = "thread") -> Designation:
 
 
 def bearing_area(outer_diameter: float, inner_diameter: float) -> float:
-    r"""Bearing area under a head, nut or washer (VDI 2230-1 R9).
+    r"""Bearing area under a head, nut or washer (VDI 2230-1 R10).
 
     .. math::
         A_p = \frac{\pi}{4}\left(d_w^2 - d_h^2\right)
@@ -1260,7 +1260,7 @@ def bearing_area(outer_diameter: float, inner_diameter: float) -> float:
 
 
 def surface_pressure(force: float, outer_diameter: float, inner_diameter: float) -> float:
-    r"""Surface pressure p = F / A_p under a bearing face (VDI 2230-1 R9).
+    r"""Surface pressure p = F / A_p under a bearing face (VDI 2230-1 R10).
 
     .. math::
         p = \frac{F}{\frac{\pi}{4}\left(d_w^2 - d_h^2\right)}
@@ -1317,7 +1317,7 @@ def internal_thread_shear_area(
 
     Notes
     -----
-    Alexander's shear-area model (VDI 2230-1 R10; FED-STD-H28/2 with the
+    Alexander's shear-area model (VDI 2230-1 R11; FED-STD-H28/2 with the
     tolerance-free basic dimensions). With basic dimensions d − D2 = 0.6495 P
     and the bracket is 0.875 P: A_SN = 0.875 π d L_e.
 
@@ -1361,7 +1361,7 @@ def external_thread_shear_area(
 
     Notes
     -----
-    VDI 2230-1 R10 after Alexander; basic dimensions give 0.75 π D1 L_e.
+    VDI 2230-1 R11 after Alexander; basic dimensions give 0.75 π D1 L_e.
 
     Examples
     --------
@@ -1430,7 +1430,7 @@ def thread_bending_factors(strength_ratio: float) -> tuple[float, float]:
     -------
     tuple of float
         (C2, C3), [-]; 0.897 where the relation does not apply; R_S is held
-        inside 0.4…2.2 (VDI 2230-1 R10 after Alexander)
+        inside 0.4…2.2 (VDI 2230-1 R11 after Alexander)
 
     Examples
     --------
@@ -1526,9 +1526,9 @@ def thread_stripping(
 
     Notes
     -----
-    VDI 2230-1 R10 after Alexander (1977): the bolt must break before either
+    VDI 2230-1 R11 after Alexander (1977): the bolt must break before either
     thread strips. The lengths are full-thread engagement, without the entry
-    chamfers and run-out (the open BAT implementation of R10 adds 2 P for
+    chamfers and run-out (the open BAT implementation of R11 adds 2 P for
     them). With C1 = C2 = C3 = 1 this is the plain shear-area rule of
     FED-STD-H28. R_S below 0.4 (a much softer internal thread) is held at 0.4,
     where C3 = 1.055.

@@ -464,7 +464,7 @@ SOURCES: dict[str, Source] = {
             year="1977",
             published="SAE Technical Paper 770420",
             covers="Thread-stripping model: shear areas of internal and external threads, nut "
-            "dilation factor C1, thread-bending factors C2/C3; the basis of VDI 2230-1 R10 "
+            "dilation factor C1, thread-bending factors C2/C3; the basis of VDI 2230-1 R11 "
             "(engine.fasteners.thread_stripping).",
         ),
         Source(

@@ -4,8 +4,8 @@ The catalogue and the relations live in :mod:`engine.fasteners`; this module
 declares the inputs that name a catalogue part (``thread``, ``grade``,
 ``head``, ``nut``, ``washer``, materials), resolves them into the numbers the
 preload models need, and adds the checks of a bought fastener: surface
-pressure under head and nut/washer (VDI 2230-1 R9), thread stripping
-(VDI 2230-1 R10 after Alexander) and the hex-key drive torque (ISO 2936).
+pressure under head and nut/washer (VDI 2230-1 R10), thread stripping
+(VDI 2230-1 R11 after Alexander) and the hex-key drive torque (ISO 2936).
 """
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ from ._common import positive, quantity
 
 SOURCE_TEXT = (
     "ISO 261, ISO 262, ISO 3506-1, SAE J429, ASTM A193, ASME B1.1, ASME B18.2.1, "
-    "ISO 4762, EN 1665, ISO 10642, ISO 2936, VDI 2230-1 R9 and R10 (Alexander)"
+    "ISO 4762, EN 1665, ISO 10642, ISO 2936, VDI 2230-1 R10 and R11 (Alexander)"
 )
 
 #: Bolt shear strength over tensile strength τ_BS/R_m (FED-STD-H28 practice, 0.6).
@@ -137,7 +137,7 @@ CHECK_INPUTS: tuple[Param, ...] = (
     positive(
         "working_bolt_force",
         "N",
-        "Largest bolt force in service F_S,max (surface pressure in service, VDI 2230-1 R9)",
+        "Largest bolt force in service F_S,max (surface pressure in service, VDI 2230-1 R10)",
         maximum=1e8,
         display_unit="kN",
         symbol="F_S,max",
@@ -151,19 +151,19 @@ CHECK_OUTPUTS: tuple[Output, ...] = (
         "surface_pressure_head",
         "Pa",
         "Surface pressure under the head (or washer) at the largest assembly preload, "
-        "p = F_M,max / A_p (VDI 2230-1 R9)",
+        "p = F_M,max / A_p (VDI 2230-1 R10)",
         display_unit="MPa",
     ),
     Output(
         "surface_pressure_head_working",
         "Pa",
-        "Surface pressure under the head (or washer) at working_bolt_force (VDI 2230-1 R9)",
+        "Surface pressure under the head (or washer) at working_bolt_force (VDI 2230-1 R10)",
         display_unit="MPa",
     ),
     Output(
         "surface_pressure_nut",
         "Pa",
-        "Surface pressure under the nut at the largest assembly preload (VDI 2230-1 R9)",
+        "Surface pressure under the nut at the largest assembly preload (VDI 2230-1 R10)",
         display_unit="MPa",
     ),
     Output(
@@ -177,13 +177,13 @@ CHECK_OUTPUTS: tuple[Output, ...] = (
         "min_engagement_length",
         "m",
         "Shortest full-thread engagement for which the bolt breaks before a thread strips "
-        "(VDI 2230-1 R10, Alexander)",
+        "(VDI 2230-1 R11, Alexander)",
         display_unit="mm",
     ),
     Output(
         "stripping_force",
         "N",
-        "Force that strips the weaker thread at engagement_length (VDI 2230-1 R10)",
+        "Force that strips the weaker thread at engagement_length (VDI 2230-1 R11)",
         display_unit="kN",
     ),
     Output(
@@ -380,7 +380,7 @@ def bought_part_checks(
     notes: list[str] = []
     thread = fastener.thread
 
-    # --- surface pressure under head (or washer) and nut, VDI 2230-1 R9
+    # --- surface pressure under head (or washer) and nut, VDI 2230-1 R10
     outer, inner, where = bearing_outer_diameter, hole_diameter, "head"
     if x.get("washer") is not None:
         if thread is None:
@@ -449,7 +449,7 @@ def bought_part_checks(
                     ok,
                     f"surface pressure under the {face} at {force_name}: "
                     f"{quantity(p, 'MPa', '.4g')} vs p_G = {quantity(limit, 'MPa', '.4g')} ({src}; "
-                    "VDI 2230-1 R9)"
+                    "VDI 2230-1 R10)"
                     + (
                         ""
                         if ok
@@ -464,7 +464,7 @@ def bought_part_checks(
             "surface pressure not checked: give clamped_material or limiting_surface_pressure"
         )
 
-    # --- thread stripping, VDI 2230-1 R10 (tapped hole)
+    # --- thread stripping, VDI 2230-1 R11 (tapped hole)
     tau_m: float | None = None
     if x.get("internal_thread_shear_strength") is not None:
         tau_m, tau_src = float(x["internal_thread_shear_strength"]), "as given"
@@ -493,7 +493,7 @@ def bought_part_checks(
         values["min_engagement_length"] = s.min_engagement_length
         values["bolt_breaking_force"] = s.bolt_breaking_force
         notes.append(
-            f"thread stripping (VDI 2230-1 R10 after Alexander): τ_BM = "
+            f"thread stripping (VDI 2230-1 R11 after Alexander): τ_BM = "
             f"{quantity(tau_m, 'MPa', '.4g')} ({tau_src}), τ_BS = {BOLT_SHEAR_RATIO:g} R_m, "
             f"R_S = {s.strength_ratio:.3g}, C1 = {s.c1:.3g} (tapped hole), C2 = {s.c2:.3g}, "
             f"C3 = {s.c3:.3g}; the {s.weaker} thread is the weaker; lengths are full threads, "

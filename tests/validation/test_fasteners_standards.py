@@ -187,7 +187,7 @@ def test_surface_pressure_worked_example_aircraft_structures_script():
     """
     assert f.bearing_area(16e-3, 10.5e-3) * 1e6 == pytest.approx(114.5, abs=0.05)
     assert f.surface_pressure(27_376.0, 16e-3, 10.5e-3) / 1e6 == pytest.approx(239, abs=0.5)
-    # the same through the model, as the check in service (VDI 2230-1 R9)
+    # the same through the model, as the check in service (VDI 2230-1 R10)
     from engine import run
     from engine.models.preload import TIGHTENING
 

@@ -64,7 +64,7 @@ def test_too_short_engagement_in_aluminium_fails_with_the_length_it_needs():
     res = run(TIGHTENING, x)
     need = res.results["min_engagement_length"]
     # hand check: F_B = 1220 MPa · A_s; internal thread A_SN/L = 0.875 π d; τ = 0.6·310 MPa;
-    # R_S < 0.4 here, so C3 = C3(0.4) = 1.055 (VDI 2230-1 R10, Alexander)
+    # R_S < 0.4 here, so C3 = C3(0.4) = 1.055 (VDI 2230-1 R11, Alexander)
     t = f.metric_thread(8)
     c3 = 0.728 + 1.769 * 0.4 - 2.896 * 0.16 + 1.296 * 0.064
     hand = 1220e6 * t.stress_area / (c3 * 0.6 * 310e6 * 0.875 * math.pi * 0.008)
