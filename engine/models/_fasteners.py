@@ -2,7 +2,7 @@
 
 The catalogue and the relations live in :mod:`engine.fasteners`; this module
 declares the inputs that name a catalogue part (``thread``, ``grade``,
-``head``, ``nut``, ``washer``, materials), resolves them into the numbers the
+``head_standard``, ``nut``, ``washer``, materials), resolves them into the numbers the
 preload models need, and adds the checks of a bought fastener: surface
 pressure under head and nut/washer (VDI 2230-1 R10), thread stripping
 (VDI 2230-1 R11 after Alexander) and the hex-key drive torque (ISO 2936).
@@ -48,7 +48,7 @@ THREAD_INPUTS: tuple[Param, ...] = (
         "Designation instead of thread_diameter: 'M12', 'M12x1.25', 'M10 ISO 4762 12.9', "
         "'1/2-13 UNC', '1/2-13 UNC Grade 5' (ISO M1.6…M64 coarse and fine, UNC/UNF "
         "1/4…1-1/2; GET /api/v1/fasteners lists them). A head standard or grade in it "
-        "sets head and grade",
+        "sets head_standard and grade",
         kind="text",
         choices=THREAD_EXAMPLES,
         group="bolt",
@@ -66,7 +66,7 @@ THREAD_INPUTS: tuple[Param, ...] = (
 
 CHECK_INPUTS: tuple[Param, ...] = (
     Param(
-        "head",
+        "head_standard",
         "1",
         "Head standard (bearing diameter d_w, drive): hexagon ISO 4017/4014 when absent "
         "(ASME B18.2.1 hex for inch threads)",
@@ -227,7 +227,7 @@ def resolve(x: Mapping[str, Any]) -> tuple[dict[str, Any], Fastener, list[str]]:
     notes: list[str] = []
     fields: dict[str, Any] = {}
     text = x.get("thread")
-    head_name = x.get("head")
+    head_name = x.get("head_standard")
     grade_name = x.get("grade")
     thread: fa.Thread | None
     if text is not None:
@@ -246,7 +246,8 @@ def resolve(x: Mapping[str, Any]) -> tuple[dict[str, Any], Fastener, list[str]]:
         if des.head is not None:
             if head_name is not None and head_name != des.head:
                 raise InputOutOfRange(
-                    f"head = {head_name!r} contradicts the designation's {des.head}", field="head"
+                    f"head_standard = {head_name!r} contradicts the designation's {des.head}",
+                    field="head_standard",
                 )
             head_name = des.head
         if des.grade is not None:
@@ -316,7 +317,7 @@ def resolve(x: Mapping[str, Any]) -> tuple[dict[str, Any], Fastener, list[str]]:
             if head_name is not None
             else ("ISO 4017" if thread.is_metric else fa.UNIFIED_HEX)
         )
-        head = fa.head(std, thread, field="head")
+        head = fa.head(std, thread, field="head_standard")
         if x.get("bearing_outer_diameter") is None:
             fields["bearing_outer_diameter"] = head.bearing_diameter
             what = "d_k,min of the countersunk head" if head.style == "countersunk" else "d_w,min"
@@ -332,9 +333,9 @@ def resolve(x: Mapping[str, Any]) -> tuple[dict[str, Any], Fastener, list[str]]:
             )
     elif head_name is not None:
         raise InputOutOfRange(
-            "head needs a catalogue thread: give thread, or a thread_diameter/thread_pitch of "
-            "ISO 261/262",
-            field="head",
+            "head_standard needs a catalogue thread: give thread, or a thread_diameter/"
+            "thread_pitch of ISO 261/262",
+            field="head_standard",
         )
     if thread is not None and x.get("hole_diameter") is None and (text is not None):
         if thread.is_metric:

@@ -140,11 +140,14 @@ def test_drive_torque_check_of_a_countersunk_12_9():
         ({"thread": "M12", "thread_pitch": 0.00125}, "thread_pitch"),
         ({"thread": "M13"}, "thread"),
         ({"thread": "1/2-13 UNC"}, "grade"),
-        ({"thread": "M10 ISO 4762 12.9", "head": "ISO 4017"}, "head"),
+        ({"thread": "M10 ISO 4762 12.9", "head_standard": "ISO 4017"}, "head_standard"),
         ({"thread": "M10 ISO 4762 12.9", "grade": "8.8"}, "grade"),
         ({"thread": "M30", "grade": "A2-70"}, "grade"),
-        ({"thread": "M3", "head": "EN 1665"}, "head"),
-        ({"thread_diameter": 0.011, "thread_pitch": 0.0015, "head": "ISO 4762"}, "head"),
+        ({"thread": "M3", "head_standard": "EN 1665"}, "head_standard"),
+        (
+            {"thread_diameter": 0.011, "thread_pitch": 0.0015, "head_standard": "ISO 4762"},
+            "head_standard",
+        ),
         ({"thread": "1/2-13 UNC", "grade": "SAE 5", "washer": "ISO 7089"}, "washer"),
     ],
 )
