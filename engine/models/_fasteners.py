@@ -373,9 +373,14 @@ def bought_part_checks(
     bearing_outer_diameter: float,
     hole_diameter: float,
     max_assembly_preload: float,
-    tightening_torque: float,
+    tightening_torque: float | None,
+    working_force: float | None = None,
 ) -> tuple[dict[str, Any], list[Check], list[str]]:
-    """Surface pressure, thread stripping and drive torque of the bolt a request describes."""
+    """Surface pressure, thread stripping and drive torque of the bolt a request describes.
+
+    ``working_force`` (F_S,max from a joint model) stands in for the
+    ``working_bolt_force`` input; without ``tightening_torque`` the drive is not checked.
+    """
     values: dict[str, Any] = {"fastener": fastener.label}
     checks: list[Check] = []
     notes: list[str] = []
@@ -402,8 +407,10 @@ def bought_part_checks(
     p_head = fa.surface_pressure(max_assembly_preload, outer, inner)
     values["surface_pressure_head"] = p_head
     p_work = None
-    if x.get("working_bolt_force") is not None:
-        p_work = fa.surface_pressure(float(x["working_bolt_force"]), outer, inner)
+    if working_force is None and x.get("working_bolt_force") is not None:
+        working_force = float(x["working_bolt_force"])
+    if working_force is not None:
+        p_work = fa.surface_pressure(working_force, outer, inner)
         values["surface_pressure_head_working"] = p_work
     p_nut = None
     if x.get("nut") is not None:
@@ -441,9 +448,7 @@ def bought_part_checks(
                 continue
             face = "nut" if name == "surface_pressure_nut" else where
             ok = p <= limit
-            need = (
-                max_assembly_preload if force_name == "F_M,max" else float(x["working_bolt_force"])
-            )
+            need = max_assembly_preload if force_name == "F_M,max" else (working_force or 0.0)
             checks.append(
                 Check(
                     name,
@@ -529,7 +534,7 @@ def bought_part_checks(
 
     # --- drive torque, ISO 2936 hex keys
     head = fastener.head
-    if head is not None and head.drive == "hex key":
+    if head is not None and head.drive == "hex key" and tightening_torque is not None:
         limit_key = fa.hex_key_torque(head.drive_size)
         if limit_key is not None:
             values["drive_torque_limit"] = limit_key
@@ -553,6 +558,33 @@ def bought_part_checks(
     return values, checks, notes
 
 
+def joint_check_hook(x: Mapping[str, Any], solution: Any) -> tuple[list[Check], list[str]]:
+    """The bought-part checks for a solved joint (a ``CHECK_HOOKS`` entry of the joint model).
+
+    ``solution`` has ``bolt`` (the preload models' resolved bolt),
+    ``bearing_diameter``, ``hole_diameter``, ``assembly_preload_max`` and
+    ``max_bolt_force`` (F_S,max): surface pressure at both (VDI 2230-1 R10) and
+    the engagement (R11). The drive torque is checked by the preload models.
+    """
+    bolt = solution.bolt
+    fastener = getattr(bolt, "fastener", None) or Fastener("", None, None, None)
+    _, checks, notes = bought_part_checks(
+        x,
+        fastener,
+        diameter=bolt.diameter,
+        pitch=bolt.pitch,
+        pitch_diameter=bolt.pitch_diameter,
+        stress_area=bolt.stress_area,
+        tensile_strength=bolt.tensile_strength,
+        bearing_outer_diameter=solution.bearing_diameter,
+        hole_diameter=solution.hole_diameter,
+        max_assembly_preload=solution.assembly_preload_max,
+        tightening_torque=None,
+        working_force=solution.max_bolt_force,
+    )
+    return checks, notes
+
+
 __all__ = [
     "CHECK_INPUTS",
     "CHECK_OUTPUTS",
@@ -560,5 +592,6 @@ __all__ = [
     "THREAD_INPUTS",
     "Fastener",
     "bought_part_checks",
+    "joint_check_hook",
     "resolve",
 ]
