@@ -48,3 +48,24 @@ def test_the_catalogue_describes_the_text_inputs(client):
     assert thread["kind"] == "text" and "M10 ISO 4762 12.9" in thread["choices"]
     schema = client.get("/openapi.json").json()
     assert "fasteners" in str(schema["paths"].keys())
+
+
+def test_a_sweep_over_friction_with_a_designation_in_the_base(client):
+    r = client.post(
+        "/api/v1/preload/tightening/sweep",
+        json={
+            "base": {"thread": "M8 ISO 4762 12.9", "internal_thread_material": "EN AW-6082 T6"},
+            "vary": "thread_friction",
+            "start": 0.08,
+            "stop": 0.2,
+            "num": 5,
+            "outputs": ["tightening_torque", "min_engagement_length"],
+        },
+    )
+    assert r.status_code == 200, r.text
+    body = r.json()
+    torques = body["results"]["tightening_torque"]
+    assert all(t is not None for t in torques) and torques == sorted(torques)
+    # the engagement the tapped hole needs does not depend on the friction
+    lengths = body["results"]["min_engagement_length"]
+    assert max(lengths) == min(lengths) and lengths[0] > 0.01
