@@ -19,6 +19,10 @@ test names.
   spdfasteners.com) and the misams/BAT open VDI 2230/ECSS tool's ISO 4014/4017
   database (0.1 mm, grade A up to M12 and above M27). ISO 10642 d_k,min could
   not be checked against a reproduction and is not pinned here.
+- SAE J429 grades 2/5/8 (proof, yield, tensile by size range) as printed in Shigley &
+  Mischke, Mechanical Engineering Design, 5th ed., p. 341.
+- Surface pressure: the M10 worked example and Table 9.12 (p_G) of the lecture script
+  "Bauelemente der Luftfahrzeuge 1" §9.12.2 (see the test's docstring).
 - Thread stripping: the worked example of the machinecalcs.com thread-engagement
   calculator (M10×1.5 bolt of 830 MPa into 6061-T6 of 310 MPa, τ = 0.6·R_m,
   FED-STD-H28 shear area, no Alexander factors): required engagement ≈ 9.4 mm.
@@ -213,3 +217,22 @@ SCRIPT_PG = [("42CrMo4 (QT)", 850), ("TiAl6V4", 1000), ("EN AW-7075 T6", 370), (
 @pytest.mark.parametrize(("name", "p_g"), SCRIPT_PG)
 def test_limiting_surface_pressures_against_a_printed_table(name, p_g):
     assert f.MATERIALS[name].limiting_surface_pressure == pytest.approx(p_g * 1e6)
+
+
+# SAE J429 as printed in Shigley & Mischke, Mechanical Engineering Design, 5th ed. (1989),
+# "SAE specifications for steel bolts", p. 341: (grade, size [in], proof, yield, tensile [ksi])
+SAE_J429 = [
+    ("SAE 2", 0.25, 55, 57, 74), ("SAE 2", 0.75, 55, 57, 74), ("SAE 2", 0.875, 33, 36, 60),
+    ("SAE 2", 1.5, 33, 36, 60), ("SAE 5", 0.5, 85, 92, 120), ("SAE 5", 1.0, 85, 92, 120),
+    ("SAE 5", 1.125, 74, 81, 105), ("SAE 5", 1.5, 74, 81, 105), ("SAE 8", 0.25, 120, 130, 150),
+    ("SAE 8", 1.5, 120, 130, 150),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("grade", "size", "proof", "yield_", "tensile"), SAE_J429)
+def test_sae_j429_strengths_as_printed_by_shigley(grade, size, proof, yield_, tensile):
+    g = f.grade_strengths(grade, size * INCH)
+    ksi = 6.894757293168e6
+    assert g.proof_stress == pytest.approx(proof * ksi)
+    assert g.yield_strength == pytest.approx(yield_ * ksi)
+    assert g.tensile_strength == pytest.approx(tensile * ksi)
