@@ -232,6 +232,48 @@ SOURCES: dict[str, Source] = {
             "(engine.threads.hex_bearing_diameter).",
         ),
         Source(
+            id="ISO5393",
+            kind="standard",
+            title="Rotary tools for threaded fasteners - Performance test method",
+            authors="ISO",
+            year="2017",
+            published="ISO 5393:2017 (3rd edition)",
+            covers="Test joints of blow.joint: a hard joint reaches the target torque 30 deg "
+            "after snug, a soft joint 720 deg (27 and 648 deg from 10 % to 100 % of the "
+            "target), read as linear torque rates k_j = T_target / angle.",
+        ),
+        Source(
+            id="ECSS-E-HB-32-23A",
+            kind="standard",
+            title="Space engineering - Threaded fasteners handbook",
+            authors="ESA-ESTEC, Requirements and Standards Division",
+            year="2010",
+            published="ECSS-E-HB-32-23A, 16 April 2010, Noordwijk (free download from ecss.nl)",
+            covers="Open secondary source for the VDI 2230 relations of the joint model "
+            "(engine.joint): bolt compliance by sections (sect. 7.5.5, Table 7-1), "
+            "clamped-part compliance by the deformation cone and sleeve (sect. 7.6.3, "
+            "eq. 7.6.8-7.6.14), embedding table (Table 6-3, after VDI 2230 Table 5.4/1), "
+            "thermal preload change (sect. 6.3.5), preload range from a torque specification "
+            "with min/max friction and prevailing torque (eq. 6.3.14-6.3.15), worked example "
+            "sect. 7.14. Model joint.vdi2230.",
+            reconstruction="Read through misams/BAT, which implements it and carries the "
+            "worked example's numbers; we did not have the PDF itself.",
+        ),
+        Source(
+            id="BAT",
+            kind="textbook",
+            title="BAT - Bolt Analysis Tool (open-source ECSS-E-HB-32-23A / VDI 2230 calculator)",
+            authors="M. Sams (GitHub misams/BAT)",
+            year="2021 (v0.8.4)",
+            published="https://github.com/misams/BAT, src/Ecss.py, src/BoltAnalysisBase.py",
+            covers="Independent implementation run side by side with engine.joint on "
+            "2026-11-23: clamped-part compliance (cone/sleeve), bolt compliance, load factor, "
+            "preload range of the ECSS sect. 7.14 worked example "
+            "(tests/validation/test_joint_compliance.py). Its cone formula puts the nominal "
+            "diameter d where VDI 2230 has the hole d_h, and it spreads one substitute area "
+            "over plates of different E; the tests say by how much that differs.",
+        ),
+        Source(
             id="Wahl",
             kind="textbook",
             title="Mechanical Springs",
@@ -478,6 +520,88 @@ SOURCES: dict[str, Source] = {
             covers="Shear areas of internal and external threads per length of engagement"
             " (Appendix B), with tau = 0.6 R_m practice (engine.fasteners).",
         ),
+        # --- issue 17 (clutch helper): springs for the clutch as built ---
+        Source(
+            id="EN13906-1",
+            kind="standard",
+            title="Cylindrical helical springs made from round wire and bar - Calculation and "
+            "design - Part 1: Compression springs",
+            authors="CEN/TC 407",
+            year="2013",
+            published="EN 13906-1:2013",
+            covers="Helical compression springs: rate, shear stress and Bergstrasser's stress "
+            "correction factor k = (w + 0.5)/(w - 0.75), permissible shear stress 0.5 R_m for "
+            "cold-coiled springs, solid length, minimum sum of gaps S_a, buckling by the "
+            "seating coefficient nu, natural frequency (engine.springs).",
+            reconstruction="Paywalled; the relations are the standard's as reproduced in spring "
+            "makers' handbooks, and checked in tests against textbook worked examples.",
+        ),
+        Source(
+            id="EN16983",
+            kind="standard",
+            title="Disc springs - Quality specifications - Dimensions (calculation of the "
+            "former DIN 2092)",
+            authors="CEN",
+            year="2017",
+            published="DIN EN 16983:2017 (replaces DIN 2092 and DIN 2093)",
+            covers="Disc springs after Almen and Laszlo: factors K1, K2, K3 (K4 for contact "
+            "flats), force F(s), force at flat, stresses at OM, I, II, III, IV, stacks in "
+            "series and parallel with the friction factors w_M, w_R (engine.springs).",
+            reconstruction="Paywalled; the Almen-Laszlo relations are as printed in DIN 2092 "
+            "and disc-spring makers' handbooks; the K-factors are checked against Carvill's "
+            "table.",
+        ),
+        Source(
+            id="EN10270",
+            kind="standard",
+            title="Steel wire for mechanical springs - Part 1: Patented cold drawn unalloyed "
+            "spring steel wire; Part 3: Stainless spring steel wire",
+            authors="ECISS/TC 106",
+            year="2011 (Part 1, +A1:2017); 2011 (Part 3)",
+            published="EN 10270-1, EN 10270-3",
+            covers="Minimum tensile strength R_m by wire diameter of grades SH and DH "
+            "(EN 10270-1) and X10CrNi18-8, 1.4310 (EN 10270-3); preferred wire diameters "
+            "(engine.springs).",
+            reconstruction="Paywalled. The SH/DH rows for 0.30, 0.32, 0.34 mm were checked "
+            "against a public transcription of the table; the other rows and the 1.4310 table "
+            "are transcribed and not re-checked (see engine/springs.py).",
+        ),
+        Source(
+            id="Bhandari",
+            kind="textbook",
+            title="Design of Machine Elements",
+            authors="V. B. Bhandari",
+            year="3rd ed., 2010",
+            published="Tata McGraw-Hill, New Delhi; worked examples as computed in the FOSSEE "
+            "Scilab Textbook Companion no. 764",
+            covers="Chapter 'Springs': Example 10.1 (a helical spring for 1250 N and 30 mm: "
+            "wire 6.625 mm, free length 109.34 mm) and Example 10.3 (Wahl factors for C = 5-8), "
+            "pinned in tests/validation/test_springs_textbooks.py.",
+        ),
+        Source(
+            id="Carvill",
+            kind="textbook",
+            title="Mechanical Engineer's Data Handbook",
+            authors="J. Carvill",
+            year="1993",
+            published="Butterworth-Heinemann, Oxford",
+            covers="Belleville washer spring: table of the factors k1, k2, k3 against Do/Di "
+            "(1.4-5.0), pinned in tests/validation/test_springs_textbooks.py.",
+        ),
+        Source(
+            id="Saltelli2010",
+            kind="paper",
+            title="Variance based sensitivity analysis of model output. Design and estimator "
+            "for the total sensitivity index",
+            authors="A. Saltelli, P. Annoni, I. Azzini, F. Campolongo, M. Ratto, S. Tarantola",
+            year="2010",
+            published="Computer Physics Communications 181(2), 259-270",
+            covers="The sampling design (matrices A, B, AB_i) and the first-order Sobol' "
+            "estimator of engine.study; the total index uses Jansen's estimator (M. J. W. "
+            "Jansen, Computer Physics Communications 117, 35-43, 1999). Validated against the "
+            "Ishigami function's analytic indices (T. Ishigami, T. Homma, 1990; Saltelli et al., "
+            "Global Sensitivity Analysis: The Primer, Wiley 2008, §4.8).",
+        ),
     )
 }
 
@@ -514,8 +638,16 @@ _PATTERNS: tuple[tuple[re.Pattern[str], str | None], ...] = (
     (re.compile(r"\bEN 1563\b"), "EN1563"),
     (re.compile(r"\bAlexander\b"), "Alexander"),
     (re.compile(r"\bFED-STD-H28\b"), "FED-STD-H28"),
+    (re.compile(r"\bISO 5393\b"), "ISO5393"),
     (re.compile(r"\bWahl\b"), "Wahl"),
     (re.compile(r"\bKloss\b"), "Kloss"),
+    (re.compile(r"\bEN 13906-1\b"), "EN13906-1"),
+    (re.compile(r"\bEN 16983\b"), "EN16983"),
+    (re.compile(r"\bEN 10270-[13]\b"), "EN10270"),
+    (re.compile(r"\bBhandari\b"), "Bhandari"),
+    (re.compile(r"\bCarvill\b"), "Carvill"),
+    (re.compile(r"\bECSS-E-HB-32-23A\b"), "ECSS-E-HB-32-23A"),
+    (re.compile(r"\bmisams/BAT\b"), "BAT"),
 )
 
 

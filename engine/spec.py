@@ -18,6 +18,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
+from .equations import equations_of
 from .errors import InputOutOfRange
 from .sources import SOURCES, cited_ids
 
@@ -57,6 +58,8 @@ class Param:
     symbol: str | None = None
     display_unit: str | None = None
     group: str | None = None
+    #: Readable names of ``choices``, in the same order (optional; the form shows them).
+    choice_labels: tuple[str, ...] = ()
 
     @property
     def is_numeric(self) -> bool:
@@ -146,6 +149,7 @@ class Param:
             "exclusive_maximum": self.exclusive_maximum,
             "recommended": list(self.recommended) if self.recommended else None,
             "choices": list(self.choices) or None,
+            "choice_labels": list(self.choice_labels) or None,
             "range": self.range_text(),
             "group": self.group,
             "description": self.description,
@@ -327,6 +331,9 @@ class ModelSpec:
             raise ValueError(f"{self.name}: inputs may not use the names {sorted(reserved)}")
         if not self.rungs:
             raise ValueError(f"{self.name}: at least one rung is required")
+        for p in self.inputs:
+            if p.choice_labels and len(p.choice_labels) != len(p.choices):
+                raise ValueError(f"{self.name}.{p.name}: one choice label per choice")
         if self.default_fidelity not in ("auto", *self.rung_names):
             raise ValueError(f"{self.name}: unknown default_fidelity {self.default_fidelity!r}")
         for r in self.rungs:
@@ -422,6 +429,8 @@ class ModelSpec:
             "rungs": [r.describe() for r in self.rungs],
             "assumptions": list(self.assumptions),
             "examples": [dict(e) for e in self.examples],
+            # read from the engine functions' docstrings, for the calculation report
+            "equations": [dict(e) for e in equations_of(self.compute)],
         }
 
 

@@ -25,10 +25,10 @@ from collections.abc import AsyncIterator, Sequence
 from contextlib import asynccontextmanager
 from pathlib import Path
 
-from fastapi import FastAPI
+from fastapi import FastAPI, Request
 from fastapi.middleware.cors import CORSMiddleware
 from fastapi.openapi.docs import get_redoc_html, get_swagger_ui_html
-from fastapi.responses import HTMLResponse
+from fastapi.responses import HTMLResponse, RedirectResponse
 from fastapi.staticfiles import StaticFiles
 
 import engine
@@ -39,6 +39,7 @@ from .api import Limits, catalogue_router, model_router
 from .config import Settings
 from .extra import EXTRA_ROUTERS
 from .middleware import BodyGuard, FrontDoor
+from .studies import Studies, StudySettings, study_router
 from .workers import EnginePool
 
 _CDN = "https://cdn.jsdelivr.net"
@@ -108,12 +109,15 @@ def create_app(
         max_series_points=settings.max_series_points,
     )
 
+    studies = Studies(StudySettings())
+
     @asynccontextmanager
     async def lifespan(_: FastAPI) -> AsyncIterator[None]:
         if settings.warm_up:
             threading.Thread(target=warm_up, args=(models,), name="warm-up", daemon=True).start()
         yield
         pool.shutdown()
+        studies.shutdown()
 
     app = FastAPI(
         title="Tightening-tool calculator",
@@ -153,11 +157,21 @@ def create_app(
     def redoc_page() -> HTMLResponse:
         return redoc
 
+    @app.get("/report", include_in_schema=False)
+    def report(request: Request) -> RedirectResponse:
+        """``/report?m=…&ex=0&…``: the calculation report of a link's query (to archive)."""
+        query = request.url.query
+        return RedirectResponse(
+            "./#" + (query + "&" if query else "") + "view=report", status_code=303
+        )
+
     app.include_router(catalogue_router(models))
     for spec in models:
         app.include_router(model_router(spec, limits))
     for router in EXTRA_ROUTERS:
         app.include_router(router)
+    app.include_router(study_router(models, studies))
+    app.state.studies = studies
     app.add_middleware(BodyGuard, limit=settings.max_body_bytes)
     if settings.cors_origins:
         app.add_middleware(

@@ -13,7 +13,9 @@ schema, the form and ``GET /api/v1/models`` all derive from this tuple.
 from __future__ import annotations
 
 from ..spec import ModelSpec
+from .blow import BLOW
 from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
+from .joint import VDI2230 as JOINT_VDI2230
 from .nutrunner import NUTRUNNER_DRIVE
 from .preload import CONTROL as PRELOAD_CONTROL
 from .preload import TIGHTENING as PRELOAD_TIGHTENING
@@ -26,6 +28,8 @@ MODELS: tuple[ModelSpec, ...] = (
     RARE_IMPACT,
     PRELOAD_TIGHTENING,
     PRELOAD_CONTROL,
+    JOINT_VDI2230,
+    BLOW,
 )
 
 

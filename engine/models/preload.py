@@ -13,6 +13,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from typing import Any
 
+from .. import joint as jt
 from .. import preload as pl
 from .. import threads as th
 from ..errors import EngineError, InputOutOfRange
@@ -695,9 +696,20 @@ CONTROL_INPUTS: tuple[Param, ...] = (
     Param(
         "clamped_compliance",
         "m/N",
-        "Compliance of the clamped parts λ_p ([004, eq. 8]); 0 (rigid, [004, eq. 9]) when absent",
+        "Compliance of the clamped parts λ_p ([004, eq. 8]); when absent, bolts get VDI 2230 "
+        "R3's deformation cone through clamped_length of one material (wide plates, "
+        "through-bolted), sucker rods 0 (rigid, [004, eq. 9]); 0 for a rigid joint",
         minimum=0.0,
         maximum=1.0,
+        group="joint",
+    ),
+    Param(
+        "clamped_youngs_modulus",
+        "Pa",
+        "Young's modulus of the clamped parts for the cone model; youngs_modulus when absent",
+        minimum=1e8,
+        maximum=1e12,
+        display_unit="GPa",
         group="joint",
     ),
     Param(
@@ -790,6 +802,51 @@ def _grip_sections(bolt: Bolt, x: Mapping[str, Any]) -> tuple[list[float], list[
     return [li for li, _ in kept], [di for _, di in kept]
 
 
+def _smallest_section(bolt: Bolt, x: Mapping[str, Any], notes: list[str]) -> tuple[float, float]:
+    """d_0 and A_0 of the smallest section: thread, plain or reduced shank (VDI 2230-1 R7)."""
+    sections = []
+    if float(x["shank_length"]) > 0.0 and x.get("shank_diameter") is not None:
+        sections.append((float(x["shank_length"]), float(x["shank_diameter"])))
+    if float(x["reduced_length"]) > 0.0:
+        if x.get("reduced_diameter") is None:
+            raise InputOutOfRange(
+                "reduced_diameter is required when reduced_length > 0", field="reduced_diameter"
+            )
+        sections.append((float(x["reduced_length"]), float(x["reduced_diameter"])))
+    d0, where = jt.smallest_section(bolt.stress_diameter, sections)
+    area0 = bolt.stress_area if where == "thread" else 0.25 * math.pi * d0 * d0
+    if where == "shank":
+        notes.append(
+            f"smallest section is the shank, d_0 = {d0 * 1e3:.4g} mm < d_S = "
+            f"{bolt.stress_diameter * 1e3:.4g} mm: the permissible and yield preloads use "
+            f"A_0 = {area0 * 1e6:.4g} mm² and W_p = π d_0³/16 (VDI 2230-1 R7; [004, eq. 3–4])"
+        )
+    return d0, area0
+
+
+def _clamped_compliance(
+    bolt: Bolt, x: Mapping[str, Any], method: ControlMethod, notes: list[str]
+) -> float:
+    """λ_p: the value given, else VDI 2230 R3's cone for bolts (0 for sucker rods)."""
+    if x.get("clamped_compliance") is not None:
+        return float(x["clamped_compliance"])
+    if method.family != "bolt":
+        return 0.0
+    grip = float(x["clamped_length"])
+    e_p = x.get("clamped_youngs_modulus")
+    e_p = float(x["youngs_modulus"]) if e_p is None else float(e_p)
+    cone = jt.clamped_compliance(
+        [grip], [e_p], bolt.bearing_outer_diameter, bolt.hole_diameter, None, "through"
+    )
+    notes.append(
+        f"clamped parts λ_p = {cone.total * 1e9:.4g} µm/kN from "
+        f"VDI 2230-1 R3's deformation cone (l_K = {grip * 1e3:g} mm, E_p = {e_p / 1e9:g} GPa, "
+        f"d_W = {bolt.bearing_outer_diameter * 1e3:g} mm, d_h = {bolt.hole_diameter * 1e3:g} mm, "
+        "through-bolted, wide plates); give clamped_compliance to override (0: rigid)"
+    )
+    return cone.total
+
+
 def _method_band(
     method: ControlMethod, permissible: float, at_yield: float, given: float | None
 ) -> tuple[float, float, float]:
@@ -812,9 +869,13 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
     method = get_method(str(x["method"]))
     mu_g, mu_k = float(x["thread_friction"]), float(x["bearing_friction"])
     nu, formula = float(x["utilization"]), str(x["torque_formula"])
-    beta = _torsion(bolt, x)
-    permissible = pl.assembly_preload(bolt.yield_strength, bolt.stress_area, beta, nu)
-    at_yield = pl.assembly_preload(bolt.yield_strength, bolt.stress_area, beta, 1.0)
+    # VDI 2230-1 R7: the strength limit is at the smallest cross-section ([004, eq. 3-4]).
+    d0, area0 = _smallest_section(bolt, x, notes)
+    beta = float(
+        pl.torsion_factor(bolt.pitch, bolt.pitch_diameter, d0, mu_g, str(x["preload_convention"]))
+    )
+    permissible = pl.assembly_preload(bolt.yield_strength, area0, beta, nu)
+    at_yield = pl.assembly_preload(bolt.yield_strength, area0, beta, 1.0)
     given = None if x.get("preload") is None else float(x["preload"])
 
     lo_factor, hi_factor = pl.preload_factor_range(str(x["load_type"]))
@@ -852,7 +913,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
         lengths, diameters = _grip_sections(bolt, x)
         youngs = float(x["youngs_modulus"])
         compliance = pl.axial_compliance(lengths, diameters, youngs)
-        parts = float(x.get("clamped_compliance") or 0.0)
+        parts = _clamped_compliance(bolt, x, method, notes)
         stretch = compliance + parts
         angle = pl.nut_rotation_angle(nominal, stretch, bolt.pitch)
         values.update(
@@ -864,7 +925,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
         if x.get("coupling_outer_diameter") is not None:
             values["target_displacement"] = angle * 0.5 * float(x["coupling_outer_diameter"])
-        if parts == 0.0 and method.controls in ("angle", "displacement"):
+        if parts == 0.0 and method.controls in ("angle", "displacement", "elongation"):
             notes.append(
                 "clamped parts taken as rigid ([004, eq. 9]); give clamped_compliance for "
                 "[004, eq. 8] — the angle is then larger"

@@ -21,14 +21,17 @@ import engine
 
 #: Physics module -> the models whose inputs share its parameter names.
 FAMILIES: dict[str, tuple[str, ...]] = {
+    "blow": ("blow.joint",),
     "clutch": ("clutch.ball", "clutch.ball_setting"),
     "fasteners": ("preload.tightening", "preload.control"),
+    "joint": ("joint.vdi2230",),
     "motor_spinup": ("nutrunner.drive",),
     "nutrunner": ("nutrunner.drive",),
     "preload": ("preload.tightening", "preload.control"),
     "preload_methods": ("preload.tightening", "preload.control"),
     "rare_impact": ("impact.rare",),
     "rare_impact_sim": ("impact.rare",),
+    "springs": ("clutch.ball", "clutch.ball_setting"),
     "threads": ("preload.tightening", "preload.control"),
 }
 
@@ -56,6 +59,7 @@ NOT_PHYSICS = {
         )
     ),
 }
+NOT_PHYSICS |= {"springs.SpringMaterial"}  # a data record, documented in prose
 #: Physics functions still without a numpydoc Parameters section (their arguments
 #: are the paper's symbols, explained in the module docstring). The list may only
 #: shrink: a new function must document its parameters, and documenting one of

@@ -27,14 +27,17 @@ CITING = [
 ]
 #: Physics modules: pure functions, never the spec machinery.
 PHYSICS = [
+    "blow",
     "clutch",
     "fasteners",
+    "joint",
     "motor_spinup",
     "nutrunner",
     "preload",
     "preload_methods",
     "rare_impact",
     "rare_impact_sim",
+    "springs",
     "threads",
 ]
 

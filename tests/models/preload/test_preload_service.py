@@ -254,10 +254,11 @@ def test_control_angle_and_elongation_agree_through_one_compliance(api):
         "clamped_length": 0.12,
         "shank_length": 0.08,
         "method": "nut_angle",
+        "clamped_compliance": 0.0,
     }
     res = _ok(api, CTRL, base)["results"]
     pitch = 0.00175
-    # rigid parts: the nut's advance φ P/(2π) is the bolt's elongation [004, eq. 7, 9]
+    # rigid parts (typed 0): the nut's advance φ P/(2π) is the bolt's elongation [004, eq. 7, 9]
     assert res["target_angle"] * pitch / (2 * math.pi) == pytest.approx(
         res["target_elongation"], rel=1e-12
     )

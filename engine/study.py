@@ -1,0 +1,788 @@
+"""Design studies: one model over many designs (grid, Monte Carlo, Latin hypercube, Sobol').
+
+A designer does not evaluate one design: a clutch maker asks what spread of
+slip torque its tolerances give, a tool designer over which region of spring
+rates the striker engages, an assembly engineer which scatter dominates the
+clamp force. A :class:`Study` names the model, the fixed inputs, the inputs
+that vary and how, and what to collect; this module turns it into points
+(:func:`plan`), evaluates the points in chunks (:func:`evaluate_chunk`, a
+pure function of its arguments, so any executor can run it: in-process or
+on Dask workers, see :mod:`engine.study_exec`), and summarises them
+(:func:`summarize`): quantiles, mean, standard deviation and histogram per
+output, the fraction of designs passing each check, grid maps with the
+feasible region, the designs behind the extremes, and the sensitivity of
+each output to each input (Sobol' indices for ``method="sobol"``, Spearman
+rank correlations otherwise).
+
+Everything is seeded and computed from the whole set of points in a fixed
+order, so a study repeats exactly, bit for bit, whichever executor ran its
+chunks.
+
+Sobol' indices follow Saltelli et al. (2010) for the first-order index and
+Jansen (1999) for the total index (see ``docs/sources.md``, [Saltelli2010]).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from scipy import stats
+from scipy.stats import qmc
+
+from .errors import BudgetExceeded, EngineError, InputOutOfRange
+from .runner import DEFAULT_TOLERANCE, choose_rung, run
+from .spec import ModelSpec, Param, RunContext
+
+METHODS = ("grid", "monte_carlo", "lhs", "sobol")
+DISTRIBUTIONS = ("uniform", "normal", "triangular")
+MAX_GRID_INPUTS = 3
+MAX_STUDY_POINTS = 2_000_000
+MAX_HISTOGRAM_BINS = 200
+QUANTILES = (0.001, 0.01, 0.05, 0.25, 0.5, 0.75, 0.95, 0.99, 0.999)
+#: Check states in :class:`ChunkResult`: passed, failed, not evaluated for this point.
+CHECK_OK, CHECK_FAILED, CHECK_UNKNOWN = 1, 0, -1
+
+
+@dataclass(frozen=True)
+class Variable:
+    """One varied input: its grid axis, or its distribution (SI units).
+
+    ``grid``: ``low``…``high`` in ``num`` points (``scale`` linear or log).
+    ``uniform``: ``low``…``high``. ``triangular``: ``low``, ``mode``, ``high``.
+    ``normal``: ``mean``, ``sd``, truncated to ``low``…``high`` when given and
+    always to the input's declared range (sampled by the inverse CDF of the
+    truncated law, so no point is rejected and the sample stays seeded).
+    """
+
+    name: str
+    distribution: str = "uniform"
+    low: float | None = None
+    high: float | None = None
+    mean: float | None = None
+    sd: float | None = None
+    mode: float | None = None
+    num: int = 11
+    scale: str = "linear"
+
+
+@dataclass(frozen=True)
+class Study:
+    """What to evaluate: ``samples`` designs (per Sobol' base sample for ``sobol``)."""
+
+    variables: tuple[Variable, ...]
+    base: Mapping[str, Any] = field(default_factory=dict)
+    method: str = "monte_carlo"
+    samples: int = 1000
+    seed: int = 0
+    fidelity: str | None = None
+    tolerance: float | None = None
+    outputs: tuple[str, ...] | None = None
+    bins: int = 30
+    #: A boolean output that defines a feasible design (e.g. ``full_engagement``);
+    #: None: a design is feasible when every check it reports passes.
+    feasible_when: str | None = None
+
+
+@dataclass
+class Plan:
+    """The points of a study, in evaluation order, and what to collect."""
+
+    columns: dict[str, np.ndarray]
+    n_points: int
+    outputs: tuple[str, ...]
+    grid_shape: tuple[int, ...] | None = None
+    grid_axes: dict[str, np.ndarray] | None = None
+    sobol_base: int | None = None
+    notes: list[str] = field(default_factory=list)
+
+
+@dataclass
+class ChunkResult:
+    """The values of one chunk of points; NaN where a point was refused."""
+
+    values: dict[str, np.ndarray]
+    checks: dict[str, np.ndarray]
+    rungs: list[str | None]
+    refusals: dict[str, int]
+    elapsed_s: float
+
+
+# --------------------------------------------------------------------------- planning
+
+
+def _numeric_param(spec: ModelSpec, name: str) -> Param:
+    try:
+        param = spec.param(name)
+    except KeyError:
+        raise InputOutOfRange(
+            f"variables: {name!r} is not an input of {spec.name}", field="variables"
+        ) from None
+    if not param.is_numeric:
+        raise InputOutOfRange(
+            f"variables: {name!r} is not a numeric input of {spec.name}", field="variables"
+        )
+    return param
+
+
+def _need(var: Variable, *names: str) -> list[float]:
+    got = []
+    for n in names:
+        value = getattr(var, n)
+        if value is None or not math.isfinite(float(value)):
+            raise InputOutOfRange(
+                f"variables: {var.name} ({var.distribution}) needs a finite {n}",
+                field="variables",
+            )
+        got.append(float(value))
+    return got
+
+
+def _bounds(param: Param, var: Variable) -> tuple[float, float]:
+    """The interval a variable may take: its own low/high within the declared range."""
+    lo = -math.inf if param.minimum is None else float(param.minimum)
+    hi = math.inf if param.maximum is None else float(param.maximum)
+    if var.low is not None:
+        if var.low < lo or (param.exclusive_minimum and var.low <= lo):
+            raise param._error(var.low)
+        lo = float(var.low)
+    if var.high is not None:
+        if var.high > hi or (param.exclusive_maximum and var.high >= hi):
+            raise param._error(var.high)
+        hi = float(var.high)
+    if not lo < hi:
+        raise InputOutOfRange(
+            f"variables: {var.name} needs low < high (got {lo:g} and {hi:g} {param.unit})",
+            field="variables",
+        )
+    return lo, hi
+
+
+def _transform(param: Param, var: Variable, u: np.ndarray) -> np.ndarray:
+    """Map uniform numbers in (0, 1) to the variable's (truncated) distribution."""
+    lo, hi = _bounds(param, var)
+    if var.distribution == "uniform":
+        _need(var, "low", "high")
+        x = lo + u * (hi - lo)
+    elif var.distribution == "triangular":
+        a, c, b = _need(var, "low", "mode", "high")
+        if not a <= c <= b:
+            raise InputOutOfRange(
+                f"variables: {var.name} needs low ≤ mode ≤ high", field="variables"
+            )
+        x = stats.triang.ppf(u, (c - a) / (b - a), loc=a, scale=b - a)
+    elif var.distribution == "normal":
+        mean, sd = _need(var, "mean", "sd")
+        if not sd > 0.0:
+            raise InputOutOfRange(f"variables: {var.name} needs sd > 0", field="variables")
+        a, b = (lo - mean) / sd, (hi - mean) / sd
+        if not a < b or a > 37.0 or b < -37.0:
+            raise InputOutOfRange(
+                f"variables: {var.name}: the normal law N({mean:g}, {sd:g}) has no mass "
+                f"inside {lo:g}…{hi:g} {param.unit}",
+                field="variables",
+            )
+        x = stats.truncnorm.ppf(u, a, b, loc=mean, scale=sd)
+    else:
+        raise InputOutOfRange(
+            f"variables: {var.name}: distribution must be one of {', '.join(DISTRIBUTIONS)}",
+            field="variables",
+        )
+    x = np.clip(np.asarray(x, dtype=float), lo, hi)
+    if param.kind == "int":
+        x = np.clip(np.round(x), math.ceil(lo), math.floor(hi))
+    return x
+
+
+def _grid_axis(param: Param, var: Variable) -> np.ndarray:
+    lo, hi = _bounds(param, var)
+    _need(var, "low", "high")
+    if not 2 <= var.num <= 1000:
+        raise InputOutOfRange(
+            f"variables: {var.name}: a grid axis has 2…1000 points", field="variables"
+        )
+    if var.scale == "log":
+        if lo <= 0:
+            raise InputOutOfRange(
+                f"variables: {var.name}: a log axis needs low > 0", field="variables"
+            )
+        axis = np.geomspace(lo, hi, var.num)
+    elif var.scale == "linear":
+        axis = np.linspace(lo, hi, var.num)
+    else:
+        raise InputOutOfRange(
+            f"variables: {var.name}: scale must be 'linear' or 'log'", field="variables"
+        )
+    if param.kind == "int":
+        axis = np.unique(np.round(axis))
+    return axis
+
+
+def scalar_outputs(spec: ModelSpec) -> tuple[str, ...]:
+    """The outputs a study can collect: every numeric or boolean scalar."""
+    return tuple(
+        o.name for o in spec.outputs if not o.series and o.kind in ("float", "int", "bool")
+    )
+
+
+def plan(spec: ModelSpec, study: Study) -> Plan:
+    """Validate a study and draw its points (seeded; SI units)."""
+    if study.method not in METHODS:
+        raise InputOutOfRange(
+            f"method = {study.method!r} is not allowed: must be one of {', '.join(METHODS)}",
+            field="method",
+        )
+    if not study.variables:
+        raise InputOutOfRange("variables: vary at least one input", field="variables")
+    names = [v.name for v in study.variables]
+    if len(set(names)) != len(names):
+        raise InputOutOfRange("variables: each input may vary once", field="variables")
+    params = [_numeric_param(spec, v.name) for v in study.variables]
+    if any(n in study.base for n in names):
+        raise InputOutOfRange(
+            "base: an input that varies may not also be fixed in base", field="base"
+        )
+    if not 1 <= study.bins <= MAX_HISTOGRAM_BINS:
+        raise InputOutOfRange(f"bins must be 1…{MAX_HISTOGRAM_BINS}", field="bins")
+    if not 0 <= study.seed < 2**63:
+        raise InputOutOfRange("seed must be an integer ≥ 0 and < 2^63", field="seed")
+    collectable = scalar_outputs(spec)
+    outputs = collectable if study.outputs is None else tuple(study.outputs)
+    unknown = [o for o in outputs if o not in collectable]
+    if unknown or not outputs:
+        raise InputOutOfRange(
+            f"outputs: {', '.join(unknown) or 'none'} cannot be collected; "
+            f"{spec.name} offers {', '.join(collectable)}",
+            field="outputs",
+        )
+    if study.feasible_when is not None:
+        kinds = {o.name: o.kind for o in spec.outputs}
+        if kinds.get(study.feasible_when) != "bool":
+            raise InputOutOfRange(
+                f"feasible_when = {study.feasible_when!r} is not a true/false output of "
+                f"{spec.name}",
+                field="feasible_when",
+            )
+        if study.feasible_when not in outputs:
+            outputs = (*outputs, study.feasible_when)
+    notes: list[str] = []
+    k = len(params)
+    if study.method == "grid":
+        if k > MAX_GRID_INPUTS:
+            raise InputOutOfRange(
+                f"variables: a grid varies at most {MAX_GRID_INPUTS} inputs", field="variables"
+            )
+        axes = {v.name: _grid_axis(p, v) for p, v in zip(params, study.variables, strict=True)}
+        shape = tuple(a.size for a in axes.values())
+        n = math.prod(shape)
+        _check_size(n)
+        mesh = np.meshgrid(*axes.values(), indexing="ij")
+        columns = {name: m.ravel() for name, m in zip(axes, mesh, strict=True)}
+        _validate_base(spec, study, columns)
+        return Plan(columns, n, outputs, grid_shape=shape, grid_axes=axes, notes=notes)
+    if study.samples < 2:
+        raise InputOutOfRange("samples must be ≥ 2", field="samples")
+    if study.method == "sobol":
+        # Saltelli's design: A and B from one 2k-dimensional scrambled Sobol' sequence
+        # (a power of two keeps the sequence balanced), then A with column i from B.
+        m = math.ceil(math.log2(study.samples))
+        base_n = 2**m
+        _check_size(base_n * (k + 2))
+        if base_n != study.samples:
+            notes.append(
+                f"samples rounded up from {study.samples} to {base_n}, a power of two, which "
+                "keeps the Sobol' sequence balanced"
+            )
+        u = qmc.Sobol(d=2 * k, scramble=True, seed=np.random.default_rng(study.seed)).random_base2(
+            m
+        )
+        u = np.clip(u, 1e-12, 1.0 - 1e-12)
+        a = np.column_stack(
+            [
+                _transform(p, v, u[:, i])
+                for i, (p, v) in enumerate(zip(params, study.variables, strict=True))
+            ]
+        )
+        b = np.column_stack(
+            [
+                _transform(p, v, u[:, k + i])
+                for i, (p, v) in enumerate(zip(params, study.variables, strict=True))
+            ]
+        )
+        blocks = [a, b]
+        for i in range(k):
+            ab = a.copy()
+            ab[:, i] = b[:, i]
+            blocks.append(ab)
+        matrix = np.vstack(blocks)
+        columns = {name: matrix[:, i].copy() for i, name in enumerate(names)}
+        _validate_base(spec, study, columns)
+        return Plan(columns, matrix.shape[0], outputs, sobol_base=base_n, notes=notes)
+    n = study.samples
+    _check_size(n)
+    rng = np.random.default_rng(study.seed)
+    u = qmc.LatinHypercube(d=k, seed=rng).random(n) if study.method == "lhs" else rng.random((n, k))
+    u = np.clip(u, 1e-12, 1.0 - 1e-12)
+    columns = {
+        v.name: _transform(p, v, u[:, i])
+        for i, (p, v) in enumerate(zip(params, study.variables, strict=True))
+    }
+    _validate_base(spec, study, columns)
+    return Plan(columns, n, outputs, notes=notes)
+
+
+def _validate_base(spec: ModelSpec, study: Study, columns: Mapping[str, np.ndarray]) -> None:
+    """The fixed inputs, with the first point's varied ones, must pass the model's checks."""
+    first = {name: col[0].item() for name, col in columns.items()}
+    for name, value in first.items():
+        if spec.param(name).kind == "int":
+            first[name] = int(value)
+    spec.validate({**{k: v for k, v in study.base.items() if v is not None}, **first})
+
+
+def _check_size(n: int) -> None:
+    if n > MAX_STUDY_POINTS:
+        raise InputOutOfRange(
+            f"the study has {n} points, over the limit of {MAX_STUDY_POINTS}", field="samples"
+        )
+
+
+def chunks(n_points: int, size: int) -> list[tuple[int, int]]:
+    """``[start, stop)`` slices of at most ``size`` points, in order."""
+    size = max(1, int(size))
+    return [(i, min(i + size, n_points)) for i in range(0, n_points, size)]
+
+
+# --------------------------------------------------------------------------- evaluation
+
+
+def _estimates_on_arrays(
+    spec: ModelSpec, x: Mapping[str, Any], n: int, tol: float
+) -> np.ndarray | None:
+    """Per-point ``auto`` rung index from the rungs' estimates called on arrays, if they can be."""
+    choice = np.full(n, -1, dtype=np.int64)
+    best = np.full(n, np.inf)
+    best_i = np.full(n, -1, dtype=np.int64)
+    for i, rung in enumerate(spec.rungs):
+        try:
+            with np.errstate(all="ignore"):
+                est = rung.estimate(x)
+        except (TypeError, ValueError, ArithmeticError):
+            return None
+        if est is None:
+            continue
+        arr = np.broadcast_to(np.asarray(est, dtype=float), (n,))
+        ok = np.isfinite(arr)
+        better = ok & (arr < best)
+        best = np.where(better, arr, best)
+        best_i = np.where(better, i, best_i)
+        choice = np.where((choice < 0) & ok & (arr <= tol), i, choice)
+    fallback = np.where(best_i >= 0, best_i, len(spec.rungs) - 1)
+    return np.where(choice >= 0, choice, fallback)
+
+
+def _vector(
+    spec: ModelSpec, x: Mapping[str, Any], rung: str, outputs: Sequence[str], tol: float, n: int
+) -> dict[str, np.ndarray] | None:
+    """The array path for ``n`` points, or None where the model has none for this rung."""
+    if spec.vectorized is None or rung not in spec.vector_rungs:
+        return None
+    ctx = RunContext(rung=rung, outputs=frozenset(outputs), tolerance=tol)
+    try:
+        with np.errstate(all="ignore"):
+            result = spec.vectorized(x, ctx)
+    except EngineError:
+        return None
+    except (TypeError, ValueError, ArithmeticError):
+        # an array path written for one varied input may not broadcast several: loop
+        return None
+    missing = [name for name in outputs if name not in result.values]
+    if missing and _scalar_gives(spec, x, ctx, missing):
+        return None  # an output the array version lacks but this rung gives: loop
+    values: dict[str, np.ndarray] = {}
+    for name in outputs:
+        if name not in result.values:
+            values[name] = np.full(n, np.nan)  # not computed by this rung
+            continue
+        try:
+            column = np.broadcast_to(np.asarray(result.values[name], dtype=float), (n,))
+        except (TypeError, ValueError):
+            return None
+        values[name] = column.copy()
+    return values
+
+
+def _scalar_gives(
+    spec: ModelSpec, x: Mapping[str, Any], ctx: RunContext, names: Sequence[str]
+) -> bool:
+    """Whether the scalar model gives any of ``names`` at the first point of ``x``."""
+    first = {k: (v.flat[0].item() if isinstance(v, np.ndarray) else v) for k, v in x.items()}
+    try:
+        values = spec.compute(first, ctx).values
+    except EngineError:
+        return False
+    return any(values.get(name) is not None for name in names)
+
+
+def _in_range(param: Param, column: np.ndarray) -> np.ndarray:
+    ok = np.isfinite(column)
+    if param.minimum is not None:
+        ok &= column > param.minimum if param.exclusive_minimum else column >= param.minimum
+    if param.maximum is not None:
+        ok &= column < param.maximum if param.exclusive_maximum else column <= param.maximum
+    return ok
+
+
+def evaluate_chunk(
+    spec: ModelSpec | str,
+    base: Mapping[str, Any],
+    columns: Mapping[str, np.ndarray],
+    outputs: Sequence[str],
+    fidelity: str | None = None,
+    tolerance: float | None = None,
+    deadline_s: float | None = None,
+) -> ChunkResult:
+    """Evaluate the points ``columns`` (equal-length arrays) of a study, in order.
+
+    Points that share a rung run through the model's array path where it has
+    one for that rung (checks are then not reported: CHECK_UNKNOWN), else one
+    by one through :func:`engine.run`. A refused point is NaN in every output.
+    ``deadline_s`` is a budget for the whole chunk, in seconds.
+    """
+    if isinstance(spec, str):
+        from .models import get_model
+
+        spec = get_model(spec)
+    start = time.perf_counter()
+    deadline = None if deadline_s is None else start + deadline_s
+    n = len(next(iter(columns.values())))
+    tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
+    values = {o: np.full(n, np.nan) for o in outputs}
+    checks: dict[str, np.ndarray] = {}
+    rungs: list[str | None] = [None] * n
+    refusals: dict[str, int] = {}
+    cols = {k: np.asarray(v, dtype=float) for k, v in columns.items()}
+    # the fixed inputs with the first point's varied ones (each point is range-checked below)
+    first = {
+        k: (int(v[0]) if spec.param(k).kind == "int" else float(v[0])) for k, v in cols.items()
+    }
+    fixed, _ = spec.validate({**base, **first})
+    valid = np.ones(n, dtype=bool)
+    for name, col in cols.items():
+        valid &= _in_range(spec.param(name), col)
+    x: dict[str, Any] = {**fixed, **cols}
+    for name, col in cols.items():
+        if spec.param(name).kind == "int":
+            x[name] = col.astype(np.int64)
+    asked = fidelity if fidelity is not None else ("auto" if tolerance is not None else None)
+    asked = asked or spec.default_fidelity
+    if asked == "auto":
+        index = _estimates_on_arrays(spec, x, n, tol)
+    else:
+        choose_rung(spec, fixed, asked, tol)  # refuses an unknown rung name
+        index = np.full(n, spec.rung_names.index(asked), dtype=np.int64)
+    loop = np.zeros(n, dtype=bool) if index is not None else valid.copy()
+    if index is not None:
+        for i, rung in enumerate(spec.rung_names):
+            sel = valid & (index == i)
+            if not sel.any():
+                continue
+            sub = {
+                k: (v[sel] if isinstance(v, np.ndarray) and v.shape == (n,) else v)
+                for k, v in x.items()
+            }
+            got = _vector(spec, sub, rung, outputs, tol, int(sel.sum()))
+            if got is None:
+                loop |= sel
+                continue
+            for name, column in got.items():
+                values[name][sel] = column
+            # a point with no finite output is one the model refuses (NaN by the array contract)
+            dead = np.all(np.isnan(np.vstack(list(got.values()))), axis=0)
+            if dead.any():
+                key = "not computable on the array path (an infeasible design)"
+                refusals[key] = refusals.get(key, 0) + int(dead.sum())
+            for j, is_dead in zip(np.flatnonzero(sel).tolist(), dead.tolist(), strict=True):
+                rungs[j] = None if is_dead else rung
+    for j in np.flatnonzero(loop).tolist():
+        if deadline is not None and time.perf_counter() > deadline:
+            raise BudgetExceeded(
+                f"a chunk of the study ran past its {deadline_s:g} s budget", field="samples"
+            )
+        point = {
+            k: (v[j].item() if isinstance(v, np.ndarray) and v.shape == (n,) else v)
+            for k, v in x.items()
+        }
+        try:
+            res = run(
+                spec,
+                {k: v for k, v in point.items() if v is not None},
+                fidelity=asked,
+                tolerance=tol,
+                outputs=outputs,
+                budget_s=None if deadline is None else max(deadline - time.perf_counter(), 1e-3),
+            )
+        except EngineError as exc:
+            key = type(exc).__name__ + ": " + exc.message.split(":")[0][:120]
+            refusals[key] = refusals.get(key, 0) + 1
+            continue
+        rungs[j] = res.rung
+        for name in outputs:
+            v = res.results.get(name)
+            if v is not None:
+                values[name][j] = float(v)
+        for chk in res.checks:
+            arr = checks.get(chk.name)
+            if arr is None:
+                arr = checks[chk.name] = np.full(n, CHECK_UNKNOWN, dtype=np.int8)
+            arr[j] = CHECK_OK if chk.ok else CHECK_FAILED
+    for name in values:
+        values[name][~valid] = np.nan
+    bad = int((~valid).sum())
+    if bad:
+        refusals["outside an input's declared range"] = bad
+    return ChunkResult(values, checks, rungs, refusals, time.perf_counter() - start)
+
+
+def merge(parts: Sequence[ChunkResult], outputs: Sequence[str]) -> ChunkResult:
+    """Concatenate chunk results in order (the order of ``parts``)."""
+    values = {o: np.concatenate([p.values[o] for p in parts]) for o in outputs}
+    names: list[str] = []
+    for p in parts:
+        names += [c for c in p.checks if c not in names]
+    checks = {
+        c: np.concatenate(
+            [p.checks.get(c, np.full(len(p.rungs), CHECK_UNKNOWN, dtype=np.int8)) for p in parts]
+        )
+        for c in names
+    }
+    refusals: dict[str, int] = {}
+    for p in parts:
+        for k, v in p.refusals.items():
+            refusals[k] = refusals.get(k, 0) + v
+    return ChunkResult(
+        values,
+        checks,
+        [r for p in parts for r in p.rungs],
+        refusals,
+        sum(p.elapsed_s for p in parts),
+    )
+
+
+# --------------------------------------------------------------------------- summaries
+
+
+def _stats(column: np.ndarray, bins: int) -> dict[str, Any]:
+    finite = column[np.isfinite(column)]
+    if finite.size == 0:
+        return {"count": 0}
+    lo, hi = float(finite.min()), float(finite.max())
+    try:
+        counts, edges = np.histogram(finite, bins=bins)
+    except ValueError:  # a (near-)constant output: one bin around it
+        counts, edges = np.array([finite.size]), np.array([lo, hi])
+    return {
+        "count": int(finite.size),
+        "mean": float(finite.mean()),
+        "std": float(finite.std(ddof=1)) if finite.size > 1 else 0.0,
+        "min": lo,
+        "max": hi,
+        "quantiles": {
+            f"{q:g}": float(v)
+            for q, v in zip(QUANTILES, np.quantile(finite, QUANTILES), strict=True)
+        },
+        "histogram": {"edges": edges.tolist(), "counts": counts.tolist()},
+    }
+
+
+def _rank(x: np.ndarray) -> np.ndarray:
+    return np.asarray(stats.rankdata(x), dtype=float)
+
+
+def rank_correlations(
+    columns: Mapping[str, np.ndarray], values: Mapping[str, np.ndarray]
+) -> dict[str, dict[str, float | None]]:
+    """Spearman's rank correlation of each output with each varied input (finite points)."""
+    out: dict[str, dict[str, float | None]] = {}
+    for name, y in values.items():
+        ok = np.isfinite(y)
+        row: dict[str, float | None] = {}
+        for var, x in columns.items():
+            if ok.sum() < 3 or np.ptp(x[ok]) == 0 or np.ptp(y[ok]) == 0:
+                row[var] = None
+                continue
+            rx, ry = _rank(x[ok]), _rank(y[ok])
+            row[var] = float(np.corrcoef(rx, ry)[0, 1])
+        out[name] = row
+    return out
+
+
+def sobol_indices(y: np.ndarray, base: int, names: Sequence[str]) -> dict[str, dict[str, float]]:
+    """First-order (Saltelli 2010) and total (Jansen 1999) Sobol' indices.
+
+    ``y`` holds f(A), f(B), f(AB_1) … f(AB_k) in blocks of ``base`` rows.
+    Rows where any needed value is not finite are dropped per input.
+
+    Examples
+    --------
+    An additive model y = x1 + 2 x2 with independent uniform inputs has
+    S1 = ST = 1/5 and 4/5:
+
+    >>> import numpy as np
+    >>> rng = np.random.default_rng(1)
+    >>> a, b = rng.random((4096, 2)), rng.random((4096, 2))
+    >>> ab = [np.column_stack([b[:, 0], a[:, 1]]), np.column_stack([a[:, 0], b[:, 1]])]
+    >>> f = lambda m: m[:, 0] + 2 * m[:, 1]
+    >>> y = np.concatenate([f(a), f(b), f(ab[0]), f(ab[1])])
+    >>> s = sobol_indices(y, 4096, ["x1", "x2"])
+    >>> round(s["x1"]["first"], 1), round(s["x2"]["total"], 1)
+    (0.2, 0.8)
+    """
+    fa, fb = y[:base], y[base : 2 * base]
+    out: dict[str, dict[str, float]] = {}
+    for i, name in enumerate(names):
+        fab = y[(2 + i) * base : (3 + i) * base]
+        ok = np.isfinite(fa) & np.isfinite(fb) & np.isfinite(fab)
+        if ok.sum() < 8:
+            continue
+        var = np.var(np.concatenate([fa[ok], fb[ok]]))
+        if not var > 0.0:
+            out[name] = {"first": 0.0, "total": 0.0}
+            continue
+        first = float(np.mean(fb[ok] * (fab[ok] - fa[ok])) / var)
+        total = float(0.5 * np.mean((fa[ok] - fab[ok]) ** 2) / var)
+        out[name] = {"first": first, "total": total}
+    return out
+
+
+def feasible_mask(merged: ChunkResult, feasible_when: str | None) -> np.ndarray:
+    """Per point: 1 feasible, 0 not, -1 unknown (refused, or no check reported)."""
+    n = len(merged.rungs)
+    if feasible_when is not None:
+        col = merged.values[feasible_when]
+        return np.where(np.isfinite(col), (col > 0.5).astype(np.int8), CHECK_UNKNOWN)
+    if not merged.checks:
+        return np.full(n, CHECK_UNKNOWN, dtype=np.int8)
+    stack = np.vstack(list(merged.checks.values()))
+    failed = (stack == CHECK_FAILED).any(axis=0)
+    known = (stack != CHECK_UNKNOWN).any(axis=0)
+    return np.where(failed, CHECK_FAILED, np.where(known, CHECK_OK, CHECK_UNKNOWN)).astype(np.int8)
+
+
+def _none_if_nan(a: np.ndarray) -> list[Any]:
+    return [None if not math.isfinite(v) else v for v in a.tolist()]
+
+
+def summarize(spec: ModelSpec, study: Study, p: Plan, merged: ChunkResult) -> dict[str, Any]:
+    """JSON-ready summary of a finished study (SI units)."""
+    units = {o.name: o.unit for o in spec.outputs}
+    n = p.n_points
+    outputs = {name: _stats(merged.values[name], study.bins) for name in p.outputs}
+    feasible = feasible_mask(merged, study.feasible_when)
+    checks = {
+        name: {
+            "passed": int((arr == CHECK_OK).sum()),
+            "failed": int((arr == CHECK_FAILED).sum()),
+            "unknown": int((arr == CHECK_UNKNOWN).sum()),
+            "pass_fraction": (
+                float((arr == CHECK_OK).sum() / max(1, (arr != CHECK_UNKNOWN).sum()))
+                if (arr != CHECK_UNKNOWN).any()
+                else None
+            ),
+        }
+        for name, arr in merged.checks.items()
+    }
+    known = feasible != CHECK_UNKNOWN
+    summary: dict[str, Any] = {
+        "model": spec.name,
+        "method": study.method,
+        "points": n,
+        "refused": int(sum(merged.refusals.values())),
+        "refusals": merged.refusals,
+        "units": {name: units[name] for name in p.outputs},
+        "input_units": {name: spec.param(name).unit for name in p.columns},
+        "outputs": outputs,
+        "checks": checks,
+        "feasible": {
+            "criterion": study.feasible_when or "every reported check passes",
+            "fraction": float((feasible == CHECK_OK).sum() / known.sum()) if known.any() else None,
+            "known": int(known.sum()),
+        },
+        "rungs": _rung_counts(merged.rungs),
+        "compute_s": merged.elapsed_s,
+        "notes": list(p.notes),
+    }
+    if merged.checks and any(
+        (arr == CHECK_UNKNOWN).all() for arr in merged.checks.values()
+    ):  # pragma: no cover - defensive; checks arrays are created on first report
+        summary["notes"].append("some checks were never evaluated")
+    if any(r is not None for r in merged.rungs) and not merged.checks:
+        summary["notes"].append(
+            "checks are not evaluated on the model's array path; feasibility then needs "
+            "`feasible_when` (a true/false output)"
+        )
+    # the designs behind the extremes of each output
+    extremes: dict[str, Any] = {}
+    for name in p.outputs:
+        col = merged.values[name]
+        if not np.isfinite(col).any():
+            continue
+        lo, hi = int(np.nanargmin(col)), int(np.nanargmax(col))
+        extremes[name] = {
+            "min": {
+                "value": float(col[lo]),
+                "inputs": {k: float(v[lo]) for k, v in p.columns.items()},
+            },
+            "max": {
+                "value": float(col[hi]),
+                "inputs": {k: float(v[hi]) for k, v in p.columns.items()},
+            },
+        }
+    summary["extremes"] = extremes
+    names = list(p.columns)
+    if p.sobol_base is not None:
+        summary["sensitivity"] = {
+            "method": "sobol (Saltelli 2010 first-order, Jansen 1999 total)",
+            "indices": {
+                name: sobol_indices(merged.values[name], p.sobol_base, names) for name in p.outputs
+            },
+        }
+    elif study.method != "grid":
+        summary["sensitivity"] = {
+            "method": "spearman rank correlation",
+            "indices": rank_correlations(p.columns, {o: merged.values[o] for o in p.outputs}),
+        }
+    if p.grid_shape is not None and p.grid_axes is not None:
+        summary["grid"] = {
+            "axes": {k: v.tolist() for k, v in p.grid_axes.items()},
+            "shape": list(p.grid_shape),
+            "maps": {
+                name: np.asarray(_none_if_nan(merged.values[name]), dtype=object)
+                .reshape(p.grid_shape)
+                .tolist()
+                for name in p.outputs
+            },
+            "feasible": feasible.reshape(p.grid_shape).tolist(),
+        }
+    return summary
+
+
+def _rung_counts(rungs: Sequence[str | None]) -> dict[str, int]:
+    counts: dict[str, int] = {}
+    for r in rungs:
+        key = r if r is not None else "refused"
+        counts[key] = counts.get(key, 0) + 1
+    return counts
+
+
+def points_table(p: Plan, merged: ChunkResult) -> tuple[list[str], np.ndarray]:
+    """The raw points: header and a float matrix (inputs, then outputs; NaN where refused)."""
+    header = [*p.columns, *p.outputs]
+    matrix = np.column_stack(
+        [*(p.columns[c] for c in p.columns), *(merged.values[o] for o in p.outputs)]
+    )
+    return header, matrix

@@ -1,0 +1,219 @@
+"""Run a :class:`~engine.study.Study`: chunks in-process or on a Dask cluster.
+
+The points are drawn once (:func:`engine.study.plan`) and cut into chunks of a
+size fixed by the model alone (array-path chunks of 65,536 points, one-by-one
+chunks of 256), so the same study gives the same chunks, the same values and
+the same summary, bit for bit, whichever executor ran them:
+
+* :class:`InProcess` evaluates the chunks one after another in the calling
+  thread (small studies, tests, a Python user);
+* :class:`DaskExecutor` sends them to ``dask.distributed`` workers: a local
+  cluster sized to the machine (processes, one thread each), started on first
+  use, or an existing scheduler at ``address`` (``DASK_SCHEDULER``), whose
+  workers must have this package installed.
+
+Progress is reported after every chunk; a cancel event stops the study
+between chunks (on Dask, pending chunks are cancelled at once and a running
+chunk ends within its own few hundred milliseconds).
+"""
+
+from __future__ import annotations
+
+import os
+import threading
+import time
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+from typing import Any, Protocol
+
+import numpy as np
+
+from .errors import BudgetExceeded, EngineError
+from .spec import ModelSpec
+from .study import ChunkResult, Plan, Study, chunks, evaluate_chunk, merge, plan, summarize
+
+VECTOR_CHUNK = 65_536
+LOOP_CHUNK = 256
+
+Progress = Callable[[int, int], None]
+
+
+class Cancelled(EngineError):
+    """The study was cancelled before it finished."""
+
+    kind = "cancelled"
+
+
+@dataclass
+class StudyRun:
+    """A finished study: the summary, the plan and the merged raw values."""
+
+    summary: dict[str, Any]
+    plan: Plan
+    merged: ChunkResult
+    elapsed_s: float
+
+
+ChunkArgs = tuple[
+    ModelSpec | str, dict[str, Any], dict[str, np.ndarray], tuple[str, ...], Any, Any, Any
+]
+
+
+class Executor(Protocol):
+    """Runs chunk evaluations; yields ``(index, ChunkResult)`` as they finish."""
+
+    def map(
+        self, calls: list[ChunkArgs], cancel: threading.Event
+    ) -> Iterator[tuple[int, ChunkResult]]: ...
+
+
+class InProcess:
+    """Evaluate chunks one after another in the calling thread."""
+
+    def map(
+        self, calls: list[ChunkArgs], cancel: threading.Event
+    ) -> Iterator[tuple[int, ChunkResult]]:
+        for i, args in enumerate(calls):
+            if cancel.is_set():
+                return
+            yield i, evaluate_chunk(*args)
+
+
+class DaskExecutor:
+    """Evaluate chunks on ``dask.distributed`` workers (local cluster or ``address``)."""
+
+    def __init__(self, address: str | None = None, n_workers: int | None = None) -> None:
+        self.address = address
+        self.n_workers = n_workers or os.cpu_count() or 1
+        self._client: Any = None
+        self._cluster: Any = None
+        self._lock = threading.Lock()
+
+    def client(self) -> Any:
+        with self._lock:
+            if self._client is None:
+                from dask.distributed import Client, LocalCluster
+
+                if self.address:
+                    self._client = Client(self.address, set_as_default=False, timeout="10s")
+                else:
+                    self._cluster = LocalCluster(
+                        n_workers=self.n_workers,
+                        threads_per_worker=1,
+                        processes=True,
+                        host="127.0.0.1",
+                        dashboard_address=None,
+                        silence_logs=40,
+                    )
+                    self._client = Client(self._cluster, set_as_default=False)
+                    # the local workers share this machine with the service: lower their
+                    # priority so single calculations get the cores first
+                    self._client.run(os.nice, 10)
+            return self._client
+
+    def map(
+        self, calls: list[ChunkArgs], cancel: threading.Event
+    ) -> Iterator[tuple[int, ChunkResult]]:
+        from dask.distributed import as_completed
+
+        client = self.client()
+        # workers look the model up by name in their own registry (a spec's functions
+        # need not pickle)
+        futures = [
+            client.submit(evaluate_chunk, _name(args[0]), *args[1:], pure=False) for args in calls
+        ]
+        index = {f.key: i for i, f in enumerate(futures)}
+        finished = threading.Event()
+
+        def watch() -> None:
+            # cancel the pending chunks the moment the study is cancelled, not when the
+            # next chunk happens to finish
+            while not finished.wait(0.02):
+                if cancel.is_set():
+                    client.cancel([f for f in futures if not f.done()])
+                    return
+
+        threading.Thread(target=watch, name="study-cancel", daemon=True).start()
+        try:
+            for fut in as_completed(futures, loop=client.loop, with_results=False):
+                if cancel.is_set():
+                    break
+                yield index[fut.key], fut.result()
+        finally:
+            finished.set()
+            pending = [f for f in futures if not f.done()]
+            if pending:
+                client.cancel(pending)
+
+    def close(self) -> None:
+        with self._lock:
+            if self._client is not None:
+                self._client.close()
+            if self._cluster is not None:
+                self._cluster.close()
+            self._client = self._cluster = None
+
+
+def _name(spec: ModelSpec | str) -> str:
+    return spec if isinstance(spec, str) else spec.name
+
+
+def chunk_size(spec: ModelSpec, study: Study) -> int:
+    """Points per chunk: fixed by the model and fidelity, never by timing (bit-identical runs)."""
+    rung = study.fidelity or ("auto" if study.tolerance is not None else spec.default_fidelity)
+    vector = spec.vectorized is not None and (rung == "auto" or rung in spec.vector_rungs)
+    return VECTOR_CHUNK if vector else LOOP_CHUNK
+
+
+def run_study(
+    spec: ModelSpec,
+    study: Study,
+    executor: Executor | None = None,
+    *,
+    progress: Progress | None = None,
+    cancel: threading.Event | None = None,
+    budget_s: float | None = None,
+    chunk_budget_s: float | None = 60.0,
+) -> StudyRun:
+    """Plan, evaluate and summarise ``study``; raise Cancelled or BudgetExceeded when stopped."""
+    start = time.perf_counter()
+    p = plan(spec, study)
+    cancel = cancel or threading.Event()
+    slices = chunks(p.n_points, chunk_size(spec, study))
+    base = {k: v for k, v in study.base.items() if v is not None}
+    calls: list[ChunkArgs] = [
+        (
+            spec,
+            base,
+            {k: v[a:b] for k, v in p.columns.items()},
+            p.outputs,
+            study.fidelity,
+            study.tolerance,
+            chunk_budget_s,
+        )
+        for a, b in slices
+    ]
+    parts: list[ChunkResult | None] = [None] * len(calls)
+    done = 0
+    if progress:
+        progress(0, p.n_points)
+    for i, part in (executor or InProcess()).map(calls, cancel):
+        parts[i] = part
+        a, b = slices[i]
+        done += b - a
+        if progress:
+            progress(done, p.n_points)
+        if budget_s is not None and time.perf_counter() - start > budget_s:
+            cancel.set()
+            raise BudgetExceeded(
+                f"the study stopped after {done} of {p.n_points} points at its {budget_s:g} s "
+                "budget",
+                field="samples",
+            )
+    if cancel.is_set() or any(part is None for part in parts):
+        raise Cancelled(f"the study was cancelled after {done} of {p.n_points} points")
+    merged = merge([part for part in parts if part is not None], p.outputs)
+    summary = summarize(spec, study, p, merged)
+    elapsed = time.perf_counter() - start
+    summary["elapsed_s"] = elapsed
+    return StudyRun(summary, p, merged, elapsed)

@@ -1,0 +1,428 @@
+"""Design studies as jobs: ``POST <model path>/study`` → 202, then poll, fetch, cancel.
+
+A study (:mod:`engine.study`) can take minutes, so it never runs in a request:
+the POST validates it, draws nothing yet, and returns ``202`` with the job's
+address. A small pool of job threads drives studies; a study of at most
+``STUDY_INPROCESS_POINTS`` points runs in that thread, a larger one on Dask
+(:class:`engine.study_exec.DaskExecutor`): a local cluster sized to the
+machine, started when the first large study arrives, or the scheduler named
+by ``DASK_SCHEDULER``. Studies never use the engine pool that serves single
+calculations, and their heavy compute runs in Dask's worker processes, not in
+the service's interpreter.
+
+Budgets: ``STUDY_MAX_POINTS`` points and ``STUDY_BUDGET_S`` seconds per study;
+at most ``STUDY_PER_CLIENT`` unfinished studies per client address and
+``STUDY_MAX_ACTIVE`` in all (503 with Retry-After beyond that). Finished jobs
+are kept for ``STUDY_KEEP_S`` seconds (at most 64).
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import os
+import threading
+import time
+import uuid
+from collections.abc import Sequence
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+from fastapi import APIRouter, HTTPException, Request, Response
+from fastapi.responses import JSONResponse
+from pydantic import BaseModel, ConfigDict, Field
+
+import engine
+from engine import ModelSpec
+from engine.study import DISTRIBUTIONS, METHODS, Study, Variable, plan, points_table
+from engine.study_exec import Cancelled, DaskExecutor, InProcess, StudyRun, run_study
+
+from .api import API_PREFIX
+from .units import UnitError, to_si
+
+_KEEP_JOBS = 64
+
+
+def _env_int(name: str, default: int) -> int:
+    return int(os.environ.get(name, str(default)))
+
+
+def _env_float(name: str, default: float) -> float:
+    return float(os.environ.get(name, str(default)))
+
+
+@dataclass(frozen=True)
+class StudySettings:
+    """Study bounds and the Dask cluster, from the environment (each has a default)."""
+
+    max_points: int = field(default_factory=lambda: _env_int("STUDY_MAX_POINTS", 2_000_000))
+    budget_s: float = field(default_factory=lambda: _env_float("STUDY_BUDGET_S", 600.0))
+    per_client: int = field(default_factory=lambda: _env_int("STUDY_PER_CLIENT", 2))
+    max_active: int = field(default_factory=lambda: _env_int("STUDY_MAX_ACTIVE", 4))
+    inprocess_points: int = field(default_factory=lambda: _env_int("STUDY_INPROCESS_POINTS", 2000))
+    keep_s: float = field(default_factory=lambda: _env_float("STUDY_KEEP_S", 3600.0))
+    keep_points_max: int = field(default_factory=lambda: _env_int("STUDY_KEEP_POINTS", 1_000_000))
+    dask_scheduler: str | None = field(
+        default_factory=lambda: os.environ.get("DASK_SCHEDULER") or None
+    )
+    dask_workers: int | None = field(default_factory=lambda: _env_int("DASK_WORKERS", 0) or None)
+
+
+Number = float | str
+
+
+class VariableIn(BaseModel):
+    """One varied input: a grid axis or a distribution; numbers SI or strings with a unit."""
+
+    model_config = ConfigDict(extra="forbid")
+    name: str = Field(max_length=80, description="the input to vary")
+    distribution: Literal["uniform", "normal", "triangular"] = Field(
+        default="uniform", description="for Monte Carlo, LHS and Sobol' (ignored by a grid)"
+    )
+    low: Number | None = Field(default=None, description="lower end (grid, uniform, triangular)")
+    high: Number | None = Field(default=None, description="upper end")
+    mean: Number | None = Field(default=None, description="normal: mean")
+    sd: Number | None = Field(default=None, description="normal: standard deviation")
+    mode: Number | None = Field(default=None, description="triangular: most likely value")
+    num: int = Field(default=11, ge=2, le=1000, description="grid: points on this axis")
+    scale: Literal["linear", "log"] = Field(default="linear", description="grid: spacing")
+
+
+class StudyIn(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    base: dict[str, float | int | bool | str] = Field(
+        default_factory=dict, description="inputs held fixed (defaults fill the rest)"
+    )
+    variables: list[VariableIn] = Field(min_length=1, max_length=12)
+    method: Literal["grid", "monte_carlo", "lhs", "sobol"] = "monte_carlo"
+    samples: int = Field(default=1000, ge=2, le=2_000_000)
+    seed: int = Field(default=0, ge=0, lt=2**63)
+    fidelity: str | None = Field(default=None, max_length=40)
+    tolerance: float | None = Field(default=None, gt=0, lt=1, allow_inf_nan=False)
+    outputs: list[str] | None = Field(default=None, max_length=200)
+    bins: int = Field(default=30, ge=1, le=200)
+    feasible_when: str | None = Field(default=None, max_length=80)
+    keep_points: bool = Field(
+        default=False, description="keep the raw points for GET /api/v1/jobs/{id}/points.csv"
+    )
+
+
+@dataclass
+class Job:
+    id: str
+    model: str
+    client: str
+    total: int
+    keep_points: bool
+    state: str = "queued"
+    #: What a running job is doing: starting the cluster, evaluating, summarising.
+    phase: str = "waiting for a study thread"
+    done: int = 0
+    created: float = field(default_factory=time.time)
+    started: float | None = None
+    finished: float | None = None
+    error: dict[str, Any] | None = None
+    run: StudyRun | None = None
+    cancel: threading.Event = field(default_factory=threading.Event)
+
+    @property
+    def active(self) -> bool:
+        return self.state in ("queued", "running")
+
+    def describe(self) -> dict[str, Any]:
+        now = time.time()
+        elapsed = 0.0 if self.started is None else (self.finished or now) - self.started
+        rate = self.done / elapsed if elapsed > 0 else None
+        left = None
+        if rate and self.state == "running":
+            left = (self.total - self.done) / rate
+        body: dict[str, Any] = {
+            "job": self.id,
+            "model": self.model,
+            "state": self.state,
+            "phase": self.phase if self.active else self.state,
+            "progress": {
+                "done": self.done,
+                "total": self.total,
+                "fraction": self.done / self.total if self.total else 1.0,
+                "rate_per_s": rate,
+                "elapsed_s": elapsed,
+                "eta_s": left,
+            },
+            "links": {"self": f"{API_PREFIX}/jobs/{self.id}"},
+        }
+        if self.error is not None:
+            body["error"] = self.error
+        if self.run is not None:
+            body["result"] = self.run.summary
+            if self.keep_points:
+                body["links"]["points_csv"] = f"{API_PREFIX}/jobs/{self.id}/points.csv"
+        return body
+
+
+def _json_clean(value: Any) -> Any:
+    """Summaries are built from finite values, but a NaN must never reach JSON."""
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {k: _json_clean(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_json_clean(v) for v in value]
+    return value
+
+
+class Studies:
+    """The job table, the job threads and the Dask executor, for one app."""
+
+    def __init__(self, settings: StudySettings) -> None:
+        self.settings = settings
+        self.jobs: dict[str, Job] = {}
+        self.lock = threading.Lock()
+        self.threads = ThreadPoolExecutor(
+            max_workers=max(1, settings.max_active), thread_name_prefix="study"
+        )
+        self._dask: DaskExecutor | None = None
+
+    def dask(self) -> DaskExecutor:
+        with self.lock:
+            if self._dask is None:
+                self._dask = DaskExecutor(
+                    self.settings.dask_scheduler, n_workers=self.settings.dask_workers
+                )
+            return self._dask
+
+    def _prune(self) -> None:
+        now = time.time()
+        done = sorted(
+            (j for j in self.jobs.values() if not j.active), key=lambda j: j.finished or 0.0
+        )
+        for j in done:
+            if now - (j.finished or now) > self.settings.keep_s or len(done) > _KEEP_JOBS:
+                del self.jobs[j.id]
+                done.remove(j)
+
+    def submit(self, spec: ModelSpec, study: Study, client: str, keep_points: bool) -> Job:
+        p = plan(spec, study)  # refuses a bad study now, with a 422, before any job exists
+        if p.n_points > self.settings.max_points:
+            raise engine.InputOutOfRange(
+                f"the study has {p.n_points} points, over this server's limit of "
+                f"{self.settings.max_points} (STUDY_MAX_POINTS)",
+                field="samples",
+            )
+        if keep_points and p.n_points > self.settings.keep_points_max:
+            raise engine.InputOutOfRange(
+                f"keep_points is allowed up to {self.settings.keep_points_max} points",
+                field="keep_points",
+            )
+        with self.lock:
+            self._prune()
+            active = [j for j in self.jobs.values() if j.active]
+            mine = [j for j in active if j.client == client]
+            if len(mine) >= self.settings.per_client or len(active) >= self.settings.max_active:
+                raise HTTPException(
+                    status_code=503,
+                    detail=(
+                        f"{len(mine)} of your studies and {len(active)} in all are running "
+                        f"(limits {self.settings.per_client} per client, "
+                        f"{self.settings.max_active} in all); retry when one finishes or "
+                        "cancel one"
+                    ),
+                    headers={"retry-after": "5"},
+                )
+            job = Job(uuid.uuid4().hex, spec.name, client, p.n_points, keep_points)
+            self.jobs[job.id] = job
+        self.threads.submit(self._work, job, spec, study)
+        return job
+
+    def _work(self, job: Job, spec: ModelSpec, study: Study) -> None:
+        job.state, job.started = "running", time.time()
+
+        def progress(done: int, total: int) -> None:
+            job.done = done
+            job.phase = "summarising" if done == total else "evaluating"
+
+        try:
+            if job.total <= self.settings.inprocess_points:
+                executor: InProcess | DaskExecutor = InProcess()
+            else:
+                executor = self.dask()
+                job.phase = "starting the Dask workers"
+                executor.client()
+            result = run_study(
+                spec,
+                study,
+                executor,
+                progress=progress,
+                cancel=job.cancel,
+                budget_s=self.settings.budget_s,
+            )
+            result.summary = _json_clean(result.summary)
+            job.run, job.state = result, "done"
+        except Cancelled:
+            job.state = "cancelled"
+        except engine.EngineError as exc:
+            job.state = "failed"
+            job.error = {"type": exc.kind, "msg": exc.message, "field": exc.field}
+        except Exception as exc:  # a worker that died, a lost scheduler: said, not hidden
+            job.state = "failed"
+            job.error = {"type": "study_failed", "msg": f"{type(exc).__name__}: {exc}"[:300]}
+        finally:
+            job.finished = time.time()
+
+    def get(self, job_id: str) -> Job:
+        with self.lock:
+            job = self.jobs.get(job_id)
+        if job is None:
+            raise HTTPException(status_code=404, detail=f"no job {job_id[:40]!r}")
+        return job
+
+    def cancel(self, job_id: str) -> Job:
+        job = self.get(job_id)
+        job.cancel.set()
+        if job.state == "queued":
+            job.state, job.finished = "cancelled", time.time()
+        return job
+
+    def shutdown(self) -> None:
+        for job in list(self.jobs.values()):
+            job.cancel.set()
+        self.threads.shutdown(wait=False, cancel_futures=True)
+        if self._dask is not None:
+            self._dask.close()
+
+
+def _si(spec: ModelSpec, name: str, value: Number | None, what: str) -> float | None:
+    if value is None:
+        return None
+    try:
+        unit = spec.param(name).unit
+    except KeyError:
+        raise engine.InputOutOfRange(
+            f"variables: {name!r} is not an input of {spec.name}", field="variables"
+        ) from None
+    if isinstance(value, str):
+        try:
+            return to_si(value, unit)
+        except UnitError as exc:
+            raise engine.InputOutOfRange(
+                f"variables: {name}.{what}: {exc}", field="variables"
+            ) from None
+    if not math.isfinite(value):
+        raise engine.InputOutOfRange(f"variables: {name}.{what} must be finite", field="variables")
+    return float(value)
+
+
+def to_study(spec: ModelSpec, body: StudyIn) -> Study:
+    """The engine's :class:`Study` from a request body (unit strings → SI)."""
+    base: dict[str, Any] = {}
+    for name, value in body.base.items():
+        try:
+            param = spec.param(name)
+        except KeyError:
+            raise engine.InputOutOfRange(
+                f"base: unknown input {name!r} for model {spec.name}", field="base"
+            ) from None
+        if isinstance(value, str) and param.is_numeric:
+            try:
+                value = to_si(value, param.unit)
+            except UnitError as exc:
+                raise engine.InputOutOfRange(f"{name}: {exc}", field=name) from None
+        base[name] = value
+    variables = tuple(
+        Variable(
+            v.name,
+            v.distribution,
+            low=_si(spec, v.name, v.low, "low"),
+            high=_si(spec, v.name, v.high, "high"),
+            mean=_si(spec, v.name, v.mean, "mean"),
+            sd=_si(spec, v.name, v.sd, "sd"),
+            mode=_si(spec, v.name, v.mode, "mode"),
+            num=v.num,
+            scale=v.scale,
+        )
+        for v in body.variables
+    )
+    return Study(
+        variables=variables,
+        base=base,
+        method=body.method,
+        samples=body.samples,
+        seed=body.seed,
+        fidelity=body.fidelity,
+        tolerance=body.tolerance,
+        outputs=None if body.outputs is None else tuple(body.outputs),
+        bins=body.bins,
+        feasible_when=body.feasible_when,
+    )
+
+
+def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
+    """``POST <path>/study`` per model, and ``/jobs/{id}`` to poll, fetch and cancel."""
+    router = APIRouter(prefix=API_PREFIX, tags=["studies"])
+
+    def add(spec: ModelSpec) -> None:
+        async def submit(body: StudyIn, request: Request) -> JSONResponse:
+            study = to_study(spec, body)
+            client = request.client.host if request.client else "unknown"
+            job = studies.submit(spec, study, client, body.keep_points)
+            return JSONResponse(
+                job.describe(),
+                status_code=202,
+                headers={"location": f"{API_PREFIX}/jobs/{job.id}"},
+            )
+
+        router.add_api_route(
+            spec.path + "/study",
+            submit,
+            methods=["POST"],
+            status_code=202,
+            summary=f"{spec.title}: a design study (grid, Monte Carlo, LHS, Sobol')",
+            description=(
+                "Vary up to 12 inputs (a grid: up to 3) by distribution "
+                f"({', '.join(DISTRIBUTIONS)}) with method one of {', '.join(METHODS)}; "
+                "returns 202 with a job to poll at GET /api/v1/jobs/{id}."
+            ),
+            operation_id=spec.name.replace(".", "_") + "_study",
+        )
+
+    for spec in models:
+        add(spec)
+
+    @router.get("/jobs/{job_id}", summary="A study's state, progress and, when done, result")
+    def get_job(job_id: str) -> dict[str, Any]:
+        return studies.get(job_id).describe()
+
+    @router.delete("/jobs/{job_id}", summary="Cancel a study and free its workers")
+    def cancel_job(job_id: str) -> dict[str, Any]:
+        return studies.cancel(job_id).describe()
+
+    @router.get(
+        "/jobs/{job_id}/points.csv",
+        summary="The raw points of a finished study (asked with keep_points)",
+        response_class=Response,
+    )
+    def points(job_id: str) -> Response:
+        job = studies.get(job_id)
+        if job.run is None or not job.keep_points:
+            raise HTTPException(
+                status_code=404,
+                detail="no points: the study is not done, or was run without keep_points",
+            )
+        header, matrix = points_table(job.run.plan, job.run.merged)
+        out = io.StringIO()
+        writer = csv.writer(out)
+        writer.writerow(header)
+        for row in matrix.tolist():
+            writer.writerow(["" if not math.isfinite(v) else repr(v) for v in row])
+        return Response(
+            out.getvalue(),
+            media_type="text/csv",
+            headers={"content-disposition": f'attachment; filename="study-{job.id}.csv"'},
+        )
+
+    return router
+
+
+__all__ = ["Studies", "StudySettings", "study_router", "to_study"]

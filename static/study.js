@@ -1,0 +1,477 @@
+// The design-study page: builds a study from the catalogue (GET /api/v1/models), submits it
+// (POST <model path>/study → 202 and a job), polls the job for progress, cancels it, and draws
+// the summary: histogram with reference lines, grid map with the feasible region, sensitivity bars.
+// Plain ES module, no build step, nothing fetched but this server.
+
+const $ = (sel) => document.querySelector(sel);
+const API = "api/v1";
+let catalogue = [];
+let model = null;
+let job = null;
+let timer = null;
+let summary = null;
+
+function el(tag, attrs = {}, ...children) {
+  const node = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs)) {
+    if (k === "text") node.textContent = v;
+    else if (v !== undefined && v !== null && v !== false) node.setAttribute(k, v === true ? "" : v);
+  }
+  for (const c of children) node.append(c);
+  return node;
+}
+
+function fmt(v, digits = 4) {
+  if (v === null || v === undefined || Number.isNaN(v)) return "–";
+  if (typeof v === "boolean") return v ? "yes" : "no";
+  const a = Math.abs(v);
+  if (a !== 0 && (a < 1e-3 || a >= 1e6)) return v.toExponential(digits - 1);
+  return Number(v.toPrecision(digits)).toLocaleString("en", { maximumFractionDigits: 10 });
+}
+
+function label(p) {
+  return p.label || p.name.replaceAll("_", " ");
+}
+
+async function loadCatalogue() {
+  const r = await fetch(`${API}/models`);
+  catalogue = (await r.json()).models;
+  const sel = $("#study-model");
+  for (const m of catalogue) sel.append(el("option", { value: m.name, text: `${m.title}` }));
+  const wanted = new URLSearchParams(location.search).get("model");
+  if (wanted && catalogue.some((m) => m.name === wanted)) sel.value = wanted;
+  sel.addEventListener("change", () => pickModel(sel.value));
+  pickModel(sel.value);
+}
+
+function lawCell(p, value) {
+  const cell = el("div", { class: "law" });
+  const law = el("select", { "aria-label": `${label(p)}: law`, "data-part": "distribution" });
+  for (const d of ["uniform", "normal", "triangular"]) law.append(el("option", { value: d, text: d }));
+  const num = typeof value === "number" ? value : Number(p.default) || 1;
+  const spread = Math.abs(num) * 0.1 || 0.1;
+  const lo = p.minimum !== null ? Math.max(p.minimum, num - spread) : num - spread;
+  const hi = p.maximum !== null ? Math.min(p.maximum, num + spread) : num + spread;
+  const field = (part, v, title) =>
+    el("input", { "data-part": part, value: String(Number(v.toPrecision(6))), "aria-label": `${label(p)}: ${title}`, title });
+  cell.append(
+    law,
+    field("low", lo, "low"),
+    field("high", hi, "high"),
+    field("mean", num, "mean"),
+    field("sd", spread / 2, "standard deviation"),
+    field("mode", num, "mode"),
+    field("num", 11, "grid points"),
+  );
+  const update = () => {
+    const method = $("#study-method").value;
+    const d = law.value;
+    for (const input of cell.querySelectorAll("input")) {
+      const part = input.dataset.part;
+      const show =
+        method === "grid"
+          ? ["low", "high", "num"].includes(part)
+          : part === "num"
+            ? false
+            : d === "uniform"
+              ? ["low", "high"].includes(part)
+              : d === "normal"
+                ? ["mean", "sd"].includes(part)
+                : ["low", "high", "mode"].includes(part);
+      input.hidden = !show;
+    }
+    law.hidden = method === "grid";
+  };
+  law.addEventListener("change", update);
+  $("#study-method").addEventListener("change", update);
+  update();
+  return cell;
+}
+
+function pickModel(name) {
+  model = catalogue.find((m) => m.name === name);
+  $("#study-model-hint").textContent = model.summary;
+  const example = (model.examples && model.examples[0]) || {};
+  const rows = $("#study-rows");
+  rows.replaceChildren();
+  for (const p of model.inputs) {
+    const value = example[p.name] ?? p.default;
+    const id = `in-${p.name}`;
+    let control;
+    if (p.kind === "choice") {
+      control = el("select", { id, "data-name": p.name });
+      for (const c of p.choices) control.append(el("option", { value: c, text: c }));
+      if (value !== null && value !== undefined) control.value = value;
+    } else if (p.kind === "bool") {
+      control = el("input", { id, type: "checkbox", "data-name": p.name });
+      control.checked = Boolean(value);
+    } else {
+      control = el("input", {
+        id,
+        "data-name": p.name,
+        value: value === null || value === undefined ? "" : String(value),
+        placeholder: p.required ? "required" : "optional",
+        "aria-describedby": `${id}-range`,
+      });
+    }
+    const vary = el("input", { type: "checkbox", "aria-label": `vary ${label(p)}` });
+    vary.disabled = !(p.kind === "float" || p.kind === "int");
+    const valueCell = el("td", {}, control);
+    const law = vary.disabled ? null : lawCell(p, typeof value === "number" ? value : Number(p.default));
+    vary.addEventListener("change", () => {
+      valueCell.replaceChildren(vary.checked ? law : control);
+    });
+    const tr = el(
+      "tr",
+      { "data-name": p.name },
+      el("td", {}, vary),
+      el("td", { class: "name" }, el("label", { for: id, text: label(p) }), el("div", { class: "hint", id: `${id}-range`, text: p.range })),
+      valueCell,
+      el("td", { class: "unit", text: p.unit === "1" ? "" : p.unit }),
+    );
+    tr.vary = vary;
+    tr.control = control;
+    tr.law = law;
+    rows.append(tr);
+  }
+  const fid = $("#study-fidelity");
+  fid.replaceChildren(el("option", { value: "", text: `default (${model.default_fidelity})` }), el("option", { value: "auto", text: "auto" }));
+  for (const r of model.rungs) fid.append(el("option", { value: r.name, text: r.name }));
+  const feas = $("#study-feasible");
+  feas.replaceChildren(el("option", { value: "", text: "every reported check passes" }));
+  for (const o of model.outputs.filter((o) => o.kind === "bool" && !o.series)) feas.append(el("option", { value: o.name, text: label(o) }));
+}
+
+function number(text) {
+  const t = String(text).trim().replace(/^(-?\d+),(\d+)$/, "$1.$2"); // a decimal comma
+  return t !== "" && !Number.isNaN(Number(t)) ? Number(t) : t;
+}
+
+function body() {
+  const base = {};
+  const variables = [];
+  for (const tr of $("#study-rows").children) {
+    const name = tr.dataset.name;
+    if (tr.vary.checked) {
+      const v = { name, distribution: tr.law.querySelector("select").value };
+      for (const input of tr.law.querySelectorAll("input")) {
+        if (input.hidden || input.value.trim() === "") continue;
+        v[input.dataset.part] = input.dataset.part === "num" ? parseInt(input.value, 10) : number(input.value);
+      }
+      variables.push(v);
+    } else if (tr.control.type === "checkbox") {
+      base[name] = tr.control.checked;
+    } else if (tr.control.value.trim() !== "") {
+      base[name] = tr.control.tagName === "SELECT" ? tr.control.value : number(tr.control.value);
+    }
+  }
+  const out = {
+    base,
+    variables,
+    method: $("#study-method").value,
+    samples: parseInt($("#study-samples").value, 10) || 1000,
+    seed: parseInt($("#study-seed").value, 10) || 0,
+    keep_points: $("#study-keep").checked,
+  };
+  if ($("#study-fidelity").value) out.fidelity = $("#study-fidelity").value;
+  if ($("#study-tolerance").value.trim()) out.tolerance = Number(number($("#study-tolerance").value));
+  if ($("#study-feasible").value) out.feasible_when = $("#study-feasible").value;
+  return out;
+}
+
+function showError(detail) {
+  const items = Array.isArray(detail) ? detail : [{ msg: String(detail) }];
+  $("#study-error").textContent = items.map((d) => (d.field ? `${d.field}: ${d.msg}` : d.msg)).join("; ");
+}
+
+async function run(event) {
+  event.preventDefault();
+  $("#study-error").textContent = "";
+  const b = body();
+  if (!b.variables.length) return showError("tick at least one input to vary");
+  $("#study-run").disabled = true;
+  const r = await fetch(`${API}${model.path}/study`, {
+    method: "POST",
+    headers: { "content-type": "application/json" },
+    body: JSON.stringify(b),
+  });
+  const reply = await r.json();
+  if (r.status !== 202) {
+    $("#study-run").disabled = false;
+    return showError(reply.detail);
+  }
+  job = reply.job;
+  $("#study-cancel").disabled = false;
+  $("#study-result").hidden = true;
+  poll();
+}
+
+async function poll() {
+  const r = await fetch(`${API}/jobs/${job}`);
+  const j = await r.json();
+  const p = j.progress;
+  $("#study-progress").value = p.fraction;
+  const rate = p.rate_per_s ? `${fmt(p.rate_per_s, 3)} designs/s` : "";
+  const eta = p.eta_s !== null && p.eta_s !== undefined ? `, ${fmt(p.eta_s, 2)} s left` : "";
+  const phase = j.state === "running" && j.phase ? ` (${j.phase})` : "";
+  $("#study-status").textContent = `${j.state}${phase}: ${p.done.toLocaleString("en")} of ${p.total.toLocaleString("en")} designs ${rate}${eta}`;
+  if (j.state === "queued" || j.state === "running") {
+    timer = setTimeout(poll, 300);
+    return;
+  }
+  $("#study-run").disabled = false;
+  $("#study-cancel").disabled = true;
+  if (j.state === "done") render(j);
+  else if (j.error) showError(j.error.msg);
+}
+
+async function cancel() {
+  if (!job) return;
+  clearTimeout(timer);
+  await fetch(`${API}/jobs/${job}`, { method: "DELETE" });
+  poll();
+}
+
+function render(j) {
+  summary = j.result;
+  $("#study-result").hidden = false;
+  const feas = summary.feasible.fraction;
+  $("#study-meta").textContent =
+    `${summary.points.toLocaleString("en")} designs (${summary.method.replace("_", " ")}), ` +
+    `${summary.refused} refused; feasible (${summary.feasible.criterion}): ` +
+    `${feas === null ? "not known" : (100 * feas).toFixed(1) + " %"}; ` +
+    `method of the model: ${Object.entries(summary.rungs).map(([k, v]) => `${k} ×${v}`).join(", ")}; ` +
+    `${fmt(summary.elapsed_s, 3)} s.`;
+  const names = Object.keys(summary.outputs);
+  const sel = $("#study-output");
+  sel.replaceChildren(...names.map((n) => el("option", { value: n, text: n.replaceAll("_", " ") })));
+  const lines = $("#study-lines");
+  lines.replaceChildren(...names.map((n) => el("option", { value: n, text: n.replaceAll("_", " ") })));
+  const preferred = ["required_preload", "yield_preload", "permissible_preload"];
+  for (const o of lines.options) o.selected = preferred.includes(o.value);
+  const first = names.find((n) => summary.outputs[n].count && summary.outputs[n].max !== summary.outputs[n].min) || names[0];
+  sel.value = first;
+  sel.onchange = lines.onchange = draw;
+  // statistics table
+  const head = el("tr", {}, ...["output", "unit", "mean", "sd", "1 %", "50 %", "99 %", "min", "max"].map((h) => el("th", { scope: "col", text: h })));
+  const rows = names.map((n) => {
+    const s = summary.outputs[n];
+    const q = s.quantiles || {};
+    return el(
+      "tr",
+      {},
+      el("th", { scope: "row", text: n.replaceAll("_", " ") }),
+      el("td", { text: summary.units[n] === "1" ? "" : summary.units[n] }),
+      ...[s.mean, s.std, q["0.01"], q["0.5"], q["0.99"], s.min, s.max].map((v) => el("td", { class: "num", text: fmt(v) })),
+    );
+  });
+  $("#study-stats").replaceChildren(el("thead", {}, head), el("tbody", {}, ...rows));
+  $("#study-checks").replaceChildren(
+    ...Object.entries(summary.checks).map(([name, c]) =>
+      el("li", { class: c.failed ? "fail" : "ok" }, el("span", { class: "mark", text: c.failed ? "✗ " : "✓ " }),
+        `${name}: ${c.pass_fraction === null ? "not evaluated" : (100 * c.pass_fraction).toFixed(1) + " % pass"} (${c.failed} fail)`),
+    ),
+  );
+  if (!Object.keys(summary.checks).length) $("#study-checks").append(el("li", { text: "no checks reported (array path); see notes" }));
+  $("#study-notes").replaceChildren(...summary.notes.map((n) => el("li", { text: n })),
+    ...Object.entries(summary.refusals || {}).map(([k, v]) => el("li", { text: `${v} refused: ${k}` })));
+  const blob = new Blob([JSON.stringify(summary, null, 1)], { type: "application/json" });
+  $("#study-json").href = URL.createObjectURL(blob);
+  const csv = $("#study-csv");
+  csv.hidden = !j.links.points_csv;
+  if (j.links.points_csv) csv.href = j.links.points_csv.replace(/^\//, "");
+  draw();
+}
+
+function draw() {
+  const name = $("#study-output").value;
+  drawHistogram(name);
+  drawMap(name);
+  drawSensitivity(name);
+}
+
+function axes(ctx, w, h, pad, xlo, xhi, ylo, yhi, xlabel, ylabel) {
+  ctx.strokeStyle = "#5b6670";
+  ctx.fillStyle = "#1d2630";
+  ctx.font = "12px system-ui, sans-serif";
+  ctx.beginPath();
+  ctx.moveTo(pad.l, pad.t);
+  ctx.lineTo(pad.l, h - pad.b);
+  ctx.lineTo(w - pad.r, h - pad.b);
+  ctx.stroke();
+  ctx.textAlign = "center";
+  for (let i = 0; i <= 4; i++) {
+    const x = pad.l + ((w - pad.l - pad.r) * i) / 4;
+    ctx.fillText(fmt(xlo + ((xhi - xlo) * i) / 4, 3), x, h - pad.b + 14);
+  }
+  ctx.fillText(xlabel, (w + pad.l - pad.r) / 2, h - 4);
+  ctx.textAlign = "right";
+  for (let i = 0; i <= 4; i++) {
+    const y = h - pad.b - ((h - pad.t - pad.b) * i) / 4;
+    ctx.fillText(fmt(ylo + ((yhi - ylo) * i) / 4, 3), pad.l - 4, y + 4);
+  }
+  ctx.save();
+  ctx.translate(12, (h - pad.b + pad.t) / 2);
+  ctx.rotate(-Math.PI / 2);
+  ctx.textAlign = "center";
+  ctx.fillText(ylabel, 0, 0);
+  ctx.restore();
+}
+
+function drawHistogram(name) {
+  const canvas = $("#study-hist");
+  const ctx = canvas.getContext("2d");
+  const w = canvas.width, h = canvas.height;
+  ctx.clearRect(0, 0, w, h);
+  const s = summary.outputs[name];
+  if (!s || !s.histogram) return;
+  const { edges, counts } = s.histogram;
+  const unit = summary.units[name] === "1" ? "" : ` [${summary.units[name]}]`;
+  const refs = [...$("#study-lines").selectedOptions].map((o) => o.value).filter((n) => n !== name && summary.outputs[n] && summary.outputs[n].mean !== undefined);
+  let xlo = edges[0], xhi = edges[edges.length - 1];
+  for (const r of refs) {
+    xlo = Math.min(xlo, summary.outputs[r].mean);
+    xhi = Math.max(xhi, summary.outputs[r].mean);
+  }
+  if (xhi === xlo) xhi = xlo + 1;
+  const pad = { l: 56, r: 12, t: 12, b: 36 };
+  const ymax = Math.max(...counts, 1);
+  axes(ctx, w, h, pad, xlo, xhi, 0, ymax, name.replaceAll("_", " ") + unit, "designs");
+  const X = (v) => pad.l + ((v - xlo) / (xhi - xlo)) * (w - pad.l - pad.r);
+  const Y = (c) => h - pad.b - (c / ymax) * (h - pad.t - pad.b);
+  ctx.fillStyle = "#1f5f99";
+  counts.forEach((c, i) => {
+    // full-width bins: each bar spans its two edges
+    ctx.fillRect(X(edges[i]), Y(c), Math.max(1, X(edges[i + 1]) - X(edges[i]) - 0.5), h - pad.b - Y(c));
+  });
+  ctx.setLineDash([5, 4]);
+  ctx.lineWidth = 2;
+  const colours = ["#b3261e", "#1e7b34", "#8a5a00"];
+  refs.forEach((r, i) => {
+    const x = X(summary.outputs[r].mean);
+    ctx.strokeStyle = colours[i % colours.length];
+    ctx.beginPath();
+    ctx.moveTo(x, pad.t);
+    ctx.lineTo(x, h - pad.b);
+    ctx.stroke();
+    ctx.fillStyle = ctx.strokeStyle;
+    ctx.textAlign = "left";
+    ctx.fillText(r.replaceAll("_", " "), x + 3, pad.t + 12 + 14 * i);
+  });
+  ctx.setLineDash([]);
+  ctx.lineWidth = 1;
+}
+
+function colour(t) {
+  // a perceptually ordered blue → yellow ramp (viridis endpoints)
+  const a = [68, 1, 84], b = [33, 145, 140], c = [0xfd, 0xe7, 0x25];
+  const mix = (p, q, u) => p.map((v, i) => Math.round(v + (q[i] - v) * u));
+  const rgb = t < 0.5 ? mix(a, b, t * 2) : mix(b, c, (t - 0.5) * 2);
+  return `rgb(${rgb.join(",")})`;
+}
+
+function drawMap(name) {
+  const fig = $("#study-map-fig");
+  const grid = summary.grid;
+  fig.hidden = !grid;
+  if (!grid) return;
+  const canvas = $("#study-map");
+  const ctx = canvas.getContext("2d");
+  const w = canvas.width, h = canvas.height;
+  ctx.clearRect(0, 0, w, h);
+  const axesNames = Object.keys(grid.axes);
+  let values = grid.maps[name];
+  let feasible = grid.feasible;
+  if (axesNames.length === 3) {
+    const k = Math.floor(grid.shape[2] / 2);
+    values = values.map((row) => row.map((col) => col[k]));
+    feasible = feasible.map((row) => row.map((col) => col[k]));
+  }
+  const pad = { l: 56, r: 12, t: 12, b: 36 };
+  if (axesNames.length === 1) {
+    const xs = grid.axes[axesNames[0]];
+    const ys = values.filter((v) => v !== null);
+    const ylo = Math.min(...ys), yhi = Math.max(...ys) === ylo ? ylo + 1 : Math.max(...ys);
+    axes(ctx, w, h, pad, xs[0], xs[xs.length - 1], ylo, yhi, axesNames[0], name);
+    ctx.strokeStyle = "#1f5f99";
+    ctx.beginPath();
+    xs.forEach((x, i) => {
+      if (values[i] === null) return;
+      const px = pad.l + ((x - xs[0]) / (xs[xs.length - 1] - xs[0])) * (w - pad.l - pad.r);
+      const py = h - pad.b - ((values[i] - ylo) / (yhi - ylo)) * (h - pad.t - pad.b);
+      i ? ctx.lineTo(px, py) : ctx.moveTo(px, py);
+    });
+    ctx.stroke();
+    return;
+  }
+  const xs = grid.axes[axesNames[0]], ys = grid.axes[axesNames[1]];
+  const flat = values.flat().filter((v) => v !== null);
+  const lo = Math.min(...flat), hi = Math.max(...flat);
+  axes(ctx, w, h, pad, xs[0], xs[xs.length - 1], ys[0], ys[ys.length - 1], axesNames[0], axesNames[1]);
+  const cw = (w - pad.l - pad.r) / xs.length, ch = (h - pad.t - pad.b) / ys.length;
+  for (let i = 0; i < xs.length; i++) {
+    for (let j = 0; j < ys.length; j++) {
+      const v = values[i][j];
+      const x = pad.l + i * cw, y = h - pad.b - (j + 1) * ch;
+      ctx.fillStyle = v === null ? "#d5dbe1" : colour(hi > lo ? (v - lo) / (hi - lo) : 0.5);
+      ctx.fillRect(x, y, cw + 0.5, ch + 0.5);
+      if (feasible[i][j] === 0) {
+        ctx.strokeStyle = "rgba(255,255,255,0.7)";
+        ctx.beginPath();
+        ctx.moveTo(x, y + ch);
+        ctx.lineTo(x + cw, y);
+        ctx.stroke();
+      }
+    }
+  }
+  // outline of the feasible region: edges between a feasible and a non-feasible cell
+  ctx.strokeStyle = "#b3261e";
+  ctx.lineWidth = 2;
+  ctx.beginPath();
+  const ok = (i, j) => i >= 0 && j >= 0 && i < xs.length && j < ys.length && feasible[i][j] === 1;
+  for (let i = 0; i < xs.length; i++) {
+    for (let j = 0; j < ys.length; j++) {
+      if (!ok(i, j)) continue;
+      const x = pad.l + i * cw, y = h - pad.b - (j + 1) * ch;
+      if (!ok(i - 1, j)) { ctx.moveTo(x, y); ctx.lineTo(x, y + ch); }
+      if (!ok(i + 1, j)) { ctx.moveTo(x + cw, y); ctx.lineTo(x + cw, y + ch); }
+      if (!ok(i, j - 1)) { ctx.moveTo(x, y + ch); ctx.lineTo(x + cw, y + ch); }
+      if (!ok(i, j + 1)) { ctx.moveTo(x, y); ctx.lineTo(x + cw, y); }
+    }
+  }
+  ctx.stroke();
+  ctx.lineWidth = 1;
+  ctx.fillStyle = "#1d2630";
+  ctx.textAlign = "left";
+  ctx.fillText(`${name.replaceAll("_", " ")}: ${fmt(lo, 3)} … ${fmt(hi, 3)}${axesNames.length === 3 ? ` (slice ${axesNames[2]} = ${fmt(grid.axes[axesNames[2]][Math.floor(grid.shape[2] / 2)], 3)})` : ""}`, pad.l + 4, pad.t + 12);
+}
+
+function drawSensitivity(name) {
+  const box = $("#study-sens");
+  const sens = summary.sensitivity;
+  $("#study-sens-fig").hidden = !sens;
+  if (!sens) return;
+  const rows = sens.indices[name] || {};
+  const sobol = sens.method.startsWith("sobol");
+  $("#study-sens-cap").textContent = sobol
+    ? "Sobol' indices: dark bar first order, light bar total (Saltelli 2010, Jansen 1999)."
+    : "Spearman rank correlation of the output with each input (sign: direction).";
+  box.replaceChildren(el("h4", { text: `Which input drives ${name.replaceAll("_", " ")}` }));
+  for (const [input, v] of Object.entries(rows)) {
+    const value = sobol ? v.first : v;
+    const bar = el("div", { class: "bar" + (value !== null && value < 0 ? " neg" : "") });
+    bar.style.width = `${Math.min(100, Math.abs(value ?? 0) * 100)}%`;
+    const track = el("div", {}, bar);
+    if (sobol) {
+      const total = el("div", { class: "bar total" });
+      total.style.width = `${Math.min(100, Math.abs(v.total) * 100)}%`;
+      track.append(total);
+    }
+    box.append(el("div", { class: "bar-row" }, el("span", { text: input.replaceAll("_", " ") }), track,
+      el("span", { class: "num", text: sobol ? `${fmt(v.first, 2)} / ${fmt(v.total, 2)}` : fmt(value, 2) })));
+  }
+}
+
+$("#study-form").addEventListener("submit", run);
+$("#study-cancel").addEventListener("click", cancel);
+loadCatalogue();

@@ -1,0 +1,180 @@
+"""Studies on Dask: the same result, bit for bit, in-process, on a local cluster and on a
+separate scheduler with two workers that this test starts (all on 127.0.0.1)."""
+
+from __future__ import annotations
+
+import os
+import socket
+import subprocess
+import sys
+import time
+from collections.abc import Iterator
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import engine
+from engine.study import Study, Variable
+from engine.study_exec import LOOP_CHUNK, DaskExecutor, run_study
+
+pytestmark = pytest.mark.slow
+
+ROOT = Path(__file__).resolve().parents[2]
+RARE = engine.get_model("impact.rare")
+
+
+def _study() -> Study:
+    ex = dict(RARE.examples[0])
+    return Study(
+        variables=(
+            Variable(
+                "power_spring_rate",
+                "normal",
+                mean=ex["power_spring_rate"],
+                sd=0.1 * ex["power_spring_rate"],
+            ),
+            Variable(
+                "power_spring_preload",
+                "uniform",
+                low=0.5 * ex["power_spring_preload"],
+                high=2.0 * ex["power_spring_preload"],
+            ),
+        ),
+        base={
+            k: v for k, v in ex.items() if k not in ("power_spring_rate", "power_spring_preload")
+        },
+        method="lhs",
+        samples=3 * LOOP_CHUNK + 17,  # four chunks, the last one short
+        seed=42,
+        fidelity="simulation",
+        feasible_when="full_engagement",
+    )
+
+
+def _equal(a: engine.study_exec.StudyRun, b: engine.study_exec.StudyRun) -> None:
+    strip = ("elapsed_s", "compute_s")
+    sa = {k: v for k, v in a.summary.items() if k not in strip}
+    sb = {k: v for k, v in b.summary.items() if k not in strip}
+    assert sa == sb
+    for name, col in a.merged.values.items():
+        assert np.array_equal(col, b.merged.values[name], equal_nan=True), name
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return int(s.getsockname()[1])
+
+
+@pytest.fixture(scope="module")
+def reference() -> engine.study_exec.StudyRun:
+    return run_study(RARE, _study())
+
+
+def test_a_local_cluster_gives_the_in_process_result(reference) -> None:
+    executor = DaskExecutor(n_workers=2)
+    try:
+        _equal(reference, run_study(RARE, _study(), executor))
+    finally:
+        executor.close()
+
+
+@pytest.fixture()
+def scheduler() -> Iterator[str]:
+    port = _free_port()
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    bindir = Path(sys.executable).parent
+    procs = [
+        subprocess.Popen(
+            [
+                str(bindir / "dask"),
+                "scheduler",
+                "--host",
+                "127.0.0.1",
+                "--port",
+                str(port),
+                "--no-dashboard",
+            ],
+            env=env,
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+        )
+    ]
+    address = f"tcp://127.0.0.1:{port}"
+    procs.append(
+        subprocess.Popen(
+            [
+                str(bindir / "dask"),
+                "worker",
+                address,
+                "--nworkers",
+                "2",
+                "--nthreads",
+                "1",
+                "--no-dashboard",
+                "--host",
+                "127.0.0.1",
+            ],
+            env=env,
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+        )
+    )
+    try:
+        yield address
+    finally:
+        for p in reversed(procs):
+            p.terminate()
+        for p in procs:
+            try:
+                p.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                p.kill()
+
+
+def test_a_separate_scheduler_with_two_workers_gives_the_same_result(reference, scheduler) -> None:
+    executor = DaskExecutor(scheduler)
+    try:
+        client = executor.client()
+        deadline = time.monotonic() + 60
+        while len(client.scheduler_info()["workers"]) < 2:
+            assert time.monotonic() < deadline, "the two workers did not register"
+            time.sleep(0.2)
+        _equal(reference, run_study(RARE, _study(), executor))
+    finally:
+        executor.close()
+
+
+def test_the_service_sends_a_study_to_the_scheduler_it_is_told(
+    reference, scheduler, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from fastapi.testclient import TestClient
+
+    from service import create_app
+
+    monkeypatch.setenv("DASK_SCHEDULER", scheduler)
+    monkeypatch.setenv("STUDY_INPROCESS_POINTS", "0")
+    study = _study()
+    body = {
+        "base": dict(study.base),
+        "variables": [
+            {k: v for k, v in vars(var).items() if v is not None} for var in study.variables
+        ],
+        "method": study.method,
+        "samples": study.samples,
+        "seed": study.seed,
+        "fidelity": study.fidelity,
+        "feasible_when": study.feasible_when,
+    }
+    with TestClient(create_app()) as client:
+        job = client.post("/api/v1/impact/rare/study", json=body).json()["job"]
+        deadline = time.monotonic() + 120
+        while (state := client.get(f"/api/v1/jobs/{job}").json())["state"] in ("queued", "running"):
+            assert time.monotonic() < deadline, state
+            time.sleep(0.1)
+    assert state["state"] == "done", state
+    strip = ("elapsed_s", "compute_s")
+    got = {k: v for k, v in state["result"].items() if k not in strip}
+    want = {k: v for k, v in reference.summary.items() if k not in strip}
+    assert got == want
