@@ -564,7 +564,8 @@ def joint_check_hook(x: Mapping[str, Any], solution: Any) -> tuple[list[Check], 
     ``solution`` has ``bolt`` (the preload models' resolved bolt),
     ``bearing_diameter``, ``hole_diameter``, ``assembly_preload_max`` and
     ``max_bolt_force`` (F_S,max): surface pressure at both (VDI 2230-1 R10) and
-    the engagement (R11). The drive torque is checked by the preload models.
+    the engagement (R11), and the hex key against the joint's
+    ``tightening_torque`` specification when one is given.
     """
     bolt = solution.bolt
     fastener = getattr(bolt, "fastener", None) or Fastener("", None, None, None)
@@ -579,9 +580,20 @@ def joint_check_hook(x: Mapping[str, Any], solution: Any) -> tuple[list[Check], 
         bearing_outer_diameter=solution.bearing_diameter,
         hole_diameter=solution.hole_diameter,
         max_assembly_preload=solution.assembly_preload_max,
-        tightening_torque=None,
+        tightening_torque=None
+        if x.get("tightening_torque") is None
+        else float(x["tightening_torque"]),
         working_force=solution.max_bolt_force,
     )
+    head = fastener.head
+    style = x.get("head")
+    if head is not None and style in ("hex", "socket"):
+        wanted = "socket" if head.style in ("socket", "countersunk") else "hex"
+        if style != wanted:
+            notes.append(
+                f"head = {style!r} (the head's compliance, VDI 2230-1 R3) while the designation "
+                f"names a {head.style} head ({head.standard}): set head = {wanted!r}"
+            )
     return checks, notes
 
 
