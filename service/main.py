@@ -97,7 +97,9 @@ def static_dir() -> Path:
 
 
 def create_app(
-    models: Sequence[ModelSpec] | None = None, settings: Settings | None = None
+    models: Sequence[ModelSpec] | None = None,
+    settings: Settings | None = None,
+    study_settings: StudySettings | None = None,
 ) -> FastAPI:
     models = engine.MODELS if models is None else models
     settings = settings or Settings()
@@ -109,7 +111,7 @@ def create_app(
         max_series_points=settings.max_series_points,
     )
 
-    studies = Studies(StudySettings())
+    studies = Studies(study_settings or StudySettings())
 
     @asynccontextmanager
     async def lifespan(_: FastAPI) -> AsyncIterator[None]:
