@@ -399,7 +399,9 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
     for spec in models:
         add(spec)
 
-    _404 = {404: {"model": schemas.ErrorResponse, "description": "no such job (or expired)"}}
+    _404: dict[int | str, dict[str, Any]] = {
+        404: {"model": schemas.ErrorResponse, "description": "no such job (or expired)"}
+    }
 
     @router.get(
         "/jobs/{job_id}",
