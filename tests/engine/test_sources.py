@@ -29,6 +29,7 @@ CITING = [
 PHYSICS = [
     "blow",
     "clutch",
+    "fasteners",
     "joint",
     "motor_spinup",
     "nutrunner",
