@@ -24,7 +24,9 @@ from .equations import equations_of
 from .errors import BudgetExceeded, Cancelled, InputOutOfRange
 from .sources import SOURCES, cited_ids
 
-ParamKind = Literal["float", "int", "choice", "bool"]
+ParamKind = Literal["float", "int", "choice", "bool", "text"]
+#: Longest value a ``text`` input accepts (a designation such as "M10x1.25 ISO 4762 12.9").
+MAX_TEXT_LENGTH = 64
 OutputKind = Literal["float", "int", "bool", "str"]
 Value = float | int | bool | str | None
 
@@ -37,6 +39,9 @@ class Param:
     units); ``recommended`` is the range the source recommends (a warning
     outside it). A param with ``default=None`` and ``required=False`` is
     optional: absent means "not given", and the model decides what that means.
+    A ``text`` param takes a free string of at most :data:`MAX_TEXT_LENGTH`
+    characters (a fastener designation); its ``choices`` are suggestions, not
+    a limit, and the model parses the text (InputOutOfRange naming the field).
     """
 
     name: str
@@ -66,6 +71,11 @@ class Param:
         """The allowed range in words, e.g. ``> 0 m and ≤ 1 m``."""
         if self.kind == "choice":
             return "one of " + ", ".join(repr(c) for c in self.choices)
+        if self.kind == "text":
+            shown = ", ".join(repr(c) for c in self.choices[:3])
+            return f"a text of at most {MAX_TEXT_LENGTH} characters" + (
+                f", e.g. {shown}" if shown else ""
+            )
         if self.kind == "bool":
             return "true or false"
         unit = "" if self.unit == "1" else f" {self.unit}"
@@ -87,6 +97,10 @@ class Param:
             if not isinstance(value, bool):
                 raise self._error(value)
             return value
+        if self.kind == "text":
+            if not isinstance(value, str) or not value.strip() or len(value) > MAX_TEXT_LENGTH:
+                raise self._error(value)
+            return value.strip()
         if isinstance(value, bool) or not isinstance(value, int | float):
             raise self._error(value)
         if self.kind == "int":

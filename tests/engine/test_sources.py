@@ -29,13 +29,14 @@ CITING = [
 PHYSICS = [
     "blow",
     "clutch",
+    "fasteners",
     "joint",
     "motor_spinup",
     "nutrunner",
     "preload",
     "preload_methods",
     "rare_impact",
-    "rare_impact_sim",
+    "rare_impact_cycle",
     "springs",
     "threads",
 ]
