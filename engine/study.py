@@ -25,6 +25,7 @@ Jansen (1999) for the total index (see ``docs/sources.md``, [Saltelli2010]).
 from __future__ import annotations
 
 import math
+import threading
 import time
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
@@ -34,13 +35,14 @@ import numpy as np
 from scipy import stats
 from scipy.stats import qmc
 
-from .errors import BudgetExceeded, EngineError, InputOutOfRange
+from .errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange
 from .runner import DEFAULT_TOLERANCE, choose_rung, run
 from .spec import ModelSpec, Param, RunContext
 
 METHODS = ("grid", "monte_carlo", "lhs", "sobol")
 DISTRIBUTIONS = ("uniform", "normal", "triangular")
 MAX_GRID_INPUTS = 3
+MAX_VARIABLES = 12
 MAX_STUDY_POINTS = 2_000_000
 MAX_HISTOGRAM_BINS = 200
 QUANTILES = (0.001, 0.01, 0.05, 0.25, 0.5, 0.75, 0.95, 0.99, 0.999)
@@ -238,6 +240,10 @@ def plan(spec: ModelSpec, study: Study) -> Plan:
         )
     if not study.variables:
         raise InputOutOfRange("variables: vary at least one input", field="variables")
+    if len(study.variables) > MAX_VARIABLES:
+        raise InputOutOfRange(
+            f"variables: a study varies at most {MAX_VARIABLES} inputs", field="variables"
+        )
     names = [v.name for v in study.variables]
     if len(set(names)) != len(names):
         raise InputOutOfRange("variables: each input may vary once", field="variables")
@@ -445,13 +451,16 @@ def evaluate_chunk(
     fidelity: str | None = None,
     tolerance: float | None = None,
     deadline_s: float | None = None,
+    cancel: threading.Event | None = None,
 ) -> ChunkResult:
     """Evaluate the points ``columns`` (equal-length arrays) of a study, in order.
 
     Points that share a rung run through the model's array path where it has
     one for that rung (checks are then not reported: CHECK_UNKNOWN), else one
     by one through :func:`engine.run`. A refused point is NaN in every output.
-    ``deadline_s`` is a budget for the whole chunk, in seconds.
+    ``deadline_s`` is a budget for the whole chunk, in seconds. ``cancel`` (in-process
+    only: an event does not travel to a Dask worker) stops the chunk at the next point or
+    inside a point's simulation; the caller then discards it.
     """
     if isinstance(spec, str):
         from .models import get_model
@@ -509,6 +518,8 @@ def evaluate_chunk(
             for j, is_dead in zip(np.flatnonzero(sel).tolist(), dead.tolist(), strict=True):
                 rungs[j] = None if is_dead else rung
     for j in np.flatnonzero(loop).tolist():
+        if cancel is not None and cancel.is_set():
+            break
         if deadline is not None and time.perf_counter() > deadline:
             raise BudgetExceeded(
                 f"a chunk of the study ran past its {deadline_s:g} s budget", field="samples"
@@ -525,7 +536,10 @@ def evaluate_chunk(
                 tolerance=tol,
                 outputs=outputs,
                 budget_s=None if deadline is None else max(deadline - time.perf_counter(), 1e-3),
+                cancel=cancel,
             )
+        except Cancelled:
+            break
         except EngineError as exc:
             key = type(exc).__name__ + ": " + exc.message.split(":")[0][:120]
             refusals[key] = refusals.get(key, 0) + 1

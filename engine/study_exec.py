@@ -28,7 +28,7 @@ from typing import Any, Protocol
 
 import numpy as np
 
-from .errors import BudgetExceeded, EngineError
+from .errors import BudgetExceeded, Cancelled
 from .spec import ModelSpec
 from .study import ChunkResult, Plan, Study, chunks, evaluate_chunk, merge, plan, summarize
 
@@ -36,12 +36,6 @@ VECTOR_CHUNK = 65_536
 LOOP_CHUNK = 256
 
 Progress = Callable[[int, int], None]
-
-
-class Cancelled(EngineError):
-    """The study was cancelled before it finished."""
-
-    kind = "cancelled"
 
 
 @dataclass
@@ -76,7 +70,7 @@ class InProcess:
         for i, args in enumerate(calls):
             if cancel.is_set():
                 return
-            yield i, evaluate_chunk(*args)
+            yield i, evaluate_chunk(*args, cancel=cancel)
 
 
 class DaskExecutor:

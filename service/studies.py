@@ -31,6 +31,7 @@ from dataclasses import dataclass, field
 from typing import Any, Literal
 
 from fastapi import APIRouter, HTTPException, Request, Response
+from fastapi.concurrency import run_in_threadpool
 from fastapi.responses import JSONResponse
 from pydantic import BaseModel, ConfigDict, Field
 
@@ -127,10 +128,14 @@ class Job:
     error: dict[str, Any] | None = None
     run: StudyRun | None = None
     cancel: threading.Event = field(default_factory=threading.Event)
+    #: Set when the job thread is done with the job (finished, failed, cancelled or skipped).
+    settled: bool = False
 
     @property
     def active(self) -> bool:
-        return self.state in ("queued", "running")
+        # a job counts until its thread has let it go: a queued job that was cancelled still
+        # holds its place in the pool until the pool reaches it and drops it
+        return not self.settled
 
     def describe(self) -> dict[str, Any]:
         now = time.time()
@@ -143,7 +148,7 @@ class Job:
             "job": self.id,
             "model": self.model,
             "state": self.state,
-            "phase": self.phase if self.active else self.state,
+            "phase": self.phase if self.state in ("queued", "running") else self.state,
             "progress": {
                 "done": self.done,
                 "total": self.total,
@@ -199,10 +204,10 @@ class Studies:
         done = sorted(
             (j for j in self.jobs.values() if not j.active), key=lambda j: j.finished or 0.0
         )
-        for j in done:
-            if now - (j.finished or now) > self.settings.keep_s or len(done) > _KEEP_JOBS:
+        excess = max(0, len(done) - _KEEP_JOBS)
+        for i, j in enumerate(done):
+            if i < excess or now - (j.finished or now) > self.settings.keep_s:
                 del self.jobs[j.id]
-                done.remove(j)
 
     def submit(self, spec: ModelSpec, study: Study, client: str, keep_points: bool) -> Job:
         p = plan(spec, study)  # refuses a bad study now, with a 422, before any job exists
@@ -238,6 +243,9 @@ class Studies:
         return job
 
     def _work(self, job: Job, spec: ModelSpec, study: Study) -> None:
+        if job.cancel.is_set():  # cancelled while it waited for a thread
+            job.settled = True
+            return
         job.state, job.started = "running", time.time()
 
         def progress(done: int, total: int) -> None:
@@ -271,6 +279,7 @@ class Studies:
             job.error = {"type": "study_failed", "msg": f"{type(exc).__name__}: {exc}"[:300]}
         finally:
             job.finished = time.time()
+            job.settled = True
 
     def get(self, job_id: str) -> Job:
         with self.lock:
@@ -367,7 +376,8 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
         async def submit(body: StudyIn, request: Request) -> JSONResponse:
             study = to_study(spec, body)
             client = request.client.host if request.client else "unknown"
-            job = studies.submit(spec, study, client, body.keep_points)
+            # drawing up to STUDY_MAX_POINTS points takes a while: off the event loop
+            job = await run_in_threadpool(studies.submit, spec, study, client, body.keep_points)
             return JSONResponse(
                 job.describe(),
                 status_code=202,

@@ -259,3 +259,12 @@ def test_a_grid_varies_at_most_three_inputs_and_sizes_are_bounded() -> None:
         plan(CLUTCH, Study(variables=four, base=_without(ex, *names), method="grid"))
     with pytest.raises(InputOutOfRange, match="over the limit"):
         plan(TOY_SA, Study(variables=three[:1], samples=10**8))
+
+
+def test_a_study_varies_at_most_twelve_inputs() -> None:
+    spec = engine.get_model("joint.vdi2230")
+    numeric = [p for p in spec.inputs if p.is_numeric and p.minimum is not None]
+    assert len(numeric) > 12
+    variables = tuple(Variable(p.name, low=p.minimum, high=p.minimum + 1e-9) for p in numeric[:13])
+    with pytest.raises(InputOutOfRange, match="at most 12"):
+        plan(spec, Study(variables=variables, samples=10))

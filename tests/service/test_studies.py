@@ -115,3 +115,46 @@ def test_cancel_frees_the_client_slot(app_client: TestClient) -> None:
 def test_study_settings_have_embedded_defaults() -> None:
     s = StudySettings()
     assert s.max_points == 2_000_000 and s.dask_scheduler is None
+
+
+def test_a_queued_study_that_is_cancelled_never_runs_and_holds_its_place() -> None:
+    import engine as eng
+    from engine.study import Study, Variable
+    from service.studies import Job, Studies
+
+    rare = eng.get_model("impact.rare")
+    ex = dict(rare.examples[0])
+    long = Study(
+        variables=(Variable("motor_torque", low=4.5, high=5.5),),
+        base={k: v for k, v in ex.items() if k != "motor_torque"},
+        samples=20_000,
+        fidelity="simulation",
+    )
+    studies = Studies(StudySettings(max_active=2, per_client=5, inprocess_points=10**6))
+    try:
+        first = studies.submit(rare, long, "a", False)
+        # a job cancelled before a thread reaches it: settled only when the thread drops it
+        queued = Job("queued", rare.name, "b", 20_000, False)
+        studies.jobs[queued.id] = queued
+        studies.cancel(queued.id)
+        assert queued.state == "cancelled"
+        assert queued.active  # still holds its place until the pool drops it
+        studies._work(queued, rare, long)
+        assert not queued.active and queued.started is None and queued.done == 0
+        studies.cancel(first.id)
+        deadline = time.monotonic() + 10
+        while first.active:
+            assert time.monotonic() < deadline
+            time.sleep(0.01)
+        assert first.state == "cancelled" and first.done < 20_000
+        # pruning keeps at most 64 finished jobs, the oldest go first
+        for i in range(100):
+            job = Job(f"old{i}", "x", "c", 1, False, state="done", settled=True)
+            job.finished = time.time() - 100 + i
+            studies.jobs[job.id] = job
+        studies._prune()
+        finished = [j for j in studies.jobs.values() if not j.active]
+        assert len(finished) == 64  # the 100 old ones and the two above: the newest 64 stay
+        assert "old99" in studies.jobs and "old0" not in studies.jobs
+    finally:
+        studies.shutdown()
