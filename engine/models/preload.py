@@ -1035,6 +1035,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "scatter_preload_max",
         "scatter_preload_mean",
         "scatter_relative",
+        "scatter_torque_applied",
     )
     has_range = (
         x.get("thread_friction_min") is not None or x.get("bearing_friction_min") is not None
@@ -1068,6 +1069,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
             scatter_preload_max=hist.maximum,
             scatter_preload_mean=hist.mean,
             scatter_relative=spread,
+            scatter_torque_applied=fixed,
         )
         notes.append(
             f"friction scatter at {fixed:.4g} N·m: μ_G {g_range[0]:g}…{g_range[1]:g}, "
@@ -1179,6 +1181,13 @@ CONTROL_OUTPUTS: tuple[Output, ...] = (
         "m",
         "d_eq of the stretched length ([004, eq. 4])",
         display_unit="mm",
+    ),
+    Output(
+        "scatter_torque_applied",
+        "N*m",
+        "Friction scatter: the tightening torque the histogram and the scatter band are "
+        "computed at (the target torque, or scatter_torque where given)",
+        display_unit="N*m",
     ),
     Output("scatter_preload_min", "N", "Friction scatter: lowest preload", display_unit="kN"),
     Output("scatter_preload_max", "N", "Friction scatter: highest preload", display_unit="kN"),
