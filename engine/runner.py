@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from . import points
 from .errors import BudgetExceeded, EngineError, InputOutOfRange
 from .spec import Check, ModelSpec, Param, RunContext, Value
 
@@ -295,32 +296,103 @@ def sweep(
         raise InputOutOfRange(f"vary = {vary!r} is not a numeric input", field="vary")
     wanted = list(outputs) if outputs is not None else None
     start = time.perf_counter()
-    if spec.vectorized is not None and len(values) > 1:
-        fast = _sweep_vectorized(spec, base, param, values, wanted, fidelity, tolerance)
-        if fast is not None:
-            fast.elapsed_s = time.perf_counter() - start
-            return fast
-    checked = [param.check(int(v) if param.kind == "int" else v) for v in values]
-    deadline = None if budget_s is None else start + budget_s
-    names: list[str] = []
-    results: dict[str, list[Value]] = {}
+    arr = _sweep_column(param, values)
+    n = int(arr.size)
+    # the fixed inputs (refused here if out of range) with the first point's varied one
+    first, warnings = spec.validate({**base, vary: arr[0].item()})
+    warnings = [w for w in warnings if not w.startswith(f"{vary} = ")] + _recommended(param, arr)
+    x: dict[str, Any] = {**first, vary: arr}
+    tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
+    asked = _fidelity(spec, fidelity, tolerance)
     notes: list[str] = []
-    warnings: list[str] = []
-    rungs: list[str | None] = []
-    errors: list[float | None] = []
+    if not (math.isfinite(tol) and 0.0 < tol < 1.0):
+        raise InputOutOfRange(
+            f"tolerance = {tol:g} is not allowed: must be > 0 and < 1", field="tolerance"
+        )
+    if asked == "auto":
+        estimates = points.rung_estimates(spec, x, n, point=lambda j: points.at(x, n, j))
+        assert estimates is not None
+        index = points.auto_index(spec, estimates, n, tol)
+    else:
+        choose_rung(spec, first, asked, tol)  # refuses an unknown rung name
+        k = spec.rung_names.index(asked)
+        estimates = points.rung_estimates(spec, x, n, [k], point=lambda j: points.at(x, n, j))
+        assert estimates is not None
+        index = np.full(n, k, dtype=np.int64)
+    known = [o.name for o in spec.outputs if not o.series]
+    scalar_names = known if wanted is None else [o for o in wanted if o in known]
+    # per output: an object column filled from the array groups and the looped points
+    columns: dict[str, Any] = {}
+    computed: list[str] = []
+    rungs = np.full(n, None, dtype=object)
+    errors = np.full(n, np.nan)
+    loop = np.zeros(n, dtype=bool)
+    bad_total = 0
+    for k, rung_name in enumerate(spec.rung_names):
+        sel = index == k
+        if not sel.any():
+            continue
+        m = int(sel.sum())
+        sub = points.take(x, n, sel) if m < n else x
+        vec = points.vector(spec, sub, rung_name, scalar_names, tol, m, dtype=None)
+        if vec is None:
+            loop |= sel
+            continue
+        bad = np.zeros(m, dtype=bool)
+        for name in scalar_names:
+            if name not in vec.computed:
+                continue
+            column = vec.values[name]
+            if name not in computed:
+                computed.append(name)
+            if column.dtype.kind == "f":
+                finite = np.isfinite(column)
+                bad |= ~finite
+            else:
+                finite = None
+            if m == n and finite is not None and finite.all():
+                columns[name] = column  # the common case: one array, listed once below
+                continue
+            obj = columns.get(name)
+            if obj is None or obj.dtype != object:
+                obj = columns[name] = np.full(n, None, dtype=object)
+            part = column.astype(object)
+            if finite is not None:
+                part[~finite] = None
+            obj[sel] = part
+        est = estimates.get(k)
+        part_rungs = np.full(m, rung_name, dtype=object)
+        part_rungs[bad] = None
+        rungs[sel] = part_rungs
+        if est is not None:
+            errors[sel] = np.where(bad, np.nan, est[sel])
+        bad_total += int(bad.sum())
+        for note in vec.notes:
+            if note not in notes:
+                notes.append(note)
+        for w in vec.warnings:
+            if w not in warnings:
+                warnings.append(w)
+    if bad_total:
+        notes.append(f"{bad_total} of {n} points could not be computed; null there")
+    deadline = None if budget_s is None else start + budget_s
     first_refusal: EngineError | None = None
-    for i, value in enumerate(checked):
+    looped = np.flatnonzero(loop).tolist()
+    any_point = n - len(looped) > 0
+    for count, j in enumerate(looped):
         remaining = None if deadline is None else deadline - time.perf_counter()
         if remaining is not None and remaining <= 0:
             raise BudgetExceeded(
-                f"sweep stopped after {i} of {len(checked)} points at its {budget_s:g} s budget",
+                f"sweep stopped after {n - len(looped) + count} of {n} points at its "
+                f"{budget_s:g} s budget",
                 field="num",
             )
+        value = arr[j].item()
         try:
             point = run(
                 spec,
                 {**base, vary: value},
-                fidelity=fidelity,
+                fidelity=spec.rung_names[int(index[j])],
                 tolerance=tolerance,
                 outputs=wanted,
                 budget_s=remaining,
@@ -329,130 +401,84 @@ def sweep(
         except EngineError as exc:
             # a point the model refuses (infeasible, or a cross-field range that this
             # value breaks) is null; if every point is refused, the first refusal stands
-            point = None
             first_refusal = first_refusal or exc
             notes.append(f"{vary} = {value:g}: {exc.message}")
-        rungs.append(None if point is None else point.rung)
-        errors.append(None if point is None else point.error_estimate)
-        if point is not None:
-            if not names:
-                names = list(point.results)
-                for n in names:
-                    results[n] = [None] * i
-            for n in names:
-                results[n].append(point.results.get(n))
-            for w in point.warnings:
-                if w not in warnings:
-                    warnings.append(w)
-        else:
-            for n in names:
-                results[n].append(None)
-    if not names:
+            continue
+        any_point = True
+        rungs[j] = point.rung
+        errors[j] = np.nan if point.error_estimate is None else point.error_estimate
+        for name, v in point.results.items():
+            if name not in computed:
+                computed.append(name)
+            obj = columns.get(name)
+            if obj is None or obj.dtype != object:
+                old = obj
+                obj = columns[name] = np.full(n, None, dtype=object)
+                if old is not None:  # cannot happen with a loop, kept for safety
+                    obj[:] = old.astype(object)
+            obj[j] = v
+        for w in point.warnings:
+            if w not in warnings and not w.startswith(f"{vary} = "):
+                warnings.append(w)
+    if not any_point:
         if isinstance(first_refusal, InputOutOfRange) and first_refusal.field != vary:
             raise first_refusal  # the fixed inputs themselves are out of range
         notes.append("no point of the sweep could be computed")
-    rung, mixed = _rung_summary(rungs)
+    order = [o for o in scalar_names if o in computed] + [o for o in computed if o not in known]
+    results: dict[str, list[Value]] = {name: columns[name].tolist() for name in order}
+    rung_list: list[str | None] = rungs.tolist()
+    rung, mixed = _rung_summary(rung_list)
+    if asked == "auto" and not mixed and rung:
+        notes.insert(0, f"auto: chose {rung!r} at every point (tolerance {tol:.2g})")
     units = {o.name: o.unit for o in spec.outputs}
+    finite_errors = np.isfinite(errors)
+    error_list: list[float | None] = errors.tolist()
+    if not finite_errors.all():
+        error_list = [
+            e if ok else None for e, ok in zip(error_list, finite_errors.tolist(), strict=True)
+        ]
     return SweepResult(
         model=spec.name,
         vary=vary,
-        values=[float(v) for v in checked],
+        values=arr.astype(float).tolist(),
         results=results,
-        units={n: units[n] for n in names},
+        units={name: units[name] for name in results},
         rung=rung,
         elapsed_s=time.perf_counter() - start,
         notes=mixed + notes,
         warnings=warnings,
-        rungs=rungs,
-        error_estimates=errors,
+        rungs=rung_list,
+        error_estimates=error_list,
     )
 
 
-def _sweep_vectorized(
-    spec: ModelSpec,
-    base: Mapping[str, Any],
-    param: Param,
-    values: Sequence[float],
-    outputs: list[str] | None,
-    fidelity: str | None,
-    tolerance: float | None,
-) -> SweepResult | None:
-    """One array evaluation instead of a loop, when the model offers it for the rung.
-
-    Returns None (the caller loops) when the rung chosen for the first point is
-    not vectorised, when ``auto`` chooses different rungs at different points,
-    or when the array version lacks an asked output the scalar rung gives.
-    """
-    assert spec.vectorized is not None
+def _sweep_column(param: Param, values: Sequence[float]) -> np.ndarray:
+    """The swept values as an array, refused (naming the first bad value) if any is out of range."""
     arr = np.asarray(values, dtype=float)
-    param.check(float(arr.min()) if param.kind == "float" else int(arr.min()))
-    param.check(float(arr.max()) if param.kind == "float" else int(arr.max()))
+    if arr.ndim != 1 or arr.size == 0:
+        raise InputOutOfRange(f"a sweep of {param.name} needs at least one value", field="num")
+    bad = ~points.in_range(param, arr)
     if param.kind == "int":
-        if not np.all(arr == np.round(arr)):
-            raise InputOutOfRange(f"{param.name} must be an integer", field=param.name)
-        arr = arr.astype(np.int64)
-    elif not np.all(np.isfinite(arr)):
-        raise InputOutOfRange(f"{param.name} must be finite", field=param.name)
-    first, warnings = spec.validate({**base, param.name: arr[0].item()})
-    tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
-    asked = _fidelity(spec, fidelity, tolerance)
-    rung, notes = choose_rung(spec, first, asked, tol)
-    if rung not in spec.vector_rungs:
-        return None
-    estimates: list[float | None] = [None] * arr.size
-    if arr.size > MAX_SWEEP_POINTS:
-        if asked == "auto":
-            notes.append(f"auto chose {rung!r} from the first point of this long sweep")
-    else:
-        # each point's estimate; auto decides per point, so one array call serves only
-        # if every point chose the same rung
-        for i, v in enumerate(arr.tolist()):
-            point, _ = spec.validate({**base, param.name: v})
-            if asked == "auto" and choose_rung(spec, point, "auto", tol)[0] != rung:
-                return None
-            estimates[i] = spec.rung(rung).estimate(point)
-    known = [o.name for o in spec.outputs if not o.series]
-    wanted = known if outputs is None else [n for n in outputs if n in known]
-    ctx = RunContext(rung=rung, outputs=frozenset(wanted), tolerance=tol)
-    result = spec.vectorized({**first, param.name: arr}, ctx)
-    missing = [name for name in wanted if name not in result.values]
-    if missing:
-        # an output the array version lacks may simply not belong to this rung; loop only
-        # if the scalar model gives it at the first point
-        try:
-            scalar = spec.compute(first, ctx).values
-        except EngineError:
-            scalar = {}
-        if any(scalar.get(name) is not None for name in missing):
-            return None
-    results: dict[str, list[Value]] = {}
-    bad = np.zeros(arr.shape, dtype=bool)
-    for name in wanted:
-        if name not in result.values:
-            continue
-        column = np.broadcast_to(np.asarray(result.values[name]), arr.shape)
-        if column.dtype.kind == "f":
-            finite = np.isfinite(column)
-            bad |= ~finite
-            listed: list[Value] = column.tolist()
-            if not finite.all():
-                listed = [v if ok else None for v, ok in zip(listed, finite.tolist(), strict=True)]
-            results[name] = listed
-        else:
-            results[name] = column.tolist()
+        bad |= arr != np.round(arr)
     if bad.any():
-        notes.append(f"{int(bad.sum())} of {arr.size} points could not be computed; null there")
-    units = {o.name: o.unit for o in spec.outputs}
-    return SweepResult(
-        model=spec.name,
-        vary=param.name,
-        values=arr.astype(float).tolist(),
-        results=results,
-        units={n: units[n] for n in results},
-        rung=rung,
-        elapsed_s=0.0,
-        notes=notes + result.notes,
-        warnings=warnings + result.warnings,
-        rungs=[None if b else rung for b in bad.tolist()],
-        error_estimates=[None if b else e for b, e in zip(bad.tolist(), estimates, strict=True)],
-    )
+        v = arr[int(np.flatnonzero(bad)[0])].item()
+        if param.kind == "int" and math.isfinite(v) and v == round(v):
+            v = int(v)
+        param.check(v)  # raises with the field's range
+        raise InputOutOfRange(f"{param.name} = {v!r} is not allowed", field=param.name)
+    return arr.astype(np.int64) if param.kind == "int" else arr
+
+
+def _recommended(param: Param, arr: np.ndarray) -> list[str]:
+    """One warning for the swept values outside the source's recommended range."""
+    if not param.recommended:
+        return []
+    lo, hi = param.recommended
+    out = (arr < lo) | (arr > hi)
+    if not out.any():
+        return []
+    unit = "" if param.unit == "1" else f" {param.unit}"
+    return [
+        f"{param.name} is outside the range the source recommends ({lo:g}…{hi:g}{unit}) at "
+        f"{int(out.sum())} of {arr.size} points"
+    ]
