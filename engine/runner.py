@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import time
+from collections import Counter
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
@@ -65,10 +66,8 @@ class SweepResult:
 
 def _rung_summary(rungs: Sequence[str | None]) -> tuple[str, list[str]]:
     """The sweep's ``rung`` field and, when points differ, a note saying how."""
-    counts: dict[str, int] = {}
-    for r in rungs:
-        if r is not None:
-            counts[r] = counts.get(r, 0) + 1
+    every = Counter(rungs)  # counted in C, first-seen order kept
+    counts = {r: c for r, c in every.items() if r is not None}
     if len(counts) <= 1:
         return next(iter(counts), ""), []
     return ", ".join(counts), [
