@@ -149,6 +149,25 @@ def _fallback(
     return declining.fallback, own, theirs
 
 
+def _wanted(spec: ModelSpec, asked: set[str], *, named: bool, series: bool) -> set[str]:
+    """The outputs to compute: model only what the scene requires (issue 21).
+
+    Every scalar output when none is named; series only when named (with the x
+    series each is plotted against) or when ``series`` asks for all of them.
+    """
+    wanted = set(asked)
+    if not named:
+        wanted = {o.name for o in spec.outputs if not o.series}
+    by_name = {o.name: o for o in spec.outputs}
+    for name in list(wanted):
+        o = by_name[name]
+        if o.series and o.x is not None:
+            wanted.add(o.x)
+    if series:
+        wanted |= {o.name for o in spec.outputs if o.series}
+    return wanted
+
+
 def _finite(value: Value) -> bool:
     return not isinstance(value, float) or math.isfinite(value)
 
@@ -162,11 +181,14 @@ def run(
     outputs: Iterable[str] | None = None,
     budget_s: float | None = DEFAULT_BUDGET_S,
     max_steps: int = DEFAULT_MAX_STEPS,
+    series: bool = False,
 ) -> RunResult:
     """Evaluate ``spec`` on SI ``inputs``.
 
-    ``outputs`` limits the work to the named outputs and series (all when
-    None). Non-finite values never leave: they become None with a note.
+    ``outputs`` limits the work to the named outputs and series (every scalar
+    output when None). Series are computed only when asked for: named in
+    ``outputs`` (with the series each is plotted against), or all of them with
+    ``series=True``. Non-finite values never leave: they become None with a note.
     ``budget_s`` and ``max_steps`` reach the model as ``ctx.deadline`` and
     ``ctx.max_steps``; a model past either raises BudgetExceeded.
     """
@@ -177,14 +199,15 @@ def run(
             f"tolerance = {tol:g} is not allowed: must be > 0 and < 1", field="tolerance"
         )
     known = {o.name for o in spec.outputs}
-    wanted = frozenset(known if outputs is None else outputs)
-    unknown = sorted(wanted - known)
+    asked_for = set(known if outputs is None else outputs)
+    unknown = sorted(asked_for - known)
     if unknown:
         raise InputOutOfRange(
             f"unknown output(s) {', '.join(unknown)}; {spec.name} offers "
             + ", ".join(sorted(known)),
             field="outputs",
         )
+    wanted = frozenset(_wanted(spec, asked_for, named=outputs is not None, series=series))
     rung, notes = choose_rung(spec, values, _fidelity(spec, fidelity, tolerance), tol)
     start = time.perf_counter()
     ctx = RunContext(

@@ -43,3 +43,22 @@ def test_a_sweep_does_not_run_the_points_one_by_one():
     )
     assert s.rungs[7] == ref.rung and s.error_estimates[7] == ref.error_estimate
     assert s.results["impact_torque"][7] == ref.results["impact_torque"]
+
+
+def test_series_only_when_asked_and_a_named_curve_brings_its_time_axis():
+    from engine.models.nutrunner import EXAMPLE_INDUCTION_MOTOR
+
+    plain = engine.run(NUTRUNNER_DRIVE, EXAMPLE_INDUCTION_MOTOR, fidelity="motor_curve")
+    assert plain.series == {} and "time" not in plain.units
+    named = engine.run(
+        NUTRUNNER_DRIVE,
+        EXAMPLE_INDUCTION_MOTOR,
+        fidelity="motor_curve",
+        outputs=["motor_speed_curve"],
+    )
+    assert set(named.series) == {"motor_speed_curve", "time"} and named.results == {}
+    every = engine.run(
+        NUTRUNNER_DRIVE, EXAMPLE_INDUCTION_MOTOR, fidelity="motor_curve", series=True
+    )
+    assert set(every.series) == {"time", "motor_speed_curve", "flywheel_speed_curve"}
+    assert every.results == plain.results

@@ -43,7 +43,7 @@ def ctx(**kw):
 
 
 def test_simulation_reports_series_and_stage_durations():
-    r = run(RARE_IMPACT, R, fidelity="simulation")
+    r = run(RARE_IMPACT, R, fidelity="simulation", series=True)
     assert r.rung == "simulation" and r.error_estimate == 1e-6
     s = r.series
     n = len(s["time"])
@@ -217,7 +217,7 @@ def test_every_solve_is_bounded_by_steps_and_deadline():
 
 
 def test_striker_that_never_reaches_h2_gets_a_verdict():
-    r = run(RARE_IMPACT, {**R, "engagement_height": 0.006}, fidelity="simulation")
+    r = run(RARE_IMPACT, {**R, "engagement_height": 0.006}, fidelity="simulation", series=True)
     assert r.results["engagement_time"] is None and r.results["full_engagement"] is False
     assert r.results["return_time"] is None and r.results["relock_time"] is None
     assert any("never reaches the engagement height" in w for w in r.warnings)
@@ -283,7 +283,7 @@ def test_property_any_design_gives_finite_results_or_a_clean_refusal(
 
 
 def test_time_to_travel_is_consistent_with_the_simulated_stage2():
-    r = run(RARE_IMPACT, R, fidelity="simulation")
+    r = run(RARE_IMPACT, R, fidelity="simulation", series=True)
     b, k = r.results["oscillation_B"], r.results["oscillation_k"]
     assert r.results["engagement_time"] == pytest.approx(time_to_travel(0.004, b, k))
 
