@@ -235,7 +235,7 @@ def run(
 
     units = {o.name: o.unit for o in spec.outputs}
     scalars: dict[str, Value] = {}
-    series: dict[str, list[float]] = {}
+    curves: dict[str, list[float]] = {}
     notes = notes + list(spec.assumptions) + result.notes
     for name, value in result.values.items():
         if name not in wanted:
@@ -258,7 +258,7 @@ def run(
         if not np.all(np.isfinite(arr)):
             notes.append(f"series {name} had non-finite points; omitted")
             continue
-        series[name] = arr.tolist()
+        curves[name] = arr.tolist()
     error = result.error_estimate
     if error is not None and not math.isfinite(error):
         notes.append("the error estimate is unbounded for these inputs; null")
@@ -266,7 +266,7 @@ def run(
     return RunResult(
         model=spec.name,
         results=scalars,
-        units={n: units[n] for n in (*scalars, *series)},
+        units={n: units[n] for n in (*scalars, *curves)},
         rung=result.rung,
         error_estimate=error,
         elapsed_s=elapsed,
@@ -274,7 +274,7 @@ def run(
         checks=result.checks,
         notes=notes,
         warnings=warnings + result.warnings,
-        series=series,
+        series=curves,
     )
 
 

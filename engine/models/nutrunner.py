@@ -604,7 +604,7 @@ def _estimate_closed_form(x: Mapping[str, Any]) -> float:
         np.minimum(m_paper, m_geared) > friction, np.maximum(gear, after_friction), gear
     )
     estimate = np.maximum(np.maximum(_FLOOR, gear), _idealisation_error(x))
-    return float(estimate) if estimate.ndim == 0 else estimate  # type: ignore[return-value]
+    return float(estimate) if estimate.ndim == 0 else estimate
 
 
 def _spread(r: Any) -> Any:
