@@ -58,6 +58,20 @@ case). This is a failing check, not a refusal. Of the paper's own range
 Spring checks (not in the paper; standard helical compression spring design):
 spring index C = D/d0, Wahl factor K_w = (4C − 1)/(4C − 4) + 0.615/C, wire
 shear stress τ = 8 F D K_w / (π d0³).
+
+The clutch as built (beyond the paper; the paper's eq. 1–3 are its zero-lift
+point): the ball climbs the flank by the lift h (the groove depth, which the
+paper equates with the spring's setting Δ) and then rolls over the rim, rising
+(d/2)(1 − sin α) more (:func:`rim_rise`, :func:`lift_points`); the spring is
+compressed by the lift, so the torque follows :func:`torque_against_lift` and
+peaks where the spring force and the contact angle balance (at the rim for a
+helical spring; at the start for disc springs set past their force maximum,
+:mod:`engine.springs`). In the paper's case the spring reaches c(Δ + Δ) at the
+peak: its stress doubles, 45.4 → 90.8 MPa. An inclined driving flank α′ ([001,
+fig. 6]) adds its own push (:func:`combined_push_factor`); the margin to
+self-locking and dT/df (:func:`friction_sensitivity`); the residual torque on
+the face (:func:`residual_torque`); sizing from the drive
+(:func:`rated_torque`, :func:`acceleration_torque`, :func:`required_slip_torque`).
 """
 
 from __future__ import annotations
@@ -815,3 +829,406 @@ def wire_diameter_for_torque(
         arrangement,
     )
     return wire_diameter_for_force(force, shear_modulus, mean_diameter, active_coils, deflection)
+
+
+# --------------------------------------------------------------------------
+# The clutch as built: two flank angles, the lift characteristic, self-locking,
+# sizing from the drive (issue 17; beyond [001], whose eq. 1-3 are the lift-0 point)
+# --------------------------------------------------------------------------
+
+#: Smallest margin α − atan f between the flank angle and the friction angle
+#: below which the torque limit is too sensitive to friction to be set: at
+#: 10° a change of f by 0.05 moves the limit by about 30 % (α = 30°).
+SELF_LOCKING_MARGIN = math.radians(10.0)
+#: Service factors torque-limiter makers recommend on the drive's torque.
+RECOMMENDED_SERVICE_FACTOR = (1.5, 3.0)
+
+
+def combined_push_factor(
+    groove_angle: FloatArray,
+    flank_friction: FloatArray = 0.0,
+    driving_groove_angle: FloatArray | None = None,
+) -> FloatArray:
+    r"""Axial push on a ball per unit tangential force, with one or two inclined flanks.
+
+    .. math::
+        \frac{F_a}{F_t} = \tan(\alpha'' - \rho) \;\text{(driving wall parallel to the axis)},
+        \qquad
+        \frac{F_a}{F_t} = \tan(\alpha' - \rho) + \tan(\alpha'' - \rho)
+
+    Parameters
+    ----------
+    groove_angle : float
+        α″, flank angle of the driven half-coupling's groove, [rad]
+    flank_friction : float, optional
+        f, ρ = atan f, on both flanks, [-]
+    driving_groove_angle : float or None, optional
+        α′, flank angle of the driving half-coupling's groove; None when the
+        driving half pushes the ball circumferentially (its wall parallel to
+        the axis, α′ = 0 with no friction term), which is [001, eq. 1], [rad]
+
+    Returns
+    -------
+    push : float
+        F_a / F_t, [-]
+
+    Notes
+    -----
+    [001, eq. 1] writes the axial push of the driven flank only. When the
+    driving groove is inclined too ([001, fig. 6] names α′ and α″), the ball
+    climbs both flanks at once: by virtual work, a relative turn dx lifts the
+    ball by dx/(tan α′ + tan α″), so the axial force per tangential force is
+    the sum. Equal angles therefore give twice the push of eq. 1 and half the
+    torque for the same spring, not the same torque. With friction each
+    flank's reaction tilts by ρ (the ball slides up both); the ball's own
+    moment balance (it rolls on one flank, slides on the other) is neglected,
+    as in the paper.
+
+    Examples
+    --------
+    >>> round(combined_push_factor(math.radians(45.0)), 12)
+    1.0
+    >>> round(combined_push_factor(math.radians(45.0), 0.0, math.radians(45.0)), 12)
+    2.0
+    """
+    rho = np.arctan(flank_friction)
+    push = np.tan(np.asarray(groove_angle) - rho)
+    if driving_groove_angle is not None:
+        push = push + np.tan(np.asarray(driving_groove_angle) - rho)
+    return _out(push)
+
+
+def rim_rise(ball_diameter: FloatArray, groove_angle: FloatArray) -> FloatArray:
+    r"""Rise of the ball's centre while it rolls over the groove's rim onto the face.
+
+    .. math::
+        \Delta z_{rim} = \frac{d}{2}\,(1 - \sin\alpha)
+
+    Parameters
+    ----------
+    ball_diameter : float
+        d, [m]
+    groove_angle : float
+        α, flank angle (its normal makes α with the plane of rotation), [rad]
+
+    Returns
+    -------
+    rise : float
+        Extra lift after the flank, [m]
+
+    Notes
+    -----
+    Geometry of a sphere pivoting on the rim edge: with the contact normal at
+    angle β from the plane of rotation the centre stands r sin β above the
+    edge, from β = α (leaving the flank) to β = 90° (on the face). Not in
+    [001].
+
+    Examples
+    --------
+    >>> round(rim_rise(0.01, math.radians(45.0)) * 1e3, 4)
+    1.4645
+    """
+    return _out(np.asarray(ball_diameter) / 2.0 * (1.0 - np.sin(np.asarray(groove_angle))))
+
+
+def lift_points(
+    ball_lift: float, ball_diameter: float, groove_angle: float, points: int = 41
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+    r"""Lifts from seated to riding on the face, and the contact angle at each.
+
+    .. math::
+        \beta(z) = \alpha \;(z \le h), \qquad
+        \sin\beta(z) = \sin\alpha + \frac{z - h}{d/2} \;(z > h)
+
+    Parameters
+    ----------
+    ball_lift : float
+        h, the ball's rise along the flank from seated to the rim, [m]
+    ball_diameter : float
+        d, [m]
+    groove_angle : float
+        α of the driven groove, [rad]
+    points : int, optional
+        Points on the flank and as many over the rim, [-]
+
+    Returns
+    -------
+    lift : ndarray
+        Lift z of the ball (and of the pressure disk), ascending, [m]
+    angle : ndarray
+        Contact angle β at each lift, α on the flank, → 90° on the face, [rad]
+
+    Notes
+    -----
+    On the flank the angle is α ([001, eq. 1]); over the rim it follows
+    :func:`rim_rise`. Rim points are spaced evenly in β.
+
+    Examples
+    --------
+    >>> z, b = lift_points(0.004, 0.01, math.radians(45.0), 3)
+    >>> [round(float(v) * 1e3, 4) for v in z]
+    [0.0, 2.0, 4.0, 5.0839, 5.4645]
+    """
+    flank = np.linspace(0.0, ball_lift, points)
+    beta_rim = np.linspace(groove_angle, math.pi / 2.0, points)[1:]
+    rim = ball_lift + ball_diameter / 2.0 * (np.sin(beta_rim) - math.sin(groove_angle))
+    lift = np.concatenate([flank, rim])
+    angle = np.concatenate([np.full(points, groove_angle), beta_rim])
+    return lift, angle
+
+
+def torque_against_lift(
+    spring_force: FloatArray,
+    contact_angle: FloatArray,
+    ball_circle_diameter: float,
+    flank_friction: float = 0.0,
+    driving_groove_angle: float | None = None,
+    sharing: float = 1.0,
+) -> FloatArray:
+    r"""Torque that holds the balls at a lift, from the spring force there.
+
+    .. math::
+        T(z) = \frac{s \, D_0 \, F(z)}{2 \, p(\beta(z))}, \qquad
+        p = \tan(\beta - \rho) \;[+ \tan(\alpha' - \rho)]
+
+    Parameters
+    ----------
+    spring_force : float or array
+        Spring force F(z) at each lift, [N]
+    contact_angle : float or array
+        β(z) from :func:`lift_points`, [rad]
+    ball_circle_diameter : float
+        D0, [m]
+    flank_friction : float, optional
+        f, [-]
+    driving_groove_angle : float or None, optional
+        α′, see :func:`combined_push_factor`, [rad]
+    sharing : float, optional
+        s = 1 for one common spring, K_r i for one spring per ball, [-]
+
+    Returns
+    -------
+    torque : float or array
+        T(z), [N*m]
+
+    Notes
+    -----
+    [001, eq. 1-3] at each lift with the spring force there: at z = 0 it is
+    :func:`torque_limit` exactly. Rising spring force raises T along the flank;
+    over the rim β → 90° and T falls to f D0 F/2 (sliding on the face); a
+    falling disc-spring force lowers T from the start.
+
+    Examples
+    --------
+    >>> round(torque_against_lift(22.4746, math.radians(45.0), 0.05), 5)
+    0.56187
+    """
+    push = combined_push_factor(contact_angle, flank_friction, driving_groove_angle)
+    return _out(
+        sharing * ball_circle_diameter * np.asarray(spring_force) / (2.0 * np.asarray(push))
+    )
+
+
+def residual_torque(
+    spring_force: FloatArray,
+    ball_circle_diameter: FloatArray,
+    face_friction: FloatArray,
+    springs: FloatArray = 1.0,
+) -> FloatArray:
+    r"""Torque while the balls ride on the end face (the clutch slipping).
+
+    .. math::
+        T_{res} = n_s \, \mu_f \, F \, \frac{D_0}{2}
+
+    Parameters
+    ----------
+    spring_force : float
+        Spring force at full lift (each spring's, for one spring per ball), [N]
+    ball_circle_diameter : float
+        D0, [m]
+    face_friction : float
+        μ_f, effective friction of the balls on the face (rolling with the
+        drag in their pockets; ≈ 0.002 free rolling … 0.1 sliding), [-]
+    springs : float, optional
+        n_s, 1 for one common spring, the ball count for one spring per ball, [-]
+
+    Returns
+    -------
+    torque : float
+        T_res, [N*m]
+
+    Notes
+    -----
+    Coulomb friction of the spring force on the ball circle; not in [001].
+
+    Examples
+    --------
+    >>> round(residual_torque(100.0, 0.05, 0.01), 4)
+    0.025
+    """
+    return _out(
+        np.asarray(springs)
+        * np.asarray(face_friction)
+        * np.asarray(spring_force)
+        * np.asarray(ball_circle_diameter)
+        / 2.0
+    )
+
+
+def friction_sensitivity(
+    torque: FloatArray,
+    groove_angle: FloatArray,
+    flank_friction: FloatArray,
+    driving_groove_angle: FloatArray | None = None,
+) -> FloatArray:
+    r"""Change of the torque limit per unit change of the flank friction, dT/df.
+
+    .. math::
+        \frac{dT}{df} = \frac{T}{p}\,\frac{\sec^2(\alpha'' - \rho)
+                        [+ \sec^2(\alpha' - \rho)]}{1 + f^2}
+
+    Parameters
+    ----------
+    torque : float
+        Torque limit T at f, [N*m]
+    groove_angle : float
+        α″, [rad]
+    flank_friction : float
+        f, [-]
+    driving_groove_angle : float or None, optional
+        α′, [rad]
+
+    Returns
+    -------
+    sensitivity : float
+        dT/df, [N*m]
+
+    Notes
+    -----
+    Derivative of T = s D0 F/(2p) with p from :func:`combined_push_factor`,
+    dρ/df = 1/(1 + f²). Near self-locking (α − ρ → 0) it grows without bound.
+
+    Examples
+    --------
+    >>> round(friction_sensitivity(1.0, math.radians(45.0), 0.0), 6)
+    2.0
+    """
+    rho = np.arctan(flank_friction)
+    a = np.asarray(groove_angle) - rho
+    push = np.tan(a)
+    dpush = 1.0 / np.cos(a) ** 2
+    if driving_groove_angle is not None:
+        b = np.asarray(driving_groove_angle) - rho
+        push = push + np.tan(b)
+        dpush = dpush + 1.0 / np.cos(b) ** 2
+    return _out(np.asarray(torque) / push * dpush / (1.0 + np.asarray(flank_friction) ** 2))
+
+
+def rated_torque(power: FloatArray, speed: FloatArray) -> FloatArray:
+    r"""Rated torque of a drive from its power and speed.
+
+    .. math::
+        T_N = \frac{P}{\omega}
+
+    Parameters
+    ----------
+    power : float
+        P, [W]
+    speed : float
+        ω, [rad/s]
+
+    Returns
+    -------
+    torque : float
+        T_N, [N*m]
+
+    Notes
+    -----
+    Definition of power; the coupling-selection practice of limiter makers
+    starts from it.
+
+    Examples
+    --------
+    >>> round(rated_torque(1500.0, 157.08), 3)
+    9.549
+    """
+    return _out(np.asarray(power) / np.asarray(speed))
+
+
+def acceleration_torque(
+    drive_torque: FloatArray,
+    drive_inertia: FloatArray,
+    load_inertia: FloatArray,
+    load_torque: FloatArray = 0.0,
+) -> FloatArray:
+    r"""Torque through a coupling while the drive accelerates the load.
+
+    .. math::
+        T_a = T_{drive}\frac{J_L}{J_A + J_L} + T_L \frac{J_A}{J_A + J_L}
+
+    Parameters
+    ----------
+    drive_torque : float
+        Peak torque of the drive (motor) while starting, [N*m]
+    drive_inertia : float
+        J_A, inertia on the driving side of the coupling, [kg*m^2]
+    load_inertia : float
+        J_L, inertia on the driven side (referred to the coupling's speed), [kg*m^2]
+    load_torque : float, optional
+        T_L, steady resisting torque of the load, [N*m]
+
+    Returns
+    -------
+    torque : float
+        T_a, [N*m]
+
+    Notes
+    -----
+    Two rigid inertias joined by the coupling, both accelerating at
+    (T_drive − T_L)/(J_A + J_L): the coupling carries T_L plus the torque that
+    accelerates J_L. The same split as the couplings makers' start-up load
+    formula. A limiter set below T_a slips at every start.
+
+    Examples
+    --------
+    >>> acceleration_torque(30.0, 0.01, 0.02)
+    20.0
+    """
+    ja, jl = np.asarray(drive_inertia), np.asarray(load_inertia)
+    total = ja + jl
+    return _out(np.asarray(drive_torque) * jl / total + np.asarray(load_torque) * ja / total)
+
+
+def required_slip_torque(
+    rated: FloatArray, service_factor: FloatArray, start_torque: FloatArray = 0.0
+) -> FloatArray:
+    r"""Slip torque a limiter must be set to so that it carries the drive.
+
+    .. math::
+        T_{slip} = \max(K \, T_N, \; T_a)
+
+    Parameters
+    ----------
+    rated : float
+        T_N, rated torque of the drive (or its peak working torque), [N*m]
+    service_factor : float
+        K, 1.5…3 as limiter makers recommend (smooth … shock loads), [-]
+    start_torque : float, optional
+        T_a from :func:`acceleration_torque`, [N*m]
+
+    Returns
+    -------
+    torque : float
+        Required slip torque, [N*m]
+
+    Notes
+    -----
+    Torque-limiter selection practice: the set torque covers the working
+    torque with a service factor and is not reached while starting.
+
+    Examples
+    --------
+    >>> required_slip_torque(10.0, 2.0, 25.0)
+    25.0
+    """
+    return _out(np.maximum(np.asarray(rated) * np.asarray(service_factor), start_torque))

@@ -18,10 +18,13 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
+from .equations import equations_of
 from .errors import InputOutOfRange
 from .sources import SOURCES, cited_ids
 
-ParamKind = Literal["float", "int", "choice", "bool"]
+ParamKind = Literal["float", "int", "choice", "bool", "text"]
+#: Longest value a ``text`` input accepts (a designation such as "M10x1.25 ISO 4762 12.9").
+MAX_TEXT_LENGTH = 64
 OutputKind = Literal["float", "int", "bool", "str"]
 Value = float | int | bool | str | None
 
@@ -34,6 +37,9 @@ class Param:
     units); ``recommended`` is the range the source recommends (a warning
     outside it). A param with ``default=None`` and ``required=False`` is
     optional: absent means "not given", and the model decides what that means.
+    A ``text`` param takes a free string of at most :data:`MAX_TEXT_LENGTH`
+    characters (a fastener designation); its ``choices`` are suggestions, not
+    a limit, and the model parses the text (InputOutOfRange naming the field).
     """
 
     name: str
@@ -52,6 +58,8 @@ class Param:
     symbol: str | None = None
     display_unit: str | None = None
     group: str | None = None
+    #: Readable names of ``choices``, in the same order (optional; the form shows them).
+    choice_labels: tuple[str, ...] = ()
 
     @property
     def is_numeric(self) -> bool:
@@ -61,6 +69,11 @@ class Param:
         """The allowed range in words, e.g. ``> 0 m and ≤ 1 m``."""
         if self.kind == "choice":
             return "one of " + ", ".join(repr(c) for c in self.choices)
+        if self.kind == "text":
+            shown = ", ".join(repr(c) for c in self.choices[:3])
+            return f"a text of at most {MAX_TEXT_LENGTH} characters" + (
+                f", e.g. {shown}" if shown else ""
+            )
         if self.kind == "bool":
             return "true or false"
         unit = "" if self.unit == "1" else f" {self.unit}"
@@ -82,6 +95,10 @@ class Param:
             if not isinstance(value, bool):
                 raise self._error(value)
             return value
+        if self.kind == "text":
+            if not isinstance(value, str) or not value.strip() or len(value) > MAX_TEXT_LENGTH:
+                raise self._error(value)
+            return value.strip()
         if isinstance(value, bool) or not isinstance(value, int | float):
             raise self._error(value)
         if self.kind == "int":
@@ -132,6 +149,7 @@ class Param:
             "exclusive_maximum": self.exclusive_maximum,
             "recommended": list(self.recommended) if self.recommended else None,
             "choices": list(self.choices) or None,
+            "choice_labels": list(self.choice_labels) or None,
             "range": self.range_text(),
             "group": self.group,
             "description": self.description,
@@ -313,6 +331,9 @@ class ModelSpec:
             raise ValueError(f"{self.name}: inputs may not use the names {sorted(reserved)}")
         if not self.rungs:
             raise ValueError(f"{self.name}: at least one rung is required")
+        for p in self.inputs:
+            if p.choice_labels and len(p.choice_labels) != len(p.choices):
+                raise ValueError(f"{self.name}.{p.name}: one choice label per choice")
         if self.default_fidelity not in ("auto", *self.rung_names):
             raise ValueError(f"{self.name}: unknown default_fidelity {self.default_fidelity!r}")
         for r in self.rungs:
@@ -408,6 +429,8 @@ class ModelSpec:
             "rungs": [r.describe() for r in self.rungs],
             "assumptions": list(self.assumptions),
             "examples": [dict(e) for e in self.examples],
+            # read from the engine functions' docstrings, for the calculation report
+            "equations": [dict(e) for e in equations_of(self.compute)],
         }
 
 

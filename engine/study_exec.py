@@ -102,7 +102,8 @@ class DaskExecutor:
                         threads_per_worker=1,
                         processes=True,
                         host="127.0.0.1",
-                        dashboard_address=None,
+                        # an HTTP port of its own on loopback (None would still take 8787)
+                        dashboard_address="127.0.0.1:0",
                         silence_logs=40,
                     )
                     self._client = Client(self._cluster, set_as_default=False)

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from fastapi import APIRouter
 
+from .fasteners import router as fasteners_router
 from .preload import router as preload_router
 
-EXTRA_ROUTERS: list[APIRouter] = [preload_router]
+EXTRA_ROUTERS: list[APIRouter] = [preload_router, fasteners_router]

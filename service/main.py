@@ -25,10 +25,10 @@ from collections.abc import AsyncIterator, Sequence
 from contextlib import asynccontextmanager
 from pathlib import Path
 
-from fastapi import FastAPI
+from fastapi import FastAPI, Request
 from fastapi.middleware.cors import CORSMiddleware
 from fastapi.openapi.docs import get_redoc_html, get_swagger_ui_html
-from fastapi.responses import HTMLResponse
+from fastapi.responses import HTMLResponse, RedirectResponse
 from fastapi.staticfiles import StaticFiles
 
 import engine
@@ -97,7 +97,9 @@ def static_dir() -> Path:
 
 
 def create_app(
-    models: Sequence[ModelSpec] | None = None, settings: Settings | None = None
+    models: Sequence[ModelSpec] | None = None,
+    settings: Settings | None = None,
+    study_settings: StudySettings | None = None,
 ) -> FastAPI:
     models = engine.MODELS if models is None else models
     settings = settings or Settings()
@@ -109,7 +111,7 @@ def create_app(
         max_series_points=settings.max_series_points,
     )
 
-    studies = Studies(StudySettings())
+    studies = Studies(study_settings or StudySettings())
 
     @asynccontextmanager
     async def lifespan(_: FastAPI) -> AsyncIterator[None]:
@@ -156,6 +158,14 @@ def create_app(
     @app.get("/redoc", include_in_schema=False)
     def redoc_page() -> HTMLResponse:
         return redoc
+
+    @app.get("/report", include_in_schema=False)
+    def report(request: Request) -> RedirectResponse:
+        """``/report?m=…&ex=0&…``: the calculation report of a link's query (to archive)."""
+        query = request.url.query
+        return RedirectResponse(
+            "./#" + (query + "&" if query else "") + "view=report", status_code=303
+        )
 
     app.include_router(catalogue_router(models))
     for spec in models:

@@ -22,6 +22,7 @@ from pydantic import (
 from pydantic_core import PydanticCustomError
 
 from engine import InputOutOfRange, ModelSpec, Param
+from engine.spec import MAX_TEXT_LENGTH
 
 from .units import MAX_UNIT_STRING, UnitError, to_si
 
@@ -142,11 +143,37 @@ def _field(p: Param, *, all_optional: bool = False) -> tuple[Any, Any]:
             bool | None,
             Field(default=p.default, description=description, strict=True),
         )
+    if p.kind == "text":
+        return _text_field(p, required=p.required and not all_optional)
     annotated = Annotated[
         Any, BeforeValidator(_numeric_validator(p)), WithJsonSchema(_field_schema(p))
     ]
     required = p.required and not all_optional
     return annotated, Field(default=... if required else p.default, description=description)
+
+
+def _text_field(p: Param, *, required: bool) -> tuple[Any, Any]:
+    """A free-text input (a fastener designation): a string, checked by the engine's Param."""
+
+    def validate(value: Any) -> Any:
+        if value is None and not required:
+            return None
+        try:
+            return p.check(value)
+        except InputOutOfRange as exc:
+            raise PydanticCustomError("text_invalid", "{msg}", {"msg": exc.message}) from None
+
+    schema: dict[str, Any] = {
+        "title": p.label or p.name.replace("_", " "),
+        "description": f"{p.description} [{p.range_text()}]",
+        "type": "string",
+        "minLength": 1,
+        "maxLength": MAX_TEXT_LENGTH,
+    }
+    if p.choices:
+        schema["examples"] = list(p.choices)
+    annotated = Annotated[Any, BeforeValidator(validate), WithJsonSchema(schema)]
+    return annotated, Field(default=... if required else p.default, description=p.description)
 
 
 def _class_name(spec: ModelSpec, suffix: str) -> str:

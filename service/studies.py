@@ -39,7 +39,8 @@ from engine import ModelSpec
 from engine.study import DISTRIBUTIONS, METHODS, Study, Variable, plan, points_table
 from engine.study_exec import Cancelled, DaskExecutor, InProcess, StudyRun, run_study
 
-from .api import API_PREFIX
+from . import schemas
+from .api import _ERRORS, API_PREFIX
 from .units import UnitError, to_si
 
 _KEEP_JOBS = 64
@@ -385,16 +386,32 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
                 "returns 202 with a job to poll at GET /api/v1/jobs/{id}."
             ),
             operation_id=spec.name.replace(".", "_") + "_study",
+            responses={
+                **_ERRORS,
+                202: {"description": "accepted: the job to poll (state, progress, links)"},
+                503: {
+                    "model": schemas.ErrorResponse,
+                    "description": "too many unfinished studies (per client or in all); retry",
+                },
+            },
         )
 
     for spec in models:
         add(spec)
 
-    @router.get("/jobs/{job_id}", summary="A study's state, progress and, when done, result")
+    _404: dict[int | str, dict[str, Any]] = {
+        404: {"model": schemas.ErrorResponse, "description": "no such job (or expired)"}
+    }
+
+    @router.get(
+        "/jobs/{job_id}",
+        summary="A study's state, progress and, when done, result",
+        responses=_404,
+    )
     def get_job(job_id: str) -> dict[str, Any]:
         return studies.get(job_id).describe()
 
-    @router.delete("/jobs/{job_id}", summary="Cancel a study and free its workers")
+    @router.delete("/jobs/{job_id}", summary="Cancel a study and free its workers", responses=_404)
     def cancel_job(job_id: str) -> dict[str, Any]:
         return studies.cancel(job_id).describe()
 
@@ -402,6 +419,7 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
         "/jobs/{job_id}/points.csv",
         summary="The raw points of a finished study (asked with keep_points)",
         response_class=Response,
+        responses={**_404, 200: {"content": {"text/csv": {}}, "description": "the points"}},
     )
     def points(job_id: str) -> Response:
         job = studies.get(job_id)

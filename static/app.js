@@ -22,6 +22,11 @@ const state = {
   sweepParams: null, // the last sweep's settings, kept in the address bar
   seq: 0, // answers to an older request than the latest are dropped
   sweepSeq: 0,
+  imperial: false, // the metric/imperial switch (results, fields and sweeps)
+  choiceNames: {}, // choice key -> readable name, from the spec and the API's catalogues
+  fasteners: null, // GET /api/v1/fasteners when the service has it
+  version: "", // the service's version, for the report
+  lastSnapshot: null, // the inputs (SI) of the result shown, to mark it stale
 };
 window.calcState = state; // for the browser test and for curious users in the console
 
@@ -86,7 +91,7 @@ function fieldNumber(x, sig = 10) {
 /** Significant figures a result deserves, from its relative error estimate. */
 function sigFigs(err) {
   if (err === null || err === undefined || !(err > 0)) return 4;
-  return Math.min(6, Math.max(3, Math.ceil(-Math.log10(err)) + 1));
+  return Math.min(6, Math.max(2, Math.ceil(-Math.log10(err)) + 1));
 }
 
 function fmt(x, sig = 4) {
@@ -97,7 +102,55 @@ function fmt(x, sig = 4) {
   const a = Math.abs(x);
   if (a >= 1e6 || a < 1e-3) return x.toExponential(sig - 1).replace("e+", "e");
   const p = x.toPrecision(sig);
-  return p.includes("e") ? String(Number(p)) : p;
+  return group(p.includes("e") ? String(Number(p)) : p);
+}
+
+/** Digit grouping with a narrow no-break space, for integer parts of five digits or more. */
+const GROUP = "\u202f";
+function group(s) {
+  const m = String(s).match(/^([+-]?)(\d+)(\.\d+)?$/);
+  if (!m || m[2].length < 5) return s;
+  return m[1] + m[2].replace(/\B(?=(\d{3})+(?!\d))/g, GROUP) + (m[3] || "");
+}
+
+/** A typed number: "12.5", or "12,5" with a decimal comma (read as a point); NaN otherwise. */
+function parseNum(raw) {
+  const s = String(raw ?? "").trim();
+  if (s === "") return NaN;
+  if (/^[+-]?\d*,\d+(e[+-]?\d+)?$/i.test(s)) return Number(s.replace(",", "."));
+  return Number(s);
+}
+
+/** The typed text with a decimal comma turned into a point (what the API parses). */
+function dotted(raw) {
+  const s = String(raw ?? "").trim();
+  return /^[+-]?\d*,\d+(e[+-]?\d+)?$/i.test(s) ? s.replace(",", ".") : s;
+}
+
+/** Units the metric/imperial switch treats as imperial (offered after the metric ones in units.json). */
+const IMPERIAL = new Set(["in", "ft", "in²", "in³", "lb", "lbf", "kip", "lbf·ft", "lbf·in", "psi", "ksi", "hp",
+  "ft·lbf", "lbf/in", "in/lbf", "lbf·ft/rad", "lb·in²", "ft/s", "in/s", "ft/s²"]);
+
+/** Outputs that are ratios, shown in %: shares, utilisations, deviations, scatters, margins. */
+function isRatio(o) {
+  return norm(o.unit) === "1" && o.kind === "float"
+    && /share|utili[sz]ation|deviation|scatter|relative|margin|fraction|efficiency|change/.test(o.name);
+}
+
+/** A readable name: the spec's label, or its description when the label is only a code ("z1"). */
+function labelOf(o) {
+  const generic = o.label === o.name.replaceAll("_", " ");
+  if (generic && o.name.length <= 3 && o.description) {
+    const d = o.description.split(/[,;(]/)[0].trim();
+    return d.length > 48 ? d.slice(0, 47) + "…" : d;
+  }
+  return o.label;
+}
+
+/** A choice or a list of choices ("torque_wrench, nut_angle") in readable names. */
+function choiceText(v) {
+  if (typeof v !== "string") return v;
+  return v.split(/(,\s*)/).map((t) => state.choiceNames[t] ?? t).join("");
 }
 
 /** A limit or default in words: a few significant figures, no trailing zeros. */
@@ -130,10 +183,45 @@ async function init() {
   ]);
   state.models = models.models;
   for (const [si, choices] of Object.entries(units)) if (!si.startsWith("_")) state.units[norm(si)] = choices;
+  await loadCatalogues();
+  state.imperial = localStorage.getItem("unit-system") === "imperial";
+  const system = document.getElementById("unit-system");
+  system.value = state.imperial ? "imperial" : "metric";
+  system.addEventListener("change", () => switchSystem(system.value === "imperial"));
   renderNav();
   window.addEventListener("hashchange", () => route());
   await route();
   document.body.dataset.ready = "1";
+}
+
+/**
+ * What the service offers beyond the catalogue, each optional: its version (for the
+ * report), the preload-control methods with their scatter (readable method names),
+ * and the fastener catalogue (thread and property-class pickers) where it exists.
+ */
+async function loadCatalogues() {
+  const get = (path) => fetch(path).then((r) => (r.ok ? r.json() : null)).catch(() => null);
+  // only what the service declares is asked for (no 404s in the console)
+  const openapi = await get("openapi.json");
+  const has = (path) => Boolean(openapi?.paths?.["/" + API + path]);
+  const [methods, fasteners] = await Promise.all([
+    has("/preload/methods") ? get(API + "/preload/methods") : null, has("/fasteners") ? get(API + "/fasteners") : null]);
+  state.version = openapi?.info?.version ?? "";
+  for (const m of state.models) {
+    for (const p of m.inputs) {
+      (p.choice_labels || []).forEach((label, i) => { state.choiceNames[p.choices[i]] = label; });
+    }
+  }
+  for (const x of methods?.methods || []) {
+    const scatter = typeof x.scatter === "number" ? ` (±${short(x.scatter * 100, 2)} %)` : "";
+    state.choiceNames[x.key] ??= x.name + scatter;
+  }
+  if (fasteners && Array.isArray(fasteners.threads)) state.fasteners = fasteners;
+  for (const pc of state.fasteners?.property_classes || []) {
+    if (typeof pc.yield_strength === "number") {
+      state.choiceNames[pc.name] ??= `${pc.name} (R_p0.2 ${short(pc.yield_strength / 1e6, 4)} MPa)`;
+    }
+  }
 }
 
 function renderNav() {
@@ -159,16 +247,24 @@ async function route() {
   const name = params.get("m");
   const m = state.models.find((x) => x.name === name);
   if (!m) return renderHome();
-  if (state.model !== m || params.size > 1) showModel(m, params);
+  const fresh = state.model !== m;
+  if (fresh || params.size > 1) showModel(m, params);
+  // on a phone the menu sits above the form: go to the form
+  if (fresh && window.matchMedia("(max-width: 800px)").matches) document.getElementById("model").scrollIntoView();
   if (params.has("ex") || [...params.keys()].some((k) => m.inputs.some((p) => p.name === k))) await compute();
   if (params.has("sv") && document.getElementById("sweep-vary")) {
-    // a shared sweep: its input, output, range, points and scale
+    // a shared sweep: its input, unit, outputs, range, points, scale and axes
     const set = (id, key) => { if (params.has(key)) document.getElementById(id).value = params.get(key); };
     set("sweep-vary", "sv");
     sweepDefaults(m);
-    for (const [id, key] of [["sweep-output", "so"], ["sweep-start", "s0"], ["sweep-stop", "s1"], ["sweep-num", "sn"], ["sweep-scale", "ss"]]) set(id, key);
+    if (params.has("su")) setSweepUnit(m, params.get("su"));
+    const outs = (params.get("so") || "").split(",").filter(Boolean);
+    if (outs.length) document.getElementById("sweep-output").value = outs[0];
+    for (const box of document.querySelectorAll("#sweep-more input")) box.checked = outs.slice(1).includes(box.value);
+    for (const [id, key] of [["sweep-start", "s0"], ["sweep-stop", "s1"], ["sweep-num", "sn"], ["sweep-scale", "ss"], ["sweep-axes", "sa"]]) set(id, key);
     await runSweep(m);
   }
+  if (params.get("view") === "report") showView("report");
 }
 
 function renderHome() {
@@ -190,6 +286,10 @@ function showModel(m, params = new URLSearchParams()) {
   state.model = m;
   state.lastResponse = null;
   state.sweepParams = null;
+  state.lastSnapshot = null;
+  state.lastSweep = null;
+  state.compare = [];
+  document.body.classList.remove("view-report", "view-compare");
   destroyCharts();
   for (const a of document.querySelectorAll("nav a")) a.classList.toggle("active", a.dataset.model === m.name);
   const sec = document.getElementById("model");
@@ -208,7 +308,8 @@ function showModel(m, params = new URLSearchParams()) {
     groups.get(g).push(p);
   }
   for (const [g, ps] of groups) {
-    form.append(el("fieldset", {}, el("legend", {}, g), ...ps.map(fieldRow)));
+    const picker = threadPicker(m, ps);
+    form.append(el("fieldset", {}, el("legend", {}, g), picker, ...ps.map(fieldRow)));
   }
   form.append(fidelityRow(m));
   const examples = el("select", { id: "example", "aria-label": "load a worked example" },
@@ -219,14 +320,31 @@ function showModel(m, params = new URLSearchParams()) {
     if (examples.value !== "") fillForm(m, examples.value);
     examples.value = "";
   });
+  const openOne = el("input", { type: "file", id: "open-design", accept: ".json,application/json", class: "file" });
+  openOne.addEventListener("change", () => openDesign(openOne));
+  const openMany = el("input", { type: "file", id: "compare-designs", accept: ".json,application/json", multiple: true, class: "file" });
+  openMany.addEventListener("change", () => compareDesigns(m, openMany));
   form.append(el("div", { class: "actions" },
     el("button", { type: "submit", id: "compute" }, "Compute"), examples,
-    el("button", { type: "button", id: "copy-link", onclick: copyLink }, "Copy link")));
+    el("button", { type: "button", id: "copy-link", onclick: copyLink }, "Copy link")),
+  designNames(m, params),
+  el("div", { class: "actions files" },
+    el("button", { type: "button", id: "show-report", onclick: () => showView("report") }, "Calculation report"),
+    el("button", { type: "button", id: "save-design", onclick: () => saveDesign(m) }, "Save design"),
+    openOne, el("label", { class: "button", for: "open-design" }, "Open design…"),
+    openMany, el("label", { class: "button", for: "compare-designs" }, "Compare designs…")));
   form.addEventListener("submit", (e) => { e.preventDefault(); compute(); });
-  sec.append(form, el("div", { id: "error-box", role: "alert" }), el("div", { id: "result" }), sweepPanel(m));
+  form.addEventListener("input", markStale);
+  form.addEventListener("change", markStale);
+  const stale = el("p", { id: "stale-note", class: "stale-note", role: "status", hidden: true },
+    "Inputs changed: compute again ", el("button", { type: "button", onclick: compute }, "Compute"));
+  sec.append(form, el("div", { id: "error-box", role: "alert" }), stale, el("div", { id: "result" }), sweepPanel(m),
+    reportSection(m), el("section", { id: "compare", class: "compare", "aria-label": "comparison of designs" }));
 
   fillForm(m, params.get("ex") ?? (m.examples.length ? "0" : "defaults"));
   applyParams(m, params);
+  // imperial chosen earlier: the fields the link does not set open in imperial units
+  if (state.imperial) setFieldSystem(m, true, (p) => !params.has(p.name));
 }
 
 function rungTable(m) {
@@ -239,13 +357,19 @@ function rungTable(m) {
 function fieldRow(p) {
   const id = "in-" + p.name;
   let input, unitSel = null;
+  const described = ["desc-" + p.name, "hint-" + p.name, "err-" + p.name].join(" ");
   if (p.kind === "choice") {
-    input = el("select", { id, name: p.name }, ...(p.required ? [] : [el("option", { value: "" }, "—")]),
-      ...p.choices.map((c) => el("option", { value: c }, c)));
+    input = el("select", { id, name: p.name, "aria-describedby": described },
+      ...(p.required ? [] : [el("option", { value: "" }, "—")]),
+      ...p.choices.map((c) => el("option", { value: c }, state.choiceNames[c] ?? c)));
   } else if (p.kind === "bool") {
-    input = el("input", { id, name: p.name, type: "checkbox" });
+    input = el("input", { id, name: p.name, type: "checkbox", "aria-describedby": described });
+  } else if (p.kind === "text") {
+    // free text (a fastener designation, issue 15); the choices are suggestions
+    input = el("input", { id, name: p.name, type: "text", size: 22, maxlength: 64, list: "list-" + p.name, "aria-describedby": described });
+    unitSel = el("datalist", { id: "list-" + p.name }, ...(p.choices || []).map((c) => el("option", { value: c })));
   } else {
-    input = el("input", { id, name: p.name, type: "text", inputmode: "decimal", size: 12 });
+    input = el("input", { id, name: p.name, type: "text", inputmode: "decimal", size: 12, "aria-describedby": described });
     const choices = unitChoices(p.unit, p.display_unit);
     if (choices.length > 1) {
       unitSel = el("select", { id: "unit-" + p.name, name: "unit-" + p.name, "aria-label": `${p.label} unit` },
@@ -262,7 +386,7 @@ function fieldRow(p) {
     p.label, p.symbol ? el("span", { class: "symbol" }, ` ${p.symbol}`) : null, p.required ? el("span", { class: "req", title: "required" }, " *") : null);
   return el("div", { class: "field", "data-field": p.name },
     label, el("div", { class: "control" }, input, unitSel),
-    p.description ? el("div", { class: "desc", title: p.description }, p.description) : null,
+    el("div", { class: "desc", id: "desc-" + p.name, title: p.description }, p.description || ""),
     el("div", { class: "hint", id: "hint-" + p.name }, hintText(p)),
     el("div", { class: "error", id: "err-" + p.name, role: "alert" }));
 }
@@ -285,9 +409,10 @@ function inUnit(si, unit) {
 /** "default 100 rpm · allowed > 0 and ≤ 1e4 mm · recommended …", in the unit chosen. */
 function hintText(p) {
   const parts = [];
+  if (p.kind === "text") return (p.required ? "" : "optional · ") + (p.choices?.length ? `e.g. ${p.choices.slice(0, 3).join(", ")}` : "text");
   if (p.kind === "choice" || p.kind === "bool") {
-    if (p.default !== null && p.default !== undefined) parts.push(`default ${p.default}`);
-    if (p.kind === "choice") parts.push(`one of ${p.choices.join(", ")}`);
+    if (p.default !== null && p.default !== undefined) parts.push(`default ${state.choiceNames[p.default] ?? p.default}`);
+    if (p.kind === "choice" && !p.choices.some((c) => state.choiceNames[c])) parts.push(`one of ${p.choices.join(", ")}`);
     return parts.join(" · ");
   }
   const u = document.getElementById("unit-" + p.name) ? currentUnit(p) : unitChoices(p.unit, p.display_unit)[0];
@@ -315,7 +440,7 @@ function changeUnit(p, input, sel) {
   if (!touched(input) && input.dataset.si !== undefined) {
     // still the loaded value: convert from its exact SI value, and keep it untouched
     input.value = input.dataset.shown = fieldNumber(Number(input.dataset.si) / next, 7);
-  } else if (v !== "" && Number.isFinite(Number(v))) input.value = fieldNumber((Number(v) * prev) / next);
+  } else if (v !== "" && Number.isFinite(parseNum(v))) input.value = fieldNumber((parseNum(v) * prev) / next);
   sel.dataset.prev = sel.value;
   document.getElementById("hint-" + p.name).textContent = hintText(p);
   checkField(p);
@@ -335,7 +460,7 @@ function fillForm(m, key) {
     const input = document.getElementById("in-" + p.name);
     const v = p.name in values ? values[p.name] : p.default;
     if (p.kind === "bool") input.checked = Boolean(v);
-    else if (p.kind === "choice") input.value = v ?? "";
+    else if (p.kind === "choice" || p.kind === "text") input.value = v ?? "";
     else if (typeof v === "string") {
       input.value = v; // a unit string ("45 mm"): sent as written
       delete input.dataset.si;
@@ -347,6 +472,7 @@ function fillForm(m, key) {
     input.dataset.shown = shownValue(input);
     setError(p.name, "");
   }
+  markStale();
 }
 
 function shownValue(input) {
@@ -365,7 +491,7 @@ function applyParams(m, params) {
     const raw = params.get(p.name);
     const input = document.getElementById("in-" + p.name);
     if (p.kind === "bool") { input.checked = raw === "true"; continue; }
-    if (p.kind === "choice") { input.value = raw; continue; }
+    if (p.kind === "choice" || p.kind === "text") { input.value = raw; continue; }
     const match = raw.match(/^\s*(\S+)\s*(.*)$/);
     const sel = document.getElementById("unit-" + p.name);
     if (match && sel && sel.tagName === "SELECT" && match[2]) {
@@ -426,17 +552,19 @@ function checkField(p) {
   let msg = "";
   if (raw === "") {
     if (p.required) msg = `${p.label} is required`;
-  } else if (!Number.isFinite(Number(raw))) {
+  } else if (!Number.isFinite(parseNum(raw))) {
     // a typed unit string ("45 mm") is left to the server, which parses units exactly
-    if (!/^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?\s*\S+/i.test(raw)) msg = `“${raw}” is not a number`;
+    if (!/^[+-]?(\d+[.,]?\d*|[.,]\d+)(e[+-]?\d+)?\s*\S+/i.test(raw)) {
+      msg = `${p.label}: “${raw}” is not a number (write 12.5 or 12,5${currentUnit(p).label ? ", in " + currentUnit(p).label : ""})`;
+    }
   } else {
     const u = currentUnit(p);
-    const si = Number(raw) * u.factor;
+    const si = parseNum(raw) * u.factor;
     const lo = p.minimum, hi = p.maximum;
     const bad = (lo !== null && lo !== undefined && (p.exclusive_minimum ? si <= lo : si < lo))
       || (hi !== null && hi !== undefined && (p.exclusive_maximum ? si >= hi : si > hi))
       || (p.kind === "int" && !Number.isInteger(si));
-    if (bad) msg = `${p.name} = ${raw}${u.label ? " " + u.label : ""} is not allowed: must be ${rangeText(p, u)}`;
+    if (bad) msg = `${p.label} = ${raw}${u.label ? " " + u.label : ""} is not allowed: must be ${rangeText(p, u)}`;
   }
   setError(p.name, msg);
   return msg;
@@ -453,11 +581,11 @@ function requestBody(m, { skip = null } = {}) {
     if (p.kind === "bool") { body[p.name] = input.checked; continue; }
     const raw = input.value.trim();
     if (raw === "") continue;
-    if (p.kind === "choice") { body[p.name] = raw; continue; }
+    if (p.kind === "choice" || p.kind === "text") { body[p.name] = raw; continue; }
     const u = currentUnit(p);
     if (!touched(input) && input.dataset.si !== undefined) body[p.name] = Number(input.dataset.si);
-    else if (Number.isFinite(Number(raw))) body[p.name] = u.api ? `${raw} ${u.api}` : Number(raw);
-    else body[p.name] = raw;
+    else if (Number.isFinite(parseNum(raw))) body[p.name] = u.api ? `${dotted(raw)} ${u.api}` : parseNum(raw);
+    else body[p.name] = raw.replace(/^([+-]?\d*),(\d)/, "$1.$2");
   }
   return body;
 }
@@ -485,13 +613,21 @@ async function post(path, body) {
 /** Server errors at their fields; the rest in the error box. */
 function showErrors(data, box) {
   const general = [], marked = new Set();
+  const m = state.model;
   for (const d of data.detail || []) {
     if (d.field && marked.has(d.field)) continue; // the first message per field is shown
-    if (d.field && setError(d.field, d.msg)) marked.add(d.field);
-    else general.push(d.msg);
+    const p = m?.inputs.find((x) => x.name === d.field);
+    // in the user's unit and words when the form's own check says why; the server's words otherwise
+    const own = p && (p.kind === "float" || p.kind === "int") ? checkField(p) : "";
+    const msg = own || (p ? `${p.label}: ${d.msg}` : d.msg);
+    if (d.field && setError(d.field, msg)) {
+      marked.add(d.field);
+      document.getElementById("err-" + d.field).dataset.server = d.msg;
+    } else general.push(d.msg);
   }
   if (marked.size) {
-    general.unshift(`Not computed: ${[...marked].join(", ")} ${marked.size > 1 ? "were" : "was"} refused; see the marked field${marked.size > 1 ? "s" : ""}.`);
+    const names = [...marked].map((n) => m?.inputs.find((x) => x.name === n)?.label ?? n);
+    general.unshift(`Not computed: ${names.join(", ")} ${marked.size > 1 ? "were" : "was"} refused; see the marked field${marked.size > 1 ? "s" : ""}.`);
     const first = document.querySelector(".field.invalid input, .field.invalid select");
     if (first) { first.scrollIntoView({ block: "center" }); first.focus({ preventScroll: true }); }
   }
@@ -504,6 +640,7 @@ async function compute() {
   for (const p of m.inputs) if (p.kind === "float" || p.kind === "int") checkField(p);
   const body = { ...requestBody(m), ...fidelityBody() };
   if (m.outputs.some((o) => o.series)) body.series = true; // the form plots them; the API sends none unasked
+  const snap = snapshot(m);
   state.lastRequest = body;
   updateHash(m, body);
   const out = document.getElementById("result");
@@ -517,35 +654,107 @@ async function compute() {
   box.replaceChildren();
   if (!ok) {
     state.lastResponse = null;
+    state.lastSnapshot = null;
     destroyCharts("series");
     out.replaceChildren();
     showErrors(data, box);
+    // the report says why there is nothing to report
+    document.getElementById("report-body")?.replaceChildren(el("p", { class: "error" }, "Not computed: "),
+      el("ul", {}, ...(data.detail || []).map((d) => el("li", {}, d.msg))));
+    markStale();
     document.body.dataset.result = "error";
     return;
   }
   state.lastResponse = data;
+  state.lastSnapshot = snap;
   renderResult(m, data);
+  markStale();
+  renderReport(m);
   document.body.dataset.result = "ok";
 }
 
 /** The address bar: model, the example loaded, the fields the user changed (as typed, with units), fidelity. */
 function updateHash(m, body) {
   const params = new URLSearchParams({ m: m.name, ex: state.example });
-  for (const p of m.inputs) {
-    const input = document.getElementById("in-" + p.name);
-    if (!touched(input)) continue;
-    if (p.kind === "bool") params.set(p.name, String(input.checked));
-    else if (p.kind === "choice" || !Number.isFinite(Number(input.value.trim())) || input.value.trim() === "") {
-      params.set(p.name, input.value.trim());
-    } else {
-      const u = currentUnit(p);
-      params.set(p.name, u.api ? `${input.value.trim()} ${u.api}` : input.value.trim());
-    }
-  }
+  for (const [k, v] of Object.entries(formInputs(m))) params.set(k, v);
   params.set("fidelity", body.fidelity);
   if ("tolerance" in body) params.set("tol", fieldNumber(body.tolerance * 100));
   for (const [k, v] of Object.entries(state.sweepParams || {})) params.set(k, v);
+  for (const [k, id] of [["proj", "report-project"], ["part", "report-part"]]) {
+    const v = document.getElementById(id)?.value.trim();
+    if (v) params.set(k, v);
+  }
+  if (document.body.classList.contains("view-report")) params.set("view", "report");
   history.replaceState(null, "", "#" + params.toString());
+}
+
+/**
+ * Every input as the link and a design file hold it: numbers as shown with their
+ * unit ("12 mm", "1450 rpm"), choices and switches as set; empty fields left out
+ * (a field emptied by the user is kept, empty, so it stays empty when reopened).
+ */
+function formInputs(m) {
+  const out = {};
+  for (const p of m.inputs) {
+    const input = document.getElementById("in-" + p.name);
+    const raw = input.value.trim();
+    if (p.kind === "bool") out[p.name] = String(input.checked);
+    else if (raw === "") { if (touched(input)) out[p.name] = ""; }
+    else if (p.kind === "choice" || p.kind === "text" || !Number.isFinite(parseNum(raw))) out[p.name] = raw;
+    else {
+      const u = currentUnit(p);
+      out[p.name] = u.api ? `${raw} ${u.api}` : raw;
+    }
+  }
+  return out;
+}
+
+/** The inputs in SI (numbers typed with a unit left as typed) with the fidelity: what a result answers. */
+function snapshot(m) {
+  const snap = {};
+  for (const p of m.inputs) {
+    const input = document.getElementById("in-" + p.name);
+    if (p.kind === "bool") { snap[p.name] = input.checked; continue; }
+    const raw = input.value.trim();
+    if (p.kind === "choice" || p.kind === "text") { snap[p.name] = raw; continue; }
+    if (!touched(input) && input.dataset.si !== undefined) snap[p.name] = Number(input.dataset.si);
+    else if (Number.isFinite(parseNum(raw))) snap[p.name] = parseNum(raw) * currentUnit(p).factor;
+    else snap[p.name] = raw;
+  }
+  snap.fidelity = document.getElementById("fidelity").value;
+  snap.tolerance = snap.fidelity === "auto" ? document.getElementById("tolerance").value.trim() : "";
+  return snap;
+}
+
+function sameSnapshot(a, b) {
+  if (!a || !b) return false;
+  return Object.keys({ ...a, ...b }).every((k) => {
+    const x = a[k], y = b[k];
+    if (typeof x === "number" && typeof y === "number") return Math.abs(x - y) <= 1e-9 * Math.max(Math.abs(x), Math.abs(y));
+    return x === y;
+  });
+}
+
+/** Dim the result, and say so, the moment an input differs from the one it answers. */
+function markStale() {
+  const m = state.model;
+  const note = document.getElementById("stale-note");
+  if (!m || !note) return;
+  const stale = Boolean(state.lastSnapshot) && !sameSnapshot(state.lastSnapshot, snapshot(m));
+  note.hidden = !stale;
+  document.getElementById("result").classList.toggle("stale", stale);
+  // the sweep answers its own inputs (all but the one it varies)
+  const sw = state.lastSweep;
+  const plot = document.getElementById("sweep-plot");
+  if (plot && sw?.snapshot) {
+    const now = snapshot(m);
+    delete now[sw.request.vary];
+    const sweepStale = !sameSnapshot(sw.snapshot, now);
+    plot.classList.toggle("stale", sweepStale);
+    document.getElementById("sweep-stale").hidden = !sweepStale;
+  }
+  document.getElementById("report")?.classList.toggle("stale", stale);
+  document.body.dataset.stale = stale ? "1" : "0";
 }
 
 async function copyLink() {
@@ -557,56 +766,126 @@ async function copyLink() {
 
 // ---------------------------------------------------------------- results
 
-function outputUnit(o) {
-  return unitChoices(o.unit, o.display_unit)[0];
+const PERCENT = { label: "%", api: "%", factor: 0.01 };
+
+/**
+ * The unit choices of an output, best first: % for ratios; otherwise the
+ * system's (metric or imperial) choices, the model's display unit first, then
+ * the one that shows ``v`` (an SI value, or a series' largest magnitude)
+ * between 0.01 and 100 000 with the fewest digits.
+ */
+function outputChoices(o, v = null) {
+  let choices = unitChoices(o.unit, o.display_unit);
+  if (isRatio(o)) return [PERCENT, ...choices.filter((c) => c.api !== "%")];
+  const inSystem = choices.filter((c) => IMPERIAL.has(c.label) === state.imperial);
+  if (inSystem.length) choices = [...inSystem, ...choices.filter((c) => !inSystem.includes(c))];
+  const a = typeof v === "number" ? Math.abs(v) : 0;
+  if (a > 0 && Number.isFinite(a) && inSystem.length) {
+    const fits = (c) => a / c.factor >= 0.01 && a / c.factor < 1e5;
+    if (!fits(choices[0])) {
+      const score = (c) => { const e = Math.log10(a / c.factor); return e < 0 ? -e + 1 : e > 3 ? e - 3 : 0; };
+      const best = inSystem.reduce((b, c) => (score(c) < score(b) ? c : b), inSystem[0]);
+      choices = [best, ...choices.filter((c) => c !== best)];
+    }
+  }
+  return choices;
+}
+
+function outputUnit(o, v = null) {
+  return outputChoices(o, v)[0];
+}
+
+/** A scatter is a ± band: "±30 %". */
+function signOf(o) {
+  return isRatio(o) && /scatter|relative/.test(o.name) ? "±" : "";
 }
 
 function renderResult(m, data) {
   const out = document.getElementById("result");
+  out.replaceChildren(...resultParts(m, data, { interactive: true }));
+  renderSeries(m, data);
+}
+
+/** The scalar results as table rows: readable name, value to the figures the error supports, unit. */
+function resultRows(m, data, { interactive = false, withDesc = true } = {}) {
   const sig = sigFigs(data.error_estimate);
   const rows = [];
   for (const o of m.outputs) {
     if (o.series || !(o.name in data.results)) continue;
     const v = data.results[o.name];
-    const choices = unitChoices(o.unit, o.display_unit);
+    const choices = outputChoices(o, v);
     const u = choices[0];
     const digits = o.kind === "int" ? 12 : sig;
-    const shown = typeof v === "number" ? fmt(v / u.factor, digits) : fmt(v);
-    const cell = el("td", { class: "num", "data-si": v === null ? "null" : String(v), "data-factor": u.factor }, shown);
+    const sign = typeof v === "number" && v > 0 ? signOf(o) : "";
+    const shown = typeof v === "number" ? sign + fmt(v / u.factor, digits) : fmt(choiceText(v));
+    const cell = el("td", { class: typeof v === "string" ? "num text" : "num", "data-si": v === null ? "null" : String(v), "data-factor": u.factor, "data-sig": digits }, shown);
     let unitCell = typeof v === "number" ? u.label : "";
-    if (typeof v === "number" && choices.length > 1 && o.kind !== "int") {
+    if (interactive && typeof v === "number" && choices.length > 1 && o.kind !== "int") {
       // another unit for this result: the same SI value, converted
-      unitCell = el("select", { class: "result-unit", "aria-label": `${o.label} unit` },
+      unitCell = el("select", { class: "result-unit", "aria-label": `${labelOf(o)} unit` },
         ...choices.map((c, i) => el("option", { value: String(i) }, c.label)));
       unitCell.addEventListener("change", () => {
         const c = choices[Number(unitCell.value)];
         cell.dataset.factor = c.factor;
-        cell.textContent = fmt(v / c.factor, digits);
+        cell.textContent = sign + fmt(v / c.factor, digits);
       });
     }
     rows.push(el("tr", { "data-output": o.name },
-      el("th", { scope: "row", title: o.description }, o.label),
+      el("th", { scope: "row", title: o.description }, labelOf(o)),
       cell,
       el("td", { class: "unit" }, unitCell),
-      el("td", { class: "desc" }, o.description)));
+      withDesc ? el("td", { class: "desc" }, o.description) : null));
   }
+  return rows;
+}
+
+/** Failed checks first, each with the action it suggests; or one line saying all pass. */
+function checkSummary(data) {
+  if (!data.checks.length) return null;
+  const failed = data.checks.filter((c) => !c.ok);
+  if (!failed.length) {
+    return el("p", { class: "check-summary ok", id: "check-summary" }, `✓ All ${data.checks.length} checks pass.`);
+  }
+  return el("div", { class: "check-summary fail", id: "check-summary", role: "alert" },
+    el("strong", {}, `✗ ${failed.length} of ${data.checks.length} check${data.checks.length > 1 ? "s" : ""} fail${failed.length > 1 ? "" : "s"}:`),
+    el("ul", {}, ...failed.map((c) => el("li", {}, el("strong", {}, c.name.replaceAll("_", " ")), ": ", c.detail))));
+}
+
+/** When the method's error is large and a finer one exists, say which to pick. */
+function methodHint(m, data) {
+  const err = data.error_estimate;
+  if (!(err > 0.05) || m.rungs.length < 2) return null;
+  const finer = m.rungs.slice(m.rungs.findIndex((r) => r.name === data.rung) + 1);
+  const names = finer.map((r) => r.name);
+  return el("p", { class: "method-hint", id: "method-hint" },
+    `The error estimate is ${fmtError(err)}: `,
+    names.length ? `choose the method ${names.join(" or ")}, or ` : "",
+    "auto with a tolerance (Fidelity above) for a tighter answer.");
+}
+
+function resultParts(m, data, { interactive = false } = {}) {
+  const sig = sigFigs(data.error_estimate);
   const rung = m.rungs.find((r) => r.name === data.rung);
-  const meta = el("p", { class: "meta", id: "meta" },
-    "Method ", el("code", { id: "rung" }, data.rung), rung ? ` (${rung.description})` : "",
-    " · error estimate ", el("span", { id: "error-estimate" }, fmtError(data.error_estimate)),
-    " · computed in ", el("span", { id: "elapsed" }, fmtTime(data.elapsed_s)),
+  const meta = el("p", { class: "meta", id: interactive ? "meta" : null },
+    "Method ", el("code", { id: interactive ? "rung" : null }, data.rung), rung ? ` (${rung.description})` : "",
+    " · error estimate ", el("span", { id: interactive ? "error-estimate" : null }, fmtError(data.error_estimate)),
+    " · computed in ", el("span", { id: interactive ? "elapsed" : null }, fmtTime(data.elapsed_s)),
     ` · shown to ${sig} significant figures`);
   const checks = data.checks.length
-    ? el("ul", { class: "checks", id: "checks" }, ...data.checks.map((c) =>
+    ? el("ul", { class: "checks", id: interactive ? "checks" : null }, ...data.checks.map((c) =>
       el("li", { class: c.ok ? "ok" : "fail" }, el("span", { class: "mark" }, c.ok ? "✓ pass " : "✗ fail "), el("strong", {}, c.name), ": ", c.detail)))
     : null;
   const warnings = data.warnings.length
-    ? el("ul", { class: "warnings", id: "warnings" }, ...data.warnings.map((w) => el("li", {}, "⚠ ", w))) : null;
-  const notes = data.notes.length
-    ? el("ul", { class: "notes", id: "notes" }, ...data.notes.map((n) => el("li", {}, n))) : null;
-  out.replaceChildren(...[
-    el("h3", {}, "Results"), meta,
-    el("table", { id: "results", class: "results" }, el("tbody", {}, ...rows)),
+    ? el("ul", { class: "warnings", id: interactive ? "warnings" : null }, ...data.warnings.map((w) => el("li", {}, "⚠ ", w))) : null;
+  // the report lists the model's assumptions once, under their own heading
+  const noteList = interactive ? data.notes : data.notes.filter((n) => !(m.assumptions || []).includes(n));
+  const notes = noteList.length
+    ? el("ul", { class: "notes", id: interactive ? "notes" : null }, ...noteList.map((n) => el("li", {}, n))) : null;
+  const table = el("div", { class: "table-wrap" },
+    el("table", { id: interactive ? "results" : null, class: "results" }, el("tbody", {}, ...resultRows(m, data, { interactive, withDesc: interactive }))));
+  if (!interactive) return [meta, table, checks ? el("h3", {}, "Checks") : null, checks, warnings ? el("h3", {}, "Warnings") : null, warnings, notes ? el("h3", {}, "Notes") : null, notes].filter(Boolean);
+  return [
+    el("h3", {}, "Results"), checkSummary(data), meta, methodHint(m, data), table,
     checks ? el("h4", {}, "Checks") : null, checks,
     warnings ? el("h4", {}, "Warnings") : null, warnings,
     notes ? el("h4", {}, "Notes") : null, notes,
@@ -614,8 +893,7 @@ function renderResult(m, data) {
       el("button", { type: "button", id: "download-json", onclick: () => downloadJSON(m, data) }, "Download JSON"),
       el("button", { type: "button", id: "download-csv", onclick: () => downloadCSV(m, data) }, "Download CSV")),
     Object.values(data.series).some((v) => v.length) ? el("p", { class: "muted" }, "Drag across a plot to zoom in; double-click to zoom out.") : null,
-    el("div", { id: "series-plots", class: "plots" })].filter(Boolean));
-  renderSeries(m, data);
+    el("div", { id: "series-plots", class: "plots" })].filter(Boolean);
 }
 
 function download(name, type, text) {
@@ -641,7 +919,7 @@ function downloadCSV(m, data) {
   for (const o of m.outputs) {
     if (o.series || !(o.name in data.results)) continue;
     const v = data.results[o.name];
-    const u = outputUnit(o);
+    const u = outputUnit(o, v);
     const shown = typeof v === "number" ? v / u.factor : v;
     lines.push(["result", o.name, v, data.units[o.name] ?? o.unit, shown, u.label].map(csvCell).join(","));
   }
@@ -673,7 +951,15 @@ function destroyCharts(kind = null) {
 }
 
 function chartWidth(container) {
-  return Math.max(320, Math.min(760, container.clientWidth || 640));
+  // within the screen on a phone, at most 760 px on a desktop
+  const w = container.clientWidth || Math.min(640, window.innerWidth - 40);
+  return Math.max(240, Math.min(760, w - 8));
+}
+
+function maxAbs(xs) {
+  let a = 0;
+  for (const v of xs || []) if (typeof v === "number" && Math.abs(v) > a) a = Math.abs(v);
+  return a;
 }
 
 /**
@@ -692,19 +978,38 @@ function windows(xo, data) {
   return out;
 }
 
-function makeChart(container, kind, { title, xLabel, yLabel, x, ys, bars = false, bands = [], marks = [], xRange = null, xLog = false }) {
-  const colors = ["#1f5f99", "#c0392b", "#2e8b57", "#8e44ad"];
+/**
+ * Lines on a histogram at the limits the result table names in the same unit
+ * as its x axis: the required (minimum) and the permissible / yield preload.
+ */
+function histogramMarks(m, data, xo) {
+  const marks = [];
+  for (const o of m.outputs) {
+    const v = data.results[o.name];
+    if (o.series || typeof v !== "number" || norm(o.unit) !== norm(xo.unit)) continue;
+    if (/required/.test(o.name)) marks.push({ at: v, label: labelOf(o), color: "#1e7b34" });
+    else if (/yield|permissible/.test(o.name)) marks.push({ at: v, label: labelOf(o), color: "#b3261e" });
+  }
+  return marks;
+}
+
+function makeChart(container, kind, { title, xLabel, yLabel, yLabel2 = null, x, ys, bars = false, bands = [], marks = [], xRange = null, xLog = false }) {
+  const colors = ["#1f5f99", "#c0392b", "#2e8b57", "#8e44ad", "#b8860b", "#555"];
+  const twin = ys.some((s) => s.scale === "y2");
+  const axis = { size: 70, labelSize: 18, font: "12px system-ui", labelFont: "12px system-ui" };
   const opts = {
     title,
     width: chartWidth(container),
     height: 280,
-    scales: { x: { time: false, ...(xLog ? { distr: 3 } : {}), ...(xRange ? { range: xRange } : {}) } },
-    axes: [{ label: xLabel }, { label: yLabel, size: 70 }],
+    scales: { x: { time: false, ...(xLog ? { distr: 3 } : {}), ...(xRange ? { range: xRange } : {}) }, ...(bars ? { y: { range: (u, lo, hi) => [0, hi * 1.1 || 1] } } : {}) },
+    axes: [{ label: xLabel, font: axis.font, labelFont: axis.labelFont }, { ...axis, label: yLabel },
+      ...(twin ? [{ ...axis, scale: "y2", side: 1, label: yLabel2, grid: { show: false } }] : [])],
     series: [{ label: xLabel }, ...ys.map((s, i) => ({
       label: s.label,
+      scale: s.scale || "y",
       stroke: colors[i % colors.length],
       width: 2,
-      ...(bars ? { fill: "rgba(31,95,153,0.35)", paths: uPlot.paths.bars({ size: [0.95, Infinity] }), points: { show: false } } : {}),
+      ...(bars ? { fill: "rgba(31,95,153,0.35)", paths: uPlot.paths.stepped({ align: 1 }), points: { show: false } } : {}),
     }))],
     legend: { show: true },
     hooks: {
@@ -720,73 +1025,107 @@ function makeChart(container, kind, { title, xLabel, yLabel, x, ys, bars = false
           ctx.fillText(b.label, Math.min(x0, x1) + 4, u.bbox.top + 14 * devicePixelRatio);
           ctx.restore();
         }
-        for (const mk of marks) {
+      }],
+      draw: [(u) => {
+        const ctx = u.ctx;
+        marks.forEach((mk, i) => {
           const px = u.valToPos(mk.at, "x", true);
-          if (!(px >= u.bbox.left && px <= u.bbox.left + u.bbox.width)) continue;
+          if (!(px >= u.bbox.left && px <= u.bbox.left + u.bbox.width)) return;
           ctx.save();
-          ctx.strokeStyle = "#888";
+          ctx.strokeStyle = mk.color || "#888";
+          ctx.lineWidth = 2 * devicePixelRatio;
           ctx.setLineDash([6 * devicePixelRatio, 4 * devicePixelRatio]);
           ctx.beginPath(); ctx.moveTo(px, u.bbox.top); ctx.lineTo(px, u.bbox.top + u.bbox.height); ctx.stroke();
-          ctx.fillStyle = "#555";
+          ctx.fillStyle = mk.color || "#555";
           ctx.font = `${12 * devicePixelRatio}px system-ui`;
-          ctx.fillText(mk.label, px + 4, u.bbox.top + 14 * devicePixelRatio);
+          const w = ctx.measureText(mk.label).width;
+          const right = px + 4 + w > u.bbox.left + u.bbox.width;
+          ctx.fillText(mk.label, right ? px - 4 - w : px + 4, u.bbox.top + (14 + 14 * i) * devicePixelRatio);
           ctx.restore();
-        }
+        });
       }],
     },
   };
-  const box = el("div", { class: "chart", "data-kind": kind });
+  const box = el("figure", { class: "chart", "data-kind": kind });
   container.append(box);
   const chart = new uPlot(opts, [x, ...ys.map((s) => s.data)], box);
   state.charts.push({ kind, chart });
+  box.append(dataTable(title, xLabel, x, ys));
   return chart;
+}
+
+/** The plotted values as a table (the plot's text alternative): at most 200 rows. */
+function dataTable(title, xLabel, x, ys) {
+  const step = Math.max(1, Math.ceil(x.length / 200));
+  const rows = [];
+  for (let i = 0; i < x.length; i += step) {
+    rows.push(el("tr", {}, el("td", {}, fmt(x[i], 5)), ...ys.map((s) => el("td", {}, fmt(s.data[i], 5)))));
+  }
+  return el("details", { class: "data-table" },
+    el("summary", {}, "Table of the plotted values" + (step > 1 ? ` (one point in ${step})` : "")),
+    el("div", { class: "table-wrap" }, el("table", { "aria-label": title },
+      el("thead", {}, el("tr", {}, el("th", {}, xLabel), ...ys.map((s) => el("th", {}, s.label + (s.unit ? ` [${s.unit}]` : ""))))),
+      el("tbody", {}, ...rows))));
 }
 
 /**
  * Every series output against its declared x series. Curves sharing an x series
  * and a unit share a chart (e.g. the travel of each part against time); a
- * series whose x holds bin edges (one longer) or that declares ``plot.bars``
- * draws as a histogram.
+ * series that declares ``plot.bars`` (its x holds bin centres, or edges one
+ * longer) draws as a histogram of full-width bins, with lines at the limits in
+ * the same unit.
  */
-function renderSeries(m, data) {
-  destroyCharts("series");
-  const box = document.getElementById("series-plots");
+function renderSeries(m, data, box = document.getElementById("series-plots"), kind = "series") {
+  destroyCharts(kind);
   const byName = Object.fromEntries(m.outputs.map((o) => [o.name, o]));
   const usedAsX = new Set(m.outputs.filter((o) => o.series && o.x).map((o) => o.x));
   const charts = new Map(); // key -> chart spec, in the order the model lists its outputs
+  const unitOf = new Map(); // one unit per output unit, so curves of a chart agree
   for (const o of m.outputs) {
     const ys = data.series[o.name];
     if (!o.series || !ys || !ys.length) continue;
     if (!o.x && usedAsX.has(o.name)) continue; // an axis, not a curve
-    const yu = outputUnit(o);
+    const ukey = norm(o.unit);
+    if (!unitOf.has(ukey)) unitOf.set(ukey, outputUnit(o, maxAbs(m.outputs.filter((q) => q.series && norm(q.unit) === ukey).flatMap((q) => data.series[q.name] || []))));
+    const yu = isRatio(o) ? PERCENT : unitOf.get(ukey);
     const y = ys.map((v) => (v === null ? null : v / yu.factor));
     let xs = o.x ? data.series[o.x] : null;
     const xo = o.x && xs ? byName[o.x] : null;
-    const xu = xo ? outputUnit(xo) : { factor: 1, label: "" };
-    const xLabel = xo ? `${xo.label}${xu.label ? " [" + xu.label + "]" : ""}` : "sample";
-    let bars = false, xRange = null;
+    const xu = xo ? outputUnit(xo, maxAbs(xs)) : { factor: 1, label: "" };
+    const xLabel = xo ? `${labelOf(xo)}${xu.label ? " [" + xu.label + "]" : ""}` : "sample";
+    let bars = false, xRange = null, marks = [];
+    let yData = y;
     if (!xs) xs = ys.map((_, i) => i);
-    else if (xs.length === ys.length + 1) {
-      // bin edges: draw bars at the bin centres, spanning the edges
+    else if (xs.length === ys.length + 1 || (xs.length === ys.length && o.plot?.bars)) {
       bars = true;
-      xRange = [xs[0] / xu.factor, xs[xs.length - 1] / xu.factor];
-      xs = ys.map((_, i) => (xs[i] + xs[i + 1]) / 2);
+      let edges = xs;
+      if (xs.length === ys.length) {
+        // bin centres: the edges half a bin either side (equal bins)
+        const w = xs.length > 1 ? (xs[xs.length - 1] - xs[0]) / (xs.length - 1) : Math.abs(xs[0]) * 0.1 || 1;
+        edges = [...xs.map((c) => c - w / 2), xs[xs.length - 1] + w / 2];
+      }
+      xs = edges;
+      yData = [...y, y[y.length - 1]]; // a step per bin, edge to edge
+      marks = histogramMarks(m, data, xo).map((mk) => ({ ...mk, at: mk.at / xu.factor }));
+      const lo = Math.min(edges[0] / xu.factor, ...marks.map((mk) => mk.at));
+      const hi = Math.max(edges[edges.length - 1] / xu.factor, ...marks.map((mk) => mk.at));
+      xRange = [lo - (hi - lo) * 0.03, hi + (hi - lo) * 0.03];
     } else if (xs.length !== ys.length) continue;
-    else if (o.plot && o.plot.bars) bars = true;
     const key = bars ? "bars:" + o.name : `${xo ? o.x : "index:" + ys.length}|${norm(o.unit)}`;
     if (!charts.has(key)) {
       const x = xs.map((v) => v / xu.factor);
       const bands = xo && !bars ? windows(xo, data).map((b) => ({ ...b, from: b.from / xu.factor, to: b.to / xu.factor })) : [];
-      charts.set(key, { xLabel, unit: yu.label, x, ys: [], bars, bands, xRange });
+      charts.set(key, { xLabel, unit: yu.label, x, ys: [], bars, bands, xRange, marks });
     }
-    charts.get(key).ys.push({ label: o.label, data: y });
+    charts.get(key).ys.push({ label: labelOf(o), data: yData, unit: yu.label });
   }
   for (const c of charts.values()) {
     const names = c.ys.map((s) => s.label).join(", ");
-    makeChart(box, "series", {
-      title: names + (c.bars ? " (histogram)" : ""),
-      xLabel: c.xLabel, yLabel: `${names.length <= 40 ? names : c.ys[0].label + ", …"}${c.unit ? " [" + c.unit + "]" : ""}`,
-      x: c.x, ys: c.ys, bars: c.bars, bands: c.bands, xRange: c.xRange,
+    const title = names.length <= 60 ? names : `${c.ys[0].label} and ${c.ys.length - 1} more`;
+    makeChart(box, kind, {
+      title: title + (c.bars ? " (histogram)" : ""),
+      xLabel: c.xLabel, yLabel: `${names.length <= 32 ? names : c.ys[0].label + ", …"}${c.unit ? " [" + c.unit + "]" : ""}`,
+      x: c.x, ys: c.ys, bars: c.bars, bands: c.bands, xRange: c.xRange, marks: c.marks,
     });
   }
 }
@@ -798,40 +1137,74 @@ function sweepPanel(m) {
   const scalars = m.outputs.filter((o) => !o.series && (o.kind === "float" || o.kind === "int"));
   if (!numeric.length || !scalars.length) return el("div");
   const vary = el("select", { id: "sweep-vary" }, ...numeric.map((p) => el("option", { value: p.name }, p.label)));
-  const output = el("select", { id: "sweep-output" }, ...scalars.map((o) => el("option", { value: o.name }, o.label)));
+  const output = el("select", { id: "sweep-output" }, ...scalars.map((o) => el("option", { value: o.name }, labelOf(o))));
+  const more = el("details", { id: "sweep-more", class: "sweep-more" }, el("summary", {}, "more outputs"),
+    el("div", { class: "more-list" }, ...scalars.map((o) => el("label", {},
+      el("input", { type: "checkbox", value: o.name }), " ", labelOf(o)))));
   const start = el("input", { id: "sweep-start", size: 9, inputmode: "decimal" });
   const stop = el("input", { id: "sweep-stop", size: 9, inputmode: "decimal" });
-  const unit = el("span", { class: "unit", id: "sweep-unit" });
+  const unit = el("select", { id: "sweep-unit", "aria-label": "unit of the swept range" });
+  unit.addEventListener("change", () => {
+    const prev = Number(unit.dataset.factor), next = Number(unit.selectedOptions[0].dataset.factor);
+    for (const f of [start, stop]) if (Number.isFinite(parseNum(f.value))) f.value = fieldNumber((parseNum(f.value) * prev) / next);
+    unit.dataset.factor = String(next);
+  });
   const num = el("input", { id: "sweep-num", size: 4, value: "40", inputmode: "numeric" });
-  const scale = el("select", { id: "sweep-scale" }, el("option", { value: "linear" }, "linear"), el("option", { value: "log" }, "log"));
+  const scale = el("select", { id: "sweep-scale", "aria-label": "scale of the swept input" }, el("option", { value: "linear" }, "linear"), el("option", { value: "log" }, "log"));
+  const axes = el("select", { id: "sweep-axes", "aria-label": "axes of several outputs" },
+    el("option", { value: "auto" }, "axes: auto"), el("option", { value: "shared" }, "one shared axis"), el("option", { value: "twin" }, "twin axes"));
   vary.addEventListener("change", () => sweepDefaults(m));
   const panel = el("section", { class: "sweep", id: "sweep" },
     el("h3", {}, "Sweep one input"),
     el("p", { class: "muted" }, "The other inputs stay as in the form; a point the model refuses is left out of the curve."),
-    el("div", { class: "control" }, el("label", { for: "sweep-output" }, "plot "), output,
-      el("label", { for: "sweep-vary" }, " against "), vary,
-      el("label", { for: "sweep-start" }, " from "), start, el("label", { for: "sweep-stop" }, " to "), stop, " ", unit,
-      el("label", { for: "sweep-num" }, " points "), num, " ", scale, " ",
+    el("div", { class: "control sweep-controls" },
+      el("span", {}, el("label", { for: "sweep-output" }, "plot "), output), more,
+      el("span", {}, el("label", { for: "sweep-vary" }, " against "), vary),
+      el("span", {}, el("label", { for: "sweep-start" }, " from "), start), el("span", {}, el("label", { for: "sweep-stop" }, " to "), stop, " ", unit),
+      el("span", {}, el("label", { for: "sweep-num" }, " points "), num), scale, axes,
       el("button", { type: "button", id: "sweep-run", onclick: () => runSweep(m) }, "Sweep")),
     el("div", { class: "error", id: "sweep-error", role: "alert" }),
     el("div", { id: "sweep-notes", class: "notes" }),
-    el("div", { id: "sweep-plot", class: "plots" }));
+    el("p", { id: "sweep-stale", class: "stale-note", role: "status", hidden: true }, "Inputs changed: sweep again"),
+    el("div", { id: "sweep-plot", class: "plots" }),
+    el("div", { class: "downloads", id: "sweep-downloads", hidden: true },
+      el("button", { type: "button", id: "sweep-csv", onclick: () => downloadSweep(m, "csv") }, "Download sweep CSV"),
+      el("button", { type: "button", id: "sweep-json", onclick: () => downloadSweep(m, "json") }, "Download sweep JSON")));
   queueMicrotask(() => sweepDefaults(m));
   return panel;
+}
+
+/** The unit the sweep's range is written in: {api, factor, label}. */
+function sweepUnit() {
+  const o = document.getElementById("sweep-unit").selectedOptions[0];
+  return o ? { api: o.value, factor: Number(o.dataset.factor), label: o.textContent } : { api: "", factor: 1, label: "" };
+}
+
+/** Choose the sweep's unit (from a link) without converting the range. */
+function setSweepUnit(m, api) {
+  const sel = document.getElementById("sweep-unit");
+  const opt = [...sel.options].find((o) => norm(o.value) === norm(api) || norm(o.textContent) === norm(api));
+  if (opt) { sel.value = opt.value; sel.dataset.factor = opt.dataset.factor; }
 }
 
 /** A dashed line at the design in the form (its varied input's current value). */
 function designMark(m, p, u) {
   const input = document.getElementById("in-" + p.name);
-  const si = !touched(input) && input.dataset.si !== undefined ? Number(input.dataset.si) : Number(input.value) * u.factor;
+  const si = !touched(input) && input.dataset.si !== undefined ? Number(input.dataset.si) : parseNum(input.value) * currentUnit(p).factor;
   return Number.isFinite(si) ? [{ at: si / u.factor, label: "this design" }] : [];
 }
 
-/** A range around the current value of the varied input, inside its allowed range. */
+/** A range around the current value of the varied input, inside its allowed range, in the field's unit. */
 function sweepDefaults(m) {
   const p = m.inputs.find((x) => x.name === document.getElementById("sweep-vary").value);
   const u = currentUnit(p);
-  const raw = Number(document.getElementById("in-" + p.name).value);
+  const sel = document.getElementById("sweep-unit");
+  const choices = unitChoices(p.unit, p.display_unit);
+  sel.replaceChildren(...choices.map((c) => el("option", { value: c.api, "data-factor": c.factor }, c.label)));
+  setSweepUnit(m, u.api || u.label);
+  sel.dataset.factor = sel.selectedOptions[0]?.dataset.factor ?? "1";
+  sel.disabled = choices.length < 2;
+  const raw = parseNum(document.getElementById("in-" + p.name).value);
   let v = Number.isFinite(raw) ? raw * u.factor : (p.default ?? 1);
   let lo = v > 0 ? v * 0.5 : v < 0 ? v * 1.5 : 0;
   let hi = v > 0 ? v * 1.5 : v < 0 ? v * 0.5 : 1;
@@ -839,31 +1212,38 @@ function sweepDefaults(m) {
   if (p.maximum !== null && p.maximum !== undefined && hi >= p.maximum) hi = p.exclusive_maximum ? p.maximum - (p.maximum - v) * 0.1 : p.maximum;
   if (p.kind === "int") { lo = Math.ceil(lo); hi = Math.max(lo + 1, Math.floor(hi)); }
   if (p.kind === "int") document.getElementById("sweep-num").value = String(Math.min(hi - lo + 1, 200));
-  document.getElementById("sweep-start").value = fieldNumber(lo / u.factor);
-  document.getElementById("sweep-stop").value = fieldNumber(hi / u.factor);
-  document.getElementById("sweep-unit").textContent = u.label;
+  const su = sweepUnit();
+  document.getElementById("sweep-start").value = fieldNumber(lo / su.factor);
+  document.getElementById("sweep-stop").value = fieldNumber(hi / su.factor);
+}
+
+function sweepOutputs() {
+  const first = document.getElementById("sweep-output").value;
+  const extra = [...document.querySelectorAll("#sweep-more input:checked")].map((b) => b.value);
+  return [first, ...extra.filter((x) => x !== first)];
 }
 
 async function runSweep(m) {
   const vary = document.getElementById("sweep-vary").value;
   const p = m.inputs.find((x) => x.name === vary);
-  const output = document.getElementById("sweep-output").value;
-  const u = currentUnit(p);
+  const outputs = sweepOutputs();
+  const u = sweepUnit();
   const end = (id) => {
     const raw = document.getElementById(id).value.trim();
-    return u.api && Number.isFinite(Number(raw)) ? `${raw} ${u.api}` : Number.isFinite(Number(raw)) ? Number(raw) : raw;
+    const x = parseNum(raw);
+    return u.api && Number.isFinite(x) ? `${dotted(raw)} ${u.api}` : Number.isFinite(x) ? x : raw;
   };
   let num = Number(document.getElementById("sweep-num").value) || 40;
   if (p.kind === "int") {
     // an integer input is swept over whole numbers only: one point per integer
-    const a = Number(document.getElementById("sweep-start").value), b = Number(document.getElementById("sweep-stop").value);
+    const a = parseNum(document.getElementById("sweep-start").value), b = parseNum(document.getElementById("sweep-stop").value);
     if (Number.isInteger(a) && Number.isInteger(b) && b > a) num = Math.min(b - a + 1, 2000);
     document.getElementById("sweep-num").value = String(num);
   }
   const req = {
     base: requestBody(m, { skip: vary }), vary, start: end("sweep-start"), stop: end("sweep-stop"),
     num,
-    scale: document.getElementById("sweep-scale").value, outputs: [output], ...fidelityBody(),
+    scale: document.getElementById("sweep-scale").value, outputs, ...fidelityBody(),
   };
   const errBox = document.getElementById("sweep-error");
   errBox.textContent = "";
@@ -871,11 +1251,11 @@ async function runSweep(m) {
   const seq = ++state.sweepSeq;
   const { ok, data } = await post(m.path + "/sweep", req);
   if (seq !== state.sweepSeq || state.model !== m) return;
-  destroyCharts("sweep");
-  const plot = document.getElementById("sweep-plot");
-  plot.replaceChildren();
-  document.getElementById("sweep-notes").replaceChildren();
+  document.getElementById("sweep-downloads").hidden = !ok;
   if (!ok) {
+    destroyCharts("sweep");
+    document.getElementById("sweep-plot").replaceChildren();
+    document.getElementById("sweep-notes").replaceChildren();
     // base inputs are marked at their fields; the box repeats every message
     const msgs = [];
     for (const d of data.detail || []) {
@@ -888,38 +1268,380 @@ async function runSweep(m) {
     document.body.dataset.sweep = "error";
     return;
   }
-  state.lastSweep = { request: req, response: data };
+  const snap = snapshot(m);
+  delete snap[vary];
+  state.lastSweep = { request: req, response: data, unit: u, snapshot: snap };
   state.sweepParams = {
-    sv: vary, so: output, s0: document.getElementById("sweep-start").value.trim(),
+    sv: vary, su: u.api || u.label, so: outputs.join(","), s0: document.getElementById("sweep-start").value.trim(),
     s1: document.getElementById("sweep-stop").value.trim(), sn: String(num), ss: req.scale,
+    sa: document.getElementById("sweep-axes").value,
   };
   updateHash(m, { ...requestBody(m), ...fidelityBody() });
-  if (!Array.isArray(data.results[output])) {
-    errBox.textContent = `The sweep returned no values of ${output} (method ${data.rung}); try another output or method.`;
+  const got = outputs.filter((o) => Array.isArray(data.results[o]));
+  if (!got.length) {
+    destroyCharts("sweep");
+    document.getElementById("sweep-plot").replaceChildren();
+    errBox.textContent = `The sweep returned no values of ${outputs.join(", ")} (method ${data.rung}); try another output or method.`;
     document.body.dataset.sweep = "empty";
     return;
   }
-  const o = m.outputs.find((x) => x.name === output);
-  const ou = outputUnit(o);
-  const x = data.values.map((v) => v / u.factor);
-  const y = data.results[output].map((v) => (v === null ? null : v / ou.factor));
-  makeChart(plot, "sweep", {
-    title: `${o.label} against ${p.label} (method ${data.rung}, ${fmtTime(data.elapsed_s)})`,
-    xLabel: `${p.label}${u.label ? " [" + u.label + "]" : ""}`,
-    yLabel: `${o.label}${ou.label ? " [" + ou.label + "]" : ""}`,
-    x, ys: [{ label: o.label, data: y }], xLog: req.scale === "log", marks: designMark(m, p, u),
-  });
+  plotSweep(m);
   const msgs = [...data.warnings.map((w) => "⚠ " + w), ...data.notes];
   document.getElementById("sweep-notes").replaceChildren(...msgs.slice(0, 6).map((n) => el("p", {}, n)),
     ...(msgs.length > 6 ? [el("p", { class: "muted" }, `… and ${msgs.length - 6} more`)] : []));
   document.body.dataset.sweep = "ok";
 }
 
+/**
+ * The last sweep: one curve per output. Outputs in one unit share the axis;
+ * with two units (or "twin axes") the first unit is on the left, the rest on the right.
+ */
+function plotSweep(m, box = document.getElementById("sweep-plot"), kind = "sweep") {
+  const sw = state.lastSweep;
+  if (!sw?.response) return;
+  const { request: req, response: data } = sw;
+  destroyCharts(kind);
+  box.replaceChildren();
+  const p = m.inputs.find((x) => x.name === req.vary);
+  const u = sw.unit;
+  const outs = req.outputs.filter((o) => Array.isArray(data.results[o])).map((n) => m.outputs.find((x) => x.name === n));
+  const mode = document.getElementById("sweep-axes")?.value ?? "auto";
+  const units = [...new Set(outs.map((o) => norm(o.unit)))];
+  const twin = outs.length > 1 && (mode === "twin" || (mode === "auto" && units.length > 1));
+  const ys = outs.map((o) => {
+    const ou = outputUnit(o, maxAbs(data.results[o.name]));
+    const right = twin && (units.length > 1 ? norm(o.unit) !== units[0] : o !== outs[0]);
+    return { label: labelOf(o), unit: ou.label, scale: right ? "y2" : "y", data: data.results[o.name].map((v) => (v === null ? null : v / ou.factor)) };
+  });
+  const axisLabel = (list) => {
+    const names = list.map((s) => s.label).join(", ");
+    const us = [...new Set(list.map((s) => s.unit).filter(Boolean))];
+    return `${names.length <= 32 ? names : list[0].label + ", …"}${us.length ? " [" + us.join(", ") + "]" : ""}`;
+  };
+  makeChart(box, kind, {
+    title: `${ys.map((s) => s.label).join(", ")} against ${p.label} (method ${data.rung}, ${fmtTime(data.elapsed_s)})`,
+    xLabel: `${p.label}${u.label ? " [" + u.label + "]" : ""}`,
+    yLabel: axisLabel(ys.filter((s) => s.scale === "y")), yLabel2: twin ? axisLabel(ys.filter((s) => s.scale === "y2")) : null,
+    x: data.values.map((v) => v / u.factor), ys, xLog: req.scale === "log", marks: designMark(m, p, u),
+  });
+}
+
+function downloadSweep(m, kind) {
+  const sw = state.lastSweep;
+  if (!sw?.response) return;
+  const { request: req, response: data } = sw;
+  if (kind === "json") {
+    download(`${m.name}-sweep.json`, "application/json",
+      JSON.stringify({ model: m.name, link: location.href, request: req, response: data }, null, 2));
+    return;
+  }
+  const outs = req.outputs.filter((o) => Array.isArray(data.results[o]));
+  const head = [`${req.vary} [${data.unit ?? m.inputs.find((x) => x.name === req.vary)?.unit ?? ""}]`,
+    ...outs.map((o) => `${o} [${data.units?.[o] ?? m.outputs.find((x) => x.name === o)?.unit ?? ""}]`)];
+  const lines = [head.map(csvCell).join(",")];
+  data.values.forEach((v, i) => lines.push([v, ...outs.map((o) => data.results[o][i])].map(csvCell).join(",")));
+  download(`${m.name}-sweep.csv`, "text/csv", lines.join("\n") + "\n");
+}
+
+// ---------------------------------------------------------------- report
+
+/** The calculation report: a view on screen (view=report), and what the page prints. */
+/** Project and part name: kept in the link, the design file and the report's header. */
+function designNames(m, params) {
+  const project = el("input", { id: "report-project", type: "text", value: params.get("proj") ?? "", placeholder: "project" });
+  const part = el("input", { id: "report-part", type: "text", value: params.get("part") ?? "", placeholder: "part / joint" });
+  for (const f of [project, part]) f.addEventListener("change", () => updateHash(m, { ...requestBody(m), ...fidelityBody() }));
+  return el("div", { class: "actions names" },
+    el("label", { for: "report-project" }, "Project"), project, el("label", { for: "report-part" }, "Part"), part);
+}
+
+function reportSection(m) {
+  return el("section", { id: "report", class: "report", "aria-label": "calculation report" },
+    el("div", { class: "report-bar no-print" },
+      el("button", { type: "button", id: "print-report", onclick: () => window.print() }, "Print / save as PDF"),
+      el("button", { type: "button", id: "close-report", onclick: () => showView(null) }, "Back to the form")),
+    el("header", { class: "report-head" },
+      el("h2", {}, "Calculation report: ", m.title),
+      el("p", { class: "report-ids", id: "report-ids" }),
+      el("p", { class: "report-meta", id: "report-meta" })),
+    el("div", { id: "report-body" }, el("p", { class: "muted" }, "Compute to fill the report.")));
+}
+
+/** Show the report or the comparison over the form, or (null) the form again. */
+function showView(view) {
+  document.body.classList.toggle("view-report", view === "report");
+  document.body.classList.toggle("view-compare", view === "compare");
+  if (view === "report" && state.model) renderReport(state.model);
+  if (state.model) updateHash(state.model, { ...requestBody(state.model), ...fidelityBody() });
+  window.scrollTo(0, 0);
+}
+
+function equationNode(latex) {
+  const box = el("div", { class: "eq" });
+  try {
+    // katex.render builds DOM nodes (styles through the CSSOM), which the page's CSP allows
+    window.katex.render(latex, box, { displayMode: true, throwOnError: false, output: "html" });
+  } catch {
+    box.textContent = latex;
+  }
+  return box;
+}
+
+function inputsTable(m, data) {
+  const rows = [];
+  const example = state.example === "defaults" ? "source default" : `example ${Number(state.example) + 1}`;
+  for (const p of m.inputs) {
+    const v = data.inputs[p.name];
+    if (v === null || v === undefined) continue;
+    const input = document.getElementById("in-" + p.name);
+    const given = input && touched(input) ? "entered" : (state.example !== "defaults" && p.name in (m.examples[Number(state.example)] || {})) ? example : "default";
+    let shown, unit = "";
+    if (typeof v === "number" && (p.kind === "float" || p.kind === "int")) {
+      const u = p.kind === "int" ? { factor: 1, label: "" } : (currentUnit(p).factor ? currentUnit(p) : unitChoices(p.unit, p.display_unit)[0]);
+      shown = p.kind === "int" ? String(v) : group(short(v / u.factor, 6));
+      unit = u.label;
+    } else shown = typeof v === "boolean" ? (v ? "yes" : "no") : choiceText(String(v));
+    const cites = [...new Set((p.description || "").match(/\[\d{3}[^\]]*\]/g) || [])].join(" ");
+    rows.push(el("tr", {}, el("th", { scope: "row" }, p.label, p.symbol ? el("span", { class: "symbol" }, " " + p.symbol) : null),
+      el("td", { class: "num" }, shown), el("td", { class: "unit" }, unit), el("td", { class: "from" }, given, cites ? el("span", { class: "muted" }, " " + cites) : null)));
+  }
+  return el("table", { class: "results inputs", id: "report-inputs" },
+    el("thead", {}, el("tr", {}, el("th", {}, "input"), el("th", {}, "value"), el("th", {}, "unit"), el("th", {}, "from, source"))),
+    el("tbody", {}, ...rows));
+}
+
+function renderReport(m) {
+  const body = document.getElementById("report-body");
+  const data = state.lastResponse;
+  if (!body || !data) return;
+  destroyCharts("report");
+  const now = new Date();
+  const proj = document.getElementById("report-project").value.trim(), part = document.getElementById("report-part").value.trim();
+  document.getElementById("report-ids").replaceChildren("Project ", el("strong", {}, proj || "—"), " · Part ", el("strong", {}, part || "—"));
+  document.getElementById("report-meta").replaceChildren(
+    `${now.toISOString().slice(0, 16).replace("T", " ")} UTC · service ${state.version || "?"} · model `,
+    el("code", {}, m.name), " · ", el("a", { href: location.href, class: "report-link" }, "link to this calculation"));
+  const sources = (m.sources || []).map((x) => el("li", {}, String(x.reference).startsWith("[") ? x.reference : `[${x.id}] ${x.reference}`));
+  const eqs = (m.equations || []).map((e) => el("div", { class: "eq-row" },
+    el("p", { class: "eq-what" }, e.summary.replace(/\s*\[[^\]]*\]\.?$/, ""), e.source ? el("span", { class: "muted" }, ` ${e.source}`) : null),
+    ...e.latex.map(equationNode)));
+  const seriesBox = el("div", { class: "plots report-plots" });
+  body.replaceChildren(...[
+    el("p", { class: "summary" }, m.summary),
+    el("p", { class: "source" }, el("strong", {}, "Source: "), m.source),
+    sources.length ? el("ul", { class: "sources" }, ...sources) : null,
+    checkSummary(data),
+    (m.assumptions || []).length ? el("h3", {}, "Assumptions") : null,
+    (m.assumptions || []).length ? el("ul", { class: "notes assumptions" }, ...m.assumptions.map((x) => el("li", {}, x))) : null,
+    el("div", { class: "two-col" },
+      el("div", {}, el("h3", {}, "Inputs"), el("div", { class: "table-wrap" }, inputsTable(m, data))),
+      el("div", {}, el("h3", {}, "Results"), ...resultParts(m, data))),
+    eqs.length ? el("h3", {}, "Equations used") : null,
+    eqs.length ? el("div", { class: "equations" }, ...eqs) : null,
+    seriesBox].filter(Boolean));
+  if (Object.values(data.series).some((v) => v.length)) renderSeries(m, data, seriesBox, "report");
+  if (state.lastSweep?.response) plotSweep(m, seriesBox.appendChild(el("div", {})), "report");
+}
+
+// ---------------------------------------------------------------- designs as files
+
+const DESIGN_KIND = "tightening-calculator/design";
+
+function designOf(m) {
+  const fid = fidelityBody();
+  return {
+    kind: DESIGN_KIND, version: 1, model: m.name, title: m.title,
+    project: document.getElementById("report-project")?.value.trim() || "",
+    part: document.getElementById("report-part")?.value.trim() || "",
+    example: state.example, inputs: formInputs(m), fidelity: fid.fidelity,
+    ...(fid.tolerance !== undefined ? { tolerance: fid.tolerance } : {}),
+    saved: new Date().toISOString(), link: location.href,
+  };
+}
+
+function saveDesign(m) {
+  const d = designOf(m);
+  const name = (d.part || d.project || m.name).replace(/[^\w.-]+/g, "_");
+  download(`${name}.design.json`, "application/json", JSON.stringify(d, null, 2) + "\n");
+}
+
+async function readDesign(file) {
+  const d = JSON.parse(await file.text());
+  if (d.kind !== DESIGN_KIND || typeof d.inputs !== "object") throw new Error(`${file.name} is not a saved design`);
+  if (!state.models.some((x) => x.name === d.model)) throw new Error(`${file.name}: unknown model ${d.model}`);
+  return d;
+}
+
+function designHash(d) {
+  const params = new URLSearchParams({ m: d.model, ex: d.example ?? "defaults" });
+  for (const [k, v] of Object.entries(d.inputs)) params.set(k, v);
+  params.set("fidelity", d.fidelity || "auto");
+  if (typeof d.tolerance === "number") params.set("tol", fieldNumber(d.tolerance * 100));
+  if (d.project) params.set("proj", d.project);
+  if (d.part) params.set("part", d.part);
+  return "#" + params.toString();
+}
+
+async function openDesign(fileInput) {
+  const file = fileInput.files[0];
+  fileInput.value = "";
+  if (!file) return;
+  try {
+    const d = await readDesign(file);
+    history.replaceState(null, "", designHash(d));
+    state.model = null; // reload the form from the file
+    await route();
+  } catch (e) {
+    document.getElementById("error-box").replaceChildren(el("p", { class: "error" }, String(e.message || e)));
+  }
+}
+
+/** Compute each design and show them side by side; cells that differ from the first are marked. */
+async function compareDesigns(m, fileInput) {
+  const files = [...fileInput.files];
+  fileInput.value = "";
+  const box = document.getElementById("compare");
+  const designs = [];
+  try {
+    for (const f of files) designs.push({ ...(await readDesign(f)), file: f.name });
+  } catch (e) {
+    box.replaceChildren(el("p", { class: "error" }, String(e.message || e)));
+    return showView("compare");
+  }
+  const models = new Set(designs.map((d) => d.model));
+  if (designs.length < 1 || models.size > 1) {
+    box.replaceChildren(el("p", { class: "error" }, "Choose two or more designs of one model to compare."));
+    return showView("compare");
+  }
+  const model = state.models.find((x) => x.name === designs[0].model);
+  const answers = await Promise.all(designs.map((d) => {
+    const body = { ...Object.fromEntries(Object.entries(d.inputs).filter(([k, v]) => v !== "" && model.inputs.some((p) => p.name === k))
+      .map(([k, v]) => { const p = model.inputs.find((x) => x.name === k); return [k, p.kind === "bool" ? v === "true" : v]; })),
+    fidelity: d.fidelity || "auto", ...(typeof d.tolerance === "number" ? { tolerance: d.tolerance } : {}) };
+    return post(model.path, body);
+  }));
+  state.compare = designs.map((d, i) => ({ design: d, ...answers[i] }));
+  renderCompare(model);
+  showView("compare");
+  document.body.dataset.compare = "ok";
+}
+
+function renderCompare(model) {
+  const box = document.getElementById("compare");
+  const cols = state.compare;
+  const differs = (vals) => vals.some((v) => {
+    const a = vals[0];
+    if (typeof a === "number" && typeof v === "number") return Math.abs(a - v) > 1e-9 * Math.max(Math.abs(a), Math.abs(v));
+    return a !== v;
+  });
+  const row = (label, unit, vals, show) => {
+    const diff = differs(vals);
+    return el("tr", { class: diff ? "differs" : null },
+      el("th", { scope: "row" }, label, unit ? el("span", { class: "muted" }, ` [${unit}]`) : null),
+      ...vals.map((v, i) => el("td", { class: "num" + (diff && i > 0 && differs([vals[0], v]) ? " diff" : "") }, show(v))));
+  };
+  const first = cols.find((c) => c.ok)?.data;
+  const rows = [el("tr", { class: "group" }, el("th", { colspan: cols.length + 1 }, "Inputs"))];
+  for (const p of model.inputs) {
+    const vals = cols.map((c) => (c.ok ? c.data.inputs[p.name] : undefined));
+    if (vals.every((v) => v === null || v === undefined)) continue;
+    const choices = unitChoices(p.unit, p.display_unit);
+    const u = p.kind !== "float" ? { factor: 1, label: "" }
+      : (state.imperial && choices.find((c) => IMPERIAL.has(c.label))) || choices[0];
+    rows.push(row(p.label, u.label, vals, (v) => (typeof v === "number" ? group(short(v / u.factor, 6)) : v === undefined || v === null ? "—" : choiceText(String(v)))));
+  }
+  rows.push(el("tr", { class: "group" }, el("th", { colspan: cols.length + 1 }, "Results")));
+  for (const o of model.outputs) {
+    if (o.series) continue;
+    const vals = cols.map((c) => (c.ok ? c.data.results[o.name] : undefined));
+    if (vals.every((v) => v === undefined)) continue;
+    const u = outputUnit(o, first?.results[o.name]);
+    const sign = signOf(o);
+    rows.push(row(labelOf(o), u.label, vals, (v) => (typeof v === "number" ? (v > 0 ? sign : "") + fmt(v / u.factor, 4) : fmt(choiceText(v)))));
+  }
+  const failed = cols.map((c) => (c.ok ? c.data.checks.filter((k) => !k.ok).map((k) => k.name).join(", ") || "all pass" : "refused"));
+  rows.push(row("Checks", "", failed, (v) => v));
+  box.replaceChildren(
+    el("div", { class: "report-bar no-print" }, el("button", { type: "button", id: "close-compare", onclick: () => showView(null) }, "Back to the form")),
+    el("h2", {}, `Comparison: ${model.title}`),
+    el("p", { class: "muted" }, "Cells that differ from the first design are marked; rows with any difference are shaded."),
+    el("div", { class: "table-wrap" }, el("table", { class: "results compare-table", id: "compare-table" },
+      el("thead", {}, el("tr", {}, el("th", {}, ""), ...cols.map((c, i) => el("th", { scope: "col" },
+        c.design.part || c.design.project || c.design.file || `design ${i + 1}`,
+        c.ok ? null : el("div", { class: "error" }, (c.data.detail || []).map((d) => d.msg).join(" ")))))),
+      el("tbody", {}, ...rows))));
+}
+
+// ---------------------------------------------------------------- pickers and the unit system
+
+/**
+ * A thread picker (designation → diameter and pitch) for a fieldset holding
+ * thread_diameter and thread_pitch, fed by GET /api/v1/fasteners when the
+ * service has it; without that catalogue the fields are typed as before.
+ */
+function threadPicker(m, ps) {
+  const threads = state.fasteners?.threads;
+  const d = ps.find((p) => p.name === "thread_diameter"), pitch = ps.find((p) => p.name === "thread_pitch");
+  if (!threads?.length || !d || !pitch) return null;
+  const sel = el("select", { id: "thread-picker", "aria-describedby": "thread-picker-hint" },
+    el("option", { value: "" }, "— type diameter and pitch —"),
+    ...threads.map((t, i) => el("option", { value: String(i) }, `${t.designation}${t.series ? " (" + t.series + ")" : ""}`)));
+  const fill = (t) => {
+    for (const [p, v] of [[d, t.diameter], [pitch, t.pitch]]) {
+      const input = document.getElementById("in-" + p.name);
+      input.value = fieldNumber(v / currentUnit(p).factor, 10);
+      checkField(p);
+    }
+    markStale();
+  };
+  sel.addEventListener("change", () => { if (threads[Number(sel.value)]) fill(threads[Number(sel.value)]); });
+  // a designation typed into the diameter field ("M12", "M12x1.25") is read from the catalogue too
+  queueMicrotask(() => document.getElementById("in-" + d.name)?.addEventListener("change", (e) => {
+    const key = (s) => String(s).toUpperCase().replaceAll(" ", "").replaceAll("×", "X");
+    const i = threads.findIndex((t) => key(t.designation) === key(e.target.value));
+    if (i >= 0) { sel.value = String(i); fill(threads[i]); }
+  }));
+  return el("div", { class: "field picker" }, el("label", { for: "thread-picker" }, "Thread (ISO designation)"),
+    el("div", { class: "control" }, sel),
+    el("div", { class: "hint", id: "thread-picker-hint" }, "fills the thread diameter and pitch"));
+}
+
+/** Each field's unit to its first imperial (or metric) choice; loaded values keep their exact SI value. */
+function setFieldSystem(m, imperial, which = () => true) {
+  for (const p of m.inputs) {
+    const sel = document.getElementById("unit-" + p.name);
+    if (!sel || sel.tagName !== "SELECT" || !which(p)) continue;
+    const opts = [...sel.options];
+    const want = imperial ? opts.find((o) => IMPERIAL.has(o.textContent)) : opts.find((o) => !IMPERIAL.has(o.textContent));
+    if (!want || want.value === sel.value) continue;
+    sel.value = want.value;
+    sel.dispatchEvent(new Event("change"));
+  }
+}
+
+/** Metric or imperial: every field, result, plot and sweep at once. */
+function switchSystem(imperial) {
+  state.imperial = imperial;
+  localStorage.setItem("unit-system", imperial ? "imperial" : "metric");
+  const m = state.model;
+  if (!m) return;
+  setFieldSystem(m, imperial);
+  if (state.lastResponse) {
+    renderResult(m, state.lastResponse);
+    renderReport(m);
+  }
+  if (state.lastSweep?.response) plotSweep(m);
+  markStale();
+}
+
 let resizeTimer = null;
 window.addEventListener("resize", () => {
   clearTimeout(resizeTimer);
   resizeTimer = setTimeout(() => {
-    for (const c of state.charts) c.chart.setSize({ width: chartWidth(c.chart.root.parentElement.parentElement), height: 280 });
+    for (const c of state.charts) {
+      if (c.kind === "report") continue;
+      c.chart.setSize({ width: chartWidth(c.chart.root.parentElement.parentElement), height: 280 });
+    }
   }, 150);
 });
 

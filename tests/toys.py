@@ -37,6 +37,7 @@ from engine import (
 )
 from service import create_app
 from service.config import Settings
+from service.studies import StudySettings
 
 # ---------------------------------------------------------------------------
 # toy.disc: the contract without physics
@@ -460,8 +461,12 @@ WELL_BEHAVED = (TOY, TOY_ODE)
 
 
 def toy_app(settings: Settings | None = None) -> FastAPI:
-    """The service over the well-behaved toys (``python -m service --factory ...:toy_app``)."""
-    return create_app(models=WELL_BEHAVED, settings=settings)
+    """The service over the well-behaved toys (``python -m service --factory ...:toy_app``).
+
+    Design studies stay small and in-process (no Dask cluster from a test's toys).
+    """
+    small = StudySettings(max_points=4000, inprocess_points=4000, budget_s=2.0)
+    return create_app(models=WELL_BEHAVED, settings=settings, study_settings=small)
 
 
 # ---------------------------------------------------------------------------

@@ -13,6 +13,7 @@ schema, the form and ``GET /api/v1/models`` all derive from this tuple.
 from __future__ import annotations
 
 from ..spec import ModelSpec
+from .blow import BLOW
 from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
 from .joint import VDI2230 as JOINT_VDI2230
 from .nutrunner import NUTRUNNER_DRIVE
@@ -28,6 +29,7 @@ MODELS: tuple[ModelSpec, ...] = (
     PRELOAD_TIGHTENING,
     PRELOAD_CONTROL,
     JOINT_VDI2230,
+    BLOW,
 )
 
 

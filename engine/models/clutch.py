@@ -19,9 +19,9 @@ from ..clutch import (
     RECOMMENDED_GROOVE_ANGLE,
     RECOMMENDED_LOAD_FACTOR,
     WORKABLE_SPRING_INDEX,
-    ball_axial_force,
     ball_normal_force,
     ball_tangential_force,
+    combined_push_factor,
     flank_push_factor,
     spring_deflection_for_force,
     spring_force_for_torque,
@@ -34,6 +34,7 @@ from ..clutch import (
 )
 from ..errors import InfeasibleDesign, InputOutOfRange
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from . import _clutch_asbuilt as asbuilt
 from ._common import DEG, count, friction_coefficient, length
 
 # --------------------------------------------------------------------------
@@ -47,7 +48,7 @@ TYPICAL_FLANK_FRICTION = 0.1
 FLANK_FRICTION_SCATTER = 0.03
 
 
-def _common_params(*, wire_required: bool, deflection_required: bool) -> tuple[Param, ...]:
+def _common_params(*, deflection_required: bool) -> tuple[Param, ...]:
     return (
         length(
             "ball_circle_diameter",
@@ -114,27 +115,25 @@ def _common_params(*, wire_required: bool, deflection_required: bool) -> tuple[P
         ),
         length(
             "spring_wire_diameter",
-            "d0, spring wire diameter [001, eq. 2]",
+            "d0, wire diameter of the helical spring [001, eq. 2]",
             minimum=1e-5,
             maximum=0.05,
-            required=wire_required,
+            required=False,
             symbol="d0",
             group="spring",
         ),
         length(
             "spring_mean_diameter",
-            "D, mean coil diameter of the spring [001, eq. 2]",
+            "D, mean coil diameter of the helical spring [001, eq. 2]",
             minimum=1e-4,
             maximum=0.5,
-            required=True,
             symbol="D",
             group="spring",
         ),
         Param(
             "spring_active_coils",
             "1",
-            "i_p, number of active coils [001, eq. 2]",
-            required=True,
+            "i_p, number of active coils of the helical spring [001, eq. 2]",
             minimum=1.0,
             maximum=1000.0,
             symbol="i_p",
@@ -142,7 +141,8 @@ def _common_params(*, wire_required: bool, deflection_required: bool) -> tuple[P
         ),
         length(
             "spring_deflection",
-            "Δ, spring compression, taken equal to the groove depth as in [001, eq. 2]",
+            "Δ, spring compression with the balls seated (the nut setting); the paper also "
+            "takes it as the groove depth [001, eq. 2], which ball_lift separates",
             minimum=1e-6,
             maximum=0.5,
             required=deflection_required,
@@ -359,22 +359,32 @@ def _friction_note(alpha: float, f: float) -> str:
     )
 
 
+_SPRING_NOTE = (
+    "required_spring_force and the deflection or wire that give it set the torque at which "
+    "the balls start to move (zero lift, [001, eq. 3]); while they climb the spring is "
+    "compressed further, see required_peak_setting and the stresses over the lift."
+)
+
 #: True of every answer of both clutch models (the runner adds it to the notes).
 ASSUMPTIONS = (
     (
-        "Δ is taken, as in the paper, both as the spring compression at slip and as the "
-        "groove depth; the rise of the spring force as the ball climbs (rate × climb) is "
-        "neglected, so the torque to push a ball fully out is somewhat higher."
+        "Quasi-static, rigid parts, ball inertia neglected. torque_limit is the paper's "
+        "zero-lift value [001, eq. 3]; while the balls climb the spring is compressed by the "
+        "lift, so the torque and the spring force and stress follow the characteristic "
+        "(peak_torque, spring_stress_max)."
     ),
 )
 
 
-def _forward_values(x: Mapping[str, Any]) -> dict[str, Any]:
-    """Every output of clutch.ball, on floats or arrays (one input may be an array)."""
-    g, d0, dm = x["shear_modulus"], x["spring_wire_diameter"], x["spring_mean_diameter"]
+def _forward_values(x: Mapping[str, Any], as_built: bool = True) -> dict[str, Any]:
+    """Every output of clutch.ball, on floats or arrays (one input may be an array).
+
+    ``as_built=False`` leaves out the characteristic (81 lifts per point), for long
+    sweeps that ask only for the paper's outputs.
+    """
+    spring = asbuilt.Spring(x)
     alpha, f, kr = x["groove_angle"], x["flank_friction"], x["load_factor"]
-    rate = spring_rate(g, d0, dm, x["spring_active_coils"])
-    force = np.asarray(rate) * np.asarray(x["spring_deflection"])
+    force = spring.force(x["spring_deflection"])
     limit = torque_limit(
         force,
         x["ball_circle_diameter"],
@@ -384,35 +394,59 @@ def _forward_values(x: Mapping[str, Any]) -> dict[str, Any]:
         f,
         x["spring_arrangement"],
     )
+    if x["driving_groove_angle"] is not None:
+        # both flanks lift the ball: the same spring holds less torque
+        limit = (
+            np.asarray(limit)
+            * flank_push_factor(alpha, f)
+            / combined_push_factor(alpha, f, x["driving_groove_angle"])
+        )
     at = limit if x["torque"] is None else x["torque"]
     tangential = ball_tangential_force(at, x["ball_circle_diameter"], x["ball_count"], kr)
-    index = spring_index(dm, d0)
-    return {
+    values: dict[str, Any] = {
         "spring_force": force,
         "torque_limit": limit,
         "ball_tangential_force": tangential,
-        "ball_axial_force": ball_axial_force(tangential, alpha, f),
+        "ball_axial_force": np.asarray(tangential)
+        * combined_push_factor(alpha, f, x["driving_groove_angle"]),
         "ball_normal_force": ball_normal_force(tangential, alpha, f),
-        "spring_index": index,
-        "wahl_factor": wahl_factor(index),
-        "spring_shear_stress": spring_shear_stress(force, dm, d0),
-        "spring_rate": rate,
     }
+    if spring.kind == "helical":
+        d0, dm = x["spring_wire_diameter"], x["spring_mean_diameter"]
+        index = spring_index(dm, d0)
+        values["spring_index"] = index
+        values["wahl_factor"] = wahl_factor(index)
+        values["spring_shear_stress"] = spring_shear_stress(force, dm, d0)
+        values["spring_rate"] = spring_rate(spring.shear_modulus, d0, dm, x["spring_active_coils"])
+    if as_built:
+        values.update(asbuilt.extra_values(x, spring, limit))
+    return values
 
 
 def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    _require_workable(x, x["spring_wire_diameter"])
+    asbuilt.require_spring(x, wire_needed=True)
+    helical = x["spring_type"] == "helical"
+    _require_workable(x, x["spring_wire_diameter"] if helical else None)
     with np.errstate(all="ignore"):
-        v = {k: float(val) for k, val in _forward_values(x).items()}
+        v: dict[str, Any] = {
+            k: None if val is None else float(val) for k, val in _forward_values(x).items()
+        }
     alpha, f = x["groove_angle"], x["flank_friction"]
     push = float(flank_push_factor(alpha, f))
-    checks = [
-        _index_check("spring_index", v["spring_index"], v["wahl_factor"]),
-        *_stress_check(
+    spring = asbuilt.Spring(x)
+    lift = asbuilt.lift_of(x)
+    checks: list[Check] = []
+    if helical:
+        checks.append(_index_check("spring_index", v["spring_index"], v["wahl_factor"]))
+        checks += _stress_check(
             "spring_shear_stress", v["spring_shear_stress"], x["allowable_shear_stress"]
-        ),
+        )
+    checks += [
         _groove_check(
-            "groove_depth", x["spring_deflection"], x["ball_diameter"], "= spring deflection Δ"
+            "groove_depth",
+            lift,
+            x["ball_diameter"],
+            "= spring deflection Δ" if x["ball_lift"] is None else "= ball lift h",
         ),
         _angle_check(alpha),
     ]
@@ -430,20 +464,28 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 + ("" if ok else ": the clutch slips at this torque"),
             )
         )
+    checks += asbuilt.checks(x, spring, v)
     notes = [
         *_arrangement_notes(x, v["spring_force"], push),
         _friction_note(alpha, f),
         f"ball forces are for the most-loaded ball (K_r = {x['load_factor']:g}) {where}; "
         "F_a = F_t tan(α − ρ), F_N = F_t / (cos α + f sin α) [001, eq. 1].",
+        *asbuilt.notes(x, spring, v),
     ]
-    if x["allowable_shear_stress"] is None:
-        notes.append("give allowable_shear_stress to check the spring wire's strength")
+    if helical and x["allowable_shear_stress"] is None and x["spring_material"] == "custom":
+        notes.append(
+            "give allowable_shear_stress or spring_material to check the spring wire's strength"
+        )
+    wanted_series = {"lift", "torque_curve", "spring_force_curve", "spring_stress_curve"}
+    series = asbuilt.series(x, spring) if any(ctx.wants(n) for n in wanted_series) else {}
     return Result(
         values=dict(v),
         rung=ctx.rung,
         error_estimate=_estimate(x),
         checks=checks,
         notes=notes,
+        warnings=asbuilt.warnings(x),
+        series=series,
     )
 
 
@@ -460,14 +502,40 @@ def _masked(values: Mapping[str, Any], ok: npt.NDArray[np.bool_]) -> dict[str, A
 
 
 def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    if x["spring_type"] != "helical" or x["spring_wire_diameter"] is None:
+        # disc springs (and refusals) go point by point through the scalar compute
+        return Result(values={}, rung=ctx.rung, error_estimate=None)
+    if x["spring_material"] != "custom" and np.ndim(x["spring_wire_diameter"]) > 0:
+        return Result(values={}, rung=ctx.rung, error_estimate=None)
+    as_built = any(ctx.wants(o.name) for o in asbuilt.outputs())
     with np.errstate(all="ignore"):
-        values = _masked(_forward_values(x), _feasible_mask(x, x["spring_wire_diameter"]))
+        values = _masked(
+            _chunked_forward(x, as_built), _feasible_mask(x, x["spring_wire_diameter"])
+        )
     return Result(
         values=values,
         rung=ctx.rung,
         error_estimate=None,
         notes=[f"spring_arrangement = {x['spring_arrangement']}; see a single run's notes"],
     )
+
+
+#: Points of a swept input evaluated at once (the characteristic holds 81 per point).
+_CHUNK = 20_000
+
+
+def _chunked_forward(x: Mapping[str, Any], as_built: bool = True) -> dict[str, Any]:
+    """:func:`_forward_values` over a long swept input, a chunk at a time (bounded memory)."""
+    swept = [k for k, v in x.items() if isinstance(v, np.ndarray) and v.ndim > 0]
+    if not as_built or not swept or np.size(x[swept[0]]) <= _CHUNK:
+        return _forward_values(x, as_built)
+    key, arr = swept[0], np.asarray(x[swept[0]])
+    parts = [_forward_values({**x, key: arr[i : i + _CHUNK]}) for i in range(0, arr.size, _CHUNK)]
+    return {
+        k: np.concatenate([np.broadcast_to(p[k], np.shape(arr[i * _CHUNK : (i + 1) * _CHUNK]))
+                           for i, p in enumerate(parts)])
+        for k in parts[0]
+    }  # fmt: skip
 
 
 BALL_CLUTCH = ModelSpec(
@@ -481,10 +549,11 @@ BALL_CLUTCH = ModelSpec(
     ),
     source=(
         "[001] Malashchenko V.O., Semenyuk V.F., Lysiak B.R., Parameters of double action "
-        "ball overturn coupling, eq. 1–3; spring checks after Wahl"
+        "ball overturn coupling, eq. 1–3; spring checks after Wahl; helical springs to "
+        "EN 13906-1 with wire to EN 10270-1 and EN 10270-3; disc springs to DIN EN 16983"
     ),
     inputs=(
-        *_common_params(wire_required=True, deflection_required=True),
+        *_common_params(deflection_required=True),
         Param(
             "torque",
             "N*m",
@@ -495,9 +564,15 @@ BALL_CLUTCH = ModelSpec(
             symbol="T",
         ),
         _allowable_param(),
+        *asbuilt.params(),
     ),
     outputs=(
-        Output("spring_force", "N", "F_spring = G d0⁴ Δ / (8 D³ i_p) [001, eq. 2]"),
+        Output(
+            "spring_force",
+            "N",
+            "spring force at the setting Δ: G d0⁴ Δ / (8 D³ i_p) [001, eq. 2], or the disc "
+            "stack's (DIN EN 16983)",
+        ),
         Output(
             "torque_limit",
             "N*m",
@@ -525,6 +600,7 @@ BALL_CLUTCH = ModelSpec(
             display_unit="MPa",
         ),
         Output("spring_rate", "N/m", "c = G d0⁴/(8 D³ i_p) [001, eq. 2]", display_unit="N/mm"),
+        *asbuilt.outputs(),
     ),
     rungs=(_RUNG,),
     compute=_compute_ball,
@@ -574,6 +650,39 @@ BALL_CLUTCH = ModelSpec(
             "torque": 0.5,
             "allowable_shear_stress": 5e8,
         },
+        # an ordinary limiter: a DH spring preloaded 30 mm by the nut, a 2 mm groove
+        {
+            "ball_circle_diameter": 0.05,
+            "ball_count": 4,
+            "ball_diameter": 0.01,
+            "groove_angle": math.radians(45.0),
+            "flank_friction": 0.1,
+            "face_friction": 0.01,
+            "spring_wire_diameter": 0.004,
+            "spring_mean_diameter": 0.032,
+            "spring_active_coils": 8.0,
+            "spring_free_length": 0.09,
+            "spring_deflection": 0.03,
+            "ball_lift": 0.002,
+            "spring_material": "EN10270-1-DH",
+        },
+        # a disc-spring limiter set past the discs' force maximum: the torque falls
+        {
+            "ball_circle_diameter": 0.05,
+            "ball_count": 6,
+            "ball_diameter": 0.005,
+            "groove_angle": math.radians(45.0),
+            "flank_friction": 0.1,
+            "face_friction": 0.01,
+            "spring_type": "disc",
+            "disc_outer_diameter": 0.04,
+            "disc_inner_diameter": 0.0204,
+            "disc_thickness": 0.001,
+            "disc_cone_height": 0.002,
+            "disc_series": 2,
+            "spring_deflection": 0.0024,
+            "ball_lift": 0.0004,
+        },
     ),
     vectorized=_vectorized_ball,
     vector_rungs=("closed_form",),
@@ -612,24 +721,71 @@ def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
 
 
 def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    drive = asbuilt.sizing(x)
+    drive_notes: list[str] = []
+    drive_checks: list[Check] = []
+    if x["target_torque"] is None:
+        if not drive:
+            raise InputOutOfRange(
+                "give target_torque, or the drive: drive_torque, or drive_power and drive_speed",
+                field="target_torque",
+            )
+        x = {**x, "target_torque": drive["required_slip_torque"]}
+        drive_notes.append(
+            f"target torque = required slip torque {drive['required_slip_torque']:.4g} N·m = "
+            f"max(K T_N, T_a) with K = {x['service_factor']:g}, T_N = "
+            f"{drive['rated_drive_torque']:.4g} N·m"
+            + (f", T_a = {drive['start_torque']:.4g} N·m" if "start_torque" in drive else "")
+        )
+    elif drive:
+        ok = x["target_torque"] >= drive["required_slip_torque"]
+        drive_checks.append(
+            Check(
+                "target_covers_drive",
+                ok,
+                f"target {x['target_torque']:.4g} N·m "
+                + ("≥" if ok else "<")
+                + f" required slip torque {drive['required_slip_torque']:.4g} N·m"
+                + ("" if ok else ": the clutch would slip in normal work or at every start"),
+            )
+        )
     wire, deflection = x["spring_wire_diameter"], x["spring_deflection"]
-    if wire is None and deflection is None:
+    helical = x["spring_type"] == "helical"
+    if helical and wire is None and deflection is None:
         raise InputOutOfRange(
             "give spring_wire_diameter (to get the deflection that sets the target torque) "
             "or spring_deflection (to get the wire diameter), or both",
             field="spring_wire_diameter",
         )
-    _require_workable(x, wire)
-    with np.errstate(all="ignore"):
-        v: dict[str, Any] = {k: float(val) for k, val in _setting_values(x).items()}
-    no_coil = deflection is not None and v["required_wire_spring_index"] <= 1.0
+    asbuilt.require_spring(x, wire_needed=False)
+    _require_workable(x, wire if helical else None)
+    if helical:
+        with np.errstate(all="ignore"):
+            v: dict[str, Any] = {k: float(val) for k, val in _setting_values(x).items()}
+    else:
+        force = spring_force_for_torque(
+            x["target_torque"],
+            x["ball_circle_diameter"],
+            x["groove_angle"],
+            x["ball_count"],
+            x["load_factor"],
+            x["flank_friction"],
+            x["spring_arrangement"],
+        )
+        v = {"required_spring_force": float(force)}
+        v["required_deflection"] = asbuilt.disc_breakaway_setting(x, float(force))
+    extra, extra_notes = asbuilt.setting_values(x, v["required_spring_force"])
+    v.update(extra)
+    v.update(drive)
+    extra_notes = drive_notes + extra_notes
+    no_coil = helical and deflection is not None and v["required_wire_spring_index"] <= 1.0
     if no_coil:
         # no coil exists for C <= 1: its stress is not a number, say so rather than NaN
         v["required_wire_shear_stress"] = None
     alpha, f = x["groove_angle"], x["flank_friction"]
     allow = x["allowable_shear_stress"]
     checks: list[Check] = []
-    if wire is not None:
+    if helical and wire is not None:
         kw = float(wahl_factor(v["spring_index"]))
         checks.append(_index_check("spring_index", v["spring_index"], kw))
         checks += _stress_check(
@@ -641,12 +797,12 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         checks.append(
             _groove_check(
                 "required_deflection_groove_depth",
-                v["required_deflection"],
+                asbuilt.lift_of(x, v["required_deflection"]),
                 x["ball_diameter"],
-                "= required deflection",
+                "= required deflection" if x["ball_lift"] is None else "= ball lift h",
             )
         )
-    if deflection is not None:
+    if helical and deflection is not None:
         idx = v["required_wire_spring_index"]
         if no_coil:
             checks.append(
@@ -667,9 +823,29 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 f"required wire ({v['required_wire_diameter'] * 1e3:.4g} mm)",
             )
         checks.append(
-            _groove_check("groove_depth", deflection, x["ball_diameter"], "= given deflection")
+            _groove_check(
+                "groove_depth",
+                asbuilt.lift_of(x, deflection),
+                x["ball_diameter"],
+                "= given deflection" if x["ball_lift"] is None else "= ball lift h",
+            )
         )
+    if v.get("peak_setting_stress_max") is not None:
+        limit = asbuilt.Spring(x).permissible()
+        if limit is not None:
+            ok = v["peak_setting_stress_max"] <= limit
+            checks.append(
+                Check(
+                    "peak_setting_stress_max",
+                    ok,
+                    f"largest spring stress over the lift at the peak setting "
+                    f"{v['peak_setting_stress_max'] / 1e6:.4g} MPa "
+                    + ("≤" if ok else ">")
+                    + f" permissible {limit / 1e6:.4g} MPa",
+                )
+            )
     checks.append(_angle_check(alpha))
+    checks += drive_checks
     push = float(flank_push_factor(alpha, f))
     notes = [
         *_arrangement_notes(x, v["required_spring_force"], push),
@@ -678,6 +854,8 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "torque with the given wire; required_wire_diameter gives it at the given "
         "deflection, d0 = (8 F D³ i_p / (G Δ))^¼ [001, eq. 2]; round it to a stock wire "
         "size and re-set the deflection.",
+        _SPRING_NOTE,
+        *extra_notes,
     ]
     if no_coil:
         notes.append(
@@ -694,7 +872,11 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 
 def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    if x["spring_wire_diameter"] is None and x["spring_deflection"] is None:
+    if (
+        x["target_torque"] is None
+        or x["spring_type"] != "helical"
+        or (x["spring_wire_diameter"] is None and x["spring_deflection"] is None)
+    ):
         return Result(values={}, rung=ctx.rung, error_estimate=None)
     with np.errstate(all="ignore"):
         values = _setting_values(x)
@@ -720,16 +902,18 @@ BALL_CLUTCH_SETTING = ModelSpec(
         Param(
             "target_torque",
             "N*m",
-            "the slipping torque wanted [001, eq. 3 solved for the spring]",
-            required=True,
+            "the slipping torque wanted [001, eq. 3 solved for the spring]; absent, the "
+            "required slip torque from the drive (drive_torque or drive_power and drive_speed)",
             minimum=0.0,
             exclusive_minimum=True,
             maximum=1e6,
             display_unit="N*m",
             symbol="T",
         ),
-        *_common_params(wire_required=False, deflection_required=False),
+        *_common_params(deflection_required=False),
         _allowable_param(),
+        *asbuilt.params(),
+        *asbuilt.sizing_params(),
     ),
     outputs=(
         Output(
@@ -764,6 +948,8 @@ BALL_CLUTCH_SETTING = ModelSpec(
             "wire stress of the required wire at the required force",
             display_unit="MPa",
         ),
+        *asbuilt.setting_outputs(),
+        *asbuilt.sizing_outputs(),
     ),
     rungs=(_RUNG,),
     compute=_compute_setting,
@@ -784,6 +970,27 @@ BALL_CLUTCH_SETTING = ModelSpec(
             "spring_mean_diameter": 0.045,
             "spring_active_coils": 5.0,
             "spring_deflection": 0.004,
+        },
+        # an ordinary limiter sized from its drive: 0.37 kW at 1450 rpm, service factor 2,
+        # a motor starting at 6 N·m against three times its own inertia
+        {
+            "ball_circle_diameter": 0.05,
+            "ball_count": 4,
+            "ball_diameter": 0.01,
+            "groove_angle": math.radians(45.0),
+            "flank_friction": 0.1,
+            "spring_wire_diameter": 0.004,
+            "spring_mean_diameter": 0.032,
+            "spring_active_coils": 8.0,
+            "spring_free_length": 0.09,
+            "ball_lift": 0.002,
+            "spring_material": "EN10270-1-DH",
+            "drive_power": 370.0,
+            "drive_speed": 1450.0 * math.pi / 30.0,
+            "service_factor": 2.0,
+            "drive_start_torque": 6.0,
+            "drive_inertia": 1e-3,
+            "load_inertia": 3e-3,
         },
     ),
     vectorized=_vectorized_setting,

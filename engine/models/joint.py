@@ -23,6 +23,7 @@ from .. import preload as pl
 from ..errors import InputOutOfRange
 from ..preload_methods import METHODS, get_method
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
+from . import _fasteners as fz
 from .preload import BOLT_INPUTS, Bolt, resolve_bolt
 
 SOURCE = (
@@ -43,6 +44,8 @@ MAX_PLATES = 3
 # --------------------------------------------------------------------------- inputs
 
 _BOLT_NAMES = (
+    "thread",  # a designation ("M12 ISO 4762 10.9", "1/2-13 UNC"), issue 15
+    "grade",
     "thread_diameter",
     "thread_pitch",
     "property_class",
@@ -422,6 +425,8 @@ JOINT_INPUTS: tuple[Param, ...] = (
         choices=("before_heat_treatment", "after_heat_treatment"),
         group="fatigue",
     ),
+    # bought-part checks (issue 15): surface pressure VDI 2230-1 R10, engagement R11
+    *(p for p in fz.CHECK_INPUTS if p.name != "working_bolt_force"),
 )
 
 # --------------------------------------------------------------------------- hooks
@@ -431,7 +436,7 @@ JOINT_INPUTS: tuple[Param, ...] = (
 #: and nut (VDI 2230-1 R10) and the length of engagement / thread stripping (R11)
 #: are meant to plug in here from the fastener catalogue.
 CheckHook = Callable[[Mapping[str, Any], "JointSolution"], tuple[list[Check], list[str]]]
-CHECK_HOOKS: list[CheckHook] = []
+CHECK_HOOKS: list[CheckHook] = [fz.joint_check_hook]
 
 
 @dataclass(frozen=True)
@@ -1126,6 +1131,20 @@ VDI2230 = ModelSpec(
             "reduced_diameter": 0.0075,
             "nut_youngs_modulus": 7e10,
             "working_load": 5e3,
+        },
+        # bought parts (issue 15): socket-head M8 12.9 into aluminium, 12 mm of thread
+        {
+            "thread": "M8 ISO 4762 12.9",
+            "joint_type": "tapped",
+            "head": "socket",
+            "plate1_thickness": 0.012,
+            "plate1_youngs_modulus": 7e10,
+            "nut_youngs_modulus": 7e10,
+            "working_load": 4e3,
+            "washer": "ISO 7089",
+            "clamped_material": "EN AW-6082 T6",
+            "internal_thread_material": "EN AW-6082 T6",
+            "engagement_length": 0.012,
         },
     ),
 )

@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from ..clutch import acceleration_torque, rated_torque, required_slip_torque
 from ..errors import InfeasibleDesign, InputOutOfRange
 from ..motor_spinup import (
     MotorCurve,
@@ -310,6 +311,18 @@ _INPUTS: tuple[Param, ...] = (
         recommended=(0.9, 1.0),
         group="motor curve",
     ),
+    # issue 17: the slip torque of safety coupling 1 (a torque limiter, sized as makers do)
+    Param(
+        "coupling_service_factor",
+        "1",
+        "service factor K on the motor's rated torque P/ω for the slip torque of the safety "
+        "coupling 1; 1.5 (smooth) … 3 (shocks), as torque-limiter makers advise",
+        default=2.0,
+        minimum=1.0,
+        maximum=10.0,
+        recommended=(1.5, 3.0),
+        group="coupling 1",
+    ),
 )
 
 _OUTPUTS: tuple[Output, ...] = (
@@ -399,6 +412,13 @@ _OUTPUTS: tuple[Output, ...] = (
         series=True,
         x="time",
         display_unit="rpm",
+    ),
+    # issue 17: safety coupling 1 as a torque limiter (engine.clutch sizing)
+    Output(
+        "coupling_slip_torque",
+        "N*m",
+        "slip torque to set on the safety coupling 1: max(K P/ω, T_a), T_a = T_b J_L/(J_A + J_L) "
+        "while a motor with breakdown torque T_b and rotor inertia J_A starts parts 2…5 (J_L)",
     ),
 )
 
@@ -537,7 +557,22 @@ def _closed_values(x: Mapping[str, Any], d: _Drive, geared: bool) -> dict[str, A
         "gear_ratio_torque_change": _gear_effect(d),
         "shaft_shear_stress": shaft_shear_stress(m7, x["shaft_diameter"]),
         "spindle_shear_stress": shaft_shear_stress(m, x["spindle_diameter"]),
+        "coupling_slip_torque": _coupling_slip_torque(x, d),
     }
+
+
+def _coupling_slip_torque(x: Mapping[str, Any], d: _Drive) -> Any:
+    """Slip torque of coupling 1: K P/ω, or the start torque through it if larger."""
+    w = x["motor_speed"]
+    rated = rated_torque(x["motor_power"], w)
+    start: Any = 0.0
+    if x["breakdown_torque"] is not None and x["rotor_inertia"] is not None:
+        t1, t2, t3, t4, t5 = d.energies
+        load = 2.0 * (np.asarray(t2) + t3 + t4 + t5) / np.asarray(w) ** 2
+        # the coupling's own inertia counted with the motor's side
+        drive = x["rotor_inertia"] + 2.0 * np.asarray(t1) / np.asarray(w) ** 2
+        start = acceleration_torque(x["breakdown_torque"], drive, load)
+    return required_slip_torque(rated, x["coupling_service_factor"], start)
 
 
 def _drive_inertia(x: Mapping[str, Any], d: _Drive) -> float:

@@ -19,12 +19,13 @@ from .. import threads as th
 from ..errors import EngineError, InputOutOfRange
 from ..preload_methods import METHOD_KEYS, METHODS, ControlMethod, get_method
 from ..spec import Check, ModelSpec, Output, Param, Plot, Result, RunContext, Rung
+from . import _fasteners as fz
 from ._common import count, friction_coefficient
 
 SOURCE = (
     "[004] review of preload selection and tightening control, eq. 2–19, "
     "fig. 1–9; VDI 2230-1:2015 steps R7 and R13, Table A8;"
-    " ISO 68-1, ISO 261, ISO 273, ISO 898-1, ISO 4017"
+    " ISO 68-1, ISO 261, ISO 273, ISO 898-1, ISO 4017; " + fz.SOURCE_TEXT
 )
 
 #: Angle-reading error of [004] (10…15°), taken at its upper end.
@@ -33,12 +34,13 @@ ANGLE_READING_ERROR = math.radians(15.0)
 # --------------------------------------------------------------------------- inputs
 
 BOLT_INPUTS: tuple[Param, ...] = (
+    *fz.THREAD_INPUTS,
     Param(
         "thread_diameter",
         "m",
-        "Nominal thread diameter d (ISO 261 M3…M39 have tabulated data; other sizes "
-        "need thread_pitch, bearing_outer_diameter, hole_diameter and yield_strength)",
-        required=True,
+        "Nominal thread diameter d, when no thread designation is given (ISO 261 M3…M39 "
+        "have tabulated data; other sizes need thread_pitch, bearing_outer_diameter, "
+        "hole_diameter and yield_strength)",
         maximum=1.0,
         display_unit="mm",
         symbol="d",
@@ -168,6 +170,7 @@ BOLT_INPUTS: tuple[Param, ...] = (
         minimum=0.0,
         exclusive_minimum=True,
     ),
+    *fz.CHECK_INPUTS,
 )
 
 # --------------------------------------------------------------------------- the bolt
@@ -187,14 +190,20 @@ class Bolt:
     tensile_strength: float | None
     bearing_outer_diameter: float
     hole_diameter: float
+    #: μ_K multiplier of the bearing face (1/sin 45° on a countersunk head, issue 15).
+    bearing_friction_factor: float = 1.0
+    #: The catalogue's fastener (thread, head, grade) where the request names one.
+    fastener: fz.Fastener | None = None
 
 
 def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
     """The bolt a request describes, and notes naming each standard value used."""
-    notes: list[str] = []
-    d = float(x["thread_diameter"])
+    cat, fastener, notes = fz.resolve(x)
+    d = float(cat["diameter"])
     mm = d * 1e3
-    if x.get("thread_pitch") is None:
+    if "pitch" in cat:
+        pitch = float(cat["pitch"])
+    elif x.get("thread_pitch") is None:
         pitch = th.coarse_pitch(d)
         notes.append(f"pitch P = {pitch * 1e3:g} mm: ISO 261 coarse thread M{mm:g}")
     else:
@@ -208,6 +217,8 @@ def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
     if x.get("yield_strength") is not None:
         yield_strength, tensile = float(x["yield_strength"]), None
         notes.append(f"yield strength R_p0.2 = {yield_strength / 1e6:g} MPa as given")
+    elif "yield_strength" in cat:
+        yield_strength, tensile = float(cat["yield_strength"]), float(cat["tensile_strength"])
     else:
         cls = str(x.get("property_class") or "8.8")
         yield_strength, tensile = th.property_class_strengths(cls, d)
@@ -219,6 +230,8 @@ def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
     given_outer = x.get("bearing_outer_diameter") is not None
     if given_outer:
         outer = float(x["bearing_outer_diameter"])
+    elif "bearing_outer_diameter" in cat:
+        outer = float(cat["bearing_outer_diameter"])
     else:
         outer = th.hex_bearing_diameter(d)
         notes.append(f"bearing face D_f = d_w,min = {outer * 1e3:g} mm (ISO 4017 hexagon head)")
@@ -230,6 +243,8 @@ def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
                 f"d = {d * 1e3:g} mm: the bolt would not pass through the clamped part",
                 field="hole_diameter",
             )
+    elif "hole_diameter" in cat:
+        hole = float(cat["hole_diameter"])
     else:
         series = str(x.get("hole_series") or "medium")
         hole = th.clearance_hole(d, series)
@@ -245,14 +260,16 @@ def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
         Bolt(
             diameter=d,
             pitch=pitch,
-            pitch_diameter=th.pitch_diameter(d, pitch),
-            minor_diameter=th.minor_diameter(d, pitch),
-            stress_diameter=th.stress_diameter(d, pitch),
-            stress_area=th.stress_area(d, pitch),
+            pitch_diameter=cat.get("pitch_diameter", th.pitch_diameter(d, pitch)),
+            minor_diameter=cat.get("minor_diameter", th.minor_diameter(d, pitch)),
+            stress_diameter=cat.get("stress_diameter", th.stress_diameter(d, pitch)),
+            stress_area=cat.get("stress_area", th.stress_area(d, pitch)),
             yield_strength=yield_strength,
             tensile_strength=tensile,
             bearing_outer_diameter=outer,
             hole_diameter=hole,
+            bearing_friction_factor=cat.get("bearing_friction_factor", 1.0),
+            fastener=fastener,
         ),
         notes,
     )
@@ -267,7 +284,7 @@ def torque_coefficients(
         bolt.pitch_diameter,
         bolt.diameter,
         thread_friction,
-        bearing_friction,
+        bearing_friction * bolt.bearing_friction_factor,
         bolt.bearing_outer_diameter,
         bolt.hole_diameter,
         formula,
@@ -319,6 +336,35 @@ CLOSED_FORM = Rung(
 )
 
 # --------------------------------------------------------------------------- tightening
+
+
+def _add_bought_part_checks(
+    x: Mapping[str, Any],
+    bolt: Bolt,
+    max_preload: float,
+    torque: float,
+    values: dict[str, Any],
+    checks: list[Check],
+    notes: list[str],
+) -> None:
+    """Surface pressure, thread stripping and drive torque (issue 15), into the result."""
+    fastener = bolt.fastener or fz.Fastener("", None, None, None)
+    more, more_checks, more_notes = fz.bought_part_checks(
+        x,
+        fastener,
+        diameter=bolt.diameter,
+        pitch=bolt.pitch,
+        pitch_diameter=bolt.pitch_diameter,
+        stress_area=bolt.stress_area,
+        tensile_strength=bolt.tensile_strength,
+        bearing_outer_diameter=bolt.bearing_outer_diameter,
+        hole_diameter=bolt.hole_diameter,
+        max_assembly_preload=max_preload,
+        tightening_torque=torque,
+    )
+    values.update(more)
+    checks.extend(more_checks)
+    notes.extend(more_notes)
 
 
 def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
@@ -395,6 +441,7 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "yield_rule_torque": thumb_yield,
         "yield_rule_deviation": (thumb_yield - total) / total if total > 0 else math.inf,
     }
+    _add_bought_part_checks(x, bolt, force, total, values, checks, notes)
     return Result(
         values=values,
         rung=ctx.rung,
@@ -465,6 +512,7 @@ TIGHTENING_OUTPUTS: tuple[Output, ...] = (
         "0.07 σ_T d³ ([004, eq. 18]; assumes σ0 = 0.6 σ_T, not the preload used here)",
     ),
     Output("yield_rule_deviation", "1", "(0.07 σ_T d³ − M_A) / M_A"),
+    *fz.CHECK_OUTPUTS,
 )
 
 #: True of every preload.tightening answer (the runner adds it to the notes).
@@ -508,6 +556,16 @@ TIGHTENING = ModelSpec(
             "preload_convention": "elastic",
             "utilization": 0.7,
         },
+        # bought parts (issue 15): a designation, no dimension typed
+        {"thread": "M10 ISO 4762 12.9"},
+        {
+            "thread": "M8 ISO 4762 12.9",
+            "clamped_material": "EN AW-6082 T6",
+            "internal_thread_material": "EN AW-6082 T6",
+            "engagement_length": 0.008,
+            "washer": "ISO 7089",
+        },
+        {"thread": "1/2-13 UNC", "grade": "SAE 5", "clamped_material": "S235JR"},
     ),
 )
 
@@ -914,6 +972,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
             field="coupling_outer_diameter",
         )
 
+    _add_bought_part_checks(x, bolt, f_max, torque, values, checks, notes)
     meets = f_min >= required
     below = f_max <= at_yield * (1.0 + 1e-12)
     values["min_meets_clamp"] = meets
@@ -985,6 +1044,11 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if scatter_wanted and has_range:
         g_range = _range(x, "thread_friction", mu_g)
         k_range = _range(x, "bearing_friction", mu_k)
+        if bolt.bearing_friction_factor != 1.0:  # a countersunk head: μ_K acts on the cone
+            k_range = (
+                k_range[0] * bolt.bearing_friction_factor,
+                k_range[1] * bolt.bearing_friction_factor,
+            )
         fixed = torque if x.get("scatter_torque") is None else float(x["scatter_torque"])
         hist = pl.friction_scatter_histogram(
             fixed,
@@ -1141,6 +1205,7 @@ CONTROL_OUTPUTS: tuple[Output, ...] = (
         x="preload_bins",
         plot=Plot(bars=True),
     ),
+    *fz.CHECK_OUTPUTS,
 )
 
 CONTROL = ModelSpec(
@@ -1184,5 +1249,14 @@ CONTROL = ModelSpec(
             "clamped_length": 0.12,
             "shank_length": 0.08,
         },
+        # bought parts (issue 15): socket head M8 12.9 into aluminium, too short an engagement
+        {
+            "thread": "M8 ISO 4762 12.9",
+            "required_clamp_force": 12e3,
+            "clamped_material": "EN AW-6082 T6",
+            "internal_thread_material": "EN AW-6082 T6",
+            "engagement_length": 0.008,
+        },
+        {"thread": "1/2-13 UNC", "grade": "SAE 5", "required_clamp_force": 15e3},
     ),
 )

@@ -27,7 +27,9 @@ CITING = [
 ]
 #: Physics modules: pure functions, never the spec machinery.
 PHYSICS = [
+    "blow",
     "clutch",
+    "fasteners",
     "joint",
     "motor_spinup",
     "nutrunner",
@@ -35,6 +37,7 @@ PHYSICS = [
     "preload_methods",
     "rare_impact",
     "rare_impact_sim",
+    "springs",
     "threads",
 ]
 

@@ -22,6 +22,7 @@ from schemathesis.checks import (
 
 from service import create_app
 from service.config import Settings
+from service.studies import StudySettings
 from tests.toys import toy_app
 
 pytestmark = pytest.mark.fuzz
@@ -38,7 +39,11 @@ BUDGET = settings(
 # A 1 s budget: generated inputs that would simulate for long get the documented
 # 422 budget_exceeded quickly instead of taking the default 10 s each.
 FAST = Settings(budget_s=1.0, budget_grace_s=0.5)
-real = schemathesis.openapi.from_asgi("/openapi.json", create_app(settings=FAST))
+# studies stay small and in-process: generated bodies must not start a Dask cluster
+SMALL_STUDIES = StudySettings(max_points=4000, inprocess_points=4000, budget_s=2.0)
+real = schemathesis.openapi.from_asgi(
+    "/openapi.json", create_app(settings=FAST, study_settings=SMALL_STUDIES)
+)
 toys = schemathesis.openapi.from_asgi("/openapi.json", toy_app(FAST))
 
 

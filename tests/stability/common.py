@@ -76,7 +76,7 @@ def param_values(param: Param, example: Any = None) -> st.SearchStrategy[Any]:
     """
     if param.kind == "bool":
         return st.booleans()
-    if param.kind == "choice":
+    if param.kind in ("choice", "text"):  # a text input's choices are its suggestions
         return st.sampled_from(param.choices)
     bounds = extremes(param, example)
     assert bounds is not None

@@ -110,3 +110,23 @@ def test_figure_5_torque_against_wire_diameter(delta_mm):
     # the formula as printed (K_r dividing) would be 1/K_r² = 1.384 times the per-ball curve
     printed = D0 * NB * G * (4e-3) ** 4 * delta_mm * 1e-3 / (16 * KR * D**3 * IP)
     assert printed / per_ball[-1] == pytest.approx(1 / KR**2, rel=1e-12)
+
+
+def test_worked_case_stress_at_the_peak_force():
+    """[001]'s Δ is both the nut setting and the groove depth: climbing out, the ball
+    compresses the spring by another Δ, so the spring reaches c(Δ + Δ) = 44.95 N at the
+    peak torque and the wire stress doubles, 45.38 → 90.77 MPa (Wahl-corrected); rolling
+    over the rim adds (d/2)(1 − sin 45°) = 1.46 mm more, 107.4 MPa on the face."""
+    r = APP.post("/api/v1/clutch/ball", json=PAPER)
+    assert r.status_code == 200, r.text
+    body = r.json()
+    res = body["results"]
+    assert res["spring_shear_stress"] == pytest.approx(45.3849e6, rel=1e-5)
+    assert res["spring_force_at_peak"] == pytest.approx(2 * paper_spring_force(4e-3, 4e-3))
+    assert res["spring_stress_at_peak"] == pytest.approx(90.7698e6, rel=1e-5)
+    assert res["spring_stress_max"] == pytest.approx(107.386e6, rel=1e-5)
+    assert res["peak_torque"] == pytest.approx(2 * 0.5618656, rel=1e-6)
+    # the characteristic is in the answer for the form's plot: 81 points, seated to face
+    series = body["series"]
+    assert len(series["lift"]) == len(series["torque_curve"]) == 81
+    assert series["torque_curve"][0] == pytest.approx(res["torque_limit"], rel=1e-12)

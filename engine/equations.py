@@ -1,0 +1,104 @@
+"""The equations a model uses, read from the docstrings of the engine functions it calls.
+
+Every engine function documents its equation in a ``.. math::`` block (the
+fluids docstring style). :func:`equations_of` starts at a model's compute
+function, follows the engine functions it calls (directly or through an
+imported engine module, ``th.stress_area``), depth first in the order they
+are named, and returns each function's summary line, its LaTeX and its
+source citation, so the form's calculation report can print the equations
+actually used rather than a list typed by hand that could drift.
+"""
+
+from __future__ import annotations
+
+import inspect
+import re
+import types
+from collections.abc import Callable
+from functools import lru_cache
+from typing import Any
+
+_MATH = re.compile(
+    r"^(?P<indent>[ \t]*)\.\. math::[ \t]*\n(?P<body>(?:(?:(?P=indent)[ \t]+.*)?\n)+)", re.M
+)
+_CITE = re.compile(r"\[\d{3}(?:, [^\]\n]*)?\]|(?:VDI|ISO|EN|DIN) \d[\d\-:]*(?: step R\d+)?")
+
+
+def _blocks(doc: str) -> list[str]:
+    """The LaTeX of every ``.. math::`` block in a docstring, lines joined."""
+    out = []
+    for m in _MATH.finditer(inspect.cleandoc(doc) + "\n"):
+        lines = [ln.strip() for ln in m.group("body").splitlines() if ln.strip()]
+        if lines:
+            out.append(" ".join(lines))
+    return out
+
+
+def _names(code: types.CodeType) -> list[str]:
+    names = list(code.co_names)
+    for const in code.co_consts:
+        if isinstance(const, types.CodeType):
+            names += _names(const)
+    return list(dict.fromkeys(names))
+
+
+def _callees(fn: Callable[..., Any]) -> list[Callable[..., Any]]:
+    """Engine functions ``fn`` names: globals, and attributes of imported engine modules."""
+    code = getattr(fn, "__code__", None)
+    if code is None:
+        return []
+    glb = getattr(fn, "__globals__", {})
+    names = _names(code)
+    found: list[Callable[..., Any]] = []
+    for n in names:
+        obj = glb.get(n)
+        if isinstance(obj, types.ModuleType) and obj.__name__.startswith("engine."):
+            found += [getattr(obj, a) for a in names if inspect.isfunction(getattr(obj, a, None))]
+        elif inspect.isfunction(obj) and obj.__module__.startswith("engine."):
+            found.append(obj)
+    return found
+
+
+@lru_cache(maxsize=64)
+def equations_of(fn: Callable[..., Any], limit: int = 16) -> tuple[dict[str, Any], ...]:
+    """``({"function", "summary", "latex": [...], "source"}, ...)`` for ``fn`` and what it calls.
+
+    At most ``limit`` functions (the first found, depth first); functions
+    whose docstring has no ``.. math::`` block are followed but not listed.
+
+    >>> from engine import preload
+    >>> eqs = equations_of(preload.thread_torque)
+    >>> [e["function"] for e in eqs]
+    ['thread_torque', 'lead_angle', 'thread_friction_angle']
+    >>> eqs[1]["latex"], eqs[1]["source"]
+    (['\\\\psi = \\\\arctan\\\\frac{P}{\\\\pi d_2}'], '[004, eq. 10]')
+    """
+    seen: set[Callable[..., Any]] = set()
+    out: list[dict[str, Any]] = []
+
+    def visit(f: Callable[..., Any], depth: int) -> None:
+        if f in seen or depth > 4 or len(out) >= limit:
+            return
+        seen.add(f)
+        doc = inspect.getdoc(f) or ""
+        latex = _blocks(doc)
+        if latex:
+            summary = doc.strip().split("\n\n")[0].replace("\n", " ")
+            cites = list(dict.fromkeys(c.strip() for c in _CITE.findall(doc)))
+            # a bare "[004]" says less than "[004, eq. 10]" beside it
+            cites = [
+                c for c in cites if not any(o != c and o.startswith(c[:-1] + ",") for o in cites)
+            ]
+            out.append(
+                {
+                    "function": f.__name__,
+                    "summary": summary,
+                    "latex": latex,
+                    "source": ", ".join(cites[:3]),
+                }
+            )
+        for g in _callees(f):
+            visit(g, depth + 1)
+
+    visit(fn, 0)
+    return tuple(out)

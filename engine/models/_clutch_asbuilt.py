@@ -1,0 +1,1108 @@
+"""The ball clutch as built: its spring (helical or disc), lift characteristic and checks.
+
+Shared by ``clutch.ball`` and ``clutch.ball_setting`` (engine/models/clutch.py). The
+equations are in :mod:`engine.clutch` and :mod:`engine.springs`; this module declares
+the extra inputs and outputs, evaluates the torque-against-lift characteristic
+(broadcasting over a swept input) and writes the checks and notes.
+
+Lift convention: ``ball_lift`` h is the ball's (and the pressure disk's) rise along
+the flank, from seated to the groove's rim; over the rim it rises another
+(d/2)(1 − sin α) before riding on the face. Absent, h is the paper's groove depth,
+equal to the spring deflection Δ [001, eq. 2].
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+from typing import Any
+
+import numpy as np
+from scipy.optimize import brentq
+
+from .. import springs as sp
+from ..clutch import (
+    RECOMMENDED_SERVICE_FACTOR,
+    SELF_LOCKING_MARGIN,
+    combined_push_factor,
+    friction_sensitivity,
+    residual_torque,
+)
+from ..clutch import acceleration_torque as cl_acceleration_torque
+from ..clutch import rated_torque as cl_rated_torque
+from ..clutch import required_slip_torque as cl_required_slip_torque
+from ..errors import InputOutOfRange
+from ..spec import Check, Output, Param, Plot, Window
+from ._common import DEG, count, friction_coefficient, length, positive
+
+#: Points on the flank (and as many over the rim) of the characteristic.
+POINTS = 41
+#: Residual torque above this share of the peak is flagged (the clutch keeps
+#: dragging the load while it slips and heats up).
+RESIDUAL_SHARE = 0.10
+#: Static limit of σ_OM for the usual disc-spring steels (C60S, 51CrV4) in
+#: DIN EN 16983: about their yield strength R_e ≈ 1400…1600 MPa.
+DISC_YIELD_DEFAULT = 1400e6
+
+SPRING_TYPES = ("helical", "disc")
+MATERIAL_CHOICES = ("custom", *sp.MATERIALS)
+CORRECTION_CHOICES = ("wahl", "bergstrasser")
+SEATINGS = tuple(sp.SEATING_COEFFICIENTS)
+
+
+def params() -> tuple[Param, ...]:
+    """The as-built inputs, shared by both clutch models."""
+    return (
+        length(
+            "ball_lift",
+            "h, rise of the ball (and of the pressure disk) along the flank from seated to "
+            "the groove's rim; the ball then rolls over the rim, rising (d/2)(1 − sin α) "
+            "more. Absent: the paper's groove depth, equal to the spring deflection Δ",
+            minimum=0.0,
+            maximum=0.2,
+            symbol="h",
+            group="balls",
+        ),
+        Param(
+            "driving_groove_angle",
+            "rad",
+            "α′, flank angle of the driving half-coupling's groove [001, fig. 6]; absent: the "
+            "driving half pushes the ball circumferentially, as eq. 1 assumes. Given, the ball "
+            "climbs both flanks: F_a/F_t = tan(α′ − ρ) + tan(α − ρ)",
+            minimum=0.0,
+            maximum=math.pi / 2,
+            exclusive_maximum=True,
+            display_unit="deg",
+            symbol="α′",
+            group="balls",
+        ),
+        friction_coefficient(
+            "face_friction",
+            "μ_f, effective friction of the balls riding on the end face once disengaged "
+            "(≈ 0.002 free rolling … 0.1 sliding); gives the residual torque",
+            symbol="μ_f",
+            group="balls",
+        ),
+        Param(
+            "spring_type",
+            "1",
+            "'helical' (the paper's spring, [001, eq. 2]) or 'disc' (a stack of disc "
+            "springs to DIN EN 16983)",
+            default="helical",
+            kind="choice",
+            choices=SPRING_TYPES,
+            group="spring",
+        ),
+        Param(
+            "spring_material",
+            "1",
+            "helical spring wire: 'custom' (give shear_modulus and allowable_shear_stress) or "
+            "EN 10270-1 SH/DH, 1.4310 (EN 10270-3): G and the permissible τ = 0.5 R_m(d) "
+            "from the tables",
+            default="custom",
+            kind="choice",
+            choices=MATERIAL_CHOICES,
+            group="spring",
+        ),
+        Param(
+            "stress_correction",
+            "1",
+            "stress-correction factor of the helical spring: Wahl or Bergsträsser (EN 13906-1)",
+            default="wahl",
+            kind="choice",
+            choices=CORRECTION_CHOICES,
+            group="spring",
+        ),
+        length(
+            "spring_free_length",
+            "L0, free length of the helical spring; given, the solid length with its minimum "
+            "gap S_a and buckling are checked (EN 13906-1)",
+            minimum=1e-4,
+            maximum=2.0,
+            symbol="L0",
+            group="spring",
+        ),
+        Param(
+            "spring_seating",
+            "1",
+            "end seating of the helical spring for buckling: fixed_fixed (ν = 0.5, parallel "
+            "ground ends on nut and disk), fixed_hinged (0.7), hinged_hinged (1), "
+            "fixed_free (2)",
+            default="fixed_fixed",
+            kind="choice",
+            choices=SEATINGS,
+            group="spring",
+        ),
+        length(
+            "disc_outer_diameter",
+            "De, outer diameter of the disc springs",
+            minimum=1e-3,
+            maximum=1.0,
+            symbol="De",
+            group="disc spring",
+        ),
+        length(
+            "disc_inner_diameter",
+            "Di, inner diameter of the disc springs",
+            minimum=1e-4,
+            maximum=1.0,
+            symbol="Di",
+            group="disc spring",
+        ),
+        length(
+            "disc_thickness",
+            "t, thickness of one disc",
+            minimum=1e-5,
+            maximum=0.1,
+            symbol="t",
+            group="disc spring",
+        ),
+        length(
+            "disc_cone_height",
+            "h0, free cone height of one disc (free height t + h0); h0/t > √2 gives a "
+            "falling force",
+            minimum=1e-6,
+            maximum=0.1,
+            symbol="h0",
+            group="disc spring",
+        ),
+        count(
+            "disc_series",
+            "number of discs (or packs) in series, alternately facing; the stack deflection "
+            "is this times one disc's",
+            minimum=1,
+            maximum=200,
+            default=1,
+            group="disc spring",
+        ),
+        count(
+            "disc_parallel",
+            "number of discs nested in parallel in each pack; the force is this times one disc's",
+            minimum=1,
+            maximum=20,
+            default=1,
+            group="disc spring",
+        ),
+        friction_coefficient(
+            "disc_friction",
+            "w_M, friction factor between nested discs (0.02…0.03 lubricated), DIN EN 16983; "
+            "raises the force while the balls climb",
+            default=0.0,
+            maximum=0.2,
+            group="disc spring",
+        ),
+        positive(
+            "disc_elastic_modulus",
+            "Pa",
+            "E of the disc spring steel",
+            maximum=5e11,
+            default=206e9,
+            display_unit="MPa",
+            group="disc spring",
+        ),
+        positive(
+            "disc_yield_strength",
+            "Pa",
+            "static limit of σ_OM (the disc's yield strength, 1400…1600 MPa for C60S, "
+            "51CrV4), DIN EN 16983",
+            maximum=5e9,
+            default=DISC_YIELD_DEFAULT,
+            display_unit="MPa",
+            group="disc spring",
+        ),
+    )
+
+
+def outputs() -> tuple[Output, ...]:
+    """The as-built outputs of clutch.ball (scalars and the lift characteristic)."""
+    return (
+        Output(
+            "peak_torque",
+            "N*m",
+            "largest torque over the lift from seated to riding on the face: the clutch "
+            "disengages above it (= torque_limit at zero lift)",
+            display_unit="N*m",
+        ),
+        Output("lift_at_peak", "m", "lift at the peak torque", display_unit="mm"),
+        Output(
+            "torque_at_rim",
+            "N*m",
+            "torque when the balls reach the rim (end of the flank); below peak_torque when "
+            "the spring force falls (disc springs past their maximum)",
+            display_unit="N*m",
+        ),
+        Output(
+            "residual_torque",
+            "N*m",
+            "torque while the balls ride on the face, n μ_f F D0/2; null without face_friction",
+            display_unit="N*m",
+        ),
+        Output(
+            "total_lift",
+            "m",
+            "lift from seated to riding on the face, h + (d/2)(1 − sin α)",
+            display_unit="mm",
+        ),
+        Output("spring_force_at_peak", "N", "spring force at the peak torque"),
+        Output(
+            "spring_stress_at_peak",
+            "Pa",
+            "spring stress at the peak torque: corrected wire shear τ_k (helical) or |σ_OM| (disc)",
+            display_unit="MPa",
+        ),
+        Output("spring_force_max", "N", "largest spring force over the lift"),
+        Output(
+            "spring_stress_max",
+            "Pa",
+            "largest spring stress over the lift (every slip cycles the spring to it)",
+            display_unit="MPa",
+        ),
+        Output(
+            "permissible_stress",
+            "Pa",
+            "permissible spring stress: allowable_shear_stress, 0.5 R_m(d) of the wire "
+            "material (EN 13906-1), or the disc's yield strength for σ_OM",
+            display_unit="MPa",
+        ),
+        Output("tensile_strength", "Pa", "R_m(d) of the helical wire material", display_unit="MPa"),
+        Output(
+            "self_locking_margin",
+            "rad",
+            "α − atan f (the smaller over the two flanks); the limit explodes as it → 0",
+            display_unit="deg",
+        ),
+        Output(
+            "friction_sensitivity",
+            "N*m",
+            "dT/df, change of the torque limit per unit flank friction",
+            display_unit="N*m",
+        ),
+        Output("solid_length", "m", "L_c of the helical spring (EN 13906-1)", display_unit="mm"),
+        Output(
+            "buckling_deflection",
+            "m",
+            "s_K, deflection at which the free helical spring buckles (EN 13906-1); null: it "
+            "cannot buckle",
+            display_unit="mm",
+        ),
+        Output(
+            "natural_frequency",
+            "Hz",
+            "first surge frequency of the helical spring (EN 13906-1)",
+        ),
+        Output(
+            "disc_force_flat",
+            "N",
+            "force of the disc stack pressed flat (DIN EN 16983 closed form)",
+        ),
+        Output(
+            "flank_lift",
+            "m",
+            "h, lift at which the balls reach the rim (ball_lift, or Δ as in the paper)",
+            display_unit="mm",
+        ),
+        Output(
+            "lift",
+            "m",
+            "lift of the balls (x-axis of the characteristic)",
+            series=True,
+            display_unit="mm",
+            plot=Plot(windows=(Window("over the rim", "flank_lift", "total_lift"),)),
+        ),
+        Output(
+            "torque_curve",
+            "N*m",
+            "torque against lift, seated to riding on the face",
+            series=True,
+            x="lift",
+        ),
+        Output(
+            "spring_force_curve",
+            "N",
+            "spring force against lift",
+            series=True,
+            x="lift",
+        ),
+        Output(
+            "spring_stress_curve",
+            "Pa",
+            "spring stress against lift",
+            series=True,
+            x="lift",
+            display_unit="MPa",
+        ),
+    )
+
+
+# --------------------------------------------------------------------------
+# The spring: force and stress against its total deflection
+# --------------------------------------------------------------------------
+
+
+class Spring:
+    """Force and stress of the clutch spring against its total deflection [m]."""
+
+    def __init__(self, x: Mapping[str, Any]) -> None:
+        self.kind = x["spring_type"]
+        self.x = x
+        if self.kind == "helical":
+            material = x["spring_material"]
+            self.material = None if material == "custom" else sp.MATERIALS[material]
+            self.shear_modulus = (
+                x["shear_modulus"] if self.material is None else self.material.shear_modulus
+            )
+        else:
+            self.material = None
+            self.shear_modulus = x["shear_modulus"]
+
+    def force(self, deflection: Any) -> Any:
+        x = self.x
+        if self.kind == "helical":
+            rate = sp.helical_rate(
+                self.shear_modulus,
+                x["spring_wire_diameter"],
+                x["spring_mean_diameter"],
+                x["spring_active_coils"],
+            )
+            return np.asarray(rate) * np.asarray(deflection)
+        single = sp.disc_force(
+            np.asarray(deflection) / x["disc_series"],
+            x["disc_outer_diameter"],
+            x["disc_inner_diameter"],
+            x["disc_thickness"],
+            x["disc_cone_height"],
+            x["disc_elastic_modulus"],
+        )
+        return sp.stack_force(single, x["disc_parallel"], x["disc_friction"])
+
+    def stress(self, deflection: Any) -> Any:
+        x = self.x
+        if self.kind == "helical":
+            return sp.helical_shear_stress(
+                self.force(deflection),
+                x["spring_mean_diameter"],
+                x["spring_wire_diameter"],
+                x["stress_correction"],
+            )
+        om = sp.disc_stresses(
+            np.asarray(deflection) / x["disc_series"],
+            x["disc_outer_diameter"],
+            x["disc_inner_diameter"],
+            x["disc_thickness"],
+            x["disc_cone_height"],
+            x["disc_elastic_modulus"],
+        )["OM"]
+        return np.abs(om)
+
+    def permissible(self) -> Any:
+        """Permissible stress [Pa] (an array when the swept input is), or None."""
+        x = self.x
+        if self.kind == "disc":
+            return x["disc_yield_strength"]
+        if self.material is not None:
+            return sp.permissible_shear_stress(self.material.name, x["spring_wire_diameter"])
+        return x["allowable_shear_stress"]
+
+
+def require_spring(x: Mapping[str, Any], *, wire_needed: bool) -> None:
+    """Refuse a spring description that is incomplete or impossible (scalar inputs)."""
+    if x["spring_type"] == "disc":
+        for name in ("disc_outer_diameter", "disc_inner_diameter", "disc_thickness"):
+            if x[name] is None:
+                raise InputOutOfRange(f"spring_type = disc needs {name}", field=name)
+        if x["disc_cone_height"] is None:
+            raise InputOutOfRange(
+                "spring_type = disc needs disc_cone_height", field="disc_cone_height"
+            )
+        if x["disc_inner_diameter"] * 1.05 >= x["disc_outer_diameter"]:
+            raise InputOutOfRange(
+                f"disc_inner_diameter = {x['disc_inner_diameter'] * 1e3:g} mm is not below "
+                f"disc_outer_diameter / 1.05 = {x['disc_outer_diameter'] / 1.05 * 1e3:.4g} mm: "
+                "a ring that narrow is not a disc spring (Almen–László loses all precision)",
+                field="disc_inner_diameter",
+            )
+        return
+    for name in ("spring_mean_diameter", "spring_active_coils"):
+        if x[name] is None:
+            raise InputOutOfRange(f"a helical spring needs {name}", field=name)
+    if wire_needed and x["spring_wire_diameter"] is None:
+        raise InputOutOfRange(
+            "a helical spring needs spring_wire_diameter", field="spring_wire_diameter"
+        )
+    wire, material = x["spring_wire_diameter"], x["spring_material"]
+    if wire is not None and material != "custom":
+        sp.tensile_strength(material, wire)  # refuses a wire outside the material's table
+
+
+# --------------------------------------------------------------------------
+# The characteristic, broadcast over a swept input
+# --------------------------------------------------------------------------
+
+
+def _sharing(x: Mapping[str, Any]) -> Any:
+    if x["spring_arrangement"] == "per_ball":
+        return np.asarray(x["load_factor"]) * np.asarray(x["ball_count"])
+    return 1.0
+
+
+def lift_of(x: Mapping[str, Any], deflection: Any = None) -> Any:
+    """The flank lift h: ``ball_lift`` or, absent, the paper's Δ."""
+    if x["ball_lift"] is not None:
+        return x["ball_lift"]
+    return x["spring_deflection"] if deflection is None else deflection
+
+
+def characteristic(x: Mapping[str, Any], spring: Spring, deflection: Any = None) -> dict[str, Any]:
+    """Torque, spring force and stress against lift; arrays with the lift on the last axis."""
+    preload = np.asarray(x["spring_deflection"] if deflection is None else deflection, float)
+    h, d, alpha = np.broadcast_arrays(
+        np.asarray(lift_of(x, deflection), float),
+        np.asarray(x["ball_diameter"], float),
+        np.asarray(x["groove_angle"], float),
+    )
+    h, r, a = h[..., None], d[..., None] / 2.0, alpha[..., None]
+    u = np.linspace(0.0, 1.0, POINTS)
+    v = np.linspace(0.0, 1.0, POINTS)[1:]
+    beta_rim = a + v * (math.pi / 2.0 - a)
+    lift = np.concatenate(
+        [np.broadcast_to(u * h, np.broadcast_shapes(h.shape, u.shape)),
+         h + r * (np.sin(beta_rim) - np.sin(a))],
+        axis=-1,
+    )  # fmt: skip
+    beta = np.concatenate(
+        [np.broadcast_to(a, np.broadcast_shapes(a.shape, u.shape)), beta_rim], axis=-1
+    )
+    # a swept input (an array) gets a trailing axis so it broadcasts against the lift
+    x = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
+    spring = Spring(x)
+    total = preload[..., None] + lift
+    force = spring.force(total)
+    stress = spring.stress(total)
+    push = combined_push_factor(beta, x["flank_friction"], x["driving_groove_angle"])
+    # x's arrays already carry the trailing (lift) axis
+    torque = np.asarray(_sharing(x)) * np.asarray(x["ball_circle_diameter"]) * force / (2.0 * push)
+    peak = np.argmax(torque, axis=-1)[..., None]
+
+    def at(arr: Any, idx: Any) -> Any:
+        return np.take_along_axis(np.broadcast_to(arr, torque.shape), idx, axis=-1)[..., 0]
+
+    rim = np.full_like(peak, POINTS - 1)
+    out: dict[str, Any] = {
+        "peak_torque": at(torque, peak),
+        "lift_at_peak": at(lift, peak),
+        "torque_at_rim": at(torque, rim),
+        "total_lift": lift[..., -1],
+        "flank_lift": lift[..., POINTS - 1],
+        "spring_force_at_peak": at(force, peak),
+        "spring_stress_at_peak": at(stress, peak),
+        "spring_force_max": np.max(np.broadcast_to(force, torque.shape), axis=-1),
+        "spring_stress_max": np.max(np.broadcast_to(stress, torque.shape), axis=-1),
+        "_lift": lift,
+        "_torque": torque,
+        "_force": np.broadcast_to(force, torque.shape),
+        "_stress": np.broadcast_to(stress, torque.shape),
+    }
+    if x["face_friction"] is not None:
+        springs = x["ball_count"] if x["spring_arrangement"] == "per_ball" else 1.0
+        residual = residual_torque(
+            np.broadcast_to(force, torque.shape)[..., -1:],
+            x["ball_circle_diameter"],
+            x["face_friction"],
+            springs,
+        )
+        out["residual_torque"] = np.asarray(residual)[..., 0]
+    return out
+
+
+def margin(x: Mapping[str, Any]) -> Any:
+    """Self-locking margin α − atan f, the smaller over the inclined flanks."""
+    rho = np.arctan(x["flank_friction"])
+    m = np.asarray(x["groove_angle"]) - rho
+    if x["driving_groove_angle"] is not None:
+        m = np.minimum(m, np.asarray(x["driving_groove_angle"]) - rho)
+    return m
+
+
+def extra_values(x: Mapping[str, Any], spring: Spring, limit: Any) -> dict[str, Any]:
+    """Every as-built scalar of clutch.ball (arrays when one input is an array)."""
+    c = characteristic(x, spring)
+    values = {k: v for k, v in c.items() if not k.startswith("_")}
+    values["self_locking_margin"] = margin(x)
+    values["friction_sensitivity"] = friction_sensitivity(
+        limit, x["groove_angle"], x["flank_friction"], x["driving_groove_angle"]
+    )
+    if spring.kind == "helical":
+        d, dm, n = x["spring_wire_diameter"], x["spring_mean_diameter"], x["spring_active_coils"]
+        values["solid_length"] = sp.solid_length(d, n)
+        if spring.material is not None:
+            values["natural_frequency"] = sp.helical_natural_frequency(
+                d, dm, n, spring.shear_modulus, spring.material.density
+            )
+            if np.ndim(d) == 0:
+                values["tensile_strength"] = sp.tensile_strength(spring.material.name, d)
+        scalar = all(np.ndim(a) == 0 for a in (x["spring_free_length"], dm, values["peak_torque"]))
+        if x["spring_free_length"] is not None and scalar:
+            e_mod = (
+                spring.material.elastic_modulus if spring.material else 2.6 * spring.shear_modulus
+            )
+            s_k = sp.buckling_deflection(
+                x["spring_free_length"],
+                dm,
+                sp.SEATING_COEFFICIENTS[x["spring_seating"]],
+                spring.shear_modulus,
+                e_mod,
+            )
+            # inf: the spring cannot buckle; said as null (and in the check), never inf
+            values["buckling_deflection"] = None if math.isinf(float(s_k)) else s_k
+    else:
+        single = sp.disc_force_flat(
+            x["disc_outer_diameter"],
+            x["disc_inner_diameter"],
+            x["disc_thickness"],
+            x["disc_cone_height"],
+            x["disc_elastic_modulus"],
+        )
+        values["disc_force_flat"] = single * x["disc_parallel"]
+    allow = spring.permissible()
+    if allow is not None:
+        values["permissible_stress"] = allow
+    return values
+
+
+def series(x: Mapping[str, Any], spring: Spring) -> dict[str, list[float]]:
+    """The characteristic as series for the form's plot (scalar inputs only)."""
+    c = characteristic(x, spring)
+    return {
+        "lift": np.asarray(c["_lift"]).ravel().tolist(),
+        "torque_curve": np.asarray(c["_torque"]).ravel().tolist(),
+        "spring_force_curve": np.asarray(c["_force"]).ravel().tolist(),
+        "spring_stress_curve": np.asarray(c["_stress"]).ravel().tolist(),
+    }
+
+
+# --------------------------------------------------------------------------
+# Checks and notes (scalar inputs)
+# --------------------------------------------------------------------------
+
+
+def checks(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[Check]:
+    """The as-built checks of one scalar run."""
+    out: list[Check] = []
+    m = float(v["self_locking_margin"])
+    ok = m >= SELF_LOCKING_MARGIN
+    out.append(
+        Check(
+            "self_locking",
+            ok,
+            f"α − atan f = {m / DEG:.3g}° "
+            + ("≥" if ok else "<")
+            + f" {SELF_LOCKING_MARGIN / DEG:g}°; dT/df = {float(v['friction_sensitivity']):.4g} N·m"
+            + (
+                ""
+                if ok
+                else ": near self-locking the limit follows the friction, not the spring "
+                "(a change of f by 0.01 moves it by "
+                f"{0.01 * float(v['friction_sensitivity']):.3g} N·m); use flatter flanks "
+                "(larger α) or less flank friction"
+            ),
+        )
+    )
+    allow = spring.permissible()
+    if allow is not None:
+        allow = float(allow)
+        s = float(v["spring_stress_max"])
+        ok = s <= allow
+        what = "wire shear stress τ_k" if spring.kind == "helical" else "disc stress |σ_OM|"
+        out.append(
+            Check(
+                "spring_stress_max",
+                ok,
+                f"largest {what} over the lift {s / 1e6:.4g} MPa "
+                + ("≤" if ok else ">")
+                + f" permissible {allow / 1e6:.4g} MPa (at peak torque "
+                + f"{float(v['spring_stress_at_peak']) / 1e6:.4g} MPa)"
+                + (
+                    ""
+                    if ok
+                    else ": every slip cycles the spring to it; use a stronger spring or less lift"
+                ),
+            )
+        )
+    if spring.kind == "disc":
+        out += _disc_checks(x, v)
+    elif x["spring_free_length"] is not None:
+        out += _helical_length_checks(x, spring, v)
+    if x["face_friction"] is not None:
+        res, peak = float(v["residual_torque"]), float(v["peak_torque"])
+        ok = res <= RESIDUAL_SHARE * peak
+        out.append(
+            Check(
+                "residual_torque",
+                ok,
+                f"residual torque on the face {res:.4g} N·m "
+                + ("≤" if ok else ">")
+                + f" {RESIDUAL_SHARE:.0%} of the peak {peak:.4g} N·m"
+                + ("" if ok else ": the slipping clutch keeps dragging the load and heats up"),
+            )
+        )
+    return out
+
+
+def _disc_checks(x: Mapping[str, Any], v: Mapping[str, Any]) -> list[Check]:
+    t, h0, m = x["disc_thickness"], x["disc_cone_height"], x["disc_series"]
+    per_disc_max = (x["spring_deflection"] + float(v["total_lift"])) / m
+    out = []
+    ok = per_disc_max <= h0
+    out.append(
+        Check(
+            "disc_not_past_flat",
+            ok,
+            f"largest deflection per disc {per_disc_max * 1e3:.4g} mm "
+            + ("≤" if ok else ">")
+            + f" cone height h0 = {h0 * 1e3:.4g} mm"
+            + (
+                ""
+                if ok
+                else ": the discs would be pressed past flat; add discs in series or set less"
+            ),
+        )
+    )
+    region = sp.disc_falling_region(t, h0)
+    setting = x["spring_deflection"] / m
+    if region is None:
+        out.append(
+            Check(
+                "falling_curve",
+                False,
+                f"h0/t = {h0 / t:.3g} ≤ √2: the disc force rises over the whole lift, so the "
+                "torque does not drop after breakaway; use h0/t > √2 and set the stack past "
+                "its force maximum",
+            )
+        )
+    else:
+        s_max = region[0]
+        ok = setting + float(v["total_lift"]) / m > s_max
+        where = "at the setting" if setting >= s_max else "within the lift"
+        out.append(
+            Check(
+                "falling_curve",
+                ok,
+                (
+                    f"the discs pass their force maximum (s = {s_max * 1e3:.4g} mm per disc) "
+                    f"{where}: the torque falls from {float(v['peak_torque']):.4g} to "
+                    f"{float(v['torque_at_rim']):.4g} N·m at the rim"
+                )
+                if ok
+                else (
+                    f"the discs never reach their force maximum (s = {s_max * 1e3:.4g} mm per "
+                    f"disc; setting {setting * 1e3:.4g} mm): the torque does not fall; set the "
+                    "stack further"
+                ),
+            )
+        )
+    return out
+
+
+def _helical_length_checks(
+    x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]
+) -> list[Check]:
+    d, dm, n = x["spring_wire_diameter"], x["spring_mean_diameter"], x["spring_active_coils"]
+    l0 = x["spring_free_length"]
+    travel = x["spring_deflection"] + float(v["total_lift"])
+    shortest = l0 - travel
+    need = float(sp.solid_length(d, n) + sp.minimum_gap_sum(d, dm, n))
+    ok = shortest >= need
+    out = [
+        Check(
+            "solid_length",
+            ok,
+            f"shortest working length {shortest * 1e3:.4g} mm "
+            + ("≥" if ok else "<")
+            + f" solid length + minimum gaps L_c + S_a = {need * 1e3:.4g} mm (EN 13906-1)"
+            + (
+                ""
+                if ok
+                else ": the spring would go (nearly) solid; use a longer spring or less deflection"
+            ),
+        )
+    ]
+    s_k = v.get("buckling_deflection")
+    s_k = float(s_k) if s_k is not None else math.inf
+    ok = travel < s_k
+    out.append(
+        Check(
+            "buckling",
+            ok,
+            (
+                f"largest deflection {travel * 1e3:.4g} mm < buckling deflection "
+                f"{s_k * 1e3:.4g} mm (seating {x['spring_seating']})"
+                if math.isfinite(s_k)
+                else f"the spring cannot buckle (seating {x['spring_seating']})"
+            )
+            if ok
+            else f"largest deflection {travel * 1e3:.4g} mm ≥ buckling deflection "
+            f"{s_k * 1e3:.4g} mm: "
+            "guide the spring on a mandrel or in a sleeve, or use a shorter, fatter spring",
+        )
+    )
+    return out
+
+
+def warnings(x: Mapping[str, Any]) -> list[str]:
+    """A non-standard wire size or disc proportion is a warning (it can be made, at a price)."""
+    if x["spring_type"] == "disc":
+        out = []
+        delta = x["disc_outer_diameter"] / x["disc_inner_diameter"]
+        slender = x["disc_outer_diameter"] / x["disc_thickness"]
+        if not 1.75 <= delta <= 2.5:
+            out.append(
+                f"De/Di = {delta:.3g} is outside 1.75…2.5, the proportions of DIN EN 16983's "
+                "series, for which the Almen–László relations were checked"
+            )
+        if not 16.0 <= slender <= 40.0:
+            out.append(f"De/t = {slender:.3g} is outside DIN EN 16983's 16…40")
+        return out
+    wire = x["spring_wire_diameter"]
+    if x["spring_type"] != "helical" or wire is None:
+        return []
+    near, ok = sp.nearest_standard_wire(wire)
+    if ok:
+        return []
+    return [
+        f"spring_wire_diameter = {wire * 1e3:.4g} mm is not a preferred size of EN 10270-1; "
+        f"the nearest is {near * 1e3:g} mm"
+    ]
+
+
+def notes(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[str]:
+    """The as-built notes of one scalar run."""
+    out = []
+    if x["ball_lift"] is None:
+        out.append(
+            "ball_lift not given: the balls rise along the flank by the paper's groove depth, "
+            f"equal to the spring deflection Δ = {x['spring_deflection'] * 1e3:.4g} mm "
+            "[001, eq. 2], then over the rim by (d/2)(1 − sin α) = "
+            f"{(float(v['total_lift']) - x['spring_deflection']) * 1e3:.4g} mm"
+        )
+    out.append(
+        f"torque against lift: {float(v['torque_at_rim']):.4g} N·m when the balls reach the rim, "
+        f"peak {float(v['peak_torque']):.4g} N·m at lift {float(v['lift_at_peak']) * 1e3:.4g} mm; "
+        f"the spring then carries {float(v['spring_force_at_peak']):.4g} N "
+        f"({float(v['spring_stress_at_peak']) / 1e6:.4g} MPa), at most "
+        f"{float(v['spring_force_max']):.4g} N ({float(v['spring_stress_max']) / 1e6:.4g} MPa) "
+        "on the face. torque_limit is the zero-lift point [001, eq. 3]."
+    )
+    if x["driving_groove_angle"] is not None:
+        out.append(
+            "driving_groove_angle given: the ball climbs both flanks, F_a/F_t = "
+            "tan(α′ − ρ) + tan(α − ρ) (virtual work); equal angles halve the torque of eq. 1 "
+            "for the same spring. Over the rim only the driven groove's rim is modelled."
+        )
+    if spring.kind == "helical" and spring.material is not None:
+        out.append(
+            f"spring material {spring.material.standard}: G = {spring.shear_modulus / 1e9:g} GPa "
+            f"(overrides shear_modulus), permissible τ = 0.5 R_m(d) (EN 13906-1), compared with "
+            f"the {x['stress_correction']}-corrected stress, stricter than the standard's "
+            "static check"
+        )
+    if spring.kind == "disc":
+        out.append(
+            f"disc springs (DIN EN 16983): {x['disc_series']} in series × {x['disc_parallel']} in "
+            f"parallel, h0/t = {x['disc_cone_height'] / x['disc_thickness']:.3g}; "
+            "spring_deflection "
+            "is the stack's preload deflection; the helical-spring outputs are null"
+        )
+    if x["face_friction"] is None:
+        out.append("give face_friction for the residual torque while the balls ride on the face")
+    return out
+
+
+def solve_setting(
+    x: Mapping[str, Any], spring: Spring, target: float, upper: float
+) -> float | None:
+    """Nut setting Δ whose peak torque is ``target``; None where none in [0, upper] gives it."""
+
+    def peak(delta: float) -> float:
+        return float(characteristic(x, spring, delta)["peak_torque"]) - target
+
+    lo_val = peak(0.0)
+    if lo_val >= 0.0:
+        return 0.0 if lo_val == 0.0 else None
+    grid = np.linspace(0.0, upper, 65)
+    prev = 0.0
+    for g in grid[1:]:
+        if peak(float(g)) >= 0.0:
+            return float(brentq(peak, prev, float(g), xtol=1e-12, rtol=1e-12))
+        prev = float(g)
+    return None
+
+
+Candidate = Callable[[float], Mapping[str, Any]]
+
+
+# --------------------------------------------------------------------------
+# The inverse on the as-built inputs (clutch.ball_setting)
+# --------------------------------------------------------------------------
+
+
+def setting_outputs() -> tuple[Output, ...]:
+    """The as-built outputs of clutch.ball_setting."""
+    return (
+        Output(
+            "required_peak_setting",
+            "m",
+            "nut setting (spring deflection with the balls seated) whose PEAK torque over the "
+            "lift is the target, with the given spring; null where none reaches it",
+            display_unit="mm",
+        ),
+        Output(
+            "peak_setting_stress_max",
+            "Pa",
+            "largest spring stress over the lift at required_peak_setting",
+            display_unit="MPa",
+        ),
+        Output(
+            "suggested_wire_diameter",
+            "m",
+            "smallest preferred wire (EN 10270-1 sizes, index 4…12, same D and i_p) that "
+            "reaches the target peak torque within the permissible stress",
+            display_unit="mm",
+        ),
+        Output(
+            "suggested_wire_setting",
+            "m",
+            "nut setting of the suggested wire for the target peak torque",
+            display_unit="mm",
+        ),
+        Output(
+            "suggested_disc_parallel",
+            "1",
+            "fewest discs in parallel per pack (same discs and series count) that reach the "
+            "target peak torque within σ_OM ≤ yield and without passing flat",
+            kind="int",
+        ),
+        Output(
+            "suggested_disc_setting",
+            "m",
+            "stack setting with the suggested number of discs in parallel",
+            display_unit="mm",
+        ),
+    )
+
+
+def _upper_setting(x: Mapping[str, Any], spring: Spring, force: float) -> float:
+    if spring.kind == "disc":
+        return float(x["disc_series"] * x["disc_cone_height"])
+    rate = float(spring.force(1.0))
+    return max(force / rate, 1e-9) * 1.000001
+
+
+def _peak_setting(
+    x: Mapping[str, Any], spring: Spring, target: float, force: float
+) -> tuple[float, float] | None:
+    """(setting, largest stress over the lift) for the target peak torque, or None."""
+    delta = solve_setting(x, spring, target, _upper_setting(x, spring, force))
+    if delta is None:
+        return None
+    c = characteristic(x, spring, delta)
+    if spring.kind == "disc":
+        per_disc = (delta + float(c["total_lift"])) / x["disc_series"]
+        if per_disc > x["disc_cone_height"]:
+            return None  # reached only past flat
+    return delta, float(c["spring_stress_max"])
+
+
+def setting_values(x: Mapping[str, Any], force: float) -> tuple[dict[str, Any], list[str]]:
+    """As-built outputs of the inverse and the notes that explain them (scalar inputs)."""
+    target = float(x["target_torque"])
+    values: dict[str, Any] = {}
+    notes: list[str] = []
+    helical = x["spring_type"] == "helical"
+    if not helical or x["spring_wire_diameter"] is not None:
+        spring = Spring(x)
+        found = _peak_setting(x, spring, target, force)
+        if found is None:
+            notes.append(
+                "required_peak_setting is null: no setting of this spring gives the target as "
+                "its peak torque (the lift alone overshoots it, or a disc stack would pass flat)"
+            )
+        else:
+            values["required_peak_setting"], values["peak_setting_stress_max"] = found
+    if helical and x["spring_mean_diameter"] is not None:
+        values.update(_suggest_wire(x, target, force, notes))
+    if not helical:
+        values.update(_suggest_parallel(x, target, force, notes))
+    return values, notes
+
+
+def _suggest_wire(
+    x: Mapping[str, Any], target: float, force: float, notes: list[str]
+) -> dict[str, Any]:
+    if x["spring_material"] == "custom" and x["allowable_shear_stress"] is None:
+        notes.append("give spring_material or allowable_shear_stress for a suggested wire diameter")
+        return {}
+    dm = x["spring_mean_diameter"]
+    for d_mm in sp.STANDARD_WIRE_DIAMETERS:
+        d = d_mm * 1e-3
+        if not 4.0 <= dm / d <= 12.0:
+            continue
+        trial = {**x, "spring_wire_diameter": d}
+        try:
+            spring = Spring(trial)
+            allow = spring.permissible()
+            allow = None if allow is None else float(allow)
+        except InputOutOfRange:
+            continue  # outside the material's table
+        found = _peak_setting(trial, spring, target, force)
+        if found is None or allow is None or found[1] > allow:
+            continue
+        if x["spring_free_length"] is not None:
+            travel = found[0] + float(characteristic(trial, spring, found[0])["total_lift"])
+            room = float(sp.solid_length(d, x["spring_active_coils"]))
+            room += float(sp.minimum_gap_sum(d, dm, x["spring_active_coils"]))
+            if x["spring_free_length"] - travel < room:
+                continue  # would go solid
+        else:
+            notes.append(
+                "spring_free_length not given: the suggested wire's setting is not limited by "
+                "its solid length"
+            )
+        notes.append(
+            f"suggested wire {d_mm:g} mm: the thinnest preferred size that reaches "
+            f"{target:.4g} N·m at its peak with {found[1] / 1e6:.4g} MPa ≤ {allow / 1e6:.4g} MPa"
+        )
+        return {"suggested_wire_diameter": d, "suggested_wire_setting": found[0]}
+    notes.append("no preferred wire with spring index 4…12 reaches the target within its stress")
+    return {}
+
+
+def _suggest_parallel(
+    x: Mapping[str, Any], target: float, force: float, notes: list[str]
+) -> dict[str, Any]:
+    for n in range(1, 9):
+        trial = {**x, "disc_parallel": n}
+        spring = Spring(trial)
+        found = _peak_setting(trial, spring, target, force)
+        if found is not None and found[1] <= float(x["disc_yield_strength"]):
+            return {"suggested_disc_parallel": n, "suggested_disc_setting": found[0]}
+    notes.append("no stack of up to 8 of these discs in parallel reaches the target")
+    return {}
+
+
+def disc_breakaway_setting(x: Mapping[str, Any], force: float) -> float | None:
+    """Stack setting whose force is ``force`` on the rising branch; None if none gives it."""
+    spring = Spring(x)
+    region = sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])
+    top = region[0] if region is not None else x["disc_cone_height"]
+    upper = float(x["disc_series"] * min(top, x["disc_cone_height"]))
+
+    def excess(delta: float) -> float:
+        return float(spring.force(delta)) - force
+
+    if excess(upper) < 0.0:
+        return None
+    return float(brentq(excess, 0.0, upper, xtol=1e-13, rtol=1e-12))
+
+
+# --------------------------------------------------------------------------
+# Sizing from the drive (clutch.ball_setting)
+# --------------------------------------------------------------------------
+
+
+def sizing_params() -> tuple[Param, ...]:
+    """Inputs that give the required slip torque from the drive."""
+    return (
+        positive(
+            "drive_torque",
+            "N*m",
+            "rated (or peak working) torque of the drive; or give drive_power and drive_speed",
+            maximum=1e6,
+            display_unit="N*m",
+            group="drive",
+        ),
+        positive("drive_power", "W", "rated power P of the drive", maximum=1e7, group="drive"),
+        positive(
+            "drive_speed",
+            "rad/s",
+            "speed ω of the clutch's shaft at rated power",
+            maximum=1e5,
+            display_unit="rpm",
+            group="drive",
+        ),
+        Param(
+            "service_factor",
+            "1",
+            "K on the rated torque, 1.5 (smooth) … 3 (shocks) as torque-limiter makers advise",
+            default=2.0,
+            minimum=1.0,
+            maximum=10.0,
+            recommended=RECOMMENDED_SERVICE_FACTOR,
+            group="drive",
+        ),
+        positive(
+            "drive_start_torque",
+            "N*m",
+            "peak torque of the motor while starting (e.g. its breakdown torque)",
+            maximum=1e6,
+            display_unit="N*m",
+            group="drive",
+        ),
+        positive(
+            "drive_inertia",
+            "kg*m^2",
+            "J_A, inertia on the driving side of the clutch",
+            maximum=1e4,
+            group="drive",
+        ),
+        positive(
+            "load_inertia",
+            "kg*m^2",
+            "J_L, inertia on the driven side, referred to the clutch's speed",
+            maximum=1e4,
+            group="drive",
+        ),
+    )
+
+
+def sizing_outputs() -> tuple[Output, ...]:
+    """Outputs of the sizing from the drive."""
+    return (
+        Output(
+            "rated_drive_torque",
+            "N*m",
+            "T_N: drive_torque, or P/ω",
+            display_unit="N*m",
+        ),
+        Output(
+            "start_torque",
+            "N*m",
+            "T_a = T_start J_L/(J_A + J_L): what the clutch carries while the motor accelerates "
+            "the load",
+            display_unit="N*m",
+        ),
+        Output(
+            "required_slip_torque",
+            "N*m",
+            "max(K T_N, T_a); the target torque when target_torque is not given",
+            display_unit="N*m",
+        ),
+    )
+
+
+def sizing(x: Mapping[str, Any]) -> dict[str, Any]:
+    """Rated, start and required slip torque from the drive inputs; {} without a drive."""
+    if x["drive_torque"] is not None:
+        rated = float(x["drive_torque"])
+    elif x["drive_power"] is not None and x["drive_speed"] is not None:
+        rated = float(cl_rated_torque(x["drive_power"], x["drive_speed"]))
+    else:
+        return {}
+    out: dict[str, Any] = {"rated_drive_torque": rated}
+    start = 0.0
+    if None not in (x["drive_start_torque"], x["drive_inertia"], x["load_inertia"]):
+        start = float(
+            cl_acceleration_torque(x["drive_start_torque"], x["drive_inertia"], x["load_inertia"])
+        )
+        out["start_torque"] = start
+    out["required_slip_torque"] = float(cl_required_slip_torque(rated, x["service_factor"], start))
+    return out

@@ -1,0 +1,27 @@
+"""``GET /api/v1/fasteners``: the fastener catalogue the form's pickers read (issue 15).
+
+The data are the engine's (:func:`engine.fasteners.catalogue`, SI units); this
+route only serves them.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from typing import Any
+
+from fastapi import APIRouter
+
+from engine.fasteners import catalogue
+
+router = APIRouter(prefix="/api/v1", tags=["fasteners"])
+
+
+@lru_cache(maxsize=1)
+def _catalogue() -> dict[str, Any]:
+    return catalogue()
+
+
+@router.get("/fasteners", summary="Threads, grades, heads, nuts, washers and materials (SI)")
+def fasteners() -> dict[str, Any]:
+    """Every catalogue entry a thread designation, grade or material input accepts."""
+    return _catalogue()

@@ -1,0 +1,291 @@
+"""clutch.ball and clutch.ball_setting as built: lift characteristic, springs, checks, inverse.
+
+Hand-computed values and limits: zero lift and α′ → 0 give the paper's results exactly,
+the peak-force stress of the paper's case, a 30 mm preloaded ordinary spring, a
+disc-spring clutch in the falling part of its curve.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+import engine
+from engine import clutch as cl
+from engine import springs as sp
+from engine.models.clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
+
+DEG = math.pi / 180
+PAPER = dict(BALL_CLUTCH.examples[0])
+C = 8e10 * 0.004**4 / (8 * 0.045**3 * 5)  # paper spring rate, 5618.66 N/m
+TODAY = 0.05 * C * 0.004 / 2  # today's torque limit, 0.5618656 N·m
+
+
+def run(spec, base=None, **kw):
+    return engine.run(spec, {**(base or {}), **kw})
+
+
+def checks(result):
+    return {c.name: c for c in result.checks}
+
+
+def test_paper_case_stress_at_the_peak_force():
+    r = run(BALL_CLUTCH, PAPER)
+    v = r.results
+    assert v["torque_limit"] == pytest.approx(TODAY, rel=1e-12)  # unchanged
+    # the ball climbs the groove depth Δ = 4 mm: the spring reaches c (Δ + Δ)
+    assert v["spring_force_at_peak"] == pytest.approx(2 * C * 0.004, rel=1e-12)
+    assert v["peak_torque"] == pytest.approx(2 * TODAY, rel=1e-12)
+    assert v["lift_at_peak"] == pytest.approx(0.004, rel=1e-12)
+    kw = (4 * 11.25 - 1) / (4 * 11.25 - 4) + 0.615 / 11.25
+    tau_peak = 8 * 2 * C * 0.004 * 0.045 * kw / (math.pi * 0.004**3)
+    assert v["spring_stress_at_peak"] == pytest.approx(tau_peak, rel=1e-12)
+    assert tau_peak / 1e6 == pytest.approx(90.77, abs=0.005)  # vs 45.38 MPa at the setting
+    assert v["spring_stress_at_peak"] == pytest.approx(2 * v["spring_shear_stress"], rel=1e-12)
+    # over the rim the ball rises (d/2)(1 − sin 45°) = 1.4645 mm more: the spring's maximum
+    rim = 0.005 * (1 - math.sin(45 * DEG))
+    assert v["total_lift"] == pytest.approx(0.004 + rim, rel=1e-12)
+    assert v["spring_force_max"] == pytest.approx(C * (0.008 + rim), rel=1e-12)
+    assert v["spring_stress_max"] / 1e6 == pytest.approx(107.39, abs=0.01)
+    assert set(r.series) == {"lift", "torque_curve", "spring_force_curve", "spring_stress_curve"}
+    # the torque is 0 (f = 0) when the balls ride on the face
+    assert r.series["torque_curve"][-1] == pytest.approx(0.0, abs=1e-12)
+
+
+def test_zero_lift_gives_todays_torque_limit_exactly():
+    for f in (0.0, 0.1):
+        v = run(BALL_CLUTCH, PAPER, ball_lift=0.0, flank_friction=f).results
+        assert v["peak_torque"] == v["torque_limit"]
+        assert v["spring_force_at_peak"] == v["spring_force"]
+    assert run(BALL_CLUTCH, PAPER, ball_lift=0.0).results["torque_limit"] == pytest.approx(
+        TODAY, rel=1e-12
+    )
+
+
+def test_driving_flank_angle_limits():
+    # a driving wall parallel to the axis, no friction: today's eq. 1 exactly
+    v = run(BALL_CLUTCH, PAPER, driving_groove_angle=0.0).results
+    assert v["torque_limit"] == pytest.approx(TODAY, rel=1e-12)
+    # equal inclined flanks: the ball climbs both, twice the push, half the torque
+    v = run(BALL_CLUTCH, PAPER, driving_groove_angle=45 * DEG).results
+    assert v["torque_limit"] == pytest.approx(TODAY / 2, rel=1e-12)
+    # α′ = 30°, α″ = 60°: push tan 30° + tan 60° = 4/√3
+    v = run(BALL_CLUTCH, {**PAPER, "groove_angle": 60 * DEG}, driving_groove_angle=30 * DEG)
+    assert v.results["torque_limit"] == pytest.approx(
+        0.05 * C * 0.004 / 2 / (4 / math.sqrt(3)), rel=1e-12
+    )
+
+
+def test_self_locking_check_and_sensitivity():
+    locked = run(BALL_CLUTCH, {**PAPER, "groove_angle": 30 * DEG}, flank_friction=0.577)
+    c = checks(locked)["self_locking"]
+    assert not c.ok and "friction" in c.detail
+    assert locked.results["self_locking_margin"] == pytest.approx(30 * DEG - math.atan(0.577))
+    fine = run(BALL_CLUTCH, PAPER, flank_friction=0.1)
+    assert checks(fine)["self_locking"].ok
+    # dT/df against a central difference of the torque limit
+    h = 1e-6
+    up = run(BALL_CLUTCH, PAPER, flank_friction=0.1 + h).results["torque_limit"]
+    down = run(BALL_CLUTCH, PAPER, flank_friction=0.1 - h).results["torque_limit"]
+    assert fine.results["friction_sensitivity"] == pytest.approx((up - down) / (2 * h), rel=1e-6)
+
+
+ORDINARY = dict(
+    ball_circle_diameter=0.05,
+    ball_count=4,
+    ball_diameter=0.01,
+    groove_angle=45 * DEG,
+    flank_friction=0.1,
+    face_friction=0.01,
+    spring_wire_diameter=0.004,
+    spring_mean_diameter=0.032,
+    spring_active_coils=8.0,
+    spring_free_length=0.090,
+    spring_deflection=0.030,
+    ball_lift=0.002,
+    spring_material="EN10270-1-DH",
+)
+
+
+def test_an_ordinary_30_mm_preloaded_spring_passes():
+    r = run(BALL_CLUTCH, ORDINARY)
+    assert all(c.ok for c in r.checks), [c for c in r.checks if not c.ok]
+    v = r.results
+    rate = 81.5e9 * 0.004**4 / (8 * 0.032**3 * 8)
+    assert v["spring_force"] == pytest.approx(rate * 0.030, rel=1e-12)
+    assert v["permissible_stress"] == 870e6  # 0.5 × 1740 MPa, EN 10270-1 at 4 mm
+    assert v["tensile_strength"] == 1740e6
+    assert v["solid_length"] == pytest.approx(0.040)  # (8 + 2) × 4 mm
+    assert v["buckling_deflection"] is None  # fixed ends, L0/D = 2.8: cannot buckle
+    # peak at the rim: force c (30 + 2) mm; tan(45° − atan 0.1) = 0.81818
+    assert v["peak_torque"] == pytest.approx(0.05 * rate * 0.032 / (2 * 0.8181818181818), rel=1e-9)
+    assert v["residual_torque"] == pytest.approx(
+        0.01 * rate * (0.032 + 0.005 * (1 - math.sin(45 * DEG))) * 0.025, rel=1e-12
+    )
+    assert not r.warnings
+
+
+def test_helical_spring_checks_fail_where_they_should():
+    slender = run(
+        BALL_CLUTCH, **{**ORDINARY, "spring_free_length": 0.30, "spring_seating": "fixed_free"}
+    )
+    assert not checks(slender)["buckling"].ok
+    short = run(BALL_CLUTCH, {**ORDINARY, "spring_free_length": 0.075})
+    assert not checks(short)["solid_length"].ok
+    weak = run(BALL_CLUTCH, {**ORDINARY, "spring_material": "1.4310", "spring_deflection": 0.06})
+    assert not checks(weak)["spring_stress_max"].ok
+    odd = run(BALL_CLUTCH, {**ORDINARY, "spring_wire_diameter": 0.0041})
+    assert any("4.25 mm" not in w and "not a preferred size" in w for w in odd.warnings)
+    # Bergsträsser's factor gives a (slightly) lower stress than Wahl's
+    b = run(BALL_CLUTCH, ORDINARY, stress_correction="bergstrasser").results
+    w = run(BALL_CLUTCH, ORDINARY).results
+    assert 0.985 < b["spring_stress_max"] / w["spring_stress_max"] < 1.0
+
+
+DISC = dict(
+    ball_circle_diameter=0.05,
+    ball_count=6,
+    ball_diameter=0.005,
+    groove_angle=45 * DEG,
+    flank_friction=0.1,
+    face_friction=0.01,
+    spring_type="disc",
+    disc_outer_diameter=0.040,
+    disc_inner_diameter=0.0204,
+    disc_thickness=0.001,
+    disc_cone_height=0.002,
+    disc_series=2,
+    spring_deflection=0.0024,
+    ball_lift=0.0004,
+)
+
+
+def test_disc_spring_clutch_falls_after_breakaway():
+    r = run(BALL_CLUTCH, DISC)
+    v = r.results
+    assert all(c.ok for c in r.checks), [c for c in r.checks if not c.ok]
+    # setting 1.2 mm per disc, past the force maximum at 2 − √6/3 = 1.1835 mm
+    single = sp.disc_force(0.0012, 0.040, 0.0204, 0.001, 0.002)
+    assert v["spring_force"] == pytest.approx(single, rel=1e-12)
+    assert v["torque_limit"] == pytest.approx(
+        0.05 * single / (2 * math.tan(45 * DEG - math.atan(0.1))), rel=1e-12
+    )
+    assert v["peak_torque"] == v["torque_limit"] and v["lift_at_peak"] == 0.0
+    flank = np.asarray(r.series["torque_curve"][:41])
+    assert np.all(np.diff(flank) < 0)  # falls all along the flank
+    assert v["torque_at_rim"] == pytest.approx(flank[-1], rel=1e-12)
+    assert v["torque_at_rim"] < v["peak_torque"]
+    assert v.get("spring_index") is None and v.get("spring_shear_stress") is None
+    assert v["disc_force_flat"] == pytest.approx(
+        sp.disc_force_flat(0.040, 0.0204, 0.001, 0.002), rel=1e-12
+    )
+    # a rising disc (h0/t = 1) fails the falling-curve check; pressing past flat fails too
+    rising = run(BALL_CLUTCH, {**DISC, "disc_cone_height": 0.001, "spring_deflection": 0.001})
+    assert not checks(rising)["falling_curve"].ok
+    flat = run(BALL_CLUTCH, {**DISC, "disc_series": 1, "spring_deflection": 0.0012})
+    assert not checks(flat)["disc_not_past_flat"].ok
+
+
+def test_setting_for_a_target_peak_torque_round_trips():
+    setting = run(
+        BALL_CLUTCH_SETTING,
+        **{k: v for k, v in ORDINARY.items() if k != "spring_deflection"},
+        target_torque=8.0,
+    )
+    v = setting.results
+    back = run(BALL_CLUTCH, {**ORDINARY, "spring_deflection": v["required_peak_setting"]})
+    assert back.results["peak_torque"] == pytest.approx(8.0, rel=1e-9)
+    assert v["peak_setting_stress_max"] == pytest.approx(
+        back.results["spring_stress_max"], rel=1e-9
+    )
+    # the suggested wire is a preferred size that reaches the target within 0.5 R_m
+    d = v["suggested_wire_diameter"]
+    assert sp.nearest_standard_wire(d)[1]
+    trial = {
+        **ORDINARY,
+        "spring_wire_diameter": d,
+        "spring_deflection": v["suggested_wire_setting"],
+    }
+    res = run(BALL_CLUTCH, **trial).results
+    assert res["peak_torque"] == pytest.approx(8.0, rel=1e-9)
+    assert res["spring_stress_max"] <= res["permissible_stress"]
+    # the next thinner preferred wire does not
+    thinner = sp.STANDARD_WIRE_DIAMETERS[sp.STANDARD_WIRE_DIAMETERS.index(round(d * 1e3, 2)) - 1]
+    if 0.032 / (thinner * 1e-3) <= 12:
+        s2 = run(
+            BALL_CLUTCH_SETTING,
+            {k: v for k, v in ORDINARY.items() if k != "spring_deflection"},
+            spring_wire_diameter=thinner * 1e-3,
+            target_torque=8.0,
+        ).results
+        too_weak = s2["peak_setting_stress_max"] > 0.5 * sp.tensile_strength(
+            "EN10270-1-DH", thinner * 1e-3
+        )
+        d2 = thinner * 1e-3
+        travel = s2["required_peak_setting"] + 0.002 + 0.005 * (1 - math.sin(45 * DEG))
+        room = sp.solid_length(d2, 8.0) + sp.minimum_gap_sum(d2, 0.032, 8.0)
+        assert too_weak or 0.090 - travel < room  # over-stressed, or it would go solid
+
+
+def test_setting_without_lift_keeps_todays_numbers():
+    ex = dict(BALL_CLUTCH_SETTING.examples[0])
+    v = run(BALL_CLUTCH_SETTING, **ex).results
+    # today's: Δ = 8 F D³ i_p/(G d0⁴) with F = 2 T tan α / D0 = 20 N
+    assert v["required_spring_force"] == pytest.approx(20.0, rel=1e-12)
+    assert v["required_deflection"] == pytest.approx(20.0 / C, rel=1e-12)
+    # the peak setting with the paper's lift (= Δ): the spring reaches 2cΔ at the rim
+    assert v["required_peak_setting"] == pytest.approx(10.0 / C, rel=1e-9)
+
+
+def test_disc_setting_and_suggested_pack():
+    base = {k: v for k, v in DISC.items() if k != "spring_deflection"}
+    v = run(BALL_CLUTCH_SETTING, **base, target_torque=60.0).results
+    back = run(BALL_CLUTCH, {**DISC, "spring_deflection": v["required_deflection"]}).results
+    assert back["torque_limit"] == pytest.approx(60.0, rel=1e-9)
+    peak = run(BALL_CLUTCH, {**DISC, "spring_deflection": v["required_peak_setting"]})
+    assert peak.results["peak_torque"] == pytest.approx(60.0, rel=1e-9)
+    assert v["suggested_disc_parallel"] == 1
+    more = run(BALL_CLUTCH_SETTING, **base, target_torque=100.0).results
+    assert more["suggested_disc_parallel"] == 2
+    pack = run(
+        BALL_CLUTCH,
+        **{**DISC, "disc_parallel": 2, "spring_deflection": more["suggested_disc_setting"]},
+    ).results
+    assert pack["peak_torque"] == pytest.approx(100.0, rel=1e-9)
+
+
+def test_sizing_from_the_drive():
+    # 1.5 kW at 1500 rpm: 9.549 N·m; service factor 2
+    tn = cl.rated_torque(1500.0, 1500 * math.pi / 30)
+    assert tn == pytest.approx(9.5493, rel=1e-4)
+    # a motor of 2.5 T_N starting a load of twice its inertia: 2/3 of it through the coupling
+    ta = cl.acceleration_torque(2.5 * tn, 0.01, 0.02)
+    assert ta == pytest.approx(2.5 * tn * 2 / 3, rel=1e-12)
+    # 2 T_N = 19.1 N·m covers the start (15.9 N·m); with factor 1.5 the start governs
+    assert cl.required_slip_torque(tn, 2.0, ta) == pytest.approx(2 * tn)
+    assert cl.required_slip_torque(tn, 1.5, ta) == pytest.approx(ta)
+    assert cl.required_slip_torque(tn, 2.0, 0.0) == pytest.approx(2 * tn)
+    # a load torque shares by the other inertia: T_L J_A/(J_A + J_L)
+    assert cl.acceleration_torque(0.0, 0.01, 0.03, 4.0) == pytest.approx(1.0)
+
+
+def test_nutrunner_coupling_1_gets_its_slip_torque():
+    from engine.models.nutrunner import NUTRUNNER_DRIVE
+
+    ex = dict(NUTRUNNER_DRIVE.examples[0])
+    v = engine.run(NUTRUNNER_DRIVE, ex).results
+    # K P/ω = 2 × 1100 W / 146.6 rad/s = 15.006 N·m
+    assert v["coupling_slip_torque"] == pytest.approx(
+        2.0 * ex["motor_power"] / ex["motor_speed"], rel=1e-12
+    )
+    k3 = engine.run(NUTRUNNER_DRIVE, {**ex, "coupling_service_factor": 3.0}).results
+    assert k3["coupling_slip_torque"] == pytest.approx(1.5 * v["coupling_slip_torque"])
+    # a motor with a large breakdown torque: the start through the coupling governs
+    strong = engine.run(
+        NUTRUNNER_DRIVE, {**ex, "breakdown_torque": 200.0, "rotor_inertia": 1e-3}
+    ).results
+    j_load = v["equivalent_inertia"] - 2 * v["coupling_energy"] / ex["motor_speed"] ** 2
+    j_drive = 1e-3 + 2 * v["coupling_energy"] / ex["motor_speed"] ** 2
+    assert strong["coupling_slip_torque"] == pytest.approx(
+        max(200.0 * j_load / (j_drive + j_load), v["coupling_slip_torque"]), rel=1e-9
+    )
