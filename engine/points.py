@@ -39,6 +39,7 @@ def rung_estimates(
     n: int,
     which: Sequence[int] | None = None,
     point: Callable[[int], Mapping[str, Any]] | None = None,
+    refused: np.ndarray | None = None,
 ) -> dict[int, np.ndarray | None] | None:
     """Each rung's a-priori error estimate at the ``n`` points of ``x``, as arrays.
 
@@ -47,18 +48,21 @@ def rung_estimates(
     None or non-finite. Each estimate is called once with the arrays; if one cannot
     take arrays (TypeError, ValueError, ArithmeticError), it is called per point
     with ``point(j)`` (the scalar inputs of point ``j``) when given, else the
-    whole answer is None.
+    whole answer is None. With ``point``, an estimate that refuses the arrays
+    (EngineError) is also called per point; a point it refuses is NaN there and
+    marked True in ``refused`` (the caller runs it alone, to report why).
     """
+    fails = _ESTIMATE_FAILS if point is None else (*_ESTIMATE_FAILS, EngineError)
     out: dict[int, np.ndarray | None] = {}
     for i in range(len(spec.rungs)) if which is None else which:
         rung = spec.rungs[i]
         try:
             with np.errstate(all="ignore"):
                 est = rung.estimate(x)
-        except _ESTIMATE_FAILS:
+        except fails:
             if point is None:
                 return None
-            values = [rung.estimate(point(j)) for j in range(n)]
+            values = [_estimate_at(rung.estimate, point, j, refused) for j in range(n)]
             if all(v is None for v in values):
                 out[i] = None
                 continue
@@ -71,6 +75,20 @@ def rung_estimates(
         arr[~np.isfinite(arr)] = np.nan
         out[i] = arr
     return out
+
+
+def _estimate_at(
+    estimate: Callable[[Mapping[str, Any]], Any],
+    point: Callable[[int], Mapping[str, Any]],
+    j: int,
+    refused: np.ndarray | None,
+) -> Any:
+    try:
+        return estimate(point(j))
+    except EngineError:
+        if refused is not None:
+            refused[j] = True
+        return None
 
 
 def auto_index(

@@ -327,18 +327,23 @@ def sweep(
     tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
     asked = _fidelity(spec, fidelity, tolerance)
     notes: list[str] = []
+    refused = np.zeros(n, dtype=bool)  # points an estimate refuses: run alone, to say why
     if not (math.isfinite(tol) and 0.0 < tol < 1.0):
         raise InputOutOfRange(
             f"tolerance = {tol:g} is not allowed: must be > 0 and < 1", field="tolerance"
         )
     if asked == "auto":
-        estimates = points.rung_estimates(spec, x, n, point=lambda j: points.at(x, n, j))
+        estimates = points.rung_estimates(
+            spec, x, n, point=lambda j: points.at(x, n, j), refused=refused
+        )
         assert estimates is not None
         index = points.auto_index(spec, estimates, n, tol)
     else:
         choose_rung(spec, first, asked, tol)  # refuses an unknown rung name
         k = spec.rung_names.index(asked)
-        estimates = points.rung_estimates(spec, x, n, [k], point=lambda j: points.at(x, n, j))
+        estimates = points.rung_estimates(
+            spec, x, n, [k], point=lambda j: points.at(x, n, j), refused=refused
+        )
         assert estimates is not None
         index = np.full(n, k, dtype=np.int64)
     known = [o.name for o in spec.outputs if not o.series]
@@ -348,10 +353,10 @@ def sweep(
     computed: list[str] = []
     rungs = np.full(n, None, dtype=object)
     errors = np.full(n, np.nan)
-    loop = np.zeros(n, dtype=bool)
+    loop = refused.copy()
     bad_total = 0
     for k, rung_name in enumerate(spec.rung_names):
-        sel = index == k
+        sel = (index == k) & ~refused
         if not sel.any():
             continue
         m = int(sel.sum())
@@ -414,7 +419,7 @@ def sweep(
             point = run(
                 spec,
                 {**base, vary: value},
-                fidelity=spec.rung_names[int(index[j])],
+                fidelity=asked if refused[j] else spec.rung_names[int(index[j])],
                 tolerance=tolerance,
                 outputs=wanted,
                 budget_s=remaining,

@@ -250,3 +250,24 @@ def test_sweep_results_are_plain_python_lists_with_null_where_not_finite():
     assert type(energy) is list and energy[1] is None
     assert all(type(v) is float for v in (energy[0], energy[2]))
     assert s.rungs == ["exact", None, "exact"] and s.error_estimates == [1e-15, None, 1e-15]
+
+
+def test_a_point_whose_estimate_refuses_is_null_with_the_reason_and_the_rest_computed():
+    def picky(x):
+        d = x["diameter"]
+        if np.ndim(d):
+            raise InputOutOfRange("diameter too big for the estimate", field="diameter")
+        if d > 0.4:
+            raise InputOutOfRange("diameter too big for the estimate", field="diameter")
+        return 0.001
+
+    toy = dataclasses.replace(
+        TOY,
+        rungs=(Rung("rough", "off", picky), Rung("exact", "", fixed_error(0))),
+        vector_rungs=("rough", "exact"),
+    )
+    s = engine.sweep(toy, BASE, "diameter", [0.1, 0.5, 0.2], outputs=["energy"])
+    assert s.rungs == ["rough", None, "rough"] and s.results["energy"][1] is None
+    # the toy's array path ignores the rung: the exact energy at the computed points
+    assert s.results["energy"][::2] == pytest.approx([0.5 * d**2 / 8 * 1e4 for d in (0.1, 0.2)])
+    assert any(n.startswith("diameter = 0.5: diameter too big") for n in s.notes)
