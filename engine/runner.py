@@ -152,17 +152,10 @@ def _fallback(
 def _wanted(spec: ModelSpec, asked: set[str], *, named: bool, series: bool) -> set[str]:
     """The outputs to compute: model only what the scene requires (issue 21).
 
-    Every scalar output when none is named; series only when named (with the x
-    series each is plotted against) or when ``series`` asks for all of them.
+    Every scalar output when none is named; series only when named or when
+    ``series`` asks for all of them.
     """
-    wanted = set(asked)
-    if not named:
-        wanted = {o.name for o in spec.outputs if not o.series}
-    by_name = {o.name: o for o in spec.outputs}
-    for name in list(wanted):
-        o = by_name[name]
-        if o.series and o.x is not None:
-            wanted.add(o.x)
+    wanted = set(asked) if named else {o.name for o in spec.outputs if not o.series}
     if series:
         wanted |= {o.name for o in spec.outputs if o.series}
     return wanted
@@ -187,7 +180,7 @@ def run(
 
     ``outputs`` limits the work to the named outputs and series (every scalar
     output when None). Series are computed only when asked for: named in
-    ``outputs`` (with the series each is plotted against), or all of them with
+    ``outputs``, or all of them with
     ``series=True``. Non-finite values never leave: they become None with a note.
     ``budget_s`` and ``max_steps`` reach the model as ``ctx.deadline`` and
     ``ctx.max_steps``; a model past either raises BudgetExceeded.

@@ -226,7 +226,7 @@ def request_model(spec: ModelSpec) -> type[BaseModel]:
                 default=None,
                 max_length=len(spec.outputs),
                 description="compute only these outputs and series (every scalar output "
-                "when absent; a named series brings the series it is plotted against)",
+                "when absent)",
             ),
         ),
         series=(

@@ -45,7 +45,7 @@ def test_a_sweep_does_not_run_the_points_one_by_one():
     assert s.results["impact_torque"][7] == ref.results["impact_torque"]
 
 
-def test_series_only_when_asked_and_a_named_curve_brings_its_time_axis():
+def test_series_only_when_asked_for_or_named():
     from engine.models.nutrunner import EXAMPLE_INDUCTION_MOTOR
 
     plain = engine.run(NUTRUNNER_DRIVE, EXAMPLE_INDUCTION_MOTOR, fidelity="motor_curve")
@@ -56,7 +56,7 @@ def test_series_only_when_asked_and_a_named_curve_brings_its_time_axis():
         fidelity="motor_curve",
         outputs=["motor_speed_curve"],
     )
-    assert set(named.series) == {"motor_speed_curve", "time"} and named.results == {}
+    assert set(named.series) == {"motor_speed_curve"} and named.results == {}
     every = engine.run(
         NUTRUNNER_DRIVE, EXAMPLE_INDUCTION_MOTOR, fidelity="motor_curve", series=True
     )
