@@ -14,8 +14,13 @@ Iskritsky, "Dynamics of the percussive mechanism of a rare-impact nut wrench
 with an axially moving striker"; [003] is a scan of it); see docs/sources.md.
 
 Every function here is a closed form on SI floats (most also accept numpy
-arrays, for sweeps). The full time simulation is in
-:mod:`engine.rare_impact_sim`.
+arrays, for sweeps), and they are *the paper's* formulas: stage 1 as printed
+in [002, eq. 1] (which does not balance virtual power), stage 2 from rest,
+stage 3 without the rollers. The model ``impact.rare`` uses them for the
+paper's conditions (eq. 5 coefficients, eq. 6, the return and re-lock rules)
+and for its ``paper`` variant; its stage 1 comes from a Lagrangian of a stated
+roller geometry and its cycle from :mod:`engine.rare_impact_cycle`, which
+also holds the whole-cycle simulation.
 
 What the source leaves open, and what this module does about it
 ----------------------------------------------------------------

@@ -128,7 +128,12 @@ def choose_rung(
 
 
 def _fallback(
-    spec: ModelSpec, rung: str, inputs: Mapping[str, Any], exc: BudgetExceeded
+    spec: ModelSpec,
+    rung: str,
+    inputs: Mapping[str, Any],
+    exc: BudgetExceeded,
+    *,
+    auto: bool = False,
 ) -> tuple[str, float, float] | None:
     """The rung to run instead of ``rung`` after ``exc`` (per :attr:`Rung.fallback`), or None.
 
@@ -137,14 +142,18 @@ def _fallback(
     Only a rung that declined up front (``expected_steps`` in the error: it would need
     more steps than allowed) falls back, and only to a rung whose estimated error for
     these inputs is no larger than the declining rung's own: the answer still meets
-    what was asked of it. A deadline overrun part-way is not rescued.
+    what was asked of it. A deadline overrun part-way is not rescued. Under ``auto``
+    the fallback runs even when its estimate is larger (auto's promise is the best
+    answer within the budget; the caller's note then says the tolerance was not met).
     """
     declining = spec.rung(rung)
     if declining.fallback is None or "expected_steps" not in exc.context:
         return None
     own = declining.estimate(inputs)
     theirs = spec.rung(declining.fallback).estimate(inputs)
-    if own is None or theirs is None or not math.isfinite(theirs) or theirs > own:
+    if own is None or theirs is None or not math.isfinite(theirs):
+        return None
+    if theirs > own and not auto:
         return None
     return declining.fallback, own, theirs
 
@@ -213,7 +222,8 @@ def run(
     try:
         result = spec.compute(values, ctx)
     except BudgetExceeded as exc:
-        found = _fallback(spec, rung, values, exc)
+        auto = _fidelity(spec, fidelity, tolerance) == "auto"
+        found = _fallback(spec, rung, values, exc, auto=auto)
         if found is None:
             raise
         fallback, own, theirs = found
@@ -221,7 +231,12 @@ def run(
         notes.append(
             f"{rung!r} would need about {exc.context['expected_steps']:.2g} steps (budget "
             f"{max_steps:g}); ran its declared fallback {fallback!r} instead, whose estimated "
-            f"error {theirs:.2g} is within {rung!r}'s own {own:.2g}"
+            + (
+                f"error {theirs:.2g} is within {rung!r}'s own {own:.2g}"
+                if theirs <= own
+                else f"error is {theirs:.2g}"
+            )
+            + (f": the tolerance {tol:.2g} is not met" if auto and theirs > tol else "")
         )
         result = spec.compute(values, ctx)
     elapsed = time.perf_counter() - start

@@ -1426,6 +1426,11 @@ function renderReport(m) {
     el("p", { class: "eq-what" }, e.summary.replace(/\s*\[[^\]]*\]\.?$/, ""), e.source ? el("span", { class: "muted" }, ` ${e.source}`) : null),
     ...e.latex.map(equationNode)));
   const seriesBox = el("div", { class: "plots report-plots" });
+  // results and checks beside the inputs; warnings and notes below both, full width
+  const parts = resultParts(m, data);
+  const cut = parts.findIndex((p) => p.tagName === "H3" && ["Warnings", "Notes"].includes(p.textContent));
+  const beside = cut < 0 ? parts : parts.slice(0, cut);
+  const below = cut < 0 ? [] : parts.slice(cut);
   body.replaceChildren(...[
     el("p", { class: "summary" }, m.summary),
     el("p", { class: "source" }, el("strong", {}, "Source: "), m.source),
@@ -1435,7 +1440,8 @@ function renderReport(m) {
     (m.assumptions || []).length ? el("ul", { class: "notes assumptions" }, ...m.assumptions.map((x) => el("li", {}, x))) : null,
     el("div", { class: "two-col" },
       el("div", {}, el("h3", {}, "Inputs"), el("div", { class: "table-wrap" }, inputsTable(m, data))),
-      el("div", {}, el("h3", {}, "Results"), ...resultParts(m, data))),
+      el("div", {}, el("h3", {}, "Results"), ...beside)),
+    below.length ? el("div", { class: "report-notes" }, ...below) : null,
     eqs.length ? el("h3", {}, "Equations used") : null,
     eqs.length ? el("div", { class: "equations" }, ...eqs) : null,
     seriesBox].filter(Boolean));

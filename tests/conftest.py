@@ -32,3 +32,14 @@ def api() -> TestClient:
 def toy() -> TestClient:
     """The app over the ``toy.disc`` model alone (modules may override it)."""
     return TestClient(create_app(models=[TOY]), raise_server_exceptions=False)
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _compiled_kernels() -> None:
+    """Load (or, on a fresh checkout, compile: several seconds) the numba kernels once,
+    before any test times a run; the service does the same at start-up (warm_up)."""
+    import numpy as np
+
+    from engine.rare_impact_cycle import _ensure_compiled
+
+    _ensure_compiled(np.ones(32))

@@ -720,6 +720,12 @@ def _constant_power_note(x: Mapping[str, Any]) -> str:
     except (InfeasibleDesign, InputOutOfRange) as exc:
         return f"the motor curve given is not used by this rung, and it fails: {exc.message}"
     assert ratio is not None
+    if not (math.isfinite(ratio) and 1.0 + ratio > 0.0):
+        return (
+            "this rung assumes constant power from standstill [000, eq. 5]; the "
+            f"{x['motor_curve']} motor curve given cannot be compared with it for these "
+            "inputs (its spin-up time is not finite): use rung motor_curve"
+        )
     return (
         "this rung assumes constant power from standstill [000, eq. 5]; the "
         f"{x['motor_curve']} motor curve given changes the spin-up time by "

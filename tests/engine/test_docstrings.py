@@ -30,7 +30,7 @@ FAMILIES: dict[str, tuple[str, ...]] = {
     "preload": ("preload.tightening", "preload.control"),
     "preload_methods": ("preload.tightening", "preload.control"),
     "rare_impact": ("impact.rare",),
-    "rare_impact_sim": ("impact.rare",),
+    "rare_impact_cycle": ("impact.rare",),
     "springs": ("clutch.ball", "clutch.ball_setting"),
     "threads": ("preload.tightening", "preload.control"),
 }
@@ -79,10 +79,6 @@ UNDOCUMENTED = {
     "rare_impact.spring_height_limit",
     "rare_impact.striker_travel",
     "rare_impact.time_to_travel",
-    "rare_impact_sim.simulate",
-    "rare_impact_sim.stage1_fast",
-    "rare_impact_sim.stage1_problem",
-    "rare_impact_sim.stage1_reference",
 }
 #: Annotations of numeric parameters, which need a [unit]; others (str, bool, a
 #: curve object, a mapping of inputs) are described in words.

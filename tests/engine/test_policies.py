@@ -110,9 +110,11 @@ def test_assumptions_reach_every_answer_and_the_catalogue():
 def test_plot_metadata_is_declared_and_checked():
     rare = engine.get_model("impact.rare")
     time = next(o for o in rare.outputs if o.name == "time")
-    assert time.describe()["plot"]["windows"] == [
-        {"label": "engagement", "start": "engagement_start", "end": "engagement_end"}
-    ]
+    assert time.describe()["plot"]["windows"][0] == {
+        "label": "engagement window",
+        "start": "engagement_start",
+        "end": "engagement_end",
+    }
     counts = next(o for o in engine.get_model("preload.control").outputs if o.x == "preload_bins")
     assert counts.plot is not None and counts.plot.bars
     bad_window = Output(

@@ -36,7 +36,7 @@ PHYSICS = [
     "preload",
     "preload_methods",
     "rare_impact",
-    "rare_impact_sim",
+    "rare_impact_cycle",
     "springs",
     "threads",
 ]

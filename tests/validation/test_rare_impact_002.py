@@ -21,7 +21,7 @@ from engine.rare_impact import (
     striker_oscillation,
     time_to_travel,
 )
-from engine.rare_impact_sim import stage1_fast, stage1_problem, stage1_reference
+from engine.rare_impact_cycle import release_speed_of, simulate_cycle, simulate_cycle_scipy
 
 GRID = np.logspace(3, 6, 7)  # spring rates 1…1000 N/mm
 
@@ -73,22 +73,39 @@ def test_relock_condition_as_printed():
     assert relock_margin(3000.0, 0.005, 40000.0, 0.002, 0.15) > 0
 
 
+@pytest.mark.parametrize("c1", GRID)
+def test_symmetric_v_reproduces_the_printed_45_degree_release_speed(c1):
+    # [002, after eq. 4]: ω_M = √([c1(λ1 + h) + c2(λ2 + h)]/(0.5 n m r)), α = 45°, the
+    # flywheel's inertia change and (the paper's eq. 1) the weight left out; r is the
+    # roller radius at release, x0 + h1/(2 tan α) for the V between two cones
+    x = RARE_IMPACT.validate(
+        {**REFERENCE_DESIGN, "power_spring_rate": c1, "gravity": 0.0,
+         "roller_geometry": "symmetric_v"}
+    )[0]  # fmt: skip
+    r = 0.04 + 0.005 / 2.0
+    printed = math.sqrt((c1 * 0.007 + 2000.0 * 0.013) / (0.5 * 6 * 0.05 * r))
+    assert release_speed_of(x) == pytest.approx(printed, rel=1e-13)
+
+
 @pytest.mark.parametrize("angle_deg", [15, 30, 45, 60, 75])
 @pytest.mark.parametrize("no_load", [None, 1000.0])
-def test_simulation_agrees_with_an_independent_scipy_solution(angle_deg, no_load):
+@pytest.mark.parametrize("geometry", ["symmetric_v", "paper"])
+def test_simulation_agrees_with_an_independent_scipy_solution(angle_deg, no_load, geometry):
+    # the whole cycle, each stage by DOP853 at rtol 1e-12 with terminal events
     x = RARE_IMPACT.validate(
-        {**REFERENCE_DESIGN, "cone_angle": math.radians(angle_deg), "motor_no_load_speed": no_load}
-    )[0]
-    p = stage1_problem(x)
-    fast = stage1_fast(p)
-    t_ref, w_ref, _ = stage1_reference(p, rtol=1e-12, max_step_fraction=0.02)
-    assert fast.t_release == pytest.approx(t_ref, rel=1e-7)
-    assert fast.w_release == pytest.approx(w_ref, rel=1e-7)
+        {**REFERENCE_DESIGN, "cone_angle": math.radians(angle_deg), "motor_no_load_speed": no_load,
+         "roller_geometry": geometry}
+    )[0]  # fmt: skip
+    fast = simulate_cycle(x)
+    ref, _ = simulate_cycle_scipy(x, rtol=1e-12)
+    for name in ("release_speed", "spin_up_time", "engagement_time", "return_time"):
+        a, b = getattr(fast, name), getattr(ref, name)
+        assert (math.isinf(a) and math.isinf(b)) or a == pytest.approx(b, rel=2e-7), name
 
 
 def test_reference_design_closed_form_against_simulation():
     cf = run(RARE_IMPACT, REFERENCE_DESIGN, fidelity="closed_form")
     sim = run(RARE_IMPACT, REFERENCE_DESIGN, fidelity="simulation")
     err = abs(cf.results["release_speed"] / sim.results["release_speed"] - 1)
-    # measured 1.28e-4; the a-priori estimate (1.4e-3) bounds it
-    assert 5e-5 < err < cf.error_estimate
+    # measured 6.5e-4; the a-priori estimate bounds it
+    assert 1e-4 < err < cf.error_estimate

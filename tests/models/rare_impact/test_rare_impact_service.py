@@ -16,10 +16,16 @@ def test_unit_strings_give_the_reference_release_speed(api):
     r = api.post(
         "/api/v1/impact/rare",
         json={"cone_angle": "45 deg", "power_spring_rate": "50 N/mm", "roller_mass": "50 g",
-              "fidelity": "closed_form"},
+              "roller_geometry": "paper", "fidelity": "closed_form"},
     )  # fmt: skip
     assert r.status_code == 200, r.text
     assert r.json()["results"]["release_speed"] == pytest.approx(236.0163, rel=1e-6)
+
+
+def test_unknown_geometry_is_a_422_naming_the_choices(api):
+    r = api.post("/api/v1/impact/rare", json={"roller_geometry": "double_cone"})
+    assert r.status_code == 422
+    assert "roller_geometry" in r.text and "symmetric_v" in r.text
 
 
 def test_weak_motor_is_a_422_with_a_sentence(api):
@@ -28,7 +34,7 @@ def test_weak_motor_is_a_422_with_a_sentence(api):
     assert "never reaches the release speed" in r.text
 
 
-def test_sweep_endpoint_uses_the_vectorized_closed_form(api):
+def test_sweep_endpoint_runs_the_closed_form(api):
     r = api.post(
         "/api/v1/impact/rare/sweep",
         json={"base": {}, "vary": "cone_angle", "start": "10 deg", "stop": "80 deg", "num": 50,
