@@ -480,6 +480,15 @@ def table(results: dict[str, Any]) -> str:
             f"{_fmt_err(row.get('error')):>9} {_fmt_err(row.get('estimate')):>9} {honest:>6}  "
             + (", ".join(row.get("outputs_compared", [])) or str(row.get("notes", "")))
         )
+    targets = [r for r in results["rows"] if r.get("target_s") is not None]
+    if targets:  # issue 21's targets (bench/extra_targets.py), each beside its measured figure
+        lines += ["", "Targets (issue 21): measured against target, with the floors"]
+        for row in targets:
+            met = {True: "met", False: "MISSED"}.get(row.get("met"), "")
+            lines.append(
+                f"{row['model']:<22} {row['case']:<28} {_fmt_time(row['time_s']):>10} "
+                f"target ≤ {_fmt_time(row['target_s'])} {met:<6}  {row.get('notes', '')}"
+            )
     if results["sweeps"]:
         lines += ["", "Sweeps"]
         for row in results["sweeps"]:

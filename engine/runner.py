@@ -12,12 +12,14 @@ import contextlib
 import math
 import threading
 import time
+from collections import Counter
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
+from . import points
 from .errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange, SolverFailed
 from .spec import Check, ModelSpec, Param, RunContext, Value
 
@@ -66,10 +68,8 @@ class SweepResult:
 
 def _rung_summary(rungs: Sequence[str | None]) -> tuple[str, list[str]]:
     """The sweep's ``rung`` field and, when points differ, a note saying how."""
-    counts: dict[str, int] = {}
-    for r in rungs:
-        if r is not None:
-            counts[r] = counts.get(r, 0) + 1
+    every = Counter(rungs)  # counted in C, first-seen order kept
+    counts = {r: c for r, c in every.items() if r is not None}
     if len(counts) <= 1:
         return next(iter(counts), ""), []
     return ", ".join(counts), [
@@ -129,24 +129,6 @@ def choose_rung(
     ]
 
 
-@contextlib.contextmanager
-def _arithmetic_refused(spec: ModelSpec) -> Iterator[None]:
-    """A safety net under the declared ranges: a combination of extreme inputs that
-    overflows or divides by zero is refused (SolverFailed, 422), never a crash (500).
-    numpy's overflow/invalid warnings are silenced: a non-finite result becomes null with a
-    note (numpy's error state is per thread)."""
-    try:
-        with np.errstate(all="ignore"):
-            yield
-    except ArithmeticError as exc:
-        raise SolverFailed(
-            f"{spec.name} cannot be evaluated for these inputs: the arithmetic failed "
-            f"({type(exc).__name__}); values this extreme lie outside what the model "
-            "computes reliably",
-            error=type(exc).__name__,
-        ) from None
-
-
 def _fallback(
     spec: ModelSpec,
     rung: str,
@@ -178,8 +160,38 @@ def _fallback(
     return declining.fallback, own, theirs
 
 
+def _wanted(spec: ModelSpec, asked: set[str], *, named: bool, series: bool) -> set[str]:
+    """The outputs to compute: model only what the scene requires (issue 21).
+
+    Every scalar output when none is named; series only when named or when
+    ``series`` asks for all of them.
+    """
+    wanted = set(asked) if named else {o.name for o in spec.outputs if not o.series}
+    if series:
+        wanted |= {o.name for o in spec.outputs if o.series}
+    return wanted
+
+
 def _finite(value: Value) -> bool:
     return not isinstance(value, float) or math.isfinite(value)
+
+
+@contextlib.contextmanager
+def _arithmetic_refused(spec: ModelSpec) -> Iterator[None]:
+    """A safety net under the declared ranges: a combination of extreme inputs that
+    overflows or divides by zero is refused (SolverFailed, 422), never a crash (500).
+    numpy's overflow/invalid warnings are silenced: a non-finite result becomes null with a
+    note (numpy's error state is per thread)."""
+    try:
+        with np.errstate(all="ignore"):
+            yield
+    except ArithmeticError as exc:
+        raise SolverFailed(
+            f"{spec.name} cannot be evaluated for these inputs: the arithmetic failed "
+            f"({type(exc).__name__}); values this extreme lie outside what the model "
+            "computes reliably",
+            error=type(exc).__name__,
+        ) from None
 
 
 def run(
@@ -191,12 +203,15 @@ def run(
     outputs: Iterable[str] | None = None,
     budget_s: float | None = DEFAULT_BUDGET_S,
     max_steps: int = DEFAULT_MAX_STEPS,
+    series: bool = False,
     cancel: threading.Event | None = None,
 ) -> RunResult:
     """Evaluate ``spec`` on SI ``inputs``.
 
-    ``outputs`` limits the work to the named outputs and series (all when
-    None). Non-finite values never leave: they become None with a note.
+    ``outputs`` limits the work to the named outputs and series (every scalar
+    output when None). Series are computed only when asked for: named in
+    ``outputs``, or all of them with
+    ``series=True``. Non-finite values never leave: they become None with a note.
     ``budget_s`` and ``max_steps`` reach the model as ``ctx.deadline`` and
     ``ctx.max_steps``; a model past either raises BudgetExceeded. ``cancel``
     reaches it as ``ctx.cancel``: once set, the model stops at its next budget
@@ -209,14 +224,15 @@ def run(
             f"tolerance = {tol:g} is not allowed: must be > 0 and < 1", field="tolerance"
         )
     known = {o.name for o in spec.outputs}
-    wanted = frozenset(known if outputs is None else outputs)
-    unknown = sorted(wanted - known)
+    asked_for = set(known if outputs is None else outputs)
+    unknown = sorted(asked_for - known)
     if unknown:
         raise InputOutOfRange(
             f"unknown output(s) {', '.join(unknown)}; {spec.name} offers "
             + ", ".join(sorted(known)),
             field="outputs",
         )
+    wanted = frozenset(_wanted(spec, asked_for, named=outputs is not None, series=series))
     with _arithmetic_refused(spec):
         rung, notes = choose_rung(spec, values, _fidelity(spec, fidelity, tolerance), tol)
     start = time.perf_counter()
@@ -254,7 +270,7 @@ def run(
 
     units = {o.name: o.unit for o in spec.outputs}
     scalars: dict[str, Value] = {}
-    series: dict[str, list[float]] = {}
+    curves: dict[str, list[float]] = {}
     notes = notes + list(spec.assumptions) + result.notes
     for name, value in result.values.items():
         if name not in wanted:
@@ -277,7 +293,7 @@ def run(
         if not np.all(np.isfinite(arr)):
             notes.append(f"series {name} had non-finite points; omitted")
             continue
-        series[name] = arr.tolist()
+        curves[name] = arr.tolist()
     error = result.error_estimate
     if error is not None and not math.isfinite(error):
         notes.append("the error estimate is unbounded for these inputs; null")
@@ -285,7 +301,7 @@ def run(
     return RunResult(
         model=spec.name,
         results=scalars,
-        units={n: units[n] for n in (*scalars, *series)},
+        units={n: units[n] for n in (*scalars, *curves)},
         rung=result.rung,
         error_estimate=error,
         elapsed_s=elapsed,
@@ -293,7 +309,7 @@ def run(
         checks=result.checks,
         notes=notes,
         warnings=warnings + result.warnings,
-        series=series,
+        series=curves,
     )
 
 
@@ -326,7 +342,8 @@ def sweep(
     """Evaluate ``spec`` with ``vary`` set to each of ``values``, the rest from ``base``.
 
     A point that the model refuses (an infeasible design, say) is None in
-    every output, with one note naming the point and the reason.
+    every output, with one note naming the point and the reason. ``cancel`` stops
+    the sweep with :class:`Cancelled` at the next point that runs on its own.
     """
     try:
         param = spec.param(vary)
@@ -338,45 +355,121 @@ def sweep(
         raise InputOutOfRange(f"vary = {vary!r} is not a numeric input", field="vary")
     wanted = list(outputs) if outputs is not None else None
     start = time.perf_counter()
-    if spec.vectorized is not None and len(values) > 1:
+    arr = _sweep_column(param, values)
+    n = int(arr.size)
+    # the fixed inputs (refused here if out of range) with the first point's varied one
+    first, warnings = spec.validate({**base, vary: arr[0].item()})
+    warnings = [w for w in warnings if not w.startswith(f"{vary} = ")] + _recommended(param, arr)
+    x: dict[str, Any] = {**first, vary: arr}
+    tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
+    asked = _fidelity(spec, fidelity, tolerance)
+    notes: list[str] = []
+    refused = np.zeros(n, dtype=bool)  # points an estimate refuses: run alone, to say why
+    if not (math.isfinite(tol) and 0.0 < tol < 1.0):
+        raise InputOutOfRange(
+            f"tolerance = {tol:g} is not allowed: must be > 0 and < 1", field="tolerance"
+        )
+    if asked == "auto":
+        estimates = points.rung_estimates(
+            spec, x, n, point=lambda j: points.at(x, n, j), refused=refused
+        )
+        assert estimates is not None
+        index = points.auto_index(spec, estimates, n, tol)
+    else:
+        choose_rung(spec, first, asked, tol)  # refuses an unknown rung name
+        k = spec.rung_names.index(asked)
+        estimates = points.rung_estimates(
+            spec, x, n, [k], point=lambda j: points.at(x, n, j), refused=refused
+        )
+        assert estimates is not None
+        index = np.full(n, k, dtype=np.int64)
+    known = [o.name for o in spec.outputs if not o.series]
+    scalar_names = known if wanted is None else [o for o in wanted if o in known]
+    # per output: an object column filled from the array groups and the looped points
+    columns: dict[str, Any] = {}
+    computed: list[str] = []
+    rungs = np.full(n, None, dtype=object)
+    errors = np.full(n, np.nan)
+    loop = refused.copy()
+    bad_total = 0
+    for k, rung_name in enumerate(spec.rung_names):
+        sel = (index == k) & ~refused
+        if not sel.any():
+            continue
+        m = int(sel.sum())
+        sub = points.take(x, n, sel) if m < n else x
         try:
             with _arithmetic_refused(spec):
-                fast = _sweep_vectorized(spec, base, param, values, wanted, fidelity, tolerance)
+                vec = points.vector(spec, sub, rung_name, scalar_names, tol, m, dtype=None)
         except SolverFailed:
-            fast = None  # loop instead: the points that fail are null, with a note
+            vec = None  # loop instead: the points that fail are null, with a note
         except EngineError:
             raise
         except Exception:
             # the array path is an optimisation and the scalar model the reference: where
             # the array path fails on inputs the scalar one refuses or handles (issue 20's
             # fuzzing found one), the loop answers
-            fast = None
-        if fast is not None:
-            fast.elapsed_s = time.perf_counter() - start
-            return fast
-    checked = [param.check(int(v) if param.kind == "int" else v) for v in values]
+            vec = None
+        if vec is None:
+            loop |= sel
+            continue
+        bad = np.zeros(m, dtype=bool)
+        for name in scalar_names:
+            if name not in vec.computed:
+                continue
+            column = vec.values[name]
+            if name not in computed:
+                computed.append(name)
+            if column.dtype.kind == "f":
+                finite = np.isfinite(column)
+                bad |= ~finite
+            else:
+                finite = None
+            if m == n and finite is not None and finite.all():
+                columns[name] = column  # the common case: one array, listed once below
+                continue
+            obj = columns.get(name)
+            if obj is None or obj.dtype != object:
+                obj = columns[name] = np.full(n, None, dtype=object)
+            part = column.astype(object)
+            if finite is not None:
+                part[~finite] = None
+            obj[sel] = part
+        est = estimates.get(k)
+        part_rungs = np.full(m, rung_name, dtype=object)
+        part_rungs[bad] = None
+        rungs[sel] = part_rungs
+        if est is not None:
+            errors[sel] = np.where(bad, np.nan, est[sel])
+        bad_total += int(bad.sum())
+        for note in vec.notes:
+            if note not in notes:
+                notes.append(note)
+        for w in vec.warnings:
+            if w not in warnings:
+                warnings.append(w)
+    if bad_total:
+        notes.append(f"{bad_total} of {n} points could not be computed; null there")
     deadline = None if budget_s is None else start + budget_s
-    names: list[str] = []
-    results: dict[str, list[Value]] = {}
-    notes: list[str] = []
-    warnings: list[str] = []
-    rungs: list[str | None] = []
-    errors: list[float | None] = []
     first_refusal: EngineError | None = None
-    for i, value in enumerate(checked):
+    looped = np.flatnonzero(loop).tolist()
+    any_point = n - len(looped) > 0
+    for count, j in enumerate(looped):
         if cancel is not None and cancel.is_set():
-            raise Cancelled(f"sweep cancelled after {i} of {len(checked)} points")
+            raise Cancelled(f"sweep cancelled after {n - len(looped) + count} of {n} points")
         remaining = None if deadline is None else deadline - time.perf_counter()
         if remaining is not None and remaining <= 0:
             raise BudgetExceeded(
-                f"sweep stopped after {i} of {len(checked)} points at its {budget_s:g} s budget",
+                f"sweep stopped after {n - len(looped) + count} of {n} points at its "
+                f"{budget_s:g} s budget",
                 field="num",
             )
+        value = arr[j].item()
         try:
             point = run(
                 spec,
                 {**base, vary: value},
-                fidelity=fidelity,
+                fidelity=asked if refused[j] else spec.rung_names[int(index[j])],
                 tolerance=tolerance,
                 outputs=wanted,
                 budget_s=remaining,
@@ -388,130 +481,84 @@ def sweep(
         except EngineError as exc:
             # a point the model refuses (infeasible, or a cross-field range that this
             # value breaks) is null; if every point is refused, the first refusal stands
-            point = None
             first_refusal = first_refusal or exc
             notes.append(f"{vary} = {value:g}: {exc.message}")
-        rungs.append(None if point is None else point.rung)
-        errors.append(None if point is None else point.error_estimate)
-        if point is not None:
-            if not names:
-                names = list(point.results)
-                for n in names:
-                    results[n] = [None] * i
-            for n in names:
-                results[n].append(point.results.get(n))
-            for w in point.warnings:
-                if w not in warnings:
-                    warnings.append(w)
-        else:
-            for n in names:
-                results[n].append(None)
-    if not names:
+            continue
+        any_point = True
+        rungs[j] = point.rung
+        errors[j] = np.nan if point.error_estimate is None else point.error_estimate
+        for name, v in point.results.items():
+            if name not in computed:
+                computed.append(name)
+            obj = columns.get(name)
+            if obj is None or obj.dtype != object:
+                old = obj
+                obj = columns[name] = np.full(n, None, dtype=object)
+                if old is not None:  # cannot happen with a loop, kept for safety
+                    obj[:] = old.astype(object)
+            obj[j] = v
+        for w in point.warnings:
+            if w not in warnings and not w.startswith(f"{vary} = "):
+                warnings.append(w)
+    if not any_point:
         if isinstance(first_refusal, InputOutOfRange) and first_refusal.field != vary:
             raise first_refusal  # the fixed inputs themselves are out of range
         notes.append("no point of the sweep could be computed")
-    rung, mixed = _rung_summary(rungs)
+    order = [o for o in scalar_names if o in computed] + [o for o in computed if o not in known]
+    results: dict[str, list[Value]] = {name: columns[name].tolist() for name in order}
+    rung_list: list[str | None] = rungs.tolist()
+    rung, mixed = _rung_summary(rung_list)
+    if asked == "auto" and not mixed and rung:
+        notes.insert(0, f"auto: chose {rung!r} at every point (tolerance {tol:.2g})")
     units = {o.name: o.unit for o in spec.outputs}
+    finite_errors = np.isfinite(errors)
+    error_list: list[float | None] = errors.tolist()
+    if not finite_errors.all():
+        error_list = [
+            e if ok else None for e, ok in zip(error_list, finite_errors.tolist(), strict=True)
+        ]
     return SweepResult(
         model=spec.name,
         vary=vary,
-        values=[float(v) for v in checked],
+        values=arr.astype(float).tolist(),
         results=results,
-        units={n: units[n] for n in names},
+        units={name: units[name] for name in results},
         rung=rung,
         elapsed_s=time.perf_counter() - start,
         notes=mixed + notes,
         warnings=warnings,
-        rungs=rungs,
-        error_estimates=errors,
+        rungs=rung_list,
+        error_estimates=error_list,
     )
 
 
-def _sweep_vectorized(
-    spec: ModelSpec,
-    base: Mapping[str, Any],
-    param: Param,
-    values: Sequence[float],
-    outputs: list[str] | None,
-    fidelity: str | None,
-    tolerance: float | None,
-) -> SweepResult | None:
-    """One array evaluation instead of a loop, when the model offers it for the rung.
-
-    Returns None (the caller loops) when the rung chosen for the first point is
-    not vectorised, when ``auto`` chooses different rungs at different points,
-    or when the array version lacks an asked output the scalar rung gives.
-    """
-    assert spec.vectorized is not None
+def _sweep_column(param: Param, values: Sequence[float]) -> np.ndarray:
+    """The swept values as an array, refused (naming the first bad value) if any is out of range."""
     arr = np.asarray(values, dtype=float)
-    param.check(float(arr.min()) if param.kind == "float" else int(arr.min()))
-    param.check(float(arr.max()) if param.kind == "float" else int(arr.max()))
+    if arr.ndim != 1 or arr.size == 0:
+        raise InputOutOfRange(f"a sweep of {param.name} needs at least one value", field="num")
+    bad = ~points.in_range(param, arr)
     if param.kind == "int":
-        if not np.all(arr == np.round(arr)):
-            raise InputOutOfRange(f"{param.name} must be an integer", field=param.name)
-        arr = arr.astype(np.int64)
-    elif not np.all(np.isfinite(arr)):
-        raise InputOutOfRange(f"{param.name} must be finite", field=param.name)
-    first, warnings = spec.validate({**base, param.name: arr[0].item()})
-    tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
-    asked = _fidelity(spec, fidelity, tolerance)
-    rung, notes = choose_rung(spec, first, asked, tol)
-    if rung not in spec.vector_rungs:
-        return None
-    estimates: list[float | None] = [None] * arr.size
-    if arr.size > MAX_SWEEP_POINTS:
-        if asked == "auto":
-            notes.append(f"auto chose {rung!r} from the first point of this long sweep")
-    else:
-        # each point's estimate; auto decides per point, so one array call serves only
-        # if every point chose the same rung
-        for i, v in enumerate(arr.tolist()):
-            point, _ = spec.validate({**base, param.name: v})
-            if asked == "auto" and choose_rung(spec, point, "auto", tol)[0] != rung:
-                return None
-            estimates[i] = spec.rung(rung).estimate(point)
-    known = [o.name for o in spec.outputs if not o.series]
-    wanted = known if outputs is None else [n for n in outputs if n in known]
-    ctx = RunContext(rung=rung, outputs=frozenset(wanted), tolerance=tol)
-    result = spec.vectorized({**first, param.name: arr}, ctx)
-    missing = [name for name in wanted if name not in result.values]
-    if missing:
-        # an output the array version lacks may simply not belong to this rung; loop only
-        # if the scalar model gives it at the first point
-        try:
-            scalar = spec.compute(first, ctx).values
-        except EngineError:
-            scalar = {}
-        if any(scalar.get(name) is not None for name in missing):
-            return None
-    results: dict[str, list[Value]] = {}
-    bad = np.zeros(arr.shape, dtype=bool)
-    for name in wanted:
-        if name not in result.values:
-            continue
-        column = np.broadcast_to(np.asarray(result.values[name]), arr.shape)
-        if column.dtype.kind == "f":
-            finite = np.isfinite(column)
-            bad |= ~finite
-            listed: list[Value] = column.tolist()
-            if not finite.all():
-                listed = [v if ok else None for v, ok in zip(listed, finite.tolist(), strict=True)]
-            results[name] = listed
-        else:
-            results[name] = column.tolist()
+        bad |= arr != np.round(arr)
     if bad.any():
-        notes.append(f"{int(bad.sum())} of {arr.size} points could not be computed; null there")
-    units = {o.name: o.unit for o in spec.outputs}
-    return SweepResult(
-        model=spec.name,
-        vary=param.name,
-        values=arr.astype(float).tolist(),
-        results=results,
-        units={n: units[n] for n in results},
-        rung=rung,
-        elapsed_s=0.0,
-        notes=notes + result.notes,
-        warnings=warnings + result.warnings,
-        rungs=[None if b else rung for b in bad.tolist()],
-        error_estimates=[None if b else e for b, e in zip(bad.tolist(), estimates, strict=True)],
-    )
+        v = arr[int(np.flatnonzero(bad)[0])].item()
+        if param.kind == "int" and math.isfinite(v) and v == round(v):
+            v = int(v)
+        param.check(v)  # raises with the field's range
+        raise InputOutOfRange(f"{param.name} = {v!r} is not allowed", field=param.name)
+    return arr.astype(np.int64) if param.kind == "int" else arr
+
+
+def _recommended(param: Param, arr: np.ndarray) -> list[str]:
+    """One warning for the swept values outside the source's recommended range."""
+    if not param.recommended:
+        return []
+    lo, hi = param.recommended
+    out = (arr < lo) | (arr > hi)
+    if not out.any():
+        return []
+    unit = "" if param.unit == "1" else f" {param.unit}"
+    return [
+        f"{param.name} is outside the range the source recommends ({lo:g}…{hi:g}{unit}) at "
+        f"{int(out.sum())} of {arr.size} points"
+    ]

@@ -36,8 +36,9 @@ from scipy import stats
 from scipy.stats import qmc
 
 from .errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange
+from .points import at, auto_index, in_range, rung_estimates, take, vector
 from .runner import DEFAULT_TOLERANCE, choose_rung, run
-from .spec import ModelSpec, Param, RunContext
+from .spec import ModelSpec, Param
 
 METHODS = ("grid", "monte_carlo", "lhs", "sobol")
 DISTRIBUTIONS = ("uniform", "normal", "triangular")
@@ -366,83 +367,6 @@ def chunks(n_points: int, size: int) -> list[tuple[int, int]]:
 # --------------------------------------------------------------------------- evaluation
 
 
-def _estimates_on_arrays(
-    spec: ModelSpec, x: Mapping[str, Any], n: int, tol: float
-) -> np.ndarray | None:
-    """Per-point ``auto`` rung index from the rungs' estimates called on arrays, if they can be."""
-    choice = np.full(n, -1, dtype=np.int64)
-    best = np.full(n, np.inf)
-    best_i = np.full(n, -1, dtype=np.int64)
-    for i, rung in enumerate(spec.rungs):
-        try:
-            with np.errstate(all="ignore"):
-                est = rung.estimate(x)
-        except (TypeError, ValueError, ArithmeticError):
-            return None
-        if est is None:
-            continue
-        arr = np.broadcast_to(np.asarray(est, dtype=float), (n,))
-        ok = np.isfinite(arr)
-        better = ok & (arr < best)
-        best = np.where(better, arr, best)
-        best_i = np.where(better, i, best_i)
-        choice = np.where((choice < 0) & ok & (arr <= tol), i, choice)
-    fallback = np.where(best_i >= 0, best_i, len(spec.rungs) - 1)
-    return np.where(choice >= 0, choice, fallback)
-
-
-def _vector(
-    spec: ModelSpec, x: Mapping[str, Any], rung: str, outputs: Sequence[str], tol: float, n: int
-) -> dict[str, np.ndarray] | None:
-    """The array path for ``n`` points, or None where the model has none for this rung."""
-    if spec.vectorized is None or rung not in spec.vector_rungs:
-        return None
-    ctx = RunContext(rung=rung, outputs=frozenset(outputs), tolerance=tol)
-    try:
-        with np.errstate(all="ignore"):
-            result = spec.vectorized(x, ctx)
-    except EngineError:
-        return None
-    except (TypeError, ValueError, ArithmeticError):
-        # an array path written for one varied input may not broadcast several: loop
-        return None
-    missing = [name for name in outputs if name not in result.values]
-    if missing and _scalar_gives(spec, x, ctx, missing):
-        return None  # an output the array version lacks but this rung gives: loop
-    values: dict[str, np.ndarray] = {}
-    for name in outputs:
-        if name not in result.values:
-            values[name] = np.full(n, np.nan)  # not computed by this rung
-            continue
-        try:
-            column = np.broadcast_to(np.asarray(result.values[name], dtype=float), (n,))
-        except (TypeError, ValueError):
-            return None
-        values[name] = column.copy()
-    return values
-
-
-def _scalar_gives(
-    spec: ModelSpec, x: Mapping[str, Any], ctx: RunContext, names: Sequence[str]
-) -> bool:
-    """Whether the scalar model gives any of ``names`` at the first point of ``x``."""
-    first = {k: (v.flat[0].item() if isinstance(v, np.ndarray) else v) for k, v in x.items()}
-    try:
-        values = spec.compute(first, ctx).values
-    except EngineError:
-        return False
-    return any(values.get(name) is not None for name in names)
-
-
-def _in_range(param: Param, column: np.ndarray) -> np.ndarray:
-    ok = np.isfinite(column)
-    if param.minimum is not None:
-        ok &= column > param.minimum if param.exclusive_minimum else column >= param.minimum
-    if param.maximum is not None:
-        ok &= column < param.maximum if param.exclusive_maximum else column <= param.maximum
-    return ok
-
-
 def evaluate_chunk(
     spec: ModelSpec | str,
     base: Mapping[str, Any],
@@ -482,7 +406,7 @@ def evaluate_chunk(
     fixed, _ = spec.validate({**base, **first})
     valid = np.ones(n, dtype=bool)
     for name, col in cols.items():
-        valid &= _in_range(spec.param(name), col)
+        valid &= in_range(spec.param(name), col)
     x: dict[str, Any] = {**fixed, **cols}
     for name, col in cols.items():
         if spec.param(name).kind == "int":
@@ -490,7 +414,8 @@ def evaluate_chunk(
     asked = fidelity if fidelity is not None else ("auto" if tolerance is not None else None)
     asked = asked or spec.default_fidelity
     if asked == "auto":
-        index = _estimates_on_arrays(spec, x, n, tol)
+        estimates = rung_estimates(spec, x, n)
+        index = None if estimates is None else auto_index(spec, estimates, n, tol)
     else:
         choose_rung(spec, fixed, asked, tol)  # refuses an unknown rung name
         index = np.full(n, spec.rung_names.index(asked), dtype=np.int64)
@@ -500,14 +425,11 @@ def evaluate_chunk(
             sel = valid & (index == i)
             if not sel.any():
                 continue
-            sub = {
-                k: (v[sel] if isinstance(v, np.ndarray) and v.shape == (n,) else v)
-                for k, v in x.items()
-            }
-            got = _vector(spec, sub, rung, outputs, tol, int(sel.sum()))
-            if got is None:
+            vec = vector(spec, take(x, n, sel), rung, outputs, tol, int(sel.sum()))
+            if vec is None:
                 loop |= sel
                 continue
+            got = vec.values
             for name, column in got.items():
                 values[name][sel] = column
             # a point with no finite output is one the model refuses (NaN by the array contract)
@@ -524,10 +446,7 @@ def evaluate_chunk(
             raise BudgetExceeded(
                 f"a chunk of the study ran past its {deadline_s:g} s budget", field="samples"
             )
-        point = {
-            k: (v[j].item() if isinstance(v, np.ndarray) and v.shape == (n,) else v)
-            for k, v in x.items()
-        }
+        point = at(x, n, j)
         try:
             res = run(
                 spec,

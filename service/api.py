@@ -27,7 +27,7 @@ from .units import UnitError, to_si
 from .workers import EnginePool, Lane, Ticket, watch_disconnect
 
 API_PREFIX = "/api/v1"
-_COMMON = ("fidelity", "tolerance", "outputs")
+_COMMON = ("fidelity", "tolerance", "outputs", "series")
 _ERRORS: dict[int | str, dict[str, Any]] = {
     400: {"model": schemas.ErrorResponse, "description": "the body is not readable JSON"},
     413: {"model": schemas.ErrorResponse, "description": "request body over MAX_BODY_BYTES"},
@@ -196,6 +196,7 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
                 outputs=body.outputs,  # type: ignore[attr-defined]
                 budget_s=budget_s,
                 max_steps=lim.max_steps,
+                series=body.series,  # type: ignore[attr-defined]
                 cancel=cancel,
             )
             return _response(result, lim.max_series_points)

@@ -225,7 +225,16 @@ def request_model(spec: ModelSpec) -> type[BaseModel]:
             Field(
                 default=None,
                 max_length=len(spec.outputs),
-                description="compute only these outputs (all when absent)",
+                description="compute only these outputs and series (every scalar output "
+                "when absent)",
+            ),
+        ),
+        series=(
+            bool,
+            Field(
+                default=False,
+                description="true: compute and send every series too (absent/false: only "
+                "the series named in `outputs`)",
             ),
         ),
     )

@@ -639,6 +639,7 @@ async function compute() {
   if (!m) return;
   for (const p of m.inputs) if (p.kind === "float" || p.kind === "int") checkField(p);
   const body = { ...requestBody(m), ...fidelityBody() };
+  if (m.outputs.some((o) => o.series)) body.series = true; // the form plots them; the API sends none unasked
   const snap = snapshot(m);
   state.lastRequest = body;
   updateHash(m, body);

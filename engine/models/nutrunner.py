@@ -624,13 +624,24 @@ def _estimate_closed_form(x: Mapping[str, Any]) -> float:
     the spin-up time counts too.
     """
     d = _drive(x)
-    m_paper, m_geared = float(d.m_paper), float(d.m_geared)
-    ratios = [m_paper / m_geared, m_paper / (float(d.u) * m_geared)]
+    m_paper = np.asarray(d.m_paper, dtype=float)
+    m_geared = np.asarray(d.m_geared, dtype=float)
     friction = (x["spindle_count"] - 1) * x["idle_spindle_friction_torque"]
-    if min(m_paper, m_geared) > friction:
-        ratios.append((m_paper - friction) / (m_geared - friction))
-    gear = max(max(abs(r - 1.0), abs(1.0 / r - 1.0)) for r in ratios)
-    return max(_FLOOR, gear, _idealisation_error(x))
+    with np.errstate(all="ignore"):  # array-capable: a sweep estimates every point at once
+        gear = np.maximum(
+            _spread(m_paper / m_geared), _spread(m_paper / (np.asarray(d.u) * m_geared))
+        )
+        after_friction = _spread((m_paper - friction) / (m_geared - friction))
+    gear = np.where(
+        np.minimum(m_paper, m_geared) > friction, np.maximum(gear, after_friction), gear
+    )
+    estimate = np.maximum(np.maximum(_FLOOR, gear), _idealisation_error(x))
+    return float(estimate) if estimate.ndim == 0 else estimate
+
+
+def _spread(r: Any) -> Any:
+    """max(|r − 1|, |1/r − 1|): a ratio's relative change, either way round."""
+    return np.maximum(np.abs(r - 1.0), np.abs(1.0 / r - 1.0))
 
 
 def _estimate_gear_ratio(x: Mapping[str, Any]) -> float:

@@ -1,6 +1,7 @@
 import dataclasses
 import math
 
+import numpy as np
 import pytest
 
 import engine
@@ -175,3 +176,98 @@ def test_sweep_nulls_points_that_break_a_cross_field_range_and_names_them():
     with pytest.raises(InputOutOfRange) as info:  # every point refused: the fixed input is at fault
         engine.sweep(toy, BASE, "speed", [60.0, 100.0], fidelity="exact")
     assert info.value.field == "mass"
+
+
+def _never_scalar(x, ctx):
+    raise AssertionError("a sweep on an array rung must not run points one by one")
+
+
+def test_short_sweep_runs_the_array_path_and_estimates_each_point():
+    # every sweep size takes the array path (was: loop below 2,001 points)
+    toy = dataclasses.replace(TOY, compute=_never_scalar)
+    s = engine.sweep(toy, BASE, "diameter", [0.1, 0.2, 0.3], outputs=["energy"], fidelity="exact")
+    assert s.results["energy"] == pytest.approx([0.5 * d**2 / 8 * 1e4 for d in (0.1, 0.2, 0.3)])
+    assert s.rungs == ["exact"] * 3 and s.error_estimates == [1e-15] * 3
+
+
+def test_auto_array_sweep_groups_points_by_rung_in_order():
+    # rough is an array rung (energy 5 % high), exact is not: each group takes its own path
+    def rough_vectorized(x, ctx):
+        r = toy_compute({**x, "diameter": 1.0}, ctx)  # the scalar toy for d = 1, scaled by d²
+        return engine.Result(
+            values={"energy": r.values["energy"] * np.asarray(x["diameter"]) ** 2},
+            rung=ctx.rung,
+            error_estimate=0.05,
+        )
+
+    calls = []
+
+    def counted(x, ctx):
+        calls.append(x["diameter"])
+        return toy_compute(x, ctx)
+
+    toy = dataclasses.replace(
+        TOY,
+        rungs=(
+            Rung("rough", "off", lambda x: x["diameter"] / 10),
+            Rung("exact", "", fixed_error(0)),
+        ),
+        compute=counted,
+        vectorized=rough_vectorized,
+        vector_rungs=("rough",),
+    )
+    d = [0.05, 0.5, 0.01, 0.9]  # estimates 0.005, 0.05, 0.001, 0.09 against tolerance 0.01
+    s = engine.sweep(toy, BASE, "diameter", d, outputs=["energy"])
+    assert s.rungs == ["rough", "exact", "rough", "exact"]
+    assert s.error_estimates == pytest.approx([0.005, 0.0, 0.001, 0.0])
+    assert sorted(calls) == [0.5, 0.9]  # only the exact points ran one by one
+    e = [0.5 * v**2 / 8 * 1e4 for v in d]
+    assert s.results["energy"] == pytest.approx([1.05 * e[0], e[1], 1.05 * e[2], e[3]])
+    assert "rough at 2 points, exact at 2 points" in s.notes[0]
+
+
+def test_estimates_that_cannot_take_arrays_are_called_per_point():
+    calls = []
+
+    def scalar_only(x):
+        calls.append(1)
+        return math.sqrt(x["diameter"]) / 10  # math.sqrt refuses an array: TypeError
+
+    toy = dataclasses.replace(
+        TOY,
+        rungs=(Rung("rough", "off", scalar_only), Rung("exact", "", fixed_error(0))),
+        vector_rungs=("rough", "exact"),
+    )
+    s = engine.sweep(toy, BASE, "diameter", [0.0025, 0.04], outputs=["energy"])
+    # √0.0025 / 10 = 0.005 ≤ 0.01 → rough; √0.04 / 10 = 0.02 → exact
+    assert s.rungs == ["rough", "exact"] and s.error_estimates == pytest.approx([0.005, 0.0])
+    assert len(calls) == 3  # one failed array call, then one per point
+
+
+def test_sweep_results_are_plain_python_lists_with_null_where_not_finite():
+    s = engine.sweep(TOY, BASE, "diameter", [0.1, 6.0, 0.2], outputs=["energy"], fidelity="exact")
+    energy = s.results["energy"]
+    assert type(energy) is list and energy[1] is None
+    assert all(type(v) is float for v in (energy[0], energy[2]))
+    assert s.rungs == ["exact", None, "exact"] and s.error_estimates == [1e-15, None, 1e-15]
+
+
+def test_a_point_whose_estimate_refuses_is_null_with_the_reason_and_the_rest_computed():
+    def picky(x):
+        d = x["diameter"]
+        if np.ndim(d):
+            raise InputOutOfRange("diameter too big for the estimate", field="diameter")
+        if d > 0.4:
+            raise InputOutOfRange("diameter too big for the estimate", field="diameter")
+        return 0.001
+
+    toy = dataclasses.replace(
+        TOY,
+        rungs=(Rung("rough", "off", picky), Rung("exact", "", fixed_error(0))),
+        vector_rungs=("rough", "exact"),
+    )
+    s = engine.sweep(toy, BASE, "diameter", [0.1, 0.5, 0.2], outputs=["energy"])
+    assert s.rungs == ["rough", None, "rough"] and s.results["energy"][1] is None
+    # the toy's array path ignores the rung: the exact energy at the computed points
+    assert s.results["energy"][::2] == pytest.approx([0.5 * d**2 / 8 * 1e4 for d in (0.1, 0.2)])
+    assert any(n.startswith("diameter = 0.5: diameter too big") for n in s.notes)

@@ -37,6 +37,9 @@ def test_the_runner_keeps_only_the_outputs_asked_for():
     r = engine.run(spec, BASE, outputs=["spin"])
     assert r.results == {} and r.series == {"spin": [0.0, 1.0]}
     r = engine.run(spec, BASE)
+    # series only when asked for (issue 21: model only what the scene requires)
+    assert set(r.results) == {"inertia", "energy", "ratio", "fast"} and r.series == {}
+    r = engine.run(spec, BASE, series=True)
     assert set(r.results) == {"inertia", "energy", "ratio", "fast"} and "spin" in r.series
 
 

@@ -87,15 +87,17 @@ def test_sweep_points_at_most_2000(toy: TestClient, num: int, status: int) -> No
 
 
 def test_series_longer_than_the_cap_is_422_naming_the_bound(toy: TestClient) -> None:
-    r = toy.post("/api/v1/toy/ode", json={"points": 1001})
+    r = toy.post("/api/v1/toy/ode", json={"points": 1001, "series": True})
     item = only_error(r, 422)
     assert item["type"] == "limit_exceeded" and item["field"] == "outputs"
     assert "'time' has 1001 points, over the limit of 1000 (MAX_SERIES_POINTS)" in str(item["msg"])
-    # the same run without series is fine, and at the cap too
+    # the same run without series is fine (the default since issue 21), and at the cap too
     assert (
         toy.post("/api/v1/toy/ode", json={"points": 1001, "outputs": ["final"]}).status_code == 200
     )
-    assert len(toy.post("/api/v1/toy/ode", json={"points": 1000}).json()["series"]["x"]) == 1000
+    assert toy.post("/api/v1/toy/ode", json={"points": 1001}).status_code == 200
+    at_cap = toy.post("/api/v1/toy/ode", json={"points": 1000, "series": True})
+    assert len(at_cap.json()["series"]["x"]) == 1000
 
 
 def test_wall_clock_budget_reaches_the_model(toy: TestClient) -> None:

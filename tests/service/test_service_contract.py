@@ -24,8 +24,23 @@ def test_catalogue_lists_inputs_units_ranges_rungs(toy):
     assert toy.get("/api/v1/models/nope").status_code == 404
 
 
+def test_series_only_when_asked_for(toy):
+    # issue 21: the default answer carries scalars, checks and notes, no series
+    plain = toy.post("/api/v1/toy/disc", json={"diameter": "200 mm", "fidelity": "exact"}).json()
+    assert plain["series"] == {} and "spin" not in plain["units"]
+    assert plain["results"]["energy"] == pytest.approx(25.0)
+    named = toy.post(
+        "/api/v1/toy/disc", json={"diameter": "200 mm", "outputs": ["spin"], "fidelity": "exact"}
+    ).json()
+    assert named["series"] == {"spin": [0.0, 50.0, 100.0]} and named["results"] == {}
+    bad = toy.post("/api/v1/toy/disc", json={"diameter": "200 mm", "series": "maybe"})
+    assert bad.status_code == 422
+
+
 def test_response_shape_and_values(toy):
-    r = toy.post("/api/v1/toy/disc", json={"diameter": "200 mm", "fidelity": "exact"})
+    r = toy.post(
+        "/api/v1/toy/disc", json={"diameter": "200 mm", "fidelity": "exact", "series": True}
+    )
     assert r.status_code == 200, r.text
     body = r.json()
     assert set(body) == {

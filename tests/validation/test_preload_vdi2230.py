@@ -96,7 +96,7 @@ def test_friction_scatter_reproduces_figure_5_spread():
     # [004, fig. 5] (Thum and Debus): 38 bolts 5/8" tightened to 80 N·m scatter by ±30 %.
     # Taking μ_G and μ_K uniform over 0.10…0.20 (an assumption: the review gives no
     # friction range) the same torque gives ±29 %, the review's ±30 % to within reading.
-    r = run(CONTROL, CONTROL.examples[0])
+    r = run(CONTROL, CONTROL.examples[0], series=True)
     assert r.results["scatter_relative"] == pytest.approx(0.30, abs=0.02)
     assert sum(r.series["preload_counts"]) == pytest.approx(38.0)
     assert len(r.series["preload_bins"]) == len(r.series["preload_counts"]) == 10

@@ -85,8 +85,8 @@ def test_blows_stop_when_the_joint_holds():
 
 
 def test_examples_answer_with_blows_and_preload():
-    hard = run(BLOW, NUTRUNNER_HARD, fidelity="simulation")
-    soft = run(BLOW, NUTRUNNER_SOFT, fidelity="simulation")
+    hard = run(BLOW, NUTRUNNER_HARD, fidelity="simulation", series=True)
+    soft = run(BLOW, NUTRUNNER_SOFT, fidelity="simulation", series=True)
     assert hard.results["blows_to_target"] == 2
     assert soft.results["blows_to_target"] == 34
     assert len(soft.series["preload_per_blow"]) == 34

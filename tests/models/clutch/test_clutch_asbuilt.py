@@ -22,7 +22,7 @@ TODAY = 0.05 * C * 0.004 / 2  # today's torque limit, 0.5618656 N·m
 
 
 def run(spec, base=None, **kw):
-    return engine.run(spec, {**(base or {}), **kw})
+    return engine.run(spec, {**(base or {}), **kw}, series=True)
 
 
 def checks(result):

@@ -89,7 +89,7 @@ def test_unit_strings_give_the_si_example(api):
 
 
 def test_motor_curve_over_http_with_series(api):
-    r = api.post(URL, json={**EXAMPLE_INDUCTION_MOTOR, "fidelity": "motor_curve"})
+    r = api.post(URL, json={**EXAMPLE_INDUCTION_MOTOR, "fidelity": "motor_curve", "series": True})
     assert r.status_code == 200, r.text
     body = r.json()
     assert body["rung"] == "motor_curve" and body["error_estimate"] < 1e-8

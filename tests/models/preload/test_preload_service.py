@@ -399,6 +399,7 @@ def test_control_never_nan_inf_or_500(
         "bearing_friction_min": mu_lo,
         "bearing_friction_max": min(mu_lo + mu_span, 1.0),
         "histogram_bins": bins,
+        "series": True,
     }
     if preload is not None:
         body["preload"] = preload

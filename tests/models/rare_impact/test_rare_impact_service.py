@@ -50,7 +50,7 @@ def test_engagement_window_placed_on_the_time_axis(api):
     from engine.models.rare_impact import REFERENCE_DESIGN
 
     body = api.post(
-        "/api/v1/impact/rare", json={**REFERENCE_DESIGN, "fidelity": "simulation"}
+        "/api/v1/impact/rare", json={**REFERENCE_DESIGN, "fidelity": "simulation", "series": True}
     ).json()
     r = body["results"]
     # the window opens at release (end of stage 1) and lasts φ_eng/ω_M

@@ -120,7 +120,7 @@ def test_reference_design_figures_under_each_geometry():
 
 
 def test_simulation_reports_the_whole_cycle_with_stage_boundaries():
-    r = run(RARE_IMPACT, R, fidelity="simulation")
+    r = run(RARE_IMPACT, R, fidelity="simulation", series=True)
     assert r.rung == "simulation" and r.error_estimate == 1e-6
     s = r.series
     n = len(s["time"])

@@ -1,0 +1,195 @@
+"""Evaluate many points of one model at once: per-point rung choice on arrays, grouped array paths.
+
+Both :func:`engine.sweep` (one input varied) and :func:`engine.study.evaluate_chunk`
+(several inputs sampled) hand a dict of inputs whose varied entries are equal-length
+arrays to the helpers here. They choose ``auto``'s rung per point from the rungs'
+error estimates called on the arrays, group the points by rung and run each group
+through the model's array path where it has one for that rung; the caller evaluates
+the rest (the ``loop`` mask) one by one through :func:`engine.run`, with its own
+bookkeeping.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from .errors import EngineError
+from .spec import ModelSpec, Param, RunContext
+
+_ESTIMATE_FAILS = (TypeError, ValueError, ArithmeticError)
+
+
+def in_range(param: Param, column: np.ndarray) -> np.ndarray:
+    """Which entries of ``column`` lie in ``param``'s declared range (finite, bounds)."""
+    ok = np.isfinite(column)
+    if param.minimum is not None:
+        ok &= column > param.minimum if param.exclusive_minimum else column >= param.minimum
+    if param.maximum is not None:
+        ok &= column < param.maximum if param.exclusive_maximum else column <= param.maximum
+    return ok
+
+
+def rung_estimates(
+    spec: ModelSpec,
+    x: Mapping[str, Any],
+    n: int,
+    which: Sequence[int] | None = None,
+    point: Callable[[int], Mapping[str, Any]] | None = None,
+    refused: np.ndarray | None = None,
+) -> dict[int, np.ndarray | None] | None:
+    """Each rung's a-priori error estimate at the ``n`` points of ``x``, as arrays.
+
+    Keys are rung indices (``which``, all rungs when None); a value is None where
+    the rung gives no estimate, else a float array with NaN where the estimate is
+    None or non-finite. Each estimate is called once with the arrays; if one cannot
+    take arrays (TypeError, ValueError, ArithmeticError), it is called per point
+    with ``point(j)`` (the scalar inputs of point ``j``) when given, else the
+    whole answer is None. With ``point``, an estimate that refuses the arrays
+    (EngineError) is also called per point; a point it refuses is NaN there and
+    marked True in ``refused`` (the caller runs it alone, to report why).
+    """
+    fails = _ESTIMATE_FAILS if point is None else (*_ESTIMATE_FAILS, EngineError)
+    out: dict[int, np.ndarray | None] = {}
+    for i in range(len(spec.rungs)) if which is None else which:
+        rung = spec.rungs[i]
+        try:
+            with np.errstate(all="ignore"):
+                est = rung.estimate(x)
+        except fails:
+            if point is None:
+                return None
+            values = [_estimate_at(rung.estimate, point, j, refused) for j in range(n)]
+            if all(v is None for v in values):
+                out[i] = None
+                continue
+            arr = np.array([np.nan if v is None else float(v) for v in values])
+        else:
+            if est is None:
+                out[i] = None
+                continue
+            arr = np.array(np.broadcast_to(np.asarray(est, dtype=float), (n,)))
+        arr[~np.isfinite(arr)] = np.nan
+        out[i] = arr
+    return out
+
+
+def _estimate_at(
+    estimate: Callable[[Mapping[str, Any]], Any],
+    point: Callable[[int], Mapping[str, Any]],
+    j: int,
+    refused: np.ndarray | None,
+) -> Any:
+    try:
+        return estimate(point(j))
+    except EngineError:
+        if refused is not None:
+            refused[j] = True
+        return None
+
+
+def auto_index(
+    spec: ModelSpec, estimates: Mapping[int, np.ndarray | None], n: int, tol: float
+) -> np.ndarray:
+    """``auto``'s rung index per point, as :func:`engine.runner.choose_rung` picks it.
+
+    The cheapest rung whose estimate is within ``tol``; else the most accurate rung
+    with an estimate; else the last rung.
+    """
+    choice = np.full(n, -1, dtype=np.int64)
+    best = np.full(n, np.inf)
+    best_i = np.full(n, -1, dtype=np.int64)
+    for i in range(len(spec.rungs)):
+        arr = estimates.get(i)
+        if arr is None:
+            continue
+        ok = np.isfinite(arr)
+        better = ok & (arr < best)
+        best = np.where(better, arr, best)
+        best_i = np.where(better, i, best_i)
+        choice = np.where((choice < 0) & ok & (arr <= tol), i, choice)
+    fallback = np.where(best_i >= 0, best_i, len(spec.rungs) - 1)
+    return np.where(choice >= 0, choice, fallback)
+
+
+def take(x: Mapping[str, Any], n: int, sel: np.ndarray) -> dict[str, Any]:
+    """The inputs of the points ``sel`` selects (arrays of length ``n`` sliced, the rest as is)."""
+    return {
+        k: (v[sel] if isinstance(v, np.ndarray) and v.shape == (n,) else v) for k, v in x.items()
+    }
+
+
+def at(x: Mapping[str, Any], n: int, j: int) -> dict[str, Any]:
+    """The scalar inputs of point ``j``."""
+    return {
+        k: (v[j].item() if isinstance(v, np.ndarray) and v.shape == (n,) else v)
+        for k, v in x.items()
+    }
+
+
+@dataclass
+class Vector:
+    """What one array evaluation gave: a column per asked output, and which the model computed."""
+
+    values: dict[str, np.ndarray]
+    computed: frozenset[str]
+    notes: list[str]
+    warnings: list[str]
+
+
+def vector(
+    spec: ModelSpec,
+    x: Mapping[str, Any],
+    rung: str,
+    outputs: Sequence[str],
+    tol: float,
+    n: int,
+    dtype: Any = float,
+) -> Vector | None:
+    """The array path for ``n`` points, or None where the model has none for this rung.
+
+    An output the array version does not give is a NaN column (not in ``computed``);
+    if the scalar model gives it for this rung, the answer is None (the caller loops).
+    ``dtype=None`` keeps each column's own type (integers stay integers).
+    """
+    if spec.vectorized is None or rung not in spec.vector_rungs:
+        return None
+    ctx = RunContext(rung=rung, outputs=frozenset(outputs), tolerance=tol)
+    try:
+        with np.errstate(all="ignore"):
+            result = spec.vectorized(x, ctx)
+    except EngineError:
+        return None
+    except _ESTIMATE_FAILS:
+        # an array path written for one varied input may not broadcast several: loop
+        return None
+    missing = [name for name in outputs if name not in result.values]
+    if missing and scalar_gives(spec, x, ctx, missing):
+        return None  # an output the array version lacks but this rung gives: loop
+    values: dict[str, np.ndarray] = {}
+    for name in outputs:
+        if name not in result.values:
+            values[name] = np.full(n, np.nan)  # not computed by this rung
+            continue
+        try:
+            column = np.broadcast_to(np.asarray(result.values[name], dtype=dtype), (n,))
+        except (TypeError, ValueError):
+            return None
+        values[name] = column.copy()
+    computed = frozenset(name for name in outputs if name in result.values)
+    return Vector(values, computed, list(result.notes), list(result.warnings))
+
+
+def scalar_gives(
+    spec: ModelSpec, x: Mapping[str, Any], ctx: RunContext, names: Sequence[str]
+) -> bool:
+    """Whether the scalar model gives any of ``names`` at the first point of ``x``."""
+    first = {k: (v.flat[0].item() if isinstance(v, np.ndarray) else v) for k, v in x.items()}
+    try:
+        values = spec.compute(first, ctx).values
+    except EngineError:
+        return False
+    return any(values.get(name) is not None for name in names)
