@@ -82,6 +82,8 @@ from typing import Any, Literal
 import numpy as np
 import numpy.typing as npt
 
+from . import springs
+
 FloatArray = float | npt.NDArray[np.float64]
 Arrangement = Literal["common", "per_ball"]
 
@@ -298,11 +300,8 @@ def spring_rate(
     >>> round(spring_rate(8e10, 0.004, 0.045, 5), 3)
     5618.656
     """
-    return _out(
-        np.asarray(shear_modulus)
-        * np.asarray(wire_diameter) ** 4
-        / (8.0 * np.asarray(mean_diameter) ** 3 * active_coils)
-    )
+    # the same relation as EN 13906-1's rate: one implementation, in engine.springs
+    return springs.helical_rate(shear_modulus, wire_diameter, mean_diameter, active_coils)
 
 
 def spring_force(
@@ -409,8 +408,7 @@ def wahl_factor(index: FloatArray) -> FloatArray:
     >>> round(wahl_factor(11.25), 5)
     1.12784
     """
-    c = np.asarray(index, dtype=float)
-    return _out((4.0 * c - 1.0) / (4.0 * c - 4.0) + 0.615 / c)
+    return springs.wahl_factor(index)
 
 
 def spring_shear_stress(
@@ -445,9 +443,7 @@ def spring_shear_stress(
     >>> round(spring_shear_stress(22.4746, 0.045, 0.004) / 1e6, 2)
     45.38
     """
-    d = np.asarray(wire_diameter)
-    kw = wahl_factor(spring_index(mean_diameter, d))
-    return _out(8.0 * np.asarray(force) * np.asarray(mean_diameter) * kw / (np.pi * d**3))
+    return springs.helical_shear_stress(force, mean_diameter, wire_diameter, "wahl")
 
 
 # --------------------------------------------------------------------------
