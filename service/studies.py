@@ -42,34 +42,27 @@ from engine.study_exec import Cancelled, DaskExecutor, InProcess, StudyRun, run_
 
 from . import schemas
 from .api import _ERRORS, API_PREFIX
+from .config import _float, _int
 from .units import UnitError, to_si
 
 _KEEP_JOBS = 64
-
-
-def _env_int(name: str, default: int) -> int:
-    return int(os.environ.get(name, str(default)))
-
-
-def _env_float(name: str, default: float) -> float:
-    return float(os.environ.get(name, str(default)))
 
 
 @dataclass(frozen=True)
 class StudySettings:
     """Study bounds and the Dask cluster, from the environment (each has a default)."""
 
-    max_points: int = field(default_factory=lambda: _env_int("STUDY_MAX_POINTS", 2_000_000))
-    budget_s: float = field(default_factory=lambda: _env_float("STUDY_BUDGET_S", 600.0))
-    per_client: int = field(default_factory=lambda: _env_int("STUDY_PER_CLIENT", 2))
-    max_active: int = field(default_factory=lambda: _env_int("STUDY_MAX_ACTIVE", 4))
-    inprocess_points: int = field(default_factory=lambda: _env_int("STUDY_INPROCESS_POINTS", 2000))
-    keep_s: float = field(default_factory=lambda: _env_float("STUDY_KEEP_S", 3600.0))
-    keep_points_max: int = field(default_factory=lambda: _env_int("STUDY_KEEP_POINTS", 1_000_000))
+    max_points: int = field(default_factory=lambda: _int("STUDY_MAX_POINTS", 2_000_000))
+    budget_s: float = field(default_factory=lambda: _float("STUDY_BUDGET_S", 600.0))
+    per_client: int = field(default_factory=lambda: _int("STUDY_PER_CLIENT", 2))
+    max_active: int = field(default_factory=lambda: _int("STUDY_MAX_ACTIVE", 4))
+    inprocess_points: int = field(default_factory=lambda: _int("STUDY_INPROCESS_POINTS", 2000))
+    keep_s: float = field(default_factory=lambda: _float("STUDY_KEEP_S", 3600.0))
+    keep_points_max: int = field(default_factory=lambda: _int("STUDY_KEEP_POINTS", 1_000_000))
     dask_scheduler: str | None = field(
         default_factory=lambda: os.environ.get("DASK_SCHEDULER") or None
     )
-    dask_workers: int | None = field(default_factory=lambda: _env_int("DASK_WORKERS", 0) or None)
+    dask_workers: int | None = field(default_factory=lambda: _int("DASK_WORKERS", 0) or None)
 
 
 Number = float | str
