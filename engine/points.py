@@ -138,6 +138,8 @@ class Vector:
     computed: frozenset[str]
     notes: list[str]
     warnings: list[str]
+    #: Per check name, int8 per point: 1 passes, 0 fails, -1 not reported there.
+    checks: dict[str, np.ndarray]
 
 
 def vector(
@@ -180,7 +182,12 @@ def vector(
             return None
         values[name] = column.copy()
     computed = frozenset(name for name in outputs if name in result.values)
-    return Vector(values, computed, list(result.notes), list(result.warnings))
+    checks: dict[str, np.ndarray] = {}
+    for name, verdict in result.check_arrays.items():
+        arr = np.asarray(verdict)
+        codes = arr.astype(np.int8) if arr.dtype == bool else np.asarray(arr, dtype=np.int8)
+        checks[name] = np.broadcast_to(codes, (n,)).copy()
+    return Vector(values, computed, list(result.notes), list(result.warnings), checks)
 
 
 def scalar_gives(

@@ -275,6 +275,10 @@ class Result:
     notes: list[str] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
     series: dict[str, list[float]] = field(default_factory=dict)
+    #: Array paths only (:attr:`ModelSpec.vectorized`): per check name, which points pass,
+    #: as a bool array (or int8: 1 passes, 0 fails, -1 does not apply at that point).
+    #: The same names and verdicts the scalar compute gives in ``checks`` point by point.
+    check_arrays: dict[str, Any] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)

@@ -380,7 +380,8 @@ def evaluate_chunk(
     """Evaluate the points ``columns`` (equal-length arrays) of a study, in order.
 
     Points that share a rung run through the model's array path where it has
-    one for that rung (checks are then not reported: CHECK_UNKNOWN), else one
+    one for that rung (with its checks where the array path gives them, else
+    CHECK_UNKNOWN), else one
     by one through :func:`engine.run`. A refused point is NaN in every output.
     ``deadline_s`` is a budget for the whole chunk, in seconds. ``cancel`` (in-process
     only: an event does not travel to a Dask worker) stops the chunk at the next point or
@@ -437,6 +438,11 @@ def evaluate_chunk(
             if dead.any():
                 key = "not computable on the array path (an infeasible design)"
                 refusals[key] = refusals.get(key, 0) + int(dead.sum())
+            for name, codes in vec.checks.items():
+                arr = checks.get(name)
+                if arr is None:
+                    arr = checks[name] = np.full(n, CHECK_UNKNOWN, dtype=np.int8)
+                arr[sel] = np.where(dead, CHECK_UNKNOWN, codes)
             for j, is_dead in zip(np.flatnonzero(sel).tolist(), dead.tolist(), strict=True):
                 rungs[j] = None if is_dead else rung
     for j in np.flatnonzero(loop).tolist():
