@@ -400,7 +400,10 @@ class Spring:
         if self.kind == "disc":
             return x["disc_yield_strength"]
         if self.material is not None:
-            return sp.permissible_shear_stress(self.material.name, x["spring_wire_diameter"])
+            wire = x["spring_wire_diameter"]
+            if np.ndim(wire) > 0:  # a varied wire: NaN outside the table (refused there)
+                return 0.5 * np.asarray(sp.tensile_strength_array(self.material.name, wire))
+            return sp.permissible_shear_stress(self.material.name, wire)
         return x["allowable_shear_stress"]
 
 
@@ -514,6 +517,45 @@ def characteristic(x: Mapping[str, Any], spring: Spring, deflection: Any = None)
     return out
 
 
+#: Outputs only the whole characteristic gives (its peak); :func:`end_values` gives the rest.
+PEAK_OUTPUTS = (
+    "peak_torque",
+    "lift_at_peak",
+    "torque_at_rim",
+    "spring_force_at_peak",
+    "spring_stress_at_peak",
+)
+
+
+def end_values(x: Mapping[str, Any], spring: Spring) -> dict[str, Any]:
+    """The characteristic's values at its ends, helical springs only (no 81-point grid).
+
+    A helical spring's force and stress rise with its deflection and the lift rises
+    along the grid, so their maxima are at the last point (riding on the face): the
+    same floats :func:`characteristic` takes from its last column, for a study that
+    asks for none of :data:`PEAK_OUTPUTS`.
+    """
+    h = np.asarray(lift_of(x), float)
+    a = np.asarray(x["groove_angle"], float)
+    r = np.asarray(x["ball_diameter"], float) / 2.0
+    beta_end = a + 1.0 * (math.pi / 2.0 - a)  # the characteristic's last rim angle
+    total_lift = h + r * (np.sin(beta_end) - np.sin(a))
+    total = np.asarray(x["spring_deflection"], float) + total_lift
+    force = spring.force(total)
+    out: dict[str, Any] = {
+        "total_lift": total_lift,
+        "flank_lift": 1.0 * h,
+        "spring_force_max": force,
+        "spring_stress_max": spring.stress(total),
+    }
+    if x["face_friction"] is not None:
+        springs = x["ball_count"] if x["spring_arrangement"] == "per_ball" else 1.0
+        out["residual_torque"] = residual_torque(
+            force, x["ball_circle_diameter"], x["face_friction"], springs
+        )
+    return out
+
+
 def margin(x: Mapping[str, Any]) -> Any:
     """Self-locking margin α − atan f, the smaller over the inclined flanks."""
     rho = np.arctan(x["flank_friction"])
@@ -523,10 +565,19 @@ def margin(x: Mapping[str, Any]) -> Any:
     return m
 
 
-def extra_values(x: Mapping[str, Any], spring: Spring, limit: Any) -> dict[str, Any]:
-    """Every as-built scalar of clutch.ball (arrays when one input is an array)."""
-    c = characteristic(x, spring)
-    values = {k: v for k, v in c.items() if not k.startswith("_")}
+def extra_values(
+    x: Mapping[str, Any], spring: Spring, limit: Any, peak: bool = True
+) -> dict[str, Any]:
+    """Every as-built scalar of clutch.ball (arrays when inputs are arrays).
+
+    ``peak=False`` (helical springs): all but :data:`PEAK_OUTPUTS`, without the
+    81-point characteristic (:func:`end_values`).
+    """
+    if peak or spring.kind != "helical":
+        c = characteristic(x, spring)
+        values = {k: v for k, v in c.items() if not k.startswith("_")}
+    else:
+        values = end_values(x, spring)
     values["self_locking_margin"] = margin(x)
     values["friction_sensitivity"] = friction_sensitivity(
         limit, x["groove_angle"], x["flank_friction"], x["driving_groove_angle"]
@@ -538,10 +589,15 @@ def extra_values(x: Mapping[str, Any], spring: Spring, limit: Any) -> dict[str, 
             values["natural_frequency"] = sp.helical_natural_frequency(
                 d, dm, n, spring.shear_modulus, spring.material.density
             )
-            if np.ndim(d) == 0:
-                values["tensile_strength"] = sp.tensile_strength(spring.material.name, d)
-        scalar = all(np.ndim(a) == 0 for a in (x["spring_free_length"], dm, values["peak_torque"]))
-        if x["spring_free_length"] is not None and scalar:
+            values["tensile_strength"] = (
+                sp.tensile_strength(spring.material.name, d)
+                if np.ndim(d) == 0
+                else sp.tensile_strength_array(spring.material.name, d)
+            )
+        scalar = all(
+            np.ndim(a) == 0 for a in (x["spring_free_length"], dm, values["spring_force_max"])
+        )
+        if x["spring_free_length"] is not None:
             e_mod = (
                 spring.material.elastic_modulus if spring.material else 2.6 * spring.shear_modulus
             )
@@ -552,8 +608,12 @@ def extra_values(x: Mapping[str, Any], spring: Spring, limit: Any) -> dict[str, 
                 spring.shear_modulus,
                 e_mod,
             )
-            # inf: the spring cannot buckle; said as null (and in the check), never inf
-            values["buckling_deflection"] = None if math.isinf(float(s_k)) else s_k
+            # inf: the spring cannot buckle; said as null (and in the check), never inf;
+            # on arrays NaN there (null in a sweep, as the loop gives it)
+            if scalar:
+                values["buckling_deflection"] = None if math.isinf(float(s_k)) else s_k
+            else:
+                values["buckling_deflection"] = np.where(np.isinf(s_k), np.nan, s_k)
     else:
         single = sp.disc_force_flat(
             x["disc_outer_diameter"],

@@ -32,6 +32,8 @@ from ..clutch import (
     wahl_factor,
     wire_diameter_for_force,
 )
+from .. import springs as sp
+from ..clutch import SELF_LOCKING_MARGIN
 from ..errors import InfeasibleDesign, InputOutOfRange
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
 from . import _clutch_asbuilt as asbuilt
@@ -375,11 +377,14 @@ ASSUMPTIONS = (
 )
 
 
-def _forward_values(x: Mapping[str, Any], as_built: bool = True) -> dict[str, Any]:
+def _forward_values(
+    x: Mapping[str, Any], as_built: bool = True, peak: bool = True
+) -> dict[str, Any]:
     """Every output of clutch.ball, on floats or arrays (one input may be an array).
 
     ``as_built=False`` leaves out the characteristic (81 lifts per point), for long
-    sweeps that ask only for the paper's outputs.
+    sweeps that ask only for the paper's outputs; ``peak=False`` leaves out only the
+    outputs at the characteristic's peak (:data:`asbuilt.PEAK_OUTPUTS`).
     """
     spring = asbuilt.Spring(x)
     alpha, f, kr = x["groove_angle"], x["flank_friction"], x["load_factor"]
@@ -418,7 +423,7 @@ def _forward_values(x: Mapping[str, Any], as_built: bool = True) -> dict[str, An
         values["spring_shear_stress"] = spring_shear_stress(force, dm, d0)
         values["spring_rate"] = spring_rate(spring.shear_modulus, d0, dm, x["spring_active_coils"])
     if as_built:
-        values.update(asbuilt.extra_values(x, spring, limit))
+        values.update(asbuilt.extra_values(x, spring, limit, peak))
     return values
 
 
@@ -496,45 +501,157 @@ def _feasible_mask(x: Mapping[str, Any], wire: Any) -> npt.NDArray[np.bool_]:
     return np.asarray(ok, dtype=bool)
 
 
+def _spring_mask(x: Mapping[str, Any], wire: Any) -> npt.NDArray[np.bool_]:
+    """Where :func:`asbuilt.require_spring` would not refuse the spring's numbers.
+
+    Its other refusals (a missing input) are the same at every point of a study: the
+    array paths leave those to the scalar compute.
+    """
+    if x["spring_type"] == "disc":
+        return np.asarray(
+            np.asarray(x["disc_inner_diameter"]) * 1.05 < np.asarray(x["disc_outer_diameter"])
+        )
+    if wire is not None and x["spring_material"] != "custom":
+        inside = np.isfinite(sp.tensile_strength_array(x["spring_material"], wire))
+        return np.asarray(inside, dtype=bool)
+    return np.asarray(True)
+
+
 def _masked(values: Mapping[str, Any], ok: npt.NDArray[np.bool_]) -> dict[str, Any]:
     return {k: np.where(ok, np.asarray(v, dtype=float), np.nan) for k, v in values.items()}
 
 
-def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    if x["spring_type"] != "helical" or x["spring_wire_diameter"] is None:
-        # disc springs (and refusals) go point by point through the scalar compute
-        return Result(values={}, rung=ctx.rung, error_estimate=None)
-    if x["spring_material"] != "custom" and np.ndim(x["spring_wire_diameter"]) > 0:
-        return Result(values={}, rung=ctx.rung, error_estimate=None)
-    as_built = any(ctx.wants(o.name) for o in asbuilt.outputs())
-    with np.errstate(all="ignore"):
-        values = _masked(
-            _chunked_forward(x, as_built), _feasible_mask(x, x["spring_wire_diameter"])
+def _array_inputs(x: Mapping[str, Any]) -> int | None:
+    """The length of the varied inputs (equal-length columns), or None where none varies."""
+    sizes = {v.shape[0] for v in x.values() if isinstance(v, np.ndarray) and v.ndim == 1}
+    return sizes.pop() if len(sizes) == 1 else None
+
+
+def _verdicts(ok: Any, where: Any) -> npt.NDArray[np.int8]:
+    """int8 verdicts: 1 passes, 0 fails, -1 where the point is refused (``where`` False)."""
+    return np.where(where, np.asarray(ok, dtype=np.int8), np.int8(-1)).astype(np.int8)
+
+
+def _ball_check_arrays(
+    x: Mapping[str, Any], v: Mapping[str, Any], spring: asbuilt.Spring, ok: Any
+) -> dict[str, npt.NDArray[np.int8]]:
+    """The verdicts of :func:`_compute_ball`'s checks on arrays, the same comparisons.
+
+    ``v`` holds the array path's values before masking; ``ok`` is where the scalar
+    compute would not refuse the point (-1 elsewhere, as the loop leaves it unknown).
+    """
+    lo, hi = WORKABLE_SPRING_INDEX
+    out: dict[str, Any] = {}
+    helical = spring.kind == "helical"
+    if helical:
+        index = np.asarray(v["spring_index"])
+        out["spring_index"] = (lo <= index) & (index <= hi)
+        if x["allowable_shear_stress"] is not None:
+            out["spring_shear_stress"] = (
+                np.asarray(v["spring_shear_stress"]) <= x["allowable_shear_stress"]
+            )
+    out["groove_depth"] = np.asarray(asbuilt.lift_of(x)) <= np.asarray(x["ball_diameter"]) / 2.0
+    a_lo, a_hi = RECOMMENDED_GROOVE_ANGLE
+    alpha = np.asarray(x["groove_angle"])
+    out["groove_angle"] = (a_lo <= alpha) & (alpha <= a_hi)
+    if x["torque"] is not None:
+        out["torque_below_limit"] = np.asarray(x["torque"]) <= np.asarray(v["torque_limit"])
+    # the as-built checks (asbuilt.checks)
+    out["self_locking"] = np.asarray(v["self_locking_margin"]) >= SELF_LOCKING_MARGIN
+    allow = spring.permissible()
+    if allow is not None:
+        out["spring_stress_max"] = np.asarray(v["spring_stress_max"]) <= np.asarray(allow)
+    travel = np.asarray(x["spring_deflection"]) + np.asarray(v["total_lift"])
+    if not helical:
+        m = np.asarray(x["disc_series"])
+        t, h0 = np.asarray(x["disc_thickness"]), np.asarray(x["disc_cone_height"])
+        out["disc_not_past_flat"] = travel / m <= h0
+        # sp.disc_falling_region on arrays: (a - √(3a² - 6)/3)·t at the force maximum
+        a = h0 / t
+        disc = 3.0 * a * a - 6.0
+        s_max = (a - np.sqrt(np.where(disc > 0.0, disc, 0.0)) / 3.0) * t
+        setting = np.asarray(x["spring_deflection"]) / m
+        out["falling_curve"] = (disc > 0.0) & (
+            setting + np.asarray(v["total_lift"]) / m > s_max
         )
+    elif x["spring_free_length"] is not None:
+        d, dm, n = x["spring_wire_diameter"], x["spring_mean_diameter"], x["spring_active_coils"]
+        need = np.asarray(sp.solid_length(d, n) + sp.minimum_gap_sum(d, dm, n))
+        out["solid_length"] = np.asarray(x["spring_free_length"]) - travel >= need
+        s_k = np.asarray(v["buckling_deflection"], dtype=float)
+        out["buckling"] = travel < np.where(np.isnan(s_k), np.inf, s_k)
+    if x["face_friction"] is not None:
+        out["residual_torque"] = np.asarray(v["residual_torque"]) <= asbuilt.RESIDUAL_SHARE * (
+            np.asarray(v["peak_torque"])
+        )
+    return {name: _verdicts(verdict, ok) for name, verdict in out.items()}
+
+
+def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    """clutch.ball on arrays: every output and check the scalar compute gives, point by point.
+
+    Several inputs may vary at once (a design study); helical springs of any material
+    and disc stacks. A point the scalar compute refuses (the balls wedge, no coil, a
+    wire off the material's table, a disc ring too narrow) is NaN in every output and
+    -1 in every check. Inputs missing for the spring type go to the scalar compute
+    (it names the field).
+    """
+    helical = x["spring_type"] == "helical"
+    needed = (
+        ("spring_wire_diameter", "spring_mean_diameter", "spring_active_coils")
+        if helical
+        else ("disc_outer_diameter", "disc_inner_diameter", "disc_thickness", "disc_cone_height")
+    )
+    if any(x[name] is None for name in needed):
+        return Result(values={}, rung=ctx.rung, error_estimate=None)
+    wire = x["spring_wire_diameter"] if helical else None
+    with np.errstate(all="ignore"):
+        ok = _feasible_mask(x, wire) & _spring_mask(x, wire)
+        # the 81-point characteristic only where an output or a check needs its peak
+        peak = not helical or x["face_friction"] is not None or ctx.wants(*asbuilt.PEAK_OUTPUTS)
+        values = _chunked_forward(x, peak)
+        spring = asbuilt.Spring(x)
+        check_arrays = _ball_check_arrays(x, values, spring, ok)
+        values = _masked({k: v for k, v in values.items() if v is not None}, ok)
     return Result(
         values=values,
         rung=ctx.rung,
         error_estimate=None,
         notes=[f"spring_arrangement = {x['spring_arrangement']}; see a single run's notes"],
+        check_arrays=check_arrays,
     )
 
 
-#: Points of a swept input evaluated at once (the characteristic holds 81 per point).
+#: Points evaluated at once (the characteristic holds 81 per point).
 _CHUNK = 20_000
 
 
-def _chunked_forward(x: Mapping[str, Any], as_built: bool = True) -> dict[str, Any]:
-    """:func:`_forward_values` over a long swept input, a chunk at a time (bounded memory)."""
-    swept = [k for k, v in x.items() if isinstance(v, np.ndarray) and v.ndim > 0]
-    if not as_built or not swept or np.size(x[swept[0]]) <= _CHUNK:
-        return _forward_values(x, as_built)
-    key, arr = swept[0], np.asarray(x[swept[0]])
-    parts = [_forward_values({**x, key: arr[i : i + _CHUNK]}) for i in range(0, arr.size, _CHUNK)]
+def _chunked_forward(x: Mapping[str, Any], peak: bool = True) -> dict[str, Any]:
+    """:func:`_forward_values` over long varied inputs, a chunk at a time (bounded memory)."""
+    n = _array_inputs(x)
+    if n is None or n <= _CHUNK:
+        return _forward_values(x, peak=peak)
+    parts = [
+        _forward_values(
+            {
+                k: (v[i : i + _CHUNK] if isinstance(v, np.ndarray) and v.shape == (n,) else v)
+                for k, v in x.items()
+            },
+            peak=peak,
+        )
+        for i in range(0, n, _CHUNK)
+    ]
     return {
-        k: np.concatenate([np.broadcast_to(p[k], np.shape(arr[i * _CHUNK : (i + 1) * _CHUNK]))
-                           for i, p in enumerate(parts)])
+        k: None
+        if parts[0][k] is None
+        else np.concatenate(
+            [
+                np.broadcast_to(np.asarray(p[k], dtype=float), (min(_CHUNK, n - i * _CHUNK),))
+                for i, p in enumerate(parts)
+            ]
+        )
         for k in parts[0]
-    }  # fmt: skip
+    }
 
 
 BALL_CLUTCH = ModelSpec(
