@@ -1166,3 +1166,157 @@ def sizing(x: Mapping[str, Any]) -> dict[str, Any]:
         out["start_torque"] = start
     out["required_slip_torque"] = float(cl_required_slip_torque(rated, x["service_factor"], start))
     return out
+
+
+# --------------------------------------------------------------------------
+# The inverse on arrays (clutch.ball_setting's array path), helical springs
+# --------------------------------------------------------------------------
+
+
+def _at_point(x: Mapping[str, Any], j: int) -> dict[str, Any]:
+    """The scalar inputs of point ``j`` of equal-length columns."""
+    return {k: (v[j].item() if isinstance(v, np.ndarray) and v.ndim == 1 else v) for k, v in x.items()}
+
+
+class SettingGrid:
+    """The characteristic of a helical spring as lines in the nut setting δ, for a study.
+
+    With the balls at grid point k of :func:`characteristic` the spring is compressed
+    by δ + L_k(δ), L_k = p_k δ + q_k (p_k the flank share of a lift equal to δ when
+    ``ball_lift`` is absent, else 0), and the torque is T_k = G_k c (δ + L_k), with
+    G_k = s D0/(2 tan(β_k − ρ)) and c the spring rate. Every T_k rises with δ, so the
+    peak torque reaches a target T first at δ* = min_k (T/(G_k c) − q_k)/(1 + p_k):
+    the root :func:`solve_setting` brackets and refines point by point.
+    """
+
+    def __init__(self, x: Mapping[str, Any]) -> None:
+        h_given = x["ball_lift"] is not None
+        d, alpha = np.broadcast_arrays(
+            np.asarray(x["ball_diameter"], float), np.asarray(x["groove_angle"], float)
+        )
+        r, a = d[..., None] / 2.0, alpha[..., None]
+        u = np.linspace(0.0, 1.0, POINTS)
+        v = np.linspace(0.0, 1.0, POINTS)[1:]
+        beta_rim = a + v * (math.pi / 2.0 - a)
+        rim = r * (np.sin(beta_rim) - np.sin(a))
+        shape = np.broadcast_shapes(rim.shape[:-1] + (2 * POINTS - 1,), a.shape)
+        if h_given:
+            h = np.asarray(x["ball_lift"], float)[..., None]
+            self.p = np.zeros(shape)
+            self.q = np.broadcast_to(np.concatenate([u * h, h + rim], axis=-1), shape)
+        else:
+            self.p = np.broadcast_to(np.concatenate([u, np.ones(POINTS - 1)]), shape)
+            self.q = np.broadcast_to(
+                np.concatenate([np.zeros(a.shape[:-1] + (POINTS,)), rim], axis=-1), shape
+            )
+        beta = np.concatenate([np.broadcast_to(a, a.shape[:-1] + (POINTS,)), beta_rim], axis=-1)
+        xs = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
+        push = combined_push_factor(beta, xs["flank_friction"], xs["driving_groove_angle"])
+        self.gain = np.asarray(_sharing(xs)) * np.asarray(xs["ball_circle_diameter"]) / (2.0 * push)
+        # the lines rise with δ only where every push is positive and finite
+        self.regular = np.all(np.isfinite(self.gain) & (self.gain > 0.0), axis=-1)
+
+    def setting(self, rate: Any, target: Any, upper: Any) -> Any:
+        """δ* for the target peak torque, NaN where none in [0, upper] gives it."""
+        rate = np.asarray(rate, float)[..., None]
+        target = np.asarray(target, float)[..., None]
+        delta = np.min((target / (self.gain * rate) - self.q) / (1.0 + self.p), axis=-1)
+        return np.where((delta >= 0.0) & (delta <= upper), delta, np.nan)
+
+
+def peak_setting_arrays(
+    x: Mapping[str, Any], grid: SettingGrid, spring: Spring, target: Any, force: Any
+) -> tuple[Any, Any]:
+    """(setting, largest stress over the lift) of :func:`_peak_setting` on arrays; NaN: None.
+
+    Helical springs only. A point where the lines do not all rise (a push ≤ 0 on the
+    driving flank) is solved by :func:`_peak_setting` itself.
+    """
+    rate = np.asarray(spring.force(1.0), float)
+    upper = np.maximum(np.asarray(force) / rate, 1e-9) * 1.000001
+    delta = np.asarray(grid.setting(rate, target, upper))
+    stress = np.asarray(end_values({**x, "spring_deflection": delta}, spring)["spring_stress_max"])
+    n = delta.size if delta.ndim else 0
+    if not np.all(grid.regular):
+        delta, stress = np.array(delta, float, ndmin=1), np.array(stress, float, ndmin=1)
+        for j in np.flatnonzero(~np.broadcast_to(grid.regular, delta.shape)).tolist():
+            point = _at_point(x, j) if n else dict(x)
+            found = _peak_setting(
+                point,
+                Spring(point),
+                float(np.broadcast_to(target, delta.shape)[j]),
+                float(np.broadcast_to(force, delta.shape)[j]),
+            )
+            delta[j], stress[j] = (np.nan, np.nan) if found is None else found
+    return delta, stress
+
+
+def suggest_wire_arrays(
+    x: Mapping[str, Any], grid: SettingGrid, target: Any, force: Any
+) -> dict[str, Any]:
+    """:func:`_suggest_wire` on arrays: the thinnest preferred wire that works, per point.
+
+    The same candidates in the same order and the same conditions (spring index 4…12,
+    inside the material's table, a peak setting within the permissible stress, not
+    solid at the largest deflection); NaN where none works.
+    """
+    if x["spring_material"] == "custom" and x["allowable_shear_stress"] is None:
+        return {}
+    dm = np.asarray(x["spring_mean_diameter"], float)
+    shape = np.broadcast_shapes(
+        dm.shape, np.shape(target), np.shape(force), grid.gain.shape[:-1]
+    )
+    wire = np.full(shape, np.nan)
+    setting = np.full(shape, np.nan)
+    open_ = np.ones(shape, dtype=bool)
+    for d_mm in sp.STANDARD_WIRE_DIAMETERS:
+        d = d_mm * 1e-3
+        index = dm / d
+        trying = open_ & (4.0 <= index) & (index <= 12.0)
+        if not trying.any():
+            if not np.any(open_ & (index > 12.0)):
+                break  # every open point's coil is too small for this wire and thicker ones
+            continue
+        trial = {**x, "spring_wire_diameter": d}
+        spring = Spring(trial)
+        try:
+            allow = spring.permissible()
+        except InputOutOfRange:
+            continue  # outside the material's table
+        if allow is None:
+            continue
+        delta, stress = peak_setting_arrays(trial, grid, spring, target, force)
+        fits = trying & np.isfinite(delta) & (stress <= float(allow))
+        if x["spring_free_length"] is not None:
+            total_lift = end_values({**trial, "spring_deflection": delta}, spring)["total_lift"]
+            travel = delta + total_lift
+            coils = x["spring_active_coils"]
+            room = np.asarray(sp.solid_length(d, coils), float) + np.asarray(
+                sp.minimum_gap_sum(d, dm, coils), float
+            )
+            fits &= ~(x["spring_free_length"] - travel < room)
+        wire = np.where(fits, d, wire)
+        setting = np.where(fits, delta, setting)
+        open_ &= ~fits
+        if not open_.any():
+            break
+    return {"suggested_wire_diameter": wire, "suggested_wire_setting": setting}
+
+
+def sizing_arrays(x: Mapping[str, Any]) -> dict[str, Any]:
+    """:func:`sizing` on arrays (the same formulas; {} without a drive)."""
+    if x["drive_torque"] is not None:
+        rated = np.asarray(x["drive_torque"], float)
+    elif x["drive_power"] is not None and x["drive_speed"] is not None:
+        rated = np.asarray(cl_rated_torque(x["drive_power"], x["drive_speed"]), float)
+    else:
+        return {}
+    out: dict[str, Any] = {"rated_drive_torque": rated}
+    start: Any = 0.0
+    if all(x[k] is not None for k in ("drive_start_torque", "drive_inertia", "load_inertia")):
+        start = cl_acceleration_torque(
+            x["drive_start_torque"], x["drive_inertia"], x["load_inertia"]
+        )
+        out["start_torque"] = start
+    out["required_slip_torque"] = cl_required_slip_torque(rated, x["service_factor"], start)
+    return out

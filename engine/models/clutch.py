@@ -988,20 +988,95 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 
 def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    """clutch.ball_setting on arrays: every output and check of the scalar compute, helical.
+
+    Several inputs may vary at once. The peak setting and the suggested wire come
+    from :class:`asbuilt.SettingGrid` (the characteristic's lines in the setting)
+    instead of a root search per point. NaN (and -1 in the checks) where the scalar
+    compute refuses the point or leaves an output null. Disc stacks, and inputs
+    missing for the spring or the target, go to the scalar compute.
+    """
+    helical = x["spring_type"] == "helical"
+    wire, deflection = x["spring_wire_diameter"], x["spring_deflection"]
     if (
-        x["target_torque"] is None
-        or x["spring_type"] != "helical"
-        or (x["spring_wire_diameter"] is None and x["spring_deflection"] is None)
+        not helical
+        or (wire is None and deflection is None)
+        or x["spring_mean_diameter"] is None
+        or x["spring_active_coils"] is None
     ):
         return Result(values={}, rung=ctx.rung, error_estimate=None)
     with np.errstate(all="ignore"):
-        values = _setting_values(x)
-        values = _masked(values, _feasible_mask(x, x["spring_wire_diameter"]))
+        drive = asbuilt.sizing_arrays(x)
+        target_given = x["target_torque"] is not None
+        if not target_given:
+            if not drive:
+                return Result(values={}, rung=ctx.rung, error_estimate=None)
+            x = {**x, "target_torque": drive["required_slip_torque"]}
+        ok = _feasible_mask(x, wire) & _spring_mask(x, wire)
+        v: dict[str, Any] = dict(_setting_values(x))
+        force = v["required_spring_force"]
+        grid = asbuilt.SettingGrid(x)
+        if wire is not None:
+            spring = asbuilt.Spring(x)
+            v["required_peak_setting"], v["peak_setting_stress_max"] = (
+                asbuilt.peak_setting_arrays(x, grid, spring, x["target_torque"], force)
+            )
+        v.update(asbuilt.suggest_wire_arrays(x, grid, x["target_torque"], force))
+        v.update(drive)
+        check_arrays = _setting_check_arrays(x, v, drive, ok, target_given)
+        values = _masked(v, ok)
     return Result(
         values=values,
         rung=ctx.rung,
         error_estimate=None,
+        check_arrays=check_arrays,
     )
+
+
+def _setting_check_arrays(
+    x: Mapping[str, Any],
+    v: Mapping[str, Any],
+    drive: Mapping[str, Any],
+    ok: Any,
+    target_given: bool,
+) -> dict[str, npt.NDArray[np.int8]]:
+    """The verdicts of :func:`_compute_setting`'s checks on arrays (helical springs).
+
+    -1 where the point is refused (``ok`` False) or the scalar compute does not report
+    the check there (no coil for the required wire, no peak setting).
+    """
+    lo, hi = WORKABLE_SPRING_INDEX
+    allow = x["allowable_shear_stress"]
+    d_half = np.asarray(x["ball_diameter"]) / 2.0
+    out: dict[str, Any] = {}
+    if x["spring_wire_diameter"] is not None:
+        index = np.asarray(v["spring_index"])
+        out["spring_index"] = (lo <= index) & (index <= hi)
+        if allow is not None:
+            out["spring_shear_stress"] = np.asarray(v["spring_shear_stress"]) <= allow
+        lift = asbuilt.lift_of(x, v["required_deflection"])
+        out["required_deflection_groove_depth"] = np.asarray(lift) <= d_half
+    if x["spring_deflection"] is not None:
+        index = np.asarray(v["required_wire_spring_index"])
+        no_coil = index <= 1.0
+        out["required_wire_spring_index"] = (lo <= index) & (index <= hi) & ~no_coil
+        if allow is not None:
+            stress_ok = np.asarray(v["required_wire_shear_stress"]) <= allow
+            out["required_wire_shear_stress"] = np.where(no_coil, -1, stress_ok)
+        lift = asbuilt.lift_of(x, x["spring_deflection"])
+        out["groove_depth"] = np.asarray(lift) <= d_half
+    if "peak_setting_stress_max" in v:
+        limit = asbuilt.Spring(x).permissible()
+        if limit is not None:
+            peak = np.asarray(v["peak_setting_stress_max"])
+            out["peak_setting_stress_max"] = np.where(np.isnan(peak), -1, peak <= limit)
+    a_lo, a_hi = RECOMMENDED_GROOVE_ANGLE
+    alpha = np.asarray(x["groove_angle"])
+    out["groove_angle"] = (a_lo <= alpha) & (alpha <= a_hi)
+    if drive and target_given:
+        required = np.asarray(drive["required_slip_torque"])
+        out["target_covers_drive"] = np.asarray(x["target_torque"]) >= required
+    return {name: _verdicts(verdict, ok) for name, verdict in out.items()}
 
 
 BALL_CLUTCH_SETTING = ModelSpec(
