@@ -455,8 +455,17 @@ def lift_of(x: Mapping[str, Any], deflection: Any = None) -> Any:
     return x["spring_deflection"] if deflection is None else deflection
 
 
-def characteristic(x: Mapping[str, Any], spring: Spring, deflection: Any = None) -> dict[str, Any]:
-    """Torque, spring force and stress against lift; arrays with the lift on the last axis."""
+def characteristic(
+    x: Mapping[str, Any], spring: Spring, deflection: Any = None, curves: bool = False
+) -> dict[str, Any]:
+    """Torque, spring force and stress against lift; arrays with the lift on the last axis.
+
+    The curves themselves (keys ``_lift``, ``_torque``, ``_force``, ``_stress``) only with
+    ``curves=True``. A helical spring's stress is evaluated only where it is read (at the
+    peak torque and at the largest force, where it is largest: it is proportional to the
+    force), the same floats the whole curve would hold there.
+    """
+    flat_spring = spring
     preload = np.asarray(x["spring_deflection"] if deflection is None else deflection, float)
     h, d, alpha = np.broadcast_arrays(
         np.asarray(lift_of(x, deflection), float),
@@ -467,20 +476,25 @@ def characteristic(x: Mapping[str, Any], spring: Spring, deflection: Any = None)
     u = np.linspace(0.0, 1.0, POINTS)
     v = np.linspace(0.0, 1.0, POINTS)[1:]
     beta_rim = a + v * (math.pi / 2.0 - a)
+    # A helical spring's force rises with the lift and the flank's push is constant, so
+    # on the flank the torque rises to the rim: the grid's peak and maxima lie from the
+    # rim on. Without the curves, only those points are evaluated (the same floats).
+    first = POINTS - 1 if spring.kind == "helical" and not curves else 0
     lift = np.concatenate(
-        [np.broadcast_to(u * h, np.broadcast_shapes(h.shape, u.shape)),
+        [np.broadcast_to(u[first:] * h, np.broadcast_shapes(h.shape, u[first:].shape)),
          h + r * (np.sin(beta_rim) - np.sin(a))],
         axis=-1,
     )  # fmt: skip
     beta = np.concatenate(
-        [np.broadcast_to(a, np.broadcast_shapes(a.shape, u.shape)), beta_rim], axis=-1
+        [np.broadcast_to(a, np.broadcast_shapes(a.shape, u[first:].shape)), beta_rim], axis=-1
     )
     # a swept input (an array) gets a trailing axis so it broadcasts against the lift
     x = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
     spring = Spring(x)
     total = preload[..., None] + lift
     force = spring.force(total)
-    stress = spring.stress(total)
+    helical = spring.kind == "helical"
+    stress = None if helical and not curves else spring.stress(total)
     push = combined_push_factor(beta, x["flank_friction"], x["driving_groove_angle"])
     # x's arrays already carry the trailing (lift) axis
     torque = np.asarray(_sharing(x)) * np.asarray(x["ball_circle_diameter"]) * force / (2.0 * push)
@@ -489,22 +503,29 @@ def characteristic(x: Mapping[str, Any], spring: Spring, deflection: Any = None)
     def at(arr: Any, idx: Any) -> Any:
         return np.take_along_axis(np.broadcast_to(arr, torque.shape), idx, axis=-1)[..., 0]
 
-    rim = np.full_like(peak, POINTS - 1)
+    rim = np.full_like(peak, POINTS - 1 - first)
+    forces = np.broadcast_to(force, torque.shape)
     out: dict[str, Any] = {
         "peak_torque": at(torque, peak),
         "lift_at_peak": at(lift, peak),
         "torque_at_rim": at(torque, rim),
         "total_lift": lift[..., -1],
-        "flank_lift": lift[..., POINTS - 1],
+        "flank_lift": lift[..., POINTS - 1 - first],
         "spring_force_at_peak": at(force, peak),
-        "spring_stress_at_peak": at(stress, peak),
-        "spring_force_max": np.max(np.broadcast_to(force, torque.shape), axis=-1),
-        "spring_stress_max": np.max(np.broadcast_to(stress, torque.shape), axis=-1),
-        "_lift": lift,
-        "_torque": torque,
-        "_force": np.broadcast_to(force, torque.shape),
-        "_stress": np.broadcast_to(stress, torque.shape),
+        "spring_force_max": np.max(forces, axis=-1),
     }
+    if helical:
+        top = np.argmax(forces, axis=-1)[..., None]
+        out["spring_stress_at_peak"] = flat_spring.stress(at(total, peak))
+        out["spring_stress_max"] = flat_spring.stress(at(total, top))
+    else:
+        out["spring_stress_at_peak"] = at(stress, peak)
+        out["spring_stress_max"] = np.max(np.broadcast_to(stress, torque.shape), axis=-1)
+    if curves:
+        out["_lift"] = lift
+        out["_torque"] = torque
+        out["_force"] = forces
+        out["_stress"] = np.broadcast_to(stress, torque.shape)
     if x["face_friction"] is not None:
         springs = x["ball_count"] if x["spring_arrangement"] == "per_ball" else 1.0
         residual = residual_torque(
@@ -631,7 +652,7 @@ def extra_values(
 
 def series(x: Mapping[str, Any], spring: Spring) -> dict[str, list[float]]:
     """The characteristic as series for the form's plot (scalar inputs only)."""
-    c = characteristic(x, spring)
+    c = characteristic(x, spring, curves=True)
     return {
         "lift": np.asarray(c["_lift"]).ravel().tolist(),
         "torque_curve": np.asarray(c["_torque"]).ravel().tolist(),

@@ -527,6 +527,23 @@ def _array_inputs(x: Mapping[str, Any]) -> int | None:
     return sizes.pop() if len(sizes) == 1 else None
 
 
+def _with_absent(
+    values: dict[str, Any], outputs: tuple[Output, ...], skip: tuple[str, ...] = ()
+) -> dict[str, Any]:
+    """``values`` with None for every scalar output the scalar compute does not give here.
+
+    The array paths mirror the scalar compute's branches (which outputs exist depends only
+    on inputs that are the same at every point), so an output they leave out is one the
+    scalar compute leaves out too: None tells :func:`engine.points.vector` so, sparing a
+    scalar run to find out. ``skip``: outputs left out for speed (the caller loops if asked).
+    """
+    out: dict[str, Any] = dict(values)
+    for o in outputs:
+        if not o.series and o.name not in out and o.name not in skip:
+            out[o.name] = None
+    return out
+
+
 def _verdicts(ok: Any, where: Any) -> npt.NDArray[np.int8]:
     """int8 verdicts: 1 passes, 0 fails, -1 where the point is refused (``where`` False)."""
     return np.where(where, np.asarray(ok, dtype=np.int8), np.int8(-1)).astype(np.int8)
@@ -614,7 +631,7 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
         check_arrays = _ball_check_arrays(x, values, spring, ok)
         values = _masked({k: v for k, v in values.items() if v is not None}, ok)
     return Result(
-        values=values,
+        values=_with_absent(values, BALL_CLUTCH.outputs, () if peak else asbuilt.PEAK_OUTPUTS),
         rung=ctx.rung,
         error_estimate=None,
         notes=[f"spring_arrangement = {x['spring_arrangement']}; see a single run's notes"],
@@ -1026,7 +1043,7 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         check_arrays = _setting_check_arrays(x, v, drive, ok, target_given)
         values = _masked(v, ok)
     return Result(
-        values=values,
+        values=_with_absent(values, BALL_CLUTCH_SETTING.outputs),
         rung=ctx.rung,
         error_estimate=None,
         check_arrays=check_arrays,
