@@ -1203,45 +1203,42 @@ class SettingGrid:
     """The characteristic of a helical spring as lines in the nut setting δ, for a study.
 
     With the balls at grid point k of :func:`characteristic` the spring is compressed
-    by δ + L_k(δ), L_k = p_k δ + q_k (p_k the flank share of a lift equal to δ when
-    ``ball_lift`` is absent, else 0), and the torque is T_k = G_k c (δ + L_k), with
-    G_k = s D0/(2 tan(β_k − ρ)) and c the spring rate. Every T_k rises with δ, so the
-    peak torque reaches a target T first at δ* = min_k (T/(G_k c) − q_k)/(1 + p_k):
-    the root :func:`solve_setting` brackets and refines point by point.
+    by δ + L_k(δ), L_k = p_k δ + q_k (p_k = 1 from the rim on when the lift is the
+    setting itself, ``ball_lift`` absent; else 0), and the torque is T_k = G_k c (δ + L_k),
+    G_k = s D0/(2 tan(β_k − ρ)), c the spring rate. Every T_k rises with δ, so the peak
+    torque reaches a target T first at δ* = min_k (T/(G_k c) − q_k)/(1 + p_k): the root
+    :func:`solve_setting` brackets and refines point by point. On the flank the lines
+    lie below the rim's (same G, less compression), so only the rim on counts.
     """
 
     def __init__(self, x: Mapping[str, Any]) -> None:
-        h_given = x["ball_lift"] is not None
         d, alpha = np.broadcast_arrays(
             np.asarray(x["ball_diameter"], float), np.asarray(x["groove_angle"], float)
         )
         r, a = d[..., None] / 2.0, alpha[..., None]
-        u = np.linspace(0.0, 1.0, POINTS)
         v = np.linspace(0.0, 1.0, POINTS)[1:]
         beta_rim = a + v * (math.pi / 2.0 - a)
         rim = r * (np.sin(beta_rim) - np.sin(a))
-        shape = np.broadcast_shapes(rim.shape[:-1] + (2 * POINTS - 1,), a.shape)
-        if h_given:
+        zero = np.zeros(a.shape[:-1] + (1,))
+        if x["ball_lift"] is not None:
             h = np.asarray(x["ball_lift"], float)[..., None]
-            self.p = np.zeros(shape)
-            self.q = np.broadcast_to(np.concatenate([u * h, h + rim], axis=-1), shape)
+            self.q = np.concatenate(np.broadcast_arrays(zero + h, h + rim), axis=-1)
+            self.share = 1.0  # 1/(1 + p)
         else:
-            self.p = np.broadcast_to(np.concatenate([u, np.ones(POINTS - 1)]), shape)
-            self.q = np.broadcast_to(
-                np.concatenate([np.zeros(a.shape[:-1] + (POINTS,)), rim], axis=-1), shape
-            )
-        beta = np.concatenate([np.broadcast_to(a, a.shape[:-1] + (POINTS,)), beta_rim], axis=-1)
+            self.q = np.concatenate([zero, rim], axis=-1)
+            self.share = 0.5
+        beta = np.concatenate([a, beta_rim], axis=-1)
         xs = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
         push = combined_push_factor(beta, xs["flank_friction"], xs["driving_groove_angle"])
-        self.gain = np.asarray(_sharing(xs)) * np.asarray(xs["ball_circle_diameter"]) / (2.0 * push)
+        gain = np.asarray(_sharing(xs)) * np.asarray(xs["ball_circle_diameter"]) / (2.0 * push)
         # the lines rise with δ only where every push is positive and finite
-        self.regular = np.all(np.isfinite(self.gain) & (self.gain > 0.0), axis=-1)
+        self.regular = np.all(np.isfinite(gain) & (gain > 0.0), axis=-1)
+        self.inverse_gain = 1.0 / gain
 
     def setting(self, rate: Any, target: Any, upper: Any) -> Any:
         """δ* for the target peak torque, NaN where none in [0, upper] gives it."""
-        rate = np.asarray(rate, float)[..., None]
-        target = np.asarray(target, float)[..., None]
-        delta = np.min((target / (self.gain * rate) - self.q) / (1.0 + self.p), axis=-1)
+        compression = (np.asarray(target, float) / np.asarray(rate, float))[..., None]
+        delta = np.min(compression * self.inverse_gain - self.q, axis=-1) * self.share
         return np.where((delta >= 0.0) & (delta <= upper), delta, np.nan)
 
 
@@ -1285,7 +1282,7 @@ def suggest_wire_arrays(
         return {}
     dm = np.asarray(x["spring_mean_diameter"], float)
     shape = np.broadcast_shapes(
-        dm.shape, np.shape(target), np.shape(force), grid.gain.shape[:-1]
+        dm.shape, np.shape(target), np.shape(force), grid.inverse_gain.shape[:-1]
     )
     wire = np.full(shape, np.nan)
     setting = np.full(shape, np.nan)
