@@ -1219,13 +1219,13 @@ class SettingGrid:
         v = np.linspace(0.0, 1.0, POINTS)[1:]
         beta_rim = a + v * (math.pi / 2.0 - a)
         rim = r * (np.sin(beta_rim) - np.sin(a))
-        zero = np.zeros(a.shape[:-1] + (1,))
         if x["ball_lift"] is not None:
             h = np.asarray(x["ball_lift"], float)[..., None]
-            self.q = np.concatenate(np.broadcast_arrays(zero + h, h + rim), axis=-1)
+            over = h + rim
+            self.q = np.concatenate([np.broadcast_to(h, over.shape[:-1] + (1,)), over], axis=-1)
             self.share = 1.0  # 1/(1 + p)
         else:
-            self.q = np.concatenate([zero, rim], axis=-1)
+            self.q = np.concatenate([np.zeros(rim.shape[:-1] + (1,)), rim], axis=-1)
             self.share = 0.5
         beta = np.concatenate([a, beta_rim], axis=-1)
         xs = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}

@@ -188,7 +188,7 @@ def _allowable_param() -> Param:
     )
 
 
-def _estimate(x: Mapping[str, Any]) -> float | None:
+def _estimate(x: Mapping[str, Any]) -> Any:
     """Relative error of the closed form from the flank friction it is given.
 
     The closed form is exact for its idealisation (rigid parts, quasi-static,
@@ -196,7 +196,17 @@ def _estimate(x: Mapping[str, Any]) -> float | None:
     friction: with f = 0 (the paper) we report how much a lubricated steel
     flank (f = 0.1) would raise the limit; with f given, how much a scatter of
     ±0.03 in f moves it. NaN-free: None where the shifted friction locks.
+    On arrays (a sweep or a study choosing ``auto`` per point): the same per
+    point, NaN where a scalar call gives None.
     """
+    if np.ndim(x["groove_angle"]) or np.ndim(x["flank_friction"]):
+        a = np.asarray(x["groove_angle"], dtype=float)
+        fa = np.asarray(x["flank_friction"], dtype=float)
+        shift = np.where(fa == 0.0, TYPICAL_FLANK_FRICTION, FLANK_FRICTION_SCATTER)
+        with np.errstate(all="ignore"):
+            push_a = np.tan(a - np.arctan(fa))
+            shifted_a = np.tan(a - np.arctan(fa + shift))
+            return np.where((push_a > 0.0) & (shifted_a > 0.0), push_a / shifted_a - 1.0, np.nan)
     alpha, f = float(x["groove_angle"]), float(x["flank_friction"])
     delta = TYPICAL_FLANK_FRICTION if f == 0.0 else FLANK_FRICTION_SCATTER
     push = math.tan(alpha - math.atan(f))
