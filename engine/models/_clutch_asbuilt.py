@@ -494,7 +494,7 @@ def characteristic(
     total = preload[..., None] + lift
     force = spring.force(total)
     helical = spring.kind == "helical"
-    stress = None if helical and not curves else spring.stress(total)
+    stress: Any = None if helical and not curves else spring.stress(total)
     push = combined_push_factor(beta, x["flank_friction"], x["driving_groove_angle"])
     # x's arrays already carry the trailing (lift) axis
     torque = np.asarray(_sharing(x)) * np.asarray(x["ball_circle_diameter"]) * force / (2.0 * push)
@@ -1196,7 +1196,9 @@ def sizing(x: Mapping[str, Any]) -> dict[str, Any]:
 
 def _at_point(x: Mapping[str, Any], j: int) -> dict[str, Any]:
     """The scalar inputs of point ``j`` of equal-length columns."""
-    return {k: (v[j].item() if isinstance(v, np.ndarray) and v.ndim == 1 else v) for k, v in x.items()}
+    return {
+        k: (v[j].item() if isinstance(v, np.ndarray) and v.ndim == 1 else v) for k, v in x.items()
+    }
 
 
 class SettingGrid:
@@ -1222,10 +1224,10 @@ class SettingGrid:
         if x["ball_lift"] is not None:
             h = np.asarray(x["ball_lift"], float)[..., None]
             over = h + rim
-            self.q = np.concatenate([np.broadcast_to(h, over.shape[:-1] + (1,)), over], axis=-1)
+            self.q = np.concatenate([np.broadcast_to(h, (*over.shape[:-1], 1)), over], axis=-1)
             self.share = 1.0  # 1/(1 + p)
         else:
-            self.q = np.concatenate([np.zeros(rim.shape[:-1] + (1,)), rim], axis=-1)
+            self.q = np.concatenate([np.zeros((*rim.shape[:-1], 1)), rim], axis=-1)
             self.share = 0.5
         beta = np.concatenate([a, beta_rim], axis=-1)
         xs = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
@@ -1290,7 +1292,7 @@ def suggest_wire_arrays(
     for d_mm in sp.STANDARD_WIRE_DIAMETERS:
         d = d_mm * 1e-3
         index = dm / d
-        trying = open_ & (4.0 <= index) & (index <= 12.0)
+        trying = open_ & (index >= 4.0) & (index <= 12.0)
         if not trying.any():
             if not np.any(open_ & (index > 12.0)):
                 break  # every open point's coil is too small for this wire and thicker ones

@@ -14,10 +14,12 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from .. import springs as sp
 from ..clutch import (
     ARRANGEMENTS,
     RECOMMENDED_GROOVE_ANGLE,
     RECOMMENDED_LOAD_FACTOR,
+    SELF_LOCKING_MARGIN,
     WORKABLE_SPRING_INDEX,
     ball_normal_force,
     ball_tangential_force,
@@ -32,8 +34,6 @@ from ..clutch import (
     wahl_factor,
     wire_diameter_for_force,
 )
-from .. import springs as sp
-from ..clutch import SELF_LOCKING_MARGIN
 from ..errors import InfeasibleDesign, InputOutOfRange
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
 from . import _clutch_asbuilt as asbuilt
@@ -598,9 +598,7 @@ def _ball_check_arrays(
         disc = 3.0 * a * a - 6.0
         s_max = (a - np.sqrt(np.where(disc > 0.0, disc, 0.0)) / 3.0) * t
         setting = np.asarray(x["spring_deflection"]) / m
-        out["falling_curve"] = (disc > 0.0) & (
-            setting + np.asarray(v["total_lift"]) / m > s_max
-        )
+        out["falling_curve"] = (disc > 0.0) & (setting + np.asarray(v["total_lift"]) / m > s_max)
     elif x["spring_free_length"] is not None:
         d, dm, n = x["spring_wire_diameter"], x["spring_mean_diameter"], x["spring_active_coils"]
         need = np.asarray(sp.solid_length(d, n) + sp.minimum_gap_sum(d, dm, n))
@@ -1045,8 +1043,8 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         grid = asbuilt.SettingGrid(x)
         if wire is not None:
             spring = asbuilt.Spring(x)
-            v["required_peak_setting"], v["peak_setting_stress_max"] = (
-                asbuilt.peak_setting_arrays(x, grid, spring, x["target_torque"], force)
+            v["required_peak_setting"], v["peak_setting_stress_max"] = asbuilt.peak_setting_arrays(
+                x, grid, spring, x["target_torque"], force
             )
         v.update(asbuilt.suggest_wire_arrays(x, grid, x["target_torque"], force))
         v.update(drive)

@@ -874,7 +874,9 @@ def _check_arrays(x: Mapping[str, Any], values: Mapping[str, Any]) -> dict[str, 
     The same comparisons on the same floats as the scalar checks, so the verdicts
     agree point by point (a study's pass fractions do not depend on the path).
     """
-    out: dict[str, Any] = {"max_spindle_torque_positive": np.asarray(values["max_spindle_torque"]) > 0.0}
+    out: dict[str, Any] = {
+        "max_spindle_torque_positive": np.asarray(values["max_spindle_torque"]) > 0.0
+    }
     z = np.asarray(x["spindle_count"])
     if np.any(z >= 2):
         d4 = np.asarray(x["drive_gear_diameter"], dtype=float)
@@ -882,7 +884,7 @@ def _check_arrays(x: Mapping[str, Any], values: Mapping[str, Any]) -> dict[str, 
         # math.sin(math.pi / z) as the scalar check takes it (np.sin may differ in the last bit)
         top = int(np.max(z))
         sines = np.array([0.0, 0.0, *(math.sin(math.pi / k) for k in range(2, top + 1))])
-        fits = (d4 + d5) * sines[np.clip(z, 0, top)] > d5
+        fits = (d4 + d5) * sines[np.clip(z, 0, top).astype(np.int64)] > d5
         out["spindle_gears_fit"] = np.where(z >= 2, fits, -1).astype(np.int8)
     tau_y = x.get("shear_yield_strength")
     if tau_y is not None:

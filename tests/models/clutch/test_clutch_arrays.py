@@ -262,7 +262,9 @@ def test_rung_estimate_takes_arrays():
     x, _ = BALL_CLUTCH.validate(BALL_CLUTCH.examples[0])
     alpha = np.linspace(1 * DEG, 89 * DEG, 89)
     friction = np.tile([0.0, 0.1, 0.5, 0.9], 23)[:89]
-    est = np.asarray(BALL_CLUTCH.rungs[0].estimate({**x, "groove_angle": alpha, "flank_friction": friction}))
+    est = np.asarray(
+        BALL_CLUTCH.rungs[0].estimate({**x, "groove_angle": alpha, "flank_friction": friction})
+    )
     for j in range(89):
         one = BALL_CLUTCH.rungs[0].estimate(
             {**x, "groove_angle": float(alpha[j]), "flank_friction": float(friction[j])}
