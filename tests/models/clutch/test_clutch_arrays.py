@@ -274,3 +274,19 @@ def test_rung_estimate_takes_arrays():
         else:
             assert est[j] == pytest.approx(one, rel=1e-12)
     assert np.isnan(est).any() and np.isfinite(est).any()
+
+
+def test_a_sweep_names_the_rung_where_only_an_optional_output_is_null():
+    # example 3's spring cannot buckle (buckling_deflection null at every point): the points
+    # are computed all the same; only the wedged ones (α ≤ atan f) are refused
+    base = {**BALL_CLUTCH.examples[3], "flank_friction": 0.5}
+    alphas = np.linspace(0.1, 1.5, 8).tolist()
+    s = engine.sweep(BALL_CLUTCH, base, "groove_angle", alphas)
+    for j, a in enumerate(alphas):
+        try:
+            want = engine.run(BALL_CLUTCH, {**base, "groove_angle": a}).rung
+        except engine.EngineError:
+            want = None
+        assert s.rungs[j] == want, a
+    assert s.results["buckling_deflection"] == [None] * 8
+    assert None in s.rungs and "closed_form" in s.rungs
