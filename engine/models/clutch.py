@@ -528,6 +528,8 @@ def _spring_mask(x: Mapping[str, Any], wire: Any) -> npt.NDArray[np.bool_]:
 
 
 def _masked(values: Mapping[str, Any], ok: npt.NDArray[np.bool_]) -> dict[str, Any]:
+    if np.all(ok):  # the common case in a study: nothing refused, no copies
+        return {k: np.asarray(v, dtype=float) for k, v in values.items()}
     return {k: np.where(ok, np.asarray(v, dtype=float), np.nan) for k, v in values.items()}
 
 
@@ -654,7 +656,7 @@ _CHUNK = 20_000
 def _chunked_forward(x: Mapping[str, Any], peak: bool = True) -> dict[str, Any]:
     """:func:`_forward_values` over long varied inputs, a chunk at a time (bounded memory)."""
     n = _array_inputs(x)
-    if n is None or n <= _CHUNK:
+    if n is None or n <= _CHUNK or not peak:  # without the 81-point curve: no chunks needed
         return _forward_values(x, peak=peak)
     parts = [
         _forward_values(

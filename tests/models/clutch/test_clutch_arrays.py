@@ -290,3 +290,20 @@ def test_a_sweep_names_the_rung_where_only_an_optional_output_is_null():
         assert s.rungs[j] == want, a
     assert s.results["buckling_deflection"] == [None] * 8
     assert None in s.rungs and "closed_form" in s.rungs
+
+
+def test_long_columns_are_evaluated_in_chunks_with_the_same_numbers():
+    from engine.models.clutch import _CHUNK, _forward_values
+
+    n = 2 * _CHUNK + 123
+    x, _ = BALL_CLUTCH.validate(BALL_CLUTCH.examples[3])
+    rng = np.random.default_rng(9)
+    cols = {
+        "groove_angle": rng.uniform(30 * DEG, 60 * DEG, n),
+        "spring_wire_diameter": rng.uniform(0.0035, 0.0045, n),
+    }
+    ctx = RunContext("closed_form", frozenset(FLOATS[BALL_CLUTCH.name]), 0.01)
+    got = BALL_CLUTCH.vectorized({**x, **cols}, ctx).values
+    whole = _forward_values({**x, **cols})
+    for name in ("peak_torque", "lift_at_peak", "spring_stress_max", "residual_torque"):
+        np.testing.assert_array_equal(got[name], whole[name], err_msg=name)
