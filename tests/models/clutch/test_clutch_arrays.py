@@ -307,3 +307,21 @@ def test_long_columns_are_evaluated_in_chunks_with_the_same_numbers():
     whole = _forward_values({**x, **cols})
     for name in ("peak_torque", "lift_at_peak", "spring_stress_max", "residual_torque"):
         np.testing.assert_array_equal(got[name], whole[name], err_msg=name)
+
+
+def test_a_driving_flank_steeper_than_the_friction_angle_falls_back_per_point():
+    # α′ = 0.6° < ρ = 16.7°: the driving flank pulls, some lines fall with δ; those points
+    # are solved by the scalar root search inside the array path, the rest by the lines
+    base = {
+        **BALL_CLUTCH_SETTING.examples[1],
+        "driving_groove_angle": 0.01,
+        "flank_friction": 0.3,
+        "target_torque": 2.0,
+    }
+    cols = {"groove_angle": np.linspace(0.35, 1.5, 12), "target_torque": np.linspace(0.5, 5, 12)}
+    x, _ = BALL_CLUTCH_SETTING.validate(base)
+    regular = asbuilt.SettingGrid({**x, **cols}).regular
+    assert regular.any() and not regular.all()
+    _array_path_used(BALL_CLUTCH_SETTING, base, cols)
+    _, values = _compare(BALL_CLUTCH_SETTING, base, cols)
+    assert np.isfinite(values["required_peak_setting"]).any()
