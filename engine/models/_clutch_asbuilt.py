@@ -1306,7 +1306,7 @@ def suggest_wire_arrays(
         if allow is None:
             continue
         delta, stress = peak_setting_arrays(trial, grid, spring, target, force)
-        fits = trying & np.isfinite(delta) & (stress <= float(allow))
+        fits = trying & np.isfinite(delta) & (stress <= np.asarray(allow, float))
         if x["spring_free_length"] is not None:
             total_lift = end_values({**trial, "spring_deflection": delta}, spring)["total_lift"]
             travel = delta + total_lift

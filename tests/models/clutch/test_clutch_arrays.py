@@ -325,3 +325,16 @@ def test_a_driving_flank_steeper_than_the_friction_angle_falls_back_per_point():
     _array_path_used(BALL_CLUTCH_SETTING, base, cols)
     _, values = _compare(BALL_CLUTCH_SETTING, base, cols)
     assert np.isfinite(values["required_peak_setting"]).any()
+
+
+def test_setting_with_a_varied_allowable_stress_stays_on_the_array_path():
+    base = {**BALL_CLUTCH_SETTING.examples[0], "allowable_shear_stress": 6e8}
+    cols = {
+        "allowable_shear_stress": np.linspace(2e8, 9e8, 12),
+        "target_torque": np.linspace(0.3, 3.0, 12),
+        "spring_mean_diameter": np.linspace(0.02, 0.05, 12),
+    }
+    assert "suggested_wire_diameter" in _array_path_used(BALL_CLUTCH_SETTING, base, cols)
+    _, values = _compare(BALL_CLUTCH_SETTING, base, cols)
+    # thicker wires for the larger coils and targets: the suggestion moves with the point
+    assert len(set(values["suggested_wire_diameter"].tolist())) > 6
