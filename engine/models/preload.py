@@ -1574,7 +1574,7 @@ def _range_arrays(x: Mapping[str, Any], name: str, nominal: Any) -> tuple[Any, A
 
 
 #: Points per chunk of the friction-scatter grid when it differs from point to point.
-_SCATTER_CHUNK = 256
+_SCATTER_CHUNK = 64
 
 
 def _scatter_arrays(
@@ -1633,11 +1633,14 @@ def _scatter_arrays(
         _, k_bearing = pl.tightening_torque_per_preload(
             pitch, d2, d, 0.0, k_lo + (k_hi - k_lo) * u, outer, hole, formula
         )
-        per_newton = np.asarray(k_thread)[:, None, :] + np.asarray(k_bearing)[:, :, None]
+        k_thread, k_bearing = np.asarray(k_thread), np.asarray(k_bearing)
         t = fixed[sl]
-        low[sl] = t / per_newton.max(axis=(1, 2))
-        high[sl] = t / per_newton.min(axis=(1, 2))
-        mean[sl] = (t[:, None, None] / per_newton).mean(axis=(1, 2))
+        # fl(a + b) rises with a and with b: the grid's extremes are at its corners, exactly
+        low[sl] = t / (k_thread.max(axis=1) + k_bearing.max(axis=1))
+        high[sl] = t / (k_thread.min(axis=1) + k_bearing.min(axis=1))
+        inverse = np.add(k_thread[:, None, :], k_bearing[:, :, None])
+        np.reciprocal(inverse, out=inverse)
+        mean[sl] = t * inverse.reshape(inverse.shape[0], -1).mean(axis=1)
     return low, high, mean
 
 
