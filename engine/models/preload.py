@@ -1627,13 +1627,13 @@ def _scatter_arrays(
         sl = slice(start, min(start + _SCATTER_CHUNK, n))
         parts: list[Any] = [c[sl, None] for c in cols]
         pitch, d2, d, outer, hole, g_lo, g_hi, k_lo, k_hi = parts
-        k_thread, _ = pl.tightening_torque_per_preload(
+        per_g, _ = pl.tightening_torque_per_preload(
             pitch, d2, d, g_lo + (g_hi - g_lo) * u, 0.0, outer, hole, formula
         )
-        _, k_bearing = pl.tightening_torque_per_preload(
+        _, per_k = pl.tightening_torque_per_preload(
             pitch, d2, d, 0.0, k_lo + (k_hi - k_lo) * u, outer, hole, formula
         )
-        k_thread, k_bearing = np.asarray(k_thread), np.asarray(k_bearing)
+        k_thread, k_bearing = np.asarray(per_g), np.asarray(per_k)
         t = fixed[sl]
         # fl(a + b) rises with a and with b: the grid's extremes are at its corners, exactly
         low[sl] = t / (k_thread.max(axis=1) + k_bearing.max(axis=1))
