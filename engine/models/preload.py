@@ -409,12 +409,19 @@ def _table_lookup(
 ) -> tuple[np.ndarray, np.ndarray]:
     """Index into ``table``'s keys (mm) per diameter [m], and where one matches.
 
-    The match of :func:`engine.threads._size_key` (relative 1e-6), on arrays.
+    The match of :func:`engine.threads._size_key` (relative 1e-6), on arrays: the keys
+    are far apart, so only the two keys either side of a size can match it.
     """
     keys = np.fromiter(table, dtype=float)
+    order = np.argsort(keys)
+    ordered = keys[order]
     mm = np.asarray(diameter) * 1e3
-    match = np.abs(mm[:, None] - keys[None, :]) <= 1e-6 * keys[None, :]
-    return np.argmax(match, axis=1), match.any(axis=1)
+    right = np.clip(np.searchsorted(ordered, mm), 0, keys.size - 1)
+    left = np.maximum(right - 1, 0)
+    near_left = np.abs(mm - ordered[left]) <= 1e-6 * ordered[left]
+    near_right = np.abs(mm - ordered[right]) <= 1e-6 * ordered[right]
+    index = order[np.where(near_left, left, right)]
+    return index, near_left | near_right
 
 
 def _tabulated(
