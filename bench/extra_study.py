@@ -128,7 +128,8 @@ def measure() -> list[dict[str, Any]]:
             "method": "study_mc_control",
             "case": "10^6-point Monte Carlo of μ_G, μ_K and F_K, every output, in-process",
             "time_s": total / 1e6,
-            "target_s": CONTROL_TARGET_S,
+            # per point, as time_s: the targets table of `make bench` sets them side by side
+            "target_s": CONTROL_TARGET_S / 1e6,
             "met": total <= CONTROL_TARGET_S,
             "error": None,
             "notes": f"{total:.2f} s for 10^6 points (target ≤ {CONTROL_TARGET_S:g} s); "
