@@ -26,6 +26,8 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+import numpy as np
+
 from .errors import InputOutOfRange
 
 #: Head length factor l_SK/d of VDI 2230-1 R3 (ECSS-E-HB-32-23A Table 7-1): hexagon 0.5, socket 0.4.
@@ -57,6 +59,36 @@ MIN_CONE_TANGENT = 0.1
 
 def _area(diameter: float) -> float:
     return 0.25 * math.pi * diameter * diameter
+
+
+# Float or array: every function below takes SI floats (math, the scalar path's speed and
+# its exceptions kept) or numpy arrays (one request's points at once, issue 21). The
+# helpers pick math or numpy by the arguments' type, so each formula is written once.
+
+
+def _arrays(*values: object) -> bool:
+    return any(isinstance(v, np.ndarray) for v in values)
+
+
+def _log(value: float) -> float:
+    return np.log(value) if isinstance(value, np.ndarray) else math.log(value)
+
+
+def _sqrt(value: float) -> float:
+    return np.sqrt(value) if isinstance(value, np.ndarray) else math.sqrt(value)
+
+
+def _max(a: float, b: float) -> float:
+    return np.maximum(a, b) if _arrays(a, b) else max(a, b)
+
+
+def _min(a: float, b: float) -> float:
+    return np.minimum(a, b) if _arrays(a, b) else min(a, b)
+
+
+def _where(condition: bool, yes: float, no: float) -> float:
+    """``yes if condition else no`` (both evaluated: neither may raise)."""
+    return np.where(condition, yes, no) if _arrays(condition, yes, no) else yes if condition else no
 
 
 @dataclass(frozen=True)
@@ -200,10 +232,10 @@ def cone_tangent(
     beta_l = grip / bearing_diameter
     y = outer_diameter / bearing_diameter
     if joint == "through":
-        tan = 0.362 + 0.032 * math.log(beta_l / 2.0) + 0.153 * math.log(y)
+        tan = 0.362 + 0.032 * _log(beta_l / 2.0) + 0.153 * _log(y)
     else:
-        tan = 0.348 + 0.013 * math.log(beta_l) + 0.193 * math.log(y)
-    return max(tan, MIN_CONE_TANGENT)
+        tan = 0.348 + 0.013 * _log(beta_l) + 0.193 * _log(y)
+    return _max(tan, MIN_CONE_TANGENT)
 
 
 def cone_limit_diameter(
@@ -277,7 +309,18 @@ def unlimited_outer_diameter(grip: float, bearing_diameter: float, joint: str = 
     --------
     >>> round(unlimited_outer_diameter(0.040, 0.01663) * 1e3, 2)
     36.09
+
+    Arrays iterate each point as the scalar call would, until it converges:
+
+    >>> d = unlimited_outer_diameter(np.array([0.040, 0.010]), 0.01663)
+    >>> bool(d[0] == unlimited_outer_diameter(0.040, 0.01663))
+    True
     """
+    if _arrays(grip, bearing_diameter):
+        return _unlimited_outer_diameters(
+            *np.broadcast_arrays(np.asarray(grip, float), np.asarray(bearing_diameter, float)),
+            joint,
+        )
     outer = bearing_diameter * 2.0
     for _ in range(200):
         tan = cone_tangent(grip, bearing_diameter, outer, joint)
@@ -288,6 +331,25 @@ def unlimited_outer_diameter(grip: float, bearing_diameter: float, joint: str = 
     return outer
 
 
+def _unlimited_outer_diameters(grip: np.ndarray, bearing: np.ndarray, joint: str) -> np.ndarray:
+    """:func:`unlimited_outer_diameter` point by point on arrays (each stops where it converges)."""
+    outer = bearing * 2.0
+    result = np.full(outer.shape, np.nan)
+    active = np.arange(outer.size)
+    g, b, o = grip.ravel(), bearing.ravel(), outer.ravel().copy()
+    for _ in range(200):
+        tan = cone_tangent(g, b, o, joint)
+        new = cone_limit_diameter(g, b, tan, joint)
+        done = np.abs(new - o) <= 1e-12 * new
+        result.flat[active[done]] = new[done]
+        keep = ~done
+        active, g, b, o = active[keep], g[keep], b[keep], new[keep]
+        if not active.size:
+            return result
+    result.flat[active] = o
+    return result
+
+
 def _one_sided(
     start: float,
     end: float,
@@ -296,24 +358,36 @@ def _one_sided(
     tangent: float,
     outer_diameter: float,
 ) -> float:
-    """∫ dz / A(z) over [start, end] of a cone from d_W at z = 0, capped at D_A (1/m)."""
-    if end <= start:
-        return 0.0
+    """∫ dz / A(z) over [start, end] of a cone from d_W at z = 0, capped at D_A (1/m).
+
+    Floats or arrays; an empty interval (end ≤ start) gives 0 through both branches.
+    """
+    d_h = hole_diameter
+
+    def g(z: float) -> float:
+        diameter = bearing_diameter + 2.0 * z * tangent
+        return _log((diameter - d_h) / (diameter + d_h))
+
+    if not _arrays(start, end, bearing_diameter, hole_diameter, tangent, outer_diameter):
+        if end <= start:
+            return 0.0
+        z_cap = (outer_diameter - bearing_diameter) / (2.0 * tangent)
+        total = 0.0
+        a, b = start, min(end, z_cap)
+        if b > a:
+            total += (g(b) - g(a)) / (math.pi * d_h * tangent)
+        a = max(start, z_cap)
+        if end > a:
+            total += (end - a) / (0.25 * math.pi * (outer_diameter**2 - hole_diameter**2))
+        return total
     z_cap = (outer_diameter - bearing_diameter) / (2.0 * tangent)
-    total = 0.0
-    a, b = start, min(end, z_cap)
-    if b > a:
-        d_h = hole_diameter
-
-        def g(z: float) -> float:
-            diameter = bearing_diameter + 2.0 * z * tangent
-            return math.log((diameter - d_h) / (diameter + d_h))
-
-        total += (g(b) - g(a)) / (math.pi * d_h * tangent)
-    a = max(start, z_cap)
-    if end > a:
-        total += (end - a) / (0.25 * math.pi * (outer_diameter**2 - hole_diameter**2))
-    return total
+    a, b = start, np.minimum(end, z_cap)
+    # arrays: both pieces everywhere (z ≥ 0 keeps the logarithm's argument positive), then
+    # only where the scalar branch would add them
+    cone = np.where(b > a, (g(b) - g(a)) / (math.pi * d_h * tangent), 0.0)
+    a = np.maximum(start, z_cap)
+    sleeve = (end - a) / (0.25 * math.pi * (outer_diameter**2 - hole_diameter**2))
+    return (0.0 + cone) + np.where(end > a, sleeve, 0.0)
 
 
 @dataclass(frozen=True)
@@ -406,11 +480,12 @@ def clamped_compliance(
     """
     if len(thicknesses) != len(youngs_moduli) or not thicknesses:
         raise InputOutOfRange("give one Young's modulus per plate", field="plate1_thickness")
-    grip = float(sum(thicknesses))
+    grip = sum(thicknesses)
+    grip = grip if isinstance(grip, np.ndarray) else float(grip)
     if outer_diameter is None:
         outer = unlimited_outer_diameter(grip, bearing_diameter, joint)
     else:
-        outer = max(outer_diameter, bearing_diameter)
+        outer = _max(outer_diameter, bearing_diameter)
     tan = cone_tangent(grip, bearing_diameter, outer, joint) if tangent is None else tangent
     limit = cone_limit_diameter(grip, bearing_diameter, tan, joint)
     per_plate = []
@@ -420,8 +495,8 @@ def clamped_compliance(
         a, b = z, z + h
         args = (bearing_diameter, hole_diameter, tan, outer)
         if joint == "through":
-            integral = _one_sided(min(a, half), min(b, half), *args) + _one_sided(
-                grip - max(b, half), grip - max(a, half), *args
+            integral = _one_sided(_min(a, half), _min(b, half), *args) + _one_sided(
+                grip - _max(b, half), grip - _max(a, half), *args
             )
         else:
             integral = _one_sided(a, b, *args)
@@ -687,7 +762,7 @@ def minimum_assembly_preload(
         required_clamp_force
         + (1.0 - load_factor_n) * working_load_max
         + embedding_force
-        + max(thermal_loss, 0.0)
+        + _max(thermal_loss, 0.0)
     )
 
 
@@ -722,7 +797,21 @@ def smallest_section(
     --------
     >>> smallest_section(0.010358, [(0.05, 0.0075)])
     (0.0075, 'shank')
+
+    On arrays, ``which`` is an array of the same words:
+
+    >>> d0, which = smallest_section(0.010358, [(np.array([0.05, 0.0]), 0.0075)])
+    >>> d0.tolist(), which.tolist()
+    ([0.0075, 0.010358], ['shank', 'thread'])
     """
+    if _arrays(stress_diameter, *(v for section in sections for v in section)):
+        d0_arr = np.asarray(stress_diameter, dtype=float)
+        shank = np.zeros(d0_arr.shape, dtype=bool)
+        for length, diameter in sections:
+            smaller = (np.asarray(length) > 0.0) & (diameter < d0_arr)
+            d0_arr = np.where(smaller, diameter, d0_arr)
+            shank = shank | smaller
+        return d0_arr, np.where(shank, "shank", "thread")
     d0, which = stress_diameter, "thread"
     for length, diameter in sections:
         if length > 0.0 and diameter < d0:
@@ -783,8 +872,8 @@ def preload_bounds_from_torque(
     (31500, 64308)
     """
     least = prevailing_torque if prevailing_torque_min is None else prevailing_torque_min
-    low = max(torque * (1.0 - torque_tolerance) - prevailing_torque, 0.0)
-    high = max(torque * (1.0 + torque_tolerance) - least, 0.0)
+    low = _max(torque * (1.0 - torque_tolerance) - prevailing_torque, 0.0)
+    high = _max(torque * (1.0 + torque_tolerance) - least, 0.0)
     return low / per_newton_high_friction, high / per_newton_low_friction
 
 
@@ -855,7 +944,7 @@ def service_stress(
     )
     tau = thread_torque / (math.pi * smallest_diameter**3 / 16.0)
     sigma = bolt_force / a0
-    return ServiceStress(sigma, tau, math.sqrt(sigma**2 + 3.0 * (torsion_reduction * tau) ** 2))
+    return ServiceStress(sigma, tau, _sqrt(sigma**2 + 3.0 * (torsion_reduction * tau) ** 2))
 
 
 def endurance_limit(
@@ -903,7 +992,7 @@ def endurance_limit(
     base = 0.85 * (150.0 / (diameter * 1e3) + 45.0) * 1e6
     if rolling == "before_heat_treatment":
         return base
-    ratio = min(max(mean_bolt_force / proof_force, 0.0), 1.0)
+    ratio = _min(_max(mean_bolt_force / proof_force, 0.0), 1.0)
     return (2.0 - ratio) * base
 
 
