@@ -25,6 +25,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -70,25 +71,20 @@ def _arrays(*values: object) -> bool:
     return any(isinstance(v, np.ndarray) for v in values)
 
 
-def _log(value: float) -> float:
+def _log(value: Any) -> Any:
     return np.log(value) if isinstance(value, np.ndarray) else math.log(value)
 
 
-def _sqrt(value: float) -> float:
+def _sqrt(value: Any) -> Any:
     return np.sqrt(value) if isinstance(value, np.ndarray) else math.sqrt(value)
 
 
-def _max(a: float, b: float) -> float:
+def _max(a: Any, b: Any) -> Any:
     return np.maximum(a, b) if _arrays(a, b) else max(a, b)
 
 
-def _min(a: float, b: float) -> float:
+def _min(a: Any, b: Any) -> Any:
     return np.minimum(a, b) if _arrays(a, b) else min(a, b)
-
-
-def _where(condition: bool, yes: float, no: float) -> float:
-    """``yes if condition else no`` (both evaluated: neither may raise)."""
-    return np.where(condition, yes, no) if _arrays(condition, yes, no) else yes if condition else no
 
 
 @dataclass(frozen=True)
@@ -187,7 +183,10 @@ def bolt_compliance(
 
 
 def cone_tangent(
-    grip: float, bearing_diameter: float, outer_diameter: float, joint: str = "through"
+    grip: float,
+    bearing_diameter: float,
+    outer_diameter: float,
+    joint: str = "through",
 ) -> float:
     r"""Tangent of the deformation-cone angle φ (VDI 2230-1 R3).
 
@@ -232,10 +231,14 @@ def cone_tangent(
     beta_l = grip / bearing_diameter
     y = outer_diameter / bearing_diameter
     if joint == "through":
-        tan = 0.362 + 0.032 * _log(beta_l / 2.0) + 0.153 * _log(y)
+        tan = 0.362 + 0.032 * _log(beta_l / 2.0) + _CONE_Y_SLOPE[joint] * _log(y)
     else:
-        tan = 0.348 + 0.013 * _log(beta_l) + 0.193 * _log(y)
+        tan = 0.348 + 0.013 * _log(beta_l) + _CONE_Y_SLOPE[joint] * _log(y)
     return _max(tan, MIN_CONE_TANGENT)
+
+
+#: ∂ tan φ / ∂ ln y of the fits above (VDI 2230-1 eq. 5.1/21–22).
+_CONE_Y_SLOPE: dict[str, float] = {"through": 0.153, "tapped": 0.193}
 
 
 def cone_limit_diameter(
@@ -310,17 +313,18 @@ def unlimited_outer_diameter(grip: float, bearing_diameter: float, joint: str = 
     >>> round(unlimited_outer_diameter(0.040, 0.01663) * 1e3, 2)
     36.09
 
-    Arrays iterate each point as the scalar call would, until it converges:
+    Arrays reach the same fixed point (a few Newton steps first, then this iteration):
 
     >>> d = unlimited_outer_diameter(np.array([0.040, 0.010]), 0.01663)
-    >>> bool(d[0] == unlimited_outer_diameter(0.040, 0.01663))
+    >>> bool(abs(d[0] / unlimited_outer_diameter(0.040, 0.01663) - 1.0) < 1e-12)
     True
     """
     if _arrays(grip, bearing_diameter):
-        return _unlimited_outer_diameters(
-            *np.broadcast_arrays(np.asarray(grip, float), np.asarray(bearing_diameter, float)),
-            joint,
+        grips, bearings = np.broadcast_arrays(
+            np.asarray(grip, dtype=float), np.asarray(bearing_diameter, dtype=float)
         )
+        result: Any = _unlimited_outer_diameters(grips, bearings, joint)
+        return result
     outer = bearing_diameter * 2.0
     for _ in range(200):
         tan = cone_tangent(grip, bearing_diameter, outer, joint)
@@ -331,9 +335,24 @@ def unlimited_outer_diameter(grip: float, bearing_diameter: float, joint: str = 
     return outer
 
 
-def _unlimited_outer_diameters(grip: np.ndarray, bearing: np.ndarray, joint: str) -> np.ndarray:
-    """:func:`unlimited_outer_diameter` point by point on arrays (each stops where it converges)."""
-    outer = bearing * 2.0
+def _unlimited_outer_diameters(grip: Any, bearing: Any, joint: str) -> Any:
+    """:func:`unlimited_outer_diameter` point by point on arrays (each stops where it converges).
+
+    A few safeguarded Newton steps on D − D_A,Gr(D) first (where the map's slope
+    w l_K ∂tanφ/∂D is below ½; a plain step elsewhere), then the scalar function's own
+    fixed-point iteration and stopping rule from there: the same fixed point within
+    ~1e-13, in about 6 passes over the arrays instead of ~16.
+    """
+    w = 1.0 if joint == "through" else 2.0
+    start = bearing * 2.0
+    outer = start
+    new: Any
+    for _ in range(5):
+        tan = cone_tangent(grip, bearing, outer, joint)
+        new = cone_limit_diameter(grip, bearing, tan, joint)
+        slope = np.where(tan > MIN_CONE_TANGENT, w * grip * _CONE_Y_SLOPE[joint] / outer, 0.0)
+        outer = np.where(slope < 0.5, outer + (new - outer) / (1.0 - slope), new)
+    outer = np.where(np.isfinite(outer) & (outer >= bearing), outer, start)
     result = np.full(outer.shape, np.nan)
     active = np.arange(outer.size)
     g, b, o = grip.ravel(), bearing.ravel(), outer.ravel().copy()
@@ -387,7 +406,8 @@ def _one_sided(
     cone = np.where(b > a, (g(b) - g(a)) / (math.pi * d_h * tangent), 0.0)
     a = np.maximum(start, z_cap)
     sleeve = (end - a) / (0.25 * math.pi * (outer_diameter**2 - hole_diameter**2))
-    return (0.0 + cone) + np.where(end > a, sleeve, 0.0)
+    both: Any = (0.0 + cone) + np.where(end > a, sleeve, 0.0)
+    return both
 
 
 @dataclass(frozen=True)
@@ -811,7 +831,9 @@ def smallest_section(
             smaller = (np.asarray(length) > 0.0) & (diameter < d0_arr)
             d0_arr = np.where(smaller, diameter, d0_arr)
             shank = shank | smaller
-        return d0_arr, np.where(shank, "shank", "thread")
+        words: Any = np.where(shank, "shank", "thread")
+        d0_any: Any = d0_arr
+        return d0_any, words
     d0, which = stress_diameter, "thread"
     for length, diameter in sections:
         if length > 0.0 and diameter < d0:

@@ -1121,7 +1121,7 @@ def _bolts(x: Mapping[str, Any], n: int) -> tuple[list[Bolt | None], np.ndarray,
         return_inverse=True,
     )
     bolts: list[Bolt | None] = []
-    notes: list[str] = []
+    first_notes: list[str] = []
     for row in rows:
         try:
             bolt, said = resolve_bolt({**fixed, **dict(zip(varied, row.tolist(), strict=True))})
@@ -1129,13 +1129,16 @@ def _bolts(x: Mapping[str, Any], n: int) -> tuple[list[Bolt | None], np.ndarray,
             bolts.append(None)
             continue
         bolts.append(bolt)
-        notes = notes or said
+        first_notes = first_notes or said
     if all(b is None for b in bolts):
         resolve_bolt({**fixed, **{k: x[k][0].item() for k in varied}})  # raises, says why
-    return bolts, np.asarray(index, dtype=np.int64).reshape(n), notes
+    return bolts, np.asarray(index, dtype=np.int64).reshape(n), first_notes
 
 
-def _bolt_columns(bolts: list[Bolt | None], index: np.ndarray) -> dict[str, np.ndarray]:
+def _bolt_columns(bolts: list[Bolt | None], index: np.ndarray) -> dict[str, Any]:
+    """Each bolt field per point (one bolt: its values as numpy scalars, broadcast later)."""
+    if len(bolts) == 1 and bolts[0] is not None:
+        return {f: np.float64(getattr(bolts[0], f)) for f in _BOLT_FIELDS}
     table = {
         f: np.array([np.nan if b is None else getattr(b, f) for b in bolts], dtype=float)
         for f in _BOLT_FIELDS
@@ -1149,8 +1152,8 @@ def _vector_hook_checks(
     bolts: list[Bolt | None],
     index: np.ndarray,
     ok: np.ndarray,
-    fm_max: np.ndarray,
-    f_s_max: np.ndarray,
+    fm_max: Any,
+    f_s_max: Any,
     probe: Callable[[int], tuple[list[Check], list[str]]],
 ) -> tuple[dict[str, np.ndarray], list[str]]:
     """The verdicts of ``fz.joint_check_hook`` (VDI 2230-1 R10, R11, ISO 2936) on arrays.
@@ -1243,15 +1246,19 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
             raise TypeError(f"{name} is fixed per request on the array path")
     n = _size(x)
 
-    def col(name: str) -> np.ndarray:
-        return np.broadcast_to(np.asarray(x[name], dtype=float), (n,))
+    def col(name: str) -> Any:
+        """A varied input as a float array, a fixed one as a numpy scalar (broadcast later)."""
+        value = x[name]
+        if isinstance(value, np.ndarray):
+            return value.astype(float, copy=False)
+        return np.float64(value)
 
-    def col_or(name: str, other: np.ndarray) -> np.ndarray:
+    def col_or(name: str, other: Any) -> Any:
         return other if x.get(name) is None else col(name)
 
     bolts, bolt_index, notes = _bolts(x, n)
     b = _bolt_columns(bolts, bolt_index)
-    refused = np.isnan(b["diameter"])  # bolts resolve_bolt refuses
+    refused = np.zeros(n, dtype=bool) | np.isnan(b["diameter"])  # bolts resolve_bolt refuses
     warnings: list[str] = []
     joint_type = str(x["joint_type"])
     d, d_w, d_h, d_s = b["diameter"], b["bearing_outer_diameter"], b["hole_diameter"], b["pitch"]
@@ -1322,7 +1329,7 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     through = joint_type == "through"
     roughness = str(x["surface_roughness"])
     faces, interfaces = (2, plates - 1) if through else (1, plates)
-    f_z_len = np.where(
+    f_z_len: Any = np.where(
         f_q > 0.0,
         jt.embedding(roughness, "transverse", faces, interfaces),
         jt.embedding(roughness, "axial", faces, interfaces),
@@ -1334,14 +1341,14 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
     # R7 permissible preload at the smallest section -------------------------------------------
     d0, where = jt.smallest_section(b["stress_diameter"], sections)
-    a0 = np.where(where == "thread", a_s, 0.25 * math.pi * d0 * d0)
+    a0: Any = np.where(where == "thread", a_s, 0.25 * math.pi * d0 * d0)
     nu = col("utilization")
     beta = pl.torsion_factor(d_s, b["pitch_diameter"], d0, mu_g_lo, "vdi2230")
     f_mzul = pl.assembly_preload(yield_strength, a0, beta, nu)
     f_myield = pl.assembly_preload(yield_strength, a0, beta, 1.0)
 
     # assembly preload range: torque specification or design at F_M,zul -----------------------
-    def per_newton(mu_g: np.ndarray, mu_k: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def per_newton(mu_g: Any, mu_k: Any) -> tuple[np.ndarray, np.ndarray]:
         k_thread, k_bearing = pl.tightening_torque_per_preload(
             d_s, b["pitch_diameter"], d, mu_g, mu_k, d_w, d_h, "vdi2230"
         )
@@ -1354,6 +1361,7 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     m_u_min = col_or("prevailing_torque_min", m_u)
     refused |= m_u_min > m_u
     torque_given = x.get("tightening_torque") is not None
+    alpha_a: Any
     if torque_given:
         torque = col("tightening_torque")
         fm_min, fm_max = jt.preload_bounds_from_torque(
@@ -1395,7 +1403,7 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         opens, np.maximum((f_mzul / alpha_req - f_kerf - loss) / (1.0 - phi_n), 0.0), np.inf
     )
     fa_sep_any = np.where(opens, np.maximum((f_mzul - loss) / (1.0 - phi_n), 0.0), np.inf)
-    check_arrays: dict[str, np.ndarray] = {
+    check_arrays: dict[str, Any] = {
         "R7_window_fits": req_max <= f_mzul * (1.0 + 1e-12),
         "separation_avoidable": f_a < fa_sep_any,
     }
@@ -1459,14 +1467,12 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         point = {k: (v[j].item() if isinstance(v, np.ndarray) else v) for k, v in x.items()}
         bolt = bolts[int(bolt_index[j])]
         assert bolt is not None
+
+        def at(value: Any) -> float:
+            return float(np.broadcast_to(value, (n,))[j])
+
         solution = JointSolution(
-            bolt,
-            float(grip[j]),
-            float(d_w[j]),
-            float(d_h[j]),
-            float(fm_max[j]),
-            float(f_s_max[j]),
-            joint_type,
+            bolt, at(grip), at(d_w), at(d_h), at(fm_max), at(f_s_max), joint_type
         )
         return _scalar_hooks(point, solution)
 
@@ -1523,14 +1529,21 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "rigid_joint_angle": rigid_angle,
     }
     # what the runner makes of a non-finite value (null) and of a refused point (all null)
-    for name, value in values.items():
-        column = np.broadcast_to(np.asarray(value, dtype=float), (n,))
-        values[name] = np.where(refused | ~np.isfinite(column), np.nan, column)
+    table = np.empty((len(values), n))
+    for row, value in zip(table, values.values(), strict=True):
+        row[...] = value
+    table[~np.isfinite(table)] = np.nan
+    any_refused = bool(refused.any())
+    if any_refused:
+        table[:, refused] = np.nan
+    values = dict(zip(values, table, strict=True))
     check_arrays.update(hook_checks)
     reported: dict[str, Any] = {}
     for name, verdict in check_arrays.items():
-        codes = np.broadcast_to(np.asarray(verdict, dtype=np.int8), (n,))
-        codes = np.where(refused, np.int8(-1), codes)
+        codes = np.empty(n, dtype=np.int8)
+        codes[...] = verdict
+        if any_refused:
+            codes[refused] = -1
         if (codes >= 0).any():  # a check no point reports is not in the scalar answers either
             reported[name] = codes
     return Result(
