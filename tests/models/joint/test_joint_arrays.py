@@ -152,6 +152,7 @@ def test_study_pass_fractions_equal_those_of_single_runs():
             Variable("working_load", "uniform", low=0.0, high=40e3),
             Variable("transverse_load", "uniform", low=0.0, high=6e3),
             Variable("interface_friction", "uniform", low=0.1, high=0.2),
+            Variable("slip_interfaces", "uniform", low=1, high=3),  # an int input
         ),
         base={
             k: v
