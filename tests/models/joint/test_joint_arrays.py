@@ -320,3 +320,54 @@ def test_array_relations_equal_the_scalar_ones():
         assert lim[j] == pytest.approx(
             jt.endurance_limit(0.012, "after_heat_treatment", f, 5e4), rel=1e-12
         )
+
+
+def test_monte_carlo_of_the_friction_box_converges_to_its_corners_and_its_mean():
+    """Issue 22's validation on the joint: μ_G, μ_K uniform in 0.08…0.16 at 80 N·m.
+
+    The assembly preload F = (M_A − M_ü)/k(μ_G, μ_K) falls with each coefficient, so the
+    study's extremes must approach the single run's torque-box corners (VDI 2230-1 R13
+    inverted over the box), and its mean the box average of 1/k, integrated here with
+    scipy from R13's k = 0.16 P + 0.58 d2 μ_G + μ_K (d_W + d_h)/4 written out anew.
+    """
+    from scipy.integrate import dblquad
+
+    torque, prevailing = 80.0, 0.4
+    base = {**M12_2X20, "tightening_torque": torque, "prevailing_torque": prevailing}
+    study = Study(
+        variables=(
+            Variable("thread_friction_min", "uniform", low=0.08, high=0.16),
+            Variable("bearing_friction_min", "uniform", low=0.08, high=0.16),
+        ),
+        base=base,
+        samples=100_000,
+        seed=2,
+        outputs=("assembly_preload_min",),
+    )
+    stats = run_study(JOINT, study).summary["outputs"]["assembly_preload_min"]
+    box = run(
+        JOINT,
+        {
+            **base,
+            "thread_friction_min": 0.08,
+            "thread_friction_max": 0.16,
+            "bearing_friction_min": 0.08,
+            "bearing_friction_max": 0.16,
+        },
+    ).results
+    # the nearest of 10⁵ uniform points lies ~0.08/√10⁵ ≈ 2.5e-4 from a corner in each μ:
+    # k and F move ~0.25 % (at μ = 0.08) from the corner value; allow 1 %
+    assert stats["min"] == pytest.approx(box["assembly_preload_min"], rel=1e-2)
+    assert stats["max"] == pytest.approx(box["assembly_preload_max"], rel=1e-2)
+    assert stats["min"] >= box["assembly_preload_min"] * (1 - 1e-12)
+    assert stats["max"] <= box["assembly_preload_max"] * (1 + 1e-12)
+
+    pitch, d2 = 0.00175, 0.012 - 0.649519 * 0.00175  # ISO 261 / ISO 68-1, M12
+
+    def preload(mu_k: float, mu_g: float) -> float:
+        return (torque - prevailing) / (0.16 * pitch + 0.58 * d2 * mu_g + mu_k * (DW + DH) / 4)
+
+    mean, _ = dblquad(preload, 0.08, 0.16, 0.08, 0.16)
+    mean /= 0.08**2
+    standard_error = stats["std"] / math.sqrt(stats["count"])
+    assert abs(stats["mean"] - mean) < 4.0 * standard_error
