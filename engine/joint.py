@@ -5,9 +5,10 @@ Pure functions on SI floats, one per calculation step of VDI 2230-1:2015
 embedding, losses, preload bounds, service stress, endurance limit) also take
 numpy arrays, one entry per point of a sweep or study (issue 21): math for
 floats (the scalar path's speed and exceptions), numpy for arrays, one formula
-each; ``joint_diagram`` stays scalar (a series for one design). VDI 2230's own text is paywalled and was not available to us;
-every relation here is the one reproduced, with VDI's step and equation
-symbols, in the open secondary sources named in each docstring:
+each; ``joint_diagram`` stays scalar (a series for one design). VDI 2230's
+own text is paywalled and was not available to us; every relation here is
+the one reproduced, with VDI's step and equation symbols, in the open
+secondary sources named in each docstring:
 
 * ECSS-E-HB-32-23A (ESA, *Threaded fasteners handbook*, 2010), §6.3 (preload,
   embedding, thermal), §7.5–7.6 (bolt and clamped-part compliance), which

@@ -1174,7 +1174,7 @@ def _vector_hook_checks(
         limit = fa.material(str(x["clamped_material"])).limiting_surface_pressure
     tau: Any = None
     if x.get("internal_thread_shear_strength") is not None:
-        tau = col("internal_thread_shear_strength")
+        tau = np.broadcast_to(col("internal_thread_shear_strength"), (n,))
     elif x.get("internal_thread_material") is not None:
         tau = np.full(n, fa.material(str(x["internal_thread_material"])).shear_strength)
     for k, bolt in enumerate(bolts):
@@ -1237,7 +1237,12 @@ def _min_engagement(bolt: Bolt, tau: np.ndarray, sel: np.ndarray) -> np.ndarray:
 
 def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     with np.errstate(all="ignore"):
-        return _vector_solution(x, ctx)
+        try:
+            return _vector_solution(x, ctx)
+        except (LookupError, AttributeError) as exc:
+            # the array path is an optimisation, the scalar compute the reference: an input
+            # combination it was not written for goes to the loop (points.vector on TypeError)
+            raise TypeError(f"joint array path: {type(exc).__name__}: {exc}") from exc
 
 
 def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:

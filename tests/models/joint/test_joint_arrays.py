@@ -259,6 +259,29 @@ def test_bought_part_checks_on_arrays():
         assert set(chunk.checks[name].tolist()) == {CHECK_OK, CHECK_FAILED}, name
 
 
+@pytest.mark.parametrize(
+    "given",
+    [
+        {"internal_thread_shear_strength": 150e6, "limiting_surface_pressure": 260e6},
+        {"internal_thread_material": "EN AW-6082 T6", "clamped_material": "EN AW-6082 T6"},
+    ],
+)
+def test_bought_part_checks_with_their_limits_fixed(given):
+    base = {
+        k: v
+        for k, v in JOINT.examples[3].items()
+        if k not in ("internal_thread_material", "clamped_material", "working_load")
+    }
+    base.update(given, tightening_torque=30.0)
+    columns = {
+        "working_load": np.linspace(1e3, 12e3, 8),
+        "engagement_length": np.linspace(0.004, 0.016, 8),
+    }
+    assert _uses_array_path(base, columns)
+    chunk = _assert_matches_single_runs(base, columns)
+    assert {"thread_stripping", "surface_pressure_working", "drive_torque"} <= set(chunk.checks)
+
+
 def test_a_check_hook_without_an_array_form_sends_the_points_to_the_loop(monkeypatch):
     def extra(x: Any, solution: Any) -> Any:
         return [joint_model.Check("grip_below_50_mm", solution.grip < 0.05, "test hook")], []
