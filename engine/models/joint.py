@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -1077,14 +1077,12 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
 # every output and unreported in every check. Series (joint diagram, preload window) are
 # not part of it: they belong to single runs.
 
-#: Inputs that define the bolt (resolved per distinct combination of their values).
-_BOLT_KEYS = (
-    "thread_diameter",
-    "thread_pitch",
-    "yield_strength",
-    "bearing_outer_diameter",
-    "hole_diameter",
-)
+#: Inputs that pick the thread from the tables (resolved per distinct combination).
+_TABLE_KEYS = ("thread_diameter", "thread_pitch")
+
+#: Bolt inputs taken as given (resolve_bolt copies them into the bolt): carried as arrays,
+#: resolved once with a stand-in value, then set per point.
+_GIVEN_KEYS = ("yield_strength", "bearing_outer_diameter", "hole_diameter")
 
 #: Bolt fields carried as arrays ([m, m², Pa]).
 _BOLT_FIELDS = (
@@ -1107,43 +1105,90 @@ def _size(x: Mapping[str, Any]) -> int:
     return sizes.pop() if sizes else 1
 
 
-def _bolts(x: Mapping[str, Any], n: int) -> tuple[list[Bolt | None], np.ndarray, list[str]]:
+def _bolts(
+    x: Mapping[str, Any], n: int
+) -> tuple[list[Bolt | None], np.ndarray, list[str], tuple[str, ...]]:
     """The distinct bolts of the request (None where resolve_bolt refuses), each point's
-    index into them, and the first bolt's notes. A refusal shared by every point raises."""
+    index into them, the first point's notes, and the inputs left to :func:`_bolt_columns`.
+
+    Only the inputs that pick a thread from the tables multiply the resolutions. A varied
+    yield strength, bearing face or hole (values resolve_bolt only copies into the bolt) is
+    left out of the resolution and set per point by :func:`_bolt_columns`, which refuses
+    where resolve_bolt would; where leaving them out changes what resolve_bolt does (it
+    refuses), they are resolved per distinct value instead. A refusal of every point raises.
+    """
     fixed = {k: v for k, v in x.items() if not isinstance(v, np.ndarray)}
-    varied = [k for k in _BOLT_KEYS if isinstance(x.get(k), np.ndarray)]
-    if not varied:
-        bolt, notes = resolve_bolt(fixed)
-        return [bolt], np.zeros(n, dtype=np.int64), notes
+    table = [k for k in _TABLE_KEYS if isinstance(x.get(k), np.ndarray)]
+    given = tuple(k for k in _GIVEN_KEYS if isinstance(x.get(k), np.ndarray))
+    first = {**fixed, **{k: x[k][0].item() for k in (*table, *given)}}
+    try:
+        notes = resolve_bolt(first)[1]
+    except EngineError:
+        notes = []
+    if given:
+        found = _resolve_rows(x, fixed, table, n)
+        if found is not None and all(b is not None for b in found[0]):
+            bolts = [
+                None
+                if b is None
+                else replace(b, tensile_strength=None)
+                if "yield_strength" in given
+                else b
+                for b in found[0]
+            ]
+            return bolts, found[1], notes, given
+    found = _resolve_rows(x, fixed, [*table, *given], n)
+    if found is None:
+        resolve_bolt(first)  # raises, says why
+        raise AssertionError("unreachable")  # pragma: no cover
+    return found[0], found[1], notes, ()
+
+
+def _resolve_rows(
+    x: Mapping[str, Any], fixed: Mapping[str, Any], keys: list[str], n: int
+) -> tuple[list[Bolt | None], np.ndarray] | None:
+    """resolve_bolt once per distinct combination of ``keys`` (None: every one refused)."""
+    if not keys:
+        try:
+            return [resolve_bolt(fixed)[0]], np.zeros(n, dtype=np.int64)
+        except EngineError:
+            return None
     rows, index = np.unique(
-        np.column_stack([np.asarray(x[k], dtype=float) for k in varied]),
+        np.column_stack([np.asarray(x[k], dtype=float) for k in keys]),
         axis=0,
         return_inverse=True,
     )
     bolts: list[Bolt | None] = []
-    first_notes: list[str] = []
     for row in rows:
         try:
-            bolt, said = resolve_bolt({**fixed, **dict(zip(varied, row.tolist(), strict=True))})
+            bolts.append(resolve_bolt({**fixed, **dict(zip(keys, row.tolist(), strict=True))})[0])
         except EngineError:
             bolts.append(None)
-            continue
-        bolts.append(bolt)
-        first_notes = first_notes or said
     if all(b is None for b in bolts):
-        resolve_bolt({**fixed, **{k: x[k][0].item() for k in varied}})  # raises, says why
-    return bolts, np.asarray(index, dtype=np.int64).reshape(n), first_notes
+        return None
+    return bolts, np.asarray(index, dtype=np.int64).reshape(n)
 
 
-def _bolt_columns(bolts: list[Bolt | None], index: np.ndarray) -> dict[str, Any]:
-    """Each bolt field per point (one bolt: its values as numpy scalars, broadcast later)."""
+def _bolt_columns(
+    bolts: list[Bolt | None], index: np.ndarray, x: Mapping[str, Any], given: tuple[str, ...]
+) -> tuple[dict[str, Any], np.ndarray]:
+    """Each bolt field per point (one bolt: numpy scalars, broadcast later), and the points
+    refused: a bolt resolve_bolt refused, or (given values) d_h < d or D_f ≤ d_h."""
     if len(bolts) == 1 and bolts[0] is not None:
-        return {f: np.float64(getattr(bolts[0], f)) for f in _BOLT_FIELDS}
-    table = {
-        f: np.array([np.nan if b is None else getattr(b, f) for b in bolts], dtype=float)
-        for f in _BOLT_FIELDS
-    }
-    return {f: column[index] for f, column in table.items()}
+        columns: dict[str, Any] = {f: np.float64(getattr(bolts[0], f)) for f in _BOLT_FIELDS}
+    else:
+        columns = {
+            f: np.array([np.nan if b is None else getattr(b, f) for b in bolts], dtype=float)[index]
+            for f in _BOLT_FIELDS
+        }
+    for key in given:
+        columns[key] = np.asarray(x[key], dtype=float)
+    refused = np.zeros(index.size, dtype=bool) | np.isnan(columns["diameter"])
+    if given:
+        if x.get("hole_diameter") is not None:
+            refused |= columns["hole_diameter"] < columns["diameter"]
+        refused |= columns["bearing_outer_diameter"] <= columns["hole_diameter"]
+    return columns, refused
 
 
 def _vector_hook_checks(
@@ -1152,6 +1197,8 @@ def _vector_hook_checks(
     bolts: list[Bolt | None],
     index: np.ndarray,
     ok: np.ndarray,
+    bearing: Any,
+    hole: Any,
     fm_max: Any,
     f_s_max: Any,
     probe: Callable[[int], tuple[list[Check], list[str]]],
@@ -1184,20 +1231,18 @@ def _vector_hook_checks(
         checks, said = probe(int(np.flatnonzero(sel)[0]))
         notes += [s for s in said if s not in notes]
         fastener = bolt.fastener or fz.Fastener("", None, None, None)
-        outer, inner = bolt.bearing_outer_diameter, bolt.hole_diameter
+        outer, inner = bearing, hole
         if x.get("washer") is not None and fastener.thread is not None:
             w = fa.washer(str(x["washer"]), fastener.thread)
-            outer, inner = w.outer_diameter, max(w.inner_diameter, bolt.hole_diameter)
+            outer, inner = w.outer_diameter, np.maximum(w.inner_diameter, hole)
         for check in checks:
             name = check.name
             if name in ("surface_pressure_assembly", "surface_pressure_working"):
                 force = fm_max if name == "surface_pressure_assembly" else f_s_max
-                area = fa.bearing_area(outer, inner)
-                verdict = (force / area if area > 0 else np.full(n, np.inf)) <= limit
+                verdict = _surface_pressure(force, outer, inner) <= limit
             elif name == "surface_pressure_nut" and fastener.thread is not None:
                 nut = fa.nut(str(x["nut"]), fastener.thread)
-                area = fa.bearing_area(nut.bearing_diameter, bolt.hole_diameter)
-                verdict = (fm_max / area if area > 0 else np.full(n, np.inf)) <= limit
+                verdict = _surface_pressure(fm_max, nut.bearing_diameter, hole) <= limit
             elif (
                 name == "thread_stripping" and tau is not None and bolt.tensile_strength is not None
             ):
@@ -1210,6 +1255,12 @@ def _vector_hook_checks(
             codes = out.setdefault(name, np.full(n, -1, dtype=np.int8))
             codes[sel] = np.asarray(verdict, dtype=np.int8)[sel] if np.ndim(verdict) else verdict
     return out, notes
+
+
+def _surface_pressure(force: Any, outer: Any, inner: Any) -> Any:
+    """:func:`engine.fasteners.surface_pressure` on arrays (the same expressions)."""
+    area = np.maximum(0.0, 0.25 * math.pi * (outer**2 - inner**2))
+    return np.where(area > 0, force / area, np.inf)
 
 
 def _min_engagement(bolt: Bolt, tau: np.ndarray, sel: np.ndarray) -> np.ndarray:
@@ -1261,12 +1312,11 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     def col_or(name: str, other: Any) -> Any:
         return other if x.get(name) is None else col(name)
 
-    bolts, bolt_index, notes = _bolts(x, n)
-    b = _bolt_columns(bolts, bolt_index)
-    refused = np.zeros(n, dtype=bool) | np.isnan(b["diameter"])  # bolts resolve_bolt refuses
+    bolts, bolt_index, notes, given = _bolts(x, n)
+    b, refused = _bolt_columns(bolts, bolt_index, x, given)
     warnings: list[str] = []
     joint_type = str(x["joint_type"])
-    d, d_w, d_h, d_s = b["diameter"], b["bearing_outer_diameter"], b["hole_diameter"], b["pitch"]
+    d, d_w, d_h, pitch = b["diameter"], b["bearing_outer_diameter"], b["hole_diameter"], b["pitch"]
     yield_strength, a_s = b["yield_strength"], b["stress_area"]
 
     # R0/R3 geometry (every plate present in the request; a 0 thickness adds exactly 0) ----------
@@ -1348,14 +1398,14 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     d0, where = jt.smallest_section(b["stress_diameter"], sections)
     a0: Any = np.where(where == "thread", a_s, 0.25 * math.pi * d0 * d0)
     nu = col("utilization")
-    beta = pl.torsion_factor(d_s, b["pitch_diameter"], d0, mu_g_lo, "vdi2230")
+    beta = pl.torsion_factor(pitch, b["pitch_diameter"], d0, mu_g_lo, "vdi2230")
     f_mzul = pl.assembly_preload(yield_strength, a0, beta, nu)
     f_myield = pl.assembly_preload(yield_strength, a0, beta, 1.0)
 
     # assembly preload range: torque specification or design at F_M,zul -----------------------
     def per_newton(mu_g: Any, mu_k: Any) -> tuple[np.ndarray, np.ndarray]:
         k_thread, k_bearing = pl.tightening_torque_per_preload(
-            d_s, b["pitch_diameter"], d, mu_g, mu_k, d_w, d_h, "vdi2230"
+            pitch, b["pitch_diameter"], d, mu_g, mu_k, d_w, d_h, "vdi2230"
         )
         return np.asarray(k_thread, dtype=float), np.asarray(k_bearing, dtype=float)
 
@@ -1425,7 +1475,7 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     # R8 working stress -----------------------------------------------------------------------
     add_load = phi_n * f_a
     f_s_max = fm_max + add_load
-    stress = jt.service_stress(f_s_max, fm_max, d_s, b["pitch_diameter"], d0, mu_g_lo)
+    stress = jt.service_stress(f_s_max, fm_max, pitch, b["pitch_diameter"], d0, mu_g_lo)
     # the scalar path divides by σ_red,B (ZeroDivisionError) and squares in Python floats
     # (OverflowError): both refuse the point there
     tau_kept = jt.TORSION_REDUCTION_IN_SERVICE * stress.torsional
@@ -1476,18 +1526,25 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         def at(value: Any) -> float:
             return float(np.broadcast_to(value, (n,))[j])
 
+        if given:
+            bolt = replace(
+                bolt,
+                yield_strength=at(yield_strength),
+                bearing_outer_diameter=at(d_w),
+                hole_diameter=at(d_h),
+            )
         solution = JointSolution(
             bolt, at(grip), at(d_w), at(d_h), at(fm_max), at(f_s_max), joint_type
         )
         return _scalar_hooks(point, solution)
 
     hook_checks, hook_notes = _vector_hook_checks(
-        x, col, bolts, bolt_index, ~refused, fm_max, f_s_max, probe
+        x, col, bolts, bolt_index, ~refused, d_w, d_h, fm_max, f_s_max, probe
     )
     notes += hook_notes
 
-    angle = pl.nut_rotation_angle(nominal, delta_s + delta_p, d_s)
-    rigid_angle = pl.nut_rotation_angle(nominal, delta_s, d_s)
+    angle = pl.nut_rotation_angle(nominal, delta_s + delta_p, pitch)
+    rigid_angle = pl.nut_rotation_angle(nominal, delta_s, pitch)
     values: dict[str, Any] = {
         "tightening_factor": alpha_a,
         "required_clamp_force": f_kerf,
@@ -1533,6 +1590,10 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "target_angle": angle,
         "rigid_joint_angle": rigid_angle,
     }
+    if refused.all():
+        # nothing to compute: the loop refuses each point with its reason (a 422 naming the
+        # field where the sweep's every point is out)
+        raise TypeError("every point is refused")
     # what the runner makes of a non-finite value (null) and of a refused point (all null)
     table = np.empty((len(values), n))
     for row, value in zip(table, values.values(), strict=True):

@@ -394,3 +394,66 @@ def test_monte_carlo_of_the_friction_box_converges_to_its_corners_and_its_mean()
     mean /= 0.08**2
     standard_error = stats["std"] / math.sqrt(stats["count"])
     assert abs(stats["mean"] - mean) < 4.0 * standard_error
+
+
+def test_scattered_strength_face_and_hole_resolve_the_bolt_once(monkeypatch):
+    """R_p0.2, D_f and d_h scattered (values the bolt only carries): no resolution per point,
+    and the points resolve_bolt refuses (d_h < d, D_f ≤ d_h) are refused here too."""
+    calls = {"n": 0}
+    resolve = joint_model.resolve_bolt
+
+    def counting(x: Any) -> Any:
+        calls["n"] += 1
+        return resolve(x)
+
+    monkeypatch.setattr(joint_model, "resolve_bolt", counting)
+    rng = np.random.default_rng(8)
+    n = 40
+    columns = {
+        "yield_strength": rng.uniform(500e6, 1100e6, n),
+        "hole_diameter": rng.uniform(0.0115, 0.0175, n),  # below d = 12 mm at some points
+        "bearing_outer_diameter": rng.uniform(0.015, 0.022, n),  # below d_h at some
+        "working_load": rng.uniform(2e3, 20e3, n),
+    }
+    base = {**M12_2X20, "working_load_min": 0.0, "transverse_load": 1e3}
+    chunk = evaluate_chunk(JOINT, base, columns, OUTPUTS, fidelity="closed_form")
+    assert calls["n"] <= 3  # notes, the resolution, and nothing per point
+    monkeypatch.setattr(joint_model, "resolve_bolt", resolve)
+    again = _assert_matches_single_runs(base, columns)
+    np.testing.assert_array_equal(chunk.values["grip"], again.values["grip"])
+    refused = np.isnan(chunk.values["grip"])
+    expect = (columns["hole_diameter"] < 0.012) | (
+        columns["bearing_outer_diameter"] <= columns["hole_diameter"]
+    )
+    np.testing.assert_array_equal(refused, expect)
+    assert 0 < refused.sum() < n
+
+
+@pytest.mark.parametrize(
+    "base",
+    [
+        # bought parts: washer and surface pressure on the scattered hole
+        {
+            "thread": "M10 ISO 4762 12.9",
+            "plate1_thickness": 0.015,
+            "washer": "ISO 7089",
+            "clamped_material": "EN AW-6082 T6",
+            "tightening_torque": 50.0,
+        },
+        # an inch thread without grade: leaving R_p0.2 out of the resolution refuses, so the
+        # bolt is resolved per distinct value instead (and still matches)
+        {"thread": "1/2-13 UNC", "plate1_thickness": 0.02, "plate2_thickness": 0.02},
+    ],
+)
+def test_scattered_bolt_values_with_catalogue_parts(base):
+    rng = np.random.default_rng(9)
+    n = 16
+    columns = {
+        "yield_strength": rng.uniform(600e6, 900e6, n),
+        "hole_diameter": rng.uniform(0.0131, 0.0140, n),
+        "working_load": rng.uniform(1e3, 10e3, n),
+    }
+    if base["thread"].startswith("1/2"):
+        columns["hole_diameter"] = rng.uniform(0.0135, 0.0145, n)
+    assert _uses_array_path(base, columns)
+    _assert_matches_single_runs(base, columns)
