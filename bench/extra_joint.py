@@ -2,8 +2,10 @@
 
 ``measure()`` returns rows {model, method, case, time_s, error, notes}:
 
-* ``array_path``: the model's ``vectorized`` called once on 2,000 points of plate 1's
-  thickness (the case :mod:`bench.extra_targets` sweeps), per call;
+* ``sweep``: :func:`engine.sweep` of 2,000 points of plate 1's thickness (the case
+  :mod:`bench.extra_targets` sweeps), beside the same sweep with the array path switched
+  off (what it cost before);
+* ``array_path``: the model's ``vectorized`` called once on those points, per call;
 * ``loop_2000``: the same 2,000 points one by one through :func:`engine.run`, per point
   (what every sweep and study of this model cost before the array path);
 * ``study_mc_array``: a Monte Carlo study of 10⁶ designs in-process (friction box,
@@ -13,6 +15,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import os
 import time
@@ -57,6 +60,21 @@ def measure() -> list[dict[str, Any]]:
     t_array = _median(functools.partial(SPEC.vectorized, x, ctx))
     t_sweep = _median(
         functools.partial(engine.sweep, SPEC, base, vary, values.tolist(), budget_s=None)
+    )
+    looped = dataclasses.replace(SPEC, vectorized=None, vector_rungs=())
+    t_before = _median(
+        functools.partial(engine.sweep, looped, base, vary, values.tolist(), budget_s=None)
+    )
+    rows.append(
+        {
+            "model": SPEC.name,
+            "method": "sweep",
+            "case": f"{POINTS} pts of {vary} through engine.sweep",
+            "time_s": t_sweep,
+            "error": None,
+            "notes": f"without the array path (per-point loop) {t_before * 1e3:.3g} ms, "
+            f"×{t_before / t_sweep:.0f}",
+        }
     )
     rows.append(
         {
