@@ -1080,8 +1080,8 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
 #: Inputs that pick the thread from the tables (resolved per distinct combination).
 _TABLE_KEYS = ("thread_diameter", "thread_pitch")
 
-#: Bolt inputs taken as given (resolve_bolt copies them into the bolt): carried as arrays,
-#: resolved once with a stand-in value, then set per point.
+#: Bolt inputs resolve_bolt only copies into the bolt: when varied, left out of the
+#: resolution and set per point (see :func:`_bolts`).
 _GIVEN_KEYS = ("yield_strength", "bearing_outer_diameter", "hole_diameter")
 
 #: Bolt fields carried as arrays ([m, m², Pa]).
