@@ -407,6 +407,10 @@ def _one_sided(
         if end > a:
             total += (end - a) / (0.25 * math.pi * (outer_diameter**2 - hole_diameter**2))
         return total
+    empty = end <= start
+    if np.all(empty):  # e.g. the far half of a through-bolted joint for a near plate
+        zero: Any = np.zeros(np.shape(empty))
+        return zero
     z_cap = (outer_diameter - bearing_diameter) / (2.0 * tangent)
     a, b = start, np.minimum(end, z_cap)
     # arrays: both pieces everywhere (z ≥ 0 keeps the logarithm's argument positive), then
