@@ -73,7 +73,10 @@ def _area(diameter: float) -> float:
 
 
 def _arrays(*values: object) -> bool:
-    return any(isinstance(v, np.ndarray) for v in values)
+    for v in values:  # noqa: SIM110 (a loop, not any(...): it runs on every scalar call)
+        if isinstance(v, np.ndarray):
+            return True
+    return False
 
 
 def _log(value: Any) -> Any:
@@ -85,11 +88,15 @@ def _sqrt(value: Any) -> Any:
 
 
 def _max(a: Any, b: Any) -> Any:
-    return np.maximum(a, b) if _arrays(a, b) else max(a, b)
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return np.maximum(a, b)
+    return b if b > a else a  # what max(a, b) returns, without its call
 
 
 def _min(a: Any, b: Any) -> Any:
-    return np.minimum(a, b) if _arrays(a, b) else min(a, b)
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return np.minimum(a, b)
+    return b if b < a else a  # what min(a, b) returns, without its call
 
 
 @dataclass(frozen=True)
@@ -235,11 +242,16 @@ def cone_tangent(
     """
     beta_l = grip / bearing_diameter
     y = outer_diameter / bearing_diameter
+    arrays = isinstance(beta_l, np.ndarray) or isinstance(y, np.ndarray)
+    log = np.log if arrays else math.log  # the scalar iteration calls this ~16 times a run
     if joint == "through":
-        tan = 0.362 + 0.032 * _log(beta_l / 2.0) + _CONE_Y_SLOPE[joint] * _log(y)
+        tan = 0.362 + 0.032 * log(beta_l / 2.0) + _CONE_Y_SLOPE[joint] * log(y)
     else:
-        tan = 0.348 + 0.013 * _log(beta_l) + _CONE_Y_SLOPE[joint] * _log(y)
-    return _max(tan, MIN_CONE_TANGENT)
+        tan = 0.348 + 0.013 * log(beta_l) + _CONE_Y_SLOPE[joint] * log(y)
+    if arrays:
+        clipped: Any = np.maximum(tan, MIN_CONE_TANGENT)
+        return clipped
+    return MIN_CONE_TANGENT if tan < MIN_CONE_TANGENT else tan  # max(tan, 0.1)
 
 
 #: ∂ tan φ / ∂ ln y of the fits above (VDI 2230-1 eq. 5.1/21–22).
