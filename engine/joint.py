@@ -1,9 +1,14 @@
 r"""The bolted joint after VDI 2230 Part 1: compliances, service loads, losses, preload window.
 
 Pure functions on SI floats, one per calculation step of VDI 2230-1:2015
-(steps R0–R13). VDI 2230's own text is paywalled and was not available to us;
-every relation here is the one reproduced, with VDI's step and equation
-symbols, in the open secondary sources named in each docstring:
+(steps R0–R13). The relations the model's array path uses (compliances, cone,
+embedding, losses, preload bounds, service stress, endurance limit) also take
+numpy arrays, one entry per point of a sweep or study (issue 21): math for
+floats (the scalar path's speed and exceptions), numpy for arrays, one formula
+each; ``joint_diagram`` stays scalar (a series for one design). VDI 2230's
+own text is paywalled and was not available to us; every relation here is
+the one reproduced, with VDI's step and equation symbols, in the open
+secondary sources named in each docstring:
 
 * ECSS-E-HB-32-23A (ESA, *Threaded fasteners handbook*, 2010), §6.3 (preload,
   embedding, thermal), §7.5–7.6 (bolt and clamped-part compliance), which
@@ -25,6 +30,9 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
 
 from .errors import InputOutOfRange
 
@@ -57,6 +65,38 @@ MIN_CONE_TANGENT = 0.1
 
 def _area(diameter: float) -> float:
     return 0.25 * math.pi * diameter * diameter
+
+
+# Float or array: every function below takes SI floats (math, the scalar path's speed and
+# its exceptions kept) or numpy arrays (one request's points at once, issue 21). The
+# helpers pick math or numpy by the arguments' type, so each formula is written once.
+
+
+def _arrays(*values: object) -> bool:
+    for v in values:  # noqa: SIM110 (a loop, not any(...): it runs on every scalar call)
+        if isinstance(v, np.ndarray):
+            return True
+    return False
+
+
+def _log(value: Any) -> Any:
+    return np.log(value) if isinstance(value, np.ndarray) else math.log(value)
+
+
+def _sqrt(value: Any) -> Any:
+    return np.sqrt(value) if isinstance(value, np.ndarray) else math.sqrt(value)
+
+
+def _max(a: Any, b: Any) -> Any:
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return np.maximum(a, b)
+    return b if b > a else a  # what max(a, b) returns, without its call
+
+
+def _min(a: Any, b: Any) -> Any:
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return np.minimum(a, b)
+    return b if b < a else a  # what min(a, b) returns, without its call
 
 
 @dataclass(frozen=True)
@@ -155,7 +195,10 @@ def bolt_compliance(
 
 
 def cone_tangent(
-    grip: float, bearing_diameter: float, outer_diameter: float, joint: str = "through"
+    grip: float,
+    bearing_diameter: float,
+    outer_diameter: float,
+    joint: str = "through",
 ) -> float:
     r"""Tangent of the deformation-cone angle φ (VDI 2230-1 R3).
 
@@ -199,11 +242,20 @@ def cone_tangent(
     """
     beta_l = grip / bearing_diameter
     y = outer_diameter / bearing_diameter
+    arrays = isinstance(beta_l, np.ndarray) or isinstance(y, np.ndarray)
+    log = np.log if arrays else math.log  # the scalar iteration calls this ~16 times a run
     if joint == "through":
-        tan = 0.362 + 0.032 * math.log(beta_l / 2.0) + 0.153 * math.log(y)
+        tan = 0.362 + 0.032 * log(beta_l / 2.0) + _CONE_Y_SLOPE[joint] * log(y)
     else:
-        tan = 0.348 + 0.013 * math.log(beta_l) + 0.193 * math.log(y)
-    return max(tan, MIN_CONE_TANGENT)
+        tan = 0.348 + 0.013 * log(beta_l) + _CONE_Y_SLOPE[joint] * log(y)
+    if arrays:
+        clipped: Any = np.maximum(tan, MIN_CONE_TANGENT)
+        return clipped
+    return MIN_CONE_TANGENT if tan < MIN_CONE_TANGENT else tan  # max(tan, 0.1)
+
+
+#: ∂ tan φ / ∂ ln y of the fits above (VDI 2230-1 eq. 5.1/21–22).
+_CONE_Y_SLOPE: dict[str, float] = {"through": 0.153, "tapped": 0.193}
 
 
 def cone_limit_diameter(
@@ -277,7 +329,19 @@ def unlimited_outer_diameter(grip: float, bearing_diameter: float, joint: str = 
     --------
     >>> round(unlimited_outer_diameter(0.040, 0.01663) * 1e3, 2)
     36.09
+
+    Arrays reach the same fixed point (a few Newton steps first, then this iteration):
+
+    >>> d = unlimited_outer_diameter(np.array([0.040, 0.010]), 0.01663)
+    >>> bool(abs(d[0] / unlimited_outer_diameter(0.040, 0.01663) - 1.0) < 1e-12)
+    True
     """
+    if _arrays(grip, bearing_diameter):
+        grips, bearings = np.broadcast_arrays(
+            np.asarray(grip, dtype=float), np.asarray(bearing_diameter, dtype=float)
+        )
+        result: Any = _unlimited_outer_diameters(grips, bearings, joint)
+        return result
     outer = bearing_diameter * 2.0
     for _ in range(200):
         tan = cone_tangent(grip, bearing_diameter, outer, joint)
@@ -288,6 +352,43 @@ def unlimited_outer_diameter(grip: float, bearing_diameter: float, joint: str = 
     return outer
 
 
+def _unlimited_outer_diameters(grip: Any, bearing: Any, joint: str) -> Any:
+    """:func:`unlimited_outer_diameter` point by point on arrays (each stops where it converges).
+
+    A few safeguarded Newton steps on D − D_A,Gr(D) first (where the map's slope
+    w l_K ∂tanφ/∂D is below ½; a plain step elsewhere), then the scalar function's own
+    fixed-point iteration and stopping rule from there: the same fixed point within
+    ~1e-13, in about 5 passes over the arrays instead of ~16.
+    """
+    w = 1.0 if joint == "through" else 2.0
+    start = bearing * 2.0
+    outer = start
+    new: Any
+    for _ in range(8):
+        tan = cone_tangent(grip, bearing, outer, joint)
+        new = cone_limit_diameter(grip, bearing, tan, joint)
+        slope = np.where(tan > MIN_CONE_TANGENT, w * grip * _CONE_Y_SLOPE[joint] / outer, 0.0)
+        step = np.where(slope < 0.5, (new - outer) / (1.0 - slope), new - outer)
+        outer = outer + step
+        if not np.abs(step).max(initial=0.0) > 1e-13 * np.abs(outer).max(initial=0.0):
+            break
+    outer = np.where(np.isfinite(outer) & (outer >= bearing), outer, start)
+    result = np.full(outer.shape, np.nan)
+    active = np.arange(outer.size)
+    g, b, o = grip.ravel(), bearing.ravel(), outer.ravel().copy()
+    for _ in range(200):
+        tan = cone_tangent(g, b, o, joint)
+        new = cone_limit_diameter(g, b, tan, joint)
+        done = np.abs(new - o) <= 1e-12 * new
+        result.flat[active[done]] = new[done]
+        keep = ~done
+        active, g, b, o = active[keep], g[keep], b[keep], new[keep]
+        if not active.size:
+            return result
+    result.flat[active] = o
+    return result
+
+
 def _one_sided(
     start: float,
     end: float,
@@ -296,24 +397,41 @@ def _one_sided(
     tangent: float,
     outer_diameter: float,
 ) -> float:
-    """∫ dz / A(z) over [start, end] of a cone from d_W at z = 0, capped at D_A (1/m)."""
-    if end <= start:
-        return 0.0
+    """∫ dz / A(z) over [start, end] of a cone from d_W at z = 0, capped at D_A (1/m).
+
+    Floats or arrays; an empty interval (end ≤ start) gives 0 through both branches.
+    """
+    d_h = hole_diameter
+
+    def g(z: float) -> float:
+        diameter = bearing_diameter + 2.0 * z * tangent
+        return _log((diameter - d_h) / (diameter + d_h))
+
+    if not _arrays(start, end, bearing_diameter, hole_diameter, tangent, outer_diameter):
+        if end <= start:
+            return 0.0
+        z_cap = (outer_diameter - bearing_diameter) / (2.0 * tangent)
+        total = 0.0
+        a, b = start, min(end, z_cap)
+        if b > a:
+            total += (g(b) - g(a)) / (math.pi * d_h * tangent)
+        a = max(start, z_cap)
+        if end > a:
+            total += (end - a) / (0.25 * math.pi * (outer_diameter**2 - hole_diameter**2))
+        return total
+    empty = end <= start
+    if np.all(empty):  # e.g. the far half of a through-bolted joint for a near plate
+        zero: Any = np.zeros(np.shape(empty))
+        return zero
     z_cap = (outer_diameter - bearing_diameter) / (2.0 * tangent)
-    total = 0.0
-    a, b = start, min(end, z_cap)
-    if b > a:
-        d_h = hole_diameter
-
-        def g(z: float) -> float:
-            diameter = bearing_diameter + 2.0 * z * tangent
-            return math.log((diameter - d_h) / (diameter + d_h))
-
-        total += (g(b) - g(a)) / (math.pi * d_h * tangent)
-    a = max(start, z_cap)
-    if end > a:
-        total += (end - a) / (0.25 * math.pi * (outer_diameter**2 - hole_diameter**2))
-    return total
+    a, b = start, np.minimum(end, z_cap)
+    # arrays: both pieces everywhere (z ≥ 0 keeps the logarithm's argument positive), then
+    # only where the scalar branch would add them
+    cone = np.where(b > a, (g(b) - g(a)) / (math.pi * d_h * tangent), 0.0)
+    a = np.maximum(start, z_cap)
+    sleeve = (end - a) / (0.25 * math.pi * (outer_diameter**2 - hole_diameter**2))
+    both: Any = (0.0 + cone) + np.where(end > a, sleeve, 0.0)
+    return both
 
 
 @dataclass(frozen=True)
@@ -406,11 +524,12 @@ def clamped_compliance(
     """
     if len(thicknesses) != len(youngs_moduli) or not thicknesses:
         raise InputOutOfRange("give one Young's modulus per plate", field="plate1_thickness")
-    grip = float(sum(thicknesses))
+    grip = sum(thicknesses)
+    grip = grip if isinstance(grip, np.ndarray) else float(grip)
     if outer_diameter is None:
         outer = unlimited_outer_diameter(grip, bearing_diameter, joint)
     else:
-        outer = max(outer_diameter, bearing_diameter)
+        outer = _max(outer_diameter, bearing_diameter)
     tan = cone_tangent(grip, bearing_diameter, outer, joint) if tangent is None else tangent
     limit = cone_limit_diameter(grip, bearing_diameter, tan, joint)
     per_plate = []
@@ -420,8 +539,8 @@ def clamped_compliance(
         a, b = z, z + h
         args = (bearing_diameter, hole_diameter, tan, outer)
         if joint == "through":
-            integral = _one_sided(min(a, half), min(b, half), *args) + _one_sided(
-                grip - max(b, half), grip - max(a, half), *args
+            integral = _one_sided(_min(a, half), _min(b, half), *args) + _one_sided(
+                grip - _max(b, half), grip - _max(a, half), *args
             )
         else:
             integral = _one_sided(a, b, *args)
@@ -687,7 +806,7 @@ def minimum_assembly_preload(
         required_clamp_force
         + (1.0 - load_factor_n) * working_load_max
         + embedding_force
-        + max(thermal_loss, 0.0)
+        + _max(thermal_loss, 0.0)
     )
 
 
@@ -722,7 +841,23 @@ def smallest_section(
     --------
     >>> smallest_section(0.010358, [(0.05, 0.0075)])
     (0.0075, 'shank')
+
+    On arrays, ``which`` is an array of the same words:
+
+    >>> d0, which = smallest_section(0.010358, [(np.array([0.05, 0.0]), 0.0075)])
+    >>> d0.tolist(), which.tolist()
+    ([0.0075, 0.010358], ['shank', 'thread'])
     """
+    if _arrays(stress_diameter, *(v for section in sections for v in section)):
+        d0_arr = np.asarray(stress_diameter, dtype=float)
+        shank = np.zeros(d0_arr.shape, dtype=bool)
+        for length, diameter in sections:
+            smaller = (np.asarray(length) > 0.0) & (diameter < d0_arr)
+            d0_arr = np.where(smaller, diameter, d0_arr)
+            shank = shank | smaller
+        words: Any = np.where(shank, "shank", "thread")
+        d0_any: Any = d0_arr
+        return d0_any, words
     d0, which = stress_diameter, "thread"
     for length, diameter in sections:
         if length > 0.0 and diameter < d0:
@@ -783,8 +918,8 @@ def preload_bounds_from_torque(
     (31500, 64308)
     """
     least = prevailing_torque if prevailing_torque_min is None else prevailing_torque_min
-    low = max(torque * (1.0 - torque_tolerance) - prevailing_torque, 0.0)
-    high = max(torque * (1.0 + torque_tolerance) - least, 0.0)
+    low = _max(torque * (1.0 - torque_tolerance) - prevailing_torque, 0.0)
+    high = _max(torque * (1.0 + torque_tolerance) - least, 0.0)
     return low / per_newton_high_friction, high / per_newton_low_friction
 
 
@@ -855,7 +990,7 @@ def service_stress(
     )
     tau = thread_torque / (math.pi * smallest_diameter**3 / 16.0)
     sigma = bolt_force / a0
-    return ServiceStress(sigma, tau, math.sqrt(sigma**2 + 3.0 * (torsion_reduction * tau) ** 2))
+    return ServiceStress(sigma, tau, _sqrt(sigma**2 + 3.0 * (torsion_reduction * tau) ** 2))
 
 
 def endurance_limit(
@@ -903,7 +1038,7 @@ def endurance_limit(
     base = 0.85 * (150.0 / (diameter * 1e3) + 45.0) * 1e6
     if rolling == "before_heat_treatment":
         return base
-    ratio = min(max(mean_bolt_force / proof_force, 0.0), 1.0)
+    ratio = _min(_max(mean_bolt_force / proof_force, 0.0), 1.0)
     return (2.0 - ratio) * base
 
 

@@ -15,12 +15,15 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
+import numpy as np
+
+from .. import fasteners as fa
 from .. import joint as jt
 from .. import preload as pl
-from ..errors import InputOutOfRange
+from ..errors import EngineError, InputOutOfRange
 from ..preload_methods import METHODS, get_method
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
 from . import _fasteners as fz
@@ -1064,6 +1067,578 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
     ),
 )
 
+# --------------------------------------------------------------------------- array path
+#
+# ``_vectorized`` gives what ``_compute`` gives, point by point, for a request whose numeric
+# inputs may be arrays (a sweep, a study's chunk; issue 21/22). The text and choice inputs are
+# fixed per request and read once; the bolt is resolved once per distinct bolt (usually
+# once); every relation is the same function of engine.joint / engine.preload, called on
+# arrays. A point the scalar compute refuses (InputOutOfRange, a division by zero) is NaN in
+# every output and unreported in every check. Series (joint diagram, preload window) are
+# not part of it: they belong to single runs.
+
+#: Inputs that pick the thread from the tables (resolved per distinct combination).
+_TABLE_KEYS = ("thread_diameter", "thread_pitch")
+
+#: Bolt inputs resolve_bolt only copies into the bolt: when varied, left out of the
+#: resolution and set per point (see :func:`_bolts`).
+_GIVEN_KEYS = ("yield_strength", "bearing_outer_diameter", "hole_diameter")
+
+#: Bolt fields carried as arrays ([m, m², Pa]).
+_BOLT_FIELDS = (
+    "diameter",
+    "pitch",
+    "pitch_diameter",
+    "minor_diameter",
+    "stress_diameter",
+    "stress_area",
+    "yield_strength",
+    "bearing_outer_diameter",
+    "hole_diameter",
+)
+
+
+def _size(x: Mapping[str, Any]) -> int:
+    sizes = {v.shape[0] for v in x.values() if isinstance(v, np.ndarray) and v.ndim == 1}
+    if len(sizes) > 1:
+        raise ValueError(f"varied inputs of different lengths {sorted(sizes)}")
+    return sizes.pop() if sizes else 1
+
+
+def _bolts(
+    x: Mapping[str, Any], n: int
+) -> tuple[list[Bolt | None], np.ndarray, list[str], tuple[str, ...]]:
+    """The distinct bolts of the request (None where resolve_bolt refuses), each point's
+    index into them, the first point's notes, and the inputs left to :func:`_bolt_columns`.
+
+    Only the inputs that pick a thread from the tables multiply the resolutions. A varied
+    yield strength, bearing face or hole (values resolve_bolt only copies into the bolt) is
+    left out of the resolution and set per point by :func:`_bolt_columns`, which refuses
+    where resolve_bolt would; where leaving them out changes what resolve_bolt does (it
+    refuses), they are resolved per distinct value instead. A refusal of every point raises.
+    """
+    fixed = {k: v for k, v in x.items() if not isinstance(v, np.ndarray)}
+    table = [k for k in _TABLE_KEYS if isinstance(x.get(k), np.ndarray)]
+    given = tuple(k for k in _GIVEN_KEYS if isinstance(x.get(k), np.ndarray))
+    first = {**fixed, **{k: x[k][0].item() for k in (*table, *given)}}
+    try:
+        notes = resolve_bolt(first)[1]
+    except EngineError:
+        notes = []
+    if given:
+        found = _resolve_rows(x, fixed, table, n)
+        if found is not None and all(b is not None for b in found[0]):
+            bolts = [
+                None
+                if b is None
+                else replace(b, tensile_strength=None)
+                if "yield_strength" in given
+                else b
+                for b in found[0]
+            ]
+            return bolts, found[1], notes, given
+    found = _resolve_rows(x, fixed, [*table, *given], n)
+    if found is None:
+        resolve_bolt(first)  # raises, says why
+        raise AssertionError("unreachable")  # pragma: no cover
+    return found[0], found[1], notes, ()
+
+
+def _resolve_rows(
+    x: Mapping[str, Any], fixed: Mapping[str, Any], keys: list[str], n: int
+) -> tuple[list[Bolt | None], np.ndarray] | None:
+    """resolve_bolt once per distinct combination of ``keys`` (None: every one refused)."""
+    if not keys:
+        try:
+            return [resolve_bolt(fixed)[0]], np.zeros(n, dtype=np.int64)
+        except EngineError:
+            return None
+    rows, index = np.unique(
+        np.column_stack([np.asarray(x[k], dtype=float) for k in keys]),
+        axis=0,
+        return_inverse=True,
+    )
+    bolts: list[Bolt | None] = []
+    for row in rows:
+        try:
+            bolts.append(resolve_bolt({**fixed, **dict(zip(keys, row.tolist(), strict=True))})[0])
+        except EngineError:
+            bolts.append(None)
+    if all(b is None for b in bolts):
+        return None
+    return bolts, np.asarray(index, dtype=np.int64).reshape(n)
+
+
+def _bolt_columns(
+    bolts: list[Bolt | None], index: np.ndarray, x: Mapping[str, Any], given: tuple[str, ...]
+) -> tuple[dict[str, Any], np.ndarray]:
+    """Each bolt field per point (one bolt: numpy scalars, broadcast later), and the points
+    refused: a bolt resolve_bolt refused, or (given values) d_h < d or D_f ≤ d_h."""
+    if len(bolts) == 1 and bolts[0] is not None:
+        columns: dict[str, Any] = {f: np.float64(getattr(bolts[0], f)) for f in _BOLT_FIELDS}
+    else:
+        columns = {
+            f: np.array([np.nan if b is None else getattr(b, f) for b in bolts], dtype=float)[index]
+            for f in _BOLT_FIELDS
+        }
+    for key in given:
+        columns[key] = np.asarray(x[key], dtype=float)
+    refused = np.zeros(index.size, dtype=bool) | np.isnan(columns["diameter"])
+    if given:
+        if x.get("hole_diameter") is not None:
+            refused |= columns["hole_diameter"] < columns["diameter"]
+        refused |= columns["bearing_outer_diameter"] <= columns["hole_diameter"]
+    return columns, refused
+
+
+def _vector_hook_checks(
+    x: Mapping[str, Any],
+    col: Callable[[str], np.ndarray],
+    bolts: list[Bolt | None],
+    index: np.ndarray,
+    ok: np.ndarray,
+    bearing: Any,
+    hole: Any,
+    fm_max: Any,
+    f_s_max: Any,
+    probe: Callable[[int], tuple[list[Check], list[str]]],
+) -> tuple[dict[str, np.ndarray], list[str]]:
+    """The verdicts of ``fz.joint_check_hook`` (VDI 2230-1 R10, R11, ISO 2936) on arrays.
+
+    Which checks a bolt gets is fixed per request and bolt, so the scalar hook runs once
+    per distinct bolt (``probe``: at its first computable point) for their names, its notes
+    and its refusals; the verdicts are then the same comparisons as
+    :func:`engine.models._fasteners.bought_part_checks`, on arrays. A check name this does
+    not know raises TypeError (the caller loops instead).
+    """
+    n = index.size
+    out: dict[str, np.ndarray] = {}
+    notes: list[str] = []
+    limit: Any = None
+    if x.get("limiting_surface_pressure") is not None:
+        limit = col("limiting_surface_pressure")
+    elif x.get("clamped_material") is not None:
+        limit = fa.material(str(x["clamped_material"])).limiting_surface_pressure
+    tau: Any = None
+    if x.get("internal_thread_shear_strength") is not None:
+        tau = np.broadcast_to(col("internal_thread_shear_strength"), (n,))
+    elif x.get("internal_thread_material") is not None:
+        tau = np.full(n, fa.material(str(x["internal_thread_material"])).shear_strength)
+    for k, bolt in enumerate(bolts):
+        sel = ok & (index == k)
+        if bolt is None or not sel.any():
+            continue
+        checks, said = probe(int(np.flatnonzero(sel)[0]))
+        notes += [s for s in said if s not in notes]
+        fastener = bolt.fastener or fz.Fastener("", None, None, None)
+        outer, inner = bearing, hole
+        if x.get("washer") is not None and fastener.thread is not None:
+            w = fa.washer(str(x["washer"]), fastener.thread)
+            outer, inner = w.outer_diameter, np.maximum(w.inner_diameter, hole)
+        for check in checks:
+            name = check.name
+            if name in ("surface_pressure_assembly", "surface_pressure_working"):
+                force = fm_max if name == "surface_pressure_assembly" else f_s_max
+                verdict = _surface_pressure(force, outer, inner) <= limit
+            elif name == "surface_pressure_nut" and fastener.thread is not None:
+                nut = fa.nut(str(x["nut"]), fastener.thread)
+                verdict = _surface_pressure(fm_max, nut.bearing_diameter, hole) <= limit
+            elif (
+                name == "thread_stripping" and tau is not None and bolt.tensile_strength is not None
+            ):
+                verdict = col("engagement_length") >= _min_engagement(bolt, tau, sel)
+            elif name == "drive_torque" and fastener.head is not None:
+                key = fa.hex_key_torque(fastener.head.drive_size)
+                verdict = col("tightening_torque") <= (np.inf if key is None else key)
+            else:
+                raise TypeError(f"check hook gives {name!r}, which has no array form here")
+            codes = out.setdefault(name, np.full(n, -1, dtype=np.int8))
+            codes[sel] = np.asarray(verdict, dtype=np.int8)[sel] if np.ndim(verdict) else verdict
+    return out, notes
+
+
+def _surface_pressure(force: Any, outer: Any, inner: Any) -> Any:
+    """:func:`engine.fasteners.surface_pressure` on arrays (the same expressions)."""
+    area = np.maximum(0.0, 0.25 * math.pi * (outer**2 - inner**2))
+    return np.where(area > 0, force / area, np.inf)
+
+
+def _min_engagement(bolt: Bolt, tau: np.ndarray, sel: np.ndarray) -> np.ndarray:
+    """Least length of engagement (VDI 2230-1 R11) per point, once per distinct τ_BM."""
+    assert bolt.tensile_strength is not None
+    result = np.full(tau.shape, np.nan)
+    values, where = np.unique(tau[sel], return_inverse=True)
+    lengths = [
+        fa.thread_stripping(
+            bolt.diameter,
+            bolt.pitch,
+            bolt.pitch_diameter,
+            bolt.diameter - 1.082532 * bolt.pitch,
+            bolt.stress_area,
+            bolt.tensile_strength,
+            fz.BOLT_SHEAR_RATIO * bolt.tensile_strength,
+            t,
+            1.0,
+        ).min_engagement_length
+        for t in values.tolist()
+    ]
+    result[sel] = np.asarray(lengths, dtype=float)[np.asarray(where).reshape(-1)]
+    return result
+
+
+def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    with np.errstate(all="ignore"):
+        try:
+            return _vector_solution(x, ctx)
+        except (LookupError, AttributeError) as exc:
+            # the array path is an optimisation, the scalar compute the reference: an input
+            # combination it was not written for goes to the loop (points.vector on TypeError)
+            raise TypeError(f"joint array path: {type(exc).__name__}: {exc}") from exc
+
+
+def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    for name in ("head", "joint_type", "surface_roughness", "method", "rolling", "controlled"):
+        if isinstance(x.get(name), np.ndarray):
+            raise TypeError(f"{name} is fixed per request on the array path")
+    n = _size(x)
+
+    def col(name: str) -> Any:
+        """A varied input as a float array, a fixed one as a numpy scalar (broadcast later)."""
+        value = x[name]
+        if isinstance(value, np.ndarray):
+            return value.astype(float, copy=False)
+        return np.float64(value)
+
+    def col_or(name: str, other: Any) -> Any:
+        return other if x.get(name) is None else col(name)
+
+    bolts, bolt_index, notes, given = _bolts(x, n)
+    b, refused = _bolt_columns(bolts, bolt_index, x, given)
+    warnings: list[str] = []
+    joint_type = str(x["joint_type"])
+    d, d_w, d_h, pitch = b["diameter"], b["bearing_outer_diameter"], b["hole_diameter"], b["pitch"]
+    yield_strength, a_s = b["yield_strength"], b["stress_area"]
+
+    # R0/R3 geometry (every plate present in the request; a 0 thickness adds exactly 0) ----------
+    e1, a1 = col("plate1_youngs_modulus"), col("plate1_expansion")
+    thick, moduli, alphas = [], [], []
+    for i in range(1, MAX_PLATES + 1):
+        if x.get(f"plate{i}_thickness") is None:
+            continue
+        thick.append(np.maximum(col(f"plate{i}_thickness"), 0.0))
+        moduli.append(col_or(f"plate{i}_youngs_modulus", e1))
+        alphas.append(col_or(f"plate{i}_expansion", a1))
+    plates = sum((h > 0.0).astype(np.int64) for h in thick)
+    grip = sum(thick)
+    outer = None if x.get("outer_diameter") is None else col("outer_diameter")
+    if outer is not None:
+        refused |= outer < d_w * (1.0 - 1e-12)
+    l_shank, l_reduced = col("shank_length"), col("reduced_length")
+    refused |= l_shank + l_reduced > grip * (1.0 + 1e-12)
+    if x.get("reduced_diameter") is None:
+        refused |= l_reduced > 0.0
+    shank_d, reduced_d = col_or("shank_diameter", d), col_or("reduced_diameter", d)
+    for name, value in (("shank_diameter", shank_d), ("reduced_diameter", reduced_d)):
+        if x.get(name) is not None:
+            refused |= value > d * (1 + 1e-12)
+    sections = [(l_shank, shank_d), (l_reduced, reduced_d)]
+    free_thread = np.maximum(grip - l_shank - l_reduced, 0.0)
+    e_s = col("youngs_modulus")
+    bolt_c = jt.bolt_compliance(
+        d,
+        b["minor_diameter"],
+        e_s,
+        sections,
+        free_thread,
+        str(x["head"]),
+        joint_type,
+        None if x.get("nut_youngs_modulus") is None else col("nut_youngs_modulus"),
+    )
+    parts = jt.clamped_compliance(thick, moduli, d_w, d_h, outer, joint_type)
+    delta_s, delta_p = bolt_c.total, parts.total
+    phi_k = jt.load_factor(delta_s, delta_p, 1.0)
+    phi_n = col("load_introduction") * phi_k
+    if outer is None:
+        notes.append("D_A not given: plates taken just wide enough for the full cone (D_A,Gr)")
+    if np.any(~refused & (parts.tangent <= jt.MIN_CONE_TANGENT)):
+        warnings.append(
+            f"plates very thin against d_W: the cone tangent is held at {jt.MIN_CONE_TANGENT}"
+        )
+
+    # R2 required clamp force -----------------------------------------------------------------
+    f_q, q_f, mu_t = col("transverse_load"), col("slip_interfaces"), col("interface_friction")
+    f_kq = jt.transverse_clamp_force(f_q, q_f, mu_t)
+    f_kerf = np.maximum(f_kq, col("sealing_clamp_force"))
+
+    # R1 friction box, loads ------------------------------------------------------------------
+    method = get_method(str(x["method"]))
+    mu_g_lo, mu_k_lo = col("thread_friction_min"), col("bearing_friction_min")
+    mu_g_hi = col_or("thread_friction_max", mu_g_lo)
+    mu_k_hi = col_or("bearing_friction_max", mu_k_lo)
+    refused |= (mu_g_hi < mu_g_lo) | (mu_k_hi < mu_k_lo)
+    f_a = col("working_load")
+    f_a_min = col_or("working_load_min", f_a)
+    refused |= f_a_min > f_a
+
+    # R4 losses --------------------------------------------------------------------------------
+    through = joint_type == "through"
+    roughness = str(x["surface_roughness"])
+    faces, interfaces = (2, plates - 1) if through else (1, plates)
+    f_z_len: Any = np.where(
+        f_q > 0.0,
+        jt.embedding(roughness, "transverse", faces, interfaces),
+        jt.embedding(roughness, "axial", faces, interfaces),
+    )
+    f_z = jt.embedding_loss(f_z_len, delta_s, delta_p)
+    dt_s = col("temperature_change")
+    dt_p = col_or("plate_temperature_change", dt_s)
+    alpha_len = sum(h * a for h, a in zip(thick, alphas, strict=True))
+
+    # R7 permissible preload at the smallest section -------------------------------------------
+    d0, where = jt.smallest_section(b["stress_diameter"], sections)
+    a0: Any = np.where(where == "thread", a_s, 0.25 * math.pi * d0 * d0)
+    nu = col("utilization")
+    beta = pl.torsion_factor(pitch, b["pitch_diameter"], d0, mu_g_lo, "vdi2230")
+    f_mzul = pl.assembly_preload(yield_strength, a0, beta, nu)
+    f_myield = pl.assembly_preload(yield_strength, a0, beta, 1.0)
+
+    # assembly preload range: torque specification or design at F_M,zul -----------------------
+    def per_newton(mu_g: Any, mu_k: Any) -> tuple[np.ndarray, np.ndarray]:
+        k_thread, k_bearing = pl.tightening_torque_per_preload(
+            pitch, b["pitch_diameter"], d, mu_g, mu_k, d_w, d_h, "vdi2230"
+        )
+        return np.asarray(k_thread, dtype=float), np.asarray(k_bearing, dtype=float)
+
+    kt_low, kb_low = per_newton(mu_g_lo, mu_k_lo)
+    kt_high, kb_high = per_newton(mu_g_hi, mu_k_hi)
+    k_low, k_high = kt_low + kb_low, kt_high + kb_high
+    m_u = col("prevailing_torque")
+    m_u_min = col_or("prevailing_torque_min", m_u)
+    refused |= m_u_min > m_u
+    torque_given = x.get("tightening_torque") is not None
+    alpha_a: Any
+    if torque_given:
+        torque = col("tightening_torque")
+        fm_min, fm_max = jt.preload_bounds_from_torque(
+            torque, col("torque_tolerance"), m_u, k_low, k_high, m_u_min
+        )
+        alpha_a = np.where(fm_min > 0.0, fm_max / fm_min, np.inf)
+        design_torque = torque
+    else:
+        alpha_a = np.broadcast_to(
+            float(method.tightening_factor)
+            if x.get("tightening_factor") is None
+            else col("tightening_factor"),
+            (n,),
+        )
+        fm_max = f_mzul
+        fm_min = f_mzul / alpha_a
+        design_torque = f_mzul * kt_low + f_mzul * kb_low + m_u
+    f_v_min = fm_min - f_z
+    th_loss = jt.thermal_preload_loss(
+        f_v_min,
+        grip,
+        col("bolt_expansion"),
+        dt_s,
+        alpha_len,
+        dt_p,
+        delta_s,
+        delta_p,
+        col("bolt_modulus_ratio"),
+        col("plate_modulus_ratio"),
+    )
+
+    # R5/R6 required window ------------------------------------------------------------------
+    alpha_req = np.where(np.isfinite(alpha_a), alpha_a, method.tightening_factor)
+    req_min = jt.minimum_assembly_preload(f_kerf, f_a, phi_n, f_z, th_loss)
+    req_max = alpha_req * req_min
+    loss = f_z + np.maximum(th_loss, 0.0)
+    opens = 1.0 - phi_n > 0.0
+    fa_limit = np.where(
+        opens, np.maximum((f_mzul / alpha_req - f_kerf - loss) / (1.0 - phi_n), 0.0), np.inf
+    )
+    fa_sep_any = np.where(opens, np.maximum((f_mzul - loss) / (1.0 - phi_n), 0.0), np.inf)
+    check_arrays: dict[str, Any] = {
+        "R7_window_fits": req_max <= f_mzul * (1.0 + 1e-12),
+        "separation_avoidable": f_a < fa_sep_any,
+    }
+    f_kr_min = fm_min - (1.0 - phi_n) * f_a - f_z - np.maximum(th_loss, 0.0)
+    fa_sep = np.where(
+        phi_n < 1.0,
+        np.maximum(fm_min - f_z - np.maximum(th_loss, 0.0), 0.0) / (1.0 - phi_n),
+        np.inf,
+    )
+    check_arrays["residual_clamp_force"] = f_kr_min >= f_kerf * (1.0 - 1e-12)
+    if torque_given:
+        check_arrays["R7_max_below_permissible"] = fm_max <= f_mzul * (1.0 + 1e-12)
+
+    # R8 working stress -----------------------------------------------------------------------
+    add_load = phi_n * f_a
+    f_s_max = fm_max + add_load
+    stress = jt.service_stress(f_s_max, fm_max, pitch, b["pitch_diameter"], d0, mu_g_lo)
+    # the scalar path divides by σ_red,B (ZeroDivisionError) and squares in Python floats
+    # (OverflowError): both refuse the point there
+    tau_kept = jt.TORSION_REDUCTION_IN_SERVICE * stress.torsional
+    refused |= stress.equivalent == 0.0
+    refused |= np.isfinite(stress.axial) & ~np.isfinite(stress.axial**2)
+    refused |= np.isfinite(tau_kept) & ~np.isfinite(tau_kept**2)
+    s_f = yield_strength / stress.equivalent
+    check_arrays["R8_working_stress"] = s_f >= 1.0
+
+    # R9 alternating stress ----------------------------------------------------------------------
+    sigma_a = phi_n * (f_a - f_a_min) / (2.0 * a_s)
+    f_sm = fm_max + phi_n * 0.5 * (f_a + f_a_min)
+    sigma_as = jt.endurance_limit(d, str(x["rolling"]), f_sm, a_s * yield_strength)
+    alternating = sigma_a > 0.0
+    s_d = np.where(alternating, sigma_as / sigma_a, np.inf)
+    check_arrays["R9_fatigue"] = np.where(alternating, s_d >= 1.2, -1).astype(np.int8)
+
+    # R12 slipping ---------------------------------------------------------------------------------
+    slipping = f_q > 0.0
+    s_g = np.where(slipping, f_kr_min * q_f * mu_t / f_q, np.inf)
+    need = np.where(f_a_min < f_a, 1.8, 1.2)
+    check_arrays["R12_slip"] = np.where(slipping, s_g >= need, -1).astype(np.int8)
+
+    # [004] rules --------------------------------------------------------------------------------
+    nominal = 0.5 * (fm_min + fm_max)
+    sigma0 = nominal / a0
+    ratio0 = sigma0 / yield_strength
+    accurate = method.scatter <= 0.10 + 1e-12 and not torque_given
+    if bool(x["bridge_joint"]):
+        hi_rule = 0.9
+    elif accurate:
+        hi_rule = 0.7
+    else:
+        hi_rule = 0.5
+    check_arrays["seed_004_preload_stress"] = ratio0 <= hi_rule + 1e-12
+    if not bool(x["controlled"]) and np.any(~refused & (d < 0.010)):
+        warnings.append(
+            "d < 10 mm tightened without control: [004] warns of over-tightening; lower the "
+            "admissible load or control the tightening"
+        )
+
+    # hooks (R10 surface pressure, R11 engagement) -------------------------------------------------
+    def probe(j: int) -> tuple[list[Check], list[str]]:
+        point = {k: (v[j].item() if isinstance(v, np.ndarray) else v) for k, v in x.items()}
+        bolt = bolts[int(bolt_index[j])]
+        assert bolt is not None
+
+        def at(value: Any) -> float:
+            return float(np.broadcast_to(value, (n,))[j])
+
+        if given:
+            bolt = replace(
+                bolt,
+                yield_strength=at(yield_strength),
+                bearing_outer_diameter=at(d_w),
+                hole_diameter=at(d_h),
+            )
+        solution = JointSolution(
+            bolt, at(grip), at(d_w), at(d_h), at(fm_max), at(f_s_max), joint_type
+        )
+        return _scalar_hooks(point, solution)
+
+    hook_checks, hook_notes = _vector_hook_checks(
+        x, col, bolts, bolt_index, ~refused, d_w, d_h, fm_max, f_s_max, probe
+    )
+    notes += hook_notes
+
+    angle = pl.nut_rotation_angle(nominal, delta_s + delta_p, pitch)
+    rigid_angle = pl.nut_rotation_angle(nominal, delta_s, pitch)
+    values: dict[str, Any] = {
+        "tightening_factor": alpha_a,
+        "required_clamp_force": f_kerf,
+        "transverse_clamp_force": f_kq,
+        "bolt_compliance": delta_s,
+        "bolt_compliance_head": bolt_c.head,
+        "bolt_compliance_shank": bolt_c.shank,
+        "bolt_compliance_free_thread": bolt_c.free_thread,
+        "bolt_compliance_engaged": bolt_c.engaged_thread + bolt_c.nut,
+        "clamped_compliance": delta_p,
+        "cone_tangent": parts.tangent,
+        "cone_limit_diameter": parts.limit_diameter,
+        "outer_diameter_used": parts.outer_diameter,
+        "grip": grip,
+        "load_factor_k": phi_k,
+        "load_factor": phi_n,
+        "additional_bolt_load": add_load,
+        "clamp_load_reduction": (1.0 - phi_n) * f_a,
+        "embedding_settlement": f_z_len,
+        "embedding_loss": f_z,
+        "thermal_loss": th_loss,
+        "required_preload_min": req_min,
+        "required_preload_max": req_max,
+        "smallest_diameter": d0,
+        "smallest_area": a0,
+        "permissible_preload": f_mzul,
+        "yield_preload": f_myield,
+        "assembly_preload_min": fm_min,
+        "assembly_preload_max": fm_max,
+        "tightening_torque": design_torque,
+        "residual_clamp_force_min": f_kr_min,
+        "separation_load": fa_sep,
+        "max_working_load": fa_limit,
+        "max_bolt_force": f_s_max,
+        "working_stress": stress.equivalent,
+        "yield_safety": s_f,
+        "stress_amplitude": sigma_a,
+        "endurance_limit": sigma_as,
+        "fatigue_safety": s_d,
+        "slip_safety": s_g,
+        "preload_stress_ratio": ratio0,
+        "bolt_elongation": nominal * delta_s,
+        "target_angle": angle,
+        "rigid_joint_angle": rigid_angle,
+    }
+    if refused.all():
+        # nothing to compute: the loop refuses each point with its reason (a 422 naming the
+        # field where the sweep's every point is out)
+        raise TypeError("every point is refused")
+    # what the runner makes of a non-finite value (null) and of a refused point (all null)
+    table = np.empty((len(values), n))
+    for row, value in zip(table, values.values(), strict=True):
+        row[...] = value
+    table[~np.isfinite(table)] = np.nan
+    any_refused = bool(refused.any())
+    if any_refused:
+        table[:, refused] = np.nan
+    values = dict(zip(values, table, strict=True))
+    check_arrays.update(hook_checks)
+    reported: dict[str, Any] = {}
+    for name, verdict in check_arrays.items():
+        codes = np.empty(n, dtype=np.int8)
+        codes[...] = verdict
+        if any_refused:
+            codes[refused] = -1
+        if (codes >= 0).any():  # a check no point reports is not in the scalar answers either
+            reported[name] = codes
+    return Result(
+        values=values,
+        rung=ctx.rung,
+        error_estimate=0.0,
+        notes=notes,
+        warnings=warnings,
+        check_arrays=reported,
+    )
+
+
+def _scalar_hooks(x: Mapping[str, Any], solution: JointSolution) -> tuple[list[Check], list[str]]:
+    checks: list[Check] = []
+    notes: list[str] = []
+    for hook in CHECK_HOOKS:
+        if hook not in VECTOR_CHECK_HOOKS:
+            raise TypeError(f"check hook {hook!r} has no array form")
+        more_checks, more_notes = hook(x, solution)
+        checks += more_checks
+        notes += more_notes
+    return checks, notes
+
+
+#: The hooks whose checks :func:`_vector_hook_checks` knows on arrays; another hook in
+#: :data:`CHECK_HOOKS` sends the request to the per-point loop.
+VECTOR_CHECK_HOOKS: tuple[CheckHook, ...] = (fz.joint_check_hook,)
+
+
 CLOSED_FORM = Rung(
     "closed_form",
     "The VDI 2230-1 calculation steps in closed form (cone/sleeve integrals, no iteration "
@@ -1090,6 +1665,8 @@ VDI2230 = ModelSpec(
     outputs=JOINT_OUTPUTS,
     rungs=(CLOSED_FORM,),
     compute=_compute,
+    vectorized=_vectorized,
+    vector_rungs=("closed_form",),
     assumptions=(
         "VDI 2230-1's text was not available to us: its relations as reproduced in "
         "ECSS-E-HB-32-23A and implemented in misams/BAT (docs/sources.md)",
