@@ -1860,13 +1860,19 @@ def _stage2_array(
     c = acc0 / w2
     reach = c + np.hypot(c, v_start / k)
     one_piece = (h2 <= z_off) | (reach <= z_off)
-    t2, _ = linear_reach_array(0.0, v_start, acc0, w2, h2)
+    every = bool(np.all(one_piece))
+    if every:  # the common case: the power spring stays in contact up to h2 everywhere
+        t2, _ = linear_reach_array(0.0, v_start, acc0, w2, h2)
+        return t_back + t2, reach
     t_a, v_a = linear_reach_array(0.0, v_start, acc0, w2, z_off)
     acc_b = grav - c3 * (lam3 + z_off) / big
     w2_b = c3 / big
     t_b, _ = linear_reach_array(z_off, v_a, acc_b, w2_b, h2)
     c_b = acc_b / w2_b
     reach_b = z_off + c_b + np.hypot(c_b, v_a / np.sqrt(w2_b))
+    if not np.any(one_piece):
+        return t_back + t_a + t_b, reach_b
+    t2, _ = linear_reach_array(0.0, v_start, acc0, w2, h2)
     t = np.where(one_piece, t_back + t2, t_back + t_a + t_b)
     return t, np.where(one_piece, reach, reach_b)
 
@@ -1938,8 +1944,13 @@ def _closed_form_cycle_array(x: Mapping[str, Any]) -> CycleArrays:
     snap = s1.stiffness(s1.w_0) < 0.0
     n = np.broadcast_shapes(*(np.shape(v) for v in x.values() if isinstance(v, np.ndarray)))
 
+    any_refused = bool(np.any(refused))
+
     def out(v: Any) -> np.ndarray:
-        return np.where(refused, math.nan, np.broadcast_to(v, n))
+        v = np.asarray(v, dtype=float)
+        if v.shape != n:
+            v = np.broadcast_to(v, n)
+        return np.where(refused, math.nan, v) if any_refused else v
 
     return CycleArrays(
         release_speed=out(s1.w_m),

@@ -26,6 +26,7 @@ from ..rare_impact import (
 )
 from ..rare_impact_cycle import (
     GEOMETRIES,
+    CycleArrays,
     CycleOutcome,
     closed_form_cycle,
     closed_form_cycle_array,
@@ -129,13 +130,32 @@ def _pymax(a: Any, b: Any) -> Any:
     return np.where(b > a, b, a)
 
 
+#: The last array evaluation of the closed form: (the inputs' values, pinned, and the
+#: outcome). A sweep asks the closed form's estimate and then its array path on the same
+#: inputs (the same dict of the same arrays): the cycle is computed once for both. A hit
+#: needs every value to be the *same object*; nothing mutates a sweep's arrays in place.
+_LAST_CYCLE: tuple[tuple[Any, ...], CycleArrays] | None = None
+
+
+def _cycle_array(x: Mapping[str, Any]) -> CycleArrays:
+    global _LAST_CYCLE
+    key = tuple(x.items())
+    last = _LAST_CYCLE
+    if last is not None and len(last[0]) == len(key):
+        if all(a[0] == b[0] and a[1] is b[1] for a, b in zip(last[0], key, strict=True)):
+            return last[1]
+    o = closed_form_cycle_array(x)
+    _LAST_CYCLE = (key, o)
+    return o
+
+
 def _closed_form_estimate(x: Mapping[str, Any]) -> Any:
     """Worst estimated error over the closed form's outputs for these inputs.
 
     On arrays (a sweep or a study): an array, NaN where the scalar form gives None.
     """
     if _is_array(x):
-        errs = closed_form_errors_array(x, closed_form_cycle_array(x))
+        errs = closed_form_errors_array(x, _cycle_array(x))
         worst = errs["stage1"]
         for group in ("engagement", "return", "relock"):
             worst = _pymax(worst, errs[group])
@@ -189,6 +209,8 @@ def _nullable(column: Any, dead: np.ndarray) -> np.ndarray:
         null = dead
     else:
         null = ~np.isfinite(column)
+        if not null.any():
+            return column
         if not (null & ~dead).any():
             return np.where(null, np.nan, column)
     if not null.any():
@@ -208,7 +230,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """
     if ctx.rung != "closed_form":
         raise EngineError(f"impact.rare has no array path for the rung {ctx.rung!r}")
-    o = closed_form_cycle_array(x)
+    o = _cycle_array(x)
     dead = o.refused
     n = dead.shape
     m2_total = x["half_coupling_mass"] + x["roller_count"] * x["roller_mass"] + x["striker_mass"]
@@ -256,16 +278,22 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "relock_time": np.where(relocks, o.relock_time, np.nan),
             "cycle_time": np.where(relocks, t_home + o.relock_time, np.nan),
         }
+    any_dead = bool(dead.any())
     values: dict[str, Any] = {}
     for name, column in raw.items():
-        column = np.where(dead, np.nan, np.broadcast_to(np.asarray(column, dtype=float), n))
+        column = np.asarray(column, dtype=float)
+        if column.shape != n:
+            column = np.broadcast_to(column, n)
+        if any_dead:
+            column = np.where(dead, np.nan, column)
         values[name] = _nullable(column, dead)
     values["full_engagement"] = _nullable(full, dead)
     verdicts = (c3 > c1, lam1 < lam3, blow, returns, relocks, full)
-    checks = {
-        name: np.where(dead, -1, np.broadcast_to(ok, n)).astype(np.int8)
-        for name, ok in zip(_CHECKS, verdicts, strict=True)
-    }
+    checks = {}
+    for name, ok in zip(_CHECKS, verdicts, strict=True):
+        code = np.asarray(ok, dtype=np.int8)
+        checks[name] = np.where(dead, np.int8(-1), code) if any_dead else code
+
     notes = [
         "closed form: quasi-static spin-up, piecewise-linear stages 2 and 4 started from "
         "the quasi-static release velocity, stage 3 with the half-coupling held; evaluated "
