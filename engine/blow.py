@@ -56,7 +56,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from typing import Any
 
 import numpy as np
@@ -69,11 +69,14 @@ __all__ = [
     "BlowOutcome",
     "BlowProblem",
     "BlowSeries",
+    "BlowSeriesArrays",
     "blow_series",
+    "blow_series_array",
     "clutch_preload_window",
     "contact_restitution",
     "damping_for_restitution",
     "energy_blow",
+    "energy_blow_array",
     "energy_blow_error",
     "energy_peak_error",
     "iso5393_rate",
@@ -1154,3 +1157,184 @@ def blow_series(
             break
         torque = new
     return BlowSeries(peaks, rots, after, works, reached, saturated, steps, first)
+
+
+# ---------------------------------------------------------------------------
+# Rungs 1 and 2 on arrays (sweeps and studies: several inputs may vary at once)
+# ---------------------------------------------------------------------------
+
+
+def energy_blow_array(
+    energy: Any,
+    stiffness: Any,
+    rate: Any,
+    start_torque: Any,
+    breakaway: Any = 1.0,
+    drive_torque: Any = 0.0,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    r""":func:`energy_blow` at many points (numpy; the same operations in the same order).
+
+    Parameters
+    ----------
+    energy, stiffness, rate, start_torque, breakaway, drive_torque : float or array
+        As :func:`energy_blow`: E [J], C [N*m/rad], k_j > 0 [N*m/rad], T_0 [N*m],
+        b [-], N [N*m]
+
+    Returns
+    -------
+    tuple of arrays
+        (peak spring torque [N*m], joint torque after the blow [N*m], nut rotation
+        [rad], work into the joint [J])
+
+    Notes
+    -----
+    ValueError where some :math:`k_j \le 0` (the scalar form's constant-torque
+    branch; the model's rates are positive).
+
+    >>> [round(float(v[0]), 3) for v in energy_blow_array(np.array([100.0]), 2.0e4, 1000.0, 60.0)]
+    [440.346, 440.346, 0.38, 95.152]
+    """
+    e, c, k, t0, b, n = energy, stiffness, rate, start_torque, breakaway, drive_torque
+    if not np.all(np.asarray(k) > 0.0):
+        raise ValueError("energy_blow_array needs a positive torque rate at every point")
+    with np.errstate(all="ignore"):
+        held = n + np.sqrt(n * n + 2.0 * e * c)
+        holds = held <= b * t0
+        a = 0.5 * (1.0 / c + 1.0 / k)
+        rhs = e + t0 * t0 / (2.0 * k) - n * t0 / k
+        tp = n + np.sqrt(n * n + rhs / a)
+        rot = (tp - t0) / k
+        bt0 = b * t0
+        peak = np.where(tp > bt0, tp, bt0)
+        work = 0.5 * (tp * tp - t0 * t0) / k
+        return (
+            np.where(holds, held, peak),
+            np.where(holds, t0, tp),
+            np.where(holds, 0.0, rot),
+            np.where(holds, 0.0, work),
+        )
+
+
+@dataclass
+class BlowSeriesArrays:
+    """:class:`BlowSeries` of the rigid or energy rung at many points (first and last blow).
+
+    ``blows_to_target`` is 0 where the target is not reached (or there is none);
+    ``joint_work`` the sum over the blows, in their order.
+    """
+
+    peak: np.ndarray  # first blow
+    rotation: np.ndarray  # first blow
+    torque_after: np.ndarray  # first blow
+    work: np.ndarray  # first blow
+    final_torque: np.ndarray
+    joint_work: np.ndarray
+    blows: np.ndarray  # number of blows run
+    blows_to_target: np.ndarray
+    saturated: np.ndarray
+
+
+def blow_series_array(
+    energy: Any,
+    stiffness: Any,
+    rate: Any,
+    start_torque: Any,
+    method: str,
+    *,
+    breakaway: Any = 1.0,
+    drive_torque: Any = 0.0,
+    target_torque: Any = None,
+    max_blows: Any = 100,
+) -> BlowSeriesArrays:
+    """:func:`blow_series` of the ``rigid`` or ``energy`` rung at many points.
+
+    Parameters
+    ----------
+    energy, stiffness, rate, start_torque : float or array
+        E [J], C [N*m/rad], k_j [N*m/rad], T_0 [N*m] (equal-length arrays or scalars)
+    method : str
+        ``rigid`` or ``energy``
+    breakaway, drive_torque : float or array
+        b [-], N [N*m]
+    target_torque : float, array or None
+        Stop at the first blow that reaches it, [N*m]
+    max_blows : int or array
+        Most blows, [-]
+
+    Notes
+    -----
+    The blows run for all points at once, each point stopping by the rules of
+    :func:`blow_series` (target reached, a blow that no longer turns the nut,
+    ``max_blows``); every point's numbers are those of its own scalar run.
+
+    >>> s = blow_series_array(np.array([100.0, 50.0]), 2.0e4, 1000.0, 60.0, "energy",
+    ...                       target_torque=600.0)
+    >>> s.blows_to_target.tolist(), round(float(s.torque_after[0]), 3)
+    ([2, 4], 440.346)
+    """
+    shape = np.broadcast_shapes(
+        *(np.shape(v) for v in (energy, stiffness, rate, start_torque, breakaway, drive_torque,
+                                max_blows) if v is not None),  # fmt: skip
+        np.shape(target_torque) if target_torque is not None else (),
+    )
+
+    def full(v: Any) -> np.ndarray:
+        return np.array(np.broadcast_to(np.asarray(v, dtype=float), shape))
+
+    e, c, k, b, n = full(energy), full(stiffness), full(rate), full(breakaway), full(drive_torque)
+    torque = full(start_torque)
+    target = None if target_torque is None else full(target_torque)
+    limit = np.broadcast_to(np.asarray(max_blows), shape)
+    peak0 = np.full(shape, np.nan)
+    rot0, after0, work0 = peak0.copy(), peak0.copy(), peak0.copy()
+    total = np.zeros(shape)
+    blows = np.zeros(shape, dtype=np.int64)
+    reached = np.zeros(shape, dtype=np.int64)
+    saturated = np.zeros(shape, dtype=bool)
+    idx = np.flatnonzero(limit.ravel() > 0) if shape else np.arange(0)
+    flat = shape != ()
+    if not flat:  # a single point: the same code on arrays of one
+        return _series_one(e, c, k, torque, method, b, n, target, int(limit))
+    i = 0
+    with np.errstate(all="ignore"):
+        while idx.size:
+            ee, cc, kk, t0, nn = e[idx], c[idx], k[idx], torque[idx], n[idx]
+            if method == "rigid":
+                m = np.sqrt(2.0 * ee * cc) + nn
+                new = np.where(t0 > m, t0, m)
+                peak, rot, work = m, np.zeros(idx.size), np.zeros(idx.size)
+                pos = kk > 0.0
+                rot = np.where(pos, (new - t0) / kk, rot)
+                work = np.where(pos, 0.5 * (new * new - t0 * t0) / kk, work)
+            else:
+                peak, new, rot, work = energy_blow_array(ee, cc, kk, t0, b[idx], nn)
+            if i == 0:
+                peak0[idx], rot0[idx], after0[idx], work0[idx] = peak, rot, new, work
+            total[idx] = total[idx] + work
+            blows[idx] = i + 1
+            torque[idx] = new
+            done = np.zeros(idx.size, dtype=bool)
+            if target is not None:
+                hit = new >= target[idx]
+                reached[idx[hit]] = i + 1
+                done |= hit
+            stuck = ~done & ((rot <= 1e-12) | (new - t0 <= 1e-12 * np.maximum(np.abs(new), 1.0)))
+            if method == "rigid":
+                stuck = ~done
+            saturated[idx[stuck]] = True
+            done |= stuck
+            i += 1
+            done |= limit.ravel()[idx] <= i
+            idx = idx[~done]
+    return BlowSeriesArrays(peak0, rot0, after0, work0, torque, total, blows, reached, saturated)
+
+
+def _series_one(
+    e: Any, c: Any, k: Any, t0: Any, method: str, b: Any, n: Any, target: Any, limit: int
+) -> BlowSeriesArrays:
+    s = blow_series_array(
+        e.reshape(1), c.reshape(1), k.reshape(1), t0.reshape(1), method,
+        breakaway=b.reshape(1), drive_torque=n.reshape(1),
+        target_torque=None if target is None else target.reshape(1), max_blows=limit,
+    )  # fmt: skip
+    return BlowSeriesArrays(*(getattr(s, f.name).reshape(()) for f in fields(BlowSeriesArrays)))

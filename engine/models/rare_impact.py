@@ -290,7 +290,8 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     values["full_engagement"] = _nullable(full, dead)
     verdicts = (c3 > c1, lam1 < lam3, blow, returns, relocks, full)
     checks = {}
-    for name, ok in zip(_CHECKS, verdicts, strict=True):
+    # a point the model refuses reports no check; if every point is refused, no check at all
+    for name, ok in zip(_CHECKS if not dead.all() else (), verdicts, strict=False):
         code = np.asarray(ok, dtype=np.int8)
         checks[name] = np.where(dead, np.int8(-1), code) if any_dead else code
 
