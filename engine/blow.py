@@ -1265,16 +1265,20 @@ def blow_series_array(
     -----
     The blows run for all points at once, each point stopping by the rules of
     :func:`blow_series` (target reached, a blow that no longer turns the nut,
-    ``max_blows``); every point's numbers are those of its own scalar run.
+    ``max_blows``); every point's numbers are those of its own scalar run
+    (:func:`blow_series` gives the same 2 and 5 blows for these two).
 
     >>> s = blow_series_array(np.array([100.0, 50.0]), 2.0e4, 1000.0, 60.0, "energy",
     ...                       target_torque=600.0)
     >>> s.blows_to_target.tolist(), round(float(s.torque_after[0]), 3)
-    ([2, 4], 440.346)
+    ([2, 5], 440.346)
     """
     shape = np.broadcast_shapes(
-        *(np.shape(v) for v in (energy, stiffness, rate, start_torque, breakaway, drive_torque,
-                                max_blows) if v is not None),  # fmt: skip
+        *(
+            np.shape(v)
+            for v in (energy, stiffness, rate, start_torque, breakaway, drive_torque, max_blows)
+            if v is not None
+        ),
         np.shape(target_torque) if target_torque is not None else (),
     )
 

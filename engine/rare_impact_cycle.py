@@ -1708,7 +1708,7 @@ def _pymin(a: Any, b: Any) -> Any:
 def linear_reach_array(
     y0: Any, v0: Any, acc: Any, w2: Any, level: Any
 ) -> tuple[np.ndarray, np.ndarray]:
-    r""":func:`linear_reach` on arrays, for a positive stiffness :math:`w^2 > 0` everywhere.
+    r""":func:`linear_reach` on arrays.
 
     Parameters
     ----------
@@ -1717,21 +1717,28 @@ def linear_reach_array(
 
     Notes
     -----
-    The same operations in the same order as :func:`linear_reach` (harmonic
-    branch), point by point; ValueError where some :math:`w^2 \le 0` (the
-    cycle's stages 2 to 4 always have springs in contact, so it does not occur
-    there).
+    The same operations in the same order as :func:`linear_reach`, point by
+    point (the parabolic branch where :math:`w^2 \le 0`: a spring rate so small
+    that it underflows).
 
     >>> t, v = linear_reach_array(0.0, 0.0, 293.101, np.array([120000.0, 1.2e5]), 0.004)
     >>> [round(float(u), 7) for u in t]
     [0.0065306, 0.0065306]
     """
+    with np.errstate(all="ignore"):
+        return _linear_reach_array(y0, v0, acc, w2, level)
+
+
+def _linear_reach_array(
+    y0: Any, v0: Any, acc: Any, w2: Any, level: Any
+) -> tuple[np.ndarray, np.ndarray]:
     w2 = np.asarray(w2, dtype=float)
-    if not np.all(w2 > 0.0):
-        raise ValueError("linear_reach_array needs w2 > 0 at every point")
     d = level - y0
     s = np.where(d > 0.0, 1.0, -1.0)
     d, v, a = d * s, v0 * s, acc * s
+    par = w2 <= 0.0
+    if np.any(par):  # no stiffness (a vanishing spring rate): the parabolic branch
+        t_par, v_par = _parabolic_reach(d, v, a, s)
     k = np.sqrt(w2)
     c = a / w2
     vk = v / k
@@ -1748,8 +1755,24 @@ def linear_reach_array(
     theta = np.where(theta < 0.0, theta + 2.0 * math.pi, theta)
     t = np.where(never, math.inf, theta / k)
     vel = np.where(never, math.nan, s * k * sin_part)
+    if np.any(par):
+        t, vel = np.where(par, t_par, t), np.where(par, v_par, vel)
     zero = d == 0.0
     return np.where(zero, 0.0, t), np.where(zero, v0, vel)
+
+
+def _parabolic_reach(d: Any, v: Any, a: Any, s: Any) -> tuple[np.ndarray, np.ndarray]:
+    r""":func:`linear_reach`'s branch for :math:`w^2 \le 0`, travel ``d`` > 0 from 0 with v, a."""
+    t_lin = np.where(v > 0.0, d / v, math.inf)
+    v_lin = np.where(v > 0.0, v * s, math.nan)
+    disc = v * v + 2.0 * a * d
+    root = np.sqrt(disc)
+    den = v + root
+    t_q = np.where(den > 0.0, 2.0 * d / np.where(den > 0.0, den, 1.0), math.inf)
+    ok = (disc >= 0.0) & (t_q >= 0.0) & np.isfinite(t_q)
+    t_q, v_q = np.where(ok, t_q, math.inf), np.where(ok, root * s, math.nan)
+    zero_a = a == 0.0
+    return np.where(zero_a, t_lin, t_q), np.where(zero_a, v_lin, v_q)
 
 
 def _time_to_speed_array(x: Mapping[str, Any], inertia: Any, w: Any) -> Any:
@@ -2004,9 +2027,7 @@ def _closed_form_errors_array(x: Mapping[str, Any], o: CycleArrays) -> dict[str,
         below = w_m < w_nl
         uu = np.where(below, u, 0.5)
         amplify = _pymax(uu / ((1.0 - uu) * -np.log1p(-uu)), 1.0)
-        inertia_share = np.where(
-            below, SAFETY * amplify * (inertia - inertia_0) / inertia, 0.0
-        )
+        inertia_share = np.where(below, SAFETY * amplify * (inertia - inertia_0) / inertia, 0.0)
 
     def accel(w: Any) -> Any:
         return torque / inertia if w_nl is None else torque / inertia * (1.0 - w / w_nl)

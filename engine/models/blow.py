@@ -942,7 +942,11 @@ def _points(x: Mapping[str, Any]) -> tuple[int, ...]:
 
 def _or_zero(v: Any) -> Any:
     """``float(v or 0.0)`` of the scalar code, for an array or None."""
-    return 0.0 if v is None else (np.asarray(v, dtype=float) if isinstance(v, np.ndarray) else float(v))
+    return (
+        0.0
+        if v is None
+        else (np.asarray(v, dtype=float) if isinstance(v, np.ndarray) else float(v))
+    )
 
 
 def _tool_array(x: Mapping[str, Any]) -> tuple[Any, Any, Any, Any]:

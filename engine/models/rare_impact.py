@@ -141,9 +141,12 @@ def _cycle_array(x: Mapping[str, Any]) -> CycleArrays:
     global _LAST_CYCLE
     key = tuple(x.items())
     last = _LAST_CYCLE
-    if last is not None and len(last[0]) == len(key):
-        if all(a[0] == b[0] and a[1] is b[1] for a, b in zip(last[0], key, strict=True)):
-            return last[1]
+    if (
+        last is not None
+        and len(last[0]) == len(key)
+        and all(a[0] == b[0] and a[1] is b[1] for a, b in zip(last[0], key, strict=True))
+    ):
+        return last[1]
     o = closed_form_cycle_array(x)
     _LAST_CYCLE = (key, o)
     return o
@@ -155,10 +158,10 @@ def _closed_form_estimate(x: Mapping[str, Any]) -> Any:
     On arrays (a sweep or a study): an array, NaN where the scalar form gives None.
     """
     if _is_array(x):
-        errs = closed_form_errors_array(x, _cycle_array(x))
-        worst = errs["stage1"]
+        groups = closed_form_errors_array(x, _cycle_array(x))
+        worst = groups["stage1"]
         for group in ("engagement", "return", "relock"):
-            worst = _pymax(worst, errs[group])
+            worst = _pymax(worst, groups[group])
         return np.where(np.isfinite(worst), worst, np.nan)
     try:
         errs = closed_form_errors(x, closed_form_cycle(x))
@@ -254,7 +257,11 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             dtype=float,
         )
         margin = relock_margin(
-            x["auxiliary_spring_rate"], x["auxiliary_spring_preload"], c3, lam3, x["roller_friction"]
+            x["auxiliary_spring_rate"],
+            x["auxiliary_spring_preload"],
+            c3,
+            lam3,
+            x["roller_friction"],
         )
         full = blow & (o.engagement_time <= window)
         raw: dict[str, Any] = {
