@@ -949,10 +949,15 @@ def _or_zero(v: Any) -> Any:
     )
 
 
-def _tool_array(x: Mapping[str, Any]) -> tuple[Any, Any, Any, Any]:
-    """:func:`_tool` on arrays: (energy after the efficiency, inertia, stiffness, drive)."""
+def _tool_array(x: Mapping[str, Any]) -> tuple[Any, Any, Any, Any, Any]:
+    """:func:`_tool` on arrays: (energy after the efficiency, inertia, stiffness, drive, fails).
+
+    ``fails`` marks the points where the scalar code divides by zero (a spindle speed or a
+    stiffness that underflows to 0 with inputs at their declared extremes).
+    """
     src = x["source"]
     drive = _or_zero(x["drive_torque"])
+    fails: Any = False
     if src == "energy":
         _need(x, ("tool_energy", "tool_inertia", "tool_stiffness"), "with source 'energy'")
         e, j, c = x["tool_energy"], x["tool_inertia"], x["tool_stiffness"]
@@ -970,6 +975,7 @@ def _tool_array(x: Mapping[str, Any]) -> tuple[Any, Any, Any, Any]:
         drag = (x["spindle_count"] - 1) * x["idle_spindle_friction_torque"]
         feed = _or_zero(x["coupling_slip_torque"]) * w / w5
         drive = drive + (feed - drag)
+        fails = (w5 * w5 == 0.0) | (c7 + c8 == 0.0)
     elif src == "rare_impact":
         _need(x, (*_RI_NAMES, "tool_stiffness"), "with source 'rare_impact'")
         c1, lam1 = x["power_spring_rate"], x["power_spring_preload"]
@@ -988,7 +994,12 @@ def _tool_array(x: Mapping[str, Any]) -> tuple[Any, Any, Any, Any]:
         c = x["tool_stiffness"]
     else:
         raise AssertionError(src)
-    return x["blow_efficiency"] * e, j, c, drive
+    return x["blow_efficiency"] * e, j, c, drive, fails
+
+
+def _squares_overflow(v: Any) -> Any:
+    """Where Python's ``v**2`` raises OverflowError (a finite value whose square is not)."""
+    return np.isfinite(v) & ~np.isfinite(np.asarray(v, dtype=float) ** 2)
 
 
 def _per_group(
@@ -1059,7 +1070,7 @@ class _ArraySetup:
 
 def _setup_array(x: Mapping[str, Any]) -> _ArraySetup:
     """:func:`_setup` (and :func:`_target`, :func:`_rate`) at many points."""
-    e_tool, j, c, drive = _tool_array(x)
+    e_tool, j, c, drive, fails = _tool_array(x)
     names = _THREAD_INPUTS + (_JOINT_INPUTS if x["joint_rate_from"] == "joint" else ())
     got, refused, notes = _per_group(x, names, _thread_and_joint, 2)
     per = None if x.get("thread_diameter") is None else got[0]
@@ -1083,6 +1094,9 @@ def _setup_array(x: Mapping[str, Any]) -> _ArraySetup:
     with np.errstate(all="ignore"):
         speed = np.sqrt(2.0 * e_tool / j)
         energy = 0.5 * j * speed**2
+        # the scalar code raises there (OverflowError of speed**2, ZeroDivisionError): refused
+        refused = refused | fails | _squares_overflow(speed) | _squares_overflow(drive)
+    refused = np.broadcast_to(refused, _points(x))
     return _ArraySetup(energy, j, c, drive, speed, k, per, target, refused, notes)
 
 
@@ -1135,6 +1149,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if s.per is not None and lo is not None and hi is not None:
         dead |= np.broadcast_to(lo > hi, n)  # "preload_min must not exceed preload_max"
     e, c, drive = s.energy, s.stiffness, s.drive
+    dead |= np.broadcast_to(e == 0.0, n)  # joint_energy_fraction divides by it: refused
     with np.errstate(all="ignore"):
         saturation = (drive + np.sqrt(drive**2 + 2 * e * c)) / x["breakaway_factor"]
         rigid = np.sqrt(2.0 * e * c) + drive
@@ -1175,7 +1190,12 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
         column = np.asarray(column, dtype=float)
         if column.shape != n:
             column = np.broadcast_to(column, n)
-        values[name] = np.where(dead, np.nan, column) if any_dead else column
+        if any_dead:
+            column = np.where(dead, np.nan, column)
+        # a non-finite value is null in a single run's answer (the runner's rule)
+        values[name] = (
+            column if np.isfinite(column).all() else np.where(np.isfinite(column), column, np.nan)
+        )
     reached = series.blows_to_target
     values["blows_to_target"] = _nullable(reached, dead | (reached == 0))
     checks: dict[str, np.ndarray] = {}
