@@ -1733,11 +1733,18 @@ def _linear_reach_array(
     y0: Any, v0: Any, acc: Any, w2: Any, level: Any
 ) -> tuple[np.ndarray, np.ndarray]:
     w2 = np.asarray(w2, dtype=float)
-    d = level - y0
-    s = np.where(d > 0.0, 1.0, -1.0)
-    d, v, a = d * s, v0 * s, acc * s
+    d = np.asarray(level - y0, dtype=float)
+    up = d > 0.0
+    # the direction: one sign for all points where it is (the common case), else per point
+    forward = bool(up.all())
+    s: Any = 1.0 if forward else (-1.0 if not up.any() else np.where(up, 1.0, -1.0))
+    if forward:
+        v, a = v0, acc
+    else:
+        d, v, a = d * s, v0 * s, acc * s
     par = w2 <= 0.0
-    if np.any(par):  # no stiffness (a vanishing spring rate): the parabolic branch
+    any_par = bool(np.any(par))
+    if any_par:  # no stiffness (a vanishing spring rate): the parabolic branch
         t_par, v_par = _parabolic_reach(d, v, a, s)
     k = np.sqrt(w2)
     c = a / w2
@@ -1746,19 +1753,22 @@ def _linear_reach_array(
     never = d > c + amp * (1.0 + 1e-13)
     delta = np.arctan2(vk, c)
     q = c - d
-    sin_part = np.sqrt(np.maximum((amp - q) * (amp + q), 0.0))
+    aq = amp + q
+    # where amp - q cancels (c > 0, q > 0): amp - c + d with amp - c = vk²/(amp + c)
     exact = (c > 0.0) & (q > 0.0)
-    sin_part = np.where(
-        exact, np.sqrt(np.maximum((vk * vk / (amp + c) + d) * (amp + q), 0.0)), sin_part
-    )
+    sin_part = np.sqrt(np.maximum(np.where(exact, (vk * vk / (amp + c) + d), amp - q) * aq, 0.0))
     theta = np.arctan2(sin_part, q) - delta
     theta = np.where(theta < 0.0, theta + 2.0 * math.pi, theta)
-    t = np.where(never, math.inf, theta / k)
-    vel = np.where(never, math.nan, s * k * sin_part)
-    if np.any(par):
+    t = theta / k
+    vel = s * k * sin_part
+    if never.any():
+        t, vel = np.where(never, math.inf, t), np.where(never, math.nan, vel)
+    if any_par:
         t, vel = np.where(par, t_par, t), np.where(par, v_par, vel)
     zero = d == 0.0
-    return np.where(zero, 0.0, t), np.where(zero, v0, vel)
+    if zero.any():
+        t, vel = np.where(zero, 0.0, t), np.where(zero, v0, vel)
+    return t, vel
 
 
 def _parabolic_reach(d: Any, v: Any, a: Any, s: Any) -> tuple[np.ndarray, np.ndarray]:
@@ -2034,17 +2044,18 @@ def _closed_form_errors_array(x: Mapping[str, Any], o: CycleArrays) -> dict[str,
 
     k_lift = s1.stiffness(w_0)
     snap = k_lift < 0.0
-    # snap-through at lift-off
-    wd_0 = accel(w_0)
-    t_s = (6.0 * h1 * m_e / (2.0 * a_push * x0 * w_0 * wd_0)) ** (1.0 / 3.0)
-    share = 0.0 if g.paper else (inertia - inertia_0) / inertia
-    dw_s = SAFETY * (wd_0 * t_s / w_0 + share)
-    t_0 = _time_to_speed_array(x, inertia, w_0)
-    v_snap = h1 * np.sqrt(-k_lift / m_e)
-    dt_s = _pymax(SAFETY * t_s / t_0 + inertia_share, dw_s)
-    dv_s = SAFETY * v_snap
-    stalled = wd_0 <= 0.0
-    dw_s, dt_s, dv_s = (np.where(stalled, math.inf, v) for v in (dw_s, dt_s, dv_s))
+    any_snap, all_snap = bool(np.any(snap)), bool(np.all(snap))
+    if any_snap:  # snap-through at lift-off
+        wd_0 = accel(w_0)
+        t_s = (6.0 * h1 * m_e / (2.0 * a_push * x0 * w_0 * wd_0)) ** (1.0 / 3.0)
+        share = 0.0 if g.paper else (inertia - inertia_0) / inertia
+        dw_s = SAFETY * (wd_0 * t_s / w_0 + share)
+        t_0 = _time_to_speed_array(x, inertia, w_0)
+        v_snap = h1 * np.sqrt(-k_lift / m_e)
+        dt_s = _pymax(SAFETY * t_s / t_0 + inertia_share, dw_s)
+        dv_s = SAFETY * v_snap
+        stalled = wd_0 <= 0.0
+        dw_s, dt_s, dv_s = (np.where(stalled, math.inf, v) for v in (dw_s, dt_s, dv_s))
 
     def rates(w: Any, rr: Any) -> tuple[Any, Any, Any]:
         k = s1.stiff - a_push * kap * w * w
@@ -2056,22 +2067,29 @@ def _closed_form_errors_array(x: Mapping[str, Any], o: CycleArrays) -> dict[str,
         d2z_dw2 = 2.0 * dz_du + 4.0 * w * w * d2z_du2
         return k, dz_dw * wd, d2z_dw2 * wd * wd + dz_dw * wdd
 
-    k_0, zd_0, zdd_0 = rates(w_0, x0)
-    k_m, _, zdd_m = rates(w_m, s1.r)
-    om_0, om_m = np.sqrt(k_0 / m_e), np.sqrt(k_m / m_e)
-    # where the scalar code divides by zero, takes the root of a negative or overflows
-    fails = (k_0 == 0.0) | ~(k_m > 0.0) | (om_0 > 1e154) | (om_m > 1e154)
-    amp = (np.abs(zd_0) / om_0 + np.abs(zdd_0) / om_0**2) * np.sqrt(om_0 / om_m)
-    err = amp + np.abs(zdd_m) / om_m**2
-    dw_n = SAFETY * err * k_m / (2.0 * fm)
-    wd_m = accel(w_m)
-    t_m = _time_to_speed_array(x, inertia, w_m)
-    dt_n = np.where(wd_m > 0, dw_n * w_m / (wd_m * t_m), math.inf) + inertia_share
-    dv_n = SAFETY * (amp * om_m + np.abs(zdd_m) / om_m)
-    fails = ~snap & fails
-    dw = np.where(snap, dw_s, np.where(fails, math.nan, dw_n))
-    dt = np.where(snap, dt_s, np.where(fails, math.nan, dt_n))
-    dv = np.where(snap, dv_s, np.where(fails, math.nan, dv_n))
+    fails: Any = False
+    if not all_snap:
+        k_0, zd_0, zdd_0 = rates(w_0, x0)
+        k_m, _, zdd_m = rates(w_m, s1.r)
+        om_0, om_m = np.sqrt(k_0 / m_e), np.sqrt(k_m / m_e)
+        # where the scalar code divides by zero, takes the root of a negative or overflows
+        fails = (k_0 == 0.0) | ~(k_m > 0.0) | (om_0 > 1e154) | (om_m > 1e154)
+        amp = (np.abs(zd_0) / om_0 + np.abs(zdd_0) / om_0**2) * np.sqrt(om_0 / om_m)
+        err = amp + np.abs(zdd_m) / om_m**2
+        dw_n = SAFETY * err * k_m / (2.0 * fm)
+        wd_m = accel(w_m)
+        t_m = _time_to_speed_array(x, inertia, w_m)
+        dt_n = np.where(wd_m > 0, dw_n * w_m / (wd_m * t_m), math.inf) + inertia_share
+        dv_n = SAFETY * (amp * om_m + np.abs(zdd_m) / om_m)
+        fails = ~snap & fails
+        if np.any(fails):
+            dw_n, dt_n, dv_n = (np.where(fails, math.nan, v) for v in (dw_n, dt_n, dv_n))
+    if all_snap:
+        dw, dt, dv = dw_s, dt_s, dv_s
+    elif any_snap:
+        dw, dt, dv = (np.where(snap, a, b) for a, b in ((dw_s, dw_n), (dt_s, dt_n), (dv_s, dv_n)))
+    else:
+        dw, dt, dv = dw_n, dt_n, dv_n
     stage1 = _pymax(_pymax(dw, dt), EXACT_FLOOR)
     blow = o.blow
     base = o.engagement_time
@@ -2090,6 +2108,16 @@ def _closed_form_errors_array(x: Mapping[str, Any], o: CycleArrays) -> dict[str,
     ret = _pymin(_pymax(RETURN_COUPLING * coupling, EXACT_FLOOR), 1.0)
     n = o.refused.shape
     bad = fails | o.refused
+    if not np.any(bad):
+        return {
+            name: np.broadcast_to(np.asarray(v, dtype=float), n)
+            for name, v in (
+                ("stage1", stage1),
+                ("engagement", engagement),
+                ("return", ret),
+                ("relock", EXACT_FLOOR),
+            )
+        }
     return {
         name: np.where(bad, math.nan, np.broadcast_to(v, n))
         for name, v in (
