@@ -1068,8 +1068,30 @@ class _ArraySetup:
     notes: list[str]
 
 
+#: The last :func:`_setup_array`: (the inputs' values, pinned, and the setup). A sweep asks
+#: the rungs' estimates and then the array path on the same inputs (the same dict of the
+#: same arrays): the bolt is resolved once for all three. A hit needs every value to be
+#: the *same object*; nothing mutates a sweep's arrays in place.
+_LAST_SETUP: tuple[tuple[Any, ...], _ArraySetup] | None = None
+
+
 def _setup_array(x: Mapping[str, Any]) -> _ArraySetup:
     """:func:`_setup` (and :func:`_target`, :func:`_rate`) at many points."""
+    global _LAST_SETUP
+    key = tuple(x.items())
+    last = _LAST_SETUP
+    if (
+        last is not None
+        and len(last[0]) == len(key)
+        and all(a[0] == b[0] and a[1] is b[1] for a, b in zip(last[0], key, strict=True))
+    ):
+        return last[1]
+    setup = _setup_array_uncached(x)
+    _LAST_SETUP = (key, setup)
+    return setup
+
+
+def _setup_array_uncached(x: Mapping[str, Any]) -> _ArraySetup:
     e_tool, j, c, drive, fails = _tool_array(x)
     names = _THREAD_INPUTS + (_JOINT_INPUTS if x["joint_rate_from"] == "joint" else ())
     got, refused, notes = _per_group(x, names, _thread_and_joint, 2)
@@ -1214,6 +1236,9 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             checks["preload_window"] = np.where(dead, -1, verdict == "within").astype(np.int8)
     if s.target is not None and reports:
         checks["target_reached"] = np.where(dead, -1, reached > 0).astype(np.int8)
+    for o in _OUTPUTS:  # what a single run leaves null here is null at every point
+        if not o.series and o.name not in values:
+            values[o.name] = np.full(n, None, dtype=object)
     notes = [
         f"{ctx.rung}: evaluated on arrays, the same equations as a single run "
         "(engine.blow.blow_series_array)",
