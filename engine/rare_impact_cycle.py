@@ -157,6 +157,44 @@ STEPS_PER_PERIOD = 200
 _CHUNK = 400_000
 _SERIES_POINTS = 240
 
+#: Seconds per RK4 step of the cycle kernel: a running mean over the kernel's own chunks
+#: of 10,000 steps or more in this process (issue 21: budgets in time, not steps); the
+#: prior is a slow machine's figure (~0.2 µs measured on the 2-core CI box, 5× that).
+_STEP_COST = [1e-6]
+#: Share of the time left that a simulation may plan to use up front (the rest covers a
+#: slower machine than measured and the answer's own bookkeeping).
+TIME_SHARE = 0.5
+
+
+def step_budget(deadline: float | None, max_steps: int) -> int:
+    """Steps the cycle kernel may take: what the time left affords, or ``max_steps``.
+
+    Parameters
+    ----------
+    deadline : float or None
+        ``time.perf_counter()`` value the answer is due by, [s]
+    max_steps : int
+        The caller's step budget, used only without a deadline, [-]
+
+    Notes
+    -----
+    With a deadline the budget is in time: :data:`TIME_SHARE` of the time left
+    divided by the kernel's measured cost per step (:data:`_STEP_COST`), so a stiff
+    design needing millions of steps runs when the kernel finishes them well
+    inside the time budget, and one that would not is declined up front (its
+    ``expected_steps`` in the error: the runner's fallback can take over at once).
+    """
+    if deadline is None:
+        return max_steps
+    left = max(deadline - time.perf_counter(), 0.0)
+    return int(min(left * TIME_SHARE / _STEP_COST[0], 1e15))
+
+
+def _measured(used: int, seconds: float) -> None:
+    """Fold one chunk's cost into :data:`_STEP_COST` (chunks long enough to time)."""
+    if used >= 10_000 and seconds > 0.0:
+        _STEP_COST[0] = 0.7 * _STEP_COST[0] + 0.3 * seconds / used
+
 
 # ---------------------------------------------------------------------------
 # Geometry
@@ -1048,14 +1086,21 @@ class _Run:
     ) -> tuple[int, int, tuple[float, float, float, float, float, float]]:
         """Run ``mode`` from ``state`` = (t, ω, q0, q1, v0, v1) to its first event."""
         if self.steps + expected > self.max_steps:
+            budget = (
+                f"budget {self.max_steps:g}"
+                if self.deadline is None
+                else f"the {self.max_steps:.2g} steps its time budget leaves at "
+                f"{_STEP_COST[0] * 1e9:.0f} ns a step"
+            )
             raise BudgetExceeded(
                 f"the cycle simulation would take about {self.steps + expected:.2g} RK4 steps "
-                f"(budget {self.max_steps:g}): the half-coupling oscillates about "
+                f"({budget}): the half-coupling oscillates about "
                 f"{expected / STEPS_PER_PERIOD:.2g} times before release (stiff springs, light "
                 "parts or a slow spin-up), which is where the quasi-static closed form is "
                 "accurate; use fidelity 'closed_form' or 'auto'",
                 field="fidelity",
                 expected_steps=self.steps + expected,
+                step_budget=self.max_steps,
             )
         stride = max(1, int(expected / _SERIES_POINTS * 4)) if self.rec.on else 0
         bufs = self.rec.buffers()
@@ -1074,10 +1119,13 @@ class _Run:
                     "fidelity 'closed_form'",
                     field="fidelity",
                 )
+            began = time.perf_counter()
             status, which, t, w, q0, q1, v0, v1, used, n_rec = _advance_c(
                 mode, self.p, t, w, q0, q1, v0, v1, h, chunk, t_end, *events,
                 clamp0, stride, *bufs, n_rec,
             )  # fmt: skip
+            if type(self) is _Run:
+                _measured(int(used), time.perf_counter() - began)
             self.steps += int(used)
             if status != 0:
                 break
@@ -1106,7 +1154,8 @@ def simulate_cycle(
     deadline : float, optional
         ``time.perf_counter()`` value after which the run stops (BudgetExceeded), [s]
     max_steps : int
-        Largest number of RK4 steps, [-]
+        Largest number of RK4 steps without a deadline, [-]; with one, the step budget
+        is what the time left affords (:func:`step_budget`)
     steps_per_period : int
         RK4 steps per shortest natural period of each mode, [-]
 
@@ -1123,7 +1172,7 @@ def simulate_cycle(
         # loading or compiling the kernel (once per process) is not the design's time
         deadline += _ensure_compiled(p)
     rec = _Recorder(record)
-    run = _Run_impl(p, rec, deadline, max_steps)
+    run = _Run_impl(p, rec, deadline, step_budget(deadline, max_steps))
     notes: list[str] = []
     warnings: list[str] = []
     nm = x["roller_count"] * x["roller_mass"]
