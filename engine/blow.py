@@ -97,6 +97,41 @@ STEPS_PER_PERIOD = 200
 _BISECT = 60
 _SERIES_CAP = 400
 
+#: Seconds per RK4 step of the blow kernel: a running mean over the kernel's own chunks of
+#: 10,000 steps or more in this process (issue 21: budgets in time, not steps); the prior
+#: is a slow machine's figure (~0.3 µs measured on the 2-core CI box, about 3× that).
+_STEP_COST = [1e-6]
+#: Share of the time left that a run of blows may plan to use.
+TIME_SHARE = 0.5
+
+
+def step_budget(deadline: float | None, max_steps: int) -> int:
+    """Steps the blow kernel may take: what the time left affords, or ``max_steps``.
+
+    Parameters
+    ----------
+    deadline : float or None
+        ``time.perf_counter()`` value the answer is due by, [s]
+    max_steps : int
+        The caller's step budget, used only without a deadline, [-]
+
+    Notes
+    -----
+    With a deadline: :data:`TIME_SHARE` of the time left over the kernel's
+    measured cost per step (:data:`_STEP_COST`), so a light nut on a stiff joint
+    that needs millions of steps runs when they fit in the time budget.
+    """
+    if deadline is None:
+        return max_steps
+    left = max(deadline - time.perf_counter(), 0.0)
+    return int(min(left * TIME_SHARE / _STEP_COST[0], 1e15))
+
+
+def _measured(used: int, seconds: float) -> None:
+    """Fold one chunk's cost into :data:`_STEP_COST` (chunks long enough to time)."""
+    if used >= 10_000 and seconds > 0.0:
+        _STEP_COST[0] = 0.7 * _STEP_COST[0] + 0.3 * seconds / used
+
 
 def _jit(func: Callable[..., Any]) -> Callable[..., Any]:
     """Compile with numba when it is installed; the plain function otherwise."""
@@ -826,12 +861,14 @@ def simulate_blow(
                 field="fidelity",
                 expected_steps=float(max_steps),
             )
+        began = time.perf_counter()
         _blow_kernel_c(
             st, h, chunk, p.tool_inertia, p.struck_inertia, p.stiffness, cd, p.rate,
             start_torque, p.breakaway, p.drive_torque, stride if total == 0 else 0,
             out_t, out_ts, info,
         )  # fmt: skip
         used = int(info[1])
+        _measured(used, time.perf_counter() - began)
         if info[3] > peak:
             peak = float(info[3])
             t_peak_abs = t_total + float(info[4])
@@ -1098,7 +1135,8 @@ def blow_series(
     record_first : bool
         Keep the torque against time of the first blow (simulation)
     max_steps : int
-        Step budget of all blows together, [-]
+        Step budget of all blows together without a deadline, [-]; with one, the step
+        budget is what the time left affords (:func:`step_budget`)
     deadline : float or None
         ``time.perf_counter()`` value after which the run stops, [s]
 
@@ -1106,6 +1144,7 @@ def blow_series(
     -------
     BlowSeries
     """
+    budget = step_budget(deadline, max_steps) if method == "simulation" else max_steps
     peaks: list[float] = []
     rots: list[float] = []
     after: list[float] = []
@@ -1127,13 +1166,14 @@ def blow_series(
         elif method == "energy":
             peak, new, rot, work = energy_blow(e, c, p.rate, torque, p.breakaway, p.drive_torque)
         else:
-            left = max_steps - steps
+            left = budget - steps
             if left <= 0:
                 raise BudgetExceeded(
-                    f"the blows used the step budget ({max_steps}) after {i} blows; use "
-                    "fidelity 'energy' or fewer max_blows",
+                    f"the blows used the step budget ({budget}"
+                    + ("" if deadline is None else " steps, what the time budget affords")
+                    + f") after {i} blows; use fidelity 'energy' or fewer max_blows",
                     field="fidelity",
-                    expected_steps=float(max_steps),
+                    expected_steps=float(budget),
                 )
             out = simulate_blow(
                 p, torque, record=record_first and i == 0, max_steps=left, deadline=deadline
