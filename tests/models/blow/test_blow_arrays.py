@@ -15,7 +15,7 @@ import pytest
 import engine.study as study_module
 from engine import EngineError, run, sweep
 from engine.blow import BlowProblem, blow_series, blow_series_array
-from engine.models.blow import BLOW, ENERGY_M16, NUTRUNNER_HARD
+from engine.models.blow import BLOW, ENERGY_M16, NUTRUNNER_HARD, RARE_IMPACT_M16
 from engine.points import auto_index, rung_estimates
 from engine.runner import choose_rung
 from engine.study import CHECK_FAILED, CHECK_OK, CHECK_UNKNOWN, Study, Variable, evaluate_chunk
@@ -211,3 +211,32 @@ def test_blow_series_on_arrays_is_the_scalar_series() -> None:
             assert s.final_torque[j] == pytest.approx(ref.torque_after[-1], rel=1e-9)
             assert s.peak[j] == pytest.approx(ref.peak[0], rel=1e-9)
             assert s.joint_work[j] == pytest.approx(sum(ref.joint_work), rel=1e-9)
+
+
+@pytest.mark.parametrize(
+    ("example", "varied"),
+    [
+        (NUTRUNNER_HARD, {"motor_speed": (120.0, 200.0), "flywheel_mass": (10.0, 40.0),
+                          "coupling_slip_torque": (0.0, 50.0)}),
+        (RARE_IMPACT_M16, {"power_spring_rate": (3e4, 8e4), "cone_angle": (0.5, 1.0),
+                           "flywheel_inertia": (5e-4, 3e-3)}),
+    ],
+    ids=["nutrunner", "rare_impact"],
+)  # fmt: skip
+@pytest.mark.parametrize("rung", ["rigid", "energy"])
+def test_every_tool_source_on_arrays_matches_single_runs(
+    example: dict, varied: dict, rung: str, no_loop: None
+) -> None:
+    rng = np.random.default_rng(6)
+    n = 25
+    columns = {k: rng.uniform(lo, hi, n) for k, (lo, hi) in varied.items()}
+    outputs = [*FLOATS, "blows_to_target"]
+    chunk = evaluate_chunk(BLOW, example, columns, outputs, rung)
+    assert chunk.rungs == [rung] * n
+    for j in range(n):
+        single = run(BLOW, {**example, **_point(columns, j)}, fidelity=rung)
+        for name in outputs:
+            _same(chunk.values[name][j], single.results.get(name), f"{rung} {j}: {name}")
+        for check in single.checks:
+            code = chunk.checks[check.name][j]
+            assert code == (CHECK_OK if check.ok else CHECK_FAILED), f"{j}: {check.name}"
