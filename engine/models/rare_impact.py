@@ -295,6 +295,8 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             column = np.where(dead, np.nan, column)
         values[name] = _nullable(column, dead)
     values["full_engagement"] = _nullable(full, dead)
+    # null on the closed form (a single run says why in a note): null at every point
+    values["half_coupling_release_speed"] = np.full(n, None, dtype=object)
     verdicts = (c3 > c1, lam1 < lam3, blow, returns, relocks, full)
     checks = {}
     # a point the model refuses reports no check; if every point is refused, no check at all
