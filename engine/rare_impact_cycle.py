@@ -183,6 +183,11 @@ def step_budget(deadline: float | None, max_steps: int) -> int:
     design needing millions of steps runs when the kernel finishes them well
     inside the time budget, and one that would not is declined up front (its
     ``expected_steps`` in the error: the runner's fallback can take over at once).
+
+    >>> step_budget(None, 1000)
+    1000
+    >>> step_budget(time.perf_counter() - 1.0, 1000)  # past the deadline: no steps
+    0
     """
     if deadline is None:
         return max_steps
@@ -2065,6 +2070,14 @@ def closed_form_errors_array(x: Mapping[str, Any], o: CycleArrays) -> dict[str, 
     or below at release, arithmetic that overflows) or the cycle is refused;
     maxima follow Python's ``max`` (a NaN first argument stays NaN), as the
     scalar code does.
+
+    >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
+    >>> x = {**R, "flywheel_inertia": np.array([0.02, 0.01])}
+    >>> e = closed_form_errors_array(x, closed_form_cycle_array(x))
+    >>> one = closed_form_errors({**R, "flywheel_inertia": 0.01},
+    ...                          closed_form_cycle({**R, "flywheel_inertia": 0.01}))
+    >>> bool(abs(e["stage1"][1] / one["stage1"] - 1.0) < 1e-12)
+    True
     """
     with np.errstate(all="ignore"):
         return _closed_form_errors_array(x, o)
