@@ -1236,9 +1236,9 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             checks["preload_window"] = np.where(dead, -1, verdict == "within").astype(np.int8)
     if s.target is not None and reports:
         checks["target_reached"] = np.where(dead, -1, reached > 0).astype(np.int8)
-    for o in _OUTPUTS:  # what a single run leaves null here is null at every point
+    for o in _OUTPUTS:  # what a single run leaves null here: None (no scalar probe)
         if not o.series and o.name not in values:
-            values[o.name] = np.full(n, None, dtype=object)
+            values[o.name] = None
     notes = [
         f"{ctx.rung}: evaluated on arrays, the same equations as a single run "
         "(engine.blow.blow_series_array)",

@@ -200,27 +200,22 @@ _CHECKS = (
 
 
 def _nullable(column: Any, dead: np.ndarray) -> np.ndarray:
-    """A float (or bool) column as the array contract wants it.
+    """A column as the array contract wants it: NaN where null (float), None where refused (bool).
 
-    NaN at the points the model refuses (``dead``) while every other point has a
-    value; where the scalar form leaves the output null at a point it computes (inf:
-    never reached), an object column with None at every null point, so that a sweep
-    reports null there without taking the point for a refused one.
+    A float output the scalar form leaves null (inf: never reached) is NaN, as at a
+    refused point; a sweep tells the two apart by the other outputs (a refused point
+    has no finite one). A bool output has no NaN: an object column with None at the
+    refused points.
     """
     column = np.asarray(column)
     if column.dtype == bool:
-        null = dead
-    else:
-        null = ~np.isfinite(column)
-        if not null.any():
+        if not dead.any():
             return column
-        if not (null & ~dead).any():
-            return np.where(null, np.nan, column)
-    if not null.any():
-        return column
-    out = column.astype(object)
-    out[null] = None
-    return out
+        out = column.astype(object)
+        out[dead] = None
+        return out
+    finite = np.isfinite(column)
+    return column if finite.all() else np.where(finite, column, np.nan)
 
 
 def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
@@ -295,8 +290,8 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             column = np.where(dead, np.nan, column)
         values[name] = _nullable(column, dead)
     values["full_engagement"] = _nullable(full, dead)
-    # null on the closed form (a single run says why in a note): null at every point
-    values["half_coupling_release_speed"] = np.full(n, None, dtype=object)
+    # null on the closed form (a single run says why in a note): None, not a column
+    values["half_coupling_release_speed"] = None
     verdicts = (c3 > c1, lam1 < lam3, blow, returns, relocks, full)
     checks = {}
     # a point the model refuses reports no check; if every point is refused, no check at all
