@@ -133,12 +133,16 @@ from .errors import BudgetExceeded, InfeasibleDesign, SolverFailed
 
 __all__ = [
     "GEOMETRIES",
+    "CycleArrays",
     "CycleOutcome",
     "Geometry",
     "closed_form_cycle",
+    "closed_form_cycle_array",
     "closed_form_errors",
+    "closed_form_errors_array",
     "geometry",
     "liftoff_speed_of",
+    "linear_reach_array",
     "quasi_static_error",
     "release_radius_of",
     "release_speed_of",
@@ -152,6 +156,49 @@ __all__ = [
 STEPS_PER_PERIOD = 200
 _CHUNK = 400_000
 _SERIES_POINTS = 240
+
+#: Seconds per RK4 step of the cycle kernel: a running mean over the kernel's own chunks
+#: of 10,000 steps or more in this process (issue 21: budgets in time, not steps); the
+#: prior is a slow machine's figure (~0.2 µs measured on the 2-core CI box, 5× that).
+_STEP_COST = [1e-6]
+#: Share of the time left that a simulation may plan to use up front (the rest covers a
+#: slower machine than measured and the answer's own bookkeeping).
+TIME_SHARE = 0.5
+
+
+def step_budget(deadline: float | None, max_steps: int) -> int:
+    """Steps the cycle kernel may take: what the time left affords, or ``max_steps``.
+
+    Parameters
+    ----------
+    deadline : float or None
+        ``time.perf_counter()`` value the answer is due by, [s]
+    max_steps : int
+        The caller's step budget, used only without a deadline, [-]
+
+    Notes
+    -----
+    With a deadline the budget is in time: :data:`TIME_SHARE` of the time left
+    divided by the kernel's measured cost per step (:data:`_STEP_COST`), so a stiff
+    design needing millions of steps runs when the kernel finishes them well
+    inside the time budget, and one that would not is declined up front (its
+    ``expected_steps`` in the error: the runner's fallback can take over at once).
+
+    >>> step_budget(None, 1000)
+    1000
+    >>> step_budget(time.perf_counter() - 1.0, 1000)  # past the deadline: no steps
+    0
+    """
+    if deadline is None:
+        return max_steps
+    left = max(deadline - time.perf_counter(), 0.0)
+    return int(min(left * TIME_SHARE / _STEP_COST[0], 1e15))
+
+
+def _measured(used: int, seconds: float) -> None:
+    """Fold one chunk's cost into :data:`_STEP_COST` (chunks long enough to time)."""
+    if used >= 10_000 and seconds > 0.0:
+        _STEP_COST[0] = 0.7 * _STEP_COST[0] + 0.3 * seconds / used
 
 
 # ---------------------------------------------------------------------------
@@ -1044,14 +1091,21 @@ class _Run:
     ) -> tuple[int, int, tuple[float, float, float, float, float, float]]:
         """Run ``mode`` from ``state`` = (t, ω, q0, q1, v0, v1) to its first event."""
         if self.steps + expected > self.max_steps:
+            budget = (
+                f"budget {self.max_steps:g}"
+                if self.deadline is None
+                else f"the {self.max_steps:.2g} steps its time budget leaves at "
+                f"{_STEP_COST[0] * 1e9:.0f} ns a step"
+            )
             raise BudgetExceeded(
                 f"the cycle simulation would take about {self.steps + expected:.2g} RK4 steps "
-                f"(budget {self.max_steps:g}): the half-coupling oscillates about "
+                f"({budget}): the half-coupling oscillates about "
                 f"{expected / STEPS_PER_PERIOD:.2g} times before release (stiff springs, light "
                 "parts or a slow spin-up), which is where the quasi-static closed form is "
                 "accurate; use fidelity 'closed_form' or 'auto'",
                 field="fidelity",
                 expected_steps=self.steps + expected,
+                step_budget=self.max_steps,
             )
         stride = max(1, int(expected / _SERIES_POINTS * 4)) if self.rec.on else 0
         bufs = self.rec.buffers()
@@ -1070,10 +1124,13 @@ class _Run:
                     "fidelity 'closed_form'",
                     field="fidelity",
                 )
+            began = time.perf_counter()
             status, which, t, w, q0, q1, v0, v1, used, n_rec = _advance_c(
                 mode, self.p, t, w, q0, q1, v0, v1, h, chunk, t_end, *events,
                 clamp0, stride, *bufs, n_rec,
             )  # fmt: skip
+            if type(self) is _Run:
+                _measured(int(used), time.perf_counter() - began)
             self.steps += int(used)
             if status != 0:
                 break
@@ -1102,7 +1159,8 @@ def simulate_cycle(
     deadline : float, optional
         ``time.perf_counter()`` value after which the run stops (BudgetExceeded), [s]
     max_steps : int
-        Largest number of RK4 steps, [-]
+        Largest number of RK4 steps without a deadline, [-]; with one, the step budget
+        is what the time left affords (:func:`step_budget`)
     steps_per_period : int
         RK4 steps per shortest natural period of each mode, [-]
 
@@ -1119,7 +1177,7 @@ def simulate_cycle(
         # loading or compiling the kernel (once per process) is not the design's time
         deadline += _ensure_compiled(p)
     rec = _Recorder(record)
-    run = _Run_impl(p, rec, deadline, max_steps)
+    run = _Run_impl(p, rec, deadline, step_budget(deadline, max_steps))
     notes: list[str] = []
     warnings: list[str] = []
     nm = x["roller_count"] * x["roller_mass"]
@@ -1663,3 +1721,471 @@ def simulate_cycle_scipy(
 
 
 _Run_impl: type[_Run] = _Run
+
+
+# ---------------------------------------------------------------------------
+# The closed form on arrays (sweeps and studies: several inputs may vary at once)
+# ---------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class _GeometryArray:
+    """:class:`Geometry` with ``kappa`` (and ``tan_a``) per point where the cone angle varies."""
+
+    kappa: Any
+    a_h: float
+    a_s: float
+    paper: bool
+    tan_a: Any
+
+
+def _geo_array(x: Mapping[str, Any]) -> _GeometryArray:
+    name = str(x.get("roller_geometry", "symmetric_v"))
+    t = np.tan(np.asarray(x["cone_angle"], dtype=float))
+    if name == "symmetric_v":
+        return _GeometryArray(0.5 / t, 0.5, 0.5, False, t)
+    if name in ("single_cone", "paper"):
+        return _GeometryArray(1.0 / t, 0.0, 1.0, name == "paper", t)
+    raise ValueError(f"unknown roller geometry {name!r}; one of {', '.join(GEOMETRIES)}")
+
+
+def _pymax(a: Any, b: Any) -> Any:
+    """``max(a, b)`` with Python's NaN semantics (``b`` replaces ``a`` only if ``b > a``)."""
+    return np.where(b > a, b, a)
+
+
+def _pymin(a: Any, b: Any) -> Any:
+    """``min(a, b)`` with Python's NaN semantics."""
+    return np.where(b < a, b, a)
+
+
+def linear_reach_array(
+    y0: Any, v0: Any, acc: Any, w2: Any, level: Any
+) -> tuple[np.ndarray, np.ndarray]:
+    r""":func:`linear_reach` on arrays.
+
+    Parameters
+    ----------
+    y0, v0, acc, w2, level : float or array
+        As :func:`linear_reach`, [m], [m/s], [m/s^2], [1/s^2], [m]
+
+    Notes
+    -----
+    The same operations in the same order as :func:`linear_reach`, point by
+    point (the parabolic branch where :math:`w^2 \le 0`: a spring rate so small
+    that it underflows).
+
+    >>> t, v = linear_reach_array(0.0, 0.0, 293.101, np.array([120000.0, 1.2e5]), 0.004)
+    >>> [round(float(u), 7) for u in t]
+    [0.0065306, 0.0065306]
+    """
+    with np.errstate(all="ignore"):
+        return _linear_reach_array(y0, v0, acc, w2, level)
+
+
+def _linear_reach_array(
+    y0: Any, v0: Any, acc: Any, w2: Any, level: Any
+) -> tuple[np.ndarray, np.ndarray]:
+    w2 = np.asarray(w2, dtype=float)
+    d = np.asarray(level - y0, dtype=float)
+    up = d > 0.0
+    # the direction: one sign for all points where it is (the common case), else per point
+    forward = bool(up.all())
+    s: Any = 1.0 if forward else (-1.0 if not up.any() else np.where(up, 1.0, -1.0))
+    if forward:
+        v, a = v0, acc
+    else:
+        d, v, a = d * s, v0 * s, acc * s
+    par = w2 <= 0.0
+    any_par = bool(np.any(par))
+    if any_par:  # no stiffness (a vanishing spring rate): the parabolic branch
+        t_par, v_par = _parabolic_reach(d, v, a, s)
+    k = np.sqrt(w2)
+    c = a / w2
+    vk = v / k
+    amp = np.hypot(c, vk)
+    never = d > c + amp * (1.0 + 1e-13)
+    delta = np.arctan2(vk, c)
+    q = c - d
+    aq = amp + q
+    # where amp - q cancels (c > 0, q > 0): amp - c + d with amp - c = vk²/(amp + c)
+    exact = (c > 0.0) & (q > 0.0)
+    sin_part = np.sqrt(np.maximum(np.where(exact, (vk * vk / (amp + c) + d), amp - q) * aq, 0.0))
+    theta = np.arctan2(sin_part, q) - delta
+    theta = np.where(theta < 0.0, theta + 2.0 * math.pi, theta)
+    t = theta / k
+    vel = s * k * sin_part
+    if never.any():
+        t, vel = np.where(never, math.inf, t), np.where(never, math.nan, vel)
+    if any_par:
+        t, vel = np.where(par, t_par, t), np.where(par, v_par, vel)
+    zero = d == 0.0
+    if zero.any():
+        t, vel = np.where(zero, 0.0, t), np.where(zero, v0, vel)
+    return t, vel
+
+
+def _parabolic_reach(d: Any, v: Any, a: Any, s: Any) -> tuple[np.ndarray, np.ndarray]:
+    r""":func:`linear_reach`'s branch for :math:`w^2 \le 0`, travel ``d`` > 0 from 0 with v, a."""
+    t_lin = np.where(v > 0.0, d / v, math.inf)
+    v_lin = np.where(v > 0.0, v * s, math.nan)
+    disc = v * v + 2.0 * a * d
+    root = np.sqrt(disc)
+    den = v + root
+    t_q = np.where(den > 0.0, 2.0 * d / np.where(den > 0.0, den, 1.0), math.inf)
+    ok = (disc >= 0.0) & (t_q >= 0.0) & np.isfinite(t_q)
+    t_q, v_q = np.where(ok, t_q, math.inf), np.where(ok, root * s, math.nan)
+    zero_a = a == 0.0
+    return np.where(zero_a, t_lin, t_q), np.where(zero_a, v_lin, v_q)
+
+
+def _time_to_speed_array(x: Mapping[str, Any], inertia: Any, w: Any) -> Any:
+    torque, w_nl = x["motor_torque"], x.get("motor_no_load_speed")
+    if w_nl is None:
+        return inertia * w / torque
+    ratio = np.minimum(w / w_nl, 0.5)  # any value below 1: where w >= w_nl the answer is inf
+    t = -(inertia * w_nl / torque) * np.log1p(-np.where(w >= w_nl, ratio, w / w_nl))
+    return np.where(w >= w_nl, math.inf, t)
+
+
+def _inertia_array(x: Mapping[str, Any], g: _GeometryArray, radius: Any) -> Any:
+    if g.paper:
+        return x["flywheel_inertia"] + 0.0 * radius
+    return x["flywheel_inertia"] + x["roller_count"] * x["roller_mass"] * radius * radius
+
+
+@dataclass
+class CycleArrays:
+    """:class:`CycleOutcome` of the closed form at many points (arrays; NaN where refused).
+
+    ``refused`` marks the points where :func:`closed_form_cycle` raises
+    InfeasibleDesign (every other array is NaN there).
+    """
+
+    release_speed: np.ndarray
+    spin_up_time: np.ndarray
+    release_radius: np.ndarray
+    release_velocity: np.ndarray
+    engagement_time: np.ndarray
+    max_travel: np.ndarray
+    return_time: np.ndarray
+    home_time: np.ndarray
+    relock_time: np.ndarray
+    snap: np.ndarray
+    refused: np.ndarray
+
+    @property
+    def blow(self) -> np.ndarray:
+        return np.isfinite(self.engagement_time)
+
+    @property
+    def returns(self) -> np.ndarray:
+        return self.blow & np.isfinite(self.return_time)
+
+    @property
+    def relocks(self) -> np.ndarray:
+        return self.returns & np.isfinite(self.home_time) & np.isfinite(self.relock_time)
+
+
+class _Stage1:
+    """The stage-1 quantities on arrays that both the cycle and its error estimate use."""
+
+    def __init__(self, x: Mapping[str, Any]) -> None:
+        g = self.g = _geo_array(x)
+        nm = self.nm = x["roller_count"] * x["roller_mass"]
+        m12 = x["half_coupling_mass"] + x["stepped_shaft_mass"]
+        c1, c2 = x["power_spring_rate"], x["auxiliary_spring_rate"]
+        lam1, lam2 = x["power_spring_preload"], x["auxiliary_spring_preload"]
+        h1, x0 = x["release_travel"], x["roller_radius"]
+        if g.paper:
+            self.weight: Any = 0.0
+            self.push = nm / (2.0 * g.tan_a)
+            self.m_e = m12 + nm / (2.0 * g.tan_a * g.tan_a)
+        else:
+            self.weight = (m12 + nm * g.a_h) * x["gravity"]
+            self.push = nm * g.kappa
+            self.m_e = m12 + nm * (g.kappa**2 + g.a_h**2)
+        self.f0 = c1 * lam1 + c2 * lam2 + self.weight
+        self.refused = self.f0 <= 0.0
+        fm = c1 * (lam1 + h1) + c2 * (lam2 + h1) + self.weight
+        self.r = x0 + g.kappa * h1
+        w_quasi = np.sqrt(fm / (self.push * self.r))
+        self.w_0 = np.sqrt(np.maximum(self.f0, 0.0) / (self.push * x0))
+        snapped = self.w_0 * _inertia_array(x, g, x0) / _inertia_array(x, g, self.r)
+        self.w_m = np.where(self.w_0 <= w_quasi, w_quasi, snapped)
+        self.stiff = c1 + c2
+
+    def stiffness(self, w: Any) -> Any:
+        return self.stiff - self.push * self.g.kappa * w * w
+
+
+def _stage2_array(
+    x: Mapping[str, Any], v_release: Any, g: _GeometryArray
+) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`_stage2_closed` on arrays: (release -> blow time, reach)."""
+    c1, c2, c3 = x["power_spring_rate"], x["auxiliary_spring_rate"], x["return_spring_rate"]
+    lam1, lam2, lam3 = (
+        x["power_spring_preload"],
+        x["auxiliary_spring_preload"],
+        x["return_spring_preload"],
+    )
+    h1, h2, grav = x["release_travel"], x["engagement_height"], x["gravity"]
+    m1, m2, m3 = x["half_coupling_mass"], x["stepped_shaft_mass"], x["striker_mass"]
+    nm = x["roller_count"] * x["roller_mass"]
+    big = m1 + nm + m3
+    v0 = -(m1 + m2 + nm * g.a_h) * v_release / (big + m2)
+    back = v0 < 0.0
+    mass = big + m2
+    f_at0 = mass * grav + c1 * (lam1 + h1) + c2 * (lam2 + h1) - c3 * lam3
+    k_a = np.sqrt((c1 + c2 + c3) / mass)
+    t_back = np.where(back, 2.0 * np.arctan2(-v0 / k_a, f_at0 / mass / k_a**2) / k_a, 0.0)
+    v_start = np.where(back, -v0, 0.0)
+    acc0 = grav + (c1 * (lam1 + h1) - c3 * lam3) / big
+    w2 = (c1 + c3) / big
+    z_off = lam1 + h1
+    k = np.sqrt(w2)
+    c = acc0 / w2
+    reach = c + np.hypot(c, v_start / k)
+    one_piece = (h2 <= z_off) | (reach <= z_off)
+    every = bool(np.all(one_piece))
+    if every:  # the common case: the power spring stays in contact up to h2 everywhere
+        t2, _ = linear_reach_array(0.0, v_start, acc0, w2, h2)
+        return t_back + t2, reach
+    t_a, v_a = linear_reach_array(0.0, v_start, acc0, w2, z_off)
+    acc_b = grav - c3 * (lam3 + z_off) / big
+    w2_b = c3 / big
+    t_b, _ = linear_reach_array(z_off, v_a, acc_b, w2_b, h2)
+    c_b = acc_b / w2_b
+    reach_b = z_off + c_b + np.hypot(c_b, v_a / np.sqrt(w2_b))
+    if not np.any(one_piece):
+        return t_back + t_a + t_b, reach_b
+    t2, _ = linear_reach_array(0.0, v_start, acc0, w2, h2)
+    t = np.where(one_piece, t_back + t2, t_back + t_a + t_b)
+    return t, np.where(one_piece, reach, reach_b)
+
+
+def closed_form_cycle_array(x: Mapping[str, Any]) -> CycleArrays:
+    """:func:`closed_form_cycle` at many points: numeric inputs may be equal-length arrays.
+
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``); numeric ones scalars or
+        equal-length arrays, ``roller_geometry`` one choice for all points
+
+    Notes
+    -----
+    The same equations as the scalar closed form, evaluated with numpy in the
+    same order, point by point (the tests hold the two to 1e-9). Where the
+    scalar form raises InfeasibleDesign (preloads that do not hold the
+    half-coupling, a motor that never reaches the release speed) the point is
+    ``refused`` and NaN.
+
+    >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
+    >>> o = closed_form_cycle_array({**R, "power_spring_rate": np.array([5e4, 6e4])})
+    >>> o1 = closed_form_cycle({**R, "power_spring_rate": 6e4})
+    >>> bool(abs(o.engagement_time[1] / o1.engagement_time - 1.0) < 1e-12)
+    True
+    """
+    with np.errstate(all="ignore"):
+        return _closed_form_cycle_array(x)
+
+
+def _closed_form_cycle_array(x: Mapping[str, Any]) -> CycleArrays:
+    s1 = _Stage1(x)
+    g = s1.g
+    x0, h1 = x["roller_radius"], x["release_travel"]
+    t_spin = _time_to_speed_array(x, _inertia_array(x, g, s1.r), s1.w_m)
+    t_lift = _time_to_speed_array(x, _inertia_array(x, g, x0), s1.w_0)
+    refused = s1.refused | ~(np.isfinite(t_spin) & np.isfinite(t_lift))
+    # quasi_static_release_velocity
+    k_m = s1.stiffness(s1.w_m)
+    torque = x["motor_torque"]
+    w_nl = x.get("motor_no_load_speed")
+    if w_nl is not None:
+        torque = torque * np.maximum(1.0 - s1.w_m / w_nl, 0.0)
+    wd = torque / _inertia_array(x, g, s1.r)
+    v_rel = np.where(
+        k_m <= 0.0,
+        h1 * np.sqrt(-k_m / s1.m_e),
+        2.0 * s1.push * s1.w_m * s1.r / k_m * wd,
+    )
+    t_eng, reach = _stage2_array(x, v_rel, g)
+    h2, h3 = x["engagement_height"], x["jaw_height"]
+    c3, lam3, grav = x["return_spring_rate"], x["return_spring_preload"], x["gravity"]
+    nm = s1.nm
+    m22 = x["striker_mass"] + nm * (g.kappa * g.kappa + g.a_s * g.a_s)
+    q_s0 = -c3 * (lam3 + h2) + (x["striker_mass"] + nm * g.a_s) * grav
+    clear = h2 - np.minimum(h3, h2)
+    blow = np.isfinite(t_eng)
+    t_ret, _ = linear_reach_array(h2, 0.0, q_s0 / m22, c3 / m22, clear)
+    t_home, _ = linear_reach_array(h2, 0.0, q_s0 / m22, c3 / m22, 0.0)
+    t_ret = np.where(blow, t_ret, math.inf)
+    t_home = np.where(blow, t_home, math.inf)
+    # stage 4
+    m2, c2 = x["stepped_shaft_mass"], x["auxiliary_spring_rate"]
+    drive = c2 * (x["auxiliary_spring_preload"] + h1) + m2 * grav
+    ff = x["roller_friction"] * c3 * lam3
+    t4, _ = linear_reach_array(0.0, 0.0, (drive - ff) / m2, c2 / m2, h1)
+    t_lock = np.where(np.isfinite(t_home) & (drive > ff), t4, math.inf)
+    snap = s1.stiffness(s1.w_0) < 0.0
+    n = np.broadcast_shapes(*(np.shape(v) for v in x.values() if isinstance(v, np.ndarray)))
+
+    any_refused = bool(np.any(refused))
+
+    def out(v: Any) -> np.ndarray:
+        v = np.asarray(v, dtype=float)
+        if v.shape != n:
+            v = np.broadcast_to(v, n)
+        return np.where(refused, math.nan, v) if any_refused else v
+
+    return CycleArrays(
+        release_speed=out(s1.w_m),
+        spin_up_time=out(t_spin),
+        release_radius=out(s1.r),
+        release_velocity=out(v_rel),
+        engagement_time=out(t_eng),
+        max_travel=out(reach),
+        return_time=out(t_ret),
+        home_time=out(t_home),
+        relock_time=out(t_lock),
+        snap=np.broadcast_to(snap, n) & ~refused,
+        refused=np.broadcast_to(refused, n),
+    )
+
+
+def closed_form_errors_array(x: Mapping[str, Any], o: CycleArrays) -> dict[str, np.ndarray]:
+    """:func:`closed_form_errors` at many points; NaN where the scalar form gives no estimate.
+
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI, numeric ones scalars or equal-length arrays
+    o : CycleArrays
+        :func:`closed_form_cycle_array` of ``x``
+
+    Notes
+    -----
+    NaN where :func:`closed_form_errors` raises (a stage-1 stiffness of zero
+    or below at release, arithmetic that overflows) or the cycle is refused;
+    maxima follow Python's ``max`` (a NaN first argument stays NaN), as the
+    scalar code does.
+
+    >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
+    >>> x = {**R, "flywheel_inertia": np.array([0.02, 0.01])}
+    >>> e = closed_form_errors_array(x, closed_form_cycle_array(x))
+    >>> one = closed_form_errors({**R, "flywheel_inertia": 0.01},
+    ...                          closed_form_cycle({**R, "flywheel_inertia": 0.01}))
+    >>> bool(abs(e["stage1"][1] / one["stage1"] - 1.0) < 1e-12)
+    True
+    """
+    with np.errstate(all="ignore"):
+        return _closed_form_errors_array(x, o)
+
+
+def _closed_form_errors_array(x: Mapping[str, Any], o: CycleArrays) -> dict[str, np.ndarray]:
+    s1 = _Stage1(x)
+    g = s1.g
+    h1, x0 = x["release_travel"], x["roller_radius"]
+    fm = s1.f0 + s1.stiff * h1
+    a_push, kap, m_e = s1.push, g.kappa, s1.m_e
+    inertia = _inertia_array(x, g, s1.r)
+    inertia_0 = _inertia_array(x, g, x0)
+    torque, w_nl = x["motor_torque"], x.get("motor_no_load_speed")
+    w_0, w_m = s1.w_0, s1.w_m
+    inertia_share: Any = 0.0
+    if w_nl is not None and not g.paper:
+        u = w_m / w_nl
+        below = w_m < w_nl
+        uu = np.where(below, u, 0.5)
+        amplify = _pymax(uu / ((1.0 - uu) * -np.log1p(-uu)), 1.0)
+        inertia_share = np.where(below, SAFETY * amplify * (inertia - inertia_0) / inertia, 0.0)
+
+    def accel(w: Any) -> Any:
+        return torque / inertia if w_nl is None else torque / inertia * (1.0 - w / w_nl)
+
+    k_lift = s1.stiffness(w_0)
+    snap = k_lift < 0.0
+    any_snap, all_snap = bool(np.any(snap)), bool(np.all(snap))
+    if any_snap:  # snap-through at lift-off
+        wd_0 = accel(w_0)
+        t_s = (6.0 * h1 * m_e / (2.0 * a_push * x0 * w_0 * wd_0)) ** (1.0 / 3.0)
+        share = 0.0 if g.paper else (inertia - inertia_0) / inertia
+        dw_s = SAFETY * (wd_0 * t_s / w_0 + share)
+        t_0 = _time_to_speed_array(x, inertia, w_0)
+        v_snap = h1 * np.sqrt(-k_lift / m_e)
+        dt_s = _pymax(SAFETY * t_s / t_0 + inertia_share, dw_s)
+        dv_s = SAFETY * v_snap
+        stalled = wd_0 <= 0.0
+        dw_s, dt_s, dv_s = (np.where(stalled, math.inf, v) for v in (dw_s, dt_s, dv_s))
+
+    def rates(w: Any, rr: Any) -> tuple[Any, Any, Any]:
+        k = s1.stiff - a_push * kap * w * w
+        dz_du = a_push * rr / k
+        d2z_du2 = 2.0 * a_push * kap / k * dz_du
+        wd = accel(w)
+        wdd = 0.0 if w_nl is None else -torque / inertia / w_nl * wd
+        dz_dw = 2.0 * w * dz_du
+        d2z_dw2 = 2.0 * dz_du + 4.0 * w * w * d2z_du2
+        return k, dz_dw * wd, d2z_dw2 * wd * wd + dz_dw * wdd
+
+    fails: Any = False
+    if not all_snap:
+        k_0, zd_0, zdd_0 = rates(w_0, x0)
+        k_m, _, zdd_m = rates(w_m, s1.r)
+        om_0, om_m = np.sqrt(k_0 / m_e), np.sqrt(k_m / m_e)
+        # where the scalar code divides by zero, takes the root of a negative or overflows
+        fails = (k_0 == 0.0) | ~(k_m > 0.0) | (om_0 > 1e154) | (om_m > 1e154)
+        amp = (np.abs(zd_0) / om_0 + np.abs(zdd_0) / om_0**2) * np.sqrt(om_0 / om_m)
+        err = amp + np.abs(zdd_m) / om_m**2
+        dw_n = SAFETY * err * k_m / (2.0 * fm)
+        wd_m = accel(w_m)
+        t_m = _time_to_speed_array(x, inertia, w_m)
+        dt_n = np.where(wd_m > 0, dw_n * w_m / (wd_m * t_m), math.inf) + inertia_share
+        dv_n = SAFETY * (amp * om_m + np.abs(zdd_m) / om_m)
+        fails = ~snap & fails
+        if np.any(fails):
+            dw_n, dt_n, dv_n = (np.where(fails, math.nan, v) for v in (dw_n, dt_n, dv_n))
+    if all_snap:
+        dw, dt, dv = dw_s, dt_s, dv_s
+    elif any_snap:
+        dw, dt, dv = (np.where(snap, a, b) for a, b in ((dw_s, dw_n), (dt_s, dt_n), (dv_s, dv_n)))
+    else:
+        dw, dt, dv = dw_n, dt_n, dv_n
+    stage1 = _pymax(_pymax(dw, dt), EXACT_FLOOR)
+    blow = o.blow
+    base = o.engagement_time
+    worst: Any = 0.0
+    for sign in (1.0, -1.0):
+        other, _ = _stage2_array(x, _pymax(o.release_velocity + sign * dv, 0.0), g)
+        rel = np.where(np.isfinite(other), np.abs(other - base) / base, math.inf)
+        worst = _pymax(worst, rel)
+    engagement = np.where(blow, _pymax(worst + dw, EXACT_FLOOR), _pymax(dw, EXACT_FLOOR))
+    nm = s1.nm
+    k2 = kap * kap
+    m11 = x["half_coupling_mass"] + nm * (k2 + g.a_h * g.a_h)
+    m12 = nm * (-k2 + g.a_h * g.a_s)
+    m22 = x["striker_mass"] + nm * (k2 + g.a_s * g.a_s)
+    coupling = m12 * m12 / (m11 * m22)
+    ret = _pymin(_pymax(RETURN_COUPLING * coupling, EXACT_FLOOR), 1.0)
+    n = o.refused.shape
+    bad = fails | o.refused
+    if not np.any(bad):
+        return {
+            name: np.broadcast_to(np.asarray(v, dtype=float), n)
+            for name, v in (
+                ("stage1", stage1),
+                ("engagement", engagement),
+                ("return", ret),
+                ("relock", EXACT_FLOOR),
+            )
+        }
+    return {
+        name: np.where(bad, math.nan, np.broadcast_to(v, n))
+        for name, v in (
+            ("stage1", stage1),
+            ("engagement", engagement),
+            ("return", ret),
+            ("relock", EXACT_FLOOR),
+        )
+    }

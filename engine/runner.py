@@ -256,7 +256,8 @@ def run(
         ctx = replace(ctx, rung=fallback)
         notes.append(
             f"{rung!r} would need about {exc.context['expected_steps']:.2g} steps (budget "
-            f"{max_steps:g}); ran its declared fallback {fallback!r} instead, whose estimated "
+            f"{exc.context.get('step_budget', max_steps):g}); ran its declared fallback "
+            f"{fallback!r} instead, whose estimated "
             + (
                 f"error {theirs:.2g} is within {rung!r}'s own {own:.2g}"
                 if theirs <= own

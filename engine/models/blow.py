@@ -15,21 +15,26 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
+import numpy as np
+
 from .. import clutch as cl
 from .. import nutrunner as nr
 from .. import preload as pl
 from ..blow import (
+    ISO5393_ANGLE,
     BlowProblem,
     blow_series,
+    blow_series_array,
     clutch_preload_window,
     energy_blow,
+    energy_blow_array,
     energy_blow_error,
     energy_peak_error,
     iso5393_rate,
     joint_rate,
     rigid_blow_torque,
 )
-from ..errors import InputOutOfRange
+from ..errors import EngineError, InputOutOfRange
 from ..joint import clamped_compliance as vdi_clamped_compliance
 from ..rare_impact import liftoff_speed, release_speed
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
@@ -599,14 +604,22 @@ def _energy_errors(x: Mapping[str, Any]) -> tuple[float, float] | None:
         return None
 
 
-def _energy_estimate(x: Mapping[str, Any]) -> float | None:
+def _energy_estimate(x: Mapping[str, Any]) -> Any:
+    if _is_array(x):
+        arrays = _energy_errors_array(x)
+        if arrays is None:
+            return None
+        after, peak = arrays
+        return np.where(peak > after, peak, after)  # max(after, peak) as the scalar code
     errors = _energy_errors(x)
     return None if errors is None else max(errors)
 
 
-def _rigid_estimate(x: Mapping[str, Any]) -> float | None:
+def _rigid_estimate(x: Mapping[str, Any]) -> Any:
     if x["source"] == "clutch":
         return None
+    if _is_array(x):
+        return _rigid_estimate_array(x)
     try:
         _, k, t0, p, _ = _setup(x)
         base = _energy_estimate(x)
@@ -624,10 +637,29 @@ def _rigid_estimate(x: Mapping[str, Any]) -> float | None:
 _DAMPED_SIMULATION_ERROR = 5e-5
 
 
-def _simulation_estimate(x: Mapping[str, Any]) -> float | None:
+def _simulation_estimate(x: Mapping[str, Any]) -> Any:
     if x["source"] == "clutch":
         return None
+    if isinstance(x["restitution"], np.ndarray):
+        return np.where(x["restitution"] >= 1.0, _SIMULATION_ERROR, _DAMPED_SIMULATION_ERROR)
     return _SIMULATION_ERROR if x["restitution"] >= 1.0 else _DAMPED_SIMULATION_ERROR
+
+
+def _rigid_estimate_array(x: Mapping[str, Any]) -> Any:
+    """:func:`_rigid_estimate` at many points (NaN where the scalar form gives None)."""
+    base = _energy_estimate(x)
+    try:
+        s = _setup_array(x)
+    except EngineError:
+        return np.full(_points(x), np.nan)
+    with np.errstate(all="ignore"):
+        k = np.asarray(s.rate, dtype=float)
+        kk = np.where(k > 0.0, k, 1.0)
+        after = energy_blow_array(
+            s.energy, s.stiffness, kk, x["snug_torque"], x["breakaway_factor"], s.drive
+        )[1]
+        rigid = np.sqrt(2.0 * s.energy * s.stiffness) + s.drive
+        return np.where(s.refused | ~(k > 0.0), np.nan, np.abs(rigid - after) / after + base)
 
 
 # --------------------------------------------------------------------------- compute
@@ -880,6 +912,343 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
 
 
+# --------------------------------------------------------------------------- array path
+#
+# The rigid and energy rungs at many points (sweeps and studies): the same equations as
+# _compute in the same order, numeric inputs as equal-length arrays. The choices (source,
+# joint_rate_from, torque_formula, ...) are one per request; the bolt and the joint's
+# compliances are resolved once per distinct combination of the inputs they depend on
+# (once for a sweep of anything else).
+
+#: Inputs the thread's torque per preload (and a 'joint' rate) depends on.
+_THREAD_INPUTS = (
+    "thread_diameter",
+    "thread_pitch",
+    "bearing_outer_diameter",
+    "hole_diameter",
+    "thread_friction",
+    "bearing_friction",
+)
+_JOINT_INPUTS = ("clamped_compliance", "clamped_length", "bolt_compliance", "youngs_modulus")
+
+
+def _is_array(x: Mapping[str, Any]) -> bool:
+    return any(isinstance(v, np.ndarray) for v in x.values())
+
+
+def _points(x: Mapping[str, Any]) -> tuple[int, ...]:
+    return np.broadcast_shapes(*(np.shape(v) for v in x.values() if isinstance(v, np.ndarray)))
+
+
+def _or_zero(v: Any) -> Any:
+    """``float(v or 0.0)`` of the scalar code, for an array or None."""
+    return (
+        0.0
+        if v is None
+        else (np.asarray(v, dtype=float) if isinstance(v, np.ndarray) else float(v))
+    )
+
+
+def _tool_array(x: Mapping[str, Any]) -> tuple[Any, Any, Any, Any, Any]:
+    """:func:`_tool` on arrays: (energy after the efficiency, inertia, stiffness, drive, fails).
+
+    ``fails`` marks the points where the scalar code divides by zero (a spindle speed or a
+    stiffness that underflows to 0 with inputs at their declared extremes).
+    """
+    src = x["source"]
+    drive = _or_zero(x["drive_torque"])
+    fails: Any = False
+    if src == "energy":
+        _need(x, ("tool_energy", "tool_inertia", "tool_stiffness"), "with source 'energy'")
+        e, j, c = x["tool_energy"], x["tool_inertia"], x["tool_stiffness"]
+    elif src == "nutrunner":
+        _need(x, _NR_NAMES, "with source 'nutrunner'")
+        w = x["motor_speed"]
+        e = nr.kinetic_energy(w, *(x[n] for n in _NR_NAMES[1:12]))
+        w3 = nr.flywheel_speed(w, x["motor_pulley_diameter"], x["flywheel_diameter"])
+        w5 = nr.spindle_speed(w3, x["drive_gear_diameter"], x["spindle_gear_diameter"])
+        j = 2.0 * e / (w5 * w5)
+        g = x["shear_modulus"]
+        c7 = nr.torsional_stiffness(g, x["shaft_diameter"], x["shaft_length"])
+        c8 = nr.torsional_stiffness(g, x["spindle_diameter"], x["spindle_length"])
+        c = c7 * c8 / (c7 + c8)
+        drag = (x["spindle_count"] - 1) * x["idle_spindle_friction_torque"]
+        feed = _or_zero(x["coupling_slip_torque"]) * w / w5
+        drive = drive + (feed - drag)
+        fails = (w5 * w5 == 0.0) | (c7 + c8 == 0.0)
+    elif src == "rare_impact":
+        _need(x, (*_RI_NAMES, "tool_stiffness"), "with source 'rare_impact'")
+        c1, lam1 = x["power_spring_rate"], x["power_spring_preload"]
+        c2, lam2 = x["auxiliary_spring_rate"], x["auxiliary_spring_preload"]
+        mp, n_r, x0, alpha = (
+            x["roller_mass"],
+            x["roller_count"],
+            x["roller_radius"],
+            x["cone_angle"],
+        )
+        w_m = release_speed(c1, lam1, c2, lam2, x["release_travel"], mp, n_r, x0, alpha)
+        w_0 = liftoff_speed(c1, lam1, c2, lam2, mp, n_r, x0, alpha)
+        w_m = np.where(w_0 > w_m, w_0, w_m)
+        j = x["flywheel_inertia"]
+        e = 0.5 * j * w_m * w_m
+        c = x["tool_stiffness"]
+    else:
+        raise AssertionError(src)
+    return x["blow_efficiency"] * e, j, c, drive, fails
+
+
+def _squares_overflow(v: Any) -> Any:
+    """Where Python's ``v**2`` raises OverflowError (a finite value whose square is not)."""
+    return np.isfinite(v) & ~np.isfinite(np.asarray(v, dtype=float) ** 2)
+
+
+def _per_group(
+    x: Mapping[str, Any], names: tuple[str, ...], fn: Any, width: int
+) -> tuple[np.ndarray, np.ndarray, list[str]]:
+    """``fn`` (scalar inputs -> (floats, notes)) once per distinct combination of ``names``.
+
+    Returns (values of shape (width, points), refused per point, the first group's notes);
+    a group ``fn`` refuses (EngineError) is NaN and refused.
+    """
+    n = _points(x)
+    varied = [k for k in names if isinstance(x.get(k), np.ndarray)]
+    out = np.full((width, *n), np.nan)
+    refused = np.zeros(n, dtype=bool)
+    notes: list[str] = []
+    if not varied:
+        try:
+            got, notes = fn(x)
+        except EngineError:
+            refused[...] = True
+        else:
+            out[:] = np.asarray(got, dtype=float).reshape(width, *([1] * len(n)))
+        return out, refused, notes
+    table = np.stack([np.broadcast_to(np.asarray(x[k], dtype=float), n) for k in varied], axis=-1)
+    rows, inverse = np.unique(table.reshape(-1, len(varied)), axis=0, return_inverse=True)
+    inverse = inverse.reshape(n)
+    scalar = {k: (v.flat[0].item() if isinstance(v, np.ndarray) else v) for k, v in x.items()}
+    for r, row in enumerate(rows):
+        at = inverse == r
+        point = dict(scalar)
+        for k, v in zip(varied, row.tolist(), strict=True):
+            point[k] = v
+        try:
+            got, group_notes = fn(point)
+        except EngineError:
+            refused |= at
+            continue
+        notes = notes or group_notes
+        out[:, at] = np.asarray(got, dtype=float).reshape(width, 1)
+    return out, refused, notes
+
+
+def _thread_and_joint(x: Mapping[str, Any]) -> tuple[tuple[float, float], list[str]]:
+    """(k_G + k_K or NaN without a thread, the 'joint' torque rate or NaN) of one point."""
+    thread = _thread(x)
+    per = math.nan if thread is None else thread[1]
+    k = math.nan
+    notes = [] if thread is None else list(thread[2])
+    if x["joint_rate_from"] == "joint":
+        k, note = _rate(x, None, thread)
+        notes.append(note)
+    return (per, k), notes
+
+
+@dataclasses.dataclass
+class _ArraySetup:
+    energy: Any
+    inertia: Any
+    stiffness: Any
+    drive: Any
+    speed: Any
+    rate: Any
+    per: Any  # None without a thread
+    target: Any  # None without a target
+    refused: np.ndarray
+    notes: list[str]
+
+
+#: The last :func:`_setup_array`: (the inputs' values, pinned, and the setup). A sweep asks
+#: the rungs' estimates and then the array path on the same inputs (the same dict of the
+#: same arrays): the bolt is resolved once for all three. A hit needs every value to be
+#: the *same object*; nothing mutates a sweep's arrays in place.
+_LAST_SETUP: tuple[tuple[Any, ...], _ArraySetup] | None = None
+
+
+def _setup_array(x: Mapping[str, Any]) -> _ArraySetup:
+    """:func:`_setup` (and :func:`_target`, :func:`_rate`) at many points."""
+    global _LAST_SETUP
+    key = tuple(x.items())
+    last = _LAST_SETUP
+    if (
+        last is not None
+        and len(last[0]) == len(key)
+        and all(a[0] == b[0] and a[1] is b[1] for a, b in zip(last[0], key, strict=True))
+    ):
+        return last[1]
+    setup = _setup_array_uncached(x)
+    _LAST_SETUP = (key, setup)
+    return setup
+
+
+def _setup_array_uncached(x: Mapping[str, Any]) -> _ArraySetup:
+    e_tool, j, c, drive, fails = _tool_array(x)
+    names = _THREAD_INPUTS + (_JOINT_INPUTS if x["joint_rate_from"] == "joint" else ())
+    got, refused, notes = _per_group(x, names, _thread_and_joint, 2)
+    per = None if x.get("thread_diameter") is None else got[0]
+    target: Any = None
+    if x.get("target_torque") is not None:
+        target = x["target_torque"]
+    elif x.get("target_preload") is not None:
+        if per is None:
+            _target(x, None)  # raises: a target preload needs the thread
+        target = x["target_preload"] * per
+    how = x["joint_rate_from"]
+    if how == "number":
+        _need(x, ("joint_rate",), "with joint_rate_from 'number'")
+        k = x["joint_rate"]
+    elif how.startswith("iso5393"):
+        if target is None:
+            _rate(x, None, None)  # raises: a test joint needs a target
+        k = target / ISO5393_ANGLE[how.split("_")[1]]
+    else:
+        k = got[1]
+    with np.errstate(all="ignore"):
+        speed = np.sqrt(2.0 * e_tool / j)
+        energy = 0.5 * j * speed**2
+        # the scalar code raises there (OverflowError of speed**2, ZeroDivisionError): refused
+        refused = refused | fails | _squares_overflow(speed) | _squares_overflow(drive)
+    refused = np.broadcast_to(refused, _points(x))
+    return _ArraySetup(energy, j, c, drive, speed, k, per, target, refused, notes)
+
+
+def _energy_errors_array(x: Mapping[str, Any]) -> tuple[Any, Any] | None:
+    """:func:`_energy_errors` at many points (NaN where the scalar form gives None)."""
+    if x["source"] == "clutch":
+        return None
+    try:
+        s = _setup_array(x)
+    except EngineError:
+        nan = np.full(_points(x), np.nan)
+        return nan, nan
+    with np.errstate(all="ignore"):
+        k = np.asarray(s.rate, dtype=float)
+        js, rest = x["struck_inertia"], x["restitution"]
+        ratio = s.stiffness / (s.stiffness + k)
+        after = 2.0 * js / s.inertia * ratio * ratio + 0.5 * (1.0 - rest**2)
+        kk = np.where(k > 0.0, k, 1.0)
+        peak = energy_blow_array(
+            s.energy, s.stiffness, kk, x["snug_torque"], x["breakaway_factor"], s.drive
+        )[0]
+        jr = s.inertia * js / (s.inertia + js)
+        peak_err = s.speed * np.sqrt(s.stiffness * jr) / np.maximum(peak, 1e-300)
+        bad = s.refused | ~(k > 0.0)
+        return np.where(bad, np.nan, after), np.where(bad, np.nan, after + peak_err)
+
+
+def _nullable(column: Any, null: np.ndarray) -> np.ndarray:
+    """An object column with None where ``null`` (the column itself where nothing is null)."""
+    if not null.any():
+        return np.asarray(column)
+    out = np.asarray(column).astype(object)
+    out[null] = None
+    return out
+
+
+def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    """The rigid and energy rungs at many points (the array path of sweeps and studies)."""
+    if ctx.rung not in ("rigid", "energy"):
+        raise EngineError(f"blow.joint has no array path for the rung {ctx.rung!r}")
+    if x["source"] == "clutch":
+        raise EngineError("blow.joint: the clutch source runs point by point")
+    s = _setup_array(x)
+    n = _points(x)
+    t0 = x["snug_torque"]
+    dead = s.refused.copy()
+    if s.target is not None:
+        dead |= np.broadcast_to(t0 >= s.target, n)  # "snug_torque must be below the target"
+    lo, hi = x.get("preload_min"), x.get("preload_max")
+    if s.per is not None and lo is not None and hi is not None:
+        dead |= np.broadcast_to(lo > hi, n)  # "preload_min must not exceed preload_max"
+    e, c, drive = s.energy, s.stiffness, s.drive
+    dead |= np.broadcast_to(e == 0.0, n)  # joint_energy_fraction divides by it: refused
+    with np.errstate(all="ignore"):
+        saturation = (drive + np.sqrt(drive**2 + 2 * e * c)) / x["breakaway_factor"]
+        rigid = np.sqrt(2.0 * e * c) + drive
+        series = blow_series_array(
+            e,
+            c,
+            s.rate,
+            t0,
+            ctx.rung,
+            breakaway=x["breakaway_factor"],
+            drive_torque=drive,
+            target_torque=s.target,
+            max_blows=x["max_blows"],
+        )
+        raw: dict[str, Any] = {
+            "tool_energy_used": e,
+            "tool_inertia_used": s.inertia,
+            "tool_speed": s.speed,
+            "tool_stiffness_used": c,
+            "joint_rate_used": s.rate,
+            "rigid_torque": rigid,
+            "peak_torque": series.peak,
+            "torque_after_first_blow": series.torque_after,
+            "final_torque": series.final_torque,
+            "saturation_torque": saturation,
+            "energy_supplied": e * series.blows,
+        }
+        if ctx.rung == "energy":
+            raw["nut_rotation"] = series.rotation
+            raw["joint_energy_fraction"] = series.work / e
+            raw["energy_into_joint"] = series.joint_work
+        if s.per is not None:
+            raw["preload_after_first_blow"] = series.torque_after / s.per
+            raw["final_preload"] = series.final_torque / s.per
+    any_dead = bool(dead.any())
+    values: dict[str, Any] = {}
+    for name, column in raw.items():
+        column = np.asarray(column, dtype=float)
+        if column.shape != n:
+            column = np.broadcast_to(column, n)
+        if any_dead:
+            column = np.where(dead, np.nan, column)
+        # a non-finite value is null in a single run's answer (the runner's rule)
+        values[name] = (
+            column if np.isfinite(column).all() else np.where(np.isfinite(column), column, np.nan)
+        )
+    reached = series.blows_to_target
+    values["blows_to_target"] = _nullable(reached, dead | (reached == 0))
+    checks: dict[str, np.ndarray] = {}
+    # a point the model refuses reports no check; if every point is refused, no check at all
+    reports = not bool(dead.all())
+    if s.per is not None and (lo is not None or hi is not None):
+        final = values["final_preload"]
+        verdict = np.full(n, "within", dtype=object)
+        if lo is not None:
+            verdict[np.broadcast_to(final < lo, n)] = "below"
+        if hi is not None:
+            verdict[np.broadcast_to(final > hi, n)] = "above"
+        verdict[dead] = None
+        values["preload_verdict"] = verdict
+        if reports:
+            checks["preload_window"] = np.where(dead, -1, verdict == "within").astype(np.int8)
+    if s.target is not None and reports:
+        checks["target_reached"] = np.where(dead, -1, reached > 0).astype(np.int8)
+    for o in _OUTPUTS:  # what a single run leaves null here: None (no scalar probe)
+        if not o.series and o.name not in values:
+            values[o.name] = None
+    notes = [
+        f"{ctx.rung}: evaluated on arrays, the same equations as a single run "
+        "(engine.blow.blow_series_array)",
+        *s.notes,
+    ]
+    return Result(
+        values=values, rung=ctx.rung, error_estimate=None, notes=notes, check_arrays=checks
+    )
+
+
 # --------------------------------------------------------------------------- examples
 
 _NUTRUNNER = {n: NUTRUNNER_DRIVE.examples[0][n] for n in _NR_NAMES}
@@ -928,6 +1297,30 @@ CLUTCH_M10: dict[str, Any] = {
     "preload_max": 30e3,
 }
 
+#: A raw blow (6 J from 0.004 kg·m² through 20 N·m/rad, restitution 0.8) on an M16×2 joint
+#: whose thread and bearing face are all given (no table lookup): about eight blows to
+#: 80 kN by the energy rung, nine simulated.
+ENERGY_M16: dict[str, Any] = {
+    "source": "energy",
+    "tool_energy": 6.0,
+    "tool_inertia": 0.004,
+    "tool_stiffness": 2e4,
+    "drive_torque": 5.0,
+    "struck_inertia": 3e-4,
+    "breakaway_factor": 1.1,
+    "restitution": 0.8,
+    "joint_rate_from": "joint",
+    "thread_diameter": 0.016,
+    "thread_pitch": 0.002,
+    "bearing_outer_diameter": 0.0225,
+    "hole_diameter": 0.0175,
+    "clamped_length": 0.05,
+    "snug_torque": 30.0,
+    "target_preload": 80e3,
+    "preload_min": 70e3,
+    "preload_max": 100e3,
+}
+
 BLOW = ModelSpec(
     name="blow.joint",
     title="Blow into a joint: torque and preload per blow, blows to target",
@@ -974,5 +1367,7 @@ BLOW = ModelSpec(
         ),
     ),
     compute=_compute,
-    examples=(NUTRUNNER_HARD, NUTRUNNER_SOFT, RARE_IMPACT_M16, CLUTCH_M10),
+    examples=(NUTRUNNER_HARD, NUTRUNNER_SOFT, RARE_IMPACT_M16, CLUTCH_M10, ENERGY_M16),
+    vectorized=_vectorized,
+    vector_rungs=("rigid", "energy"),
 )

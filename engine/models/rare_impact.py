@@ -15,6 +15,8 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
+import numpy as np
+
 from ..errors import EngineError
 from ..rare_impact import (
     G0,
@@ -24,9 +26,12 @@ from ..rare_impact import (
 )
 from ..rare_impact_cycle import (
     GEOMETRIES,
+    CycleArrays,
     CycleOutcome,
     closed_form_cycle,
+    closed_form_cycle_array,
     closed_form_errors,
+    closed_form_errors_array,
     release_speed_of,
     relock_friction,
     simulate_cycle,
@@ -116,8 +121,48 @@ def _outcome(x: Mapping[str, Any], ctx: RunContext) -> CycleOutcome:
     return closed_form_cycle(x)
 
 
-def _closed_form_estimate(x: Mapping[str, Any]) -> float | None:
-    """Worst estimated error over the closed form's outputs for these inputs."""
+def _is_array(x: Mapping[str, Any]) -> bool:
+    return any(isinstance(v, np.ndarray) for v in x.values())
+
+
+def _pymax(a: Any, b: Any) -> Any:
+    """``max(a, b)`` on arrays with Python's NaN semantics (b wins only if b > a)."""
+    return np.where(b > a, b, a)
+
+
+#: The last array evaluation of the closed form: (the inputs' values, pinned, and the
+#: outcome). A sweep asks the closed form's estimate and then its array path on the same
+#: inputs (the same dict of the same arrays): the cycle is computed once for both. A hit
+#: needs every value to be the *same object*; nothing mutates a sweep's arrays in place.
+_LAST_CYCLE: tuple[tuple[Any, ...], CycleArrays] | None = None
+
+
+def _cycle_array(x: Mapping[str, Any]) -> CycleArrays:
+    global _LAST_CYCLE
+    key = tuple(x.items())
+    last = _LAST_CYCLE
+    if (
+        last is not None
+        and len(last[0]) == len(key)
+        and all(a[0] == b[0] and a[1] is b[1] for a, b in zip(last[0], key, strict=True))
+    ):
+        return last[1]
+    o = closed_form_cycle_array(x)
+    _LAST_CYCLE = (key, o)
+    return o
+
+
+def _closed_form_estimate(x: Mapping[str, Any]) -> Any:
+    """Worst estimated error over the closed form's outputs for these inputs.
+
+    On arrays (a sweep or a study): an array, NaN where the scalar form gives None.
+    """
+    if _is_array(x):
+        groups = closed_form_errors_array(x, _cycle_array(x))
+        worst = groups["stage1"]
+        for group in ("engagement", "return", "relock"):
+            worst = _pymax(worst, groups[group])
+        return np.where(np.isfinite(worst), worst, np.nan)
     try:
         errs = closed_form_errors(x, closed_form_cycle(x))
     except (ArithmeticError, ValueError, EngineError):
@@ -140,7 +185,132 @@ def _output_error(x: Mapping[str, Any], o: CycleOutcome, ctx: RunContext) -> flo
 
 
 def _simulation_estimate(x: Mapping[str, Any]) -> float:
-    return _SIMULATION_ERROR
+    return _SIMULATION_ERROR  # a constant: broadcast over the points of a sweep
+
+
+#: The checks the scalar compute reports (design_checks), in its order.
+_CHECKS = (
+    "c3 > c1",
+    "λ1 < λ3",
+    "eq. 6 (engagement height)",
+    "return",
+    "relock",
+    "full engagement",
+)
+
+
+def _nullable(column: Any, dead: np.ndarray) -> np.ndarray:
+    """A column as the array contract wants it: NaN where null (float), None where refused (bool).
+
+    A float output the scalar form leaves null (inf: never reached) is NaN, as at a
+    refused point; a sweep tells the two apart by the other outputs (a refused point
+    has no finite one). A bool output has no NaN: an object column with None at the
+    refused points.
+    """
+    column = np.asarray(column)
+    if column.dtype == bool:
+        if not dead.any():
+            return column
+        out = column.astype(object)
+        out[dead] = None
+        return out
+    finite = np.isfinite(column)
+    return column if finite.all() else np.where(finite, column, np.nan)
+
+
+def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    """The closed form at many points (the array path of sweeps and studies).
+
+    Every scalar output :func:`_compute` gives on the closed-form rung, per point, with
+    the same equations in the same order (engine.rare_impact_cycle.closed_form_cycle_array);
+    NaN/None where the scalar form refuses the point or leaves the output null, and the
+    verdicts of :func:`design_checks` as ``check_arrays``.
+    """
+    if ctx.rung != "closed_form":
+        raise EngineError(f"impact.rare has no array path for the rung {ctx.rung!r}")
+    o = _cycle_array(x)
+    dead = o.refused
+    n = dead.shape
+    m2_total = x["half_coupling_mass"] + x["roller_count"] * x["roller_mass"] + x["striker_mass"]
+    c1, c3 = x["power_spring_rate"], x["return_spring_rate"]
+    lam1, lam3 = x["power_spring_preload"], x["return_spring_preload"]
+    h1, h2, g = x["release_travel"], x["engagement_height"], x["gravity"]
+    with np.errstate(all="ignore"):
+        b, k = striker_oscillation(c1, lam1, c3, lam3, h1, m2_total, g)
+        window = x["engagement_angle"] / o.release_speed
+        d = c3 - c1
+        w = 2.0 * m2_total * g
+        upper = np.where(
+            d > 0.0, np.maximum(w / np.where(d > 0.0, d, 1.0), 0.0), np.where(w >= 0.0, np.inf, 0.0)
+        )
+        upper = np.where(d < 0.0, np.inf, upper)
+        t_blow = o.spin_up_time + o.engagement_time
+        t_home = t_blow + o.home_time
+        blow, returns, relocks = o.blow, o.returns, o.relocks
+        c3_min = np.asarray(
+            min_return_spring_rate(x["striker_mass"] * np.ones(n), g, lam3, h2, x["jaw_height"]),
+            dtype=float,
+        )
+        margin = relock_margin(
+            x["auxiliary_spring_rate"],
+            x["auxiliary_spring_preload"],
+            c3,
+            lam3,
+            x["roller_friction"],
+        )
+        full = blow & (o.engagement_time <= window)
+        raw: dict[str, Any] = {
+            "release_speed": o.release_speed,
+            "spin_up_time": o.spin_up_time,
+            "release_radius": o.release_radius,
+            "engagement_acceleration": b,
+            "engagement_frequency": k,
+            "max_striker_travel": o.max_travel,
+            "engagement_time": o.engagement_time,
+            "engagement_window": window,
+            "engagement_start": o.spin_up_time,
+            "engagement_end": o.spin_up_time + window,
+            "engagement_margin": np.where(blow, (window - o.engagement_time) / window, np.nan),
+            "blow_time": t_blow,
+            "spring_height_limit": upper,
+            "min_return_spring_rate": c3_min,
+            "relock_margin": margin,
+            "return_time": np.where(returns, o.return_time, np.nan),
+            "striker_home_time": np.where(returns, t_home, np.nan),
+            "relock_time": np.where(relocks, o.relock_time, np.nan),
+            "cycle_time": np.where(relocks, t_home + o.relock_time, np.nan),
+        }
+    any_dead = bool(dead.any())
+    values: dict[str, Any] = {}
+    for name, column in raw.items():
+        column = np.asarray(column, dtype=float)
+        if column.shape != n:
+            column = np.broadcast_to(column, n)
+        if any_dead:
+            column = np.where(dead, np.nan, column)
+        values[name] = _nullable(column, dead)
+    values["full_engagement"] = _nullable(full, dead)
+    # null on the closed form (a single run says why in a note): None, not a column
+    values["half_coupling_release_speed"] = None
+    verdicts = (c3 > c1, lam1 < lam3, blow, returns, relocks, full)
+    checks = {}
+    # a point the model refuses reports no check; if every point is refused, no check at all
+    for name, ok in zip(_CHECKS if not dead.all() else (), verdicts, strict=False):
+        code = np.asarray(ok, dtype=np.int8)
+        checks[name] = np.where(dead, np.int8(-1), code) if any_dead else code
+
+    notes = [
+        "closed form: quasi-static spin-up, piecewise-linear stages 2 and 4 started from "
+        "the quasi-static release velocity, stage 3 with the half-coupling held; evaluated "
+        "on arrays, the same equations as a single run (engine.rare_impact_cycle)"
+    ]
+    return Result(
+        values=values,
+        rung=ctx.rung,
+        error_estimate=None,
+        notes=notes,
+        check_arrays=checks,
+    )
 
 
 def _geometry_note(x: Mapping[str, Any], w_m: float) -> str:
@@ -969,4 +1139,6 @@ RARE_IMPACT = ModelSpec(
     ),
     compute=_compute,
     examples=(REFERENCE_DESIGN, HORIZONTAL_DESIGN, PAPER_DESIGN),
+    vectorized=_vectorized,
+    vector_rungs=("closed_form",),
 )

@@ -315,6 +315,32 @@ def test_the_issue_stiff_design_finishes_or_is_refused_quickly():
         assert time.perf_counter() - start < 2.0
 
 
+def test_a_design_needing_millions_of_steps_runs_when_the_time_budget_allows():
+    # issue 21: "a stiff design needing 4.8e6 steps is refused because the budget counts
+    # steps (1e6) while the same kernel would finish in ~0.14 s". The step budget is now
+    # the time left over the kernel's measured cost per step: this design needs ~2.6e6
+    # steps (0.2 to 0.4 s on the 2-core CI machine) and runs inside the default 10 s
+    stiff = {**STIFF_POWER, "power_spring_rate": 2e7}
+    run(RARE_IMPACT, R, fidelity="simulation")  # the kernel loaded and its cost measured
+    start = time.perf_counter()
+    r = run(RARE_IMPACT, stiff, fidelity="simulation", max_steps=1_000_000)
+    elapsed = time.perf_counter() - start
+    assert r.rung == "simulation"
+    steps = int(next(n for n in r.notes if n.startswith("simulation:")).split("(")[1].split()[0])
+    assert steps > 2_000_000, "more steps than the old fixed budget of 1e6"
+    assert elapsed < 5.0
+    # the same design with a budget its steps do not fit in is declined up front, at once
+    # (a 422 that says why when the simulation is asked by name; under auto the declared
+    # fallback answers and the runner's note names the budget in steps)
+    start = time.perf_counter()
+    with pytest.raises(BudgetExceeded, match="its time budget leaves"):
+        run(RARE_IMPACT, stiff, fidelity="simulation", budget_s=0.02)
+    assert time.perf_counter() - start < 0.5
+    r = run(RARE_IMPACT, stiff, tolerance=1e-7, budget_s=0.02)
+    assert r.rung == "closed_form"
+    assert any("fallback 'closed_form'" in n and "(budget 1e+06)" not in n for n in r.notes)
+
+
 def test_stiff_springs_with_light_parts_fall_back_to_the_closed_form_at_once():
     start = time.perf_counter()
     r = run(RARE_IMPACT, STIFF, fidelity="simulation")
@@ -330,13 +356,17 @@ def test_auto_returns_its_best_with_a_note_when_no_rung_meets_the_tolerance():
     r = run(RARE_IMPACT, R, tolerance=1e-9)
     assert r.rung == "simulation"
     assert any("no rung meets tolerance" in n for n in r.notes)
-    # a step budget the simulation cannot meet: the closed form, not a 422
-    r = run(RARE_IMPACT, R, tolerance=1e-9, max_steps=1000)
+    # a time budget the simulation cannot meet (the steps it affords are the time left over
+    # the kernel's measured cost per step): the closed form, not a 422
+    r = run(RARE_IMPACT, R, tolerance=1e-9, budget_s=1e-5)
     assert r.rung == "closed_form" and r.error_estimate > 1e-6
     assert any("the tolerance 1e-09 is not met" in n for n in r.notes)
     # asked by name, the simulation's budget refusal stands (a 422 that says why)
-    with pytest.raises(BudgetExceeded):
-        run(RARE_IMPACT, R, fidelity="simulation", max_steps=1000)
+    with pytest.raises(BudgetExceeded, match="its time budget leaves"):
+        run(RARE_IMPACT, R, fidelity="simulation", budget_s=1e-5)
+    # without a deadline the step budget is the caller's
+    with pytest.raises(BudgetExceeded, match="budget 1000"):
+        run(RARE_IMPACT, R, fidelity="simulation", max_steps=1000, budget_s=None)
 
 
 def test_every_solve_is_bounded_by_steps_and_deadline():

@@ -1,0 +1,242 @@
+"""blow.joint's array path (rigid and energy rungs): a study is the single runs, point by point.
+
+:func:`engine.run` is the reference. The studies here are evaluated through
+:func:`engine.study.evaluate_chunk` with the point-by-point loop forbidden, so
+every point comes from the array path, and each is compared with its own run.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import engine.study as study_module
+from engine import EngineError, run, sweep
+from engine.blow import BlowProblem, blow_series, blow_series_array
+from engine.models.blow import BLOW, ENERGY_M16, NUTRUNNER_HARD, RARE_IMPACT_M16
+from engine.points import auto_index, rung_estimates
+from engine.runner import choose_rung
+from engine.study import CHECK_FAILED, CHECK_OK, CHECK_UNKNOWN, Study, Variable, evaluate_chunk
+from engine.study import plan as study_plan
+
+FLOATS = [o.name for o in BLOW.outputs if not o.series and o.kind == "float"]
+VARIED = ("tool_energy", "thread_friction", "clamped_length")
+
+
+@pytest.fixture
+def no_loop(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Fail if a study evaluates a point one by one (the array path must take them all)."""
+
+    def refuse(*args: object, **kwargs: object) -> None:
+        raise AssertionError("evaluate_chunk looped over a point instead of the array path")
+
+    monkeypatch.setattr(study_module, "run", refuse)
+
+
+def _point(columns: dict[str, np.ndarray], j: int) -> dict[str, float]:
+    return {k: float(v[j]) for k, v in columns.items()}
+
+
+def _same(got: float, want: object, where: str) -> None:
+    if want is None:
+        assert math.isnan(got), f"{where}: array {got!r}, single run null"
+    else:
+        assert isinstance(want, float | int), where
+        assert got == pytest.approx(want, rel=1e-9, abs=1e-300), where
+
+
+@pytest.mark.parametrize("rung", ["rigid", "energy"])
+def test_monte_carlo_study_matches_single_runs(rung: str, no_loop: None) -> None:
+    # three inputs at once, one of them the thread friction (the bolt is resolved once,
+    # the torque per preload per distinct friction) and one the clamp length (the joint's
+    # compliances per distinct length)
+    study = Study(
+        variables=(
+            Variable("tool_energy", "uniform", low=2.0, high=40.0),
+            Variable("thread_friction", "normal", mean=0.12, sd=0.02, low=0.06, high=0.2),
+            Variable("clamped_length", "triangular", low=0.02, mode=0.05, high=0.12),
+        ),
+        base={k: v for k, v in ENERGY_M16.items() if k not in VARIED},
+        samples=120,
+        seed=4,
+        fidelity=rung,
+    )
+    p = study_plan(BLOW, study)
+    outputs = [*FLOATS, "blows_to_target"]
+    chunk = evaluate_chunk(BLOW, study.base, p.columns, outputs, rung)
+    assert chunk.rungs == [rung] * p.n_points
+    verdicts = chunk.checks["preload_window"]
+    if rung == "energy":
+        assert {CHECK_OK, CHECK_FAILED} <= set(verdicts.tolist()), "the study should span both"
+    else:  # the rigid rung takes the joint to √(2EC) in one blow: far above the window
+        assert set(verdicts.tolist()) == {CHECK_FAILED}
+    blows = set()
+    for j in range(0, p.n_points, 3):
+        single = run(BLOW, {**study.base, **_point(p.columns, j)}, fidelity=rung)
+        for name in outputs:
+            _same(chunk.values[name][j], single.results.get(name), f"{rung} {j}: {name}")
+        blows.add(single.results["blows_to_target"])
+        for check in single.checks:
+            code = chunk.checks[check.name][j]
+            assert code == (CHECK_OK if check.ok else CHECK_FAILED), f"{j}: {check.name}"
+    if rung == "energy":
+        assert len(blows) > 3, "the energies should need different numbers of blows"
+
+
+def test_auto_chooses_the_rung_per_point_as_a_single_run_does() -> None:
+    # the energy rung's error grows with the struck inertia (J_s/J_t and the nut's kick):
+    # a spread of struck inertias and a tolerance between puts points on both rungs
+    n = 30
+    rng = np.random.default_rng(2)
+    columns = {
+        "struck_inertia": np.geomspace(1e-9, 1e-3, n)[rng.permutation(n)],
+        "tool_energy": rng.uniform(3.0, 30.0, n),
+    }
+    base = {**ENERGY_M16, "restitution": 1.0}
+    validated, _ = BLOW.validate(base)
+    x = {**validated, **columns}
+    estimates = rung_estimates(BLOW, x, n)
+    assert estimates is not None
+    energy = estimates[1]
+    assert energy is not None and np.isfinite(energy).all()
+    tol = float(np.median(energy))
+    index = auto_index(BLOW, estimates, n, tol)
+    assert {1, 2} <= set(index.tolist()), "the tolerance should split the points"
+    for j in range(n):
+        point, _ = BLOW.validate({**base, **_point(columns, j)})
+        for k, rung in enumerate(BLOW.rungs):
+            est = estimates[k]
+            assert est is not None
+            assert est[j] == pytest.approx(rung.estimate(point), rel=1e-12), (j, rung.name)
+        assert BLOW.rung_names[index[j]] == choose_rung(BLOW, point, "auto", tol)[0], j
+
+
+def test_extreme_inputs_are_nan_where_refused_never_garbage(no_loop: None) -> None:
+    # the blow's numeric inputs drawn across their declared ranges down to the subnormal
+    # where the range is "> 0": finite and equal to the single run, or NaN where the single
+    # run refuses the point or leaves the output null; never inf
+    names = (
+        "tool_energy",
+        "tool_inertia",
+        "tool_stiffness",
+        "drive_torque",
+        "struck_inertia",
+        "breakaway_factor",
+        "snug_torque",
+        "blow_efficiency",
+    )
+    rng = np.random.default_rng(9)
+    n = 80
+    columns: dict[str, np.ndarray] = {}
+    for name in names:
+        p = BLOW.param(name)
+        assert p.minimum is not None and p.maximum is not None
+        lo = math.nextafter(p.minimum, math.inf) if p.exclusive_minimum else p.minimum
+        hi = p.maximum
+        if lo > 0:
+            col = np.exp(rng.uniform(math.log(lo), math.log(hi), n))
+        else:
+            col = rng.uniform(lo, hi, n)
+        col[: n // 4] = np.where(rng.random(n // 4) < 0.5, lo, hi)
+        columns[name] = col
+    base = {k: v for k, v in ENERGY_M16.items() if k not in names}
+    base["joint_rate_from"], base["joint_rate"] = "number", 800.0
+    base["target_torque"] = 2e5
+    base.pop("target_preload")
+    for rung in ("rigid", "energy"):
+        chunk = evaluate_chunk(BLOW, base, columns, FLOATS, rung)
+        computed = refused = 0
+        for j in range(n):
+            for name in FLOATS:
+                assert not math.isinf(chunk.values[name][j]), f"{rung} {j}: {name} is inf"
+            try:
+                single = run(BLOW, {**base, **_point(columns, j)}, fidelity=rung)
+            except EngineError:
+                refused += 1
+                assert all(math.isnan(chunk.values[o][j]) for o in FLOATS), f"{rung} {j}"
+                assert all(c[j] == CHECK_UNKNOWN for c in chunk.checks.values()), f"{j}"
+                continue
+            computed += 1
+            for name in FLOATS:
+                _same(chunk.values[name][j], single.results.get(name), f"{rung} {j}: {name}")
+        # a snug torque above the target, an energy that underflows to 0 J, … are refused
+        assert computed >= n // 8 and refused >= n // 8, (computed, refused)
+
+
+def test_a_sweep_of_the_friction_resolves_the_bolt_per_value_and_matches_runs() -> None:
+    values = np.linspace(0.06, 0.2, 15).tolist()
+    swept = sweep(BLOW, ENERGY_M16, "thread_friction", values, fidelity="energy")
+    assert swept.rungs == ["energy"] * len(values)
+    for i in (0, 7, 14):
+        single = run(BLOW, {**ENERGY_M16, "thread_friction": values[i]}, fidelity="energy")
+        for name in ("final_preload", "joint_rate_used", "blows_to_target", "preload_verdict"):
+            want = single.results[name]
+            got = swept.results[name][i]
+            assert got == (pytest.approx(want, rel=1e-9) if isinstance(want, float) else want)
+
+
+def test_a_2000_point_rigid_sweep_runs_on_the_array_path() -> None:
+    values = np.linspace(100.0, 200.0, 2000).tolist()
+    swept = sweep(BLOW, NUTRUNNER_HARD, "motor_speed", values, fidelity="rigid")
+    assert swept.rungs == ["rigid"] * 2000
+    single = run(BLOW, {**NUTRUNNER_HARD, "motor_speed": values[1234]}, fidelity="rigid")
+    assert swept.results["rigid_torque"][1234] == pytest.approx(
+        single.results["rigid_torque"], rel=1e-12
+    )
+
+
+def test_blow_series_on_arrays_is_the_scalar_series() -> None:
+    # drive torque, breakaway and a target across the stopping rules (target, saturation,
+    # max_blows), each point against blow_series on its own BlowProblem
+    rng = np.random.default_rng(1)
+    n = 50
+    energy = rng.uniform(1.0, 200.0, n)
+    rate = rng.uniform(100.0, 5000.0, n)
+    drive = rng.uniform(-20.0, 20.0, n)
+    brk = rng.uniform(1.0, 2.0, n)
+    for method in ("rigid", "energy"):
+        s = blow_series_array(
+            energy, 2e4, rate, 40.0, method, breakaway=brk, drive_torque=drive,
+            target_torque=900.0, max_blows=12,
+        )  # fmt: skip
+        for j in range(n):
+            p = BlowProblem(1.0, 1e-3, 2e4, math.sqrt(2.0 * energy[j]), rate[j], brk[j], drive[j])
+            # the array series takes the energy as given; the problem's is 0.5·J·ω²
+            ref = blow_series(p, 40.0, method, target_torque=900.0, max_blows=12)
+            assert s.blows[j] == len(ref.torque_after), (method, j)
+            assert s.blows_to_target[j] == (ref.blows_to_target or 0), (method, j)
+            assert bool(s.saturated[j]) == ref.saturated, (method, j)
+            assert s.final_torque[j] == pytest.approx(ref.torque_after[-1], rel=1e-9)
+            assert s.peak[j] == pytest.approx(ref.peak[0], rel=1e-9)
+            assert s.joint_work[j] == pytest.approx(sum(ref.joint_work), rel=1e-9)
+
+
+@pytest.mark.parametrize(
+    ("example", "varied"),
+    [
+        (NUTRUNNER_HARD, {"motor_speed": (120.0, 200.0), "flywheel_mass": (10.0, 40.0),
+                          "coupling_slip_torque": (0.0, 50.0)}),
+        (RARE_IMPACT_M16, {"power_spring_rate": (3e4, 8e4), "cone_angle": (0.5, 1.0),
+                           "flywheel_inertia": (5e-4, 3e-3)}),
+    ],
+    ids=["nutrunner", "rare_impact"],
+)  # fmt: skip
+@pytest.mark.parametrize("rung", ["rigid", "energy"])
+def test_every_tool_source_on_arrays_matches_single_runs(
+    example: dict, varied: dict, rung: str, no_loop: None
+) -> None:
+    rng = np.random.default_rng(6)
+    n = 25
+    columns = {k: rng.uniform(lo, hi, n) for k, (lo, hi) in varied.items()}
+    outputs = [*FLOATS, "blows_to_target"]
+    chunk = evaluate_chunk(BLOW, example, columns, outputs, rung)
+    assert chunk.rungs == [rung] * n
+    for j in range(n):
+        single = run(BLOW, {**example, **_point(columns, j)}, fidelity=rung)
+        for name in outputs:
+            _same(chunk.values[name][j], single.results.get(name), f"{rung} {j}: {name}")
+        for check in single.checks:
+            code = chunk.checks[check.name][j]
+            assert code == (CHECK_OK if check.ok else CHECK_FAILED), f"{j}: {check.name}"

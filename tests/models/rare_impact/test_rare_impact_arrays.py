@@ -1,0 +1,200 @@
+"""impact.rare's array path: a study of the closed form is the single runs, point by point.
+
+The array path (``RARE_IMPACT.vectorized``) and the array-capable estimate of the
+closed form are an optimisation; :func:`engine.run` is the reference. Here a grid
+study, an ``auto`` study and a study at the extremes of the declared ranges are
+evaluated through :func:`engine.study.evaluate_chunk` with the point-by-point loop
+forbidden, and every point is compared with its own single run.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import engine.study as study_module
+from engine import EngineError, run, sweep
+from engine.models.rare_impact import RARE_IMPACT, REFERENCE_DESIGN
+from engine.points import auto_index, rung_estimates
+from engine.rare_impact_cycle import (
+    closed_form_cycle,
+    closed_form_cycle_array,
+    linear_reach,
+    linear_reach_array,
+)
+from engine.study import CHECK_FAILED, CHECK_OK, CHECK_UNKNOWN, Study, Variable, evaluate_chunk
+from engine.study import plan as study_plan
+
+OUTPUTS = [o.name for o in RARE_IMPACT.outputs if not o.series and o.kind == "float"]
+
+
+@pytest.fixture
+def no_loop(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Fail if a study evaluates a point one by one (the array path must take them all)."""
+
+    def refuse(*args: object, **kwargs: object) -> None:
+        raise AssertionError("evaluate_chunk looped over a point instead of the array path")
+
+    monkeypatch.setattr(study_module, "run", refuse)
+
+
+def _point(columns: dict[str, np.ndarray], j: int) -> dict[str, float]:
+    return {k: float(v[j]) for k, v in columns.items()}
+
+
+def _same(got: float, want: object, where: str) -> None:
+    if want is None:
+        assert math.isnan(got), f"{where}: array {got!r}, single run null"
+    else:
+        assert isinstance(want, float | int), where
+        assert got == pytest.approx(want, rel=1e-9, abs=1e-300), where
+
+
+def test_grid_map_of_full_engagement_matches_single_runs(no_loop: None) -> None:
+    # issue 22's validation: the grid map of the striker's full engagement matches single
+    # runs at sampled points; the grid spans edge blows and full engagement both
+    study = Study(
+        variables=(
+            Variable("power_spring_rate", "grid", low=2e4, high=9e4, num=8),
+            Variable(
+                "engagement_angle", "grid", low=math.radians(20.0), high=math.radians(150.0), num=6
+            ),
+            Variable("striker_mass", "grid", low=0.2, high=1.2, num=4),
+        ),
+        base={
+            k: v
+            for k, v in REFERENCE_DESIGN.items()
+            if k not in ("power_spring_rate", "engagement_angle", "striker_mass")
+        },
+        method="grid",
+        fidelity="closed_form",
+    )
+    p = study_plan(RARE_IMPACT, study)
+    chunk = evaluate_chunk(RARE_IMPACT, REFERENCE_DESIGN, p.columns, OUTPUTS, "closed_form")
+    engaged = chunk.checks["full engagement"]
+    assert {CHECK_OK, CHECK_FAILED} <= set(engaged.tolist()), "the grid should span both"
+    rng = np.random.default_rng(7)
+    for j in rng.choice(p.n_points, 40, replace=False).tolist():
+        single = run(
+            RARE_IMPACT, {**REFERENCE_DESIGN, **_point(p.columns, j)}, fidelity="closed_form"
+        )
+        for name in OUTPUTS:
+            _same(chunk.values[name][j], single.results.get(name), f"point {j}: {name}")
+        for check in single.checks:
+            code = engaged if check.name == "full engagement" else chunk.checks[check.name]
+            assert code[j] == (CHECK_OK if check.ok else CHECK_FAILED), f"{j}: {check.name}"
+        assert single.results["full_engagement"] == (engaged[j] == CHECK_OK)
+        assert chunk.rungs[j] == "closed_form"
+
+
+def test_auto_chooses_the_rung_per_point_as_a_single_run_does() -> None:
+    # a spread of flywheel inertias and motor torques: slow spin-ups make the closed form
+    # exact, fast ones do not; the tolerance splits the points between the rungs
+    rng = np.random.default_rng(3)
+    n = 40
+    columns = {
+        "flywheel_inertia": np.geomspace(2e-4, 0.2, n)[rng.permutation(n)],
+        "motor_torque": rng.uniform(1.0, 40.0, n),
+    }
+    validated, _ = RARE_IMPACT.validate(REFERENCE_DESIGN)
+    x = {**validated, **columns}
+    estimates = rung_estimates(RARE_IMPACT, x, n)
+    assert estimates is not None
+    closed = estimates[0]
+    assert closed is not None and np.isfinite(closed).all()
+    tol = float(np.median(closed))
+    index = auto_index(RARE_IMPACT, estimates, n, tol)
+    assert set(index.tolist()) == {0, 1}, "the tolerance should split the points"
+    for j in range(n):
+        point = {**REFERENCE_DESIGN, **_point(columns, j)}
+        # the estimate on arrays is the scalar estimate, point by point
+        assert closed[j] == pytest.approx(RARE_IMPACT.rungs[0].estimate(point), rel=1e-12)
+        want = engine_choice(point, tol)
+        assert RARE_IMPACT.rung_names[index[j]] == want, f"point {j}"
+    chunk = evaluate_chunk(RARE_IMPACT, REFERENCE_DESIGN, columns, ["release_speed"], tolerance=tol)
+    assert chunk.rungs == [RARE_IMPACT.rung_names[i] for i in index.tolist()]
+
+
+def engine_choice(point: dict[str, float], tol: float) -> str:
+    return run(RARE_IMPACT, point, fidelity="auto", tolerance=tol, outputs=["release_speed"]).rung
+
+
+def test_extreme_inputs_are_nan_where_refused_never_garbage(no_loop: None) -> None:
+    # every float input drawn at its declared extremes (log-uniform between), gravity of
+    # both signs: the array path gives finite numbers equal to the single run, or NaN
+    # where the single run refuses the point or leaves the output null; never inf
+    rng = np.random.default_rng(11)
+    n = 60
+    columns: dict[str, np.ndarray] = {}
+    for p in RARE_IMPACT.inputs:
+        if p.kind != "float" or p.minimum is None or p.maximum is None:
+            continue
+        lo = math.nextafter(p.minimum, math.inf) if p.exclusive_minimum else p.minimum
+        hi = math.nextafter(p.maximum, -math.inf) if p.exclusive_maximum else p.maximum
+        if lo > 0:  # down to the subnormal 5e-324 where the range is "> 0"
+            col = np.exp(rng.uniform(math.log(lo), math.log(hi), n))
+        else:
+            col = rng.uniform(lo, hi, n)
+        col[: n // 4] = np.where(rng.random(n // 4) < 0.5, lo, hi)  # exact extremes
+        columns[p.name] = col
+    chunk = evaluate_chunk(RARE_IMPACT, REFERENCE_DESIGN, columns, OUTPUTS, "closed_form")
+    refused = 0
+    for j in range(n):
+        for name in OUTPUTS:
+            assert not math.isinf(chunk.values[name][j]), f"point {j}: {name} is inf"
+        try:
+            single = run(
+                RARE_IMPACT, {**REFERENCE_DESIGN, **_point(columns, j)}, fidelity="closed_form"
+            )
+        except EngineError:
+            refused += 1
+            assert all(math.isnan(chunk.values[o][j]) for o in OUTPUTS), f"point {j}"
+            assert all(c[j] == CHECK_UNKNOWN for c in chunk.checks.values()), f"point {j}"
+            continue
+        for name in OUTPUTS:
+            _same(chunk.values[name][j], single.results.get(name), f"point {j}: {name}")
+    assert 0 < refused < n, "the extremes should hold refused and computed designs"
+
+
+def test_an_infeasible_design_is_nan_with_no_estimate() -> None:
+    # preloads that do not hold the half-coupling against gravity pointing away [002, eq. 1]
+    x = {**REFERENCE_DESIGN, "gravity": np.array([9.80665, -100.0, -9.80665])}
+    x["power_spring_preload"] = np.array([0.002, 1e-6, 0.002])
+    x["auxiliary_spring_preload"] = np.array([0.008, 1e-6, 0.008])
+    o = closed_form_cycle_array(x)
+    assert o.refused.tolist() == [False, True, False]
+    assert math.isnan(o.release_speed[1]) and math.isnan(o.engagement_time[1])
+    est = RARE_IMPACT.rungs[0].estimate(x)
+    assert math.isnan(est[1]) and np.isfinite(est[[0, 2]]).all()
+    with pytest.raises(EngineError):
+        closed_form_cycle({k: (v[1] if isinstance(v, np.ndarray) else v) for k, v in x.items()})
+
+
+def test_linear_reach_on_arrays_is_the_scalar_one() -> None:
+    rng = np.random.default_rng(5)
+    y0, v0 = rng.uniform(-1e-3, 1e-3, 200), rng.uniform(-2.0, 2.0, 200)
+    acc, w2 = rng.uniform(-400.0, 400.0, 200), np.exp(rng.uniform(0.0, 14.0, 200))
+    w2[::7] = 0.0  # the parabolic branch (a rate that underflows)
+    acc[::21] = 0.0
+    level = rng.uniform(-6e-3, 6e-3, 200)
+    t, v = linear_reach_array(y0, v0, acc, w2, level)
+    for j in range(200):
+        ts, vs = linear_reach(y0[j], v0[j], acc[j], w2[j], level[j])
+        assert (t[j] == ts) or t[j] == pytest.approx(ts, rel=1e-12), j
+        assert (math.isnan(v[j]) and math.isnan(vs)) or v[j] == pytest.approx(vs, rel=1e-9), j
+
+
+def test_a_2000_point_sweep_runs_on_the_array_path() -> None:
+    values = np.linspace(0.01, 0.05, 2000).tolist()
+    result = sweep(
+        RARE_IMPACT, REFERENCE_DESIGN, "flywheel_inertia", values, fidelity="closed_form"
+    )
+    assert result.rungs == ["closed_form"] * 2000
+    single = run(
+        RARE_IMPACT, {**REFERENCE_DESIGN, "flywheel_inertia": values[777]}, fidelity="closed_form"
+    )
+    assert result.results["spin_up_time"][777] == pytest.approx(
+        single.results["spin_up_time"], rel=1e-12
+    )
