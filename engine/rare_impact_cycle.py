@@ -195,10 +195,25 @@ def step_budget(deadline: float | None, max_steps: int) -> int:
     return int(min(left * TIME_SHARE / _STEP_COST[0], 1e15))
 
 
+#: Whether the kernel has run once in this process: its first call compiles it (or loads
+#: it from numba's cache), seconds that are not the cost of a step.
+_WARM = [False]
+#: A chunk's measured cost is capped here (10x the prior): a pause of the whole process
+#: (a collection, a busy machine) must not shrink every later budget.
+_STEP_COST_CAP = 1e-5
+
+
 def _measured(used: int, seconds: float) -> None:
-    """Fold one chunk's cost into :data:`_STEP_COST` (chunks long enough to time)."""
+    """Fold one chunk's cost into :data:`_STEP_COST` (chunks long enough to time).
+
+    The first call in the process is not counted (it includes the compilation), and one
+    chunk's figure is capped at :data:`_STEP_COST_CAP`.
+    """
+    if not _WARM[0]:
+        _WARM[0] = True
+        return
     if used >= 10_000 and seconds > 0.0:
-        _STEP_COST[0] = 0.7 * _STEP_COST[0] + 0.3 * seconds / used
+        _STEP_COST[0] = 0.7 * _STEP_COST[0] + 0.3 * min(seconds / used, _STEP_COST_CAP)
 
 
 # ---------------------------------------------------------------------------
