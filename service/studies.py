@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import csv
 import io
+import json
 import math
 import os
 import threading
@@ -30,6 +31,7 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
+import numpy as np
 from fastapi import APIRouter, HTTPException, Request, Response
 from fastapi.concurrency import run_in_threadpool
 from fastapi.responses import JSONResponse
@@ -100,7 +102,10 @@ class StudyIn(BaseModel):
     bins: int = Field(default=30, ge=1, le=200)
     feasible_when: str | None = Field(default=None, max_length=80)
     keep_points: bool = Field(
-        default=False, description="keep the raw points for GET /api/v1/jobs/{id}/points.csv"
+        default=False,
+        description=(
+            "keep the raw points for GET /api/v1/jobs/{id}/points.csv and /points.parquet"
+        ),
     )
 
 
@@ -158,6 +163,7 @@ class Job:
             body["result"] = self.run.summary
             if self.keep_points:
                 body["links"]["points_csv"] = f"{API_PREFIX}/jobs/{self.id}/points.csv"
+                body["links"]["points_parquet"] = f"{API_PREFIX}/jobs/{self.id}/points.parquet"
         return body
 
 
@@ -418,6 +424,15 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
     def cancel_job(job_id: str) -> dict[str, Any]:
         return studies.cancel(job_id).describe()
 
+    def finished(job_id: str) -> tuple[Job, StudyRun]:
+        job = studies.get(job_id)
+        if job.run is None or not job.keep_points:
+            raise HTTPException(
+                status_code=404,
+                detail="no points: the study is not done, or was run without keep_points",
+            )
+        return job, job.run
+
     @router.get(
         "/jobs/{job_id}/points.csv",
         summary="The raw points of a finished study (asked with keep_points)",
@@ -425,13 +440,8 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
         responses={**_404, 200: {"content": {"text/csv": {}}, "description": "the points"}},
     )
     def points(job_id: str) -> Response:
-        job = studies.get(job_id)
-        if job.run is None or not job.keep_points:
-            raise HTTPException(
-                status_code=404,
-                detail="no points: the study is not done, or was run without keep_points",
-            )
-        header, matrix = points_table(job.run.plan, job.run.merged)
+        job, run = finished(job_id)
+        header, matrix = points_table(run.plan, run.merged)
         out = io.StringIO()
         writer = csv.writer(out)
         writer.writerow(header)
@@ -443,7 +453,63 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
             headers={"content-disposition": f'attachment; filename="study-{job.id}.csv"'},
         )
 
+    @router.get(
+        "/jobs/{job_id}/points.parquet",
+        summary="The raw points of a finished study as Parquet (asked with keep_points)",
+        description=(
+            "The columns of points.csv (inputs, then outputs, SI), float64, null where a "
+            "point was refused; each field's `unit` metadata and the schema's `units` say "
+            "the units."
+        ),
+        response_class=Response,
+        responses={
+            **_404,
+            200: {"content": {PARQUET: {}}, "description": "the points"},
+        },
+    )
+    def points_parquet(job_id: str) -> Response:
+        job, run = finished(job_id)
+        return Response(
+            parquet_points(job.id, run),
+            media_type=PARQUET,
+            headers={"content-disposition": f'attachment; filename="study-{job.id}.parquet"'},
+        )
+
     return router
+
+
+#: The media type registered for Parquet (IANA, 2024).
+PARQUET = "application/vnd.apache.parquet"
+
+
+def parquet_points(job_id: str, run: StudyRun) -> bytes:
+    """The raw points of a study as a Parquet file: the CSV's columns, float64, SI units.
+
+    A point the model refused is null (the CSV leaves the cell empty); each field carries
+    its unit in its metadata (``unit``), and the schema names the model, the job and every
+    column's unit (``units``, JSON) so a reader that drops field metadata still has them.
+    """
+    import pyarrow as pa  # imported on first use: the service starts without it loaded
+    import pyarrow.parquet as pq
+
+    header, matrix = points_table(run.plan, run.merged)
+    units = {**run.summary.get("input_units", {}), **run.summary.get("units", {})}
+    fields, arrays = [], []
+    for i, name in enumerate(header):
+        col = np.ascontiguousarray(matrix[:, i], dtype=np.float64)
+        arrays.append(pa.array(col, type=pa.float64(), mask=~np.isfinite(col)))
+        fields.append(pa.field(name, pa.float64(), metadata={"unit": units.get(name, "")}))
+    schema = pa.schema(
+        fields,
+        metadata={
+            "model": run.summary.get("model", ""),
+            "job": job_id,
+            "units": json.dumps({name: units.get(name, "") for name in header}),
+        },
+    )
+    out = io.BytesIO()
+    pq.write_table(pa.Table.from_arrays(arrays, schema=schema), out)
+    return out.getvalue()
 
 
 __all__ = ["Studies", "StudySettings", "study_router", "to_study"]

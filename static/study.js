@@ -277,9 +277,11 @@ function render(j) {
     ...Object.entries(summary.refusals || {}).map(([k, v]) => el("li", { text: `${v} refused: ${k}` })));
   const blob = new Blob([JSON.stringify(summary, null, 1)], { type: "application/json" });
   $("#study-json").href = URL.createObjectURL(blob);
-  const csv = $("#study-csv");
-  csv.hidden = !j.links.points_csv;
-  if (j.links.points_csv) csv.href = j.links.points_csv.replace(/^\//, "");
+  for (const [id, link] of [["#study-csv", j.links.points_csv], ["#study-parquet", j.links.points_parquet]]) {
+    const a = $(id);
+    a.hidden = !link;
+    if (link) a.href = link.replace(/^\//, "");
+  }
   draw();
 }
 
