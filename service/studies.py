@@ -13,7 +13,8 @@ the service's interpreter.
 Budgets: ``STUDY_MAX_POINTS`` points and ``STUDY_BUDGET_S`` seconds per study;
 at most ``STUDY_PER_CLIENT`` unfinished studies per client address and
 ``STUDY_MAX_ACTIVE`` in all (503 with Retry-After beyond that). Finished jobs
-are kept for ``STUDY_KEEP_S`` seconds (at most 64).
+are kept for ``STUDY_KEEP_S`` seconds (at most 64). A value out of its range (a zero
+or negative count or time) stops the service at start-up, naming the variable.
 """
 
 from __future__ import annotations
@@ -65,6 +66,25 @@ class StudySettings:
         default_factory=lambda: os.environ.get("DASK_SCHEDULER") or None
     )
     dask_workers: int | None = field(default_factory=lambda: _int("DASK_WORKERS", 0) or None)
+
+    def __post_init__(self) -> None:
+        """Refuse a bound that makes no sense at start-up, naming the variable and its range
+        (as :class:`service.config.Settings` does), not at the first study."""
+        counts = (  # (variable, value, lowest allowed, what the lowest value means)
+            ("STUDY_MAX_POINTS", self.max_points, 1, ""),
+            ("STUDY_PER_CLIENT", self.per_client, 1, ""),
+            ("STUDY_MAX_ACTIVE", self.max_active, 1, ""),
+            ("STUDY_INPROCESS_POINTS", self.inprocess_points, 0, "0: every study on Dask"),
+            ("STUDY_KEEP_POINTS", self.keep_points_max, 0, "0: raw points never kept"),
+            ("DASK_WORKERS", self.dask_workers or 0, 0, "0: one worker per core"),
+        )
+        for name, value, lowest, meaning in counts:
+            if not value >= lowest:
+                note = f" ({meaning})" if meaning else ""
+                raise ValueError(f"{name} must be an integer >= {lowest}{note}, not {value!r}")
+        for name, seconds in (("STUDY_BUDGET_S", self.budget_s), ("STUDY_KEEP_S", self.keep_s)):
+            if not seconds > 0:  # NaN too
+                raise ValueError(f"{name} must be a number of seconds > 0, not {seconds!r}")
 
 
 Number = float | str
