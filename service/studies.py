@@ -46,7 +46,7 @@ from engine.study_exec import Cancelled, DaskExecutor, InProcess, StudyRun, run_
 from . import schemas
 from .api import _ERRORS, API_PREFIX
 from .config import _float, _int
-from .units import UnitError, to_si
+from .units import quantity
 
 _KEEP_JOBS = 64
 
@@ -322,25 +322,18 @@ class Studies:
             self._dask.close()
 
 
-def _si(spec: ModelSpec, name: str, value: Number | None, what: str) -> float | None:
+def _si(spec: ModelSpec, name: str, value: Number | None, part: str) -> float | None:
+    """A law's ``part`` (low, high, mean, sd, mode) in SI units: one reader with the sweep's
+    ends (:func:`units.quantity`)."""
     if value is None:
         return None
     try:
-        unit = spec.param(name).unit
+        param = spec.param(name)
     except KeyError:
         raise engine.InputOutOfRange(
             f"variables: {name!r} is not an input of {spec.name}", field="variables"
         ) from None
-    if isinstance(value, str):
-        try:
-            return to_si(value, unit)
-        except UnitError as exc:
-            raise engine.InputOutOfRange(
-                f"variables: {name}.{what}: {exc}", field="variables"
-            ) from None
-    if not math.isfinite(value):
-        raise engine.InputOutOfRange(f"variables: {name}.{what} must be finite", field="variables")
-    return float(value)
+    return quantity(param, value, part, field="variables", spread=part == "sd")
 
 
 def to_study(spec: ModelSpec, body: StudyIn) -> Study:
@@ -354,10 +347,7 @@ def to_study(spec: ModelSpec, body: StudyIn) -> Study:
                 f"base: unknown input {name!r} for model {spec.name}", field="base"
             ) from None
         if isinstance(value, str) and param.is_numeric:
-            try:
-                value = to_si(value, param.unit)
-            except UnitError as exc:
-                raise engine.InputOutOfRange(f"{name}: {exc}", field=name) from None
+            value = quantity(param, value, "base", field=name)
         base[name] = value
     variables = tuple(
         Variable(
