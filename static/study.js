@@ -266,13 +266,7 @@ function render(j) {
     );
   });
   $("#study-stats").replaceChildren(el("thead", {}, head), el("tbody", {}, ...rows));
-  $("#study-checks").replaceChildren(
-    ...Object.entries(summary.checks).map(([name, c]) =>
-      el("li", { class: c.failed ? "fail" : "ok" }, el("span", { class: "mark", text: c.failed ? "✗ " : "✓ " }),
-        `${name}: ${c.pass_fraction === null ? "not evaluated" : (100 * c.pass_fraction).toFixed(1) + " % pass"} (${c.failed} fail)`),
-    ),
-  );
-  if (!Object.keys(summary.checks).length) $("#study-checks").append(el("li", { text: "no checks reported (array path); see notes" }));
+  renderChecks();
   $("#study-notes").replaceChildren(...summary.notes.map((n) => el("li", { text: n })),
     ...Object.entries(summary.refusals || {}).map(([k, v]) => el("li", { text: `${v} refused: ${k}` })));
   const blob = new Blob([JSON.stringify(summary, null, 1)], { type: "application/json" });
@@ -283,6 +277,43 @@ function render(j) {
     if (link) a.href = link.replace(/^\//, "");
   }
   draw();
+}
+
+function passBar(fraction) {
+  const bar = el("span", { class: "pass-bar", "aria-hidden": "true" }, el("span"));
+  bar.firstChild.style.width = `${fraction === null ? 0 : Math.round(1000 * fraction) / 10}%`;
+  return bar;
+}
+
+// The share of designs passing each check, and all of them (the feasible share), as the
+// array path or the single runs reported them: refused designs are "not evaluated".
+function renderChecks() {
+  const list = $("#study-checks");
+  const pct = (f) => (f === null ? "not evaluated" : `${(100 * f).toFixed(1)} % pass`);
+  const item = (name, fraction, detail, passed, failed) => {
+    const cls = fraction === null ? "unknown" : failed === 0 ? "ok" : passed === 0 ? "fail" : "part";
+    const mark = { ok: "✓", fail: "✗", part: "◐", unknown: "–" }[cls];
+    return el("li", { class: cls }, el("span", { class: "mark", text: `${mark} ` }), passBar(fraction),
+      el("span", { text: `${name}: ${pct(fraction)} ` }), el("span", { class: "hint", text: detail }));
+  };
+  const rows = Object.entries(summary.checks).map(([name, c]) => {
+    const unknown = c.unknown ? `, ${c.unknown.toLocaleString("en")} not evaluated` : "";
+    return item(name.replaceAll("_", " "), c.pass_fraction,
+      `(${c.passed.toLocaleString("en")} pass, ${c.failed.toLocaleString("en")} fail${unknown})`, c.passed, c.failed);
+  });
+  const f = summary.feasible;
+  if (rows.length || f.fraction !== null) {
+    const every = f.criterion === "every reported check passes";
+    const ok = f.fraction === null ? 0 : Math.round(f.fraction * f.known);
+    const rest = summary.points - f.known;
+    rows.push(item(every ? "all checks" : `feasible (${f.criterion.replaceAll("_", " ")})`, f.fraction,
+      `(${ok.toLocaleString("en")} of ${f.known.toLocaleString("en")} designs${rest ? `, ${rest.toLocaleString("en")} not known` : ""})`,
+      ok, f.known - ok));
+    rows[rows.length - 1].classList.add("all");
+  }
+  if (!Object.keys(summary.checks).length)
+    rows.unshift(el("li", { class: "unknown", text: "no checks reported (the model's array path gives none); see notes" }));
+  list.replaceChildren(...rows);
 }
 
 function draw() {
