@@ -335,8 +335,10 @@ function axes(ctx, w, h, pad, xlo, xhi, ylo, yhi, xlabel, ylabel) {
   ctx.textAlign = "center";
   for (let i = 0; i <= 4; i++) {
     const x = pad.l + ((w - pad.l - pad.r) * i) / 4;
-    ctx.fillText(fmt(xlo + ((xhi - xlo) * i) / 4, 3), x, h - pad.b + 14);
+    ctx.textAlign = i === 4 ? "right" : "center"; // the last tick label stays on the canvas
+    ctx.fillText(fmt(xlo + ((xhi - xlo) * i) / 4, 3), i === 4 ? w - 2 : x, h - pad.b + 14);
   }
+  ctx.textAlign = "center";
   ctx.fillText(xlabel, (w + pad.l - pad.r) / 2, h - 4);
   ctx.textAlign = "right";
   for (let i = 0; i <= 4; i++) {
@@ -367,7 +369,7 @@ function drawHistogram(name) {
     xhi = Math.max(xhi, summary.outputs[r].mean);
   }
   if (xhi === xlo) xhi = xlo + 1;
-  const pad = { l: 56, r: 12, t: 12, b: 36 };
+  const pad = { l: 68, r: 12, t: 12, b: 36 }; // room for "0.00925" beside the rotated label
   const ymax = Math.max(...counts, 1);
   axes(ctx, w, h, pad, xlo, xhi, 0, ymax, name.replaceAll("_", " ") + unit, "designs");
   const X = (v) => pad.l + ((v - xlo) / (xhi - xlo)) * (w - pad.l - pad.r);
@@ -420,7 +422,7 @@ function drawMap(name) {
     values = values.map((row) => row.map((col) => col[k]));
     feasible = feasible.map((row) => row.map((col) => col[k]));
   }
-  const pad = { l: 56, r: 12, t: 12, b: 36 };
+  const pad = { l: 68, r: 12, t: 12, b: 36 }; // room for "0.00925" beside the rotated label
   if (axesNames.length === 1) {
     const xs = grid.axes[axesNames[0]];
     const ys = values.filter((v) => v !== null);
@@ -474,9 +476,12 @@ function drawMap(name) {
   }
   ctx.stroke();
   ctx.lineWidth = 1;
-  ctx.fillStyle = "#1d2630";
   ctx.textAlign = "left";
-  ctx.fillText(`${name.replaceAll("_", " ")}: ${fmt(lo, 3)} … ${fmt(hi, 3)}${axesNames.length === 3 ? ` (slice ${axesNames[2]} = ${fmt(grid.axes[axesNames[2]][Math.floor(grid.shape[2] / 2)], 3)})` : ""}`, pad.l + 4, pad.t + 12);
+  const legend = `${name.replaceAll("_", " ")}: ${fmt(lo, 3)} … ${fmt(hi, 3)}${axesNames.length === 3 ? ` (slice ${axesNames[2]} = ${fmt(grid.axes[axesNames[2]][Math.floor(grid.shape[2] / 2)], 3)})` : ""}`;
+  ctx.fillStyle = "rgba(255,255,255,0.85)"; // readable over the dark end of the colour ramp
+  ctx.fillRect(pad.l + 1, pad.t + 1, ctx.measureText(legend).width + 6, 16);
+  ctx.fillStyle = "#1d2630";
+  ctx.fillText(legend, pad.l + 4, pad.t + 12);
 }
 
 function drawSensitivity(name) {
