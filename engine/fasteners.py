@@ -31,6 +31,8 @@ import math
 import re
 from dataclasses import dataclass
 
+import numpy as np
+
 from . import threads as th
 from .errors import InputOutOfRange
 
@@ -1249,14 +1251,18 @@ def bearing_area(outer_diameter: float, inner_diameter: float) -> float:
     -----
     For a countersunk head the normal pressure on the cone equals the axial
     force over this projected annulus (the normal force and the cone area both
-    grow by 1/sin(α/2)), so the same relation holds with d_w = d_k.
+    grow by 1/sin(α/2)), so the same relation holds with d_w = d_k. Takes
+    numpy arrays too (element by element).
 
     Examples
     --------
     >>> round(bearing_area(0.01233, 0.009) * 1e6, 2)
     55.79
     """
-    return max(0.0, 0.25 * math.pi * (outer_diameter**2 - inner_diameter**2))
+    area = 0.25 * math.pi * (outer_diameter**2 - inner_diameter**2)
+    if isinstance(area, np.ndarray):
+        return np.maximum(area, 0.0)
+    return max(0.0, area)
 
 
 def surface_pressure(force: float, outer_diameter: float, inner_diameter: float) -> float:
@@ -1277,7 +1283,7 @@ def surface_pressure(force: float, outer_diameter: float, inner_diameter: float)
     Returns
     -------
     float
-        p, [Pa]; inf for a face without area
+        p, [Pa]; inf for a face without area (numpy arrays: element by element)
 
     Examples
     --------
@@ -1285,6 +1291,9 @@ def surface_pressure(force: float, outer_diameter: float, inner_diameter: float)
     179.3
     """
     area = bearing_area(outer_diameter, inner_diameter)
+    if isinstance(area, np.ndarray) or isinstance(force, np.ndarray):
+        has = np.asarray(area) > 0
+        return np.where(has, force / np.where(has, area, 1.0), np.inf)
     return force / area if area > 0 else math.inf
 
 
@@ -1430,7 +1439,8 @@ def thread_bending_factors(strength_ratio: float) -> tuple[float, float]:
     -------
     tuple of float
         (C2, C3), [-]; 0.897 where the relation does not apply; R_S is held
-        inside 0.4…2.2 (VDI 2230-1 R11 after Alexander)
+        inside 0.4…2.2 (VDI 2230-1 R11 after Alexander). An array of R_S gives
+        arrays, element by element.
 
     Examples
     --------
@@ -1440,6 +1450,14 @@ def thread_bending_factors(strength_ratio: float) -> tuple[float, float]:
     [0.897, 1.055]
     """
     r = strength_ratio
+    if isinstance(r, np.ndarray):
+        lo, hi = np.maximum(r, 0.4), np.minimum(r, 2.2)
+        c3_lo = 0.728 + 1.769 * lo - 2.896 * lo**2 + 1.296 * lo**3
+        c2_hi = 5.594 - 13.682 * hi + 14.107 * hi**2 - 6.057 * hi**3 + 0.9353 * hi**4
+        return (
+            np.where(r > 1.0, c2_hi, THREAD_BENDING_FACTOR),
+            np.where(r < 1.0, c3_lo, THREAD_BENDING_FACTOR),
+        )
     c2 = c3 = THREAD_BENDING_FACTOR
     if r < 1.0:
         x = max(r, 0.4)
@@ -1467,6 +1485,10 @@ class Stripping:
 
     @property
     def strip_force(self) -> float:
+        if isinstance(self.internal_strip_force, np.ndarray) or isinstance(
+            self.external_strip_force, np.ndarray
+        ):
+            return np.minimum(self.internal_strip_force, self.external_strip_force)
         return min(self.internal_strip_force, self.external_strip_force)
 
     @property
@@ -1531,7 +1553,8 @@ def thread_stripping(
     chamfers and run-out (the open BAT implementation of R11 adds 2 P for
     them). With C1 = C2 = C3 = 1 this is the plain shear-area rule of
     FED-STD-H28. R_S below 0.4 (a much softer internal thread) is held at 0.4,
-    where C3 = 1.055.
+    where C3 = 1.055. The numeric arguments may be numpy arrays (the forces and
+    lengths are then arrays, element by element).
 
     Examples
     --------
@@ -1554,7 +1577,9 @@ def thread_stripping(
         bolt_breaking_force=f_break,
         internal_strip_force=per_m_n * length,
         external_strip_force=per_m_s * length,
-        min_engagement_length=max(l_n, l_s),
+        min_engagement_length=np.maximum(l_n, l_s)
+        if isinstance(l_n, np.ndarray) or isinstance(l_s, np.ndarray)
+        else max(l_n, l_s),
         min_engagement_internal=l_n,
         min_engagement_external=l_s,
         strength_ratio=ratio,

@@ -155,6 +155,8 @@ def vector(
 
     An output the array version does not give is a NaN column (not in ``computed``);
     if the scalar model gives it for this rung, the answer is None (the caller loops).
+    An output the array version sets to None is one it knows the scalar model does not
+    give for these inputs (a NaN column, not in ``computed``, and no scalar probe).
     ``dtype=None`` keeps each column's own type (integers stay integers).
     """
     if spec.vectorized is None or rung not in spec.vector_rungs:
@@ -168,12 +170,13 @@ def vector(
     except _ESTIMATE_FAILS:
         # an array path written for one varied input may not broadcast several: loop
         return None
+    absent = {name for name, value in result.values.items() if value is None}
     missing = [name for name in outputs if name not in result.values]
     if missing and scalar_gives(spec, x, ctx, missing):
         return None  # an output the array version lacks but this rung gives: loop
     values: dict[str, np.ndarray] = {}
     for name in outputs:
-        if name not in result.values:
+        if name not in result.values or name in absent:
             values[name] = np.full(n, np.nan)  # not computed by this rung
             continue
         try:
@@ -181,7 +184,7 @@ def vector(
         except (TypeError, ValueError):
             return None
         values[name] = column.copy()
-    computed = frozenset(name for name in outputs if name in result.values)
+    computed = frozenset(name for name in outputs if name in result.values and name not in absent)
     checks: dict[str, np.ndarray] = {}
     for name, verdict in result.check_arrays.items():
         arr = np.asarray(verdict)

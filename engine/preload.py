@@ -758,7 +758,8 @@ def equivalent_shank_diameter(lengths: Sequence[float], diameters: Sequence[floa
 
     Notes
     -----
-    [004, eq. 4] (equal axial compliance Σ l_i / (E A_i)).
+    [004, eq. 4] (equal axial compliance Σ l_i / (E A_i)). Lengths and diameters may
+    be numpy arrays (one design per element); a zero length adds nothing.
 
     Examples
     --------
@@ -767,7 +768,7 @@ def equivalent_shank_diameter(lengths: Sequence[float], diameters: Sequence[floa
     """
     total = sum(lengths)
     weighted = sum(li / di**2 for li, di in zip(lengths, diameters, strict=True))
-    return math.sqrt(total / weighted)
+    return (total / weighted) ** 0.5
 
 
 def axial_compliance(
@@ -797,7 +798,8 @@ def axial_compliance(
     [004, eq. 4, 7, 9]. The review adds 1/3 of the nut height, at the minor
     diameter, to the loaded length for the thread's own deformation; the
     caller passes it as one of the sections. VDI 2230 adds further terms for
-    the head and the engaged thread, which the review does not.
+    the head and the engaged thread, which the review does not. Lengths and
+    diameters may be numpy arrays (one design per element); a zero length adds nothing.
 
     Examples
     --------
@@ -974,6 +976,142 @@ class PreloadHistogram:
     std: float
 
 
+def friction_scatter_preloads(
+    torque: float,
+    pitch: float,
+    pitch_diameter: float,
+    diameter: float,
+    thread_friction_range: tuple[float, float],
+    bearing_friction_range: tuple[float, float],
+    bearing_outer_diameter: float,
+    hole_diameter: float,
+    formula: str = "vdi2230",
+    grid: int = 64,
+) -> np.ndarray:
+    r"""Preload at one wrench torque on a midpoint grid of the two friction coefficients.
+
+    .. math::
+        F_0(\mu_{G,j}, \mu_{K,i}) = \frac{M}{k_G(\mu_{G,j}) + k_K(\mu_{K,i})},
+        \qquad \mu_j = \mu_{min} + (\mu_{max} - \mu_{min})\frac{j + 1/2}{n}
+
+    Parameters
+    ----------
+    torque : float
+        Wrench torque M, the same for every bolt, [N*m]
+    pitch : float
+        P, [m]
+    pitch_diameter : float
+        d2, [m]
+    diameter : float
+        d, [m]
+    thread_friction_range : tuple of float
+        (μ_G,min, μ_G,max), [-]
+    bearing_friction_range : tuple of float
+        (μ_K,min, μ_K,max), [-]
+    bearing_outer_diameter : float
+        D_f, [m]
+    hole_diameter : float
+        d_h, [m]
+    formula : str
+        Torque formula, see :func:`tightening_torque_per_preload`
+    grid : int
+        Points per friction coefficient, [-]
+
+    Returns
+    -------
+    numpy.ndarray
+        F_0, shape (grid, grid): row i is μ_K,i, column j is μ_G,j, [N]
+
+    Notes
+    -----
+    [004, fig. 5] and eq. 13: the torque is linear in the preload, with a thread part
+    depending on μ_G only and a bearing part on μ_K only, so the grid needs each part on
+    ``grid`` values, not ``grid²``. μ_G and μ_K are independent and uniform over their
+    ranges (the midpoint rule).
+
+    Examples
+    --------
+    >>> f = friction_scatter_preloads(80.0, 0.0023091, 0.0143753, 0.015875,
+    ...     (0.10, 0.20), (0.10, 0.20), 0.0226, 0.0175)
+    >>> f.shape, round(float(f.min()) / 1e3, 1), round(float(f.max()) / 1e3, 1)
+    ((64, 64), 19.9, 36.0)
+    """
+    g_lo, g_hi = thread_friction_range
+    k_lo, k_hi = bearing_friction_range
+    u = (np.arange(grid) + 0.5) / grid
+    k_thread, _ = tightening_torque_per_preload(
+        pitch,
+        pitch_diameter,
+        diameter,
+        g_lo + (g_hi - g_lo) * u,  # type: ignore[arg-type]
+        0.0,
+        bearing_outer_diameter,
+        hole_diameter,
+        formula,
+    )
+    _, k_bearing = tightening_torque_per_preload(
+        pitch,
+        pitch_diameter,
+        diameter,
+        0.0,
+        k_lo + (k_hi - k_lo) * u,  # type: ignore[arg-type]
+        bearing_outer_diameter,
+        hole_diameter,
+        formula,
+    )
+    per_newton = np.asarray(k_thread)[None, :] + np.asarray(k_bearing)[:, None]
+    return torque / per_newton
+
+
+def preload_histogram(
+    forces: np.ndarray, bins: int = 10, sample_size: int = 38
+) -> PreloadHistogram:
+    r"""Equal-width histogram of equally likely preloads, scaled to a sample of bolts.
+
+    .. math::
+        n_k = N\,\frac{\#\{F_0 \in \text{bin}_k\}}{\#\{F_0\}}
+
+    Parameters
+    ----------
+    forces : numpy.ndarray
+        Equally likely preloads (e.g. :func:`friction_scatter_preloads`), [N]
+    bins : int
+        Number of equal-width preload bins, [-]
+    sample_size : int
+        Number of bolts N the counts are scaled to (38 as in [004, fig. 5]), [-]
+
+    Returns
+    -------
+    PreloadHistogram
+        Bin centres [N], expected counts per bin, min, max, mean and standard deviation [N].
+
+    Notes
+    -----
+    [004, fig. 5] draws such a histogram for 38 bolts. A band narrower than 1e-9 of
+    its top is widened to ±0.5 % so the bins have a width.
+
+    Examples
+    --------
+    >>> h = preload_histogram(np.array([1.0, 2.0, 2.0, 3.0]), bins=2, sample_size=8)
+    >>> h.counts.tolist(), h.bin_centres.tolist()
+    ([2.0, 6.0], [1.5, 2.5])
+    """
+    forces = np.ravel(forces)
+    lo, hi = float(forces.min()), float(forces.max())
+    if hi - lo <= 1e-9 * max(hi, 1e-300):
+        half = max(0.005 * hi, 1e-12)
+        lo, hi = lo - half, hi + half
+    counts, edges = np.histogram(forces, bins=bins, range=(lo, hi))
+    return PreloadHistogram(
+        bin_centres=0.5 * (edges[:-1] + edges[1:]),
+        counts=counts * (sample_size / forces.size),
+        minimum=float(forces.min()),
+        maximum=float(forces.max()),
+        mean=float(forces.mean()),
+        std=float(forces.std()),
+    )
+
+
 def friction_scatter_histogram(
     torque: float,
     pitch: float,
@@ -1031,7 +1169,8 @@ def friction_scatter_histogram(
     [004, fig. 5] (Thum and Debus: 38 bolts 5/8" at 80 N·m) shows the spread
     this models; the review reads it as ±30 %. μ_G and μ_K are taken as
     independent and uniform over their ranges and integrated on a midpoint
-    grid (deterministic, so the same request gives the same histogram).
+    grid (deterministic, so the same request gives the same histogram):
+    :func:`friction_scatter_preloads` binned by :func:`preload_histogram`.
 
     Examples
     --------
@@ -1040,31 +1179,16 @@ def friction_scatter_histogram(
     >>> round(h.minimum / 1e3, 1), round(h.maximum / 1e3, 1), round(float(h.counts.sum()), 6)
     (19.9, 36.0, 38.0)
     """
-    g_lo, g_hi = thread_friction_range
-    k_lo, k_hi = bearing_friction_range
-    u = (np.arange(grid) + 0.5) / grid
-    mu_g, mu_k = np.meshgrid(g_lo + (g_hi - g_lo) * u, k_lo + (k_hi - k_lo) * u)
-    k_thread, k_bearing = tightening_torque_per_preload(
+    forces = friction_scatter_preloads(
+        torque,
         pitch,
         pitch_diameter,
         diameter,
-        mu_g,  # type: ignore[arg-type]
-        mu_k,  # type: ignore[arg-type]
+        thread_friction_range,
+        bearing_friction_range,
         bearing_outer_diameter,
         hole_diameter,
         formula,
+        grid,
     )
-    forces = np.ravel(torque / (np.asarray(k_thread) + np.asarray(k_bearing)))
-    lo, hi = float(forces.min()), float(forces.max())
-    if hi - lo <= 1e-9 * max(hi, 1e-300):
-        half = max(0.005 * hi, 1e-12)
-        lo, hi = lo - half, hi + half
-    counts, edges = np.histogram(forces, bins=bins, range=(lo, hi))
-    return PreloadHistogram(
-        bin_centres=0.5 * (edges[:-1] + edges[1:]),
-        counts=counts * (sample_size / forces.size),
-        minimum=float(forces.min()),
-        maximum=float(forces.max()),
-        mean=float(forces.mean()),
-        std=float(forces.std()),
-    )
+    return preload_histogram(forces, bins, sample_size)

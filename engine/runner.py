@@ -413,7 +413,11 @@ def sweep(
         if vec is None:
             loop |= sel
             continue
+        # a point the array path refuses is NaN in every float output it computed (the
+        # study's rule); one NaN beside finite outputs is a null the scalar path gives too
         bad = np.zeros(m, dtype=bool)
+        some_finite = np.zeros(m, dtype=bool)
+        any_float = False
         for name in scalar_names:
             if name not in vec.computed:
                 continue
@@ -422,7 +426,8 @@ def sweep(
                 computed.append(name)
             if column.dtype.kind == "f":
                 finite = np.isfinite(column)
-                bad |= ~finite
+                some_finite |= finite
+                any_float = True
             else:
                 finite = None
             if m == n and finite is not None and finite.all():
@@ -435,6 +440,8 @@ def sweep(
             if finite is not None:
                 part[~finite] = None
             obj[sel] = part
+        if any_float:
+            bad = ~some_finite
         est = estimates.get(k)
         part_rungs = np.full(m, rung_name, dtype=object)
         part_rungs[bad] = None

@@ -66,6 +66,7 @@ __all__ = [
     "stack_force",
     "stress_correction_factor",
     "tensile_strength",
+    "tensile_strength_array",
     "wahl_factor",
 ]
 
@@ -626,6 +627,46 @@ def tensile_strength(material: str, wire_diameter: float) -> float:
         if d_mm <= upper * (1 + 1e-9):
             return rm * 1e6
     return m.strength[-1][1] * 1e6  # pragma: no cover - guarded above
+
+
+def tensile_strength_array(material: str, wire_diameter: FloatArray) -> FloatArray:
+    r"""Minimum tensile strength R_m(d) on arrays: NaN where d is outside the table.
+
+    .. math::
+        R_m = R_{m,min}(d_j), \quad d_j = \min\{d_k \ge d\}
+
+    Parameters
+    ----------
+    material : str
+        Material name, as in :func:`tensile_strength`, [-]
+    wire_diameter : float or array
+        Wire diameter d, [m]
+
+    Returns
+    -------
+    strength : float or array
+        Minimum R_m of the row covering each d, NaN where :func:`tensile_strength`
+        refuses d (outside the table), [Pa]
+
+    Notes
+    -----
+    The same rows and the same comparisons as :func:`tensile_strength` (the row
+    is the first whose upper diameter times 1 + 1e-9 is at or above d in mm), by
+    a binary search, so a design study looks a whole column up at once.
+
+    Examples
+    --------
+    >>> tensile_strength_array("EN10270-1-DH", np.array([0.004, 0.0042, 0.03])) / 1e6
+    array([1740., 1690.,   nan])
+    """
+    m = _material(material)
+    lo, hi = m.diameter_range
+    d_mm = np.asarray(wire_diameter, dtype=float) * 1e3
+    uppers = np.array([upper * (1 + 1e-9) for upper, _ in m.strength])
+    strengths = np.array([rm * 1e6 for _, rm in m.strength])
+    row = np.minimum(np.searchsorted(uppers, d_mm, side="left"), len(uppers) - 1)
+    inside = (lo * 1e3 * (1 - 1e-9) - 1.0 <= d_mm) & (d_mm <= hi * 1e3 * (1 + 1e-9))
+    return _out(np.where(inside, strengths[row], np.nan))
 
 
 def permissible_shear_stress(material: str, wire_diameter: float) -> float:

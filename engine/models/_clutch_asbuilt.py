@@ -400,7 +400,10 @@ class Spring:
         if self.kind == "disc":
             return x["disc_yield_strength"]
         if self.material is not None:
-            return sp.permissible_shear_stress(self.material.name, x["spring_wire_diameter"])
+            wire = x["spring_wire_diameter"]
+            if np.ndim(wire) > 0:  # a varied wire: NaN outside the table (refused there)
+                return 0.5 * np.asarray(sp.tensile_strength_array(self.material.name, wire))
+            return sp.permissible_shear_stress(self.material.name, wire)
         return x["allowable_shear_stress"]
 
 
@@ -452,8 +455,17 @@ def lift_of(x: Mapping[str, Any], deflection: Any = None) -> Any:
     return x["spring_deflection"] if deflection is None else deflection
 
 
-def characteristic(x: Mapping[str, Any], spring: Spring, deflection: Any = None) -> dict[str, Any]:
-    """Torque, spring force and stress against lift; arrays with the lift on the last axis."""
+def characteristic(
+    x: Mapping[str, Any], spring: Spring, deflection: Any = None, curves: bool = False
+) -> dict[str, Any]:
+    """Torque, spring force and stress against lift; arrays with the lift on the last axis.
+
+    The curves themselves (keys ``_lift``, ``_torque``, ``_force``, ``_stress``) only with
+    ``curves=True``. A helical spring's stress is evaluated only where it is read (at the
+    peak torque and at the largest force, where it is largest: it is proportional to the
+    force), the same floats the whole curve would hold there.
+    """
+    flat_spring = spring
     preload = np.asarray(x["spring_deflection"] if deflection is None else deflection, float)
     h, d, alpha = np.broadcast_arrays(
         np.asarray(lift_of(x, deflection), float),
@@ -464,20 +476,25 @@ def characteristic(x: Mapping[str, Any], spring: Spring, deflection: Any = None)
     u = np.linspace(0.0, 1.0, POINTS)
     v = np.linspace(0.0, 1.0, POINTS)[1:]
     beta_rim = a + v * (math.pi / 2.0 - a)
+    # A helical spring's force rises with the lift and the flank's push is constant, so
+    # on the flank the torque rises to the rim: the grid's peak and maxima lie from the
+    # rim on. Without the curves, only those points are evaluated (the same floats).
+    first = POINTS - 1 if spring.kind == "helical" and not curves else 0
     lift = np.concatenate(
-        [np.broadcast_to(u * h, np.broadcast_shapes(h.shape, u.shape)),
+        [np.broadcast_to(u[first:] * h, np.broadcast_shapes(h.shape, u[first:].shape)),
          h + r * (np.sin(beta_rim) - np.sin(a))],
         axis=-1,
     )  # fmt: skip
     beta = np.concatenate(
-        [np.broadcast_to(a, np.broadcast_shapes(a.shape, u.shape)), beta_rim], axis=-1
+        [np.broadcast_to(a, np.broadcast_shapes(a.shape, u[first:].shape)), beta_rim], axis=-1
     )
     # a swept input (an array) gets a trailing axis so it broadcasts against the lift
     x = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
     spring = Spring(x)
     total = preload[..., None] + lift
     force = spring.force(total)
-    stress = spring.stress(total)
+    helical = spring.kind == "helical"
+    stress: Any = None if helical and not curves else spring.stress(total)
     push = combined_push_factor(beta, x["flank_friction"], x["driving_groove_angle"])
     # x's arrays already carry the trailing (lift) axis
     torque = np.asarray(_sharing(x)) * np.asarray(x["ball_circle_diameter"]) * force / (2.0 * push)
@@ -486,22 +503,29 @@ def characteristic(x: Mapping[str, Any], spring: Spring, deflection: Any = None)
     def at(arr: Any, idx: Any) -> Any:
         return np.take_along_axis(np.broadcast_to(arr, torque.shape), idx, axis=-1)[..., 0]
 
-    rim = np.full_like(peak, POINTS - 1)
+    rim = np.full_like(peak, POINTS - 1 - first)
+    forces = np.broadcast_to(force, torque.shape)
     out: dict[str, Any] = {
         "peak_torque": at(torque, peak),
         "lift_at_peak": at(lift, peak),
         "torque_at_rim": at(torque, rim),
         "total_lift": lift[..., -1],
-        "flank_lift": lift[..., POINTS - 1],
+        "flank_lift": lift[..., POINTS - 1 - first],
         "spring_force_at_peak": at(force, peak),
-        "spring_stress_at_peak": at(stress, peak),
-        "spring_force_max": np.max(np.broadcast_to(force, torque.shape), axis=-1),
-        "spring_stress_max": np.max(np.broadcast_to(stress, torque.shape), axis=-1),
-        "_lift": lift,
-        "_torque": torque,
-        "_force": np.broadcast_to(force, torque.shape),
-        "_stress": np.broadcast_to(stress, torque.shape),
+        "spring_force_max": np.max(forces, axis=-1),
     }
+    if helical:
+        top = np.argmax(forces, axis=-1)[..., None]
+        out["spring_stress_at_peak"] = flat_spring.stress(at(total, peak))
+        out["spring_stress_max"] = flat_spring.stress(at(total, top))
+    else:
+        out["spring_stress_at_peak"] = at(stress, peak)
+        out["spring_stress_max"] = np.max(np.broadcast_to(stress, torque.shape), axis=-1)
+    if curves:
+        out["_lift"] = lift
+        out["_torque"] = torque
+        out["_force"] = forces
+        out["_stress"] = np.broadcast_to(stress, torque.shape)
     if x["face_friction"] is not None:
         springs = x["ball_count"] if x["spring_arrangement"] == "per_ball" else 1.0
         residual = residual_torque(
@@ -514,6 +538,45 @@ def characteristic(x: Mapping[str, Any], spring: Spring, deflection: Any = None)
     return out
 
 
+#: Outputs only the whole characteristic gives (its peak); :func:`end_values` gives the rest.
+PEAK_OUTPUTS = (
+    "peak_torque",
+    "lift_at_peak",
+    "torque_at_rim",
+    "spring_force_at_peak",
+    "spring_stress_at_peak",
+)
+
+
+def end_values(x: Mapping[str, Any], spring: Spring) -> dict[str, Any]:
+    """The characteristic's values at its ends, helical springs only (no 81-point grid).
+
+    A helical spring's force and stress rise with its deflection and the lift rises
+    along the grid, so their maxima are at the last point (riding on the face): the
+    same floats :func:`characteristic` takes from its last column, for a study that
+    asks for none of :data:`PEAK_OUTPUTS`.
+    """
+    h = np.asarray(lift_of(x), float)
+    a = np.asarray(x["groove_angle"], float)
+    r = np.asarray(x["ball_diameter"], float) / 2.0
+    beta_end = a + 1.0 * (math.pi / 2.0 - a)  # the characteristic's last rim angle
+    total_lift = h + r * (np.sin(beta_end) - np.sin(a))
+    total = np.asarray(x["spring_deflection"], float) + total_lift
+    force = spring.force(total)
+    out: dict[str, Any] = {
+        "total_lift": total_lift,
+        "flank_lift": 1.0 * h,
+        "spring_force_max": force,
+        "spring_stress_max": spring.stress(total),
+    }
+    if x["face_friction"] is not None:
+        springs = x["ball_count"] if x["spring_arrangement"] == "per_ball" else 1.0
+        out["residual_torque"] = residual_torque(
+            force, x["ball_circle_diameter"], x["face_friction"], springs
+        )
+    return out
+
+
 def margin(x: Mapping[str, Any]) -> Any:
     """Self-locking margin α − atan f, the smaller over the inclined flanks."""
     rho = np.arctan(x["flank_friction"])
@@ -523,10 +586,19 @@ def margin(x: Mapping[str, Any]) -> Any:
     return m
 
 
-def extra_values(x: Mapping[str, Any], spring: Spring, limit: Any) -> dict[str, Any]:
-    """Every as-built scalar of clutch.ball (arrays when one input is an array)."""
-    c = characteristic(x, spring)
-    values = {k: v for k, v in c.items() if not k.startswith("_")}
+def extra_values(
+    x: Mapping[str, Any], spring: Spring, limit: Any, peak: bool = True
+) -> dict[str, Any]:
+    """Every as-built scalar of clutch.ball (arrays when inputs are arrays).
+
+    ``peak=False`` (helical springs): all but :data:`PEAK_OUTPUTS`, without the
+    81-point characteristic (:func:`end_values`).
+    """
+    if peak or spring.kind != "helical":
+        c = characteristic(x, spring)
+        values = {k: v for k, v in c.items() if not k.startswith("_")}
+    else:
+        values = end_values(x, spring)
     values["self_locking_margin"] = margin(x)
     values["friction_sensitivity"] = friction_sensitivity(
         limit, x["groove_angle"], x["flank_friction"], x["driving_groove_angle"]
@@ -538,10 +610,15 @@ def extra_values(x: Mapping[str, Any], spring: Spring, limit: Any) -> dict[str, 
             values["natural_frequency"] = sp.helical_natural_frequency(
                 d, dm, n, spring.shear_modulus, spring.material.density
             )
-            if np.ndim(d) == 0:
-                values["tensile_strength"] = sp.tensile_strength(spring.material.name, d)
-        scalar = all(np.ndim(a) == 0 for a in (x["spring_free_length"], dm, values["peak_torque"]))
-        if x["spring_free_length"] is not None and scalar:
+            values["tensile_strength"] = (
+                sp.tensile_strength(spring.material.name, d)
+                if np.ndim(d) == 0
+                else sp.tensile_strength_array(spring.material.name, d)
+            )
+        scalar = all(
+            np.ndim(a) == 0 for a in (x["spring_free_length"], dm, values["spring_force_max"])
+        )
+        if x["spring_free_length"] is not None:
             e_mod = (
                 spring.material.elastic_modulus if spring.material else 2.6 * spring.shear_modulus
             )
@@ -552,8 +629,12 @@ def extra_values(x: Mapping[str, Any], spring: Spring, limit: Any) -> dict[str, 
                 spring.shear_modulus,
                 e_mod,
             )
-            # inf: the spring cannot buckle; said as null (and in the check), never inf
-            values["buckling_deflection"] = None if math.isinf(float(s_k)) else s_k
+            # inf: the spring cannot buckle; said as null (and in the check), never inf;
+            # on arrays NaN there (null in a sweep, as the loop gives it)
+            if scalar:
+                values["buckling_deflection"] = None if math.isinf(float(s_k)) else s_k
+            else:
+                values["buckling_deflection"] = np.where(np.isinf(s_k), np.nan, s_k)
     else:
         single = sp.disc_force_flat(
             x["disc_outer_diameter"],
@@ -571,7 +652,7 @@ def extra_values(x: Mapping[str, Any], spring: Spring, limit: Any) -> dict[str, 
 
 def series(x: Mapping[str, Any], spring: Spring) -> dict[str, list[float]]:
     """The characteristic as series for the form's plot (scalar inputs only)."""
-    c = characteristic(x, spring)
+    c = characteristic(x, spring, curves=True)
     return {
         "lift": np.asarray(c["_lift"]).ravel().tolist(),
         "torque_curve": np.asarray(c["_torque"]).ravel().tolist(),
@@ -1105,4 +1186,157 @@ def sizing(x: Mapping[str, Any]) -> dict[str, Any]:
         )
         out["start_torque"] = start
     out["required_slip_torque"] = float(cl_required_slip_torque(rated, x["service_factor"], start))
+    return out
+
+
+# --------------------------------------------------------------------------
+# The inverse on arrays (clutch.ball_setting's array path), helical springs
+# --------------------------------------------------------------------------
+
+
+def _at_point(x: Mapping[str, Any], j: int) -> dict[str, Any]:
+    """The scalar inputs of point ``j`` of equal-length columns."""
+    return {
+        k: (v[j].item() if isinstance(v, np.ndarray) and v.ndim == 1 else v) for k, v in x.items()
+    }
+
+
+class SettingGrid:
+    """The characteristic of a helical spring as lines in the nut setting δ, for a study.
+
+    With the balls at grid point k of :func:`characteristic` the spring is compressed
+    by δ + L_k(δ), L_k = p_k δ + q_k (p_k = 1 from the rim on when the lift is the
+    setting itself, ``ball_lift`` absent; else 0), and the torque is T_k = G_k c (δ + L_k),
+    G_k = s D0/(2 tan(β_k − ρ)), c the spring rate. Every T_k rises with δ, so the peak
+    torque reaches a target T first at δ* = min_k (T/(G_k c) − q_k)/(1 + p_k): the root
+    :func:`solve_setting` brackets and refines point by point. On the flank the lines
+    lie below the rim's (same G, less compression), so only the rim on counts.
+    """
+
+    def __init__(self, x: Mapping[str, Any]) -> None:
+        d, alpha = np.broadcast_arrays(
+            np.asarray(x["ball_diameter"], float), np.asarray(x["groove_angle"], float)
+        )
+        r, a = d[..., None] / 2.0, alpha[..., None]
+        v = np.linspace(0.0, 1.0, POINTS)[1:]
+        beta_rim = a + v * (math.pi / 2.0 - a)
+        rim = r * (np.sin(beta_rim) - np.sin(a))
+        if x["ball_lift"] is not None:
+            h = np.asarray(x["ball_lift"], float)[..., None]
+            over = h + rim
+            self.q = np.concatenate([np.broadcast_to(h, (*over.shape[:-1], 1)), over], axis=-1)
+            self.share = 1.0  # 1/(1 + p)
+        else:
+            self.q = np.concatenate([np.zeros((*rim.shape[:-1], 1)), rim], axis=-1)
+            self.share = 0.5
+        beta = np.concatenate([a, beta_rim], axis=-1)
+        xs = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
+        push = combined_push_factor(beta, xs["flank_friction"], xs["driving_groove_angle"])
+        gain = np.asarray(_sharing(xs)) * np.asarray(xs["ball_circle_diameter"]) / (2.0 * push)
+        # the lines rise with δ only where every push is positive and finite
+        self.regular = np.all(np.isfinite(gain) & (gain > 0.0), axis=-1)
+        self.inverse_gain = 1.0 / gain
+
+    def setting(self, rate: Any, target: Any, upper: Any) -> Any:
+        """δ* for the target peak torque, NaN where none in [0, upper] gives it."""
+        compression = (np.asarray(target, float) / np.asarray(rate, float))[..., None]
+        delta = np.min(compression * self.inverse_gain - self.q, axis=-1) * self.share
+        return np.where((delta >= 0.0) & (delta <= upper), delta, np.nan)
+
+
+def peak_setting_arrays(
+    x: Mapping[str, Any], grid: SettingGrid, spring: Spring, target: Any, force: Any
+) -> tuple[Any, Any]:
+    """(setting, largest stress over the lift) of :func:`_peak_setting` on arrays; NaN: None.
+
+    Helical springs only. A point where the lines do not all rise (a push ≤ 0 on the
+    driving flank) is solved by :func:`_peak_setting` itself.
+    """
+    rate = np.asarray(spring.force(1.0), float)
+    upper = np.maximum(np.asarray(force) / rate, 1e-9) * 1.000001
+    delta = np.asarray(grid.setting(rate, target, upper))
+    stress = np.asarray(end_values({**x, "spring_deflection": delta}, spring)["spring_stress_max"])
+    n = delta.size if delta.ndim else 0
+    if not np.all(grid.regular):
+        delta, stress = np.array(delta, float, ndmin=1), np.array(stress, float, ndmin=1)
+        for j in np.flatnonzero(~np.broadcast_to(grid.regular, delta.shape)).tolist():
+            point = _at_point(x, j) if n else dict(x)
+            found = _peak_setting(
+                point,
+                Spring(point),
+                float(np.broadcast_to(target, delta.shape)[j]),
+                float(np.broadcast_to(force, delta.shape)[j]),
+            )
+            delta[j], stress[j] = (np.nan, np.nan) if found is None else found
+    return delta, stress
+
+
+def suggest_wire_arrays(
+    x: Mapping[str, Any], grid: SettingGrid, target: Any, force: Any
+) -> dict[str, Any]:
+    """:func:`_suggest_wire` on arrays: the thinnest preferred wire that works, per point.
+
+    The same candidates in the same order and the same conditions (spring index 4…12,
+    inside the material's table, a peak setting within the permissible stress, not
+    solid at the largest deflection); NaN where none works.
+    """
+    if x["spring_material"] == "custom" and x["allowable_shear_stress"] is None:
+        return {}
+    dm = np.asarray(x["spring_mean_diameter"], float)
+    shape = np.broadcast_shapes(
+        dm.shape, np.shape(target), np.shape(force), grid.inverse_gain.shape[:-1]
+    )
+    wire = np.full(shape, np.nan)
+    setting = np.full(shape, np.nan)
+    open_ = np.ones(shape, dtype=bool)
+    for d_mm in sp.STANDARD_WIRE_DIAMETERS:
+        d = d_mm * 1e-3
+        index = dm / d
+        trying = open_ & (index >= 4.0) & (index <= 12.0)
+        if not trying.any():
+            if not np.any(open_ & (index > 12.0)):
+                break  # every open point's coil is too small for this wire and thicker ones
+            continue
+        trial = {**x, "spring_wire_diameter": d}
+        spring = Spring(trial)
+        try:
+            allow = spring.permissible()
+        except InputOutOfRange:
+            continue  # outside the material's table
+        if allow is None:
+            continue
+        delta, stress = peak_setting_arrays(trial, grid, spring, target, force)
+        fits = trying & np.isfinite(delta) & (stress <= np.asarray(allow, float))
+        if x["spring_free_length"] is not None:
+            total_lift = end_values({**trial, "spring_deflection": delta}, spring)["total_lift"]
+            travel = delta + total_lift
+            coils = x["spring_active_coils"]
+            room = np.asarray(sp.solid_length(d, coils), float) + np.asarray(
+                sp.minimum_gap_sum(d, dm, coils), float
+            )
+            fits &= ~(x["spring_free_length"] - travel < room)
+        wire = np.where(fits, d, wire)
+        setting = np.where(fits, delta, setting)
+        open_ &= ~fits
+        if not open_.any():
+            break
+    return {"suggested_wire_diameter": wire, "suggested_wire_setting": setting}
+
+
+def sizing_arrays(x: Mapping[str, Any]) -> dict[str, Any]:
+    """:func:`sizing` on arrays (the same formulas; {} without a drive)."""
+    if x["drive_torque"] is not None:
+        rated = np.asarray(x["drive_torque"], float)
+    elif x["drive_power"] is not None and x["drive_speed"] is not None:
+        rated = np.asarray(cl_rated_torque(x["drive_power"], x["drive_speed"]), float)
+    else:
+        return {}
+    out: dict[str, Any] = {"rated_drive_torque": rated}
+    start: Any = 0.0
+    if all(x[k] is not None for k in ("drive_start_torque", "drive_inertia", "load_inertia")):
+        start = cl_acceleration_torque(
+            x["drive_start_torque"], x["drive_inertia"], x["load_inertia"]
+        )
+        out["start_torque"] = start
+    out["required_slip_torque"] = cl_required_slip_torque(rated, x["service_factor"], start)
     return out

@@ -14,6 +14,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+import numpy as np
+
 from .. import fasteners as fa
 from ..errors import InputOutOfRange
 from ..spec import Check, Output, Param
@@ -558,6 +560,104 @@ def bought_part_checks(
     return values, checks, notes
 
 
+def bought_part_arrays(
+    x: Mapping[str, Any],
+    fastener: Fastener,
+    *,
+    diameter: Any,
+    pitch: Any,
+    pitch_diameter: Any,
+    stress_area: Any,
+    tensile_strength: Any,
+    bearing_outer_diameter: Any,
+    hole_diameter: Any,
+    max_assembly_preload: Any,
+    tightening_torque: Any,
+    working_force: Any = None,
+) -> tuple[dict[str, Any], dict[str, Any]]:
+    """:func:`bought_part_checks` for many designs at once: the values and the check verdicts.
+
+    The numbers (and the inputs in ``x``) may be numpy arrays, one design per element;
+    the catalogue choices (thread, head, washer, nut, materials) are the same for every
+    design. Returns the same values and, per check name, the verdicts (bool arrays)
+    that :func:`bought_part_checks` gives design by design, without the sentences.
+    The relations are the same functions of :mod:`engine.fasteners`.
+    """
+    values: dict[str, Any] = {"fastener": fastener.label}
+    verdicts: dict[str, Any] = {}
+    thread = fastener.thread
+    outer, inner = bearing_outer_diameter, hole_diameter
+    if x.get("washer") is not None:
+        if thread is None:
+            raise InputOutOfRange("washer needs a catalogue thread (give thread)", field="washer")
+        w = fa.washer(str(x["washer"]), thread, field="washer")
+        outer, inner = w.outer_diameter, np.maximum(w.inner_diameter, hole_diameter)
+    values["bearing_area"] = fa.bearing_area(outer, inner)
+    p_head = fa.surface_pressure(max_assembly_preload, outer, inner)
+    values["surface_pressure_head"] = p_head
+    p_work = None
+    if working_force is None and x.get("working_bolt_force") is not None:
+        working_force = x["working_bolt_force"]
+    if working_force is not None:
+        p_work = fa.surface_pressure(working_force, outer, inner)
+        values["surface_pressure_head_working"] = p_work
+    p_nut = None
+    if x.get("nut") is not None:
+        if thread is None:
+            raise InputOutOfRange("nut needs a catalogue thread (give thread)", field="nut")
+        n = fa.nut(str(x["nut"]), thread, field="nut")
+        p_nut = fa.surface_pressure(max_assembly_preload, n.bearing_diameter, hole_diameter)
+        values["surface_pressure_nut"] = p_nut
+    limit: Any = None
+    if x.get("limiting_surface_pressure") is not None:
+        limit = x["limiting_surface_pressure"]
+    elif x.get("clamped_material") is not None:
+        limit = fa.material(
+            str(x["clamped_material"]), field="clamped_material"
+        ).limiting_surface_pressure
+    if limit is not None:
+        values["limiting_surface_pressure"] = limit
+        for name, p in (
+            ("surface_pressure_assembly", p_head),
+            ("surface_pressure_working", p_work),
+            ("surface_pressure_nut", p_nut),
+        ):
+            if p is not None:
+                verdicts[name] = np.asarray(p <= limit)
+    tau_m: Any = None
+    if x.get("internal_thread_shear_strength") is not None:
+        tau_m = x["internal_thread_shear_strength"]
+    elif x.get("internal_thread_material") is not None:
+        tau_m = fa.material(
+            str(x["internal_thread_material"]), field="internal_thread_material"
+        ).shear_strength
+    if tau_m is not None and tensile_strength is not None:
+        length = x["engagement_length"] if x.get("engagement_length") is not None else 1.0
+        s = fa.thread_stripping(
+            diameter,
+            pitch,
+            pitch_diameter,
+            diameter - 1.082532 * pitch,
+            stress_area,
+            tensile_strength,
+            BOLT_SHEAR_RATIO * tensile_strength,
+            tau_m,
+            length,
+        )
+        values["min_engagement_length"] = s.min_engagement_length
+        values["bolt_breaking_force"] = s.bolt_breaking_force
+        if x.get("engagement_length") is not None:
+            values["stripping_force"] = s.strip_force
+            verdicts["thread_stripping"] = np.asarray(length >= s.min_engagement_length)
+    head = fastener.head
+    if head is not None and head.drive == "hex key" and tightening_torque is not None:
+        limit_key = fa.hex_key_torque(head.drive_size)
+        if limit_key is not None:
+            values["drive_torque_limit"] = limit_key
+            verdicts["drive_torque"] = np.asarray(tightening_torque <= limit_key)
+    return values, verdicts
+
+
 def joint_check_hook(x: Mapping[str, Any], solution: Any) -> tuple[list[Check], list[str]]:
     """The bought-part checks for a solved joint (a ``CHECK_HOOKS`` entry of the joint model).
 
@@ -603,6 +703,7 @@ __all__ = [
     "SOURCE_TEXT",
     "THREAD_INPUTS",
     "Fastener",
+    "bought_part_arrays",
     "bought_part_checks",
     "joint_check_hook",
     "resolve",

@@ -14,10 +14,12 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from .. import springs as sp
 from ..clutch import (
     ARRANGEMENTS,
     RECOMMENDED_GROOVE_ANGLE,
     RECOMMENDED_LOAD_FACTOR,
+    SELF_LOCKING_MARGIN,
     WORKABLE_SPRING_INDEX,
     ball_normal_force,
     ball_tangential_force,
@@ -186,7 +188,7 @@ def _allowable_param() -> Param:
     )
 
 
-def _estimate(x: Mapping[str, Any]) -> float | None:
+def _estimate(x: Mapping[str, Any]) -> Any:
     """Relative error of the closed form from the flank friction it is given.
 
     The closed form is exact for its idealisation (rigid parts, quasi-static,
@@ -194,7 +196,17 @@ def _estimate(x: Mapping[str, Any]) -> float | None:
     friction: with f = 0 (the paper) we report how much a lubricated steel
     flank (f = 0.1) would raise the limit; with f given, how much a scatter of
     ±0.03 in f moves it. NaN-free: None where the shifted friction locks.
+    On arrays (a sweep or a study choosing ``auto`` per point): the same per
+    point, NaN where a scalar call gives None.
     """
+    if np.ndim(x["groove_angle"]) or np.ndim(x["flank_friction"]):
+        a = np.asarray(x["groove_angle"], dtype=float)
+        fa = np.asarray(x["flank_friction"], dtype=float)
+        shift = np.where(fa == 0.0, TYPICAL_FLANK_FRICTION, FLANK_FRICTION_SCATTER)
+        with np.errstate(all="ignore"):
+            push_a = np.tan(a - np.arctan(fa))
+            shifted_a = np.tan(a - np.arctan(fa + shift))
+            return np.where((push_a > 0.0) & (shifted_a > 0.0), push_a / shifted_a - 1.0, np.nan)
     alpha, f = float(x["groove_angle"]), float(x["flank_friction"])
     delta = TYPICAL_FLANK_FRICTION if f == 0.0 else FLANK_FRICTION_SCATTER
     push = math.tan(alpha - math.atan(f))
@@ -375,11 +387,14 @@ ASSUMPTIONS = (
 )
 
 
-def _forward_values(x: Mapping[str, Any], as_built: bool = True) -> dict[str, Any]:
+def _forward_values(
+    x: Mapping[str, Any], as_built: bool = True, peak: bool = True
+) -> dict[str, Any]:
     """Every output of clutch.ball, on floats or arrays (one input may be an array).
 
     ``as_built=False`` leaves out the characteristic (81 lifts per point), for long
-    sweeps that ask only for the paper's outputs.
+    sweeps that ask only for the paper's outputs; ``peak=False`` leaves out only the
+    outputs at the characteristic's peak (:data:`asbuilt.PEAK_OUTPUTS`).
     """
     spring = asbuilt.Spring(x)
     alpha, f, kr = x["groove_angle"], x["flank_friction"], x["load_factor"]
@@ -418,7 +433,7 @@ def _forward_values(x: Mapping[str, Any], as_built: bool = True) -> dict[str, An
         values["spring_shear_stress"] = spring_shear_stress(force, dm, d0)
         values["spring_rate"] = spring_rate(spring.shear_modulus, d0, dm, x["spring_active_coils"])
     if as_built:
-        values.update(asbuilt.extra_values(x, spring, limit))
+        values.update(asbuilt.extra_values(x, spring, limit, peak))
     return values
 
 
@@ -496,45 +511,174 @@ def _feasible_mask(x: Mapping[str, Any], wire: Any) -> npt.NDArray[np.bool_]:
     return np.asarray(ok, dtype=bool)
 
 
+def _spring_mask(x: Mapping[str, Any], wire: Any) -> npt.NDArray[np.bool_]:
+    """Where :func:`asbuilt.require_spring` would not refuse the spring's numbers.
+
+    Its other refusals (a missing input) are the same at every point of a study: the
+    array paths leave those to the scalar compute.
+    """
+    if x["spring_type"] == "disc":
+        return np.asarray(
+            np.asarray(x["disc_inner_diameter"]) * 1.05 < np.asarray(x["disc_outer_diameter"])
+        )
+    if wire is not None and x["spring_material"] != "custom":
+        inside = np.isfinite(sp.tensile_strength_array(x["spring_material"], wire))
+        return np.asarray(inside, dtype=bool)
+    return np.asarray(True)
+
+
 def _masked(values: Mapping[str, Any], ok: npt.NDArray[np.bool_]) -> dict[str, Any]:
+    if np.all(ok):  # the common case in a study: nothing refused, no copies
+        return {k: np.asarray(v, dtype=float) for k, v in values.items()}
     return {k: np.where(ok, np.asarray(v, dtype=float), np.nan) for k, v in values.items()}
 
 
-def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    if x["spring_type"] != "helical" or x["spring_wire_diameter"] is None:
-        # disc springs (and refusals) go point by point through the scalar compute
-        return Result(values={}, rung=ctx.rung, error_estimate=None)
-    if x["spring_material"] != "custom" and np.ndim(x["spring_wire_diameter"]) > 0:
-        return Result(values={}, rung=ctx.rung, error_estimate=None)
-    as_built = any(ctx.wants(o.name) for o in asbuilt.outputs())
-    with np.errstate(all="ignore"):
-        values = _masked(
-            _chunked_forward(x, as_built), _feasible_mask(x, x["spring_wire_diameter"])
+def _array_inputs(x: Mapping[str, Any]) -> int | None:
+    """The length of the varied inputs (equal-length columns), or None where none varies."""
+    sizes = {v.shape[0] for v in x.values() if isinstance(v, np.ndarray) and v.ndim == 1}
+    return sizes.pop() if len(sizes) == 1 else None
+
+
+def _with_absent(
+    values: dict[str, Any], outputs: tuple[Output, ...], skip: tuple[str, ...] = ()
+) -> dict[str, Any]:
+    """``values`` with None for every scalar output the scalar compute does not give here.
+
+    The array paths mirror the scalar compute's branches (which outputs exist depends only
+    on inputs that are the same at every point), so an output they leave out is one the
+    scalar compute leaves out too: None tells :func:`engine.points.vector` so, sparing a
+    scalar run to find out. ``skip``: outputs left out for speed (the caller loops if asked).
+    """
+    out: dict[str, Any] = dict(values)
+    for o in outputs:
+        if not o.series and o.name not in out and o.name not in skip:
+            out[o.name] = None
+    return out
+
+
+def _verdicts(ok: Any, where: Any) -> npt.NDArray[np.int8]:
+    """int8 verdicts: 1 passes, 0 fails, -1 where the point is refused (``where`` False)."""
+    return np.where(where, np.asarray(ok, dtype=np.int8), np.int8(-1)).astype(np.int8)
+
+
+def _ball_check_arrays(
+    x: Mapping[str, Any], v: Mapping[str, Any], spring: asbuilt.Spring, ok: Any
+) -> dict[str, npt.NDArray[np.int8]]:
+    """The verdicts of :func:`_compute_ball`'s checks on arrays, the same comparisons.
+
+    ``v`` holds the array path's values before masking; ``ok`` is where the scalar
+    compute would not refuse the point (-1 elsewhere, as the loop leaves it unknown).
+    """
+    lo, hi = WORKABLE_SPRING_INDEX
+    out: dict[str, Any] = {}
+    helical = spring.kind == "helical"
+    if helical:
+        index = np.asarray(v["spring_index"])
+        out["spring_index"] = (lo <= index) & (index <= hi)
+        if x["allowable_shear_stress"] is not None:
+            out["spring_shear_stress"] = (
+                np.asarray(v["spring_shear_stress"]) <= x["allowable_shear_stress"]
+            )
+    out["groove_depth"] = np.asarray(asbuilt.lift_of(x)) <= np.asarray(x["ball_diameter"]) / 2.0
+    a_lo, a_hi = RECOMMENDED_GROOVE_ANGLE
+    alpha = np.asarray(x["groove_angle"])
+    out["groove_angle"] = (a_lo <= alpha) & (alpha <= a_hi)
+    if x["torque"] is not None:
+        out["torque_below_limit"] = np.asarray(x["torque"]) <= np.asarray(v["torque_limit"])
+    # the as-built checks (asbuilt.checks)
+    out["self_locking"] = np.asarray(v["self_locking_margin"]) >= SELF_LOCKING_MARGIN
+    allow = spring.permissible()
+    if allow is not None:
+        out["spring_stress_max"] = np.asarray(v["spring_stress_max"]) <= np.asarray(allow)
+    travel = np.asarray(x["spring_deflection"]) + np.asarray(v["total_lift"])
+    if not helical:
+        m = np.asarray(x["disc_series"])
+        t, h0 = np.asarray(x["disc_thickness"]), np.asarray(x["disc_cone_height"])
+        out["disc_not_past_flat"] = travel / m <= h0
+        # sp.disc_falling_region on arrays: (a - √(3a² - 6)/3)·t at the force maximum
+        a = h0 / t
+        disc = 3.0 * a * a - 6.0
+        s_max = (a - np.sqrt(np.where(disc > 0.0, disc, 0.0)) / 3.0) * t
+        setting = np.asarray(x["spring_deflection"]) / m
+        out["falling_curve"] = (disc > 0.0) & (setting + np.asarray(v["total_lift"]) / m > s_max)
+    elif x["spring_free_length"] is not None:
+        d, dm, n = x["spring_wire_diameter"], x["spring_mean_diameter"], x["spring_active_coils"]
+        need = np.asarray(sp.solid_length(d, n) + sp.minimum_gap_sum(d, dm, n))
+        out["solid_length"] = np.asarray(x["spring_free_length"]) - travel >= need
+        s_k = np.asarray(v["buckling_deflection"], dtype=float)
+        out["buckling"] = travel < np.where(np.isnan(s_k), np.inf, s_k)
+    if x["face_friction"] is not None:
+        out["residual_torque"] = np.asarray(v["residual_torque"]) <= asbuilt.RESIDUAL_SHARE * (
+            np.asarray(v["peak_torque"])
         )
+    return {name: _verdicts(verdict, ok) for name, verdict in out.items()}
+
+
+def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    """clutch.ball on arrays: every output and check the scalar compute gives, point by point.
+
+    Several inputs may vary at once (a design study); helical springs of any material
+    and disc stacks. A point the scalar compute refuses (the balls wedge, no coil, a
+    wire off the material's table, a disc ring too narrow) is NaN in every output and
+    -1 in every check. Inputs missing for the spring type go to the scalar compute
+    (it names the field).
+    """
+    helical = x["spring_type"] == "helical"
+    needed = (
+        ("spring_wire_diameter", "spring_mean_diameter", "spring_active_coils")
+        if helical
+        else ("disc_outer_diameter", "disc_inner_diameter", "disc_thickness", "disc_cone_height")
+    )
+    if any(x[name] is None for name in needed):
+        return Result(values={}, rung=ctx.rung, error_estimate=None)
+    wire = x["spring_wire_diameter"] if helical else None
+    with np.errstate(all="ignore"):
+        ok = _feasible_mask(x, wire) & _spring_mask(x, wire)
+        # the 81-point characteristic only where an output or a check needs its peak
+        peak = not helical or x["face_friction"] is not None or ctx.wants(*asbuilt.PEAK_OUTPUTS)
+        values = _chunked_forward(x, peak)
+        spring = asbuilt.Spring(x)
+        check_arrays = _ball_check_arrays(x, values, spring, ok)
+        values = _masked({k: v for k, v in values.items() if v is not None}, ok)
     return Result(
-        values=values,
+        values=_with_absent(values, BALL_CLUTCH.outputs, () if peak else asbuilt.PEAK_OUTPUTS),
         rung=ctx.rung,
         error_estimate=None,
         notes=[f"spring_arrangement = {x['spring_arrangement']}; see a single run's notes"],
+        check_arrays=check_arrays,
     )
 
 
-#: Points of a swept input evaluated at once (the characteristic holds 81 per point).
+#: Points evaluated at once (the characteristic holds 81 per point).
 _CHUNK = 20_000
 
 
-def _chunked_forward(x: Mapping[str, Any], as_built: bool = True) -> dict[str, Any]:
-    """:func:`_forward_values` over a long swept input, a chunk at a time (bounded memory)."""
-    swept = [k for k, v in x.items() if isinstance(v, np.ndarray) and v.ndim > 0]
-    if not as_built or not swept or np.size(x[swept[0]]) <= _CHUNK:
-        return _forward_values(x, as_built)
-    key, arr = swept[0], np.asarray(x[swept[0]])
-    parts = [_forward_values({**x, key: arr[i : i + _CHUNK]}) for i in range(0, arr.size, _CHUNK)]
+def _chunked_forward(x: Mapping[str, Any], peak: bool = True) -> dict[str, Any]:
+    """:func:`_forward_values` over long varied inputs, a chunk at a time (bounded memory)."""
+    n = _array_inputs(x)
+    if n is None or n <= _CHUNK or not peak:  # without the 81-point curve: no chunks needed
+        return _forward_values(x, peak=peak)
+    parts = [
+        _forward_values(
+            {
+                k: (v[i : i + _CHUNK] if isinstance(v, np.ndarray) and v.shape == (n,) else v)
+                for k, v in x.items()
+            },
+            peak=peak,
+        )
+        for i in range(0, n, _CHUNK)
+    ]
     return {
-        k: np.concatenate([np.broadcast_to(p[k], np.shape(arr[i * _CHUNK : (i + 1) * _CHUNK]))
-                           for i, p in enumerate(parts)])
+        k: None
+        if parts[0][k] is None
+        else np.concatenate(
+            [
+                np.broadcast_to(np.asarray(p[k], dtype=float), (min(_CHUNK, n - i * _CHUNK),))
+                for i, p in enumerate(parts)
+            ]
+        )
         for k in parts[0]
-    }  # fmt: skip
+    }
 
 
 BALL_CLUTCH = ModelSpec(
@@ -871,20 +1015,95 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 
 def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    """clutch.ball_setting on arrays: every output and check of the scalar compute, helical.
+
+    Several inputs may vary at once. The peak setting and the suggested wire come
+    from :class:`asbuilt.SettingGrid` (the characteristic's lines in the setting)
+    instead of a root search per point. NaN (and -1 in the checks) where the scalar
+    compute refuses the point or leaves an output null. Disc stacks, and inputs
+    missing for the spring or the target, go to the scalar compute.
+    """
+    helical = x["spring_type"] == "helical"
+    wire, deflection = x["spring_wire_diameter"], x["spring_deflection"]
     if (
-        x["target_torque"] is None
-        or x["spring_type"] != "helical"
-        or (x["spring_wire_diameter"] is None and x["spring_deflection"] is None)
+        not helical
+        or (wire is None and deflection is None)
+        or x["spring_mean_diameter"] is None
+        or x["spring_active_coils"] is None
     ):
         return Result(values={}, rung=ctx.rung, error_estimate=None)
     with np.errstate(all="ignore"):
-        values = _setting_values(x)
-        values = _masked(values, _feasible_mask(x, x["spring_wire_diameter"]))
+        drive = asbuilt.sizing_arrays(x)
+        target_given = x["target_torque"] is not None
+        if not target_given:
+            if not drive:
+                return Result(values={}, rung=ctx.rung, error_estimate=None)
+            x = {**x, "target_torque": drive["required_slip_torque"]}
+        ok = _feasible_mask(x, wire) & _spring_mask(x, wire)
+        v: dict[str, Any] = dict(_setting_values(x))
+        force = v["required_spring_force"]
+        grid = asbuilt.SettingGrid(x)
+        if wire is not None:
+            spring = asbuilt.Spring(x)
+            v["required_peak_setting"], v["peak_setting_stress_max"] = asbuilt.peak_setting_arrays(
+                x, grid, spring, x["target_torque"], force
+            )
+        v.update(asbuilt.suggest_wire_arrays(x, grid, x["target_torque"], force))
+        v.update(drive)
+        check_arrays = _setting_check_arrays(x, v, drive, ok, target_given)
+        values = _masked(v, ok)
     return Result(
-        values=values,
+        values=_with_absent(values, BALL_CLUTCH_SETTING.outputs),
         rung=ctx.rung,
         error_estimate=None,
+        check_arrays=check_arrays,
     )
+
+
+def _setting_check_arrays(
+    x: Mapping[str, Any],
+    v: Mapping[str, Any],
+    drive: Mapping[str, Any],
+    ok: Any,
+    target_given: bool,
+) -> dict[str, npt.NDArray[np.int8]]:
+    """The verdicts of :func:`_compute_setting`'s checks on arrays (helical springs).
+
+    -1 where the point is refused (``ok`` False) or the scalar compute does not report
+    the check there (no coil for the required wire, no peak setting).
+    """
+    lo, hi = WORKABLE_SPRING_INDEX
+    allow = x["allowable_shear_stress"]
+    d_half = np.asarray(x["ball_diameter"]) / 2.0
+    out: dict[str, Any] = {}
+    if x["spring_wire_diameter"] is not None:
+        index = np.asarray(v["spring_index"])
+        out["spring_index"] = (lo <= index) & (index <= hi)
+        if allow is not None:
+            out["spring_shear_stress"] = np.asarray(v["spring_shear_stress"]) <= allow
+        lift = asbuilt.lift_of(x, v["required_deflection"])
+        out["required_deflection_groove_depth"] = np.asarray(lift) <= d_half
+    if x["spring_deflection"] is not None:
+        index = np.asarray(v["required_wire_spring_index"])
+        no_coil = index <= 1.0
+        out["required_wire_spring_index"] = (lo <= index) & (index <= hi) & ~no_coil
+        if allow is not None:
+            stress_ok = np.asarray(v["required_wire_shear_stress"]) <= allow
+            out["required_wire_shear_stress"] = np.where(no_coil, -1, stress_ok)
+        lift = asbuilt.lift_of(x, x["spring_deflection"])
+        out["groove_depth"] = np.asarray(lift) <= d_half
+    if "peak_setting_stress_max" in v:
+        limit = asbuilt.Spring(x).permissible()
+        if limit is not None:
+            peak = np.asarray(v["peak_setting_stress_max"])
+            out["peak_setting_stress_max"] = np.where(np.isnan(peak), -1, peak <= limit)
+    a_lo, a_hi = RECOMMENDED_GROOVE_ANGLE
+    alpha = np.asarray(x["groove_angle"])
+    out["groove_angle"] = (a_lo <= alpha) & (alpha <= a_hi)
+    if drive and target_given:
+        required = np.asarray(drive["required_slip_torque"])
+        out["target_covers_drive"] = np.asarray(x["target_torque"]) >= required
+    return {name: _verdicts(verdict, ok) for name, verdict in out.items()}
 
 
 BALL_CLUTCH_SETTING = ModelSpec(

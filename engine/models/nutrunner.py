@@ -601,8 +601,27 @@ def _curve_time_ratio(x: Mapping[str, Any]) -> float | None:
     return float(acceleration_time(d.energy, x["motor_power"]) / t_curve - 1.0)
 
 
-def _idealisation_error(x: Mapping[str, Any]) -> float:
-    """How far the constant-power time is from the motor curve's (0 without a curve)."""
+def _idealisation_error(x: Mapping[str, Any]) -> Any:
+    """How far the constant-power time is from the motor curve's (0 without a curve).
+
+    On arrays (a sweep or a study): one quadrature per point, as a float array.
+    """
+    if x["motor_curve"] == "none":
+        return 0.0
+    sizes = {v.size for v in x.values() if isinstance(v, np.ndarray) and v.ndim > 0}
+    if sizes:
+        (n,) = sizes  # equal-length columns, as engine.points hands them
+        return np.array(
+            [
+                _idealisation_error(
+                    {
+                        k: (v[j].item() if isinstance(v, np.ndarray) and v.ndim > 0 else v)
+                        for k, v in x.items()
+                    }
+                )
+                for j in range(n)
+            ]
+        )
     try:
         ratio = _curve_time_ratio(x)
     except (InfeasibleDesign, InputOutOfRange):
@@ -644,13 +663,14 @@ def _spread(r: Any) -> Any:
     return np.maximum(np.abs(r - 1.0), np.abs(1.0 / r - 1.0))
 
 
-def _estimate_gear_ratio(x: Mapping[str, Any]) -> float:
-    """With a motor curve: the constant-power idealisation; else rounding only."""
-    return max(_FLOOR, _idealisation_error(x))
+def _estimate_gear_ratio(x: Mapping[str, Any]) -> Any:
+    """With a motor curve: the constant-power idealisation; else rounding only (arrays too)."""
+    estimate = np.maximum(_FLOOR, _idealisation_error(x))
+    return float(estimate) if estimate.ndim == 0 else estimate
 
 
 def _estimate_motor_curve(x: Mapping[str, Any]) -> float | None:
-    """Quadrature tolerance; None when no motor curve is given."""
+    """Quadrature tolerance; None when no motor curve is given (the same at every point)."""
     return None if x["motor_curve"] == "none" else 1e-8
 
 
@@ -844,7 +864,33 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
         rung=ctx.rung,
         error_estimate=None,
         warnings=warnings,
+        check_arrays=_check_arrays(arrays, values),
     )
+
+
+def _check_arrays(x: Mapping[str, Any], values: Mapping[str, Any]) -> dict[str, Any]:
+    """The verdicts of :func:`_checks` on arrays: bool, or int8 with -1 where not reported.
+
+    The same comparisons on the same floats as the scalar checks, so the verdicts
+    agree point by point (a study's pass fractions do not depend on the path).
+    """
+    out: dict[str, Any] = {
+        "max_spindle_torque_positive": np.asarray(values["max_spindle_torque"]) > 0.0
+    }
+    z = np.asarray(x["spindle_count"])
+    if np.any(z >= 2):
+        d4 = np.asarray(x["drive_gear_diameter"], dtype=float)
+        d5 = np.asarray(x["spindle_gear_diameter"], dtype=float)
+        # math.sin(math.pi / z) as the scalar check takes it (np.sin may differ in the last bit)
+        top = int(np.max(z))
+        sines = np.array([0.0, 0.0, *(math.sin(math.pi / k) for k in range(2, top + 1))])
+        fits = (d4 + d5) * sines[np.clip(z, 0, top).astype(np.int64)] > d5
+        out["spindle_gears_fit"] = np.where(z >= 2, fits, -1).astype(np.int8)
+    tau_y = x.get("shear_yield_strength")
+    if tau_y is not None:
+        for key in ("shaft_shear_stress", "spindle_shear_stress"):
+            out[f"{key.removesuffix('_shear_stress')}_elastic"] = np.asarray(values[key]) <= tau_y
+    return out
 
 
 EXAMPLE_LIGHT_TRUCK: dict[str, Any] = {

@@ -13,6 +13,9 @@ from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from typing import Any
 
+import numpy as np
+
+from .. import fasteners as fa
 from .. import joint as jt
 from .. import preload as pl
 from .. import threads as th
@@ -275,10 +278,10 @@ def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
     )
 
 
-def torque_coefficients(
-    bolt: Bolt, thread_friction: float, bearing_friction: float, formula: str
-) -> tuple[float, float, float]:
-    """(k_G, k_K, R) of the chosen torque formula: torques per newton and the friction radius."""
+def _coefficients(
+    bolt: Bolt | BoltArrays, thread_friction: Any, bearing_friction: Any, formula: str
+) -> tuple[Any, Any, Any]:
+    """(k_G, k_K, R) on floats or arrays (one design per element)."""
     k_thread, k_bearing = pl.tightening_torque_per_preload(
         bolt.pitch,
         bolt.pitch_diameter,
@@ -293,6 +296,14 @@ def torque_coefficients(
         radius = pl.friction_radius(bolt.bearing_outer_diameter, bolt.hole_diameter)
     else:
         radius = 0.25 * (bolt.bearing_outer_diameter + bolt.hole_diameter)
+    return k_thread, k_bearing, radius
+
+
+def torque_coefficients(
+    bolt: Bolt, thread_friction: float, bearing_friction: float, formula: str
+) -> tuple[float, float, float]:
+    """(k_G, k_K, R) of the chosen torque formula: torques per newton and the friction radius."""
+    k_thread, k_bearing, radius = _coefficients(bolt, thread_friction, bearing_friction, formula)
     return float(k_thread), float(k_bearing), float(radius)
 
 
@@ -308,20 +319,294 @@ def _torsion(bolt: Bolt, x: Mapping[str, Any]) -> float:
     )
 
 
-def _formula_deviation(bolt: Bolt, x: Mapping[str, Any]) -> float:
-    """Relative difference of the chosen torque formula from the exact [004, eq. 10–13]."""
-    mu_g, mu_k = float(x["thread_friction"]), float(x["bearing_friction"])
-    chosen = sum(torque_coefficients(bolt, mu_g, mu_k, str(x["torque_formula"]))[:2])
-    exact = sum(torque_coefficients(bolt, mu_g, mu_k, "exact")[:2])
+def _deviation(bolt: Bolt | BoltArrays, mu_g: Any, mu_k: Any, formula: str) -> Any:
+    """|M(formula) − M(exact)| / M(exact) on floats or arrays [004, eq. 10–13]."""
+    chosen = sum(_coefficients(bolt, mu_g, mu_k, formula)[:2])
+    exact = sum(_coefficients(bolt, mu_g, mu_k, "exact")[:2])
     return abs(chosen - exact) / exact
 
 
-def _rung_estimate(x: Mapping[str, Any]) -> float | None:
+def _formula_deviation(bolt: Bolt, x: Mapping[str, Any]) -> float:
+    """Relative difference of the chosen torque formula from the exact [004, eq. 10–13]."""
+    return float(
+        _deviation(
+            bolt,
+            float(x["thread_friction"]),
+            float(x["bearing_friction"]),
+            str(x["torque_formula"]),
+        )
+    )
+
+
+def _rung_estimate(x: Mapping[str, Any]) -> Any:
+    """The closed form's error estimate: a float, or an array where inputs are arrays."""
     try:
+        n = _points(x)
+        if n:
+            bolt_arrays, _ = resolve_bolt_arrays(x, n, labels=False)
+            dev = _deviation(
+                bolt_arrays, x["thread_friction"], x["bearing_friction"], str(x["torque_formula"])
+            )
+            return np.where(bolt_arrays.ok, dev, np.nan)
         bolt, _ = resolve_bolt(x)
         return _formula_deviation(bolt, x)
     except (EngineError, KeyError, TypeError, ValueError):
         return None
+
+
+# --------------------------------------------------------------------------- array path
+#
+# Issue 21/22: a sweep or a study hands the model its inputs with the varied ones as
+# equal-length numpy arrays. The text and choice inputs (designation, grade, head,
+# method, formula …) are the same at every point, so the catalogue is read once; every
+# number is then computed with the same engine functions on arrays. A point the scalar
+# path refuses is NaN (``ok`` False) and its checks are not counted.
+
+#: Bolt inputs whose values, not only whether they are given, the bolt resolution reads.
+_BOLT_NUMBERS = (
+    "thread_diameter",
+    "thread_pitch",
+    "yield_strength",
+    "bearing_outer_diameter",
+    "hole_diameter",
+)
+#: Inputs that name catalogue parts (looked up by the thread size).
+_CATALOGUE_INPUTS = ("thread", "grade", "head_standard", "washer", "nut")
+
+
+def _points(x: Mapping[str, Any]) -> int:
+    """The number of points of an array request (0 when every input is a scalar)."""
+    for v in x.values():
+        if isinstance(v, np.ndarray) and v.ndim == 1:
+            return int(v.shape[0])
+    return 0
+
+
+@dataclass(frozen=True)
+class BoltArrays:
+    """A bolt for many points: each number a float (the same everywhere) or an array."""
+
+    diameter: Any
+    pitch: Any
+    pitch_diameter: Any
+    minor_diameter: Any
+    stress_diameter: Any
+    stress_area: Any
+    yield_strength: Any
+    tensile_strength: Any
+    bearing_outer_diameter: Any
+    hole_diameter: Any
+    bearing_friction_factor: float
+    fastener: fz.Fastener
+    #: Where the scalar :func:`resolve_bolt` would refuse the point: False.
+    ok: np.ndarray
+    #: The ``fastener`` output: one label, or one per point.
+    label: Any
+
+
+def _table_lookup(
+    diameter: np.ndarray, table: Mapping[float, Any]
+) -> tuple[np.ndarray, np.ndarray]:
+    """Index into ``table``'s keys (mm) per diameter [m], and where one matches.
+
+    The match of :func:`engine.threads._size_key` (relative 1e-6), on arrays: the keys
+    are far apart, so only the two keys either side of a size can match it.
+    """
+    keys = np.fromiter(table, dtype=float)
+    order = np.argsort(keys)
+    ordered = keys[order]
+    mm = np.asarray(diameter) * 1e3
+    right = np.clip(np.searchsorted(ordered, mm), 0, keys.size - 1)
+    left = np.maximum(right - 1, 0)
+    near_left = np.abs(mm - ordered[left]) <= 1e-6 * ordered[left]
+    near_right = np.abs(mm - ordered[right]) <= 1e-6 * ordered[right]
+    index = order[np.where(near_left, left, right)]
+    return index, near_left | near_right
+
+
+def _tabulated(
+    diameter: np.ndarray, table: Mapping[float, Any], column: int | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """A per-size table's value [m] (mm × 1e-3) per diameter [m], NaN where not tabulated."""
+    index, found = _table_lookup(diameter, table)
+    rows = list(table.values())
+    mm = np.array([r if column is None else r[column] for r in rows], dtype=float)
+    return np.where(found, mm[index] * 1e-3, np.nan), found
+
+
+def resolve_bolt_arrays(
+    x: Mapping[str, Any], n: int, labels: bool = True
+) -> tuple[BoltArrays, list[str]]:
+    """:func:`resolve_bolt` for ``n`` points whose numeric bolt inputs may be arrays.
+
+    The catalogue (designation, grade, head) is read once. A varied thread diameter or
+    pitch together with a catalogue part would need a lookup per point: ValueError
+    (the caller evaluates those points one by one). ``labels=False`` skips the
+    per-point ``fastener`` labels of a varied size.
+    """
+    ok = np.ones(n, dtype=bool)
+    varied = [k for k in _BOLT_NUMBERS if isinstance(x.get(k), np.ndarray)]
+    if not varied:
+        bolt, bolt_notes = resolve_bolt(x)
+        fastener = bolt.fastener or fz.Fastener("", None, None, None)
+        return (
+            BoltArrays(
+                diameter=bolt.diameter,
+                pitch=bolt.pitch,
+                pitch_diameter=bolt.pitch_diameter,
+                minor_diameter=bolt.minor_diameter,
+                stress_diameter=bolt.stress_diameter,
+                stress_area=bolt.stress_area,
+                yield_strength=bolt.yield_strength,
+                tensile_strength=bolt.tensile_strength,
+                bearing_outer_diameter=bolt.bearing_outer_diameter,
+                hole_diameter=bolt.hole_diameter,
+                bearing_friction_factor=bolt.bearing_friction_factor,
+                fastener=fastener,
+                ok=ok,
+                label=fastener.label,
+            ),
+            bolt_notes,
+        )
+    size_varied = "thread_diameter" in varied or "thread_pitch" in varied
+    if size_varied and any(x.get(k) is not None for k in _CATALOGUE_INPUTS):
+        raise ValueError("a catalogue part with a varied thread size: evaluate point by point")
+    # the catalogue reads only whether these are given, not their values
+    placeholder = {**x, **{k: 1.0 for k in varied}}
+    cat: dict[str, Any]
+    notes: list[str] = []
+    if size_varied:
+        if x.get("thread_diameter") is None:
+            fz.resolve(placeholder)  # refuses: no thread and no diameter
+        cat = {"diameter": x["thread_diameter"]}
+        fastener = fz.Fastener("", None, None, None)
+    else:
+        cat, fastener, found_notes = fz.resolve(placeholder)
+        notes.extend(found_notes)
+    d = cat["diameter"]
+    per_point = isinstance(d, np.ndarray)
+    if "pitch" in cat:
+        pitch = cat["pitch"]
+    elif x.get("thread_pitch") is None:
+        if per_point:
+            pitch, found = _tabulated(d, th.COARSE_PITCH_MM)
+            ok &= found
+        else:
+            pitch = th.coarse_pitch(d)
+    else:
+        pitch = x["thread_pitch"]
+        ok &= d - 1.226869 * pitch > 0.0
+    tensile: Any
+    if x.get("yield_strength") is not None:
+        yield_strength, tensile = x["yield_strength"], None
+    elif "yield_strength" in cat:
+        yield_strength, tensile = cat["yield_strength"], cat["tensile_strength"]
+    else:
+        name = str(x.get("property_class") or "8.8")
+        if per_point:
+            th.property_class_strengths(name, 0.01)  # refuses an unknown class
+            cls = th.PROPERTY_CLASSES[name]
+            mm = d * 1e3
+            ok &= mm <= cls.max_diameter_mm * (1 + 1e-9)
+            small = mm <= cls.size_step_mm * (1 + 1e-9)
+            yield_strength = np.where(small, cls.yield_small * 1e6, cls.yield_large * 1e6)
+            tensile = np.where(small, cls.tensile_small * 1e6, cls.tensile_large * 1e6)
+        else:
+            yield_strength, tensile = th.property_class_strengths(name, d)
+    if x.get("bearing_outer_diameter") is not None:
+        outer = x["bearing_outer_diameter"]
+    elif "bearing_outer_diameter" in cat:
+        outer = cat["bearing_outer_diameter"]
+    elif per_point:
+        outer, found = _tabulated(d, th.HEX_BEARING_DIAMETER_MM)
+        ok &= found
+    else:
+        outer = th.hex_bearing_diameter(d)
+    if x.get("hole_diameter") is not None:
+        hole = x["hole_diameter"]
+        ok &= hole >= d
+    elif "hole_diameter" in cat:
+        hole = cat["hole_diameter"]
+    else:
+        series = str(x.get("hole_series") or "medium")
+        if per_point:
+            th.clearance_hole(0.012, series)  # refuses an unknown series
+            hole, found = _tabulated(d, th.CLEARANCE_HOLE_MM, th.HOLE_SERIES.index(series))
+            ok &= found
+        else:
+            hole = th.clearance_hole(d, series)
+    ok &= outer > hole
+    label: Any = fastener.label
+    if size_varied and labels:
+        label = _size_labels(x, d, n)
+    return (
+        BoltArrays(
+            diameter=d,
+            pitch=pitch,
+            pitch_diameter=cat.get("pitch_diameter", th.pitch_diameter(d, pitch)),
+            minor_diameter=cat.get("minor_diameter", th.minor_diameter(d, pitch)),
+            stress_diameter=cat.get("stress_diameter", th.stress_diameter(d, pitch)),
+            stress_area=cat.get("stress_area", th.stress_area(d, pitch)),
+            yield_strength=yield_strength,
+            tensile_strength=tensile,
+            bearing_outer_diameter=outer,
+            hole_diameter=hole,
+            bearing_friction_factor=cat.get("bearing_friction_factor", 1.0),
+            fastener=fastener,
+            ok=ok,
+            label=label,
+        ),
+        notes,
+    )
+
+
+def _size_labels(x: Mapping[str, Any], diameter: Any, n: int) -> np.ndarray:
+    """The ``fastener`` label per point for a varied numeric thread size (no catalogue part).
+
+    As :func:`engine.models._fasteners.resolve` writes it: the ISO designation where the
+    size is a catalogue thread, else "d = … mm", then the property class.
+    """
+    cls = str(x.get("property_class") or "8.8")
+    d = np.broadcast_to(np.asarray(diameter, dtype=float), (n,))
+    p_in = x.get("thread_pitch")
+    p = None if p_in is None else np.broadcast_to(np.asarray(p_in, dtype=float), (n,))
+    _, near = _table_lookup(d, fa.METRIC_COARSE_PITCH_MM)
+    out = np.array([f"d = {v * 1e3:g} mm {cls}" for v in d.tolist()], dtype=object)
+    for j in np.flatnonzero(near).tolist():
+        thread = fz._catalogue_thread(float(d[j]), None if p is None else float(p[j]))
+        if thread is not None:
+            out[j] = f"{thread.designation} {cls}"
+    return out
+
+
+def _verdicts(verdicts: Mapping[str, Any], ok: np.ndarray, n: int) -> dict[str, np.ndarray]:
+    """Check verdicts per point; none at all when every point is refused (as the loop gives)."""
+    if not ok.any():
+        return {}
+    return {k: np.broadcast_to(np.asarray(v, dtype=bool), (n,)) for k, v in verdicts.items()}
+
+
+def _finish(values: Mapping[str, Any], ok: np.ndarray, n: int) -> dict[str, Any]:
+    """The array path's values: NaN (floats) or None (flags, texts) where a point is refused.
+
+    Non-finite floats are NaN too: the scalar path returns them as null.
+    """
+    out: dict[str, Any] = {}
+    every = bool(ok.all())
+    for name, v in values.items():
+        arr = np.asarray(v)
+        if arr.dtype.kind in "OUSb":
+            if every:
+                out[name] = v
+                continue
+            col = np.empty(n, dtype=object)
+            col[:] = np.broadcast_to(arr, (n,)).tolist() if arr.ndim else arr.item()
+            col[~ok] = None
+            out[name] = col
+            continue
+        arr = np.broadcast_to(arr.astype(float), (n,))
+        out[name] = np.where(ok & np.isfinite(arr), arr, np.nan)
+    return out
 
 
 CLOSED_FORM = Rung(
@@ -452,6 +737,97 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
 
 
+def _bought_part_arrays(
+    x: Mapping[str, Any],
+    bolt: BoltArrays,
+    max_preload: Any,
+    torque: Any,
+    values: dict[str, Any],
+    verdicts: dict[str, Any],
+) -> None:
+    """:func:`_add_bought_part_checks` on arrays: values and verdicts, no sentences."""
+    more, more_verdicts = fz.bought_part_arrays(
+        x,
+        bolt.fastener,
+        diameter=bolt.diameter,
+        pitch=bolt.pitch,
+        pitch_diameter=bolt.pitch_diameter,
+        stress_area=bolt.stress_area,
+        tensile_strength=bolt.tensile_strength,
+        bearing_outer_diameter=bolt.bearing_outer_diameter,
+        hole_diameter=bolt.hole_diameter,
+        max_assembly_preload=max_preload,
+        tightening_torque=torque,
+    )
+    more["fastener"] = bolt.label
+    values.update(more)
+    verdicts.update(more_verdicts)
+
+
+def _tightening_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    """The array path of ``preload.tightening``: :func:`_tightening` on many points at once."""
+    n = _points(x) or 1
+    bolt, notes = resolve_bolt_arrays(x, n, labels=ctx.wants("fastener"))
+    ok = bolt.ok.copy()
+    verdicts: dict[str, Any] = {}
+    mu_g, mu_k = x["thread_friction"], x["bearing_friction"]
+    nu, formula = x["utilization"], str(x["torque_formula"])
+    beta = pl.torsion_factor(
+        bolt.pitch,
+        bolt.pitch_diameter,
+        bolt.stress_diameter,
+        mu_g,
+        str(x["preload_convention"]),
+    )
+    permissible = pl.assembly_preload(bolt.yield_strength, bolt.stress_area, beta, nu)
+    given = x.get("preload") is not None
+    force = x["preload"] if given else permissible
+    sigma_eq = pl.equivalent_stress(force, bolt.stress_area, beta)
+    k_thread, k_bearing, radius = _coefficients(bolt, mu_g, mu_k, formula)
+    m_thread, m_bearing = force * k_thread, force * k_bearing
+    total = m_thread + m_bearing
+    ideal = pl.ideal_torque(force, bolt.pitch)
+    thumb = pl.rule_of_thumb_torque(force, bolt.diameter)
+    thumb_yield = pl.rule_of_thumb_torque_from_yield(bolt.yield_strength, bolt.diameter)
+    positive = total > 0
+    safe = np.where(positive, total, 1.0)
+    if given:
+        verdicts["below_yield"] = sigma_eq <= bolt.yield_strength
+    values: dict[str, Any] = {
+        "assembly_preload": force,
+        "permissible_preload": permissible,
+        "tightening_torque": total,
+        "thread_torque": m_thread,
+        "bearing_torque": m_bearing,
+        "ideal_torque": ideal,
+        "ideal_torque_share": np.where(positive, ideal / safe, 1.0),
+        "friction_radius": radius,
+        "stress_area": bolt.stress_area,
+        "pitch_diameter": bolt.pitch_diameter,
+        "minor_diameter": bolt.minor_diameter,
+        "thread_pitch": bolt.pitch,
+        "torsion_factor": beta,
+        "equivalent_stress": sigma_eq,
+        "yield_strength": bolt.yield_strength,
+        "stress_utilization": sigma_eq / bolt.yield_strength,
+        "bearing_outer_diameter": bolt.bearing_outer_diameter,
+        "hole_diameter": bolt.hole_diameter,
+        "torque_formula_deviation": _deviation(bolt, mu_g, mu_k, formula),
+        "rule_of_thumb_torque": thumb,
+        "rule_of_thumb_deviation": np.where(positive, (thumb - total) / safe, math.inf),
+        "yield_rule_torque": thumb_yield,
+        "yield_rule_deviation": np.where(positive, (thumb_yield - total) / safe, math.inf),
+    }
+    _bought_part_arrays(x, bolt, force, total, values, verdicts)
+    return Result(
+        values=_finish(values, ok, n),
+        rung=ctx.rung,
+        error_estimate=None,
+        notes=notes,
+        check_arrays=_verdicts(verdicts, ok, n),
+    )
+
+
 TIGHTENING_OUTPUTS: tuple[Output, ...] = (
     Output(
         "assembly_preload",
@@ -536,6 +912,8 @@ TIGHTENING = ModelSpec(
     outputs=TIGHTENING_OUTPUTS,
     rungs=(CLOSED_FORM,),
     compute=_tightening,
+    vectorized=_tightening_arrays,
+    vector_rungs=("closed_form",),
     assumptions=TIGHTENING_ASSUMPTIONS,
     examples=(
         # VDI 2230 Table A1 case: M12 8.8, μ_G = μ_K = 0.12, ν = 0.9
@@ -1049,7 +1427,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 k_range[1] * bolt.bearing_friction_factor,
             )
         fixed = torque if x.get("scatter_torque") is None else float(x["scatter_torque"])
-        hist = pl.friction_scatter_histogram(
+        forces = pl.friction_scatter_preloads(
             fixed,
             bolt.pitch,
             bolt.pitch_diameter,
@@ -1059,22 +1437,30 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
             bolt.bearing_outer_diameter,
             bolt.hole_diameter,
             formula,
-            bins=int(x["histogram_bins"]),
-            sample_size=int(x["sample_size"]),
         )
-        series = {"preload_bins": hist.bin_centres.tolist(), "preload_counts": hist.counts.tolist()}
-        spread = (hist.maximum - hist.minimum) / (hist.maximum + hist.minimum)
+        # the 64×64 grid's extremes and mean are cheap; binning it only when the series is
+        # asked for (issue 21: nothing computed that was not asked)
+        f_lo, f_hi, f_mean = float(forces.min()), float(forces.max()), float(forces.mean())
+        if ctx.wants("preload_bins", "preload_counts"):
+            hist = pl.preload_histogram(
+                forces, bins=int(x["histogram_bins"]), sample_size=int(x["sample_size"])
+            )
+            series = {
+                "preload_bins": hist.bin_centres.tolist(),
+                "preload_counts": hist.counts.tolist(),
+            }
+        spread = (f_hi - f_lo) / (f_hi + f_lo)
         values.update(
-            scatter_preload_min=hist.minimum,
-            scatter_preload_max=hist.maximum,
-            scatter_preload_mean=hist.mean,
+            scatter_preload_min=f_lo,
+            scatter_preload_max=f_hi,
+            scatter_preload_mean=f_mean,
             scatter_relative=spread,
             scatter_torque_applied=fixed,
         )
         notes.append(
             f"friction scatter at {fixed:.4g} N·m: μ_G {g_range[0]:g}…{g_range[1]:g}, "
             f"μ_K {k_range[0]:g}…{k_range[1]:g} (independent, uniform; midpoint grid) give "
-            f"preload {hist.minimum / 1e3:.4g}…{hist.maximum / 1e3:.4g} kN, ±{spread:.0%} "
+            f"preload {f_lo / 1e3:.4g}…{f_hi / 1e3:.4g} kN, ±{spread:.0%} "
             '([004, fig. 5]: ±30 % for 38 bolts 5/8" at 80 N·m)'
         )
     elif scatter_wanted and (
@@ -1113,6 +1499,324 @@ def _range(x: Mapping[str, Any], name: str, nominal: float) -> tuple[float, floa
             f"{name}_min = {lo:g} exceeds {name}_max = {hi:g}", field=f"{name}_min"
         )
     return float(lo), float(hi)
+
+
+def _smallest_section_arrays(bolt: BoltArrays, x: Mapping[str, Any]) -> tuple[Any, Any, Any]:
+    """:func:`_smallest_section` on arrays: d_0, A_0, and where the inputs are complete.
+
+    The choice of :func:`engine.joint.smallest_section` (VDI 2230-1 R7) point by point.
+    """
+    d0 = bolt.stress_diameter
+    shank = np.zeros((), dtype=bool)
+    fine: Any = True
+    if x.get("shank_diameter") is not None:
+        use = (x["shank_length"] > 0.0) & (x["shank_diameter"] < d0)
+        d0, shank = np.where(use, x["shank_diameter"], d0), shank | use
+    if x.get("reduced_diameter") is None:
+        fine = ~np.asarray(x["reduced_length"] > 0.0)  # the scalar path asks for it
+    else:
+        use = (x["reduced_length"] > 0.0) & (x["reduced_diameter"] < d0)
+        d0, shank = np.where(use, x["reduced_diameter"], d0), shank | use
+    area0 = np.where(shank, 0.25 * math.pi * d0 * d0, bolt.stress_area)
+    return d0, area0, fine
+
+
+def _grip_sections_arrays(
+    bolt: BoltArrays, x: Mapping[str, Any]
+) -> tuple[list[Any], list[Any], Any]:
+    """:func:`_grip_sections` on arrays; a section of zero length adds nothing to the sums."""
+    grip = x["clamped_length"]
+    l_shank, l_reduced = x["shank_length"], x["reduced_length"]
+    free = grip - l_shank - l_reduced
+    fine = ~np.asarray(free < -1e-12 * grip)
+    if x.get("reduced_diameter") is None:
+        fine = fine & ~np.asarray(l_reduced > 0)
+    d = bolt.diameter
+    shank_d = d if x.get("shank_diameter") is None else x["shank_diameter"]
+    reduced_d = d if x.get("reduced_diameter") is None else x["reduced_diameter"]
+    nut = 0.8 * d if x.get("nut_height") is None else x["nut_height"]
+    lengths = [l_shank, l_reduced, np.maximum(free, 0.0), nut / 3.0]
+    diameters = [shank_d, reduced_d, bolt.minor_diameter, bolt.minor_diameter]
+    return lengths, diameters, fine
+
+
+def _clamped_compliance_arrays(
+    bolt: BoltArrays, x: Mapping[str, Any], method: ControlMethod, ok: np.ndarray
+) -> Any:
+    """:func:`_clamped_compliance` on arrays: VDI 2230 R3's cone once per distinct design."""
+    if x.get("clamped_compliance") is not None:
+        return x["clamped_compliance"]
+    if method.family != "bolt":
+        return 0.0
+    grip = x["clamped_length"]
+    e_p = (
+        x["youngs_modulus"]
+        if x.get("clamped_youngs_modulus") is None
+        else x["clamped_youngs_modulus"]
+    )
+    args = (grip, e_p, bolt.bearing_outer_diameter, bolt.hole_diameter)
+
+    def cone(g: float, e: float, outer: float, hole: float) -> float:
+        return jt.clamped_compliance([g], [e], outer, hole, None, "through").total
+
+    if not any(isinstance(a, np.ndarray) for a in args):
+        return cone(*(float(a) for a in args))
+    n = ok.shape[0]
+    table = np.column_stack([np.broadcast_to(np.asarray(a, dtype=float), (n,)) for a in args])
+    out = np.full(n, np.nan)
+    rows, inverse = np.unique(table[ok], axis=0, return_inverse=True)
+    totals = np.array([cone(*row) for row in rows.tolist()])
+    out[ok] = totals[inverse.ravel()]
+    return out
+
+
+def _range_arrays(x: Mapping[str, Any], name: str, nominal: Any) -> tuple[Any, Any, Any]:
+    """:func:`_range` on arrays: (low, high, where low ≤ high)."""
+    lo, hi = x.get(f"{name}_min"), x.get(f"{name}_max")
+    if lo is None and hi is None:
+        return nominal, nominal, True
+    if lo is None or hi is None:
+        raise InputOutOfRange(f"give both {name}_min and {name}_max", field=f"{name}_min")
+    return lo, hi, ~np.asarray(lo > hi)
+
+
+#: Points per chunk of the friction-scatter grid when it differs from point to point.
+_SCATTER_CHUNK = 64
+
+
+def _scatter_arrays(
+    bolt: BoltArrays,
+    formula: str,
+    torque: Any,
+    g_range: tuple[Any, Any],
+    k_range: tuple[Any, Any],
+    n: int,
+) -> tuple[Any, Any, Any]:
+    """Lowest, highest and mean preload of the friction-scatter grid, per point.
+
+    :func:`engine.preload.friction_scatter_preloads` at one torque: the preload is
+    the torque over a per-newton torque that does not depend on it, so a grid shared
+    by every point is computed once and scaled; otherwise chunk by chunk.
+    """
+    shared = (
+        bolt.pitch,
+        bolt.pitch_diameter,
+        bolt.diameter,
+        bolt.bearing_outer_diameter,
+        bolt.hole_diameter,
+        *g_range,
+        *k_range,
+    )
+    if not any(isinstance(v, np.ndarray) for v in shared):
+        per_newton = 1.0 / pl.friction_scatter_preloads(
+            1.0,
+            bolt.pitch,
+            bolt.pitch_diameter,
+            bolt.diameter,
+            (float(g_range[0]), float(g_range[1])),
+            (float(k_range[0]), float(k_range[1])),
+            bolt.bearing_outer_diameter,
+            bolt.hole_diameter,
+            formula,
+        )
+        mean_inverse = float(np.mean(1.0 / per_newton))
+        return (
+            torque / float(per_newton.max()),
+            torque / float(per_newton.min()),
+            torque * mean_inverse,
+        )
+    grid = 64
+    u = (np.arange(grid) + 0.5) / grid
+    cols = [np.broadcast_to(np.asarray(v, dtype=float), (n,)) for v in shared]
+    fixed = np.broadcast_to(np.asarray(torque, dtype=float), (n,))
+    low, high, mean = np.empty(n), np.empty(n), np.empty(n)
+    for start in range(0, n, _SCATTER_CHUNK):
+        sl = slice(start, min(start + _SCATTER_CHUNK, n))
+        parts: list[Any] = [c[sl, None] for c in cols]
+        pitch, d2, d, outer, hole, g_lo, g_hi, k_lo, k_hi = parts
+        per_g, _ = pl.tightening_torque_per_preload(
+            pitch, d2, d, g_lo + (g_hi - g_lo) * u, 0.0, outer, hole, formula
+        )
+        _, per_k = pl.tightening_torque_per_preload(
+            pitch, d2, d, 0.0, k_lo + (k_hi - k_lo) * u, outer, hole, formula
+        )
+        k_thread, k_bearing = np.asarray(per_g), np.asarray(per_k)
+        t = fixed[sl]
+        # fl(a + b) rises with a and with b: the grid's extremes are at its corners, exactly
+        low[sl] = t / (k_thread.max(axis=1) + k_bearing.max(axis=1))
+        high[sl] = t / (k_thread.min(axis=1) + k_bearing.min(axis=1))
+        inverse = np.add(k_thread[:, None, :], k_bearing[:, :, None])
+        np.reciprocal(inverse, out=inverse)
+        mean[sl] = t * inverse.reshape(inverse.shape[0], -1).mean(axis=1)
+    return low, high, mean
+
+
+def _method_texts(
+    candidates: list[ControlMethod], passes: list[Any], own_rank: int, n: int
+) -> tuple[np.ndarray, np.ndarray]:
+    """``cheaper_methods`` and ``passing_methods`` per point, as :func:`_control` writes them.
+
+    ``candidates`` are in the order the texts list them (cheapest first); each point's
+    pass pattern is a bit code, and the texts are built once per distinct code.
+    """
+    code = np.zeros(n, dtype=np.int64)
+    for k, passing in enumerate(passes):
+        code |= np.broadcast_to(np.asarray(passing, dtype=np.int64), (n,)) << k
+    seen = np.flatnonzero(np.bincount(code, minlength=1))
+    cheaper_text = np.empty(seen.size, dtype=object)
+    passing_text = np.empty(seen.size, dtype=object)
+    for i, c in enumerate(seen.tolist()):
+        chosen = [m for k, m in enumerate(candidates) if c >> k & 1]
+        cheaper = [m.key for m in chosen if m.cost_rank < own_rank]
+        cheaper_text[i] = ", ".join(cheaper) if cheaper else "none"
+        passing_text[i] = ", ".join(m.key for m in chosen) if chosen else "none"
+    where = np.zeros(int(seen[-1]) + 1, dtype=np.int64)
+    where[seen] = np.arange(seen.size)
+    index = where[code]
+    return cheaper_text[index], passing_text[index]
+
+
+def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    """The array path of ``preload.control``: :func:`_control` on many points at once.
+
+    The friction histogram (a series) is not part of it; its min, max and mean are.
+    """
+    n = _points(x) or 1
+    bolt, notes = resolve_bolt_arrays(x, n, labels=ctx.wants("fastener"))
+    ok = bolt.ok.copy()
+    verdicts: dict[str, Any] = {}
+    method = get_method(str(x["method"]))
+    mu_g, mu_k = x["thread_friction"], x["bearing_friction"]
+    nu, formula = x["utilization"], str(x["torque_formula"])
+    d0, area0, fine = _smallest_section_arrays(bolt, x)
+    ok &= fine
+    beta = pl.torsion_factor(
+        bolt.pitch, bolt.pitch_diameter, d0, mu_g, str(x["preload_convention"])
+    )
+    permissible = pl.assembly_preload(bolt.yield_strength, area0, beta, nu)
+    at_yield = pl.assembly_preload(bolt.yield_strength, area0, beta, 1.0)
+    given = x.get("preload")
+    lo_factor, _ = pl.preload_factor_range(str(x["load_type"]))
+    factor = lo_factor if x.get("preload_factor") is None else x["preload_factor"]
+    required = factor * x["required_clamp_force"]
+    nominal, f_min, f_max = _method_band(method, permissible, at_yield, given)
+    k_thread, k_bearing, _ = _coefficients(bolt, mu_g, mu_k, formula)
+    torque = nominal * (k_thread + k_bearing)
+    values: dict[str, Any] = {
+        "controlled_quantity": method.controls,
+        "target_torque": torque,
+        "target_force": nominal,
+        "nominal_preload": nominal,
+        "preload_min": f_min,
+        "preload_max": f_max,
+        "scatter": method.scatter,
+        "tightening_factor": method.tightening_factor,
+        "required_preload": required,
+        "preload_factor": factor,
+        "permissible_preload": permissible,
+        "yield_preload": at_yield,
+    }
+    stretch: Any = None
+    if x.get("clamped_length") is not None:
+        lengths, diameters, fine = _grip_sections_arrays(bolt, x)
+        ok &= fine
+        compliance = pl.axial_compliance(lengths, diameters, x["youngs_modulus"])
+        parts = _clamped_compliance_arrays(bolt, x, method, ok)
+        stretch = compliance + parts
+        angle = pl.nut_rotation_angle(nominal, stretch, bolt.pitch)
+        values.update(
+            bolt_compliance=compliance,
+            clamped_compliance=parts,
+            equivalent_shank_diameter=pl.equivalent_shank_diameter(lengths, diameters),
+            target_elongation=pl.elongation(nominal, compliance),
+            target_angle=angle,
+        )
+        if x.get("coupling_outer_diameter") is not None:
+            values["target_displacement"] = angle * 0.5 * x["coupling_outer_diameter"]
+        if method.controls in ("angle", "displacement"):
+            verdicts["angle_resolution"] = angle * method.scatter >= ANGLE_READING_ERROR
+    elif method.controls in ("angle", "elongation", "displacement"):
+        raise InputOutOfRange(
+            f"method {method.key!r} sets the {method.controls}; give clamped_length",
+            field="clamped_length",
+        )
+    if method.controls == "displacement" and x.get("coupling_outer_diameter") is None:
+        raise InputOutOfRange(
+            f"method {method.key!r} sets a circumferential displacement; give "
+            "coupling_outer_diameter",
+            field="coupling_outer_diameter",
+        )
+    _bought_part_arrays(x, bolt, f_max, torque, values, verdicts)
+    top = at_yield * (1.0 + 1e-12)
+    meets, below = f_min >= required, f_max <= top
+    values["min_meets_clamp"] = meets
+    values["max_below_yield"] = below
+    verdicts["min_meets_clamp"] = meets
+    verdicts["max_below_yield"] = below
+
+    if ctx.wants("cheaper_methods", "passing_methods"):
+        # the same family's methods that pass both checks (and read their angle), cheapest
+        # first
+        candidates: list[ControlMethod] = []
+        passes: list[Any] = []
+        for other in sorted(METHODS, key=lambda m: (m.cost_rank, m.key)):
+            if other.family != method.family:
+                continue
+            if other.controls in ("angle", "displacement", "elongation") and stretch is None:
+                continue
+            if other.controls == "displacement" and x.get("coupling_outer_diameter") is None:
+                continue
+            o_nominal, o_min, o_max = _method_band(other, permissible, at_yield, given)
+            passing = (o_min >= required) & (o_max <= top)
+            if other.controls in ("angle", "displacement") and stretch is not None:
+                o_angle = pl.nut_rotation_angle(o_nominal, stretch, bolt.pitch)
+                passing = passing & ~(o_angle * other.scatter < ANGLE_READING_ERROR)
+            candidates.append(other)
+            passes.append(passing)
+        values["cheaper_methods"], values["passing_methods"] = _method_texts(
+            candidates, passes, method.cost_rank, n
+        )
+
+    scatter_wanted = ctx.wants(
+        "scatter_preload_min",
+        "scatter_preload_max",
+        "scatter_preload_mean",
+        "scatter_relative",
+        "scatter_torque_applied",
+    )
+    has_range = (
+        x.get("thread_friction_min") is not None or x.get("bearing_friction_min") is not None
+    )
+    if scatter_wanted and has_range:
+        g_lo, g_hi, fine_g = _range_arrays(x, "thread_friction", mu_g)
+        k_lo, k_hi, fine_k = _range_arrays(x, "bearing_friction", mu_k)
+        ok &= fine_g & fine_k
+        if bolt.bearing_friction_factor != 1.0:  # a countersunk head: μ_K acts on the cone
+            k_lo, k_hi = k_lo * bolt.bearing_friction_factor, k_hi * bolt.bearing_friction_factor
+        fixed = torque if x.get("scatter_torque") is None else x["scatter_torque"]
+        low, high, mean = _scatter_arrays(bolt, formula, fixed, (g_lo, g_hi), (k_lo, k_hi), n)
+        values.update(
+            scatter_preload_min=low,
+            scatter_preload_max=high,
+            scatter_preload_mean=mean,
+            scatter_relative=(high - low) / (high + low),
+            scatter_torque_applied=fixed,
+        )
+    elif scatter_wanted and (
+        x.get("thread_friction_max") is not None or x.get("bearing_friction_max") is not None
+    ):
+        raise InputOutOfRange(
+            "give thread_friction_min with thread_friction_max (and bearing_friction_min with "
+            "bearing_friction_max)",
+            field="thread_friction_min",
+        )
+    return Result(
+        values=_finish(values, ok, n),
+        rung=ctx.rung,
+        error_estimate=None,
+        notes=notes,
+        check_arrays=_verdicts(verdicts, ok, n),
+    )
 
 
 CONTROL_OUTPUTS: tuple[Output, ...] = (
@@ -1231,6 +1935,8 @@ CONTROL = ModelSpec(
     outputs=CONTROL_OUTPUTS,
     rungs=(CLOSED_FORM,),
     compute=_control,
+    vectorized=_control_arrays,
+    vector_rungs=("closed_form",),
     examples=(
         # [004, fig. 5]: 5/8"-11 UNC bolts at 80 N·m, friction 0.10…0.20 -> about ±30 %
         {

@@ -500,5 +500,8 @@ def test_property_quasi_static_stage1_within_its_estimate(
         return
     cf = run(RARE_IMPACT, x, fidelity="closed_form", outputs=wanted)
     est_w, est_t, _ = C.quasi_static_error(full(x))
-    assert _rel(cf.results["release_speed"], sim.results["release_speed"]) <= est_w
-    assert _rel(cf.results["spin_up_time"], sim.results["spin_up_time"]) <= est_t
+    # |cf - true| <= est and |sim - true| <= e_sim, so |cf - sim| <= est + e_sim: the
+    # simulation's own error counts (one case differed by 6e-8 more than est alone)
+    e_sim = sim.error_estimate or 0.0
+    assert _rel(cf.results["release_speed"], sim.results["release_speed"]) <= est_w + e_sim
+    assert _rel(cf.results["spin_up_time"], sim.results["spin_up_time"]) <= est_t + e_sim

@@ -1,0 +1,340 @@
+"""The clutch models' array paths: every output and check of the scalar compute, point by point.
+
+A design study evaluates its points through ``spec.vectorized``; the reference is the
+scalar compute run point by point (:func:`engine.run`, or :func:`engine.study.evaluate_chunk`
+with the array path switched off). Wide spreads here (±30 %, extreme angles and wires)
+make checks fail and points refuse, so verdicts and NaN placement are tested, not only
+the easy middle. The peak setting's closed form (the characteristic's lines in δ) is
+held to the scalar model's own root search (scipy brentq on the 81-point curve): two
+independent algorithms for the same number.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+import engine
+from engine import springs as sp
+from engine.errors import InputOutOfRange
+from engine.models import _clutch_asbuilt as asbuilt
+from engine.models.clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
+from engine.points import vector
+from engine.spec import ModelSpec, RunContext
+from engine.study import Study, Variable, evaluate_chunk, plan
+from engine.study_exec import run_study
+
+DEG = math.pi / 180
+FLOATS = {
+    BALL_CLUTCH.name: [o.name for o in BALL_CLUTCH.outputs if not o.series],
+    BALL_CLUTCH_SETTING.name: [o.name for o in BALL_CLUTCH_SETTING.outputs if not o.series],
+}
+
+
+def _spread(spec: ModelSpec, example: dict, n: int, spread: float, seed: int) -> dict:
+    rng = np.random.default_rng(seed)
+    cols = {}
+    for p in spec.inputs:
+        v = example.get(p.name)
+        if p.kind == "float" and isinstance(v, float) and v:
+            col = v * (1.0 + rng.uniform(-spread, spread, n))
+            hi = p.maximum if p.maximum is not None else np.inf
+            cols[p.name] = np.clip(col, p.minimum or 0.0, hi * (1 - 1e-12))
+    return cols
+
+
+def _loop(spec: ModelSpec) -> ModelSpec:
+    return dataclasses.replace(spec, vectorized=None, vector_rungs=())
+
+
+def _compare(spec: ModelSpec, base: dict, cols: dict) -> tuple[dict, dict]:
+    """Array path against the loop at the same points; returns the array path's checks."""
+    outputs = FLOATS[spec.name]
+    fast = evaluate_chunk(spec, base, cols, outputs, fidelity="closed_form")
+    slow = evaluate_chunk(_loop(spec), base, cols, outputs, fidelity="closed_form")
+    for name in outputs:
+        np.testing.assert_allclose(
+            fast.values[name], slow.values[name], rtol=1e-9, atol=0, equal_nan=True, err_msg=name
+        )
+    assert sorted(fast.checks) == sorted(slow.checks)
+    for name, verdicts in slow.checks.items():
+        np.testing.assert_array_equal(fast.checks[name], verdicts, err_msg=name)
+    return fast.checks, fast.values
+
+
+def _array_path_used(spec: ModelSpec, base: dict, cols: dict) -> frozenset[str]:
+    """The outputs the array path computed (it must not hand the points to the loop)."""
+    x, _ = spec.validate(base)
+    n = len(next(iter(cols.values())))
+    vec = vector(spec, {**x, **cols}, "closed_form", FLOATS[spec.name], 0.01, n)
+    assert vec is not None, f"{spec.name}: the array path declined, the points would loop"
+    return vec.computed
+
+
+@pytest.mark.parametrize("spec", [BALL_CLUTCH, BALL_CLUTCH_SETTING], ids=lambda s: s.name)
+def test_every_example_runs_on_the_array_path_and_matches_the_loop(spec):
+    failed_somewhere = set()
+    for k, example in enumerate(spec.examples):
+        cols = _spread(spec, example, 60 if spec is BALL_CLUTCH else 24, 0.3, seed=k)
+        computed = _array_path_used(spec, example, cols)
+        one = engine.run(spec, {**example, **{c: float(v[0]) for c, v in cols.items()}})
+        # every output the scalar compute gives at the first point, the array path gives
+        assert set(one.results) <= computed, set(one.results) - computed
+        checks, _ = _compare(spec, example, cols)
+        assert checks, f"example {k}: no checks reported"
+        failed_somewhere |= {n for n, v in checks.items() if (v == 1).any() and (v == 0).any()}
+    # the spread is wide enough that verdicts differ between points (the test can fail)
+    assert failed_somewhere
+
+
+def test_refused_points_are_nan_and_their_checks_unknown():
+    # α from 2° to 88° with f = 0.3 (ρ = 16.7°): the steep flanks wedge, the scalar refuses
+    base = {**BALL_CLUTCH.examples[3], "flank_friction": 0.3}
+    alpha = np.linspace(2 * DEG, 88 * DEG, 45)
+    checks, values = _compare(BALL_CLUTCH, base, {"groove_angle": alpha})
+    locked = alpha <= math.atan(0.3)
+    assert locked.any() and (~locked).any()
+    assert np.isnan(values["torque_limit"][locked]).all()
+    assert np.isfinite(values["torque_limit"][~locked]).all()
+    assert all((v[locked] == -1).all() for v in checks.values())
+    assert (checks["self_locking"][~locked] == 0).any() and (checks["self_locking"] == 1).any()
+
+
+def test_a_catalogue_wire_varied_across_and_off_its_table():
+    # EN 10270-1 DH: 0.3…20 mm tabulated; the coil is 32 mm, so 32 mm and more is no coil
+    base = dict(BALL_CLUTCH.examples[3])
+    wire = np.geomspace(1e-4, 0.05, 61)
+    cols = {"spring_wire_diameter": wire}
+    assert "tensile_strength" in _array_path_used(BALL_CLUTCH, base, cols)
+    checks, values = _compare(BALL_CLUTCH, base, cols)
+    off = (wire > 0.020 * (1 + 1e-9)) | (wire >= base["spring_mean_diameter"])
+    assert np.isnan(values["spring_force"][off]).all()
+    assert np.isfinite(values["tensile_strength"][~off]).all()
+    assert (checks["spring_index"][~off] == 0).any() and (checks["spring_index"] == 1).any()
+    assert (checks["solid_length"][~off] == 0).any()
+
+
+def test_tensile_strength_on_arrays_is_the_table_row_by_row():
+    for name, material in sp.MATERIALS.items():
+        wires = [u * f * 1e-3 for u, _ in material.strength for f in (1 - 2e-9, 1, 1 + 2e-9)]
+        wires += np.linspace(0.0, 0.03, 301).tolist()
+        got = sp.tensile_strength_array(name, np.array(wires))
+        for d, g in zip(wires, got, strict=True):
+            try:
+                want = sp.tensile_strength(name, d)
+            except InputOutOfRange:
+                assert math.isnan(g), (name, d)
+            else:
+                assert g == want, (name, d)
+
+
+def test_disc_stack_varied_runs_on_the_array_path():
+    base = dict(BALL_CLUTCH.examples[4])
+    n = 40
+    rng = np.random.default_rng(5)
+    cols = {
+        "spring_deflection": rng.uniform(0.0005, 0.005, n),
+        "disc_cone_height": rng.uniform(0.0008, 0.0025, n),
+        "disc_inner_diameter": rng.uniform(0.015, 0.04, n),  # some rings too narrow: refused
+    }
+    assert "disc_force_flat" in _array_path_used(BALL_CLUTCH, base, cols)
+    checks, values = _compare(BALL_CLUTCH, base, cols)
+    narrow = cols["disc_inner_diameter"] * 1.05 >= base["disc_outer_diameter"]
+    assert narrow.any() and np.isnan(values["peak_torque"][narrow]).all()
+    for name in ("disc_not_past_flat", "falling_curve"):
+        assert (checks[name][~narrow] == 0).any() and (checks[name][~narrow] == 1).any(), name
+
+
+def test_setting_extremes_no_coil_no_peak_setting_no_suggested_wire():
+    base = dict(BALL_CLUTCH_SETTING.examples[1])
+    base["target_torque"] = 1.0
+    # 0.01…1e5 N·m: the wire at the given deflection grows past the coil (no coil), the
+    # given spring's peak setting runs out, no preferred wire reaches the largest targets
+    cols = {"target_torque": np.geomspace(1e-2, 1e5, 21), "spring_deflection": np.full(21, 0.01)}
+    assert "required_peak_setting" in _array_path_used(BALL_CLUTCH_SETTING, base, cols)
+    checks, values = _compare(BALL_CLUTCH_SETTING, base, cols)
+    assert np.isnan(values["required_wire_shear_stress"]).any()
+    assert np.isfinite(values["required_wire_shear_stress"]).any()
+    assert (checks["required_wire_spring_index"] == 0).any()
+    for name in ("suggested_wire_diameter", "required_peak_setting"):
+        assert np.isnan(values[name]).any() and np.isfinite(values[name]).any(), name
+
+
+def test_setting_sized_from_the_drive_on_arrays():
+    base = dict(BALL_CLUTCH_SETTING.examples[1])
+    cols = {
+        "drive_power": np.linspace(100.0, 1500.0, 12),
+        "load_inertia": np.linspace(1e-4, 1e-2, 12),
+    }
+    _, values = _compare(BALL_CLUTCH_SETTING, base, cols)
+    rated = cols["drive_power"] / base["drive_speed"]
+    start = 6.0 * cols["load_inertia"] / (1e-3 + cols["load_inertia"])
+    np.testing.assert_allclose(values["rated_drive_torque"], rated, rtol=1e-15)
+    np.testing.assert_allclose(values["required_slip_torque"], np.maximum(2 * rated, start))
+    # with a target given as well, the target is checked against the drive
+    checks, _ = _compare(BALL_CLUTCH_SETTING, {**base, "target_torque": 5.0}, cols)
+    assert (checks["target_covers_drive"] == 0).any() and (checks["target_covers_drive"] == 1).any()
+
+
+def test_peak_setting_lines_against_the_scalar_root_search():
+    # the closed form min_k over the characteristic's lines against brentq on the curve
+    x, _ = BALL_CLUTCH_SETTING.validate(BALL_CLUTCH_SETTING.examples[1])
+    for lift in (None, 0.0, 0.002):
+        for driving in (None, 40 * DEG):
+            xx = {**x, "ball_lift": lift, "driving_groove_angle": driving}
+            spring = asbuilt.Spring(xx)
+            grid = asbuilt.SettingGrid(xx)
+            for target in (0.5, 2.0, 8.0):
+                force = 2 * target * math.tan(45 * DEG - math.atan(0.1)) / 0.05
+                got, stress = asbuilt.peak_setting_arrays(xx, grid, spring, target, force)
+                want = asbuilt._peak_setting(xx, spring, target, force)
+                if want is None:
+                    assert np.isnan(got).all()
+                else:
+                    assert float(np.squeeze(got)) == pytest.approx(want[0], rel=1e-12)
+                    assert float(np.squeeze(stress)) == pytest.approx(want[1], rel=1e-12)
+
+
+def test_study_pass_fractions_equal_single_runs():
+    """A Monte Carlo study's pass fractions (array path) against single runs at its points."""
+    spec = BALL_CLUTCH
+    ex = dict(spec.examples[3])  # DH wire, free length, face friction: every as-built check
+    study = Study(
+        variables=(
+            Variable("groove_angle", "uniform", low=15 * DEG, high=60 * DEG),
+            Variable("flank_friction", "uniform", low=0.0, high=0.3),
+            Variable("spring_deflection", "normal", mean=0.03, sd=0.008),
+            Variable("spring_wire_diameter", "uniform", low=0.0032, high=0.0048),
+        ),
+        base={
+            k: v
+            for k, v in ex.items()
+            if k
+            not in ("groove_angle", "flank_friction", "spring_deflection", "spring_wire_diameter")
+        },
+        samples=300,
+        seed=11,
+        outputs=("torque_limit", "peak_torque"),
+    )
+    result = run_study(spec, study)
+    points = plan(spec, study).columns
+    counts: dict[str, list[int]] = {}
+    for j in range(study.samples):
+        point = {**study.base, **{k: float(v[j]) for k, v in points.items()}}
+        try:
+            single = engine.run(spec, point, outputs=["torque_limit"])
+        except engine.EngineError:
+            continue
+        for c in single.checks:
+            counts.setdefault(c.name, [0, 0])[0 if c.ok else 1] += 1
+    summary = result.summary["checks"]
+    assert sorted(summary) == sorted(counts)
+    mixed = 0
+    for name, (passed, failed) in counts.items():
+        assert summary[name]["passed"] == passed, name
+        assert summary[name]["failed"] == failed, name
+        mixed += passed > 0 and failed > 0
+    assert mixed >= 2  # several checks are split by the study, so the comparison bites
+    assert result.summary["feasible"]["fraction"] is not None
+
+
+def test_a_study_asking_no_peak_output_skips_the_curve_with_the_same_verdicts():
+    # example 2: allowable stress given, no face friction: the checks need no peak
+    spec = BALL_CLUTCH
+    base = dict(spec.examples[2])
+    cols = _spread(spec, base, 50, 0.3, seed=3)
+    outs = ["torque_limit", "spring_shear_stress"]
+    fast = evaluate_chunk(spec, base, cols, outs, fidelity="closed_form")
+    slow = evaluate_chunk(_loop(spec), base, cols, outs, fidelity="closed_form")
+    assert sorted(fast.checks) == sorted(slow.checks)
+    for name, verdicts in slow.checks.items():
+        np.testing.assert_array_equal(fast.checks[name], verdicts, err_msg=name)
+    ctx = RunContext("closed_form", frozenset(outs), 0.01)
+    x, _ = spec.validate(base)
+    got = spec.vectorized({**x, **cols}, ctx)
+    assert "peak_torque" not in got.values  # left out for speed, not declared absent
+
+
+def test_rung_estimate_takes_arrays():
+    x, _ = BALL_CLUTCH.validate(BALL_CLUTCH.examples[0])
+    alpha = np.linspace(1 * DEG, 89 * DEG, 89)
+    friction = np.tile([0.0, 0.1, 0.5, 0.9], 23)[:89]
+    est = np.asarray(
+        BALL_CLUTCH.rungs[0].estimate({**x, "groove_angle": alpha, "flank_friction": friction})
+    )
+    for j in range(89):
+        one = BALL_CLUTCH.rungs[0].estimate(
+            {**x, "groove_angle": float(alpha[j]), "flank_friction": float(friction[j])}
+        )
+        if one is None:
+            assert math.isnan(est[j])
+        else:
+            assert est[j] == pytest.approx(one, rel=1e-12)
+    assert np.isnan(est).any() and np.isfinite(est).any()
+
+
+def test_a_sweep_names_the_rung_where_only_an_optional_output_is_null():
+    # example 3's spring cannot buckle (buckling_deflection null at every point): the points
+    # are computed all the same; only the wedged ones (α ≤ atan f) are refused
+    base = {**BALL_CLUTCH.examples[3], "flank_friction": 0.5}
+    alphas = np.linspace(0.1, 1.5, 8).tolist()
+    s = engine.sweep(BALL_CLUTCH, base, "groove_angle", alphas)
+    for j, a in enumerate(alphas):
+        try:
+            want = engine.run(BALL_CLUTCH, {**base, "groove_angle": a}).rung
+        except engine.EngineError:
+            want = None
+        assert s.rungs[j] == want, a
+    assert s.results["buckling_deflection"] == [None] * 8
+    assert None in s.rungs and "closed_form" in s.rungs
+
+
+def test_long_columns_are_evaluated_in_chunks_with_the_same_numbers():
+    from engine.models.clutch import _CHUNK, _forward_values
+
+    n = 2 * _CHUNK + 123
+    x, _ = BALL_CLUTCH.validate(BALL_CLUTCH.examples[3])
+    rng = np.random.default_rng(9)
+    cols = {
+        "groove_angle": rng.uniform(30 * DEG, 60 * DEG, n),
+        "spring_wire_diameter": rng.uniform(0.0035, 0.0045, n),
+    }
+    ctx = RunContext("closed_form", frozenset(FLOATS[BALL_CLUTCH.name]), 0.01)
+    got = BALL_CLUTCH.vectorized({**x, **cols}, ctx).values
+    whole = _forward_values({**x, **cols})
+    for name in ("peak_torque", "lift_at_peak", "spring_stress_max", "residual_torque"):
+        np.testing.assert_array_equal(got[name], whole[name], err_msg=name)
+
+
+def test_a_driving_flank_steeper_than_the_friction_angle_falls_back_per_point():
+    # α′ = 0.6° < ρ = 16.7°: the driving flank pulls, some lines fall with δ; those points
+    # are solved by the scalar root search inside the array path, the rest by the lines
+    base = {
+        **BALL_CLUTCH_SETTING.examples[1],
+        "driving_groove_angle": 0.01,
+        "flank_friction": 0.3,
+        "target_torque": 2.0,
+    }
+    cols = {"groove_angle": np.linspace(0.35, 1.5, 12), "target_torque": np.linspace(0.5, 5, 12)}
+    x, _ = BALL_CLUTCH_SETTING.validate(base)
+    regular = asbuilt.SettingGrid({**x, **cols}).regular
+    assert regular.any() and not regular.all()
+    _array_path_used(BALL_CLUTCH_SETTING, base, cols)
+    _, values = _compare(BALL_CLUTCH_SETTING, base, cols)
+    assert np.isfinite(values["required_peak_setting"]).any()
+
+
+def test_setting_with_a_varied_allowable_stress_stays_on_the_array_path():
+    base = {**BALL_CLUTCH_SETTING.examples[0], "allowable_shear_stress": 6e8}
+    cols = {
+        "allowable_shear_stress": np.linspace(2e8, 9e8, 12),
+        "target_torque": np.linspace(0.3, 3.0, 12),
+        "spring_mean_diameter": np.linspace(0.02, 0.05, 12),
+    }
+    assert "suggested_wire_diameter" in _array_path_used(BALL_CLUTCH_SETTING, base, cols)
+    _, values = _compare(BALL_CLUTCH_SETTING, base, cols)
+    # thicker wires for the larger coils and targets: the suggestion moves with the point
+    assert len(set(values["suggested_wire_diameter"].tolist())) > 6
