@@ -106,7 +106,9 @@ def test_the_toy_is_counted_by_hand() -> None:
 def base_url() -> Iterator[str]:
     import uvicorn
 
-    app = create_app(models=[GATE], study_settings=StudySettings(inprocess_points=10_000))
+    app = create_app(
+        models=[*engine.MODELS, GATE], study_settings=StudySettings(inprocess_points=10_000)
+    )
     sock = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
     sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
     sock.bind(("127.0.0.1", 0))
@@ -125,20 +127,32 @@ def base_url() -> Iterator[str]:
     sock.close()
 
 
-@pytest.fixture(params=[(1400, 900), (390, 844)], ids=["desktop", "phone"])
-def gate_page(request: Any, browser: Any, base_url: str) -> Iterator[Any]:  # noqa: F811
+def _page(request: Any, browser: Any, base_url: str, model: str) -> Iterator[Any]:  # noqa: F811
     width, height = request.param
     context = browser.new_context(viewport={"width": width, "height": height})
     context.set_default_timeout(30_000)
     problems: list[str] = []
     pg = context.new_page()
     pg.on("pageerror", lambda exc: problems.append(str(exc)))
-    pg.goto(f"{base_url}/study.html?model=toy.gate")
+    pg.goto(f"{base_url}/study.html?model={model}")
     pg.wait_for_selector("#study-rows tr")
-    pg.shot = f"study--checks-{request.node.callspec.id}"  # type: ignore[attr-defined]
+    pg.shot = f"study--checks-{request.node.callspec.id}"
     yield pg
     context.close()
     assert not problems, problems
+
+
+VIEWPORTS = {"params": [(1400, 900), (390, 844)], "ids": ["desktop", "phone"]}
+
+
+@pytest.fixture(**VIEWPORTS)
+def gate_page(request: Any, browser: Any, base_url: str) -> Iterator[Any]:  # noqa: F811
+    yield from _page(request, browser, base_url, "toy.gate")
+
+
+@pytest.fixture(**VIEWPORTS)
+def clutch_page(request: Any, browser: Any, base_url: str) -> Iterator[Any]:  # noqa: F811
+    yield from _page(request, browser, base_url, "clutch.ball")
 
 
 def _vary(pg: Any, name: str, **parts: str) -> None:
@@ -216,3 +230,40 @@ def test_a_monte_carlo_shows_the_pass_fractions_without_a_map(gate_page: Any) ->
     assert 67.0 < share < 73.0, fits
     assert pg.evaluate("document.documentElement.scrollWidth") <= pg.viewport_size["width"]
     pg.screenshot(path=str(SHOTS / f"{pg.shot}-mc.png"), full_page=True)
+
+
+def test_the_ball_clutch_grid_shows_the_checks_its_array_path_reports(clutch_page: Any) -> None:
+    """clutch.ball's array path reports its four checks: the page's pass shares are the
+    single runs' verdicts over the same 8 × 8 grid of spring deflection and wire diameter."""
+    pg = clutch_page
+    clutch = engine.get_model("clutch.ball")
+    ex = dict(clutch.examples[0])
+    deflections, wires = np.linspace(0.001, 0.012, 8), np.linspace(0.0015, 0.008, 8)
+    counts: dict[str, list[int]] = {}
+    feasible = 0
+    for s in deflections:
+        for d in wires:
+            r = engine.run(clutch, {**ex, "spring_deflection": s, "spring_wire_diameter": d})
+            for c in r.checks:
+                counts.setdefault(c.name, [0, 0])[0 if c.ok else 1] += 1
+            feasible += all(c.ok for c in r.checks)
+    assert set(counts) == {"spring_index", "groove_depth", "groove_angle", "self_locking"}
+    assert 0 < feasible < 64  # the map has a feasible region and an infeasible one
+    pg.select_option("#study-method", "grid")
+    _vary(pg, "spring_deflection", low="0.001", high="0.012", num="8")
+    _vary(pg, "spring_wire_diameter", low="0.0015", high="0.008", num="8")
+    pg.click("#study-run")
+    pg.wait_for_selector("#study-result:not([hidden])")
+    meta = pg.inner_text("#study-meta")
+    assert "64 designs (grid), 0 refused" in meta and "closed_form ×64" in meta
+    items = _checks(pg)
+    for name, (ok, bad) in counts.items():
+        line = f"{name.replace('_', ' ')}: {_pct(ok, 64)} pass ({ok} pass, {bad} fail)"
+        assert any(line in t for t in items), (line, items)
+    assert any(
+        f"all checks: {_pct(feasible, 64)} pass ({feasible} of 64 designs)" in t for t in items
+    )
+    assert "not evaluated on the model's array path" not in pg.inner_text("#study-notes")
+    assert pg.is_visible("#study-map")
+    assert pg.evaluate("document.documentElement.scrollWidth") <= pg.viewport_size["width"]
+    pg.screenshot(path=str(SHOTS / f"{pg.shot}-clutch.png"), full_page=True)
