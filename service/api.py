@@ -23,7 +23,7 @@ from engine import ModelSpec
 from engine.runner import DEFAULT_BUDGET_S, DEFAULT_MAX_STEPS
 
 from . import schemas
-from .units import UnitError, to_si
+from .units import quantity
 from .workers import EnginePool, Lane, Ticket, watch_disconnect
 
 API_PREFIX = "/api/v1"
@@ -93,16 +93,8 @@ def _response(result: engine.RunResult, max_series_points: int) -> dict[str, Any
 
 def _bound(spec: ModelSpec, name: str, value: float | str, end: str) -> float:
     """A sweep end point (``end``: start or stop) in SI units; unit strings use the varied
-    input's unit."""
-    unit = spec.param(name).unit
-    if isinstance(value, str):
-        try:
-            return to_si(value, unit)
-        except UnitError as exc:
-            raise engine.InputOutOfRange(f"{end} ({name}): {exc}", field=end) from None
-    if not math.isfinite(value):
-        raise engine.InputOutOfRange(f"{end} ({name}) must be a finite number", field=end)
-    return float(value)
+    input's unit (one reader with the study's law parameters: :func:`units.quantity`)."""
+    return quantity(spec.param(name), value, end, field=end)
 
 
 def _sweep_points(spec: ModelSpec, body: Any) -> list[float]:

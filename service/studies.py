@@ -13,13 +13,15 @@ the service's interpreter.
 Budgets: ``STUDY_MAX_POINTS`` points and ``STUDY_BUDGET_S`` seconds per study;
 at most ``STUDY_PER_CLIENT`` unfinished studies per client address and
 ``STUDY_MAX_ACTIVE`` in all (503 with Retry-After beyond that). Finished jobs
-are kept for ``STUDY_KEEP_S`` seconds (at most 64).
+are kept for ``STUDY_KEEP_S`` seconds (at most 64). A value out of its range (a zero
+or negative count or time) stops the service at start-up, naming the variable.
 """
 
 from __future__ import annotations
 
 import csv
 import io
+import json
 import math
 import os
 import threading
@@ -30,6 +32,7 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
+import numpy as np
 from fastapi import APIRouter, HTTPException, Request, Response
 from fastapi.concurrency import run_in_threadpool
 from fastapi.responses import JSONResponse
@@ -43,7 +46,7 @@ from engine.study_exec import Cancelled, DaskExecutor, InProcess, StudyRun, run_
 from . import schemas
 from .api import _ERRORS, API_PREFIX
 from .config import _float, _int
-from .units import UnitError, to_si
+from .units import quantity
 
 _KEEP_JOBS = 64
 
@@ -63,6 +66,25 @@ class StudySettings:
         default_factory=lambda: os.environ.get("DASK_SCHEDULER") or None
     )
     dask_workers: int | None = field(default_factory=lambda: _int("DASK_WORKERS", 0) or None)
+
+    def __post_init__(self) -> None:
+        """Refuse a bound that makes no sense at start-up, naming the variable and its range
+        (as :class:`service.config.Settings` does), not at the first study."""
+        counts = (  # (variable, value, lowest allowed, what the lowest value means)
+            ("STUDY_MAX_POINTS", self.max_points, 1, ""),
+            ("STUDY_PER_CLIENT", self.per_client, 1, ""),
+            ("STUDY_MAX_ACTIVE", self.max_active, 1, ""),
+            ("STUDY_INPROCESS_POINTS", self.inprocess_points, 0, "0: every study on Dask"),
+            ("STUDY_KEEP_POINTS", self.keep_points_max, 0, "0: raw points never kept"),
+            ("DASK_WORKERS", self.dask_workers or 0, 0, "0: one worker per core"),
+        )
+        for name, value, lowest, meaning in counts:
+            if not value >= lowest:
+                note = f" ({meaning})" if meaning else ""
+                raise ValueError(f"{name} must be an integer >= {lowest}{note}, not {value!r}")
+        for name, seconds in (("STUDY_BUDGET_S", self.budget_s), ("STUDY_KEEP_S", self.keep_s)):
+            if not seconds > 0:  # NaN too
+                raise ValueError(f"{name} must be a number of seconds > 0, not {seconds!r}")
 
 
 Number = float | str
@@ -100,7 +122,10 @@ class StudyIn(BaseModel):
     bins: int = Field(default=30, ge=1, le=200)
     feasible_when: str | None = Field(default=None, max_length=80)
     keep_points: bool = Field(
-        default=False, description="keep the raw points for GET /api/v1/jobs/{id}/points.csv"
+        default=False,
+        description=(
+            "keep the raw points for GET /api/v1/jobs/{id}/points.csv and /points.parquet"
+        ),
     )
 
 
@@ -158,6 +183,7 @@ class Job:
             body["result"] = self.run.summary
             if self.keep_points:
                 body["links"]["points_csv"] = f"{API_PREFIX}/jobs/{self.id}/points.csv"
+                body["links"]["points_parquet"] = f"{API_PREFIX}/jobs/{self.id}/points.parquet"
         return body
 
 
@@ -296,25 +322,18 @@ class Studies:
             self._dask.close()
 
 
-def _si(spec: ModelSpec, name: str, value: Number | None, what: str) -> float | None:
+def _si(spec: ModelSpec, name: str, value: Number | None, part: str) -> float | None:
+    """A law's ``part`` (low, high, mean, sd, mode) in SI units: one reader with the sweep's
+    ends (:func:`units.quantity`)."""
     if value is None:
         return None
     try:
-        unit = spec.param(name).unit
+        param = spec.param(name)
     except KeyError:
         raise engine.InputOutOfRange(
             f"variables: {name!r} is not an input of {spec.name}", field="variables"
         ) from None
-    if isinstance(value, str):
-        try:
-            return to_si(value, unit)
-        except UnitError as exc:
-            raise engine.InputOutOfRange(
-                f"variables: {name}.{what}: {exc}", field="variables"
-            ) from None
-    if not math.isfinite(value):
-        raise engine.InputOutOfRange(f"variables: {name}.{what} must be finite", field="variables")
-    return float(value)
+    return quantity(param, value, part, field="variables", spread=part == "sd")
 
 
 def to_study(spec: ModelSpec, body: StudyIn) -> Study:
@@ -328,10 +347,7 @@ def to_study(spec: ModelSpec, body: StudyIn) -> Study:
                 f"base: unknown input {name!r} for model {spec.name}", field="base"
             ) from None
         if isinstance(value, str) and param.is_numeric:
-            try:
-                value = to_si(value, param.unit)
-            except UnitError as exc:
-                raise engine.InputOutOfRange(f"{name}: {exc}", field=name) from None
+            value = quantity(param, value, "base", field=name)
         base[name] = value
     variables = tuple(
         Variable(
@@ -418,6 +434,15 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
     def cancel_job(job_id: str) -> dict[str, Any]:
         return studies.cancel(job_id).describe()
 
+    def finished(job_id: str) -> tuple[Job, StudyRun]:
+        job = studies.get(job_id)
+        if job.run is None or not job.keep_points:
+            raise HTTPException(
+                status_code=404,
+                detail="no points: the study is not done, or was run without keep_points",
+            )
+        return job, job.run
+
     @router.get(
         "/jobs/{job_id}/points.csv",
         summary="The raw points of a finished study (asked with keep_points)",
@@ -425,13 +450,8 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
         responses={**_404, 200: {"content": {"text/csv": {}}, "description": "the points"}},
     )
     def points(job_id: str) -> Response:
-        job = studies.get(job_id)
-        if job.run is None or not job.keep_points:
-            raise HTTPException(
-                status_code=404,
-                detail="no points: the study is not done, or was run without keep_points",
-            )
-        header, matrix = points_table(job.run.plan, job.run.merged)
+        job, run = finished(job_id)
+        header, matrix = points_table(run.plan, run.merged)
         out = io.StringIO()
         writer = csv.writer(out)
         writer.writerow(header)
@@ -443,7 +463,63 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
             headers={"content-disposition": f'attachment; filename="study-{job.id}.csv"'},
         )
 
+    @router.get(
+        "/jobs/{job_id}/points.parquet",
+        summary="The raw points of a finished study as Parquet (asked with keep_points)",
+        description=(
+            "The columns of points.csv (inputs, then outputs, SI), float64, null where a "
+            "point was refused; each field's `unit` metadata and the schema's `units` say "
+            "the units."
+        ),
+        response_class=Response,
+        responses={
+            **_404,
+            200: {"content": {PARQUET: {}}, "description": "the points"},
+        },
+    )
+    def points_parquet(job_id: str) -> Response:
+        job, run = finished(job_id)
+        return Response(
+            parquet_points(job.id, run),
+            media_type=PARQUET,
+            headers={"content-disposition": f'attachment; filename="study-{job.id}.parquet"'},
+        )
+
     return router
+
+
+#: The media type registered for Parquet (IANA, 2024).
+PARQUET = "application/vnd.apache.parquet"
+
+
+def parquet_points(job_id: str, run: StudyRun) -> bytes:
+    """The raw points of a study as a Parquet file: the CSV's columns, float64, SI units.
+
+    A point the model refused is null (the CSV leaves the cell empty); each field carries
+    its unit in its metadata (``unit``), and the schema names the model, the job and every
+    column's unit (``units``, JSON) so a reader that drops field metadata still has them.
+    """
+    import pyarrow as pa  # imported on first use: the service starts without it loaded
+    import pyarrow.parquet as pq
+
+    header, matrix = points_table(run.plan, run.merged)
+    units = {**run.summary.get("input_units", {}), **run.summary.get("units", {})}
+    fields, arrays = [], []
+    for i, name in enumerate(header):
+        col = np.ascontiguousarray(matrix[:, i], dtype=np.float64)
+        arrays.append(pa.array(col, type=pa.float64(), mask=~np.isfinite(col)))
+        fields.append(pa.field(name, pa.float64(), metadata={"unit": units.get(name, "")}))
+    schema = pa.schema(
+        fields,
+        metadata={
+            "model": run.summary.get("model", ""),
+            "job": job_id,
+            "units": json.dumps({name: units.get(name, "") for name in header}),
+        },
+    )
+    out = io.BytesIO()
+    pq.write_table(pa.Table.from_arrays(arrays, schema=schema), out)
+    return out.getvalue()
 
 
 __all__ = ["Studies", "StudySettings", "study_router", "to_study"]

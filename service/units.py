@@ -23,6 +23,8 @@ from typing import Any
 
 import pint
 
+from engine import InputOutOfRange, Param
+
 MAX_UNIT_STRING = 64
 
 _NUMBER = r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d{1,3})?"
@@ -117,3 +119,42 @@ def to_si(text: str, target: str) -> float:
     if not math.isfinite(result):
         raise UnitError(f"{text!r} is not a finite quantity")
     return result
+
+
+def quantity(
+    param: Param, value: float | str, part: str, field: str, spread: bool = False
+) -> float:
+    """One number the request gives for ``param`` (a sweep end, a study law's low, high,
+    mean, mode or standard deviation), in SI units; refused with a message naming the input,
+    the part, the value as the user wrote it and the allowed range.
+
+    ``spread``: the value is a width (a standard deviation), not a value of the input, so the
+    input's range does not bound it. ``field`` is the request field the error names.
+
+    >>> from engine import Param
+    >>> speed = Param("speed", "rad/s", "speed", minimum=0.0, maximum=1e4)
+    >>> round(quantity(speed, "1450 rpm", "start", "start"), 3)
+    151.844
+    >>> try:
+    ...     quantity(speed, "5 kg", "stop", "stop")
+    ... except InputOutOfRange as exc:
+    ...     print(exc.field, "|", exc.message)  # doctest: +NORMALIZE_WHITESPACE
+    stop | speed (stop) = '5 kg': 'kg' has the wrong dimension: expected rad/s (write
+    products as 'N*m'); allowed: a finite number ≥ 0 rad/s and ≤ 10000 rad/s, in rad/s or
+    as a string with a unit
+    """
+    unit = "a plain number" if param.unit == "1" else f"in {param.unit} or as a string with a unit"
+    allowed = f"a finite number > 0, {unit}" if spread else f"{param.range_text()}, {unit}"
+    if isinstance(value, str):
+        try:
+            return to_si(value, param.unit)
+        except UnitError as exc:
+            reason = str(exc)
+    elif math.isfinite(value):
+        return float(value)
+    else:
+        reason = "not a finite number"
+    shown = repr(value) if isinstance(value, str) else f"{value}"
+    raise InputOutOfRange(
+        f"{param.name} ({part}) = {shown}: {reason}; allowed: {allowed}", field=field
+    )

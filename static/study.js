@@ -266,21 +266,54 @@ function render(j) {
     );
   });
   $("#study-stats").replaceChildren(el("thead", {}, head), el("tbody", {}, ...rows));
-  $("#study-checks").replaceChildren(
-    ...Object.entries(summary.checks).map(([name, c]) =>
-      el("li", { class: c.failed ? "fail" : "ok" }, el("span", { class: "mark", text: c.failed ? "✗ " : "✓ " }),
-        `${name}: ${c.pass_fraction === null ? "not evaluated" : (100 * c.pass_fraction).toFixed(1) + " % pass"} (${c.failed} fail)`),
-    ),
-  );
-  if (!Object.keys(summary.checks).length) $("#study-checks").append(el("li", { text: "no checks reported (array path); see notes" }));
+  renderChecks();
   $("#study-notes").replaceChildren(...summary.notes.map((n) => el("li", { text: n })),
     ...Object.entries(summary.refusals || {}).map(([k, v]) => el("li", { text: `${v} refused: ${k}` })));
   const blob = new Blob([JSON.stringify(summary, null, 1)], { type: "application/json" });
   $("#study-json").href = URL.createObjectURL(blob);
-  const csv = $("#study-csv");
-  csv.hidden = !j.links.points_csv;
-  if (j.links.points_csv) csv.href = j.links.points_csv.replace(/^\//, "");
+  for (const [id, link] of [["#study-csv", j.links.points_csv], ["#study-parquet", j.links.points_parquet]]) {
+    const a = $(id);
+    a.hidden = !link;
+    if (link) a.href = link.replace(/^\//, "");
+  }
   draw();
+}
+
+function passBar(fraction) {
+  const bar = el("span", { class: "pass-bar", "aria-hidden": "true" }, el("span"));
+  bar.firstChild.style.width = `${fraction === null ? 0 : Math.round(1000 * fraction) / 10}%`;
+  return bar;
+}
+
+// The share of designs passing each check, and all of them (the feasible share), as the
+// array path or the single runs reported them: refused designs are "not evaluated".
+function renderChecks() {
+  const list = $("#study-checks");
+  const pct = (f) => (f === null ? "not evaluated" : `${(100 * f).toFixed(1)} % pass`);
+  const item = (name, fraction, detail, passed, failed) => {
+    const cls = fraction === null ? "unknown" : failed === 0 ? "ok" : passed === 0 ? "fail" : "part";
+    const mark = { ok: "✓", fail: "✗", part: "◐", unknown: "–" }[cls];
+    return el("li", { class: cls }, el("span", { class: "mark", text: `${mark} ` }), passBar(fraction),
+      el("span", { text: `${name}: ${pct(fraction)} ` }), el("span", { class: "hint", text: detail }));
+  };
+  const rows = Object.entries(summary.checks).map(([name, c]) => {
+    const unknown = c.unknown ? `, ${c.unknown.toLocaleString("en")} not evaluated` : "";
+    return item(name.replaceAll("_", " "), c.pass_fraction,
+      `(${c.passed.toLocaleString("en")} pass, ${c.failed.toLocaleString("en")} fail${unknown})`, c.passed, c.failed);
+  });
+  const f = summary.feasible;
+  if (rows.length || f.fraction !== null) {
+    const every = f.criterion === "every reported check passes";
+    const ok = f.fraction === null ? 0 : Math.round(f.fraction * f.known);
+    const rest = summary.points - f.known;
+    rows.push(item(every ? "all checks" : `feasible (${f.criterion.replaceAll("_", " ")})`, f.fraction,
+      `(${ok.toLocaleString("en")} of ${f.known.toLocaleString("en")} designs${rest ? `, ${rest.toLocaleString("en")} not known` : ""})`,
+      ok, f.known - ok));
+    rows[rows.length - 1].classList.add("all");
+  }
+  if (!Object.keys(summary.checks).length)
+    rows.unshift(el("li", { class: "unknown", text: "no checks reported (the model's array path gives none); see notes" }));
+  list.replaceChildren(...rows);
 }
 
 function draw() {
@@ -302,8 +335,10 @@ function axes(ctx, w, h, pad, xlo, xhi, ylo, yhi, xlabel, ylabel) {
   ctx.textAlign = "center";
   for (let i = 0; i <= 4; i++) {
     const x = pad.l + ((w - pad.l - pad.r) * i) / 4;
-    ctx.fillText(fmt(xlo + ((xhi - xlo) * i) / 4, 3), x, h - pad.b + 14);
+    ctx.textAlign = i === 4 ? "right" : "center"; // the last tick label stays on the canvas
+    ctx.fillText(fmt(xlo + ((xhi - xlo) * i) / 4, 3), i === 4 ? w - 2 : x, h - pad.b + 14);
   }
+  ctx.textAlign = "center";
   ctx.fillText(xlabel, (w + pad.l - pad.r) / 2, h - 4);
   ctx.textAlign = "right";
   for (let i = 0; i <= 4; i++) {
@@ -334,7 +369,7 @@ function drawHistogram(name) {
     xhi = Math.max(xhi, summary.outputs[r].mean);
   }
   if (xhi === xlo) xhi = xlo + 1;
-  const pad = { l: 56, r: 12, t: 12, b: 36 };
+  const pad = { l: 68, r: 12, t: 12, b: 36 }; // room for "0.00925" beside the rotated label
   const ymax = Math.max(...counts, 1);
   axes(ctx, w, h, pad, xlo, xhi, 0, ymax, name.replaceAll("_", " ") + unit, "designs");
   const X = (v) => pad.l + ((v - xlo) / (xhi - xlo)) * (w - pad.l - pad.r);
@@ -387,7 +422,7 @@ function drawMap(name) {
     values = values.map((row) => row.map((col) => col[k]));
     feasible = feasible.map((row) => row.map((col) => col[k]));
   }
-  const pad = { l: 56, r: 12, t: 12, b: 36 };
+  const pad = { l: 68, r: 12, t: 12, b: 36 }; // room for "0.00925" beside the rotated label
   if (axesNames.length === 1) {
     const xs = grid.axes[axesNames[0]];
     const ys = values.filter((v) => v !== null);
@@ -441,9 +476,12 @@ function drawMap(name) {
   }
   ctx.stroke();
   ctx.lineWidth = 1;
-  ctx.fillStyle = "#1d2630";
   ctx.textAlign = "left";
-  ctx.fillText(`${name.replaceAll("_", " ")}: ${fmt(lo, 3)} … ${fmt(hi, 3)}${axesNames.length === 3 ? ` (slice ${axesNames[2]} = ${fmt(grid.axes[axesNames[2]][Math.floor(grid.shape[2] / 2)], 3)})` : ""}`, pad.l + 4, pad.t + 12);
+  const legend = `${name.replaceAll("_", " ")}: ${fmt(lo, 3)} … ${fmt(hi, 3)}${axesNames.length === 3 ? ` (slice ${axesNames[2]} = ${fmt(grid.axes[axesNames[2]][Math.floor(grid.shape[2] / 2)], 3)})` : ""}`;
+  ctx.fillStyle = "rgba(255,255,255,0.85)"; // readable over the dark end of the colour ramp
+  ctx.fillRect(pad.l + 1, pad.t + 1, ctx.measureText(legend).width + 6, 16);
+  ctx.fillStyle = "#1d2630";
+  ctx.fillText(legend, pad.l + 4, pad.t + 12);
 }
 
 function drawSensitivity(name) {
