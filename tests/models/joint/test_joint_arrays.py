@@ -104,7 +104,7 @@ def test_every_example_with_every_float_input_varied_at_once(k):
     base = dict(JOINT.examples[k])
     columns = {
         name: col
-        for name, col in _columns(JOINT, base, seed=100 + k).items()
+        for name, col in _columns(JOINT, base, seed=100 + k, rung="closed_form").items()
         if name not in ("thread_diameter", "thread_pitch")
     }
     assert _uses_array_path(base, columns)
