@@ -9,6 +9,7 @@ the curves the papers plot.
 from __future__ import annotations
 
 import contextlib
+import functools
 import math
 import threading
 import time
@@ -48,12 +49,21 @@ class RunResult:
 
 @dataclass
 class SweepResult:
-    """One input varied over ``values``; ``results[name][i]`` belongs to ``values[i]``."""
+    """One input varied over ``values``; ``results[name][i]`` belongs to ``values[i]``.
+
+    The sweep keeps its columns as numpy arrays (``columns``: a float array with NaN,
+    or an object array with None, where a point was not computed); ``results``,
+    ``values``, ``rungs`` and ``error_estimates`` are the same as Python lists, made
+    on first use. A caller that encodes the arrays itself never builds a Python
+    object per point (issue 21).
+    """
 
     model: str
     vary: str
-    values: list[float]
-    results: dict[str, list[Value]]
+    #: The swept values, one per point.
+    value_array: np.ndarray
+    #: Per output, one entry per point (NaN or None where not computed).
+    columns: dict[str, np.ndarray]
     units: dict[str, str]
     rung: str
     elapsed_s: float
@@ -61,9 +71,36 @@ class SweepResult:
     warnings: list[str] = field(default_factory=list)
     #: The rung that ran at each point (None where the point was refused): ``auto``
     #: chooses per point, so a sweep across a regime change may mix rungs.
-    rungs: list[str | None] = field(default_factory=list)
-    #: Each point's error estimate (None where refused or not known).
-    error_estimates: list[float | None] = field(default_factory=list)
+    rung_array: np.ndarray = field(default_factory=lambda: np.empty(0, dtype=object))
+    #: Each point's error estimate (NaN where refused or not known).
+    error_array: np.ndarray = field(default_factory=lambda: np.empty(0))
+
+    @functools.cached_property
+    def values(self) -> list[float]:
+        return list(self.value_array.astype(float).tolist())
+
+    @functools.cached_property
+    def results(self) -> dict[str, list[Value]]:
+        return {name: _listed(column) for name, column in self.columns.items()}
+
+    @functools.cached_property
+    def rungs(self) -> list[str | None]:
+        return list(self.rung_array.tolist())
+
+    @functools.cached_property
+    def error_estimates(self) -> list[float | None]:
+        return _listed(self.error_array)  # type: ignore[return-value]
+
+
+def _listed(column: np.ndarray) -> list[Value]:
+    """A column as a list: NaN (and inf) of a float column become None."""
+    out: list[Value] = column.tolist()
+    if column.dtype.kind == "f":
+        bad = ~np.isfinite(column)
+        if bad.any():
+            for i in np.flatnonzero(bad).tolist():
+                out[i] = None
+    return out
 
 
 def _rung_summary(rungs: Sequence[str | None]) -> tuple[str, list[str]]:
@@ -513,30 +550,23 @@ def sweep(
             raise first_refusal  # the fixed inputs themselves are out of range
         notes.append("no point of the sweep could be computed")
     order = [o for o in scalar_names if o in computed] + [o for o in computed if o not in known]
-    results: dict[str, list[Value]] = {name: columns[name].tolist() for name in order}
     rung_list: list[str | None] = rungs.tolist()
     rung, mixed = _rung_summary(rung_list)
     if asked == "auto" and not mixed and rung:
         notes.insert(0, f"auto: chose {rung!r} at every point (tolerance {tol:.2g})")
     units = {o.name: o.unit for o in spec.outputs}
-    finite_errors = np.isfinite(errors)
-    error_list: list[float | None] = errors.tolist()
-    if not finite_errors.all():
-        error_list = [
-            e if ok else None for e, ok in zip(error_list, finite_errors.tolist(), strict=True)
-        ]
     return SweepResult(
         model=spec.name,
         vary=vary,
-        values=arr.astype(float).tolist(),
-        results=results,
-        units={name: units[name] for name in results},
+        value_array=arr,
+        columns={name: columns[name] for name in order},
+        units={name: units[name] for name in order},
         rung=rung,
         elapsed_s=time.perf_counter() - start,
         notes=mixed + notes,
         warnings=warnings,
-        rungs=rung_list,
-        error_estimates=error_list,
+        rung_array=rungs,
+        error_array=errors,
     )
 
 
