@@ -1067,8 +1067,10 @@ def friction_scatter_preloads(
 
 #: Gauss–Legendre rules of :func:`friction_scatter_band`'s μ_G integral (in the logarithmic
 #: variable v): 8 nodes on an interval up to ``SCATTER_MEAN_SHORT`` long, else panels up to
-#: ``SCATTER_MEAN_PANEL`` long with 16 nodes each; each within 1e-14 relative of a 64-node
-#: rule on 20,000 random bolts, ranges and formulas (tests/models/preload/test_scatter_mean.py).
+#: ``SCATTER_MEAN_PANEL`` long with 16 nodes each. Chosen against a 64-node rule on 20,000
+#: random bolts, ranges and formulas (worst 7e-16 for 8 nodes up to 1.5, 3.8e-15 for 16 up
+#: to 6; 8 nodes at 2.0 would give 3e-14); tests/models/preload/test_scatter_mean.py holds
+#: the result to a closed form, to scipy's quad and dblquad and to Monte Carlo.
 SCATTER_MEAN_SHORT = 1.5
 SCATTER_MEAN_PANEL = 6.0
 _GL_RULES = {
@@ -1159,12 +1161,15 @@ def friction_scatter_band(
 
     The mean is exact to about 1e-13 relative. k_K is linear in μ_K under every
     formula, so the μ_K integral is analytic (the log1p form above; M/u as
-    c Δ_K/u → 0). The μ_G integral is Gauss–Legendre, 16 nodes per panel, in
-    v = ln(μ_G − μ_G,min + δ) with δ = Δ_G u(μ_G,min)/(k_G(μ_G,max) − k_G(μ_G,min)):
+    c Δ_K/u → 0). The μ_G integral is Gauss–Legendre in
+    v = ln(μ_G − μ_G,min + δ), δ = Δ_G u(μ_G,min)/(k_G(μ_G,max) − k_G(μ_G,min)):
     the integrand's nearest singularity (u = 0) lies δ below μ_G,min for a linear k_G
     and farther for the convex ``exact`` one, so in v it is smooth however close the
-    singularity comes (μ_G,min and μ_K,min near 0 on a fine pitch); panels of length
-    ≤ 6 in v, one for every ISO thread with coefficients in 0…1.
+    singularity comes (μ_G,min and μ_K,min near 0 on a fine pitch). The v interval is
+    ℓ = ln(1 + Δ_G/δ) long: 8 nodes up to ℓ = 1.5 (ranges 0.10…0.20 on ISO threads:
+    ℓ ≈ 0.3–0.4), else 16 nodes per panel of ≤ 6 (M12 with both coefficients 0…1:
+    ℓ ≈ 3.2; a second panel only for pitches below about 0.01 d2 with both minimum
+    coefficients near 0).
 
     Before this function, ``preload.control`` took the mean of a 64 × 64 midpoint
     grid (:func:`friction_scatter_preloads`) and the band from the grid's corner
