@@ -179,8 +179,17 @@ def vector(
         if name not in result.values or name in absent:
             values[name] = np.full(n, np.nan)  # not computed by this rung
             continue
+        got = result.values[name]
+        if (
+            isinstance(got, np.ndarray)
+            and got.shape == (n,)
+            and (dtype is None or got.dtype == np.dtype(dtype))
+            and got.flags.writeable
+        ):
+            values[name] = got  # already a column of its own (the common case): no copy
+            continue
         try:
-            column = np.broadcast_to(np.asarray(result.values[name], dtype=dtype), (n,))
+            column = np.broadcast_to(np.asarray(got, dtype=dtype), (n,))
         except (TypeError, ValueError):
             return None
         values[name] = column.copy()

@@ -571,7 +571,8 @@ def _size_labels(x: Mapping[str, Any], diameter: Any, n: int) -> np.ndarray:
     p_in = x.get("thread_pitch")
     p = None if p_in is None else np.broadcast_to(np.asarray(p_in, dtype=float), (n,))
     _, near = _table_lookup(d, fa.METRIC_COARSE_PITCH_MM)
-    out = np.array([f"d = {v * 1e3:g} mm {cls}" for v in d.tolist()], dtype=object)
+    out = np.empty(n, dtype=object)
+    out[:] = list(map(f"d = %g mm {cls}".__mod__, (d * 1e3).tolist()))
     for j in np.flatnonzero(near).tolist():
         thread = fz._catalogue_thread(float(d[j]), None if p is None else float(p[j]))
         if thread is not None:
