@@ -480,14 +480,22 @@ def table(results: dict[str, Any]) -> str:
             f"{_fmt_err(row.get('error')):>9} {_fmt_err(row.get('estimate')):>9} {honest:>6}  "
             + (", ".join(row.get("outputs_compared", [])) or str(row.get("notes", "")))
         )
-    targets = [r for r in results["rows"] if r.get("target_s") is not None]
-    if targets:  # issue 21's targets (bench/extra_targets.py), each beside its measured figure
+    targets = [
+        r
+        for r in results["rows"]
+        if r.get("target_s") is not None or r.get("target_ratio") is not None
+    ]
+    if targets:  # issue 21's targets (bench/extra_targets.py, extra_service.py) beside figures
         lines += ["", "Targets (issue 21): measured against target, with the floors"]
         for row in targets:
             met = {True: "met", False: "MISSED"}.get(row.get("met"), "")
+            if row.get("target_ratio") is not None:  # a ratio to a floor measured alongside
+                figure, goal = f"×{row['ratio']:.2f}", f"×{row['target_ratio']:g}"
+            else:
+                figure, goal = _fmt_time(row["time_s"]), _fmt_time(row["target_s"])
             lines.append(
-                f"{row['model']:<22} {row['case']:<28} {_fmt_time(row['time_s']):>10} "
-                f"target ≤ {_fmt_time(row['target_s'])} {met:<6}  {row.get('notes', '')}"
+                f"{row['model']:<22} {row['case']:<28} {figure:>10} "
+                f"target ≤ {goal} {met:<6}  {row.get('notes', '')}"
             )
     if results["sweeps"]:
         lines += ["", "Sweeps"]

@@ -2,7 +2,9 @@
 
 Routes are a few lines each: turn the validated body into SI inputs, call
 :func:`engine.run` or :func:`engine.sweep` in the engine pool
-(:mod:`service.workers`) with the request's budgets, return what it gives.
+(:mod:`service.workers`) with the request's budgets, return what it gives. A
+single evaluation of a cheap rung runs inline on the event loop under a time
+box (:class:`service.workers.Inline`); everything else in its lane.
 Engine errors become HTTP statuses in :mod:`service.errors`.
 """
 
@@ -24,7 +26,7 @@ from engine.runner import DEFAULT_BUDGET_S, DEFAULT_MAX_STEPS
 
 from . import schemas
 from .units import quantity
-from .workers import EnginePool, Lane, Ticket, watch_disconnect
+from .workers import EnginePool, FallBack, Lane, Ticket, watch_disconnect
 
 API_PREFIX = "/api/v1"
 _COMMON = ("fidelity", "tolerance", "outputs", "series")
@@ -135,19 +137,30 @@ def _rung_for(spec: ModelSpec, body: Any, inputs: dict[str, Any]) -> str | None:
         return None
 
 
-def _lane(
+def _route(
     spec: ModelSpec, body: Any, inputs: dict[str, Any], pool: EnginePool, sweep: bool
-) -> Lane:
-    """Heavy lane for a heavy rung, and for a sweep that loops (no array path for its rung)."""
+) -> tuple[Lane, str | None]:
+    """The lane, and for a single evaluation that may run inline, the rung it will run.
+
+    The rung is None where inline is out: a heavy rung, a rung with a fallback,
+    a sweep, inputs the rung choice refused. Without heavy rungs the fidelity
+    asked for names the rung ("auto" then picks among cheap ones only).
+    """
     heavy = {r.name for r in spec.rungs if r.heavy}
     if not heavy and not sweep:
-        return pool.quick
-    rung = _rung_for(spec, body, inputs)
-    if rung in heavy:
-        return pool.heavy
-    if sweep and (spec.vectorized is None or rung not in spec.vector_rungs):
-        return pool.heavy
-    return pool.quick
+        rung: str | None = _fidelity_of(spec, body)
+    else:
+        rung = _rung_for(spec, body, inputs)
+        if rung in heavy:
+            return pool.heavy, None
+        if sweep:
+            if spec.vectorized is None or rung not in spec.vector_rungs:
+                return pool.heavy, None
+            return pool.quick, None
+    fallback = {r.name for r in spec.rungs if r.fallback is not None}
+    if rung is None or rung in fallback or (rung == "auto" and fallback):
+        return pool.quick, None
+    return pool.quick, rung
 
 
 async def _in_lane(request: Request, lane: Lane, fn: Any, budget_s: float, what: str) -> Any:
@@ -193,8 +206,17 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
             )
             return _response(result, lim.max_series_points)
 
-        lane = _lane(spec, body, inputs, lim.pool, sweep=False)
-        return await _in_lane(request, lane, work, lim.budget_s, spec.name)
+        lane, rung = _route(spec, body, inputs, lim.pool, sweep=False)
+        if rung is None:
+            return await _in_lane(request, lane, work, lim.budget_s, spec.name)
+        inline = lim.pool.inline
+        key = (spec.name, rung, bool(body.series or body.outputs))  # type: ignore[attr-defined]
+        if inline.allows(key):
+            try:
+                return inline.run(work, key, lim.budget_s)
+            except FallBack:
+                pass  # it checks its budget and needs longer than the time box: a lane
+        return await _in_lane(request, lane, inline.timed(work, key), lim.budget_s, spec.name)
 
     async def sweep(body: sweep_request, request: Request) -> Any:  # type: ignore[valid-type]
         values = _sweep_points(spec, body)
@@ -229,7 +251,7 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
             }
 
         point = {**base, body.vary: values[0]}  # type: ignore[attr-defined]
-        lane = _lane(spec, body, point, lim.pool, sweep=True)
+        lane, _ = _route(spec, body, point, lim.pool, sweep=True)
         return await _in_lane(request, lane, work, lim.budget_s, f"{spec.name} sweep")
 
     router.add_api_route(

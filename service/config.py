@@ -2,7 +2,7 @@
 
 The bounds on work (``BUDGET_S``, ``MAX_STEPS``, ``MAX_SERIES_POINTS``,
 ``MAX_BODY_BYTES``, the lanes' ``ENGINE_THREADS``, ``ENGINE_QUEUE``, ``HEAVY_SLOTS``,
-``HEAVY_QUEUE``, ``HEAVY_PER_CLIENT``, ``ADMISSION_WAIT_S``, and the connection
+``HEAVY_QUEUE``, ``HEAVY_PER_CLIENT``, ``ADMISSION_WAIT_S``, ``INLINE_BUDGET_S``, and the connection
 bounds ``MAX_CONNECTIONS``, ``HEADER_TIMEOUT_S``, ``BODY_TIMEOUT_S``) are read once when
 the app is built; a value that is not a positive number stops the service at
 start-up with a message naming the variable, rather than at the first request.
@@ -66,6 +66,10 @@ class Settings:
     heavy_per_client: int = field(
         default_factory=lambda: _int("HEAVY_PER_CLIENT", max(1, _cores() // 2))
     )
+    #: Time box of a cheap computation run inline on the event loop, without the thread
+    #: hop (service.workers.Inline); a (model, rung) measured slower moves to the quick
+    #: lane. 0: every computation in a lane [s].
+    inline_budget_s: float = field(default_factory=lambda: _float("INLINE_BUDGET_S", 0.002))
     #: How long a request may wait for a slot before it gets 503 with Retry-After [s].
     admission_wait_s: float = field(default_factory=lambda: _float("ADMISSION_WAIT_S", 0.5))
     #: Concurrent connections per process (uvicorn's limit; over it: 503).
@@ -107,3 +111,5 @@ class Settings:
                 raise ValueError(f"{name} must be positive, not {value!r}")
         if self.engine_queue < 0 or self.heavy_queue < 0 or self.budget_grace_s < 0:
             raise ValueError("ENGINE_QUEUE, HEAVY_QUEUE and BUDGET_GRACE_S must not be negative")
+        if not self.inline_budget_s >= 0:
+            raise ValueError(f"INLINE_BUDGET_S must not be negative, not {self.inline_budget_s!r}")

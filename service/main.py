@@ -112,6 +112,7 @@ def create_app(
         heavy_queue=settings.heavy_queue,
         heavy_per_client=settings.heavy_per_client,
         wait_s=settings.admission_wait_s,
+        inline_budget_s=settings.inline_budget_s,
     )
     limits = Limits(
         pool=pool,
