@@ -235,7 +235,10 @@ class BodyGuard:
             if complete:  # the body is in: what follows is http.disconnect, whenever it comes
                 return await receive()
             try:
-                message = await asyncio.wait_for(receive(), self.body_timeout_s)
+                # asyncio.timeout, not wait_for: no task wrapped around each receive (issue 21:
+                # wait_for cost ~15 µs a request, a tenth of the service's own share)
+                async with asyncio.timeout(self.body_timeout_s):
+                    message = await receive()
             except TimeoutError:
                 raise BodyTimeout(self.body_timeout_s) from None
             if message["type"] == "http.request":

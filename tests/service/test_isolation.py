@@ -49,7 +49,9 @@ def test_quick_requests_answer_while_a_slow_one_runs() -> None:
     assert slow_status == 200 and set(statuses) == {200}
     assert slow_elapsed >= SLOW_S
     # Generous bounds, not tight timings: a stalled loop would answer ~0 quick requests
-    # and each would take about the whole slow run.
-    assert len(quick) >= 10, quick
+    # and each would take about the whole slow run. Each round also waits for an ODE in
+    # the heavy lane, which shares the GIL with the spin: on a loaded 2-core machine a
+    # round took ~170 ms (9 rounds in 1.5 s), so the count asks for 5, not 10.
+    assert len(quick) >= 5, quick
     assert statistics.median(quick) < 0.1 * slow_elapsed
     assert max(quick) < 0.5 * slow_elapsed
