@@ -16,7 +16,9 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+import orjson
 from fastapi import APIRouter, HTTPException, Request
+from fastapi.responses import Response
 from pydantic import BaseModel
 
 import engine
@@ -91,6 +93,44 @@ def _response(result: engine.RunResult, max_series_points: int) -> dict[str, Any
         "series": result.series,
         "inputs": result.inputs,
     }
+
+
+def _column(column: np.ndarray) -> Any:
+    """A sweep column as orjson encodes it: float64/int/bool arrays as they are (a
+    non-finite float becomes null, as :func:`engine.runner._listed` makes it None);
+    object columns (texts, flags with None) as lists."""
+    kind = column.dtype.kind
+    if kind == "f":
+        return column.astype(np.float64, copy=False)  # float32 would print its short repr
+    if kind in "iub":
+        return column
+    return column.tolist()
+
+
+def _sweep_answer(result: engine.SweepResult, unit: str) -> Response:
+    """The sweep's JSON, encoded from its numpy columns (issue 21: no Python object per point).
+
+    The shape is :class:`schemas.SweepResponse` (published as the route's response model);
+    FastAPI does not re-validate a Response, so the tests hold every answer to that schema
+    and to the list encoding point by point (tests/service/test_sweep_encoding.py).
+    """
+    body = {
+        "model": result.model,
+        "vary": result.vary,
+        "unit": unit,
+        "values": _column(result.value_array),
+        "results": {name: _column(col) for name, col in result.columns.items()},
+        "units": result.units,
+        "rung": result.rung,
+        "elapsed_s": result.elapsed_s,
+        "notes": result.notes,
+        "warnings": result.warnings,
+        "rungs": _column(result.rung_array),
+        "error_estimates": _column(result.error_array),
+    }
+    return Response(
+        orjson.dumps(body, option=orjson.OPT_SERIALIZE_NUMPY), media_type="application/json"
+    )
 
 
 def _bound(spec: ModelSpec, name: str, value: float | str, end: str) -> float:
@@ -177,9 +217,11 @@ async def _in_lane(request: Request, lane: Lane, fn: Any, budget_s: float, what:
 def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
     """``POST <path>`` and ``POST <path>/sweep`` for one model.
 
-    Each route returns a plain dict that FastAPI validates against the route's
-    ``response_model`` (``schemas.response_model(spec)``, ``schemas.SweepResponse``)
-    before it is sent: the schema published in OpenAPI is enforced on every answer.
+    A single evaluation returns a plain dict that FastAPI validates against the route's
+    ``response_model`` (``schemas.response_model(spec)``) before it is sent. A sweep is
+    encoded from its numpy columns (:func:`_sweep_answer`, issue 21), so FastAPI does not
+    re-validate it: its published ``schemas.SweepResponse`` is held by the tests (every
+    model's answer equals the list encoding; schemathesis checks every route's schema).
     """
     if limits is None:
         limits = Limits(pool=EnginePool())
@@ -222,7 +264,7 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
         values = _sweep_points(spec, body)
         base = {k: v for k, v in body.base.model_dump().items() if v is not None}  # type: ignore[attr-defined]
 
-        def work(budget_s: float, cancel: threading.Event) -> dict[str, Any]:
+        def work(budget_s: float, cancel: threading.Event) -> Response:
             result = engine.sweep(
                 spec,
                 base,
@@ -235,20 +277,7 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
                 max_steps=lim.max_steps,
                 cancel=cancel,
             )
-            return {
-                "model": result.model,
-                "vary": result.vary,
-                "unit": spec.param(result.vary).unit,
-                "values": result.values,
-                "results": result.results,
-                "units": result.units,
-                "rung": result.rung,
-                "elapsed_s": result.elapsed_s,
-                "notes": result.notes,
-                "warnings": result.warnings,
-                "rungs": result.rungs,
-                "error_estimates": result.error_estimates,
-            }
+            return _sweep_answer(result, spec.param(result.vary).unit)
 
         point = {**base, body.vary: values[0]}  # type: ignore[attr-defined]
         lane, _ = _route(spec, body, point, lim.pool, sweep=True)
