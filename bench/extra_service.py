@@ -11,6 +11,11 @@ and JSON encoding, the middleware.
   middleware). Interleaved rounds on the same event loop; the figure is the
   median of the per-round ratios (robust to the load of a shared machine).
   Target ≤ 1.3.
+  Beside it, in the same rounds, :func:`engine.run` alone on the same inputs (warm;
+  validation, rung choice, physics, estimate and checks), and the request without it
+  against the floor: the service's own share (body and response validation, JSON,
+  routing, middleware), which is what the service layer can still shave; the engine's
+  part is the model's physics.
 * **A 2,000-point closed-form sweep through the app** (the case of
   ``bench/extra_targets.py``): target ≤ 20 ms (over HTTP: ``scripts/loadtest.py``).
 
@@ -20,6 +25,7 @@ Run alone: ``PYTHONPATH=. python -m bench.extra_service``.
 from __future__ import annotations
 
 import asyncio
+import functools
 import json
 import statistics
 import time
@@ -127,15 +133,21 @@ async def _measure() -> list[dict[str, Any]]:
             for _ in range(CALLS_PER_ROUND):  # warm both (caches, inline means)
                 await call(app, "POST", path, body)
                 await call(bare, "POST", path, body)
-            ratios, mine, floor = [], [], []
+            ratios, mine, floor, engine_s, shares = [], [], [], [], []
+            inputs = {k: v for k, v in spec.examples[0].items()}
+            warm = functools.partial(engine.run, spec, inputs, fidelity=rung)
             for _ in range(ROUNDS):
                 a = await _per_call(app, "POST", path, body, CALLS_PER_ROUND)
                 b = await _per_call(bare, "POST", path, body, CALLS_PER_ROUND)
+                c = _per_run(warm, CALLS_PER_ROUND)
                 ratios.append(a / b)
+                shares.append((a - c) / b)
                 mine.append(a)
                 floor.append(b)
+                engine_s.append(c)
             ratio = statistics.median(ratios)
-            compute = float(json.loads(answer)["elapsed_s"])
+            share = statistics.median(shares)
+            compute = statistics.median(engine_s)
             rows.append(
                 {
                     "model": spec.name,
@@ -146,10 +158,12 @@ async def _measure() -> list[dict[str, Any]]:
                     "target": "closed-form request ≤ 1.3 × the bare-FastAPI floor (in process)",
                     "target_ratio": FLOOR_TARGET,
                     "met": ratio <= FLOOR_TARGET,
+                    "service_share_ratio": share,
                     "notes": (
                         f"request {_us(statistics.median(mine))}, floor "
-                        f"{_us(statistics.median(floor))}, compute {_us(compute)}, "
-                        f"{len(answer)} B"
+                        f"{_us(statistics.median(floor))}, engine.run (warm, validation "
+                        f"included) {_us(compute)}; without it the request is "
+                        f"×{share:.2f} the floor; {len(answer)} B"
                     ),
                 }
             )
@@ -190,6 +204,14 @@ async def _measure() -> list[dict[str, Any]]:
                 }
             )
     return rows
+
+
+def _per_run(fn: Callable[[], Any], n: int) -> float:
+    """Seconds per call of ``fn`` (the engine alone, as the route calls it)."""
+    start = time.perf_counter()
+    for _ in range(n):
+        fn()
+    return (time.perf_counter() - start) / n
 
 
 def measure() -> list[dict[str, Any]]:
