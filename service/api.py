@@ -100,11 +100,20 @@ def _column(column: np.ndarray) -> Any:
     non-finite float becomes null, as :func:`engine.runner._listed` makes it None);
     object columns (texts, flags with None) as lists."""
     kind = column.dtype.kind
-    if kind == "f":
-        return column.astype(np.float64, copy=False)  # float32 would print its short repr
+    if kind == "f":  # float32 would print its short repr; orjson takes C-contiguous arrays only
+        return np.ascontiguousarray(column, dtype=np.float64)
     if kind in "iub":
-        return column
+        return np.ascontiguousarray(column)
     return column.tolist()
+
+
+def _plain(value: Any) -> Any:
+    """orjson's fallback: whatever numpy object a column or note still holds, as Python."""
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    if isinstance(value, np.generic):
+        return value.item()
+    raise TypeError(f"{type(value).__name__} is not JSON")
 
 
 def _sweep_answer(result: engine.SweepResult, unit: str) -> Response:
@@ -129,7 +138,8 @@ def _sweep_answer(result: engine.SweepResult, unit: str) -> Response:
         "error_estimates": _column(result.error_array),
     }
     return Response(
-        orjson.dumps(body, option=orjson.OPT_SERIALIZE_NUMPY), media_type="application/json"
+        orjson.dumps(body, default=_plain, option=orjson.OPT_SERIALIZE_NUMPY),
+        media_type="application/json",
     )
 
 

@@ -294,8 +294,7 @@ class Lane:
 
         future.add_done_callback(done)
         try:
-            async with asyncio.timeout(budget_s + self.grace_s):  # cancels the wait, as wait_for
-                return await asyncio.wrap_future(future)
+            return await asyncio.wait_for(asyncio.wrap_future(future), budget_s + self.grace_s)
         except TimeoutError:
             log.warning(
                 "%s ignored its %g s deadline; left running in the background", what, budget_s

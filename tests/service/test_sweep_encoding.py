@@ -65,6 +65,17 @@ def _listed(result: SweepResult, unit: str) -> dict[str, Any]:
 CASES = [(spec, _case(spec)) for spec in MODELS if spec.examples]
 
 
+def test_whole_range_log_sweep_of_the_ball_clutch(client: TestClient) -> None:
+    """The case that found the strided columns (tests/stability/test_grids.py): 500 before."""
+    spec = next(s for s in MODELS if s.name == "clutch.ball")
+    base = dict(spec.examples[0])
+    body = {"base": base, "vary": "ball_diameter", "start": 1e-4, "stop": 0.2, "num": 25}
+    r = client.post("/api/v1/clutch/ball/sweep", json={**body, "scale": "log"})
+    assert r.status_code == 200, r.text
+    expected = engine.sweep(spec, base, "ball_diameter", np.geomspace(1e-4, 0.2, 25))
+    assert r.json()["results"] == json.loads(json.dumps(expected.results))
+
+
 @pytest.mark.parametrize("spec, case", CASES, ids=[s.name for s, _ in CASES])
 def test_sweep_answer_equals_the_list_encoding(client: TestClient, spec: Any, case: Any) -> None:
     assert case is not None, f"{spec.name}: no float input to sweep"
@@ -96,13 +107,17 @@ def test_non_finite_and_mixed_columns() -> None:
         "ok": np.array([True, False, True, False, True]),
         "count": np.array([1, 2, 3, 4, 5]),
         "single": np.array([0.1, 0.2, 0.3, 0.4, 0.5], dtype=np.float32),
+        # a strided view (a column taken from a 2-D array): orjson takes C-contiguous only
+        "strided": np.arange(10.0).reshape(5, 2)[:, 1],
+        "strided_int": np.arange(10).reshape(5, 2)[:, 0],
+        "numpy_objects": np.array([np.float64(1.5), np.bool_(True), None, "a", 2], dtype=object),
     }
     result = SweepResult(
         model="m",
         vary="d",
         value_array=np.linspace(0.01, 0.02, 5),
         columns=columns,
-        units={"force": "N", "label": "1", "ok": "1", "count": "1", "single": "m"},
+        units={k: "1" for k in columns},
         rung="closed_form",
         elapsed_s=1e-3,
         rung_array=np.array(["closed_form", None, "closed_form", "closed_form", "a"], dtype=object),
@@ -118,10 +133,14 @@ def test_non_finite_and_mixed_columns() -> None:
     # float32 as the list encoding gave it: the float32 value widened, not its short repr
     assert answer["results"]["single"] == [float(v) for v in columns["single"]]
     assert answer["results"]["single"][0] != 0.1
+    assert answer["results"]["strided"] == [1.0, 3.0, 5.0, 7.0, 9.0]
+    assert answer["results"]["strided_int"] == [0, 2, 4, 6, 8]
+    assert answer["results"]["numpy_objects"] == [1.5, True, None, "a", 2]
     assert answer["error_estimates"] == [1e-3, None, 0.0, 2e-3, None]
     assert answer["rungs"] == ["closed_form", None, "closed_form", "closed_form", "a"]
     assert answer["values"] == np.linspace(0.01, 0.02, 5).tolist()
     for key, col in answer["results"].items():
-        assert col == json.loads(json.dumps(result.results[key])), key
+        if key != "numpy_objects":  # json.dumps cannot take numpy scalars
+            assert col == json.loads(json.dumps(result.results[key])), key
     assert all(v is None or not isinstance(v, float) or math.isfinite(v) for v in answer["values"])
     SweepResponse.model_validate(answer)
