@@ -39,7 +39,7 @@ from . import errors
 from .api import Limits, catalogue_router, model_router
 from .config import Settings
 from .extra import EXTRA_ROUTERS
-from .middleware import BodyGuard, FrontDoor
+from .middleware import BodyGuard, ExactRoutes, FrontDoor
 from .studies import Studies, StudySettings, study_router
 from .workers import EnginePool
 
@@ -207,6 +207,12 @@ def create_app(
         for r in router.routes
         if isinstance(r, APIRoute) and "POST" in (r.methods or ())
     )
+    exact = {
+        r.path: r
+        for r in app.router.routes
+        if isinstance(r, APIRoute) and "POST" in (r.methods or ()) and not r.param_convertors
+    }
+    app.router.middleware_stack = ExactRoutes(app.router.middleware_stack, app.router, exact)
     app.add_middleware(
         BodyGuard,
         limit=settings.max_body_bytes,
