@@ -8,13 +8,12 @@ the curves the papers plot.
 
 from __future__ import annotations
 
-import contextlib
 import functools
 import math
 import threading
 import time
 from collections import Counter
-from collections.abc import Iterable, Iterator, Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -213,22 +212,33 @@ def _finite(value: Value) -> bool:
     return not isinstance(value, float) or math.isfinite(value)
 
 
-@contextlib.contextmanager
-def _arithmetic_refused(spec: ModelSpec) -> Iterator[None]:
+class _arithmetic_refused:
     """A safety net under the declared ranges: a combination of extreme inputs that
     overflows or divides by zero is refused (SolverFailed, 422), never a crash (500).
     numpy's overflow/invalid warnings are silenced: a non-finite result becomes null with a
-    note (numpy's error state is per thread)."""
-    try:
-        with np.errstate(all="ignore"):
-            yield
-    except ArithmeticError as exc:
-        raise SolverFailed(
-            f"{spec.name} cannot be evaluated for these inputs: the arithmetic failed "
-            f"({type(exc).__name__}); values this extreme lie outside what the model "
-            "computes reliably",
-            error=type(exc).__name__,
-        ) from None
+    note (numpy's error state is per thread). A class, not a generator context manager:
+    it wraps every evaluation (issue 21)."""
+
+    __slots__ = ("spec", "state")
+
+    def __init__(self, spec: ModelSpec) -> None:
+        self.spec = spec
+        self.state = np.errstate(all="ignore")
+
+    def __enter__(self) -> None:
+        self.state.__enter__()
+
+    def __exit__(
+        self, kind: type[BaseException] | None, exc: BaseException | None, tb: Any
+    ) -> None:
+        self.state.__exit__(kind, exc, tb)
+        if kind is not None and issubclass(kind, ArithmeticError):
+            raise SolverFailed(
+                f"{self.spec.name} cannot be evaluated for these inputs: the arithmetic failed "
+                f"({kind.__name__}); values this extreme lie outside what the model "
+                "computes reliably",
+                error=kind.__name__,
+            ) from None
 
 
 def run(
@@ -260,68 +270,73 @@ def run(
         raise InputOutOfRange(
             f"tolerance = {tol:g} is not allowed: must be > 0 and < 1", field="tolerance"
         )
-    known = {o.name for o in spec.outputs}
-    asked_for = set(known if outputs is None else outputs)
-    unknown = sorted(asked_for - known)
-    if unknown:
-        raise InputOutOfRange(
-            f"unknown output(s) {', '.join(unknown)}; {spec.name} offers "
-            + ", ".join(sorted(known)),
-            field="outputs",
-        )
-    wanted = frozenset(_wanted(spec, asked_for, named=outputs is not None, series=series))
-    with _arithmetic_refused(spec):
-        rung, notes = choose_rung(spec, values, _fidelity(spec, fidelity, tolerance), tol)
-    start = time.perf_counter()
-    ctx = RunContext(
-        rung=rung,
-        outputs=wanted,
-        tolerance=tol,
-        deadline=None if budget_s is None else start + budget_s,
-        max_steps=max_steps,
-        cancel=cancel,
-    )
-    try:
-        with _arithmetic_refused(spec):
-            result = spec.compute(values, ctx)
-    except BudgetExceeded as exc:
-        auto = _fidelity(spec, fidelity, tolerance) == "auto"
-        found = _fallback(spec, rung, values, exc, auto=auto)
-        if found is None:
-            raise
-        fallback, own, theirs = found
-        ctx = replace(ctx, rung=fallback)
-        notes.append(
-            f"{rung!r} would need about {exc.context['expected_steps']:.2g} steps (budget "
-            f"{exc.context.get('step_budget', max_steps):g}); ran its declared fallback "
-            f"{fallback!r} instead, whose estimated "
-            + (
-                f"error {theirs:.2g} is within {rung!r}'s own {own:.2g}"
-                if theirs <= own
-                else f"error is {theirs:.2g}"
+    units = spec.units
+    if outputs is None:
+        wanted = spec.scalar_outputs | spec.series_outputs if series else spec.scalar_outputs
+    else:
+        asked_for = set(outputs)
+        unknown = sorted(asked_for - units.keys())
+        if unknown:
+            raise InputOutOfRange(
+                f"unknown output(s) {', '.join(unknown)}; {spec.name} offers "
+                + ", ".join(sorted(units)),
+                field="outputs",
             )
-            + (f": the tolerance {tol:.2g} is not met" if auto and theirs > tol else "")
+        wanted = frozenset(_wanted(spec, asked_for, named=True, series=series))
+    with _arithmetic_refused(spec):  # one numpy error state for the rung choice and the model
+        rung, notes = choose_rung(spec, values, _fidelity(spec, fidelity, tolerance), tol)
+        start = time.perf_counter()
+        ctx = RunContext(
+            rung=rung,
+            outputs=wanted,
+            tolerance=tol,
+            deadline=None if budget_s is None else start + budget_s,
+            max_steps=max_steps,
+            cancel=cancel,
         )
-        with _arithmetic_refused(spec):
+        try:
+            result = spec.compute(values, ctx)
+        except BudgetExceeded as exc:
+            auto = _fidelity(spec, fidelity, tolerance) == "auto"
+            found = _fallback(spec, rung, values, exc, auto=auto)
+            if found is None:
+                raise
+            fallback, own, theirs = found
+            ctx = replace(ctx, rung=fallback)
+            notes.append(
+                f"{rung!r} would need about {exc.context['expected_steps']:.2g} steps (budget "
+                f"{exc.context.get('step_budget', max_steps):g}); ran its declared fallback "
+                f"{fallback!r} instead, whose estimated "
+                + (
+                    f"error {theirs:.2g} is within {rung!r}'s own {own:.2g}"
+                    if theirs <= own
+                    else f"error is {theirs:.2g}"
+                )
+                + (f": the tolerance {tol:.2g} is not met" if auto and theirs > tol else "")
+            )
             result = spec.compute(values, ctx)
     elapsed = time.perf_counter() - start
 
-    units = {o.name: o.unit for o in spec.outputs}
     scalars: dict[str, Value] = {}
     curves: dict[str, list[float]] = {}
     notes = notes + list(spec.assumptions) + result.notes
     for name, value in result.values.items():
         if name not in wanted:
             continue
-        if isinstance(value, np.generic):
-            value = value.item()
-        if not _finite(value):
-            notes.append(f"{name} could not be computed for these inputs (non-finite); null")
-            value = None
+        kind = type(value)
+        if isinstance(value, float) and kind is float:  # the common case, without a call
+            if not math.isfinite(value):
+                notes.append(f"{name} could not be computed for these inputs (non-finite); null")
+                value = None
+        elif not (kind is int or kind is str or kind is bool or value is None):
+            if isinstance(value, np.generic):
+                value = value.item()
+            if not _finite(value):
+                notes.append(f"{name} could not be computed for these inputs (non-finite); null")
+                value = None
         scalars[name] = value
     if outputs is not None:
-        series_names = {o.name for o in spec.outputs if o.series}
-        for name in sorted(wanted - set(scalars) - series_names):
+        for name in sorted(wanted - scalars.keys() - spec.series_outputs):
             scalars[name] = None
             notes.append(f"{name} is not computed by {result.rung!r} for these inputs; null")
     for name, seq in result.series.items():

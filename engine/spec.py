@@ -124,6 +124,19 @@ class Param:
             raise self._error(value)
         return value
 
+    def advice(self, value: Any) -> list[str]:
+        """A warning if a checked ``value`` lies outside the source's recommended range."""
+        if not (self.recommended and self.is_numeric):
+            return []
+        lo, hi = self.recommended
+        if lo <= value <= hi:
+            return []
+        unit = "" if self.unit == "1" else f" {self.unit}"
+        return [
+            f"{self.name} = {value:g}{unit} is outside the range the source "
+            f"recommends ({lo:g}…{hi:g}{unit})"
+        ]
+
     def _error(self, value: Any) -> InputOutOfRange:
         shown = f"{value:g}" if isinstance(value, float) else repr(value)
         if isinstance(value, int) and len(shown) > 20:
@@ -344,9 +357,31 @@ class ModelSpec:
     assumptions: tuple[str, ...] = ()
     #: Derived from :attr:`name`: ``clutch.ball_setting`` is served at ``/clutch/ball_setting``.
     path: str = field(init=False)
+    #: Lookup tables derived once from the declaration (every :func:`engine.run` used to
+    #: rebuild them: ~5 µs a call, issue 21).
+    _params: dict[str, Param] = field(init=False, repr=False, compare=False)
+    _defaults: dict[str, Any] = field(init=False, repr=False, compare=False)
+    _units: dict[str, str] = field(init=False, repr=False, compare=False)
+    _scalar_outputs: frozenset[str] = field(init=False, repr=False, compare=False)
+    _series_outputs: frozenset[str] = field(init=False, repr=False, compare=False)
+    _rung_names: tuple[str, ...] = field(init=False, repr=False, compare=False)
+    _required: tuple[str, ...] = field(init=False, repr=False, compare=False)
+    _index: dict[str, int] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "path", "/" + self.name.replace(".", "/"))
+        tables: dict[str, Any] = {
+            "_params": {p.name: p for p in self.inputs},
+            "_defaults": {p.name: None if p.required else p.default for p in self.inputs},
+            "_units": {o.name: o.unit for o in self.outputs},
+            "_scalar_outputs": frozenset(o.name for o in self.outputs if not o.series),
+            "_series_outputs": frozenset(o.name for o in self.outputs if o.series),
+            "_rung_names": tuple(r.name for r in self.rungs),
+            "_required": tuple(p.name for p in self.inputs if p.required),
+            "_index": {p.name: i for i, p in enumerate(self.inputs)},
+        }
+        for key, value in tables.items():
+            object.__setattr__(self, key, value)
         names = [p.name for p in self.inputs]
         if len(set(names)) != len(names):
             raise ValueError(f"{self.name}: duplicate input names")
@@ -380,7 +415,20 @@ class ModelSpec:
 
     @property
     def rung_names(self) -> tuple[str, ...]:
-        return tuple(r.name for r in self.rungs)
+        return self._rung_names
+
+    @property
+    def units(self) -> dict[str, str]:
+        """Each output's SI unit (the spec's own table: do not modify)."""
+        return self._units
+
+    @property
+    def scalar_outputs(self) -> frozenset[str]:
+        return self._scalar_outputs
+
+    @property
+    def series_outputs(self) -> frozenset[str]:
+        return self._series_outputs
 
     @property
     def output_names(self) -> tuple[str, ...]:
@@ -392,10 +440,7 @@ class ModelSpec:
         return tuple(sorted(cited_ids(self.source)))
 
     def param(self, name: str) -> Param:
-        for p in self.inputs:
-            if p.name == name:
-                return p
-        raise KeyError(name)
+        return self._params[name]
 
     def rung(self, name: str) -> Rung:
         for r in self.rungs:
@@ -410,12 +455,15 @@ class ModelSpec:
         are None) and warnings for values outside the source's recommended
         range. Raises InputOutOfRange naming the first bad field.
         """
-        known = {p.name for p in self.inputs}
-        for key in raw:
-            if key not in known:
-                raise InputOutOfRange(f"unknown input {key!r} for model {self.name}", field=key)
+        try:
+            return self._validate_given(raw)
+        except InputOutOfRange:
+            pass  # name the first bad field in declaration order, as the loop below does
         values: dict[str, Any] = {}
         warnings: list[str] = []
+        for key in raw:
+            if key not in self._params:
+                raise InputOutOfRange(f"unknown input {key!r} for model {self.name}", field=key)
         for p in self.inputs:
             given = raw.get(p.name)
             if given is None:
@@ -423,17 +471,31 @@ class ModelSpec:
                     raise InputOutOfRange(f"{p.name} is required", field=p.name)
                 values[p.name] = p.default
                 continue
-            value = p.check(given)
-            values[p.name] = value
-            if p.recommended and p.is_numeric:
-                lo, hi = p.recommended
-                if not lo <= value <= hi:
-                    unit = "" if p.unit == "1" else f" {p.unit}"
-                    warnings.append(
-                        f"{p.name} = {value:g}{unit} is outside the range the source "
-                        f"recommends ({lo:g}…{hi:g}{unit})"
-                    )
+            values[p.name] = p.check(given)
+            warnings.extend(p.advice(values[p.name]))
         return values, warnings
+
+    def _validate_given(self, raw: Mapping[str, Any]) -> tuple[dict[str, Any], list[str]]:
+        """:meth:`validate` looking only at the inputs given (a request names a few of a
+        model's 20–60): defaults copied from the spec's table, each given input checked.
+        Raises on the first bad input it meets; :meth:`validate` then finds the one to name."""
+        params = self._params
+        values = dict(self._defaults)  # declaration order; optional inputs at their default
+        advice: list[tuple[int, str]] = []
+        for name, given in raw.items():
+            p = params.get(name)
+            if p is None:
+                raise InputOutOfRange(f"unknown input {name!r} for model {self.name}", field=name)
+            if given is None:
+                continue
+            value = values[name] = p.check(given)
+            if p.recommended and p.is_numeric:
+                advice.extend((self._index[name], w) for w in p.advice(value))
+        for name in self._required:
+            if values[name] is None:
+                raise InputOutOfRange(f"{name} is required", field=name)
+        advice.sort(key=lambda item: item[0])
+        return values, [w for _, w in advice]
 
     def describe(self) -> dict[str, Any]:
         """JSON-ready catalogue entry (``GET /api/v1/models``)."""
