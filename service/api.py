@@ -100,16 +100,36 @@ def _response(result: engine.RunResult, max_series_points: int) -> dict[str, Any
     }
 
 
+class WrongKind(TypeError):
+    """A model returned a result of another kind than it declares: a bug, answered 500."""
+
+
 def _coerce(kind: str, value: Any) -> Any:
-    """A result as the response model's lax mode gave it: ``3.0`` → ``3`` for an int output,
-    ``3`` → ``3.0`` for a float one, ``1`` → ``true`` for a flag; anything else as it is."""
-    if kind == "float" and type(value) is int:
-        return float(value)
-    if kind == "int" and type(value) is float and value.is_integer():
-        return int(value)
-    if kind == "bool" and type(value) is int and value in (0, 1):
-        return bool(value)
-    return value
+    """A result as the response model's lax mode gave it, or :class:`WrongKind` where that
+    model refused it (issue 13: a model bug is a 500, never a malformed answer).
+
+    ``3.0`` → ``3`` for an int output, ``3`` → ``3.0`` for a float one, ``1`` → ``true``
+    for a flag; text only for a text output.
+    """
+    kind_of = type(value)
+    if kind == "float":
+        if kind_of is float:
+            return value
+        if kind_of is int:
+            return float(value)
+    elif kind == "int":
+        if kind_of is int:
+            return value
+        if kind_of is float and value.is_integer():
+            return int(value)
+    elif kind == "bool":
+        if kind_of is bool:
+            return value
+        if kind_of is int and value in (0, 1):
+            return bool(value)
+    elif kind_of is str:
+        return value
+    raise WrongKind(f"a {kind_of.__name__} where the output is declared {kind}")
 
 
 def _encoder(spec: ModelSpec) -> Any:
@@ -118,7 +138,8 @@ def _encoder(spec: ModelSpec) -> Any:
 
     The engine already gives Python values, finite or None (:func:`engine.run`); what the
     response model added was a coercion of each result to its declared kind
-    (:func:`_coerce`) and a check's three fields. Encoding the dict with orjson, without
+    (:func:`_coerce`, which refuses another kind as the model did: a 500, issue 13), a
+    check's three fields and texts for notes. Encoding the dict with orjson, without
     validating it again, saves ~25 µs a request (issue 21); tests/service/
     test_answer_encoding.py holds every model's answers, every rung and output, to the
     response model's own encoding, type for type.
@@ -128,12 +149,19 @@ def _encoder(spec: ModelSpec) -> Any:
     def encode(answer: dict[str, Any]) -> bytes:
         results = answer["results"]
         for name, value in results.items():
-            if value is not None and kinds[name] != "str":
+            if value is not None:
                 results[name] = _coerce(kinds[name], value)
+        checks = answer["checks"]
+        for c in checks:
+            if not (type(c["name"]) is str and type(c["detail"]) is str):
+                raise WrongKind("a check's name and detail are texts")
         answer["checks"] = [
-            {"name": c["name"], "ok": bool(c["ok"]), "detail": c["detail"]}
-            for c in answer["checks"]
+            {"name": c["name"], "ok": _coerce("bool", c["ok"]), "detail": c["detail"]}
+            for c in checks
         ]
+        for text in (*answer["notes"], *answer["warnings"]):
+            if type(text) is not str:
+                raise WrongKind("notes and warnings are texts")
         return orjson.dumps(answer, default=_plain, option=orjson.OPT_SERIALIZE_NUMPY)
 
     return encode

@@ -10,11 +10,12 @@
 from __future__ import annotations
 
 import asyncio
+import itertools
 import json
 import logging
+import os
 import re
 import time
-import uuid
 from collections.abc import Awaitable, Callable, MutableMapping
 from typing import Any
 
@@ -79,7 +80,7 @@ class FrontDoor:
             return
         start = time.perf_counter()
         given = _header(scope, b"x-request-id")
-        rid = given if given and _REQUEST_ID.fullmatch(given) else uuid.uuid4().hex.encode()
+        rid = given if given and _REQUEST_ID.fullmatch(given) else _fresh_id()
         request_id = rid.decode()
         scope.setdefault("state", {})["request_id"] = request_id
         status = 500
@@ -160,6 +161,25 @@ async def _send_500(send: Send, request_id: str, rid: bytes) -> None:
     ]
     await send({"type": "http.response.start", "status": 500, "headers": headers})
     await send({"type": "http.response.body", "body": body})
+
+
+_ID_PREFIX = os.urandom(8).hex()
+_ID_COUNTER = itertools.count(1)
+
+
+def _new_id_prefix() -> None:  # a forked worker must not repeat its parent's ids
+    global _ID_PREFIX, _ID_COUNTER
+    _ID_PREFIX, _ID_COUNTER = os.urandom(8).hex(), itertools.count(1)
+
+
+os.register_at_fork(after_in_child=_new_id_prefix)
+
+
+def _fresh_id() -> bytes:
+    """A request id unique to this process and, by its random prefix, across processes:
+    32 hex digits like a UUID's, without a system call per request (issue 21: uuid4 took
+    ~2 µs). Not a secret: it names a request in the logs."""
+    return f"{_ID_PREFIX}{next(_ID_COUNTER):016x}".encode()
 
 
 def _header(scope: Scope, name: bytes) -> bytes | None:

@@ -17,7 +17,7 @@ import pytest
 import engine
 from engine.models import MODELS
 from service import schemas
-from service.api import _coerce, _encoder, _response
+from service.api import WrongKind, _coerce, _encoder, _response
 
 CASES = [
     (spec, i, rung)
@@ -71,7 +71,10 @@ def test_named_outputs_only() -> None:
 
 def test_kinds_are_coerced_as_the_response_model_did() -> None:
     """An int output computed as 3.0 is sent as 3; a float output computed as 3 as 3.0; a
-    flag computed as 1 as true; None stays null; a non-integral "int" is not truncated."""
+    flag computed as 1 as true; None stays null; what the response model refused is refused
+    (a 500: tests/service/test_no_500.py), never truncated or sent. Stricter than its lax
+    mode in two ways, both model bugs: a flag where a number is declared (True → 1.0), a
+    float where a flag is (1.0 → true)."""
     spec = next(s for s in MODELS if any(o.kind == "int" for o in s.outputs))
     int_out = next(o.name for o in spec.outputs if o.kind == "int" and not o.series)
     float_out = next(o.name for o in spec.outputs if o.kind == "float" and not o.series)
@@ -91,5 +94,7 @@ def test_kinds_are_coerced_as_the_response_model_did() -> None:
     assert ours["checks"] == [{"name": "a", "ok": True, "detail": "fine"}]
     assert ours["error_estimate"] is None
     assert _coerce("bool", 1) is True and _coerce("bool", 0) is False
-    assert _coerce("int", 2.5) == 2.5 and _coerce("float", None) is None
-    assert _coerce("bool", 2) == 2  # left as it is: the response model would have refused it
+    for kind, wrong in [("int", 2.5), ("bool", 2), ("float", "lots"), ("str", 1.0),
+                        ("float", True), ("int", [1]), ("bool", 1.0)]:  # fmt: skip
+        with pytest.raises(WrongKind):
+            _coerce(kind, wrong)

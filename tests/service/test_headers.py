@@ -265,3 +265,19 @@ def test_docs_work_offline_from_the_vendored_swagger_ui(toy: TestClient) -> None
         assert url.startswith("/"), url
         assert toy.get(url).status_code == 200, url
     assert "http" not in csp
+
+
+def test_fresh_request_ids_are_unique_and_renewed_after_a_fork() -> None:
+    """Ids are a random per-process prefix and a counter (no system call per request); the
+    hook a forked worker runs (``os.register_at_fork``) draws a new prefix, so two workers
+    never hand out the same id. (The hook is called here, not through a fork: forking a
+    test process with threads can deadlock.)"""
+    from service import middleware
+
+    ids = [middleware._fresh_id() for _ in range(1000)]
+    assert len(set(ids)) == 1000 and all(len(i) == 32 for i in ids)
+    assert all(re.fullmatch(rb"[0-9a-f]{32}", i) for i in ids[:3])
+    before = middleware._fresh_id()
+    middleware._new_id_prefix()
+    after = middleware._fresh_id()
+    assert after[:16] != before[:16] and after[16:] == b"%016x" % 1

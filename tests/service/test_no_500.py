@@ -159,9 +159,10 @@ def test_post_routes_answer_405_for_a_wrong_method(real: TestClient) -> None:
 
 
 def test_the_response_model_governs_every_answer() -> None:
-    """Routes return data that FastAPI validates against ``response_model`` (issue 13): a
-    model bug that returns text where the schema says number is caught at run time (500,
-    one log line), never sent as a malformed answer."""
+    """Every answer is held to its route's ``response_model`` at run time (issue 13; since
+    issue 21 by ``service.api._encoder``'s kind checks, not FastAPI's validation): a model
+    bug that returns text where the schema says number is a 500 with one log line, never
+    sent as a malformed answer."""
 
     def wrong(x: Any, ctx: RunContext) -> engine.Result:
         return engine.Result(values={"energy": "lots"}, rung=ctx.rung, error_estimate=None)
