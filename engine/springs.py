@@ -31,6 +31,7 @@ docstring says from where and how far it was checked.
 
 from __future__ import annotations
 
+import bisect
 import math
 from typing import Any
 
@@ -745,7 +746,11 @@ def nearest_standard_wire(wire_diameter: float) -> tuple[float, bool]:
     (0.004, False)
     """
     d_mm = wire_diameter * 1e3
-    best = min(STANDARD_WIRE_DIAMETERS, key=lambda s: abs(s - d_mm))
+    sizes = STANDARD_WIRE_DIAMETERS
+    if math.isfinite(d_mm):  # the two neighbours of d in the sorted sizes (ties: the smaller)
+        i = bisect.bisect_left(sizes, d_mm)
+        sizes = sizes[max(i - 1, 0) : i + 1]
+    best = min(sizes, key=lambda s: abs(s - d_mm))
     return best * 1e-3, abs(best - d_mm) < 1e-4
 
 

@@ -500,8 +500,18 @@ def characteristic(
     torque = np.asarray(_sharing(x)) * np.asarray(x["ball_circle_diameter"]) * force / (2.0 * push)
     peak = np.argmax(torque, axis=-1)[..., None]
 
-    def at(arr: Any, idx: Any) -> Any:
-        return np.take_along_axis(np.broadcast_to(arr, torque.shape), idx, axis=-1)[..., 0]
+    if torque.ndim == 1:  # a single design: plain indexing, the same floats (issue 21)
+
+        def at(arr: Any, idx: Any) -> Any:
+            arr = np.asarray(arr)
+            if arr.shape != torque.shape:
+                arr = np.broadcast_to(arr, torque.shape)
+            return np.asarray(arr[idx[0]])
+
+    else:
+
+        def at(arr: Any, idx: Any) -> Any:
+            return np.take_along_axis(np.broadcast_to(arr, torque.shape), idx, axis=-1)[..., 0]
 
     rim = np.full_like(peak, POINTS - 1 - first)
     forces = np.broadcast_to(force, torque.shape)
