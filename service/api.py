@@ -36,7 +36,6 @@ from .units import quantity
 from .workers import EnginePool, FallBack, Lane, Ticket, watch_disconnect
 
 API_PREFIX = "/api/v1"
-_COMMON = ("fidelity", "tolerance", "outputs", "series")
 _ERRORS: dict[int | str, dict[str, Any]] = {
     400: {"model": schemas.ErrorResponse, "description": "the body is not readable JSON"},
     413: {"model": schemas.ErrorResponse, "description": "request body over MAX_BODY_BYTES"},
@@ -68,10 +67,6 @@ class Limits:
     budget_s: float = DEFAULT_BUDGET_S
     max_steps: int = DEFAULT_MAX_STEPS
     max_series_points: int = 10_000
-
-
-def _inputs(body: BaseModel) -> dict[str, Any]:
-    return {k: v for k, v in body.model_dump(exclude=set(_COMMON)).items() if v is not None}
 
 
 def _response(result: engine.RunResult, max_series_points: int) -> dict[str, Any]:
@@ -167,19 +162,18 @@ def _encoder(spec: ModelSpec) -> Any:
     return encode
 
 
-async def _validated(request: Request, model: type[BaseModel]) -> Any:
-    """The request body as ``model``, read and checked as FastAPI's own body handling would
-    (the same JSON parser, the same errors and their ``loc``), without its dependency
-    machinery (~30 µs a request, issue 21). The error handlers in :mod:`service.errors`
-    turn what this raises into the same 400/422 answers.
-    """
+async def _json(request: Request) -> Any:
+    """The request body parsed as FastAPI's own body handling parses it (the same JSON
+    parser, the same errors and their ``loc``), without its dependency machinery (~30 µs a
+    request, issue 21). The error handlers in :mod:`service.errors` turn what this raises
+    into the same 400/422 answers."""
     raw = await request.body()  # BodyGuard has checked the content type and the size
     if not raw:
         raise RequestValidationError(
             [{"type": "missing", "loc": ("body",), "msg": "Field required", "input": None}]
         )
     try:
-        data = json.loads(raw)
+        return json.loads(raw)
     except json.JSONDecodeError as exc:
         raise RequestValidationError(
             [
@@ -194,12 +188,21 @@ async def _validated(request: Request, model: type[BaseModel]) -> Any:
         ) from exc
     except Exception as exc:  # not UTF-8, nested too deeply, a number of 4,300+ digits
         raise HTTPException(status_code=400, detail="There was an error parsing the body") from exc
+
+
+def _model(data: Any, model: type[BaseModel]) -> Any:
+    """``data`` validated as ``model``, errors located in the body as FastAPI locates them."""
     try:
         return model.model_validate(data, from_attributes=True)  # as FastAPI validates a body
     except ValidationError as exc:
         raise RequestValidationError(
             [{**err, "loc": ("body", *err["loc"])} for err in exc.errors(include_url=False)]
         ) from None
+
+
+async def _validated(request: Request, model: type[BaseModel]) -> Any:
+    """The request body read (:func:`_json`) and validated as ``model``."""
+    return _model(await _json(request), model)
 
 
 def _column(column: np.ndarray) -> Any:
@@ -335,12 +338,14 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
     """``POST <path>`` and ``POST <path>/sweep`` for one model.
 
     Each route publishes its typed request and response models in OpenAPI, but runs a
-    lean handler (issue 21): the body is read and validated against the same request
-    model by :func:`_validated` (FastAPI's parser and error ``loc``), and the answer is
-    encoded with orjson: a single evaluation by :func:`_encoder` (the response model's
-    coercions, without validating it again), a sweep from its numpy columns
-    (:func:`_sweep_answer`). The tests hold both to the published schemas
-    (tests/service/test_answer_encoding.py, tests/service/test_sweep_encoding.py,
+    lean handler (issue 21): the body is parsed by :func:`_json` (FastAPI's parser and
+    errors); a single evaluation's plain body is read by :func:`schemas.plain_reader`
+    (the request model's own field validators, without pydantic), anything else is
+    validated by the request model (:func:`_model`, FastAPI's error ``loc``). The answer
+    is encoded with orjson: a single evaluation by :func:`_encoder` (the response model's
+    coercions and kind checks, without validating it again), a sweep from its numpy
+    columns (:func:`_sweep_answer`). The tests hold each to what it replaces
+    (tests/service/test_plain_reader.py, test_answer_encoding.py, test_sweep_encoding.py,
     schemathesis over every route).
     """
     if limits is None:
@@ -352,10 +357,12 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
     sweep_request = schemas.sweep_request_model(spec)
 
     encode = _encoder(spec)
+    plain = schemas.plain_reader(spec)
 
     async def evaluate(request: Request) -> Response:
-        body: Any = await _validated(request, request_model)
-        inputs = _inputs(body)
+        data = await _json(request)
+        body = plain(data) or schemas.body_of(_model(data, request_model))
+        inputs = body.inputs
 
         def work(budget_s: float, cancel: threading.Event) -> bytes:
             result = engine.run(
