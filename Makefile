@@ -44,9 +44,11 @@ FAST := not slow and not browser and not install and not fuzz
 test-fast: $(VENV)/.installed-dev
 	PY=$(BIN)/python scripts/check -q -m "$(FAST)"
 
-# Speed against accuracy for every registered model: bench/results.json, bench/pareto.png, a table.
+# Speed against accuracy for every registered model: bench/results.json, bench/pareto.png, a table;
+# then the load test on loopback (bench/loadtest.json): every issue-21 target beside its figure.
 bench: $(VENV)/.installed-bench
 	$(BIN)/python -m bench.run
+	$(BIN)/python scripts/loadtest.py --seconds 4
 
 clean:
 	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache .hypothesis

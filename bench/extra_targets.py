@@ -27,6 +27,8 @@ from engine.spec import ModelSpec, RunContext
 
 POINTS = 2000
 SWEEP_TARGET_S = 2e-3
+SIM_ROUNDS = 9
+SIM_CALLS = 15
 
 
 def _median(call: Callable[[], Any], seconds: float = 0.3, min_reps: int = 7) -> float:
@@ -128,8 +130,9 @@ def _simulation_rows() -> list[dict[str, Any]]:
     """Rare-impact simulation request (in-process ASGI, scalar answer) against its kernel.
 
     Target: request ≤ 1.5 × the compute time + the closed-form request's overhead
-    (its request time minus its compute time). The in-process client skips the
-    socket and HTTP parser, so this is the service's share, not the network's.
+    (its request time minus its compute time), as a ratio (≤ 1) measured in interleaved
+    rounds. The in-process client skips the socket and HTTP parser, so this is the
+    service's share, not the network's.
     """
     spec = next((s for s in MODELS if s.name == "impact.rare"), None)
     if spec is None or "simulation" not in spec.rung_names or not spec.examples:
@@ -143,33 +146,51 @@ def _simulation_rows() -> list[dict[str, Any]]:
     rows: list[dict[str, Any]] = []
     with TestClient(create_app()) as client:
 
-        def post(body: dict[str, Any]) -> float:
+        def post(body: dict[str, Any]) -> tuple[float, float]:
+            """(wall seconds of the request, the compute seconds it reports)."""
+            t0 = time.perf_counter()
             r = client.post(url, json=body)
+            wall = time.perf_counter() - t0
             r.raise_for_status()
-            return float(r.json()["elapsed_s"])
+            return wall, float(r.json()["elapsed_s"])
 
         closed = {**base, "fidelity": "closed_form"}
         sim = {**base, "fidelity": "simulation"}
-        t_closed = _median(functools.partial(post, closed), seconds=1.0)
-        c_closed = statistics.median(post(closed) for _ in range(21))
-        t_sim = _median(functools.partial(post, sim), seconds=1.0)
-        c_sim = statistics.median(post(sim) for _ in range(21))
+        for _ in range(20):  # warm both (the kernel's load, the inline means)
+            post(closed)
+            post(sim)
+        # Interleaved rounds, the figure the median of per-round ratios (a shared machine's
+        # load moves both sides of a round alike; separate medians let it move one).
+        ratios, walls, kernels, goals = [], [], [], []
+        for _ in range(SIM_ROUNDS):
+            closed_runs = [post(closed) for _ in range(SIM_CALLS)]
+            sim_runs = [post(sim) for _ in range(SIM_CALLS)]
+            overhead = max(statistics.median(w - c for w, c in closed_runs), 0.0)
+            t_sim = statistics.median(w for w, _ in sim_runs)
+            c_sim = statistics.median(c for _, c in sim_runs)
+            goal = 1.5 * c_sim + overhead
+            ratios.append(t_sim / goal)
+            walls.append(t_sim)
+            kernels.append(c_sim)
+            goals.append(goal)
         size = len(client.post(url, json=sim).content)
         size_all = len(client.post(url, json={**sim, "series": True}).content)
-    target = 1.5 * c_sim + max(t_closed - c_closed, 0.0)
+    ratio = statistics.median(ratios)
     rows.append(
         {
             "model": spec.name,
             "method": "request simulation",
             "case": "simulation request, scalars",
-            "time_s": t_sim,
+            "time_s": statistics.median(walls),
+            "ratio": ratio,
             "target": "simulation request ≤ 1.5 × kernel + closed-form request overhead",
-            "target_s": target,
-            "met": t_sim <= target,
+            "target_ratio": 1.0,
+            "met": ratio <= 1.0,
             "notes": (
-                f"kernel+model {_ms(c_sim)}, closed-form request {_ms(t_closed)} "
-                f"(compute {_ms(c_closed)}); answer {size / 1e3:.1f} kB "
-                f"({size_all / 1e3:.1f} kB with series: true)"
+                f"request / (1.5 × kernel + closed-form overhead), median of {SIM_ROUNDS} "
+                f"interleaved rounds; request {_ms(statistics.median(walls))}, kernel and model "
+                f"{_ms(statistics.median(kernels))}, allowance {_ms(statistics.median(goals))}; "
+                f"answer {size / 1e3:.1f} kB ({size_all / 1e3:.1f} kB with series: true)"
             ),
         }
     )

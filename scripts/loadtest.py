@@ -383,6 +383,11 @@ def every_model(
     The ratio is the model's requests/s over the mean of the /healthz runs just
     before and just after it (interleaved, so a change in the machine's load
     between models does not bias one model's ratio). Issue 21: each ≥ 0.8.
+
+    Beside it, the ceiling the model's own work sets: ``engine.run`` alone on the same
+    body (warm, in this process; :func:`engine_run_ms`) added to the server CPU a
+    /healthz request costs, ``cpu_healthz / (cpu_healthz + engine)``: the ratio a
+    service that added nothing but the model to /healthz would reach.
     """
     with httpx.Client(base_url=url, timeout=30) as client:
         models = client.get("/api/v1/models").json()["models"]
@@ -397,14 +402,43 @@ def every_model(
         r = hammer(url, "POST", path, body, requests, seconds, concurrency, server_pid)
         after = hammer(url, "GET", "/healthz", None, requests, seconds, concurrency, server_pid)
         floor = 0.5 * (before["requests_per_s"] + after["requests_per_s"])
+        cpus = [x["server_cpu_ms_per_request"] for x in (before, after)]
+        engine_ms = engine_run_ms(m["name"], body)
+        ceiling = None
+        if engine_ms is not None and all(c is not None for c in cpus):
+            cpu = 0.5 * (cpus[0] + cpus[1])
+            ceiling = round(cpu / (cpu + engine_ms), 3)
         rows[m["name"]] = {
             "rung": rung,
             **r,
             "healthz_requests_per_s": round(floor, 1),
             "vs_healthz": round(r["requests_per_s"] / floor, 3),
+            "engine_run_ms": engine_ms,
+            "ceiling_vs_healthz": ceiling,
         }
         before = after
     return rows
+
+
+def engine_run_ms(name: str, body: dict[str, Any], seconds: float = 0.2) -> float | None:
+    """Median ms of :func:`engine.run` on ``body`` in this process (warm), or None where
+    this checkout's registry has no such model (the toy server)."""
+    sys.path.insert(0, str(ROOT))
+    import engine
+
+    spec = next((s for s in engine.MODELS if s.name == name), None)
+    if spec is None:
+        return None
+    inputs = {k: v for k, v in body.items() if k != "fidelity"}
+    fidelity = body.get("fidelity")
+    times: list[float] = []
+    engine.run(spec, inputs, fidelity=fidelity)  # warm
+    stop_at = time.perf_counter() + seconds
+    while len(times) < 20 or (time.perf_counter() < stop_at and len(times) < 5000):
+        t = time.perf_counter()
+        engine.run(spec, inputs, fidelity=fidelity)
+        times.append(time.perf_counter() - t)
+    return round(statistics.median(times) * 1e3, 4)
 
 
 #: Issue 21: a 2,000-point closed-form sweep over HTTP within this [s].
@@ -643,14 +677,20 @@ def main(argv: list[str] | None = None) -> int:
     if models:
         print(
             f"\n{'model (cheapest rung)':<44} {'req/s':>8} {'p50 ms':>8} {'p99 ms':>8} "
-            f"{'cpu ms':>7}  / healthz"
+            f"{'cpu ms':>7}  / healthz  engine ms  ceiling"
         )
         for name, r in models.items():
+            ceiling = r["ceiling_vs_healthz"]
             print(
                 f"{name + ' [' + r['rung'] + ']':<44} {r['requests_per_s']:>8} {r['p50_ms']:>8} "
                 f"{r['p99_ms']:>8} {r['server_cpu_ms_per_request'] or '-':>7}  "
-                f"{r['vs_healthz']:.2f}"
+                f"{r['vs_healthz']:>9.2f}  {r['engine_run_ms'] or '-':>9}  "
+                f"{'-' if ceiling is None else f'{ceiling:.2f}':>7}"
             )
+        print(
+            "ceiling: cpu(/healthz) / (cpu(/healthz) + engine.run): the ratio a service adding "
+            "only the model's own work to /healthz would reach"
+        )
     print(f"\n{'target (issue 21 unless named)':<58} {'goal':>10} {'measured':>10}")
     for label, goal, measured, met in lines:
         print(f"{label:<58} {goal:>10} {measured:>10}  {'met' if met else 'MISSED'}")

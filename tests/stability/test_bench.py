@@ -128,3 +128,37 @@ def test_issue_21_targets_are_printed_beside_the_measured_figures():
     assert "Targets (issue 21)" in text
     line = next(s for s in text.splitlines() if s.startswith("nutrunner.drive") and "target" in s)
     assert "1.1 ms" in line and "target ≤ 2 ms met" in line and "plain numpy" in line
+
+
+def test_the_same_payload_floor_reads_the_body_the_no_body_floor_does_not():
+    """Issue 21's floors: the same-payload app parses the JSON body (a broken one is its
+    422), the no-body app answers without reading it; both answer the payload given."""
+    import asyncio
+
+    from bench import extra_service
+
+    payload = {"model": "x", "results": {"a": 1.5}}
+    same = extra_service.same_payload_app("/p", payload)
+    bare = extra_service.bare_app("/p", payload)
+
+    async def both(body: bytes) -> list[tuple[int, bytes]]:
+        return [await extra_service.call(app, "POST", "/p", body) for app in (same, bare)]
+
+    (s_ok, s_answer), (b_ok, b_answer) = asyncio.run(both(b'{"thread": "M12"}'))
+    assert s_ok == b_ok == 200 and json.loads(s_answer) == json.loads(b_answer) == payload
+    (s_bad, _), (b_bad, _) = asyncio.run(both(b'{"thread": '))
+    assert (s_bad, b_bad) == (422, 200)
+
+
+def test_loadtest_engine_ceiling_times_the_model_and_skips_unknown_ones():
+    import importlib.util
+
+    root = Path(__file__).resolve().parents[2]
+    spec = importlib.util.spec_from_file_location("loadtest", root / "scripts" / "loadtest.py")
+    assert spec is not None and spec.loader is not None
+    loadtest = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(loadtest)
+    body = {"thread": "M12", "fidelity": "closed_form"}
+    ms = loadtest.engine_run_ms("preload.tightening", body, seconds=0.01)
+    assert ms is not None and 1e-4 < ms < 50  # a warm closed form: microseconds, not zero
+    assert loadtest.engine_run_ms("no.such_model", body) is None
