@@ -1035,8 +1035,8 @@ def simulate_blow_reference(
 
 
 def clutch_preload_window(
-    torque_min: float, torque_max: float, per_preload_min: float, per_preload_max: float
-) -> tuple[float, float]:
+    torque_min: Any, torque_max: Any, per_preload_min: Any, per_preload_max: Any
+) -> tuple[Any, Any]:
     r"""Preload window on a joint from a window of clutch slipping torque.
 
     .. math::
@@ -1045,16 +1045,16 @@ def clutch_preload_window(
 
     Parameters
     ----------
-    torque_min, torque_max : float
+    torque_min, torque_max : float or array
         Lowest and highest slipping torque of the clutch (flank friction and
         spring tolerance, [001, eq. 1–3]), [N*m]
-    per_preload_min, per_preload_max : float
+    per_preload_min, per_preload_max : float or array
         Torque per preload of the joint at its lowest and highest friction
         (VDI 2230-1 R13), [m]
 
     Returns
     -------
-    tuple of float
+    tuple of float or array
         (F_min, F_max), [N]
 
     Notes

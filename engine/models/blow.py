@@ -41,7 +41,12 @@ from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
 from ._common import DEG, RPM, count, friction_coefficient, length, positive, quantity
 from .clutch import BALL_CLUTCH
 from .nutrunner import NUTRUNNER_DRIVE
-from .preload import resolve_bolt, torque_coefficients
+from .preload import (
+    resolve_bolt,
+    resolve_bolt_arrays,
+    torque_coefficients,
+    torque_coefficients_raw,
+)
 from .rare_impact import RARE_IMPACT
 
 _SIMULATION_ERROR = 1e-6
@@ -423,6 +428,28 @@ def _need(x: Mapping[str, Any], names: tuple[str, ...], why: str) -> None:
             raise InputOutOfRange(f"{name} is required {why}", field=name)
 
 
+#: K_r where blow.joint is not given one: the ball clutch model's own default [001, eq. 1].
+_LOAD_FACTOR = BALL_CLUTCH.param("load_factor").default
+
+
+def _clutch_args(x: Mapping[str, Any]) -> tuple[tuple[Any, Any, Any, Any], list[str]]:
+    """(D0, α, i, K_r) of the clutch source, and a note where K_r took the clutch's default.
+
+    The borrowed inputs are optional here, so ``load_factor`` may be absent; only the
+    per-ball arrangement reads it (until now its absence there raised a TypeError: a 500).
+    """
+    load = x["load_factor"]
+    notes: list[str] = []
+    if load is None:
+        load = _LOAD_FACTOR
+        if x["spring_arrangement"] == "per_ball":
+            notes.append(
+                f"load_factor not given: K_r = {load:g}, the ball clutch model's default "
+                "(0.85…0.9 [001, eq. 1])"
+            )
+    return (x["ball_circle_diameter"], x["groove_angle"], x["ball_count"], load), notes
+
+
 def _tool(x: Mapping[str, Any]) -> _Tool:
     src = x["source"]
     notes: list[str] = []
@@ -707,7 +734,7 @@ def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
     bolt, per, tnotes = thread
     f, df = float(x["flank_friction"] or 0.0), float(x["flank_friction_scatter"])
     force, tol = float(x["clutch_spring_force"]), float(x["spring_force_tolerance"])
-    args = (x["ball_circle_diameter"], x["groove_angle"], x["ball_count"], x["load_factor"])
+    args, load_notes = _clutch_args(x)
     arr = x["spring_arrangement"]
     t_min = float(cl.torque_limit(force * (1 - tol), *args, max(f - df, 0.0), arr))
     t_max = float(cl.torque_limit(force * (1 + tol), *args, f + df, arr))
@@ -740,6 +767,7 @@ def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
         f"{f:g} ± {df:g}) [001, eq. 1–3], and the preload follows through the tightening "
         f"relation with μ ± {dmu:g} (VDI 2230-1 R13); dynamic overshoot at the end of the "
         "run-down is neglected (no error estimate)",
+        *load_notes,
         *tnotes,
     ]
     if x.get("target_preload") is not None:
@@ -1160,7 +1188,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if ctx.rung not in ("rigid", "energy"):
         raise EngineError(f"blow.joint has no array path for the rung {ctx.rung!r}")
     if x["source"] == "clutch":
-        raise EngineError("blow.joint: the clutch source runs point by point")
+        return _vectorized_clutch(x, ctx)
     s = _setup_array(x)
     n = _points(x)
     t0 = x["snug_torque"]
@@ -1243,6 +1271,104 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
         f"{ctx.rung}: evaluated on arrays, the same equations as a single run "
         "(engine.blow.blow_series_array)",
         *s.notes,
+    ]
+    return Result(
+        values=values, rung=ctx.rung, error_estimate=None, notes=notes, check_arrays=checks
+    )
+
+
+def _vectorized_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    """:func:`_compute_clutch` at many points: the same equations in the same order.
+
+    The bolt is resolved once (:func:`resolve_bolt_arrays`; a varied thread size is
+    looked up on arrays), the slipping torques [001, eq. 1–3] and the torques per
+    preload at the friction box's corners (VDI 2230-1 R13) are array expressions. A
+    point the scalar compute refuses (the clutch never slips at the highest flank
+    friction, a bolt it cannot resolve) is NaN in every output and reports no check.
+    Where the scalar code refuses the whole request (an input missing, no thread, a
+    bolt that cannot be resolved with nothing varied) this raises the same error.
+    """
+    _need(x, ("clutch_spring_force", *_CL_NAMES[:3]), "with source 'clutch'")
+    if x.get("thread_diameter") is None:
+        raise InputOutOfRange("source 'clutch' needs thread_diameter", field="thread_diameter")
+    n = _points(x)
+    bolt, bolt_notes = resolve_bolt_arrays(
+        {
+            "thread_diameter": x["thread_diameter"],
+            "thread_pitch": x["thread_pitch"],
+            "bearing_outer_diameter": x["bearing_outer_diameter"],
+            "hole_diameter": x["hole_diameter"],
+            "yield_strength": 1.0,  # strength is not used here, as in _thread
+        },
+        math.prod(n),
+        labels=False,
+    )
+    f, df = _or_zero(x["flank_friction"]), x["flank_friction_scatter"]
+    force, tol = x["clutch_spring_force"], x["spring_force_tolerance"]
+    args, load_notes = _clutch_args(x)
+    arr = x["spring_arrangement"]
+    mu, mu_k, dmu = x["thread_friction"], x["bearing_friction"], x["friction_scatter"]
+    formula = x["torque_formula"]
+    with np.errstate(all="ignore"):
+        t_min = cl.torque_limit(force * (1 - tol), *args, np.maximum(f - df, 0.0), arr)
+        t_max = cl.torque_limit(force * (1 + tol), *args, f + df, arr)
+        k_lo = sum(
+            torque_coefficients_raw(
+                bolt, np.maximum(mu - dmu, 0.0), np.maximum(mu_k - dmu, 0.0), formula
+            )[:2]
+        )
+        k_hi = sum(torque_coefficients_raw(bolt, mu + dmu, mu_k + dmu, formula)[:2])
+        f_lo, f_hi = clutch_preload_window(t_min, t_max, k_lo, k_hi)
+        raw: dict[str, Any] = {
+            "clutch_torque_min": t_min,
+            "clutch_torque_max": t_max,
+            "delivered_preload_min": f_lo,
+            "delivered_preload_max": f_hi,
+            "final_torque": 0.5 * (t_min + t_max),
+            "final_preload": 0.5 * (f_lo + f_hi),
+        }
+        if x.get("target_preload") is not None:
+            per = sum(torque_coefficients_raw(bolt, mu, mu_k, formula)[:2])
+            raw["clutch_spring_force_for_target"] = cl.spring_force_for_torque(
+                x["target_preload"] * per, *args, f, arr
+            )
+    dead = ~np.broadcast_to(bolt.ok, n)
+    dead = dead | ~np.broadcast_to(np.isfinite(t_min) & np.isfinite(t_max), n)
+    any_dead = bool(dead.any())
+    values: dict[str, Any] = {}
+    for name, column in raw.items():
+        column = np.broadcast_to(np.asarray(column, dtype=float), n)
+        if any_dead:
+            column = np.where(dead, np.nan, column)
+        # a non-finite value is null in a single run's answer (the runner's rule)
+        values[name] = np.where(np.isfinite(column), column, np.nan)
+    checks: dict[str, np.ndarray] = {}
+    lo, hi = x.get("preload_min"), x.get("preload_max")
+    if lo is not None or hi is not None:
+        f_lo, f_hi = values["delivered_preload_min"], values["delivered_preload_max"]
+        ok = np.ones(n, dtype=bool)
+        if lo is not None:
+            ok &= np.broadcast_to(f_lo >= lo, n)
+        if hi is not None:
+            ok &= np.broadcast_to(f_hi <= hi, n)
+        # the scalar rule: "below" when a (non-zero) lower limit is undercut, else "above"
+        below = np.broadcast_to((lo != 0.0) & (f_lo < lo), n) if lo is not None else False
+        verdict = np.where(ok, "within", np.where(below, "below", "above")).astype(object)
+        verdict[dead] = None
+        values["preload_verdict"] = verdict
+        if not bool(dead.all()):  # a refused point reports no check; all refused: none
+            checks["preload_window"] = np.where(dead, -1, ok).astype(np.int8)
+    for o in _OUTPUTS:  # what a single run leaves null here: None (no scalar probe)
+        if not o.series and o.name not in values:
+            values[o.name] = None
+    notes = [
+        f"{ctx.rung}, clutch: evaluated on arrays, the same equations as a single run; the "
+        "joint's torque is the clutch's slipping torque window (spring force tolerance, "
+        "flank friction scatter) [001, eq. 1–3], the preload follows through the tightening "
+        "relation at the friction box's corners (VDI 2230-1 R13); dynamic overshoot "
+        "neglected (no error estimate)",
+        *load_notes,
+        *(note for note in bolt_notes if not note.startswith("yield strength")),
     ]
     return Result(
         values=values, rung=ctx.rung, error_estimate=None, notes=notes, check_arrays=checks

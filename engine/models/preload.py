@@ -278,7 +278,7 @@ def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
     )
 
 
-def _coefficients(
+def torque_coefficients_raw(
     bolt: Bolt | BoltArrays, thread_friction: Any, bearing_friction: Any, formula: str
 ) -> tuple[Any, Any, Any]:
     """(k_G, k_K, R) on floats or arrays (one design per element)."""
@@ -303,7 +303,9 @@ def torque_coefficients(
     bolt: Bolt, thread_friction: float, bearing_friction: float, formula: str
 ) -> tuple[float, float, float]:
     """(k_G, k_K, R) of the chosen torque formula: torques per newton and the friction radius."""
-    k_thread, k_bearing, radius = _coefficients(bolt, thread_friction, bearing_friction, formula)
+    k_thread, k_bearing, radius = torque_coefficients_raw(
+        bolt, thread_friction, bearing_friction, formula
+    )
     return float(k_thread), float(k_bearing), float(radius)
 
 
@@ -321,8 +323,8 @@ def _torsion(bolt: Bolt, x: Mapping[str, Any]) -> float:
 
 def _deviation(bolt: Bolt | BoltArrays, mu_g: Any, mu_k: Any, formula: str) -> Any:
     """|M(formula) − M(exact)| / M(exact) on floats or arrays [004, eq. 10–13]."""
-    chosen = sum(_coefficients(bolt, mu_g, mu_k, formula)[:2])
-    exact = sum(_coefficients(bolt, mu_g, mu_k, "exact")[:2])
+    chosen = sum(torque_coefficients_raw(bolt, mu_g, mu_k, formula)[:2])
+    exact = sum(torque_coefficients_raw(bolt, mu_g, mu_k, "exact")[:2])
     return abs(chosen - exact) / exact
 
 
@@ -784,7 +786,7 @@ def _tightening_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
     given = x.get("preload") is not None
     force = x["preload"] if given else permissible
     sigma_eq = pl.equivalent_stress(force, bolt.stress_area, beta)
-    k_thread, k_bearing, radius = _coefficients(bolt, mu_g, mu_k, formula)
+    k_thread, k_bearing, radius = torque_coefficients_raw(bolt, mu_g, mu_k, formula)
     m_thread, m_bearing = force * k_thread, force * k_bearing
     total = m_thread + m_bearing
     ideal = pl.ideal_torque(force, bolt.pitch)
@@ -1664,7 +1666,7 @@ def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
     factor = lo_factor if x.get("preload_factor") is None else x["preload_factor"]
     required = factor * x["required_clamp_force"]
     nominal, f_min, f_max = _method_band(method, permissible, at_yield, given)
-    k_thread, k_bearing, _ = _coefficients(bolt, mu_g, mu_k, formula)
+    k_thread, k_bearing, _ = torque_coefficients_raw(bolt, mu_g, mu_k, formula)
     torque = nominal * (k_thread + k_bearing)
     values: dict[str, Any] = {
         "controlled_quantity": method.controls,

@@ -118,6 +118,23 @@ def test_clutch_source_sets_the_spring_for_the_target():
     assert at_target.results["final_preload"] == pytest.approx(20e3, rel=1e-9)
 
 
+def test_clutch_per_ball_without_a_load_factor_takes_the_clutch_models_default():
+    # was a TypeError (a 500 over HTTP): the borrowed load_factor is optional in blow.joint
+    per_ball = {**CLUTCH_M10, "spring_arrangement": "per_ball"}
+    r = run(BLOW, per_ball)
+    given = run(BLOW, {**per_ball, "load_factor": 0.85})
+    assert r.results["clutch_torque_min"] == given.results["clutch_torque_min"]
+    assert any("K_r = 0.85" in note for note in r.notes)
+    assert not any("K_r = 0.85" in note for note in given.notes)
+    # the per-ball spring pushes K_r·i = 0.85 × 6 = 5.1 balls' worth: torque × 5.1
+    common = run(BLOW, CLUTCH_M10)
+    assert r.results["clutch_torque_max"] == pytest.approx(
+        5.1 * common.results["clutch_torque_max"], rel=1e-12
+    )
+    # the common arrangement never reads K_r and says nothing of it
+    assert not any("K_r" in note for note in common.notes)
+
+
 def test_missing_inputs_are_refused_by_name():
     with pytest.raises(EngineError) as err:
         run(BLOW, {"source": "energy", "tool_energy": 10.0, "tool_inertia": 0.01})

@@ -15,7 +15,7 @@ import pytest
 import engine.study as study_module
 from engine import EngineError, run, sweep
 from engine.blow import BlowProblem, blow_series, blow_series_array
-from engine.models.blow import BLOW, ENERGY_M16, NUTRUNNER_HARD, RARE_IMPACT_M16
+from engine.models.blow import BLOW, CLUTCH_M10, ENERGY_M16, NUTRUNNER_HARD, RARE_IMPACT_M16
 from engine.points import auto_index, rung_estimates
 from engine.runner import choose_rung
 from engine.study import CHECK_FAILED, CHECK_OK, CHECK_UNKNOWN, Study, Variable, evaluate_chunk
@@ -240,3 +240,121 @@ def test_every_tool_source_on_arrays_matches_single_runs(
         for check in single.checks:
             code = chunk.checks[check.name][j]
             assert code == (CHECK_OK if check.ok else CHECK_FAILED), f"{j}: {check.name}"
+
+
+# --------------------------------------------------------------------------- source clutch
+
+CLUTCH_OUTPUTS = (
+    "clutch_torque_min",
+    "clutch_torque_max",
+    "delivered_preload_min",
+    "delivered_preload_max",
+    "final_torque",
+    "final_preload",
+    "clutch_spring_force_for_target",
+)
+
+
+def _same_point(chunk_values: dict, j: int, single: object, where: str) -> None:
+    for name in CLUTCH_OUTPUTS:
+        _same(chunk_values[name][j], single.results.get(name), f"{where}: {name}")  # type: ignore[attr-defined]
+
+
+@pytest.mark.parametrize("arrangement", ["common", "per_ball"])
+def test_a_clutch_limited_tool_on_arrays_is_the_single_runs(
+    arrangement: str, no_loop: None
+) -> None:
+    # spring force, its tolerance, the flank friction and its scatter, both joint frictions
+    # and the preload window's lower end at once; eight points whose flank friction with its
+    # scatter passes tan 45° are a clutch that never slips: refused, as alone
+    rng = np.random.default_rng(5)
+    n = 60
+    share = 1.0 if arrangement == "common" else 0.85 * CLUTCH_M10["ball_count"]  # K_r·i
+    columns = {
+        "clutch_spring_force": rng.uniform(500.0, 2500.0, n),
+        "spring_force_tolerance": rng.uniform(0.0, 0.2, n),
+        "flank_friction": rng.uniform(0.0, 0.9, n),
+        "flank_friction_scatter": rng.uniform(0.0, 0.15, n),
+        "thread_friction": rng.uniform(0.06, 0.2, n),
+        "bearing_friction": rng.uniform(0.06, 0.2, n),
+        "preload_min": rng.uniform(0.0, 30e3 * share, n),
+    }
+    columns["flank_friction"][:8] = 0.85  # ρ = atan(0.85 + 0.3) > α = 45°: never slips
+    columns["flank_friction_scatter"][:8] = 0.3
+    base = {**CLUTCH_M10, "spring_arrangement": arrangement, "preload_max": 40e3 * share}
+    for rung in ("rigid", "energy"):  # a study's outputs are numbers: the verdict by its check
+        chunk = evaluate_chunk(BLOW, base, columns, list(CLUTCH_OUTPUTS), rung)
+        verdicts, computed, refused = set(), 0, 0
+        for j in range(n):
+            point = {**base, **_point(columns, j)}
+            try:
+                single = run(BLOW, point, fidelity=rung)
+            except EngineError:
+                refused += 1
+                assert all(math.isnan(chunk.values[o][j]) for o in CLUTCH_OUTPUTS), j
+                assert chunk.checks["preload_window"][j] == CHECK_UNKNOWN, j
+                continue
+            computed += 1
+            _same_point(chunk.values, j, single, f"{rung} {j}")
+            verdicts.add(single.results["preload_verdict"])
+            (check,) = single.checks
+            want = CHECK_OK if check.ok else CHECK_FAILED
+            assert chunk.checks["preload_window"][j] == want, j
+        assert computed >= n // 2 and refused >= 8, (computed, refused)
+        assert {"within", "below", "above"} <= verdicts, verdicts
+
+
+def test_a_clutch_sweep_takes_the_array_path_and_gives_the_verdicts_of_single_runs() -> None:
+    values = np.linspace(300.0, 3000.0, 2000).tolist()
+    swept = sweep(BLOW, CLUTCH_M10, "clutch_spring_force", values, fidelity="rigid")
+    assert swept.rungs == ["rigid"] * 2000
+    assert any("evaluated on arrays" in note for note in swept.notes), swept.notes
+    verdicts = swept.results["preload_verdict"]
+    assert set(verdicts) == {"below", "within", "above"}
+    # the first and last point of each verdict's stretch, and the ends, against single runs
+    picks = {0, 1999}
+    for verdict in ("below", "within", "above"):
+        where = [i for i, v in enumerate(verdicts) if v == verdict]
+        picks |= {where[0], where[-1]}
+    for i in sorted(picks):
+        single = run(BLOW, {**CLUTCH_M10, "clutch_spring_force": values[i]}, fidelity="rigid")
+        for name in (*CLUTCH_OUTPUTS, "preload_verdict"):
+            want = single.results[name]
+            got = swept.results[name][i]
+            assert got == (pytest.approx(want, rel=1e-12) if isinstance(want, float) else want)
+
+
+def test_a_clutch_sweep_over_the_thread_size_refuses_sizes_off_the_table_as_single_runs_do() -> (
+    None
+):
+    # M8…M16 in 0.5 mm steps: the coarse pitch and the hex bearing face come from ISO tables
+    # (on arrays), so M8, M10, M12, M14, M16 compute and the half sizes are refused
+    values = np.arange(0.008, 0.0161, 0.0005).tolist()
+    swept = sweep(BLOW, CLUTCH_M10, "thread_diameter", values, fidelity="energy")
+    for i, d in enumerate(values):
+        try:
+            single = run(BLOW, {**CLUTCH_M10, "thread_diameter": d}, fidelity="energy")
+        except EngineError:
+            assert swept.rungs[i] is None and swept.results["final_preload"][i] is None, d
+            continue
+        assert swept.rungs[i] == "energy", d
+        assert swept.results["final_preload"][i] == pytest.approx(
+            single.results["final_preload"], rel=1e-12
+        )
+    assert sum(r is not None for r in swept.rungs) >= 5
+
+
+def test_a_clutch_study_needs_what_a_single_run_needs() -> None:
+    # no thread: refused as a whole, with the single run's message and field
+    base = {k: v for k, v in CLUTCH_M10.items() if k != "thread_diameter"}
+    with pytest.raises(EngineError, match="needs thread_diameter") as alone:
+        run(BLOW, base, fidelity="rigid")
+    validated, _ = BLOW.validate(base)
+    x = {**validated, "clutch_spring_force": np.array([900.0, 1100.0])}
+    from engine.spec import RunContext
+
+    ctx = RunContext(rung="rigid", outputs=frozenset(CLUTCH_OUTPUTS), tolerance=0.01)
+    assert BLOW.vectorized is not None
+    with pytest.raises(EngineError, match="needs thread_diameter") as arrays:
+        BLOW.vectorized(x, ctx)
+    assert arrays.value.field == alone.value.field == "thread_diameter"
