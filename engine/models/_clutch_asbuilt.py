@@ -911,7 +911,12 @@ def notes(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[st
 def solve_setting(
     x: Mapping[str, Any], spring: Spring, target: float, upper: float
 ) -> float | None:
-    """Nut setting Δ whose peak torque is ``target``; None where none in [0, upper] gives it."""
+    """Nut setting Δ whose peak torque is ``target``; None where none in [0, upper] gives it.
+
+    The first crossing on a 65-point grid of Δ brackets the root, refined by Brent's
+    method. The grid's peaks come from one characteristic on the whole grid (issue 21:
+    one call instead of up to 64, the same bracket and so the same root).
+    """
 
     def peak(delta: float) -> float:
         return float(characteristic(x, spring, delta)["peak_torque"]) - target
@@ -920,12 +925,12 @@ def solve_setting(
     if lo_val >= 0.0:
         return 0.0 if lo_val == 0.0 else None
     grid = np.linspace(0.0, upper, 65)
-    prev = 0.0
-    for g in grid[1:]:
-        if peak(float(g)) >= 0.0:
-            return float(brentq(peak, prev, float(g), xtol=1e-12, rtol=1e-12))
-        prev = float(g)
-    return None
+    peaks = np.asarray(characteristic(x, spring, grid[1:])["peak_torque"], dtype=float)
+    above = np.flatnonzero(peaks - target >= 0.0)
+    if above.size == 0:
+        return None
+    i = int(above[0]) + 1  # the first grid point at or past the target
+    return float(brentq(peak, float(grid[i - 1]), float(grid[i]), xtol=1e-12, rtol=1e-12))
 
 
 Candidate = Callable[[float], Mapping[str, Any]]

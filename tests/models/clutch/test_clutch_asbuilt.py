@@ -289,3 +289,54 @@ def test_nutrunner_coupling_1_gets_its_slip_torque():
     assert strong["coupling_slip_torque"] == pytest.approx(
         max(200.0 * j_load / (j_drive + j_load), v["coupling_slip_torque"]), rel=1e-9
     )
+
+
+def _first_crossing_one_by_one(x, spring, target, upper):
+    """The setting search as it was before issue 21's one-call grid: a characteristic per
+    grid point, the first at or past the target brackets Brent's method (the reference)."""
+    from scipy.optimize import brentq
+
+    from engine.models import _clutch_asbuilt as asbuilt
+
+    def peak(delta):
+        return float(asbuilt.characteristic(x, spring, delta)["peak_torque"]) - target
+
+    lo_val = peak(0.0)
+    if lo_val >= 0.0:
+        return 0.0 if lo_val == 0.0 else None
+    grid = np.linspace(0.0, upper, 65)
+    prev = 0.0
+    for g in grid[1:]:
+        if peak(float(g)) >= 0.0:
+            return float(brentq(peak, prev, float(g), xtol=1e-12, rtol=1e-12))
+        prev = float(g)
+    return None
+
+
+def test_the_setting_search_on_one_grid_call_is_the_point_by_point_search():
+    # disc stacks whose peak torque rises, flattens and falls with the setting (h0/t from
+    # 1 to 2.2, 1 to 3 in series, 1 to 3 in parallel) and targets across and beyond their
+    # reach: the same root to the last bit, the same None where no setting reaches it
+    from engine.models import _clutch_asbuilt as asbuilt
+
+    rng = np.random.default_rng(11)
+    found = missed = 0
+    for _ in range(40):
+        design = {
+            **DISC,
+            "disc_cone_height": float(rng.uniform(1.0, 2.2)) * DISC["disc_thickness"],
+            "disc_series": int(rng.integers(1, 4)),
+            "disc_parallel": int(rng.integers(1, 4)),
+            "ball_lift": float(rng.uniform(0.0001, 0.0008)),
+        }
+        x, _ = BALL_CLUTCH.validate(design)
+        spring = asbuilt.Spring(x)
+        upper = float(x["disc_series"] * x["disc_cone_height"])
+        top = float(asbuilt.characteristic(x, spring, upper)["peak_torque"])
+        for target in rng.uniform(0.05, 1.3, 3) * max(top, 1.0):
+            want = _first_crossing_one_by_one(x, spring, float(target), upper)
+            got = asbuilt.solve_setting(x, spring, float(target), upper)
+            assert got == want, (design, target)
+            found += want is not None
+            missed += want is None
+    assert found >= 40 and missed >= 10, (found, missed)
