@@ -1027,6 +1027,7 @@ def setting_values(x: Mapping[str, Any], force: float) -> tuple[dict[str, Any], 
     values: dict[str, Any] = {}
     notes: list[str] = []
     helical = x["spring_type"] == "helical"
+    found: tuple[float, float] | None = None
     if not helical or x["spring_wire_diameter"] is not None:
         spring = Spring(x)
         found = _peak_setting(x, spring, target, force)
@@ -1040,7 +1041,7 @@ def setting_values(x: Mapping[str, Any], force: float) -> tuple[dict[str, Any], 
     if helical and x["spring_mean_diameter"] is not None:
         values.update(_suggest_wire(x, target, force, notes))
     if not helical:
-        values.update(_suggest_parallel(x, target, force, notes))
+        values.update(_suggest_parallel(x, target, force, notes, found))
     return values, notes
 
 
@@ -1086,12 +1087,20 @@ def _suggest_wire(
 
 
 def _suggest_parallel(
-    x: Mapping[str, Any], target: float, force: float, notes: list[str]
+    x: Mapping[str, Any],
+    target: float,
+    force: float,
+    notes: list[str],
+    given: tuple[float, float] | None,
 ) -> dict[str, Any]:
+    """The fewest discs in parallel that reach the target; ``given`` is the given stack's
+    own :func:`_peak_setting` (not searched again for its own number of discs)."""
     for n in range(1, 9):
-        trial = {**x, "disc_parallel": n}
-        spring = Spring(trial)
-        found = _peak_setting(trial, spring, target, force)
+        if n == x["disc_parallel"]:
+            found = given
+        else:
+            trial = {**x, "disc_parallel": n}
+            found = _peak_setting(trial, Spring(trial), target, force)
         if found is not None and found[1] <= float(x["disc_yield_strength"]):
             return {"suggested_disc_parallel": n, "suggested_disc_setting": found[0]}
     notes.append("no stack of up to 8 of these discs in parallel reaches the target")

@@ -340,3 +340,44 @@ def test_the_setting_search_on_one_grid_call_is_the_point_by_point_search():
             found += want is not None
             missed += want is None
     assert found >= 40 and missed >= 10, (found, missed)
+
+
+def test_the_suggested_pack_reuses_the_given_stacks_search_and_finds_what_a_fresh_search_finds():
+    # the given stack's own number of discs in parallel is not searched twice; the answer
+    # is still the fewest discs, each count searched from scratch (the reference)
+    from engine.models import _clutch_asbuilt as asbuilt
+
+    rng = np.random.default_rng(3)
+    counts = set()
+    for _ in range(30):
+        design = {
+            **DISC,
+            "disc_parallel": int(rng.integers(1, 4)),
+            "disc_cone_height": float(rng.uniform(1.2, 2.0)) * DISC["disc_thickness"],
+        }
+        x, _ = BALL_CLUTCH.validate(design)
+        target = float(rng.uniform(20.0, 400.0))
+        force = float(
+            cl.spring_force_for_torque(
+                target,
+                x["ball_circle_diameter"],
+                x["groove_angle"],
+                x["ball_count"],
+                x["load_factor"],
+                x["flank_friction"],
+                x["spring_arrangement"],
+            )
+        )
+        values, _ = asbuilt.setting_values({**x, "target_torque": target}, force)
+        want: dict = {}
+        for n in range(1, 9):
+            trial = {**x, "target_torque": target, "disc_parallel": n}
+            found = asbuilt._peak_setting(trial, asbuilt.Spring(trial), target, force)
+            if found is not None and found[1] <= float(x["disc_yield_strength"]):
+                want = {"suggested_disc_parallel": n, "suggested_disc_setting": found[0]}
+                break
+        got = {k: values[k] for k in want} if want else {}
+        assert got == want, (design, target)
+        assert ("suggested_disc_parallel" in values) == bool(want)
+        counts.add(want.get("suggested_disc_parallel"))
+    assert len(counts) >= 3, counts  # packs of several sizes, and some with none
