@@ -430,7 +430,10 @@ def evaluate_chunk(
             if not sel.any():
                 continue
             vec = vector(spec, take(x, n, sel), rung, outputs, tol, int(sel.sum()))
-            if vec is None:
+            if vec is None or not vec.computed:
+                # none of the asked outputs comes from this rung's array path here: its
+                # NaN columns cannot tell a refused point from a null the scalar path gives
+                # too, so the points run one by one (their checks and refusals as alone)
                 loop |= sel
                 continue
             got = vec.values

@@ -726,6 +726,15 @@ def _verdict(
     return verdict, [check]
 
 
+#: A slipping torque so large that the preload it gives is not a float (a groove angle
+#: near 0 makes tan(α − ρ) underflow): the clutch never slips on this joint. Found by
+#: review: the window was "inf kN…inf kN" and its verdict "within".
+_OVERFLOW = (
+    "the preload the clutch gives overflows (slipping torque {t:.4g} N·m): a clutch that "
+    "never slips on this joint; use a steeper groove_angle or a weaker spring"
+)
+
+
 def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
     _need(x, ("clutch_spring_force", *_CL_NAMES[:3]), "with source 'clutch'")
     thread = _thread(x)
@@ -753,6 +762,8 @@ def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
     k_hi = sum(torque_coefficients(bolt, mu + dmu, x["bearing_friction"] + dmu, formula)[:2])
     f_lo, f_hi = clutch_preload_window(t_min, t_max, k_lo, k_hi)
+    if not (math.isfinite(f_lo) and math.isfinite(f_hi)):
+        raise InputOutOfRange(_OVERFLOW.format(t=t_max), field="groove_angle")
     values: dict[str, Any] = {
         "clutch_torque_min": t_min,
         "clutch_torque_max": t_max,
@@ -1333,7 +1344,8 @@ def _vectorized_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 x["target_preload"] * per, *args, f, arr
             )
     dead = ~np.broadcast_to(bolt.ok, n)
-    dead = dead | ~np.broadcast_to(np.isfinite(t_min) & np.isfinite(t_max), n)
+    finite = np.isfinite(t_min) & np.isfinite(t_max) & np.isfinite(f_lo) & np.isfinite(f_hi)
+    dead = dead | ~np.broadcast_to(finite, n)  # the scalar code's two refusals (_OVERFLOW)
     any_dead = bool(dead.any())
     values: dict[str, Any] = {}
     for name, column in raw.items():

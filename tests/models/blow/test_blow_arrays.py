@@ -358,3 +358,45 @@ def test_a_clutch_study_needs_what_a_single_run_needs() -> None:
     with pytest.raises(EngineError, match="needs thread_diameter") as arrays:
         BLOW.vectorized(x, ctx)
     assert arrays.value.field == alone.value.field == "thread_diameter"
+
+
+def test_a_clutch_whose_preload_overflows_is_refused_alone_and_on_arrays() -> None:
+    # a groove angle near 0 makes tan(α − ρ) ~ 1e-300: the slipping torque (1e306 N·m) is
+    # a float but the preload it gives on an M3 thread is not. Alone this is refused
+    # (it was "inf kN…inf kN", verdict "within"); the sweep and the study agree
+    base = {
+        **CLUTCH_M10,
+        "flank_friction": 0.0,
+        "flank_friction_scatter": 0.0,
+        "clutch_spring_force": 1e6,
+        "ball_circle_diameter": 2.0,
+        "thread_diameter": 0.003,
+        "preload_min": 15e3,
+    }
+    base.pop("preload_max")
+    with pytest.raises(EngineError, match="overflows") as err:
+        run(BLOW, {**base, "groove_angle": 1e-300}, fidelity="rigid")
+    assert err.value.field == "groove_angle"
+    swept = sweep(BLOW, base, "groove_angle", [1e-3, 1e-300], fidelity="rigid")
+    assert swept.results["preload_verdict"] == ["within", None]
+    assert swept.rungs == ["rigid", None]
+    chunk = evaluate_chunk(
+        BLOW, base, {"groove_angle": np.array([1e-3, 1e-300])}, ["final_preload"], "rigid"
+    )
+    assert chunk.checks["preload_window"].tolist() == [CHECK_OK, CHECK_UNKNOWN]
+
+
+def test_a_study_of_outputs_the_rung_leaves_null_still_gives_the_checks_of_single_runs() -> None:
+    # without a target preload the clutch path leaves clutch_spring_force_for_target null;
+    # a study asking only for it has nothing on the array path to tell a refused point
+    # by, so the points run alone: every check and rung as a single run gives them
+    base = {k: v for k, v in CLUTCH_M10.items() if k != "target_preload"}
+    forces = np.array([900.0, 1100.0, 2000.0])
+    chunk = evaluate_chunk(
+        BLOW, base, {"clutch_spring_force": forces}, ["clutch_spring_force_for_target"], "rigid"
+    )
+    assert chunk.rungs == ["rigid"] * 3
+    for j, force in enumerate(forces.tolist()):
+        (check,) = run(BLOW, {**base, "clutch_spring_force": force}, fidelity="rigid").checks
+        assert chunk.checks["preload_window"][j] == (CHECK_OK if check.ok else CHECK_FAILED)
+    assert np.isnan(chunk.values["clutch_spring_force_for_target"]).all()
