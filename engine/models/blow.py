@@ -735,36 +735,31 @@ _OVERFLOW = (
 )
 
 
-def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    _need(x, ("clutch_spring_force", *_CL_NAMES[:3]), "with source 'clutch'")
-    thread = _thread(x)
-    if thread is None:
-        raise InputOutOfRange("source 'clutch' needs thread_diameter", field="thread_diameter")
-    bolt, per, tnotes = thread
-    f, df = float(x["flank_friction"] or 0.0), float(x["flank_friction_scatter"])
-    force, tol = float(x["clutch_spring_force"]), float(x["spring_force_tolerance"])
-    args, load_notes = _clutch_args(x)
+def _clutch_window(
+    x: Mapping[str, Any], bolt: Any, args: tuple[Any, Any, Any, Any]
+) -> dict[str, Any]:
+    """The clutch source's numbers on floats or arrays (one design per element).
+
+    The slipping torque at the low and the high corner of the spring tolerance and the
+    flank friction [001, eq. 1–3], the torque per preload at the low and the high corner
+    of μ_G and μ_K (VDI 2230-1 R13), the preload window between them, and with a target
+    preload the spring force that sets it at nominal friction. ``bolt`` is a
+    :class:`~engine.models.preload.Bolt` or ``BoltArrays``; non-finite values are left for
+    the caller to refuse (the scalar code) or mask (the array path).
+    """
+    f, df = _or_zero(x["flank_friction"]), x["flank_friction_scatter"]
+    force, tol = x["clutch_spring_force"], x["spring_force_tolerance"]
     arr = x["spring_arrangement"]
-    t_min = float(cl.torque_limit(force * (1 - tol), *args, max(f - df, 0.0), arr))
-    t_max = float(cl.torque_limit(force * (1 + tol), *args, f + df, arr))
-    if not (math.isfinite(t_min) and math.isfinite(t_max)):
-        raise InputOutOfRange(
-            "the clutch never slips at the highest flank friction (α ≤ atan f): lower "
-            "flank_friction or its scatter, or a steeper groove_angle",
-            field="flank_friction",
-        )
-    mu, dmu = x["thread_friction"], x["friction_scatter"]
+    mu, mu_k, dmu = x["thread_friction"], x["bearing_friction"], x["friction_scatter"]
     formula = x["torque_formula"]
-    k_lo = sum(
-        torque_coefficients(
-            bolt, max(mu - dmu, 0.0), max(x["bearing_friction"] - dmu, 0.0), formula
-        )[:2]
+    t_min = cl.torque_limit(force * (1 - tol), *args, np.maximum(f - df, 0.0), arr)
+    t_max = cl.torque_limit(force * (1 + tol), *args, f + df, arr)
+    low = torque_coefficients_raw(
+        bolt, np.maximum(mu - dmu, 0.0), np.maximum(mu_k - dmu, 0.0), formula
     )
-    k_hi = sum(torque_coefficients(bolt, mu + dmu, x["bearing_friction"] + dmu, formula)[:2])
-    f_lo, f_hi = clutch_preload_window(t_min, t_max, k_lo, k_hi)
-    if not (math.isfinite(f_lo) and math.isfinite(f_hi)):
-        raise InputOutOfRange(_OVERFLOW.format(t=t_max), field="groove_angle")
-    values: dict[str, Any] = {
+    high = torque_coefficients_raw(bolt, mu + dmu, mu_k + dmu, formula)
+    f_lo, f_hi = clutch_preload_window(t_min, t_max, low[0] + low[1], high[0] + high[1])
+    out: dict[str, Any] = {
         "clutch_torque_min": t_min,
         "clutch_torque_max": t_max,
         "delivered_preload_min": f_lo,
@@ -772,6 +767,34 @@ def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "final_torque": 0.5 * (t_min + t_max),
         "final_preload": 0.5 * (f_lo + f_hi),
     }
+    if x.get("target_preload") is not None:
+        nominal = torque_coefficients_raw(bolt, mu, mu_k, formula)
+        out["clutch_spring_force_for_target"] = cl.spring_force_for_torque(
+            x["target_preload"] * (nominal[0] + nominal[1]), *args, f, arr
+        )
+    return out
+
+
+def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    _need(x, ("clutch_spring_force", *_CL_NAMES[:3]), "with source 'clutch'")
+    thread = _thread(x)
+    if thread is None:
+        raise InputOutOfRange("source 'clutch' needs thread_diameter", field="thread_diameter")
+    bolt, _, tnotes = thread
+    args, load_notes = _clutch_args(x)
+    values: dict[str, Any] = {k: float(v) for k, v in _clutch_window(x, bolt, args).items()}
+    t_min, t_max = values["clutch_torque_min"], values["clutch_torque_max"]
+    if not (math.isfinite(t_min) and math.isfinite(t_max)):
+        raise InputOutOfRange(
+            "the clutch never slips at the highest flank friction (α ≤ atan f): lower "
+            "flank_friction or its scatter, or a steeper groove_angle",
+            field="flank_friction",
+        )
+    f_lo, f_hi = values["delivered_preload_min"], values["delivered_preload_max"]
+    if not (math.isfinite(f_lo) and math.isfinite(f_hi)):
+        raise InputOutOfRange(_OVERFLOW.format(t=t_max), field="groove_angle")
+    f, df = float(x["flank_friction"] or 0.0), float(x["flank_friction_scatter"])
+    tol, dmu = float(x["spring_force_tolerance"]), x["friction_scatter"]
     notes = [
         "clutch: a continuous tool stops turning the nut when its clutch slips; the slipping "
         f"torque spans {t_min:.4g}…{t_max:.4g} N·m (spring force ±{tol:.0%}, flank friction "
@@ -781,10 +804,6 @@ def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
         *load_notes,
         *tnotes,
     ]
-    if x.get("target_preload") is not None:
-        values["clutch_spring_force_for_target"] = float(
-            cl.spring_force_for_torque(float(x["target_preload"]) * per, *args, f, arr)
-        )
     checks: list[Check] = []
     lo, hi = x.get("preload_min"), x.get("preload_max")
     if lo is not None or hi is not None:
@@ -1314,35 +1333,11 @@ def _vectorized_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
         math.prod(n),
         labels=False,
     )
-    f, df = _or_zero(x["flank_friction"]), x["flank_friction_scatter"]
-    force, tol = x["clutch_spring_force"], x["spring_force_tolerance"]
     args, load_notes = _clutch_args(x)
-    arr = x["spring_arrangement"]
-    mu, mu_k, dmu = x["thread_friction"], x["bearing_friction"], x["friction_scatter"]
-    formula = x["torque_formula"]
     with np.errstate(all="ignore"):
-        t_min = cl.torque_limit(force * (1 - tol), *args, np.maximum(f - df, 0.0), arr)
-        t_max = cl.torque_limit(force * (1 + tol), *args, f + df, arr)
-        k_lo = sum(
-            torque_coefficients_raw(
-                bolt, np.maximum(mu - dmu, 0.0), np.maximum(mu_k - dmu, 0.0), formula
-            )[:2]
-        )
-        k_hi = sum(torque_coefficients_raw(bolt, mu + dmu, mu_k + dmu, formula)[:2])
-        f_lo, f_hi = clutch_preload_window(t_min, t_max, k_lo, k_hi)
-        raw: dict[str, Any] = {
-            "clutch_torque_min": t_min,
-            "clutch_torque_max": t_max,
-            "delivered_preload_min": f_lo,
-            "delivered_preload_max": f_hi,
-            "final_torque": 0.5 * (t_min + t_max),
-            "final_preload": 0.5 * (f_lo + f_hi),
-        }
-        if x.get("target_preload") is not None:
-            per = sum(torque_coefficients_raw(bolt, mu, mu_k, formula)[:2])
-            raw["clutch_spring_force_for_target"] = cl.spring_force_for_torque(
-                x["target_preload"] * per, *args, f, arr
-            )
+        raw = _clutch_window(x, bolt, args)
+    t_min, t_max = raw["clutch_torque_min"], raw["clutch_torque_max"]
+    f_lo, f_hi = raw["delivered_preload_min"], raw["delivered_preload_max"]
     dead = ~np.broadcast_to(bolt.ok, n)
     finite = np.isfinite(t_min) & np.isfinite(t_max) & np.isfinite(f_lo) & np.isfinite(f_hi)
     dead = dead | ~np.broadcast_to(finite, n)  # the scalar code's two refusals (_OVERFLOW)
