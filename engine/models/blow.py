@@ -507,23 +507,31 @@ def _tool(x: Mapping[str, Any]) -> _Tool:
 # --------------------------------------------------------------------------- the joint
 
 
+def _bolt_inputs(x: Mapping[str, Any]) -> dict[str, Any]:
+    """The inputs :func:`resolve_bolt` (or ``resolve_bolt_arrays``) reads for the joint."""
+    return {
+        "thread_diameter": x["thread_diameter"],
+        "thread_pitch": x["thread_pitch"],
+        "bearing_outer_diameter": x["bearing_outer_diameter"],
+        "hole_diameter": x["hole_diameter"],
+        "yield_strength": 1.0,  # strength is not used here: skip the class lookup
+    }
+
+
+def _bolt_notes(notes: list[str]) -> list[str]:
+    """The bolt's notes less the placeholder strength's."""
+    return [n for n in notes if not n.startswith("yield strength")]
+
+
 def _thread(x: Mapping[str, Any]) -> tuple[Any, float, list[str]] | None:
     """(bolt, k_G + k_K, notes), or None without a thread."""
     if x.get("thread_diameter") is None:
         return None
-    bolt, notes = resolve_bolt(
-        {
-            "thread_diameter": x["thread_diameter"],
-            "thread_pitch": x["thread_pitch"],
-            "bearing_outer_diameter": x["bearing_outer_diameter"],
-            "hole_diameter": x["hole_diameter"],
-            "yield_strength": 1.0,  # strength is not used here: skip the class lookup
-        }
-    )
+    bolt, notes = resolve_bolt(_bolt_inputs(x))
     kg, kk, _ = torque_coefficients(
         bolt, x["thread_friction"], x["bearing_friction"], x["torque_formula"]
     )
-    return bolt, kg + kk, [n for n in notes if not n.startswith("yield strength")]
+    return bolt, kg + kk, _bolt_notes(notes)
 
 
 def _target(x: Mapping[str, Any], per_preload: float | None) -> float | None:
@@ -775,12 +783,16 @@ def _clutch_window(
     return out
 
 
-def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
+def _require_clutch(x: Mapping[str, Any]) -> None:
+    """What the clutch source needs, refused by name (a single run and the array path)."""
     _need(x, ("clutch_spring_force", *_CL_NAMES[:3]), "with source 'clutch'")
-    thread = _thread(x)
-    if thread is None:
+    if x.get("thread_diameter") is None:
         raise InputOutOfRange("source 'clutch' needs thread_diameter", field="thread_diameter")
-    bolt, _, tnotes = thread
+
+
+def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    _require_clutch(x)
+    bolt, bolt_notes = resolve_bolt(_bolt_inputs(x))
     args, load_notes = _clutch_args(x)
     values: dict[str, Any] = {k: float(v) for k, v in _clutch_window(x, bolt, args).items()}
     t_min, t_max = values["clutch_torque_min"], values["clutch_torque_max"]
@@ -802,7 +814,7 @@ def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
         f"relation with μ ± {dmu:g} (VDI 2230-1 R13); dynamic overshoot at the end of the "
         "run-down is neglected (no error estimate)",
         *load_notes,
-        *tnotes,
+        *_bolt_notes(bolt_notes),
     ]
     checks: list[Check] = []
     lo, hi = x.get("preload_min"), x.get("preload_max")
@@ -1318,21 +1330,9 @@ def _vectorized_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
     Where the scalar code refuses the whole request (an input missing, no thread, a
     bolt that cannot be resolved with nothing varied) this raises the same error.
     """
-    _need(x, ("clutch_spring_force", *_CL_NAMES[:3]), "with source 'clutch'")
-    if x.get("thread_diameter") is None:
-        raise InputOutOfRange("source 'clutch' needs thread_diameter", field="thread_diameter")
+    _require_clutch(x)
     n = _points(x)
-    bolt, bolt_notes = resolve_bolt_arrays(
-        {
-            "thread_diameter": x["thread_diameter"],
-            "thread_pitch": x["thread_pitch"],
-            "bearing_outer_diameter": x["bearing_outer_diameter"],
-            "hole_diameter": x["hole_diameter"],
-            "yield_strength": 1.0,  # strength is not used here, as in _thread
-        },
-        math.prod(n),
-        labels=False,
-    )
+    bolt, bolt_notes = resolve_bolt_arrays(_bolt_inputs(x), math.prod(n), labels=False)
     args, load_notes = _clutch_args(x)
     with np.errstate(all="ignore"):
         raw = _clutch_window(x, bolt, args)
@@ -1375,7 +1375,7 @@ def _vectorized_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "relation at the friction box's corners (VDI 2230-1 R13); dynamic overshoot "
         "neglected (no error estimate)",
         *load_notes,
-        *(note for note in bolt_notes if not note.startswith("yield strength")),
+        *_bolt_notes(bolt_notes),
     ]
     return Result(
         values=values, rung=ctx.rung, error_estimate=None, notes=notes, check_arrays=checks
