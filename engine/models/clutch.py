@@ -832,10 +832,9 @@ BALL_CLUTCH = ModelSpec(
 )
 
 
-def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
-    """Every output of clutch.ball_setting, on floats or arrays."""
-    g, dm, ip = x["shear_modulus"], x["spring_mean_diameter"], x["spring_active_coils"]
-    force = spring_force_for_torque(
+def _required_force(x: Mapping[str, Any]) -> Any:
+    """Spring force that sets the slipping torque to ``target_torque`` [001, eq. 1–3]."""
+    return spring_force_for_torque(
         x["target_torque"],
         x["ball_circle_diameter"],
         x["groove_angle"],
@@ -844,6 +843,12 @@ def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
         x["flank_friction"],
         x["spring_arrangement"],
     )
+
+
+def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
+    """Every output of clutch.ball_setting, on floats or arrays."""
+    g, dm, ip = x["shear_modulus"], x["spring_mean_diameter"], x["spring_active_coils"]
+    force = _required_force(x)
     out: dict[str, Any] = {"required_spring_force": force}
     wire, deflection = x["spring_wire_diameter"], x["spring_deflection"]
     if wire is not None:
@@ -906,15 +911,7 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         with np.errstate(all="ignore"):
             v: dict[str, Any] = {k: float(val) for k, val in _setting_values(x).items()}
     else:
-        force = spring_force_for_torque(
-            x["target_torque"],
-            x["ball_circle_diameter"],
-            x["groove_angle"],
-            x["ball_count"],
-            x["load_factor"],
-            x["flank_friction"],
-            x["spring_arrangement"],
-        )
+        force = _required_force(x)
         v = {"required_spring_force": float(force)}
         v["required_deflection"] = asbuilt.disc_breakaway_setting(x, float(force))
     extra, extra_notes = asbuilt.setting_values(x, v["required_spring_force"])

@@ -357,17 +357,10 @@ def test_the_suggested_pack_reuses_the_given_stacks_search_and_finds_what_a_fres
         }
         x, _ = BALL_CLUTCH.validate(design)
         target = float(rng.uniform(20.0, 400.0))
-        force = float(
-            cl.spring_force_for_torque(
-                target,
-                x["ball_circle_diameter"],
-                x["groove_angle"],
-                x["ball_count"],
-                x["load_factor"],
-                x["flank_friction"],
-                x["spring_arrangement"],
-            )
-        )
+        setting = {k: v for k, v in design.items() if k != "spring_deflection"}
+        force = run(BALL_CLUTCH_SETTING, {**setting, "target_torque": target}).results[
+            "required_spring_force"
+        ]
         values, _ = asbuilt.setting_values({**x, "target_torque": target}, force)
         want: dict = {}
         for n in range(1, 9):
