@@ -281,7 +281,7 @@ def joint_rate(
 # ---------------------------------------------------------------------------
 
 
-def rigid_blow_torque(energy: float, stiffness: float) -> float:
+def rigid_blow_torque(energy: Any, stiffness: Any) -> Any:
     r"""Peak torque of a blow into a fixed struck end.
 
     .. math::
@@ -289,14 +289,14 @@ def rigid_blow_torque(energy: float, stiffness: float) -> float:
 
     Parameters
     ----------
-    energy : float
+    energy : float or array
         Kinetic energy of the tool at the blow, [J]
-    stiffness : float
+    stiffness : float or array
         Torsional stiffness between tool inertia and nut, [N*m/rad]
 
     Returns
     -------
-    M : float
+    M : float or array
         [N*m]
 
     Notes
@@ -311,18 +311,19 @@ def rigid_blow_torque(energy: float, stiffness: float) -> float:
     >>> round(rigid_blow_torque(0.5 * 21.07 * (150 * math.pi / 30) ** 2, 203.4), 1)
     1028.3
     """
-    return math.sqrt(2.0 * energy * stiffness)
+    m = np.sqrt(2.0 * energy * stiffness)
+    return float(m) if np.ndim(m) == 0 else m
 
 
 def energy_blow(
-    energy: float,
-    stiffness: float,
-    rate: float,
-    start_torque: float,
-    breakaway: float = 1.0,
-    drive_torque: float = 0.0,
-) -> tuple[float, float, float, float]:
-    r"""One blow by energy balance, struck inertia neglected.
+    energy: Any,
+    stiffness: Any,
+    rate: Any,
+    start_torque: Any,
+    breakaway: Any = 1.0,
+    drive_torque: Any = 0.0,
+) -> tuple[Any, Any, Any, Any]:
+    r"""One blow by energy balance, struck inertia neglected (floats or numpy arrays).
 
     With a massless nut turning while the spring torque equals the joint
     torque, the tool turns :math:`\varphi_t = T_p/C + (T_p - T_0)/k_j` and
@@ -337,57 +338,145 @@ def energy_blow(
 
     Parameters
     ----------
-    energy : float
+    energy : float or array
         E, [J]
-    stiffness : float
+    stiffness : float or array
         C, [N*m/rad]
-    rate : float
+    rate : float or array
         k_j, [N*m/rad]
-    start_torque : float
+    start_torque : float or array
         T_0, joint torque when the blow starts, [N*m]
-    breakaway : float, optional
+    breakaway : float or array, optional
         b ≥ 1, static over kinetic friction, [-]
-    drive_torque : float, optional
+    drive_torque : float or array, optional
         N, net torque driving the tool during the blow (feed less drag), [N*m]
 
     Returns
     -------
-    tuple of float
+    tuple of float or array
         (peak spring torque [N*m], joint torque after the blow [N*m],
-        nut rotation [rad], work into the joint [J])
+        nut rotation [rad], work into the joint [J]); floats when every input is one
+
+    Raises
+    ------
+    InfeasibleDesign
+        A single design with :math:`k_j \le 0` and :math:`T_0 \le N` (a massless nut never
+        stops); on arrays such a point is NaN in every output.
 
     Notes
     -----
     The energy balance of [000, eq. 7–8] with the joint's rate in series with
     the tool's stiffness. With b > 1 a massless nut breaks away at
     :math:`bT_0` and jumps until the spring torque equals the joint torque; the
-    balance still holds, and the peak is :math:`\max(bT_0, T_p)`.
+    balance still holds, and the peak is :math:`\max(bT_0, T_p)`. With
+    :math:`k_j \le 0` (a constant joint torque :math:`T_0`) the nut turns until the
+    tool's energy is spent: :math:`\varphi = (E + NT_0/C - T_0^2/2C)/(T_0 - N)`.
 
     Examples
     --------
     >>> [round(v, 3) for v in energy_blow(100.0, 2.0e4, 1000.0, 60.0)]
     [440.346, 440.346, 0.38, 95.152]
+    >>> [round(float(v[0]), 3) for v in energy_blow(np.array([100.0]), 2.0e4, 1000.0, 60.0)]
+    [440.346, 440.346, 0.38, 95.152]
+    >>> [round(v, 3) for v in energy_blow(100.0, 2.0e4, 0.0, 60.0)]  # constant joint torque
+    [60.0, 60.0, 1.665, 99.91]
     """
     e, c, k, t0, b, n = energy, stiffness, rate, start_torque, breakaway, drive_torque
-    held = n + math.sqrt(n * n + 2.0 * e * c)
-    if held <= b * t0:
-        return held, t0, 0.0, 0.0
-    if k <= 0.0:
-        # constant joint torque T0: the nut turns until the tool's energy is spent
-        if t0 <= n:
+    single = all(np.ndim(v) == 0 for v in (e, c, k, t0, b, n))
+    with np.errstate(all="ignore"):
+        held = n + np.sqrt(n * n + 2.0 * e * c)
+        holds = held <= b * t0
+        flat = k <= 0.0
+        stops = t0 > n  # a constant joint torque stops the nut only above the drive torque
+        if single and not holds and flat and not stops:
             raise InfeasibleDesign(
                 "the energy rung needs a joint that stops the nut: with a zero torque rate "
                 "and a joint torque not above the drive torque a massless nut never stops; "
                 "give a torque rate or use fidelity 'simulation'",
                 field="joint_rate",
             )
-        rot = (e + n * t0 / c - t0 * t0 / (2.0 * c)) / (t0 - n)
-        return max(b * t0, t0), t0, rot, t0 * rot
-    a = 0.5 * (1.0 / c + 1.0 / k)
-    rhs = e + t0 * t0 / (2.0 * k) - n * t0 / k
-    tp = n + math.sqrt(n * n + rhs / a)
-    rot = (tp - t0) / k
-    return max(b * t0, tp), tp, rot, 0.5 * (tp * tp - t0 * t0) / k
+        # a rising joint (k_j > 0)
+        kk = np.where(flat, 1.0, k)
+        a = 0.5 * (1.0 / c + 1.0 / kk)
+        rhs = e + t0 * t0 / (2.0 * kk) - n * t0 / kk
+        tp = n + np.sqrt(n * n + rhs / a)
+        rot = (tp - t0) / kk
+        work = 0.5 * (tp * tp - t0 * t0) / kk
+        # a constant joint torque (k_j <= 0)
+        rot_flat = np.where(stops, (e + n * t0 / c - t0 * t0 / (2.0 * c)) / (t0 - n), np.nan)
+        tp = np.where(flat, np.where(stops, t0, np.nan), tp)
+        rot = np.where(flat, rot_flat, rot)
+        work = np.where(flat, t0 * rot_flat, work)
+        bt0 = b * t0
+        peak = np.maximum(tp, bt0)  # NaN where the nut never stops
+        out = (
+            np.where(holds, held, peak),
+            np.where(holds, t0, tp),
+            np.where(holds, 0.0, rot),
+            np.where(holds, 0.0, work),
+        )
+    if single:
+        return float(out[0]), float(out[1]), float(out[2]), float(out[3])
+    return out
+
+
+def blow_step(
+    method: str,
+    energy: Any,
+    stiffness: Any,
+    rate: Any,
+    start_torque: Any,
+    breakaway: Any = 1.0,
+    drive_torque: Any = 0.0,
+) -> tuple[Any, Any, Any, Any]:
+    r"""One blow of the ``rigid`` or ``energy`` rung (floats or numpy arrays).
+
+    ``rigid`` ([000, eq. 7–8, 10]): the joint is taken to the peak of a blow into a fixed
+    struck end, :math:`M = \sqrt{2EC} + N`, if that is above its torque; with
+    :math:`k_j > 0` the nut turns :math:`(T - T_0)/k_j` and the joint takes
+    :math:`(T^2 - T_0^2)/2k_j`. ``energy``: :func:`energy_blow`.
+
+    Returns
+    -------
+    tuple
+        (peak spring torque [N*m], joint torque after the blow [N*m], nut rotation [rad],
+        work into the joint [J])
+
+    Examples
+    --------
+    >>> [round(float(v), 3) for v in blow_step("rigid", 100.0, 2.0e4, 1000.0, 60.0)]
+    [2000.0, 2000.0, 1.94, 1998.2]
+    >>> [round(float(v), 3) for v in blow_step("energy", 100.0, 2.0e4, 1000.0, 60.0)]
+    [440.346, 440.346, 0.38, 95.152]
+    """
+    if method != "rigid":
+        return energy_blow(energy, stiffness, rate, start_torque, breakaway, drive_torque)
+    m = rigid_blow_torque(energy, stiffness) + drive_torque
+    new = np.maximum(m, start_torque)
+    rising = rate > 0.0
+    with np.errstate(all="ignore"):
+        k = np.where(rising, rate, 1.0)
+        rot = np.where(rising, (new - start_torque) / k, 0.0)
+        work = np.where(rising, 0.5 * (new * new - start_torque * start_torque) / k, 0.0)
+    if all(np.ndim(v) == 0 for v in (energy, stiffness, rate, start_torque, drive_torque)):
+        return float(m), float(new), float(rot), float(work)
+    return m, new, rot, work
+
+
+def blow_gains_nothing(rotation: Any, torque_after: Any, torque_before: Any) -> Any:
+    r"""Whether a blow no longer turns the nut: the run of blows has saturated.
+
+    .. math::
+        \varphi \le 10^{-12}\ \text{rad} \quad\lor\quad
+        T - T_0 \le 10^{-12}\max(|T|, 1\ \text{N·m})
+
+    >>> blow_gains_nothing(0.0, 100.0, 100.0), blow_gains_nothing(0.1, 101.0, 100.0)
+    (True, False)
+    """
+    stuck = (rotation <= 1e-12) | (
+        torque_after - torque_before <= 1e-12 * np.maximum(np.abs(torque_after), 1.0)
+    )
+    return bool(stuck) if np.ndim(stuck) == 0 else stuck
 
 
 def energy_blow_error(
@@ -1176,15 +1265,10 @@ def blow_series(
     saturated = False
     e, c = p.energy, p.stiffness
     for i in range(max_blows):
-        if method == "rigid":
-            m = rigid_blow_torque(e, c) + p.drive_torque
-            new = max(m, torque)
-            peak, rot, work = m, 0.0, 0.0
-            if p.rate > 0.0:
-                rot = (new - torque) / p.rate
-                work = 0.5 * (new * new - torque * torque) / p.rate
-        elif method == "energy":
-            peak, new, rot, work = energy_blow(e, c, p.rate, torque, p.breakaway, p.drive_torque)
+        if method in ("rigid", "energy"):
+            peak, new, rot, work = blow_step(
+                method, e, c, p.rate, torque, p.breakaway, p.drive_torque
+            )
         else:
             left = budget - steps
             if left <= 0:
@@ -1209,7 +1293,7 @@ def blow_series(
         if target_torque is not None and new >= target_torque:
             reached = i + 1
             break
-        if rot <= 1e-12 or new - torque <= 1e-12 * max(abs(new), 1.0):
+        if blow_gains_nothing(rot, new, torque):
             saturated = True
             break
         if method == "rigid":
@@ -1222,57 +1306,6 @@ def blow_series(
 # ---------------------------------------------------------------------------
 # Rungs 1 and 2 on arrays (sweeps and studies: several inputs may vary at once)
 # ---------------------------------------------------------------------------
-
-
-def energy_blow_array(
-    energy: Any,
-    stiffness: Any,
-    rate: Any,
-    start_torque: Any,
-    breakaway: Any = 1.0,
-    drive_torque: Any = 0.0,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    r""":func:`energy_blow` at many points (numpy; the same operations in the same order).
-
-    Parameters
-    ----------
-    energy, stiffness, rate, start_torque, breakaway, drive_torque : float or array
-        As :func:`energy_blow`: E [J], C [N*m/rad], k_j > 0 [N*m/rad], T_0 [N*m],
-        b [-], N [N*m]
-
-    Returns
-    -------
-    tuple of arrays
-        (peak spring torque [N*m], joint torque after the blow [N*m], nut rotation
-        [rad], work into the joint [J])
-
-    Notes
-    -----
-    ValueError where some :math:`k_j \le 0` (the scalar form's constant-torque
-    branch; the model's rates are positive).
-
-    >>> [round(float(v[0]), 3) for v in energy_blow_array(np.array([100.0]), 2.0e4, 1000.0, 60.0)]
-    [440.346, 440.346, 0.38, 95.152]
-    """
-    e, c, k, t0, b, n = energy, stiffness, rate, start_torque, breakaway, drive_torque
-    if not np.all(np.asarray(k) > 0.0):
-        raise ValueError("energy_blow_array needs a positive torque rate at every point")
-    with np.errstate(all="ignore"):
-        held = n + np.sqrt(n * n + 2.0 * e * c)
-        holds = held <= b * t0
-        a = 0.5 * (1.0 / c + 1.0 / k)
-        rhs = e + t0 * t0 / (2.0 * k) - n * t0 / k
-        tp = n + np.sqrt(n * n + rhs / a)
-        rot = (tp - t0) / k
-        bt0 = b * t0
-        peak = np.where(tp > bt0, tp, bt0)
-        work = 0.5 * (tp * tp - t0 * t0) / k
-        return (
-            np.where(holds, held, peak),
-            np.where(holds, t0, tp),
-            np.where(holds, 0.0, rot),
-            np.where(holds, 0.0, work),
-        )
 
 
 @dataclass
@@ -1362,16 +1395,8 @@ def blow_series_array(
     i = 0
     with np.errstate(all="ignore"):
         while idx.size:
-            ee, cc, kk, t0, nn = e[idx], c[idx], k[idx], torque[idx], n[idx]
-            if method == "rigid":
-                m = np.sqrt(2.0 * ee * cc) + nn
-                new = np.where(t0 > m, t0, m)
-                peak, rot, work = m, np.zeros(idx.size), np.zeros(idx.size)
-                pos = kk > 0.0
-                rot = np.where(pos, (new - t0) / kk, rot)
-                work = np.where(pos, 0.5 * (new * new - t0 * t0) / kk, work)
-            else:
-                peak, new, rot, work = energy_blow_array(ee, cc, kk, t0, b[idx], nn)
+            t0 = torque[idx]
+            peak, new, rot, work = blow_step(method, e[idx], c[idx], k[idx], t0, b[idx], n[idx])
             if i == 0:
                 peak0[idx], rot0[idx], after0[idx], work0[idx] = peak, rot, new, work
             total[idx] = total[idx] + work
@@ -1382,7 +1407,7 @@ def blow_series_array(
                 hit = new >= target[idx]
                 reached[idx[hit]] = i + 1
                 done |= hit
-            stuck = ~done & ((rot <= 1e-12) | (new - t0 <= 1e-12 * np.maximum(np.abs(new), 1.0)))
+            stuck = ~done & blow_gains_nothing(rot, new, t0)
             if method == "rigid":
                 stuck = ~done
             saturated[idx[stuck]] = True
@@ -1402,3 +1427,7 @@ def _series_one(
         target_torque=None if target is None else target.reshape(1), max_blows=limit,
     )  # fmt: skip
     return BlowSeriesArrays(*(getattr(s, f.name).reshape(()) for f in fields(BlowSeriesArrays)))
+
+
+#: The old name of :func:`energy_blow` on arrays: the same function.
+energy_blow_array = energy_blow
