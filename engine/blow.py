@@ -436,6 +436,23 @@ def blow_step(
     :math:`k_j > 0` the nut turns :math:`(T - T_0)/k_j` and the joint takes
     :math:`(T^2 - T_0^2)/2k_j`. ``energy``: :func:`energy_blow`.
 
+    Parameters
+    ----------
+    method : str
+        ``rigid`` or ``energy``
+    energy : float or array
+        E, [J]
+    stiffness : float or array
+        C, [N*m/rad]
+    rate : float or array
+        k_j, [N*m/rad]
+    start_torque : float or array
+        T_0, joint torque when the blow starts, [N*m]
+    breakaway : float or array, optional
+        b ≥ 1, static over kinetic friction (energy rung), [-]
+    drive_torque : float or array, optional
+        N, net torque driving the tool during the blow, [N*m]
+
     Returns
     -------
     tuple
@@ -470,6 +487,17 @@ def blow_gains_nothing(rotation: Any, torque_after: Any, torque_before: Any) -> 
         \varphi \le 10^{-12}\ \text{rad} \quad\lor\quad
         T - T_0 \le 10^{-12}\max(|T|, 1\ \text{N·m})
 
+    Parameters
+    ----------
+    rotation : float or array
+        Nut rotation in the blow, [rad]
+    torque_after : float or array
+        T, joint torque after the blow, [N*m]
+    torque_before : float or array
+        T_0, joint torque before the blow, [N*m]
+
+    Examples
+    --------
     >>> blow_gains_nothing(0.0, 100.0, 100.0), blow_gains_nothing(0.1, 101.0, 100.0)
     (True, False)
     """
