@@ -286,7 +286,7 @@ def _pins(node: ast.AST) -> set[tuple[str, str]]:
     return out
 
 
-def _units(tree: ast.Module) -> Iterator[ast.AST]:
+def _units(tree: ast.Module) -> Iterator[ast.FunctionDef | ast.AsyncFunctionDef]:
     """Test functions and helpers: top-level defs and the methods of top-level classes."""
     for stmt in tree.body:
         if isinstance(stmt, ast.FunctionDef | ast.AsyncFunctionDef):
@@ -314,20 +314,37 @@ def _credit(
     return {(m, k) for m in models for k in keys if k in outputs.get(m, set())}
 
 
+def _quoted(outputs: dict[str, set[str]]) -> re.Pattern[str]:
+    """Any output name as a string literal: a file or function without one holds none."""
+    names = sorted({n for v in outputs.values() for n in v}, key=len, reverse=True)
+    return re.compile("[\"'](?:" + "|".join(map(re.escape, names)) + ")[\"']")
+
+
 def pinned_in_tests(outputs: dict[str, set[str]]) -> set[tuple[str, str]]:
     """(model, output) pairs a test under ``tests/`` compares with a value."""
     held: set[tuple[str, str]] = set()
+    quoted = _quoted(outputs)
     for path in sorted((ROOT / "tests").rglob("*.py")):
         if path.name in ("test_every_output_pinned.py", "pins.py"):
             continue
-        tree = ast.parse(path.read_text(encoding="utf-8"))
+        text = path.read_text(encoding="utf-8")
+        if not quoted.search(text):
+            continue
+        lines = text.splitlines()
+        tree = ast.parse(text)
         aliases = _aliases(tree)
-        whole = _mentions(tree, aliases)
+        whole: set[str] | None = None
         for unit in _units(tree):
+            source = "\n".join(lines[unit.lineno - 1 : unit.end_lineno])
+            if not quoted.search(source):
+                continue
             held |= _pins(unit)
             keys = _asserted(unit)
             if keys:
-                held |= _credit(keys, _mentions(unit, aliases) or whole, outputs)
+                models = _mentions(unit, aliases)
+                if not models:
+                    whole = _mentions(tree, aliases) if whole is None else whole
+                held |= _credit(keys, models or whole or set(), outputs)
     return held
 
 
@@ -335,23 +352,29 @@ def pinned_in_doctests(outputs: dict[str, set[str]]) -> set[tuple[str, str]]:
     """(model, output) pairs a doctest in ``engine/`` prints as a number or asserts."""
     held: set[tuple[str, str]] = set()
     parser = doctest.DocTestParser()
+    quoted = _quoted(outputs)
     for path in sorted((ROOT / "engine").rglob("*.py")):
-        tree = ast.parse(path.read_text(encoding="utf-8"))
-        whole = _mentions(tree, {})
+        text = path.read_text(encoding="utf-8")
+        if ">>>" not in text or not quoted.search(text):
+            continue
+        tree = ast.parse(text)
+        whole: set[str] | None = None
         for node in ast.walk(tree):
             if not isinstance(
                 node, ast.Module | ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef
             ):
                 continue
             doc = ast.get_docstring(node)
-            if not doc or ">>>" not in doc:
+            if not doc or ">>>" not in doc or not quoted.search(doc):
                 continue
             examples = parser.get_examples(doc)
-            code = "\n".join(e.source for e in examples)
             try:
-                models = _mentions(ast.parse(code), {}) or whole
+                models = _mentions(ast.parse("\n".join(e.source for e in examples)), {})
             except SyntaxError:
                 continue
+            if not models:
+                whole = _mentions(tree, {}) if whole is None else whole
+                models = whole
             for ex in examples:
                 try:
                     line = ast.parse(ex.source)
