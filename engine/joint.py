@@ -809,6 +809,51 @@ def minimum_assembly_preload(
     )
 
 
+def tightening_torque(
+    preload: float, thread_per_newton: float, bearing_per_newton: float, prevailing_torque: float
+) -> float:
+    r"""Tightening torque for an assembly preload: thread, bearing face and prevailing torque.
+
+    .. math::
+        M_A = F_M k_G + F_M k_K + M_{\ddot u},\qquad
+        k_G = 0.16 P + 0.58\,d_2\,\mu_G,\quad k_K = \mu_K \frac{D_{Km}}{2}
+
+    with k_G, k_K from :func:`engine.preload.tightening_torque_per_preload`
+    (``"vdi2230"``: the coefficients the preload models use too).
+
+    Parameters
+    ----------
+    preload : float
+        F_M, [N]
+    thread_per_newton : float
+        k_G, thread torque per newton of preload, [m]
+    bearing_per_newton : float
+        k_K, bearing-face torque per newton of preload, [m]
+    prevailing_torque : float
+        M_ü, the prevailing (locking) torque, [N*m]
+
+    Returns
+    -------
+    float
+        M_A, [N*m]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R13, eq. (R13/1) plus the prevailing torque; the
+    joint states it at F_M,zul and μ_G,min, μ_K,min (the torque that reaches
+    the permissible preload with the least friction).
+
+    Examples
+    --------
+    M12 8.8 at F_M,zul = 43.11 kN, μ = 0.12: k_G = 0.16 × 1.75 + 0.58 × 10.863
+    × 0.12 = 1.0361 mm, k_K = 0.12 × (16.63 + 13.5)/4 = 0.9039 mm
+
+    >>> round(tightening_torque(43110.0, 1.0361e-3, 0.9039e-3, 0.0), 2)
+    83.63
+    """
+    return preload * thread_per_newton + preload * bearing_per_newton + prevailing_torque
+
+
 def smallest_section(
     stress_diameter: float, sections: Sequence[tuple[float, float]]
 ) -> tuple[float, str]:
