@@ -117,3 +117,12 @@ def test_r12_slip_safety_and_what_vdi_asks():
 def test_seed_004_preload_stress_ratio():
     # σ0/σ_T = 32 500 / (84.27e-6 × 640e6) = 32 500 / 53 932.8 = 0.60260
     assert jt.preload_stress_ratio(32.5e3, 84.27e-6, 640e6) == pytest.approx(0.60260, rel=1e-4)
+
+
+def test_r13_tightening_torque_adds_thread_bearing_and_prevailing_torque():
+    # M12, μ_G = μ_K = 0.12: k_G = 0.16 × 1.75 + 0.58 × 10.863 × 0.12 = 1.03606 mm,
+    # k_K = 0.12 × (16.63 + 13.5)/4 = 0.9039 mm; at 40 kN plus M_ü = 2 N·m:
+    # 40 000 × (1.03606 + 0.9039) e-3 + 2 = 79.598 N·m
+    k_g = 0.16 * 0.00175 + 0.58 * 0.010863 * 0.12
+    k_k = 0.12 * (0.01663 + 0.0135) / 4
+    assert jt.tightening_torque(40e3, k_g, k_k, 2.0) == pytest.approx(79.598, rel=1e-4)
