@@ -1075,7 +1075,9 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
     Output(
         "tightening_torque",
         "N*m",
-        "R13: M_A for F_M,zul at μ_min plus M_ü (or the torque given)",
+        "R13: M_A for F_M,zul at μ_G,min, μ_K,min plus M_ü (VDI 2230-1 R13: the α_A band lies "
+        "below F_M,zul), or the torque given; not the torque for a nominal preload at mean "
+        "friction (preload.control target_torque)",
     ),
     _f("residual_clamp_force_min", "R12: F_KR,min = F_M,min − (1 − Φ_n) F_A − F_Z − ΔF_th"),
     _f("separation_load", "R5/R12: F_A at which the joint opens from the lowest assembly preload"),

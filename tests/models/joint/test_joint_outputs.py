@@ -205,3 +205,43 @@ def test_waisted_tapped_example_takes_the_shank_as_the_smallest_section():
     assert got["permissible_preload"] == pytest.approx(0.9 * RP * a_t / _torsion(0.0075, 0.12))
     # 1 bearing face + 1 interface (tapped), axial load: 3 + 3 + 2 µm
     assert got["embedding_settlement"] == pytest.approx(8e-6, rel=1e-12)
+
+
+def test_one_bolt_two_torques_under_two_named_conventions():
+    # The M12 8.8 torque-wrench joint at μ = 0.10 (issue 28): joint.vdi2230 answers VDI 2230-1
+    # R13's M_A for F_M,zul at μ_min, preload.control the torque for its nominal preload
+    # F_nom = F_M,zul/(1 + 0.30) at that friction. Both are R13 on the same coefficients
+    # k = 0.16 P + 0.58 d2 μ + μ (d_W + d_h)/4, at different preloads; their labels say which.
+    mu = 0.10
+    joint = run(
+        JOINT,
+        {**JOINT.examples[0], "thread_friction_min": mu, "bearing_friction_min": mu},
+    ).results
+    control = run(
+        get_model("preload.control"),
+        {
+            "thread_diameter": D,
+            "method": "torque_wrench",
+            "thread_friction": mu,
+            "bearing_friction": mu,
+            "torque_formula": "vdi2230",
+            "required_clamp_force": 10e3,
+        },
+    ).results
+    k = 0.16 * P + 0.58 * D2 * mu + mu * (DW + DH) / 4
+    f_mzul = 0.9 * RP * AS / _torsion(DS, mu)  # 44.19 kN, the same in both models
+    assert joint["permissible_preload"] == pytest.approx(f_mzul, rel=1e-12)
+    assert control["permissible_preload"] == pytest.approx(f_mzul, rel=1e-12)
+    assert joint["tightening_torque"] == pytest.approx(f_mzul * k, rel=1e-12)  # 73.5 N·m
+    assert joint["tightening_torque"] == pytest.approx(73.5, abs=0.05)
+    f_nom = f_mzul / 1.3
+    assert control["nominal_preload"] == pytest.approx(f_nom, rel=1e-12)
+    assert control["target_torque"] == pytest.approx(f_nom * k, rel=1e-12)  # 56.5 N·m
+    assert control["target_torque"] == pytest.approx(56.5, abs=0.05)
+    # the labels name the convention of each, and each names the other
+    labels = {o.name: o.description for o in JOINT.outputs}
+    other = {o.name: o.description for o in get_model("preload.control").outputs}
+    assert "F_M,zul at μ_G,min, μ_K,min" in labels["tightening_torque"]
+    assert "R13" in labels["tightening_torque"]
+    assert "nominal preload F_nom" in other["target_torque"]
+    assert "given friction" in other["target_torque"]
