@@ -24,6 +24,7 @@ import numpy as np
 from .. import fasteners as fa
 from .. import joint as jt
 from .. import preload as pl
+from .. import threads as th
 from ..errors import EngineError, InputOutOfRange
 from ..preload_methods import METHODS, get_method
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
@@ -1351,10 +1352,10 @@ def _vector_hook_checks(
             name = check.name
             if name in ("surface_pressure_assembly", "surface_pressure_working"):
                 force = fm_max if name == "surface_pressure_assembly" else f_s_max
-                verdict = _surface_pressure(force, outer, inner) <= limit
+                verdict = fa.surface_pressure(force, outer, inner) <= limit
             elif name == "surface_pressure_nut" and fastener.thread is not None:
                 nut = fa.nut(str(x["nut"]), fastener.thread)
-                verdict = _surface_pressure(fm_max, nut.bearing_diameter, hole) <= limit
+                verdict = fa.surface_pressure(fm_max, nut.bearing_diameter, hole) <= limit
             elif (
                 name == "thread_stripping" and tau is not None and bolt.tensile_strength is not None
             ):
@@ -1369,12 +1370,6 @@ def _vector_hook_checks(
     return out, notes
 
 
-def _surface_pressure(force: Any, outer: Any, inner: Any) -> Any:
-    """:func:`engine.fasteners.surface_pressure` on arrays (the same expressions)."""
-    area = np.maximum(0.0, 0.25 * math.pi * (outer**2 - inner**2))
-    return np.where(area > 0, force / area, np.inf)
-
-
 def _min_engagement(bolt: Bolt, tau: np.ndarray, sel: np.ndarray) -> np.ndarray:
     """Least length of engagement (VDI 2230-1 R11) per point, once per distinct τ_BM."""
     assert bolt.tensile_strength is not None
@@ -1385,7 +1380,7 @@ def _min_engagement(bolt: Bolt, tau: np.ndarray, sel: np.ndarray) -> np.ndarray:
             bolt.diameter,
             bolt.pitch,
             bolt.pitch_diameter,
-            bolt.diameter - 1.082532 * bolt.pitch,
+            th.nut_minor_diameter(bolt.diameter, bolt.pitch),
             bolt.stress_area,
             bolt.tensile_strength,
             fz.BOLT_SHEAR_RATIO * bolt.tensile_strength,
