@@ -199,6 +199,20 @@ class Bolt:
     fastener: fz.Fastener | None = None
 
 
+def _class_note(name: str, diameter: float, yield_strength: float, tensile: float) -> str:
+    """Where a property class's strengths come from: ISO 898-1, or its M39 values carried on."""
+    kind = th.PROPERTY_CLASSES[name].yield_kind
+    values = f"{kind} = {yield_strength / 1e6:g} MPa, R_m = {tensile / 1e6:g} MPa"
+    if th.beyond_iso898(name, diameter):
+        return (
+            f"property class {name}, d = {diameter * 1e3:g} mm: ISO 898-1 defines the class "
+            f"only up to M39; its M39 minimum values {values} are taken here (an assumption: "
+            "larger bolts are made to the class by agreement); give yield_strength for the "
+            "bolt's certified values"
+        )
+    return f"property class {name}, d = {diameter * 1e3:g} mm: {values} (ISO 898-1 minimum values)"
+
+
 def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
     """The bolt a request describes, and notes naming each standard value used."""
     cat, fastener, notes = fz.resolve(x)
@@ -225,11 +239,7 @@ def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
     else:
         cls = str(x.get("property_class") or "8.8")
         yield_strength, tensile = th.property_class_strengths(cls, d)
-        kind = th.PROPERTY_CLASSES[cls].yield_kind
-        notes.append(
-            f"property class {cls}, d = {mm:g} mm: {kind} = {yield_strength / 1e6:g} MPa, "
-            f"R_m = {tensile / 1e6:g} MPa (ISO 898-1 minimum values)"
-        )
+        notes.append(_class_note(cls, d, yield_strength, tensile))
     given_outer = x.get("bearing_outer_diameter") is not None
     if given_outer:
         outer = float(x["bearing_outer_diameter"])
@@ -509,7 +519,15 @@ def resolve_bolt_arrays(
             th.property_class_strengths(name, 0.01)  # refuses an unknown class
             cls = th.PROPERTY_CLASSES[name]
             mm = d * 1e3
-            ok &= mm <= cls.max_diameter_mm * (1 + 1e-9)
+            ok &= d <= th.largest_diameter(name) * (1 + 1e-9)
+            if np.any(ok & (mm > cls.max_diameter_mm * (1 + 1e-9))):
+                notes.append(
+                    _class_note(
+                        name,
+                        float(np.max(d[ok])),
+                        *th.property_class_strengths(name, float(np.max(d[ok]))),
+                    )
+                )
             small = mm <= cls.size_step_mm * (1 + 1e-9)
             yield_strength = np.where(small, cls.yield_small * 1e6, cls.yield_large * 1e6)
             tensile = np.where(small, cls.tensile_small * 1e6, cls.tensile_large * 1e6)
