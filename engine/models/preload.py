@@ -9,6 +9,7 @@ calls those functions and says where every number came from.
 from __future__ import annotations
 
 import math
+import threading
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from typing import Any
@@ -273,10 +274,10 @@ def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
         Bolt(
             diameter=d,
             pitch=pitch,
-            pitch_diameter=cat.get("pitch_diameter", th.pitch_diameter(d, pitch)),
-            minor_diameter=cat.get("minor_diameter", th.minor_diameter(d, pitch)),
-            stress_diameter=cat.get("stress_diameter", th.stress_diameter(d, pitch)),
-            stress_area=cat.get("stress_area", th.stress_area(d, pitch)),
+            pitch_diameter=_given_or(cat, "pitch_diameter", th.pitch_diameter, d, pitch),
+            minor_diameter=_given_or(cat, "minor_diameter", th.minor_diameter, d, pitch),
+            stress_diameter=_given_or(cat, "stress_diameter", th.stress_diameter, d, pitch),
+            stress_area=_given_or(cat, "stress_area", th.stress_area, d, pitch),
             yield_strength=yield_strength,
             tensile_strength=tensile,
             bearing_outer_diameter=outer,
@@ -286,6 +287,11 @@ def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
         ),
         notes,
     )
+
+
+def _given_or(cat: Mapping[str, Any], name: str, relation: Any, d: Any, pitch: Any) -> Any:
+    """The catalogue's ``name`` where it has one, else the ISO relation on (d, P)."""
+    return cat[name] if name in cat else relation(d, pitch)
 
 
 def torque_coefficients_raw(
@@ -331,23 +337,72 @@ def _torsion(bolt: Bolt, x: Mapping[str, Any]) -> float:
     )
 
 
-def _deviation(bolt: Bolt | BoltArrays, mu_g: Any, mu_k: Any, formula: str) -> Any:
-    """|M(formula) − M(exact)| / M(exact) on floats or arrays [004, eq. 10–13]."""
-    chosen = sum(torque_coefficients_raw(bolt, mu_g, mu_k, formula)[:2])
-    exact = sum(torque_coefficients_raw(bolt, mu_g, mu_k, "exact")[:2])
+def _deviation(
+    bolt: Bolt | BoltArrays, mu_g: Any, mu_k: Any, formula: str, chosen: Any = None
+) -> Any:
+    """|M(formula) − M(exact)| / M(exact) on floats or arrays [004, eq. 10–13].
+
+    ``chosen`` is k_G + k_K of ``formula`` where the caller has it already; for
+    ``formula == "exact"`` the exact sum is that same sum (the deviation is 0).
+    """
+    if chosen is None:
+        chosen = sum(torque_coefficients_raw(bolt, mu_g, mu_k, formula)[:2])
+    exact = (
+        chosen
+        if formula == "exact"
+        else sum(torque_coefficients_raw(bolt, mu_g, mu_k, "exact")[:2])
+    )
     return abs(chosen - exact) / exact
 
 
-def _formula_deviation(bolt: Bolt, x: Mapping[str, Any]) -> float:
-    """Relative difference of the chosen torque formula from the exact [004, eq. 10–13]."""
-    return float(
-        _deviation(
-            bolt,
-            float(x["thread_friction"]),
-            float(x["bearing_friction"]),
-            str(x["torque_formula"]),
-        )
-    )
+@dataclass(frozen=True)
+class _Design:
+    """One design's bolt and torque coefficients, as both the rung estimate and the run need."""
+
+    bolt: Bolt
+    notes: tuple[str, ...]
+    k_thread: float
+    k_bearing: float
+    radius: float
+    #: |M(torque_formula) − M(exact)| / M(exact), the closed form's error estimate.
+    deviation: float
+
+
+def _resolve_design(x: Mapping[str, Any]) -> _Design:
+    """The bolt (resolved once) and each torque coefficient (computed once) of a design."""
+    bolt, notes = resolve_bolt(x)
+    mu_g, mu_k = float(x["thread_friction"]), float(x["bearing_friction"])
+    formula = str(x["torque_formula"])
+    k_thread, k_bearing, radius = torque_coefficients(bolt, mu_g, mu_k, formula)
+    deviation = float(_deviation(bolt, mu_g, mu_k, formula, sum((k_thread, k_bearing))))
+    return _Design(bolt, tuple(notes), k_thread, k_bearing, radius, deviation)
+
+
+class _Handoff(threading.local):
+    """The design the rung estimate resolved, handed to the run of the same request.
+
+    The runner asks the rung for its estimate, then runs the model, with the same
+    validated inputs. The estimate leaves its :class:`_Design` here with those inputs'
+    items; :func:`_design` takes it (and empties the slot) when its own inputs have
+    the same items, in the same thread, so the request resolves its bolt once. The
+    slot is matched by value, never by identity, holds one design per thread and is
+    emptied when used: a later request, or one with other inputs, resolves its own.
+    """
+
+    items: tuple[tuple[str, Any], ...] | None = None
+    design: _Design | None = None
+
+
+_HANDOFF = _Handoff()
+
+
+def _design(x: Mapping[str, Any]) -> _Design:
+    """The design of a single-design request: the estimate's, when it resolved it."""
+    slot = _HANDOFF
+    found, slot.items, design, slot.design = slot.items, None, slot.design, None
+    if design is not None and found == tuple(x.items()):
+        return design
+    return _resolve_design(x)
 
 
 def _rung_estimate(x: Mapping[str, Any]) -> Any:
@@ -360,10 +415,11 @@ def _rung_estimate(x: Mapping[str, Any]) -> Any:
                 bolt_arrays, x["thread_friction"], x["bearing_friction"], str(x["torque_formula"])
             )
             return np.where(bolt_arrays.ok, dev, np.nan)
-        bolt, _ = resolve_bolt(x)
-        return _formula_deviation(bolt, x)
+        design = _resolve_design(x)
     except (EngineError, KeyError, TypeError, ValueError):
         return None
+    _HANDOFF.items, _HANDOFF.design = tuple(x.items()), design
+    return design.deviation
 
 
 # --------------------------------------------------------------------------- array path
@@ -563,10 +619,10 @@ def resolve_bolt_arrays(
         BoltArrays(
             diameter=d,
             pitch=pitch,
-            pitch_diameter=cat.get("pitch_diameter", th.pitch_diameter(d, pitch)),
-            minor_diameter=cat.get("minor_diameter", th.minor_diameter(d, pitch)),
-            stress_diameter=cat.get("stress_diameter", th.stress_diameter(d, pitch)),
-            stress_area=cat.get("stress_area", th.stress_area(d, pitch)),
+            pitch_diameter=_given_or(cat, "pitch_diameter", th.pitch_diameter, d, pitch),
+            minor_diameter=_given_or(cat, "minor_diameter", th.minor_diameter, d, pitch),
+            stress_diameter=_given_or(cat, "stress_diameter", th.stress_diameter, d, pitch),
+            stress_area=_given_or(cat, "stress_area", th.stress_area, d, pitch),
             yield_strength=yield_strength,
             tensile_strength=tensile,
             bearing_outer_diameter=outer,
@@ -674,10 +730,10 @@ def _add_bought_part_checks(
 
 
 def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    bolt, notes = resolve_bolt(x)
+    design = _design(x)
+    bolt, notes = design.bolt, list(design.notes)
     warnings: list[str] = []
     checks: list[Check] = []
-    mu_g, mu_k = float(x["thread_friction"]), float(x["bearing_friction"])
     nu, formula = float(x["utilization"]), str(x["torque_formula"])
     beta = _torsion(bolt, x)
     permissible = pl.assembly_preload(bolt.yield_strength, bolt.stress_area, beta, nu)
@@ -687,13 +743,13 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
     else:
         force = permissible
     sigma_eq = pl.equivalent_stress(force, bolt.stress_area, beta)
-    k_thread, k_bearing, radius = torque_coefficients(bolt, mu_g, mu_k, formula)
+    k_thread, k_bearing, radius = design.k_thread, design.k_bearing, design.radius
     m_thread, m_bearing = force * k_thread, force * k_bearing
     total = m_thread + m_bearing
     ideal = pl.ideal_torque(force, bolt.pitch)
     thumb = pl.rule_of_thumb_torque(force, bolt.diameter)
     thumb_yield = pl.rule_of_thumb_torque_from_yield(bolt.yield_strength, bolt.diameter)
-    deviation = _formula_deviation(bolt, x)
+    deviation = design.deviation
     share = ideal / total if total > 0 else 1.0
     if x.get("preload") is not None:
         ok = sigma_eq <= bolt.yield_strength
@@ -1260,7 +1316,8 @@ def _method_band(
 
 
 def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    bolt, notes = resolve_bolt(x)
+    design = _design(x)
+    bolt, notes = design.bolt, list(design.notes)
     warnings: list[str] = []
     checks: list[Check] = []
     method = get_method(str(x["method"]))
@@ -1285,8 +1342,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
     required = factor * float(x["required_clamp_force"])
 
     nominal, f_min, f_max = _method_band(method, permissible, at_yield, given)
-    k_thread, k_bearing, _ = torque_coefficients(bolt, mu_g, mu_k, formula)
-    torque = nominal * (k_thread + k_bearing)
+    torque = nominal * (design.k_thread + design.k_bearing)
 
     values: dict[str, Any] = {
         "controlled_quantity": method.controls,
@@ -1499,7 +1555,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
     return Result(
         values=values,
         rung=ctx.rung,
-        error_estimate=_formula_deviation(bolt, x),
+        error_estimate=design.deviation,
         checks=checks,
         notes=notes,
         warnings=warnings,
