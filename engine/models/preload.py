@@ -325,18 +325,6 @@ def torque_coefficients(
     return float(k_thread), float(k_bearing), float(radius)
 
 
-def _torsion(bolt: Bolt, x: Mapping[str, Any]) -> float:
-    return float(
-        pl.torsion_factor(
-            bolt.pitch,
-            bolt.pitch_diameter,
-            bolt.stress_diameter,
-            float(x["thread_friction"]),
-            str(x["preload_convention"]),
-        )
-    )
-
-
 def _deviation(
     bolt: Bolt | BoltArrays, mu_g: Any, mu_k: Any, formula: str, chosen: Any = None
 ) -> Any:
@@ -729,29 +717,77 @@ def _add_bought_part_checks(
     notes.extend(more_notes)
 
 
-def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    design = _design(x)
-    bolt, notes = design.bolt, list(design.notes)
-    warnings: list[str] = []
-    checks: list[Check] = []
-    nu, formula = float(x["utilization"]), str(x["torque_formula"])
-    beta = _torsion(bolt, x)
-    permissible = pl.assembly_preload(bolt.yield_strength, bolt.stress_area, beta, nu)
-    if x.get("preload") is not None:
-        force = float(x["preload"])
-        notes.append(f"preload F0 = {force / 1e3:.4g} kN as given (not the permissible one)")
-    else:
-        force = permissible
+def _tightening_values(
+    x: Mapping[str, Any],
+    bolt: Bolt | BoltArrays,
+    coefficients: tuple[Any, Any, Any],
+    deviation: Any,
+) -> dict[str, Any]:
+    """The numbers of ``preload.tightening``, on floats (one design) or arrays (many).
+
+    ``coefficients`` are (k_G, k_K, R) of the chosen torque formula and ``deviation``
+    its distance from the exact one; the single run and the array path both come
+    here, so one set of lines gives every number.
+    """
+    beta = pl.torsion_factor(
+        bolt.pitch,
+        bolt.pitch_diameter,
+        bolt.stress_diameter,
+        x["thread_friction"],
+        str(x["preload_convention"]),
+    )
+    permissible = pl.assembly_preload(bolt.yield_strength, bolt.stress_area, beta, x["utilization"])
+    force = permissible if x.get("preload") is None else x["preload"]
     sigma_eq = pl.equivalent_stress(force, bolt.stress_area, beta)
-    k_thread, k_bearing, radius = design.k_thread, design.k_bearing, design.radius
+    k_thread, k_bearing, radius = coefficients
     m_thread, m_bearing = force * k_thread, force * k_bearing
     total = m_thread + m_bearing
     ideal = pl.ideal_torque(force, bolt.pitch)
     thumb = pl.rule_of_thumb_torque(force, bolt.diameter)
     thumb_yield = pl.rule_of_thumb_torque_from_yield(bolt.yield_strength, bolt.diameter)
-    deviation = design.deviation
-    share = ideal / total if total > 0 else 1.0
+    positive = total > 0
+    safe = np.where(positive, total, 1.0)
+    return {
+        "assembly_preload": force,
+        "permissible_preload": permissible,
+        "tightening_torque": total,
+        "thread_torque": m_thread,
+        "bearing_torque": m_bearing,
+        "ideal_torque": ideal,
+        "ideal_torque_share": np.where(positive, ideal / safe, 1.0),
+        "friction_radius": radius,
+        "stress_area": bolt.stress_area,
+        "pitch_diameter": bolt.pitch_diameter,
+        "minor_diameter": bolt.minor_diameter,
+        "thread_pitch": bolt.pitch,
+        "torsion_factor": beta,
+        "equivalent_stress": sigma_eq,
+        "yield_strength": bolt.yield_strength,
+        "stress_utilization": sigma_eq / bolt.yield_strength,
+        "bearing_outer_diameter": bolt.bearing_outer_diameter,
+        "hole_diameter": bolt.hole_diameter,
+        "torque_formula_deviation": deviation,
+        "rule_of_thumb_torque": thumb,
+        "rule_of_thumb_deviation": np.where(positive, (thumb - total) / safe, math.inf),
+        "yield_rule_torque": thumb_yield,
+        "yield_rule_deviation": np.where(positive, (thumb_yield - total) / safe, math.inf),
+    }
+
+
+def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    design = _design(x)
+    bolt, notes = design.bolt, list(design.notes)
+    checks: list[Check] = []
+    values = {
+        k: float(v)
+        for k, v in _tightening_values(
+            x, bolt, (design.k_thread, design.k_bearing, design.radius), design.deviation
+        ).items()
+    }
+    force, total = values["assembly_preload"], values["tightening_torque"]
+    sigma_eq, share = values["equivalent_stress"], values["ideal_torque_share"]
     if x.get("preload") is not None:
+        notes.append(f"preload F0 = {force / 1e3:.4g} kN as given (not the permissible one)")
         ok = sigma_eq <= bolt.yield_strength
         checks.append(
             Check(
@@ -768,49 +804,24 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "5…15 % is usual"
         )
     if x["preload_convention"] == "elastic":
+        nu = float(x["utilization"])
         notes.append(
             f"elastic convention [004, eq. 3, 5]: ν = ξ/n_T; with a plain shank (ξ = 1) "
             f"ν = {nu:g} means a safety factor on yield n_T = {1 / nu:.3g} ([004]: 1.2…1.4). "
             "A0 is the stress area here; [004, eq. 6] takes d0 = d1"
         )
-    if formula == "approx":
+    if x["torque_formula"] == "approx":
         notes.append(
             "approx: [004, eq. 15] with d2 ≈ d and R_T ≈ 0.25 (D_f + d_h); with one "
             "friction coefficient it is [004, eq. 19]"
         )
-    values: dict[str, Any] = {
-        "assembly_preload": force,
-        "permissible_preload": permissible,
-        "tightening_torque": total,
-        "thread_torque": m_thread,
-        "bearing_torque": m_bearing,
-        "ideal_torque": ideal,
-        "ideal_torque_share": share,
-        "friction_radius": radius,
-        "stress_area": bolt.stress_area,
-        "pitch_diameter": bolt.pitch_diameter,
-        "minor_diameter": bolt.minor_diameter,
-        "thread_pitch": bolt.pitch,
-        "torsion_factor": beta,
-        "equivalent_stress": sigma_eq,
-        "yield_strength": bolt.yield_strength,
-        "stress_utilization": sigma_eq / bolt.yield_strength,
-        "bearing_outer_diameter": bolt.bearing_outer_diameter,
-        "hole_diameter": bolt.hole_diameter,
-        "torque_formula_deviation": deviation,
-        "rule_of_thumb_torque": thumb,
-        "rule_of_thumb_deviation": (thumb - total) / total if total > 0 else math.inf,
-        "yield_rule_torque": thumb_yield,
-        "yield_rule_deviation": (thumb_yield - total) / total if total > 0 else math.inf,
-    }
     _add_bought_part_checks(x, bolt, force, total, values, checks, notes)
     return Result(
-        values=values,
+        values=dict(values),
         rung=ctx.rung,
-        error_estimate=deviation,
+        error_estimate=design.deviation,
         checks=checks,
         notes=notes,
-        warnings=warnings,
     )
 
 
@@ -842,66 +853,24 @@ def _bought_part_arrays(
 
 
 def _tightening_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    """The array path of ``preload.tightening``: :func:`_tightening` on many points at once."""
+    """The array path of ``preload.tightening``: its numbers on many points at once."""
     n = _points(x) or 1
     bolt, notes = resolve_bolt_arrays(x, n, labels=ctx.wants("fastener"))
-    ok = bolt.ok.copy()
+    mu_g, mu_k, formula = x["thread_friction"], x["bearing_friction"], str(x["torque_formula"])
+    coefficients = torque_coefficients_raw(bolt, mu_g, mu_k, formula)
+    deviation = _deviation(bolt, mu_g, mu_k, formula, coefficients[0] + coefficients[1])
+    values = _tightening_values(x, bolt, coefficients, deviation)
     verdicts: dict[str, Any] = {}
-    mu_g, mu_k = x["thread_friction"], x["bearing_friction"]
-    nu, formula = x["utilization"], str(x["torque_formula"])
-    beta = pl.torsion_factor(
-        bolt.pitch,
-        bolt.pitch_diameter,
-        bolt.stress_diameter,
-        mu_g,
-        str(x["preload_convention"]),
-    )
-    permissible = pl.assembly_preload(bolt.yield_strength, bolt.stress_area, beta, nu)
-    given = x.get("preload") is not None
-    force = x["preload"] if given else permissible
-    sigma_eq = pl.equivalent_stress(force, bolt.stress_area, beta)
-    k_thread, k_bearing, radius = torque_coefficients_raw(bolt, mu_g, mu_k, formula)
-    m_thread, m_bearing = force * k_thread, force * k_bearing
-    total = m_thread + m_bearing
-    ideal = pl.ideal_torque(force, bolt.pitch)
-    thumb = pl.rule_of_thumb_torque(force, bolt.diameter)
-    thumb_yield = pl.rule_of_thumb_torque_from_yield(bolt.yield_strength, bolt.diameter)
-    positive = total > 0
-    safe = np.where(positive, total, 1.0)
-    if given:
-        verdicts["below_yield"] = sigma_eq <= bolt.yield_strength
-    values: dict[str, Any] = {
-        "assembly_preload": force,
-        "permissible_preload": permissible,
-        "tightening_torque": total,
-        "thread_torque": m_thread,
-        "bearing_torque": m_bearing,
-        "ideal_torque": ideal,
-        "ideal_torque_share": np.where(positive, ideal / safe, 1.0),
-        "friction_radius": radius,
-        "stress_area": bolt.stress_area,
-        "pitch_diameter": bolt.pitch_diameter,
-        "minor_diameter": bolt.minor_diameter,
-        "thread_pitch": bolt.pitch,
-        "torsion_factor": beta,
-        "equivalent_stress": sigma_eq,
-        "yield_strength": bolt.yield_strength,
-        "stress_utilization": sigma_eq / bolt.yield_strength,
-        "bearing_outer_diameter": bolt.bearing_outer_diameter,
-        "hole_diameter": bolt.hole_diameter,
-        "torque_formula_deviation": _deviation(bolt, mu_g, mu_k, formula),
-        "rule_of_thumb_torque": thumb,
-        "rule_of_thumb_deviation": np.where(positive, (thumb - total) / safe, math.inf),
-        "yield_rule_torque": thumb_yield,
-        "yield_rule_deviation": np.where(positive, (thumb_yield - total) / safe, math.inf),
-    }
+    if x.get("preload") is not None:
+        verdicts["below_yield"] = values["equivalent_stress"] <= bolt.yield_strength
+    force, total = values["assembly_preload"], values["tightening_torque"]
     _bought_part_arrays(x, bolt, force, total, values, verdicts)
     return Result(
-        values=_finish(values, ok, n),
+        values=_finish(values, bolt.ok, n),
         rung=ctx.rung,
         error_estimate=None,
         notes=notes,
-        check_arrays=_verdicts(verdicts, ok, n),
+        check_arrays=_verdicts(verdicts, bolt.ok, n),
     )
 
 
