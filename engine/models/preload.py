@@ -1194,79 +1194,172 @@ CONTROL_INPUTS: tuple[Param, ...] = (
 )
 
 
-def _grip_sections(bolt: Bolt, x: Mapping[str, Any]) -> tuple[list[float], list[float]]:
-    """Lengths and diameters of the stretched sections [004, eq. 4, 7]."""
-    grip = float(x["clamped_length"])
-    l_shank, l_reduced = float(x["shank_length"]), float(x["reduced_length"])
+def _grip_sections(
+    bolt: Bolt | BoltArrays, x: Mapping[str, Any]
+) -> tuple[list[Any], list[Any], Any]:
+    """Lengths and diameters of the stretched sections [004, eq. 4, 7], on floats or arrays.
+
+    Shank, reduced shank, free thread (d3) and a third of the nut height at d3 (0.8 d
+    when absent); a section of zero length adds nothing to the sums. The third value
+    is False where the inputs do not make a grip (shank and reduced lengths beyond
+    clamped_length, or a reduced length without its diameter): :func:`_refuse_grip`
+    says why.
+    """
+    grip = x["clamped_length"]
+    l_shank, l_reduced = x["shank_length"], x["reduced_length"]
     free = grip - l_shank - l_reduced
-    if free < -1e-12 * grip:
-        raise InputOutOfRange(
-            f"shank_length + reduced_length = {(l_shank + l_reduced) * 1e3:g} mm exceeds "
-            f"clamped_length = {grip * 1e3:g} mm",
-            field="shank_length",
-        )
-    shank_d = x.get("shank_diameter")
-    shank_d = bolt.diameter if shank_d is None else float(shank_d)
+    fine = ~np.asarray(free < -1e-12 * grip)
+    if x.get("reduced_diameter") is None:
+        fine = fine & ~np.asarray(l_reduced > 0)
+    d = bolt.diameter
+    shank_d = d if x.get("shank_diameter") is None else x["shank_diameter"]
+    reduced_d = d if x.get("reduced_diameter") is None else x["reduced_diameter"]
+    nut = 0.8 * d if x.get("nut_height") is None else x["nut_height"]
+    lengths = [l_shank, l_reduced, np.maximum(free, 0.0), nut / 3.0]
+    diameters = [shank_d, reduced_d, bolt.minor_diameter, bolt.minor_diameter]
+    return lengths, diameters, fine
+
+
+def _refuse_grip(x: Mapping[str, Any]) -> None:
+    """Why a single design's grip is refused (:func:`_grip_sections` gave False)."""
+    grip, l_shank, l_reduced = x["clamped_length"], x["shank_length"], x["reduced_length"]
     if l_reduced > 0 and x.get("reduced_diameter") is None:
         raise InputOutOfRange(
             "reduced_diameter is required when reduced_length > 0", field="reduced_diameter"
         )
-    nut = x.get("nut_height")
-    nut = 0.8 * bolt.diameter if nut is None else float(nut)
-    lengths = [l_shank, l_reduced, max(free, 0.0), nut / 3.0]
-    diameters = [
-        shank_d,
-        float(x["reduced_diameter"] or bolt.diameter),
-        bolt.minor_diameter,
-        bolt.minor_diameter,
-    ]
-    kept = [(li, di) for li, di in zip(lengths, diameters, strict=True) if li > 0]
-    return [li for li, _ in kept], [di for _, di in kept]
+    raise InputOutOfRange(
+        f"shank_length + reduced_length = {(l_shank + l_reduced) * 1e3:g} mm exceeds "
+        f"clamped_length = {grip * 1e3:g} mm",
+        field="shank_length",
+    )
 
 
-def _smallest_section(bolt: Bolt, x: Mapping[str, Any], notes: list[str]) -> tuple[float, float]:
-    """d_0 and A_0 of the smallest section: thread, plain or reduced shank (VDI 2230-1 R7)."""
+def _smallest_section(bolt: Bolt | BoltArrays, x: Mapping[str, Any]) -> tuple[Any, Any, Any, Any]:
+    """d_0, A_0 of the smallest section (VDI 2230-1 R7), on floats or arrays.
+
+    :func:`engine.joint.smallest_section` over the thread, the plain and the reduced
+    shank; also where it is the shank, and False where a reduced length has no
+    diameter.
+    """
     sections = []
-    if float(x["shank_length"]) > 0.0 and x.get("shank_diameter") is not None:
-        sections.append((float(x["shank_length"]), float(x["shank_diameter"])))
-    if float(x["reduced_length"]) > 0.0:
-        if x.get("reduced_diameter") is None:
-            raise InputOutOfRange(
-                "reduced_diameter is required when reduced_length > 0", field="reduced_diameter"
-            )
-        sections.append((float(x["reduced_length"]), float(x["reduced_diameter"])))
+    if x.get("shank_diameter") is not None:
+        sections.append((x["shank_length"], x["shank_diameter"]))
+    if x.get("reduced_diameter") is not None:
+        sections.append((x["reduced_length"], x["reduced_diameter"]))
+        fine: Any = True
+    else:
+        fine = ~np.asarray(x["reduced_length"] > 0.0)
     d0, where = jt.smallest_section(bolt.stress_diameter, sections)
-    area0 = bolt.stress_area if where == "thread" else 0.25 * math.pi * d0 * d0
-    if where == "shank":
-        notes.append(
-            f"smallest section is the shank, d_0 = {d0 * 1e3:.4g} mm < d_S = "
-            f"{bolt.stress_diameter * 1e3:.4g} mm: the permissible and yield preloads use "
-            f"A_0 = {area0 * 1e6:.4g} mm² and W_p = π d_0³/16 (VDI 2230-1 R7; [004, eq. 3–4])"
-        )
-    return d0, area0
+    shank = np.asarray(where) == "shank"
+    area0 = np.where(shank, 0.25 * math.pi * d0 * d0, bolt.stress_area)
+    return d0, area0, shank, fine
 
 
 def _clamped_compliance(
-    bolt: Bolt, x: Mapping[str, Any], method: ControlMethod, notes: list[str]
-) -> float:
-    """λ_p: the value given, else VDI 2230 R3's cone for bolts (0 for sucker rods)."""
+    bolt: Bolt | BoltArrays, x: Mapping[str, Any], method: ControlMethod, ok: Any = True
+) -> Any:
+    """λ_p: the value given, else VDI 2230 R3's cone for bolts (0 for sucker rods).
+
+    On arrays the cone runs once per distinct design among the points ``ok`` marks.
+    """
     if x.get("clamped_compliance") is not None:
-        return float(x["clamped_compliance"])
+        return x["clamped_compliance"]
     if method.family != "bolt":
         return 0.0
-    grip = float(x["clamped_length"])
+    args = (
+        x["clamped_length"],
+        _clamped_youngs(x),
+        bolt.bearing_outer_diameter,
+        bolt.hole_diameter,
+    )
+
+    def cone(g: float, e: float, outer: float, hole: float) -> float:
+        return jt.clamped_compliance([g], [e], outer, hole, None, "through").total
+
+    if not any(isinstance(a, np.ndarray) for a in args):
+        return cone(*(float(a) for a in args))
+    n = ok.shape[0]
+    table = np.column_stack([np.broadcast_to(np.asarray(a, dtype=float), (n,)) for a in args])
+    out = np.full(n, np.nan)
+    rows, inverse = np.unique(table[ok], axis=0, return_inverse=True)
+    totals = np.array([cone(*row) for row in rows.tolist()])
+    out[ok] = totals[inverse.ravel()]
+    return out
+
+
+def _clamped_youngs(x: Mapping[str, Any]) -> Any:
+    """E_p of the clamped parts: clamped_youngs_modulus, else the bolt's."""
     e_p = x.get("clamped_youngs_modulus")
-    e_p = float(x["youngs_modulus"]) if e_p is None else float(e_p)
-    cone = jt.clamped_compliance(
-        [grip], [e_p], bolt.bearing_outer_diameter, bolt.hole_diameter, None, "through"
+    return x["youngs_modulus"] if e_p is None else e_p
+
+
+def _control_values(
+    x: Mapping[str, Any],
+    bolt: Bolt | BoltArrays,
+    method: ControlMethod,
+    section: tuple[Any, Any],
+    per_preload: Any,
+) -> dict[str, Any]:
+    """The preload band and target of ``preload.control``, on floats or arrays.
+
+    ``section`` is (d_0, A_0) of the smallest section and ``per_preload`` k_G + k_K of
+    the torque formula. VDI 2230-1 R7 at the smallest section ([004, eq. 3–4]), the
+    method's band, [004, eq. 2]'s required preload.
+    """
+    d0, area0 = section
+    beta = pl.torsion_factor(
+        bolt.pitch, bolt.pitch_diameter, d0, x["thread_friction"], str(x["preload_convention"])
     )
-    notes.append(
-        f"clamped parts λ_p = {cone.total * 1e9:.4g} µm/kN from "
-        f"VDI 2230-1 R3's deformation cone (l_K = {grip * 1e3:g} mm, E_p = {e_p / 1e9:g} GPa, "
-        f"d_W = {bolt.bearing_outer_diameter * 1e3:g} mm, d_h = {bolt.hole_diameter * 1e3:g} mm, "
-        "through-bolted, wide plates); give clamped_compliance to override (0: rigid)"
-    )
-    return cone.total
+    permissible = pl.assembly_preload(bolt.yield_strength, area0, beta, x["utilization"])
+    at_yield = pl.assembly_preload(bolt.yield_strength, area0, beta, 1.0)
+    lo_factor, _ = pl.preload_factor_range(str(x["load_type"]))
+    factor = lo_factor if x.get("preload_factor") is None else x["preload_factor"]
+    nominal, f_min, f_max = _method_band(method, permissible, at_yield, x.get("preload"))
+    return {
+        "controlled_quantity": method.controls,
+        "target_torque": nominal * per_preload,
+        "target_force": nominal,
+        "nominal_preload": nominal,
+        "preload_min": f_min,
+        "preload_max": f_max,
+        "scatter": method.scatter,
+        "tightening_factor": method.tightening_factor,
+        "required_preload": factor * x["required_clamp_force"],
+        "preload_factor": factor,
+        "permissible_preload": permissible,
+        "yield_preload": at_yield,
+    }
+
+
+def _stretch_values(
+    x: Mapping[str, Any],
+    bolt: Bolt | BoltArrays,
+    lengths: list[Any],
+    diameters: list[Any],
+    parts: Any,
+    nominal: Any,
+) -> dict[str, Any]:
+    """Compliances, elongation, angle (and mark displacement) at the nominal preload.
+
+    [004, eq. 4, 7–9] on floats or arrays: one compliance λ_b + λ_p for all of them.
+    """
+    compliance = pl.axial_compliance(lengths, diameters, x["youngs_modulus"])
+    angle = pl.nut_rotation_angle(nominal, compliance + parts, bolt.pitch)
+    out = {
+        "bolt_compliance": compliance,
+        "clamped_compliance": parts,
+        "equivalent_shank_diameter": pl.equivalent_shank_diameter(lengths, diameters),
+        "target_elongation": pl.elongation(nominal, compliance),
+        "target_angle": angle,
+    }
+    if x.get("coupling_outer_diameter") is not None:
+        out["target_displacement"] = angle * 0.5 * x["coupling_outer_diameter"]
+    return out
+
+
+def _plain(values: Mapping[str, Any]) -> dict[str, Any]:
+    """A single design's values as Python numbers (0-d arrays from the shared lines)."""
+    return {k: v.item() if isinstance(v, np.ndarray | np.generic) else v for k, v in values.items()}
 
 
 def _method_band(
@@ -1291,62 +1384,56 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
     checks: list[Check] = []
     method = get_method(str(x["method"]))
     mu_g, mu_k = float(x["thread_friction"]), float(x["bearing_friction"])
-    nu, formula = float(x["utilization"]), str(x["torque_formula"])
+    formula = str(x["torque_formula"])
     # VDI 2230-1 R7: the strength limit is at the smallest cross-section ([004, eq. 3-4]).
-    d0, area0 = _smallest_section(bolt, x, notes)
-    beta = float(
-        pl.torsion_factor(bolt.pitch, bolt.pitch_diameter, d0, mu_g, str(x["preload_convention"]))
+    d0, area0, shank, fine = _smallest_section(bolt, x)
+    if not fine:
+        raise InputOutOfRange(
+            "reduced_diameter is required when reduced_length > 0", field="reduced_diameter"
+        )
+    if shank:
+        notes.append(
+            f"smallest section is the shank, d_0 = {d0 * 1e3:.4g} mm < d_S = "
+            f"{bolt.stress_diameter * 1e3:.4g} mm: the permissible and yield preloads use "
+            f"A_0 = {area0 * 1e6:.4g} mm² and W_p = π d_0³/16 (VDI 2230-1 R7; [004, eq. 3–4])"
+        )
+    values = _plain(
+        _control_values(x, bolt, method, (d0, area0), design.k_thread + design.k_bearing)
     )
-    permissible = pl.assembly_preload(bolt.yield_strength, area0, beta, nu)
-    at_yield = pl.assembly_preload(bolt.yield_strength, area0, beta, 1.0)
-    given = None if x.get("preload") is None else float(x["preload"])
-
+    permissible, at_yield = values["permissible_preload"], values["yield_preload"]
+    nominal, f_min, f_max = values["nominal_preload"], values["preload_min"], values["preload_max"]
+    torque, required, factor = (
+        values["target_torque"],
+        values["required_preload"],
+        values["preload_factor"],
+    )
+    given = x.get("preload")
     lo_factor, hi_factor = pl.preload_factor_range(str(x["load_type"]))
-    factor = lo_factor if x.get("preload_factor") is None else float(x["preload_factor"])
     if not lo_factor <= factor <= hi_factor:
         warnings.append(
             f"preload_factor υ = {factor:g} is outside {lo_factor:g}…{hi_factor:g}, the range "
             f"[004, eq. 2] gives for {x['load_type']} load"
         )
-    required = factor * float(x["required_clamp_force"])
-
-    nominal, f_min, f_max = _method_band(method, permissible, at_yield, given)
-    torque = nominal * (design.k_thread + design.k_bearing)
-
-    values: dict[str, Any] = {
-        "controlled_quantity": method.controls,
-        "target_torque": torque,
-        "target_force": nominal,
-        "nominal_preload": nominal,
-        "preload_min": f_min,
-        "preload_max": f_max,
-        "scatter": method.scatter,
-        "tightening_factor": method.tightening_factor,
-        "required_preload": required,
-        "preload_factor": factor,
-        "permissible_preload": permissible,
-        "yield_preload": at_yield,
-    }
 
     # Elongation and angle through one compliance [004, eq. 4, 7, 8, 9].
     needs_grip = method.controls in ("angle", "elongation", "displacement")
     stretch: float | None = None  # bolt + parts compliance, when the grip is known
     if x.get("clamped_length") is not None:
-        lengths, diameters = _grip_sections(bolt, x)
-        youngs = float(x["youngs_modulus"])
-        compliance = pl.axial_compliance(lengths, diameters, youngs)
-        parts = _clamped_compliance(bolt, x, method, notes)
-        stretch = compliance + parts
-        angle = pl.nut_rotation_angle(nominal, stretch, bolt.pitch)
-        values.update(
-            bolt_compliance=compliance,
-            clamped_compliance=parts,
-            equivalent_shank_diameter=pl.equivalent_shank_diameter(lengths, diameters),
-            target_elongation=pl.elongation(nominal, compliance),
-            target_angle=angle,
-        )
-        if x.get("coupling_outer_diameter") is not None:
-            values["target_displacement"] = angle * 0.5 * float(x["coupling_outer_diameter"])
+        lengths, diameters, fine = _grip_sections(bolt, x)
+        if not fine:
+            _refuse_grip(x)
+        parts = float(_clamped_compliance(bolt, x, method))
+        if x.get("clamped_compliance") is None and method.family == "bolt":
+            notes.append(
+                f"clamped parts λ_p = {parts * 1e9:.4g} µm/kN from VDI 2230-1 R3's "
+                f"deformation cone (l_K = {x['clamped_length'] * 1e3:g} mm, E_p = "
+                f"{_clamped_youngs(x) / 1e9:g} GPa, d_W = {bolt.bearing_outer_diameter * 1e3:g} "
+                f"mm, d_h = {bolt.hole_diameter * 1e3:g} mm, through-bolted, wide plates); give "
+                "clamped_compliance to override (0: rigid)"
+            )
+        values.update(_plain(_stretch_values(x, bolt, lengths, diameters, parts, nominal)))
+        stretch = values["bolt_compliance"] + parts
+        angle = values["target_angle"]
         if parts == 0.0 and method.controls in ("angle", "displacement", "elongation"):
             notes.append(
                 "clamped parts taken as rigid ([004, eq. 9]); give clamped_compliance for "
@@ -1545,75 +1632,6 @@ def _range(x: Mapping[str, Any], name: str, nominal: float) -> tuple[float, floa
     return float(lo), float(hi)
 
 
-def _smallest_section_arrays(bolt: BoltArrays, x: Mapping[str, Any]) -> tuple[Any, Any, Any]:
-    """:func:`_smallest_section` on arrays: d_0, A_0, and where the inputs are complete.
-
-    The choice of :func:`engine.joint.smallest_section` (VDI 2230-1 R7) point by point.
-    """
-    d0 = bolt.stress_diameter
-    shank = np.zeros((), dtype=bool)
-    fine: Any = True
-    if x.get("shank_diameter") is not None:
-        use = (x["shank_length"] > 0.0) & (x["shank_diameter"] < d0)
-        d0, shank = np.where(use, x["shank_diameter"], d0), shank | use
-    if x.get("reduced_diameter") is None:
-        fine = ~np.asarray(x["reduced_length"] > 0.0)  # the scalar path asks for it
-    else:
-        use = (x["reduced_length"] > 0.0) & (x["reduced_diameter"] < d0)
-        d0, shank = np.where(use, x["reduced_diameter"], d0), shank | use
-    area0 = np.where(shank, 0.25 * math.pi * d0 * d0, bolt.stress_area)
-    return d0, area0, fine
-
-
-def _grip_sections_arrays(
-    bolt: BoltArrays, x: Mapping[str, Any]
-) -> tuple[list[Any], list[Any], Any]:
-    """:func:`_grip_sections` on arrays; a section of zero length adds nothing to the sums."""
-    grip = x["clamped_length"]
-    l_shank, l_reduced = x["shank_length"], x["reduced_length"]
-    free = grip - l_shank - l_reduced
-    fine = ~np.asarray(free < -1e-12 * grip)
-    if x.get("reduced_diameter") is None:
-        fine = fine & ~np.asarray(l_reduced > 0)
-    d = bolt.diameter
-    shank_d = d if x.get("shank_diameter") is None else x["shank_diameter"]
-    reduced_d = d if x.get("reduced_diameter") is None else x["reduced_diameter"]
-    nut = 0.8 * d if x.get("nut_height") is None else x["nut_height"]
-    lengths = [l_shank, l_reduced, np.maximum(free, 0.0), nut / 3.0]
-    diameters = [shank_d, reduced_d, bolt.minor_diameter, bolt.minor_diameter]
-    return lengths, diameters, fine
-
-
-def _clamped_compliance_arrays(
-    bolt: BoltArrays, x: Mapping[str, Any], method: ControlMethod, ok: np.ndarray
-) -> Any:
-    """:func:`_clamped_compliance` on arrays: VDI 2230 R3's cone once per distinct design."""
-    if x.get("clamped_compliance") is not None:
-        return x["clamped_compliance"]
-    if method.family != "bolt":
-        return 0.0
-    grip = x["clamped_length"]
-    e_p = (
-        x["youngs_modulus"]
-        if x.get("clamped_youngs_modulus") is None
-        else x["clamped_youngs_modulus"]
-    )
-    args = (grip, e_p, bolt.bearing_outer_diameter, bolt.hole_diameter)
-
-    def cone(g: float, e: float, outer: float, hole: float) -> float:
-        return jt.clamped_compliance([g], [e], outer, hole, None, "through").total
-
-    if not any(isinstance(a, np.ndarray) for a in args):
-        return cone(*(float(a) for a in args))
-    n = ok.shape[0]
-    table = np.column_stack([np.broadcast_to(np.asarray(a, dtype=float), (n,)) for a in args])
-    out = np.full(n, np.nan)
-    rows, inverse = np.unique(table[ok], axis=0, return_inverse=True)
-    totals = np.array([cone(*row) for row in rows.tolist()])
-    out[ok] = totals[inverse.ravel()]
-    return out
-
-
 def _range_arrays(x: Mapping[str, Any], name: str, nominal: Any) -> tuple[Any, Any, Any]:
     """:func:`_range` on arrays: (low, high, where low ≤ high)."""
     lo, hi = x.get(f"{name}_min"), x.get(f"{name}_max")
@@ -1686,7 +1704,7 @@ def _method_texts(
 
 
 def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    """The array path of ``preload.control``: :func:`_control` on many points at once.
+    """The array path of ``preload.control``: its numbers on many points at once.
 
     The friction histogram (a series) is not part of it; its min, max and mean are.
     """
@@ -1696,52 +1714,23 @@ def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
     verdicts: dict[str, Any] = {}
     method = get_method(str(x["method"]))
     mu_g, mu_k = x["thread_friction"], x["bearing_friction"]
-    nu, formula = x["utilization"], str(x["torque_formula"])
-    d0, area0, fine = _smallest_section_arrays(bolt, x)
+    formula = str(x["torque_formula"])
+    d0, area0, _, fine = _smallest_section(bolt, x)
     ok &= fine
-    beta = pl.torsion_factor(
-        bolt.pitch, bolt.pitch_diameter, d0, mu_g, str(x["preload_convention"])
-    )
-    permissible = pl.assembly_preload(bolt.yield_strength, area0, beta, nu)
-    at_yield = pl.assembly_preload(bolt.yield_strength, area0, beta, 1.0)
-    given = x.get("preload")
-    lo_factor, _ = pl.preload_factor_range(str(x["load_type"]))
-    factor = lo_factor if x.get("preload_factor") is None else x["preload_factor"]
-    required = factor * x["required_clamp_force"]
-    nominal, f_min, f_max = _method_band(method, permissible, at_yield, given)
     k_thread, k_bearing, _ = torque_coefficients_raw(bolt, mu_g, mu_k, formula)
-    torque = nominal * (k_thread + k_bearing)
-    values: dict[str, Any] = {
-        "controlled_quantity": method.controls,
-        "target_torque": torque,
-        "target_force": nominal,
-        "nominal_preload": nominal,
-        "preload_min": f_min,
-        "preload_max": f_max,
-        "scatter": method.scatter,
-        "tightening_factor": method.tightening_factor,
-        "required_preload": required,
-        "preload_factor": factor,
-        "permissible_preload": permissible,
-        "yield_preload": at_yield,
-    }
+    values = _control_values(x, bolt, method, (d0, area0), k_thread + k_bearing)
+    permissible, at_yield = values["permissible_preload"], values["yield_preload"]
+    nominal, f_min, f_max = values["nominal_preload"], values["preload_min"], values["preload_max"]
+    torque, required = values["target_torque"], values["required_preload"]
+    given = x.get("preload")
     stretch: Any = None
     if x.get("clamped_length") is not None:
-        lengths, diameters, fine = _grip_sections_arrays(bolt, x)
+        lengths, diameters, fine = _grip_sections(bolt, x)
         ok &= fine
-        compliance = pl.axial_compliance(lengths, diameters, x["youngs_modulus"])
-        parts = _clamped_compliance_arrays(bolt, x, method, ok)
-        stretch = compliance + parts
-        angle = pl.nut_rotation_angle(nominal, stretch, bolt.pitch)
-        values.update(
-            bolt_compliance=compliance,
-            clamped_compliance=parts,
-            equivalent_shank_diameter=pl.equivalent_shank_diameter(lengths, diameters),
-            target_elongation=pl.elongation(nominal, compliance),
-            target_angle=angle,
-        )
-        if x.get("coupling_outer_diameter") is not None:
-            values["target_displacement"] = angle * 0.5 * x["coupling_outer_diameter"]
+        parts = _clamped_compliance(bolt, x, method, ok)
+        values.update(_stretch_values(x, bolt, lengths, diameters, parts, nominal))
+        stretch = values["bolt_compliance"] + parts
+        angle = values["target_angle"]
         if method.controls in ("angle", "displacement"):
             verdicts["angle_resolution"] = angle * method.scatter >= ANGLE_READING_ERROR
     elif method.controls in ("angle", "elongation", "displacement"):
