@@ -1359,7 +1359,11 @@ def _stretch_values(
 
 def _plain(values: Mapping[str, Any]) -> dict[str, Any]:
     """A single design's values as Python numbers (0-d arrays from the shared lines)."""
-    return {k: v.item() if isinstance(v, np.ndarray | np.generic) else v for k, v in values.items()}
+    return {k: v if type(v) in _PLAIN else v.item() for k, v in values.items()}
+
+
+#: Types a single design's values may keep as they are.
+_PLAIN = frozenset((float, int, bool, str, type(None)))
 
 
 def _method_band(
