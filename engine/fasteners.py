@@ -1592,9 +1592,43 @@ def thread_stripping(
 # --------------------------------------------------------------------------- catalogue
 
 
+#: The grade the form pairs with an inch thread: inch threads have no default class
+#: (ISO 898-1 is metric), and SAE J429 grade 5 is the common inch cap screw.
+INCH_PICKER_GRADE = "SAE 5"
+
+
+def picker_entry(thread: Thread) -> dict[str, object]:
+    """A thread as the form's picker offers it, with what the form sends for it [m].
+
+    The thread (:meth:`Thread.describe`), and what a designation resolves to by
+    default, for a model that takes numbers instead: ``bearing_diameter``, the
+    bearing face d_w,min of the default hexagon head (ISO 4017; ASME B18.2.1 for
+    inch threads), ``hole_diameter``, the clearance hole (ISO 273 medium; ASME
+    B18.2.8 normal), and ``grade``, sent with an inch designation
+    (:data:`INCH_PICKER_GRADE`; None for metric threads, whose property class
+    has a default).
+
+    Examples
+    --------
+    >>> e = picker_entry(metric_thread(12))
+    >>> e["bearing_diameter"], e["hole_diameter"], e["grade"]
+    (0.01663, 0.0135, None)
+    >>> e = picker_entry(unified_thread("1/2"))
+    >>> round(e["bearing_diameter"] / INCH, 5), round(e["hole_diameter"] / INCH, 3), e["grade"]
+    (0.7125, 0.531, 'SAE 5')
+    """
+    std = "ISO 4017" if thread.is_metric else UNIFIED_HEX
+    return {
+        **thread.describe(),
+        "bearing_diameter": head(std, thread).bearing_diameter,
+        "hole_diameter": clearance_hole(thread),
+        "grade": None if thread.is_metric else INCH_PICKER_GRADE,
+    }
+
+
 def catalogue() -> dict[str, list[dict[str, object]]]:
     """The whole catalogue, JSON-ready in SI units (``GET /api/v1/fasteners``)."""
-    threads = [t.describe() for t in all_threads()]
+    threads = [picker_entry(t) for t in all_threads()]
     heads: list[dict[str, object]] = []
     for std, (_style, table, drive) in HEAD_STANDARDS.items():
         for key in table:

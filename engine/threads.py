@@ -151,6 +151,12 @@ PROPERTY_CLASSES: dict[str, PropertyClass] = {
 
 PROPERTY_CLASS_NAMES: tuple[str, ...] = tuple(PROPERTY_CLASSES)
 
+#: ISO 898-1 specifies the classes only up to M39. Larger bolts (ISO 262 goes on to M64)
+#: are made to these classes by agreement; so that every catalogue size computes, a class
+#: ISO 898-1 defines up to M39 is taken at its M39 minimum values up to M64, and the
+#: result says so (:func:`beyond_iso898`). A size above M64 still needs yield_strength.
+CARRIED_TO_MM = 64.0
+
 
 def _size_key(diameter: float, table: Mapping[float, object]) -> float | None:
     """The table key (mm) matching ``diameter`` [m], or None (tolerates unit round-off)."""
@@ -423,12 +429,36 @@ def clearance_hole(diameter: float, series: str = "medium") -> float:
     return CLEARANCE_HOLE_MM[key][HOLE_SERIES.index(series)] * 1e-3
 
 
+def _largest_mm(cls: PropertyClass) -> float:
+    """The largest size computed for a class: its ISO 898-1 range, M39 classes to M64."""
+    return CARRIED_TO_MM if cls.max_diameter_mm >= 39.0 else cls.max_diameter_mm
+
+
+def beyond_iso898(name: str, diameter: float) -> bool:
+    """Whether class ``name`` at ``diameter`` [m] takes ISO 898-1's M39 values beyond its range.
+
+    True above M39 (up to M64, :data:`CARRIED_TO_MM`), where
+    :func:`property_class_strengths` carries the M39 minimum strengths on as a
+    stated assumption; False where ISO 898-1 itself defines the class.
+
+    Examples
+    --------
+    >>> beyond_iso898("8.8", 0.039), beyond_iso898("8.8", 0.042)
+    (False, True)
+    """
+    cls = PROPERTY_CLASSES.get(name)
+    return cls is not None and diameter * 1e3 > cls.max_diameter_mm * (1 + 1e-9)
+
+
 def property_class_strengths(name: str, diameter: float) -> tuple[float, float]:
     """Minimum yield (R_eL, R_pf or R_p0.2) and tensile strength R_m [Pa] of a class.
 
     Applies the size step of ISO 898-1 (8.8: 640/800 MPa up to M16,
-    660/830 MPa above). Raises InputOutOfRange (field ``property_class``) for
-    an unknown class or a size the class is not defined for.
+    660/830 MPa above). ISO 898-1 stops at M39: a class it defines up to M39
+    keeps its M39 values up to M64 (:data:`CARRIED_TO_MM`, an assumption the
+    caller states, :func:`beyond_iso898`). Raises InputOutOfRange (field
+    ``property_class``) for an unknown class or a size beyond that (9.8 above M16,
+    any class above M64).
 
     Parameters
     ----------
@@ -443,6 +473,8 @@ def property_class_strengths(name: str, diameter: float) -> tuple[float, float]:
     (640000000.0, 800000000.0)
     >>> property_class_strengths("8.8", 0.020)
     (660000000.0, 830000000.0)
+    >>> property_class_strengths("10.9", 0.048)  # beyond M39: the M39 values
+    (940000000.0, 1040000000.0)
     """
     cls = PROPERTY_CLASSES.get(name)
     if cls is None:
@@ -452,12 +484,26 @@ def property_class_strengths(name: str, diameter: float) -> tuple[float, float]:
             field="property_class",
         )
     mm = diameter * 1e3
-    if mm > cls.max_diameter_mm * (1 + 1e-9):
+    if mm > _largest_mm(cls) * (1 + 1e-9):
+        carried = (
+            f" (its M39 values are taken up to M{CARRIED_TO_MM:g})"
+            if _largest_mm(cls) > cls.max_diameter_mm
+            else ""
+        )
         raise InputOutOfRange(
             f"property class {name} is defined by ISO 898-1 only up to "
-            f"M{cls.max_diameter_mm:g}; give yield_strength for d = {mm:g} mm",
+            f"M{cls.max_diameter_mm:g}{carried}; give yield_strength for d = {mm:g} mm",
             field="property_class",
         )
     if mm <= cls.size_step_mm * (1 + 1e-9):
         return cls.yield_small * 1e6, cls.tensile_small * 1e6
     return cls.yield_large * 1e6, cls.tensile_large * 1e6
+
+
+def largest_diameter(name: str) -> float:
+    """The largest diameter [m] :func:`property_class_strengths` answers for class ``name``.
+
+    >>> largest_diameter("8.8"), largest_diameter("9.8")
+    (0.064, 0.016)
+    """
+    return _largest_mm(PROPERTY_CLASSES[name]) * 1e-3

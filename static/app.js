@@ -1581,22 +1581,43 @@ function renderCompare(model) {
 // ---------------------------------------------------------------- pickers and the unit system
 
 /**
- * A thread picker (designation → diameter and pitch) for a fieldset holding
- * thread_diameter and thread_pitch, fed by GET /api/v1/fasteners when the
- * service has it; without that catalogue the fields are typed as before.
+ * A thread picker for a fieldset holding thread_diameter and thread_pitch, fed by
+ * GET /api/v1/fasteners when the service has it; without that catalogue the fields
+ * are typed as before. A model that reads designations (a `thread` input) is sent
+ * the designation, with the grade the catalogue pairs with an inch thread; the
+ * numbers the designation sets (diameter, pitch, bearing face, hole) are cleared so
+ * the catalogue's apply. A model that takes numbers only is sent the thread's
+ * diameter and pitch and its default head's bearing face and clearance hole.
  */
 function threadPicker(m, ps) {
   const threads = state.fasteners?.threads;
   const d = ps.find((p) => p.name === "thread_diameter"), pitch = ps.find((p) => p.name === "thread_pitch");
   if (!threads?.length || !d || !pitch) return null;
+  const byName = (name) => m.inputs.find((p) => p.name === name);
+  const designation = byName("thread"), grade = byName("grade");
+  const numbers = [[d, "diameter"], [pitch, "pitch"], [byName("bearing_outer_diameter"), "bearing_diameter"],
+    [byName("hole_diameter"), "hole_diameter"]].filter(([p]) => p);
   const sel = el("select", { id: "thread-picker", "aria-describedby": "thread-picker-hint" },
     el("option", { value: "" }, "— type diameter and pitch —"),
     ...threads.map((t, i) => el("option", { value: String(i) }, `${t.designation}${t.series ? " (" + t.series + ")" : ""}`)));
+  const setText = (p, v) => {
+    const input = document.getElementById("in-" + p.name);
+    if (input) input.value = v;
+  };
   const fill = (t) => {
-    for (const [p, v] of [[d, t.diameter], [pitch, t.pitch]]) {
-      const input = document.getElementById("in-" + p.name);
-      input.value = fieldNumber(v / currentUnit(p).factor, 10);
-      checkField(p);
+    if (designation) {
+      setText(designation, t.designation);
+      for (const [p] of numbers) { setText(p, ""); checkField(p); }
+      const now = grade ? document.getElementById("in-grade")?.value ?? "" : "";
+      // an inch thread goes with its grade; a metric one drops an inch-only grade
+      if (grade && t.grade) setText(grade, t.grade);
+      else if (grade && !t.grade && /^(SAE|B7)/i.test(now)) setText(grade, "");
+    } else {
+      for (const [p, key] of numbers) {
+        if (typeof t[key] !== "number") continue;
+        setText(p, fieldNumber(t[key] / currentUnit(p).factor, 10));
+        checkField(p);
+      }
     }
     markStale();
   };
@@ -1607,9 +1628,12 @@ function threadPicker(m, ps) {
     const i = threads.findIndex((t) => key(t.designation) === key(e.target.value));
     if (i >= 0) { sel.value = String(i); fill(threads[i]); }
   }));
-  return el("div", { class: "field picker" }, el("label", { for: "thread-picker" }, "Thread (ISO designation)"),
+  const hint = designation
+    ? "sends the designation (and an inch thread's grade); its diameter, pitch, bearing face and hole come from the catalogue"
+    : "fills the thread diameter and pitch, and the default head's bearing face and clearance hole";
+  return el("div", { class: "field picker" }, el("label", { for: "thread-picker" }, "Thread (designation)"),
     el("div", { class: "control" }, sel),
-    el("div", { class: "hint", id: "thread-picker-hint" }, "fills the thread diameter and pitch"));
+    el("div", { class: "hint", id: "thread-picker-hint" }, hint));
 }
 
 /** Each field's unit to its first imperial (or metric) choice; loaded values keep their exact SI value. */

@@ -9,6 +9,7 @@ calls those functions and says where every number came from.
 from __future__ import annotations
 
 import math
+import threading
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from typing import Any
@@ -199,6 +200,20 @@ class Bolt:
     fastener: fz.Fastener | None = None
 
 
+def _class_note(name: str, diameter: float, yield_strength: float, tensile: float) -> str:
+    """Where a property class's strengths come from: ISO 898-1, or its M39 values carried on."""
+    kind = th.PROPERTY_CLASSES[name].yield_kind
+    values = f"{kind} = {yield_strength / 1e6:g} MPa, R_m = {tensile / 1e6:g} MPa"
+    if th.beyond_iso898(name, diameter):
+        return (
+            f"property class {name}, d = {diameter * 1e3:g} mm: ISO 898-1 defines the class "
+            f"only up to M39; its M39 minimum values {values} are taken here (an assumption: "
+            "larger bolts are made to the class by agreement); give yield_strength for the "
+            "bolt's certified values"
+        )
+    return f"property class {name}, d = {diameter * 1e3:g} mm: {values} (ISO 898-1 minimum values)"
+
+
 def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
     """The bolt a request describes, and notes naming each standard value used."""
     cat, fastener, notes = fz.resolve(x)
@@ -225,11 +240,7 @@ def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
     else:
         cls = str(x.get("property_class") or "8.8")
         yield_strength, tensile = th.property_class_strengths(cls, d)
-        kind = th.PROPERTY_CLASSES[cls].yield_kind
-        notes.append(
-            f"property class {cls}, d = {mm:g} mm: {kind} = {yield_strength / 1e6:g} MPa, "
-            f"R_m = {tensile / 1e6:g} MPa (ISO 898-1 minimum values)"
-        )
+        notes.append(_class_note(cls, d, yield_strength, tensile))
     given_outer = x.get("bearing_outer_diameter") is not None
     if given_outer:
         outer = float(x["bearing_outer_diameter"])
@@ -263,10 +274,10 @@ def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
         Bolt(
             diameter=d,
             pitch=pitch,
-            pitch_diameter=cat.get("pitch_diameter", th.pitch_diameter(d, pitch)),
-            minor_diameter=cat.get("minor_diameter", th.minor_diameter(d, pitch)),
-            stress_diameter=cat.get("stress_diameter", th.stress_diameter(d, pitch)),
-            stress_area=cat.get("stress_area", th.stress_area(d, pitch)),
+            pitch_diameter=_given_or(cat, "pitch_diameter", th.pitch_diameter, d, pitch),
+            minor_diameter=_given_or(cat, "minor_diameter", th.minor_diameter, d, pitch),
+            stress_diameter=_given_or(cat, "stress_diameter", th.stress_diameter, d, pitch),
+            stress_area=_given_or(cat, "stress_area", th.stress_area, d, pitch),
             yield_strength=yield_strength,
             tensile_strength=tensile,
             bearing_outer_diameter=outer,
@@ -276,6 +287,11 @@ def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
         ),
         notes,
     )
+
+
+def _given_or(cat: Mapping[str, Any], name: str, relation: Any, d: Any, pitch: Any) -> Any:
+    """The catalogue's ``name`` where it has one, else the ISO relation on (d, P)."""
+    return cat[name] if name in cat else relation(d, pitch)
 
 
 def torque_coefficients_raw(
@@ -309,35 +325,72 @@ def torque_coefficients(
     return float(k_thread), float(k_bearing), float(radius)
 
 
-def _torsion(bolt: Bolt, x: Mapping[str, Any]) -> float:
-    return float(
-        pl.torsion_factor(
-            bolt.pitch,
-            bolt.pitch_diameter,
-            bolt.stress_diameter,
-            float(x["thread_friction"]),
-            str(x["preload_convention"]),
-        )
+def _deviation(
+    bolt: Bolt | BoltArrays, mu_g: Any, mu_k: Any, formula: str, chosen: Any = None
+) -> Any:
+    """|M(formula) − M(exact)| / M(exact) on floats or arrays [004, eq. 10–13].
+
+    ``chosen`` is k_G + k_K of ``formula`` where the caller has it already; for
+    ``formula == "exact"`` the exact sum is that same sum (the deviation is 0).
+    """
+    if chosen is None:
+        chosen = sum(torque_coefficients_raw(bolt, mu_g, mu_k, formula)[:2])
+    exact = (
+        chosen
+        if formula == "exact"
+        else sum(torque_coefficients_raw(bolt, mu_g, mu_k, "exact")[:2])
     )
-
-
-def _deviation(bolt: Bolt | BoltArrays, mu_g: Any, mu_k: Any, formula: str) -> Any:
-    """|M(formula) − M(exact)| / M(exact) on floats or arrays [004, eq. 10–13]."""
-    chosen = sum(torque_coefficients_raw(bolt, mu_g, mu_k, formula)[:2])
-    exact = sum(torque_coefficients_raw(bolt, mu_g, mu_k, "exact")[:2])
     return abs(chosen - exact) / exact
 
 
-def _formula_deviation(bolt: Bolt, x: Mapping[str, Any]) -> float:
-    """Relative difference of the chosen torque formula from the exact [004, eq. 10–13]."""
-    return float(
-        _deviation(
-            bolt,
-            float(x["thread_friction"]),
-            float(x["bearing_friction"]),
-            str(x["torque_formula"]),
-        )
-    )
+@dataclass(frozen=True)
+class _Design:
+    """One design's bolt and torque coefficients, as both the rung estimate and the run need."""
+
+    bolt: Bolt
+    notes: tuple[str, ...]
+    k_thread: float
+    k_bearing: float
+    radius: float
+    #: |M(torque_formula) − M(exact)| / M(exact), the closed form's error estimate.
+    deviation: float
+
+
+def _resolve_design(x: Mapping[str, Any]) -> _Design:
+    """The bolt (resolved once) and each torque coefficient (computed once) of a design."""
+    bolt, notes = resolve_bolt(x)
+    mu_g, mu_k = float(x["thread_friction"]), float(x["bearing_friction"])
+    formula = str(x["torque_formula"])
+    k_thread, k_bearing, radius = torque_coefficients(bolt, mu_g, mu_k, formula)
+    deviation = float(_deviation(bolt, mu_g, mu_k, formula, sum((k_thread, k_bearing))))
+    return _Design(bolt, tuple(notes), k_thread, k_bearing, radius, deviation)
+
+
+class _Handoff(threading.local):
+    """The design the rung estimate resolved, handed to the run of the same request.
+
+    The runner asks the rung for its estimate, then runs the model, with the same
+    validated inputs. The estimate leaves its :class:`_Design` here with those inputs'
+    items; :func:`_design` takes it (and empties the slot) when its own inputs have
+    the same items, in the same thread, so the request resolves its bolt once. The
+    slot is matched by value, never by identity, holds one design per thread and is
+    emptied when used: a later request, or one with other inputs, resolves its own.
+    """
+
+    items: tuple[tuple[str, Any], ...] | None = None
+    design: _Design | None = None
+
+
+_HANDOFF = _Handoff()
+
+
+def _design(x: Mapping[str, Any]) -> _Design:
+    """The design of a single-design request: the estimate's, when it resolved it."""
+    slot = _HANDOFF
+    found, slot.items, design, slot.design = slot.items, None, slot.design, None
+    if design is not None and found == tuple(x.items()):
+        return design
+    return _resolve_design(x)
 
 
 def _rung_estimate(x: Mapping[str, Any]) -> Any:
@@ -350,10 +403,11 @@ def _rung_estimate(x: Mapping[str, Any]) -> Any:
                 bolt_arrays, x["thread_friction"], x["bearing_friction"], str(x["torque_formula"])
             )
             return np.where(bolt_arrays.ok, dev, np.nan)
-        bolt, _ = resolve_bolt(x)
-        return _formula_deviation(bolt, x)
+        design = _resolve_design(x)
     except (EngineError, KeyError, TypeError, ValueError):
         return None
+    _HANDOFF.items, _HANDOFF.design = tuple(x.items()), design
+    return design.deviation
 
 
 # --------------------------------------------------------------------------- array path
@@ -509,7 +563,15 @@ def resolve_bolt_arrays(
             th.property_class_strengths(name, 0.01)  # refuses an unknown class
             cls = th.PROPERTY_CLASSES[name]
             mm = d * 1e3
-            ok &= mm <= cls.max_diameter_mm * (1 + 1e-9)
+            ok &= d <= th.largest_diameter(name) * (1 + 1e-9)
+            if np.any(ok & (mm > cls.max_diameter_mm * (1 + 1e-9))):
+                notes.append(
+                    _class_note(
+                        name,
+                        float(np.max(d[ok])),
+                        *th.property_class_strengths(name, float(np.max(d[ok]))),
+                    )
+                )
             small = mm <= cls.size_step_mm * (1 + 1e-9)
             yield_strength = np.where(small, cls.yield_small * 1e6, cls.yield_large * 1e6)
             tensile = np.where(small, cls.tensile_small * 1e6, cls.tensile_large * 1e6)
@@ -545,10 +607,10 @@ def resolve_bolt_arrays(
         BoltArrays(
             diameter=d,
             pitch=pitch,
-            pitch_diameter=cat.get("pitch_diameter", th.pitch_diameter(d, pitch)),
-            minor_diameter=cat.get("minor_diameter", th.minor_diameter(d, pitch)),
-            stress_diameter=cat.get("stress_diameter", th.stress_diameter(d, pitch)),
-            stress_area=cat.get("stress_area", th.stress_area(d, pitch)),
+            pitch_diameter=_given_or(cat, "pitch_diameter", th.pitch_diameter, d, pitch),
+            minor_diameter=_given_or(cat, "minor_diameter", th.minor_diameter, d, pitch),
+            stress_diameter=_given_or(cat, "stress_diameter", th.stress_diameter, d, pitch),
+            stress_area=_given_or(cat, "stress_area", th.stress_area, d, pitch),
             yield_strength=yield_strength,
             tensile_strength=tensile,
             bearing_outer_diameter=outer,
@@ -655,29 +717,77 @@ def _add_bought_part_checks(
     notes.extend(more_notes)
 
 
-def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    bolt, notes = resolve_bolt(x)
-    warnings: list[str] = []
-    checks: list[Check] = []
-    mu_g, mu_k = float(x["thread_friction"]), float(x["bearing_friction"])
-    nu, formula = float(x["utilization"]), str(x["torque_formula"])
-    beta = _torsion(bolt, x)
-    permissible = pl.assembly_preload(bolt.yield_strength, bolt.stress_area, beta, nu)
-    if x.get("preload") is not None:
-        force = float(x["preload"])
-        notes.append(f"preload F0 = {force / 1e3:.4g} kN as given (not the permissible one)")
-    else:
-        force = permissible
+def _tightening_values(
+    x: Mapping[str, Any],
+    bolt: Bolt | BoltArrays,
+    coefficients: tuple[Any, Any, Any],
+    deviation: Any,
+) -> dict[str, Any]:
+    """The numbers of ``preload.tightening``, on floats (one design) or arrays (many).
+
+    ``coefficients`` are (k_G, k_K, R) of the chosen torque formula and ``deviation``
+    its distance from the exact one; the single run and the array path both come
+    here, so one set of lines gives every number.
+    """
+    beta = pl.torsion_factor(
+        bolt.pitch,
+        bolt.pitch_diameter,
+        bolt.stress_diameter,
+        x["thread_friction"],
+        str(x["preload_convention"]),
+    )
+    permissible = pl.assembly_preload(bolt.yield_strength, bolt.stress_area, beta, x["utilization"])
+    force = permissible if x.get("preload") is None else x["preload"]
     sigma_eq = pl.equivalent_stress(force, bolt.stress_area, beta)
-    k_thread, k_bearing, radius = torque_coefficients(bolt, mu_g, mu_k, formula)
+    k_thread, k_bearing, radius = coefficients
     m_thread, m_bearing = force * k_thread, force * k_bearing
     total = m_thread + m_bearing
     ideal = pl.ideal_torque(force, bolt.pitch)
     thumb = pl.rule_of_thumb_torque(force, bolt.diameter)
     thumb_yield = pl.rule_of_thumb_torque_from_yield(bolt.yield_strength, bolt.diameter)
-    deviation = _formula_deviation(bolt, x)
-    share = ideal / total if total > 0 else 1.0
+    positive = total > 0
+    safe = np.where(positive, total, 1.0)
+    return {
+        "assembly_preload": force,
+        "permissible_preload": permissible,
+        "tightening_torque": total,
+        "thread_torque": m_thread,
+        "bearing_torque": m_bearing,
+        "ideal_torque": ideal,
+        "ideal_torque_share": np.where(positive, ideal / safe, 1.0),
+        "friction_radius": radius,
+        "stress_area": bolt.stress_area,
+        "pitch_diameter": bolt.pitch_diameter,
+        "minor_diameter": bolt.minor_diameter,
+        "thread_pitch": bolt.pitch,
+        "torsion_factor": beta,
+        "equivalent_stress": sigma_eq,
+        "yield_strength": bolt.yield_strength,
+        "stress_utilization": sigma_eq / bolt.yield_strength,
+        "bearing_outer_diameter": bolt.bearing_outer_diameter,
+        "hole_diameter": bolt.hole_diameter,
+        "torque_formula_deviation": deviation,
+        "rule_of_thumb_torque": thumb,
+        "rule_of_thumb_deviation": np.where(positive, (thumb - total) / safe, math.inf),
+        "yield_rule_torque": thumb_yield,
+        "yield_rule_deviation": np.where(positive, (thumb_yield - total) / safe, math.inf),
+    }
+
+
+def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    design = _design(x)
+    bolt, notes = design.bolt, list(design.notes)
+    checks: list[Check] = []
+    values = {
+        k: float(v)
+        for k, v in _tightening_values(
+            x, bolt, (design.k_thread, design.k_bearing, design.radius), design.deviation
+        ).items()
+    }
+    force, total = values["assembly_preload"], values["tightening_torque"]
+    sigma_eq, share = values["equivalent_stress"], values["ideal_torque_share"]
     if x.get("preload") is not None:
+        notes.append(f"preload F0 = {force / 1e3:.4g} kN as given (not the permissible one)")
         ok = sigma_eq <= bolt.yield_strength
         checks.append(
             Check(
@@ -694,49 +804,24 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "5…15 % is usual"
         )
     if x["preload_convention"] == "elastic":
+        nu = float(x["utilization"])
         notes.append(
             f"elastic convention [004, eq. 3, 5]: ν = ξ/n_T; with a plain shank (ξ = 1) "
             f"ν = {nu:g} means a safety factor on yield n_T = {1 / nu:.3g} ([004]: 1.2…1.4). "
             "A0 is the stress area here; [004, eq. 6] takes d0 = d1"
         )
-    if formula == "approx":
+    if x["torque_formula"] == "approx":
         notes.append(
             "approx: [004, eq. 15] with d2 ≈ d and R_T ≈ 0.25 (D_f + d_h); with one "
             "friction coefficient it is [004, eq. 19]"
         )
-    values: dict[str, Any] = {
-        "assembly_preload": force,
-        "permissible_preload": permissible,
-        "tightening_torque": total,
-        "thread_torque": m_thread,
-        "bearing_torque": m_bearing,
-        "ideal_torque": ideal,
-        "ideal_torque_share": share,
-        "friction_radius": radius,
-        "stress_area": bolt.stress_area,
-        "pitch_diameter": bolt.pitch_diameter,
-        "minor_diameter": bolt.minor_diameter,
-        "thread_pitch": bolt.pitch,
-        "torsion_factor": beta,
-        "equivalent_stress": sigma_eq,
-        "yield_strength": bolt.yield_strength,
-        "stress_utilization": sigma_eq / bolt.yield_strength,
-        "bearing_outer_diameter": bolt.bearing_outer_diameter,
-        "hole_diameter": bolt.hole_diameter,
-        "torque_formula_deviation": deviation,
-        "rule_of_thumb_torque": thumb,
-        "rule_of_thumb_deviation": (thumb - total) / total if total > 0 else math.inf,
-        "yield_rule_torque": thumb_yield,
-        "yield_rule_deviation": (thumb_yield - total) / total if total > 0 else math.inf,
-    }
     _add_bought_part_checks(x, bolt, force, total, values, checks, notes)
     return Result(
-        values=values,
+        values=dict(values),
         rung=ctx.rung,
-        error_estimate=deviation,
+        error_estimate=design.deviation,
         checks=checks,
         notes=notes,
-        warnings=warnings,
     )
 
 
@@ -768,66 +853,24 @@ def _bought_part_arrays(
 
 
 def _tightening_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    """The array path of ``preload.tightening``: :func:`_tightening` on many points at once."""
+    """The array path of ``preload.tightening``: its numbers on many points at once."""
     n = _points(x) or 1
     bolt, notes = resolve_bolt_arrays(x, n, labels=ctx.wants("fastener"))
-    ok = bolt.ok.copy()
+    mu_g, mu_k, formula = x["thread_friction"], x["bearing_friction"], str(x["torque_formula"])
+    coefficients = torque_coefficients_raw(bolt, mu_g, mu_k, formula)
+    deviation = _deviation(bolt, mu_g, mu_k, formula, coefficients[0] + coefficients[1])
+    values = _tightening_values(x, bolt, coefficients, deviation)
     verdicts: dict[str, Any] = {}
-    mu_g, mu_k = x["thread_friction"], x["bearing_friction"]
-    nu, formula = x["utilization"], str(x["torque_formula"])
-    beta = pl.torsion_factor(
-        bolt.pitch,
-        bolt.pitch_diameter,
-        bolt.stress_diameter,
-        mu_g,
-        str(x["preload_convention"]),
-    )
-    permissible = pl.assembly_preload(bolt.yield_strength, bolt.stress_area, beta, nu)
-    given = x.get("preload") is not None
-    force = x["preload"] if given else permissible
-    sigma_eq = pl.equivalent_stress(force, bolt.stress_area, beta)
-    k_thread, k_bearing, radius = torque_coefficients_raw(bolt, mu_g, mu_k, formula)
-    m_thread, m_bearing = force * k_thread, force * k_bearing
-    total = m_thread + m_bearing
-    ideal = pl.ideal_torque(force, bolt.pitch)
-    thumb = pl.rule_of_thumb_torque(force, bolt.diameter)
-    thumb_yield = pl.rule_of_thumb_torque_from_yield(bolt.yield_strength, bolt.diameter)
-    positive = total > 0
-    safe = np.where(positive, total, 1.0)
-    if given:
-        verdicts["below_yield"] = sigma_eq <= bolt.yield_strength
-    values: dict[str, Any] = {
-        "assembly_preload": force,
-        "permissible_preload": permissible,
-        "tightening_torque": total,
-        "thread_torque": m_thread,
-        "bearing_torque": m_bearing,
-        "ideal_torque": ideal,
-        "ideal_torque_share": np.where(positive, ideal / safe, 1.0),
-        "friction_radius": radius,
-        "stress_area": bolt.stress_area,
-        "pitch_diameter": bolt.pitch_diameter,
-        "minor_diameter": bolt.minor_diameter,
-        "thread_pitch": bolt.pitch,
-        "torsion_factor": beta,
-        "equivalent_stress": sigma_eq,
-        "yield_strength": bolt.yield_strength,
-        "stress_utilization": sigma_eq / bolt.yield_strength,
-        "bearing_outer_diameter": bolt.bearing_outer_diameter,
-        "hole_diameter": bolt.hole_diameter,
-        "torque_formula_deviation": _deviation(bolt, mu_g, mu_k, formula),
-        "rule_of_thumb_torque": thumb,
-        "rule_of_thumb_deviation": np.where(positive, (thumb - total) / safe, math.inf),
-        "yield_rule_torque": thumb_yield,
-        "yield_rule_deviation": np.where(positive, (thumb_yield - total) / safe, math.inf),
-    }
+    if x.get("preload") is not None:
+        verdicts["below_yield"] = values["equivalent_stress"] <= bolt.yield_strength
+    force, total = values["assembly_preload"], values["tightening_torque"]
     _bought_part_arrays(x, bolt, force, total, values, verdicts)
     return Result(
-        values=_finish(values, ok, n),
+        values=_finish(values, bolt.ok, n),
         rung=ctx.rung,
         error_estimate=None,
         notes=notes,
-        check_arrays=_verdicts(verdicts, ok, n),
+        check_arrays=_verdicts(verdicts, bolt.ok, n),
     )
 
 
@@ -1151,79 +1194,176 @@ CONTROL_INPUTS: tuple[Param, ...] = (
 )
 
 
-def _grip_sections(bolt: Bolt, x: Mapping[str, Any]) -> tuple[list[float], list[float]]:
-    """Lengths and diameters of the stretched sections [004, eq. 4, 7]."""
-    grip = float(x["clamped_length"])
-    l_shank, l_reduced = float(x["shank_length"]), float(x["reduced_length"])
+def _grip_sections(
+    bolt: Bolt | BoltArrays, x: Mapping[str, Any]
+) -> tuple[list[Any], list[Any], Any]:
+    """Lengths and diameters of the stretched sections [004, eq. 4, 7], on floats or arrays.
+
+    Shank, reduced shank, free thread (d3) and a third of the nut height at d3 (0.8 d
+    when absent); a section of zero length adds nothing to the sums. The third value
+    is False where the inputs do not make a grip (shank and reduced lengths beyond
+    clamped_length, or a reduced length without its diameter): :func:`_refuse_grip`
+    says why.
+    """
+    grip = x["clamped_length"]
+    l_shank, l_reduced = x["shank_length"], x["reduced_length"]
     free = grip - l_shank - l_reduced
-    if free < -1e-12 * grip:
-        raise InputOutOfRange(
-            f"shank_length + reduced_length = {(l_shank + l_reduced) * 1e3:g} mm exceeds "
-            f"clamped_length = {grip * 1e3:g} mm",
-            field="shank_length",
-        )
-    shank_d = x.get("shank_diameter")
-    shank_d = bolt.diameter if shank_d is None else float(shank_d)
+    fine = ~np.asarray(free < -1e-12 * grip)
+    if x.get("reduced_diameter") is None:
+        fine = fine & ~np.asarray(l_reduced > 0)
+    d = bolt.diameter
+    shank_d = d if x.get("shank_diameter") is None else x["shank_diameter"]
+    reduced_d = d if x.get("reduced_diameter") is None else x["reduced_diameter"]
+    nut = 0.8 * d if x.get("nut_height") is None else x["nut_height"]
+    lengths = [l_shank, l_reduced, np.maximum(free, 0.0), nut / 3.0]
+    diameters = [shank_d, reduced_d, bolt.minor_diameter, bolt.minor_diameter]
+    return lengths, diameters, fine
+
+
+def _refuse_grip(x: Mapping[str, Any]) -> None:
+    """Why a single design's grip is refused (:func:`_grip_sections` gave False)."""
+    grip, l_shank, l_reduced = x["clamped_length"], x["shank_length"], x["reduced_length"]
     if l_reduced > 0 and x.get("reduced_diameter") is None:
         raise InputOutOfRange(
             "reduced_diameter is required when reduced_length > 0", field="reduced_diameter"
         )
-    nut = x.get("nut_height")
-    nut = 0.8 * bolt.diameter if nut is None else float(nut)
-    lengths = [l_shank, l_reduced, max(free, 0.0), nut / 3.0]
-    diameters = [
-        shank_d,
-        float(x["reduced_diameter"] or bolt.diameter),
-        bolt.minor_diameter,
-        bolt.minor_diameter,
-    ]
-    kept = [(li, di) for li, di in zip(lengths, diameters, strict=True) if li > 0]
-    return [li for li, _ in kept], [di for _, di in kept]
+    raise InputOutOfRange(
+        f"shank_length + reduced_length = {(l_shank + l_reduced) * 1e3:g} mm exceeds "
+        f"clamped_length = {grip * 1e3:g} mm",
+        field="shank_length",
+    )
 
 
-def _smallest_section(bolt: Bolt, x: Mapping[str, Any], notes: list[str]) -> tuple[float, float]:
-    """d_0 and A_0 of the smallest section: thread, plain or reduced shank (VDI 2230-1 R7)."""
+def _smallest_section(bolt: Bolt | BoltArrays, x: Mapping[str, Any]) -> tuple[Any, Any, Any, Any]:
+    """d_0, A_0 of the smallest section (VDI 2230-1 R7), on floats or arrays.
+
+    :func:`engine.joint.smallest_section` over the thread, the plain and the reduced
+    shank; also where it is the shank, and False where a reduced length has no
+    diameter.
+    """
     sections = []
-    if float(x["shank_length"]) > 0.0 and x.get("shank_diameter") is not None:
-        sections.append((float(x["shank_length"]), float(x["shank_diameter"])))
-    if float(x["reduced_length"]) > 0.0:
-        if x.get("reduced_diameter") is None:
-            raise InputOutOfRange(
-                "reduced_diameter is required when reduced_length > 0", field="reduced_diameter"
-            )
-        sections.append((float(x["reduced_length"]), float(x["reduced_diameter"])))
+    if x.get("shank_diameter") is not None:
+        sections.append((x["shank_length"], x["shank_diameter"]))
+    if x.get("reduced_diameter") is not None:
+        sections.append((x["reduced_length"], x["reduced_diameter"]))
+        fine: Any = True
+    else:
+        fine = ~np.asarray(x["reduced_length"] > 0.0)
     d0, where = jt.smallest_section(bolt.stress_diameter, sections)
-    area0 = bolt.stress_area if where == "thread" else 0.25 * math.pi * d0 * d0
-    if where == "shank":
-        notes.append(
-            f"smallest section is the shank, d_0 = {d0 * 1e3:.4g} mm < d_S = "
-            f"{bolt.stress_diameter * 1e3:.4g} mm: the permissible and yield preloads use "
-            f"A_0 = {area0 * 1e6:.4g} mm² and W_p = π d_0³/16 (VDI 2230-1 R7; [004, eq. 3–4])"
-        )
-    return d0, area0
+    shank = np.asarray(where) == "shank"
+    area0 = np.where(shank, 0.25 * math.pi * d0 * d0, bolt.stress_area)
+    return d0, area0, shank, fine
 
 
 def _clamped_compliance(
-    bolt: Bolt, x: Mapping[str, Any], method: ControlMethod, notes: list[str]
-) -> float:
-    """λ_p: the value given, else VDI 2230 R3's cone for bolts (0 for sucker rods)."""
+    bolt: Bolt | BoltArrays, x: Mapping[str, Any], method: ControlMethod, ok: Any = True
+) -> Any:
+    """λ_p: the value given, else VDI 2230 R3's cone for bolts (0 for sucker rods).
+
+    On arrays the cone runs once per distinct design among the points ``ok`` marks.
+    """
     if x.get("clamped_compliance") is not None:
-        return float(x["clamped_compliance"])
+        return x["clamped_compliance"]
     if method.family != "bolt":
         return 0.0
-    grip = float(x["clamped_length"])
+    args = (
+        x["clamped_length"],
+        _clamped_youngs(x),
+        bolt.bearing_outer_diameter,
+        bolt.hole_diameter,
+    )
+
+    def cone(g: float, e: float, outer: float, hole: float) -> float:
+        return jt.clamped_compliance([g], [e], outer, hole, None, "through").total
+
+    if not any(isinstance(a, np.ndarray) for a in args):
+        return cone(*(float(a) for a in args))
+    n = ok.shape[0]
+    table = np.column_stack([np.broadcast_to(np.asarray(a, dtype=float), (n,)) for a in args])
+    out = np.full(n, np.nan)
+    rows, inverse = np.unique(table[ok], axis=0, return_inverse=True)
+    totals = np.array([cone(*row) for row in rows.tolist()])
+    out[ok] = totals[inverse.ravel()]
+    return out
+
+
+def _clamped_youngs(x: Mapping[str, Any]) -> Any:
+    """E_p of the clamped parts: clamped_youngs_modulus, else the bolt's."""
     e_p = x.get("clamped_youngs_modulus")
-    e_p = float(x["youngs_modulus"]) if e_p is None else float(e_p)
-    cone = jt.clamped_compliance(
-        [grip], [e_p], bolt.bearing_outer_diameter, bolt.hole_diameter, None, "through"
+    return x["youngs_modulus"] if e_p is None else e_p
+
+
+def _control_values(
+    x: Mapping[str, Any],
+    bolt: Bolt | BoltArrays,
+    method: ControlMethod,
+    section: tuple[Any, Any],
+    per_preload: Any,
+) -> dict[str, Any]:
+    """The preload band and target of ``preload.control``, on floats or arrays.
+
+    ``section`` is (d_0, A_0) of the smallest section and ``per_preload`` k_G + k_K of
+    the torque formula. VDI 2230-1 R7 at the smallest section ([004, eq. 3–4]), the
+    method's band, [004, eq. 2]'s required preload.
+    """
+    d0, area0 = section
+    beta = pl.torsion_factor(
+        bolt.pitch, bolt.pitch_diameter, d0, x["thread_friction"], str(x["preload_convention"])
     )
-    notes.append(
-        f"clamped parts λ_p = {cone.total * 1e9:.4g} µm/kN from "
-        f"VDI 2230-1 R3's deformation cone (l_K = {grip * 1e3:g} mm, E_p = {e_p / 1e9:g} GPa, "
-        f"d_W = {bolt.bearing_outer_diameter * 1e3:g} mm, d_h = {bolt.hole_diameter * 1e3:g} mm, "
-        "through-bolted, wide plates); give clamped_compliance to override (0: rigid)"
-    )
-    return cone.total
+    permissible = pl.assembly_preload(bolt.yield_strength, area0, beta, x["utilization"])
+    at_yield = pl.assembly_preload(bolt.yield_strength, area0, beta, 1.0)
+    lo_factor, _ = pl.preload_factor_range(str(x["load_type"]))
+    factor = lo_factor if x.get("preload_factor") is None else x["preload_factor"]
+    nominal, f_min, f_max = _method_band(method, permissible, at_yield, x.get("preload"))
+    return {
+        "controlled_quantity": method.controls,
+        "target_torque": nominal * per_preload,
+        "target_force": nominal,
+        "nominal_preload": nominal,
+        "preload_min": f_min,
+        "preload_max": f_max,
+        "scatter": method.scatter,
+        "tightening_factor": method.tightening_factor,
+        "required_preload": factor * x["required_clamp_force"],
+        "preload_factor": factor,
+        "permissible_preload": permissible,
+        "yield_preload": at_yield,
+    }
+
+
+def _stretch_values(
+    x: Mapping[str, Any],
+    bolt: Bolt | BoltArrays,
+    lengths: list[Any],
+    diameters: list[Any],
+    parts: Any,
+    nominal: Any,
+) -> dict[str, Any]:
+    """Compliances, elongation, angle (and mark displacement) at the nominal preload.
+
+    [004, eq. 4, 7–9] on floats or arrays: one compliance λ_b + λ_p for all of them.
+    """
+    compliance = pl.axial_compliance(lengths, diameters, x["youngs_modulus"])
+    angle = pl.nut_rotation_angle(nominal, compliance + parts, bolt.pitch)
+    out = {
+        "bolt_compliance": compliance,
+        "clamped_compliance": parts,
+        "equivalent_shank_diameter": pl.equivalent_shank_diameter(lengths, diameters),
+        "target_elongation": pl.elongation(nominal, compliance),
+        "target_angle": angle,
+    }
+    if x.get("coupling_outer_diameter") is not None:
+        out["target_displacement"] = angle * 0.5 * x["coupling_outer_diameter"]
+    return out
+
+
+def _plain(values: Mapping[str, Any]) -> dict[str, Any]:
+    """A single design's values as Python numbers (0-d arrays from the shared lines)."""
+    return {k: v if type(v) in _PLAIN else v.item() for k, v in values.items()}
+
+
+#: Types a single design's values may keep as they are.
+_PLAIN = frozenset((float, int, bool, str, type(None)))
 
 
 def _method_band(
@@ -1242,68 +1382,62 @@ def _method_band(
 
 
 def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    bolt, notes = resolve_bolt(x)
+    design = _design(x)
+    bolt, notes = design.bolt, list(design.notes)
     warnings: list[str] = []
     checks: list[Check] = []
     method = get_method(str(x["method"]))
     mu_g, mu_k = float(x["thread_friction"]), float(x["bearing_friction"])
-    nu, formula = float(x["utilization"]), str(x["torque_formula"])
+    formula = str(x["torque_formula"])
     # VDI 2230-1 R7: the strength limit is at the smallest cross-section ([004, eq. 3-4]).
-    d0, area0 = _smallest_section(bolt, x, notes)
-    beta = float(
-        pl.torsion_factor(bolt.pitch, bolt.pitch_diameter, d0, mu_g, str(x["preload_convention"]))
+    d0, area0, shank, fine = _smallest_section(bolt, x)
+    if not fine:
+        raise InputOutOfRange(
+            "reduced_diameter is required when reduced_length > 0", field="reduced_diameter"
+        )
+    if shank:
+        notes.append(
+            f"smallest section is the shank, d_0 = {d0 * 1e3:.4g} mm < d_S = "
+            f"{bolt.stress_diameter * 1e3:.4g} mm: the permissible and yield preloads use "
+            f"A_0 = {area0 * 1e6:.4g} mm² and W_p = π d_0³/16 (VDI 2230-1 R7; [004, eq. 3–4])"
+        )
+    values = _plain(
+        _control_values(x, bolt, method, (d0, area0), design.k_thread + design.k_bearing)
     )
-    permissible = pl.assembly_preload(bolt.yield_strength, area0, beta, nu)
-    at_yield = pl.assembly_preload(bolt.yield_strength, area0, beta, 1.0)
-    given = None if x.get("preload") is None else float(x["preload"])
-
+    permissible, at_yield = values["permissible_preload"], values["yield_preload"]
+    nominal, f_min, f_max = values["nominal_preload"], values["preload_min"], values["preload_max"]
+    torque, required, factor = (
+        values["target_torque"],
+        values["required_preload"],
+        values["preload_factor"],
+    )
+    given = x.get("preload")
     lo_factor, hi_factor = pl.preload_factor_range(str(x["load_type"]))
-    factor = lo_factor if x.get("preload_factor") is None else float(x["preload_factor"])
     if not lo_factor <= factor <= hi_factor:
         warnings.append(
             f"preload_factor υ = {factor:g} is outside {lo_factor:g}…{hi_factor:g}, the range "
             f"[004, eq. 2] gives for {x['load_type']} load"
         )
-    required = factor * float(x["required_clamp_force"])
-
-    nominal, f_min, f_max = _method_band(method, permissible, at_yield, given)
-    k_thread, k_bearing, _ = torque_coefficients(bolt, mu_g, mu_k, formula)
-    torque = nominal * (k_thread + k_bearing)
-
-    values: dict[str, Any] = {
-        "controlled_quantity": method.controls,
-        "target_torque": torque,
-        "target_force": nominal,
-        "nominal_preload": nominal,
-        "preload_min": f_min,
-        "preload_max": f_max,
-        "scatter": method.scatter,
-        "tightening_factor": method.tightening_factor,
-        "required_preload": required,
-        "preload_factor": factor,
-        "permissible_preload": permissible,
-        "yield_preload": at_yield,
-    }
 
     # Elongation and angle through one compliance [004, eq. 4, 7, 8, 9].
     needs_grip = method.controls in ("angle", "elongation", "displacement")
     stretch: float | None = None  # bolt + parts compliance, when the grip is known
     if x.get("clamped_length") is not None:
-        lengths, diameters = _grip_sections(bolt, x)
-        youngs = float(x["youngs_modulus"])
-        compliance = pl.axial_compliance(lengths, diameters, youngs)
-        parts = _clamped_compliance(bolt, x, method, notes)
-        stretch = compliance + parts
-        angle = pl.nut_rotation_angle(nominal, stretch, bolt.pitch)
-        values.update(
-            bolt_compliance=compliance,
-            clamped_compliance=parts,
-            equivalent_shank_diameter=pl.equivalent_shank_diameter(lengths, diameters),
-            target_elongation=pl.elongation(nominal, compliance),
-            target_angle=angle,
-        )
-        if x.get("coupling_outer_diameter") is not None:
-            values["target_displacement"] = angle * 0.5 * float(x["coupling_outer_diameter"])
+        lengths, diameters, fine = _grip_sections(bolt, x)
+        if not fine:
+            _refuse_grip(x)
+        parts = float(_clamped_compliance(bolt, x, method))
+        if x.get("clamped_compliance") is None and method.family == "bolt":
+            notes.append(
+                f"clamped parts λ_p = {parts * 1e9:.4g} µm/kN from VDI 2230-1 R3's "
+                f"deformation cone (l_K = {x['clamped_length'] * 1e3:g} mm, E_p = "
+                f"{_clamped_youngs(x) / 1e9:g} GPa, d_W = {bolt.bearing_outer_diameter * 1e3:g} "
+                f"mm, d_h = {bolt.hole_diameter * 1e3:g} mm, through-bolted, wide plates); give "
+                "clamped_compliance to override (0: rigid)"
+            )
+        values.update(_plain(_stretch_values(x, bolt, lengths, diameters, parts, nominal)))
+        stretch = values["bolt_compliance"] + parts
+        angle = values["target_angle"]
         if parts == 0.0 and method.controls in ("angle", "displacement", "elongation"):
             notes.append(
                 "clamped parts taken as rigid ([004, eq. 9]); give clamped_compliance for "
@@ -1481,7 +1615,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
     return Result(
         values=values,
         rung=ctx.rung,
-        error_estimate=_formula_deviation(bolt, x),
+        error_estimate=design.deviation,
         checks=checks,
         notes=notes,
         warnings=warnings,
@@ -1500,75 +1634,6 @@ def _range(x: Mapping[str, Any], name: str, nominal: float) -> tuple[float, floa
             f"{name}_min = {lo:g} exceeds {name}_max = {hi:g}", field=f"{name}_min"
         )
     return float(lo), float(hi)
-
-
-def _smallest_section_arrays(bolt: BoltArrays, x: Mapping[str, Any]) -> tuple[Any, Any, Any]:
-    """:func:`_smallest_section` on arrays: d_0, A_0, and where the inputs are complete.
-
-    The choice of :func:`engine.joint.smallest_section` (VDI 2230-1 R7) point by point.
-    """
-    d0 = bolt.stress_diameter
-    shank = np.zeros((), dtype=bool)
-    fine: Any = True
-    if x.get("shank_diameter") is not None:
-        use = (x["shank_length"] > 0.0) & (x["shank_diameter"] < d0)
-        d0, shank = np.where(use, x["shank_diameter"], d0), shank | use
-    if x.get("reduced_diameter") is None:
-        fine = ~np.asarray(x["reduced_length"] > 0.0)  # the scalar path asks for it
-    else:
-        use = (x["reduced_length"] > 0.0) & (x["reduced_diameter"] < d0)
-        d0, shank = np.where(use, x["reduced_diameter"], d0), shank | use
-    area0 = np.where(shank, 0.25 * math.pi * d0 * d0, bolt.stress_area)
-    return d0, area0, fine
-
-
-def _grip_sections_arrays(
-    bolt: BoltArrays, x: Mapping[str, Any]
-) -> tuple[list[Any], list[Any], Any]:
-    """:func:`_grip_sections` on arrays; a section of zero length adds nothing to the sums."""
-    grip = x["clamped_length"]
-    l_shank, l_reduced = x["shank_length"], x["reduced_length"]
-    free = grip - l_shank - l_reduced
-    fine = ~np.asarray(free < -1e-12 * grip)
-    if x.get("reduced_diameter") is None:
-        fine = fine & ~np.asarray(l_reduced > 0)
-    d = bolt.diameter
-    shank_d = d if x.get("shank_diameter") is None else x["shank_diameter"]
-    reduced_d = d if x.get("reduced_diameter") is None else x["reduced_diameter"]
-    nut = 0.8 * d if x.get("nut_height") is None else x["nut_height"]
-    lengths = [l_shank, l_reduced, np.maximum(free, 0.0), nut / 3.0]
-    diameters = [shank_d, reduced_d, bolt.minor_diameter, bolt.minor_diameter]
-    return lengths, diameters, fine
-
-
-def _clamped_compliance_arrays(
-    bolt: BoltArrays, x: Mapping[str, Any], method: ControlMethod, ok: np.ndarray
-) -> Any:
-    """:func:`_clamped_compliance` on arrays: VDI 2230 R3's cone once per distinct design."""
-    if x.get("clamped_compliance") is not None:
-        return x["clamped_compliance"]
-    if method.family != "bolt":
-        return 0.0
-    grip = x["clamped_length"]
-    e_p = (
-        x["youngs_modulus"]
-        if x.get("clamped_youngs_modulus") is None
-        else x["clamped_youngs_modulus"]
-    )
-    args = (grip, e_p, bolt.bearing_outer_diameter, bolt.hole_diameter)
-
-    def cone(g: float, e: float, outer: float, hole: float) -> float:
-        return jt.clamped_compliance([g], [e], outer, hole, None, "through").total
-
-    if not any(isinstance(a, np.ndarray) for a in args):
-        return cone(*(float(a) for a in args))
-    n = ok.shape[0]
-    table = np.column_stack([np.broadcast_to(np.asarray(a, dtype=float), (n,)) for a in args])
-    out = np.full(n, np.nan)
-    rows, inverse = np.unique(table[ok], axis=0, return_inverse=True)
-    totals = np.array([cone(*row) for row in rows.tolist()])
-    out[ok] = totals[inverse.ravel()]
-    return out
 
 
 def _range_arrays(x: Mapping[str, Any], name: str, nominal: Any) -> tuple[Any, Any, Any]:
@@ -1643,7 +1708,7 @@ def _method_texts(
 
 
 def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    """The array path of ``preload.control``: :func:`_control` on many points at once.
+    """The array path of ``preload.control``: its numbers on many points at once.
 
     The friction histogram (a series) is not part of it; its min, max and mean are.
     """
@@ -1653,52 +1718,23 @@ def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
     verdicts: dict[str, Any] = {}
     method = get_method(str(x["method"]))
     mu_g, mu_k = x["thread_friction"], x["bearing_friction"]
-    nu, formula = x["utilization"], str(x["torque_formula"])
-    d0, area0, fine = _smallest_section_arrays(bolt, x)
+    formula = str(x["torque_formula"])
+    d0, area0, _, fine = _smallest_section(bolt, x)
     ok &= fine
-    beta = pl.torsion_factor(
-        bolt.pitch, bolt.pitch_diameter, d0, mu_g, str(x["preload_convention"])
-    )
-    permissible = pl.assembly_preload(bolt.yield_strength, area0, beta, nu)
-    at_yield = pl.assembly_preload(bolt.yield_strength, area0, beta, 1.0)
-    given = x.get("preload")
-    lo_factor, _ = pl.preload_factor_range(str(x["load_type"]))
-    factor = lo_factor if x.get("preload_factor") is None else x["preload_factor"]
-    required = factor * x["required_clamp_force"]
-    nominal, f_min, f_max = _method_band(method, permissible, at_yield, given)
     k_thread, k_bearing, _ = torque_coefficients_raw(bolt, mu_g, mu_k, formula)
-    torque = nominal * (k_thread + k_bearing)
-    values: dict[str, Any] = {
-        "controlled_quantity": method.controls,
-        "target_torque": torque,
-        "target_force": nominal,
-        "nominal_preload": nominal,
-        "preload_min": f_min,
-        "preload_max": f_max,
-        "scatter": method.scatter,
-        "tightening_factor": method.tightening_factor,
-        "required_preload": required,
-        "preload_factor": factor,
-        "permissible_preload": permissible,
-        "yield_preload": at_yield,
-    }
+    values = _control_values(x, bolt, method, (d0, area0), k_thread + k_bearing)
+    permissible, at_yield = values["permissible_preload"], values["yield_preload"]
+    nominal, f_min, f_max = values["nominal_preload"], values["preload_min"], values["preload_max"]
+    torque, required = values["target_torque"], values["required_preload"]
+    given = x.get("preload")
     stretch: Any = None
     if x.get("clamped_length") is not None:
-        lengths, diameters, fine = _grip_sections_arrays(bolt, x)
+        lengths, diameters, fine = _grip_sections(bolt, x)
         ok &= fine
-        compliance = pl.axial_compliance(lengths, diameters, x["youngs_modulus"])
-        parts = _clamped_compliance_arrays(bolt, x, method, ok)
-        stretch = compliance + parts
-        angle = pl.nut_rotation_angle(nominal, stretch, bolt.pitch)
-        values.update(
-            bolt_compliance=compliance,
-            clamped_compliance=parts,
-            equivalent_shank_diameter=pl.equivalent_shank_diameter(lengths, diameters),
-            target_elongation=pl.elongation(nominal, compliance),
-            target_angle=angle,
-        )
-        if x.get("coupling_outer_diameter") is not None:
-            values["target_displacement"] = angle * 0.5 * x["coupling_outer_diameter"]
+        parts = _clamped_compliance(bolt, x, method, ok)
+        values.update(_stretch_values(x, bolt, lengths, diameters, parts, nominal))
+        stretch = values["bolt_compliance"] + parts
+        angle = values["target_angle"]
         if method.controls in ("angle", "displacement"):
             verdicts["angle_resolution"] = angle * method.scatter >= ANGLE_READING_ERROR
     elif method.controls in ("angle", "elongation", "displacement"):

@@ -896,16 +896,22 @@ def test_report_prints_on_one_or_two_a4_pages(page, base_url, tmp_path, name):
         )  # fmt: skip
 
 
-def test_thread_picker_fills_diameter_and_pitch(page, base_url):
-    """With GET /api/v1/fasteners (here stubbed), a designation fills diameter and pitch."""
-    name = "preload.tightening"
-    if name not in [s.name for s in REAL]:
-        pytest.skip("preload.tightening is not registered")
+def test_thread_picker_sends_the_designation_or_fills_the_numbers(page, base_url):
+    """With GET /api/v1/fasteners (here stubbed), a model that reads designations is sent
+    the designation (an inch thread with its grade); a model of numbers gets them filled."""
+    names = [s.name for s in REAL]
+    if "preload.tightening" not in names or "blow.joint" not in names:
+        pytest.skip("preload.tightening or blow.joint is not registered")
+    threads = [
+        {"designation": "M12", "diameter": 0.012, "pitch": 0.00175, "series": "coarse",
+         "bearing_diameter": 0.01663, "hole_diameter": 0.0135, "grade": None},
+        {"designation": "M12x1.25", "diameter": 0.012, "pitch": 0.00125, "series": "fine",
+         "bearing_diameter": 0.01663, "hole_diameter": 0.0135, "grade": None},
+        {"designation": "1/2-13 UNC", "diameter": 0.0127, "pitch": 0.0254 / 13, "series": "UNC",
+         "bearing_diameter": 0.0180975, "hole_diameter": 0.0134874, "grade": "SAE 5"},
+    ]  # fmt: skip
     catalogue = {
-        "threads": [
-            {"designation": "M12", "diameter": 0.012, "pitch": 0.00175, "series": "coarse"},
-            {"designation": "M12x1.25", "diameter": 0.012, "pitch": 0.00125, "series": "fine"},
-        ],
+        "threads": threads,
         "property_classes": [{"name": "8.8", "yield_strength": 640e6, "tensile_strength": 800e6}],
         "materials": [],
     }
@@ -918,21 +924,28 @@ def test_thread_picker_fills_diameter_and_pitch(page, base_url):
 
     page.route("**/openapi.json", openapi)
     page.route("**/api/v1/fasteners", lambda route: route.fulfill(json=catalogue))
-    _open(page, base_url, f"m={name}")
+    _open(page, base_url, "m=preload.tightening")
+    assert "R_p0.2 640 MPa" in page.inner_text("#in-property_class")
+    page.select_option("#thread-picker", label="1/2-13 UNC (UNC)")
+    assert page.input_value("#in-thread") == "1/2-13 UNC"
+    assert page.input_value("#in-grade") == "SAE 5"
+    assert page.input_value("#in-thread_diameter") == ""
+    assert _submit(page) == "ok"
+    assert page.evaluate("window.calcState.lastResponse.inputs.grade") == "SAE 5"
+    # a metric thread drops the inch grade; a designation typed into the diameter field too
+    page.fill("#in-thread_diameter", "m12x1.25")
+    page.dispatch_event("#in-thread_diameter", "change")
+    assert page.input_value("#in-thread") == "M12x1.25"
+    assert page.input_value("#in-grade") == ""
+    assert _submit(page) == "ok"
+    assert page.evaluate("window.calcState.lastResponse.inputs.thread") == "M12x1.25"
+    # a model of numbers: diameter, pitch, bearing face and hole
+    _open(page, base_url, "m=blow.joint")
     page.select_option("#thread-picker", label="M12x1.25 (fine)")
     assert page.input_value("#in-thread_diameter") == "12"
     assert page.input_value("#in-thread_pitch") == "1.25"
-    assert "R_p0.2 640 MPa" in page.inner_text("#in-property_class")
-    # a designation typed into the diameter field is read from the catalogue
-    page.fill("#in-thread_diameter", "m12")
-    page.dispatch_event("#in-thread_diameter", "change")
-    assert page.input_value("#in-thread_diameter") == "12"
-    assert page.input_value("#in-thread_pitch") == "1.75"
-    page.select_option("#thread-picker", label="M12x1.25 (fine)")
-    assert _submit(page) == "ok"
-    assert page.evaluate("window.calcState.lastResponse.inputs.thread_pitch") == pytest.approx(
-        0.00125
-    )
+    assert page.input_value("#in-bearing_outer_diameter") == "16.63"
+    assert page.input_value("#in-hole_diameter") == "13.5"
 
 
 def test_inputs_announce_their_unit_and_range(page, base_url):
