@@ -400,10 +400,8 @@ class Spring:
         if self.kind == "disc":
             return x["disc_yield_strength"]
         if self.material is not None:
-            wire = x["spring_wire_diameter"]
-            if np.ndim(wire) > 0:  # a varied wire: NaN outside the table (refused there)
-                return 0.5 * np.asarray(sp.tensile_strength_array(self.material.name, wire))
-            return sp.permissible_shear_stress(self.material.name, wire)
+            # a varied wire: NaN outside the table (refused there); one wire: refused
+            return sp.permissible_shear_stress(self.material.name, x["spring_wire_diameter"])
         return x["allowable_shear_stress"]
 
 
@@ -620,11 +618,7 @@ def extra_values(
             values["natural_frequency"] = sp.helical_natural_frequency(
                 d, dm, n, spring.shear_modulus, spring.material.density
             )
-            values["tensile_strength"] = (
-                sp.tensile_strength(spring.material.name, d)
-                if np.ndim(d) == 0
-                else sp.tensile_strength_array(spring.material.name, d)
-            )
+            values["tensile_strength"] = sp.tensile_strength(spring.material.name, d)
         scalar = all(
             np.ndim(a) == 0 for a in (x["spring_free_length"], dm, values["spring_force_max"])
         )

@@ -522,7 +522,7 @@ def _spring_mask(x: Mapping[str, Any], wire: Any) -> npt.NDArray[np.bool_]:
             np.asarray(x["disc_inner_diameter"]) * 1.05 < np.asarray(x["disc_outer_diameter"])
         )
     if wire is not None and x["spring_material"] != "custom":
-        inside = np.isfinite(sp.tensile_strength_array(x["spring_material"], wire))
+        inside = np.isfinite(sp.tensile_strength(x["spring_material"], np.atleast_1d(wire)))
         return np.asarray(inside, dtype=bool)
     return np.asarray(True)
 
