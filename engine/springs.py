@@ -969,9 +969,7 @@ def disc_stresses(
     }
 
 
-def disc_falling_region(
-    thickness: float, cone_height: float, k4: float = 1.0
-) -> tuple[float, float] | None:
+def disc_falling_region(thickness: Any, cone_height: Any, k4: Any = 1.0) -> tuple[Any, Any]:
     r"""Deflections between which a disc spring's force falls (negative rate).
 
     .. math::
@@ -988,9 +986,10 @@ def disc_falling_region(
 
     Returns
     -------
-    region : tuple of float or None
-        (s at the force maximum, s at the force minimum); None where
-        h0/t ≤ √2/K4 and the force rises everywhere, [m]
+    region : tuple of float or array
+        (s at the force maximum, s at the force minimum), [m]; NaN where
+        h0/t ≤ √2/K4 and the force rises everywhere. All arguments may be
+        floats or numpy arrays.
 
     Notes
     -----
@@ -1004,15 +1003,13 @@ def disc_falling_region(
     >>> lo, hi = disc_falling_region(0.001, 0.002)
     >>> round(lo * 1e3, 4), round(hi * 1e3, 4)
     (1.1835, 2.8165)
-    >>> disc_falling_region(0.002, 0.002) is None
-    True
+    >>> disc_falling_region(0.002, 0.002)
+    (nan, nan)
     """
-    a = cone_height / thickness
+    a = np.asarray(cone_height, dtype=float) / thickness
     disc = 3.0 * a * a - 6.0 / (k4 * k4)
-    if disc <= 0.0:
-        return None
-    half = math.sqrt(disc) / 3.0
-    return (a - half) * thickness, (a + half) * thickness
+    half = np.sqrt(np.where(disc > 0.0, disc, np.nan)) / 3.0
+    return _out((a - half) * thickness), _out((a + half) * thickness)
 
 
 def stack_force(

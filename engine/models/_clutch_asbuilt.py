@@ -670,11 +670,48 @@ def series(x: Mapping[str, Any], spring: Spring) -> dict[str, list[float]]:
 # --------------------------------------------------------------------------
 
 
-def checks(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[Check]:
-    """The as-built checks of one scalar run."""
+def verdicts(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> dict[str, Any]:
+    """The as-built checks' verdicts on floats or arrays: True where a check passes.
+
+    The one place they compare numbers: :func:`checks` words them for a single run,
+    the array path reports them per point.
+    """
+    out: dict[str, Any] = {
+        "self_locking": np.asarray(v["self_locking_margin"]) >= SELF_LOCKING_MARGIN
+    }
+    allow = spring.permissible()
+    if allow is not None:
+        out["spring_stress_max"] = np.asarray(v["spring_stress_max"]) <= np.asarray(allow)
+    travel = np.asarray(x["spring_deflection"]) + np.asarray(v["total_lift"])
+    if spring.kind == "disc":
+        m = np.asarray(x["disc_series"])
+        out["disc_not_past_flat"] = travel / m <= np.asarray(x["disc_cone_height"])
+        s_max = sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])[0]
+        # NaN (no force maximum) compares False: the torque never falls
+        out["falling_curve"] = (
+            np.asarray(x["spring_deflection"]) / m + np.asarray(v["total_lift"]) / m > s_max
+        )
+    elif x["spring_free_length"] is not None:
+        d, dm, n = x["spring_wire_diameter"], x["spring_mean_diameter"], x["spring_active_coils"]
+        need = np.asarray(sp.solid_length(d, n) + sp.minimum_gap_sum(d, dm, n))
+        out["solid_length"] = np.asarray(x["spring_free_length"]) - travel >= need
+        # a spring that cannot buckle has no buckling deflection (None, or NaN on arrays)
+        s_k = np.asarray(v.get("buckling_deflection"), dtype=float)
+        out["buckling"] = travel < np.where(np.isnan(s_k), np.inf, s_k)
+    if x["face_friction"] is not None:
+        out["residual_torque"] = np.asarray(v["residual_torque"]) <= RESIDUAL_SHARE * (
+            np.asarray(v["peak_torque"])
+        )
+    return out
+
+
+def checks(
+    x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any], passed: Mapping[str, bool]
+) -> list[Check]:
+    """The as-built checks of one scalar run, worded on the verdicts of :func:`verdicts`."""
     out: list[Check] = []
     m = float(v["self_locking_margin"])
-    ok = m >= SELF_LOCKING_MARGIN
+    ok = passed["self_locking"]
     out.append(
         Check(
             "self_locking",
@@ -692,11 +729,10 @@ def checks(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[C
             ),
         )
     )
-    allow = spring.permissible()
-    if allow is not None:
-        allow = float(allow)
+    if "spring_stress_max" in passed:
+        allow = float(spring.permissible())
         s = float(v["spring_stress_max"])
-        ok = s <= allow
+        ok = passed["spring_stress_max"]
         what = "wire shear stress τ_k" if spring.kind == "helical" else "disc stress |σ_OM|"
         out.append(
             Check(
@@ -714,12 +750,12 @@ def checks(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[C
             )
         )
     if spring.kind == "disc":
-        out += _disc_checks(x, v)
+        out += _disc_checks(x, v, passed)
     elif x["spring_free_length"] is not None:
-        out += _helical_length_checks(x, spring, v)
+        out += _helical_length_checks(x, v, passed)
     if x["face_friction"] is not None:
         res, peak = float(v["residual_torque"]), float(v["peak_torque"])
-        ok = res <= RESIDUAL_SHARE * peak
+        ok = passed["residual_torque"]
         out.append(
             Check(
                 "residual_torque",
@@ -733,11 +769,13 @@ def checks(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[C
     return out
 
 
-def _disc_checks(x: Mapping[str, Any], v: Mapping[str, Any]) -> list[Check]:
+def _disc_checks(
+    x: Mapping[str, Any], v: Mapping[str, Any], passed: Mapping[str, bool]
+) -> list[Check]:
     t, h0, m = x["disc_thickness"], x["disc_cone_height"], x["disc_series"]
     per_disc_max = (x["spring_deflection"] + float(v["total_lift"])) / m
     out = []
-    ok = per_disc_max <= h0
+    ok = passed["disc_not_past_flat"]
     out.append(
         Check(
             "disc_not_past_flat",
@@ -752,51 +790,41 @@ def _disc_checks(x: Mapping[str, Any], v: Mapping[str, Any]) -> list[Check]:
             ),
         )
     )
-    region = sp.disc_falling_region(t, h0)
+    s_max = float(sp.disc_falling_region(t, h0)[0])
     setting = x["spring_deflection"] / m
-    if region is None:
-        out.append(
-            Check(
-                "falling_curve",
-                False,
-                f"h0/t = {h0 / t:.3g} ≤ √2: the disc force rises over the whole lift, so the "
-                "torque does not drop after breakaway; use h0/t > √2 and set the stack past "
-                "its force maximum",
-            )
+    ok = passed["falling_curve"]
+    if math.isnan(s_max):
+        detail = (
+            f"h0/t = {h0 / t:.3g} ≤ √2: the disc force rises over the whole lift, so the "
+            "torque does not drop after breakaway; use h0/t > √2 and set the stack past "
+            "its force maximum"
+        )
+    elif ok:
+        where = "at the setting" if setting >= s_max else "within the lift"
+        detail = (
+            f"the discs pass their force maximum (s = {s_max * 1e3:.4g} mm per disc) "
+            f"{where}: the torque falls from {float(v['peak_torque']):.4g} to "
+            f"{float(v['torque_at_rim']):.4g} N·m at the rim"
         )
     else:
-        s_max = region[0]
-        ok = setting + float(v["total_lift"]) / m > s_max
-        where = "at the setting" if setting >= s_max else "within the lift"
-        out.append(
-            Check(
-                "falling_curve",
-                ok,
-                (
-                    f"the discs pass their force maximum (s = {s_max * 1e3:.4g} mm per disc) "
-                    f"{where}: the torque falls from {float(v['peak_torque']):.4g} to "
-                    f"{float(v['torque_at_rim']):.4g} N·m at the rim"
-                )
-                if ok
-                else (
-                    f"the discs never reach their force maximum (s = {s_max * 1e3:.4g} mm per "
-                    f"disc; setting {setting * 1e3:.4g} mm): the torque does not fall; set the "
-                    "stack further"
-                ),
-            )
+        detail = (
+            f"the discs never reach their force maximum (s = {s_max * 1e3:.4g} mm per "
+            f"disc; setting {setting * 1e3:.4g} mm): the torque does not fall; set the "
+            "stack further"
         )
+    out.append(Check("falling_curve", ok, detail))
     return out
 
 
 def _helical_length_checks(
-    x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]
+    x: Mapping[str, Any], v: Mapping[str, Any], passed: Mapping[str, bool]
 ) -> list[Check]:
     d, dm, n = x["spring_wire_diameter"], x["spring_mean_diameter"], x["spring_active_coils"]
     l0 = x["spring_free_length"]
     travel = x["spring_deflection"] + float(v["total_lift"])
     shortest = l0 - travel
     need = float(sp.solid_length(d, n) + sp.minimum_gap_sum(d, dm, n))
-    ok = shortest >= need
+    ok = passed["solid_length"]
     out = [
         Check(
             "solid_length",
@@ -813,7 +841,7 @@ def _helical_length_checks(
     ]
     s_k = v.get("buckling_deflection")
     s_k = float(s_k) if s_k is not None else math.inf
-    ok = travel < s_k
+    ok = passed["buckling"]
     out.append(
         Check(
             "buckling",
@@ -1104,8 +1132,8 @@ def _suggest_parallel(
 def disc_breakaway_setting(x: Mapping[str, Any], force: float) -> float | None:
     """Stack setting whose force is ``force`` on the rising branch; None if none gives it."""
     spring = Spring(x)
-    region = sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])
-    top = region[0] if region is not None else x["disc_cone_height"]
+    s_max = float(sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])[0])
+    top = s_max if math.isfinite(s_max) else x["disc_cone_height"]
     upper = float(x["disc_series"] * min(top, x["disc_cone_height"]))
 
     def excess(delta: float) -> float:
