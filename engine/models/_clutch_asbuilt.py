@@ -1008,104 +1008,169 @@ def setting_outputs() -> tuple[Output, ...]:
     )
 
 
-def _upper_setting(x: Mapping[str, Any], spring: Spring, force: float) -> float:
-    if spring.kind == "disc":
-        return float(x["disc_series"] * x["disc_cone_height"])
-    rate = float(spring.force(1.0))
-    return max(force / rate, 1e-9) * 1.000001
+def _scalar_or_array(value: Any) -> Any:
+    """A float for a 0-d result, the array otherwise."""
+    arr = np.asarray(value, dtype=float)
+    return float(arr) if arr.ndim == 0 else arr
 
 
-def _peak_setting(
-    x: Mapping[str, Any], spring: Spring, target: float, force: float
-) -> tuple[float, float] | None:
-    """(setting, largest stress over the lift) for the target peak torque, or None.
+def peak_setting(
+    x: Mapping[str, Any],
+    spring: Spring,
+    target: Any,
+    force: Any,
+    grid: SettingGrid | None = None,
+) -> tuple[Any, Any]:
+    """(setting, largest stress over the lift) for the target peak torque; NaN where none.
 
-    A helical spring's characteristic is a set of lines in the setting
-    (:class:`SettingGrid`): where they all rise, the setting comes in closed form (one
-    characteristic instead of the ~40 a bracketed root search takes; the two agree to
-    1e-12, ``tests/models/clutch/test_clutch_arrays.py``), else by :func:`solve_setting`.
+    Floats or arrays (helical springs); a disc stack one design at a time. A helical
+    spring's characteristic is a set of lines in the setting (:class:`SettingGrid`):
+    where they all rise, the setting comes in closed form (one characteristic instead
+    of the ~40 a bracketed root search takes; the two agree to 1e-12,
+    ``tests/models/clutch/test_clutch_arrays.py``); at a point where they need not
+    (a push ≤ 0 on the driving flank), and for a disc stack, by :func:`solve_setting`.
+    ``grid`` may be passed in when the same geometry serves several springs.
     """
-    upper = _upper_setting(x, spring, force)
-    delta: float | None = None
-    grid = SettingGrid(x) if spring.kind != "disc" else None
-    if grid is not None and bool(np.all(grid.regular)):
-        found = float(grid.setting(float(spring.force(1.0)), target, upper))
-        delta = found if math.isfinite(found) else None
-    else:
-        delta = solve_setting(x, spring, target, upper)
-    if delta is None:
-        return None
-    c = characteristic(x, spring, delta)
     if spring.kind == "disc":
-        per_disc = (delta + float(c["total_lift"])) / x["disc_series"]
-        if per_disc > x["disc_cone_height"]:
-            return None  # reached only past flat
-    return delta, float(c["spring_stress_max"])
+        upper = float(x["disc_series"] * x["disc_cone_height"])
+        root = solve_setting(x, spring, float(target), upper)
+        if root is None:
+            return math.nan, math.nan
+        c = characteristic(x, spring, root)
+        if (root + float(c["total_lift"])) / x["disc_series"] > x["disc_cone_height"]:
+            return math.nan, math.nan  # reached only past flat
+        return root, float(c["spring_stress_max"])
+    grid = SettingGrid(x) if grid is None else grid
+    rate = np.asarray(spring.force(1.0), float)
+    upper = np.maximum(np.asarray(force) / rate, 1e-9) * 1.000001
+    delta = np.asarray(grid.setting(rate, target, upper))
+    stress = np.asarray(end_values({**x, "spring_deflection": delta}, spring)["spring_stress_max"])
+    if not np.all(grid.regular):
+        n = delta.size if delta.ndim else 0
+        delta, stress = np.array(delta, float, ndmin=1), np.array(stress, float, ndmin=1)
+        for j in np.flatnonzero(~np.broadcast_to(grid.regular, delta.shape)).tolist():
+            point = _at_point(x, j) if n else dict(x)
+            found = solve_setting(
+                point,
+                Spring(point),
+                float(np.broadcast_to(target, delta.shape)[j]),
+                float(np.broadcast_to(upper, delta.shape)[j]),
+            )
+            delta[j], stress[j] = (
+                (np.nan, np.nan)
+                if found is None
+                else (
+                    found,
+                    float(characteristic(point, Spring(point), found)["spring_stress_max"]),
+                )
+            )
+        if not n:
+            delta, stress = delta[0], stress[0]
+    return _scalar_or_array(delta), _scalar_or_array(stress)
 
 
-def setting_values(x: Mapping[str, Any], force: float) -> tuple[dict[str, Any], list[str]]:
-    """As-built outputs of the inverse and the notes that explain them (scalar inputs)."""
-    target = float(x["target_torque"])
+def setting_values(x: Mapping[str, Any], force: Any) -> tuple[dict[str, Any], list[str]]:
+    """As-built outputs of the inverse and, for one design, the notes that explain them.
+
+    Floats or arrays (helical springs; NaN where an output is null); a disc stack one
+    design at a time. On floats an output that does not exist is left out.
+    """
+    target = x["target_torque"]
     values: dict[str, Any] = {}
     notes: list[str] = []
     helical = x["spring_type"] == "helical"
     found: tuple[float, float] | None = None
     if not helical or x["spring_wire_diameter"] is not None:
-        spring = Spring(x)
-        found = _peak_setting(x, spring, target, force)
-        if found is None:
+        delta, stress = peak_setting(x, Spring(x), target, force)
+        if np.ndim(delta) == 0 and math.isnan(delta):
             notes.append(
                 "required_peak_setting is null: no setting of this spring gives the target as "
                 "its peak torque (the lift alone overshoots it, or a disc stack would pass flat)"
             )
         else:
-            values["required_peak_setting"], values["peak_setting_stress_max"] = found
+            values["required_peak_setting"], values["peak_setting_stress_max"] = delta, stress
+            found = (delta, stress) if np.ndim(delta) == 0 else None
     if helical and x["spring_mean_diameter"] is not None:
-        values.update(_suggest_wire(x, target, force, notes))
+        values.update(suggest_wire(x, target, force, notes))
     if not helical:
-        values.update(_suggest_parallel(x, target, force, notes, found))
+        values.update(_suggest_parallel(x, float(target), float(force), notes, found))
     return values, notes
 
 
-def _suggest_wire(
-    x: Mapping[str, Any], target: float, force: float, notes: list[str]
+def suggest_wire(
+    x: Mapping[str, Any], target: Any, force: Any, notes: list[str] | None = None
 ) -> dict[str, Any]:
+    """The thinnest preferred wire that reaches the target peak torque, per point.
+
+    Candidates in the order of :data:`springs.STANDARD_WIRE_DIAMETERS` (spring index
+    4…12, inside the material's table, a peak setting within the permissible stress,
+    not solid at the largest deflection; the same D and i_p). Floats or arrays: NaN
+    where none works, and on floats the outputs are then left out. ``notes``, for one
+    design, gets the sentences that explain the answer.
+    """
+    said = [] if notes is None else notes
     if x["spring_material"] == "custom" and x["allowable_shear_stress"] is None:
-        notes.append("give spring_material or allowable_shear_stress for a suggested wire diameter")
+        said.append("give spring_material or allowable_shear_stress for a suggested wire diameter")
         return {}
-    dm = x["spring_mean_diameter"]
+    grid = SettingGrid(x)
+    dm = np.asarray(x["spring_mean_diameter"], float)
+    shape = np.broadcast_shapes(
+        dm.shape, np.shape(target), np.shape(force), grid.inverse_gain.shape[:-1]
+    )
+    wire = np.full(shape, np.nan)
+    setting = np.full(shape, np.nan)
+    stress_at = np.full(shape, np.nan)
+    allow_at = np.full(shape, np.nan)
+    open_ = np.ones(shape, dtype=bool)
     for d_mm in sp.STANDARD_WIRE_DIAMETERS:
         d = d_mm * 1e-3
-        if not 4.0 <= dm / d <= 12.0:
+        index = dm / d
+        trying = open_ & (index >= 4.0) & (index <= 12.0)
+        if not trying.any():
+            if not np.any(open_ & (index > 12.0)):
+                break  # every open point's coil is too small for this wire and thicker ones
             continue
         trial = {**x, "spring_wire_diameter": d}
+        spring = Spring(trial)
         try:
-            spring = Spring(trial)
             allow = spring.permissible()
-            allow = None if allow is None else float(allow)
         except InputOutOfRange:
             continue  # outside the material's table
-        found = _peak_setting(trial, spring, target, force)
-        if found is None or allow is None or found[1] > allow:
+        if allow is None:
             continue
+        delta, stress = peak_setting(trial, spring, target, force, grid)
+        fits = trying & np.isfinite(delta) & (stress <= np.asarray(allow, float))
         if x["spring_free_length"] is not None:
-            travel = found[0] + float(characteristic(trial, spring, found[0])["total_lift"])
-            room = float(sp.solid_length(d, x["spring_active_coils"]))
-            room += float(sp.minimum_gap_sum(d, dm, x["spring_active_coils"]))
-            if x["spring_free_length"] - travel < room:
-                continue  # would go solid
-        else:
-            notes.append(
-                "spring_free_length not given: the suggested wire's setting is not limited by "
-                "its solid length"
+            total_lift = end_values({**trial, "spring_deflection": delta}, spring)["total_lift"]
+            travel = delta + total_lift
+            coils = x["spring_active_coils"]
+            room = np.asarray(sp.solid_length(d, coils), float) + np.asarray(
+                sp.minimum_gap_sum(d, dm, coils), float
             )
-        notes.append(
-            f"suggested wire {d_mm:g} mm: the thinnest preferred size that reaches "
-            f"{target:.4g} N·m at its peak with {found[1] / 1e6:.4g} MPa ≤ {allow / 1e6:.4g} MPa"
+            fits &= ~(x["spring_free_length"] - travel < room)
+        wire = np.where(fits, d, wire)
+        setting = np.where(fits, delta, setting)
+        stress_at = np.where(fits, stress, stress_at)
+        allow_at = np.where(fits, allow, allow_at)
+        open_ &= ~fits
+        if not open_.any():
+            break
+    if wire.ndim:
+        return {"suggested_wire_diameter": wire, "suggested_wire_setting": setting}
+    if math.isnan(wire):
+        said.append("no preferred wire with spring index 4…12 reaches the target within its stress")
+        return {}
+    if x["spring_free_length"] is None:
+        said.append(
+            "spring_free_length not given: the suggested wire's setting is not limited by "
+            "its solid length"
         )
-        return {"suggested_wire_diameter": d, "suggested_wire_setting": found[0]}
-    notes.append("no preferred wire with spring index 4…12 reaches the target within its stress")
-    return {}
+    said.append(
+        f"suggested wire {float(wire) * 1e3:g} mm: the thinnest preferred size that reaches "
+        f"{float(target):.4g} N·m at its peak with {float(stress_at) / 1e6:.4g} MPa ≤ "
+        f"{float(allow_at) / 1e6:.4g} MPa"
+    )
+    return {"suggested_wire_diameter": float(wire), "suggested_wire_setting": float(setting)}
 
 
 def _suggest_parallel(
@@ -1116,13 +1181,14 @@ def _suggest_parallel(
     given: tuple[float, float] | None,
 ) -> dict[str, Any]:
     """The fewest discs in parallel that reach the target; ``given`` is the given stack's
-    own :func:`_peak_setting` (not searched again for its own number of discs)."""
+    own :func:`peak_setting` (not searched again for its own number of discs)."""
     for n in range(1, 9):
         if n == x["disc_parallel"]:
             found = given
         else:
             trial = {**x, "disc_parallel": n}
-            found = _peak_setting(trial, Spring(trial), target, force)
+            delta, stress = peak_setting(trial, Spring(trial), target, force)
+            found = None if math.isnan(delta) else (delta, stress)
         if found is not None and found[1] <= float(x["disc_yield_strength"]):
             return {"suggested_disc_parallel": n, "suggested_disc_setting": found[0]}
     notes.append("no stack of up to 8 of these discs in parallel reaches the target")
@@ -1230,26 +1296,31 @@ def sizing_outputs() -> tuple[Output, ...]:
 
 
 def sizing(x: Mapping[str, Any]) -> dict[str, Any]:
-    """Rated, start and required slip torque from the drive inputs; {} without a drive."""
+    """Rated, start and required slip torque from the drive inputs; {} without a drive.
+
+    Floats or arrays (a float for a single design).
+    """
     if x["drive_torque"] is not None:
-        rated = float(x["drive_torque"])
+        rated: Any = _scalar_or_array(x["drive_torque"])
     elif x["drive_power"] is not None and x["drive_speed"] is not None:
-        rated = float(cl_rated_torque(x["drive_power"], x["drive_speed"]))
+        rated = _scalar_or_array(cl_rated_torque(x["drive_power"], x["drive_speed"]))
     else:
         return {}
     out: dict[str, Any] = {"rated_drive_torque": rated}
-    start = 0.0
-    if None not in (x["drive_start_torque"], x["drive_inertia"], x["load_inertia"]):
-        start = float(
+    start: Any = 0.0
+    if all(x[k] is not None for k in ("drive_start_torque", "drive_inertia", "load_inertia")):
+        start = _scalar_or_array(
             cl_acceleration_torque(x["drive_start_torque"], x["drive_inertia"], x["load_inertia"])
         )
         out["start_torque"] = start
-    out["required_slip_torque"] = float(cl_required_slip_torque(rated, x["service_factor"], start))
+    out["required_slip_torque"] = _scalar_or_array(
+        cl_required_slip_torque(rated, x["service_factor"], start)
+    )
     return out
 
 
 # --------------------------------------------------------------------------
-# The inverse on arrays (clutch.ball_setting's array path), helical springs
+# The setting as lines (helical springs), for one design or many
 # --------------------------------------------------------------------------
 
 
@@ -1301,101 +1372,3 @@ class SettingGrid:
         compression = (np.asarray(target, float) / np.asarray(rate, float))[..., None]
         delta = np.min(compression * self.inverse_gain - self.q, axis=-1) * self.share
         return np.where((delta >= 0.0) & (delta <= upper), delta, np.nan)
-
-
-def peak_setting_arrays(
-    x: Mapping[str, Any], grid: SettingGrid, spring: Spring, target: Any, force: Any
-) -> tuple[Any, Any]:
-    """(setting, largest stress over the lift) of :func:`_peak_setting` on arrays; NaN: None.
-
-    Helical springs only. A point where the lines do not all rise (a push ≤ 0 on the
-    driving flank) is solved by :func:`_peak_setting` itself.
-    """
-    rate = np.asarray(spring.force(1.0), float)
-    upper = np.maximum(np.asarray(force) / rate, 1e-9) * 1.000001
-    delta = np.asarray(grid.setting(rate, target, upper))
-    stress = np.asarray(end_values({**x, "spring_deflection": delta}, spring)["spring_stress_max"])
-    n = delta.size if delta.ndim else 0
-    if not np.all(grid.regular):
-        delta, stress = np.array(delta, float, ndmin=1), np.array(stress, float, ndmin=1)
-        for j in np.flatnonzero(~np.broadcast_to(grid.regular, delta.shape)).tolist():
-            point = _at_point(x, j) if n else dict(x)
-            found = _peak_setting(
-                point,
-                Spring(point),
-                float(np.broadcast_to(target, delta.shape)[j]),
-                float(np.broadcast_to(force, delta.shape)[j]),
-            )
-            delta[j], stress[j] = (np.nan, np.nan) if found is None else found
-    return delta, stress
-
-
-def suggest_wire_arrays(
-    x: Mapping[str, Any], grid: SettingGrid, target: Any, force: Any
-) -> dict[str, Any]:
-    """:func:`_suggest_wire` on arrays: the thinnest preferred wire that works, per point.
-
-    The same candidates in the same order and the same conditions (spring index 4…12,
-    inside the material's table, a peak setting within the permissible stress, not
-    solid at the largest deflection); NaN where none works.
-    """
-    if x["spring_material"] == "custom" and x["allowable_shear_stress"] is None:
-        return {}
-    dm = np.asarray(x["spring_mean_diameter"], float)
-    shape = np.broadcast_shapes(
-        dm.shape, np.shape(target), np.shape(force), grid.inverse_gain.shape[:-1]
-    )
-    wire = np.full(shape, np.nan)
-    setting = np.full(shape, np.nan)
-    open_ = np.ones(shape, dtype=bool)
-    for d_mm in sp.STANDARD_WIRE_DIAMETERS:
-        d = d_mm * 1e-3
-        index = dm / d
-        trying = open_ & (index >= 4.0) & (index <= 12.0)
-        if not trying.any():
-            if not np.any(open_ & (index > 12.0)):
-                break  # every open point's coil is too small for this wire and thicker ones
-            continue
-        trial = {**x, "spring_wire_diameter": d}
-        spring = Spring(trial)
-        try:
-            allow = spring.permissible()
-        except InputOutOfRange:
-            continue  # outside the material's table
-        if allow is None:
-            continue
-        delta, stress = peak_setting_arrays(trial, grid, spring, target, force)
-        fits = trying & np.isfinite(delta) & (stress <= np.asarray(allow, float))
-        if x["spring_free_length"] is not None:
-            total_lift = end_values({**trial, "spring_deflection": delta}, spring)["total_lift"]
-            travel = delta + total_lift
-            coils = x["spring_active_coils"]
-            room = np.asarray(sp.solid_length(d, coils), float) + np.asarray(
-                sp.minimum_gap_sum(d, dm, coils), float
-            )
-            fits &= ~(x["spring_free_length"] - travel < room)
-        wire = np.where(fits, d, wire)
-        setting = np.where(fits, delta, setting)
-        open_ &= ~fits
-        if not open_.any():
-            break
-    return {"suggested_wire_diameter": wire, "suggested_wire_setting": setting}
-
-
-def sizing_arrays(x: Mapping[str, Any]) -> dict[str, Any]:
-    """:func:`sizing` on arrays (the same formulas; {} without a drive)."""
-    if x["drive_torque"] is not None:
-        rated = np.asarray(x["drive_torque"], float)
-    elif x["drive_power"] is not None and x["drive_speed"] is not None:
-        rated = np.asarray(cl_rated_torque(x["drive_power"], x["drive_speed"]), float)
-    else:
-        return {}
-    out: dict[str, Any] = {"rated_drive_torque": rated}
-    start: Any = 0.0
-    if all(x[k] is not None for k in ("drive_start_torque", "drive_inertia", "load_inertia")):
-        start = cl_acceleration_torque(
-            x["drive_start_torque"], x["drive_inertia"], x["load_inertia"]
-        )
-        out["start_torque"] = start
-    out["required_slip_torque"] = cl_required_slip_torque(rated, x["service_factor"], start)
-    return out

@@ -996,11 +996,11 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
 def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """clutch.ball_setting on arrays: every output and check of the scalar compute, helical.
 
-    Several inputs may vary at once. The peak setting and the suggested wire come
-    from :class:`asbuilt.SettingGrid` (the characteristic's lines in the setting)
-    instead of a root search per point. NaN (and -1 in the checks) where the scalar
-    compute refuses the point or leaves an output null. Disc stacks, and inputs
-    missing for the spring or the target, go to the scalar compute.
+    Several inputs may vary at once; the same functions as a single run
+    (:func:`asbuilt.setting_values`, :func:`asbuilt.sizing`). NaN (and -1 in the
+    checks) where the scalar compute refuses the point or leaves an output null.
+    Disc stacks, and inputs missing for the spring or the target, go to the scalar
+    compute.
     """
     helical = x["spring_type"] == "helical"
     wire, deflection = x["spring_wire_diameter"], x["spring_deflection"]
@@ -1012,7 +1012,7 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
     ):
         return Result(values={}, rung=ctx.rung, error_estimate=None)
     with np.errstate(all="ignore"):
-        drive = asbuilt.sizing_arrays(x)
+        drive = asbuilt.sizing(x)
         target_given = x["target_torque"] is not None
         if not target_given:
             if not drive:
@@ -1020,14 +1020,7 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
             x = {**x, "target_torque": drive["required_slip_torque"]}
         ok = _feasible_mask(x, wire) & _spring_mask(x, wire)
         v: dict[str, Any] = dict(_setting_values(x))
-        force = v["required_spring_force"]
-        grid = asbuilt.SettingGrid(x)
-        if wire is not None:
-            spring = asbuilt.Spring(x)
-            v["required_peak_setting"], v["peak_setting_stress_max"] = asbuilt.peak_setting_arrays(
-                x, grid, spring, x["target_torque"], force
-            )
-        v.update(asbuilt.suggest_wire_arrays(x, grid, x["target_torque"], force))
+        v.update(asbuilt.setting_values(x, v["required_spring_force"])[0])
         v.update(drive)
         check_arrays = {
             k: _verdicts(c, ok) for k, c in _setting_verdicts(x, v, drive, target_given).items()

@@ -191,16 +191,21 @@ def test_peak_setting_lines_against_the_scalar_root_search():
         for driving in (None, 40 * DEG):
             xx = {**x, "ball_lift": lift, "driving_groove_angle": driving}
             spring = asbuilt.Spring(xx)
-            grid = asbuilt.SettingGrid(xx)
+            rate = float(spring.force(1.0))
             for target in (0.5, 2.0, 8.0):
                 force = 2 * target * math.tan(45 * DEG - math.atan(0.1)) / 0.05
-                got, stress = asbuilt.peak_setting_arrays(xx, grid, spring, target, force)
-                want = asbuilt._peak_setting(xx, spring, target, force)
+                got, stress = asbuilt.peak_setting(xx, spring, target, force)
+                # on an array of one point: the same numbers
+                got_1, stress_1 = asbuilt.peak_setting(xx, spring, np.array([target]), force)
+                np.testing.assert_array_equal([got, stress], [got_1[0], stress_1[0]])
+                upper = max(force / rate, 1e-9) * 1.000001
+                want = asbuilt.solve_setting(xx, spring, target, upper)
                 if want is None:
-                    assert np.isnan(got).all()
+                    assert math.isnan(got) and math.isnan(stress)
                 else:
-                    assert float(np.squeeze(got)) == pytest.approx(want[0], rel=1e-12)
-                    assert float(np.squeeze(stress)) == pytest.approx(want[1], rel=1e-12)
+                    top = asbuilt.characteristic(xx, spring, want)["spring_stress_max"]
+                    assert got == pytest.approx(want, rel=1e-12)
+                    assert stress == pytest.approx(float(top), rel=1e-12)
 
 
 def test_study_pass_fractions_equal_single_runs():
