@@ -819,7 +819,9 @@ def _required_force(x: Mapping[str, Any]) -> Any:
 
 def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
     """Every output of clutch.ball_setting, on floats or arrays."""
-    g, dm, ip = x["shear_modulus"], x["spring_mean_diameter"], x["spring_active_coils"]
+    # the material's modulus where one is chosen, as the as-built outputs take it
+    g = asbuilt.Spring(x).shear_modulus
+    dm, ip = x["spring_mean_diameter"], x["spring_active_coils"]
     force = _required_force(x)
     out: dict[str, Any] = {"required_spring_force": force}
     wire, deflection = x["spring_wire_diameter"], x["spring_deflection"]
