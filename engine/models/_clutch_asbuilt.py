@@ -24,9 +24,12 @@ from .. import springs as sp
 from ..clutch import (
     RECOMMENDED_SERVICE_FACTOR,
     SELF_LOCKING_MARGIN,
-    combined_push_factor,
     friction_sensitivity,
+    lift_points,
     residual_torque,
+    rim_rise,
+    torque_against_lift,
+    torque_sharing,
 )
 from ..clutch import acceleration_torque as cl_acceleration_torque
 from ..clutch import rated_torque as cl_rated_torque
@@ -441,9 +444,7 @@ def require_spring(x: Mapping[str, Any], *, wire_needed: bool) -> None:
 
 
 def _sharing(x: Mapping[str, Any]) -> Any:
-    if x["spring_arrangement"] == "per_ball":
-        return np.asarray(x["load_factor"]) * np.asarray(x["ball_count"])
-    return 1.0
+    return torque_sharing(x["spring_arrangement"], x["ball_count"], x["load_factor"])
 
 
 def lift_of(x: Mapping[str, Any], deflection: Any = None) -> Any:
@@ -465,27 +466,12 @@ def characteristic(
     """
     flat_spring = spring
     preload = np.asarray(x["spring_deflection"] if deflection is None else deflection, float)
-    h, d, alpha = np.broadcast_arrays(
-        np.asarray(lift_of(x, deflection), float),
-        np.asarray(x["ball_diameter"], float),
-        np.asarray(x["groove_angle"], float),
-    )
-    h, r, a = h[..., None], d[..., None] / 2.0, alpha[..., None]
-    u = np.linspace(0.0, 1.0, POINTS)
-    v = np.linspace(0.0, 1.0, POINTS)[1:]
-    beta_rim = a + v * (math.pi / 2.0 - a)
+    lift, beta = lift_points(lift_of(x, deflection), x["ball_diameter"], x["groove_angle"], POINTS)
     # A helical spring's force rises with the lift and the flank's push is constant, so
     # on the flank the torque rises to the rim: the grid's peak and maxima lie from the
     # rim on. Without the curves, only those points are evaluated (the same floats).
     first = POINTS - 1 if spring.kind == "helical" and not curves else 0
-    lift = np.concatenate(
-        [np.broadcast_to(u[first:] * h, np.broadcast_shapes(h.shape, u[first:].shape)),
-         h + r * (np.sin(beta_rim) - np.sin(a))],
-        axis=-1,
-    )  # fmt: skip
-    beta = np.concatenate(
-        [np.broadcast_to(a, np.broadcast_shapes(a.shape, u[first:].shape)), beta_rim], axis=-1
-    )
+    lift, beta = lift[..., first:], beta[..., first:]
     # a swept input (an array) gets a trailing axis so it broadcasts against the lift
     x = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
     spring = Spring(x)
@@ -493,9 +479,17 @@ def characteristic(
     force = spring.force(total)
     helical = spring.kind == "helical"
     stress: Any = None if helical and not curves else spring.stress(total)
-    push = combined_push_factor(beta, x["flank_friction"], x["driving_groove_angle"])
     # x's arrays already carry the trailing (lift) axis
-    torque = np.asarray(_sharing(x)) * np.asarray(x["ball_circle_diameter"]) * force / (2.0 * push)
+    torque = np.asarray(
+        torque_against_lift(
+            force,
+            beta,
+            x["ball_circle_diameter"],
+            x["flank_friction"],
+            x["driving_groove_angle"],
+            _sharing(x),
+        )
+    )
     peak = np.argmax(torque, axis=-1)[..., None]
 
     if torque.ndim == 1:  # a single design: plain indexing, the same floats (issue 21)
@@ -565,10 +559,7 @@ def end_values(x: Mapping[str, Any], spring: Spring) -> dict[str, Any]:
     asks for none of :data:`PEAK_OUTPUTS`.
     """
     h = np.asarray(lift_of(x), float)
-    a = np.asarray(x["groove_angle"], float)
-    r = np.asarray(x["ball_diameter"], float) / 2.0
-    beta_end = a + 1.0 * (math.pi / 2.0 - a)  # the characteristic's last rim angle
-    total_lift = h + r * (np.sin(beta_end) - np.sin(a))
+    total_lift = h + rim_rise(x["ball_diameter"], x["groove_angle"])
     total = np.asarray(x["spring_deflection"], float) + total_lift
     force = spring.force(total)
     out: dict[str, Any] = {
@@ -1344,25 +1335,24 @@ class SettingGrid:
     """
 
     def __init__(self, x: Mapping[str, Any]) -> None:
-        d, alpha = np.broadcast_arrays(
-            np.asarray(x["ball_diameter"], float), np.asarray(x["groove_angle"], float)
+        given = x["ball_lift"] is not None
+        lift, beta = lift_points(
+            x["ball_lift"] if given else 0.0, x["ball_diameter"], x["groove_angle"], POINTS
         )
-        r, a = d[..., None] / 2.0, alpha[..., None]
-        v = np.linspace(0.0, 1.0, POINTS)[1:]
-        beta_rim = a + v * (math.pi / 2.0 - a)
-        rim = r * (np.sin(beta_rim) - np.sin(a))
-        if x["ball_lift"] is not None:
-            h = np.asarray(x["ball_lift"], float)[..., None]
-            over = h + rim
-            self.q = np.concatenate([np.broadcast_to(h, (*over.shape[:-1], 1)), over], axis=-1)
-            self.share = 1.0  # 1/(1 + p)
-        else:
-            self.q = np.concatenate([np.zeros((*rim.shape[:-1], 1)), rim], axis=-1)
-            self.share = 0.5
-        beta = np.concatenate([a, beta_rim], axis=-1)
+        # from the rim on (the flank's lines lie below the rim's): q_k, the lift at δ = 0
+        self.q = lift[..., POINTS - 1 :]
+        self.share = 1.0 if given else 0.5  # 1/(1 + p)
         xs = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
-        push = combined_push_factor(beta, xs["flank_friction"], xs["driving_groove_angle"])
-        gain = np.asarray(_sharing(xs)) * np.asarray(xs["ball_circle_diameter"]) / (2.0 * push)
+        gain = np.asarray(
+            torque_against_lift(
+                1.0,
+                beta[..., POINTS - 1 :],
+                xs["ball_circle_diameter"],
+                xs["flank_friction"],
+                xs["driving_groove_angle"],
+                _sharing(xs),
+            )
+        )
         # the lines rise with δ only where every push is positive and finite
         self.regular = np.all(np.isfinite(gain) & (gain > 0.0), axis=-1)
         self.inverse_gain = 1.0 / gain
