@@ -678,18 +678,17 @@ def _verdicts(x: Mapping[str, Any], values: Mapping[str, Any]) -> dict[str, Any]
     The one place the checks compare numbers: a single run turns these verdicts into
     sentences (:func:`_checks`), a sweep or a study reports them per point.
     """
-    out: dict[str, Any] = {
-        "max_spindle_torque_positive": np.asarray(values["max_spindle_torque"]) > 0.0
-    }
-    z = np.asarray(x["spindle_count"])
-    if np.any(z >= 2):
-        d5 = np.asarray(x["spindle_gear_diameter"], dtype=float)
+    out: dict[str, Any] = {"max_spindle_torque_positive": values["max_spindle_torque"] > 0.0}
+    z, d5 = x["spindle_count"], x["spindle_gear_diameter"]
+    applies = z >= 2  # a single spindle has no neighbouring gear to hit
+    every = isinstance(applies, bool) or np.ndim(applies) == 0  # one count at every point
+    if applies if every else applies.any():
         fits = spindle_gear_spacing(x["drive_gear_diameter"], d5, z) > d5
-        out["spindle_gears_fit"] = np.where(z >= 2, fits, -1).astype(np.int8)
+        out["spindle_gears_fit"] = fits if every else np.where(applies, fits, -1).astype(np.int8)
     tau_y = x.get("shear_yield_strength")
     if tau_y is not None:
         for key in ("shaft_shear_stress", "spindle_shear_stress"):
-            out[f"{key.removesuffix('_shear_stress')}_elastic"] = np.asarray(values[key]) <= tau_y
+            out[f"{key.removesuffix('_shear_stress')}_elastic"] = values[key] <= tau_y
     return out
 
 
