@@ -118,17 +118,22 @@ def test_a_catalogue_wire_varied_across_and_off_its_table():
 
 
 def test_tensile_strength_on_arrays_is_the_table_row_by_row():
+    # the table read the slow way (first row whose upper diameter covers d, a linear
+    # scan), against the binary search on arrays and on floats
     for name, material in sp.MATERIALS.items():
         wires = [u * f * 1e-3 for u, _ in material.strength for f in (1 - 2e-9, 1, 1 + 2e-9)]
         wires += np.linspace(0.0, 0.03, 301).tolist()
-        got = sp.tensile_strength_array(name, np.array(wires))
+        got = sp.tensile_strength(name, np.array(wires))
+        lo, hi = material.diameter_range
         for d, g in zip(wires, got, strict=True):
-            try:
-                want = sp.tensile_strength(name, d)
-            except InputOutOfRange:
+            d_mm = d * 1e3
+            if not lo * 1e3 * (1 - 1e-9) - 1.0 <= d_mm <= hi * 1e3 * (1 + 1e-9):
                 assert math.isnan(g), (name, d)
-            else:
-                assert g == want, (name, d)
+                with pytest.raises(InputOutOfRange, match="outside the"):
+                    sp.tensile_strength(name, d)
+                continue
+            want = next(rm for upper, rm in material.strength if d_mm <= upper * (1 + 1e-9))
+            assert g == want * 1e6 == sp.tensile_strength(name, d), (name, d)
 
 
 def test_disc_stack_varied_runs_on_the_array_path():
@@ -186,16 +191,21 @@ def test_peak_setting_lines_against_the_scalar_root_search():
         for driving in (None, 40 * DEG):
             xx = {**x, "ball_lift": lift, "driving_groove_angle": driving}
             spring = asbuilt.Spring(xx)
-            grid = asbuilt.SettingGrid(xx)
+            rate = float(spring.force(1.0))
             for target in (0.5, 2.0, 8.0):
                 force = 2 * target * math.tan(45 * DEG - math.atan(0.1)) / 0.05
-                got, stress = asbuilt.peak_setting_arrays(xx, grid, spring, target, force)
-                want = asbuilt._peak_setting(xx, spring, target, force)
+                got, stress = asbuilt.peak_setting(xx, spring, target, force)
+                # on an array of one point: the same numbers
+                got_1, stress_1 = asbuilt.peak_setting(xx, spring, np.array([target]), force)
+                np.testing.assert_array_equal([got, stress], [got_1[0], stress_1[0]])
+                upper = max(force / rate, 1e-9) * 1.000001
+                want = asbuilt.solve_setting(xx, spring, target, upper)
                 if want is None:
-                    assert np.isnan(got).all()
+                    assert math.isnan(got) and math.isnan(stress)
                 else:
-                    assert float(np.squeeze(got)) == pytest.approx(want[0], rel=1e-12)
-                    assert float(np.squeeze(stress)) == pytest.approx(want[1], rel=1e-12)
+                    top = asbuilt.characteristic(xx, spring, want)["spring_stress_max"]
+                    assert got == pytest.approx(want, rel=1e-12)
+                    assert stress == pytest.approx(float(top), rel=1e-12)
 
 
 def test_study_pass_fractions_equal_single_runs():
