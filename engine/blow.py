@@ -55,13 +55,13 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Callable
 from dataclasses import dataclass, field, fields
 from typing import Any
 
 import numpy as np
 
 from .errors import BudgetExceeded, InfeasibleDesign, InputOutOfRange, SolverFailed
+from .numerics import StepCost, jit
 
 __all__ = [
     "ISO5393_ANGLE",
@@ -97,72 +97,13 @@ STEPS_PER_PERIOD = 200
 _BISECT = 60
 _SERIES_CAP = 400
 
-#: Seconds per RK4 step of the blow kernel: a running mean over the kernel's own chunks of
-#: 10,000 steps or more in this process (issue 21: budgets in time, not steps); the prior
-#: is a slow machine's figure (~0.3 µs measured on the 2-core CI box, about 3× that).
-_STEP_COST = [1e-6]
-#: Share of the time left that a run of blows may plan to use.
-TIME_SHARE = 0.5
-
-
-def step_budget(deadline: float | None, max_steps: int) -> int:
-    """Steps the blow kernel may take: what the time left affords, or ``max_steps``.
-
-    Parameters
-    ----------
-    deadline : float or None
-        ``time.perf_counter()`` value the answer is due by, [s]
-    max_steps : int
-        The caller's step budget, used only without a deadline, [-]
-
-    Notes
-    -----
-    With a deadline: :data:`TIME_SHARE` of the time left over the kernel's
-    measured cost per step (:data:`_STEP_COST`), so a light nut on a stiff joint
-    that needs millions of steps runs when they fit in the time budget.
-
-    >>> step_budget(None, 1000)
-    1000
-    >>> step_budget(time.perf_counter() + 1.0, 1000) > 1000  # 0.5 s at ≤ 1 µs a step
-    True
-    """
-    if deadline is None:
-        return max_steps
-    left = max(deadline - time.perf_counter(), 0.0)
-    return int(min(left * TIME_SHARE / _STEP_COST[0], 1e15))
-
-
-#: Whether the kernel has run once in this process: its first call compiles it (or loads
-#: it from numba's cache), seconds that are not the cost of a step.
-_WARM = [False]
-#: A chunk's measured cost is capped here (10x the prior): a pause of the whole process
-#: (a collection, a busy machine) must not shrink every later budget.
-_STEP_COST_CAP = 1e-5
-
-
-def _measured(used: int, seconds: float) -> None:
-    """Fold one chunk's cost into :data:`_STEP_COST` (chunks long enough to time).
-
-    The first call in the process is not counted (it includes the compilation), and one
-    chunk's figure is capped at :data:`_STEP_COST_CAP`.
-    """
-    if not _WARM[0]:
-        _WARM[0] = True
-        return
-    if used >= 10_000 and seconds > 0.0:
-        _STEP_COST[0] = 0.7 * _STEP_COST[0] + 0.3 * min(seconds / used, _STEP_COST_CAP)
-
-
-def _jit(func: Callable[..., Any]) -> Callable[..., Any]:
-    """Compile with numba when it is installed; the plain function otherwise."""
-    try:
-        import numba
-    except ImportError:  # pragma: no cover - numba is a declared dependency
-        return func
-    try:
-        return numba.njit(cache=True, nogil=True)(func)
-    except RuntimeError:  # pragma: no cover - no writable cache directory at all
-        return numba.njit(cache=False, nogil=True)(func)
+#: The blow kernel's measured cost per RK4 step in this process (issue 21: budgets in
+#: time, not steps); the prior is a slow machine's figure (~0.3 µs measured on the 2-core
+#: CI box, about 3× that).
+_COST = StepCost()
+#: Steps the blow kernel may take before ``deadline`` (:func:`engine.numerics.step_budget`
+#: at :data:`_COST`), or ``max_steps`` without one.
+step_budget = _COST.budget
 
 
 # ---------------------------------------------------------------------------
@@ -683,7 +624,7 @@ def _rates(st, mode, jt, js, c, cd, k, t0, n):  # type: ignore[no-untyped-def]
     return du, dwt, dth, dws, pj, n * wt, (ts - c * up) * du, ts
 
 
-_rates_c = _jit(_rates)
+_rates_c = jit(_rates)
 
 
 def _rk4(st, h, mode, jt, js, c, cd, k, t0, n, out):  # type: ignore[no-untyped-def]
@@ -711,7 +652,7 @@ def _rk4(st, h, mode, jt, js, c, cd, k, t0, n, out):  # type: ignore[no-untyped-
         out[3] = 0.0
 
 
-_rk4_c = _jit(_rk4)
+_rk4_c = jit(_rk4)
 
 
 def _spring(st, c, cd):  # type: ignore[no-untyped-def]
@@ -722,7 +663,7 @@ def _spring(st, c, cd):  # type: ignore[no-untyped-def]
     return ts if ts > 0.0 else 0.0
 
 
-_spring_c = _jit(_spring)
+_spring_c = jit(_spring)
 
 
 def _event(st, mode, jt, js, c, cd, k, t0, b, n, started):  # type: ignore[no-untyped-def]
@@ -742,7 +683,7 @@ def _event(st, mode, jt, js, c, cd, k, t0, b, n, started):  # type: ignore[no-un
     return 0
 
 
-_event_c = _jit(_event)
+_event_c = jit(_event)
 
 
 def _torque_rate(st, mode, jt, js, c, cd, k, t0, n):  # type: ignore[no-untyped-def]
@@ -752,7 +693,7 @@ def _torque_rate(st, mode, jt, js, c, cd, k, t0, n):  # type: ignore[no-untyped-
     return c * r[0] + cd * (r[1] - r[3])
 
 
-_torque_rate_c = _jit(_torque_rate)
+_torque_rate_c = jit(_torque_rate)
 
 
 def _blow_kernel(  # type: ignore[no-untyped-def]
@@ -850,7 +791,7 @@ def _blow_kernel(  # type: ignore[no-untyped-def]
     info[7] = 1.0 if started else 0.0
 
 
-_blow_kernel_c = _jit(_blow_kernel)
+_blow_kernel_c = jit(_blow_kernel)
 
 
 @dataclass(frozen=True)
@@ -1005,7 +946,7 @@ def simulate_blow(
             out_t, out_ts, info,
         )  # fmt: skip
         used = int(info[1])
-        _measured(used, time.perf_counter() - began)
+        _COST.measured(used, time.perf_counter() - began)
         if info[3] > peak:
             peak = float(info[3])
             t_peak_abs = t_total + float(info[4])
@@ -1273,7 +1214,7 @@ def blow_series(
         Keep the torque against time of the first blow (simulation)
     max_steps : int
         Step budget of all blows together without a deadline, [-]; with one, the step
-        budget is what the time left affords (:func:`step_budget`)
+        budget is what the time left affords (:func:`engine.numerics.step_budget`)
     deadline : float or None
         ``time.perf_counter()`` value after which the run stops, [s]
 

@@ -123,13 +123,14 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
 from .errors import BudgetExceeded, InfeasibleDesign, SolverFailed
+from .numerics import StepCost, first_rise_c, jit
 
 __all__ = [
     "GEOMETRIES",
@@ -157,63 +158,13 @@ STEPS_PER_PERIOD = 200
 _CHUNK = 400_000
 _SERIES_POINTS = 240
 
-#: Seconds per RK4 step of the cycle kernel: a running mean over the kernel's own chunks
-#: of 10,000 steps or more in this process (issue 21: budgets in time, not steps); the
-#: prior is a slow machine's figure (~0.2 µs measured on the 2-core CI box, 5× that).
-_STEP_COST = [1e-6]
-#: Share of the time left that a simulation may plan to use up front (the rest covers a
-#: slower machine than measured and the answer's own bookkeeping).
-TIME_SHARE = 0.5
-
-
-def step_budget(deadline: float | None, max_steps: int) -> int:
-    """Steps the cycle kernel may take: what the time left affords, or ``max_steps``.
-
-    Parameters
-    ----------
-    deadline : float or None
-        ``time.perf_counter()`` value the answer is due by, [s]
-    max_steps : int
-        The caller's step budget, used only without a deadline, [-]
-
-    Notes
-    -----
-    With a deadline the budget is in time: :data:`TIME_SHARE` of the time left
-    divided by the kernel's measured cost per step (:data:`_STEP_COST`), so a stiff
-    design needing millions of steps runs when the kernel finishes them well
-    inside the time budget, and one that would not is declined up front (its
-    ``expected_steps`` in the error: the runner's fallback can take over at once).
-
-    >>> step_budget(None, 1000)
-    1000
-    >>> step_budget(time.perf_counter() - 1.0, 1000)  # past the deadline: no steps
-    0
-    """
-    if deadline is None:
-        return max_steps
-    left = max(deadline - time.perf_counter(), 0.0)
-    return int(min(left * TIME_SHARE / _STEP_COST[0], 1e15))
-
-
-#: Whether the kernel has run once in this process: its first call compiles it (or loads
-#: it from numba's cache), seconds that are not the cost of a step.
-_WARM = [False]
-#: A chunk's measured cost is capped here (10x the prior): a pause of the whole process
-#: (a collection, a busy machine) must not shrink every later budget.
-_STEP_COST_CAP = 1e-5
-
-
-def _measured(used: int, seconds: float) -> None:
-    """Fold one chunk's cost into :data:`_STEP_COST` (chunks long enough to time).
-
-    The first call in the process is not counted (it includes the compilation), and one
-    chunk's figure is capped at :data:`_STEP_COST_CAP`.
-    """
-    if not _WARM[0]:
-        _WARM[0] = True
-        return
-    if used >= 10_000 and seconds > 0.0:
-        _STEP_COST[0] = 0.7 * _STEP_COST[0] + 0.3 * min(seconds / used, _STEP_COST_CAP)
+#: The cycle kernel's measured cost per RK4 step in this process (issue 21: budgets in
+#: time, not steps); the prior is a slow machine's figure (~0.2 µs measured on the 2-core
+#: CI box, 5× that).
+_COST = StepCost()
+#: Steps the cycle kernel may take before ``deadline`` (:func:`engine.numerics.step_budget`
+#: at :data:`_COST`), or ``max_steps`` without one.
+step_budget = _COST.budget
 
 
 # ---------------------------------------------------------------------------
@@ -740,18 +691,6 @@ def closed_form_cycle(x: Mapping[str, Any]) -> CycleOutcome:
 # ---------------------------------------------------------------------------
 
 
-def _jit(func: Callable[..., Any]) -> Callable[..., Any]:
-    """Compile with numba when it is installed; the plain function otherwise."""
-    try:
-        import numba
-    except ImportError:  # pragma: no cover - numba is a declared dependency
-        return func
-    try:
-        return numba.njit(cache=True, nogil=True, error_model="numpy")(func)
-    except RuntimeError:  # pragma: no cover - no writable cache directory at all
-        return numba.njit(cache=False, nogil=True, error_model="numpy")(func)
-
-
 # parameter vector indices
 (C1, L1, C2, L2, C3, L3, GR, M1, M2, M3, MP, NR, X0, KAP, AH, AS, JJ, MT, WNL, H1, H2, FF,
  TANA, MEP, PUSHP, NPAR) = range(26)  # fmt: skip
@@ -764,7 +703,7 @@ def _sp(c, d):  # type: ignore[no-untyped-def]
     return c * d if d > 0.0 else 0.0
 
 
-_sp_c = _jit(_sp)
+_sp_c = jit(_sp, error_model="numpy")
 
 
 def _rhs(mode, p, w, q0, q1, v0, v1):  # type: ignore[no-untyped-def]
@@ -808,7 +747,7 @@ def _rhs(mode, p, w, q0, q1, v0, v1):  # type: ignore[no-untyped-def]
     return 0.0, f / p[8], 0.0
 
 
-_rhs_c = _jit(_rhs)
+_rhs_c = jit(_rhs, error_model="numpy")
 
 
 def _gfun(mode, kind, p, w, q0, q1, v0, v1):  # type: ignore[no-untyped-def]
@@ -827,7 +766,7 @@ def _gfun(mode, kind, p, w, q0, q1, v0, v1):  # type: ignore[no-untyped-def]
     return qh - m12 * qs / m22
 
 
-_gfun_c = _jit(_gfun)
+_gfun_c = jit(_gfun, error_model="numpy")
 
 
 def _rk4(mode, p, w, q0, q1, v0, v1, h):  # type: ignore[no-untyped-def]
@@ -864,61 +803,7 @@ def _rk4(mode, p, w, q0, q1, v0, v1, h):  # type: ignore[no-untyped-def]
     )
 
 
-_rk4_c = _jit(_rk4)
-
-
-def _hermite(s, z0, v0, z1, v1, h):  # type: ignore[no-untyped-def]
-    s2 = s * s
-    s3 = s2 * s
-    return (
-        (2.0 * s3 - 3.0 * s2 + 1.0) * z0
-        + (s3 - 2.0 * s2 + s) * h * v0
-        + (-2.0 * s3 + 3.0 * s2) * z1
-        + (s3 - s2) * h * v1
-    )
-
-
-_hermite_c = _jit(_hermite)
-
-
-def _first_root(z0, v0, z1, v1, h):  # type: ignore[no-untyped-def]
-    """First s in [0, 1] where the Hermite cubic reaches 0 from below; -1 if it does not."""
-    hi = -1.0
-    if z1 >= 0.0:
-        hi = 1.0
-    a = 3.0 * (2.0 * (z0 - z1) / h + v0 + v1)
-    b = 2.0 * (3.0 * (z1 - z0) / h - 2.0 * v0 - v1)
-    c = v0
-    if v0 > 0.0 and v1 < 0.0:  # an interior maximum may graze 0 inside the step
-        if a == 0.0:
-            sp = -c / b if b != 0.0 else 2.0
-        else:
-            disc = b * b - 4.0 * a * c
-            if disc < 0.0:
-                disc = 0.0
-            q = -0.5 * (b + math.copysign(math.sqrt(disc), b))
-            r1 = q / a
-            r2 = c / q if q != 0.0 else -1.0
-            sp = 2.0
-            if 0.0 <= r1 <= 1.0:
-                sp = r1
-            if 0.0 <= r2 <= 1.0 and r2 < sp:
-                sp = r2
-        if 0.0 <= sp <= 1.0 and _hermite_c(sp, z0, v0, z1, v1, h) >= 0.0:
-            hi = sp
-    if hi < 0.0:
-        return -1.0
-    lo = 0.0
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        if _hermite_c(mid, z0, v0, z1, v1, h) >= 0.0:
-            hi = mid
-        else:
-            lo = mid
-    return hi
-
-
-_first_root_c = _jit(_first_root)
+_rk4_c = jit(_rk4, error_model="numpy")
 
 
 def _advance(  # type: ignore[no-untyped-def]
@@ -957,7 +842,7 @@ def _advance(  # type: ignore[no-untyped-def]
                     continue  # past the level, or leaving it onwards: not a new crossing
                 zb = d * (ec0[e] * q0n + ec1[e] * q1n - elvl[e])
                 vb = d * (ec0[e] * v0n + ec1[e] * v1n)
-                s = _first_root_c(za, va, zb, vb, hh)
+                s = first_rise_c(za, va, zb, vb, hh)
             else:
                 ga = d * _gfun_c(mode, ekind[e], p, w, q0, q1, v0, v1)
                 gb = d * _gfun_c(mode, ekind[e], p, wn, q0n, q1n, v0n, v1n)
@@ -1015,7 +900,7 @@ def _advance(  # type: ignore[no-untyped-def]
     return 0, -1, t, w, q0, q1, v0, v1, n_max, n_rec
 
 
-_advance_c = _jit(_advance)
+_advance_c = jit(_advance, error_model="numpy")
 
 
 # ---------------------------------------------------------------------------
@@ -1110,7 +995,7 @@ class _Run:
                 f"budget {self.max_steps:g}"
                 if self.deadline is None
                 else f"the {self.max_steps:.2g} steps its time budget leaves at "
-                f"{_STEP_COST[0] * 1e9:.0f} ns a step"
+                f"{_COST.seconds * 1e9:.0f} ns a step"
             )
             raise BudgetExceeded(
                 f"the cycle simulation would take about {self.steps + expected:.2g} RK4 steps "
@@ -1145,7 +1030,7 @@ class _Run:
                 clamp0, stride, *bufs, n_rec,
             )  # fmt: skip
             if type(self) is _Run:
-                _measured(int(used), time.perf_counter() - began)
+                _COST.measured(int(used), time.perf_counter() - began)
             self.steps += int(used)
             if status != 0:
                 break
@@ -1175,7 +1060,7 @@ def simulate_cycle(
         ``time.perf_counter()`` value after which the run stops (BudgetExceeded), [s]
     max_steps : int
         Largest number of RK4 steps without a deadline, [-]; with one, the step budget
-        is what the time left affords (:func:`step_budget`)
+        is what the time left affords (:func:`engine.numerics.step_budget`)
     steps_per_period : int
         RK4 steps per shortest natural period of each mode, [-]
 
@@ -1192,7 +1077,7 @@ def simulate_cycle(
         # loading or compiling the kernel (once per process) is not the design's time
         deadline += _ensure_compiled(p)
     rec = _Recorder(record)
-    run = _Run_impl(p, rec, deadline, step_budget(deadline, max_steps))
+    run = _Run_impl(p, rec, deadline, _COST.budget(deadline, max_steps))
     notes: list[str] = []
     warnings: list[str] = []
     nm = x["roller_count"] * x["roller_mass"]

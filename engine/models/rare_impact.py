@@ -130,25 +130,28 @@ def _pymax(a: Any, b: Any) -> Any:
     return np.where(b > a, b, a)
 
 
-#: The last array evaluation of the closed form: (the inputs' values, pinned, and the
-#: outcome). A sweep asks the closed form's estimate and then its array path on the same
-#: inputs (the same dict of the same arrays): the cycle is computed once for both. A hit
-#: needs every value to be the *same object*; nothing mutates a sweep's arrays in place.
-_LAST_CYCLE: tuple[tuple[Any, ...], CycleArrays] | None = None
+def _values_key(x: Mapping[str, Any]) -> tuple[Any, ...]:
+    """The inputs by value: each array as its dtype, shape and a copy of its bytes."""
+    return tuple(
+        (k, (v.dtype.str, v.shape, v.tobytes())) if isinstance(v, np.ndarray) else (k, v)
+        for k, v in x.items()
+    )
+
+
+#: The closed form's cycle for the last array inputs, keyed on their values (a copy of
+#: every array's bytes, never the array object): a sweep asks the estimate and then the
+#: array path on the same inputs and the cycle is computed once for both, while a caller
+#: that refills its buffer in place between calls gets the new design's cycle.
+_LAST_CYCLE: list[tuple[tuple[Any, ...], CycleArrays]] = []
 
 
 def _cycle_array(x: Mapping[str, Any]) -> CycleArrays:
-    global _LAST_CYCLE
-    key = tuple(x.items())
-    last = _LAST_CYCLE
-    if (
-        last is not None
-        and len(last[0]) == len(key)
-        and all(a[0] == b[0] and a[1] is b[1] for a, b in zip(last[0], key, strict=True))
-    ):
+    key = _values_key(x)
+    last = _LAST_CYCLE[-1] if _LAST_CYCLE else None
+    if last is not None and last[0] == key:
         return last[1]
     o = closed_form_cycle_array(x)
-    _LAST_CYCLE = (key, o)
+    _LAST_CYCLE[:] = [(key, o)]
     return o
 
 

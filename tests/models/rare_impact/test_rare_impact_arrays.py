@@ -24,6 +24,7 @@ from engine.rare_impact_cycle import (
     linear_reach,
     linear_reach_array,
 )
+from engine.spec import RunContext
 from engine.study import CHECK_FAILED, CHECK_OK, CHECK_UNKNOWN, Study, Variable, evaluate_chunk
 from engine.study import plan as study_plan
 
@@ -166,7 +167,7 @@ def test_an_infeasible_design_is_nan_with_no_estimate() -> None:
     o = closed_form_cycle_array(x)
     assert o.refused.tolist() == [False, True, False]
     assert math.isnan(o.release_speed[1]) and math.isnan(o.engagement_time[1])
-    est = RARE_IMPACT.rungs[0].estimate(x)
+    est = np.asarray(RARE_IMPACT.rungs[0].estimate(x))
     assert math.isnan(est[1]) and np.isfinite(est[[0, 2]]).all()
     with pytest.raises(EngineError):
         closed_form_cycle({k: (v[1] if isinstance(v, np.ndarray) else v) for k, v in x.items()})
@@ -198,3 +199,25 @@ def test_a_2000_point_sweep_runs_on_the_array_path() -> None:
     assert result.results["spin_up_time"][777] == pytest.approx(
         single.results["spin_up_time"], rel=1e-12
     )
+
+
+def test_a_reused_input_buffer_gives_the_new_designs_answer() -> None:
+    # a caller that refills its input array in place between calls must get the answer
+    # for the new values (an array-identity cache once returned the previous design's)
+    validated, _ = RARE_IMPACT.validate(REFERENCE_DESIGN)
+    buf = np.array([5e4, 6e4])
+    x = {**validated, "power_spring_rate": buf}
+    ctx = RunContext(rung="closed_form", outputs=frozenset(OUTPUTS), tolerance=1e-2)
+    estimate = RARE_IMPACT.rungs[0].estimate
+    assert RARE_IMPACT.vectorized is not None
+    estimate(x)
+    first = np.asarray(RARE_IMPACT.vectorized(x, ctx).values["release_speed"])
+    assert first[0] == pytest.approx(243.96474431890402, rel=1e-12)
+    buf[:] = 8e4
+    estimate(x)
+    again = np.asarray(RARE_IMPACT.vectorized(x, ctx).values["release_speed"])
+    # symmetric V, κ = 1/2: ω² = [c1(λ1 + h1) + c2(λ2 + h1) + (m1 + m2 + n·mp/2)·g]/(n·mp·κ·r)
+    # = (8e4·0.007 + 2000·0.013 + 0.35·9.80665)/(6·0.05·0.5·0.0425) = 589.4323275/0.006375
+    hand = math.sqrt((560.0 + 26.0 + 0.35 * 9.80665) / 0.006375)
+    assert again.tolist() == pytest.approx([hand, hand], rel=1e-12)
+    assert hand == pytest.approx(304.0723, abs=1e-4)
