@@ -36,7 +36,7 @@ from ..blow import (
 )
 from ..errors import EngineError, InputOutOfRange
 from ..joint import clamped_compliance as vdi_clamped_compliance
-from ..rare_impact import liftoff_speed, release_speed
+from ..rare_impact_cycle import _geo, _inertia_at, release_radius_of, release_speed_of
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
 from ._common import DEG, RPM, count, friction_coefficient, length, positive, quantity
 from .clutch import BALL_CLUTCH
@@ -48,6 +48,7 @@ from .preload import (
     torque_coefficients_raw,
 )
 from .rare_impact import RARE_IMPACT
+from .rare_impact import REFERENCE_DESIGN as _STRIKER_DEFAULTS
 
 _SIMULATION_ERROR = 1e-6
 SOURCES = ("energy", "nutrunner", "rare_impact", "clutch")
@@ -86,7 +87,14 @@ _RI_NAMES = (
     "auxiliary_spring_rate",
     "auxiliary_spring_preload",
     "release_travel",
+    "roller_geometry",
+    "half_coupling_mass",
+    "stepped_shaft_mass",
+    "gravity",
 )
+#: Borrowed inputs that keep the tool model's default here (what the striker's release
+#: speed reads beyond its springs and rollers; the nut-runner's material).
+_KEEP_DEFAULT = frozenset(("shear_modulus", "half_coupling_mass", "stepped_shaft_mass", "gravity"))
 _CL_NAMES = (
     "ball_circle_diameter",
     "groove_angle",
@@ -102,7 +110,7 @@ def _borrow(spec: ModelSpec, names: tuple[str, ...], group: str) -> tuple[Param,
     out = []
     for name in names:
         p = spec.param(name)
-        keep_default = p.default if p.kind == "choice" or name == "shear_modulus" else None
+        keep_default = p.default if p.kind == "choice" or name in _KEEP_DEFAULT else None
         out.append(
             dataclasses.replace(
                 p,
@@ -450,6 +458,47 @@ def _clutch_args(x: Mapping[str, Any]) -> tuple[tuple[Any, Any, Any, Any], list[
     return (x["ball_circle_diameter"], x["groove_angle"], x["ball_count"], load), notes
 
 
+def _striker(x: Mapping[str, Any]) -> tuple[tuple[float, float, float], list[str]]:
+    r"""(ω_M, I, E) of the rare-impact source from the striker model's own closed form.
+
+    The release speed is ``impact.rare``'s (:func:`~engine.rare_impact_cycle.release_speed_of`,
+    the closed-form rung's: the chosen roller geometry, the weight of half-coupling, shaft
+    and rollers, the snap-through at lift-off); the striking inertia is the flywheel with
+    the rollers at the release radius (:func:`~engine.rare_impact_cycle.release_radius_of`),
+    the striker model's own :math:`I = I_M + n m_p r^2` (the paper's geometry: :math:`I_M`),
+    and the energy of the rotating parts at release
+
+    .. math::
+        E = \tfrac{1}{2}\,I\,\omega_M^2
+
+    [002, after eq. 4]. The striker's inputs blow.joint does not borrow take their
+    defaults in ``impact.rare``. Raises InfeasibleDesign where the striker model refuses
+    the design (preloads that do not hold the half-coupling on its stop).
+
+    >>> (w, i, e), _ = _striker(RARE_IMPACT_M16)  # 6 rollers of 50 g at r = 42.5 mm
+    >>> round(w, 2), round(i, 9), round(e, 2)  # I = 1e-3 + 0.3·0.0425²; ½·I·243.96²
+    (243.96, 0.001541875, 45.89)
+    """
+    design = {**_STRIKER_DEFAULTS, **{n: x[n] for n in _RI_NAMES}}
+    w_m = float(release_speed_of(design))
+    r = float(release_radius_of(design))
+    inertia = float(_inertia_at(design, _geo(design), r))
+    energy = 0.5 * inertia * w_m * w_m
+    geometry = design["roller_geometry"]
+    note = (
+        f"rare-impact: one blow per release at impact.rare's closed-form release speed "
+        f"ω_M = {w_m / RPM:.0f} rpm ({geometry} roller geometry, g = {design['gravity']:g} "
+        f"m/s²) [002, after eq. 4]; the flywheel "
+        + (
+            "alone (the paper's geometry)"
+            if geometry == "paper"
+            else f"with the rollers at r = {r * 1e3:.4g} mm"
+        )
+        + f", I = {inertia:.4g} kg·m², carries E = ½·I·ω_M² = {energy:.4g} J"
+    )
+    return (w_m, inertia, energy), [note]
+
+
 def _tool(x: Mapping[str, Any]) -> _Tool:
     src = x["source"]
     notes: list[str] = []
@@ -480,24 +529,9 @@ def _tool(x: Mapping[str, Any]) -> _Tool:
         )
     elif src == "rare_impact":
         _need(x, (*_RI_NAMES, "tool_stiffness"), "with source 'rare_impact'")
-        c1, lam1 = x["power_spring_rate"], x["power_spring_preload"]
-        c2, lam2 = x["auxiliary_spring_rate"], x["auxiliary_spring_preload"]
-        mp, n_r, x0, alpha = (
-            x["roller_mass"],
-            x["roller_count"],
-            x["roller_radius"],
-            x["cone_angle"],
-        )
-        w_m = float(release_speed(c1, lam1, c2, lam2, x["release_travel"], mp, n_r, x0, alpha))
-        w_0 = float(liftoff_speed(c1, lam1, c2, lam2, mp, n_r, x0, alpha))
-        w_m = max(w_m, w_0)
-        j = float(x["flywheel_inertia"])
-        e = 0.5 * j * w_m * w_m
+        (_, j, e), striker_notes = _striker(x)
         c = float(x["tool_stiffness"])
-        notes.append(
-            f"rare-impact: one blow per release, flywheel at ω_M = {w_m / RPM:.0f} rpm "
-            f"[002, after eq. 4], E = ½·I·ω_M² = {e:.4g} J"
-        )
+        notes += striker_notes
     else:
         raise AssertionError(src)
     eta = float(x["blow_efficiency"])
@@ -1048,19 +1082,8 @@ def _tool_array(x: Mapping[str, Any]) -> tuple[Any, Any, Any, Any, Any]:
         fails = (w5 * w5 == 0.0) | (c7 + c8 == 0.0)
     elif src == "rare_impact":
         _need(x, (*_RI_NAMES, "tool_stiffness"), "with source 'rare_impact'")
-        c1, lam1 = x["power_spring_rate"], x["power_spring_preload"]
-        c2, lam2 = x["auxiliary_spring_rate"], x["auxiliary_spring_preload"]
-        mp, n_r, x0, alpha = (
-            x["roller_mass"],
-            x["roller_count"],
-            x["roller_radius"],
-            x["cone_angle"],
-        )
-        w_m = release_speed(c1, lam1, c2, lam2, x["release_travel"], mp, n_r, x0, alpha)
-        w_0 = liftoff_speed(c1, lam1, c2, lam2, mp, n_r, x0, alpha)
-        w_m = np.where(w_0 > w_m, w_0, w_m)
-        j = x["flywheel_inertia"]
-        e = 0.5 * j * w_m * w_m
+        got, fails, _ = _per_group(x, _RI_NAMES, _striker, 3)
+        j, e = got[1], got[2]
         c = x["tool_stiffness"]
     else:
         raise AssertionError(src)
