@@ -36,7 +36,7 @@ from ..blow import (
 )
 from ..errors import EngineError, InputOutOfRange
 from ..joint import clamped_compliance as vdi_clamped_compliance
-from ..rare_impact import liftoff_speed, release_speed
+from ..rare_impact_cycle import _inertia_array, _Stage1, release_speed_of
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
 from ._common import DEG, RPM, count, friction_coefficient, length, positive, quantity
 from .clutch import BALL_CLUTCH
@@ -48,6 +48,7 @@ from .preload import (
     torque_coefficients_raw,
 )
 from .rare_impact import RARE_IMPACT
+from .rare_impact import REFERENCE_DESIGN as _STRIKER_DEFAULTS
 
 _SIMULATION_ERROR = 1e-6
 SOURCES = ("energy", "nutrunner", "rare_impact", "clutch")
@@ -86,7 +87,14 @@ _RI_NAMES = (
     "auxiliary_spring_rate",
     "auxiliary_spring_preload",
     "release_travel",
+    "roller_geometry",
+    "half_coupling_mass",
+    "stepped_shaft_mass",
+    "gravity",
 )
+#: Borrowed inputs that keep the tool model's default here (what the striker's release
+#: speed reads beyond its springs and rollers; the nut-runner's material).
+_KEEP_DEFAULT = frozenset(("shear_modulus", "half_coupling_mass", "stepped_shaft_mass", "gravity"))
 _CL_NAMES = (
     "ball_circle_diameter",
     "groove_angle",
@@ -102,7 +110,7 @@ def _borrow(spec: ModelSpec, names: tuple[str, ...], group: str) -> tuple[Param,
     out = []
     for name in names:
         p = spec.param(name)
-        keep_default = p.default if p.kind == "choice" or name == "shear_modulus" else None
+        keep_default = p.default if p.kind == "choice" or name in _KEEP_DEFAULT else None
         out.append(
             dataclasses.replace(
                 p,
@@ -450,6 +458,65 @@ def _clutch_args(x: Mapping[str, Any]) -> tuple[tuple[Any, Any, Any, Any], list[
     return (x["ball_circle_diameter"], x["groove_angle"], x["ball_count"], load), notes
 
 
+@dataclasses.dataclass
+class _Striker:
+    """The rare-impact source's striker at release (floats or arrays, one design each)."""
+
+    speed: Any  # ω_M [rad/s]
+    radius: Any  # r, the rollers' centre radius [m]
+    inertia: Any  # I of the rotating parts [kg·m²]
+    energy: Any  # ½·I·ω_M² [J]
+    refused: Any  # where impact.rare refuses the design
+    design: dict[str, Any]  # impact.rare's inputs
+
+
+def _striker(x: Mapping[str, Any]) -> _Striker:
+    r"""The rare-impact source's striker at release, from the striker model's own closed form.
+
+    The release speed :math:`\omega_M` and radius :math:`r` are stage 1 of ``impact.rare``'s
+    closed-form rung (``engine.rare_impact_cycle``: the chosen roller geometry, the weight
+    of half-coupling, shaft and rollers, the snap-through at lift-off); the striking
+    inertia is the striker model's flywheel with the rollers at :math:`r`,
+    :math:`I = I_M + n m_p r^2` (the paper's geometry: :math:`I_M`), and the energy of the
+    rotating parts at release is
+
+    .. math::
+        E = \tfrac{1}{2}\,I\,\omega_M^2
+
+    [002, after eq. 4]. Inputs may be floats or arrays; the striker's inputs blow.joint
+    does not borrow take their defaults in ``impact.rare``. ``refused`` marks the designs
+    the striker model refuses (preloads that do not hold the half-coupling on its stop).
+
+    >>> s = _striker(RARE_IMPACT_M16)  # 6 rollers of 50 g at r = 42.5 mm
+    >>> round(float(s.speed), 2), round(float(s.inertia), 9)  # I = 1e-3 + 0.3·0.0425²
+    (243.96, 0.001541875)
+    >>> round(float(s.energy), 2)  # ½·1.541875e-3·243.96²
+    45.89
+    """
+    design = {**_STRIKER_DEFAULTS, **{n: x[n] for n in _RI_NAMES}}
+    with np.errstate(all="ignore"):
+        stage1 = _Stage1(design)
+        inertia = _inertia_array(design, stage1.g, stage1.r)
+        w_m = stage1.w_m
+        return _Striker(w_m, stage1.r, inertia, 0.5 * inertia * w_m * w_m, stage1.refused, design)
+
+
+def _striker_note(s: _Striker) -> str:
+    """What the rare-impact source took from the striker model (one design)."""
+    geometry = s.design["roller_geometry"]
+    return (
+        f"rare-impact: one blow per release at impact.rare's closed-form release speed "
+        f"ω_M = {float(s.speed) / RPM:.0f} rpm ({geometry} roller geometry, "
+        f"g = {s.design['gravity']:g} m/s²) [002, after eq. 4]; the flywheel "
+        + (
+            "alone (the paper's geometry)"
+            if geometry == "paper"
+            else f"with the rollers at r = {float(s.radius) * 1e3:.4g} mm"
+        )
+        + f", I = {float(s.inertia):.4g} kg·m², carries E = ½·I·ω_M² = {float(s.energy):.4g} J"
+    )
+
+
 def _tool(x: Mapping[str, Any]) -> _Tool:
     src = x["source"]
     notes: list[str] = []
@@ -480,24 +547,12 @@ def _tool(x: Mapping[str, Any]) -> _Tool:
         )
     elif src == "rare_impact":
         _need(x, (*_RI_NAMES, "tool_stiffness"), "with source 'rare_impact'")
-        c1, lam1 = x["power_spring_rate"], x["power_spring_preload"]
-        c2, lam2 = x["auxiliary_spring_rate"], x["auxiliary_spring_preload"]
-        mp, n_r, x0, alpha = (
-            x["roller_mass"],
-            x["roller_count"],
-            x["roller_radius"],
-            x["cone_angle"],
-        )
-        w_m = float(release_speed(c1, lam1, c2, lam2, x["release_travel"], mp, n_r, x0, alpha))
-        w_0 = float(liftoff_speed(c1, lam1, c2, lam2, mp, n_r, x0, alpha))
-        w_m = max(w_m, w_0)
-        j = float(x["flywheel_inertia"])
-        e = 0.5 * j * w_m * w_m
+        striker = _striker(x)
+        if bool(striker.refused):
+            release_speed_of(striker.design)  # raises the striker model's reason
+        j, e = float(striker.inertia), float(striker.energy)
         c = float(x["tool_stiffness"])
-        notes.append(
-            f"rare-impact: one blow per release, flywheel at ω_M = {w_m / RPM:.0f} rpm "
-            f"[002, after eq. 4], E = ½·I·ω_M² = {e:.4g} J"
-        )
+        notes.append(_striker_note(striker))
     else:
         raise AssertionError(src)
     eta = float(x["blow_efficiency"])
@@ -624,12 +679,19 @@ def _setup(x: Mapping[str, Any]) -> tuple[_Tool, float, float, BlowProblem, Any]
 _PEAK_OUTPUTS = ("peak_torque", "peak_per_blow")
 
 
-def _energy_errors(x: Mapping[str, Any]) -> tuple[float, float] | None:
-    """(error of the joint torques, error of the peak torques) of the energy rung."""
+_Setup = tuple[_Tool, float, float, BlowProblem, Any]
+
+
+def _energy_errors(x: Mapping[str, Any], setup: _Setup | None = None) -> tuple[float, float] | None:
+    """(error of the joint torques, error of the peak torques) of the energy rung.
+
+    ``setup`` is this call's :func:`_setup` where the caller has it (worked out here
+    otherwise).
+    """
     if x["source"] == "clutch":
         return None
     try:
-        _, k, t0, p, _ = _setup(x)
+        _, k, t0, p, _ = _setup(x) if setup is None else setup
         if k <= 0.0:
             return None
         after = energy_blow_error(p.tool_inertia, p.struck_inertia, p.stiffness, k, p.restitution)
@@ -641,25 +703,26 @@ def _energy_errors(x: Mapping[str, Any]) -> tuple[float, float] | None:
 
 def _energy_estimate(x: Mapping[str, Any]) -> Any:
     if _is_array(x):
-        arrays = _energy_errors_array(x)
-        if arrays is None:
+        if x["source"] == "clutch":
             return None
-        after, peak = arrays
+        after, peak = _energy_errors_array(x, _setup_array_or_none(x))
         return np.where(peak > after, peak, after)  # max(after, peak) as the scalar code
     errors = _energy_errors(x)
     return None if errors is None else max(errors)
 
 
-def _rigid_estimate(x: Mapping[str, Any]) -> Any:
+def _rigid_estimate(x: Mapping[str, Any], setup: _Setup | None = None) -> Any:
     if x["source"] == "clutch":
         return None
     if _is_array(x):
-        return _rigid_estimate_array(x)
+        return _rigid_estimate_array(x, _setup_array_or_none(x))
     try:
-        _, k, t0, p, _ = _setup(x)
-        base = _energy_estimate(x)
-        if base is None:
+        setup = _setup(x) if setup is None else setup
+        _, k, t0, p, _ = setup
+        errors = _energy_errors(x, setup)
+        if errors is None:
             return None
+        base = max(errors)
         after = energy_blow(p.energy, p.stiffness, k, t0, p.breakaway, p.drive_torque)[1]
         rigid = rigid_blow_torque(p.energy, p.stiffness) + p.drive_torque
         return abs(rigid - after) / after + base
@@ -680,13 +743,15 @@ def _simulation_estimate(x: Mapping[str, Any]) -> Any:
     return _SIMULATION_ERROR if x["restitution"] >= 1.0 else _DAMPED_SIMULATION_ERROR
 
 
-def _rigid_estimate_array(x: Mapping[str, Any]) -> Any:
-    """:func:`_rigid_estimate` at many points (NaN where the scalar form gives None)."""
-    base = _energy_estimate(x)
-    try:
-        s = _setup_array(x)
-    except EngineError:
+def _rigid_estimate_array(x: Mapping[str, Any], s: _ArraySetup | None) -> Any:
+    """:func:`_rigid_estimate` at many points (NaN where the scalar form gives None).
+
+    ``s``: this call's :func:`_setup_array` (None where it refuses the request).
+    """
+    if s is None:
         return np.full(_points(x), np.nan)
+    after_err, peak_err = _energy_errors_array(x, s)
+    base = np.where(peak_err > after_err, peak_err, after_err)
     with np.errstate(all="ignore"):
         k = np.asarray(s.rate, dtype=float)
         kk = np.where(k > 0.0, k, 1.0)
@@ -942,9 +1007,9 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "(M does not follow from an energy balance with the joint); see 'energy' and "
             "'simulation'"
         )
-        error = _rigid_estimate(x)
+        error = _rigid_estimate(x, (tool, k, t0, p, thread))
     elif ctx.rung == "energy":
-        errors = _energy_errors(x)
+        errors = _energy_errors(x, (tool, k, t0, p, thread))
         error = None if errors is None else errors[1 if ctx.wants(*_PEAK_OUTPUTS) else 0]
         notes.append(
             "energy: E + N·φ_t = T_p²/(2C) + (T_p² − T_0²)/(2k_j) per blow, struck inertia and "
@@ -1048,19 +1113,8 @@ def _tool_array(x: Mapping[str, Any]) -> tuple[Any, Any, Any, Any, Any]:
         fails = (w5 * w5 == 0.0) | (c7 + c8 == 0.0)
     elif src == "rare_impact":
         _need(x, (*_RI_NAMES, "tool_stiffness"), "with source 'rare_impact'")
-        c1, lam1 = x["power_spring_rate"], x["power_spring_preload"]
-        c2, lam2 = x["auxiliary_spring_rate"], x["auxiliary_spring_preload"]
-        mp, n_r, x0, alpha = (
-            x["roller_mass"],
-            x["roller_count"],
-            x["roller_radius"],
-            x["cone_angle"],
-        )
-        w_m = release_speed(c1, lam1, c2, lam2, x["release_travel"], mp, n_r, x0, alpha)
-        w_0 = liftoff_speed(c1, lam1, c2, lam2, mp, n_r, x0, alpha)
-        w_m = np.where(w_0 > w_m, w_0, w_m)
-        j = x["flywheel_inertia"]
-        e = 0.5 * j * w_m * w_m
+        striker = _striker(x)
+        j, e, fails = striker.inertia, striker.energy, striker.refused
         c = x["tool_stiffness"]
     else:
         raise AssertionError(src)
@@ -1138,30 +1192,12 @@ class _ArraySetup:
     notes: list[str]
 
 
-#: The last :func:`_setup_array`: (the inputs' values, pinned, and the setup). A sweep asks
-#: the rungs' estimates and then the array path on the same inputs (the same dict of the
-#: same arrays): the bolt is resolved once for all three. A hit needs every value to be
-#: the *same object*; nothing mutates a sweep's arrays in place.
-_LAST_SETUP: tuple[tuple[Any, ...], _ArraySetup] | None = None
-
-
 def _setup_array(x: Mapping[str, Any]) -> _ArraySetup:
-    """:func:`_setup` (and :func:`_target`, :func:`_rate`) at many points."""
-    global _LAST_SETUP
-    key = tuple(x.items())
-    last = _LAST_SETUP
-    if (
-        last is not None
-        and len(last[0]) == len(key)
-        and all(a[0] == b[0] and a[1] is b[1] for a, b in zip(last[0], key, strict=True))
-    ):
-        return last[1]
-    setup = _setup_array_uncached(x)
-    _LAST_SETUP = (key, setup)
-    return setup
+    """:func:`_setup` (and :func:`_target`, :func:`_rate`) at many points.
 
-
-def _setup_array_uncached(x: Mapping[str, Any]) -> _ArraySetup:
+    Worked out once per call of an estimate or of the array path, from the values the
+    inputs hold now (no cache: a caller may refill its arrays in place).
+    """
     e_tool, j, c, drive, fails = _tool_array(x)
     names = _THREAD_INPUTS + (_JOINT_INPUTS if x["joint_rate_from"] == "joint" else ())
     got, refused, notes = _per_group(x, names, _thread_and_joint, 2)
@@ -1192,13 +1228,20 @@ def _setup_array_uncached(x: Mapping[str, Any]) -> _ArraySetup:
     return _ArraySetup(energy, j, c, drive, speed, k, per, target, refused, notes)
 
 
-def _energy_errors_array(x: Mapping[str, Any]) -> tuple[Any, Any] | None:
-    """:func:`_energy_errors` at many points (NaN where the scalar form gives None)."""
-    if x["source"] == "clutch":
-        return None
+def _setup_array_or_none(x: Mapping[str, Any]) -> _ArraySetup | None:
+    """:func:`_setup_array`, or None where it refuses the whole request (an estimate's None)."""
     try:
-        s = _setup_array(x)
+        return _setup_array(x)
     except EngineError:
+        return None
+
+
+def _energy_errors_array(x: Mapping[str, Any], s: _ArraySetup | None) -> tuple[Any, Any]:
+    """:func:`_energy_errors` at many points (NaN where the scalar form gives None).
+
+    ``s``: this call's :func:`_setup_array` (None where it refuses the request).
+    """
+    if s is None:
         nan = np.full(_points(x), np.nan)
         return nan, nan
     with np.errstate(all="ignore"):
