@@ -957,7 +957,11 @@ def rim_rise(ball_diameter: FloatArray, groove_angle: FloatArray) -> FloatArray:
 
 
 def lift_points(
-    ball_lift: FloatArray, ball_diameter: FloatArray, groove_angle: FloatArray, points: int = 41
+    ball_lift: FloatArray,
+    ball_diameter: FloatArray,
+    groove_angle: FloatArray,
+    points: int = 41,
+    from_rim: bool = False,
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     r"""Lifts from seated to riding on the face, and the contact angle at each.
 
@@ -975,6 +979,8 @@ def lift_points(
         α of the driven groove, [rad]
     points : int, optional
         Points on the flank and as many over the rim, [-]
+    from_rim : bool, optional
+        Only the points from the flank's end (z = h) on, [-]
 
     Returns
     -------
@@ -997,6 +1003,8 @@ def lift_points(
     [0.0, 2.0, 4.0, 5.0839, 5.4645]
     >>> lift_points([0.004, 0.002], 0.01, math.radians(45.0), 3)[0].shape
     (2, 5)
+    >>> [round(float(v) * 1e3, 4) for v in lift_points(0.004, 0.01, math.radians(45.0), 3, True)[0]]
+    [4.0, 5.0839, 5.4645]
     """
     h, d, a = np.broadcast_arrays(
         np.asarray(ball_lift, float),
@@ -1006,9 +1014,10 @@ def lift_points(
     h, r, a = h[..., None], d[..., None] / 2.0, a[..., None]
     u = np.linspace(0.0, 1.0, points)
     beta_rim = a + u[1:] * (math.pi / 2.0 - a)
-    lift = np.concatenate([u * h, h + r * (np.sin(beta_rim) - np.sin(a))], axis=-1)
-    angle = np.concatenate([np.broadcast_to(a, (*a.shape[:-1], points)), beta_rim], axis=-1)
-    return lift, angle
+    flank = u[-1:] if from_rim else u
+    lift = np.concatenate([flank * h, h + r * (np.sin(beta_rim) - np.sin(a))], axis=-1)
+    seated = np.broadcast_to(a, (*a.shape[:-1], flank.size))
+    return lift, np.concatenate([seated, beta_rim], axis=-1)
 
 
 def torque_against_lift(

@@ -466,12 +466,13 @@ def characteristic(
     """
     flat_spring = spring
     preload = np.asarray(x["spring_deflection"] if deflection is None else deflection, float)
-    lift, beta = lift_points(lift_of(x, deflection), x["ball_diameter"], x["groove_angle"], POINTS)
     # A helical spring's force rises with the lift and the flank's push is constant, so
     # on the flank the torque rises to the rim: the grid's peak and maxima lie from the
     # rim on. Without the curves, only those points are evaluated (the same floats).
     first = POINTS - 1 if spring.kind == "helical" and not curves else 0
-    lift, beta = lift[..., first:], beta[..., first:]
+    lift, beta = lift_points(
+        lift_of(x, deflection), x["ball_diameter"], x["groove_angle"], POINTS, first > 0
+    )
     # a swept input (an array) gets a trailing axis so it broadcasts against the lift
     x = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
     spring = Spring(x)
@@ -667,32 +668,26 @@ def verdicts(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> dict
     The one place they compare numbers: :func:`checks` words them for a single run,
     the array path reports them per point.
     """
-    out: dict[str, Any] = {
-        "self_locking": np.asarray(v["self_locking_margin"]) >= SELF_LOCKING_MARGIN
-    }
+    out: dict[str, Any] = {"self_locking": v["self_locking_margin"] >= SELF_LOCKING_MARGIN}
     allow = spring.permissible()
     if allow is not None:
-        out["spring_stress_max"] = np.asarray(v["spring_stress_max"]) <= np.asarray(allow)
-    travel = np.asarray(x["spring_deflection"]) + np.asarray(v["total_lift"])
+        out["spring_stress_max"] = v["spring_stress_max"] <= allow
+    travel = x["spring_deflection"] + v["total_lift"]
     if spring.kind == "disc":
-        m = np.asarray(x["disc_series"])
-        out["disc_not_past_flat"] = travel / m <= np.asarray(x["disc_cone_height"])
+        m = x["disc_series"]
+        out["disc_not_past_flat"] = travel / m <= x["disc_cone_height"]
         s_max = sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])[0]
         # NaN (no force maximum) compares False: the torque never falls
-        out["falling_curve"] = (
-            np.asarray(x["spring_deflection"]) / m + np.asarray(v["total_lift"]) / m > s_max
-        )
+        out["falling_curve"] = x["spring_deflection"] / m + v["total_lift"] / m > s_max
     elif x["spring_free_length"] is not None:
         d, dm, n = x["spring_wire_diameter"], x["spring_mean_diameter"], x["spring_active_coils"]
-        need = np.asarray(sp.solid_length(d, n) + sp.minimum_gap_sum(d, dm, n))
-        out["solid_length"] = np.asarray(x["spring_free_length"]) - travel >= need
+        need = sp.solid_length(d, n) + sp.minimum_gap_sum(d, dm, n)
+        out["solid_length"] = x["spring_free_length"] - travel >= need
         # a spring that cannot buckle has no buckling deflection (None, or NaN on arrays)
-        s_k = np.asarray(v.get("buckling_deflection"), dtype=float)
-        out["buckling"] = travel < np.where(np.isnan(s_k), np.inf, s_k)
+        s_k = v.get("buckling_deflection")
+        out["buckling"] = True if s_k is None else travel < np.where(np.isnan(s_k), np.inf, s_k)
     if x["face_friction"] is not None:
-        out["residual_torque"] = np.asarray(v["residual_torque"]) <= RESIDUAL_SHARE * (
-            np.asarray(v["peak_torque"])
-        )
+        out["residual_torque"] = v["residual_torque"] <= RESIDUAL_SHARE * v["peak_torque"]
     return out
 
 
@@ -1336,17 +1331,16 @@ class SettingGrid:
 
     def __init__(self, x: Mapping[str, Any]) -> None:
         given = x["ball_lift"] is not None
-        lift, beta = lift_points(
-            x["ball_lift"] if given else 0.0, x["ball_diameter"], x["groove_angle"], POINTS
-        )
         # from the rim on (the flank's lines lie below the rim's): q_k, the lift at δ = 0
-        self.q = lift[..., POINTS - 1 :]
+        self.q, beta = lift_points(
+            x["ball_lift"] if given else 0.0, x["ball_diameter"], x["groove_angle"], POINTS, True
+        )
         self.share = 1.0 if given else 0.5  # 1/(1 + p)
         xs = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
         gain = np.asarray(
             torque_against_lift(
                 1.0,
-                beta[..., POINTS - 1 :],
+                beta,
                 xs["ball_circle_diameter"],
                 xs["flank_friction"],
                 xs["driving_groove_angle"],

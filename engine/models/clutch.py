@@ -570,18 +570,16 @@ def _ball_verdicts(
     lo, hi = WORKABLE_SPRING_INDEX
     out: dict[str, Any] = {}
     if spring.kind == "helical":
-        index = np.asarray(v["spring_index"])
+        index = v["spring_index"]
         out["spring_index"] = (lo <= index) & (index <= hi)
         if x["allowable_shear_stress"] is not None:
-            out["spring_shear_stress"] = (
-                np.asarray(v["spring_shear_stress"]) <= x["allowable_shear_stress"]
-            )
-    out["groove_depth"] = np.asarray(asbuilt.lift_of(x)) <= np.asarray(x["ball_diameter"]) / 2.0
+            out["spring_shear_stress"] = v["spring_shear_stress"] <= x["allowable_shear_stress"]
+    out["groove_depth"] = asbuilt.lift_of(x) <= x["ball_diameter"] / 2.0
     a_lo, a_hi = RECOMMENDED_GROOVE_ANGLE
-    alpha = np.asarray(x["groove_angle"])
+    alpha = x["groove_angle"]
     out["groove_angle"] = (a_lo <= alpha) & (alpha <= a_hi)
     if x["torque"] is not None:
-        out["torque_below_limit"] = np.asarray(x["torque"]) <= np.asarray(v["torque_limit"])
+        out["torque_below_limit"] = x["torque"] <= v["torque_limit"]
     out.update(asbuilt.verdicts(x, spring, v))
     return out
 
