@@ -408,6 +408,21 @@ class Spring:
         return x["allowable_shear_stress"]
 
 
+def refused(x: Mapping[str, Any]) -> dict[str, Any]:
+    """Where the spring's numbers are refused, by the field named: True there (floats or
+    arrays). A missing input is refused by :func:`require_spring` alone (it is the same
+    at every point of a study)."""
+    if x["spring_type"] == "disc":
+        if x["disc_inner_diameter"] is None or x["disc_outer_diameter"] is None:
+            return {}
+        # a ring that narrow is not a disc spring (Almen–László loses all precision)
+        return {"disc_inner_diameter": x["disc_inner_diameter"] * 1.05 >= x["disc_outer_diameter"]}
+    wire = x["spring_wire_diameter"]
+    if wire is None or x["spring_material"] == "custom" or np.ndim(wire) == 0:
+        return {}  # one wire: tensile_strength refuses it with the table's range
+    return {"spring_wire_diameter_table": np.isnan(sp.tensile_strength(x["spring_material"], wire))}
+
+
 def require_spring(x: Mapping[str, Any], *, wire_needed: bool) -> None:
     """Refuse a spring description that is incomplete or impossible (scalar inputs)."""
     if x["spring_type"] == "disc":
@@ -418,7 +433,7 @@ def require_spring(x: Mapping[str, Any], *, wire_needed: bool) -> None:
             raise InputOutOfRange(
                 "spring_type = disc needs disc_cone_height", field="disc_cone_height"
             )
-        if x["disc_inner_diameter"] * 1.05 >= x["disc_outer_diameter"]:
+        if refused(x)["disc_inner_diameter"]:
             raise InputOutOfRange(
                 f"disc_inner_diameter = {x['disc_inner_diameter'] * 1e3:g} mm is not below "
                 f"disc_outer_diameter / 1.05 = {x['disc_outer_diameter'] / 1.05 * 1e3:.4g} mm: "

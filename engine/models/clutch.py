@@ -14,7 +14,6 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from .. import springs as sp
 from ..clutch import (
     ARRANGEMENTS,
     RECOMMENDED_GROOVE_ANGLE,
@@ -221,18 +220,52 @@ _RUNG = Rung(
 )
 
 
+def _refused(x: Mapping[str, Any], wire: Any) -> dict[str, Any]:
+    """Where the physics refuses a design, by reason: True where refused (floats or arrays).
+
+    The one statement of each condition: a single run raises on it, naming the field
+    (:func:`_require_workable`, :func:`asbuilt.require_spring`); the array paths mask
+    those points and say how many each reason took (:func:`_refusal_notes`).
+    """
+    out: dict[str, Any] = {"groove_angle": x["groove_angle"] <= np.arctan(x["flank_friction"])}
+    if wire is not None:
+        out["spring_wire_diameter"] = wire >= x["spring_mean_diameter"]
+    out.update(asbuilt.refused(x))
+    return out
+
+
+#: What each refusal of :func:`_refused` means, by the field it names.
+_REFUSALS = {
+    "groove_angle": "the balls wedge: groove_angle is not above atan(flank_friction)",
+    "spring_wire_diameter": "no coil: spring_wire_diameter is not below spring_mean_diameter",
+    "spring_wire_diameter_table": "spring_wire_diameter is outside the spring_material's table",
+    "disc_inner_diameter": "disc_inner_diameter is not below disc_outer_diameter / 1.05",
+}
+
+
+def _refusal_notes(refused: Mapping[str, Any], n: int) -> list[str]:
+    """One note per reason that refuses some of the ``n`` points of an array path."""
+    notes = []
+    for reason, where in refused.items():
+        count = int(np.count_nonzero(where)) if np.ndim(where) else n * bool(where)
+        if count:
+            notes.append(f"{count} of {n} points refused: {_REFUSALS[reason]}")
+    return notes
+
+
 def _require_workable(x: Mapping[str, Any], wire: float | None) -> None:
-    """Cross-field refusals shared by both specs (scalar inputs only)."""
+    """Cross-field refusals shared by both specs (scalar inputs), on :func:`_refused`."""
     alpha, f = x["groove_angle"], x["flank_friction"]
-    rho = math.atan(f)
-    if alpha <= rho:
+    refused = _refused(x, wire)
+    if refused["groove_angle"]:
+        rho = math.atan(f)
         raise InfeasibleDesign(
             f"the clutch never slips: the flank angle α = {alpha / DEG:.3g}° is not above the "
             f"friction angle atan f = {rho / DEG:.3g}°, so the balls wedge in the grooves at "
             "any torque; make the flanks flatter (larger α) or reduce the flank friction",
             field="groove_angle",
         )
-    if wire is not None and wire >= x["spring_mean_diameter"]:
+    if wire is not None and refused["spring_wire_diameter"]:
         raise InputOutOfRange(
             f"spring_wire_diameter = {wire * 1e3:g} mm is not below the spring's mean coil "
             f"diameter D = {x['spring_mean_diameter'] * 1e3:g} mm: such a coil cannot exist "
@@ -501,28 +534,14 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
 
 
-def _feasible_mask(x: Mapping[str, Any], wire: Any) -> npt.NDArray[np.bool_]:
-    """Where the scalar compute would not refuse (the slip and coil conditions)."""
-    ok = np.asarray(x["groove_angle"]) > np.arctan(x["flank_friction"])
-    if wire is not None:
-        ok = ok & (np.asarray(wire) < np.asarray(x["spring_mean_diameter"]))
-    return np.asarray(ok, dtype=bool)
-
-
-def _spring_mask(x: Mapping[str, Any], wire: Any) -> npt.NDArray[np.bool_]:
-    """Where :func:`asbuilt.require_spring` would not refuse the spring's numbers.
-
-    Its other refusals (a missing input) are the same at every point of a study: the
-    array paths leave those to the scalar compute.
-    """
-    if x["spring_type"] == "disc":
-        return np.asarray(
-            np.asarray(x["disc_inner_diameter"]) * 1.05 < np.asarray(x["disc_outer_diameter"])
-        )
-    if wire is not None and x["spring_material"] != "custom":
-        inside = np.isfinite(sp.tensile_strength(x["spring_material"], np.atleast_1d(wire)))
-        return np.asarray(inside, dtype=bool)
-    return np.asarray(True)
+def _feasible(x: Mapping[str, Any], wire: Any) -> tuple[npt.NDArray[np.bool_], list[str]]:
+    """Where a single run would not refuse the point, and notes on the points it would."""
+    refused = _refused(x, wire)
+    ok = np.asarray(True)
+    for where in refused.values():
+        ok = ok & ~np.asarray(where, dtype=bool)
+    n = _array_inputs(x) or 1
+    return ok, _refusal_notes(refused, n)
 
 
 def _masked(values: Mapping[str, Any], ok: npt.NDArray[np.bool_]) -> dict[str, Any]:
@@ -603,7 +622,7 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
         return Result(values={}, rung=ctx.rung, error_estimate=None)
     wire = x["spring_wire_diameter"] if helical else None
     with np.errstate(all="ignore"):
-        ok = _feasible_mask(x, wire) & _spring_mask(x, wire)
+        ok, refusals = _feasible(x, wire)
         # the 81-point characteristic only where an output or a check needs its peak
         peak = not helical or x["face_friction"] is not None or ctx.wants(*asbuilt.PEAK_OUTPUTS)
         values = _chunked_forward(x, peak)
@@ -614,7 +633,10 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
         values=_with_absent(values, BALL_CLUTCH.outputs, () if peak else asbuilt.PEAK_OUTPUTS),
         rung=ctx.rung,
         error_estimate=None,
-        notes=[f"spring_arrangement = {x['spring_arrangement']}; see a single run's notes"],
+        notes=[
+            f"spring_arrangement = {x['spring_arrangement']}; see a single run's notes",
+            *refusals,
+        ],
         check_arrays=check_arrays,
     )
 
@@ -1018,7 +1040,7 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
             if not drive:
                 return Result(values={}, rung=ctx.rung, error_estimate=None)
             x = {**x, "target_torque": drive["required_slip_torque"]}
-        ok = _feasible_mask(x, wire) & _spring_mask(x, wire)
+        ok, refusals = _feasible(x, wire)
         v: dict[str, Any] = dict(_setting_values(x))
         v.update(asbuilt.setting_values(x, v["required_spring_force"])[0])
         v.update(drive)
@@ -1030,6 +1052,7 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         values=_with_absent(values, BALL_CLUTCH_SETTING.outputs),
         rung=ctx.rung,
         error_estimate=None,
+        notes=refusals,
         check_arrays=check_arrays,
     )
 
