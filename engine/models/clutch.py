@@ -28,7 +28,9 @@ from ..clutch import (
     spring_index,
     spring_rate,
     spring_shear_stress,
+    torque_against_lift,
     torque_limit,
+    torque_sharing,
     wahl_factor,
     wire_diameter_for_force,
 )
@@ -432,11 +434,14 @@ def _forward_values(
         x["spring_arrangement"],
     )
     if x["driving_groove_angle"] is not None:
-        # both flanks lift the ball: the same spring holds less torque
-        limit = (
-            np.asarray(limit)
-            * flank_push_factor(alpha, f)
-            / combined_push_factor(alpha, f, x["driving_groove_angle"])
+        # both flanks lift the ball: the same spring holds less torque, T at zero lift
+        limit = torque_against_lift(
+            force,
+            alpha,
+            x["ball_circle_diameter"],
+            f,
+            x["driving_groove_angle"],
+            torque_sharing(x["spring_arrangement"], x["ball_count"], kr),
         )
     at = limit if x["torque"] is None else x["torque"]
     tangential = ball_tangential_force(at, x["ball_circle_diameter"], x["ball_count"], kr)
