@@ -20,6 +20,7 @@ from typing import Any
 import numpy as np
 from scipy.optimize import brentq
 
+from .. import points
 from .. import springs as sp
 from ..clutch import (
     RECOMMENDED_SERVICE_FACTOR,
@@ -1050,7 +1051,7 @@ def peak_setting(
         n = delta.size if delta.ndim else 0
         delta, stress = np.array(delta, float, ndmin=1), np.array(stress, float, ndmin=1)
         for j in np.flatnonzero(~np.broadcast_to(grid.regular, delta.shape)).tolist():
-            point = _at_point(x, j) if n else dict(x)
+            point = points.at(x, n, j) if n else dict(x)
             found = solve_setting(
                 point,
                 Spring(point),
@@ -1323,13 +1324,6 @@ def sizing(x: Mapping[str, Any]) -> dict[str, Any]:
 # --------------------------------------------------------------------------
 # The setting as lines (helical springs), for one design or many
 # --------------------------------------------------------------------------
-
-
-def _at_point(x: Mapping[str, Any], j: int) -> dict[str, Any]:
-    """The scalar inputs of point ``j`` of equal-length columns."""
-    return {
-        k: (v[j].item() if isinstance(v, np.ndarray) and v.ndim == 1 else v) for k, v in x.items()
-    }
 
 
 class SettingGrid:

@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from .. import points
 from ..clutch import acceleration_torque, rated_torque, required_slip_torque
 from ..errors import InfeasibleDesign, InputOutOfRange
 from ..motor_spinup import (
@@ -616,17 +617,7 @@ def _idealisation_error(x: Mapping[str, Any]) -> Any:
     sizes = {v.size for v in x.values() if isinstance(v, np.ndarray) and v.ndim > 0}
     if sizes:
         (n,) = sizes  # equal-length columns, as engine.points hands them
-        return np.array(
-            [
-                _idealisation_error(
-                    {
-                        k: (v[j].item() if isinstance(v, np.ndarray) and v.ndim > 0 else v)
-                        for k, v in x.items()
-                    }
-                )
-                for j in range(n)
-            ]
-        )
+        return np.array([_idealisation_error(points.at(x, n, j)) for j in range(n)])
     try:
         ratio = _curve_time_ratio(x)
     except (InfeasibleDesign, InputOutOfRange):
