@@ -351,10 +351,14 @@ def _angle_check(alpha: float, ok: bool) -> Check:
     return Check("groove_angle", ok, detail)
 
 
-def _arrangement_notes(x: Mapping[str, Any], force: float, push: float) -> list[str]:
-    d0_, i, kr = x["ball_circle_diameter"], x["ball_count"], x["load_factor"]
-    common = d0_ * force / (2.0 * push)
-    per_ball = kr * i * common
+def _arrangement_notes(x: Mapping[str, Any], force: float) -> list[str]:
+    i, kr = x["ball_count"], x["load_factor"]
+    common, per_ball = (
+        torque_limit(
+            force, x["ball_circle_diameter"], x["groove_angle"], i, kr, x["flank_friction"], way
+        )
+        for way in ("common", "per_ball")
+    )
     if x["spring_arrangement"] == "common":
         first = (
             f"spring_arrangement = common: one spring presses all {i} balls through the "
@@ -474,7 +478,6 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
             k: None if val is None else float(val) for k, val in _forward_values(x).items()
         }
     alpha, f = x["groove_angle"], x["flank_friction"]
-    push = float(flank_push_factor(alpha, f))
     spring = asbuilt.Spring(x)
     passed = {k: bool(ok) for k, ok in _ball_verdicts(x, v, spring).items()}
     checks: list[Check] = []
@@ -516,7 +519,7 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
     checks += asbuilt.checks(x, spring, v, passed)
     notes = [
-        *_arrangement_notes(x, v["spring_force"], push),
+        *_arrangement_notes(x, v["spring_force"]),
         _friction_note(alpha, f),
         f"ball forces are for the most-loaded ball (K_r = {x['load_factor']:g}) {where}; "
         "F_a = F_t tan(α − ρ), F_N = F_t / (cos α + f sin α) [001, eq. 1].",
@@ -995,9 +998,8 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 + ("" if ok else ": the clutch would slip in normal work or at every start"),
             )
         )
-    push = float(flank_push_factor(alpha, f))
     notes = [
-        *_arrangement_notes(x, v["required_spring_force"], push),
+        *_arrangement_notes(x, v["required_spring_force"]),
         _friction_note(alpha, f),
         "required_deflection is the nut setting (spring compression) that gives the target "
         "torque with the given wire; required_wire_diameter gives it at the given "
