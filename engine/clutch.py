@@ -916,10 +916,9 @@ def combined_push_factor(
     >>> round(combined_push_factor(math.radians(45.0), 0.0, math.radians(45.0)), 12)
     2.0
     """
-    rho = np.arctan(flank_friction)
-    push = np.tan(np.asarray(groove_angle) - rho)
+    push = flank_push_factor(groove_angle, flank_friction)
     if driving_groove_angle is not None:
-        push = push + np.tan(np.asarray(driving_groove_angle) - rho)
+        push = push + flank_push_factor(driving_groove_angle, flank_friction)
     return _out(push)
 
 
@@ -1157,13 +1156,10 @@ def friction_sensitivity(
     2.0
     """
     rho = np.arctan(flank_friction)
-    a = np.asarray(groove_angle) - rho
-    push = np.tan(a)
-    dpush = 1.0 / np.cos(a) ** 2
+    push = combined_push_factor(groove_angle, flank_friction, driving_groove_angle)
+    dpush = 1.0 / np.cos(np.asarray(groove_angle) - rho) ** 2  # d/dρ of tan(α − ρ)
     if driving_groove_angle is not None:
-        b = np.asarray(driving_groove_angle) - rho
-        push = push + np.tan(b)
-        dpush = dpush + 1.0 / np.cos(b) ** 2
+        dpush = dpush + 1.0 / np.cos(np.asarray(driving_groove_angle) - rho) ** 2
     return _out(np.asarray(torque) / push * dpush / (1.0 + np.asarray(flank_friction) ** 2))
 
 
