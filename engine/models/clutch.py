@@ -353,12 +353,10 @@ def _angle_check(alpha: float, ok: bool) -> Check:
 
 def _arrangement_notes(x: Mapping[str, Any], force: float) -> list[str]:
     i, kr = x["ball_count"], x["load_factor"]
-    common, per_ball = (
-        torque_limit(
-            force, x["ball_circle_diameter"], x["groove_angle"], i, kr, x["flank_friction"], way
-        )
-        for way in ("common", "per_ball")
+    common = torque_limit(
+        force, x["ball_circle_diameter"], x["groove_angle"], i, kr, x["flank_friction"]
     )
+    per_ball = torque_sharing("per_ball", i, kr) * common
     if x["spring_arrangement"] == "common":
         first = (
             f"spring_arrangement = common: one spring presses all {i} balls through the "
