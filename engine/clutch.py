@@ -916,10 +916,9 @@ def combined_push_factor(
     >>> round(combined_push_factor(math.radians(45.0), 0.0, math.radians(45.0)), 12)
     2.0
     """
-    rho = np.arctan(flank_friction)
-    push = np.tan(np.asarray(groove_angle) - rho)
+    push = flank_push_factor(groove_angle, flank_friction)
     if driving_groove_angle is not None:
-        push = push + np.tan(np.asarray(driving_groove_angle) - rho)
+        push = push + flank_push_factor(driving_groove_angle, flank_friction)
     return _out(push)
 
 
@@ -957,7 +956,11 @@ def rim_rise(ball_diameter: FloatArray, groove_angle: FloatArray) -> FloatArray:
 
 
 def lift_points(
-    ball_lift: FloatArray, ball_diameter: FloatArray, groove_angle: FloatArray, points: int = 41
+    ball_lift: FloatArray,
+    ball_diameter: FloatArray,
+    groove_angle: FloatArray,
+    points: int = 41,
+    from_rim: bool = False,
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     r"""Lifts from seated to riding on the face, and the contact angle at each.
 
@@ -975,6 +978,8 @@ def lift_points(
         α of the driven groove, [rad]
     points : int, optional
         Points on the flank and as many over the rim, [-]
+    from_rim : bool, optional
+        Only the points from the flank's end (z = h) on, [-]
 
     Returns
     -------
@@ -997,6 +1002,8 @@ def lift_points(
     [0.0, 2.0, 4.0, 5.0839, 5.4645]
     >>> lift_points([0.004, 0.002], 0.01, math.radians(45.0), 3)[0].shape
     (2, 5)
+    >>> [round(float(v) * 1e3, 4) for v in lift_points(0.004, 0.01, math.radians(45.0), 3, True)[0]]
+    [4.0, 5.0839, 5.4645]
     """
     h, d, a = np.broadcast_arrays(
         np.asarray(ball_lift, float),
@@ -1006,9 +1013,10 @@ def lift_points(
     h, r, a = h[..., None], d[..., None] / 2.0, a[..., None]
     u = np.linspace(0.0, 1.0, points)
     beta_rim = a + u[1:] * (math.pi / 2.0 - a)
-    lift = np.concatenate([u * h, h + r * (np.sin(beta_rim) - np.sin(a))], axis=-1)
-    angle = np.concatenate([np.broadcast_to(a, (*a.shape[:-1], points)), beta_rim], axis=-1)
-    return lift, angle
+    flank = u[-1:] if from_rim else u
+    lift = np.concatenate([flank * h, h + r * (np.sin(beta_rim) - np.sin(a))], axis=-1)
+    seated = np.broadcast_to(a, (*a.shape[:-1], flank.size))
+    return lift, np.concatenate([seated, beta_rim], axis=-1)
 
 
 def torque_against_lift(
@@ -1148,13 +1156,10 @@ def friction_sensitivity(
     2.0
     """
     rho = np.arctan(flank_friction)
-    a = np.asarray(groove_angle) - rho
-    push = np.tan(a)
-    dpush = 1.0 / np.cos(a) ** 2
+    push = combined_push_factor(groove_angle, flank_friction, driving_groove_angle)
+    dpush = 1.0 / np.cos(np.asarray(groove_angle) - rho) ** 2  # d/dρ of tan(α − ρ)
     if driving_groove_angle is not None:
-        b = np.asarray(driving_groove_angle) - rho
-        push = push + np.tan(b)
-        dpush = dpush + 1.0 / np.cos(b) ** 2
+        dpush = dpush + 1.0 / np.cos(np.asarray(driving_groove_angle) - rho) ** 2
     return _out(np.asarray(torque) / push * dpush / (1.0 + np.asarray(flank_friction) ** 2))
 
 

@@ -485,6 +485,13 @@ class SpringMaterial:
         self.density = density
         #: (largest wire diameter of the row [mm], minimum R_m [MPa]), ascending.
         self.strength = strength
+        # the table as :func:`tensile_strength` reads it: each row's top diameter with
+        # a 1e-9 tolerance [mm] (the last row open-ended: beyond it is refused by the
+        # range), its R_m [Pa], and the diameters it covers [mm]
+        self.row_tops = np.array([upper * (1 + 1e-9) for upper, _ in strength[:-1]] + [np.inf])
+        self.row_strengths = np.array([rm * 1e6 for _, rm in strength])
+        lo, hi = self.diameter_range
+        self.covered_mm = (lo * 1e3 * (1 - 1e-9) - 1.0, hi * 1e3 * (1 + 1e-9))
 
     @property
     def diameter_range(self) -> tuple[float, float]:
@@ -620,21 +627,19 @@ def tensile_strength(material: str, wire_diameter: Any) -> Any:
     array([1740., 1690.,   nan])
     """
     m = _material(material)
-    lo, hi = m.diameter_range
-    d_mm = np.asarray(wire_diameter, dtype=float) * 1e3
-    uppers = np.array([upper * (1 + 1e-9) for upper, _ in m.strength])
-    strengths = np.array([rm * 1e6 for _, rm in m.strength])
-    row = np.minimum(np.searchsorted(uppers, d_mm, side="left"), len(uppers) - 1)
-    inside = (lo * 1e3 * (1 - 1e-9) - 1.0 <= d_mm) & (d_mm <= hi * 1e3 * (1 + 1e-9))
-    if d_mm.ndim == 0:
+    lo, hi = m.covered_mm
+    d_mm = np.multiply(wire_diameter, 1e3)
+    row = np.searchsorted(m.row_tops, d_mm, side="left")
+    inside = (lo <= d_mm) & (d_mm <= hi)
+    if np.ndim(d_mm) == 0:
         if not inside:
             raise InputOutOfRange(
                 f"wire diameter {float(d_mm):.4g} mm is outside the {m.standard} table "
-                f"(up to {hi * 1e3:g} mm)",
+                f"(up to {m.strength[-1][0]:g} mm)",
                 field="spring_wire_diameter",
             )
-        return float(strengths[row])
-    return _out(np.where(inside, strengths[row], np.nan))
+        return float(m.row_strengths[row])
+    return _out(np.where(inside, m.row_strengths[row], np.nan))
 
 
 def permissible_shear_stress(material: str, wire_diameter: Any) -> Any:

@@ -20,6 +20,7 @@ from typing import Any
 import numpy as np
 from scipy.optimize import brentq
 
+from .. import points
 from .. import springs as sp
 from ..clutch import (
     RECOMMENDED_SERVICE_FACTOR,
@@ -408,6 +409,21 @@ class Spring:
         return x["allowable_shear_stress"]
 
 
+def refused(x: Mapping[str, Any]) -> dict[str, Any]:
+    """Where the spring's numbers are refused, by the field named: True there (floats or
+    arrays). A missing input is refused by :func:`require_spring` alone (it is the same
+    at every point of a study)."""
+    if x["spring_type"] == "disc":
+        if x["disc_inner_diameter"] is None or x["disc_outer_diameter"] is None:
+            return {}
+        # a ring that narrow is not a disc spring (Almen–László loses all precision)
+        return {"disc_inner_diameter": x["disc_inner_diameter"] * 1.05 >= x["disc_outer_diameter"]}
+    wire = x["spring_wire_diameter"]
+    if wire is None or x["spring_material"] == "custom" or np.ndim(wire) == 0:
+        return {}  # one wire: tensile_strength refuses it with the table's range
+    return {"spring_wire_diameter_table": np.isnan(sp.tensile_strength(x["spring_material"], wire))}
+
+
 def require_spring(x: Mapping[str, Any], *, wire_needed: bool) -> None:
     """Refuse a spring description that is incomplete or impossible (scalar inputs)."""
     if x["spring_type"] == "disc":
@@ -418,7 +434,7 @@ def require_spring(x: Mapping[str, Any], *, wire_needed: bool) -> None:
             raise InputOutOfRange(
                 "spring_type = disc needs disc_cone_height", field="disc_cone_height"
             )
-        if x["disc_inner_diameter"] * 1.05 >= x["disc_outer_diameter"]:
+        if refused(x)["disc_inner_diameter"]:
             raise InputOutOfRange(
                 f"disc_inner_diameter = {x['disc_inner_diameter'] * 1e3:g} mm is not below "
                 f"disc_outer_diameter / 1.05 = {x['disc_outer_diameter'] / 1.05 * 1e3:.4g} mm: "
@@ -466,12 +482,13 @@ def characteristic(
     """
     flat_spring = spring
     preload = np.asarray(x["spring_deflection"] if deflection is None else deflection, float)
-    lift, beta = lift_points(lift_of(x, deflection), x["ball_diameter"], x["groove_angle"], POINTS)
     # A helical spring's force rises with the lift and the flank's push is constant, so
     # on the flank the torque rises to the rim: the grid's peak and maxima lie from the
     # rim on. Without the curves, only those points are evaluated (the same floats).
     first = POINTS - 1 if spring.kind == "helical" and not curves else 0
-    lift, beta = lift[..., first:], beta[..., first:]
+    lift, beta = lift_points(
+        lift_of(x, deflection), x["ball_diameter"], x["groove_angle"], POINTS, first > 0
+    )
     # a swept input (an array) gets a trailing axis so it broadcasts against the lift
     x = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
     spring = Spring(x)
@@ -667,32 +684,26 @@ def verdicts(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> dict
     The one place they compare numbers: :func:`checks` words them for a single run,
     the array path reports them per point.
     """
-    out: dict[str, Any] = {
-        "self_locking": np.asarray(v["self_locking_margin"]) >= SELF_LOCKING_MARGIN
-    }
+    out: dict[str, Any] = {"self_locking": v["self_locking_margin"] >= SELF_LOCKING_MARGIN}
     allow = spring.permissible()
     if allow is not None:
-        out["spring_stress_max"] = np.asarray(v["spring_stress_max"]) <= np.asarray(allow)
-    travel = np.asarray(x["spring_deflection"]) + np.asarray(v["total_lift"])
+        out["spring_stress_max"] = v["spring_stress_max"] <= allow
+    travel = x["spring_deflection"] + v["total_lift"]
     if spring.kind == "disc":
-        m = np.asarray(x["disc_series"])
-        out["disc_not_past_flat"] = travel / m <= np.asarray(x["disc_cone_height"])
+        m = x["disc_series"]
+        out["disc_not_past_flat"] = travel / m <= x["disc_cone_height"]
         s_max = sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])[0]
         # NaN (no force maximum) compares False: the torque never falls
-        out["falling_curve"] = (
-            np.asarray(x["spring_deflection"]) / m + np.asarray(v["total_lift"]) / m > s_max
-        )
+        out["falling_curve"] = x["spring_deflection"] / m + v["total_lift"] / m > s_max
     elif x["spring_free_length"] is not None:
         d, dm, n = x["spring_wire_diameter"], x["spring_mean_diameter"], x["spring_active_coils"]
-        need = np.asarray(sp.solid_length(d, n) + sp.minimum_gap_sum(d, dm, n))
-        out["solid_length"] = np.asarray(x["spring_free_length"]) - travel >= need
+        need = sp.solid_length(d, n) + sp.minimum_gap_sum(d, dm, n)
+        out["solid_length"] = x["spring_free_length"] - travel >= need
         # a spring that cannot buckle has no buckling deflection (None, or NaN on arrays)
-        s_k = np.asarray(v.get("buckling_deflection"), dtype=float)
-        out["buckling"] = travel < np.where(np.isnan(s_k), np.inf, s_k)
+        s_k = v.get("buckling_deflection")
+        out["buckling"] = True if s_k is None else travel < np.where(np.isnan(s_k), np.inf, s_k)
     if x["face_friction"] is not None:
-        out["residual_torque"] = np.asarray(v["residual_torque"]) <= RESIDUAL_SHARE * (
-            np.asarray(v["peak_torque"])
-        )
+        out["residual_torque"] = v["residual_torque"] <= RESIDUAL_SHARE * v["peak_torque"]
     return out
 
 
@@ -1040,7 +1051,7 @@ def peak_setting(
         n = delta.size if delta.ndim else 0
         delta, stress = np.array(delta, float, ndmin=1), np.array(stress, float, ndmin=1)
         for j in np.flatnonzero(~np.broadcast_to(grid.regular, delta.shape)).tolist():
-            point = _at_point(x, j) if n else dict(x)
+            point = points.at(x, n, j) if n else dict(x)
             found = solve_setting(
                 point,
                 Spring(point),
@@ -1315,13 +1326,6 @@ def sizing(x: Mapping[str, Any]) -> dict[str, Any]:
 # --------------------------------------------------------------------------
 
 
-def _at_point(x: Mapping[str, Any], j: int) -> dict[str, Any]:
-    """The scalar inputs of point ``j`` of equal-length columns."""
-    return {
-        k: (v[j].item() if isinstance(v, np.ndarray) and v.ndim == 1 else v) for k, v in x.items()
-    }
-
-
 class SettingGrid:
     """The characteristic of a helical spring as lines in the nut setting δ, for a study.
 
@@ -1336,17 +1340,16 @@ class SettingGrid:
 
     def __init__(self, x: Mapping[str, Any]) -> None:
         given = x["ball_lift"] is not None
-        lift, beta = lift_points(
-            x["ball_lift"] if given else 0.0, x["ball_diameter"], x["groove_angle"], POINTS
-        )
         # from the rim on (the flank's lines lie below the rim's): q_k, the lift at δ = 0
-        self.q = lift[..., POINTS - 1 :]
+        self.q, beta = lift_points(
+            x["ball_lift"] if given else 0.0, x["ball_diameter"], x["groove_angle"], POINTS, True
+        )
         self.share = 1.0 if given else 0.5  # 1/(1 + p)
         xs = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
         gain = np.asarray(
             torque_against_lift(
                 1.0,
-                beta[..., POINTS - 1 :],
+                beta,
                 xs["ball_circle_diameter"],
                 xs["flank_friction"],
                 xs["driving_groove_angle"],

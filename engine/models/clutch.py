@@ -14,7 +14,6 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from .. import springs as sp
 from ..clutch import (
     ARRANGEMENTS,
     RECOMMENDED_GROOVE_ANGLE,
@@ -29,7 +28,9 @@ from ..clutch import (
     spring_index,
     spring_rate,
     spring_shear_stress,
+    torque_against_lift,
     torque_limit,
+    torque_sharing,
     wahl_factor,
     wire_diameter_for_force,
 )
@@ -221,18 +222,52 @@ _RUNG = Rung(
 )
 
 
+def _refused(x: Mapping[str, Any], wire: Any) -> dict[str, Any]:
+    """Where the physics refuses a design, by reason: True where refused (floats or arrays).
+
+    The one statement of each condition: a single run raises on it, naming the field
+    (:func:`_require_workable`, :func:`asbuilt.require_spring`); the array paths mask
+    those points and say how many each reason took (:func:`_refusal_notes`).
+    """
+    out: dict[str, Any] = {"groove_angle": x["groove_angle"] <= np.arctan(x["flank_friction"])}
+    if wire is not None:
+        out["spring_wire_diameter"] = wire >= x["spring_mean_diameter"]
+    out.update(asbuilt.refused(x))
+    return out
+
+
+#: What each refusal of :func:`_refused` means, by the field it names.
+_REFUSALS = {
+    "groove_angle": "the balls wedge: groove_angle is not above atan(flank_friction)",
+    "spring_wire_diameter": "no coil: spring_wire_diameter is not below spring_mean_diameter",
+    "spring_wire_diameter_table": "spring_wire_diameter is outside the spring_material's table",
+    "disc_inner_diameter": "disc_inner_diameter is not below disc_outer_diameter / 1.05",
+}
+
+
+def _refusal_notes(refused: Mapping[str, Any], n: int) -> list[str]:
+    """One note per reason that refuses some of the ``n`` points of an array path."""
+    notes = []
+    for reason, where in refused.items():
+        count = int(np.count_nonzero(where)) if np.ndim(where) else n * bool(where)
+        if count:
+            notes.append(f"{count} of {n} points refused: {_REFUSALS[reason]}")
+    return notes
+
+
 def _require_workable(x: Mapping[str, Any], wire: float | None) -> None:
-    """Cross-field refusals shared by both specs (scalar inputs only)."""
+    """Cross-field refusals shared by both specs (scalar inputs), on :func:`_refused`."""
     alpha, f = x["groove_angle"], x["flank_friction"]
-    rho = math.atan(f)
-    if alpha <= rho:
+    refused = _refused(x, wire)
+    if refused["groove_angle"]:
+        rho = math.atan(f)
         raise InfeasibleDesign(
             f"the clutch never slips: the flank angle α = {alpha / DEG:.3g}° is not above the "
             f"friction angle atan f = {rho / DEG:.3g}°, so the balls wedge in the grooves at "
             "any torque; make the flanks flatter (larger α) or reduce the flank friction",
             field="groove_angle",
         )
-    if wire is not None and wire >= x["spring_mean_diameter"]:
+    if wire is not None and refused["spring_wire_diameter"]:
         raise InputOutOfRange(
             f"spring_wire_diameter = {wire * 1e3:g} mm is not below the spring's mean coil "
             f"diameter D = {x['spring_mean_diameter'] * 1e3:g} mm: such a coil cannot exist "
@@ -316,10 +351,12 @@ def _angle_check(alpha: float, ok: bool) -> Check:
     return Check("groove_angle", ok, detail)
 
 
-def _arrangement_notes(x: Mapping[str, Any], force: float, push: float) -> list[str]:
-    d0_, i, kr = x["ball_circle_diameter"], x["ball_count"], x["load_factor"]
-    common = d0_ * force / (2.0 * push)
-    per_ball = kr * i * common
+def _arrangement_notes(x: Mapping[str, Any], force: float) -> list[str]:
+    i, kr = x["ball_count"], x["load_factor"]
+    common = torque_limit(
+        force, x["ball_circle_diameter"], x["groove_angle"], i, kr, x["flank_friction"]
+    )
+    per_ball = torque_sharing("per_ball", i, kr) * common
     if x["spring_arrangement"] == "common":
         first = (
             f"spring_arrangement = common: one spring presses all {i} balls through the "
@@ -399,11 +436,14 @@ def _forward_values(
         x["spring_arrangement"],
     )
     if x["driving_groove_angle"] is not None:
-        # both flanks lift the ball: the same spring holds less torque
-        limit = (
-            np.asarray(limit)
-            * flank_push_factor(alpha, f)
-            / combined_push_factor(alpha, f, x["driving_groove_angle"])
+        # both flanks lift the ball: the same spring holds less torque, T at zero lift
+        limit = torque_against_lift(
+            force,
+            alpha,
+            x["ball_circle_diameter"],
+            f,
+            x["driving_groove_angle"],
+            torque_sharing(x["spring_arrangement"], x["ball_count"], kr),
         )
     at = limit if x["torque"] is None else x["torque"]
     tangential = ball_tangential_force(at, x["ball_circle_diameter"], x["ball_count"], kr)
@@ -436,7 +476,6 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
             k: None if val is None else float(val) for k, val in _forward_values(x).items()
         }
     alpha, f = x["groove_angle"], x["flank_friction"]
-    push = float(flank_push_factor(alpha, f))
     spring = asbuilt.Spring(x)
     passed = {k: bool(ok) for k, ok in _ball_verdicts(x, v, spring).items()}
     checks: list[Check] = []
@@ -478,7 +517,7 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
     checks += asbuilt.checks(x, spring, v, passed)
     notes = [
-        *_arrangement_notes(x, v["spring_force"], push),
+        *_arrangement_notes(x, v["spring_force"]),
         _friction_note(alpha, f),
         f"ball forces are for the most-loaded ball (K_r = {x['load_factor']:g}) {where}; "
         "F_a = F_t tan(α − ρ), F_N = F_t / (cos α + f sin α) [001, eq. 1].",
@@ -501,28 +540,14 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
 
 
-def _feasible_mask(x: Mapping[str, Any], wire: Any) -> npt.NDArray[np.bool_]:
-    """Where the scalar compute would not refuse (the slip and coil conditions)."""
-    ok = np.asarray(x["groove_angle"]) > np.arctan(x["flank_friction"])
-    if wire is not None:
-        ok = ok & (np.asarray(wire) < np.asarray(x["spring_mean_diameter"]))
-    return np.asarray(ok, dtype=bool)
-
-
-def _spring_mask(x: Mapping[str, Any], wire: Any) -> npt.NDArray[np.bool_]:
-    """Where :func:`asbuilt.require_spring` would not refuse the spring's numbers.
-
-    Its other refusals (a missing input) are the same at every point of a study: the
-    array paths leave those to the scalar compute.
-    """
-    if x["spring_type"] == "disc":
-        return np.asarray(
-            np.asarray(x["disc_inner_diameter"]) * 1.05 < np.asarray(x["disc_outer_diameter"])
-        )
-    if wire is not None and x["spring_material"] != "custom":
-        inside = np.isfinite(sp.tensile_strength(x["spring_material"], np.atleast_1d(wire)))
-        return np.asarray(inside, dtype=bool)
-    return np.asarray(True)
+def _feasible(x: Mapping[str, Any], wire: Any) -> tuple[npt.NDArray[np.bool_], list[str]]:
+    """Where a single run would not refuse the point, and notes on the points it would."""
+    refused = _refused(x, wire)
+    ok = np.asarray(True)
+    for where in refused.values():
+        ok = ok & ~np.asarray(where, dtype=bool)
+    n = _array_inputs(x) or 1
+    return ok, _refusal_notes(refused, n)
 
 
 def _masked(values: Mapping[str, Any], ok: npt.NDArray[np.bool_]) -> dict[str, Any]:
@@ -570,18 +595,16 @@ def _ball_verdicts(
     lo, hi = WORKABLE_SPRING_INDEX
     out: dict[str, Any] = {}
     if spring.kind == "helical":
-        index = np.asarray(v["spring_index"])
+        index = v["spring_index"]
         out["spring_index"] = (lo <= index) & (index <= hi)
         if x["allowable_shear_stress"] is not None:
-            out["spring_shear_stress"] = (
-                np.asarray(v["spring_shear_stress"]) <= x["allowable_shear_stress"]
-            )
-    out["groove_depth"] = np.asarray(asbuilt.lift_of(x)) <= np.asarray(x["ball_diameter"]) / 2.0
+            out["spring_shear_stress"] = v["spring_shear_stress"] <= x["allowable_shear_stress"]
+    out["groove_depth"] = asbuilt.lift_of(x) <= x["ball_diameter"] / 2.0
     a_lo, a_hi = RECOMMENDED_GROOVE_ANGLE
-    alpha = np.asarray(x["groove_angle"])
+    alpha = x["groove_angle"]
     out["groove_angle"] = (a_lo <= alpha) & (alpha <= a_hi)
     if x["torque"] is not None:
-        out["torque_below_limit"] = np.asarray(x["torque"]) <= np.asarray(v["torque_limit"])
+        out["torque_below_limit"] = x["torque"] <= v["torque_limit"]
     out.update(asbuilt.verdicts(x, spring, v))
     return out
 
@@ -605,7 +628,7 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
         return Result(values={}, rung=ctx.rung, error_estimate=None)
     wire = x["spring_wire_diameter"] if helical else None
     with np.errstate(all="ignore"):
-        ok = _feasible_mask(x, wire) & _spring_mask(x, wire)
+        ok, refusals = _feasible(x, wire)
         # the 81-point characteristic only where an output or a check needs its peak
         peak = not helical or x["face_friction"] is not None or ctx.wants(*asbuilt.PEAK_OUTPUTS)
         values = _chunked_forward(x, peak)
@@ -616,7 +639,10 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
         values=_with_absent(values, BALL_CLUTCH.outputs, () if peak else asbuilt.PEAK_OUTPUTS),
         rung=ctx.rung,
         error_estimate=None,
-        notes=[f"spring_arrangement = {x['spring_arrangement']}; see a single run's notes"],
+        notes=[
+            f"spring_arrangement = {x['spring_arrangement']}; see a single run's notes",
+            *refusals,
+        ],
         check_arrays=check_arrays,
     )
 
@@ -970,9 +996,8 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 + ("" if ok else ": the clutch would slip in normal work or at every start"),
             )
         )
-    push = float(flank_push_factor(alpha, f))
     notes = [
-        *_arrangement_notes(x, v["required_spring_force"], push),
+        *_arrangement_notes(x, v["required_spring_force"]),
         _friction_note(alpha, f),
         "required_deflection is the nut setting (spring compression) that gives the target "
         "torque with the given wire; required_wire_diameter gives it at the given "
@@ -1020,7 +1045,7 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
             if not drive:
                 return Result(values={}, rung=ctx.rung, error_estimate=None)
             x = {**x, "target_torque": drive["required_slip_torque"]}
-        ok = _feasible_mask(x, wire) & _spring_mask(x, wire)
+        ok, refusals = _feasible(x, wire)
         v: dict[str, Any] = dict(_setting_values(x))
         v.update(asbuilt.setting_values(x, v["required_spring_force"])[0])
         v.update(drive)
@@ -1032,6 +1057,7 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         values=_with_absent(values, BALL_CLUTCH_SETTING.outputs),
         rung=ctx.rung,
         error_estimate=None,
+        notes=refusals,
         check_arrays=check_arrays,
     )
 

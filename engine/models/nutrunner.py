@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from .. import points
 from ..clutch import acceleration_torque, rated_torque, required_slip_torque
 from ..errors import InfeasibleDesign, InputOutOfRange
 from ..motor_spinup import (
@@ -545,7 +546,7 @@ def _closed_values(x: Mapping[str, Any], d: _Drive, geared: bool) -> dict[str, A
         "flywheel_energy": t3,
         "drive_gear_energy": t4,
         "spindle_gears_energy": t5,
-        "equivalent_inertia": 2.0 * d.energy / x["motor_speed"] ** 2,
+        "equivalent_inertia": _inertia(x, d),
         "flywheel_speed": d.w3,
         "spindle_gear_speed": d.w5,
         "gear_ratio": d.u,
@@ -558,33 +559,40 @@ def _closed_values(x: Mapping[str, Any], d: _Drive, geared: bool) -> dict[str, A
 
 def _coupling_slip_torque(x: Mapping[str, Any], d: _Drive) -> Any:
     """Slip torque of coupling 1: K P/ω, or the start torque through it if larger."""
-    w = x["motor_speed"]
-    rated = rated_torque(x["motor_power"], w)
+    rated = rated_torque(x["motor_power"], x["motor_speed"])
     start: Any = 0.0
     if x["breakdown_torque"] is not None and x["rotor_inertia"] is not None:
-        t1, t2, t3, t4, t5 = d.energies
-        load = 2.0 * (np.asarray(t2) + t3 + t4 + t5) / np.asarray(w) ** 2
-        # the coupling's own inertia counted with the motor's side
-        drive = x["rotor_inertia"] + 2.0 * np.asarray(t1) / np.asarray(w) ** 2
+        # parts 2…5 are the load; the coupling's own inertia counts with the motor's side
+        load = _inertia(x, d, coupling=False)
+        drive = x["rotor_inertia"] + disc_inertia(x["coupling_mass"], x["coupling_diameter"])
         start = acceleration_torque(x["breakdown_torque"], drive, load)
     return required_slip_torque(rated, x["coupling_service_factor"], start)
 
 
+def _inertia(x: Mapping[str, Any], d: _Drive, *, coupling: bool = True, **motor: Any) -> Any:
+    """Inertia of parts 1…5 (or 2…5) at the motor shaft; ``motor``: rotor and efficiencies."""
+    return equivalent_inertia(
+        disc_inertia(x["coupling_mass"], x["coupling_diameter"]) if coupling else 0.0,
+        disc_inertia(x["motor_pulley_mass"], x["motor_pulley_diameter"]),
+        disc_inertia(x["flywheel_mass"], x["flywheel_diameter"]),
+        disc_inertia(x["drive_gear_mass"], x["drive_gear_diameter"]),
+        disc_inertia(x["spindle_gear_mass"], x["spindle_gear_diameter"]),
+        x["spindle_count"],
+        d.w3 / x["motor_speed"],
+        d.u,
+        **motor,
+    )
+
+
 def _drive_inertia(x: Mapping[str, Any], d: _Drive) -> float:
-    w = x["motor_speed"]
+    """What the motor accelerates: rotor, parts 1…5, through the belt and gear losses."""
     return float(
-        equivalent_inertia(
-            disc_inertia(x["coupling_mass"], x["coupling_diameter"]),
-            disc_inertia(x["motor_pulley_mass"], x["motor_pulley_diameter"]),
-            disc_inertia(x["flywheel_mass"], x["flywheel_diameter"]),
-            disc_inertia(x["drive_gear_mass"], x["drive_gear_diameter"]),
-            disc_inertia(x["spindle_gear_mass"], x["spindle_gear_diameter"]),
-            x["spindle_count"],
-            d.w3 / w,
-            d.u,
-            x["rotor_inertia"],
-            x["belt_efficiency"],
-            x["gear_efficiency"],
+        _inertia(
+            x,
+            d,
+            rotor_inertia=x["rotor_inertia"],
+            belt_efficiency=x["belt_efficiency"],
+            gear_efficiency=x["gear_efficiency"],
         )
     )
 
@@ -609,17 +617,7 @@ def _idealisation_error(x: Mapping[str, Any]) -> Any:
     sizes = {v.size for v in x.values() if isinstance(v, np.ndarray) and v.ndim > 0}
     if sizes:
         (n,) = sizes  # equal-length columns, as engine.points hands them
-        return np.array(
-            [
-                _idealisation_error(
-                    {
-                        k: (v[j].item() if isinstance(v, np.ndarray) and v.ndim > 0 else v)
-                        for k, v in x.items()
-                    }
-                )
-                for j in range(n)
-            ]
-        )
+        return np.array([_idealisation_error(points.at(x, n, j)) for j in range(n)])
     try:
         ratio = _curve_time_ratio(x)
     except (InfeasibleDesign, InputOutOfRange):

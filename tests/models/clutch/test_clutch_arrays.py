@@ -348,3 +348,29 @@ def test_setting_with_a_varied_allowable_stress_stays_on_the_array_path():
     _, values = _compare(BALL_CLUTCH_SETTING, base, cols)
     # thicker wires for the larger coils and targets: the suggestion moves with the point
     assert len(set(values["suggested_wire_diameter"].tolist())) > 6
+
+
+def test_a_refused_point_is_masked_with_its_reason_on_both_paths():
+    # f = 0.5: atan f = 26.57°, so the balls wedge at α = 20° and 25° and slip at 30°…60°;
+    # a single run refuses the wedged design naming groove_angle, and a sweep masks those
+    # points (null everywhere) and says how many the same reason took
+    base = {**BALL_CLUTCH.examples[3], "flank_friction": 0.5}
+    angles = [20 * DEG, 25 * DEG, 30 * DEG, 45 * DEG, 60 * DEG]
+    with pytest.raises(engine.InfeasibleDesign) as refused:
+        engine.run(BALL_CLUTCH, {**base, "groove_angle": 25 * DEG})
+    assert refused.value.field == "groove_angle"
+    sweep = engine.sweep(BALL_CLUTCH, base, "groove_angle", angles)
+    limits = sweep.results["torque_limit"]
+    assert limits[:2] == [None, None] and all(v is not None for v in limits[2:])
+    assert sweep.rungs[:2] == [None, None]
+    assert any("2 of 5 points refused: the balls wedge" in n for n in sweep.notes), sweep.notes
+    # a wire thicker than the coil: no coil, refused alone and masked on arrays alike
+    wires = [0.004, 0.032, 0.04]
+    with pytest.raises(InputOutOfRange) as thick:
+        engine.run(BALL_CLUTCH, {**BALL_CLUTCH.examples[0], "spring_wire_diameter": 0.045})
+    assert thick.value.field == "spring_wire_diameter"
+    sweep = engine.sweep(
+        BALL_CLUTCH, {**BALL_CLUTCH.examples[0]}, "spring_wire_diameter", [*wires, 0.045]
+    )
+    assert sweep.results["torque_limit"][-1] is None
+    assert any("1 of 4 points refused: no coil" in n for n in sweep.notes), sweep.notes

@@ -162,3 +162,22 @@ def test_setting_from_the_drive():
     assert v["required_peak_setting"] == pytest.approx(peak_setting, rel=1e-9)
     most = rate * (peak_setting + 0.002 + RIM)
     assert v["peak_setting_stress_max"] == pytest.approx(_tau(most), rel=1e-9)
+
+
+def test_the_characteristic_curves_of_the_ordinary_limiter():
+    r = run(BALL_CLUTCH, BALL_CLUTCH.examples[3], series=True)
+    lift = r.series["lift"]
+    # 41 points up the 2 mm flank, then 40 over the rim evenly in β from α to 90°
+    betas = [45 * DEG + k / 40 * (90 - 45) * DEG for k in range(1, 41)]
+    want = [k / 40 * 0.002 for k in range(41)]
+    want += [0.002 + 0.005 * (math.sin(b) - math.sin(45 * DEG)) for b in betas]
+    assert lift == pytest.approx(want, rel=1e-12, abs=1e-18)
+    forces = [RATE * (0.03 + z) for z in want]
+    assert r.series["spring_force_curve"] == pytest.approx(forces, rel=1e-12)
+    assert r.series["spring_stress_curve"] == pytest.approx([_tau(f) for f in forces], rel=1e-12)
+    # T = D0 F/(2 tan(β − ρ)): tan(α − ρ) on the flank; over the rim tan(β − atan 0.1)
+    pushes = [PUSH] * 41 + [math.tan(b - math.atan(0.1)) for b in betas]
+    torques = [0.05 * f / (2 * p) for f, p in zip(forces, pushes, strict=True)]
+    assert r.series["torque_curve"] == pytest.approx(torques, rel=1e-9)
+    # on the face (β = 90°) the ball slides: T = f D0 F/2 = 0.1·0.025·332.93 = 0.8323 N·m
+    assert r.series["torque_curve"][-1] == pytest.approx(0.1 * 0.025 * forces[-1], rel=1e-9)
