@@ -40,6 +40,7 @@ __all__ = [
     "all_true",
     "any_true",
     "as_numbers",
+    "asin",
     "atan2",
     "first_rise",
     "first_rise_c",
@@ -412,3 +413,14 @@ def any_true(mask: Any) -> bool:
 def all_true(mask: Any) -> bool:
     """True if ``mask`` holds at every point (one design: if it holds)."""
     return bool(mask.all()) if isinstance(mask, np.ndarray) else bool(mask)
+
+
+def asin(v: Any) -> Any:
+    """Arcsine, [rad]; NaN outside [-1, 1].
+
+    >>> round(float(asin(0.5)) * 6.0 / math.pi, 12), float(asin(2.0))
+    (1.0, nan)
+    """
+    if isinstance(v, np.ndarray):
+        return np.arcsin(v)
+    return np.float64(math.asin(v)) if -1.0 <= v <= 1.0 else np.float64(math.nan)
