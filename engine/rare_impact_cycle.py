@@ -347,7 +347,13 @@ def release_radius_of(x: Mapping[str, Any]) -> Any:
 
 
 def _liftoff_speed(x: Mapping[str, Any], g: Geometry) -> Any:
-    r""":math:`\omega_0 = \sqrt{(c_1\lambda_1 + c_2\lambda_2 + W)/(A x_0)}` (0 if not held)."""
+    r"""Speed at which the rollers' push first beats preloads and weight [rad/s] [002, eq. 1].
+
+    .. math::
+        \omega_0 = \sqrt{(c_1\lambda_1 + c_2\lambda_2 + W)/(A x_0)}
+
+    (0 where the preloads do not hold the half-coupling).
+    """
     return sqrt(pymax(_preload_force(x, g), 0.0) / (_push_per_w2(x, g) * x["roller_radius"]))
 
 
@@ -491,8 +497,12 @@ def _inertia(x: Mapping[str, Any], g: Geometry, radius: Any) -> Any:
 def _time_to_speed(x: Mapping[str, Any], inertia: Any, w: Any) -> Any:
     r"""Time for ``inertia`` to reach ``w`` from rest under the motor [s]; inf if never.
 
-    :math:`t = J\omega/M` (constant torque) or
-    :math:`t = -\frac{J\omega_{nl}}{M}\ln(1 - \omega/\omega_{nl})` (linear motor) [002, eq. 1].
+    .. math::
+        t = \frac{J\omega}{M}\ (\text{constant torque}),\qquad
+        t = -\frac{J\omega_{nl}}{M}\ln\left(1 - \frac{\omega}{\omega_{nl}}\right)
+        \ (\text{linear motor})
+
+    [002, eq. 1] with the inertia held at ``inertia``.
     """
     torque, w_nl = x["motor_torque"], x.get("motor_no_load_speed")
     if w_nl is None:
@@ -618,7 +628,14 @@ def linear_reach(y0: Any, v0: Any, acc: Any, w2: Any, level: Any) -> tuple[Any, 
 
 
 def _reach(y0: Any, v0: Any, acc: Any, w2: Any, level: Any) -> tuple[Any, Any]:
-    """:func:`linear_reach` on numbers (float64) or arrays, numpy's errors silenced."""
+    r"""First time the linear motion from :math:`(y_0, v_0)` reaches ``level`` [m].
+
+    .. math::
+        y - y_0 = c - A\cos(wt + \delta),\quad c = \frac{acc}{w^2},\
+        A = \sqrt{c^2 + (v_0/w)^2};\qquad y - y_0 = v_0 t + \tfrac12 acc\,t^2\ (w = 0)
+
+    On numbers (float64) or arrays, under ``np.errstate(all="ignore")``; [002, eqs. 2-5].
+    """
     d = level - y0
     s = where(d > 0.0, 1.0, -1.0)
     d, v, a = d * s, v0 * s, acc * s  # now travel +d from 0 with v, a
@@ -660,6 +677,10 @@ def _reach(y0: Any, v0: Any, acc: Any, w2: Any, level: Any) -> tuple[Any, Any]:
 
 def _stage2(x: Mapping[str, Any], v_release: Any, g: Geometry) -> tuple[Any, Any]:
     r"""Stage 2 [002, eq. 2] from the release state, exact per linear piece: (time, reach).
+
+    .. math::
+        V_0 = -\frac{(m_1 + m_2 + n m_p\rho)\,\dot z_1}{M_2 + m_2},\qquad
+        M_2\ddot y = M_2 g + c_1(\lambda_1 + h_1 - y) - c_3(\lambda_3 + y)
 
     The sandwich starts backwards at :math:`V_0 = -(m_1 + m_2 + n m_p\rho)\dot z_1/(M_2 + m_2)`
     with the shaft and comes back to the release position at :math:`-V_0` (conservative);
@@ -745,8 +766,11 @@ def relock_friction(x: Mapping[str, Any]) -> Any:
 def _stage4(x: Mapping[str, Any]) -> Any:
     r"""Exact stage 4 [002, eq. 4] with Coulomb friction: time to travel h1, inf if it sticks.
 
-    :math:`m_2\ddot y = c_2(\lambda_2 + h_1 - y) + m_2 g - f c_3\lambda_3` from rest; it
-    moves only where the drive :math:`c_2(\lambda_2 + h_1) + m_2 g` beats the friction.
+    .. math::
+        m_2\ddot y = c_2(\lambda_2 + h_1 - y) + m_2 g - f c_3\lambda_3
+
+    from rest; it moves only where the drive :math:`c_2(\lambda_2 + h_1) + m_2 g` beats the
+    friction.
     """
     m2, c2 = x["stepped_shaft_mass"], x["auxiliary_spring_rate"]
     drive = c2 * (x["auxiliary_spring_preload"] + x["release_travel"]) + m2 * x["gravity"]
@@ -758,8 +782,11 @@ def _stage4(x: Mapping[str, Any]) -> Any:
 def _release_velocity(x: Mapping[str, Any], g: Geometry, w_m: Any, r: Any) -> Any:
     r"""Lift speed of the half-coupling at release on the quasi-static path [m/s].
 
-    :math:`\dot z_e = \frac{2A\omega r}{K(\omega)}\frac{M(\omega)}{J + n m_p r^2}`;
-    snap-through (:math:`K \le 0`): :math:`h_1\sqrt{-K/m_e}`.
+    .. math::
+        \dot z_e = \frac{2A\omega r}{K(\omega)}\frac{M(\omega)}{J + n m_p r^2},\qquad
+        \text{snap-through } (K \le 0):\ h_1\sqrt{-K/m_e}
+
+    The derivative of the quasi-static path [002, eq. 1] times the flywheel's acceleration.
     """
     k = _stage1_stiffness(x, g, w_m)
     torque = x["motor_torque"]
@@ -800,56 +827,6 @@ def quasi_static_release_velocity(x: Mapping[str, Any], w_m: Any) -> Any:
         return _one_or_many(_release_velocity(x, g, w, _radius(x, g)))
 
 
-def _closed_form(x: Mapping[str, Any]) -> CycleOutcome:
-    """The cheap rung on numbers or arrays (:func:`closed_form_cycle_array`)."""
-    g = _geo(x)
-    x0 = x["roller_radius"]
-    r = _radius(x, g)
-    w_0 = _liftoff_speed(x, g)
-    w_m = _release_speed(x, g, w_0, r)
-    t_spin = _time_to_speed(x, _inertia(x, g, r), w_m)
-    t_lift = _time_to_speed(x, _inertia(x, g, x0), w_0)
-    refusal = where(
-        _preload_force(x, g) > 0.0,
-        where(isfinite(t_spin) & isfinite(t_lift), HELD, NEVER_FAST_ENOUGH),
-        NOT_HELD,
-    )
-    v_rel = _release_velocity(x, g, w_m, r)
-    t_eng, reach = _stage2(x, v_rel, g)
-    # stage 3, the paper's reduction with the rollers' inertia kept: the half-coupling
-    # held, M22·ÿs = -c3(λ3 + ys) + (m3 + n·mp·a_s)g from rest at h2
-    h2, h3 = x["engagement_height"], x["jaw_height"]
-    c3 = x["return_spring_rate"]
-    nm = x["roller_count"] * x["roller_mass"]
-    _, _, m22 = _stage3_matrices(x, g)
-    q_s0 = -c3 * (x["return_spring_preload"] + h2) + (x["striker_mass"] + nm * g.a_s) * x["gravity"]
-    clear = h2 - pymin(h3, h2)
-    blow = isfinite(t_eng)  # no blow, no later stage: one verdict for the whole cycle
-    t_ret = where(blow, _reach(h2, 0.0, q_s0 / m22, c3 / m22, clear)[0], math.inf)
-    t_home = where(blow, _reach(h2, 0.0, q_s0 / m22, c3 / m22, 0.0)[0], math.inf)
-    t_lock = where(isfinite(t_home), _stage4(x), math.inf)
-    snap = _stage1_stiffness(x, g, w_0) < 0.0
-    fields: dict[str, Any] = dict(
-        zip(_NUMERIC, (w_m, t_spin, r, v_rel, t_eng, reach, t_ret, t_home, t_lock), strict=True)
-    )
-    if not is_array(*x.values()):
-        return CycleOutcome(**fields, snap=bool(snap), refusal=int(refusal))
-    n = np.broadcast_shapes(*(np.shape(v) for v in x.values() if isinstance(v, np.ndarray)))
-    refused = np.broadcast_to(refusal != HELD, n)
-    any_refused = bool(refused.any())
-
-    def out(v: Any) -> np.ndarray:
-        v = np.broadcast_to(np.asarray(v, dtype=float), n)
-        return np.where(refused, math.nan, v) if any_refused else v
-
-    columns: dict[str, Any] = {k: out(v) for k, v in fields.items()}
-    return CycleOutcome(
-        **columns,
-        snap=np.broadcast_to(snap, n) & ~refused,
-        refusal=np.broadcast_to(refusal, n),
-    )
-
-
 def closed_form_cycle_array(x: Mapping[str, Any]) -> CycleOutcome:
     """The cheap rung for one design or many: numbers or equal-length arrays in ``x``.
 
@@ -876,7 +853,56 @@ def closed_form_cycle_array(x: Mapping[str, Any]) -> CycleOutcome:
     True
     """
     with np.errstate(all="ignore"):
-        return _closed_form(_numbers(x))
+        x = _numbers(x)
+        g = _geo(x)
+        x0 = x["roller_radius"]
+        r = _radius(x, g)
+        w_0 = _liftoff_speed(x, g)
+        w_m = _release_speed(x, g, w_0, r)
+        t_spin = _time_to_speed(x, _inertia(x, g, r), w_m)
+        t_lift = _time_to_speed(x, _inertia(x, g, x0), w_0)
+        refusal = where(
+            _preload_force(x, g) > 0.0,
+            where(isfinite(t_spin) & isfinite(t_lift), HELD, NEVER_FAST_ENOUGH),
+            NOT_HELD,
+        )
+        v_rel = _release_velocity(x, g, w_m, r)
+        t_eng, reach = _stage2(x, v_rel, g)
+        # stage 3, the paper's reduction with the rollers' inertia kept: the half-coupling
+        # held, M22·ÿs = -c3(λ3 + ys) + (m3 + n·mp·a_s)g from rest at h2
+        h2, h3 = x["engagement_height"], x["jaw_height"]
+        c3 = x["return_spring_rate"]
+        nm = x["roller_count"] * x["roller_mass"]
+        _, _, m22 = _stage3_matrices(x, g)
+        q_s0 = (
+            -c3 * (x["return_spring_preload"] + h2)
+            + (x["striker_mass"] + nm * g.a_s) * x["gravity"]
+        )
+        clear = h2 - pymin(h3, h2)
+        blow = isfinite(t_eng)  # no blow, no later stage: one verdict for the whole cycle
+        t_ret = where(blow, _reach(h2, 0.0, q_s0 / m22, c3 / m22, clear)[0], math.inf)
+        t_home = where(blow, _reach(h2, 0.0, q_s0 / m22, c3 / m22, 0.0)[0], math.inf)
+        t_lock = where(isfinite(t_home), _stage4(x), math.inf)
+        snap = _stage1_stiffness(x, g, w_0) < 0.0
+        fields: dict[str, Any] = dict(
+            zip(_NUMERIC, (w_m, t_spin, r, v_rel, t_eng, reach, t_ret, t_home, t_lock), strict=True)
+        )
+        if not is_array(*x.values()):
+            return CycleOutcome(**fields, snap=bool(snap), refusal=int(refusal))
+        n = np.broadcast_shapes(*(np.shape(v) for v in x.values() if isinstance(v, np.ndarray)))
+        refused = np.broadcast_to(refusal != HELD, n)
+        any_refused = bool(refused.any())
+
+        def out(v: Any) -> np.ndarray:
+            v = np.broadcast_to(np.asarray(v, dtype=float), n)
+            return np.where(refused, math.nan, v) if any_refused else v
+
+        columns: dict[str, Any] = {k: out(v) for k, v in fields.items()}
+        return CycleOutcome(
+            **columns,
+            snap=np.broadcast_to(snap, n) & ~refused,
+            refusal=np.broadcast_to(refusal, n),
+        )
 
 
 def _refuse(x: Mapping[str, Any], o: CycleOutcome) -> EngineError:
@@ -907,7 +933,7 @@ def closed_form_cycle(x: Mapping[str, Any]) -> CycleOutcome:
     """
     with np.errstate(all="ignore"):
         xn = _numbers(x)
-        o = _closed_form(xn)
+        o = closed_form_cycle_array(xn)
         if o.refused:
             raise _refuse(xn, o)
     return _as_floats(o)
