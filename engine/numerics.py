@@ -297,6 +297,7 @@ class StepCost:
 # ``np.errstate(all="ignore")``: what is NaN or inf is then masked by the procedure itself.
 
 
+_ND = np.ndarray
 #: The plain number types :func:`as_numbers` converts (bool is not one).
 _PLAIN = (int, float)
 
@@ -324,9 +325,9 @@ def where(cond: Any, a: Any, b: Any) -> Any:
     >>> where(2.0 > 1.0, "yes", "no"), where(np.array([True, False]), 1.0, 2.0).tolist()
     ('yes', [1.0, 2.0])
     """
-    if isinstance(cond, np.ndarray) or isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
-        return np.where(cond, a, b)
-    return a if cond else b
+    if cond.__class__ is not _ND and a.__class__ is not _ND and b.__class__ is not _ND:
+        return a if cond else b  # one design (the hot path: no isinstance calls)
+    return np.where(cond, a, b)
 
 
 def pymax(a: Any, b: Any) -> Any:

@@ -131,22 +131,36 @@ def _values_key(x: Mapping[str, Any]) -> tuple[Any, ...]:
     )
 
 
-#: The closed form's cycle for the last inputs, keyed on their values (a copy of every
-#: array's bytes, never the array object): a run or a sweep asks the estimate and then
-#: the outputs on the same inputs and the cycle is computed once for both, while a caller
-#: that refills its buffer in place between calls gets the new design's cycle.
-_LAST_CYCLE: list[tuple[tuple[Any, ...], CycleOutcome]] = []
+#: The closed form's cycle (and its error estimate, once asked) for the last inputs, keyed
+#: on their values (a copy of every array's bytes, never the array object): a run or a
+#: sweep asks the estimate and then the outputs on the same inputs and each is computed
+#: once for both, while a caller that refills its buffer in place between calls gets the
+#: new design's cycle.
+_LAST_CYCLE: list[tuple[tuple[Any, ...], CycleOutcome, dict[str, Any]]] = []
+
+
+def _memo(x: Mapping[str, Any]) -> tuple[CycleOutcome, dict[str, Any]]:
+    key = _values_key(x)
+    last = _LAST_CYCLE[-1] if _LAST_CYCLE else None
+    if last is not None and last[0] == key:
+        return last[1], last[2]
+    o = closed_form_cycle_array(x)
+    errors: dict[str, Any] = {}
+    _LAST_CYCLE[:] = [(key, o, errors)]
+    return o, errors
 
 
 def _cycle(x: Mapping[str, Any]) -> CycleOutcome:
     """The closed form's cycle for one design (numbers) or many (arrays), refusals marked."""
-    key = _values_key(x)
-    last = _LAST_CYCLE[-1] if _LAST_CYCLE else None
-    if last is not None and last[0] == key:
-        return last[1]
-    o = closed_form_cycle_array(x)
-    _LAST_CYCLE[:] = [(key, o)]
-    return o
+    return _memo(x)[0]
+
+
+def _errors(x: Mapping[str, Any]) -> dict[str, Any]:
+    """:func:`engine.rare_impact_cycle.closed_form_errors` of the closed form's cycle."""
+    o, errors = _memo(x)
+    if not errors:
+        errors.update(closed_form_errors(x, o))
+    return errors
 
 
 def _closed_form_estimate(x: Mapping[str, Any]) -> Any:
@@ -154,7 +168,7 @@ def _closed_form_estimate(x: Mapping[str, Any]) -> Any:
 
     On arrays (a sweep or a study): an array, NaN where one design gives None.
     """
-    groups = closed_form_errors(x, _cycle(x))
+    groups = _errors(x)
     worst = groups["stage1"]
     for group in ("engagement", "return", "relock"):
         worst = pymax(worst, groups[group])
@@ -163,9 +177,9 @@ def _closed_form_estimate(x: Mapping[str, Any]) -> Any:
     return float(worst) if math.isfinite(worst) else None
 
 
-def _output_error(x: Mapping[str, Any], o: CycleOutcome, ctx: RunContext) -> float | None:
+def _output_error(x: Mapping[str, Any], ctx: RunContext) -> float | None:
     """Estimated error of the outputs asked for (the closed form's groups)."""
-    errs = closed_form_errors(x, o)
+    errs = _errors(x)
     asked = [errs[g] for n, g in _GROUP.items() if g is not None and ctx.wants(n)]
     if not asked:
         return 0.0
@@ -514,7 +528,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "state (positions, velocities) is carried across release, blow and return"
         )
     else:
-        error = _output_error(x, o, ctx)
+        error = _output_error(x, ctx)
         notes.append(
             "closed form: quasi-static spin-up, piecewise-linear stages 2 and 4 started from "
             "the quasi-static release velocity, stage 3 with the half-coupling held"
