@@ -18,7 +18,14 @@ import engine.study as study_module
 from engine import EngineError, run, sweep
 from engine.models.rare_impact import RARE_IMPACT, REFERENCE_DESIGN
 from engine.points import auto_index, rung_estimates
-from engine.rare_impact_cycle import closed_form_cycle, closed_form_cycle_array, linear_reach
+from engine.rare_impact_cycle import (
+    HELD,
+    NEVER_FAST_ENOUGH,
+    NOT_HELD,
+    closed_form_cycle,
+    closed_form_cycle_array,
+    linear_reach,
+)
 from engine.spec import RunContext
 from engine.study import CHECK_FAILED, CHECK_OK, CHECK_UNKNOWN, Study, Variable, evaluate_chunk
 from engine.study import plan as study_plan
@@ -239,3 +246,23 @@ def test_a_reused_input_buffer_gives_the_new_designs_answer() -> None:
     hand = math.sqrt((560.0 + 26.0 + 0.35 * 9.80665) / 0.006375)
     assert again.tolist() == pytest.approx([hand, hand], rel=1e-12)
     assert hand == pytest.approx(304.0723, abs=1e-4)
+
+
+def test_a_refused_point_carries_its_reason_on_both_paths() -> None:
+    # point 1: preloads that do not hold the half-coupling against gravity pointing away;
+    # point 2: a motor whose no-load speed (100 rad/s) is below the release speed (244)
+    x = {**REFERENCE_DESIGN, "gravity": np.array([9.80665, -100.0, 9.80665])}
+    x["power_spring_preload"] = np.array([0.002, 1e-6, 0.002])
+    x["auxiliary_spring_preload"] = np.array([0.008, 1e-6, 0.008])
+    x["motor_no_load_speed"] = np.array([1e4, 1e4, 100.0])
+    o = closed_form_cycle_array(x)
+    assert o.refusal.tolist() == [HELD, NOT_HELD, NEVER_FAST_ENOUGH]
+    assert np.isnan(o.release_speed[1:]).all() and np.isfinite(o.release_speed[0])
+    fields = {NOT_HELD: "power_spring_preload", NEVER_FAST_ENOUGH: "motor_no_load_speed"}
+    for j in (1, 2):
+        one = {k: (v[j] if isinstance(v, np.ndarray) else v) for k, v in x.items()}
+        alone = closed_form_cycle_array(one)  # the same lines on one design: marked
+        assert alone.refusal == o.refusal[j]
+        with pytest.raises(EngineError) as refused:  # and raised with its reason
+            closed_form_cycle(one)
+        assert refused.value.field == fields[int(o.refusal[j])]
