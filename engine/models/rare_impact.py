@@ -23,6 +23,7 @@ from ..rare_impact import (
     G0,
     min_return_spring_rate,
     relock_margin,
+    spring_height_limit,
     striker_oscillation,
 )
 from ..rare_impact_cycle import (
@@ -100,10 +101,9 @@ def spring_height_bounds(moving_mass: Any, gravity: Any, c1: Any, c3: Any) -> tu
     """
     d = c3 - c1
     w = 2.0 * moving_mass * gravity
+    # the paper's limit (inf for c3 <= c1), never below 0; none at all for c3 = c1, g < 0
     upper = where(
-        d > 0.0,
-        pymax(w / where(d > 0.0, d, 1.0), 0.0),
-        where(d < 0.0, math.inf, where(w >= 0.0, math.inf, 0.0)),
+        (d == 0.0) & (w < 0.0), 0.0, pymax(spring_height_limit(moving_mass, gravity, c1, c3), 0.0)
     )
     lower = where((d < 0.0) & (w < 0.0), w / where(d < 0.0, d, -1.0), 0.0)
     return lower, upper
