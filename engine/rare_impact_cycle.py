@@ -148,6 +148,7 @@ from .numerics import (
     tan,
     where,
 )
+from .rare_impact import striker_oscillation
 
 __all__ = [
     "GEOMETRIES",
@@ -707,11 +708,12 @@ def _stage2(x: Mapping[str, Any], v_release: Any, g: Geometry) -> tuple[Any, Any
     k_a = sqrt((c1 + c2 + c3) / mass)
     t_back = where(back, 2.0 * atan2(-v0 / k_a, f_at0 / mass / k_a**2) / k_a, 0.0)
     v_start = where(back, -v0, 0.0)
-    acc0 = grav + (c1 * (lam1 + h1) - c3 * lam3) / big
-    w2 = (c1 + c3) / big
+    # the striker's own stage-2 motion, B and k of [002, eqs. 2 and 5]
+    acc0, k = striker_oscillation(c1, lam1, c3, lam3, h1, big, grav)
+    w2 = k * k
     z_off = lam1 + h1  # the power spring leaves contact beyond this travel
     c = acc0 / w2
-    reach = c + hypot(c, v_start / sqrt(w2))
+    reach = c + hypot(c, v_start / k)
     one_piece = (h2 <= z_off) | (reach <= z_off)
     if all_true(one_piece):  # the power spring stays in contact up to h2
         return t_back + _reach(0.0, v_start, acc0, w2, h2)[0], reach
