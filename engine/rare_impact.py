@@ -520,8 +520,11 @@ def relock_time(
 ) -> Any:
     r"""Time for the auxiliary spring to push the stepped shaft back the release travel [s].
 
-    Exact solution of [002, eq. 4]:
-    :math:`m_2\ddot z_2 = c_2(\lambda_2 + h_1 - z_2) + m_2 g - c_3\lambda_3 f`
+    Exact solution of [002, eq. 4],
+
+    .. math::
+        m_2\ddot z_2 = c_2(\lambda_2 + h_1 - z_2) + m_2 g - c_3\lambda_3 f,
+
     from rest is :math:`z_2 = D_4(1-\cos k_4 t)`, :math:`k_4 = \sqrt{c_2/m_2}`,
     :math:`D_4 = \lambda_2 + h_1 + (m_2 g - c_3\lambda_3 f)/c_2`; inf when it
     never reaches :math:`h_1`. The friction force is taken constant, as in the

@@ -148,7 +148,7 @@ from .numerics import (
     tan,
     where,
 )
-from .rare_impact import striker_oscillation
+from .rare_impact import relock_time, striker_oscillation
 
 __all__ = [
     "GEOMETRIES",
@@ -765,22 +765,6 @@ def relock_friction(x: Mapping[str, Any]) -> Any:
     return _one_or_many(x["roller_friction"] * x["return_spring_rate"] * x["return_spring_preload"])
 
 
-def _stage4(x: Mapping[str, Any]) -> Any:
-    r"""Exact stage 4 [002, eq. 4] with Coulomb friction: time to travel h1, inf if it sticks.
-
-    .. math::
-        m_2\ddot y = c_2(\lambda_2 + h_1 - y) + m_2 g - f c_3\lambda_3
-
-    from rest; it moves only where the drive :math:`c_2(\lambda_2 + h_1) + m_2 g` beats the
-    friction.
-    """
-    m2, c2 = x["stepped_shaft_mass"], x["auxiliary_spring_rate"]
-    drive = c2 * (x["auxiliary_spring_preload"] + x["release_travel"]) + m2 * x["gravity"]
-    ff = x["roller_friction"] * x["return_spring_rate"] * x["return_spring_preload"]
-    t4, _ = _reach(0.0, 0.0, (drive - ff) / m2, c2 / m2, x["release_travel"])
-    return where(drive > ff, t4, math.inf)
-
-
 def _release_velocity(x: Mapping[str, Any], g: Geometry, w_m: Any, r: Any) -> Any:
     r"""Lift speed of the half-coupling at release on the quasi-static path [m/s].
 
@@ -884,7 +868,16 @@ def closed_form_cycle_array(x: Mapping[str, Any]) -> CycleOutcome:
         blow = isfinite(t_eng)  # no blow, no later stage: one verdict for the whole cycle
         t_ret = where(blow, _reach(h2, 0.0, q_s0 / m22, c3 / m22, clear)[0], math.inf)
         t_home = where(blow, _reach(h2, 0.0, q_s0 / m22, c3 / m22, 0.0)[0], math.inf)
-        t_lock = where(isfinite(t_home), _stage4(x), math.inf)
+        # stage 4 [002, eq. 4]: the shaft back h1 against the friction f·c3·λ3
+        t_relock = relock_time(
+            x["stepped_shaft_mass"],
+            x["gravity"],
+            x["auxiliary_spring_rate"],
+            x["auxiliary_spring_preload"],
+            x["release_travel"],
+            x["roller_friction"] * c3 * x["return_spring_preload"],
+        )
+        t_lock = where(isfinite(t_home), t_relock, math.inf)
         snap = _stage1_stiffness(x, g, w_0) < 0.0
         fields: dict[str, Any] = dict(
             zip(_NUMERIC, (w_m, t_spin, r, v_rel, t_eng, reach, t_ret, t_home, t_lock), strict=True)

@@ -139,25 +139,22 @@ def _values_key(x: Mapping[str, Any]) -> tuple[Any, ...]:
 _LAST_CYCLE: list[tuple[tuple[Any, ...], CycleOutcome, dict[str, Any]]] = []
 
 
-def _memo(x: Mapping[str, Any]) -> tuple[CycleOutcome, dict[str, Any]]:
+def _cycle(x: Mapping[str, Any]) -> CycleOutcome:
+    """The closed form's cycle for one design (numbers) or many (arrays), refusals marked."""
     key = _values_key(x)
     last = _LAST_CYCLE[-1] if _LAST_CYCLE else None
     if last is not None and last[0] == key:
-        return last[1], last[2]
+        return last[1]
     o = closed_form_cycle_array(x)
-    errors: dict[str, Any] = {}
-    _LAST_CYCLE[:] = [(key, o, errors)]
-    return o, errors
-
-
-def _cycle(x: Mapping[str, Any]) -> CycleOutcome:
-    """The closed form's cycle for one design (numbers) or many (arrays), refusals marked."""
-    return _memo(x)[0]
+    _LAST_CYCLE[:] = [(key, o, {})]
+    return o
 
 
 def _errors(x: Mapping[str, Any]) -> dict[str, Any]:
     """:func:`engine.rare_impact_cycle.closed_form_errors` of the closed form's cycle."""
-    o, errors = _memo(x)
+    o = _cycle(x)
+    entry = _LAST_CYCLE[-1]
+    errors = entry[2] if entry[1] is o else {}  # another thread's design came in between
     if not errors:
         errors.update(closed_form_errors(x, o))
     return errors

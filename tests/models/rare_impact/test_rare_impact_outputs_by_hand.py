@@ -143,3 +143,14 @@ def test_the_simulated_half_coupling_speed_is_solve_ivp_s() -> None:
     assert isinstance(speed, float)
     assert speed == pytest.approx(reference.release_velocity, rel=1e-6)
     assert speed > 0.01  # it still lifts at release
+
+
+def test_the_report_lists_the_steps_of_the_cycle() -> None:
+    # the calculation report's equations are read from the functions the run calls: the
+    # closed form's stages must be among them, in the order of the procedure
+    from engine.equations import equations_of
+
+    names = [e["function"] for e in equations_of(RARE_IMPACT.compute)]
+    steps = ["_release_speed", "_time_to_speed", "_release_velocity", "_stage2", "_reach"]
+    assert [n for n in names if n in steps] == steps
+    assert {"relock_time", "striker_oscillation", "min_return_spring_rate"} <= set(names)
