@@ -10,7 +10,9 @@ RK4 compiled by numba; what is not model-specific is here, once:
   step and the first point where it reaches zero from below, end crossings and
   grazes inside the step alike (the event location of a position level);
 * :func:`step_budget` and :class:`StepCost`: a simulation's budget in time, as
-  steps at the kernel's measured cost per step (issue 21).
+  steps at the kernel's measured cost per step (issue 21);
+* :func:`as_numbers`, :func:`where`, :func:`sqrt`, ...: what lets one procedure take
+  one design (floats) or many (arrays) through the same lines.
 
 The right-hand sides, the RK4 steps over each model's state and the kernels'
 event loops stay with their models.
@@ -25,20 +27,36 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any, Literal
+
+import numpy as np
 
 __all__ = [
     "STEP_COST_CAP",
     "TIME_SHARE",
     "StepCost",
+    "all_true",
+    "any_true",
+    "as_numbers",
+    "asin",
+    "atan2",
     "first_rise",
     "first_rise_c",
     "hermite",
     "hermite_c",
+    "hypot",
+    "is_array",
+    "isfinite",
     "jit",
+    "log1p",
+    "pymax",
+    "pymin",
+    "sqrt",
     "step_budget",
+    "tan",
+    "where",
 ]
 
 #: Share of the time left that a simulation may plan to use up front (the rest covers a
@@ -117,7 +135,7 @@ def hermite(s, z0, v0, z1, v1, h):  # type: ignore[no-untyped-def]
     )
 
 
-hermite_c = jit(hermite)
+hermite_c = jit(hermite, error_model="numpy")
 
 
 def first_rise(z0, v0, z1, v1, h):  # type: ignore[no-untyped-def]
@@ -188,7 +206,7 @@ def first_rise(z0, v0, z1, v1, h):  # type: ignore[no-untyped-def]
     return hi
 
 
-first_rise_c = jit(first_rise)
+first_rise_c = jit(first_rise, error_model="numpy")
 
 
 def step_budget(
@@ -264,3 +282,146 @@ class StepCost:
     def budget(self, deadline: float | None, max_steps: int) -> int:
         """:func:`step_budget` at this kernel's measured cost per step."""
         return step_budget(deadline, max_steps, self.seconds)
+
+
+# ---------------------------------------------------------------------------
+# One procedure for one design or many: floats or numpy arrays through the same lines
+# ---------------------------------------------------------------------------
+#
+# A procedure written once for a single design and for a sweep takes each input as a
+# float or an array. Plain arithmetic serves both when the floats are numpy's float64
+# (a division by zero gives inf, an overflow inf, as on arrays, instead of raising):
+# :func:`as_numbers` makes them so at the procedure's door, and the few functions below
+# take the fast ``math`` route for one design and numpy's for arrays, with numpy's
+# answers (NaN, not an exception, outside a function's domain). Run the procedure under
+# ``np.errstate(all="ignore")``: what is NaN or inf is then masked by the procedure itself.
+
+
+_ND = np.ndarray
+#: The plain number types :func:`as_numbers` converts (bool is not one).
+_PLAIN = (int, float)
+
+
+def as_numbers(x: Mapping[str, Any]) -> dict[str, Any]:
+    """The inputs with every plain number as numpy's float64 (arrays and text as they are).
+
+    >>> as_numbers({"a": 1, "b": 2.5, "c": "v", "d": None})
+    {'a': np.float64(1.0), 'b': np.float64(2.5), 'c': 'v', 'd': None}
+    """
+    return {k: np.float64(v) if type(v) in _PLAIN else v for k, v in x.items()}
+
+
+def is_array(*values: Any) -> bool:
+    """True if any of ``values`` is a numpy array (a sweep), False for one design."""
+    for v in values:  # noqa: SIM110 - a loop, not any(): it runs hundreds of times a design
+        if isinstance(v, np.ndarray):
+            return True
+    return False
+
+
+def where(cond: Any, a: Any, b: Any) -> Any:
+    """``a`` where ``cond`` holds, else ``b``: ``np.where`` on arrays, ``if`` on one design.
+
+    >>> where(2.0 > 1.0, "yes", "no"), where(np.array([True, False]), 1.0, 2.0).tolist()
+    ('yes', [1.0, 2.0])
+    """
+    if cond.__class__ is not _ND and a.__class__ is not _ND and b.__class__ is not _ND:
+        return a if cond else b  # one design (the hot path: no isinstance calls)
+    return np.where(cond, a, b)
+
+
+def pymax(a: Any, b: Any) -> Any:
+    """``max(a, b)`` with Python's NaN rule (``b`` replaces ``a`` only if ``b > a``).
+
+    >>> float(pymax(np.float64("nan"), 1.0)), float(pymax(1.0, np.float64("nan")))
+    (nan, 1.0)
+    """
+    return where(b > a, b, a)
+
+
+def pymin(a: Any, b: Any) -> Any:
+    """``min(a, b)`` with Python's NaN rule (``b`` replaces ``a`` only if ``b < a``)."""
+    return where(b < a, b, a)
+
+
+def isfinite(v: Any) -> Any:
+    """Neither inf nor NaN, per point."""
+    return np.isfinite(v) if isinstance(v, np.ndarray) else math.isfinite(v)
+
+
+def sqrt(v: Any) -> Any:
+    """Square root; NaN below 0.
+
+    >>> float(sqrt(np.float64(2.25))), float(sqrt(-1.0))
+    (1.5, nan)
+    """
+    if isinstance(v, np.ndarray):
+        return np.sqrt(v)
+    return np.float64(math.sqrt(v)) if v >= 0.0 else np.float64(math.nan)
+
+
+def hypot(a: Any, b: Any) -> Any:
+    r""":math:`\sqrt{a^2 + b^2}` without overflow.
+
+    >>> float(hypot(3.0, 4.0))
+    5.0
+    """
+    if is_array(a, b):
+        return np.hypot(a, b)
+    return np.float64(math.hypot(a, b))
+
+
+def atan2(y: Any, x: Any) -> Any:
+    """The angle of (x, y), [rad] (-π…π).
+
+    >>> round(float(atan2(1.0, -1.0)) / math.pi, 12)
+    0.75
+    """
+    if is_array(y, x):
+        return np.arctan2(y, x)
+    return np.float64(math.atan2(y, x))
+
+
+def tan(v: Any) -> Any:
+    """Tangent of an angle, [rad]; NaN at ±inf.
+
+    >>> round(float(tan(math.pi / 4)), 12)
+    1.0
+    """
+    if isinstance(v, np.ndarray):
+        return np.tan(v)
+    return np.float64(math.tan(v)) if math.isfinite(v) else np.float64(math.nan)
+
+
+def log1p(v: Any) -> Any:
+    """:math:`\\ln(1 + v)`, accurate for small v; -inf at -1, NaN below.
+
+    >>> float(log1p(-1.0)), float(log1p(-2.0)), float(log1p(0.0))
+    (-inf, nan, 0.0)
+    """
+    if isinstance(v, np.ndarray):
+        return np.log1p(v)
+    if v > -1.0:
+        return np.float64(math.log1p(v))
+    return np.float64(-math.inf) if v == -1.0 else np.float64(math.nan)
+
+
+def any_true(mask: Any) -> bool:
+    """True if ``mask`` holds at any point (one design: if it holds)."""
+    return bool(mask.any()) if isinstance(mask, np.ndarray) else bool(mask)
+
+
+def all_true(mask: Any) -> bool:
+    """True if ``mask`` holds at every point (one design: if it holds)."""
+    return bool(mask.all()) if isinstance(mask, np.ndarray) else bool(mask)
+
+
+def asin(v: Any) -> Any:
+    """Arcsine, [rad]; NaN outside [-1, 1].
+
+    >>> round(float(asin(0.5)) * 6.0 / math.pi, 12), float(asin(2.0))
+    (1.0, nan)
+    """
+    if isinstance(v, np.ndarray):
+        return np.arcsin(v)
+    return np.float64(math.asin(v)) if -1.0 <= v <= 1.0 else np.float64(math.nan)
