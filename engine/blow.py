@@ -281,11 +281,13 @@ def joint_rate(
 # ---------------------------------------------------------------------------
 
 
-def rigid_blow_torque(energy: float, stiffness: float) -> float:
+def rigid_blow_torque(energy: Any, stiffness: Any) -> Any:
     r"""Peak torque of a blow into a fixed struck end.
 
     .. math::
         M = \sqrt{2 E C}
+
+    Arguments may be floats (a float back) or numpy arrays of one shape.
 
     Parameters
     ----------
@@ -311,7 +313,12 @@ def rigid_blow_torque(energy: float, stiffness: float) -> float:
     >>> round(rigid_blow_torque(0.5 * 21.07 * (150 * math.pi / 30) ** 2, 203.4), 1)
     1028.3
     """
-    return math.sqrt(2.0 * energy * stiffness)
+    return _sqrt(2.0 * energy * stiffness)
+
+
+def _sqrt(v: Any) -> Any:
+    """√v: math.sqrt of a float (a float back, ValueError below 0), np.sqrt of an array."""
+    return np.sqrt(v) if isinstance(v, np.ndarray) else math.sqrt(v)
 
 
 def energy_blow(
@@ -1091,7 +1098,7 @@ class BlowSeries:
     first: BlowOutcome | None = None
 
 
-def energy_peak_error(p: BlowProblem, peak: float) -> float:
+def energy_peak_error(p: BlowProblem, peak: Any) -> Any:
     r"""A-priori relative error of the energy rung's *peak spring torque*.
 
     .. math::
@@ -1106,8 +1113,9 @@ def energy_peak_error(p: BlowProblem, peak: float) -> float:
     Parameters
     ----------
     p : BlowProblem
-        Tool, struck side and joint
-    peak : float
+        Tool, struck side and joint (its numbers may be arrays of one shape, one
+        design each)
+    peak : float or array
         The energy rung's peak torque T_p, [N*m]
 
     Returns
@@ -1119,7 +1127,8 @@ def energy_peak_error(p: BlowProblem, peak: float) -> float:
     0.817
     """
     jr = p.tool_inertia * p.struck_inertia / (p.tool_inertia + p.struck_inertia)
-    return p.speed * math.sqrt(p.stiffness * jr) / max(peak, 1e-300)
+    tiny = np.maximum(peak, 1e-300) if isinstance(peak, np.ndarray) else max(peak, 1e-300)
+    return p.speed * _sqrt(p.stiffness * jr) / tiny
 
 
 def blow_series(

@@ -21,7 +21,6 @@ from .. import clutch as cl
 from .. import nutrunner as nr
 from .. import preload as pl
 from ..blow import (
-    ISO5393_ANGLE,
     BlowProblem,
     blow_series,
     blow_series_array,
@@ -423,11 +422,14 @@ _OUTPUTS: tuple[Output, ...] = (
 
 @dataclasses.dataclass
 class _Tool:
-    energy: float
-    inertia: float
-    stiffness: float
-    drive: float
-    notes: list[str]
+    """The striking tool at the nut: floats for one design, arrays for many."""
+
+    energy: Any  # after the blow efficiency [J]
+    inertia: Any  # J_t [kg·m²]
+    stiffness: Any  # C [N·m/rad]
+    drive: Any  # N, net drive during the blow [N·m]
+    fails: Any  # where the arithmetic fails (a spindle speed or stiffness that underflows)
+    notes: list[str]  # what the source took from the tool model (one design)
 
 
 def _need(x: Mapping[str, Any], names: tuple[str, ...], why: str) -> None:
@@ -517,46 +519,64 @@ def _striker_note(s: _Striker) -> str:
     )
 
 
-def _tool(x: Mapping[str, Any]) -> _Tool:
+def _tool(x: Mapping[str, Any], one: bool) -> _Tool:
+    """The source's tool: energy (after the efficiency), inertia, stiffness and drive.
+
+    One procedure for one design (floats) and many (arrays of one shape); ``fails``
+    marks the designs where the arithmetic fails (a spindle speed or a stiffness that
+    underflows to 0 with inputs at their declared extremes), and a striker the striker
+    model refuses raises its reason for one design.
+    """
     src = x["source"]
     notes: list[str] = []
-    drive = float(x["drive_torque"] or 0.0)
+    drive = _or_zero(x["drive_torque"])
+    fails: Any = False
     if src == "energy":
         _need(x, ("tool_energy", "tool_inertia", "tool_stiffness"), "with source 'energy'")
-        e, j, c = float(x["tool_energy"]), float(x["tool_inertia"]), float(x["tool_stiffness"])
+        e, j, c = x["tool_energy"], x["tool_inertia"], x["tool_stiffness"]
     elif src == "nutrunner":
         _need(x, _NR_NAMES, "with source 'nutrunner'")
         w = x["motor_speed"]
-        e = float(nr.kinetic_energy(w, *(x[n] for n in _NR_NAMES[1:12])))
+        e = nr.kinetic_energy(w, *(x[n] for n in _NR_NAMES[1:12]))
         w3 = nr.flywheel_speed(w, x["motor_pulley_diameter"], x["flywheel_diameter"])
-        w5 = float(nr.spindle_speed(w3, x["drive_gear_diameter"], x["spindle_gear_diameter"]))
-        j = 2.0 * e / (w5 * w5)
+        w5 = nr.spindle_speed(w3, x["drive_gear_diameter"], x["spindle_gear_diameter"])
         g = x["shear_modulus"]
         c7 = nr.torsional_stiffness(g, x["shaft_diameter"], x["shaft_length"])
         c8 = nr.torsional_stiffness(g, x["spindle_diameter"], x["spindle_length"])
-        c = c7 * c8 / (c7 + c8)
-        drag = (x["spindle_count"] - 1) * x["idle_spindle_friction_torque"]
-        feed = float(x["coupling_slip_torque"] or 0.0) * w / w5
-        drive += feed - drag
-        notes.append(
-            f"nut-runner: drive energy T = {e:.4g} J [000, eq. 3–4] at spindle speed "
-            f"{w5 / RPM:.0f} rpm, i.e. J_t = 2T/ω5² = {j:.4g} kg·m² at the spindle; C = C7·C8/"
-            f"(C7 + C8) = {c:.4g} N·m/rad [000, eq. 7–9] (the paper's convention, gear ratio "
-            f"ignored); idle spindles take (z − 1)·M_tr = {drag:.4g} N·m [000, eq. 10]"
-            + (f", the slipping coupling 1 feeds {feed:.4g} N·m [000, text]" if feed else "")
-        )
+        fails = (w5 * w5 == 0.0) | (c7 + c8 == 0.0)
+        if one and fails:
+            raise ZeroDivisionError("the spindle speed or the shaft stiffness underflows to 0")
+        with np.errstate(all="ignore"):
+            j = 2.0 * e / (w5 * w5)
+            c = c7 * c8 / (c7 + c8)
+            drag = (x["spindle_count"] - 1) * x["idle_spindle_friction_torque"]
+            feed = _or_zero(x["coupling_slip_torque"]) * w / w5
+        drive = drive + (feed - drag)
+        if one:
+            notes.append(
+                f"nut-runner: drive energy T = {float(e):.4g} J [000, eq. 3–4] at spindle "
+                f"speed {float(w5) / RPM:.0f} rpm, i.e. J_t = 2T/ω5² = {float(j):.4g} kg·m² "
+                f"at the spindle; C = C7·C8/(C7 + C8) = {float(c):.4g} N·m/rad [000, eq. 7–9] "
+                "(the paper's convention, gear ratio ignored); idle spindles take (z − 1)·M_tr "
+                f"= {float(drag):.4g} N·m [000, eq. 10]"
+                + (
+                    f", the slipping coupling 1 feeds {float(feed):.4g} N·m [000, text]"
+                    if feed
+                    else ""
+                )
+            )
     elif src == "rare_impact":
         _need(x, (*_RI_NAMES, "tool_stiffness"), "with source 'rare_impact'")
         striker = _striker(x)
-        if bool(striker.refused):
-            release_speed_of(striker.design)  # raises the striker model's reason
-        j, e = float(striker.inertia), float(striker.energy)
-        c = float(x["tool_stiffness"])
-        notes.append(_striker_note(striker))
+        j, e, fails = striker.inertia, striker.energy, striker.refused
+        c = x["tool_stiffness"]
+        if one:
+            if fails:
+                release_speed_of(striker.design)  # raises the striker model's reason
+            notes.append(_striker_note(striker))
     else:
         raise AssertionError(src)
-    eta = float(x["blow_efficiency"])
-    return _Tool(eta * e, j, c, drive, notes)
+    return _Tool(x["blow_efficiency"] * e, j, c, drive, fails, notes)
 
 
 # --------------------------------------------------------------------------- the joint
@@ -589,24 +609,27 @@ def _thread(x: Mapping[str, Any]) -> tuple[Any, float, list[str]] | None:
     return bolt, kg + kk, _bolt_notes(notes)
 
 
-def _target(x: Mapping[str, Any], per_preload: float | None) -> float | None:
+def _target(x: Mapping[str, Any], per_preload: Any) -> Any:
+    """The target joint torque (floats or arrays; None without a target)."""
     if x.get("target_torque") is not None:
-        return float(x["target_torque"])
+        return x["target_torque"]
     if x.get("target_preload") is not None:
         if per_preload is None:
             raise InputOutOfRange(
                 "target_preload needs the thread (thread_diameter) for the tightening relation",
                 field="thread_diameter",
             )
-        return float(x["target_preload"]) * per_preload
+        return x["target_preload"] * per_preload
     return None
 
 
-def _rate(x: Mapping[str, Any], target: float | None, thread: Any) -> tuple[float, str]:
+def _rate(x: Mapping[str, Any], target: Any, from_joint: Any) -> Any:
+    """The joint's torque rate k_j (floats or arrays): as given, an ISO 5393 test joint's,
+    or ``from_joint`` (:func:`_joint_rate`, worked out per bolt)."""
     how = x["joint_rate_from"]
     if how == "number":
         _need(x, ("joint_rate",), "with joint_rate_from 'number'")
-        return float(x["joint_rate"]), "torque rate as given"
+        return x["joint_rate"]
     if how.startswith("iso5393"):
         if target is None:
             raise InputOutOfRange(
@@ -614,11 +637,26 @@ def _rate(x: Mapping[str, Any], target: float | None, thread: Any) -> tuple[floa
                 "target_preload and the thread)",
                 field="target_torque",
             )
+        return iso5393_rate(target, how.split("_")[1])
+    return from_joint
+
+
+def _rate_note(x: Mapping[str, Any], target: float | None) -> str | None:
+    """What the torque rate is, for one design (the 'joint' rate's note is its group's)."""
+    how = x["joint_rate_from"]
+    if how == "number":
+        return "torque rate as given"
+    if how.startswith("iso5393"):
         kind = how.split("_")[1]
-        return iso5393_rate(target, kind), (
+        return (
             f"ISO 5393 {kind} test joint: target {target:.4g} N·m reached "
             f"{'30' if kind == 'hard' else '720'}° after snug"
         )
+    return None
+
+
+def _joint_rate(x: Mapping[str, Any], thread: Any) -> tuple[float, str]:
+    """The torque rate of the joint from its compliances and thread, one bolt [004, eq. 8]."""
     if thread is None:
         raise InputOutOfRange(
             "joint_rate_from 'joint' needs thread_diameter", field="thread_diameter"
@@ -655,79 +693,226 @@ def _rate(x: Mapping[str, Any], target: float | None, thread: Any) -> tuple[floa
 # --------------------------------------------------------------------------- rungs
 
 
-def _setup(x: Mapping[str, Any]) -> tuple[_Tool, float, float, BlowProblem, Any]:
-    tool = _tool(x)
-    thread = _thread(x)
-    per = thread[1] if thread else None
+@dataclasses.dataclass
+class _Setup:
+    """A request's tool and joint: floats for one design, arrays for many (one each)."""
+
+    tool: _Tool
+    energy: Any  # E = ½·J_t·ω0², after the blow efficiency [J]
+    speed: Any  # ω0 [rad/s]
+    rate: Any  # k_j [N·m/rad]
+    per: Any  # k_G + k_K [m]; None without a thread
+    target: Any  # the target joint torque [N·m]; None without one
+    refused: Any  # the designs the physics refuses (False for one design: it raises)
+    notes: list[str]  # the rate's and the thread's (one design)
+
+    def problem(self, x: Mapping[str, Any]) -> BlowProblem:
+        """The blow of one design."""
+        return BlowProblem(
+            float(self.tool.inertia),
+            float(x["struck_inertia"]),
+            float(self.tool.stiffness),
+            float(self.speed),
+            float(self.rate),
+            float(x["breakaway_factor"]),
+            float(self.tool.drive),
+            float(x["restitution"]),
+        )
+
+
+def _setup(x: Mapping[str, Any]) -> _Setup:
+    """The tool, the thread's torque per preload, the target and the joint's torque rate.
+
+    One procedure for one design (floats) and many (arrays of one shape), worked out
+    once per call of an estimate, a single run or the array path, from the values the
+    inputs hold now (no cache: a caller may refill its arrays in place). The bolt and a
+    'joint' rate are resolved once per distinct combination of the inputs they read
+    (:func:`_per_group`). For one design a refusal raises its reason; for many the
+    refused designs are marked in ``refused`` (a sweep runs them alone, to say why).
+    """
+    one = not _is_array(x)
+    tool = _tool(x, one)
+    names = _THREAD_INPUTS + (_JOINT_INPUTS if x["joint_rate_from"] == "joint" else ())
+    got, refused, notes, error = _per_group(x, names, _thread_and_joint, 2, one)
+    if one and error is not None:
+        raise error
+    per = None if x.get("thread_diameter") is None else got[0]
     target = _target(x, per)
-    k, _ = _rate(x, target, thread)
-    speed = math.sqrt(2.0 * tool.energy / tool.inertia)
-    p = BlowProblem(
-        tool.inertia,
-        float(x["struck_inertia"]),
-        tool.stiffness,
-        speed,
-        k,
-        float(x["breakaway_factor"]),
-        tool.drive,
-        float(x["restitution"]),
-    )
-    return tool, k, float(x["snug_torque"]), p, thread
+    k = _rate(x, target, got[1])
+    with np.errstate(all="ignore"):
+        speed = _sqrt(2.0 * tool.energy / tool.inertia)
+        energy = 0.5 * tool.inertia * speed**2
+        overflow = _squares_overflow(speed) | _squares_overflow(tool.drive)
+    if one:
+        if overflow:
+            raise OverflowError("the tool's speed or drive torque squared overflows a float")
+        per = None if per is None else float(per)
+        target = None if target is None else float(target)
+        note = _rate_note(x, target)
+        return _Setup(
+            tool,
+            float(energy),
+            float(speed),
+            float(k),
+            per,
+            target,
+            False,
+            ([note] if note else []) + notes,
+        )
+    refused = np.broadcast_to(refused | tool.fails | overflow, _points(x))
+    return _Setup(tool, energy, speed, k, per, target, refused, notes)
+
+
+def _setup_or_none(x: Mapping[str, Any]) -> _Setup | None:
+    """:func:`_setup`, or None where it refuses (an estimate then has none)."""
+    try:
+        return _setup(x)
+    except (ArithmeticError, ValueError):  # EngineError is a ValueError
+        return None
+
+
+#: What :func:`_tool_values` gives, in the order of the outputs.
+_TOOL_OUTPUTS = (
+    "tool_energy_used",
+    "tool_inertia_used",
+    "tool_speed",
+    "tool_stiffness_used",
+    "joint_rate_used",
+    "rigid_torque",
+    "saturation_torque",
+)
+
+
+def _tool_values(x: Mapping[str, Any], s: _Setup) -> dict[str, Any]:
+    """The outputs that follow from the tool and the joint alone (floats or arrays)."""
+    e, c, drive = s.energy, s.tool.stiffness, s.tool.drive
+    with np.errstate(all="ignore"):
+        return {
+            "tool_energy_used": e,
+            "tool_inertia_used": s.tool.inertia,
+            "tool_speed": s.speed,
+            "tool_stiffness_used": c,
+            "joint_rate_used": s.rate,
+            "rigid_torque": rigid_blow_torque(e, c) + drive,
+            # the energy balance's blow into a held nut, N + √(N² + 2EC), over b
+            "saturation_torque": (drive + _sqrt(drive**2 + 2 * e * c)) / x["breakaway_factor"],
+        }
 
 
 #: Outputs whose energy-rung error is the nut's kick (energy_peak_error), not the torque's.
 _PEAK_OUTPUTS = ("peak_torque", "peak_per_blow")
 
 
-_Setup = tuple[_Tool, float, float, BlowProblem, Any]
+def _sqrt(v: Any) -> Any:
+    """√v of a float (math: numpy on one float costs more than the rest of the step) or array."""
+    return np.sqrt(v) if isinstance(v, np.ndarray) else math.sqrt(v)
 
 
-def _energy_errors(x: Mapping[str, Any], setup: _Setup | None = None) -> tuple[float, float] | None:
+def _where(condition: Any, yes: Any, no: Any) -> Any:
+    """``np.where`` for arrays; for one design (a bool) the plain choice, without numpy's cost."""
+    if isinstance(condition, np.ndarray):
+        return np.where(condition, yes, no)
+    return yes if condition else no
+
+
+def _first_blow(x: Mapping[str, Any], s: _Setup) -> tuple[Any, Any]:
+    """(peak torque, joint torque after) of the energy rung's first blow.
+
+    The energy balance of :func:`~engine.blow.energy_blow` (for one design: numpy on a
+    single float costs twice the whole run; measured) or of its array form; the value at
+    a rate ≤ 0 or where the balance has no root is not used (NaN).
+    """
+    args = (s.energy, s.tool.stiffness, _where(s.rate > 0.0, s.rate, 1.0), x["snug_torque"])
+    if isinstance(s.rate, np.ndarray):
+        with np.errstate(all="ignore"):
+            blow = energy_blow_array(*args, x["breakaway_factor"], s.tool.drive)
+        return blow[0], blow[1]
+    try:
+        one = energy_blow(*args, x["breakaway_factor"], s.tool.drive)
+    except (ArithmeticError, ValueError):
+        return math.nan, math.nan
+    return one[0], one[1]
+
+
+def _energy_errors(
+    x: Mapping[str, Any], s: _Setup, first: tuple[Any, Any] | None = None
+) -> tuple[Any, Any]:
     """(error of the joint torques, error of the peak torques) of the energy rung.
 
-    ``setup`` is this call's :func:`_setup` where the caller has it (worked out here
-    otherwise).
+    Floats or arrays as ``s``; NaN where the rung has no estimate (a refused design, a
+    joint with no torque rate). ``first``: the energy rung's first blow where the caller
+    has it (:func:`_first_blow` otherwise).
     """
-    if x["source"] == "clutch":
-        return None
+    peak, _ = _first_blow(x, s) if first is None else first
+    k = s.rate
+    with np.errstate(all="ignore"):
+        kk = _where(k > 0.0, k, 1.0)
+        after = energy_blow_error(
+            s.tool.inertia, x["struck_inertia"], s.tool.stiffness, kk, x["restitution"]
+        )
+        blow = BlowProblem(s.tool.inertia, x["struck_inertia"], s.tool.stiffness, s.speed, kk)
+        peak_error = after + energy_peak_error(blow, peak)
+    bad = s.refused | _where(k > 0.0, False, True)  # no estimate without a torque rate
+    return _where(bad, math.nan, after), _where(bad, math.nan, peak_error)
+
+
+def _rigid_error(x: Mapping[str, Any], s: _Setup) -> Any:
+    """The rigid rung's error: its torque against the energy rung's, plus the latter's error."""
+    first = _first_blow(x, s)
+    after_error, peak_error = _energy_errors(x, s, first)
+    with np.errstate(all="ignore"):
+        after = first[1]
+        rigid = rigid_blow_torque(s.energy, s.tool.stiffness) + s.tool.drive
+        base = _where(peak_error > after_error, peak_error, after_error)
+        bad = s.refused | _where(s.rate > 0.0, False, True)
+        return _where(bad, math.nan, abs(rigid - after) / after + base)
+
+
+def _energy_error(x: Mapping[str, Any], s: _Setup, first: Any = None, peak: bool = True) -> Any:
+    """The energy rung's estimate: of the peak torques (the larger) or of the joint torques.
+
+    For one design an arithmetic failure (floats raise where arrays give inf or NaN) is
+    no estimate (NaN), as on arrays.
+    """
     try:
-        _, k, t0, p, _ = _setup(x) if setup is None else setup
-        if k <= 0.0:
-            return None
-        after = energy_blow_error(p.tool_inertia, p.struck_inertia, p.stiffness, k, p.restitution)
-        peak = energy_blow(p.energy, p.stiffness, k, t0, p.breakaway, p.drive_torque)[0]
-        return after, after + energy_peak_error(p, peak)
+        after, at_peak = _energy_errors(x, s, first)
     except (ArithmeticError, ValueError):
-        return None
+        return math.nan
+    return _where(at_peak > after, at_peak, after) if peak else after
+
+
+def _rigid_estimate_of(x: Mapping[str, Any], s: _Setup) -> Any:
+    """:func:`_rigid_error`; for one design an arithmetic failure is no estimate (NaN)."""
+    try:
+        return _rigid_error(x, s)
+    except (ArithmeticError, ValueError):
+        return math.nan
+
+
+def _estimate(x: Mapping[str, Any], value: Any) -> Any:
+    """An estimate as the runner takes it: a float or None for one design, else an array."""
+    if _is_array(x):
+        return value
+    v = float(value)
+    return v if math.isfinite(v) else None
 
 
 def _energy_estimate(x: Mapping[str, Any]) -> Any:
-    if _is_array(x):
-        if x["source"] == "clutch":
-            return None
-        after, peak = _energy_errors_array(x, _setup_array_or_none(x))
-        return np.where(peak > after, peak, after)  # max(after, peak) as the scalar code
-    errors = _energy_errors(x)
-    return None if errors is None else max(errors)
-
-
-def _rigid_estimate(x: Mapping[str, Any], setup: _Setup | None = None) -> Any:
     if x["source"] == "clutch":
         return None
-    if _is_array(x):
-        return _rigid_estimate_array(x, _setup_array_or_none(x))
-    try:
-        setup = _setup(x) if setup is None else setup
-        _, k, t0, p, _ = setup
-        errors = _energy_errors(x, setup)
-        if errors is None:
-            return None
-        base = max(errors)
-        after = energy_blow(p.energy, p.stiffness, k, t0, p.breakaway, p.drive_torque)[1]
-        rigid = rigid_blow_torque(p.energy, p.stiffness) + p.drive_torque
-        return abs(rigid - after) / after + base
-    except (ArithmeticError, ValueError):
+    s = _setup_or_none(x)
+    if s is None:
+        return np.full(_points(x), np.nan) if _is_array(x) else None
+    return _estimate(x, _energy_error(x, s))
+
+
+def _rigid_estimate(x: Mapping[str, Any]) -> Any:
+    if x["source"] == "clutch":
         return None
+    s = _setup_or_none(x)
+    if s is None:
+        return np.full(_points(x), np.nan) if _is_array(x) else None
+    return _estimate(x, _rigid_estimate_of(x, s))
 
 
 #: With damping the contact force is clipped at zero inside a step (the jaws part): RK4
@@ -741,25 +926,6 @@ def _simulation_estimate(x: Mapping[str, Any]) -> Any:
     if isinstance(x["restitution"], np.ndarray):
         return np.where(x["restitution"] >= 1.0, _SIMULATION_ERROR, _DAMPED_SIMULATION_ERROR)
     return _SIMULATION_ERROR if x["restitution"] >= 1.0 else _DAMPED_SIMULATION_ERROR
-
-
-def _rigid_estimate_array(x: Mapping[str, Any], s: _ArraySetup | None) -> Any:
-    """:func:`_rigid_estimate` at many points (NaN where the scalar form gives None).
-
-    ``s``: this call's :func:`_setup_array` (None where it refuses the request).
-    """
-    if s is None:
-        return np.full(_points(x), np.nan)
-    after_err, peak_err = _energy_errors_array(x, s)
-    base = np.where(peak_err > after_err, peak_err, after_err)
-    with np.errstate(all="ignore"):
-        k = np.asarray(s.rate, dtype=float)
-        kk = np.where(k > 0.0, k, 1.0)
-        after = energy_blow_array(
-            s.energy, s.stiffness, kk, x["snug_torque"], x["breakaway_factor"], s.drive
-        )[1]
-        rigid = np.sqrt(2.0 * s.energy * s.stiffness) + s.drive
-        return np.where(s.refused | ~(k > 0.0), np.nan, np.abs(rigid - after) / after + base)
 
 
 # --------------------------------------------------------------------------- compute
@@ -906,27 +1072,17 @@ def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
 def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if x["source"] == "clutch":
         return _compute_clutch(x, ctx)
-    tool, k, t0, p, thread = _setup(x)
-    notes = list(tool.notes)
-    per = thread[1] if thread else None
-    target = _target(x, per)
-    notes.append(_rate(x, target, thread)[1])
-    if thread:
-        notes += thread[2]
+    s = _setup(x)
+    p = s.problem(x)
+    t0 = float(x["snug_torque"])
+    notes = s.tool.notes + s.notes
+    per, target = s.per, s.target
     max_blows = int(x["max_blows"])
     if target is not None and t0 >= target:
         raise InputOutOfRange("snug_torque must be below the target torque", field="snug_torque")
-    e = p.energy
-    saturation = (p.drive_torque + math.sqrt(p.drive_torque**2 + 2 * e * p.stiffness)) / p.breakaway
-    tool_values: dict[str, Any] = {
-        "tool_energy_used": e,
-        "tool_inertia_used": p.tool_inertia,
-        "tool_speed": p.speed,
-        "tool_stiffness_used": p.stiffness,
-        "joint_rate_used": k,
-        "rigid_torque": rigid_blow_torque(e, p.stiffness) + p.drive_torque,
-        "saturation_torque": saturation,
-    }
+    e = s.energy
+    tool_values: dict[str, Any] = {n: float(v) for n, v in _tool_values(x, s).items()}
+    saturation = tool_values["saturation_torque"]
     if not ctx.wants(*(o.name for o in _OUTPUTS if o.name not in tool_values)):
         notes.append("no requested output needs the blows: none was run")
         return Result(
@@ -951,12 +1107,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
     n = len(series.torque_after)
     values: dict[str, Any] = {
-        "tool_energy_used": e,
-        "tool_inertia_used": p.tool_inertia,
-        "tool_speed": p.speed,
-        "tool_stiffness_used": p.stiffness,
-        "joint_rate_used": k,
-        "rigid_torque": rigid_blow_torque(e, p.stiffness) + p.drive_torque,
+        **{name: tool_values[name] for name in _TOOL_OUTPUTS[:6]},
         "peak_torque": series.peak[0],
         "nut_rotation": series.rotation[0],
         "torque_after_first_blow": series.torque_after[0],
@@ -1007,10 +1158,11 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "(M does not follow from an energy balance with the joint); see 'energy' and "
             "'simulation'"
         )
-        error = _rigid_estimate(x, (tool, k, t0, p, thread))
+        error = _estimate(x, _rigid_estimate_of(x, s))
     elif ctx.rung == "energy":
-        errors = _energy_errors(x, (tool, k, t0, p, thread))
-        error = None if errors is None else errors[1 if ctx.wants(*_PEAK_OUTPUTS) else 0]
+        # the estimate from the first blow the rung ran (energy_blow: the same balance)
+        blow1 = (series.peak[0], series.torque_after[0])
+        error = _estimate(x, _energy_error(x, s, blow1, peak=ctx.wants(*_PEAK_OUTPUTS)))
         notes.append(
             "energy: E + N·φ_t = T_p²/(2C) + (T_p² − T_0²)/(2k_j) per blow, struck inertia and "
             "damping neglected; the estimated error concerns the joint torque after each blow, "
@@ -1068,7 +1220,8 @@ _JOINT_INPUTS = ("clamped_compliance", "clamped_length", "bolt_compliance", "you
 
 
 def _is_array(x: Mapping[str, Any]) -> bool:
-    return any(isinstance(v, np.ndarray) for v in x.values())
+    """Whether ``x`` holds many designs (some input an array) rather than one."""
+    return np.ndarray in map(type, x.values())  # the scan runs in C: a single run asks often
 
 
 def _points(x: Mapping[str, Any]) -> tuple[int, ...]:
@@ -1084,69 +1237,44 @@ def _or_zero(v: Any) -> Any:
     )
 
 
-def _tool_array(x: Mapping[str, Any]) -> tuple[Any, Any, Any, Any, Any]:
-    """:func:`_tool` on arrays: (energy after the efficiency, inertia, stiffness, drive, fails).
-
-    ``fails`` marks the points where the scalar code divides by zero (a spindle speed or a
-    stiffness that underflows to 0 with inputs at their declared extremes).
-    """
-    src = x["source"]
-    drive = _or_zero(x["drive_torque"])
-    fails: Any = False
-    if src == "energy":
-        _need(x, ("tool_energy", "tool_inertia", "tool_stiffness"), "with source 'energy'")
-        e, j, c = x["tool_energy"], x["tool_inertia"], x["tool_stiffness"]
-    elif src == "nutrunner":
-        _need(x, _NR_NAMES, "with source 'nutrunner'")
-        w = x["motor_speed"]
-        e = nr.kinetic_energy(w, *(x[n] for n in _NR_NAMES[1:12]))
-        w3 = nr.flywheel_speed(w, x["motor_pulley_diameter"], x["flywheel_diameter"])
-        w5 = nr.spindle_speed(w3, x["drive_gear_diameter"], x["spindle_gear_diameter"])
-        j = 2.0 * e / (w5 * w5)
-        g = x["shear_modulus"]
-        c7 = nr.torsional_stiffness(g, x["shaft_diameter"], x["shaft_length"])
-        c8 = nr.torsional_stiffness(g, x["spindle_diameter"], x["spindle_length"])
-        c = c7 * c8 / (c7 + c8)
-        drag = (x["spindle_count"] - 1) * x["idle_spindle_friction_torque"]
-        feed = _or_zero(x["coupling_slip_torque"]) * w / w5
-        drive = drive + (feed - drag)
-        fails = (w5 * w5 == 0.0) | (c7 + c8 == 0.0)
-    elif src == "rare_impact":
-        _need(x, (*_RI_NAMES, "tool_stiffness"), "with source 'rare_impact'")
-        striker = _striker(x)
-        j, e, fails = striker.inertia, striker.energy, striker.refused
-        c = x["tool_stiffness"]
-    else:
-        raise AssertionError(src)
-    return x["blow_efficiency"] * e, j, c, drive, fails
-
-
 def _squares_overflow(v: Any) -> Any:
     """Where Python's ``v**2`` raises OverflowError (a finite value whose square is not)."""
+    if not isinstance(v, np.ndarray):
+        f = float(v)
+        return math.isfinite(f) and not math.isfinite(f * f)
     return np.isfinite(v) & ~np.isfinite(np.asarray(v, dtype=float) ** 2)
 
 
 def _per_group(
-    x: Mapping[str, Any], names: tuple[str, ...], fn: Any, width: int
-) -> tuple[np.ndarray, np.ndarray, list[str]]:
+    x: Mapping[str, Any], names: tuple[str, ...], fn: Any, width: int, one: bool
+) -> tuple[Any, Any, list[str], EngineError | None]:
     """``fn`` (scalar inputs -> (floats, notes)) once per distinct combination of ``names``.
 
-    Returns (values of shape (width, points), refused per point, the first group's notes);
-    a group ``fn`` refuses (EngineError) is NaN and refused.
+    Returns (values of shape (width, points), refused per point, the first group's notes,
+    the first refusal); a group ``fn`` refuses (EngineError) is NaN and refused. One
+    design (``one``: no array among the inputs) is one group: a list of floats.
     """
-    n = _points(x)
+    notes: list[str] = []
+    if one:  # one design: one group, no arrays to fill
+        try:
+            got, notes = fn(x)
+        except EngineError as exc:
+            return [math.nan] * width, True, notes, exc
+        return [float(v) for v in got], False, notes, None
     varied = [k for k in names if isinstance(x.get(k), np.ndarray)]
+    n = _points(x)
     out = np.full((width, *n), np.nan)
     refused = np.zeros(n, dtype=bool)
-    notes: list[str] = []
+    error: EngineError | None = None
     if not varied:
         try:
             got, notes = fn(x)
-        except EngineError:
+        except EngineError as exc:
             refused[...] = True
+            error = exc
         else:
             out[:] = np.asarray(got, dtype=float).reshape(width, *([1] * len(n)))
-        return out, refused, notes
+        return out, refused, notes, error
     table = np.stack([np.broadcast_to(np.asarray(x[k], dtype=float), n) for k in varied], axis=-1)
     rows, inverse = np.unique(table.reshape(-1, len(varied)), axis=0, return_inverse=True)
     inverse = inverse.reshape(n)
@@ -1158,12 +1286,13 @@ def _per_group(
             point[k] = v
         try:
             got, group_notes = fn(point)
-        except EngineError:
+        except EngineError as exc:
             refused |= at
+            error = error or exc
             continue
         notes = notes or group_notes
         out[:, at] = np.asarray(got, dtype=float).reshape(width, 1)
-    return out, refused, notes
+    return out, refused, notes, error
 
 
 def _thread_and_joint(x: Mapping[str, Any]) -> tuple[tuple[float, float], list[str]]:
@@ -1173,90 +1302,9 @@ def _thread_and_joint(x: Mapping[str, Any]) -> tuple[tuple[float, float], list[s
     k = math.nan
     notes = [] if thread is None else list(thread[2])
     if x["joint_rate_from"] == "joint":
-        k, note = _rate(x, None, thread)
-        notes.append(note)
+        k, note = _joint_rate(x, thread)
+        notes.insert(0, note)
     return (per, k), notes
-
-
-@dataclasses.dataclass
-class _ArraySetup:
-    energy: Any
-    inertia: Any
-    stiffness: Any
-    drive: Any
-    speed: Any
-    rate: Any
-    per: Any  # None without a thread
-    target: Any  # None without a target
-    refused: np.ndarray
-    notes: list[str]
-
-
-def _setup_array(x: Mapping[str, Any]) -> _ArraySetup:
-    """:func:`_setup` (and :func:`_target`, :func:`_rate`) at many points.
-
-    Worked out once per call of an estimate or of the array path, from the values the
-    inputs hold now (no cache: a caller may refill its arrays in place).
-    """
-    e_tool, j, c, drive, fails = _tool_array(x)
-    names = _THREAD_INPUTS + (_JOINT_INPUTS if x["joint_rate_from"] == "joint" else ())
-    got, refused, notes = _per_group(x, names, _thread_and_joint, 2)
-    per = None if x.get("thread_diameter") is None else got[0]
-    target: Any = None
-    if x.get("target_torque") is not None:
-        target = x["target_torque"]
-    elif x.get("target_preload") is not None:
-        if per is None:
-            _target(x, None)  # raises: a target preload needs the thread
-        target = x["target_preload"] * per
-    how = x["joint_rate_from"]
-    if how == "number":
-        _need(x, ("joint_rate",), "with joint_rate_from 'number'")
-        k = x["joint_rate"]
-    elif how.startswith("iso5393"):
-        if target is None:
-            _rate(x, None, None)  # raises: a test joint needs a target
-        k = target / ISO5393_ANGLE[how.split("_")[1]]
-    else:
-        k = got[1]
-    with np.errstate(all="ignore"):
-        speed = np.sqrt(2.0 * e_tool / j)
-        energy = 0.5 * j * speed**2
-        # the scalar code raises there (OverflowError of speed**2, ZeroDivisionError): refused
-        refused = refused | fails | _squares_overflow(speed) | _squares_overflow(drive)
-    refused = np.broadcast_to(refused, _points(x))
-    return _ArraySetup(energy, j, c, drive, speed, k, per, target, refused, notes)
-
-
-def _setup_array_or_none(x: Mapping[str, Any]) -> _ArraySetup | None:
-    """:func:`_setup_array`, or None where it refuses the whole request (an estimate's None)."""
-    try:
-        return _setup_array(x)
-    except EngineError:
-        return None
-
-
-def _energy_errors_array(x: Mapping[str, Any], s: _ArraySetup | None) -> tuple[Any, Any]:
-    """:func:`_energy_errors` at many points (NaN where the scalar form gives None).
-
-    ``s``: this call's :func:`_setup_array` (None where it refuses the request).
-    """
-    if s is None:
-        nan = np.full(_points(x), np.nan)
-        return nan, nan
-    with np.errstate(all="ignore"):
-        k = np.asarray(s.rate, dtype=float)
-        js, rest = x["struck_inertia"], x["restitution"]
-        ratio = s.stiffness / (s.stiffness + k)
-        after = 2.0 * js / s.inertia * ratio * ratio + 0.5 * (1.0 - rest**2)
-        kk = np.where(k > 0.0, k, 1.0)
-        peak = energy_blow_array(
-            s.energy, s.stiffness, kk, x["snug_torque"], x["breakaway_factor"], s.drive
-        )[0]
-        jr = s.inertia * js / (s.inertia + js)
-        peak_err = s.speed * np.sqrt(s.stiffness * jr) / np.maximum(peak, 1e-300)
-        bad = s.refused | ~(k > 0.0)
-        return np.where(bad, np.nan, after), np.where(bad, np.nan, after + peak_err)
 
 
 def _nullable(column: Any, null: np.ndarray) -> np.ndarray:
@@ -1274,7 +1322,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
         raise EngineError(f"blow.joint has no array path for the rung {ctx.rung!r}")
     if x["source"] == "clutch":
         return _vectorized_clutch(x, ctx)
-    s = _setup_array(x)
+    s = _setup(x)
     n = _points(x)
     t0 = x["snug_torque"]
     dead = s.refused.copy()
@@ -1283,11 +1331,9 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     lo, hi = x.get("preload_min"), x.get("preload_max")
     if s.per is not None and lo is not None and hi is not None:
         dead |= np.broadcast_to(lo > hi, n)  # "preload_min must not exceed preload_max"
-    e, c, drive = s.energy, s.stiffness, s.drive
+    e, c, drive = s.energy, s.tool.stiffness, s.tool.drive
     dead |= np.broadcast_to(e == 0.0, n)  # joint_energy_fraction divides by it: refused
     with np.errstate(all="ignore"):
-        saturation = (drive + np.sqrt(drive**2 + 2 * e * c)) / x["breakaway_factor"]
-        rigid = np.sqrt(2.0 * e * c) + drive
         series = blow_series_array(
             e,
             c,
@@ -1300,16 +1346,10 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             max_blows=x["max_blows"],
         )
         raw: dict[str, Any] = {
-            "tool_energy_used": e,
-            "tool_inertia_used": s.inertia,
-            "tool_speed": s.speed,
-            "tool_stiffness_used": c,
-            "joint_rate_used": s.rate,
-            "rigid_torque": rigid,
+            **_tool_values(x, s),
             "peak_torque": series.peak,
             "torque_after_first_blow": series.torque_after,
             "final_torque": series.final_torque,
-            "saturation_torque": saturation,
             "energy_supplied": e * series.blows,
         }
         if ctx.rung == "energy":
