@@ -931,6 +931,44 @@ def _simulation_estimate(x: Mapping[str, Any]) -> Any:
 # --------------------------------------------------------------------------- compute
 
 
+def _window_verdict(preload: Any, lo: Any, hi: Any) -> Any:
+    """'below', 'within' or 'above' the window [lo, hi] (either limit may be None).
+
+    A str for one design, an object array for many; a preload above the upper limit
+    is 'above' even where it is also below the lower one (a window given upside down).
+
+    >>> _window_verdict(80e3, 70e3, 100e3), _window_verdict(60e3, 70e3, None)
+    ('within', 'below')
+    >>> _window_verdict(np.array([60e3, 80e3, 120e3]), 70e3, 100e3).tolist()
+    ['below', 'within', 'above']
+    """
+    below = False if lo is None else preload < lo
+    above = False if hi is None else preload > hi
+    if isinstance(below, np.ndarray) or isinstance(above, np.ndarray):
+        return np.where(above, "above", np.where(below, "below", "within")).astype(object)
+    return "above" if above else ("below" if below else "within")
+
+
+def _clutch_verdict(f_lo: Any, f_hi: Any, lo: Any, hi: Any) -> tuple[Any, Any]:
+    """(within, verdict) of the clutch's preloads [f_lo, f_hi] against [lo, hi].
+
+    Within when the whole delivered window lies inside; else 'below' where a non-zero
+    lower limit is undercut, 'above' otherwise. Floats (a bool and a str back) or arrays.
+
+    >>> _clutch_verdict(15e3, 28e3, 15e3, 30e3), _clutch_verdict(14e3, 31e3, 15e3, 30e3)
+    ((True, 'within'), (False, 'below'))
+    >>> ok, v = _clutch_verdict(np.array([16e3, 16e3]), np.array([28e3, 31e3]), 15e3, None)
+    >>> ok.tolist(), v.tolist()
+    ([True, True], ['within', 'within'])
+    """
+    ok = np.logical_and(True if lo is None else f_lo >= lo, True if hi is None else f_hi <= hi)
+    below = False if lo is None else np.logical_and(lo != 0.0, f_lo < lo)
+    verdict = np.where(ok, "within", np.where(below, "below", "above"))
+    if verdict.ndim == 0:
+        return bool(ok), str(verdict)
+    return ok, verdict.astype(object)
+
+
 def _verdict(
     x: Mapping[str, Any], preload: float | None, notes: list[str]
 ) -> tuple[Any, list[Check]]:
@@ -942,11 +980,7 @@ def _verdict(
         return None, []
     if lo is not None and hi is not None and lo > hi:
         raise InputOutOfRange("preload_min must not exceed preload_max", field="preload_min")
-    verdict = "within"
-    if lo is not None and preload < lo:
-        verdict = "below"
-    if hi is not None and preload > hi:
-        verdict = "above"
+    verdict = _window_verdict(preload, lo, hi)
     window = f"[{quantity(lo or 0.0, 'kN')}, {quantity(hi, 'kN') if hi else '∞'}]"
     check = Check(
         "preload_window",
@@ -1050,8 +1084,7 @@ def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
     checks: list[Check] = []
     lo, hi = x.get("preload_min"), x.get("preload_max")
     if lo is not None or hi is not None:
-        ok = (lo is None or f_lo >= lo) and (hi is None or f_hi <= hi)
-        values["preload_verdict"] = "within" if ok else ("below" if lo and f_lo < lo else "above")
+        ok, values["preload_verdict"] = _clutch_verdict(f_lo, f_hi, lo, hi)
         checks.append(
             Check(
                 "preload_window",
@@ -1377,12 +1410,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     # a point the model refuses reports no check; if every point is refused, no check at all
     reports = not bool(dead.all())
     if s.per is not None and (lo is not None or hi is not None):
-        final = values["final_preload"]
-        verdict = np.full(n, "within", dtype=object)
-        if lo is not None:
-            verdict[np.broadcast_to(final < lo, n)] = "below"
-        if hi is not None:
-            verdict[np.broadcast_to(final > hi, n)] = "above"
+        verdict = np.broadcast_to(_window_verdict(values["final_preload"], lo, hi), n).copy()
         verdict[dead] = None
         values["preload_verdict"] = verdict
         if reports:
@@ -1436,14 +1464,9 @@ def _vectorized_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
     lo, hi = x.get("preload_min"), x.get("preload_max")
     if lo is not None or hi is not None:
         f_lo, f_hi = values["delivered_preload_min"], values["delivered_preload_max"]
-        ok = np.ones(n, dtype=bool)
-        if lo is not None:
-            ok &= np.broadcast_to(f_lo >= lo, n)
-        if hi is not None:
-            ok &= np.broadcast_to(f_hi <= hi, n)
-        # the scalar rule: "below" when a (non-zero) lower limit is undercut, else "above"
-        below = np.broadcast_to((lo != 0.0) & (f_lo < lo), n) if lo is not None else False
-        verdict = np.where(ok, "within", np.where(below, "below", "above")).astype(object)
+        ok, verdict = _clutch_verdict(f_lo, f_hi, lo, hi)
+        ok = np.broadcast_to(ok, n)
+        verdict = np.broadcast_to(verdict, n).copy()
         verdict[dead] = None
         values["preload_verdict"] = verdict
         if not bool(dead.all()):  # a refused point reports no check; all refused: none
