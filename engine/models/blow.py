@@ -734,10 +734,10 @@ def _setup(x: Mapping[str, Any]) -> _Setup:
     tool = _tool(x, one)
     names = _THREAD_INPUTS + (_JOINT_INPUTS if x["joint_rate_from"] == "joint" else ())
     got, refused, notes, error = _per_group(x, names, _thread_and_joint, 2, one)
+    per = None if x.get("thread_diameter") is None else got[0]
+    target = _target(x, per)  # first: a target preload without a thread says so
     if one and error is not None:
         raise error
-    per = None if x.get("thread_diameter") is None else got[0]
-    target = _target(x, per)
     k = _rate(x, target, got[1])
     with np.errstate(all="ignore"):
         speed = _sqrt(2.0 * tool.energy / tool.inertia)
@@ -771,18 +771,6 @@ def _setup_or_none(x: Mapping[str, Any]) -> _Setup | None:
         return None
 
 
-#: What :func:`_tool_values` gives, in the order of the outputs.
-_TOOL_OUTPUTS = (
-    "tool_energy_used",
-    "tool_inertia_used",
-    "tool_speed",
-    "tool_stiffness_used",
-    "joint_rate_used",
-    "rigid_torque",
-    "saturation_torque",
-)
-
-
 def _tool_values(x: Mapping[str, Any], s: _Setup) -> dict[str, Any]:
     """The outputs that follow from the tool and the joint alone (floats or arrays)."""
     e, c, drive = s.energy, s.tool.stiffness, s.tool.drive
@@ -798,6 +786,46 @@ def _tool_values(x: Mapping[str, Any], s: _Setup) -> dict[str, Any]:
             "saturation_torque": (drive + _sqrt(drive**2 + 2 * e * c)) / x["breakaway_factor"],
         }
 
+
+def _blow_values(
+    rung: str,
+    s: _Setup,
+    *,
+    peak: Any,
+    rotation: Any,
+    after: Any,
+    work: Any,
+    final: Any,
+    blows: Any,
+    joint_work: Any,
+) -> dict[str, Any]:
+    """The outputs of the blows (floats for one design, arrays for many).
+
+    From the first blow (peak, rotation, joint torque after, work into the joint), the
+    last blow's joint torque, the number of blows and the work of all of them: the
+    preloads through the tightening relation (with a thread) and the energy account (not
+    on the rigid rung, whose joint torque does not follow from an energy balance).
+    """
+    values: dict[str, Any] = {
+        "peak_torque": peak,
+        "torque_after_first_blow": after,
+        "final_torque": final,
+        "energy_supplied": s.energy * blows,
+    }
+    if rung != "rigid":
+        values["nut_rotation"] = rotation
+        values["joint_energy_fraction"] = work / s.energy
+        values["energy_into_joint"] = joint_work
+    if s.per is not None:
+        values["preload_after_first_blow"] = after / s.per
+        values["final_preload"] = final / s.per
+    return values
+
+
+#: The scalar outputs of the blows' sources, in their order (the clutch's are its own).
+_BLOW_OUTPUTS = tuple(
+    o.name for o in _OUTPUTS if not o.series and not o.name.startswith(("clutch", "delivered"))
+)
 
 #: Outputs whose energy-rung error is the nut's kick (energy_peak_error), not the torque's.
 _PEAK_OUTPUTS = ("peak_torque", "peak_per_blow")
@@ -1135,29 +1163,26 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         deadline=ctx.deadline,
     )
 
-    def preload(t: float) -> float | None:
-        return None if per is None else t / per
-
     n = len(series.torque_after)
-    values: dict[str, Any] = {
-        **{name: tool_values[name] for name in _TOOL_OUTPUTS[:6]},
-        "peak_torque": series.peak[0],
-        "nut_rotation": series.rotation[0],
-        "torque_after_first_blow": series.torque_after[0],
-        "preload_after_first_blow": preload(series.torque_after[0]),
+    if e == 0.0:  # the energy account divides by it (on arrays: the point is refused)
+        raise ZeroDivisionError("the tool's energy underflows to 0 J")
+    found = {
+        **tool_values,
+        **_blow_values(
+            ctx.rung,
+            s,
+            peak=series.peak[0],
+            rotation=series.rotation[0],
+            after=series.torque_after[0],
+            work=series.joint_work[0],
+            final=series.torque_after[-1],
+            blows=n,
+            joint_work=sum(series.joint_work),
+        ),
         "blows_to_target": series.blows_to_target,
-        "final_torque": series.torque_after[-1],
-        "final_preload": preload(series.torque_after[-1]),
-        "saturation_torque": saturation,
-        "joint_energy_fraction": series.joint_work[0] / e,
-        "energy_supplied": e * n,
-        "energy_into_joint": sum(series.joint_work),
     }
-    if ctx.rung == "rigid":
-        # the rigid rung's joint torque does not follow from the energy: no energy account
-        values["joint_energy_fraction"] = None
-        values["energy_into_joint"] = None
-        values["nut_rotation"] = None
+    # null: the preloads without a thread, the energy account on the rigid rung
+    values = {name: found.get(name) for name in _BLOW_OUTPUTS}
     verdict, checks = _verdict(x, values["final_preload"], notes)
     values["preload_verdict"] = verdict
     if target is not None and series.blows_to_target is None:
@@ -1380,18 +1405,18 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
         raw: dict[str, Any] = {
             **_tool_values(x, s),
-            "peak_torque": series.peak,
-            "torque_after_first_blow": series.torque_after,
-            "final_torque": series.final_torque,
-            "energy_supplied": e * series.blows,
+            **_blow_values(
+                ctx.rung,
+                s,
+                peak=series.peak,
+                rotation=series.rotation,
+                after=series.torque_after,
+                work=series.work,
+                final=series.final_torque,
+                blows=series.blows,
+                joint_work=series.joint_work,
+            ),
         }
-        if ctx.rung == "energy":
-            raw["nut_rotation"] = series.rotation
-            raw["joint_energy_fraction"] = series.work / e
-            raw["energy_into_joint"] = series.joint_work
-        if s.per is not None:
-            raw["preload_after_first_blow"] = series.torque_after / s.per
-            raw["final_preload"] = series.final_torque / s.per
     any_dead = bool(dead.any())
     values: dict[str, Any] = {}
     for name, column in raw.items():
