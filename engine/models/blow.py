@@ -127,8 +127,9 @@ _INPUTS: tuple[Param, ...] = (
         "source",
         "1",
         "what strikes the joint: a raw energy and inertia ('energy'), the nut-runner's drive "
-        "[000] ('nutrunner'), the rare-impact wrench's flywheel at its release speed [002] "
-        "('rare_impact'), or a continuous tool limited by a ball clutch [001] ('clutch')",
+        "[000] ('nutrunner'), the rare-impact wrench's flywheel and rollers at impact.rare's "
+        "release speed [002] ('rare_impact'), or a continuous tool limited by a ball clutch "
+        "[001] ('clutch')",
         default="energy",
         kind="choice",
         choices=SOURCES,
@@ -1596,7 +1597,8 @@ BLOW = ModelSpec(
     ),
     source=(
         "Tools: [000] (nut-runner drive energy and stiffness), [002] (rare-impact release "
-        "speed), [001] (ball clutch slipping torque); joint: ISO 5393 test joints, the "
+        "speed and energy, from impact.rare's closed form), [001] (ball clutch slipping "
+        "torque); joint: ISO 5393 test joints, the "
         "tightening relation VDI 2230-1 R13 and the angle relation [004, eq. 8]; the blow: "
         "two-mass torsional impact with stick-slip of the nut (textbook mechanics)."
     ),
