@@ -228,6 +228,8 @@ def rigid_blow_torque(energy: Any, stiffness: Any) -> Any:
     .. math::
         M = \sqrt{2 E C}
 
+    Arguments may be floats (a float back) or numpy arrays of one shape.
+
     Parameters
     ----------
     energy : float or array
@@ -252,8 +254,12 @@ def rigid_blow_torque(energy: Any, stiffness: Any) -> Any:
     >>> round(rigid_blow_torque(0.5 * 21.07 * (150 * math.pi / 30) ** 2, 203.4), 1)
     1028.3
     """
-    m = np.sqrt(2.0 * energy * stiffness)
-    return float(m) if np.ndim(m) == 0 else m
+    return _sqrt(2.0 * energy * stiffness)
+
+
+def _sqrt(v: Any) -> Any:
+    """√v: math.sqrt of a float (a float back, ValueError below 0), np.sqrt of an array."""
+    return np.sqrt(v) if isinstance(v, np.ndarray) else math.sqrt(v)
 
 
 def energy_blow(
@@ -1149,7 +1155,7 @@ class BlowSeries:
     first: BlowOutcome | None = None
 
 
-def energy_peak_error(p: BlowProblem, peak: float) -> float:
+def energy_peak_error(p: BlowProblem, peak: Any) -> Any:
     r"""A-priori relative error of the energy rung's *peak spring torque*.
 
     .. math::
@@ -1164,8 +1170,9 @@ def energy_peak_error(p: BlowProblem, peak: float) -> float:
     Parameters
     ----------
     p : BlowProblem
-        Tool, struck side and joint
-    peak : float
+        Tool, struck side and joint (its numbers may be arrays of one shape, one
+        design each)
+    peak : float or array
         The energy rung's peak torque T_p, [N*m]
 
     Returns
@@ -1177,7 +1184,8 @@ def energy_peak_error(p: BlowProblem, peak: float) -> float:
     0.817
     """
     jr = p.tool_inertia * p.struck_inertia / (p.tool_inertia + p.struck_inertia)
-    return p.speed * math.sqrt(p.stiffness * jr) / max(peak, 1e-300)
+    tiny = np.maximum(peak, 1e-300) if isinstance(peak, np.ndarray) else max(peak, 1e-300)
+    return p.speed * _sqrt(p.stiffness * jr) / tiny
 
 
 def blow_series(

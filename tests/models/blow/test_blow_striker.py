@@ -119,3 +119,30 @@ def test_a_striker_the_striker_model_refuses_is_refused_by_the_blow():
                   "power_spring_preload", np.array([0.0, 0.002]), fidelity="energy")  # fmt: skip
     assert swept.results["tool_speed"][0] is None
     assert swept.results["tool_speed"][1] is not None
+
+
+@pytest.mark.parametrize("geometry", GEOMETRIES)
+def test_a_sweep_of_gravity_refuses_where_single_runs_refuse(geometry):
+    # pointing up, gravity beats the preloads (impact.rare refuses): null in the sweep,
+    # refused alone; elsewhere the sweep's speed and energy are the single runs'
+    # c1·λ1 = 5e4·0.2 mm = 10 N holds the 0.2 kg (plus the rollers' share) up to g ≈ −29
+    base = {
+        **RARE_IMPACT_M16,
+        "roller_geometry": geometry,
+        "power_spring_preload": 0.0002,
+        "auxiliary_spring_preload": 0.0,
+    }
+    values = np.linspace(-100.0, 100.0, 9)
+    swept = sweep(BLOW, base, "gravity", values, fidelity="energy")
+    refused = 0
+    for j, g in enumerate(values):
+        try:
+            alone = run(BLOW, {**base, "gravity": g}, fidelity="energy")
+        except InfeasibleDesign:
+            refused += 1
+            assert swept.results["tool_speed"][j] is None
+            continue
+        for name in ("tool_speed", "tool_energy_used", "final_preload"):
+            assert swept.results[name][j] == pytest.approx(alone.results[name], rel=1e-12)
+    # the paper's stage 1 has no weight: nothing is refused; else g = −100, −75, −50
+    assert refused == (0 if geometry == "paper" else 3)
