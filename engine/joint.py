@@ -114,6 +114,11 @@ class BoltCompliance:
         """δ_S, the sum of the sections, [m/N]."""
         return self.head + self.shank + self.free_thread + self.engaged_thread + self.nut
 
+    @property
+    def engaged(self) -> float:
+        """δ_GM = δ_G + δ_M, the engaged thread with the nut or tapped part, [m/N]."""
+        return self.engaged_thread + self.nut
+
 
 def bolt_compliance(
     diameter: float,

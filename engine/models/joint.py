@@ -758,7 +758,7 @@ def _solve(
         "bolt_compliance_head": bolt_c.head,
         "bolt_compliance_shank": bolt_c.shank,
         "bolt_compliance_free_thread": bolt_c.free_thread,
-        "bolt_compliance_engaged": bolt_c.engaged_thread + bolt_c.nut,
+        "bolt_compliance_engaged": bolt_c.engaged,
         "clamped_compliance": delta_p,
         "cone_tangent": parts.tangent,
         "cone_limit_diameter": parts.limit_diameter,
@@ -800,7 +800,6 @@ def _solve(
         "_alpha_req": alpha_req,
         "_fa_sep_any": fa_sep_any,
         "_need_slip": need,
-        "_nominal": nominal,
         "_rule": rule,
         "_method": method,
         "_mu": (mu_g_lo, mu_g_hi, mu_k_lo, mu_k_hi),
@@ -941,7 +940,7 @@ def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[s
     f_a, f_kerf, nu = float(x["working_load"]), s["required_clamp_force"], float(x["utilization"])
     lo_rule, hi_rule, why = s["_rule"]
     stress, s_f = s["working_stress"], s["yield_safety"]
-    sigma0 = s["_nominal"] / s["smallest_area"]
+    sigma0 = s["preload_stress_ratio"] * bolt.yield_strength  # σ0 = F_M,nom/A_0
     need = s["_need_slip"]
     out = {
         "R7_window_fits": f"required F_M,max = α_A F_M,min = {alpha_req:.3g} × {_kn(req_min)} = "
