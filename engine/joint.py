@@ -1,11 +1,11 @@
 r"""The bolted joint after VDI 2230 Part 1: compliances, service loads, losses, preload window.
 
 Pure functions on SI floats, one per calculation step of VDI 2230-1:2015
-(steps R0–R13). The relations the model's array path uses (compliances, cone,
-embedding, losses, preload bounds, service stress, endurance limit) also take
-numpy arrays, one entry per point of a sweep or study (issue 21): math for
-floats (the scalar path's speed and exceptions), numpy for arrays, one formula
-each; ``joint_diagram`` stays scalar (a series for one design). VDI 2230's
+(steps R0–R13). The model (``engine.models.joint``) runs them in one procedure
+for a single design and for a sweep or study alike, so they also take numpy
+arrays, one entry per point (issue 21): math for floats (a single run's speed
+and exceptions), numpy for arrays, one formula each; ``joint_diagram`` stays
+scalar (a series for one design). VDI 2230's
 own text is paywalled and was not available to us; every relation here is
 the one reproduced, with VDI's step and equation symbols, in the open
 secondary sources named in each docstring:
