@@ -399,7 +399,7 @@ def _one_sided(
 ) -> float:
     """∫ dz / A(z) over [start, end] of a cone from d_W at z = 0, capped at D_A (1/m).
 
-    Floats or arrays; an empty interval (end ≤ start) gives 0 through both branches.
+    Floats or arrays (the same lines); an empty interval (end ≤ start) gives 0.
     """
     d_h = hole_diameter
 
@@ -407,30 +407,18 @@ def _one_sided(
         diameter = bearing_diameter + 2.0 * z * tangent
         return _log((diameter - d_h) / (diameter + d_h))
 
-    if not _arrays(start, end, bearing_diameter, hole_diameter, tangent, outer_diameter):
-        if end <= start:
-            return 0.0
-        z_cap = (outer_diameter - bearing_diameter) / (2.0 * tangent)
-        total = 0.0
-        a, b = start, min(end, z_cap)
-        if b > a:
-            total += (g(b) - g(a)) / (math.pi * d_h * tangent)
-        a = max(start, z_cap)
-        if end > a:
-            total += (end - a) / (0.25 * math.pi * (outer_diameter**2 - hole_diameter**2))
-        return total
     empty = end <= start
-    if np.all(empty):  # e.g. the far half of a through-bolted joint for a near plate
-        zero: Any = np.zeros(np.shape(empty))
+    if _every(empty):  # e.g. the far half of a through-bolted joint for a near plate
+        zero: Any = np.zeros(np.shape(empty)) if isinstance(empty, np.ndarray) else 0.0
         return zero
     z_cap = (outer_diameter - bearing_diameter) / (2.0 * tangent)
-    a, b = start, np.minimum(end, z_cap)
-    # arrays: both pieces everywhere (z ≥ 0 keeps the logarithm's argument positive), then
-    # only where the scalar branch would add them
-    cone = np.where(b > a, (g(b) - g(a)) / (math.pi * d_h * tangent), 0.0)
-    a = np.maximum(start, z_cap)
+    a, b = start, _min(end, z_cap)
+    # both pieces everywhere (z ≥ 0 keeps the logarithm's argument positive), each kept
+    # where its interval is not empty
+    cone = _where(b > a, (g(b) - g(a)) / (math.pi * d_h * tangent), 0.0)
+    a = _max(start, z_cap)
     sleeve = (end - a) / (0.25 * math.pi * (outer_diameter**2 - hole_diameter**2))
-    both: Any = (0.0 + cone) + np.where(end > a, sleeve, 0.0)
+    both: Any = (0.0 + cone) + _where(end > a, sleeve, 0.0)
     return both
 
 
@@ -892,21 +880,16 @@ def smallest_section(
     >>> d0.tolist(), which.tolist()
     ([0.0075, 0.010358], ['shank', 'thread'])
     """
-    if _arrays(stress_diameter, *(v for section in sections for v in section)):
-        d0_arr = np.asarray(stress_diameter, dtype=float)
-        shank = np.zeros(d0_arr.shape, dtype=bool)
-        for length, diameter in sections:
-            smaller = (np.asarray(length) > 0.0) & (diameter < d0_arr)
-            d0_arr = np.where(smaller, diameter, d0_arr)
-            shank = shank | smaller
-        words: Any = np.where(shank, "shank", "thread")
-        d0_any: Any = d0_arr
-        return d0_any, words
-    d0, which = stress_diameter, "thread"
+    d0: Any = stress_diameter
+    shank: Any = False
     for length, diameter in sections:
-        if length > 0.0 and diameter < d0:
-            d0, which = diameter, "shank"
-    return d0, which
+        smaller = (length > 0.0) & (diameter < d0)
+        d0 = _where(smaller, diameter, d0)
+        shank = shank | smaller
+    if _arrays(d0, shank):
+        words: Any = np.where(np.broadcast_to(shank, np.shape(d0)), "shank", "thread")
+        return d0, words
+    return d0, "shank" if shank else "thread"
 
 
 def preload_bounds_from_torque(
