@@ -99,6 +99,14 @@ def _where(condition: Any, a: Any, b: Any) -> Any:
     return a if condition else b
 
 
+def _quotient(ok: Any, numerator: Any, denominator: Any, otherwise: float) -> Any:
+    """numerator/denominator where ``ok``, ``otherwise`` elsewhere (floats: not divided there)."""
+    if _arrays(ok, numerator, denominator):
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(ok, numerator / denominator, otherwise)
+    return numerator / denominator if ok else otherwise
+
+
 def _largest(value: Any) -> Any:
     return value.max(initial=0.0) if isinstance(value, np.ndarray) else value
 
@@ -1213,14 +1221,11 @@ def embedding_for_load(
     >>> round(embedding_for_load("Rz10-40", 2e3, 2, 1) * 1e6, 2)
     14.5
     """
-    if _arrays(transverse_load, bearing_faces, interfaces):
-        return np.where(  # type: ignore[return-value]
-            np.asarray(transverse_load) > 0.0,
-            embedding(roughness, "transverse", bearing_faces, interfaces),
-            embedding(roughness, "axial", bearing_faces, interfaces),
-        )
-    load = "transverse" if transverse_load > 0.0 else "axial"
-    return embedding(roughness, load, bearing_faces, interfaces)
+    return _where(
+        transverse_load > 0.0,
+        embedding(roughness, "transverse", bearing_faces, interfaces),
+        embedding(roughness, "axial", bearing_faces, interfaces),
+    )
 
 
 def preload_losses(embedding_force: float, thermal_loss: float) -> float:
@@ -1391,15 +1396,9 @@ def separation_load(assembly_preload: float, losses: float, load_factor_n: float
     >>> round(separation_load(30e3, 2.6e3, 0.1), 1)
     30444.4
     """
-    if _arrays(assembly_preload, losses, load_factor_n):
-        opens = np.asarray(load_factor_n) < 1.0
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return np.where(  # type: ignore[return-value]
-                opens, np.maximum(assembly_preload - losses, 0.0) / (1.0 - load_factor_n), np.inf
-            )
-    if load_factor_n < 1.0:
-        return _max(assembly_preload - losses, 0.0) / (1.0 - load_factor_n)
-    return math.inf
+    return _quotient(
+        load_factor_n < 1.0, _max(assembly_preload - losses, 0.0), 1.0 - load_factor_n, math.inf
+    )
 
 
 def max_working_load(
@@ -1539,13 +1538,9 @@ def torque_tightening_factor(assembly_preload_min: float, assembly_preload_max: 
     >>> round(torque_tightening_factor(31500.0, 64308.0), 4)
     2.0415
     """
-    if _arrays(assembly_preload_min, assembly_preload_max):
-        lo = np.asarray(assembly_preload_min, dtype=float)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return np.where(lo > 0.0, assembly_preload_max / lo, np.inf)  # type: ignore[return-value]
-    if assembly_preload_min > 0.0:
-        return assembly_preload_max / assembly_preload_min
-    return math.inf
+    return _quotient(
+        assembly_preload_min > 0.0, assembly_preload_max, assembly_preload_min, math.inf
+    )
 
 
 def smallest_area(smallest_diameter: float, stress_area: float, which: str) -> float:
@@ -1579,9 +1574,7 @@ def smallest_area(smallest_diameter: float, stress_area: float, which: str) -> f
     >>> round(smallest_area(0.0075, 84.27e-6, "shank") * 1e6, 2)
     44.18
     """
-    if isinstance(which, np.ndarray):
-        return np.where(which == "thread", stress_area, _area(smallest_diameter))
-    return stress_area if which == "thread" else _area(smallest_diameter)
+    return _where(which == "thread", stress_area, _area(smallest_diameter))
 
 
 def max_bolt_force(assembly_preload_max: float, additional_bolt_load: float) -> float:
@@ -1743,11 +1736,7 @@ def fatigue_safety(endurance_limit: float, stress_amplitude: float) -> float:
     >>> round(fatigue_safety(48.88e6, 4.747e6), 3)
     10.297
     """
-    if _arrays(endurance_limit, stress_amplitude):
-        amp = np.asarray(stress_amplitude, dtype=float)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return np.where(amp > 0.0, endurance_limit / amp, np.inf)  # type: ignore[return-value]
-    return endurance_limit / stress_amplitude if stress_amplitude > 0.0 else math.inf
+    return _quotient(stress_amplitude > 0.0, endurance_limit, stress_amplitude, math.inf)
 
 
 def slip_safety(
@@ -1788,15 +1777,12 @@ def slip_safety(
     >>> round(slip_safety(20e3, 1, 0.15, 2e3), 3)
     1.5
     """
-    if _arrays(residual_clamp_force, slip_interfaces, interface_friction, transverse_load):
-        f_q = np.asarray(transverse_load, dtype=float)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return np.where(  # type: ignore[return-value]
-                f_q > 0.0, residual_clamp_force * slip_interfaces * interface_friction / f_q, np.inf
-            )
-    if transverse_load > 0.0:
-        return residual_clamp_force * slip_interfaces * interface_friction / transverse_load
-    return math.inf
+    return _quotient(
+        transverse_load > 0.0,
+        residual_clamp_force * slip_interfaces * interface_friction,
+        transverse_load,
+        math.inf,
+    )
 
 
 def required_slip_safety(working_load: float, working_load_min: float) -> float:
@@ -1827,9 +1813,7 @@ def required_slip_safety(working_load: float, working_load_min: float) -> float:
     >>> required_slip_safety(8e3, 0.0), required_slip_safety(8e3, 8e3)
     (1.8, 1.2)
     """
-    if _arrays(working_load, working_load_min):
-        return np.where(np.asarray(working_load_min) < working_load, 1.8, 1.2)  # type: ignore[return-value]
-    return 1.8 if working_load_min < working_load else 1.2
+    return _where(working_load_min < working_load, 1.8, 1.2)
 
 
 def nominal_preload(assembly_preload_min: float, assembly_preload_max: float) -> float:
