@@ -1,11 +1,11 @@
 r"""The bolted joint after VDI 2230 Part 1: compliances, service loads, losses, preload window.
 
 Pure functions on SI floats, one per calculation step of VDI 2230-1:2015
-(steps R0–R13). The relations the model's array path uses (compliances, cone,
-embedding, losses, preload bounds, service stress, endurance limit) also take
-numpy arrays, one entry per point of a sweep or study (issue 21): math for
-floats (the scalar path's speed and exceptions), numpy for arrays, one formula
-each; ``joint_diagram`` stays scalar (a series for one design). VDI 2230's
+(steps R0–R13). The model (``engine.models.joint``) runs them in one procedure
+for a single design and for a sweep or study alike, so they also take numpy
+arrays, one entry per point (issue 21): math for floats (a single run's speed
+and exceptions), numpy for arrays, one formula each; ``joint_diagram`` stays
+scalar (a series for one design). VDI 2230's
 own text is paywalled and was not available to us; every relation here is
 the one reproduced, with VDI's step and equation symbols, in the open
 secondary sources named in each docstring:
@@ -93,6 +93,28 @@ def _max(a: Any, b: Any) -> Any:
     return b if b > a else a  # what max(a, b) returns, without its call
 
 
+def _where(condition: Any, a: Any, b: Any) -> Any:
+    if isinstance(condition, np.ndarray) or isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return np.where(condition, a, b)
+    return a if condition else b
+
+
+def _quotient(ok: Any, numerator: Any, denominator: Any, otherwise: float) -> Any:
+    """numerator/denominator where ``ok``, ``otherwise`` elsewhere (floats: not divided there)."""
+    if _arrays(ok, numerator, denominator):
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(ok, numerator / denominator, otherwise)
+    return numerator / denominator if ok else otherwise
+
+
+def _largest(value: Any) -> Any:
+    return value.max(initial=0.0) if isinstance(value, np.ndarray) else value
+
+
+def _every(flags: Any) -> bool:
+    return bool(flags.all()) if isinstance(flags, np.ndarray) else bool(flags)
+
+
 def _min(a: Any, b: Any) -> Any:
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
         return np.minimum(a, b)
@@ -113,6 +135,11 @@ class BoltCompliance:
     def total(self) -> float:
         """δ_S, the sum of the sections, [m/N]."""
         return self.head + self.shank + self.free_thread + self.engaged_thread + self.nut
+
+    @property
+    def engaged(self) -> float:
+        """δ_GM = δ_G + δ_M, the engaged thread with the nut or tapped part, [m/N]."""
+        return self.engaged_thread + self.nut
 
 
 def bolt_compliance(
@@ -330,63 +357,44 @@ def unlimited_outer_diameter(grip: float, bearing_diameter: float, joint: str = 
     >>> round(unlimited_outer_diameter(0.040, 0.01663) * 1e3, 2)
     36.09
 
-    Arrays reach the same fixed point (a few Newton steps first, then this iteration):
+    Floats and arrays run the same steps (a few Newton steps, then the fixed-point
+    iteration, each point stopping where it converges):
 
     >>> d = unlimited_outer_diameter(np.array([0.040, 0.010]), 0.01663)
-    >>> bool(abs(d[0] / unlimited_outer_diameter(0.040, 0.01663) - 1.0) < 1e-12)
+    >>> d.tolist() == [unlimited_outer_diameter(0.040, 0.01663),
+    ...                unlimited_outer_diameter(0.010, 0.01663)]
     True
     """
+    grips: Any = grip
+    bearing: Any = bearing_diameter
     if _arrays(grip, bearing_diameter):
-        grips, bearings = np.broadcast_arrays(
+        grips, bearing = np.broadcast_arrays(
             np.asarray(grip, dtype=float), np.asarray(bearing_diameter, dtype=float)
         )
-        result: Any = _unlimited_outer_diameters(grips, bearings, joint)
-        return result
-    outer = bearing_diameter * 2.0
-    for _ in range(200):
-        tan = cone_tangent(grip, bearing_diameter, outer, joint)
-        new = cone_limit_diameter(grip, bearing_diameter, tan, joint)
-        if abs(new - outer) <= 1e-12 * new:
-            return new
-        outer = new
-    return outer
-
-
-def _unlimited_outer_diameters(grip: Any, bearing: Any, joint: str) -> Any:
-    """:func:`unlimited_outer_diameter` point by point on arrays (each stops where it converges).
-
-    A few safeguarded Newton steps on D − D_A,Gr(D) first (where the map's slope
-    w l_K ∂tanφ/∂D is below ½; a plain step elsewhere), then the scalar function's own
-    fixed-point iteration and stopping rule from there: the same fixed point within
-    ~1e-13, in about 5 passes over the arrays instead of ~16.
-    """
     w = 1.0 if joint == "through" else 2.0
-    start = bearing * 2.0
-    outer = start
-    new: Any
+    outer: Any = bearing * 2.0
+    # a few safeguarded Newton steps on D − D_A,Gr(D) (where the map's slope w l_K ∂tanφ/∂D
+    # is below ½; a plain step elsewhere), kept at D ≥ d_W where the cone lives: ~5 passes
+    # instead of ~16 of the plain iteration
     for _ in range(8):
-        tan = cone_tangent(grip, bearing, outer, joint)
-        new = cone_limit_diameter(grip, bearing, tan, joint)
-        slope = np.where(tan > MIN_CONE_TANGENT, w * grip * _CONE_Y_SLOPE[joint] / outer, 0.0)
-        step = np.where(slope < 0.5, (new - outer) / (1.0 - slope), new - outer)
-        outer = outer + step
-        if not np.abs(step).max(initial=0.0) > 1e-13 * np.abs(outer).max(initial=0.0):
+        tan = cone_tangent(grips, bearing, outer, joint)
+        new = cone_limit_diameter(grips, bearing, tan, joint)
+        slope = _where(tan > MIN_CONE_TANGENT, w * grips * _CONE_Y_SLOPE[joint] / outer, 0.0)
+        step = (new - outer) / _where(slope < 0.5, 1.0 - slope, 1.0)
+        outer = _max(outer + step, bearing)
+        if not _largest(abs(step)) > 1e-13 * _largest(outer):
             break
-    outer = np.where(np.isfinite(outer) & (outer >= bearing), outer, start)
-    result = np.full(outer.shape, np.nan)
-    active = np.arange(outer.size)
-    g, b, o = grip.ravel(), bearing.ravel(), outer.ravel().copy()
+    # then the plain fixed-point iteration, each point stopping where it converges
+    settled: Any = False
     for _ in range(200):
-        tan = cone_tangent(g, b, o, joint)
-        new = cone_limit_diameter(g, b, tan, joint)
-        done = np.abs(new - o) <= 1e-12 * new
-        result.flat[active[done]] = new[done]
-        keep = ~done
-        active, g, b, o = active[keep], g[keep], b[keep], new[keep]
-        if not active.size:
-            return result
-    result.flat[active] = o
-    return result
+        tan = cone_tangent(grips, bearing, outer, joint)
+        new = cone_limit_diameter(grips, bearing, tan, joint)
+        done = _where(abs(new - outer) > 1e-12 * new, False, True)  # NaN: nothing to refine
+        outer = _where(settled, outer, new)  # a settled point keeps its value
+        settled = settled | done
+        if _every(settled):
+            break
+    return outer
 
 
 def _one_sided(
@@ -399,7 +407,7 @@ def _one_sided(
 ) -> float:
     """∫ dz / A(z) over [start, end] of a cone from d_W at z = 0, capped at D_A (1/m).
 
-    Floats or arrays; an empty interval (end ≤ start) gives 0 through both branches.
+    Floats or arrays (the same lines); an empty interval (end ≤ start) gives 0.
     """
     d_h = hole_diameter
 
@@ -407,30 +415,18 @@ def _one_sided(
         diameter = bearing_diameter + 2.0 * z * tangent
         return _log((diameter - d_h) / (diameter + d_h))
 
-    if not _arrays(start, end, bearing_diameter, hole_diameter, tangent, outer_diameter):
-        if end <= start:
-            return 0.0
-        z_cap = (outer_diameter - bearing_diameter) / (2.0 * tangent)
-        total = 0.0
-        a, b = start, min(end, z_cap)
-        if b > a:
-            total += (g(b) - g(a)) / (math.pi * d_h * tangent)
-        a = max(start, z_cap)
-        if end > a:
-            total += (end - a) / (0.25 * math.pi * (outer_diameter**2 - hole_diameter**2))
-        return total
     empty = end <= start
-    if np.all(empty):  # e.g. the far half of a through-bolted joint for a near plate
-        zero: Any = np.zeros(np.shape(empty))
+    if _every(empty):  # e.g. the far half of a through-bolted joint for a near plate
+        zero: Any = np.zeros(np.shape(empty)) if isinstance(empty, np.ndarray) else 0.0
         return zero
     z_cap = (outer_diameter - bearing_diameter) / (2.0 * tangent)
-    a, b = start, np.minimum(end, z_cap)
-    # arrays: both pieces everywhere (z ≥ 0 keeps the logarithm's argument positive), then
-    # only where the scalar branch would add them
-    cone = np.where(b > a, (g(b) - g(a)) / (math.pi * d_h * tangent), 0.0)
-    a = np.maximum(start, z_cap)
+    a, b = start, _min(end, z_cap)
+    # both pieces everywhere (z ≥ 0 keeps the logarithm's argument positive), each kept
+    # where its interval is not empty
+    cone = _where(b > a, (g(b) - g(a)) / (math.pi * d_h * tangent), 0.0)
+    a = _max(start, z_cap)
     sleeve = (end - a) / (0.25 * math.pi * (outer_diameter**2 - hole_diameter**2))
-    both: Any = (0.0 + cone) + np.where(end > a, sleeve, 0.0)
+    both: Any = (0.0 + cone) + _where(end > a, sleeve, 0.0)
     return both
 
 
@@ -892,21 +888,16 @@ def smallest_section(
     >>> d0.tolist(), which.tolist()
     ([0.0075, 0.010358], ['shank', 'thread'])
     """
-    if _arrays(stress_diameter, *(v for section in sections for v in section)):
-        d0_arr = np.asarray(stress_diameter, dtype=float)
-        shank = np.zeros(d0_arr.shape, dtype=bool)
-        for length, diameter in sections:
-            smaller = (np.asarray(length) > 0.0) & (diameter < d0_arr)
-            d0_arr = np.where(smaller, diameter, d0_arr)
-            shank = shank | smaller
-        words: Any = np.where(shank, "shank", "thread")
-        d0_any: Any = d0_arr
-        return d0_any, words
-    d0, which = stress_diameter, "thread"
+    d0: Any = stress_diameter
+    shank: Any = False
     for length, diameter in sections:
-        if length > 0.0 and diameter < d0:
-            d0, which = diameter, "shank"
-    return d0, which
+        smaller = (length > 0.0) & (diameter < d0)
+        d0 = _where(smaller, diameter, d0)
+        shank = shank | smaller
+    if _arrays(d0, shank):
+        words: Any = np.where(np.broadcast_to(shank, np.shape(d0)), "shank", "thread")
+        return d0, words
+    return d0, "shank" if shank else "thread"
 
 
 def preload_bounds_from_torque(
@@ -1230,14 +1221,11 @@ def embedding_for_load(
     >>> round(embedding_for_load("Rz10-40", 2e3, 2, 1) * 1e6, 2)
     14.5
     """
-    if _arrays(transverse_load, bearing_faces, interfaces):
-        return np.where(  # type: ignore[return-value]
-            np.asarray(transverse_load) > 0.0,
-            embedding(roughness, "transverse", bearing_faces, interfaces),
-            embedding(roughness, "axial", bearing_faces, interfaces),
-        )
-    load = "transverse" if transverse_load > 0.0 else "axial"
-    return embedding(roughness, load, bearing_faces, interfaces)
+    return _where(
+        transverse_load > 0.0,
+        embedding(roughness, "transverse", bearing_faces, interfaces),
+        embedding(roughness, "axial", bearing_faces, interfaces),
+    )
 
 
 def preload_losses(embedding_force: float, thermal_loss: float) -> float:
@@ -1408,15 +1396,9 @@ def separation_load(assembly_preload: float, losses: float, load_factor_n: float
     >>> round(separation_load(30e3, 2.6e3, 0.1), 1)
     30444.4
     """
-    if _arrays(assembly_preload, losses, load_factor_n):
-        opens = np.asarray(load_factor_n) < 1.0
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return np.where(  # type: ignore[return-value]
-                opens, np.maximum(assembly_preload - losses, 0.0) / (1.0 - load_factor_n), np.inf
-            )
-    if load_factor_n < 1.0:
-        return _max(assembly_preload - losses, 0.0) / (1.0 - load_factor_n)
-    return math.inf
+    return _quotient(
+        load_factor_n < 1.0, _max(assembly_preload - losses, 0.0), 1.0 - load_factor_n, math.inf
+    )
 
 
 def max_working_load(
@@ -1556,13 +1538,9 @@ def torque_tightening_factor(assembly_preload_min: float, assembly_preload_max: 
     >>> round(torque_tightening_factor(31500.0, 64308.0), 4)
     2.0415
     """
-    if _arrays(assembly_preload_min, assembly_preload_max):
-        lo = np.asarray(assembly_preload_min, dtype=float)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return np.where(lo > 0.0, assembly_preload_max / lo, np.inf)  # type: ignore[return-value]
-    if assembly_preload_min > 0.0:
-        return assembly_preload_max / assembly_preload_min
-    return math.inf
+    return _quotient(
+        assembly_preload_min > 0.0, assembly_preload_max, assembly_preload_min, math.inf
+    )
 
 
 def smallest_area(smallest_diameter: float, stress_area: float, which: str) -> float:
@@ -1596,9 +1574,7 @@ def smallest_area(smallest_diameter: float, stress_area: float, which: str) -> f
     >>> round(smallest_area(0.0075, 84.27e-6, "shank") * 1e6, 2)
     44.18
     """
-    if isinstance(which, np.ndarray):
-        return np.where(which == "thread", stress_area, _area(smallest_diameter))
-    return stress_area if which == "thread" else _area(smallest_diameter)
+    return _where(which == "thread", stress_area, _area(smallest_diameter))
 
 
 def max_bolt_force(assembly_preload_max: float, additional_bolt_load: float) -> float:
@@ -1760,11 +1736,7 @@ def fatigue_safety(endurance_limit: float, stress_amplitude: float) -> float:
     >>> round(fatigue_safety(48.88e6, 4.747e6), 3)
     10.297
     """
-    if _arrays(endurance_limit, stress_amplitude):
-        amp = np.asarray(stress_amplitude, dtype=float)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return np.where(amp > 0.0, endurance_limit / amp, np.inf)  # type: ignore[return-value]
-    return endurance_limit / stress_amplitude if stress_amplitude > 0.0 else math.inf
+    return _quotient(stress_amplitude > 0.0, endurance_limit, stress_amplitude, math.inf)
 
 
 def slip_safety(
@@ -1805,15 +1777,12 @@ def slip_safety(
     >>> round(slip_safety(20e3, 1, 0.15, 2e3), 3)
     1.5
     """
-    if _arrays(residual_clamp_force, slip_interfaces, interface_friction, transverse_load):
-        f_q = np.asarray(transverse_load, dtype=float)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return np.where(  # type: ignore[return-value]
-                f_q > 0.0, residual_clamp_force * slip_interfaces * interface_friction / f_q, np.inf
-            )
-    if transverse_load > 0.0:
-        return residual_clamp_force * slip_interfaces * interface_friction / transverse_load
-    return math.inf
+    return _quotient(
+        transverse_load > 0.0,
+        residual_clamp_force * slip_interfaces * interface_friction,
+        transverse_load,
+        math.inf,
+    )
 
 
 def required_slip_safety(working_load: float, working_load_min: float) -> float:
@@ -1844,9 +1813,7 @@ def required_slip_safety(working_load: float, working_load_min: float) -> float:
     >>> required_slip_safety(8e3, 0.0), required_slip_safety(8e3, 8e3)
     (1.8, 1.2)
     """
-    if _arrays(working_load, working_load_min):
-        return np.where(np.asarray(working_load_min) < working_load, 1.8, 1.2)  # type: ignore[return-value]
-    return 1.8 if working_load_min < working_load else 1.2
+    return _where(working_load_min < working_load, 1.8, 1.2)
 
 
 def nominal_preload(assembly_preload_min: float, assembly_preload_max: float) -> float:

@@ -621,6 +621,7 @@ def _solve(
 
     # R1 friction box, loads --------------------------------------------------------------------
     method = get_method(str(x["method"]))
+    method_factor = method.tightening_factor
     mu_g_lo, mu_k_lo = col("thread_friction_min"), col("bearing_friction_min")
     mu_g_hi = col_or("thread_friction_max", mu_g_lo)
     mu_k_hi = col_or("bearing_friction_max", mu_k_lo)
@@ -682,7 +683,7 @@ def _solve(
         alpha_a = jt.torque_tightening_factor(fm_min, fm_max)
     else:
         given = x.get("tightening_factor") is not None
-        alpha_a = col("tightening_factor") if given else method.tightening_factor
+        alpha_a = col("tightening_factor") if given else method_factor
         fm_min, fm_max = jt.design_preload_range(f_mzul, alpha_a)
         torque = jt.tightening_torque(f_mzul, kt_low, kb_low, m_u)
 
@@ -703,7 +704,7 @@ def _solve(
     loss = jt.preload_losses(f_z, th_loss)
 
     # R5/R6 required window, R7 against it ---------------------------------------------------------
-    alpha_req = _finite_or(alpha_a, method.tightening_factor)
+    alpha_req = _finite_or(alpha_a, method_factor)
     req_min = jt.minimum_assembly_preload(f_kerf, f_a, phi_n, f_z, th_loss)
     req_max = jt.required_preload_max(alpha_req, req_min)
     fa_limit = jt.max_working_load(f_mzul, alpha_req, f_kerf, loss, phi_n)
@@ -757,7 +758,7 @@ def _solve(
         "bolt_compliance_head": bolt_c.head,
         "bolt_compliance_shank": bolt_c.shank,
         "bolt_compliance_free_thread": bolt_c.free_thread,
-        "bolt_compliance_engaged": bolt_c.engaged_thread + bolt_c.nut,
+        "bolt_compliance_engaged": bolt_c.engaged,
         "clamped_compliance": delta_p,
         "cone_tangent": parts.tangent,
         "cone_limit_diameter": parts.limit_diameter,
@@ -799,7 +800,6 @@ def _solve(
         "_alpha_req": alpha_req,
         "_fa_sep_any": fa_sep_any,
         "_need_slip": need,
-        "_nominal": nominal,
         "_rule": rule,
         "_method": method,
         "_mu": (mu_g_lo, mu_g_hi, mu_k_lo, mu_k_hi),
@@ -824,7 +824,8 @@ def _seed_004_rule(
 def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     bolt, notes = resolve_bolt(x)
     b = {f: getattr(bolt, f) for f in _BOLT_FIELDS}
-    s = _solve(x, lambda name: float(x[name]), b, _Refusals(np.False_, many=False))
+    # validated numeric inputs are Python numbers already: read them as they are
+    s = _solve(x, x.__getitem__, b, _Refusals(np.False_, many=False))
     for name in (*_SCALARS, "_alpha_req", "_fa_sep_any"):  # Python floats out (some are numpy's)
         s[name] = float(s[name])
     warnings: list[str] = []
@@ -939,7 +940,7 @@ def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[s
     f_a, f_kerf, nu = float(x["working_load"]), s["required_clamp_force"], float(x["utilization"])
     lo_rule, hi_rule, why = s["_rule"]
     stress, s_f = s["working_stress"], s["yield_safety"]
-    sigma0 = s["_nominal"] / s["smallest_area"]
+    sigma0 = s["preload_stress_ratio"] * bolt.yield_strength  # σ0 = F_M,nom/A_0
     need = s["_need_slip"]
     out = {
         "R7_window_fits": f"required F_M,max = α_A F_M,min = {alpha_req:.3g} × {_kn(req_min)} = "
@@ -1478,7 +1479,8 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         table[:, refused] = np.nan
     values: dict[str, Any] = dict(zip(_SCALARS, table, strict=True))
     verdicts: dict[str, Any] = {
-        name: np.where(applies, ok, -1) for name, (applies, ok) in s["_checks"].items()
+        name: ok if applies is True else np.where(applies, ok, -1)
+        for name, (applies, ok) in s["_checks"].items()
     }
     verdicts.update(hook_checks)
     reported: dict[str, Any] = {}

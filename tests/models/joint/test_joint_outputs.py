@@ -245,3 +245,28 @@ def test_one_bolt_two_torques_under_two_named_conventions():
     assert "R13" in labels["tightening_torque"]
     assert "nominal preload F_nom" in other["target_torque"]
     assert "given friction" in other["target_torque"]
+
+
+def _checks(request):
+    return {c.name: c.ok for c in run(JOINT, request).checks}
+
+
+def test_r9_fatigue_check_turns_at_s_d_1_2():
+    # S_D = σ_ASV / σ_a with σ_a = Φ_n F_A / (2 A_S) (F_A,min = 0): S_D = 1.2 at
+    # F_A = σ_ASV · 2 A_S / (1.2 Φ_n); Φ_n does not depend on F_A
+    f_a = HAND["endurance_limit"] * 2 * AS / (1.2 * HAND["load_factor"])
+    below = {**JOINT.examples[0], "working_load": 0.99 * f_a}
+    above = {**JOINT.examples[0], "working_load": 1.01 * f_a}
+    assert run(JOINT, below).results["fatigue_safety"] == pytest.approx(1.2 / 0.99, rel=1e-9)
+    assert _checks(below)["R9_fatigue"] is True
+    assert _checks(above)["R9_fatigue"] is False
+
+
+@pytest.mark.parametrize("ratio, ok", [(0.65, True), (0.72, False)])
+def test_seed_004_rule_allows_0_7_sigma_t_with_an_accurate_method(ratio, ok):
+    # strain gauge (±10 %): α_A = 1.1/0.9, tightened to F_M,zul = ν R_p A_S/β, so
+    # F_M,nom = F_M,zul (1/α_A + 1)/2 = F_M,zul/1.1 and σ0/σ_T = ν/(1.1 β); choose ν for it
+    nu = ratio * 1.1 * _torsion(DS, 0.12)
+    request = {**JOINT.examples[0], "method": "strain_gauge", "utilization": nu}
+    assert run(JOINT, request).results["preload_stress_ratio"] == pytest.approx(ratio, rel=1e-9)
+    assert _checks(request)["seed_004_preload_stress"] is ok

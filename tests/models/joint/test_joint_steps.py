@@ -126,3 +126,20 @@ def test_r13_tightening_torque_adds_thread_bearing_and_prevailing_torque():
     k_g = 0.16 * 0.00175 + 0.58 * 0.010863 * 0.12
     k_k = 0.12 * (0.01663 + 0.0135) / 4
     assert jt.tightening_torque(40e3, k_g, k_k, 2.0) == pytest.approx(79.598, rel=1e-4)
+
+
+@pytest.mark.parametrize("joint, w", [("through", 1), ("tapped", 2)])
+def test_r3_unlimited_outer_diameter_is_the_cone_s_own_fixed_point(joint, w):
+    # D_A = d_W + w l_K tan φ(y = D_A/d_W), with VDI's fits written out here; one design and
+    # a sweep run the same steps, so they agree to the last bits
+    dw = 0.01663
+    grips = np.array([0.002, 0.01, 0.04, 0.2, 1.0])
+    got = jt.unlimited_outer_diameter(grips, dw, joint)
+    for g, da in zip(grips.tolist(), got.tolist(), strict=True):
+        y = da / dw
+        if w == 1:
+            tan = 0.362 + 0.032 * math.log(g / dw / 2) + 0.153 * math.log(y)
+        else:
+            tan = 0.348 + 0.013 * math.log(g / dw) + 0.193 * math.log(y)
+        assert da == pytest.approx(dw + w * g * max(tan, 0.1), rel=1e-11)
+        assert jt.unlimited_outer_diameter(g, dw, joint) == pytest.approx(da, rel=1e-15)
