@@ -361,7 +361,9 @@ def _resolve_design(x: Mapping[str, Any]) -> _Design:
     bolt, notes = resolve_bolt(x)
     mu_g, mu_k = float(x["thread_friction"]), float(x["bearing_friction"])
     formula = str(x["torque_formula"])
-    k_thread, k_bearing, radius = torque_coefficients(bolt, mu_g, mu_k, formula)
+    k_thread, k_bearing, radius = (
+        float(v) for v in torque_coefficients_raw(bolt, mu_g, mu_k, formula)
+    )
     deviation = float(_deviation(bolt, mu_g, mu_k, formula, sum((k_thread, k_bearing))))
     return _Design(bolt, tuple(notes), k_thread, k_bearing, radius, deviation)
 
@@ -371,10 +373,11 @@ class _Handoff(threading.local):
 
     The runner asks the rung for its estimate, then runs the model, with the same
     validated inputs. The estimate leaves its :class:`_Design` here with those inputs'
-    items; :func:`_design` takes it (and empties the slot) when its own inputs have
-    the same items, in the same thread, so the request resolves its bolt once. The
-    slot is matched by value, never by identity, holds one design per thread and is
-    emptied when used: a later request, or one with other inputs, resolves its own.
+    items; :func:`_handed_off` gives it to the run (and empties the slot) when the
+    run's inputs have the same items, in the same thread, so the request resolves its
+    bolt once. The slot is matched by value, never by identity, holds one design per
+    thread and is emptied when read: a later request, or one with other inputs,
+    resolves its own.
     """
 
     items: tuple[tuple[str, Any], ...] | None = None
@@ -384,13 +387,11 @@ class _Handoff(threading.local):
 _HANDOFF = _Handoff()
 
 
-def _design(x: Mapping[str, Any]) -> _Design:
-    """The design of a single-design request: the estimate's, when it resolved it."""
+def _handed_off(x: Mapping[str, Any]) -> _Design | None:
+    """The design the rung estimate left for these inputs, or None; the slot is emptied."""
     slot = _HANDOFF
     found, slot.items, design, slot.design = slot.items, None, slot.design, None
-    if design is not None and found == tuple(x.items()):
-        return design
-    return _resolve_design(x)
+    return design if design is not None and found == tuple(x.items()) else None
 
 
 def _rung_estimate(x: Mapping[str, Any]) -> Any:
@@ -775,7 +776,7 @@ def _tightening_values(
 
 
 def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    design = _design(x)
+    design = _handed_off(x) or _resolve_design(x)
     bolt, notes = design.bolt, list(design.notes)
     checks: list[Check] = []
     values = {
@@ -1382,7 +1383,7 @@ def _method_band(
 
 
 def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    design = _design(x)
+    design = _handed_off(x) or _resolve_design(x)
     bolt, notes = design.bolt, list(design.notes)
     warnings: list[str] = []
     checks: list[Check] = []
