@@ -1517,25 +1517,11 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "at yield (minimum R_p0.2) and the bolt must be ductile ([004])"
         )
 
-    passing: list[ControlMethod] = []
-    for other in METHODS:
-        if other.family != method.family:
-            continue
-        if other.controls in ("angle", "displacement", "elongation") and stretch is None:
-            continue
-        if other.controls == "displacement" and x.get("coupling_outer_diameter") is None:
-            continue
-        o_nominal, o_min, o_max = _method_band(other, permissible, at_yield, given)
-        if other.controls in ("angle", "displacement") and stretch is not None:
-            o_angle = pl.nut_rotation_angle(o_nominal, stretch, bolt.pitch)
-            if o_angle * other.scatter < ANGLE_READING_ERROR:
-                continue  # too short for angle control, as the check above says
-        if o_min >= required and o_max <= at_yield * (1.0 + 1e-12):
-            passing.append(other)
-    passing.sort(key=lambda m: (m.cost_rank, m.key))
-    cheaper = [m.key for m in passing if m.cost_rank < method.cost_rank]
-    values["cheaper_methods"] = ", ".join(cheaper) if cheaper else "none"
-    values["passing_methods"] = ", ".join(m.key for m in passing) if passing else "none"
+    candidates, passes = _passing(
+        x, bolt, method, (permissible, at_yield, given, required), stretch
+    )
+    chosen = [m for m, ok in zip(candidates, passes, strict=True) if ok]
+    values["cheaper_methods"], values["passing_methods"] = _method_text(chosen, method.cost_rank)
     notes.append(f"scatter of {method.key}: {method.scatter_source}")
     if method.key == "torque_then_angle":
         notes.append(
@@ -1557,8 +1543,8 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
         x.get("thread_friction_min") is not None or x.get("bearing_friction_min") is not None
     )
     if scatter_wanted and has_range:
-        g_range = _range(x, "thread_friction", mu_g)
-        k_range = _range(x, "bearing_friction", mu_k)
+        g_range = _checked_range(x, "thread_friction", mu_g)
+        k_range = _checked_range(x, "bearing_friction", mu_k)
         if bolt.bearing_friction_factor != 1.0:  # a countersunk head: μ_K acts on the cone
             k_range = (
                 k_range[0] * bolt.bearing_friction_factor,
@@ -1569,9 +1555,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
         washer = (bolt.bearing_outer_diameter, bolt.hole_diameter)
         # the band's corners and the exact mean (engine.preload.friction_scatter_band); the
         # 64×64 grid only for the histogram, when asked (issue 21: nothing computed unasked)
-        f_lo, f_hi, f_mean = pl.friction_scatter_band(
-            fixed, *geometry, g_range, k_range, *washer, formula
-        )
+        f_lo, f_hi, f_mean = _scatter_band(bolt, formula, fixed, g_range, k_range)
         if ctx.wants("preload_bins", "preload_counts"):
             forces = pl.friction_scatter_preloads(
                 fixed, *geometry, g_range, k_range, *washer, formula
@@ -1624,27 +1608,27 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
 
 
-def _range(x: Mapping[str, Any], name: str, nominal: float) -> tuple[float, float]:
-    lo, hi = x.get(f"{name}_min"), x.get(f"{name}_max")
-    if lo is None and hi is None:
-        return nominal, nominal
-    if lo is None or hi is None:
-        raise InputOutOfRange(f"give both {name}_min and {name}_max", field=f"{name}_min")
-    if lo > hi:
-        raise InputOutOfRange(
-            f"{name}_min = {lo:g} exceeds {name}_max = {hi:g}", field=f"{name}_min"
-        )
-    return float(lo), float(hi)
+def _range(x: Mapping[str, Any], name: str, nominal: Any) -> tuple[Any, Any, Any]:
+    """The friction range (low, high) of ``name``, and where low ≤ high (floats or arrays).
 
-
-def _range_arrays(x: Mapping[str, Any], name: str, nominal: Any) -> tuple[Any, Any, Any]:
-    """:func:`_range` on arrays: (low, high, where low ≤ high)."""
+    Both ends absent: the nominal value at both ends.
+    """
     lo, hi = x.get(f"{name}_min"), x.get(f"{name}_max")
     if lo is None and hi is None:
         return nominal, nominal, True
     if lo is None or hi is None:
         raise InputOutOfRange(f"give both {name}_min and {name}_max", field=f"{name}_min")
     return lo, hi, ~np.asarray(lo > hi)
+
+
+def _checked_range(x: Mapping[str, Any], name: str, nominal: float) -> tuple[float, float]:
+    """:func:`_range` of a single design, refused where its low end exceeds its high end."""
+    lo, hi, fine = _range(x, name, nominal)
+    if not fine:
+        raise InputOutOfRange(
+            f"{name}_min = {lo:g} exceeds {name}_max = {hi:g}", field=f"{name}_min"
+        )
+    return lo, hi
 
 
 #: What the friction-scatter figures are, and what they were (a result note).
@@ -1657,18 +1641,18 @@ SCATTER_MEAN_NOTE = (
 )
 
 
-def _scatter_arrays(
-    bolt: BoltArrays,
+def _scatter_band(
+    bolt: Bolt | BoltArrays,
     formula: str,
     torque: Any,
     g_range: tuple[Any, Any],
     k_range: tuple[Any, Any],
 ) -> tuple[Any, Any, Any]:
-    """Lowest, highest and mean preload of the friction scatter, per point.
+    """Lowest, highest and mean preload of the friction scatter, one design or per point.
 
-    :func:`engine.preload.friction_scatter_band` on arrays: its corners and exact mean
-    take a few operations a point (16 Gauss–Legendre nodes in μ_G), so a bolt varying
-    from point to point costs no 64×64 grid; where nothing varies it runs once.
+    :func:`engine.preload.friction_scatter_band`: its corners and exact mean take a few
+    operations a point (16 Gauss–Legendre nodes in μ_G), so a bolt varying from point
+    to point costs no 64×64 grid.
     """
     return pl.friction_scatter_band(
         torque,
@@ -1683,14 +1667,54 @@ def _scatter_arrays(
     )
 
 
+def _passing(
+    x: Mapping[str, Any],
+    bolt: Bolt | BoltArrays,
+    method: ControlMethod,
+    band: tuple[Any, Any, Any, Any],
+    stretch: Any,
+) -> tuple[list[ControlMethod], list[Any]]:
+    """The methods of ``method``'s family worth comparing, cheapest first, and where each
+    passes both checks (and reads its angle), on floats or arrays.
+
+    ``band`` is (permissible, yield, given preload or None, required preload).
+    """
+    permissible, at_yield, given, required = band
+    top = at_yield * (1.0 + 1e-12)
+    candidates: list[ControlMethod] = []
+    passes: list[Any] = []
+    for other in sorted(METHODS, key=lambda m: (m.cost_rank, m.key)):
+        if other.family != method.family:
+            continue
+        if other.controls in ("angle", "displacement", "elongation") and stretch is None:
+            continue
+        if other.controls == "displacement" and x.get("coupling_outer_diameter") is None:
+            continue
+        o_nominal, o_min, o_max = _method_band(other, permissible, at_yield, given)
+        passing = np.logical_and(o_min >= required, o_max <= top)
+        if other.controls in ("angle", "displacement") and stretch is not None:
+            o_angle = pl.nut_rotation_angle(o_nominal, stretch, bolt.pitch)
+            # too short for angle control, as the angle_resolution check says
+            passing = np.logical_and(passing, o_angle * other.scatter >= ANGLE_READING_ERROR)
+        candidates.append(other)
+        passes.append(passing)
+    return candidates, passes
+
+
+def _method_text(chosen: list[ControlMethod], own_rank: int) -> tuple[str, str]:
+    """``cheaper_methods`` and ``passing_methods`` for the methods that pass, cheapest first."""
+    cheaper = [m.key for m in chosen if m.cost_rank < own_rank]
+    return (
+        ", ".join(cheaper) if cheaper else "none",
+        ", ".join(m.key for m in chosen) if chosen else "none",
+    )
+
+
 def _method_texts(
     candidates: list[ControlMethod], passes: list[Any], own_rank: int, n: int
 ) -> tuple[np.ndarray, np.ndarray]:
-    """``cheaper_methods`` and ``passing_methods`` per point, as :func:`_control` writes them.
-
-    ``candidates`` are in the order the texts list them (cheapest first); each point's
-    pass pattern is a bit code, and the texts are built once per distinct code.
-    """
+    """:func:`_method_text` per point: each point's pass pattern is a bit code, and the
+    texts are built once per distinct code."""
     code = np.zeros(n, dtype=np.int64)
     for k, passing in enumerate(passes):
         code |= np.broadcast_to(np.asarray(passing, dtype=np.int64), (n,)) << k
@@ -1699,9 +1723,7 @@ def _method_texts(
     passing_text = np.empty(seen.size, dtype=object)
     for i, c in enumerate(seen.tolist()):
         chosen = [m for k, m in enumerate(candidates) if c >> k & 1]
-        cheaper = [m.key for m in chosen if m.cost_rank < own_rank]
-        cheaper_text[i] = ", ".join(cheaper) if cheaper else "none"
-        passing_text[i] = ", ".join(m.key for m in chosen) if chosen else "none"
+        cheaper_text[i], passing_text[i] = _method_text(chosen, own_rank)
     where = np.zeros(int(seen[-1]) + 1, dtype=np.int64)
     where[seen] = np.arange(seen.size)
     index = where[code]
@@ -1758,24 +1780,9 @@ def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
     verdicts["max_below_yield"] = below
 
     if ctx.wants("cheaper_methods", "passing_methods"):
-        # the same family's methods that pass both checks (and read their angle), cheapest
-        # first
-        candidates: list[ControlMethod] = []
-        passes: list[Any] = []
-        for other in sorted(METHODS, key=lambda m: (m.cost_rank, m.key)):
-            if other.family != method.family:
-                continue
-            if other.controls in ("angle", "displacement", "elongation") and stretch is None:
-                continue
-            if other.controls == "displacement" and x.get("coupling_outer_diameter") is None:
-                continue
-            o_nominal, o_min, o_max = _method_band(other, permissible, at_yield, given)
-            passing = (o_min >= required) & (o_max <= top)
-            if other.controls in ("angle", "displacement") and stretch is not None:
-                o_angle = pl.nut_rotation_angle(o_nominal, stretch, bolt.pitch)
-                passing = passing & ~(o_angle * other.scatter < ANGLE_READING_ERROR)
-            candidates.append(other)
-            passes.append(passing)
+        candidates, passes = _passing(
+            x, bolt, method, (permissible, at_yield, given, required), stretch
+        )
         values["cheaper_methods"], values["passing_methods"] = _method_texts(
             candidates, passes, method.cost_rank, n
         )
@@ -1791,13 +1798,13 @@ def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
         x.get("thread_friction_min") is not None or x.get("bearing_friction_min") is not None
     )
     if scatter_wanted and has_range:
-        g_lo, g_hi, fine_g = _range_arrays(x, "thread_friction", mu_g)
-        k_lo, k_hi, fine_k = _range_arrays(x, "bearing_friction", mu_k)
+        g_lo, g_hi, fine_g = _range(x, "thread_friction", mu_g)
+        k_lo, k_hi, fine_k = _range(x, "bearing_friction", mu_k)
         ok &= fine_g & fine_k
         if bolt.bearing_friction_factor != 1.0:  # a countersunk head: μ_K acts on the cone
             k_lo, k_hi = k_lo * bolt.bearing_friction_factor, k_hi * bolt.bearing_friction_factor
         fixed = torque if x.get("scatter_torque") is None else x["scatter_torque"]
-        low, high, mean = _scatter_arrays(bolt, formula, fixed, (g_lo, g_hi), (k_lo, k_hi))
+        low, high, mean = _scatter_band(bolt, formula, fixed, (g_lo, g_hi), (k_lo, k_hi))
         notes.append(SCATTER_MEAN_NOTE)
         values.update(
             scatter_preload_min=low,
