@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 import threading
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -217,76 +217,134 @@ def _class_note(name: str, diameter: float, yield_strength: float, tensile: floa
 def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
     """The bolt a request describes, and notes naming each standard value used."""
     cat, fastener, notes = fz.resolve(x)
-    d = float(cat["diameter"])
-    mm = d * 1e3
+    numbers, _ = _bolt_numbers(x, cat, notes, None)
+    return Bolt(**numbers, fastener=fastener), notes
+
+
+def _bolt_numbers(
+    x: Mapping[str, Any], cat: Mapping[str, Any], notes: list[str], n: int | None
+) -> tuple[dict[str, Any], np.ndarray]:
+    """The bolt's numbers from the inputs, the catalogue's ``cat`` and the ISO tables.
+
+    One design (``n`` None): floats, a note per standard value used, and a refusal
+    (InputOutOfRange naming the field) where the inputs make no bolt. ``n`` points: the
+    numeric inputs may be arrays, a tabulated value is looked up per point, and a point
+    that would be refused is False in the returned mask (no notes per point).
+    """
+    one = n is None
+    ok = np.ones(1 if n is None else n, dtype=bool)
+
+    def need(good: Any, refusal: Callable[[], InputOutOfRange]) -> None:
+        nonlocal ok
+        if not one:
+            ok = ok & good
+        elif not good:
+            raise refusal()
+
+    def num(v: Any) -> Any:
+        return float(v) if one else v
+
+    def note(text: str) -> None:
+        if one:
+            notes.append(text)
+
+    d = num(cat["diameter"])
+    per_point = isinstance(d, np.ndarray)
     if "pitch" in cat:
-        pitch = float(cat["pitch"])
+        pitch = num(cat["pitch"])
     elif x.get("thread_pitch") is None:
-        pitch = th.coarse_pitch(d)
-        notes.append(f"pitch P = {pitch * 1e3:g} mm: ISO 261 coarse thread M{mm:g}")
+        if per_point:
+            pitch, found = _tabulated(d, th.COARSE_PITCH_MM)
+            ok = ok & found
+        else:
+            pitch = th.coarse_pitch(d)
+            note(f"pitch P = {pitch * 1e3:g} mm: ISO 261 coarse thread M{d * 1e3:g}")
     else:
-        pitch = float(x["thread_pitch"])
-        if d - 1.226869 * pitch <= 0.0:
-            raise InputOutOfRange(
-                f"thread_pitch = {pitch * 1e3:g} mm is too coarse for d = {mm:g} mm: the "
+        pitch = num(x["thread_pitch"])
+        need(
+            d - 1.226869 * pitch > 0.0,
+            lambda: InputOutOfRange(
+                f"thread_pitch = {pitch * 1e3:g} mm is too coarse for d = {d * 1e3:g} mm: the "
                 f"minor diameter d3 = d − 1.226869 P must stay > 0 (P < {d / 1.226869 * 1e3:g} mm)",
                 field="thread_pitch",
-            )
+            ),
+        )
+    tensile: Any
     if x.get("yield_strength") is not None:
-        yield_strength, tensile = float(x["yield_strength"]), None
-        notes.append(f"yield strength R_p0.2 = {yield_strength / 1e6:g} MPa as given")
+        yield_strength, tensile = num(x["yield_strength"]), None
+        note(f"yield strength R_p0.2 = {yield_strength / 1e6:g} MPa as given")
     elif "yield_strength" in cat:
-        yield_strength, tensile = float(cat["yield_strength"]), float(cat["tensile_strength"])
+        yield_strength, tensile = num(cat["yield_strength"]), num(cat["tensile_strength"])
     else:
-        cls = str(x.get("property_class") or "8.8")
-        yield_strength, tensile = th.property_class_strengths(cls, d)
-        notes.append(_class_note(cls, d, yield_strength, tensile))
+        name = str(x.get("property_class") or "8.8")
+        if per_point:
+            th.property_class_strengths(name, 0.01)  # refuses an unknown class
+            cls = th.PROPERTY_CLASSES[name]
+            mm = d * 1e3
+            ok = ok & (d <= th.largest_diameter(name) * (1 + 1e-9))
+            if np.any(ok & (mm > cls.max_diameter_mm * (1 + 1e-9))):
+                widest = float(np.max(d[ok]))
+                notes.append(_class_note(name, widest, *th.property_class_strengths(name, widest)))
+            small = mm <= cls.size_step_mm * (1 + 1e-9)
+            yield_strength = np.where(small, cls.yield_small * 1e6, cls.yield_large * 1e6)
+            tensile = np.where(small, cls.tensile_small * 1e6, cls.tensile_large * 1e6)
+        else:
+            yield_strength, tensile = th.property_class_strengths(name, d)
+            note(_class_note(name, d, yield_strength, tensile))
     given_outer = x.get("bearing_outer_diameter") is not None
     if given_outer:
-        outer = float(x["bearing_outer_diameter"])
+        outer = num(x["bearing_outer_diameter"])
     elif "bearing_outer_diameter" in cat:
-        outer = float(cat["bearing_outer_diameter"])
+        outer = num(cat["bearing_outer_diameter"])
+    elif per_point:
+        outer, found = _tabulated(d, th.HEX_BEARING_DIAMETER_MM)
+        ok = ok & found
     else:
         outer = th.hex_bearing_diameter(d)
-        notes.append(f"bearing face D_f = d_w,min = {outer * 1e3:g} mm (ISO 4017 hexagon head)")
+        note(f"bearing face D_f = d_w,min = {outer * 1e3:g} mm (ISO 4017 hexagon head)")
     if x.get("hole_diameter") is not None:
-        hole = float(x["hole_diameter"])
-        if hole < d:
-            raise InputOutOfRange(
+        hole = num(x["hole_diameter"])
+        need(
+            hole >= d,
+            lambda: InputOutOfRange(
                 f"hole_diameter d_h = {hole * 1e3:g} mm is smaller than the thread diameter "
                 f"d = {d * 1e3:g} mm: the bolt would not pass through the clamped part",
                 field="hole_diameter",
-            )
+            ),
+        )
     elif "hole_diameter" in cat:
-        hole = float(cat["hole_diameter"])
+        hole = num(cat["hole_diameter"])
     else:
         series = str(x.get("hole_series") or "medium")
-        hole = th.clearance_hole(d, series)
-        notes.append(f"clearance hole d_h = {hole * 1e3:g} mm (ISO 273 {series})")
-    if outer <= hole:
-        field = "bearing_outer_diameter" if given_outer else "hole_diameter"
-        raise InputOutOfRange(
+        if per_point:
+            th.clearance_hole(0.012, series)  # refuses an unknown series
+            hole, found = _tabulated(d, th.CLEARANCE_HOLE_MM, th.HOLE_SERIES.index(series))
+            ok = ok & found
+        else:
+            hole = th.clearance_hole(d, series)
+            note(f"clearance hole d_h = {hole * 1e3:g} mm (ISO 273 {series})")
+    need(
+        outer > hole,
+        lambda: InputOutOfRange(
             f"bearing_outer_diameter D_f = {outer * 1e3:g} mm must exceed hole_diameter "
             f"d_h = {hole * 1e3:g} mm: the bearing face would have no area",
-            field=field,
-        )
-    return (
-        Bolt(
-            diameter=d,
-            pitch=pitch,
-            pitch_diameter=_given_or(cat, "pitch_diameter", th.pitch_diameter, d, pitch),
-            minor_diameter=_given_or(cat, "minor_diameter", th.minor_diameter, d, pitch),
-            stress_diameter=_given_or(cat, "stress_diameter", th.stress_diameter, d, pitch),
-            stress_area=_given_or(cat, "stress_area", th.stress_area, d, pitch),
-            yield_strength=yield_strength,
-            tensile_strength=tensile,
-            bearing_outer_diameter=outer,
-            hole_diameter=hole,
-            bearing_friction_factor=cat.get("bearing_friction_factor", 1.0),
-            fastener=fastener,
+            field="bearing_outer_diameter" if given_outer else "hole_diameter",
         ),
-        notes,
     )
+    numbers = {
+        "diameter": d,
+        "pitch": pitch,
+        "pitch_diameter": _given_or(cat, "pitch_diameter", th.pitch_diameter, d, pitch),
+        "minor_diameter": _given_or(cat, "minor_diameter", th.minor_diameter, d, pitch),
+        "stress_diameter": _given_or(cat, "stress_diameter", th.stress_diameter, d, pitch),
+        "stress_area": _given_or(cat, "stress_area", th.stress_area, d, pitch),
+        "yield_strength": yield_strength,
+        "tensile_strength": tensile,
+        "bearing_outer_diameter": outer,
+        "hole_diameter": hole,
+        "bearing_friction_factor": cat.get("bearing_friction_factor", 1.0),
+    }
+    return numbers, ok
 
 
 def _given_or(cat: Mapping[str, Any], name: str, relation: Any, d: Any, pitch: Any) -> Any:
@@ -427,6 +485,20 @@ _BOLT_NUMBERS = (
     "bearing_outer_diameter",
     "hole_diameter",
 )
+#: The numbers of a bolt (:class:`Bolt`, :class:`BoltArrays`), as :func:`_bolt_numbers` gives them.
+_NUMBER_FIELDS = (
+    "diameter",
+    "pitch",
+    "pitch_diameter",
+    "minor_diameter",
+    "stress_diameter",
+    "stress_area",
+    "yield_strength",
+    "tensile_strength",
+    "bearing_outer_diameter",
+    "hole_diameter",
+    "bearing_friction_factor",
+)
 #: Inputs that name catalogue parts (looked up by the thread size).
 _CATALOGUE_INPUTS = ("thread", "grade", "head_standard", "washer", "nut")
 
@@ -506,23 +578,9 @@ def resolve_bolt_arrays(
     if not varied:
         bolt, bolt_notes = resolve_bolt(x)
         fastener = bolt.fastener or fz.Fastener("", None, None, None)
+        numbers = {f: getattr(bolt, f) for f in _NUMBER_FIELDS}
         return (
-            BoltArrays(
-                diameter=bolt.diameter,
-                pitch=bolt.pitch,
-                pitch_diameter=bolt.pitch_diameter,
-                minor_diameter=bolt.minor_diameter,
-                stress_diameter=bolt.stress_diameter,
-                stress_area=bolt.stress_area,
-                yield_strength=bolt.yield_strength,
-                tensile_strength=bolt.tensile_strength,
-                bearing_outer_diameter=bolt.bearing_outer_diameter,
-                hole_diameter=bolt.hole_diameter,
-                bearing_friction_factor=bolt.bearing_friction_factor,
-                fastener=fastener,
-                ok=ok,
-                label=fastener.label,
-            ),
+            BoltArrays(**numbers, fastener=fastener, ok=ok, label=fastener.label),
             bolt_notes,
         )
     size_varied = "thread_diameter" in varied or "thread_pitch" in varied
@@ -540,89 +598,11 @@ def resolve_bolt_arrays(
     else:
         cat, fastener, found_notes = fz.resolve(placeholder)
         notes.extend(found_notes)
-    d = cat["diameter"]
-    per_point = isinstance(d, np.ndarray)
-    if "pitch" in cat:
-        pitch = cat["pitch"]
-    elif x.get("thread_pitch") is None:
-        if per_point:
-            pitch, found = _tabulated(d, th.COARSE_PITCH_MM)
-            ok &= found
-        else:
-            pitch = th.coarse_pitch(d)
-    else:
-        pitch = x["thread_pitch"]
-        ok &= d - 1.226869 * pitch > 0.0
-    tensile: Any
-    if x.get("yield_strength") is not None:
-        yield_strength, tensile = x["yield_strength"], None
-    elif "yield_strength" in cat:
-        yield_strength, tensile = cat["yield_strength"], cat["tensile_strength"]
-    else:
-        name = str(x.get("property_class") or "8.8")
-        if per_point:
-            th.property_class_strengths(name, 0.01)  # refuses an unknown class
-            cls = th.PROPERTY_CLASSES[name]
-            mm = d * 1e3
-            ok &= d <= th.largest_diameter(name) * (1 + 1e-9)
-            if np.any(ok & (mm > cls.max_diameter_mm * (1 + 1e-9))):
-                notes.append(
-                    _class_note(
-                        name,
-                        float(np.max(d[ok])),
-                        *th.property_class_strengths(name, float(np.max(d[ok]))),
-                    )
-                )
-            small = mm <= cls.size_step_mm * (1 + 1e-9)
-            yield_strength = np.where(small, cls.yield_small * 1e6, cls.yield_large * 1e6)
-            tensile = np.where(small, cls.tensile_small * 1e6, cls.tensile_large * 1e6)
-        else:
-            yield_strength, tensile = th.property_class_strengths(name, d)
-    if x.get("bearing_outer_diameter") is not None:
-        outer = x["bearing_outer_diameter"]
-    elif "bearing_outer_diameter" in cat:
-        outer = cat["bearing_outer_diameter"]
-    elif per_point:
-        outer, found = _tabulated(d, th.HEX_BEARING_DIAMETER_MM)
-        ok &= found
-    else:
-        outer = th.hex_bearing_diameter(d)
-    if x.get("hole_diameter") is not None:
-        hole = x["hole_diameter"]
-        ok &= hole >= d
-    elif "hole_diameter" in cat:
-        hole = cat["hole_diameter"]
-    else:
-        series = str(x.get("hole_series") or "medium")
-        if per_point:
-            th.clearance_hole(0.012, series)  # refuses an unknown series
-            hole, found = _tabulated(d, th.CLEARANCE_HOLE_MM, th.HOLE_SERIES.index(series))
-            ok &= found
-        else:
-            hole = th.clearance_hole(d, series)
-    ok &= outer > hole
+    numbers, ok = _bolt_numbers(x, cat, notes, n)
     label: Any = fastener.label
     if size_varied and labels:
-        label = _size_labels(x, d, n)
-    return (
-        BoltArrays(
-            diameter=d,
-            pitch=pitch,
-            pitch_diameter=_given_or(cat, "pitch_diameter", th.pitch_diameter, d, pitch),
-            minor_diameter=_given_or(cat, "minor_diameter", th.minor_diameter, d, pitch),
-            stress_diameter=_given_or(cat, "stress_diameter", th.stress_diameter, d, pitch),
-            stress_area=_given_or(cat, "stress_area", th.stress_area, d, pitch),
-            yield_strength=yield_strength,
-            tensile_strength=tensile,
-            bearing_outer_diameter=outer,
-            hole_diameter=hole,
-            bearing_friction_factor=cat.get("bearing_friction_factor", 1.0),
-            fastener=fastener,
-            ok=ok,
-            label=label,
-        ),
-        notes,
-    )
+        label = _size_labels(x, numbers["diameter"], n)
+    return BoltArrays(**numbers, fastener=fastener, ok=ok, label=label), notes
 
 
 def _size_labels(x: Mapping[str, Any], diameter: Any, n: int) -> np.ndarray:
