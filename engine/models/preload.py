@@ -669,6 +669,21 @@ CLOSED_FORM = Rung(
 # --------------------------------------------------------------------------- tightening
 
 
+def _part_numbers(bolt: Bolt | BoltArrays, max_preload: Any, torque: Any) -> dict[str, Any]:
+    """What the bought-part checks take of a bolt, its largest preload and its torque."""
+    return {
+        "diameter": bolt.diameter,
+        "pitch": bolt.pitch,
+        "pitch_diameter": bolt.pitch_diameter,
+        "stress_area": bolt.stress_area,
+        "tensile_strength": bolt.tensile_strength,
+        "bearing_outer_diameter": bolt.bearing_outer_diameter,
+        "hole_diameter": bolt.hole_diameter,
+        "max_assembly_preload": max_preload,
+        "tightening_torque": torque,
+    }
+
+
 def _add_bought_part_checks(
     x: Mapping[str, Any],
     bolt: Bolt,
@@ -681,17 +696,7 @@ def _add_bought_part_checks(
     """Surface pressure, thread stripping and drive torque (issue 15), into the result."""
     fastener = bolt.fastener or fz.Fastener("", None, None, None)
     more, more_checks, more_notes = fz.bought_part_checks(
-        x,
-        fastener,
-        diameter=bolt.diameter,
-        pitch=bolt.pitch,
-        pitch_diameter=bolt.pitch_diameter,
-        stress_area=bolt.stress_area,
-        tensile_strength=bolt.tensile_strength,
-        bearing_outer_diameter=bolt.bearing_outer_diameter,
-        hole_diameter=bolt.hole_diameter,
-        max_assembly_preload=max_preload,
-        tightening_torque=torque,
+        x, fastener, **_part_numbers(bolt, max_preload, torque)
     )
     values.update(more)
     checks.extend(more_checks)
@@ -816,17 +821,7 @@ def _bought_part_arrays(
 ) -> None:
     """:func:`_add_bought_part_checks` on arrays: values and verdicts, no sentences."""
     more, more_verdicts = fz.bought_part_arrays(
-        x,
-        bolt.fastener,
-        diameter=bolt.diameter,
-        pitch=bolt.pitch,
-        pitch_diameter=bolt.pitch_diameter,
-        stress_area=bolt.stress_area,
-        tensile_strength=bolt.tensile_strength,
-        bearing_outer_diameter=bolt.bearing_outer_diameter,
-        hole_diameter=bolt.hole_diameter,
-        max_assembly_preload=max_preload,
-        tightening_torque=torque,
+        x, bolt.fastener, **_part_numbers(bolt, max_preload, torque)
     )
     more["fastener"] = bolt.label
     values.update(more)
