@@ -347,6 +347,17 @@ def _bolt_numbers(
     return numbers, ok
 
 
+def _where(condition: Any, yes: Any, no: Any) -> Any:
+    """``np.where`` for one design or many: one design (a bool) takes its branch directly.
+
+    The same lines serve a single design and arrays; this keeps numpy's per-call cost
+    (a few µs) off the single design.
+    """
+    if isinstance(condition, bool | np.bool_):
+        return yes if condition else no
+    return np.where(condition, yes, no)
+
+
 def _given_or(cat: Mapping[str, Any], name: str, relation: Any, d: Any, pitch: Any) -> Any:
     """The catalogue's ``name`` where it has one, else the ISO relation on (d, P)."""
     return cat[name] if name in cat else relation(d, pitch)
@@ -732,7 +743,7 @@ def _tightening_values(
     thumb = pl.rule_of_thumb_torque(force, bolt.diameter)
     thumb_yield = pl.rule_of_thumb_torque_from_yield(bolt.yield_strength, bolt.diameter)
     positive = total > 0
-    safe = np.where(positive, total, 1.0)
+    safe = _where(positive, total, 1.0)
     return {
         "assembly_preload": force,
         "permissible_preload": permissible,
@@ -740,7 +751,7 @@ def _tightening_values(
         "thread_torque": m_thread,
         "bearing_torque": m_bearing,
         "ideal_torque": ideal,
-        "ideal_torque_share": np.where(positive, ideal / safe, 1.0),
+        "ideal_torque_share": _where(positive, ideal / safe, 1.0),
         "friction_radius": radius,
         "stress_area": bolt.stress_area,
         "pitch_diameter": bolt.pitch_diameter,
@@ -754,9 +765,9 @@ def _tightening_values(
         "hole_diameter": bolt.hole_diameter,
         "torque_formula_deviation": deviation,
         "rule_of_thumb_torque": thumb,
-        "rule_of_thumb_deviation": np.where(positive, (thumb - total) / safe, math.inf),
+        "rule_of_thumb_deviation": _where(positive, (thumb - total) / safe, math.inf),
         "yield_rule_torque": thumb_yield,
-        "yield_rule_deviation": np.where(positive, (thumb_yield - total) / safe, math.inf),
+        "yield_rule_deviation": _where(positive, (thumb_yield - total) / safe, math.inf),
     }
 
 
@@ -1184,14 +1195,14 @@ def _grip_sections(
     grip = x["clamped_length"]
     l_shank, l_reduced = x["shank_length"], x["reduced_length"]
     free = grip - l_shank - l_reduced
-    fine = ~np.asarray(free < -1e-12 * grip)
+    fine = np.logical_not(free < -1e-12 * grip)
     if x.get("reduced_diameter") is None:
-        fine = fine & ~np.asarray(l_reduced > 0)
+        fine = fine & np.logical_not(l_reduced > 0)
     d = bolt.diameter
     shank_d = d if x.get("shank_diameter") is None else x["shank_diameter"]
     reduced_d = d if x.get("reduced_diameter") is None else x["reduced_diameter"]
     nut = 0.8 * d if x.get("nut_height") is None else x["nut_height"]
-    lengths = [l_shank, l_reduced, np.maximum(free, 0.0), nut / 3.0]
+    lengths = [l_shank, l_reduced, _where(free > 0.0, free, 0.0), nut / 3.0]
     diameters = [shank_d, reduced_d, bolt.minor_diameter, bolt.minor_diameter]
     return lengths, diameters, fine
 
@@ -1224,10 +1235,10 @@ def _smallest_section(bolt: Bolt | BoltArrays, x: Mapping[str, Any]) -> tuple[An
         sections.append((x["reduced_length"], x["reduced_diameter"]))
         fine: Any = True
     else:
-        fine = ~np.asarray(x["reduced_length"] > 0.0)
+        fine = np.logical_not(x["reduced_length"] > 0.0)
     d0, where = jt.smallest_section(bolt.stress_diameter, sections)
-    shank = np.asarray(where) == "shank"
-    area0 = np.where(shank, 0.25 * math.pi * d0 * d0, bolt.stress_area)
+    shank = where == "shank"  # a word for one design, an array of words for many
+    area0 = _where(shank, 0.25 * math.pi * d0 * d0, bolt.stress_area)
     return d0, area0, shank, fine
 
 
@@ -1593,7 +1604,7 @@ def _range(x: Mapping[str, Any], name: str, nominal: Any) -> tuple[Any, Any, Any
         return nominal, nominal, True
     if lo is None or hi is None:
         raise InputOutOfRange(f"give both {name}_min and {name}_max", field=f"{name}_min")
-    return lo, hi, ~np.asarray(lo > hi)
+    return lo, hi, np.logical_not(lo > hi)
 
 
 def _checked_range(x: Mapping[str, Any], name: str, nominal: float) -> tuple[float, float]:
@@ -1666,11 +1677,11 @@ def _passing(
         if other.controls == "displacement" and x.get("coupling_outer_diameter") is None:
             continue
         o_nominal, o_min, o_max = _method_band(other, permissible, at_yield, given)
-        passing = np.logical_and(o_min >= required, o_max <= top)
+        passing = (o_min >= required) & (o_max <= top)
         if other.controls in ("angle", "displacement") and stretch is not None:
             o_angle = pl.nut_rotation_angle(o_nominal, stretch, bolt.pitch)
             # too short for angle control, as the angle_resolution check says
-            passing = np.logical_and(passing, o_angle * other.scatter >= ANGLE_READING_ERROR)
+            passing = passing & np.logical_not(o_angle * other.scatter < ANGLE_READING_ERROR)
         candidates.append(other)
         passes.append(passing)
     return candidates, passes
