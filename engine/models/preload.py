@@ -232,7 +232,7 @@ def _bolt_numbers(
     that would be refused is False in the returned mask (no notes per point).
     """
     one = n is None
-    ok = np.ones(1 if n is None else n, dtype=bool)
+    ok: Any = True if n is None else np.ones(n, dtype=bool)
 
     def need(good: Any, refusal: Callable[[], InputOutOfRange]) -> None:
         nonlocal ok
@@ -1263,7 +1263,7 @@ def _clamped_compliance(
     def cone(g: float, e: float, outer: float, hole: float) -> float:
         return jt.clamped_compliance([g], [e], outer, hole, None, "through").total
 
-    if not any(isinstance(a, np.ndarray) for a in args):
+    if not isinstance(ok, np.ndarray) or not any(isinstance(a, np.ndarray) for a in args):
         return cone(*(float(a) for a in args))
     n = ok.shape[0]
     table = np.column_stack([np.broadcast_to(np.asarray(a, dtype=float), (n,)) for a in args])
@@ -1653,6 +1653,10 @@ def _scatter_band(
     )
 
 
+#: The control methods, cheapest first (the order the method lists are written in).
+_BY_COST = tuple(sorted(METHODS, key=lambda m: (m.cost_rank, m.key)))
+
+
 def _passing(
     x: Mapping[str, Any],
     bolt: Bolt | BoltArrays,
@@ -1669,7 +1673,7 @@ def _passing(
     top = at_yield * (1.0 + 1e-12)
     candidates: list[ControlMethod] = []
     passes: list[Any] = []
-    for other in sorted(METHODS, key=lambda m: (m.cost_rank, m.key)):
+    for other in _BY_COST:
         if other.family != method.family:
             continue
         if other.controls in ("angle", "displacement", "elongation") and stretch is None:
