@@ -55,13 +55,13 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Callable
 from dataclasses import dataclass, field, fields
 from typing import Any
 
 import numpy as np
 
 from .errors import BudgetExceeded, InfeasibleDesign, InputOutOfRange, SolverFailed
+from .numerics import StepCost, jit
 
 __all__ = [
     "ISO5393_ANGLE",
@@ -97,72 +97,13 @@ STEPS_PER_PERIOD = 200
 _BISECT = 60
 _SERIES_CAP = 400
 
-#: Seconds per RK4 step of the blow kernel: a running mean over the kernel's own chunks of
-#: 10,000 steps or more in this process (issue 21: budgets in time, not steps); the prior
-#: is a slow machine's figure (~0.3 µs measured on the 2-core CI box, about 3× that).
-_STEP_COST = [1e-6]
-#: Share of the time left that a run of blows may plan to use.
-TIME_SHARE = 0.5
-
-
-def step_budget(deadline: float | None, max_steps: int) -> int:
-    """Steps the blow kernel may take: what the time left affords, or ``max_steps``.
-
-    Parameters
-    ----------
-    deadline : float or None
-        ``time.perf_counter()`` value the answer is due by, [s]
-    max_steps : int
-        The caller's step budget, used only without a deadline, [-]
-
-    Notes
-    -----
-    With a deadline: :data:`TIME_SHARE` of the time left over the kernel's
-    measured cost per step (:data:`_STEP_COST`), so a light nut on a stiff joint
-    that needs millions of steps runs when they fit in the time budget.
-
-    >>> step_budget(None, 1000)
-    1000
-    >>> step_budget(time.perf_counter() + 1.0, 1000) > 1000  # 0.5 s at ≤ 1 µs a step
-    True
-    """
-    if deadline is None:
-        return max_steps
-    left = max(deadline - time.perf_counter(), 0.0)
-    return int(min(left * TIME_SHARE / _STEP_COST[0], 1e15))
-
-
-#: Whether the kernel has run once in this process: its first call compiles it (or loads
-#: it from numba's cache), seconds that are not the cost of a step.
-_WARM = [False]
-#: A chunk's measured cost is capped here (10x the prior): a pause of the whole process
-#: (a collection, a busy machine) must not shrink every later budget.
-_STEP_COST_CAP = 1e-5
-
-
-def _measured(used: int, seconds: float) -> None:
-    """Fold one chunk's cost into :data:`_STEP_COST` (chunks long enough to time).
-
-    The first call in the process is not counted (it includes the compilation), and one
-    chunk's figure is capped at :data:`_STEP_COST_CAP`.
-    """
-    if not _WARM[0]:
-        _WARM[0] = True
-        return
-    if used >= 10_000 and seconds > 0.0:
-        _STEP_COST[0] = 0.7 * _STEP_COST[0] + 0.3 * min(seconds / used, _STEP_COST_CAP)
-
-
-def _jit(func: Callable[..., Any]) -> Callable[..., Any]:
-    """Compile with numba when it is installed; the plain function otherwise."""
-    try:
-        import numba
-    except ImportError:  # pragma: no cover - numba is a declared dependency
-        return func
-    try:
-        return numba.njit(cache=True, nogil=True)(func)
-    except RuntimeError:  # pragma: no cover - no writable cache directory at all
-        return numba.njit(cache=False, nogil=True)(func)
+#: The blow kernel's measured cost per RK4 step in this process (issue 21: budgets in
+#: time, not steps); the prior is a slow machine's figure (~0.3 µs measured on the 2-core
+#: CI box, about 3× that).
+_COST = StepCost()
+#: Steps the blow kernel may take before ``deadline`` (:func:`engine.numerics.step_budget`
+#: at :data:`_COST`), or ``max_steps`` without one.
+step_budget = _COST.budget
 
 
 # ---------------------------------------------------------------------------
@@ -281,22 +222,24 @@ def joint_rate(
 # ---------------------------------------------------------------------------
 
 
-def rigid_blow_torque(energy: float, stiffness: float) -> float:
+def rigid_blow_torque(energy: Any, stiffness: Any) -> Any:
     r"""Peak torque of a blow into a fixed struck end.
 
     .. math::
         M = \sqrt{2 E C}
 
+    Arguments may be floats (a float back) or numpy arrays of one shape.
+
     Parameters
     ----------
-    energy : float
+    energy : float or array
         Kinetic energy of the tool at the blow, [J]
-    stiffness : float
+    stiffness : float or array
         Torsional stiffness between tool inertia and nut, [N*m/rad]
 
     Returns
     -------
-    M : float
+    M : float or array
         [N*m]
 
     Notes
@@ -311,18 +254,23 @@ def rigid_blow_torque(energy: float, stiffness: float) -> float:
     >>> round(rigid_blow_torque(0.5 * 21.07 * (150 * math.pi / 30) ** 2, 203.4), 1)
     1028.3
     """
-    return math.sqrt(2.0 * energy * stiffness)
+    return _sqrt(2.0 * energy * stiffness)
+
+
+def _sqrt(v: Any) -> Any:
+    """√v: math.sqrt of a float (a float back, ValueError below 0), np.sqrt of an array."""
+    return np.sqrt(v) if isinstance(v, np.ndarray) else math.sqrt(v)
 
 
 def energy_blow(
-    energy: float,
-    stiffness: float,
-    rate: float,
-    start_torque: float,
-    breakaway: float = 1.0,
-    drive_torque: float = 0.0,
-) -> tuple[float, float, float, float]:
-    r"""One blow by energy balance, struck inertia neglected.
+    energy: Any,
+    stiffness: Any,
+    rate: Any,
+    start_torque: Any,
+    breakaway: Any = 1.0,
+    drive_torque: Any = 0.0,
+) -> tuple[Any, Any, Any, Any]:
+    r"""One blow by energy balance, struck inertia neglected (floats or numpy arrays).
 
     With a massless nut turning while the spring torque equals the joint
     torque, the tool turns :math:`\varphi_t = T_p/C + (T_p - T_0)/k_j` and
@@ -337,57 +285,173 @@ def energy_blow(
 
     Parameters
     ----------
-    energy : float
+    energy : float or array
         E, [J]
-    stiffness : float
+    stiffness : float or array
         C, [N*m/rad]
-    rate : float
+    rate : float or array
         k_j, [N*m/rad]
-    start_torque : float
+    start_torque : float or array
         T_0, joint torque when the blow starts, [N*m]
-    breakaway : float, optional
+    breakaway : float or array, optional
         b ≥ 1, static over kinetic friction, [-]
-    drive_torque : float, optional
+    drive_torque : float or array, optional
         N, net torque driving the tool during the blow (feed less drag), [N*m]
 
     Returns
     -------
-    tuple of float
+    tuple of float or array
         (peak spring torque [N*m], joint torque after the blow [N*m],
-        nut rotation [rad], work into the joint [J])
+        nut rotation [rad], work into the joint [J]); floats when every input is one
+
+    Raises
+    ------
+    InfeasibleDesign
+        A single design with :math:`k_j \le 0` and :math:`T_0 \le N` (a massless nut never
+        stops); on arrays such a point is NaN in every output.
 
     Notes
     -----
     The energy balance of [000, eq. 7–8] with the joint's rate in series with
     the tool's stiffness. With b > 1 a massless nut breaks away at
     :math:`bT_0` and jumps until the spring torque equals the joint torque; the
-    balance still holds, and the peak is :math:`\max(bT_0, T_p)`.
+    balance still holds, and the peak is :math:`\max(bT_0, T_p)`. With
+    :math:`k_j \le 0` (a constant joint torque :math:`T_0`) the nut turns until the
+    tool's energy is spent: :math:`\varphi = (E + NT_0/C - T_0^2/2C)/(T_0 - N)`.
 
     Examples
     --------
     >>> [round(v, 3) for v in energy_blow(100.0, 2.0e4, 1000.0, 60.0)]
     [440.346, 440.346, 0.38, 95.152]
+    >>> [round(float(v[0]), 3) for v in energy_blow(np.array([100.0]), 2.0e4, 1000.0, 60.0)]
+    [440.346, 440.346, 0.38, 95.152]
+    >>> [round(v, 3) for v in energy_blow(100.0, 2.0e4, 0.0, 60.0)]  # constant joint torque
+    [60.0, 60.0, 1.665, 99.91]
     """
     e, c, k, t0, b, n = energy, stiffness, rate, start_torque, breakaway, drive_torque
-    held = n + math.sqrt(n * n + 2.0 * e * c)
-    if held <= b * t0:
-        return held, t0, 0.0, 0.0
-    if k <= 0.0:
-        # constant joint torque T0: the nut turns until the tool's energy is spent
-        if t0 <= n:
+    single = all(np.ndim(v) == 0 for v in (e, c, k, t0, b, n))
+    with np.errstate(all="ignore"):
+        held = n + np.sqrt(n * n + 2.0 * e * c)
+        holds = held <= b * t0
+        flat = k <= 0.0
+        stops = t0 > n  # a constant joint torque stops the nut only above the drive torque
+        if single and not holds and flat and not stops:
             raise InfeasibleDesign(
                 "the energy rung needs a joint that stops the nut: with a zero torque rate "
                 "and a joint torque not above the drive torque a massless nut never stops; "
                 "give a torque rate or use fidelity 'simulation'",
                 field="joint_rate",
             )
-        rot = (e + n * t0 / c - t0 * t0 / (2.0 * c)) / (t0 - n)
-        return max(b * t0, t0), t0, rot, t0 * rot
-    a = 0.5 * (1.0 / c + 1.0 / k)
-    rhs = e + t0 * t0 / (2.0 * k) - n * t0 / k
-    tp = n + math.sqrt(n * n + rhs / a)
-    rot = (tp - t0) / k
-    return max(b * t0, tp), tp, rot, 0.5 * (tp * tp - t0 * t0) / k
+        # a rising joint (k_j > 0)
+        kk = np.where(flat, 1.0, k)
+        a = 0.5 * (1.0 / c + 1.0 / kk)
+        rhs = e + t0 * t0 / (2.0 * kk) - n * t0 / kk
+        tp = n + np.sqrt(n * n + rhs / a)
+        rot = (tp - t0) / kk
+        work = 0.5 * (tp * tp - t0 * t0) / kk
+        # a constant joint torque (k_j <= 0)
+        rot_flat = np.where(stops, (e + n * t0 / c - t0 * t0 / (2.0 * c)) / (t0 - n), np.nan)
+        tp = np.where(flat, np.where(stops, t0, np.nan), tp)
+        rot = np.where(flat, rot_flat, rot)
+        work = np.where(flat, t0 * rot_flat, work)
+        bt0 = b * t0
+        peak = np.maximum(tp, bt0)  # NaN where the nut never stops
+        out = (
+            np.where(holds, held, peak),
+            np.where(holds, t0, tp),
+            np.where(holds, 0.0, rot),
+            np.where(holds, 0.0, work),
+        )
+    if single:
+        return float(out[0]), float(out[1]), float(out[2]), float(out[3])
+    return out
+
+
+def blow_step(
+    method: str,
+    energy: Any,
+    stiffness: Any,
+    rate: Any,
+    start_torque: Any,
+    breakaway: Any = 1.0,
+    drive_torque: Any = 0.0,
+) -> tuple[Any, Any, Any, Any]:
+    r"""One blow of the ``rigid`` or ``energy`` rung (floats or numpy arrays).
+
+    ``rigid`` ([000, eq. 7–8, 10]): the joint is taken to the peak of a blow into a fixed
+    struck end, :math:`M = \sqrt{2EC} + N`, if that is above its torque; with
+    :math:`k_j > 0` the nut turns :math:`(T - T_0)/k_j` and the joint takes
+    :math:`(T^2 - T_0^2)/2k_j`. ``energy``: :func:`energy_blow`.
+
+    Parameters
+    ----------
+    method : str
+        ``rigid`` or ``energy``
+    energy : float or array
+        E, [J]
+    stiffness : float or array
+        C, [N*m/rad]
+    rate : float or array
+        k_j, [N*m/rad]
+    start_torque : float or array
+        T_0, joint torque when the blow starts, [N*m]
+    breakaway : float or array, optional
+        b ≥ 1, static over kinetic friction (energy rung), [-]
+    drive_torque : float or array, optional
+        N, net torque driving the tool during the blow, [N*m]
+
+    Returns
+    -------
+    tuple
+        (peak spring torque [N*m], joint torque after the blow [N*m], nut rotation [rad],
+        work into the joint [J])
+
+    Examples
+    --------
+    >>> [round(float(v), 3) for v in blow_step("rigid", 100.0, 2.0e4, 1000.0, 60.0)]
+    [2000.0, 2000.0, 1.94, 1998.2]
+    >>> [round(float(v), 3) for v in blow_step("energy", 100.0, 2.0e4, 1000.0, 60.0)]
+    [440.346, 440.346, 0.38, 95.152]
+    """
+    if method != "rigid":
+        return energy_blow(energy, stiffness, rate, start_torque, breakaway, drive_torque)
+    m = rigid_blow_torque(energy, stiffness) + drive_torque
+    new = np.maximum(m, start_torque)
+    rising = rate > 0.0
+    with np.errstate(all="ignore"):
+        k = np.where(rising, rate, 1.0)
+        rot = np.where(rising, (new - start_torque) / k, 0.0)
+        work = np.where(rising, 0.5 * (new * new - start_torque * start_torque) / k, 0.0)
+    if all(np.ndim(v) == 0 for v in (energy, stiffness, rate, start_torque, drive_torque)):
+        return float(m), float(new), float(rot), float(work)
+    return m, new, rot, work
+
+
+def blow_gains_nothing(rotation: Any, torque_after: Any, torque_before: Any) -> Any:
+    r"""Whether a blow no longer turns the nut: the run of blows has saturated.
+
+    .. math::
+        \varphi \le 10^{-12}\ \text{rad} \quad\lor\quad
+        T - T_0 \le 10^{-12}\max(|T|, 1\ \text{N·m})
+
+    Parameters
+    ----------
+    rotation : float or array
+        Nut rotation in the blow, [rad]
+    torque_after : float or array
+        T, joint torque after the blow, [N*m]
+    torque_before : float or array
+        T_0, joint torque before the blow, [N*m]
+
+    Examples
+    --------
+    >>> blow_gains_nothing(0.0, 100.0, 100.0), blow_gains_nothing(0.1, 101.0, 100.0)
+    (True, False)
+    """
+    stuck = (rotation <= 1e-12) | (
+        torque_after - torque_before <= 1e-12 * np.maximum(np.abs(torque_after), 1.0)
+    )
+    return bool(stuck) if np.ndim(stuck) == 0 else stuck
 
 
 def energy_blow_error(
@@ -566,7 +630,7 @@ def _rates(st, mode, jt, js, c, cd, k, t0, n):  # type: ignore[no-untyped-def]
     return du, dwt, dth, dws, pj, n * wt, (ts - c * up) * du, ts
 
 
-_rates_c = _jit(_rates)
+_rates_c = jit(_rates)
 
 
 def _rk4(st, h, mode, jt, js, c, cd, k, t0, n, out):  # type: ignore[no-untyped-def]
@@ -594,7 +658,7 @@ def _rk4(st, h, mode, jt, js, c, cd, k, t0, n, out):  # type: ignore[no-untyped-
         out[3] = 0.0
 
 
-_rk4_c = _jit(_rk4)
+_rk4_c = jit(_rk4)
 
 
 def _spring(st, c, cd):  # type: ignore[no-untyped-def]
@@ -605,7 +669,7 @@ def _spring(st, c, cd):  # type: ignore[no-untyped-def]
     return ts if ts > 0.0 else 0.0
 
 
-_spring_c = _jit(_spring)
+_spring_c = jit(_spring)
 
 
 def _event(st, mode, jt, js, c, cd, k, t0, b, n, started):  # type: ignore[no-untyped-def]
@@ -625,7 +689,7 @@ def _event(st, mode, jt, js, c, cd, k, t0, b, n, started):  # type: ignore[no-un
     return 0
 
 
-_event_c = _jit(_event)
+_event_c = jit(_event)
 
 
 def _torque_rate(st, mode, jt, js, c, cd, k, t0, n):  # type: ignore[no-untyped-def]
@@ -635,7 +699,7 @@ def _torque_rate(st, mode, jt, js, c, cd, k, t0, n):  # type: ignore[no-untyped-
     return c * r[0] + cd * (r[1] - r[3])
 
 
-_torque_rate_c = _jit(_torque_rate)
+_torque_rate_c = jit(_torque_rate)
 
 
 def _blow_kernel(  # type: ignore[no-untyped-def]
@@ -733,7 +797,7 @@ def _blow_kernel(  # type: ignore[no-untyped-def]
     info[7] = 1.0 if started else 0.0
 
 
-_blow_kernel_c = _jit(_blow_kernel)
+_blow_kernel_c = jit(_blow_kernel)
 
 
 @dataclass(frozen=True)
@@ -888,7 +952,7 @@ def simulate_blow(
             out_t, out_ts, info,
         )  # fmt: skip
         used = int(info[1])
-        _measured(used, time.perf_counter() - began)
+        _COST.measured(used, time.perf_counter() - began)
         if info[3] > peak:
             peak = float(info[3])
             t_peak_abs = t_total + float(info[4])
@@ -1091,7 +1155,7 @@ class BlowSeries:
     first: BlowOutcome | None = None
 
 
-def energy_peak_error(p: BlowProblem, peak: float) -> float:
+def energy_peak_error(p: BlowProblem, peak: Any) -> Any:
     r"""A-priori relative error of the energy rung's *peak spring torque*.
 
     .. math::
@@ -1106,8 +1170,9 @@ def energy_peak_error(p: BlowProblem, peak: float) -> float:
     Parameters
     ----------
     p : BlowProblem
-        Tool, struck side and joint
-    peak : float
+        Tool, struck side and joint (its numbers may be arrays of one shape, one
+        design each)
+    peak : float or array
         The energy rung's peak torque T_p, [N*m]
 
     Returns
@@ -1119,7 +1184,8 @@ def energy_peak_error(p: BlowProblem, peak: float) -> float:
     0.817
     """
     jr = p.tool_inertia * p.struck_inertia / (p.tool_inertia + p.struck_inertia)
-    return p.speed * math.sqrt(p.stiffness * jr) / max(peak, 1e-300)
+    tiny = np.maximum(peak, 1e-300) if isinstance(peak, np.ndarray) else max(peak, 1e-300)
+    return p.speed * _sqrt(p.stiffness * jr) / tiny
 
 
 def blow_series(
@@ -1156,7 +1222,7 @@ def blow_series(
         Keep the torque against time of the first blow (simulation)
     max_steps : int
         Step budget of all blows together without a deadline, [-]; with one, the step
-        budget is what the time left affords (:func:`step_budget`)
+        budget is what the time left affords (:func:`engine.numerics.step_budget`)
     deadline : float or None
         ``time.perf_counter()`` value after which the run stops, [s]
 
@@ -1176,15 +1242,10 @@ def blow_series(
     saturated = False
     e, c = p.energy, p.stiffness
     for i in range(max_blows):
-        if method == "rigid":
-            m = rigid_blow_torque(e, c) + p.drive_torque
-            new = max(m, torque)
-            peak, rot, work = m, 0.0, 0.0
-            if p.rate > 0.0:
-                rot = (new - torque) / p.rate
-                work = 0.5 * (new * new - torque * torque) / p.rate
-        elif method == "energy":
-            peak, new, rot, work = energy_blow(e, c, p.rate, torque, p.breakaway, p.drive_torque)
+        if method in ("rigid", "energy"):
+            peak, new, rot, work = blow_step(
+                method, e, c, p.rate, torque, p.breakaway, p.drive_torque
+            )
         else:
             left = budget - steps
             if left <= 0:
@@ -1209,7 +1270,7 @@ def blow_series(
         if target_torque is not None and new >= target_torque:
             reached = i + 1
             break
-        if rot <= 1e-12 or new - torque <= 1e-12 * max(abs(new), 1.0):
+        if blow_gains_nothing(rot, new, torque):
             saturated = True
             break
         if method == "rigid":
@@ -1222,57 +1283,6 @@ def blow_series(
 # ---------------------------------------------------------------------------
 # Rungs 1 and 2 on arrays (sweeps and studies: several inputs may vary at once)
 # ---------------------------------------------------------------------------
-
-
-def energy_blow_array(
-    energy: Any,
-    stiffness: Any,
-    rate: Any,
-    start_torque: Any,
-    breakaway: Any = 1.0,
-    drive_torque: Any = 0.0,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    r""":func:`energy_blow` at many points (numpy; the same operations in the same order).
-
-    Parameters
-    ----------
-    energy, stiffness, rate, start_torque, breakaway, drive_torque : float or array
-        As :func:`energy_blow`: E [J], C [N*m/rad], k_j > 0 [N*m/rad], T_0 [N*m],
-        b [-], N [N*m]
-
-    Returns
-    -------
-    tuple of arrays
-        (peak spring torque [N*m], joint torque after the blow [N*m], nut rotation
-        [rad], work into the joint [J])
-
-    Notes
-    -----
-    ValueError where some :math:`k_j \le 0` (the scalar form's constant-torque
-    branch; the model's rates are positive).
-
-    >>> [round(float(v[0]), 3) for v in energy_blow_array(np.array([100.0]), 2.0e4, 1000.0, 60.0)]
-    [440.346, 440.346, 0.38, 95.152]
-    """
-    e, c, k, t0, b, n = energy, stiffness, rate, start_torque, breakaway, drive_torque
-    if not np.all(np.asarray(k) > 0.0):
-        raise ValueError("energy_blow_array needs a positive torque rate at every point")
-    with np.errstate(all="ignore"):
-        held = n + np.sqrt(n * n + 2.0 * e * c)
-        holds = held <= b * t0
-        a = 0.5 * (1.0 / c + 1.0 / k)
-        rhs = e + t0 * t0 / (2.0 * k) - n * t0 / k
-        tp = n + np.sqrt(n * n + rhs / a)
-        rot = (tp - t0) / k
-        bt0 = b * t0
-        peak = np.where(tp > bt0, tp, bt0)
-        work = 0.5 * (tp * tp - t0 * t0) / k
-        return (
-            np.where(holds, held, peak),
-            np.where(holds, t0, tp),
-            np.where(holds, 0.0, rot),
-            np.where(holds, 0.0, work),
-        )
 
 
 @dataclass
@@ -1362,16 +1372,8 @@ def blow_series_array(
     i = 0
     with np.errstate(all="ignore"):
         while idx.size:
-            ee, cc, kk, t0, nn = e[idx], c[idx], k[idx], torque[idx], n[idx]
-            if method == "rigid":
-                m = np.sqrt(2.0 * ee * cc) + nn
-                new = np.where(t0 > m, t0, m)
-                peak, rot, work = m, np.zeros(idx.size), np.zeros(idx.size)
-                pos = kk > 0.0
-                rot = np.where(pos, (new - t0) / kk, rot)
-                work = np.where(pos, 0.5 * (new * new - t0 * t0) / kk, work)
-            else:
-                peak, new, rot, work = energy_blow_array(ee, cc, kk, t0, b[idx], nn)
+            t0 = torque[idx]
+            peak, new, rot, work = blow_step(method, e[idx], c[idx], k[idx], t0, b[idx], n[idx])
             if i == 0:
                 peak0[idx], rot0[idx], after0[idx], work0[idx] = peak, rot, new, work
             total[idx] = total[idx] + work
@@ -1382,7 +1384,7 @@ def blow_series_array(
                 hit = new >= target[idx]
                 reached[idx[hit]] = i + 1
                 done |= hit
-            stuck = ~done & ((rot <= 1e-12) | (new - t0 <= 1e-12 * np.maximum(np.abs(new), 1.0)))
+            stuck = ~done & blow_gains_nothing(rot, new, t0)
             if method == "rigid":
                 stuck = ~done
             saturated[idx[stuck]] = True
@@ -1402,3 +1404,7 @@ def _series_one(
         target_torque=None if target is None else target.reshape(1), max_blows=limit,
     )  # fmt: skip
     return BlowSeriesArrays(*(getattr(s, f.name).reshape(()) for f in fields(BlowSeriesArrays)))
+
+
+#: The old name of :func:`energy_blow` on arrays: the same function.
+energy_blow_array = energy_blow

@@ -451,8 +451,37 @@ def spring_shear_stress(
 # --------------------------------------------------------------------------
 
 
-def _sharing(arrangement: str, ball_count: FloatArray, load_factor: FloatArray) -> FloatArray:
-    """Torque multiplier of the arrangement: 1 for one common spring, K_r i per ball."""
+def torque_sharing(arrangement: str, ball_count: FloatArray, load_factor: FloatArray) -> FloatArray:
+    r"""Torque multiplier of the spring arrangement.
+
+    .. math::
+        s = 1 \;\text{(one common spring)}, \qquad s = K_r\, i \;\text{(a spring per ball)}
+
+    Parameters
+    ----------
+    arrangement : str
+        ``"common"`` or ``"per_ball"``, [-]
+    ball_count : int or array
+        i, [-]
+    load_factor : float or array
+        K_r, share of the most-loaded ball, [-]
+
+    Returns
+    -------
+    s : float or array
+        T = s D0 F/(2 tan(α − ρ)), [-]
+
+    Notes
+    -----
+    [001, eq. 1–3]: with a spring per ball the most-loaded ball's axial force is
+    the spring force, so the torque is K_r i times that of one common spring,
+    whose force statics fixes however unevenly the balls share it.
+
+    Examples
+    --------
+    >>> torque_sharing("common", 4, 0.85), round(torque_sharing("per_ball", 4, 0.85), 12)
+    (1.0, 3.4)
+    """
     if arrangement == "common":
         return 1.0
     if arrangement == "per_ball":
@@ -520,7 +549,7 @@ def torque_limit(
     1.9103
     """
     push = np.asarray(flank_push_factor(groove_angle, flank_friction))
-    share = _sharing(arrangement, ball_count, load_factor)
+    share = torque_sharing(arrangement, ball_count, load_factor)
     with np.errstate(divide="ignore", invalid="ignore"):
         torque = np.where(
             push > 0.0,
@@ -580,7 +609,7 @@ def spring_force_for_torque(
     22.4746
     """
     push = np.asarray(flank_push_factor(groove_angle, flank_friction))
-    share = _sharing(arrangement, ball_count, load_factor)
+    share = torque_sharing(arrangement, ball_count, load_factor)
     force = np.where(
         push > 0.0,
         2.0 * np.asarray(torque) * push / (np.asarray(ball_circle_diameter) * share),
@@ -887,10 +916,9 @@ def combined_push_factor(
     >>> round(combined_push_factor(math.radians(45.0), 0.0, math.radians(45.0)), 12)
     2.0
     """
-    rho = np.arctan(flank_friction)
-    push = np.tan(np.asarray(groove_angle) - rho)
+    push = flank_push_factor(groove_angle, flank_friction)
     if driving_groove_angle is not None:
-        push = push + np.tan(np.asarray(driving_groove_angle) - rho)
+        push = push + flank_push_factor(driving_groove_angle, flank_friction)
     return _out(push)
 
 
@@ -928,7 +956,11 @@ def rim_rise(ball_diameter: FloatArray, groove_angle: FloatArray) -> FloatArray:
 
 
 def lift_points(
-    ball_lift: float, ball_diameter: float, groove_angle: float, points: int = 41
+    ball_lift: FloatArray,
+    ball_diameter: FloatArray,
+    groove_angle: FloatArray,
+    points: int = 41,
+    from_rim: bool = False,
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     r"""Lifts from seated to riding on the face, and the contact angle at each.
 
@@ -946,6 +978,8 @@ def lift_points(
         α of the driven groove, [rad]
     points : int, optional
         Points on the flank and as many over the rim, [-]
+    from_rim : bool, optional
+        Only the points from the flank's end (z = h) on, [-]
 
     Returns
     -------
@@ -957,29 +991,41 @@ def lift_points(
     Notes
     -----
     On the flank the angle is α ([001, eq. 1]); over the rim it follows
-    :func:`rim_rise`. Rim points are spaced evenly in β.
+    :func:`rim_rise`. Rim points are spaced evenly in β. The arguments may be
+    floats or numpy arrays of one shape: the lifts then run along a last axis
+    of ``2 points − 1`` entries.
 
     Examples
     --------
     >>> z, b = lift_points(0.004, 0.01, math.radians(45.0), 3)
     >>> [round(float(v) * 1e3, 4) for v in z]
     [0.0, 2.0, 4.0, 5.0839, 5.4645]
+    >>> lift_points([0.004, 0.002], 0.01, math.radians(45.0), 3)[0].shape
+    (2, 5)
+    >>> [round(float(v) * 1e3, 4) for v in lift_points(0.004, 0.01, math.radians(45.0), 3, True)[0]]
+    [4.0, 5.0839, 5.4645]
     """
-    flank = np.linspace(0.0, ball_lift, points)
-    beta_rim = np.linspace(groove_angle, math.pi / 2.0, points)[1:]
-    rim = ball_lift + ball_diameter / 2.0 * (np.sin(beta_rim) - math.sin(groove_angle))
-    lift = np.concatenate([flank, rim])
-    angle = np.concatenate([np.full(points, groove_angle), beta_rim])
-    return lift, angle
+    h, d, a = np.broadcast_arrays(
+        np.asarray(ball_lift, float),
+        np.asarray(ball_diameter, float),
+        np.asarray(groove_angle, float),
+    )
+    h, r, a = h[..., None], d[..., None] / 2.0, a[..., None]
+    u = np.linspace(0.0, 1.0, points)
+    beta_rim = a + u[1:] * (math.pi / 2.0 - a)
+    flank = u[-1:] if from_rim else u
+    lift = np.concatenate([flank * h, h + r * (np.sin(beta_rim) - np.sin(a))], axis=-1)
+    seated = np.broadcast_to(a, (*a.shape[:-1], flank.size))
+    return lift, np.concatenate([seated, beta_rim], axis=-1)
 
 
 def torque_against_lift(
     spring_force: FloatArray,
     contact_angle: FloatArray,
-    ball_circle_diameter: float,
-    flank_friction: float = 0.0,
-    driving_groove_angle: float | None = None,
-    sharing: float = 1.0,
+    ball_circle_diameter: FloatArray,
+    flank_friction: FloatArray = 0.0,
+    driving_groove_angle: FloatArray | None = None,
+    sharing: FloatArray = 1.0,
 ) -> FloatArray:
     r"""Torque that holds the balls at a lift, from the spring force there.
 
@@ -1110,13 +1156,10 @@ def friction_sensitivity(
     2.0
     """
     rho = np.arctan(flank_friction)
-    a = np.asarray(groove_angle) - rho
-    push = np.tan(a)
-    dpush = 1.0 / np.cos(a) ** 2
+    push = combined_push_factor(groove_angle, flank_friction, driving_groove_angle)
+    dpush = 1.0 / np.cos(np.asarray(groove_angle) - rho) ** 2  # d/dρ of tan(α − ρ)
     if driving_groove_angle is not None:
-        b = np.asarray(driving_groove_angle) - rho
-        push = push + np.tan(b)
-        dpush = dpush + 1.0 / np.cos(b) ** 2
+        dpush = dpush + 1.0 / np.cos(np.asarray(driving_groove_angle) - rho) ** 2
     return _out(np.asarray(torque) / push * dpush / (1.0 + np.asarray(flank_friction) ** 2))
 
 

@@ -4,9 +4,10 @@ Every engine function documents its equation in a ``.. math::`` block (the
 fluids docstring style). :func:`equations_of` starts at a model's compute
 function, follows the engine functions it calls (directly or through an
 imported engine module, ``th.stress_area``), depth first in the order they
-are named, and returns each function's summary line, its LaTeX and its
-source citation, so the form's calculation report can print the equations
-actually used rather than a list typed by hand that could drift.
+are named, to any depth and with no cap, and returns each function's summary
+line, its LaTeX and its source citation, so the form's calculation report can
+print every equation of the procedure, in the order the procedure names its
+steps, rather than a list typed by hand that could drift.
 """
 
 from __future__ import annotations
@@ -60,11 +61,13 @@ def _callees(fn: Callable[..., Any]) -> list[Callable[..., Any]]:
 
 
 @lru_cache(maxsize=64)
-def equations_of(fn: Callable[..., Any], limit: int = 16) -> tuple[dict[str, Any], ...]:
-    """``({"function", "summary", "latex": [...], "source"}, ...)`` for ``fn`` and what it calls.
+def equations_of(fn: Callable[..., Any]) -> tuple[dict[str, Any], ...]:
+    """``({"function", "module", "summary", "latex": [...], "source"}, ...)`` for ``fn`` and
+    every engine function it calls, directly or not.
 
-    At most ``limit`` functions (the first found, depth first); functions
-    whose docstring has no ``.. math::`` block are followed but not listed.
+    Each function once, in the order first reached depth first (a step's own
+    equations before the next step's); functions whose docstring has no
+    ``.. math::`` block (drivers, helpers) are followed but not listed.
 
     >>> from engine import preload
     >>> eqs = equations_of(preload.thread_torque)
@@ -76,8 +79,8 @@ def equations_of(fn: Callable[..., Any], limit: int = 16) -> tuple[dict[str, Any
     seen: set[Callable[..., Any]] = set()
     out: list[dict[str, Any]] = []
 
-    def visit(f: Callable[..., Any], depth: int) -> None:
-        if f in seen or depth > 4 or len(out) >= limit:
+    def visit(f: Callable[..., Any]) -> None:
+        if f in seen:
             return
         seen.add(f)
         doc = inspect.getdoc(f) or ""
@@ -92,13 +95,14 @@ def equations_of(fn: Callable[..., Any], limit: int = 16) -> tuple[dict[str, Any
             out.append(
                 {
                     "function": f.__name__,
+                    "module": f.__module__,
                     "summary": summary,
                     "latex": latex,
                     "source": ", ".join(cites[:3]),
                 }
             )
         for g in _callees(f):
-            visit(g, depth + 1)
+            visit(g)
 
-    visit(fn, 0)
+    visit(fn)
     return tuple(out)

@@ -804,10 +804,54 @@ def minimum_assembly_preload(
     """
     return (
         required_clamp_force
-        + (1.0 - load_factor_n) * working_load_max
-        + embedding_force
-        + _max(thermal_loss, 0.0)
+        + clamp_load_reduction(load_factor_n, working_load_max)
+        + preload_losses(embedding_force, thermal_loss)
     )
+
+
+def tightening_torque(
+    preload: float, thread_per_newton: float, bearing_per_newton: float, prevailing_torque: float
+) -> float:
+    r"""Tightening torque for an assembly preload: thread, bearing face and prevailing torque.
+
+    .. math::
+        M_A = F_M k_G + F_M k_K + M_{\ddot u},\qquad
+        k_G = 0.16 P + 0.58\,d_2\,\mu_G,\quad k_K = \mu_K \frac{D_{Km}}{2}
+
+    with k_G, k_K from :func:`engine.preload.tightening_torque_per_preload`
+    (``"vdi2230"``: the coefficients the preload models use too).
+
+    Parameters
+    ----------
+    preload : float
+        F_M, [N]
+    thread_per_newton : float
+        k_G, thread torque per newton of preload, [m]
+    bearing_per_newton : float
+        k_K, bearing-face torque per newton of preload, [m]
+    prevailing_torque : float
+        M_ü, the prevailing (locking) torque, [N*m]
+
+    Returns
+    -------
+    float
+        M_A, [N*m]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R13, eq. (R13/1) plus the prevailing torque; the
+    joint states it at F_M,zul and μ_G,min, μ_K,min (the torque that reaches
+    the permissible preload with the least friction).
+
+    Examples
+    --------
+    M12 8.8 at F_M,zul = 43.11 kN, μ = 0.12: k_G = 0.16 × 1.75 + 0.58 × 10.863
+    × 0.12 = 1.0361 mm, k_K = 0.12 × (16.63 + 13.5)/4 = 0.9039 mm
+
+    >>> round(tightening_torque(43110.0, 1.0361e-3, 0.9039e-3, 0.0), 2)
+    83.63
+    """
+    return preload * thread_per_newton + preload * bearing_per_newton + prevailing_torque
 
 
 def smallest_section(
@@ -1040,6 +1084,833 @@ def endurance_limit(
         return base
     ratio = _min(_max(mean_bolt_force / proof_force, 0.0), 1.0)
     return (2.0 - ratio) * base
+
+
+# --------------------------------------------------------------------------- R1–R12 in closed form
+#
+# The steps below were written inline in the model's declaration (twice, once for one design
+# and once for arrays); each is one relation here, floats or arrays.
+
+
+def required_clamp_force(transverse_clamp_force: float, sealing_clamp_force: float) -> float:
+    r"""Clamp force the joint needs in service.
+
+    .. math::
+        F_{K,erf} = \max(F_{KQ},\ F_{KP})
+
+    All arguments may be floats or numpy arrays of one shape.
+
+    Parameters
+    ----------
+    transverse_clamp_force : float
+        F_KQ, the clamp force that carries the transverse load by friction, [N]
+    sealing_clamp_force : float
+        F_KP, the clamp force needed for sealing or other reasons, [N]
+
+    Returns
+    -------
+    float
+        F_K,erf, [N]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R2, eq. (R2/4) (the largest of the requirements;
+    without the torsion and tilting terms).
+
+    Examples
+    --------
+    >>> required_clamp_force(13333.3, 5000.0)
+    13333.3
+    """
+    return _max(transverse_clamp_force, sealing_clamp_force)
+
+
+def plates_expansion_length(thicknesses: Sequence[float], expansions: Sequence[float]) -> float:
+    r"""Thermal length coefficient of the clamped parts.
+
+    .. math::
+        \sum_i h_i\,\alpha_i
+
+    Parameters
+    ----------
+    thicknesses : sequence of float
+        h_i of the plates, [m]
+    expansions : sequence of float
+        α_i of the plates, [1/K]
+
+    Returns
+    -------
+    float
+        Σ h_i α_i, [m/K]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R4 (the plates' share of the thermal mismatch in
+    :func:`thermal_preload_loss`).
+
+    Examples
+    --------
+    20 mm of steel and 20 mm of aluminium: 0.02 × 11.5e-6 + 0.02 × 23e-6
+
+    >>> round(plates_expansion_length([0.02, 0.02], [11.5e-6, 23e-6]) * 1e9, 3)
+    690.0
+    """
+    total: Any = 0.0
+    for h, a in zip(thicknesses, expansions, strict=True):
+        total = total + h * a
+    return total
+
+
+def embedding_locations(joint: str, plates: int) -> tuple[int, int]:
+    r"""Bearing faces n_K and inner interfaces n_T that settle by embedding.
+
+    .. math::
+        (n_K, n_T) = (2,\ n_P - 1)\ \text{through-bolted},\qquad (1,\ n_P)\ \text{tapped}
+
+    Parameters
+    ----------
+    joint : str
+        ``"through"`` (bolt and nut) or ``"tapped"`` (screwed into the last part)
+    plates : int
+        n_P, the number of clamped plates, [-]
+
+    Returns
+    -------
+    tuple of int
+        (n_K, n_T), [-]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R4, Table 5.4/1 is per location: head and nut are
+    two bearing faces; a tapped part has one bearing face and its interface
+    with the last plate.
+
+    Examples
+    --------
+    >>> embedding_locations("through", 2), embedding_locations("tapped", 1)
+    ((2, 1), (1, 1))
+    """
+    return (2, plates - 1) if joint == "through" else (1, plates)
+
+
+def embedding_for_load(
+    roughness: str, transverse_load: float, bearing_faces: int, interfaces: int
+) -> float:
+    r"""Embedding f_Z with the table's column for the load the joint carries.
+
+    .. math::
+        f_Z = f_{Z,transverse}\ \text{if}\ F_Q > 0,\ \text{else}\ f_{Z,axial}
+
+    ``transverse_load`` and the counts may be floats or numpy arrays.
+
+    Parameters
+    ----------
+    roughness : str
+        ``"Rz<10"``, ``"Rz10-40"`` or ``"Rz40-160"``
+    transverse_load : float
+        F_Q,max, [N]
+    bearing_faces : int
+        n_K, [-]
+    interfaces : int
+        n_T, [-]
+
+    Returns
+    -------
+    float
+        f_Z, [m]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R4, Table 5.4/1 (see :func:`embedding`).
+
+    Examples
+    --------
+    Rz 10–40 µm, two plates through-bolted, with a transverse load: 3 + 2 × 4.5 + 2.5
+
+    >>> round(embedding_for_load("Rz10-40", 2e3, 2, 1) * 1e6, 2)
+    14.5
+    """
+    if _arrays(transverse_load, bearing_faces, interfaces):
+        return np.where(  # type: ignore[return-value]
+            np.asarray(transverse_load) > 0.0,
+            embedding(roughness, "transverse", bearing_faces, interfaces),
+            embedding(roughness, "axial", bearing_faces, interfaces),
+        )
+    load = "transverse" if transverse_load > 0.0 else "axial"
+    return embedding(roughness, load, bearing_faces, interfaces)
+
+
+def preload_losses(embedding_force: float, thermal_loss: float) -> float:
+    r"""Preload lost in service by embedding and temperature (a thermal gain not credited).
+
+    .. math::
+        F_Z + \max(\Delta F_{th}, 0)
+
+    Parameters
+    ----------
+    embedding_force : float
+        F_Z, [N]
+    thermal_loss : float
+        ΔF_th, positive for a loss, [N]
+
+    Returns
+    -------
+    float
+        F_Z + max(ΔF_th, 0), [N]
+
+    Notes
+    -----
+    VDI 2230-1:2015 steps R4–R5 (the loss terms of eq. R5/1).
+
+    Examples
+    --------
+    >>> preload_losses(2600.0, 1500.0), preload_losses(2600.0, -900.0)
+    (4100.0, 2600.0)
+    """
+    return embedding_force + _max(thermal_loss, 0.0)
+
+
+def additional_bolt_load(load_factor_n: float, working_load: float) -> float:
+    r"""Share of the working load that adds to the bolt force.
+
+    .. math::
+        F_{SA} = \Phi_n F_A
+
+    Parameters
+    ----------
+    load_factor_n : float
+        Φ_n, [-]
+    working_load : float
+        F_A, [N]
+
+    Returns
+    -------
+    float
+        F_SA, [N]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R3, eq. (5.3/1) (used in R8).
+
+    Examples
+    --------
+    >>> additional_bolt_load(0.1, 8000.0)
+    800.0
+    """
+    return load_factor_n * working_load
+
+
+def clamp_load_reduction(load_factor_n: float, working_load: float) -> float:
+    r"""Share of the working load that unloads the clamped parts.
+
+    .. math::
+        F_{PA} = (1 - \Phi_n) F_A
+
+    Parameters
+    ----------
+    load_factor_n : float
+        Φ_n, [-]
+    working_load : float
+        F_A, [N]
+
+    Returns
+    -------
+    float
+        F_PA, [N]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R3, eq. (5.3/2) (used in R5 and R12).
+
+    Examples
+    --------
+    >>> clamp_load_reduction(0.25, 8000.0)
+    6000.0
+    """
+    return (1.0 - load_factor_n) * working_load
+
+
+def residual_clamp_force(
+    assembly_preload_min: float,
+    working_load: float,
+    load_factor_n: float,
+    embedding_force: float,
+    thermal_loss: float,
+) -> float:
+    r"""Smallest clamp force left at the interface in service.
+
+    .. math::
+        F_{KR,min} = F_{M,min} - (1 - \Phi_n) F_{A,max} - F_Z - \max(\Delta F_{th}, 0)
+
+    Parameters
+    ----------
+    assembly_preload_min : float
+        F_M,min, the lowest assembly preload, [N]
+    working_load : float
+        F_A,max, [N]
+    load_factor_n : float
+        Φ_n, [-]
+    embedding_force : float
+        F_Z, [N]
+    thermal_loss : float
+        ΔF_th, positive for a loss, [N]
+
+    Returns
+    -------
+    float
+        F_KR,min, [N] (negative: the joint has opened)
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R12, eq. (R12/1); :func:`minimum_assembly_preload`
+    is the same balance solved for F_M,min.
+
+    Examples
+    --------
+    >>> residual_clamp_force(30e3, 8e3, 0.1, 2.6e3, 0.0)
+    20200.0
+    """
+    return (
+        assembly_preload_min
+        - clamp_load_reduction(load_factor_n, working_load)
+        - preload_losses(embedding_force, thermal_loss)
+    )
+
+
+def separation_load(assembly_preload: float, losses: float, load_factor_n: float) -> float:
+    r"""Working load at which the joint opens (no clamp force left).
+
+    .. math::
+        F_{A,sep} = \frac{\max(F_M - F_Z - \max(\Delta F_{th}, 0),\ 0)}{1 - \Phi_n}
+
+    infinite where Φ_n ≥ 1 (the plates never unload). Floats or arrays.
+
+    Parameters
+    ----------
+    assembly_preload : float
+        F_M, the assembly preload the joint starts from, [N]
+    losses : float
+        F_Z + max(ΔF_th, 0), see :func:`preload_losses`, [N]
+    load_factor_n : float
+        Φ_n, [-]
+
+    Returns
+    -------
+    float
+        F_A at which F_KR = 0, [N]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R12, eq. (R12/1) with F_KR = 0 solved for F_A.
+
+    Examples
+    --------
+    >>> round(separation_load(30e3, 2.6e3, 0.1), 1)
+    30444.4
+    """
+    if _arrays(assembly_preload, losses, load_factor_n):
+        opens = np.asarray(load_factor_n) < 1.0
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(  # type: ignore[return-value]
+                opens, np.maximum(assembly_preload - losses, 0.0) / (1.0 - load_factor_n), np.inf
+            )
+    if load_factor_n < 1.0:
+        return _max(assembly_preload - losses, 0.0) / (1.0 - load_factor_n)
+    return math.inf
+
+
+def max_working_load(
+    permissible_preload: float,
+    tightening_factor: float,
+    required_clamp_force: float,
+    losses: float,
+    load_factor_n: float,
+) -> float:
+    r"""Largest working load whose required preload window fits under F_M,zul.
+
+    .. math::
+        F_{A,max} = \frac{\max(F_{M,zul}/\alpha_A - F_{K,erf} - F_Z
+            - \max(\Delta F_{th}, 0),\ 0)}{1 - \Phi_n}
+
+    Parameters
+    ----------
+    permissible_preload : float
+        F_M,zul, [N]
+    tightening_factor : float
+        α_A, [-]
+    required_clamp_force : float
+        F_K,erf, [N]
+    losses : float
+        F_Z + max(ΔF_th, 0), [N]
+    load_factor_n : float
+        Φ_n, [-]
+
+    Returns
+    -------
+    float
+        F_A,max, [N]
+
+    Notes
+    -----
+    VDI 2230-1:2015 steps R5–R7: R5 (eq. R5/1) and R6 (F_M,max = α_A
+    F_M,min ≤ F_M,zul) solved for F_A; it is :func:`separation_load` from
+    F_M,zul/α_A − F_K,erf.
+
+    Examples
+    --------
+    >>> round(max_working_load(43.1e3, 1.6, 10e3, 2.6e3, 0.1), 1)
+    15930.6
+    """
+    floor = permissible_preload / tightening_factor - required_clamp_force
+    return separation_load(floor, losses, load_factor_n)
+
+
+def required_preload_max(tightening_factor: float, required_preload_min: float) -> float:
+    r"""Largest assembly preload the method's scatter gives when it must reach F_M,min.
+
+    .. math::
+        F_{M,max} = \alpha_A F_{M,min}
+
+    Parameters
+    ----------
+    tightening_factor : float
+        α_A, [-]
+    required_preload_min : float
+        F_M,min from R5, [N]
+
+    Returns
+    -------
+    float
+        F_M,max, [N]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R6, eq. (R6/1).
+
+    Examples
+    --------
+    >>> required_preload_max(1.6, 20e3)
+    32000.0
+    """
+    return tightening_factor * required_preload_min
+
+
+def design_preload_range(
+    permissible_preload: float, tightening_factor: float
+) -> tuple[float, float]:
+    r"""Assembly preload range of a joint tightened to F_M,zul by a method of factor α_A.
+
+    .. math::
+        F_{M,max} = F_{M,zul},\qquad F_{M,min} = F_{M,zul}/\alpha_A
+
+    Parameters
+    ----------
+    permissible_preload : float
+        F_M,zul, [N]
+    tightening_factor : float
+        α_A, [-]
+
+    Returns
+    -------
+    tuple of float
+        (F_M,min, F_M,max), [N]
+
+    Notes
+    -----
+    VDI 2230-1:2015 steps R1 and R7 (the design case: the top of the
+    scatter band at the permissible preload).
+
+    Examples
+    --------
+    >>> design_preload_range(40e3, 1.6)
+    (25000.0, 40000.0)
+    """
+    return permissible_preload / tightening_factor, permissible_preload
+
+
+def torque_tightening_factor(assembly_preload_min: float, assembly_preload_max: float) -> float:
+    r"""Tightening factor of a preload range (infinite where F_M,min = 0).
+
+    .. math::
+        \alpha_A = F_{M,max}/F_{M,min}
+
+    Parameters
+    ----------
+    assembly_preload_min : float
+        F_M,min, [N]
+    assembly_preload_max : float
+        F_M,max, [N]
+
+    Returns
+    -------
+    float
+        α_A, [-]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R1, eq. (R1/1), for the range a torque
+    specification gives over the friction box (:func:`preload_bounds_from_torque`).
+
+    Examples
+    --------
+    >>> round(torque_tightening_factor(31500.0, 64308.0), 4)
+    2.0415
+    """
+    if _arrays(assembly_preload_min, assembly_preload_max):
+        lo = np.asarray(assembly_preload_min, dtype=float)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(lo > 0.0, assembly_preload_max / lo, np.inf)  # type: ignore[return-value]
+    if assembly_preload_min > 0.0:
+        return assembly_preload_max / assembly_preload_min
+    return math.inf
+
+
+def smallest_area(smallest_diameter: float, stress_area: float, which: str) -> float:
+    r"""Area A_0 of the smallest section: A_S in the thread, π d_0²/4 in a shank.
+
+    .. math::
+        A_0 = A_S\ \text{(thread)},\qquad A_0 = \frac{\pi}{4} d_0^2\ \text{(shank)}
+
+    Parameters
+    ----------
+    smallest_diameter : float
+        d_0 from :func:`smallest_section`, [m]
+    stress_area : float
+        A_S of the thread, [m^2]
+    which : str
+        ``"thread"`` or ``"shank"`` (an array of them on arrays)
+
+    Returns
+    -------
+    float
+        A_0, [m^2]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R7 (A_0 = A_S or A_T); [004, eq. 3–4].
+
+    Examples
+    --------
+    Waisted M12 with d_T = 7.5 mm: π/4 × 7.5² = 44.18 mm²
+
+    >>> round(smallest_area(0.0075, 84.27e-6, "shank") * 1e6, 2)
+    44.18
+    """
+    if isinstance(which, np.ndarray):
+        return np.where(which == "thread", stress_area, _area(smallest_diameter))
+    return stress_area if which == "thread" else _area(smallest_diameter)
+
+
+def max_bolt_force(assembly_preload_max: float, additional_bolt_load: float) -> float:
+    r"""Largest bolt force in service.
+
+    .. math::
+        F_{S,max} = F_{M,max} + \Phi_n F_{A,max}
+
+    Parameters
+    ----------
+    assembly_preload_max : float
+        F_M,max, [N]
+    additional_bolt_load : float
+        F_SA = Φ_n F_A,max, [N]
+
+    Returns
+    -------
+    float
+        F_S,max, [N]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R8, eq. (R8/1).
+
+    Examples
+    --------
+    >>> max_bolt_force(43.1e3, 800.0)
+    43900.0
+    """
+    return assembly_preload_max + additional_bolt_load
+
+
+def yield_safety(yield_strength: float, working_stress: float) -> float:
+    r"""Safety against yield in service.
+
+    .. math::
+        S_F = \frac{R_{p0.2}}{\sigma_{red,B}}
+
+    Parameters
+    ----------
+    yield_strength : float
+        R_p0.2,min, [Pa]
+    working_stress : float
+        σ_red,B from :func:`service_stress`, [Pa]
+
+    Returns
+    -------
+    float
+        S_F, [-] (VDI asks ≥ 1.0)
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R8, eq. (R8/5).
+
+    Examples
+    --------
+    >>> round(yield_safety(640e6, 562.4e6), 4)
+    1.138
+    """
+    return yield_strength / working_stress
+
+
+def stress_amplitude(
+    load_factor_n: float, working_load: float, working_load_min: float, stress_area: float
+) -> float:
+    r"""Stress amplitude in the thread under an alternating working load.
+
+    .. math::
+        \sigma_a = \frac{\Phi_n (F_{A,max} - F_{A,min})}{2 A_S}
+
+    Parameters
+    ----------
+    load_factor_n : float
+        Φ_n, [-]
+    working_load : float
+        F_A,max, [N]
+    working_load_min : float
+        F_A,min, [N]
+    stress_area : float
+        A_S, [m^2]
+
+    Returns
+    -------
+    float
+        σ_a, [Pa]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R9, eq. (R9/1) (concentric loading).
+
+    Examples
+    --------
+    >>> round(stress_amplitude(0.1, 8000.0, 0.0, 84.27e-6) / 1e6, 3)
+    4.747
+    """
+    return load_factor_n * (working_load - working_load_min) / (2.0 * stress_area)
+
+
+def mean_bolt_force(
+    assembly_preload_max: float, load_factor_n: float, working_load: float, working_load_min: float
+) -> float:
+    r"""Mean bolt force under an alternating working load.
+
+    .. math::
+        F_{Sm} = F_{M,max} + \Phi_n \frac{F_{A,max} + F_{A,min}}{2}
+
+    Parameters
+    ----------
+    assembly_preload_max : float
+        F_M,max, [N]
+    load_factor_n : float
+        Φ_n, [-]
+    working_load : float
+        F_A,max, [N]
+    working_load_min : float
+        F_A,min, [N]
+
+    Returns
+    -------
+    float
+        F_Sm, [N]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R9 (the mean load of σ_ASG, §5.5.3).
+
+    Examples
+    --------
+    >>> mean_bolt_force(43.1e3, 0.1, 8000.0, 0.0)
+    43500.0
+    """
+    return assembly_preload_max + load_factor_n * 0.5 * (working_load + working_load_min)
+
+
+def fatigue_safety(endurance_limit: float, stress_amplitude: float) -> float:
+    r"""Safety against fatigue; infinite for a static load (σ_a = 0).
+
+    .. math::
+        S_D = \frac{\sigma_{AS}}{\sigma_a}
+
+    Parameters
+    ----------
+    endurance_limit : float
+        σ_AS, [Pa]
+    stress_amplitude : float
+        σ_a, [Pa]
+
+    Returns
+    -------
+    float
+        S_D, [-] (VDI asks ≥ 1.2)
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R9, eq. (R9/2).
+
+    Examples
+    --------
+    >>> round(fatigue_safety(48.88e6, 4.747e6), 3)
+    10.297
+    """
+    if _arrays(endurance_limit, stress_amplitude):
+        amp = np.asarray(stress_amplitude, dtype=float)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(amp > 0.0, endurance_limit / amp, np.inf)  # type: ignore[return-value]
+    return endurance_limit / stress_amplitude if stress_amplitude > 0.0 else math.inf
+
+
+def slip_safety(
+    residual_clamp_force: float,
+    slip_interfaces: int,
+    interface_friction: float,
+    transverse_load: float,
+) -> float:
+    r"""Safety of the interfaces against slipping; infinite without a transverse load.
+
+    .. math::
+        S_G = \frac{F_{KR,min}\, q_F\, \mu_{T,min}}{F_{Q,max}}
+
+    All arguments may be floats or numpy arrays of one shape.
+
+    Parameters
+    ----------
+    residual_clamp_force : float
+        F_KR,min, [N]
+    slip_interfaces : int
+        q_F, [1]
+    interface_friction : float
+        μ_T,min, [1]
+    transverse_load : float
+        F_Q,max, [N]
+
+    Returns
+    -------
+    float
+        S_G, [-]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R12, eq. (R12/2).
+
+    Examples
+    --------
+    >>> round(slip_safety(20e3, 1, 0.15, 2e3), 3)
+    1.5
+    """
+    if _arrays(residual_clamp_force, slip_interfaces, interface_friction, transverse_load):
+        f_q = np.asarray(transverse_load, dtype=float)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(  # type: ignore[return-value]
+                f_q > 0.0, residual_clamp_force * slip_interfaces * interface_friction / f_q, np.inf
+            )
+    if transverse_load > 0.0:
+        return residual_clamp_force * slip_interfaces * interface_friction / transverse_load
+    return math.inf
+
+
+def required_slip_safety(working_load: float, working_load_min: float) -> float:
+    r"""The slip safety VDI 2230 asks for: 1.8 under an alternating load, 1.2 static.
+
+    .. math::
+        S_{G,erf} = 1.8\ (F_{A,min} < F_{A,max}),\qquad 1.2\ \text{otherwise}
+
+    Parameters
+    ----------
+    working_load : float
+        F_A,max, [N]
+    working_load_min : float
+        F_A,min, [N]
+
+    Returns
+    -------
+    float
+        S_G,erf, [-]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R12 (recommended S_G ≥ 1.2 static, ≥ 1.8 under
+    alternating transverse or axial load).
+
+    Examples
+    --------
+    >>> required_slip_safety(8e3, 0.0), required_slip_safety(8e3, 8e3)
+    (1.8, 1.2)
+    """
+    if _arrays(working_load, working_load_min):
+        return np.where(np.asarray(working_load_min) < working_load, 1.8, 1.2)  # type: ignore[return-value]
+    return 1.8 if working_load_min < working_load else 1.2
+
+
+def nominal_preload(assembly_preload_min: float, assembly_preload_max: float) -> float:
+    r"""Nominal (mean) assembly preload of a scatter band.
+
+    .. math::
+        F_{M,nom} = \frac{F_{M,min} + F_{M,max}}{2}
+
+    Parameters
+    ----------
+    assembly_preload_min : float
+        F_M,min, [N]
+    assembly_preload_max : float
+        F_M,max, [N]
+
+    Returns
+    -------
+    float
+        F_M,nom, [N]
+
+    Notes
+    -----
+    [004, eq. 6] states its preload rule at the nominal preload; the middle of
+    the band VDI 2230-1 R1 defines with α_A.
+
+    Examples
+    --------
+    >>> nominal_preload(25e3, 40e3)
+    32500.0
+    """
+    return 0.5 * (assembly_preload_min + assembly_preload_max)
+
+
+def preload_stress_ratio(preload: float, smallest_area: float, yield_strength: float) -> float:
+    r"""Tensile stress of the preload over the yield strength.
+
+    .. math::
+        \frac{\sigma_0}{\sigma_T} = \frac{F_{M,nom}}{A_0\,\sigma_T}
+
+    Parameters
+    ----------
+    preload : float
+        F_M,nom, [N]
+    smallest_area : float
+        A_0, [m^2]
+    yield_strength : float
+        σ_T = R_p0.2, [Pa]
+
+    Returns
+    -------
+    float
+        σ0/σ_T, [-]
+
+    Notes
+    -----
+    [004, eq. 6] (0.4…0.5 σ_T, 0.5…0.7 with an accurate method, 0.8…0.9
+    for bridge joints).
+
+    Examples
+    --------
+    >>> round(preload_stress_ratio(32.5e3, 84.27e-6, 640e6), 4)
+    0.6026
+    """
+    return preload / smallest_area / yield_strength
 
 
 def joint_diagram(

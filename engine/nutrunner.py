@@ -34,17 +34,21 @@ from __future__ import annotations
 import math
 from typing import Any
 
+import numpy as np
+
 __all__ = [
     "acceleration_time",
     "disc_inertia",
     "equivalent_inertia",
     "flywheel_speed",
+    "gear_ratio_torque_change",
     "impact_torque",
     "impact_torque_geared",
     "kinetic_energy",
     "max_spindle_torque",
     "part_energies",
     "shaft_shear_stress",
+    "spindle_gear_spacing",
     "spindle_speed",
     "torsional_stiffness",
     "twist_angle",
@@ -474,6 +478,83 @@ def impact_torque_geared(
     """
     compliance = gear_ratio**2 / shaft_stiffness + 1.0 / spindle_stiffness
     return (2.0 * kinetic_energy / compliance) ** 0.5
+
+
+def gear_ratio_torque_change(shaft_stiffness: Any, spindle_stiffness: Any, gear_ratio: Any) -> Any:
+    r"""Relative change of the impact torque when the gear ratio is taken into account.
+
+    .. math::
+        \frac{M(u)}{M(1)} - 1
+        = \sqrt{\frac{1/C_7 + 1/C_8}{u^2/C_7 + 1/C_8}} - 1
+
+    Parameters
+    ----------
+    shaft_stiffness : float
+        :math:`C_7`, [N*m/rad]
+    spindle_stiffness : float
+        :math:`C_8`, [N*m/rad]
+    gear_ratio : float
+        :math:`u = D_4/D_5`, [-]
+
+    Returns
+    -------
+    change : float
+        :math:`M(u)/M(1) - 1`, [-]; 0 when :math:`u = 1`.
+
+    Notes
+    -----
+    The ratio of :func:`impact_torque_geared` at :math:`u` to the source's
+    torque (:math:`u = 1`) [000, eq. 7–8], taken at unit energy: the energy
+    cancels, so the change is defined whatever the energy. All arguments may
+    be floats or numpy arrays.
+
+    Examples
+    --------
+    >>> # by hand: sqrt((1/57446 + 1/25447) / (4/57446 + 1/25447)) - 1 = -0.278489
+    >>> round(gear_ratio_torque_change(57446.0, 25447.0, 2.0), 5)
+    -0.27849
+    >>> gear_ratio_torque_change(57446.0, 25447.0, 1.0)
+    0.0
+    """
+    geared = impact_torque_geared(1.0, shaft_stiffness, spindle_stiffness, gear_ratio)
+    return geared / impact_torque_geared(1.0, shaft_stiffness, spindle_stiffness, 1.0) - 1.0
+
+
+def spindle_gear_spacing(
+    drive_gear_diameter: Any, spindle_gear_diameter: Any, spindle_count: Any
+) -> Any:
+    r"""Distance between the centres of neighbouring spindle gears around the drive gear.
+
+    .. math::
+        s = (D_4 + D_5) \sin\frac{\pi}{z}
+
+    Parameters
+    ----------
+    drive_gear_diameter : float
+        Pitch diameter of the drive gear 4, :math:`D_4`, [m]
+    spindle_gear_diameter : float
+        Pitch diameter of a spindle gear 5, :math:`D_5`, [m]
+    spindle_count : int
+        Number of spindles :math:`z`, [-]; meaningful for :math:`z \ge 2`.
+
+    Returns
+    -------
+    s : float
+        Chord between neighbouring gear centres, [m]; the gears overlap
+        unless :math:`s > D_5`.
+
+    Notes
+    -----
+    The :math:`z` spindle gears mesh with gear 4, so their centres lie on a
+    circle of diameter :math:`D_4 + D_5`, evenly spaced [000, fig. 1];
+    geometry, not in the source's equations. Floats or numpy arrays.
+
+    Examples
+    --------
+    >>> round(float(spindle_gear_spacing(0.10, 0.05, 6)), 12)
+    0.075
+    """
+    return (drive_gear_diameter + spindle_gear_diameter) * np.sin(np.pi / spindle_count)
 
 
 def twist_angle(torque: Any, stiffness: Any) -> Any:

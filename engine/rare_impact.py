@@ -67,12 +67,12 @@ same tool lying horizontally (gravity 0).
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
 
 from .errors import InfeasibleDesign
+from .numerics import asin, is_array, pymax, pymin, sqrt, where
 
 __all__ = [
     "effective_stage1_mass",
@@ -80,7 +80,6 @@ __all__ = [
     "liftoff_speed",
     "max_striker_travel",
     "min_return_spring_rate",
-    "quasi_static_release_error",
     "release_radius",
     "release_speed",
     "relock_margin",
@@ -94,9 +93,6 @@ __all__ = [
 ]
 
 G0 = 9.80665
-#: Factor on the first-order error bound of the quasi-static spin-up (see
-#: :func:`quasi_static_release_error`).
-SAFETY = 2.0
 
 
 # ---------------------------------------------------------------------------
@@ -179,7 +175,7 @@ def release_speed(
     :math:`\omega_M = \sqrt{[c_1(\lambda_1+h)+c_2(\lambda_2+h)]/(0.5 n m r)}`
     [002, after eq. 4]. The flywheel's inertia change is neglected, as in the
     source. Relative error against the full stage-1 dynamics: see
-    :func:`quasi_static_release_error`.
+    :func:`engine.rare_impact_cycle.quasi_static_error`.
 
     Examples
     --------
@@ -299,102 +295,6 @@ def spin_up_time(
     return -tau * math.log1p(-speed / motor_no_load_speed)
 
 
-def quasi_static_release_error(x: Mapping[str, Any]) -> tuple[float, float]:
-    r"""A-priori relative error of the quasi-static release speed and spin-up time.
-
-    Returns ``(error_in_release_speed, error_in_spin_up_time)``, both relative.
-
-    Derivation
-    ----------
-    Eliminating N from [002, eq. 1] (see :func:`effective_stage1_mass`) leaves
-    a linear oscillator with slowly varying coefficients,
-
-    .. math::
-        m_e\ddot z_1 + K(\omega)\,z_1 = A\omega^2 x_0 - F_0,\quad
-        A = \frac{n m_p}{2\tan\alpha},\ K = c_1 + c_2 - \frac{A\omega^2}{\tan\alpha},\
-        F_0 = c_1\lambda_1 + c_2\lambda_2,
-
-    whose equilibrium :math:`z_e(\omega) = (A\omega^2x_0 - F_0)/K` is the
-    quasi-static path (:math:`z_e = h_1` gives :math:`\omega_M`). Writing
-    :math:`u = \omega^2`, :math:`dz_e/du = A r/K` and
-    :math:`d^2z_e/du^2 = (2A/(K\tan\alpha))\,dz_e/du`. The half-coupling
-    leaves its stop at :math:`\omega_0` (:func:`liftoff_speed`) at rest while
-    the equilibrium already moves at :math:`\dot z_e`; it then oscillates
-    about :math:`z_e` with amplitude
-    :math:`a_0 = \dot z_e/\Omega_0 + \ddot z_e/\Omega_0^2`,
-    :math:`\Omega = \sqrt{K/m_e}`, which the adiabatic invariant
-    :math:`E/\Omega` carries to release as :math:`a_M = a_0\sqrt{\Omega_0/\Omega_M}`,
-    plus the inertial lag :math:`\ddot z_e/\Omega_M^2`. A displacement error
-    :math:`e` at release moves the crossing by :math:`e/\dot z_e`, i.e. the
-    release speed by
-
-    .. math::
-        \frac{\delta\omega}{\omega_M} = \frac{e}{\omega_M\,dz_e/d\omega}
-            = \frac{e\,K_M}{2F_M},\qquad F_M = c_1(\lambda_1+h_1)+c_2(\lambda_2+h_1),
-
-    and the spin-up time by :math:`\delta\omega/(\dot\omega_M t_M)`. The
-    ratio :math:`\dot z_e/(\Omega\,\cdot)` is the flywheel's acceleration
-    measured against the roller/half-coupling natural frequency: slow spin-up
-    or stiff springs make the closed form exact. The oscillation's phase at
-    release is unknown, so this bounds the magnitude; over 448 random designs
-    the simulated error reached up to 0.9996 of the first-order bound, so it
-    is multiplied by ``SAFETY = 2`` to cover the neglected higher orders (the
-    tests check the bound against the simulation, also on random designs).
-    """
-    c1, c2 = x["power_spring_rate"], x["auxiliary_spring_rate"]
-    lam1, lam2 = x["power_spring_preload"], x["auxiliary_spring_preload"]
-    h1, n, mp = x["release_travel"], x["roller_count"], x["roller_mass"]
-    x0, alpha = x["roller_radius"], x["cone_angle"]
-    inertia, torque = x["flywheel_inertia"], x["motor_torque"]
-    w_nl = x.get("motor_no_load_speed")
-    tan_a = math.tan(alpha)
-    a_push = n * mp / (2.0 * tan_a)
-    stiff = c1 + c2
-    f0 = c1 * lam1 + c2 * lam2
-    f_m = spring_force_at_release(c1, lam1, c2, lam2, h1)
-    r_m = x0 + h1 / tan_a
-    m_e = float(
-        effective_stage1_mass(x["half_coupling_mass"], x["stepped_shaft_mass"], mp, n, alpha)
-    )
-    w_m = math.sqrt(f_m / (a_push * r_m))
-    w_0 = math.sqrt(f0 / (a_push * x0))
-    if w_0 >= w_m:
-        # Snap-through at lift-off (released_at_liftoff): the push at z = 0 grows
-        # like 2 A x0 ω0 ω̇ t, so z ≈ (that rate) t³/(6 m_e) reaches h1 after t_s;
-        # the flywheel gains ω̇ t_s meanwhile (the negative stiffness only shortens it).
-        wd_0 = torque / inertia if w_nl is None else torque / inertia * (1.0 - w_0 / w_nl)
-        if wd_0 <= 0.0:
-            return math.inf, math.inf
-        t_s = (6.0 * h1 * m_e / (2.0 * a_push * x0 * w_0 * wd_0)) ** (1.0 / 3.0)
-        dw = SAFETY * wd_0 * t_s / w_0
-        t_0 = spin_up_time(inertia, torque, w_0, w_nl)
-        return dw, SAFETY * t_s / t_0
-
-    def accel(w: float) -> float:
-        return torque / inertia if w_nl is None else torque / inertia * (1.0 - w / w_nl)
-
-    def rates(w: float, r: float) -> tuple[float, float, float]:
-        k = stiff - a_push * w * w / tan_a
-        dz_du = a_push * r / k
-        d2z_du2 = 2.0 * a_push / (k * tan_a) * dz_du
-        wd = accel(w)
-        wdd = 0.0 if w_nl is None else -torque / inertia / w_nl * wd
-        dz_dw = 2.0 * w * dz_du
-        d2z_dw2 = 2.0 * dz_du + 4.0 * w * w * d2z_du2
-        return k, dz_dw * wd, d2z_dw2 * wd * wd + dz_dw * wdd
-
-    k_0, zd_0, zdd_0 = rates(w_0, x0)
-    k_m, _, zdd_m = rates(w_m, r_m)
-    om_0, om_m = math.sqrt(k_0 / m_e), math.sqrt(k_m / m_e)
-    amp = (abs(zd_0) / om_0 + abs(zdd_0) / om_0**2) * math.sqrt(om_0 / om_m)
-    err = amp + abs(zdd_m) / om_m**2
-    dw = SAFETY * err * k_m / (2.0 * f_m)
-    wd_m = accel(w_m)
-    t_m = spin_up_time(inertia, torque, w_m, w_nl)
-    dt = dw * w_m / (wd_m * t_m) if wd_m > 0 else math.inf
-    return dw, dt
-
-
 # ---------------------------------------------------------------------------
 # Stage 2: engagement
 # ---------------------------------------------------------------------------
@@ -498,20 +398,12 @@ def time_to_travel(distance: Any, b: Any, k: Any) -> Any:
     >>> float(time_to_travel(0.005, 293.101, 346.41))  # beyond 2B/k² = 4.885 mm
     inf
     """
-    if isinstance(distance, float) and isinstance(b, float) and isinstance(k, float):
-        if b <= 0.0:
-            return math.inf
-        qs = distance * k * k / (2.0 * b)
-        if qs > 1.0 + 1e-12:
-            return math.inf
-        return 2.0 / k * math.asin(math.sqrt(min(max(qs, 0.0), 1.0)))
-    b_arr = np.asarray(b, dtype=float)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        q = np.asarray(distance * k * k / (2.0 * b_arr), dtype=float)
-        never = (b_arr <= 0.0) | (q > 1.0 + 1e-12)
-        t = 2.0 / k * np.arcsin(np.sqrt(np.clip(q, 0.0, 1.0)))
-    out = np.where(never, np.inf, t)
-    return float(out) if out.ndim == 0 else out
+    with np.errstate(all="ignore"):
+        q = distance * k * k / (2.0 * where(b > 0.0, b, 1.0))
+        never = (b <= 0.0) | (q > 1.0 + 1e-12)
+        t = 2.0 / k * asin(sqrt(pymin(pymax(q, 0.0), 1.0)))
+        out = where(never, math.inf, t)
+    return out if is_array(out) else float(out)
 
 
 def engagement_window(engagement_angle: Any, release_speed: Any) -> Any:
@@ -545,16 +437,10 @@ def spring_height_limit(
     >>> spring_height_limit(0.85, 9.80665, 50000.0, 50000.0)
     inf
     """
-    if all(isinstance(v, float) for v in (moving_mass, gravity, power_spring_rate,
-                                          return_spring_rate)):  # fmt: skip
-        d = return_spring_rate - power_spring_rate
-        return 2.0 * moving_mass * gravity / d if d > 0.0 else math.inf
-    diff = np.asarray(return_spring_rate - power_spring_rate, dtype=float)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        out = np.where(
-            diff > 0.0, 2.0 * moving_mass * gravity / np.where(diff > 0, diff, 1.0), np.inf
-        )
-    return float(out) if out.ndim == 0 else out
+    d = return_spring_rate - power_spring_rate
+    with np.errstate(all="ignore"):
+        out = where(d > 0.0, 2.0 * moving_mass * gravity / where(d > 0.0, d, 1.0), math.inf)
+    return out if is_array(out) else float(out)
 
 
 # ---------------------------------------------------------------------------
@@ -590,20 +476,11 @@ def min_return_spring_rate(
     >>> round(min_return_spring_rate(0.4, 9.80665, 0.0, 0.005, 0.005), 1)  # 2 m g / h
     1569.1
     """
-    if all(isinstance(v, float) for v in (striker_mass, gravity, return_spring_preload,
-                                          engagement_height, jaw_height)):  # fmt: skip
-        arm = return_spring_preload + engagement_height - 0.5 * jaw_height
-        load = striker_mass * gravity
-        return 0.0 if load <= 0.0 else (load / arm if arm > 0.0 else math.inf)
-    lever = np.asarray(return_spring_preload + engagement_height - 0.5 * jaw_height, dtype=float)
-    weight = np.asarray(striker_mass * gravity, dtype=float)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        out = np.where(
-            weight <= 0.0,
-            0.0,
-            np.where(lever > 0.0, weight / np.where(lever > 0, lever, 1.0), np.inf),
-        )
-    return float(out) if out.ndim == 0 else out
+    arm = return_spring_preload + engagement_height - 0.5 * jaw_height
+    load = striker_mass * gravity
+    with np.errstate(all="ignore"):
+        out = where(load <= 0.0, 0.0, where(arm > 0.0, load / where(arm > 0.0, arm, 1.0), math.inf))
+    return out if is_array(out) else float(out)
 
 
 def return_time(
@@ -643,8 +520,11 @@ def relock_time(
 ) -> Any:
     r"""Time for the auxiliary spring to push the stepped shaft back the release travel [s].
 
-    Exact solution of [002, eq. 4]:
-    :math:`m_2\ddot z_2 = c_2(\lambda_2 + h_1 - z_2) + m_2 g - c_3\lambda_3 f`
+    Exact solution of [002, eq. 4],
+
+    .. math::
+        m_2\ddot z_2 = c_2(\lambda_2 + h_1 - z_2) + m_2 g - c_3\lambda_3 f,
+
     from rest is :math:`z_2 = D_4(1-\cos k_4 t)`, :math:`k_4 = \sqrt{c_2/m_2}`,
     :math:`D_4 = \lambda_2 + h_1 + (m_2 g - c_3\lambda_3 f)/c_2`; inf when it
     never reaches :math:`h_1`. The friction force is taken constant, as in the

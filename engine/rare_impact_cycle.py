@@ -123,27 +123,45 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
-from .errors import BudgetExceeded, InfeasibleDesign, SolverFailed
+from .errors import BudgetExceeded, EngineError, InfeasibleDesign, SolverFailed
+from .numerics import (
+    StepCost,
+    all_true,
+    any_true,
+    as_numbers,
+    atan2,
+    first_rise_c,
+    hypot,
+    is_array,
+    isfinite,
+    jit,
+    log1p,
+    pymax,
+    pymin,
+    sqrt,
+    tan,
+    where,
+)
+from .rare_impact import relock_time, striker_oscillation
 
 __all__ = [
     "GEOMETRIES",
-    "CycleArrays",
     "CycleOutcome",
     "Geometry",
     "closed_form_cycle",
     "closed_form_cycle_array",
     "closed_form_errors",
-    "closed_form_errors_array",
     "geometry",
     "liftoff_speed_of",
-    "linear_reach_array",
+    "linear_reach",
     "quasi_static_error",
+    "quasi_static_release_velocity",
     "release_radius_of",
     "release_speed_of",
     "relock_friction",
@@ -157,63 +175,30 @@ STEPS_PER_PERIOD = 200
 _CHUNK = 400_000
 _SERIES_POINTS = 240
 
-#: Seconds per RK4 step of the cycle kernel: a running mean over the kernel's own chunks
-#: of 10,000 steps or more in this process (issue 21: budgets in time, not steps); the
-#: prior is a slow machine's figure (~0.2 µs measured on the 2-core CI box, 5× that).
-_STEP_COST = [1e-6]
-#: Share of the time left that a simulation may plan to use up front (the rest covers a
-#: slower machine than measured and the answer's own bookkeeping).
-TIME_SHARE = 0.5
+#: The cycle kernel's measured cost per RK4 step in this process (issue 21: budgets in
+#: time, not steps); the prior is a slow machine's figure (~0.2 µs measured on the 2-core
+#: CI box, 5× that).
+_COST = StepCost()
+#: Steps the cycle kernel may take before ``deadline`` (:func:`engine.numerics.step_budget`
+#: at :data:`_COST`), or ``max_steps`` without one.
+step_budget = _COST.budget
 
 
-def step_budget(deadline: float | None, max_steps: int) -> int:
-    """Steps the cycle kernel may take: what the time left affords, or ``max_steps``.
-
-    Parameters
-    ----------
-    deadline : float or None
-        ``time.perf_counter()`` value the answer is due by, [s]
-    max_steps : int
-        The caller's step budget, used only without a deadline, [-]
-
-    Notes
-    -----
-    With a deadline the budget is in time: :data:`TIME_SHARE` of the time left
-    divided by the kernel's measured cost per step (:data:`_STEP_COST`), so a stiff
-    design needing millions of steps runs when the kernel finishes them well
-    inside the time budget, and one that would not is declined up front (its
-    ``expected_steps`` in the error: the runner's fallback can take over at once).
-
-    >>> step_budget(None, 1000)
-    1000
-    >>> step_budget(time.perf_counter() - 1.0, 1000)  # past the deadline: no steps
-    0
-    """
-    if deadline is None:
-        return max_steps
-    left = max(deadline - time.perf_counter(), 0.0)
-    return int(min(left * TIME_SHARE / _STEP_COST[0], 1e15))
+# ---------------------------------------------------------------------------
+# One design or many: every closed-form step below takes the inputs as floats or as
+# numpy arrays of one shape (engine.numerics: float64 numbers, math for one design,
+# numpy for many); a single run and a sweep run the same lines.
+# ---------------------------------------------------------------------------
 
 
-#: Whether the kernel has run once in this process: its first call compiles it (or loads
-#: it from numba's cache), seconds that are not the cost of a step.
-_WARM = [False]
-#: A chunk's measured cost is capped here (10x the prior): a pause of the whole process
-#: (a collection, a busy machine) must not shrink every later budget.
-_STEP_COST_CAP = 1e-5
+def _one_or_many(v: Any) -> Any:
+    """One design's number as a Python float; arrays as they are."""
+    return v if isinstance(v, np.ndarray) else float(v)
 
 
-def _measured(used: int, seconds: float) -> None:
-    """Fold one chunk's cost into :data:`_STEP_COST` (chunks long enough to time).
-
-    The first call in the process is not counted (it includes the compilation), and one
-    chunk's figure is capped at :data:`_STEP_COST_CAP`.
-    """
-    if not _WARM[0]:
-        _WARM[0] = True
-        return
-    if used >= 10_000 and seconds > 0.0:
-        _STEP_COST[0] = 0.7 * _STEP_COST[0] + 0.3 * min(seconds / used, _STEP_COST_CAP)
+def _numbers(x: Mapping[str, Any]) -> dict[str, Any]:
+    """The inputs as the steps take them (:func:`engine.numerics.as_numbers`)."""
+    return as_numbers(x)
 
 
 # ---------------------------------------------------------------------------
@@ -225,54 +210,69 @@ def _measured(used: int, seconds: float) -> None:
 class Geometry:
     """Kinematics of the rollers between the cones for one roller geometry.
 
-    ``kappa``: dx/du, roller radius per metre of gap [-]; ``a_h``, ``a_s``:
-    the roller's axial position :math:`y_r = a_h y_h + a_s y_s`; ``paper``:
-    stage 1 uses the printed [002, eq. 1] instead of the Lagrangian.
+    ``kappa``: dx/du, roller radius per metre of gap [-] (per point where the cone
+    angle varies); ``a_h``, ``a_s``: the roller's axial position
+    :math:`y_r = a_h y_h + a_s y_s`; ``paper``: stage 1 uses the printed [002, eq. 1]
+    instead of the Lagrangian; ``tan_a``: tan α.
     """
 
     name: str
-    kappa: float
+    kappa: Any
     a_h: float
     a_s: float
     paper: bool
+    tan_a: Any = 1.0
 
 
 GEOMETRIES = ("symmetric_v", "single_cone", "paper")
 
 
-def geometry(name: str, cone_angle: float) -> Geometry:
+def geometry(name: str, cone_angle: Any) -> Geometry:
     """The kinematics of ``name`` (one of :data:`GEOMETRIES`) at cone angle α [rad].
 
     Parameters
     ----------
     name : str
         One of :data:`GEOMETRIES`
-    cone_angle : float
+    cone_angle : float or array
         Cone angle α of the conical faces, [rad]
 
     Notes
     -----
+    .. math::
+        \\kappa = \\frac{1}{2\\tan\\alpha}\\ (\\text{symmetric V}),\\qquad
+        \\kappa = \\frac{1}{\\tan\\alpha}\\ (\\text{single cone, paper})
+
     >>> g = geometry("symmetric_v", math.pi / 4)
-    >>> round(g.kappa, 12), g.a_h, g.a_s
+    >>> round(float(g.kappa), 12), g.a_h, g.a_s
     (0.5, 0.5, 0.5)
-    >>> round(geometry("single_cone", math.pi / 4).kappa, 12)
+    >>> round(float(geometry("single_cone", math.pi / 4).kappa), 12)
     1.0
     """
-    t = math.tan(cone_angle)
+    t = tan(cone_angle if isinstance(cone_angle, np.ndarray) else np.float64(cone_angle))
     if name == "symmetric_v":
-        return Geometry(name, 0.5 / t, 0.5, 0.5, False)
+        return Geometry(name, 0.5 / t, 0.5, 0.5, False, t)
     if name == "single_cone":
-        return Geometry(name, 1.0 / t, 0.0, 1.0, False)
+        return Geometry(name, 1.0 / t, 0.0, 1.0, False, t)
     if name == "paper":
-        return Geometry(name, 1.0 / t, 0.0, 1.0, True)
+        return Geometry(name, 1.0 / t, 0.0, 1.0, True, t)
     raise ValueError(f"unknown roller geometry {name!r}; one of {', '.join(GEOMETRIES)}")
 
 
 def _geo(x: Mapping[str, Any]) -> Geometry:
-    return geometry(str(x.get("roller_geometry", "symmetric_v")), float(x["cone_angle"]))
+    return geometry(str(x.get("roller_geometry", "symmetric_v")), x["cone_angle"])
 
 
-def stage1_effective_mass(x: Mapping[str, Any]) -> float:
+def _effective_mass(x: Mapping[str, Any], g: Geometry) -> Any:
+    r""":math:`m_e = m_1 + m_2 + n m_p(\kappa^2+\rho^2)` (paper: :math:`n m_p/(2\tan^2\alpha)`)."""
+    nm = x["roller_count"] * x["roller_mass"]
+    m12 = x["half_coupling_mass"] + x["stepped_shaft_mass"]
+    if g.paper:
+        return m12 + nm / (2.0 * g.tan_a * g.tan_a)
+    return m12 + nm * (g.kappa**2 + g.a_h**2)
+
+
+def stage1_effective_mass(x: Mapping[str, Any]) -> Any:
     r"""Mass the stage-1 axial equation moves [kg].
 
     :math:`m_e = m_1 + m_2 + n m_p(\kappa^2+\rho^2)`.
@@ -280,7 +280,8 @@ def stage1_effective_mass(x: Mapping[str, Any]) -> float:
     Parameters
     ----------
     x : Mapping
-        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``);
+        numbers or arrays of one shape
 
     Notes
     -----
@@ -290,16 +291,12 @@ def stage1_effective_mass(x: Mapping[str, Any]) -> float:
     >>> round(stage1_effective_mass({**R, "roller_geometry": "symmetric_v"}), 6)  # 0.2 + 0.3·0.5
     0.35
     """
-    g = _geo(x)
-    nm = x["roller_count"] * x["roller_mass"]
-    m12 = x["half_coupling_mass"] + x["stepped_shaft_mass"]
-    if g.paper:
-        t = math.tan(x["cone_angle"])
-        return m12 + nm / (2.0 * t * t)
-    return m12 + nm * (g.kappa**2 + g.a_h**2)
+    with np.errstate(all="ignore"):
+        x = _numbers(x)
+        return _one_or_many(_effective_mass(x, _geo(x)))
 
 
-def _weight(x: Mapping[str, Any], g: Geometry) -> float:
+def _weight(x: Mapping[str, Any], g: Geometry) -> Any:
     """Weight the stage-1 travel lifts, :math:`(m_1 + m_2 + n m_p\\rho)g` [N] (0 for paper)."""
     if g.paper:
         return 0.0
@@ -307,21 +304,35 @@ def _weight(x: Mapping[str, Any], g: Geometry) -> float:
     return (m + x["roller_count"] * x["roller_mass"] * g.a_h) * x["gravity"]
 
 
-def _push_per_w2(x: Mapping[str, Any], g: Geometry) -> float:
+def _push_per_w2(x: Mapping[str, Any], g: Geometry) -> Any:
     """Axial push on the half-coupling per ω² and per metre of roller radius [kg]."""
     nm = x["roller_count"] * x["roller_mass"]
     if g.paper:
-        return nm / (2.0 * math.tan(x["cone_angle"]))
+        return nm / (2.0 * g.tan_a)
     return nm * g.kappa
 
 
-def release_radius_of(x: Mapping[str, Any]) -> float:
+def _preload_force(x: Mapping[str, Any], g: Geometry) -> Any:
+    """:math:`c_1\\lambda_1 + c_2\\lambda_2 + W` [N]: what holds the half-coupling on its stop."""
+    return (
+        x["power_spring_rate"] * x["power_spring_preload"]
+        + x["auxiliary_spring_rate"] * x["auxiliary_spring_preload"]
+        + _weight(x, g)
+    )
+
+
+def _radius(x: Mapping[str, Any], g: Geometry) -> Any:
+    return x["roller_radius"] + g.kappa * x["release_travel"]
+
+
+def release_radius_of(x: Mapping[str, Any]) -> Any:
     r"""Roller centre radius at release, :math:`r = x_0 + \kappa h_1` [m].
 
     Parameters
     ----------
     x : Mapping
-        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``);
+        numbers or arrays of one shape
 
     Notes
     -----
@@ -331,16 +342,62 @@ def release_radius_of(x: Mapping[str, Any]) -> float:
     >>> round(release_radius_of({**R, "roller_geometry": "paper"}), 6)
     0.045
     """
-    return x["roller_radius"] + _geo(x).kappa * x["release_travel"]
+    with np.errstate(all="ignore"):
+        x = _numbers(x)
+        return _one_or_many(_radius(x, _geo(x)))
 
 
-def release_speed_of(x: Mapping[str, Any]) -> float:
+def _liftoff_speed(x: Mapping[str, Any], g: Geometry) -> Any:
+    r"""Speed at which the rollers' push first beats preloads and weight [rad/s] [002, eq. 1].
+
+    .. math::
+        \omega_0 = \sqrt{(c_1\lambda_1 + c_2\lambda_2 + W)/(A x_0)}
+
+    (0 where the preloads do not hold the half-coupling).
+    """
+    return sqrt(pymax(_preload_force(x, g), 0.0) / (_push_per_w2(x, g) * x["roller_radius"]))
+
+
+def _release_speed(x: Mapping[str, Any], g: Geometry, w_0: Any, r: Any) -> Any:
+    r"""The quasi-static release speed, or the snap-through's (the module notes).
+
+    .. math::
+        \omega_M = \sqrt{\frac{c_1(\lambda_1 + h_1) + c_2(\lambda_2 + h_1) + W}{A\,r}},\quad
+        \text{snap: } \omega_0\,\frac{J + n m_p x_0^2}{J + n m_p r^2}
+    """
+    c1, c2 = x["power_spring_rate"], x["auxiliary_spring_rate"]
+    h1 = x["release_travel"]
+    fm = (
+        c1 * (x["power_spring_preload"] + h1)
+        + c2 * (x["auxiliary_spring_preload"] + h1)
+        + _weight(x, g)
+    )
+    w_m = sqrt(fm / (_push_per_w2(x, g) * r))
+    # snap-through: the rollers fly out at once, conserving the angular momentum
+    snapped = w_0 * _inertia(x, g, x["roller_radius"]) / _inertia(x, g, r)
+    return where(w_0 <= w_m, w_m, snapped)
+
+
+def _preloads_do_not_hold(x: Mapping[str, Any], g: Geometry) -> InfeasibleDesign:
+    c1, c2 = x["power_spring_rate"], x["auxiliary_spring_rate"]
+    lam1, lam2 = x["power_spring_preload"], x["auxiliary_spring_preload"]
+    w = _weight(x, g)
+    return InfeasibleDesign(
+        f"the spring preloads c1·λ1 + c2·λ2 = {c1 * lam1 + c2 * lam2:.3g} N do not hold the "
+        f"half-coupling and shaft on their stop against gravity ({-w:.3g} N along the "
+        "stage-1 travel): the striker would be released at standstill; raise the preloads",
+        field="power_spring_preload",
+    )
+
+
+def release_speed_of(x: Mapping[str, Any]) -> Any:
     r"""Quasi-static release speed of the chosen geometry [rad/s] (module notes).
 
     Parameters
     ----------
     x : Mapping
-        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``);
+        numbers or arrays of one shape
 
     Notes
     -----
@@ -352,8 +409,8 @@ def release_speed_of(x: Mapping[str, Any]) -> float:
     where the half-coupling snaps through (:func:`snaps_at_liftoff`), the
     lift-off speed times :math:`(J + n m_p x_0^2)/(J + n m_p r^2)` (the rollers
     fly out faster than the motor acts: angular momentum is conserved).
-    Raises InfeasibleDesign when the preloads do not
-    hold the half-coupling on its stop against gravity.
+    Where the preloads do not hold the half-coupling on its stop against gravity
+    the design is refused: InfeasibleDesign for one design, NaN at that point of arrays.
 
     Reference design, symmetric V, g = 0: (350 + 26)/(6·0.05·0.5·0.0425) = 58980.4,
     root 242.86 rad/s (the paper's 45° form with r = 42.5 mm):
@@ -362,35 +419,25 @@ def release_speed_of(x: Mapping[str, Any]) -> float:
     >>> round(release_speed_of({**R, "roller_geometry": "symmetric_v", "gravity": 0.0}), 2)
     242.86
     """
-    g = _geo(x)
-    c1, c2 = x["power_spring_rate"], x["auxiliary_spring_rate"]
-    lam1, lam2, h1 = x["power_spring_preload"], x["auxiliary_spring_preload"], x["release_travel"]
-    w = _weight(x, g)
-    f0 = c1 * lam1 + c2 * lam2 + w
-    if f0 <= 0.0:
-        raise InfeasibleDesign(
-            f"the spring preloads c1·λ1 + c2·λ2 = {c1 * lam1 + c2 * lam2:.3g} N do not hold the "
-            f"half-coupling and shaft on their stop against gravity ({-w:.3g} N along the "
-            "stage-1 travel): the striker would be released at standstill; raise the preloads",
-            field="power_spring_preload",
-        )
-    fm = c1 * (lam1 + h1) + c2 * (lam2 + h1) + w
-    r = release_radius_of(x)
-    w_m = math.sqrt(fm / (_push_per_w2(x, g) * r))
-    w_0 = liftoff_speed_of(x)
-    if w_0 <= w_m:
-        return w_m
-    # snap-through: the rollers fly out at once, conserving the angular momentum
-    return w_0 * _inertia_at(x, g, x["roller_radius"]) / _inertia_at(x, g, r)
+    with np.errstate(all="ignore"):
+        x = _numbers(x)
+        g = _geo(x)
+        held = _preload_force(x, g) > 0.0
+        if not is_array(held) and not held:
+            raise _preloads_do_not_hold(x, g)
+        w_0 = _liftoff_speed(x, g)
+        w_m = _release_speed(x, g, w_0, _radius(x, g))
+        return _one_or_many(where(held, w_m, math.nan))
 
 
-def liftoff_speed_of(x: Mapping[str, Any]) -> float:
+def liftoff_speed_of(x: Mapping[str, Any]) -> Any:
     r"""Speed at which the rollers' push first beats preloads and weight [rad/s].
 
     Parameters
     ----------
     x : Mapping
-        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``);
+        numbers or arrays of one shape
 
     Notes
     -----
@@ -403,52 +450,69 @@ def liftoff_speed_of(x: Mapping[str, Any]) -> float:
     >>> round(liftoff_speed_of({**R, "roller_geometry": "symmetric_v", "gravity": 0.0}), 2)
     139.04
     """
-    g = _geo(x)
-    f0 = (
-        x["power_spring_rate"] * x["power_spring_preload"]
-        + x["auxiliary_spring_rate"] * x["auxiliary_spring_preload"]
-        + _weight(x, g)
-    )
-    return math.sqrt(max(f0, 0.0) / (_push_per_w2(x, g) * x["roller_radius"]))
+    with np.errstate(all="ignore"):
+        x = _numbers(x)
+        return _one_or_many(_liftoff_speed(x, _geo(x)))
 
 
-def _stage1_stiffness(x: Mapping[str, Any], g: Geometry, w: float) -> float:
+def _stage1_stiffness(x: Mapping[str, Any], g: Geometry, w: Any) -> Any:
     """:math:`K(\\omega) = c_1 + c_2 - A\\kappa\\omega^2` [N/m]: negative means snap-through."""
     return (
         x["power_spring_rate"] + x["auxiliary_spring_rate"] - _push_per_w2(x, g) * g.kappa * w * w
     )
 
 
-def snaps_at_liftoff(x: Mapping[str, Any]) -> bool:
+def snaps_at_liftoff(x: Mapping[str, Any]) -> Any:
     """True where the stage-1 stiffness is already negative at lift-off (release at lift-off).
 
     Parameters
     ----------
     x : Mapping
-        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``);
+        numbers or arrays of one shape
+
+    Notes
+    -----
+    :math:`c_1 + c_2 - A\\kappa\\omega_0^2 < 0`. The reference design: 52000 N/m against
+    0.15·0.5·19333.3 − ... = 52000 − 1450 − (g) > 0, no snap; a power-spring preload of
+    90 mm lifts :math:`\\omega_0^2` to (4500 + 16 + W)/0.006 and the push past the springs:
+
+    >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
+    >>> snaps_at_liftoff(R), snaps_at_liftoff({**R, "power_spring_preload": 0.09})
+    (False, True)
     """
-    g = _geo(x)
-    return _stage1_stiffness(x, g, liftoff_speed_of(x)) < 0.0
+    with np.errstate(all="ignore"):
+        x = _numbers(x)
+        g = _geo(x)
+        snap = _stage1_stiffness(x, g, _liftoff_speed(x, g)) < 0.0
+        return snap if is_array(snap) else bool(snap)
 
 
-def _inertia_at(x: Mapping[str, Any], g: Geometry, radius: float) -> float:
+def _inertia(x: Mapping[str, Any], g: Geometry, radius: Any) -> Any:
     """Flywheel inertia with the rollers at ``radius`` (paper: :math:`I_M` alone) [kg·m²]."""
     if g.paper:
-        return float(x["flywheel_inertia"])
-    return float(x["flywheel_inertia"] + x["roller_count"] * x["roller_mass"] * radius * radius)
+        return x["flywheel_inertia"] + 0.0 * radius
+    return x["flywheel_inertia"] + x["roller_count"] * x["roller_mass"] * radius * radius
 
 
-def _time_to_speed(x: Mapping[str, Any], inertia: float, w: float) -> float:
-    """Time for ``inertia`` to reach ``w`` from rest under the motor [s]; inf if never."""
+def _time_to_speed(x: Mapping[str, Any], inertia: Any, w: Any) -> Any:
+    r"""Time for ``inertia`` to reach ``w`` from rest under the motor [s]; inf if never.
+
+    .. math::
+        t = \frac{J\omega}{M}\ (\text{constant torque}),\qquad
+        t = -\frac{J\omega_{nl}}{M}\ln\left(1 - \frac{\omega}{\omega_{nl}}\right)
+        \ (\text{linear motor})
+
+    [002, eq. 1] with the inertia held at ``inertia``.
+    """
     torque, w_nl = x["motor_torque"], x.get("motor_no_load_speed")
     if w_nl is None:
         return inertia * w / torque
-    if w >= w_nl:
-        return math.inf
-    return -(inertia * w_nl / torque) * math.log1p(-w / w_nl)
+    t = -(inertia * w_nl / torque) * log1p(-w / w_nl)
+    return where(w >= w_nl, math.inf, t)
 
 
-def _never_fast_enough(x: Mapping[str, Any], w: float) -> InfeasibleDesign:
+def _never_fast_enough(x: Mapping[str, Any], w: Any) -> InfeasibleDesign:
     w_nl = x["motor_no_load_speed"]
     return InfeasibleDesign(
         f"the motor never reaches the release speed: its no-load speed {w_nl * 30 / math.pi:.0f}"
@@ -456,6 +520,22 @@ def _never_fast_enough(x: Mapping[str, Any], w: float) -> InfeasibleDesign:
         "heavier or more rollers, or weaker power/auxiliary springs",
         field="motor_no_load_speed",
     )
+
+
+#: The numeric fields of :class:`CycleOutcome`, in its order.
+_NUMERIC = (
+    "release_speed",
+    "spin_up_time",
+    "release_radius",
+    "release_velocity",
+    "engagement_time",
+    "max_travel",
+    "return_time",
+    "home_time",
+    "relock_time",
+)
+#: Why the closed form refuses a design (:attr:`CycleOutcome.refusal`): 0 it does not.
+HELD, NOT_HELD, NEVER_FAST_ENOUGH = 0, 1, 2
 
 
 # ---------------------------------------------------------------------------
@@ -469,35 +549,42 @@ class CycleOutcome:
 
     Times are from release (engagement), from the blow (return) and from the
     striker's home-coming (re-lock); ``inf`` means never. Every output and
-    every check is read from here.
+    every check is read from here. The closed form on arrays gives an array per
+    field (NaN where the point is refused, ``refusal`` saying why).
     """
 
-    release_speed: float
-    spin_up_time: float
-    release_radius: float
-    release_velocity: float  # half-coupling's lift speed at release [m/s]
-    engagement_time: float  # release -> striker at h2
-    max_travel: float  # farthest the striker gets in stage 2 [m]
-    return_time: float  # blow -> striker back by the jaw height
-    home_time: float  # blow -> striker home (balls can re-lock it)
-    relock_time: float  # home -> shaft back at its rest position
-    snap: bool = False
+    release_speed: Any
+    spin_up_time: Any
+    release_radius: Any
+    release_velocity: Any  # half-coupling's lift speed at release [m/s]
+    engagement_time: Any  # release -> striker at h2
+    max_travel: Any  # farthest the striker gets in stage 2 [m]
+    return_time: Any  # blow -> striker back by the jaw height
+    home_time: Any  # blow -> striker home (balls can re-lock it)
+    relock_time: Any  # home -> shaft back at its rest position
+    snap: Any = False
     notes: list[str] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
     series: dict[str, list[float]] = field(default_factory=dict)
     steps: int = 0
+    #: :data:`HELD`, :data:`NOT_HELD` or :data:`NEVER_FAST_ENOUGH` (per point on arrays)
+    refusal: Any = HELD
 
     @property
-    def blow(self) -> bool:
-        return math.isfinite(self.engagement_time)
+    def refused(self) -> Any:
+        return self.refusal != HELD
 
     @property
-    def returns(self) -> bool:
-        return self.blow and math.isfinite(self.return_time)
+    def blow(self) -> Any:
+        return isfinite(self.engagement_time)
 
     @property
-    def relocks(self) -> bool:
-        return self.returns and math.isfinite(self.home_time) and math.isfinite(self.relock_time)
+    def returns(self) -> Any:
+        return self.blow & isfinite(self.return_time)
+
+    @property
+    def relocks(self) -> Any:
+        return self.returns & isfinite(self.home_time) & isfinite(self.relock_time)
 
 
 # ---------------------------------------------------------------------------
@@ -505,27 +592,29 @@ class CycleOutcome:
 # ---------------------------------------------------------------------------
 
 
-def linear_reach(y0: float, v0: float, acc: float, w2: float, level: float) -> tuple[float, float]:
+def linear_reach(y0: Any, v0: Any, acc: Any, w2: Any, level: Any) -> tuple[Any, Any]:
     r"""First time :math:`\ddot y = acc - w^2(y - y_0)`, from :math:`(y_0, v_0)`, reaches ``level``.
 
     Parameters
     ----------
-    y0 : float
+    y0 : float or array
         Start position, [m]
-    v0 : float
+    v0 : float or array
         Start velocity, [m/s]
-    acc : float
+    acc : float or array
         Acceleration at the start position, [m/s^2]
-    w2 : float
+    w2 : float or array
         Stiffness per unit mass (square of the angular frequency), [1/s^2]
-    level : float
+    level : float or array
         Position to reach, [m]
 
     Notes
     -----
-    Returns ``(t, velocity there)``, ``(inf, nan)`` if never. Exact
-    (harmonic for :math:`w^2 > 0`, parabolic for 0); the angle is taken with
-    atan2 on cancellation-free terms, so tiny travels keep full precision.
+    Returns ``(t, velocity there)``, ``(inf, nan)`` if never. Exact: with
+    :math:`c = acc/w^2` and :math:`A = \sqrt{c^2 + (v_0/w)^2}` the motion is
+    :math:`y - y_0 = c - A\cos(wt + \delta)`; parabolic for :math:`w^2 \le 0`
+    (a rate that underflows). The angle is taken with atan2 on
+    cancellation-free terms, so tiny travels keep full precision.
 
     >>> t, v = linear_reach(0.0, 0.0, 293.101, 120000.0, 0.004)  # [002, eq. 5]
     >>> round(t, 7)
@@ -533,47 +622,73 @@ def linear_reach(y0: float, v0: float, acc: float, w2: float, level: float) -> t
     >>> linear_reach(0.0, 0.0, 293.101, 120000.0, 0.005)[0]  # beyond 2B/k²
     inf
     """
+    args = [v if isinstance(v, np.ndarray) else np.float64(v) for v in (y0, v0, acc, w2, level)]
+    with np.errstate(all="ignore"):
+        t, vel = _reach(*args)
+    return _one_or_many(t), _one_or_many(vel)
+
+
+def _reach(y0: Any, v0: Any, acc: Any, w2: Any, level: Any) -> tuple[Any, Any]:
+    r"""First time the linear motion from :math:`(y_0, v_0)` reaches ``level`` [m].
+
+    .. math::
+        y - y_0 = c - A\cos(wt + \delta),\quad c = \frac{acc}{w^2},\
+        A = \sqrt{c^2 + (v_0/w)^2};\qquad y - y_0 = v_0 t + \tfrac12 acc\,t^2\ (w = 0)
+
+    On numbers (float64) or arrays, under ``np.errstate(all="ignore")``; [002, eqs. 2-5].
+    """
     d = level - y0
-    if d == 0.0:
-        return 0.0, v0
-    s = 1.0 if d > 0.0 else -1.0
+    s = where(d > 0.0, 1.0, -1.0)
     d, v, a = d * s, v0 * s, acc * s  # now travel +d from 0 with v, a
-    if w2 <= 0.0:
-        if a == 0.0:
-            return (d / v, v * s) if v > 0.0 else (math.inf, math.nan)
+    par = w2 <= 0.0
+    any_par = any_true(par)
+    if any_par:  # no stiffness (a vanishing spring rate): uniform acceleration
+        t_lin = where(v > 0.0, d / v, math.inf)
+        v_lin = where(v > 0.0, v * s, math.nan)
         disc = v * v + 2.0 * a * d
-        if disc < 0.0:
-            return math.inf, math.nan
-        root = math.sqrt(disc)
-        t = 2.0 * d / (v + root) if v + root > 0.0 else math.inf
-        return (t, root * s) if t >= 0.0 and math.isfinite(t) else (math.inf, math.nan)
-    k = math.sqrt(w2)
+        root = sqrt(disc)
+        den = v + root
+        t_q = where(den > 0.0, 2.0 * d / where(den > 0.0, den, 1.0), math.inf)
+        ok = (disc >= 0.0) & (t_q >= 0.0) & isfinite(t_q)
+        t_q, v_q = where(ok, t_q, math.inf), where(ok, root * s, math.nan)
+        t_par, v_par = where(a == 0.0, t_lin, t_q), where(a == 0.0, v_lin, v_q)
+    k = sqrt(w2)
     c = a / w2  # centre offset from the start
     vk = v / k
-    amp = math.hypot(c, vk)
+    amp = hypot(c, vk)
     # y(θ) = c - amp cos(θ + δ), cos δ = c/amp, sin δ = vk/amp
-    if d > c + amp * (1.0 + 1e-13):
-        return math.inf, math.nan
-    delta = math.atan2(vk, c)
+    never = d > c + amp * (1.0 + 1e-13)
+    delta = atan2(vk, c)
     q = c - d  # amp cos(θ + δ) = q
-    sin_part = math.sqrt(max((amp - q) * (amp + q), 0.0))
-    if c > 0.0 and q > 0.0:  # amp - q cancels: amp - c + d with amp - c = vk²/(amp + c)
-        sin_part = math.sqrt(max((vk * vk / (amp + c) + d) * (amp + q), 0.0))
-    theta = math.atan2(sin_part, q) - delta
-    if theta < 0.0:
-        theta += 2.0 * math.pi
-    return theta / k, s * k * sin_part
+    # where amp - q cancels (c > 0, q > 0): amp - c + d with amp - c = vk²/(amp + c)
+    exact = (c > 0.0) & (q > 0.0)
+    sin_part = sqrt(pymax(where(exact, vk * vk / (amp + c) + d, amp - q) * (amp + q), 0.0))
+    theta = atan2(sin_part, q) - delta
+    theta = where(theta < 0.0, theta + 2.0 * math.pi, theta)
+    t, vel = theta / k, s * k * sin_part
+    if any_true(never):
+        t, vel = where(never, math.inf, t), where(never, math.nan, vel)
+    if any_par:
+        t, vel = where(par, t_par, t), where(par, v_par, vel)
+    zero = d == 0.0
+    if any_true(zero):
+        t, vel = where(zero, 0.0, t), where(zero, v0, vel)
+    return t, vel
 
 
-@dataclass(frozen=True)
-class _Stage2:
-    t: float  # release -> blow
-    reach: float
-    v0: float
+def _stage2(x: Mapping[str, Any], v_release: Any, g: Geometry) -> tuple[Any, Any]:
+    r"""Stage 2 [002, eq. 2] from the release state, exact per linear piece: (time, reach).
 
+    .. math::
+        V_0 = -\frac{(m_1 + m_2 + n m_p\rho)\,\dot z_1}{M_2 + m_2},\qquad
+        M_2\ddot y = M_2 g + c_1(\lambda_1 + h_1 - y) - c_3(\lambda_3 + y)
 
-def _stage2_closed(x: Mapping[str, Any], v_release: float, g: Geometry) -> _Stage2:
-    """Stage 2 from the release state, springs in contact, exact per linear piece."""
+    The sandwich starts backwards at :math:`V_0 = -(m_1 + m_2 + n m_p\rho)\dot z_1/(M_2 + m_2)`
+    with the shaft and comes back to the release position at :math:`-V_0` (conservative);
+    then the power and return springs drive it to :math:`h_2`, the power spring leaving
+    contact beyond :math:`\lambda_1 + h_1`. Returns (release -> blow time, farthest
+    travel), the time inf where it never gets to :math:`h_2`.
+    """
     c1, c2, c3 = x["power_spring_rate"], x["auxiliary_spring_rate"], x["return_spring_rate"]
     lam1, lam2, lam3 = (
         x["power_spring_preload"],
@@ -585,38 +700,42 @@ def _stage2_closed(x: Mapping[str, Any], v_release: float, g: Geometry) -> _Stag
     nm = x["roller_count"] * x["roller_mass"]
     big = m1 + nm + m3
     v0 = -(m1 + m2 + nm * g.a_h) * v_release / (big + m2)
-    t_back = 0.0
-    if v0 < 0.0:
-        # with the shaft, from 0 backwards and back to 0 with the same speed (conservative)
-        mass = big + m2
-        f_at0 = mass * grav + c1 * (lam1 + h1) + c2 * (lam2 + h1) - c3 * lam3
-        # y = c(1 - cos θ) + (v0/k) sin θ is back at 0 when tan(θ/2) = -(v0/k)/c
-        k_a = math.sqrt((c1 + c2 + c3) / mass)
-        t_back = 2.0 * math.atan2(-v0 / k_a, f_at0 / mass / k_a**2) / k_a
-        v_start = -v0
-    else:
-        v_start = 0.0
-    acc0 = grav + (c1 * (lam1 + h1) - c3 * lam3) / big
-    w2 = (c1 + c3) / big
+    back = v0 < 0.0
+    # with the shaft, from 0 backwards and back to 0 with the same speed (conservative):
+    # y = c(1 - cos θ) + (v0/k) sin θ is back at 0 when tan(θ/2) = -(v0/k)/c
+    mass = big + m2
+    f_at0 = mass * grav + c1 * (lam1 + h1) + c2 * (lam2 + h1) - c3 * lam3
+    k_a = sqrt((c1 + c2 + c3) / mass)
+    t_back = where(back, 2.0 * atan2(-v0 / k_a, f_at0 / mass / k_a**2) / k_a, 0.0)
+    v_start = where(back, -v0, 0.0)
+    # the striker's own stage-2 motion, B and k of [002, eqs. 2 and 5]
+    acc0, k = striker_oscillation(c1, lam1, c3, lam3, h1, big, grav)
+    w2 = k * k
     z_off = lam1 + h1  # the power spring leaves contact beyond this travel
-    k = math.sqrt(w2)
     c = acc0 / w2
-    reach = c + math.hypot(c, v_start / k)
-    if h2 <= z_off or reach <= z_off:
-        t2, _ = linear_reach(0.0, v_start, acc0, w2, h2)
-        return _Stage2(t_back + t2, min(reach, max(reach, 0.0)), v0)
-    t_a, v_a = linear_reach(0.0, v_start, acc0, w2, z_off)
+    reach = c + hypot(c, v_start / k)
+    one_piece = (h2 <= z_off) | (reach <= z_off)
+    if all_true(one_piece):  # the power spring stays in contact up to h2
+        return t_back + _reach(0.0, v_start, acc0, w2, h2)[0], reach
+    t_a, v_a = _reach(0.0, v_start, acc0, w2, z_off)
     acc_b = grav - c3 * (lam3 + z_off) / big
     w2_b = c3 / big
-    t_b, _ = linear_reach(z_off, v_a, acc_b, w2_b, h2)
+    t_b, _ = _reach(z_off, v_a, acc_b, w2_b, h2)
     c_b = acc_b / w2_b
-    reach_b = z_off + c_b + math.hypot(c_b, v_a / math.sqrt(w2_b))
-    return _Stage2(t_back + t_a + t_b, reach_b, v0)
+    reach_b = z_off + c_b + hypot(c_b, v_a / sqrt(w2_b))
+    if not any_true(one_piece):
+        return t_back + t_a + t_b, reach_b
+    t2, _ = _reach(0.0, v_start, acc0, w2, h2)
+    return where(one_piece, t_back + t2, t_back + t_a + t_b), where(one_piece, reach, reach_b)
 
 
-def _stage3_matrices(
-    x: Mapping[str, Any], g: Geometry
-) -> tuple[float, float, float]:  # M11, M12, M22
+def _stage3_matrices(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, Any]:
+    r"""Stage 3's mass matrix :math:`(M_{11}, M_{12}, M_{22})` over :math:`(y_h, y_s)` [kg].
+
+    From :math:`T = \tfrac12 m_1\dot y_h^2 + \tfrac12 m_3\dot y_s^2
+    + \tfrac12 n m_p(\dot x^2 + \dot y_r^2)`,
+    :math:`x = x_0 + \kappa(y_s - y_h)`, :math:`y_r = a_h y_h + a_s y_s`.
+    """
     nm = x["roller_count"] * x["roller_mass"]
     k2 = g.kappa * g.kappa
     return (
@@ -626,40 +745,57 @@ def _stage3_matrices(
     )
 
 
-def relock_friction(x: Mapping[str, Any]) -> float:
+def relock_friction(x: Mapping[str, Any]) -> Any:
     """Friction force the shaft meets in stage 4, :math:`f\\,c_3\\lambda_3` [N] [002, eq. 4].
 
     Parameters
     ----------
     x : Mapping
-        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``);
+        numbers or arrays of one shape
+
+    Notes
+    -----
+    The reference design: 0.1 · 52000 · 0.0021 = 10.92 N.
+
+    >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
+    >>> round(relock_friction(R), 12)
+    10.92
     """
-    return float(x["roller_friction"] * x["return_spring_rate"] * x["return_spring_preload"])
+    return _one_or_many(x["roller_friction"] * x["return_spring_rate"] * x["return_spring_preload"])
 
 
-def _stage4_closed(x: Mapping[str, Any]) -> float:
-    """Exact stage 4 [002, eq. 4] with Coulomb friction: time to travel h1, inf if it sticks."""
-    m2, c2, lam2, h1 = (
-        x["stepped_shaft_mass"],
-        x["auxiliary_spring_rate"],
-        x["auxiliary_spring_preload"],
-        x["release_travel"],
+def _release_velocity(x: Mapping[str, Any], g: Geometry, w_m: Any, r: Any) -> Any:
+    r"""Lift speed of the half-coupling at release on the quasi-static path [m/s].
+
+    .. math::
+        \dot z_e = \frac{2A\omega r}{K(\omega)}\frac{M(\omega)}{J + n m_p r^2},\qquad
+        \text{snap-through } (K \le 0):\ h_1\sqrt{-K/m_e}
+
+    The derivative of the quasi-static path [002, eq. 1] times the flywheel's acceleration.
+    """
+    k = _stage1_stiffness(x, g, w_m)
+    torque = x["motor_torque"]
+    w_nl = x.get("motor_no_load_speed")
+    if w_nl is not None:
+        torque = torque * pymax(1.0 - w_m / w_nl, 0.0)
+    wd = torque / _inertia(x, g, r)
+    return where(
+        k <= 0.0,
+        x["release_travel"] * sqrt(-k / _effective_mass(x, g)),
+        2.0 * _push_per_w2(x, g) * w_m * r / k * wd,
     )
-    drive = c2 * (lam2 + h1) + m2 * x["gravity"]
-    ff = relock_friction(x)
-    if drive <= ff:
-        return math.inf
-    return linear_reach(0.0, 0.0, (drive - ff) / m2, c2 / m2, h1)[0]
 
 
-def quasi_static_release_velocity(x: Mapping[str, Any], w_m: float) -> float:
+def quasi_static_release_velocity(x: Mapping[str, Any], w_m: Any) -> Any:
     r"""Lift speed of the half-coupling at release on the quasi-static path [m/s].
 
     Parameters
     ----------
     x : Mapping
-        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
-    w_m : float
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``);
+        numbers or arrays of one shape
+    w_m : float or array
         Release speed, [rad/s]
 
     Notes
@@ -670,21 +806,111 @@ def quasi_static_release_velocity(x: Mapping[str, Any], w_m: float) -> float:
 
     (snap-through: :math:`h_1\sqrt{-K_0/m_e}`, the energy of the snap).
     """
+    with np.errstate(all="ignore"):
+        x = _numbers(x)
+        g = _geo(x)
+        w = w_m if isinstance(w_m, np.ndarray) else np.float64(w_m)
+        return _one_or_many(_release_velocity(x, g, w, _radius(x, g)))
+
+
+def closed_form_cycle_array(x: Mapping[str, Any]) -> CycleOutcome:
+    """The cheap rung for one design or many: numbers or equal-length arrays in ``x``.
+
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``); numeric ones numbers or
+        equal-length arrays, ``roller_geometry`` one choice for all points
+
+    Notes
+    -----
+    Quasi-static stage 1 (:func:`release_speed_of`), the piecewise-linear stages 2 and 4
+    (:func:`linear_reach`), and stage 3 as the paper reduces it with the rollers'
+    inertia kept: the half-coupling held, the striker and the rollers' share moving,
+    :math:`M_{22}\\ddot y_s = -c_3(\\lambda_3 + y_s) + (m_3 + n m_p a_s)g`. A design the
+    closed form refuses (preloads that do not hold the half-coupling, a motor that never
+    reaches the release speed) has ``refusal`` set and NaN in every field; it is not
+    raised (:func:`closed_form_cycle` raises it for one design).
+
+    >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
+    >>> o = closed_form_cycle_array({**R, "power_spring_rate": np.array([5e4, 6e4])})
+    >>> o1 = closed_form_cycle({**R, "power_spring_rate": 6e4})
+    >>> bool(o.engagement_time[1] == o1.engagement_time)
+    True
+    """
+    with np.errstate(all="ignore"):
+        x = _numbers(x)
+        g = _geo(x)
+        x0 = x["roller_radius"]
+        r = _radius(x, g)
+        w_0 = _liftoff_speed(x, g)
+        w_m = _release_speed(x, g, w_0, r)
+        t_spin = _time_to_speed(x, _inertia(x, g, r), w_m)
+        t_lift = _time_to_speed(x, _inertia(x, g, x0), w_0)
+        refusal = where(
+            _preload_force(x, g) > 0.0,
+            where(isfinite(t_spin) & isfinite(t_lift), HELD, NEVER_FAST_ENOUGH),
+            NOT_HELD,
+        )
+        v_rel = _release_velocity(x, g, w_m, r)
+        t_eng, reach = _stage2(x, v_rel, g)
+        # stage 3, the paper's reduction with the rollers' inertia kept: the half-coupling
+        # held, M22·ÿs = -c3(λ3 + ys) + (m3 + n·mp·a_s)g from rest at h2
+        h2, h3 = x["engagement_height"], x["jaw_height"]
+        c3 = x["return_spring_rate"]
+        nm = x["roller_count"] * x["roller_mass"]
+        _, _, m22 = _stage3_matrices(x, g)
+        q_s0 = (
+            -c3 * (x["return_spring_preload"] + h2)
+            + (x["striker_mass"] + nm * g.a_s) * x["gravity"]
+        )
+        clear = h2 - pymin(h3, h2)
+        blow = isfinite(t_eng)  # no blow, no later stage: one verdict for the whole cycle
+        t_ret = where(blow, _reach(h2, 0.0, q_s0 / m22, c3 / m22, clear)[0], math.inf)
+        t_home = where(blow, _reach(h2, 0.0, q_s0 / m22, c3 / m22, 0.0)[0], math.inf)
+        # stage 4 [002, eq. 4]: the shaft back h1 against the friction f·c3·λ3
+        t_relock = relock_time(
+            x["stepped_shaft_mass"],
+            x["gravity"],
+            x["auxiliary_spring_rate"],
+            x["auxiliary_spring_preload"],
+            x["release_travel"],
+            x["roller_friction"] * c3 * x["return_spring_preload"],
+        )
+        t_lock = where(isfinite(t_home), t_relock, math.inf)
+        snap = _stage1_stiffness(x, g, w_0) < 0.0
+        fields: dict[str, Any] = dict(
+            zip(_NUMERIC, (w_m, t_spin, r, v_rel, t_eng, reach, t_ret, t_home, t_lock), strict=True)
+        )
+        if not is_array(*x.values()):
+            return CycleOutcome(**fields, snap=bool(snap), refusal=int(refusal))
+        n = np.broadcast_shapes(*(np.shape(v) for v in x.values() if isinstance(v, np.ndarray)))
+        refused = np.broadcast_to(refusal != HELD, n)
+        any_refused = bool(refused.any())
+
+        def out(v: Any) -> np.ndarray:
+            v = np.broadcast_to(np.asarray(v, dtype=float), n)
+            return np.where(refused, math.nan, v) if any_refused else v
+
+        columns: dict[str, Any] = {k: out(v) for k, v in fields.items()}
+        return CycleOutcome(
+            **columns,
+            snap=np.broadcast_to(snap, n) & ~refused,
+            refusal=np.broadcast_to(refusal, n),
+        )
+
+
+def _refuse(x: Mapping[str, Any], o: CycleOutcome) -> EngineError:
+    """The refusal of one design, with its reason."""
     g = _geo(x)
-    r = release_radius_of(x)
-    k = _stage1_stiffness(x, g, w_m)
-    if k <= 0.0:
-        return x["release_travel"] * math.sqrt(-k / stage1_effective_mass(x))
-    torque = x["motor_torque"]
-    w_nl = x.get("motor_no_load_speed")
-    if w_nl is not None:
-        torque *= max(1.0 - w_m / w_nl, 0.0)
-    wd = torque / _inertia_at(x, g, r)
-    return 2.0 * _push_per_w2(x, g) * w_m * r / k * wd
+    if o.refusal == NOT_HELD:
+        return _preloads_do_not_hold(x, g)
+    w_0 = _liftoff_speed(x, g)
+    return _never_fast_enough(x, max(_release_speed(x, g, w_0, _radius(x, g)), w_0))
 
 
 def closed_form_cycle(x: Mapping[str, Any]) -> CycleOutcome:
-    """The cheap rung: quasi-static stage 1 and the piecewise-linear stages 2 and 4.
+    """The cheap rung for one design: :func:`closed_form_cycle_array` with floats out.
 
     Parameters
     ----------
@@ -693,63 +919,34 @@ def closed_form_cycle(x: Mapping[str, Any]) -> CycleOutcome:
 
     Notes
     -----
-    Stage 3 is the paper's reduction with the rollers' inertia kept: the
-    half-coupling held, the striker and the rollers' share moving,
-    :math:`M_{22}\\ddot y_s = -c_3(\\lambda_3 + y_s) + (m_3 + n m_p a_s)g`.
+    Raises InfeasibleDesign, with its reason, where the closed form refuses the design.
+
+    >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
+    >>> o = closed_form_cycle(R)
+    >>> round(o.release_speed, 2), round(o.engagement_time * 1e3, 3)
+    (243.96, 6.55)
     """
-    g = _geo(x)
-    w_m = release_speed_of(x)
-    r = release_radius_of(x)
-    t_spin = _time_to_speed(x, _inertia_at(x, g, r), w_m)
-    w_0 = liftoff_speed_of(x)
-    if not (
-        math.isfinite(t_spin)
-        and math.isfinite(_time_to_speed(x, _inertia_at(x, g, x["roller_radius"]), w_0))
-    ):
-        raise _never_fast_enough(x, max(w_m, w_0))
-    v_rel = quasi_static_release_velocity(x, w_m)
-    s2 = _stage2_closed(x, v_rel, g)
-    h2, h3 = x["engagement_height"], x["jaw_height"]
-    c3, lam3, grav = x["return_spring_rate"], x["return_spring_preload"], x["gravity"]
-    nm = x["roller_count"] * x["roller_mass"]
-    _, _, m22 = _stage3_matrices(x, g)
-    q_s0 = -c3 * (lam3 + h2) + (x["striker_mass"] + nm * g.a_s) * grav
-    clear = h2 - min(h3, h2)
-    t_ret = t_home = t_lock = math.inf
-    if math.isfinite(s2.t):  # no blow, no later stage: one verdict for the whole cycle
-        t_ret, _ = linear_reach(h2, 0.0, q_s0 / m22, c3 / m22, clear)
-        t_home, _ = linear_reach(h2, 0.0, q_s0 / m22, c3 / m22, 0.0)
-    if math.isfinite(t_home):
-        t_lock = _stage4_closed(x)
+    with np.errstate(all="ignore"):
+        xn = _numbers(x)
+        o = closed_form_cycle_array(xn)
+        if o.refused:
+            raise _refuse(xn, o)
+    return _as_floats(o)
+
+
+def _as_floats(o: CycleOutcome) -> CycleOutcome:
+    """One design's outcome with Python floats in its numeric fields."""
+    numbers: dict[str, Any] = {f: float(getattr(o, f)) for f in _NUMERIC}
     return CycleOutcome(
-        release_speed=w_m,
-        spin_up_time=t_spin,
-        release_radius=r,
-        release_velocity=v_rel,
-        engagement_time=s2.t,
-        max_travel=s2.reach,
-        return_time=t_ret,
-        home_time=t_home,
-        relock_time=t_lock,
-        snap=snaps_at_liftoff(x),
+        **numbers,
+        snap=bool(o.snap),
+        refusal=int(o.refusal),
     )
 
 
 # ---------------------------------------------------------------------------
 # The compiled kernel: one RK4 stepper with event location, every mode
 # ---------------------------------------------------------------------------
-
-
-def _jit(func: Callable[..., Any]) -> Callable[..., Any]:
-    """Compile with numba when it is installed; the plain function otherwise."""
-    try:
-        import numba
-    except ImportError:  # pragma: no cover - numba is a declared dependency
-        return func
-    try:
-        return numba.njit(cache=True, nogil=True, error_model="numpy")(func)
-    except RuntimeError:  # pragma: no cover - no writable cache directory at all
-        return numba.njit(cache=False, nogil=True, error_model="numpy")(func)
 
 
 # parameter vector indices
@@ -764,7 +961,7 @@ def _sp(c, d):  # type: ignore[no-untyped-def]
     return c * d if d > 0.0 else 0.0
 
 
-_sp_c = _jit(_sp)
+_sp_c = jit(_sp, error_model="numpy")
 
 
 def _rhs(mode, p, w, q0, q1, v0, v1):  # type: ignore[no-untyped-def]
@@ -808,7 +1005,7 @@ def _rhs(mode, p, w, q0, q1, v0, v1):  # type: ignore[no-untyped-def]
     return 0.0, f / p[8], 0.0
 
 
-_rhs_c = _jit(_rhs)
+_rhs_c = jit(_rhs, error_model="numpy")
 
 
 def _gfun(mode, kind, p, w, q0, q1, v0, v1):  # type: ignore[no-untyped-def]
@@ -827,7 +1024,7 @@ def _gfun(mode, kind, p, w, q0, q1, v0, v1):  # type: ignore[no-untyped-def]
     return qh - m12 * qs / m22
 
 
-_gfun_c = _jit(_gfun)
+_gfun_c = jit(_gfun, error_model="numpy")
 
 
 def _rk4(mode, p, w, q0, q1, v0, v1, h):  # type: ignore[no-untyped-def]
@@ -864,61 +1061,7 @@ def _rk4(mode, p, w, q0, q1, v0, v1, h):  # type: ignore[no-untyped-def]
     )
 
 
-_rk4_c = _jit(_rk4)
-
-
-def _hermite(s, z0, v0, z1, v1, h):  # type: ignore[no-untyped-def]
-    s2 = s * s
-    s3 = s2 * s
-    return (
-        (2.0 * s3 - 3.0 * s2 + 1.0) * z0
-        + (s3 - 2.0 * s2 + s) * h * v0
-        + (-2.0 * s3 + 3.0 * s2) * z1
-        + (s3 - s2) * h * v1
-    )
-
-
-_hermite_c = _jit(_hermite)
-
-
-def _first_root(z0, v0, z1, v1, h):  # type: ignore[no-untyped-def]
-    """First s in [0, 1] where the Hermite cubic reaches 0 from below; -1 if it does not."""
-    hi = -1.0
-    if z1 >= 0.0:
-        hi = 1.0
-    a = 3.0 * (2.0 * (z0 - z1) / h + v0 + v1)
-    b = 2.0 * (3.0 * (z1 - z0) / h - 2.0 * v0 - v1)
-    c = v0
-    if v0 > 0.0 and v1 < 0.0:  # an interior maximum may graze 0 inside the step
-        if a == 0.0:
-            sp = -c / b if b != 0.0 else 2.0
-        else:
-            disc = b * b - 4.0 * a * c
-            if disc < 0.0:
-                disc = 0.0
-            q = -0.5 * (b + math.copysign(math.sqrt(disc), b))
-            r1 = q / a
-            r2 = c / q if q != 0.0 else -1.0
-            sp = 2.0
-            if 0.0 <= r1 <= 1.0:
-                sp = r1
-            if 0.0 <= r2 <= 1.0 and r2 < sp:
-                sp = r2
-        if 0.0 <= sp <= 1.0 and _hermite_c(sp, z0, v0, z1, v1, h) >= 0.0:
-            hi = sp
-    if hi < 0.0:
-        return -1.0
-    lo = 0.0
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        if _hermite_c(mid, z0, v0, z1, v1, h) >= 0.0:
-            hi = mid
-        else:
-            lo = mid
-    return hi
-
-
-_first_root_c = _jit(_first_root)
+_rk4_c = jit(_rk4, error_model="numpy")
 
 
 def _advance(  # type: ignore[no-untyped-def]
@@ -957,7 +1100,7 @@ def _advance(  # type: ignore[no-untyped-def]
                     continue  # past the level, or leaving it onwards: not a new crossing
                 zb = d * (ec0[e] * q0n + ec1[e] * q1n - elvl[e])
                 vb = d * (ec0[e] * v0n + ec1[e] * v1n)
-                s = _first_root_c(za, va, zb, vb, hh)
+                s = first_rise_c(za, va, zb, vb, hh)
             else:
                 ga = d * _gfun_c(mode, ekind[e], p, w, q0, q1, v0, v1)
                 gb = d * _gfun_c(mode, ekind[e], p, wn, q0n, q1n, v0n, v1n)
@@ -1015,7 +1158,7 @@ def _advance(  # type: ignore[no-untyped-def]
     return 0, -1, t, w, q0, q1, v0, v1, n_max, n_rec
 
 
-_advance_c = _jit(_advance)
+_advance_c = jit(_advance, error_model="numpy")
 
 
 # ---------------------------------------------------------------------------
@@ -1110,7 +1253,7 @@ class _Run:
                 f"budget {self.max_steps:g}"
                 if self.deadline is None
                 else f"the {self.max_steps:.2g} steps its time budget leaves at "
-                f"{_STEP_COST[0] * 1e9:.0f} ns a step"
+                f"{_COST.seconds * 1e9:.0f} ns a step"
             )
             raise BudgetExceeded(
                 f"the cycle simulation would take about {self.steps + expected:.2g} RK4 steps "
@@ -1145,7 +1288,7 @@ class _Run:
                 clamp0, stride, *bufs, n_rec,
             )  # fmt: skip
             if type(self) is _Run:
-                _measured(int(used), time.perf_counter() - began)
+                _COST.measured(int(used), time.perf_counter() - began)
             self.steps += int(used)
             if status != 0:
                 break
@@ -1175,7 +1318,7 @@ def simulate_cycle(
         ``time.perf_counter()`` value after which the run stops (BudgetExceeded), [s]
     max_steps : int
         Largest number of RK4 steps without a deadline, [-]; with one, the step budget
-        is what the time left affords (:func:`step_budget`)
+        is what the time left affords (:func:`engine.numerics.step_budget`)
     steps_per_period : int
         RK4 steps per shortest natural period of each mode, [-]
 
@@ -1192,7 +1335,7 @@ def simulate_cycle(
         # loading or compiling the kernel (once per process) is not the design's time
         deadline += _ensure_compiled(p)
     rec = _Recorder(record)
-    run = _Run_impl(p, rec, deadline, step_budget(deadline, max_steps))
+    run = _Run_impl(p, rec, deadline, _COST.budget(deadline, max_steps))
     notes: list[str] = []
     warnings: list[str] = []
     nm = x["roller_count"] * x["roller_mass"]
@@ -1205,10 +1348,10 @@ def simulate_cycle(
     # ---- stage 1: spin-up from rest; the half-coupling rests until lift-off -------------
     w_0 = liftoff_speed_of(x)
     w_qs = release_speed_of(x)  # also refuses a design whose preloads do not hold
-    inertia_0 = _inertia_at(x, g, x["roller_radius"])
+    inertia_0 = _inertia(x, g, x["roller_radius"])
     t_l = _time_to_speed(x, inertia_0, w_0)
     r = release_radius_of(x)
-    t_qs = _time_to_speed(x, _inertia_at(x, g, r), w_qs)
+    t_qs = _time_to_speed(x, _inertia(x, g, r), w_qs)
     if not (math.isfinite(t_qs) and math.isfinite(t_l)):
         raise _never_fast_enough(x, max(w_qs, w_0))
     m_e = stage1_effective_mass(x)
@@ -1492,69 +1635,52 @@ EXACT_FLOOR = 1e-7
 RETURN_COUPLING = 4.0
 
 
-def quasi_static_error(x: Mapping[str, Any]) -> tuple[float, float, float]:
-    r"""A-priori errors of the quasi-static stage 1.
-
-    Parameters
-    ----------
-    x : Mapping
-        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
-
-    Notes
-    -----
-    Returns (release speed, relative; spin-up time, relative; release velocity [m/s]).
-
-    The derivation of :func:`engine.rare_impact.quasi_static_release_error`
-    with the geometry's push :math:`A = n m_p\kappa`, stiffness
-    :math:`K = c_1 + c_2 - A\kappa\omega^2` and the weight in the preload: the
-    half-coupling leaves its stop at :math:`\omega_0` at rest while its
-    equilibrium moves at :math:`\dot z_e`, oscillates about it with amplitude
-    :math:`a_0 = \dot z_e/\Omega_0 + \ddot z_e/\Omega_0^2`, carried to release
-    by the adiabatic invariant, plus the inertial lag. The velocity error is that
-    amplitude times :math:`\Omega_M` plus the lag's rate. For a linear motor the
-    inertia's growth from :math:`x_0` to :math:`r` adds its share to the time.
-    """
-    g = _geo(x)
+def _quasi_static_error(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, Any, Any]:
+    """:func:`quasi_static_error` on numbers or arrays, and where its arithmetic fails."""
     c1, c2 = x["power_spring_rate"], x["auxiliary_spring_rate"]
-    f0 = c1 * x["power_spring_preload"] + c2 * x["auxiliary_spring_preload"] + _weight(x, g)
     h1, x0 = x["release_travel"], x["roller_radius"]
-    fm = f0 + (c1 + c2) * h1
-    a_push = _push_per_w2(x, g)
-    kap = g.kappa
     stiff = c1 + c2
-    m_e = stage1_effective_mass(x)
-    r = release_radius_of(x)
-    inertia = _inertia_at(x, g, r)
+    fm = _preload_force(x, g) + stiff * h1
+    a_push, kap = _push_per_w2(x, g), g.kappa
+    m_e = _effective_mass(x, g)
+    r = _radius(x, g)
+    inertia = _inertia(x, g, r)
+    inertia_0 = _inertia(x, g, x0)
     torque, w_nl = x["motor_torque"], x.get("motor_no_load_speed")
-    w_0 = liftoff_speed_of(x)
-    w_m = release_speed_of(x)
-    inertia_share = 0.0
-    if w_nl is not None and not g.paper and w_m < w_nl:
+    w_0 = _liftoff_speed(x, g)
+    w_m = _release_speed(x, g, w_0, r)
+    inertia_share: Any = 0.0
+    if w_nl is not None and not g.paper:
         # the closed form runs the whole spin-up on the inertia at release; a relative
         # inertia error δ moves t = -τ ln(1 - ω/ω_nl) by δ·(ω/ω_nl)/((1 - ω/ω_nl)·|ln(1 - ω/ω_nl)|)
         # near the no-load speed (1 for a constant torque); SAFETY for the Coriolis torque
-        u = w_m / w_nl
-        amplify = max(u / ((1.0 - u) * -math.log1p(-u)), 1.0)
-        inertia_share = SAFETY * amplify * (inertia - _inertia_at(x, g, x0)) / inertia
+        below = w_m < w_nl
+        u = where(below, w_m / w_nl, 0.5)
+        amplify = pymax(u / ((1.0 - u) * -log1p(-u)), 1.0)
+        inertia_share = where(below, SAFETY * amplify * (inertia - inertia_0) / inertia, 0.0)
 
-    def accel(w: float) -> float:
+    def accel(w: Any) -> Any:
         return torque / inertia if w_nl is None else torque / inertia * (1.0 - w / w_nl)
 
-    if _stage1_stiffness(x, g, w_0) < 0.0:  # snap-through at lift-off
+    k_lift = _stage1_stiffness(x, g, w_0)
+    snap = k_lift < 0.0
+    if any_true(snap):  # snap-through at lift-off
         wd_0 = accel(w_0)
-        if wd_0 <= 0.0:
-            return math.inf, math.inf, math.inf
         t_s = (6.0 * h1 * m_e / (2.0 * a_push * x0 * w_0 * wd_0)) ** (1.0 / 3.0)
         # plus the share of the flywheel's inertia the rollers take on the way out: the
         # closed form assumes the snap conserves angular momentum, the motor may refill it
-        share = 0.0 if g.paper else (inertia - _inertia_at(x, g, x0)) / inertia
-        dw = SAFETY * (wd_0 * t_s / w_0 + share)
+        share = 0.0 if g.paper else (inertia - inertia_0) / inertia
+        dw_s = SAFETY * (wd_0 * t_s / w_0 + share)
         t_0 = _time_to_speed(x, inertia, w_0)
-        v_snap = h1 * math.sqrt(-_stage1_stiffness(x, g, w_0) / m_e)
         # t = L/M: the time is off by as much as the speed (constant torque)
-        return dw, max(SAFETY * t_s / t_0 + inertia_share, dw), SAFETY * v_snap
+        dt_s = pymax(SAFETY * t_s / t_0 + inertia_share, dw_s)
+        dv_s = SAFETY * h1 * sqrt(-k_lift / m_e)
+        stalled = wd_0 <= 0.0
+        dw_s, dt_s, dv_s = (where(stalled, math.inf, v) for v in (dw_s, dt_s, dv_s))
+        if all_true(snap):
+            return dw_s, dt_s, dv_s, False
 
-    def rates(w: float, rr: float) -> tuple[float, float, float]:
+    def rates(w: Any, rr: Any) -> tuple[Any, Any, Any]:
         k = stiff - a_push * kap * w * w
         dz_du = a_push * rr / k
         d2z_du2 = 2.0 * a_push * kap / k * dz_du
@@ -1566,50 +1692,108 @@ def quasi_static_error(x: Mapping[str, Any]) -> tuple[float, float, float]:
 
     k_0, zd_0, zdd_0 = rates(w_0, x0)
     k_m, _, zdd_m = rates(w_m, r)
-    om_0, om_m = math.sqrt(k_0 / m_e), math.sqrt(k_m / m_e)
-    amp = (abs(zd_0) / om_0 + abs(zdd_0) / om_0**2) * math.sqrt(om_0 / om_m)
+    om_0, om_m = sqrt(k_0 / m_e), sqrt(k_m / m_e)
+    # a stiffness of zero or below, or frequencies whose squares overflow: no estimate
+    fails = ~snap & ((k_0 == 0.0) | ~(k_m > 0.0) | (om_0 > 1e154) | (om_m > 1e154))
+    amp = (abs(zd_0) / om_0 + abs(zdd_0) / om_0**2) * sqrt(om_0 / om_m)
     err = amp + abs(zdd_m) / om_m**2
     dw = SAFETY * err * k_m / (2.0 * fm)
     wd_m = accel(w_m)
     t_m = _time_to_speed(x, inertia, w_m)
-    dt = dw * w_m / (wd_m * t_m) if wd_m > 0 else math.inf
+    dt = where(wd_m > 0.0, dw * w_m / (wd_m * t_m), math.inf) + inertia_share
     dv = SAFETY * (amp * om_m + abs(zdd_m) / om_m)
-    del f0
-    return dw, dt + inertia_share, dv
+    if any_true(snap):
+        dw, dt, dv = where(snap, dw_s, dw), where(snap, dt_s, dt), where(snap, dv_s, dv)
+    return dw, dt, dv, fails
 
 
-def closed_form_errors(x: Mapping[str, Any], outcome: CycleOutcome) -> dict[str, float]:
-    """Estimated relative error of each closed-form output group for these inputs.
+def quasi_static_error(x: Mapping[str, Any]) -> tuple[Any, Any, Any]:
+    r"""A-priori errors of the quasi-static stage 1.
 
     Parameters
     ----------
     x : Mapping
-        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
-    outcome : CycleOutcome
-        The closed form's outcome for ``x``
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``);
+        numbers or arrays of one shape
 
     Notes
     -----
-    Keys: ``stage1`` (release speed, spin-up time, window), ``engagement``
-    (engagement time and margin, reach), ``return``, ``relock``.
+    Returns (release speed, relative; spin-up time, relative; release velocity [m/s]),
+    NaN where no estimate can be made (a stage-1 stiffness of zero or below at release).
+
+    The half-coupling leaves its stop at :math:`\omega_0` at rest while its
+    equilibrium :math:`z_e(\omega)` (:math:`dz_e/du = Ar/K`, :math:`u = \omega^2`,
+    push :math:`A = n m_p\kappa`, stiffness :math:`K = c_1 + c_2 - A\kappa\omega^2`)
+    moves at :math:`\dot z_e`; it oscillates about it with amplitude
+    :math:`a_0 = \dot z_e/\Omega_0 + \ddot z_e/\Omega_0^2`, :math:`\Omega = \sqrt{K/m_e}`,
+    carried to release by the adiabatic invariant as :math:`a_0\sqrt{\Omega_0/\Omega_M}`,
+    plus the inertial lag :math:`\ddot z_e/\Omega_M^2`. That displacement error
+    :math:`e` moves the release speed by :math:`\delta\omega/\omega_M = e K_M/(2F_M)`
+    (times :data:`SAFETY`) and the spin-up time by :math:`\delta\omega/(\dot\omega_M t_M)`;
+    the velocity error is the amplitude times :math:`\Omega_M` plus the lag's rate.
+    For a linear motor the inertia's growth from :math:`x_0` to :math:`r` adds its
+    share to the time. A snap-through at lift-off: the push grows like
+    :math:`2Ax_0\omega_0\dot\omega t`, so the travel :math:`h_1` takes
+    :math:`t_s = (6h_1m_e/(2Ax_0\omega_0\dot\omega_0))^{1/3}`, in which the flywheel
+    gains :math:`\dot\omega_0 t_s`.
     """
-    dw, dt, dv = quasi_static_error(x)
-    g = _geo(x)
-    errs = {"stage1": max(dw, dt, EXACT_FLOOR)}
-    if outcome.blow:
+    with np.errstate(all="ignore"):
+        x = _numbers(x)
+        dw, dt, dv, fails = _quasi_static_error(x, _geo(x))
+        if any_true(fails):
+            dw, dt, dv = (where(fails, math.nan, v) for v in (dw, dt, dv))
+        return _one_or_many(dw), _one_or_many(dt), _one_or_many(dv)
+
+
+def closed_form_errors(x: Mapping[str, Any], outcome: CycleOutcome) -> dict[str, Any]:
+    """Estimated relative error of each closed-form output group, one design or many.
+
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``);
+        numbers or arrays of one shape
+    outcome : CycleOutcome
+        The closed form's outcome for ``x`` (:func:`closed_form_cycle_array`)
+
+    Notes
+    -----
+    Keys: ``stage1`` (release speed, spin-up time, window: the larger of
+    :func:`quasi_static_error`'s two, at least :data:`EXACT_FLOOR`), ``engagement``
+    (engagement time and margin, reach: stage 2 rerun with the release velocity
+    ± its error, plus the speed's error), ``return`` (:data:`RETURN_COUPLING` times the
+    stage-3 inertia coupling :math:`M_{12}^2/(M_{11}M_{22})`, at most 1), ``relock``
+    (:data:`EXACT_FLOOR`). NaN where no estimate can be made or the design is refused;
+    maxima follow Python's ``max`` (a NaN first argument stays NaN).
+
+    >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
+    >>> e = closed_form_errors(R, closed_form_cycle(R))
+    >>> e["relock"], e["return"]  # symmetric V at 45°: M12 = n·mp(-1/4 + 1/4) = 0
+    (1e-07, 1e-07)
+    """
+    with np.errstate(all="ignore"):
+        x = _numbers(x)
+        g = _geo(x)
+        dw, dt, dv, fails = _quasi_static_error(x, g)
+        stage1 = pymax(pymax(dw, dt), EXACT_FLOOR)
         base = outcome.engagement_time
-        worst = 0.0
+        worst: Any = 0.0
         for sign in (1.0, -1.0):
-            other = _stage2_closed(x, max(outcome.release_velocity + sign * dv, 0.0), g).t
-            worst = max(worst, abs(other - base) / base if math.isfinite(other) else math.inf)
-        errs["engagement"] = max(worst + dw, EXACT_FLOOR)
-    else:
-        errs["engagement"] = max(dw, EXACT_FLOOR)
-    m11, m12, m22 = _stage3_matrices(x, g)
-    coupling = m12 * m12 / (m11 * m22)
-    errs["return"] = min(max(RETURN_COUPLING * coupling, EXACT_FLOOR), 1.0)
-    errs["relock"] = EXACT_FLOOR
-    return errs
+            other, _ = _stage2(x, pymax(outcome.release_velocity + sign * dv, 0.0), g)
+            worst = pymax(worst, where(isfinite(other), abs(other - base) / base, math.inf))
+        engagement = where(outcome.blow, pymax(worst + dw, EXACT_FLOOR), pymax(dw, EXACT_FLOOR))
+        m11, m12, m22 = _stage3_matrices(x, g)
+        ret = pymin(pymax(RETURN_COUPLING * (m12 * m12 / (m11 * m22)), EXACT_FLOOR), 1.0)
+        bad = fails | outcome.refused
+        groups = {"stage1": stage1, "engagement": engagement, "return": ret, "relock": EXACT_FLOOR}
+        if not is_array(bad, *groups.values()):
+            return {k: math.nan if bad else float(v) for k, v in groups.items()}
+        n = np.shape(bad) if is_array(bad) else np.shape(outcome.refused)
+        n = np.broadcast_shapes(n, *(np.shape(v) for v in groups.values()))
+        return {
+            k: np.where(bad, math.nan, np.broadcast_to(np.asarray(v, dtype=float), n))
+            for k, v in groups.items()
+        }
 
 
 # ---------------------------------------------------------------------------
@@ -1736,471 +1920,3 @@ def simulate_cycle_scipy(
 
 
 _Run_impl: type[_Run] = _Run
-
-
-# ---------------------------------------------------------------------------
-# The closed form on arrays (sweeps and studies: several inputs may vary at once)
-# ---------------------------------------------------------------------------
-
-
-@dataclass(frozen=True)
-class _GeometryArray:
-    """:class:`Geometry` with ``kappa`` (and ``tan_a``) per point where the cone angle varies."""
-
-    kappa: Any
-    a_h: float
-    a_s: float
-    paper: bool
-    tan_a: Any
-
-
-def _geo_array(x: Mapping[str, Any]) -> _GeometryArray:
-    name = str(x.get("roller_geometry", "symmetric_v"))
-    t = np.tan(np.asarray(x["cone_angle"], dtype=float))
-    if name == "symmetric_v":
-        return _GeometryArray(0.5 / t, 0.5, 0.5, False, t)
-    if name in ("single_cone", "paper"):
-        return _GeometryArray(1.0 / t, 0.0, 1.0, name == "paper", t)
-    raise ValueError(f"unknown roller geometry {name!r}; one of {', '.join(GEOMETRIES)}")
-
-
-def _pymax(a: Any, b: Any) -> Any:
-    """``max(a, b)`` with Python's NaN semantics (``b`` replaces ``a`` only if ``b > a``)."""
-    return np.where(b > a, b, a)
-
-
-def _pymin(a: Any, b: Any) -> Any:
-    """``min(a, b)`` with Python's NaN semantics."""
-    return np.where(b < a, b, a)
-
-
-def linear_reach_array(
-    y0: Any, v0: Any, acc: Any, w2: Any, level: Any
-) -> tuple[np.ndarray, np.ndarray]:
-    r""":func:`linear_reach` on arrays.
-
-    Parameters
-    ----------
-    y0, v0, acc, w2, level : float or array
-        As :func:`linear_reach`, [m], [m/s], [m/s^2], [1/s^2], [m]
-
-    Notes
-    -----
-    The same operations in the same order as :func:`linear_reach`, point by
-    point (the parabolic branch where :math:`w^2 \le 0`: a spring rate so small
-    that it underflows).
-
-    >>> t, v = linear_reach_array(0.0, 0.0, 293.101, np.array([120000.0, 1.2e5]), 0.004)
-    >>> [round(float(u), 7) for u in t]
-    [0.0065306, 0.0065306]
-    """
-    with np.errstate(all="ignore"):
-        return _linear_reach_array(y0, v0, acc, w2, level)
-
-
-def _linear_reach_array(
-    y0: Any, v0: Any, acc: Any, w2: Any, level: Any
-) -> tuple[np.ndarray, np.ndarray]:
-    w2 = np.asarray(w2, dtype=float)
-    d = np.asarray(level - y0, dtype=float)
-    up = d > 0.0
-    # the direction: one sign for all points where it is (the common case), else per point
-    forward = bool(up.all())
-    s: Any = 1.0 if forward else (-1.0 if not up.any() else np.where(up, 1.0, -1.0))
-    if forward:
-        v, a = v0, acc
-    else:
-        d, v, a = d * s, v0 * s, acc * s
-    par = w2 <= 0.0
-    any_par = bool(np.any(par))
-    if any_par:  # no stiffness (a vanishing spring rate): the parabolic branch
-        t_par, v_par = _parabolic_reach(d, v, a, s)
-    k = np.sqrt(w2)
-    c = a / w2
-    vk = v / k
-    amp = np.hypot(c, vk)
-    never = d > c + amp * (1.0 + 1e-13)
-    delta = np.arctan2(vk, c)
-    q = c - d
-    aq = amp + q
-    # where amp - q cancels (c > 0, q > 0): amp - c + d with amp - c = vk²/(amp + c)
-    exact = (c > 0.0) & (q > 0.0)
-    sin_part = np.sqrt(np.maximum(np.where(exact, (vk * vk / (amp + c) + d), amp - q) * aq, 0.0))
-    theta = np.arctan2(sin_part, q) - delta
-    theta = np.where(theta < 0.0, theta + 2.0 * math.pi, theta)
-    t = theta / k
-    vel = s * k * sin_part
-    if never.any():
-        t, vel = np.where(never, math.inf, t), np.where(never, math.nan, vel)
-    if any_par:
-        t, vel = np.where(par, t_par, t), np.where(par, v_par, vel)
-    zero = d == 0.0
-    if zero.any():
-        t, vel = np.where(zero, 0.0, t), np.where(zero, v0, vel)
-    return t, vel
-
-
-def _parabolic_reach(d: Any, v: Any, a: Any, s: Any) -> tuple[np.ndarray, np.ndarray]:
-    r""":func:`linear_reach`'s branch for :math:`w^2 \le 0`, travel ``d`` > 0 from 0 with v, a."""
-    t_lin = np.where(v > 0.0, d / v, math.inf)
-    v_lin = np.where(v > 0.0, v * s, math.nan)
-    disc = v * v + 2.0 * a * d
-    root = np.sqrt(disc)
-    den = v + root
-    t_q = np.where(den > 0.0, 2.0 * d / np.where(den > 0.0, den, 1.0), math.inf)
-    ok = (disc >= 0.0) & (t_q >= 0.0) & np.isfinite(t_q)
-    t_q, v_q = np.where(ok, t_q, math.inf), np.where(ok, root * s, math.nan)
-    zero_a = a == 0.0
-    return np.where(zero_a, t_lin, t_q), np.where(zero_a, v_lin, v_q)
-
-
-def _time_to_speed_array(x: Mapping[str, Any], inertia: Any, w: Any) -> Any:
-    torque, w_nl = x["motor_torque"], x.get("motor_no_load_speed")
-    if w_nl is None:
-        return inertia * w / torque
-    ratio = np.minimum(w / w_nl, 0.5)  # any value below 1: where w >= w_nl the answer is inf
-    t = -(inertia * w_nl / torque) * np.log1p(-np.where(w >= w_nl, ratio, w / w_nl))
-    return np.where(w >= w_nl, math.inf, t)
-
-
-def _inertia_array(x: Mapping[str, Any], g: _GeometryArray, radius: Any) -> Any:
-    if g.paper:
-        return x["flywheel_inertia"] + 0.0 * radius
-    return x["flywheel_inertia"] + x["roller_count"] * x["roller_mass"] * radius * radius
-
-
-@dataclass
-class CycleArrays:
-    """:class:`CycleOutcome` of the closed form at many points (arrays; NaN where refused).
-
-    ``refused`` marks the points where :func:`closed_form_cycle` raises
-    InfeasibleDesign (every other array is NaN there).
-    """
-
-    release_speed: np.ndarray
-    spin_up_time: np.ndarray
-    release_radius: np.ndarray
-    release_velocity: np.ndarray
-    engagement_time: np.ndarray
-    max_travel: np.ndarray
-    return_time: np.ndarray
-    home_time: np.ndarray
-    relock_time: np.ndarray
-    snap: np.ndarray
-    refused: np.ndarray
-
-    @property
-    def blow(self) -> np.ndarray:
-        return np.isfinite(self.engagement_time)
-
-    @property
-    def returns(self) -> np.ndarray:
-        return self.blow & np.isfinite(self.return_time)
-
-    @property
-    def relocks(self) -> np.ndarray:
-        return self.returns & np.isfinite(self.home_time) & np.isfinite(self.relock_time)
-
-
-class _Stage1:
-    """The stage-1 quantities on arrays that both the cycle and its error estimate use."""
-
-    def __init__(self, x: Mapping[str, Any]) -> None:
-        g = self.g = _geo_array(x)
-        nm = self.nm = x["roller_count"] * x["roller_mass"]
-        m12 = x["half_coupling_mass"] + x["stepped_shaft_mass"]
-        c1, c2 = x["power_spring_rate"], x["auxiliary_spring_rate"]
-        lam1, lam2 = x["power_spring_preload"], x["auxiliary_spring_preload"]
-        h1, x0 = x["release_travel"], x["roller_radius"]
-        if g.paper:
-            self.weight: Any = 0.0
-            self.push = nm / (2.0 * g.tan_a)
-            self.m_e = m12 + nm / (2.0 * g.tan_a * g.tan_a)
-        else:
-            self.weight = (m12 + nm * g.a_h) * x["gravity"]
-            self.push = nm * g.kappa
-            self.m_e = m12 + nm * (g.kappa**2 + g.a_h**2)
-        self.f0 = c1 * lam1 + c2 * lam2 + self.weight
-        self.refused = self.f0 <= 0.0
-        fm = c1 * (lam1 + h1) + c2 * (lam2 + h1) + self.weight
-        self.r = x0 + g.kappa * h1
-        w_quasi = np.sqrt(fm / (self.push * self.r))
-        self.w_0 = np.sqrt(np.maximum(self.f0, 0.0) / (self.push * x0))
-        snapped = self.w_0 * _inertia_array(x, g, x0) / _inertia_array(x, g, self.r)
-        self.w_m = np.where(self.w_0 <= w_quasi, w_quasi, snapped)
-        self.stiff = c1 + c2
-
-    def stiffness(self, w: Any) -> Any:
-        return self.stiff - self.push * self.g.kappa * w * w
-
-
-def _stage2_array(
-    x: Mapping[str, Any], v_release: Any, g: _GeometryArray
-) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`_stage2_closed` on arrays: (release -> blow time, reach)."""
-    c1, c2, c3 = x["power_spring_rate"], x["auxiliary_spring_rate"], x["return_spring_rate"]
-    lam1, lam2, lam3 = (
-        x["power_spring_preload"],
-        x["auxiliary_spring_preload"],
-        x["return_spring_preload"],
-    )
-    h1, h2, grav = x["release_travel"], x["engagement_height"], x["gravity"]
-    m1, m2, m3 = x["half_coupling_mass"], x["stepped_shaft_mass"], x["striker_mass"]
-    nm = x["roller_count"] * x["roller_mass"]
-    big = m1 + nm + m3
-    v0 = -(m1 + m2 + nm * g.a_h) * v_release / (big + m2)
-    back = v0 < 0.0
-    mass = big + m2
-    f_at0 = mass * grav + c1 * (lam1 + h1) + c2 * (lam2 + h1) - c3 * lam3
-    k_a = np.sqrt((c1 + c2 + c3) / mass)
-    t_back = np.where(back, 2.0 * np.arctan2(-v0 / k_a, f_at0 / mass / k_a**2) / k_a, 0.0)
-    v_start = np.where(back, -v0, 0.0)
-    acc0 = grav + (c1 * (lam1 + h1) - c3 * lam3) / big
-    w2 = (c1 + c3) / big
-    z_off = lam1 + h1
-    k = np.sqrt(w2)
-    c = acc0 / w2
-    reach = c + np.hypot(c, v_start / k)
-    one_piece = (h2 <= z_off) | (reach <= z_off)
-    every = bool(np.all(one_piece))
-    if every:  # the common case: the power spring stays in contact up to h2 everywhere
-        t2, _ = linear_reach_array(0.0, v_start, acc0, w2, h2)
-        return t_back + t2, reach
-    t_a, v_a = linear_reach_array(0.0, v_start, acc0, w2, z_off)
-    acc_b = grav - c3 * (lam3 + z_off) / big
-    w2_b = c3 / big
-    t_b, _ = linear_reach_array(z_off, v_a, acc_b, w2_b, h2)
-    c_b = acc_b / w2_b
-    reach_b = z_off + c_b + np.hypot(c_b, v_a / np.sqrt(w2_b))
-    if not np.any(one_piece):
-        return t_back + t_a + t_b, reach_b
-    t2, _ = linear_reach_array(0.0, v_start, acc0, w2, h2)
-    t = np.where(one_piece, t_back + t2, t_back + t_a + t_b)
-    return t, np.where(one_piece, reach, reach_b)
-
-
-def closed_form_cycle_array(x: Mapping[str, Any]) -> CycleArrays:
-    """:func:`closed_form_cycle` at many points: numeric inputs may be equal-length arrays.
-
-    Parameters
-    ----------
-    x : Mapping
-        The model's inputs in SI (names as in ``impact.rare``); numeric ones scalars or
-        equal-length arrays, ``roller_geometry`` one choice for all points
-
-    Notes
-    -----
-    The same equations as the scalar closed form, evaluated with numpy in the
-    same order, point by point (the tests hold the two to 1e-9). Where the
-    scalar form raises InfeasibleDesign (preloads that do not hold the
-    half-coupling, a motor that never reaches the release speed) the point is
-    ``refused`` and NaN.
-
-    >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
-    >>> o = closed_form_cycle_array({**R, "power_spring_rate": np.array([5e4, 6e4])})
-    >>> o1 = closed_form_cycle({**R, "power_spring_rate": 6e4})
-    >>> bool(abs(o.engagement_time[1] / o1.engagement_time - 1.0) < 1e-12)
-    True
-    """
-    with np.errstate(all="ignore"):
-        return _closed_form_cycle_array(x)
-
-
-def _closed_form_cycle_array(x: Mapping[str, Any]) -> CycleArrays:
-    s1 = _Stage1(x)
-    g = s1.g
-    x0, h1 = x["roller_radius"], x["release_travel"]
-    t_spin = _time_to_speed_array(x, _inertia_array(x, g, s1.r), s1.w_m)
-    t_lift = _time_to_speed_array(x, _inertia_array(x, g, x0), s1.w_0)
-    refused = s1.refused | ~(np.isfinite(t_spin) & np.isfinite(t_lift))
-    # quasi_static_release_velocity
-    k_m = s1.stiffness(s1.w_m)
-    torque = x["motor_torque"]
-    w_nl = x.get("motor_no_load_speed")
-    if w_nl is not None:
-        torque = torque * np.maximum(1.0 - s1.w_m / w_nl, 0.0)
-    wd = torque / _inertia_array(x, g, s1.r)
-    v_rel = np.where(
-        k_m <= 0.0,
-        h1 * np.sqrt(-k_m / s1.m_e),
-        2.0 * s1.push * s1.w_m * s1.r / k_m * wd,
-    )
-    t_eng, reach = _stage2_array(x, v_rel, g)
-    h2, h3 = x["engagement_height"], x["jaw_height"]
-    c3, lam3, grav = x["return_spring_rate"], x["return_spring_preload"], x["gravity"]
-    nm = s1.nm
-    m22 = x["striker_mass"] + nm * (g.kappa * g.kappa + g.a_s * g.a_s)
-    q_s0 = -c3 * (lam3 + h2) + (x["striker_mass"] + nm * g.a_s) * grav
-    clear = h2 - np.minimum(h3, h2)
-    blow = np.isfinite(t_eng)
-    t_ret, _ = linear_reach_array(h2, 0.0, q_s0 / m22, c3 / m22, clear)
-    t_home, _ = linear_reach_array(h2, 0.0, q_s0 / m22, c3 / m22, 0.0)
-    t_ret = np.where(blow, t_ret, math.inf)
-    t_home = np.where(blow, t_home, math.inf)
-    # stage 4
-    m2, c2 = x["stepped_shaft_mass"], x["auxiliary_spring_rate"]
-    drive = c2 * (x["auxiliary_spring_preload"] + h1) + m2 * grav
-    ff = x["roller_friction"] * c3 * lam3
-    t4, _ = linear_reach_array(0.0, 0.0, (drive - ff) / m2, c2 / m2, h1)
-    t_lock = np.where(np.isfinite(t_home) & (drive > ff), t4, math.inf)
-    snap = s1.stiffness(s1.w_0) < 0.0
-    n = np.broadcast_shapes(*(np.shape(v) for v in x.values() if isinstance(v, np.ndarray)))
-
-    any_refused = bool(np.any(refused))
-
-    def out(v: Any) -> np.ndarray:
-        v = np.asarray(v, dtype=float)
-        if v.shape != n:
-            v = np.broadcast_to(v, n)
-        return np.where(refused, math.nan, v) if any_refused else v
-
-    return CycleArrays(
-        release_speed=out(s1.w_m),
-        spin_up_time=out(t_spin),
-        release_radius=out(s1.r),
-        release_velocity=out(v_rel),
-        engagement_time=out(t_eng),
-        max_travel=out(reach),
-        return_time=out(t_ret),
-        home_time=out(t_home),
-        relock_time=out(t_lock),
-        snap=np.broadcast_to(snap, n) & ~refused,
-        refused=np.broadcast_to(refused, n),
-    )
-
-
-def closed_form_errors_array(x: Mapping[str, Any], o: CycleArrays) -> dict[str, np.ndarray]:
-    """:func:`closed_form_errors` at many points; NaN where the scalar form gives no estimate.
-
-    Parameters
-    ----------
-    x : Mapping
-        The model's inputs in SI, numeric ones scalars or equal-length arrays
-    o : CycleArrays
-        :func:`closed_form_cycle_array` of ``x``
-
-    Notes
-    -----
-    NaN where :func:`closed_form_errors` raises (a stage-1 stiffness of zero
-    or below at release, arithmetic that overflows) or the cycle is refused;
-    maxima follow Python's ``max`` (a NaN first argument stays NaN), as the
-    scalar code does.
-
-    >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
-    >>> x = {**R, "flywheel_inertia": np.array([0.02, 0.01])}
-    >>> e = closed_form_errors_array(x, closed_form_cycle_array(x))
-    >>> one = closed_form_errors({**R, "flywheel_inertia": 0.01},
-    ...                          closed_form_cycle({**R, "flywheel_inertia": 0.01}))
-    >>> bool(abs(e["stage1"][1] / one["stage1"] - 1.0) < 1e-12)
-    True
-    """
-    with np.errstate(all="ignore"):
-        return _closed_form_errors_array(x, o)
-
-
-def _closed_form_errors_array(x: Mapping[str, Any], o: CycleArrays) -> dict[str, np.ndarray]:
-    s1 = _Stage1(x)
-    g = s1.g
-    h1, x0 = x["release_travel"], x["roller_radius"]
-    fm = s1.f0 + s1.stiff * h1
-    a_push, kap, m_e = s1.push, g.kappa, s1.m_e
-    inertia = _inertia_array(x, g, s1.r)
-    inertia_0 = _inertia_array(x, g, x0)
-    torque, w_nl = x["motor_torque"], x.get("motor_no_load_speed")
-    w_0, w_m = s1.w_0, s1.w_m
-    inertia_share: Any = 0.0
-    if w_nl is not None and not g.paper:
-        u = w_m / w_nl
-        below = w_m < w_nl
-        uu = np.where(below, u, 0.5)
-        amplify = _pymax(uu / ((1.0 - uu) * -np.log1p(-uu)), 1.0)
-        inertia_share = np.where(below, SAFETY * amplify * (inertia - inertia_0) / inertia, 0.0)
-
-    def accel(w: Any) -> Any:
-        return torque / inertia if w_nl is None else torque / inertia * (1.0 - w / w_nl)
-
-    k_lift = s1.stiffness(w_0)
-    snap = k_lift < 0.0
-    any_snap, all_snap = bool(np.any(snap)), bool(np.all(snap))
-    if any_snap:  # snap-through at lift-off
-        wd_0 = accel(w_0)
-        t_s = (6.0 * h1 * m_e / (2.0 * a_push * x0 * w_0 * wd_0)) ** (1.0 / 3.0)
-        share = 0.0 if g.paper else (inertia - inertia_0) / inertia
-        dw_s = SAFETY * (wd_0 * t_s / w_0 + share)
-        t_0 = _time_to_speed_array(x, inertia, w_0)
-        v_snap = h1 * np.sqrt(-k_lift / m_e)
-        dt_s = _pymax(SAFETY * t_s / t_0 + inertia_share, dw_s)
-        dv_s = SAFETY * v_snap
-        stalled = wd_0 <= 0.0
-        dw_s, dt_s, dv_s = (np.where(stalled, math.inf, v) for v in (dw_s, dt_s, dv_s))
-
-    def rates(w: Any, rr: Any) -> tuple[Any, Any, Any]:
-        k = s1.stiff - a_push * kap * w * w
-        dz_du = a_push * rr / k
-        d2z_du2 = 2.0 * a_push * kap / k * dz_du
-        wd = accel(w)
-        wdd = 0.0 if w_nl is None else -torque / inertia / w_nl * wd
-        dz_dw = 2.0 * w * dz_du
-        d2z_dw2 = 2.0 * dz_du + 4.0 * w * w * d2z_du2
-        return k, dz_dw * wd, d2z_dw2 * wd * wd + dz_dw * wdd
-
-    fails: Any = False
-    if not all_snap:
-        k_0, zd_0, zdd_0 = rates(w_0, x0)
-        k_m, _, zdd_m = rates(w_m, s1.r)
-        om_0, om_m = np.sqrt(k_0 / m_e), np.sqrt(k_m / m_e)
-        # where the scalar code divides by zero, takes the root of a negative or overflows
-        fails = (k_0 == 0.0) | ~(k_m > 0.0) | (om_0 > 1e154) | (om_m > 1e154)
-        amp = (np.abs(zd_0) / om_0 + np.abs(zdd_0) / om_0**2) * np.sqrt(om_0 / om_m)
-        err = amp + np.abs(zdd_m) / om_m**2
-        dw_n = SAFETY * err * k_m / (2.0 * fm)
-        wd_m = accel(w_m)
-        t_m = _time_to_speed_array(x, inertia, w_m)
-        dt_n = np.where(wd_m > 0, dw_n * w_m / (wd_m * t_m), math.inf) + inertia_share
-        dv_n = SAFETY * (amp * om_m + np.abs(zdd_m) / om_m)
-        fails = ~snap & fails
-        if np.any(fails):
-            dw_n, dt_n, dv_n = (np.where(fails, math.nan, v) for v in (dw_n, dt_n, dv_n))
-    if all_snap:
-        dw, dt, dv = dw_s, dt_s, dv_s
-    elif any_snap:
-        dw, dt, dv = (np.where(snap, a, b) for a, b in ((dw_s, dw_n), (dt_s, dt_n), (dv_s, dv_n)))
-    else:
-        dw, dt, dv = dw_n, dt_n, dv_n
-    stage1 = _pymax(_pymax(dw, dt), EXACT_FLOOR)
-    blow = o.blow
-    base = o.engagement_time
-    worst: Any = 0.0
-    for sign in (1.0, -1.0):
-        other, _ = _stage2_array(x, _pymax(o.release_velocity + sign * dv, 0.0), g)
-        rel = np.where(np.isfinite(other), np.abs(other - base) / base, math.inf)
-        worst = _pymax(worst, rel)
-    engagement = np.where(blow, _pymax(worst + dw, EXACT_FLOOR), _pymax(dw, EXACT_FLOOR))
-    nm = s1.nm
-    k2 = kap * kap
-    m11 = x["half_coupling_mass"] + nm * (k2 + g.a_h * g.a_h)
-    m12 = nm * (-k2 + g.a_h * g.a_s)
-    m22 = x["striker_mass"] + nm * (k2 + g.a_s * g.a_s)
-    coupling = m12 * m12 / (m11 * m22)
-    ret = _pymin(_pymax(RETURN_COUPLING * coupling, EXACT_FLOOR), 1.0)
-    n = o.refused.shape
-    bad = fails | o.refused
-    if not np.any(bad):
-        return {
-            name: np.broadcast_to(np.asarray(v, dtype=float), n)
-            for name, v in (
-                ("stage1", stage1),
-                ("engagement", engagement),
-                ("return", ret),
-                ("relock", EXACT_FLOOR),
-            )
-        }
-    return {
-        name: np.where(bad, math.nan, np.broadcast_to(v, n))
-        for name, v in (
-            ("stage1", stage1),
-            ("engagement", engagement),
-            ("return", ret),
-            ("relock", EXACT_FLOOR),
-        )
-    }

@@ -241,6 +241,40 @@ class _arithmetic_refused:
             ) from None
 
 
+@dataclass(frozen=True)
+class Prepared:
+    """A request validated and its rung chosen (:func:`prepare`), ready for :func:`run`."""
+
+    values: dict[str, Any]
+    warnings: list[str]
+    tolerance: float
+    fidelity: str
+    rung: str
+    notes: tuple[str, ...]
+
+
+def prepare(
+    spec: ModelSpec,
+    inputs: Mapping[str, Any],
+    fidelity: str | None = None,
+    tolerance: float | None = None,
+) -> Prepared:
+    """Validate ``inputs`` and choose the rung, once: :func:`run` takes the result.
+
+    Raises InputOutOfRange for an invalid input or tolerance, as :func:`run` does.
+    """
+    values, warnings = spec.validate(inputs)
+    tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
+    if not (math.isfinite(tol) and 0.0 < tol < 1.0):
+        raise InputOutOfRange(
+            f"tolerance = {tol:g} is not allowed: must be > 0 and < 1", field="tolerance"
+        )
+    asked = _fidelity(spec, fidelity, tolerance)
+    with _arithmetic_refused(spec):
+        rung, notes = choose_rung(spec, values, asked, tol)
+    return Prepared(values, warnings, tol, asked, rung, tuple(notes))
+
+
 def run(
     spec: ModelSpec,
     inputs: Mapping[str, Any],
@@ -252,6 +286,7 @@ def run(
     max_steps: int = DEFAULT_MAX_STEPS,
     series: bool = False,
     cancel: threading.Event | None = None,
+    prepared: Prepared | None = None,
 ) -> RunResult:
     """Evaluate ``spec`` on SI ``inputs``.
 
@@ -262,14 +297,19 @@ def run(
     ``budget_s`` and ``max_steps`` reach the model as ``ctx.deadline`` and
     ``ctx.max_steps``; a model past either raises BudgetExceeded. ``cancel``
     reaches it as ``ctx.cancel``: once set, the model stops at its next budget
-    check with :class:`Cancelled`.
+    check with :class:`Cancelled`. ``prepared`` is what :func:`prepare` made of the same
+    ``inputs``, ``fidelity`` and ``tolerance`` (a caller that chose its lane by the rung
+    does not validate and choose again).
     """
-    values, warnings = spec.validate(inputs)
-    tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
-    if not (math.isfinite(tol) and 0.0 < tol < 1.0):
-        raise InputOutOfRange(
-            f"tolerance = {tol:g} is not allowed: must be > 0 and < 1", field="tolerance"
-        )
+    if prepared is None:
+        prepared = prepare(spec, inputs, fidelity, tolerance)
+    values, warnings, tol, rung = (
+        prepared.values,
+        prepared.warnings,
+        prepared.tolerance,
+        prepared.rung,
+    )
+    notes = list(prepared.notes)
     units = spec.units
     if outputs is None:
         wanted = spec.scalar_outputs | spec.series_outputs if series else spec.scalar_outputs
@@ -283,8 +323,7 @@ def run(
                 field="outputs",
             )
         wanted = frozenset(_wanted(spec, asked_for, named=True, series=series))
-    with _arithmetic_refused(spec):  # one numpy error state for the rung choice and the model
-        rung, notes = choose_rung(spec, values, _fidelity(spec, fidelity, tolerance), tol)
+    with _arithmetic_refused(spec):  # one numpy error state for the model
         start = time.perf_counter()
         ctx = RunContext(
             rung=rung,
@@ -297,7 +336,7 @@ def run(
         try:
             result = spec.compute(values, ctx)
         except BudgetExceeded as exc:
-            auto = _fidelity(spec, fidelity, tolerance) == "auto"
+            auto = prepared.fidelity == "auto"
             found = _fallback(spec, rung, values, exc, auto=auto)
             if found is None:
                 raise

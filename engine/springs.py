@@ -67,7 +67,6 @@ __all__ = [
     "stack_force",
     "stress_correction_factor",
     "tensile_strength",
-    "tensile_strength_array",
     "wahl_factor",
 ]
 
@@ -486,6 +485,13 @@ class SpringMaterial:
         self.density = density
         #: (largest wire diameter of the row [mm], minimum R_m [MPa]), ascending.
         self.strength = strength
+        # the table as :func:`tensile_strength` reads it: each row's top diameter with
+        # a 1e-9 tolerance [mm] (the last row open-ended: beyond it is refused by the
+        # range), its R_m [Pa], and the diameters it covers [mm]
+        self.row_tops = np.array([upper * (1 + 1e-9) for upper, _ in strength[:-1]] + [np.inf])
+        self.row_strengths = np.array([rm * 1e6 for _, rm in strength])
+        lo, hi = self.diameter_range
+        self.covered_mm = (lo * 1e3 * (1 - 1e-9) - 1.0, hi * 1e3 * (1 + 1e-9))
 
     @property
     def diameter_range(self) -> tuple[float, float]:
@@ -584,7 +590,7 @@ def _material(name: str) -> SpringMaterial:
         ) from None
 
 
-def tensile_strength(material: str, wire_diameter: float) -> float:
+def tensile_strength(material: str, wire_diameter: Any) -> Any:
     r"""Minimum tensile strength R_m of a spring wire of diameter d.
 
     .. math::
@@ -594,19 +600,22 @@ def tensile_strength(material: str, wire_diameter: float) -> float:
     ----------
     material : str
         ``"EN10270-1-SH"``, ``"EN10270-1-DH"`` or ``"1.4310"``, [-]
-    wire_diameter : float
+    wire_diameter : float or array
         Wire diameter d, [m]
 
     Returns
     -------
-    strength : float
+    strength : float or array
         Minimum R_m of the row covering d: the next tabulated diameter at or
         above d, the lower (safe) side of the steps, [Pa]
 
     Notes
     -----
     EN 10270-1 (SH, DH) and EN 10270-3 (1.4310) tables, as transcribed in
-    this module. A diameter outside the table raises InputOutOfRange.
+    this module; the row is the first whose upper diameter times 1 + 1e-9 is
+    at or above d in mm (a binary search, so a design study looks a whole
+    column up at once). A diameter outside the table is refused: a float
+    raises InputOutOfRange naming it, an array is NaN there.
 
     Examples
     --------
@@ -614,63 +623,26 @@ def tensile_strength(material: str, wire_diameter: float) -> float:
     1740.0
     >>> tensile_strength("EN10270-1-SH", 0.0042) / 1e6
     1690.0
-    """
-    m = _material(material)
-    lo, hi = m.diameter_range
-    d_mm = wire_diameter * 1e3
-    if not lo * 1e3 * (1 - 1e-9) - 1.0 <= d_mm <= hi * 1e3 * (1 + 1e-9):
-        raise InputOutOfRange(
-            f"wire diameter {d_mm:.4g} mm is outside the {m.standard} table "
-            f"(up to {hi * 1e3:g} mm)",
-            field="spring_wire_diameter",
-        )
-    for upper, rm in m.strength:
-        if d_mm <= upper * (1 + 1e-9):
-            return rm * 1e6
-    return m.strength[-1][1] * 1e6  # pragma: no cover - guarded above
-
-
-def tensile_strength_array(material: str, wire_diameter: FloatArray) -> FloatArray:
-    r"""Minimum tensile strength R_m(d) on arrays: NaN where d is outside the table.
-
-    .. math::
-        R_m = R_{m,min}(d_j), \quad d_j = \min\{d_k \ge d\}
-
-    Parameters
-    ----------
-    material : str
-        Material name, as in :func:`tensile_strength`, [-]
-    wire_diameter : float or array
-        Wire diameter d, [m]
-
-    Returns
-    -------
-    strength : float or array
-        Minimum R_m of the row covering each d, NaN where :func:`tensile_strength`
-        refuses d (outside the table), [Pa]
-
-    Notes
-    -----
-    The same rows and the same comparisons as :func:`tensile_strength` (the row
-    is the first whose upper diameter times 1 + 1e-9 is at or above d in mm), by
-    a binary search, so a design study looks a whole column up at once.
-
-    Examples
-    --------
-    >>> tensile_strength_array("EN10270-1-DH", np.array([0.004, 0.0042, 0.03])) / 1e6
+    >>> tensile_strength("EN10270-1-DH", np.array([0.004, 0.0042, 0.03])) / 1e6
     array([1740., 1690.,   nan])
     """
     m = _material(material)
-    lo, hi = m.diameter_range
-    d_mm = np.asarray(wire_diameter, dtype=float) * 1e3
-    uppers = np.array([upper * (1 + 1e-9) for upper, _ in m.strength])
-    strengths = np.array([rm * 1e6 for _, rm in m.strength])
-    row = np.minimum(np.searchsorted(uppers, d_mm, side="left"), len(uppers) - 1)
-    inside = (lo * 1e3 * (1 - 1e-9) - 1.0 <= d_mm) & (d_mm <= hi * 1e3 * (1 + 1e-9))
-    return _out(np.where(inside, strengths[row], np.nan))
+    lo, hi = m.covered_mm
+    d_mm = np.multiply(wire_diameter, 1e3)
+    row = np.searchsorted(m.row_tops, d_mm, side="left")
+    inside = (lo <= d_mm) & (d_mm <= hi)
+    if np.ndim(d_mm) == 0:
+        if not inside:
+            raise InputOutOfRange(
+                f"wire diameter {float(d_mm):.4g} mm is outside the {m.standard} table "
+                f"(up to {m.strength[-1][0]:g} mm)",
+                field="spring_wire_diameter",
+            )
+        return float(m.row_strengths[row])
+    return _out(np.where(inside, m.row_strengths[row], np.nan))
 
 
-def permissible_shear_stress(material: str, wire_diameter: float) -> float:
+def permissible_shear_stress(material: str, wire_diameter: Any) -> Any:
     r"""Permissible static shear stress of a cold-coiled spring (EN 13906-1).
 
     .. math::
@@ -1002,9 +974,7 @@ def disc_stresses(
     }
 
 
-def disc_falling_region(
-    thickness: float, cone_height: float, k4: float = 1.0
-) -> tuple[float, float] | None:
+def disc_falling_region(thickness: Any, cone_height: Any, k4: Any = 1.0) -> tuple[Any, Any]:
     r"""Deflections between which a disc spring's force falls (negative rate).
 
     .. math::
@@ -1021,9 +991,10 @@ def disc_falling_region(
 
     Returns
     -------
-    region : tuple of float or None
-        (s at the force maximum, s at the force minimum); None where
-        h0/t ≤ √2/K4 and the force rises everywhere, [m]
+    region : tuple of float or array
+        (s at the force maximum, s at the force minimum), [m]; NaN where
+        h0/t ≤ √2/K4 and the force rises everywhere. All arguments may be
+        floats or numpy arrays.
 
     Notes
     -----
@@ -1037,15 +1008,13 @@ def disc_falling_region(
     >>> lo, hi = disc_falling_region(0.001, 0.002)
     >>> round(lo * 1e3, 4), round(hi * 1e3, 4)
     (1.1835, 2.8165)
-    >>> disc_falling_region(0.002, 0.002) is None
-    True
+    >>> disc_falling_region(0.002, 0.002)
+    (nan, nan)
     """
-    a = cone_height / thickness
+    a = np.asarray(cone_height, dtype=float) / thickness
     disc = 3.0 * a * a - 6.0 / (k4 * k4)
-    if disc <= 0.0:
-        return None
-    half = math.sqrt(disc) / 3.0
-    return (a - half) * thickness, (a + half) * thickness
+    half = np.sqrt(np.where(disc > 0.0, disc, np.nan)) / 3.0
+    return _out((a - half) * thickness), _out((a + half) * thickness)
 
 
 def stack_force(

@@ -169,10 +169,16 @@ def run_study(
     cancel: threading.Event | None = None,
     budget_s: float | None = None,
     chunk_budget_s: float | None = 60.0,
+    planned: Plan | None = None,
 ) -> StudyRun:
-    """Plan, evaluate and summarise ``study``; raise Cancelled or BudgetExceeded when stopped."""
+    """Plan, evaluate and summarise ``study``; raise Cancelled or BudgetExceeded when stopped.
+
+    ``planned`` is :func:`engine.study.plan` of the same study, where the caller has
+    already drawn its points (the service does, to refuse a bad study at once): they are
+    not drawn again.
+    """
     start = time.perf_counter()
-    p = plan(spec, study)
+    p = plan(spec, study) if planned is None else planned
     cancel = cancel or threading.Event()
     slices = chunks(p.n_points, chunk_size(spec, study))
     base = {k: v for k, v in study.base.items() if v is not None}

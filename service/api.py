@@ -284,43 +284,49 @@ def _fidelity_of(spec: ModelSpec, body: Any) -> str:
     return "auto" if body.tolerance is not None else spec.default_fidelity
 
 
-def _rung_for(spec: ModelSpec, body: Any, inputs: dict[str, Any]) -> str | None:
-    """The rung this request will run (None if the inputs are refused: that is quick)."""
-    fidelity = _fidelity_of(spec, body)
-    if fidelity != "auto":
-        return fidelity
+def _prepared(spec: ModelSpec, body: Any, inputs: dict[str, Any]) -> engine.runner.Prepared | None:
+    """The request validated and its rung chosen, once (None if refused: that is quick).
+
+    A single evaluation hands it to :func:`engine.run`, which then neither validates nor
+    chooses again.
+    """
     try:
-        values, _ = spec.validate(inputs)
-        tol = engine.runner.DEFAULT_TOLERANCE if body.tolerance is None else body.tolerance
-        return engine.runner.choose_rung(spec, values, "auto", tol)[0]
+        return engine.runner.prepare(spec, inputs, body.fidelity, body.tolerance)
     except Exception:
         return None
 
 
 def _route(
     spec: ModelSpec, body: Any, inputs: dict[str, Any], pool: EnginePool, sweep: bool
-) -> tuple[Lane, str | None]:
-    """The lane, and for a single evaluation that may run inline, the rung it will run.
+) -> tuple[Lane, str | None, engine.runner.Prepared | None]:
+    """The lane; for a single evaluation that may run inline, the rung it will run; and
+    the request as :func:`_prepared` made it, where the rung had to be chosen to route it.
 
     The rung is None where inline is out: a heavy rung, a rung with a fallback,
     a sweep, inputs the rung choice refused. Without heavy rungs the fidelity
     asked for names the rung ("auto" then picks among cheap ones only).
     """
     heavy = {r.name for r in spec.rungs if r.heavy}
+    prepared = None
     if not heavy and not sweep:
         rung: str | None = _fidelity_of(spec, body)
     else:
-        rung = _rung_for(spec, body, inputs)
+        fidelity = _fidelity_of(spec, body)
+        if fidelity != "auto" and sweep:
+            rung = fidelity
+        else:
+            prepared = _prepared(spec, body, inputs)
+            rung = None if prepared is None else prepared.rung
         if rung in heavy:
-            return pool.heavy, None
+            return pool.heavy, None, prepared
         if sweep:
             if spec.vectorized is None or rung not in spec.vector_rungs:
-                return pool.heavy, None
-            return pool.quick, None
+                return pool.heavy, None, None
+            return pool.quick, None, None
     fallback = {r.name for r in spec.rungs if r.fallback is not None}
     if rung is None or rung in fallback or (rung == "auto" and fallback):
-        return pool.quick, None
-    return pool.quick, rung
+        return pool.quick, None, prepared
+    return pool.quick, rung, prepared
 
 
 async def _in_lane(request: Request, lane: Lane, fn: Any, budget_s: float, what: str) -> Any:
@@ -364,6 +370,8 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
         body = plain(data) or schemas.body_of(_model(data, request_model))
         inputs = body.inputs
 
+        lane, rung, prepared = _route(spec, body, inputs, lim.pool, sweep=False)
+
         def work(budget_s: float, cancel: threading.Event) -> bytes:
             result = engine.run(
                 spec,
@@ -375,10 +383,10 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
                 max_steps=lim.max_steps,
                 series=body.series,
                 cancel=cancel,
+                prepared=prepared,
             )
             return encode(_response(result, lim.max_series_points))
 
-        lane, rung = _route(spec, body, inputs, lim.pool, sweep=False)
         if rung is None:
             answer = await _in_lane(request, lane, work, lim.budget_s, spec.name)
         else:
@@ -416,7 +424,7 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
             return _sweep_answer(result, spec.param(result.vary).unit)
 
         point = {**base, body.vary: values[0]}
-        lane, _ = _route(spec, body, point, lim.pool, sweep=True)
+        lane, _, _ = _route(spec, body, point, lim.pool, sweep=True)
         return await _in_lane(request, lane, work, lim.budget_s, f"{spec.name} sweep")
 
     # What OpenAPI publishes: the typed signatures (request and response models). What

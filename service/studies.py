@@ -40,7 +40,7 @@ from pydantic import BaseModel, ConfigDict, Field
 
 import engine
 from engine import ModelSpec
-from engine.study import DISTRIBUTIONS, METHODS, Study, Variable, plan, points_table
+from engine.study import DISTRIBUTIONS, METHODS, Plan, Study, Variable, plan, points_table
 from engine.study_exec import Cancelled, DaskExecutor, InProcess, StudyRun, run_study
 
 from . import schemas
@@ -258,10 +258,10 @@ class Studies:
                 )
             job = Job(uuid.uuid4().hex, spec.name, client, p.n_points, keep_points)
             self.jobs[job.id] = job
-        self.threads.submit(self._work, job, spec, study)
+        self.threads.submit(self._work, job, spec, study, p)
         return job
 
-    def _work(self, job: Job, spec: ModelSpec, study: Study) -> None:
+    def _work(self, job: Job, spec: ModelSpec, study: Study, p: Plan | None = None) -> None:
         if job.cancel.is_set():  # cancelled while it waited for a thread
             job.settled = True
             return
@@ -285,6 +285,7 @@ class Studies:
                 progress=progress,
                 cancel=job.cancel,
                 budget_s=self.settings.budget_s,
+                planned=p,
             )
             result.summary = _json_clean(result.summary)
             job.run, job.state = result, "done"

@@ -20,13 +20,17 @@ from typing import Any
 import numpy as np
 from scipy.optimize import brentq
 
+from .. import points
 from .. import springs as sp
 from ..clutch import (
     RECOMMENDED_SERVICE_FACTOR,
     SELF_LOCKING_MARGIN,
-    combined_push_factor,
     friction_sensitivity,
+    lift_points,
     residual_torque,
+    rim_rise,
+    torque_against_lift,
+    torque_sharing,
 )
 from ..clutch import acceleration_torque as cl_acceleration_torque
 from ..clutch import rated_torque as cl_rated_torque
@@ -400,11 +404,24 @@ class Spring:
         if self.kind == "disc":
             return x["disc_yield_strength"]
         if self.material is not None:
-            wire = x["spring_wire_diameter"]
-            if np.ndim(wire) > 0:  # a varied wire: NaN outside the table (refused there)
-                return 0.5 * np.asarray(sp.tensile_strength_array(self.material.name, wire))
-            return sp.permissible_shear_stress(self.material.name, wire)
+            # a varied wire: NaN outside the table (refused there); one wire: refused
+            return sp.permissible_shear_stress(self.material.name, x["spring_wire_diameter"])
         return x["allowable_shear_stress"]
+
+
+def refused(x: Mapping[str, Any]) -> dict[str, Any]:
+    """Where the spring's numbers are refused, by the field named: True there (floats or
+    arrays). A missing input is refused by :func:`require_spring` alone (it is the same
+    at every point of a study)."""
+    if x["spring_type"] == "disc":
+        if x["disc_inner_diameter"] is None or x["disc_outer_diameter"] is None:
+            return {}
+        # a ring that narrow is not a disc spring (Almen–László loses all precision)
+        return {"disc_inner_diameter": x["disc_inner_diameter"] * 1.05 >= x["disc_outer_diameter"]}
+    wire = x["spring_wire_diameter"]
+    if wire is None or x["spring_material"] == "custom" or np.ndim(wire) == 0:
+        return {}  # one wire: tensile_strength refuses it with the table's range
+    return {"spring_wire_diameter_table": np.isnan(sp.tensile_strength(x["spring_material"], wire))}
 
 
 def require_spring(x: Mapping[str, Any], *, wire_needed: bool) -> None:
@@ -417,7 +434,7 @@ def require_spring(x: Mapping[str, Any], *, wire_needed: bool) -> None:
             raise InputOutOfRange(
                 "spring_type = disc needs disc_cone_height", field="disc_cone_height"
             )
-        if x["disc_inner_diameter"] * 1.05 >= x["disc_outer_diameter"]:
+        if refused(x)["disc_inner_diameter"]:
             raise InputOutOfRange(
                 f"disc_inner_diameter = {x['disc_inner_diameter'] * 1e3:g} mm is not below "
                 f"disc_outer_diameter / 1.05 = {x['disc_outer_diameter'] / 1.05 * 1e3:.4g} mm: "
@@ -443,9 +460,7 @@ def require_spring(x: Mapping[str, Any], *, wire_needed: bool) -> None:
 
 
 def _sharing(x: Mapping[str, Any]) -> Any:
-    if x["spring_arrangement"] == "per_ball":
-        return np.asarray(x["load_factor"]) * np.asarray(x["ball_count"])
-    return 1.0
+    return torque_sharing(x["spring_arrangement"], x["ball_count"], x["load_factor"])
 
 
 def lift_of(x: Mapping[str, Any], deflection: Any = None) -> Any:
@@ -467,26 +482,12 @@ def characteristic(
     """
     flat_spring = spring
     preload = np.asarray(x["spring_deflection"] if deflection is None else deflection, float)
-    h, d, alpha = np.broadcast_arrays(
-        np.asarray(lift_of(x, deflection), float),
-        np.asarray(x["ball_diameter"], float),
-        np.asarray(x["groove_angle"], float),
-    )
-    h, r, a = h[..., None], d[..., None] / 2.0, alpha[..., None]
-    u = np.linspace(0.0, 1.0, POINTS)
-    v = np.linspace(0.0, 1.0, POINTS)[1:]
-    beta_rim = a + v * (math.pi / 2.0 - a)
     # A helical spring's force rises with the lift and the flank's push is constant, so
     # on the flank the torque rises to the rim: the grid's peak and maxima lie from the
     # rim on. Without the curves, only those points are evaluated (the same floats).
     first = POINTS - 1 if spring.kind == "helical" and not curves else 0
-    lift = np.concatenate(
-        [np.broadcast_to(u[first:] * h, np.broadcast_shapes(h.shape, u[first:].shape)),
-         h + r * (np.sin(beta_rim) - np.sin(a))],
-        axis=-1,
-    )  # fmt: skip
-    beta = np.concatenate(
-        [np.broadcast_to(a, np.broadcast_shapes(a.shape, u[first:].shape)), beta_rim], axis=-1
+    lift, beta = lift_points(
+        lift_of(x, deflection), x["ball_diameter"], x["groove_angle"], POINTS, first > 0
     )
     # a swept input (an array) gets a trailing axis so it broadcasts against the lift
     x = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
@@ -495,9 +496,17 @@ def characteristic(
     force = spring.force(total)
     helical = spring.kind == "helical"
     stress: Any = None if helical and not curves else spring.stress(total)
-    push = combined_push_factor(beta, x["flank_friction"], x["driving_groove_angle"])
     # x's arrays already carry the trailing (lift) axis
-    torque = np.asarray(_sharing(x)) * np.asarray(x["ball_circle_diameter"]) * force / (2.0 * push)
+    torque = np.asarray(
+        torque_against_lift(
+            force,
+            beta,
+            x["ball_circle_diameter"],
+            x["flank_friction"],
+            x["driving_groove_angle"],
+            _sharing(x),
+        )
+    )
     peak = np.argmax(torque, axis=-1)[..., None]
 
     if torque.ndim == 1:  # a single design: plain indexing, the same floats (issue 21)
@@ -567,10 +576,7 @@ def end_values(x: Mapping[str, Any], spring: Spring) -> dict[str, Any]:
     asks for none of :data:`PEAK_OUTPUTS`.
     """
     h = np.asarray(lift_of(x), float)
-    a = np.asarray(x["groove_angle"], float)
-    r = np.asarray(x["ball_diameter"], float) / 2.0
-    beta_end = a + 1.0 * (math.pi / 2.0 - a)  # the characteristic's last rim angle
-    total_lift = h + r * (np.sin(beta_end) - np.sin(a))
+    total_lift = h + rim_rise(x["ball_diameter"], x["groove_angle"])
     total = np.asarray(x["spring_deflection"], float) + total_lift
     force = spring.force(total)
     out: dict[str, Any] = {
@@ -620,11 +626,7 @@ def extra_values(
             values["natural_frequency"] = sp.helical_natural_frequency(
                 d, dm, n, spring.shear_modulus, spring.material.density
             )
-            values["tensile_strength"] = (
-                sp.tensile_strength(spring.material.name, d)
-                if np.ndim(d) == 0
-                else sp.tensile_strength_array(spring.material.name, d)
-            )
+            values["tensile_strength"] = sp.tensile_strength(spring.material.name, d)
         scalar = all(
             np.ndim(a) == 0 for a in (x["spring_free_length"], dm, values["spring_force_max"])
         )
@@ -676,11 +678,42 @@ def series(x: Mapping[str, Any], spring: Spring) -> dict[str, list[float]]:
 # --------------------------------------------------------------------------
 
 
-def checks(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[Check]:
-    """The as-built checks of one scalar run."""
+def verdicts(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> dict[str, Any]:
+    """The as-built checks' verdicts on floats or arrays: True where a check passes.
+
+    The one place they compare numbers: :func:`checks` words them for a single run,
+    the array path reports them per point.
+    """
+    out: dict[str, Any] = {"self_locking": v["self_locking_margin"] >= SELF_LOCKING_MARGIN}
+    allow = spring.permissible()
+    if allow is not None:
+        out["spring_stress_max"] = v["spring_stress_max"] <= allow
+    travel = x["spring_deflection"] + v["total_lift"]
+    if spring.kind == "disc":
+        m = x["disc_series"]
+        out["disc_not_past_flat"] = travel / m <= x["disc_cone_height"]
+        s_max = sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])[0]
+        # NaN (no force maximum) compares False: the torque never falls
+        out["falling_curve"] = x["spring_deflection"] / m + v["total_lift"] / m > s_max
+    elif x["spring_free_length"] is not None:
+        d, dm, n = x["spring_wire_diameter"], x["spring_mean_diameter"], x["spring_active_coils"]
+        need = sp.solid_length(d, n) + sp.minimum_gap_sum(d, dm, n)
+        out["solid_length"] = x["spring_free_length"] - travel >= need
+        # a spring that cannot buckle has no buckling deflection (None, or NaN on arrays)
+        s_k = v.get("buckling_deflection")
+        out["buckling"] = True if s_k is None else travel < np.where(np.isnan(s_k), np.inf, s_k)
+    if x["face_friction"] is not None:
+        out["residual_torque"] = v["residual_torque"] <= RESIDUAL_SHARE * v["peak_torque"]
+    return out
+
+
+def checks(
+    x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any], passed: Mapping[str, bool]
+) -> list[Check]:
+    """The as-built checks of one scalar run, worded on the verdicts of :func:`verdicts`."""
     out: list[Check] = []
     m = float(v["self_locking_margin"])
-    ok = m >= SELF_LOCKING_MARGIN
+    ok = passed["self_locking"]
     out.append(
         Check(
             "self_locking",
@@ -698,11 +731,10 @@ def checks(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[C
             ),
         )
     )
-    allow = spring.permissible()
-    if allow is not None:
-        allow = float(allow)
+    if "spring_stress_max" in passed:
+        allow = float(spring.permissible())
         s = float(v["spring_stress_max"])
-        ok = s <= allow
+        ok = passed["spring_stress_max"]
         what = "wire shear stress τ_k" if spring.kind == "helical" else "disc stress |σ_OM|"
         out.append(
             Check(
@@ -720,12 +752,12 @@ def checks(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[C
             )
         )
     if spring.kind == "disc":
-        out += _disc_checks(x, v)
+        out += _disc_checks(x, v, passed)
     elif x["spring_free_length"] is not None:
-        out += _helical_length_checks(x, spring, v)
+        out += _helical_length_checks(x, v, passed)
     if x["face_friction"] is not None:
         res, peak = float(v["residual_torque"]), float(v["peak_torque"])
-        ok = res <= RESIDUAL_SHARE * peak
+        ok = passed["residual_torque"]
         out.append(
             Check(
                 "residual_torque",
@@ -739,11 +771,13 @@ def checks(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[C
     return out
 
 
-def _disc_checks(x: Mapping[str, Any], v: Mapping[str, Any]) -> list[Check]:
+def _disc_checks(
+    x: Mapping[str, Any], v: Mapping[str, Any], passed: Mapping[str, bool]
+) -> list[Check]:
     t, h0, m = x["disc_thickness"], x["disc_cone_height"], x["disc_series"]
     per_disc_max = (x["spring_deflection"] + float(v["total_lift"])) / m
     out = []
-    ok = per_disc_max <= h0
+    ok = passed["disc_not_past_flat"]
     out.append(
         Check(
             "disc_not_past_flat",
@@ -758,51 +792,41 @@ def _disc_checks(x: Mapping[str, Any], v: Mapping[str, Any]) -> list[Check]:
             ),
         )
     )
-    region = sp.disc_falling_region(t, h0)
+    s_max = float(sp.disc_falling_region(t, h0)[0])
     setting = x["spring_deflection"] / m
-    if region is None:
-        out.append(
-            Check(
-                "falling_curve",
-                False,
-                f"h0/t = {h0 / t:.3g} ≤ √2: the disc force rises over the whole lift, so the "
-                "torque does not drop after breakaway; use h0/t > √2 and set the stack past "
-                "its force maximum",
-            )
+    ok = passed["falling_curve"]
+    if math.isnan(s_max):
+        detail = (
+            f"h0/t = {h0 / t:.3g} ≤ √2: the disc force rises over the whole lift, so the "
+            "torque does not drop after breakaway; use h0/t > √2 and set the stack past "
+            "its force maximum"
+        )
+    elif ok:
+        where = "at the setting" if setting >= s_max else "within the lift"
+        detail = (
+            f"the discs pass their force maximum (s = {s_max * 1e3:.4g} mm per disc) "
+            f"{where}: the torque falls from {float(v['peak_torque']):.4g} to "
+            f"{float(v['torque_at_rim']):.4g} N·m at the rim"
         )
     else:
-        s_max = region[0]
-        ok = setting + float(v["total_lift"]) / m > s_max
-        where = "at the setting" if setting >= s_max else "within the lift"
-        out.append(
-            Check(
-                "falling_curve",
-                ok,
-                (
-                    f"the discs pass their force maximum (s = {s_max * 1e3:.4g} mm per disc) "
-                    f"{where}: the torque falls from {float(v['peak_torque']):.4g} to "
-                    f"{float(v['torque_at_rim']):.4g} N·m at the rim"
-                )
-                if ok
-                else (
-                    f"the discs never reach their force maximum (s = {s_max * 1e3:.4g} mm per "
-                    f"disc; setting {setting * 1e3:.4g} mm): the torque does not fall; set the "
-                    "stack further"
-                ),
-            )
+        detail = (
+            f"the discs never reach their force maximum (s = {s_max * 1e3:.4g} mm per "
+            f"disc; setting {setting * 1e3:.4g} mm): the torque does not fall; set the "
+            "stack further"
         )
+    out.append(Check("falling_curve", ok, detail))
     return out
 
 
 def _helical_length_checks(
-    x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]
+    x: Mapping[str, Any], v: Mapping[str, Any], passed: Mapping[str, bool]
 ) -> list[Check]:
     d, dm, n = x["spring_wire_diameter"], x["spring_mean_diameter"], x["spring_active_coils"]
     l0 = x["spring_free_length"]
     travel = x["spring_deflection"] + float(v["total_lift"])
     shortest = l0 - travel
     need = float(sp.solid_length(d, n) + sp.minimum_gap_sum(d, dm, n))
-    ok = shortest >= need
+    ok = passed["solid_length"]
     out = [
         Check(
             "solid_length",
@@ -819,7 +843,7 @@ def _helical_length_checks(
     ]
     s_k = v.get("buckling_deflection")
     s_k = float(s_k) if s_k is not None else math.inf
-    ok = travel < s_k
+    ok = passed["buckling"]
     out.append(
         Check(
             "buckling",
@@ -986,104 +1010,169 @@ def setting_outputs() -> tuple[Output, ...]:
     )
 
 
-def _upper_setting(x: Mapping[str, Any], spring: Spring, force: float) -> float:
-    if spring.kind == "disc":
-        return float(x["disc_series"] * x["disc_cone_height"])
-    rate = float(spring.force(1.0))
-    return max(force / rate, 1e-9) * 1.000001
+def _scalar_or_array(value: Any) -> Any:
+    """A float for a 0-d result, the array otherwise."""
+    arr = np.asarray(value, dtype=float)
+    return float(arr) if arr.ndim == 0 else arr
 
 
-def _peak_setting(
-    x: Mapping[str, Any], spring: Spring, target: float, force: float
-) -> tuple[float, float] | None:
-    """(setting, largest stress over the lift) for the target peak torque, or None.
+def peak_setting(
+    x: Mapping[str, Any],
+    spring: Spring,
+    target: Any,
+    force: Any,
+    grid: SettingGrid | None = None,
+) -> tuple[Any, Any]:
+    """(setting, largest stress over the lift) for the target peak torque; NaN where none.
 
-    A helical spring's characteristic is a set of lines in the setting
-    (:class:`SettingGrid`): where they all rise, the setting comes in closed form (one
-    characteristic instead of the ~40 a bracketed root search takes; the two agree to
-    1e-12, ``tests/models/clutch/test_clutch_arrays.py``), else by :func:`solve_setting`.
+    Floats or arrays (helical springs); a disc stack one design at a time. A helical
+    spring's characteristic is a set of lines in the setting (:class:`SettingGrid`):
+    where they all rise, the setting comes in closed form (one characteristic instead
+    of the ~40 a bracketed root search takes; the two agree to 1e-12,
+    ``tests/models/clutch/test_clutch_arrays.py``); at a point where they need not
+    (a push ≤ 0 on the driving flank), and for a disc stack, by :func:`solve_setting`.
+    ``grid`` may be passed in when the same geometry serves several springs.
     """
-    upper = _upper_setting(x, spring, force)
-    delta: float | None = None
-    grid = SettingGrid(x) if spring.kind != "disc" else None
-    if grid is not None and bool(np.all(grid.regular)):
-        found = float(grid.setting(float(spring.force(1.0)), target, upper))
-        delta = found if math.isfinite(found) else None
-    else:
-        delta = solve_setting(x, spring, target, upper)
-    if delta is None:
-        return None
-    c = characteristic(x, spring, delta)
     if spring.kind == "disc":
-        per_disc = (delta + float(c["total_lift"])) / x["disc_series"]
-        if per_disc > x["disc_cone_height"]:
-            return None  # reached only past flat
-    return delta, float(c["spring_stress_max"])
+        upper = float(x["disc_series"] * x["disc_cone_height"])
+        root = solve_setting(x, spring, float(target), upper)
+        if root is None:
+            return math.nan, math.nan
+        c = characteristic(x, spring, root)
+        if (root + float(c["total_lift"])) / x["disc_series"] > x["disc_cone_height"]:
+            return math.nan, math.nan  # reached only past flat
+        return root, float(c["spring_stress_max"])
+    grid = SettingGrid(x) if grid is None else grid
+    rate = np.asarray(spring.force(1.0), float)
+    upper = np.maximum(np.asarray(force) / rate, 1e-9) * 1.000001
+    delta = np.asarray(grid.setting(rate, target, upper))
+    stress = np.asarray(end_values({**x, "spring_deflection": delta}, spring)["spring_stress_max"])
+    if not np.all(grid.regular):
+        n = delta.size if delta.ndim else 0
+        delta, stress = np.array(delta, float, ndmin=1), np.array(stress, float, ndmin=1)
+        for j in np.flatnonzero(~np.broadcast_to(grid.regular, delta.shape)).tolist():
+            point = points.at(x, n, j) if n else dict(x)
+            found = solve_setting(
+                point,
+                Spring(point),
+                float(np.broadcast_to(target, delta.shape)[j]),
+                float(np.broadcast_to(upper, delta.shape)[j]),
+            )
+            delta[j], stress[j] = (
+                (np.nan, np.nan)
+                if found is None
+                else (
+                    found,
+                    float(characteristic(point, Spring(point), found)["spring_stress_max"]),
+                )
+            )
+        if not n:
+            delta, stress = delta[0], stress[0]
+    return _scalar_or_array(delta), _scalar_or_array(stress)
 
 
-def setting_values(x: Mapping[str, Any], force: float) -> tuple[dict[str, Any], list[str]]:
-    """As-built outputs of the inverse and the notes that explain them (scalar inputs)."""
-    target = float(x["target_torque"])
+def setting_values(x: Mapping[str, Any], force: Any) -> tuple[dict[str, Any], list[str]]:
+    """As-built outputs of the inverse and, for one design, the notes that explain them.
+
+    Floats or arrays (helical springs; NaN where an output is null); a disc stack one
+    design at a time. On floats an output that does not exist is left out.
+    """
+    target = x["target_torque"]
     values: dict[str, Any] = {}
     notes: list[str] = []
     helical = x["spring_type"] == "helical"
     found: tuple[float, float] | None = None
     if not helical or x["spring_wire_diameter"] is not None:
-        spring = Spring(x)
-        found = _peak_setting(x, spring, target, force)
-        if found is None:
+        delta, stress = peak_setting(x, Spring(x), target, force)
+        if np.ndim(delta) == 0 and math.isnan(delta):
             notes.append(
                 "required_peak_setting is null: no setting of this spring gives the target as "
                 "its peak torque (the lift alone overshoots it, or a disc stack would pass flat)"
             )
         else:
-            values["required_peak_setting"], values["peak_setting_stress_max"] = found
+            values["required_peak_setting"], values["peak_setting_stress_max"] = delta, stress
+            found = (delta, stress) if np.ndim(delta) == 0 else None
     if helical and x["spring_mean_diameter"] is not None:
-        values.update(_suggest_wire(x, target, force, notes))
+        values.update(suggest_wire(x, target, force, notes))
     if not helical:
-        values.update(_suggest_parallel(x, target, force, notes, found))
+        values.update(_suggest_parallel(x, float(target), float(force), notes, found))
     return values, notes
 
 
-def _suggest_wire(
-    x: Mapping[str, Any], target: float, force: float, notes: list[str]
+def suggest_wire(
+    x: Mapping[str, Any], target: Any, force: Any, notes: list[str] | None = None
 ) -> dict[str, Any]:
+    """The thinnest preferred wire that reaches the target peak torque, per point.
+
+    Candidates in the order of :data:`springs.STANDARD_WIRE_DIAMETERS` (spring index
+    4…12, inside the material's table, a peak setting within the permissible stress,
+    not solid at the largest deflection; the same D and i_p). Floats or arrays: NaN
+    where none works, and on floats the outputs are then left out. ``notes``, for one
+    design, gets the sentences that explain the answer.
+    """
+    said = [] if notes is None else notes
     if x["spring_material"] == "custom" and x["allowable_shear_stress"] is None:
-        notes.append("give spring_material or allowable_shear_stress for a suggested wire diameter")
+        said.append("give spring_material or allowable_shear_stress for a suggested wire diameter")
         return {}
-    dm = x["spring_mean_diameter"]
+    grid = SettingGrid(x)
+    dm = np.asarray(x["spring_mean_diameter"], float)
+    shape = np.broadcast_shapes(
+        dm.shape, np.shape(target), np.shape(force), grid.inverse_gain.shape[:-1]
+    )
+    wire = np.full(shape, np.nan)
+    setting = np.full(shape, np.nan)
+    stress_at = np.full(shape, np.nan)
+    allow_at = np.full(shape, np.nan)
+    open_ = np.ones(shape, dtype=bool)
     for d_mm in sp.STANDARD_WIRE_DIAMETERS:
         d = d_mm * 1e-3
-        if not 4.0 <= dm / d <= 12.0:
+        index = dm / d
+        trying = open_ & (index >= 4.0) & (index <= 12.0)
+        if not trying.any():
+            if not np.any(open_ & (index > 12.0)):
+                break  # every open point's coil is too small for this wire and thicker ones
             continue
         trial = {**x, "spring_wire_diameter": d}
+        spring = Spring(trial)
         try:
-            spring = Spring(trial)
             allow = spring.permissible()
-            allow = None if allow is None else float(allow)
         except InputOutOfRange:
             continue  # outside the material's table
-        found = _peak_setting(trial, spring, target, force)
-        if found is None or allow is None or found[1] > allow:
+        if allow is None:
             continue
+        delta, stress = peak_setting(trial, spring, target, force, grid)
+        fits = trying & np.isfinite(delta) & (stress <= np.asarray(allow, float))
         if x["spring_free_length"] is not None:
-            travel = found[0] + float(characteristic(trial, spring, found[0])["total_lift"])
-            room = float(sp.solid_length(d, x["spring_active_coils"]))
-            room += float(sp.minimum_gap_sum(d, dm, x["spring_active_coils"]))
-            if x["spring_free_length"] - travel < room:
-                continue  # would go solid
-        else:
-            notes.append(
-                "spring_free_length not given: the suggested wire's setting is not limited by "
-                "its solid length"
+            total_lift = end_values({**trial, "spring_deflection": delta}, spring)["total_lift"]
+            travel = delta + total_lift
+            coils = x["spring_active_coils"]
+            room = np.asarray(sp.solid_length(d, coils), float) + np.asarray(
+                sp.minimum_gap_sum(d, dm, coils), float
             )
-        notes.append(
-            f"suggested wire {d_mm:g} mm: the thinnest preferred size that reaches "
-            f"{target:.4g} N·m at its peak with {found[1] / 1e6:.4g} MPa ≤ {allow / 1e6:.4g} MPa"
+            fits &= ~(x["spring_free_length"] - travel < room)
+        wire = np.where(fits, d, wire)
+        setting = np.where(fits, delta, setting)
+        stress_at = np.where(fits, stress, stress_at)
+        allow_at = np.where(fits, allow, allow_at)
+        open_ &= ~fits
+        if not open_.any():
+            break
+    if wire.ndim:
+        return {"suggested_wire_diameter": wire, "suggested_wire_setting": setting}
+    if math.isnan(wire):
+        said.append("no preferred wire with spring index 4…12 reaches the target within its stress")
+        return {}
+    if x["spring_free_length"] is None:
+        said.append(
+            "spring_free_length not given: the suggested wire's setting is not limited by "
+            "its solid length"
         )
-        return {"suggested_wire_diameter": d, "suggested_wire_setting": found[0]}
-    notes.append("no preferred wire with spring index 4…12 reaches the target within its stress")
-    return {}
+    said.append(
+        f"suggested wire {float(wire) * 1e3:g} mm: the thinnest preferred size that reaches "
+        f"{float(target):.4g} N·m at its peak with {float(stress_at) / 1e6:.4g} MPa ≤ "
+        f"{float(allow_at) / 1e6:.4g} MPa"
+    )
+    return {"suggested_wire_diameter": float(wire), "suggested_wire_setting": float(setting)}
 
 
 def _suggest_parallel(
@@ -1094,13 +1183,14 @@ def _suggest_parallel(
     given: tuple[float, float] | None,
 ) -> dict[str, Any]:
     """The fewest discs in parallel that reach the target; ``given`` is the given stack's
-    own :func:`_peak_setting` (not searched again for its own number of discs)."""
+    own :func:`peak_setting` (not searched again for its own number of discs)."""
     for n in range(1, 9):
         if n == x["disc_parallel"]:
             found = given
         else:
             trial = {**x, "disc_parallel": n}
-            found = _peak_setting(trial, Spring(trial), target, force)
+            delta, stress = peak_setting(trial, Spring(trial), target, force)
+            found = None if math.isnan(delta) else (delta, stress)
         if found is not None and found[1] <= float(x["disc_yield_strength"]):
             return {"suggested_disc_parallel": n, "suggested_disc_setting": found[0]}
     notes.append("no stack of up to 8 of these discs in parallel reaches the target")
@@ -1110,8 +1200,8 @@ def _suggest_parallel(
 def disc_breakaway_setting(x: Mapping[str, Any], force: float) -> float | None:
     """Stack setting whose force is ``force`` on the rising branch; None if none gives it."""
     spring = Spring(x)
-    region = sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])
-    top = region[0] if region is not None else x["disc_cone_height"]
+    s_max = float(sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])[0])
+    top = s_max if math.isfinite(s_max) else x["disc_cone_height"]
     upper = float(x["disc_series"] * min(top, x["disc_cone_height"]))
 
     def excess(delta: float) -> float:
@@ -1208,34 +1298,32 @@ def sizing_outputs() -> tuple[Output, ...]:
 
 
 def sizing(x: Mapping[str, Any]) -> dict[str, Any]:
-    """Rated, start and required slip torque from the drive inputs; {} without a drive."""
+    """Rated, start and required slip torque from the drive inputs; {} without a drive.
+
+    Floats or arrays (a float for a single design).
+    """
     if x["drive_torque"] is not None:
-        rated = float(x["drive_torque"])
+        rated: Any = _scalar_or_array(x["drive_torque"])
     elif x["drive_power"] is not None and x["drive_speed"] is not None:
-        rated = float(cl_rated_torque(x["drive_power"], x["drive_speed"]))
+        rated = _scalar_or_array(cl_rated_torque(x["drive_power"], x["drive_speed"]))
     else:
         return {}
     out: dict[str, Any] = {"rated_drive_torque": rated}
-    start = 0.0
-    if None not in (x["drive_start_torque"], x["drive_inertia"], x["load_inertia"]):
-        start = float(
+    start: Any = 0.0
+    if all(x[k] is not None for k in ("drive_start_torque", "drive_inertia", "load_inertia")):
+        start = _scalar_or_array(
             cl_acceleration_torque(x["drive_start_torque"], x["drive_inertia"], x["load_inertia"])
         )
         out["start_torque"] = start
-    out["required_slip_torque"] = float(cl_required_slip_torque(rated, x["service_factor"], start))
+    out["required_slip_torque"] = _scalar_or_array(
+        cl_required_slip_torque(rated, x["service_factor"], start)
+    )
     return out
 
 
 # --------------------------------------------------------------------------
-# The inverse on arrays (clutch.ball_setting's array path), helical springs
+# The setting as lines (helical springs), for one design or many
 # --------------------------------------------------------------------------
-
-
-def _at_point(x: Mapping[str, Any], j: int) -> dict[str, Any]:
-    """The scalar inputs of point ``j`` of equal-length columns."""
-    return {
-        k: (v[j].item() if isinstance(v, np.ndarray) and v.ndim == 1 else v) for k, v in x.items()
-    }
 
 
 class SettingGrid:
@@ -1251,25 +1339,23 @@ class SettingGrid:
     """
 
     def __init__(self, x: Mapping[str, Any]) -> None:
-        d, alpha = np.broadcast_arrays(
-            np.asarray(x["ball_diameter"], float), np.asarray(x["groove_angle"], float)
+        given = x["ball_lift"] is not None
+        # from the rim on (the flank's lines lie below the rim's): q_k, the lift at δ = 0
+        self.q, beta = lift_points(
+            x["ball_lift"] if given else 0.0, x["ball_diameter"], x["groove_angle"], POINTS, True
         )
-        r, a = d[..., None] / 2.0, alpha[..., None]
-        v = np.linspace(0.0, 1.0, POINTS)[1:]
-        beta_rim = a + v * (math.pi / 2.0 - a)
-        rim = r * (np.sin(beta_rim) - np.sin(a))
-        if x["ball_lift"] is not None:
-            h = np.asarray(x["ball_lift"], float)[..., None]
-            over = h + rim
-            self.q = np.concatenate([np.broadcast_to(h, (*over.shape[:-1], 1)), over], axis=-1)
-            self.share = 1.0  # 1/(1 + p)
-        else:
-            self.q = np.concatenate([np.zeros((*rim.shape[:-1], 1)), rim], axis=-1)
-            self.share = 0.5
-        beta = np.concatenate([a, beta_rim], axis=-1)
+        self.share = 1.0 if given else 0.5  # 1/(1 + p)
         xs = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
-        push = combined_push_factor(beta, xs["flank_friction"], xs["driving_groove_angle"])
-        gain = np.asarray(_sharing(xs)) * np.asarray(xs["ball_circle_diameter"]) / (2.0 * push)
+        gain = np.asarray(
+            torque_against_lift(
+                1.0,
+                beta,
+                xs["ball_circle_diameter"],
+                xs["flank_friction"],
+                xs["driving_groove_angle"],
+                _sharing(xs),
+            )
+        )
         # the lines rise with δ only where every push is positive and finite
         self.regular = np.all(np.isfinite(gain) & (gain > 0.0), axis=-1)
         self.inverse_gain = 1.0 / gain
@@ -1279,101 +1365,3 @@ class SettingGrid:
         compression = (np.asarray(target, float) / np.asarray(rate, float))[..., None]
         delta = np.min(compression * self.inverse_gain - self.q, axis=-1) * self.share
         return np.where((delta >= 0.0) & (delta <= upper), delta, np.nan)
-
-
-def peak_setting_arrays(
-    x: Mapping[str, Any], grid: SettingGrid, spring: Spring, target: Any, force: Any
-) -> tuple[Any, Any]:
-    """(setting, largest stress over the lift) of :func:`_peak_setting` on arrays; NaN: None.
-
-    Helical springs only. A point where the lines do not all rise (a push ≤ 0 on the
-    driving flank) is solved by :func:`_peak_setting` itself.
-    """
-    rate = np.asarray(spring.force(1.0), float)
-    upper = np.maximum(np.asarray(force) / rate, 1e-9) * 1.000001
-    delta = np.asarray(grid.setting(rate, target, upper))
-    stress = np.asarray(end_values({**x, "spring_deflection": delta}, spring)["spring_stress_max"])
-    n = delta.size if delta.ndim else 0
-    if not np.all(grid.regular):
-        delta, stress = np.array(delta, float, ndmin=1), np.array(stress, float, ndmin=1)
-        for j in np.flatnonzero(~np.broadcast_to(grid.regular, delta.shape)).tolist():
-            point = _at_point(x, j) if n else dict(x)
-            found = _peak_setting(
-                point,
-                Spring(point),
-                float(np.broadcast_to(target, delta.shape)[j]),
-                float(np.broadcast_to(force, delta.shape)[j]),
-            )
-            delta[j], stress[j] = (np.nan, np.nan) if found is None else found
-    return delta, stress
-
-
-def suggest_wire_arrays(
-    x: Mapping[str, Any], grid: SettingGrid, target: Any, force: Any
-) -> dict[str, Any]:
-    """:func:`_suggest_wire` on arrays: the thinnest preferred wire that works, per point.
-
-    The same candidates in the same order and the same conditions (spring index 4…12,
-    inside the material's table, a peak setting within the permissible stress, not
-    solid at the largest deflection); NaN where none works.
-    """
-    if x["spring_material"] == "custom" and x["allowable_shear_stress"] is None:
-        return {}
-    dm = np.asarray(x["spring_mean_diameter"], float)
-    shape = np.broadcast_shapes(
-        dm.shape, np.shape(target), np.shape(force), grid.inverse_gain.shape[:-1]
-    )
-    wire = np.full(shape, np.nan)
-    setting = np.full(shape, np.nan)
-    open_ = np.ones(shape, dtype=bool)
-    for d_mm in sp.STANDARD_WIRE_DIAMETERS:
-        d = d_mm * 1e-3
-        index = dm / d
-        trying = open_ & (index >= 4.0) & (index <= 12.0)
-        if not trying.any():
-            if not np.any(open_ & (index > 12.0)):
-                break  # every open point's coil is too small for this wire and thicker ones
-            continue
-        trial = {**x, "spring_wire_diameter": d}
-        spring = Spring(trial)
-        try:
-            allow = spring.permissible()
-        except InputOutOfRange:
-            continue  # outside the material's table
-        if allow is None:
-            continue
-        delta, stress = peak_setting_arrays(trial, grid, spring, target, force)
-        fits = trying & np.isfinite(delta) & (stress <= np.asarray(allow, float))
-        if x["spring_free_length"] is not None:
-            total_lift = end_values({**trial, "spring_deflection": delta}, spring)["total_lift"]
-            travel = delta + total_lift
-            coils = x["spring_active_coils"]
-            room = np.asarray(sp.solid_length(d, coils), float) + np.asarray(
-                sp.minimum_gap_sum(d, dm, coils), float
-            )
-            fits &= ~(x["spring_free_length"] - travel < room)
-        wire = np.where(fits, d, wire)
-        setting = np.where(fits, delta, setting)
-        open_ &= ~fits
-        if not open_.any():
-            break
-    return {"suggested_wire_diameter": wire, "suggested_wire_setting": setting}
-
-
-def sizing_arrays(x: Mapping[str, Any]) -> dict[str, Any]:
-    """:func:`sizing` on arrays (the same formulas; {} without a drive)."""
-    if x["drive_torque"] is not None:
-        rated = np.asarray(x["drive_torque"], float)
-    elif x["drive_power"] is not None and x["drive_speed"] is not None:
-        rated = np.asarray(cl_rated_torque(x["drive_power"], x["drive_speed"]), float)
-    else:
-        return {}
-    out: dict[str, Any] = {"rated_drive_torque": rated}
-    start: Any = 0.0
-    if all(x[k] is not None for k in ("drive_start_torque", "drive_inertia", "load_inertia")):
-        start = cl_acceleration_torque(
-            x["drive_start_torque"], x["drive_inertia"], x["load_inertia"]
-        )
-        out["start_torque"] = start
-    out["required_slip_torque"] = cl_required_slip_torque(rated, x["service_factor"], start)
-    return out

@@ -21,7 +21,6 @@ from .. import clutch as cl
 from .. import nutrunner as nr
 from .. import preload as pl
 from ..blow import (
-    ISO5393_ANGLE,
     BlowProblem,
     blow_series,
     blow_series_array,
@@ -34,9 +33,9 @@ from ..blow import (
     joint_rate,
     rigid_blow_torque,
 )
-from ..errors import EngineError, InputOutOfRange
+from ..errors import EngineError, InfeasibleDesign, InputOutOfRange
 from ..joint import clamped_compliance as vdi_clamped_compliance
-from ..rare_impact import liftoff_speed, release_speed
+from ..rare_impact_cycle import closed_form_cycle_array, release_radius_of, release_speed_of
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
 from ._common import DEG, RPM, count, friction_coefficient, length, positive, quantity
 from .clutch import BALL_CLUTCH
@@ -48,6 +47,7 @@ from .preload import (
     torque_coefficients_raw,
 )
 from .rare_impact import RARE_IMPACT
+from .rare_impact import REFERENCE_DESIGN as _STRIKER_DEFAULTS
 
 _SIMULATION_ERROR = 1e-6
 SOURCES = ("energy", "nutrunner", "rare_impact", "clutch")
@@ -86,7 +86,14 @@ _RI_NAMES = (
     "auxiliary_spring_rate",
     "auxiliary_spring_preload",
     "release_travel",
+    "roller_geometry",
+    "half_coupling_mass",
+    "stepped_shaft_mass",
+    "gravity",
 )
+#: Borrowed inputs that keep the tool model's default here (what the striker's release
+#: speed reads beyond its springs and rollers; the nut-runner's material).
+_KEEP_DEFAULT = frozenset(("shear_modulus", "half_coupling_mass", "stepped_shaft_mass", "gravity"))
 _CL_NAMES = (
     "ball_circle_diameter",
     "groove_angle",
@@ -102,7 +109,7 @@ def _borrow(spec: ModelSpec, names: tuple[str, ...], group: str) -> tuple[Param,
     out = []
     for name in names:
         p = spec.param(name)
-        keep_default = p.default if p.kind == "choice" or name == "shear_modulus" else None
+        keep_default = p.default if p.kind == "choice" or name in _KEEP_DEFAULT else None
         out.append(
             dataclasses.replace(
                 p,
@@ -120,8 +127,9 @@ _INPUTS: tuple[Param, ...] = (
         "source",
         "1",
         "what strikes the joint: a raw energy and inertia ('energy'), the nut-runner's drive "
-        "[000] ('nutrunner'), the rare-impact wrench's flywheel at its release speed [002] "
-        "('rare_impact'), or a continuous tool limited by a ball clutch [001] ('clutch')",
+        "[000] ('nutrunner'), the rare-impact wrench's flywheel and rollers at impact.rare's "
+        "release speed [002] ('rare_impact'), or a continuous tool limited by a ball clutch "
+        "[001] ('clutch')",
         default="energy",
         kind="choice",
         choices=SOURCES,
@@ -415,11 +423,14 @@ _OUTPUTS: tuple[Output, ...] = (
 
 @dataclasses.dataclass
 class _Tool:
-    energy: float
-    inertia: float
-    stiffness: float
-    drive: float
-    notes: list[str]
+    """The striking tool at the nut: floats for one design, arrays for many."""
+
+    energy: Any  # after the blow efficiency [J]
+    inertia: Any  # J_t [kg·m²]
+    stiffness: Any  # C [N·m/rad]
+    drive: Any  # N, net drive during the blow [N·m]
+    fails: Any  # where the arithmetic fails (a spindle speed or stiffness that underflows)
+    notes: list[str]  # what the source took from the tool model (one design)
 
 
 def _need(x: Mapping[str, Any], names: tuple[str, ...], why: str) -> None:
@@ -450,58 +461,172 @@ def _clutch_args(x: Mapping[str, Any]) -> tuple[tuple[Any, Any, Any, Any], list[
     return (x["ball_circle_diameter"], x["groove_angle"], x["ball_count"], load), notes
 
 
-def _tool(x: Mapping[str, Any]) -> _Tool:
+@dataclasses.dataclass
+class _Striker:
+    """The rare-impact source's striker at release (floats or arrays, one design each)."""
+
+    speed: Any  # ω_M [rad/s]
+    radius: Any  # r, the rollers' centre radius [m]
+    inertia: Any  # I of the rotating parts [kg·m²]
+    energy: Any  # ½·I·ω_M² [J]
+    refused: Any  # where impact.rare refuses the design
+    design: dict[str, Any]  # impact.rare's inputs
+
+
+def rotating_inertia(flywheel_inertia: Any, roller_count: Any, roller_mass: Any, radius: Any,
+                     geometry: str) -> Any:  # fmt: skip
+    r"""Inertia of the striker's rotating parts at release: the flywheel and its rollers.
+
+    .. math::
+        I = I_M + n\,m_p\,r^2
+
+    Parameters
+    ----------
+    flywheel_inertia : float or array
+        :math:`I_M`, flywheel with half-coupling, shaft and striker, [kg*m^2]
+    roller_count : int or array
+        :math:`n`, [-]
+    roller_mass : float or array
+        :math:`m_p`, one roller, [kg]
+    radius : float or array
+        :math:`r`, the rollers' centre radius at release, [m]
+    geometry : str
+        ``impact.rare``'s ``roller_geometry``; ``paper``: :math:`I_M` alone
+
+    Notes
+    -----
+    The rollers turn with the flywheel at their release radius, as the stage 1 of
+    ``impact.rare`` counts them [002, eq. 1]; the paper's printed equation leaves them
+    out. (``engine.rare_impact_cycle`` has the same sum as a private step; this is its
+    public form for the blow until that module offers one.)
+
+    >>> round(rotating_inertia(1e-3, 6, 0.05, 0.0425, "symmetric_v"), 9)  # + 0.3·0.0425²
+    0.001541875
+    >>> rotating_inertia(1e-3, 6, 0.05, 0.045, "paper")
+    0.001
+    """
+    if geometry == "paper":
+        return flywheel_inertia + 0.0 * radius
+    return flywheel_inertia + roller_count * roller_mass * radius * radius
+
+
+def _striker(x: Mapping[str, Any], one: bool) -> _Striker:
+    r"""The rare-impact source's striker at release, from the striker model's own closed form.
+
+    The release speed :math:`\omega_M` and radius :math:`r` are those of ``impact.rare``'s
+    closed-form rung (``engine.rare_impact_cycle``: the chosen roller geometry, the weight
+    of half-coupling, shaft and rollers, the snap-through at lift-off), its stage-1
+    functions for one striker, its closed form on arrays where striker inputs vary; the
+    energy of the rotating parts at release is
+
+    .. math::
+        E = \tfrac{1}{2}\,I\,\omega_M^2
+
+    with :func:`rotating_inertia` [002, after eq. 4]. The striker's inputs blow.joint does
+    not borrow take their defaults in ``impact.rare``. One design the striker model
+    refuses raises its reason; on arrays ``refused`` marks them.
+
+    >>> s = _striker(RARE_IMPACT_M16, True)  # 6 rollers of 50 g at r = 42.5 mm
+    >>> round(s.speed, 2), round(s.inertia, 9), round(s.energy, 2)  # ½·1.541875e-3·243.96²
+    (243.96, 0.001541875, 45.89)
+    """
+    design = {**_STRIKER_DEFAULTS, **{n: x[n] for n in _RI_NAMES}}
+    refused: Any = False
+    if one or not any(isinstance(design[n], np.ndarray) for n in _RI_NAMES):
+        # one striker (a single run, or a sweep of anything else): impact.rare's stage 1
+        try:
+            w_m, r = release_speed_of(design), release_radius_of(design)
+        except InfeasibleDesign:
+            if one:
+                raise
+            w_m = r = math.nan
+            refused = True
+    else:
+        cycle: Any = closed_form_cycle_array(design)
+        w_m, r, refused = cycle.release_speed, cycle.release_radius, cycle.refused
+    with np.errstate(all="ignore"):
+        inertia = rotating_inertia(
+            design["flywheel_inertia"],
+            design["roller_count"],
+            design["roller_mass"],
+            r,
+            design["roller_geometry"],
+        )
+        return _Striker(w_m, r, inertia, 0.5 * inertia * w_m * w_m, refused, design)
+
+
+def _striker_note(s: _Striker) -> str:
+    """What the rare-impact source took from the striker model (one design)."""
+    geometry = s.design["roller_geometry"]
+    return (
+        f"rare-impact: one blow per release at impact.rare's closed-form release speed "
+        f"ω_M = {float(s.speed) / RPM:.0f} rpm ({geometry} roller geometry, "
+        f"g = {s.design['gravity']:g} m/s²) [002, after eq. 4]; the flywheel "
+        + (
+            "alone (the paper's geometry)"
+            if geometry == "paper"
+            else f"with the rollers at r = {float(s.radius) * 1e3:.4g} mm"
+        )
+        + f", I = {float(s.inertia):.4g} kg·m², carries E = ½·I·ω_M² = {float(s.energy):.4g} J"
+    )
+
+
+def _tool(x: Mapping[str, Any], one: bool) -> _Tool:
+    """The source's tool: energy (after the efficiency), inertia, stiffness and drive.
+
+    One procedure for one design (floats) and many (arrays of one shape); ``fails``
+    marks the designs where the arithmetic fails (a spindle speed or a stiffness that
+    underflows to 0 with inputs at their declared extremes), and a striker the striker
+    model refuses raises its reason for one design.
+    """
     src = x["source"]
     notes: list[str] = []
-    drive = float(x["drive_torque"] or 0.0)
+    drive = _or_zero(x["drive_torque"])
+    fails: Any = False
     if src == "energy":
         _need(x, ("tool_energy", "tool_inertia", "tool_stiffness"), "with source 'energy'")
-        e, j, c = float(x["tool_energy"]), float(x["tool_inertia"]), float(x["tool_stiffness"])
+        e, j, c = x["tool_energy"], x["tool_inertia"], x["tool_stiffness"]
     elif src == "nutrunner":
         _need(x, _NR_NAMES, "with source 'nutrunner'")
         w = x["motor_speed"]
-        e = float(nr.kinetic_energy(w, *(x[n] for n in _NR_NAMES[1:12])))
+        e = nr.kinetic_energy(w, *(x[n] for n in _NR_NAMES[1:12]))
         w3 = nr.flywheel_speed(w, x["motor_pulley_diameter"], x["flywheel_diameter"])
-        w5 = float(nr.spindle_speed(w3, x["drive_gear_diameter"], x["spindle_gear_diameter"]))
-        j = 2.0 * e / (w5 * w5)
+        w5 = nr.spindle_speed(w3, x["drive_gear_diameter"], x["spindle_gear_diameter"])
         g = x["shear_modulus"]
         c7 = nr.torsional_stiffness(g, x["shaft_diameter"], x["shaft_length"])
         c8 = nr.torsional_stiffness(g, x["spindle_diameter"], x["spindle_length"])
-        c = c7 * c8 / (c7 + c8)
-        drag = (x["spindle_count"] - 1) * x["idle_spindle_friction_torque"]
-        feed = float(x["coupling_slip_torque"] or 0.0) * w / w5
-        drive += feed - drag
-        notes.append(
-            f"nut-runner: drive energy T = {e:.4g} J [000, eq. 3–4] at spindle speed "
-            f"{w5 / RPM:.0f} rpm, i.e. J_t = 2T/ω5² = {j:.4g} kg·m² at the spindle; C = C7·C8/"
-            f"(C7 + C8) = {c:.4g} N·m/rad [000, eq. 7–9] (the paper's convention, gear ratio "
-            f"ignored); idle spindles take (z − 1)·M_tr = {drag:.4g} N·m [000, eq. 10]"
-            + (f", the slipping coupling 1 feeds {feed:.4g} N·m [000, text]" if feed else "")
-        )
+        fails = (w5 * w5 == 0.0) | (c7 + c8 == 0.0)
+        if one and fails:
+            raise ZeroDivisionError("the spindle speed or the shaft stiffness underflows to 0")
+        with np.errstate(all="ignore"):
+            j = 2.0 * e / (w5 * w5)
+            c = c7 * c8 / (c7 + c8)
+            drag = (x["spindle_count"] - 1) * x["idle_spindle_friction_torque"]
+            feed = _or_zero(x["coupling_slip_torque"]) * w / w5
+        drive = drive + (feed - drag)
+        if one:
+            notes.append(
+                f"nut-runner: drive energy T = {float(e):.4g} J [000, eq. 3–4] at spindle "
+                f"speed {float(w5) / RPM:.0f} rpm, i.e. J_t = 2T/ω5² = {float(j):.4g} kg·m² "
+                f"at the spindle; C = C7·C8/(C7 + C8) = {float(c):.4g} N·m/rad [000, eq. 7–9] "
+                "(the paper's convention, gear ratio ignored); idle spindles take (z − 1)·M_tr "
+                f"= {float(drag):.4g} N·m [000, eq. 10]"
+                + (
+                    f", the slipping coupling 1 feeds {float(feed):.4g} N·m [000, text]"
+                    if feed
+                    else ""
+                )
+            )
     elif src == "rare_impact":
         _need(x, (*_RI_NAMES, "tool_stiffness"), "with source 'rare_impact'")
-        c1, lam1 = x["power_spring_rate"], x["power_spring_preload"]
-        c2, lam2 = x["auxiliary_spring_rate"], x["auxiliary_spring_preload"]
-        mp, n_r, x0, alpha = (
-            x["roller_mass"],
-            x["roller_count"],
-            x["roller_radius"],
-            x["cone_angle"],
-        )
-        w_m = float(release_speed(c1, lam1, c2, lam2, x["release_travel"], mp, n_r, x0, alpha))
-        w_0 = float(liftoff_speed(c1, lam1, c2, lam2, mp, n_r, x0, alpha))
-        w_m = max(w_m, w_0)
-        j = float(x["flywheel_inertia"])
-        e = 0.5 * j * w_m * w_m
-        c = float(x["tool_stiffness"])
-        notes.append(
-            f"rare-impact: one blow per release, flywheel at ω_M = {w_m / RPM:.0f} rpm "
-            f"[002, after eq. 4], E = ½·I·ω_M² = {e:.4g} J"
-        )
+        striker = _striker(x, one)  # one design the striker model refuses raises here
+        j, e, fails = striker.inertia, striker.energy, striker.refused
+        c = x["tool_stiffness"]
+        if one:
+            notes.append(_striker_note(striker))
     else:
         raise AssertionError(src)
-    eta = float(x["blow_efficiency"])
-    return _Tool(eta * e, j, c, drive, notes)
+    return _Tool(x["blow_efficiency"] * e, j, c, drive, fails, notes)
 
 
 # --------------------------------------------------------------------------- the joint
@@ -534,24 +659,27 @@ def _thread(x: Mapping[str, Any]) -> tuple[Any, float, list[str]] | None:
     return bolt, kg + kk, _bolt_notes(notes)
 
 
-def _target(x: Mapping[str, Any], per_preload: float | None) -> float | None:
+def _target(x: Mapping[str, Any], per_preload: Any) -> Any:
+    """The target joint torque (floats or arrays; None without a target)."""
     if x.get("target_torque") is not None:
-        return float(x["target_torque"])
+        return x["target_torque"]
     if x.get("target_preload") is not None:
         if per_preload is None:
             raise InputOutOfRange(
                 "target_preload needs the thread (thread_diameter) for the tightening relation",
                 field="thread_diameter",
             )
-        return float(x["target_preload"]) * per_preload
+        return x["target_preload"] * per_preload
     return None
 
 
-def _rate(x: Mapping[str, Any], target: float | None, thread: Any) -> tuple[float, str]:
+def _rate(x: Mapping[str, Any], target: Any, from_joint: Any) -> Any:
+    """The joint's torque rate k_j (floats or arrays): as given, an ISO 5393 test joint's,
+    or ``from_joint`` (:func:`_joint_rate`, worked out per bolt)."""
     how = x["joint_rate_from"]
     if how == "number":
         _need(x, ("joint_rate",), "with joint_rate_from 'number'")
-        return float(x["joint_rate"]), "torque rate as given"
+        return x["joint_rate"]
     if how.startswith("iso5393"):
         if target is None:
             raise InputOutOfRange(
@@ -559,11 +687,26 @@ def _rate(x: Mapping[str, Any], target: float | None, thread: Any) -> tuple[floa
                 "target_preload and the thread)",
                 field="target_torque",
             )
+        return iso5393_rate(target, how.split("_")[1])
+    return from_joint
+
+
+def _rate_note(x: Mapping[str, Any], target: float | None) -> str | None:
+    """What the torque rate is, for one design (the 'joint' rate's note is its group's)."""
+    how = x["joint_rate_from"]
+    if how == "number":
+        return "torque rate as given"
+    if how.startswith("iso5393"):
         kind = how.split("_")[1]
-        return iso5393_rate(target, kind), (
+        return (
             f"ISO 5393 {kind} test joint: target {target:.4g} N·m reached "
             f"{'30' if kind == 'hard' else '720'}° after snug"
         )
+    return None
+
+
+def _joint_rate(x: Mapping[str, Any], thread: Any) -> tuple[float, str]:
+    """The torque rate of the joint from its compliances and thread, one bolt [004, eq. 8]."""
     if thread is None:
         raise InputOutOfRange(
             "joint_rate_from 'joint' needs thread_diameter", field="thread_diameter"
@@ -600,71 +743,254 @@ def _rate(x: Mapping[str, Any], target: float | None, thread: Any) -> tuple[floa
 # --------------------------------------------------------------------------- rungs
 
 
-def _setup(x: Mapping[str, Any]) -> tuple[_Tool, float, float, BlowProblem, Any]:
-    tool = _tool(x)
-    thread = _thread(x)
-    per = thread[1] if thread else None
-    target = _target(x, per)
-    k, _ = _rate(x, target, thread)
-    speed = math.sqrt(2.0 * tool.energy / tool.inertia)
-    p = BlowProblem(
-        tool.inertia,
-        float(x["struck_inertia"]),
-        tool.stiffness,
-        speed,
-        k,
-        float(x["breakaway_factor"]),
-        tool.drive,
-        float(x["restitution"]),
-    )
-    return tool, k, float(x["snug_torque"]), p, thread
+@dataclasses.dataclass
+class _Setup:
+    """A request's tool and joint: floats for one design, arrays for many (one each)."""
 
+    tool: _Tool
+    energy: Any  # E = ½·J_t·ω0², after the blow efficiency [J]
+    speed: Any  # ω0 [rad/s]
+    rate: Any  # k_j [N·m/rad]
+    per: Any  # k_G + k_K [m]; None without a thread
+    target: Any  # the target joint torque [N·m]; None without one
+    refused: Any  # the designs the physics refuses (False for one design: it raises)
+    notes: list[str]  # the rate's and the thread's (one design)
+
+    def problem(self, x: Mapping[str, Any]) -> BlowProblem:
+        """The blow of one design."""
+        return BlowProblem(
+            float(self.tool.inertia),
+            float(x["struck_inertia"]),
+            float(self.tool.stiffness),
+            float(self.speed),
+            float(self.rate),
+            float(x["breakaway_factor"]),
+            float(self.tool.drive),
+            float(x["restitution"]),
+        )
+
+
+def _setup(x: Mapping[str, Any]) -> _Setup:
+    """The tool, the thread's torque per preload, the target and the joint's torque rate.
+
+    One procedure for one design (floats) and many (arrays of one shape), worked out
+    once per call of an estimate, a single run or the array path, from the values the
+    inputs hold now (no cache: a caller may refill its arrays in place). The bolt and a
+    'joint' rate are resolved once per distinct combination of the inputs they read
+    (:func:`_per_group`). For one design a refusal raises its reason; for many the
+    refused designs are marked in ``refused`` (a sweep runs them alone, to say why).
+    """
+    one = not _is_array(x)
+    tool = _tool(x, one)
+    names = _THREAD_INPUTS + (_JOINT_INPUTS if x["joint_rate_from"] == "joint" else ())
+    got, refused, notes, error = _per_group(x, names, _thread_and_joint, 2, one)
+    per = None if x.get("thread_diameter") is None else got[0]
+    target = _target(x, per)  # first: a target preload without a thread says so
+    if one and error is not None:
+        raise error
+    k = _rate(x, target, got[1])
+    with np.errstate(all="ignore"):
+        speed = _sqrt(2.0 * tool.energy / tool.inertia)
+        energy = 0.5 * tool.inertia * speed**2
+        overflow = _squares_overflow(speed) | _squares_overflow(tool.drive)
+    if one:
+        if overflow:
+            raise OverflowError("the tool's speed or drive torque squared overflows a float")
+        per = None if per is None else float(per)
+        target = None if target is None else float(target)
+        note = _rate_note(x, target)
+        return _Setup(
+            tool,
+            float(energy),
+            float(speed),
+            float(k),
+            per,
+            target,
+            False,
+            ([note] if note else []) + notes,
+        )
+    refused = np.broadcast_to(refused | tool.fails | overflow, _points(x))
+    return _Setup(tool, energy, speed, k, per, target, refused, notes)
+
+
+def _setup_or_none(x: Mapping[str, Any]) -> _Setup | None:
+    """:func:`_setup`, or None where it refuses (an estimate then has none)."""
+    try:
+        return _setup(x)
+    except (ArithmeticError, ValueError):  # EngineError is a ValueError
+        return None
+
+
+def _tool_values(x: Mapping[str, Any], s: _Setup) -> dict[str, Any]:
+    """The outputs that follow from the tool and the joint alone (floats or arrays)."""
+    e, c, drive = s.energy, s.tool.stiffness, s.tool.drive
+    with np.errstate(all="ignore"):
+        return {
+            "tool_energy_used": e,
+            "tool_inertia_used": s.tool.inertia,
+            "tool_speed": s.speed,
+            "tool_stiffness_used": c,
+            "joint_rate_used": s.rate,
+            "rigid_torque": rigid_blow_torque(e, c) + drive,
+            # the energy balance's blow into a held nut, N + √(N² + 2EC), over b
+            "saturation_torque": (drive + _sqrt(drive**2 + 2 * e * c)) / x["breakaway_factor"],
+        }
+
+
+def _blow_values(
+    rung: str,
+    s: _Setup,
+    *,
+    peak: Any,
+    rotation: Any,
+    after: Any,
+    work: Any,
+    final: Any,
+    blows: Any,
+    joint_work: Any,
+) -> dict[str, Any]:
+    """The outputs of the blows (floats for one design, arrays for many).
+
+    From the first blow (peak, rotation, joint torque after, work into the joint), the
+    last blow's joint torque, the number of blows and the work of all of them: the
+    preloads through the tightening relation (with a thread) and the energy account (not
+    on the rigid rung, whose joint torque does not follow from an energy balance).
+    """
+    values: dict[str, Any] = {
+        "peak_torque": peak,
+        "torque_after_first_blow": after,
+        "final_torque": final,
+        "energy_supplied": s.energy * blows,
+    }
+    if rung != "rigid":
+        values["nut_rotation"] = rotation
+        values["joint_energy_fraction"] = work / s.energy
+        values["energy_into_joint"] = joint_work
+    if s.per is not None:
+        values["preload_after_first_blow"] = after / s.per
+        values["final_preload"] = final / s.per
+    return values
+
+
+#: The scalar outputs of the blows' sources, in their order (the clutch's are its own).
+_BLOW_OUTPUTS = tuple(
+    o.name for o in _OUTPUTS if not o.series and not o.name.startswith(("clutch", "delivered"))
+)
 
 #: Outputs whose energy-rung error is the nut's kick (energy_peak_error), not the torque's.
 _PEAK_OUTPUTS = ("peak_torque", "peak_per_blow")
 
 
-def _energy_errors(x: Mapping[str, Any]) -> tuple[float, float] | None:
-    """(error of the joint torques, error of the peak torques) of the energy rung."""
-    if x["source"] == "clutch":
-        return None
+def _sqrt(v: Any) -> Any:
+    """√v of a float (math: numpy on one float costs more than the rest of the step) or array."""
+    return np.sqrt(v) if isinstance(v, np.ndarray) else math.sqrt(v)
+
+
+def _where(condition: Any, yes: Any, no: Any) -> Any:
+    """``np.where`` for arrays; for one design (a bool) the plain choice, without numpy's cost."""
+    if isinstance(condition, np.ndarray):
+        return np.where(condition, yes, no)
+    return yes if condition else no
+
+
+def _first_blow(x: Mapping[str, Any], s: _Setup) -> tuple[Any, Any]:
+    """(peak torque, joint torque after) of the energy rung's first blow.
+
+    The energy balance of :func:`~engine.blow.energy_blow` (for one design: numpy on a
+    single float costs twice the whole run; measured) or of its array form; the value at
+    a rate ≤ 0 or where the balance has no root is not used (NaN).
+    """
+    args = (s.energy, s.tool.stiffness, _where(s.rate > 0.0, s.rate, 1.0), x["snug_torque"])
+    if isinstance(s.rate, np.ndarray):
+        with np.errstate(all="ignore"):
+            blow = energy_blow_array(*args, x["breakaway_factor"], s.tool.drive)
+        return blow[0], blow[1]
     try:
-        _, k, t0, p, _ = _setup(x)
-        if k <= 0.0:
-            return None
-        after = energy_blow_error(p.tool_inertia, p.struck_inertia, p.stiffness, k, p.restitution)
-        peak = energy_blow(p.energy, p.stiffness, k, t0, p.breakaway, p.drive_torque)[0]
-        return after, after + energy_peak_error(p, peak)
+        one = energy_blow(*args, x["breakaway_factor"], s.tool.drive)
     except (ArithmeticError, ValueError):
-        return None
+        return math.nan, math.nan
+    return one[0], one[1]
+
+
+def _energy_errors(
+    x: Mapping[str, Any], s: _Setup, first: tuple[Any, Any] | None = None
+) -> tuple[Any, Any]:
+    """(error of the joint torques, error of the peak torques) of the energy rung.
+
+    Floats or arrays as ``s``; NaN where the rung has no estimate (a refused design, a
+    joint with no torque rate). ``first``: the energy rung's first blow where the caller
+    has it (:func:`_first_blow` otherwise).
+    """
+    peak, _ = _first_blow(x, s) if first is None else first
+    k = s.rate
+    with np.errstate(all="ignore"):
+        kk = _where(k > 0.0, k, 1.0)
+        after = energy_blow_error(
+            s.tool.inertia, x["struck_inertia"], s.tool.stiffness, kk, x["restitution"]
+        )
+        blow = BlowProblem(s.tool.inertia, x["struck_inertia"], s.tool.stiffness, s.speed, kk)
+        peak_error = after + energy_peak_error(blow, peak)
+    bad = s.refused | _where(k > 0.0, False, True)  # no estimate without a torque rate
+    return _where(bad, math.nan, after), _where(bad, math.nan, peak_error)
+
+
+def _rigid_error(x: Mapping[str, Any], s: _Setup) -> Any:
+    """The rigid rung's error: its torque against the energy rung's, plus the latter's error."""
+    first = _first_blow(x, s)
+    after_error, peak_error = _energy_errors(x, s, first)
+    with np.errstate(all="ignore"):
+        after = first[1]
+        rigid = rigid_blow_torque(s.energy, s.tool.stiffness) + s.tool.drive
+        base = _where(peak_error > after_error, peak_error, after_error)
+        bad = s.refused | _where(s.rate > 0.0, False, True)
+        return _where(bad, math.nan, abs(rigid - after) / after + base)
+
+
+def _energy_error(x: Mapping[str, Any], s: _Setup, first: Any = None, peak: bool = True) -> Any:
+    """The energy rung's estimate: of the peak torques (the larger) or of the joint torques.
+
+    For one design an arithmetic failure (floats raise where arrays give inf or NaN) is
+    no estimate (NaN), as on arrays.
+    """
+    try:
+        after, at_peak = _energy_errors(x, s, first)
+    except (ArithmeticError, ValueError):
+        return math.nan
+    return _where(at_peak > after, at_peak, after) if peak else after
+
+
+def _rigid_estimate_of(x: Mapping[str, Any], s: _Setup) -> Any:
+    """:func:`_rigid_error`; for one design an arithmetic failure is no estimate (NaN)."""
+    try:
+        return _rigid_error(x, s)
+    except (ArithmeticError, ValueError):
+        return math.nan
+
+
+def _estimate(x: Mapping[str, Any], value: Any) -> Any:
+    """An estimate as the runner takes it: a float or None for one design, else an array."""
+    if _is_array(x):
+        return value
+    v = float(value)
+    return v if math.isfinite(v) else None
 
 
 def _energy_estimate(x: Mapping[str, Any]) -> Any:
-    if _is_array(x):
-        arrays = _energy_errors_array(x)
-        if arrays is None:
-            return None
-        after, peak = arrays
-        return np.where(peak > after, peak, after)  # max(after, peak) as the scalar code
-    errors = _energy_errors(x)
-    return None if errors is None else max(errors)
+    if x["source"] == "clutch":
+        return None
+    s = _setup_or_none(x)
+    if s is None:
+        return np.full(_points(x), np.nan) if _is_array(x) else None
+    return _estimate(x, _energy_error(x, s))
 
 
 def _rigid_estimate(x: Mapping[str, Any]) -> Any:
     if x["source"] == "clutch":
         return None
-    if _is_array(x):
-        return _rigid_estimate_array(x)
-    try:
-        _, k, t0, p, _ = _setup(x)
-        base = _energy_estimate(x)
-        if base is None:
-            return None
-        after = energy_blow(p.energy, p.stiffness, k, t0, p.breakaway, p.drive_torque)[1]
-        rigid = rigid_blow_torque(p.energy, p.stiffness) + p.drive_torque
-        return abs(rigid - after) / after + base
-    except (ArithmeticError, ValueError):
-        return None
+    s = _setup_or_none(x)
+    if s is None:
+        return np.full(_points(x), np.nan) if _is_array(x) else None
+    return _estimate(x, _rigid_estimate_of(x, s))
 
 
 #: With damping the contact force is clipped at zero inside a step (the jaws part): RK4
@@ -680,24 +1006,45 @@ def _simulation_estimate(x: Mapping[str, Any]) -> Any:
     return _SIMULATION_ERROR if x["restitution"] >= 1.0 else _DAMPED_SIMULATION_ERROR
 
 
-def _rigid_estimate_array(x: Mapping[str, Any]) -> Any:
-    """:func:`_rigid_estimate` at many points (NaN where the scalar form gives None)."""
-    base = _energy_estimate(x)
-    try:
-        s = _setup_array(x)
-    except EngineError:
-        return np.full(_points(x), np.nan)
-    with np.errstate(all="ignore"):
-        k = np.asarray(s.rate, dtype=float)
-        kk = np.where(k > 0.0, k, 1.0)
-        after = energy_blow_array(
-            s.energy, s.stiffness, kk, x["snug_torque"], x["breakaway_factor"], s.drive
-        )[1]
-        rigid = np.sqrt(2.0 * s.energy * s.stiffness) + s.drive
-        return np.where(s.refused | ~(k > 0.0), np.nan, np.abs(rigid - after) / after + base)
-
-
 # --------------------------------------------------------------------------- compute
+
+
+def _window_verdict(preload: Any, lo: Any, hi: Any) -> Any:
+    """'below', 'within' or 'above' the window [lo, hi] (either limit may be None).
+
+    A str for one design, an object array for many; a preload above the upper limit
+    is 'above' even where it is also below the lower one (a window given upside down).
+
+    >>> _window_verdict(80e3, 70e3, 100e3), _window_verdict(60e3, 70e3, None)
+    ('within', 'below')
+    >>> _window_verdict(np.array([60e3, 80e3, 120e3]), 70e3, 100e3).tolist()
+    ['below', 'within', 'above']
+    """
+    below = False if lo is None else preload < lo
+    above = False if hi is None else preload > hi
+    if isinstance(below, np.ndarray) or isinstance(above, np.ndarray):
+        return np.where(above, "above", np.where(below, "below", "within")).astype(object)
+    return "above" if above else ("below" if below else "within")
+
+
+def _clutch_verdict(f_lo: Any, f_hi: Any, lo: Any, hi: Any) -> tuple[Any, Any]:
+    """(within, verdict) of the clutch's preloads [f_lo, f_hi] against [lo, hi].
+
+    Within when the whole delivered window lies inside; else 'below' where a non-zero
+    lower limit is undercut, 'above' otherwise. Floats (a bool and a str back) or arrays.
+
+    >>> _clutch_verdict(15e3, 28e3, 15e3, 30e3), _clutch_verdict(14e3, 31e3, 15e3, 30e3)
+    ((True, 'within'), (False, 'below'))
+    >>> ok, v = _clutch_verdict(np.array([16e3, 16e3]), np.array([28e3, 31e3]), 15e3, None)
+    >>> ok.tolist(), v.tolist()
+    ([True, True], ['within', 'within'])
+    """
+    ok = np.logical_and(True if lo is None else f_lo >= lo, True if hi is None else f_hi <= hi)
+    below = False if lo is None else np.logical_and(lo != 0.0, f_lo < lo)
+    verdict = np.where(ok, "within", np.where(below, "below", "above"))
+    if verdict.ndim == 0:
+        return bool(ok), str(verdict)
+    return ok, verdict.astype(object)
 
 
 def _verdict(
@@ -711,11 +1058,7 @@ def _verdict(
         return None, []
     if lo is not None and hi is not None and lo > hi:
         raise InputOutOfRange("preload_min must not exceed preload_max", field="preload_min")
-    verdict = "within"
-    if lo is not None and preload < lo:
-        verdict = "below"
-    if hi is not None and preload > hi:
-        verdict = "above"
+    verdict = _window_verdict(preload, lo, hi)
     window = f"[{quantity(lo or 0.0, 'kN')}, {quantity(hi, 'kN') if hi else '∞'}]"
     check = Check(
         "preload_window",
@@ -819,8 +1162,7 @@ def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
     checks: list[Check] = []
     lo, hi = x.get("preload_min"), x.get("preload_max")
     if lo is not None or hi is not None:
-        ok = (lo is None or f_lo >= lo) and (hi is None or f_hi <= hi)
-        values["preload_verdict"] = "within" if ok else ("below" if lo and f_lo < lo else "above")
+        ok, values["preload_verdict"] = _clutch_verdict(f_lo, f_hi, lo, hi)
         checks.append(
             Check(
                 "preload_window",
@@ -841,27 +1183,17 @@ def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
 def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if x["source"] == "clutch":
         return _compute_clutch(x, ctx)
-    tool, k, t0, p, thread = _setup(x)
-    notes = list(tool.notes)
-    per = thread[1] if thread else None
-    target = _target(x, per)
-    notes.append(_rate(x, target, thread)[1])
-    if thread:
-        notes += thread[2]
+    s = _setup(x)
+    p = s.problem(x)
+    t0 = float(x["snug_torque"])
+    notes = s.tool.notes + s.notes
+    per, target = s.per, s.target
     max_blows = int(x["max_blows"])
     if target is not None and t0 >= target:
         raise InputOutOfRange("snug_torque must be below the target torque", field="snug_torque")
-    e = p.energy
-    saturation = (p.drive_torque + math.sqrt(p.drive_torque**2 + 2 * e * p.stiffness)) / p.breakaway
-    tool_values: dict[str, Any] = {
-        "tool_energy_used": e,
-        "tool_inertia_used": p.tool_inertia,
-        "tool_speed": p.speed,
-        "tool_stiffness_used": p.stiffness,
-        "joint_rate_used": k,
-        "rigid_torque": rigid_blow_torque(e, p.stiffness) + p.drive_torque,
-        "saturation_torque": saturation,
-    }
+    e = s.energy
+    tool_values: dict[str, Any] = {n: float(v) for n, v in _tool_values(x, s).items()}
+    saturation = tool_values["saturation_torque"]
     if not ctx.wants(*(o.name for o in _OUTPUTS if o.name not in tool_values)):
         notes.append("no requested output needs the blows: none was run")
         return Result(
@@ -881,34 +1213,26 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         deadline=ctx.deadline,
     )
 
-    def preload(t: float) -> float | None:
-        return None if per is None else t / per
-
     n = len(series.torque_after)
-    values: dict[str, Any] = {
-        "tool_energy_used": e,
-        "tool_inertia_used": p.tool_inertia,
-        "tool_speed": p.speed,
-        "tool_stiffness_used": p.stiffness,
-        "joint_rate_used": k,
-        "rigid_torque": rigid_blow_torque(e, p.stiffness) + p.drive_torque,
-        "peak_torque": series.peak[0],
-        "nut_rotation": series.rotation[0],
-        "torque_after_first_blow": series.torque_after[0],
-        "preload_after_first_blow": preload(series.torque_after[0]),
+    if e == 0.0:  # the energy account divides by it (on arrays: the point is refused)
+        raise ZeroDivisionError("the tool's energy underflows to 0 J")
+    found = {
+        **tool_values,
+        **_blow_values(
+            ctx.rung,
+            s,
+            peak=series.peak[0],
+            rotation=series.rotation[0],
+            after=series.torque_after[0],
+            work=series.joint_work[0],
+            final=series.torque_after[-1],
+            blows=n,
+            joint_work=sum(series.joint_work),
+        ),
         "blows_to_target": series.blows_to_target,
-        "final_torque": series.torque_after[-1],
-        "final_preload": preload(series.torque_after[-1]),
-        "saturation_torque": saturation,
-        "joint_energy_fraction": series.joint_work[0] / e,
-        "energy_supplied": e * n,
-        "energy_into_joint": sum(series.joint_work),
     }
-    if ctx.rung == "rigid":
-        # the rigid rung's joint torque does not follow from the energy: no energy account
-        values["joint_energy_fraction"] = None
-        values["energy_into_joint"] = None
-        values["nut_rotation"] = None
+    # null: the preloads without a thread, the energy account on the rigid rung
+    values = {name: found.get(name) for name in _BLOW_OUTPUTS}
     verdict, checks = _verdict(x, values["final_preload"], notes)
     values["preload_verdict"] = verdict
     if target is not None and series.blows_to_target is None:
@@ -942,10 +1266,11 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "(M does not follow from an energy balance with the joint); see 'energy' and "
             "'simulation'"
         )
-        error = _rigid_estimate(x)
+        error = _estimate(x, _rigid_estimate_of(x, s))
     elif ctx.rung == "energy":
-        errors = _energy_errors(x)
-        error = None if errors is None else errors[1 if ctx.wants(*_PEAK_OUTPUTS) else 0]
+        # the estimate from the first blow the rung ran (energy_blow: the same balance)
+        blow1 = (series.peak[0], series.torque_after[0])
+        error = _estimate(x, _energy_error(x, s, blow1, peak=ctx.wants(*_PEAK_OUTPUTS)))
         notes.append(
             "energy: E + N·φ_t = T_p²/(2C) + (T_p² − T_0²)/(2k_j) per blow, struck inertia and "
             "damping neglected; the estimated error concerns the joint torque after each blow, "
@@ -1003,7 +1328,8 @@ _JOINT_INPUTS = ("clamped_compliance", "clamped_length", "bolt_compliance", "you
 
 
 def _is_array(x: Mapping[str, Any]) -> bool:
-    return any(isinstance(v, np.ndarray) for v in x.values())
+    """Whether ``x`` holds many designs (some input an array) rather than one."""
+    return np.ndarray in map(type, x.values())  # the scan runs in C: a single run asks often
 
 
 def _points(x: Mapping[str, Any]) -> tuple[int, ...]:
@@ -1019,80 +1345,44 @@ def _or_zero(v: Any) -> Any:
     )
 
 
-def _tool_array(x: Mapping[str, Any]) -> tuple[Any, Any, Any, Any, Any]:
-    """:func:`_tool` on arrays: (energy after the efficiency, inertia, stiffness, drive, fails).
-
-    ``fails`` marks the points where the scalar code divides by zero (a spindle speed or a
-    stiffness that underflows to 0 with inputs at their declared extremes).
-    """
-    src = x["source"]
-    drive = _or_zero(x["drive_torque"])
-    fails: Any = False
-    if src == "energy":
-        _need(x, ("tool_energy", "tool_inertia", "tool_stiffness"), "with source 'energy'")
-        e, j, c = x["tool_energy"], x["tool_inertia"], x["tool_stiffness"]
-    elif src == "nutrunner":
-        _need(x, _NR_NAMES, "with source 'nutrunner'")
-        w = x["motor_speed"]
-        e = nr.kinetic_energy(w, *(x[n] for n in _NR_NAMES[1:12]))
-        w3 = nr.flywheel_speed(w, x["motor_pulley_diameter"], x["flywheel_diameter"])
-        w5 = nr.spindle_speed(w3, x["drive_gear_diameter"], x["spindle_gear_diameter"])
-        j = 2.0 * e / (w5 * w5)
-        g = x["shear_modulus"]
-        c7 = nr.torsional_stiffness(g, x["shaft_diameter"], x["shaft_length"])
-        c8 = nr.torsional_stiffness(g, x["spindle_diameter"], x["spindle_length"])
-        c = c7 * c8 / (c7 + c8)
-        drag = (x["spindle_count"] - 1) * x["idle_spindle_friction_torque"]
-        feed = _or_zero(x["coupling_slip_torque"]) * w / w5
-        drive = drive + (feed - drag)
-        fails = (w5 * w5 == 0.0) | (c7 + c8 == 0.0)
-    elif src == "rare_impact":
-        _need(x, (*_RI_NAMES, "tool_stiffness"), "with source 'rare_impact'")
-        c1, lam1 = x["power_spring_rate"], x["power_spring_preload"]
-        c2, lam2 = x["auxiliary_spring_rate"], x["auxiliary_spring_preload"]
-        mp, n_r, x0, alpha = (
-            x["roller_mass"],
-            x["roller_count"],
-            x["roller_radius"],
-            x["cone_angle"],
-        )
-        w_m = release_speed(c1, lam1, c2, lam2, x["release_travel"], mp, n_r, x0, alpha)
-        w_0 = liftoff_speed(c1, lam1, c2, lam2, mp, n_r, x0, alpha)
-        w_m = np.where(w_0 > w_m, w_0, w_m)
-        j = x["flywheel_inertia"]
-        e = 0.5 * j * w_m * w_m
-        c = x["tool_stiffness"]
-    else:
-        raise AssertionError(src)
-    return x["blow_efficiency"] * e, j, c, drive, fails
-
-
 def _squares_overflow(v: Any) -> Any:
     """Where Python's ``v**2`` raises OverflowError (a finite value whose square is not)."""
+    if not isinstance(v, np.ndarray):
+        f = float(v)
+        return math.isfinite(f) and not math.isfinite(f * f)
     return np.isfinite(v) & ~np.isfinite(np.asarray(v, dtype=float) ** 2)
 
 
 def _per_group(
-    x: Mapping[str, Any], names: tuple[str, ...], fn: Any, width: int
-) -> tuple[np.ndarray, np.ndarray, list[str]]:
+    x: Mapping[str, Any], names: tuple[str, ...], fn: Any, width: int, one: bool
+) -> tuple[Any, Any, list[str], EngineError | None]:
     """``fn`` (scalar inputs -> (floats, notes)) once per distinct combination of ``names``.
 
-    Returns (values of shape (width, points), refused per point, the first group's notes);
-    a group ``fn`` refuses (EngineError) is NaN and refused.
+    Returns (values of shape (width, points), refused per point, the first group's notes,
+    the first refusal); a group ``fn`` refuses (EngineError) is NaN and refused. One
+    design (``one``: no array among the inputs) is one group: a list of floats.
     """
-    n = _points(x)
+    notes: list[str] = []
+    if one:  # one design: one group, no arrays to fill
+        try:
+            got, notes = fn(x)
+        except EngineError as exc:
+            return [math.nan] * width, True, notes, exc
+        return [float(v) for v in got], False, notes, None
     varied = [k for k in names if isinstance(x.get(k), np.ndarray)]
+    n = _points(x)
     out = np.full((width, *n), np.nan)
     refused = np.zeros(n, dtype=bool)
-    notes: list[str] = []
+    error: EngineError | None = None
     if not varied:
         try:
             got, notes = fn(x)
-        except EngineError:
+        except EngineError as exc:
             refused[...] = True
+            error = exc
         else:
             out[:] = np.asarray(got, dtype=float).reshape(width, *([1] * len(n)))
-        return out, refused, notes
+        return out, refused, notes, error
     table = np.stack([np.broadcast_to(np.asarray(x[k], dtype=float), n) for k in varied], axis=-1)
     rows, inverse = np.unique(table.reshape(-1, len(varied)), axis=0, return_inverse=True)
     inverse = inverse.reshape(n)
@@ -1104,12 +1394,13 @@ def _per_group(
             point[k] = v
         try:
             got, group_notes = fn(point)
-        except EngineError:
+        except EngineError as exc:
             refused |= at
+            error = error or exc
             continue
         notes = notes or group_notes
         out[:, at] = np.asarray(got, dtype=float).reshape(width, 1)
-    return out, refused, notes
+    return out, refused, notes, error
 
 
 def _thread_and_joint(x: Mapping[str, Any]) -> tuple[tuple[float, float], list[str]]:
@@ -1119,101 +1410,9 @@ def _thread_and_joint(x: Mapping[str, Any]) -> tuple[tuple[float, float], list[s
     k = math.nan
     notes = [] if thread is None else list(thread[2])
     if x["joint_rate_from"] == "joint":
-        k, note = _rate(x, None, thread)
-        notes.append(note)
+        k, note = _joint_rate(x, thread)
+        notes.insert(0, note)
     return (per, k), notes
-
-
-@dataclasses.dataclass
-class _ArraySetup:
-    energy: Any
-    inertia: Any
-    stiffness: Any
-    drive: Any
-    speed: Any
-    rate: Any
-    per: Any  # None without a thread
-    target: Any  # None without a target
-    refused: np.ndarray
-    notes: list[str]
-
-
-#: The last :func:`_setup_array`: (the inputs' values, pinned, and the setup). A sweep asks
-#: the rungs' estimates and then the array path on the same inputs (the same dict of the
-#: same arrays): the bolt is resolved once for all three. A hit needs every value to be
-#: the *same object*; nothing mutates a sweep's arrays in place.
-_LAST_SETUP: tuple[tuple[Any, ...], _ArraySetup] | None = None
-
-
-def _setup_array(x: Mapping[str, Any]) -> _ArraySetup:
-    """:func:`_setup` (and :func:`_target`, :func:`_rate`) at many points."""
-    global _LAST_SETUP
-    key = tuple(x.items())
-    last = _LAST_SETUP
-    if (
-        last is not None
-        and len(last[0]) == len(key)
-        and all(a[0] == b[0] and a[1] is b[1] for a, b in zip(last[0], key, strict=True))
-    ):
-        return last[1]
-    setup = _setup_array_uncached(x)
-    _LAST_SETUP = (key, setup)
-    return setup
-
-
-def _setup_array_uncached(x: Mapping[str, Any]) -> _ArraySetup:
-    e_tool, j, c, drive, fails = _tool_array(x)
-    names = _THREAD_INPUTS + (_JOINT_INPUTS if x["joint_rate_from"] == "joint" else ())
-    got, refused, notes = _per_group(x, names, _thread_and_joint, 2)
-    per = None if x.get("thread_diameter") is None else got[0]
-    target: Any = None
-    if x.get("target_torque") is not None:
-        target = x["target_torque"]
-    elif x.get("target_preload") is not None:
-        if per is None:
-            _target(x, None)  # raises: a target preload needs the thread
-        target = x["target_preload"] * per
-    how = x["joint_rate_from"]
-    if how == "number":
-        _need(x, ("joint_rate",), "with joint_rate_from 'number'")
-        k = x["joint_rate"]
-    elif how.startswith("iso5393"):
-        if target is None:
-            _rate(x, None, None)  # raises: a test joint needs a target
-        k = target / ISO5393_ANGLE[how.split("_")[1]]
-    else:
-        k = got[1]
-    with np.errstate(all="ignore"):
-        speed = np.sqrt(2.0 * e_tool / j)
-        energy = 0.5 * j * speed**2
-        # the scalar code raises there (OverflowError of speed**2, ZeroDivisionError): refused
-        refused = refused | fails | _squares_overflow(speed) | _squares_overflow(drive)
-    refused = np.broadcast_to(refused, _points(x))
-    return _ArraySetup(energy, j, c, drive, speed, k, per, target, refused, notes)
-
-
-def _energy_errors_array(x: Mapping[str, Any]) -> tuple[Any, Any] | None:
-    """:func:`_energy_errors` at many points (NaN where the scalar form gives None)."""
-    if x["source"] == "clutch":
-        return None
-    try:
-        s = _setup_array(x)
-    except EngineError:
-        nan = np.full(_points(x), np.nan)
-        return nan, nan
-    with np.errstate(all="ignore"):
-        k = np.asarray(s.rate, dtype=float)
-        js, rest = x["struck_inertia"], x["restitution"]
-        ratio = s.stiffness / (s.stiffness + k)
-        after = 2.0 * js / s.inertia * ratio * ratio + 0.5 * (1.0 - rest**2)
-        kk = np.where(k > 0.0, k, 1.0)
-        peak = energy_blow_array(
-            s.energy, s.stiffness, kk, x["snug_torque"], x["breakaway_factor"], s.drive
-        )[0]
-        jr = s.inertia * js / (s.inertia + js)
-        peak_err = s.speed * np.sqrt(s.stiffness * jr) / np.maximum(peak, 1e-300)
-        bad = s.refused | ~(k > 0.0)
-        return np.where(bad, np.nan, after), np.where(bad, np.nan, after + peak_err)
 
 
 def _nullable(column: Any, null: np.ndarray) -> np.ndarray:
@@ -1231,7 +1430,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
         raise EngineError(f"blow.joint has no array path for the rung {ctx.rung!r}")
     if x["source"] == "clutch":
         return _vectorized_clutch(x, ctx)
-    s = _setup_array(x)
+    s = _setup(x)
     n = _points(x)
     t0 = x["snug_torque"]
     dead = s.refused.copy()
@@ -1240,11 +1439,9 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     lo, hi = x.get("preload_min"), x.get("preload_max")
     if s.per is not None and lo is not None and hi is not None:
         dead |= np.broadcast_to(lo > hi, n)  # "preload_min must not exceed preload_max"
-    e, c, drive = s.energy, s.stiffness, s.drive
+    e, c, drive = s.energy, s.tool.stiffness, s.tool.drive
     dead |= np.broadcast_to(e == 0.0, n)  # joint_energy_fraction divides by it: refused
     with np.errstate(all="ignore"):
-        saturation = (drive + np.sqrt(drive**2 + 2 * e * c)) / x["breakaway_factor"]
-        rigid = np.sqrt(2.0 * e * c) + drive
         series = blow_series_array(
             e,
             c,
@@ -1257,25 +1454,19 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             max_blows=x["max_blows"],
         )
         raw: dict[str, Any] = {
-            "tool_energy_used": e,
-            "tool_inertia_used": s.inertia,
-            "tool_speed": s.speed,
-            "tool_stiffness_used": c,
-            "joint_rate_used": s.rate,
-            "rigid_torque": rigid,
-            "peak_torque": series.peak,
-            "torque_after_first_blow": series.torque_after,
-            "final_torque": series.final_torque,
-            "saturation_torque": saturation,
-            "energy_supplied": e * series.blows,
+            **_tool_values(x, s),
+            **_blow_values(
+                ctx.rung,
+                s,
+                peak=series.peak,
+                rotation=series.rotation,
+                after=series.torque_after,
+                work=series.work,
+                final=series.final_torque,
+                blows=series.blows,
+                joint_work=series.joint_work,
+            ),
         }
-        if ctx.rung == "energy":
-            raw["nut_rotation"] = series.rotation
-            raw["joint_energy_fraction"] = series.work / e
-            raw["energy_into_joint"] = series.joint_work
-        if s.per is not None:
-            raw["preload_after_first_blow"] = series.torque_after / s.per
-            raw["final_preload"] = series.final_torque / s.per
     any_dead = bool(dead.any())
     values: dict[str, Any] = {}
     for name, column in raw.items():
@@ -1294,12 +1485,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     # a point the model refuses reports no check; if every point is refused, no check at all
     reports = not bool(dead.all())
     if s.per is not None and (lo is not None or hi is not None):
-        final = values["final_preload"]
-        verdict = np.full(n, "within", dtype=object)
-        if lo is not None:
-            verdict[np.broadcast_to(final < lo, n)] = "below"
-        if hi is not None:
-            verdict[np.broadcast_to(final > hi, n)] = "above"
+        verdict = np.broadcast_to(_window_verdict(values["final_preload"], lo, hi), n).copy()
         verdict[dead] = None
         values["preload_verdict"] = verdict
         if reports:
@@ -1353,14 +1539,9 @@ def _vectorized_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
     lo, hi = x.get("preload_min"), x.get("preload_max")
     if lo is not None or hi is not None:
         f_lo, f_hi = values["delivered_preload_min"], values["delivered_preload_max"]
-        ok = np.ones(n, dtype=bool)
-        if lo is not None:
-            ok &= np.broadcast_to(f_lo >= lo, n)
-        if hi is not None:
-            ok &= np.broadcast_to(f_hi <= hi, n)
-        # the scalar rule: "below" when a (non-zero) lower limit is undercut, else "above"
-        below = np.broadcast_to((lo != 0.0) & (f_lo < lo), n) if lo is not None else False
-        verdict = np.where(ok, "within", np.where(below, "below", "above")).astype(object)
+        ok, verdict = _clutch_verdict(f_lo, f_hi, lo, hi)
+        ok = np.broadcast_to(ok, n)
+        verdict = np.broadcast_to(verdict, n).copy()
         verdict[dead] = None
         values["preload_verdict"] = verdict
         if not bool(dead.all()):  # a refused point reports no check; all refused: none
@@ -1465,7 +1646,8 @@ BLOW = ModelSpec(
     ),
     source=(
         "Tools: [000] (nut-runner drive energy and stiffness), [002] (rare-impact release "
-        "speed), [001] (ball clutch slipping torque); joint: ISO 5393 test joints, the "
+        "speed and energy, from impact.rare's closed form), [001] (ball clutch slipping "
+        "torque); joint: ISO 5393 test joints, the "
         "tightening relation VDI 2230-1 R13 and the angle relation [004, eq. 8]; the blow: "
         "two-mass torsional impact with stick-slip of the nut (textbook mechanics)."
     ),

@@ -14,12 +14,10 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from .. import springs as sp
 from ..clutch import (
     ARRANGEMENTS,
     RECOMMENDED_GROOVE_ANGLE,
     RECOMMENDED_LOAD_FACTOR,
-    SELF_LOCKING_MARGIN,
     WORKABLE_SPRING_INDEX,
     ball_normal_force,
     ball_tangential_force,
@@ -30,7 +28,9 @@ from ..clutch import (
     spring_index,
     spring_rate,
     spring_shear_stress,
+    torque_against_lift,
     torque_limit,
+    torque_sharing,
     wahl_factor,
     wire_diameter_for_force,
 )
@@ -199,21 +199,15 @@ def _estimate(x: Mapping[str, Any]) -> Any:
     On arrays (a sweep or a study choosing ``auto`` per point): the same per
     point, NaN where a scalar call gives None.
     """
-    if np.ndim(x["groove_angle"]) or np.ndim(x["flank_friction"]):
-        a = np.asarray(x["groove_angle"], dtype=float)
-        fa = np.asarray(x["flank_friction"], dtype=float)
-        shift = np.where(fa == 0.0, TYPICAL_FLANK_FRICTION, FLANK_FRICTION_SCATTER)
-        with np.errstate(all="ignore"):
-            push_a = np.tan(a - np.arctan(fa))
-            shifted_a = np.tan(a - np.arctan(fa + shift))
-            return np.where((push_a > 0.0) & (shifted_a > 0.0), push_a / shifted_a - 1.0, np.nan)
-    alpha, f = float(x["groove_angle"]), float(x["flank_friction"])
-    delta = TYPICAL_FLANK_FRICTION if f == 0.0 else FLANK_FRICTION_SCATTER
-    push = math.tan(alpha - math.atan(f))
-    shifted = math.tan(alpha - math.atan(f + delta))
-    if push <= 0.0 or shifted <= 0.0:
-        return None
-    return push / shifted - 1.0
+    alpha, f = x["groove_angle"], np.asarray(x["flank_friction"], dtype=float)
+    shift = np.where(f == 0.0, TYPICAL_FLANK_FRICTION, FLANK_FRICTION_SCATTER)
+    with np.errstate(all="ignore"):
+        push = np.asarray(flank_push_factor(alpha, f))
+        shifted = np.asarray(flank_push_factor(alpha, f + shift))
+        estimate = np.where((push > 0.0) & (shifted > 0.0), push / shifted - 1.0, np.nan)
+    if estimate.ndim == 0:
+        return None if math.isnan(estimate) else float(estimate)
+    return estimate
 
 
 _RUNG = Rung(
@@ -228,18 +222,52 @@ _RUNG = Rung(
 )
 
 
+def _refused(x: Mapping[str, Any], wire: Any) -> dict[str, Any]:
+    """Where the physics refuses a design, by reason: True where refused (floats or arrays).
+
+    The one statement of each condition: a single run raises on it, naming the field
+    (:func:`_require_workable`, :func:`asbuilt.require_spring`); the array paths mask
+    those points and say how many each reason took (:func:`_refusal_notes`).
+    """
+    out: dict[str, Any] = {"groove_angle": x["groove_angle"] <= np.arctan(x["flank_friction"])}
+    if wire is not None:
+        out["spring_wire_diameter"] = wire >= x["spring_mean_diameter"]
+    out.update(asbuilt.refused(x))
+    return out
+
+
+#: What each refusal of :func:`_refused` means, by the field it names.
+_REFUSALS = {
+    "groove_angle": "the balls wedge: groove_angle is not above atan(flank_friction)",
+    "spring_wire_diameter": "no coil: spring_wire_diameter is not below spring_mean_diameter",
+    "spring_wire_diameter_table": "spring_wire_diameter is outside the spring_material's table",
+    "disc_inner_diameter": "disc_inner_diameter is not below disc_outer_diameter / 1.05",
+}
+
+
+def _refusal_notes(refused: Mapping[str, Any], n: int) -> list[str]:
+    """One note per reason that refuses some of the ``n`` points of an array path."""
+    notes = []
+    for reason, where in refused.items():
+        count = int(np.count_nonzero(where)) if np.ndim(where) else n * bool(where)
+        if count:
+            notes.append(f"{count} of {n} points refused: {_REFUSALS[reason]}")
+    return notes
+
+
 def _require_workable(x: Mapping[str, Any], wire: float | None) -> None:
-    """Cross-field refusals shared by both specs (scalar inputs only)."""
+    """Cross-field refusals shared by both specs (scalar inputs), on :func:`_refused`."""
     alpha, f = x["groove_angle"], x["flank_friction"]
-    rho = math.atan(f)
-    if alpha <= rho:
+    refused = _refused(x, wire)
+    if refused["groove_angle"]:
+        rho = math.atan(f)
         raise InfeasibleDesign(
             f"the clutch never slips: the flank angle α = {alpha / DEG:.3g}° is not above the "
             f"friction angle atan f = {rho / DEG:.3g}°, so the balls wedge in the grooves at "
             "any torque; make the flanks flatter (larger α) or reduce the flank friction",
             field="groove_angle",
         )
-    if wire is not None and wire >= x["spring_mean_diameter"]:
+    if wire is not None and refused["spring_wire_diameter"]:
         raise InputOutOfRange(
             f"spring_wire_diameter = {wire * 1e3:g} mm is not below the spring's mean coil "
             f"diameter D = {x['spring_mean_diameter'] * 1e3:g} mm: such a coil cannot exist "
@@ -248,29 +276,28 @@ def _require_workable(x: Mapping[str, Any], wire: float | None) -> None:
         )
 
 
-def _index_check(name: str, index: float, kw: float) -> Check:
+def _index_check(name: str, index: float, kw: float, ok: bool) -> Check:
     lo, hi = WORKABLE_SPRING_INDEX
-    if index < lo:
+    if ok:
+        detail = f"spring index D/d0 = {index:.4g} is within {lo:g}…{hi:g}"
+    elif index < lo:
         detail = (
             f"spring index D/d0 = {index:.4g} < {lo:g}: hard to coil and the inner fibre is "
             f"over-stressed (Wahl factor {kw:.3g}); use a larger coil diameter or thinner wire"
         )
-    elif index > hi:
+    else:
         detail = (
             f"spring index D/d0 = {index:.4g} > {hi:g}: a slender, floppy coil that buckles and "
             "tangles; use thicker wire or a smaller coil diameter"
         )
-    else:
-        detail = f"spring index D/d0 = {index:.4g} is within {lo:g}…{hi:g}"
-    return Check(name, lo <= index <= hi, detail)
+    return Check(name, ok, detail)
 
 
 def _stress_check(
-    name: str, stress: float, allowable: float | None, which: str = "wire"
+    name: str, stress: float, allowable: float | None, ok: bool, which: str = "wire"
 ) -> list[Check]:
     if allowable is None:
         return []
-    ok = stress <= allowable
     detail = (
         f"{which} shear stress {stress / 1e6:.4g} MPa "
         + ("≤" if ok else ">")
@@ -280,15 +307,14 @@ def _stress_check(
     return [Check(name, ok, detail)]
 
 
-def _groove_check(name: str, depth: float, ball_diameter: float, what: str) -> Check:
+def _groove_check(name: str, depth: float, ball_diameter: float, what: str, ok: bool) -> Check:
     """Groove depth (= spring deflection Δ in the source) against the ball radius.
 
     A ball sunk deeper than its radius has its centre below the groove rim: it
     can no longer protrude far enough to carry the other half-coupling's
     flank, and climbing out it meets the rim with its upper half, which wedges
-    rather than lifts it. So the depth must not exceed d/2.
+    rather than lifts it. So the depth must not exceed d/2 (``ok``, from the verdicts).
     """
-    ok = depth <= ball_diameter / 2.0
     if ok:
         detail = (
             f"groove depth ({what}) {depth * 1e3:.4g} mm ≤ ball radius {ball_diameter * 500:.4g} mm"
@@ -308,9 +334,8 @@ def _groove_check(name: str, depth: float, ball_diameter: float, what: str) -> C
     return Check(name, ok, detail)
 
 
-def _angle_check(alpha: float) -> Check:
-    lo, hi = RECOMMENDED_GROOVE_ANGLE
-    ok = lo <= alpha <= hi
+def _angle_check(alpha: float, ok: bool) -> Check:
+    lo = RECOMMENDED_GROOVE_ANGLE[0]
     if ok:
         detail = f"groove angle {alpha / DEG:.4g}° is within the source's 20…70°"
     elif alpha < lo:
@@ -326,10 +351,12 @@ def _angle_check(alpha: float) -> Check:
     return Check("groove_angle", ok, detail)
 
 
-def _arrangement_notes(x: Mapping[str, Any], force: float, push: float) -> list[str]:
-    d0_, i, kr = x["ball_circle_diameter"], x["ball_count"], x["load_factor"]
-    common = d0_ * force / (2.0 * push)
-    per_ball = kr * i * common
+def _arrangement_notes(x: Mapping[str, Any], force: float) -> list[str]:
+    i, kr = x["ball_count"], x["load_factor"]
+    common = torque_limit(
+        force, x["ball_circle_diameter"], x["groove_angle"], i, kr, x["flank_friction"]
+    )
+    per_ball = torque_sharing("per_ball", i, kr) * common
     if x["spring_arrangement"] == "common":
         first = (
             f"spring_arrangement = common: one spring presses all {i} balls through the "
@@ -357,13 +384,13 @@ def _arrangement_notes(x: Mapping[str, Any], force: float, push: float) -> list[
 
 def _friction_note(alpha: float, f: float) -> str:
     if f == 0.0:
-        typical = math.tan(alpha) / math.tan(alpha - math.atan(TYPICAL_FLANK_FRICTION)) - 1.0
+        typical = flank_push_factor(alpha) / flank_push_factor(alpha, TYPICAL_FLANK_FRICTION) - 1.0
         return (
             "flank_friction = 0, the paper's frictionless case: with lubricated steel flanks "
             f"(f ≈ {TYPICAL_FLANK_FRICTION:g}) the limit would be {typical:.1%} higher; give "
             "flank_friction to include it."
         )
-    rise = math.tan(alpha) / math.tan(alpha - math.atan(f)) - 1.0
+    rise = flank_push_factor(alpha) / flank_push_factor(alpha, f) - 1.0
     return (
         f"flank friction f = {f:g} (ρ = {math.degrees(math.atan(f)):.3g}°) raises the limit "
         f"by {rise:.1%} over the paper's frictionless formula."
@@ -409,11 +436,14 @@ def _forward_values(
         x["spring_arrangement"],
     )
     if x["driving_groove_angle"] is not None:
-        # both flanks lift the ball: the same spring holds less torque
-        limit = (
-            np.asarray(limit)
-            * flank_push_factor(alpha, f)
-            / combined_push_factor(alpha, f, x["driving_groove_angle"])
+        # both flanks lift the ball: the same spring holds less torque, T at zero lift
+        limit = torque_against_lift(
+            force,
+            alpha,
+            x["ball_circle_diameter"],
+            f,
+            x["driving_groove_angle"],
+            torque_sharing(x["spring_arrangement"], x["ball_count"], kr),
         )
     at = limit if x["torque"] is None else x["torque"]
     tangential = ball_tangential_force(at, x["ball_circle_diameter"], x["ball_count"], kr)
@@ -446,28 +476,35 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
             k: None if val is None else float(val) for k, val in _forward_values(x).items()
         }
     alpha, f = x["groove_angle"], x["flank_friction"]
-    push = float(flank_push_factor(alpha, f))
     spring = asbuilt.Spring(x)
-    lift = asbuilt.lift_of(x)
+    passed = {k: bool(ok) for k, ok in _ball_verdicts(x, v, spring).items()}
     checks: list[Check] = []
     if helical:
-        checks.append(_index_check("spring_index", v["spring_index"], v["wahl_factor"]))
+        checks.append(
+            _index_check(
+                "spring_index", v["spring_index"], v["wahl_factor"], passed["spring_index"]
+            )
+        )
         checks += _stress_check(
-            "spring_shear_stress", v["spring_shear_stress"], x["allowable_shear_stress"]
+            "spring_shear_stress",
+            v["spring_shear_stress"],
+            x["allowable_shear_stress"],
+            passed.get("spring_shear_stress", True),
         )
     checks += [
         _groove_check(
             "groove_depth",
-            lift,
+            asbuilt.lift_of(x),
             x["ball_diameter"],
             "= spring deflection Δ" if x["ball_lift"] is None else "= ball lift h",
+            passed["groove_depth"],
         ),
-        _angle_check(alpha),
+        _angle_check(alpha, passed["groove_angle"]),
     ]
     where = "at the torque limit"
     if x["torque"] is not None:
         where = f"at the given torque {x['torque']:.4g} N·m"
-        ok = x["torque"] <= v["torque_limit"]
+        ok = passed["torque_below_limit"]
         checks.append(
             Check(
                 "torque_below_limit",
@@ -478,9 +515,9 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 + ("" if ok else ": the clutch slips at this torque"),
             )
         )
-    checks += asbuilt.checks(x, spring, v)
+    checks += asbuilt.checks(x, spring, v, passed)
     notes = [
-        *_arrangement_notes(x, v["spring_force"], push),
+        *_arrangement_notes(x, v["spring_force"]),
         _friction_note(alpha, f),
         f"ball forces are for the most-loaded ball (K_r = {x['load_factor']:g}) {where}; "
         "F_a = F_t tan(α − ρ), F_N = F_t / (cos α + f sin α) [001, eq. 1].",
@@ -503,28 +540,14 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
 
 
-def _feasible_mask(x: Mapping[str, Any], wire: Any) -> npt.NDArray[np.bool_]:
-    """Where the scalar compute would not refuse (the slip and coil conditions)."""
-    ok = np.asarray(x["groove_angle"]) > np.arctan(x["flank_friction"])
-    if wire is not None:
-        ok = ok & (np.asarray(wire) < np.asarray(x["spring_mean_diameter"]))
-    return np.asarray(ok, dtype=bool)
-
-
-def _spring_mask(x: Mapping[str, Any], wire: Any) -> npt.NDArray[np.bool_]:
-    """Where :func:`asbuilt.require_spring` would not refuse the spring's numbers.
-
-    Its other refusals (a missing input) are the same at every point of a study: the
-    array paths leave those to the scalar compute.
-    """
-    if x["spring_type"] == "disc":
-        return np.asarray(
-            np.asarray(x["disc_inner_diameter"]) * 1.05 < np.asarray(x["disc_outer_diameter"])
-        )
-    if wire is not None and x["spring_material"] != "custom":
-        inside = np.isfinite(sp.tensile_strength_array(x["spring_material"], wire))
-        return np.asarray(inside, dtype=bool)
-    return np.asarray(True)
+def _feasible(x: Mapping[str, Any], wire: Any) -> tuple[npt.NDArray[np.bool_], list[str]]:
+    """Where a single run would not refuse the point, and notes on the points it would."""
+    refused = _refused(x, wire)
+    ok = np.asarray(True)
+    for where in refused.values():
+        ok = ok & ~np.asarray(where, dtype=bool)
+    n = _array_inputs(x) or 1
+    return ok, _refusal_notes(refused, n)
 
 
 def _masked(values: Mapping[str, Any], ok: npt.NDArray[np.bool_]) -> dict[str, Any]:
@@ -561,57 +584,29 @@ def _verdicts(ok: Any, where: Any) -> npt.NDArray[np.int8]:
     return np.where(where, np.asarray(ok, dtype=np.int8), np.int8(-1)).astype(np.int8)
 
 
-def _ball_check_arrays(
-    x: Mapping[str, Any], v: Mapping[str, Any], spring: asbuilt.Spring, ok: Any
-) -> dict[str, npt.NDArray[np.int8]]:
-    """The verdicts of :func:`_compute_ball`'s checks on arrays, the same comparisons.
+def _ball_verdicts(
+    x: Mapping[str, Any], v: Mapping[str, Any], spring: asbuilt.Spring
+) -> dict[str, Any]:
+    """Every check of clutch.ball, on floats or arrays: True where it passes.
 
-    ``v`` holds the array path's values before masking; ``ok`` is where the scalar
-    compute would not refuse the point (-1 elsewhere, as the loop leaves it unknown).
+    The one place the checks compare numbers: a single run words these verdicts
+    (:func:`_compute_ball`), the array path reports them per point.
     """
     lo, hi = WORKABLE_SPRING_INDEX
     out: dict[str, Any] = {}
-    helical = spring.kind == "helical"
-    if helical:
-        index = np.asarray(v["spring_index"])
+    if spring.kind == "helical":
+        index = v["spring_index"]
         out["spring_index"] = (lo <= index) & (index <= hi)
         if x["allowable_shear_stress"] is not None:
-            out["spring_shear_stress"] = (
-                np.asarray(v["spring_shear_stress"]) <= x["allowable_shear_stress"]
-            )
-    out["groove_depth"] = np.asarray(asbuilt.lift_of(x)) <= np.asarray(x["ball_diameter"]) / 2.0
+            out["spring_shear_stress"] = v["spring_shear_stress"] <= x["allowable_shear_stress"]
+    out["groove_depth"] = asbuilt.lift_of(x) <= x["ball_diameter"] / 2.0
     a_lo, a_hi = RECOMMENDED_GROOVE_ANGLE
-    alpha = np.asarray(x["groove_angle"])
+    alpha = x["groove_angle"]
     out["groove_angle"] = (a_lo <= alpha) & (alpha <= a_hi)
     if x["torque"] is not None:
-        out["torque_below_limit"] = np.asarray(x["torque"]) <= np.asarray(v["torque_limit"])
-    # the as-built checks (asbuilt.checks)
-    out["self_locking"] = np.asarray(v["self_locking_margin"]) >= SELF_LOCKING_MARGIN
-    allow = spring.permissible()
-    if allow is not None:
-        out["spring_stress_max"] = np.asarray(v["spring_stress_max"]) <= np.asarray(allow)
-    travel = np.asarray(x["spring_deflection"]) + np.asarray(v["total_lift"])
-    if not helical:
-        m = np.asarray(x["disc_series"])
-        t, h0 = np.asarray(x["disc_thickness"]), np.asarray(x["disc_cone_height"])
-        out["disc_not_past_flat"] = travel / m <= h0
-        # sp.disc_falling_region on arrays: (a - √(3a² - 6)/3)·t at the force maximum
-        a = h0 / t
-        disc = 3.0 * a * a - 6.0
-        s_max = (a - np.sqrt(np.where(disc > 0.0, disc, 0.0)) / 3.0) * t
-        setting = np.asarray(x["spring_deflection"]) / m
-        out["falling_curve"] = (disc > 0.0) & (setting + np.asarray(v["total_lift"]) / m > s_max)
-    elif x["spring_free_length"] is not None:
-        d, dm, n = x["spring_wire_diameter"], x["spring_mean_diameter"], x["spring_active_coils"]
-        need = np.asarray(sp.solid_length(d, n) + sp.minimum_gap_sum(d, dm, n))
-        out["solid_length"] = np.asarray(x["spring_free_length"]) - travel >= need
-        s_k = np.asarray(v["buckling_deflection"], dtype=float)
-        out["buckling"] = travel < np.where(np.isnan(s_k), np.inf, s_k)
-    if x["face_friction"] is not None:
-        out["residual_torque"] = np.asarray(v["residual_torque"]) <= asbuilt.RESIDUAL_SHARE * (
-            np.asarray(v["peak_torque"])
-        )
-    return {name: _verdicts(verdict, ok) for name, verdict in out.items()}
+        out["torque_below_limit"] = x["torque"] <= v["torque_limit"]
+    out.update(asbuilt.verdicts(x, spring, v))
+    return out
 
 
 def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
@@ -633,18 +628,21 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
         return Result(values={}, rung=ctx.rung, error_estimate=None)
     wire = x["spring_wire_diameter"] if helical else None
     with np.errstate(all="ignore"):
-        ok = _feasible_mask(x, wire) & _spring_mask(x, wire)
+        ok, refusals = _feasible(x, wire)
         # the 81-point characteristic only where an output or a check needs its peak
         peak = not helical or x["face_friction"] is not None or ctx.wants(*asbuilt.PEAK_OUTPUTS)
         values = _chunked_forward(x, peak)
         spring = asbuilt.Spring(x)
-        check_arrays = _ball_check_arrays(x, values, spring, ok)
+        check_arrays = {k: _verdicts(c, ok) for k, c in _ball_verdicts(x, values, spring).items()}
         values = _masked({k: v for k, v in values.items() if v is not None}, ok)
     return Result(
         values=_with_absent(values, BALL_CLUTCH.outputs, () if peak else asbuilt.PEAK_OUTPUTS),
         rung=ctx.rung,
         error_estimate=None,
-        notes=[f"spring_arrangement = {x['spring_arrangement']}; see a single run's notes"],
+        notes=[
+            f"spring_arrangement = {x['spring_arrangement']}; see a single run's notes",
+            *refusals,
+        ],
         check_arrays=check_arrays,
     )
 
@@ -847,7 +845,9 @@ def _required_force(x: Mapping[str, Any]) -> Any:
 
 def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
     """Every output of clutch.ball_setting, on floats or arrays."""
-    g, dm, ip = x["shear_modulus"], x["spring_mean_diameter"], x["spring_active_coils"]
+    # the material's modulus where one is chosen, as the as-built outputs take it
+    g = asbuilt.Spring(x).shear_modulus
+    dm, ip = x["spring_mean_diameter"], x["spring_active_coils"]
     force = _required_force(x)
     out: dict[str, Any] = {"required_spring_force": force}
     wire, deflection = x["spring_wire_diameter"], x["spring_deflection"]
@@ -871,7 +871,6 @@ def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
 def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
     drive = asbuilt.sizing(x)
     drive_notes: list[str] = []
-    drive_checks: list[Check] = []
     if x["target_torque"] is None:
         if not drive:
             raise InputOutOfRange(
@@ -884,18 +883,6 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"max(K T_N, T_a) with K = {x['service_factor']:g}, T_N = "
             f"{drive['rated_drive_torque']:.4g} N·m"
             + (f", T_a = {drive['start_torque']:.4g} N·m" if "start_torque" in drive else "")
-        )
-    elif drive:
-        ok = x["target_torque"] >= drive["required_slip_torque"]
-        drive_checks.append(
-            Check(
-                "target_covers_drive",
-                ok,
-                f"target {x['target_torque']:.4g} N·m "
-                + ("≥" if ok else "<")
-                + f" required slip torque {drive['required_slip_torque']:.4g} N·m"
-                + ("" if ok else ": the clutch would slip in normal work or at every start"),
-            )
         )
     wire, deflection = x["spring_wire_diameter"], x["spring_deflection"]
     helical = x["spring_type"] == "helical"
@@ -924,14 +911,17 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         v["required_wire_shear_stress"] = None
     alpha, f = x["groove_angle"], x["flank_friction"]
     allow = x["allowable_shear_stress"]
+    verdicts = _setting_verdicts(x, v, drive, not drive_notes)
+    passed = {k: bool(c == 1) for k, c in verdicts.items() if c != -1}
     checks: list[Check] = []
     if helical and wire is not None:
         kw = float(wahl_factor(v["spring_index"]))
-        checks.append(_index_check("spring_index", v["spring_index"], kw))
+        checks.append(_index_check("spring_index", v["spring_index"], kw, passed["spring_index"]))
         checks += _stress_check(
             "spring_shear_stress",
             v["spring_shear_stress"],
             allow,
+            passed.get("spring_shear_stress", True),
             f"given wire ({wire * 1e3:.4g} mm) at the required deflection,",
         )
         checks.append(
@@ -940,6 +930,7 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 asbuilt.lift_of(x, v["required_deflection"]),
                 x["ball_diameter"],
                 "= required deflection" if x["ball_lift"] is None else "= ball lift h",
+                passed["required_deflection_groove_depth"],
             )
         )
     if helical and deflection is not None:
@@ -955,11 +946,19 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 )
             )
         else:
-            checks.append(_index_check("required_wire_spring_index", idx, float(wahl_factor(idx))))
+            checks.append(
+                _index_check(
+                    "required_wire_spring_index",
+                    idx,
+                    float(wahl_factor(idx)),
+                    passed["required_wire_spring_index"],
+                )
+            )
             checks += _stress_check(
                 "required_wire_shear_stress",
                 v["required_wire_shear_stress"],
                 allow,
+                passed.get("required_wire_shear_stress", True),
                 f"required wire ({v['required_wire_diameter'] * 1e3:.4g} mm)",
             )
         checks.append(
@@ -968,27 +967,37 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 asbuilt.lift_of(x, deflection),
                 x["ball_diameter"],
                 "= given deflection" if x["ball_lift"] is None else "= ball lift h",
+                passed["groove_depth"],
             )
         )
-    if v.get("peak_setting_stress_max") is not None:
-        limit = asbuilt.Spring(x).permissible()
-        if limit is not None:
-            ok = v["peak_setting_stress_max"] <= limit
-            checks.append(
-                Check(
-                    "peak_setting_stress_max",
-                    ok,
-                    f"largest spring stress over the lift at the peak setting "
-                    f"{v['peak_setting_stress_max'] / 1e6:.4g} MPa "
-                    + ("≤" if ok else ">")
-                    + f" permissible {limit / 1e6:.4g} MPa",
-                )
+    if "peak_setting_stress_max" in passed:
+        limit = float(asbuilt.Spring(x).permissible())
+        ok = passed["peak_setting_stress_max"]
+        checks.append(
+            Check(
+                "peak_setting_stress_max",
+                ok,
+                f"largest spring stress over the lift at the peak setting "
+                f"{v['peak_setting_stress_max'] / 1e6:.4g} MPa "
+                + ("≤" if ok else ">")
+                + f" permissible {limit / 1e6:.4g} MPa",
             )
-    checks.append(_angle_check(alpha))
-    checks += drive_checks
-    push = float(flank_push_factor(alpha, f))
+        )
+    checks.append(_angle_check(alpha, passed["groove_angle"]))
+    if "target_covers_drive" in passed:
+        ok = passed["target_covers_drive"]
+        checks.append(
+            Check(
+                "target_covers_drive",
+                ok,
+                f"target {x['target_torque']:.4g} N·m "
+                + ("≥" if ok else "<")
+                + f" required slip torque {drive['required_slip_torque']:.4g} N·m"
+                + ("" if ok else ": the clutch would slip in normal work or at every start"),
+            )
+        )
     notes = [
-        *_arrangement_notes(x, v["required_spring_force"], push),
+        *_arrangement_notes(x, v["required_spring_force"]),
         _friction_note(alpha, f),
         "required_deflection is the nut setting (spring compression) that gives the target "
         "torque with the given wire; required_wire_diameter gives it at the given "
@@ -1014,11 +1023,11 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
 def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """clutch.ball_setting on arrays: every output and check of the scalar compute, helical.
 
-    Several inputs may vary at once. The peak setting and the suggested wire come
-    from :class:`asbuilt.SettingGrid` (the characteristic's lines in the setting)
-    instead of a root search per point. NaN (and -1 in the checks) where the scalar
-    compute refuses the point or leaves an output null. Disc stacks, and inputs
-    missing for the spring or the target, go to the scalar compute.
+    Several inputs may vary at once; the same functions as a single run
+    (:func:`asbuilt.setting_values`, :func:`asbuilt.sizing`). NaN (and -1 in the
+    checks) where the scalar compute refuses the point or leaves an output null.
+    Disc stacks, and inputs missing for the spring or the target, go to the scalar
+    compute.
     """
     helical = x["spring_type"] == "helical"
     wire, deflection = x["spring_wire_diameter"], x["spring_deflection"]
@@ -1030,69 +1039,66 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
     ):
         return Result(values={}, rung=ctx.rung, error_estimate=None)
     with np.errstate(all="ignore"):
-        drive = asbuilt.sizing_arrays(x)
+        drive = asbuilt.sizing(x)
         target_given = x["target_torque"] is not None
         if not target_given:
             if not drive:
                 return Result(values={}, rung=ctx.rung, error_estimate=None)
             x = {**x, "target_torque": drive["required_slip_torque"]}
-        ok = _feasible_mask(x, wire) & _spring_mask(x, wire)
+        ok, refusals = _feasible(x, wire)
         v: dict[str, Any] = dict(_setting_values(x))
-        force = v["required_spring_force"]
-        grid = asbuilt.SettingGrid(x)
-        if wire is not None:
-            spring = asbuilt.Spring(x)
-            v["required_peak_setting"], v["peak_setting_stress_max"] = asbuilt.peak_setting_arrays(
-                x, grid, spring, x["target_torque"], force
-            )
-        v.update(asbuilt.suggest_wire_arrays(x, grid, x["target_torque"], force))
+        v.update(asbuilt.setting_values(x, v["required_spring_force"])[0])
         v.update(drive)
-        check_arrays = _setting_check_arrays(x, v, drive, ok, target_given)
+        check_arrays = {
+            k: _verdicts(c, ok) for k, c in _setting_verdicts(x, v, drive, target_given).items()
+        }
         values = _masked(v, ok)
     return Result(
         values=_with_absent(values, BALL_CLUTCH_SETTING.outputs),
         rung=ctx.rung,
         error_estimate=None,
+        notes=refusals,
         check_arrays=check_arrays,
     )
 
 
-def _setting_check_arrays(
+def _setting_verdicts(
     x: Mapping[str, Any],
     v: Mapping[str, Any],
     drive: Mapping[str, Any],
-    ok: Any,
     target_given: bool,
-) -> dict[str, npt.NDArray[np.int8]]:
-    """The verdicts of :func:`_compute_setting`'s checks on arrays (helical springs).
+) -> dict[str, Any]:
+    """Every check of clutch.ball_setting, on floats or arrays: int8, 1 passes, 0 fails.
 
-    -1 where the point is refused (``ok`` False) or the scalar compute does not report
-    the check there (no coil for the required wire, no peak setting).
+    -1 where the check is not reported (no coil for the required wire, no peak
+    setting). The one place the checks compare numbers: a single run words these
+    verdicts (:func:`_compute_setting`), the array path reports them per point.
     """
     lo, hi = WORKABLE_SPRING_INDEX
     allow = x["allowable_shear_stress"]
     d_half = np.asarray(x["ball_diameter"]) / 2.0
+    helical = x["spring_type"] == "helical"
     out: dict[str, Any] = {}
-    if x["spring_wire_diameter"] is not None:
+    if helical and x["spring_wire_diameter"] is not None:
         index = np.asarray(v["spring_index"])
         out["spring_index"] = (lo <= index) & (index <= hi)
         if allow is not None:
             out["spring_shear_stress"] = np.asarray(v["spring_shear_stress"]) <= allow
         lift = asbuilt.lift_of(x, v["required_deflection"])
         out["required_deflection_groove_depth"] = np.asarray(lift) <= d_half
-    if x["spring_deflection"] is not None:
+    if helical and x["spring_deflection"] is not None:
         index = np.asarray(v["required_wire_spring_index"])
         no_coil = index <= 1.0
         out["required_wire_spring_index"] = (lo <= index) & (index <= hi) & ~no_coil
         if allow is not None:
-            stress_ok = np.asarray(v["required_wire_shear_stress"]) <= allow
-            out["required_wire_shear_stress"] = np.where(no_coil, -1, stress_ok)
+            stress = np.asarray(v["required_wire_shear_stress"], dtype=float)
+            out["required_wire_shear_stress"] = np.where(no_coil, -1, stress <= allow)
         lift = asbuilt.lift_of(x, x["spring_deflection"])
         out["groove_depth"] = np.asarray(lift) <= d_half
-    if "peak_setting_stress_max" in v:
+    if v.get("peak_setting_stress_max") is not None:
         limit = asbuilt.Spring(x).permissible()
         if limit is not None:
-            peak = np.asarray(v["peak_setting_stress_max"])
+            peak = np.asarray(v["peak_setting_stress_max"], dtype=float)
             out["peak_setting_stress_max"] = np.where(np.isnan(peak), -1, peak <= limit)
     a_lo, a_hi = RECOMMENDED_GROOVE_ANGLE
     alpha = np.asarray(x["groove_angle"])
@@ -1100,7 +1106,7 @@ def _setting_check_arrays(
     if drive and target_given:
         required = np.asarray(drive["required_slip_torque"])
         out["target_covers_drive"] = np.asarray(x["target_torque"]) >= required
-    return {name: _verdicts(verdict, ok) for name, verdict in out.items()}
+    return {name: np.asarray(verdict).astype(np.int8) for name, verdict in out.items()}
 
 
 BALL_CLUTCH_SETTING = ModelSpec(

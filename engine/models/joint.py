@@ -16,6 +16,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, replace
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -23,6 +24,7 @@ import numpy as np
 from .. import fasteners as fa
 from .. import joint as jt
 from .. import preload as pl
+from .. import threads as th
 from ..errors import EngineError, InputOutOfRange
 from ..preload_methods import METHODS, get_method
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
@@ -458,376 +460,297 @@ class JointSolution:
 # --------------------------------------------------------------------------- helpers
 
 
-def _plates(x: Mapping[str, Any]) -> tuple[list[float], list[float], list[float]]:
-    thick, moduli, alphas = [], [], []
-    e1, a1 = float(x["plate1_youngs_modulus"]), float(x["plate1_expansion"])
-    for i in range(1, MAX_PLATES + 1):
-        h = x.get(f"plate{i}_thickness")
-        if h is None or float(h) <= 0.0:
-            continue
-        e, a = x.get(f"plate{i}_youngs_modulus"), x.get(f"plate{i}_expansion")
-        thick.append(float(h))
-        moduli.append(e1 if e is None else float(e))
-        alphas.append(a1 if a is None else float(a))
-    return thick, moduli, alphas
-
-
-def _friction(x: Mapping[str, Any], name: str) -> tuple[float, float]:
-    lo = float(x[f"{name}_min"])
-    hi = x.get(f"{name}_max")
-    hi = lo if hi is None else float(hi)
-    if hi < lo:
-        raise InputOutOfRange(
-            f"{name}_max = {hi:g} is below {name}_min = {lo:g}: must be ≥ {lo:g}",
-            field=f"{name}_max",
-        )
-    return lo, hi
-
-
-def _shank_sections(bolt: Bolt, x: Mapping[str, Any], grip: float) -> tuple[list, float]:
-    l_shank, l_reduced = float(x["shank_length"]), float(x["reduced_length"])
-    if l_shank + l_reduced > grip * (1.0 + 1e-12):
-        raise InputOutOfRange(
-            f"shank_length + reduced_length = {(l_shank + l_reduced) * 1e3:g} mm exceeds the "
-            f"grip l_K = {grip * 1e3:g} mm (sum of the plates): must be ≤ {grip * 1e3:g} mm",
-            field="shank_length",
-        )
-    if l_reduced > 0.0 and x.get("reduced_diameter") is None:
-        raise InputOutOfRange(
-            "reduced_diameter is required when reduced_length > 0", field="reduced_diameter"
-        )
-    shank_d = bolt.diameter if x.get("shank_diameter") is None else float(x["shank_diameter"])
-    reduced_d = bolt.diameter if x.get("reduced_diameter") is None else float(x["reduced_diameter"])
-    for name, value in (("shank_diameter", shank_d), ("reduced_diameter", reduced_d)):
-        if value > bolt.diameter * (1 + 1e-12) and x.get(name) is not None:
-            raise InputOutOfRange(
-                f"{name} = {value * 1e3:g} mm exceeds the thread diameter d = "
-                f"{bolt.diameter * 1e3:g} mm: must be ≤ {bolt.diameter * 1e3:g} mm",
-                field=name,
-            )
-    sections = [(l_shank, shank_d), (l_reduced, reduced_d)]
-    free = max(grip - l_shank - l_reduced, 0.0)
-    return [s for s in sections if s[0] > 0.0], free
-
-
-def _per_newton(bolt: Bolt, mu_g: float, mu_k: float) -> tuple[float, float]:
-    k_thread, k_bearing = pl.tightening_torque_per_preload(
-        bolt.pitch,
-        bolt.pitch_diameter,
-        bolt.diameter,
-        mu_g,
-        mu_k,
-        bolt.bearing_outer_diameter,
-        bolt.hole_diameter,
-        "vdi2230",
-    )
-    return float(k_thread), float(k_bearing)
-
-
 def _kn(force: float) -> str:
     return f"{force / 1e3:.4g} kN"
 
 
-# --------------------------------------------------------------------------- compute
+# --------------------------------------------------------------------------- the procedure
+#
+# One procedure for one design or many: ``_solve`` runs the VDI 2230-1 steps R0–R13 on
+# floats (a single run: :func:`_compute`) or on numpy arrays, one entry per point (a sweep,
+# a study's chunk: :func:`_vectorized`). Every relation is a function of engine.joint or
+# engine.preload; the adapters below only turn inputs into columns and the solved joint
+# into a result. A point the physics refuses is refused by the same line on both paths:
+# alone it raises (InputOutOfRange naming the field, or an arithmetic error the runner
+# reports), among many it is masked and null in every output.
 
 
-def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    bolt, notes = resolve_bolt(x)
-    checks: list[Check] = []
-    warnings: list[str] = []
+class _Refusals:
+    """The points a procedure refuses: raises at once for one design, masks for many."""
+
+    __slots__ = ("many", "mask")
+
+    def __init__(self, mask: Any, many: bool) -> None:
+        self.mask = mask
+        self.many = many
+
+    def add(self, where: Any, field: str, message: Callable[[], str]) -> None:
+        """Refuse where ``where`` holds, naming ``field`` and the allowed range."""
+        if self.many:
+            self.mask = self.mask | where
+        elif where:
+            raise InputOutOfRange(message(), field=field)
+
+    def arithmetic(self, where: Any, what: str) -> None:
+        """Refuse where the arithmetic fails (alone: as Python's float arithmetic does)."""
+        if self.many:
+            self.mask = self.mask | where
+        elif where:
+            raise ZeroDivisionError(what)
+
+
+_TOO_WIDE = "{0} = {1:g} mm exceeds the thread diameter d = {2:g} mm: must be ≤ {2:g} mm"
+
+
+def _larger(a: Any, b: Any) -> Any:
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return np.maximum(a, b)
+    return max(a, b)
+
+
+def _plain(value: Any) -> Any:
+    """A numpy scalar as a Python float (its arithmetic is several times faster); arrays as is."""
+    return value if isinstance(value, np.ndarray) else float(value)
+
+
+def _finite_or(value: Any, other: Any) -> Any:
+    if isinstance(value, np.ndarray):
+        return np.where(np.isfinite(value), value, other)
+    return value if math.isfinite(value) else other
+
+
+def _overflows_squared(value: Any) -> Any:
+    """Where a finite value's square overflows (Python floats raise there; arrays give inf)."""
+    if isinstance(value, np.ndarray):
+        return np.isfinite(value) & ~np.isfinite(value * value)
+    return False  # a float that overflows has raised OverflowError already
+
+
+def _solve(
+    x: Mapping[str, Any],
+    col: Callable[[str], Any],
+    b: Mapping[str, Any],
+    refusals: _Refusals,
+) -> dict[str, Any]:
+    """The VDI 2230-1 chain R0–R13 for the inputs ``x`` and the bolt columns ``b``.
+
+    ``col(name)`` is an input as a float (one design) or a float array (many); text and
+    choice inputs are read from ``x``. Returns every output under its name plus the
+    intermediate values the checks, notes and series need (keys starting with ``_``), and
+    per check ``(applies, passes)`` under ``_checks``.
+    """
+
+    def col_or(name: str, other: Any) -> Any:
+        return other if x.get(name) is None else col(name)
+
     joint_type = str(x["joint_type"])
-    d, d_w, d_h = bolt.diameter, bolt.bearing_outer_diameter, bolt.hole_diameter
+    d, d_w, d_h, pitch = b["diameter"], b["bearing_outer_diameter"], b["hole_diameter"], b["pitch"]
+    d2, yield_strength, a_s = b["pitch_diameter"], b["yield_strength"], b["stress_area"]
 
-    # R0/R3 geometry -----------------------------------------------------------------
-    thick, moduli, alphas = _plates(x)
+    # R0/R3 geometry (a plate of thickness 0 adds exactly 0) -----------------------------------
+    e1, a1 = col("plate1_youngs_modulus"), col("plate1_expansion")
+    thick, moduli, alphas = [], [], []
+    for i in range(1, MAX_PLATES + 1):
+        if x.get(f"plate{i}_thickness") is None:
+            continue
+        thick.append(_larger(col(f"plate{i}_thickness"), 0.0))
+        moduli.append(col_or(f"plate{i}_youngs_modulus", e1))
+        alphas.append(col_or(f"plate{i}_expansion", a1))
+    plates = sum(h > 0.0 for h in thick)
     grip = sum(thick)
-    outer = x.get("outer_diameter")
-    if outer is not None and float(outer) < d_w * (1.0 - 1e-12):
-        raise InputOutOfRange(
-            f"outer_diameter D_A = {float(outer) * 1e3:g} mm is smaller than the bearing "
-            f"diameter d_W = {d_w * 1e3:g} mm: must be ≥ {d_w * 1e3:g} mm (D_A = d_W is the "
-            "sleeve)",
-            field="outer_diameter",
+    outer = None if x.get("outer_diameter") is None else col("outer_diameter")
+    if outer is not None:
+        refusals.add(
+            outer < d_w * (1.0 - 1e-12),
+            "outer_diameter",
+            lambda: (
+                f"outer_diameter D_A = {outer * 1e3:g} mm is smaller than the bearing "
+                f"diameter d_W = {d_w * 1e3:g} mm: must be ≥ {d_w * 1e3:g} mm (D_A = d_W is the "
+                "sleeve)"
+            ),
         )
-    sections, free_thread = _shank_sections(bolt, x, grip)
-    e_s = float(x["youngs_modulus"])
-    nut_e = x.get("nut_youngs_modulus")
+    l_shank, l_reduced = col("shank_length"), col("reduced_length")
+    refusals.add(
+        l_shank + l_reduced > grip * (1.0 + 1e-12),
+        "shank_length",
+        lambda: (
+            f"shank_length + reduced_length = {(l_shank + l_reduced) * 1e3:g} mm exceeds "
+            f"the grip l_K = {grip * 1e3:g} mm (sum of the plates): must be ≤ {grip * 1e3:g} mm"
+        ),
+    )
+    if x.get("reduced_diameter") is None:
+        refusals.add(
+            l_reduced > 0.0,
+            "reduced_diameter",
+            lambda: "reduced_diameter is required when reduced_length > 0",
+        )
+    shank_d, reduced_d = col_or("shank_diameter", d), col_or("reduced_diameter", d)
+    for name, value in (("shank_diameter", shank_d), ("reduced_diameter", reduced_d)):
+        if x.get(name) is not None:
+            refusals.add(
+                value > d * (1 + 1e-12),
+                name,
+                partial(
+                    _TOO_WIDE.format,
+                    name,
+                    value * 1e3,
+                    d * 1e3,
+                ),
+            )
+    sections = [(l_shank, shank_d), (l_reduced, reduced_d)]
+    free_thread = _larger(grip - l_shank - l_reduced, 0.0)
     bolt_c = jt.bolt_compliance(
         d,
-        bolt.minor_diameter,
-        e_s,
+        b["minor_diameter"],
+        col("youngs_modulus"),
         sections,
         free_thread,
         str(x["head"]),
         joint_type,
-        None if nut_e is None else float(nut_e),
+        col_or("nut_youngs_modulus", None),
     )
-    parts = jt.clamped_compliance(
-        thick, moduli, d_w, d_h, None if outer is None else float(outer), joint_type
-    )
+    parts = jt.clamped_compliance(thick, moduli, d_w, d_h, outer, joint_type)
     delta_s, delta_p = bolt_c.total, parts.total
-    n = float(x["load_introduction"])
     phi_k = jt.load_factor(delta_s, delta_p, 1.0)
-    phi_n = n * phi_k
-    if outer is None:
-        notes.append(
-            f"D_A not given: plates taken just wide enough for the full cone, D_A = D_A,Gr = "
-            f"{parts.outer_diameter * 1e3:.4g} mm (our convention; VDI's cone-angle fit needs a "
-            "D_A); a wider plate is stiffer by that fit"
-        )
-    if parts.tangent <= jt.MIN_CONE_TANGENT:
-        warnings.append(
-            f"plates very thin against d_W: the cone tangent is held at {jt.MIN_CONE_TANGENT}"
-        )
+    phi_n = jt.load_factor(delta_s, delta_p, col("load_introduction"))
 
-    # R2 required clamp force ------------------------------------------------------------
-    f_q = float(x["transverse_load"])
-    q_f, mu_t = int(x["slip_interfaces"]), float(x["interface_friction"])
+    # R2 required clamp force -------------------------------------------------------------------
+    f_q, q_f, mu_t = col("transverse_load"), col("slip_interfaces"), col("interface_friction")
     f_kq = jt.transverse_clamp_force(f_q, q_f, mu_t)
-    f_kp = float(x["sealing_clamp_force"])
-    f_kerf = max(f_kq, f_kp)
+    f_kerf = jt.required_clamp_force(f_kq, col("sealing_clamp_force"))
 
-    # R1 tightening factor and friction ----------------------------------------------------
+    # R1 friction box, loads --------------------------------------------------------------------
     method = get_method(str(x["method"]))
-    mu_g_lo, mu_g_hi = _friction(x, "thread_friction")
-    mu_k_lo, mu_k_hi = _friction(x, "bearing_friction")
-    f_a = float(x["working_load"])
-    f_a_min = f_a if x.get("working_load_min") is None else float(x["working_load_min"])
-    if f_a_min > f_a:
-        raise InputOutOfRange(
-            f"working_load_min = {f_a_min:g} N exceeds working_load = {f_a:g} N: must be ≤ "
-            f"{f_a:g} N",
-            field="working_load_min",
-        )
-
-    # R4 losses ------------------------------------------------------------------------------
-    bearing_faces = 2 if joint_type == "through" else 1
-    interfaces = len(thick) - 1 if joint_type == "through" else len(thick)
-    load_kind = "transverse" if f_q > 0.0 else "axial"
-    f_z_len = jt.embedding(str(x["surface_roughness"]), load_kind, bearing_faces, interfaces)
-    f_z = jt.embedding_loss(f_z_len, delta_s, delta_p)
-    dt_s = float(x["temperature_change"])
-    dt_p = (
-        dt_s if x.get("plate_temperature_change") is None else float(x["plate_temperature_change"])
-    )
-    alpha_len = sum(h * a for h, a in zip(thick, alphas, strict=True))
-
-    # R7 permissible preload at the smallest section -----------------------------------------
-    d0, where = jt.smallest_section(bolt.stress_diameter, sections)
-    a0 = bolt.stress_area if where == "thread" else 0.25 * math.pi * d0 * d0
-    nu = float(x["utilization"])
-    beta = float(pl.torsion_factor(bolt.pitch, bolt.pitch_diameter, d0, mu_g_lo, "vdi2230"))
-    f_mzul = pl.assembly_preload(bolt.yield_strength, a0, beta, nu)
-    f_myield = pl.assembly_preload(bolt.yield_strength, a0, beta, 1.0)
-    if where == "shank":
-        notes.append(
-            f"smallest section is the shank, d_0 = {d0 * 1e3:.4g} mm < d_S = "
-            f"{bolt.stress_diameter * 1e3:.4g} mm: F_M,zul = {_kn(f_mzul)} at A_0 = "
-            f"{a0 * 1e6:.4g} mm² (VDI 2230-1 R7)"
-        )
-
-    # assembly preload range: torque specification or design at F_M,zul ------------------
-    kt_low, kb_low = _per_newton(bolt, mu_g_lo, mu_k_lo)
-    k_low, k_high = kt_low + kb_low, sum(_per_newton(bolt, mu_g_hi, mu_k_hi))
-    m_u = float(x["prevailing_torque"])
-    m_u_min = m_u if x.get("prevailing_torque_min") is None else float(x["prevailing_torque_min"])
-    if m_u_min > m_u:
-        raise InputOutOfRange(
-            f"prevailing_torque_min = {m_u_min:g} N*m exceeds prevailing_torque = {m_u:g} N*m: "
-            f"must be ≤ {m_u:g} N*m",
-            field="prevailing_torque_min",
-        )
-    if x.get("tightening_torque") is not None:
-        torque = float(x["tightening_torque"])
-        tol = float(x["torque_tolerance"])
-        fm_min, fm_max = jt.preload_bounds_from_torque(torque, tol, m_u, k_low, k_high, m_u_min)
-        alpha_a = fm_max / fm_min if fm_min > 0.0 else math.inf
-        notes.append(
-            f"torque {torque:.4g} N·m ± {tol:.0%}, prevailing {m_u:.3g} N·m, μ_G "
-            f"{mu_g_lo:g}…{mu_g_hi:g}, μ_K {mu_k_lo:g}…{mu_k_hi:g}: F_M = {_kn(fm_min)} "
-            f"(M_A,min at μ_max) … {_kn(fm_max)} (M_A,max at μ_min), VDI 2230-1 R13 inverted"
-        )
-        design_torque = torque
-    else:
-        alpha_a = (
-            method.tightening_factor
-            if x.get("tightening_factor") is None
-            else float(x["tightening_factor"])
-        )
-        fm_max = f_mzul
-        fm_min = f_mzul / alpha_a
-        design_torque = f_mzul * kt_low + f_mzul * kb_low + m_u
-        notes.append(
-            f"no torque given: tightened to F_M,zul = {_kn(f_mzul)} with α_A = {alpha_a:.3g} "
-            f"({method.key if x.get('tightening_factor') is None else 'as given'}); "
-            f"M_A = {design_torque:.4g} N·m at μ_G,min, μ_K,min (VDI 2230-1 R13)"
-        )
-    if x.get("tightening_torque") is not None and x.get("tightening_factor") is not None:
-        notes.append("tightening_factor ignored: the torque specification sets the preload range")
-
-    f_v_min = fm_min - f_z
-    th_loss = jt.thermal_preload_loss(
-        f_v_min,
-        grip,
-        float(x["bolt_expansion"]),
-        dt_s,
-        alpha_len,
-        dt_p,
-        delta_s,
-        delta_p,
-        float(x["bolt_modulus_ratio"]),
-        float(x["plate_modulus_ratio"]),
-    )
-
-    # R5/R6 required window -------------------------------------------------------------------
-    alpha_req = alpha_a if math.isfinite(alpha_a) else method.tightening_factor
-    req_min = jt.minimum_assembly_preload(f_kerf, f_a, phi_n, f_z, th_loss)
-    req_max = alpha_req * req_min
-    window_ok = req_max <= f_mzul * (1.0 + 1e-12)
-    loss = f_z + max(th_loss, 0.0)
-    if 1.0 - phi_n > 0.0:
-        fa_limit = max((f_mzul / alpha_req - f_kerf - loss) / (1.0 - phi_n), 0.0)
-        fa_sep_any = max((f_mzul - loss) / (1.0 - phi_n), 0.0)
-    else:
-        fa_limit = fa_sep_any = math.inf
-    checks.append(
-        Check(
-            "R7_window_fits",
-            window_ok,
-            f"required F_M,max = α_A F_M,min = {alpha_req:.3g} × {_kn(req_min)} = {_kn(req_max)} "
-            f"vs F_M,zul = {_kn(f_mzul)}"
-            + (
-                ""
-                if window_ok
-                else f": the largest F_A this bolt can carry with α_A = {alpha_req:.3g} is "
-                f"{_kn(fa_limit)}; use a more accurate method, a larger or stronger bolt"
+    mu_g_lo, mu_k_lo = col("thread_friction_min"), col("bearing_friction_min")
+    mu_g_hi = col_or("thread_friction_max", mu_g_lo)
+    mu_k_hi = col_or("bearing_friction_max", mu_k_lo)
+    for name, lo, hi in (
+        ("thread_friction", mu_g_lo, mu_g_hi),
+        ("bearing_friction", mu_k_lo, mu_k_hi),
+    ):
+        refusals.add(
+            hi < lo,
+            f"{name}_max",
+            partial(
+                "{0}_max = {1:g} is below {0}_min = {2:g}: must be ≥ {2:g}".format, name, hi, lo
             ),
         )
-    )
-    no_sep_possible = f_a < fa_sep_any
-    checks.append(
-        Check(
-            "separation_avoidable",
-            no_sep_possible,
-            f"F_A = {_kn(f_a)} vs {_kn(fa_sep_any)}, the load that separates the joint even at "
-            f"F_M,zul after embedding and thermal loss ((F_M,zul − F_Z − ΔF_th)/(1 − Φ_n))"
-            + ("" if no_sep_possible else ": no admissible preload keeps this joint closed"),
-        )
-    )
-
-    # residual clamp force and separation at the assembly window's bottom (R12, separation)
-    f_kr_min = fm_min - (1.0 - phi_n) * f_a - f_z - max(th_loss, 0.0)
-    fa_sep = max(fm_min - f_z - max(th_loss, 0.0), 0.0) / (1.0 - phi_n) if phi_n < 1.0 else math.inf
-    clamp_ok = f_kr_min >= f_kerf * (1.0 - 1e-12)
-    checks.append(
-        Check(
-            "residual_clamp_force",
-            clamp_ok,
-            f"F_KR,min = F_M,min − (1 − Φ_n) F_A − F_Z − ΔF_th = {_kn(f_kr_min)} vs required "
-            f"F_K,erf = {_kn(f_kerf)}"
-            + ("" if clamp_ok else ": raise the preload floor (torque, method) or lower F_A"),
-        )
-    )
-    if x.get("tightening_torque") is not None:
-        top_ok = fm_max <= f_mzul * (1.0 + 1e-12)
-        checks.append(
-            Check(
-                "R7_max_below_permissible",
-                top_ok,
-                f"F_M,max = {_kn(fm_max)} from the torque vs F_M,zul = {_kn(f_mzul)} "
-                f"(ν = {nu:g} at μ_G,min)"
-                + ("" if top_ok else ": lower the torque or narrow its tolerance"),
-            )
-        )
-
-    # R8 working stress ------------------------------------------------------------------------
-    add_load = phi_n * f_a
-    f_s_max = fm_max + add_load
-    stress = jt.service_stress(f_s_max, fm_max, bolt.pitch, bolt.pitch_diameter, d0, mu_g_lo)
-    s_f = bolt.yield_strength / stress.equivalent
-    checks.append(
-        Check(
-            "R8_working_stress",
-            s_f >= 1.0,
-            f"σ_red,B = {stress.equivalent / 1e6:.4g} MPa at F_S,max = {_kn(f_s_max)} vs R_p0.2 "
-            f"= {bolt.yield_strength / 1e6:.4g} MPa: S_F = {s_f:.3g} (≥ 1.0)",
-        )
+    f_a = col("working_load")
+    f_a_min = col_or("working_load_min", f_a)
+    refusals.add(
+        f_a_min > f_a,
+        "working_load_min",
+        lambda: (
+            f"working_load_min = {f_a_min:g} N exceeds working_load = {f_a:g} N: must be ≤ "
+            f"{f_a:g} N"
+        ),
     )
 
-    # R9 alternating stress ----------------------------------------------------------------------
-    sigma_a = phi_n * (f_a - f_a_min) / (2.0 * bolt.stress_area)
-    f_sm = fm_max + phi_n * 0.5 * (f_a + f_a_min)
-    sigma_as = jt.endurance_limit(
-        d, str(x["rolling"]), f_sm, bolt.stress_area * bolt.yield_strength
+    # R4 embedding --------------------------------------------------------------------------------
+    faces, interfaces = jt.embedding_locations(joint_type, plates)
+    f_z_len = jt.embedding_for_load(str(x["surface_roughness"]), f_q, faces, interfaces)
+    f_z = jt.embedding_loss(f_z_len, delta_s, delta_p)
+
+    # R7 permissible preload at the smallest section ---------------------------------------------
+    d0, where = jt.smallest_section(b["stress_diameter"], sections)
+    a0 = jt.smallest_area(d0, a_s, where)
+    nu = col("utilization")
+    beta = _plain(pl.torsion_factor(pitch, d2, d0, mu_g_lo, "vdi2230"))
+    f_mzul = pl.assembly_preload(yield_strength, a0, beta, nu)
+    f_myield = pl.assembly_preload(yield_strength, a0, beta, 1.0)
+
+    # R1/R13 assembly preload range: torque specification, or tightened to F_M,zul ---------------
+    m_u = col("prevailing_torque")
+    m_u_min = col_or("prevailing_torque_min", m_u)
+    refusals.add(
+        m_u_min > m_u,
+        "prevailing_torque_min",
+        lambda: (
+            f"prevailing_torque_min = {m_u_min:g} N*m exceeds prevailing_torque = "
+            f"{m_u:g} N*m: must be ≤ {m_u:g} N*m"
+        ),
     )
-    s_d = sigma_as / sigma_a if sigma_a > 0.0 else math.inf
-    if sigma_a > 0.0:
-        checks.append(
-            Check(
-                "R9_fatigue",
-                s_d >= 1.2,
-                f"σ_a = Φ_n (F_A,max − F_A,min)/(2 A_S) = {sigma_a / 1e6:.3g} MPa vs σ_AS = "
-                f"{sigma_as / 1e6:.3g} MPa: S_D = {s_d:.3g} (VDI asks ≥ 1.2)",
-            )
+    torque_given = x.get("tightening_torque") is not None
+    kt_low, kb_low = pl.tightening_torque_per_preload(pitch, d2, d, mu_g_lo, mu_k_lo, d_w, d_h)
+    if torque_given:
+        k_low = kt_low + kb_low
+        k_high = sum(pl.tightening_torque_per_preload(pitch, d2, d, mu_g_hi, mu_k_hi, d_w, d_h))
+        torque = col("tightening_torque")
+        fm_min, fm_max = jt.preload_bounds_from_torque(
+            torque, col("torque_tolerance"), m_u, k_low, k_high, m_u_min
         )
-
-    # R12 slipping -----------------------------------------------------------------------------
-    s_g = f_kr_min * q_f * mu_t / f_q if f_q > 0.0 else math.inf
-    if f_q > 0.0:
-        need = 1.8 if f_a_min < f_a else 1.2
-        checks.append(
-            Check(
-                "R12_slip",
-                s_g >= need,
-                f"S_G = F_KR,min q_F μ_T / F_Q = {s_g:.3g} (VDI asks ≥ {need:g} for "
-                f"{'alternating' if need > 1.2 else 'static'} load)",
-            )
-        )
-
-    # [004] rules -------------------------------------------------------------------------------
-    nominal = 0.5 * (fm_min + fm_max)
-    sigma0 = nominal / a0
-    ratio0 = sigma0 / bolt.yield_strength
-    accurate = method.scatter <= 0.10 + 1e-12 and x.get("tightening_torque") is None
-    if bool(x["bridge_joint"]):
-        lo_rule, hi_rule, why = 0.8, 0.9, "bridge joint"
-    elif accurate:
-        lo_rule, hi_rule, why = 0.5, 0.7, f"{method.key}, ±{method.scatter:.0%}"
+        alpha_a = jt.torque_tightening_factor(fm_min, fm_max)
     else:
-        lo_rule, hi_rule, why = 0.4, 0.5, "method less accurate than ±10 %"
-    checks.append(
-        Check(
-            "seed_004_preload_stress",
-            ratio0 <= hi_rule + 1e-12,
-            f"σ0 = F_M,nom/A_0 = {sigma0 / 1e6:.4g} MPa = {ratio0:.2f} σ_T; [004, eq. 6] allows "
-            f"{lo_rule:g}…{hi_rule:g} σ_T ({why}); VDI 2230 R7 instead limits the equivalent "
-            f"stress to ν R_p0.2 (ν = {nu:g}), which allows more",
-        )
+        given = x.get("tightening_factor") is not None
+        alpha_a = col("tightening_factor") if given else method.tightening_factor
+        fm_min, fm_max = jt.design_preload_range(f_mzul, alpha_a)
+        torque = jt.tightening_torque(f_mzul, kt_low, kb_low, m_u)
+
+    # R4 thermal loss at the lowest service preload -----------------------------------------------
+    dt_s = col("temperature_change")
+    th_loss = jt.thermal_preload_loss(
+        fm_min - f_z,
+        grip,
+        col("bolt_expansion"),
+        dt_s,
+        jt.plates_expansion_length(thick, alphas),
+        col_or("plate_temperature_change", dt_s),
+        delta_s,
+        delta_p,
+        col("bolt_modulus_ratio"),
+        col("plate_modulus_ratio"),
     )
-    if not bool(x["controlled"]) and d < 0.010:
-        warnings.append(
-            f"d = {d * 1e3:g} mm < 10 mm tightened without control: [004] warns of "
-            "over-tightening; lower the admissible load or control the tightening"
-        )
+    loss = jt.preload_losses(f_z, th_loss)
 
-    # hooks (R10 surface pressure, R11 engagement) ------------------------------------------------
-    solution = JointSolution(bolt, grip, d_w, d_h, fm_max, f_s_max, joint_type)
-    for hook in CHECK_HOOKS:
-        more_checks, more_notes = hook(x, solution)
-        checks.extend(more_checks)
-        notes.extend(more_notes)
-    if not CHECK_HOOKS:
-        notes.append(
-            "surface pressure under head and nut (VDI R10) and length of engagement / thread "
-            "stripping (VDI R11) are not checked by this model yet"
-        )
+    # R5/R6 required window, R7 against it ---------------------------------------------------------
+    alpha_req = _finite_or(alpha_a, method.tightening_factor)
+    req_min = jt.minimum_assembly_preload(f_kerf, f_a, phi_n, f_z, th_loss)
+    req_max = jt.required_preload_max(alpha_req, req_min)
+    fa_limit = jt.max_working_load(f_mzul, alpha_req, f_kerf, loss, phi_n)
+    fa_sep_any = jt.separation_load(f_mzul, loss, phi_n)
+    f_kr_min = jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)
+    fa_sep = jt.separation_load(fm_min, loss, phi_n)
+    checks: dict[str, tuple[Any, Any]] = {
+        "R7_window_fits": (True, req_max <= f_mzul * (1.0 + 1e-12)),
+        "separation_avoidable": (True, f_a < fa_sep_any),
+        "residual_clamp_force": (True, f_kr_min >= f_kerf * (1.0 - 1e-12)),
+    }
+    if torque_given:
+        checks["R7_max_below_permissible"] = (True, fm_max <= f_mzul * (1.0 + 1e-12))
 
-    # angle and elongation at the nominal preload [004, eq. 7–8] ---------------------------------
-    angle = pl.nut_rotation_angle(nominal, delta_s + delta_p, bolt.pitch)
-    rigid_angle = pl.nut_rotation_angle(nominal, delta_s, bolt.pitch)
+    # R8 working stress ---------------------------------------------------------------------------
+    add_load = jt.additional_bolt_load(phi_n, f_a)
+    f_s_max = jt.max_bolt_force(fm_max, add_load)
+    stress = jt.service_stress(f_s_max, fm_max, pitch, d2, d0, mu_g_lo)
+    refusals.arithmetic(stress.equivalent == 0.0, "σ_red,B = 0")
+    refusals.arithmetic(
+        _overflows_squared(stress.axial)
+        | _overflows_squared(jt.TORSION_REDUCTION_IN_SERVICE * stress.torsional),
+        "σ_red,B overflows",
+    )
+    s_f = jt.yield_safety(yield_strength, stress.equivalent)
+    checks["R8_working_stress"] = (True, s_f >= 1.0)
 
-    values: dict[str, Any] = {
-        "tightening_factor": alpha_a if math.isfinite(alpha_a) else None,
+    # R9 alternating stress -----------------------------------------------------------------------
+    sigma_a = jt.stress_amplitude(phi_n, f_a, f_a_min, a_s)
+    f_sm = jt.mean_bolt_force(fm_max, phi_n, f_a, f_a_min)
+    sigma_as = jt.endurance_limit(d, str(x["rolling"]), f_sm, a_s * yield_strength)
+    s_d = jt.fatigue_safety(sigma_as, sigma_a)
+    checks["R9_fatigue"] = (sigma_a > 0.0, s_d >= 1.2)
+
+    # R12 slipping -----------------------------------------------------------------------
+    s_g = jt.slip_safety(f_kr_min, q_f, mu_t, f_q)
+    need = jt.required_slip_safety(f_a, f_a_min)
+    checks["R12_slip"] = (f_q > 0.0, s_g >= need)
+
+    # [004] rules and the tightening targets [004, eq. 6–9] ----------------------------------------
+    nominal = jt.nominal_preload(fm_min, fm_max)
+    ratio0 = jt.preload_stress_ratio(nominal, a0, yield_strength)
+    rule = _seed_004_rule(x, method, torque_given)
+    checks["seed_004_preload_stress"] = (True, ratio0 <= rule[1] + 1e-12)
+
+    return {
+        "tightening_factor": alpha_a,
         "required_clamp_force": f_kerf,
         "transverse_clamp_force": f_kq,
         "bolt_compliance": delta_s,
@@ -843,7 +766,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "load_factor_k": phi_k,
         "load_factor": phi_n,
         "additional_bolt_load": add_load,
-        "clamp_load_reduction": (1.0 - phi_n) * f_a,
+        "clamp_load_reduction": jt.clamp_load_reduction(phi_n, f_a),
         "embedding_settlement": f_z_len,
         "embedding_loss": f_z,
         "thermal_loss": th_loss,
@@ -855,7 +778,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "yield_preload": f_myield,
         "assembly_preload_min": fm_min,
         "assembly_preload_max": fm_max,
-        "tightening_torque": design_torque,
+        "tightening_torque": torque,
         "residual_clamp_force_min": f_kr_min,
         "separation_load": fa_sep,
         "max_working_load": fa_limit,
@@ -864,35 +787,129 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "yield_safety": s_f,
         "stress_amplitude": sigma_a,
         "endurance_limit": sigma_as,
-        "fatigue_safety": s_d if math.isfinite(s_d) else None,
-        "slip_safety": s_g if math.isfinite(s_g) else None,
+        "fatigue_safety": s_d,
+        "slip_safety": s_g,
         "preload_stress_ratio": ratio0,
-        "bolt_elongation": nominal * delta_s,
-        "target_angle": angle,
-        "rigid_joint_angle": rigid_angle,
+        "bolt_elongation": pl.elongation(nominal, delta_s),
+        "target_angle": pl.nut_rotation_angle(nominal, delta_s + delta_p, pitch),
+        "rigid_joint_angle": pl.nut_rotation_angle(nominal, delta_s, pitch),
+        # what the sentences, hooks and series read
+        "_checks": checks,
+        "_where": where,
+        "_alpha_req": alpha_req,
+        "_fa_sep_any": fa_sep_any,
+        "_need_slip": need,
+        "_nominal": nominal,
+        "_rule": rule,
+        "_method": method,
+        "_mu": (mu_g_lo, mu_g_hi, mu_k_lo, mu_k_hi),
+        "_m_u": m_u,
     }
-    if not math.isfinite(s_d):
-        notes.append("static working load: no alternating stress, fatigue_safety null (R9)")
-    if not math.isfinite(s_g):
-        notes.append("no transverse load: slip_safety null (R12)")
 
-    series: dict[str, list[float]] = {}
-    if ctx.wants(*_DIAGRAM):
-        diagram = jt.joint_diagram(fm_min, delta_s, delta_p, f_a, phi_n, f_z)
-        series.update({f"diagram_{k}": v for k, v in diagram.items()})
-    if ctx.wants(*_WINDOW):
-        top = max(2.0 * f_a, min(fa_sep_any, 1e9) if math.isfinite(fa_sep_any) else 2.0 * f_a)
-        top = top if top > 0.0 else f_mzul
-        loads = [top * i / 40 for i in range(41)]
-        req = [jt.minimum_assembly_preload(f_kerf, a, phi_n, f_z, th_loss) for a in loads]
-        series.update(
-            window_working_load=loads,
-            window_required_min=req,
-            window_required_max=[alpha_req * r for r in req],
-            window_permissible=[f_mzul] * len(loads),
-            window_assembly_min=[fm_min] * len(loads),
-            window_assembly_max=[fm_max] * len(loads),
+
+def _seed_004_rule(
+    x: Mapping[str, Any], method: Any, torque_given: bool
+) -> tuple[float, float, str]:
+    """[004, eq. 6]'s band of σ0/σ_T for this joint: (low, high, why)."""
+    if bool(x["bridge_joint"]):
+        return 0.8, 0.9, "bridge joint"
+    if method.scatter <= 0.10 + 1e-12 and not torque_given:
+        return 0.5, 0.7, f"{method.key}, ±{method.scatter:.0%}"
+    return 0.4, 0.5, "method less accurate than ±10 %"
+
+
+# --------------------------------------------------------------------------- one design
+
+
+def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    bolt, notes = resolve_bolt(x)
+    b = {f: getattr(bolt, f) for f in _BOLT_FIELDS}
+    s = _solve(x, lambda name: float(x[name]), b, _Refusals(np.False_, many=False))
+    for name in (*_SCALARS, "_alpha_req", "_fa_sep_any"):  # Python floats out (some are numpy's)
+        s[name] = float(s[name])
+    warnings: list[str] = []
+    d = bolt.diameter
+    f_mzul, fm_min, fm_max = (
+        s["permissible_preload"],
+        s["assembly_preload_min"],
+        s["assembly_preload_max"],
+    )
+    mu_g_lo, mu_g_hi, mu_k_lo, mu_k_hi = s["_mu"]
+    method = s["_method"]
+    if x.get("outer_diameter") is None:
+        notes.append(
+            f"D_A not given: plates taken just wide enough for the full cone, D_A = D_A,Gr = "
+            f"{s['outer_diameter_used'] * 1e3:.4g} mm (our convention; VDI's cone-angle fit "
+            "needs a D_A); a wider plate is stiffer by that fit"
         )
+    if s["cone_tangent"] <= jt.MIN_CONE_TANGENT:
+        warnings.append(
+            f"plates very thin against d_W: the cone tangent is held at {jt.MIN_CONE_TANGENT}"
+        )
+    if s["_where"] == "shank":
+        notes.append(
+            f"smallest section is the shank, d_0 = {s['smallest_diameter'] * 1e3:.4g} mm < d_S = "
+            f"{bolt.stress_diameter * 1e3:.4g} mm: F_M,zul = {_kn(f_mzul)} at A_0 = "
+            f"{s['smallest_area'] * 1e6:.4g} mm² (VDI 2230-1 R7)"
+        )
+    if x.get("tightening_torque") is not None:
+        tol, m_u = float(x["torque_tolerance"]), s["_m_u"]
+        notes.append(
+            f"torque {s['tightening_torque']:.4g} N·m ± {tol:.0%}, prevailing {m_u:.3g} N·m, "
+            f"μ_G {mu_g_lo:g}…{mu_g_hi:g}, μ_K {mu_k_lo:g}…{mu_k_hi:g}: F_M = {_kn(fm_min)} "
+            f"(M_A,min at μ_max) … {_kn(fm_max)} (M_A,max at μ_min), VDI 2230-1 R13 inverted"
+        )
+        if x.get("tightening_factor") is not None:
+            notes.append(
+                "tightening_factor ignored: the torque specification sets the preload range"
+            )
+    else:
+        notes.append(
+            f"no torque given: tightened to F_M,zul = {_kn(f_mzul)} with α_A = "
+            f"{s['tightening_factor']:.3g} "
+            f"({method.key if x.get('tightening_factor') is None else 'as given'}); "
+            f"M_A = {s['tightening_torque']:.4g} N·m at μ_G,min, μ_K,min (VDI 2230-1 R13)"
+        )
+    sentences = _sentences(x, s, bolt)
+    checks = [
+        Check(name, bool(ok), sentences[name])
+        for name, (applies, ok) in s["_checks"].items()
+        if applies
+    ]
+    if not bool(x["controlled"]) and d < 0.010:
+        warnings.append(
+            f"d = {d * 1e3:g} mm < 10 mm tightened without control: [004] warns of "
+            "over-tightening; lower the admissible load or control the tightening"
+        )
+
+    # hooks (R10 surface pressure, R11 engagement)
+    solution = JointSolution(
+        bolt,
+        s["grip"],
+        bolt.bearing_outer_diameter,
+        bolt.hole_diameter,
+        fm_max,
+        s["max_bolt_force"],
+        str(x["joint_type"]),
+    )
+    for hook in CHECK_HOOKS:
+        more_checks, more_notes = hook(x, solution)
+        checks.extend(more_checks)
+        notes.extend(more_notes)
+    if not CHECK_HOOKS:
+        notes.append(
+            "surface pressure under head and nut (VDI R10) and length of engagement / thread "
+            "stripping (VDI R11) are not checked by this model yet"
+        )
+
+    values: dict[str, Any] = {name: s[name] for name in _SCALARS}
+    for name in ("tightening_factor", "fatigue_safety", "slip_safety"):
+        if not math.isfinite(values[name]):
+            values[name] = None
+    if values["fatigue_safety"] is None:
+        notes.append("static working load: no alternating stress, fatigue_safety null (R9)")
+    if values["slip_safety"] is None:
+        notes.append("no transverse load: slip_safety null (R12)")
     return Result(
         values=values,
         rung=ctx.rung,
@@ -900,8 +917,100 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         checks=checks,
         notes=notes,
         warnings=warnings,
-        series=series,
+        series=_series(ctx, s, x),
     )
+
+
+def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[str, str]:
+    """The sentence of each check of one solved design."""
+    f_mzul, fm_min, fm_max = (
+        s["permissible_preload"],
+        s["assembly_preload_min"],
+        s["assembly_preload_max"],
+    )
+    alpha_req, req_min, req_max = (
+        s["_alpha_req"],
+        s["required_preload_min"],
+        s["required_preload_max"],
+    )
+    window_ok = s["_checks"]["R7_window_fits"][1]
+    no_sep = s["_checks"]["separation_avoidable"][1]
+    clamp_ok = s["_checks"]["residual_clamp_force"][1]
+    f_a, f_kerf, nu = float(x["working_load"]), s["required_clamp_force"], float(x["utilization"])
+    lo_rule, hi_rule, why = s["_rule"]
+    stress, s_f = s["working_stress"], s["yield_safety"]
+    sigma0 = s["_nominal"] / s["smallest_area"]
+    need = s["_need_slip"]
+    out = {
+        "R7_window_fits": f"required F_M,max = α_A F_M,min = {alpha_req:.3g} × {_kn(req_min)} = "
+        f"{_kn(req_max)} vs F_M,zul = {_kn(f_mzul)}"
+        + (
+            ""
+            if window_ok
+            else f": the largest F_A this bolt can carry with α_A = {alpha_req:.3g} is "
+            f"{_kn(s['max_working_load'])}; use a more accurate method, a larger or stronger bolt"
+        ),
+        "separation_avoidable": f"F_A = {_kn(f_a)} vs {_kn(s['_fa_sep_any'])}, the load that "
+        "separates the joint even at F_M,zul after embedding and thermal loss "
+        "((F_M,zul − F_Z − ΔF_th)/(1 − Φ_n))"
+        + ("" if no_sep else ": no admissible preload keeps this joint closed"),
+        "residual_clamp_force": "F_KR,min = F_M,min − (1 − Φ_n) F_A − F_Z − ΔF_th = "
+        f"{_kn(s['residual_clamp_force_min'])} vs required F_K,erf = {_kn(f_kerf)}"
+        + ("" if clamp_ok else ": raise the preload floor (torque, method) or lower F_A"),
+        "R8_working_stress": f"σ_red,B = {stress / 1e6:.4g} MPa at F_S,max = "
+        f"{_kn(s['max_bolt_force'])} vs R_p0.2 = {bolt.yield_strength / 1e6:.4g} MPa: S_F = "
+        f"{s_f:.3g} (≥ 1.0)",
+        "R9_fatigue": "σ_a = Φ_n (F_A,max − F_A,min)/(2 A_S) = "
+        f"{s['stress_amplitude'] / 1e6:.3g} MPa vs σ_AS = {s['endurance_limit'] / 1e6:.3g} MPa: "
+        f"S_D = {s['fatigue_safety']:.3g} (VDI asks ≥ 1.2)",
+        "R12_slip": f"S_G = F_KR,min q_F μ_T / F_Q = {s['slip_safety']:.3g} (VDI asks ≥ {need:g} "
+        f"for {'alternating' if need > 1.2 else 'static'} load)",
+        "seed_004_preload_stress": f"σ0 = F_M,nom/A_0 = {sigma0 / 1e6:.4g} MPa = "
+        f"{s['preload_stress_ratio']:.2f} σ_T; [004, eq. 6] allows {lo_rule:g}…{hi_rule:g} σ_T "
+        f"({why}); VDI 2230 R7 instead limits the equivalent stress to ν R_p0.2 (ν = {nu:g}), "
+        "which allows more",
+    }
+    if "R7_max_below_permissible" in s["_checks"]:
+        top_ok = s["_checks"]["R7_max_below_permissible"][1]
+        out["R7_max_below_permissible"] = (
+            f"F_M,max = {_kn(fm_max)} from the torque vs F_M,zul = {_kn(f_mzul)} "
+            f"(ν = {nu:g} at μ_G,min)"
+            + ("" if top_ok else ": lower the torque or narrow its tolerance")
+        )
+    del fm_min
+    return out
+
+
+def _series(ctx: RunContext, s: Mapping[str, Any], x: Mapping[str, Any]) -> dict[str, list[float]]:
+    """The joint diagram and the preload window of one solved design, when asked for."""
+    series: dict[str, list[float]] = {}
+    fm_min, fm_max, f_mzul = (
+        s["assembly_preload_min"],
+        s["assembly_preload_max"],
+        s["permissible_preload"],
+    )
+    f_a, phi_n, f_z = float(x["working_load"]), s["load_factor"], s["embedding_loss"]
+    if ctx.wants(*_DIAGRAM):
+        diagram = jt.joint_diagram(
+            fm_min, s["bolt_compliance"], s["clamped_compliance"], f_a, phi_n, f_z
+        )
+        series.update({f"diagram_{k}": v for k, v in diagram.items()})
+    if ctx.wants(*_WINDOW):
+        fa_sep_any = s["_fa_sep_any"]
+        top = max(2.0 * f_a, min(fa_sep_any, 1e9) if math.isfinite(fa_sep_any) else 2.0 * f_a)
+        top = top if top > 0.0 else f_mzul
+        loads = [top * i / 40 for i in range(41)]
+        f_kerf, th_loss = s["required_clamp_force"], s["thermal_loss"]
+        req = [jt.minimum_assembly_preload(f_kerf, a, phi_n, f_z, th_loss) for a in loads]
+        series.update(
+            window_working_load=loads,
+            window_required_min=req,
+            window_required_max=[jt.required_preload_max(s["_alpha_req"], r) for r in req],
+            window_permissible=[f_mzul] * len(loads),
+            window_assembly_min=[fm_min] * len(loads),
+            window_assembly_max=[fm_max] * len(loads),
+        )
+    return series
 
 
 _DIAGRAM = tuple(
@@ -967,7 +1076,9 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
     Output(
         "tightening_torque",
         "N*m",
-        "R13: M_A for F_M,zul at μ_min plus M_ü (or the torque given)",
+        "R13: M_A for F_M,zul at μ_G,min, μ_K,min plus M_ü (VDI 2230-1 R13: the α_A band lies "
+        "below F_M,zul), or the torque given; not the torque for a nominal preload at mean "
+        "friction (preload.control target_torque)",
     ),
     _f("residual_clamp_force_min", "R12: F_KR,min = F_M,min − (1 − Φ_n) F_A − F_Z − ΔF_th"),
     _f("separation_load", "R5/R12: F_A at which the joint opens from the lowest assembly preload"),
@@ -1067,15 +1178,17 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
     ),
 )
 
+#: The scalar outputs, in declaration order.
+_SCALARS: tuple[str, ...] = tuple(o.name for o in JOINT_OUTPUTS if not o.series)
+
 # --------------------------------------------------------------------------- array path
 #
-# ``_vectorized`` gives what ``_compute`` gives, point by point, for a request whose numeric
-# inputs may be arrays (a sweep, a study's chunk; issue 21/22). The text and choice inputs are
-# fixed per request and read once; the bolt is resolved once per distinct bolt (usually
-# once); every relation is the same function of engine.joint / engine.preload, called on
-# arrays. A point the scalar compute refuses (InputOutOfRange, a division by zero) is NaN in
-# every output and unreported in every check. Series (joint diagram, preload window) are
-# not part of it: they belong to single runs.
+# ``_vectorized`` runs :func:`_solve` (the lines a single run runs) for a request whose
+# numeric inputs may be arrays (a sweep, a study's chunk; issue 21/22). The text and choice
+# inputs are fixed per request and read once; the bolt is resolved once per distinct bolt
+# (usually once). A point the procedure refuses is NaN in every output and unreported in
+# every check. Series (joint diagram, preload window) are not part of it: they belong to
+# single runs.
 
 #: Inputs that pick the thread from the tables (resolved per distinct combination).
 _TABLE_KEYS = ("thread_diameter", "thread_pitch")
@@ -1239,10 +1352,10 @@ def _vector_hook_checks(
             name = check.name
             if name in ("surface_pressure_assembly", "surface_pressure_working"):
                 force = fm_max if name == "surface_pressure_assembly" else f_s_max
-                verdict = _surface_pressure(force, outer, inner) <= limit
+                verdict = fa.surface_pressure(force, outer, inner) <= limit
             elif name == "surface_pressure_nut" and fastener.thread is not None:
                 nut = fa.nut(str(x["nut"]), fastener.thread)
-                verdict = _surface_pressure(fm_max, nut.bearing_diameter, hole) <= limit
+                verdict = fa.surface_pressure(fm_max, nut.bearing_diameter, hole) <= limit
             elif (
                 name == "thread_stripping" and tau is not None and bolt.tensile_strength is not None
             ):
@@ -1257,12 +1370,6 @@ def _vector_hook_checks(
     return out, notes
 
 
-def _surface_pressure(force: Any, outer: Any, inner: Any) -> Any:
-    """:func:`engine.fasteners.surface_pressure` on arrays (the same expressions)."""
-    area = np.maximum(0.0, 0.25 * math.pi * (outer**2 - inner**2))
-    return np.where(area > 0, force / area, np.inf)
-
-
 def _min_engagement(bolt: Bolt, tau: np.ndarray, sel: np.ndarray) -> np.ndarray:
     """Least length of engagement (VDI 2230-1 R11) per point, once per distinct τ_BM."""
     assert bolt.tensile_strength is not None
@@ -1273,7 +1380,7 @@ def _min_engagement(bolt: Bolt, tau: np.ndarray, sel: np.ndarray) -> np.ndarray:
             bolt.diameter,
             bolt.pitch,
             bolt.pitch_diameter,
-            bolt.diameter - 1.082532 * bolt.pitch,
+            th.nut_minor_diameter(bolt.diameter, bolt.pitch),
             bolt.stress_area,
             bolt.tensile_strength,
             fz.BOLT_SHEAR_RATIO * bolt.tensile_strength,
@@ -1309,209 +1416,27 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
             return value.astype(float, copy=False)
         return np.float64(value)
 
-    def col_or(name: str, other: Any) -> Any:
-        return other if x.get(name) is None else col(name)
-
     bolts, bolt_index, notes, given = _bolts(x, n)
     b, refused = _bolt_columns(bolts, bolt_index, x, given)
+    refusals = _Refusals(refused, many=True)
+    s = _solve(x, col, b, refusals)
+    refused = np.broadcast_to(refusals.mask, (n,))
+    if refused.all():
+        # alone, the first point says why it is refused (InputOutOfRange naming the field, or
+        # the arithmetic); the caller then runs each point alone
+        _compute({k: (v[0].item() if isinstance(v, np.ndarray) else v) for k, v in x.items()}, ctx)
+        raise TypeError("every point is refused")  # pragma: no cover (alone it computes)
     warnings: list[str] = []
     joint_type = str(x["joint_type"])
-    d, d_w, d_h, pitch = b["diameter"], b["bearing_outer_diameter"], b["hole_diameter"], b["pitch"]
-    yield_strength, a_s = b["yield_strength"], b["stress_area"]
-
-    # R0/R3 geometry (every plate present in the request; a 0 thickness adds exactly 0) ----------
-    e1, a1 = col("plate1_youngs_modulus"), col("plate1_expansion")
-    thick, moduli, alphas = [], [], []
-    for i in range(1, MAX_PLATES + 1):
-        if x.get(f"plate{i}_thickness") is None:
-            continue
-        thick.append(np.maximum(col(f"plate{i}_thickness"), 0.0))
-        moduli.append(col_or(f"plate{i}_youngs_modulus", e1))
-        alphas.append(col_or(f"plate{i}_expansion", a1))
-    plates = sum((h > 0.0).astype(np.int64) for h in thick)
-    grip = sum(thick)
-    outer = None if x.get("outer_diameter") is None else col("outer_diameter")
-    if outer is not None:
-        refused |= outer < d_w * (1.0 - 1e-12)
-    l_shank, l_reduced = col("shank_length"), col("reduced_length")
-    refused |= l_shank + l_reduced > grip * (1.0 + 1e-12)
-    if x.get("reduced_diameter") is None:
-        refused |= l_reduced > 0.0
-    shank_d, reduced_d = col_or("shank_diameter", d), col_or("reduced_diameter", d)
-    for name, value in (("shank_diameter", shank_d), ("reduced_diameter", reduced_d)):
-        if x.get(name) is not None:
-            refused |= value > d * (1 + 1e-12)
-    sections = [(l_shank, shank_d), (l_reduced, reduced_d)]
-    free_thread = np.maximum(grip - l_shank - l_reduced, 0.0)
-    e_s = col("youngs_modulus")
-    bolt_c = jt.bolt_compliance(
-        d,
-        b["minor_diameter"],
-        e_s,
-        sections,
-        free_thread,
-        str(x["head"]),
-        joint_type,
-        None if x.get("nut_youngs_modulus") is None else col("nut_youngs_modulus"),
-    )
-    parts = jt.clamped_compliance(thick, moduli, d_w, d_h, outer, joint_type)
-    delta_s, delta_p = bolt_c.total, parts.total
-    phi_k = jt.load_factor(delta_s, delta_p, 1.0)
-    phi_n = col("load_introduction") * phi_k
-    if outer is None:
+    d_w, d_h = b["bearing_outer_diameter"], b["hole_diameter"]
+    fm_max, f_s_max = s["assembly_preload_max"], s["max_bolt_force"]
+    if x.get("outer_diameter") is None:
         notes.append("D_A not given: plates taken just wide enough for the full cone (D_A,Gr)")
-    if np.any(~refused & (parts.tangent <= jt.MIN_CONE_TANGENT)):
+    if np.any(~refused & (s["cone_tangent"] <= jt.MIN_CONE_TANGENT)):
         warnings.append(
             f"plates very thin against d_W: the cone tangent is held at {jt.MIN_CONE_TANGENT}"
         )
-
-    # R2 required clamp force -----------------------------------------------------------------
-    f_q, q_f, mu_t = col("transverse_load"), col("slip_interfaces"), col("interface_friction")
-    f_kq = jt.transverse_clamp_force(f_q, q_f, mu_t)
-    f_kerf = np.maximum(f_kq, col("sealing_clamp_force"))
-
-    # R1 friction box, loads ------------------------------------------------------------------
-    method = get_method(str(x["method"]))
-    mu_g_lo, mu_k_lo = col("thread_friction_min"), col("bearing_friction_min")
-    mu_g_hi = col_or("thread_friction_max", mu_g_lo)
-    mu_k_hi = col_or("bearing_friction_max", mu_k_lo)
-    refused |= (mu_g_hi < mu_g_lo) | (mu_k_hi < mu_k_lo)
-    f_a = col("working_load")
-    f_a_min = col_or("working_load_min", f_a)
-    refused |= f_a_min > f_a
-
-    # R4 losses --------------------------------------------------------------------------------
-    through = joint_type == "through"
-    roughness = str(x["surface_roughness"])
-    faces, interfaces = (2, plates - 1) if through else (1, plates)
-    f_z_len: Any = np.where(
-        f_q > 0.0,
-        jt.embedding(roughness, "transverse", faces, interfaces),
-        jt.embedding(roughness, "axial", faces, interfaces),
-    )
-    f_z = jt.embedding_loss(f_z_len, delta_s, delta_p)
-    dt_s = col("temperature_change")
-    dt_p = col_or("plate_temperature_change", dt_s)
-    alpha_len = sum(h * a for h, a in zip(thick, alphas, strict=True))
-
-    # R7 permissible preload at the smallest section -------------------------------------------
-    d0, where = jt.smallest_section(b["stress_diameter"], sections)
-    a0: Any = np.where(where == "thread", a_s, 0.25 * math.pi * d0 * d0)
-    nu = col("utilization")
-    beta = pl.torsion_factor(pitch, b["pitch_diameter"], d0, mu_g_lo, "vdi2230")
-    f_mzul = pl.assembly_preload(yield_strength, a0, beta, nu)
-    f_myield = pl.assembly_preload(yield_strength, a0, beta, 1.0)
-
-    # assembly preload range: torque specification or design at F_M,zul -----------------------
-    def per_newton(mu_g: Any, mu_k: Any) -> tuple[np.ndarray, np.ndarray]:
-        k_thread, k_bearing = pl.tightening_torque_per_preload(
-            pitch, b["pitch_diameter"], d, mu_g, mu_k, d_w, d_h, "vdi2230"
-        )
-        return np.asarray(k_thread, dtype=float), np.asarray(k_bearing, dtype=float)
-
-    kt_low, kb_low = per_newton(mu_g_lo, mu_k_lo)
-    kt_high, kb_high = per_newton(mu_g_hi, mu_k_hi)
-    k_low, k_high = kt_low + kb_low, kt_high + kb_high
-    m_u = col("prevailing_torque")
-    m_u_min = col_or("prevailing_torque_min", m_u)
-    refused |= m_u_min > m_u
-    torque_given = x.get("tightening_torque") is not None
-    alpha_a: Any
-    if torque_given:
-        torque = col("tightening_torque")
-        fm_min, fm_max = jt.preload_bounds_from_torque(
-            torque, col("torque_tolerance"), m_u, k_low, k_high, m_u_min
-        )
-        alpha_a = np.where(fm_min > 0.0, fm_max / fm_min, np.inf)
-        design_torque = torque
-    else:
-        alpha_a = np.broadcast_to(
-            float(method.tightening_factor)
-            if x.get("tightening_factor") is None
-            else col("tightening_factor"),
-            (n,),
-        )
-        fm_max = f_mzul
-        fm_min = f_mzul / alpha_a
-        design_torque = f_mzul * kt_low + f_mzul * kb_low + m_u
-    f_v_min = fm_min - f_z
-    th_loss = jt.thermal_preload_loss(
-        f_v_min,
-        grip,
-        col("bolt_expansion"),
-        dt_s,
-        alpha_len,
-        dt_p,
-        delta_s,
-        delta_p,
-        col("bolt_modulus_ratio"),
-        col("plate_modulus_ratio"),
-    )
-
-    # R5/R6 required window ------------------------------------------------------------------
-    alpha_req = np.where(np.isfinite(alpha_a), alpha_a, method.tightening_factor)
-    req_min = jt.minimum_assembly_preload(f_kerf, f_a, phi_n, f_z, th_loss)
-    req_max = alpha_req * req_min
-    loss = f_z + np.maximum(th_loss, 0.0)
-    opens = 1.0 - phi_n > 0.0
-    fa_limit = np.where(
-        opens, np.maximum((f_mzul / alpha_req - f_kerf - loss) / (1.0 - phi_n), 0.0), np.inf
-    )
-    fa_sep_any = np.where(opens, np.maximum((f_mzul - loss) / (1.0 - phi_n), 0.0), np.inf)
-    check_arrays: dict[str, Any] = {
-        "R7_window_fits": req_max <= f_mzul * (1.0 + 1e-12),
-        "separation_avoidable": f_a < fa_sep_any,
-    }
-    f_kr_min = fm_min - (1.0 - phi_n) * f_a - f_z - np.maximum(th_loss, 0.0)
-    fa_sep = np.where(
-        phi_n < 1.0,
-        np.maximum(fm_min - f_z - np.maximum(th_loss, 0.0), 0.0) / (1.0 - phi_n),
-        np.inf,
-    )
-    check_arrays["residual_clamp_force"] = f_kr_min >= f_kerf * (1.0 - 1e-12)
-    if torque_given:
-        check_arrays["R7_max_below_permissible"] = fm_max <= f_mzul * (1.0 + 1e-12)
-
-    # R8 working stress -----------------------------------------------------------------------
-    add_load = phi_n * f_a
-    f_s_max = fm_max + add_load
-    stress = jt.service_stress(f_s_max, fm_max, pitch, b["pitch_diameter"], d0, mu_g_lo)
-    # the scalar path divides by σ_red,B (ZeroDivisionError) and squares in Python floats
-    # (OverflowError): both refuse the point there
-    tau_kept = jt.TORSION_REDUCTION_IN_SERVICE * stress.torsional
-    refused |= stress.equivalent == 0.0
-    refused |= np.isfinite(stress.axial) & ~np.isfinite(stress.axial**2)
-    refused |= np.isfinite(tau_kept) & ~np.isfinite(tau_kept**2)
-    s_f = yield_strength / stress.equivalent
-    check_arrays["R8_working_stress"] = s_f >= 1.0
-
-    # R9 alternating stress ----------------------------------------------------------------------
-    sigma_a = phi_n * (f_a - f_a_min) / (2.0 * a_s)
-    f_sm = fm_max + phi_n * 0.5 * (f_a + f_a_min)
-    sigma_as = jt.endurance_limit(d, str(x["rolling"]), f_sm, a_s * yield_strength)
-    alternating = sigma_a > 0.0
-    s_d = np.where(alternating, sigma_as / sigma_a, np.inf)
-    check_arrays["R9_fatigue"] = np.where(alternating, s_d >= 1.2, -1).astype(np.int8)
-
-    # R12 slipping ---------------------------------------------------------------------------------
-    slipping = f_q > 0.0
-    s_g = np.where(slipping, f_kr_min * q_f * mu_t / f_q, np.inf)
-    need = np.where(f_a_min < f_a, 1.8, 1.2)
-    check_arrays["R12_slip"] = np.where(slipping, s_g >= need, -1).astype(np.int8)
-
-    # [004] rules --------------------------------------------------------------------------------
-    nominal = 0.5 * (fm_min + fm_max)
-    sigma0 = nominal / a0
-    ratio0 = sigma0 / yield_strength
-    accurate = method.scatter <= 0.10 + 1e-12 and not torque_given
-    if bool(x["bridge_joint"]):
-        hi_rule = 0.9
-    elif accurate:
-        hi_rule = 0.7
-    else:
-        hi_rule = 0.5
-    check_arrays["seed_004_preload_stress"] = ratio0 <= hi_rule + 1e-12
-    if not bool(x["controlled"]) and np.any(~refused & (d < 0.010)):
+    if not bool(x["controlled"]) and np.any(~refused & (b["diameter"] < 0.010)):
         warnings.append(
             "d < 10 mm tightened without control: [004] warns of over-tightening; lower the "
             "admissible load or control the tightening"
@@ -1529,12 +1454,12 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         if given:
             bolt = replace(
                 bolt,
-                yield_strength=at(yield_strength),
+                yield_strength=at(b["yield_strength"]),
                 bearing_outer_diameter=at(d_w),
                 hole_diameter=at(d_h),
             )
         solution = JointSolution(
-            bolt, at(grip), at(d_w), at(d_h), at(fm_max), at(f_s_max), joint_type
+            bolt, at(s["grip"]), at(d_w), at(d_h), at(fm_max), at(f_s_max), joint_type
         )
         return _scalar_hooks(point, solution)
 
@@ -1543,69 +1468,21 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
     notes += hook_notes
 
-    angle = pl.nut_rotation_angle(nominal, delta_s + delta_p, pitch)
-    rigid_angle = pl.nut_rotation_angle(nominal, delta_s, pitch)
-    values: dict[str, Any] = {
-        "tightening_factor": alpha_a,
-        "required_clamp_force": f_kerf,
-        "transverse_clamp_force": f_kq,
-        "bolt_compliance": delta_s,
-        "bolt_compliance_head": bolt_c.head,
-        "bolt_compliance_shank": bolt_c.shank,
-        "bolt_compliance_free_thread": bolt_c.free_thread,
-        "bolt_compliance_engaged": bolt_c.engaged_thread + bolt_c.nut,
-        "clamped_compliance": delta_p,
-        "cone_tangent": parts.tangent,
-        "cone_limit_diameter": parts.limit_diameter,
-        "outer_diameter_used": parts.outer_diameter,
-        "grip": grip,
-        "load_factor_k": phi_k,
-        "load_factor": phi_n,
-        "additional_bolt_load": add_load,
-        "clamp_load_reduction": (1.0 - phi_n) * f_a,
-        "embedding_settlement": f_z_len,
-        "embedding_loss": f_z,
-        "thermal_loss": th_loss,
-        "required_preload_min": req_min,
-        "required_preload_max": req_max,
-        "smallest_diameter": d0,
-        "smallest_area": a0,
-        "permissible_preload": f_mzul,
-        "yield_preload": f_myield,
-        "assembly_preload_min": fm_min,
-        "assembly_preload_max": fm_max,
-        "tightening_torque": design_torque,
-        "residual_clamp_force_min": f_kr_min,
-        "separation_load": fa_sep,
-        "max_working_load": fa_limit,
-        "max_bolt_force": f_s_max,
-        "working_stress": stress.equivalent,
-        "yield_safety": s_f,
-        "stress_amplitude": sigma_a,
-        "endurance_limit": sigma_as,
-        "fatigue_safety": s_d,
-        "slip_safety": s_g,
-        "preload_stress_ratio": ratio0,
-        "bolt_elongation": nominal * delta_s,
-        "target_angle": angle,
-        "rigid_joint_angle": rigid_angle,
-    }
-    if refused.all():
-        # nothing to compute: the loop refuses each point with its reason (a 422 naming the
-        # field where the sweep's every point is out)
-        raise TypeError("every point is refused")
     # what the runner makes of a non-finite value (null) and of a refused point (all null)
-    table = np.empty((len(values), n))
-    for row, value in zip(table, values.values(), strict=True):
-        row[...] = value
+    table = np.empty((len(_SCALARS), n))
+    for row, name in zip(table, _SCALARS, strict=True):
+        row[...] = s[name]
     table[~np.isfinite(table)] = np.nan
     any_refused = bool(refused.any())
     if any_refused:
         table[:, refused] = np.nan
-    values = dict(zip(values, table, strict=True))
-    check_arrays.update(hook_checks)
+    values: dict[str, Any] = dict(zip(_SCALARS, table, strict=True))
+    verdicts: dict[str, Any] = {
+        name: np.where(applies, ok, -1) for name, (applies, ok) in s["_checks"].items()
+    }
+    verdicts.update(hook_checks)
     reported: dict[str, Any] = {}
-    for name, verdict in check_arrays.items():
+    for name, verdict in verdicts.items():
         codes = np.empty(n, dtype=np.int8)
         codes[...] = verdict
         if any_refused:

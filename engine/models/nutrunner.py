@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from .. import points
 from ..clutch import acceleration_torque, rated_torque, required_slip_torque
 from ..errors import InfeasibleDesign, InputOutOfRange
 from ..motor_spinup import (
@@ -31,11 +32,14 @@ from ..nutrunner import (
     disc_inertia,
     equivalent_inertia,
     flywheel_speed,
+    gear_ratio_torque_change,
     impact_torque,
     impact_torque_geared,
     max_spindle_torque,
     part_energies,
     shaft_shear_stress,
+    spindle_gear_spacing,
+    spindle_speed,
     torsional_stiffness,
     twist_angle,
 )
@@ -512,18 +516,13 @@ def _drive(x: Mapping[str, Any]) -> _Drive:
         energies=energies,
         energy=energy,
         w3=w3,
-        w5=w3 * u,
+        w5=spindle_speed(w3, x["drive_gear_diameter"], x["spindle_gear_diameter"]),
         u=u,
         c7=c7,
         c8=c8,
         m_paper=impact_torque(energy, c7, c8),
         m_geared=impact_torque_geared(energy, c7, c8, u),
     )
-
-
-def _gear_effect(d: _Drive) -> Any:
-    """M(u)/M(source) − 1 = √((1/C7 + 1/C8)/(u²/C7 + 1/C8)) − 1, free of T."""
-    return np.sqrt((1.0 / d.c7 + 1.0 / d.c8) / (d.u**2 / d.c7 + 1.0 / d.c8)) - 1.0
 
 
 def _closed_values(x: Mapping[str, Any], d: _Drive, geared: bool) -> dict[str, Any]:
@@ -547,11 +546,11 @@ def _closed_values(x: Mapping[str, Any], d: _Drive, geared: bool) -> dict[str, A
         "flywheel_energy": t3,
         "drive_gear_energy": t4,
         "spindle_gears_energy": t5,
-        "equivalent_inertia": 2.0 * d.energy / x["motor_speed"] ** 2,
+        "equivalent_inertia": _inertia(x, d),
         "flywheel_speed": d.w3,
         "spindle_gear_speed": d.w5,
         "gear_ratio": d.u,
-        "gear_ratio_torque_change": _gear_effect(d),
+        "gear_ratio_torque_change": gear_ratio_torque_change(d.c7, d.c8, d.u),
         "shaft_shear_stress": shaft_shear_stress(m7, x["shaft_diameter"]),
         "spindle_shear_stress": shaft_shear_stress(m, x["spindle_diameter"]),
         "coupling_slip_torque": _coupling_slip_torque(x, d),
@@ -560,33 +559,40 @@ def _closed_values(x: Mapping[str, Any], d: _Drive, geared: bool) -> dict[str, A
 
 def _coupling_slip_torque(x: Mapping[str, Any], d: _Drive) -> Any:
     """Slip torque of coupling 1: K P/ω, or the start torque through it if larger."""
-    w = x["motor_speed"]
-    rated = rated_torque(x["motor_power"], w)
+    rated = rated_torque(x["motor_power"], x["motor_speed"])
     start: Any = 0.0
     if x["breakdown_torque"] is not None and x["rotor_inertia"] is not None:
-        t1, t2, t3, t4, t5 = d.energies
-        load = 2.0 * (np.asarray(t2) + t3 + t4 + t5) / np.asarray(w) ** 2
-        # the coupling's own inertia counted with the motor's side
-        drive = x["rotor_inertia"] + 2.0 * np.asarray(t1) / np.asarray(w) ** 2
+        # parts 2…5 are the load; the coupling's own inertia counts with the motor's side
+        load = _inertia(x, d, coupling=False)
+        drive = x["rotor_inertia"] + disc_inertia(x["coupling_mass"], x["coupling_diameter"])
         start = acceleration_torque(x["breakdown_torque"], drive, load)
     return required_slip_torque(rated, x["coupling_service_factor"], start)
 
 
+def _inertia(x: Mapping[str, Any], d: _Drive, *, coupling: bool = True, **motor: Any) -> Any:
+    """Inertia of parts 1…5 (or 2…5) at the motor shaft; ``motor``: rotor and efficiencies."""
+    return equivalent_inertia(
+        disc_inertia(x["coupling_mass"], x["coupling_diameter"]) if coupling else 0.0,
+        disc_inertia(x["motor_pulley_mass"], x["motor_pulley_diameter"]),
+        disc_inertia(x["flywheel_mass"], x["flywheel_diameter"]),
+        disc_inertia(x["drive_gear_mass"], x["drive_gear_diameter"]),
+        disc_inertia(x["spindle_gear_mass"], x["spindle_gear_diameter"]),
+        x["spindle_count"],
+        d.w3 / x["motor_speed"],
+        d.u,
+        **motor,
+    )
+
+
 def _drive_inertia(x: Mapping[str, Any], d: _Drive) -> float:
-    w = x["motor_speed"]
+    """What the motor accelerates: rotor, parts 1…5, through the belt and gear losses."""
     return float(
-        equivalent_inertia(
-            disc_inertia(x["coupling_mass"], x["coupling_diameter"]),
-            disc_inertia(x["motor_pulley_mass"], x["motor_pulley_diameter"]),
-            disc_inertia(x["flywheel_mass"], x["flywheel_diameter"]),
-            disc_inertia(x["drive_gear_mass"], x["drive_gear_diameter"]),
-            disc_inertia(x["spindle_gear_mass"], x["spindle_gear_diameter"]),
-            x["spindle_count"],
-            d.w3 / w,
-            d.u,
-            x["rotor_inertia"],
-            x["belt_efficiency"],
-            x["gear_efficiency"],
+        _inertia(
+            x,
+            d,
+            rotor_inertia=x["rotor_inertia"],
+            belt_efficiency=x["belt_efficiency"],
+            gear_efficiency=x["gear_efficiency"],
         )
     )
 
@@ -611,17 +617,7 @@ def _idealisation_error(x: Mapping[str, Any]) -> Any:
     sizes = {v.size for v in x.values() if isinstance(v, np.ndarray) and v.ndim > 0}
     if sizes:
         (n,) = sizes  # equal-length columns, as engine.points hands them
-        return np.array(
-            [
-                _idealisation_error(
-                    {
-                        k: (v[j].item() if isinstance(v, np.ndarray) and v.ndim > 0 else v)
-                        for k, v in x.items()
-                    }
-                )
-                for j in range(n)
-            ]
-        )
+        return np.array([_idealisation_error(points.at(x, n, j)) for j in range(n)])
     try:
         ratio = _curve_time_ratio(x)
     except (InfeasibleDesign, InputOutOfRange):
@@ -674,13 +670,35 @@ def _estimate_motor_curve(x: Mapping[str, Any]) -> float | None:
     return None if x["motor_curve"] == "none" else 1e-8
 
 
+def _verdicts(x: Mapping[str, Any], values: Mapping[str, Any]) -> dict[str, Any]:
+    """Each check's verdict, on floats or arrays: a bool, or int8 with -1 where not reported.
+
+    The one place the checks compare numbers: a single run turns these verdicts into
+    sentences (:func:`_checks`), a sweep or a study reports them per point.
+    """
+    out: dict[str, Any] = {"max_spindle_torque_positive": values["max_spindle_torque"] > 0.0}
+    z, d5 = x["spindle_count"], x["spindle_gear_diameter"]
+    applies = z >= 2  # a single spindle has no neighbouring gear to hit
+    every = isinstance(applies, bool) or np.ndim(applies) == 0  # one count at every point
+    if applies if every else applies.any():
+        fits = spindle_gear_spacing(x["drive_gear_diameter"], d5, z) > d5
+        out["spindle_gears_fit"] = fits if every else np.where(applies, fits, -1).astype(np.int8)
+    tau_y = x.get("shear_yield_strength")
+    if tau_y is not None:
+        for key in ("shaft_shear_stress", "spindle_shear_stress"):
+            out[f"{key.removesuffix('_shear_stress')}_elastic"] = values[key] <= tau_y
+    return out
+
+
 def _checks(x: Mapping[str, Any], values: Mapping[str, Any]) -> tuple[list[Check], list[str]]:
+    """The checks of one design as sentences, on the verdicts of :func:`_verdicts`."""
+    verdicts = _verdicts(x, values)
     checks: list[Check] = []
     warnings: list[str] = []
     m = float(values["impact_torque"])
     m_max = float(values["max_spindle_torque"])
     z, m_tr = int(x["spindle_count"]), float(x["idle_spindle_friction_torque"])
-    if m_max > 0.0:
+    if bool(verdicts["max_spindle_torque_positive"]):
         checks.append(
             Check(
                 "max_spindle_torque_positive",
@@ -697,26 +715,28 @@ def _checks(x: Mapping[str, Any], values: Mapping[str, Any]) -> tuple[list[Check
         )
         checks.append(Check("max_spindle_torque_positive", False, detail))
         warnings.append("no torque reaches the nut: " + detail)
-    if z >= 2:
+    fit = int(verdicts.get("spindle_gears_fit", -1))
+    if fit >= 0:
         d4, d5 = float(x["drive_gear_diameter"]), float(x["spindle_gear_diameter"])
-        pitch = (d4 + d5) * math.sin(math.pi / z)
+        pitch = float(spindle_gear_spacing(d4, d5, z))
         checks.append(
             Check(
                 "spindle_gears_fit",
-                pitch > d5,
+                bool(fit),
                 f"neighbouring spindle gears' centres are {pitch * 1e3:.4g} mm apart on the "
                 f"{(d4 + d5) * 1e3:.4g} mm circle; a gear is {d5 * 1e3:.4g} mm across"
-                + ("" if pitch > d5 else ": they overlap, use smaller spindle gears or fewer"),
+                + ("" if fit else ": they overlap, use smaller spindle gears or fewer"),
             )
         )
     tau_y = x.get("shear_yield_strength")
     if tau_y is not None:
         for part, key in (("shaft 7", "shaft_shear_stress"), ("spindle 8", "spindle_shear_stress")):
             tau = float(values[key])
-            ok = tau <= tau_y
+            name = f"{key.removesuffix('_shear_stress')}_elastic"
+            ok = bool(verdicts[name])
             checks.append(
                 Check(
-                    f"{key.removesuffix('_shear_stress')}_elastic",
+                    name,
                     ok,
                     f"{part}: peak shear stress {tau / 1e6:.4g} MPa vs yield {tau_y / 1e6:.4g} MPa"
                     + (
@@ -864,33 +884,8 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
         rung=ctx.rung,
         error_estimate=None,
         warnings=warnings,
-        check_arrays=_check_arrays(arrays, values),
+        check_arrays=_verdicts(arrays, values),
     )
-
-
-def _check_arrays(x: Mapping[str, Any], values: Mapping[str, Any]) -> dict[str, Any]:
-    """The verdicts of :func:`_checks` on arrays: bool, or int8 with -1 where not reported.
-
-    The same comparisons on the same floats as the scalar checks, so the verdicts
-    agree point by point (a study's pass fractions do not depend on the path).
-    """
-    out: dict[str, Any] = {
-        "max_spindle_torque_positive": np.asarray(values["max_spindle_torque"]) > 0.0
-    }
-    z = np.asarray(x["spindle_count"])
-    if np.any(z >= 2):
-        d4 = np.asarray(x["drive_gear_diameter"], dtype=float)
-        d5 = np.asarray(x["spindle_gear_diameter"], dtype=float)
-        # math.sin(math.pi / z) as the scalar check takes it (np.sin may differ in the last bit)
-        top = int(np.max(z))
-        sines = np.array([0.0, 0.0, *(math.sin(math.pi / k) for k in range(2, top + 1))])
-        fits = (d4 + d5) * sines[np.clip(z, 0, top).astype(np.int64)] > d5
-        out["spindle_gears_fit"] = np.where(z >= 2, fits, -1).astype(np.int8)
-    tau_y = x.get("shear_yield_strength")
-    if tau_y is not None:
-        for key in ("shaft_shear_stress", "spindle_shear_stress"):
-            out[f"{key.removesuffix('_shear_stress')}_elastic"] = np.asarray(values[key]) <= tau_y
-    return out
 
 
 EXAMPLE_LIGHT_TRUCK: dict[str, Any] = {

@@ -1827,7 +1827,13 @@ CONTROL_OUTPUTS: tuple[Output, ...] = (
         "What the method sets: torque, angle, elongation, force, displacement or yield",
         kind="str",
     ),
-    Output("target_torque", "N*m", "Wrench torque for the nominal preload (torque_formula)"),
+    Output(
+        "target_torque",
+        "N*m",
+        "Torque for the nominal preload F_nom (the middle of the method's band: F_M,zul/(1 + "
+        "scatter), or the preload given) at the given friction μ_G, μ_K, by torque_formula; not "
+        "VDI 2230-1 R13's M_A for F_M,zul at μ_G,min, μ_K,min (joint.vdi2230 tightening_torque)",
+    ),
     Output(
         "target_angle",
         "rad",

@@ -18,20 +18,20 @@ from typing import Any
 import numpy as np
 
 from ..errors import EngineError
+from ..numerics import is_array, pymax, where
 from ..rare_impact import (
     G0,
     min_return_spring_rate,
     relock_margin,
+    spring_height_limit,
     striker_oscillation,
 )
 from ..rare_impact_cycle import (
     GEOMETRIES,
-    CycleArrays,
     CycleOutcome,
     closed_form_cycle,
     closed_form_cycle_array,
     closed_form_errors,
-    closed_form_errors_array,
     release_speed_of,
     relock_friction,
     simulate_cycle,
@@ -75,14 +75,12 @@ _GEOMETRY_TEXT = {
 }
 
 
-def _moving_mass(x: Mapping[str, Any]) -> float:
+def _moving_mass(x: Mapping[str, Any]) -> Any:
     """:math:`M_2 = m_1 + n m_p + m_3` [002, eq. 2]."""
-    return float(x["half_coupling_mass"] + x["roller_count"] * x["roller_mass"] + x["striker_mass"])
+    return x["half_coupling_mass"] + x["roller_count"] * x["roller_mass"] + x["striker_mass"]
 
 
-def spring_height_bounds(
-    moving_mass: float, gravity: float, c1: float, c3: float
-) -> tuple[float, float]:
+def spring_height_bounds(moving_mass: Any, gravity: Any, c1: Any, c3: Any) -> tuple[Any, Any]:
     r"""Engagement heights the springs allow under [002, eq. 6]'s assumptions: (lower, upper) [m].
 
     With balanced preloads :math:`c_1\lambda_1 = c_3\lambda_3` and
@@ -92,7 +90,7 @@ def spring_height_bounds(
     reachable) when gravity does not help (g ≤ 0); for :math:`c_3 < c_1` it is
     a *lower* bound :math:`2M_2|g|/(c_1 - c_3)` when g < 0 and no bound at all
     otherwise; for :math:`c_3 = c_1` any height when g ≥ 0, none when g < 0.
-    ``inf`` upper = no upper limit.
+    ``inf`` upper = no upper limit. Floats or arrays of one shape.
 
     >>> spring_height_bounds(0.85, 9.80665, 50000.0, 52000.0)[1]  # 16.671/2000
     0.0083356525
@@ -103,11 +101,12 @@ def spring_height_bounds(
     """
     d = c3 - c1
     w = 2.0 * moving_mass * gravity
-    if d > 0.0:
-        return 0.0, max(w / d, 0.0)
-    if d < 0.0:
-        return (w / d if w < 0.0 else 0.0), math.inf
-    return (0.0, math.inf) if w >= 0.0 else (0.0, 0.0)
+    # the paper's limit (inf for c3 <= c1), never below 0; none at all for c3 = c1, g < 0
+    upper = where(
+        (d == 0.0) & (w < 0.0), 0.0, pymax(spring_height_limit(moving_mass, gravity, c1, c3), 0.0)
+    )
+    lower = where((d < 0.0) & (w < 0.0), w / where(d < 0.0, d, -1.0), 0.0)
+    return lower, upper
 
 
 def _outcome(x: Mapping[str, Any], ctx: RunContext) -> CycleOutcome:
@@ -118,85 +117,137 @@ def _outcome(x: Mapping[str, Any], ctx: RunContext) -> CycleOutcome:
             deadline=ctx.deadline,
             max_steps=ctx.max_steps,
         )
-    return closed_form_cycle(x)
+    o = _cycle(x)
+    if o.refused:
+        closed_form_cycle(x)  # raises the refusal with its reason
+    return o
 
 
-def _is_array(x: Mapping[str, Any]) -> bool:
-    return any(isinstance(v, np.ndarray) for v in x.values())
+def _values_key(x: Mapping[str, Any]) -> tuple[Any, ...]:
+    """The inputs by value: each array as its dtype, shape and a copy of its bytes."""
+    return tuple(
+        (k, (v.dtype.str, v.shape, v.tobytes())) if isinstance(v, np.ndarray) else (k, v)
+        for k, v in x.items()
+    )
 
 
-def _pymax(a: Any, b: Any) -> Any:
-    """``max(a, b)`` on arrays with Python's NaN semantics (b wins only if b > a)."""
-    return np.where(b > a, b, a)
+#: The closed form's cycle (and its error estimate, once asked) for the last inputs, keyed
+#: on their values (a copy of every array's bytes, never the array object): a run or a
+#: sweep asks the estimate and then the outputs on the same inputs and each is computed
+#: once for both, while a caller that refills its buffer in place between calls gets the
+#: new design's cycle.
+_LAST_CYCLE: list[tuple[tuple[Any, ...], CycleOutcome, dict[str, Any]]] = []
 
 
-#: The last array evaluation of the closed form: (the inputs' values, pinned, and the
-#: outcome). A sweep asks the closed form's estimate and then its array path on the same
-#: inputs (the same dict of the same arrays): the cycle is computed once for both. A hit
-#: needs every value to be the *same object*; nothing mutates a sweep's arrays in place.
-_LAST_CYCLE: tuple[tuple[Any, ...], CycleArrays] | None = None
-
-
-def _cycle_array(x: Mapping[str, Any]) -> CycleArrays:
-    global _LAST_CYCLE
-    key = tuple(x.items())
-    last = _LAST_CYCLE
-    if (
-        last is not None
-        and len(last[0]) == len(key)
-        and all(a[0] == b[0] and a[1] is b[1] for a, b in zip(last[0], key, strict=True))
-    ):
+def _cycle(x: Mapping[str, Any]) -> CycleOutcome:
+    """The closed form's cycle for one design (numbers) or many (arrays), refusals marked."""
+    key = _values_key(x)
+    last = _LAST_CYCLE[-1] if _LAST_CYCLE else None
+    if last is not None and last[0] == key:
         return last[1]
     o = closed_form_cycle_array(x)
-    _LAST_CYCLE = (key, o)
+    _LAST_CYCLE[:] = [(key, o, {})]
     return o
+
+
+def _errors(x: Mapping[str, Any]) -> dict[str, Any]:
+    """:func:`engine.rare_impact_cycle.closed_form_errors` of the closed form's cycle."""
+    o = _cycle(x)
+    entry = _LAST_CYCLE[-1]
+    errors = entry[2] if entry[1] is o else {}  # another thread's design came in between
+    if not errors:
+        errors.update(closed_form_errors(x, o))
+    return errors
 
 
 def _closed_form_estimate(x: Mapping[str, Any]) -> Any:
     """Worst estimated error over the closed form's outputs for these inputs.
 
-    On arrays (a sweep or a study): an array, NaN where the scalar form gives None.
+    On arrays (a sweep or a study): an array, NaN where one design gives None.
     """
-    if _is_array(x):
-        groups = closed_form_errors_array(x, _cycle_array(x))
-        worst = groups["stage1"]
-        for group in ("engagement", "return", "relock"):
-            worst = _pymax(worst, groups[group])
+    groups = _errors(x)
+    worst = groups["stage1"]
+    for group in ("engagement", "return", "relock"):
+        worst = pymax(worst, groups[group])
+    if is_array(worst):
         return np.where(np.isfinite(worst), worst, np.nan)
-    try:
-        errs = closed_form_errors(x, closed_form_cycle(x))
-    except (ArithmeticError, ValueError, EngineError):
-        return None
-    err = max(errs.values())
-    return err if math.isfinite(err) else None
+    return float(worst) if math.isfinite(worst) else None
 
 
-def _output_error(x: Mapping[str, Any], o: CycleOutcome, ctx: RunContext) -> float | None:
+def _output_error(x: Mapping[str, Any], ctx: RunContext) -> float | None:
     """Estimated error of the outputs asked for (the closed form's groups)."""
-    try:
-        errs = closed_form_errors(x, o)
-    except (ArithmeticError, ValueError):
-        return None
+    errs = _errors(x)
     asked = [errs[g] for n, g in _GROUP.items() if g is not None and ctx.wants(n)]
     if not asked:
         return 0.0
     err = max(asked)
-    return err if math.isfinite(err) else None
+    return float(err) if math.isfinite(err) else None
 
 
 def _simulation_estimate(x: Mapping[str, Any]) -> float:
     return _SIMULATION_ERROR  # a constant: broadcast over the points of a sweep
 
 
-#: The checks the scalar compute reports (design_checks), in its order.
-_CHECKS = (
-    "c3 > c1",
-    "λ1 < λ3",
-    "eq. 6 (engagement height)",
-    "return",
-    "relock",
-    "full engagement",
-)
+def _outputs(x: Mapping[str, Any], o: CycleOutcome) -> dict[str, Any]:
+    """Every numeric output (and full_engagement) from the inputs and a cycle's outcome.
+
+    One design (numbers) or many (arrays): NaN or inf where the output is null (never
+    reached), read by :func:`_compute` as None and by :func:`_vectorized` as NaN.
+    """
+    m2_total = _moving_mass(x)
+    c1, c3 = x["power_spring_rate"], x["return_spring_rate"]
+    lam1, lam3 = x["power_spring_preload"], x["return_spring_preload"]
+    h1, h2, g = x["release_travel"], x["engagement_height"], x["gravity"]
+    with np.errstate(all="ignore"):
+        b, k = striker_oscillation(c1, lam1, c3, lam3, h1, m2_total, g)
+        window = x["engagement_angle"] / o.release_speed
+        _, upper = spring_height_bounds(m2_total, g, c1, c3)
+        t_blow = o.spin_up_time + o.engagement_time
+        t_home = t_blow + o.home_time
+        blow, returns, relocks = o.blow, o.returns, o.relocks
+        return {
+            "release_speed": o.release_speed,
+            "spin_up_time": o.spin_up_time,
+            "release_radius": o.release_radius,
+            "engagement_acceleration": b,
+            "engagement_frequency": k,
+            "max_striker_travel": o.max_travel,
+            "engagement_time": o.engagement_time,
+            "engagement_window": window,
+            "engagement_start": o.spin_up_time,
+            "engagement_end": o.spin_up_time + window,
+            "full_engagement": blow & (o.engagement_time <= window),
+            "engagement_margin": where(blow, (window - o.engagement_time) / window, math.nan),
+            "blow_time": t_blow,
+            "spring_height_limit": upper,
+            "min_return_spring_rate": min_return_spring_rate(
+                x["striker_mass"], g, lam3, h2, x["jaw_height"]
+            ),
+            "relock_margin": relock_margin(
+                x["auxiliary_spring_rate"],
+                x["auxiliary_spring_preload"],
+                c3,
+                lam3,
+                x["roller_friction"],
+            ),
+            "return_time": where(returns, o.return_time, math.nan),
+            "striker_home_time": where(returns, t_home, math.nan),
+            "relock_time": where(relocks, o.relock_time, math.nan),
+            "cycle_time": where(relocks, t_home + o.relock_time, math.nan),
+        }
+
+
+def _verdicts(x: Mapping[str, Any], o: CycleOutcome) -> dict[str, Any]:
+    """The verdict of every check (:func:`design_checks`, in its order), one design or many."""
+    window = x["engagement_angle"] / o.release_speed
+    return {
+        "c3 > c1": x["return_spring_rate"] > x["power_spring_rate"],
+        "λ1 < λ3": x["power_spring_preload"] < x["return_spring_preload"],
+        "eq. 6 (engagement height)": o.blow,
+        "return": o.returns,
+        "relock": o.relocks,
+        "full engagement": o.blow & (o.engagement_time <= window),
+    }
 
 
 def _nullable(column: Any, dead: np.ndarray) -> np.ndarray:
@@ -221,83 +272,33 @@ def _nullable(column: Any, dead: np.ndarray) -> np.ndarray:
 def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """The closed form at many points (the array path of sweeps and studies).
 
-    Every scalar output :func:`_compute` gives on the closed-form rung, per point, with
-    the same equations in the same order (engine.rare_impact_cycle.closed_form_cycle_array);
-    NaN/None where the scalar form refuses the point or leaves the output null, and the
-    verdicts of :func:`design_checks` as ``check_arrays``.
+    The same lines as a single run (:func:`_outputs`, :func:`_verdicts` on
+    :func:`engine.rare_impact_cycle.closed_form_cycle_array`); NaN/None where a single
+    run refuses the point or leaves the output null, and the verdicts of
+    :func:`design_checks` as ``check_arrays``.
     """
     if ctx.rung != "closed_form":
         raise EngineError(f"impact.rare has no array path for the rung {ctx.rung!r}")
-    o = _cycle_array(x)
+    o = _cycle(x)
     dead = o.refused
     n = dead.shape
-    m2_total = x["half_coupling_mass"] + x["roller_count"] * x["roller_mass"] + x["striker_mass"]
-    c1, c3 = x["power_spring_rate"], x["return_spring_rate"]
-    lam1, lam3 = x["power_spring_preload"], x["return_spring_preload"]
-    h1, h2, g = x["release_travel"], x["engagement_height"], x["gravity"]
-    with np.errstate(all="ignore"):
-        b, k = striker_oscillation(c1, lam1, c3, lam3, h1, m2_total, g)
-        window = x["engagement_angle"] / o.release_speed
-        d = c3 - c1
-        w = 2.0 * m2_total * g
-        upper = np.where(
-            d > 0.0, np.maximum(w / np.where(d > 0.0, d, 1.0), 0.0), np.where(w >= 0.0, np.inf, 0.0)
-        )
-        upper = np.where(d < 0.0, np.inf, upper)
-        t_blow = o.spin_up_time + o.engagement_time
-        t_home = t_blow + o.home_time
-        blow, returns, relocks = o.blow, o.returns, o.relocks
-        c3_min = np.asarray(
-            min_return_spring_rate(x["striker_mass"] * np.ones(n), g, lam3, h2, x["jaw_height"]),
-            dtype=float,
-        )
-        margin = relock_margin(
-            x["auxiliary_spring_rate"],
-            x["auxiliary_spring_preload"],
-            c3,
-            lam3,
-            x["roller_friction"],
-        )
-        full = blow & (o.engagement_time <= window)
-        raw: dict[str, Any] = {
-            "release_speed": o.release_speed,
-            "spin_up_time": o.spin_up_time,
-            "release_radius": o.release_radius,
-            "engagement_acceleration": b,
-            "engagement_frequency": k,
-            "max_striker_travel": o.max_travel,
-            "engagement_time": o.engagement_time,
-            "engagement_window": window,
-            "engagement_start": o.spin_up_time,
-            "engagement_end": o.spin_up_time + window,
-            "engagement_margin": np.where(blow, (window - o.engagement_time) / window, np.nan),
-            "blow_time": t_blow,
-            "spring_height_limit": upper,
-            "min_return_spring_rate": c3_min,
-            "relock_margin": margin,
-            "return_time": np.where(returns, o.return_time, np.nan),
-            "striker_home_time": np.where(returns, t_home, np.nan),
-            "relock_time": np.where(relocks, o.relock_time, np.nan),
-            "cycle_time": np.where(relocks, t_home + o.relock_time, np.nan),
-        }
     any_dead = bool(dead.any())
     values: dict[str, Any] = {}
-    for name, column in raw.items():
-        column = np.asarray(column, dtype=float)
-        if column.shape != n:
-            column = np.broadcast_to(column, n)
-        if any_dead:
-            column = np.where(dead, np.nan, column)
+    for name, raw in _outputs(x, o).items():
+        column = np.broadcast_to(np.asarray(raw), n)
+        if column.dtype != bool:
+            column = column.astype(float, copy=False)
+            if any_dead:
+                column = np.where(dead, np.nan, column)
         values[name] = _nullable(column, dead)
-    values["full_engagement"] = _nullable(full, dead)
     # null on the closed form (a single run says why in a note): None, not a column
     values["half_coupling_release_speed"] = None
-    verdicts = (c3 > c1, lam1 < lam3, blow, returns, relocks, full)
     checks = {}
     # a point the model refuses reports no check; if every point is refused, no check at all
-    for name, ok in zip(_CHECKS if not dead.all() else (), verdicts, strict=False):
-        code = np.asarray(ok, dtype=np.int8)
-        checks[name] = np.where(dead, np.int8(-1), code) if any_dead else code
+    if not dead.all():
+        for name, ok in _verdicts(x, o).items():
+            code = np.broadcast_to(np.asarray(ok, dtype=np.int8), n)
+            checks[name] = np.where(dead, np.int8(-1), code) if any_dead else code
 
     notes = [
         "closed form: quasi-static spin-up, piecewise-linear stages 2 and 4 started from "
@@ -352,8 +353,9 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
         x["return_spring_preload"],
     )
     h2, h3, g = x["engagement_height"], x["jaw_height"], x["gravity"]
+    ok = _verdicts(x, o)
     checks: list[Check] = []
-    if c3 > c1:
+    if ok["c3 > c1"]:
         checks.append(
             Check(
                 "c3 > c1",
@@ -380,11 +382,11 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
     checks.append(
         Check(
             "λ1 < λ3",
-            lam1 < lam3,
+            bool(ok["λ1 < λ3"]),
             (
                 f"the power-spring preload ({in_mm(lam1)}) is below the return-spring preload "
                 f"({in_mm(lam3)}), as the paper asks [002, after eq. 6]"
-                if lam1 < lam3
+                if ok["λ1 < λ3"]
                 else f"the power-spring preload ({in_mm(lam1)}) is not below the return-spring "
                 f"preload ({in_mm(lam3)}); the paper asks λ1 < λ3 [002, after eq. 6]: lower λ1 "
                 "or raise λ3" + (contradiction if balanced else "")
@@ -395,7 +397,7 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
     checks.append(
         Check(
             "eq. 6 (engagement height)",
-            o.blow,
+            bool(ok["eq. 6 (engagement height)"]),
             (
                 f"the springs carry the striker to the engagement height {in_mm(h2)} (they "
                 f"would carry it {in_mm(reach)}) [002, eqs. 5-6]"
@@ -416,7 +418,7 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
     )
     if not o.blow:
         checks.append(Check("return", False, "no blow, so no return (see eq. 6)"))
-    elif o.returns:
+    elif ok["return"]:
         checks.append(
             Check(
                 "return",
@@ -445,7 +447,7 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
         checks.append(
             Check("relock", False, "the striker does not come home, so the shaft cannot re-lock")
         )
-    elif o.relocks:
+    elif ok["relock"]:
         extra = (
             ""
             if margin > 0.0
@@ -469,7 +471,7 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
             )
         )
     window = x["engagement_angle"] / o.release_speed
-    if o.blow and o.engagement_time <= window:
+    if ok["full engagement"]:
         checks.append(
             Check(
                 "full engagement",
@@ -502,10 +504,6 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
     return checks
 
 
-def _none_if_inf(v: float) -> float | None:
-    return v if math.isfinite(v) else None
-
-
 def _named_series(o: CycleOutcome) -> dict[str, list[float]]:
     """The recorded series under their output names (none when nothing was recorded)."""
     if not o.series.get("time"):
@@ -527,7 +525,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "state (positions, velocities) is carried across release, blow and return"
         )
     else:
-        error = _output_error(x, o, ctx)
+        error = _output_error(x, ctx)
         notes.append(
             "closed form: quasi-static spin-up, piecewise-linear stages 2 and 4 started from "
             "the quasi-static release velocity, stage 3 with the half-coupling held"
@@ -550,48 +548,19 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "off: the half-coupling snaps to h1 at once, so the release speed is the lift-off "
             "speed, above the balance the paper's formula assumes"
         )
-    m2_total = _moving_mass(x)
     c1, c3 = x["power_spring_rate"], x["return_spring_rate"]
-    lam1, lam3 = x["power_spring_preload"], x["return_spring_preload"]
-    h1, h2, g = x["release_travel"], x["engagement_height"], x["gravity"]
-    b, k = striker_oscillation(c1, lam1, c3, lam3, h1, m2_total, g)
-    window = x["engagement_angle"] / o.release_speed
-    lower, upper = spring_height_bounds(m2_total, g, c1, c3)
-    t_blow = o.spin_up_time + o.engagement_time
-    t_home = t_blow + o.home_time
-    values: dict[str, Any] = {
-        "release_speed": o.release_speed,
-        "spin_up_time": o.spin_up_time,
-        "release_radius": o.release_radius,
-        "half_coupling_release_speed": o.release_velocity if ctx.rung == "simulation" else None,
-        "engagement_acceleration": float(b),
-        "engagement_frequency": float(k),
-        "max_striker_travel": o.max_travel,
-        "engagement_time": _none_if_inf(o.engagement_time),
-        "engagement_window": window,
-        "engagement_start": o.spin_up_time,
-        "engagement_end": o.spin_up_time + window,
-        "full_engagement": bool(o.blow and o.engagement_time <= window),
-        "engagement_margin": ((window - o.engagement_time) / window if o.blow else None),
-        "blow_time": _none_if_inf(t_blow),
-        "spring_height_limit": _none_if_inf(upper),
-        "min_return_spring_rate": _none_if_inf(
-            float(min_return_spring_rate(x["striker_mass"], g, lam3, h2, x["jaw_height"]))
-        ),
-        "relock_margin": float(
-            relock_margin(
-                x["auxiliary_spring_rate"],
-                x["auxiliary_spring_preload"],
-                c3,
-                lam3,
-                x["roller_friction"],
+    lam1, h1, g = x["power_spring_preload"], x["release_travel"], x["gravity"]
+    values: dict[str, Any] = {}
+    for name, v in _outputs(x, o).items():
+        if name == "full_engagement":
+            values[name] = bool(v)
+        else:  # inf or NaN: never reached, null
+            values[name] = float(v) if math.isfinite(v) else None
+        if name == "release_radius":
+            values["half_coupling_release_speed"] = (
+                float(o.release_velocity) if ctx.rung == "simulation" else None
             )
-        ),
-        "return_time": o.return_time if o.returns else None,
-        "striker_home_time": _none_if_inf(t_home) if o.returns else None,
-        "relock_time": o.relock_time if o.relocks else None,
-        "cycle_time": _none_if_inf(t_home + o.relock_time) if o.relocks else None,
-    }
+    lower, upper = spring_height_bounds(_moving_mass(x), g, c1, c3)
     if not o.blow:
         notes.append(
             "the striker never reaches the engagement height: engagement_time, "

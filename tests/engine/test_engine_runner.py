@@ -1,5 +1,6 @@
 import dataclasses
 import math
+from typing import Any
 
 import numpy as np
 import pytest
@@ -271,3 +272,60 @@ def test_a_point_whose_estimate_refuses_is_null_with_the_reason_and_the_rest_com
     # the toy's array path ignores the rung: the exact energy at the computed points
     assert s.results["energy"][::2] == pytest.approx([0.5 * d**2 / 8 * 1e4 for d in (0.1, 0.2)])
     assert any(n.startswith("diameter = 0.5: diameter too big") for n in s.notes)
+
+
+def test_a_prepared_request_is_validated_and_its_rung_chosen_once(monkeypatch: Any) -> None:
+    """The service routes a request by its rung (engine.runner.prepare) and hands that to
+    engine.run: one validation and one rung choice per request, and the same answer as an
+    unprepared run."""
+    import engine.runner as runner
+    from engine import get_model
+    from engine.spec import ModelSpec
+
+    spec = get_model("impact.rare")
+    example = spec.examples[0]
+    plain = engine.run(spec, example, fidelity="simulation")
+    calls = {"validate": 0, "choose": 0}
+    validate, choose = ModelSpec.validate, runner.choose_rung
+
+    def counted_validate(self: ModelSpec, raw: Any) -> Any:
+        calls["validate"] += 1
+        return validate(self, raw)
+
+    def counted_choose(*a: Any, **k: Any) -> Any:
+        calls["choose"] += 1
+        return choose(*a, **k)
+
+    monkeypatch.setattr(ModelSpec, "validate", counted_validate)
+    monkeypatch.setattr(runner, "choose_rung", counted_choose)
+    prepared = runner.prepare(spec, example, "simulation", None)
+    again = engine.run(spec, example, fidelity="simulation", prepared=prepared)
+    assert calls == {"validate": 1, "choose": 1}
+    assert again.rung == plain.rung == "simulation"
+    assert again.results == plain.results
+    assert again.notes == plain.notes
+
+
+def test_the_service_validates_an_auto_request_once(monkeypatch: Any) -> None:
+    from fastapi.testclient import TestClient
+
+    from engine import get_model
+    from engine.spec import ModelSpec
+    from service import create_app
+
+    spec = get_model("impact.rare")
+    client = TestClient(create_app(models=[spec]))
+    body = {**spec.examples[0], "tolerance": 1e-4}  # auto: chooses the simulation
+    assert client.post("/api/v1/impact/rare", json=body).status_code == 200  # warm
+    calls = []
+    validate = ModelSpec.validate
+
+    def counted(self: ModelSpec, raw: Any) -> Any:
+        calls.append(self.name)
+        return validate(self, raw)
+
+    monkeypatch.setattr(ModelSpec, "validate", counted)
+    answer = client.post("/api/v1/impact/rare", json=body)
+    assert answer.status_code == 200, answer.text
+    assert answer.json()["rung"] == "simulation"
+    assert calls == ["impact.rare"]

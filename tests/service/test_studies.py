@@ -158,3 +158,36 @@ def test_a_queued_study_that_is_cancelled_never_runs_and_holds_its_place() -> No
         assert "old99" in studies.jobs and "old0" not in studies.jobs
     finally:
         studies.shutdown()
+
+
+def test_a_submitted_study_draws_its_points_once(
+    app_client: TestClient, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The service plans a study to refuse a bad one at once; the job runs that plan and
+    does not draw the points again (about 11 % of a 10^6-point study's time)."""
+    import engine.study_exec
+    import service.studies
+
+    calls: list[int] = []
+    real = service.studies.plan
+
+    def counted(spec: Any, study: Any) -> Any:
+        calls.append(study.samples)
+        return real(spec, study)
+
+    monkeypatch.setattr(service.studies, "plan", counted)
+    monkeypatch.setattr(engine.study_exec, "plan", counted)
+    r = app_client.post(
+        "/api/v1/clutch/ball/study",
+        json={
+            "base": BASE,
+            "variables": [{"name": "flank_friction", "low": 0, "high": "0.1"}],
+            "samples": 64,
+            "outputs": ["torque_limit"],
+        },
+    )
+    assert r.status_code == 202, r.text
+    body = _wait(app_client, r.json()["job"])
+    assert body["state"] == "done"
+    assert body["progress"]["total"] == 64
+    assert calls == [64]

@@ -92,10 +92,16 @@ def test_examples_answer_with_blows_and_preload():
     assert len(soft.series["preload_per_blow"]) == 34
     assert soft.series["preload_per_blow"] == sorted(soft.series["preload_per_blow"])
     assert hard.series["time_in_blow"] and hard.series["torque_in_blow"]
+    # the striker's release energy (45.9 J with the rollers): one blow lands in the window
     m16 = run(BLOW, RARE_IMPACT_M16, fidelity="simulation")
-    assert m16.results["blows_to_target"] == 2
-    assert m16.results["preload_verdict"] == "above"  # the second blow over-tightens
-    assert 60e3 < m16.results["preload_after_first_blow"] < 80e3
+    assert m16.results["blows_to_target"] == 1
+    assert m16.results["preload_verdict"] == "within"
+    assert 80e3 < m16.results["preload_after_first_blow"] < 100e3
+    # the paper's printed stage 1 (27.9 J, the flywheel alone): the second blow over-tightens
+    paper = run(BLOW, {**RARE_IMPACT_M16, "roller_geometry": "paper"}, fidelity="simulation")
+    assert paper.results["blows_to_target"] == 2
+    assert paper.results["preload_verdict"] == "above"
+    assert 60e3 < paper.results["preload_after_first_blow"] < 80e3
 
 
 def test_clutch_source_sets_the_spring_for_the_target():

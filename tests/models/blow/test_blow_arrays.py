@@ -400,3 +400,30 @@ def test_a_study_of_outputs_the_rung_leaves_null_still_gives_the_checks_of_singl
         (check,) = run(BLOW, {**base, "clutch_spring_force": force}, fidelity="rigid").checks
         assert chunk.checks["preload_window"][j] == (CHECK_OK if check.ok else CHECK_FAILED)
     assert np.isnan(chunk.values["clutch_spring_force_for_target"]).all()
+
+
+def test_a_buffer_refilled_in_place_gives_the_new_designs_answer() -> None:
+    # a caller that reuses its input arrays: the estimates and the array path read the
+    # values the arrays hold now (an identity-keyed cache answered the previous design)
+    from engine.spec import RunContext
+
+    fixed, _ = BLOW.validate(RARE_IMPACT_M16)
+    springs = np.array([4e4, 5e4])
+    friction = np.array([0.10, 0.12])
+    x = {**fixed, "power_spring_rate": springs, "thread_friction": friction}
+    ctx = RunContext(rung="energy", outputs=frozenset(FLOATS), tolerance=0.01)
+    energy_rung = BLOW.rung_names.index("energy")
+    for rates, mus in (((4e4, 5e4), (0.10, 0.12)), ((6e4, 7e4), (0.14, 0.16))):
+        springs[:] = rates
+        friction[:] = mus
+        estimate = BLOW.rungs[energy_rung].estimate(x)
+        got = BLOW.vectorized(x, ctx).values
+        for j in range(2):
+            alone = run(
+                BLOW,
+                {**RARE_IMPACT_M16, "power_spring_rate": rates[j], "thread_friction": mus[j]},
+                fidelity="energy",
+            )
+            assert estimate[j] == pytest.approx(alone.error_estimate, rel=1e-12)
+            for name in ("tool_speed", "tool_energy_used", "joint_rate_used", "final_preload"):
+                assert got[name][j] == pytest.approx(alone.results[name], rel=1e-12), name

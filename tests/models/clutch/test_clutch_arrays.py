@@ -118,17 +118,22 @@ def test_a_catalogue_wire_varied_across_and_off_its_table():
 
 
 def test_tensile_strength_on_arrays_is_the_table_row_by_row():
+    # the table read the slow way (first row whose upper diameter covers d, a linear
+    # scan), against the binary search on arrays and on floats
     for name, material in sp.MATERIALS.items():
         wires = [u * f * 1e-3 for u, _ in material.strength for f in (1 - 2e-9, 1, 1 + 2e-9)]
         wires += np.linspace(0.0, 0.03, 301).tolist()
-        got = sp.tensile_strength_array(name, np.array(wires))
+        got = sp.tensile_strength(name, np.array(wires))
+        lo, hi = material.diameter_range
         for d, g in zip(wires, got, strict=True):
-            try:
-                want = sp.tensile_strength(name, d)
-            except InputOutOfRange:
+            d_mm = d * 1e3
+            if not lo * 1e3 * (1 - 1e-9) - 1.0 <= d_mm <= hi * 1e3 * (1 + 1e-9):
                 assert math.isnan(g), (name, d)
-            else:
-                assert g == want, (name, d)
+                with pytest.raises(InputOutOfRange, match="outside the"):
+                    sp.tensile_strength(name, d)
+                continue
+            want = next(rm for upper, rm in material.strength if d_mm <= upper * (1 + 1e-9))
+            assert g == want * 1e6 == sp.tensile_strength(name, d), (name, d)
 
 
 def test_disc_stack_varied_runs_on_the_array_path():
@@ -186,16 +191,21 @@ def test_peak_setting_lines_against_the_scalar_root_search():
         for driving in (None, 40 * DEG):
             xx = {**x, "ball_lift": lift, "driving_groove_angle": driving}
             spring = asbuilt.Spring(xx)
-            grid = asbuilt.SettingGrid(xx)
+            rate = float(spring.force(1.0))
             for target in (0.5, 2.0, 8.0):
                 force = 2 * target * math.tan(45 * DEG - math.atan(0.1)) / 0.05
-                got, stress = asbuilt.peak_setting_arrays(xx, grid, spring, target, force)
-                want = asbuilt._peak_setting(xx, spring, target, force)
+                got, stress = asbuilt.peak_setting(xx, spring, target, force)
+                # on an array of one point: the same numbers
+                got_1, stress_1 = asbuilt.peak_setting(xx, spring, np.array([target]), force)
+                np.testing.assert_array_equal([got, stress], [got_1[0], stress_1[0]])
+                upper = max(force / rate, 1e-9) * 1.000001
+                want = asbuilt.solve_setting(xx, spring, target, upper)
                 if want is None:
-                    assert np.isnan(got).all()
+                    assert math.isnan(got) and math.isnan(stress)
                 else:
-                    assert float(np.squeeze(got)) == pytest.approx(want[0], rel=1e-12)
-                    assert float(np.squeeze(stress)) == pytest.approx(want[1], rel=1e-12)
+                    top = asbuilt.characteristic(xx, spring, want)["spring_stress_max"]
+                    assert got == pytest.approx(want, rel=1e-12)
+                    assert stress == pytest.approx(float(top), rel=1e-12)
 
 
 def test_study_pass_fractions_equal_single_runs():
@@ -338,3 +348,29 @@ def test_setting_with_a_varied_allowable_stress_stays_on_the_array_path():
     _, values = _compare(BALL_CLUTCH_SETTING, base, cols)
     # thicker wires for the larger coils and targets: the suggestion moves with the point
     assert len(set(values["suggested_wire_diameter"].tolist())) > 6
+
+
+def test_a_refused_point_is_masked_with_its_reason_on_both_paths():
+    # f = 0.5: atan f = 26.57°, so the balls wedge at α = 20° and 25° and slip at 30°…60°;
+    # a single run refuses the wedged design naming groove_angle, and a sweep masks those
+    # points (null everywhere) and says how many the same reason took
+    base = {**BALL_CLUTCH.examples[3], "flank_friction": 0.5}
+    angles = [20 * DEG, 25 * DEG, 30 * DEG, 45 * DEG, 60 * DEG]
+    with pytest.raises(engine.InfeasibleDesign) as refused:
+        engine.run(BALL_CLUTCH, {**base, "groove_angle": 25 * DEG})
+    assert refused.value.field == "groove_angle"
+    sweep = engine.sweep(BALL_CLUTCH, base, "groove_angle", angles)
+    limits = sweep.results["torque_limit"]
+    assert limits[:2] == [None, None] and all(v is not None for v in limits[2:])
+    assert sweep.rungs[:2] == [None, None]
+    assert any("2 of 5 points refused: the balls wedge" in n for n in sweep.notes), sweep.notes
+    # a wire thicker than the coil: no coil, refused alone and masked on arrays alike
+    wires = [0.004, 0.032, 0.04]
+    with pytest.raises(InputOutOfRange) as thick:
+        engine.run(BALL_CLUTCH, {**BALL_CLUTCH.examples[0], "spring_wire_diameter": 0.045})
+    assert thick.value.field == "spring_wire_diameter"
+    sweep = engine.sweep(
+        BALL_CLUTCH, {**BALL_CLUTCH.examples[0]}, "spring_wire_diameter", [*wires, 0.045]
+    )
+    assert sweep.results["torque_limit"][-1] is None
+    assert any("1 of 4 points refused: no coil" in n for n in sweep.notes), sweep.notes

@@ -18,10 +18,11 @@ import pytest
 
 from engine import joint as jt
 from engine import run
-from engine.errors import EngineError
+from engine.errors import EngineError, InputOutOfRange
 from engine.models import get_model
 from engine.models import joint as joint_model
 from engine.runner import sweep
+from engine.spec import RunContext
 from engine.study import (
     CHECK_FAILED,
     CHECK_OK,
@@ -457,3 +458,21 @@ def test_scattered_bolt_values_with_catalogue_parts(base):
         columns["hole_diameter"] = rng.uniform(0.0135, 0.0145, n)
     assert _uses_array_path(base, columns)
     _assert_matches_single_runs(base, columns)
+
+
+def test_a_refusal_is_the_same_line_alone_and_among_many():
+    """One procedure refuses: alone with the field and the range, among many as a masked
+    point; where every point is refused the array path says why (the first point's reason)."""
+    base = {**M12_2X20, "working_load": 5e3}
+    with pytest.raises(InputOutOfRange) as alone:
+        run(JOINT, {**base, "working_load_min": 6e3})
+    assert alone.value.field == "working_load_min"
+    assert "must be ≤ 5000 N" in alone.value.message
+    got = sweep(JOINT, base, "working_load_min", [1e3, 6e3])
+    assert got.results["grip"][0] == pytest.approx(0.04) and got.results["grip"][1] is None
+    x, _ = JOINT.validate({**base, "working_load_min": 6e3})
+    ctx = RunContext(rung="closed_form", outputs=JOINT.scalar_outputs, tolerance=0.01)
+    with pytest.raises(InputOutOfRange) as many:
+        joint_model._vectorized({**x, "working_load_min": np.array([6e3, 7e3])}, ctx)
+    assert many.value.field == "working_load_min"
+    assert many.value.message == alone.value.message

@@ -62,6 +62,9 @@ def test_closed_form_by_hand():
     assert v["spindle_twist"] == pytest.approx(2475.762 / C8, rel=1e-6)  # 0.09019 rad
     # per-part energies: T_k = J_k ω_k²/2
     assert v["coupling_energy"] == pytest.approx(0.5 * 0.001215 * W**2, rel=1e-12)  # 13.06 J
+    # J2 ω²/2 = 0.00032·146.6077² = 6.87802 J; J4 (0.32 ω)²/2 = 0.0015625·46.9145² = 3.43901 J
+    assert v["motor_pulley_energy"] == pytest.approx(6.87802, rel=1e-6)
+    assert v["drive_gear_energy"] == pytest.approx(3.43901, rel=1e-6)
     assert v["flywheel_energy"] == pytest.approx(0.5 * 0.09375 * (0.32 * W) ** 2, rel=1e-12)
     assert v["spindle_gears_energy"] == pytest.approx(6 * 0.5 * 1.5625e-4 * (0.64 * W) ** 2)
     assert v["flywheel_speed"] == pytest.approx(0.32 * W) and v["spindle_gear_speed"] == (
@@ -72,6 +75,10 @@ def test_closed_form_by_hand():
     assert v["gear_ratio"] == 2.0
     # τ = 16 M/(π d³): spindle 16·2475.76/(π·0.032³) = 384.8 MPa
     assert v["spindle_shear_stress"] == pytest.approx(384.79e6, rel=1e-4)
+    # the source's shaft carries M too: 16·2475.762/(π·0.045³) = 138.370 MPa
+    assert v["shaft_shear_stress"] == pytest.approx(138.370e6, rel=1e-5)
+    # coupling 1 without a start torque: K P/ω = 2·1100/146.6077 = 15.00604 N·m
+    assert v["coupling_slip_torque"] == pytest.approx(15.00604, rel=1e-6)
     # the estimate is the largest change the gear ratio makes to any output, either way
     # round: the shaft torque, u·M(u)/M = 2·(1 − 0.16578) = 1.66844, i.e. 0.668
     assert r.error_estimate == pytest.approx(2 * (1 + v["gear_ratio_torque_change"]) - 1)
@@ -88,6 +95,10 @@ def test_gear_ratio_by_hand():
     assert v["impact_torque"] == pytest.approx(m, rel=1e-12)
     assert v["shaft_torque"] == pytest.approx(2 * m, rel=1e-12)
     assert v["shaft_twist"] == pytest.approx(2 * m / C7, rel=1e-12)
+    # τ7 = 16 u M/(π d7³) = 16·2·2065.33/(π·0.045³) = 230.86 MPa; τ8 = 16 M/(π d8³) = 321.0 MPa
+    assert v["shaft_shear_stress"] == pytest.approx(16 * 2 * m / (math.pi * 0.045**3), rel=1e-12)
+    assert v["shaft_shear_stress"] == pytest.approx(230.86e6, rel=1e-4)
+    assert v["spindle_shear_stress"] == pytest.approx(321.0e6, rel=1e-3)
     assert v["gear_ratio_torque_change"] == pytest.approx(2065.33 / 2475.762 - 1, rel=1e-5)
     # the energy stored in the twist is the kinetic energy, with u·M on the shaft
     stored = 0.5 * v["shaft_torque"] * v["shaft_twist"] + 0.5 * m * v["spindle_twist"]
@@ -180,6 +191,10 @@ def test_spindle_gear_overlap_check():
     r = run(SPEC, {**BASE, "spindle_count": 12, "spindle_gear_diameter": 0.08})
     (check,) = [c for c in r.checks if c.name == "spindle_gears_fit"]
     assert not check.ok and "overlap" in check.detail
+    assert "46.59 mm apart on the 180 mm circle" in check.detail
+    # the example's six 50 mm gears on a 150 mm circle: 150·sin(30°) = 75 mm > 50 mm
+    (fits,) = [c for c in run(SPEC, BASE).checks if c.name == "spindle_gears_fit"]
+    assert fits.ok and "75 mm apart" in fits.detail
 
 
 def test_yield_check_only_when_strength_given():

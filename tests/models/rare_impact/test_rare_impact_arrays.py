@@ -19,11 +19,14 @@ from engine import EngineError, run, sweep
 from engine.models.rare_impact import RARE_IMPACT, REFERENCE_DESIGN
 from engine.points import auto_index, rung_estimates
 from engine.rare_impact_cycle import (
+    HELD,
+    NEVER_FAST_ENOUGH,
+    NOT_HELD,
     closed_form_cycle,
     closed_form_cycle_array,
     linear_reach,
-    linear_reach_array,
 )
+from engine.spec import RunContext
 from engine.study import CHECK_FAILED, CHECK_OK, CHECK_UNKNOWN, Study, Variable, evaluate_chunk
 from engine.study import plan as study_plan
 
@@ -166,24 +169,47 @@ def test_an_infeasible_design_is_nan_with_no_estimate() -> None:
     o = closed_form_cycle_array(x)
     assert o.refused.tolist() == [False, True, False]
     assert math.isnan(o.release_speed[1]) and math.isnan(o.engagement_time[1])
-    est = RARE_IMPACT.rungs[0].estimate(x)
+    est = np.asarray(RARE_IMPACT.rungs[0].estimate(x))
     assert math.isnan(est[1]) and np.isfinite(est[[0, 2]]).all()
     with pytest.raises(EngineError):
         closed_form_cycle({k: (v[1] if isinstance(v, np.ndarray) else v) for k, v in x.items()})
 
 
-def test_linear_reach_on_arrays_is_the_scalar_one() -> None:
+def test_linear_reach_lands_on_the_level_of_the_motion_it_solves() -> None:
+    # y(t) = y0 + c(1 - cos kt) + (v0/k) sin kt, c = acc/w², k = √w² (harmonic), or
+    # y0 + v0 t + acc t²/2 (w² = 0): at the returned time the motion is at the level with
+    # the returned velocity, and no earlier crossing (checked on a fine grid before it)
     rng = np.random.default_rng(5)
     y0, v0 = rng.uniform(-1e-3, 1e-3, 200), rng.uniform(-2.0, 2.0, 200)
     acc, w2 = rng.uniform(-400.0, 400.0, 200), np.exp(rng.uniform(0.0, 14.0, 200))
     w2[::7] = 0.0  # the parabolic branch (a rate that underflows)
     acc[::21] = 0.0
     level = rng.uniform(-6e-3, 6e-3, 200)
-    t, v = linear_reach_array(y0, v0, acc, w2, level)
+    t, v = linear_reach(y0, v0, acc, w2, level)
+
+    def motion(j: int, tt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        if w2[j] == 0.0:
+            return y0[j] + v0[j] * tt + 0.5 * acc[j] * tt * tt, v0[j] + acc[j] * tt
+        k, c = math.sqrt(w2[j]), acc[j] / w2[j]
+        y = y0[j] + c * (1.0 - np.cos(k * tt)) + v0[j] / k * np.sin(k * tt)
+        return y, c * k * np.sin(k * tt) + v0[j] * np.cos(k * tt)
+
+    reached = 0
     for j in range(200):
-        ts, vs = linear_reach(y0[j], v0[j], acc[j], w2[j], level[j])
-        assert (t[j] == ts) or t[j] == pytest.approx(ts, rel=1e-12), j
-        assert (math.isnan(v[j]) and math.isnan(vs)) or v[j] == pytest.approx(vs, rel=1e-9), j
+        # one design: floats, the same lines (math's functions where numpy's serve arrays)
+        one = linear_reach(y0[j], v0[j], acc[j], w2[j], level[j])
+        assert isinstance(one[0], float) and one[0] == pytest.approx(t[j], rel=1e-14), j
+        if math.isinf(t[j]):
+            assert math.isnan(v[j]), j
+            continue
+        reached += 1
+        y, vel = motion(j, np.array([t[j]]))
+        assert y[0] == pytest.approx(level[j], abs=1e-12), j
+        assert vel[0] == pytest.approx(v[j], rel=1e-6, abs=1e-9), j
+        before, _ = motion(j, np.linspace(0.0, t[j], 400)[:-2])
+        side = np.sign(before - level[j])
+        assert np.all(side == side[0]), f"{j}: an earlier crossing"
+    assert 50 < reached < 200, "the draws should hold reached and unreached levels"
 
 
 def test_a_2000_point_sweep_runs_on_the_array_path() -> None:
@@ -198,3 +224,45 @@ def test_a_2000_point_sweep_runs_on_the_array_path() -> None:
     assert result.results["spin_up_time"][777] == pytest.approx(
         single.results["spin_up_time"], rel=1e-12
     )
+
+
+def test_a_reused_input_buffer_gives_the_new_designs_answer() -> None:
+    # a caller that refills its input array in place between calls must get the answer
+    # for the new values (an array-identity cache once returned the previous design's)
+    validated, _ = RARE_IMPACT.validate(REFERENCE_DESIGN)
+    buf = np.array([5e4, 6e4])
+    x = {**validated, "power_spring_rate": buf}
+    ctx = RunContext(rung="closed_form", outputs=frozenset(OUTPUTS), tolerance=1e-2)
+    estimate = RARE_IMPACT.rungs[0].estimate
+    assert RARE_IMPACT.vectorized is not None
+    estimate(x)
+    first = np.asarray(RARE_IMPACT.vectorized(x, ctx).values["release_speed"])
+    assert first[0] == pytest.approx(243.96474431890402, rel=1e-12)
+    buf[:] = 8e4
+    estimate(x)
+    again = np.asarray(RARE_IMPACT.vectorized(x, ctx).values["release_speed"])
+    # symmetric V, κ = 1/2: ω² = [c1(λ1 + h1) + c2(λ2 + h1) + (m1 + m2 + n·mp/2)·g]/(n·mp·κ·r)
+    # = (8e4·0.007 + 2000·0.013 + 0.35·9.80665)/(6·0.05·0.5·0.0425) = 589.4323275/0.006375
+    hand = math.sqrt((560.0 + 26.0 + 0.35 * 9.80665) / 0.006375)
+    assert again.tolist() == pytest.approx([hand, hand], rel=1e-12)
+    assert hand == pytest.approx(304.0723, abs=1e-4)
+
+
+def test_a_refused_point_carries_its_reason_on_both_paths() -> None:
+    # point 1: preloads that do not hold the half-coupling against gravity pointing away;
+    # point 2: a motor whose no-load speed (100 rad/s) is below the release speed (244)
+    x = {**REFERENCE_DESIGN, "gravity": np.array([9.80665, -100.0, 9.80665])}
+    x["power_spring_preload"] = np.array([0.002, 1e-6, 0.002])
+    x["auxiliary_spring_preload"] = np.array([0.008, 1e-6, 0.008])
+    x["motor_no_load_speed"] = np.array([1e4, 1e4, 100.0])
+    o = closed_form_cycle_array(x)
+    assert o.refusal.tolist() == [HELD, NOT_HELD, NEVER_FAST_ENOUGH]
+    assert np.isnan(o.release_speed[1:]).all() and np.isfinite(o.release_speed[0])
+    fields = {NOT_HELD: "power_spring_preload", NEVER_FAST_ENOUGH: "motor_no_load_speed"}
+    for j in (1, 2):
+        one = {k: (v[j] if isinstance(v, np.ndarray) else v) for k, v in x.items()}
+        alone = closed_form_cycle_array(one)  # the same lines on one design: marked
+        assert alone.refusal == o.refusal[j]
+        with pytest.raises(EngineError) as refused:  # and raised with its reason
+            closed_form_cycle(one)
+        assert refused.value.field == fields[int(o.refusal[j])]

@@ -151,8 +151,8 @@ def test_stage_switches_carry_the_state():
     sim = C.simulate_cycle(x)
     assert sim.release_velocity > 0.01
     g = C.geometry("symmetric_v", x["cone_angle"])
-    carried = C._stage2_closed(x, sim.release_velocity, g).t
-    at_rest = C._stage2_closed(x, 0.0, g).t
+    carried = C._stage2(C.as_numbers(x), sim.release_velocity, g)[0]
+    at_rest = C._stage2(C.as_numbers(x), 0.0, g)[0]
     assert sim.engagement_time == pytest.approx(carried, rel=1e-7)
     assert sim.engagement_time > at_rest * 1.003
     # the paper's eq. 5 from rest: 6.5306 ms
@@ -190,7 +190,7 @@ def _first_peak(x):
     g = C.geometry(x["roller_geometry"], x["cone_angle"])
     p = C._params(x, g)
     w0 = C.liftoff_speed_of(x)
-    t0 = C._time_to_speed(x, C._inertia_at(x, g, x["roller_radius"]), w0)
+    t0 = C._time_to_speed(x, C._inertia(x, g, x["roller_radius"]), w0)
 
     def rhs(t, y):
         dw, a0, _ = C._rhs(C.S1, p, y[0], y[1], 0.0, y[2], 0.0)

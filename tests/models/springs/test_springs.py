@@ -139,8 +139,11 @@ def test_falling_region_is_where_the_rate_is_negative():
     rate = lambda s: (sp.disc_force(s + eps, **g) - sp.disc_force(s - eps, **g)) / (2 * eps)  # noqa: E731
     assert rate(lo) == pytest.approx(0.0, abs=1e-3 * rate(0.0))
     assert rate(0.5 * (lo + hi)) < 0 < rate(0.5 * lo)
-    assert sp.disc_falling_region(0.001, 0.00141) is None  # h0/t just below sqrt(2)
-    assert sp.disc_falling_region(0.001, 0.00142) is not None
+    assert math.isnan(sp.disc_falling_region(0.001, 0.00141)[0])  # h0/t just below sqrt(2)
+    assert not math.isnan(sp.disc_falling_region(0.001, 0.00142)[0])
+    # on arrays: the same per entry, NaN where the force rises everywhere
+    lo_arr, _ = sp.disc_falling_region(np.array([t, 0.001]), np.array([h0, 0.00141]))
+    assert lo_arr[0] == lo and math.isnan(lo_arr[1])
 
 
 def test_stack_friction_raises_loading_and_lowers_unloading():
