@@ -418,23 +418,34 @@ class _Design:
 
     bolt: Bolt
     notes: tuple[str, ...]
-    k_thread: float
-    k_bearing: float
-    radius: float
+    #: (k_G, k_K, R) of the torque formula.
+    coefficients: tuple[float, float, float]
     #: |M(torque_formula) − M(exact)| / M(exact), the closed form's error estimate.
     deviation: float
+
+
+def _torque_terms(
+    x: Mapping[str, Any], bolt: Bolt | BoltArrays, design: _Design | None = None
+) -> tuple[tuple[Any, Any, Any], Any]:
+    """(k_G, k_K, R) of the torque formula and its deviation from the exact relations.
+
+    VDI 2230-1 R13 / [004, eq. 10–15] on floats or arrays; a single design's come from
+    ``design`` where the rung estimate computed them for the same request.
+    """
+    if design is not None:
+        return design.coefficients, design.deviation
+    mu_g, mu_k, formula = x["thread_friction"], x["bearing_friction"], str(x["torque_formula"])
+    coefficients = torque_coefficients_raw(bolt, mu_g, mu_k, formula)
+    return coefficients, _deviation(bolt, mu_g, mu_k, formula, coefficients[0] + coefficients[1])
 
 
 def _resolve_design(x: Mapping[str, Any]) -> _Design:
     """The bolt (resolved once) and each torque coefficient (computed once) of a design."""
     bolt, notes = resolve_bolt(x)
-    mu_g, mu_k = float(x["thread_friction"]), float(x["bearing_friction"])
-    formula = str(x["torque_formula"])
-    k_thread, k_bearing, radius = (
-        float(v) for v in torque_coefficients_raw(bolt, mu_g, mu_k, formula)
+    (k_thread, k_bearing, radius), deviation = _torque_terms(x, bolt)
+    return _Design(
+        bolt, tuple(notes), (float(k_thread), float(k_bearing), float(radius)), float(deviation)
     )
-    deviation = float(_deviation(bolt, mu_g, mu_k, formula, sum((k_thread, k_bearing))))
-    return _Design(bolt, tuple(notes), k_thread, k_bearing, radius, deviation)
 
 
 class _Handoff(threading.local):
@@ -715,16 +726,13 @@ def _add_bought_part_checks(
 
 
 def _tightening_values(
-    x: Mapping[str, Any],
-    bolt: Bolt | BoltArrays,
-    coefficients: tuple[Any, Any, Any],
-    deviation: Any,
+    x: Mapping[str, Any], bolt: Bolt | BoltArrays, design: _Design | None = None
 ) -> dict[str, Any]:
     """The numbers of ``preload.tightening``, on floats (one design) or arrays (many).
 
-    ``coefficients`` are (k_G, k_K, R) of the chosen torque formula and ``deviation``
-    its distance from the exact one; the single run and the array path both come
-    here, so one set of lines gives every number.
+    The single run and the array path both come here, so one set of lines gives
+    every number, in the order of the procedure: R7's preload, then R13's torque
+    (:func:`_torque_terms`, the design's where the rung estimate computed them).
     """
     beta = pl.torsion_factor(
         bolt.pitch,
@@ -736,7 +744,7 @@ def _tightening_values(
     permissible = pl.assembly_preload(bolt.yield_strength, bolt.stress_area, beta, x["utilization"])
     force = permissible if x.get("preload") is None else x["preload"]
     sigma_eq = pl.equivalent_stress(force, bolt.stress_area, beta)
-    k_thread, k_bearing, radius = coefficients
+    (k_thread, k_bearing, radius), deviation = _torque_terms(x, bolt, design)
     m_thread, m_bearing = force * k_thread, force * k_bearing
     total = m_thread + m_bearing
     ideal = pl.ideal_torque(force, bolt.pitch)
@@ -772,15 +780,10 @@ def _tightening_values(
 
 
 def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    design = _handed_off(x) or _resolve_design(x)
-    bolt, notes = design.bolt, list(design.notes)
+    design = _handed_off(x)
+    bolt, notes = (design.bolt, list(design.notes)) if design else resolve_bolt(x)
     checks: list[Check] = []
-    values = {
-        k: float(v)
-        for k, v in _tightening_values(
-            x, bolt, (design.k_thread, design.k_bearing, design.radius), design.deviation
-        ).items()
-    }
+    values = {k: float(v) for k, v in _tightening_values(x, bolt, design).items()}
     force, total = values["assembly_preload"], values["tightening_torque"]
     sigma_eq, share = values["equivalent_stress"], values["ideal_torque_share"]
     if x.get("preload") is not None:
@@ -816,7 +819,7 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
     return Result(
         values=dict(values),
         rung=ctx.rung,
-        error_estimate=design.deviation,
+        error_estimate=values["torque_formula_deviation"],
         checks=checks,
         notes=notes,
     )
@@ -843,10 +846,7 @@ def _tightening_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """The array path of ``preload.tightening``: its numbers on many points at once."""
     n = _points(x) or 1
     bolt, notes = resolve_bolt_arrays(x, n, labels=ctx.wants("fastener"))
-    mu_g, mu_k, formula = x["thread_friction"], x["bearing_friction"], str(x["torque_formula"])
-    coefficients = torque_coefficients_raw(bolt, mu_g, mu_k, formula)
-    deviation = _deviation(bolt, mu_g, mu_k, formula, coefficients[0] + coefficients[1])
-    values = _tightening_values(x, bolt, coefficients, deviation)
+    values = _tightening_values(x, bolt)
     verdicts: dict[str, Any] = {}
     if x.get("preload") is not None:
         verdicts["below_yield"] = values["equivalent_stress"] <= bolt.yield_strength
@@ -1285,13 +1285,14 @@ def _control_values(
     bolt: Bolt | BoltArrays,
     method: ControlMethod,
     section: tuple[Any, Any],
-    per_preload: Any,
-) -> dict[str, Any]:
+    design: _Design | None = None,
+) -> tuple[dict[str, Any], Any]:
     """The preload band and target of ``preload.control``, on floats or arrays.
 
-    ``section`` is (d_0, A_0) of the smallest section and ``per_preload`` k_G + k_K of
-    the torque formula. VDI 2230-1 R7 at the smallest section ([004, eq. 3–4]), the
-    method's band, [004, eq. 2]'s required preload.
+    ``section`` is (d_0, A_0) of the smallest section. VDI 2230-1 R7 at the smallest
+    section ([004, eq. 3–4]), the method's band, [004, eq. 2]'s required preload, then
+    R13's torque for the nominal preload (:func:`_torque_terms`, the design's where the
+    rung estimate computed them); also the torque formula's deviation from the exact one.
     """
     d0, area0 = section
     beta = pl.torsion_factor(
@@ -1302,9 +1303,10 @@ def _control_values(
     lo_factor, _ = pl.preload_factor_range(str(x["load_type"]))
     factor = lo_factor if x.get("preload_factor") is None else x["preload_factor"]
     nominal, f_min, f_max = _method_band(method, permissible, at_yield, x.get("preload"))
-    return {
+    (k_thread, k_bearing, _), deviation = _torque_terms(x, bolt, design)
+    values = {
         "controlled_quantity": method.controls,
-        "target_torque": nominal * per_preload,
+        "target_torque": nominal * (k_thread + k_bearing),
         "target_force": nominal,
         "nominal_preload": nominal,
         "preload_min": f_min,
@@ -1316,6 +1318,7 @@ def _control_values(
         "permissible_preload": permissible,
         "yield_preload": at_yield,
     }
+    return values, deviation
 
 
 def _stretch_values(
@@ -1369,8 +1372,8 @@ def _method_band(
 
 
 def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    design = _handed_off(x) or _resolve_design(x)
-    bolt, notes = design.bolt, list(design.notes)
+    design = _handed_off(x)
+    bolt, notes = (design.bolt, list(design.notes)) if design else resolve_bolt(x)
     warnings: list[str] = []
     checks: list[Check] = []
     method = get_method(str(x["method"]))
@@ -1388,9 +1391,8 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"{bolt.stress_diameter * 1e3:.4g} mm: the permissible and yield preloads use "
             f"A_0 = {area0 * 1e6:.4g} mm² and W_p = π d_0³/16 (VDI 2230-1 R7; [004, eq. 3–4])"
         )
-    values = _plain(
-        _control_values(x, bolt, method, (d0, area0), design.k_thread + design.k_bearing)
-    )
+    shared, deviation = _control_values(x, bolt, method, (d0, area0), design)
+    values = _plain(shared)
     permissible, at_yield = values["permissible_preload"], values["yield_preload"]
     nominal, f_min, f_max = values["nominal_preload"], values["preload_min"], values["preload_max"]
     torque, required, factor = (
@@ -1586,7 +1588,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
     return Result(
         values=values,
         rung=ctx.rung,
-        error_estimate=design.deviation,
+        error_estimate=float(deviation),
         checks=checks,
         notes=notes,
         warnings=warnings,
@@ -1734,8 +1736,7 @@ def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
     formula = str(x["torque_formula"])
     d0, area0, _, fine = _smallest_section(bolt, x)
     ok &= fine
-    k_thread, k_bearing, _ = torque_coefficients_raw(bolt, mu_g, mu_k, formula)
-    values = _control_values(x, bolt, method, (d0, area0), k_thread + k_bearing)
+    values, _ = _control_values(x, bolt, method, (d0, area0))
     permissible, at_yield = values["permissible_preload"], values["yield_preload"]
     nominal, f_min, f_max = values["nominal_preload"], values["preload_min"], values["preload_max"]
     torque, required = values["target_torque"], values["required_preload"]
