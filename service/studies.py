@@ -59,7 +59,7 @@ from engine.study_exec import Cancelled, DaskExecutor, InProcess, StudyRun, run_
 
 from . import schemas
 from .api import _ERRORS, API_PREFIX
-from .config import _float, _int
+from .config import _float, _int, usable_cpus
 from .units import quantity
 
 _KEEP_JOBS = 64
@@ -92,7 +92,7 @@ class StudySettings:
             ("STUDY_MAX_ACTIVE", self.max_active, 1, ""),
             ("STUDY_INPROCESS_POINTS", self.inprocess_points, 0, "0: every study on Dask"),
             ("STUDY_KEEP_POINTS", self.keep_points_max, 0, "0: raw points never kept"),
-            ("DASK_WORKERS", self.dask_workers or 0, 0, "0: one worker per core"),
+            ("DASK_WORKERS", self.dask_workers or 0, 0, "0: one worker per usable CPU"),
         )
         for name, value, lowest, meaning in counts:
             if not value >= lowest:
@@ -252,9 +252,10 @@ class Studies:
     def dask(self) -> DaskExecutor:
         with self.lock:
             if self._dask is None:
-                self._dask = DaskExecutor(
-                    self.settings.dask_scheduler, n_workers=self.settings.dask_workers
-                )
+                # one worker per CPU this process may use (affinity, cgroup quota), not one
+                # per CPU of the host: 2 in a 2-CPU container on a 64-CPU machine
+                workers = self.settings.dask_workers or usable_cpus()
+                self._dask = DaskExecutor(self.settings.dask_scheduler, n_workers=workers)
             return self._dask
 
     def _prune(self) -> None:
