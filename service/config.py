@@ -3,7 +3,8 @@
 The bounds on work (``BUDGET_S``, ``MAX_STEPS``, ``MAX_SERIES_POINTS``,
 ``MAX_BODY_BYTES``, the lanes' ``ENGINE_THREADS``, ``ENGINE_QUEUE``, ``HEAVY_SLOTS``,
 ``HEAVY_QUEUE``, ``HEAVY_PER_CLIENT``, ``ADMISSION_WAIT_S``, ``INLINE_BUDGET_S``, and the
-connection bounds ``MAX_CONNECTIONS``, ``HEADER_TIMEOUT_S``, ``BODY_TIMEOUT_S``) are read once
+connection bounds ``MAX_CONNECTIONS``, ``MAX_CONNECTIONS_PER_CLIENT``, ``MAX_HEAD_BYTES``,
+``HEADER_TIMEOUT_S``, ``BODY_TIMEOUT_S``) are read once
 when the app is built; a value that is not a positive number stops the service at
 start-up with a message naming the variable, rather than at the first request. Counts
 sized to the machine (the heavy lane, the Dask workers) follow the CPUs the process may
@@ -144,11 +145,17 @@ class Settings:
     admission_wait_s: float = field(default_factory=lambda: _float("ADMISSION_WAIT_S", 0.5))
     #: Concurrent connections per process (uvicorn's limit; over it: 503).
     max_connections: int = field(default_factory=lambda: _int("MAX_CONNECTIONS", 1000))
+    #: Connections one client address may hold at once (over it: 503) [connections].
+    max_connections_per_client: int = field(
+        default_factory=lambda: _int("MAX_CONNECTIONS_PER_CLIENT", 100)
+    )
+    #: Largest request head (request line and headers); over it: 431 [bytes].
+    max_head_bytes: int = field(default_factory=lambda: _int("MAX_HEAD_BYTES", 16 * 1024))
     #: A request's headers must arrive within this many seconds of its first byte [s].
     header_timeout_s: float = field(default_factory=lambda: _float("HEADER_TIMEOUT_S", 10.0))
     #: On SIGTERM, how long open requests may take to finish before the process exits [s].
     shutdown_timeout_s: int = field(default_factory=lambda: _int("SHUTDOWN_TIMEOUT_S", 3))
-    #: Each piece of a request body must arrive within this many seconds [s].
+    #: The whole request body must arrive within this many seconds of its head [s].
     body_timeout_s: float = field(default_factory=lambda: _float("BODY_TIMEOUT_S", 10.0))
     #: How long past its budget a computation that ignores its deadline is waited for [s].
     budget_grace_s: float = field(default_factory=lambda: _float("BUDGET_GRACE_S", 1.0))
@@ -173,6 +180,8 @@ class Settings:
             "HEAVY_PER_CLIENT": self.heavy_per_client,
             "ADMISSION_WAIT_S": self.admission_wait_s,
             "MAX_CONNECTIONS": self.max_connections,
+            "MAX_CONNECTIONS_PER_CLIENT": self.max_connections_per_client,
+            "MAX_HEAD_BYTES": self.max_head_bytes,
             "HEADER_TIMEOUT_S": self.header_timeout_s,
             "BODY_TIMEOUT_S": self.body_timeout_s,
         }

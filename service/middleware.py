@@ -4,7 +4,8 @@
   response, one JSON access-log line per request (never the body).
 * :class:`BodyGuard`: JSON bodies only (415 otherwise) and at most
   ``MAX_BODY_BYTES`` (413), counted as the bytes arrive, so a chunked body
-  without ``content-length`` is cut off as soon as it passes the limit.
+  without ``content-length`` is cut off as soon as it passes the limit; the whole
+  body within ``BODY_TIMEOUT_S`` (408).
 """
 
 from __future__ import annotations
@@ -249,12 +250,17 @@ class BodyGuard:
         seen = 0
         started = False
         complete = False
+        loop = asyncio.get_running_loop()
+        deadline = loop.time() + self.body_timeout_s  # for the whole body, not each piece
 
         async def limited() -> Message:
             nonlocal seen, complete
             if complete:  # the body is in: what follows is http.disconnect, whenever it comes
                 return await receive()
-            message = await _within(receive, self.body_timeout_s)
+            left = deadline - loop.time()
+            if left <= 0:
+                raise BodyTimeout(self.body_timeout_s)
+            message = await _within(receive, left, self.body_timeout_s)
             if message["type"] == "http.request":
                 seen += len(message.get("body", b""))
                 if seen > self.limit:
@@ -282,8 +288,9 @@ class BodyGuard:
         await _refuse(send, 413, BodyTooLarge.kind, BodyTooLarge(self.limit).detail)
 
 
-async def _within(receive: Receive, timeout_s: float) -> Message:
-    """``await receive()``, or :class:`BodyTimeout` after ``timeout_s``.
+async def _within(receive: Receive, timeout_s: float, budget_s: float) -> Message:
+    """``await receive()``, or :class:`BodyTimeout` (naming the body's whole ``budget_s``)
+    after ``timeout_s``, what is left of it.
 
     One timer handle that cancels the task, not ``asyncio.timeout`` (its context object
     and rescheduling cost ~8 µs a request, issue 21) nor ``wait_for`` (a task per call,
@@ -303,7 +310,7 @@ async def _within(receive: Receive, timeout_s: float) -> Message:
     except asyncio.CancelledError:
         if expired:
             task.uncancel()
-            raise BodyTimeout(timeout_s) from None
+            raise BodyTimeout(budget_s) from None
         raise
     finally:
         handle.cancel()
@@ -340,13 +347,16 @@ class BodyTooLarge(HTTPException):
 
 
 class BodyTimeout(HTTPException):
-    """A body chunk did not arrive within ``BODY_TIMEOUT_S`` (408, connection closed)."""
+    """The whole body did not arrive within ``BODY_TIMEOUT_S`` of its head (408, connection
+    closed): a body trickled a byte at a time no longer holds a connection forever."""
 
     kind = "body_timeout"
 
     def __init__(self, timeout_s: float) -> None:
         super().__init__(
-            408, f"the request body stalled for {timeout_s:g} s (BODY_TIMEOUT_S); send it whole"
+            408,
+            f"the request body did not arrive within {timeout_s:g} s (BODY_TIMEOUT_S); "
+            "send it whole",
         )
 
 
