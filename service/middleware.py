@@ -1,7 +1,8 @@
 """Plain ASGI middleware (no per-request objects beyond a closure): cheap enough for every call.
 
 * :class:`FrontDoor` (outermost): a request id, security headers on every
-  response, one JSON access-log line per request (never the body).
+  response, redirects to a path on this server (never the request's Host), one
+  JSON access-log line per request (never the body).
 * :class:`BodyGuard`: JSON bodies only (415 otherwise) and at most
   ``MAX_BODY_BYTES`` (413), counted as the bytes arrive, so a chunked body
   without ``content-length`` is cut off as soon as it passes the limit; the whole
@@ -19,6 +20,7 @@ import re
 import time
 from collections.abc import Awaitable, Callable, MutableMapping
 from typing import Any
+from urllib.parse import urlsplit
 
 from starlette.exceptions import HTTPException
 
@@ -92,7 +94,11 @@ class FrontDoor:
             if message["type"] == "http.response.start":
                 started = True
                 status = message["status"]
-                headers = [(k, v) for k, v in message.get("headers", ()) if k.lower() != b"server"]
+                headers = [
+                    (k, _local(v) if k.lower() == b"location" else v)
+                    for k, v in message.get("headers", ())
+                    if k.lower() != b"server"
+                ]
                 if not any(k.lower() == _CSP for k, _ in headers):
                     headers.append((_CSP, self._csp))
                 headers.extend(SECURITY_HEADERS)
@@ -181,6 +187,28 @@ def _fresh_id() -> bytes:
     32 hex digits like a UUID's, without a system call per request (issue 21: uuid4 took
     ~2 µs). Not a secret: it names a request in the logs."""
     return f"{_ID_PREFIX}{next(_ID_COUNTER):016x}".encode()
+
+
+def _local(location: bytes) -> bytes:
+    """A redirect's target as a path on this server, never naming a host.
+
+    Starlette builds absolute redirects (a directory's trailing slash, ``/.`` to ``/./``)
+    from the request's Host header, so a forged Host came back in ``Location``; the
+    service only ever redirects to itself, so the scheme and host are dropped.
+
+    >>> _local(b"http://evil.example/./")
+    b'/./'
+    >>> _local(b"//evil.example/a?b=1#c")
+    b'/a?b=1#c'
+    >>> _local(b"./#view=report")
+    b'./#view=report'
+    """
+    parts = urlsplit(location.decode("latin-1"))
+    if not (parts.scheme or parts.netloc):
+        return location
+    path = "/" + parts.path.lstrip("/")  # "//host" in the path would name a host again
+    local = path + (f"?{parts.query}" if parts.query else "")
+    return (local + (f"#{parts.fragment}" if parts.fragment else "")).encode("latin-1")
 
 
 def _header(scope: Scope, name: bytes) -> bytes | None:

@@ -476,7 +476,15 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
             operation_id=spec.name.replace(".", "_") + "_study",
             responses={
                 **_ERRORS,
-                202: {"description": "accepted: the job to poll (state, progress, links)"},
+                202: {
+                    "description": "accepted: the job to poll (state, progress, links)",
+                    "headers": {
+                        "Location": {
+                            "description": "the job's address, /api/v1/jobs/{job}",
+                            "schema": {"type": "string"},
+                        }
+                    },
+                },
                 503: {
                     "model": schemas.ErrorResponse,
                     "description": "too many unfinished studies (per client or in all); retry",
@@ -493,6 +501,7 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
 
     @router.get(
         "/jobs/{job_id}",
+        operation_id="get_job",
         summary="A study's state, progress and, when done, result",
         responses=_404,
     )
@@ -501,6 +510,7 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
 
     @router.delete(
         "/jobs/{job_id}",
+        operation_id="delete_job",
         summary="Cancel a study and free its workers, or remove a finished one and its data",
         responses=_404,
     )
@@ -518,6 +528,7 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
 
     @router.get(
         "/jobs/{job_id}/points.csv",
+        operation_id="get_job_points_csv",
         summary="The raw points of a finished study (asked with keep_points)",
         response_class=Response,
         responses={**_404, 200: {"content": {"text/csv": {}}, "description": "the points"}},
@@ -538,6 +549,7 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
 
     @router.get(
         "/jobs/{job_id}/points.parquet",
+        operation_id="get_job_points_parquet",
         summary="The raw points of a finished study as Parquet (asked with keep_points)",
         description=(
             "The columns of points.csv (inputs, then outputs, SI), float64, null where a "
