@@ -235,8 +235,32 @@ def scalar_outputs(spec: ModelSpec) -> tuple[str, ...]:
     )
 
 
-def plan(spec: ModelSpec, study: Study) -> Plan:
-    """Validate a study and draw its points (seeded; SI units)."""
+def study_size(spec: ModelSpec, study: Study) -> int:
+    r"""The number of points ``study`` evaluates, found without drawing them.
+
+    Everything :func:`plan` refuses before it draws is refused here too (method, variables
+    and their laws, base, bins, seed, outputs, fidelity, size), so a server can check its
+    quotas before it spends the time and memory of drawing. For ``sobol`` the count is
+    Saltelli's design, :math:`N = 2^{\lceil \log_2 n \rceil} (k + 2)` for ``n`` samples
+    and ``k`` inputs [Saltelli2010]; for a grid the product of the axes' lengths.
+
+    >>> from engine.models import get_model
+    >>> clutch = get_model("clutch.ball")
+    >>> law = Variable("flank_friction", low=0.0, high=0.1)
+    >>> study_size(clutch, Study(variables=(law,), method="sobol", samples=1000))
+    3072
+    >>> grid = Variable("flank_friction", low=0.0, high=0.1, num=7)
+    >>> study_size(clutch, Study(variables=(grid,), method="grid"))
+    7
+    """
+    return _checked(spec, study)[2]
+
+
+def _checked(
+    spec: ModelSpec, study: Study
+) -> tuple[list[Param], tuple[str, ...], int, dict[str, np.ndarray] | None]:
+    """What :func:`plan` needs before drawing: the varied params, the outputs to collect,
+    the number of points and (a grid) its axes; every cheap refusal is raised here."""
     if study.method not in METHODS:
         raise InputOutOfRange(
             f"method = {study.method!r} is not allowed: must be one of {', '.join(METHODS)}",
@@ -279,7 +303,13 @@ def plan(spec: ModelSpec, study: Study) -> Plan:
             )
         if study.feasible_when not in outputs:
             outputs = (*outputs, study.feasible_when)
-    notes: list[str] = []
+    rungs = (*spec.rung_names, "auto")
+    if study.fidelity is not None and study.fidelity not in rungs:
+        raise InputOutOfRange(
+            f"fidelity = {str(study.fidelity)[:40]!r} is not a rung of {spec.name}: "
+            f"one of {', '.join(repr(r) for r in rungs)}",
+            field="fidelity",
+        )
     k = len(params)
     if study.method == "grid":
         if k > MAX_GRID_INPUTS:
@@ -287,21 +317,37 @@ def plan(spec: ModelSpec, study: Study) -> Plan:
                 f"variables: a grid varies at most {MAX_GRID_INPUTS} inputs", field="variables"
             )
         axes = {v.name: _grid_axis(p, v) for p, v in zip(params, study.variables, strict=True)}
-        shape = tuple(a.size for a in axes.values())
-        n = math.prod(shape)
+        n = math.prod(a.size for a in axes.values())
         _check_size(n)
+        return params, outputs, n, axes
+    if study.samples < 2:
+        raise InputOutOfRange("samples must be ≥ 2", field="samples")
+    for p, v in zip(params, study.variables, strict=True):
+        _transform(p, v, np.full(1, 0.5))  # each law's refusals, on one number
+    n = study.samples
+    if study.method == "sobol":
+        n = 2 ** math.ceil(math.log2(study.samples)) * (k + 2)
+    _check_size(n)
+    return params, outputs, n, None
+
+
+def plan(spec: ModelSpec, study: Study) -> Plan:
+    """Validate a study and draw its points (seeded; SI units)."""
+    params, outputs, n, axes = _checked(spec, study)
+    names = [v.name for v in study.variables]
+    notes: list[str] = []
+    k = len(params)
+    if axes is not None:
+        shape = tuple(a.size for a in axes.values())
         mesh = np.meshgrid(*axes.values(), indexing="ij")
         columns = {name: m.ravel() for name, m in zip(axes, mesh, strict=True)}
         _validate_base(spec, study, columns)
         return Plan(columns, n, outputs, grid_shape=shape, grid_axes=axes, notes=notes)
-    if study.samples < 2:
-        raise InputOutOfRange("samples must be ≥ 2", field="samples")
     if study.method == "sobol":
         # Saltelli's design: A and B from one 2k-dimensional scrambled Sobol' sequence
         # (a power of two keeps the sequence balanced), then A with column i from B.
         m = math.ceil(math.log2(study.samples))
         base_n = 2**m
-        _check_size(base_n * (k + 2))
         if base_n != study.samples:
             notes.append(
                 f"samples rounded up from {study.samples} to {base_n}, a power of two, which "
@@ -332,8 +378,6 @@ def plan(spec: ModelSpec, study: Study) -> Plan:
         columns = {name: matrix[:, i].copy() for i, name in enumerate(names)}
         _validate_base(spec, study, columns)
         return Plan(columns, matrix.shape[0], outputs, sobol_base=base_n, notes=notes)
-    n = study.samples
-    _check_size(n)
     rng = np.random.default_rng(study.seed)
     u = qmc.LatinHypercube(d=k, seed=rng).random(n) if study.method == "lhs" else rng.random((n, k))
     u = np.clip(u, 1e-12, 1.0 - 1e-12)

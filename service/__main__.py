@@ -1,8 +1,9 @@
 """``python -m service [--host H] [--port P] [--workers N]``: serve the API and the form.
 
-Connections: at most ``MAX_CONNECTIONS`` at once (uvicorn answers 503 beyond),
-each request head within ``HEADER_TIMEOUT_S`` (:mod:`service.connections`),
-each body chunk within ``BODY_TIMEOUT_S``; on SIGTERM, open requests get
+Connections: at most ``MAX_CONNECTIONS`` at once and ``MAX_CONNECTIONS_PER_CLIENT``
+from one address (a JSON 503 with Retry-After beyond), each request head within
+``HEADER_TIMEOUT_S`` and ``MAX_HEAD_BYTES`` (:mod:`service.connections`), each whole
+body within ``BODY_TIMEOUT_S``; on SIGTERM, open requests get
 ``SHUTDOWN_TIMEOUT_S`` to finish. Error lines are rate-limited per kind.
 
 uvicorn's own access log is off: :class:`service.middleware.FrontDoor` writes
@@ -76,6 +77,7 @@ def main(argv: list[str] | None = None) -> None:
         server_header=False,
         date_header=False,
         http=protocol(),
+        h11_max_incomplete_event_size=settings.max_head_bytes,
         limit_concurrency=settings.max_connections,
         timeout_keep_alive=5,
         timeout_graceful_shutdown=settings.shutdown_timeout_s,

@@ -469,12 +469,17 @@ def catalogue_router(models: Sequence[ModelSpec]) -> APIRouter:
     catalogue = {"models": [spec.describe() for spec in models]}  # fixed once the app is built
     entries = {spec.name: entry for spec, entry in zip(models, catalogue["models"], strict=True)}
 
-    @router.get("/models", summary="Every model: inputs, units, ranges, outputs, rungs")
+    @router.get(
+        "/models",
+        operation_id="list_models",
+        summary="Every model: inputs, units, ranges, outputs, rungs",
+    )
     def list_models() -> dict[str, Any]:
         return catalogue
 
     @router.get(
         "/models/{name}",
+        operation_id="get_model",
         summary="One model's catalogue entry",
         responses={404: {"model": schemas.ErrorResponse, "description": "no such model"}},
     )
@@ -485,7 +490,11 @@ def catalogue_router(models: Sequence[ModelSpec]) -> APIRouter:
 
     sources = {"sources": engine.sources.catalogue()}
 
-    @router.get("/sources", summary="Every cited source: [000, eq. 5] resolves here")
+    @router.get(
+        "/sources",
+        operation_id="list_sources",
+        summary="Every cited source: [000, eq. 5] resolves here",
+    )
     def list_sources() -> dict[str, Any]:
         return sources
 

@@ -2,16 +2,21 @@
 
 The bounds on work (``BUDGET_S``, ``MAX_STEPS``, ``MAX_SERIES_POINTS``,
 ``MAX_BODY_BYTES``, the lanes' ``ENGINE_THREADS``, ``ENGINE_QUEUE``, ``HEAVY_SLOTS``,
-``HEAVY_QUEUE``, ``HEAVY_PER_CLIENT``, ``ADMISSION_WAIT_S``, ``INLINE_BUDGET_S``, and the connection
-bounds ``MAX_CONNECTIONS``, ``HEADER_TIMEOUT_S``, ``BODY_TIMEOUT_S``) are read once when
-the app is built; a value that is not a positive number stops the service at
-start-up with a message naming the variable, rather than at the first request.
+``HEAVY_QUEUE``, ``HEAVY_PER_CLIENT``, ``ADMISSION_WAIT_S``, ``INLINE_BUDGET_S``, and the
+connection bounds ``MAX_CONNECTIONS``, ``MAX_CONNECTIONS_PER_CLIENT``, ``MAX_HEAD_BYTES``,
+``HEADER_TIMEOUT_S``, ``BODY_TIMEOUT_S``) are read once
+when the app is built; a value that is not a positive number stops the service at
+start-up with a message naming the variable, rather than at the first request. Counts
+sized to the machine (the heavy lane, the Dask workers) follow the CPUs the process may
+really use (:func:`usable_cpus`: affinity and cgroup quota), not the host's count.
 """
 
 from __future__ import annotations
 
+import math
 import os
 from dataclasses import dataclass, field
+from pathlib import Path
 
 from engine.runner import DEFAULT_BUDGET_S, DEFAULT_MAX_STEPS
 
@@ -21,8 +26,74 @@ def _origins() -> tuple[str, ...]:
     return tuple(o.strip() for o in raw.split(",") if o.strip())
 
 
-def _cores() -> int:
-    return max(1, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else 1)
+def _quota(text: str, period_text: str | None = None) -> float | None:
+    """CPUs a cgroup quota allows: cgroup v2 ``cpu.max`` holds ``"<quota> <period>"`` or
+    ``"max <period>"``; v1 gives the quota and period in two files, ``-1`` for none."""
+    parts = text.split()
+    if period_text is not None:
+        parts = [parts[0] if parts else "", period_text.strip()]
+    try:
+        quota, period = parts[0], float(parts[1])
+        return None if quota in ("max", "-1") or period <= 0 else float(quota) / period
+    except (IndexError, ValueError):
+        return None
+
+
+def _read(path: Path) -> str | None:
+    try:
+        return path.read_text()
+    except OSError:
+        return None
+
+
+def cgroup_cpus(
+    root: Path = Path("/sys/fs/cgroup"), self_cgroup: Path | None = None
+) -> float | None:
+    """The CPU quota of this process's cgroup (and its parents), in CPUs; None when unlimited.
+
+    cgroup v2: ``cpu.max`` in the process's group (from ``/proc/self/cgroup``, ``0::/path``)
+    and each parent up to ``root``; v1: ``cpu.cfs_quota_us / cpu.cfs_period_us`` under
+    ``root/cpu`` (or ``root/cpu,cpuacct``). The smallest quota found holds.
+    """
+    groups = {"": "/"}
+    for line in (_read(self_cgroup or Path("/proc/self/cgroup")) or "").splitlines():
+        number, _, rest = line.partition(":")
+        controllers, _, path = rest.partition(":")
+        if number == "0" and controllers == "":
+            groups[""] = path
+        elif "cpu" in controllers.split(","):
+            groups["cpu"] = path
+    found: list[float] = []
+    places = (
+        (root, groups[""], True),
+        (root / "cpu", groups.get("cpu", "/"), False),
+        (root / "cpu,cpuacct", groups.get("cpu", "/"), False),
+    )
+    for base, group, v2 in places:
+        parts = [p for p in group.split("/") if p and p != ".."]
+        for depth in range(len(parts), -1, -1):  # the group itself, then each parent
+            here = base.joinpath(*parts[:depth])
+            text = _read(here / ("cpu.max" if v2 else "cpu.cfs_quota_us"))
+            if text is None:
+                continue
+            cpus = _quota(text) if v2 else _quota(text, _read(here / "cpu.cfs_period_us") or "")
+            if cpus is not None:
+                found.append(cpus)
+    return min(found) if found else None
+
+
+def usable_cpus(root: Path = Path("/sys/fs/cgroup"), self_cgroup: Path | None = None) -> int:
+    """The CPUs this process may really use: those it may run on (its affinity, not the
+    host's count), capped by its cgroup's CPU quota rounded up; at least 1.
+
+    A container limited to 2 CPUs on a 64-CPU host answers 2, so the service starts two
+    Dask workers and two heavy slots, not 64.
+    """
+    cpus = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
+    quota = cgroup_cpus(root, self_cgroup)
+    if quota is not None:
+        cpus = min(cpus or 1, math.ceil(quota - 1e-9))
+    return max(1, cpus or 1)
 
 
 def _int(name: str, default: int) -> int:
@@ -59,12 +130,12 @@ class Settings:
     #: Quick computations that may wait for a thread; beyond that a request gets 503.
     engine_queue: int = field(default_factory=lambda: _int("ENGINE_QUEUE", 64))
     #: Slots of the heavy lane (simulations, looping sweeps): one per core by default.
-    heavy_slots: int = field(default_factory=lambda: _int("HEAVY_SLOTS", _cores()))
+    heavy_slots: int = field(default_factory=lambda: _int("HEAVY_SLOTS", usable_cpus()))
     #: Heavy computations that may wait for a slot.
     heavy_queue: int = field(default_factory=lambda: _int("HEAVY_QUEUE", 16))
     #: Heavy slots one client (address) may hold at once: its fair share.
     heavy_per_client: int = field(
-        default_factory=lambda: _int("HEAVY_PER_CLIENT", max(1, _cores() // 2))
+        default_factory=lambda: _int("HEAVY_PER_CLIENT", max(1, usable_cpus() // 2))
     )
     #: Time box of a cheap computation run inline on the event loop, without the thread
     #: hop (service.workers.Inline); a (model, rung) measured slower moves to the quick
@@ -74,11 +145,17 @@ class Settings:
     admission_wait_s: float = field(default_factory=lambda: _float("ADMISSION_WAIT_S", 0.5))
     #: Concurrent connections per process (uvicorn's limit; over it: 503).
     max_connections: int = field(default_factory=lambda: _int("MAX_CONNECTIONS", 1000))
+    #: Connections one client address may hold at once (over it: 503) [connections].
+    max_connections_per_client: int = field(
+        default_factory=lambda: _int("MAX_CONNECTIONS_PER_CLIENT", 100)
+    )
+    #: Largest request head (request line and headers); over it: 431 [bytes].
+    max_head_bytes: int = field(default_factory=lambda: _int("MAX_HEAD_BYTES", 16 * 1024))
     #: A request's headers must arrive within this many seconds of its first byte [s].
     header_timeout_s: float = field(default_factory=lambda: _float("HEADER_TIMEOUT_S", 10.0))
     #: On SIGTERM, how long open requests may take to finish before the process exits [s].
     shutdown_timeout_s: int = field(default_factory=lambda: _int("SHUTDOWN_TIMEOUT_S", 3))
-    #: Each piece of a request body must arrive within this many seconds [s].
+    #: The whole request body must arrive within this many seconds of its head [s].
     body_timeout_s: float = field(default_factory=lambda: _float("BODY_TIMEOUT_S", 10.0))
     #: How long past its budget a computation that ignores its deadline is waited for [s].
     budget_grace_s: float = field(default_factory=lambda: _float("BUDGET_GRACE_S", 1.0))
@@ -103,6 +180,8 @@ class Settings:
             "HEAVY_PER_CLIENT": self.heavy_per_client,
             "ADMISSION_WAIT_S": self.admission_wait_s,
             "MAX_CONNECTIONS": self.max_connections,
+            "MAX_CONNECTIONS_PER_CLIENT": self.max_connections_per_client,
+            "MAX_HEAD_BYTES": self.max_head_bytes,
             "HEADER_TIMEOUT_S": self.header_timeout_s,
             "BODY_TIMEOUT_S": self.body_timeout_s,
         }

@@ -1,45 +1,105 @@
-"""Connection-level guards uvicorn lacks: a deadline for each request head, a quiet log.
+"""Connection-level guards uvicorn lacks: deadlines, a head size limit, a per-client cap.
 
-* :class:`HeadDeadline` (mixed into uvicorn's h11 and httptools protocols): a
-  connection must deliver a complete request head (request line and headers)
-  within ``HEADER_TIMEOUT_S`` of being opened or of its previous answer; else
-  it is closed. A client that sends half a request and stalls (the issue: 200
-  of 200 such connections still open after 60 s) is dropped. uvicorn's own
-  ``timeout_keep_alive`` stops as soon as one byte arrives. The body has its
-  own per-chunk deadline, ``BODY_TIMEOUT_S``, in :class:`service.middleware.BodyGuard`.
+* :class:`HeadDeadline` (mixed into uvicorn's h11 and httptools protocols):
+
+  - a connection must deliver a complete request head (request line and headers)
+    within ``HEADER_TIMEOUT_S`` of being opened or of its previous answer; else it
+    is closed. A client that sends half a request and stalls (the issue: 200 of 200
+    such connections still open after 60 s) is dropped. uvicorn's own
+    ``timeout_keep_alive`` stops as soon as one byte arrives. The whole body has its
+    own deadline, ``BODY_TIMEOUT_S``, in :class:`service.middleware.BodyGuard`;
+  - a request head over ``MAX_HEAD_BYTES`` gets a JSON 431 and the connection is
+    closed (httptools has no limit of its own: 20 heads of 10 MB held 200 MB);
+  - one client address holds at most ``MAX_CONNECTIONS_PER_CLIENT`` connections;
+    a connection beyond that gets a JSON 503 with Retry-After and is closed, so one
+    client trickling bytes on a thousand sockets cannot take every slot.
+
+* :func:`service_unavailable`: uvicorn's answer beyond ``MAX_CONNECTIONS`` in all,
+  JSON with Retry-After like every other 503 of the service (uvicorn's own is plain
+  text without Retry-After).
 * :class:`FloodGuard`: a logging filter that lets each kind of line (logger and
   message template) through at most ``burst`` times per ``window_s`` and then
   counts the rest, reporting the count once the window ends. At the
   file-descriptor limit the accept loop logs one error per attempt (the issue:
   82 MB in 10 s); with this filter, a few lines.
+
+The per-client cap keys on the TCP peer address: behind a reverse proxy every
+client shares the proxy's address, so raise the cap there (or set it to the
+proxy's own connection count).
 """
 
 from __future__ import annotations
 
 import asyncio
+import json
 import logging
-import os
 import time
-from typing import Any
+from collections import Counter
+from typing import Any, ClassVar
 
+import uvicorn.protocols.http.h11_impl as h11_impl
 from uvicorn.protocols.http.h11_impl import H11Protocol
 
-HEADER_TIMEOUT_S = float(os.environ.get("HEADER_TIMEOUT_S", "10"))
+from .config import Settings
+from .errors import error_body
+from .middleware import SECURITY_HEADERS
+
+_SETTINGS = Settings()  # read once per server process; nonsense stops it at start-up
+HEADER_TIMEOUT_S = _SETTINGS.header_timeout_s
+MAX_HEAD_BYTES = _SETTINGS.max_head_bytes
+MAX_CONNECTIONS_PER_CLIENT = _SETTINGS.max_connections_per_client
+#: Seconds a client is asked to wait before it tries again after a 503.
+RETRY_AFTER_S = 1
+
+log = logging.getLogger("service.connections")
+
+
+def refusal(status: int, reason: str, kind: str, msg: str) -> bytes:
+    r"""A whole HTTP/1.1 answer, JSON in the service's error shape, that closes the
+    connection; a 503 says when to retry. Written straight to the transport by the
+    protocol, where no ASGI app runs.
+
+    >>> print(refusal(431, "Request Header Fields Too Large", "head_too_large", "big")
+    ...       .decode().split("\r\n\r\n")[1])
+    {"detail": [{"type": "head_too_large", "loc": [], "msg": "big", "field": null}]}
+    """
+    body = json.dumps(error_body(kind, msg, [])).encode()
+    headers = [
+        (b"content-type", b"application/json"),
+        (b"content-length", str(len(body)).encode()),
+        (b"connection", b"close"),
+        *([(b"retry-after", str(RETRY_AFTER_S).encode())] if status == 503 else []),
+        *SECURITY_HEADERS,
+    ]
+    head = f"HTTP/1.1 {status} {reason}\r\n".encode()
+    head += b"".join(k + b": " + v + b"\r\n" for k, v in headers)
+    return head + b"\r\n" + body
 
 
 class HeadDeadline:
-    """Close the connection when a request head takes longer than ``header_timeout_s``."""
+    """Close a connection whose request head is late or too large, or whose client
+    already holds its share of connections."""
 
     header_timeout_s = HEADER_TIMEOUT_S
+    max_head_bytes = MAX_HEAD_BYTES
+    max_per_client = MAX_CONNECTIONS_PER_CLIENT
+    #: Open connections per client address, in this server process.
+    per_client: ClassVar[Counter[str]] = Counter()
     _head_timer: asyncio.TimerHandle | None = None
+    _head_bytes = 0
+    _client: str | None = None  # set while this connection is counted for its client
+    _refused = False
     # provided by the uvicorn protocol this is mixed into
     loop: asyncio.AbstractEventLoop
     transport: asyncio.Transport
     cycle: Any
 
-    def _arm(self) -> None:
+    def _arm(self, seconds: float | None = None) -> None:
         if self._head_timer is None:
-            self._head_timer = self.loop.call_later(self.header_timeout_s, self._head_expired)
+            self._head_bytes = 0
+            self._head_timer = self.loop.call_later(
+                self.header_timeout_s if seconds is None else seconds, self._head_expired
+            )
 
     def _disarm(self) -> None:
         if self._head_timer is not None:
@@ -48,17 +108,56 @@ class HeadDeadline:
 
     def _head_expired(self) -> None:
         self._head_timer = None
-        if self.cycle is None or self.cycle.response_complete:
+        if self._refused or self.cycle is None or self.cycle.response_complete:
             self.transport.close()  # no complete head in time: drop the connection
+
+    def _refuse(self, status: int, reason: str, kind: str, msg: str) -> None:
+        self._refused = True
+        self._disarm()
+        if not self.transport.is_closing():
+            self.transport.write(refusal(status, reason, kind, msg))
+            self.transport.close()
 
     def connection_made(self, transport: asyncio.BaseTransport) -> None:
         super().connection_made(transport)  # type: ignore[misc]
+        peer = transport.get_extra_info("peername")
+        client = str(peer[0]) if isinstance(peer, tuple) and peer else "unknown"
+        if self.per_client[client] >= self.max_per_client:
+            # over the cap: answered (503) as soon as its request starts, and given only a
+            # moment to start it, so such connections never pile up
+            self._refused = True
+            self._arm(min(1.0, self.header_timeout_s))
+            log.warning("connection refused: a client holds %d connections", self.max_per_client)
+            return
+        self._client = client
+        self.per_client[client] += 1
         self._arm()
 
     def data_received(self, data: bytes) -> None:
+        if self._refused:
+            self._refuse(
+                503,
+                "Service Unavailable",
+                "too_many_connections",
+                f"this client has {self.max_per_client} connections open "
+                "(MAX_CONNECTIONS_PER_CLIENT); reuse one, or retry after the Retry-After "
+                "seconds",
+            )
+            return
+        waiting = self.cycle is None or self.cycle.response_complete
         super().data_received(data)  # type: ignore[misc]
         if self.cycle is not None and not self.cycle.response_complete:
-            self._disarm()  # a head arrived; its body has BODY_TIMEOUT_S per chunk
+            self._disarm()  # a head arrived; its body has BODY_TIMEOUT_S in all
+            self._head_bytes = 0
+        elif waiting and not self.transport.is_closing():
+            self._head_bytes += len(data)  # still no complete head: count what it holds
+            if self._head_bytes > self.max_head_bytes:
+                self._refuse(
+                    431,
+                    "Request Header Fields Too Large",
+                    "head_too_large",
+                    f"the request head is over {self.max_head_bytes} bytes (MAX_HEAD_BYTES)",
+                )
 
     def on_response_complete(self) -> None:
         super().on_response_complete()  # type: ignore[misc]
@@ -66,7 +165,30 @@ class HeadDeadline:
 
     def connection_lost(self, exc: Exception | None) -> None:
         self._disarm()
+        if self._client is not None:
+            self.per_client[self._client] -= 1
+            if self.per_client[self._client] <= 0:
+                del self.per_client[self._client]
+            self._client = None
         super().connection_lost(exc)  # type: ignore[misc]
+
+
+async def service_unavailable(scope: Any, receive: Any, send: Any) -> None:
+    """uvicorn's answer beyond ``MAX_CONNECTIONS``: JSON with Retry-After, like every 503."""
+    _, _, headers_and_body = refusal(
+        503,
+        "Service Unavailable",
+        "too_many_connections",
+        "the server has MAX_CONNECTIONS connections open; retry after the Retry-After seconds",
+    ).partition(b"\r\n")
+    head, _, body = headers_and_body.partition(b"\r\n\r\n")
+    headers = [tuple(line.split(b": ", 1)) for line in head.split(b"\r\n")]
+    await send({"type": "http.response.start", "status": 503, "headers": headers})
+    await send({"type": "http.response.body", "body": body, "more_body": False})
+
+
+# uvicorn's protocols look the name up in their own module at the limit: ours answers.
+h11_impl.service_unavailable = service_unavailable
 
 
 class GuardedH11Protocol(HeadDeadline, H11Protocol):
@@ -74,7 +196,10 @@ class GuardedH11Protocol(HeadDeadline, H11Protocol):
 
 
 try:
+    import uvicorn.protocols.http.httptools_impl as httptools_impl
     from uvicorn.protocols.http.httptools_impl import HttpToolsProtocol
+
+    httptools_impl.service_unavailable = service_unavailable
 
     class GuardedHttpToolsProtocol(HeadDeadline, HttpToolsProtocol):
         """uvicorn's httptools protocol with a request-head deadline."""

@@ -21,7 +21,11 @@ def _catalogue() -> dict[str, Any]:
     return catalogue()
 
 
-@router.get("/fasteners", summary="Threads, grades, heads, nuts, washers and materials (SI)")
+@router.get(
+    "/fasteners",
+    operation_id="list_fasteners",
+    summary="Threads, grades, heads, nuts, washers and materials (SI)",
+)
 def fasteners() -> dict[str, Any]:
     """Every catalogue entry a thread designation, grade or material input accepts."""
     return _catalogue()

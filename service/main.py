@@ -145,12 +145,13 @@ def create_app(
     errors.install(app)
     app.state.engine_pool = pool
 
-    @app.get("/healthz", tags=["service"], summary="Liveness")
+    @app.get("/healthz", tags=["service"], summary="Liveness", operation_id="healthz")
     async def healthz() -> dict[str, str]:  # on the loop: a liveness probe needs no thread
         return {"status": "ok"}
 
     @app.get(
         "/readyz",
+        operation_id="readyz",
         tags=["service"],
         summary="Readiness: 503 while either engine lane cannot admit work",
         responses={503: {"description": "a lane has no free slot and a full queue"}},

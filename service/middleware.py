@@ -1,10 +1,12 @@
 """Plain ASGI middleware (no per-request objects beyond a closure): cheap enough for every call.
 
 * :class:`FrontDoor` (outermost): a request id, security headers on every
-  response, one JSON access-log line per request (never the body).
+  response, redirects to a path on this server (never the request's Host), one
+  JSON access-log line per request (never the body).
 * :class:`BodyGuard`: JSON bodies only (415 otherwise) and at most
   ``MAX_BODY_BYTES`` (413), counted as the bytes arrive, so a chunked body
-  without ``content-length`` is cut off as soon as it passes the limit.
+  without ``content-length`` is cut off as soon as it passes the limit; the whole
+  body within ``BODY_TIMEOUT_S`` (408).
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ import re
 import time
 from collections.abc import Awaitable, Callable, MutableMapping
 from typing import Any
+from urllib.parse import urlsplit
 
 from starlette.exceptions import HTTPException
 
@@ -91,7 +94,11 @@ class FrontDoor:
             if message["type"] == "http.response.start":
                 started = True
                 status = message["status"]
-                headers = [(k, v) for k, v in message.get("headers", ()) if k.lower() != b"server"]
+                headers = [
+                    (k, _local(v) if k.lower() == b"location" else v)
+                    for k, v in message.get("headers", ())
+                    if k.lower() != b"server"
+                ]
                 if not any(k.lower() == _CSP for k, _ in headers):
                     headers.append((_CSP, self._csp))
                 headers.extend(SECURITY_HEADERS)
@@ -182,6 +189,28 @@ def _fresh_id() -> bytes:
     return f"{_ID_PREFIX}{next(_ID_COUNTER):016x}".encode()
 
 
+def _local(location: bytes) -> bytes:
+    """A redirect's target as a path on this server, never naming a host.
+
+    Starlette builds absolute redirects (a directory's trailing slash, ``/.`` to ``/./``)
+    from the request's Host header, so a forged Host came back in ``Location``; the
+    service only ever redirects to itself, so the scheme and host are dropped.
+
+    >>> _local(b"http://evil.example/./")
+    b'/./'
+    >>> _local(b"//evil.example/a?b=1#c")
+    b'/a?b=1#c'
+    >>> _local(b"./#view=report")
+    b'./#view=report'
+    """
+    parts = urlsplit(location.decode("latin-1"))
+    if not (parts.scheme or parts.netloc):
+        return location
+    path = "/" + parts.path.lstrip("/")  # "//host" in the path would name a host again
+    local = path + (f"?{parts.query}" if parts.query else "")
+    return (local + (f"#{parts.fragment}" if parts.fragment else "")).encode("latin-1")
+
+
 def _header(scope: Scope, name: bytes) -> bytes | None:
     for key, value in scope.get("headers") or ():
         if key.lower() == name:
@@ -249,12 +278,17 @@ class BodyGuard:
         seen = 0
         started = False
         complete = False
+        loop = asyncio.get_running_loop()
+        deadline = loop.time() + self.body_timeout_s  # for the whole body, not each piece
 
         async def limited() -> Message:
             nonlocal seen, complete
             if complete:  # the body is in: what follows is http.disconnect, whenever it comes
                 return await receive()
-            message = await _within(receive, self.body_timeout_s)
+            left = deadline - loop.time()
+            if left <= 0:
+                raise BodyTimeout(self.body_timeout_s)
+            message = await _within(receive, left, self.body_timeout_s)
             if message["type"] == "http.request":
                 seen += len(message.get("body", b""))
                 if seen > self.limit:
@@ -282,8 +316,9 @@ class BodyGuard:
         await _refuse(send, 413, BodyTooLarge.kind, BodyTooLarge(self.limit).detail)
 
 
-async def _within(receive: Receive, timeout_s: float) -> Message:
-    """``await receive()``, or :class:`BodyTimeout` after ``timeout_s``.
+async def _within(receive: Receive, timeout_s: float, budget_s: float) -> Message:
+    """``await receive()``, or :class:`BodyTimeout` (naming the body's whole ``budget_s``)
+    after ``timeout_s``, what is left of it.
 
     One timer handle that cancels the task, not ``asyncio.timeout`` (its context object
     and rescheduling cost ~8 µs a request, issue 21) nor ``wait_for`` (a task per call,
@@ -303,7 +338,7 @@ async def _within(receive: Receive, timeout_s: float) -> Message:
     except asyncio.CancelledError:
         if expired:
             task.uncancel()
-            raise BodyTimeout(timeout_s) from None
+            raise BodyTimeout(budget_s) from None
         raise
     finally:
         handle.cancel()
@@ -340,13 +375,16 @@ class BodyTooLarge(HTTPException):
 
 
 class BodyTimeout(HTTPException):
-    """A body chunk did not arrive within ``BODY_TIMEOUT_S`` (408, connection closed)."""
+    """The whole body did not arrive within ``BODY_TIMEOUT_S`` of its head (408, connection
+    closed): a body trickled a byte at a time no longer holds a connection forever."""
 
     kind = "body_timeout"
 
     def __init__(self, timeout_s: float) -> None:
         super().__init__(
-            408, f"the request body stalled for {timeout_s:g} s (BODY_TIMEOUT_S); send it whole"
+            408,
+            f"the request body did not arrive within {timeout_s:g} s (BODY_TIMEOUT_S); "
+            "send it whole",
         )
 
 

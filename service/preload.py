@@ -15,7 +15,11 @@ from engine.preload_methods import catalogue
 router = APIRouter(prefix="/api/v1/preload", tags=["preload"])
 
 
-@router.get("/methods", summary="Preload-control methods with their scatter and α_A")
+@router.get(
+    "/methods",
+    operation_id="list_preload_methods",
+    summary="Preload-control methods with their scatter and α_A",
+)
 def methods() -> dict[str, Any]:
     """Every control method of [004] with its scatter, α_A, fit, misfit and source."""
     return {"methods": catalogue()}

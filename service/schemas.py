@@ -25,7 +25,13 @@ from pydantic_core import PydanticCustomError
 from engine import InputOutOfRange, ModelSpec, Param
 from engine.spec import MAX_TEXT_LENGTH
 
-from .units import MAX_UNIT_STRING, UnitError, to_si
+from .units import (
+    MAX_UNIT_STRING,
+    TEMPERATURE_CHANGE_UNITS,
+    UnitError,
+    is_temperature_change,
+    to_si,
+)
 
 SIValue = float | int | bool | str | None
 
@@ -76,7 +82,11 @@ def _field_schema(p: Param) -> dict[str, Any]:
             {
                 "type": "string",
                 "maxLength": MAX_UNIT_STRING,
-                "description": "a number with a unit, e.g. '45 mm'",
+                "description": (
+                    f"a temperature change with a unit: {TEMPERATURE_CHANGE_UNITS}, e.g. '3 K'"
+                    if is_temperature_change(p)
+                    else "a number with a unit, e.g. '45 mm'"
+                ),
             },
         ],
         "x-unit": p.unit,
@@ -91,12 +101,14 @@ def _field_schema(p: Param) -> dict[str, Any]:
 
 
 def _numeric_validator(p: Param) -> Callable[[Any], Any]:
+    difference = is_temperature_change(p)
+
     def validate(value: Any) -> Any:
         if value is None and not p.required:
             return None
         if isinstance(value, str):
             try:
-                value = to_si(value, p.unit)
+                value = to_si(value, p.unit, difference=difference)
             except UnitError as exc:
                 raise PydanticCustomError(
                     "unit_error", "{field}: {reason}", {"field": p.name, "reason": str(exc)}

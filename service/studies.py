@@ -12,8 +12,11 @@ the service's interpreter.
 
 Budgets: ``STUDY_MAX_POINTS`` points and ``STUDY_BUDGET_S`` seconds per study;
 at most ``STUDY_PER_CLIENT`` unfinished studies per client address and
-``STUDY_MAX_ACTIVE`` in all (503 with Retry-After beyond that). Finished jobs
-are kept for ``STUDY_KEEP_S`` seconds (at most 64). A value out of its range (a zero
+``STUDY_MAX_ACTIVE`` in all (503 with Retry-After beyond that), checked before a
+single point is drawn. Finished jobs keep their summary for ``STUDY_KEEP_S`` seconds
+(at most 64 jobs); the raw values only when the study asked for them
+(``keep_points``). ``DELETE`` cancels an unfinished job and removes a finished one
+with its data. A value out of its range (a zero
 or negative count or time) stops the service at start-up, naming the variable.
 """
 
@@ -22,8 +25,10 @@ from __future__ import annotations
 import csv
 import io
 import json
+import logging
 import math
 import os
+import re
 import threading
 import time
 import uuid
@@ -40,15 +45,26 @@ from pydantic import BaseModel, ConfigDict, Field
 
 import engine
 from engine import ModelSpec
-from engine.study import DISTRIBUTIONS, METHODS, Plan, Study, Variable, plan, points_table
+from engine.study import (
+    DISTRIBUTIONS,
+    METHODS,
+    Plan,
+    Study,
+    Variable,
+    plan,
+    points_table,
+    study_size,
+)
 from engine.study_exec import Cancelled, DaskExecutor, InProcess, StudyRun, run_study
 
 from . import schemas
 from .api import _ERRORS, API_PREFIX
-from .config import _float, _int
+from .config import _float, _int, usable_cpus
 from .units import quantity
 
 _KEEP_JOBS = 64
+
+log = logging.getLogger("service.studies")
 
 
 @dataclass(frozen=True)
@@ -76,7 +92,7 @@ class StudySettings:
             ("STUDY_MAX_ACTIVE", self.max_active, 1, ""),
             ("STUDY_INPROCESS_POINTS", self.inprocess_points, 0, "0: every study on Dask"),
             ("STUDY_KEEP_POINTS", self.keep_points_max, 0, "0: raw points never kept"),
-            ("DASK_WORKERS", self.dask_workers or 0, 0, "0: one worker per core"),
+            ("DASK_WORKERS", self.dask_workers or 0, 0, "0: one worker per usable CPU"),
         )
         for name, value, lowest, meaning in counts:
             if not value >= lowest:
@@ -144,6 +160,9 @@ class Job:
     started: float | None = None
     finished: float | None = None
     error: dict[str, Any] | None = None
+    #: The summary of a finished study (small: statistics, histograms, extremes).
+    summary: dict[str, Any] | None = None
+    #: The raw values, only where the study asked for them (``keep_points``).
     run: StudyRun | None = None
     cancel: threading.Event = field(default_factory=threading.Event)
     #: Set when the job thread is done with the job (finished, failed, cancelled or skipped).
@@ -179,12 +198,32 @@ class Job:
         }
         if self.error is not None:
             body["error"] = self.error
-        if self.run is not None:
-            body["result"] = self.run.summary
-            if self.keep_points:
+        if self.summary is not None:
+            body["result"] = self.summary
+            if self.run is not None:
                 body["links"]["points_csv"] = f"{API_PREFIX}/jobs/{self.id}/points.csv"
                 body["links"]["points_parquet"] = f"{API_PREFIX}/jobs/{self.id}/points.parquet"
         return body
+
+
+#: A network address in an error from Dask ("tcp://10.0.0.5:40123", "127.0.0.1:8786"):
+#: where the workers run is nobody's business but the operator's (it is logged).
+_ADDRESS = re.compile(
+    r"\b[a-z][a-z0-9+.-]*://[^\s'\"<>,)]+"  # tcp://host:port, tls://…, inproc://…
+    r"|\b\d{1,3}(?:\.\d{1,3}){3}(?::\d+)?\b"  # IPv4[:port]
+    r"|\[[0-9a-fA-F:]+\](?::\d+)?"  # [IPv6]:port
+)
+
+
+def _public(message: str) -> str:
+    """An error's text fit for a client: network addresses replaced, at most 300 characters.
+
+    >>> _public("CommClosedError: in <TCP (closed) tcp://127.0.0.1:40213 remote=tcp://10.1.2.3:9>")
+    'CommClosedError: in <TCP (closed) <worker> remote=<worker>>'
+    >>> _public("KilledWorker: ('evaluate_chunk-1f', <WorkerState '192.168.0.7:4567', status>)")
+    "KilledWorker: ('evaluate_chunk-1f', <WorkerState '<worker>', status>)"
+    """
+    return _ADDRESS.sub("<worker>", message)[:300]
 
 
 def _json_clean(value: Any) -> Any:
@@ -213,9 +252,10 @@ class Studies:
     def dask(self) -> DaskExecutor:
         with self.lock:
             if self._dask is None:
-                self._dask = DaskExecutor(
-                    self.settings.dask_scheduler, n_workers=self.settings.dask_workers
-                )
+                # one worker per CPU this process may use (affinity, cgroup quota), not one
+                # per CPU of the host: 2 in a 2-CPU container on a 64-CPU machine
+                workers = self.settings.dask_workers or usable_cpus()
+                self._dask = DaskExecutor(self.settings.dask_scheduler, n_workers=workers)
             return self._dask
 
     def _prune(self) -> None:
@@ -229,14 +269,21 @@ class Studies:
                 del self.jobs[j.id]
 
     def submit(self, spec: ModelSpec, study: Study, client: str, keep_points: bool) -> Job:
-        p = plan(spec, study)  # refuses a bad study now, with a 422, before any job exists
-        if p.n_points > self.settings.max_points:
+        """Check the study, then the limits and quotas, and only then draw its points.
+
+        Every refusal that needs no drawing (a 422: a bad law, an unknown fidelity, too
+        many points) and the quotas (503) come before :func:`engine.study.plan`, which
+        takes seconds and gigabytes for a study of millions of points; a refusal that
+        needs the drawn points (the base with the first point) frees the job's place.
+        """
+        n_points = study_size(spec, study)
+        if n_points > self.settings.max_points:
             raise engine.InputOutOfRange(
-                f"the study has {p.n_points} points, over this server's limit of "
+                f"the study has {n_points} points, over this server's limit of "
                 f"{self.settings.max_points} (STUDY_MAX_POINTS)",
                 field="samples",
             )
-        if keep_points and p.n_points > self.settings.keep_points_max:
+        if keep_points and n_points > self.settings.keep_points_max:
             raise engine.InputOutOfRange(
                 f"keep_points is allowed up to {self.settings.keep_points_max} points",
                 field="keep_points",
@@ -256,8 +303,14 @@ class Studies:
                     ),
                     headers={"retry-after": "5"},
                 )
-            job = Job(uuid.uuid4().hex, spec.name, client, p.n_points, keep_points)
-            self.jobs[job.id] = job
+            job = Job(uuid.uuid4().hex, spec.name, client, n_points, keep_points)
+            self.jobs[job.id] = job  # holds its place while the points are drawn
+        try:
+            p = plan(spec, study)
+        except BaseException:
+            with self.lock:
+                self.jobs.pop(job.id, None)
+            raise
         self.threads.submit(self._work, job, spec, study, p)
         return job
 
@@ -287,16 +340,19 @@ class Studies:
                 budget_s=self.settings.budget_s,
                 planned=p,
             )
-            result.summary = _json_clean(result.summary)
-            job.run, job.state = result, "done"
+            job.summary = _json_clean(result.summary)
+            # the raw values leave memory once summarised unless the study asked for them
+            job.run = result if job.keep_points else None
+            job.state = "done"
         except Cancelled:
             job.state = "cancelled"
         except engine.EngineError as exc:
             job.state = "failed"
             job.error = {"type": exc.kind, "msg": exc.message, "field": exc.field}
         except Exception as exc:  # a worker that died, a lost scheduler: said, not hidden
+            log.warning("study %s failed: %s: %s", job.id, type(exc).__name__, exc)
             job.state = "failed"
-            job.error = {"type": "study_failed", "msg": f"{type(exc).__name__}: {exc}"[:300]}
+            job.error = {"type": "study_failed", "msg": _public(f"{type(exc).__name__}: {exc}")}
         finally:
             job.finished = time.time()
             job.settled = True
@@ -308,12 +364,24 @@ class Studies:
             raise HTTPException(status_code=404, detail=f"no job {job_id[:40]!r}")
         return job
 
-    def cancel(self, job_id: str) -> Job:
+    def cancel(self, job_id: str) -> dict[str, Any]:
+        """Cancel an unfinished job; remove a finished one with its summary and points.
+
+        The answer is the job as it stood; a removed job answers 404 from then on.
+        """
         job = self.get(job_id)
+        with self.lock:
+            if not job.active:
+                self.jobs.pop(job.id, None)
+                body = job.describe()
+                body["links"] = {}
+                body["deleted"] = True
+                job.summary = job.run = None
+                return body
         job.cancel.set()
         if job.state == "queued":
             job.state, job.finished = "cancelled", time.time()
-        return job
+        return job.describe()
 
     def shutdown(self) -> None:
         for job in list(self.jobs.values()):
@@ -408,7 +476,15 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
             operation_id=spec.name.replace(".", "_") + "_study",
             responses={
                 **_ERRORS,
-                202: {"description": "accepted: the job to poll (state, progress, links)"},
+                202: {
+                    "description": "accepted: the job to poll (state, progress, links)",
+                    "headers": {
+                        "Location": {
+                            "description": "the job's address, /api/v1/jobs/{job}",
+                            "schema": {"type": "string"},
+                        }
+                    },
+                },
                 503: {
                     "model": schemas.ErrorResponse,
                     "description": "too many unfinished studies (per client or in all); retry",
@@ -425,15 +501,21 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
 
     @router.get(
         "/jobs/{job_id}",
+        operation_id="get_job",
         summary="A study's state, progress and, when done, result",
         responses=_404,
     )
     def get_job(job_id: str) -> dict[str, Any]:
         return studies.get(job_id).describe()
 
-    @router.delete("/jobs/{job_id}", summary="Cancel a study and free its workers", responses=_404)
+    @router.delete(
+        "/jobs/{job_id}",
+        operation_id="delete_job",
+        summary="Cancel a study and free its workers, or remove a finished one and its data",
+        responses=_404,
+    )
     def cancel_job(job_id: str) -> dict[str, Any]:
-        return studies.cancel(job_id).describe()
+        return studies.cancel(job_id)
 
     def finished(job_id: str) -> tuple[Job, StudyRun]:
         job = studies.get(job_id)
@@ -446,6 +528,7 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
 
     @router.get(
         "/jobs/{job_id}/points.csv",
+        operation_id="get_job_points_csv",
         summary="The raw points of a finished study (asked with keep_points)",
         response_class=Response,
         responses={**_404, 200: {"content": {"text/csv": {}}, "description": "the points"}},
@@ -466,6 +549,7 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
 
     @router.get(
         "/jobs/{job_id}/points.parquet",
+        operation_id="get_job_points_parquet",
         summary="The raw points of a finished study as Parquet (asked with keep_points)",
         description=(
             "The columns of points.csv (inputs, then outputs, SI), float64, null where a "

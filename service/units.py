@@ -12,6 +12,13 @@ A frequency without an angle unit ("50 Hz", "1400 min^-1", "25 1/s") given
 for an angular speed is read as a rotational frequency, i.e. revolutions per
 unit time (×2π to rad/s), as drive catalogues mean it. Common spellings are
 accepted: "Nm", "N.m", "N·m", "kg·m²", "RPM", "rev/min".
+
+A temperature on a scale with an offset ("20 degC", "68 degF", "20 °C") is
+converted with its offset where the input is a temperature. Where the input is
+a temperature *change* (a param in kelvin that says so, or any width such as a
+standard deviation) only kelvin and the difference units ``delta_degC`` and
+``delta_degF`` are read: "3 degC" as a change would silently be 276.15 K, so it
+is refused with a message naming the units to use.
 """
 
 from __future__ import annotations
@@ -28,7 +35,7 @@ from engine import InputOutOfRange, Param
 MAX_UNIT_STRING = 64
 
 _NUMBER = r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d{1,3})?"
-_ATOM = r"(?:[A-Za-zµμΩ%]+|°)(?:(?:\^|\*\*)-?\d)?"
+_ATOM = r"(?:[A-Za-zµμΩ%][A-Za-zµμΩ%_]*|°[CF]?)(?:(?:\^|\*\*)-?\d)?"
 _UNIT = rf"{_ATOM}(?:\s*[*/·.]\s*{_ATOM}|\s+{_ATOM})*"
 _QUANTITY = re.compile(rf"\s*({_NUMBER})\s*({_UNIT})?\s*")
 
@@ -65,9 +72,28 @@ def _plain(text: str) -> str:
     return text
 
 
+#: What a temperature change may be given in, said when an offset unit is refused.
+TEMPERATURE_CHANGE_UNITS = "K, delta_degC or delta_degF"
+
+
+def is_temperature_change(param: Param) -> bool:
+    """True when ``param`` is a temperature difference (in kelvin, named or described as a
+    change or difference), which takes no offset: 3 degC of warming is 3 K, not 276.15 K.
+
+    >>> is_temperature_change(Param("temperature_change", "K", "Service minus assembly ΔT"))
+    True
+    >>> is_temperature_change(Param("ambient", "K", "Ambient temperature"))
+    False
+    """
+    words = f"{param.name} {param.description}".lower()
+    return param.unit == "K" and any(w in words for w in ("change", "difference", "rise", "drop"))
+
+
 @lru_cache(maxsize=1024)
-def _factor(unit: str, target: str) -> float:
-    """Multiplier taking a value in ``unit`` to ``target`` (both unit expressions)."""
+def _conversion(unit: str, target: str) -> tuple[float, float]:
+    """``(factor, offset)`` taking a value in ``unit`` to ``target`` (both unit
+    expressions) as ``value * factor + offset``; the offset is zero except for a
+    temperature on a scale with an offset (degC, degF) given for kelvin."""
     try:
         parsed = _REGISTRY.parse_units(_normalise(unit))
     except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError) as exc:
@@ -75,7 +101,8 @@ def _factor(unit: str, target: str) -> float:
     except Exception as exc:  # pint raises assorted errors on malformed input
         raise UnitError(f"cannot read the unit {unit!r}") from exc
     try:
-        factor = _REGISTRY.Quantity(1.0, parsed).to(target).magnitude
+        offset = _REGISTRY.Quantity(0.0, parsed).to(target).magnitude
+        factor = _REGISTRY.Quantity(1.0, parsed).to(target).magnitude - offset
     except pint.errors.DimensionalityError as exc:
         raise UnitError(
             f"{unit!r} has the wrong dimension: expected {target} (write products as 'N*m')"
@@ -85,10 +112,10 @@ def _factor(unit: str, target: str) -> float:
     names = " ".join(str(name) for name in parsed._units)
     if target.startswith("rad/") and not any(a in names for a in _ANGLE_UNITS):
         factor *= 2.0 * math.pi  # Hz, 1/min for a speed: revolutions per unit time
-    return float(factor)
+    return float(factor), float(offset)
 
 
-def to_si(text: str, target: str) -> float:
+def to_si(text: str, target: str, *, difference: bool = False) -> float:
     """Read ``text`` ("45 mm") and return its magnitude in ``target`` (an SI unit).
 
     >>> round(to_si("1450 rpm", "rad/s"), 3)
@@ -97,6 +124,20 @@ def to_si(text: str, target: str) -> float:
     0.045
     >>> to_si("0.5", "m")
     0.5
+
+    ``difference``: the value is a difference of two values (a temperature change, a
+    standard deviation), so a unit with an offset is refused rather than read with it.
+
+    >>> round(to_si("20 degC", "K"), 2)
+    293.15
+    >>> round(to_si("9 delta_degF", "K", difference=True), 12)
+    5.0
+    >>> try:
+    ...     to_si("3 degF", "K", difference=True)
+    ... except UnitError as exc:
+    ...     print(exc)  # doctest: +NORMALIZE_WHITESPACE
+    'degF' is a temperature on a scale with an offset, not a temperature change: give the
+    change in K, delta_degC or delta_degF, e.g. '3 delta_degF'
     """
     if len(text) > MAX_UNIT_STRING:
         raise UnitError(f"a unit string has at most {MAX_UNIT_STRING} characters")
@@ -110,12 +151,19 @@ def to_si(text: str, target: str) -> float:
     if not unit:
         return value
     if target == "1":
-        factor = _DIMENSIONLESS_UNITS.get(unit.strip())
+        factor, offset = _DIMENSIONLESS_UNITS.get(unit.strip()), 0.0
         if factor is None:
             raise UnitError(f"{unit!r} has the wrong dimension: expected a plain number")
     else:
-        factor = _factor(unit.strip(), target)
-    result = value * factor
+        factor, offset = _conversion(unit.strip(), target)
+        if offset != 0.0 and difference:
+            scale = {1.0: "delta_degC", round(5.0 / 9.0, 12): "delta_degF"}.get(round(factor, 12))
+            raise UnitError(
+                f"{unit.strip()!r} is a temperature on a scale with an offset, not a temperature"
+                f" change: give the change in {TEMPERATURE_CHANGE_UNITS}"
+                + (f", e.g. '{number} {scale}'" if scale else "")
+            )
+    result = value * factor + offset
     if not math.isfinite(result):
         raise UnitError(f"{text!r} is not a finite quantity")
     return result
@@ -147,7 +195,7 @@ def quantity(
     allowed = f"a finite number > 0, {unit}" if spread else f"{param.range_text()}, {unit}"
     if isinstance(value, str):
         try:
-            return to_si(value, param.unit)
+            return to_si(value, param.unit, difference=spread or is_temperature_change(param))
         except UnitError as exc:
             reason = str(exc)
     elif math.isfinite(value):

@@ -41,7 +41,7 @@ def test_good_values_are_read(monkeypatch: pytest.MonkeyPatch) -> None:
         (
             "DASK_WORKERS",
             "-1",
-            "DASK_WORKERS must be an integer >= 0 (0: one worker per core), not -1",
+            "DASK_WORKERS must be an integer >= 0 (0: one worker per usable CPU), not -1",
         ),
         ("STUDY_BUDGET_S", "0", "STUDY_BUDGET_S must be a number of seconds > 0, not 0.0"),
         ("STUDY_BUDGET_S", "nan", "STUDY_BUDGET_S must be a number of seconds > 0, not nan"),
