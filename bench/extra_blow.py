@@ -4,9 +4,9 @@
 peak torque and nut rotation against a tight reference (solve_ivp DOP853,
 rtol 1e-12, one solve per stick/slip phase with terminal events). Methods:
 
-* ``fast``: :func:`engine.blow.simulate_blow` (numba RK4, 200 steps per shortest
+* ``fast``: :func:`engine.physics.blow.simulate_blow` (numba RK4, 200 steps per shortest
   period, events bisected on RK4 sub-steps);
-* ``solve_ivp DOP853 rtol=…``: :func:`engine.blow.simulate_blow_reference`.
+* ``solve_ivp DOP853 rtol=…``: :func:`engine.physics.blow.simulate_blow_reference`.
 """
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from engine.blow import BlowProblem, simulate_blow, simulate_blow_reference
+from engine.physics.blow import BlowProblem, simulate_blow, simulate_blow_reference
 
 MODEL = "blow.joint"
 

@@ -23,9 +23,9 @@ from typing import Any
 
 import engine
 from bench.extra_targets import POINTS, _median, sweep_case
-from engine.spec import RunContext
-from engine.study import Study, Variable
-from engine.study_exec import run_study
+from engine.core.spec import RunContext
+from engine.studies.execute import run_study
+from engine.studies.plan import Study, Variable
 
 SPEC = engine.get_model("joint.vdi2230")
 

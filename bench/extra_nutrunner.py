@@ -4,7 +4,7 @@
 evaluation and the relative error against the closed-form integral of each
 curve (exact to rounding). Methods:
 
-* ``quad``: :func:`engine.motor_spinup.spin_up_time`, adaptive QUADPACK on the
+* ``quad``: :func:`engine.physics.motor_spinup.spin_up_time`, adaptive QUADPACK on the
   substituted variable (what the ``motor_curve`` rung runs);
 * ``solve_ivp``: ``scipy.integrate.solve_ivp`` (RK45, rtol 1e-8) of
   J dω/dt = M(ω) with a terminal event at the working speed, the general way;
@@ -26,8 +26,9 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from engine import run
+from engine.core.spec import RunContext
 from engine.models.nutrunner import EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
-from engine.motor_spinup import (
+from engine.physics.motor_spinup import (
     MotorCurve,
     kloss_breakdown_slip,
     kloss_slip_torque,
@@ -39,7 +40,6 @@ from engine.motor_spinup import (
     spin_up_time,
     torque_limited_constant_power_spin_up_time,
 )
-from engine.spec import RunContext
 
 MODEL = "nutrunner.drive"
 W = 1400 * math.pi / 30  # working speed of the example, rad/s

@@ -3,7 +3,7 @@
 ``measure()`` returns one row per (method, case) for the shared bench runner;
 ``python bench/extra_rare_impact.py`` prints the table and the speed-ups. Methods:
 
-* ``cycle (numba RK4)``: :func:`engine.rare_impact_cycle.simulate_cycle`, stages
+* ``cycle (numba RK4)``: :func:`engine.procedures.striker_cycle.simulate_cycle`, stages
   1→4 as one hybrid simulation (compiled fixed-step RK4, 200 steps per shortest
   period, events on the step's cubic), set-up included;
 * ``solve_ivp DOP853 rtol=…``: the same modes, events and switches with each
@@ -31,7 +31,7 @@ from typing import Any
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from engine.models.rare_impact import RARE_IMPACT, REFERENCE_DESIGN
-from engine.rare_impact_cycle import (
+from engine.procedures.striker_cycle import (
     closed_form_cycle,
     simulate_cycle,
     simulate_cycle_scipy,

@@ -23,8 +23,8 @@ import time
 from typing import Any
 
 import engine
-from engine.study import Study, Variable
-from engine.study_exec import DaskExecutor, run_study
+from engine.studies.execute import DaskExecutor, run_study
+from engine.studies.plan import Study, Variable
 
 
 def _clutch_mc(n: int) -> tuple[Study, engine.ModelSpec]:

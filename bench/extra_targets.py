@@ -22,8 +22,8 @@ from typing import Any
 import numpy as np
 
 import engine
+from engine.core.spec import ModelSpec, RunContext
 from engine.models import MODELS
-from engine.spec import ModelSpec, RunContext
 
 POINTS = 2000
 SWEEP_TARGET_S = 2e-3
@@ -102,7 +102,9 @@ def measure() -> list[dict[str, Any]]:
             first, _ = spec.validate(base)
             x = {**first, vary: values}
             names = frozenset(o.name for o in spec.outputs if not o.series)
-            ctx = RunContext(rung=rung, outputs=names, tolerance=engine.runner.DEFAULT_TOLERANCE)
+            ctx = RunContext(
+                rung=rung, outputs=names, tolerance=engine.core.runner.DEFAULT_TOLERANCE
+            )
             t_vector = _median(functools.partial(spec.vectorized, x, ctx))
         t_numpy = _median(_numpy_floor(values))
         rows.append(

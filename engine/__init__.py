@@ -1,14 +1,21 @@
 """Engineering models of threaded-joint assembly tools, on SI values.
 
-Pure functions (numpy/scipy), no web code. ``engine/<family>.py`` holds a
-family's physics as documented functions citing their source equations;
-``engine/models/<family>.py`` the :class:`ModelSpec` declaring each model's
-inputs, units, ranges, rungs, checks and notes once; :mod:`engine.sources`
-what every citation such as ``[001, eq. 2]`` refers to.
+Pure functions (numpy/scipy), no web code, in layers you can see in the folders:
+
+* ``engine/physics/``: one function per equation of a seed or a standard, on floats or
+  numpy arrays, each citing its source;
+* ``engine/numerics/``: the compiled-ODE kit the simulations share;
+* ``engine/procedures/``: one design worked through as named steps (the bolt as bought,
+  the clutch as built, the striker cycle);
+* ``engine/models/<family>.py``: the :class:`ModelSpec` declaring each model's inputs,
+  units, ranges, rungs, checks and notes once, and its adapter to the physics;
+* ``engine/core/``: the spec machinery, the runner, sweeps and the sources
+  (:mod:`engine.core.sources`: what every citation such as ``[001, eq. 2]`` refers to);
+* ``engine/studies/``: design studies (plan, execute on Dask, summarise).
 """
 
-from . import sources
-from .errors import (
+from .core import sources
+from .core.errors import (
     BudgetExceeded,
     Cancelled,
     EngineError,
@@ -16,9 +23,8 @@ from .errors import (
     InputOutOfRange,
     SolverFailed,
 )
-from .models import MODELS, get_model
-from .runner import MAX_SWEEP_POINTS, RunResult, SweepResult, run, sweep, sweep_values
-from .spec import (
+from .core.runner import MAX_SWEEP_POINTS, RunResult, SweepResult, run, sweep, sweep_values
+from .core.spec import (
     Check,
     ModelSpec,
     Output,
@@ -30,6 +36,7 @@ from .spec import (
     Window,
     fixed_error,
 )
+from .models import MODELS, get_model
 
 __all__ = [
     "MAX_SWEEP_POINTS",

@@ -27,9 +27,9 @@ from pydantic import BaseModel, ValidationError
 from starlette.routing import request_response
 
 import engine
-import engine.runner
+import engine.core.runner
 from engine import ModelSpec
-from engine.runner import DEFAULT_BUDGET_S, DEFAULT_MAX_STEPS
+from engine.core.runner import DEFAULT_BUDGET_S, DEFAULT_MAX_STEPS
 
 from . import schemas
 from .units import quantity
@@ -207,7 +207,7 @@ async def _validated(request: Request, model: type[BaseModel]) -> Any:
 
 def _column(column: np.ndarray) -> Any:
     """A sweep column as orjson encodes it: float64/int/bool arrays as they are (a
-    non-finite float becomes null, as :func:`engine.runner._listed` makes it None);
+    non-finite float becomes null, as :func:`engine.core.runner._listed` makes it None);
     object columns (texts, flags with None) as lists."""
     kind = column.dtype.kind
     if kind == "f":  # float32 would print its short repr; orjson takes C-contiguous arrays only
@@ -284,21 +284,23 @@ def _fidelity_of(spec: ModelSpec, body: Any) -> str:
     return "auto" if body.tolerance is not None else spec.default_fidelity
 
 
-def _prepared(spec: ModelSpec, body: Any, inputs: dict[str, Any]) -> engine.runner.Prepared | None:
+def _prepared(
+    spec: ModelSpec, body: Any, inputs: dict[str, Any]
+) -> engine.core.runner.Prepared | None:
     """The request validated and its rung chosen, once (None if refused: that is quick).
 
     A single evaluation hands it to :func:`engine.run`, which then neither validates nor
     chooses again.
     """
     try:
-        return engine.runner.prepare(spec, inputs, body.fidelity, body.tolerance)
+        return engine.core.runner.prepare(spec, inputs, body.fidelity, body.tolerance)
     except Exception:
         return None
 
 
 def _route(
     spec: ModelSpec, body: Any, inputs: dict[str, Any], pool: EnginePool, sweep: bool
-) -> tuple[Lane, str | None, engine.runner.Prepared | None]:
+) -> tuple[Lane, str | None, engine.core.runner.Prepared | None]:
     """The lane; for a single evaluation that may run inline, the rung it will run; and
     the request as :func:`_prepared` made it, where the rung had to be chosen to route it.
 
@@ -488,7 +490,7 @@ def catalogue_router(models: Sequence[ModelSpec]) -> APIRouter:
             return entries[name]
         raise HTTPException(status_code=404, detail=f"no model named {name[:80]!r}")
 
-    sources = {"sources": engine.sources.catalogue()}
+    sources = {"sources": engine.core.sources.catalogue()}
 
     @router.get(
         "/sources",

@@ -18,7 +18,7 @@ import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from engine.runner import DEFAULT_BUDGET_S, DEFAULT_MAX_STEPS
+from engine.core.runner import DEFAULT_BUDGET_S, DEFAULT_MAX_STEPS
 
 
 def _origins() -> tuple[str, ...]:

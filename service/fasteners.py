@@ -1,6 +1,6 @@
 """``GET /api/v1/fasteners``: the fastener catalogue the form's pickers read (issue 15).
 
-The data are the engine's (:func:`engine.fasteners.catalogue`, SI units); this
+The data are the engine's (:func:`engine.physics.fasteners.catalogue`, SI units); this
 route only serves them.
 """
 
@@ -11,7 +11,7 @@ from typing import Any
 
 from fastapi import APIRouter
 
-from engine.fasteners import catalogue
+from engine.physics.fasteners import catalogue
 
 router = APIRouter(prefix="/api/v1", tags=["fasteners"])
 

@@ -1,6 +1,6 @@
 """``GET /api/v1/preload/methods``: the catalogue of preload-control methods.
 
-The data are the engine's (:mod:`engine.preload_methods`); this route only
+The data are the engine's (:mod:`engine.physics.preload_methods`); this route only
 serves them.
 """
 
@@ -10,7 +10,7 @@ from typing import Any
 
 from fastapi import APIRouter
 
-from engine.preload_methods import catalogue
+from engine.physics.preload_methods import catalogue
 
 router = APIRouter(prefix="/api/v1/preload", tags=["preload"])
 

@@ -23,7 +23,7 @@ from pydantic import (
 from pydantic_core import PydanticCustomError
 
 from engine import InputOutOfRange, ModelSpec, Param
-from engine.spec import MAX_TEXT_LENGTH
+from engine.core.spec import MAX_TEXT_LENGTH
 
 from .units import (
     MAX_UNIT_STRING,

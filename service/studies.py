@@ -1,10 +1,10 @@
 """Design studies as jobs: ``POST <model path>/study`` → 202, then poll, fetch, cancel.
 
-A study (:mod:`engine.study`) can take minutes, so it never runs in a request:
+A study (:mod:`engine.studies.plan`) can take minutes, so it never runs in a request:
 the POST validates it, draws nothing yet, and returns ``202`` with the job's
 address. A small pool of job threads drives studies; a study of at most
 ``STUDY_INPROCESS_POINTS`` points runs in that thread, a larger one on Dask
-(:class:`engine.study_exec.DaskExecutor`): a local cluster sized to the
+(:class:`engine.studies.execute.DaskExecutor`): a local cluster sized to the
 machine, started when the first large study arrives, or the scheduler named
 by ``DASK_SCHEDULER``. Studies never use the engine pool that serves single
 calculations, and their heavy compute runs in Dask's worker processes, not in
@@ -45,7 +45,8 @@ from pydantic import BaseModel, ConfigDict, Field
 
 import engine
 from engine import ModelSpec
-from engine.study import (
+from engine.studies.execute import Cancelled, DaskExecutor, InProcess, StudyRun, run_study
+from engine.studies.plan import (
     DISTRIBUTIONS,
     METHODS,
     Plan,
@@ -55,7 +56,6 @@ from engine.study import (
     points_table,
     study_size,
 )
-from engine.study_exec import Cancelled, DaskExecutor, InProcess, StudyRun, run_study
 
 from . import schemas
 from .api import _ERRORS, API_PREFIX
@@ -272,7 +272,7 @@ class Studies:
         """Check the study, then the limits and quotas, and only then draw its points.
 
         Every refusal that needs no drawing (a 422: a bad law, an unknown fidelity, too
-        many points) and the quotas (503) come before :func:`engine.study.plan`, which
+        many points) and the quotas (503) come before :func:`engine.studies.plan.plan`, which
         takes seconds and gigabytes for a study of millions of points; a refusal that
         needs the drawn points (the base with the first point) frees the job's place.
         """

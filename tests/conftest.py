@@ -40,6 +40,6 @@ def _compiled_kernels() -> None:
     before any test times a run; the service does the same at start-up (warm_up)."""
     import numpy as np
 
-    from engine.rare_impact_cycle import _ensure_compiled
+    from engine.procedures.striker_cycle import _ensure_compiled
 
     _ensure_compiled(np.ones(32))

@@ -38,7 +38,7 @@ from pathlib import Path
 
 import engine
 import engine.models
-from engine.spec import ModelSpec
+from engine.core.spec import ModelSpec
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -1,10 +1,10 @@
 """Every model the product offers, in the order the catalogue lists them.
 
 One declaration module per family (``engine/models/<family>.py``) holds each
-model's :class:`~engine.spec.ModelSpec`: inputs with units and ranges, outputs,
+model's :class:`~engine.core.spec.ModelSpec`: inputs with units and ranges, outputs,
 rungs, compute/check glue and the sentences of its notes. The equations they
 call live in ``engine/<family>.py``; the sources they cite in
-:mod:`engine.sources` (``docs/sources.md``).
+:mod:`engine.core.sources` (``docs/sources.md``).
 
 Adding a model is adding its spec here: the service's endpoints, the OpenAPI
 schema, the form and ``GET /api/v1/models`` all derive from this tuple.
@@ -12,7 +12,7 @@ schema, the form and ``GET /api/v1/models`` all derive from this tuple.
 
 from __future__ import annotations
 
-from ..spec import ModelSpec
+from ..core.spec import ModelSpec
 from .blow import BLOW
 from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
 from .joint import VDI2230 as JOINT_VDI2230

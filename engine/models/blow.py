@@ -1,8 +1,8 @@
 """The ``blow.joint`` model: what a tool's blows (or its clutch) deliver into a joint.
 
-The physics is in :mod:`engine.blow`; the tools' own equations in
-:mod:`engine.nutrunner` [000], :mod:`engine.rare_impact` [002] and
-:mod:`engine.clutch` [001]; the tightening relation in :mod:`engine.preload`
+The physics is in :mod:`engine.physics.blow`; the tools' own equations in
+:mod:`engine.physics.nutrunner` [000], :mod:`engine.physics.rare_impact` [002] and
+:mod:`engine.physics.clutch` [001]; the tightening relation in :mod:`engine.physics.preload`
 (VDI 2230-1 R13, [004]). This module picks the source of the blow, the
 joint's torque rate, runs the rung and turns the result into values, series,
 checks and notes.
@@ -17,10 +17,14 @@ from typing import Any
 
 import numpy as np
 
-from .. import clutch as cl
-from .. import nutrunner as nr
-from .. import preload as pl
-from ..blow import (
+from ..core.errors import EngineError, InfeasibleDesign, InputOutOfRange
+from ..core.params import DEG, RPM, count, friction_coefficient, length, positive, quantity
+from ..core.spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from ..numerics.ode import sqrt, where
+from ..physics import clutch as cl
+from ..physics import nutrunner as nr
+from ..physics import preload as pl
+from ..physics.blow import (
     BlowProblem,
     blow_series,
     blow_series_array,
@@ -33,13 +37,9 @@ from ..blow import (
     joint_rate,
     rigid_blow_torque,
 )
-from ..errors import EngineError, InfeasibleDesign, InputOutOfRange
-from ..joint import clamped_compliance as vdi_clamped_compliance
-from ..numerics import sqrt, where
-from ..rare_impact import rotating_inertia
-from ..rare_impact_cycle import closed_form_cycle_array, release_radius_of, release_speed_of
-from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
-from ._common import DEG, RPM, count, friction_coefficient, length, positive, quantity
+from ..physics.joint import clamped_compliance as vdi_clamped_compliance
+from ..physics.rare_impact import rotating_inertia
+from ..procedures.striker_cycle import closed_form_cycle_array, release_radius_of, release_speed_of
 from .clutch import BALL_CLUTCH
 from .nutrunner import NUTRUNNER_DRIVE
 from .preload import (
@@ -479,7 +479,7 @@ def _striker(x: Mapping[str, Any], one: bool) -> _Striker:
     r"""The rare-impact source's striker at release, from the striker model's own closed form.
 
     The release speed :math:`\omega_M` and radius :math:`r` are those of ``impact.rare``'s
-    closed-form rung (``engine.rare_impact_cycle``: the chosen roller geometry, the weight
+    closed-form rung (``engine.procedures.striker_cycle``: the chosen roller geometry, the weight
     of half-coupling, shaft and rollers, the snap-through at lift-off), its stage-1
     functions for one striker, its closed form on arrays where striker inputs vary; the
     energy of the rotating parts at release is
@@ -487,7 +487,7 @@ def _striker(x: Mapping[str, Any], one: bool) -> _Striker:
     .. math::
         E = \tfrac{1}{2}\,I\,\omega_M^2
 
-    with :func:`engine.rare_impact.rotating_inertia` [002, after eq. 4]. The striker's
+    with :func:`engine.physics.rare_impact.rotating_inertia` [002, after eq. 4]. The striker's
     inputs blow.joint does not borrow take their defaults in ``impact.rare``. One design the
     striker model refuses raises its reason; on arrays ``refused`` marks them.
 
@@ -849,7 +849,7 @@ _PEAK_OUTPUTS = ("peak_torque", "peak_per_blow")
 def _first_blow(x: Mapping[str, Any], s: _Setup) -> tuple[Any, Any]:
     """(peak torque, joint torque after) of the energy rung's first blow.
 
-    The energy balance of :func:`~engine.blow.energy_blow` (for one design: numpy on a
+    The energy balance of :func:`~engine.physics.blow.energy_blow` (for one design: numpy on a
     single float costs twice the whole run; measured) or of its array form; the value at
     a rate ≤ 0 or where the balance has no root is not used (NaN).
     """
@@ -1450,7 +1450,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             values[o.name] = None
     notes = [
         f"{ctx.rung}: evaluated on arrays, the same equations as a single run "
-        "(engine.blow.blow_series_array)",
+        "(engine.physics.blow.blow_series_array)",
         *s.notes,
     ]
     return Result(

@@ -1,6 +1,6 @@
 """The ``clutch.ball`` and ``clutch.ball_setting`` models: inputs, outputs, rungs, checks, notes.
 
-The equations are in :mod:`engine.clutch` (source [001], see docs/sources.md);
+The equations are in :mod:`engine.physics.clutch` (source [001], see docs/sources.md);
 this module declares the two models and turns a request into calls of those
 functions, checks and sentences.
 """
@@ -14,7 +14,10 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from ..clutch import (
+from ..core.errors import InfeasibleDesign, InputOutOfRange
+from ..core.params import DEG, count, friction_coefficient, length
+from ..core.spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from ..physics.clutch import (
     ARRANGEMENTS,
     RECOMMENDED_GROOVE_ANGLE,
     RECOMMENDED_LOAD_FACTOR,
@@ -34,10 +37,7 @@ from ..clutch import (
     wahl_factor,
     wire_diameter_for_force,
 )
-from ..errors import InfeasibleDesign, InputOutOfRange
-from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
-from . import _clutch_asbuilt as asbuilt
-from ._common import DEG, count, friction_coefficient, length
+from ..procedures import clutch_asbuilt as asbuilt
 
 # --------------------------------------------------------------------------
 # Model specs: clutch.ball (forward) and clutch.ball_setting (inverse)
@@ -569,7 +569,7 @@ def _with_absent(
 
     The array paths mirror the scalar compute's branches (which outputs exist depends only
     on inputs that are the same at every point), so an output they leave out is one the
-    scalar compute leaves out too: None tells :func:`engine.points.vector` so, sparing a
+    scalar compute leaves out too: None tells :func:`engine.core.points.vector` so, sparing a
     scalar run to find out. ``skip``: outputs left out for speed (the caller loops if asked).
     """
     out: dict[str, Any] = dict(values)

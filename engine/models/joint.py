@@ -1,8 +1,8 @@
 """Model spec for the bolted joint after VDI 2230 Part 1 (``joint.vdi2230``).
 
-The physics lives in :mod:`engine.joint` (one function per VDI step), the
-bolt data in :mod:`engine.threads`, the tightening relations in
-:mod:`engine.preload` and the bolt resolution in the preload declarations;
+The physics lives in :mod:`engine.physics.joint` (one function per VDI step), the
+bolt data in :mod:`engine.physics.threads`, the tightening relations in
+:mod:`engine.physics.preload` and the bolt resolution in the preload declarations;
 this module turns a request into a joint, runs the steps R0–R13 in order and
 says which step every number comes from.
 
@@ -21,14 +21,14 @@ from typing import Any
 
 import numpy as np
 
-from .. import fasteners as fa
-from .. import joint as jt
-from .. import preload as pl
-from .. import threads as th
-from ..errors import EngineError, InputOutOfRange
-from ..preload_methods import METHODS, get_method
-from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
-from . import _fasteners as fz
+from ..core.errors import EngineError, InputOutOfRange
+from ..core.spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
+from ..physics import fasteners as fa
+from ..physics import joint as jt
+from ..physics import preload as pl
+from ..physics import threads as th
+from ..physics.preload_methods import METHODS, get_method
+from ..procedures import bolt as fz
 from .preload import BOLT_INPUTS, Bolt, resolve_bolt
 
 SOURCE = (
@@ -468,8 +468,8 @@ def _kn(force: float) -> str:
 #
 # One procedure for one design or many: ``_solve`` runs the VDI 2230-1 steps R0–R13 on
 # floats (a single run: :func:`_compute`) or on numpy arrays, one entry per point (a sweep,
-# a study's chunk: :func:`_vectorized`). Every relation is a function of engine.joint or
-# engine.preload; the adapters below only turn inputs into columns and the solved joint
+# a study's chunk: :func:`_vectorized`). Every relation is a function of engine.physics.joint or
+# engine.physics.preload; the adapters below only turn inputs into columns and the solved joint
 # into a result. A point the physics refuses is refused by the same line on both paths:
 # alone it raises (InputOutOfRange naming the field, or an arithmetic error the runner
 # reports), among many it is masked and null in every output.
@@ -1322,7 +1322,7 @@ def _vector_hook_checks(
     Which checks a bolt gets is fixed per request and bolt, so the scalar hook runs once
     per distinct bolt (``probe``: at its first computable point) for their names, its notes
     and its refusals; the verdicts are then the same comparisons as
-    :func:`engine.models._fasteners.bought_part_checks`, on arrays. A check name this does
+    :func:`engine.procedures.bolt.bought_part_checks`, on arrays. A check name this does
     not know raises TypeError (the caller loops instead).
     """
     n = index.size

@@ -1,6 +1,6 @@
 """The ``nutrunner.drive`` model: inputs, outputs, rungs, checks and notes.
 
-The equations are in :mod:`engine.nutrunner` (source [000], see docs/sources.md);
+The equations are in :mod:`engine.physics.nutrunner` (source [000], see docs/sources.md);
 this module declares the model the service serves and turns a request into
 calls of those functions, checks and sentences.
 """
@@ -14,10 +14,12 @@ from typing import Any
 
 import numpy as np
 
-from .. import points
-from ..clutch import acceleration_torque, rated_torque, required_slip_torque
-from ..errors import InfeasibleDesign, InputOutOfRange
-from ..motor_spinup import (
+from ..core import points
+from ..core.errors import InfeasibleDesign, InputOutOfRange
+from ..core.params import RPM, count
+from ..core.spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from ..physics.clutch import acceleration_torque, rated_torque, required_slip_torque
+from ..physics.motor_spinup import (
     MotorCurve,
     kloss_breakdown_slip,
     kloss_slip_torque,
@@ -26,7 +28,7 @@ from ..motor_spinup import (
     spin_up_profile,
     spin_up_time,
 )
-from ..nutrunner import (
+from ..physics.nutrunner import (
     STEEL_SHEAR_MODULUS,
     acceleration_time,
     disc_inertia,
@@ -43,8 +45,6 @@ from ..nutrunner import (
     torsional_stiffness,
     twist_angle,
 )
-from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
-from ._common import RPM, count
 
 # ---------------------------------------------------------------------------
 # The model spec
@@ -414,7 +414,7 @@ _OUTPUTS: tuple[Output, ...] = (
         x="time",
         display_unit="rpm",
     ),
-    # issue 17: safety coupling 1 as a torque limiter (engine.clutch sizing)
+    # issue 17: safety coupling 1 as a torque limiter (engine.physics.clutch sizing)
     Output(
         "coupling_slip_torque",
         "N*m",
@@ -616,7 +616,7 @@ def _idealisation_error(x: Mapping[str, Any]) -> Any:
         return 0.0
     sizes = {v.size for v in x.values() if isinstance(v, np.ndarray) and v.ndim > 0}
     if sizes:
-        (n,) = sizes  # equal-length columns, as engine.points hands them
+        (n,) = sizes  # equal-length columns, as engine.core.points hands them
         return np.array([_idealisation_error(points.at(x, n, j)) for j in range(n)])
     try:
         ratio = _curve_time_ratio(x)

@@ -1,7 +1,7 @@
 """Model specs for preload selection (``preload.tightening``) and its control (``preload.control``).
 
-The physics lives in :mod:`engine.preload`, the bolt data in
-:mod:`engine.threads` and the control methods in :mod:`engine.preload_methods`;
+The physics lives in :mod:`engine.physics.preload`, the bolt data in
+:mod:`engine.physics.threads` and the control methods in :mod:`engine.physics.preload_methods`;
 this module turns a request into a bolt (standard values unless overridden),
 calls those functions and says where every number came from.
 """
@@ -16,15 +16,15 @@ from typing import Any
 
 import numpy as np
 
-from .. import fasteners as fa
-from .. import joint as jt
-from .. import preload as pl
-from .. import threads as th
-from ..errors import EngineError, InputOutOfRange
-from ..preload_methods import METHOD_KEYS, METHODS, ControlMethod, get_method
-from ..spec import Check, ModelSpec, Output, Param, Plot, Result, RunContext, Rung
-from . import _fasteners as fz
-from ._common import count, friction_coefficient
+from ..core.errors import EngineError, InputOutOfRange
+from ..core.params import count, friction_coefficient
+from ..core.spec import Check, ModelSpec, Output, Param, Plot, Result, RunContext, Rung
+from ..physics import fasteners as fa
+from ..physics import joint as jt
+from ..physics import preload as pl
+from ..physics import threads as th
+from ..physics.preload_methods import METHOD_KEYS, METHODS, ControlMethod, get_method
+from ..procedures import bolt as fz
 
 SOURCE = (
     "[004] review of preload selection and tightening control, eq. 2–19, "
@@ -560,7 +560,7 @@ def _table_lookup(
 ) -> tuple[np.ndarray, np.ndarray]:
     """Index into ``table``'s keys (mm) per diameter [m], and where one matches.
 
-    The match of :func:`engine.threads._size_key` (relative 1e-6), on arrays: the keys
+    The match of :func:`engine.physics.threads._size_key` (relative 1e-6), on arrays: the keys
     are far apart, so only the two keys either side of a size can match it.
     """
     keys = np.fromiter(table, dtype=float)
@@ -630,7 +630,7 @@ def resolve_bolt_arrays(
 def _size_labels(x: Mapping[str, Any], diameter: Any, n: int) -> np.ndarray:
     """The ``fastener`` label per point for a varied numeric thread size (no catalogue part).
 
-    As :func:`engine.models._fasteners.resolve` writes it: the ISO designation where the
+    As :func:`engine.procedures.bolt.resolve` writes it: the ISO designation where the
     size is a catalogue thread, else "d = … mm", then the property class.
     """
     cls = str(x.get("property_class") or "8.8")
@@ -1224,7 +1224,7 @@ def _refuse_grip(x: Mapping[str, Any]) -> None:
 def _smallest_section(bolt: Bolt | BoltArrays, x: Mapping[str, Any]) -> tuple[Any, Any, Any, Any]:
     """d_0, A_0 of the smallest section (VDI 2230-1 R7), on floats or arrays.
 
-    :func:`engine.joint.smallest_section` over the thread, the plain and the reduced
+    :func:`engine.physics.joint.smallest_section` over the thread, the plain and the reduced
     shank; also where it is the shank, and False where a reduced length has no
     diameter.
     """
@@ -1541,7 +1541,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
         fixed = torque if x.get("scatter_torque") is None else float(x["scatter_torque"])
         geometry = (bolt.pitch, bolt.pitch_diameter, bolt.diameter)
         washer = (bolt.bearing_outer_diameter, bolt.hole_diameter)
-        # the band's corners and the exact mean (engine.preload.friction_scatter_band); the
+        # the band's corners and the exact mean (engine.physics.preload.friction_scatter_band); the
         # 64×64 grid only for the histogram, when asked (issue 21: nothing computed unasked)
         f_lo, f_hi, f_mean = _scatter_band(bolt, formula, fixed, g_range, k_range)
         if ctx.wants("preload_bins", "preload_counts"):
@@ -1623,7 +1623,7 @@ def _checked_range(x: Mapping[str, Any], name: str, nominal: float) -> tuple[flo
 SCATTER_MEAN_NOTE = (
     "friction scatter: min and max are the preloads at the corners of the μ_G × μ_K box and "
     "the mean is exact (μ_K integrated in closed form, μ_G by Gauss–Legendre, ~1e-13; "
-    "engine.preload.friction_scatter_band); until this version they came from a 64×64 "
+    "engine.physics.preload.friction_scatter_band); until this version they came from a 64×64 "
     "midpoint grid, whose mean is ~4e-6 relative low and whose band ~1.9 % narrow on the "
     "[004, fig. 5] example; the histogram (preload_bins, preload_counts) is still that grid's"
 )
@@ -1638,7 +1638,7 @@ def _scatter_band(
 ) -> tuple[Any, Any, Any]:
     """Lowest, highest and mean preload of the friction scatter, one design or per point.
 
-    :func:`engine.preload.friction_scatter_band`: its corners and exact mean take a few
+    :func:`engine.physics.preload.friction_scatter_band`: its corners and exact mean take a few
     operations a point (16 Gauss–Legendre nodes in μ_G), so a bolt varying from point
     to point costs no 64×64 grid.
     """

@@ -1,11 +1,11 @@
 """The ``impact.rare`` model: inputs, outputs, rungs, checks and notes.
 
-The physics is in :mod:`engine.rare_impact_cycle` (the Lagrangian stage 1 of
+The physics is in :mod:`engine.procedures.striker_cycle` (the Lagrangian stage 1 of
 a stated roller geometry and the whole cycle, simulated or in closed form)
-and :mod:`engine.rare_impact` (the paper's formulas: eq. 5 coefficients, eq. 6,
+and :mod:`engine.physics.rare_impact` (the paper's formulas: eq. 5 coefficients, eq. 6,
 the return and re-lock conditions); source [002], scan [003], see
 docs/sources.md. This module declares the model and reads every output and
-every check from one :class:`~engine.rare_impact_cycle.CycleOutcome`, so that
+every check from one :class:`~engine.procedures.striker_cycle.CycleOutcome`, so that
 times and verdicts cannot contradict each other.
 """
 
@@ -17,16 +17,18 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import EngineError
-from ..numerics import is_array, pymax, where
-from ..rare_impact import (
+from ..core.errors import EngineError
+from ..core.params import count, friction_coefficient, in_mm, in_ms, in_n_per_mm, in_rpm, positive
+from ..core.spec import Check, ModelSpec, Output, Param, Plot, Result, RunContext, Rung, Window
+from ..numerics.ode import is_array, pymax, where
+from ..physics.rare_impact import (
     G0,
     min_return_spring_rate,
     relock_margin,
     spring_height_limit,
     striker_oscillation,
 )
-from ..rare_impact_cycle import (
+from ..procedures.striker_cycle import (
     GEOMETRIES,
     CycleOutcome,
     closed_form_cycle,
@@ -36,8 +38,6 @@ from ..rare_impact_cycle import (
     relock_friction,
     simulate_cycle,
 )
-from ..spec import Check, ModelSpec, Output, Param, Plot, Result, RunContext, Rung, Window
-from ._common import count, friction_coefficient, in_mm, in_ms, in_n_per_mm, in_rpm, positive
 
 _SIMULATION_ERROR = 1e-6
 _SERIES = (
@@ -151,7 +151,7 @@ def _cycle(x: Mapping[str, Any]) -> CycleOutcome:
 
 
 def _errors(x: Mapping[str, Any]) -> dict[str, Any]:
-    """:func:`engine.rare_impact_cycle.closed_form_errors` of the closed form's cycle."""
+    """:func:`engine.procedures.striker_cycle.closed_form_errors` of the closed form's cycle."""
     o = _cycle(x)
     entry = _LAST_CYCLE[-1]
     errors = entry[2] if entry[1] is o else {}  # another thread's design came in between
@@ -273,7 +273,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """The closed form at many points (the array path of sweeps and studies).
 
     The same lines as a single run (:func:`_outputs`, :func:`_verdicts` on
-    :func:`engine.rare_impact_cycle.closed_form_cycle_array`); NaN/None where a single
+    :func:`engine.procedures.striker_cycle.closed_form_cycle_array`); NaN/None where a single
     run refuses the point or leaves the output null, and the verdicts of
     :func:`design_checks` as ``check_arrays``.
     """
@@ -303,7 +303,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     notes = [
         "closed form: quasi-static spin-up, piecewise-linear stages 2 and 4 started from "
         "the quasi-static release velocity, stage 3 with the half-coupling held; evaluated "
-        "on arrays, the same equations as a single run (engine.rare_impact_cycle)"
+        "on arrays, the same equations as a single run (engine.procedures.striker_cycle)"
     ]
     return Result(
         values=values,
@@ -848,7 +848,7 @@ _INPUTS: tuple[Param, ...] = (
     Param(
         "roller_geometry",
         "1",
-        "how the rollers sit between the cones (engine/rare_impact_cycle.py draws them): "
+        "how the rollers sit between the cones (engine/procedures/striker_cycle.py draws them): "
         "'symmetric_v' both faces conical, x = x0 + z1/(2 tan α), the paper's 45° release "
         "speed; 'single_cone' only the half-coupling's face conical, the printed constraint "
         "z1 = x1 tan α with consistent forces; 'paper' the printed [002, eq. 1] as it stands "

@@ -19,7 +19,8 @@ import pytest
 
 import engine
 
-#: Physics module -> the models whose inputs share its parameter names.
+#: Physics module (engine.physics, or the striker cycle in engine.procedures) -> the models
+#: whose inputs share its parameter names.
 FAMILIES: dict[str, tuple[str, ...]] = {
     "blow": ("blow.joint",),
     "clutch": ("clutch.ball", "clutch.ball_setting"),
@@ -30,7 +31,7 @@ FAMILIES: dict[str, tuple[str, ...]] = {
     "preload": ("preload.tightening", "preload.control"),
     "preload_methods": ("preload.tightening", "preload.control"),
     "rare_impact": ("impact.rare",),
-    "rare_impact_cycle": ("impact.rare",),
+    "striker_cycle": ("impact.rare",),
     "springs": ("clutch.ball", "clutch.ball_setting"),
     "threads": ("preload.tightening", "preload.control"),
 }
@@ -93,7 +94,8 @@ _CITATION = re.compile(r"^\d{3}\b|eq\.|fig\.|VDI|ISO")
 
 def _functions() -> Iterator[tuple[str, str, Callable[..., Any]]]:
     for module_name in FAMILIES:
-        module = importlib.import_module(f"engine.{module_name}")
+        layer = "procedures" if module_name == "striker_cycle" else "physics"
+        module = importlib.import_module(f"engine.{layer}.{module_name}")
         for name, obj in vars(module).items():
             if name.startswith("_") or not inspect.isfunction(obj):
                 continue

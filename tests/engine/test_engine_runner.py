@@ -275,12 +275,12 @@ def test_a_point_whose_estimate_refuses_is_null_with_the_reason_and_the_rest_com
 
 
 def test_a_prepared_request_is_validated_and_its_rung_chosen_once(monkeypatch: Any) -> None:
-    """The service routes a request by its rung (engine.runner.prepare) and hands that to
+    """The service routes a request by its rung (engine.core.runner.prepare) and hands that to
     engine.run: one validation and one rung choice per request, and the same answer as an
     unprepared run."""
-    import engine.runner as runner
+    import engine.core.runner as runner
     from engine import get_model
-    from engine.spec import ModelSpec
+    from engine.core.spec import ModelSpec
 
     spec = get_model("impact.rare")
     example = spec.examples[0]
@@ -310,7 +310,7 @@ def test_the_service_validates_an_auto_request_once(monkeypatch: Any) -> None:
     from fastapi.testclient import TestClient
 
     from engine import get_model
-    from engine.spec import ModelSpec
+    from engine.core.spec import ModelSpec
     from service import create_app
 
     spec = get_model("impact.rare")

@@ -7,9 +7,9 @@ import dataclasses
 import pytest
 
 import engine
-from engine import preload
-from engine.equations import equations_of
-from engine.spec import Param
+from engine.core.equations import equations_of
+from engine.core.spec import Param
+from engine.physics import preload
 from tests.toys import TOY
 
 

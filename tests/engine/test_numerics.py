@@ -1,4 +1,4 @@
-"""The compiled-ODE kit (engine/numerics.py): event location and budgets, against hand values.
+"""The compiled-ODE kit (engine/numerics/ode.py): event location and budgets, against hand values.
 
 The compiled functions are the ones the kernels call; each is held to numbers worked out
 here (a cubic's own values and roots) and to its pure-Python source.
@@ -12,7 +12,7 @@ import time
 import numpy as np
 import pytest
 
-from engine.numerics import StepCost, first_rise, first_rise_c, hermite, hermite_c, step_budget
+from engine.numerics.ode import StepCost, first_rise, first_rise_c, hermite, hermite_c, step_budget
 
 
 def _cubic(t: float) -> tuple[float, float]:
@@ -91,8 +91,9 @@ def test_step_cost_ignores_the_compiling_call_and_caps_a_pause() -> None:
 
 
 def test_each_kernel_keeps_its_own_step_cost() -> None:
-    from engine import blow, rare_impact_cycle
+    from engine.physics import blow
+    from engine.procedures import striker_cycle
 
-    assert isinstance(blow._COST, StepCost) and isinstance(rare_impact_cycle._COST, StepCost)
-    assert blow._COST is not rare_impact_cycle._COST
-    assert blow.step_budget(None, 5) == rare_impact_cycle.step_budget(None, 5) == 5
+    assert isinstance(blow._COST, StepCost) and isinstance(striker_cycle._COST, StepCost)
+    assert blow._COST is not striker_cycle._COST
+    assert blow.step_budget(None, 5) == striker_cycle.step_budget(None, 5) == 5

@@ -1,8 +1,8 @@
 """Sources and layout: every citation resolves inside the repository; physics stays apart.
 
-The layout of issue 13: physics in ``engine/<family>.py`` (no ``engine.spec``),
-declarations in ``engine/models/<family>.py``, sources in ``engine/sources.py``
-and ``docs/sources.md``; no import circle in ``engine/``.
+The layers of ``engine/``, each a folder (see LAYERS): physics in ``engine/physics/``
+(no spec machinery), declarations in ``engine/models/<family>.py``, sources in
+``engine/core/sources.py`` and ``docs/sources.md``; no import circle in ``engine/``.
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 
 import engine
-from engine.sources import SOURCES, cited_ids
+from engine.core.sources import SOURCES, cited_ids
 
 ROOT = Path(__file__).resolve().parents[2]
 #: Files whose text may cite sources (vendored third-party code is not ours).
@@ -25,33 +25,30 @@ CITING = [
     for p in sorted((ROOT / d).rglob("*"))
     if p.suffix in {".py", ".js", ".html"} and "vendor" not in p.parts
 ]
-#: Physics modules: pure functions, never the spec machinery.
-PHYSICS = [
-    "blow",
-    "clutch",
-    "fasteners",
-    "joint",
-    "motor_spinup",
-    "nutrunner",
-    "preload",
-    "preload_methods",
-    "rare_impact",
-    "rare_impact_cycle",
-    "springs",
-    "threads",
-]
+#: The layers of engine/ and the layers each may import (engine.core.errors is open to all).
+#: Physics is pure functions and never the spec machinery; nothing below the models knows
+#: a model but the studies, which run them by name; core knows no physics.
+LAYERS: dict[str, set[str]] = {
+    "core": {"core"},
+    "numerics": {"numerics"},
+    "physics": {"physics", "numerics"},
+    "procedures": {"procedures", "physics", "numerics", "core"},
+    "studies": {"studies", "models", "core"},
+    "models": {"models", "procedures", "physics", "numerics", "core"},
+}
+LAYERED = [p for layer in LAYERS for p in sorted((ROOT / "engine" / layer).glob("*.py"))]
 
 
 def test_the_citing_files_are_found():
     names = {p.relative_to(ROOT).as_posix() for p in CITING}
-    assert {"engine/nutrunner.py", "engine/models/clutch.py", "static/app.js"} <= names
+    assert {"engine/physics/nutrunner.py", "engine/models/clutch.py", "static/app.js"} <= names
 
 
 @pytest.mark.parametrize("path", CITING, ids=lambda p: p.relative_to(ROOT).as_posix())
 def test_every_citation_resolves_to_a_source(path):
     text = path.read_text(encoding="utf-8")
     unknown = cited_ids(text) - SOURCES.keys()
-    assert not unknown, f"{path.name} cites {sorted(unknown)}, which engine/sources.py lacks"
+    assert not unknown, f"{path.name} cites {sorted(unknown)}, which engine/core/sources.py lacks"
     assert not re.search(r"MODELS\.md|seeds/", text), f"{path.name} cites a file outside the repo"
 
 
@@ -81,7 +78,7 @@ def test_notes_of_every_example_cite_only_known_sources(spec):
 def test_docs_list_every_source():
     doc = (ROOT / "docs" / "sources.md").read_text(encoding="utf-8")
     headings = set(re.findall(r"^### \[([^\]]+)\]", doc, flags=re.M))
-    assert headings == set(SOURCES), "docs/sources.md and engine/sources.py list other sources"
+    assert headings == set(SOURCES), "docs/sources.md and engine/core/sources.py list other sources"
 
 
 def test_the_catalogue_serves_the_sources(client):
@@ -109,12 +106,21 @@ def _engine_imports(path: Path) -> set[str]:
     return found
 
 
-@pytest.mark.parametrize("name", PHYSICS)
-def test_physics_modules_do_not_import_the_spec(name):
-    imports = _engine_imports(ROOT / "engine" / f"{name}.py")
-    # the compiled-ODE kit (engine/numerics.py) is physics-free and imports nothing of engine
-    allowed = {f"engine.{m}" for m in (*PHYSICS, "errors", "numerics")}
-    assert imports <= allowed, f"engine/{name}.py imports {sorted(imports - allowed)}"
+def test_every_engine_module_is_in_a_layer():
+    loose = sorted(p.name for p in (ROOT / "engine").glob("*.py") if p.name != "__init__.py")
+    assert loose == []
+    assert {
+        p.name for p in (ROOT / "engine").iterdir() if p.is_dir() and p.name != "__pycache__"
+    } == set(LAYERS)
+
+
+@pytest.mark.parametrize("path", LAYERED, ids=lambda p: p.relative_to(ROOT).as_posix())
+def test_each_layer_imports_only_the_layers_below_it(path):
+    layer = path.relative_to(ROOT / "engine").parts[0]
+    allowed = {f"engine.{m}" for m in LAYERS[layer]}
+    imports = _engine_imports(path) - {"engine.core.errors"}
+    bad = sorted(m for m in imports if not any(m == a or m.startswith(a + ".") for a in allowed))
+    assert bad == [], f"{path.relative_to(ROOT)} ({layer}) imports {bad}"
 
 
 def test_no_import_circle_in_engine():

@@ -17,9 +17,9 @@ import pytest
 from scipy.integrate import quad
 
 import engine
-from engine.errors import InputOutOfRange
-from engine.study import Study, Variable, plan
-from engine.study_exec import LOOP_CHUNK, Cancelled, run_study
+from engine.core.errors import InputOutOfRange
+from engine.studies.execute import LOOP_CHUNK, Cancelled, run_study
+from engine.studies.plan import Study, Variable, plan
 
 from .study_toys import ISHIGAMI_S1, ISHIGAMI_ST, TOY_SA
 

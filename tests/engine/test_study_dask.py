@@ -15,8 +15,8 @@ import numpy as np
 import pytest
 
 import engine
-from engine.study import Study, Variable
-from engine.study_exec import LOOP_CHUNK, DaskExecutor, run_study
+from engine.studies.execute import LOOP_CHUNK, DaskExecutor, run_study
+from engine.studies.plan import Study, Variable
 
 pytestmark = pytest.mark.slow
 
@@ -52,7 +52,7 @@ def _study() -> Study:
     )
 
 
-def _equal(a: engine.study_exec.StudyRun, b: engine.study_exec.StudyRun) -> None:
+def _equal(a: engine.studies.execute.StudyRun, b: engine.studies.execute.StudyRun) -> None:
     strip = ("elapsed_s", "compute_s")
     sa = {k: v for k, v in a.summary.items() if k not in strip}
     sb = {k: v for k, v in b.summary.items() if k not in strip}
@@ -68,7 +68,7 @@ def _free_port() -> int:
 
 
 @pytest.fixture(scope="module")
-def reference() -> engine.study_exec.StudyRun:
+def reference() -> engine.studies.execute.StudyRun:
     return run_study(RARE, _study())
 
 

@@ -119,7 +119,7 @@ def test_study_settings_have_embedded_defaults() -> None:
 
 def test_a_queued_study_that_is_cancelled_never_runs_and_holds_its_place() -> None:
     import engine as eng
-    from engine.study import Study, Variable
+    from engine.studies.plan import Study, Variable
     from service.studies import Job, Studies
 
     rare = eng.get_model("impact.rare")
@@ -165,7 +165,7 @@ def test_a_submitted_study_draws_its_points_once(
 ) -> None:
     """The service plans a study to refuse a bad one at once; the job runs that plan and
     does not draw the points again (about 11 % of a 10^6-point study's time)."""
-    import engine.study_exec
+    import engine.studies.execute
     import service.studies
 
     calls: list[int] = []
@@ -176,7 +176,7 @@ def test_a_submitted_study_draws_its_points_once(
         return real(spec, study)
 
     monkeypatch.setattr(service.studies, "plan", counted)
-    monkeypatch.setattr(engine.study_exec, "plan", counted)
+    monkeypatch.setattr(engine.studies.execute, "plan", counted)
     r = app_client.post(
         "/api/v1/clutch/ball/study",
         json={

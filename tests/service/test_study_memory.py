@@ -18,7 +18,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 import service.studies
-from engine.study import Study, Variable, plan, study_size
+from engine.studies.plan import Study, Variable, plan, study_size
 from service import create_app
 from service.studies import Job, Studies, StudySettings
 from tests.toys import TOY

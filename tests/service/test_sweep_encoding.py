@@ -13,8 +13,8 @@ import pytest
 from fastapi.testclient import TestClient
 
 import engine
+from engine.core.runner import SweepResult
 from engine.models import MODELS
-from engine.runner import SweepResult
 from service import create_app
 from service.api import _sweep_answer
 from service.config import Settings

@@ -1,10 +1,10 @@
 """Every model's array path gives what its scalar path gives, point by point, checks included.
 
 A study varies several inputs at once and evaluates each group of points through
-the model's array path (:attr:`engine.spec.ModelSpec.vectorized`); the loop
+the model's array path (:attr:`engine.core.spec.ModelSpec.vectorized`); the loop
 through :func:`engine.run` is the reference. Here every float input an example
 sets is moved at once, at random within ±5 % (kept in its declared range), and
-the same points are evaluated twice by :func:`engine.study.evaluate_chunk`: with
+the same points are evaluated twice by :func:`engine.studies.plan.evaluate_chunk`: with
 the array path, and with it switched off. An input a single run refuses when
 moved alone by a few per cent (a thread diameter keyed to a table) stays at its
 example value, so the comparison is not of refused points with refused points.
@@ -22,7 +22,7 @@ import pytest
 
 import engine
 from engine import EngineError, ModelSpec
-from engine.study import evaluate_chunk
+from engine.studies.plan import evaluate_chunk
 
 from .common import FIXED, MODELS_UNDER_TEST, ids
 

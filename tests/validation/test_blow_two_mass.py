@@ -19,8 +19,8 @@ import math
 
 import pytest
 
-from engine.blow import BlowProblem, blow_series, simulate_blow
-from engine.nutrunner import impact_torque
+from engine.physics.blow import BlowProblem, blow_series, simulate_blow
+from engine.physics.nutrunner import impact_torque
 
 OMEGA = 150.0 * math.pi / 30.0
 E = 0.5 * 21.07 * OMEGA**2

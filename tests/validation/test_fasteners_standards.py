@@ -1,4 +1,4 @@
-"""engine.fasteners against the numbers printed in the standards and one published example.
+"""engine.physics.fasteners against the numbers printed in the standards and one published example.
 
 Each table below is copied from the printed standard (values as printed, the
 standard's units); the engine computes the same quantities from the basic
@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import pytest
 
-import engine.fasteners as f
+import engine.physics.fasteners as f
 
 INCH = 0.0254
 

@@ -15,7 +15,7 @@ The proof stresses S_p,nom are ISO 898-1 Table 3's (8.8: 580 MPa up to M16, 600 
 
 import pytest
 
-from engine import threads as th
+from engine.physics import threads as th
 
 PROOF_STRESS_MPA = {"8.8": (580.0, 600.0), "10.9": (830.0, 830.0), "12.9": (970.0, 970.0)}
 

@@ -2,7 +2,7 @@
 
 Independent implementation: misams/BAT v0.8.4 (https://github.com/misams/BAT, ``src/Ecss.py``,
 an ECSS-E-HB-32-23A calculator with VDI 2230 nomenclature). We ran its ``Ecss`` class side by
-side with ``engine.joint`` on 2026-11-23 (its own input files, its material and bolt
+side with ``engine.physics.joint`` on 2026-11-23 (its own input files, its material and bolt
 databases) and pin its outputs here, in mm/N as it prints them:
 
 * its cone/sleeve formula (ECSS eq. 7.6.10/7.6.11, VDI 2230-1 R3) puts the nominal diameter d
@@ -23,8 +23,8 @@ import math
 
 import pytest
 
-from engine import joint as jt
-from engine import preload as pl
+from engine.physics import joint as jt
+from engine.physics import preload as pl
 
 MM_PER_N = 1e-3  # BAT prints compliances in mm/N
 

@@ -16,7 +16,7 @@ import pytest
 
 from engine import run
 from engine.models.nutrunner import EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
-from engine.nutrunner import (
+from engine.physics.nutrunner import (
     STEEL_SHEAR_MODULUS,
     impact_torque,
     max_spindle_torque,

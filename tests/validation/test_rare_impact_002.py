@@ -13,7 +13,7 @@ import pytest
 
 from engine import run
 from engine.models.rare_impact import RARE_IMPACT, REFERENCE_DESIGN
-from engine.rare_impact import (
+from engine.physics.rare_impact import (
     max_striker_travel,
     release_speed,
     relock_margin,
@@ -21,7 +21,7 @@ from engine.rare_impact import (
     striker_oscillation,
     time_to_travel,
 )
-from engine.rare_impact_cycle import release_speed_of, simulate_cycle, simulate_cycle_scipy
+from engine.procedures.striker_cycle import release_speed_of, simulate_cycle, simulate_cycle_scipy
 
 GRID = np.logspace(3, 6, 7)  # spring rates 1…1000 N/mm
 

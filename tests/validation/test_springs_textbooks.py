@@ -1,4 +1,4 @@
-"""Springs against printed numbers (engine/springs.py).
+"""Springs against printed numbers (engine/physics/springs.py).
 
 Sources (see docs/sources.md):
 
@@ -19,7 +19,7 @@ import math
 
 import pytest
 
-from engine import springs as sp
+from engine.physics import springs as sp
 
 N_MM2 = 1e6
 

@@ -1,4 +1,4 @@
-"""blow.joint: the physics of engine/blow.py and the model's answers on its examples."""
+"""blow.joint: the physics of engine/physics/blow.py and the model's answers on its examples."""
 
 from __future__ import annotations
 
@@ -7,7 +7,9 @@ import math
 import pytest
 
 from engine import run
-from engine.blow import (
+from engine.core.errors import EngineError
+from engine.models.blow import BLOW, CLUTCH_M10, NUTRUNNER_HARD, NUTRUNNER_SOFT, RARE_IMPACT_M16
+from engine.physics.blow import (
     BlowProblem,
     blow_series,
     clutch_preload_window,
@@ -18,8 +20,6 @@ from engine.blow import (
     simulate_blow,
     simulate_blow_reference,
 )
-from engine.errors import EngineError
-from engine.models.blow import BLOW, CLUTCH_M10, NUTRUNNER_HARD, NUTRUNNER_SOFT, RARE_IMPACT_M16
 
 TOOL = BlowProblem(0.03, 0.001, 2.0e4, 90.0, 1000.0, breakaway=1.1)
 
@@ -184,7 +184,7 @@ def test_free_blow_rebounds_with_the_asked_restitution(e):
 
 
 def test_joint_rate_from_the_vdi_cone_when_the_plates_compliance_is_absent():
-    from engine.joint import clamped_compliance
+    from engine.physics.joint import clamped_compliance
 
     x = {k: v for k, v in RARE_IMPACT_M16.items() if k != "clamped_compliance"}
     r = run(BLOW, x, fidelity="energy", outputs=["joint_rate_used"])

@@ -1,7 +1,7 @@
 """blow.joint's array path (rigid and energy rungs): a study is the single runs, point by point.
 
 :func:`engine.run` is the reference. The studies here are evaluated through
-:func:`engine.study.evaluate_chunk` with the point-by-point loop forbidden, so
+:func:`engine.studies.plan.evaluate_chunk` with the point-by-point loop forbidden, so
 every point comes from the array path, and each is compared with its own run.
 """
 
@@ -12,14 +12,21 @@ import math
 import numpy as np
 import pytest
 
-import engine.study as study_module
+import engine.studies.plan as study_module
 from engine import EngineError, run, sweep
-from engine.blow import BlowProblem, blow_series, blow_series_array
+from engine.core.points import auto_index, rung_estimates
+from engine.core.runner import choose_rung
 from engine.models.blow import BLOW, CLUTCH_M10, ENERGY_M16, NUTRUNNER_HARD, RARE_IMPACT_M16
-from engine.points import auto_index, rung_estimates
-from engine.runner import choose_rung
-from engine.study import CHECK_FAILED, CHECK_OK, CHECK_UNKNOWN, Study, Variable, evaluate_chunk
-from engine.study import plan as study_plan
+from engine.physics.blow import BlowProblem, blow_series, blow_series_array
+from engine.studies.plan import (
+    CHECK_FAILED,
+    CHECK_OK,
+    CHECK_UNKNOWN,
+    Study,
+    Variable,
+    evaluate_chunk,
+)
+from engine.studies.plan import plan as study_plan
 
 FLOATS = [o.name for o in BLOW.outputs if not o.series and o.kind == "float"]
 VARIED = ("tool_energy", "thread_friction", "clamped_length")
@@ -351,7 +358,7 @@ def test_a_clutch_study_needs_what_a_single_run_needs() -> None:
         run(BLOW, base, fidelity="rigid")
     validated, _ = BLOW.validate(base)
     x = {**validated, "clutch_spring_force": np.array([900.0, 1100.0])}
-    from engine.spec import RunContext
+    from engine.core.spec import RunContext
 
     ctx = RunContext(rung="rigid", outputs=frozenset(CLUTCH_OUTPUTS), tolerance=0.01)
     assert BLOW.vectorized is not None
@@ -405,7 +412,7 @@ def test_a_study_of_outputs_the_rung_leaves_null_still_gives_the_checks_of_singl
 def test_a_buffer_refilled_in_place_gives_the_new_designs_answer() -> None:
     # a caller that reuses its input arrays: the estimates and the array path read the
     # values the arrays hold now (an identity-keyed cache answered the previous design)
-    from engine.spec import RunContext
+    from engine.core.spec import RunContext
 
     fixed, _ = BLOW.validate(RARE_IMPACT_M16)
     springs = np.array([4e4, 5e4])

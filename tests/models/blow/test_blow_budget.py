@@ -7,8 +7,8 @@ import time
 import pytest
 
 from engine import BudgetExceeded, run
-from engine.blow import BlowProblem, blow_series, step_budget
 from engine.models.blow import BLOW, ENERGY_M16
+from engine.physics.blow import BlowProblem, blow_series, step_budget
 
 #: The nut as light as the declared range allows (1e-9 kg·m²) on the M16 joint: the
 #: shortest period is tiny, so each blow takes ~130,000 RK4 steps and the twelve blows to

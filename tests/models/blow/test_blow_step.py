@@ -1,5 +1,5 @@
 """One blow of the rigid and energy rungs, written once for one design or many
-(engine.blow.blow_step, energy_blow): hand values, and arrays equal to single runs."""
+(engine.physics.blow.blow_step, energy_blow): hand values, and arrays equal to single runs."""
 
 from __future__ import annotations
 
@@ -8,8 +8,8 @@ import math
 import numpy as np
 import pytest
 
-from engine.blow import blow_gains_nothing, blow_step, energy_blow
-from engine.errors import InfeasibleDesign
+from engine.core.errors import InfeasibleDesign
+from engine.physics.blow import blow_gains_nothing, blow_step, energy_blow
 
 
 def test_energy_blow_by_hand() -> None:

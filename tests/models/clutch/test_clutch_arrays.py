@@ -1,7 +1,7 @@
 """The clutch models' array paths: every output and check of the scalar compute, point by point.
 
 A design study evaluates its points through ``spec.vectorized``; the reference is the
-scalar compute run point by point (:func:`engine.run`, or :func:`engine.study.evaluate_chunk`
+scalar compute run point by point (:func:`engine.run`, or :func:`engine.studies.plan.evaluate_chunk`
 with the array path switched off). Wide spreads here (±30 %, extreme angles and wires)
 make checks fail and points refuse, so verdicts and NaN placement are tested, not only
 the easy middle. The peak setting's closed form (the characteristic's lines in δ) is
@@ -18,14 +18,14 @@ import numpy as np
 import pytest
 
 import engine
-from engine import springs as sp
-from engine.errors import InputOutOfRange
-from engine.models import _clutch_asbuilt as asbuilt
+from engine.core.errors import InputOutOfRange
+from engine.core.points import vector
+from engine.core.spec import ModelSpec, RunContext
 from engine.models.clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
-from engine.points import vector
-from engine.spec import ModelSpec, RunContext
-from engine.study import Study, Variable, evaluate_chunk, plan
-from engine.study_exec import run_study
+from engine.physics import springs as sp
+from engine.procedures import clutch_asbuilt as asbuilt
+from engine.studies.execute import run_study
+from engine.studies.plan import Study, Variable, evaluate_chunk, plan
 
 DEG = math.pi / 180
 FLOATS = {

@@ -11,9 +11,9 @@ import numpy as np
 import pytest
 
 import engine
-from engine import clutch as cl
-from engine import springs as sp
 from engine.models.clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
+from engine.physics import clutch as cl
+from engine.physics import springs as sp
 
 DEG = math.pi / 180
 PAPER = dict(BALL_CLUTCH.examples[0])
@@ -296,7 +296,7 @@ def _first_crossing_one_by_one(x, spring, target, upper):
     grid point, the first at or past the target brackets Brent's method (the reference)."""
     from scipy.optimize import brentq
 
-    from engine.models import _clutch_asbuilt as asbuilt
+    from engine.procedures import clutch_asbuilt as asbuilt
 
     def peak(delta):
         return float(asbuilt.characteristic(x, spring, delta)["peak_torque"]) - target
@@ -317,7 +317,7 @@ def test_the_setting_search_on_one_grid_call_is_the_point_by_point_search():
     # disc stacks whose peak torque rises, flattens and falls with the setting (h0/t from
     # 1 to 2.2, 1 to 3 in series, 1 to 3 in parallel) and targets across and beyond their
     # reach: the same root to the last bit, the same None where no setting reaches it
-    from engine.models import _clutch_asbuilt as asbuilt
+    from engine.procedures import clutch_asbuilt as asbuilt
 
     rng = np.random.default_rng(11)
     found = missed = 0
@@ -345,7 +345,7 @@ def test_the_setting_search_on_one_grid_call_is_the_point_by_point_search():
 def test_the_suggested_pack_reuses_the_given_stacks_search_and_finds_what_a_fresh_search_finds():
     # the given stack's own number of discs in parallel is not searched twice; the answer
     # is still the fewest discs, each count searched from scratch (the reference)
-    from engine.models import _clutch_asbuilt as asbuilt
+    from engine.procedures import clutch_asbuilt as asbuilt
 
     rng = np.random.default_rng(3)
     counts = set()

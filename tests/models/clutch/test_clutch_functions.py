@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from engine.clutch import (
+from engine.physics.clutch import (
     ball_axial_force,
     ball_normal_force,
     ball_tangential_force,

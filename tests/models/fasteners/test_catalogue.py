@@ -1,4 +1,4 @@
-"""engine.fasteners: the designation parser, the catalogue lookups and the check relations."""
+"""engine.physics.fasteners: the designation parser, catalogue lookups and check relations."""
 
 from __future__ import annotations
 
@@ -7,8 +7,8 @@ import math
 
 import pytest
 
-import engine.fasteners as f
-from engine.errors import InputOutOfRange
+import engine.physics.fasteners as f
+from engine.core.errors import InputOutOfRange
 
 INCH = 0.0254
 

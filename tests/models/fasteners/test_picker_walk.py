@@ -17,9 +17,9 @@ from typing import Any
 import pytest
 
 from engine import run
-from engine.fasteners import catalogue, metric_thread
+from engine.core.spec import ModelSpec
 from engine.models import MODELS
-from engine.spec import ModelSpec
+from engine.physics.fasteners import catalogue, metric_thread
 
 #: Inputs the picker sets or clears.
 PICKED = ("thread_diameter", "thread_pitch", "bearing_outer_diameter", "hole_diameter")

@@ -6,9 +6,9 @@ import math
 
 import pytest
 
-import engine.fasteners as f
+import engine.physics.fasteners as f
 from engine import run
-from engine.errors import InputOutOfRange
+from engine.core.errors import InputOutOfRange
 from engine.models.preload import CONTROL, TIGHTENING
 
 INCH = 0.0254

@@ -8,11 +8,11 @@ import math
 
 import pytest
 
-from engine import joint as jt
 from engine import run
-from engine.errors import InputOutOfRange
+from engine.core.errors import InputOutOfRange
+from engine.core.runner import sweep, sweep_values
 from engine.models import get_model
-from engine.runner import sweep, sweep_values
+from engine.physics import joint as jt
 
 JOINT = get_model("joint.vdi2230")
 CONTROL = get_model("preload.control")

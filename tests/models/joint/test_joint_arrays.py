@@ -16,14 +16,15 @@ from typing import Any
 import numpy as np
 import pytest
 
-from engine import joint as jt
 from engine import run
-from engine.errors import EngineError, InputOutOfRange
+from engine.core.errors import EngineError, InputOutOfRange
+from engine.core.runner import sweep
+from engine.core.spec import RunContext
 from engine.models import get_model
 from engine.models import joint as joint_model
-from engine.runner import sweep
-from engine.spec import RunContext
-from engine.study import (
+from engine.physics import joint as jt
+from engine.studies.execute import run_study
+from engine.studies.plan import (
     CHECK_FAILED,
     CHECK_OK,
     CHECK_UNKNOWN,
@@ -32,7 +33,6 @@ from engine.study import (
     evaluate_chunk,
     plan,
 )
-from engine.study_exec import run_study
 from tests.stability.test_array_paths import _columns
 
 JOINT = get_model("joint.vdi2230")

@@ -1,4 +1,4 @@
-"""The VDI 2230-1 steps R1–R12 of engine.joint that the model once wrote inline, each held
+"""The VDI 2230-1 steps R1–R12 of engine.physics.joint that the model once wrote inline, each held
 to a value worked out by hand here (inputs → the step's relation → the number), on floats
 and on arrays."""
 
@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from engine import joint as jt
+from engine.physics import joint as jt
 
 
 def test_r2_required_clamp_force_is_the_larger_requirement():

@@ -16,7 +16,7 @@ import pytest
 
 from engine import InfeasibleDesign, InputOutOfRange, RunContext, run, sweep
 from engine.models.nutrunner import EXAMPLE_INDUCTION_MOTOR, EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
-from engine.nutrunner import (
+from engine.physics.nutrunner import (
     impact_torque,
     impact_torque_geared,
     kinetic_energy,

@@ -15,8 +15,8 @@ import pytest
 
 import engine
 from engine.models.nutrunner import EXAMPLE_INDUCTION_MOTOR, EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
-from engine.study import Study, Variable, evaluate_chunk, plan
-from engine.study_exec import run_study
+from engine.studies.execute import run_study
+from engine.studies.plan import Study, Variable, evaluate_chunk, plan
 
 SPEC = NUTRUNNER_DRIVE
 LOOP = dataclasses.replace(SPEC, vectorized=None, vector_rungs=())

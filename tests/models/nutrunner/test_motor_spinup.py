@@ -9,7 +9,7 @@ import pytest
 
 from engine import InfeasibleDesign, InputOutOfRange, SolverFailed, run
 from engine.models.nutrunner import EXAMPLE_INDUCTION_MOTOR, EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
-from engine.motor_spinup import (
+from engine.physics.motor_spinup import (
     MotorCurve,
     kloss_breakdown_slip,
     kloss_slip_torque,

@@ -2,7 +2,7 @@
 
 A sweep or a study hands the model its varied inputs as arrays; the bolt is resolved
 once and every number computed on arrays. Here the reference is always the scalar
-model: :func:`engine.run` at sampled points, or :func:`engine.study.evaluate_chunk`
+model: :func:`engine.run` at sampled points, or :func:`engine.studies.plan.evaluate_chunk`
 with the array path switched off. Values must agree to 1e-9, refusals must be the
 same points (NaN), and the checks must give the same verdicts.
 """
@@ -16,10 +16,17 @@ import numpy as np
 import pytest
 
 import engine
-from engine.points import vector
-from engine.spec import RunContext
-from engine.study import CHECK_FAILED, CHECK_OK, CHECK_UNKNOWN, Study, Variable, evaluate_chunk
-from engine.study_exec import run_study
+from engine.core.points import vector
+from engine.core.spec import RunContext
+from engine.studies.execute import run_study
+from engine.studies.plan import (
+    CHECK_FAILED,
+    CHECK_OK,
+    CHECK_UNKNOWN,
+    Study,
+    Variable,
+    evaluate_chunk,
+)
 
 TIGHTENING = engine.get_model("preload.tightening")
 CONTROL = engine.get_model("preload.control")

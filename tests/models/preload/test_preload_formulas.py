@@ -1,12 +1,12 @@
-"""Hand-computed cases, limits and invariants of engine.preload."""
+"""Hand-computed cases, limits and invariants of engine.physics.preload."""
 
 import math
 
 import numpy as np
 import pytest
 
-from engine import preload as pl
-from engine import threads as th
+from engine.physics import preload as pl
+from engine.physics import threads as th
 
 M12 = {"d": 0.012, "P": 0.00175, "d2": th.pitch_diameter(0.012, 0.00175)}
 M12["d0"] = th.stress_diameter(0.012, 0.00175)

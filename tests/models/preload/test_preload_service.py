@@ -7,7 +7,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from engine.preload_methods import METHOD_KEYS, METHODS
+from engine.physics.preload_methods import METHOD_KEYS, METHODS
 
 TIGHT = "/api/v1/preload/tightening"
 CTRL = "/api/v1/preload/control"

@@ -1,7 +1,7 @@
 """The friction-scatter band and mean of ``preload.control`` (issue 22's validation).
 
 F(μ_G, μ_K) = M / (k_G(μ_G) + k_K(μ_K)) with μ_G, μ_K independent and uniform
-([004, fig. 5], eq. 13). :func:`engine.preload.friction_scatter_band` gives its extremes
+([004, fig. 5], eq. 13). :func:`engine.physics.preload.friction_scatter_band` gives its extremes
 at the corners and its mean by a closed form in μ_K and Gauss–Legendre in μ_G. Here it
 is held to methods that share none of that: scipy's adaptive ``dblquad`` of F itself,
 the double antiderivative of a linear k_G in 60-digit decimal arithmetic, ``quad`` in
@@ -20,10 +20,10 @@ import pytest
 from scipy import integrate
 
 import engine
-from engine import preload as pl
-from engine import threads as th
-from engine.study import Study, Variable
-from engine.study_exec import run_study
+from engine.physics import preload as pl
+from engine.physics import threads as th
+from engine.studies.execute import run_study
+from engine.studies.plan import Study, Variable
 
 FORMULAS = ("vdi2230", "exact", "approx")
 
@@ -341,7 +341,7 @@ def test_extreme_ranges_give_finite_ordered_figures_on_both_paths(formula: str) 
     names = ("scatter_preload_min", "scatter_preload_mean", "scatter_preload_max")
     with np.errstate(all="raise"):
         got = spec.vectorized(  # type: ignore[misc]
-            {**x, **columns}, engine.spec.RunContext("closed_form", frozenset(names), 0.01)
+            {**x, **columns}, engine.core.spec.RunContext("closed_form", frozenset(names), 0.01)
         )
     low, mean, high = (np.asarray(got.values[n]) for n in names)
     assert np.isfinite(low).all() and np.isfinite(mean).all() and np.isfinite(high).all()

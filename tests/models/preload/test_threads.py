@@ -5,7 +5,7 @@ import math
 import pytest
 
 from engine import InputOutOfRange
-from engine import threads as th
+from engine.physics import threads as th
 
 # ISO 898-1 Table 4/5 nominal stress areas [mm²] (coarse, then fine threads).
 ISO_898_STRESS_AREAS = [

@@ -14,8 +14,8 @@ import pytest
 
 import engine.models.preload as mp
 from engine import run
+from engine.core.spec import ModelSpec
 from engine.models.preload import CONTROL, TIGHTENING
-from engine.spec import ModelSpec
 
 
 def _counting(monkeypatch: pytest.MonkeyPatch) -> Counter[str]:

@@ -3,7 +3,7 @@
 The array path (``RARE_IMPACT.vectorized``) and the array-capable estimate of the
 closed form are an optimisation; :func:`engine.run` is the reference. Here a grid
 study, an ``auto`` study and a study at the extremes of the declared ranges are
-evaluated through :func:`engine.study.evaluate_chunk` with the point-by-point loop
+evaluated through :func:`engine.studies.plan.evaluate_chunk` with the point-by-point loop
 forbidden, and every point is compared with its own single run.
 """
 
@@ -14,11 +14,12 @@ import math
 import numpy as np
 import pytest
 
-import engine.study as study_module
+import engine.studies.plan as study_module
 from engine import EngineError, run, sweep
+from engine.core.points import auto_index, rung_estimates
+from engine.core.spec import RunContext
 from engine.models.rare_impact import RARE_IMPACT, REFERENCE_DESIGN
-from engine.points import auto_index, rung_estimates
-from engine.rare_impact_cycle import (
+from engine.procedures.striker_cycle import (
     HELD,
     NEVER_FAST_ENOUGH,
     NOT_HELD,
@@ -26,9 +27,15 @@ from engine.rare_impact_cycle import (
     closed_form_cycle_array,
     linear_reach,
 )
-from engine.spec import RunContext
-from engine.study import CHECK_FAILED, CHECK_OK, CHECK_UNKNOWN, Study, Variable, evaluate_chunk
-from engine.study import plan as study_plan
+from engine.studies.plan import (
+    CHECK_FAILED,
+    CHECK_OK,
+    CHECK_UNKNOWN,
+    Study,
+    Variable,
+    evaluate_chunk,
+)
+from engine.studies.plan import plan as study_plan
 
 OUTPUTS = [o.name for o in RARE_IMPACT.outputs if not o.series and o.kind == "float"]
 

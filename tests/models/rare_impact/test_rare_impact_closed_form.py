@@ -12,7 +12,7 @@ from engine.models.rare_impact import (
     RARE_IMPACT,
     REFERENCE_DESIGN,
 )
-from engine.rare_impact import (
+from engine.physics.rare_impact import (
     effective_stage1_mass,
     liftoff_speed,
     max_striker_travel,
@@ -25,7 +25,7 @@ from engine.rare_impact import (
     striker_travel,
     time_to_travel,
 )
-from engine.rare_impact_cycle import quasi_static_error, snaps_at_liftoff
+from engine.procedures.striker_cycle import quasi_static_error, snaps_at_liftoff
 
 R = REFERENCE_DESIGN
 

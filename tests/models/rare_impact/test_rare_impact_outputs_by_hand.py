@@ -18,7 +18,7 @@ from scipy.optimize import brentq
 
 from engine import run
 from engine.models.rare_impact import RARE_IMPACT, REFERENCE_DESIGN
-from engine.rare_impact_cycle import simulate_cycle_scipy
+from engine.procedures.striker_cycle import simulate_cycle_scipy
 
 R = REFERENCE_DESIGN
 G = R["gravity"]
@@ -148,7 +148,7 @@ def test_the_simulated_half_coupling_speed_is_solve_ivp_s() -> None:
 def test_the_report_lists_the_steps_of_the_cycle() -> None:
     # the calculation report's equations are read from the functions the run calls: the
     # closed form's stages must be among them, in the order of the procedure
-    from engine.equations import equations_of
+    from engine.core.equations import equations_of
 
     names = [e["function"] for e in equations_of(RARE_IMPACT.compute)]
     steps = ["_release_speed", "_time_to_speed", "_release_velocity", "_stage2", "_reach"]

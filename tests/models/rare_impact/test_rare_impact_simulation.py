@@ -11,8 +11,8 @@ from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
 from engine import BudgetExceeded, EngineError, InfeasibleDesign, run
-from engine import rare_impact_cycle as C
 from engine.models.rare_impact import PAPER_DESIGN, RARE_IMPACT, REFERENCE_DESIGN
+from engine.procedures import striker_cycle as C
 
 R = REFERENCE_DESIGN
 STIFF = {

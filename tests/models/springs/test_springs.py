@@ -1,4 +1,4 @@
-"""engine.springs: helical springs (EN 13906-1) and disc springs (DIN EN 16983).
+"""engine.physics.springs: helical springs (EN 13906-1) and disc springs (DIN EN 16983).
 
 Hand-computed values, limits where two forms agree, invariants over grids.
 Printed textbook numbers are pinned in tests/validation/test_springs_textbooks.py.
@@ -9,8 +9,8 @@ import math
 import numpy as np
 import pytest
 
-from engine import springs as sp
-from engine.errors import InputOutOfRange
+from engine.core.errors import InputOutOfRange
+from engine.physics import springs as sp
 
 
 def test_rate_and_stress_by_hand():

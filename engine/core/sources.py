@@ -180,7 +180,7 @@ SOURCES: dict[str, Source] = {
             year="1998",
             published="ISO 68-1:1998",
             covers="Basic profile H = (sqrt 3 / 2) P: pitch diameter d2 = d - 0.6495 P, minor "
-            "diameters (engine.threads).",
+            "diameters (engine.physics.threads).",
         ),
         Source(
             id="ISO261",
@@ -189,7 +189,7 @@ SOURCES: dict[str, Source] = {
             authors="ISO",
             year="1998",
             published="ISO 261:1998",
-            covers="Coarse and fine pitches per nominal diameter, M3-M39 (engine.threads).",
+            covers="Coarse and fine pitches per nominal diameter, M3-M39 (engine.physics.threads).",
         ),
         Source(
             id="ISO273",
@@ -199,7 +199,7 @@ SOURCES: dict[str, Source] = {
             year="1979",
             published="ISO 273:1979",
             covers="Fine, medium and coarse clearance-hole diameters (bearing-face inner "
-            "diameter, engine.threads.clearance_hole).",
+            "diameter, engine.physics.threads.clearance_hole).",
         ),
         Source(
             id="ISO724",
@@ -208,7 +208,7 @@ SOURCES: dict[str, Source] = {
             authors="ISO",
             year="1993",
             published="ISO 724:1993",
-            covers="Basic dimensions d2, d1 derived from ISO 68-1 (engine.threads).",
+            covers="Basic dimensions d2, d1 derived from ISO 68-1 (engine.physics.threads).",
         ),
         Source(
             id="ISO898-1",
@@ -219,7 +219,7 @@ SOURCES: dict[str, Source] = {
             year="2013",
             published="ISO 898-1:2013",
             covers="Stress area A_s = (pi/4) ((d2 + d3)/2)^2, yield and tensile strength of "
-            "property classes 4.6-12.9 (engine.threads).",
+            "property classes 4.6-12.9 (engine.physics.threads).",
         ),
         Source(
             id="ISO4017",
@@ -229,7 +229,7 @@ SOURCES: dict[str, Source] = {
             year="edition not stated in the engine",
             published="ISO 4017",
             covers="Width across flats s and bearing-face diameter d_w of hexagon heads "
-            "(engine.threads.hex_bearing_diameter).",
+            "(engine.physics.threads.hex_bearing_diameter).",
         ),
         Source(
             id="ISO5393",
@@ -250,7 +250,7 @@ SOURCES: dict[str, Source] = {
             year="2010",
             published="ECSS-E-HB-32-23A, 16 April 2010, Noordwijk (free download from ecss.nl)",
             covers="Open secondary source for the VDI 2230 relations of the joint model "
-            "(engine.joint): bolt compliance by sections (sect. 7.5.5, Table 7-1), "
+            "(engine.physics.joint): bolt compliance by sections (sect. 7.5.5, Table 7-1), "
             "clamped-part compliance by the deformation cone and sleeve (sect. 7.6.3, "
             "eq. 7.6.8-7.6.14), embedding table (Table 6-3, after VDI 2230 Table 5.4/1), "
             "thermal preload change (sect. 6.3.5), preload range from a torque specification "
@@ -266,7 +266,7 @@ SOURCES: dict[str, Source] = {
             authors="M. Sams (GitHub misams/BAT)",
             year="2021 (v0.8.4)",
             published="https://github.com/misams/BAT, src/Ecss.py, src/BoltAnalysisBase.py",
-            covers="Independent implementation run side by side with engine.joint on "
+            covers="Independent implementation run side by side with engine.physics.joint on "
             "2026-11-23: clamped-part compliance (cone/sleeve), bolt compliance, load factor, "
             "preload range of the ECSS sect. 7.14 worked example "
             "(tests/validation/test_joint_compliance.py). Its cone formula puts the nominal "
@@ -291,7 +291,7 @@ SOURCES: dict[str, Source] = {
             year="textbook relation, no single edition cited",
             published="e.g. any electric machines textbook (T = 2 T_b / (s/s_b + s_b/s))",
             covers="Induction-motor torque-speed curve for the motor_curve rung of "
-            "nutrunner.drive (engine.motor_spinup), beyond [000].",
+            "nutrunner.drive (engine.physics.motor_spinup), beyond [000].",
         ),
         Source(
             id="ISO262",
@@ -301,7 +301,8 @@ SOURCES: dict[str, Source] = {
             authors="ISO",
             year="1998",
             published="ISO 262:1998",
-            covers="Coarse and fine pitches of the selected sizes M1.6-M64 (engine.fasteners).",
+            covers="Coarse and fine pitches of the selected sizes M1.6-M64 "
+            "(engine.physics.fasteners).",
         ),
         Source(
             id="ISO3506-1",
@@ -312,7 +313,7 @@ SOURCES: dict[str, Source] = {
             year="2009",
             published="ISO 3506-1:2009",
             covers="Austenitic A2/A4 property classes 50, 70, 80: R_p0.2 210/450/600 MPa, R_m "
-            "500/700/800 MPa; 70 and 80 up to M24, 50 up to M39 (engine.fasteners).",
+            "500/700/800 MPa; 70 and 80 up to M24, 50 up to M39 (engine.physics.fasteners).",
         ),
         Source(
             id="ISO898-2",
@@ -323,7 +324,7 @@ SOURCES: dict[str, Source] = {
             year="2012",
             published="ISO 898-2:2012",
             covers="Nut property classes (04, 05, 6, 8, 9, 10, 12) and styles paired with bolt "
-            "classes (engine.fasteners).",
+            "classes (engine.physics.fasteners).",
         ),
         Source(
             id="SAEJ429",
@@ -333,7 +334,7 @@ SOURCES: dict[str, Source] = {
             year="2014",
             published="SAE J429",
             covers="Grades 2, 5, 8: proof, yield and tensile strength by size range, 1/4-1-1/2 in "
-            "(engine.fasteners).",
+            "(engine.physics.fasteners).",
         ),
         Source(
             id="ASTMA193",
@@ -343,7 +344,8 @@ SOURCES: dict[str, Source] = {
             authors="ASTM International",
             year="2020",
             published="ASTM A193/A193M",
-            covers="Grade B7: R_m 125 ksi, yield 105 ksi up to 2-1/2 in (engine.fasteners).",
+            covers="Grade B7: R_m 125 ksi, yield 105 ksi up to 2-1/2 in "
+            "(engine.physics.fasteners).",
         ),
         Source(
             id="ASMEB1.1",
@@ -353,7 +355,7 @@ SOURCES: dict[str, Source] = {
             year="2019",
             published="ASME B1.1",
             covers="UNC/UNF series (threads per inch), basic pitch diameter E = D - 0.649519 p, "
-            "tensile stress area A_t = 0.7854 (D - 0.9743 p)^2 (engine.fasteners).",
+            "tensile stress area A_t = 0.7854 (D - 0.9743 p)^2 (engine.physics.fasteners).",
         ),
         Source(
             id="ASMEB18.2.1",
@@ -364,7 +366,7 @@ SOURCES: dict[str, Source] = {
             year="2012",
             published="ASME B18.2.1",
             covers="Hex cap screw width across flats F and head height H, 1/4-1-1/2 in;"
-            " bearing face taken as 0.95 F (engine.fasteners).",
+            " bearing face taken as 0.95 F (engine.physics.fasteners).",
         ),
         Source(
             id="ASMEB18.2.8",
@@ -373,7 +375,7 @@ SOURCES: dict[str, Source] = {
             authors="ASME",
             year="1999",
             published="ASME B18.2.8",
-            covers="Normal-fit clearance holes for inch bolts (engine.fasteners).",
+            covers="Normal-fit clearance holes for inch bolts (engine.physics.fasteners).",
         ),
         Source(
             id="ISO4014",
@@ -382,7 +384,7 @@ SOURCES: dict[str, Source] = {
             authors="ISO",
             year="2011",
             published="ISO 4014:2011",
-            covers="Same head as ISO 4017 (partly threaded): s, k, d_w (engine.fasteners).",
+            covers="Same head as ISO 4017 (partly threaded): s, k, d_w (engine.physics.fasteners).",
         ),
         Source(
             id="ISO4762",
@@ -392,7 +394,7 @@ SOURCES: dict[str, Source] = {
             year="2004",
             published="ISO 4762:2004",
             covers="Head diameter, head height k = d, hexagon socket size s, bearing"
-            " diameter d_w,min (engine.fasteners).",
+            " diameter d_w,min (engine.physics.fasteners).",
         ),
         Source(
             id="EN1665",
@@ -402,7 +404,7 @@ SOURCES: dict[str, Source] = {
             year="1997",
             published="EN 1665:1997",
             covers="Flange bearing diameter d_w,min, width across flats s, head height k, M5-M20 "
-            "(engine.fasteners).",
+            "(engine.physics.fasteners).",
         ),
         Source(
             id="ISO10642",
@@ -412,7 +414,7 @@ SOURCES: dict[str, Source] = {
             year="2004",
             published="ISO 10642:2004",
             covers="90 deg countersunk head: actual head diameter d_k,min, head height,"
-            " socket size (engine.fasteners).",
+            " socket size (engine.physics.fasteners).",
         ),
         Source(
             id="ISO2936",
@@ -422,7 +424,7 @@ SOURCES: dict[str, Source] = {
             year="2014",
             published="ISO 2936:2014",
             covers="Minimum test torque of hexagon keys by key size: the drive-torque"
-            " limit of socket screws (engine.fasteners).",
+            " limit of socket screws (engine.physics.fasteners).",
         ),
         Source(
             id="ISO4032",
@@ -431,7 +433,7 @@ SOURCES: dict[str, Source] = {
             authors="ISO",
             year="2012",
             published="ISO 4032:2012",
-            covers="Nut height m, width across flats (engine.fasteners).",
+            covers="Nut height m, width across flats (engine.physics.fasteners).",
         ),
         Source(
             id="ISO4033",
@@ -440,7 +442,7 @@ SOURCES: dict[str, Source] = {
             authors="ISO",
             year="2012",
             published="ISO 4033:2012",
-            covers="Nut height m (engine.fasteners).",
+            covers="Nut height m (engine.physics.fasteners).",
         ),
         Source(
             id="ISO4035",
@@ -449,7 +451,7 @@ SOURCES: dict[str, Source] = {
             authors="ISO",
             year="2012",
             published="ISO 4035:2012",
-            covers="Thin nut height m, classes 04/05 (engine.fasteners).",
+            covers="Thin nut height m, classes 04/05 (engine.physics.fasteners).",
         ),
         Source(
             id="ISO7089",
@@ -458,7 +460,7 @@ SOURCES: dict[str, Source] = {
             authors="ISO",
             year="2000",
             published="ISO 7089:2000",
-            covers="Washer d1, d2, h (engine.fasteners).",
+            covers="Washer d1, d2, h (engine.physics.fasteners).",
         ),
         Source(
             id="ISO7092",
@@ -467,7 +469,7 @@ SOURCES: dict[str, Source] = {
             authors="ISO",
             year="2000",
             published="ISO 7092:2000",
-            covers="Washer d1, d2, h (engine.fasteners).",
+            covers="Washer d1, d2, h (engine.physics.fasteners).",
         ),
         Source(
             id="ISO7093",
@@ -476,7 +478,7 @@ SOURCES: dict[str, Source] = {
             authors="ISO",
             year="2000",
             published="ISO 7093-1:2000",
-            covers="Washer d1, d2, h (engine.fasteners).",
+            covers="Washer d1, d2, h (engine.physics.fasteners).",
         ),
         Source(
             id="EN1561",
@@ -485,8 +487,8 @@ SOURCES: dict[str, Source] = {
             authors="CEN",
             year="2011",
             published="EN 1561:2011",
-            covers="Informative shear strength of grey cast iron, about 1.1 R_m (engine.fasteners "
-            "materials).",
+            covers="Informative shear strength of grey cast iron, about 1.1 R_m "
+            "(engine.physics.fasteners materials).",
         ),
         Source(
             id="EN1563",
@@ -495,8 +497,8 @@ SOURCES: dict[str, Source] = {
             authors="CEN",
             year="2011",
             published="EN 1563:2011",
-            covers="Informative shear strength of nodular iron, about 0.9 R_m (engine.fasteners "
-            "materials).",
+            covers="Informative shear strength of nodular iron, about 0.9 R_m "
+            "(engine.physics.fasteners materials).",
         ),
         Source(
             id="Alexander",
@@ -507,7 +509,7 @@ SOURCES: dict[str, Source] = {
             published="SAE Technical Paper 770420",
             covers="Thread-stripping model: shear areas of internal and external threads, nut "
             "dilation factor C1, thread-bending factors C2/C3; the basis of VDI 2230-1 R11 "
-            "(engine.fasteners.thread_stripping).",
+            "(engine.physics.fasteners.thread_stripping).",
         ),
         Source(
             id="FED-STD-H28",
@@ -518,7 +520,7 @@ SOURCES: dict[str, Source] = {
             year="1978",
             published="FED-STD-H28/2B",
             covers="Shear areas of internal and external threads per length of engagement"
-            " (Appendix B), with tau = 0.6 R_m practice (engine.fasteners).",
+            " (Appendix B), with tau = 0.6 R_m practice (engine.physics.fasteners).",
         ),
         # --- issue 17 (clutch helper): springs for the clutch as built ---
         Source(
@@ -532,7 +534,7 @@ SOURCES: dict[str, Source] = {
             covers="Helical compression springs: rate, shear stress and Bergstrasser's stress "
             "correction factor k = (w + 0.5)/(w - 0.75), permissible shear stress 0.5 R_m for "
             "cold-coiled springs, solid length, minimum sum of gaps S_a, buckling by the "
-            "seating coefficient nu, natural frequency (engine.springs).",
+            "seating coefficient nu, natural frequency (engine.physics.springs).",
             reconstruction="Paywalled; the relations are the standard's as reproduced in spring "
             "makers' handbooks, and checked in tests against textbook worked examples.",
         ),
@@ -546,7 +548,7 @@ SOURCES: dict[str, Source] = {
             published="DIN EN 16983:2017 (replaces DIN 2092 and DIN 2093)",
             covers="Disc springs after Almen and Laszlo: factors K1, K2, K3 (K4 for contact "
             "flats), force F(s), force at flat, stresses at OM, I, II, III, IV, stacks in "
-            "series and parallel with the friction factors w_M, w_R (engine.springs).",
+            "series and parallel with the friction factors w_M, w_R (engine.physics.springs).",
             reconstruction="Paywalled; the Almen-Laszlo relations are as printed in DIN 2092 "
             "and disc-spring makers' handbooks; the K-factors are checked against Carvill's "
             "table.",
@@ -561,10 +563,10 @@ SOURCES: dict[str, Source] = {
             published="EN 10270-1, EN 10270-3",
             covers="Minimum tensile strength R_m by wire diameter of grades SH and DH "
             "(EN 10270-1) and X10CrNi18-8, 1.4310 (EN 10270-3); preferred wire diameters "
-            "(engine.springs).",
+            "(engine.physics.springs).",
             reconstruction="Paywalled. The SH/DH rows for 0.30, 0.32, 0.34 mm were checked "
             "against a public transcription of the table; the other rows and the 1.4310 table "
-            "are transcribed and not re-checked (see engine/springs.py).",
+            "are transcribed and not re-checked (see engine/physics/springs.py).",
         ),
         Source(
             id="Bhandari",
@@ -597,7 +599,7 @@ SOURCES: dict[str, Source] = {
             year="2010",
             published="Computer Physics Communications 181(2), 259-270",
             covers="The sampling design (matrices A, B, AB_i) and the first-order Sobol' "
-            "estimator of engine.study; the total index uses Jansen's estimator (M. J. W. "
+            "estimator of engine.studies.plan; the total index uses Jansen's estimator (M. J. W. "
             "Jansen, Computer Physics Communications 117, 35-43, 1999). Validated against the "
             "Ishigami function's analytic indices (T. Ishigami, T. Homma, 1990; Saltelli et al., "
             "Global Sensitivity Analysis: The Primer, Wiley 2008, §4.8).",

@@ -25,7 +25,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import InputOutOfRange
+from ..core.errors import InputOutOfRange
 
 #: cos 30°: half the 60° flank angle of an ISO metric thread.
 COS_HALF_FLANK = math.cos(math.radians(30.0))

@@ -19,7 +19,7 @@ in [002, eq. 1] (which does not balance virtual power), stage 2 from rest,
 stage 3 without the rollers. The model ``impact.rare`` uses them for the
 paper's conditions (eq. 5 coefficients, eq. 6, the return and re-lock rules)
 and for its ``paper`` variant; its stage 1 comes from a Lagrangian of a stated
-roller geometry and its cycle from :mod:`engine.rare_impact_cycle`, which
+roller geometry and its cycle from :mod:`engine.procedures.striker_cycle`, which
 also holds the whole-cycle simulation.
 
 What the source leaves open, and what this module does about it
@@ -71,8 +71,8 @@ from typing import Any
 
 import numpy as np
 
-from .errors import InfeasibleDesign
-from .numerics import asin, is_array, pymax, pymin, sqrt, where
+from ..core.errors import InfeasibleDesign
+from ..numerics.ode import asin, is_array, pymax, pymin, sqrt, where
 
 __all__ = [
     "effective_stage1_mass",
@@ -175,7 +175,7 @@ def release_speed(
     :math:`\omega_M = \sqrt{[c_1(\lambda_1+h)+c_2(\lambda_2+h)]/(0.5 n m r)}`
     [002, after eq. 4]. The flywheel's inertia change is neglected, as in the
     source. Relative error against the full stage-1 dynamics: see
-    :func:`engine.rare_impact_cycle.quasi_static_error`.
+    :func:`engine.procedures.striker_cycle.quasi_static_error`.
 
     Examples
     --------

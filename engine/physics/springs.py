@@ -38,7 +38,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from .errors import InputOutOfRange
+from ..core.errors import InputOutOfRange
 
 FloatArray = float | npt.NDArray[np.float64]
 

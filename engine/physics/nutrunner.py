@@ -1,7 +1,7 @@
 r"""Drive of a multi-spindle impact nut-runner: spin-up time and impact torque.
 
 Source [000]: the parameters of a multi-spindle wheel-nut runner's drive
-(see docs/sources.md and :mod:`engine.sources`). A motor 6 (power :math:`P`, shaft speed
+(see docs/sources.md and :mod:`engine.core.sources`). A motor 6 (power :math:`P`, shaft speed
 :math:`\omega`) turns a safety jaw coupling 1 and a motor pulley 2; a V-belt
 drives the flywheel 3 (the driven pulley) on shaft 7, which carries the drive
 gear 4; the drive gear meshes with :math:`z` spindle gears 5, each coupled to
@@ -19,7 +19,7 @@ The paper gives two models:
 This module holds those equations as pure functions on SI floats (or numpy
 arrays), two refinements the catalogue asks for (the gear ratio between shaft
 and spindle, and a real motor's torque–speed curve integrated by quadrature in
-:mod:`engine.motor_spinup`),
+:mod:`engine.physics.motor_spinup`),
 and the :data:`NUTRUNNER_DRIVE` spec that the service serves at
 ``/nutrunner/drive``.
 
@@ -351,7 +351,7 @@ def acceleration_time(kinetic_energy: Any, motor_power: Any) -> Any:
     theorem and the chain (reconstruction: [000] in docs/sources.md).
     Constant power from standstill is an idealisation (it needs infinite
     torque at :math:`\omega = 0`); see
-    :func:`engine.motor_spinup.spin_up_time` for a real motor.
+    :func:`engine.physics.motor_spinup.spin_up_time` for a real motor.
 
     Examples
     --------

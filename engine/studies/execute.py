@@ -1,6 +1,6 @@
-"""Run a :class:`~engine.study.Study`: chunks in-process or on a Dask cluster.
+"""Run a :class:`~engine.studies.plan.Study`: chunks in-process or on a Dask cluster.
 
-The points are drawn once (:func:`engine.study.plan`) and cut into chunks of a
+The points are drawn once (:func:`engine.studies.plan.plan`) and cut into chunks of a
 size fixed by the model alone (array-path chunks of 65,536 points, one-by-one
 chunks of 256), so the same study gives the same chunks, the same values and
 the same summary, bit for bit, whichever executor ran them:
@@ -28,9 +28,9 @@ from typing import Any, Protocol
 
 import numpy as np
 
-from .errors import BudgetExceeded, Cancelled
-from .spec import ModelSpec
-from .study import ChunkResult, Plan, Study, chunks, evaluate_chunk, merge, plan, summarize
+from ..core.errors import BudgetExceeded, Cancelled
+from ..core.spec import ModelSpec
+from .plan import ChunkResult, Plan, Study, chunks, evaluate_chunk, merge, plan, summarize
 
 VECTOR_CHUNK = 65_536
 LOOP_CHUNK = 256
@@ -173,7 +173,7 @@ def run_study(
 ) -> StudyRun:
     """Plan, evaluate and summarise ``study``; raise Cancelled or BudgetExceeded when stopped.
 
-    ``planned`` is :func:`engine.study.plan` of the same study, where the caller has
+    ``planned`` is :func:`engine.studies.plan.plan` of the same study, where the caller has
     already drawn its points (the service does, to refuse a bad study at once): they are
     not drawn again.
     """

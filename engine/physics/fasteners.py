@@ -5,7 +5,7 @@ An embedded catalogue (no network) and the pure functions that read it:
 - threads: ISO metric coarse and fine M1.6…M64 (pitches of ISO 261 / ISO 262,
   basic profile of ISO 68-1 / ISO 724, stress area of ISO 898-1) and Unified
   inch UNC/UNF 1/4…1-1/2 (ASME B1.1 basic pitch diameter, tensile stress area);
-- grades: ISO 898-1 property classes (from :mod:`engine.threads`), ISO 3506-1
+- grades: ISO 898-1 property classes (from :mod:`engine.physics.threads`), ISO 3506-1
   stainless A2-70, A4-70, A4-80 (and -50), SAE J429 grades 2/5/8, ASTM A193 B7;
 - heads: ISO 4017/4014 hexagon, ISO 4762 hexagon socket, EN 1665 hexagon
   flange, ISO 10642 countersunk socket: bearing diameter d_w, head height k and
@@ -21,7 +21,7 @@ Alexander's shear-area model) and the torque the drive (hex key) carries.
 
 The catalogue keys sizes in the standards' own units (mm, inch); every public
 function takes and returns SI values (m, Pa, m², N, N·m). Lookups that miss
-raise :class:`~engine.errors.InputOutOfRange` naming the input the caller
+raise :class:`~engine.core.errors.InputOutOfRange` naming the input the caller
 should give instead.
 """
 
@@ -33,8 +33,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.errors import InputOutOfRange
 from . import threads as th
-from .errors import InputOutOfRange
 
 INCH = 0.0254
 KSI = 6.894757293168e6
@@ -361,7 +361,7 @@ def all_threads() -> list[Thread]:
     return out
 
 
-#: ISO 273 clearance holes [mm] (fine, medium, coarse) beyond the M3…M39 of engine.threads.
+#: ISO 273 clearance holes [mm] (fine, medium, coarse) beyond the M3…M39 of engine.physics.threads.
 CLEARANCE_HOLE_MM: dict[float, tuple[float, float, float]] = {
     1.6: (1.7, 1.8, 2.0),
     2.0: (2.2, 2.4, 2.6),

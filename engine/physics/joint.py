@@ -17,7 +17,7 @@ secondary sources named in each docstring:
   nomenclature), read for its formulas and run side by side in
   ``tests/validation/test_joint_compliance.py``;
 * the preload and torque relations of VDI 2230 steps R7 and R13 already in
-  :mod:`engine.preload` (reused here, not rewritten).
+  :mod:`engine.physics.preload` (reused here, not rewritten).
 
 Where the brief for this model and VDI's numbering differ: VDI 2230-1 numbers
 the alternating stress R9, the surface pressure R10, the length of engagement
@@ -34,7 +34,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import InputOutOfRange
+from ..core.errors import InputOutOfRange
 
 #: Head length factor l_SK/d of VDI 2230-1 R3 (ECSS-E-HB-32-23A Table 7-1): hexagon 0.5, socket 0.4.
 HEAD_LENGTH_FACTOR: dict[str, float] = {"hex": 0.5, "socket": 0.4}
@@ -814,7 +814,7 @@ def tightening_torque(
         M_A = F_M k_G + F_M k_K + M_{\ddot u},\qquad
         k_G = 0.16 P + 0.58\,d_2\,\mu_G,\quad k_K = \mu_K \frac{D_{Km}}{2}
 
-    with k_G, k_K from :func:`engine.preload.tightening_torque_per_preload`
+    with k_G, k_K from :func:`engine.physics.preload.tightening_torque_per_preload`
     (``"vdi2230"``: the coefficients the preload models use too).
 
     Parameters

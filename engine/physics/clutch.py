@@ -66,7 +66,7 @@ paper equates with the spring's setting Δ) and then rolls over the rim, rising
 compressed by the lift, so the torque follows :func:`torque_against_lift` and
 peaks where the spring force and the contact angle balance (at the rim for a
 helical spring; at the start for disc springs set past their force maximum,
-:mod:`engine.springs`). In the paper's case the spring reaches c(Δ + Δ) at the
+:mod:`engine.physics.springs`). In the paper's case the spring reaches c(Δ + Δ) at the
 peak: its stress doubles, 45.4 → 90.8 MPa. An inclined driving flank α′ ([001,
 fig. 6]) adds its own push (:func:`combined_push_factor`); the margin to
 self-locking and dT/df (:func:`friction_sensitivity`); the residual torque on
@@ -300,7 +300,7 @@ def spring_rate(
     >>> round(spring_rate(8e10, 0.004, 0.045, 5), 3)
     5618.656
     """
-    # the same relation as EN 13906-1's rate: one implementation, in engine.springs
+    # the same relation as EN 13906-1's rate: one implementation, in engine.physics.springs
     return springs.helical_rate(shear_modulus, wire_diameter, mean_diameter, active_coils)
 
 

@@ -69,7 +69,7 @@ def equations_of(fn: Callable[..., Any]) -> tuple[dict[str, Any], ...]:
     equations before the next step's); functions whose docstring has no
     ``.. math::`` block (drivers, helpers) are followed but not listed.
 
-    >>> from engine import preload
+    >>> from engine.physics import preload
     >>> eqs = equations_of(preload.thread_torque)
     >>> [e["function"] for e in eqs]
     ['thread_torque', 'lead_angle', 'thread_friction_angle']

@@ -60,8 +60,8 @@ from typing import Any
 
 import numpy as np
 
-from .errors import BudgetExceeded, InfeasibleDesign, InputOutOfRange, SolverFailed
-from .numerics import StepCost, jit, sqrt
+from ..core.errors import BudgetExceeded, InfeasibleDesign, InputOutOfRange, SolverFailed
+from ..numerics.ode import StepCost, jit, sqrt
 
 __all__ = [
     "ISO5393_ANGLE",
@@ -100,7 +100,7 @@ _SERIES_CAP = 400
 #: time, not steps); the prior is a slow machine's figure (~0.3 µs measured on the 2-core
 #: CI box, about 3× that).
 _COST = StepCost()
-#: Steps the blow kernel may take before ``deadline`` (:func:`engine.numerics.step_budget`
+#: Steps the blow kernel may take before ``deadline`` (:func:`engine.numerics.ode.step_budget`
 #: at :data:`_COST`), or ``max_steps`` without one.
 step_budget = _COST.budget
 
@@ -1244,7 +1244,7 @@ def blow_series(
         Keep the torque against time of the first blow (simulation)
     max_steps : int
         Step budget of all blows together without a deadline, [-]; with one, the step
-        budget is what the time left affords (:func:`engine.numerics.step_budget`)
+        budget is what the time left affords (:func:`engine.numerics.ode.step_budget`)
     deadline : float or None
         ``time.perf_counter()`` value after which the run stops, [s]
 

@@ -10,7 +10,7 @@ millimetres (the standards' own tables); the public functions take and
 return SI values (m, Pa, m²).
 
 Every value here can be overridden by the caller; the lookups raise
-:class:`~engine.errors.InputOutOfRange` naming the input the caller should
+:class:`~engine.core.errors.InputOutOfRange` naming the input the caller should
 give when the standard has no value for the size asked.
 """
 
@@ -20,7 +20,7 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from .errors import InputOutOfRange
+from ..core.errors import InputOutOfRange
 
 #: ISO 261 coarse pitch [mm] per nominal diameter [mm], M3…M39 (M7 left out:
 #: second choice, without an ISO 4017 head or a common clearance-hole row).

@@ -1,6 +1,6 @@
 """Fasteners as bought, for the preload models: designation inputs and the bought-part checks.
 
-The catalogue and the relations live in :mod:`engine.fasteners`; this module
+The catalogue and the relations live in :mod:`engine.physics.fasteners`; this module
 declares the inputs that name a catalogue part (``thread``, ``grade``,
 ``head_standard``, ``nut``, ``washer``, materials), resolves them into the numbers the
 preload models need, and adds the checks of a bought fastener: surface
@@ -16,10 +16,10 @@ from typing import Any
 
 import numpy as np
 
-from .. import fasteners as fa
-from ..errors import InputOutOfRange
-from ..spec import Check, Output, Param
-from ._common import positive, quantity
+from ..core.errors import InputOutOfRange
+from ..core.params import positive, quantity
+from ..core.spec import Check, Output, Param
+from ..physics import fasteners as fa
 
 SOURCE_TEXT = (
     "ISO 261, ISO 262, ISO 3506-1, SAE J429, ASTM A193, ASME B1.1, ASME B18.2.1, "

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from ..spec import Param
+from .spec import Param
 
 #: One degree, [rad].
 DEG = math.pi / 180.0

@@ -115,7 +115,7 @@ per shortest natural period of the mode, with every event (a level of a
 position, checked on the cubic Hermite interpolant for end crossings *and*
 interior grazes; or a sign change of a velocity or contact reaction) located
 by bisection on the cubic and polished by Newton on a real RK4 sub-step. The
-closed forms of :mod:`engine.rare_impact` are the cheap rung; their error
+closed forms of :mod:`engine.physics.rare_impact` are the cheap rung; their error
 against this simulation is measured in the tests over a grid of designs.
 """
 
@@ -129,8 +129,8 @@ from typing import Any
 
 import numpy as np
 
-from .errors import BudgetExceeded, EngineError, InfeasibleDesign, SolverFailed
-from .numerics import (
+from ..core.errors import BudgetExceeded, EngineError, InfeasibleDesign, SolverFailed
+from ..numerics.ode import (
     StepCost,
     all_true,
     any_true,
@@ -148,7 +148,7 @@ from .numerics import (
     tan,
     where,
 )
-from .rare_impact import relock_time, rotating_inertia, striker_oscillation
+from ..physics.rare_impact import relock_time, rotating_inertia, striker_oscillation
 
 __all__ = [
     "GEOMETRIES",
@@ -179,14 +179,14 @@ _SERIES_POINTS = 240
 #: time, not steps); the prior is a slow machine's figure (~0.2 µs measured on the 2-core
 #: CI box, 5× that).
 _COST = StepCost()
-#: Steps the cycle kernel may take before ``deadline`` (:func:`engine.numerics.step_budget`
+#: Steps the cycle kernel may take before ``deadline`` (:func:`engine.numerics.ode.step_budget`
 #: at :data:`_COST`), or ``max_steps`` without one.
 step_budget = _COST.budget
 
 
 # ---------------------------------------------------------------------------
 # One design or many: every closed-form step below takes the inputs as floats or as
-# numpy arrays of one shape (engine.numerics: float64 numbers, math for one design,
+# numpy arrays of one shape (engine.numerics.ode: float64 numbers, math for one design,
 # numpy for many); a single run and a sweep run the same lines.
 # ---------------------------------------------------------------------------
 
@@ -197,7 +197,7 @@ def _one_or_many(v: Any) -> Any:
 
 
 def _numbers(x: Mapping[str, Any]) -> dict[str, Any]:
-    """The inputs as the steps take them (:func:`engine.numerics.as_numbers`)."""
+    """The inputs as the steps take them (:func:`engine.numerics.ode.as_numbers`)."""
     return as_numbers(x)
 
 
@@ -1318,7 +1318,7 @@ def simulate_cycle(
         ``time.perf_counter()`` value after which the run stops (BudgetExceeded), [s]
     max_steps : int
         Largest number of RK4 steps without a deadline, [-]; with one, the step budget
-        is what the time left affords (:func:`engine.numerics.step_budget`)
+        is what the time left affords (:func:`engine.numerics.ode.step_budget`)
     steps_per_period : int
         RK4 steps per shortest natural period of each mode, [-]
 

@@ -7,7 +7,7 @@ clamp force. A :class:`Study` names the model, the fixed inputs, the inputs
 that vary and how, and what to collect; this module turns it into points
 (:func:`plan`), evaluates the points in chunks (:func:`evaluate_chunk`, a
 pure function of its arguments, so any executor can run it: in-process or
-on Dask workers, see :mod:`engine.study_exec`), and summarises them
+on Dask workers, see :mod:`engine.studies.execute`), and summarises them
 (:func:`summarize`): quantiles, mean, standard deviation and histogram per
 output, the fraction of designs passing each check, grid maps with the
 feasible region, the designs behind the extremes, and the sensitivity of
@@ -36,10 +36,10 @@ import numpy as np
 from scipy import stats
 from scipy.stats import qmc
 
-from .errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange
-from .points import at, auto_index, in_range, rung_estimates, take, vector
-from .runner import DEFAULT_TOLERANCE, choose_rung, run
-from .spec import ModelSpec, Param
+from ..core.errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange
+from ..core.points import at, auto_index, in_range, rung_estimates, take, vector
+from ..core.runner import DEFAULT_TOLERANCE, choose_rung, run
+from ..core.spec import ModelSpec, Param
 
 METHODS = ("grid", "monte_carlo", "lhs", "sobol")
 DISTRIBUTIONS = ("uniform", "normal", "triangular")
@@ -435,7 +435,7 @@ def evaluate_chunk(
     inside a point's simulation; the caller then discards it.
     """
     if isinstance(spec, str):
-        from .models import get_model
+        from ..models import get_model
 
         spec = get_model(spec)
     start = time.perf_counter()

@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 from scipy import integrate
 
-from .errors import InfeasibleDesign, SolverFailed
+from ..core.errors import InfeasibleDesign, SolverFailed
 
 __all__ = [
     "MotorCurve",

@@ -1,6 +1,6 @@
 """Evaluate many points of one model at once: per-point rung choice on arrays, grouped array paths.
 
-Both :func:`engine.sweep` (one input varied) and :func:`engine.study.evaluate_chunk`
+Both :func:`engine.sweep` (one input varied) and :func:`engine.studies.plan.evaluate_chunk`
 (several inputs sampled) hand a dict of inputs whose varied entries are equal-length
 arrays to the helpers here. They choose ``auto``'s rung per point from the rungs'
 error estimates called on the arrays, group the points by rung and run each group
@@ -94,7 +94,7 @@ def _estimate_at(
 def auto_index(
     spec: ModelSpec, estimates: Mapping[int, np.ndarray | None], n: int, tol: float
 ) -> np.ndarray:
-    """``auto``'s rung index per point, as :func:`engine.runner.choose_rung` picks it.
+    """``auto``'s rung index per point, as :func:`engine.core.runner.choose_rung` picks it.
 
     The cheapest rung whose estimate is within ``tol``; else the most accurate rung
     with an estimate; else the last rung.

@@ -1,7 +1,8 @@
 """The ball clutch as built: its spring (helical or disc), lift characteristic and checks.
 
 Shared by ``clutch.ball`` and ``clutch.ball_setting`` (engine/models/clutch.py). The
-equations are in :mod:`engine.clutch` and :mod:`engine.springs`; this module declares
+equations are in :mod:`engine.physics.clutch` and :mod:`engine.physics.springs`; this module
+declares
 the extra inputs and outputs, evaluates the torque-against-lift characteristic
 (broadcasting over a swept input) and writes the checks and notes.
 
@@ -20,9 +21,12 @@ from typing import Any
 import numpy as np
 from scipy.optimize import brentq
 
-from .. import points
-from .. import springs as sp
-from ..clutch import (
+from ..core import points
+from ..core.errors import InputOutOfRange
+from ..core.params import DEG, count, friction_coefficient, length, positive
+from ..core.spec import Check, Output, Param, Plot, Window
+from ..physics import springs as sp
+from ..physics.clutch import (
     RECOMMENDED_SERVICE_FACTOR,
     SELF_LOCKING_MARGIN,
     friction_sensitivity,
@@ -32,12 +36,9 @@ from ..clutch import (
     torque_against_lift,
     torque_sharing,
 )
-from ..clutch import acceleration_torque as cl_acceleration_torque
-from ..clutch import rated_torque as cl_rated_torque
-from ..clutch import required_slip_torque as cl_required_slip_torque
-from ..errors import InputOutOfRange
-from ..spec import Check, Output, Param, Plot, Window
-from ._common import DEG, count, friction_coefficient, length, positive
+from ..physics.clutch import acceleration_torque as cl_acceleration_torque
+from ..physics.clutch import rated_torque as cl_rated_torque
+from ..physics.clutch import required_slip_torque as cl_required_slip_torque
 
 #: Points on the flank (and as many over the rim) of the characteristic.
 POINTS = 41

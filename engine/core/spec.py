@@ -436,7 +436,7 @@ class ModelSpec:
 
     @property
     def sources(self) -> tuple[str, ...]:
-        """Ids of the sources (:mod:`engine.sources`) that :attr:`source` cites."""
+        """Ids of the sources (:mod:`engine.core.sources`) that :attr:`source` cites."""
         return tuple(sorted(cited_ids(self.source)))
 
     def param(self, name: str) -> Param:

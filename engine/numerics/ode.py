@@ -1,7 +1,7 @@
 r"""The compiled-ODE kit the fixed-step kernels share: compilation, event location, budgets.
 
-The striker's whole cycle (:mod:`engine.rare_impact_cycle`) and the blow
-(:mod:`engine.blow`) each integrate their own right-hand sides with a fixed-step
+The striker's whole cycle (:mod:`engine.procedures.striker_cycle`) and the blow
+(:mod:`engine.physics.blow`) each integrate their own right-hand sides with a fixed-step
 RK4 compiled by numba; what is not model-specific is here, once:
 
 * :func:`jit`: compile with numba (cached on disk, GIL released), the plain

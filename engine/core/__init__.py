@@ -1,0 +1,1 @@
+"""How a model is declared (spec), run (runner), swept (points) and cited (sources, equations)."""

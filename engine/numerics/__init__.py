@@ -1,0 +1,1 @@
+"""The numerical kit the simulations share: compiled RK4 steps, event location, step budgets."""

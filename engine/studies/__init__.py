@@ -1,0 +1,1 @@
+"""Design studies: plan the points, evaluate them in chunks (in process or on Dask), summarise."""
