@@ -47,11 +47,15 @@ check: test
 # included; property tests at a few examples each (the "fast" hypothesis profile,
 # tests/conftest.py); two processes (pytest-xdist). Under a minute on two idle cores.
 # The fuzz module is not even collected: building its cases from the schema costs ~10 s.
+# The tests that time the service's lanes against an idle run go last, in one process,
+# so that the other worker's load does not count as theirs.
 # CI runs `make test`: everything, in one process, at the full hypothesis budgets.
 FAST := not slow and not browser and not install and not fuzz
+SERIAL := tests/service/test_lanes.py tests/service/test_isolation.py
 test-fast: $(VENV)/.installed-dev
 	PY=$(BIN)/python scripts/check -q -m "$(FAST)" --hypothesis-profile=fast -n 2 \
-		--ignore=tests/service/test_fuzz.py
+		--ignore=tests/service/test_fuzz.py $(SERIAL:%=--ignore=%)
+	$(BIN)/python -m pytest -q -m "$(FAST)" --hypothesis-profile=fast $(SERIAL)
 
 # Mutation testing of the physics modules, each against its own tests (scripts/mutate.py):
 # a seeded sample within a time budget; prints the share killed and the survivors. Not in CI.
