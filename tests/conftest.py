@@ -11,9 +11,31 @@ from __future__ import annotations
 
 import pytest
 from fastapi.testclient import TestClient
+from hypothesis import settings
 
 from service import create_app
 from tests.toys import TOY
+
+# Hypothesis budgets. `make test` (CI) runs every property test at the budget its file sets;
+# `make test-fast` passes --hypothesis-profile=fast, which caps every property test at a few
+# examples, the explicit @settings(max_examples=…) in the files included (below).
+settings.register_profile("fast", max_examples=8)
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    """Under the ``fast`` hypothesis profile, size every property test's budget to the profile.
+
+    A test's own ``@settings(max_examples=…)`` outranks any profile, so the cap is applied
+    here, once, to the settings each ``@given`` test reads when it runs.
+    """
+    if config.getoption("hypothesis_profile", None) != "fast":
+        return
+    cap = settings.get_profile("fast").max_examples
+    for item in items:
+        fn = getattr(item, "obj", None)
+        own = getattr(fn, "_hypothesis_internal_use_settings", None)
+        if own is not None and own.max_examples > cap:
+            fn._hypothesis_internal_use_settings = settings(own, max_examples=cap)  # type: ignore[union-attr]
 
 
 @pytest.fixture(scope="session")

@@ -218,11 +218,19 @@ def _is_value(node: ast.AST) -> bool:
     return not isinstance(node, ast.JoinedStr)
 
 
+def _bare(node: ast.AST) -> str:
+    """An operand with ``pytest.approx(...)`` taken off, as text to compare."""
+    if isinstance(node, ast.Call) and _call_name(node) == "approx" and node.args:
+        node = node.args[0]
+    return ast.dump(node)
+
+
 def _compared(operands: list[ast.expr]) -> set[str]:
-    """Keys read in one operand while another operand is a value."""
+    """Keys read in one operand while another operand is a value (not the same expression)."""
     keys: set[str] = set()
     for i, op in enumerate(operands):
-        if any(_is_value(o) for j, o in enumerate(operands) if j != i):
+        others = [o for j, o in enumerate(operands) if j != i]
+        if any(_is_value(o) and _bare(o) != _bare(op) for o in others):
             keys |= _keys(op)
     return keys
 
@@ -398,6 +406,7 @@ def test_the_scan_sees_the_assertions_it_should() -> None:
         'assert math.isfinite(r["grip"])',
         'assert r["grip"]',
         'x = r["grip"] == 0.03',
+        'assert r["grip"] == pytest.approx(r["grip"])',
     ):
         assert scan(m + "def t():\n    " + body) == set(), body
     assert scan('def t():\n    assert r["grip"] == 0.03') == set()  # names no model
