@@ -7,6 +7,8 @@
 // about a model comes from the catalogue entry, so a newly registered model
 // appears here without any change to this file.
 
+import { decimalSeparator, echoNumber, isPlain, localNumber, parseNum, readNumber, readQuantity, setDecimalSeparator } from "./numbers.js";
+
 const API = "api/v1";
 const uPlot = window.uPlot;
 
@@ -113,18 +115,21 @@ function group(s) {
   return m[1] + m[2].replace(/\B(?=(\d{3})+(?!\d))/g, GROUP) + (m[3] || "");
 }
 
-/** A typed number: "12.5", or "12,5" with a decimal comma (read as a point); NaN otherwise. */
-function parseNum(raw) {
-  const s = String(raw ?? "").trim();
-  if (s === "") return NaN;
-  if (/^[+-]?\d*,\d+(e[+-]?\d+)?$/i.test(s)) return Number(s.replace(",", "."));
-  return Number(s);
+/** A number for a text field, in the user's decimal separator (see fieldNumber). */
+function fieldText(x, sig = 10) {
+  return localNumber(fieldNumber(x, sig));
 }
 
-/** The typed text with a decimal comma turned into a point (what the API parses). */
-function dotted(raw) {
-  const s = String(raw ?? "").trim();
-  return /^[+-]?\d*,\d+(e[+-]?\d+)?$/i.test(s) ? s.replace(",", ".") : s;
+/**
+ * A number from a link or a design file: canonical (a point, no grouping), or, in links
+ * made before the decimal-separator setting, "12,5" with a decimal comma. Shown in the
+ * user's separator; text that is no number is returned as it is.
+ */
+function linkNumber(raw) {
+  const s = String(raw).trim();
+  const legacy = /^[+-]?\d*,\d+(e[+-]?\d+)?$/i.test(s) ? s.replace(",", ".") : s;
+  const r = readNumber(legacy, ".");
+  return r.ok ? localNumber(r.canonical) : s;
 }
 
 /** Units the metric/imperial switch treats as imperial (offered after the metric ones in units.json). */
@@ -188,6 +193,9 @@ async function init() {
   const system = document.getElementById("unit-system");
   system.value = state.imperial ? "imperial" : "metric";
   system.addEventListener("change", () => switchSystem(system.value === "imperial"));
+  const decimal = document.getElementById("decimal-sep");
+  decimal.value = decimalSeparator();
+  decimal.addEventListener("change", () => switchDecimal(decimal.value));
   renderNav();
   window.addEventListener("hashchange", () => route());
   await route();
@@ -357,7 +365,8 @@ function rungTable(m) {
 function fieldRow(p) {
   const id = "in-" + p.name;
   let input, unitSel = null;
-  const described = ["desc-" + p.name, "hint-" + p.name, "err-" + p.name].join(" ");
+  const numeric = p.kind === "float" || p.kind === "int";
+  const described = ["desc-" + p.name, "hint-" + p.name, "err-" + p.name, ...(numeric ? ["read-" + p.name] : [])].join(" ");
   if (p.kind === "choice") {
     input = el("select", { id, name: p.name, "aria-describedby": described },
       ...(p.required ? [] : [el("option", { value: "" }, "—")]),
@@ -385,7 +394,9 @@ function fieldRow(p) {
   const label = el("label", { for: id, title: p.description },
     p.label, p.symbol ? el("span", { class: "symbol" }, ` ${p.symbol}`) : null, p.required ? el("span", { class: "req", title: "required" }, " *") : null);
   return el("div", { class: "field", "data-field": p.name },
-    label, el("div", { class: "control" }, input, unitSel),
+    label, el("div", { class: "control" }, input, unitSel,
+      // the value read, beside what was typed when the two differ ("2,000" → "= 2000 lbf")
+      numeric ? el("output", { class: "read-as", id: "read-" + p.name, for: id }) : null),
     el("div", { class: "desc", id: "desc-" + p.name, title: p.description }, p.description || ""),
     el("div", { class: "hint", id: "hint-" + p.name }, hintText(p)),
     el("div", { class: "error", id: "err-" + p.name, role: "alert" }));
@@ -406,6 +417,11 @@ function inUnit(si, unit) {
   return si / unit.factor;
 }
 
+/** A limit or default in a hint, in the user's decimal separator. */
+function num(x) {
+  return localNumber(short(x));
+}
+
 /** "default 100 rpm · allowed > 0 and ≤ 1e4 mm · recommended …", in the unit chosen. */
 function hintText(p) {
   const parts = [];
@@ -417,18 +433,18 @@ function hintText(p) {
   }
   const u = document.getElementById("unit-" + p.name) ? currentUnit(p) : unitChoices(p.unit, p.display_unit)[0];
   const sp = u.label ? " " + u.label : "";
-  if (p.default !== null && p.default !== undefined) parts.push(`default ${short(inUnit(p.default, u))}${sp}`);
+  if (p.default !== null && p.default !== undefined) parts.push(`default ${num(inUnit(p.default, u))}${sp}`);
   else if (!p.required) parts.push("optional");
   parts.push("allowed: " + rangeText(p, u));
-  if (p.recommended) parts.push(`recommended ${short(inUnit(p.recommended[0], u))}…${short(inUnit(p.recommended[1], u))}${sp}`);
+  if (p.recommended) parts.push(`recommended ${num(inUnit(p.recommended[0], u))}…${num(inUnit(p.recommended[1], u))}${sp}`);
   return parts.join(" · ");
 }
 
 function rangeText(p, u) {
   const sp = u.label ? " " + u.label : "";
   const parts = [];
-  if (p.minimum !== null && p.minimum !== undefined) parts.push(`${p.exclusive_minimum ? ">" : "≥"} ${short(inUnit(p.minimum, u))}${sp}`);
-  if (p.maximum !== null && p.maximum !== undefined) parts.push(`${p.exclusive_maximum ? "<" : "≤"} ${short(inUnit(p.maximum, u))}${sp}`);
+  if (p.minimum !== null && p.minimum !== undefined) parts.push(`${p.exclusive_minimum ? ">" : "≥"} ${num(inUnit(p.minimum, u))}${sp}`);
+  if (p.maximum !== null && p.maximum !== undefined) parts.push(`${p.exclusive_maximum ? "<" : "≤"} ${num(inUnit(p.maximum, u))}${sp}`);
   const what = p.kind === "int" ? "an integer" : "a number";
   return parts.length ? `${what} ${parts.join(" and ")}` : `any ${p.kind === "int" ? "integer" : "finite number"}`;
 }
@@ -439,8 +455,8 @@ function changeUnit(p, input, sel) {
   const v = input.value.trim();
   if (!touched(input) && input.dataset.si !== undefined) {
     // still the loaded value: convert from its exact SI value, and keep it untouched
-    input.value = input.dataset.shown = fieldNumber(Number(input.dataset.si) / next, 7);
-  } else if (v !== "" && Number.isFinite(parseNum(v))) input.value = fieldNumber((parseNum(v) * prev) / next);
+    input.value = input.dataset.shown = fieldText(Number(input.dataset.si) / next, 7);
+  } else if (v !== "" && Number.isFinite(parseNum(v))) input.value = fieldText((parseNum(v) * prev) / next);
   sel.dataset.prev = sel.value;
   document.getElementById("hint-" + p.name).textContent = hintText(p);
   checkField(p);
@@ -465,7 +481,7 @@ function fillForm(m, key) {
       input.value = v; // a unit string ("45 mm"): sent as written
       delete input.dataset.si;
     } else {
-      input.value = v === null || v === undefined ? "" : fieldNumber(inUnit(v, currentUnit(p)), 7);
+      input.value = v === null || v === undefined ? "" : fieldText(inUnit(v, currentUnit(p)), 7);
       if (v === null || v === undefined) delete input.dataset.si;
       else input.dataset.si = String(v);
     }
@@ -497,11 +513,12 @@ function applyParams(m, params) {
     if (match && sel && sel.tagName === "SELECT" && match[2]) {
       const opt = [...sel.options].find((o) => norm(o.value) === norm(match[2]) || norm(o.textContent) === norm(match[2]));
       if (opt) {
-        sel.value = opt.value; sel.dataset.prev = opt.value; input.value = match[1];
-        if (input.dataset.si !== undefined) input.dataset.shown = fieldNumber(Number(input.dataset.si) / Number(opt.dataset.factor), 7);
+        sel.value = opt.value; sel.dataset.prev = opt.value; input.value = linkNumber(match[1]);
+        if (input.dataset.si !== undefined) input.dataset.shown = fieldText(Number(input.dataset.si) / Number(opt.dataset.factor), 7);
       }
       else input.value = raw; // the API will parse it, or say why not
-    } else input.value = match && (!match[2] || sel?.dataset.api === match[2]) ? match[1] : raw;
+    } else if (match && (!match[2] || sel?.dataset.api === match[2])) input.value = linkNumber(match[1]);
+    else input.value = match && match[2] ? `${linkNumber(match[1])} ${match[2]}` : raw;
     document.getElementById("hint-" + p.name).textContent = hintText(p);
   }
   if (params.has("fidelity")) document.getElementById("fidelity").value = params.get("fidelity");
@@ -549,17 +566,22 @@ function setError(name, msg) {
 function checkField(p) {
   const input = document.getElementById("in-" + p.name);
   const raw = input.value.trim();
-  let msg = "";
+  const q = readQuantity(raw);
+  const u = currentUnit(p);
+  let msg = "", echo = "", format = false;
   if (raw === "") {
     if (p.required) msg = `${p.label} is required`;
-  } else if (!Number.isFinite(parseNum(raw))) {
+  } else if (!q.ok) {
+    format = true;
+    msg = q.text
+      ? `${p.label}: “${raw}” is not a number (write ${localNumber("12.5")}${u.label ? ", in " + u.label : ""})`
+      : `${p.label}: ${q.error}`;
+  } else if (q.unit) {
     // a typed unit string ("45 mm") is left to the server, which parses units exactly
-    if (!/^[+-]?(\d+[.,]?\d*|[.,]\d+)(e[+-]?\d+)?\s*\S+/i.test(raw)) {
-      msg = `${p.label}: “${raw}” is not a number (write 12.5 or 12,5${currentUnit(p).label ? ", in " + currentUnit(p).label : ""})`;
-    }
+    if (!isPlain(raw.slice(0, raw.length - q.unit.length))) echo = `= ${echoNumber(q.value)} ${q.unit}`;
   } else {
-    const u = currentUnit(p);
-    const si = parseNum(raw) * u.factor;
+    if (!isPlain(raw)) echo = `= ${echoNumber(q.value)}${u.label ? " " + u.label : ""}`;
+    const si = q.value * u.factor;
     const lo = p.minimum, hi = p.maximum;
     const bad = (lo !== null && lo !== undefined && (p.exclusive_minimum ? si <= lo : si < lo))
       || (hi !== null && hi !== undefined && (p.exclusive_maximum ? si >= hi : si > hi))
@@ -567,6 +589,10 @@ function checkField(p) {
     if (bad) msg = `${p.label} = ${raw}${u.label ? " " + u.label : ""} is not allowed: must be ${rangeText(p, u)}`;
   }
   setError(p.name, msg);
+  const read = document.getElementById("read-" + p.name);
+  if (read) read.textContent = msg ? "" : echo;
+  const slot = document.getElementById("err-" + p.name);
+  if (slot) slot.dataset.format = format ? "1" : "";
   return msg;
 }
 
@@ -583,9 +609,11 @@ function requestBody(m, { skip = null } = {}) {
     if (raw === "") continue;
     if (p.kind === "choice" || p.kind === "text") { body[p.name] = raw; continue; }
     const u = currentUnit(p);
+    const q = readQuantity(raw);
     if (!touched(input) && input.dataset.si !== undefined) body[p.name] = Number(input.dataset.si);
-    else if (Number.isFinite(parseNum(raw))) body[p.name] = u.api ? `${dotted(raw)} ${u.api}` : parseNum(raw);
-    else body[p.name] = raw.replace(/^([+-]?\d*),(\d)/, "$1.$2");
+    else if (q.ok && !q.unit) body[p.name] = u.api ? `${q.canonical} ${u.api}` : q.value;
+    else if (q.ok) body[p.name] = `${q.canonical} ${q.unit}`; // a unit typed with the number
+    else body[p.name] = raw; // the form refuses it before sending; the server would too
   }
   return body;
 }
@@ -594,7 +622,7 @@ function fidelityBody() {
   const fidelity = document.getElementById("fidelity").value;
   const out = { fidelity };
   if (fidelity === "auto") {
-    const t = Number(document.getElementById("tolerance").value);
+    const t = parseNum(document.getElementById("tolerance").value);
     setError("tolerance", Number.isFinite(t) && t > 0 && t < 100 ? "" : "tolerance must be between 0 and 100 %");
     if (Number.isFinite(t) && t > 0 && t < 100) out.tolerance = t / 100;
   }
@@ -639,6 +667,19 @@ async function compute() {
   if (!m) return;
   for (const p of m.inputs) if (p.kind === "float" || p.kind === "int") checkField(p);
   const body = { ...requestBody(m), ...fidelityBody() };
+  // a number the form cannot read under the decimal-separator setting is never sent
+  const unread = m.inputs.filter((p) => document.getElementById("err-" + p.name)?.dataset.format === "1");
+  if (unread.length) {
+    state.lastRequest = body;
+    const names = unread.map((p) => p.label).join(", ");
+    document.getElementById("error-box").replaceChildren(el("p", { class: "error" },
+      `Not computed: ${names} cannot be read as ${unread.length > 1 ? "numbers" : "a number"}; see the marked field${unread.length > 1 ? "s" : ""}.`));
+    const first = document.getElementById("in-" + unread[0].name);
+    first.scrollIntoView({ block: "center" });
+    first.focus({ preventScroll: true });
+    document.body.dataset.result = "error";
+    return;
+  }
   if (m.outputs.some((o) => o.series)) body.series = true; // the form plots them; the API sends none unasked
   const snap = snapshot(m);
   state.lastRequest = body;
@@ -700,10 +741,11 @@ function formInputs(m) {
     const raw = input.value.trim();
     if (p.kind === "bool") out[p.name] = String(input.checked);
     else if (raw === "") { if (touched(input)) out[p.name] = ""; }
-    else if (p.kind === "choice" || p.kind === "text" || !Number.isFinite(parseNum(raw))) out[p.name] = raw;
+    else if (p.kind === "choice" || p.kind === "text" || !readQuantity(raw).ok) out[p.name] = raw;
     else {
-      const u = currentUnit(p);
-      out[p.name] = u.api ? `${raw} ${u.api}` : raw;
+      // canonical numbers (a point, no grouping): the link means the same on every machine
+      const q = readQuantity(raw), u = currentUnit(p);
+      out[p.name] = q.unit ? `${q.canonical} ${q.unit}` : u.api ? `${q.canonical} ${u.api}` : q.canonical;
     }
   }
   return out;
@@ -1146,9 +1188,19 @@ function sweepPanel(m) {
   const unit = el("select", { id: "sweep-unit", "aria-label": "unit of the swept range" });
   unit.addEventListener("change", () => {
     const prev = Number(unit.dataset.factor), next = Number(unit.selectedOptions[0].dataset.factor);
-    for (const f of [start, stop]) if (Number.isFinite(parseNum(f.value))) f.value = fieldNumber((parseNum(f.value) * prev) / next);
+    for (const f of [start, stop]) if (Number.isFinite(parseNum(f.value))) f.value = fieldText((parseNum(f.value) * prev) / next);
     unit.dataset.factor = String(next);
   });
+  const read = el("output", { id: "sweep-read", class: "read-as", for: "sweep-start sweep-stop" });
+  const echo = () => {
+    const qs = [start, stop].map((f) => readQuantity(f.value));
+    const bad = qs.find((q) => !q.ok && !q.empty);
+    const differs = [start, stop].some((f, i) => qs[i].ok && !isPlain(qs[i].unit ? f.value.trim().slice(0, -qs[i].unit.length) : f.value));
+    read.textContent = bad ? bad.error || "a number is needed"
+      : differs && qs.every((q) => q.ok) ? `= ${echoNumber(qs[0].value)} … ${echoNumber(qs[1].value)} ${qs[0].unit || sweepUnit().label}` : "";
+    read.classList.toggle("error", Boolean(bad));
+  };
+  for (const f of [start, stop]) f.addEventListener("input", echo);
   const num = el("input", { id: "sweep-num", size: 4, value: "40", inputmode: "numeric" });
   const scale = el("select", { id: "sweep-scale", "aria-label": "scale of the swept input" }, el("option", { value: "linear" }, "linear"), el("option", { value: "log" }, "log"));
   const axes = el("select", { id: "sweep-axes", "aria-label": "axes of several outputs" },
@@ -1160,7 +1212,7 @@ function sweepPanel(m) {
     el("div", { class: "control sweep-controls" },
       el("span", {}, el("label", { for: "sweep-output" }, "plot "), output), more,
       el("span", {}, el("label", { for: "sweep-vary" }, " against "), vary),
-      el("span", {}, el("label", { for: "sweep-start" }, " from "), start), el("span", {}, el("label", { for: "sweep-stop" }, " to "), stop, " ", unit),
+      el("span", {}, el("label", { for: "sweep-start" }, " from "), start), el("span", {}, el("label", { for: "sweep-stop" }, " to "), stop, " ", unit), read,
       el("span", {}, el("label", { for: "sweep-num" }, " points "), num), scale, axes,
       el("button", { type: "button", id: "sweep-run", onclick: () => runSweep(m) }, "Sweep")),
     el("div", { class: "error", id: "sweep-error", role: "alert" }),
@@ -1213,8 +1265,8 @@ function sweepDefaults(m) {
   if (p.kind === "int") { lo = Math.ceil(lo); hi = Math.max(lo + 1, Math.floor(hi)); }
   if (p.kind === "int") document.getElementById("sweep-num").value = String(Math.min(hi - lo + 1, 200));
   const su = sweepUnit();
-  document.getElementById("sweep-start").value = fieldNumber(lo / su.factor);
-  document.getElementById("sweep-stop").value = fieldNumber(hi / su.factor);
+  document.getElementById("sweep-start").value = fieldText(lo / su.factor);
+  document.getElementById("sweep-stop").value = fieldText(hi / su.factor);
 }
 
 function sweepOutputs() {
@@ -1230,9 +1282,19 @@ async function runSweep(m) {
   const u = sweepUnit();
   const end = (id) => {
     const raw = document.getElementById(id).value.trim();
-    const x = parseNum(raw);
-    return u.api && Number.isFinite(x) ? `${dotted(raw)} ${u.api}` : Number.isFinite(x) ? x : raw;
+    const q = readQuantity(raw);
+    if (q.ok && q.unit) return `${q.canonical} ${q.unit}`;
+    return u.api && q.ok ? `${q.canonical} ${u.api}` : q.ok ? q.value : raw;
   };
+  const errBox = document.getElementById("sweep-error");
+  const unread = ["sweep-start", "sweep-stop"].map((id) => [id, readQuantity(document.getElementById(id).value)])
+    .filter(([, q]) => !q.ok);
+  if (unread.length) {
+    errBox.textContent = "Sweep not run: " + unread.map(([id, q]) =>
+      `${id === "sweep-start" ? "from" : "to"}: ${q.error || "a number is needed"}`).join("; ");
+    document.body.dataset.sweep = "error";
+    return;
+  }
   let num = Number(document.getElementById("sweep-num").value) || 40;
   if (p.kind === "int") {
     // an integer input is swept over whole numbers only: one point per integer
@@ -1245,7 +1307,6 @@ async function runSweep(m) {
     num,
     scale: document.getElementById("sweep-scale").value, outputs, ...fidelityBody(),
   };
-  const errBox = document.getElementById("sweep-error");
   errBox.textContent = "";
   for (const p2 of m.inputs) setError(p2.name, "");
   const seq = ++state.sweepSeq;
@@ -1615,7 +1676,7 @@ function threadPicker(m, ps) {
     } else {
       for (const [p, key] of numbers) {
         if (typeof t[key] !== "number") continue;
-        setText(p, fieldNumber(t[key] / currentUnit(p).factor, 10));
+        setText(p, fieldText(t[key] / currentUnit(p).factor, 10));
         checkField(p);
       }
     }
@@ -1661,6 +1722,37 @@ function switchSystem(imperial) {
     renderReport(m);
   }
   if (state.lastSweep?.response) plotSweep(m);
+  markStale();
+}
+
+/**
+ * The decimal separator the user reads and types: every number in a field is rewritten
+ * with the same value in the new separator (a setting never changes a value); text that
+ * could not be read before is read again under the new setting.
+ */
+function switchDecimal(sep) {
+  const old = decimalSeparator();
+  setDecimalSeparator(sep);
+  const now = decimalSeparator();
+  const m = state.model;
+  if (!m || old === now) return;
+  const rewrite = (input) => {
+    const q = readQuantity(input.value, old);
+    if (!q.ok) return;
+    const text = localNumber(q.canonical, now) + (q.unit ? " " + q.unit : "");
+    if (input.dataset.shown === input.value) input.dataset.shown = text; // still the loaded value
+    input.value = text;
+  };
+  for (const p of m.inputs) {
+    if (p.kind !== "float" && p.kind !== "int") continue;
+    rewrite(document.getElementById("in-" + p.name));
+    document.getElementById("hint-" + p.name).textContent = hintText(p);
+    checkField(p);
+  }
+  for (const id of ["tolerance", "sweep-start", "sweep-stop"]) {
+    const f = document.getElementById(id);
+    if (f) { rewrite(f); f.dispatchEvent(new Event("input")); }
+  }
   markStale();
 }
 

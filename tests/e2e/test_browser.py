@@ -750,7 +750,8 @@ def test_stale_results_are_marked_and_units_read_by_people(page, base_url):
     page.select_option("#unit-diameter", "m")
     assert page.is_hidden("#stale-note")
     page.select_option("#unit-diameter", "mm")
-    # a decimal comma is read as a point
+    # a decimal comma is read as a point once the comma is the decimal separator
+    page.select_option("#decimal-sep", ",")
     page.fill("#in-diameter", shown.replace(".", ",") if "." in shown else shown + ",5")
     assert page.inner_text("#err-diameter") == ""
     assert page.is_visible("#stale-note")
@@ -758,6 +759,7 @@ def test_stale_results_are_marked_and_units_read_by_people(page, base_url):
     assert page.is_hidden("#stale-note")
     sent = page.evaluate("window.calcState.lastRequest.diameter")
     assert "," not in sent and sent.endswith(" mm")
+    page.select_option("#decimal-sep", ".")
     # imperial: every unit changes at once, the answer does not
     page.fill("#in-diameter", shown)
     assert _submit(page) == "ok"
@@ -951,10 +953,129 @@ def test_thread_picker_sends_the_designation_or_fills_the_numbers(page, base_url
 def test_inputs_announce_their_unit_and_range(page, base_url):
     _open(page, base_url, f"m={TOY.name}")
     ids = page.get_attribute("#in-diameter", "aria-describedby").split()
-    assert ids == ["desc-diameter", "hint-diameter", "err-diameter"]
+    assert ids == ["desc-diameter", "hint-diameter", "err-diameter", "read-diameter"]
     assert "allowed" in page.inner_text(f"#{ids[1]}")
     assert page.get_attribute("#unit-diameter", "aria-label") == "diameter unit"
     # plots have a table as their text alternative
     _open(page, base_url, f"m={STRIKER.name}")
     assert _submit(page) == "ok"
     assert page.locator("#series-plots details.data-table table").count() == 3
+
+
+# ---------------------------------------------- issue 31: entry that cannot go silently wrong
+
+# (decimal separator, typed, value read or None when refused); "2,000" was read as 2 before
+READINGS = [
+    (".", "2,000", 2000.0), (".", "1,500.25", 1500.25), (".", "2 000", 2000.0),
+    (".", "2\u202f000", 2000.0), (".", "12,345,678", 12345678.0), (".", "2,5", None),
+    (".", "2,00", None), (".", "1,5e3", None), (".", "1.5e3", 1500.0), (".", "-.5", -0.5),
+    (",", "2,5", 2.5), (",", "2.000", 2000.0), (",", "2 000", 2000.0), (",", "1.234,5", 1234.5),
+    (",", "2.5", None), (",", "1,5e-3", 0.0015), (",", "2,000", 2.0), (".", "", None),
+    (".", "abc", None), (".", "1..5", None), (",", ",5", 0.5),
+]  # fmt: skip
+
+
+def test_numbers_are_read_by_the_decimal_separator_setting(page: Any, base_url: str) -> None:
+    """The page's one number reader (static/numbers.js), run in the browser as a unit test."""
+    _open(page, base_url, "")
+    got = page.evaluate(
+        """async (cases) => {
+            const n = await import('./numbers.js');
+            return cases.map(([dec, text]) => { const r = n.readNumber(text, dec);
+                                               return r.ok ? r.value : null; });
+        }""",
+        [[d, t] for d, t, _ in READINGS],
+    )
+    assert got == [v for _, _, v in READINGS]
+    quantity = page.evaluate(
+        """async () => { const n = await import('./numbers.js');
+            return [n.readQuantity('2,000 lbf', '.'), n.readQuantity('1 000 mm', ','),
+                    n.readQuantity('2,5 mm', '.').ok, n.readQuantity('M12', '.').text,
+                    n.echoNumber(12345.5, ','), n.echoNumber(2000, '.')]; }"""
+    )
+    assert quantity[0] | {} == {"ok": True, "value": 2000, "canonical": "2000", "grouped": True,
+                                "unit": "lbf"}  # fmt: skip
+    assert (quantity[1]["canonical"], quantity[1]["unit"]) == ("1000", "mm")
+    assert quantity[2:] == [False, True, "12\u202f345,5", "2000"]
+
+
+def test_imperial_2000_lbf_is_sent_as_2000_lbf_or_refused(page: Any, base_url: str) -> None:
+    """Typed "2,000" in lbf is 2,000 lbf with a decimal point, echoed beside the field;
+    "2,5" is refused at the field and not sent; with a decimal comma the reverse."""
+    name = "joint.vdi2230"
+    if name not in [s.name for s in REAL]:
+        pytest.skip(f"{name} is not registered")
+    _open(page, base_url, "")
+    page.select_option("#decimal-sep", ".")
+    page.select_option("#unit-system", "imperial")
+    _open(page, base_url, f"m={name}&ex=0")
+    page.wait_for_selector("body[data-result]")
+    assert page.inner_text("#unit-working_load option:checked") == "lbf"
+    page.fill("#in-working_load", "2,000")
+    assert page.inner_text("#read-working_load") == "= 2000 lbf"
+    assert page.inner_text("#err-working_load") == ""
+    assert _submit(page) == "ok"
+    assert page.evaluate("window.calcState.lastRequest.working_load") == "2000 lbf"
+    n_per_lbf = 4.4482216152605  # 1 lbf = 0.45359237 kg × 9.80665 m/s²
+    sent = page.evaluate("window.calcState.lastResponse.inputs.working_load")
+    assert sent == pytest.approx(2000 * n_per_lbf, rel=1e-12)
+    assert "working_load=2000+lbf" in page.url  # the link holds the canonical number
+    # a decimal comma under a decimal point: refused at the field, nothing sent
+    before = page.evaluate("window.calcState.lastResponse.inputs.working_load")
+    page.fill("#in-working_load", "2,5")
+    message = page.inner_text("#err-working_load")
+    assert "“2,5” is not a number with the decimal point" in message, message
+    assert page.inner_text("#read-working_load") == ""
+    assert _submit(page) == "error"
+    assert "cannot be read" in page.inner_text("#error-box")
+    assert page.evaluate("window.calcState.lastResponse.inputs.working_load") == before
+    # the comma as decimal separator: "2,5" is 2.5 lbf; "2.000" and "2 000" group
+    page.select_option("#decimal-sep", ",")
+    assert page.inner_text("#err-working_load") == ""
+    assert _submit(page) == "ok"
+    assert page.evaluate("window.calcState.lastRequest.working_load") == "2.5 lbf"
+    for typed in ("2.000", "2 000"):
+        page.fill("#in-working_load", typed)
+        assert page.inner_text("#read-working_load") == "= 2000 lbf"
+        assert _submit(page) == "ok"
+        assert page.evaluate("window.calcState.lastRequest.working_load") == "2000 lbf"
+    page.fill("#in-working_load", "2.5")
+    assert "decimal comma" in page.inner_text("#err-working_load")
+    # loaded numbers are shown with the comma; the setting stays for the next page
+    _open(page, base_url, f"m={name}&ex=0")
+    assert "," in page.input_value("#in-thread_diameter")
+    assert page.input_value("#decimal-sep") == ","
+    # the sweep's range is read the same way
+    page.wait_for_selector("body[data-result]")
+    page.select_option("#sweep-vary", "working_load")
+    page.fill("#sweep-start", "1.000")
+    page.fill("#sweep-stop", "2.000")
+    assert page.inner_text("#sweep-read") == "= 1000 … 2000 lbf"
+    page.fill("#sweep-num", "3")
+    page.click("#sweep-run")
+    assert _wait_sweep(page) == "ok"
+    sweep = page.evaluate("window.calcState.lastSweep.request")
+    assert (sweep["start"], sweep["stop"]) == ("1000 lbf", "2000 lbf")
+    page.fill("#sweep-stop", "2.5")
+    assert "decimal comma" in page.inner_text("#sweep-read")
+    page.evaluate("delete document.body.dataset.sweep")
+    page.click("#sweep-run")
+    assert _wait_sweep(page) == "error"
+    assert "Sweep not run" in page.inner_text("#sweep-error")
+
+
+def test_the_study_page_reads_numbers_by_the_same_setting(page: Any, base_url: str) -> None:
+    _open(page, base_url, "")
+    page.select_option("#decimal-sep", ",")
+    page.goto(f"{base_url}/study.html?model={STRIKER.name}")
+    page.wait_for_selector("#study-rows tr")
+    assert page.input_value("#decimal-sep") == ","
+    row = 'tr[data-name="mass"]'
+    page.fill(f"{row} input[data-name]", "2.000")
+    assert page.inner_text(f"{row} output.read-as") == "= 2000"
+    page.fill(f"{row} input[data-name]", "2.5")
+    assert "decimal comma" in page.inner_text(f"{row} output.read-as")
+    page.check('tr[data-name="speed"] input[type=checkbox]')
+    page.click("#study-run")
+    assert "decimal comma" in page.inner_text("#study-error")
+    assert page.is_enabled("#study-run")  # nothing was submitted
