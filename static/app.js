@@ -320,20 +320,22 @@ function showModel(m, params = new URLSearchParams()) {
     form.append(el("fieldset", {}, el("legend", {}, g), picker, ...ps.map(fieldRow)));
   }
   form.append(fidelityRow(m));
-  const examples = el("select", { id: "example", "aria-label": "load a worked example" },
-    el("option", { value: "" }, "Load…"),
-    el("option", { value: "defaults" }, "source defaults"),
+  // a new design starts from the model's declared defaults; a worked example is one choice away
+  const examples = el("select", { id: "example", "aria-describedby": "start-hint" },
+    el("option", { value: "defaults" }, "new design: the model's defaults"),
     ...m.examples.map((_, i) => el("option", { value: String(i) }, `example ${i + 1}${i === 0 ? " (the model's reference case)" : ""}`)));
-  examples.addEventListener("change", () => {
-    if (examples.value !== "") fillForm(m, examples.value);
-    examples.value = "";
-  });
+  examples.addEventListener("change", () => fillForm(m, examples.value));
+  const required = m.inputs.filter((p) => p.required && (p.default === null || p.default === undefined));
+  form.prepend(el("div", { class: "start" },
+    el("label", { for: "example" }, "Start from "), examples,
+    el("span", { class: "hint", id: "start-hint" }, "The defaults are the model's own: optional inputs empty, loads as declared",
+      required.length ? `; to fill in: ${required.map((p) => p.label).join(", ")}` : "", ".")));
   const openOne = el("input", { type: "file", id: "open-design", accept: ".json,application/json", class: "file" });
   openOne.addEventListener("change", () => openDesign(openOne));
   const openMany = el("input", { type: "file", id: "compare-designs", accept: ".json,application/json", multiple: true, class: "file" });
   openMany.addEventListener("change", () => compareDesigns(m, openMany));
   form.append(el("div", { class: "actions" },
-    el("button", { type: "submit", id: "compute" }, "Compute"), examples,
+    el("button", { type: "submit", id: "compute" }, "Compute"),
     el("button", { type: "button", id: "copy-link", onclick: copyLink }, "Copy link")),
   designNames(m, params),
   el("div", { class: "actions files" },
@@ -349,7 +351,7 @@ function showModel(m, params = new URLSearchParams()) {
   sec.append(form, el("div", { id: "error-box", role: "alert" }), stale, el("div", { id: "result" }), sweepPanel(m),
     reportSection(m), el("section", { id: "compare", class: "compare", "aria-label": "comparison of designs" }));
 
-  fillForm(m, params.get("ex") ?? (m.examples.length ? "0" : "defaults"));
+  fillForm(m, params.get("ex") ?? "defaults");
   applyParams(m, params);
   // imperial chosen earlier: the fields the link does not set open in imperial units
   if (state.imperial) setFieldSystem(m, true, (p) => !params.has(p.name));
@@ -487,7 +489,11 @@ function fillForm(m, key) {
     }
     input.dataset.shown = shownValue(input);
     setError(p.name, "");
+    const read = document.getElementById("read-" + p.name);
+    if (read) read.textContent = "";
   }
+  const chooser = document.getElementById("example");
+  if (chooser) chooser.value = state.example;
   markStale();
 }
 

@@ -160,6 +160,12 @@ def _describe(api: httpx.Client, name: str) -> dict[str, Any]:
     return response.json()
 
 
+def _example(page: Any) -> None:
+    """Load example 1 from the form's chooser (a new design starts from the defaults)."""
+    if page.locator('#example option[value="0"]').count():
+        page.select_option("#example", "0")
+
+
 def _open(page: Any, base_url: str, fragment: str) -> None:
     page.goto("about:blank")  # a new hash alone would not reload the page
     page.goto(f"{base_url}/#{fragment}")
@@ -346,7 +352,8 @@ def walk_through(page: Any, api: httpx.Client, base_url: str, name: str) -> None
                     for o in options
                 ), f"{name}.{p['name']}: display unit {p['display_unit']!r} not offered"
 
-    # the worked example (defaults fill the rest), as the API computes it
+    # the worked example (defaults fill the rest), chosen as a person would, as the API computes it
+    _example(page)
     status = _submit(page)
     assert status == "ok", page.inner_text("#model")
     request = page.evaluate("window.calcState.lastRequest")
@@ -468,6 +475,7 @@ def walk_through(page: Any, api: httpx.Client, base_url: str, name: str) -> None
     if any(o["series"] for o in spec["outputs"]) and not any(expected_json["series"].values()):
         for rung in spec["rungs"]:
             _open(page, base_url, f"m={name}")
+            _example(page)
             page.select_option("#fidelity", rung["name"])
             if _submit(page) != "ok":
                 continue
@@ -521,6 +529,7 @@ def test_home_lists_every_family(page, api, base_url):
 
 def test_plots_shade_the_window_and_draw_a_histogram(page, base_url):
     _open(page, base_url, f"m={STRIKER.name}")
+    _example(page)
     assert _submit(page) == "ok"
     titles = page.locator("#series-plots .u-title").all_inner_texts()
     # travel and flywheel speed against time; preload counts as a histogram over the bin edges
@@ -543,6 +552,7 @@ def test_plots_shade_the_window_and_draw_a_histogram(page, base_url):
 
 def test_fidelity_selector_runs_the_named_rung(page, api, base_url):
     _open(page, base_url, f"m={TOY.name}")
+    _example(page)
     page.select_option("#fidelity", "rough")
     assert page.is_disabled("#tolerance")
     assert _submit(page) == "ok"
@@ -578,6 +588,7 @@ def test_infeasible_design_and_unit_strings(page, base_url):
 
 def test_result_units_and_a_shared_sweep(page, base_url):
     _open(page, base_url, f"m={STRIKER.name}")
+    _example(page)
     assert _submit(page) == "ok"
     # a result shown in another unit is the same SI value converted
     row = page.locator('#results tr[data-output="peak_travel"]')
@@ -657,6 +668,7 @@ def test_every_model_fits_a_phone_and_a_desktop(page, api, base_url, name):
     top = page.eval_on_selector("#model-title", "e => e.getBoundingClientRect().top")
     assert 0 <= top < PHONE["height"] / 2, f"{name}: the form starts at {top} px, off the screen"
     _no_horizontal_scroll(page)
+    _example(page)
     # the costliest rung returns the series (plots) where the model has any
     for rung in reversed(spec["rungs"]):
         page.select_option("#fidelity", rung["name"])
@@ -688,6 +700,7 @@ def test_every_model_fits_a_phone_and_a_desktop(page, api, base_url, name):
 def test_a_shared_sweep_link_keeps_its_unit(page, base_url):
     """A sweep over 73–220 rad/s reopens as 73–220 rad/s (not rpm), with the same numbers."""
     _open(page, base_url, f"m={STRIKER.name}")
+    _example(page)
     assert _submit(page) == "ok"
     page.select_option("#sweep-vary", "speed")
     page.select_option("#sweep-unit", label="rad/s")
@@ -735,6 +748,7 @@ def test_a_shared_sweep_link_keeps_its_unit(page, base_url):
 
 def test_stale_results_are_marked_and_units_read_by_people(page, base_url):
     _open(page, base_url, f"m={TOY.name}")
+    _example(page)
     assert _submit(page) == "ok"
     assert page.is_hidden("#stale-note")
     first = page.evaluate("window.calcState.lastResponse.results")
@@ -809,6 +823,7 @@ def test_histogram_bins_span_full_width_with_limit_lines(page, api, base_url):
 
 def test_save_open_and_compare_designs(page, base_url, tmp_path):
     _open(page, base_url, f"m={TOY.name}")
+    _example(page)
     page.fill("#report-part", "disc A")
     assert _submit(page) == "ok"
     first = page.evaluate("window.calcState.lastResponse.results")
@@ -1079,3 +1094,49 @@ def test_the_study_page_reads_numbers_by_the_same_setting(page: Any, base_url: s
     page.click("#study-run")
     assert "decimal comma" in page.inner_text("#study-error")
     assert page.is_enabled("#study-run")  # nothing was submitted
+
+
+@pytest.mark.parametrize("name", [s.name for s in (*REAL, TOY)])
+def test_a_new_design_starts_from_the_declared_defaults(
+    page: Any, api: httpx.Client, base_url: str, name: str
+) -> None:
+    """The form opens on the model's declared defaults (nothing from an example); Compute
+    either answers or names at its field each input still missing; example 1 is one choice
+    away and computes."""
+    spec = _describe(api, name)
+    _open(page, base_url, f"m={name}")
+    assert page.input_value("#example") == "defaults"
+    for p in spec["inputs"]:
+        field = f"#in-{p['name']}"
+        if p["kind"] == "bool":
+            assert page.is_checked(field) == bool(p["default"]), p["name"]
+        elif p["kind"] in ("choice", "text"):
+            assert page.input_value(field) == (p["default"] or ""), p["name"]
+        elif p["default"] is None:
+            assert page.input_value(field) == "", p["name"]  # nothing invented
+        else:
+            factor = page.eval_on_selector(
+                f"#unit-{p['name']}",
+                "u => Number(u.selectedOptions ? u.selectedOptions[0].dataset.factor"
+                " : u.dataset.factor)",
+            )
+            shown = float(page.input_value(field)) * factor
+            assert shown == pytest.approx(p["default"], rel=1e-6, abs=1e-300), p["name"]
+    # Compute answers, or names at its field each input still missing
+    if _submit(page) == "error":
+        marked = page.eval_on_selector_all(".field.invalid", "fs => fs.map(f => f.dataset.field)")
+        box = page.inner_text("#error-box")
+        assert marked, box
+        labels = {p["name"]: p["label"] for p in spec["inputs"]}
+        for field in marked:
+            assert labels[field] in box and page.inner_text(f"#err-{field}"), (field, box)
+        missing = [p["name"] for p in spec["inputs"] if p["required"] and p["default"] is None]
+        assert set(missing) <= set(marked), (missing, marked)
+    # the worked example is one choice away
+    if spec["examples"]:
+        page.select_option("#example", "0")
+        assert _submit(page) == "ok", page.inner_text("#error-box")
+        if name == "joint.vdi2230":  # example 1's transverse load is the example's, not a default
+            assert page.evaluate("window.calcState.lastResponse.inputs.transverse_load") == 2000.0
+            page.select_option("#example", "defaults")
+            assert page.input_value("#in-transverse_load") == "0"
