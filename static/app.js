@@ -179,6 +179,32 @@ function fmtTime(s) {
   return fmt(s, 3) + " s";
 }
 
+/** The page's one live region: what Compute, a sweep or a refusal did, said once. */
+function announce(text) {
+  const region = document.getElementById("announce");
+  if (region) region.textContent = text;
+}
+
+/** Skip links ("Skip to Compute", "Go to the result"): focus the target without touching the hash (the route). */
+function skipTo(e) {
+  e.preventDefault();
+  const which = e.currentTarget.dataset.skip;
+  // no result yet: the result link leads to Compute, which makes one
+  const target = document.getElementById(which === "result" ? "result-heading" : "compute") ?? document.getElementById("compute");
+  if (!target) return;
+  if (!target.hasAttribute("tabindex") && target.tagName !== "BUTTON") target.setAttribute("tabindex", "-1");
+  target.scrollIntoView({ block: which === "compute" ? "center" : "start" });
+  target.focus({ preventScroll: true });
+}
+
+/** After Compute: the answer in view and focused (its heading), so the keyboard and a screen reader start there. */
+function showAnswer() {
+  const heading = document.getElementById("result-heading");
+  if (!heading) return;
+  heading.scrollIntoView({ block: "start" });
+  heading.focus({ preventScroll: true });
+}
+
 // ---------------------------------------------------------------- start-up
 
 async function init() {
@@ -197,6 +223,7 @@ async function init() {
   decimal.value = decimalSeparator();
   decimal.addEventListener("change", () => switchDecimal(decimal.value));
   renderNav();
+  for (const a of document.querySelectorAll("a[data-skip]")) a.addEventListener("click", skipTo);
   window.addEventListener("hashchange", () => route());
   await route();
   document.body.dataset.ready = "1";
@@ -334,8 +361,10 @@ function showModel(m, params = new URLSearchParams()) {
   openOne.addEventListener("change", () => openDesign(openOne));
   const openMany = el("input", { type: "file", id: "compare-designs", accept: ".json,application/json", multiple: true, class: "file" });
   openMany.addEventListener("change", () => compareDesigns(m, openMany));
-  form.append(el("div", { class: "actions" },
+  // Compute stays in reach: the bar sticks to the bottom of the window while the form is on screen
+  form.append(el("div", { class: "actions action-bar", id: "action-bar" },
     el("button", { type: "submit", id: "compute" }, "Compute"),
+    el("a", { href: "#result", class: "to-result", id: "to-result", "data-skip": "result", onclick: skipTo, hidden: true }, "Go to the result"),
     el("button", { type: "button", id: "copy-link", onclick: copyLink }, "Copy link")),
   designNames(m, params),
   el("div", { class: "actions files" },
@@ -346,9 +375,9 @@ function showModel(m, params = new URLSearchParams()) {
   form.addEventListener("submit", (e) => { e.preventDefault(); compute(); });
   form.addEventListener("input", markStale);
   form.addEventListener("change", markStale);
-  const stale = el("p", { id: "stale-note", class: "stale-note", role: "status", hidden: true },
+  const stale = el("p", { id: "stale-note", class: "stale-note", hidden: true },
     "Inputs changed: compute again ", el("button", { type: "button", onclick: compute }, "Compute"));
-  sec.append(form, el("div", { id: "error-box", role: "alert" }), stale, el("div", { id: "result" }), sweepPanel(m),
+  sec.append(form, el("div", { id: "error-box", tabindex: "-1" }), stale, el("div", { id: "result" }), sweepPanel(m),
     reportSection(m), el("section", { id: "compare", class: "compare", "aria-label": "comparison of designs" }));
 
   fillForm(m, params.get("ex") ?? "defaults");
@@ -401,7 +430,7 @@ function fieldRow(p) {
       numeric ? el("output", { class: "read-as", id: "read-" + p.name, for: id }) : null),
     el("div", { class: "desc", id: "desc-" + p.name, title: p.description }, p.description || ""),
     el("div", { class: "hint", id: "hint-" + p.name }, hintText(p)),
-    el("div", { class: "error", id: "err-" + p.name, role: "alert" }));
+    el("div", { class: "error", id: "err-" + p.name }));
 }
 
 /** The unit currently chosen for a numeric input: {api, factor, label}. */
@@ -678,8 +707,9 @@ async function compute() {
   if (unread.length) {
     state.lastRequest = body;
     const names = unread.map((p) => p.label).join(", ");
-    document.getElementById("error-box").replaceChildren(el("p", { class: "error" },
-      `Not computed: ${names} cannot be read as ${unread.length > 1 ? "numbers" : "a number"}; see the marked field${unread.length > 1 ? "s" : ""}.`));
+    const why = `Not computed: ${names} cannot be read as ${unread.length > 1 ? "numbers" : "a number"}; see the marked field${unread.length > 1 ? "s" : ""}.`;
+    document.getElementById("error-box").replaceChildren(el("p", { class: "error" }, why));
+    announce(why);
     const first = document.getElementById("in-" + unread[0].name);
     first.scrollIntoView({ block: "center" });
     first.focus({ preventScroll: true });
@@ -704,7 +734,10 @@ async function compute() {
     state.lastSnapshot = null;
     destroyCharts("series");
     out.replaceChildren();
+    document.getElementById("to-result").hidden = true;
     showErrors(data, box);
+    announce(box.textContent);
+    if (!document.querySelector(".field.invalid")) { box.scrollIntoView({ block: "center" }); box.focus({ preventScroll: true }); }
     // the report says why there is nothing to report
     document.getElementById("report-body")?.replaceChildren(el("p", { class: "error" }, "Not computed: "),
       el("ul", {}, ...(data.detail || []).map((d) => el("li", {}, d.msg))));
@@ -717,6 +750,10 @@ async function compute() {
   renderResult(m, data);
   markStale();
   renderReport(m);
+  const failed = data.checks.filter((c) => !c.ok).length;
+  announce(`Computed (method ${data.rung})${data.checks.length ? `: ${failed ? `${failed} of ${data.checks.length} checks fail` : "every check passes"}` : ""}.`);
+  document.getElementById("to-result").hidden = false;
+  showAnswer();
   document.body.dataset.result = "ok";
 }
 
@@ -894,7 +931,7 @@ function checkSummary(data) {
   if (!failed.length) {
     return el("p", { class: "check-summary ok", id: "check-summary" }, `✓ All ${data.checks.length} checks pass.`);
   }
-  return el("div", { class: "check-summary fail", id: "check-summary", role: "alert" },
+  return el("div", { class: "check-summary fail", id: "check-summary" },
     el("strong", {}, `✗ ${failed.length} of ${data.checks.length} check${data.checks.length > 1 ? "s" : ""} fail${failed.length > 1 ? "" : "s"}:`),
     el("ul", {}, ...failed.map((c) => el("li", {}, el("strong", {}, c.name.replaceAll("_", " ")), ": ", c.detail))));
 }
@@ -933,7 +970,7 @@ function resultParts(m, data, { interactive = false } = {}) {
     el("table", { id: interactive ? "results" : null, class: "results" }, el("tbody", {}, ...resultRows(m, data, { interactive, withDesc: interactive }))));
   if (!interactive) return [meta, table, checks ? el("h3", {}, "Checks") : null, checks, warnings ? el("h3", {}, "Warnings") : null, warnings, notes ? el("h3", {}, "Notes") : null, notes].filter(Boolean);
   return [
-    el("h3", {}, "Results"), checkSummary(data), meta, methodHint(m, data), table,
+    el("h3", { id: "result-heading", tabindex: "-1" }, "Results"), checkSummary(data), meta, methodHint(m, data), table,
     checks ? el("h4", {}, "Checks") : null, checks,
     warnings ? el("h4", {}, "Warnings") : null, warnings,
     notes ? el("h4", {}, "Notes") : null, notes,
@@ -1221,9 +1258,9 @@ function sweepPanel(m) {
       el("span", {}, el("label", { for: "sweep-start" }, " from "), start), el("span", {}, el("label", { for: "sweep-stop" }, " to "), stop, " ", unit), read,
       el("span", {}, el("label", { for: "sweep-num" }, " points "), num), scale, axes,
       el("button", { type: "button", id: "sweep-run", onclick: () => runSweep(m) }, "Sweep")),
-    el("div", { class: "error", id: "sweep-error", role: "alert" }),
+    el("div", { class: "error", id: "sweep-error" }),
     el("div", { id: "sweep-notes", class: "notes" }),
-    el("p", { id: "sweep-stale", class: "stale-note", role: "status", hidden: true }, "Inputs changed: sweep again"),
+    el("p", { id: "sweep-stale", class: "stale-note", hidden: true }, "Inputs changed: sweep again"),
     el("div", { id: "sweep-plot", class: "plots" }),
     el("div", { class: "downloads", id: "sweep-downloads", hidden: true },
       el("button", { type: "button", id: "sweep-csv", onclick: () => downloadSweep(m, "csv") }, "Download sweep CSV"),
@@ -1331,6 +1368,7 @@ async function runSweep(m) {
       msgs.push(d.msg);
     }
     errBox.textContent = "Sweep refused: " + (msgs.join(" ") || `HTTP error`);
+    announce(errBox.textContent);
     state.lastSweep = { request: req, response: null };
     document.body.dataset.sweep = "error";
     return;
@@ -1356,6 +1394,7 @@ async function runSweep(m) {
   const msgs = [...data.warnings.map((w) => "⚠ " + w), ...data.notes];
   document.getElementById("sweep-notes").replaceChildren(...msgs.slice(0, 6).map((n) => el("p", {}, n)),
     ...(msgs.length > 6 ? [el("p", { class: "muted" }, `… and ${msgs.length - 6} more`)] : []));
+  announce(`Sweep done: ${data.values.length} points.`);
   document.body.dataset.sweep = "ok";
 }
 

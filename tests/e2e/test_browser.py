@@ -683,9 +683,6 @@ def test_every_model_fits_a_phone_and_a_desktop(page, api, base_url, name):
         "canvas", "cs => Math.max(0, ...cs.map(c => c.getBoundingClientRect().right))"
     )
     assert right <= PHONE["width"], f"{name}: a plot ends at {right} px"
-    if name == "preload.control":
-        DOCS_SHOTS.mkdir(parents=True, exist_ok=True)
-        page.screenshot(path=str(DOCS_SHOTS / "phone-form.png"), full_page=False)
     # the report view fits too
     page.click("#show-report")
     assert page.is_visible("#report-body")
@@ -1140,3 +1137,114 @@ def test_a_new_design_starts_from_the_declared_defaults(
             assert page.evaluate("window.calcState.lastResponse.inputs.transverse_load") == 2000.0
             page.select_option("#example", "defaults")
             assert page.input_value("#in-transverse_load") == "0"
+
+
+# ---------------------------------------------- issue 31: the answer in reach
+
+ANSWER_MODEL = "joint.vdi2230" if "joint.vdi2230" in [s.name for s in REAL] else STRIKER.name
+CONTROLS = (
+    "#form input:not(.file), #form select, #form button, #model .actions button,"
+    " #model .actions select, #model .actions label.button"
+)
+
+
+@pytest.fixture()
+def phone(browser: Any, base_url: str) -> Iterator[Any]:
+    """A 390 px phone page (twice the pixels, for legible screenshots), local requests only."""
+    context = browser.new_context(viewport=PHONE, device_scale_factor=2, has_touch=True)
+    context.set_default_timeout(TIMEOUT_MS)
+    context.route(
+        "**/*",
+        lambda route: (
+            route.continue_() if route.request.url.startswith(base_url) else route.abort()
+        ),
+    )
+    pg = context.new_page()
+    problems: list[str] = []
+    pg.on("pageerror", lambda exc: problems.append(str(exc)))
+    yield pg
+    context.close()
+    assert not problems, problems
+
+
+def _in_view(page: Any, selector: str) -> bool:
+    return bool(
+        page.eval_on_selector(
+            selector,
+            "e => { const b = e.getBoundingClientRect();"
+            " return b.top >= 0 && b.bottom <= innerHeight && b.height > 0; }",
+        )
+    )
+
+
+def _focused(page: Any) -> str:
+    return str(page.evaluate("document.activeElement ? document.activeElement.id : ''"))
+
+
+def test_keyboard_reaches_compute_and_the_answer_on_a_desktop(page: Any, base_url: str) -> None:
+    """A skip link leads to Compute (the first Tab, where 108 Tabs were needed); after
+    Compute from a field at the top of the form the result is in view and its heading has
+    the focus; one live region says what happened (there were 66 alert regions)."""
+    page.set_viewport_size(DESKTOP)
+    _open(page, base_url, f"m={ANSWER_MODEL}")
+    live = "document.querySelectorAll('[role=alert], [role=status], [aria-live]').length"
+    assert page.evaluate(live) == 1
+    page.keyboard.press("Tab")
+    assert page.evaluate("document.activeElement.textContent") == "Skip to Compute"
+    page.keyboard.press("Enter")
+    assert _focused(page) == "compute" and _in_view(page, "#compute")
+    assert "#m=" in page.url  # the skip link leaves the route alone
+    DOCS_SHOTS.mkdir(parents=True, exist_ok=True)
+    page.evaluate("window.scrollTo(0, 0)")
+    page.screenshot(path=str(DOCS_SHOTS / "desktop-form.png"))
+    _example(page)
+    page.focus("#form input[type=text]")
+    page.evaluate("window.scrollTo(0, 0)")
+    page.evaluate("delete document.body.dataset.result")
+    page.keyboard.press("Enter")
+    page.wait_for_selector("body[data-result]")
+    assert page.evaluate("document.body.dataset.result") == "ok"
+    assert _focused(page) == "result-heading"
+    assert page.get_attribute("#result-heading", "tabindex") == "-1"
+    assert _in_view(page, "#result-heading")
+    assert page.inner_text("#announce").startswith("Computed")
+    assert page.evaluate(live) == 1
+    page.screenshot(path=str(DOCS_SHOTS / "desktop-results.png"))
+    # a refusal is said in the same region, and the focus goes to the field refused
+    first = page.eval_on_selector("#form input[inputmode=decimal]", "e => e.id")
+    page.fill(f"#{first}", "-1")
+    assert _submit(page) == "error"
+    assert page.inner_text("#announce").startswith("Not computed")
+    marked = ".field.invalid input, .field.invalid select"
+    assert _focused(page) == page.eval_on_selector(marked, "e => e.id")
+
+
+@pytest.mark.parametrize("name", [s.name for s in (*REAL, STRIKER)])
+def test_on_a_phone_compute_is_on_the_first_screen_and_every_control_44px(
+    phone: Any, base_url: str, name: str
+) -> None:
+    """Picked from the menu on a 390 px phone: Compute shows at once (a bar at the bottom of
+    the window; it was 10 screens down), no control of the form is under 44 px (207 of 212
+    were), and after Compute the result is in view with the focus on its heading."""
+    _open(phone, base_url, "")
+    phone.click(f'nav a[data-model="{name}"]')
+    phone.wait_for_selector("#model-title")
+    assert _in_view(phone, "#compute"), f"{name}: Compute is off the first screen"
+    small = phone.eval_on_selector_all(
+        CONTROLS,
+        """cs => cs.filter(c => c.offsetParent !== null)
+                   .map(c => [c.id || c.name || c.textContent, c.getBoundingClientRect().height])
+                   .filter(([, h]) => h < 44)""",
+    )
+    assert not small, f"{name}: controls under 44 px: {small}"
+    if name == ANSWER_MODEL:
+        DOCS_SHOTS.mkdir(parents=True, exist_ok=True)
+        phone.screenshot(path=str(DOCS_SHOTS / "phone-form.png"))
+    _example(phone)
+    phone.evaluate("delete document.body.dataset.result")
+    phone.click("#compute")  # no scrolling: the bar is on screen
+    phone.wait_for_selector("body[data-result]")
+    assert phone.evaluate("document.body.dataset.result") == "ok"
+    assert _focused(phone) == "result-heading" and _in_view(phone, "#result-heading")
+    if name == ANSWER_MODEL:
+        phone.screenshot(path=str(DOCS_SHOTS / "phone-results.png"))
