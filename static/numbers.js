@@ -52,7 +52,7 @@ export function readNumber(text, dec = decimalSeparator()) {
     const want = dec === "," ? "2,5" : "2.5";
     const thousands = dec === "," ? "2.000" : "2,000";
     const name = dec === "," ? "comma" : "point";
-    return `“${s}” is not a number with the decimal ${name} “${dec}” (write ${want}, or ${thousands} for two thousand; the decimal separator is set at the top of the page)`;
+    return `“${s}” is not a number with the decimal ${name} “${dec}”: write ${want}, or ${thousands} for two thousand (“decimal” at the top of the page)`;
   };
   if (!m) return { ok: false, error: sayWhy() };
   const [, sign, whole, frac, exp] = m;

@@ -134,6 +134,7 @@ function pickModel(name) {
       el("td", { class: "unit", text: p.unit === "1" ? "" : p.unit }),
     );
     tr.read = read;
+    tr.unit = p.unit;
     tr.vary = vary;
     tr.control = control;
     tr.law = law;
@@ -170,7 +171,8 @@ function echo(tr) {
     const name = tr.vary.checked ? `${f.dataset.part} ` : "";
     if (!q.ok && !q.empty && !q.text) { parts.push(`${name}${q.error}`); bad = true; continue; }
     const typed = q.unit ? f.value.trim().slice(0, -q.unit.length) : f.value;
-    if (q.ok && !isPlain(typed)) parts.push(`${name}= ${echoNumber(q.value)}${q.unit ? " " + q.unit : ""}`);
+    const unit = q.unit || (tr.unit === "1" ? "" : tr.unit);
+    if (q.ok && !isPlain(typed)) parts.push(`${name}= ${echoNumber(q.value)}${unit ? " " + unit : ""}`);
   }
   tr.read.textContent = parts.join("; ");
   tr.read.classList.toggle("error", bad);

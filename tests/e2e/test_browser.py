@@ -1084,7 +1084,7 @@ def test_the_study_page_reads_numbers_by_the_same_setting(page: Any, base_url: s
     assert page.input_value("#decimal-sep") == ","
     row = 'tr[data-name="mass"]'
     page.fill(f"{row} input[data-name]", "2.000")
-    assert page.inner_text(f"{row} output.read-as") == "= 2000"
+    assert page.inner_text(f"{row} output.read-as") == "= 2000 kg"
     page.fill(f"{row} input[data-name]", "2.5")
     assert "decimal comma" in page.inner_text(f"{row} output.read-as")
     page.check('tr[data-name="speed"] input[type=checkbox]')
