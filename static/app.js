@@ -7,6 +7,8 @@
 // about a model comes from the catalogue entry, so a newly registered model
 // appears here without any change to this file.
 
+import { decimalSeparator, echoNumber, isPlain, localNumber, parseNum, readNumber, readQuantity, setDecimalSeparator } from "./numbers.js";
+
 const API = "api/v1";
 const uPlot = window.uPlot;
 
@@ -113,18 +115,21 @@ function group(s) {
   return m[1] + m[2].replace(/\B(?=(\d{3})+(?!\d))/g, GROUP) + (m[3] || "");
 }
 
-/** A typed number: "12.5", or "12,5" with a decimal comma (read as a point); NaN otherwise. */
-function parseNum(raw) {
-  const s = String(raw ?? "").trim();
-  if (s === "") return NaN;
-  if (/^[+-]?\d*,\d+(e[+-]?\d+)?$/i.test(s)) return Number(s.replace(",", "."));
-  return Number(s);
+/** A number for a text field, in the user's decimal separator (see fieldNumber). */
+function fieldText(x, sig = 10) {
+  return localNumber(fieldNumber(x, sig));
 }
 
-/** The typed text with a decimal comma turned into a point (what the API parses). */
-function dotted(raw) {
-  const s = String(raw ?? "").trim();
-  return /^[+-]?\d*,\d+(e[+-]?\d+)?$/i.test(s) ? s.replace(",", ".") : s;
+/**
+ * A number from a link or a design file: canonical (a point, no grouping), or, in links
+ * made before the decimal-separator setting, "12,5" with a decimal comma. Shown in the
+ * user's separator; text that is no number is returned as it is.
+ */
+function linkNumber(raw) {
+  const s = String(raw).trim();
+  const legacy = /^[+-]?\d*,\d+(e[+-]?\d+)?$/i.test(s) ? s.replace(",", ".") : s;
+  const r = readNumber(legacy, ".");
+  return r.ok ? localNumber(r.canonical) : s;
 }
 
 /** Units the metric/imperial switch treats as imperial (offered after the metric ones in units.json). */
@@ -174,6 +179,32 @@ function fmtTime(s) {
   return fmt(s, 3) + " s";
 }
 
+/** The page's one live region: what Compute, a sweep or a refusal did, said once. */
+function announce(text) {
+  const region = document.getElementById("announce");
+  if (region) region.textContent = text;
+}
+
+/** Skip links ("Skip to Compute", "Go to the result"): focus the target without touching the hash (the route). */
+function skipTo(e) {
+  e.preventDefault();
+  const which = e.currentTarget.dataset.skip;
+  // no result yet: the result link leads to Compute, which makes one
+  const target = document.getElementById(which === "result" ? "result-heading" : "compute") ?? document.getElementById("compute");
+  if (!target) return;
+  if (!target.hasAttribute("tabindex") && target.tagName !== "BUTTON") target.setAttribute("tabindex", "-1");
+  target.scrollIntoView({ block: which === "compute" ? "center" : "start" });
+  target.focus({ preventScroll: true });
+}
+
+/** After Compute: the answer in view and focused (its heading), so the keyboard and a screen reader start there. */
+function showAnswer() {
+  const heading = document.getElementById("result-heading");
+  if (!heading) return;
+  heading.scrollIntoView({ block: "start" });
+  heading.focus({ preventScroll: true });
+}
+
 // ---------------------------------------------------------------- start-up
 
 async function init() {
@@ -188,7 +219,11 @@ async function init() {
   const system = document.getElementById("unit-system");
   system.value = state.imperial ? "imperial" : "metric";
   system.addEventListener("change", () => switchSystem(system.value === "imperial"));
+  const decimal = document.getElementById("decimal-sep");
+  decimal.value = decimalSeparator();
+  decimal.addEventListener("change", () => switchDecimal(decimal.value));
   renderNav();
+  for (const a of document.querySelectorAll("a[data-skip]")) a.addEventListener("click", skipTo);
   window.addEventListener("hashchange", () => route());
   await route();
   document.body.dataset.ready = "1";
@@ -312,20 +347,24 @@ function showModel(m, params = new URLSearchParams()) {
     form.append(el("fieldset", {}, el("legend", {}, g), picker, ...ps.map(fieldRow)));
   }
   form.append(fidelityRow(m));
-  const examples = el("select", { id: "example", "aria-label": "load a worked example" },
-    el("option", { value: "" }, "Load…"),
-    el("option", { value: "defaults" }, "source defaults"),
+  // a new design starts from the model's declared defaults; a worked example is one choice away
+  const examples = el("select", { id: "example", "aria-describedby": "start-hint" },
+    el("option", { value: "defaults" }, "new design: the model's defaults"),
     ...m.examples.map((_, i) => el("option", { value: String(i) }, `example ${i + 1}${i === 0 ? " (the model's reference case)" : ""}`)));
-  examples.addEventListener("change", () => {
-    if (examples.value !== "") fillForm(m, examples.value);
-    examples.value = "";
-  });
+  examples.addEventListener("change", () => fillForm(m, examples.value));
+  const required = m.inputs.filter((p) => p.required && (p.default === null || p.default === undefined));
+  form.prepend(el("div", { class: "start" },
+    el("label", { for: "example" }, "Start from "), examples,
+    el("span", { class: "hint", id: "start-hint" }, "The defaults are the model's own: optional inputs empty, loads as declared",
+      required.length ? `; to fill in: ${required.map((p) => p.label).join(", ")}` : "", ".")));
   const openOne = el("input", { type: "file", id: "open-design", accept: ".json,application/json", class: "file" });
   openOne.addEventListener("change", () => openDesign(openOne));
   const openMany = el("input", { type: "file", id: "compare-designs", accept: ".json,application/json", multiple: true, class: "file" });
   openMany.addEventListener("change", () => compareDesigns(m, openMany));
-  form.append(el("div", { class: "actions" },
-    el("button", { type: "submit", id: "compute" }, "Compute"), examples,
+  // Compute stays in reach: the bar sticks to the bottom of the window while the form is on screen
+  form.append(el("div", { class: "actions action-bar", id: "action-bar" },
+    el("button", { type: "submit", id: "compute" }, "Compute"),
+    el("a", { href: "#result", class: "to-result", id: "to-result", "data-skip": "result", onclick: skipTo, hidden: true }, "Go to the result"),
     el("button", { type: "button", id: "copy-link", onclick: copyLink }, "Copy link")),
   designNames(m, params),
   el("div", { class: "actions files" },
@@ -336,12 +375,12 @@ function showModel(m, params = new URLSearchParams()) {
   form.addEventListener("submit", (e) => { e.preventDefault(); compute(); });
   form.addEventListener("input", markStale);
   form.addEventListener("change", markStale);
-  const stale = el("p", { id: "stale-note", class: "stale-note", role: "status", hidden: true },
+  const stale = el("p", { id: "stale-note", class: "stale-note", hidden: true },
     "Inputs changed: compute again ", el("button", { type: "button", onclick: compute }, "Compute"));
-  sec.append(form, el("div", { id: "error-box", role: "alert" }), stale, el("div", { id: "result" }), sweepPanel(m),
+  sec.append(form, el("div", { id: "error-box", tabindex: "-1" }), stale, el("div", { id: "result" }), sweepPanel(m),
     reportSection(m), el("section", { id: "compare", class: "compare", "aria-label": "comparison of designs" }));
 
-  fillForm(m, params.get("ex") ?? (m.examples.length ? "0" : "defaults"));
+  fillForm(m, params.get("ex") ?? "defaults");
   applyParams(m, params);
   // imperial chosen earlier: the fields the link does not set open in imperial units
   if (state.imperial) setFieldSystem(m, true, (p) => !params.has(p.name));
@@ -357,7 +396,8 @@ function rungTable(m) {
 function fieldRow(p) {
   const id = "in-" + p.name;
   let input, unitSel = null;
-  const described = ["desc-" + p.name, "hint-" + p.name, "err-" + p.name].join(" ");
+  const numeric = p.kind === "float" || p.kind === "int";
+  const described = ["desc-" + p.name, "hint-" + p.name, "err-" + p.name, ...(numeric ? ["read-" + p.name] : [])].join(" ");
   if (p.kind === "choice") {
     input = el("select", { id, name: p.name, "aria-describedby": described },
       ...(p.required ? [] : [el("option", { value: "" }, "—")]),
@@ -385,10 +425,12 @@ function fieldRow(p) {
   const label = el("label", { for: id, title: p.description },
     p.label, p.symbol ? el("span", { class: "symbol" }, ` ${p.symbol}`) : null, p.required ? el("span", { class: "req", title: "required" }, " *") : null);
   return el("div", { class: "field", "data-field": p.name },
-    label, el("div", { class: "control" }, input, unitSel),
+    label, el("div", { class: "control" }, input, unitSel,
+      // the value read, beside what was typed when the two differ ("2,000" → "= 2000 lbf")
+      numeric ? el("output", { class: "read-as", id: "read-" + p.name, for: id }) : null),
     el("div", { class: "desc", id: "desc-" + p.name, title: p.description }, p.description || ""),
     el("div", { class: "hint", id: "hint-" + p.name }, hintText(p)),
-    el("div", { class: "error", id: "err-" + p.name, role: "alert" }));
+    el("div", { class: "error", id: "err-" + p.name }));
 }
 
 /** The unit currently chosen for a numeric input: {api, factor, label}. */
@@ -406,6 +448,11 @@ function inUnit(si, unit) {
   return si / unit.factor;
 }
 
+/** A limit or default in a hint, in the user's decimal separator. */
+function num(x) {
+  return localNumber(short(x));
+}
+
 /** "default 100 rpm · allowed > 0 and ≤ 1e4 mm · recommended …", in the unit chosen. */
 function hintText(p) {
   const parts = [];
@@ -417,18 +464,18 @@ function hintText(p) {
   }
   const u = document.getElementById("unit-" + p.name) ? currentUnit(p) : unitChoices(p.unit, p.display_unit)[0];
   const sp = u.label ? " " + u.label : "";
-  if (p.default !== null && p.default !== undefined) parts.push(`default ${short(inUnit(p.default, u))}${sp}`);
+  if (p.default !== null && p.default !== undefined) parts.push(`default ${num(inUnit(p.default, u))}${sp}`);
   else if (!p.required) parts.push("optional");
   parts.push("allowed: " + rangeText(p, u));
-  if (p.recommended) parts.push(`recommended ${short(inUnit(p.recommended[0], u))}…${short(inUnit(p.recommended[1], u))}${sp}`);
+  if (p.recommended) parts.push(`recommended ${num(inUnit(p.recommended[0], u))}…${num(inUnit(p.recommended[1], u))}${sp}`);
   return parts.join(" · ");
 }
 
 function rangeText(p, u) {
   const sp = u.label ? " " + u.label : "";
   const parts = [];
-  if (p.minimum !== null && p.minimum !== undefined) parts.push(`${p.exclusive_minimum ? ">" : "≥"} ${short(inUnit(p.minimum, u))}${sp}`);
-  if (p.maximum !== null && p.maximum !== undefined) parts.push(`${p.exclusive_maximum ? "<" : "≤"} ${short(inUnit(p.maximum, u))}${sp}`);
+  if (p.minimum !== null && p.minimum !== undefined) parts.push(`${p.exclusive_minimum ? ">" : "≥"} ${num(inUnit(p.minimum, u))}${sp}`);
+  if (p.maximum !== null && p.maximum !== undefined) parts.push(`${p.exclusive_maximum ? "<" : "≤"} ${num(inUnit(p.maximum, u))}${sp}`);
   const what = p.kind === "int" ? "an integer" : "a number";
   return parts.length ? `${what} ${parts.join(" and ")}` : `any ${p.kind === "int" ? "integer" : "finite number"}`;
 }
@@ -439,8 +486,8 @@ function changeUnit(p, input, sel) {
   const v = input.value.trim();
   if (!touched(input) && input.dataset.si !== undefined) {
     // still the loaded value: convert from its exact SI value, and keep it untouched
-    input.value = input.dataset.shown = fieldNumber(Number(input.dataset.si) / next, 7);
-  } else if (v !== "" && Number.isFinite(parseNum(v))) input.value = fieldNumber((parseNum(v) * prev) / next);
+    input.value = input.dataset.shown = fieldText(Number(input.dataset.si) / next, 7);
+  } else if (v !== "" && Number.isFinite(parseNum(v))) input.value = fieldText((parseNum(v) * prev) / next);
   sel.dataset.prev = sel.value;
   document.getElementById("hint-" + p.name).textContent = hintText(p);
   checkField(p);
@@ -465,13 +512,17 @@ function fillForm(m, key) {
       input.value = v; // a unit string ("45 mm"): sent as written
       delete input.dataset.si;
     } else {
-      input.value = v === null || v === undefined ? "" : fieldNumber(inUnit(v, currentUnit(p)), 7);
+      input.value = v === null || v === undefined ? "" : fieldText(inUnit(v, currentUnit(p)), 7);
       if (v === null || v === undefined) delete input.dataset.si;
       else input.dataset.si = String(v);
     }
     input.dataset.shown = shownValue(input);
     setError(p.name, "");
+    const read = document.getElementById("read-" + p.name);
+    if (read) read.textContent = "";
   }
+  const chooser = document.getElementById("example");
+  if (chooser) chooser.value = state.example;
   markStale();
 }
 
@@ -497,11 +548,12 @@ function applyParams(m, params) {
     if (match && sel && sel.tagName === "SELECT" && match[2]) {
       const opt = [...sel.options].find((o) => norm(o.value) === norm(match[2]) || norm(o.textContent) === norm(match[2]));
       if (opt) {
-        sel.value = opt.value; sel.dataset.prev = opt.value; input.value = match[1];
-        if (input.dataset.si !== undefined) input.dataset.shown = fieldNumber(Number(input.dataset.si) / Number(opt.dataset.factor), 7);
+        sel.value = opt.value; sel.dataset.prev = opt.value; input.value = linkNumber(match[1]);
+        if (input.dataset.si !== undefined) input.dataset.shown = fieldText(Number(input.dataset.si) / Number(opt.dataset.factor), 7);
       }
       else input.value = raw; // the API will parse it, or say why not
-    } else input.value = match && (!match[2] || sel?.dataset.api === match[2]) ? match[1] : raw;
+    } else if (match && (!match[2] || sel?.dataset.api === match[2])) input.value = linkNumber(match[1]);
+    else input.value = match && match[2] ? `${linkNumber(match[1])} ${match[2]}` : raw;
     document.getElementById("hint-" + p.name).textContent = hintText(p);
   }
   if (params.has("fidelity")) document.getElementById("fidelity").value = params.get("fidelity");
@@ -549,17 +601,22 @@ function setError(name, msg) {
 function checkField(p) {
   const input = document.getElementById("in-" + p.name);
   const raw = input.value.trim();
-  let msg = "";
+  const q = readQuantity(raw);
+  const u = currentUnit(p);
+  let msg = "", echo = "", format = false;
   if (raw === "") {
     if (p.required) msg = `${p.label} is required`;
-  } else if (!Number.isFinite(parseNum(raw))) {
+  } else if (!q.ok) {
+    format = true;
+    msg = q.text
+      ? `${p.label}: “${raw}” is not a number (write ${localNumber("12.5")}${u.label ? ", in " + u.label : ""})`
+      : `${p.label}: ${q.error}`;
+  } else if (q.unit) {
     // a typed unit string ("45 mm") is left to the server, which parses units exactly
-    if (!/^[+-]?(\d+[.,]?\d*|[.,]\d+)(e[+-]?\d+)?\s*\S+/i.test(raw)) {
-      msg = `${p.label}: “${raw}” is not a number (write 12.5 or 12,5${currentUnit(p).label ? ", in " + currentUnit(p).label : ""})`;
-    }
+    if (!isPlain(raw.slice(0, raw.length - q.unit.length))) echo = `= ${echoNumber(q.value)} ${q.unit}`;
   } else {
-    const u = currentUnit(p);
-    const si = parseNum(raw) * u.factor;
+    if (!isPlain(raw)) echo = `= ${echoNumber(q.value)}${u.label ? " " + u.label : ""}`;
+    const si = q.value * u.factor;
     const lo = p.minimum, hi = p.maximum;
     const bad = (lo !== null && lo !== undefined && (p.exclusive_minimum ? si <= lo : si < lo))
       || (hi !== null && hi !== undefined && (p.exclusive_maximum ? si >= hi : si > hi))
@@ -567,6 +624,10 @@ function checkField(p) {
     if (bad) msg = `${p.label} = ${raw}${u.label ? " " + u.label : ""} is not allowed: must be ${rangeText(p, u)}`;
   }
   setError(p.name, msg);
+  const read = document.getElementById("read-" + p.name);
+  if (read) read.textContent = msg ? "" : echo;
+  const slot = document.getElementById("err-" + p.name);
+  if (slot) slot.dataset.format = format ? "1" : "";
   return msg;
 }
 
@@ -583,9 +644,11 @@ function requestBody(m, { skip = null } = {}) {
     if (raw === "") continue;
     if (p.kind === "choice" || p.kind === "text") { body[p.name] = raw; continue; }
     const u = currentUnit(p);
+    const q = readQuantity(raw);
     if (!touched(input) && input.dataset.si !== undefined) body[p.name] = Number(input.dataset.si);
-    else if (Number.isFinite(parseNum(raw))) body[p.name] = u.api ? `${dotted(raw)} ${u.api}` : parseNum(raw);
-    else body[p.name] = raw.replace(/^([+-]?\d*),(\d)/, "$1.$2");
+    else if (q.ok && !q.unit) body[p.name] = u.api ? `${q.canonical} ${u.api}` : q.value;
+    else if (q.ok) body[p.name] = `${q.canonical} ${q.unit}`; // a unit typed with the number
+    else body[p.name] = raw; // the form refuses it before sending; the server would too
   }
   return body;
 }
@@ -594,7 +657,7 @@ function fidelityBody() {
   const fidelity = document.getElementById("fidelity").value;
   const out = { fidelity };
   if (fidelity === "auto") {
-    const t = Number(document.getElementById("tolerance").value);
+    const t = parseNum(document.getElementById("tolerance").value);
     setError("tolerance", Number.isFinite(t) && t > 0 && t < 100 ? "" : "tolerance must be between 0 and 100 %");
     if (Number.isFinite(t) && t > 0 && t < 100) out.tolerance = t / 100;
   }
@@ -639,6 +702,20 @@ async function compute() {
   if (!m) return;
   for (const p of m.inputs) if (p.kind === "float" || p.kind === "int") checkField(p);
   const body = { ...requestBody(m), ...fidelityBody() };
+  // a number the form cannot read under the decimal-separator setting is never sent
+  const unread = m.inputs.filter((p) => document.getElementById("err-" + p.name)?.dataset.format === "1");
+  if (unread.length) {
+    state.lastRequest = body;
+    const names = unread.map((p) => p.label).join(", ");
+    const why = `Not computed: ${names} cannot be read as ${unread.length > 1 ? "numbers" : "a number"}; see the marked field${unread.length > 1 ? "s" : ""}.`;
+    document.getElementById("error-box").replaceChildren(el("p", { class: "error" }, why));
+    announce(why);
+    const first = document.getElementById("in-" + unread[0].name);
+    first.scrollIntoView({ block: "center" });
+    first.focus({ preventScroll: true });
+    document.body.dataset.result = "error";
+    return;
+  }
   if (m.outputs.some((o) => o.series)) body.series = true; // the form plots them; the API sends none unasked
   const snap = snapshot(m);
   state.lastRequest = body;
@@ -657,7 +734,10 @@ async function compute() {
     state.lastSnapshot = null;
     destroyCharts("series");
     out.replaceChildren();
+    document.getElementById("to-result").hidden = true;
     showErrors(data, box);
+    announce(box.textContent);
+    if (!document.querySelector(".field.invalid")) { box.scrollIntoView({ block: "center" }); box.focus({ preventScroll: true }); }
     // the report says why there is nothing to report
     document.getElementById("report-body")?.replaceChildren(el("p", { class: "error" }, "Not computed: "),
       el("ul", {}, ...(data.detail || []).map((d) => el("li", {}, d.msg))));
@@ -670,6 +750,10 @@ async function compute() {
   renderResult(m, data);
   markStale();
   renderReport(m);
+  const failed = data.checks.filter((c) => !c.ok).length;
+  announce(`Computed (method ${data.rung})${data.checks.length ? `: ${failed ? `${failed} of ${data.checks.length} checks fail` : "every check passes"}` : ""}.`);
+  document.getElementById("to-result").hidden = false;
+  showAnswer();
   document.body.dataset.result = "ok";
 }
 
@@ -700,10 +784,11 @@ function formInputs(m) {
     const raw = input.value.trim();
     if (p.kind === "bool") out[p.name] = String(input.checked);
     else if (raw === "") { if (touched(input)) out[p.name] = ""; }
-    else if (p.kind === "choice" || p.kind === "text" || !Number.isFinite(parseNum(raw))) out[p.name] = raw;
+    else if (p.kind === "choice" || p.kind === "text" || !readQuantity(raw).ok) out[p.name] = raw;
     else {
-      const u = currentUnit(p);
-      out[p.name] = u.api ? `${raw} ${u.api}` : raw;
+      // canonical numbers (a point, no grouping): the link means the same on every machine
+      const q = readQuantity(raw), u = currentUnit(p);
+      out[p.name] = q.unit ? `${q.canonical} ${q.unit}` : u.api ? `${q.canonical} ${u.api}` : q.canonical;
     }
   }
   return out;
@@ -846,7 +931,7 @@ function checkSummary(data) {
   if (!failed.length) {
     return el("p", { class: "check-summary ok", id: "check-summary" }, `✓ All ${data.checks.length} checks pass.`);
   }
-  return el("div", { class: "check-summary fail", id: "check-summary", role: "alert" },
+  return el("div", { class: "check-summary fail", id: "check-summary" },
     el("strong", {}, `✗ ${failed.length} of ${data.checks.length} check${data.checks.length > 1 ? "s" : ""} fail${failed.length > 1 ? "" : "s"}:`),
     el("ul", {}, ...failed.map((c) => el("li", {}, el("strong", {}, c.name.replaceAll("_", " ")), ": ", c.detail))));
 }
@@ -885,7 +970,7 @@ function resultParts(m, data, { interactive = false } = {}) {
     el("table", { id: interactive ? "results" : null, class: "results" }, el("tbody", {}, ...resultRows(m, data, { interactive, withDesc: interactive }))));
   if (!interactive) return [meta, table, checks ? el("h3", {}, "Checks") : null, checks, warnings ? el("h3", {}, "Warnings") : null, warnings, notes ? el("h3", {}, "Notes") : null, notes].filter(Boolean);
   return [
-    el("h3", {}, "Results"), checkSummary(data), meta, methodHint(m, data), table,
+    el("h3", { id: "result-heading", tabindex: "-1" }, "Results"), checkSummary(data), meta, methodHint(m, data), table,
     checks ? el("h4", {}, "Checks") : null, checks,
     warnings ? el("h4", {}, "Warnings") : null, warnings,
     notes ? el("h4", {}, "Notes") : null, notes,
@@ -1146,9 +1231,19 @@ function sweepPanel(m) {
   const unit = el("select", { id: "sweep-unit", "aria-label": "unit of the swept range" });
   unit.addEventListener("change", () => {
     const prev = Number(unit.dataset.factor), next = Number(unit.selectedOptions[0].dataset.factor);
-    for (const f of [start, stop]) if (Number.isFinite(parseNum(f.value))) f.value = fieldNumber((parseNum(f.value) * prev) / next);
+    for (const f of [start, stop]) if (Number.isFinite(parseNum(f.value))) f.value = fieldText((parseNum(f.value) * prev) / next);
     unit.dataset.factor = String(next);
   });
+  const read = el("output", { id: "sweep-read", class: "read-as", for: "sweep-start sweep-stop" });
+  const echo = () => {
+    const qs = [start, stop].map((f) => readQuantity(f.value));
+    const bad = qs.find((q) => !q.ok && !q.empty);
+    const differs = [start, stop].some((f, i) => qs[i].ok && !isPlain(qs[i].unit ? f.value.trim().slice(0, -qs[i].unit.length) : f.value));
+    read.textContent = bad ? bad.error || "a number is needed"
+      : differs && qs.every((q) => q.ok) ? `= ${echoNumber(qs[0].value)} … ${echoNumber(qs[1].value)} ${qs[0].unit || sweepUnit().label}` : "";
+    read.classList.toggle("error", Boolean(bad));
+  };
+  for (const f of [start, stop]) f.addEventListener("input", echo);
   const num = el("input", { id: "sweep-num", size: 4, value: "40", inputmode: "numeric" });
   const scale = el("select", { id: "sweep-scale", "aria-label": "scale of the swept input" }, el("option", { value: "linear" }, "linear"), el("option", { value: "log" }, "log"));
   const axes = el("select", { id: "sweep-axes", "aria-label": "axes of several outputs" },
@@ -1160,12 +1255,12 @@ function sweepPanel(m) {
     el("div", { class: "control sweep-controls" },
       el("span", {}, el("label", { for: "sweep-output" }, "plot "), output), more,
       el("span", {}, el("label", { for: "sweep-vary" }, " against "), vary),
-      el("span", {}, el("label", { for: "sweep-start" }, " from "), start), el("span", {}, el("label", { for: "sweep-stop" }, " to "), stop, " ", unit),
+      el("span", {}, el("label", { for: "sweep-start" }, " from "), start), el("span", {}, el("label", { for: "sweep-stop" }, " to "), stop, " ", unit), read,
       el("span", {}, el("label", { for: "sweep-num" }, " points "), num), scale, axes,
       el("button", { type: "button", id: "sweep-run", onclick: () => runSweep(m) }, "Sweep")),
-    el("div", { class: "error", id: "sweep-error", role: "alert" }),
+    el("div", { class: "error", id: "sweep-error" }),
     el("div", { id: "sweep-notes", class: "notes" }),
-    el("p", { id: "sweep-stale", class: "stale-note", role: "status", hidden: true }, "Inputs changed: sweep again"),
+    el("p", { id: "sweep-stale", class: "stale-note", hidden: true }, "Inputs changed: sweep again"),
     el("div", { id: "sweep-plot", class: "plots" }),
     el("div", { class: "downloads", id: "sweep-downloads", hidden: true },
       el("button", { type: "button", id: "sweep-csv", onclick: () => downloadSweep(m, "csv") }, "Download sweep CSV"),
@@ -1213,8 +1308,8 @@ function sweepDefaults(m) {
   if (p.kind === "int") { lo = Math.ceil(lo); hi = Math.max(lo + 1, Math.floor(hi)); }
   if (p.kind === "int") document.getElementById("sweep-num").value = String(Math.min(hi - lo + 1, 200));
   const su = sweepUnit();
-  document.getElementById("sweep-start").value = fieldNumber(lo / su.factor);
-  document.getElementById("sweep-stop").value = fieldNumber(hi / su.factor);
+  document.getElementById("sweep-start").value = fieldText(lo / su.factor);
+  document.getElementById("sweep-stop").value = fieldText(hi / su.factor);
 }
 
 function sweepOutputs() {
@@ -1230,9 +1325,19 @@ async function runSweep(m) {
   const u = sweepUnit();
   const end = (id) => {
     const raw = document.getElementById(id).value.trim();
-    const x = parseNum(raw);
-    return u.api && Number.isFinite(x) ? `${dotted(raw)} ${u.api}` : Number.isFinite(x) ? x : raw;
+    const q = readQuantity(raw);
+    if (q.ok && q.unit) return `${q.canonical} ${q.unit}`;
+    return u.api && q.ok ? `${q.canonical} ${u.api}` : q.ok ? q.value : raw;
   };
+  const errBox = document.getElementById("sweep-error");
+  const unread = ["sweep-start", "sweep-stop"].map((id) => [id, readQuantity(document.getElementById(id).value)])
+    .filter(([, q]) => !q.ok);
+  if (unread.length) {
+    errBox.textContent = "Sweep not run: " + unread.map(([id, q]) =>
+      `${id === "sweep-start" ? "from" : "to"}: ${q.error || "a number is needed"}`).join("; ");
+    document.body.dataset.sweep = "error";
+    return;
+  }
   let num = Number(document.getElementById("sweep-num").value) || 40;
   if (p.kind === "int") {
     // an integer input is swept over whole numbers only: one point per integer
@@ -1245,7 +1350,6 @@ async function runSweep(m) {
     num,
     scale: document.getElementById("sweep-scale").value, outputs, ...fidelityBody(),
   };
-  const errBox = document.getElementById("sweep-error");
   errBox.textContent = "";
   for (const p2 of m.inputs) setError(p2.name, "");
   const seq = ++state.sweepSeq;
@@ -1264,6 +1368,7 @@ async function runSweep(m) {
       msgs.push(d.msg);
     }
     errBox.textContent = "Sweep refused: " + (msgs.join(" ") || `HTTP error`);
+    announce(errBox.textContent);
     state.lastSweep = { request: req, response: null };
     document.body.dataset.sweep = "error";
     return;
@@ -1289,6 +1394,7 @@ async function runSweep(m) {
   const msgs = [...data.warnings.map((w) => "⚠ " + w), ...data.notes];
   document.getElementById("sweep-notes").replaceChildren(...msgs.slice(0, 6).map((n) => el("p", {}, n)),
     ...(msgs.length > 6 ? [el("p", { class: "muted" }, `… and ${msgs.length - 6} more`)] : []));
+  announce(`Sweep done: ${data.values.length} points.`);
   document.body.dataset.sweep = "ok";
 }
 
@@ -1615,7 +1721,7 @@ function threadPicker(m, ps) {
     } else {
       for (const [p, key] of numbers) {
         if (typeof t[key] !== "number") continue;
-        setText(p, fieldNumber(t[key] / currentUnit(p).factor, 10));
+        setText(p, fieldText(t[key] / currentUnit(p).factor, 10));
         checkField(p);
       }
     }
@@ -1661,6 +1767,37 @@ function switchSystem(imperial) {
     renderReport(m);
   }
   if (state.lastSweep?.response) plotSweep(m);
+  markStale();
+}
+
+/**
+ * The decimal separator the user reads and types: every number in a field is rewritten
+ * with the same value in the new separator (a setting never changes a value); text that
+ * could not be read before is read again under the new setting.
+ */
+function switchDecimal(sep) {
+  const old = decimalSeparator();
+  setDecimalSeparator(sep);
+  const now = decimalSeparator();
+  const m = state.model;
+  if (!m || old === now) return;
+  const rewrite = (input) => {
+    const q = readQuantity(input.value, old);
+    if (!q.ok) return;
+    const text = localNumber(q.canonical, now) + (q.unit ? " " + q.unit : "");
+    if (input.dataset.shown === input.value) input.dataset.shown = text; // still the loaded value
+    input.value = text;
+  };
+  for (const p of m.inputs) {
+    if (p.kind !== "float" && p.kind !== "int") continue;
+    rewrite(document.getElementById("in-" + p.name));
+    document.getElementById("hint-" + p.name).textContent = hintText(p);
+    checkField(p);
+  }
+  for (const id of ["tolerance", "sweep-start", "sweep-stop"]) {
+    const f = document.getElementById(id);
+    if (f) { rewrite(f); f.dispatchEvent(new Event("input")); }
+  }
   markStale();
 }
 

@@ -3,6 +3,8 @@
 // the summary: histogram with reference lines, grid map with the feasible region, sensitivity bars.
 // Plain ES module, no build step, nothing fetched but this server.
 
+import { decimalSeparator, echoNumber, isPlain, localNumber, readQuantity, setDecimalSeparator } from "./numbers.js";
+
 const $ = (sel) => document.querySelector(sel);
 const API = "api/v1";
 let catalogue = [];
@@ -53,7 +55,7 @@ function lawCell(p, value) {
   const lo = p.minimum !== null ? Math.max(p.minimum, num - spread) : num - spread;
   const hi = p.maximum !== null ? Math.min(p.maximum, num + spread) : num + spread;
   const field = (part, v, title) =>
-    el("input", { "data-part": part, value: String(Number(v.toPrecision(6))), "aria-label": `${label(p)}: ${title}`, title });
+    el("input", { "data-part": part, value: localNumber(String(Number(v.toPrecision(6)))), "aria-label": `${label(p)}: ${title}`, title });
   cell.append(
     law,
     field("low", lo, "low"),
@@ -109,17 +111,19 @@ function pickModel(name) {
       control = el("input", {
         id,
         "data-name": p.name,
-        value: value === null || value === undefined ? "" : String(value),
+        value: value === null || value === undefined ? "" : typeof value === "number" ? localNumber(String(value)) : String(value),
         placeholder: p.required ? "required" : "optional",
         "aria-describedby": `${id}-range`,
       });
     }
     const vary = el("input", { type: "checkbox", "aria-label": `vary ${label(p)}` });
     vary.disabled = !(p.kind === "float" || p.kind === "int");
-    const valueCell = el("td", {}, control);
+    const read = el("output", { class: "read-as" });
+    const valueCell = el("td", {}, control, read);
     const law = vary.disabled ? null : lawCell(p, typeof value === "number" ? value : Number(p.default));
     vary.addEventListener("change", () => {
-      valueCell.replaceChildren(vary.checked ? law : control);
+      valueCell.replaceChildren(vary.checked ? law : control, read);
+      echo(tr);
     });
     const tr = el(
       "tr",
@@ -129,6 +133,8 @@ function pickModel(name) {
       valueCell,
       el("td", { class: "unit", text: p.unit === "1" ? "" : p.unit }),
     );
+    tr.read = read;
+    tr.unit = p.unit;
     tr.vary = vary;
     tr.control = control;
     tr.law = law;
@@ -142,12 +148,37 @@ function pickModel(name) {
   for (const o of model.outputs.filter((o) => o.kind === "bool" && !o.series)) feas.append(el("option", { value: o.name, text: label(o) }));
 }
 
-function number(text) {
-  const t = String(text).trim().replace(/^(-?\d+),(\d+)$/, "$1.$2"); // a decimal comma
-  return t !== "" && !Number.isNaN(Number(t)) ? Number(t) : t;
+/**
+ * A typed value read under the decimal-separator setting: a number, "2000 mm" (a unit
+ * typed with it, sent in canonical form), or text (a designation) as typed. A number the
+ * setting cannot read ("2,5" with a decimal point) is collected in ``errors``, never sent.
+ */
+function number(text, what = "", errors = []) {
+  const t = String(text).trim();
+  const q = readQuantity(t);
+  if (q.ok) return q.unit ? `${q.canonical} ${q.unit}` : q.value;
+  if (!q.text && !q.empty) errors.push(`${what}: ${q.error}`);
+  return t;
 }
 
-function body() {
+/** The value read beside a row whose typed numbers differ from it ("= 2000 mm"), or why it cannot be read. */
+function echo(tr) {
+  const fields = tr.vary.checked ? [...tr.law.querySelectorAll("input:not([hidden])")] : tr.control.tagName === "INPUT" && tr.control.type !== "checkbox" ? [tr.control] : [];
+  const parts = [];
+  let bad = false;
+  for (const f of fields) {
+    const q = readQuantity(f.value);
+    const name = tr.vary.checked ? `${f.dataset.part} ` : "";
+    if (!q.ok && !q.empty && !q.text) { parts.push(`${name}${q.error}`); bad = true; continue; }
+    const typed = q.unit ? f.value.trim().slice(0, -q.unit.length) : f.value;
+    const unit = q.unit || (tr.unit === "1" ? "" : tr.unit);
+    if (q.ok && !isPlain(typed)) parts.push(`${name}= ${echoNumber(q.value)}${unit ? " " + unit : ""}`);
+  }
+  tr.read.textContent = parts.join("; ");
+  tr.read.classList.toggle("error", bad);
+}
+
+function body(errors = []) {
   const base = {};
   const variables = [];
   for (const tr of $("#study-rows").children) {
@@ -156,25 +187,25 @@ function body() {
       const v = { name, distribution: tr.law.querySelector("select").value };
       for (const input of tr.law.querySelectorAll("input")) {
         if (input.hidden || input.value.trim() === "") continue;
-        v[input.dataset.part] = input.dataset.part === "num" ? parseInt(input.value, 10) : number(input.value);
+        v[input.dataset.part] = input.dataset.part === "num" ? parseInt(input.value, 10) : number(input.value, `${label(model.inputs.find((p) => p.name === name))} (${input.dataset.part})`, errors);
       }
       variables.push(v);
     } else if (tr.control.type === "checkbox") {
       base[name] = tr.control.checked;
     } else if (tr.control.value.trim() !== "") {
-      base[name] = tr.control.tagName === "SELECT" ? tr.control.value : number(tr.control.value);
+      base[name] = tr.control.tagName === "SELECT" ? tr.control.value : number(tr.control.value, label(model.inputs.find((p) => p.name === name)), errors);
     }
   }
   const out = {
     base,
     variables,
     method: $("#study-method").value,
-    samples: parseInt($("#study-samples").value, 10) || 1000,
+    samples: parseInt(String(number($("#study-samples").value, "designs", errors)), 10) || 1000,
     seed: parseInt($("#study-seed").value, 10) || 0,
     keep_points: $("#study-keep").checked,
   };
   if ($("#study-fidelity").value) out.fidelity = $("#study-fidelity").value;
-  if ($("#study-tolerance").value.trim()) out.tolerance = Number(number($("#study-tolerance").value));
+  if ($("#study-tolerance").value.trim()) out.tolerance = Number(number($("#study-tolerance").value, "tolerance", errors));
   if ($("#study-feasible").value) out.feasible_when = $("#study-feasible").value;
   return out;
 }
@@ -187,7 +218,9 @@ function showError(detail) {
 async function run(event) {
   event.preventDefault();
   $("#study-error").textContent = "";
-  const b = body();
+  const errors = [];
+  const b = body(errors);
+  if (errors.length) return showError(errors.join("; "));
   if (!b.variables.length) return showError("tick at least one input to vary");
   $("#study-run").disabled = true;
   const r = await fetch(`${API}${model.path}/study`, {
@@ -511,5 +544,21 @@ function drawSensitivity(name) {
 }
 
 $("#study-form").addEventListener("submit", run);
+$("#study-rows").addEventListener("input", (e) => { const tr = e.target.closest("tr"); if (tr?.read) echo(tr); });
+{
+  // the decimal separator, shared with the form's page: a change rewrites the numbers, same values
+  const sep = $("#decimal-sep");
+  sep.value = decimalSeparator();
+  sep.addEventListener("change", () => {
+    const old = decimalSeparator();
+    setDecimalSeparator(sep.value);
+    for (const f of document.querySelectorAll("#study-form input:not([type=checkbox])")) {
+      if (f.dataset.part === "num" || f.id === "study-samples" || f.id === "study-seed") continue;
+      const q = readQuantity(f.value, old);
+      if (q.ok) f.value = localNumber(q.canonical) + (q.unit ? " " + q.unit : "");
+    }
+    for (const tr of $("#study-rows").children) echo(tr);
+  });
+}
 $("#study-cancel").addEventListener("click", cancel);
 loadCatalogue();

@@ -160,6 +160,12 @@ def _describe(api: httpx.Client, name: str) -> dict[str, Any]:
     return response.json()
 
 
+def _example(page: Any) -> None:
+    """Load example 1 from the form's chooser (a new design starts from the defaults)."""
+    if page.locator('#example option[value="0"]').count():
+        page.select_option("#example", "0")
+
+
 def _open(page: Any, base_url: str, fragment: str) -> None:
     page.goto("about:blank")  # a new hash alone would not reload the page
     page.goto(f"{base_url}/#{fragment}")
@@ -346,7 +352,8 @@ def walk_through(page: Any, api: httpx.Client, base_url: str, name: str) -> None
                     for o in options
                 ), f"{name}.{p['name']}: display unit {p['display_unit']!r} not offered"
 
-    # the worked example (defaults fill the rest), as the API computes it
+    # the worked example (defaults fill the rest), chosen as a person would, as the API computes it
+    _example(page)
     status = _submit(page)
     assert status == "ok", page.inner_text("#model")
     request = page.evaluate("window.calcState.lastRequest")
@@ -468,6 +475,7 @@ def walk_through(page: Any, api: httpx.Client, base_url: str, name: str) -> None
     if any(o["series"] for o in spec["outputs"]) and not any(expected_json["series"].values()):
         for rung in spec["rungs"]:
             _open(page, base_url, f"m={name}")
+            _example(page)
             page.select_option("#fidelity", rung["name"])
             if _submit(page) != "ok":
                 continue
@@ -521,6 +529,7 @@ def test_home_lists_every_family(page, api, base_url):
 
 def test_plots_shade_the_window_and_draw_a_histogram(page, base_url):
     _open(page, base_url, f"m={STRIKER.name}")
+    _example(page)
     assert _submit(page) == "ok"
     titles = page.locator("#series-plots .u-title").all_inner_texts()
     # travel and flywheel speed against time; preload counts as a histogram over the bin edges
@@ -543,6 +552,7 @@ def test_plots_shade_the_window_and_draw_a_histogram(page, base_url):
 
 def test_fidelity_selector_runs_the_named_rung(page, api, base_url):
     _open(page, base_url, f"m={TOY.name}")
+    _example(page)
     page.select_option("#fidelity", "rough")
     assert page.is_disabled("#tolerance")
     assert _submit(page) == "ok"
@@ -578,6 +588,7 @@ def test_infeasible_design_and_unit_strings(page, base_url):
 
 def test_result_units_and_a_shared_sweep(page, base_url):
     _open(page, base_url, f"m={STRIKER.name}")
+    _example(page)
     assert _submit(page) == "ok"
     # a result shown in another unit is the same SI value converted
     row = page.locator('#results tr[data-output="peak_travel"]')
@@ -657,6 +668,7 @@ def test_every_model_fits_a_phone_and_a_desktop(page, api, base_url, name):
     top = page.eval_on_selector("#model-title", "e => e.getBoundingClientRect().top")
     assert 0 <= top < PHONE["height"] / 2, f"{name}: the form starts at {top} px, off the screen"
     _no_horizontal_scroll(page)
+    _example(page)
     # the costliest rung returns the series (plots) where the model has any
     for rung in reversed(spec["rungs"]):
         page.select_option("#fidelity", rung["name"])
@@ -671,9 +683,6 @@ def test_every_model_fits_a_phone_and_a_desktop(page, api, base_url, name):
         "canvas", "cs => Math.max(0, ...cs.map(c => c.getBoundingClientRect().right))"
     )
     assert right <= PHONE["width"], f"{name}: a plot ends at {right} px"
-    if name == "preload.control":
-        DOCS_SHOTS.mkdir(parents=True, exist_ok=True)
-        page.screenshot(path=str(DOCS_SHOTS / "phone-form.png"), full_page=False)
     # the report view fits too
     page.click("#show-report")
     assert page.is_visible("#report-body")
@@ -688,6 +697,7 @@ def test_every_model_fits_a_phone_and_a_desktop(page, api, base_url, name):
 def test_a_shared_sweep_link_keeps_its_unit(page, base_url):
     """A sweep over 73–220 rad/s reopens as 73–220 rad/s (not rpm), with the same numbers."""
     _open(page, base_url, f"m={STRIKER.name}")
+    _example(page)
     assert _submit(page) == "ok"
     page.select_option("#sweep-vary", "speed")
     page.select_option("#sweep-unit", label="rad/s")
@@ -735,6 +745,7 @@ def test_a_shared_sweep_link_keeps_its_unit(page, base_url):
 
 def test_stale_results_are_marked_and_units_read_by_people(page, base_url):
     _open(page, base_url, f"m={TOY.name}")
+    _example(page)
     assert _submit(page) == "ok"
     assert page.is_hidden("#stale-note")
     first = page.evaluate("window.calcState.lastResponse.results")
@@ -750,7 +761,8 @@ def test_stale_results_are_marked_and_units_read_by_people(page, base_url):
     page.select_option("#unit-diameter", "m")
     assert page.is_hidden("#stale-note")
     page.select_option("#unit-diameter", "mm")
-    # a decimal comma is read as a point
+    # a decimal comma is read as a point once the comma is the decimal separator
+    page.select_option("#decimal-sep", ",")
     page.fill("#in-diameter", shown.replace(".", ",") if "." in shown else shown + ",5")
     assert page.inner_text("#err-diameter") == ""
     assert page.is_visible("#stale-note")
@@ -758,6 +770,7 @@ def test_stale_results_are_marked_and_units_read_by_people(page, base_url):
     assert page.is_hidden("#stale-note")
     sent = page.evaluate("window.calcState.lastRequest.diameter")
     assert "," not in sent and sent.endswith(" mm")
+    page.select_option("#decimal-sep", ".")
     # imperial: every unit changes at once, the answer does not
     page.fill("#in-diameter", shown)
     assert _submit(page) == "ok"
@@ -807,6 +820,7 @@ def test_histogram_bins_span_full_width_with_limit_lines(page, api, base_url):
 
 def test_save_open_and_compare_designs(page, base_url, tmp_path):
     _open(page, base_url, f"m={TOY.name}")
+    _example(page)
     page.fill("#report-part", "disc A")
     assert _submit(page) == "ok"
     first = page.evaluate("window.calcState.lastResponse.results")
@@ -955,10 +969,286 @@ def test_thread_picker_sends_the_designation_or_fills_the_numbers(page, base_url
 def test_inputs_announce_their_unit_and_range(page, base_url):
     _open(page, base_url, f"m={TOY.name}")
     ids = page.get_attribute("#in-diameter", "aria-describedby").split()
-    assert ids == ["desc-diameter", "hint-diameter", "err-diameter"]
+    assert ids == ["desc-diameter", "hint-diameter", "err-diameter", "read-diameter"]
     assert "allowed" in page.inner_text(f"#{ids[1]}")
     assert page.get_attribute("#unit-diameter", "aria-label") == "diameter unit"
     # plots have a table as their text alternative
     _open(page, base_url, f"m={STRIKER.name}")
     assert _submit(page) == "ok"
     assert page.locator("#series-plots details.data-table table").count() == 3
+
+
+# ---------------------------------------------- issue 31: entry that cannot go silently wrong
+
+# (decimal separator, typed, value read or None when refused); "2,000" was read as 2 before
+READINGS = [
+    (".", "2,000", 2000.0), (".", "1,500.25", 1500.25), (".", "2 000", 2000.0),
+    (".", "2\u202f000", 2000.0), (".", "12,345,678", 12345678.0), (".", "2,5", None),
+    (".", "2,00", None), (".", "1,5e3", None), (".", "1.5e3", 1500.0), (".", "-.5", -0.5),
+    (",", "2,5", 2.5), (",", "2.000", 2000.0), (",", "2 000", 2000.0), (",", "1.234,5", 1234.5),
+    (",", "2.5", None), (",", "1,5e-3", 0.0015), (",", "2,000", 2.0), (".", "", None),
+    (".", "abc", None), (".", "1..5", None), (",", ",5", 0.5),
+]  # fmt: skip
+
+
+def test_numbers_are_read_by_the_decimal_separator_setting(page: Any, base_url: str) -> None:
+    """The page's one number reader (static/numbers.js), run in the browser as a unit test."""
+    _open(page, base_url, "")
+    got = page.evaluate(
+        """async (cases) => {
+            const n = await import('./numbers.js');
+            return cases.map(([dec, text]) => { const r = n.readNumber(text, dec);
+                                               return r.ok ? r.value : null; });
+        }""",
+        [[d, t] for d, t, _ in READINGS],
+    )
+    assert got == [v for _, _, v in READINGS]
+    quantity = page.evaluate(
+        """async () => { const n = await import('./numbers.js');
+            return [n.readQuantity('2,000 lbf', '.'), n.readQuantity('1 000 mm', ','),
+                    n.readQuantity('2,5 mm', '.').ok, n.readQuantity('M12', '.').text,
+                    n.echoNumber(12345.5, ','), n.echoNumber(2000, '.')]; }"""
+    )
+    assert quantity[0] | {} == {"ok": True, "value": 2000, "canonical": "2000", "grouped": True,
+                                "unit": "lbf"}  # fmt: skip
+    assert (quantity[1]["canonical"], quantity[1]["unit"]) == ("1000", "mm")
+    assert quantity[2:] == [False, True, "12\u202f345,5", "2000"]
+
+
+def test_imperial_2000_lbf_is_sent_as_2000_lbf_or_refused(page: Any, base_url: str) -> None:
+    """Typed "2,000" in lbf is 2,000 lbf with a decimal point, echoed beside the field;
+    "2,5" is refused at the field and not sent; with a decimal comma the reverse."""
+    name = "joint.vdi2230"
+    if name not in [s.name for s in REAL]:
+        pytest.skip(f"{name} is not registered")
+    _open(page, base_url, "")
+    page.select_option("#decimal-sep", ".")
+    page.select_option("#unit-system", "imperial")
+    _open(page, base_url, f"m={name}&ex=0")
+    page.wait_for_selector("body[data-result]")
+    assert page.inner_text("#unit-working_load option:checked") == "lbf"
+    page.fill("#in-working_load", "2,000")
+    assert page.inner_text("#read-working_load") == "= 2000 lbf"
+    assert page.inner_text("#err-working_load") == ""
+    assert _submit(page) == "ok"
+    assert page.evaluate("window.calcState.lastRequest.working_load") == "2000 lbf"
+    n_per_lbf = 4.4482216152605  # 1 lbf = 0.45359237 kg × 9.80665 m/s²
+    sent = page.evaluate("window.calcState.lastResponse.inputs.working_load")
+    assert sent == pytest.approx(2000 * n_per_lbf, rel=1e-12)
+    assert "working_load=2000+lbf" in page.url  # the link holds the canonical number
+    # a decimal comma under a decimal point: refused at the field, nothing sent
+    before = page.evaluate("window.calcState.lastResponse.inputs.working_load")
+    page.fill("#in-working_load", "2,5")
+    message = page.inner_text("#err-working_load")
+    assert "“2,5” is not a number with the decimal point" in message, message
+    assert page.inner_text("#read-working_load") == ""
+    assert _submit(page) == "error"
+    assert "cannot be read" in page.inner_text("#error-box")
+    assert page.evaluate("window.calcState.lastResponse.inputs.working_load") == before
+    # the comma as decimal separator: "2,5" is 2.5 lbf; "2.000" and "2 000" group
+    page.select_option("#decimal-sep", ",")
+    assert page.inner_text("#err-working_load") == ""
+    assert _submit(page) == "ok"
+    assert page.evaluate("window.calcState.lastRequest.working_load") == "2.5 lbf"
+    for typed in ("2.000", "2 000"):
+        page.fill("#in-working_load", typed)
+        assert page.inner_text("#read-working_load") == "= 2000 lbf"
+        assert _submit(page) == "ok"
+        assert page.evaluate("window.calcState.lastRequest.working_load") == "2000 lbf"
+    page.fill("#in-working_load", "2.5")
+    assert "decimal comma" in page.inner_text("#err-working_load")
+    # loaded numbers are shown with the comma; the setting stays for the next page
+    _open(page, base_url, f"m={name}&ex=0")
+    assert "," in page.input_value("#in-thread_diameter")
+    assert page.input_value("#decimal-sep") == ","
+    # the sweep's range is read the same way
+    page.wait_for_selector("body[data-result]")
+    page.select_option("#sweep-vary", "working_load")
+    page.fill("#sweep-start", "1.000")
+    page.fill("#sweep-stop", "2.000")
+    assert page.inner_text("#sweep-read") == "= 1000 … 2000 lbf"
+    page.fill("#sweep-num", "3")
+    page.click("#sweep-run")
+    assert _wait_sweep(page) == "ok"
+    sweep = page.evaluate("window.calcState.lastSweep.request")
+    assert (sweep["start"], sweep["stop"]) == ("1000 lbf", "2000 lbf")
+    page.fill("#sweep-stop", "2.5")
+    assert "decimal comma" in page.inner_text("#sweep-read")
+    page.evaluate("delete document.body.dataset.sweep")
+    page.click("#sweep-run")
+    assert _wait_sweep(page) == "error"
+    assert "Sweep not run" in page.inner_text("#sweep-error")
+
+
+def test_the_study_page_reads_numbers_by_the_same_setting(page: Any, base_url: str) -> None:
+    _open(page, base_url, "")
+    page.select_option("#decimal-sep", ",")
+    page.goto(f"{base_url}/study.html?model={STRIKER.name}")
+    page.wait_for_selector("#study-rows tr")
+    assert page.input_value("#decimal-sep") == ","
+    row = 'tr[data-name="mass"]'
+    page.fill(f"{row} input[data-name]", "2.000")
+    assert page.inner_text(f"{row} output.read-as") == "= 2000 kg"
+    page.fill(f"{row} input[data-name]", "2.5")
+    assert "decimal comma" in page.inner_text(f"{row} output.read-as")
+    page.check('tr[data-name="speed"] input[type=checkbox]')
+    page.click("#study-run")
+    assert "decimal comma" in page.inner_text("#study-error")
+    assert page.is_enabled("#study-run")  # nothing was submitted
+
+
+@pytest.mark.parametrize("name", [s.name for s in (*REAL, TOY)])
+def test_a_new_design_starts_from_the_declared_defaults(
+    page: Any, api: httpx.Client, base_url: str, name: str
+) -> None:
+    """The form opens on the model's declared defaults (nothing from an example); Compute
+    either answers or names at its field each input still missing; example 1 is one choice
+    away and computes."""
+    spec = _describe(api, name)
+    _open(page, base_url, f"m={name}")
+    assert page.input_value("#example") == "defaults"
+    for p in spec["inputs"]:
+        field = f"#in-{p['name']}"
+        if p["kind"] == "bool":
+            assert page.is_checked(field) == bool(p["default"]), p["name"]
+        elif p["kind"] in ("choice", "text"):
+            assert page.input_value(field) == (p["default"] or ""), p["name"]
+        elif p["default"] is None:
+            assert page.input_value(field) == "", p["name"]  # nothing invented
+        else:
+            factor = page.eval_on_selector(
+                f"#unit-{p['name']}",
+                "u => Number(u.selectedOptions ? u.selectedOptions[0].dataset.factor"
+                " : u.dataset.factor)",
+            )
+            shown = float(page.input_value(field)) * factor
+            assert shown == pytest.approx(p["default"], rel=1e-6, abs=1e-300), p["name"]
+    # Compute answers, or names at its field each input still missing
+    if _submit(page) == "error":
+        marked = page.eval_on_selector_all(".field.invalid", "fs => fs.map(f => f.dataset.field)")
+        box = page.inner_text("#error-box")
+        assert marked, box
+        labels = {p["name"]: p["label"] for p in spec["inputs"]}
+        for field in marked:
+            assert labels[field] in box and page.inner_text(f"#err-{field}"), (field, box)
+        missing = [p["name"] for p in spec["inputs"] if p["required"] and p["default"] is None]
+        assert set(missing) <= set(marked), (missing, marked)
+    # the worked example is one choice away
+    if spec["examples"]:
+        page.select_option("#example", "0")
+        assert _submit(page) == "ok", page.inner_text("#error-box")
+        if name == "joint.vdi2230":  # example 1's transverse load is the example's, not a default
+            assert page.evaluate("window.calcState.lastResponse.inputs.transverse_load") == 2000.0
+            page.select_option("#example", "defaults")
+            assert page.input_value("#in-transverse_load") == "0"
+
+
+# ---------------------------------------------- issue 31: the answer in reach
+
+ANSWER_MODEL = "joint.vdi2230" if "joint.vdi2230" in [s.name for s in REAL] else STRIKER.name
+CONTROLS = (
+    "#form input:not(.file), #form select, #form button, #model .actions button,"
+    " #model .actions select, #model .actions label.button"
+)
+
+
+@pytest.fixture()
+def phone(browser: Any, base_url: str) -> Iterator[Any]:
+    """A 390 px phone page (twice the pixels, for legible screenshots), local requests only."""
+    context = browser.new_context(viewport=PHONE, device_scale_factor=2, has_touch=True)
+    context.set_default_timeout(TIMEOUT_MS)
+    context.route(
+        "**/*",
+        lambda route: (
+            route.continue_() if route.request.url.startswith(base_url) else route.abort()
+        ),
+    )
+    pg = context.new_page()
+    problems: list[str] = []
+    pg.on("pageerror", lambda exc: problems.append(str(exc)))
+    yield pg
+    context.close()
+    assert not problems, problems
+
+
+def _in_view(page: Any, selector: str) -> bool:
+    return bool(
+        page.eval_on_selector(
+            selector,
+            "e => { const b = e.getBoundingClientRect();"
+            " return b.top >= 0 && b.bottom <= innerHeight && b.height > 0; }",
+        )
+    )
+
+
+def _focused(page: Any) -> str:
+    return str(page.evaluate("document.activeElement ? document.activeElement.id : ''"))
+
+
+def test_keyboard_reaches_compute_and_the_answer_on_a_desktop(page: Any, base_url: str) -> None:
+    """A skip link leads to Compute (the first Tab, where 108 Tabs were needed); after
+    Compute from a field at the top of the form the result is in view and its heading has
+    the focus; one live region says what happened (there were 66 alert regions)."""
+    page.set_viewport_size(DESKTOP)
+    _open(page, base_url, f"m={ANSWER_MODEL}")
+    live = "document.querySelectorAll('[role=alert], [role=status], [aria-live]').length"
+    assert page.evaluate(live) == 1
+    page.keyboard.press("Tab")
+    assert page.evaluate("document.activeElement.textContent") == "Skip to Compute"
+    page.keyboard.press("Enter")
+    assert _focused(page) == "compute" and _in_view(page, "#compute")
+    assert "#m=" in page.url  # the skip link leaves the route alone
+    DOCS_SHOTS.mkdir(parents=True, exist_ok=True)
+    page.evaluate("window.scrollTo(0, 0)")
+    page.screenshot(path=str(DOCS_SHOTS / "desktop-form.png"))
+    _example(page)
+    page.focus("#form input[type=text]")
+    page.evaluate("window.scrollTo(0, 0)")
+    page.evaluate("delete document.body.dataset.result")
+    page.keyboard.press("Enter")
+    page.wait_for_selector("body[data-result]")
+    assert page.evaluate("document.body.dataset.result") == "ok"
+    assert _focused(page) == "result-heading"
+    assert page.get_attribute("#result-heading", "tabindex") == "-1"
+    assert _in_view(page, "#result-heading")
+    assert page.inner_text("#announce").startswith("Computed")
+    assert page.evaluate(live) == 1
+    page.screenshot(path=str(DOCS_SHOTS / "desktop-results.png"))
+    # a refusal is said in the same region, and the focus goes to the field refused
+    first = page.eval_on_selector("#form input[inputmode=decimal]", "e => e.id")
+    page.fill(f"#{first}", "-1")
+    assert _submit(page) == "error"
+    assert page.inner_text("#announce").startswith("Not computed")
+    marked = ".field.invalid input, .field.invalid select"
+    assert _focused(page) == page.eval_on_selector(marked, "e => e.id")
+
+
+@pytest.mark.parametrize("name", [s.name for s in (*REAL, STRIKER)])
+def test_on_a_phone_compute_is_on_the_first_screen_and_every_control_44px(
+    phone: Any, base_url: str, name: str
+) -> None:
+    """Picked from the menu on a 390 px phone: Compute shows at once (a bar at the bottom of
+    the window; it was 10 screens down), no control of the form is under 44 px (207 of 212
+    were), and after Compute the result is in view with the focus on its heading."""
+    _open(phone, base_url, "")
+    phone.click(f'nav a[data-model="{name}"]')
+    phone.wait_for_selector("#model-title")
+    assert _in_view(phone, "#compute"), f"{name}: Compute is off the first screen"
+    small = phone.eval_on_selector_all(
+        CONTROLS,
+        """cs => cs.filter(c => c.offsetParent !== null)
+                   .map(c => [c.id || c.name || c.textContent, c.getBoundingClientRect().height])
+                   .filter(([, h]) => h < 44)""",
+    )
+    assert not small, f"{name}: controls under 44 px: {small}"
+    if name == ANSWER_MODEL:
+        DOCS_SHOTS.mkdir(parents=True, exist_ok=True)
+        phone.screenshot(path=str(DOCS_SHOTS / "phone-form.png"))
+    _example(phone)
+    phone.evaluate("delete document.body.dataset.result")
+    phone.click("#compute")  # no scrolling: the bar is on screen
+    phone.wait_for_selector("body[data-result]")
+    assert phone.evaluate("document.body.dataset.result") == "ok"
+    assert _focused(phone) == "result-heading" and _in_view(phone, "#result-heading")
+    if name == ANSWER_MODEL:
+        phone.screenshot(path=str(DOCS_SHOTS / "phone-results.png"))

@@ -1,0 +1,117 @@
+// Typed numbers, read one way on both pages (the form and the design study).
+//
+// The user chooses the decimal separator ("." or ","), stored with the other page
+// settings; its default is the browser's locale. The other mark (and a space) may only
+// group digits in threes: with "." as decimal separator "2,000" is 2000 and "2,5" is
+// refused, with "," "2,5" is 2.5 and "2.000" or "2 000" is 2000. Nothing is guessed:
+// what cannot be read under the setting is refused with a message saying why. Numbers
+// travel to the API and into links in one canonical form (a point, no grouping), so a
+// link means the same on every machine.
+
+const KEY = "decimal-separator";
+
+/** The decimal separator of the browser's locale: "," or ".". */
+export function localeDecimal() {
+  try {
+    const part = new Intl.NumberFormat().formatToParts(1.5).find((p) => p.type === "decimal");
+    return part && part.value === "," ? "," : ".";
+  } catch {
+    return ".";
+  }
+}
+
+/** The decimal separator chosen on the page (or the locale's until one is chosen). */
+export function decimalSeparator() {
+  const saved = localStorage.getItem(KEY);
+  return saved === "," || saved === "." ? saved : localeDecimal();
+}
+
+export function setDecimalSeparator(sep) {
+  localStorage.setItem(KEY, sep === "," ? "," : ".");
+}
+
+// spaces that may group digits: space, no-break space, narrow no-break space, thin space
+const SPACES = " \u00a0\u202f\u2009";
+
+/**
+ * A typed number read under the decimal separator ``dec``:
+ * ``{ok: true, value, canonical, grouped}`` or ``{ok: false, error}``; ``{empty: true}``
+ * for blank text. ``canonical`` is the number as the API reads it (a point, no grouping,
+ * any exponent as typed); ``grouped`` says the text held grouping marks. For example
+ * readNumber("2,000", ".") is 2000, readNumber("2,5", ".") is refused and
+ * readNumber("2,5", ",") is 2.5 (tests/e2e/test_browser.py runs these in the browser).
+ */
+export function readNumber(text, dec = decimalSeparator()) {
+  const s = String(text ?? "").trim();
+  if (s === "") return { ok: false, empty: true, error: "" };
+  const other = dec === "," ? "." : ",";
+  const esc = (c) => c.replace(/[.\\]/g, "\\$&");
+  const grp = `[${esc(other)}${SPACES}]`;
+  const m = s.match(new RegExp(`^([+-]?)(\\d[\\d${esc(other)}${SPACES}]*|)(?:${esc(dec)}(\\d*))?([eE][+-]?\\d+)?$`));
+  const sayWhy = () => {
+    const want = dec === "," ? "2,5" : "2.5";
+    const thousands = dec === "," ? "2.000" : "2,000";
+    const name = dec === "," ? "comma" : "point";
+    return `“${s}” is not a number with the decimal ${name} “${dec}”: write ${want}, or ${thousands} for two thousand (“decimal” at the top of the page)`;
+  };
+  if (!m) return { ok: false, error: sayWhy() };
+  const [, sign, whole, frac, exp] = m;
+  if (whole === "" && (frac === undefined || frac === "")) return { ok: false, error: sayWhy() };
+  const grouped = new RegExp(grp).test(whole);
+  if (grouped && !new RegExp(`^\\d{1,3}(?:${grp}\\d{3})+$`).test(whole)) return { ok: false, error: sayWhy() };
+  const digits = whole.replace(new RegExp(grp, "g"), "");
+  const canonical = `${sign}${digits || "0"}${frac !== undefined && frac !== "" ? "." + frac : ""}${exp ?? ""}`;
+  const value = Number(canonical);
+  if (!Number.isFinite(value)) return { ok: false, error: `“${s}” is too large a number` };
+  return { ok: true, value, canonical, grouped };
+}
+
+/** The number of ``readNumber(text).value``, or NaN. */
+export function parseNum(text, dec = decimalSeparator()) {
+  const r = readNumber(text, dec);
+  return r.ok ? r.value : NaN;
+}
+
+/**
+ * A typed quantity: a number, or a number followed by a unit ("2,000 lbf", "45 mm"), the
+ * number read under the setting. ``{ok, value, canonical, unit}`` (``unit`` "" for a bare
+ * number), ``{ok: false, error}``, or ``{ok: false, text: true}`` when the text does not
+ * start with a number (a designation, a word: left for the server to judge).
+ */
+export function readQuantity(text, dec = decimalSeparator()) {
+  const s = String(text ?? "").trim();
+  const bare = readNumber(s, dec);
+  if (bare.ok || bare.empty) return { ...bare, unit: "" };
+  const m = s.match(/^([+-]?[\d.,\u00a0\u202f\u2009 ]*\d(?:[eE][+-]?\d+)?|[+-]?[.,]\d+(?:[eE][+-]?\d+)?)\s*([^\d\s.,+-].*)$/);
+  if (!m) return /^[+-]?[\d.,]/.test(s) ? { ok: false, error: bare.error } : { ok: false, text: true, error: "" };
+  // "1 000 mm": the last space may end the number rather than group it
+  const r = readNumber(m[1], dec);
+  if (!r.ok) return { ok: false, error: readNumber(m[1].trim(), dec).error || r.error };
+  return { ...r, unit: m[2].trim() };
+}
+
+/** A number written for the user: the canonical text ("12.5", "1.5e-7") with their decimal separator. */
+export function localNumber(canonical, dec = decimalSeparator()) {
+  return dec === "," ? String(canonical).replace(".", ",") : String(canonical);
+}
+
+/** Plain text the user typed (digits, at most one decimal separator): nothing to echo. */
+export function isPlain(text, dec = decimalSeparator()) {
+  const d = dec === "," ? "," : "\\.";
+  return new RegExp(`^[+-]?(\\d+(${d}\\d*)?|${d}\\d+)$`).test(String(text ?? "").trim());
+}
+
+/**
+ * The value read, written so it cannot be misread: no grouping marks below five digits,
+ * narrow no-break spaces above, the user's decimal separator ("2000", "12 345,5").
+ */
+export function echoNumber(value, dec = decimalSeparator()) {
+  let s = String(Number(value.toPrecision(12)));
+  if (/e/.test(s)) return localNumber(s, dec);
+  const [whole, frac] = s.split(".");
+  const sign = whole.startsWith("-") ? "-" : "";
+  const digits = whole.replace("-", "");
+  const g = digits.length >= 5 ? digits.replace(/\B(?=(\d{3})+(?!\d))/g, "\u202f") : digits;
+  s = sign + g + (frac ? (dec === "," ? "," : ".") + frac : "");
+  return s;
+}
