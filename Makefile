@@ -59,7 +59,7 @@ test-fast: $(VENV)/.installed-dev
 
 # Mutation testing of the physics modules, each against its own tests (scripts/mutate.py):
 # a seeded sample within a time budget; prints the share killed and the survivors. Not in CI.
-#   make mutate MODULES="engine/springs.py engine/threads.py" SAMPLE=80 SEED=1
+#   make mutate MODULES="engine/physics/springs.py engine/physics/threads.py" SAMPLE=80 SEED=1
 MODULES ?=
 SAMPLE ?= 100
 SEED ?= 0

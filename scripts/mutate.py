@@ -16,7 +16,8 @@ copies run side by side (``--jobs``).
 Prints, per module and in total, the share killed and each survivor with its diff;
 ``--json`` writes the same as data. Not part of CI or ``make test``.
 
-    python scripts/mutate.py engine/springs.py engine/threads.py --sample 80 --seed 1
+    python scripts/mutate.py engine/physics/springs.py engine/physics/threads.py \
+        --sample 80 --seed 1
 """
 
 from __future__ import annotations
