@@ -689,18 +689,20 @@ def _solve(
 
     # R4 thermal loss at the lowest service preload -----------------------------------------------
     dt_s = col("temperature_change")
-    th_loss = jt.thermal_preload_loss(
-        fm_min - f_z,
-        grip,
-        col("bolt_expansion"),
-        dt_s,
-        jt.plates_expansion_length(thick, alphas),
-        col_or("plate_temperature_change", dt_s),
-        delta_s,
-        delta_p,
-        col("bolt_modulus_ratio"),
-        col("plate_modulus_ratio"),
+    thermal = partial(
+        jt.thermal_preload_loss,
+        grip=grip,
+        bolt_expansion=col("bolt_expansion"),
+        bolt_temperature_change=dt_s,
+        clamped_expansion_length=jt.plates_expansion_length(thick, alphas),
+        plate_temperature_change=col_or("plate_temperature_change", dt_s),
+        bolt=delta_s,
+        clamped=delta_p,
+        bolt_modulus_ratio=col("bolt_modulus_ratio"),
+        clamped_modulus_ratio=col("plate_modulus_ratio"),
     )
+    th_loss = thermal(fm_min - f_z)
+    th_top = thermal(fm_max)  # R8: the change at the largest assembly preload
     loss = jt.preload_losses(f_z, th_loss)
 
     # R5/R6 required window, R7 against it ---------------------------------------------------------
@@ -721,7 +723,7 @@ def _solve(
 
     # R8 working stress ---------------------------------------------------------------------------
     add_load = jt.additional_bolt_load(phi_n, f_a)
-    f_s_max = jt.max_bolt_force(fm_max, add_load)
+    f_s_max = jt.max_bolt_force(fm_max, add_load, th_top)
     stress = jt.service_stress(f_s_max, fm_max, pitch, d2, d0, mu_g_lo)
     refusals.arithmetic(stress.equivalent == 0.0, "σ_red,B = 0")
     refusals.arithmetic(
@@ -959,6 +961,7 @@ def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[s
         f"{_kn(s['residual_clamp_force_min'])} vs required F_K,erf = {_kn(f_kerf)}"
         + ("" if clamp_ok else ": raise the preload floor (torque, method) or lower F_A"),
         "R8_working_stress": f"σ_red,B = {stress / 1e6:.4g} MPa at F_S,max = "
+        "F_M,max + Φ_n F_A − ΔF_Vth (a thermal gain only) = "
         f"{_kn(s['max_bolt_force'])} vs R_p0.2 = {bolt.yield_strength / 1e6:.4g} MPa: S_F = "
         f"{s_f:.3g} (≥ 1.0)",
         "R9_fatigue": "σ_a = Φ_n (F_A,max − F_A,min)/(2 A_S) = "

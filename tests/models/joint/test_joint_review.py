@@ -1,0 +1,123 @@
+"""The joint items of the 2026-11-26 review (issue 29), each held to a number worked out by
+hand here from the VDI 2230-1 relations (not with the engine), the review's figures as a
+cross-check."""
+
+import math
+
+import pytest
+
+from engine import run
+from engine.models import get_model
+
+JOINT = get_model("joint.vdi2230")
+
+# M12 coarse: ISO 68-1 / ISO 898-1 basics
+D, P = 0.012, 0.00175
+D2 = D - 0.649519 * P  # 10.863 mm
+D3 = D - 1.226869 * P  # 9.853 mm
+DS = (D2 + D3) / 2  # stress diameter, 10.358 mm
+A_S, A_D3, A_N = math.pi / 4 * DS**2, math.pi / 4 * D3**2, math.pi / 4 * D**2
+DW, DH = 0.01663, 0.0135  # ISO 4017 d_w,min, ISO 273 medium hole
+E_S = 2.1e11
+
+
+def _cone(grip, e, da):
+    """VDI 2230-1 R3, through-bolted, one material: cones alone where D_A ≥ D_A,Gr."""
+    beta, y = grip / DW, da / DW
+    tan = 0.362 + 0.032 * math.log(beta / 2) + 0.153 * math.log(y)
+    limit = DW + grip * tan
+    if da >= limit:
+        arg = (DW + DH) * (limit - DH) / ((DW - DH) * (limit + DH))
+        return 2 * math.log(arg) / (e * math.pi * DH * tan)
+    arg = (DW + DH) * (da - DH) / ((DW - DH) * (da + DH))
+    cone = 2 / (DH * tan) * math.log(arg)
+    sleeve = 4 / (da**2 - DH**2) * (grip - (da - DW) / tan)
+    return (cone + sleeve) / (e * math.pi)
+
+
+def _bolt_through(grip):
+    """VDI 2230-1 R3: hex head 0.5d, free thread l_K, engaged 0.5d, nut 0.4d (steel)."""
+    return (0.5 * D / A_N + grip / A_D3 + 0.5 * D / A_D3 + 0.4 * D / A_N) / E_S
+
+
+def _f_mzul(mu, nu=0.9, rp=640e6):
+    """VDI 2230-1 R7 at the stress section."""
+    k = 1.5 * D2 / DS * (P / (math.pi * D2) + mu / math.cos(math.radians(30)))
+    return nu * rp * A_S / math.sqrt(1 + 3 * k * k)
+
+
+def _sigma_red(f_s, f_m, mu):
+    """VDI 2230-1 R8: σ_z = F_S,max/A_0, τ = M_G/W_P with k_τ = 0.5."""
+    m_g = f_m * D2 / 2 * (P / (math.pi * D2) + 1.155 * mu)  # R8/3 as VDI prints it
+    tau = m_g / (math.pi * DS**3 / 16)
+    return math.sqrt((f_s / A_S) ** 2 + 3 * (0.5 * tau) ** 2)
+
+
+ALUMINIUM_HOT = {
+    "thread_diameter": D,
+    "plate1_thickness": 0.020,
+    "plate2_thickness": 0.020,
+    "plate1_youngs_modulus": 7e10,
+    "plate1_expansion": 23e-6,
+    "outer_diameter": 0.040,
+    "temperature_change": 150.0,
+    "working_load": 0.0,
+}
+
+
+def test_r8_counts_the_thermal_preload_gain():
+    # ΔF_Vth = l_K (α_S − α_P) ΔT / (δ_S + δ_P): the aluminium grows 0.04 × 11.5e-6 × 150 m
+    # more than the bolt, a gain of ≈ 12.9 kN (negative loss)
+    delta_s, delta_p = _bolt_through(0.040), _cone(0.040, 7e10, 0.040)
+    gain = 0.040 * (11.5e-6 - 23e-6) * 150 / (delta_s + delta_p)
+    f_mzul = _f_mzul(0.12)
+    f_s_max = f_mzul - gain  # R8/1 with F_A = 0
+    sigma = _sigma_red(f_s_max, f_mzul, 0.12)
+    r = run(JOINT, ALUMINIUM_HOT)
+    v = r.results
+    assert v["thermal_loss"] == pytest.approx(gain, rel=1e-9)
+    assert v["max_bolt_force"] == pytest.approx(f_s_max, rel=1e-9)
+    assert v["working_stress"] == pytest.approx(sigma, rel=1e-9)
+    assert v["yield_safety"] == pytest.approx(640e6 / sigma, rel=1e-9)
+    # the review's figures: 12.9 kN, F_S,max 56.05 kN, σ_red,B 688 MPa, S_F 0.93
+    assert -gain == pytest.approx(12.9e3, abs=0.05e3)
+    assert v["max_bolt_force"] == pytest.approx(56.05e3, abs=0.01e3)
+    assert v["working_stress"] == pytest.approx(688e6, abs=0.5e6)
+    assert round(v["yield_safety"], 2) == 0.93
+    check = {c.name: c for c in r.checks}["R8_working_stress"]
+    assert not check.ok
+    assert "ΔF_Vth" in check.detail
+
+
+def test_r8_credits_no_thermal_loss_and_softening_enters():
+    # a steel bolt heated more than steel plates loses preload: F_S,max stays F_M,zul
+    cool = {**ALUMINIUM_HOT, "plate1_youngs_modulus": E_S, "plate1_expansion": 11.5e-6}
+    cool |= {"plate_temperature_change": 0.0}
+    v = run(JOINT, cool).results
+    assert v["thermal_loss"] > 0.0
+    assert v["max_bolt_force"] == pytest.approx(_f_mzul(0.12), rel=1e-9)
+    # the aluminium case with the plates' E at 150 °C 0.9 of room temperature: the bolt force
+    # at temperature is F_M (δ_S + δ_P)/(δ_S + δ_P/0.9) − l_K (α_S − α_P) ΔT/(δ_S + δ_P/0.9)
+    soft = {**ALUMINIUM_HOT, "plate_modulus_ratio": 0.9}
+    delta_s, delta_p = _bolt_through(0.040), _cone(0.040, 7e10, 0.040)
+    den = delta_s + delta_p / 0.9
+    f_m = _f_mzul(0.12)
+    hot = f_m * (delta_s + delta_p) / den - 0.040 * (11.5e-6 - 23e-6) * 150 / den
+    assert run(JOINT, soft).results["max_bolt_force"] == pytest.approx(hot, rel=1e-9)
+
+
+def test_r10_working_pressure_takes_the_hot_bolt_force():
+    # p = F / A_p with A_p = π/4 (d_W² − d_h²) = 74.07 mm²: at F_M,zul 582 MPa, at the hot
+    # F_S,max 757 MPa; a p_G of 700 MPa holds the first and not the second
+    a_p = math.pi / 4 * (DW**2 - DH**2)
+    f_s_max = _f_mzul(0.12) - 0.040 * (11.5e-6 - 23e-6) * 150 / (
+        _bolt_through(0.040) + _cone(0.040, 7e10, 0.040)
+    )
+    assert _f_mzul(0.12) / a_p < 700e6 < f_s_max / a_p
+    x = {**ALUMINIUM_HOT, "limiting_surface_pressure": 700e6}
+    x["thread"] = "M12 ISO 4017 8.8"
+    del x["thread_diameter"]
+    checks = {c.name: c for c in run(JOINT, x).checks}
+    assert checks["surface_pressure_assembly"].ok
+    assert not checks["surface_pressure_working"].ok
+    assert f"{f_s_max / a_p / 1e6:.4g} MPa" in checks["surface_pressure_working"].detail
