@@ -326,6 +326,20 @@ SOURCES: dict[str, Source] = {
             "classes (engine.fasteners).",
         ),
         Source(
+            id="EN20898-2",
+            kind="standard",
+            title="Mechanical properties of fasteners - Part 2: Nuts with specified proof "
+            "load values - Coarse thread",
+            authors="ISO / CEN",
+            year="1992",
+            published="ISO 898-2:1992 = EN 20898-2:1993 (as reproduced by Bossard, technical "
+            "information 'Nuts property classes 04 to 12', and a DIN EN 20898-2 proof-load "
+            "extract)",
+            covers="Stress under proof load S_p by nut class and size range (04/05 380/500 MPa; "
+            "class 8 M12 880 MPa, proof load 74 200 N); class N nuts with bolts up to N.x "
+            "(engine.fasteners.nut_proof_stress, nut_pairs_with_bolt).",
+        ),
+        Source(
             id="SAEJ429",
             kind="standard",
             title="Mechanical and Material Requirements for Externally Threaded Fasteners",
@@ -618,6 +632,7 @@ _PATTERNS: tuple[tuple[re.Pattern[str], str | None], ...] = (
     (re.compile(r"\bISO 262\b"), "ISO262"),
     (re.compile(r"\bISO 3506(?:-1)?\b"), "ISO3506-1"),
     (re.compile(r"\bISO 898-2\b"), "ISO898-2"),
+    (re.compile(r"\bEN 20898-2\b"), "EN20898-2"),
     (re.compile(r"\bSAE J429\b"), "SAEJ429"),
     (re.compile(r"\bASTM A193\b"), "ASTMA193"),
     (re.compile(r"\bASME B1\.1\b"), "ASMEB1.1"),

@@ -34,7 +34,8 @@ from .preload import BOLT_INPUTS, Bolt, resolve_bolt
 SOURCE = (
     "VDI 2230-1:2015 steps R0–R13 (text paywalled: relations as reproduced in "
     "ECSS-E-HB-32-23A §6–7 and the open implementation misams/BAT); [004] eq. 2–8 for the "
-    "review's preload rules; ISO 68-1, 261, 273, 898-1, 4017"
+    "review's preload rules; ISO 68-1, 261, 273, 898-1, 4017; nut proof loads of ISO 898-2:1992 "
+    "(EN 20898-2)"
 )
 
 #: Bolt-family control methods (the sucker-rod ones do not tighten a bolted joint).
@@ -432,6 +433,15 @@ JOINT_INPUTS: tuple[Param, ...] = (
     ),
     # bought-part checks (issue 15): surface pressure VDI 2230-1 R10, engagement R11
     *(p for p in fz.CHECK_INPUTS if p.name != "working_bolt_force"),
+    Param(
+        "nut_property_class",
+        "1",
+        "Property class of the nut (ISO 898-2; 04/05: thin nuts): its proof load caps F_M,zul; "
+        "absent: the lowest class the nut standard is made in that pairs with the bolt",
+        kind="choice",
+        choices=fa.NUT_PROPERTY_CLASSES,
+        group="fastener",
+    ),
 )
 
 # --------------------------------------------------------------------------- hooks
@@ -506,6 +516,46 @@ def _larger(a: Any, b: Any) -> Any:
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
         return np.maximum(a, b)
     return max(a, b)
+
+
+def _pick(condition: Any, a: Any, b: Any) -> Any:
+    if isinstance(condition, np.ndarray) or isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return np.where(condition, a, b)
+    return a if condition else b
+
+
+@dataclass(frozen=True)
+class NutChoice:
+    """The nut of a through-bolted joint as ISO 898-2 rates it."""
+
+    standard: str
+    style: str
+    property_class: str
+    given: bool
+    pairs: bool | None  # with the bolt's class; None: the bolt's R_m is unknown
+
+
+def _nut_choice(x: Mapping[str, Any], bolt_tensile_strength: float | None) -> NutChoice | None:
+    """The nut's class: as given, else the lowest class its standard is made in that pairs
+    with the bolt (ISO 898-2), else the strongest it is made in."""
+    if x.get("nut") is None:
+        return None
+    standard = str(x["nut"])
+    style, made = fa.NUT_CLASSES[standard]
+    given = x.get("nut_property_class") is not None
+    if given:
+        cls = str(x["nut_property_class"])
+    elif bolt_tensile_strength is not None:
+        paired = [c for c in made if fa.nut_pairs_with_bolt(c, bolt_tensile_strength)]
+        cls = paired[0] if paired else made[-1]
+    else:
+        cls = made[-1]
+    pairs = (
+        None
+        if bolt_tensile_strength is None
+        else fa.nut_pairs_with_bolt(cls, bolt_tensile_strength)
+    )
+    return NutChoice(standard, style, cls, given, pairs)
 
 
 def _plain(value: Any) -> Any:
@@ -657,8 +707,15 @@ def _solve(
     a0 = jt.smallest_area(d0, a_s, where)
     nu = col("utilization")
     beta = _plain(pl.torsion_factor(pitch, d2, d0, mu_g_lo, "vdi2230"))
-    f_mzul = pl.assembly_preload(yield_strength, a0, beta, nu)
+    f_mzul_bolt = pl.assembly_preload(yield_strength, a0, beta, nu)
     f_myield = pl.assembly_preload(yield_strength, a0, beta, 1.0)
+    # the nut's proof load (ISO 898-2) caps the preload a through bolt may be given
+    nut = b.get("_nut")
+    f_nut: Any = math.nan
+    if nut is not None:
+        f_nut = _plain(fa.nut_proof_load(nut.property_class, d, a_s, nut.style))
+    nut_limits = f_nut < f_mzul_bolt  # False where ISO 898-2 gives no S_p (NaN)
+    f_mzul = _pick(nut_limits, f_nut, f_mzul_bolt)
 
     # R1/R13 assembly preload range: torque specification, or tightened to F_M,zul ---------------
     m_u = col("prevailing_torque")
@@ -733,6 +790,13 @@ def _solve(
     )
     s_f = jt.yield_safety(yield_strength, stress.equivalent)
     checks["R8_working_stress"] = (True, s_f >= 1.0)
+    if nut is not None:
+        checks["nut_strength"] = (
+            f_nut == f_nut,  # ISO 898-2 covers the size
+            (f_mzul_bolt <= f_nut) & (f_s_max <= f_nut * (1.0 + 1e-12)),
+        )
+        if nut.pairs is not None:
+            checks["nut_class_pairing"] = (True, nut.pairs)
 
     # R9 alternating stress -----------------------------------------------------------------------
     sigma_a = jt.stress_amplitude(phi_n, f_a, f_a_min, a_s)
@@ -806,6 +870,7 @@ def _solve(
         "_method": method,
         "_mu": (mu_g_lo, mu_g_hi, mu_k_lo, mu_k_hi),
         "_m_u": m_u,
+        "_nut": (nut, f_nut, f_mzul_bolt, nut_limits),
     }
 
 
@@ -825,7 +890,8 @@ def _seed_004_rule(
 
 def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     bolt, notes = resolve_bolt(x)
-    b = {f: getattr(bolt, f) for f in _BOLT_FIELDS}
+    b: dict[str, Any] = {f: getattr(bolt, f) for f in _BOLT_FIELDS}
+    b["_nut"] = _nut_choice(x, bolt.tensile_strength)
     # validated numeric inputs are Python numbers already: read them as they are
     s = _solve(x, x.__getitem__, b, _Refusals(np.False_, many=False))
     for name in (*_SCALARS, "_alpha_req", "_fa_sep_any"):  # Python floats out (some are numpy's)
@@ -872,6 +938,18 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"{s['tightening_factor']:.3g} "
             f"({method.key if x.get('tightening_factor') is None else 'as given'}); "
             f"M_A = {s['tightening_torque']:.4g} N·m at μ_G,min, μ_K,min (VDI 2230-1 R13)"
+        )
+    nut, f_nut, f_mzul_bolt, nut_limits = s["_nut"]
+    if nut is not None and bool(nut_limits):
+        warnings.append(
+            f"the {nut.standard} nut (class {nut.property_class}) limits the preload: F_M,zul = "
+            f"{_kn(f_nut)}, its ISO 898-2 proof load, instead of the bolt's {_kn(f_mzul_bolt)}; "
+            "the preload window and the torque are built on it"
+        )
+    elif nut is not None and f_nut != f_nut:
+        notes.append(
+            f"nut strength not checked: ISO 898-2 gives no proof load for class "
+            f"{nut.property_class} at d = {d * 1e3:g} mm"
         )
     sentences = _sentences(x, s, bolt)
     checks = [
@@ -974,6 +1052,37 @@ def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[s
         f"({why}); VDI 2230 R7 instead limits the equivalent stress to ν R_p0.2 (ν = {nu:g}), "
         "which allows more",
     }
+    nut, f_nut, f_mzul_bolt, _ = s["_nut"]
+    if "nut_strength" in s["_checks"]:
+        nut_ok = s["_checks"]["nut_strength"][1]
+        out["nut_strength"] = (
+            f"proof load of the {nut.standard} nut, class {nut.property_class}"
+            f"{'' if nut.given else ' (assumed)'}: F_p = S_p A_s = {_kn(f_nut)} (ISO 898-2) vs "
+            f"the bolt's F_M,zul = {_kn(f_mzul_bolt)} and F_S,max = {_kn(s['max_bolt_force'])}"
+            + (
+                ""
+                if nut_ok
+                else ": the nut strips first; F_M,zul is held at the nut's proof load where "
+                "the nut is the weaker; use a full-height nut (ISO 4032/4033) of the class "
+                "that pairs with the bolt"
+            )
+        )
+    if "nut_class_pairing" in s["_checks"]:
+        cls = nut.property_class
+        out["nut_class_pairing"] = (
+            f"nut class {cls}{'' if nut.given else ' (assumed)'} with bolt R_m = "
+            f"{(bolt.tensile_strength or 0.0) / 1e6:.4g} MPa: ISO 898-2 mates a class-N nut "
+            "with bolts up to class N.x"
+            + (
+                ""
+                if s["_checks"]["nut_class_pairing"][1]
+                else (
+                    ": a thin nut (04/05) has reduced loadability and pairs with no class"
+                    if cls.startswith("0")
+                    else f": class {cls} is too weak for this bolt"
+                )
+            )
+        )
     if "R7_max_below_permissible" in s["_checks"]:
         top_ok = s["_checks"]["R7_max_below_permissible"][1]
         out["R7_max_below_permissible"] = (
@@ -1422,6 +1531,11 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
     bolts, bolt_index, notes, given = _bolts(x, n)
     b, refused = _bolt_columns(bolts, bolt_index, x, given)
+    if x.get("nut") is not None:
+        strengths = {None if k is None else k.tensile_strength for k in bolts} - {None}
+        if len(strengths) > 1:
+            raise TypeError("nut with varied bolt classes: the nut is rated per point")
+        b["_nut"] = _nut_choice(x, strengths.pop() if strengths else None)
     refusals = _Refusals(refused, many=True)
     s = _solve(x, col, b, refusals)
     refused = np.broadcast_to(refusals.mask, (n,))

@@ -121,3 +121,91 @@ def test_r10_working_pressure_takes_the_hot_bolt_force():
     assert checks["surface_pressure_assembly"].ok
     assert not checks["surface_pressure_working"].ok
     assert f"{f_s_max / a_p / 1e6:.4g} MPa" in checks["surface_pressure_working"].detail
+
+
+# ----------------------------------------------------------------- nut strength, ISO 898-2
+
+
+def test_nut_proof_loads_match_the_printed_table():
+    from engine import fasteners as fa
+
+    # DIN EN 20898-2 (ISO 898-2:1992) prints proof loads S_p × A_s for M12 (A_s 84.3 mm²):
+    # class 8 74 200 N, 10 88 500 N, 12 style 1 98 600 N, style 2 100 300 N; thin nuts
+    # 04/05 carry 380/500 MPa: 32 034 / 42 150 N
+    printed = {("8", "style 1"): 74200, ("10", "style 1"): 88500}
+    printed |= {("12", "style 1"): 98600, ("12", "style 2"): 100300}
+    for (cls, style), load in printed.items():
+        assert fa.nut_proof_load(cls, 0.012, 84.3e-6, style) == pytest.approx(load, abs=50)
+    assert fa.nut_proof_load("04", 0.012, 84.3e-6) == pytest.approx(380 * 84.3, rel=1e-12)
+    assert fa.nut_proof_load("05", 0.012, 84.3e-6) == pytest.approx(500 * 84.3, rel=1e-12)
+    # M20 (A_s 245 mm², > M16): class 8 225 400 N printed (920 MPa)
+    assert fa.nut_proof_load("8", 0.020, 245e-6) == pytest.approx(225400, abs=50)
+    # out of the table: above M39, class 4 below M16
+    assert math.isnan(fa.nut_proof_load("8", 0.042, 1121e-6))
+    assert math.isnan(fa.nut_proof_stress("4", 0.012))
+    # the pairing of ISO 898-2: class N with bolts up to N.x, thin nuts with none
+    assert fa.nut_pairs_with_bolt("8", 830e6) and fa.nut_pairs_with_bolt("10", 830e6)
+    assert not fa.nut_pairs_with_bolt("8", 1040e6)
+    assert not fa.nut_pairs_with_bolt("10", 1220e6) and fa.nut_pairs_with_bolt("12", 1220e6)
+    assert not fa.nut_pairs_with_bolt("05", 400e6)
+
+
+M12_129_THIN = {
+    "thread": "M12 ISO 4017 12.9",
+    "plate1_thickness": 0.020,
+    "plate2_thickness": 0.020,
+    "working_load": 5e3,
+    "nut": "ISO 4035",
+    "nut_property_class": "04",
+}
+
+
+def test_a_thin_nut_limits_the_preload_and_fails():
+    # bolt alone: F_M,zul = 0.9 × 1100 MPa × A_s / √(1 + 3 k²) ≈ 74.1 kN (R7, μ_G 0.12);
+    # the class 04 nut's proof load 380 MPa × A_s = 32.02 kN caps it
+    bolt_alone = _f_mzul(0.12, rp=1100e6)
+    nut = 380e6 * A_S
+    assert bolt_alone == pytest.approx(74.1e3, abs=0.05e3)
+    alone = run(JOINT, {k: v for k, v in M12_129_THIN.items() if not k.startswith("nut")})
+    r = run(JOINT, M12_129_THIN)
+    assert alone.results["permissible_preload"] == pytest.approx(bolt_alone, rel=1e-9)
+    assert r.results["permissible_preload"] == pytest.approx(nut, rel=1e-9)
+    # the torque is built on it: M_A ∝ F_M,zul with no prevailing torque
+    ratio = r.results["tightening_torque"] / alone.results["tightening_torque"]
+    assert ratio == pytest.approx(nut / bolt_alone, rel=1e-9)
+    checks = {c.name: c for c in r.checks}
+    assert not checks["nut_strength"].ok and not checks["nut_class_pairing"].ok
+    assert any("limits the preload" in w and "32.02 kN" in w for w in r.warnings)
+    # an unnamed thin-nut class is taken as the stronger one made (05: 500 MPa) and says so
+    x = {k: v for k, v in M12_129_THIN.items() if k != "nut_property_class"}
+    r05 = run(JOINT, x)
+    assert r05.results["permissible_preload"] == pytest.approx(500e6 * A_S, rel=1e-9)
+    assert "class 05 (assumed)" in {c.name: c for c in r05.checks}["nut_strength"].detail
+
+
+def test_a_paired_full_nut_leaves_the_bolt_alone_and_a_weak_class_fails_pairing():
+    full = {**M12_129_THIN, "thread": "M12 ISO 4017 8.8", "nut": "ISO 4032"}
+    del full["nut_property_class"]
+    r = run(JOINT, full)
+    assert r.results["permissible_preload"] == pytest.approx(_f_mzul(0.12), rel=1e-9)
+    checks = {c.name: c for c in r.checks}
+    assert checks["nut_strength"].ok and checks["nut_class_pairing"].ok
+    assert "class 8 (assumed)" in checks["nut_class_pairing"].detail
+    # a 12.9 bolt in an ISO 4032 nut: the strongest made (10, 1050 MPa × A_s = 88.5 kN)
+    # carries 74.1 kN, but ISO 898-2 does not pair class 10 with 12.9
+    r = run(JOINT, {**full, "thread": "M12 ISO 4017 12.9"})
+    checks = {c.name: c for c in r.checks}
+    assert checks["nut_strength"].ok and not checks["nut_class_pairing"].ok
+    assert r.results["permissible_preload"] == pytest.approx(_f_mzul(0.12, rp=1100e6), rel=1e-9)
+
+
+def test_nut_checks_on_the_array_path_match_single_runs():
+    import numpy as np
+
+    from tests.models.joint.test_joint_arrays import _assert_matches_single_runs
+
+    base = {**M12_129_THIN, "nut_property_class": "05"}
+    # F_S,max = F_p + Φ_n F_A crosses nothing here; the check fails at every point, the
+    # outputs follow the capped F_M,zul
+    chunk = _assert_matches_single_runs(base, {"working_load": np.array([0.0, 5e3, 20e3])})
+    assert chunk.values["permissible_preload"][0] == pytest.approx(500e6 * A_S, rel=1e-9)
