@@ -61,7 +61,7 @@ from typing import Any
 import numpy as np
 
 from .errors import BudgetExceeded, InfeasibleDesign, InputOutOfRange, SolverFailed
-from .numerics import StepCost, jit
+from .numerics import StepCost, jit, sqrt
 
 __all__ = [
     "ISO5393_ANGLE",
@@ -76,7 +76,6 @@ __all__ = [
     "contact_restitution",
     "damping_for_restitution",
     "energy_blow",
-    "energy_blow_array",
     "energy_blow_error",
     "energy_peak_error",
     "iso5393_rate",
@@ -251,15 +250,38 @@ def rigid_blow_torque(energy: Any, stiffness: Any) -> Any:
     --------
     The two-flywheel case (21.07 kg·m² at 150 rpm through 203.4 N·m/rad):
 
-    >>> round(rigid_blow_torque(0.5 * 21.07 * (150 * math.pi / 30) ** 2, 203.4), 1)
+    >>> round(float(rigid_blow_torque(0.5 * 21.07 * (150 * math.pi / 30) ** 2, 203.4)), 1)
     1028.3
     """
-    return _sqrt(2.0 * energy * stiffness)
+    return sqrt(2.0 * energy * stiffness)
 
 
-def _sqrt(v: Any) -> Any:
-    """√v: math.sqrt of a float (a float back, ValueError below 0), np.sqrt of an array."""
-    return np.sqrt(v) if isinstance(v, np.ndarray) else math.sqrt(v)
+def held_blow_peak(energy: Any, stiffness: Any, drive_torque: Any = 0.0) -> Any:
+    r"""Peak spring torque of a blow into a nut that does not turn (floats or numpy arrays).
+
+    .. math::
+        T_h = N + \sqrt{N^2 + 2EC}
+
+    The energy balance of :func:`energy_blow` with the joint side held: the tool's energy
+    and the drive's work over the spring's wind-up go into the spring.
+
+    Parameters
+    ----------
+    energy : float or array
+        E, [J]
+    stiffness : float or array
+        C, [N*m/rad]
+    drive_torque : float or array, optional
+        N, net torque driving the tool during the blow, [N*m]
+
+    Examples
+    --------
+    >>> round(float(held_blow_peak(100.0, 2.0e4)), 6)  # √(2·100·2e4)
+    2000.0
+    >>> round(float(held_blow_peak(100.0, 2.0e4, 10.0)), 3)  # 10 + √(100 + 4e6)
+    2010.025
+    """
+    return drive_torque + sqrt(drive_torque * drive_torque + 2.0 * energy * stiffness)
 
 
 def energy_blow(
@@ -331,7 +353,7 @@ def energy_blow(
     e, c, k, t0, b, n = energy, stiffness, rate, start_torque, breakaway, drive_torque
     single = all(np.ndim(v) == 0 for v in (e, c, k, t0, b, n))
     with np.errstate(all="ignore"):
-        held = n + np.sqrt(n * n + 2.0 * e * c)
+        held = held_blow_peak(e, c, n)
         holds = held <= b * t0
         flat = k <= 0.0
         stops = t0 > n  # a constant joint torque stops the nut only above the drive torque
@@ -1180,12 +1202,12 @@ def energy_peak_error(p: BlowProblem, peak: Any) -> Any:
     float
         Relative error of the peak torque, [-]
 
-    >>> round(energy_peak_error(BlowProblem(0.03, 0.001, 2.0e4, 90.0, 1000.0), 484.6), 3)
+    >>> round(float(energy_peak_error(BlowProblem(0.03, 0.001, 2.0e4, 90.0, 1000.0), 484.6)), 3)
     0.817
     """
     jr = p.tool_inertia * p.struck_inertia / (p.tool_inertia + p.struck_inertia)
     tiny = np.maximum(peak, 1e-300) if isinstance(peak, np.ndarray) else max(peak, 1e-300)
-    return p.speed * _sqrt(p.stiffness * jr) / tiny
+    return p.speed * sqrt(p.stiffness * jr) / tiny
 
 
 def blow_series(
@@ -1404,7 +1426,3 @@ def _series_one(
         target_torque=None if target is None else target.reshape(1), max_blows=limit,
     )  # fmt: skip
     return BlowSeriesArrays(*(getattr(s, f.name).reshape(()) for f in fields(BlowSeriesArrays)))
-
-
-#: The old name of :func:`energy_blow` on arrays: the same function.
-energy_blow_array = energy_blow

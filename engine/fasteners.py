@@ -1752,6 +1752,17 @@ def picker_entry(thread: Thread) -> dict[str, object]:
     (:data:`INCH_PICKER_GRADE`; None for metric threads, whose property class
     has a default).
 
+    Parameters
+    ----------
+    thread : Thread
+        A catalogue thread (:func:`metric_thread`, :func:`unified_thread`)
+
+    Returns
+    -------
+    dict
+        The thread's description and ``bearing_diameter`` [m], ``hole_diameter`` [m]
+        and ``grade``
+
     Examples
     --------
     >>> e = picker_entry(metric_thread(12))

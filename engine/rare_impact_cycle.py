@@ -148,7 +148,7 @@ from .numerics import (
     tan,
     where,
 )
-from .rare_impact import relock_time, striker_oscillation
+from .rare_impact import relock_time, rotating_inertia, striker_oscillation
 
 __all__ = [
     "GEOMETRIES",
@@ -490,9 +490,9 @@ def snaps_at_liftoff(x: Mapping[str, Any]) -> Any:
 
 def _inertia(x: Mapping[str, Any], g: Geometry, radius: Any) -> Any:
     """Flywheel inertia with the rollers at ``radius`` (paper: :math:`I_M` alone) [kg·m²]."""
-    if g.paper:
-        return x["flywheel_inertia"] + 0.0 * radius
-    return x["flywheel_inertia"] + x["roller_count"] * x["roller_mass"] * radius * radius
+    return rotating_inertia(
+        x["flywheel_inertia"], x["roller_count"], x["roller_mass"], radius, not g.paper
+    )
 
 
 def _time_to_speed(x: Mapping[str, Any], inertia: Any, w: Any) -> Any:

@@ -441,6 +441,18 @@ def beyond_iso898(name: str, diameter: float) -> bool:
     :func:`property_class_strengths` carries the M39 minimum strengths on as a
     stated assumption; False where ISO 898-1 itself defines the class.
 
+    Parameters
+    ----------
+    name : str
+        Property class, e.g. "8.8"
+    diameter : float
+        Nominal thread diameter d, [m]
+
+    Returns
+    -------
+    bool
+        Whether the strengths are ISO 898-1's M39 values carried beyond M39
+
     Examples
     --------
     >>> beyond_iso898("8.8", 0.039), beyond_iso898("8.8", 0.042)
@@ -503,6 +515,18 @@ def property_class_strengths(name: str, diameter: float) -> tuple[float, float]:
 def largest_diameter(name: str) -> float:
     """The largest diameter [m] :func:`property_class_strengths` answers for class ``name``.
 
+    Parameters
+    ----------
+    name : str
+        Property class, e.g. "8.8"
+
+    Returns
+    -------
+    float
+        M64 for a class ISO 898-1 defines up to M39, else its own limit (9.8: M16), [m]
+
+    Examples
+    --------
     >>> largest_diameter("8.8"), largest_diameter("9.8")
     (0.064, 0.016)
     """

@@ -108,33 +108,6 @@ NOT_YET_PINNED: dict[str, set[str]] = {
         "motor_pulley_energy",
         "shaft_shear_stress",
     },
-    "preload.control": {
-        "bearing_area",
-        "bolt_breaking_force",
-        "drive_torque_limit",
-        "equivalent_shank_diameter",
-        "limiting_surface_pressure",
-        "min_engagement_length",
-        "preload_factor",
-        "scatter_torque_applied",
-        "stripping_force",
-        "surface_pressure_head",
-        "surface_pressure_head_working",
-        "surface_pressure_nut",
-        "target_force",
-        "target_torque",
-    },
-    "preload.tightening": {
-        "bearing_area",
-        "bolt_breaking_force",
-        "equivalent_stress",
-        "minor_diameter",
-        "rule_of_thumb_deviation",
-        "rule_of_thumb_torque",
-        "stripping_force",
-        "yield_rule_deviation",
-        "yield_rule_torque",
-    },
 }
 
 _COMPARE_OPS = (ast.Eq, ast.Lt, ast.LtE, ast.Gt, ast.GtE)

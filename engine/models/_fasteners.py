@@ -363,6 +363,142 @@ def resolve(x: Mapping[str, Any]) -> tuple[dict[str, Any], Fastener, list[str]]:
     return fields, Fastener(" ".join(parts), thread, head, grade), notes
 
 
+@dataclass(frozen=True)
+class _Parts:
+    """The numbers of the bought-part checks, on floats (one design) or arrays (many)."""
+
+    values: dict[str, Any]
+    #: Per check name, whether the design passes (bool or bool array).
+    verdicts: dict[str, Any]
+    outer: Any
+    inner: Any
+    washer: fa.Washer | None
+    nut: fa.Nut | None
+    pressures: dict[str, Any]
+    limit: Any
+    limit_material: fa.Material | None
+    working_force: Any
+    tau: Any
+    tau_source: str
+    stripping: fa.Stripping | None
+    length: Any
+    key_limit: float | None
+
+
+def _bought_parts(
+    x: Mapping[str, Any],
+    fastener: Fastener,
+    *,
+    diameter: Any,
+    pitch: Any,
+    pitch_diameter: Any,
+    stress_area: Any,
+    tensile_strength: Any,
+    bearing_outer_diameter: Any,
+    hole_diameter: Any,
+    max_assembly_preload: Any,
+    tightening_torque: Any,
+    working_force: Any = None,
+) -> _Parts:
+    """Surface pressure (VDI 2230-1 R10), thread stripping (R11) and the hex key (ISO 2936).
+
+    The one set of lines :func:`bought_part_checks` (one design, with its sentences) and
+    :func:`bought_part_arrays` (many designs) both run; the numbers may be floats or
+    numpy arrays, the catalogue parts are the same for every design.
+    """
+    values: dict[str, Any] = {"fastener": fastener.label}
+    verdicts: dict[str, Any] = {}
+    thread = fastener.thread
+    outer, inner, washer = bearing_outer_diameter, hole_diameter, None
+    if x.get("washer") is not None:
+        if thread is None:
+            raise InputOutOfRange("washer needs a catalogue thread (give thread)", field="washer")
+        washer = fa.washer(str(x["washer"]), thread, field="washer")
+        outer, inner = washer.outer_diameter, np.maximum(washer.inner_diameter, hole_diameter)
+    values["bearing_area"] = fa.bearing_area(outer, inner)
+    pressures: dict[str, Any] = {
+        "surface_pressure_assembly": fa.surface_pressure(max_assembly_preload, outer, inner)
+    }
+    values["surface_pressure_head"] = pressures["surface_pressure_assembly"]
+    if working_force is None and x.get("working_bolt_force") is not None:
+        working_force = x["working_bolt_force"]
+    if working_force is not None:
+        pressures["surface_pressure_working"] = fa.surface_pressure(working_force, outer, inner)
+        values["surface_pressure_head_working"] = pressures["surface_pressure_working"]
+    nut = None
+    if x.get("nut") is not None:
+        if thread is None:
+            raise InputOutOfRange("nut needs a catalogue thread (give thread)", field="nut")
+        nut = fa.nut(str(x["nut"]), thread, field="nut")
+        pressures["surface_pressure_nut"] = fa.surface_pressure(
+            max_assembly_preload, nut.bearing_diameter, hole_diameter
+        )
+        values["surface_pressure_nut"] = pressures["surface_pressure_nut"]
+    limit: Any = None
+    material = None
+    if x.get("limiting_surface_pressure") is not None:
+        limit = x["limiting_surface_pressure"]
+    elif x.get("clamped_material") is not None:
+        material = fa.material(str(x["clamped_material"]), field="clamped_material")
+        limit = material.limiting_surface_pressure
+    if limit is not None:
+        values["limiting_surface_pressure"] = limit
+        for name, p in pressures.items():
+            verdicts[name] = p <= limit
+    tau: Any = None
+    tau_source = ""
+    if x.get("internal_thread_shear_strength") is not None:
+        tau, tau_source = x["internal_thread_shear_strength"], "as given"
+    elif x.get("internal_thread_material") is not None:
+        inner_material = fa.material(
+            str(x["internal_thread_material"]), field="internal_thread_material"
+        )
+        tau, tau_source = inner_material.shear_strength, inner_material.name
+    stripping = None
+    length = x["engagement_length"] if x.get("engagement_length") is not None else 1.0
+    if tau is not None and tensile_strength is not None:
+        stripping = fa.thread_stripping(
+            diameter,
+            pitch,
+            pitch_diameter,
+            diameter - 1.082532 * pitch,
+            stress_area,
+            tensile_strength,
+            BOLT_SHEAR_RATIO * tensile_strength,
+            tau,
+            length,
+        )
+        values["min_engagement_length"] = stripping.min_engagement_length
+        values["bolt_breaking_force"] = stripping.bolt_breaking_force
+        if x.get("engagement_length") is not None:
+            values["stripping_force"] = stripping.strip_force
+            verdicts["thread_stripping"] = length >= stripping.min_engagement_length
+    key_limit = None
+    head = fastener.head
+    if head is not None and head.drive == "hex key" and tightening_torque is not None:
+        key_limit = fa.hex_key_torque(head.drive_size)
+        if key_limit is not None:
+            values["drive_torque_limit"] = key_limit
+            verdicts["drive_torque"] = tightening_torque <= key_limit
+    return _Parts(
+        values,
+        verdicts,
+        outer,
+        inner,
+        washer,
+        nut,
+        pressures,
+        limit,
+        material,
+        working_force,
+        tau,
+        tau_source,
+        stripping,
+        length,
+        key_limit,
+    )
+
+
 def bought_part_checks(
     x: Mapping[str, Any],
     fastener: Fastener,
@@ -382,75 +518,56 @@ def bought_part_checks(
 
     ``working_force`` (F_S,max from a joint model) stands in for the
     ``working_bolt_force`` input; without ``tightening_torque`` the drive is not checked.
+    The numbers are :func:`_bought_parts`'; this adds the sentences.
     """
-    values: dict[str, Any] = {"fastener": fastener.label}
+    parts = _bought_parts(
+        x,
+        fastener,
+        diameter=diameter,
+        pitch=pitch,
+        pitch_diameter=pitch_diameter,
+        stress_area=stress_area,
+        tensile_strength=tensile_strength,
+        bearing_outer_diameter=bearing_outer_diameter,
+        hole_diameter=hole_diameter,
+        max_assembly_preload=max_assembly_preload,
+        tightening_torque=tightening_torque,
+        working_force=working_force,
+    )
+    values, verdicts = parts.values, parts.verdicts
     checks: list[Check] = []
     notes: list[str] = []
-    thread = fastener.thread
 
     # --- surface pressure under head (or washer) and nut, VDI 2230-1 R10
-    outer, inner, where = bearing_outer_diameter, hole_diameter, "head"
-    if x.get("washer") is not None:
-        if thread is None:
-            raise InputOutOfRange("washer needs a catalogue thread (give thread)", field="washer")
-        w = fa.washer(str(x["washer"]), thread, field="washer")
-        outer, inner, where = (
-            w.outer_diameter,
-            max(w.inner_diameter, hole_diameter),
-            f"washer {w.standard}",
-        )
+    where = "head"
+    if parts.washer is not None:
+        where = f"washer {parts.washer.standard}"
         notes.append(
-            f"the clamped part bears on the {w.standard} washer: d = {inner * 1e3:.3g}…"
-            f"{outer * 1e3:.3g} mm (taken as spreading over its whole face; true for a hardened "
-            "washer, optimistic for a thin soft one)"
+            f"the clamped part bears on the {parts.washer.standard} washer: d = "
+            f"{parts.inner * 1e3:.3g}…{parts.outer * 1e3:.3g} mm (taken as spreading over its "
+            "whole face; true for a hardened washer, optimistic for a thin soft one)"
         )
-    area = fa.bearing_area(outer, inner)
-    values["bearing_area"] = area
-    p_head = fa.surface_pressure(max_assembly_preload, outer, inner)
-    values["surface_pressure_head"] = p_head
-    p_work = None
-    if working_force is None and x.get("working_bolt_force") is not None:
-        working_force = float(x["working_bolt_force"])
-    if working_force is not None:
-        p_work = fa.surface_pressure(working_force, outer, inner)
-        values["surface_pressure_head_working"] = p_work
-    p_nut = None
-    if x.get("nut") is not None:
-        if thread is None:
-            raise InputOutOfRange("nut needs a catalogue thread (give thread)", field="nut")
-        n = fa.nut(str(x["nut"]), thread, field="nut")
-        p_nut = fa.surface_pressure(max_assembly_preload, n.bearing_diameter, hole_diameter)
-        values["surface_pressure_nut"] = p_nut
-        if n.standard == "ISO 4035":
+    if parts.nut is not None and parts.nut.standard == "ISO 4035":
+        notes.append(
+            "ISO 4035 thin nuts (classes 04/05) carry less than the bolt's proof load "
+            "(ISO 898-2): the bolt cannot be used to its strength"
+        )
+    limit = parts.limit
+    if limit is not None:
+        material = parts.limit_material
+        src = "as given" if material is None else f"{material.name}, {material.source}"
+        if material is not None and material.kind == "plastic":
             notes.append(
-                "ISO 4035 thin nuts (classes 04/05) carry less than the bolt's proof load "
-                "(ISO 898-2): the bolt cannot be used to its strength"
-            )
-    limit: float | None = None
-    if x.get("limiting_surface_pressure") is not None:
-        limit = float(x["limiting_surface_pressure"])
-        src = "as given"
-    elif x.get("clamped_material") is not None:
-        mat = fa.material(str(x["clamped_material"]), field="clamped_material")
-        limit, src = mat.limiting_surface_pressure, f"{mat.name}, {mat.source}"
-        if mat.kind == "plastic":
-            notes.append(
-                f"{mat.name}: plastics creep under a bolt head; p_G here is a short-time "
+                f"{material.name}: plastics creep under a bolt head; p_G here is a short-time "
                 "compressive yield at 23 °C, so the preload will relax: use a metal sleeve or "
                 "give limiting_surface_pressure for your grade and temperature"
             )
-    if limit is not None:
-        values["limiting_surface_pressure"] = limit
-        for name, p, force_name in (
-            ("surface_pressure_assembly", p_head, "F_M,max"),
-            ("surface_pressure_working", p_work, "F_S,max"),
-            ("surface_pressure_nut", p_nut, "F_M,max"),
-        ):
-            if p is None:
-                continue
+        area = values["bearing_area"]
+        for name, p in parts.pressures.items():
             face = "nut" if name == "surface_pressure_nut" else where
-            ok = p <= limit
-            need = max_assembly_preload if force_name == "F_M,max" else (working_force or 0.0)
+            force_name = "F_S,max" if name == "surface_pressure_working" else "F_M,max"
+            ok = bool(verdicts[name])
+            need = parts.working_force if force_name == "F_S,max" else max_assembly_preload
             checks.append(
                 Check(
                     name,
@@ -473,43 +590,22 @@ def bought_part_checks(
         )
 
     # --- thread stripping, VDI 2230-1 R11 (tapped hole)
-    tau_m: float | None = None
-    if x.get("internal_thread_shear_strength") is not None:
-        tau_m, tau_src = float(x["internal_thread_shear_strength"]), "as given"
-    elif x.get("internal_thread_material") is not None:
-        mat = fa.material(str(x["internal_thread_material"]), field="internal_thread_material")
-        tau_m, tau_src = mat.shear_strength, mat.name
-    if tau_m is not None and tensile_strength is None:
+    s = parts.stripping
+    if parts.tau is not None and tensile_strength is None:
         notes.append(
             "thread stripping not checked: R_m of the bolt is unknown (yield_strength given); "
             "give property_class or grade"
         )
-    elif tau_m is not None and tensile_strength is not None:
-        nut_minor = diameter - 1.082532 * pitch
-        length = float(x["engagement_length"]) if x.get("engagement_length") is not None else 1.0
-        s = fa.thread_stripping(
-            diameter,
-            pitch,
-            pitch_diameter,
-            nut_minor,
-            stress_area,
-            tensile_strength,
-            BOLT_SHEAR_RATIO * tensile_strength,
-            tau_m,
-            length,
-        )
-        values["min_engagement_length"] = s.min_engagement_length
-        values["bolt_breaking_force"] = s.bolt_breaking_force
+    elif s is not None:
         notes.append(
             f"thread stripping (VDI 2230-1 R11 after Alexander): τ_BM = "
-            f"{quantity(tau_m, 'MPa', '.4g')} ({tau_src}), τ_BS = {BOLT_SHEAR_RATIO:g} R_m, "
-            f"R_S = {s.strength_ratio:.3g}, C1 = {s.c1:.3g} (tapped hole), C2 = {s.c2:.3g}, "
-            f"C3 = {s.c3:.3g}; the {s.weaker} thread is the weaker; lengths are full threads, "
-            "add the entry chamfers"
+            f"{quantity(parts.tau, 'MPa', '.4g')} ({parts.tau_source}), τ_BS = "
+            f"{BOLT_SHEAR_RATIO:g} R_m, R_S = {s.strength_ratio:.3g}, C1 = {s.c1:.3g} (tapped "
+            f"hole), C2 = {s.c2:.3g}, C3 = {s.c3:.3g}; the {s.weaker} thread is the weaker; "
+            "lengths are full threads, add the entry chamfers"
         )
-        if x.get("engagement_length") is not None:
-            values["stripping_force"] = s.strip_force
-            ok = length >= s.min_engagement_length
+        if "thread_stripping" in verdicts:
+            ok, length = bool(verdicts["thread_stripping"]), parts.length
             checks.append(
                 Check(
                     "thread_stripping",
@@ -535,28 +631,26 @@ def bought_part_checks(
         )
 
     # --- drive torque, ISO 2936 hex keys
-    head = fastener.head
-    if head is not None and head.drive == "hex key" and tightening_torque is not None:
-        limit_key = fa.hex_key_torque(head.drive_size)
-        if limit_key is not None:
-            values["drive_torque_limit"] = limit_key
-            ok = tightening_torque <= limit_key
-            checks.append(
-                Check(
-                    "drive_torque",
-                    ok,
-                    f"tightening torque {tightening_torque:.3g} N·m vs {limit_key:g} N·m, the "
-                    f"ISO 2936 test torque of the {head.drive_size * 1e3:g} mm hex key of the "
-                    f"{head.standard} head"
-                    + (
-                        ""
-                        if ok
-                        else ": the key or the socket fails first; lower the preload, or use a "
-                        "head with a larger drive (ISO 4762 instead of ISO 10642, or a hexagon "
-                        "head)"
-                    ),
-                )
+    if "drive_torque" in verdicts:
+        head = fastener.head
+        assert head is not None and tightening_torque is not None
+        ok = bool(verdicts["drive_torque"])
+        checks.append(
+            Check(
+                "drive_torque",
+                ok,
+                f"tightening torque {tightening_torque:.3g} N·m vs {parts.key_limit:g} N·m, the "
+                f"ISO 2936 test torque of the {head.drive_size * 1e3:g} mm hex key of the "
+                f"{head.standard} head"
+                + (
+                    ""
+                    if ok
+                    else ": the key or the socket fails first; lower the preload, or use a "
+                    "head with a larger drive (ISO 4762 instead of ISO 10642, or a hexagon "
+                    "head)"
+                ),
             )
+        )
     return values, checks, notes
 
 
@@ -579,83 +673,23 @@ def bought_part_arrays(
 
     The numbers (and the inputs in ``x``) may be numpy arrays, one design per element;
     the catalogue choices (thread, head, washer, nut, materials) are the same for every
-    design. Returns the same values and, per check name, the verdicts (bool arrays)
-    that :func:`bought_part_checks` gives design by design, without the sentences.
-    The relations are the same functions of :mod:`engine.fasteners`.
+    design. The same lines (:func:`_bought_parts`) as one design, without the sentences.
     """
-    values: dict[str, Any] = {"fastener": fastener.label}
-    verdicts: dict[str, Any] = {}
-    thread = fastener.thread
-    outer, inner = bearing_outer_diameter, hole_diameter
-    if x.get("washer") is not None:
-        if thread is None:
-            raise InputOutOfRange("washer needs a catalogue thread (give thread)", field="washer")
-        w = fa.washer(str(x["washer"]), thread, field="washer")
-        outer, inner = w.outer_diameter, np.maximum(w.inner_diameter, hole_diameter)
-    values["bearing_area"] = fa.bearing_area(outer, inner)
-    p_head = fa.surface_pressure(max_assembly_preload, outer, inner)
-    values["surface_pressure_head"] = p_head
-    p_work = None
-    if working_force is None and x.get("working_bolt_force") is not None:
-        working_force = x["working_bolt_force"]
-    if working_force is not None:
-        p_work = fa.surface_pressure(working_force, outer, inner)
-        values["surface_pressure_head_working"] = p_work
-    p_nut = None
-    if x.get("nut") is not None:
-        if thread is None:
-            raise InputOutOfRange("nut needs a catalogue thread (give thread)", field="nut")
-        n = fa.nut(str(x["nut"]), thread, field="nut")
-        p_nut = fa.surface_pressure(max_assembly_preload, n.bearing_diameter, hole_diameter)
-        values["surface_pressure_nut"] = p_nut
-    limit: Any = None
-    if x.get("limiting_surface_pressure") is not None:
-        limit = x["limiting_surface_pressure"]
-    elif x.get("clamped_material") is not None:
-        limit = fa.material(
-            str(x["clamped_material"]), field="clamped_material"
-        ).limiting_surface_pressure
-    if limit is not None:
-        values["limiting_surface_pressure"] = limit
-        for name, p in (
-            ("surface_pressure_assembly", p_head),
-            ("surface_pressure_working", p_work),
-            ("surface_pressure_nut", p_nut),
-        ):
-            if p is not None:
-                verdicts[name] = np.asarray(p <= limit)
-    tau_m: Any = None
-    if x.get("internal_thread_shear_strength") is not None:
-        tau_m = x["internal_thread_shear_strength"]
-    elif x.get("internal_thread_material") is not None:
-        tau_m = fa.material(
-            str(x["internal_thread_material"]), field="internal_thread_material"
-        ).shear_strength
-    if tau_m is not None and tensile_strength is not None:
-        length = x["engagement_length"] if x.get("engagement_length") is not None else 1.0
-        s = fa.thread_stripping(
-            diameter,
-            pitch,
-            pitch_diameter,
-            diameter - 1.082532 * pitch,
-            stress_area,
-            tensile_strength,
-            BOLT_SHEAR_RATIO * tensile_strength,
-            tau_m,
-            length,
-        )
-        values["min_engagement_length"] = s.min_engagement_length
-        values["bolt_breaking_force"] = s.bolt_breaking_force
-        if x.get("engagement_length") is not None:
-            values["stripping_force"] = s.strip_force
-            verdicts["thread_stripping"] = np.asarray(length >= s.min_engagement_length)
-    head = fastener.head
-    if head is not None and head.drive == "hex key" and tightening_torque is not None:
-        limit_key = fa.hex_key_torque(head.drive_size)
-        if limit_key is not None:
-            values["drive_torque_limit"] = limit_key
-            verdicts["drive_torque"] = np.asarray(tightening_torque <= limit_key)
-    return values, verdicts
+    parts = _bought_parts(
+        x,
+        fastener,
+        diameter=diameter,
+        pitch=pitch,
+        pitch_diameter=pitch_diameter,
+        stress_area=stress_area,
+        tensile_strength=tensile_strength,
+        bearing_outer_diameter=bearing_outer_diameter,
+        hole_diameter=hole_diameter,
+        max_assembly_preload=max_assembly_preload,
+        tightening_torque=tightening_torque,
+        working_force=working_force,
+    )
+    return parts.values, {k: np.asarray(v) for k, v in parts.verdicts.items()}
 
 
 def joint_check_hook(x: Mapping[str, Any], solution: Any) -> tuple[list[Check], list[str]]:

@@ -26,15 +26,17 @@ from ..blow import (
     blow_series_array,
     clutch_preload_window,
     energy_blow,
-    energy_blow_array,
     energy_blow_error,
     energy_peak_error,
+    held_blow_peak,
     iso5393_rate,
     joint_rate,
     rigid_blow_torque,
 )
 from ..errors import EngineError, InfeasibleDesign, InputOutOfRange
 from ..joint import clamped_compliance as vdi_clamped_compliance
+from ..numerics import sqrt, where
+from ..rare_impact import rotating_inertia
 from ..rare_impact_cycle import closed_form_cycle_array, release_radius_of, release_speed_of
 from ..spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
 from ._common import DEG, RPM, count, friction_coefficient, length, positive, quantity
@@ -473,43 +475,6 @@ class _Striker:
     design: dict[str, Any]  # impact.rare's inputs
 
 
-def rotating_inertia(flywheel_inertia: Any, roller_count: Any, roller_mass: Any, radius: Any,
-                     geometry: str) -> Any:  # fmt: skip
-    r"""Inertia of the striker's rotating parts at release: the flywheel and its rollers.
-
-    .. math::
-        I = I_M + n\,m_p\,r^2
-
-    Parameters
-    ----------
-    flywheel_inertia : float or array
-        :math:`I_M`, flywheel with half-coupling, shaft and striker, [kg*m^2]
-    roller_count : int or array
-        :math:`n`, [-]
-    roller_mass : float or array
-        :math:`m_p`, one roller, [kg]
-    radius : float or array
-        :math:`r`, the rollers' centre radius at release, [m]
-    geometry : str
-        ``impact.rare``'s ``roller_geometry``; ``paper``: :math:`I_M` alone
-
-    Notes
-    -----
-    The rollers turn with the flywheel at their release radius, as the stage 1 of
-    ``impact.rare`` counts them [002, eq. 1]; the paper's printed equation leaves them
-    out. (``engine.rare_impact_cycle`` has the same sum as a private step; this is its
-    public form for the blow until that module offers one.)
-
-    >>> round(rotating_inertia(1e-3, 6, 0.05, 0.0425, "symmetric_v"), 9)  # + 0.3·0.0425²
-    0.001541875
-    >>> rotating_inertia(1e-3, 6, 0.05, 0.045, "paper")
-    0.001
-    """
-    if geometry == "paper":
-        return flywheel_inertia + 0.0 * radius
-    return flywheel_inertia + roller_count * roller_mass * radius * radius
-
-
 def _striker(x: Mapping[str, Any], one: bool) -> _Striker:
     r"""The rare-impact source's striker at release, from the striker model's own closed form.
 
@@ -522,9 +487,9 @@ def _striker(x: Mapping[str, Any], one: bool) -> _Striker:
     .. math::
         E = \tfrac{1}{2}\,I\,\omega_M^2
 
-    with :func:`rotating_inertia` [002, after eq. 4]. The striker's inputs blow.joint does
-    not borrow take their defaults in ``impact.rare``. One design the striker model
-    refuses raises its reason; on arrays ``refused`` marks them.
+    with :func:`engine.rare_impact.rotating_inertia` [002, after eq. 4]. The striker's
+    inputs blow.joint does not borrow take their defaults in ``impact.rare``. One design the
+    striker model refuses raises its reason; on arrays ``refused`` marks them.
 
     >>> s = _striker(RARE_IMPACT_M16, True)  # 6 rollers of 50 g at r = 42.5 mm
     >>> round(s.speed, 2), round(s.inertia, 9), round(s.energy, 2)  # ½·1.541875e-3·243.96²
@@ -550,7 +515,7 @@ def _striker(x: Mapping[str, Any], one: bool) -> _Striker:
             design["roller_count"],
             design["roller_mass"],
             r,
-            design["roller_geometry"],
+            rollers_counted=design["roller_geometry"] != "paper",
         )
         return _Striker(w_m, r, inertia, 0.5 * inertia * w_m * w_m, refused, design)
 
@@ -790,7 +755,7 @@ def _setup(x: Mapping[str, Any]) -> _Setup:
         raise error
     k = _rate(x, target, got[1])
     with np.errstate(all="ignore"):
-        speed = _sqrt(2.0 * tool.energy / tool.inertia)
+        speed = sqrt(2.0 * tool.energy / tool.inertia)
         energy = 0.5 * tool.inertia * speed**2
         overflow = _squares_overflow(speed) | _squares_overflow(tool.drive)
     if one:
@@ -832,8 +797,8 @@ def _tool_values(x: Mapping[str, Any], s: _Setup) -> dict[str, Any]:
             "tool_stiffness_used": c,
             "joint_rate_used": s.rate,
             "rigid_torque": rigid_blow_torque(e, c) + drive,
-            # the energy balance's blow into a held nut, N + √(N² + 2EC), over b
-            "saturation_torque": (drive + _sqrt(drive**2 + 2 * e * c)) / x["breakaway_factor"],
+            # the energy balance's blow into a held nut over b
+            "saturation_torque": held_blow_peak(e, c, drive) / x["breakaway_factor"],
         }
 
 
@@ -881,18 +846,6 @@ _BLOW_OUTPUTS = tuple(
 _PEAK_OUTPUTS = ("peak_torque", "peak_per_blow")
 
 
-def _sqrt(v: Any) -> Any:
-    """√v of a float (math: numpy on one float costs more than the rest of the step) or array."""
-    return np.sqrt(v) if isinstance(v, np.ndarray) else math.sqrt(v)
-
-
-def _where(condition: Any, yes: Any, no: Any) -> Any:
-    """``np.where`` for arrays; for one design (a bool) the plain choice, without numpy's cost."""
-    if isinstance(condition, np.ndarray):
-        return np.where(condition, yes, no)
-    return yes if condition else no
-
-
 def _first_blow(x: Mapping[str, Any], s: _Setup) -> tuple[Any, Any]:
     """(peak torque, joint torque after) of the energy rung's first blow.
 
@@ -900,10 +853,10 @@ def _first_blow(x: Mapping[str, Any], s: _Setup) -> tuple[Any, Any]:
     single float costs twice the whole run; measured) or of its array form; the value at
     a rate ≤ 0 or where the balance has no root is not used (NaN).
     """
-    args = (s.energy, s.tool.stiffness, _where(s.rate > 0.0, s.rate, 1.0), x["snug_torque"])
+    args = (s.energy, s.tool.stiffness, where(s.rate > 0.0, s.rate, 1.0), x["snug_torque"])
     if isinstance(s.rate, np.ndarray):
         with np.errstate(all="ignore"):
-            blow = energy_blow_array(*args, x["breakaway_factor"], s.tool.drive)
+            blow = energy_blow(*args, x["breakaway_factor"], s.tool.drive)
         return blow[0], blow[1]
     try:
         one = energy_blow(*args, x["breakaway_factor"], s.tool.drive)
@@ -924,14 +877,14 @@ def _energy_errors(
     peak, _ = _first_blow(x, s) if first is None else first
     k = s.rate
     with np.errstate(all="ignore"):
-        kk = _where(k > 0.0, k, 1.0)
+        kk = where(k > 0.0, k, 1.0)
         after = energy_blow_error(
             s.tool.inertia, x["struck_inertia"], s.tool.stiffness, kk, x["restitution"]
         )
         blow = BlowProblem(s.tool.inertia, x["struck_inertia"], s.tool.stiffness, s.speed, kk)
         peak_error = after + energy_peak_error(blow, peak)
-    bad = s.refused | _where(k > 0.0, False, True)  # no estimate without a torque rate
-    return _where(bad, math.nan, after), _where(bad, math.nan, peak_error)
+    bad = s.refused | where(k > 0.0, False, True)  # no estimate without a torque rate
+    return where(bad, math.nan, after), where(bad, math.nan, peak_error)
 
 
 def _rigid_error(x: Mapping[str, Any], s: _Setup) -> Any:
@@ -941,9 +894,9 @@ def _rigid_error(x: Mapping[str, Any], s: _Setup) -> Any:
     with np.errstate(all="ignore"):
         after = first[1]
         rigid = rigid_blow_torque(s.energy, s.tool.stiffness) + s.tool.drive
-        base = _where(peak_error > after_error, peak_error, after_error)
-        bad = s.refused | _where(s.rate > 0.0, False, True)
-        return _where(bad, math.nan, abs(rigid - after) / after + base)
+        base = where(peak_error > after_error, peak_error, after_error)
+        bad = s.refused | where(s.rate > 0.0, False, True)
+        return where(bad, math.nan, abs(rigid - after) / after + base)
 
 
 def _energy_error(x: Mapping[str, Any], s: _Setup, first: Any = None, peak: bool = True) -> Any:
@@ -956,7 +909,7 @@ def _energy_error(x: Mapping[str, Any], s: _Setup, first: Any = None, peak: bool
         after, at_peak = _energy_errors(x, s, first)
     except (ArithmeticError, ValueError):
         return math.nan
-    return _where(at_peak > after, at_peak, after) if peak else after
+    return where(at_peak > after, at_peak, after) if peak else after
 
 
 def _rigid_estimate_of(x: Mapping[str, Any], s: _Setup) -> Any:

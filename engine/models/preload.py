@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 import threading
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -217,76 +217,145 @@ def _class_note(name: str, diameter: float, yield_strength: float, tensile: floa
 def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
     """The bolt a request describes, and notes naming each standard value used."""
     cat, fastener, notes = fz.resolve(x)
-    d = float(cat["diameter"])
-    mm = d * 1e3
+    numbers, _ = _bolt_numbers(x, cat, notes, None)
+    return Bolt(**numbers, fastener=fastener), notes
+
+
+def _bolt_numbers(
+    x: Mapping[str, Any], cat: Mapping[str, Any], notes: list[str], n: int | None
+) -> tuple[dict[str, Any], np.ndarray]:
+    """The bolt's numbers from the inputs, the catalogue's ``cat`` and the ISO tables.
+
+    One design (``n`` None): floats, a note per standard value used, and a refusal
+    (InputOutOfRange naming the field) where the inputs make no bolt. ``n`` points: the
+    numeric inputs may be arrays, a tabulated value is looked up per point, and a point
+    that would be refused is False in the returned mask (no notes per point).
+    """
+    one = n is None
+    ok: Any = True if n is None else np.ones(n, dtype=bool)
+
+    def need(good: Any, refusal: Callable[[], InputOutOfRange]) -> None:
+        nonlocal ok
+        if not one:
+            ok = ok & good
+        elif not good:
+            raise refusal()
+
+    def num(v: Any) -> Any:
+        return float(v) if one else v
+
+    def note(text: str) -> None:
+        if one:
+            notes.append(text)
+
+    d = num(cat["diameter"])
+    per_point = isinstance(d, np.ndarray)
     if "pitch" in cat:
-        pitch = float(cat["pitch"])
+        pitch = num(cat["pitch"])
     elif x.get("thread_pitch") is None:
-        pitch = th.coarse_pitch(d)
-        notes.append(f"pitch P = {pitch * 1e3:g} mm: ISO 261 coarse thread M{mm:g}")
+        if per_point:
+            pitch, found = _tabulated(d, th.COARSE_PITCH_MM)
+            ok = ok & found
+        else:
+            pitch = th.coarse_pitch(d)
+            note(f"pitch P = {pitch * 1e3:g} mm: ISO 261 coarse thread M{d * 1e3:g}")
     else:
-        pitch = float(x["thread_pitch"])
-        if d - 1.226869 * pitch <= 0.0:
-            raise InputOutOfRange(
-                f"thread_pitch = {pitch * 1e3:g} mm is too coarse for d = {mm:g} mm: the "
+        pitch = num(x["thread_pitch"])
+        need(
+            d - 1.226869 * pitch > 0.0,
+            lambda: InputOutOfRange(
+                f"thread_pitch = {pitch * 1e3:g} mm is too coarse for d = {d * 1e3:g} mm: the "
                 f"minor diameter d3 = d − 1.226869 P must stay > 0 (P < {d / 1.226869 * 1e3:g} mm)",
                 field="thread_pitch",
-            )
+            ),
+        )
+    tensile: Any
     if x.get("yield_strength") is not None:
-        yield_strength, tensile = float(x["yield_strength"]), None
-        notes.append(f"yield strength R_p0.2 = {yield_strength / 1e6:g} MPa as given")
+        yield_strength, tensile = num(x["yield_strength"]), None
+        note(f"yield strength R_p0.2 = {yield_strength / 1e6:g} MPa as given")
     elif "yield_strength" in cat:
-        yield_strength, tensile = float(cat["yield_strength"]), float(cat["tensile_strength"])
+        yield_strength, tensile = num(cat["yield_strength"]), num(cat["tensile_strength"])
     else:
-        cls = str(x.get("property_class") or "8.8")
-        yield_strength, tensile = th.property_class_strengths(cls, d)
-        notes.append(_class_note(cls, d, yield_strength, tensile))
+        name = str(x.get("property_class") or "8.8")
+        if per_point:
+            th.property_class_strengths(name, 0.01)  # refuses an unknown class
+            cls = th.PROPERTY_CLASSES[name]
+            mm = d * 1e3
+            ok = ok & (d <= th.largest_diameter(name) * (1 + 1e-9))
+            if np.any(ok & (mm > cls.max_diameter_mm * (1 + 1e-9))):
+                widest = float(np.max(d[ok]))
+                notes.append(_class_note(name, widest, *th.property_class_strengths(name, widest)))
+            small = mm <= cls.size_step_mm * (1 + 1e-9)
+            yield_strength = np.where(small, cls.yield_small * 1e6, cls.yield_large * 1e6)
+            tensile = np.where(small, cls.tensile_small * 1e6, cls.tensile_large * 1e6)
+        else:
+            yield_strength, tensile = th.property_class_strengths(name, d)
+            note(_class_note(name, d, yield_strength, tensile))
     given_outer = x.get("bearing_outer_diameter") is not None
     if given_outer:
-        outer = float(x["bearing_outer_diameter"])
+        outer = num(x["bearing_outer_diameter"])
     elif "bearing_outer_diameter" in cat:
-        outer = float(cat["bearing_outer_diameter"])
+        outer = num(cat["bearing_outer_diameter"])
+    elif per_point:
+        outer, found = _tabulated(d, th.HEX_BEARING_DIAMETER_MM)
+        ok = ok & found
     else:
         outer = th.hex_bearing_diameter(d)
-        notes.append(f"bearing face D_f = d_w,min = {outer * 1e3:g} mm (ISO 4017 hexagon head)")
+        note(f"bearing face D_f = d_w,min = {outer * 1e3:g} mm (ISO 4017 hexagon head)")
     if x.get("hole_diameter") is not None:
-        hole = float(x["hole_diameter"])
-        if hole < d:
-            raise InputOutOfRange(
+        hole = num(x["hole_diameter"])
+        need(
+            hole >= d,
+            lambda: InputOutOfRange(
                 f"hole_diameter d_h = {hole * 1e3:g} mm is smaller than the thread diameter "
                 f"d = {d * 1e3:g} mm: the bolt would not pass through the clamped part",
                 field="hole_diameter",
-            )
+            ),
+        )
     elif "hole_diameter" in cat:
-        hole = float(cat["hole_diameter"])
+        hole = num(cat["hole_diameter"])
     else:
         series = str(x.get("hole_series") or "medium")
-        hole = th.clearance_hole(d, series)
-        notes.append(f"clearance hole d_h = {hole * 1e3:g} mm (ISO 273 {series})")
-    if outer <= hole:
-        field = "bearing_outer_diameter" if given_outer else "hole_diameter"
-        raise InputOutOfRange(
+        if per_point:
+            th.clearance_hole(0.012, series)  # refuses an unknown series
+            hole, found = _tabulated(d, th.CLEARANCE_HOLE_MM, th.HOLE_SERIES.index(series))
+            ok = ok & found
+        else:
+            hole = th.clearance_hole(d, series)
+            note(f"clearance hole d_h = {hole * 1e3:g} mm (ISO 273 {series})")
+    need(
+        outer > hole,
+        lambda: InputOutOfRange(
             f"bearing_outer_diameter D_f = {outer * 1e3:g} mm must exceed hole_diameter "
             f"d_h = {hole * 1e3:g} mm: the bearing face would have no area",
-            field=field,
-        )
-    return (
-        Bolt(
-            diameter=d,
-            pitch=pitch,
-            pitch_diameter=_given_or(cat, "pitch_diameter", th.pitch_diameter, d, pitch),
-            minor_diameter=_given_or(cat, "minor_diameter", th.minor_diameter, d, pitch),
-            stress_diameter=_given_or(cat, "stress_diameter", th.stress_diameter, d, pitch),
-            stress_area=_given_or(cat, "stress_area", th.stress_area, d, pitch),
-            yield_strength=yield_strength,
-            tensile_strength=tensile,
-            bearing_outer_diameter=outer,
-            hole_diameter=hole,
-            bearing_friction_factor=cat.get("bearing_friction_factor", 1.0),
-            fastener=fastener,
+            field="bearing_outer_diameter" if given_outer else "hole_diameter",
         ),
-        notes,
     )
+    numbers = {
+        "diameter": d,
+        "pitch": pitch,
+        "pitch_diameter": _given_or(cat, "pitch_diameter", th.pitch_diameter, d, pitch),
+        "minor_diameter": _given_or(cat, "minor_diameter", th.minor_diameter, d, pitch),
+        "stress_diameter": _given_or(cat, "stress_diameter", th.stress_diameter, d, pitch),
+        "stress_area": _given_or(cat, "stress_area", th.stress_area, d, pitch),
+        "yield_strength": yield_strength,
+        "tensile_strength": tensile,
+        "bearing_outer_diameter": outer,
+        "hole_diameter": hole,
+        "bearing_friction_factor": cat.get("bearing_friction_factor", 1.0),
+    }
+    return numbers, ok
+
+
+def _where(condition: Any, yes: Any, no: Any) -> Any:
+    """``np.where`` for one design or many: one design (a bool) takes its branch directly.
+
+    The same lines serve a single design and arrays; this keeps numpy's per-call cost
+    (a few µs) off the single design.
+    """
+    if isinstance(condition, bool | np.bool_):
+        return yes if condition else no
+    return np.where(condition, yes, no)
 
 
 def _given_or(cat: Mapping[str, Any], name: str, relation: Any, d: Any, pitch: Any) -> Any:
@@ -349,21 +418,34 @@ class _Design:
 
     bolt: Bolt
     notes: tuple[str, ...]
-    k_thread: float
-    k_bearing: float
-    radius: float
+    #: (k_G, k_K, R) of the torque formula.
+    coefficients: tuple[float, float, float]
     #: |M(torque_formula) − M(exact)| / M(exact), the closed form's error estimate.
     deviation: float
+
+
+def _torque_terms(
+    x: Mapping[str, Any], bolt: Bolt | BoltArrays, design: _Design | None = None
+) -> tuple[tuple[Any, Any, Any], Any]:
+    """(k_G, k_K, R) of the torque formula and its deviation from the exact relations.
+
+    VDI 2230-1 R13 / [004, eq. 10–15] on floats or arrays; a single design's come from
+    ``design`` where the rung estimate computed them for the same request.
+    """
+    if design is not None:
+        return design.coefficients, design.deviation
+    mu_g, mu_k, formula = x["thread_friction"], x["bearing_friction"], str(x["torque_formula"])
+    coefficients = torque_coefficients_raw(bolt, mu_g, mu_k, formula)
+    return coefficients, _deviation(bolt, mu_g, mu_k, formula, coefficients[0] + coefficients[1])
 
 
 def _resolve_design(x: Mapping[str, Any]) -> _Design:
     """The bolt (resolved once) and each torque coefficient (computed once) of a design."""
     bolt, notes = resolve_bolt(x)
-    mu_g, mu_k = float(x["thread_friction"]), float(x["bearing_friction"])
-    formula = str(x["torque_formula"])
-    k_thread, k_bearing, radius = torque_coefficients(bolt, mu_g, mu_k, formula)
-    deviation = float(_deviation(bolt, mu_g, mu_k, formula, sum((k_thread, k_bearing))))
-    return _Design(bolt, tuple(notes), k_thread, k_bearing, radius, deviation)
+    (k_thread, k_bearing, radius), deviation = _torque_terms(x, bolt)
+    return _Design(
+        bolt, tuple(notes), (float(k_thread), float(k_bearing), float(radius)), float(deviation)
+    )
 
 
 class _Handoff(threading.local):
@@ -371,10 +453,11 @@ class _Handoff(threading.local):
 
     The runner asks the rung for its estimate, then runs the model, with the same
     validated inputs. The estimate leaves its :class:`_Design` here with those inputs'
-    items; :func:`_design` takes it (and empties the slot) when its own inputs have
-    the same items, in the same thread, so the request resolves its bolt once. The
-    slot is matched by value, never by identity, holds one design per thread and is
-    emptied when used: a later request, or one with other inputs, resolves its own.
+    items; :func:`_handed_off` gives it to the run (and empties the slot) when the
+    run's inputs have the same items, in the same thread, so the request resolves its
+    bolt once. The slot is matched by value, never by identity, holds one design per
+    thread and is emptied when read: a later request, or one with other inputs,
+    resolves its own.
     """
 
     items: tuple[tuple[str, Any], ...] | None = None
@@ -384,13 +467,11 @@ class _Handoff(threading.local):
 _HANDOFF = _Handoff()
 
 
-def _design(x: Mapping[str, Any]) -> _Design:
-    """The design of a single-design request: the estimate's, when it resolved it."""
+def _handed_off(x: Mapping[str, Any]) -> _Design | None:
+    """The design the rung estimate left for these inputs, or None; the slot is emptied."""
     slot = _HANDOFF
     found, slot.items, design, slot.design = slot.items, None, slot.design, None
-    if design is not None and found == tuple(x.items()):
-        return design
-    return _resolve_design(x)
+    return design if design is not None and found == tuple(x.items()) else None
 
 
 def _rung_estimate(x: Mapping[str, Any]) -> Any:
@@ -425,6 +506,20 @@ _BOLT_NUMBERS = (
     "yield_strength",
     "bearing_outer_diameter",
     "hole_diameter",
+)
+#: The numbers of a bolt (:class:`Bolt`, :class:`BoltArrays`), as :func:`_bolt_numbers` gives them.
+_NUMBER_FIELDS = (
+    "diameter",
+    "pitch",
+    "pitch_diameter",
+    "minor_diameter",
+    "stress_diameter",
+    "stress_area",
+    "yield_strength",
+    "tensile_strength",
+    "bearing_outer_diameter",
+    "hole_diameter",
+    "bearing_friction_factor",
 )
 #: Inputs that name catalogue parts (looked up by the thread size).
 _CATALOGUE_INPUTS = ("thread", "grade", "head_standard", "washer", "nut")
@@ -505,23 +600,9 @@ def resolve_bolt_arrays(
     if not varied:
         bolt, bolt_notes = resolve_bolt(x)
         fastener = bolt.fastener or fz.Fastener("", None, None, None)
+        numbers = {f: getattr(bolt, f) for f in _NUMBER_FIELDS}
         return (
-            BoltArrays(
-                diameter=bolt.diameter,
-                pitch=bolt.pitch,
-                pitch_diameter=bolt.pitch_diameter,
-                minor_diameter=bolt.minor_diameter,
-                stress_diameter=bolt.stress_diameter,
-                stress_area=bolt.stress_area,
-                yield_strength=bolt.yield_strength,
-                tensile_strength=bolt.tensile_strength,
-                bearing_outer_diameter=bolt.bearing_outer_diameter,
-                hole_diameter=bolt.hole_diameter,
-                bearing_friction_factor=bolt.bearing_friction_factor,
-                fastener=fastener,
-                ok=ok,
-                label=fastener.label,
-            ),
+            BoltArrays(**numbers, fastener=fastener, ok=ok, label=fastener.label),
             bolt_notes,
         )
     size_varied = "thread_diameter" in varied or "thread_pitch" in varied
@@ -539,89 +620,11 @@ def resolve_bolt_arrays(
     else:
         cat, fastener, found_notes = fz.resolve(placeholder)
         notes.extend(found_notes)
-    d = cat["diameter"]
-    per_point = isinstance(d, np.ndarray)
-    if "pitch" in cat:
-        pitch = cat["pitch"]
-    elif x.get("thread_pitch") is None:
-        if per_point:
-            pitch, found = _tabulated(d, th.COARSE_PITCH_MM)
-            ok &= found
-        else:
-            pitch = th.coarse_pitch(d)
-    else:
-        pitch = x["thread_pitch"]
-        ok &= d - 1.226869 * pitch > 0.0
-    tensile: Any
-    if x.get("yield_strength") is not None:
-        yield_strength, tensile = x["yield_strength"], None
-    elif "yield_strength" in cat:
-        yield_strength, tensile = cat["yield_strength"], cat["tensile_strength"]
-    else:
-        name = str(x.get("property_class") or "8.8")
-        if per_point:
-            th.property_class_strengths(name, 0.01)  # refuses an unknown class
-            cls = th.PROPERTY_CLASSES[name]
-            mm = d * 1e3
-            ok &= d <= th.largest_diameter(name) * (1 + 1e-9)
-            if np.any(ok & (mm > cls.max_diameter_mm * (1 + 1e-9))):
-                notes.append(
-                    _class_note(
-                        name,
-                        float(np.max(d[ok])),
-                        *th.property_class_strengths(name, float(np.max(d[ok]))),
-                    )
-                )
-            small = mm <= cls.size_step_mm * (1 + 1e-9)
-            yield_strength = np.where(small, cls.yield_small * 1e6, cls.yield_large * 1e6)
-            tensile = np.where(small, cls.tensile_small * 1e6, cls.tensile_large * 1e6)
-        else:
-            yield_strength, tensile = th.property_class_strengths(name, d)
-    if x.get("bearing_outer_diameter") is not None:
-        outer = x["bearing_outer_diameter"]
-    elif "bearing_outer_diameter" in cat:
-        outer = cat["bearing_outer_diameter"]
-    elif per_point:
-        outer, found = _tabulated(d, th.HEX_BEARING_DIAMETER_MM)
-        ok &= found
-    else:
-        outer = th.hex_bearing_diameter(d)
-    if x.get("hole_diameter") is not None:
-        hole = x["hole_diameter"]
-        ok &= hole >= d
-    elif "hole_diameter" in cat:
-        hole = cat["hole_diameter"]
-    else:
-        series = str(x.get("hole_series") or "medium")
-        if per_point:
-            th.clearance_hole(0.012, series)  # refuses an unknown series
-            hole, found = _tabulated(d, th.CLEARANCE_HOLE_MM, th.HOLE_SERIES.index(series))
-            ok &= found
-        else:
-            hole = th.clearance_hole(d, series)
-    ok &= outer > hole
+    numbers, ok = _bolt_numbers(x, cat, notes, n)
     label: Any = fastener.label
     if size_varied and labels:
-        label = _size_labels(x, d, n)
-    return (
-        BoltArrays(
-            diameter=d,
-            pitch=pitch,
-            pitch_diameter=_given_or(cat, "pitch_diameter", th.pitch_diameter, d, pitch),
-            minor_diameter=_given_or(cat, "minor_diameter", th.minor_diameter, d, pitch),
-            stress_diameter=_given_or(cat, "stress_diameter", th.stress_diameter, d, pitch),
-            stress_area=_given_or(cat, "stress_area", th.stress_area, d, pitch),
-            yield_strength=yield_strength,
-            tensile_strength=tensile,
-            bearing_outer_diameter=outer,
-            hole_diameter=hole,
-            bearing_friction_factor=cat.get("bearing_friction_factor", 1.0),
-            fastener=fastener,
-            ok=ok,
-            label=label,
-        ),
-        notes,
-    )
+        label = _size_labels(x, numbers["diameter"], n)
+    return BoltArrays(**numbers, fastener=fastener, ok=ok, label=label), notes
 
 
 def _size_labels(x: Mapping[str, Any], diameter: Any, n: int) -> np.ndarray:
@@ -688,6 +691,21 @@ CLOSED_FORM = Rung(
 # --------------------------------------------------------------------------- tightening
 
 
+def _part_numbers(bolt: Bolt | BoltArrays, max_preload: Any, torque: Any) -> dict[str, Any]:
+    """What the bought-part checks take of a bolt, its largest preload and its torque."""
+    return {
+        "diameter": bolt.diameter,
+        "pitch": bolt.pitch,
+        "pitch_diameter": bolt.pitch_diameter,
+        "stress_area": bolt.stress_area,
+        "tensile_strength": bolt.tensile_strength,
+        "bearing_outer_diameter": bolt.bearing_outer_diameter,
+        "hole_diameter": bolt.hole_diameter,
+        "max_assembly_preload": max_preload,
+        "tightening_torque": torque,
+    }
+
+
 def _add_bought_part_checks(
     x: Mapping[str, Any],
     bolt: Bolt,
@@ -700,17 +718,7 @@ def _add_bought_part_checks(
     """Surface pressure, thread stripping and drive torque (issue 15), into the result."""
     fastener = bolt.fastener or fz.Fastener("", None, None, None)
     more, more_checks, more_notes = fz.bought_part_checks(
-        x,
-        fastener,
-        diameter=bolt.diameter,
-        pitch=bolt.pitch,
-        pitch_diameter=bolt.pitch_diameter,
-        stress_area=bolt.stress_area,
-        tensile_strength=bolt.tensile_strength,
-        bearing_outer_diameter=bolt.bearing_outer_diameter,
-        hole_diameter=bolt.hole_diameter,
-        max_assembly_preload=max_preload,
-        tightening_torque=torque,
+        x, fastener, **_part_numbers(bolt, max_preload, torque)
     )
     values.update(more)
     checks.extend(more_checks)
@@ -718,16 +726,13 @@ def _add_bought_part_checks(
 
 
 def _tightening_values(
-    x: Mapping[str, Any],
-    bolt: Bolt | BoltArrays,
-    coefficients: tuple[Any, Any, Any],
-    deviation: Any,
+    x: Mapping[str, Any], bolt: Bolt | BoltArrays, design: _Design | None = None
 ) -> dict[str, Any]:
     """The numbers of ``preload.tightening``, on floats (one design) or arrays (many).
 
-    ``coefficients`` are (k_G, k_K, R) of the chosen torque formula and ``deviation``
-    its distance from the exact one; the single run and the array path both come
-    here, so one set of lines gives every number.
+    The single run and the array path both come here, so one set of lines gives
+    every number, in the order of the procedure: R7's preload, then R13's torque
+    (:func:`_torque_terms`, the design's where the rung estimate computed them).
     """
     beta = pl.torsion_factor(
         bolt.pitch,
@@ -739,14 +744,14 @@ def _tightening_values(
     permissible = pl.assembly_preload(bolt.yield_strength, bolt.stress_area, beta, x["utilization"])
     force = permissible if x.get("preload") is None else x["preload"]
     sigma_eq = pl.equivalent_stress(force, bolt.stress_area, beta)
-    k_thread, k_bearing, radius = coefficients
+    (k_thread, k_bearing, radius), deviation = _torque_terms(x, bolt, design)
     m_thread, m_bearing = force * k_thread, force * k_bearing
     total = m_thread + m_bearing
     ideal = pl.ideal_torque(force, bolt.pitch)
     thumb = pl.rule_of_thumb_torque(force, bolt.diameter)
     thumb_yield = pl.rule_of_thumb_torque_from_yield(bolt.yield_strength, bolt.diameter)
     positive = total > 0
-    safe = np.where(positive, total, 1.0)
+    safe = _where(positive, total, 1.0)
     return {
         "assembly_preload": force,
         "permissible_preload": permissible,
@@ -754,7 +759,7 @@ def _tightening_values(
         "thread_torque": m_thread,
         "bearing_torque": m_bearing,
         "ideal_torque": ideal,
-        "ideal_torque_share": np.where(positive, ideal / safe, 1.0),
+        "ideal_torque_share": _where(positive, ideal / safe, 1.0),
         "friction_radius": radius,
         "stress_area": bolt.stress_area,
         "pitch_diameter": bolt.pitch_diameter,
@@ -768,22 +773,17 @@ def _tightening_values(
         "hole_diameter": bolt.hole_diameter,
         "torque_formula_deviation": deviation,
         "rule_of_thumb_torque": thumb,
-        "rule_of_thumb_deviation": np.where(positive, (thumb - total) / safe, math.inf),
+        "rule_of_thumb_deviation": _where(positive, (thumb - total) / safe, math.inf),
         "yield_rule_torque": thumb_yield,
-        "yield_rule_deviation": np.where(positive, (thumb_yield - total) / safe, math.inf),
+        "yield_rule_deviation": _where(positive, (thumb_yield - total) / safe, math.inf),
     }
 
 
 def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    design = _design(x)
-    bolt, notes = design.bolt, list(design.notes)
+    design = _handed_off(x)
+    bolt, notes = (design.bolt, list(design.notes)) if design else resolve_bolt(x)
     checks: list[Check] = []
-    values = {
-        k: float(v)
-        for k, v in _tightening_values(
-            x, bolt, (design.k_thread, design.k_bearing, design.radius), design.deviation
-        ).items()
-    }
+    values = {k: float(v) for k, v in _tightening_values(x, bolt, design).items()}
     force, total = values["assembly_preload"], values["tightening_torque"]
     sigma_eq, share = values["equivalent_stress"], values["ideal_torque_share"]
     if x.get("preload") is not None:
@@ -819,7 +819,7 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
     return Result(
         values=dict(values),
         rung=ctx.rung,
-        error_estimate=design.deviation,
+        error_estimate=values["torque_formula_deviation"],
         checks=checks,
         notes=notes,
     )
@@ -835,17 +835,7 @@ def _bought_part_arrays(
 ) -> None:
     """:func:`_add_bought_part_checks` on arrays: values and verdicts, no sentences."""
     more, more_verdicts = fz.bought_part_arrays(
-        x,
-        bolt.fastener,
-        diameter=bolt.diameter,
-        pitch=bolt.pitch,
-        pitch_diameter=bolt.pitch_diameter,
-        stress_area=bolt.stress_area,
-        tensile_strength=bolt.tensile_strength,
-        bearing_outer_diameter=bolt.bearing_outer_diameter,
-        hole_diameter=bolt.hole_diameter,
-        max_assembly_preload=max_preload,
-        tightening_torque=torque,
+        x, bolt.fastener, **_part_numbers(bolt, max_preload, torque)
     )
     more["fastener"] = bolt.label
     values.update(more)
@@ -856,10 +846,7 @@ def _tightening_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """The array path of ``preload.tightening``: its numbers on many points at once."""
     n = _points(x) or 1
     bolt, notes = resolve_bolt_arrays(x, n, labels=ctx.wants("fastener"))
-    mu_g, mu_k, formula = x["thread_friction"], x["bearing_friction"], str(x["torque_formula"])
-    coefficients = torque_coefficients_raw(bolt, mu_g, mu_k, formula)
-    deviation = _deviation(bolt, mu_g, mu_k, formula, coefficients[0] + coefficients[1])
-    values = _tightening_values(x, bolt, coefficients, deviation)
+    values = _tightening_values(x, bolt)
     verdicts: dict[str, Any] = {}
     if x.get("preload") is not None:
         verdicts["below_yield"] = values["equivalent_stress"] <= bolt.yield_strength
@@ -1208,14 +1195,14 @@ def _grip_sections(
     grip = x["clamped_length"]
     l_shank, l_reduced = x["shank_length"], x["reduced_length"]
     free = grip - l_shank - l_reduced
-    fine = ~np.asarray(free < -1e-12 * grip)
+    fine = np.logical_not(free < -1e-12 * grip)
     if x.get("reduced_diameter") is None:
-        fine = fine & ~np.asarray(l_reduced > 0)
+        fine = fine & np.logical_not(l_reduced > 0)
     d = bolt.diameter
     shank_d = d if x.get("shank_diameter") is None else x["shank_diameter"]
     reduced_d = d if x.get("reduced_diameter") is None else x["reduced_diameter"]
     nut = 0.8 * d if x.get("nut_height") is None else x["nut_height"]
-    lengths = [l_shank, l_reduced, np.maximum(free, 0.0), nut / 3.0]
+    lengths = [l_shank, l_reduced, _where(free > 0.0, free, 0.0), nut / 3.0]
     diameters = [shank_d, reduced_d, bolt.minor_diameter, bolt.minor_diameter]
     return lengths, diameters, fine
 
@@ -1248,10 +1235,10 @@ def _smallest_section(bolt: Bolt | BoltArrays, x: Mapping[str, Any]) -> tuple[An
         sections.append((x["reduced_length"], x["reduced_diameter"]))
         fine: Any = True
     else:
-        fine = ~np.asarray(x["reduced_length"] > 0.0)
+        fine = np.logical_not(x["reduced_length"] > 0.0)
     d0, where = jt.smallest_section(bolt.stress_diameter, sections)
-    shank = np.asarray(where) == "shank"
-    area0 = np.where(shank, 0.25 * math.pi * d0 * d0, bolt.stress_area)
+    shank = where == "shank"  # a word for one design, an array of words for many
+    area0 = _where(shank, 0.25 * math.pi * d0 * d0, bolt.stress_area)
     return d0, area0, shank, fine
 
 
@@ -1276,7 +1263,7 @@ def _clamped_compliance(
     def cone(g: float, e: float, outer: float, hole: float) -> float:
         return jt.clamped_compliance([g], [e], outer, hole, None, "through").total
 
-    if not any(isinstance(a, np.ndarray) for a in args):
+    if not isinstance(ok, np.ndarray) or not any(isinstance(a, np.ndarray) for a in args):
         return cone(*(float(a) for a in args))
     n = ok.shape[0]
     table = np.column_stack([np.broadcast_to(np.asarray(a, dtype=float), (n,)) for a in args])
@@ -1298,13 +1285,14 @@ def _control_values(
     bolt: Bolt | BoltArrays,
     method: ControlMethod,
     section: tuple[Any, Any],
-    per_preload: Any,
-) -> dict[str, Any]:
+    design: _Design | None = None,
+) -> tuple[dict[str, Any], Any]:
     """The preload band and target of ``preload.control``, on floats or arrays.
 
-    ``section`` is (d_0, A_0) of the smallest section and ``per_preload`` k_G + k_K of
-    the torque formula. VDI 2230-1 R7 at the smallest section ([004, eq. 3–4]), the
-    method's band, [004, eq. 2]'s required preload.
+    ``section`` is (d_0, A_0) of the smallest section. VDI 2230-1 R7 at the smallest
+    section ([004, eq. 3–4]), the method's band, [004, eq. 2]'s required preload, then
+    R13's torque for the nominal preload (:func:`_torque_terms`, the design's where the
+    rung estimate computed them); also the torque formula's deviation from the exact one.
     """
     d0, area0 = section
     beta = pl.torsion_factor(
@@ -1315,9 +1303,10 @@ def _control_values(
     lo_factor, _ = pl.preload_factor_range(str(x["load_type"]))
     factor = lo_factor if x.get("preload_factor") is None else x["preload_factor"]
     nominal, f_min, f_max = _method_band(method, permissible, at_yield, x.get("preload"))
-    return {
+    (k_thread, k_bearing, _), deviation = _torque_terms(x, bolt, design)
+    values = {
         "controlled_quantity": method.controls,
-        "target_torque": nominal * per_preload,
+        "target_torque": nominal * (k_thread + k_bearing),
         "target_force": nominal,
         "nominal_preload": nominal,
         "preload_min": f_min,
@@ -1329,6 +1318,7 @@ def _control_values(
         "permissible_preload": permissible,
         "yield_preload": at_yield,
     }
+    return values, deviation
 
 
 def _stretch_values(
@@ -1382,8 +1372,8 @@ def _method_band(
 
 
 def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    design = _design(x)
-    bolt, notes = design.bolt, list(design.notes)
+    design = _handed_off(x)
+    bolt, notes = (design.bolt, list(design.notes)) if design else resolve_bolt(x)
     warnings: list[str] = []
     checks: list[Check] = []
     method = get_method(str(x["method"]))
@@ -1401,9 +1391,8 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"{bolt.stress_diameter * 1e3:.4g} mm: the permissible and yield preloads use "
             f"A_0 = {area0 * 1e6:.4g} mm² and W_p = π d_0³/16 (VDI 2230-1 R7; [004, eq. 3–4])"
         )
-    values = _plain(
-        _control_values(x, bolt, method, (d0, area0), design.k_thread + design.k_bearing)
-    )
+    shared, deviation = _control_values(x, bolt, method, (d0, area0), design)
+    values = _plain(shared)
     permissible, at_yield = values["permissible_preload"], values["yield_preload"]
     nominal, f_min, f_max = values["nominal_preload"], values["preload_min"], values["preload_max"]
     torque, required, factor = (
@@ -1516,25 +1505,11 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "at yield (minimum R_p0.2) and the bolt must be ductile ([004])"
         )
 
-    passing: list[ControlMethod] = []
-    for other in METHODS:
-        if other.family != method.family:
-            continue
-        if other.controls in ("angle", "displacement", "elongation") and stretch is None:
-            continue
-        if other.controls == "displacement" and x.get("coupling_outer_diameter") is None:
-            continue
-        o_nominal, o_min, o_max = _method_band(other, permissible, at_yield, given)
-        if other.controls in ("angle", "displacement") and stretch is not None:
-            o_angle = pl.nut_rotation_angle(o_nominal, stretch, bolt.pitch)
-            if o_angle * other.scatter < ANGLE_READING_ERROR:
-                continue  # too short for angle control, as the check above says
-        if o_min >= required and o_max <= at_yield * (1.0 + 1e-12):
-            passing.append(other)
-    passing.sort(key=lambda m: (m.cost_rank, m.key))
-    cheaper = [m.key for m in passing if m.cost_rank < method.cost_rank]
-    values["cheaper_methods"] = ", ".join(cheaper) if cheaper else "none"
-    values["passing_methods"] = ", ".join(m.key for m in passing) if passing else "none"
+    candidates, passes = _passing(
+        x, bolt, method, (permissible, at_yield, given, required), stretch
+    )
+    chosen = [m for m, ok in zip(candidates, passes, strict=True) if ok]
+    values["cheaper_methods"], values["passing_methods"] = _method_text(chosen, method.cost_rank)
     notes.append(f"scatter of {method.key}: {method.scatter_source}")
     if method.key == "torque_then_angle":
         notes.append(
@@ -1556,8 +1531,8 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
         x.get("thread_friction_min") is not None or x.get("bearing_friction_min") is not None
     )
     if scatter_wanted and has_range:
-        g_range = _range(x, "thread_friction", mu_g)
-        k_range = _range(x, "bearing_friction", mu_k)
+        g_range = _checked_range(x, "thread_friction", mu_g)
+        k_range = _checked_range(x, "bearing_friction", mu_k)
         if bolt.bearing_friction_factor != 1.0:  # a countersunk head: μ_K acts on the cone
             k_range = (
                 k_range[0] * bolt.bearing_friction_factor,
@@ -1568,9 +1543,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
         washer = (bolt.bearing_outer_diameter, bolt.hole_diameter)
         # the band's corners and the exact mean (engine.preload.friction_scatter_band); the
         # 64×64 grid only for the histogram, when asked (issue 21: nothing computed unasked)
-        f_lo, f_hi, f_mean = pl.friction_scatter_band(
-            fixed, *geometry, g_range, k_range, *washer, formula
-        )
+        f_lo, f_hi, f_mean = _scatter_band(bolt, formula, fixed, g_range, k_range)
         if ctx.wants("preload_bins", "preload_counts"):
             forces = pl.friction_scatter_preloads(
                 fixed, *geometry, g_range, k_range, *washer, formula
@@ -1615,7 +1588,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
     return Result(
         values=values,
         rung=ctx.rung,
-        error_estimate=design.deviation,
+        error_estimate=float(deviation),
         checks=checks,
         notes=notes,
         warnings=warnings,
@@ -1623,27 +1596,27 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
 
 
-def _range(x: Mapping[str, Any], name: str, nominal: float) -> tuple[float, float]:
-    lo, hi = x.get(f"{name}_min"), x.get(f"{name}_max")
-    if lo is None and hi is None:
-        return nominal, nominal
-    if lo is None or hi is None:
-        raise InputOutOfRange(f"give both {name}_min and {name}_max", field=f"{name}_min")
-    if lo > hi:
-        raise InputOutOfRange(
-            f"{name}_min = {lo:g} exceeds {name}_max = {hi:g}", field=f"{name}_min"
-        )
-    return float(lo), float(hi)
+def _range(x: Mapping[str, Any], name: str, nominal: Any) -> tuple[Any, Any, Any]:
+    """The friction range (low, high) of ``name``, and where low ≤ high (floats or arrays).
 
-
-def _range_arrays(x: Mapping[str, Any], name: str, nominal: Any) -> tuple[Any, Any, Any]:
-    """:func:`_range` on arrays: (low, high, where low ≤ high)."""
+    Both ends absent: the nominal value at both ends.
+    """
     lo, hi = x.get(f"{name}_min"), x.get(f"{name}_max")
     if lo is None and hi is None:
         return nominal, nominal, True
     if lo is None or hi is None:
         raise InputOutOfRange(f"give both {name}_min and {name}_max", field=f"{name}_min")
-    return lo, hi, ~np.asarray(lo > hi)
+    return lo, hi, np.logical_not(lo > hi)
+
+
+def _checked_range(x: Mapping[str, Any], name: str, nominal: float) -> tuple[float, float]:
+    """:func:`_range` of a single design, refused where its low end exceeds its high end."""
+    lo, hi, fine = _range(x, name, nominal)
+    if not fine:
+        raise InputOutOfRange(
+            f"{name}_min = {lo:g} exceeds {name}_max = {hi:g}", field=f"{name}_min"
+        )
+    return lo, hi
 
 
 #: What the friction-scatter figures are, and what they were (a result note).
@@ -1656,18 +1629,18 @@ SCATTER_MEAN_NOTE = (
 )
 
 
-def _scatter_arrays(
-    bolt: BoltArrays,
+def _scatter_band(
+    bolt: Bolt | BoltArrays,
     formula: str,
     torque: Any,
     g_range: tuple[Any, Any],
     k_range: tuple[Any, Any],
 ) -> tuple[Any, Any, Any]:
-    """Lowest, highest and mean preload of the friction scatter, per point.
+    """Lowest, highest and mean preload of the friction scatter, one design or per point.
 
-    :func:`engine.preload.friction_scatter_band` on arrays: its corners and exact mean
-    take a few operations a point (16 Gauss–Legendre nodes in μ_G), so a bolt varying
-    from point to point costs no 64×64 grid; where nothing varies it runs once.
+    :func:`engine.preload.friction_scatter_band`: its corners and exact mean take a few
+    operations a point (16 Gauss–Legendre nodes in μ_G), so a bolt varying from point
+    to point costs no 64×64 grid.
     """
     return pl.friction_scatter_band(
         torque,
@@ -1682,14 +1655,58 @@ def _scatter_arrays(
     )
 
 
+#: The control methods, cheapest first (the order the method lists are written in).
+_BY_COST = tuple(sorted(METHODS, key=lambda m: (m.cost_rank, m.key)))
+
+
+def _passing(
+    x: Mapping[str, Any],
+    bolt: Bolt | BoltArrays,
+    method: ControlMethod,
+    band: tuple[Any, Any, Any, Any],
+    stretch: Any,
+) -> tuple[list[ControlMethod], list[Any]]:
+    """The methods of ``method``'s family worth comparing, cheapest first, and where each
+    passes both checks (and reads its angle), on floats or arrays.
+
+    ``band`` is (permissible, yield, given preload or None, required preload).
+    """
+    permissible, at_yield, given, required = band
+    top = at_yield * (1.0 + 1e-12)
+    candidates: list[ControlMethod] = []
+    passes: list[Any] = []
+    for other in _BY_COST:
+        if other.family != method.family:
+            continue
+        if other.controls in ("angle", "displacement", "elongation") and stretch is None:
+            continue
+        if other.controls == "displacement" and x.get("coupling_outer_diameter") is None:
+            continue
+        o_nominal, o_min, o_max = _method_band(other, permissible, at_yield, given)
+        passing = (o_min >= required) & (o_max <= top)
+        if other.controls in ("angle", "displacement") and stretch is not None:
+            o_angle = pl.nut_rotation_angle(o_nominal, stretch, bolt.pitch)
+            # too short for angle control, as the angle_resolution check says
+            passing = passing & np.logical_not(o_angle * other.scatter < ANGLE_READING_ERROR)
+        candidates.append(other)
+        passes.append(passing)
+    return candidates, passes
+
+
+def _method_text(chosen: list[ControlMethod], own_rank: int) -> tuple[str, str]:
+    """``cheaper_methods`` and ``passing_methods`` for the methods that pass, cheapest first."""
+    cheaper = [m.key for m in chosen if m.cost_rank < own_rank]
+    return (
+        ", ".join(cheaper) if cheaper else "none",
+        ", ".join(m.key for m in chosen) if chosen else "none",
+    )
+
+
 def _method_texts(
     candidates: list[ControlMethod], passes: list[Any], own_rank: int, n: int
 ) -> tuple[np.ndarray, np.ndarray]:
-    """``cheaper_methods`` and ``passing_methods`` per point, as :func:`_control` writes them.
-
-    ``candidates`` are in the order the texts list them (cheapest first); each point's
-    pass pattern is a bit code, and the texts are built once per distinct code.
-    """
+    """:func:`_method_text` per point: each point's pass pattern is a bit code, and the
+    texts are built once per distinct code."""
     code = np.zeros(n, dtype=np.int64)
     for k, passing in enumerate(passes):
         code |= np.broadcast_to(np.asarray(passing, dtype=np.int64), (n,)) << k
@@ -1698,9 +1715,7 @@ def _method_texts(
     passing_text = np.empty(seen.size, dtype=object)
     for i, c in enumerate(seen.tolist()):
         chosen = [m for k, m in enumerate(candidates) if c >> k & 1]
-        cheaper = [m.key for m in chosen if m.cost_rank < own_rank]
-        cheaper_text[i] = ", ".join(cheaper) if cheaper else "none"
-        passing_text[i] = ", ".join(m.key for m in chosen) if chosen else "none"
+        cheaper_text[i], passing_text[i] = _method_text(chosen, own_rank)
     where = np.zeros(int(seen[-1]) + 1, dtype=np.int64)
     where[seen] = np.arange(seen.size)
     index = where[code]
@@ -1721,8 +1736,7 @@ def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
     formula = str(x["torque_formula"])
     d0, area0, _, fine = _smallest_section(bolt, x)
     ok &= fine
-    k_thread, k_bearing, _ = torque_coefficients_raw(bolt, mu_g, mu_k, formula)
-    values = _control_values(x, bolt, method, (d0, area0), k_thread + k_bearing)
+    values, _ = _control_values(x, bolt, method, (d0, area0))
     permissible, at_yield = values["permissible_preload"], values["yield_preload"]
     nominal, f_min, f_max = values["nominal_preload"], values["preload_min"], values["preload_max"]
     torque, required = values["target_torque"], values["required_preload"]
@@ -1757,24 +1771,9 @@ def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
     verdicts["max_below_yield"] = below
 
     if ctx.wants("cheaper_methods", "passing_methods"):
-        # the same family's methods that pass both checks (and read their angle), cheapest
-        # first
-        candidates: list[ControlMethod] = []
-        passes: list[Any] = []
-        for other in sorted(METHODS, key=lambda m: (m.cost_rank, m.key)):
-            if other.family != method.family:
-                continue
-            if other.controls in ("angle", "displacement", "elongation") and stretch is None:
-                continue
-            if other.controls == "displacement" and x.get("coupling_outer_diameter") is None:
-                continue
-            o_nominal, o_min, o_max = _method_band(other, permissible, at_yield, given)
-            passing = (o_min >= required) & (o_max <= top)
-            if other.controls in ("angle", "displacement") and stretch is not None:
-                o_angle = pl.nut_rotation_angle(o_nominal, stretch, bolt.pitch)
-                passing = passing & ~(o_angle * other.scatter < ANGLE_READING_ERROR)
-            candidates.append(other)
-            passes.append(passing)
+        candidates, passes = _passing(
+            x, bolt, method, (permissible, at_yield, given, required), stretch
+        )
         values["cheaper_methods"], values["passing_methods"] = _method_texts(
             candidates, passes, method.cost_rank, n
         )
@@ -1790,13 +1789,13 @@ def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
         x.get("thread_friction_min") is not None or x.get("bearing_friction_min") is not None
     )
     if scatter_wanted and has_range:
-        g_lo, g_hi, fine_g = _range_arrays(x, "thread_friction", mu_g)
-        k_lo, k_hi, fine_k = _range_arrays(x, "bearing_friction", mu_k)
+        g_lo, g_hi, fine_g = _range(x, "thread_friction", mu_g)
+        k_lo, k_hi, fine_k = _range(x, "bearing_friction", mu_k)
         ok &= fine_g & fine_k
         if bolt.bearing_friction_factor != 1.0:  # a countersunk head: μ_K acts on the cone
             k_lo, k_hi = k_lo * bolt.bearing_friction_factor, k_hi * bolt.bearing_friction_factor
         fixed = torque if x.get("scatter_torque") is None else x["scatter_torque"]
-        low, high, mean = _scatter_arrays(bolt, formula, fixed, (g_lo, g_hi), (k_lo, k_hi))
+        low, high, mean = _scatter_band(bolt, formula, fixed, (g_lo, g_hi), (k_lo, k_hi))
         notes.append(SCATTER_MEAN_NOTE)
         values.update(
             scatter_preload_min=low,

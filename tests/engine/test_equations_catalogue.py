@@ -69,7 +69,13 @@ KNOWN_STEPS = {
     "clutch.ball": ("torque_limit", "ball_tangential_force", "spring_rate"),
     "clutch.ball_setting": ("spring_force_for_torque", "spring_deflection_for_force"),
     "impact.rare": ("release_speed_of", "min_return_spring_rate", "relock_margin"),
-    "blow.joint": ("stress_area", "torque_limit", "release_speed", "energy_blow"),
+    "blow.joint": (
+        "stress_area",
+        "torque_limit",
+        "release_speed_of",
+        "rotating_inertia",
+        "energy_blow",
+    ),
 }
 
 

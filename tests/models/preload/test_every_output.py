@@ -3,31 +3,22 @@
 Each value below is worked out here from the relations and table values written out
 in the test (ISO 68-1 thread geometry, ISO 898-1 A_s and strengths, ISO 4762/4032 and
 ISO 273 dimensions, VDI 2230-1 R7/R10/R13, [004] eq. 2–19), never by calling the
-engine's own formulas. The last test holds the list: a numeric output that no case
-here compares fails it.
+engine's own formulas; ``pin`` names each output it holds
+(tests/test_every_output_pinned.py counts them).
 """
 
 from __future__ import annotations
 
 import math
-from typing import Any
 
 import pytest
 
 from engine import run
 from engine.models.preload import CONTROL, TIGHTENING
-from engine.spec import ModelSpec
+from tests.pins import pin
 
 REL = 1e-9
 COS30 = math.cos(math.radians(30.0))
-#: Names each case below asserts, per model (filled as the cases run).
-ASSERTED: dict[str, set[str]] = {"preload.tightening": set(), "preload.control": set()}
-
-
-def _check(spec: ModelSpec, got: dict[str, Any], want: dict[str, float], rel: float = REL) -> None:
-    for name, value in want.items():
-        assert got[name] == pytest.approx(value, rel=rel, abs=1e-300), name
-        ASSERTED[spec.name].add(name)
 
 
 def _num(value: object) -> float:
@@ -79,43 +70,77 @@ def test_tightening_m10_socket_head_12_9_every_output() -> None:
     thumb, thumb_yield = 0.2 * f * d, 0.07 * r_p * d**3  # [004, eq. 16, 18]
     area = math.pi / 4 * (outer**2 - hole**2)
     nut_area = math.pi / 4 * (14.63e-3**2 - hole**2)  # ISO 4032 M10 d_w,min 14.63 mm
-    _check(
-        TIGHTENING,
-        r,
-        {
-            "assembly_preload": f,
-            "permissible_preload": f,
-            "tightening_torque": total,
-            "thread_torque": f * k_g,
-            "bearing_torque": f * k_k,
-            "ideal_torque": ideal,
-            "ideal_torque_share": ideal / total,
-            "friction_radius": (outer + hole) / 4,
-            "stress_area": a_s,
-            "pitch_diameter": d2,
-            "minor_diameter": d3,
-            "thread_pitch": p,
-            "torsion_factor": beta,
-            "equivalent_stress": beta * f / a_s,
-            "yield_strength": r_p,
-            "stress_utilization": 0.9,
-            "bearing_outer_diameter": outer,
-            "hole_diameter": hole,
-            "torque_formula_deviation": abs(k_g + k_k - _exact_k(p, d2, outer, hole, 0.12, 0.12))
-            / _exact_k(p, d2, outer, hole, 0.12, 0.12),
-            "rule_of_thumb_torque": thumb,
-            "rule_of_thumb_deviation": (thumb - total) / total,
-            "yield_rule_torque": thumb_yield,
-            "yield_rule_deviation": (thumb_yield - total) / total,
-            "bearing_area": area,
-            "surface_pressure_head": f / area,
-            "surface_pressure_head_working": 30e3 / area,
-            "surface_pressure_nut": f / nut_area,
-            "limiting_surface_pressure": 490e6,  # S235JR, VDI 2230-1 Table A9
-            "bolt_breaking_force": r_m * a_s,
-            "drive_torque_limit": 120.0,  # ISO 2936, 8 mm key of the M10 ISO 4762 head
-        },
+    pin("preload.tightening", "assembly_preload", r["assembly_preload"], f, rel=REL)
+    pin("preload.tightening", "permissible_preload", r["permissible_preload"], f, rel=REL)
+    pin("preload.tightening", "tightening_torque", r["tightening_torque"], total, rel=REL)
+    pin("preload.tightening", "thread_torque", r["thread_torque"], f * k_g, rel=REL)
+    pin("preload.tightening", "bearing_torque", r["bearing_torque"], f * k_k, rel=REL)
+    pin("preload.tightening", "ideal_torque", r["ideal_torque"], ideal, rel=REL)
+    pin("preload.tightening", "ideal_torque_share", r["ideal_torque_share"], ideal / total, rel=REL)
+    pin("preload.tightening", "friction_radius", r["friction_radius"], (outer + hole) / 4, rel=REL)
+    pin("preload.tightening", "stress_area", r["stress_area"], a_s, rel=REL)
+    pin("preload.tightening", "pitch_diameter", r["pitch_diameter"], d2, rel=REL)
+    pin("preload.tightening", "minor_diameter", r["minor_diameter"], d3, rel=REL)
+    pin("preload.tightening", "thread_pitch", r["thread_pitch"], p, rel=REL)
+    pin("preload.tightening", "torsion_factor", r["torsion_factor"], beta, rel=REL)
+    pin("preload.tightening", "equivalent_stress", r["equivalent_stress"], beta * f / a_s, rel=REL)
+    pin("preload.tightening", "yield_strength", r["yield_strength"], r_p, rel=REL)
+    pin("preload.tightening", "stress_utilization", r["stress_utilization"], 0.9, rel=REL)
+    pin("preload.tightening", "bearing_outer_diameter", r["bearing_outer_diameter"], outer, rel=REL)
+    pin("preload.tightening", "hole_diameter", r["hole_diameter"], hole, rel=REL)
+    pin(
+        "preload.tightening",
+        "torque_formula_deviation",
+        r["torque_formula_deviation"],
+        abs(k_g + k_k - _exact_k(p, d2, outer, hole, 0.12, 0.12))
+        / _exact_k(p, d2, outer, hole, 0.12, 0.12),
+        rel=REL,
     )
+    pin("preload.tightening", "rule_of_thumb_torque", r["rule_of_thumb_torque"], thumb, rel=REL)
+    pin(
+        "preload.tightening",
+        "rule_of_thumb_deviation",
+        r["rule_of_thumb_deviation"],
+        (thumb - total) / total,
+        rel=REL,
+    )
+    pin("preload.tightening", "yield_rule_torque", r["yield_rule_torque"], thumb_yield, rel=REL)
+    pin(
+        "preload.tightening",
+        "yield_rule_deviation",
+        r["yield_rule_deviation"],
+        (thumb_yield - total) / total,
+        rel=REL,
+    )
+    pin("preload.tightening", "bearing_area", r["bearing_area"], area, rel=REL)
+    pin(
+        "preload.tightening", "surface_pressure_head", r["surface_pressure_head"], f / area, rel=REL
+    )
+    pin(
+        "preload.tightening",
+        "surface_pressure_head_working",
+        r["surface_pressure_head_working"],
+        30e3 / area,
+        rel=REL,
+    )
+    pin(
+        "preload.tightening",
+        "surface_pressure_nut",
+        r["surface_pressure_nut"],
+        f / nut_area,
+        rel=REL,
+    )
+    # S235JR, VDI 2230-1 Table A9
+    pin(
+        "preload.tightening",
+        "limiting_surface_pressure",
+        r["limiting_surface_pressure"],
+        490e6,
+        rel=REL,
+    )
+    pin("preload.tightening", "bolt_breaking_force", r["bolt_breaking_force"], r_m * a_s, rel=REL)
+    # ISO 2936, 8 mm key of the M10 ISO 4762 head
+    pin("preload.tightening", "drive_torque_limit", r["drive_torque_limit"], 120.0, rel=REL)
     # R11: the shortest engagement is the one at which the thread strips at R_m A_s,
     # and the stripping force grows in proportion to the engagement
     at_min = run(TIGHTENING, {**x, "engagement_length": r["min_engagement_length"]}).results
@@ -123,7 +148,6 @@ def test_tightening_m10_socket_head_12_9_every_output() -> None:
     assert r["stripping_force"] == pytest.approx(
         r_m * a_s * 0.012 / _num(r["min_engagement_length"]), rel=1e-12
     )
-    ASSERTED["preload.tightening"] |= {"stripping_force", "min_engagement_length"}
 
 
 def test_tightening_given_preload_exact_formula() -> None:
@@ -142,18 +166,42 @@ def test_tightening_given_preload_exact_formula() -> None:
     outer, hole = 22.49e-3, 17.5e-3  # ISO 4017 d_w,min, ISO 273 medium
     k = _exact_k(0.002, d2, outer, hole, 0.12, 0.12)
     beta = _beta(0.002, d2, ds, 0.12)
-    _check(
-        TIGHTENING,
-        r,
-        {
-            "assembly_preload": 60e3,
-            "permissible_preload": 0.9 * 940e6 * a_s / beta,
-            "tightening_torque": 60e3 * k,
-            "friction_radius": (outer**3 - hole**3) / (3 * (outer**2 - hole**2)),
-            "equivalent_stress": beta * 60e3 / a_s,
-            "stress_utilization": beta * 60e3 / a_s / 940e6,
-            "torque_formula_deviation": 0.0,
-        },
+    pin("preload.tightening", "assembly_preload", r["assembly_preload"], 60e3, rel=REL)
+    pin(
+        "preload.tightening",
+        "permissible_preload",
+        r["permissible_preload"],
+        0.9 * 940e6 * a_s / beta,
+        rel=REL,
+    )
+    pin("preload.tightening", "tightening_torque", r["tightening_torque"], 60e3 * k, rel=REL)
+    pin(
+        "preload.tightening",
+        "friction_radius",
+        r["friction_radius"],
+        (outer**3 - hole**3) / (3 * (outer**2 - hole**2)),
+        rel=REL,
+    )
+    pin(
+        "preload.tightening",
+        "equivalent_stress",
+        r["equivalent_stress"],
+        beta * 60e3 / a_s,
+        rel=REL,
+    )
+    pin(
+        "preload.tightening",
+        "stress_utilization",
+        r["stress_utilization"],
+        beta * 60e3 / a_s / 940e6,
+        rel=REL,
+    )
+    pin(
+        "preload.tightening",
+        "torque_formula_deviation",
+        r["torque_formula_deviation"],
+        0.0,
+        rel=REL,
     )
 
 
@@ -188,28 +236,29 @@ def test_control_torque_wrench_with_friction_scatter() -> None:
         for sign, k in ((1, 0.20), (-1, 0.10))
     )
     mean = m * integral / (c * 0.1 * 0.1)
-    _check(
-        CONTROL,
-        r,
-        {
-            "target_torque": torque,
-            "target_force": nominal,
-            "nominal_preload": nominal,
-            "preload_min": nominal * (1 - s),
-            "preload_max": nominal * (1 + s),
-            "scatter": s,
-            "tightening_factor": (1 + s) / (1 - s),
-            "required_preload": 1.25 * 15e3,  # υ = 1.25, the steady range's bottom [004, eq. 2]
-            "preload_factor": 1.25,
-            "permissible_preload": permissible,
-            "yield_preload": at_yield,
-            "scatter_torque_applied": m,
-            "scatter_preload_min": low,
-            "scatter_preload_max": high,
-            "scatter_relative": (high - low) / (high + low),
-        },
+    pin("preload.control", "target_torque", r["target_torque"], torque, rel=REL)
+    pin("preload.control", "target_force", r["target_force"], nominal, rel=REL)
+    pin("preload.control", "nominal_preload", r["nominal_preload"], nominal, rel=REL)
+    pin("preload.control", "preload_min", r["preload_min"], nominal * (1 - s), rel=REL)
+    pin("preload.control", "preload_max", r["preload_max"], nominal * (1 + s), rel=REL)
+    pin("preload.control", "scatter", r["scatter"], s, rel=REL)
+    pin("preload.control", "tightening_factor", r["tightening_factor"], (1 + s) / (1 - s), rel=REL)
+    # υ = 1.25, the steady range's bottom [004, eq. 2]
+    pin("preload.control", "required_preload", r["required_preload"], 1.25 * 15e3, rel=REL)
+    pin("preload.control", "preload_factor", r["preload_factor"], 1.25, rel=REL)
+    pin("preload.control", "permissible_preload", r["permissible_preload"], permissible, rel=REL)
+    pin("preload.control", "yield_preload", r["yield_preload"], at_yield, rel=REL)
+    pin("preload.control", "scatter_torque_applied", r["scatter_torque_applied"], m, rel=REL)
+    pin("preload.control", "scatter_preload_min", r["scatter_preload_min"], low, rel=REL)
+    pin("preload.control", "scatter_preload_max", r["scatter_preload_max"], high, rel=REL)
+    pin(
+        "preload.control",
+        "scatter_relative",
+        r["scatter_relative"],
+        (high - low) / (high + low),
+        rel=REL,
     )
-    _check(CONTROL, r, {"scatter_preload_mean": mean}, rel=1e-11)
+    pin("preload.control", "scatter_preload_mean", r["scatter_preload_mean"], mean, rel=1e-11)
 
 
 def test_control_nut_angle_through_a_shank_bolt() -> None:
@@ -241,18 +290,24 @@ def test_control_nut_angle_through_a_shank_bolt() -> None:
     lam_p = 2 * math.log(top / ((d_w - d_h) * (d_w + grip * tan + d_h))) / (e * math.pi * d_h * tan)
     permissible = 0.9 * 640e6 * a_s / _beta(p, d2, ds, 0.12)  # 8.8 up to M16, VDI 2230-1 R7
     nominal = permissible / 1.2  # nut angle: s = 0.2
-    _check(
-        CONTROL,
-        r,
-        {
-            "bolt_compliance": lam_b,
-            "equivalent_shank_diameter": d_eq,
-            "target_elongation": nominal * lam_b,
-            "target_angle": 2 * math.pi * nominal * (lam_b + lam_p) / p,
-            "permissible_preload": permissible,
-        },
+    pin("preload.control", "bolt_compliance", r["bolt_compliance"], lam_b, rel=REL)
+    pin(
+        "preload.control",
+        "equivalent_shank_diameter",
+        r["equivalent_shank_diameter"],
+        d_eq,
+        rel=REL,
     )
-    _check(CONTROL, r, {"clamped_compliance": lam_p}, rel=1e-8)
+    pin("preload.control", "target_elongation", r["target_elongation"], nominal * lam_b, rel=REL)
+    pin(
+        "preload.control",
+        "target_angle",
+        r["target_angle"],
+        2 * math.pi * nominal * (lam_b + lam_p) / p,
+        rel=REL,
+    )
+    pin("preload.control", "permissible_preload", r["permissible_preload"], permissible, rel=REL)
+    pin("preload.control", "clamped_compliance", r["clamped_compliance"], lam_p, rel=1e-8)
 
 
 def test_control_sucker_rod_marks() -> None:
@@ -276,11 +331,9 @@ def test_control_sucker_rod_marks() -> None:
     lam_b = sum(li / (2.1e11 * math.pi / 4 * d3**2) for li in (0.05, 0.8 * 0.025 / 3))
     nominal = 0.9 * 586e6 * a_s / _beta(p, d2, ds, 0.12) / 1.2  # s = 0.2
     angle = 2 * math.pi * nominal * lam_b / p
-    _check(
-        CONTROL,
-        r,
-        {"clamped_compliance": 0.0, "target_angle": angle, "target_displacement": angle * 0.023},
-    )
+    pin("preload.control", "clamped_compliance", r["clamped_compliance"], 0.0, rel=REL)
+    pin("preload.control", "target_angle", r["target_angle"], angle, rel=REL)
+    pin("preload.control", "target_displacement", r["target_displacement"], angle * 0.023, rel=REL)
 
 
 def test_control_bought_parts_m8_socket_head_in_aluminium() -> None:
@@ -297,25 +350,43 @@ def test_control_bought_parts_m8_socket_head_in_aluminium() -> None:
     outer, hole = 12.33e-3, 9e-3  # ISO 4762 d_w,min, ISO 273 medium
     permissible = 0.9 * 1100e6 * a_s / _beta(p, d2, ds, 0.12)
     area = math.pi / 4 * (outer**2 - hole**2)
-    _check(
-        CONTROL,
-        r,
-        {
-            "bearing_area": area,
-            "surface_pressure_head": permissible / area,
-            "surface_pressure_head_working": 20e3 / area,
-            "surface_pressure_nut": permissible / (math.pi / 4 * (11.63e-3**2 - hole**2)),
-            "limiting_surface_pressure": 360e6,  # EN AW-6082 T6, VDI 2230-1 Table A9
-            "bolt_breaking_force": 1220e6 * a_s,
-            "drive_torque_limit": 52.0,
-        },
+    pin("preload.control", "bearing_area", r["bearing_area"], area, rel=REL)
+    pin(
+        "preload.control",
+        "surface_pressure_head",
+        r["surface_pressure_head"],
+        permissible / area,
+        rel=REL,
     )
+    pin(
+        "preload.control",
+        "surface_pressure_head_working",
+        r["surface_pressure_head_working"],
+        20e3 / area,
+        rel=REL,
+    )
+    pin(
+        "preload.control",
+        "surface_pressure_nut",
+        r["surface_pressure_nut"],
+        permissible / (math.pi / 4 * (11.63e-3**2 - hole**2)),
+        rel=REL,
+    )
+    # EN AW-6082 T6, VDI 2230-1 Table A9
+    pin(
+        "preload.control",
+        "limiting_surface_pressure",
+        r["limiting_surface_pressure"],
+        360e6,
+        rel=REL,
+    )
+    pin("preload.control", "bolt_breaking_force", r["bolt_breaking_force"], 1220e6 * a_s, rel=REL)
+    pin("preload.control", "drive_torque_limit", r["drive_torque_limit"], 52.0, rel=REL)
     at_min = run(CONTROL, {**x, "engagement_length": r["min_engagement_length"]}).results
     assert at_min["stripping_force"] == pytest.approx(1220e6 * a_s, rel=1e-12)
     assert r["stripping_force"] == pytest.approx(
         1220e6 * a_s * 0.008 / _num(r["min_engagement_length"]), rel=1e-12
     )
-    ASSERTED["preload.control"] |= {"stripping_force", "min_engagement_length"}
 
 
 def test_control_histogram_holds_its_sample() -> None:
@@ -324,17 +395,3 @@ def test_control_histogram_holds_its_sample() -> None:
     assert sum(r.series["preload_counts"]) == pytest.approx(38.0, rel=1e-12)
     lo, hi = _num(r.results["scatter_preload_min"]), _num(r.results["scatter_preload_max"])
     assert lo < min(r.series["preload_bins"]) < max(r.series["preload_bins"]) < hi
-    ASSERTED["preload.control"] |= {"preload_counts", "preload_bins"}
-
-
-CASES = [v for k, v in dict(globals()).items() if k.startswith("test_")]
-
-
-@pytest.mark.parametrize("spec", [TIGHTENING, CONTROL], ids=lambda s: s.name)
-def test_every_numeric_output_is_asserted_above(spec: ModelSpec) -> None:
-    """The cases above, run here again, name every numeric output of the model."""
-    for case in CASES:
-        case()
-    numeric = {o.name for o in spec.outputs if o.kind not in ("str", "bool")}
-    missing = sorted(numeric - ASSERTED[spec.name])
-    assert missing == []

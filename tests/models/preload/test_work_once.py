@@ -80,6 +80,8 @@ def test_an_estimate_for_other_inputs_is_not_taken() -> None:
     m12 = dict(TIGHTENING.validate({"thread_diameter": 0.012})[0])
     m16 = dict(TIGHTENING.validate({"thread_diameter": 0.016})[0])
     mp._rung_estimate(m12)
-    design = mp._design(m16)
-    assert design.bolt.diameter == 0.016
+    assert mp._handed_off(m16) is None
     assert mp._HANDOFF.design is None  # used or not, the slot is emptied
+    mp._rung_estimate(m12)
+    design = mp._handed_off(dict(m12))
+    assert design is not None and design.bolt.diameter == 0.012
