@@ -1268,6 +1268,58 @@ MATERIALS: dict[str, Material] = {
 MATERIAL_NAMES: tuple[str, ...] = tuple(MATERIALS)
 
 
+#: Nominal Young's modulus E [GPa] of the catalogue's metals, for the compliance of a tapped
+#: thread cut into them (VDI 2230-1 R3, δ_M with E_BI): [EMODULI]. Plastics are left out
+#: (their modulus depends on moisture, temperature and time): give nut_youngs_modulus.
+MATERIAL_YOUNGS_MODULUS_GPA: dict[str, float] = {
+    "S235JR": 210.0,
+    "E295": 210.0,
+    "C45 (normalised)": 210.0,
+    "42CrMo4 (QT)": 210.0,
+    "X5CrNi18-10": 200.0,
+    "EN-GJL-250": 110.0,
+    "EN-GJS-400": 169.0,
+    "EN-GJS-500": 169.0,
+    "EN AW-6082 T6": 70.0,
+    "EN AW-7075 T6": 70.0,
+    "EN AC-46000 (die cast)": 70.0,
+    "EN AC-42100 T6": 70.0,
+    "TiAl6V4": 110.0,
+    "MgAl9Zn1 (die cast)": 45.0,
+}
+
+
+def material_youngs_modulus(name: str) -> float | None:
+    r"""Nominal Young's modulus of a catalogue material, or None where it is not listed.
+
+    .. math::
+        E = E_{nom}(\text{material})
+
+    Parameters
+    ----------
+    name : str
+        A key of :data:`MATERIALS`, [-]
+
+    Returns
+    -------
+    float or None
+        E, [Pa]
+
+    Notes
+    -----
+    Nominal values of the material standards [EMODULI]: steel 210 GPa (EN 1993-1-1),
+    austenitic stainless 200 GPa, aluminium alloys 70 GPa (EN 1999-1-1), grey iron
+    EN-GJL-250 110 GPa, ductile iron 169 GPa, Ti-6Al-4V 110 GPa, magnesium 45 GPa.
+
+    Examples
+    --------
+    >>> material_youngs_modulus("EN AW-6082 T6") / 1e9, material_youngs_modulus("POM")
+    (70.0, None)
+    """
+    e = MATERIAL_YOUNGS_MODULUS_GPA.get(name)
+    return None if e is None else e * 1e9
+
+
 def material(name: str, *, field: str = "material") -> Material:
     """The material ``name`` of the catalogue (InputOutOfRange naming ``field`` otherwise)."""
     if name not in MATERIALS:

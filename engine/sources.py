@@ -340,6 +340,19 @@ SOURCES: dict[str, Source] = {
             "(engine.fasteners.nut_proof_stress, nut_pairs_with_bolt).",
         ),
         Source(
+            id="EMODULI",
+            kind="standard",
+            title="Nominal Young's moduli of structural metals",
+            authors="CEN (EN 1993-1-1, EN 1999-1-1, EN 1561, EN 1563, EN 10088-1)",
+            year="2005",
+            published="EN 1993-1-1:2005 §3.2.6 (steel E = 210 GPa); EN 1999-1-1:2007 §3.2.5 "
+            "(aluminium alloys E = 70 GPa); the grey- and ductile-iron and stainless standards' "
+            "informative values",
+            covers="E of the catalogue's metals for a tapped thread's compliance "
+            "(engine.fasteners.material_youngs_modulus); typed as the engine's authors know "
+            "them, not checked against a printed copy.",
+        ),
+        Source(
             id="SAEJ429",
             kind="standard",
             title="Mechanical and Material Requirements for Externally Threaded Fasteners",

@@ -558,6 +558,14 @@ def _nut_choice(x: Mapping[str, Any], bolt_tensile_strength: float | None) -> Nu
     return NutChoice(standard, style, cls, given, pairs)
 
 
+def _tapped_modulus(x: Mapping[str, Any]) -> float | None:
+    """E of the part a tapped joint's thread is cut into, from ``internal_thread_material``
+    (None: a through joint's nut, or a material without a listed modulus: E_S)."""
+    if x["joint_type"] != "tapped" or x.get("internal_thread_material") is None:
+        return None
+    return fa.material_youngs_modulus(str(x["internal_thread_material"]))
+
+
 def _plain(value: Any) -> Any:
     """A numpy scalar as a Python float (its arithmetic is several times faster); arrays as is."""
     return value if isinstance(value, np.ndarray) else float(value)
@@ -657,7 +665,7 @@ def _solve(
         free_thread,
         str(x["head"]),
         joint_type,
-        col_or("nut_youngs_modulus", None),
+        col_or("nut_youngs_modulus", _tapped_modulus(x)),
     )
     parts = jt.clamped_compliance(thick, moduli, d_w, d_h, outer, joint_type)
     delta_s, delta_p = bolt_c.total, parts.total
@@ -938,6 +946,21 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"{s['tightening_factor']:.3g} "
             f"({method.key if x.get('tightening_factor') is None else 'as given'}); "
             f"M_A = {s['tightening_torque']:.4g} N·m at μ_G,min, μ_K,min (VDI 2230-1 R13)"
+        )
+    e_tapped = _tapped_modulus(x)
+    if x.get("nut_youngs_modulus") is None and e_tapped is not None:
+        notes.append(
+            f"E_M = {e_tapped / 1e9:.4g} GPa of {x['internal_thread_material']} for the tapped "
+            "thread's compliance δ_M (VDI 2230-1 R3); give nut_youngs_modulus to override"
+        )
+    elif (
+        x.get("nut_youngs_modulus") is None
+        and x["joint_type"] == "tapped"
+        and x.get("internal_thread_material") is not None
+    ):
+        notes.append(
+            f"no modulus listed for {x['internal_thread_material']}: the tapped thread's δ_M "
+            "takes the bolt's E_S; give nut_youngs_modulus"
         )
     nut, f_nut, f_mzul_bolt, nut_limits = s["_nut"]
     if nut is not None and bool(nut_limits):

@@ -209,3 +209,39 @@ def test_nut_checks_on_the_array_path_match_single_runs():
     # outputs follow the capped F_M,zul
     chunk = _assert_matches_single_runs(base, {"working_load": np.array([0.0, 5e3, 20e3])})
     assert chunk.values["permissible_preload"][0] == pytest.approx(500e6 * A_S, rel=1e-9)
+
+
+# ----------------------------------------------------------------- the smaller items
+
+
+M8_INTO_6082 = {
+    "thread": "M8 ISO 4762 12.9",
+    "joint_type": "tapped",
+    "head": "socket",
+    "plate1_thickness": 0.012,
+    "plate1_youngs_modulus": 7e10,
+    "working_load": 4e3,
+    "internal_thread_material": "EN AW-6082 T6",
+    "engagement_length": 0.016,
+}
+
+
+def test_a_tapped_thread_takes_the_modulus_of_its_material():
+    # VDI 2230-1 R3, tapped, socket head, all 12 mm of grip free thread:
+    # δ_S = (0.4 d/A_N + l/A_d3 + 0.5 d/A_d3)/E_S + 0.33 d/(E_M A_N), E_M = 70 GPa (6082)
+    d, p = 0.008, 0.00125
+    a_n, a_d3 = math.pi / 4 * d**2, math.pi / 4 * (d - 1.226869 * p) ** 2
+    bolt_part = (0.4 * d / a_n + 0.012 / a_d3 + 0.5 * d / a_d3) / E_S
+    aluminium = bolt_part + 0.33 * d / (7e10 * a_n)
+    steel = bolt_part + 0.33 * d / (E_S * a_n)
+    r = run(JOINT, M8_INTO_6082)
+    assert r.results["bolt_compliance"] == pytest.approx(aluminium, rel=1e-9)
+    assert r.results["bolt_compliance_engaged"] == pytest.approx(
+        0.5 * d / (E_S * a_d3) + 0.33 * d / (7e10 * a_n), rel=1e-9
+    )
+    assert any("E_M = 70 GPa of EN AW-6082 T6" in n for n in r.notes)
+    # the steel modulus under-stated δ_S by (aluminium − steel)/aluminium ≈ 14 %
+    assert 1 - steel / aluminium == pytest.approx(0.14, abs=0.01)
+    # typed, the modulus wins; a through joint's nut stays steel
+    typed = run(JOINT, {**M8_INTO_6082, "nut_youngs_modulus": E_S})
+    assert typed.results["bolt_compliance"] == pytest.approx(steel, rel=1e-9)
