@@ -558,6 +558,35 @@ def _nut_choice(x: Mapping[str, Any], bolt_tensile_strength: float | None) -> Nu
     return NutChoice(standard, style, cls, given, pairs)
 
 
+#: What the error estimate of 0 leaves out (said with every answer, on both paths).
+MODEL_FORM_NOTE = (
+    "error estimate 0: the arithmetic of VDI 2230's model is exact here, the model is not; "
+    "its empirical parts (the cone-angle fit behind δ_P, the embedding amounts f_Z of Table "
+    "5.4/1, the load-introduction factor n, the friction range) carry an uncertainty that no "
+    "number here includes: read Φ_n, F_Z and the safeties as nominal"
+)
+
+#: The bolts VDI 2230-1 R9's σ_ASV = 0.85 (150/d + 45) was fitted to: ISO 898-1 classes.
+_R9_CLASSES = ("8.8", "9.8", "10.9", "12.9")
+
+
+def _r9_outside(x: Mapping[str, Any], bolt: Bolt) -> str | None:
+    """Why R9's endurance limit does not hold for this bolt (None: it does)."""
+    fastener = bolt.fastener
+    grade = fastener.grade.name if fastener is not None and fastener.grade is not None else None
+    name = grade or (None if x.get("property_class") is None else str(x["property_class"]))
+    why = []
+    if name is None:
+        why.append("the bolt's property class is unknown (yield_strength given)")
+    elif name not in _R9_CLASSES:
+        why.append(f"{name} is not an ISO 898-1 class 8.8–12.9")
+    if fastener is not None and fastener.thread is not None and not fastener.thread.is_metric:
+        why.append("an inch thread")
+    if bolt.diameter > 0.040 + 1e-12:
+        why.append(f"d = {bolt.diameter * 1e3:g} mm > 40 mm")
+    return "; ".join(why) or None
+
+
 def _tapped_modulus(x: Mapping[str, Any]) -> float | None:
     """E of the part a tapped joint's thread is cut into, from ``internal_thread_material``
     (None: a through joint's nut, or a material without a listed modulus: E_S)."""
@@ -776,12 +805,18 @@ def _solve(
     req_max = jt.required_preload_max(alpha_req, req_min)
     fa_limit = jt.max_working_load(f_mzul, alpha_req, f_kerf, loss, phi_n)
     fa_sep_any = jt.separation_load(f_mzul, loss, phi_n)
-    f_kr_min = jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)
+    f_kr_raw = jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)
+    # a joint that opens has no clamp force left (the linear diagram's negative value is not
+    # a force): F_KR,min and S_G are held at 0 there and the checks fail on the raw value
+    f_kr_min = _larger(f_kr_raw, 0.0)
     fa_sep = jt.separation_load(fm_min, loss, phi_n)
     checks: dict[str, tuple[Any, Any]] = {
         "R7_window_fits": (True, req_max <= f_mzul * (1.0 + 1e-12)),
         "separation_avoidable": (True, f_a < fa_sep_any),
-        "residual_clamp_force": (True, f_kr_min >= f_kerf * (1.0 - 1e-12)),
+        "residual_clamp_force": (
+            True,
+            (f_kr_raw >= f_kerf * (1.0 - 1e-12)) & (f_kr_raw > 0.0),
+        ),
     }
     if torque_given:
         checks["R7_max_below_permissible"] = (True, fm_max <= f_mzul * (1.0 + 1e-12))
@@ -878,6 +913,7 @@ def _solve(
         "_method": method,
         "_mu": (mu_g_lo, mu_g_hi, mu_k_lo, mu_k_hi),
         "_m_u": m_u,
+        "_f_kr_raw": f_kr_raw,
         "_nut": (nut, f_nut, f_mzul_bolt, nut_limits),
     }
 
@@ -902,7 +938,12 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     b["_nut"] = _nut_choice(x, bolt.tensile_strength)
     # validated numeric inputs are Python numbers already: read them as they are
     s = _solve(x, x.__getitem__, b, _Refusals(np.False_, many=False))
-    for name in (*_SCALARS, "_alpha_req", "_fa_sep_any"):  # Python floats out (some are numpy's)
+    for name in (
+        *_SCALARS,
+        "_alpha_req",
+        "_fa_sep_any",
+        "_f_kr_raw",
+    ):  # Python floats out (some are numpy's)
         s[name] = float(s[name])
     warnings: list[str] = []
     d = bolt.diameter
@@ -1012,8 +1053,34 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             values[name] = None
     if values["fatigue_safety"] is None:
         notes.append("static working load: no alternating stress, fatigue_safety null (R9)")
+    notes.append(MODEL_FORM_NOTE)
+    outside = _r9_outside(x, bolt)
+    if outside is not None:
+        said = (
+            f"R9's endurance limit σ_AS = 0.85 (150/d + 45) MPa = "
+            f"{values['endurance_limit'] / 1e6:.3g} MPa is VDI 2230's fit for metric ISO 898-1 "
+            f"bolts of class 8.8–12.9, d ≤ 40 mm; here {outside}: it is applied outside its "
+            "range"
+        )
+        if values["fatigue_safety"] is None:
+            notes.append(said)
+        else:
+            warnings.append(
+                said + f", so S_D = {values['fatigue_safety']:.3g} is not backed by it (stainless "
+                "and lower classes have other, often lower, endurance limits; larger bolts a "
+                "lower one): take σ_AS from the bolt's maker or a fatigue test"
+            )
     if values["slip_safety"] is None:
         notes.append("no transverse load: slip_safety null (R12)")
+    if s["_f_kr_raw"] < 0.0:
+        warnings.append(
+            f"the joint opens: F_A = {_kn(float(x['working_load']))} exceeds the separation "
+            f"load {_kn(s['separation_load'])} at F_M,min; no clamp force is left "
+            "(residual_clamp_force_min 0"
+            + ("" if values["slip_safety"] is None else ", slip_safety 0")
+            + ") and the bolt carries all of F_A beyond it, which Φ_n's linear diagram "
+            "does not model"
+        )
     return Result(
         values=values,
         rung=ctx.rung,
@@ -1059,8 +1126,18 @@ def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[s
         "((F_M,zul − F_Z − ΔF_th)/(1 − Φ_n))"
         + ("" if no_sep else ": no admissible preload keeps this joint closed"),
         "residual_clamp_force": "F_KR,min = F_M,min − (1 − Φ_n) F_A − F_Z − ΔF_th = "
-        f"{_kn(s['residual_clamp_force_min'])} vs required F_K,erf = {_kn(f_kerf)}"
-        + ("" if clamp_ok else ": raise the preload floor (torque, method) or lower F_A"),
+        f"{_kn(s['_f_kr_raw'])} vs required F_K,erf = {_kn(f_kerf)}"
+        + (
+            ""
+            if clamp_ok
+            else (
+                ": the joint opens (F_A above the separation load at F_M,min), F_KR,min is "
+                "reported as 0"
+                if s["_f_kr_raw"] <= 0.0
+                else ""
+            )
+            + ": raise the preload floor (torque, method) or lower F_A"
+        ),
         "R8_working_stress": f"σ_red,B = {stress / 1e6:.4g} MPa at F_S,max = "
         "F_M,max + Φ_n F_A − ΔF_Vth (a thermal gain only) = "
         f"{_kn(s['max_bolt_force'])} vs R_p0.2 = {bolt.yield_strength / 1e6:.4g} MPa: S_F = "
@@ -1216,7 +1293,10 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
         "below F_M,zul), or the torque given; not the torque for a nominal preload at mean "
         "friction (preload.control target_torque)",
     ),
-    _f("residual_clamp_force_min", "R12: F_KR,min = F_M,min − (1 − Φ_n) F_A − F_Z − ΔF_th"),
+    _f(
+        "residual_clamp_force_min",
+        "R12: F_KR,min = F_M,min − (1 − Φ_n) F_A − F_Z − ΔF_th, 0 where the joint opens",
+    ),
     _f("separation_load", "R5/R12: F_A at which the joint opens from the lowest assembly preload"),
     _f("max_working_load", "R5–R7: largest F_A whose required window fits under F_M,zul"),
     _f("max_bolt_force", "R8: F_S,max = F_M,max + Φ_n F_A,max"),
@@ -1227,7 +1307,9 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
     ),
     Output("endurance_limit", "Pa", "R9: σ_ASV or σ_ASG", display_unit="MPa"),
     Output("fatigue_safety", "1", "R9: S_D = σ_AS/σ_a (null for static load)"),
-    Output("slip_safety", "1", "R12: S_G = F_KR,min q_F μ_T/F_Q (null without F_Q)"),
+    Output(
+        "slip_safety", "1", "R12: S_G = F_KR,min q_F μ_T/F_Q (null without F_Q; 0 where it opens)"
+    ),
     Output("preload_stress_ratio", "1", "[004, eq. 6]: σ0/σ_T at the nominal preload, on A_0"),
     Output("bolt_elongation", "m", "[004, eq. 7]: F_M,nom δ_S", display_unit="mm"),
     Output(
@@ -1608,6 +1690,7 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         x, col, bolts, bolt_index, ~refused, d_w, d_h, fm_max, f_s_max, probe
     )
     notes += hook_notes
+    notes.append(MODEL_FORM_NOTE)
 
     # what the runner makes of a non-finite value (null) and of a refused point (all null)
     table = np.empty((len(_SCALARS), n))
@@ -1663,7 +1746,8 @@ CLOSED_FORM = Rung(
     "The VDI 2230-1 calculation steps in closed form (cone/sleeve integrals, no iteration "
     "beyond the D_A fixed point)",
     fixed_error(0.0),
-    typical_error="exact for the model; the model's own error (cone fit, friction) dominates",
+    typical_error="exact arithmetic of the model; the model's empirical parts (cone fit, f_Z, "
+    "n, friction) carry an unquantified model-form uncertainty",
     typical_time="< 1 ms",
 )
 

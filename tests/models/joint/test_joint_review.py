@@ -245,3 +245,50 @@ def test_a_tapped_thread_takes_the_modulus_of_its_material():
     # typed, the modulus wins; a through joint's nut stays steel
     typed = run(JOINT, {**M8_INTO_6082, "nut_youngs_modulus": E_S})
     assert typed.results["bolt_compliance"] == pytest.approx(steel, rel=1e-9)
+
+
+def test_a_separated_joint_reports_no_clamp_force_and_no_slip_safety():
+    # M12 8.8, 40 N·m, 80 kN axial and 2 kN transverse: F_M,min − (1 − Φ_n) F_A − F_Z < 0
+    x = {
+        "thread_diameter": D,
+        "plate1_thickness": 0.020,
+        "plate2_thickness": 0.020,
+        "working_load": 80e3,
+        "transverse_load": 2e3,
+        "tightening_torque": 40.0,
+    }
+    r = run(JOINT, x)
+    v = r.results
+    raw = v["assembly_preload_min"] - (1 - v["load_factor"]) * 80e3 - v["embedding_loss"]
+    assert raw < 0.0
+    assert v["residual_clamp_force_min"] == 0.0 and v["slip_safety"] == 0.0
+    checks = {c.name: c for c in r.checks}
+    assert not checks["residual_clamp_force"].ok and not checks["R12_slip"].ok
+    assert any("the joint opens" in w and "slip_safety 0" in w for w in r.warnings)
+    # just closed (F_A 10 kN): F_KR,min and S_G = F_KR q μ/F_Q as before, positive
+    v = run(JOINT, {**x, "working_load": 10e3}).results
+    f_kr = v["assembly_preload_min"] - (1 - v["load_factor"]) * 10e3 - v["embedding_loss"]
+    assert v["residual_clamp_force_min"] == pytest.approx(f_kr, rel=1e-12)
+    assert v["slip_safety"] == pytest.approx(f_kr * 1 * 0.15 / 2e3, rel=1e-12)
+
+
+def test_r9_says_when_its_endurance_limit_is_applied_outside_its_range():
+    base = {"plate1_thickness": 0.020, "plate2_thickness": 0.020, "working_load": 5e3}
+    base["working_load_min"] = 0.0
+    # σ_ASV = 0.85 (150/12 + 45) = 48.875 MPa, fitted to ISO 898-1 8.8–12.9, d ≤ 40 mm
+    for thread in ("M12 ISO 4017 A2-70", "M12 ISO 4017 4.6"):
+        r = run(JOINT, {**base, "thread": thread})
+        assert r.results["endurance_limit"] == pytest.approx(0.85 * (150 / 12 + 45) * 1e6)
+        assert any("applied outside its range" in w for w in r.warnings), thread
+    assert not any(
+        "outside" in w for w in run(JOINT, {**base, "thread": "M12 ISO 4017 8.8"}).warnings
+    )
+    inch = run(JOINT, {**base, "thread": "1/2-13 UNC", "grade": "SAE 5"})
+    assert any("an inch thread" in w for w in inch.warnings)
+
+
+def test_the_error_estimate_of_zero_comes_with_the_model_form_sentence():
+    r = run(JOINT, ALUMINIUM_HOT)
+    assert r.error_estimate == 0.0
+    said = [n for n in r.notes if n.startswith("error estimate 0")]
+    assert len(said) == 1 and all(w in said[0] for w in ("cone-angle", "f_Z", "factor n"))
