@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -1867,3 +1867,97 @@ def catalogue() -> dict[str, list[dict[str, object]]]:
         "washers": washers,
         "materials": [m.describe() for m in MATERIALS.values()],
     }
+
+
+#: VDI 2230-1 R11 sizes the engagement for a bolt at the top of its strength range,
+#: R_m,max = 1.2 R_m,min, so that even it breaks before a thread strips (the factor as the
+#: 2026-11-26 review quotes open VDI 2230 implementations; [BAT-R11] itself uses R_m,min).
+BOLT_UPPER_STRENGTH_FACTOR = 1.2
+
+#: Entry chamfers and run-out of the two threads, in pitches: m_ges = m_eff + 2 P
+#: (VDI 2230-1 R11 as [BAT-R11] implements it).
+ENTRY_CHAMFER_PITCHES = 2.0
+
+
+def engagement_for_bolt_failure(
+    diameter: Any,
+    pitch: Any,
+    pitch_diameter: Any,
+    nut_minor_diameter: Any,
+    stress_area: Any,
+    bolt_tensile_strength: Any,
+    bolt_shear_strength: Any,
+    internal_shear_strength: Any,
+    length: Any,
+    *,
+    width_across_flats: float | None = None,
+) -> Stripping:
+    r"""VDI 2230-1 R11: the engaged length at which a bolt of upper strength breaks first.
+
+    .. math::
+        F_{B} = 1.2\,R_m A_s,\qquad
+        m_{ges,min} = \frac{F_B}{C_1 C_3 \tau_{BM} A_{SN}/L} + 2P
+        \ \text{(and the bolt thread's the same with } C_2, \tau_{BS})
+
+    Parameters
+    ----------
+    diameter, pitch, pitch_diameter, nut_minor_diameter : float or numpy array
+        d, P, d2, D1, [m]
+    stress_area : float or numpy array
+        A_s, [m²]
+    bolt_tensile_strength : float or numpy array
+        R_m,min of the bolt (its class's), [Pa]
+    bolt_shear_strength : float or numpy array
+        τ_BS of the bolt thread at its minimum strength, [Pa]
+    internal_shear_strength : float or numpy array
+        τ_BM of the nut or tapped material, [Pa]
+    length : float or numpy array
+        Engaged length m_ges as built, entry chamfers included, [m]
+    width_across_flats : float, optional
+        s of a nut (C1); None for a tapped hole, [m]
+
+    Returns
+    -------
+    Stripping
+        :func:`thread_stripping` with F_B at 1.2 R_m A_s, the minimum lengths including
+        the 2 P of the chamfers and the strip forces at the full threads of ``length``
+        (m_ges − 2 P, not below 0)
+
+    Notes
+    -----
+    VDI 2230-1 R11 after Alexander, as its open implementation [BAT-R11] states it
+    (m_ges = R_m A_s P/(C1 C3 τ_BM (P/2 + (d − D2) tan 30°) π d) + 2 P), with the bolt's
+    breaking force taken at its upper strength R_m,max = 1.2 R_m,min: a bolt at the top
+    of its class still breaks before a thread strips. The threads' own shear strengths
+    stay at their minimum.
+
+    Examples
+    --------
+    M12 8.8 into S235JR (τ_BM = 0.6 × 360 MPa): 1.2 × 9.28 mm of full thread + 3.5 mm
+
+    >>> s = engagement_for_bolt_failure(0.012, 0.00175, 0.0108633, 0.0101056, 84.27e-6,
+    ...                                 800e6, 480e6, 216e6, 0.012)
+    >>> round(s.min_engagement_length * 1e3, 2)
+    14.64
+    """
+    chamfers = ENTRY_CHAMFER_PITCHES * pitch
+    full: Any = length - chamfers
+    full = np.maximum(full, 0.0) if isinstance(full, np.ndarray) else max(full, 0.0)
+    s = thread_stripping(
+        diameter,
+        pitch,
+        pitch_diameter,
+        nut_minor_diameter,
+        stress_area,
+        BOLT_UPPER_STRENGTH_FACTOR * bolt_tensile_strength,
+        bolt_shear_strength,
+        internal_shear_strength,
+        full,
+        width_across_flats=width_across_flats,
+    )
+    return replace(
+        s,
+        min_engagement_length=s.min_engagement_length + chamfers,
+        min_engagement_internal=s.min_engagement_internal + chamfers,
+        min_engagement_external=s.min_engagement_external + chamfers,
+    )

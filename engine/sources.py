@@ -353,6 +353,18 @@ SOURCES: dict[str, Source] = {
             "them, not checked against a printed copy.",
         ),
         Source(
+            id="BAT-R11",
+            kind="paper",
+            title="BAT (Bolt Analysis Tool), thread pull-out analysis after VDI 2230 §5.5.5",
+            authors="M. Sams",
+            year="2021",
+            published="https://github.com/misams/BAT, BAT/src/ThreadPullOut.py",
+            covers="VDI 2230-1 R11 as an open implementation states it: R_S, C1, C3 (R_S held "
+            "at 0.4), m_ges = R_m A_s P/(C1 C3 τ_BM (P/2 + (d − D2) tan 30°) π d) + 2 P for the "
+            "entry chamfers (engine.fasteners.engagement_for_bolt_failure); it sizes at R_m,min, "
+            "the engine at 1.2 R_m,min.",
+        ),
+        Source(
             id="SAEJ429",
             kind="standard",
             title="Mechanical and Material Requirements for Externally Threaded Fasteners",

@@ -1594,7 +1594,7 @@ def _min_engagement(bolt: Bolt, tau: np.ndarray, sel: np.ndarray) -> np.ndarray:
     result = np.full(tau.shape, np.nan)
     values, where = np.unique(tau[sel], return_inverse=True)
     lengths = [
-        fa.thread_stripping(
+        fa.engagement_for_bolt_failure(
             bolt.diameter,
             bolt.pitch,
             bolt.pitch_diameter,

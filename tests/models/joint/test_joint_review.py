@@ -292,3 +292,50 @@ def test_the_error_estimate_of_zero_comes_with_the_model_form_sentence():
     assert r.error_estimate == 0.0
     said = [n for n in r.notes if n.startswith("error estimate 0")]
     assert len(said) == 1 and all(w in said[0] for w in ("cone-angle", "f_Z", "factor n"))
+
+
+# ----------------------------------------------------------------- R11 thread stripping
+
+
+def _r11_tapped(r_m, tau_bm, tau_bs):
+    """VDI 2230-1 R11 (Alexander) for M12 into a tapped hole, C1 = 1, written out:
+    m_ges = 1.2 R_m A_s P / (C3 τ_BM (P/2 + (d − D2) tan 30°) π d) + 2 P, with C3 from
+    R_S = τ_BM d (P/2 + (d − D2) tan 30°) / (τ_BS D1 (P/2 + (D2 − D1) tan 30°)) ≥ 0.4,
+    or the bolt thread's length where that is longer."""
+    d1 = D - 1.082532 * P  # D1 of ISO 68-1
+    t30 = math.tan(math.radians(30))
+    per_n = math.pi * D * (P / 2 + (D - D2) * t30) / P  # A_SN per metre of engagement
+    per_s = math.pi * d1 * (P / 2 + (D2 - d1) * t30) / P  # A_SS per metre
+    r_s = max(tau_bm * per_n / (tau_bs * per_s), 0.4)
+    assert r_s < 1  # the tapped thread is the weaker: C2 = 1 (bolt thread), C3 from R_S
+    c3 = 0.728 + 1.769 * r_s - 2.896 * r_s**2 + 1.296 * r_s**3
+    f_b = 1.2 * r_m * A_S
+    return max(f_b / (c3 * tau_bm * per_n), f_b / (tau_bs * per_s)) + 2 * P
+
+
+@pytest.mark.parametrize(
+    ("material", "tau", "review_mm"),
+    [("S235JR", 0.6 * 360e6, 14.6), ("EN-GJL-250", 1.1 * 250e6, 12.8)],
+)
+def test_r11_sizes_the_engagement_for_the_bolt_at_its_upper_strength(material, tau, review_mm):
+    hand = _r11_tapped(800e6, tau, 0.6 * 800e6)
+    assert hand * 1e3 == pytest.approx(review_mm, abs=0.06)  # the review's figures
+    tight = get_model("preload.tightening")
+    need = run(tight, {"thread": "M12 ISO 4017 8.8", "internal_thread_material": material})
+    assert need.results["min_engagement_length"] == pytest.approx(hand, rel=2e-4)
+    assert need.results["bolt_breaking_force"] == pytest.approx(1.2 * 800e6 * A_S, rel=1e-9)
+    # the joint: 12 mm of engagement now fails into S235JR; the needed length passes
+    x = {
+        "thread": "M12 ISO 4017 8.8",
+        "joint_type": "tapped",
+        "plate1_thickness": 0.020,
+        "working_load": 5e3,
+        "internal_thread_material": material,
+    }
+    for length in (hand * 0.99, hand * 1.01):
+        r = run(JOINT, {**x, "engagement_length": length})
+        ok = {c.name: c.ok for c in r.checks}["thread_stripping"]
+        assert ok is (length > hand)
+    if material == "S235JR":
+        r = run(JOINT, {**x, "engagement_length": 0.012})
+        assert not {c.name: c.ok for c in r.checks}["thread_stripping"]
