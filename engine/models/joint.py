@@ -988,6 +988,8 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"({method.key if x.get('tightening_factor') is None else 'as given'}); "
             f"M_A = {s['tightening_torque']:.4g} N·m at μ_G,min, μ_K,min (VDI 2230-1 R13)"
         )
+    if x.get("nut_property_class") is not None and x.get("nut") is None:
+        notes.append("nut_property_class ignored: no nut given (a tapped joint, or give nut)")
     e_tapped = _tapped_modulus(x)
     if x.get("nut_youngs_modulus") is None and e_tapped is not None:
         notes.append(

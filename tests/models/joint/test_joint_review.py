@@ -339,3 +339,10 @@ def test_r11_sizes_the_engagement_for_the_bolt_at_its_upper_strength(material, t
     if material == "S235JR":
         r = run(JOINT, {**x, "engagement_length": 0.012})
         assert not {c.name: c.ok for c in r.checks}["thread_stripping"]
+
+
+def test_a_nut_class_without_a_nut_is_said_to_be_ignored():
+    x = {**ALUMINIUM_HOT, "nut_property_class": "8"}
+    r = run(JOINT, x)
+    assert any(n.startswith("nut_property_class ignored") for n in r.notes)
+    assert r.results["permissible_preload"] == pytest.approx(_f_mzul(0.12), rel=1e-9)
