@@ -1693,6 +1693,18 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
     notes += hook_notes
     notes.append(MODEL_FORM_NOTE)
+    nut, f_nut, _, nut_limits = s["_nut"]
+    if nut is not None and np.any(~refused & np.broadcast_to(nut_limits, (n,))):
+        warnings.append(
+            f"the {nut.standard} nut (class {nut.property_class}) limits the preload at some "
+            "points: F_M,zul is its ISO 898-2 proof load there, the preload window and the "
+            "torque are built on it"
+        )
+    if np.any(~refused & np.broadcast_to(s["_f_kr_raw"] < 0.0, (n,))):
+        warnings.append(
+            "the joint opens at some points (F_A above the separation load at F_M,min): "
+            "residual_clamp_force_min and slip_safety are 0 there"
+        )
 
     # what the runner makes of a non-finite value (null) and of a refused point (all null)
     table = np.empty((len(_SCALARS), n))

@@ -346,3 +346,13 @@ def test_a_nut_class_without_a_nut_is_said_to_be_ignored():
     r = run(JOINT, x)
     assert any(n.startswith("nut_property_class ignored") for n in r.notes)
     assert r.results["permissible_preload"] == pytest.approx(_f_mzul(0.12), rel=1e-9)
+
+
+def test_a_sweep_warns_of_a_nut_that_limits_and_a_joint_that_opens():
+    from engine.runner import sweep
+
+    r = sweep(JOINT, dict(M12_129_THIN), "working_load", [0.0, 5e3, 200e3])
+    said = " ".join(r.warnings)
+    assert "limits the preload at some points" in said
+    assert "the joint opens at some points" in said
+    assert r.results["residual_clamp_force_min"][2] == 0.0
