@@ -1693,7 +1693,7 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
     notes += hook_notes
     notes.append(MODEL_FORM_NOTE)
-    nut, f_nut, _, nut_limits = s["_nut"]
+    nut, _, _, nut_limits = s["_nut"]
     if nut is not None and np.any(~refused & np.broadcast_to(nut_limits, (n,))):
         warnings.append(
             f"the {nut.standard} nut (class {nut.property_class}) limits the preload at some "
