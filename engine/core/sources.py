@@ -327,6 +327,45 @@ SOURCES: dict[str, Source] = {
             "classes (engine.physics.fasteners).",
         ),
         Source(
+            id="EN20898-2",
+            kind="standard",
+            title="Mechanical properties of fasteners - Part 2: Nuts with specified proof "
+            "load values - Coarse thread",
+            authors="ISO / CEN",
+            year="1992",
+            published="ISO 898-2:1992 = EN 20898-2:1993 (as reproduced by Bossard, technical "
+            "information 'Nuts property classes 04 to 12', and a DIN EN 20898-2 proof-load "
+            "extract)",
+            covers="Stress under proof load S_p by nut class and size range (04/05 380/500 MPa; "
+            "class 8 M12 880 MPa, proof load 74 200 N); class N nuts with bolts up to N.x "
+            "(engine.physics.fasteners.nut_proof_stress, nut_pairs_with_bolt).",
+        ),
+        Source(
+            id="EMODULI",
+            kind="standard",
+            title="Nominal Young's moduli of structural metals",
+            authors="CEN (EN 1993-1-1, EN 1999-1-1, EN 1561, EN 1563, EN 10088-1)",
+            year="2005",
+            published="EN 1993-1-1:2005 §3.2.6 (steel E = 210 GPa); EN 1999-1-1:2007 §3.2.5 "
+            "(aluminium alloys E = 70 GPa); the grey- and ductile-iron and stainless standards' "
+            "informative values",
+            covers="E of the catalogue's metals for a tapped thread's compliance "
+            "(engine.physics.fasteners.material_youngs_modulus); typed as the engine's authors know "
+            "them, not checked against a printed copy.",
+        ),
+        Source(
+            id="BAT-R11",
+            kind="paper",
+            title="BAT (Bolt Analysis Tool), thread pull-out analysis after VDI 2230 §5.5.5",
+            authors="M. Sams",
+            year="2021",
+            published="https://github.com/misams/BAT, BAT/src/ThreadPullOut.py",
+            covers="VDI 2230-1 R11 as an open implementation states it: R_S, C1, C3 (R_S held "
+            "at 0.4), m_ges = R_m A_s P/(C1 C3 τ_BM (P/2 + (d − D2) tan 30°) π d) + 2 P for the "
+            "entry chamfers (engine.physics.fasteners.engagement_for_bolt_failure); it sizes at R_m,min, "
+            "the engine at 1.2 R_m,min.",
+        ),
+        Source(
             id="SAEJ429",
             kind="standard",
             title="Mechanical and Material Requirements for Externally Threaded Fasteners",
@@ -620,6 +659,7 @@ _PATTERNS: tuple[tuple[re.Pattern[str], str | None], ...] = (
     (re.compile(r"\bISO 262\b"), "ISO262"),
     (re.compile(r"\bISO 3506(?:-1)?\b"), "ISO3506-1"),
     (re.compile(r"\bISO 898-2\b"), "ISO898-2"),
+    (re.compile(r"\bEN 20898-2\b"), "EN20898-2"),
     (re.compile(r"\bSAE J429\b"), "SAEJ429"),
     (re.compile(r"\bASTM A193\b"), "ASTMA193"),
     (re.compile(r"\bASME B1\.1\b"), "ASMEB1.1"),

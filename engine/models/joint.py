@@ -34,7 +34,8 @@ from .preload import BOLT_INPUTS, Bolt, resolve_bolt
 SOURCE = (
     "VDI 2230-1:2015 steps R0–R13 (text paywalled: relations as reproduced in "
     "ECSS-E-HB-32-23A §6–7 and the open implementation misams/BAT); [004] eq. 2–8 for the "
-    "review's preload rules; ISO 68-1, 261, 273, 898-1, 4017"
+    "review's preload rules; ISO 68-1, 261, 273, 898-1, 4017; nut proof loads of ISO 898-2:1992 "
+    "(EN 20898-2)"
 )
 
 #: Bolt-family control methods (the sucker-rod ones do not tighten a bolted joint).
@@ -432,6 +433,15 @@ JOINT_INPUTS: tuple[Param, ...] = (
     ),
     # bought-part checks (issue 15): surface pressure VDI 2230-1 R10, engagement R11
     *(p for p in fz.CHECK_INPUTS if p.name != "working_bolt_force"),
+    Param(
+        "nut_property_class",
+        "1",
+        "Property class of the nut (ISO 898-2; 04/05: thin nuts): its proof load caps F_M,zul; "
+        "absent: the lowest class the nut standard is made in that pairs with the bolt",
+        kind="choice",
+        choices=fa.NUT_PROPERTY_CLASSES,
+        group="fastener",
+    ),
 )
 
 # --------------------------------------------------------------------------- hooks
@@ -506,6 +516,83 @@ def _larger(a: Any, b: Any) -> Any:
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
         return np.maximum(a, b)
     return max(a, b)
+
+
+def _pick(condition: Any, a: Any, b: Any) -> Any:
+    if isinstance(condition, np.ndarray) or isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return np.where(condition, a, b)
+    return a if condition else b
+
+
+@dataclass(frozen=True)
+class NutChoice:
+    """The nut of a through-bolted joint as ISO 898-2 rates it."""
+
+    standard: str
+    style: str
+    property_class: str
+    given: bool
+    pairs: bool | None  # with the bolt's class; None: the bolt's R_m is unknown
+
+
+def _nut_choice(x: Mapping[str, Any], bolt_tensile_strength: float | None) -> NutChoice | None:
+    """The nut's class: as given, else the lowest class its standard is made in that pairs
+    with the bolt (ISO 898-2), else the strongest it is made in."""
+    if x.get("nut") is None:
+        return None
+    standard = str(x["nut"])
+    style, made = fa.NUT_CLASSES[standard]
+    given = x.get("nut_property_class") is not None
+    if given:
+        cls = str(x["nut_property_class"])
+    elif bolt_tensile_strength is not None:
+        paired = [c for c in made if fa.nut_pairs_with_bolt(c, bolt_tensile_strength)]
+        cls = paired[0] if paired else made[-1]
+    else:
+        cls = made[-1]
+    pairs = (
+        None
+        if bolt_tensile_strength is None
+        else fa.nut_pairs_with_bolt(cls, bolt_tensile_strength)
+    )
+    return NutChoice(standard, style, cls, given, pairs)
+
+
+#: What the error estimate of 0 leaves out (said with every answer, on both paths).
+MODEL_FORM_NOTE = (
+    "error estimate 0: the arithmetic of VDI 2230's model is exact here, the model is not; "
+    "its empirical parts (the cone-angle fit behind δ_P, the embedding amounts f_Z of Table "
+    "5.4/1, the load-introduction factor n, the friction range) carry an uncertainty that no "
+    "number here includes: read Φ_n, F_Z and the safeties as nominal"
+)
+
+#: The bolts VDI 2230-1 R9's σ_ASV = 0.85 (150/d + 45) was fitted to: ISO 898-1 classes.
+_R9_CLASSES = ("8.8", "9.8", "10.9", "12.9")
+
+
+def _r9_outside(x: Mapping[str, Any], bolt: Bolt) -> str | None:
+    """Why R9's endurance limit does not hold for this bolt (None: it does)."""
+    fastener = bolt.fastener
+    grade = fastener.grade.name if fastener is not None and fastener.grade is not None else None
+    name = grade or (None if x.get("property_class") is None else str(x["property_class"]))
+    why = []
+    if name is None:
+        why.append("the bolt's property class is unknown (yield_strength given)")
+    elif name not in _R9_CLASSES:
+        why.append(f"{name} is not an ISO 898-1 class 8.8–12.9")
+    if fastener is not None and fastener.thread is not None and not fastener.thread.is_metric:
+        why.append("an inch thread")
+    if bolt.diameter > 0.040 + 1e-12:
+        why.append(f"d = {bolt.diameter * 1e3:g} mm > 40 mm")
+    return "; ".join(why) or None
+
+
+def _tapped_modulus(x: Mapping[str, Any]) -> float | None:
+    """E of the part a tapped joint's thread is cut into, from ``internal_thread_material``
+    (None: a through joint's nut, or a material without a listed modulus: E_S)."""
+    if x["joint_type"] != "tapped" or x.get("internal_thread_material") is None:
+        return None
+    return fa.material_youngs_modulus(str(x["internal_thread_material"]))
 
 
 def _plain(value: Any) -> Any:
@@ -607,7 +694,7 @@ def _solve(
         free_thread,
         str(x["head"]),
         joint_type,
-        col_or("nut_youngs_modulus", None),
+        col_or("nut_youngs_modulus", _tapped_modulus(x)),
     )
     parts = jt.clamped_compliance(thick, moduli, d_w, d_h, outer, joint_type)
     delta_s, delta_p = bolt_c.total, parts.total
@@ -657,8 +744,15 @@ def _solve(
     a0 = jt.smallest_area(d0, a_s, where)
     nu = col("utilization")
     beta = _plain(pl.torsion_factor(pitch, d2, d0, mu_g_lo, "vdi2230"))
-    f_mzul = pl.assembly_preload(yield_strength, a0, beta, nu)
+    f_mzul_bolt = pl.assembly_preload(yield_strength, a0, beta, nu)
     f_myield = pl.assembly_preload(yield_strength, a0, beta, 1.0)
+    # the nut's proof load (ISO 898-2) caps the preload a through bolt may be given
+    nut = b.get("_nut")
+    f_nut: Any = math.nan
+    if nut is not None:
+        f_nut = _plain(fa.nut_proof_load(nut.property_class, d, a_s, nut.style))
+    nut_limits = f_nut < f_mzul_bolt  # False where ISO 898-2 gives no S_p (NaN)
+    f_mzul = _pick(nut_limits, f_nut, f_mzul_bolt)
 
     # R1/R13 assembly preload range: torque specification, or tightened to F_M,zul ---------------
     m_u = col("prevailing_torque")
@@ -689,18 +783,20 @@ def _solve(
 
     # R4 thermal loss at the lowest service preload -----------------------------------------------
     dt_s = col("temperature_change")
-    th_loss = jt.thermal_preload_loss(
-        fm_min - f_z,
-        grip,
-        col("bolt_expansion"),
-        dt_s,
-        jt.plates_expansion_length(thick, alphas),
-        col_or("plate_temperature_change", dt_s),
-        delta_s,
-        delta_p,
-        col("bolt_modulus_ratio"),
-        col("plate_modulus_ratio"),
+    thermal = partial(
+        jt.thermal_preload_loss,
+        grip=grip,
+        bolt_expansion=col("bolt_expansion"),
+        bolt_temperature_change=dt_s,
+        clamped_expansion_length=jt.plates_expansion_length(thick, alphas),
+        plate_temperature_change=col_or("plate_temperature_change", dt_s),
+        bolt=delta_s,
+        clamped=delta_p,
+        bolt_modulus_ratio=col("bolt_modulus_ratio"),
+        clamped_modulus_ratio=col("plate_modulus_ratio"),
     )
+    th_loss = thermal(fm_min - f_z)
+    th_top = thermal(fm_max)  # R8: the change at the largest assembly preload
     loss = jt.preload_losses(f_z, th_loss)
 
     # R5/R6 required window, R7 against it ---------------------------------------------------------
@@ -709,19 +805,25 @@ def _solve(
     req_max = jt.required_preload_max(alpha_req, req_min)
     fa_limit = jt.max_working_load(f_mzul, alpha_req, f_kerf, loss, phi_n)
     fa_sep_any = jt.separation_load(f_mzul, loss, phi_n)
-    f_kr_min = jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)
+    f_kr_raw = jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)
+    # a joint that opens has no clamp force left (the linear diagram's negative value is not
+    # a force): F_KR,min and S_G are held at 0 there and the checks fail on the raw value
+    f_kr_min = _larger(f_kr_raw, 0.0)
     fa_sep = jt.separation_load(fm_min, loss, phi_n)
     checks: dict[str, tuple[Any, Any]] = {
         "R7_window_fits": (True, req_max <= f_mzul * (1.0 + 1e-12)),
         "separation_avoidable": (True, f_a < fa_sep_any),
-        "residual_clamp_force": (True, f_kr_min >= f_kerf * (1.0 - 1e-12)),
+        "residual_clamp_force": (
+            True,
+            (f_kr_raw >= f_kerf * (1.0 - 1e-12)) & (f_kr_raw > 0.0),
+        ),
     }
     if torque_given:
         checks["R7_max_below_permissible"] = (True, fm_max <= f_mzul * (1.0 + 1e-12))
 
     # R8 working stress ---------------------------------------------------------------------------
     add_load = jt.additional_bolt_load(phi_n, f_a)
-    f_s_max = jt.max_bolt_force(fm_max, add_load)
+    f_s_max = jt.max_bolt_force(fm_max, add_load, th_top)
     stress = jt.service_stress(f_s_max, fm_max, pitch, d2, d0, mu_g_lo)
     refusals.arithmetic(stress.equivalent == 0.0, "σ_red,B = 0")
     refusals.arithmetic(
@@ -731,6 +833,13 @@ def _solve(
     )
     s_f = jt.yield_safety(yield_strength, stress.equivalent)
     checks["R8_working_stress"] = (True, s_f >= 1.0)
+    if nut is not None:
+        checks["nut_strength"] = (
+            f_nut == f_nut,  # ISO 898-2 covers the size
+            (f_mzul_bolt <= f_nut) & (f_s_max <= f_nut * (1.0 + 1e-12)),
+        )
+        if nut.pairs is not None:
+            checks["nut_class_pairing"] = (True, nut.pairs)
 
     # R9 alternating stress -----------------------------------------------------------------------
     sigma_a = jt.stress_amplitude(phi_n, f_a, f_a_min, a_s)
@@ -804,6 +913,8 @@ def _solve(
         "_method": method,
         "_mu": (mu_g_lo, mu_g_hi, mu_k_lo, mu_k_hi),
         "_m_u": m_u,
+        "_f_kr_raw": f_kr_raw,
+        "_nut": (nut, f_nut, f_mzul_bolt, nut_limits),
     }
 
 
@@ -823,10 +934,16 @@ def _seed_004_rule(
 
 def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     bolt, notes = resolve_bolt(x)
-    b = {f: getattr(bolt, f) for f in _BOLT_FIELDS}
+    b: dict[str, Any] = {f: getattr(bolt, f) for f in _BOLT_FIELDS}
+    b["_nut"] = _nut_choice(x, bolt.tensile_strength)
     # validated numeric inputs are Python numbers already: read them as they are
     s = _solve(x, x.__getitem__, b, _Refusals(np.False_, many=False))
-    for name in (*_SCALARS, "_alpha_req", "_fa_sep_any"):  # Python floats out (some are numpy's)
+    for name in (
+        *_SCALARS,
+        "_alpha_req",
+        "_fa_sep_any",
+        "_f_kr_raw",
+    ):  # Python floats out (some are numpy's)
         s[name] = float(s[name])
     warnings: list[str] = []
     d = bolt.diameter
@@ -871,6 +988,35 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"({method.key if x.get('tightening_factor') is None else 'as given'}); "
             f"M_A = {s['tightening_torque']:.4g} N·m at μ_G,min, μ_K,min (VDI 2230-1 R13)"
         )
+    if x.get("nut_property_class") is not None and x.get("nut") is None:
+        notes.append("nut_property_class ignored: no nut given (a tapped joint, or give nut)")
+    e_tapped = _tapped_modulus(x)
+    if x.get("nut_youngs_modulus") is None and e_tapped is not None:
+        notes.append(
+            f"E_M = {e_tapped / 1e9:.4g} GPa of {x['internal_thread_material']} for the tapped "
+            "thread's compliance δ_M (VDI 2230-1 R3); give nut_youngs_modulus to override"
+        )
+    elif (
+        x.get("nut_youngs_modulus") is None
+        and x["joint_type"] == "tapped"
+        and x.get("internal_thread_material") is not None
+    ):
+        notes.append(
+            f"no modulus listed for {x['internal_thread_material']}: the tapped thread's δ_M "
+            "takes the bolt's E_S; give nut_youngs_modulus"
+        )
+    nut, f_nut, f_mzul_bolt, nut_limits = s["_nut"]
+    if nut is not None and bool(nut_limits):
+        warnings.append(
+            f"the {nut.standard} nut (class {nut.property_class}) limits the preload: F_M,zul = "
+            f"{_kn(f_nut)}, its ISO 898-2 proof load, instead of the bolt's {_kn(f_mzul_bolt)}; "
+            "the preload window and the torque are built on it"
+        )
+    elif nut is not None and f_nut != f_nut:
+        notes.append(
+            f"nut strength not checked: ISO 898-2 gives no proof load for class "
+            f"{nut.property_class} at d = {d * 1e3:g} mm"
+        )
     sentences = _sentences(x, s, bolt)
     checks = [
         Check(name, bool(ok), sentences[name])
@@ -909,8 +1055,34 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             values[name] = None
     if values["fatigue_safety"] is None:
         notes.append("static working load: no alternating stress, fatigue_safety null (R9)")
+    notes.append(MODEL_FORM_NOTE)
+    outside = _r9_outside(x, bolt)
+    if outside is not None:
+        said = (
+            f"R9's endurance limit σ_AS = 0.85 (150/d + 45) MPa = "
+            f"{values['endurance_limit'] / 1e6:.3g} MPa is VDI 2230's fit for metric ISO 898-1 "
+            f"bolts of class 8.8–12.9, d ≤ 40 mm; here {outside}: it is applied outside its "
+            "range"
+        )
+        if values["fatigue_safety"] is None:
+            notes.append(said)
+        else:
+            warnings.append(
+                said + f", so S_D = {values['fatigue_safety']:.3g} is not backed by it (stainless "
+                "and lower classes have other, often lower, endurance limits; larger bolts a "
+                "lower one): take σ_AS from the bolt's maker or a fatigue test"
+            )
     if values["slip_safety"] is None:
         notes.append("no transverse load: slip_safety null (R12)")
+    if s["_f_kr_raw"] < 0.0:
+        warnings.append(
+            f"the joint opens: F_A = {_kn(float(x['working_load']))} exceeds the separation "
+            f"load {_kn(s['separation_load'])} at F_M,min; no clamp force is left "
+            "(residual_clamp_force_min 0"
+            + ("" if values["slip_safety"] is None else ", slip_safety 0")
+            + ") and the bolt carries all of F_A beyond it, which Φ_n's linear diagram "
+            "does not model"
+        )
     return Result(
         values=values,
         rung=ctx.rung,
@@ -956,9 +1128,20 @@ def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[s
         "((F_M,zul − F_Z − ΔF_th)/(1 − Φ_n))"
         + ("" if no_sep else ": no admissible preload keeps this joint closed"),
         "residual_clamp_force": "F_KR,min = F_M,min − (1 − Φ_n) F_A − F_Z − ΔF_th = "
-        f"{_kn(s['residual_clamp_force_min'])} vs required F_K,erf = {_kn(f_kerf)}"
-        + ("" if clamp_ok else ": raise the preload floor (torque, method) or lower F_A"),
+        f"{_kn(s['_f_kr_raw'])} vs required F_K,erf = {_kn(f_kerf)}"
+        + (
+            ""
+            if clamp_ok
+            else (
+                ": the joint opens (F_A above the separation load at F_M,min), F_KR,min is "
+                "reported as 0"
+                if s["_f_kr_raw"] <= 0.0
+                else ""
+            )
+            + ": raise the preload floor (torque, method) or lower F_A"
+        ),
         "R8_working_stress": f"σ_red,B = {stress / 1e6:.4g} MPa at F_S,max = "
+        "F_M,max + Φ_n F_A − ΔF_Vth (a thermal gain only) = "
         f"{_kn(s['max_bolt_force'])} vs R_p0.2 = {bolt.yield_strength / 1e6:.4g} MPa: S_F = "
         f"{s_f:.3g} (≥ 1.0)",
         "R9_fatigue": "σ_a = Φ_n (F_A,max − F_A,min)/(2 A_S) = "
@@ -971,6 +1154,37 @@ def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[s
         f"({why}); VDI 2230 R7 instead limits the equivalent stress to ν R_p0.2 (ν = {nu:g}), "
         "which allows more",
     }
+    nut, f_nut, f_mzul_bolt, _ = s["_nut"]
+    if "nut_strength" in s["_checks"]:
+        nut_ok = s["_checks"]["nut_strength"][1]
+        out["nut_strength"] = (
+            f"proof load of the {nut.standard} nut, class {nut.property_class}"
+            f"{'' if nut.given else ' (assumed)'}: F_p = S_p A_s = {_kn(f_nut)} (ISO 898-2) vs "
+            f"the bolt's F_M,zul = {_kn(f_mzul_bolt)} and F_S,max = {_kn(s['max_bolt_force'])}"
+            + (
+                ""
+                if nut_ok
+                else ": the nut strips first; F_M,zul is held at the nut's proof load where "
+                "the nut is the weaker; use a full-height nut (ISO 4032/4033) of the class "
+                "that pairs with the bolt"
+            )
+        )
+    if "nut_class_pairing" in s["_checks"]:
+        cls = nut.property_class
+        out["nut_class_pairing"] = (
+            f"nut class {cls}{'' if nut.given else ' (assumed)'} with bolt R_m = "
+            f"{(bolt.tensile_strength or 0.0) / 1e6:.4g} MPa: ISO 898-2 mates a class-N nut "
+            "with bolts up to class N.x"
+            + (
+                ""
+                if s["_checks"]["nut_class_pairing"][1]
+                else (
+                    ": a thin nut (04/05) has reduced loadability and pairs with no class"
+                    if cls.startswith("0")
+                    else f": class {cls} is too weak for this bolt"
+                )
+            )
+        )
     if "R7_max_below_permissible" in s["_checks"]:
         top_ok = s["_checks"]["R7_max_below_permissible"][1]
         out["R7_max_below_permissible"] = (
@@ -1081,7 +1295,10 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
         "below F_M,zul), or the torque given; not the torque for a nominal preload at mean "
         "friction (preload.control target_torque)",
     ),
-    _f("residual_clamp_force_min", "R12: F_KR,min = F_M,min − (1 − Φ_n) F_A − F_Z − ΔF_th"),
+    _f(
+        "residual_clamp_force_min",
+        "R12: F_KR,min = F_M,min − (1 − Φ_n) F_A − F_Z − ΔF_th, 0 where the joint opens",
+    ),
     _f("separation_load", "R5/R12: F_A at which the joint opens from the lowest assembly preload"),
     _f("max_working_load", "R5–R7: largest F_A whose required window fits under F_M,zul"),
     _f("max_bolt_force", "R8: F_S,max = F_M,max + Φ_n F_A,max"),
@@ -1092,7 +1309,9 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
     ),
     Output("endurance_limit", "Pa", "R9: σ_ASV or σ_ASG", display_unit="MPa"),
     Output("fatigue_safety", "1", "R9: S_D = σ_AS/σ_a (null for static load)"),
-    Output("slip_safety", "1", "R12: S_G = F_KR,min q_F μ_T/F_Q (null without F_Q)"),
+    Output(
+        "slip_safety", "1", "R12: S_G = F_KR,min q_F μ_T/F_Q (null without F_Q; 0 where it opens)"
+    ),
     Output("preload_stress_ratio", "1", "[004, eq. 6]: σ0/σ_T at the nominal preload, on A_0"),
     Output("bolt_elongation", "m", "[004, eq. 7]: F_M,nom δ_S", display_unit="mm"),
     Output(
@@ -1377,7 +1596,7 @@ def _min_engagement(bolt: Bolt, tau: np.ndarray, sel: np.ndarray) -> np.ndarray:
     result = np.full(tau.shape, np.nan)
     values, where = np.unique(tau[sel], return_inverse=True)
     lengths = [
-        fa.thread_stripping(
+        fa.engagement_for_bolt_failure(
             bolt.diameter,
             bolt.pitch,
             bolt.pitch_diameter,
@@ -1419,6 +1638,11 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
     bolts, bolt_index, notes, given = _bolts(x, n)
     b, refused = _bolt_columns(bolts, bolt_index, x, given)
+    if x.get("nut") is not None:
+        strengths = {None if k is None else k.tensile_strength for k in bolts} - {None}
+        if len(strengths) > 1:
+            raise TypeError("nut with varied bolt classes: the nut is rated per point")
+        b["_nut"] = _nut_choice(x, strengths.pop() if strengths else None)
     refusals = _Refusals(refused, many=True)
     s = _solve(x, col, b, refusals)
     refused = np.broadcast_to(refusals.mask, (n,))
@@ -1468,6 +1692,19 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         x, col, bolts, bolt_index, ~refused, d_w, d_h, fm_max, f_s_max, probe
     )
     notes += hook_notes
+    notes.append(MODEL_FORM_NOTE)
+    nut, _, _, nut_limits = s["_nut"]
+    if nut is not None and np.any(~refused & np.broadcast_to(nut_limits, (n,))):
+        warnings.append(
+            f"the {nut.standard} nut (class {nut.property_class}) limits the preload at some "
+            "points: F_M,zul is its ISO 898-2 proof load there, the preload window and the "
+            "torque are built on it"
+        )
+    if np.any(~refused & np.broadcast_to(s["_f_kr_raw"] < 0.0, (n,))):
+        warnings.append(
+            "the joint opens at some points (F_A above the separation load at F_M,min): "
+            "residual_clamp_force_min and slip_safety are 0 there"
+        )
 
     # what the runner makes of a non-finite value (null) and of a refused point (all null)
     table = np.empty((len(_SCALARS), n))
@@ -1523,7 +1760,8 @@ CLOSED_FORM = Rung(
     "The VDI 2230-1 calculation steps in closed form (cone/sleeve integrals, no iteration "
     "beyond the D_A fixed point)",
     fixed_error(0.0),
-    typical_error="exact for the model; the model's own error (cone fit, friction) dominates",
+    typical_error="exact arithmetic of the model; the model's empirical parts (cone fit, f_Z, "
+    "n, friction) carry an unquantified model-form uncertainty",
     typical_time="< 1 ms",
 )
 

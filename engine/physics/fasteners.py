@@ -29,7 +29,8 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from typing import Any
 
 import numpy as np
 
@@ -929,6 +930,149 @@ def nut(standard: str, thread: Thread, *, field: str = "nut") -> Nut:
     )
 
 
+#: ISO 898-2:1992 (EN 20898-2) stress under proof load S_p [MPa] of nuts with coarse thread,
+#: by property class (12 by style: "12" style 1, ISO 4032; "12/2" style 2, ISO 4033) and
+#: thread range: (d ≤ 4, 4 < d ≤ 7, 7 < d ≤ 10, 10 < d ≤ 16, 16 < d ≤ 39) mm. Class 4
+#: exists above M16 only (None below). Thin nuts 04/05 (ISO 4035) carry 380/500 MPa at
+#: every size: their loadability is reduced, they strip before a bolt of any class breaks.
+NUT_PROOF_STRESS_MPA: dict[str, tuple[float | None, ...]] = {
+    "04": (380.0, 380.0, 380.0, 380.0, 380.0),
+    "05": (500.0, 500.0, 500.0, 500.0, 500.0),
+    "4": (None, None, None, None, 510.0),
+    "5": (520.0, 580.0, 590.0, 610.0, 630.0),
+    "6": (600.0, 670.0, 680.0, 700.0, 720.0),
+    "8": (800.0, 855.0, 870.0, 880.0, 920.0),
+    "9": (900.0, 915.0, 940.0, 950.0, 920.0),
+    "10": (1040.0, 1040.0, 1040.0, 1050.0, 1060.0),
+    "12": (1140.0, 1140.0, 1140.0, 1170.0, None),
+    "12/2": (1150.0, 1150.0, 1160.0, 1190.0, 1200.0),
+}
+
+#: Upper ends of the thread ranges of :data:`NUT_PROOF_STRESS_MPA`, [m].
+NUT_PROOF_RANGES_M: tuple[float, ...] = (0.004, 0.007, 0.010, 0.016, 0.039)
+
+#: The nut property classes a request may name (ISO 898-2).
+NUT_PROPERTY_CLASSES: tuple[str, ...] = ("04", "05", "4", "5", "6", "8", "9", "10", "12")
+
+
+def nut_proof_stress(property_class: str, diameter: Any, style: str = "style 1") -> Any:
+    r"""Stress under proof load S_p of a steel nut (ISO 898-2:1992, coarse thread).
+
+    .. math::
+        S_p = S_p(\text{class}, \text{style}, d)
+
+    Parameters
+    ----------
+    property_class : str
+        Nut property class, "04", "05", "4" … "12", [-]
+    diameter : float or numpy array
+        Nominal thread diameter d, [m]
+    style : str
+        "style 1" (ISO 4032), "style 2" (ISO 4033) or "thin" (ISO 4035); only class 12
+        differs between styles, [-]
+
+    Returns
+    -------
+    float or numpy array
+        S_p, [Pa]; NaN outside M3…M39 or where the class is not made at that size
+
+    Notes
+    -----
+    ISO 898-2:1992 Table of proof load stresses as reproduced by Bossard (technical
+    information, "Nuts property classes 04 to 12") and DIN EN 20898-2 (proof loads
+    S_p × A_s): [EN20898-2].
+
+    Examples
+    --------
+    >>> nut_proof_stress("8", 0.012) / 1e6, nut_proof_stress("04", 0.012) / 1e6
+    (880.0, 380.0)
+    >>> nut_proof_stress("12", 0.012, "style 2") / 1e6
+    1190.0
+    """
+    key = "12/2" if property_class == "12" and style == "style 2" else property_class
+    row = np.array([np.nan if v is None else v * 1e6 for v in NUT_PROOF_STRESS_MPA[key]])
+    d = np.asarray(diameter, dtype=float)
+    where = np.searchsorted(np.array(NUT_PROOF_RANGES_M) * (1 + 1e-9), d)
+    inside = (d >= 0.003 * (1 - 1e-9)) & (where < row.size)
+    out = np.where(inside, row[np.minimum(where, row.size - 1)], np.nan)
+    return out if isinstance(diameter, np.ndarray) else float(out)
+
+
+def nut_proof_load(
+    property_class: str, diameter: Any, stress_area: Any, style: str = "style 1"
+) -> Any:
+    r"""Proof load of a steel nut: the axial force it carries on a hardened mandrel.
+
+    .. math::
+        F_{p,M} = S_p A_s
+
+    Parameters
+    ----------
+    property_class : str
+        Nut property class, [-]
+    diameter : float or numpy array
+        d, [m]
+    stress_area : float or numpy array
+        A_s of the mating thread, [m²]
+    style : str
+        Nut style (see :func:`nut_proof_stress`), [-]
+
+    Returns
+    -------
+    float or numpy array
+        F_p,M, [N]; NaN where ISO 898-2 gives no S_p
+
+    Notes
+    -----
+    ISO 898-2:1992 clause 8 (proof load = S_p × A_s,nom) [EN20898-2]; DIN EN 20898-2 prints
+    74 200 N for an M12 class 8 nut (880 MPa × 84.3 mm²).
+
+    Examples
+    --------
+    >>> round(nut_proof_load("8", 0.012, 84.3e-6))
+    74184
+    >>> round(nut_proof_load("04", 0.012, 84.3e-6)), round(nut_proof_load("05", 0.012, 84.3e-6))
+    (32034, 42150)
+    """
+    return nut_proof_stress(property_class, diameter, style) * stress_area
+
+
+def nut_pairs_with_bolt(property_class: str, bolt_tensile_strength: float) -> bool:
+    r"""Whether a nut class may be mated with a bolt of tensile strength R_m.
+
+    .. math::
+        100\,N \ge R_{m,nom}\ \text{(bolt)},\quad \text{not a thin nut (04, 05)}
+
+    Parameters
+    ----------
+    property_class : str
+        Nut property class N ("8" for a nut of class 8), [-]
+    bolt_tensile_strength : float
+        R_m of the bolt (its minimum; the class number is R_m,nom/100), [Pa]
+
+    Returns
+    -------
+    bool
+
+    Notes
+    -----
+    ISO 898-2:1992 clause 3 and Table 1 [EN20898-2]: a nut of class N is mated with bolts
+    of property class up to N.x (8 with 8.8, 10 with 10.9, 12 with 12.9) so that the bolt
+    breaks before the threads strip; thin nuts (04, 05) have reduced loadability and pair
+    with no class to its full strength.
+
+    Examples
+    --------
+    >>> nut_pairs_with_bolt("8", 800e6), nut_pairs_with_bolt("8", 1040e6)
+    (True, False)
+    >>> nut_pairs_with_bolt("05", 400e6)
+    False
+    """
+    if property_class.startswith("0"):
+        return False
+    return int(property_class) * 100 >= math.floor(bolt_tensile_strength / 1e8 + 1e-9) * 100
+
+
 @dataclass(frozen=True)
 class Washer:
     standard: str
@@ -1122,6 +1266,58 @@ MATERIALS: dict[str, Material] = {
     )
 }
 MATERIAL_NAMES: tuple[str, ...] = tuple(MATERIALS)
+
+
+#: Nominal Young's modulus E [GPa] of the catalogue's metals, for the compliance of a tapped
+#: thread cut into them (VDI 2230-1 R3, δ_M with E_BI): [EMODULI]. Plastics are left out
+#: (their modulus depends on moisture, temperature and time): give nut_youngs_modulus.
+MATERIAL_YOUNGS_MODULUS_GPA: dict[str, float] = {
+    "S235JR": 210.0,
+    "E295": 210.0,
+    "C45 (normalised)": 210.0,
+    "42CrMo4 (QT)": 210.0,
+    "X5CrNi18-10": 200.0,
+    "EN-GJL-250": 110.0,
+    "EN-GJS-400": 169.0,
+    "EN-GJS-500": 169.0,
+    "EN AW-6082 T6": 70.0,
+    "EN AW-7075 T6": 70.0,
+    "EN AC-46000 (die cast)": 70.0,
+    "EN AC-42100 T6": 70.0,
+    "TiAl6V4": 110.0,
+    "MgAl9Zn1 (die cast)": 45.0,
+}
+
+
+def material_youngs_modulus(name: str) -> float | None:
+    r"""Nominal Young's modulus of a catalogue material, or None where it is not listed.
+
+    .. math::
+        E = E_{nom}(\text{material})
+
+    Parameters
+    ----------
+    name : str
+        A key of :data:`MATERIALS`, [-]
+
+    Returns
+    -------
+    float or None
+        E, [Pa]
+
+    Notes
+    -----
+    Nominal values of the material standards [EMODULI]: steel 210 GPa (EN 1993-1-1),
+    austenitic stainless 200 GPa, aluminium alloys 70 GPa (EN 1999-1-1), grey iron
+    EN-GJL-250 110 GPa, ductile iron 169 GPa, Ti-6Al-4V 110 GPa, magnesium 45 GPa.
+
+    Examples
+    --------
+    >>> material_youngs_modulus("EN AW-6082 T6") / 1e9, material_youngs_modulus("POM")
+    (70.0, None)
+    """
+    e = MATERIAL_YOUNGS_MODULUS_GPA.get(name)
+    return None if e is None else e * 1e9
 
 
 def material(name: str, *, field: str = "material") -> Material:
@@ -1671,3 +1867,97 @@ def catalogue() -> dict[str, list[dict[str, object]]]:
         "washers": washers,
         "materials": [m.describe() for m in MATERIALS.values()],
     }
+
+
+#: VDI 2230-1 R11 sizes the engagement for a bolt at the top of its strength range,
+#: R_m,max = 1.2 R_m,min, so that even it breaks before a thread strips (the factor as the
+#: 2026-11-26 review quotes open VDI 2230 implementations; [BAT-R11] itself uses R_m,min).
+BOLT_UPPER_STRENGTH_FACTOR = 1.2
+
+#: Entry chamfers and run-out of the two threads, in pitches: m_ges = m_eff + 2 P
+#: (VDI 2230-1 R11 as [BAT-R11] implements it).
+ENTRY_CHAMFER_PITCHES = 2.0
+
+
+def engagement_for_bolt_failure(
+    diameter: Any,
+    pitch: Any,
+    pitch_diameter: Any,
+    nut_minor_diameter: Any,
+    stress_area: Any,
+    bolt_tensile_strength: Any,
+    bolt_shear_strength: Any,
+    internal_shear_strength: Any,
+    length: Any,
+    *,
+    width_across_flats: float | None = None,
+) -> Stripping:
+    r"""VDI 2230-1 R11: the engaged length at which a bolt of upper strength breaks first.
+
+    .. math::
+        F_{B} = 1.2\,R_m A_s,\qquad
+        m_{ges,min} = \frac{F_B}{C_1 C_3 \tau_{BM} A_{SN}/L} + 2P
+        \ \text{(and the bolt thread's the same with } C_2, \tau_{BS})
+
+    Parameters
+    ----------
+    diameter, pitch, pitch_diameter, nut_minor_diameter : float or numpy array
+        d, P, d2, D1, [m]
+    stress_area : float or numpy array
+        A_s, [m²]
+    bolt_tensile_strength : float or numpy array
+        R_m,min of the bolt (its class's), [Pa]
+    bolt_shear_strength : float or numpy array
+        τ_BS of the bolt thread at its minimum strength, [Pa]
+    internal_shear_strength : float or numpy array
+        τ_BM of the nut or tapped material, [Pa]
+    length : float or numpy array
+        Engaged length m_ges as built, entry chamfers included, [m]
+    width_across_flats : float, optional
+        s of a nut (C1); None for a tapped hole, [m]
+
+    Returns
+    -------
+    Stripping
+        :func:`thread_stripping` with F_B at 1.2 R_m A_s, the minimum lengths including
+        the 2 P of the chamfers and the strip forces at the full threads of ``length``
+        (m_ges − 2 P, not below 0)
+
+    Notes
+    -----
+    VDI 2230-1 R11 after Alexander, as its open implementation [BAT-R11] states it
+    (m_ges = R_m A_s P/(C1 C3 τ_BM (P/2 + (d − D2) tan 30°) π d) + 2 P), with the bolt's
+    breaking force taken at its upper strength R_m,max = 1.2 R_m,min: a bolt at the top
+    of its class still breaks before a thread strips. The threads' own shear strengths
+    stay at their minimum.
+
+    Examples
+    --------
+    M12 8.8 into S235JR (τ_BM = 0.6 × 360 MPa): 1.2 × 9.28 mm of full thread + 3.5 mm
+
+    >>> s = engagement_for_bolt_failure(0.012, 0.00175, 0.0108633, 0.0101056, 84.27e-6,
+    ...                                 800e6, 480e6, 216e6, 0.012)
+    >>> round(s.min_engagement_length * 1e3, 2)
+    14.64
+    """
+    chamfers = ENTRY_CHAMFER_PITCHES * pitch
+    full: Any = length - chamfers
+    full = np.maximum(full, 0.0) if isinstance(full, np.ndarray) else max(full, 0.0)
+    s = thread_stripping(
+        diameter,
+        pitch,
+        pitch_diameter,
+        nut_minor_diameter,
+        stress_area,
+        BOLT_UPPER_STRENGTH_FACTOR * bolt_tensile_strength,
+        bolt_shear_strength,
+        internal_shear_strength,
+        full,
+        width_across_flats=width_across_flats,
+    )
+    return replace(
+        s,
+        min_engagement_length=s.min_engagement_length + chamfers,
+        min_engagement_internal=s.min_engagement_internal + chamfers,
+        min_engagement_external=s.min_engagement_external + chamfers,
+    )

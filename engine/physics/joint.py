@@ -1577,18 +1577,23 @@ def smallest_area(smallest_diameter: float, stress_area: float, which: str) -> f
     return _where(which == "thread", stress_area, _area(smallest_diameter))
 
 
-def max_bolt_force(assembly_preload_max: float, additional_bolt_load: float) -> float:
-    r"""Largest bolt force in service.
+def max_bolt_force(
+    assembly_preload_max: float, additional_bolt_load: float, thermal_change: float = 0.0
+) -> float:
+    r"""Largest bolt force in service, with the preload a temperature change adds.
 
     .. math::
-        F_{S,max} = F_{M,max} + \Phi_n F_{A,max}
+        F_{S,max} = F_{M,max} + \Phi_n F_{A,max} - \min(\Delta F_{Vth}, 0)
 
     Parameters
     ----------
     assembly_preload_max : float
-        F_M,max, [N]
+        F_M,max (F_M,zul when tightened to it), [N]
     additional_bolt_load : float
         F_SA = Φ_n F_A,max, [N]
+    thermal_change : float
+        ΔF_Vth at F_M,max (:func:`thermal_preload_loss`), positive for a loss,
+        negative for a gain, [N]
 
     Returns
     -------
@@ -1597,14 +1602,22 @@ def max_bolt_force(assembly_preload_max: float, additional_bolt_load: float) -> 
 
     Notes
     -----
-    VDI 2230-1:2015 step R8, eq. (R8/1).
+    VDI 2230-1:2015 step R8, eq. (R8/1): F_S,max = F_M,zul + Φ_en F_A,max − ΔF_Vth,
+    where ΔF_Vth counts only when negative (the plates expand more than the bolt,
+    or the bolt is cooled more, and the preload rises); a thermal loss is not
+    credited against the largest bolt force.
 
     Examples
     --------
     >>> max_bolt_force(43.1e3, 800.0)
     43900.0
+
+    Aluminium plates heated 150 K gain 12.9 kN of preload; a loss adds nothing:
+
+    >>> max_bolt_force(43.1e3, 800.0, -12.9e3), max_bolt_force(43.1e3, 800.0, 5e3)
+    (56800.0, 43900.0)
     """
-    return assembly_preload_max + additional_bolt_load
+    return assembly_preload_max + additional_bolt_load - _min(thermal_change, 0.0)
 
 
 def yield_safety(yield_strength: float, working_stress: float) -> float:

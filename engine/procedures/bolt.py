@@ -130,7 +130,8 @@ CHECK_INPUTS: tuple[Param, ...] = (
     positive(
         "engagement_length",
         "m",
-        "Length of thread engagement (full threads, without chamfers) in the tapped hole",
+        "Length of thread engagement in the tapped hole as built, entry chamfers included "
+        "(VDI 2230-1 R11: m_ges = m_eff + 2P)",
         maximum=1.0,
         display_unit="mm",
         symbol="m_eff",
@@ -178,8 +179,8 @@ CHECK_OUTPUTS: tuple[Output, ...] = (
     Output(
         "min_engagement_length",
         "m",
-        "Shortest full-thread engagement for which the bolt breaks before a thread strips "
-        "(VDI 2230-1 R11, Alexander)",
+        "Shortest engagement, entry chamfers (2P) included, for which a bolt at its upper "
+        "strength 1.2 R_m breaks before a thread strips (VDI 2230-1 R11, Alexander)",
         display_unit="mm",
     ),
     Output(
@@ -189,7 +190,10 @@ CHECK_OUTPUTS: tuple[Output, ...] = (
         display_unit="kN",
     ),
     Output(
-        "bolt_breaking_force", "N", "R_m A_s: the force the threads must exceed", display_unit="kN"
+        "bolt_breaking_force",
+        "N",
+        "1.2 R_m A_s: the upper breaking force the threads must exceed (VDI 2230-1 R11)",
+        display_unit="kN",
     ),
     Output(
         "drive_torque_limit",
@@ -457,7 +461,7 @@ def _bought_parts(
     stripping = None
     length = x["engagement_length"] if x.get("engagement_length") is not None else 1.0
     if tau is not None and tensile_strength is not None:
-        stripping = fa.thread_stripping(
+        stripping = fa.engagement_for_bolt_failure(
             diameter,
             pitch,
             pitch_diameter,
@@ -602,7 +606,8 @@ def bought_part_checks(
             f"{quantity(parts.tau, 'MPa', '.4g')} ({parts.tau_source}), τ_BS = "
             f"{BOLT_SHEAR_RATIO:g} R_m, R_S = {s.strength_ratio:.3g}, C1 = {s.c1:.3g} (tapped "
             f"hole), C2 = {s.c2:.3g}, C3 = {s.c3:.3g}; the {s.weaker} thread is the weaker; "
-            "lengths are full threads, add the entry chamfers"
+            f"F_B at the bolt's upper strength {fa.BOLT_UPPER_STRENGTH_FACTOR:g} R_m; lengths "
+            f"include {fa.ENTRY_CHAMFER_PITCHES:g} P for the entry chamfers"
         )
         if "thread_stripping" in verdicts:
             ok, length = bool(verdicts["thread_stripping"]), parts.length
@@ -619,7 +624,8 @@ def bought_part_checks(
                         ""
                         if ok
                         else f": engage at least {quantity(s.min_engagement_length, 'mm')} of "
-                        "full thread, use a thread insert, or a stronger internal-thread "
+                        "thread (chamfers included), use a thread insert, or a stronger "
+                        "internal-thread "
                         "material"
                     ),
                 )

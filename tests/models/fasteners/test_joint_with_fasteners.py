@@ -49,7 +49,9 @@ def test_the_joint_fails_a_short_engagement_with_the_length_the_preload_model_gi
     need = run(TIGHTENING, {"thread": "M8 ISO 4762 12.9", "internal_thread_material": ALU})
     need_mm = need.results["min_engagement_length"] * 1e3
     assert not check.ok and f"{need_mm:.3g} mm needed" in check.detail
-    assert _check(run(JOINT, {**BASE, "engagement_length": 0.011}), "thread_stripping").ok
+    # R11 at 1.2 R_m plus 2P of chamfers: 1.2 × 10.35 + 2.5 = 14.9 mm; 11 mm now falls short
+    assert not _check(run(JOINT, {**BASE, "engagement_length": 0.011}), "thread_stripping").ok
+    assert _check(run(JOINT, {**BASE, "engagement_length": 0.015}), "thread_stripping").ok
 
 
 def test_the_hook_says_when_the_head_type_contradicts_the_designation():

@@ -247,7 +247,17 @@ def test_a_working_load_that_separates_at_any_preload_is_a_failing_check_with_it
     assert f"{limit / 1e3:.4g} kN" in checks["separation_avoidable"].detail
     assert not checks["R7_window_fits"].ok
     assert f"{r.results['max_working_load'] / 1e3:.4g} kN" in checks["R7_window_fits"].detail
-    assert r.results["residual_clamp_force_min"] < 0
+    # the joint opens: no clamp force is left (0, not the linear diagram's negative value),
+    # the check fails on F_M,min − (1 − Φ_n) F_A − F_Z < 0 and a warning says so
+    raw = (
+        r.results["assembly_preload_min"]
+        - (1 - r.results["load_factor"]) * 80e3
+        - r.results["embedding_loss"]
+    )
+    assert raw < 0 and r.results["residual_clamp_force_min"] == 0.0
+    assert not checks["residual_clamp_force"].ok
+    assert f"{raw / 1e3:.4g} kN" in checks["residual_clamp_force"].detail
+    assert any("the joint opens" in w for w in r.warnings)
 
 
 def test_required_window_is_vdi_r5_r6():
