@@ -350,8 +350,8 @@ SOURCES: dict[str, Source] = {
             "(aluminium alloys E = 70 GPa); the grey- and ductile-iron and stainless standards' "
             "informative values",
             covers="E of the catalogue's metals for a tapped thread's compliance "
-            "(engine.physics.fasteners.material_youngs_modulus); typed as the engine's authors know "
-            "them, not checked against a printed copy.",
+            "(engine.physics.fasteners.material_youngs_modulus); typed as the engine's authors "
+            "know them, not checked against a printed copy.",
         ),
         Source(
             id="BAT-R11",
@@ -362,8 +362,8 @@ SOURCES: dict[str, Source] = {
             published="https://github.com/misams/BAT, BAT/src/ThreadPullOut.py",
             covers="VDI 2230-1 R11 as an open implementation states it: R_S, C1, C3 (R_S held "
             "at 0.4), m_ges = R_m A_s P/(C1 C3 τ_BM (P/2 + (d − D2) tan 30°) π d) + 2 P for the "
-            "entry chamfers (engine.physics.fasteners.engagement_for_bolt_failure); it sizes at R_m,min, "
-            "the engine at 1.2 R_m,min.",
+            "entry chamfers (engine.physics.fasteners.engagement_for_bolt_failure); it sizes at "
+            "R_m,min, the engine at 1.2 R_m,min.",
         ),
         Source(
             id="SAEJ429",
