@@ -72,6 +72,7 @@ __all__ = [
     "BlowSeriesArrays",
     "blow_series",
     "blow_series_array",
+    "bolt_joint_torque",
     "clutch_preload_window",
     "contact_restitution",
     "damping_for_restitution",
@@ -447,6 +448,45 @@ def blow_step(
     if all(np.ndim(v) == 0 for v in (energy, stiffness, rate, start_torque, drive_torque)):
         return float(m), float(new), float(rot), float(work)
     return m, new, rot, work
+
+
+def bolt_joint_torque(elastic_torque: Any, yield_torque: Any) -> Any:
+    r"""Joint torque of an elastic–ideally-plastic bolt: the torque–angle line bends over at yield.
+
+    .. math::
+        T_j(\theta) = \min\left(T_0 + k_j\,\theta,\; T_y\right),\qquad
+        T_y = (k_G + k_K)\,F_{M0.2}
+
+    Parameters
+    ----------
+    elastic_torque : float or array
+        T_0 + k_j·θ, the joint torque on the elastic line, [N*m]
+    yield_torque : float or array
+        T_y, the joint torque at which the bolt yields (``inf``: no yield), [N*m]
+
+    Returns
+    -------
+    float or array
+        T_j, [N*m]
+
+    Notes
+    -----
+    An elastic–ideally-plastic (Prandtl) bolt, the simplest law with a yield point
+    (textbook plasticity; no hardening): up to its yield preload F_M0.2 (VDI 2230-1
+    R7 at ν = 1, the thread's torsion included) the joint follows its elastic torque
+    rate; past it the nut turns at the constant torque T_y and the bolt stretches
+    plastically. Up to T_y the two laws are the same line, so a blow reaches T_y on
+    one exactly when it does on the other: the joint torque after a blow is the
+    elastic blow's, bent over at T_y.
+
+    Examples
+    --------
+    >>> float(bolt_joint_torque(400.0, 350.0)), float(bolt_joint_torque(300.0, 350.0))
+    (350.0, 300.0)
+    >>> bolt_joint_torque(np.array([300.0, 400.0]), 350.0).tolist()
+    [300.0, 350.0]
+    """
+    return np.minimum(elastic_torque, yield_torque)
 
 
 def blow_gains_nothing(rotation: Any, torque_after: Any, torque_before: Any) -> Any:
@@ -1175,6 +1215,10 @@ class BlowSeries:
     saturated: bool
     steps: int = 0
     first: BlowOutcome | None = None
+    #: The blow that reached the bolt's yield torque, 1-based (None: the bolt stayed elastic)
+    yield_blow: int | None = None
+    #: The joint torque that blow would have reached on the elastic line, [N*m]
+    elastic_demand: float | None = None
 
 
 def energy_peak_error(p: BlowProblem, peak: Any) -> Any:
@@ -1220,6 +1264,7 @@ def blow_series(
     record_first: bool = False,
     max_steps: int = 1_000_000,
     deadline: float | None = None,
+    yield_torque: float = math.inf,
 ) -> BlowSeries:
     """Blows by ``method`` (``rigid``, ``energy`` or ``simulation``) until the target or no gain.
 
@@ -1247,6 +1292,10 @@ def blow_series(
         budget is what the time left affords (:func:`engine.numerics.step_budget`)
     deadline : float or None
         ``time.perf_counter()`` value after which the run stops, [s]
+    yield_torque : float
+        T_y, the joint torque at which the bolt yields (:func:`bolt_joint_torque`);
+        the run stops at the blow that reaches it (further blows only stretch the
+        bolt at T_y), [N*m]
 
     Returns
     -------
@@ -1262,6 +1311,8 @@ def blow_series(
     first: BlowOutcome | None = None
     reached: int | None = None
     saturated = False
+    yield_blow: int | None = None
+    demand: float | None = None
     e, c = p.energy, p.stiffness
     for i in range(max_blows):
         if method in ("rigid", "energy"):
@@ -1285,6 +1336,9 @@ def blow_series(
             if i == 0:
                 first = out
             peak, new, rot, work = out.peak_torque, out.torque_after, out.rotation, out.joint_work
+        if new >= yield_torque:
+            yield_blow, demand = i + 1, new
+            new = float(bolt_joint_torque(new, yield_torque))
         peaks.append(peak)
         rots.append(rot)
         after.append(new)
@@ -1292,6 +1346,8 @@ def blow_series(
         if target_torque is not None and new >= target_torque:
             reached = i + 1
             break
+        if yield_blow is not None:
+            break  # ideally plastic: another blow turns the nut at T_y, the torque stays
         if blow_gains_nothing(rot, new, torque):
             saturated = True
             break
@@ -1299,7 +1355,9 @@ def blow_series(
             saturated = True  # the rigid rung's joint cannot rise past the blow's torque
             break
         torque = new
-    return BlowSeries(peaks, rots, after, works, reached, saturated, steps, first)
+    return BlowSeries(
+        peaks, rots, after, works, reached, saturated, steps, first, yield_blow, demand
+    )
 
 
 # ---------------------------------------------------------------------------
@@ -1324,6 +1382,8 @@ class BlowSeriesArrays:
     blows: np.ndarray  # number of blows run
     blows_to_target: np.ndarray
     saturated: np.ndarray
+    yield_blow: np.ndarray  # the blow that reached T_y (0: the bolt stayed elastic)
+    elastic_demand: np.ndarray  # that blow's joint torque on the elastic line (NaN: none)
 
 
 def blow_series_array(
@@ -1337,6 +1397,7 @@ def blow_series_array(
     drive_torque: Any = 0.0,
     target_torque: Any = None,
     max_blows: Any = 100,
+    yield_torque: Any = math.inf,
 ) -> BlowSeriesArrays:
     """:func:`blow_series` of the ``rigid`` or ``energy`` rung at many points.
 
@@ -1352,6 +1413,8 @@ def blow_series_array(
         Stop at the first blow that reaches it, [N*m]
     max_blows : int or array
         Most blows, [-]
+    yield_torque : float or array
+        T_y, where the bolt yields (:func:`blow_series`), [N*m]
 
     Notes
     -----
@@ -1365,12 +1428,9 @@ def blow_series_array(
     >>> s.blows_to_target.tolist(), round(float(s.torque_after[0]), 3)
     ([2, 5], 440.346)
     """
+    given = (energy, stiffness, rate, start_torque, breakaway, drive_torque, max_blows)
     shape = np.broadcast_shapes(
-        *(
-            np.shape(v)
-            for v in (energy, stiffness, rate, start_torque, breakaway, drive_torque, max_blows)
-            if v is not None
-        ),
+        *(np.shape(v) for v in (*given, yield_torque) if v is not None),
         np.shape(target_torque) if target_torque is not None else (),
     )
 
@@ -1379,6 +1439,7 @@ def blow_series_array(
 
     e, c, k, b, n = full(energy), full(stiffness), full(rate), full(breakaway), full(drive_torque)
     torque = full(start_torque)
+    ty = full(yield_torque)
     target = None if target_torque is None else full(target_torque)
     limit = np.broadcast_to(np.asarray(max_blows), shape)
     peak0 = np.full(shape, np.nan)
@@ -1387,15 +1448,21 @@ def blow_series_array(
     blows = np.zeros(shape, dtype=np.int64)
     reached = np.zeros(shape, dtype=np.int64)
     saturated = np.zeros(shape, dtype=bool)
+    yielded = np.zeros(shape, dtype=np.int64)
+    demand = np.full(shape, np.nan)
     idx = np.flatnonzero(limit.ravel() > 0) if shape else np.arange(0)
     flat = shape != ()
     if not flat:  # a single point: the same code on arrays of one
-        return _series_one(e, c, k, torque, method, b, n, target, int(limit))
+        return _series_one(e, c, k, torque, method, b, n, target, int(limit), ty)
     i = 0
     with np.errstate(all="ignore"):
         while idx.size:
             t0 = torque[idx]
             peak, new, rot, work = blow_step(method, e[idx], c[idx], k[idx], t0, b[idx], n[idx])
+            past = new >= ty[idx]
+            yielded[idx[past]] = i + 1
+            demand[idx[past]] = new[past]
+            new = bolt_joint_torque(new, ty[idx])
             if i == 0:
                 peak0[idx], rot0[idx], after0[idx], work0[idx] = peak, rot, new, work
             total[idx] = total[idx] + work
@@ -1410,19 +1477,23 @@ def blow_series_array(
             if method == "rigid":
                 stuck = ~done
             saturated[idx[stuck]] = True
-            done |= stuck
+            done |= stuck | past
             i += 1
             done |= limit.ravel()[idx] <= i
             idx = idx[~done]
-    return BlowSeriesArrays(peak0, rot0, after0, work0, torque, total, blows, reached, saturated)
+    return BlowSeriesArrays(
+        peak0, rot0, after0, work0, torque, total, blows, reached, saturated, yielded, demand
+    )
 
 
 def _series_one(
-    e: Any, c: Any, k: Any, t0: Any, method: str, b: Any, n: Any, target: Any, limit: int
-) -> BlowSeriesArrays:
+    e: Any, c: Any, k: Any, t0: Any, method: str, b: Any, n: Any, target: Any, limit: int,
+    ty: Any,
+) -> BlowSeriesArrays:  # fmt: skip
     s = blow_series_array(
         e.reshape(1), c.reshape(1), k.reshape(1), t0.reshape(1), method,
         breakaway=b.reshape(1), drive_torque=n.reshape(1),
         target_torque=None if target is None else target.reshape(1), max_blows=limit,
+        yield_torque=ty.reshape(1),
     )  # fmt: skip
     return BlowSeriesArrays(*(getattr(s, f.name).reshape(()) for f in fields(BlowSeriesArrays)))

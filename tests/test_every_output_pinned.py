@@ -49,14 +49,10 @@ NOT_YET_PINNED: dict[str, set[str]] = {
         "delivered_preload_max",
         "delivered_preload_min",
         "energy_into_joint",
-        "energy_supplied",
-        "final_torque",
         "joint_energy_fraction",
         "nut_rotation",
         "saturation_torque",
-        "tool_inertia_used",
         "tool_stiffness_used",
-        "torque_after_first_blow",
     },
     "clutch.ball": {
         "flank_lift",
@@ -76,13 +72,8 @@ NOT_YET_PINNED: dict[str, set[str]] = {
         "suggested_wire_setting",
     },
     "impact.rare": {
-        "engagement_acceleration",
-        "engagement_frequency",
         "half_coupling_release_speed",
         "max_striker_travel",
-        "min_return_spring_rate",
-        "relock_margin",
-        "spring_height_limit",
     },
     "joint.vdi2230": {
         "additional_bolt_load",
