@@ -1,0 +1,126 @@
+"""Stage 2 with h2 > h1: the half-coupling stops at h1 and the striker goes on alone (issue 29).
+
+The review's design (the reference with h1 = 3 mm, λ1 = 4 mm, h2 = 4 mm) reported full
+engagement in 6.56 ms while the half-coupling's lift went to −1.0 mm, through its stop.
+With the stop the striker turns back at 3.50 mm < 4 mm: no full blow. The reference here
+is stage 2 integrated by scipy's solve_ivp on the equations written out below, from the
+release speed each rung computed for itself (stage 1 is held elsewhere).
+"""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from scipy.integrate import solve_ivp
+
+from engine import run
+from engine.models.rare_impact import RARE_IMPACT, REFERENCE_DESIGN
+from engine.rare_impact_cycle import closed_form_cycle, simulate_cycle, simulate_cycle_scipy
+
+REVIEW = {
+    **REFERENCE_DESIGN,
+    "release_travel": 0.003,
+    "power_spring_preload": 0.004,
+    "engagement_height": 0.004,
+}
+
+
+def _stage2(x: dict, v_release: float) -> tuple[float, float]:  # type: ignore[type-arg]
+    """(time from release to y = h2 or inf, farthest y) by solve_ivp, symmetric V (ρ = 1/2).
+
+    y: the striker's travel from the release position towards the anvil.
+    A: sandwich M2 = m1 + n·mp + m3 with the shaft m2, backwards from y = 0 and back:
+       (M2 + m2)ÿ = (M2 + m2)g + c1(λ1 + h1 − y) + c2(λ2 + h1 − y) − c3(λ3 + y)
+    B: the sandwich alone up to the half-coupling's stop at y = h1:
+       M2·ÿ = M2·g + c1(λ1 + h1 − y) − c3(λ3 + y)
+    C: the striker alone past h1: m3·ÿ = m3·g − c3(λ3 + y)
+    """
+    g = x["gravity"]
+    c1, c2, c3 = x["power_spring_rate"], x["auxiliary_spring_rate"], x["return_spring_rate"]
+    l1, l2, l3 = (
+        x["power_spring_preload"],
+        x["auxiliary_spring_preload"],
+        x["return_spring_preload"],
+    )
+    h1, h2 = x["release_travel"], x["engagement_height"]
+    m1, m2, m3 = x["half_coupling_mass"], x["stepped_shaft_mass"], x["striker_mass"]
+    nm = x["roller_count"] * x["roller_mass"]
+    big = m1 + nm + m3
+    v0 = -(m1 + m2 + 0.5 * nm) * v_release / (big + m2)  # the plastic catch at release
+    opts = {"rtol": 1e-12, "atol": 1e-15, "method": "DOP853"}
+
+    def at(level: float, direction: float):  # type: ignore[no-untyped-def]
+        def ev(t: float, s: list[float]) -> float:
+            return s[0] - level
+
+        ev.terminal, ev.direction = True, direction  # type: ignore[attr-defined]
+        return ev
+
+    def turn(t: float, s: list[float]) -> float:
+        return s[1]
+
+    turn.terminal, turn.direction = True, -1.0  # type: ignore[attr-defined]
+
+    def a(t: float, s: list[float]) -> list[float]:
+        y = s[0]
+        f = (big + m2) * g + c1 * (l1 + h1 - y) + c2 * (l2 + h1 - y) - c3 * (l3 + y)
+        return [s[1], f / (big + m2)]
+
+    t = 0.0
+    ra = solve_ivp(a, (0.0, 1.0), [-1e-18, v0], events=[at(0.0, 1.0)], **opts)
+    t, v = ra.t_events[0][0], ra.y_events[0][0][1]
+
+    def b(t: float, s: list[float]) -> list[float]:
+        y = s[0]
+        return [s[1], g + (c1 * (l1 + h1 - y) - c3 * (l3 + y)) / big]
+
+    rb = solve_ivp(b, (t, 1.0), [0.0, v], events=[at(min(h1, h2), 1.0), turn], **opts)
+    if len(rb.t_events[1]):
+        return math.inf, float(rb.y_events[1][0][0])
+    t, v = rb.t_events[0][0], rb.y_events[0][0][1]
+    if h2 <= h1:
+        return float(t), math.nan
+
+    def c(t: float, s: list[float]) -> list[float]:
+        return [s[1], g - c3 * (l3 + s[0]) / m3]
+
+    rc = solve_ivp(c, (t, 1.0), [h1, v], events=[at(h2, 1.0), turn], **opts)
+    if len(rc.t_events[0]):
+        return float(rc.t_events[0][0]), math.nan
+    return math.inf, float(rc.y_events[1][0][0])
+
+
+def test_the_reviews_design_turns_back_short_of_h2() -> None:
+    cf = closed_form_cycle(REVIEW)
+    _, reach = _stage2(REVIEW, cf.release_velocity)
+    assert reach == pytest.approx(3.495e-3, abs=1e-6)  # the review's 3.50 mm
+    assert math.isinf(cf.engagement_time)
+    assert cf.max_travel == pytest.approx(reach, rel=1e-9)
+    for sim in (simulate_cycle(REVIEW, record=True), simulate_cycle_scipy(REVIEW)[0]):
+        _, reach_sim = _stage2(REVIEW, sim.release_velocity)
+        assert math.isinf(sim.engagement_time)
+        assert sim.max_travel == pytest.approx(reach_sim, rel=1e-6)
+    lift = simulate_cycle(REVIEW, record=True).series["half_coupling_lift"]
+    assert min(lift) >= 0.0  # never through its stop (the review: −1.0 mm)
+    r = run(RARE_IMPACT, REVIEW, fidelity="closed_form")
+    assert r.results["full_engagement"] is False
+
+
+@pytest.mark.parametrize("h2", [0.0031, 0.0033])
+def test_past_the_stop_the_striker_engages_alone(h2: float) -> None:
+    x = {**REVIEW, "engagement_height": h2}
+    cf = closed_form_cycle(x)
+    t_ref, _ = _stage2(x, cf.release_velocity)
+    assert math.isfinite(t_ref)
+    assert cf.engagement_time == pytest.approx(t_ref, rel=1e-8)
+    sim = simulate_cycle(x)
+    t_sim, _ = _stage2(x, sim.release_velocity)
+    assert sim.engagement_time == pytest.approx(t_sim, rel=1e-6)
+
+
+def test_below_h1_nothing_changes() -> None:
+    # the reference design (h2 = 4 mm < h1 = 5 mm): the sandwich engages together
+    cf = closed_form_cycle(REFERENCE_DESIGN)
+    t_ref, _ = _stage2(REFERENCE_DESIGN, cf.release_velocity)
+    assert cf.engagement_time == pytest.approx(t_ref, rel=1e-8)
