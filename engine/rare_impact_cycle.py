@@ -1052,6 +1052,25 @@ def _gfun(mode, kind, p, w, q0, q1, v0, v1):  # type: ignore[no-untyped-def]
         return v0
     if kind == 2:
         return v1
+    if kind == 4 or kind == 5:
+        # the smaller of the two faces' contact forces on a roller, per roller mass (stage 3,
+        # ω = 0): m_p·(ẍ, ÿ_r − g) = N_A·n_A + N_B·n_B with the normals into the roller,
+        # n_B = (−sin α, cos α) (the half-coupling's cone) and n_A = (−sin α, −cos α) (the
+        # striker's cone, symmetric V) or (0, −1) (its flat face, single cone). A face can
+        # only push: kind 4 is negative where one would have to pull, kind 5 where it would
+        # have to pull with more than the roller's weight
+        _, a0, a1 = _rhs_c(mode, p, w, q0, q1, v0, v1)
+        xdd = p[13] * (a1 - a0)
+        ydd = p[14] * a0 + p[15] * a1 - p[6]
+        sec = math.sqrt(1.0 + p[22] * p[22])
+        sin_a, cos_a = p[22] / sec, 1.0 / sec
+        if p[14] == 0.0:  # single cone: the striker's face is flat
+            nb = -xdd / sin_a
+            na = nb * cos_a - ydd
+        else:
+            total, diff = -xdd / sin_a, ydd / cos_a  # N_A + N_B, N_B − N_A
+            na, nb = 0.5 * (total - diff), 0.5 * (total + diff)
+        return min(na, nb) + (abs(p[6]) if kind == 5 else 0.0)
     # kind 3: what presses the half-coupling onto its stop in mode 4 (negative: it leaves)
     nm = p[11] * p[10]
     k2 = p[13] * p[13]
@@ -1544,7 +1563,13 @@ def simulate_cycle(
         mode, state = S3, (t_blow, 0.0, y_h0, h2, 0.0, 0.0)
     t_ret = math.inf
     t_home = math.inf
-    for _ in range(64):
+    # times after the blow where a face would have to pull a roller (kind 4) and pull with
+    # more than its weight (kind 5): the contact as an equality, a unilateral one flies free
+    pulls: dict[int, float] = {}
+    for _ in range(64 + 2):  # two more for the pull events, which change no motion
+        for kind in (4, 5):
+            if kind not in pulls and _gfun(mode, kind, run.p, *state[1:]) < 0.0:
+                pulls[kind] = state[0] - t_blow  # already at a mode's start
         labels = ["home", "bottom"]
         rows: list[tuple[int, float, float, float, float]] = [
             (0, 0.0, 1.0, 0.0, -1.0),  # striker home: the balls can re-lock it
@@ -1553,6 +1578,10 @@ def simulate_cycle(
         if math.isinf(t_ret) and clear > 0.0:
             labels.append("clear")
             rows.append((0, 0.0, 1.0, clear, -1.0))  # clear of the jaws: return over
+        for kind in (4, 5):  # the first time only: the motion itself is not changed by it
+            if kind not in pulls:
+                labels.append(f"pull{kind}")
+                rows.append((kind, 0.0, 0.0, 0.0, -1.0))  # a face would have to pull
         if mode == S3:
             labels.append("stop")
             rows.append((0, 1.0, 0.0, 0.0, 1.0))  # half-coupling onto its stop
@@ -1567,6 +1596,19 @@ def simulate_cycle(
             break
         label = labels[which]
         t_, w_, yh, ys, vh, vs = state
+        if label.startswith("pull"):
+            pulls[int(label[4])] = t_ - t_blow
+            # a level crossed at the same instant (a spring leaving contact kinks the force)
+            if ys <= 0.0:
+                label = "home"
+            elif ys >= h2 and vs > 0.0:
+                label = "bottom"
+            elif math.isinf(t_ret) and clear > 0.0 and ys <= clear:
+                label = "clear"
+            elif mode == S3 and yh >= 0.0 and vh > 0.0:
+                label = "stop"
+            else:
+                continue
         if label == "home":
             t_home = t_ - t_blow
             if math.isinf(t_ret):
@@ -1584,6 +1626,24 @@ def simulate_cycle(
             mode = S3
         else:
             break
+    where = (
+        f"h1 {h1 * 1e3:.4g} mm, h2 {h2 * 1e3:.4g} mm, c1 {c1:.4g} N/m, c3 {c3:.4g} N/m, "
+        f"α {math.degrees(x['cone_angle']):.3g}°"
+    )
+    if 5 in pulls:
+        warnings.append(
+            f"stage 3: {pulls[5] * 1e3:.3g} ms after the blow a cone would have to pull a roller "
+            f"with more than its weight ({where}): held on both cones as an equality the "
+            "rollers need a negative contact force; with a one-sided contact they would fly "
+            "free and the striker return on its own, which this model does not follow: the "
+            "return and home times are not reliable"
+        )
+    elif 4 in pulls:
+        notes.append(
+            f"stage 3: {pulls[4] * 1e3:.3g} ms after the blow a cone would have to pull a roller "
+            f"with less than its weight ({where}): the rollers settle on one face, the motion "
+            "is hardly changed"
+        )
     if math.isinf(t_home):
         warnings.append(
             "the return spring does not bring the striker home: the balls cannot re-lock it"

@@ -124,3 +124,48 @@ def test_below_h1_nothing_changes() -> None:
     cf = closed_form_cycle(REFERENCE_DESIGN)
     t_ref, _ = _stage2(REFERENCE_DESIGN, cf.release_velocity)
     assert cf.engagement_time == pytest.approx(t_ref, rel=1e-8)
+
+
+def _face_forces(x: dict, y_h: float, y_s: float) -> tuple[float, float]:  # type: ignore[type-arg]
+    """(N_A, N_B) per roller mass at rest in stage 3, symmetric V, by hand.
+
+    Lagrangian of stage 3 with the rollers as point masses at x = x0 + κ(y_s − y_h),
+    y_r = (y_h + y_s)/2, κ = 1/(2 tan α):
+    T = ½m1·ẏh² + ½m3·ẏs² + ½n·mp(ẋ² + ẏr²), so at rest M·q̈ = Q with
+    M = [[m1 + n·mp(κ² + ¼), n·mp(¼ − κ²)], [n·mp(¼ − κ²), m3 + n·mp(κ² + ¼)]],
+    Q = [c1(λ1 − y_h) + (m1 + n·mp/2)g, −c3(λ3 + y_s) + (m3 + n·mp/2)g].
+    A roller: mp(ẍ, ÿr − g) = N_A(−sin α, −cos α) + N_B(−sin α, cos α).
+    """
+    a = x["cone_angle"]
+    kap = 0.5 / math.tan(a)
+    nm = x["roller_count"] * x["roller_mass"]
+    m1, m3, g = x["half_coupling_mass"], x["striker_mass"], x["gravity"]
+    m11, m22 = m1 + nm * (kap**2 + 0.25), m3 + nm * (kap**2 + 0.25)
+    m12 = nm * (0.25 - kap**2)
+    qh = x["power_spring_rate"] * (x["power_spring_preload"] - y_h) + (m1 + nm / 2) * g
+    qs = -x["return_spring_rate"] * (x["return_spring_preload"] + y_s) + (m3 + nm / 2) * g
+    det = m11 * m22 - m12 * m12
+    ah, as_ = (m22 * qh - m12 * qs) / det, (m11 * qs - m12 * qh) / det
+    xdd, ydd = kap * (as_ - ah), 0.5 * (ah + as_) - g
+    total, diff = -xdd / math.sin(a), ydd / math.cos(a)  # N_A + N_B, N_B − N_A
+    return 0.5 * (total - diff), 0.5 * (total + diff)
+
+
+def test_a_roller_contact_that_would_pull_is_flagged() -> None:
+    # a steep cone (α = 85.4°): at the blow (at rest, y_h = h2 − h1) a face would already
+    # have to pull a roller with more than its weight
+    x = {**REFERENCE_DESIGN, "cone_angle": 1.49, "roller_mass": 0.05}
+    na, nb = _face_forces(x, x["engagement_height"] - x["release_travel"], x["engagement_height"])
+    assert min(na, nb) < -x["gravity"]
+    sim = simulate_cycle(x)
+    assert any(
+        w.startswith("stage 3: 0 ms after the blow a cone would have to pull") for w in sim.warnings
+    )
+    # the reference: both faces push at the blow; on the stop (y_h = 0) the rollers' weight
+    # alone takes g/(2 cos 45°) = 6.93 m/s² off face B: a note, not a warning
+    r = REFERENCE_DESIGN
+    na, nb = _face_forces(r, r["engagement_height"] - r["release_travel"], r["engagement_height"])
+    assert min(na, nb) > 0.0
+    ref = simulate_cycle(r)
+    assert not any(w.startswith("stage 3:") for w in ref.warnings)
+    assert any(n.startswith("stage 3:") and "less than its weight" in n for n in ref.notes)
