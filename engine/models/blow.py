@@ -931,8 +931,16 @@ def _energy_errors(
     k = s.rate
     with np.errstate(all="ignore"):
         kk = where(k > 0.0, k, 1.0)
+        # the breakaway's jump at the first blow's start (snug)
         after = energy_blow_error(
-            s.tool.inertia, x["struck_inertia"], s.tool.stiffness, kk, x["restitution"]
+            s.tool.inertia,
+            x["struck_inertia"],
+            s.tool.stiffness,
+            kk,
+            x["restitution"],
+            x["breakaway_factor"],
+            x["snug_torque"],
+            s.energy,
         )
         blow = BlowProblem(s.tool.inertia, x["struck_inertia"], s.tool.stiffness, s.speed, kk)
         peak_error = after + energy_peak_error(blow, peak)
@@ -1770,7 +1778,9 @@ BLOW = ModelSpec(
             "energy balance per blow with the joint's rate in series with the tool, struck "
             "inertia neglected; blow after blow",
             _energy_estimate,
-            typical_error="2·J_s/J_t·(C/(C+k_j))² + (1 − e²)/2 on the joint torque; plus "
+            typical_error="typical, not a bound: 2·J_s/J_t·(C/(C+k_j))² + (1 − e²)/2 + "
+            "((b − 1)·T_0)²/((C + k_j)·E) on the joint torque (exceeded in 3–4 % of random "
+            "designs, worst ~10×: a nut that sticks mid-blow needs b·T_j again); plus "
             "ω0·√(C·J_r)/T_p on the peak torque (the nut's kick)",
             typical_time="~0.1 ms",
         ),
