@@ -10,6 +10,7 @@ release speed each rung computed for itself (stage 1 is held elsewhere).
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import pytest
 from scipy.integrate import solve_ivp
@@ -26,7 +27,7 @@ REVIEW = {
 }
 
 
-def _stage2(x: dict, v_release: float) -> tuple[float, float]:  # type: ignore[type-arg]
+def _stage2(x: dict[str, Any], v_release: float) -> tuple[float, float]:
     """(time from release to y = h2 or inf, farthest y) by solve_ivp, symmetric V (ρ = 1/2).
 
     y: the striker's travel from the release position towards the anvil.
@@ -126,7 +127,7 @@ def test_below_h1_nothing_changes() -> None:
     assert cf.engagement_time == pytest.approx(t_ref, rel=1e-8)
 
 
-def _face_forces(x: dict, y_h: float, y_s: float) -> tuple[float, float]:  # type: ignore[type-arg]
+def _face_forces(x: dict[str, Any], y_h: float, y_s: float) -> tuple[float, float]:
     """(N_A, N_B) per roller mass at rest in stage 3, symmetric V, by hand.
 
     Lagrangian of stage 3 with the rollers as point masses at x = x0 + κ(y_s − y_h),
