@@ -226,9 +226,9 @@ def _outputs(x: Mapping[str, Any], o: CycleOutcome) -> dict[str, Any]:
             "relock_margin": relock_margin(
                 x["auxiliary_spring_rate"],
                 x["auxiliary_spring_preload"],
-                c3,
-                lam3,
-                x["roller_friction"],
+                x["stepped_shaft_mass"],
+                g,
+                relock_friction(x),
             ),
             "return_time": where(returns, o.return_time, math.nan),
             "striker_home_time": where(returns, t_home, math.nan),
@@ -436,10 +436,11 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
                 f"height {in_mm(h3)}: raise c3 or λ3" + paper_return,
             )
         )
-    margin = float(relock_margin(c2, lam2, c3, lam3, x["roller_friction"]))
     ff = relock_friction(x)
+    weight = x["stepped_shaft_mass"] * x["gravity"]
+    margin = float(relock_margin(c2, lam2, x["stepped_shaft_mass"], x["gravity"], ff))
     paper_relock = (
-        f"the paper's condition c2·λ2 = {c2 * lam2:.3g} N > c3·λ3·f = {ff:.3g} N "
+        f"the condition c2·λ2 + m2·g = {c2 * lam2 + weight:.3g} N > c3·λ3·f = {ff:.3g} N "
         + ("holds" if margin > 0.0 else f"fails by {-margin:.3g} N")
         + " [002, eq. 4]"
     )
@@ -964,8 +965,8 @@ _OUTPUTS: tuple[Output, ...] = (
     Output(
         "relock_margin",
         "N",
-        "c_2λ_2 − c_3λ_3f: the paper's static re-lock condition [002, eq. 4] (the relock "
-        "check also follows the shaft's motion)",
+        "c_2λ_2 + m_2g − c_3λ_3f: the static re-lock condition, [002, eq. 4] at the end of "
+        "the travel (the relock check also follows the shaft's motion)",
     ),
     Output(
         "return_time",

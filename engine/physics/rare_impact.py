@@ -594,21 +594,42 @@ def relock_time(
 def relock_margin(
     auxiliary_spring_rate: Any,
     auxiliary_spring_preload: Any,
-    return_spring_rate: Any,
-    return_spring_preload: Any,
-    roller_friction: Any,
+    stepped_shaft_mass: Any,
+    gravity: Any,
+    friction_force: Any,
 ) -> Any:
-    r"""Auxiliary spring force at the end of re-locking minus the friction it must beat [N].
+    r"""Net force that closes the stepped shaft at the end of re-locking [N] (> 0: it relocks).
 
     .. math::
-        c_2\lambda_2 - c_3\lambda_3 f > 0
+        c_2\lambda_2 + m_2 g - c_3\lambda_3 f > 0
 
-    [002, after eq. 6], from eq. 4.
+    the right-hand side of [002, eq. 4] at :math:`z_2 = h_1`, the end of the travel, where
+    the auxiliary spring is weakest. [002, after eq. 6] prints the condition without the
+    weight, :math:`c_2\lambda_2 > c_3\lambda_3 f`; eq. 4 and :func:`relock_time` carry
+    :math:`m_2 g`, and so does this margin.
 
-    >>> round(relock_margin(2000.0, 0.008, 52000.0, 0.0021, 0.1), 2)  # 16 − 10.92
-    5.08
+    Parameters
+    ----------
+    auxiliary_spring_rate : float or array
+        c2, [N/m]
+    auxiliary_spring_preload : float or array
+        λ2, [m]
+    stepped_shaft_mass : float or array
+        m2, [kg]
+    gravity : float or array
+        g along the axis (negative: gravity opposes), [m/s^2]
+    friction_force : float or array
+        f·c3·λ3, the friction the shaft meets (``relock_friction``), [N]
+
+    Examples
+    --------
+    2000·0.008 + 0.05·9.80665 − 0.1·52000·0.0021 = 16 + 0.4903325 − 10.92:
+
+    >>> round(relock_margin(2000.0, 0.008, 0.05, 9.80665, 10.92), 7)
+    5.5703325
     """
     return (
         auxiliary_spring_rate * auxiliary_spring_preload
-        - return_spring_rate * return_spring_preload * roller_friction
+        + stepped_shaft_mass * gravity
+        - friction_force
     )

@@ -92,8 +92,11 @@ auxiliary :math:`c_2^+(\lambda_2 - y_{sh})` the shaft, return
   with it (the balls lock the shaft only against moving back to the anvil).
 * **Stage 2** [002, eq. 2] with that start; while :math:`z_2 < 0` the shaft
   and the auxiliary spring ride along; at :math:`z_2 = 0` the balls catch the
-  shaft again. The blow is the first crossing of :math:`z_2 = h_2`; a turning
-  point below it means the striker never engages (no blow at all).
+  shaft again. Where :math:`h_2 > h_1` the half-coupling reaches its stop at
+  :math:`z_2 = h_1` (its rest position) and stays there, and the striker goes on
+  alone against the return spring. The blow is the first crossing of
+  :math:`z_2 = h_2`; a turning point below it means the striker never engages (no
+  blow at all).
 * **The blow** stops the flywheel (:math:`\dot\varphi = 0`, [002, eq. 3]) and,
   the jaws' bottom being a stop, the axial motion (plastic).
 * **Stage 3** [002, eq. 3] with the rollers: two degrees of freedom
@@ -676,6 +679,39 @@ def _reach(y0: Any, v0: Any, acc: Any, w2: Any, level: Any) -> tuple[Any, Any]:
     return t, vel
 
 
+def _peak(y0: Any, v0: Any, acc: Any, w2: Any) -> Any:
+    r"""Farthest point of :math:`\ddot y = acc - w^2(y - y_0)` from :math:`(y_0, v_0 \ge 0)` [m].
+
+    .. math::
+        y_{max} = y_0 + c + \sqrt{c^2 + (v_0/w)^2},\qquad c = acc/w^2
+
+    The centre of the oscillation plus its amplitude ([002, eqs. 2, 5]: 2B/k² from rest).
+
+    >>> round(float(_peak(0.0, 0.0, 293.101, 120000.0)) * 1e3, 6)  # 2B/k²
+    4.885017
+    """
+    c = acc / w2
+    return y0 + c + hypot(c, v0 / sqrt(w2))
+
+
+def _striker_alone(x: Mapping[str, Any], y: Any) -> tuple[Any, Any]:
+    r"""(acceleration at travel y, c3/m3): the striker on its own in stage 2, past h1.
+
+    .. math::
+        \ddot y = g - \frac{c_3}{m_3}(\lambda_3 + y)
+
+    [002, eq. 2] with the half-coupling on its stop: the power spring no longer pushes.
+
+    9.80665 − 52000·(0.0021 + 0.005)/0.4 = 9.80665 − 923 and 52000/0.4:
+
+    >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
+    >>> [round(float(v), 5) for v in _striker_alone(R, 0.005)]
+    [-913.19335, 130000.0]
+    """
+    m3, c3 = x["striker_mass"], x["return_spring_rate"]
+    return x["gravity"] - c3 * (x["return_spring_preload"] + y) / m3, c3 / m3
+
+
 def _stage2(x: Mapping[str, Any], v_release: Any, g: Geometry) -> tuple[Any, Any]:
     r"""Stage 2 [002, eq. 2] from the release state, exact per linear piece: (time, reach).
 
@@ -685,9 +721,13 @@ def _stage2(x: Mapping[str, Any], v_release: Any, g: Geometry) -> tuple[Any, Any
 
     The sandwich starts backwards at :math:`V_0 = -(m_1 + m_2 + n m_p\rho)\dot z_1/(M_2 + m_2)`
     with the shaft and comes back to the release position at :math:`-V_0` (conservative);
-    then the power and return springs drive it to :math:`h_2`, the power spring leaving
-    contact beyond :math:`\lambda_1 + h_1`. Returns (release -> blow time, farthest
-    travel), the time inf where it never gets to :math:`h_2`.
+    then the power and return springs drive it to :math:`h_2`. Where :math:`h_2 > h_1` the
+    half-coupling (with the rollers, at their outer stop) reaches its stop at
+    :math:`y = h_1` first and stays there; the striker goes on alone,
+    :math:`m_3\ddot y = m_3 g - c_3(\lambda_3 + y)`, with the speed it had (the power
+    spring acts on the half-coupling only, so it never leaves contact before the stop).
+    Returns (release -> blow time, farthest travel), the time inf where it never gets to
+    :math:`h_2` (the striker turns back short of it: an edge blow at best).
     """
     c1, c2, c3 = x["power_spring_rate"], x["auxiliary_spring_rate"], x["return_spring_rate"]
     lam1, lam2, lam3 = (
@@ -711,18 +751,14 @@ def _stage2(x: Mapping[str, Any], v_release: Any, g: Geometry) -> tuple[Any, Any
     # the striker's own stage-2 motion, B and k of [002, eqs. 2 and 5]
     acc0, k = striker_oscillation(c1, lam1, c3, lam3, h1, big, grav)
     w2 = k * k
-    z_off = lam1 + h1  # the power spring leaves contact beyond this travel
-    c = acc0 / w2
-    reach = c + hypot(c, v_start / k)
-    one_piece = (h2 <= z_off) | (reach <= z_off)
-    if all_true(one_piece):  # the power spring stays in contact up to h2
+    reach = _peak(0.0, v_start, acc0, w2)
+    one_piece = (h2 <= h1) | (reach <= h1)
+    if all_true(one_piece):  # the blow (or the turning point) before the half-coupling's stop
         return t_back + _reach(0.0, v_start, acc0, w2, h2)[0], reach
-    t_a, v_a = _reach(0.0, v_start, acc0, w2, z_off)
-    acc_b = grav - c3 * (lam3 + z_off) / big
-    w2_b = c3 / big
-    t_b, _ = _reach(z_off, v_a, acc_b, w2_b, h2)
-    c_b = acc_b / w2_b
-    reach_b = z_off + c_b + hypot(c_b, v_a / sqrt(w2_b))
+    t_a, v_a = _reach(0.0, v_start, acc0, w2, h1)
+    acc_b, w2_b = _striker_alone(x, h1)
+    t_b, _ = _reach(h1, v_a, acc_b, w2_b, h2)
+    reach_b = _peak(h1, v_a, acc_b, w2_b)
     if not any_true(one_piece):
         return t_back + t_a + t_b, reach_b
     t2, _ = _reach(0.0, v_start, acc0, w2, h2)
@@ -954,7 +990,7 @@ def _as_floats(o: CycleOutcome) -> CycleOutcome:
  TANA, MEP, PUSHP, NPAR) = range(26)  # fmt: skip
 
 # modes
-S1, S1P, S2, S2S, S3, S3H, S4 = 1, 0, 2, 7, 3, 4, 6
+S1, S1P, S2, S2S, S2F, S3, S3H, S4 = 1, 0, 2, 7, 5, 3, 4, 6
 
 
 def _sp(c, d):  # type: ignore[no-untyped-def]
@@ -986,6 +1022,8 @@ def _rhs(mode, p, w, q0, q1, v0, v1):  # type: ignore[no-untyped-def]
             f += p[8] * p[6] + _sp_c(p[2], p[3] + p[19] - q0)
             big += p[8]
         return 0.0, f / big, 0.0
+    if mode == 5:  # the striker alone past the half-coupling's stop: m3·ÿ = m3·g − c3(λ3 + y)
+        return 0.0, p[6] - _sp_c(p[4], p[5] + q0) / p[9], 0.0
     if mode == 3 or mode == 4:
         nm = p[11] * p[10]
         k2 = p[13] * p[13]
@@ -1014,6 +1052,25 @@ def _gfun(mode, kind, p, w, q0, q1, v0, v1):  # type: ignore[no-untyped-def]
         return v0
     if kind == 2:
         return v1
+    if kind == 4 or kind == 5:
+        # the smaller of the two faces' contact forces on a roller, per roller mass (stage 3,
+        # ω = 0): m_p·(ẍ, ÿ_r − g) = N_A·n_A + N_B·n_B with the normals into the roller,
+        # n_B = (−sin α, cos α) (the half-coupling's cone) and n_A = (−sin α, −cos α) (the
+        # striker's cone, symmetric V) or (0, −1) (its flat face, single cone). A face can
+        # only push: kind 4 is negative where one would have to pull, kind 5 where it would
+        # have to pull with more than the roller's weight
+        _, a0, a1 = _rhs_c(mode, p, w, q0, q1, v0, v1)
+        xdd = p[13] * (a1 - a0)
+        ydd = p[14] * a0 + p[15] * a1 - p[6]
+        sec = math.sqrt(1.0 + p[22] * p[22])
+        sin_a, cos_a = p[22] / sec, 1.0 / sec
+        if p[14] == 0.0:  # single cone: the striker's face is flat
+            nb = -xdd / sin_a
+            na = nb * cos_a - ydd
+        else:
+            total, diff = -xdd / sin_a, ydd / cos_a  # N_A + N_B, N_B − N_A
+            na, nb = 0.5 * (total - diff), 0.5 * (total + diff)
+        return min(na, nb) + (abs(p[6]) if kind == 5 else 0.0)
     # kind 3: what presses the half-coupling onto its stop in mode 4 (negative: it leaves)
     nm = p[11] * p[10]
     k2 = p[13] * p[13]
@@ -1395,10 +1452,12 @@ def simulate_cycle(
     h2s = 2.0 * math.pi * math.sqrt(big / (c1 + c2 + c3)) / steps_per_period
     t2_end = t_rel + 20.0 * per2
     z_off = x["power_spring_preload"] + h1
+    stops = h2 > h1  # the half-coupling reaches its stop at h1 before the blow
     mode = S2S if v0 < 0.0 else S2
     state = (t_rel, w_rel, 0.0, 0.0, v0, 0.0)
     t_blow = math.inf
     max_travel = 0.0
+    v_stop = 0.0  # the striker's speed where the half-coupling stops (h2 > h1)
     for _ in range(64):
         if mode == S2S:
             ev = _events(
@@ -1407,11 +1466,19 @@ def simulate_cycle(
                 (0, 1.0, 0.0, -lam3, 1.0),
                 (1, 0.0, 0.0, 0.0, -1.0),  # turning forward->back: never comes back
             )
-        else:
+        elif mode == S2F:
             ev = _events(
                 (0, 1.0, 0.0, h2, 1.0),  # the blow
-                (0, 1.0, 0.0, z_off, 1.0),  # power spring leaves contact (kink)
-                (0, 1.0, 0.0, z_off, -1.0),
+                (1, 0.0, 0.0, 0.0, -1.0),  # turning point below h2: never engages
+            )
+        else:
+            # beyond h1 the half-coupling is on its stop (h2 > h1); z_off = λ1 + h1 ≥ h1 is
+            # then never reached, and for h2 ≤ h1 neither: the rows keep the same count
+            level = h1 if stops else z_off
+            ev = _events(
+                (0, 1.0, 0.0, h2, 1.0),  # the blow
+                (0, 1.0, 0.0, level, 1.0),  # half-coupling on its stop
+                (0, 1.0, 0.0, level, -1.0),
                 (1, 0.0, 0.0, 0.0, -1.0),  # turning point below h2: never engages
                 (0, 1.0, 0.0, 0.0, -1.0),  # back below the release position: picks up shaft
             )
@@ -1424,10 +1491,19 @@ def simulate_cycle(
                 mode = S2
             elif which == 3:
                 break
+        elif mode == S2F:
+            if which == 0:
+                t_blow = state[0]
+                break
+            break  # turned back short of h2
         else:
             if which == 0:
                 t_blow = state[0]
                 break
+            if which == 1 and stops:  # the half-coupling stops (plastic); the striker goes on
+                v_stop = state[4]
+                mode = S2F
+                continue
             if which == 3:
                 break
             if which == 4:  # plastic pick-up of the resting shaft
@@ -1457,14 +1533,18 @@ def simulate_cycle(
             series=_series(rec, x, g, r) if record else {},
             steps=run.steps,
         )
-    if h2 > h1:
+    if stops:
         notes.append(
-            "the engagement height exceeds the release travel: the half-coupling would reach its "
-            "stop before the blow; the simulation keeps the sandwich together (not modelled)"
+            "the engagement height exceeds the release travel: the half-coupling stops on its "
+            "stop at h1 and the striker travels the rest alone, against the return spring"
         )
-    # the balance of the mechanism at the blow, for the stage-2 reach without the blow
-    c_b = (big * x["gravity"] + c1 * z_off - c3 * lam3) / (c1 + c3)
-    max_travel = max(max_travel, h2, 2.0 * c_b)
+        # the striker's own reach past h1 without the blow
+        acc_f, w2_f = _striker_alone(x, h1)
+        max_travel = max(max_travel, h2, float(_peak(h1, v_stop, acc_f, w2_f)))
+    else:
+        # the balance of the mechanism at the blow, for the stage-2 reach without the blow
+        c_b = (big * x["gravity"] + c1 * z_off - c3 * lam3) / (c1 + c3)
+        max_travel = max(max_travel, h2, 2.0 * c_b)
 
     # ---- stage 3: return with the rollers; the blow stopped the flywheel and the sandwich ----
     m11, m12, m22 = _stage3_matrices(x, g)
@@ -1483,7 +1563,13 @@ def simulate_cycle(
         mode, state = S3, (t_blow, 0.0, y_h0, h2, 0.0, 0.0)
     t_ret = math.inf
     t_home = math.inf
-    for _ in range(64):
+    # times after the blow where a face would have to pull a roller (kind 4) and pull with
+    # more than its weight (kind 5): the contact as an equality, a unilateral one flies free
+    pulls: dict[int, float] = {}
+    for _ in range(64 + 2):  # two more for the pull events, which change no motion
+        for kind in (4, 5):
+            if kind not in pulls and _gfun(mode, kind, run.p, *state[1:]) < 0.0:
+                pulls[kind] = state[0] - t_blow  # already at a mode's start
         labels = ["home", "bottom"]
         rows: list[tuple[int, float, float, float, float]] = [
             (0, 0.0, 1.0, 0.0, -1.0),  # striker home: the balls can re-lock it
@@ -1492,6 +1578,10 @@ def simulate_cycle(
         if math.isinf(t_ret) and clear > 0.0:
             labels.append("clear")
             rows.append((0, 0.0, 1.0, clear, -1.0))  # clear of the jaws: return over
+        for kind in (4, 5):  # the first time only: the motion itself is not changed by it
+            if kind not in pulls:
+                labels.append(f"pull{kind}")
+                rows.append((kind, 0.0, 0.0, 0.0, -1.0))  # a face would have to pull
         if mode == S3:
             labels.append("stop")
             rows.append((0, 1.0, 0.0, 0.0, 1.0))  # half-coupling onto its stop
@@ -1506,6 +1596,19 @@ def simulate_cycle(
             break
         label = labels[which]
         t_, w_, yh, ys, vh, vs = state
+        if label.startswith("pull"):
+            pulls[int(label[4])] = t_ - t_blow
+            # a level crossed at the same instant (a spring leaving contact kinks the force)
+            if ys <= 0.0:
+                label = "home"
+            elif ys >= h2 and vs > 0.0:
+                label = "bottom"
+            elif math.isinf(t_ret) and clear > 0.0 and ys <= clear:
+                label = "clear"
+            elif mode == S3 and yh >= 0.0 and vh > 0.0:
+                label = "stop"
+            else:
+                continue
         if label == "home":
             t_home = t_ - t_blow
             if math.isinf(t_ret):
@@ -1523,6 +1626,24 @@ def simulate_cycle(
             mode = S3
         else:
             break
+    where = (
+        f"h1 {h1 * 1e3:.4g} mm, h2 {h2 * 1e3:.4g} mm, c1 {c1:.4g} N/m, c3 {c3:.4g} N/m, "
+        f"α {math.degrees(x['cone_angle']):.3g}°"
+    )
+    if 5 in pulls:
+        warnings.append(
+            f"stage 3: {pulls[5] * 1e3:.3g} ms after the blow a cone would have to pull a roller "
+            f"with more than its weight ({where}): held on both cones as an equality the "
+            "rollers need a negative contact force; with a one-sided contact they would fly "
+            "free and the striker return on its own, which this model does not follow: the "
+            "return and home times are not reliable"
+        )
+    elif 4 in pulls:
+        notes.append(
+            f"stage 3: {pulls[4] * 1e3:.3g} ms after the blow a cone would have to pull a roller "
+            f"with less than its weight ({where}): the rollers settle on one face, the motion "
+            "is hardly changed"
+        )
     if math.isinf(t_home):
         warnings.append(
             "the return spring does not bring the striker home: the balls cannot re-lock it"
@@ -1583,15 +1704,15 @@ def _series(rec: _Recorder, x: Mapping[str, Any], g: Geometry, r: float) -> dict
             "stage",
         )
     }
-    stage_of = {S1: 1, S1P: 1, S2: 2, S2S: 2, S3: 3, S3H: 3, S4: 4}
+    stage_of = {S1: 1, S1P: 1, S2: 2, S2S: 2, S2F: 2, S3: 3, S3H: 3, S4: 4}
     for mode, t, w, q0, q1 in rec.parts:
         st = stage_of[mode]
         if st == 1:
             lift, strk, shaft = q0, np.zeros_like(q0), q0
             kap = g.kappa
             rad = x0 + kap * q0
-        elif st == 2:
-            lift, strk = h1 - q0, q0
+        elif st == 2:  # the half-coupling on its stop past h1 (h2 > h1)
+            lift, strk = np.maximum(h1 - q0, 0.0), q0
             shaft = np.where(q0 < 0.0, h1 - q0, h1)
             rad = np.full_like(q0, r)
         elif st == 3:

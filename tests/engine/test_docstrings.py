@@ -71,7 +71,6 @@ UNDOCUMENTED = {
     "rare_impact.liftoff_speed",
     "rare_impact.max_striker_travel",
     "rare_impact.min_return_spring_rate",
-    "rare_impact.relock_margin",
     "rare_impact.relock_time",
     "rare_impact.return_time",
     "rare_impact.spin_up_time",

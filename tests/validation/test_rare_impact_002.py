@@ -68,9 +68,10 @@ def test_eq6_follows_from_balanced_preloads(c1):
 
 
 def test_relock_condition_as_printed():
-    # [002, after eq. 6]: c2 λ2 > c3 λ3 f
-    assert relock_margin(3000.0, 0.004, 40000.0, 0.002, 0.15) == pytest.approx(12.0 - 12.0)
-    assert relock_margin(3000.0, 0.005, 40000.0, 0.002, 0.15) > 0
+    # [002, after eq. 6]: c2 λ2 > c3 λ3 f, printed without the weight (g = 0 here)
+    ff = 40000.0 * 0.002 * 0.15
+    assert relock_margin(3000.0, 0.004, 0.05, 0.0, ff) == pytest.approx(12.0 - 12.0)
+    assert relock_margin(3000.0, 0.005, 0.05, 0.0, ff) > 0
 
 
 @pytest.mark.parametrize("c1", GRID)

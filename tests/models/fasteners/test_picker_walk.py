@@ -77,7 +77,11 @@ def test_every_picker_entry_computes_a_finite_answer(spec: ModelSpec) -> None:
         except ValueError as exc:  # EngineError is a ValueError
             refused.append(f"{entry['designation']}: {exc}")
             continue
-        nulls = [k for k, v in r.results.items() if v is None]
+        # a blow that yields a small bolt before the example's target reaches no target
+        yields = r.results.get("bolt_verdict") not in (None, "elastic")
+        nulls = [
+            k for k, v in r.results.items() if v is None and not (yields and k == "blows_to_target")
+        ]
         assert not nulls, (entry["designation"], nulls)
         for k, v in r.results.items():
             if isinstance(v, float):

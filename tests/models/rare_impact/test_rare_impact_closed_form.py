@@ -99,8 +99,16 @@ def test_return_rate_and_relock_margin():
     )
     assert min_return_spring_rate(0.4, 0.0, 0.0, 0.004, 0.0035) == 0.0
     assert min_return_spring_rate(0.4, 9.80665, 0.0, 0.001, 0.004) == math.inf
-    # 2000·0.008 − 52000·0.0021·0.1 = 16 − 10.92
-    assert relock_margin(2000.0, 0.008, 52000.0, 0.0021, 0.1) == pytest.approx(5.08)
+    # [002, eq. 4] at z2 = h1: 2000·0.008 + 0.05·9.80665 − 52000·0.0021·0.1
+    # = 16 + 0.4903325 − 10.92, by hand
+    assert relock_margin(2000.0, 0.008, 0.05, 9.80665, 10.92) == pytest.approx(5.5703325)
+    # the margin is eq. 4's force at the end of the travel: relock_time's D4·c2 less c2·h1
+    d4 = 0.008 + 0.005 + (0.05 * 9.80665 - 10.92) / 2000.0
+    assert relock_margin(2000.0, 0.008, 0.05, 9.80665, 10.92) == pytest.approx(
+        2000.0 * (d4 - 0.005), rel=1e-12
+    )
+    # gravity opposing (g < 0) takes the weight off: 16 − 0.4903325 − 10.92
+    assert relock_margin(2000.0, 0.008, 0.05, -9.80665, 10.92) == pytest.approx(4.5896675)
 
 
 def test_spin_up_time_both_motor_laws():

@@ -99,7 +99,8 @@ def hand() -> dict[str, float]:
     # [002, eq. 6], eq. 3 reduced as the paper does, eq. 4's condition
     out["spring_height_limit"] = 2.0 * BIG * G / (C3 - C1)
     out["min_return_spring_rate"] = M3 * G / (L3 + H2 - 0.5 * H3)
-    out["relock_margin"] = C2 * L2 - C3 * L3 * R["roller_friction"]
+    # [002, eq. 4] at z2 = h1: c2·λ2 + m2·g − c3·λ3·f
+    out["relock_margin"] = C2 * L2 + M2 * G - C3 * L3 * R["roller_friction"]
     return out
 
 
@@ -112,7 +113,8 @@ def test_the_hand_values_are_the_ones_written_in_the_paper_s_terms() -> None:
     assert h["engagement_frequency"] == pytest.approx(math.sqrt(120000.0), rel=1e-15)
     assert h["spring_height_limit"] == pytest.approx(0.0083356525, rel=1e-12)
     assert h["min_return_spring_rate"] == pytest.approx(3.92266 / 0.00435, rel=1e-12)
-    assert h["relock_margin"] == pytest.approx(5.08, rel=1e-12)
+    # 2000·0.008 + 0.05·9.80665 − 52000·0.0021·0.1 = 16 + 0.4903325 − 10.92
+    assert h["relock_margin"] == pytest.approx(5.5703325, rel=1e-12)
     assert h["relock_time"] == pytest.approx(0.0060247, abs=1e-7)
 
 
