@@ -51,11 +51,11 @@ check: test
 # so that the other worker's load does not count as theirs.
 # CI runs `make test`: everything, in one process, at the full hypothesis budgets.
 FAST := not slow and not browser and not install and not fuzz
-SERIAL := tests/service/test_lanes.py tests/service/test_isolation.py
+# The lanes' timing tests under load are `slow` (tests/conftest.py: SLOW_ITEMS): they time
+# the service against an idle run and cannot share the CPU with a second worker.
 test-fast: $(VENV)/.installed-dev
 	PY=$(BIN)/python scripts/check -q -m "$(FAST)" --hypothesis-profile=fast -n 2 \
-		--ignore=tests/service/test_fuzz.py $(SERIAL:%=--ignore=%)
-	$(BIN)/python -m pytest -q -m "$(FAST)" --hypothesis-profile=fast $(SERIAL)
+		--ignore=tests/service/test_fuzz.py
 
 # Mutation testing of the physics modules, each against its own tests (scripts/mutate.py):
 # a seeded sample within a time budget; prints the share killed and the survivors. Not in CI.

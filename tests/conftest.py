@@ -22,12 +22,30 @@ from tests.toys import TOY
 settings.register_profile("fast", max_examples=8)
 
 
+#: Property sweeps over whole declared ranges, hostile-value fuzzing and timing under load:
+#: `slow` (the full suite, `make test`, runs them; the inner loop does not). Value tests and
+#: doctests are never listed here.
+SLOW_ITEMS = (
+    "tests/service/test_no_500.py::test_every_declared_range_extreme_evaluates_or_is_refused",
+    "tests/stability/test_grids.py::test_api_sweeps_over_whole_ranges",
+    "tests/stability/test_grids.py::test_api_at_the_extremes",
+    "tests/service/test_hostile.py::test_every_numeric_input_of_every_model_survives_hostile",
+    "tests/service/test_lanes.py::",
+    "tests/service/test_isolation.py::",
+)
+
+
+@pytest.hookimpl(tryfirst=True)
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
-    """Under the ``fast`` hypothesis profile, size every property test's budget to the profile.
+    """Mark :data:`SLOW_ITEMS` slow (before ``-m`` selects), and under the ``fast`` hypothesis
+    profile size every property test's budget to the profile.
 
     A test's own ``@settings(max_examples=…)`` outranks any profile, so the cap is applied
     here, once, to the settings each ``@given`` test reads when it runs.
     """
+    for item in items:
+        if item.nodeid.startswith(SLOW_ITEMS):
+            item.add_marker(pytest.mark.slow)
     if config.getoption("hypothesis_profile", None) != "fast":
         return
     cap = settings.get_profile("fast").max_examples
