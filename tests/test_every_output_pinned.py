@@ -43,29 +43,7 @@ from engine.core.spec import ModelSpec
 ROOT = Path(__file__).resolve().parents[1]
 
 #: Numeric outputs that no value test holds yet, per model. Shrink it; never grow it.
-NOT_YET_PINNED: dict[str, set[str]] = {
-    # held by tests whose names a static scan cannot read (a helper's dict argument, a
-    # function building its dict key by key) or by round trips rather than values
-    "blow.joint": {
-        "clutch_spring_force_for_target",
-        "delivered_preload_max",
-        "delivered_preload_min",
-        "energy_into_joint",
-        "joint_energy_fraction",
-        "nut_rotation",
-        "saturation_torque",
-        "tool_stiffness_used",
-    },
-    "clutch.ball_setting": {
-        "suggested_disc_setting",
-        "suggested_wire_diameter",
-        "suggested_wire_setting",
-    },
-    "impact.rare": {
-        "half_coupling_release_speed",
-        "max_striker_travel",
-    },
-}
+NOT_YET_PINNED: dict[str, set[str]] = {}
 
 _COMPARE_OPS = (ast.Eq, ast.Lt, ast.LtE, ast.Gt, ast.GtE)
 #: Calls that compare their first two arguments.
@@ -214,6 +192,8 @@ def _literal_names(node: ast.AST | None, known: dict[str, set[str]]) -> set[str]
         return known.get(node.id)
     elif isinstance(node, ast.Call) and _call_name(node) in ("sorted", "tuple", "list", "set"):
         return _literal_names(node.args[0], known) if len(node.args) == 1 else None
+    elif isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and not node.args:
+        return known.get(node.func.id + "()")  # a module-level function's returned keys
     else:
         return None
     if not all(isinstance(i, ast.Constant) and isinstance(i.value, str) for i in items):
@@ -221,17 +201,43 @@ def _literal_names(node: ast.AST | None, known: dict[str, set[str]]) -> set[str]
     return {str(i.value) for i in items if isinstance(i, ast.Constant)}
 
 
+def _returned_keys(f: ast.FunctionDef) -> set[str] | None:
+    """The keys of the dict ``f`` returns, where its text spells each one out."""
+    last = f.body[-1] if f.body else None
+    if not isinstance(last, ast.Return) or last.value is None:
+        return None
+    if isinstance(last.value, ast.Dict):
+        return _literal_names(last.value, {})
+    if not isinstance(last.value, ast.Name):
+        return None
+    name, keys = last.value.id, None
+    for n in ast.walk(f):
+        if isinstance(n, ast.AnnAssign | ast.AugAssign) and isinstance(n.value, ast.Dict):
+            if isinstance(n.target, ast.Name) and n.target.id == name:  # out: … = {…}; out |= {…}
+                keys = (keys or set()) | (_literal_names(n.value, {}) or set())
+        elif isinstance(n, ast.Assign) and len(n.targets) == 1:
+            t = n.targets[0]
+            if isinstance(t, ast.Name) and t.id == name and isinstance(n.value, ast.Dict):
+                keys = (keys or set()) | (_literal_names(n.value, {}) or set())
+            elif (
+                isinstance(t, ast.Subscript)
+                and isinstance(t.value, ast.Name)
+                and t.value.id == name
+                and isinstance(t.slice, ast.Constant)
+                and isinstance(t.slice.value, str)
+            ):
+                keys = (keys or set()) | {t.slice.value}
+    return keys
+
+
 def _module_literals(tree: ast.Module) -> dict[str, set[str]]:
     """Module-level names bound to a literal collection of strings (``NAMES = ("a", "b")``)."""
     known: dict[str, set[str]] = {}
-    # a module-level function whose last statement returns a dict literal: its call's keys
-    returns = {
-        f.name: _literal_names(f.body[-1].value, {})
-        for f in tree.body
-        if isinstance(f, ast.FunctionDef)
-        and isinstance(f.body[-1], ast.Return)
-        and isinstance(f.body[-1].value, ast.Dict)
-    }
+    # a module-level function that returns a dict literal, or a dict it builds from one by
+    # literal keys (out = {...}; out["k"] = ...; return out): its call's keys
+    returns = {f.name: _returned_keys(f) for f in tree.body if isinstance(f, ast.FunctionDef)}
+    returns = {name: keys for name, keys in returns.items() if keys}
+    known.update({name + "()": keys for name, keys in returns.items() if keys is not None})
     for stmt in tree.body:
         if isinstance(stmt, ast.Assign | ast.AnnAssign) and stmt.value is not None:
             value = stmt.value
@@ -256,11 +262,29 @@ def _bound_names(node: ast.AST, known: dict[str, set[str]]) -> dict[str, set[str
             names = _literal_names(d.args[1], known)
             if isinstance(arg, ast.Constant) and isinstance(arg.value, str) and names:
                 bound[arg.value] = names
+    local = dict(known)  # plus the function's own names bound to a literal collection
     for n in ast.walk(node):
-        if isinstance(n, ast.For) and isinstance(n.target, ast.Name):
-            names = _literal_names(n.iter, known)
-            if names:
-                bound[n.target.id] = names
+        if isinstance(n, ast.Assign) and len(n.targets) == 1 and isinstance(n.targets[0], ast.Name):
+            names = _literal_names(n.value, local)
+            if names is not None:
+                local[n.targets[0].id] = names
+    for n in ast.walk(node):
+        if not isinstance(n, ast.For):
+            continue
+        target = n.target.elts[0] if isinstance(n.target, ast.Tuple) else n.target
+        over = n.iter
+        if (  # for name, value in WANT.items() / for name in WANT.keys()
+            isinstance(over, ast.Call)
+            and isinstance(over.func, ast.Attribute)
+            and over.func.attr in ("items", "keys")
+            and not over.args
+        ):
+            over = over.func.value
+        elif isinstance(n.target, ast.Tuple):
+            continue
+        names = _literal_names(over, local)
+        if names and isinstance(target, ast.Name):
+            bound[target.id] = names
     return bound
 
 
@@ -437,6 +461,15 @@ def test_the_scan_sees_the_assertions_it_should() -> None:
         )
         == pinned
     )
+    built = (
+        'def hand():\n    out = {"grip": 1}\n    out["preload"] = 2\n    return out\nH = hand()\n'
+    )
+    assert (
+        scan(built + 'def t():\n    for n in H:\n        pin("joint.vdi2230", n, a[n], H[n])')
+        == pinned
+    )
+    loop = 'def t():\n    want = {"grip": 1.0, "preload": 2.0}\n    for n, v in want.items():\n'
+    assert scan(loop + '        pin("joint.vdi2230", n, a[n], v)') == pinned
     # a name computed at run time is not read
     assert (
         scan('def t():\n    for n in make():\n        pin("joint.vdi2230", n, a[n], b[n])') == set()

@@ -14,6 +14,7 @@ import engine
 from engine.models.clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
 from engine.physics import clutch as cl
 from engine.physics import springs as sp
+from tests.pins import pin
 
 DEG = math.pi / 180
 PAPER = dict(BALL_CLUTCH.examples[0])
@@ -374,3 +375,52 @@ def test_the_suggested_pack_reuses_the_given_stacks_search_and_finds_what_a_fres
         assert ("suggested_disc_parallel" in values) == bool(want)
         counts.add(want.get("suggested_disc_parallel"))
     assert len(counts) >= 3, counts  # packs of several sizes, and some with none
+
+
+def test_the_suggestions_are_the_first_candidates_that_pass_by_a_search_of_our_own():
+    """The suggested wire is the thinnest preferred size (index 4…12) whose peak setting for
+    the target keeps the spring within its permissible stress and off its solid length; the
+    suggested pack the fewest discs in parallel within the disc's yield strength. Both found
+    here by a search of the test's own over the candidates, each candidate's peak setting
+    checked in clutch.ball (the forward model), and compared as values."""
+    target = 8.0
+    base = {k: v for k, v in ORDINARY.items() if k != "spring_deflection"}
+    got = run(BALL_CLUTCH_SETTING, base, target_torque=target).results
+    want_wire = want_setting = None
+    for d_mm in sp.STANDARD_WIRE_DIAMETERS:
+        d = d_mm * 1e-3
+        if not 4.0 <= 0.032 / d <= 12.0:
+            continue
+        one = run(BALL_CLUTCH_SETTING, base, spring_wire_diameter=d, target_torque=target)
+        delta = one.results.get("required_peak_setting")
+        if delta is None:
+            continue
+        v = run(BALL_CLUTCH, {**base, "spring_wire_diameter": d, "spring_deflection": delta})
+        at = v.results
+        assert at["peak_torque"] == pytest.approx(target, rel=1e-9)
+        room = sp.solid_length(d, 8.0) + sp.minimum_gap_sum(d, 0.032, 8.0)
+        fits = 0.090 - (delta + at["total_lift"]) >= room
+        if at["spring_stress_max"] <= at["permissible_stress"] and fits:
+            want_wire, want_setting = d, delta
+            break
+    assert want_wire is not None
+    wire, setting = got["suggested_wire_diameter"], got["suggested_wire_setting"]
+    pin("clutch.ball_setting", "suggested_wire_diameter", wire, want_wire, rel=1e-12)
+    pin("clutch.ball_setting", "suggested_wire_setting", setting, want_setting, rel=1e-9)
+
+    disc = {k: v for k, v in DISC.items() if k != "spring_deflection"}
+    yield_strength = BALL_CLUTCH_SETTING.param("disc_yield_strength").default
+    more = run(BALL_CLUTCH_SETTING, disc, target_torque=100.0).results
+    want_pack = None
+    for n in range(1, 9):
+        one = run(BALL_CLUTCH_SETTING, disc, disc_parallel=n, target_torque=100.0).results
+        delta = one.get("required_peak_setting")
+        if delta is None or one["peak_setting_stress_max"] > yield_strength:
+            continue
+        at = run(BALL_CLUTCH, {**DISC, "disc_parallel": n, "spring_deflection": delta}).results
+        assert at["peak_torque"] == pytest.approx(100.0, rel=1e-9)
+        want_pack = (n, delta)
+        break
+    assert want_pack is not None and more["suggested_disc_parallel"] == want_pack[0]
+    pack = more["suggested_disc_setting"]
+    pin("clutch.ball_setting", "suggested_disc_setting", pack, want_pack[1], rel=1e-9)
