@@ -446,11 +446,17 @@ def vdi_tightening_torque(
     >>> round(vdi_tightening_torque(43110, 0.00175, 0.010863, 0.12, 0.12, 0.01663, 0.0135), 1)
     83.6
     """
-    mean_diameter = 0.5 * (bearing_outer_diameter + hole_diameter)
-    return (
-        vdi_thread_torque(preload, pitch, pitch_diameter, thread_friction)
-        + bearing_friction * preload * 0.5 * mean_diameter
+    k_thread, k_bearing = tightening_torque_per_preload(
+        pitch,
+        pitch_diameter,
+        pitch_diameter,  # the nominal diameter enters only the "approx" formula
+        thread_friction,
+        bearing_friction,
+        bearing_outer_diameter,
+        hole_diameter,
+        "vdi2230",
     )
+    return preload * (k_thread + k_bearing)
 
 
 def approximate_tightening_torque(
@@ -689,8 +695,8 @@ def tightening_torque_per_preload(
     >>> round(float(kg) * 1e3, 4), round(kk * 1e3, 4)
     (1.0385, 0.9072)
     """
-    if formula == "vdi2230":
-        k_thread = 0.16 * pitch + 0.58 * pitch_diameter * thread_friction
+    if formula == "vdi2230":  # R13 per newton of preload (vdi_tightening_torque is F times it)
+        k_thread = vdi_thread_torque(1.0, pitch, pitch_diameter, thread_friction)
         k_bearing = bearing_friction * 0.25 * (bearing_outer_diameter + hole_diameter)
     elif formula == "exact":
         k_thread = thread_torque(1.0, pitch, pitch_diameter, thread_friction)
