@@ -902,20 +902,16 @@ _PEAK_OUTPUTS = ("peak_torque", "peak_per_blow")
 def _first_blow(x: Mapping[str, Any], s: _Setup) -> tuple[Any, Any]:
     """(peak torque, joint torque after) of the energy rung's first blow.
 
-    The energy balance of :func:`~engine.physics.blow.energy_blow` (for one design: numpy on a
-    single float costs twice the whole run; measured) or of its array form; the value at
-    a rate ≤ 0 or where the balance has no root is not used (NaN).
+    The energy balance of :func:`~engine.physics.blow.energy_blow` on floats or arrays (on
+    arrays it raises nothing: a point without a root is NaN); the value at a rate ≤ 0 or
+    where the balance has no root is not used (NaN).
     """
     args = (s.energy, s.tool.stiffness, where(s.rate > 0.0, s.rate, 1.0), x["snug_torque"])
-    if isinstance(s.rate, np.ndarray):
-        with np.errstate(all="ignore"):
-            blow = energy_blow(*args, x["breakaway_factor"], s.tool.drive)
-        return blow[0], blow[1]
     try:
-        one = energy_blow(*args, x["breakaway_factor"], s.tool.drive)
-    except (ArithmeticError, ValueError):
+        blow = energy_blow(*args, x["breakaway_factor"], s.tool.drive)
+    except (ArithmeticError, ValueError):  # one design without a root (EngineError is one)
         return math.nan, math.nan
-    return one[0], one[1]
+    return blow[0], blow[1]
 
 
 def _energy_errors(
