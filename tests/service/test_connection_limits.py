@@ -18,19 +18,16 @@ from __future__ import annotations
 
 import contextlib
 import json
-import os
 import select
 import socket
-import subprocess
-import sys
 import time
 from collections.abc import Iterator
-from pathlib import Path
 
 import httpx
 import pytest
 
-ROOT = Path(__file__).resolve().parents[2]
+from tests.service.servers import toy_server
+
 pytestmark = pytest.mark.slow
 
 PER_CLIENT = 20
@@ -40,44 +37,17 @@ BODY_S = 1.0
 HEAD_HOLD = b"GET /healthz HTTP/1.1\r\nHost: t\r\nX-Slow: "  # a head that never ends
 
 
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return int(s.getsockname()[1])
-
-
 @pytest.fixture(scope="module")
 def server() -> Iterator[tuple[str, int]]:
-    port = _free_port()
-    env = {
-        **os.environ,
+    settings = {
         "HEADER_TIMEOUT_S": "10",
         "BODY_TIMEOUT_S": str(BODY_S),
         "MAX_CONNECTIONS": str(TOTAL),
         "MAX_CONNECTIONS_PER_CLIENT": str(PER_CLIENT),
         "MAX_HEAD_BYTES": str(HEAD_BYTES),
-        "WARM_UP": "0",
-        "ACCESS_LOG": "0",
-        "PYTHONPATH": str(ROOT),
     }
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "service", "--port", str(port), "--factory", "tests.toys:crash_app"],
-        cwd=ROOT,
-        env=env,
-        stdout=subprocess.DEVNULL,
-        stderr=subprocess.DEVNULL,
-    )
-    deadline = time.monotonic() + 30
-    while True:
-        try:
-            if httpx.get(f"http://127.0.0.1:{port}/healthz", timeout=1).status_code == 200:
-                break
-        except httpx.HTTPError:
-            assert time.monotonic() < deadline, "server did not start"
-            time.sleep(0.1)
-    yield "127.0.0.1", port
-    proc.kill()
-    proc.wait()
+    with toy_server(settings, keep_output=False) as (port, _):
+        yield "127.0.0.1", port
 
 
 def _connect(port: int, source: str = "127.0.0.1") -> socket.socket:

@@ -11,63 +11,25 @@
 from __future__ import annotations
 
 import contextlib
-import os
 import signal
 import socket
 import subprocess
-import sys
 import threading
 import time
 from collections.abc import Iterator
-from pathlib import Path
 
 import httpx
 import pytest
 
-ROOT = Path(__file__).resolve().parents[2]
+from tests.service.servers import toy_server
+
 pytestmark = pytest.mark.slow
-
-
-def free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return int(s.getsockname()[1])
 
 
 @pytest.fixture(scope="module")
 def server() -> Iterator[tuple[str, subprocess.Popen[str]]]:
-    port = free_port()
-    env = {
-        **os.environ,
-        "HEADER_TIMEOUT_S": "0.5",
-        "BODY_TIMEOUT_S": "0.5",
-        "WARM_UP": "0",
-        "ACCESS_LOG": "0",
-        "PYTHONPATH": str(ROOT),
-    }
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "service", "--port", str(port), "--factory", "tests.toys:crash_app"],
-        cwd=ROOT,
-        env=env,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.STDOUT,
-        text=True,
-    )
-    url = f"http://127.0.0.1:{port}"
-    deadline = time.monotonic() + 30
-    while time.monotonic() < deadline:
-        try:
-            if httpx.get(url + "/healthz", timeout=1).status_code == 200:
-                break
-        except httpx.HTTPError:
-            time.sleep(0.1)
-    else:
-        proc.kill()
-        raise RuntimeError("server did not start")
-    yield url, proc
-    if proc.poll() is None:
-        proc.kill()
-        proc.wait()
+    with toy_server({"HEADER_TIMEOUT_S": "0.5", "BODY_TIMEOUT_S": "0.5"}) as (port, proc):
+        yield f"http://127.0.0.1:{port}", proc
 
 
 def closed_within(sock: socket.socket, seconds: float) -> bool:
