@@ -86,6 +86,7 @@ def _response(result: engine.RunResult, max_series_points: int) -> dict[str, Any
         "units": result.units,
         "rung": result.rung,
         "error_estimate": result.error_estimate,
+        "error_kind": result.error_kind,
         "elapsed_s": result.elapsed_s,
         "checks": [vars(c) for c in result.checks],
         "notes": result.notes,

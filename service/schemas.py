@@ -272,6 +272,10 @@ def results_model(spec: ModelSpec) -> type[BaseModel]:
     return create_model(_class_name(spec, "Results"), **fields)
 
 
+#: What a result's error estimate promises (engine.RunResult.error_kind).
+_ERROR_KIND: Any = Literal["bound", "typical"] | None
+
+
 def response_model(spec: ModelSpec) -> type[BaseModel]:
     return create_model(
         _class_name(spec, "Response"),
@@ -282,6 +286,15 @@ def response_model(spec: ModelSpec) -> type[BaseModel]:
         error_estimate=(
             float | None,
             Field(description="estimated relative error of the results (null: not known)"),
+        ),
+        error_kind=(
+            _ERROR_KIND,
+            Field(
+                default=None,
+                description="what error_estimate promises: 'bound' (no design in the declared "
+                "ranges exceeds it, measured: docs/accuracy.md) or 'typical' (some do; a note "
+                "says how often); null with no estimate",
+            ),
         ),
         elapsed_s=(float, Field(description="compute time, seconds")),
         checks=(list[CheckOut], Field(default_factory=list)),

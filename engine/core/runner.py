@@ -15,13 +15,13 @@ import time
 from collections import Counter
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 
 from . import points
 from .errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange, SolverFailed
-from .spec import Check, ModelSpec, Param, RunContext, Value
+from .spec import Check, ModelSpec, Param, RunContext, Rung, Value
 
 DEFAULT_TOLERANCE = 0.01
 MAX_SWEEP_POINTS = 2000
@@ -44,6 +44,9 @@ class RunResult:
     notes: list[str] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
     series: dict[str, list[float]] = field(default_factory=dict)
+    #: What ``error_estimate`` promises (the rung's :attr:`Rung.estimate_kind`): "bound",
+    #: or "typical" (a note then says how often it is exceeded); None with no estimate.
+    error_kind: Literal["bound", "typical"] | None = None
 
 
 @dataclass
@@ -115,6 +118,20 @@ def _rung_summary(rungs: Sequence[str | None]) -> tuple[str, list[str]]:
     ]
 
 
+def _declared(spec: ModelSpec, name: str) -> Rung | None:
+    """The rung called ``name``, or None where a model names one it does not declare."""
+    try:
+        return spec.rung(name)
+    except KeyError:
+        return None
+
+
+def _caveat(spec: ModelSpec, name: str) -> str:
+    """`` (<the rung's caveat>)`` when its error estimate is typical, else ""."""
+    rung = _declared(spec, name)
+    return f" ({rung.estimate_caveat})" if rung is not None and rung.estimate_caveat else ""
+
+
 def _fidelity(spec: ModelSpec, fidelity: str | None, tolerance: float | None) -> str:
     """The fidelity asked for: given, else 'auto' when a tolerance is given, else the default."""
     if fidelity is not None:
@@ -130,7 +147,8 @@ def choose_rung(
     A named rung runs as asked. ``"auto"`` takes the cheapest rung (the spec
     lists them cheapest first) whose a-priori error estimate is within
     ``tolerance``; if none is, the most accurate applicable rung runs and the
-    note says the tolerance was not met.
+    note says the tolerance was not met. Where the chosen rung's estimate is typical,
+    not a bound (:attr:`Rung.estimate_kind`), the note says so and how often it is exceeded.
     """
     if fidelity != "auto":
         if fidelity not in spec.rung_names:
@@ -154,6 +172,8 @@ def choose_rung(
             )
             if skipped:
                 why += "; cheaper rungs estimated " + ", ".join(f"{n} {e:.2g}" for n, e in skipped)
+            if rung.estimate_caveat:
+                why += f"; {rung.estimate_caveat}"
             return rung.name, [why]
     if not applicable:
         name = spec.rungs[-1].name
@@ -161,7 +181,7 @@ def choose_rung(
     name, estimate = min(applicable, key=lambda item: item[1])
     return name, [
         f"auto: no rung meets tolerance {tolerance:.2g}; ran the most accurate, {name!r} "
-        f"(estimated error {estimate:.2g})"
+        f"(estimated error {estimate:.2g}){_caveat(spec, name)}"
     ]
 
 
@@ -352,6 +372,7 @@ def run(
                     else f"error is {theirs:.2g}"
                 )
                 + (f": the tolerance {tol:.2g} is not met" if auto and theirs > tol else "")
+                + _caveat(spec, fallback)
             )
             result = spec.compute(values, ctx)
     elapsed = time.perf_counter() - start
@@ -390,6 +411,14 @@ def run(
     if error is not None and not math.isfinite(error):
         notes.append("the error estimate is unbounded for these inputs; null")
         error = None
+    ran = _declared(spec, result.rung)
+    error_kind = None if error is None or ran is None else ran.estimate_kind
+    if (
+        error_kind == "typical"
+        and ran is not None
+        and not any(ran.estimate_caveat in n for n in notes)
+    ):
+        notes.append(ran.estimate_caveat)
     return RunResult(
         model=spec.name,
         results=scalars,
@@ -402,6 +431,7 @@ def run(
         notes=notes,
         warnings=warnings + result.warnings,
         series=curves,
+        error_kind=error_kind,
     )
 
 
@@ -608,6 +638,10 @@ def sweep(
     rung, mixed = _rung_summary(rung_list)
     if asked == "auto" and not mixed and rung:
         notes.insert(0, f"auto: chose {rung!r} at every point (tolerance {tol:.2g})")
+    for name in dict.fromkeys(r for r in rung_list if r is not None):
+        ran = _declared(spec, name)
+        if ran is not None and ran.estimate_caveat and ran.estimate_caveat not in notes:
+            notes.append(ran.estimate_caveat)  # the points it ran at: ``rungs``
     units = {o.name: o.unit for o in spec.outputs}
     return SweepResult(
         model=spec.name,

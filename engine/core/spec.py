@@ -242,6 +242,19 @@ class Rung:
 
     ``estimate`` gives the a-priori relative error for given inputs, or None
     where the rung does not apply to them (``fidelity: "auto"`` skips it).
+    ``estimate_kind`` says what that number promises: ``"bound"``, the result lies
+    within it for every design in the declared ranges (measured against a reference
+    at least 100× tighter over random designs: docs/accuracy.md); ``"typical"``, it
+    usually does, and ``typical_exceeded`` says how often it does not.
+
+    >>> r = Rung("closed_form", "algebra", lambda x: 0.01, estimate_kind="typical",
+    ...          typical_exceeded="18 % of 158 random designs (worst 62×)")
+    >>> for part in r.estimate_caveat.split(": "):
+    ...     print(part)
+    the error estimate of 'closed_form' is typical, not a bound
+    exceeded in 18 % of 158 random designs (worst 62×)
+    >>> Rung("exact", "closed form", lambda x: 0.0).estimate_caveat
+    ''
     """
 
     name: str
@@ -257,6 +270,36 @@ class Rung:
     #: allowed), provided that rung's estimated error for these inputs is no larger
     #: than this one's. The result names the rung that ran and says why.
     fallback: str | None = None
+    #: ``"bound"``: ``estimate`` bounds the error; ``"typical"``: it is exceeded for some
+    #: designs, as ``typical_exceeded`` states.
+    estimate_kind: Literal["bound", "typical"] = "bound"
+    #: For a typical estimate, how often random designs in the declared ranges exceed it,
+    #: measured (bench/accuracy_*.py), written to follow "exceeded in": e.g.
+    #: "18 % of 158 random designs (worst 62×)".
+    typical_exceeded: str = ""
+
+    def __post_init__(self) -> None:
+        if self.estimate_kind not in ("bound", "typical"):
+            raise ValueError(
+                f"rung {self.name!r}: estimate_kind = {self.estimate_kind!r} is not allowed: "
+                "must be 'bound' or 'typical'"
+            )
+        if self.typical_exceeded and self.estimate_kind != "typical":
+            raise ValueError(
+                f"rung {self.name!r}: typical_exceeded is stated for an estimate declared a bound"
+            )
+
+    @property
+    def estimate_caveat(self) -> str:
+        """The sentence a result carries when this rung's estimate is typical ("" for a bound)."""
+        if self.estimate_kind == "bound":
+            return ""
+        how_often = (
+            f"exceeded in {self.typical_exceeded}"
+            if self.typical_exceeded
+            else "how often it is exceeded is not measured"
+        )
+        return f"the error estimate of {self.name!r} is typical, not a bound: {how_often}"
 
     def describe(self) -> dict[str, Any]:
         return {
@@ -265,6 +308,8 @@ class Rung:
             "typical_error": self.typical_error,
             "typical_time": self.typical_time,
             "fallback": self.fallback,
+            "estimate_kind": self.estimate_kind,
+            "typical_exceeded": self.typical_exceeded,
         }
 
 

@@ -49,6 +49,7 @@ def test_response_shape_and_values(toy):
         "units",
         "rung",
         "error_estimate",
+        "error_kind",
         "elapsed_s",
         "checks",
         "notes",
@@ -57,6 +58,7 @@ def test_response_shape_and_values(toy):
         "inputs",
     }
     assert body["model"] == "toy.disc" and body["rung"] == "exact"
+    assert body["error_estimate"] == 1e-15 and body["error_kind"] == "bound"
     assert body["results"]["energy"] == pytest.approx(25.0)
     assert body["units"]["energy"] == "J" and body["series"]["spin"] == [0.0, 50.0, 100.0]
     assert body["inputs"]["diameter"] == pytest.approx(0.2)
