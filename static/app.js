@@ -173,6 +173,15 @@ function fmtError(err) {
   return "±" + short(pct, 2) + " %";
 }
 
+/** What a rung's error estimate promises: "bound", or "typical (exceeded in …)" with the
+ * share of random designs that exceed it, as the catalogue states it (docs/accuracy.md). */
+function estimateKindText(rung, kind = rung && rung.estimate_kind) {
+  if (!kind) return "";
+  if (kind !== "typical") return "bound";
+  const share = rung && rung.typical_exceeded;
+  return share ? `typical (exceeded in ${share})` : "typical (how often it is exceeded is not measured)";
+}
+
 function fmtTime(s) {
   if (s < 1e-3) return fmt(s * 1e6, 3) + " µs";
   if (s < 1) return fmt(s * 1e3, 3) + " ms";
@@ -388,9 +397,9 @@ function showModel(m, params = new URLSearchParams()) {
 
 function rungTable(m) {
   return el("details", { class: "rungs" }, el("summary", {}, `Methods (${m.rungs.length} rung${m.rungs.length > 1 ? "s" : ""}, cheapest first)`),
-    el("table", {}, el("tr", {}, el("th", {}, "rung"), el("th", {}, "method"), el("th", {}, "typical error"), el("th", {}, "typical time")),
+    el("table", {}, el("tr", {}, el("th", {}, "rung"), el("th", {}, "method"), el("th", {}, "typical error"), el("th", {}, "error estimate"), el("th", {}, "typical time")),
       ...m.rungs.map((r) => el("tr", {}, el("td", {}, el("code", {}, r.name)), el("td", {}, r.description),
-        el("td", {}, r.typical_error || "—"), el("td", {}, r.typical_time || "—")))));
+        el("td", {}, r.typical_error || "—"), el("td", { class: "estimate-kind" }, estimateKindText(r)), el("td", {}, r.typical_time || "—")))));
 }
 
 function fieldRow(p) {
@@ -954,6 +963,7 @@ function resultParts(m, data, { interactive = false } = {}) {
   const meta = el("p", { class: "meta", id: interactive ? "meta" : null },
     "Method ", el("code", { id: interactive ? "rung" : null }, data.rung), rung ? ` (${rung.description})` : "",
     " · error estimate ", el("span", { id: interactive ? "error-estimate" : null }, fmtError(data.error_estimate)),
+    data.error_kind ? [" ", el("span", { id: interactive ? "error-kind" : null, class: "error-kind " + data.error_kind }, estimateKindText(rung, data.error_kind))] : null,
     " · computed in ", el("span", { id: interactive ? "elapsed" : null }, fmtTime(data.elapsed_s)),
     ` · shown to ${sig} significant figures`);
   const checks = data.checks.length
@@ -1014,6 +1024,7 @@ function downloadCSV(m, data) {
   }
   lines.push(["meta", "rung", data.rung, "", "", ""].join(","));
   lines.push(["meta", "error_estimate", data.error_estimate ?? "", "1", "", ""].join(","));
+  lines.push(["meta", "error_kind", data.error_kind ?? "", "", "", ""].join(","));
   lines.push(["meta", "elapsed_s", data.elapsed_s, "s", "", ""].join(","));
   const names = Object.keys(data.series);
   if (names.length) {
