@@ -68,10 +68,13 @@ mutate: $(VENV)/.installed-mutate
 	$(BIN)/python scripts/mutate.py $(MODULES) --sample $(SAMPLE) --seed $(SEED) --minutes $(MINUTES)
 
 # Speed against accuracy for every registered model: bench/results.json, bench/pareto.png, a table;
-# then the load test on loopback (bench/loadtest.json): every issue-21 target beside its figure.
+# then the load test on loopback (bench/loadtest.json): every issue-21 target beside its figure;
+# then each error estimate against a reference over random designs (bench/accuracy_*.py):
+# a table and docs/accuracy.md, failing when a claim labelled a bound was exceeded.
 bench: $(VENV)/.installed-bench
 	$(BIN)/python -m bench.run
 	$(BIN)/python scripts/loadtest.py --seconds 4
+	$(BIN)/python -m bench.accuracy
 
 clean:
 	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache .hypothesis
