@@ -23,7 +23,14 @@ from ..physics import fasteners as fa
 from ..physics import joint as jt
 from ..physics import preload as pl
 from ..physics import threads as th
-from ..physics.preload_methods import METHOD_KEYS, METHODS, ControlMethod, get_method
+from ..physics.preload_methods import (
+    METHOD_KEYS,
+    METHODS,
+    SNUG_FRACTION,
+    ControlMethod,
+    get_method,
+    torque_then_angle,
+)
 from ..procedures import bolt as fz
 
 SOURCE = (
@@ -1265,6 +1272,18 @@ CONTROL_INPUTS: tuple[Param, ...] = (
         group="control",
     ),
     Param(
+        "snug_fraction",
+        "1",
+        "torque_then_angle: share of the final torque (and preload) at the snug point, where "
+        "the angle count starts; 0.1 as ISO 5393 starts its angles, when absent (better: from "
+        "the joint's torque–angle diagram, [004])",
+        default=SNUG_FRACTION,
+        minimum=0.01,
+        maximum=0.9,
+        symbol="s_snug",
+        group="control",
+    ),
+    Param(
         "clamped_length",
         "m",
         "Clamped (grip) length l_k: needed for angle, elongation and displacement targets",
@@ -1586,6 +1605,19 @@ def _stretch_values(
     return out
 
 
+def _snug_values(
+    x: Mapping[str, Any], bolt: Bolt | BoltArrays, values: Mapping[str, Any], stretch: Any
+) -> dict[str, Any]:
+    """Torque-then-angle's snug torque and the angle beyond it, at the nominal preload."""
+    k = values["target_torque"] / values["nominal_preload"]  # M_A/F of the torque formula
+    t = torque_then_angle(values["nominal_preload"], k, stretch, bolt.pitch, x["snug_fraction"])
+    return {
+        "snug_preload": t.snug_preload,
+        "snug_torque": t.snug_torque,
+        "angle_after_snug": t.angle,
+    }
+
+
 def _plain(values: Mapping[str, Any]) -> dict[str, Any]:
     """A single design's values as Python numbers (0-d arrays from the shared lines)."""
     return {k: v if type(v) in _PLAIN else v.item() for k, v in values.items()}
@@ -1666,6 +1698,8 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
             )
         values.update(_plain(_stretch_values(x, bolt, lengths, diameters, parts, nominal)))
         stretch = values["bolt_compliance"] + parts
+        if method.key == "torque_then_angle":
+            values.update(_plain(_snug_values(x, bolt, values, stretch)))
         angle = values["target_angle"]
         if parts == 0.0 and method.controls in ("angle", "displacement", "elongation"):
             notes.append(
@@ -1754,8 +1788,11 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
     notes.append(f"scatter of {method.key}: {method.scatter_source}")
     if method.key == "torque_then_angle":
         notes.append(
-            "the snug torque and the angle come from the joint's experimental torque–angle "
-            "diagram ([004]); the angle here counts from the snug point"
+            "[004] takes the snug torque and the angle from the joint's experimental "
+            "torque–angle diagram; without one, snug is taken at "
+            f"{float(x['snug_fraction']):.0%} of the final torque (ISO 5393 starts its angles "
+            "at 10 %) and angle_after_snug turns the preload still to come; target_angle "
+            "counts from zero preload"
         )
 
     series: dict[str, list[float]] = {}
@@ -1994,6 +2031,8 @@ def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
         parts = _clamped_compliance(bolt, x, method, ok)
         values.update(_stretch_values(x, bolt, lengths, diameters, parts, nominal))
         stretch = values["bolt_compliance"] + parts
+        if method.key == "torque_then_angle":
+            values.update(_snug_values(x, bolt, values, stretch))
         angle = values["target_angle"]
         if method.controls in ("angle", "displacement"):
             verdicts["angle_resolution"] = angle * method.scatter >= ANGLE_READING_ERROR
@@ -2086,6 +2125,25 @@ CONTROL_OUTPUTS: tuple[Output, ...] = (
         "target_angle",
         "rad",
         "Nut rotation from snug for the nominal preload ([004, eq. 8/9])",
+        display_unit="deg",
+    ),
+    Output(
+        "snug_torque",
+        "N*m",
+        "torque_then_angle: torque to snug, M_snug = s_snug × target_torque (the first step, "
+        "[004] after eq. 19)",
+    ),
+    Output(
+        "snug_preload",
+        "N",
+        "torque_then_angle: preload at the snug point, s_snug × F_nom",
+        display_unit="kN",
+    ),
+    Output(
+        "angle_after_snug",
+        "rad",
+        "torque_then_angle: the angle to turn beyond snug, θ = (F_nom − F_snug)(λ_b + λ_p)/P "
+        "· 360° ([004, eq. 8])",
         display_unit="deg",
     ),
     Output(
