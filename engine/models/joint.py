@@ -1058,11 +1058,15 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     notes.append(MODEL_FORM_NOTE)
     outside = _r9_outside(x, bolt)
     if outside is not None:
+        relation = (
+            "σ_ASG = (2 − F_Sm/F_0.2,min) · 0.85 (150/d + 45) MPa"
+            if x["rolling"] == "after_heat_treatment"
+            else "σ_ASV = 0.85 (150/d + 45) MPa"
+        )
         said = (
-            f"R9's endurance limit σ_AS = 0.85 (150/d + 45) MPa = "
-            f"{values['endurance_limit'] / 1e6:.3g} MPa is VDI 2230's fit for metric ISO 898-1 "
-            f"bolts of class 8.8–12.9, d ≤ 40 mm; here {outside}: it is applied outside its "
-            "range"
+            f"R9's endurance limit {relation} = {values['endurance_limit'] / 1e6:.4g} MPa "
+            "(the value used) is VDI 2230's fit for metric ISO 898-1 bolts of class 8.8–12.9, "
+            f"d ≤ 40 mm; here {outside}: it is applied outside its range"
         )
         if values["fatigue_safety"] is None:
             notes.append(said)
