@@ -1550,6 +1550,7 @@ def _control_values(
         bolt.pitch, bolt.pitch_diameter, d0, x["thread_friction"], str(x["preload_convention"])
     )
     bolt_preload = pl.assembly_preload(bolt.yield_strength, area0, beta, x["utilization"])
+    (k_thread, k_bearing, _), deviation = _torque_terms(x, bolt, design)
     nut = _nut_rating(x, bolt, bolt_preload)
     permissible = (
         bolt_preload if nut is None else fa.nut_limited_preload(bolt_preload, nut.proof_load)
@@ -1558,7 +1559,6 @@ def _control_values(
     lo_factor, _ = pl.preload_factor_range(str(x["load_type"]))
     factor = lo_factor if x.get("preload_factor") is None else x["preload_factor"]
     nominal, f_min, f_max = _method_band(method, permissible, at_yield, x.get("preload"))
-    (k_thread, k_bearing, _), deviation = _torque_terms(x, bolt, design)
     nut_values, nut_verdicts = _nut_values(nut, f_max)
     values = {
         **nut_values,
