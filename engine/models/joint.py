@@ -541,7 +541,8 @@ def _nut_choice(
 
 #: What the error estimate of 0 leaves out (said with every answer, on both paths).
 MODEL_FORM_NOTE = (
-    "error estimate 0: the arithmetic of VDI 2230's model is exact here, the model is not; "
+    "error estimate 0 (typical, not a bound): the arithmetic of VDI 2230's model is exact here, "
+    "the model is not; "
     "its empirical parts (the cone-angle fit behind δ_P, the embedding amounts f_Z of Table "
     "5.4/1, the load-introduction factor n, the friction range) carry an uncertainty that no "
     "number here includes: read Φ_n, F_Z and the safeties as nominal"
