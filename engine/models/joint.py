@@ -35,6 +35,7 @@ from .preload import (
     Bolt,
     nut_class_pairing_text,
     nut_limit_warning,
+    nut_paired_note,
     nut_strength_text,
     nut_stripping_text,
     resolve_bolt,
@@ -1006,6 +1007,8 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "takes the bolt's E_S; give nut_youngs_modulus"
         )
     nut, f_nut, f_mzul_bolt, nut_limits = s["_nut"]
+    if nut is not None and nut.pairs:
+        notes.append(nut_paired_note(nut))
     if nut is not None and bool(nut_limits):
         warnings.append(
             nut_limit_warning(nut, f_nut, f_mzul_bolt)

@@ -445,6 +445,15 @@ def nut_class_pairing_text(nut: fa.NutChoice, bolt_tensile_strength: float, ok: 
     )
 
 
+def nut_paired_note(nut: fa.NutChoice) -> str:
+    """Why a nut that pairs with the bolt gets no R11 of its own thread."""
+    return (
+        f"the {nut.standard} nut, class {nut.property_class}, pairs with the bolt: ISO 898-2 "
+        "makes such a nut so that the bolt breaks before its thread strips, so R11 is not "
+        "worked for the nut's thread"
+    )
+
+
 def nut_stripping_text(nut: fa.NutChoice, strip_force: float, against: str, ok: bool) -> str:
     """The ``nut_thread_stripping`` check's sentence (VDI 2230-1 R11 for the nut's thread)."""
     return (
@@ -545,6 +554,8 @@ def _nut_checks(
             f"nut strength not checked: ISO 898-2 gives no proof load for class "
             f"{nut.choice.property_class} at d = {bolt.diameter * 1e3:g} mm"
         )
+    if nut.choice.pairs:
+        notes.append(nut_paired_note(nut.choice))
     against = f"the bolt's F_M,zul = {_kn(bolt_preload)} and {force_name} = {_kn(largest)}"
     texts = {
         "nut_strength": lambda ok: nut_strength_text(nut.choice, proof, against, ok),

@@ -51,6 +51,7 @@ def test_a_paired_nut_has_no_stripping_force():
     r = run(JOINT, {**paired, "thread": "M12 ISO 4017 8.8", "nut": "ISO 4032"})
     assert "nut_stripping_force" not in r.results
     assert "nut_thread_stripping" not in {c.name for c in r.checks}
+    assert any("bolt breaks before its thread strips" in n for n in r.notes)
 
 
 def test_a_sweep_gives_the_stripping_force_at_every_point():

@@ -89,6 +89,7 @@ def test_a_paired_full_nut_changes_nothing_and_passes():
     checks = {c.name: c.ok for c in r.checks}
     assert checks["nut_strength"] and checks["nut_class_pairing"]
     assert "nut_thread_stripping" not in checks
+    assert any("bolt breaks before its thread strips" in n for n in r.notes)
     assert not r.warnings
 
 
