@@ -479,8 +479,8 @@ class _NutRating:
 
 def _scalar_or_none(value: Any) -> float | None:
     """A bolt number the same at every point as a float (None: unknown, or it varies)."""
-    if value is None:
-        return None
+    if value is None or isinstance(value, float):
+        return value
     arr = np.asarray(value, dtype=float)
     if arr.ndim and not np.all(arr == arr.flat[0]):
         return None

@@ -990,12 +990,18 @@ def nut_proof_stress(property_class: str, diameter: Any, style: str = "style 1")
     1190.0
     """
     key = "12/2" if property_class == "12" and style == "style 2" else property_class
+    if not isinstance(diameter, np.ndarray):  # one design: plain float arithmetic
+        one = float(diameter)
+        if one >= 0.003 * (1 - 1e-9):
+            for top, value in zip(NUT_PROOF_RANGES_M, NUT_PROOF_STRESS_MPA[key], strict=True):
+                if one <= top * (1 + 1e-9):
+                    return math.nan if value is None else value * 1e6
+        return math.nan
     row = np.array([np.nan if v is None else v * 1e6 for v in NUT_PROOF_STRESS_MPA[key]])
     d = np.asarray(diameter, dtype=float)
     where = np.searchsorted(np.array(NUT_PROOF_RANGES_M) * (1 + 1e-9), d)
     inside = (d >= 0.003 * (1 - 1e-9)) & (where < row.size)
-    out = np.where(inside, row[np.minimum(where, row.size - 1)], np.nan)
-    return out if isinstance(diameter, np.ndarray) else float(out)
+    return np.where(inside, row[np.minimum(where, row.size - 1)], np.nan)
 
 
 def nut_proof_load(
