@@ -30,6 +30,7 @@ from ..physics.motor_spinup import (
 )
 from ..physics.nutrunner import (
     STEEL_SHEAR_MODULUS,
+    WHEEL_NUT_TORQUE,
     acceleration_time,
     disc_inertia,
     equivalent_inertia,
@@ -42,6 +43,7 @@ from ..physics.nutrunner import (
     shaft_shear_stress,
     spindle_gear_spacing,
     spindle_speed,
+    spindle_torque_reserve,
     torsional_stiffness,
     twist_angle,
 )
@@ -202,6 +204,19 @@ _INPUTS: tuple[Param, ...] = (
         group="shafts",
     ),
     Param(
+        "wheel_nut_torque",
+        "N*m",
+        "Torque the wheel nut needs: its tightening torque, or the larger torque that breaks "
+        "it loose; set for each make of vehicle [000]; 600 N*m (a truck's M20×1.5 wheel nut) "
+        "when absent",
+        default=WHEEL_NUT_TORQUE,
+        minimum=1.0,
+        maximum=1e5,
+        display_unit="N*m",
+        symbol="M_nut",
+        group="shafts",
+    ),
+    Param(
         "shear_yield_strength",
         "Pa",
         "Optional shear yield strength of shaft and spindle steel; when given, a check "
@@ -342,6 +357,12 @@ _OUTPUTS: tuple[Output, ...] = (
         "gear_ratio and motor_curve rungs",
     ),
     Output("max_spindle_torque", "N*m", "M_max = M − (z−1)·M_tr [000, eq. 10]"),
+    Output(
+        "spindle_torque_reserve",
+        "1",
+        "M_max / M_nut: how many times the torque reaching the nut covers what the wheel nut "
+        "needs ([000]: the spindle torque must tighten and free it)",
+    ),
     Output(
         "shaft_twist", "rad", "Twist of shaft 7 during the blow [000, eq. 6]", display_unit="deg"
     ),
@@ -529,15 +550,15 @@ def _closed_values(x: Mapping[str, Any], d: _Drive, geared: bool) -> dict[str, A
     m = d.m_geared if geared else d.m_paper
     m7 = d.u * m if geared else m
     t1, t2, t3, t4, t5 = d.energies
+    m_max = max_spindle_torque(m, x["spindle_count"], x["idle_spindle_friction_torque"])
     return {
         "kinetic_energy": d.energy,
         "acceleration_time": acceleration_time(d.energy, x["motor_power"]),
         "shaft_stiffness": d.c7,
         "spindle_stiffness": d.c8,
         "impact_torque": m,
-        "max_spindle_torque": max_spindle_torque(
-            m, x["spindle_count"], x["idle_spindle_friction_torque"]
-        ),
+        "max_spindle_torque": m_max,
+        "spindle_torque_reserve": spindle_torque_reserve(m_max, x["wheel_nut_torque"]),
         "shaft_twist": twist_angle(m7, d.c7),
         "spindle_twist": twist_angle(m, d.c8),
         "shaft_torque": m7,
@@ -676,7 +697,15 @@ def _verdicts(x: Mapping[str, Any], values: Mapping[str, Any]) -> dict[str, Any]
     The one place the checks compare numbers: a single run turns these verdicts into
     sentences (:func:`_checks`), a sweep or a study reports them per point.
     """
-    out: dict[str, Any] = {"max_spindle_torque_positive": values["max_spindle_torque"] > 0.0}
+    positive = values["max_spindle_torque"] > 0.0
+    enough = values["spindle_torque_reserve"] >= 1.0
+    out: dict[str, Any] = {"max_spindle_torque_positive": positive}
+    # where no torque reaches the nut, max_spindle_torque_positive says so alone
+    if isinstance(positive, bool | np.bool_):
+        if positive:
+            out["wheel_nut_torque"] = enough
+    elif positive.any():
+        out["wheel_nut_torque"] = np.where(positive, enough, -1).astype(np.int8)
     z, d5 = x["spindle_count"], x["spindle_gear_diameter"]
     applies = z >= 2  # a single spindle has no neighbouring gear to hit
     every = isinstance(applies, bool) or np.ndim(applies) == 0  # one count at every point
@@ -715,6 +744,25 @@ def _checks(x: Mapping[str, Any], values: Mapping[str, Any]) -> tuple[list[Check
         )
         checks.append(Check("max_spindle_torque_positive", False, detail))
         warnings.append("no torque reaches the nut: " + detail)
+    need = float(x["wheel_nut_torque"])
+    enough = bool(verdicts.get("wheel_nut_torque", False))
+    if "wheel_nut_torque" in verdicts:
+        checks.append(
+            Check(
+                "wheel_nut_torque",
+                enough,
+                f"{m_max:.4g} N*m reach the nut against the {need:.4g} N*m the wheel nut needs "
+                f"(×{m_max / need:.3g}; [000]: the spindle torque must tighten and free it)"
+                + (
+                    ""
+                    if enough
+                    else ": raise the blow energy (a heavier or faster flywheel), stiffen shaft "
+                    "and spindle, or lower the idle spindles' friction torque"
+                ),
+            )
+        )
+    if "wheel_nut_torque" in verdicts and not enough:
+        warnings.append(f"the blow gives {m_max:.4g} N*m, less than the wheel nut's {need:.4g} N*m")
     fit = int(verdicts.get("spindle_gears_fit", -1))
     if fit >= 0:
         d4, d5 = float(x["drive_gear_diameter"]), float(x["spindle_gear_diameter"])

@@ -23,7 +23,14 @@ from ..physics import fasteners as fa
 from ..physics import joint as jt
 from ..physics import preload as pl
 from ..physics import threads as th
-from ..physics.preload_methods import METHOD_KEYS, METHODS, ControlMethod, get_method
+from ..physics.preload_methods import (
+    METHOD_KEYS,
+    METHODS,
+    SNUG_FRACTION,
+    ControlMethod,
+    get_method,
+    torque_then_angle,
+)
 from ..procedures import bolt as fz
 
 SOURCE = (
@@ -176,6 +183,19 @@ BOLT_INPUTS: tuple[Param, ...] = (
     ),
     *fz.CHECK_INPUTS,
 )
+
+#: The nut's ISO 898-2 class, in every model that takes ``nut`` (one definition).
+NUT_CLASS_INPUT = Param(
+    "nut_property_class",
+    "1",
+    "Property class of the nut (ISO 898-2; 04/05: thin nuts): its proof load caps F_M,zul; "
+    "absent: the lowest class the nut standard is made in that pairs with the bolt",
+    kind="choice",
+    choices=fa.NUT_PROPERTY_CLASSES,
+    group="fastener",
+)
+
+BOLT_INPUTS = (*BOLT_INPUTS, NUT_CLASS_INPUT)
 
 # --------------------------------------------------------------------------- the bolt
 
@@ -345,6 +365,216 @@ def _bolt_numbers(
         "bearing_friction_factor": cat.get("bearing_friction_factor", 1.0),
     }
     return numbers, ok
+
+
+# --------------------------------------------------------------------------- the nut
+
+#: What the models that take ``nut`` say of it.
+NUT_OUTPUTS: tuple[Output, ...] = (
+    Output(
+        "nut_proof_load",
+        "N",
+        "ISO 898-2 proof load of the nut, S_p A_s: caps F_M,zul (with a nut)",
+        display_unit="kN",
+    ),
+    Output(
+        "nut_stripping_force",
+        "N",
+        "R11 for a nut that does not pair with the bolt (thin, weaker class): F_SM = "
+        "C1 C3 τ_BM A_SGM over m − 2P, τ_BM = 0.6 S_p",
+        display_unit="kN",
+    ),
+)
+#
+# ISO 898-2 rates a nut by its class: its proof load S_p A_s caps the preload a through bolt
+# may be given, its class pairs (or not) with the bolt's, and where it does not pair, R11
+# says at what force its thread strips (engine.physics.fasteners). The sentences below are
+# the joint model's too.
+
+
+def _kn(force: float) -> str:
+    return f"{force / 1e3:.4g} kN"
+
+
+def nut_limit_warning(
+    nut: fa.NutChoice, proof_load: float | None, bolt_preload: float | None
+) -> str:
+    """The warning when a nut's proof load, not the bolt, sets F_M,zul (without the forces:
+    a sweep's or a study's, at some of its points)."""
+    head = f"the {nut.standard} nut (class {nut.property_class}) limits the preload"
+    if proof_load is None or bolt_preload is None:  # many points
+        return head + " at some points: F_M,zul is its ISO 898-2 proof load there"
+    return (
+        f"{head}: F_M,zul = {_kn(proof_load)}, its ISO 898-2 proof load, instead of the "
+        f"bolt's {_kn(bolt_preload)}"
+    )
+
+
+def nut_strength_text(nut: fa.NutChoice, proof_load: float, against: str, ok: bool) -> str:
+    """The ``nut_strength`` check's sentence: the proof load against ``against``."""
+    return (
+        f"proof load of the {nut.standard} nut, class {nut.property_class}"
+        f"{'' if nut.given else ' (assumed)'}: F_p = S_p A_s = {_kn(proof_load)} (ISO 898-2) vs "
+        f"{against}"
+        + (
+            ""
+            if ok
+            else ": the nut strips first; F_M,zul is held at the nut's proof load where the "
+            "nut is the weaker; use a full-height nut (ISO 4032/4033) of the class that pairs "
+            "with the bolt"
+        )
+    )
+
+
+def nut_class_pairing_text(nut: fa.NutChoice, bolt_tensile_strength: float, ok: bool) -> str:
+    """The ``nut_class_pairing`` check's sentence (ISO 898-2 clause 3)."""
+    cls = nut.property_class
+    return (
+        f"nut class {cls}{'' if nut.given else ' (assumed)'} with bolt R_m = "
+        f"{bolt_tensile_strength / 1e6:.4g} MPa: ISO 898-2 mates a class-N nut with bolts up "
+        "to class N.x"
+        + (
+            ""
+            if ok
+            else (
+                ": a thin nut (04/05) has reduced loadability and pairs with no class"
+                if cls.startswith("0")
+                else f": class {cls} is too weak for this bolt"
+            )
+        )
+    )
+
+
+def nut_paired_note(nut: fa.NutChoice) -> str:
+    """Why a nut that pairs with the bolt gets no R11 of its own thread."""
+    return (
+        f"the {nut.standard} nut, class {nut.property_class}, pairs with the bolt: ISO 898-2 "
+        "makes such a nut so that the bolt breaks before its thread strips, so R11 is not "
+        "worked for the nut's thread"
+    )
+
+
+def nut_stripping_text(nut: fa.NutChoice, strip_force: float, against: str, ok: bool) -> str:
+    """The ``nut_thread_stripping`` check's sentence (VDI 2230-1 R11 for the nut's thread)."""
+    return (
+        f"thread of the {nut.standard} nut, class {nut.property_class}, which does not pair "
+        f"with the bolt: it strips at F_SM = {_kn(strip_force)} (VDI 2230-1 R11, τ_BM = "
+        f"{fa.STEEL_SHEAR_RATIO:g} S_p, m − 2P engaged) vs {against}"
+        + ("" if ok else ": use a full-height nut of the class that pairs with the bolt")
+    )
+
+
+@dataclass(frozen=True)
+class _NutRating:
+    """A through bolt's nut as ISO 898-2 rates it, on floats or arrays."""
+
+    choice: fa.NutChoice
+    #: F_p = S_p A_s [N]; NaN where ISO 898-2 gives no S_p.
+    proof_load: Any
+    #: F_M,zul of the bolt alone (before the nut caps it) [N].
+    bolt_preload: Any
+    #: R11's force at which the nut's thread strips (NaN where the nut pairs) [N].
+    strip_force: Any
+
+
+def _scalar_or_none(value: Any) -> float | None:
+    """A bolt number the same at every point as a float (None: unknown, or it varies)."""
+    if value is None or isinstance(value, float):
+        return value
+    arr = np.asarray(value, dtype=float)
+    if arr.ndim and not np.all(arr == arr.flat[0]):
+        return None
+    return float(arr.flat[0])
+
+
+def _nut_rating(
+    x: Mapping[str, Any], bolt: Bolt | BoltArrays, bolt_preload: Any
+) -> _NutRating | None:
+    """The nut's class, proof load and (where it does not pair) R11 stripping force."""
+    if x.get("nut") is None:
+        return None
+    cls = x.get("nut_property_class")
+    tensile = _scalar_or_none(bolt.tensile_strength)
+    choice = fa.nut_choice(str(x["nut"]), None if cls is None else str(cls), tensile)
+    proof = fa.nut_proof_load(choice.property_class, bolt.diameter, bolt.stress_area, choice.style)
+    strip: Any = math.nan
+    thread = None if bolt.fastener is None else bolt.fastener.thread
+    if choice.pairs is False and thread is not None and tensile is not None:
+        part = fa.nut(choice.standard, thread)
+        strip = fa.nut_thread_strip_force(
+            bolt.diameter,
+            bolt.pitch,
+            bolt.pitch_diameter,
+            part.height,
+            part.width_across_flats,
+            fa.nut_proof_stress(choice.property_class, bolt.diameter, choice.style),
+            tensile,
+        )
+    return _NutRating(choice, proof, bolt_preload, strip)
+
+
+def _nut_values(nut: _NutRating | None, largest: Any) -> tuple[dict[str, Any], dict[str, Any]]:
+    """The nut's outputs and its checks' verdicts ``(applies, passes)`` at the largest preload."""
+    if nut is None:
+        return {}, {}
+    values: dict[str, Any] = {"nut_proof_load": nut.proof_load}
+    verdicts: dict[str, Any] = {
+        "nut_strength": (
+            nut.proof_load == nut.proof_load,  # ISO 898-2 covers the size
+            (nut.bolt_preload <= nut.proof_load) & (largest <= nut.proof_load * (1.0 + 1e-12)),
+        )
+    }
+    if nut.choice.pairs is not None:
+        verdicts["nut_class_pairing"] = (True, nut.choice.pairs)
+    strip = nut.strip_force
+    if not (isinstance(strip, float) and math.isnan(strip)):
+        values["nut_stripping_force"] = strip
+        verdicts["nut_thread_stripping"] = (strip == strip, strip >= largest)
+    return values, verdicts
+
+
+def _nut_checks(
+    nut: _NutRating | None,
+    largest: float,
+    force_name: str,
+    bolt: Bolt,
+    checks: list[Check],
+    warnings: list[str],
+    notes: list[str],
+) -> None:
+    """The nut's checks as sentences, and the warning when its proof load caps F_M,zul."""
+    if nut is None:
+        return
+    _, verdicts = _nut_values(nut, largest)
+    proof, bolt_preload = float(nut.proof_load), float(nut.bolt_preload)
+    if proof < bolt_preload:
+        warnings.append(nut_limit_warning(nut.choice, proof, bolt_preload))
+    elif proof != proof:
+        notes.append(
+            f"nut strength not checked: ISO 898-2 gives no proof load for class "
+            f"{nut.choice.property_class} at d = {bolt.diameter * 1e3:g} mm"
+        )
+    if nut.choice.pairs:
+        notes.append(nut_paired_note(nut.choice))
+    against = f"the bolt's F_M,zul = {_kn(bolt_preload)} and {force_name} = {_kn(largest)}"
+    texts = {
+        "nut_strength": lambda ok: nut_strength_text(nut.choice, proof, against, ok),
+        "nut_class_pairing": lambda ok: nut_class_pairing_text(
+            nut.choice, bolt.tensile_strength or 0.0, ok
+        ),
+        "nut_thread_stripping": lambda ok: nut_stripping_text(
+            nut.choice, float(nut.strip_force), f"{force_name} = {_kn(largest)}", ok
+        ),
+    }
+    for name, (applies, ok) in verdicts.items():
+        if applies:
+            checks.append(Check(name, bool(ok), texts[name](bool(ok))))
+
+
+def _nut_verdicts(verdicts: Mapping[str, Any]) -> dict[str, Any]:
+    """The array path's verdicts of the nut's checks (one nut and one size at every point:
+    a check applies everywhere or nowhere)."""
+    return {name: ok for name, (applies, ok) in verdicts.items() if np.all(applies)}
 
 
 def _where(condition: Any, yes: Any, no: Any) -> Any:
@@ -741,7 +971,13 @@ def _tightening_values(
         x["thread_friction"],
         str(x["preload_convention"]),
     )
-    permissible = pl.assembly_preload(bolt.yield_strength, bolt.stress_area, beta, x["utilization"])
+    bolt_preload = pl.assembly_preload(
+        bolt.yield_strength, bolt.stress_area, beta, x["utilization"]
+    )
+    nut = _nut_rating(x, bolt, bolt_preload)
+    permissible = (
+        bolt_preload if nut is None else fa.nut_limited_preload(bolt_preload, nut.proof_load)
+    )
     force = permissible if x.get("preload") is None else x["preload"]
     sigma_eq = pl.equivalent_stress(force, bolt.stress_area, beta)
     (k_thread, k_bearing, radius), deviation = _torque_terms(x, bolt, design)
@@ -752,7 +988,10 @@ def _tightening_values(
     thumb_yield = pl.rule_of_thumb_torque_from_yield(bolt.yield_strength, bolt.diameter)
     positive = total > 0
     safe = _where(positive, total, 1.0)
+    nut_values, nut_verdicts = _nut_values(nut, force)
     return {
+        **nut_values,
+        "_nut": (nut, nut_verdicts),
         "assembly_preload": force,
         "permissible_preload": permissible,
         "tightening_torque": total,
@@ -783,7 +1022,10 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
     design = _handed_off(x)
     bolt, notes = (design.bolt, list(design.notes)) if design else resolve_bolt(x)
     checks: list[Check] = []
-    values = {k: float(v) for k, v in _tightening_values(x, bolt, design).items()}
+    warnings: list[str] = []
+    shared = _tightening_values(x, bolt, design)
+    nut, _ = shared.pop("_nut")
+    values = {k: float(v) for k, v in shared.items()}
     force, total = values["assembly_preload"], values["tightening_torque"]
     sigma_eq, share = values["equivalent_stress"], values["ideal_torque_share"]
     if x.get("preload") is not None:
@@ -816,12 +1058,14 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "friction coefficient it is [004, eq. 19]"
         )
     _add_bought_part_checks(x, bolt, force, total, values, checks, notes)
+    _nut_checks(nut, force, "F_M", bolt, checks, warnings, notes)
     return Result(
         values=dict(values),
         rung=ctx.rung,
         error_estimate=values["torque_formula_deviation"],
         checks=checks,
         notes=notes,
+        warnings=warnings,
     )
 
 
@@ -847,7 +1091,11 @@ def _tightening_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
     n = _points(x) or 1
     bolt, notes = resolve_bolt_arrays(x, n, labels=ctx.wants("fastener"))
     values = _tightening_values(x, bolt)
-    verdicts: dict[str, Any] = {}
+    nut, nut_verdicts = values.pop("_nut")
+    verdicts: dict[str, Any] = _nut_verdicts(nut_verdicts)
+    warnings = []
+    if nut is not None and np.any(bolt.ok & (nut.proof_load < nut.bolt_preload)):
+        warnings.append(nut_limit_warning(nut.choice, None, None))
     if x.get("preload") is not None:
         verdicts["below_yield"] = values["equivalent_stress"] <= bolt.yield_strength
     force, total = values["assembly_preload"], values["tightening_torque"]
@@ -857,6 +1105,7 @@ def _tightening_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
         rung=ctx.rung,
         error_estimate=None,
         notes=notes,
+        warnings=warnings,
         check_arrays=_verdicts(verdicts, bolt.ok, n),
     )
 
@@ -922,6 +1171,7 @@ TIGHTENING_OUTPUTS: tuple[Output, ...] = (
     ),
     Output("yield_rule_deviation", "1", "(0.07 σ_T d³ − M_A) / M_A"),
     *fz.CHECK_OUTPUTS,
+    *NUT_OUTPUTS,
 )
 
 #: True of every preload.tightening answer (the runner adds it to the notes).
@@ -1030,6 +1280,18 @@ CONTROL_INPUTS: tuple[Param, ...] = (
         default="torque_wrench",
         kind="choice",
         choices=METHOD_KEYS,
+        group="control",
+    ),
+    Param(
+        "snug_fraction",
+        "1",
+        "torque_then_angle: share of the final torque (and preload) at the snug point, where "
+        "the angle count starts; 0.1 as ISO 5393 starts its angles, when absent (better: from "
+        "the joint's torque–angle diagram, [004])",
+        default=SNUG_FRACTION,
+        minimum=0.01,
+        maximum=0.9,
+        symbol="s_snug",
         group="control",
     ),
     Param(
@@ -1298,13 +1560,20 @@ def _control_values(
     beta = pl.torsion_factor(
         bolt.pitch, bolt.pitch_diameter, d0, x["thread_friction"], str(x["preload_convention"])
     )
-    permissible = pl.assembly_preload(bolt.yield_strength, area0, beta, x["utilization"])
+    bolt_preload = pl.assembly_preload(bolt.yield_strength, area0, beta, x["utilization"])
+    (k_thread, k_bearing, _), deviation = _torque_terms(x, bolt, design)
+    nut = _nut_rating(x, bolt, bolt_preload)
+    permissible = (
+        bolt_preload if nut is None else fa.nut_limited_preload(bolt_preload, nut.proof_load)
+    )
     at_yield = pl.assembly_preload(bolt.yield_strength, area0, beta, 1.0)
     lo_factor, _ = pl.preload_factor_range(str(x["load_type"]))
     factor = lo_factor if x.get("preload_factor") is None else x["preload_factor"]
     nominal, f_min, f_max = _method_band(method, permissible, at_yield, x.get("preload"))
-    (k_thread, k_bearing, _), deviation = _torque_terms(x, bolt, design)
+    nut_values, nut_verdicts = _nut_values(nut, f_max)
     values = {
+        **nut_values,
+        "_nut": (nut, nut_verdicts),
         "controlled_quantity": method.controls,
         "target_torque": nominal * (k_thread + k_bearing),
         "target_force": nominal,
@@ -1345,6 +1614,19 @@ def _stretch_values(
     if x.get("coupling_outer_diameter") is not None:
         out["target_displacement"] = angle * 0.5 * x["coupling_outer_diameter"]
     return out
+
+
+def _snug_values(
+    x: Mapping[str, Any], bolt: Bolt | BoltArrays, values: Mapping[str, Any], stretch: Any
+) -> dict[str, Any]:
+    """Torque-then-angle's snug torque and the angle beyond it, at the nominal preload."""
+    k = values["target_torque"] / values["nominal_preload"]  # M_A/F of the torque formula
+    t = torque_then_angle(values["nominal_preload"], k, stretch, bolt.pitch, x["snug_fraction"])
+    return {
+        "snug_preload": t.snug_preload,
+        "snug_torque": t.snug_torque,
+        "angle_after_snug": t.angle,
+    }
 
 
 def _plain(values: Mapping[str, Any]) -> dict[str, Any]:
@@ -1392,6 +1674,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"A_0 = {area0 * 1e6:.4g} mm² and W_p = π d_0³/16 (VDI 2230-1 R7; [004, eq. 3–4])"
         )
     shared, deviation = _control_values(x, bolt, method, (d0, area0), design)
+    nut, _ = shared.pop("_nut")
     values = _plain(shared)
     permissible, at_yield = values["permissible_preload"], values["yield_preload"]
     nominal, f_min, f_max = values["nominal_preload"], values["preload_min"], values["preload_max"]
@@ -1426,6 +1709,8 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
             )
         values.update(_plain(_stretch_values(x, bolt, lengths, diameters, parts, nominal)))
         stretch = values["bolt_compliance"] + parts
+        if method.key == "torque_then_angle":
+            values.update(_plain(_snug_values(x, bolt, values, stretch)))
         angle = values["target_angle"]
         if parts == 0.0 and method.controls in ("angle", "displacement", "elongation"):
             notes.append(
@@ -1475,6 +1760,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
 
     _add_bought_part_checks(x, bolt, f_max, torque, values, checks, notes)
+    _nut_checks(nut, f_max, "F_M,max", bolt, checks, warnings, notes)
     meets = f_min >= required
     below = f_max <= at_yield * (1.0 + 1e-12)
     values["min_meets_clamp"] = meets
@@ -1513,8 +1799,11 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
     notes.append(f"scatter of {method.key}: {method.scatter_source}")
     if method.key == "torque_then_angle":
         notes.append(
-            "the snug torque and the angle come from the joint's experimental torque–angle "
-            "diagram ([004]); the angle here counts from the snug point"
+            "[004] takes the snug torque and the angle from the joint's experimental "
+            "torque–angle diagram; without one, snug is taken at "
+            f"{float(x['snug_fraction']):.0%} of the final torque (ISO 5393 starts its angles "
+            "at 10 %) and angle_after_snug turns the preload still to come; target_angle "
+            "counts from zero preload"
         )
 
     series: dict[str, list[float]] = {}
@@ -1737,6 +2026,11 @@ def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
     d0, area0, _, fine = _smallest_section(bolt, x)
     ok &= fine
     values, _ = _control_values(x, bolt, method, (d0, area0))
+    nut, nut_verdicts = values.pop("_nut")
+    verdicts.update(_nut_verdicts(nut_verdicts))
+    warnings = []
+    if nut is not None and np.any(ok & (nut.proof_load < nut.bolt_preload)):
+        warnings.append(nut_limit_warning(nut.choice, None, None))
     permissible, at_yield = values["permissible_preload"], values["yield_preload"]
     nominal, f_min, f_max = values["nominal_preload"], values["preload_min"], values["preload_max"]
     torque, required = values["target_torque"], values["required_preload"]
@@ -1748,6 +2042,8 @@ def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
         parts = _clamped_compliance(bolt, x, method, ok)
         values.update(_stretch_values(x, bolt, lengths, diameters, parts, nominal))
         stretch = values["bolt_compliance"] + parts
+        if method.key == "torque_then_angle":
+            values.update(_snug_values(x, bolt, values, stretch))
         angle = values["target_angle"]
         if method.controls in ("angle", "displacement"):
             verdicts["angle_resolution"] = angle * method.scatter >= ANGLE_READING_ERROR
@@ -1817,6 +2113,7 @@ def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
         rung=ctx.rung,
         error_estimate=None,
         notes=notes,
+        warnings=warnings,
         check_arrays=_verdicts(verdicts, ok, n),
     )
 
@@ -1839,6 +2136,25 @@ CONTROL_OUTPUTS: tuple[Output, ...] = (
         "target_angle",
         "rad",
         "Nut rotation from snug for the nominal preload ([004, eq. 8/9])",
+        display_unit="deg",
+    ),
+    Output(
+        "snug_torque",
+        "N*m",
+        "torque_then_angle: torque to snug, M_snug = s_snug × target_torque (the first step, "
+        "[004] after eq. 19)",
+    ),
+    Output(
+        "snug_preload",
+        "N",
+        "torque_then_angle: preload at the snug point, s_snug × F_nom",
+        display_unit="kN",
+    ),
+    Output(
+        "angle_after_snug",
+        "rad",
+        "torque_then_angle: the angle to turn beyond snug, θ = (F_nom − F_snug)(λ_b + λ_p)/P "
+        "· 360° ([004, eq. 8])",
         display_unit="deg",
     ),
     Output(
@@ -1942,6 +2258,7 @@ CONTROL_OUTPUTS: tuple[Output, ...] = (
         plot=Plot(bars=True),
     ),
     *fz.CHECK_OUTPUTS,
+    *NUT_OUTPUTS,
 )
 
 CONTROL = ModelSpec(

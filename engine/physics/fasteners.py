@@ -990,12 +990,18 @@ def nut_proof_stress(property_class: str, diameter: Any, style: str = "style 1")
     1190.0
     """
     key = "12/2" if property_class == "12" and style == "style 2" else property_class
+    if not isinstance(diameter, np.ndarray):  # one design: plain float arithmetic
+        one = float(diameter)
+        if one >= 0.003 * (1 - 1e-9):
+            for top, value in zip(NUT_PROOF_RANGES_M, NUT_PROOF_STRESS_MPA[key], strict=True):
+                if one <= top * (1 + 1e-9):
+                    return math.nan if value is None else value * 1e6
+        return math.nan
     row = np.array([np.nan if v is None else v * 1e6 for v in NUT_PROOF_STRESS_MPA[key]])
     d = np.asarray(diameter, dtype=float)
     where = np.searchsorted(np.array(NUT_PROOF_RANGES_M) * (1 + 1e-9), d)
     inside = (d >= 0.003 * (1 - 1e-9)) & (where < row.size)
-    out = np.where(inside, row[np.minimum(where, row.size - 1)], np.nan)
-    return out if isinstance(diameter, np.ndarray) else float(out)
+    return np.where(inside, row[np.minimum(where, row.size - 1)], np.nan)
 
 
 def nut_proof_load(
@@ -1071,6 +1077,183 @@ def nut_pairs_with_bolt(property_class: str, bolt_tensile_strength: float) -> bo
     if property_class.startswith("0"):
         return False
     return int(property_class) * 100 >= math.floor(bolt_tensile_strength / 1e8 + 1e-9) * 100
+
+
+@dataclass(frozen=True)
+class NutChoice:
+    """The nut of a through-bolted joint as ISO 898-2 rates it."""
+
+    standard: str
+    style: str
+    property_class: str
+    #: Whether the request named the class (False: :func:`nut_choice` assumed it).
+    given: bool
+    #: Whether the class pairs with the bolt's; None where the bolt's R_m is unknown.
+    pairs: bool | None
+
+
+def nut_choice(
+    standard: str, property_class: str | None, bolt_tensile_strength: float | None
+) -> NutChoice:
+    r"""The class of a nut of ``standard``: as given, else the lowest it is made in that
+    pairs with the bolt, else the strongest it is made in.
+
+    .. math::
+        N = \min\{N \in \text{classes}(\text{standard}) : 100\,N \ge R_{m,nom}\}
+
+    Parameters
+    ----------
+    standard : str
+        Nut standard, "ISO 4032", "ISO 4033" or "ISO 4035", [-]
+    property_class : str or None
+        Class as the request names it; None: chosen here, [-]
+    bolt_tensile_strength : float or None
+        R_m of the bolt; None where unknown (a typed yield strength), [Pa]
+
+    Returns
+    -------
+    NutChoice
+
+    Notes
+    -----
+    ISO 898-2:1992 clause 3 and Table 1 [EN20898-2] (pairing, :func:`nut_pairs_with_bolt`);
+    the classes each standard is made in are :data:`NUT_CLASSES` ([ISO4032], [ISO4033],
+    [ISO4035]). One definition for every model that takes ``nut``.
+
+    Examples
+    --------
+    >>> nut_choice("ISO 4032", None, 1040e6).property_class   # a 10.9 bolt
+    '10'
+    >>> c = nut_choice("ISO 4035", None, 1220e6)               # thin nuts pair with none
+    >>> c.property_class, c.pairs, c.given
+    ('05', False, False)
+    """
+    style, made = NUT_CLASSES[standard]
+    given = property_class is not None
+    if property_class is not None:
+        cls = property_class
+    elif bolt_tensile_strength is not None:
+        paired = [c for c in made if nut_pairs_with_bolt(c, bolt_tensile_strength)]
+        cls = paired[0] if paired else made[-1]
+    else:
+        cls = made[-1]
+    pairs = (
+        None if bolt_tensile_strength is None else nut_pairs_with_bolt(cls, bolt_tensile_strength)
+    )
+    return NutChoice(standard, style, cls, given, pairs)
+
+
+def nut_limited_preload(bolt_preload: Any, nut_proof_load: Any) -> Any:
+    r"""The permissible assembly preload F_M,zul held at the nut's proof load.
+
+    .. math::
+        F_{M,zul} = \min(F_{M,zul,S},\ F_{p,M})
+
+    Parameters
+    ----------
+    bolt_preload : float or numpy array
+        F_M,zul of the bolt (VDI 2230-1 R7), [N]
+    nut_proof_load : float or numpy array
+        F_p,M = S_p A_s of the nut (:func:`nut_proof_load`); NaN where ISO 898-2 gives
+        none: the bolt's preload stands, [N]
+
+    Returns
+    -------
+    float or numpy array
+        F_M,zul, [N]
+
+    Notes
+    -----
+    ISO 898-2:1992 [EN20898-2]: the nut carries its proof load without stripping or
+    breaking; above it the nut, not the bolt, limits the joint (a thin nut, or a class
+    weaker than the bolt's). All arguments may be floats or numpy arrays of one shape.
+
+    Examples
+    --------
+    M12 12.9 (F_M,zul 74.1 kN) with a class 04 thin nut (380 MPa × 84.27 mm²):
+
+    >>> round(nut_limited_preload(74.1e3, 380e6 * 84.27e-6))
+    32023
+    >>> nut_limited_preload(74.1e3, float("nan"))
+    74100.0
+    """
+    if isinstance(bolt_preload, np.ndarray) or isinstance(nut_proof_load, np.ndarray):
+        return np.where(nut_proof_load < bolt_preload, nut_proof_load, bolt_preload)
+    return nut_proof_load if nut_proof_load < bolt_preload else bolt_preload
+
+
+#: Shear strength over tensile strength of steel threads, τ_B/R_m (FED-STD-H28 practice);
+#: the bolt thread's τ_BS and a steel nut thread's τ_BM (VDI 2230-1 R11).
+STEEL_SHEAR_RATIO = 0.6
+
+
+def nut_thread_strip_force(
+    diameter: Any,
+    pitch: Any,
+    pitch_diameter: Any,
+    nut_height: float,
+    width_across_flats: float,
+    nut_proof_stress: Any,
+    bolt_tensile_strength: Any,
+) -> Any:
+    r"""Force at which a steel nut's internal thread shears off at its root (VDI 2230-1 R11).
+
+    .. math::
+        F_{SM} = C_1 C_3\,\tau_{BM} A_{SGM},\qquad
+        A_{SGM} = \pi d\,(m - 2P)\,\frac{P/2 + (d - D_2)\tan 30°}{P},\qquad
+        \tau_{BM} = 0.6\,S_p
+
+    Parameters
+    ----------
+    diameter, pitch, pitch_diameter : float or numpy array
+        d, P, d2 (= D2 basic), [m]
+    nut_height : float
+        m of the nut (ISO 4032/4033/4035), chamfers included, [m]
+    width_across_flats : float
+        s of the nut (its dilation factor C1), [m]
+    nut_proof_stress : float or numpy array
+        S_p of the nut's class (ISO 898-2), taken as the nut material's R_m,M, [Pa]
+    bolt_tensile_strength : float or numpy array
+        R_m of the bolt: τ_BS = 0.6 R_m enters the strength ratio R_S and C3, [Pa]
+
+    Returns
+    -------
+    float or numpy array
+        F_SM, [N]
+
+    Notes
+    -----
+    VDI 2230-1 R11 after Alexander as its open implementation [BAT-R11] states it (shear
+    area at d, dilation factor C1 for 1.4 ≤ s/d ≤ 1.9, thread-bending factor C3(R_S), the
+    length of full threads m − 2P, the 2P for the entry chamfers) with τ_BM = 0.6 R_m,M
+    [FED-STD-H28]. The nut material's R_m,M is taken as its proof stress S_p, the least
+    stress ISO 898-2 [EN20898-2] certifies it for: a lower bound, so F_SM errs low. Of use
+    where the nut does not pair with the bolt (a thin nut, a weaker class); a paired full
+    nut is made so that the bolt breaks first (ISO 898-2 clause 3). All numeric arguments
+    may be numpy arrays.
+
+    Examples
+    --------
+    M12 with an ISO 4035 thin nut (m 6 mm, s 18 mm), class 04 (S_p 380 MPa), 12.9 bolt:
+
+    >>> round(nut_thread_strip_force(0.012, 0.00175, 0.0108633, 0.006, 0.018, 380e6, 1220e6))
+    16682
+    """
+    full: Any = nut_height - ENTRY_CHAMFER_PITCHES * pitch
+    full = np.maximum(full, 0.0) if isinstance(full, np.ndarray) else max(full, 0.0)
+    s = thread_stripping(
+        diameter,
+        pitch,
+        pitch_diameter,
+        diameter - 1.082532 * pitch,
+        1.0,
+        1.0,
+        STEEL_SHEAR_RATIO * bolt_tensile_strength,
+        STEEL_SHEAR_RATIO * nut_proof_stress,
+        full,
+        width_across_flats=width_across_flats,
+    )
+    return s.internal_strip_force
 
 
 @dataclass(frozen=True)

@@ -37,6 +37,7 @@ from typing import Any
 import numpy as np
 
 __all__ = [
+    "WHEEL_NUT_TORQUE",
     "acceleration_time",
     "disc_inertia",
     "equivalent_inertia",
@@ -50,6 +51,7 @@ __all__ = [
     "shaft_shear_stress",
     "spindle_gear_spacing",
     "spindle_speed",
+    "spindle_torque_reserve",
     "torsional_stiffness",
     "twist_angle",
 ]
@@ -619,6 +621,45 @@ def max_spindle_torque(impact_torque: Any, spindle_count: Any, idle_friction_tor
     2450.0
     """
     return impact_torque - (spindle_count - 1) * idle_friction_torque
+
+
+#: The wheel nut's torque when none is given [N*m]: a truck's M20×1.5 wheel nut (the
+#: project's reference case, blow.joint's nut-runner example); [000] gives none, it says the
+#: torques are set for each make of vehicle.
+WHEEL_NUT_TORQUE = 600.0
+
+
+def spindle_torque_reserve(max_spindle_torque: Any, wheel_nut_torque: Any) -> Any:
+    r"""How many times the torque reaching the nut covers the torque the wheel nut needs.
+
+    .. math::
+        k = \frac{M_{max}}{M_{nut}}
+
+    Parameters
+    ----------
+    max_spindle_torque : float or numpy array
+        M_max on the struck spindle [000, eq. 10], [N*m]
+    wheel_nut_torque : float or numpy array
+        M_nut, the torque the wheel nut needs: its tightening torque, or the larger
+        torque that breaks it loose, [N*m]
+
+    Returns
+    -------
+    float or numpy array
+        k, [-]; k ≥ 1: the blow tightens (or frees) the nut
+
+    Notes
+    -----
+    [000], statement of the problem: the spindle torque is the drive's main parameter; it
+    must free the wheel nut from its tightening when unscrewing and give the tightening
+    torque the nut needs when screwing on; both are set for each make of vehicle.
+
+    Examples
+    --------
+    >>> spindle_torque_reserve(2450.0, 600.0)
+    4.083333333333333
+    """
+    return max_spindle_torque / wheel_nut_torque
 
 
 def shaft_shear_stress(torque: Any, diameter: Any) -> Any:

@@ -19,7 +19,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-from .preload import scatter_from_tightening_factor, tightening_factor
+from .preload import nut_rotation_angle, scatter_from_tightening_factor, tightening_factor
 
 #: Quantities a method sets; each maps to one target output of ``preload.control``.
 CONTROLLED = ("torque", "angle", "elongation", "force", "displacement", "yield")
@@ -322,6 +322,78 @@ def get_method(key: str) -> ControlMethod:
         if method.key == key:
             return method
     raise KeyError(key)
+
+
+#: Snug point of torque-then-angle: the share of the final torque (and preload) at which the
+#: angle count starts; ISO 5393 states its joints' angles from 10 % of the target [ISO5393].
+SNUG_FRACTION = 0.10
+
+
+@dataclass(frozen=True)
+class TorqueThenAngle:
+    """The two settings of torque-then-angle tightening and the preload at the snug point."""
+
+    snug_preload: Any  # F_snug [N]
+    snug_torque: Any  # M_snug [N*m]
+    angle: Any  # θ from snug to the final preload [rad]
+
+
+def torque_then_angle(
+    final_preload: Any,
+    torque_per_preload: Any,
+    total_compliance: Any,
+    pitch: Any,
+    snug_fraction: Any = SNUG_FRACTION,
+) -> TorqueThenAngle:
+    r"""Snug torque and final angle of torque-then-angle tightening to a preload.
+
+    .. math::
+        F_{snug} = s\,F_M,\qquad M_{snug} = k\,F_{snug},\qquad
+        \theta = \frac{(F_M - F_{snug})(\delta_S + \delta_P)}{P}\cdot 360°
+
+    Parameters
+    ----------
+    final_preload : float or numpy array
+        F_M, the preload the angle is to reach, [N]
+    torque_per_preload : float or numpy array
+        k = M_A/F of the torque formula (thread + bearing), at the friction assumed, [m]
+    total_compliance : float or numpy array
+        δ_S + δ_P, bolt plus clamped parts, [m/N]
+    pitch : float or numpy array
+        P, [m]
+    snug_fraction : float or numpy array
+        s, the share of the final preload (and torque) at the snug point, [-]
+
+    Returns
+    -------
+    TorqueThenAngle
+        F_snug [N], M_snug [N*m], θ [rad]
+
+    Notes
+    -----
+    [004], paragraph after eq. 19: the first tightening to the "zero" position by a
+    graduated tool, then the angle; the review takes both from the joint's experimental
+    torque–angle diagram. Without it the snug point is taken at 10 % of the final torque,
+    where ISO 5393 starts its joints' angle count [ISO5393]; the angle beyond it is
+    [004, eq. 8] for the preload still to come (:func:`engine.physics.preload.nut_rotation_angle`),
+    since once snug the preload rises linearly with the turn. The snug torque carries the
+    friction scatter; the angle does not. All arguments may be floats or numpy arrays.
+
+    Examples
+    --------
+    M12 to 40 kN, k = 1.94 mm, δ_S + δ_P = 3.33 + 0.75 µm/kN, P = 1.75 mm:
+
+    >>> import math
+    >>> t = torque_then_angle(40e3, 1.94e-3, 4.08e-9, 0.00175)
+    >>> round(t.snug_preload), round(t.snug_torque, 2), round(math.degrees(t.angle), 2)
+    (4000, 7.76, 30.22)
+    """
+    snug = snug_fraction * final_preload
+    return TorqueThenAngle(
+        snug,
+        snug * torque_per_preload,
+        nut_rotation_angle(final_preload - snug, total_compliance, pitch),
+    )
 
 
 def catalogue() -> list[dict[str, Any]]:

@@ -151,7 +151,9 @@ FIRST = run(JOINT, JOINT.examples[0]).results
 
 
 def test_the_hand_calculation_covers_every_numeric_output():
-    numeric = {o.name for o in JOINT.outputs if not o.series}
+    # nut_stripping_force is given only for a nut that does not pair with the bolt: held by
+    # tests/models/joint/test_nut_strength.py's hand calculation
+    numeric = {o.name for o in JOINT.outputs if not o.series} - {"nut_stripping_force"}
     assert set(HAND) == numeric
 
 

@@ -48,6 +48,7 @@ def test_check_verdicts_equal_the_loop_and_split(rung):
             "shaft_elastic",
             "spindle_elastic",
             "spindle_gears_fit",
+            "wheel_nut_torque",
         ]
     )
     for name, verdicts in slow.checks.items():
