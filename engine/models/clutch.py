@@ -26,12 +26,12 @@ from ..physics.clutch import (
     ball_tangential_force,
     combined_push_factor,
     flank_push_factor,
+    riding_flank_angle,
     spring_deflection_for_force,
     spring_force_for_torque,
     spring_index,
     spring_rate,
     spring_shear_stress,
-    torque_against_lift,
     torque_limit,
     torque_sharing,
     wahl_factor,
@@ -179,7 +179,8 @@ def _allowable_param() -> Param:
     return Param(
         "allowable_shear_stress",
         "Pa",
-        "allowable wire shear stress (Wahl-corrected); optional, checked when given",
+        "allowable wire shear stress, compared with the stress corrected by "
+        "stress_correction (Wahl or Bergsträsser, EN 13906-1); optional, checked when given",
         minimum=0.0,
         exclusive_minimum=True,
         maximum=1e10,
@@ -354,7 +355,15 @@ def _angle_check(alpha: float, ok: bool) -> Check:
 def _arrangement_notes(x: Mapping[str, Any], force: float) -> list[str]:
     i, kr = x["ball_count"], x["load_factor"]
     common = torque_limit(
-        force, x["ball_circle_diameter"], x["groove_angle"], i, kr, x["flank_friction"]
+        force,
+        x["ball_circle_diameter"],
+        x["groove_angle"],
+        i,
+        kr,
+        x["flank_friction"],
+        "common",
+        x["driving_groove_angle"],
+        x["flank_construction"],
     )
     per_ball = torque_sharing("per_ball", i, kr) * common
     if x["spring_arrangement"] == "common":
@@ -426,6 +435,8 @@ def _forward_values(
     spring = asbuilt.Spring(x)
     alpha, f, kr = x["groove_angle"], x["flank_friction"], x["load_factor"]
     force = spring.force(x["spring_deflection"])
+    driving, construction = x["driving_groove_angle"], x["flank_construction"]
+    # with α′: the push of the two flanks by the construction, T at zero lift
     limit = torque_limit(
         force,
         x["ball_circle_diameter"],
@@ -434,17 +445,9 @@ def _forward_values(
         kr,
         f,
         x["spring_arrangement"],
+        driving,
+        construction,
     )
-    if x["driving_groove_angle"] is not None:
-        # both flanks lift the ball: the same spring holds less torque, T at zero lift
-        limit = torque_against_lift(
-            force,
-            alpha,
-            x["ball_circle_diameter"],
-            f,
-            x["driving_groove_angle"],
-            torque_sharing(x["spring_arrangement"], x["ball_count"], kr),
-        )
     at = limit if x["torque"] is None else x["torque"]
     tangential = ball_tangential_force(at, x["ball_circle_diameter"], x["ball_count"], kr)
     values: dict[str, Any] = {
@@ -452,15 +455,18 @@ def _forward_values(
         "torque_limit": limit,
         "ball_tangential_force": tangential,
         "ball_axial_force": np.asarray(tangential)
-        * combined_push_factor(alpha, f, x["driving_groove_angle"]),
-        "ball_normal_force": ball_normal_force(tangential, alpha, f),
+        * combined_push_factor(alpha, f, driving, construction),
+        # on the flank the ball slides on (a free ball: the one it rides)
+        "ball_normal_force": ball_normal_force(
+            tangential, riding_flank_angle(alpha, driving, construction), f
+        ),
     }
     if spring.kind == "helical":
         d0, dm = x["spring_wire_diameter"], x["spring_mean_diameter"]
         index = spring_index(dm, d0)
         values["spring_index"] = index
         values["wahl_factor"] = wahl_factor(index)
-        values["spring_shear_stress"] = spring_shear_stress(force, dm, d0)
+        values["spring_shear_stress"] = spring_shear_stress(force, dm, d0, x["stress_correction"])
         values["spring_rate"] = spring_rate(spring.shear_modulus, d0, dm, x["spring_active_coils"])
     if as_built:
         values.update(asbuilt.extra_values(x, spring, limit, peak))
@@ -726,7 +732,12 @@ BALL_CLUTCH = ModelSpec(
             "N",
             "F_t = 2T/(K_r D0 i) on the most-loaded ball, at the limit or at `torque` [001, eq. 1]",
         ),
-        Output("ball_axial_force", "N", "F_a = F_t tan(α − atan f) [001, eq. 1 with friction]"),
+        Output(
+            "ball_axial_force",
+            "N",
+            "F_a = F_t tan(α − atan f) [001, eq. 1 with friction]; with α′ the push of "
+            "flank_construction (max or sum of the two flanks')",
+        ),
         Output(
             "ball_normal_force",
             "N",
@@ -737,7 +748,8 @@ BALL_CLUTCH = ModelSpec(
         Output(
             "spring_shear_stress",
             "Pa",
-            "τ = 8 F D K_w/(π d0³) at the spring force",
+            "τ = 8 F D k/(π d0³) at the spring force, k Wahl's K_w or Bergsträsser's "
+            "(w + 0.5)/(w − 0.75) as stress_correction chooses (EN 13906-1)",
             display_unit="MPa",
         ),
         Output("spring_rate", "N/m", "c = G d0⁴/(8 D³ i_p) [001, eq. 2]", display_unit="N/mm"),
@@ -840,6 +852,8 @@ def _required_force(x: Mapping[str, Any]) -> Any:
         x["load_factor"],
         x["flank_friction"],
         x["spring_arrangement"],
+        x["driving_groove_angle"],
+        x["flank_construction"],
     )
 
 
@@ -855,7 +869,7 @@ def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
         out["spring_rate"] = spring_rate(g, wire, dm, ip)
         out["required_deflection"] = spring_deflection_for_force(force, g, wire, dm, ip)
         out["spring_index"] = spring_index(dm, wire)
-        out["spring_shear_stress"] = spring_shear_stress(force, dm, wire)
+        out["spring_shear_stress"] = spring_shear_stress(force, dm, wire, x["stress_correction"])
     if deflection is not None:
         new_wire = wire_diameter_for_force(force, g, dm, ip, deflection)
         out["required_wire_diameter"] = new_wire
@@ -863,7 +877,9 @@ def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
         out["required_wire_spring_index"] = new_index
         # No coil exists for C <= 1 (the wire would fill the coil): no stress there.
         out["required_wire_shear_stress"] = np.where(
-            np.asarray(new_index) > 1.0, spring_shear_stress(force, dm, new_wire), np.nan
+            np.asarray(new_index) > 1.0,
+            spring_shear_stress(force, dm, new_wire, x["stress_correction"]),
+            np.nan,
         )
     return out
 

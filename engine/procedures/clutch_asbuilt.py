@@ -27,12 +27,15 @@ from ..core.params import DEG, count, friction_coefficient, length, positive
 from ..core.spec import Check, Output, Param, Plot, Window
 from ..physics import springs as sp
 from ..physics.clutch import (
+    CONSTRUCTIONS,
     RECOMMENDED_SERVICE_FACTOR,
     SELF_LOCKING_MARGIN,
     friction_sensitivity,
     lift_points,
     residual_torque,
+    riding_flank_angle,
     rim_rise,
+    self_locking_margin,
     torque_against_lift,
     torque_sharing,
 )
@@ -72,13 +75,28 @@ def params() -> tuple[Param, ...]:
             "driving_groove_angle",
             "rad",
             "α′, flank angle of the driving half-coupling's groove [001, fig. 6]; absent: the "
-            "driving half pushes the ball circumferentially, as eq. 1 assumes. Given, the ball "
-            "climbs both flanks: F_a/F_t = tan(α′ − ρ) + tan(α − ρ)",
+            "driving half pushes the ball circumferentially, as eq. 1 assumes. Given, "
+            "flank_construction says how the two flanks push: a free ball rides the flatter "
+            "flank, F_a/F_t = max(tan(α′ − ρ), tan(α − ρ)); under a pressure disc it climbs "
+            "both, F_a/F_t = tan(α′ − ρ) + tan(α − ρ)",
             minimum=0.0,
             maximum=math.pi / 2,
             exclusive_maximum=True,
             display_unit="deg",
             symbol="α′",
+            group="balls",
+        ),
+        Param(
+            "flank_construction",
+            "1",
+            "with driving_groove_angle: 'free_ball', a free ball between the grooved driving "
+            "half and the spring-loaded grooved half, riding the flank that separates them "
+            "least, F_a/F_t = max(tan(α′ − ρ), tan(α − ρ)) (never under-reports the slip "
+            "torque); 'pressure_disc', axially fixed halves whose flanks both lift the ball "
+            "and a separate pressure disc, F_a/F_t = tan(α′ − ρ) + tan(α − ρ) (virtual work)",
+            default="free_ball",
+            kind="choice",
+            choices=CONSTRUCTIONS,
             group="balls",
         ),
         friction_coefficient(
@@ -464,6 +482,11 @@ def _sharing(x: Mapping[str, Any]) -> Any:
     return torque_sharing(x["spring_arrangement"], x["ball_count"], x["load_factor"])
 
 
+def _ride(x: Mapping[str, Any]) -> Any:
+    """The flank (and rim) the ball climbs: :func:`riding_flank_angle`."""
+    return riding_flank_angle(x["groove_angle"], x["driving_groove_angle"], x["flank_construction"])
+
+
 def lift_of(x: Mapping[str, Any], deflection: Any = None) -> Any:
     """The flank lift h: ``ball_lift`` or, absent, the paper's Δ."""
     if x["ball_lift"] is not None:
@@ -488,7 +511,7 @@ def characteristic(
     # rim on. Without the curves, only those points are evaluated (the same floats).
     first = POINTS - 1 if spring.kind == "helical" and not curves else 0
     lift, beta = lift_points(
-        lift_of(x, deflection), x["ball_diameter"], x["groove_angle"], POINTS, first > 0
+        lift_of(x, deflection), x["ball_diameter"], _ride(x), POINTS, first > 0
     )
     # a swept input (an array) gets a trailing axis so it broadcasts against the lift
     x = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
@@ -506,6 +529,7 @@ def characteristic(
             x["flank_friction"],
             x["driving_groove_angle"],
             _sharing(x),
+            x["flank_construction"],
         )
     )
     peak = np.argmax(torque, axis=-1)[..., None]
@@ -577,7 +601,7 @@ def end_values(x: Mapping[str, Any], spring: Spring) -> dict[str, Any]:
     asks for none of :data:`PEAK_OUTPUTS`.
     """
     h = np.asarray(lift_of(x), float)
-    total_lift = h + rim_rise(x["ball_diameter"], x["groove_angle"])
+    total_lift = h + rim_rise(x["ball_diameter"], _ride(x))
     total = np.asarray(x["spring_deflection"], float) + total_lift
     force = spring.force(total)
     out: dict[str, Any] = {
@@ -595,12 +619,15 @@ def end_values(x: Mapping[str, Any], spring: Spring) -> dict[str, Any]:
 
 
 def margin(x: Mapping[str, Any]) -> Any:
-    """Self-locking margin α − atan f, the smaller over the inclined flanks."""
-    rho = np.arctan(x["flank_friction"])
-    m = np.asarray(x["groove_angle"]) - rho
-    if x["driving_groove_angle"] is not None:
-        m = np.minimum(m, np.asarray(x["driving_groove_angle"]) - rho)
-    return m
+    """Self-locking margin α − atan f over the flanks the ball slides on."""
+    return np.asarray(
+        self_locking_margin(
+            x["groove_angle"],
+            x["flank_friction"],
+            x["driving_groove_angle"],
+            x["flank_construction"],
+        )
+    )
 
 
 def extra_values(
@@ -618,7 +645,11 @@ def extra_values(
         values = end_values(x, spring)
     values["self_locking_margin"] = margin(x)
     values["friction_sensitivity"] = friction_sensitivity(
-        limit, x["groove_angle"], x["flank_friction"], x["driving_groove_angle"]
+        limit,
+        x["groove_angle"],
+        x["flank_friction"],
+        x["driving_groove_angle"],
+        x["flank_construction"],
     )
     if spring.kind == "helical":
         d, dm, n = x["spring_wire_diameter"], x["spring_mean_diameter"], x["spring_active_coils"]
@@ -908,11 +939,24 @@ def notes(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[st
         f"{float(v['spring_force_max']):.4g} N ({float(v['spring_stress_max']) / 1e6:.4g} MPa) "
         "on the face. torque_limit is the zero-lift point [001, eq. 3]."
     )
-    if x["driving_groove_angle"] is not None:
+    if x["driving_groove_angle"] is not None and x["flank_construction"] == "free_ball":
+        a1, a2 = x["driving_groove_angle"] / DEG, x["groove_angle"] / DEG
+        rides = "the driving" if a1 > a2 else "the driven"
         out.append(
-            "driving_groove_angle given: the ball climbs both flanks, F_a/F_t = "
-            "tan(α′ − ρ) + tan(α − ρ) (virtual work); equal angles halve the torque of eq. 1 "
-            "for the same spring. Over the rim only the driven groove's rim is modelled."
+            f"flank_construction = free_ball, α′ = {a1:.4g}°, α = {a2:.4g}°: the free ball "
+            f"stays seated in the steeper groove and rides {rides} flank, the one that "
+            "separates the halves least (virtual work): F_a/F_t = max(tan(α′ − ρ), "
+            "tan(α − ρ)), and over that groove's rim. Were the balls lifting a separate "
+            "pressure disc on both flanks at once (flank_construction = pressure_disc), "
+            "the pushes would add and the same spring would slip at a lower torque."
+        )
+    elif x["driving_groove_angle"] is not None:
+        out.append(
+            "flank_construction = pressure_disc: the halves stay put and the ball climbs both "
+            "flanks, lifting the disc: F_a/F_t = tan(α′ − ρ) + tan(α − ρ) (virtual work); "
+            "equal angles halve the torque of eq. 1 for the same spring. Over the rim only "
+            "the driven groove's rim is modelled. A free ball between a fixed and a "
+            "spring-loaded grooved half (free_ball) would ride one flank: max, not the sum."
         )
     if spring.kind == "helical" and spring.material is not None:
         out.append(
@@ -1343,7 +1387,7 @@ class SettingGrid:
         given = x["ball_lift"] is not None
         # from the rim on (the flank's lines lie below the rim's): q_k, the lift at δ = 0
         self.q, beta = lift_points(
-            x["ball_lift"] if given else 0.0, x["ball_diameter"], x["groove_angle"], POINTS, True
+            x["ball_lift"] if given else 0.0, x["ball_diameter"], _ride(x), POINTS, True
         )
         self.share = 1.0 if given else 0.5  # 1/(1 + p)
         xs = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
@@ -1355,6 +1399,7 @@ class SettingGrid:
                 xs["flank_friction"],
                 xs["driving_groove_angle"],
                 _sharing(xs),
+                x["flank_construction"],
             )
         )
         # the lines rise with δ only where every push is positive and finite
