@@ -243,6 +243,7 @@ _REFUSALS = {
     "spring_wire_diameter": "no coil: spring_wire_diameter is not below spring_mean_diameter",
     "spring_wire_diameter_table": "spring_wire_diameter is outside the spring_material's table",
     "disc_inner_diameter": "disc_inner_diameter is not below disc_outer_diameter / 1.05",
+    "spring_elastic_modulus": "spring_elastic_modulus is outside 2…3 times shear_modulus",
 }
 
 

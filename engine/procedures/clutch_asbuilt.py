@@ -127,6 +127,18 @@ def params() -> tuple[Param, ...]:
             choices=MATERIAL_CHOICES,
             group="spring",
         ),
+        positive(
+            "spring_elastic_modulus",
+            "Pa",
+            "E of a custom helical spring's wire, used only for its buckling (EN 13906-1); "
+            "absent: E = 2 G (1 + ν) with ν = 0.3, i.e. 2.6 G (208 GPa at G = 80 GPa; "
+            "EN 13906-1 gives 206 GPa for spring steel, 185 GPa for 1.4310). Must lie within "
+            "2 G … 3 G (Poisson's ratio 0…0.5). A chosen spring_material's E overrides it",
+            maximum=1.5e12,
+            display_unit="MPa",
+            symbol="E",
+            group="spring",
+        ),
         Param(
             "stress_correction",
             "1",
@@ -374,9 +386,11 @@ class Spring:
             self.shear_modulus = (
                 x["shear_modulus"] if self.material is None else self.material.shear_modulus
             )
+            self.elastic_modulus = elastic_modulus(x, self.material)
         else:
             self.material = None
             self.shear_modulus = x["shear_modulus"]
+            self.elastic_modulus = x["disc_elastic_modulus"]
 
     def force(self, deflection: Any) -> Any:
         x = self.x
@@ -428,6 +442,29 @@ class Spring:
         return x["allowable_shear_stress"]
 
 
+#: Poisson's ratio of a custom wire when its E is not given (steels 0.27…0.30).
+CUSTOM_POISSON = 0.3
+#: E/G a custom wire may have: 2 (1 + ν) for ν from 0 to 0.5.
+ELASTIC_SHEAR_RATIO = (2.0, 3.0)
+
+
+def elastic_modulus(x: Mapping[str, Any], material: sp.SpringMaterial | None) -> Any:
+    r"""E of the helical spring's wire: the material's, the given one, or 2 G (1 + ν).
+
+    .. math::
+        E = 2 G (1 + \nu), \quad \nu = 0.3 \;\text{(custom wire, E not given)}
+
+    EN 13906-1 tabulates E and G of its spring materials (206 and 81.5 GPa for
+    patented spring steel, 185 and 70 GPa for 1.4310); for a custom wire whose E is
+    not given the isotropic relation with the steels' Poisson's ratio stands in.
+    """
+    if material is not None:
+        return material.elastic_modulus
+    if x["spring_elastic_modulus"] is not None:
+        return x["spring_elastic_modulus"]
+    return 2.0 * (1.0 + CUSTOM_POISSON) * np.asarray(x["shear_modulus"])
+
+
 def refused(x: Mapping[str, Any]) -> dict[str, Any]:
     """Where the spring's numbers are refused, by the field named: True there (floats or
     arrays). A missing input is refused by :func:`require_spring` alone (it is the same
@@ -437,10 +474,16 @@ def refused(x: Mapping[str, Any]) -> dict[str, Any]:
             return {}
         # a ring that narrow is not a disc spring (Almen–László loses all precision)
         return {"disc_inner_diameter": x["disc_inner_diameter"] * 1.05 >= x["disc_outer_diameter"]}
+    out: dict[str, Any] = {}
+    if x["spring_material"] == "custom" and x["spring_elastic_modulus"] is not None:
+        ratio = np.asarray(x["spring_elastic_modulus"]) / np.asarray(x["shear_modulus"])
+        lo, hi = ELASTIC_SHEAR_RATIO
+        out["spring_elastic_modulus"] = (ratio < lo) | (ratio > hi)
     wire = x["spring_wire_diameter"]
     if wire is None or x["spring_material"] == "custom" or np.ndim(wire) == 0:
-        return {}  # one wire: tensile_strength refuses it with the table's range
-    return {"spring_wire_diameter_table": np.isnan(sp.tensile_strength(x["spring_material"], wire))}
+        return out  # one wire: tensile_strength refuses it with the table's range
+    out["spring_wire_diameter_table"] = np.isnan(sp.tensile_strength(x["spring_material"], wire))
+    return out
 
 
 def require_spring(x: Mapping[str, Any], *, wire_needed: bool) -> None:
@@ -471,6 +514,15 @@ def require_spring(x: Mapping[str, Any], *, wire_needed: bool) -> None:
     wire, material = x["spring_wire_diameter"], x["spring_material"]
     if wire is not None and material != "custom":
         sp.tensile_strength(material, wire)  # refuses a wire outside the material's table
+    if refused(x).get("spring_elastic_modulus", False):
+        lo, hi = ELASTIC_SHEAR_RATIO
+        g = x["shear_modulus"]
+        raise InputOutOfRange(
+            f"spring_elastic_modulus = {x['spring_elastic_modulus'] / 1e6:.6g} MPa is outside "
+            f"{lo:g} G … {hi:g} G = {lo * g / 1e6:.6g} … {hi * g / 1e6:.6g} MPa for "
+            f"shear_modulus G = {g / 1e6:.6g} MPa (E = 2 G (1 + ν), Poisson's ratio ν 0…0.5)",
+            field="spring_elastic_modulus",
+        )
 
 
 # --------------------------------------------------------------------------
@@ -663,15 +715,12 @@ def extra_values(
             np.ndim(a) == 0 for a in (x["spring_free_length"], dm, values["spring_force_max"])
         )
         if x["spring_free_length"] is not None:
-            e_mod = (
-                spring.material.elastic_modulus if spring.material else 2.6 * spring.shear_modulus
-            )
             s_k = sp.buckling_deflection(
                 x["spring_free_length"],
                 dm,
                 sp.SEATING_COEFFICIENTS[x["spring_seating"]],
                 spring.shear_modulus,
-                e_mod,
+                spring.elastic_modulus,
             )
             # inf: the spring cannot buckle; said as null (and in the check), never inf;
             # on arrays NaN there (null in a sweep, as the loop gives it)
@@ -964,6 +1013,16 @@ def notes(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[st
             f"(overrides shear_modulus), permissible τ = 0.5 R_m(d) (EN 13906-1), compared with "
             f"the {x['stress_correction']}-corrected stress, stricter than the standard's "
             "static check"
+        )
+    if spring.kind == "helical" and spring.material is None and x["spring_free_length"]:
+        given = x["spring_elastic_modulus"] is not None
+        out.append(
+            f"custom wire: buckling with E = {float(spring.elastic_modulus) / 1e9:.4g} GPa "
+            + (
+                "(spring_elastic_modulus)"
+                if given
+                else f"= 2 G (1 + ν), ν = {CUSTOM_POISSON:g}, not given (spring_elastic_modulus)"
+            )
         )
     if spring.kind == "disc":
         out.append(

@@ -479,3 +479,48 @@ def test_the_wire_stress_follows_the_chosen_correction():
         k_b * 8 * force * 0.032 / (math.pi * 0.004**3),
         rel=1e-12,
     )
+
+
+def _buckling_by_hand(l0, dm, nu, g, e):
+    """EN 13906-1: s_K = L0 (1 − √(1 − (1 − G/E)/(0.5 + G/E) (π D/(ν L0))²)) 0.5/(1 − G/E)."""
+    ratio = g / e
+    root = 1 - (1 - ratio) / (0.5 + ratio) * (math.pi * dm / (nu * l0)) ** 2
+    return l0 * 0.5 / (1 - ratio) * (1 - math.sqrt(root))
+
+
+def test_a_custom_wires_elastic_modulus_is_an_input():
+    slender = {
+        **ORDINARY,
+        "spring_material": "custom",
+        "shear_modulus": 8e10,
+        "allowable_shear_stress": 8e8,
+        "spring_free_length": 0.30,
+        "spring_seating": "fixed_free",
+    }
+    # absent: E = 2 G (1 + 0.3) = 208 GPa, said in the notes
+    r = run(BALL_CLUTCH, slender)
+    want = _buckling_by_hand(0.30, 0.032, 2.0, 8e10, 208e9)
+    pin("clutch.ball", "buckling_deflection", r.results["buckling_deflection"], want, rel=1e-12)
+    assert any("E = 208 GPa = 2 G (1 + ν)" in n for n in r.notes)
+    # given: EN 13906-1's 206 GPa for spring steel moves s_K
+    r = run(BALL_CLUTCH, slender, spring_elastic_modulus=206e9)
+    want = _buckling_by_hand(0.30, 0.032, 2.0, 8e10, 206e9)
+    pin("clutch.ball", "buckling_deflection", r.results["buckling_deflection"], want, rel=1e-12)
+    assert r.results["buckling_deflection"] * 1e3 == pytest.approx(want * 1e3)
+    # a material's E overrides it (EN 13906-1: 206 GPa for DH wire)
+    dh = run(BALL_CLUTCH, ORDINARY, spring_free_length=0.30, spring_seating="fixed_free")
+    with_e = run(
+        BALL_CLUTCH,
+        ORDINARY,
+        spring_free_length=0.30,
+        spring_seating="fixed_free",
+        spring_elastic_modulus=190e9,
+    )
+    want = _buckling_by_hand(0.30, 0.032, 2.0, 81.5e9, 206e9)
+    assert dh.results["buckling_deflection"] == pytest.approx(want, rel=1e-12)
+    assert with_e.results["buckling_deflection"] == dh.results["buckling_deflection"]
+    # outside 2 G … 3 G (Poisson's ratio 0…0.5): refused, naming the field and the range
+    for e in (1.5e11, 2.5e11):
+        with pytest.raises(engine.InputOutOfRange, match="160000 … 240000 MPa") as err:
+            run(BALL_CLUTCH, slender, spring_elastic_modulus=e)
+        assert err.value.field == "spring_elastic_modulus"
