@@ -1458,3 +1458,72 @@ def required_slip_torque(
     25.0
     """
     return _out(np.maximum(np.asarray(rated) * np.asarray(service_factor), start_torque))
+
+
+# --------------------------------------------------------------------------
+# The nut-runner's friction clutches [000]: torque from the clamp of their nuts
+# --------------------------------------------------------------------------
+
+#: Friction radius laws of an annular friction face.
+FRICTION_LAWS: tuple[str, ...] = ("uniform_wear", "uniform_pressure")
+
+
+def friction_clutch_torque(
+    clamp_force: FloatArray,
+    friction: FloatArray,
+    outer_diameter: FloatArray,
+    inner_diameter: FloatArray,
+    faces: FloatArray = 1,
+    law: str = "uniform_wear",
+) -> FloatArray:
+    r"""Torque a plate (diaphragm) friction clutch transmits before it slips.
+
+    .. math::
+        M_{tr} = z_f \, \mu \, F \, R_f, \qquad
+        R_f = \frac{D + d}{4} \;\text{(uniform wear)}, \qquad
+        R_f = \frac{D^3 - d^3}{3 (D^2 - d^2)} \;\text{(uniform pressure)}
+
+    Parameters
+    ----------
+    clamp_force : float
+        F, axial force the nut clamps the friction faces with, [N]
+    friction : float
+        μ, friction coefficient of the faces, [-]
+    outer_diameter : float
+        D, outer diameter of the annular contact, [m]
+    inner_diameter : float
+        d, inner diameter of the annular contact (0 for a full disc), [m]
+    faces : int, optional
+        z_f, number of friction faces the clamp force passes through, [-]
+    law : {"uniform_wear", "uniform_pressure"}, optional
+        Pressure distribution over the annulus, [-]
+
+    Returns
+    -------
+    torque : float
+        M_tr, [N*m]
+
+    Notes
+    -----
+    [000] says the friction clutches (diaphragms 11 pressed against the spindle
+    gears 5 by nuts 12) carry a small torque "regulated by the clamp force" and
+    gives no formula for it; this is the textbook plate-clutch capacity ([Bhandari],
+    chapter "Friction Clutches"): Coulomb friction of the clamp force at the friction
+    radius. Uniform wear (a worn-in clutch, p·r constant) gives the smaller
+    radius, by at most 1/3 for a full disc.
+
+    Examples
+    --------
+    >>> round(friction_clutch_torque(1000.0, 0.15, 0.06, 0.03), 6)
+    3.375
+    >>> round(friction_clutch_torque(1000.0, 0.15, 0.06, 0.03, law="uniform_pressure"), 6)
+    3.5
+    """
+    big, small = np.asarray(outer_diameter, float), np.asarray(inner_diameter, float)
+    if law == "uniform_wear":
+        radius = (big + small) / 4.0
+    elif law == "uniform_pressure":
+        radius = (big**3 - small**3) / (3.0 * (big**2 - small**2))
+    else:
+        raise ValueError(f"law must be one of {FRICTION_LAWS}, not {law!r}")
+    return _out(np.asarray(faces) * np.asarray(friction) * np.asarray(clamp_force) * radius)
