@@ -7,6 +7,7 @@ functions, checks and sentences.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping
 from typing import Any
@@ -190,22 +191,92 @@ def _allowable_param() -> Param:
 
 
 def _estimate(x: Mapping[str, Any]) -> Any:
-    """Relative error of the closed form from the flank friction it is given.
+    """Relative error of the closed form from the flank friction it is given: a bound.
 
     The closed form is exact for its idealisation (rigid parts, quasi-static,
     Coulomb friction on the flanks only). Its largest real uncertainty is the
-    friction: with f = 0 (the paper) we report how much a lubricated steel
-    flank (f = 0.1) would raise the limit; with f given, how much a scatter of
-    ±0.03 in f moves it. NaN-free: None where the shifted friction locks.
-    On arrays (a sweep or a study choosing ``auto`` per point): the same per
-    point, NaN where a scalar call gives None.
+    friction: with f = 0 (the paper) the band a lubricated steel flank spans,
+    f' in [0, 0.1]; with f given, a scatter f' in [f − 0.03, f + 0.03] (not below 0).
+    The push p(f) falls with f, the torque goes as 1/p and the spring force a
+    setting needs as p, so over the band every one moves by at most
+    max(p(f)/p(f_hi) − 1, p(f_lo)/p(f) − 1) of itself: the estimate, the term
+    the closed form neglects evaluated at the band's ends (at f = 0 the upper end's,
+    as before). Measured over random designs in bench/accuracy_clutch.py.
+    NaN-free: None where the shifted friction locks. On arrays (a sweep or a study
+    choosing ``auto`` per point): the same per point, NaN where a scalar call gives None.
     """
     alpha, f = x["groove_angle"], np.asarray(x["flank_friction"], dtype=float)
-    shift = np.where(f == 0.0, TYPICAL_FLANK_FRICTION, FLANK_FRICTION_SCATTER)
+    driving, construction = x["driving_groove_angle"], x["flank_construction"]
+    low, high = _friction_band(f)
     with np.errstate(all="ignore"):
-        push = np.asarray(flank_push_factor(alpha, f))
-        shifted = np.asarray(flank_push_factor(alpha, f + shift))
-        estimate = np.where((push > 0.0) & (shifted > 0.0), push / shifted - 1.0, np.nan)
+        # the push of the flanks the ball slides on, as the torque limit takes it
+        push = np.asarray(combined_push_factor(alpha, f, driving, construction))
+        upper = np.asarray(combined_push_factor(alpha, high, driving, construction))
+        lower = np.asarray(combined_push_factor(alpha, low, driving, construction))
+        shift = np.maximum(push / upper - 1.0, lower / push - 1.0)
+        estimate = np.where((push > 0.0) & (upper > 0.0), shift, np.nan)
+    if estimate.ndim == 0:
+        return None if math.isnan(estimate) else float(estimate)
+    return estimate
+
+
+def _friction_band(f: Any) -> tuple[Any, Any]:
+    """The flank frictions the estimate covers: [0, 0.1] at f = 0, else f ± 0.03 (≥ 0)."""
+    f = np.asarray(f, dtype=float)
+    given = f != 0.0
+    low = np.where(given, np.maximum(f - FLANK_FRICTION_SCATTER, 0.0), 0.0)
+    high = np.where(given, f + FLANK_FRICTION_SCATTER, TYPICAL_FLANK_FRICTION)
+    return low, high
+
+
+#: Points of one design the peak's estimate evaluates at once (801 lifts each).
+_ESTIMATE_CHUNK = 2000
+
+
+def _estimate_ball(x: Mapping[str, Any]) -> Any:
+    """clutch.ball's estimate: :func:`_estimate`, or the peak torque's shift if larger.
+
+    The peak over the lift sits where the spring force and the contact angle balance;
+    over the rim the contact angle is steeper than the flank's and the friction moves
+    the torque more there, so the zero-lift shift need not cover the peak
+    (bench/accuracy_clutch.py found it exceeded in 6 of 1200 random designs, worst 1.18×).
+    :func:`asbuilt.peak_friction_shift` evaluates the peak at the band's ends, with the
+    grid's error. Inputs that do not describe a spring yet: :func:`_estimate` alone.
+    """
+    base = _estimate(x)
+    helical = x["spring_type"] == "helical"
+    needed = (
+        ("spring_wire_diameter", "spring_mean_diameter", "spring_active_coils")
+        if helical
+        else ("disc_outer_diameter", "disc_inner_diameter", "disc_thickness", "disc_cone_height")
+    )
+    if base is None or any(x[name] is None for name in needed):
+        return base
+    low, high = _friction_band(x["flank_friction"])
+    if low.ndim == 0:  # one friction: floats, as the characteristic takes a scalar input
+        low, high = low.item(), high.item()
+    n = _array_inputs(x)
+    with np.errstate(all="ignore"):
+        if n is None or n <= _ESTIMATE_CHUNK:
+            peak = asbuilt.peak_friction_shift(x, low, high)
+        else:
+            parts = []
+            for i in range(0, n, _ESTIMATE_CHUNK):
+                part = slice(i, i + _ESTIMATE_CHUNK)
+                chunk = {
+                    k: (v[part] if isinstance(v, np.ndarray) and v.shape == (n,) else v)
+                    for k, v in x.items()
+                }
+                lo = low[part] if np.shape(low) == (n,) else low
+                hi = high[part] if np.shape(high) == (n,) else high
+                parts.append(
+                    np.broadcast_to(
+                        asbuilt.peak_friction_shift(chunk, lo, hi), (min(_ESTIMATE_CHUNK, n - i),)
+                    )
+                )
+            peak = np.concatenate(parts)
+        estimate = np.fmax(np.asarray(base, dtype=float), np.asarray(peak, dtype=float))
+        estimate = np.where(np.isnan(np.asarray(base, dtype=float)), np.nan, estimate)
     if estimate.ndim == 0:
         return None if math.isnan(estimate) else float(estimate)
     return estimate
@@ -215,11 +286,22 @@ _RUNG = Rung(
     "closed_form",
     "Closed form of [001, eq. 1–3] with flank friction: quasi-static, rigid parts, "
     "ball inertia and the friction of disk, spring and ball rolling neglected, spring "
-    "force constant while the ball climbs. Error estimate: the shift a typical flank "
-    "friction (f = 0.1 if f = 0 was assumed, else ±0.03 on the given f) would cause.",
+    "force constant while the ball climbs. Error estimate: the largest relative shift "
+    "of the torque or the spring force over a band of flank friction (0…0.1 if f = 0 "
+    "was assumed, else ±0.03 on the given f), a bound on that uncertainty.",
     _estimate,
     typical_error="0…25 % from friction when f = 0 is assumed; a few % with f given",
     typical_time="< 1 ms",
+)
+#: clutch.ball's rung: the same closed form, its estimate covering the peak torque too.
+_BALL_RUNG = dataclasses.replace(
+    _RUNG,
+    description=_RUNG.description.replace(
+        "a bound on that uncertainty.",
+        "and of the peak torque over the lift (with its grid's error), a bound on that "
+        "uncertainty.",
+    ),
+    estimate=_estimate_ball,
 )
 
 
@@ -539,7 +621,7 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
     return Result(
         values=dict(v),
         rung=ctx.rung,
-        error_estimate=_estimate(x),
+        error_estimate=_estimate_ball(x),
         checks=checks,
         notes=notes,
         warnings=asbuilt.warnings(x),
@@ -756,7 +838,7 @@ BALL_CLUTCH = ModelSpec(
         Output("spring_rate", "N/m", "c = G d0⁴/(8 D³ i_p) [001, eq. 2]", display_unit="N/mm"),
         *asbuilt.outputs(),
     ),
-    rungs=(_RUNG,),
+    rungs=(_BALL_RUNG,),
     compute=_compute_ball,
     # one rung: by default run it plainly; "auto" would note that the frictionless
     # default cannot meet 1 % (the estimate is the effect of neglected flank friction)

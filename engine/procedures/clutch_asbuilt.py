@@ -547,12 +547,18 @@ def lift_of(x: Mapping[str, Any], deflection: Any = None) -> Any:
 
 
 def characteristic(
-    x: Mapping[str, Any], spring: Spring, deflection: Any = None, curves: bool = False
+    x: Mapping[str, Any],
+    spring: Spring,
+    deflection: Any = None,
+    curves: bool = False,
+    points: int = POINTS,
 ) -> dict[str, Any]:
     """Torque, spring force and stress against lift; arrays with the lift on the last axis.
 
     The curves themselves (keys ``_lift``, ``_torque``, ``_force``, ``_stress``) only with
-    ``curves=True``. A helical spring's stress is evaluated only where it is read (at the
+    ``curves=True``. ``points`` on the flank and as many over the rim (the outputs take
+    :data:`POINTS`; the error estimate a finer grid). A helical spring's stress is
+    evaluated only where it is read (at the
     peak torque and at the largest force, where it is largest: it is proportional to the
     force), the same floats the whole curve would hold there.
     """
@@ -561,9 +567,9 @@ def characteristic(
     # A helical spring's force rises with the lift and the flank's push is constant, so
     # on the flank the torque rises to the rim: the grid's peak and maxima lie from the
     # rim on. Without the curves, only those points are evaluated (the same floats).
-    first = POINTS - 1 if spring.kind == "helical" and not curves else 0
+    first = points - 1 if spring.kind == "helical" and not curves else 0
     lift, beta = lift_points(
-        lift_of(x, deflection), x["ball_diameter"], _ride(x), POINTS, first > 0
+        lift_of(x, deflection), x["ball_diameter"], _ride(x), points, first > 0
     )
     # a swept input (an array) gets a trailing axis so it broadcasts against the lift
     x = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
@@ -599,14 +605,14 @@ def characteristic(
         def at(arr: Any, idx: Any) -> Any:
             return np.take_along_axis(np.broadcast_to(arr, torque.shape), idx, axis=-1)[..., 0]
 
-    rim = np.full_like(peak, POINTS - 1 - first)
+    rim = np.full_like(peak, points - 1 - first)
     forces = np.broadcast_to(force, torque.shape)
     out: dict[str, Any] = {
         "peak_torque": at(torque, peak),
         "lift_at_peak": at(lift, peak),
         "torque_at_rim": at(torque, rim),
         "total_lift": lift[..., -1],
-        "flank_lift": lift[..., POINTS - 1 - first],
+        "flank_lift": lift[..., points - 1 - first],
         "spring_force_at_peak": at(force, peak),
         "spring_force_max": np.max(forces, axis=-1),
     }
@@ -632,6 +638,41 @@ def characteristic(
         )
         out["residual_torque"] = np.asarray(residual)[..., 0]
     return out
+
+
+#: Points per branch of the finer characteristic the peak's error estimate compares with.
+FINE_POINTS = 401
+
+
+def peak_friction_shift(x: Mapping[str, Any], low: Any, high: Any) -> Any:
+    r"""Largest relative shift of the peak torque over flank frictions in [low, high].
+
+    .. math::
+        e = \frac{\max(T^*(f_{hi}) - T(f), \; T(f) - T^*(f_{lo}))
+            + \max_{f' \in \{f_{lo}, f, f_{hi}\}} |T^*(f') - T(f')|}{T(f)}
+
+    T the peak on the output's grid (:data:`POINTS`), T* on a 10× finer one
+    (:data:`FINE_POINTS`). The peak rises with the friction (every point's torque
+    does), so the band's ends are its extremes; the grid's own error T* − T, where it is
+    largest over the band (the peak may leave a grid point as the friction changes), is
+    added once more for what the finer grid still misses (a quadratic grid error: 1 %
+    of it). Floats or arrays, like :func:`characteristic`.
+    """
+
+    def peaks(f: Any) -> tuple[Any, Any]:
+        point = {**x, "flank_friction": f}
+        spring = Spring(point)
+        coarse = characteristic(point, spring)["peak_torque"]
+        fine = characteristic(point, spring, points=FINE_POINTS)["peak_torque"]
+        return np.asarray(coarse, float), np.asarray(fine, float)
+
+    (here, at), (up_c, up), (down_c, down) = (
+        peaks(x["flank_friction"]),
+        peaks(high),
+        peaks(low),
+    )
+    grid = np.maximum(np.abs(at - here), np.maximum(np.abs(up - up_c), np.abs(down - down_c)))
+    return (np.maximum(up - here, here - down) + grid) / np.abs(here)
 
 
 #: Outputs only the whole characteristic gives (its peak); :func:`end_values` gives the rest.
