@@ -947,17 +947,29 @@ def combined_push_factor(
     both angles α′ and α″. Developed onto the ball circle (x along the
     circumference, z along the axis), the two constructions are::
 
-        (a) free_ball                          (b) pressure_disc
-                    | F_s                                  | F_s
-                    v                                      v
-         ===========+==========  half 2         ==========+==========  pressure
-         ========\  ^  /=======  (grooved,                (o)          disc
-                  \(o)/   a''    slides on      \  a'    /   \   a'' /  (flat,
-                  /( )\   a'     the axis,       \      /     \     /   lifts)
-         ========/  |  \=======  spring-loaded)   \____/       \___/
-         ======================  half 1          half 1 -->      half 2
-          half 1 --> x (fixed)   (grooved)       (both halves axially fixed,
-                                                  the ball in the V of their flanks)
+        (a) free_ball: the ball between two grooved halves; half 2 slides
+            along the axis against the spring
+
+                      | F_s (spring)
+                      v
+          ==========.   .==========   half 2 (driven), moves along z
+                     \ /    flank a''
+                     (o)    ball
+                     / \    flank a'
+          =========='   '==========   half 1 (driving), fixed along z
+                    --> x (half 1 turns)
+
+        (b) pressure_disc: both halves fixed along the axis, side by side;
+            the ball sits in the V of half 1's and half 2's flanks and lifts
+            a flat disc
+
+                      | F_s (spring)
+                      v
+          ==========================  pressure disc, moves along z
+                     (o)    ball
+          ==========\   /===========
+            half 1   \ /   half 2
+            a' -->    V    a''        (the V closes as half 1 turns by x)
 
     Virtual work, f = 0, a relative turn dx of the halves at the ball circle
     (F_t dx = F_s dz, so p = F_a/F_t = dx/dz):
