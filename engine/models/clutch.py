@@ -312,7 +312,16 @@ def _refused(x: Mapping[str, Any], wire: Any) -> dict[str, Any]:
     (:func:`_require_workable`, :func:`asbuilt.require_spring`); the array paths mask
     those points and say how many each reason took (:func:`_refusal_notes`).
     """
-    out: dict[str, Any] = {"groove_angle": x["groove_angle"] <= np.arctan(x["flank_friction"])}
+    with np.errstate(all="ignore"):
+        push = combined_push_factor(
+            x["groove_angle"],
+            x["flank_friction"],
+            x["driving_groove_angle"],
+            x["flank_construction"],
+        )
+    # α ≤ atan f for one flank; with α′ the push of the construction (a free ball wedges
+    # only where both flanks lock; the pushes under a pressure disc may cancel)
+    out: dict[str, Any] = {"groove_angle": ~(np.asarray(push) > 0.0)}
     if wire is not None:
         out["spring_wire_diameter"] = wire >= x["spring_mean_diameter"]
     out.update(asbuilt.refused(x))
@@ -321,7 +330,8 @@ def _refused(x: Mapping[str, Any], wire: Any) -> dict[str, Any]:
 
 #: What each refusal of :func:`_refused` means, by the field it names.
 _REFUSALS = {
-    "groove_angle": "the balls wedge: groove_angle is not above atan(flank_friction)",
+    "groove_angle": "the balls wedge: no axial push from groove_angle (and "
+    "driving_groove_angle) at atan(flank_friction)",
     "spring_wire_diameter": "no coil: spring_wire_diameter is not below spring_mean_diameter",
     "spring_wire_diameter_table": "spring_wire_diameter is outside the spring_material's table",
     "disc_inner_diameter": "disc_inner_diameter is not below disc_outer_diameter / 1.05",
@@ -343,6 +353,16 @@ def _require_workable(x: Mapping[str, Any], wire: float | None) -> None:
     """Cross-field refusals shared by both specs (scalar inputs), on :func:`_refused`."""
     alpha, f = x["groove_angle"], x["flank_friction"]
     refused = _refused(x, wire)
+    if refused["groove_angle"] and x["driving_groove_angle"] is not None:
+        rho, a1 = math.atan(f), x["driving_groove_angle"]
+        raise InfeasibleDesign(
+            f"the clutch never slips: with flank_construction = {x['flank_construction']}, "
+            f"the driven flank α = {alpha / DEG:.3g}° and the driving flank "
+            f"α′ = {a1 / DEG:.3g}° give no axial push at the friction angle atan f = "
+            f"{rho / DEG:.3g}°, so the balls wedge at any torque; make the flanks flatter "
+            "(larger α or α′) or reduce the flank friction",
+            field="groove_angle",
+        )
     if refused["groove_angle"]:
         rho = math.atan(f)
         raise InfeasibleDesign(

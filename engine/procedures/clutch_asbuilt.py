@@ -836,11 +836,14 @@ def checks(
     out: list[Check] = []
     m = float(v["self_locking_margin"])
     ok = passed["self_locking"]
+    angle = "α"  # the flank the ball slides on (self_locking_margin)
+    if x["driving_groove_angle"] is not None:
+        angle = "max(α, α′)" if x["flank_construction"] == "free_ball" else "min(α, α′)"
     out.append(
         Check(
             "self_locking",
             ok,
-            f"α − atan f = {m / DEG:.3g}° "
+            f"{angle} − atan f = {m / DEG:.3g}° "
             + ("≥" if ok else "<")
             + f" {SELF_LOCKING_MARGIN / DEG:g}°; dT/df = {float(v['friction_sensitivity']):.4g} N·m"
             + (

@@ -153,3 +153,48 @@ def test_the_setting_slips_at_its_target(construction):
     assert s["required_spring_force"] == pytest.approx(2 * target * p / 0.05, rel=1e-12)
     back = engine.run(BALL_CLUTCH, {**design, "spring_deflection": s["required_deflection"]})
     assert back.results["torque_limit"] == pytest.approx(target, rel=1e-12)
+
+
+def test_a_free_ball_rides_out_on_the_driving_flank_where_the_driven_one_locks():
+    # α = 20° below ρ = atan 0.5 = 26.6°, α′ = 50°: the free ball slips along the driving
+    # flank, T = D0 F/(2 tan(50° − 26.57°)); under a pressure disc the pushes
+    # tan(−6.57°) + tan(23.43°) = 0.3183 still lift the disc; with α′ = 25° too both lock
+    design = {**PAPER, "groove_angle": 20 * DEG, "flank_friction": 0.5}
+    free = engine.run(BALL_CLUTCH, {**design, "driving_groove_angle": 50 * DEG}).results
+    rho = math.atan(0.5)
+    want = 0.05 * F_SPRING / (2 * math.tan(50 * DEG - rho))
+    assert free["torque_limit"] == pytest.approx(want, rel=1e-12)
+    disc = engine.run(
+        BALL_CLUTCH,
+        {**design, "driving_groove_angle": 50 * DEG, "flank_construction": "pressure_disc"},
+    ).results
+    push = math.tan(20 * DEG - rho) + math.tan(50 * DEG - rho)
+    assert disc["torque_limit"] == pytest.approx(0.05 * F_SPRING / (2 * push), rel=1e-12)
+    for construction in ("free_ball", "pressure_disc"):
+        with pytest.raises(engine.InfeasibleDesign) as err:
+            engine.run(
+                BALL_CLUTCH,
+                {**design, "driving_groove_angle": 25 * DEG, "flank_construction": construction},
+            )
+        assert err.value.field == "groove_angle"
+    # and without α′ the driven flank alone locks, as before
+    with pytest.raises(engine.InfeasibleDesign):
+        engine.run(BALL_CLUTCH, design)
+
+
+def test_the_self_locking_margin_is_the_sliding_flanks():
+    # free ball: it slides on the flatter flank only, 50° − 26.57°; pressure disc: on
+    # both, the steeper locks first, 20° − 26.57° < 0
+    design = {**PAPER, "groove_angle": 20 * DEG, "flank_friction": 0.5}
+    rho = math.atan(0.5)
+    free = engine.run(BALL_CLUTCH, {**design, "driving_groove_angle": 50 * DEG})
+    assert free.results["self_locking_margin"] == pytest.approx(50 * DEG - rho, rel=1e-12)
+    assert "max(α, α′) − atan f = 23.4°" in next(
+        c.detail for c in free.checks if c.name == "self_locking"
+    )
+    disc = engine.run(
+        BALL_CLUTCH,
+        {**design, "driving_groove_angle": 50 * DEG, "flank_construction": "pressure_disc"},
+    )
+    assert disc.results["self_locking_margin"] == pytest.approx(20 * DEG - rho, rel=1e-12)
+    assert not next(c.ok for c in disc.checks if c.name == "self_locking")
