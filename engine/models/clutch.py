@@ -7,6 +7,7 @@ functions, checks and sentences.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping
 from typing import Any
@@ -26,12 +27,12 @@ from ..physics.clutch import (
     ball_tangential_force,
     combined_push_factor,
     flank_push_factor,
+    riding_flank_angle,
     spring_deflection_for_force,
     spring_force_for_torque,
     spring_index,
     spring_rate,
     spring_shear_stress,
-    torque_against_lift,
     torque_limit,
     torque_sharing,
     wahl_factor,
@@ -179,7 +180,8 @@ def _allowable_param() -> Param:
     return Param(
         "allowable_shear_stress",
         "Pa",
-        "allowable wire shear stress (Wahl-corrected); optional, checked when given",
+        "allowable wire shear stress, compared with the stress corrected by "
+        "stress_correction (Wahl or Bergsträsser, EN 13906-1); optional, checked when given",
         minimum=0.0,
         exclusive_minimum=True,
         maximum=1e10,
@@ -189,22 +191,92 @@ def _allowable_param() -> Param:
 
 
 def _estimate(x: Mapping[str, Any]) -> Any:
-    """Relative error of the closed form from the flank friction it is given.
+    """Relative error of the closed form from the flank friction it is given: a bound.
 
     The closed form is exact for its idealisation (rigid parts, quasi-static,
     Coulomb friction on the flanks only). Its largest real uncertainty is the
-    friction: with f = 0 (the paper) we report how much a lubricated steel
-    flank (f = 0.1) would raise the limit; with f given, how much a scatter of
-    ±0.03 in f moves it. NaN-free: None where the shifted friction locks.
-    On arrays (a sweep or a study choosing ``auto`` per point): the same per
-    point, NaN where a scalar call gives None.
+    friction: with f = 0 (the paper) the band a lubricated steel flank spans,
+    f' in [0, 0.1]; with f given, a scatter f' in [f − 0.03, f + 0.03] (not below 0).
+    The push p(f) falls with f, the torque goes as 1/p and the spring force a
+    setting needs as p, so over the band every one moves by at most
+    max(p(f)/p(f_hi) − 1, p(f_lo)/p(f) − 1) of itself: the estimate, the term
+    the closed form neglects evaluated at the band's ends (at f = 0 the upper end's,
+    as before). Measured over random designs in bench/accuracy_clutch.py.
+    NaN-free: None where the shifted friction locks. On arrays (a sweep or a study
+    choosing ``auto`` per point): the same per point, NaN where a scalar call gives None.
     """
     alpha, f = x["groove_angle"], np.asarray(x["flank_friction"], dtype=float)
-    shift = np.where(f == 0.0, TYPICAL_FLANK_FRICTION, FLANK_FRICTION_SCATTER)
+    driving, construction = x["driving_groove_angle"], x["flank_construction"]
+    low, high = _friction_band(f)
     with np.errstate(all="ignore"):
-        push = np.asarray(flank_push_factor(alpha, f))
-        shifted = np.asarray(flank_push_factor(alpha, f + shift))
-        estimate = np.where((push > 0.0) & (shifted > 0.0), push / shifted - 1.0, np.nan)
+        # the push of the flanks the ball slides on, as the torque limit takes it
+        push = np.asarray(combined_push_factor(alpha, f, driving, construction))
+        upper = np.asarray(combined_push_factor(alpha, high, driving, construction))
+        lower = np.asarray(combined_push_factor(alpha, low, driving, construction))
+        shift = np.maximum(push / upper - 1.0, lower / push - 1.0)
+        estimate = np.where((push > 0.0) & (upper > 0.0), shift, np.nan)
+    if estimate.ndim == 0:
+        return None if math.isnan(estimate) else float(estimate)
+    return estimate
+
+
+def _friction_band(f: Any) -> tuple[Any, Any]:
+    """The flank frictions the estimate covers: [0, 0.1] at f = 0, else f ± 0.03 (≥ 0)."""
+    f = np.asarray(f, dtype=float)
+    given = f != 0.0
+    low = np.where(given, np.maximum(f - FLANK_FRICTION_SCATTER, 0.0), 0.0)
+    high = np.where(given, f + FLANK_FRICTION_SCATTER, TYPICAL_FLANK_FRICTION)
+    return low, high
+
+
+#: Points of one design the peak's estimate evaluates at once (801 lifts each).
+_ESTIMATE_CHUNK = 2000
+
+
+def _estimate_ball(x: Mapping[str, Any]) -> Any:
+    """clutch.ball's estimate: :func:`_estimate`, or the peak torque's shift if larger.
+
+    The peak over the lift sits where the spring force and the contact angle balance;
+    over the rim the contact angle is steeper than the flank's and the friction moves
+    the torque more there, so the zero-lift shift need not cover the peak
+    (bench/accuracy_clutch.py found it exceeded in 6 of 1200 random designs, worst 1.18×).
+    :func:`asbuilt.peak_friction_shift` evaluates the peak at the band's ends, with the
+    grid's error. Inputs that do not describe a spring yet: :func:`_estimate` alone.
+    """
+    base = _estimate(x)
+    helical = x["spring_type"] == "helical"
+    needed = (
+        ("spring_wire_diameter", "spring_mean_diameter", "spring_active_coils")
+        if helical
+        else ("disc_outer_diameter", "disc_inner_diameter", "disc_thickness", "disc_cone_height")
+    )
+    if base is None or any(x[name] is None for name in needed):
+        return base
+    low, high = _friction_band(x["flank_friction"])
+    if low.ndim == 0:  # one friction: floats, as the characteristic takes a scalar input
+        low, high = low.item(), high.item()
+    n = _array_inputs(x)
+    with np.errstate(all="ignore"):
+        if n is None or n <= _ESTIMATE_CHUNK:
+            peak = asbuilt.peak_friction_shift(x, low, high)
+        else:
+            parts = []
+            for i in range(0, n, _ESTIMATE_CHUNK):
+                part = slice(i, i + _ESTIMATE_CHUNK)
+                chunk = {
+                    k: (v[part] if isinstance(v, np.ndarray) and v.shape == (n,) else v)
+                    for k, v in x.items()
+                }
+                lo = low[part] if np.shape(low) == (n,) else low
+                hi = high[part] if np.shape(high) == (n,) else high
+                parts.append(
+                    np.broadcast_to(
+                        asbuilt.peak_friction_shift(chunk, lo, hi), (min(_ESTIMATE_CHUNK, n - i),)
+                    )
+                )
+            peak = np.concatenate(parts)
+        estimate = np.fmax(np.asarray(base, dtype=float), np.asarray(peak, dtype=float))
+        estimate = np.where(np.isnan(np.asarray(base, dtype=float)), np.nan, estimate)
     if estimate.ndim == 0:
         return None if math.isnan(estimate) else float(estimate)
     return estimate
@@ -214,11 +286,22 @@ _RUNG = Rung(
     "closed_form",
     "Closed form of [001, eq. 1–3] with flank friction: quasi-static, rigid parts, "
     "ball inertia and the friction of disk, spring and ball rolling neglected, spring "
-    "force constant while the ball climbs. Error estimate: the shift a typical flank "
-    "friction (f = 0.1 if f = 0 was assumed, else ±0.03 on the given f) would cause.",
+    "force constant while the ball climbs. Error estimate: the largest relative shift "
+    "of the torque or the spring force over a band of flank friction (0…0.1 if f = 0 "
+    "was assumed, else ±0.03 on the given f), a bound on that uncertainty.",
     _estimate,
     typical_error="0…25 % from friction when f = 0 is assumed; a few % with f given",
     typical_time="< 1 ms",
+)
+#: clutch.ball's rung: the same closed form, its estimate covering the peak torque too.
+_BALL_RUNG = dataclasses.replace(
+    _RUNG,
+    description=_RUNG.description.replace(
+        "a bound on that uncertainty.",
+        "and of the peak torque over the lift (with its grid's error), a bound on that "
+        "uncertainty.",
+    ),
+    estimate=_estimate_ball,
 )
 
 
@@ -229,7 +312,16 @@ def _refused(x: Mapping[str, Any], wire: Any) -> dict[str, Any]:
     (:func:`_require_workable`, :func:`asbuilt.require_spring`); the array paths mask
     those points and say how many each reason took (:func:`_refusal_notes`).
     """
-    out: dict[str, Any] = {"groove_angle": x["groove_angle"] <= np.arctan(x["flank_friction"])}
+    with np.errstate(all="ignore"):
+        push = combined_push_factor(
+            x["groove_angle"],
+            x["flank_friction"],
+            x["driving_groove_angle"],
+            x["flank_construction"],
+        )
+    # α ≤ atan f for one flank; with α′ the push of the construction (a free ball wedges
+    # only where both flanks lock; the pushes under a pressure disc may cancel)
+    out: dict[str, Any] = {"groove_angle": ~(np.asarray(push) > 0.0)}
     if wire is not None:
         out["spring_wire_diameter"] = wire >= x["spring_mean_diameter"]
     out.update(asbuilt.refused(x))
@@ -238,10 +330,12 @@ def _refused(x: Mapping[str, Any], wire: Any) -> dict[str, Any]:
 
 #: What each refusal of :func:`_refused` means, by the field it names.
 _REFUSALS = {
-    "groove_angle": "the balls wedge: groove_angle is not above atan(flank_friction)",
+    "groove_angle": "the balls wedge: no axial push from groove_angle (and "
+    "driving_groove_angle) at atan(flank_friction)",
     "spring_wire_diameter": "no coil: spring_wire_diameter is not below spring_mean_diameter",
     "spring_wire_diameter_table": "spring_wire_diameter is outside the spring_material's table",
     "disc_inner_diameter": "disc_inner_diameter is not below disc_outer_diameter / 1.05",
+    "spring_elastic_modulus": "spring_elastic_modulus is outside 2…3 times shear_modulus",
 }
 
 
@@ -259,6 +353,16 @@ def _require_workable(x: Mapping[str, Any], wire: float | None) -> None:
     """Cross-field refusals shared by both specs (scalar inputs), on :func:`_refused`."""
     alpha, f = x["groove_angle"], x["flank_friction"]
     refused = _refused(x, wire)
+    if refused["groove_angle"] and x["driving_groove_angle"] is not None:
+        rho, a1 = math.atan(f), x["driving_groove_angle"]
+        raise InfeasibleDesign(
+            f"the clutch never slips: with flank_construction = {x['flank_construction']}, "
+            f"the driven flank α = {alpha / DEG:.3g}° and the driving flank "
+            f"α′ = {a1 / DEG:.3g}° give no axial push at the friction angle atan f = "
+            f"{rho / DEG:.3g}°, so the balls wedge at any torque; make the flanks flatter "
+            "(larger α or α′) or reduce the flank friction",
+            field="groove_angle",
+        )
     if refused["groove_angle"]:
         rho = math.atan(f)
         raise InfeasibleDesign(
@@ -354,7 +458,15 @@ def _angle_check(alpha: float, ok: bool) -> Check:
 def _arrangement_notes(x: Mapping[str, Any], force: float) -> list[str]:
     i, kr = x["ball_count"], x["load_factor"]
     common = torque_limit(
-        force, x["ball_circle_diameter"], x["groove_angle"], i, kr, x["flank_friction"]
+        force,
+        x["ball_circle_diameter"],
+        x["groove_angle"],
+        i,
+        kr,
+        x["flank_friction"],
+        "common",
+        x["driving_groove_angle"],
+        x["flank_construction"],
     )
     per_ball = torque_sharing("per_ball", i, kr) * common
     if x["spring_arrangement"] == "common":
@@ -426,6 +538,8 @@ def _forward_values(
     spring = asbuilt.Spring(x)
     alpha, f, kr = x["groove_angle"], x["flank_friction"], x["load_factor"]
     force = spring.force(x["spring_deflection"])
+    driving, construction = x["driving_groove_angle"], x["flank_construction"]
+    # with α′: the push of the two flanks by the construction, T at zero lift
     limit = torque_limit(
         force,
         x["ball_circle_diameter"],
@@ -434,17 +548,9 @@ def _forward_values(
         kr,
         f,
         x["spring_arrangement"],
+        driving,
+        construction,
     )
-    if x["driving_groove_angle"] is not None:
-        # both flanks lift the ball: the same spring holds less torque, T at zero lift
-        limit = torque_against_lift(
-            force,
-            alpha,
-            x["ball_circle_diameter"],
-            f,
-            x["driving_groove_angle"],
-            torque_sharing(x["spring_arrangement"], x["ball_count"], kr),
-        )
     at = limit if x["torque"] is None else x["torque"]
     tangential = ball_tangential_force(at, x["ball_circle_diameter"], x["ball_count"], kr)
     values: dict[str, Any] = {
@@ -452,15 +558,18 @@ def _forward_values(
         "torque_limit": limit,
         "ball_tangential_force": tangential,
         "ball_axial_force": np.asarray(tangential)
-        * combined_push_factor(alpha, f, x["driving_groove_angle"]),
-        "ball_normal_force": ball_normal_force(tangential, alpha, f),
+        * combined_push_factor(alpha, f, driving, construction),
+        # on the flank the ball slides on (a free ball: the one it rides)
+        "ball_normal_force": ball_normal_force(
+            tangential, riding_flank_angle(alpha, driving, construction), f
+        ),
     }
     if spring.kind == "helical":
         d0, dm = x["spring_wire_diameter"], x["spring_mean_diameter"]
         index = spring_index(dm, d0)
         values["spring_index"] = index
         values["wahl_factor"] = wahl_factor(index)
-        values["spring_shear_stress"] = spring_shear_stress(force, dm, d0)
+        values["spring_shear_stress"] = spring_shear_stress(force, dm, d0, x["stress_correction"])
         values["spring_rate"] = spring_rate(spring.shear_modulus, d0, dm, x["spring_active_coils"])
     if as_built:
         values.update(asbuilt.extra_values(x, spring, limit, peak))
@@ -532,7 +641,7 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
     return Result(
         values=dict(v),
         rung=ctx.rung,
-        error_estimate=_estimate(x),
+        error_estimate=_estimate_ball(x),
         checks=checks,
         notes=notes,
         warnings=asbuilt.warnings(x),
@@ -726,7 +835,12 @@ BALL_CLUTCH = ModelSpec(
             "N",
             "F_t = 2T/(K_r D0 i) on the most-loaded ball, at the limit or at `torque` [001, eq. 1]",
         ),
-        Output("ball_axial_force", "N", "F_a = F_t tan(α − atan f) [001, eq. 1 with friction]"),
+        Output(
+            "ball_axial_force",
+            "N",
+            "F_a = F_t tan(α − atan f) [001, eq. 1 with friction]; with α′ the push of "
+            "flank_construction (max or sum of the two flanks')",
+        ),
         Output(
             "ball_normal_force",
             "N",
@@ -737,13 +851,14 @@ BALL_CLUTCH = ModelSpec(
         Output(
             "spring_shear_stress",
             "Pa",
-            "τ = 8 F D K_w/(π d0³) at the spring force",
+            "τ = 8 F D k/(π d0³) at the spring force, k Wahl's K_w or Bergsträsser's "
+            "(w + 0.5)/(w − 0.75) as stress_correction chooses (EN 13906-1)",
             display_unit="MPa",
         ),
         Output("spring_rate", "N/m", "c = G d0⁴/(8 D³ i_p) [001, eq. 2]", display_unit="N/mm"),
         *asbuilt.outputs(),
     ),
-    rungs=(_RUNG,),
+    rungs=(_BALL_RUNG,),
     compute=_compute_ball,
     # one rung: by default run it plainly; "auto" would note that the frictionless
     # default cannot meet 1 % (the estimate is the effect of neglected flank friction)
@@ -840,6 +955,8 @@ def _required_force(x: Mapping[str, Any]) -> Any:
         x["load_factor"],
         x["flank_friction"],
         x["spring_arrangement"],
+        x["driving_groove_angle"],
+        x["flank_construction"],
     )
 
 
@@ -855,7 +972,7 @@ def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
         out["spring_rate"] = spring_rate(g, wire, dm, ip)
         out["required_deflection"] = spring_deflection_for_force(force, g, wire, dm, ip)
         out["spring_index"] = spring_index(dm, wire)
-        out["spring_shear_stress"] = spring_shear_stress(force, dm, wire)
+        out["spring_shear_stress"] = spring_shear_stress(force, dm, wire, x["stress_correction"])
     if deflection is not None:
         new_wire = wire_diameter_for_force(force, g, dm, ip, deflection)
         out["required_wire_diameter"] = new_wire
@@ -863,7 +980,9 @@ def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
         out["required_wire_spring_index"] = new_index
         # No coil exists for C <= 1 (the wire would fill the coil): no stress there.
         out["required_wire_shear_stress"] = np.where(
-            np.asarray(new_index) > 1.0, spring_shear_stress(force, dm, new_wire), np.nan
+            np.asarray(new_index) > 1.0,
+            spring_shear_stress(force, dm, new_wire, x["stress_correction"]),
+            np.nan,
         )
     return out
 

@@ -16,9 +16,14 @@ import numpy as np
 
 from ..core import points
 from ..core.errors import InfeasibleDesign, InputOutOfRange
-from ..core.params import RPM, count
+from ..core.params import RPM, count, friction_coefficient, length, positive
 from ..core.spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
-from ..physics.clutch import acceleration_torque, rated_torque, required_slip_torque
+from ..physics.clutch import (
+    acceleration_torque,
+    friction_clutch_torque,
+    rated_torque,
+    required_slip_torque,
+)
 from ..physics.motor_spinup import (
     MotorCurve,
     kloss_breakdown_slip,
@@ -54,6 +59,103 @@ from ..physics.nutrunner import (
 
 _DIAMETER: dict[str, Any] = {"minimum": 1e-4, "maximum": 2.0, "display_unit": "mm"}
 _MASS: dict[str, Any] = {"minimum": 0.0, "maximum": 1e3, "display_unit": "kg"}
+
+
+def _friction_clutch_params() -> tuple[Param, ...]:
+    """The idle spindles' friction clutches by their clamp [000]: optional, give all or none."""
+    return (
+        positive(
+            "friction_clutch_clamp_force",
+            "N",
+            "F, force nut 12 clamps each diaphragm friction clutch with [000]; given, M_tr = "
+            "z_f μ F (D + d)/4 replaces idle_spindle_friction_torque (uniform wear)",
+            maximum=1e7,
+            symbol="F",
+            group="friction clutches",
+        ),
+        friction_coefficient(
+            "friction_clutch_friction",
+            "μ of the friction clutch faces (about 0.1 oiled … 0.15–0.2 dry steel)",
+            symbol="μ",
+            group="friction clutches",
+        ),
+        length(
+            "friction_clutch_outer_diameter",
+            "D, outer diameter of the friction face",
+            minimum=1e-3,
+            maximum=2.0,
+            symbol="D",
+            group="friction clutches",
+        ),
+        length(
+            "friction_clutch_inner_diameter",
+            "d, inner diameter of the friction face (0 for a full disc), below D",
+            minimum=0.0,
+            maximum=2.0,
+            symbol="d",
+            group="friction clutches",
+        ),
+        count(
+            "friction_clutch_faces",
+            "z_f, friction faces the clamp force passes through",
+            minimum=1,
+            maximum=20,
+            default=1,
+            symbol="z_f",
+            group="friction clutches",
+        ),
+    )
+
+
+_FRICTION_CLUTCH = (
+    "friction_clutch_clamp_force",
+    "friction_clutch_friction",
+    "friction_clutch_outer_diameter",
+    "friction_clutch_inner_diameter",
+)
+
+
+def _with_friction_clutch(x: Mapping[str, Any]) -> tuple[dict[str, Any], Any, list[str]]:
+    """``x`` with M_tr from the clutches' clamp where all of it is given; that M_tr; warnings.
+
+    Part of the clamp alone leaves idle_spindle_friction_torque in use (a warning says
+    what is missing); the whole clamp replaces it (a warning if it was given too).
+    """
+    given = [name for name in _FRICTION_CLUTCH if x[name] is not None]
+    if len(given) < len(_FRICTION_CLUTCH):
+        missing = [name for name in _FRICTION_CLUTCH if x[name] is None]
+        warn = (
+            [
+                f"{', '.join(given)} given without {', '.join(missing)}: M_tr is "
+                "idle_spindle_friction_torque"
+            ]
+            if given
+            else []
+        )
+        return dict(x), x["idle_spindle_friction_torque"], warn
+    if np.any(
+        np.asarray(x["friction_clutch_inner_diameter"])
+        >= np.asarray(x["friction_clutch_outer_diameter"])
+    ):
+        raise InputOutOfRange(
+            "friction_clutch_inner_diameter must be below friction_clutch_outer_diameter "
+            f"({np.max(x['friction_clutch_outer_diameter']) * 1e3:g} mm)",
+            field="friction_clutch_inner_diameter",
+        )
+    m_tr = friction_clutch_torque(
+        x["friction_clutch_clamp_force"],
+        x["friction_clutch_friction"],
+        x["friction_clutch_outer_diameter"],
+        x["friction_clutch_inner_diameter"],
+        x["friction_clutch_faces"],
+    )
+    warn = []
+    if np.any(np.asarray(x["idle_spindle_friction_torque"]) != 0.0):
+        warn.append(
+            "idle_spindle_friction_torque is not used: M_tr comes from the friction clutches' "
+            "clamp (friction_clutch_clamp_force …)"
+        )
+    return {**x, "idle_spindle_friction_torque": m_tr}, m_tr, warn
 
 
 def _part(name: str, label: str, group: str, eq: str, mass: bool, **kw: Any) -> Param:
@@ -203,6 +305,7 @@ _INPUTS: tuple[Param, ...] = (
         symbol="M_tr",
         group="shafts",
     ),
+    *_friction_clutch_params(),
     Param(
         "wheel_nut_torque",
         "N*m",
@@ -362,6 +465,13 @@ _OUTPUTS: tuple[Output, ...] = (
         "1",
         "M_max / M_nut: how many times the torque reaching the nut covers what the wheel nut "
         "needs ([000]: the spindle torque must tighten and free it)",
+    ),
+    Output(
+        "friction_clutch_torque",
+        "N*m",
+        "M_tr of each idle spindle's friction clutch, as eq. 10 takes it: z_f μ F (D + d)/4 "
+        "from the clamp of its nut [000] where friction_clutch_clamp_force is given, else "
+        "idle_spindle_friction_torque",
     ),
     Output(
         "shaft_twist", "rad", "Twist of shaft 7 during the blow [000, eq. 6]", display_unit="deg"
@@ -828,9 +938,11 @@ ASSUMPTIONS = (
 
 
 def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    x, m_tr, clutch_warnings = _with_friction_clutch(x)
     d = _drive(x)
     geared = ctx.rung != "closed_form"
     values = _closed_values(x, d, geared)
+    values["friction_clutch_torque"] = m_tr
     notes: list[str] = []
     effect = float(values["gear_ratio_torque_change"])
     if ctx.rung == "closed_form":
@@ -908,7 +1020,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         error_estimate=error,
         checks=checks,
         notes=notes,
-        warnings=warnings,
+        warnings=[*clutch_warnings, *warnings],
         series=series,
     )
 
@@ -918,9 +1030,11 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     arrays = {
         k: (np.asarray(v, dtype=float) if isinstance(v, np.ndarray) else v) for k, v in x.items()
     }
+    arrays, m_tr, clutch_warnings = _with_friction_clutch(arrays)
     d = _drive(arrays)
     values = _closed_values(arrays, d, geared=ctx.rung != "closed_form")
-    warnings = []
+    values["friction_clutch_torque"] = m_tr
+    warnings = list(clutch_warnings)
     m_max = np.asarray(values["max_spindle_torque"])
     if np.any(m_max <= 0.0):
         warnings.append(

@@ -412,12 +412,17 @@ def wahl_factor(index: FloatArray) -> FloatArray:
 
 
 def spring_shear_stress(
-    force: FloatArray, mean_diameter: FloatArray, wire_diameter: FloatArray
+    force: FloatArray,
+    mean_diameter: FloatArray,
+    wire_diameter: FloatArray,
+    correction: str = "wahl",
 ) -> FloatArray:
     r"""Peak shear stress in the wire of a helical spring carrying ``force``.
 
     .. math::
-        \tau = \frac{8 F D K_w}{\pi d_0^3}
+        \tau = \frac{8 F D k}{\pi d_0^3}, \qquad
+        k = K_w \;\text{(Wahl)} \;\text{or}\; \frac{w + 0.5}{w - 0.75}
+        \;\text{(Bergsträsser, EN 13906-1)}
 
     Parameters
     ----------
@@ -427,6 +432,9 @@ def spring_shear_stress(
         Mean coil diameter D, [m]
     wire_diameter : float
         Wire diameter d0, [m]
+    correction : {"wahl", "bergstrasser"}, optional
+        Stress-correction factor k of the index w = D/d0: Wahl's or
+        Bergsträsser's, the one EN 13906-1 gives, [-]
 
     Returns
     -------
@@ -435,15 +443,20 @@ def spring_shear_stress(
 
     Notes
     -----
-    Standard spring design (torsion of the wire plus Wahl's correction); not
-    in the source, which gives no strength check for its spring.
+    EN 13906-1, corrected shear stress τ_k = k 8FD/(πd³) (torsion of the wire
+    times the correction factor; the standard gives Bergsträsser's, Wahl (1963)
+    is the older textbook one); not in the source, which gives no strength check
+    for its spring. :func:`engine.physics.springs.helical_shear_stress` is the
+    one implementation.
 
     Examples
     --------
     >>> round(spring_shear_stress(22.4746, 0.045, 0.004) / 1e6, 2)
     45.38
+    >>> round(spring_shear_stress(22.4746, 0.045, 0.004, "bergstrasser") / 1e6, 2)
+    45.03
     """
-    return springs.helical_shear_stress(force, mean_diameter, wire_diameter, "wahl")
+    return springs.helical_shear_stress(force, mean_diameter, wire_diameter, correction)
 
 
 # --------------------------------------------------------------------------
@@ -497,6 +510,8 @@ def torque_limit(
     load_factor: FloatArray = 0.85,
     flank_friction: FloatArray = 0.0,
     arrangement: str = "common",
+    driving_groove_angle: FloatArray | None = None,
+    construction: str = "free_ball",
 ) -> FloatArray:
     r"""Torque at which the clutch slips [001, eq. 1–3].
 
@@ -521,6 +536,12 @@ def torque_limit(
     arrangement : {"common", "per_ball"}, optional
         One spring shared by all balls through the disk (the paper's fig. 1),
         or one spring per ball (what the paper's eq. 3 assumes)
+    driving_groove_angle : float or None, optional
+        α′ of the driving groove; None is [001, eq. 1], see
+        :func:`combined_push_factor`, [rad]
+    construction : {"free_ball", "pressure_disc"}, optional
+        With α′ given: the max or the sum of the two flanks' pushes
+        (:func:`combined_push_factor`), [-]
 
     Returns
     -------
@@ -535,6 +556,10 @@ def torque_limit(
     paper's T = K_r D0 i G d0⁴ Δ / (16 D³ i_p tan α). The scan prints K_r in
     the denominator, contrary to its own eq. 1; we follow eq. 1.
 
+    With α′ given the push tan(α − ρ) is :func:`combined_push_factor`'s (the
+    max or the sum of the two flanks'); α′ absent, or α′ ≤ α with the
+    ``free_ball`` construction, is the single flank of [001, eq. 1].
+
     ``common``: one spring balances the sum of the axial pushes, and statics
     fixes the sum of the tangential forces (ΣF_t,j D0/2 = T) however unevenly
     the balls share it, so K_r drops out: T = D0 F_spring / (2 tan α). This is
@@ -548,7 +573,9 @@ def torque_limit(
     ...                    arrangement="per_ball"), 4)
     1.9103
     """
-    push = np.asarray(flank_push_factor(groove_angle, flank_friction))
+    push = np.asarray(
+        combined_push_factor(groove_angle, flank_friction, driving_groove_angle, construction)
+    )
     share = torque_sharing(arrangement, ball_count, load_factor)
     with np.errstate(divide="ignore", invalid="ignore"):
         torque = np.where(
@@ -570,11 +597,13 @@ def spring_force_for_torque(
     load_factor: FloatArray = 0.85,
     flank_friction: FloatArray = 0.0,
     arrangement: str = "common",
+    driving_groove_angle: FloatArray | None = None,
+    construction: str = "free_ball",
 ) -> FloatArray:
     r"""Spring force that sets the slipping torque to ``torque`` (inverse of :func:`torque_limit`).
 
     .. math::
-        F_{spring} = \frac{2 T \tan(\alpha - \rho)}{D_0 \, s}, \qquad
+        F_{spring} = \frac{2 T p}{D_0 \, s}, \quad p = \tan(\alpha - \rho), \quad
         s = 1 \text{ (common)}, \; K_r i \text{ (per ball)}
 
     Parameters
@@ -593,22 +622,30 @@ def spring_force_for_torque(
         Flank friction coefficient f, [-]
     arrangement : {"common", "per_ball"}, optional
         Spring arrangement, as in :func:`torque_limit`
+    driving_groove_angle : float or None, optional
+        α′, as in :func:`torque_limit`, [rad]
+    construction : {"free_ball", "pressure_disc"}, optional
+        As in :func:`torque_limit`, [-]
 
     Returns
     -------
     force : float
-        Required spring force; NaN where α ≤ atan f, [N]
+        Required spring force; NaN where the push p ≤ 0, [N]
 
     Notes
     -----
-    [001, eq. 1–3] solved for F_spring.
+    [001, eq. 1–3] solved for F_spring; with α′ the push p is
+    :func:`combined_push_factor`'s, the same as :func:`torque_limit` takes, so
+    a spring sized here slips at the target.
 
     Examples
     --------
     >>> round(spring_force_for_torque(0.5618655, 0.05, math.radians(45.0)), 4)
     22.4746
     """
-    push = np.asarray(flank_push_factor(groove_angle, flank_friction))
+    push = np.asarray(
+        combined_push_factor(groove_angle, flank_friction, driving_groove_angle, construction)
+    )
     share = torque_sharing(arrangement, ball_count, load_factor)
     force = np.where(
         push > 0.0,
@@ -869,17 +906,22 @@ SELF_LOCKING_MARGIN = math.radians(10.0)
 RECOMMENDED_SERVICE_FACTOR = (1.5, 3.0)
 
 
+#: The two constructions of a clutch with both grooves inclined (α′ > 0).
+CONSTRUCTIONS: tuple[str, ...] = ("free_ball", "pressure_disc")
+
+
 def combined_push_factor(
     groove_angle: FloatArray,
     flank_friction: FloatArray = 0.0,
     driving_groove_angle: FloatArray | None = None,
+    construction: str = "free_ball",
 ) -> FloatArray:
     r"""Axial push on a ball per unit tangential force, with one or two inclined flanks.
 
     .. math::
-        \frac{F_a}{F_t} = \tan(\alpha'' - \rho) \;\text{(driving wall parallel to the axis)},
-        \qquad
-        \frac{F_a}{F_t} = \tan(\alpha' - \rho) + \tan(\alpha'' - \rho)
+        p = \tan(\alpha'' - \rho) \;\text{(driving wall parallel to the axis)}, \quad
+        p_{free\ ball} = \max\bigl(\tan(\alpha' - \rho), \tan(\alpha'' - \rho)\bigr), \quad
+        p_{pressure\ disc} = \tan(\alpha' - \rho) + \tan(\alpha'' - \rho)
 
     Parameters
     ----------
@@ -890,36 +932,182 @@ def combined_push_factor(
     driving_groove_angle : float or None, optional
         α′, flank angle of the driving half-coupling's groove; None when the
         driving half pushes the ball circumferentially (its wall parallel to
-        the axis, α′ = 0 with no friction term), which is [001, eq. 1], [rad]
+        the axis, with no friction term), which is [001, eq. 1], [rad]
+    construction : {"free_ball", "pressure_disc"}, optional
+        How the two grooves meet the ball (drawings below), [-]
 
     Returns
     -------
     push : float
-        F_a / F_t, [-]
+        F_a / F_t, the axial force per tangential force at impending slip, [-]
 
     Notes
     -----
-    [001, eq. 1] writes the axial push of the driven flank only. When the
-    driving groove is inclined too ([001, fig. 6] names α′ and α″), the ball
-    climbs both flanks at once: by virtual work, a relative turn dx lifts the
-    ball by dx/(tan α′ + tan α″), so the axial force per tangential force is
-    the sum. Equal angles therefore give twice the push of eq. 1 and half the
-    torque for the same spring, not the same torque. With friction each
-    flank's reaction tilts by ρ (the ball slides up both); the ball's own
-    moment balance (it rolls on one flank, slides on the other) is neglected,
-    as in the paper.
+    [001, eq. 1] writes the push of the driven flank only; [001, fig. 6] names
+    both angles α′ and α″. Developed onto the ball circle (x along the
+    circumference, z along the axis), the two constructions are::
+
+        (a) free_ball: the ball between two grooved halves; half 2 slides
+            along the axis against the spring
+
+                      | F_s (spring)
+                      v
+          ==========.   .==========   half 2 (driven), moves along z
+                     \ /    flank a''
+                     (o)    ball
+                     / \    flank a'
+          =========='   '==========   half 1 (driving), fixed along z
+                    --> x (half 1 turns)
+
+        (b) pressure_disc: both halves fixed along the axis, side by side;
+            the ball sits in the V of half 1's and half 2's flanks and lifts
+            a flat disc
+
+                      | F_s (spring)
+                      v
+          ==========================  pressure disc, moves along z
+                     (o)    ball
+          ==========\   /===========
+            half 1   \ /   half 2
+            a' -->    V    a''        (the V closes as half 1 turns by x)
+
+    Virtual work, f = 0, a relative turn dx of the halves at the ball circle
+    (F_t dx = F_s dz, so p = F_a/F_t = dx/dz):
+
+    (a) The ball is free between the halves; half 2 separates by z. If the
+    ball moves by b along half 2's flank and by x − b along half 1's, the
+    halves separate by z = b/tan α″ + (x − b)/tan α′. The spring takes the
+    smallest z: z is linear in b, so the ball stays seated in one groove and
+    rides the other, the flatter one (the larger angle):
+    z = x / max(tan α′, tan α″), p = max(tan α′, tan α″). A steeper driving
+    groove changes nothing: α′ ≤ α″ is the clutch of [001, eq. 1–3].
+
+    (b) The halves cannot separate; the ball touches both flanks and lifts the
+    disc: z tan α′ + z tan α″ = x (the V closes by x), so
+    p = tan α′ + tan α″. Equal angles give twice the push of eq. 1 and half
+    the torque for the same spring.
+
+    With flank friction each sliding contact's reaction tilts by ρ against the
+    ball's climb, as in :func:`flank_push_factor`: (a) the ball slides on the
+    flank it rides, p = tan(max(α′, α″) − ρ); (b) it slides up both,
+    R′ cos(α′ − ρ) = R″ cos(α″ − ρ) = F_t and
+    F_a = R′ sin(α′ − ρ) + R″ sin(α″ − ρ). The ball's own moment balance (it
+    may roll on one flank and slide on the other) is neglected, as in the
+    paper. Where both pushes are positive the max is the smaller, so the max
+    rule gives the larger slip torque of the two for the same spring: it never
+    under-reports the torque the clutch passes, and it is the default.
 
     Examples
     --------
     >>> round(combined_push_factor(math.radians(45.0)), 12)
     1.0
     >>> round(combined_push_factor(math.radians(45.0), 0.0, math.radians(45.0)), 12)
+    1.0
+    >>> round(combined_push_factor(math.radians(45.0), 0.0, math.radians(45.0),
+    ...                            "pressure_disc"), 12)
     2.0
     """
     push = flank_push_factor(groove_angle, flank_friction)
-    if driving_groove_angle is not None:
-        push = push + flank_push_factor(driving_groove_angle, flank_friction)
-    return _out(push)
+    if driving_groove_angle is None:
+        return _out(push)
+    driving = flank_push_factor(driving_groove_angle, flank_friction)
+    if construction == "free_ball":
+        return _out(np.maximum(push, driving))
+    if construction == "pressure_disc":
+        return _out(np.asarray(push) + np.asarray(driving))
+    raise ValueError(f"construction must be one of {CONSTRUCTIONS}, not {construction!r}")
+
+
+def riding_flank_angle(
+    groove_angle: FloatArray,
+    driving_groove_angle: FloatArray | None = None,
+    construction: str = "free_ball",
+) -> FloatArray:
+    r"""Flank angle of the groove the ball climbs out of (the lift geometry's α).
+
+    .. math::
+        \alpha_{ride} = \max(\alpha', \alpha'') \;\text{(free ball)}, \qquad
+        \alpha_{ride} = \alpha'' \;\text{(pressure disc, or no α′)}
+
+    Parameters
+    ----------
+    groove_angle : float
+        α″ of the driven groove, [rad]
+    driving_groove_angle : float or None, optional
+        α′ of the driving groove, [rad]
+    construction : {"free_ball", "pressure_disc"}, optional
+        As in :func:`combined_push_factor`, [-]
+
+    Returns
+    -------
+    angle : float
+        The flank (and rim) the lift follows, [rad]
+
+    Notes
+    -----
+    A free ball rides the flatter of the two flanks (:func:`combined_push_factor`,
+    construction (a)) and then over that groove's rim; under a pressure disc
+    only the driven groove's rim is modelled (as before the constructions were
+    told apart).
+
+    Examples
+    --------
+    >>> round(math.degrees(riding_flank_angle(math.radians(30.0), math.radians(50.0))), 9)
+    50.0
+    >>> round(math.degrees(riding_flank_angle(math.radians(30.0), math.radians(50.0),
+    ...                                       "pressure_disc")), 9)
+    30.0
+    """
+    if driving_groove_angle is None or construction == "pressure_disc":
+        return _out(groove_angle)
+    return _out(np.maximum(np.asarray(groove_angle), np.asarray(driving_groove_angle)))
+
+
+def self_locking_margin(
+    groove_angle: FloatArray,
+    flank_friction: FloatArray,
+    driving_groove_angle: FloatArray | None = None,
+    construction: str = "free_ball",
+) -> FloatArray:
+    r"""Margin between the flank angle the ball must slide on and the friction angle.
+
+    .. math::
+        m = \alpha_{ride} - \rho \;\text{(free ball)}, \qquad
+        m = \min(\alpha', \alpha'') - \rho \;\text{(pressure disc)}
+
+    Parameters
+    ----------
+    groove_angle : float
+        α″, [rad]
+    flank_friction : float
+        f, ρ = atan f, [-]
+    driving_groove_angle : float or None, optional
+        α′, [rad]
+    construction : {"free_ball", "pressure_disc"}, optional
+        As in :func:`combined_push_factor`, [-]
+
+    Returns
+    -------
+    margin : float
+        m; at or below 0 a sliding flank self-locks, [rad]
+
+    Notes
+    -----
+    A free ball slides only on the flank it rides (:func:`riding_flank_angle`);
+    under a pressure disc it slides up both, and the steeper locks first.
+
+    Examples
+    --------
+    >>> round(math.degrees(self_locking_margin(math.radians(45.0), 0.0)), 9)
+    45.0
+    >>> round(math.degrees(self_locking_margin(math.radians(45.0), 0.0, math.radians(30.0),
+    ...                                        "pressure_disc")), 9)
+    30.0
+    """
+    rho = np.arctan(flank_friction)
+    if driving_groove_angle is not None and construction == "pressure_disc":
+        return _out(np.minimum(np.asarray(groove_angle), np.asarray(driving_groove_angle)) - rho)
+    return _out(np.asarray(riding_flank_angle(groove_angle, driving_groove_angle)) - rho)
 
 
 def rim_rise(ball_diameter: FloatArray, groove_angle: FloatArray) -> FloatArray:
@@ -1026,12 +1214,14 @@ def torque_against_lift(
     flank_friction: FloatArray = 0.0,
     driving_groove_angle: FloatArray | None = None,
     sharing: FloatArray = 1.0,
+    construction: str = "free_ball",
 ) -> FloatArray:
     r"""Torque that holds the balls at a lift, from the spring force there.
 
     .. math::
         T(z) = \frac{s \, D_0 \, F(z)}{2 \, p(\beta(z))}, \qquad
-        p = \tan(\beta - \rho) \;[+ \tan(\alpha' - \rho)]
+        p = \tan(\beta - \rho) \;\text{or}\; \max(\cdot, \tan(\alpha' - \rho))
+        \;\text{or}\; \tan(\beta - \rho) + \tan(\alpha' - \rho)
 
     Parameters
     ----------
@@ -1047,6 +1237,8 @@ def torque_against_lift(
         α′, see :func:`combined_push_factor`, [rad]
     sharing : float, optional
         s = 1 for one common spring, K_r i for one spring per ball, [-]
+    construction : {"free_ball", "pressure_disc"}, optional
+        With α′: the max or the sum of the pushes (:func:`combined_push_factor`), [-]
 
     Returns
     -------
@@ -1065,7 +1257,7 @@ def torque_against_lift(
     >>> round(torque_against_lift(22.4746, math.radians(45.0), 0.05), 5)
     0.56187
     """
-    push = combined_push_factor(contact_angle, flank_friction, driving_groove_angle)
+    push = combined_push_factor(contact_angle, flank_friction, driving_groove_angle, construction)
     return _out(
         sharing * ball_circle_diameter * np.asarray(spring_force) / (2.0 * np.asarray(push))
     )
@@ -1122,12 +1314,13 @@ def friction_sensitivity(
     groove_angle: FloatArray,
     flank_friction: FloatArray,
     driving_groove_angle: FloatArray | None = None,
+    construction: str = "free_ball",
 ) -> FloatArray:
     r"""Change of the torque limit per unit change of the flank friction, dT/df.
 
     .. math::
-        \frac{dT}{df} = \frac{T}{p}\,\frac{\sec^2(\alpha'' - \rho)
-                        [+ \sec^2(\alpha' - \rho)]}{1 + f^2}
+        \frac{dT}{df} = \frac{T}{p}\,\frac{\sec^2(\alpha_{ride} - \rho)
+                        \;[+ \sec^2(\alpha' - \rho)\;\text{pressure disc}]}{1 + f^2}
 
     Parameters
     ----------
@@ -1139,6 +1332,8 @@ def friction_sensitivity(
         f, [-]
     driving_groove_angle : float or None, optional
         α′, [rad]
+    construction : {"free_ball", "pressure_disc"}, optional
+        As in :func:`combined_push_factor`, [-]
 
     Returns
     -------
@@ -1148,7 +1343,8 @@ def friction_sensitivity(
     Notes
     -----
     Derivative of T = s D0 F/(2p) with p from :func:`combined_push_factor`,
-    dρ/df = 1/(1 + f²). Near self-locking (α − ρ → 0) it grows without bound.
+    dρ/df = 1/(1 + f²); a free ball slides on its riding flank only
+    (:func:`riding_flank_angle`). Near self-locking (α − ρ → 0) it grows without bound.
 
     Examples
     --------
@@ -1156,10 +1352,13 @@ def friction_sensitivity(
     2.0
     """
     rho = np.arctan(flank_friction)
-    push = combined_push_factor(groove_angle, flank_friction, driving_groove_angle)
-    dpush = 1.0 / np.cos(np.asarray(groove_angle) - rho) ** 2  # d/dρ of tan(α − ρ)
-    if driving_groove_angle is not None:
+    push = combined_push_factor(groove_angle, flank_friction, driving_groove_angle, construction)
+    if construction == "pressure_disc" and driving_groove_angle is not None:
+        dpush = 1.0 / np.cos(np.asarray(groove_angle) - rho) ** 2  # d/dρ of tan(α − ρ)
         dpush = dpush + 1.0 / np.cos(np.asarray(driving_groove_angle) - rho) ** 2
+    else:  # the one flank the ball slides on
+        ride = np.asarray(riding_flank_angle(groove_angle, driving_groove_angle))
+        dpush = 1.0 / np.cos(ride - rho) ** 2
     return _out(np.asarray(torque) / push * dpush / (1.0 + np.asarray(flank_friction) ** 2))
 
 
@@ -1271,3 +1470,72 @@ def required_slip_torque(
     25.0
     """
     return _out(np.maximum(np.asarray(rated) * np.asarray(service_factor), start_torque))
+
+
+# --------------------------------------------------------------------------
+# The nut-runner's friction clutches [000]: torque from the clamp of their nuts
+# --------------------------------------------------------------------------
+
+#: Friction radius laws of an annular friction face.
+FRICTION_LAWS: tuple[str, ...] = ("uniform_wear", "uniform_pressure")
+
+
+def friction_clutch_torque(
+    clamp_force: FloatArray,
+    friction: FloatArray,
+    outer_diameter: FloatArray,
+    inner_diameter: FloatArray,
+    faces: FloatArray = 1,
+    law: str = "uniform_wear",
+) -> FloatArray:
+    r"""Torque a plate (diaphragm) friction clutch transmits before it slips.
+
+    .. math::
+        M_{tr} = z_f \, \mu \, F \, R_f, \qquad
+        R_f = \frac{D + d}{4} \;\text{(uniform wear)}, \qquad
+        R_f = \frac{D^3 - d^3}{3 (D^2 - d^2)} \;\text{(uniform pressure)}
+
+    Parameters
+    ----------
+    clamp_force : float
+        F, axial force the nut clamps the friction faces with, [N]
+    friction : float
+        μ, friction coefficient of the faces, [-]
+    outer_diameter : float
+        D, outer diameter of the annular contact, [m]
+    inner_diameter : float
+        d, inner diameter of the annular contact (0 for a full disc), [m]
+    faces : int, optional
+        z_f, number of friction faces the clamp force passes through, [-]
+    law : {"uniform_wear", "uniform_pressure"}, optional
+        Pressure distribution over the annulus, [-]
+
+    Returns
+    -------
+    torque : float
+        M_tr, [N*m]
+
+    Notes
+    -----
+    [000] says the friction clutches (diaphragms 11 pressed against the spindle
+    gears 5 by nuts 12) carry a small torque "regulated by the clamp force" and
+    gives no formula for it; this is the textbook plate-clutch capacity ([Bhandari],
+    chapter "Friction Clutches"): Coulomb friction of the clamp force at the friction
+    radius. Uniform wear (a worn-in clutch, p·r constant) gives the smaller
+    radius, by at most 1/3 for a full disc.
+
+    Examples
+    --------
+    >>> round(friction_clutch_torque(1000.0, 0.15, 0.06, 0.03), 6)
+    3.375
+    >>> round(friction_clutch_torque(1000.0, 0.15, 0.06, 0.03, law="uniform_pressure"), 6)
+    3.5
+    """
+    big, small = np.asarray(outer_diameter, float), np.asarray(inner_diameter, float)
+    if law == "uniform_wear":
+        radius = (big + small) / 4.0
+    elif law == "uniform_pressure":
+        radius = (big**3 - small**3) / (3.0 * (big**2 - small**2))
+    else:
+        raise ValueError(f"law must be one of {FRICTION_LAWS}, not {law!r}")
+    return _out(np.asarray(faces) * np.asarray(friction) * np.asarray(clamp_force) * radius)

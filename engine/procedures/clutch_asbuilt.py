@@ -27,12 +27,15 @@ from ..core.params import DEG, count, friction_coefficient, length, positive
 from ..core.spec import Check, Output, Param, Plot, Window
 from ..physics import springs as sp
 from ..physics.clutch import (
+    CONSTRUCTIONS,
     RECOMMENDED_SERVICE_FACTOR,
     SELF_LOCKING_MARGIN,
     friction_sensitivity,
     lift_points,
     residual_torque,
+    riding_flank_angle,
     rim_rise,
+    self_locking_margin,
     torque_against_lift,
     torque_sharing,
 )
@@ -72,13 +75,28 @@ def params() -> tuple[Param, ...]:
             "driving_groove_angle",
             "rad",
             "α′, flank angle of the driving half-coupling's groove [001, fig. 6]; absent: the "
-            "driving half pushes the ball circumferentially, as eq. 1 assumes. Given, the ball "
-            "climbs both flanks: F_a/F_t = tan(α′ − ρ) + tan(α − ρ)",
+            "driving half pushes the ball circumferentially, as eq. 1 assumes. Given, "
+            "flank_construction says how the two flanks push: a free ball rides the flatter "
+            "flank, F_a/F_t = max(tan(α′ − ρ), tan(α − ρ)); under a pressure disc it climbs "
+            "both, F_a/F_t = tan(α′ − ρ) + tan(α − ρ)",
             minimum=0.0,
             maximum=math.pi / 2,
             exclusive_maximum=True,
             display_unit="deg",
             symbol="α′",
+            group="balls",
+        ),
+        Param(
+            "flank_construction",
+            "1",
+            "with driving_groove_angle: 'free_ball', a free ball between the grooved driving "
+            "half and the spring-loaded grooved half, riding the flank that separates them "
+            "least, F_a/F_t = max(tan(α′ − ρ), tan(α − ρ)) (never under-reports the slip "
+            "torque); 'pressure_disc', axially fixed halves whose flanks both lift the ball "
+            "and a separate pressure disc, F_a/F_t = tan(α′ − ρ) + tan(α − ρ) (virtual work)",
+            default="free_ball",
+            kind="choice",
+            choices=CONSTRUCTIONS,
             group="balls",
         ),
         friction_coefficient(
@@ -107,6 +125,18 @@ def params() -> tuple[Param, ...]:
             default="custom",
             kind="choice",
             choices=MATERIAL_CHOICES,
+            group="spring",
+        ),
+        positive(
+            "spring_elastic_modulus",
+            "Pa",
+            "E of a custom helical spring's wire, used only for its buckling (EN 13906-1); "
+            "absent: E = 2 G (1 + ν) with ν = 0.3, i.e. 2.6 G (208 GPa at G = 80 GPa; "
+            "EN 13906-1 gives 206 GPa for spring steel, 185 GPa for 1.4310). Must lie within "
+            "2 G … 3 G (Poisson's ratio 0…0.5). A chosen spring_material's E overrides it",
+            maximum=1.5e12,
+            display_unit="MPa",
+            symbol="E",
             group="spring",
         ),
         Param(
@@ -356,9 +386,11 @@ class Spring:
             self.shear_modulus = (
                 x["shear_modulus"] if self.material is None else self.material.shear_modulus
             )
+            self.elastic_modulus = elastic_modulus(x, self.material)
         else:
             self.material = None
             self.shear_modulus = x["shear_modulus"]
+            self.elastic_modulus = x["disc_elastic_modulus"]
 
     def force(self, deflection: Any) -> Any:
         x = self.x
@@ -410,6 +442,29 @@ class Spring:
         return x["allowable_shear_stress"]
 
 
+#: Poisson's ratio of a custom wire when its E is not given (steels 0.27…0.30).
+CUSTOM_POISSON = 0.3
+#: E/G a custom wire may have: 2 (1 + ν) for ν from 0 to 0.5.
+ELASTIC_SHEAR_RATIO = (2.0, 3.0)
+
+
+def elastic_modulus(x: Mapping[str, Any], material: sp.SpringMaterial | None) -> Any:
+    r"""E of the helical spring's wire: the material's, the given one, or 2 G (1 + ν).
+
+    .. math::
+        E = 2 G (1 + \nu), \quad \nu = 0.3 \;\text{(custom wire, E not given)}
+
+    EN 13906-1 tabulates E and G of its spring materials (206 and 81.5 GPa for
+    patented spring steel, 185 and 70 GPa for 1.4310); for a custom wire whose E is
+    not given the isotropic relation with the steels' Poisson's ratio stands in.
+    """
+    if material is not None:
+        return material.elastic_modulus
+    if x["spring_elastic_modulus"] is not None:
+        return x["spring_elastic_modulus"]
+    return 2.0 * (1.0 + CUSTOM_POISSON) * np.asarray(x["shear_modulus"])
+
+
 def refused(x: Mapping[str, Any]) -> dict[str, Any]:
     """Where the spring's numbers are refused, by the field named: True there (floats or
     arrays). A missing input is refused by :func:`require_spring` alone (it is the same
@@ -419,10 +474,16 @@ def refused(x: Mapping[str, Any]) -> dict[str, Any]:
             return {}
         # a ring that narrow is not a disc spring (Almen–László loses all precision)
         return {"disc_inner_diameter": x["disc_inner_diameter"] * 1.05 >= x["disc_outer_diameter"]}
+    out: dict[str, Any] = {}
+    if x["spring_material"] == "custom" and x["spring_elastic_modulus"] is not None:
+        ratio = np.asarray(x["spring_elastic_modulus"]) / np.asarray(x["shear_modulus"])
+        lo, hi = ELASTIC_SHEAR_RATIO
+        out["spring_elastic_modulus"] = (ratio < lo) | (ratio > hi)
     wire = x["spring_wire_diameter"]
     if wire is None or x["spring_material"] == "custom" or np.ndim(wire) == 0:
-        return {}  # one wire: tensile_strength refuses it with the table's range
-    return {"spring_wire_diameter_table": np.isnan(sp.tensile_strength(x["spring_material"], wire))}
+        return out  # one wire: tensile_strength refuses it with the table's range
+    out["spring_wire_diameter_table"] = np.isnan(sp.tensile_strength(x["spring_material"], wire))
+    return out
 
 
 def require_spring(x: Mapping[str, Any], *, wire_needed: bool) -> None:
@@ -453,6 +514,15 @@ def require_spring(x: Mapping[str, Any], *, wire_needed: bool) -> None:
     wire, material = x["spring_wire_diameter"], x["spring_material"]
     if wire is not None and material != "custom":
         sp.tensile_strength(material, wire)  # refuses a wire outside the material's table
+    if refused(x).get("spring_elastic_modulus", False):
+        lo, hi = ELASTIC_SHEAR_RATIO
+        g = x["shear_modulus"]
+        raise InputOutOfRange(
+            f"spring_elastic_modulus = {x['spring_elastic_modulus'] / 1e6:.6g} MPa is outside "
+            f"{lo:g} G … {hi:g} G = {lo * g / 1e6:.6g} … {hi * g / 1e6:.6g} MPa for "
+            f"shear_modulus G = {g / 1e6:.6g} MPa (E = 2 G (1 + ν), Poisson's ratio ν 0…0.5)",
+            field="spring_elastic_modulus",
+        )
 
 
 # --------------------------------------------------------------------------
@@ -464,6 +534,11 @@ def _sharing(x: Mapping[str, Any]) -> Any:
     return torque_sharing(x["spring_arrangement"], x["ball_count"], x["load_factor"])
 
 
+def _ride(x: Mapping[str, Any]) -> Any:
+    """The flank (and rim) the ball climbs: :func:`riding_flank_angle`."""
+    return riding_flank_angle(x["groove_angle"], x["driving_groove_angle"], x["flank_construction"])
+
+
 def lift_of(x: Mapping[str, Any], deflection: Any = None) -> Any:
     """The flank lift h: ``ball_lift`` or, absent, the paper's Δ."""
     if x["ball_lift"] is not None:
@@ -472,12 +547,18 @@ def lift_of(x: Mapping[str, Any], deflection: Any = None) -> Any:
 
 
 def characteristic(
-    x: Mapping[str, Any], spring: Spring, deflection: Any = None, curves: bool = False
+    x: Mapping[str, Any],
+    spring: Spring,
+    deflection: Any = None,
+    curves: bool = False,
+    points: int = POINTS,
 ) -> dict[str, Any]:
     """Torque, spring force and stress against lift; arrays with the lift on the last axis.
 
     The curves themselves (keys ``_lift``, ``_torque``, ``_force``, ``_stress``) only with
-    ``curves=True``. A helical spring's stress is evaluated only where it is read (at the
+    ``curves=True``. ``points`` on the flank and as many over the rim (the outputs take
+    :data:`POINTS`; the error estimate a finer grid). A helical spring's stress is
+    evaluated only where it is read (at the
     peak torque and at the largest force, where it is largest: it is proportional to the
     force), the same floats the whole curve would hold there.
     """
@@ -486,9 +567,9 @@ def characteristic(
     # A helical spring's force rises with the lift and the flank's push is constant, so
     # on the flank the torque rises to the rim: the grid's peak and maxima lie from the
     # rim on. Without the curves, only those points are evaluated (the same floats).
-    first = POINTS - 1 if spring.kind == "helical" and not curves else 0
+    first = points - 1 if spring.kind == "helical" and not curves else 0
     lift, beta = lift_points(
-        lift_of(x, deflection), x["ball_diameter"], x["groove_angle"], POINTS, first > 0
+        lift_of(x, deflection), x["ball_diameter"], _ride(x), points, first > 0
     )
     # a swept input (an array) gets a trailing axis so it broadcasts against the lift
     x = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
@@ -506,6 +587,7 @@ def characteristic(
             x["flank_friction"],
             x["driving_groove_angle"],
             _sharing(x),
+            x["flank_construction"],
         )
     )
     peak = np.argmax(torque, axis=-1)[..., None]
@@ -523,14 +605,14 @@ def characteristic(
         def at(arr: Any, idx: Any) -> Any:
             return np.take_along_axis(np.broadcast_to(arr, torque.shape), idx, axis=-1)[..., 0]
 
-    rim = np.full_like(peak, POINTS - 1 - first)
+    rim = np.full_like(peak, points - 1 - first)
     forces = np.broadcast_to(force, torque.shape)
     out: dict[str, Any] = {
         "peak_torque": at(torque, peak),
         "lift_at_peak": at(lift, peak),
         "torque_at_rim": at(torque, rim),
         "total_lift": lift[..., -1],
-        "flank_lift": lift[..., POINTS - 1 - first],
+        "flank_lift": lift[..., points - 1 - first],
         "spring_force_at_peak": at(force, peak),
         "spring_force_max": np.max(forces, axis=-1),
     }
@@ -558,6 +640,41 @@ def characteristic(
     return out
 
 
+#: Points per branch of the finer characteristic the peak's error estimate compares with.
+FINE_POINTS = 401
+
+
+def peak_friction_shift(x: Mapping[str, Any], low: Any, high: Any) -> Any:
+    r"""Largest relative shift of the peak torque over flank frictions in [low, high].
+
+    .. math::
+        e = \frac{\max(T^*(f_{hi}) - T(f), \; T(f) - T^*(f_{lo}))
+            + \max_{f' \in \{f_{lo}, f, f_{hi}\}} |T^*(f') - T(f')|}{T(f)}
+
+    T the peak on the output's grid (:data:`POINTS`), T* on a 10× finer one
+    (:data:`FINE_POINTS`). The peak rises with the friction (every point's torque
+    does), so the band's ends are its extremes; the grid's own error T* − T, where it is
+    largest over the band (the peak may leave a grid point as the friction changes), is
+    added once more for what the finer grid still misses (a quadratic grid error: 1 %
+    of it). Floats or arrays, like :func:`characteristic`.
+    """
+
+    def peaks(f: Any) -> tuple[Any, Any]:
+        point = {**x, "flank_friction": f}
+        spring = Spring(point)
+        coarse = characteristic(point, spring)["peak_torque"]
+        fine = characteristic(point, spring, points=FINE_POINTS)["peak_torque"]
+        return np.asarray(coarse, float), np.asarray(fine, float)
+
+    (here, at), (up_c, up), (down_c, down) = (
+        peaks(x["flank_friction"]),
+        peaks(high),
+        peaks(low),
+    )
+    grid = np.maximum(np.abs(at - here), np.maximum(np.abs(up - up_c), np.abs(down - down_c)))
+    return (np.maximum(up - here, here - down) + grid) / np.abs(here)
+
+
 #: Outputs only the whole characteristic gives (its peak); :func:`end_values` gives the rest.
 PEAK_OUTPUTS = (
     "peak_torque",
@@ -577,7 +694,7 @@ def end_values(x: Mapping[str, Any], spring: Spring) -> dict[str, Any]:
     asks for none of :data:`PEAK_OUTPUTS`.
     """
     h = np.asarray(lift_of(x), float)
-    total_lift = h + rim_rise(x["ball_diameter"], x["groove_angle"])
+    total_lift = h + rim_rise(x["ball_diameter"], _ride(x))
     total = np.asarray(x["spring_deflection"], float) + total_lift
     force = spring.force(total)
     out: dict[str, Any] = {
@@ -595,12 +712,15 @@ def end_values(x: Mapping[str, Any], spring: Spring) -> dict[str, Any]:
 
 
 def margin(x: Mapping[str, Any]) -> Any:
-    """Self-locking margin α − atan f, the smaller over the inclined flanks."""
-    rho = np.arctan(x["flank_friction"])
-    m = np.asarray(x["groove_angle"]) - rho
-    if x["driving_groove_angle"] is not None:
-        m = np.minimum(m, np.asarray(x["driving_groove_angle"]) - rho)
-    return m
+    """Self-locking margin α − atan f over the flanks the ball slides on."""
+    return np.asarray(
+        self_locking_margin(
+            x["groove_angle"],
+            x["flank_friction"],
+            x["driving_groove_angle"],
+            x["flank_construction"],
+        )
+    )
 
 
 def extra_values(
@@ -618,7 +738,11 @@ def extra_values(
         values = end_values(x, spring)
     values["self_locking_margin"] = margin(x)
     values["friction_sensitivity"] = friction_sensitivity(
-        limit, x["groove_angle"], x["flank_friction"], x["driving_groove_angle"]
+        limit,
+        x["groove_angle"],
+        x["flank_friction"],
+        x["driving_groove_angle"],
+        x["flank_construction"],
     )
     if spring.kind == "helical":
         d, dm, n = x["spring_wire_diameter"], x["spring_mean_diameter"], x["spring_active_coils"]
@@ -632,15 +756,12 @@ def extra_values(
             np.ndim(a) == 0 for a in (x["spring_free_length"], dm, values["spring_force_max"])
         )
         if x["spring_free_length"] is not None:
-            e_mod = (
-                spring.material.elastic_modulus if spring.material else 2.6 * spring.shear_modulus
-            )
             s_k = sp.buckling_deflection(
                 x["spring_free_length"],
                 dm,
                 sp.SEATING_COEFFICIENTS[x["spring_seating"]],
                 spring.shear_modulus,
-                e_mod,
+                spring.elastic_modulus,
             )
             # inf: the spring cannot buckle; said as null (and in the check), never inf;
             # on arrays NaN there (null in a sweep, as the loop gives it)
@@ -715,11 +836,14 @@ def checks(
     out: list[Check] = []
     m = float(v["self_locking_margin"])
     ok = passed["self_locking"]
+    angle = "α"  # the flank the ball slides on (self_locking_margin)
+    if x["driving_groove_angle"] is not None:
+        angle = "max(α, α′)" if x["flank_construction"] == "free_ball" else "min(α, α′)"
     out.append(
         Check(
             "self_locking",
             ok,
-            f"α − atan f = {m / DEG:.3g}° "
+            f"{angle} − atan f = {m / DEG:.3g}° "
             + ("≥" if ok else "<")
             + f" {SELF_LOCKING_MARGIN / DEG:g}°; dT/df = {float(v['friction_sensitivity']):.4g} N·m"
             + (
@@ -908,11 +1032,24 @@ def notes(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[st
         f"{float(v['spring_force_max']):.4g} N ({float(v['spring_stress_max']) / 1e6:.4g} MPa) "
         "on the face. torque_limit is the zero-lift point [001, eq. 3]."
     )
-    if x["driving_groove_angle"] is not None:
+    if x["driving_groove_angle"] is not None and x["flank_construction"] == "free_ball":
+        a1, a2 = x["driving_groove_angle"] / DEG, x["groove_angle"] / DEG
+        rides = "the driving" if a1 > a2 else "the driven"
         out.append(
-            "driving_groove_angle given: the ball climbs both flanks, F_a/F_t = "
-            "tan(α′ − ρ) + tan(α − ρ) (virtual work); equal angles halve the torque of eq. 1 "
-            "for the same spring. Over the rim only the driven groove's rim is modelled."
+            f"flank_construction = free_ball, α′ = {a1:.4g}°, α = {a2:.4g}°: the free ball "
+            f"stays seated in the steeper groove and rides {rides} flank, the one that "
+            "separates the halves least (virtual work): F_a/F_t = max(tan(α′ − ρ), "
+            "tan(α − ρ)), and over that groove's rim. Were the balls lifting a separate "
+            "pressure disc on both flanks at once (flank_construction = pressure_disc), "
+            "the pushes would add and the same spring would slip at a lower torque."
+        )
+    elif x["driving_groove_angle"] is not None:
+        out.append(
+            "flank_construction = pressure_disc: the halves stay put and the ball climbs both "
+            "flanks, lifting the disc: F_a/F_t = tan(α′ − ρ) + tan(α − ρ) (virtual work); "
+            "equal angles halve the torque of eq. 1 for the same spring. Over the rim only "
+            "the driven groove's rim is modelled. A free ball between a fixed and a "
+            "spring-loaded grooved half (free_ball) would ride one flank: max, not the sum."
         )
     if spring.kind == "helical" and spring.material is not None:
         out.append(
@@ -920,6 +1057,16 @@ def notes(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[st
             f"(overrides shear_modulus), permissible τ = 0.5 R_m(d) (EN 13906-1), compared with "
             f"the {x['stress_correction']}-corrected stress, stricter than the standard's "
             "static check"
+        )
+    if spring.kind == "helical" and spring.material is None and x["spring_free_length"]:
+        given = x["spring_elastic_modulus"] is not None
+        out.append(
+            f"custom wire: buckling with E = {float(spring.elastic_modulus) / 1e9:.4g} GPa "
+            + (
+                "(spring_elastic_modulus)"
+                if given
+                else f"= 2 G (1 + ν), ν = {CUSTOM_POISSON:g}, not given (spring_elastic_modulus)"
+            )
         )
     if spring.kind == "disc":
         out.append(
@@ -1343,7 +1490,7 @@ class SettingGrid:
         given = x["ball_lift"] is not None
         # from the rim on (the flank's lines lie below the rim's): q_k, the lift at δ = 0
         self.q, beta = lift_points(
-            x["ball_lift"] if given else 0.0, x["ball_diameter"], x["groove_angle"], POINTS, True
+            x["ball_lift"] if given else 0.0, x["ball_diameter"], _ride(x), POINTS, True
         )
         self.share = 1.0 if given else 0.5  # 1/(1 + p)
         xs = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
@@ -1355,6 +1502,7 @@ class SettingGrid:
                 xs["flank_friction"],
                 xs["driving_groove_angle"],
                 _sharing(xs),
+                x["flank_construction"],
             )
         )
         # the lines rise with δ only where every push is positive and finite

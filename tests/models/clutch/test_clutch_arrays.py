@@ -320,10 +320,13 @@ def test_long_columns_are_evaluated_in_chunks_with_the_same_numbers():
 
 
 def test_a_driving_flank_steeper_than_the_friction_angle_falls_back_per_point():
-    # α′ = 0.6° < ρ = 16.7°: the driving flank pulls, some lines fall with δ; those points
-    # are solved by the scalar root search inside the array path, the rest by the lines
+    # α′ = 0.6° < ρ = 16.7° under a pressure disc (the pushes add): the driving flank
+    # pulls, some lines fall with δ; those points are solved by the scalar root search
+    # inside the array path, the rest by the lines (a free ball rides the driven flank:
+    # every line rises there)
     base = {
         **BALL_CLUTCH_SETTING.examples[1],
+        "flank_construction": "pressure_disc",
         "driving_groove_angle": 0.01,
         "flank_friction": 0.3,
         "target_torque": 2.0,

@@ -67,14 +67,45 @@ def test_driving_flank_angle_limits():
     # a driving wall parallel to the axis, no friction: today's eq. 1 exactly
     v = run(BALL_CLUTCH, PAPER, driving_groove_angle=0.0).results
     assert v["torque_limit"] == pytest.approx(TODAY, rel=1e-12)
-    # equal inclined flanks: the ball climbs both, twice the push, half the torque
-    v = run(BALL_CLUTCH, PAPER, driving_groove_angle=45 * DEG).results
+    # under a pressure disc, equal inclined flanks: the ball climbs both, twice the push,
+    # half the torque
+    disc = {**PAPER, "flank_construction": "pressure_disc"}
+    v = run(BALL_CLUTCH, disc, driving_groove_angle=45 * DEG).results
     assert v["torque_limit"] == pytest.approx(TODAY / 2, rel=1e-12)
     # α′ = 30°, α″ = 60°: push tan 30° + tan 60° = 4/√3
-    v = run(BALL_CLUTCH, {**PAPER, "groove_angle": 60 * DEG}, driving_groove_angle=30 * DEG)
+    v = run(BALL_CLUTCH, {**disc, "groove_angle": 60 * DEG}, driving_groove_angle=30 * DEG)
     assert v.results["torque_limit"] == pytest.approx(
         0.05 * C * 0.004 / 2 / (4 / math.sqrt(3)), rel=1e-12
     )
+    # a free ball (the default) rides the flatter flank: push max(tan 30°, tan 60°) = √3
+    v = run(BALL_CLUTCH, {**PAPER, "groove_angle": 60 * DEG}, driving_groove_angle=30 * DEG)
+    assert v.results["torque_limit"] == pytest.approx(
+        0.05 * C * 0.004 / 2 / math.sqrt(3), rel=1e-12
+    )
+
+
+def _numbers(result):
+    return {k: v for k, v in result.results.items() if isinstance(v, float)}
+
+
+def test_a_free_ball_is_the_one_flank_clutch_of_the_flatter_flank():
+    # α′ ≤ α″: the ball never leaves the driving groove, every number is the plain clutch's
+    plain = run(BALL_CLUTCH, ORDINARY)
+    steep = run(BALL_CLUTCH, ORDINARY, driving_groove_angle=20 * DEG)
+    assert _numbers(steep) == _numbers(plain)
+    # α′ > α″: it rides the driving flank and over its rim, as a clutch of groove angle α′
+    flat = run(BALL_CLUTCH, ORDINARY, groove_angle=40 * DEG, driving_groove_angle=55 * DEG)
+    same = run(BALL_CLUTCH, ORDINARY, groove_angle=55 * DEG)
+    assert _numbers(flat) == pytest.approx(_numbers(same), rel=1e-14)
+    rate = 81.5e9 * 0.004**4 / (8 * 0.032**3 * 8)
+    # by hand: peak at the rim, force c (30 + 2) mm over tan(55° − atan 0.1)
+    peak = 0.05 * rate * 0.032 / (2 * math.tan(55 * DEG - math.atan(0.1)))
+    assert flat.results["peak_torque"] == pytest.approx(peak, rel=1e-12)
+    assert flat.results["total_lift"] == pytest.approx(
+        0.002 + 0.005 * (1 - math.sin(55 * DEG)), rel=1e-12
+    )
+    note = next(n for n in flat.notes if "free_ball" in n)
+    assert "rides the driving flank" in note
 
 
 def test_self_locking_check_and_sensitivity():
@@ -424,3 +455,72 @@ def test_the_suggestions_are_the_first_candidates_that_pass_by_a_search_of_our_o
     assert want_pack is not None and more["suggested_disc_parallel"] == want_pack[0]
     pack = more["suggested_disc_setting"]
     pin("clutch.ball_setting", "suggested_disc_setting", pack, want_pack[1], rel=1e-9)
+
+
+def test_the_wire_stress_follows_the_chosen_correction():
+    # EN 13906-1: τ_k = k 8 F D/(π d³); w = 32/4 = 8, Bergsträsser k = 8.5/7.25, Wahl
+    # k = 31/28 + 0.615/8; the ordinary spring at 30 mm
+    rate = 81.5e9 * 0.004**4 / (8 * 0.032**3 * 8)
+    nominal = 8 * rate * 0.030 * 0.032 / (math.pi * 0.004**3)
+    k_b, k_w = 8.5 / 7.25, 31 / 28 + 0.615 / 8
+    b = run(BALL_CLUTCH, ORDINARY, stress_correction="bergstrasser").results
+    w = run(BALL_CLUTCH, ORDINARY).results
+    pin("clutch.ball", "spring_shear_stress", b["spring_shear_stress"], k_b * nominal, rel=1e-12)
+    pin("clutch.ball", "spring_shear_stress", w["spring_shear_stress"], k_w * nominal, rel=1e-12)
+    assert k_b * nominal / 1e6 == pytest.approx(445.53, abs=0.01)  # vs 449.94 (Wahl)
+    # the setting's stresses too: the required force 2 T tan(45° − atan 0.1)/D0 at 1 N·m
+    design = {k: v for k, v in ORDINARY.items() if k != "spring_deflection"}
+    s = run(BALL_CLUTCH_SETTING, design, target_torque=1.0, stress_correction="bergstrasser")
+    force = 2 * 1.0 * math.tan(45 * DEG - math.atan(0.1)) / 0.05
+    pin(
+        "clutch.ball_setting",
+        "spring_shear_stress",
+        s.results["spring_shear_stress"],
+        k_b * 8 * force * 0.032 / (math.pi * 0.004**3),
+        rel=1e-12,
+    )
+
+
+def _buckling_by_hand(l0, dm, nu, g, e):
+    """EN 13906-1: s_K = L0 (1 − √(1 − (1 − G/E)/(0.5 + G/E) (π D/(ν L0))²)) 0.5/(1 − G/E)."""
+    ratio = g / e
+    root = 1 - (1 - ratio) / (0.5 + ratio) * (math.pi * dm / (nu * l0)) ** 2
+    return l0 * 0.5 / (1 - ratio) * (1 - math.sqrt(root))
+
+
+def test_a_custom_wires_elastic_modulus_is_an_input():
+    slender = {
+        **ORDINARY,
+        "spring_material": "custom",
+        "shear_modulus": 8e10,
+        "allowable_shear_stress": 8e8,
+        "spring_free_length": 0.30,
+        "spring_seating": "fixed_free",
+    }
+    # absent: E = 2 G (1 + 0.3) = 208 GPa, said in the notes
+    r = run(BALL_CLUTCH, slender)
+    want = _buckling_by_hand(0.30, 0.032, 2.0, 8e10, 208e9)
+    pin("clutch.ball", "buckling_deflection", r.results["buckling_deflection"], want, rel=1e-12)
+    assert any("E = 208 GPa = 2 G (1 + ν)" in n for n in r.notes)
+    # given: EN 13906-1's 206 GPa for spring steel moves s_K
+    r = run(BALL_CLUTCH, slender, spring_elastic_modulus=206e9)
+    want = _buckling_by_hand(0.30, 0.032, 2.0, 8e10, 206e9)
+    pin("clutch.ball", "buckling_deflection", r.results["buckling_deflection"], want, rel=1e-12)
+    assert r.results["buckling_deflection"] * 1e3 == pytest.approx(want * 1e3)
+    # a material's E overrides it (EN 13906-1: 206 GPa for DH wire)
+    dh = run(BALL_CLUTCH, ORDINARY, spring_free_length=0.30, spring_seating="fixed_free")
+    with_e = run(
+        BALL_CLUTCH,
+        ORDINARY,
+        spring_free_length=0.30,
+        spring_seating="fixed_free",
+        spring_elastic_modulus=190e9,
+    )
+    want = _buckling_by_hand(0.30, 0.032, 2.0, 81.5e9, 206e9)
+    assert dh.results["buckling_deflection"] == pytest.approx(want, rel=1e-12)
+    assert with_e.results["buckling_deflection"] == dh.results["buckling_deflection"]
+    # outside 2 G … 3 G (Poisson's ratio 0…0.5): refused, naming the field and the range
+    for e in (1.5e11, 2.5e11):
+        with pytest.raises(engine.InputOutOfRange, match="160000 … 240000 MPa") as err:
+            run(BALL_CLUTCH, slender, spring_elastic_modulus=e)
+        assert err.value.field == "spring_elastic_modulus"
