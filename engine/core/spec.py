@@ -236,6 +236,35 @@ class Output:
         }
 
 
+class Scratch:
+    """Work one request shares between its steps, for the inputs of that request only.
+
+    The runner makes one for each :func:`engine.run` (its rung estimates and its
+    compute) and one for each array evaluation of a sweep chunk; it dies with the
+    request, so nothing a model leaves here reaches another request. A model keys what
+    it leaves by a name of its own (the inputs are the request's, the same for every
+    step that sees this scratch):
+
+    >>> s = Scratch()
+    >>> calls = []
+    >>> s.once("bolt", lambda: calls.append(1) or 42), s.once("bolt", lambda: 0), calls
+    (42, 42, [1])
+    """
+
+    __slots__ = ("_memo",)
+
+    def __init__(self) -> None:
+        self._memo: dict[str, Any] = {}
+
+    def once(self, key: str, compute: Callable[[], Any]) -> Any:
+        """``compute()`` the first time ``key`` is asked for in this request, then its value."""
+        memo = self._memo
+        if key in memo:
+            return memo[key]
+        value = memo[key] = compute()
+        return value
+
+
 @dataclass(frozen=True)
 class Rung:
     """One way of computing a model, cheapest first in :attr:`ModelSpec.rungs`.
@@ -257,6 +286,17 @@ class Rung:
     #: allowed), provided that rung's estimated error for these inputs is no larger
     #: than this one's. The result names the rung that ran and says why.
     fallback: str | None = None
+    #: ``estimate`` with the request's :class:`Scratch`: work it does for the inputs (a
+    #: resolved bolt, a cycle) is left there for the compute of the same request. When
+    #: given, the runner calls this instead of :attr:`estimate` (which then serves
+    #: callers without a request, as the same function on a scratch of its own).
+    shared_estimate: Callable[[Mapping[str, Any], Scratch], Any] | None = None
+
+    def estimate_in(self, inputs: Mapping[str, Any], scratch: Scratch) -> Any:
+        """The estimate for ``inputs`` within a request whose work ``scratch`` holds."""
+        if self.shared_estimate is None:
+            return self.estimate(inputs)
+        return self.shared_estimate(inputs, scratch)
 
     def describe(self) -> dict[str, Any]:
         return {
@@ -311,6 +351,13 @@ class RunContext:
     #: Set by the caller to withdraw the request; long computations test it where they
     #: test ``deadline`` (:meth:`check_budget`) and raise :class:`Cancelled`.
     cancel: threading.Event | None = None
+    #: The request's shared work (:class:`Scratch`): a step computed once for the
+    #: estimate and the compute of one request, gone when the request is.
+    scratch: Scratch = field(default_factory=Scratch)
+
+    def once(self, key: str, compute: Callable[[], Any]) -> Any:
+        """``compute()`` once per request: :meth:`Scratch.once` of :attr:`scratch`."""
+        return self.scratch.once(key, compute)
 
     def check_budget(self, what: str = "the computation") -> None:
         """Raise Cancelled if the caller withdrew, BudgetExceeded past the deadline."""

@@ -9,7 +9,6 @@ calls those functions and says where every number came from.
 from __future__ import annotations
 
 import math
-import threading
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, replace
 from typing import Any
@@ -18,7 +17,17 @@ import numpy as np
 
 from ..core.errors import EngineError, InputOutOfRange
 from ..core.params import count, friction_coefficient
-from ..core.spec import Check, ModelSpec, Output, Param, Plot, Result, RunContext, Rung
+from ..core.spec import (
+    Check,
+    ModelSpec,
+    Output,
+    Param,
+    Plot,
+    Result,
+    RunContext,
+    Rung,
+    Scratch,
+)
 from ..physics import fasteners as fa
 from ..physics import joint as jt
 from ..physics import preload as pl
@@ -448,33 +457,16 @@ def _resolve_design(x: Mapping[str, Any]) -> _Design:
     )
 
 
-class _Handoff(threading.local):
-    """The design the rung estimate resolved, handed to the run of the same request.
+def _design(x: Mapping[str, Any], scratch: Scratch) -> _Design:
+    """The request's design, resolved once: the rung estimate and the run share it.
 
-    The runner asks the rung for its estimate, then runs the model, with the same
-    validated inputs. The estimate leaves its :class:`_Design` here with those inputs'
-    items; :func:`_handed_off` gives it to the run (and empties the slot) when the
-    run's inputs have the same items, in the same thread, so the request resolves its
-    bolt once. The slot is matched by value, never by identity, holds one design per
-    thread and is emptied when read: a later request, or one with other inputs,
-    resolves its own.
+    Through the request's ``scratch`` (:class:`~engine.core.spec.Scratch`), which lives
+    for one run: a later request, or one with other inputs, resolves its own.
     """
-
-    items: tuple[tuple[str, Any], ...] | None = None
-    design: _Design | None = None
+    return scratch.once("preload.design", lambda: _resolve_design(x))
 
 
-_HANDOFF = _Handoff()
-
-
-def _handed_off(x: Mapping[str, Any]) -> _Design | None:
-    """The design the rung estimate left for these inputs, or None; the slot is emptied."""
-    slot = _HANDOFF
-    found, slot.items, design, slot.design = slot.items, None, slot.design, None
-    return design if design is not None and found == tuple(x.items()) else None
-
-
-def _rung_estimate(x: Mapping[str, Any]) -> Any:
+def _rung_estimate(x: Mapping[str, Any], scratch: Scratch) -> Any:
     """The closed form's error estimate: a float, or an array where inputs are arrays."""
     try:
         n = _points(x)
@@ -484,11 +476,9 @@ def _rung_estimate(x: Mapping[str, Any]) -> Any:
                 bolt_arrays, x["thread_friction"], x["bearing_friction"], str(x["torque_formula"])
             )
             return np.where(bolt_arrays.ok, dev, np.nan)
-        design = _resolve_design(x)
+        return _design(x, scratch).deviation
     except (EngineError, KeyError, TypeError, ValueError):
         return None
-    _HANDOFF.items, _HANDOFF.design = tuple(x.items()), design
-    return design.deviation
 
 
 # --------------------------------------------------------------------------- array path
@@ -683,9 +673,10 @@ CLOSED_FORM = Rung(
     "from the exact thread and annular-face relations of [004, eq. 10–13] for these inputs "
     "(0 for 'exact'). It does not include the scatter of the friction coefficients, which "
     "dominates in practice (±30 % at a fixed torque, [004, fig. 5]).",
-    _rung_estimate,
+    lambda x: _rung_estimate(x, Scratch()),
     typical_error="0 (exact) … ~1 % (vdi2230) … a few % (approx), against the exact relations",
     typical_time="< 1 ms",
+    shared_estimate=_rung_estimate,
 )
 
 # --------------------------------------------------------------------------- tightening
@@ -780,8 +771,8 @@ def _tightening_values(
 
 
 def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    design = _handed_off(x)
-    bolt, notes = (design.bolt, list(design.notes)) if design else resolve_bolt(x)
+    design = _design(x, ctx.scratch)
+    bolt, notes = design.bolt, list(design.notes)
     checks: list[Check] = []
     values = {k: float(v) for k, v in _tightening_values(x, bolt, design).items()}
     force, total = values["assembly_preload"], values["tightening_torque"]
@@ -1372,8 +1363,8 @@ def _method_band(
 
 
 def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    design = _handed_off(x)
-    bolt, notes = (design.bolt, list(design.notes)) if design else resolve_bolt(x)
+    design = _design(x, ctx.scratch)
+    bolt, notes = design.bolt, list(design.notes)
     warnings: list[str] = []
     checks: list[Check] = []
     method = get_method(str(x["method"]))
