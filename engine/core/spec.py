@@ -20,7 +20,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
-from .equations import equations_of
+from .equations import equations_of, equations_of_steps
 from .errors import BudgetExceeded, Cancelled, InputOutOfRange
 from .sources import SOURCES, cited_ids
 
@@ -291,6 +291,11 @@ class Rung:
     #: given, the runner calls this instead of :attr:`estimate` (which then serves
     #: callers without a request, as the same function on a scratch of its own).
     shared_estimate: Callable[[Mapping[str, Any], Scratch], Any] | None = None
+    #: The procedure this rung runs, in its order: the functions (a procedure's steps,
+    #: the adapter's output lines) whose equations, and their callees', the calculation
+    #: report lists when this rung produced the result. Empty: the model's compute,
+    #: every rung's steps together.
+    steps: tuple[Callable[..., Any], ...] = ()
 
     def estimate_in(self, inputs: Mapping[str, Any], scratch: Scratch) -> Any:
         """The estimate for ``inputs`` within a request whose work ``scratch`` holds."""
@@ -305,6 +310,12 @@ class Rung:
             "typical_error": self.typical_error,
             "typical_time": self.typical_time,
             "fallback": self.fallback,
+            # the equations of this rung's steps, for the report of a result it produced
+            **(
+                {"equations": [dict(e) for e in equations_of_steps(self.steps)]}
+                if self.steps
+                else {}
+            ),
         }
 
 
@@ -544,6 +555,13 @@ class ModelSpec:
         advice.sort(key=lambda item: item[0])
         return values, [w for _, w in advice]
 
+    def equations(self, rung: str | None = None) -> tuple[dict[str, Any], ...]:
+        """The equations the calculation report lists for a result of ``rung``, in the
+        order of its procedure: the rung's declared :attr:`Rung.steps`, else (and for
+        ``rung`` None) every equation the model's compute reaches."""
+        steps = () if rung is None else self.rung(rung).steps
+        return equations_of_steps(steps) if steps else equations_of(self.compute)
+
     def describe(self) -> dict[str, Any]:
         """JSON-ready catalogue entry (``GET /api/v1/models``)."""
         return {
@@ -563,7 +581,7 @@ class ModelSpec:
             "assumptions": list(self.assumptions),
             "examples": [dict(e) for e in self.examples],
             # read from the engine functions' docstrings, for the calculation report
-            "equations": [dict(e) for e in equations_of(self.compute)],
+            "equations": [dict(e) for e in self.equations()],
         }
 
 

@@ -254,38 +254,38 @@ def _deviation(
 
 @dataclass(frozen=True)
 class _Design:
-    """One design's bolt and torque coefficients, as both the rung estimate and the run need."""
+    """One design's bolt and the notes of its resolution, as the rung estimate and the run
+    of one request share them."""
 
     bolt: Bolt
     notes: tuple[str, ...]
-    #: (k_G, k_K, R) of the torque formula.
-    coefficients: tuple[float, float, float]
-    #: |M(torque_formula) − M(exact)| / M(exact), the closed form's error estimate.
-    deviation: float
 
 
 def _torque_terms(
-    x: Mapping[str, Any], bolt: Bolt | BoltArrays, design: _Design | None = None
+    x: Mapping[str, Any], bolt: Bolt | BoltArrays
 ) -> tuple[tuple[Any, Any, Any], Any]:
     """(k_G, k_K, R) of the torque formula and its deviation from the exact relations.
 
-    VDI 2230-1 R13 / [004, eq. 10–15] on floats or arrays; a single design's come from
-    ``design`` where the rung estimate computed them for the same request.
+    VDI 2230-1 R13 / [004, eq. 10–15] on floats or arrays.
     """
-    if design is not None:
-        return design.coefficients, design.deviation
     mu_g, mu_k, formula = x["thread_friction"], x["bearing_friction"], str(x["torque_formula"])
     coefficients = torque_coefficients_raw(bolt, mu_g, mu_k, formula)
     return coefficients, _deviation(bolt, mu_g, mu_k, formula, coefficients[0] + coefficients[1])
 
 
+def _request_torque_terms(
+    x: Mapping[str, Any], bolt: Bolt | BoltArrays, scratch: Scratch | None
+) -> tuple[tuple[Any, Any, Any], Any]:
+    """:func:`_torque_terms` once per request: the rung estimate's, where it ran first."""
+    if scratch is None:
+        return _torque_terms(x, bolt)
+    return scratch.once("preload.torque terms", lambda: _torque_terms(x, bolt))
+
+
 def _resolve_design(x: Mapping[str, Any]) -> _Design:
-    """The bolt (resolved once) and each torque coefficient (computed once) of a design."""
+    """The bolt of a design and the notes naming each standard value used."""
     bolt, notes = resolve_bolt(x)
-    (k_thread, k_bearing, radius), deviation = _torque_terms(x, bolt)
-    return _Design(
-        bolt, tuple(notes), (float(k_thread), float(k_bearing), float(radius)), float(deviation)
-    )
+    return _Design(bolt, tuple(notes))
 
 
 def _design(x: Mapping[str, Any], scratch: Scratch) -> _Design:
@@ -307,7 +307,8 @@ def _rung_estimate(x: Mapping[str, Any], scratch: Scratch) -> Any:
                 bolt_arrays, x["thread_friction"], x["bearing_friction"], str(x["torque_formula"])
             )
             return np.where(bolt_arrays.ok, dev, np.nan)
-        return _design(x, scratch).deviation
+        bolt = _design(x, scratch).bolt
+        return float(_request_torque_terms(x, bolt, scratch)[1])
     except (EngineError, KeyError, TypeError, ValueError):
         return None
 
@@ -409,13 +410,13 @@ def _add_bought_part_checks(
 
 
 def _tightening_values(
-    x: Mapping[str, Any], bolt: Bolt | BoltArrays, design: _Design | None = None
+    x: Mapping[str, Any], bolt: Bolt | BoltArrays, scratch: Scratch | None = None
 ) -> dict[str, Any]:
     """The numbers of ``preload.tightening``, on floats (one design) or arrays (many).
 
     The single run and the array path both come here, so one set of lines gives
     every number, in the order of the procedure: R7's preload, then R13's torque
-    (:func:`_torque_terms`, the design's where the rung estimate computed them).
+    (:func:`_torque_terms`, once per request: with ``scratch``, the rung estimate's).
     """
     beta = pl.torsion_factor(
         bolt.pitch,
@@ -427,7 +428,7 @@ def _tightening_values(
     permissible = pl.assembly_preload(bolt.yield_strength, bolt.stress_area, beta, x["utilization"])
     force = permissible if x.get("preload") is None else x["preload"]
     sigma_eq = pl.equivalent_stress(force, bolt.stress_area, beta)
-    (k_thread, k_bearing, radius), deviation = _torque_terms(x, bolt, design)
+    (k_thread, k_bearing, radius), deviation = _request_torque_terms(x, bolt, scratch)
     m_thread, m_bearing = force * k_thread, force * k_bearing
     total = m_thread + m_bearing
     ideal = pl.ideal_torque(force, bolt.pitch)
@@ -466,7 +467,7 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
     design = _design(x, ctx.scratch)
     bolt, notes = design.bolt, list(design.notes)
     checks: list[Check] = []
-    values = {k: float(v) for k, v in _tightening_values(x, bolt, design).items()}
+    values = {k: float(v) for k, v in _tightening_values(x, bolt, ctx.scratch).items()}
     force, total = values["assembly_preload"], values["tightening_torque"]
     sigma_eq, share = values["equivalent_stress"], values["ideal_torque_share"]
     if x.get("preload") is not None:
@@ -968,14 +969,14 @@ def _control_values(
     bolt: Bolt | BoltArrays,
     method: ControlMethod,
     section: tuple[Any, Any],
-    design: _Design | None = None,
+    scratch: Scratch | None = None,
 ) -> tuple[dict[str, Any], Any]:
     """The preload band and target of ``preload.control``, on floats or arrays.
 
     ``section`` is (d_0, A_0) of the smallest section. VDI 2230-1 R7 at the smallest
     section ([004, eq. 3–4]), the method's band, [004, eq. 2]'s required preload, then
-    R13's torque for the nominal preload (:func:`_torque_terms`, the design's where the
-    rung estimate computed them); also the torque formula's deviation from the exact one.
+    R13's torque for the nominal preload (:func:`_torque_terms`, once per request: with
+    ``scratch``, the rung estimate's); also the torque formula's deviation from the exact one.
     """
     d0, area0 = section
     beta = pl.torsion_factor(
@@ -986,7 +987,7 @@ def _control_values(
     lo_factor, _ = pl.preload_factor_range(str(x["load_type"]))
     factor = lo_factor if x.get("preload_factor") is None else x["preload_factor"]
     nominal, f_min, f_max = _method_band(method, permissible, at_yield, x.get("preload"))
-    (k_thread, k_bearing, _), deviation = _torque_terms(x, bolt, design)
+    (k_thread, k_bearing, _), deviation = _request_torque_terms(x, bolt, scratch)
     values = {
         "controlled_quantity": method.controls,
         "target_torque": nominal * (k_thread + k_bearing),
@@ -1074,7 +1075,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"{bolt.stress_diameter * 1e3:.4g} mm: the permissible and yield preloads use "
             f"A_0 = {area0 * 1e6:.4g} mm² and W_p = π d_0³/16 (VDI 2230-1 R7; [004, eq. 3–4])"
         )
-    shared, deviation = _control_values(x, bolt, method, (d0, area0), design)
+    shared, deviation = _control_values(x, bolt, method, (d0, area0), ctx.scratch)
     values = _plain(shared)
     permissible, at_yield = values["permissible_preload"], values["yield_preload"]
     nominal, f_min, f_max = values["nominal_preload"], values["preload_min"], values["preload_max"]

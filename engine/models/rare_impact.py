@@ -1085,6 +1085,13 @@ RARE_IMPACT = ModelSpec(
             "simulation over a grid)",
             typical_time="~60 µs",
             shared_estimate=_closed_form_estimate,
+            steps=(
+                closed_form_cycle_array,
+                closed_form_errors,
+                _outputs,
+                design_checks,
+                _geometry_note,
+            ),
         ),
         Rung(
             "simulation",
@@ -1095,6 +1102,7 @@ RARE_IMPACT = ModelSpec(
             typical_time="~1 ms (plus a one-off numba load in a fresh process)",
             heavy=True,
             fallback="closed_form",
+            steps=(simulate_cycle, _outputs, design_checks, _geometry_note),
         ),
     ),
     compute=_compute,
