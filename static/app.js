@@ -1539,7 +1539,10 @@ function renderReport(m) {
     `${now.toISOString().slice(0, 16).replace("T", " ")} UTC · service ${state.version || "?"} · model `,
     el("code", {}, m.name), " · ", el("a", { href: location.href, class: "report-link" }, "link to this calculation"));
   const sources = (m.sources || []).map((x) => el("li", {}, String(x.reference).startsWith("[") ? x.reference : `[${x.id}] ${x.reference}`));
-  const eqs = (m.equations || []).map((e) => el("div", { class: "eq-row" },
+  // the equations of the steps of the rung that produced this result (the model's all when
+  // the rung declares none), in the order of its procedure
+  const ran = (m.rungs || []).find((r) => r.name === data.rung);
+  const eqs = ((ran && ran.equations) || m.equations || []).map((e) => el("div", { class: "eq-row" },
     el("p", { class: "eq-what" }, e.summary.replace(/\s*\[[^\]]*\]\.?$/, ""), e.source ? el("span", { class: "muted" }, ` ${e.source}`) : null),
     ...e.latex.map(equationNode)));
   const seriesBox = el("div", { class: "plots report-plots" });

@@ -15,7 +15,7 @@ from __future__ import annotations
 import inspect
 import re
 import types
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from functools import lru_cache
 from typing import Any
 
@@ -105,4 +105,24 @@ def equations_of(fn: Callable[..., Any]) -> tuple[dict[str, Any], ...]:
             visit(g)
 
     visit(fn)
+    return tuple(out)
+
+
+def equations_of_steps(steps: Sequence[Callable[..., Any]]) -> tuple[dict[str, Any], ...]:
+    """:func:`equations_of` of each step in turn, each function once: the equations of a
+    procedure declared as its ordered steps (:attr:`engine.core.spec.Rung.steps`).
+
+    >>> from engine.physics import preload
+    >>> eqs = equations_of_steps([preload.lead_angle, preload.thread_torque])
+    >>> [e["function"] for e in eqs]
+    ['lead_angle', 'thread_torque', 'thread_friction_angle']
+    """
+    seen: set[tuple[str, str]] = set()
+    out: list[dict[str, Any]] = []
+    for step in steps:
+        for e in equations_of(step):
+            key = (e["module"], e["function"])
+            if key not in seen:
+                seen.add(key)
+                out.append(e)
     return tuple(out)

@@ -12,13 +12,13 @@ bookkeeping.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
 
 from .errors import EngineError
-from .spec import ModelSpec, Param, RunContext
+from .spec import ModelSpec, Param, RunContext, Scratch
 
 _ESTIMATE_FAILS = (TypeError, ValueError, ArithmeticError)
 
@@ -40,6 +40,7 @@ def rung_estimates(
     which: Sequence[int] | None = None,
     point: Callable[[int], Mapping[str, Any]] | None = None,
     refused: np.ndarray | None = None,
+    scratch: Scratch | None = None,
 ) -> dict[int, np.ndarray | None] | None:
     """Each rung's a-priori error estimate at the ``n`` points of ``x``, as arrays.
 
@@ -51,14 +52,17 @@ def rung_estimates(
     whole answer is None. With ``point``, an estimate that refuses the arrays
     (EngineError) is also called per point; a point it refuses is NaN there and
     marked True in ``refused`` (the caller runs it alone, to report why).
+    ``scratch`` is the chunk's: the arrays' estimates leave their work there for
+    :func:`vector` on the same ``x``.
     """
+    shared = Scratch() if scratch is None else scratch
     fails = _ESTIMATE_FAILS if point is None else (*_ESTIMATE_FAILS, EngineError)
     out: dict[int, np.ndarray | None] = {}
     for i in range(len(spec.rungs)) if which is None else which:
         rung = spec.rungs[i]
         try:
             with np.errstate(all="ignore"):
-                est = rung.estimate(x)
+                est = rung.estimate_in(x, shared)
         except fails:
             if point is None:
                 return None
@@ -150,6 +154,7 @@ def vector(
     tol: float,
     n: int,
     dtype: Any = float,
+    scratch: Scratch | None = None,
 ) -> Vector | None:
     """The array path for ``n`` points, or None where the model has none for this rung.
 
@@ -157,11 +162,17 @@ def vector(
     if the scalar model gives it for this rung, the answer is None (the caller loops).
     An output the array version sets to None is one it knows the scalar model does not
     give for these inputs (a NaN column, not in ``computed``, and no scalar probe).
-    ``dtype=None`` keeps each column's own type (integers stay integers).
+    ``dtype=None`` keeps each column's own type (integers stay integers). ``scratch``
+    is what :func:`rung_estimates` left for the same ``x`` (a new one when None).
     """
     if spec.vectorized is None or rung not in spec.vector_rungs:
         return None
-    ctx = RunContext(rung=rung, outputs=frozenset(outputs), tolerance=tol)
+    ctx = RunContext(
+        rung=rung,
+        outputs=frozenset(outputs),
+        tolerance=tol,
+        scratch=Scratch() if scratch is None else scratch,
+    )
     try:
         with np.errstate(all="ignore"):
             result = spec.vectorized(x, ctx)
@@ -208,7 +219,7 @@ def scalar_gives(
     """Whether the scalar model gives any of ``names`` at the first point of ``x``."""
     first = {k: (v.flat[0].item() if isinstance(v, np.ndarray) else v) for k, v in x.items()}
     try:
-        values = spec.compute(first, ctx).values
+        values = spec.compute(first, replace(ctx, scratch=Scratch())).values
     except EngineError:
         return False
     return any(values.get(name) is not None for name in names)

@@ -21,7 +21,7 @@ import numpy as np
 
 from . import points
 from .errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange, SolverFailed
-from .spec import Check, ModelSpec, Param, RunContext, Rung, Value
+from .spec import Check, ModelSpec, Param, RunContext, Rung, Scratch, Value
 
 DEFAULT_TOLERANCE = 0.01
 MAX_SWEEP_POINTS = 2000
@@ -140,7 +140,11 @@ def _fidelity(spec: ModelSpec, fidelity: str | None, tolerance: float | None) ->
 
 
 def choose_rung(
-    spec: ModelSpec, inputs: Mapping[str, Any], fidelity: str, tolerance: float
+    spec: ModelSpec,
+    inputs: Mapping[str, Any],
+    fidelity: str,
+    tolerance: float,
+    scratch: Scratch | None = None,
 ) -> tuple[str, list[str]]:
     """Pick the rung to run and say why.
 
@@ -149,6 +153,8 @@ def choose_rung(
     ``tolerance``; if none is, the most accurate applicable rung runs and the
     note says the tolerance was not met. Where the chosen rung's estimate is typical,
     not a bound (:attr:`Rung.estimate_kind`), the note says so and how often it is exceeded.
+    note says the tolerance was not met. The estimates leave their work in
+    ``scratch`` (the request's) for the compute.
     """
     if fidelity != "auto":
         if fidelity not in spec.rung_names:
@@ -159,8 +165,9 @@ def choose_rung(
             )
         return fidelity, []
     applicable: list[tuple[str, float]] = []
+    shared = Scratch() if scratch is None else scratch
     for rung in spec.rungs:
-        estimate = rung.estimate(inputs)
+        estimate = rung.estimate_in(inputs, shared)
         if estimate is None or not math.isfinite(estimate):
             continue
         applicable.append((rung.name, estimate))
@@ -192,6 +199,7 @@ def _fallback(
     exc: BudgetExceeded,
     *,
     auto: bool = False,
+    scratch: Scratch | None = None,
 ) -> tuple[str, float, float] | None:
     """The rung to run instead of ``rung`` after ``exc`` (per :attr:`Rung.fallback`), or None.
 
@@ -207,8 +215,9 @@ def _fallback(
     declining = spec.rung(rung)
     if declining.fallback is None or "expected_steps" not in exc.context:
         return None
-    own = declining.estimate(inputs)
-    theirs = spec.rung(declining.fallback).estimate(inputs)
+    shared = Scratch() if scratch is None else scratch
+    own = declining.estimate_in(inputs, shared)
+    theirs = spec.rung(declining.fallback).estimate_in(inputs, shared)
     if own is None or theirs is None or not math.isfinite(theirs):
         return None
     if theirs > own and not auto:
@@ -271,6 +280,9 @@ class Prepared:
     fidelity: str
     rung: str
     notes: tuple[str, ...]
+    #: The request's shared work: what the rung estimates computed for these values,
+    #: for the compute of the same request (:class:`~engine.core.spec.Scratch`).
+    scratch: Scratch
 
 
 def prepare(
@@ -290,9 +302,10 @@ def prepare(
             f"tolerance = {tol:g} is not allowed: must be > 0 and < 1", field="tolerance"
         )
     asked = _fidelity(spec, fidelity, tolerance)
+    scratch = Scratch()
     with _arithmetic_refused(spec):
-        rung, notes = choose_rung(spec, values, asked, tol)
-    return Prepared(values, warnings, tol, asked, rung, tuple(notes))
+        rung, notes = choose_rung(spec, values, asked, tol, scratch)
+    return Prepared(values, warnings, tol, asked, rung, tuple(notes), scratch)
 
 
 def run(
@@ -352,12 +365,13 @@ def run(
             deadline=None if budget_s is None else start + budget_s,
             max_steps=max_steps,
             cancel=cancel,
+            scratch=prepared.scratch,
         )
         try:
             result = spec.compute(values, ctx)
         except BudgetExceeded as exc:
             auto = prepared.fidelity == "auto"
-            found = _fallback(spec, rung, values, exc, auto=auto)
+            found = _fallback(spec, rung, values, exc, auto=auto, scratch=prepared.scratch)
             if found is None:
                 raise
             fallback, own, theirs = found
@@ -487,13 +501,14 @@ def sweep(
     asked = _fidelity(spec, fidelity, tolerance)
     notes: list[str] = []
     refused = np.zeros(n, dtype=bool)  # points an estimate refuses: run alone, to say why
+    scratch = Scratch()  # the estimates' work on x, for the array path on the same x
     if not (math.isfinite(tol) and 0.0 < tol < 1.0):
         raise InputOutOfRange(
             f"tolerance = {tol:g} is not allowed: must be > 0 and < 1", field="tolerance"
         )
     if asked == "auto":
         estimates = points.rung_estimates(
-            spec, x, n, point=lambda j: points.at(x, n, j), refused=refused
+            spec, x, n, point=lambda j: points.at(x, n, j), refused=refused, scratch=scratch
         )
         assert estimates is not None
         index = points.auto_index(spec, estimates, n, tol)
@@ -501,7 +516,13 @@ def sweep(
         choose_rung(spec, first, asked, tol)  # refuses an unknown rung name
         k = spec.rung_names.index(asked)
         estimates = points.rung_estimates(
-            spec, x, n, [k], point=lambda j: points.at(x, n, j), refused=refused
+            spec,
+            x,
+            n,
+            [k],
+            point=lambda j: points.at(x, n, j),
+            refused=refused,
+            scratch=scratch,
         )
         assert estimates is not None
         index = np.full(n, k, dtype=np.int64)
@@ -522,7 +543,16 @@ def sweep(
         sub = points.take(x, n, sel) if m < n else x
         try:
             with _arithmetic_refused(spec):
-                vec = points.vector(spec, sub, rung_name, scalar_names, tol, m, dtype=None)
+                vec = points.vector(
+                    spec,
+                    sub,
+                    rung_name,
+                    scalar_names,
+                    tol,
+                    m,
+                    dtype=None,
+                    scratch=scratch if m == n else None,
+                )
         except SolverFailed:
             vec = None  # loop instead: the points that fail are null, with a note
         except EngineError:

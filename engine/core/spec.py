@@ -20,7 +20,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
-from .equations import equations_of
+from .equations import equations_of, equations_of_steps
 from .errors import BudgetExceeded, Cancelled, InputOutOfRange
 from .sources import SOURCES, cited_ids
 
@@ -236,6 +236,35 @@ class Output:
         }
 
 
+class Scratch:
+    """Work one request shares between its steps, for the inputs of that request only.
+
+    The runner makes one for each :func:`engine.run` (its rung estimates and its
+    compute) and one for each array evaluation of a sweep chunk; it dies with the
+    request, so nothing a model leaves here reaches another request. A model keys what
+    it leaves by a name of its own (the inputs are the request's, the same for every
+    step that sees this scratch):
+
+    >>> s = Scratch()
+    >>> calls = []
+    >>> s.once("bolt", lambda: calls.append(1) or 42), s.once("bolt", lambda: 0), calls
+    (42, 42, [1])
+    """
+
+    __slots__ = ("_memo",)
+
+    def __init__(self) -> None:
+        self._memo: dict[str, Any] = {}
+
+    def once(self, key: str, compute: Callable[[], Any]) -> Any:
+        """``compute()`` the first time ``key`` is asked for in this request, then its value."""
+        memo = self._memo
+        if key in memo:
+            return memo[key]
+        value = memo[key] = compute()
+        return value
+
+
 @dataclass(frozen=True)
 class Rung:
     """One way of computing a model, cheapest first in :attr:`ModelSpec.rungs`.
@@ -301,6 +330,23 @@ class Rung:
         )
         return f"the error estimate of {self.name!r} is typical, not a bound: {how_often}"
 
+    #: ``estimate`` with the request's :class:`Scratch`: work it does for the inputs (a
+    #: resolved bolt, a cycle) is left there for the compute of the same request. When
+    #: given, the runner calls this instead of :attr:`estimate` (which then serves
+    #: callers without a request, as the same function on a scratch of its own).
+    shared_estimate: Callable[[Mapping[str, Any], Scratch], Any] | None = None
+    #: The procedure this rung runs, in its order: the functions (a procedure's steps,
+    #: the adapter's output lines) whose equations, and their callees', the calculation
+    #: report lists when this rung produced the result. Empty: the model's compute,
+    #: every rung's steps together.
+    steps: tuple[Callable[..., Any], ...] = ()
+
+    def estimate_in(self, inputs: Mapping[str, Any], scratch: Scratch) -> Any:
+        """The estimate for ``inputs`` within a request whose work ``scratch`` holds."""
+        if self.shared_estimate is None:
+            return self.estimate(inputs)
+        return self.shared_estimate(inputs, scratch)
+
     def describe(self) -> dict[str, Any]:
         return {
             "name": self.name,
@@ -310,6 +356,12 @@ class Rung:
             "fallback": self.fallback,
             "estimate_kind": self.estimate_kind,
             "typical_exceeded": self.typical_exceeded,
+            # the equations of this rung's steps, for the report of a result it produced
+            **(
+                {"equations": [dict(e) for e in equations_of_steps(self.steps)]}
+                if self.steps
+                else {}
+            ),
         }
 
 
@@ -356,6 +408,13 @@ class RunContext:
     #: Set by the caller to withdraw the request; long computations test it where they
     #: test ``deadline`` (:meth:`check_budget`) and raise :class:`Cancelled`.
     cancel: threading.Event | None = None
+    #: The request's shared work (:class:`Scratch`): a step computed once for the
+    #: estimate and the compute of one request, gone when the request is.
+    scratch: Scratch = field(default_factory=Scratch)
+
+    def once(self, key: str, compute: Callable[[], Any]) -> Any:
+        """``compute()`` once per request: :meth:`Scratch.once` of :attr:`scratch`."""
+        return self.scratch.once(key, compute)
 
     def check_budget(self, what: str = "the computation") -> None:
         """Raise Cancelled if the caller withdrew, BudgetExceeded past the deadline."""
@@ -542,6 +601,13 @@ class ModelSpec:
         advice.sort(key=lambda item: item[0])
         return values, [w for _, w in advice]
 
+    def equations(self, rung: str | None = None) -> tuple[dict[str, Any], ...]:
+        """The equations the calculation report lists for a result of ``rung``, in the
+        order of its procedure: the rung's declared :attr:`Rung.steps`, else (and for
+        ``rung`` None) every equation the model's compute reaches."""
+        steps = () if rung is None else self.rung(rung).steps
+        return equations_of_steps(steps) if steps else equations_of(self.compute)
+
     def describe(self) -> dict[str, Any]:
         """JSON-ready catalogue entry (``GET /api/v1/models``)."""
         return {
@@ -561,7 +627,7 @@ class ModelSpec:
             "assumptions": list(self.assumptions),
             "examples": [dict(e) for e in self.examples],
             # read from the engine functions' docstrings, for the calculation report
-            "equations": [dict(e) for e in equations_of(self.compute)],
+            "equations": [dict(e) for e in self.equations()],
         }
 
 

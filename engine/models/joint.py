@@ -15,13 +15,13 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from functools import partial
 from typing import Any
 
 import numpy as np
 
-from ..core.errors import EngineError, InputOutOfRange
+from ..core.errors import InputOutOfRange
 from ..core.spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
 from ..physics import fasteners as fa
 from ..physics import joint as jt
@@ -29,16 +29,15 @@ from ..physics import preload as pl
 from ..physics import threads as th
 from ..physics.preload_methods import METHODS, get_method
 from ..procedures import bolt as fz
+from ..procedures.bolt import Bolt, resolve_bolt, resolve_bolts
 from .preload import (
     BOLT_INPUTS,
     NUT_CLASS_INPUT,
-    Bolt,
     nut_class_pairing_text,
     nut_limit_warning,
     nut_paired_note,
     nut_strength_text,
     nut_stripping_text,
-    resolve_bolt,
 )
 
 SOURCE = (
@@ -1408,17 +1407,11 @@ _SCALARS: tuple[str, ...] = tuple(o.name for o in JOINT_OUTPUTS if not o.series)
 #
 # ``_vectorized`` runs :func:`_solve` (the lines a single run runs) for a request whose
 # numeric inputs may be arrays (a sweep, a study's chunk; issue 21/22). The text and choice
-# inputs are fixed per request and read once; the bolt is resolved once per distinct bolt
-# (usually once). A point the procedure refuses is NaN in every output and unreported in
-# every check. Series (joint diagram, preload window) are not part of it: they belong to
-# single runs.
-
-#: Inputs that pick the thread from the tables (resolved per distinct combination).
-_TABLE_KEYS = ("thread_diameter", "thread_pitch")
-
-#: Bolt inputs resolve_bolt only copies into the bolt: when varied, left out of the
-#: resolution and set per point (see :func:`_bolts`).
-_GIVEN_KEYS = ("yield_strength", "bearing_outer_diameter", "hole_diameter")
+# inputs are fixed per request and read once; the bolt comes from the one bolt resolution
+# of every model (:func:`engine.procedures.bolt.resolve_bolts`, per distinct size where a
+# catalogue part meets a varied size). A point the procedure refuses is NaN in every
+# output and unreported in every check. Series (joint diagram, preload window) are not
+# part of it: they belong to single runs.
 
 #: Bolt fields carried as arrays ([m, m², Pa]).
 _BOLT_FIELDS = (
@@ -1441,96 +1434,10 @@ def _size(x: Mapping[str, Any]) -> int:
     return sizes.pop() if sizes else 1
 
 
-def _bolts(
-    x: Mapping[str, Any], n: int
-) -> tuple[list[Bolt | None], np.ndarray, list[str], tuple[str, ...]]:
-    """The distinct bolts of the request (None where resolve_bolt refuses), each point's
-    index into them, the first point's notes, and the inputs left to :func:`_bolt_columns`.
-
-    Only the inputs that pick a thread from the tables multiply the resolutions. A varied
-    yield strength, bearing face or hole (values resolve_bolt only copies into the bolt) is
-    left out of the resolution and set per point by :func:`_bolt_columns`, which refuses
-    where resolve_bolt would; where leaving them out changes what resolve_bolt does (it
-    refuses), they are resolved per distinct value instead. A refusal of every point raises.
-    """
-    fixed = {k: v for k, v in x.items() if not isinstance(v, np.ndarray)}
-    table = [k for k in _TABLE_KEYS if isinstance(x.get(k), np.ndarray)]
-    given = tuple(k for k in _GIVEN_KEYS if isinstance(x.get(k), np.ndarray))
-    first = {**fixed, **{k: x[k][0].item() for k in (*table, *given)}}
-    try:
-        notes = resolve_bolt(first)[1]
-    except EngineError:
-        notes = []
-    if given:
-        found = _resolve_rows(x, fixed, table, n)
-        if found is not None and all(b is not None for b in found[0]):
-            bolts = [
-                None
-                if b is None
-                else replace(b, tensile_strength=None)
-                if "yield_strength" in given
-                else b
-                for b in found[0]
-            ]
-            return bolts, found[1], notes, given
-    found = _resolve_rows(x, fixed, [*table, *given], n)
-    if found is None:
-        resolve_bolt(first)  # raises, says why
-        raise AssertionError("unreachable")  # pragma: no cover
-    return found[0], found[1], notes, ()
-
-
-def _resolve_rows(
-    x: Mapping[str, Any], fixed: Mapping[str, Any], keys: list[str], n: int
-) -> tuple[list[Bolt | None], np.ndarray] | None:
-    """resolve_bolt once per distinct combination of ``keys`` (None: every one refused)."""
-    if not keys:
-        try:
-            return [resolve_bolt(fixed)[0]], np.zeros(n, dtype=np.int64)
-        except EngineError:
-            return None
-    rows, index = np.unique(
-        np.column_stack([np.asarray(x[k], dtype=float) for k in keys]),
-        axis=0,
-        return_inverse=True,
-    )
-    bolts: list[Bolt | None] = []
-    for row in rows:
-        try:
-            bolts.append(resolve_bolt({**fixed, **dict(zip(keys, row.tolist(), strict=True))})[0])
-        except EngineError:
-            bolts.append(None)
-    if all(b is None for b in bolts):
-        return None
-    return bolts, np.asarray(index, dtype=np.int64).reshape(n)
-
-
-def _bolt_columns(
-    bolts: list[Bolt | None], index: np.ndarray, x: Mapping[str, Any], given: tuple[str, ...]
-) -> tuple[dict[str, Any], np.ndarray]:
-    """Each bolt field per point (one bolt: numpy scalars, broadcast later), and the points
-    refused: a bolt resolve_bolt refused, or (given values) d_h < d or D_f ≤ d_h."""
-    if len(bolts) == 1 and bolts[0] is not None:
-        columns: dict[str, Any] = {f: np.float64(getattr(bolts[0], f)) for f in _BOLT_FIELDS}
-    else:
-        columns = {
-            f: np.array([np.nan if b is None else getattr(b, f) for b in bolts], dtype=float)[index]
-            for f in _BOLT_FIELDS
-        }
-    for key in given:
-        columns[key] = np.asarray(x[key], dtype=float)
-    refused = np.zeros(index.size, dtype=bool) | np.isnan(columns["diameter"])
-    if given:
-        if x.get("hole_diameter") is not None:
-            refused |= columns["hole_diameter"] < columns["diameter"]
-        refused |= columns["bearing_outer_diameter"] <= columns["hole_diameter"]
-    return columns, refused
-
-
 def _vector_hook_checks(
     x: Mapping[str, Any],
     col: Callable[[str], np.ndarray],
-    bolts: list[Bolt | None],
+    bolts: list[Bolt],
     index: np.ndarray,
     ok: np.ndarray,
     bearing: Any,
@@ -1562,7 +1469,7 @@ def _vector_hook_checks(
         tau = np.full(n, fa.material(str(x["internal_thread_material"])).shear_strength)
     for k, bolt in enumerate(bolts):
         sel = ok & (index == k)
-        if bolt is None or not sel.any():
+        if not sel.any():
             continue
         checks, said = probe(int(np.flatnonzero(sel)[0]))
         notes += [s for s in said if s not in notes]
@@ -1639,10 +1546,16 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
             return value.astype(float, copy=False)
         return np.float64(value)
 
-    bolts, bolt_index, notes, given = _bolts(x, n)
-    b, refused = _bolt_columns(bolts, bolt_index, x, given)
+    resolved, notes = resolve_bolts(x, n, labels=False, per_size=True)
+    bolts, bolt_index = resolved.distinct()
+    b: dict[str, Any] = {
+        f: v.astype(float, copy=False) if isinstance(v, np.ndarray) else np.float64(v)
+        for f in _BOLT_FIELDS
+        for v in (getattr(resolved, f),)
+    }
+    refused = ~resolved.ok
     if x.get("nut") is not None:
-        strengths = {None if k is None else k.tensile_strength for k in bolts} - {None}
+        strengths = {k.tensile_strength for k in bolts} - {None}
         if len(strengths) > 1:
             raise TypeError("nut with varied bolt classes: the nut is rated per point")
         threads = {None if k is None or k.fastener is None else k.fastener.thread for k in bolts}
@@ -1676,19 +1589,11 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     # hooks (R10 surface pressure, R11 engagement) -------------------------------------------------
     def probe(j: int) -> tuple[list[Check], list[str]]:
         point = {k: (v[j].item() if isinstance(v, np.ndarray) else v) for k, v in x.items()}
-        bolt = bolts[int(bolt_index[j])]
-        assert bolt is not None
+        bolt = resolved.at(j)
 
         def at(value: Any) -> float:
             return float(np.broadcast_to(value, (n,))[j])
 
-        if given:
-            bolt = replace(
-                bolt,
-                yield_strength=at(b["yield_strength"]),
-                bearing_outer_diameter=at(d_w),
-                hole_diameter=at(d_h),
-            )
         solution = JointSolution(
             bolt, at(s["grip"]), at(d_w), at(d_h), at(fm_max), at(f_s_max), joint_type
         )

@@ -9,8 +9,7 @@ calls those functions and says where every number came from.
 from __future__ import annotations
 
 import math
-import threading
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -18,7 +17,17 @@ import numpy as np
 
 from ..core.errors import EngineError, InputOutOfRange
 from ..core.params import count, friction_coefficient
-from ..core.spec import Check, ModelSpec, Output, Param, Plot, Result, RunContext, Rung
+from ..core.spec import (
+    Check,
+    ModelSpec,
+    Output,
+    Param,
+    Plot,
+    Result,
+    RunContext,
+    Rung,
+    Scratch,
+)
 from ..physics import fasteners as fa
 from ..physics import joint as jt
 from ..physics import preload as pl
@@ -32,6 +41,10 @@ from ..physics.preload_methods import (
     torque_then_angle,
 )
 from ..procedures import bolt as fz
+from ..procedures.bolt import Bolt, BoltArrays, resolve_bolt, resolve_bolts
+
+#: The one bolt resolution for many points, under the name blow.joint imports it by.
+resolve_bolt_arrays = resolve_bolts
 
 SOURCE = (
     "[004] review of preload selection and tightening control, eq. 2–19, "
@@ -198,173 +211,6 @@ NUT_CLASS_INPUT = Param(
 BOLT_INPUTS = (*BOLT_INPUTS, NUT_CLASS_INPUT)
 
 # --------------------------------------------------------------------------- the bolt
-
-
-@dataclass(frozen=True)
-class Bolt:
-    """A bolt resolved from a request: standard data unless overridden [m, m², Pa]."""
-
-    diameter: float
-    pitch: float
-    pitch_diameter: float
-    minor_diameter: float
-    stress_diameter: float
-    stress_area: float
-    yield_strength: float
-    tensile_strength: float | None
-    bearing_outer_diameter: float
-    hole_diameter: float
-    #: μ_K multiplier of the bearing face (1/sin 45° on a countersunk head, issue 15).
-    bearing_friction_factor: float = 1.0
-    #: The catalogue's fastener (thread, head, grade) where the request names one.
-    fastener: fz.Fastener | None = None
-
-
-def _class_note(name: str, diameter: float, yield_strength: float, tensile: float) -> str:
-    """Where a property class's strengths come from: ISO 898-1, or its M39 values carried on."""
-    kind = th.PROPERTY_CLASSES[name].yield_kind
-    values = f"{kind} = {yield_strength / 1e6:g} MPa, R_m = {tensile / 1e6:g} MPa"
-    if th.beyond_iso898(name, diameter):
-        return (
-            f"property class {name}, d = {diameter * 1e3:g} mm: ISO 898-1 defines the class "
-            f"only up to M39; its M39 minimum values {values} are taken here (an assumption: "
-            "larger bolts are made to the class by agreement); give yield_strength for the "
-            "bolt's certified values"
-        )
-    return f"property class {name}, d = {diameter * 1e3:g} mm: {values} (ISO 898-1 minimum values)"
-
-
-def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
-    """The bolt a request describes, and notes naming each standard value used."""
-    cat, fastener, notes = fz.resolve(x)
-    numbers, _ = _bolt_numbers(x, cat, notes, None)
-    return Bolt(**numbers, fastener=fastener), notes
-
-
-def _bolt_numbers(
-    x: Mapping[str, Any], cat: Mapping[str, Any], notes: list[str], n: int | None
-) -> tuple[dict[str, Any], np.ndarray]:
-    """The bolt's numbers from the inputs, the catalogue's ``cat`` and the ISO tables.
-
-    One design (``n`` None): floats, a note per standard value used, and a refusal
-    (InputOutOfRange naming the field) where the inputs make no bolt. ``n`` points: the
-    numeric inputs may be arrays, a tabulated value is looked up per point, and a point
-    that would be refused is False in the returned mask (no notes per point).
-    """
-    one = n is None
-    ok: Any = True if n is None else np.ones(n, dtype=bool)
-
-    def need(good: Any, refusal: Callable[[], InputOutOfRange]) -> None:
-        nonlocal ok
-        if not one:
-            ok = ok & good
-        elif not good:
-            raise refusal()
-
-    def num(v: Any) -> Any:
-        return float(v) if one else v
-
-    def note(text: str) -> None:
-        if one:
-            notes.append(text)
-
-    d = num(cat["diameter"])
-    per_point = isinstance(d, np.ndarray)
-    if "pitch" in cat:
-        pitch = num(cat["pitch"])
-    elif x.get("thread_pitch") is None:
-        if per_point:
-            pitch, found = _tabulated(d, th.COARSE_PITCH_MM)
-            ok = ok & found
-        else:
-            pitch = th.coarse_pitch(d)
-            note(f"pitch P = {pitch * 1e3:g} mm: ISO 261 coarse thread M{d * 1e3:g}")
-    else:
-        pitch = num(x["thread_pitch"])
-        need(
-            d - 1.226869 * pitch > 0.0,
-            lambda: InputOutOfRange(
-                f"thread_pitch = {pitch * 1e3:g} mm is too coarse for d = {d * 1e3:g} mm: the "
-                f"minor diameter d3 = d − 1.226869 P must stay > 0 (P < {d / 1.226869 * 1e3:g} mm)",
-                field="thread_pitch",
-            ),
-        )
-    tensile: Any
-    if x.get("yield_strength") is not None:
-        yield_strength, tensile = num(x["yield_strength"]), None
-        note(f"yield strength R_p0.2 = {yield_strength / 1e6:g} MPa as given")
-    elif "yield_strength" in cat:
-        yield_strength, tensile = num(cat["yield_strength"]), num(cat["tensile_strength"])
-    else:
-        name = str(x.get("property_class") or "8.8")
-        if per_point:
-            th.property_class_strengths(name, 0.01)  # refuses an unknown class
-            cls = th.PROPERTY_CLASSES[name]
-            mm = d * 1e3
-            ok = ok & (d <= th.largest_diameter(name) * (1 + 1e-9))
-            if np.any(ok & (mm > cls.max_diameter_mm * (1 + 1e-9))):
-                widest = float(np.max(d[ok]))
-                notes.append(_class_note(name, widest, *th.property_class_strengths(name, widest)))
-            small = mm <= cls.size_step_mm * (1 + 1e-9)
-            yield_strength = np.where(small, cls.yield_small * 1e6, cls.yield_large * 1e6)
-            tensile = np.where(small, cls.tensile_small * 1e6, cls.tensile_large * 1e6)
-        else:
-            yield_strength, tensile = th.property_class_strengths(name, d)
-            note(_class_note(name, d, yield_strength, tensile))
-    given_outer = x.get("bearing_outer_diameter") is not None
-    if given_outer:
-        outer = num(x["bearing_outer_diameter"])
-    elif "bearing_outer_diameter" in cat:
-        outer = num(cat["bearing_outer_diameter"])
-    elif per_point:
-        outer, found = _tabulated(d, th.HEX_BEARING_DIAMETER_MM)
-        ok = ok & found
-    else:
-        outer = th.hex_bearing_diameter(d)
-        note(f"bearing face D_f = d_w,min = {outer * 1e3:g} mm (ISO 4017 hexagon head)")
-    if x.get("hole_diameter") is not None:
-        hole = num(x["hole_diameter"])
-        need(
-            hole >= d,
-            lambda: InputOutOfRange(
-                f"hole_diameter d_h = {hole * 1e3:g} mm is smaller than the thread diameter "
-                f"d = {d * 1e3:g} mm: the bolt would not pass through the clamped part",
-                field="hole_diameter",
-            ),
-        )
-    elif "hole_diameter" in cat:
-        hole = num(cat["hole_diameter"])
-    else:
-        series = str(x.get("hole_series") or "medium")
-        if per_point:
-            th.clearance_hole(0.012, series)  # refuses an unknown series
-            hole, found = _tabulated(d, th.CLEARANCE_HOLE_MM, th.HOLE_SERIES.index(series))
-            ok = ok & found
-        else:
-            hole = th.clearance_hole(d, series)
-            note(f"clearance hole d_h = {hole * 1e3:g} mm (ISO 273 {series})")
-    need(
-        outer > hole,
-        lambda: InputOutOfRange(
-            f"bearing_outer_diameter D_f = {outer * 1e3:g} mm must exceed hole_diameter "
-            f"d_h = {hole * 1e3:g} mm: the bearing face would have no area",
-            field="bearing_outer_diameter" if given_outer else "hole_diameter",
-        ),
-    )
-    numbers = {
-        "diameter": d,
-        "pitch": pitch,
-        "pitch_diameter": _given_or(cat, "pitch_diameter", th.pitch_diameter, d, pitch),
-        "minor_diameter": _given_or(cat, "minor_diameter", th.minor_diameter, d, pitch),
-        "stress_diameter": _given_or(cat, "stress_diameter", th.stress_diameter, d, pitch),
-        "stress_area": _given_or(cat, "stress_area", th.stress_area, d, pitch),
-        "yield_strength": yield_strength,
-        "tensile_strength": tensile,
-        "bearing_outer_diameter": outer,
-        "hole_diameter": hole,
-        "bearing_friction_factor": cat.get("bearing_friction_factor", 1.0),
-    }
-    return numbers, ok
 
 
 # --------------------------------------------------------------------------- the nut
@@ -588,11 +434,6 @@ def _where(condition: Any, yes: Any, no: Any) -> Any:
     return np.where(condition, yes, no)
 
 
-def _given_or(cat: Mapping[str, Any], name: str, relation: Any, d: Any, pitch: Any) -> Any:
-    """The catalogue's ``name`` where it has one, else the ISO relation on (d, P)."""
-    return cat[name] if name in cat else relation(d, pitch)
-
-
 def torque_coefficients_raw(
     bolt: Bolt | BoltArrays, thread_friction: Any, bearing_friction: Any, formula: str
 ) -> tuple[Any, Any, Any]:
@@ -644,81 +485,63 @@ def _deviation(
 
 @dataclass(frozen=True)
 class _Design:
-    """One design's bolt and torque coefficients, as both the rung estimate and the run need."""
+    """One design's bolt and the notes of its resolution, as the rung estimate and the run
+    of one request share them."""
 
     bolt: Bolt
     notes: tuple[str, ...]
-    #: (k_G, k_K, R) of the torque formula.
-    coefficients: tuple[float, float, float]
-    #: |M(torque_formula) − M(exact)| / M(exact), the closed form's error estimate.
-    deviation: float
 
 
 def _torque_terms(
-    x: Mapping[str, Any], bolt: Bolt | BoltArrays, design: _Design | None = None
+    x: Mapping[str, Any], bolt: Bolt | BoltArrays
 ) -> tuple[tuple[Any, Any, Any], Any]:
     """(k_G, k_K, R) of the torque formula and its deviation from the exact relations.
 
-    VDI 2230-1 R13 / [004, eq. 10–15] on floats or arrays; a single design's come from
-    ``design`` where the rung estimate computed them for the same request.
+    VDI 2230-1 R13 / [004, eq. 10–15] on floats or arrays.
     """
-    if design is not None:
-        return design.coefficients, design.deviation
     mu_g, mu_k, formula = x["thread_friction"], x["bearing_friction"], str(x["torque_formula"])
     coefficients = torque_coefficients_raw(bolt, mu_g, mu_k, formula)
     return coefficients, _deviation(bolt, mu_g, mu_k, formula, coefficients[0] + coefficients[1])
 
 
+def _request_torque_terms(
+    x: Mapping[str, Any], bolt: Bolt | BoltArrays, scratch: Scratch | None
+) -> tuple[tuple[Any, Any, Any], Any]:
+    """:func:`_torque_terms` once per request: the rung estimate's, where it ran first."""
+    if scratch is None:
+        return _torque_terms(x, bolt)
+    return scratch.once("preload.torque terms", lambda: _torque_terms(x, bolt))
+
+
 def _resolve_design(x: Mapping[str, Any]) -> _Design:
-    """The bolt (resolved once) and each torque coefficient (computed once) of a design."""
+    """The bolt of a design and the notes naming each standard value used."""
     bolt, notes = resolve_bolt(x)
-    (k_thread, k_bearing, radius), deviation = _torque_terms(x, bolt)
-    return _Design(
-        bolt, tuple(notes), (float(k_thread), float(k_bearing), float(radius)), float(deviation)
-    )
+    return _Design(bolt, tuple(notes))
 
 
-class _Handoff(threading.local):
-    """The design the rung estimate resolved, handed to the run of the same request.
+def _design(x: Mapping[str, Any], scratch: Scratch) -> _Design:
+    """The request's design, resolved once: the rung estimate and the run share it.
 
-    The runner asks the rung for its estimate, then runs the model, with the same
-    validated inputs. The estimate leaves its :class:`_Design` here with those inputs'
-    items; :func:`_handed_off` gives it to the run (and empties the slot) when the
-    run's inputs have the same items, in the same thread, so the request resolves its
-    bolt once. The slot is matched by value, never by identity, holds one design per
-    thread and is emptied when read: a later request, or one with other inputs,
-    resolves its own.
+    Through the request's ``scratch`` (:class:`~engine.core.spec.Scratch`), which lives
+    for one run: a later request, or one with other inputs, resolves its own.
     """
-
-    items: tuple[tuple[str, Any], ...] | None = None
-    design: _Design | None = None
+    return scratch.once("preload.design", lambda: _resolve_design(x))
 
 
-_HANDOFF = _Handoff()
-
-
-def _handed_off(x: Mapping[str, Any]) -> _Design | None:
-    """The design the rung estimate left for these inputs, or None; the slot is emptied."""
-    slot = _HANDOFF
-    found, slot.items, design, slot.design = slot.items, None, slot.design, None
-    return design if design is not None and found == tuple(x.items()) else None
-
-
-def _rung_estimate(x: Mapping[str, Any]) -> Any:
+def _rung_estimate(x: Mapping[str, Any], scratch: Scratch) -> Any:
     """The closed form's error estimate: a float, or an array where inputs are arrays."""
     try:
         n = _points(x)
         if n:
-            bolt_arrays, _ = resolve_bolt_arrays(x, n, labels=False)
+            bolt_arrays, _ = resolve_bolts(x, n, labels=False)
             dev = _deviation(
                 bolt_arrays, x["thread_friction"], x["bearing_friction"], str(x["torque_formula"])
             )
             return np.where(bolt_arrays.ok, dev, np.nan)
-        design = _resolve_design(x)
+        bolt = _design(x, scratch).bolt
+        return float(_request_torque_terms(x, bolt, scratch)[1])
     except (EngineError, KeyError, TypeError, ValueError):
         return None
-    _HANDOFF.items, _HANDOFF.design = tuple(x.items()), design
-    return design.deviation
 
 
 # --------------------------------------------------------------------------- array path
@@ -729,31 +552,6 @@ def _rung_estimate(x: Mapping[str, Any]) -> Any:
 # number is then computed with the same engine functions on arrays. A point the scalar
 # path refuses is NaN (``ok`` False) and its checks are not counted.
 
-#: Bolt inputs whose values, not only whether they are given, the bolt resolution reads.
-_BOLT_NUMBERS = (
-    "thread_diameter",
-    "thread_pitch",
-    "yield_strength",
-    "bearing_outer_diameter",
-    "hole_diameter",
-)
-#: The numbers of a bolt (:class:`Bolt`, :class:`BoltArrays`), as :func:`_bolt_numbers` gives them.
-_NUMBER_FIELDS = (
-    "diameter",
-    "pitch",
-    "pitch_diameter",
-    "minor_diameter",
-    "stress_diameter",
-    "stress_area",
-    "yield_strength",
-    "tensile_strength",
-    "bearing_outer_diameter",
-    "hole_diameter",
-    "bearing_friction_factor",
-)
-#: Inputs that name catalogue parts (looked up by the thread size).
-_CATALOGUE_INPUTS = ("thread", "grade", "head_standard", "washer", "nut")
-
 
 def _points(x: Mapping[str, Any]) -> int:
     """The number of points of an array request (0 when every input is a scalar)."""
@@ -761,120 +559,6 @@ def _points(x: Mapping[str, Any]) -> int:
         if isinstance(v, np.ndarray) and v.ndim == 1:
             return int(v.shape[0])
     return 0
-
-
-@dataclass(frozen=True)
-class BoltArrays:
-    """A bolt for many points: each number a float (the same everywhere) or an array."""
-
-    diameter: Any
-    pitch: Any
-    pitch_diameter: Any
-    minor_diameter: Any
-    stress_diameter: Any
-    stress_area: Any
-    yield_strength: Any
-    tensile_strength: Any
-    bearing_outer_diameter: Any
-    hole_diameter: Any
-    bearing_friction_factor: float
-    fastener: fz.Fastener
-    #: Where the scalar :func:`resolve_bolt` would refuse the point: False.
-    ok: np.ndarray
-    #: The ``fastener`` output: one label, or one per point.
-    label: Any
-
-
-def _table_lookup(
-    diameter: np.ndarray, table: Mapping[float, Any]
-) -> tuple[np.ndarray, np.ndarray]:
-    """Index into ``table``'s keys (mm) per diameter [m], and where one matches.
-
-    The match of :func:`engine.physics.threads._size_key` (relative 1e-6), on arrays: the keys
-    are far apart, so only the two keys either side of a size can match it.
-    """
-    keys = np.fromiter(table, dtype=float)
-    order = np.argsort(keys)
-    ordered = keys[order]
-    mm = np.asarray(diameter) * 1e3
-    right = np.clip(np.searchsorted(ordered, mm), 0, keys.size - 1)
-    left = np.maximum(right - 1, 0)
-    near_left = np.abs(mm - ordered[left]) <= 1e-6 * ordered[left]
-    near_right = np.abs(mm - ordered[right]) <= 1e-6 * ordered[right]
-    index = order[np.where(near_left, left, right)]
-    return index, near_left | near_right
-
-
-def _tabulated(
-    diameter: np.ndarray, table: Mapping[float, Any], column: int | None = None
-) -> tuple[np.ndarray, np.ndarray]:
-    """A per-size table's value [m] (mm × 1e-3) per diameter [m], NaN where not tabulated."""
-    index, found = _table_lookup(diameter, table)
-    rows = list(table.values())
-    mm = np.array([r if column is None else r[column] for r in rows], dtype=float)
-    return np.where(found, mm[index] * 1e-3, np.nan), found
-
-
-def resolve_bolt_arrays(
-    x: Mapping[str, Any], n: int, labels: bool = True
-) -> tuple[BoltArrays, list[str]]:
-    """:func:`resolve_bolt` for ``n`` points whose numeric bolt inputs may be arrays.
-
-    The catalogue (designation, grade, head) is read once. A varied thread diameter or
-    pitch together with a catalogue part would need a lookup per point: ValueError
-    (the caller evaluates those points one by one). ``labels=False`` skips the
-    per-point ``fastener`` labels of a varied size.
-    """
-    ok = np.ones(n, dtype=bool)
-    varied = [k for k in _BOLT_NUMBERS if isinstance(x.get(k), np.ndarray)]
-    if not varied:
-        bolt, bolt_notes = resolve_bolt(x)
-        fastener = bolt.fastener or fz.Fastener("", None, None, None)
-        numbers = {f: getattr(bolt, f) for f in _NUMBER_FIELDS}
-        return (
-            BoltArrays(**numbers, fastener=fastener, ok=ok, label=fastener.label),
-            bolt_notes,
-        )
-    size_varied = "thread_diameter" in varied or "thread_pitch" in varied
-    if size_varied and any(x.get(k) is not None for k in _CATALOGUE_INPUTS):
-        raise ValueError("a catalogue part with a varied thread size: evaluate point by point")
-    # the catalogue reads only whether these are given, not their values
-    placeholder = {**x, **{k: 1.0 for k in varied}}
-    cat: dict[str, Any]
-    notes: list[str] = []
-    if size_varied:
-        if x.get("thread_diameter") is None:
-            fz.resolve(placeholder)  # refuses: no thread and no diameter
-        cat = {"diameter": x["thread_diameter"]}
-        fastener = fz.Fastener("", None, None, None)
-    else:
-        cat, fastener, found_notes = fz.resolve(placeholder)
-        notes.extend(found_notes)
-    numbers, ok = _bolt_numbers(x, cat, notes, n)
-    label: Any = fastener.label
-    if size_varied and labels:
-        label = _size_labels(x, numbers["diameter"], n)
-    return BoltArrays(**numbers, fastener=fastener, ok=ok, label=label), notes
-
-
-def _size_labels(x: Mapping[str, Any], diameter: Any, n: int) -> np.ndarray:
-    """The ``fastener`` label per point for a varied numeric thread size (no catalogue part).
-
-    As :func:`engine.procedures.bolt.resolve` writes it: the ISO designation where the
-    size is a catalogue thread, else "d = … mm", then the property class.
-    """
-    cls = str(x.get("property_class") or "8.8")
-    d = np.broadcast_to(np.asarray(diameter, dtype=float), (n,))
-    p_in = x.get("thread_pitch")
-    p = None if p_in is None else np.broadcast_to(np.asarray(p_in, dtype=float), (n,))
-    _, near = _table_lookup(d, fa.METRIC_COARSE_PITCH_MM)
-    out = np.empty(n, dtype=object)
-    out[:] = list(map(f"d = %g mm {cls}".__mod__, (d * 1e3).tolist()))
-    for j in np.flatnonzero(near).tolist():
-        thread = fz._catalogue_thread(float(d[j]), None if p is None else float(p[j]))
-        if thread is not None:
-            out[j] = f"{thread.designation} {cls}"
-    return out
 
 
 def _verdicts(verdicts: Mapping[str, Any], ok: np.ndarray, n: int) -> dict[str, np.ndarray]:
@@ -913,9 +597,10 @@ CLOSED_FORM = Rung(
     "from the exact thread and annular-face relations of [004, eq. 10–13] for these inputs "
     "(0 for 'exact'). It does not include the scatter of the friction coefficients, which "
     "dominates in practice (±30 % at a fixed torque, [004, fig. 5]).",
-    _rung_estimate,
+    lambda x: _rung_estimate(x, Scratch()),
     typical_error="0 (exact) … ~1 % (vdi2230) … a few % (approx), against the exact relations",
     typical_time="< 1 ms",
+    shared_estimate=_rung_estimate,
 )
 
 # --------------------------------------------------------------------------- tightening
@@ -956,13 +641,13 @@ def _add_bought_part_checks(
 
 
 def _tightening_values(
-    x: Mapping[str, Any], bolt: Bolt | BoltArrays, design: _Design | None = None
+    x: Mapping[str, Any], bolt: Bolt | BoltArrays, scratch: Scratch | None = None
 ) -> dict[str, Any]:
     """The numbers of ``preload.tightening``, on floats (one design) or arrays (many).
 
     The single run and the array path both come here, so one set of lines gives
     every number, in the order of the procedure: R7's preload, then R13's torque
-    (:func:`_torque_terms`, the design's where the rung estimate computed them).
+    (:func:`_torque_terms`, once per request: with ``scratch``, the rung estimate's).
     """
     beta = pl.torsion_factor(
         bolt.pitch,
@@ -980,7 +665,7 @@ def _tightening_values(
     )
     force = permissible if x.get("preload") is None else x["preload"]
     sigma_eq = pl.equivalent_stress(force, bolt.stress_area, beta)
-    (k_thread, k_bearing, radius), deviation = _torque_terms(x, bolt, design)
+    (k_thread, k_bearing, radius), deviation = _request_torque_terms(x, bolt, scratch)
     m_thread, m_bearing = force * k_thread, force * k_bearing
     total = m_thread + m_bearing
     ideal = pl.ideal_torque(force, bolt.pitch)
@@ -1019,11 +704,11 @@ def _tightening_values(
 
 
 def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    design = _handed_off(x)
-    bolt, notes = (design.bolt, list(design.notes)) if design else resolve_bolt(x)
+    design = _design(x, ctx.scratch)
+    bolt, notes = design.bolt, list(design.notes)
     checks: list[Check] = []
     warnings: list[str] = []
-    shared = _tightening_values(x, bolt, design)
+    shared = _tightening_values(x, bolt, ctx.scratch)
     nut, _ = shared.pop("_nut")
     values = {k: float(v) for k, v in shared.items()}
     force, total = values["assembly_preload"], values["tightening_torque"]
@@ -1089,7 +774,7 @@ def _bought_part_arrays(
 def _tightening_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """The array path of ``preload.tightening``: its numbers on many points at once."""
     n = _points(x) or 1
-    bolt, notes = resolve_bolt_arrays(x, n, labels=ctx.wants("fastener"))
+    bolt, notes = resolve_bolts(x, n, labels=ctx.wants("fastener"))
     values = _tightening_values(x, bolt)
     nut, nut_verdicts = values.pop("_nut")
     verdicts: dict[str, Any] = _nut_verdicts(nut_verdicts)
@@ -1547,21 +1232,21 @@ def _control_values(
     bolt: Bolt | BoltArrays,
     method: ControlMethod,
     section: tuple[Any, Any],
-    design: _Design | None = None,
+    scratch: Scratch | None = None,
 ) -> tuple[dict[str, Any], Any]:
     """The preload band and target of ``preload.control``, on floats or arrays.
 
     ``section`` is (d_0, A_0) of the smallest section. VDI 2230-1 R7 at the smallest
     section ([004, eq. 3–4]), the method's band, [004, eq. 2]'s required preload, then
-    R13's torque for the nominal preload (:func:`_torque_terms`, the design's where the
-    rung estimate computed them); also the torque formula's deviation from the exact one.
+    R13's torque for the nominal preload (:func:`_torque_terms`, once per request: with
+    ``scratch``, the rung estimate's); also the torque formula's deviation from the exact one.
     """
     d0, area0 = section
     beta = pl.torsion_factor(
         bolt.pitch, bolt.pitch_diameter, d0, x["thread_friction"], str(x["preload_convention"])
     )
     bolt_preload = pl.assembly_preload(bolt.yield_strength, area0, beta, x["utilization"])
-    (k_thread, k_bearing, _), deviation = _torque_terms(x, bolt, design)
+    (k_thread, k_bearing, _), deviation = _request_torque_terms(x, bolt, scratch)
     nut = _nut_rating(x, bolt, bolt_preload)
     permissible = (
         bolt_preload if nut is None else fa.nut_limited_preload(bolt_preload, nut.proof_load)
@@ -1654,8 +1339,8 @@ def _method_band(
 
 
 def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    design = _handed_off(x)
-    bolt, notes = (design.bolt, list(design.notes)) if design else resolve_bolt(x)
+    design = _design(x, ctx.scratch)
+    bolt, notes = design.bolt, list(design.notes)
     warnings: list[str] = []
     checks: list[Check] = []
     method = get_method(str(x["method"]))
@@ -1673,7 +1358,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"{bolt.stress_diameter * 1e3:.4g} mm: the permissible and yield preloads use "
             f"A_0 = {area0 * 1e6:.4g} mm² and W_p = π d_0³/16 (VDI 2230-1 R7; [004, eq. 3–4])"
         )
-    shared, deviation = _control_values(x, bolt, method, (d0, area0), design)
+    shared, deviation = _control_values(x, bolt, method, (d0, area0), ctx.scratch)
     nut, _ = shared.pop("_nut")
     values = _plain(shared)
     permissible, at_yield = values["permissible_preload"], values["yield_preload"]
@@ -2017,7 +1702,7 @@ def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
     The friction histogram (a series) is not part of it; its min, max and mean are.
     """
     n = _points(x) or 1
-    bolt, notes = resolve_bolt_arrays(x, n, labels=ctx.wants("fastener"))
+    bolt, notes = resolve_bolts(x, n, labels=ctx.wants("fastener"))
     ok = bolt.ok.copy()
     verdicts: dict[str, Any] = {}
     method = get_method(str(x["method"]))

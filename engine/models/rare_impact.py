@@ -19,7 +19,18 @@ import numpy as np
 
 from ..core.errors import EngineError
 from ..core.params import count, friction_coefficient, in_mm, in_ms, in_n_per_mm, in_rpm, positive
-from ..core.spec import Check, ModelSpec, Output, Param, Plot, Result, RunContext, Rung, Window
+from ..core.spec import (
+    Check,
+    ModelSpec,
+    Output,
+    Param,
+    Plot,
+    Result,
+    RunContext,
+    Rung,
+    Scratch,
+    Window,
+)
 from ..numerics.ode import is_array, pymax, where
 from ..physics.rare_impact import (
     G0,
@@ -117,55 +128,33 @@ def _outcome(x: Mapping[str, Any], ctx: RunContext) -> CycleOutcome:
             deadline=ctx.deadline,
             max_steps=ctx.max_steps,
         )
-    o = _cycle(x)
+    o = _cycle(x, ctx.scratch)
     if o.refused:
         closed_form_cycle(x)  # raises the refusal with its reason
     return o
 
 
-def _values_key(x: Mapping[str, Any]) -> tuple[Any, ...]:
-    """The inputs by value: each array as its dtype, shape and a copy of its bytes."""
-    return tuple(
-        (k, (v.dtype.str, v.shape, v.tobytes())) if isinstance(v, np.ndarray) else (k, v)
-        for k, v in x.items()
-    )
+def _cycle(x: Mapping[str, Any], scratch: Scratch) -> CycleOutcome:
+    """The closed form's cycle for one design (numbers) or many (arrays), refusals marked.
+
+    Once per request: the rung estimate and the outputs of a run (or of a sweep chunk)
+    read the same cycle from the request's ``scratch``, which no other request sees.
+    """
+    return scratch.once("impact.rare cycle", lambda: closed_form_cycle_array(x))
 
 
-#: The closed form's cycle (and its error estimate, once asked) for the last inputs, keyed
-#: on their values (a copy of every array's bytes, never the array object): a run or a
-#: sweep asks the estimate and then the outputs on the same inputs and each is computed
-#: once for both, while a caller that refills its buffer in place between calls gets the
-#: new design's cycle.
-_LAST_CYCLE: list[tuple[tuple[Any, ...], CycleOutcome, dict[str, Any]]] = []
-
-
-def _cycle(x: Mapping[str, Any]) -> CycleOutcome:
-    """The closed form's cycle for one design (numbers) or many (arrays), refusals marked."""
-    key = _values_key(x)
-    last = _LAST_CYCLE[-1] if _LAST_CYCLE else None
-    if last is not None and last[0] == key:
-        return last[1]
-    o = closed_form_cycle_array(x)
-    _LAST_CYCLE[:] = [(key, o, {})]
-    return o
-
-
-def _errors(x: Mapping[str, Any]) -> dict[str, Any]:
+def _errors(x: Mapping[str, Any], scratch: Scratch) -> dict[str, Any]:
     """:func:`engine.procedures.striker_cycle.closed_form_errors` of the closed form's cycle."""
-    o = _cycle(x)
-    entry = _LAST_CYCLE[-1]
-    errors = entry[2] if entry[1] is o else {}  # another thread's design came in between
-    if not errors:
-        errors.update(closed_form_errors(x, o))
-    return errors
+    return scratch.once("impact.rare errors", lambda: closed_form_errors(x, _cycle(x, scratch)))
 
 
-def _closed_form_estimate(x: Mapping[str, Any]) -> Any:
+def _closed_form_estimate(x: Mapping[str, Any], scratch: Scratch) -> Any:
     """Worst estimated error over the closed form's outputs for these inputs.
 
-    On arrays (a sweep or a study): an array, NaN where one design gives None.
+    On arrays (a sweep or a study): an array, NaN where one design gives None. The
+    cycle it needs is left in the request's ``scratch`` for the run.
     """
-    groups = _errors(x)
+    groups = _errors(x, scratch)
     worst = groups["stage1"]
     for group in ("engagement", "return", "relock"):
         worst = pymax(worst, groups[group])
@@ -176,7 +165,7 @@ def _closed_form_estimate(x: Mapping[str, Any]) -> Any:
 
 def _output_error(x: Mapping[str, Any], ctx: RunContext) -> float | None:
     """Estimated error of the outputs asked for (the closed form's groups)."""
-    errs = _errors(x)
+    errs = _errors(x, ctx.scratch)
     asked = [errs[g] for n, g in _GROUP.items() if g is not None and ctx.wants(n)]
     if not asked:
         return 0.0
@@ -279,7 +268,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """
     if ctx.rung != "closed_form":
         raise EngineError(f"impact.rare has no array path for the rung {ctx.rung!r}")
-    o = _cycle(x)
+    o = _cycle(x, ctx.scratch)
     dead = o.refused
     n = dead.shape
     any_dead = bool(dead.any())
@@ -1091,10 +1080,18 @@ RARE_IMPACT = ModelSpec(
             "closed_form",
             "quasi-static spin-up of the chosen geometry, piecewise-linear stages 2 and 4 from "
             "the quasi-static release velocity, stage 3 with the half-coupling held",
-            _closed_form_estimate,
+            lambda x: _closed_form_estimate(x, Scratch()),
             typical_error="1e-3 to 1e-2 (estimated per design and output; measured against the "
             "simulation over a grid)",
             typical_time="~60 µs",
+            shared_estimate=_closed_form_estimate,
+            steps=(
+                closed_form_cycle_array,
+                closed_form_errors,
+                _outputs,
+                design_checks,
+                _geometry_note,
+            ),
         ),
         Rung(
             "simulation",
@@ -1105,6 +1102,7 @@ RARE_IMPACT = ModelSpec(
             typical_time="~1 ms (plus a one-off numba load in a fresh process)",
             heavy=True,
             fallback="closed_form",
+            steps=(simulate_cycle, _outputs, design_checks, _geometry_note),
         ),
     ),
     compute=_compute,

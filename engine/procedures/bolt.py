@@ -10,16 +10,17 @@ pressure under head and nut/washer (VDI 2230-1 R10), thread stripping
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
-from ..core.errors import InputOutOfRange
+from ..core.errors import EngineError, InputOutOfRange
 from ..core.params import positive, quantity
 from ..core.spec import Check, Output, Param
 from ..physics import fasteners as fa
+from ..physics import threads as th
 
 SOURCE_TEXT = (
     "ISO 261, ISO 262, ISO 3506-1, SAE J429, ASTM A193, ASME B1.1, ASME B18.2.1, "
@@ -365,6 +366,421 @@ def resolve(x: Mapping[str, Any]) -> tuple[dict[str, Any], Fastener, list[str]]:
         parts.append(head.standard)
     parts.append(grade.name if grade is not None else str(x.get("property_class") or "8.8"))
     return fields, Fastener(" ".join(parts), thread, head, grade), notes
+
+
+# --------------------------------------------------------------------------- the bolt
+#
+# One resolution for one design or many: :func:`resolve_bolt` (one design, with a note
+# per standard value and a refusal naming the field) and :func:`resolve_bolts` (``n``
+# points whose numeric inputs may be arrays, a refused point marked) run the same
+# step, :func:`_bolt_numbers`, after the catalogue's :func:`resolve`.
+
+
+@dataclass(frozen=True)
+class Bolt:
+    """A bolt resolved from a request: standard data unless overridden [m, m², Pa]."""
+
+    diameter: float
+    pitch: float
+    pitch_diameter: float
+    minor_diameter: float
+    stress_diameter: float
+    stress_area: float
+    yield_strength: float
+    tensile_strength: float | None
+    bearing_outer_diameter: float
+    hole_diameter: float
+    #: μ_K multiplier of the bearing face (1/sin 45° on a countersunk head, issue 15).
+    bearing_friction_factor: float = 1.0
+    #: The catalogue's fastener (thread, head, grade) where the request names one.
+    fastener: Fastener | None = None
+
+
+def _class_note(name: str, diameter: float, yield_strength: float, tensile: float) -> str:
+    """Where a property class's strengths come from: ISO 898-1, or its M39 values carried on."""
+    kind = th.PROPERTY_CLASSES[name].yield_kind
+    values = f"{kind} = {yield_strength / 1e6:g} MPa, R_m = {tensile / 1e6:g} MPa"
+    if th.beyond_iso898(name, diameter):
+        return (
+            f"property class {name}, d = {diameter * 1e3:g} mm: ISO 898-1 defines the class "
+            f"only up to M39; its M39 minimum values {values} are taken here (an assumption: "
+            "larger bolts are made to the class by agreement); give yield_strength for the "
+            "bolt's certified values"
+        )
+    return f"property class {name}, d = {diameter * 1e3:g} mm: {values} (ISO 898-1 minimum values)"
+
+
+def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
+    """The bolt a request describes, and notes naming each standard value used."""
+    cat, fastener, notes = resolve(x)
+    numbers, _ = _bolt_numbers(x, cat, notes, None)
+    return Bolt(**numbers, fastener=fastener), notes
+
+
+def _bolt_numbers(
+    x: Mapping[str, Any], cat: Mapping[str, Any], notes: list[str], n: int | None
+) -> tuple[dict[str, Any], np.ndarray]:
+    """The bolt's numbers from the inputs, the catalogue's ``cat`` and the ISO tables.
+
+    One design (``n`` None): floats, a note per standard value used, and a refusal
+    (InputOutOfRange naming the field) where the inputs make no bolt. ``n`` points: the
+    numeric inputs may be arrays, a tabulated value is looked up per point, and a point
+    that would be refused is False in the returned mask (no notes per point).
+    """
+    one = n is None
+    ok: Any = True if n is None else np.ones(n, dtype=bool)
+
+    def need(good: Any, refusal: Callable[[], InputOutOfRange]) -> None:
+        nonlocal ok
+        if not one:
+            ok = ok & good
+        elif not good:
+            raise refusal()
+
+    def num(v: Any) -> Any:
+        return float(v) if one else v
+
+    def note(text: Callable[[], str]) -> None:
+        """A note of one design (written only then: on arrays its numbers are arrays)."""
+        if one:
+            notes.append(text())
+
+    d = num(cat["diameter"])
+    per_point = isinstance(d, np.ndarray)
+    if "pitch" in cat:
+        pitch = num(cat["pitch"])
+    elif x.get("thread_pitch") is None:
+        if per_point:
+            pitch, found = _tabulated(d, th.COARSE_PITCH_MM)
+            ok = ok & found
+        else:
+            pitch = th.coarse_pitch(d)
+            note(lambda: f"pitch P = {pitch * 1e3:g} mm: ISO 261 coarse thread M{d * 1e3:g}")
+    else:
+        pitch = num(x["thread_pitch"])
+        need(
+            d - 1.226869 * pitch > 0.0,
+            lambda: InputOutOfRange(
+                f"thread_pitch = {pitch * 1e3:g} mm is too coarse for d = {d * 1e3:g} mm: the "
+                f"minor diameter d3 = d − 1.226869 P must stay > 0 (P < {d / 1.226869 * 1e3:g} mm)",
+                field="thread_pitch",
+            ),
+        )
+    tensile: Any
+    if x.get("yield_strength") is not None:
+        yield_strength, tensile = num(x["yield_strength"]), None
+        note(lambda: f"yield strength R_p0.2 = {yield_strength / 1e6:g} MPa as given")
+    elif "yield_strength" in cat:
+        yield_strength, tensile = num(cat["yield_strength"]), num(cat["tensile_strength"])
+    else:
+        name = str(x.get("property_class") or "8.8")
+        if per_point:
+            th.property_class_strengths(name, 0.01)  # refuses an unknown class
+            cls = th.PROPERTY_CLASSES[name]
+            mm = d * 1e3
+            ok = ok & (d <= th.largest_diameter(name) * (1 + 1e-9))
+            if np.any(ok & (mm > cls.max_diameter_mm * (1 + 1e-9))):
+                widest = float(np.max(d[ok]))
+                notes.append(_class_note(name, widest, *th.property_class_strengths(name, widest)))
+            small = mm <= cls.size_step_mm * (1 + 1e-9)
+            yield_strength = np.where(small, cls.yield_small * 1e6, cls.yield_large * 1e6)
+            tensile = np.where(small, cls.tensile_small * 1e6, cls.tensile_large * 1e6)
+        else:
+            yield_strength, tensile = th.property_class_strengths(name, d)
+            note(lambda: _class_note(name, d, yield_strength, tensile))
+    given_outer = x.get("bearing_outer_diameter") is not None
+    if given_outer:
+        outer = num(x["bearing_outer_diameter"])
+    elif "bearing_outer_diameter" in cat:
+        outer = num(cat["bearing_outer_diameter"])
+    elif per_point:
+        outer, found = _tabulated(d, th.HEX_BEARING_DIAMETER_MM)
+        ok = ok & found
+    else:
+        outer = th.hex_bearing_diameter(d)
+        note(lambda: f"bearing face D_f = d_w,min = {outer * 1e3:g} mm (ISO 4017 hexagon head)")
+    if x.get("hole_diameter") is not None:
+        hole = num(x["hole_diameter"])
+        need(
+            hole >= d,
+            lambda: InputOutOfRange(
+                f"hole_diameter d_h = {hole * 1e3:g} mm is smaller than the thread diameter "
+                f"d = {d * 1e3:g} mm: the bolt would not pass through the clamped part",
+                field="hole_diameter",
+            ),
+        )
+    elif "hole_diameter" in cat:
+        hole = num(cat["hole_diameter"])
+    else:
+        series = str(x.get("hole_series") or "medium")
+        if per_point:
+            th.clearance_hole(0.012, series)  # refuses an unknown series
+            hole, found = _tabulated(d, th.CLEARANCE_HOLE_MM, th.HOLE_SERIES.index(series))
+            ok = ok & found
+        else:
+            hole = th.clearance_hole(d, series)
+            note(lambda: f"clearance hole d_h = {hole * 1e3:g} mm (ISO 273 {series})")
+    need(
+        outer > hole,
+        lambda: InputOutOfRange(
+            f"bearing_outer_diameter D_f = {outer * 1e3:g} mm must exceed hole_diameter "
+            f"d_h = {hole * 1e3:g} mm: the bearing face would have no area",
+            field="bearing_outer_diameter" if given_outer else "hole_diameter",
+        ),
+    )
+    numbers = {
+        "diameter": d,
+        "pitch": pitch,
+        "pitch_diameter": _given_or(cat, "pitch_diameter", th.pitch_diameter, d, pitch),
+        "minor_diameter": _given_or(cat, "minor_diameter", th.minor_diameter, d, pitch),
+        "stress_diameter": _given_or(cat, "stress_diameter", th.stress_diameter, d, pitch),
+        "stress_area": _given_or(cat, "stress_area", th.stress_area, d, pitch),
+        "yield_strength": yield_strength,
+        "tensile_strength": tensile,
+        "bearing_outer_diameter": outer,
+        "hole_diameter": hole,
+        "bearing_friction_factor": cat.get("bearing_friction_factor", 1.0),
+    }
+    return numbers, ok
+
+
+def _given_or(cat: Mapping[str, Any], name: str, relation: Any, d: Any, pitch: Any) -> Any:
+    """The catalogue's ``name`` where it has one, else the ISO relation on (d, P)."""
+    return cat[name] if name in cat else relation(d, pitch)
+
+
+#: Bolt inputs whose values, not only whether they are given, the bolt resolution reads.
+_BOLT_NUMBERS = (
+    "thread_diameter",
+    "thread_pitch",
+    "yield_strength",
+    "bearing_outer_diameter",
+    "hole_diameter",
+)
+#: The numbers of a bolt (:class:`Bolt`, :class:`BoltArrays`), as :func:`_bolt_numbers` gives them.
+_NUMBER_FIELDS = (
+    "diameter",
+    "pitch",
+    "pitch_diameter",
+    "minor_diameter",
+    "stress_diameter",
+    "stress_area",
+    "yield_strength",
+    "tensile_strength",
+    "bearing_outer_diameter",
+    "hole_diameter",
+    "bearing_friction_factor",
+)
+#: Inputs that name catalogue parts (looked up by the thread size).
+_CATALOGUE_INPUTS = ("thread", "grade", "head_standard", "washer", "nut")
+
+
+@dataclass(frozen=True)
+class BoltArrays:
+    """A bolt for many points: each number a float (the same everywhere) or an array."""
+
+    diameter: Any
+    pitch: Any
+    pitch_diameter: Any
+    minor_diameter: Any
+    stress_diameter: Any
+    stress_area: Any
+    yield_strength: Any
+    tensile_strength: Any
+    bearing_outer_diameter: Any
+    hole_diameter: Any
+    bearing_friction_factor: Any
+    fastener: Fastener
+    #: Where the scalar :func:`resolve_bolt` would refuse the point: False.
+    ok: np.ndarray
+    #: The ``fastener`` output: one label, or one per point.
+    label: Any
+    #: Resolved per distinct size (catalogue parts with a varied size): the bolts, and
+    #: each point's index into them; None where one catalogue part serves every point.
+    rows: tuple[tuple[Bolt | None, ...], np.ndarray] | None = None
+
+    def at(self, j: int) -> Bolt:
+        """The bolt of point ``j``, as :func:`resolve_bolt` gives it for that point alone."""
+        if self.rows is not None:
+            bolt = self.rows[0][int(self.rows[1][j])]
+            assert bolt is not None, "a refused point has no bolt"
+            return bolt
+        n = self.ok.size
+        numbers: dict[str, Any] = {
+            f: None if v is None else float(np.broadcast_to(v, (n,))[j])
+            for f in _NUMBER_FIELDS
+            for v in (getattr(self, f),)
+        }
+        return Bolt(**numbers, fastener=self.fastener)
+
+    def distinct(self) -> tuple[list[Bolt], np.ndarray]:
+        """The distinct bolts (thread size and catalogue part) among the points ``ok``
+        marks, each at its first such point, and each point's index into them (-1 where
+        refused): what a check that reads the bolt as a whole runs once per bolt."""
+        n = self.ok.size
+        index = np.full(n, -1, dtype=np.int64)
+        good = np.flatnonzero(self.ok)
+        if good.size == 0:
+            return [], index
+        if self.rows is None and not any(
+            isinstance(v, np.ndarray) and v.ndim for v in (self.diameter, self.pitch)
+        ):
+            index[good] = 0
+            return [self.at(int(good[0]))], index
+        if self.rows is not None:
+            keys = np.asarray(self.rows[1]).reshape(-1)[good][:, None]
+        else:
+            keys = np.column_stack(
+                [np.broadcast_to(v, (n,))[good] for v in (self.diameter, self.pitch)]
+            )
+        _, first, inverse = np.unique(keys, axis=0, return_index=True, return_inverse=True)
+        index[good] = np.asarray(inverse).reshape(-1)
+        return [self.at(int(good[k])) for k in first], index
+
+
+def _table_lookup(
+    diameter: np.ndarray, table: Mapping[float, Any]
+) -> tuple[np.ndarray, np.ndarray]:
+    """Index into ``table``'s keys (mm) per diameter [m], and where one matches.
+
+    The match of :func:`engine.physics.threads._size_key` (relative 1e-6), on arrays: the keys
+    are far apart, so only the two keys either side of a size can match it.
+    """
+    keys = np.fromiter(table, dtype=float)
+    order = np.argsort(keys)
+    ordered = keys[order]
+    mm = np.asarray(diameter) * 1e3
+    right = np.clip(np.searchsorted(ordered, mm), 0, keys.size - 1)
+    left = np.maximum(right - 1, 0)
+    near_left = np.abs(mm - ordered[left]) <= 1e-6 * ordered[left]
+    near_right = np.abs(mm - ordered[right]) <= 1e-6 * ordered[right]
+    index = order[np.where(near_left, left, right)]
+    return index, near_left | near_right
+
+
+def _tabulated(
+    diameter: np.ndarray, table: Mapping[float, Any], column: int | None = None
+) -> tuple[np.ndarray, np.ndarray]:
+    """A per-size table's value [m] (mm × 1e-3) per diameter [m], NaN where not tabulated."""
+    index, found = _table_lookup(diameter, table)
+    rows = list(table.values())
+    mm = np.array([r if column is None else r[column] for r in rows], dtype=float)
+    return np.where(found, mm[index] * 1e-3, np.nan), found
+
+
+def resolve_bolts(
+    x: Mapping[str, Any], n: int, labels: bool = True, per_size: bool = False
+) -> tuple[BoltArrays, list[str]]:
+    """:func:`resolve_bolt` for ``n`` points whose numeric bolt inputs may be arrays.
+
+    Nothing varied: :func:`resolve_bolt` once. Otherwise the catalogue (designation,
+    grade, head) is read once and :func:`_bolt_numbers`, the step the single design
+    runs, gives every number on arrays, a point the single design refuses marked False
+    in ``ok``. A varied thread diameter or pitch together with a catalogue part needs
+    the catalogue per size: with ``per_size`` the bolt is resolved once per distinct
+    combination of the varied bolt inputs (``rows``); without, ValueError (the caller,
+    whose bought-part checks take one catalogue part for every point, evaluates those
+    points one by one). ``labels=False`` skips the per-point ``fastener`` labels of a
+    varied size. The notes are the catalogue's; a varied size has no note per point.
+    """
+    ok = np.ones(n, dtype=bool)
+    varied = [k for k in _BOLT_NUMBERS if isinstance(x.get(k), np.ndarray)]
+    if not varied:
+        bolt, bolt_notes = resolve_bolt(x)
+        fastener = bolt.fastener or Fastener("", None, None, None)
+        numbers = {f: getattr(bolt, f) for f in _NUMBER_FIELDS}
+        return (
+            BoltArrays(**numbers, fastener=fastener, ok=ok, label=fastener.label),
+            bolt_notes,
+        )
+    size_varied = "thread_diameter" in varied or "thread_pitch" in varied
+    if size_varied and any(x.get(k) is not None for k in _CATALOGUE_INPUTS):
+        if not per_size or any(np.ndim(x[k]) != 1 for k in varied):
+            raise ValueError("a catalogue part with a varied thread size: evaluate point by point")
+        return _resolve_per_size(x, n, varied)
+    # the catalogue reads only whether these are given, not their values
+    placeholder = {**x, **{k: 1.0 for k in varied}}
+    cat: dict[str, Any]
+    notes: list[str] = []
+    if size_varied:
+        if x.get("thread_diameter") is None:
+            resolve(placeholder)  # refuses: no thread and no diameter
+        cat = {"diameter": x["thread_diameter"]}
+        fastener = Fastener("", None, None, None)
+    else:
+        cat, fastener, found_notes = resolve(placeholder)
+        notes.extend(found_notes)
+    numbers, ok = _bolt_numbers(x, cat, notes, n)
+    label: Any = fastener.label
+    if size_varied and labels:
+        label = _size_labels(x, numbers["diameter"], n)
+    return BoltArrays(**numbers, fastener=fastener, ok=ok, label=label), notes
+
+
+def _resolve_per_size(
+    x: Mapping[str, Any], n: int, varied: list[str]
+) -> tuple[BoltArrays, list[str]]:
+    """:func:`resolve_bolt` once per distinct combination of the ``varied`` bolt inputs.
+
+    A combination it refuses is refused at its points; the notes are the first point's.
+    """
+    fixed = {k: v for k, v in x.items() if not isinstance(v, np.ndarray)}
+    table = np.column_stack([np.asarray(x[k], dtype=float) for k in varied])
+    rows, index = np.unique(table, axis=0, return_inverse=True)
+    index = np.asarray(index, dtype=np.int64).reshape(n)
+    bolts: list[Bolt | None] = []
+    notes: list[str] = []
+    for k, row in enumerate(rows):
+        try:
+            bolt, said = resolve_bolt({**fixed, **dict(zip(varied, row.tolist(), strict=True))})
+        except EngineError:
+            bolts.append(None)
+            continue
+        bolts.append(bolt)
+        if k == index[0]:
+            notes = said
+    found = [b for b in bolts if b is not None]
+    ok = np.array([b is not None for b in bolts], dtype=bool)[index]
+
+    def column(field: str) -> Any:
+        if not found or all(getattr(b, field) is None for b in found):
+            return None
+        return np.array([np.nan if b is None else getattr(b, field) for b in bolts], dtype=float)[
+            index
+        ]
+
+    numbers = {f: column(f) for f in _NUMBER_FIELDS}
+    if numbers["diameter"] is None:
+        numbers = {f: np.full(n, np.nan) for f in _NUMBER_FIELDS}
+    label = np.array(
+        [None if b is None or b.fastener is None else b.fastener.label for b in bolts],
+        dtype=object,
+    )[index]
+    fastener = (found[0].fastener if found else None) or Fastener("", None, None, None)
+    return (
+        BoltArrays(**numbers, fastener=fastener, ok=ok, label=label, rows=(tuple(bolts), index)),
+        notes,
+    )
+
+
+def _size_labels(x: Mapping[str, Any], diameter: Any, n: int) -> np.ndarray:
+    """The ``fastener`` label per point for a varied numeric thread size (no catalogue part).
+
+    As :func:`engine.procedures.bolt.resolve` writes it: the ISO designation where the
+    size is a catalogue thread, else "d = … mm", then the property class.
+    """
+    cls = str(x.get("property_class") or "8.8")
+    d = np.broadcast_to(np.asarray(diameter, dtype=float), (n,))
+    p_in = x.get("thread_pitch")
+    p = None if p_in is None else np.broadcast_to(np.asarray(p_in, dtype=float), (n,))
+    _, near = _table_lookup(d, fa.METRIC_COARSE_PITCH_MM)
+    out = np.empty(n, dtype=object)
+    out[:] = list(map(f"d = %g mm {cls}".__mod__, (d * 1e3).tolist()))
+    for j in np.flatnonzero(near).tolist():
+        thread = _catalogue_thread(float(d[j]), None if p is None else float(p[j]))
+        if thread is not None:
+            out[j] = f"{thread.designation} {cls}"
+    return out
 
 
 @dataclass(frozen=True)
@@ -742,9 +1158,13 @@ __all__ = [
     "CHECK_OUTPUTS",
     "SOURCE_TEXT",
     "THREAD_INPUTS",
+    "Bolt",
+    "BoltArrays",
     "Fastener",
     "bought_part_arrays",
     "bought_part_checks",
     "joint_check_hook",
     "resolve",
+    "resolve_bolt",
+    "resolve_bolts",
 ]

@@ -39,7 +39,7 @@ from scipy.stats import qmc
 from ..core.errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange
 from ..core.points import at, auto_index, in_range, rung_estimates, take, vector
 from ..core.runner import DEFAULT_TOLERANCE, choose_rung, run
-from ..core.spec import ModelSpec, Param
+from ..core.spec import ModelSpec, Param, Scratch
 
 METHODS = ("grid", "monte_carlo", "lhs", "sobol")
 DISTRIBUTIONS = ("uniform", "normal", "triangular")
@@ -461,8 +461,9 @@ def evaluate_chunk(
             x[name] = col.astype(np.int64)
     asked = fidelity if fidelity is not None else ("auto" if tolerance is not None else None)
     asked = asked or spec.default_fidelity
+    scratch = Scratch()  # the chunk's: the estimates' work on x, for the array path on x
     if asked == "auto":
-        estimates = rung_estimates(spec, x, n)
+        estimates = rung_estimates(spec, x, n, scratch=scratch)
         index = None if estimates is None else auto_index(spec, estimates, n, tol)
     else:
         choose_rung(spec, fixed, asked, tol)  # refuses an unknown rung name
@@ -473,7 +474,16 @@ def evaluate_chunk(
             sel = valid & (index == i)
             if not sel.any():
                 continue
-            vec = vector(spec, take(x, n, sel), rung, outputs, tol, int(sel.sum()))
+            whole = bool(sel.all())  # the estimates' inputs: their work applies to them
+            vec = vector(
+                spec,
+                take(x, n, sel),
+                rung,
+                outputs,
+                tol,
+                int(sel.sum()),
+                scratch=scratch if whole else None,
+            )
             if vec is None or not vec.computed:
                 # none of the asked outputs comes from this rung's array path here: its
                 # NaN columns cannot tell a refused point from a null the scalar path gives
@@ -481,7 +491,6 @@ def evaluate_chunk(
                 loop |= sel
                 continue
             got = vec.values
-            whole = bool(sel.all())
             # a point with no finite output is one the model refuses (NaN by the array contract)
             dead = np.ones(int(sel.sum()), dtype=bool)
             for name, column in got.items():

@@ -885,7 +885,12 @@ def test_report_prints_every_equation_on_one_to_three_a4_pages(page, base_url, t
     assert page.inner_text("#report-meta").count("UTC") == 1
     body = page.inner_text("#report-body")
     assert "Inputs" in body and "Results" in body
-    listed = page.evaluate("window.calcState.model.equations.length")
+    # the equations of the rung that ran (its declared steps), else the model's: every one
+    listed = page.evaluate(
+        "(() => { const s = window.calcState, m = s.model;"
+        " const r = (m.rungs || []).find((x) => x.name === s.lastResponse.rung);"
+        " return ((r && r.equations) || m.equations).length; })()"
+    )
     assert page.locator("#report .eq-row").count() == listed  # every one, no cap
     if listed:
         # equations rendered by KaTeX, not LaTeX source

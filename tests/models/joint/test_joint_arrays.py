@@ -23,6 +23,7 @@ from engine.core.spec import RunContext
 from engine.models import get_model
 from engine.models import joint as joint_model
 from engine.physics import joint as jt
+from engine.procedures import bolt as bolt_procedure
 from engine.studies.execute import run_study
 from engine.studies.plan import (
     CHECK_FAILED,
@@ -401,13 +402,13 @@ def test_scattered_strength_face_and_hole_resolve_the_bolt_once(monkeypatch):
     """R_p0.2, D_f and d_h scattered (values the bolt only carries): no resolution per point,
     and the points resolve_bolt refuses (d_h < d, D_f ≤ d_h) are refused here too."""
     calls = {"n": 0}
-    resolve = joint_model.resolve_bolt
+    resolve = bolt_procedure.resolve
 
     def counting(x: Any) -> Any:
         calls["n"] += 1
         return resolve(x)
 
-    monkeypatch.setattr(joint_model, "resolve_bolt", counting)
+    monkeypatch.setattr(bolt_procedure, "resolve", counting)
     rng = np.random.default_rng(8)
     n = 40
     columns = {
@@ -418,8 +419,10 @@ def test_scattered_strength_face_and_hole_resolve_the_bolt_once(monkeypatch):
     }
     base = {**M12_2X20, "working_load_min": 0.0, "transverse_load": 1e3}
     chunk = evaluate_chunk(JOINT, base, columns, OUTPUTS, fidelity="closed_form")
-    assert calls["n"] <= 3  # notes, the resolution, and nothing per point
-    monkeypatch.setattr(joint_model, "resolve_bolt", resolve)
+    # the catalogue read once by the arrays' resolution, once by the check hook's probe,
+    # and nothing per point
+    assert 1 <= calls["n"] <= 2
+    monkeypatch.setattr(bolt_procedure, "resolve", resolve)
     again = _assert_matches_single_runs(base, columns)
     np.testing.assert_array_equal(chunk.values["grip"], again.values["grip"])
     refused = np.isnan(chunk.values["grip"])

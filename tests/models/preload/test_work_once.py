@@ -14,7 +14,7 @@ import pytest
 
 import engine.models.preload as mp
 from engine import run
-from engine.core.spec import ModelSpec
+from engine.core.spec import ModelSpec, Scratch
 from engine.models.preload import CONTROL, TIGHTENING
 
 
@@ -76,12 +76,11 @@ def test_a_named_rung_resolves_in_the_run(monkeypatch: pytest.MonkeyPatch) -> No
 
 
 def test_an_estimate_for_other_inputs_is_not_taken() -> None:
-    """The hand-off matches the inputs by value: an estimate left for M12 is not M16's."""
+    """The design lives in the request's scratch: another request's scratch has M16's."""
     m12 = dict(TIGHTENING.validate({"thread_diameter": 0.012})[0])
     m16 = dict(TIGHTENING.validate({"thread_diameter": 0.016})[0])
-    mp._rung_estimate(m12)
-    assert mp._handed_off(m16) is None
-    assert mp._HANDOFF.design is None  # used or not, the slot is emptied
-    mp._rung_estimate(m12)
-    design = mp._handed_off(dict(m12))
-    assert design is not None and design.bolt.diameter == 0.012
+    first, second = Scratch(), Scratch()
+    mp._rung_estimate(m12, first)
+    mp._rung_estimate(m16, second)
+    assert mp._design(m12, first).bolt.diameter == 0.012
+    assert mp._design(m16, second).bolt.diameter == 0.016
