@@ -1,0 +1,172 @@
+"""The manual: it builds (``mkdocs build --strict``: a broken link or anchor fails), every
+model has its page and its validation page, the worked examples on the pages show the
+numbers ``engine.run`` gives, the pages run under the service's CSP, and the service
+serves them at ``/manual/`` (or, not built, a page saying how to build it; never a 500).
+"""
+
+from __future__ import annotations
+
+import doctest
+import html
+import importlib.util
+import math
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+from types import ModuleType
+
+import pytest
+from fastapi.testclient import TestClient
+
+import engine
+from service import create_app
+from service.config import Settings
+from service.middleware import STRICT_CSP
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _hooks() -> ModuleType:
+    spec = importlib.util.spec_from_file_location("manual_hooks", ROOT / "scripts/manual/hooks.py")
+    assert spec and spec.loader
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+HOOKS = _hooks()
+
+
+def test_hook_doctests() -> None:
+    pytest.importorskip("markdown")  # mkdocs's own dependency; in the dev lock
+    assert doctest.testmod(HOOKS).failed == 0
+
+
+def test_every_model_and_every_validation_module_is_placed() -> None:
+    assert set(HOOKS.VALIDATION) == {s.name for s in engine.MODELS}
+    placed = {m for modules in HOOKS.VALIDATION.values() for m in modules}
+    present = {p.name for p in (ROOT / "tests/validation").glob("test_*.py")}
+    assert placed == present, "place each validation module on its models' pages"
+
+
+def test_numbers_print_as_the_page_prints_them() -> None:
+    # six significant figures, SI; nothing non-finite ever printed as a number
+    assert HOOKS.fmt(83.63534251785468) == "83.6353"
+    assert HOOKS.fmt(1.0e-5) == "1e-05"
+    assert HOOKS.fmt(math.nan) == "—"
+    assert HOOKS.fmt("M12 8.8") == "M12 8.8"
+
+
+def test_hand_written_pages_exist() -> None:
+    for _, page in HOOKS.PAGES:
+        assert (ROOT / "docs" / page).is_file(), page
+
+
+# ---------------------------------------------------------------- the built site
+
+
+@pytest.fixture(scope="module")
+def site(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    try:
+        import mkdocs  # noqa: F401
+    except ImportError:
+        if os.environ.get("CI"):
+            pytest.fail("mkdocs is not installed; CI installs it from requirements-dev.lock")
+        pytest.skip("mkdocs is not installed (pip install -e '.[docs]')")
+    out = tmp_path_factory.mktemp("site")
+    done = subprocess.run(
+        [sys.executable, "-m", "mkdocs", "build", "--strict", "--quiet", "-d", str(out)],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    assert done.returncode == 0, done.stdout + done.stderr
+    return out
+
+
+def _row(page: str, name: str) -> str | None:
+    """The value cell of the first table row naming ``name``."""
+    m = re.search(rf"<tr><td><code>{re.escape(name)}</code></td><td>(.*?)</td>", page)
+    return m[1] if m else None
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("spec", engine.MODELS, ids=lambda s: s.name)
+def test_model_page_shows_the_engine_s_numbers(site: Path, spec: engine.ModelSpec) -> None:
+    page = (site / "models" / f"{spec.name}.html").read_text(encoding="utf-8")
+    assert f"POST /api/v1{spec.path}" in page
+    assert page.count('<div class="latex">') >= 1  # its equations
+    example = page.split('id="example-1"', 1)[1]
+    result = engine.run(spec, spec.examples[0])
+    shown = 0
+    for name, value in result.results.items():
+        if isinstance(value, float | int) and not isinstance(value, bool):
+            assert _row(example, name) == HOOKS.fmt(value), name
+            shown += 1
+    assert shown >= 3
+    for check in result.checks:
+        assert f"<code>{html.escape(check.name)}</code>" in example
+
+
+@pytest.mark.slow
+def test_preload_example_stress_area_is_the_iso_898_1_value(site: Path) -> None:
+    # M12 coarse, P = 1.75 mm: d2 = 12 − 0.649519·1.75 = 10.863341 mm,
+    # d3 = 12 − 1.226869·1.75 = 9.852979 mm, A_s = π/4·((d2 + d3)/2)² = 84.2665 mm²
+    # (ISO 898-1 Table 4 prints 84.3 mm²), shown in m² to six figures
+    page = (site / "models" / "preload.tightening.html").read_text(encoding="utf-8")
+    example = page.split('id="example-1"', 1)[1]
+    d2, d3 = 12 - 0.649519 * 1.75, 12 - 1.226869 * 1.75
+    assert f"{math.pi / 4 * ((d2 + d3) / 2) ** 2 * 1e-6:.6g}" == "8.42665e-05"
+    assert _row(example, "stress_area") == "8.42665e-05"
+
+
+@pytest.mark.slow
+def test_validation_pages_name_their_tests(site: Path) -> None:
+    for spec in engine.MODELS:
+        page = (site / "validation" / f"{spec.name}.html").read_text(encoding="utf-8")
+        for module in HOOKS.VALIDATION[spec.name]:
+            assert f"tests/validation/{module}" in page
+        assert "accuracy.html" in page
+
+
+@pytest.mark.slow
+def test_pages_need_nothing_the_csp_forbids(site: Path) -> None:
+    pages = list(site.rglob("*.html"))
+    assert len(pages) > 2 * len(engine.MODELS)
+    for path in pages:
+        text = path.read_text(encoding="utf-8")
+        for tag in re.findall(r"<script\b[^>]*>", text):
+            assert "src=" in tag and "//" not in tag, (path, tag)
+        assert not re.search(r"<script\b[^>]*>\s*[^<\s]", text), path  # no inline script body
+        for href in re.findall(r'<link\b[^>]*href="([^"]+)"', text):
+            assert "//" not in href, (path, href)
+
+
+@pytest.mark.slow
+def test_service_serves_the_built_manual(site: Path) -> None:
+    client = TestClient(create_app(settings=Settings(manual_dir=str(site), warm_up=False)))
+    index = client.get("/manual/")
+    assert index.status_code == 200 and "Tightening-tool calculator manual" in index.text
+    assert index.headers["content-security-policy"] == STRICT_CSP
+    page = client.get("/manual/models/clutch.ball.html")
+    assert page.status_code == 200 and "Ball safety clutch" in page.text
+    assert client.get("/manual/vendor/katex/katex.min.js").status_code == 200
+    bare = client.get("/manual", follow_redirects=False)
+    assert bare.status_code == 308 and bare.headers["location"] == "/manual/"
+    assert client.get("/manual/no-such-page.html").status_code == 404
+    assert client.get("/").status_code == 200  # the form is still at /
+
+
+def test_service_says_how_to_build_a_missing_manual(tmp_path: Path) -> None:
+    settings = Settings(manual_dir=str(tmp_path / "none"), warm_up=False)
+    client = TestClient(create_app(settings=settings), raise_server_exceptions=False)
+    for path in ("/manual/", "/manual/models/clutch.ball.html", "/manual/%2e%2e/%2e%2e/etc"):
+        answer = client.get(path)
+        assert answer.status_code == 404, path
+        assert "make manual" in answer.text and answer.headers["content-type"].startswith(
+            "text/html"
+        )
+        assert answer.headers["content-security-policy"] == STRICT_CSP
