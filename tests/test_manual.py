@@ -141,6 +141,7 @@ def test_pages_need_nothing_the_csp_forbids(site: Path) -> None:
         for tag in re.findall(r"<script\b[^>]*>", text):
             assert "src=" in tag and "//" not in tag, (path, tag)
         assert not re.search(r"<script\b[^>]*>\s*[^<\s]", text), path  # no inline script body
+        assert ' style="' not in text, path  # style-src 'self': no inline style attribute
         for href in re.findall(r'<link\b[^>]*href="([^"]+)"', text):
             assert "//" not in href, (path, href)
 

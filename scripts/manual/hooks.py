@@ -135,12 +135,17 @@ def source_anchors() -> dict[str, str]:
 
 
 def _sources(spec: Any, up: str) -> str:
+    """Each source the model cites, its full reference linked to its entry in Sources."""
+    from engine.core.sources import SOURCES
+
     anchors = source_anchors()
     items = []
     for sid in spec.sources:
         ref = esc(f"[{sid}]")
         link = anchors.get(sid)
-        items.append(f'<li><a href="{up}{link}">{ref}</a></li>' if link else f"<li>{ref}</li>")
+        text = SOURCES[sid].reference().removeprefix(f"[{sid}] ") if sid in SOURCES else ""
+        label = f'<a href="{up}{link}">{ref}</a>' if link else ref
+        items.append(f"<li>{label} {esc(text)}</li>")
     return "<ul>\n" + "\n".join(items) + "\n</ul>" if items else ""
 
 
@@ -429,7 +434,8 @@ def validation_page(spec: Any) -> str:
         )
     for module in VALIDATION[spec.name]:
         doc, tests = _docstrings(ROOT / "tests" / "validation" / module)
-        parts += ["", f"## tests/validation/{module}", "", _paragraphs(doc), ""]
+        parts += ["", f"## {module}", "", f"<p><code>tests/validation/{module}</code></p>"]
+        parts += [_paragraphs(doc), ""]
         rows_ = [[f"<code>{esc(n)}</code>", esc(" ".join(d.split()))] for n, d in tests]
         parts.append(table(["test", "what it holds"], rows_))
     return "\n".join(parts) + "\n"
