@@ -112,6 +112,26 @@ def test_model_page_shows_the_engine_s_numbers(site: Path, spec: engine.ModelSpe
 
 
 @pytest.mark.slow
+def test_each_page_s_curl_gets_the_page_s_numbers(site: Path) -> None:
+    client = TestClient(create_app(settings=Settings(warm_up=False)))
+    for spec in engine.MODELS:
+        page = (site / "models" / f"{spec.name}.html").read_text(encoding="utf-8")
+        example = page.split('id="example-1"', 1)[1]
+        found = re.search(r"curl -s http://127\.0\.0\.1:8000(\S+) .*?-d '(.*?)'\n", example, re.S)
+        assert found, spec.name
+        url, body = found.groups()
+        answer = client.post(
+            url,
+            content=html.unescape(body).replace("'\\''", "'"),
+            headers={"content-type": "application/json"},
+        )
+        assert answer.status_code == 200, (spec.name, answer.text)
+        for name, value in answer.json()["results"].items():
+            if isinstance(value, float):
+                assert _row(example, name) == HOOKS.fmt(value), (spec.name, name)
+
+
+@pytest.mark.slow
 def test_preload_example_stress_area_is_the_iso_898_1_value(site: Path) -> None:
     # M12 coarse, P = 1.75 mm: d2 = 12 − 0.649519·1.75 = 10.863341 mm,
     # d3 = 12 − 1.226869·1.75 = 9.852979 mm, A_s = π/4·((d2 + d3)/2)² = 84.2665 mm²

@@ -232,10 +232,10 @@ def _example(spec: Any, i: int, example: Mapping[str, Any]) -> str:
         [f"<code>{esc(k)}</code>", esc(fmt(v)), f"<code>{esc(spec.param(k).unit)}</code>"]
         for k, v in example.items()
     ]
-    body = json.dumps(dict(example), ensure_ascii=False)
+    body = json.dumps(dict(example), ensure_ascii=False).replace("'", "'\\''")  # for the shell
     curl = (
-        f"curl -s http://127.0.0.1:8000/api/v1{spec.path} "
-        f"-H 'content-type: application/json' -d '{body}'"
+        f"curl -s http://127.0.0.1:8000/api/v1{spec.path} \\\n"
+        f"  -H 'content-type: application/json' \\\n  -d '{body}'"
     )
     err = result.error_estimate
     lines = [
