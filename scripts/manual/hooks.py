@@ -470,8 +470,24 @@ def on_config(config: Any) -> Any:
     nav.append({"Validation": validation})
     nav += [{title: page} for title, page in PAGES[1:]]
     nav.append({"Changelog": "changelog.md"})
+    listed = {"accuracy.md", "mutation.md", *(page for _, page in PAGES)}
+    more = [
+        {_title(path): path.relative_to(docs).as_posix()}
+        for path in sorted(docs.rglob("*.md"))
+        if path.relative_to(docs).as_posix() not in listed
+    ]
+    if more:  # a page another change adds to docs/ is in the manual without editing this
+        nav.append({"More": more})
     config["nav"] = nav
     return config
+
+
+def _title(path: Path) -> str:
+    """A page's first heading, else its file name."""
+    for line in path.read_text(encoding="utf-8").splitlines():
+        if line.startswith("# "):
+            return line[2:].strip()
+    return path.stem
 
 
 def on_files(files: Any, config: Any) -> Any:
