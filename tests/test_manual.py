@@ -59,6 +59,23 @@ def test_numbers_print_as_the_page_prints_them() -> None:
     assert HOOKS.fmt("M12 8.8") == "M12 8.8"
 
 
+def test_a_model_s_accuracy_rows_are_its_own(tmp_path: Path) -> None:
+    table = tmp_path / "accuracy.md"
+    assert HOOKS.accuracy_rows("clutch.ball", table) is None
+    table.write_text(
+        "# Accuracy\n\nMeasured 2026-01-01.\n\n| model | method | bound |\n|---|---|---|\n"
+        "| `clutch.ball` | closed_form | 25 % |\n| `clutch.ball_setting` | closed_form | 1 % |\n",
+        encoding="utf-8",
+    )
+    rows = HOOKS.accuracy_rows("clutch.ball", table)
+    assert rows.splitlines() == [
+        "| model | method | bound |",
+        "|---|---|---|",
+        "| `clutch.ball` | closed_form | 25 % |",
+    ]
+    assert HOOKS.accuracy_rows("impact.rare", table) == ""
+
+
 def test_hand_written_pages_exist() -> None:
     for _, page in HOOKS.PAGES:
         assert (ROOT / "docs" / page).is_file(), page

@@ -381,17 +381,16 @@ def _paragraphs(text: str) -> str:
     return "\n".join(out)
 
 
-def accuracy_rows(name: str) -> str | None:
-    """The lines of docs/accuracy.md about ``name`` (its header first), or None if absent."""
-    path = ROOT / "docs" / "accuracy.md"
+def accuracy_rows(name: str, path: Path = ROOT / "docs" / "accuracy.md") -> str | None:
+    """The rows of the accuracy table (``make bench``) whose cell names model ``name``, under
+    the table's header; "" when it has none, None when there is no table."""
     if not path.is_file():
         return None
-    lines = path.read_text(encoding="utf-8").splitlines()
-    header = [ln for ln in lines if ln.startswith("|")][:2]
-    rows = [ln for ln in lines if ln.startswith("|") and f"{name}" in ln]
-    if not rows:
-        return ""
-    return "\n".join([*header, *rows])
+    table_lines = [ln for ln in path.read_text(encoding="utf-8").splitlines() if ln[:1] == "|"]
+    rows = [
+        ln for ln in table_lines[2:] if name in (cell.strip().strip("`") for cell in ln.split("|"))
+    ]
+    return "\n".join([*table_lines[:2], *rows]) if rows else ""
 
 
 def validation_page(spec: Any) -> str:
