@@ -360,6 +360,13 @@ def _docstrings(path: Path) -> tuple[str, list[tuple[str, str]]]:
 
 
 def _paragraphs(text: str) -> str:
+    """A docstring as HTML paragraphs and bulleted lists, without the project's issue numbers
+    (a reader of the manual cannot look them up).
+
+    >>> _paragraphs("The case of issue 18: 890 N·m.\\n\\n* one\\n  more\\n* two")
+    '<p>The case: 890 N·m.</p>\\n<ul><li>one more</li><li>two</li></ul>'
+    """
+    text = re.sub(r" (?:of |in |from )?\(?issue \d+\)?(?=[\s:;,.])", "", text)
     out = []
     for para in text.split("\n\n"):
         lines = [ln.strip() for ln in para.strip().splitlines()]
