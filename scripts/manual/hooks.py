@@ -359,32 +359,35 @@ def _docstrings(path: Path) -> tuple[str, list[tuple[str, str]]]:
     return ast.get_docstring(tree) or "", tests
 
 
-def _paragraphs(text: str) -> str:
-    """A docstring as HTML paragraphs and bulleted lists, without the project's issue numbers
-    (a reader of the manual cannot look them up).
+def _inline(words: list[str]) -> str:
+    """Words joined and escaped, ``code`` as code."""
+    return re.sub(r"``(.+?)``", r"<code>\1</code>", esc(" ".join(words)))
 
-    >>> _paragraphs("The case of issue 18: 890 N·m.\\n\\n* one\\n  more\\n* two")
-    '<p>The case: 890 N·m.</p>\\n<ul><li>one more</li><li>two</li></ul>'
+
+def _paragraphs(text: str) -> str:
+    """A docstring as HTML paragraphs and bulleted lists (``code`` as code), without the
+    project's issue numbers (a reader of the manual cannot look them up).
+
+    >>> _paragraphs("The case of issue 18 in ``tests``:\\n* one\\n  more\\n* two\\n\\nEnd.")
+    '<p>The case in <code>tests</code>:</p>\\n<ul><li>one more</li><li>two</li></ul>\\n<p>End.</p>'
     """
     text = re.sub(r" (?:of |in |from )?\(?issue \d+\)?(?=[\s:;,.])", "", text)
+
     out = []
     for para in text.split("\n\n"):
-        lines = [ln.strip() for ln in para.strip().splitlines()]
-        if not lines:
-            continue
-        if lines[0].startswith(("* ", "- ")):  # a bulleted list
-            items, cur = [], ""
-            for ln in lines:
-                if ln.startswith(("* ", "- ")):
-                    if cur:
-                        items.append(cur)
-                    cur = ln[2:]
-                else:
-                    cur += " " + ln
-            items.append(cur)
-            out.append("<ul>" + "".join(f"<li>{esc(i)}</li>" for i in items) + "</ul>")
-        else:
-            out.append(f"<p>{esc(' '.join(lines))}</p>")
+        lead: list[str] = []
+        items: list[list[str]] = []
+        for line in (ln.strip() for ln in para.strip().splitlines()):
+            if line.startswith(("* ", "- ")):
+                items.append([line[2:]])
+            elif items:
+                items[-1].append(line)
+            elif line:
+                lead.append(line)
+        if lead:
+            out.append(f"<p>{_inline(lead)}</p>")
+        if items:
+            out.append("<ul>" + "".join(f"<li>{_inline(i)}</li>" for i in items) + "</ul>")
     return "\n".join(out)
 
 
@@ -442,7 +445,7 @@ def validation_page(spec: Any) -> str:
         doc, tests = _docstrings(ROOT / "tests" / "validation" / module)
         parts += ["", f"## {module}", "", f"<p><code>tests/validation/{module}</code></p>"]
         parts += [_paragraphs(doc), ""]
-        rows_ = [[f"<code>{esc(n)}</code>", esc(" ".join(d.split()))] for n, d in tests]
+        rows_ = [[f"<code>{esc(n)}</code>", _inline(d.split())] for n, d in tests]
         parts.append(table(["test", "what it holds"], rows_))
     return "\n".join(parts) + "\n"
 
