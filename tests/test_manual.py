@@ -12,6 +12,7 @@ import importlib.util
 import math
 import os
 import re
+import shlex
 import subprocess
 import sys
 from pathlib import Path
@@ -79,6 +80,41 @@ def test_a_model_s_accuracy_rows_are_its_own(tmp_path: Path) -> None:
 def test_hand_written_pages_exist() -> None:
     for _, page in HOOKS.PAGES:
         assert (ROOT / "docs" / page).is_file(), page
+
+
+def _curls(text: str) -> list[list[str]]:
+    """The curl commands of a Markdown text's ``sh`` blocks, split as the shell would."""
+    found: list[list[str]] = []
+    for block in re.findall(r"```sh\n(.*?)```", text, flags=re.S):
+        command: list[str] | None = None  # the curl being read, None outside one
+        for word in shlex.split(block.replace("\\\n", " "), comments=True):
+            if word == "curl":
+                command = []
+                found.append(command)
+            elif word in ("&&", "||", ";", "|"):
+                command = None
+            if command is not None:
+                command.append(word)
+    return found
+
+
+@pytest.mark.parametrize("page", ["README.md", "index.md", "api.md"])
+def test_curl_examples_answer_as_documented(page: str) -> None:
+    # every curl in the README and the guides is a real route that takes its body
+    path = ROOT / page if page == "README.md" else ROOT / "docs" / page
+    client = TestClient(create_app(settings=Settings(warm_up=False)))
+    curls = _curls(path.read_text(encoding="utf-8"))
+    assert len(curls) >= 1
+    for words in curls:
+        (url,) = [w for w in words if w.startswith("http://127.0.0.1:8000/")]
+        body = words[words.index("-d") + 1] if "-d" in words else None
+        route = url.removeprefix("http://127.0.0.1:8000")
+        answer = (
+            client.post(route, content=body, headers={"content-type": "application/json"})
+            if body is not None
+            else client.get(route)
+        )
+        assert answer.status_code in (200, 202), (page, route, answer.text[:300])
 
 
 # ---------------------------------------------------------------- the built site
