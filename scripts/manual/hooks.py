@@ -152,7 +152,8 @@ def _sources(spec: Any, up: str) -> str:
 def _inputs(spec: Any) -> str:
     rows = []
     for p in (p.describe() for p in spec.inputs):
-        default = "required" if p["required"] else fmt(p["default"])
+        default = p["default"]
+        default = "required" if p["required"] else "none" if default is None else fmt(default)
         rows.append(
             [
                 f"<code>{esc(p['name'])}</code>",
