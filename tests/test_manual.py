@@ -230,7 +230,8 @@ def test_service_serves_the_built_manual(site: Path) -> None:
     assert client.get("/manual/vendor/katex/katex.min.js").status_code == 200
     bare = client.get("/manual", follow_redirects=False)
     assert bare.status_code == 308 and bare.headers["location"] == "/manual/"
-    assert client.get("/manual/no-such-page.html").status_code == 404
+    missing = client.get("/manual/models/no-such-page.html")
+    assert missing.status_code == 404 and 'href="/manual/css/base.css"' in missing.text
     assert client.get("/").status_code == 200  # the form is still at /
 
 

@@ -518,3 +518,14 @@ def on_files(files: Any, config: Any) -> Any:
         if path.is_file() and path.suffix in (".js", ".css", ".woff2"):
             add("vendor/katex/" + path.relative_to(KATEX).as_posix(), path.read_bytes())
     return files
+
+
+#: Where the service serves the manual (service/main.py): the 404 page, shown at any depth,
+#: links its styles and scripts from here, not from the server's root.
+SERVED_AT = "/manual"
+
+
+def on_template_context(context: Any, template_name: str, config: Any) -> Any:
+    if template_name == "404.html":
+        context["base_url"] = SERVED_AT
+    return context
