@@ -82,6 +82,12 @@ def test_hand_written_pages_exist() -> None:
         assert (ROOT / "docs" / page).is_file(), page
 
 
+@pytest.fixture(scope="module")
+def app() -> TestClient:
+    """The real app, without its start-up warm-up (the manual not needed)."""
+    return TestClient(create_app(settings=Settings(warm_up=False)))
+
+
 def _curls(text: str) -> list[list[str]]:
     """The curl commands of a Markdown text's ``sh`` blocks, split as the shell would."""
     found: list[list[str]] = []
@@ -99,10 +105,9 @@ def _curls(text: str) -> list[list[str]]:
 
 
 @pytest.mark.parametrize("page", ["README.md", "index.md", "api.md"])
-def test_curl_examples_answer_as_documented(page: str) -> None:
+def test_curl_examples_answer_as_documented(app: TestClient, page: str) -> None:
     # every curl in the README and the guides is a real route that takes its body
     path = ROOT / page if page == "README.md" else ROOT / "docs" / page
-    client = TestClient(create_app(settings=Settings(warm_up=False)))
     curls = _curls(path.read_text(encoding="utf-8"))
     assert len(curls) >= 1
     for words in curls:
@@ -110,9 +115,9 @@ def test_curl_examples_answer_as_documented(page: str) -> None:
         body = words[words.index("-d") + 1] if "-d" in words else None
         route = url.removeprefix("http://127.0.0.1:8000")
         answer = (
-            client.post(route, content=body, headers={"content-type": "application/json"})
+            app.post(route, content=body, headers={"content-type": "application/json"})
             if body is not None
-            else client.get(route)
+            else app.get(route)
         )
         assert answer.status_code in (200, 202), (page, route, answer.text[:300])
 
@@ -165,15 +170,14 @@ def test_model_page_shows_the_engine_s_numbers(site: Path, spec: engine.ModelSpe
 
 
 @pytest.mark.slow
-def test_each_page_s_curl_gets_the_page_s_numbers(site: Path) -> None:
-    client = TestClient(create_app(settings=Settings(warm_up=False)))
+def test_each_page_s_curl_gets_the_page_s_numbers(app: TestClient, site: Path) -> None:
     for spec in engine.MODELS:
         page = (site / "models" / f"{spec.name}.html").read_text(encoding="utf-8")
         example = page.split('id="example-1"', 1)[1]
         found = re.search(r"curl -s http://127\.0\.0\.1:8000(\S+) .*?-d '(.*?)'\n", example, re.S)
         assert found, spec.name
         url, body = found.groups()
-        answer = client.post(
+        answer = app.post(
             url,
             content=html.unescape(body).replace("'\\''", "'"),
             headers={"content-type": "application/json"},
