@@ -36,12 +36,13 @@ $(VENV)/.installed-bench: $(VENV)/.installed-dev
 
 install: $(VENV)/.installed-run
 
-# The manual (served at /manual/): built into site/ (git-ignored) from docs/, mkdocs.yml and
-# the engine itself, whose worked examples run while it builds; rebuilt when any of them
-# changes. `make run` builds it first; if it cannot, the service still starts and /manual/
-# says how to build it.
-MANUAL_SOURCES := mkdocs.yml CHANGELOG.md $(shell find docs scripts/manual engine \
-	tests/validation static/vendor/katex -type f -not -path '*/__pycache__/*' 2>/dev/null)
+# The manual (served at /manual/): built into site/ (git-ignored) from docs/, mkdocs.yml, the
+# last bench figures and the engine itself, whose worked examples run while it builds; rebuilt
+# when any of them changes. `make run` builds it first; if it cannot, the service still starts
+# and /manual/ says how to build it.
+MANUAL_SOURCES := mkdocs.yml CHANGELOG.md $(wildcard bench/loadtest.json bench/pareto.png) \
+	$(shell find docs scripts/manual engine tests/validation static/vendor/katex -type f \
+	-not -path '*/__pycache__/*' 2>/dev/null)
 site/index.html: $(VENV)/.installed-run $(MANUAL_SOURCES)
 	rm -rf site.new
 	$(BIN)/python -m mkdocs build --strict --quiet --site-dir site.new

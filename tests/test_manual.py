@@ -77,6 +77,24 @@ def test_a_model_s_accuracy_rows_are_its_own(tmp_path: Path) -> None:
     assert HOOKS.accuracy_rows("impact.rare", table) == ""
 
 
+def test_load_figures_are_the_last_bench_run_s_with_its_date(tmp_path: Path) -> None:
+    assert "make bench" in HOOKS.loadtest_section(tmp_path / "none.json")
+    figures = tmp_path / "loadtest.json"
+    figures.write_text(
+        '{"when": "2026-01-02T03:04:05+00:00", "machine": {"cpus": 2}, "concurrency": 8,'
+        ' "requests_per_endpoint": 2000, "endpoints": {"healthz": {"requests_per_s": 9602.8,'
+        ' "p50_ms": 0.75, "p99_ms": 0.87}}, "models": {"clutch.ball": {"requests_per_s":'
+        ' 2589.9, "p99_ms": 3.48, "vs_healthz": 0.285, "ceiling_vs_healthz": 0.4}},'
+        ' "sweeps": {"clutch.ball": {"median_ms": 2.59}}}',
+        encoding="utf-8",
+    )
+    text = HOOKS.loadtest_section(figures)
+    assert "on 2026-01-02: a 2-core machine" in text
+    assert "<td><code>/healthz</code></td><td>9,603</td><td>0.75</td><td>0.87</td>" in text
+    row = "<td><code>clutch.ball</code></td><td>2,590</td><td>3.48</td><td>0.28</td><td>0.40</td>"
+    assert row + "<td>2.59</td>" in text
+
+
 def test_hand_written_pages_exist() -> None:
     for _, page in HOOKS.PAGES:
         assert (ROOT / "docs" / page).is_file(), page

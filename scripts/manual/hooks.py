@@ -460,6 +460,66 @@ Rebuild the manual after `make bench` to include it.
 """
 
 
+LOADTEST = ROOT / "bench" / "loadtest.json"
+LOADTEST_MARK = "<!-- bench/loadtest.json -->"
+
+
+def loadtest_section(path: Path = LOADTEST) -> str:
+    """The load test's figures as ``make bench`` last wrote them, stamped with their date."""
+    if not path.is_file():
+        return "No load-test figures in this checkout: `make bench` writes `bench/loadtest.json`.\n"
+    data = json.loads(path.read_text(encoding="utf-8"))
+    when, cpus = data["when"][:10], data["machine"]["cpus"]
+    head = (
+        f"`scripts/loadtest.py` as `make bench` last ran it, on {when}: a {cpus}-core machine, "
+        f"one server process, {data['concurrency']} keep-alive clients, "
+        f"{data['requests_per_endpoint']:,} requests an endpoint.\n"
+    )
+    labels = {
+        "healthz": "<code>/healthz</code>",
+        "closed_form": "closed form",
+        "simulation": "simulation, single point",
+        "closed_form_beside_heavy": "closed form beside 8 clients of the heaviest request",
+    }
+    rows = [
+        [
+            labels.get(key, esc(key))
+            + (f" (<code>{esc(e['model'])}</code>)" if e.get("model") else ""),
+            f"{e['requests_per_s']:,.0f}",
+            f"{e['p50_ms']:g}",
+            f"{e['p99_ms']:g}",
+        ]
+        for key, e in data["endpoints"].items()
+    ]
+    models = [
+        [
+            f"<code>{esc(name)}</code>",
+            f"{m['requests_per_s']:,.0f}",
+            f"{m['p99_ms']:g}",
+            f"{m['vs_healthz']:.2f}",
+            f"{m['ceiling_vs_healthz']:.2f}",
+            f"{data['sweeps'][name]['median_ms']:g}" if name in data.get("sweeps", {}) else "",
+        ]
+        for name, m in data.get("models", {}).items()
+    ]
+    return (
+        head
+        + table(["endpoint", "req/s", "p50 ms", "p99 ms"], rows)
+        + "\nEvery model's cheapest method on its first example, each run between two `/healthz` "
+        "runs; the ceiling is the share of `/healthz` throughput a service adding nothing but "
+        "`engine.run` could reach; the sweep is 2,000 points over HTTP (median of 15 calls).\n"
+        + table(
+            ["model", "req/s", "p99 ms", "/ healthz", "ceiling", "2,000-point sweep ms"], models
+        )
+    )
+
+
+def on_page_markdown(markdown: str, page: Any, config: Any, files: Any) -> str:
+    if LOADTEST_MARK in markdown:
+        markdown = markdown.replace(LOADTEST_MARK, loadtest_section())
+    return markdown
+
+
 def changelog_page() -> str:
     return (ROOT / "CHANGELOG.md").read_text(encoding="utf-8")
 
@@ -514,6 +574,9 @@ def on_files(files: Any, config: Any) -> Any:
         add(f"validation/{spec.name}.md", validation_page(spec))
     add("accuracy.md", ACCURACY_PLACEHOLDER)
     add("changelog.md", changelog_page())
+    pareto = ROOT / "bench" / "pareto.png"
+    if pareto.is_file():
+        add("bench/pareto.png", pareto.read_bytes())
     for path in sorted(KATEX.rglob("*")):
         if path.is_file() and path.suffix in (".js", ".css", ".woff2"):
             add("vendor/katex/" + path.relative_to(KATEX).as_posix(), path.read_bytes())
