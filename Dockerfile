@@ -28,6 +28,9 @@ COPY wheelhouse/app ./app
 RUN /opt/venv/bin/python -m pip install --quiet --no-index --no-deps ./app/*.whl \
     && rm -rf /app \
     && useradd --create-home --uid 10001 app
+# the manual, built by scripts/image from the same checkout as the wheel, at /manual/
+COPY wheelhouse/manual /opt/manual
+ENV MANUAL_DIR=/opt/manual
 USER app
 WORKDIR /home/app
 

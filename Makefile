@@ -1,20 +1,22 @@
-# Two set-up commands (README): `make run` serves the API and form; `make test` runs every check.
-# Both create the virtual environment and install what they need on first use.
+# Two set-up commands (README): `make run` serves the API, the form and the manual; `make test`
+# runs every check. Both create the virtual environment and install what they need on first use.
 PYTHON ?= python3
 VENV ?= .venv
 HOST ?= 127.0.0.1
 PORT ?= 8000
 BIN := $(VENV)/bin
 
-.PHONY: run test test-fast check bench mutate install clean
+.PHONY: run test test-fast check bench mutate install manual docs clean
 
 # Dependencies come pinned from the lock files (scripts/lock regenerates them from
 # pyproject.toml); the project itself is installed on top without resolving again.
 PIP := $(BIN)/python -m pip install --quiet --disable-pip-version-check
 
-$(VENV)/.installed-run: pyproject.toml requirements.lock
+# `make run` installs the runtime and the manual's builder (requirements-docs.lock: the
+# runtime pins plus mkdocs); the container image takes the runtime alone (requirements.lock).
+$(VENV)/.installed-run: pyproject.toml requirements-docs.lock
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(PIP) -r requirements.lock
+	$(PIP) -r requirements-docs.lock
 	$(PIP) --no-deps -e .
 	touch $@
 
@@ -34,7 +36,23 @@ $(VENV)/.installed-bench: $(VENV)/.installed-dev
 
 install: $(VENV)/.installed-run
 
+# The manual (served at /manual/): built into site/ (git-ignored) from docs/, mkdocs.yml, the
+# last bench figures and the engine itself, whose worked examples run while it builds; rebuilt
+# when any of them changes. `make run` builds it first; if it cannot, the service still starts
+# and /manual/ says how to build it.
+MANUAL_SOURCES := mkdocs.yml CHANGELOG.md $(wildcard bench/loadtest.json bench/pareto.png) \
+	$(shell find docs scripts/manual engine tests/validation static/vendor/katex -type f \
+	-not -path '*/__pycache__/*' 2>/dev/null)
+site/index.html: $(VENV)/.installed-run $(MANUAL_SOURCES)
+	rm -rf site.new
+	$(BIN)/python -m mkdocs build --strict --quiet --site-dir site.new
+	rm -rf site && mv site.new site
+
+manual: site/index.html
+docs: manual
+
 run: $(VENV)/.installed-run
+	$(MAKE) --no-print-directory manual || echo "the manual did not build (above); /manual/ says how to build it"
 	$(BIN)/python -m service --host $(HOST) --port $(PORT)
 
 test: $(VENV)/.installed-dev
@@ -68,7 +86,7 @@ mutate: $(VENV)/.installed-mutate
 	$(BIN)/python scripts/mutate.py $(MODULES) --sample $(SAMPLE) --seed $(SEED) --minutes $(MINUTES)
 
 # Speed against accuracy for every registered model: bench/results.json, bench/pareto.png, a table;
-# then the load test on loopback (bench/loadtest.json): every issue-21 target beside its figure;
+# then the load test on loopback (bench/loadtest.json): every service target beside its figure;
 # then each error estimate against a reference over random designs (bench/accuracy_*.py):
 # a table and docs/accuracy.md, failing when a claim labelled a bound was exceeded.
 bench: $(VENV)/.installed-bench
@@ -77,4 +95,4 @@ bench: $(VENV)/.installed-bench
 	$(BIN)/python -m bench.accuracy
 
 clean:
-	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache .hypothesis
+	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache .hypothesis site

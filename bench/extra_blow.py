@@ -1,4 +1,4 @@
-"""Benchmark of blow.joint's simulation rung (issue 18): compiled RK4 against scipy's solve_ivp.
+"""Benchmark of blow.joint's simulation rung: compiled RK4 against scipy's solve_ivp.
 
 ``measure()`` returns one row per (method, case): time per blow and its error in
 peak torque and nut rotation against a tight reference (solve_ivp DOP853,

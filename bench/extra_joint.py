@@ -1,4 +1,4 @@
-"""Benchmark: joint.vdi2230's array path (issue 21/22) against its per-point loop.
+"""Benchmark: joint.vdi2230's array path (for sweeps and studies) against its per-point loop.
 
 ``measure()`` returns rows {model, method, case, time_s, error, notes}:
 
@@ -31,7 +31,7 @@ SPEC = engine.get_model("joint.vdi2230")
 
 
 def monte_carlo(n: int) -> Study:
-    """The 80 N·m question of the examples with its scatter (issue 22's friction study)."""
+    """The 80 N·m question of the examples with its scatter (the friction study)."""
     varied = ("thread_friction_min", "bearing_friction_min", "plate1_thickness", "working_load")
     return Study(
         variables=(

@@ -1,4 +1,4 @@
-"""Benchmark of the rare-impact wrench's whole cycle (issue 16): time per solve against error.
+"""Benchmark of the rare-impact wrench's whole cycle: time per solve against error.
 
 ``measure()`` returns one row per (method, case) for the shared bench runner;
 ``python bench/extra_rare_impact.py`` prints the table and the speed-ups. Methods:
@@ -15,7 +15,7 @@
 The error is the largest relative difference of release speed, spin-up time,
 engagement, return and re-lock times against a very tight reference (the
 solve_ivp cycle at rtol 1e-13). Times are medians per solve on this machine.
-The stiff case is the issue's 5e6 N/m power spring on a 20 g half-coupling.
+The stiff case is a 5e6 N/m power spring on a 20 g half-coupling.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Benchmark: issue 21's service targets, in process, each beside its measured ratio.
+"""Benchmark: the service's speed targets, in process, each beside its measured ratio.
 
 Every request is driven straight into the ASGI app (no socket, no HTTP parser,
 no client library), so what is measured is the service's own share: routing,
@@ -9,7 +9,7 @@ and JSON encoding, the middleware.
   on its first example, against two FastAPI apps with one route each, measured in
   the same rounds: the *same-payload* floor (FastAPI reads the same JSON body into a
   ``dict`` and answers the dict the real route answered, through its own response
-  encoding: what FastAPI costs for this request and this answer, the issue's "bare
+  encoding: what FastAPI costs for this request and this answer, the target's "bare
   FastAPI endpoint of the same payload"; the target's verdict), and the stricter
   *no-body* floor (the same answer, the body not read). No validation, no
   middleware in either. Interleaved rounds on the same event loop; each figure is
@@ -173,7 +173,7 @@ async def _measure() -> list[dict[str, Any]]:
             share = statistics.median(shares)
             compute = statistics.median(engine_s)
             # the best ratio a service costing nothing beyond FastAPI itself could reach:
-            # the same-payload floor plus the model's own work (issue 21's note)
+            # the same-payload floor plus the model's own work (why a ratio cannot reach its target)
             bound = statistics.median(
                 (f + c) / f for f, c in zip(floor_same, engine_s, strict=True)
             )

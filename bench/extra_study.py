@@ -1,19 +1,19 @@
-"""Benchmark: design studies (issue 22), closed-form Monte Carlo and simulation studies.
+"""Benchmark: design studies, closed-form Monte Carlo and simulation studies.
 
 ``measure()`` returns rows {model, method, case, time_s, error, notes}:
 
 * ``study_mc_array``: a 10⁶-point Monte Carlo of the ball clutch's slip torque under
   flank-friction and groove-angle scatter, through the model's array path, in-process
   (target: ≤ 2 s on 2 cores); ``time_s`` is per point, the notes give the total;
-* ``study_mc_control``: issue 22's target itself, a 10⁶-point Monte Carlo of
+* ``study_mc_control``: the studies' target itself, a 10⁶-point Monte Carlo of
   ``preload.control`` (μ_G, μ_K and the required clamp force scattered; every scalar
   output and check collected) through its array path, in-process (target ≤ 2 s);
 * ``study_sim_1w`` / ``study_sim_2w``: a rare-impact simulation study (LHS over the power
   spring's rate and preload, tolerance 1e-6) on a local Dask cluster of one and of two
   worker processes, side by side, and the speed-up.
 
-``STUDY_BENCH_POINTS`` sets the simulation study's size (default 20,000; the issue's
-10⁵ takes about 4× as long).
+``STUDY_BENCH_POINTS`` sets the simulation study's size (default 20,000; the
+10⁵ of the study target takes about 4× as long).
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Benchmark: issue 21's engine targets beside the measured figures.
+"""Benchmark: the engine's speed targets beside the measured figures.
 
 ``measure()`` returns one row per model: the median time of a 2,000-point sweep
 through :func:`engine.sweep` on the model's cheapest rung (its first array rung

@@ -51,7 +51,7 @@ from .generic import (
 HERE = Path(__file__).resolve().parent
 VECTOR_POINTS = 1_000_000
 SIM_SWEEP_POINTS = 200
-#: Targets from issue 6 (seconds).
+#: Targets for the vectorised sweeps and the simulations (seconds).
 VECTOR_TARGET_S = 1.0
 SIM_SWEEP_TARGET_S = 2.0
 #: Errors below this are shown on the plot at this floor (double rounding).
@@ -485,8 +485,8 @@ def table(results: dict[str, Any]) -> str:
         for r in results["rows"]
         if r.get("target_s") is not None or r.get("target_ratio") is not None
     ]
-    if targets:  # issue 21's targets (bench/extra_targets.py, extra_service.py) beside figures
-        lines += ["", "Targets (issue 21): measured against target, with the floors"]
+    if targets:  # the speed targets (bench/extra_targets.py, extra_service.py) beside figures
+        lines += ["", "Speed targets: measured against target, with the floors"]
         for row in targets:
             met = {True: "met", False: "MISSED"}.get(row.get("met"), "")
             if row.get("target_ratio") is not None:  # a ratio to a floor measured alongside

@@ -18,19 +18,19 @@ Endpoint choice (override with ``--closed /path`` and ``--sim /path``):
 With an empty registry the server runs the test toys instead
 (``tests.toys:toy_app``), so the script works on any checkout.
 
-Lanes (issue 20): the closed form again while 8 more clients keep sending the
+Lanes: the closed form again while 8 more clients keep sending the
 heaviest request (a 2,000-point simulation sweep of a stiff rare-impact design);
 its p99 must stay under 50 ms (``--no-heavy`` skips this part).
 
-Every model (issue 21): each model's cheapest rung on its first example,
+Every model: each model's cheapest rung on its first example,
 each run between two /healthz runs, and its 2,000-point sweep over HTTP (one
 client, median of 15; the case of ``bench/extra_targets.py``). ``--no-models``
 skips this part.
 
-Targets (issue 21; issue 8 asked for 50 % and 50 ms): every closed form ≥ 80 %
+Targets (an earlier goal was 50 % and 50 ms): every closed form ≥ 80 %
 of /healthz throughput, closed-form p99 < 20 ms at 8 keep-alive clients, a
 2,000-point closed-form sweep ≤ 20 ms over HTTP; beside the heavy lane p99 <
-50 ms (issue 20). Each is printed beside its measured figure; ``--check``
+50 ms. Each is printed beside its measured figure; ``--check``
 exits 1 when one is missed.
 
 Usage::
@@ -309,13 +309,13 @@ def hammer(
     }
 
 
-#: Issue 21: every closed-form endpoint at least this share of /healthz throughput, and its
+#: Target: every closed-form endpoint at least this share of /healthz throughput, and its
 #: p99 under this at 8 keep-alive clients.
 THROUGHPUT_TARGET = 0.8
 P99_TARGET_MS = 20.0
 
-#: The heaviest request the issue found (issue 20): a 2,000-point simulation sweep of a stiff
-#: rare-impact design, each taking the whole 10 s budget. Four of them stalled a closed form 9 s.
+#: The heaviest request found when the lanes were designed: a 2,000-point simulation sweep of
+#: a stiff rare-impact design, each taking the whole 10 s budget. Four stalled a closed form 9 s.
 HEAVIEST = (
     "/api/v1/impact/rare/sweep",
     {
@@ -382,7 +382,7 @@ def every_model(
 
     The ratio is the model's requests/s over the mean of the /healthz runs just
     before and just after it (interleaved, so a change in the machine's load
-    between models does not bias one model's ratio). Issue 21: each ≥ 0.8.
+    between models does not bias one model's ratio). Target: each ≥ 0.8.
 
     Beside it, the ceiling the model's own work sets: ``engine.run`` alone on the same
     body (warm, in this process; :func:`engine_run_ms`) added to the server CPU a
@@ -441,7 +441,7 @@ def engine_run_ms(name: str, body: dict[str, Any], seconds: float = 0.2) -> floa
     return round(statistics.median(times) * 1e3, 4)
 
 
-#: Issue 21: a 2,000-point closed-form sweep over HTTP within this [s].
+#: Target: a 2,000-point closed-form sweep over HTTP within this [s].
 SWEEP_HTTP_TARGET_MS = 20.0
 
 
@@ -513,12 +513,12 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument(
         "--no-heavy",
         action="store_true",
-        help="skip the closed form beside 8 clients of the heaviest request (issue 20)",
+        help="skip the closed form beside 8 clients of the heaviest request",
     )
     parser.add_argument(
         "--no-models",
         action="store_true",
-        help="skip every model's closed form beside /healthz and the HTTP sweeps (issue 21)",
+        help="skip every model's closed form beside /healthz and the HTTP sweeps",
     )
     args = parser.parse_args(argv)
     requests = max(1, min(args.requests, 20_000))
@@ -618,7 +618,7 @@ def main(argv: list[str] | None = None) -> int:
             targets["lanes_target_met"] = p99 < 50.0
             lines.append(
                 (
-                    "closed-form p99 beside the heavy lane (issue 20)",
+                    "closed-form p99 beside the heavy lane",
                     "< 50 ms",
                     f"{p99:g} ms",
                     p99 < 50.0,
@@ -691,7 +691,7 @@ def main(argv: list[str] | None = None) -> int:
             "ceiling: cpu(/healthz) / (cpu(/healthz) + engine.run): the ratio a service adding "
             "only the model's own work to /healthz would reach"
         )
-    print(f"\n{'target (issue 21 unless named)':<58} {'goal':>10} {'measured':>10}")
+    print(f"\n{'target':<58} {'goal':>10} {'measured':>10}")
     for label, goal, measured, met in lines:
         print(f"{label:<58} {goal:>10} {measured:>10}  {'met' if met else 'MISSED'}")
     print(f"-> {out}")

@@ -102,7 +102,7 @@ class WrongKind(TypeError):
 
 def _coerce(kind: str, value: Any) -> Any:
     """A result as the response model's lax mode gave it, or :class:`WrongKind` where that
-    model refused it (issue 13: a model bug is a 500, never a malformed answer).
+    model refused it (a model bug is a 500, never a malformed answer).
 
     ``3.0`` → ``3`` for an int output, ``3`` → ``3.0`` for a float one, ``1`` → ``true``
     for a flag; text only for a text output.
@@ -134,9 +134,9 @@ def _encoder(spec: ModelSpec) -> Any:
 
     The engine already gives Python values, finite or None (:func:`engine.run`); what the
     response model added was a coercion of each result to its declared kind
-    (:func:`_coerce`, which refuses another kind as the model did: a 500, issue 13), a
+    (:func:`_coerce`, which refuses another kind as the model did: a 500), a
     check's three fields and texts for notes. Encoding the dict with orjson, without
-    validating it again, saves ~25 µs a request (issue 21); tests/service/
+    validating it again, saves ~25 µs a request; tests/service/
     test_answer_encoding.py holds every model's answers, every rung and output, to the
     response model's own encoding, type for type.
     """
@@ -166,7 +166,7 @@ def _encoder(spec: ModelSpec) -> Any:
 async def _json(request: Request) -> Any:
     """The request body parsed as FastAPI's own body handling parses it (the same JSON
     parser, the same errors and their ``loc``), without its dependency machinery (~30 µs a
-    request, issue 21). The error handlers in :mod:`service.errors` turn what this raises
+    request). The error handlers in :mod:`service.errors` turn what this raises
     into the same 400/422 answers."""
     raw = await request.body()  # BodyGuard has checked the content type and the size
     if not raw:
@@ -228,7 +228,7 @@ def _plain(value: Any) -> Any:
 
 
 def _sweep_answer(result: engine.SweepResult, unit: str) -> Response:
-    """The sweep's JSON, encoded from its numpy columns (issue 21: no Python object per point).
+    """The sweep's JSON, encoded from its numpy columns (no Python object per point).
 
     The shape is :class:`schemas.SweepResponse` (published as the route's response model);
     FastAPI does not re-validate a Response, so the tests hold every answer to that schema
@@ -347,7 +347,7 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
     """``POST <path>`` and ``POST <path>/sweep`` for one model.
 
     Each route publishes its typed request and response models in OpenAPI, but runs a
-    lean handler (issue 21): the body is parsed by :func:`_json` (FastAPI's parser and
+    lean handler, for speed: the body is parsed by :func:`_json` (FastAPI's parser and
     errors); a single evaluation's plain body is read by :func:`schemas.plain_reader`
     (the request model's own field validators, without pydantic), anything else is
     validated by the request model (:func:`_model`, FastAPI's error ``loc``). The answer

@@ -164,6 +164,9 @@ class Settings:
     warm_up: bool = field(
         default_factory=lambda: os.environ.get("WARM_UP", "1").lower() not in ("0", "false")
     )
+    #: The built manual served at /manual/ (a folder holding index.html); empty: ``site/``
+    #: beside the package in a checkout, where ``make run`` builds it.
+    manual_dir: str = field(default_factory=lambda: os.environ.get("MANUAL_DIR", ""))
     #: One JSON line per request on the ``service.access`` logger.
     access_log: bool = field(
         default_factory=lambda: os.environ.get("ACCESS_LOG", "1").lower() not in ("0", "false")

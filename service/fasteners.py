@@ -1,4 +1,4 @@
-"""``GET /api/v1/fasteners``: the fastener catalogue the form's pickers read (issue 15).
+"""``GET /api/v1/fasteners``: the fastener catalogue the form's pickers read.
 
 The data are the engine's (:func:`engine.physics.fasteners.catalogue`, SI units); this
 route only serves them.

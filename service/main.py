@@ -6,6 +6,11 @@ id, security headers, access log), CORS when ``CORS_ORIGINS`` names origins
 :class:`~service.middleware.BodyGuard` (415 for non-JSON bodies, 413 over
 ``MAX_BODY_BYTES``). Model computations run in :mod:`service.workers`.
 
+``/manual/`` serves the manual as built by MkDocs (``make run`` builds it into ``site/``;
+the container image carries it at ``MANUAL_DIR``), under the same strict CSP as the form:
+its pages carry no inline script and fetch nothing from elsewhere. Where it was not built,
+``/manual/`` answers a short page saying how to build it.
+
 ``/docs`` (Swagger UI) is served from the copy vendored in
 ``static/vendor/swagger-ui``, so it works offline behind a firewall; ``/redoc``
 loads ReDoc from a CDN (online only). Both start with one inline script,
@@ -95,6 +100,27 @@ def static_dir() -> Path:
         if (candidate / "index.html").is_file():
             return candidate
     raise RuntimeError("static/index.html not found next to the service package")
+
+
+#: What /manual/ answers when the manual was not built (404: there is no manual to show).
+MANUAL_MISSING = """<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>Manual not built</title></head>
+<body><h1>The manual is not built here</h1>
+<p>Build it from a checkout with <code>make manual</code> (or <code>make run</code>, which
+builds it first), or with <code>python -m mkdocs build</code> after
+<code>pip install -e '.[docs]'</code>; the service serves <code>site/</code>, or the folder
+named by <code>MANUAL_DIR</code>. Its sources are <code>docs/</code> in the repository.</p>
+<p><a href="/">The calculator</a> · <a href="/docs">API reference</a></p>
+</body></html>
+"""
+
+
+def manual_dir(configured: str = "") -> Path | None:
+    """The built manual's folder: ``configured`` (``MANUAL_DIR``), else ``site/`` beside the
+    package in a checkout; None where neither holds an ``index.html``."""
+    here = Path(__file__).resolve().parent
+    candidate = Path(configured) if configured else here.parent / "site"
+    return candidate if (candidate / "index.html").is_file() else None
 
 
 def create_app(
@@ -197,7 +223,7 @@ def create_app(
     for router in (*routers, studies_router):
         # The routes themselves, not include_router: FastAPI ≥ 0.16x nests an included
         # router and walks every nested router's route table on each request (~15 µs a
-        # request with our 11 routers, issue 21). None of ours has router-level
+        # request with our 11 routers, measured). None of ours has router-level
         # dependencies, responses or callbacks to inherit, so nothing is lost.
         app.router.routes.extend(router.routes)
     app.state.studies = studies
@@ -229,5 +255,19 @@ def create_app(
             expose_headers=["x-request-id"],
         )
     app.add_middleware(FrontDoor, log_requests=settings.access_log)
+
+    @app.get("/manual", include_in_schema=False)
+    def manual_root() -> RedirectResponse:
+        return RedirectResponse("/manual/", status_code=308)
+
+    manual = manual_dir(settings.manual_dir)
+    if manual is not None:
+        app.mount("/manual", StaticFiles(directory=manual, html=True), name="manual")
+    else:
+
+        @app.get("/manual/{path:path}", include_in_schema=False)
+        def manual_missing(path: str) -> HTMLResponse:
+            return HTMLResponse(MANUAL_MISSING, status_code=404)
+
     app.mount("/", StaticFiles(directory=static_dir(), html=True), name="static")
     return app

@@ -184,8 +184,8 @@ os.register_at_fork(after_in_child=_new_id_prefix)
 
 def _fresh_id() -> bytes:
     """A request id unique to this process and, by its random prefix, across processes:
-    32 hex digits like a UUID's, without a system call per request (issue 21: uuid4 took
-    ~2 µs). Not a secret: it names a request in the logs."""
+    32 hex digits like a UUID's, without a system call per request (uuid4 took ~2 µs, a
+    sizeable share of a cheap request). Not a secret: it names a request in the logs."""
     return f"{_ID_PREFIX}{next(_ID_COUNTER):016x}".encode()
 
 
@@ -321,7 +321,7 @@ async def _within(receive: Receive, timeout_s: float, budget_s: float) -> Messag
     after ``timeout_s``, what is left of it.
 
     One timer handle that cancels the task, not ``asyncio.timeout`` (its context object
-    and rescheduling cost ~8 µs a request, issue 21) nor ``wait_for`` (a task per call,
+    and rescheduling cost ~8 µs a request) nor ``wait_for`` (a task per call,
     ~15 µs). A cancellation that is not the timer's goes on as it came.
     """
     task = asyncio.current_task()
@@ -392,10 +392,10 @@ class ExactRoutes:
     """The router's front: a POST to a fixed path goes straight to its route.
 
     Starlette tries each route's pattern in turn (~1 µs each); a model route near the end
-    of the table waited for ~25 of them (issue 21). Only routes without path parameters
-    and with POST among their methods are listed; every other request, and a method the
-    route does not take, goes to the router as before. It sits inside the router, so the
-    exception handlers apply as they do to a matched route.
+    of the table waited for ~25 of them, a measurable share of a cheap request. Only
+    routes without path parameters and with POST among their methods are listed; every
+    other request, and a method the route does not take, goes to the router as before. It
+    sits inside the router, so the exception handlers apply as they do to a matched route.
     """
 
     def __init__(self, app: ASGIApp, router: Any, routes: dict[str, Any]) -> None:

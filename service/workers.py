@@ -42,7 +42,7 @@ Inline
 ------
 A computation of a rung *not* declared ``heavy`` (a closed form: tens to
 hundreds of microseconds) skips the thread hop and runs on the event loop
-itself (:class:`Inline`), which the issue measured at ~40 % of such a request
+itself (:class:`Inline`), which was measured at ~40 % of such a request
 (180–330 µs of queue hand-over and GIL switches). A slow "cheap" computation
 must not starve the others, so inline work is time-boxed:
 

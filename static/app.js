@@ -414,7 +414,7 @@ function fieldRow(p) {
   } else if (p.kind === "bool") {
     input = el("input", { id, name: p.name, type: "checkbox", "aria-describedby": described });
   } else if (p.kind === "text") {
-    // free text (a fastener designation, issue 15); the choices are suggestions
+    // free text (a fastener designation such as "M12x1.25"); the choices are suggestions
     input = el("input", { id, name: p.name, type: "text", size: 22, maxlength: 64, list: "list-" + p.name, "aria-describedby": described });
     unitSel = el("datalist", { id: "list-" + p.name }, ...(p.choices || []).map((c) => el("option", { value: c })));
   } else {

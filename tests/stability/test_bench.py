@@ -125,7 +125,7 @@ def test_issue_21_targets_are_printed_beside_the_measured_figures():
         "failures": [],
     }
     text = bench.table(results)
-    assert "Targets (issue 21)" in text
+    assert "Speed targets: measured against target" in text
     line = next(s for s in text.splitlines() if s.startswith("nutrunner.drive") and "target" in s)
     assert "1.1 ms" in line and "target ≤ 2 ms met" in line and "plain numpy" in line
 
