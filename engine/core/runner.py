@@ -57,7 +57,7 @@ class SweepResult:
     or an object array with None, where a point was not computed); ``results``,
     ``values``, ``rungs`` and ``error_estimates`` are the same as Python lists, made
     on first use. A caller that encodes the arrays itself never builds a Python
-    object per point (issue 21).
+    object per point: the bookkeeping stays in numpy.
     """
 
     model: str
@@ -226,7 +226,7 @@ def _fallback(
 
 
 def _wanted(spec: ModelSpec, asked: set[str], *, named: bool, series: bool) -> set[str]:
-    """The outputs to compute: model only what the scene requires (issue 21).
+    """The outputs to compute: model only what the scene requires: nothing is computed that no output needs.
 
     Every scalar output when none is named; series only when named or when
     ``series`` asks for all of them.
@@ -246,7 +246,7 @@ class _arithmetic_refused:
     overflows or divides by zero is refused (SolverFailed, 422), never a crash (500).
     numpy's overflow/invalid warnings are silenced: a non-finite result becomes null with a
     note (numpy's error state is per thread). A class, not a generator context manager:
-    it wraps every evaluation (issue 21)."""
+    it wraps every evaluation."""
 
     __slots__ = ("spec", "state")
 
@@ -559,8 +559,8 @@ def sweep(
             raise
         except Exception:
             # the array path is an optimisation and the scalar model the reference: where
-            # the array path fails on inputs the scalar one refuses or handles (issue 20's
-            # fuzzing found one), the loop answers
+            # the array path fails on inputs the scalar one refuses or handles (fuzzing
+            # found one), the loop answers
             vec = None
         if vec is None:
             loop |= sel

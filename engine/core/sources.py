@@ -561,7 +561,7 @@ SOURCES: dict[str, Source] = {
             covers="Shear areas of internal and external threads per length of engagement"
             " (Appendix B), with tau = 0.6 R_m practice (engine.physics.fasteners).",
         ),
-        # --- issue 17 (clutch helper): springs for the clutch as built ---
+        # --- springs for the clutch as built ---
         Source(
             id="EN13906-1",
             kind="standard",

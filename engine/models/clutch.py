@@ -101,7 +101,7 @@ def _common_params(*, deflection_required: bool) -> tuple[Param, ...]:
             "1",
             "K_r, load non-uniformity factor between the balls, 0.85…0.9 [001, eq. 1]",
             default=0.85,
-            minimum=0.1,  # a tenth of a fair share; 1e-200 crashed the model (issue 20)
+            minimum=0.1,  # a tenth of a fair share; 1e-200 once crashed the model
             maximum=1.0,
             recommended=RECOMMENDED_LOAD_FACTOR,
             symbol="K_r",

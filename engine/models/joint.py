@@ -59,7 +59,7 @@ MAX_PLATES = 3
 # --------------------------------------------------------------------------- inputs
 
 _BOLT_NAMES = (
-    "thread",  # a designation ("M12 ISO 4762 10.9", "1/2-13 UNC"), issue 15
+    "thread",  # a designation ("M12 ISO 4762 10.9", "1/2-13 UNC"): a bought part
     "grade",
     "thread_diameter",
     "thread_pitch",
@@ -440,7 +440,7 @@ JOINT_INPUTS: tuple[Param, ...] = (
         choices=("before_heat_treatment", "after_heat_treatment"),
         group="fatigue",
     ),
-    # bought-part checks (issue 15): surface pressure VDI 2230-1 R10, engagement R11
+    # bought-part checks: surface pressure VDI 2230-1 R10, engagement R11
     *(p for p in fz.CHECK_INPUTS if p.name != "working_bolt_force"),
     NUT_CLASS_INPUT,
 )
@@ -1406,7 +1406,7 @@ _SCALARS: tuple[str, ...] = tuple(o.name for o in JOINT_OUTPUTS if not o.series)
 # --------------------------------------------------------------------------- array path
 #
 # ``_vectorized`` runs :func:`_solve` (the lines a single run runs) for a request whose
-# numeric inputs may be arrays (a sweep, a study's chunk; issue 21/22). The text and choice
+# numeric inputs may be arrays (a sweep, a study's chunk). The text and choice
 # inputs are fixed per request and read once; the bolt comes from the one bolt resolution
 # of every model (:func:`engine.procedures.bolt.resolve_bolts`, per distinct size where a
 # catalogue part meets a varied size). A point the procedure refuses is NaN in every
@@ -1748,7 +1748,7 @@ VDI2230 = ModelSpec(
             "nut_youngs_modulus": 7e10,
             "working_load": 5e3,
         },
-        # bought parts (issue 15): socket-head M8 12.9 into aluminium, 12 mm of thread
+        # bought parts: socket-head M8 12.9 into aluminium, 12 mm of thread
         {
             "thread": "M8 ISO 4762 12.9",
             "joint_type": "tapped",

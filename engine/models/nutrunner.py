@@ -366,7 +366,7 @@ _INPUTS: tuple[Param, ...] = (
         "rated_torque",
         "N*m",
         "Induction curve: rated torque (default motor_power / rated_speed)",
-        minimum=1e-3,  # 1 mN*m; 1e-150 crashed the motor curve (issue 20)
+        minimum=1e-3,  # 1 mN*m; 1e-150 once crashed the motor curve
         maximum=1e6,
         display_unit="N*m",
         group="motor curve",
@@ -415,7 +415,7 @@ _INPUTS: tuple[Param, ...] = (
         "1",
         "V-belt efficiency while accelerating (1 = the source's lossless drive)",
         default=1.0,
-        minimum=0.01,  # 1 %; 1e-30 divided the motor torque down to zero (issue 20)
+        minimum=0.01,  # 1 %; 1e-30 once divided the motor torque down to zero
         maximum=1.0,
         recommended=(0.85, 1.0),
         group="motor curve",
@@ -425,12 +425,12 @@ _INPUTS: tuple[Param, ...] = (
         "1",
         "Gear mesh 4–5 efficiency while accelerating (1 = the source's lossless drive)",
         default=1.0,
-        minimum=0.01,  # 1 %; 1e-30 divided the motor torque down to zero (issue 20)
+        minimum=0.01,  # 1 %; 1e-30 once divided the motor torque down to zero
         maximum=1.0,
         recommended=(0.9, 1.0),
         group="motor curve",
     ),
-    # issue 17: the slip torque of safety coupling 1 (a torque limiter, sized as makers do)
+    # the slip torque of safety coupling 1 (a torque limiter, sized as makers do)
     Param(
         "coupling_service_factor",
         "1",
@@ -545,7 +545,7 @@ _OUTPUTS: tuple[Output, ...] = (
         x="time",
         display_unit="rpm",
     ),
-    # issue 17: safety coupling 1 as a torque limiter (engine.physics.clutch sizing)
+    # safety coupling 1 as a torque limiter (engine.physics.clutch sizing)
     Output(
         "coupling_slip_torque",
         "N*m",

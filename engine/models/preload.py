@@ -546,7 +546,7 @@ def _rung_estimate(x: Mapping[str, Any], scratch: Scratch) -> Any:
 
 # --------------------------------------------------------------------------- array path
 #
-# Issue 21/22: a sweep or a study hands the model its inputs with the varied ones as
+# A sweep or a study hands the model its inputs with the varied ones as
 # equal-length numpy arrays. The text and choice inputs (designation, grade, head,
 # method, formula …) are the same at every point, so the catalogue is read once; every
 # number is then computed with the same engine functions on arrays. A point the scalar
@@ -630,7 +630,7 @@ def _add_bought_part_checks(
     checks: list[Check],
     notes: list[str],
 ) -> None:
-    """Surface pressure, thread stripping and drive torque (issue 15), into the result."""
+    """Surface pressure, thread stripping and drive torque of bought parts, into the result."""
     fastener = bolt.fastener or fz.Fastener("", None, None, None)
     more, more_checks, more_notes = fz.bought_part_checks(
         x, fastener, **_part_numbers(bolt, max_preload, torque)
@@ -902,7 +902,7 @@ TIGHTENING = ModelSpec(
             "preload_convention": "elastic",
             "utilization": 0.7,
         },
-        # bought parts (issue 15): a designation, no dimension typed
+        # bought parts: a designation, no dimension typed
         {"thread": "M10 ISO 4762 12.9"},
         {
             "thread": "M8 ISO 4762 12.9",
@@ -1007,7 +1007,7 @@ CONTROL_INPUTS: tuple[Param, ...] = (
         maximum=1.0,
         display_unit="mm",
         group="joint",
-        minimum=1e-4,  # 0.1 mm; 1e-300 divided by zero (issue 20)
+        minimum=1e-4,  # 0.1 mm; a length of 1e-300 once divided by zero
     ),
     Param(
         "reduced_length",
@@ -1047,7 +1047,7 @@ CONTROL_INPUTS: tuple[Param, ...] = (
         maximum=1e12,
         display_unit="GPa",
         group="joint",
-        minimum=1e9,  # 1 GPa, below any bolt material; 5e-324 crashed the model (issue 20)
+        minimum=1e9,  # 1 GPa, below any bolt material; 5e-324 once crashed the model
     ),
     Param(
         "clamped_compliance",
@@ -1516,7 +1516,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
         geometry = (bolt.pitch, bolt.pitch_diameter, bolt.diameter)
         washer = (bolt.bearing_outer_diameter, bolt.hole_diameter)
         # the band's corners and the exact mean (engine.physics.preload.friction_scatter_band); the
-        # 64×64 grid only for the histogram, when asked (issue 21: nothing computed unasked)
+        # 64×64 grid only for the histogram, when asked (nothing is computed that no output needs)
         f_lo, f_hi, f_mean = _scatter_band(bolt, formula, fixed, g_range, k_range)
         if ctx.wants("preload_bins", "preload_counts"):
             forces = pl.friction_scatter_preloads(
@@ -1989,7 +1989,7 @@ CONTROL = ModelSpec(
             "clamped_length": 0.12,
             "shank_length": 0.08,
         },
-        # bought parts (issue 15): socket head M8 12.9 into aluminium, too short an engagement
+        # bought parts: socket head M8 12.9 into aluminium, too short an engagement
         {
             "thread": "M8 ISO 4762 12.9",
             "required_clamp_force": 12e3,

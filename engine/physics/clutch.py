@@ -895,7 +895,7 @@ def wire_diameter_for_torque(
 
 # --------------------------------------------------------------------------
 # The clutch as built: two flank angles, the lift characteristic, self-locking,
-# sizing from the drive (issue 17; beyond [001], whose eq. 1-3 are the lift-0 point)
+# sizing from the drive (beyond [001], whose eq. 1-3 are the lift-0 point)
 # --------------------------------------------------------------------------
 
 #: Smallest margin α − atan f between the flank angle and the friction angle

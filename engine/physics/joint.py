@@ -3,7 +3,7 @@ r"""The bolted joint after VDI 2230 Part 1: compliances, service loads, losses, 
 Pure functions on SI floats, one per calculation step of VDI 2230-1:2015
 (steps R0–R13). The model (``engine.models.joint``) runs them in one procedure
 for a single design and for a sweep or study alike, so they also take numpy
-arrays, one entry per point (issue 21): math for floats (a single run's speed
+arrays, one entry per point (a sweep's or a study's): math for floats (a single run's speed
 and exceptions), numpy for arrays, one formula each; ``joint_diagram`` stays
 scalar (a series for one design). VDI 2230's
 own text is paywalled and was not available to us; every relation here is
@@ -68,7 +68,7 @@ def _area(diameter: float) -> float:
 
 
 # Float or array: every function below takes SI floats (math, the scalar path's speed and
-# its exceptions kept) or numpy arrays (one request's points at once, issue 21). The
+# its exceptions kept) or numpy arrays (one request's points at once). The
 # helpers pick math or numpy by the arguments' type, so each formula is written once.
 
 

@@ -390,7 +390,7 @@ class Bolt:
     tensile_strength: float | None
     bearing_outer_diameter: float
     hole_diameter: float
-    #: μ_K multiplier of the bearing face (1/sin 45° on a countersunk head, issue 15).
+    #: μ_K multiplier of the bearing face (1/sin 45° on a countersunk head).
     bearing_friction_factor: float = 1.0
     #: The catalogue's fastener (thread, head, grade) where the request names one.
     fastener: Fastener | None = None

@@ -592,7 +592,7 @@ def characteristic(
     )
     peak = np.argmax(torque, axis=-1)[..., None]
 
-    if torque.ndim == 1:  # a single design: plain indexing, the same floats (issue 21)
+    if torque.ndim == 1:  # a single design: plain indexing, the same floats
 
         def at(arr: Any, idx: Any) -> Any:
             arr = np.asarray(arr)
@@ -1086,8 +1086,8 @@ def solve_setting(
     """Nut setting Δ whose peak torque is ``target``; None where none in [0, upper] gives it.
 
     The first crossing on a 65-point grid of Δ brackets the root, refined by Brent's
-    method. The grid's peaks come from one characteristic on the whole grid (issue 21:
-    one call instead of up to 64, the same bracket and so the same root).
+    method. The grid's peaks come from one characteristic on the whole grid
+    (one call instead of up to 64, the same bracket and so the same root).
     """
 
     def peak(delta: float) -> float:
