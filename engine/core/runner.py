@@ -226,7 +226,7 @@ def _fallback(
 
 
 def _wanted(spec: ModelSpec, asked: set[str], *, named: bool, series: bool) -> set[str]:
-    """The outputs to compute: model only what the scene requires: nothing is computed that no output needs.
+    """The outputs to compute: only what the scene requires (nothing no output needs).
 
     Every scalar output when none is named; series only when named or when
     ``series`` asks for all of them.
