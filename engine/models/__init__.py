@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from ..core.spec import ModelSpec
 from .blow import BLOW
+from .capability import CAPABILITY as TOOL_CAPABILITY
 from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
 from .joint import VDI2230 as JOINT_VDI2230
 from .nutrunner import NUTRUNNER_DRIVE
@@ -30,6 +31,7 @@ MODELS: tuple[ModelSpec, ...] = (
     PRELOAD_CONTROL,
     JOINT_VDI2230,
     BLOW,
+    TOOL_CAPABILITY,
 )
 
 
