@@ -630,7 +630,7 @@ SOURCES: dict[str, Source] = {
             "(1.4-5.0), pinned in tests/validation/test_springs_textbooks.py.",
         ),
         Source(
-            id="VDI/VDE2645",
+            id="VDI-VDE2645",
             kind="standard",
             title="Capability test for fastening technology - Part 2: Machine capability test "
             "(MCT); Part 3: Process capability test",
@@ -751,7 +751,7 @@ _PATTERNS: tuple[tuple[re.Pattern[str], str | None], ...] = (
     (re.compile(r"\bCarvill\b"), "Carvill"),
     (re.compile(r"\bECSS-E-HB-32-23A\b"), "ECSS-E-HB-32-23A"),
     (re.compile(r"\bmisams/BAT\b"), "BAT"),
-    (re.compile(r"\bVDI/VDE 2645\b"), "VDI/VDE2645"),
+    (re.compile(r"\bVDI/VDE 2645\b"), "VDI-VDE2645"),
     (re.compile(r"\bDanikor\b"), "Danikor"),
     (re.compile(r"\bISO 16047\b"), "ISO16047"),
 )

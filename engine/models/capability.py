@@ -216,6 +216,7 @@ def _statistics(x: Mapping[str, Any]) -> tuple[float, float, int | None, tuple[f
                 field="mean_torque" if summary else "sample_count",
             )
         values = tuple(given)
+        mean = cap.sample_mean(values)
         sd = cap.sample_standard_deviation(values)
         if not sd > 0.0:
             raise InputOutOfRange(
@@ -223,7 +224,7 @@ def _statistics(x: Mapping[str, Any]) -> tuple[float, float, int | None, tuple[f
                 "are unbounded: give the values as measured, with their full resolution",
                 field="torque_samples",
             )
-        return cap.sample_mean(values), sd, len(values), values
+        return mean, sd, len(values), values
     if len(summary) < 2:
         missing = "mean_torque" if x.get("mean_torque") is None else "torque_sd"
         raise InputOutOfRange(
