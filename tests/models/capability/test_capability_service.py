@@ -3,8 +3,12 @@
 from __future__ import annotations
 
 import math
+import time
 
+import pytest
 from fastapi.testclient import TestClient
+
+from service import create_app
 
 URL = "/api/v1/tool/capability"
 #: 1 lbf·ft = 0.45359237 kg × 9.80665 m/s² × 0.3048 m, in N·m
@@ -71,3 +75,42 @@ def test_the_catalogue_describes_the_samples_kind(client: TestClient) -> None:
     spec = next(m for m in models if m["name"] == "tool.capability")
     p = next(i for i in spec["inputs"] if i["name"] == "torque_samples")
     assert (p["kind"], p["min_length"], p["max_length"], p["unit"]) == ("samples", 2, 10_000, "N*m")
+
+
+def test_a_study_holds_samples_fixed_and_refuses_to_vary_them(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Cmk = min(U − 10, 10 − L)/(3s) with s = 0.1 (samples 9.9, 10, 10.1), L, U = T ∓ 10 %."""
+    monkeypatch.setenv("STUDY_INPROCESS_POINTS", "100000")  # no Dask here
+    with TestClient(create_app()) as c:
+        r = c.post(
+            URL + "/study",
+            json={
+                "base": {"torque_samples": [9.9, 10.0, 10.1]},
+                "variables": [{"name": "nominal_torque", "low": 9.8, "high": 10.2}],
+                "samples": 20,
+                "outputs": ["critical_capability_index"],
+            },
+        )
+        assert r.status_code == 202, r.text
+        job = r.json()["job"]
+        deadline = time.monotonic() + 30
+        while (body := c.get(f"/api/v1/jobs/{job}").json())["state"] == "running":
+            assert time.monotonic() < deadline
+            time.sleep(0.05)
+        assert body["state"] == "done", body
+        stats = body["result"]["outputs"]["critical_capability_index"]
+        # by hand: at T = 9.8, U = 10.78, L = 8.82: min(0.78, 1.18)/0.3 = 2.6; at 10.2: L = 9.18,
+        # min(1.22, 0.82)/0.3 = 2.733; the best, 3.33 at T = 10: every point lies in 2.6…3.34
+        assert stats["min"] >= 2.6 - 1e-9 and stats["max"] <= 10.0 / 3.0 + 1e-9
+        r = c.post(
+            URL + "/study",
+            json={
+                "base": {"nominal_torque": 10.0},
+                "variables": [{"name": "torque_samples", "low": 1, "high": 2}],
+            },
+        )
+        assert r.status_code == 422
+        assert r.json()["detail"][0]["msg"] == (
+            "variables: 'torque_samples' is not a numeric input of tool.capability"
+        )
