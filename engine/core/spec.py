@@ -17,7 +17,7 @@ import math
 import threading
 import time
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
 from .equations import equations_of
@@ -119,48 +119,12 @@ class Param:
 
     def check(self, value: Any) -> Any:
         """Return ``value`` converted to this param's kind, or raise InputOutOfRange."""
-        if self.kind == "choice":
-            if value not in self.choices:
-                raise self._error(value)
-            return value
-        if self.kind == "bool":
-            if not isinstance(value, bool):
-                raise self._error(value)
-            return value
-        if self.kind == "text":
-            if not isinstance(value, str) or not value.strip() or len(value) > MAX_TEXT_LENGTH:
-                raise self._error(value)
-            return value.strip()
-        if self.kind == "samples":
-            return self._check_samples(value)
-        return self._check_number(value)
-
-    def _check_samples(self, value: Any) -> tuple[float, ...]:
-        """A list of numbers checked value by value; the refusal names the first bad index."""
-        if isinstance(value, str | bytes) or not isinstance(value, list | tuple):
-            raise self._error(value)
-        n = len(value)
-        if not self.min_length <= n <= self.max_length:
-            raise InputOutOfRange(
-                f"{self.name} has {n} value{'' if n == 1 else 's'}: must be {self.range_text()}",
-                field=self.name,
-                min_length=self.min_length,
-                max_length=self.max_length,
-                unit=self.unit,
-            )
-        checked = []
-        for i, item in enumerate(value):
-            try:
-                checked.append(float(self._check_number(item)))
-            except InputOutOfRange as exc:
-                raise self._error(item, index=i) from exc
-        return tuple(checked)
-
-    def _check_number(self, value: Any) -> Any:
-        """One number of this param's kind and range, or InputOutOfRange."""
+        kind = self.kind
+        if kind != "float" and kind != "int":  # numbers first: most inputs are (issue 21)
+            return self._check_other(value)
         if isinstance(value, bool) or not isinstance(value, int | float):
             raise self._error(value)
-        if self.kind == "int":
+        if kind == "int":
             if isinstance(value, float):
                 if not value.is_integer():
                     raise self._error(value)
@@ -181,6 +145,44 @@ class Param:
             raise self._error(value)
         return value
 
+    def _check_other(self, value: Any) -> Any:
+        """:meth:`check` for a choice, a flag, a text or a list of samples."""
+        if self.kind == "choice":
+            if value not in self.choices:
+                raise self._error(value)
+            return value
+        if self.kind == "bool":
+            if not isinstance(value, bool):
+                raise self._error(value)
+            return value
+        if self.kind == "text":
+            if not isinstance(value, str) or not value.strip() or len(value) > MAX_TEXT_LENGTH:
+                raise self._error(value)
+            return value.strip()
+        return self._check_samples(value)
+
+    def _check_samples(self, value: Any) -> tuple[float, ...]:
+        """A list of numbers checked value by value; the refusal names the first bad index."""
+        if isinstance(value, str | bytes) or not isinstance(value, list | tuple):
+            raise self._error(value)
+        n = len(value)
+        if not self.min_length <= n <= self.max_length:
+            raise InputOutOfRange(
+                f"{self.name} has {n} value{'' if n == 1 else 's'}: must be {self.range_text()}",
+                field=self.name,
+                min_length=self.min_length,
+                max_length=self.max_length,
+                unit=self.unit,
+            )
+        one = replace(self, kind="float")  # each value is checked as a number of this range
+        checked = []
+        for i, item in enumerate(value):
+            try:
+                checked.append(one.check(item))
+            except InputOutOfRange as exc:
+                raise self._error(item, index=i) from exc
+        return tuple(checked)
+
     def advice(self, value: Any) -> list[str]:
         """A warning if a checked ``value`` lies outside the source's recommended range."""
         if not (self.recommended and self.is_numeric):
@@ -199,9 +201,11 @@ class Param:
         if isinstance(value, int) and len(shown) > 20:
             shown = f"an integer of {len(shown)} digits"
         listed = self.kind == "samples" and not isinstance(value, int | float)
-        if listed:  # the whole value refused (not a list): say what it was, briefly
+        if listed and index is None:  # the whole value refused (not a list): say what it was
             kind = "a list" if isinstance(value, list | tuple) else type(value).__name__
             shown = f"{kind} of {len(value)} values" if kind == "a list" else f"a {kind}"
+        elif listed and len(shown) > 40:  # one value of the list, not a number
+            shown = shown[:37] + "..."
         unit = "" if self.unit == "1" or not self.has_unit or listed else f" {self.unit}"
         where = self.name if index is None else f"{self.name}[{index}]"
         extra = {} if index is None else {"index": index}
