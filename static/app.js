@@ -1136,7 +1136,8 @@ function downloadCSV(m, data) {
   }
   for (const [k, v] of Object.entries(data.inputs)) {
     const p = m.inputs.find((x) => x.name === k);
-    lines.push(["input", k, v, p && p.unit !== "1" ? p.unit : "", "", ""].map(csvCell).join(","));
+    // a list of samples in one cell, its values separated by spaces
+    lines.push(["input", k, Array.isArray(v) ? v.join(" ") : v, p && p.unit !== "1" ? p.unit : "", "", ""].map(csvCell).join(","));
   }
   lines.push(["meta", "rung", data.rung, "", "", ""].join(","));
   lines.push(["meta", "error_estimate", data.error_estimate ?? "", "1", "", ""].join(","));
@@ -1776,6 +1777,7 @@ function renderCompare(model) {
   const differs = (vals) => vals.some((v) => {
     const a = vals[0];
     if (typeof a === "number" && typeof v === "number") return Math.abs(a - v) > 1e-9 * Math.max(Math.abs(a), Math.abs(v));
+    if (Array.isArray(a) && Array.isArray(v)) return a.length !== v.length || a.some((x, i) => x !== v[i]);
     return a !== v;
   });
   const row = (label, unit, vals, show) => {
@@ -1792,7 +1794,8 @@ function renderCompare(model) {
     const choices = unitChoices(p.unit, p.display_unit);
     const u = p.kind !== "float" ? { factor: 1, label: "" }
       : (state.imperial && choices.find((c) => IMPERIAL.has(c.label))) || choices[0];
-    rows.push(row(p.label, u.label, vals, (v) => (typeof v === "number" ? group(short(v / u.factor, 6)) : v === undefined || v === null ? "—" : choiceText(String(v)))));
+    rows.push(row(p.label, u.label, vals, (v) => (typeof v === "number" ? group(short(v / u.factor, 6))
+      : Array.isArray(v) ? `${v.length} values` : v === undefined || v === null ? "—" : choiceText(String(v)))));
   }
   rows.push(el("tr", { class: "group" }, el("th", { colspan: cols.length + 1 }, "Results")));
   for (const o of model.outputs) {

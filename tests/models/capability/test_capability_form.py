@@ -71,3 +71,22 @@ def test_a_csv_file_fills_the_field(page: Any, base_url: str, tmp_path: Path) ->
     assert page.input_value("#in-torque_samples") == "10.2\n9.8\n10.0"
     assert _submit(page) == "ok"
     assert page.evaluate("window.calcState.lastResponse.results")["sample_count"] == 3
+
+
+def test_the_link_carries_the_list_and_its_unit(page: Any, base_url: str) -> None:  # noqa: F811
+    _fresh(page, base_url)
+    page.select_option("#decimal-sep", ",")
+    page.select_option("#unit-torque_samples", "lbf*ft")
+    page.fill("#in-torque_samples", "7\n7,5\n7,25")
+    assert _submit(page) == "ok"
+    first = page.evaluate("window.calcState.lastResponse.results")
+    assert "torque_samples=7+7.5+7.25+lbf*ft" in page.url.replace("%20", "+"), page.url
+    url = page.url
+    page.goto("about:blank")
+    page.goto(url)
+    page.wait_for_selector("body[data-ready]")
+    assert page.input_value("#in-torque_samples") == "7\n7,5\n7,25"
+    assert page.eval_on_selector("#unit-torque_samples", "s => s.value") == "lbf*ft"
+    assert _submit(page) == "ok"
+    again = page.evaluate("window.calcState.lastResponse.results")
+    assert again["mean_torque"] == first["mean_torque"]
