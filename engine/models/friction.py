@@ -192,6 +192,13 @@ def _geometry(x: Mapping[str, Any]) -> tuple[float, float, float, float, list[st
     # resolve() asks an inch thread for a grade; friction does not depend on it
     fields, fastener, notes = fz.resolve({**x, "yield_strength": 1.0})
     thread = fastener.thread
+    if "bearing_friction_factor" in fields:  # a countersunk head: the preload models' note
+        notes = [n for n in notes if not n.startswith("countersunk head")]
+        notes.append(
+            "countersunk head: μ_b is evaluated as on a flat face at D_b/2 (ISO 16047's "
+            f"relation); the friction on the 90° cone is μ_b × sin 45° = μ_b × "
+            f"{1.0 / fields['bearing_friction_factor']:.3f}"
+        )
     d = float(fields["diameter"])
     pitch = x.get("thread_pitch") or fields.get("pitch") or (thread.pitch if thread else None)
     if pitch is None:

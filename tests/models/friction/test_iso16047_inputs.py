@@ -105,3 +105,21 @@ def test_forces_in_kn_through_the_api(client: TestClient) -> None:
     assert math.isclose(
         body["results"]["torque_coefficient_min"], min(k, 41 / 205, 39 / 195), rel_tol=1e-12
     )
+
+
+def test_a_countersunk_head_says_how_its_cone_friction_relates() -> None:
+    """ISO 10642 M6: d_k,min 11.34 mm, ISO 273 medium hole 6.6 mm: D_b = 8.97 mm; μ_b is the
+    flat-face value, and the note gives the cone's as μ_b sin 45° (not the preload models'
+    ×1/sin 45° note, which would claim a correction this evaluation does not make)."""
+    r = run(
+        get_model(MODEL),
+        {
+            "thread": "M6 ISO 10642 10.9",
+            "tightening_torques": [10.0, 11.0],
+            "thread_torques": [4.0, 4.5],
+            "clamp_forces": [8e3, 8.5e3],
+        },
+    )
+    assert r.results["bearing_diameter"] == pytest.approx((0.01134 + 0.0066) / 2, rel=1e-9)
+    assert any("μ_b × 0.707" in n for n in r.notes)
+    assert not any("×1/sin 45°" in n for n in r.notes)
