@@ -216,10 +216,16 @@ def _samples_validator(p: Param, *, required: bool) -> Callable[[Any], Any]:
             return p.check(value)
         except InputOutOfRange as exc:
             raise PydanticCustomError(
-                "out_of_range", "{msg}", {"msg": exc.message, **_range_ctx(p)}
+                "out_of_range", "{msg}", {"msg": exc.message, **_range_ctx(p), **_index_ctx(exc)}
             ) from None
 
     return validate
+
+
+def _index_ctx(exc: InputOutOfRange) -> dict[str, Any]:
+    """The index of the refused value of a list (and the list's length limits), for ``ctx``."""
+    keys = ("index", "min_length", "max_length")
+    return {k: exc.context[k] for k in keys if k in exc.context}
 
 
 def _samples_to_si(p: Param, values: Any, unit: str, *, difference: bool) -> Any:

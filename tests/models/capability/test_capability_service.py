@@ -44,6 +44,10 @@ def test_refusal_names_field_index_and_range(client: TestClient) -> None:
     assert item["field"] == "torque_samples"
     assert item["msg"].startswith("torque_samples[1] = -2 N*m is not allowed: must be a list of 2")
     assert "≥ 0 N*m" in item["msg"]
+    assert (item["ctx"]["index"], item["ctx"]["minimum"], item["ctx"]["unit"]) == (1, 0.0, "N*m")
+    r = client.post(URL, json={"torque_samples": [10.0], "nominal_torque": 10.0})
+    ctx = r.json()["detail"][0]["ctx"]
+    assert (ctx["min_length"], ctx["max_length"]) == (2, 10_000)
 
 
 def test_wrong_unit_and_wrong_shape_are_422(client: TestClient) -> None:
