@@ -33,7 +33,7 @@ from .units import (
     to_si,
 )
 
-SIValue = float | int | bool | str | None
+SIValue = float | int | bool | str | list[float] | None
 
 
 class CheckOut(BaseModel):
@@ -158,6 +158,8 @@ def _field(p: Param, *, all_optional: bool = False) -> tuple[Any, Any]:
         )
     if p.kind == "text":
         return _text_field(p, required=p.required and not all_optional)
+    if p.kind == "samples":
+        return _samples_field(p, required=p.required and not all_optional)
     annotated = Annotated[
         Any, BeforeValidator(_numeric_validator(p)), WithJsonSchema(_field_schema(p))
     ]
@@ -189,6 +191,85 @@ def _text_field(p: Param, *, required: bool) -> tuple[Any, Any]:
     }
     if p.choices:
         schema["examples"] = list(p.choices)
+    annotated = Annotated[Any, BeforeValidator(validate), WithJsonSchema(schema)]
+    return annotated, Field(default=... if required else p.default, description=p.description)
+
+
+def _samples_validator(p: Param, *, required: bool) -> Callable[[Any], Any]:
+    """A list of numbers in SI, or ``{"values": [...], "unit": "lbf*ft"}`` with one unit for
+    the whole list; each value checked by the engine's Param (the refusal names the index)."""
+    difference = is_temperature_change(p)
+
+    def validate(value: Any) -> Any:
+        if value is None and not required:
+            return None
+        if isinstance(value, dict):
+            if set(value) != {"values", "unit"} or not isinstance(value["unit"], str):
+                raise PydanticCustomError(
+                    "samples_invalid",
+                    "{field}: give a list of numbers in {unit}, or an object with exactly "
+                    "'values' (the list) and 'unit' (a text such as 'N*m')",
+                    {"field": p.name, "unit": p.unit},
+                )
+            value = _samples_to_si(p, value["values"], value["unit"], difference=difference)
+        try:
+            return p.check(value)
+        except InputOutOfRange as exc:
+            raise PydanticCustomError(
+                "out_of_range", "{msg}", {"msg": exc.message, **_range_ctx(p), **_index_ctx(exc)}
+            ) from None
+
+    return validate
+
+
+def _index_ctx(exc: InputOutOfRange) -> dict[str, Any]:
+    """The index of the refused value of a list (and the list's length limits), for ``ctx``."""
+    keys = ("index", "min_length", "max_length")
+    return {k: exc.context[k] for k in keys if k in exc.context}
+
+
+def _samples_to_si(p: Param, values: Any, unit: str, *, difference: bool) -> Any:
+    """``values`` given in ``unit``, in SI; anything not a list of numbers is left for
+    :meth:`Param.check` to refuse with the index of the first bad value."""
+    try:
+        offset = to_si(f"0 {unit}", p.unit, difference=difference)
+        factor = to_si(f"1 {unit}", p.unit, difference=difference) - offset
+    except UnitError as exc:
+        raise PydanticCustomError(
+            "unit_error", "{field}: {reason}", {"field": p.name, "reason": str(exc)}
+        ) from None
+    if not isinstance(values, list) or len(values) > p.max_length:
+        return values
+    return [
+        v * factor + offset if isinstance(v, int | float) and not isinstance(v, bool) else v
+        for v in values
+    ]
+
+
+def _samples_field(p: Param, *, required: bool) -> tuple[Any, Any]:
+    """A list of measured values: SI numbers, or values with one unit for the list."""
+    number = _number_schema(p)
+    items = {"type": "array", "items": number, "minItems": p.min_length, "maxItems": p.max_length}
+    schema: dict[str, Any] = {
+        "title": p.label or p.name.replace("_", " "),
+        "description": f"{p.description} [{p.unit}; {p.range_text()}]",
+        "anyOf": [
+            items,
+            {
+                "type": "object",
+                "properties": {
+                    "values": items,
+                    "unit": {"type": "string", "maxLength": MAX_UNIT_STRING},
+                },
+                "required": ["values", "unit"],
+                "additionalProperties": False,
+            },
+        ],
+        "x-unit": p.unit,
+    }
+    if not required:
+        schema["anyOf"].append({"type": "null"})
+    validate = _samples_validator(p, required=required)
     annotated = Annotated[Any, BeforeValidator(validate), WithJsonSchema(schema)]
     return annotated, Field(default=... if required else p.default, description=p.description)
 
@@ -411,6 +492,8 @@ def plain_reader(spec: ModelSpec) -> Callable[[Any], Body | None]:
             readers[p.name] = _flag_reader
         elif p.kind == "text":
             readers[p.name] = _text_validator(p, required=p.required)
+        elif p.kind == "samples":
+            readers[p.name] = _samples_validator(p, required=p.required)
         else:
             readers[p.name] = _numeric_validator(p)
     required = tuple(p.name for p in spec.inputs if p.required)

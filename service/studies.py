@@ -125,7 +125,7 @@ class VariableIn(BaseModel):
 
 class StudyIn(BaseModel):
     model_config = ConfigDict(extra="forbid")
-    base: dict[str, float | int | bool | str] = Field(
+    base: dict[str, float | int | bool | str | list[float]] = Field(
         default_factory=dict, description="inputs held fixed (defaults fill the rest)"
     )
     variables: list[VariableIn] = Field(min_length=1, max_length=12)

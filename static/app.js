@@ -7,7 +7,7 @@
 // about a model comes from the catalogue entry, so a newly registered model
 // appears here without any change to this file.
 
-import { decimalSeparator, echoNumber, isPlain, localNumber, parseNum, readNumber, readQuantity, setDecimalSeparator } from "./numbers.js";
+import { decimalSeparator, echoNumber, isPlain, localNumber, parseNum, readNumber, readQuantity, readSamples, setDecimalSeparator } from "./numbers.js";
 
 const API = "api/v1";
 const uPlot = window.uPlot;
@@ -417,6 +417,8 @@ function fieldRow(p) {
     // free text (a fastener designation such as "M12x1.25"); the choices are suggestions
     input = el("input", { id, name: p.name, type: "text", size: 22, maxlength: 64, list: "list-" + p.name, "aria-describedby": described });
     unitSel = el("datalist", { id: "list-" + p.name }, ...(p.choices || []).map((c) => el("option", { value: c })));
+  } else if (p.kind === "samples") {
+    return samplesRow(p, id, described);
   } else {
     input = el("input", { id, name: p.name, type: "text", inputmode: "decimal", size: 12, "aria-describedby": described });
     const choices = unitChoices(p.unit, p.display_unit);
@@ -440,6 +442,48 @@ function fieldRow(p) {
     el("div", { class: "desc", id: "desc-" + p.name, title: p.description }, p.description || ""),
     el("div", { class: "hint", id: "hint-" + p.name }, hintText(p)),
     el("div", { class: "error", id: "err-" + p.name }));
+}
+
+/** A list of measured values (issue 32): pasted into a text area or read from a CSV file, in one unit. */
+function samplesRow(p, id, described) {
+  const input = el("textarea", { id, name: p.name, rows: 4, cols: 24, spellcheck: "false", "aria-describedby": described + " read-" + p.name,
+    placeholder: "one value a line, or separated by spaces or semicolons" });
+  const choices = unitChoices(p.unit, p.display_unit);
+  const unitSel = choices.length > 1
+    ? el("select", { id: "unit-" + p.name, name: "unit-" + p.name, "aria-label": `${p.label} unit` },
+      ...choices.map((c) => el("option", { value: c.api, "data-factor": c.factor }, c.label)))
+    : el("span", { class: "unit", id: "unit-" + p.name, "data-api": choices[0].api, "data-factor": choices[0].factor }, choices[0].label);
+  if (unitSel.tagName === "SELECT") {
+    unitSel.dataset.prev = unitSel.value;
+    unitSel.addEventListener("change", () => changeUnit(p, input, unitSel));
+  }
+  const file = el("input", { id: "file-" + p.name, type: "file", accept: ".csv,.txt,text/csv,text/plain", "aria-label": `${p.label}: read a CSV file` });
+  file.addEventListener("change", async () => {
+    const f = file.files && file.files[0];
+    if (!f) return;
+    // a CSV file: one value a line (its first column), or values in a row; a header line is dropped
+    const lines = (await f.text()).split(/\r?\n/).filter((l) => l.trim() !== "");
+    const sep = decimalSeparator() === "," ? ";" : ",";
+    const rows = lines.map((l) => l.split(lines.length > 1 ? sep : /\u0000/)[0].trim());
+    if (rows.length > 1 && !readNumber(rows[0]).ok) rows.shift();
+    input.value = rows.join("\n");
+    checkField(p);
+  });
+  input.addEventListener("input", () => checkField(p));
+  input.addEventListener("change", () => checkField(p));
+  const label = el("label", { for: id, title: p.description },
+    p.label, p.symbol ? el("span", { class: "symbol" }, ` ${p.symbol}`) : null, p.required ? el("span", { class: "req", title: "required" }, " *") : null);
+  return el("div", { class: "field samples", "data-field": p.name },
+    label, el("div", { class: "control" }, input, unitSel, file,
+      el("output", { class: "read-as", id: "read-" + p.name, for: id })),
+    el("div", { class: "desc", id: "desc-" + p.name, title: p.description }, p.description || ""),
+    el("div", { class: "hint", id: "hint-" + p.name }, hintText(p)),
+    el("div", { class: "error", id: "err-" + p.name }));
+}
+
+/** Values in SI written into a samples text area in ``unit``, one a line. */
+function samplesText(values, unit) {
+  return values.map((v) => localNumber(fieldNumber(v / unit.factor, 10))).join("\n");
 }
 
 /** The unit currently chosen for a numeric input: {api, factor, label}. */
@@ -473,6 +517,10 @@ function hintText(p) {
   }
   const u = document.getElementById("unit-" + p.name) ? currentUnit(p) : unitChoices(p.unit, p.display_unit)[0];
   const sp = u.label ? " " + u.label : "";
+  if (p.kind === "samples") {
+    const seps = decimalSeparator() === "," ? "new lines, semicolons or spaces" : "new lines, commas, semicolons or spaces";
+    return [p.required ? "" : "optional", `${p.min_length}–${p.max_length} values separated by ${seps}, or a CSV file`, "each " + rangeText(p, u)].filter(Boolean).join(" · ");
+  }
   if (p.default !== null && p.default !== undefined) parts.push(`default ${num(inUnit(p.default, u))}${sp}`);
   else if (!p.required) parts.push("optional");
   parts.push("allowed: " + rangeText(p, u));
@@ -493,7 +541,11 @@ function changeUnit(p, input, sel) {
   const prev = Number(sel.querySelector(`option[value="${CSS.escape(sel.dataset.prev)}"]`).dataset.factor);
   const next = Number(sel.selectedOptions[0].dataset.factor);
   const v = input.value.trim();
-  if (!touched(input) && input.dataset.si !== undefined) {
+  if (p.kind === "samples") {
+    const r = readSamples(v);
+    if (!touched(input) && input.dataset.si !== undefined) input.value = input.dataset.shown = samplesText(JSON.parse(input.dataset.si), { factor: next });
+    else if (r.ok) input.value = samplesText(r.values.map((x) => x * prev), { factor: next });
+  } else if (!touched(input) && input.dataset.si !== undefined) {
     // still the loaded value: convert from its exact SI value, and keep it untouched
     input.value = input.dataset.shown = fieldText(Number(input.dataset.si) / next, 7);
   } else if (v !== "" && Number.isFinite(parseNum(v))) input.value = fieldText((parseNum(v) * prev) / next);
@@ -517,7 +569,11 @@ function fillForm(m, key) {
     const v = p.name in values ? values[p.name] : p.default;
     if (p.kind === "bool") input.checked = Boolean(v);
     else if (p.kind === "choice" || p.kind === "text") input.value = v ?? "";
-    else if (typeof v === "string") {
+    else if (p.kind === "samples") {
+      input.value = Array.isArray(v) ? samplesText(v, currentUnit(p)) : "";
+      if (Array.isArray(v)) input.dataset.si = JSON.stringify(v);
+      else delete input.dataset.si;
+    } else if (typeof v === "string") {
       input.value = v; // a unit string ("45 mm"): sent as written
       delete input.dataset.si;
     } else {
@@ -552,6 +608,19 @@ function applyParams(m, params) {
     const input = document.getElementById("in-" + p.name);
     if (p.kind === "bool") { input.checked = raw === "true"; continue; }
     if (p.kind === "choice" || p.kind === "text") { input.value = raw; continue; }
+    if (p.kind === "samples") {
+      // canonical numbers separated by spaces, the unit last ("10.1 9.9 10 N*m")
+      const tokens = raw.trim().split(/\s+/);
+      const sel = document.getElementById("unit-" + p.name);
+      const last = tokens[tokens.length - 1];
+      if (tokens.length > 1 && !readNumber(last, ".").ok && sel && sel.tagName === "SELECT") {
+        const opt = [...sel.options].find((o) => norm(o.value) === norm(last) || norm(o.textContent) === norm(last));
+        if (opt) { sel.value = opt.value; sel.dataset.prev = opt.value; tokens.pop(); }
+      }
+      input.value = tokens.map((t) => linkNumber(t)).join("\n");
+      delete input.dataset.si;
+      continue;
+    }
     const match = raw.match(/^\s*(\S+)\s*(.*)$/);
     const sel = document.getElementById("unit-" + p.name);
     if (match && sel && sel.tagName === "SELECT" && match[2]) {
@@ -608,6 +677,7 @@ function setError(name, msg) {
 
 /** Range check from the catalogue, before anything is sent. Returns the message or "". */
 function checkField(p) {
+  if (p.kind === "samples") return checkSamples(p);
   const input = document.getElementById("in-" + p.name);
   const raw = input.value.trim();
   const q = readQuantity(raw);
@@ -640,6 +710,40 @@ function checkField(p) {
   return msg;
 }
 
+/** A samples field read and range-checked value by value, as the server checks it. */
+function checkSamples(p) {
+  const input = document.getElementById("in-" + p.name);
+  const raw = input.value.trim();
+  const u = currentUnit(p);
+  let msg = "", echo = "", format = false;
+  if (raw === "") {
+    if (p.required) msg = `${p.label} is required`;
+  } else {
+    const r = readSamples(raw);
+    if (!r.ok) {
+      format = true;
+      msg = `${p.label}: ${r.error}`;
+    } else if (r.values.length < p.min_length || r.values.length > p.max_length) {
+      msg = `${p.label} has ${r.values.length} value${r.values.length === 1 ? "" : "s"}: give ${p.min_length} to ${p.max_length}`;
+    } else {
+      const lo = p.minimum, hi = p.maximum;
+      const i = r.values.findIndex((v) => {
+        const si = v * u.factor;
+        return (lo !== null && lo !== undefined && (p.exclusive_minimum ? si <= lo : si < lo))
+          || (hi !== null && hi !== undefined && (p.exclusive_maximum ? si >= hi : si > hi));
+      });
+      if (i >= 0) msg = `${p.label}: value ${i + 1} = ${localNumber(r.canonical[i])}${u.label ? " " + u.label : ""} is not allowed: each must be ${rangeText(p, u)}`;
+      else echo = `${r.values.length} values read`;
+    }
+  }
+  setError(p.name, msg);
+  const read = document.getElementById("read-" + p.name);
+  if (read) read.textContent = msg ? "" : echo;
+  const slot = document.getElementById("err-" + p.name);
+  if (slot) slot.dataset.format = format ? "1" : "";
+  return msg;
+}
+
 // ---------------------------------------------------------------- evaluate
 
 /** The request body the form describes: unit strings for numbers, as typed. */
@@ -653,6 +757,13 @@ function requestBody(m, { skip = null } = {}) {
     if (raw === "") continue;
     if (p.kind === "choice" || p.kind === "text") { body[p.name] = raw; continue; }
     const u = currentUnit(p);
+    if (p.kind === "samples") {
+      const r = readSamples(raw);
+      if (!touched(input) && input.dataset.si !== undefined) body[p.name] = JSON.parse(input.dataset.si);
+      else if (!r.ok) body[p.name] = raw; // the form refuses it before sending; the server would too
+      else body[p.name] = u.api ? { values: r.values, unit: u.api } : r.values;
+      continue;
+    }
     const q = readQuantity(raw);
     if (!touched(input) && input.dataset.si !== undefined) body[p.name] = Number(input.dataset.si);
     else if (q.ok && !q.unit) body[p.name] = u.api ? `${q.canonical} ${u.api}` : q.value;
@@ -709,7 +820,7 @@ function showErrors(data, box) {
 async function compute() {
   const m = state.model;
   if (!m) return;
-  for (const p of m.inputs) if (p.kind === "float" || p.kind === "int") checkField(p);
+  for (const p of m.inputs) if (p.kind === "float" || p.kind === "int" || p.kind === "samples") checkField(p);
   const body = { ...requestBody(m), ...fidelityBody() };
   // a number the form cannot read under the decimal-separator setting is never sent
   const unread = m.inputs.filter((p) => document.getElementById("err-" + p.name)?.dataset.format === "1");
@@ -793,7 +904,11 @@ function formInputs(m) {
     const raw = input.value.trim();
     if (p.kind === "bool") out[p.name] = String(input.checked);
     else if (raw === "") { if (touched(input)) out[p.name] = ""; }
-    else if (p.kind === "choice" || p.kind === "text" || !readQuantity(raw).ok) out[p.name] = raw;
+    else if (p.kind === "samples") {
+      // canonical numbers separated by spaces, the unit last: the link means the same everywhere
+      const r = readSamples(raw), u = currentUnit(p);
+      out[p.name] = r.ok ? [...r.canonical, ...(u.api ? [u.api] : [])].join(" ") : raw;
+    } else if (p.kind === "choice" || p.kind === "text" || !readQuantity(raw).ok) out[p.name] = raw;
     else {
       // canonical numbers (a point, no grouping): the link means the same on every machine
       const q = readQuantity(raw), u = currentUnit(p);
@@ -811,6 +926,7 @@ function snapshot(m) {
     if (p.kind === "bool") { snap[p.name] = input.checked; continue; }
     const raw = input.value.trim();
     if (p.kind === "choice" || p.kind === "text") { snap[p.name] = raw; continue; }
+    if (p.kind === "samples") { snap[p.name] = `${raw} ${currentUnit(p).api}`; continue; }
     if (!touched(input) && input.dataset.si !== undefined) snap[p.name] = Number(input.dataset.si);
     else if (Number.isFinite(parseNum(raw))) snap[p.name] = parseNum(raw) * currentUnit(p).factor;
     else snap[p.name] = raw;
@@ -1020,7 +1136,8 @@ function downloadCSV(m, data) {
   }
   for (const [k, v] of Object.entries(data.inputs)) {
     const p = m.inputs.find((x) => x.name === k);
-    lines.push(["input", k, v, p && p.unit !== "1" ? p.unit : "", "", ""].map(csvCell).join(","));
+    // a list of samples in one cell, its values separated by spaces
+    lines.push(["input", k, Array.isArray(v) ? v.join(" ") : v, p && p.unit !== "1" ? p.unit : "", "", ""].map(csvCell).join(","));
   }
   lines.push(["meta", "rung", data.rung, "", "", ""].join(","));
   lines.push(["meta", "error_estimate", data.error_estimate ?? "", "1", "", ""].join(","));
@@ -1517,6 +1634,11 @@ function inputsTable(m, data) {
       const u = p.kind === "int" ? { factor: 1, label: "" } : (currentUnit(p).factor ? currentUnit(p) : unitChoices(p.unit, p.display_unit)[0]);
       shown = p.kind === "int" ? String(v) : group(short(v / u.factor, 6));
       unit = u.label;
+    } else if (Array.isArray(v)) {
+      // a list of measured values: how many, and their range, in the field's unit
+      const u = currentUnit(p).factor ? currentUnit(p) : unitChoices(p.unit, p.display_unit)[0];
+      shown = `${v.length} values, ${group(short(Math.min(...v) / u.factor, 6))} … ${group(short(Math.max(...v) / u.factor, 6))}`;
+      unit = u.label;
     } else shown = typeof v === "boolean" ? (v ? "yes" : "no") : choiceText(String(v));
     const cites = [...new Set((p.description || "").match(/\[\d{3}[^\]]*\]/g) || [])].join(" ");
     rows.push(el("tr", {}, el("th", { scope: "row" }, p.label, p.symbol ? el("span", { class: "symbol" }, " " + p.symbol) : null),
@@ -1658,6 +1780,7 @@ function renderCompare(model) {
   const differs = (vals) => vals.some((v) => {
     const a = vals[0];
     if (typeof a === "number" && typeof v === "number") return Math.abs(a - v) > 1e-9 * Math.max(Math.abs(a), Math.abs(v));
+    if (Array.isArray(a) && Array.isArray(v)) return a.length !== v.length || a.some((x, i) => x !== v[i]);
     return a !== v;
   });
   const row = (label, unit, vals, show) => {
@@ -1674,7 +1797,8 @@ function renderCompare(model) {
     const choices = unitChoices(p.unit, p.display_unit);
     const u = p.kind !== "float" ? { factor: 1, label: "" }
       : (state.imperial && choices.find((c) => IMPERIAL.has(c.label))) || choices[0];
-    rows.push(row(p.label, u.label, vals, (v) => (typeof v === "number" ? group(short(v / u.factor, 6)) : v === undefined || v === null ? "—" : choiceText(String(v)))));
+    rows.push(row(p.label, u.label, vals, (v) => (typeof v === "number" ? group(short(v / u.factor, 6))
+      : Array.isArray(v) ? `${v.length} values` : v === undefined || v === null ? "—" : choiceText(String(v)))));
   }
   rows.push(el("tr", { class: "group" }, el("th", { colspan: cols.length + 1 }, "Results")));
   for (const o of model.outputs) {

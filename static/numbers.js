@@ -115,3 +115,30 @@ export function echoNumber(value, dec = decimalSeparator()) {
   s = sign + g + (frac ? (dec === "," ? "," : ".") + frac : "");
   return s;
 }
+
+/**
+ * A pasted list of numbers (measured values, a CSV column) read under the decimal
+ * separator ``dec``: ``{ok: true, values, canonical}`` or ``{ok: false, error, index}``
+ * naming the first value that cannot be read (counted from 1 for the user); ``{empty:
+ * true}`` for blank text. Values are separated by new lines, semicolons, tabs or spaces,
+ * and by commas too when the decimal separator is the point; so no value may group its
+ * digits. readSamples("1.5, 2\n3", ".") is [1.5, 2, 3]; readSamples("1,5; 2", ",") is
+ * [1.5, 2]. A CSV with a header line: words are refused, so take the header off.
+ */
+export function readSamples(text, dec = decimalSeparator()) {
+  const s = String(text ?? "").trim();
+  if (s === "") return { ok: false, empty: true, error: "" };
+  const split = dec === "," ? /[\s;]+/ : /[\s;,]+/;
+  const tokens = s.split(split).filter((t) => t !== "");
+  const values = [], canonical = [];
+  for (let i = 0; i < tokens.length; i++) {
+    const r = readNumber(tokens[i], dec);
+    if (!r.ok || r.grouped) {
+      const sep = dec === "," ? "new lines, semicolons or spaces" : "new lines, commas, semicolons or spaces";
+      return { ok: false, index: i, error: `value ${i + 1}, “${tokens[i]}”, is not a number with the decimal ${dec === "," ? "comma" : "point"} “${dec}” (separate values by ${sep})` };
+    }
+    values.push(r.value);
+    canonical.push(r.canonical);
+  }
+  return { ok: true, values, canonical };
+}

@@ -3,7 +3,7 @@
 // the summary: histogram with reference lines, grid map with the feasible region, sensitivity bars.
 // Plain ES module, no build step, nothing fetched but this server.
 
-import { decimalSeparator, echoNumber, isPlain, localNumber, readQuantity, setDecimalSeparator } from "./numbers.js";
+import { decimalSeparator, echoNumber, isPlain, localNumber, readQuantity, readSamples, setDecimalSeparator } from "./numbers.js";
 
 const $ = (sel) => document.querySelector(sel);
 const API = "api/v1";
@@ -107,6 +107,10 @@ function pickModel(name) {
     } else if (p.kind === "bool") {
       control = el("input", { id, type: "checkbox", "data-name": p.name });
       control.checked = Boolean(value);
+    } else if (p.kind === "samples") {
+      // a list of measured values in SI, held fixed (a study cannot vary a list)
+      control = el("textarea", { id, "data-name": p.name, "data-kind": "samples", rows: 3, placeholder: `values in ${p.unit}, ${p.required ? "required" : "optional"}`, "aria-describedby": `${id}-range` });
+      if (Array.isArray(value)) control.value = value.map((v) => localNumber(String(v))).join("\n");
     } else {
       control = el("input", {
         id,
@@ -192,6 +196,10 @@ function body(errors = []) {
       variables.push(v);
     } else if (tr.control.type === "checkbox") {
       base[name] = tr.control.checked;
+    } else if (tr.control.dataset.kind === "samples" && tr.control.value.trim() !== "") {
+      const r = readSamples(tr.control.value);
+      if (r.ok) base[name] = r.values;
+      else errors.push(`${label(model.inputs.find((p) => p.name === name))}: ${r.error}`);
     } else if (tr.control.value.trim() !== "") {
       base[name] = tr.control.tagName === "SELECT" ? tr.control.value : number(tr.control.value, label(model.inputs.find((p) => p.name === name)), errors);
     }

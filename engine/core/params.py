@@ -81,6 +81,12 @@ def count(name: str, description: str, *, minimum: int, maximum: int, **kw: Any)
     return Param(name, "1", description, kind="int", minimum=minimum, maximum=maximum, **kw)
 
 
+def samples(name: str, unit: str, description: str, **kw: Any) -> Param:
+    """A list of measured values in one SI ``unit`` (2…10,000 of them unless ``min_length``
+    and ``max_length`` say otherwise), each checked against ``minimum``/``maximum``."""
+    return Param(name, unit, description, kind="samples", **kw)
+
+
 def in_mm(value: float) -> str:
     """A length [m] in mm, 3 significant digits: ``in_mm(0.0042)`` is ``'4.2 mm'``."""
     return quantity(value, "mm")

@@ -18,7 +18,7 @@ import re
 from dataclasses import asdict, dataclass
 from typing import Any, Literal
 
-SourceKind = Literal["paper", "standard", "textbook"]
+SourceKind = Literal["paper", "standard", "textbook", "web page"]
 
 
 @dataclass(frozen=True)
@@ -630,6 +630,67 @@ SOURCES: dict[str, Source] = {
             "(1.4-5.0), pinned in tests/validation/test_springs_textbooks.py.",
         ),
         Source(
+            id="VDI-VDE2645",
+            kind="standard",
+            title="Capability test for fastening technology - Part 2: Machine capability test "
+            "(MCT); Part 3: Process capability test",
+            authors="VDI/VDE",
+            year="2014 (Part 2)",
+            published="VDI/VDE 2645 Blatt 2 and Blatt 3, Beuth",
+            covers="Model tool.capability: the machine (Cm, Cmk) and process (Cp, Cpk) "
+            "capability indices of a tightening tool, Cm = (U - L)/(6 s), "
+            "Cmk = min(U - mean, mean - L)/(3 s) with the sample standard deviation s; at "
+            "least 50 values in one run for a machine test; 25 subgroups of 5 for a process "
+            "test; 1.67 as the usual limit of Cmk and Cpk.",
+            reconstruction="Paywalled; not read. The formulas, sample sizes and the 1.67 limit "
+            "are as public secondary sources print them: blog.gwkgerlach.de (machine and "
+            "process capability in screwdriving: 'Cmk >= 1.67', 'at least 50 measurements in "
+            "one run', 'at least 25 subgroups of 5 values each', 'Cpk >= 1.67 (Automotive)', "
+            "each called a typical limit), Minitab's help page 'What are Cm and Cmk?' (the "
+            "same formulas as Cp and Cpk; the data differ), harms-wende.de (machine capability: "
+            "at least 50 pieces) and [Danikor]. The limit is therefore an input of the model "
+            "(default 1.67), not a rule the engine asserts. ISO 5393's own sample-size rule "
+            "could not be read in a public source and is not applied.",
+        ),
+        Source(
+            id="Danikor",
+            kind="web page",
+            title="Tightening tool accuracy: Cm and Cmk (worked example)",
+            authors="Danikor (tightening-tool maker)",
+            year="read 2026",
+            published="https://www.danikor.com/en/newsinfo/169",
+            covers="The worked example reproduced in "
+            "tests/validation/test_capability_published.py: target 0.8 N*m +/- 10 % "
+            "(0.72...0.88 N*m), 25 readings with mean 0.81 N*m and s = 0.011 N*m, Cm = 2.42. "
+            "Its rule of thumb (Cm >= 1.67 and Cmk >= 1.33) is a maker's, not the standard's.",
+            reconstruction="The copy read ends after 'Cmk = min[(0.88 - 0.81)/(3 x 0.011), "
+            "(0.81 - 0.72)...': the page's Cmk is recomputed from its own numbers "
+            "(min(0.07, 0.09)/0.033 = 2.12).",
+        ),
+        Source(
+            id="ISO16047",
+            kind="standard",
+            title="Fasteners - Torque/clamp force testing",
+            authors="ISO/TC 2",
+            year="2005 (+A1:2012)",
+            published="ISO 16047:2005",
+            covers="Model friction.iso16047: from a test series of tightening torque T, thread "
+            "torque T_th and clamp force F, the torque coefficient K = T/(F d), the thread "
+            "friction mu_th = (T_th/F - P/(2 pi))/(d2/(2 cos 30 deg)), the bearing friction "
+            "mu_b = (T - T_th)/(F D_b/2) with D_b = (d_o + d_i)/2, and the total friction "
+            "mu_tot = (T/F - P/(2 pi))/(d2/(2 cos 30 deg) + D_b/2), with the series' "
+            "statistics.",
+            reconstruction="Paywalled; not read, and no public copy printing its formulas was "
+            "found. The relations are the thread-torque and bearing-torque relations the "
+            "standard evaluates (the same form as VDI 2230-1 R13, whose 0.16 P and 0.58 d2 are "
+            "1/(2 pi) = 0.159 and 1/(2 cos 30 deg) = 0.577 rounded), solved for each "
+            "coefficient; the engine uses the exact constants. DIN 946, the standard ISO 16047 "
+            "replaced, is quoted with the same variables (P, d2, D_Km = (d_w + d_h)/2) by "
+            "genfast.com's friction calculator. tests/validation/test_iso16047_derivation.py "
+            "checks the evaluation against torques built from chosen coefficients with the "
+            "exact helix relation.",
+        ),
+        Source(
             id="Saltelli2010",
             kind="paper",
             title="Variance based sensitivity analysis of model output. Design and estimator "
@@ -690,6 +751,9 @@ _PATTERNS: tuple[tuple[re.Pattern[str], str | None], ...] = (
     (re.compile(r"\bCarvill\b"), "Carvill"),
     (re.compile(r"\bECSS-E-HB-32-23A\b"), "ECSS-E-HB-32-23A"),
     (re.compile(r"\bmisams/BAT\b"), "BAT"),
+    (re.compile(r"\bVDI/VDE 2645\b"), "VDI-VDE2645"),
+    (re.compile(r"\bDanikor\b"), "Danikor"),
+    (re.compile(r"\bISO 16047\b"), "ISO16047"),
 )
 
 

@@ -17,16 +17,19 @@ import math
 import threading
 import time
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
 from .equations import equations_of, equations_of_steps
 from .errors import BudgetExceeded, Cancelled, InputOutOfRange
 from .sources import SOURCES, cited_ids
 
-ParamKind = Literal["float", "int", "choice", "bool", "text"]
+ParamKind = Literal["float", "int", "choice", "bool", "text", "samples"]
 #: Longest value a ``text`` input accepts (a designation such as "M10x1.25 ISO 4762 12.9").
 MAX_TEXT_LENGTH = 64
+#: Fewest and most values a ``samples`` input accepts unless its declaration says otherwise.
+MIN_SAMPLES = 2
+MAX_SAMPLES = 10_000
 OutputKind = Literal["float", "int", "bool", "str"]
 Value = float | int | bool | str | None
 
@@ -42,6 +45,21 @@ class Param:
     A ``text`` param takes a free string of at most :data:`MAX_TEXT_LENGTH`
     characters (a fastener designation); its ``choices`` are suggestions, not
     a limit, and the model parses the text (InputOutOfRange naming the field).
+    A ``samples`` param takes a list of ``min_length``…``max_length`` finite
+    numbers in its one ``unit`` (measured torques), each within ``minimum`` and
+    ``maximum``; it is checked into a tuple of floats, and a refusal names the
+    index of the first bad value. It is not numeric: sweeps and studies refuse it.
+
+    >>> p = Param("torques", "N*m", "measured torques", kind="samples", minimum=0.0)
+    >>> p.check([10, 10.5, 9.75])
+    (10.0, 10.5, 9.75)
+    >>> p.range_text()
+    'a list of 2 to 10000 finite numbers ≥ 0 N*m'
+    >>> try:
+    ...     p.check([10.0, -1.0])
+    ... except InputOutOfRange as exc:
+    ...     print(exc.message)
+    torques[1] = -1 N*m is not allowed: must be a list of 2 to 10000 finite numbers ≥ 0 N*m
     """
 
     name: str
@@ -62,10 +80,19 @@ class Param:
     group: str | None = None
     #: Readable names of ``choices``, in the same order (optional; the form shows them).
     choice_labels: tuple[str, ...] = ()
+    #: For a ``samples`` param: the fewest and the most values it takes.
+    min_length: int = MIN_SAMPLES
+    max_length: int = MAX_SAMPLES
 
     @property
     def is_numeric(self) -> bool:
+        """A single number (``float`` or ``int``): what a sweep or a study may vary."""
         return self.kind in ("float", "int")
+
+    @property
+    def has_unit(self) -> bool:
+        """Whether values of this param carry its unit (a number or a list of numbers)."""
+        return self.kind in ("float", "int", "samples")
 
     def range_text(self) -> str:
         """The allowed range in words, e.g. ``> 0 m and ≤ 1 m``."""
@@ -79,31 +106,25 @@ class Param:
         if self.kind == "bool":
             return "true or false"
         unit = "" if self.unit == "1" else f" {self.unit}"
-        parts = []
+        parts: list[str] = []
         if self.minimum is not None:
             parts.append(f"{'>' if self.exclusive_minimum else '≥'} {self.minimum:g}{unit}")
         if self.maximum is not None:
             parts.append(f"{'<' if self.exclusive_maximum else '≤'} {self.maximum:g}{unit}")
-        what = "an integer" if self.kind == "int" else "a finite number"
+        what = {
+            "int": "an integer",
+            "samples": f"a list of {self.min_length} to {self.max_length} finite numbers",
+        }.get(self.kind, "a finite number")
         return what + (" " + " and ".join(parts) if parts else "")
 
     def check(self, value: Any) -> Any:
         """Return ``value`` converted to this param's kind, or raise InputOutOfRange."""
-        if self.kind == "choice":
-            if value not in self.choices:
-                raise self._error(value)
-            return value
-        if self.kind == "bool":
-            if not isinstance(value, bool):
-                raise self._error(value)
-            return value
-        if self.kind == "text":
-            if not isinstance(value, str) or not value.strip() or len(value) > MAX_TEXT_LENGTH:
-                raise self._error(value)
-            return value.strip()
+        kind = self.kind
+        if kind != "float" and kind != "int":  # numbers first: most inputs are (issue 21)
+            return self._check_other(value)
         if isinstance(value, bool) or not isinstance(value, int | float):
             raise self._error(value)
-        if self.kind == "int":
+        if kind == "int":
             if isinstance(value, float):
                 if not value.is_integer():
                     raise self._error(value)
@@ -124,6 +145,44 @@ class Param:
             raise self._error(value)
         return value
 
+    def _check_other(self, value: Any) -> Any:
+        """:meth:`check` for a choice, a flag, a text or a list of samples."""
+        if self.kind == "choice":
+            if value not in self.choices:
+                raise self._error(value)
+            return value
+        if self.kind == "bool":
+            if not isinstance(value, bool):
+                raise self._error(value)
+            return value
+        if self.kind == "text":
+            if not isinstance(value, str) or not value.strip() or len(value) > MAX_TEXT_LENGTH:
+                raise self._error(value)
+            return value.strip()
+        return self._check_samples(value)
+
+    def _check_samples(self, value: Any) -> tuple[float, ...]:
+        """A list of numbers checked value by value; the refusal names the first bad index."""
+        if isinstance(value, str | bytes) or not isinstance(value, list | tuple):
+            raise self._error(value)
+        n = len(value)
+        if not self.min_length <= n <= self.max_length:
+            raise InputOutOfRange(
+                f"{self.name} has {n} value{'' if n == 1 else 's'}: must be {self.range_text()}",
+                field=self.name,
+                min_length=self.min_length,
+                max_length=self.max_length,
+                unit=self.unit,
+            )
+        one = replace(self, kind="float")  # each value is checked as a number of this range
+        checked = []
+        for i, item in enumerate(value):
+            try:
+                checked.append(one.check(item))
+            except InputOutOfRange as exc:
+                raise self._error(item, index=i) from exc
+        return tuple(checked)
+
     def advice(self, value: Any) -> list[str]:
         """A warning if a checked ``value`` lies outside the source's recommended range."""
         if not (self.recommended and self.is_numeric):
@@ -137,14 +196,23 @@ class Param:
             f"recommends ({lo:g}…{hi:g}{unit})"
         ]
 
-    def _error(self, value: Any) -> InputOutOfRange:
+    def _error(self, value: Any, index: int | None = None) -> InputOutOfRange:
         shown = f"{value:g}" if isinstance(value, float) else repr(value)
         if isinstance(value, int) and len(shown) > 20:
             shown = f"an integer of {len(shown)} digits"
-        unit = "" if self.unit == "1" or not self.is_numeric else f" {self.unit}"
+        listed = self.kind == "samples" and not isinstance(value, int | float)
+        if listed and index is None:  # the whole value refused (not a list): say what it was
+            kind = "a list" if isinstance(value, list | tuple) else type(value).__name__
+            shown = f"{kind} of {len(value)} values" if kind == "a list" else f"a {kind}"
+        elif listed and len(shown) > 40:  # one value of the list, not a number
+            shown = shown[:37] + "..."
+        unit = "" if self.unit == "1" or not self.has_unit or listed else f" {self.unit}"
+        where = self.name if index is None else f"{self.name}[{index}]"
+        extra = {} if index is None else {"index": index}
         return InputOutOfRange(
-            f"{self.name} = {shown}{unit} is not allowed: must be {self.range_text()}",
+            f"{where} = {shown}{unit} is not allowed: must be {self.range_text()}",
             field=self.name,
+            **extra,
             minimum=self.minimum,
             maximum=self.maximum,
             exclusive_minimum=self.exclusive_minimum,
@@ -173,6 +241,11 @@ class Param:
             "range": self.range_text(),
             "group": self.group,
             "description": self.description,
+            **(
+                {"min_length": self.min_length, "max_length": self.max_length}
+                if self.kind == "samples"
+                else {}
+            ),
         }
 
 

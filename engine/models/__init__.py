@@ -14,7 +14,9 @@ from __future__ import annotations
 
 from ..core.spec import ModelSpec
 from .blow import BLOW
+from .capability import CAPABILITY as TOOL_CAPABILITY
 from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
+from .friction import ISO16047 as FRICTION_ISO16047
 from .joint import VDI2230 as JOINT_VDI2230
 from .nutrunner import NUTRUNNER_DRIVE
 from .preload import CONTROL as PRELOAD_CONTROL
@@ -30,6 +32,8 @@ MODELS: tuple[ModelSpec, ...] = (
     PRELOAD_CONTROL,
     JOINT_VDI2230,
     BLOW,
+    TOOL_CAPABILITY,
+    FRICTION_ISO16047,
 )
 
 

@@ -76,6 +76,21 @@ KNOWN_STEPS = {
         "rotating_inertia",
         "energy_blow",
     ),
+    "tool.capability": (
+        "sample_mean",
+        "sample_standard_deviation",
+        "capability_index",
+        "critical_capability_index",
+    ),
+    # ISO 16047: the bearing lever, then K, μ_th, μ_b, μ_tot per test, then the statistics
+    "friction.iso16047": (
+        "mean_bearing_diameter",
+        "torque_coefficient",
+        "thread_friction_from_test",
+        "bearing_friction_from_test",
+        "total_friction_from_test",
+        "sample_mean",
+    ),
 }
 
 

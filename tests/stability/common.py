@@ -78,6 +78,9 @@ def param_values(param: Param, example: Any = None) -> st.SearchStrategy[Any]:
         return st.booleans()
     if param.kind in ("choice", "text"):  # a text input's choices are its suggestions
         return st.sampled_from(param.choices)
+    if param.kind == "samples":  # a list of values, each drawn as a number of the same range
+        one = param_values(dataclasses.replace(param, kind="float"))
+        return st.lists(one, min_size=param.min_length, max_size=min(param.max_length, 64))
     bounds = extremes(param, example)
     assert bounds is not None
     lo, hi = bounds
