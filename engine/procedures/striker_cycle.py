@@ -105,9 +105,15 @@ auxiliary :math:`c_2^+(\lambda_2 - y_{sh})` the shaft, return
   :math:`T = \tfrac12 m_1\dot y_h^2 + \tfrac12 m_3\dot y_s^2
   + \tfrac12 n m_p(\dot x^2 + \dot y_r^2)`;
   the half-coupling's stop at :math:`y_h = 0` is plastic (its generalised
-  impulse only). The return is over when the striker has come back the jaw
-  height (:math:`y_s = h_2 - h_3`, the paper's :math:`z_3 = h_3`), and the
-  balls can re-lock it when it is home (:math:`y_s = 0`).
+  impulse only). The faces can only push: where one would have to pull a roller, the
+  rollers become free bodies :math:`(x, y_r)` between the cones (:func:`_stage3_one_sided`:
+  four one-sided contacts, the stop, the jaws' bottom and the two faces, each leaving when
+  its reaction would pull and caught plastically when its gap closes). The return is
+  over when the striker has come back the jaw height (:math:`y_s = h_2 - h_3`, the
+  paper's :math:`z_3 = h_3`), and the balls can re-lock it when it is home
+  (:math:`y_s = 0`). The rollers have no stop but the faces in stage 3 (the hub below
+  them is not drawn), and a catch of a roller on a face is plastic: [002] gives no
+  restitution, and its other catches are plastic too.
 * **Stage 4** [002, eq. 4]: the shaft goes back :math:`h_1` against Coulomb
   friction :math:`f\,c_3\lambda_3` (the paper's force) that opposes its motion;
   it re-locks at :math:`y_{sh} = 0` or stops short and sticks (it cannot get
@@ -1052,13 +1058,12 @@ def _gfun(mode, kind, p, w, q0, q1, v0, v1):  # type: ignore[no-untyped-def]
         return v0
     if kind == 2:
         return v1
-    if kind == 4 or kind == 5:
+    if kind == 4:
         # the smaller of the two faces' contact forces on a roller, per roller mass (stage 3,
         # ω = 0): m_p·(ẍ, ÿ_r − g) = N_A·n_A + N_B·n_B with the normals into the roller,
         # n_B = (−sin α, cos α) (the half-coupling's cone) and n_A = (−sin α, −cos α) (the
         # striker's cone, symmetric V) or (0, −1) (its flat face, single cone). A face can
-        # only push: kind 4 is negative where one would have to pull, kind 5 where it would
-        # have to pull with more than the roller's weight
+        # only push: negative where one would have to pull (the one-sided stage 3 takes over)
         _, a0, a1 = _rhs_c(mode, p, w, q0, q1, v0, v1)
         xdd = p[13] * (a1 - a0)
         ydd = p[14] * a0 + p[15] * a1 - p[6]
@@ -1070,7 +1075,7 @@ def _gfun(mode, kind, p, w, q0, q1, v0, v1):  # type: ignore[no-untyped-def]
         else:
             total, diff = -xdd / sin_a, ydd / cos_a  # N_A + N_B, N_B − N_A
             na, nb = 0.5 * (total - diff), 0.5 * (total + diff)
-        return min(na, nb) + (abs(p[6]) if kind == 5 else 0.0)
+        return min(na, nb)
     # kind 3: what presses the half-coupling onto its stop in mode 4 (negative: it leaves)
     nm = p[11] * p[10]
     k2 = p[13] * p[13]
@@ -1219,6 +1224,260 @@ _advance_c = jit(_advance, error_model="numpy")
 
 
 # ---------------------------------------------------------------------------
+# Stage 3 with one-sided contacts: the rollers as free bodies between the cones
+# ---------------------------------------------------------------------------
+
+# parameter vector of the one-sided stage 3 (:func:`_contact_params`)
+(U_M1, U_M3, U_NM, U_C1, U_L1, U_C3, U_L3, U_G, U_TA, U_TB, U_H2, U_NPAR) = range(12)  # fmt: skip
+#: The one-sided stage 3's constraints, in this order (the ``active`` flags of the kernel):
+#: the half-coupling's stop, the jaws' bottom, face B (the half-coupling's cone), face A
+#: (the striker's face).
+CONTACTS = ("stop", "bottom", "face B", "face A")
+#: The mode the recorder files the one-sided stage 3 under (its ω slot carries x - x0).
+S3U = 8
+
+
+def _jacobian(p, i, j):  # type: ignore[no-untyped-def]
+    r"""Row ``i`` of the constraint Jacobian, column ``j`` (q = y_h, y_s, x - x_0, y_r).
+
+    .. math::
+        g_H = -y_h,\ g_J = h_2 - y_s,\ g_B = y_r - y_h - t_B(x - x_0),\
+        g_A = y_s - y_r - t_A(x - x_0),\qquad g \ge 0
+    """
+    if i == 0:
+        return -1.0 if j == 0 else 0.0
+    if i == 1:
+        return -1.0 if j == 1 else 0.0
+    if i == 2:
+        if j == 0:
+            return -1.0
+        if j == 2:
+            return -p[9]
+        return 1.0 if j == 3 else 0.0
+    if j == 1:
+        return 1.0
+    if j == 2:
+        return -p[8]
+    return -1.0 if j == 3 else 0.0
+
+
+_jacobian_c = jit(_jacobian, error_model="numpy")
+
+
+def _contact_accel(p, active, q, acc, lam):  # type: ignore[no-untyped-def]
+    r"""Accelerations ``acc`` and reactions ``lam`` (0 where inactive) of the one-sided stage 3.
+
+    .. math::
+        M\ddot q = Q + J_S^T\lambda_S,\qquad J_S M^{-1}J_S^T\lambda_S = -J_S M^{-1}Q
+
+    :math:`M = \mathrm{diag}(m_1, m_3, n m_p, n m_p)`,
+    :math:`Q = (c_1^+(\lambda_1 - y_h) + m_1g,\ -c_3^+(\lambda_3 + y_s) + m_3g,\ 0,\ n m_p g)`,
+    S the active constraints (the constraints are linear, so :math:`J\ddot q = 0`).
+    """
+    qf = np.empty(4)
+    minv = np.empty(4)
+    qf[0] = _sp_c(p[3], p[4] - q[0]) + p[0] * p[7]
+    qf[1] = -_sp_c(p[5], p[6] + q[1]) + p[1] * p[7]
+    qf[2] = 0.0
+    qf[3] = p[2] * p[7]
+    minv[0] = 1.0 / p[0]
+    minv[1] = 1.0 / p[1]
+    minv[2] = 1.0 / p[2]
+    minv[3] = 1.0 / p[2]
+    idx = np.empty(4, dtype=np.int64)
+    k = 0
+    for i in range(4):
+        lam[i] = 0.0
+        if active[i]:
+            idx[k] = i
+            k += 1
+    a = np.zeros((4, 5))
+    for r in range(k):
+        for c in range(k):
+            s = 0.0
+            for j in range(4):
+                s += _jacobian_c(p, idx[r], j) * minv[j] * _jacobian_c(p, idx[c], j)
+            a[r, c] = s
+        s = 0.0
+        for j in range(4):
+            s -= _jacobian_c(p, idx[r], j) * minv[j] * qf[j]
+        a[r, 4] = s
+    for c in range(k):  # Gaussian elimination with partial pivoting, k <= 4
+        piv = c
+        for r in range(c + 1, k):
+            if abs(a[r, c]) > abs(a[piv, c]):
+                piv = r
+        if piv != c:
+            for j in range(5):
+                tmp = a[c, j]
+                a[c, j] = a[piv, j]
+                a[piv, j] = tmp
+        for r in range(c + 1, k):
+            f = a[r, c] / a[c, c]
+            for j in range(c, 5):
+                a[r, j] -= f * a[c, j]
+    sol = np.zeros(4)
+    for r in range(k - 1, -1, -1):
+        s = a[r, 4]
+        for c in range(r + 1, k):
+            s -= a[r, c] * sol[c]
+        sol[r] = s / a[r, r]
+    for r in range(k):
+        lam[idx[r]] = sol[r]
+    for j in range(4):
+        s = qf[j]
+        for r in range(k):
+            s += _jacobian_c(p, idx[r], j) * sol[r]
+        acc[j] = minv[j] * s
+
+
+_contact_accel_c = jit(_contact_accel, error_model="numpy")
+
+
+def _contact_rk4(p, active, q, v, h, qn, vn):  # type: ignore[no-untyped-def]
+    """One RK4 step of the one-sided stage 3 from (q, v) into (qn, vn)."""
+    lam = np.empty(4)
+    k1 = np.empty(4)
+    k2 = np.empty(4)
+    k3 = np.empty(4)
+    k4 = np.empty(4)
+    tmp = np.empty(4)
+    hh = 0.5 * h
+    _contact_accel_c(p, active, q, k1, lam)
+    for j in range(4):
+        tmp[j] = q[j] + hh * v[j]
+    _contact_accel_c(p, active, tmp, k2, lam)
+    for j in range(4):
+        tmp[j] = q[j] + hh * v[j] + hh * hh * k1[j]
+    _contact_accel_c(p, active, tmp, k3, lam)
+    for j in range(4):
+        tmp[j] = q[j] + h * v[j] + h * hh * k2[j]
+    _contact_accel_c(p, active, tmp, k4, lam)
+    h6 = h / 6.0
+    for j in range(4):
+        qn[j] = q[j] + h * v[j] + h * h6 * (k1[j] + k2[j] + k3[j])
+        vn[j] = v[j] + h6 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j])
+
+
+_contact_rk4_c = jit(_contact_rk4, error_model="numpy")
+
+
+def _contact_advance(  # type: ignore[no-untyped-def]
+    p, active, t, q, v, h, n_max, t_end, ekind, ecoef, elvl, edir, stride, rt, rx, rq0, rq1,
+    n_rec,
+):  # fmt: skip
+    """Integrate the one-sided stage 3 until its first event, ``t_end`` or ``n_max`` steps.
+
+    Events: ``ekind`` 0 = the level ``elvl`` of ecoef·q crossed in the direction ``edir``
+    (cubic Hermite, as :func:`_advance`); ``ekind`` 1 = the reaction of the active
+    constraint ``int(elvl)`` changes sign in ``edir`` (bisection on RK4 sub-steps).
+    ``q`` and ``v`` are updated in place. Returns (status, event, t, steps, n_rec);
+    status 1 = event, 2 = t_end, 0 = n_max steps used.
+    """
+    n_ev = ekind.shape[0]
+    cap = rt.shape[0]
+    qn = np.empty(4)
+    vn = np.empty(4)
+    qs = np.empty(4)
+    vs = np.empty(4)
+    acc = np.empty(4)
+    lam = np.empty(4)
+    for i in range(n_max):
+        hh = h
+        if t + hh > t_end:
+            hh = t_end - t
+            if hh <= 0.0:
+                return 2, -1, t, i, n_rec
+        _contact_rk4_c(p, active, q, v, hh, qn, vn)
+        best = 2.0
+        which = -1
+        for e in range(n_ev):
+            d = edir[e]
+            s = -1.0
+            if ekind[e] == 0:
+                za = 0.0
+                va = 0.0
+                zb = 0.0
+                vb = 0.0
+                for j in range(4):
+                    za += ecoef[e, j] * q[j]
+                    va += ecoef[e, j] * v[j]
+                    zb += ecoef[e, j] * qn[j]
+                    vb += ecoef[e, j] * vn[j]
+                za = d * (za - elvl[e])
+                zb = d * (zb - elvl[e])
+                va *= d
+                vb *= d
+                if za > 0.0 or (za == 0.0 and va >= 0.0):
+                    continue  # past the level, or leaving it onwards: not a new crossing
+                s = first_rise_c(za, va, zb, vb, hh)
+            else:
+                c = int(elvl[e])
+                _contact_accel_c(p, active, q, acc, lam)
+                ga = d * lam[c]
+                _contact_accel_c(p, active, qn, acc, lam)
+                gb = d * lam[c]
+                if ga < 0.0 and gb >= 0.0:
+                    lo = 0.0
+                    hi = 1.0
+                    for _ in range(50):
+                        mid = 0.5 * (lo + hi)
+                        _contact_rk4_c(p, active, q, v, mid * hh, qs, vs)
+                        _contact_accel_c(p, active, qs, acc, lam)
+                        if d * lam[c] >= 0.0:
+                            hi = mid
+                        else:
+                            lo = mid
+                    s = hi
+            if s >= 0.0 and s < best:
+                best = s
+                which = e
+        if which >= 0:
+            s = best
+            if ekind[which] == 0:
+                for _ in range(3):  # Newton on a real RK4 sub-step
+                    _contact_rk4_c(p, active, q, v, s * hh, qs, vs)
+                    zs = -elvl[which]
+                    rate = 0.0
+                    for j in range(4):
+                        zs += ecoef[which, j] * qs[j]
+                        rate += ecoef[which, j] * vs[j]
+                    if rate == 0.0:
+                        break
+                    ds = zs / (rate * hh)
+                    if abs(ds) > 0.05 or s - ds < 0.0 or s - ds > 1.0:
+                        break
+                    s -= ds
+                    if abs(ds) < 1e-15:
+                        break
+            _contact_rk4_c(p, active, q, v, s * hh, qs, vs)
+            for j in range(4):
+                q[j] = qs[j]
+                v[j] = vs[j]
+            if n_rec < cap:
+                rt[n_rec] = t + s * hh
+                rx[n_rec] = q[2]
+                rq0[n_rec] = q[0]
+                rq1[n_rec] = q[1]
+                n_rec += 1
+            return 1, which, t + s * hh, i + 1, n_rec
+        t = t + hh
+        for j in range(4):
+            q[j] = qn[j]
+            v[j] = vn[j]
+        if stride > 0 and i % stride == 0 and n_rec < cap:
+            rt[n_rec] = t
+            rx[n_rec] = q[2]
+            rq0[n_rec] = q[0]
+            rq1[n_rec] = q[1]
+            n_rec += 1
+    return 0, -1, t, n_max, n_rec
+
+
+_contact_advance_c = jit(_contact_advance, error_model="numpy")
+
+
+# ---------------------------------------------------------------------------
 # The driver
 # ---------------------------------------------------------------------------
 
@@ -1353,6 +1612,242 @@ class _Run:
             raise SolverFailed("the cycle integration diverged", field="fidelity")
         self.rec.add(mode, bufs, n_rec)
         return int(status), int(which), (t, w, q0, q1, v0, v1)
+
+    def go_contact(
+        self,
+        p: np.ndarray,
+        active: np.ndarray,
+        t: float,
+        q: np.ndarray,
+        v: np.ndarray,
+        h: float,
+        t_end: float,
+        rows: list[tuple[int, tuple[float, ...], float, float]],
+    ) -> tuple[int, int, float]:
+        """Run the one-sided stage 3 (:func:`_contact_advance`) from (t, q, v) to its first
+        event; ``q`` and ``v`` are updated in place. Returns (status, event, t)."""
+        expected = (t_end - t) / h
+        if self.steps + expected > self.max_steps:
+            raise BudgetExceeded(
+                f"the cycle simulation would take about {self.steps + expected:.2g} RK4 steps "
+                f"in stage 3 (budget {self.max_steps:.2g}); use fidelity 'closed_form'",
+                field="fidelity",
+                expected_steps=self.steps + expected,
+                step_budget=self.max_steps,
+            )
+        ekind = np.array([r[0] for r in rows], dtype=np.int64)
+        ecoef = np.array([r[1] for r in rows], dtype=float).reshape(-1, 4)
+        elvl = np.array([r[2] for r in rows], dtype=float)
+        edir = np.array([r[3] for r in rows], dtype=float)
+        stride = max(1, int(expected / _SERIES_POINTS * 4)) if self.rec.on else 0
+        bufs = self.rec.buffers()
+        n_rec = 0
+        while True:
+            if self.deadline is not None and time.perf_counter() > self.deadline:
+                raise BudgetExceeded(
+                    f"the cycle simulation stopped at its time budget after {self.steps} steps",
+                    field="fidelity",
+                )
+            chunk = min(_CHUNK, self.max_steps - self.steps)
+            if chunk <= 0:
+                raise BudgetExceeded(
+                    f"the cycle simulation used its budget of {self.max_steps} steps; use "
+                    "fidelity 'closed_form'",
+                    field="fidelity",
+                )
+            status, which, t, used, n_rec = _contact_advance_c(
+                p, active, t, q, v, h, chunk, t_end, ekind, ecoef, elvl, edir, stride, *bufs,
+                n_rec,
+            )  # fmt: skip
+            self.steps += int(used)
+            if status != 0:
+                break
+        if not (math.isfinite(t) and np.all(np.isfinite(q)) and np.all(np.isfinite(v))):
+            raise SolverFailed("the cycle integration diverged in stage 3", field="fidelity")
+        self.rec.add(S3U, bufs, n_rec)
+        return int(status), int(which), float(t)
+
+
+def _contact_params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
+    r"""Parameters of the one-sided stage 3: masses, springs, gravity, the faces' slopes.
+
+    The faces' slopes from the geometry's kinematics: :math:`t_B = a_s/\kappa`,
+    :math:`t_A = a_h/\kappa` (so that both contacts give :math:`x - x_0 = \kappa(y_s - y_h)`
+    and :math:`y_r = a_h y_h + a_s y_s`): tan α on both faces for the symmetric V, tan α and
+    0 (the striker's flat face) for the single cone.
+    """
+    p = np.zeros(U_NPAR)
+    p[U_M1], p[U_M3] = x["half_coupling_mass"], x["striker_mass"]
+    p[U_NM] = x["roller_count"] * x["roller_mass"]
+    p[U_C1], p[U_L1] = x["power_spring_rate"], x["power_spring_preload"]
+    p[U_C3], p[U_L3] = x["return_spring_rate"], x["return_spring_preload"]
+    p[U_G], p[U_H2] = x["gravity"], x["engagement_height"]
+    p[U_TA], p[U_TB] = g.a_h / g.kappa, g.a_s / g.kappa
+    return p
+
+
+def _gaps(p: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """The four gaps :math:`g \\ge 0` of :data:`CONTACTS` at q = (y_h, y_s, x - x0, y_r) [m]."""
+    jac = np.array([[_jacobian(p, i, j) for j in range(4)] for i in range(4)])
+    return jac @ q + np.array([0.0, p[U_H2], 0.0, 0.0])
+
+
+def _contact_set(
+    p: np.ndarray, q: np.ndarray, v: np.ndarray, tol: float
+) -> tuple[np.ndarray, np.ndarray]:
+    """The active contacts and the velocities after a plastic catch, at a touching state.
+
+    The constraints whose gap is within ``tol`` of 0 are candidates. First the impulse
+    problem: the smallest set S of candidates whose impulses :math:`P_S \\ge 0` stop their
+    closing (:math:`J_S v^+ = 0`, :math:`v^+ = v + M^{-1}J_S^TP_S`) and leave every other
+    candidate opening or still; then, among the candidates that are neither opening nor
+    closing, the smallest set whose reactions push (:math:`\\lambda_S \\ge 0`) and leave
+    every other such candidate's gap accelerating open (:func:`_contact_accel`). Both are
+    complementarity problems of at most four constraints, solved by enumeration.
+    """
+    jac = np.array([[_jacobian(p, i, j) for j in range(4)] for i in range(4)])
+    minv = 1.0 / p[[U_M1, U_M3, U_NM, U_NM]]
+    touching = np.abs(_gaps(p, q)) <= tol
+    cand = [i for i in range(4) if touching[i]]
+    rate = jac @ v
+    vscale = max(float(np.max(np.abs(rate))), 1e-300)
+    v_new = v
+    for size in range(len(cand) + 1):
+        found = False
+        for subset in _subsets(cand, size):
+            s = list(subset)
+            if s:
+                js = jac[s]
+                imp = np.linalg.solve((js * minv) @ js.T, -js @ v)
+                if np.any(imp < 0.0):
+                    continue
+                trial = v + minv * (js.T @ imp)
+            else:
+                trial = v
+            if all((jac[i] @ trial) >= -1e-12 * vscale for i in cand if i not in s):
+                v_new, found = trial, True
+                break
+        if found:
+            break
+    rate = jac @ v_new
+    still = [i for i in cand if abs(rate[i]) <= 1e-9 * vscale]
+    acc, lam = np.empty(4), np.empty(4)
+    for size in range(len(still) + 1):
+        for subset in _subsets(still, size):
+            act = np.zeros(4, dtype=np.bool_)
+            act[list(subset)] = True
+            _contact_accel_c(p, act, q, acc, lam)
+            ascale = max(float(np.max(np.abs(acc))), 1e-300)
+            if np.all(lam >= 0.0) and all(
+                (jac[i] @ acc) >= -1e-12 * ascale for i in still if i not in subset
+            ):
+                return act, v_new
+    raise SolverFailed("stage 3: no consistent set of roller contacts", field="fidelity")
+
+
+def _subsets(items: list[int], size: int) -> list[tuple[int, ...]]:
+    from itertools import combinations
+
+    return list(combinations(items, size))
+
+
+#: Most contact changes the one-sided stage 3 follows (a roller that keeps leaving and
+#: touching a face faster than this is reported, not followed).
+_MAX_SWITCHES = 400
+
+
+def _stage3_one_sided(
+    run: _Run,
+    x: Mapping[str, Any],
+    g: Geometry,
+    state: tuple[float, float, float, float, float, float],
+    t_blow: float,
+    t_end: float,
+    clear: float,
+    steps_per_period: int,
+    t_ret: float,
+) -> tuple[float, float, list[str]]:
+    r"""Stage 3 from ``state`` with the rollers as free bodies between the cones.
+
+    Four coordinates :math:`q = (y_h, y_s, x - x_0, y_r)`, the n rollers moving as one
+    (mass :math:`n m_p`, point masses), and four one-sided constraints (:data:`CONTACTS`):
+    the half-coupling's stop :math:`y_h \le 0`, the jaws' bottom :math:`y_s \le h_2`, and the
+    two faces, :math:`g_B = y_r - y_h - t_B(x - x_0) \ge 0`,
+    :math:`g_A = y_s - y_r - t_A(x - x_0) \ge 0`. A face that would have to pull lets the
+    rollers go (its reaction's sign change is the event); a gap that closes is a plastic
+    catch (no rebound: the same assumption as the seed's other catches, [002] gives no
+    restitution for the rollers) whose impulses are found with the contacts that stay
+    (:func:`_contact_set`). While both faces hold, this is the two-degree-of-freedom
+    stage 3 of the module notes. Returns (return time, home time, notes) from the blow.
+    """
+    p = _contact_params(x, g)
+    t, _, yh, ys, vh, vs = state
+    kap = float(g.kappa)
+    q = np.array([yh, ys, kap * (ys - yh), g.a_h * yh + g.a_s * ys])
+    v = np.array([vh, vs, kap * (vs - vh), g.a_h * vh + g.a_s * vs])
+    scale = _x_scale(run.p)
+    tol = 1e-12 * scale
+    active, v = _contact_set(p, q, v, tol)
+    m1, m3 = x["half_coupling_mass"], x["striker_mass"]
+    w_free = math.sqrt(max(x["power_spring_rate"] / m1, x["return_spring_rate"] / m3))
+    m11, m12, m22 = _stage3_matrices(x, g)
+    det = float(m11 * m22 - m12 * m12)
+    w_both = math.sqrt(max(x["power_spring_rate"], x["return_spring_rate"]) / (det / max(m11, m22)))
+    h = 2.0 * math.pi / (steps_per_period * max(w_free, w_both))
+    jac = np.array([[_jacobian(p, i, j) for j in range(4)] for i in range(4)])
+    const = np.array([0.0, p[U_H2], 0.0, 0.0])
+    t_home = math.inf
+    left: dict[int, float] = {}
+    free_both = 0
+    for _ in range(_MAX_SWITCHES):
+        for i in (2, 3):
+            if not active[i] and i not in left:
+                left[i] = t - t_blow
+        rows: list[tuple[int, tuple[float, ...], float, float]] = []
+        labels: list[tuple[str, int]] = []
+        if math.isinf(t_ret) and clear > 0.0:
+            rows.append((0, (0.0, 1.0, 0.0, 0.0), clear, -1.0))
+            labels.append(("clear", -1))
+        rows.append((0, (0.0, 1.0, 0.0, 0.0), 0.0, -1.0))
+        labels.append(("home", -1))
+        for i in range(4):
+            if active[i]:  # its reaction turns to a pull: it lets go
+                rows.append((1, (0.0, 0.0, 0.0, 0.0), float(i), -1.0))
+                labels.append(("leave", i))
+            else:  # its gap closes (a hair of overlap, so a gap at 0 now is not yet a catch)
+                rows.append((0, tuple(jac[i]), -const[i] - tol, -1.0))
+                labels.append(("touch", i))
+        status, which, t = run.go_contact(p, active, t, q, v, h, t_end, rows)
+        if status != 1:
+            break
+        label, _i = labels[which]
+        if label == "home":
+            t_home = t - t_blow
+            if math.isinf(t_ret):
+                t_ret = t_home
+            break
+        if label == "clear":
+            t_ret = t - t_blow
+            continue
+        active, v = _contact_set(p, q, v, 2.0 * tol)
+        if not active[2] and not active[3]:
+            free_both += 1
+    else:
+        raise SolverFailed(
+            f"stage 3: the rollers changed contact more than {_MAX_SWITCHES} times before the "
+            "striker came home; report this design",
+            field="fidelity",
+        )
+    notes = []
+    if left:
+        first = min(left, key=left.__getitem__)
+        notes.append(
+            f"stage 3: {left[first] * 1e3:.3g} ms after the blow {CONTACTS[first]} would have "
+            "to pull the rollers; it lets them go and the return is followed with one-sided "
+            "contacts (the rollers free between the cones, a plastic catch where a gap closes)"
+            + (f"; they flew free of both faces {free_both} time(s)" if free_both else "")
+        )
+    return t_ret, t_home, notes
 
 
 def simulate_cycle(
@@ -1563,13 +2058,15 @@ def simulate_cycle(
         mode, state = S3, (t_blow, 0.0, y_h0, h2, 0.0, 0.0)
     t_ret = math.inf
     t_home = math.inf
-    # times after the blow where a face would have to pull a roller (kind 4) and pull with
-    # more than its weight (kind 5): the contact as an equality, a unilateral one flies free
-    pulls: dict[int, float] = {}
-    for _ in range(64 + 2):  # two more for the pull events, which change no motion
-        for kind in (4, 5):
-            if kind not in pulls and _gfun(mode, kind, run.p, *state[1:]) < 0.0:
-                pulls[kind] = state[0] - t_blow  # already at a mode's start
+    # while both faces press the rollers, the two-degree-of-freedom stage 3; where one would
+    # have to pull (kind 4), the one-sided stage 3 takes over (_stage3_one_sided)
+    for _ in range(64):
+        if _gfun(mode, 4, run.p, *state[1:]) < 0.0:  # already at a mode's start
+            t_ret, t_home, said = _stage3_one_sided(
+                run, x, g, state, t_blow, t3_end, clear, steps_per_period, t_ret
+            )
+            notes.extend(said)
+            break
         labels = ["home", "bottom"]
         rows: list[tuple[int, float, float, float, float]] = [
             (0, 0.0, 1.0, 0.0, -1.0),  # striker home: the balls can re-lock it
@@ -1578,10 +2075,8 @@ def simulate_cycle(
         if math.isinf(t_ret) and clear > 0.0:
             labels.append("clear")
             rows.append((0, 0.0, 1.0, clear, -1.0))  # clear of the jaws: return over
-        for kind in (4, 5):  # the first time only: the motion itself is not changed by it
-            if kind not in pulls:
-                labels.append(f"pull{kind}")
-                rows.append((kind, 0.0, 0.0, 0.0, -1.0))  # a face would have to pull
+        labels.append("pull")
+        rows.append((4, 0.0, 0.0, 0.0, -1.0))  # a face would have to pull a roller
         if mode == S3:
             labels.append("stop")
             rows.append((0, 1.0, 0.0, 0.0, 1.0))  # half-coupling onto its stop
@@ -1596,8 +2091,7 @@ def simulate_cycle(
             break
         label = labels[which]
         t_, w_, yh, ys, vh, vs = state
-        if label.startswith("pull"):
-            pulls[int(label[4])] = t_ - t_blow
+        if label == "pull":
             # a level crossed at the same instant (a spring leaving contact kinks the force)
             if ys <= 0.0:
                 label = "home"
@@ -1607,8 +2101,12 @@ def simulate_cycle(
                 label = "clear"
             elif mode == S3 and yh >= 0.0 and vh > 0.0:
                 label = "stop"
-            else:
-                continue
+        if label == "pull":  # a face lets the rollers go: one-sided contacts from here
+            t_ret, t_home, said = _stage3_one_sided(
+                run, x, g, state, t_blow, t3_end, clear, steps_per_period, t_ret
+            )
+            notes.extend(said)
+            break
         if label == "home":
             t_home = t_ - t_blow
             if math.isinf(t_ret):
@@ -1626,24 +2124,6 @@ def simulate_cycle(
             mode = S3
         else:
             break
-    where = (
-        f"h1 {h1 * 1e3:.4g} mm, h2 {h2 * 1e3:.4g} mm, c1 {c1:.4g} N/m, c3 {c3:.4g} N/m, "
-        f"α {math.degrees(x['cone_angle']):.3g}°"
-    )
-    if 5 in pulls:
-        warnings.append(
-            f"stage 3: {pulls[5] * 1e3:.3g} ms after the blow a cone would have to pull a roller "
-            f"with more than its weight ({where}): held on both cones as an equality the "
-            "rollers need a negative contact force; with a one-sided contact they would fly "
-            "free and the striker return on its own, which this model does not follow: the "
-            "return and home times are not reliable"
-        )
-    elif 4 in pulls:
-        notes.append(
-            f"stage 3: {pulls[4] * 1e3:.3g} ms after the blow a cone would have to pull a roller "
-            f"with less than its weight ({where}): the rollers settle on one face, the motion "
-            "is hardly changed"
-        )
     if math.isinf(t_home):
         warnings.append(
             "the return spring does not bring the striker home: the balls cannot re-lock it"
@@ -1704,7 +2184,7 @@ def _series(rec: _Recorder, x: Mapping[str, Any], g: Geometry, r: float) -> dict
             "stage",
         )
     }
-    stage_of = {S1: 1, S1P: 1, S2: 2, S2S: 2, S2F: 2, S3: 3, S3H: 3, S4: 4}
+    stage_of = {S1: 1, S1P: 1, S2: 2, S2S: 2, S2F: 2, S3: 3, S3H: 3, S3U: 3, S4: 4}
     for mode, t, w, q0, q1 in rec.parts:
         st = stage_of[mode]
         if st == 1:
@@ -1715,6 +2195,10 @@ def _series(rec: _Recorder, x: Mapping[str, Any], g: Geometry, r: float) -> dict
             lift, strk = np.maximum(h1 - q0, 0.0), q0
             shaft = np.where(q0 < 0.0, h1 - q0, h1)
             rad = np.full_like(q0, r)
+        elif mode == S3U:  # the one-sided stage 3 files the rollers' x - x0 under ω
+            lift, strk, shaft = -q0, q1, np.full_like(q0, h1)
+            rad = x0 + w
+            w = np.zeros_like(w)
         elif st == 3:
             lift = -q0 if mode == S3 else np.zeros_like(q0)
             strk = q1
