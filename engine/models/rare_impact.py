@@ -51,7 +51,8 @@ _SERIES = (
     "stage",
 )
 #: Which error group of the closed form each output belongs to (None: a formula of the
-#: paper, no model error of its own).
+#: paper, no model error of its own; a sum of stage times: the groups of its parts, the
+#: relative error of a sum being at most the largest of its parts').
 _GROUP = {
     "release_speed": "stage1",
     "spin_up_time": "stage1",
@@ -65,9 +66,9 @@ _GROUP = {
     "max_striker_travel": "engagement",
     "blow_time": "stage1",
     "return_time": "return",
-    "striker_home_time": "return",
+    "striker_home_time": ("stage1", "engagement", "return"),
     "relock_time": "relock",
-    "cycle_time": "return",
+    "cycle_time": ("stage1", "engagement", "return", "relock"),
 }
 _GEOMETRY_TEXT = {
     "symmetric_v": "symmetric V (both cones, x = x0 + z1/(2 tan α))",
@@ -176,10 +177,16 @@ def _closed_form_estimate(x: Mapping[str, Any]) -> Any:
     return float(worst) if math.isfinite(worst) else None
 
 
+def _groups(output: str) -> tuple[str, ...]:
+    """The closed form's error groups an output's estimate is the largest of (:data:`_GROUP`)."""
+    group = _GROUP[output]
+    return () if group is None else (group,) if isinstance(group, str) else group
+
+
 def _output_error(x: Mapping[str, Any], ctx: RunContext) -> float | None:
     """Estimated error of the outputs asked for (the closed form's groups)."""
     errs = _errors(x)
-    asked = [errs[g] for n, g in _GROUP.items() if g is not None and ctx.wants(n)]
+    asked = [errs[g] for n in _GROUP if ctx.wants(n) for g in _groups(n)]
     if not asked:
         return 0.0
     if not all(math.isfinite(e) for e in asked):

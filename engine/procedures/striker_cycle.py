@@ -905,12 +905,8 @@ def closed_form_cycle_array(x: Mapping[str, Any]) -> CycleOutcome:
         # held, M22·ÿs = -c3(λ3 + ys) + (m3 + n·mp·a_s)g from rest at h2
         h2, h3 = x["engagement_height"], x["jaw_height"]
         c3 = x["return_spring_rate"]
-        nm = x["roller_count"] * x["roller_mass"]
         _, _, m22 = _stage3_matrices(x, g)
-        q_s0 = (
-            -c3 * (x["return_spring_preload"] + h2)
-            + (x["striker_mass"] + nm * g.a_s) * x["gravity"]
-        )
+        q_s0 = _striker_force_at_blow(x, g)
         clear = h2 - pymin(h3, h2)
         blow = isfinite(t_eng)  # no blow, no later stage: one verdict for the whole cycle
         flies = blow & _rollers_fly_at_blow(x, g, q_s0)
@@ -947,6 +943,27 @@ def closed_form_cycle_array(x: Mapping[str, Any]) -> CycleOutcome:
             refusal=np.broadcast_to(refusal, n),
             flies=np.broadcast_to(flies, n) & ~refused,
         )
+
+
+def _striker_force_at_blow(x: Mapping[str, Any], g: Geometry) -> Any:
+    r"""The striker's generalised force in stage 3 at the blow, :math:`y_s = h_2` [N].
+
+    .. math::
+        Q_s = -c_3(\lambda_3 + h_2) + (m_3 + n m_p a_s)g
+
+    [002, eq. 3] with the rollers' weight on the striker's coordinate (:math:`a_s`: its
+    share of the rollers' axial motion). The reference design, symmetric V:
+    −52000·0.0061 + (0.4 + 0.15)·9.80665 = −317.2 + 5.3936575 = −311.8063425 N:
+
+    >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
+    >>> round(float(_striker_force_at_blow(R, geometry("symmetric_v", math.pi / 4))), 5)
+    -311.80634
+    """
+    nm = x["roller_count"] * x["roller_mass"]
+    return (
+        -x["return_spring_rate"] * (x["return_spring_preload"] + x["engagement_height"])
+        + (x["striker_mass"] + nm * g.a_s) * x["gravity"]
+    )
 
 
 def _rollers_fly_at_blow(x: Mapping[str, Any], g: Geometry, q_s: Any) -> Any:
@@ -2313,11 +2330,6 @@ SAFETY = 3.0
 #: 2 and 4 with the springs in contact, stage 3 when decoupled): the integrator's own
 #: error, measured ≤ 1e-8 over the test grid; never claimed as 0.
 EXACT_FLOOR = 1e-7
-#: Stage-3 coupling factor: the closed form drops the half-coupling's motion, whose
-#: effect on the return time grows with the inertia coupling M12²/(M11 M22) (0 for the
-#: symmetric V at 45°); measured between 0.18 and 1.83 times that over the test grid
-#: (1458 designs: three geometries, 20° to 70°, g of both signs), doubled.
-RETURN_COUPLING = 4.0
 
 
 def _quasi_static_error(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, Any, Any]:
@@ -2467,6 +2479,53 @@ def simulation_release_velocity_error(
     return bound / v if v > 0.0 else math.inf
 
 
+def _return_error(x: Mapping[str, Any], g: Geometry, outcome: CycleOutcome) -> Any:
+    r"""Bound on the closed form's relative error in the return and home times (stage 3).
+
+    .. math::
+        \delta = 3\,\frac{|M_{12}|}{M_{22}}\,|\min(h_2 - h_1, 0)|,\qquad
+        \frac{\Delta t_L}{t_L} \le \frac{\delta}{t_L\,\min_{|y - L| \le \delta}|\dot y_{cf}(y)|}
+
+    The closed form holds the half-coupling on its stop; it starts at
+    :math:`y_{h0} = \min(h_2 - h_1, 0)` and the power spring drives it there. With
+    :math:`\mu = M_{12}/M_{22}` the coordinate :math:`z = y_s + \mu y_h` obeys
+    :math:`M_{22}\ddot z = Q_s(y_s)` exactly (the stop's impulse acts on :math:`y_h` alone,
+    so :math:`M_{22}\dot y_s + M_{12}\dot y_h` passes it unchanged), so
+    :math:`u = z - \mu y_{h0}` follows the closed form's own equation
+    :math:`M_{22}\ddot u = -c_3(\lambda_3 + u) + W_s` plus the force
+    :math:`c_3\mu(y_h - y_{h0})`, which rises from 0 to at most :math:`c_3|\mu y_{h0}|` while
+    the half-coupling goes to its stop (taken monotone): an oscillator from rest under a
+    monotone force moves by at most twice its static deflection, :math:`2|\mu y_{h0}|`, and
+    :math:`y_s = u - \mu(y_h - y_{h0})` adds :math:`|\mu y_{h0}|`:
+    :math:`|y_s - y_{cf}| \le \delta`.
+    The time of a level L (the jaw clearance, home) then moves by at most δ over the closed
+    form's slowest speed within δ of L, from its energy
+    :math:`\dot y^2 = \omega^2[(h_2 - c)^2 - (y - c)^2]`, :math:`\omega^2 = c_3/M_{22}`,
+    c its centre; inf where that band holds a turning point (no bound); 0 where neither
+    trajectory can get there. Rollers that leave a face later in the return are not in it
+    (the rung's estimate is labelled typical for that, bench/accuracy_striker.py); at the
+    blow they are flagged (:func:`_rollers_fly_at_blow`). Numbers or arrays.
+    """
+    _, m12, m22 = _stage3_matrices(x, g)
+    h1, h2, h3 = x["release_travel"], x["engagement_height"], x["jaw_height"]
+    delta = 3.0 * abs(m12 / m22) * abs(pymin(h2 - h1, 0.0))
+    c3 = x["return_spring_rate"]
+    amp = -_striker_force_at_blow(x, g) / c3  # h2 - c
+    centre = h2 - amp
+    w2 = c3 / m22
+    clear = h2 - pymin(h3, h2)
+    worst: Any = 0.0
+    for level, t in ((clear, outcome.return_time), (0.0, outcome.home_time)):
+        far = pymax(abs(level - delta - centre), abs(level + delta - centre))
+        v2 = w2 * (amp * amp - far * far)
+        term = where(v2 > 0.0, delta / sqrt(where(v2 > 0.0, v2, 1.0)) / t, math.inf)
+        # never there in the closed form: nor in truth if its turning point is δ short of L
+        short = (centre - amp) - delta > level
+        term = where(isfinite(t), term, where(short, 0.0, math.inf))
+        worst = pymax(worst, where(delta > 0.0, term, 0.0))
+    return worst
+
+
 def closed_form_errors(x: Mapping[str, Any], outcome: CycleOutcome) -> dict[str, Any]:
     """Estimated relative error of each closed-form output group, one design or many.
 
@@ -2483,14 +2542,15 @@ def closed_form_errors(x: Mapping[str, Any], outcome: CycleOutcome) -> dict[str,
     Keys: ``stage1`` (release speed, spin-up time, window: the larger of
     :func:`quasi_static_error`'s two, at least :data:`EXACT_FLOOR`), ``engagement``
     (engagement time and margin, reach: stage 2 rerun with the release velocity
-    ± its error, plus the speed's error), ``return`` (:data:`RETURN_COUPLING` times the
-    stage-3 inertia coupling :math:`M_{12}^2/(M_{11}M_{22})`, at most 1), ``relock``
-    (:data:`EXACT_FLOOR`). NaN where no estimate can be made or the design is refused;
-    maxima follow Python's ``max`` (a NaN first argument stays NaN).
+    ± its error, plus the speed's error), ``return`` (return and home times: the
+    half-coupling's neglected way to its stop, :func:`_return_error`; NaN where it gives no
+    bound or the rollers fly at the blow), ``relock`` (:data:`EXACT_FLOOR`). NaN where no
+    estimate can be made or the design is refused; maxima follow Python's ``max`` (a NaN
+    first argument stays NaN).
 
     >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
     >>> e = closed_form_errors(R, closed_form_cycle(R))
-    >>> e["relock"], e["return"]  # symmetric V at 45°: M12 = n·mp(-1/4 + 1/4) = 0
+    >>> e["relock"], float(e["return"])  # symmetric V at 45°: M12 = n·mp(-1/4 + 1/4) = 0
     (1e-07, 1e-07)
     """
     with np.errstate(all="ignore"):
@@ -2504,8 +2564,8 @@ def closed_form_errors(x: Mapping[str, Any], outcome: CycleOutcome) -> dict[str,
             other, _ = _stage2(x, pymax(outcome.release_velocity + sign * dv, 0.0), g)
             worst = pymax(worst, where(isfinite(other), abs(other - base) / base, math.inf))
         engagement = where(outcome.blow, pymax(worst + dw, EXACT_FLOOR), pymax(dw, EXACT_FLOOR))
-        m11, m12, m22 = _stage3_matrices(x, g)
-        ret = pymin(pymax(RETURN_COUPLING * (m12 * m12 / (m11 * m22)), EXACT_FLOOR), 1.0)
+        ret = _return_error(x, g, outcome)
+        ret = where(isfinite(ret), pymax(ret, EXACT_FLOOR), math.nan)
         if any_true(outcome.flies):  # rollers that fly at the blow: no claim (the module notes)
             ret = where(outcome.flies, math.nan, ret)
         bad = fails | outcome.refused
