@@ -1780,69 +1780,68 @@ def _contact_params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
     return p
 
 
-def _gaps(p: np.ndarray, q: np.ndarray) -> np.ndarray:
+def _jacobian_matrix(p: np.ndarray) -> np.ndarray:
+    """The 4 x 4 constraint Jacobian of :data:`CONTACTS` (:func:`_jacobian`, row by row)."""
+    return np.array([[_jacobian(p, i, j) for j in range(4)] for i in range(4)])
+
+
+def _gaps(p: np.ndarray, q: np.ndarray, jac: np.ndarray) -> np.ndarray:
     """The four gaps :math:`g \\ge 0` of :data:`CONTACTS` at q = (y_h, y_s, x - x0, y_r) [m]."""
-    jac = np.array([[_jacobian(p, i, j) for j in range(4)] for i in range(4)])
     return jac @ q + np.array([0.0, p[U_H2], 0.0, 0.0])
 
 
 def _contact_set(
-    p: np.ndarray, q: np.ndarray, v: np.ndarray, tol: float
+    p: np.ndarray, q: np.ndarray, v: np.ndarray, tol: float, jac: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
     """The active contacts and the velocities after a plastic catch, at a touching state.
 
     The constraints whose gap is within ``tol`` of 0 are candidates. First the impulse
-    problem: the smallest set S of candidates whose impulses :math:`P_S \\ge 0` stop their
-    closing (:math:`J_S v^+ = 0`, :math:`v^+ = v + M^{-1}J_S^TP_S`) and leave every other
-    candidate opening or still; then, among the candidates that are neither opening nor
-    closing, the smallest set whose reactions push (:math:`\\lambda_S \\ge 0`) and leave
-    every other such candidate's gap accelerating open (:func:`_contact_accel`). Both are
-    complementarity problems of at most four constraints, solved by enumeration.
+    problem: a set S of candidates whose impulses :math:`P_S \\ge 0` stop their closing
+    (:math:`J_S v^+ = 0`, :math:`v^+ = v + M^{-1}J_S^TP_S`) and leave every other candidate
+    opening or still; then, among the candidates that are neither opening nor closing, a set
+    whose reactions push (:math:`\\lambda_S \\ge 0`) and leave every other such candidate's
+    gap accelerating open (:func:`_contact_accel`). Both are complementarity problems of at
+    most four constraints with a positive definite matrix (one solution), solved by
+    enumeration, the larger sets first.
     """
-    jac = np.array([[_jacobian(p, i, j) for j in range(4)] for i in range(4)])
     minv = 1.0 / p[[U_M1, U_M3, U_NM, U_NM]]
-    touching = np.abs(_gaps(p, q)) <= tol
+    touching = np.abs(_gaps(p, q, jac)) <= tol
     cand = [i for i in range(4) if touching[i]]
     rate = jac @ v
     vscale = max(float(np.max(np.abs(rate))), 1e-300)
     v_new = v
-    for size in range(len(cand) + 1):
-        found = False
-        for subset in _subsets(cand, size):
+    if any(rate[i] < -1e-12 * vscale for i in cand):  # a gap closing: a plastic catch
+        for subset in _subsets(cand):
             s = list(subset)
-            if s:
-                js = jac[s]
-                imp = np.linalg.solve((js * minv) @ js.T, -js @ v)
-                if np.any(imp < 0.0):
-                    continue
-                trial = v + minv * (js.T @ imp)
-            else:
-                trial = v
+            js = jac[s]
+            imp = np.linalg.solve((js * minv) @ js.T, -js @ v)
+            if np.any(imp < 0.0):
+                continue
+            trial = v + minv * (js.T @ imp)
             if all((jac[i] @ trial) >= -1e-12 * vscale for i in cand if i not in s):
-                v_new, found = trial, True
+                v_new = trial
                 break
-        if found:
-            break
-    rate = jac @ v_new
+        rate = jac @ v_new
     still = [i for i in cand if abs(rate[i]) <= 1e-9 * vscale]
     acc, lam = np.empty(4), np.empty(4)
-    for size in range(len(still) + 1):
-        for subset in _subsets(still, size):
-            act = np.zeros(4, dtype=np.bool_)
-            act[list(subset)] = True
-            _contact_accel_c(p, act, q, acc, lam, np.empty((6, 5)), np.empty(4, dtype=np.int64))
-            ascale = max(float(np.max(np.abs(acc))), 1e-300)
-            if np.all(lam >= 0.0) and all(
-                (jac[i] @ acc) >= -1e-12 * ascale for i in still if i not in subset
-            ):
-                return act, v_new
+    wk, idx = np.empty((6, 5)), np.empty(4, dtype=np.int64)
+    for subset in (*_subsets(still), ()):
+        act = np.zeros(4, dtype=np.bool_)
+        act[list(subset)] = True
+        _contact_accel_c(p, act, q, acc, lam, wk, idx)
+        ascale = max(float(np.max(np.abs(acc))), 1e-300)
+        if np.all(lam >= 0.0) and all(
+            (jac[i] @ acc) >= -1e-12 * ascale for i in still if i not in subset
+        ):
+            return act, v_new
     raise SolverFailed("stage 3: no consistent set of roller contacts", field="fidelity")
 
 
-def _subsets(items: list[int], size: int) -> list[tuple[int, ...]]:
+def _subsets(items: list[int]) -> list[tuple[int, ...]]:
+    """The non-empty subsets of ``items``, the larger first."""
     from itertools import combinations
 
-    return list(combinations(items, size))
+    return [c for size in range(len(items), 0, -1) for c in combinations(items, size)]
 
 
 #: Most contact changes the one-sided stage 3 follows (a roller that keeps leaving and
@@ -1881,14 +1880,14 @@ def _stage3_one_sided(
     v = np.array([vh, vs, kap * (vs - vh), g.a_h * vh + g.a_s * vs])
     scale = _x_scale(run.p)
     tol = 1e-12 * scale
-    active, v = _contact_set(p, q, v, tol)
+    jac = _jacobian_matrix(p)
+    active, v = _contact_set(p, q, v, tol, jac)
     m1, m3 = x["half_coupling_mass"], x["striker_mass"]
     w_free = math.sqrt(max(x["power_spring_rate"] / m1, x["return_spring_rate"] / m3))
     m11, m12, m22 = _stage3_matrices(x, g)
     det = float(m11 * m22 - m12 * m12)
     w_both = math.sqrt(max(x["power_spring_rate"], x["return_spring_rate"]) / (det / max(m11, m22)))
     h = 2.0 * math.pi / (steps_per_period * max(w_free, w_both))
-    jac = np.array([[_jacobian(p, i, j) for j in range(4)] for i in range(4)])
     const = np.array([0.0, p[U_H2], 0.0, 0.0])
     t_home = math.inf
     left: dict[int, float] = {}
@@ -1923,7 +1922,7 @@ def _stage3_one_sided(
         if label == "clear":
             t_ret = t - t_blow
             continue
-        active, v = _contact_set(p, q, v, 2.0 * tol)
+        active, v = _contact_set(p, q, v, 2.0 * tol, jac)
         if not active[2] and not active[3]:
             free_both += 1
     else:
