@@ -1571,13 +1571,22 @@ _contact_advance_c = jit(_contact_advance, error_model="numpy")
 
 
 def _ensure_compiled(p: np.ndarray) -> float:
-    """Load (or compile) the kernel now if it is not yet; returns the seconds it took."""
+    """Load (or compile) the kernels now if they are not yet; returns the seconds it took.
+
+    Both the cycle kernel and the one-sided stage 3's (a design finds out only in stage 3
+    whether it needs the latter, when its deadline is already running).
+    """
     if getattr(_advance_c, "signatures", None) != []:
         return 0.0
     start = time.perf_counter()
     buf = np.empty(1)
     _advance_c(S2, p, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-6, 0, 1.0,
                *_events((0, 1.0, 0.0, 1.0, 1.0)), False, 0, buf, buf, buf, buf, 0)  # fmt: skip
+    if getattr(_contact_advance_c, "signatures", None) == []:
+        z4 = np.zeros(4)
+        _contact_advance_c(np.ones(U_NPAR), np.zeros(4, dtype=np.bool_), 0.0, z4, z4.copy(),
+                           1e-6, 0, 1.0, np.zeros(1, dtype=np.int64), np.zeros((1, 4)),
+                           np.zeros(1), np.ones(1), 0, buf, buf, buf, buf, 0)  # fmt: skip
     return time.perf_counter() - start
 
 
@@ -2703,8 +2712,9 @@ def simulate_cycle_scipy(
 
     Notes
     -----
-    Terminal events at the same levels. ``max_step_fraction`` bounds the step to
-    that fraction of the mode's shortest period (None: scipy's own control,
+    Terminal events at the same levels; the one-sided stage 3 (rollers free between the
+    cones, :func:`_stage3_one_sided`) keeps the compiled RK4. ``max_step_fraction`` bounds
+    the step to that fraction of the mode's shortest period (None: scipy's own control,
     which can step over a grazing first crossing). Returns (outcome, RHS evaluations).
     """
     global _Run_impl
