@@ -105,9 +105,15 @@ auxiliary :math:`c_2^+(\lambda_2 - y_{sh})` the shaft, return
   :math:`T = \tfrac12 m_1\dot y_h^2 + \tfrac12 m_3\dot y_s^2
   + \tfrac12 n m_p(\dot x^2 + \dot y_r^2)`;
   the half-coupling's stop at :math:`y_h = 0` is plastic (its generalised
-  impulse only). The return is over when the striker has come back the jaw
-  height (:math:`y_s = h_2 - h_3`, the paper's :math:`z_3 = h_3`), and the
-  balls can re-lock it when it is home (:math:`y_s = 0`).
+  impulse only). The faces can only push: where one would have to pull a roller, the
+  rollers become free bodies :math:`(x, y_r)` between the cones (:func:`_stage3_one_sided`:
+  four one-sided contacts, the stop, the jaws' bottom and the two faces, each leaving when
+  its reaction would pull and caught plastically when its gap closes). The return is
+  over when the striker has come back the jaw height (:math:`y_s = h_2 - h_3`, the
+  paper's :math:`z_3 = h_3`), and the balls can re-lock it when it is home
+  (:math:`y_s = 0`). The rollers have no stop but the faces in stage 3 (the hub below
+  them is not drawn), and a catch of a roller on a face is plastic: [002] gives no
+  restitution, and its other catches are plastic too.
 * **Stage 4** [002, eq. 4]: the shaft goes back :math:`h_1` against Coulomb
   friction :math:`f\,c_3\lambda_3` (the paper's force) that opposes its motion;
   it re-locks at :math:`y_{sh} = 0` or stops short and sticks (it cannot get
@@ -160,6 +166,7 @@ __all__ = [
     "closed_form_cycle",
     "closed_form_cycle_array",
     "closed_form_errors",
+    "face_forces",
     "geometry",
     "liftoff_speed_of",
     "linear_reach",
@@ -170,6 +177,7 @@ __all__ = [
     "relock_friction",
     "simulate_cycle",
     "simulate_cycle_scipy",
+    "simulation_release_velocity_error",
     "snaps_at_liftoff",
     "stage1_effective_mass",
 ]
@@ -572,6 +580,9 @@ class CycleOutcome:
     steps: int = 0
     #: :data:`HELD`, :data:`NOT_HELD` or :data:`NEVER_FAST_ENOUGH` (per point on arrays)
     refusal: Any = HELD
+    #: The closed form: a face would have to pull the rollers at the blow, so its stage 3
+    #: (rollers held on both faces) does not describe the return (:func:`_rollers_fly_at_blow`)
+    flies: Any = False
 
     @property
     def refused(self) -> Any:
@@ -894,14 +905,11 @@ def closed_form_cycle_array(x: Mapping[str, Any]) -> CycleOutcome:
         # held, M22·ÿs = -c3(λ3 + ys) + (m3 + n·mp·a_s)g from rest at h2
         h2, h3 = x["engagement_height"], x["jaw_height"]
         c3 = x["return_spring_rate"]
-        nm = x["roller_count"] * x["roller_mass"]
         _, _, m22 = _stage3_matrices(x, g)
-        q_s0 = (
-            -c3 * (x["return_spring_preload"] + h2)
-            + (x["striker_mass"] + nm * g.a_s) * x["gravity"]
-        )
+        q_s0 = _striker_force_at_blow(x, g)
         clear = h2 - pymin(h3, h2)
         blow = isfinite(t_eng)  # no blow, no later stage: one verdict for the whole cycle
+        flies = blow & _rollers_fly_at_blow(x, g, q_s0)
         t_ret = where(blow, _reach(h2, 0.0, q_s0 / m22, c3 / m22, clear)[0], math.inf)
         t_home = where(blow, _reach(h2, 0.0, q_s0 / m22, c3 / m22, 0.0)[0], math.inf)
         # stage 4 [002, eq. 4]: the shaft back h1 against the friction f·c3·λ3
@@ -919,7 +927,7 @@ def closed_form_cycle_array(x: Mapping[str, Any]) -> CycleOutcome:
             zip(_NUMERIC, (w_m, t_spin, r, v_rel, t_eng, reach, t_ret, t_home, t_lock), strict=True)
         )
         if not is_array(*x.values()):
-            return CycleOutcome(**fields, snap=bool(snap), refusal=int(refusal))
+            return CycleOutcome(**fields, snap=bool(snap), refusal=int(refusal), flies=bool(flies))
         n = np.broadcast_shapes(*(np.shape(v) for v in x.values() if isinstance(v, np.ndarray)))
         refused = np.broadcast_to(refusal != HELD, n)
         any_refused = bool(refused.any())
@@ -933,7 +941,60 @@ def closed_form_cycle_array(x: Mapping[str, Any]) -> CycleOutcome:
             **columns,
             snap=np.broadcast_to(snap, n) & ~refused,
             refusal=np.broadcast_to(refusal, n),
+            flies=np.broadcast_to(flies, n) & ~refused,
         )
+
+
+def _striker_force_at_blow(x: Mapping[str, Any], g: Geometry) -> Any:
+    r"""The striker's generalised force in stage 3 at the blow, :math:`y_s = h_2` [N].
+
+    .. math::
+        Q_s = -c_3(\lambda_3 + h_2) + (m_3 + n m_p a_s)g
+
+    [002, eq. 3] with the rollers' weight on the striker's coordinate (:math:`a_s`: its
+    share of the rollers' axial motion). The reference design, symmetric V:
+    −52000·0.0061 + (0.4 + 0.15)·9.80665 = −317.2 + 5.3936575 = −311.8063425 N:
+
+    >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
+    >>> round(float(_striker_force_at_blow(R, geometry("symmetric_v", math.pi / 4))), 5)
+    -311.80634
+    """
+    nm = x["roller_count"] * x["roller_mass"]
+    return (
+        -x["return_spring_rate"] * (x["return_spring_preload"] + x["engagement_height"])
+        + (x["striker_mass"] + nm * g.a_s) * x["gravity"]
+    )
+
+
+def _rollers_fly_at_blow(x: Mapping[str, Any], g: Geometry, q_s: Any) -> Any:
+    r"""True where a face would have to pull the rollers at the blow (stage 3 at rest).
+
+    .. math::
+        M\ddot q = Q,\quad Q = \big(c_1(\lambda_1 - y_h) + (m_1 + n m_p a_h)g,\ q_s\big),
+        \quad y_h = \min(h_2 - h_1, 0)
+
+    [002, eq. 3] with the rollers, at rest at the blow (the half-coupling on its stop, and
+    held there, where :math:`h_2 \ge h_1`); the rollers' accelerations
+    :math:`\ddot x = \kappa(\ddot y_s - \ddot y_h)`, :math:`\ddot y_r = a_h\ddot y_h + a_s\ddot y_s`
+    give the faces' forces (:func:`face_forces`); ``q_s`` is the striker's generalised force
+    there. Numbers or arrays.
+    """
+    m11, m12, m22 = _stage3_matrices(x, g)
+    y_h = pymin(x["engagement_height"] - x["release_travel"], 0.0)
+    nm = x["roller_count"] * x["roller_mass"]
+    q_h = (
+        x["power_spring_rate"] * (x["power_spring_preload"] - y_h)
+        + (x["half_coupling_mass"] + nm * g.a_h) * x["gravity"]
+    )
+    det = m11 * m22 - m12 * m12
+    held = y_h >= 0.0
+    a_h = where(held, 0.0, (m22 * q_h - m12 * q_s) / det)
+    a_s = where(held, q_s / m22, (m11 * q_s - m12 * q_h) / det)
+    n_a, n_b = face_forces(
+        g.kappa * (a_s - a_h), g.a_h * a_h + g.a_s * a_s - x["gravity"], g.a_h / g.kappa,
+        g.a_s / g.kappa,
+    )  # fmt: skip
+    return pymin(n_a, n_b) < 0.0
 
 
 def _refuse(x: Mapping[str, Any], o: CycleOutcome) -> EngineError:
@@ -977,6 +1038,7 @@ def _as_floats(o: CycleOutcome) -> CycleOutcome:
         **numbers,
         snap=bool(o.snap),
         refusal=int(o.refusal),
+        flies=bool(o.flies),
     )
 
 
@@ -1046,31 +1108,65 @@ def _rhs(mode, p, w, q0, q1, v0, v1):  # type: ignore[no-untyped-def]
 _rhs_c = jit(_rhs, error_model="numpy")
 
 
+def face_forces(xdd, ydd, t_a, t_b):  # type: ignore[no-untyped-def]
+    r"""Contact forces of the two faces on a roller per roller mass, (N_A, N_B) [m/s²].
+
+    .. math::
+        \ddot x = -N_A\sin\beta_A - N_B\sin\beta_B,\qquad
+        \ddot y_r - g = -N_A\cos\beta_A + N_B\cos\beta_B
+
+    Parameters
+    ----------
+    xdd : float or array
+        The roller's radial acceleration, [m/s^2]
+    ydd : float or array
+        Its axial acceleration less gravity, :math:`\ddot y_r - g`, [m/s^2]
+    t_a, t_b : float or array
+        Slopes :math:`\tan\beta` of face A (the striker's) and face B (the
+        half-coupling's), [-]: tan α both for the symmetric V, 0 and tan α for the single cone
+
+    Notes
+    -----
+    :math:`m_p(\ddot x, \ddot y_r - g) = N_A n_A + N_B n_B` with the normals into the roller
+    :math:`n_B = (-\sin\beta_B, \cos\beta_B)`, :math:`n_A = (-\sin\beta_A, -\cos\beta_A)`
+    ([002, eq. 3]'s 2N sin α and N cos α for one cone angle), solved by Cramer's rule. A face
+    can only push: a negative value is a pull. Symmetric V at 45° with the roller pressed
+    inwards at 2 m/s² and no axial acceleration: each face pushes √2 m/s²; with
+    :math:`\ddot y_r - g = 2` face B pushes 2√2, face A nothing:
+
+    >>> [round(float(v), 12) + 0.0 for v in face_forces(-2.0, 0.0, 1.0, 1.0)]
+    [1.414213562373, 1.414213562373]
+    >>> [round(float(v), 12) + 0.0 for v in face_forces(-2.0, 2.0, 1.0, 1.0)]
+    [0.0, 2.828427124746]
+    """
+    sec_a = np.sqrt(1.0 + t_a * t_a)
+    sec_b = np.sqrt(1.0 + t_b * t_b)
+    sin_a, cos_a = t_a / sec_a, 1.0 / sec_a
+    sin_b, cos_b = t_b / sec_b, 1.0 / sec_b
+    det = -(sin_a * cos_b + sin_b * cos_a)
+    return (xdd * cos_b + sin_b * ydd) / det, (cos_a * xdd - sin_a * ydd) / det
+
+
+_face_forces_c = jit(face_forces, error_model="numpy")
+
+
 def _gfun(mode, kind, p, w, q0, q1, v0, v1):  # type: ignore[no-untyped-def]
     """Scalar event functions that are not position levels (sign changes)."""
     if kind == 1:
         return v0
     if kind == 2:
         return v1
-    if kind == 4 or kind == 5:
+    if kind == 4:
         # the smaller of the two faces' contact forces on a roller, per roller mass (stage 3,
         # ω = 0): m_p·(ẍ, ÿ_r − g) = N_A·n_A + N_B·n_B with the normals into the roller,
         # n_B = (−sin α, cos α) (the half-coupling's cone) and n_A = (−sin α, −cos α) (the
         # striker's cone, symmetric V) or (0, −1) (its flat face, single cone). A face can
-        # only push: kind 4 is negative where one would have to pull, kind 5 where it would
-        # have to pull with more than the roller's weight
+        # only push: negative where one would have to pull (the one-sided stage 3 takes over)
         _, a0, a1 = _rhs_c(mode, p, w, q0, q1, v0, v1)
         xdd = p[13] * (a1 - a0)
         ydd = p[14] * a0 + p[15] * a1 - p[6]
-        sec = math.sqrt(1.0 + p[22] * p[22])
-        sin_a, cos_a = p[22] / sec, 1.0 / sec
-        if p[14] == 0.0:  # single cone: the striker's face is flat
-            nb = -xdd / sin_a
-            na = nb * cos_a - ydd
-        else:
-            total, diff = -xdd / sin_a, ydd / cos_a  # N_A + N_B, N_B − N_A
-            na, nb = 0.5 * (total - diff), 0.5 * (total + diff)
-        return min(na, nb) + (abs(p[6]) if kind == 5 else 0.0)
+        na, nb = _face_forces_c(xdd, ydd, p[14] / p[13], p[15] / p[13])
+        return min(na, nb)
     # kind 3: what presses the half-coupling onto its stop in mode 4 (negative: it leaves)
     nm = p[11] * p[10]
     k2 = p[13] * p[13]
@@ -1219,18 +1315,278 @@ _advance_c = jit(_advance, error_model="numpy")
 
 
 # ---------------------------------------------------------------------------
+# Stage 3 with one-sided contacts: the rollers as free bodies between the cones
+# ---------------------------------------------------------------------------
+
+# parameter vector of the one-sided stage 3 (:func:`_contact_params`)
+(U_M1, U_M3, U_NM, U_C1, U_L1, U_C3, U_L3, U_G, U_TA, U_TB, U_H2, U_NPAR) = range(12)  # fmt: skip
+#: The one-sided stage 3's constraints, in this order (the ``active`` flags of the kernel):
+#: the half-coupling's stop, the jaws' bottom, face B (the half-coupling's cone), face A
+#: (the striker's face).
+CONTACTS = ("stop", "bottom", "face B", "face A")
+#: The mode the recorder files the one-sided stage 3 under (its ω slot carries x - x0).
+S3U = 8
+#: A step of the one-sided stage 3 counted as this many of the cycle kernel's (measured
+#: 0.87 µs against ~0.2 µs on the 2-core CI box), for the step budget.
+_CONTACT_STEP_COST = 5
+#: Steps between two looks at the deadline in the one-sided stage 3 (~20 ms).
+_CONTACT_CHUNK = 20_000
+
+
+def _jacobian(p, i, j):  # type: ignore[no-untyped-def]
+    r"""Row ``i`` of the constraint Jacobian, column ``j`` (q = y_h, y_s, x - x_0, y_r).
+
+    .. math::
+        g_H = -y_h,\ g_J = h_2 - y_s,\ g_B = y_r - y_h - t_B(x - x_0),\
+        g_A = y_s - y_r - t_A(x - x_0),\qquad g \ge 0
+    """
+    if i == 0:
+        return -1.0 if j == 0 else 0.0
+    if i == 1:
+        return -1.0 if j == 1 else 0.0
+    if i == 2:
+        if j == 0:
+            return -1.0
+        if j == 2:
+            return -p[9]
+        return 1.0 if j == 3 else 0.0
+    if j == 1:
+        return 1.0
+    if j == 2:
+        return -p[8]
+    return -1.0 if j == 3 else 0.0
+
+
+_jacobian_c = jit(_jacobian, error_model="numpy")
+
+
+def _contact_accel(p, active, q, acc, lam, wk, idx):  # type: ignore[no-untyped-def]
+    r"""Accelerations ``acc`` and reactions ``lam`` (0 where inactive) of the one-sided stage 3.
+
+    .. math::
+        M\ddot q = Q + J_S^T\lambda_S,\qquad J_S M^{-1}J_S^T\lambda_S = -J_S M^{-1}Q
+
+    :math:`M = \mathrm{diag}(m_1, m_3, n m_p, n m_p)`,
+    :math:`Q = (c_1^+(\lambda_1 - y_h) + m_1g,\ -c_3^+(\lambda_3 + y_s) + m_3g,\ 0,\ n m_p g)`,
+    S the active constraints (the constraints are linear, so :math:`J\ddot q = 0`).
+    ``wk`` (at least 6 x 5 floats) and ``idx`` (4 ints) are scratch space.
+    """
+    wk[4, 0] = _sp_c(p[3], p[4] - q[0]) + p[0] * p[7]
+    wk[4, 1] = -_sp_c(p[5], p[6] + q[1]) + p[1] * p[7]
+    wk[4, 2] = 0.0
+    wk[4, 3] = p[2] * p[7]
+    wk[5, 0] = 1.0 / p[0]
+    wk[5, 1] = 1.0 / p[1]
+    wk[5, 2] = 1.0 / p[2]
+    wk[5, 3] = 1.0 / p[2]
+    k = 0
+    for i in range(4):
+        lam[i] = 0.0
+        if active[i]:
+            idx[k] = i
+            k += 1
+    for r in range(k):
+        for c in range(k):
+            s = 0.0
+            for j in range(4):
+                s += _jacobian_c(p, idx[r], j) * wk[5, j] * _jacobian_c(p, idx[c], j)
+            wk[r, c] = s
+        s = 0.0
+        for j in range(4):
+            s -= _jacobian_c(p, idx[r], j) * wk[5, j] * wk[4, j]
+        wk[r, 4] = s
+    for c in range(k):  # Gaussian elimination with partial pivoting, k <= 4
+        piv = c
+        for r in range(c + 1, k):
+            if abs(wk[r, c]) > abs(wk[piv, c]):
+                piv = r
+        if piv != c:
+            for j in range(5):
+                tmp = wk[c, j]
+                wk[c, j] = wk[piv, j]
+                wk[piv, j] = tmp
+        for r in range(c + 1, k):
+            f = wk[r, c] / wk[c, c]
+            for j in range(c, 5):
+                wk[r, j] -= f * wk[c, j]
+    for r in range(k - 1, -1, -1):
+        s = wk[r, 4]
+        for c in range(r + 1, k):
+            s -= wk[r, c] * lam[idx[c]]
+        lam[idx[r]] = s / wk[r, r]
+    for j in range(4):
+        s = wk[4, j]
+        for r in range(k):
+            s += _jacobian_c(p, idx[r], j) * lam[idx[r]]
+        acc[j] = wk[5, j] * s
+
+
+_contact_accel_c = jit(_contact_accel, error_model="numpy")
+
+
+def _contact_rk4(p, active, q, v, h, qn, vn, st, wk, idx):  # type: ignore[no-untyped-def]
+    """One RK4 step of the one-sided stage 3 from (q, v) into (qn, vn); ``st`` (6 x 4),
+    ``wk`` and ``idx`` are scratch space (:func:`_contact_accel`)."""
+    hh = 0.5 * h
+    _contact_accel_c(p, active, q, st[0], st[5], wk, idx)
+    for j in range(4):
+        st[4, j] = q[j] + hh * v[j]
+    _contact_accel_c(p, active, st[4], st[1], st[5], wk, idx)
+    for j in range(4):
+        st[4, j] = q[j] + hh * v[j] + hh * hh * st[0, j]
+    _contact_accel_c(p, active, st[4], st[2], st[5], wk, idx)
+    for j in range(4):
+        st[4, j] = q[j] + h * v[j] + h * hh * st[1, j]
+    _contact_accel_c(p, active, st[4], st[3], st[5], wk, idx)
+    h6 = h / 6.0
+    for j in range(4):
+        qn[j] = q[j] + h * v[j] + h * h6 * (st[0, j] + st[1, j] + st[2, j])
+        vn[j] = v[j] + h6 * (st[0, j] + 2.0 * st[1, j] + 2.0 * st[2, j] + st[3, j])
+
+
+_contact_rk4_c = jit(_contact_rk4, error_model="numpy")
+
+
+def _contact_advance(  # type: ignore[no-untyped-def]
+    p, active, t, q, v, h, n_max, t_end, ekind, ecoef, elvl, edir, stride, rt, rx, rq0, rq1,
+    n_rec,
+):  # fmt: skip
+    """Integrate the one-sided stage 3 until its first event, ``t_end`` or ``n_max`` steps.
+
+    Events: ``ekind`` 0 = the level ``elvl`` of ecoef·q crossed in the direction ``edir``
+    (cubic Hermite, as :func:`_advance`); ``ekind`` 1 = the reaction of the active
+    constraint ``int(elvl)`` changes sign in ``edir`` (bisection on RK4 sub-steps).
+    ``q`` and ``v`` are updated in place. Returns (status, event, t, steps, n_rec);
+    status 1 = event, 2 = t_end, 0 = n_max steps used.
+    """
+    n_ev = ekind.shape[0]
+    cap = rt.shape[0]
+    qn = np.empty(4)
+    vn = np.empty(4)
+    qs = np.empty(4)
+    vs = np.empty(4)
+    acc = np.empty(4)
+    lam = np.empty(4)
+    st = np.empty((6, 4))
+    wk = np.empty((6, 5))
+    idx = np.empty(4, dtype=np.int64)
+    for i in range(n_max):
+        hh = h
+        if t + hh > t_end:
+            hh = t_end - t
+            if hh <= 0.0:
+                return 2, -1, t, i, n_rec
+        _contact_rk4_c(p, active, q, v, hh, qn, vn, st, wk, idx)
+        best = 2.0
+        which = -1
+        for e in range(n_ev):
+            d = edir[e]
+            s = -1.0
+            if ekind[e] == 0:
+                za = 0.0
+                va = 0.0
+                zb = 0.0
+                vb = 0.0
+                for j in range(4):
+                    za += ecoef[e, j] * q[j]
+                    va += ecoef[e, j] * v[j]
+                    zb += ecoef[e, j] * qn[j]
+                    vb += ecoef[e, j] * vn[j]
+                za = d * (za - elvl[e])
+                zb = d * (zb - elvl[e])
+                va *= d
+                vb *= d
+                if za > 0.0 or (za == 0.0 and va >= 0.0):
+                    continue  # past the level, or leaving it onwards: not a new crossing
+                s = first_rise_c(za, va, zb, vb, hh)
+            else:
+                c = int(elvl[e])
+                _contact_accel_c(p, active, q, acc, lam, wk, idx)
+                ga = d * lam[c]
+                _contact_accel_c(p, active, qn, acc, lam, wk, idx)
+                gb = d * lam[c]
+                if ga < 0.0 and gb >= 0.0:
+                    lo = 0.0
+                    hi = 1.0
+                    for _ in range(50):
+                        mid = 0.5 * (lo + hi)
+                        _contact_rk4_c(p, active, q, v, mid * hh, qs, vs, st, wk, idx)
+                        _contact_accel_c(p, active, qs, acc, lam, wk, idx)
+                        if d * lam[c] >= 0.0:
+                            hi = mid
+                        else:
+                            lo = mid
+                    s = hi
+            if s >= 0.0 and s < best:
+                best = s
+                which = e
+        if which >= 0:
+            s = best
+            if ekind[which] == 0:
+                for _ in range(3):  # Newton on a real RK4 sub-step
+                    _contact_rk4_c(p, active, q, v, s * hh, qs, vs, st, wk, idx)
+                    zs = -elvl[which]
+                    rate = 0.0
+                    for j in range(4):
+                        zs += ecoef[which, j] * qs[j]
+                        rate += ecoef[which, j] * vs[j]
+                    if rate == 0.0:
+                        break
+                    ds = zs / (rate * hh)
+                    if abs(ds) > 0.05 or s - ds < 0.0 or s - ds > 1.0:
+                        break
+                    s -= ds
+                    if abs(ds) < 1e-15:
+                        break
+            _contact_rk4_c(p, active, q, v, s * hh, qs, vs, st, wk, idx)
+            for j in range(4):
+                q[j] = qs[j]
+                v[j] = vs[j]
+            if n_rec < cap:
+                rt[n_rec] = t + s * hh
+                rx[n_rec] = q[2]
+                rq0[n_rec] = q[0]
+                rq1[n_rec] = q[1]
+                n_rec += 1
+            return 1, which, t + s * hh, i + 1, n_rec
+        t = t + hh
+        for j in range(4):
+            q[j] = qn[j]
+            v[j] = vn[j]
+        if stride > 0 and i % stride == 0 and n_rec < cap:
+            rt[n_rec] = t
+            rx[n_rec] = q[2]
+            rq0[n_rec] = q[0]
+            rq1[n_rec] = q[1]
+            n_rec += 1
+    return 0, -1, t, n_max, n_rec
+
+
+_contact_advance_c = jit(_contact_advance, error_model="numpy")
+
+
+# ---------------------------------------------------------------------------
 # The driver
 # ---------------------------------------------------------------------------
 
 
 def _ensure_compiled(p: np.ndarray) -> float:
-    """Load (or compile) the kernel now if it is not yet; returns the seconds it took."""
+    """Load (or compile) the kernels now if they are not yet; returns the seconds it took.
+
+    Both the cycle kernel and the one-sided stage 3's (a design finds out only in stage 3
+    whether it needs the latter, when its deadline is already running).
+    """
     if getattr(_advance_c, "signatures", None) != []:
         return 0.0
     start = time.perf_counter()
     buf = np.empty(1)
     _advance_c(S2, p, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-6, 0, 1.0,
                *_events((0, 1.0, 0.0, 1.0, 1.0)), False, 0, buf, buf, buf, buf, 0)  # fmt: skip
+    if getattr(_contact_advance_c, "signatures", None) == []:
+        z4 = np.zeros(4)
+        _contact_advance_c(np.ones(U_NPAR), np.zeros(4, dtype=np.bool_), 0.0, z4, z4.copy(),
+                           1e-6, 0, 1.0, np.zeros(1, dtype=np.int64), np.zeros((1, 4)),
+                           np.zeros(1), np.ones(1), 0, buf, buf, buf, buf, 0)  # fmt: skip
     return time.perf_counter() - start
 
 
@@ -1353,6 +1709,247 @@ class _Run:
             raise SolverFailed("the cycle integration diverged", field="fidelity")
         self.rec.add(mode, bufs, n_rec)
         return int(status), int(which), (t, w, q0, q1, v0, v1)
+
+    def go_contact(
+        self,
+        p: np.ndarray,
+        active: np.ndarray,
+        t: float,
+        q: np.ndarray,
+        v: np.ndarray,
+        h: float,
+        t_end: float,
+        rows: list[tuple[int, tuple[float, ...], float, float]],
+    ) -> tuple[int, int, float]:
+        """Run the one-sided stage 3 (:func:`_contact_advance`) from (t, q, v) to its first
+        event; ``q`` and ``v`` are updated in place. Returns (status, event, t)."""
+        expected = (t_end - t) / h
+        if self.steps + expected * _CONTACT_STEP_COST > self.max_steps:
+            raise BudgetExceeded(
+                f"the cycle simulation would take about {self.steps + expected:.2g} RK4 steps "
+                f"in stage 3 (budget {self.max_steps:.2g}); use fidelity 'closed_form'",
+                field="fidelity",
+                expected_steps=self.steps + expected,
+                step_budget=self.max_steps,
+            )
+        ekind = np.array([r[0] for r in rows], dtype=np.int64)
+        ecoef = np.array([r[1] for r in rows], dtype=float).reshape(-1, 4)
+        elvl = np.array([r[2] for r in rows], dtype=float)
+        edir = np.array([r[3] for r in rows], dtype=float)
+        stride = max(1, int(expected / _SERIES_POINTS * 4)) if self.rec.on else 0
+        bufs = self.rec.buffers()
+        n_rec = 0
+        if self.deadline is not None and getattr(_contact_advance_c, "signatures", None) == []:
+            # loading or compiling this kernel (once per process) is not the design's time
+            began = time.perf_counter()
+            _contact_advance_c(p, active, t, q.copy(), v.copy(), h, 0, t_end, ekind, ecoef,
+                               elvl, edir, 0, *bufs, 0)  # fmt: skip
+            self.deadline += time.perf_counter() - began
+        while True:
+            if self.deadline is not None and time.perf_counter() > self.deadline:
+                raise BudgetExceeded(
+                    f"the cycle simulation stopped at its time budget after {self.steps} steps",
+                    field="fidelity",
+                )
+            chunk = min(_CONTACT_CHUNK, (self.max_steps - self.steps) // _CONTACT_STEP_COST)
+            if chunk <= 0:
+                raise BudgetExceeded(
+                    f"the cycle simulation used its budget of {self.max_steps} steps; use "
+                    "fidelity 'closed_form'",
+                    field="fidelity",
+                )
+            status, which, t, used, n_rec = _contact_advance_c(
+                p, active, t, q, v, h, chunk, t_end, ekind, ecoef, elvl, edir, stride, *bufs,
+                n_rec,
+            )  # fmt: skip
+            self.steps += int(used) * _CONTACT_STEP_COST
+            if status != 0:
+                break
+        if not (math.isfinite(t) and np.all(np.isfinite(q)) and np.all(np.isfinite(v))):
+            raise SolverFailed("the cycle integration diverged in stage 3", field="fidelity")
+        self.rec.add(S3U, bufs, n_rec)
+        return int(status), int(which), float(t)
+
+
+def _contact_params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
+    r"""Parameters of the one-sided stage 3: masses, springs, gravity, the faces' slopes.
+
+    The faces' slopes from the geometry's kinematics: :math:`t_B = a_s/\kappa`,
+    :math:`t_A = a_h/\kappa` (so that both contacts give :math:`x - x_0 = \kappa(y_s - y_h)`
+    and :math:`y_r = a_h y_h + a_s y_s`): tan α on both faces for the symmetric V, tan α and
+    0 (the striker's flat face) for the single cone.
+    """
+    p = np.zeros(U_NPAR)
+    p[U_M1], p[U_M3] = x["half_coupling_mass"], x["striker_mass"]
+    p[U_NM] = x["roller_count"] * x["roller_mass"]
+    p[U_C1], p[U_L1] = x["power_spring_rate"], x["power_spring_preload"]
+    p[U_C3], p[U_L3] = x["return_spring_rate"], x["return_spring_preload"]
+    p[U_G], p[U_H2] = x["gravity"], x["engagement_height"]
+    p[U_TA], p[U_TB] = g.a_h / g.kappa, g.a_s / g.kappa
+    return p
+
+
+def _jacobian_matrix(p: np.ndarray) -> np.ndarray:
+    """The 4 x 4 constraint Jacobian of :data:`CONTACTS` (:func:`_jacobian`, row by row)."""
+    return np.array([[_jacobian(p, i, j) for j in range(4)] for i in range(4)])
+
+
+def _gaps(p: np.ndarray, q: np.ndarray, jac: np.ndarray) -> np.ndarray:
+    """The four gaps :math:`g \\ge 0` of :data:`CONTACTS` at q = (y_h, y_s, x - x0, y_r) [m]."""
+    return jac @ q + np.array([0.0, p[U_H2], 0.0, 0.0])
+
+
+def _contact_set(
+    p: np.ndarray, q: np.ndarray, v: np.ndarray, tol: float, jac: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """The active contacts and the velocities after a plastic catch, at a touching state.
+
+    The constraints whose gap is within ``tol`` of 0 are candidates. First the impulse
+    problem: a set S of candidates whose impulses :math:`P_S \\ge 0` stop their closing
+    (:math:`J_S v^+ = 0`, :math:`v^+ = v + M^{-1}J_S^TP_S`) and leave every other candidate
+    opening or still; then, among the candidates that are neither opening nor closing, a set
+    whose reactions push (:math:`\\lambda_S \\ge 0`) and leave every other such candidate's
+    gap accelerating open (:func:`_contact_accel`). Both are complementarity problems of at
+    most four constraints with a positive definite matrix (one solution), solved by
+    enumeration, the larger sets first.
+    """
+    minv = 1.0 / p[[U_M1, U_M3, U_NM, U_NM]]
+    touching = np.abs(_gaps(p, q, jac)) <= tol
+    cand = [i for i in range(4) if touching[i]]
+    rate = jac @ v
+    vscale = max(float(np.max(np.abs(rate))), 1e-300)
+    v_new = v
+    if any(rate[i] < -1e-12 * vscale for i in cand):  # a gap closing: a plastic catch
+        for subset in _subsets(cand):
+            s = list(subset)
+            js = jac[s]
+            imp = np.linalg.solve((js * minv) @ js.T, -js @ v)
+            if np.any(imp < 0.0):
+                continue
+            trial = v + minv * (js.T @ imp)
+            if all((jac[i] @ trial) >= -1e-12 * vscale for i in cand if i not in s):
+                v_new = trial
+                break
+        rate = jac @ v_new
+    still = [i for i in cand if abs(rate[i]) <= 1e-9 * vscale]
+    acc, lam = np.empty(4), np.empty(4)
+    wk, idx = np.empty((6, 5)), np.empty(4, dtype=np.int64)
+    for subset in (*_subsets(still), ()):
+        act = np.zeros(4, dtype=np.bool_)
+        act[list(subset)] = True
+        _contact_accel_c(p, act, q, acc, lam, wk, idx)
+        ascale = max(float(np.max(np.abs(acc))), 1e-300)
+        if np.all(lam >= 0.0) and all(
+            (jac[i] @ acc) >= -1e-12 * ascale for i in still if i not in subset
+        ):
+            return act, v_new
+    raise SolverFailed("stage 3: no consistent set of roller contacts", field="fidelity")
+
+
+def _subsets(items: list[int]) -> list[tuple[int, ...]]:
+    """The non-empty subsets of ``items``, the larger first."""
+    from itertools import combinations
+
+    return [c for size in range(len(items), 0, -1) for c in combinations(items, size)]
+
+
+#: Most contact changes the one-sided stage 3 follows (a roller that keeps leaving and
+#: touching a face faster than this is reported, not followed).
+_MAX_SWITCHES = 400
+
+
+def _stage3_one_sided(
+    run: _Run,
+    x: Mapping[str, Any],
+    g: Geometry,
+    state: tuple[float, float, float, float, float, float],
+    t_blow: float,
+    t_end: float,
+    clear: float,
+    steps_per_period: int,
+    t_ret: float,
+) -> tuple[float, float, list[str]]:
+    r"""Stage 3 from ``state`` with the rollers as free bodies between the cones.
+
+    Four coordinates :math:`q = (y_h, y_s, x - x_0, y_r)`, the n rollers moving as one
+    (mass :math:`n m_p`, point masses), and four one-sided constraints (:data:`CONTACTS`):
+    the half-coupling's stop :math:`y_h \le 0`, the jaws' bottom :math:`y_s \le h_2`, and the
+    two faces, :math:`g_B = y_r - y_h - t_B(x - x_0) \ge 0`,
+    :math:`g_A = y_s - y_r - t_A(x - x_0) \ge 0`. A face that would have to pull lets the
+    rollers go (its reaction's sign change is the event); a gap that closes is a plastic
+    catch (no rebound: the same assumption as the seed's other catches, [002] gives no
+    restitution for the rollers) whose impulses are found with the contacts that stay
+    (:func:`_contact_set`). While both faces hold, this is the two-degree-of-freedom
+    stage 3 of the module notes. Returns (return time, home time, notes) from the blow.
+    """
+    p = _contact_params(x, g)
+    t, _, yh, ys, vh, vs = state
+    kap = float(g.kappa)
+    q = np.array([yh, ys, kap * (ys - yh), g.a_h * yh + g.a_s * ys])
+    v = np.array([vh, vs, kap * (vs - vh), g.a_h * vh + g.a_s * vs])
+    scale = _x_scale(run.p)
+    tol = 1e-12 * scale
+    jac = _jacobian_matrix(p)
+    active, v = _contact_set(p, q, v, tol, jac)
+    m1, m3 = x["half_coupling_mass"], x["striker_mass"]
+    w_free = math.sqrt(max(x["power_spring_rate"] / m1, x["return_spring_rate"] / m3))
+    m11, m12, m22 = _stage3_matrices(x, g)
+    det = float(m11 * m22 - m12 * m12)
+    w_both = math.sqrt(max(x["power_spring_rate"], x["return_spring_rate"]) / (det / max(m11, m22)))
+    h = 2.0 * math.pi / (steps_per_period * max(w_free, w_both))
+    const = np.array([0.0, p[U_H2], 0.0, 0.0])
+    t_home = math.inf
+    left: dict[int, float] = {}
+    free_both = 0
+    for _ in range(_MAX_SWITCHES):
+        for i in (2, 3):
+            if not active[i] and i not in left:
+                left[i] = t - t_blow
+        rows: list[tuple[int, tuple[float, ...], float, float]] = []
+        labels: list[tuple[str, int]] = []
+        if math.isinf(t_ret) and clear > 0.0:
+            rows.append((0, (0.0, 1.0, 0.0, 0.0), clear, -1.0))
+            labels.append(("clear", -1))
+        rows.append((0, (0.0, 1.0, 0.0, 0.0), 0.0, -1.0))
+        labels.append(("home", -1))
+        for i in range(4):
+            if active[i]:  # its reaction turns to a pull: it lets go
+                rows.append((1, (0.0, 0.0, 0.0, 0.0), float(i), -1.0))
+                labels.append(("leave", i))
+            else:  # its gap closes (a hair of overlap, so a gap at 0 now is not yet a catch)
+                rows.append((0, tuple(jac[i]), -const[i] - tol, -1.0))
+                labels.append(("touch", i))
+        status, which, t = run.go_contact(p, active, t, q, v, h, t_end, rows)
+        if status != 1:
+            break
+        label, _i = labels[which]
+        if label == "home":
+            t_home = t - t_blow
+            if math.isinf(t_ret):
+                t_ret = t_home
+            break
+        if label == "clear":
+            t_ret = t - t_blow
+            continue
+        active, v = _contact_set(p, q, v, 2.0 * tol, jac)
+        if not active[2] and not active[3]:
+            free_both += 1
+    else:
+        raise SolverFailed(
+            f"stage 3: the rollers changed contact more than {_MAX_SWITCHES} times before the "
+            "striker came home; report this design",
+            field="fidelity",
+        )
+    notes = []
+    if left:
+        first = min(left, key=left.__getitem__)
+        notes.append(
+            f"stage 3: {left[first] * 1e3:.3g} ms after the blow {CONTACTS[first]} would have "
+            "to pull the rollers; it lets them go and the return is followed with one-sided "
+            "contacts (the rollers free between the cones, a plastic catch where a gap closes)"
+            + (f"; they flew free of both faces {free_both} time(s)" if free_both else "")
+        )
+    return t_ret, t_home, notes
 
 
 def simulate_cycle(
@@ -1563,13 +2160,15 @@ def simulate_cycle(
         mode, state = S3, (t_blow, 0.0, y_h0, h2, 0.0, 0.0)
     t_ret = math.inf
     t_home = math.inf
-    # times after the blow where a face would have to pull a roller (kind 4) and pull with
-    # more than its weight (kind 5): the contact as an equality, a unilateral one flies free
-    pulls: dict[int, float] = {}
-    for _ in range(64 + 2):  # two more for the pull events, which change no motion
-        for kind in (4, 5):
-            if kind not in pulls and _gfun(mode, kind, run.p, *state[1:]) < 0.0:
-                pulls[kind] = state[0] - t_blow  # already at a mode's start
+    # while both faces press the rollers, the two-degree-of-freedom stage 3; where one would
+    # have to pull (kind 4), the one-sided stage 3 takes over (_stage3_one_sided)
+    for _ in range(64):
+        if _gfun(mode, 4, run.p, *state[1:]) < 0.0:  # already at a mode's start
+            t_ret, t_home, said = _stage3_one_sided(
+                run, x, g, state, t_blow, t3_end, clear, steps_per_period, t_ret
+            )
+            notes.extend(said)
+            break
         labels = ["home", "bottom"]
         rows: list[tuple[int, float, float, float, float]] = [
             (0, 0.0, 1.0, 0.0, -1.0),  # striker home: the balls can re-lock it
@@ -1578,10 +2177,8 @@ def simulate_cycle(
         if math.isinf(t_ret) and clear > 0.0:
             labels.append("clear")
             rows.append((0, 0.0, 1.0, clear, -1.0))  # clear of the jaws: return over
-        for kind in (4, 5):  # the first time only: the motion itself is not changed by it
-            if kind not in pulls:
-                labels.append(f"pull{kind}")
-                rows.append((kind, 0.0, 0.0, 0.0, -1.0))  # a face would have to pull
+        labels.append("pull")
+        rows.append((4, 0.0, 0.0, 0.0, -1.0))  # a face would have to pull a roller
         if mode == S3:
             labels.append("stop")
             rows.append((0, 1.0, 0.0, 0.0, 1.0))  # half-coupling onto its stop
@@ -1596,8 +2193,7 @@ def simulate_cycle(
             break
         label = labels[which]
         t_, w_, yh, ys, vh, vs = state
-        if label.startswith("pull"):
-            pulls[int(label[4])] = t_ - t_blow
+        if label == "pull":
             # a level crossed at the same instant (a spring leaving contact kinks the force)
             if ys <= 0.0:
                 label = "home"
@@ -1607,8 +2203,12 @@ def simulate_cycle(
                 label = "clear"
             elif mode == S3 and yh >= 0.0 and vh > 0.0:
                 label = "stop"
-            else:
-                continue
+        if label == "pull":  # a face lets the rollers go: one-sided contacts from here
+            t_ret, t_home, said = _stage3_one_sided(
+                run, x, g, state, t_blow, t3_end, clear, steps_per_period, t_ret
+            )
+            notes.extend(said)
+            break
         if label == "home":
             t_home = t_ - t_blow
             if math.isinf(t_ret):
@@ -1626,24 +2226,6 @@ def simulate_cycle(
             mode = S3
         else:
             break
-    where = (
-        f"h1 {h1 * 1e3:.4g} mm, h2 {h2 * 1e3:.4g} mm, c1 {c1:.4g} N/m, c3 {c3:.4g} N/m, "
-        f"α {math.degrees(x['cone_angle']):.3g}°"
-    )
-    if 5 in pulls:
-        warnings.append(
-            f"stage 3: {pulls[5] * 1e3:.3g} ms after the blow a cone would have to pull a roller "
-            f"with more than its weight ({where}): held on both cones as an equality the "
-            "rollers need a negative contact force; with a one-sided contact they would fly "
-            "free and the striker return on its own, which this model does not follow: the "
-            "return and home times are not reliable"
-        )
-    elif 4 in pulls:
-        notes.append(
-            f"stage 3: {pulls[4] * 1e3:.3g} ms after the blow a cone would have to pull a roller "
-            f"with less than its weight ({where}): the rollers settle on one face, the motion "
-            "is hardly changed"
-        )
     if math.isinf(t_home):
         warnings.append(
             "the return spring does not bring the striker home: the balls cannot re-lock it"
@@ -1704,7 +2286,7 @@ def _series(rec: _Recorder, x: Mapping[str, Any], g: Geometry, r: float) -> dict
             "stage",
         )
     }
-    stage_of = {S1: 1, S1P: 1, S2: 2, S2S: 2, S2F: 2, S3: 3, S3H: 3, S4: 4}
+    stage_of = {S1: 1, S1P: 1, S2: 2, S2S: 2, S2F: 2, S3: 3, S3H: 3, S3U: 3, S4: 4}
     for mode, t, w, q0, q1 in rec.parts:
         st = stage_of[mode]
         if st == 1:
@@ -1715,6 +2297,10 @@ def _series(rec: _Recorder, x: Mapping[str, Any], g: Geometry, r: float) -> dict
             lift, strk = np.maximum(h1 - q0, 0.0), q0
             shaft = np.where(q0 < 0.0, h1 - q0, h1)
             rad = np.full_like(q0, r)
+        elif mode == S3U:  # the one-sided stage 3 files the rollers' x - x0 under ω
+            lift, strk, shaft = -q0, q1, np.full_like(q0, h1)
+            rad = x0 + w
+            w = np.zeros_like(w)
         elif st == 3:
             lift = -q0 if mode == S3 else np.zeros_like(q0)
             strk = q1
@@ -1749,11 +2335,6 @@ SAFETY = 3.0
 #: 2 and 4 with the springs in contact, stage 3 when decoupled): the integrator's own
 #: error, measured ≤ 1e-8 over the test grid; never claimed as 0.
 EXACT_FLOOR = 1e-7
-#: Stage-3 coupling factor: the closed form drops the half-coupling's motion, whose
-#: effect on the return time grows with the inertia coupling M12²/(M11 M22) (0 for the
-#: symmetric V at 45°); measured between 0.18 and 1.83 times that over the test grid
-#: (1458 designs: three geometries, 20° to 70°, g of both signs), doubled.
-RETURN_COUPLING = 4.0
 
 
 def _quasi_static_error(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, Any, Any]:
@@ -1866,6 +2447,104 @@ def quasi_static_error(x: Mapping[str, Any]) -> tuple[Any, Any, Any]:
         return _one_or_many(dw), _one_or_many(dt), _one_or_many(dv)
 
 
+def simulation_release_velocity_error(
+    x: Mapping[str, Any], outcome: CycleOutcome, steps_per_period: int = STEPS_PER_PERIOD
+) -> float:
+    r"""Relative error bound of the simulation's half-coupling speed at release.
+
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
+    outcome : CycleOutcome
+        The simulation's outcome for ``x`` (:func:`simulate_cycle`: its steps and speed)
+    steps_per_period : int
+        RK4 steps per shortest natural period the simulation took, [-]
+
+    Notes
+    -----
+    .. math::
+        \frac{\delta v}{|v|} \le N\,\frac{\theta^5}{120}\,\frac{\delta v_{qs}}{|v|},
+        \qquad \theta = \frac{2\pi}{S}
+
+    RK4 on an oscillation of frequency Ω at the step h keeps its amplitude to
+    :math:`(\Omega h)^6/144` a step but lags its phase by :math:`(\Omega h)^5/120` a step
+    (the amplification factor :math:`1 + z + z^2/2 + z^3/6 + z^4/24` at :math:`z = i\Omega h`);
+    with :math:`\Omega h \le \theta` and N steps the phase of the half-coupling's oscillation
+    about its quasi-static path is off by at most :math:`N\theta^5/120`, and its velocity by
+    that times the oscillation's velocity amplitude, which :func:`quasi_static_error` bounds
+    (:math:`\delta v_{qs}`). N counts every step of the cycle (stage 1's are fewer). The times
+    keep :math:`\theta^4/120 = 8\cdot10^{-9}` relative. NaN where :math:`\delta v_{qs}` has
+    no estimate.
+    """
+    dv = quasi_static_error(x)[2]
+    theta = 2.0 * math.pi / steps_per_period
+    v = abs(float(outcome.release_velocity))
+    bound = outcome.steps * theta**5 / 120.0 * float(dv)
+    return bound / v if v > 0.0 else math.inf
+
+
+def _return_error(x: Mapping[str, Any], g: Geometry, outcome: CycleOutcome) -> Any:
+    r"""Bound on the closed form's relative error in the return and home times (stage 3).
+
+    .. math::
+        \delta = 3\,\frac{|M_{12}|}{M_{22}}\,|\min(h_2 - h_1, 0)|,\qquad
+        \frac{\Delta t_L}{t_L} \le \frac{\delta}{t_L\,\min_{|y - L| \le \delta}|\dot y_{cf}(y)|}
+
+    The closed form holds the half-coupling on its stop; it starts at
+    :math:`y_{h0} = \min(h_2 - h_1, 0)` and the power spring drives it there. With
+    :math:`\mu = M_{12}/M_{22}` the coordinate :math:`z = y_s + \mu y_h` obeys
+    :math:`M_{22}\ddot z = Q_s(y_s)` exactly (the stop's impulse acts on :math:`y_h` alone,
+    so :math:`M_{22}\dot y_s + M_{12}\dot y_h` passes it unchanged), so
+    :math:`u = z - \mu y_{h0}` follows the closed form's own equation
+    :math:`M_{22}\ddot u = -c_3(\lambda_3 + u) + W_s` plus the force
+    :math:`c_3\mu(y_h - y_{h0})`, which rises from 0 to at most :math:`c_3|\mu y_{h0}|` while
+    the half-coupling goes to its stop (taken monotone): an oscillator from rest under a
+    monotone force moves by at most twice its static deflection, :math:`2|\mu y_{h0}|`, and
+    :math:`y_s = u - \mu(y_h - y_{h0})` adds :math:`|\mu y_{h0}|`:
+    :math:`|y_s - y_{cf}| \le \delta`.
+    The time of a level L (the jaw clearance, home) then moves by at most δ over the closed
+    form's slowest speed within δ of L, from its energy
+    :math:`\dot y^2 = \omega^2[(h_2 - c)^2 - (y - c)^2]`, :math:`\omega^2 = c_3/M_{22}`,
+    c its centre; inf where that band holds a turning point (no bound); 0 where neither
+    trajectory can get there. A face that would have to pull on the held half-coupling's
+    path (the faces' forces are affine in :math:`y_s` there, so its ends bound them) lets the
+    rollers go; the striker then misses at most that pull, :math:`n m_p N_{min}/m_3`, which
+    widens the band by :math:`\tfrac12(n m_p N_{min}/m_3)t_L^2`. Rollers that fly at the
+    blow are flagged instead (:func:`_rollers_fly_at_blow`). Numbers or arrays; measured
+    against the simulation in bench/accuracy_striker.py.
+    """
+    _, m12, m22 = _stage3_matrices(x, g)
+    h1, h2, h3 = x["release_travel"], x["engagement_height"], x["jaw_height"]
+    delta = 3.0 * abs(m12 / m22) * abs(pymin(h2 - h1, 0.0))
+    c3 = x["return_spring_rate"]
+    amp = -_striker_force_at_blow(x, g) / c3  # h2 - c
+    centre = h2 - amp
+    w2 = c3 / m22
+    clear = h2 - pymin(h3, h2)
+    # a face that would have to pull on the held half-coupling's path (its forces are affine
+    # in y_s there: the ends of the path, h2 and home or the turning point, bound them)
+    pull: Any = 0.0
+    for y in (h2, pymax(centre - amp, 0.0)):
+        acc = (c3 * (centre - y)) / m22  # Q_s(y)/M22, Q_s(y) = c3(c - y)
+        n_a, n_b = face_forces(
+            g.kappa * acc, g.a_s * acc - x["gravity"], g.a_h / g.kappa, g.a_s / g.kappa
+        )
+        pull = pymax(pull, -pymin(n_a, n_b))
+    lag = 0.5 * x["roller_count"] * x["roller_mass"] * pull / x["striker_mass"]
+    worst: Any = 0.0
+    for level, t in ((clear, outcome.return_time), (0.0, outcome.home_time)):
+        band = delta + lag * t * t
+        far = pymax(abs(level - band - centre), abs(level + band - centre))
+        v2 = w2 * (amp * amp - far * far)
+        term = where(v2 > 0.0, band / sqrt(where(v2 > 0.0, v2, 1.0)) / t, math.inf)
+        # never there in the closed form: nor in truth if its turning point is δ short of L
+        short = (centre - amp) - delta > level
+        term = where(isfinite(t), term, where(short, 0.0, math.inf))
+        worst = pymax(worst, where(band > 0.0, term, 0.0))
+    return worst
+
+
 def closed_form_errors(x: Mapping[str, Any], outcome: CycleOutcome) -> dict[str, Any]:
     """Estimated relative error of each closed-form output group, one design or many.
 
@@ -1882,15 +2561,23 @@ def closed_form_errors(x: Mapping[str, Any], outcome: CycleOutcome) -> dict[str,
     Keys: ``stage1`` (release speed, spin-up time, window: the larger of
     :func:`quasi_static_error`'s two, at least :data:`EXACT_FLOOR`), ``engagement``
     (engagement time and margin, reach: stage 2 rerun with the release velocity
-    ± its error, plus the speed's error), ``return`` (:data:`RETURN_COUPLING` times the
-    stage-3 inertia coupling :math:`M_{12}^2/(M_{11}M_{22})`, at most 1), ``relock``
-    (:data:`EXACT_FLOOR`). NaN where no estimate can be made or the design is refused;
-    maxima follow Python's ``max`` (a NaN first argument stays NaN).
+    ± its error, plus the speed's error), ``return`` (return and home times: the
+    half-coupling's neglected way to its stop, :func:`_return_error`; NaN where it gives no
+    bound or the rollers fly at the blow), ``relock`` (:data:`EXACT_FLOOR`). NaN where no
+    estimate can be made or the design is refused; maxima follow Python's ``max`` (a NaN
+    first argument stays NaN).
+
+    The reference design (symmetric V at 45°: :math:`M_{12} = n m_p(-1/4 + 1/4) = 0`, so
+    δ = 0): held on its stop, at home face B would have to pull a roller with
+    g/(2 cos 45°) = 6.9344 m/s² (its weight), so the band is ½·0.3·6.9344/0.4·t² =
+    2.6004·(4.0048 ms)² = 41.71 µm at home; the closed form's centre c = 4 − 5.99627 mm
+    (:math:`Q_s(h_2)/c_3` = −311.806/52000), ẏ² = 94545·(5.99627² −
+    (1.99627 + 0.04171)²)·1e-6 = 3.0067, so 41.71e-6/1.7340/4.0048e-3 = 6.006e-3:
 
     >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
     >>> e = closed_form_errors(R, closed_form_cycle(R))
-    >>> e["relock"], e["return"]  # symmetric V at 45°: M12 = n·mp(-1/4 + 1/4) = 0
-    (1e-07, 1e-07)
+    >>> e["relock"], round(float(e["return"]), 5)
+    (1e-07, 0.00601)
     """
     with np.errstate(all="ignore"):
         x = _numbers(x)
@@ -1903,8 +2590,10 @@ def closed_form_errors(x: Mapping[str, Any], outcome: CycleOutcome) -> dict[str,
             other, _ = _stage2(x, pymax(outcome.release_velocity + sign * dv, 0.0), g)
             worst = pymax(worst, where(isfinite(other), abs(other - base) / base, math.inf))
         engagement = where(outcome.blow, pymax(worst + dw, EXACT_FLOOR), pymax(dw, EXACT_FLOOR))
-        m11, m12, m22 = _stage3_matrices(x, g)
-        ret = pymin(pymax(RETURN_COUPLING * (m12 * m12 / (m11 * m22)), EXACT_FLOOR), 1.0)
+        ret = _return_error(x, g, outcome)
+        ret = where(isfinite(ret), pymax(ret, EXACT_FLOOR), math.nan)
+        if any_true(outcome.flies):  # rollers that fly at the blow: no claim (the module notes)
+            ret = where(outcome.flies, math.nan, ret)
         bad = fails | outcome.refused
         groups = {"stage1": stage1, "engagement": engagement, "return": ret, "relock": EXACT_FLOOR}
         if not is_array(bad, *groups.values()):
@@ -2023,8 +2712,9 @@ def simulate_cycle_scipy(
 
     Notes
     -----
-    Terminal events at the same levels. ``max_step_fraction`` bounds the step to
-    that fraction of the mode's shortest period (None: scipy's own control,
+    Terminal events at the same levels; the one-sided stage 3 (rollers free between the
+    cones, :func:`_stage3_one_sided`) keeps the compiled RK4. ``max_step_fraction`` bounds
+    the step to that fraction of the mode's shortest period (None: scipy's own control,
     which can step over a grazing first crossing). Returns (outcome, RHS evaluations).
     """
     global _Run_impl

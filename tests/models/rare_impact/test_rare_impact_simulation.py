@@ -121,7 +121,9 @@ def test_reference_design_figures_under_each_geometry():
 
 def test_simulation_reports_the_whole_cycle_with_stage_boundaries():
     r = run(RARE_IMPACT, R, fidelity="simulation", series=True)
-    assert r.rung == "simulation" and r.error_estimate == 1e-6
+    # 1e-6 for the times; the half-coupling's speed at release, asked with every output, has
+    # its own bound N·(2π/200)⁵/120·δv_qs/|v| (bench/accuracy_striker.py holds it)
+    assert r.rung == "simulation" and 1e-6 < r.error_estimate < 2e-6
     s = r.series
     n = len(s["time"])
     assert 100 < n < 2000 and all(len(v) == n for v in s.values())
@@ -343,11 +345,18 @@ def test_a_design_needing_millions_of_steps_runs_when_the_time_budget_allows():
 
 def test_stiff_springs_with_light_parts_fall_back_to_the_closed_form_at_once():
     start = time.perf_counter()
-    r = run(RARE_IMPACT, STIFF, fidelity="simulation")
+    r = run(RARE_IMPACT, STIFF, tolerance=1e-6)
     assert time.perf_counter() - start < 5.0
     assert r.rung == "closed_form"
     assert any("fallback 'closed_form'" in n for n in r.notes)
     assert r.series == {}
+    # named, the simulation falls back only to an answer that keeps its 1e-6; the closed
+    # form's return estimate here is above it (the rollers' weight lifts them off face B
+    # near home, which its bound counts), so the budget refusal stands, at once
+    start = time.perf_counter()
+    with pytest.raises(BudgetExceeded, match="its time budget leaves"):
+        run(RARE_IMPACT, STIFF, fidelity="simulation")
+    assert time.perf_counter() - start < 5.0
 
 
 def test_auto_returns_its_best_with_a_note_when_no_rung_meets_the_tolerance():
@@ -474,10 +483,16 @@ def test_closed_form_within_its_estimate_over_a_grid(geometry, angle, gravity, m
     cf = run(RARE_IMPACT, x, fidelity="closed_form")
     sim = run(RARE_IMPACT, x, fidelity="simulation")
     errs = C.closed_form_errors(x, C.closed_form_cycle(x))
+    flies = math.isnan(errs["return"])
+    # rollers that fly at the blow: the closed form says it does not apply, and claims nothing
+    assert flies == any(w.startswith("stage 3: at the blow a face would") for w in cf.warnings)
     for group, names in GROUPS.items():
+        if group == "return" and flies:
+            continue
         for name in names:
             assert _rel(cf.results[name], sim.results[name]) <= errs[group], (name, errs)
-    assert errs["return"] > 0 and errs["relock"] > 0  # never claimed exact
+    assert flies or errs["return"] > 0
+    assert errs["relock"] > 0  # never claimed exact
 
 
 def test_rungs_agree_as_the_spin_up_slows():
