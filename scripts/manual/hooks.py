@@ -33,8 +33,16 @@ KATEX = ROOT / "static" / "vendor" / "katex"
 #: Which validation modules hold which model (each module's docstring names its sources).
 VALIDATION: dict[str, tuple[str, ...]] = {
     "nutrunner.drive": ("test_nutrunner_seed000.py",),
-    "clutch.ball": ("test_clutch_paper.py", "test_springs_textbooks.py"),
-    "clutch.ball_setting": ("test_clutch_paper.py", "test_springs_textbooks.py"),
+    "clutch.ball": (
+        "test_clutch_paper.py",
+        "test_clutch_two_flanks.py",
+        "test_springs_textbooks.py",
+    ),
+    "clutch.ball_setting": (
+        "test_clutch_paper.py",
+        "test_clutch_two_flanks.py",
+        "test_springs_textbooks.py",
+    ),
     "impact.rare": ("test_rare_impact_002.py",),
     "preload.tightening": (
         "test_preload_vdi2230.py",
@@ -50,6 +58,8 @@ VALIDATION: dict[str, tuple[str, ...]] = {
         "test_fasteners_standards.py",
     ),
     "blow.joint": ("test_blow_two_mass.py",),
+    "tool.capability": ("test_capability_published.py",),
+    "friction.iso16047": ("test_iso16047_derivation.py",),
 }
 
 #: Hand-written pages, in the order of the navigation (generated ones are placed among them).
