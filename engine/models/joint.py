@@ -556,7 +556,9 @@ def _r9_outside(x: Mapping[str, Any], bolt: Bolt) -> str | None:
     """Why R9's endurance limit does not hold for this bolt (None: it does)."""
     fastener = bolt.fastener
     grade = fastener.grade.name if fastener is not None and fastener.grade is not None else None
-    name = grade or (None if x.get("property_class") is None else str(x["property_class"]))
+    # a typed yield strength overrides the class (whose default then names nothing)
+    typed = x.get("yield_strength") is not None or x.get("property_class") is None
+    name = grade or (None if typed else str(x["property_class"]))
     why = []
     if name is None:
         why.append("the bolt's property class is unknown (yield_strength given)")
@@ -825,17 +827,7 @@ def _solve(
     # R11 for the nut's thread where the nut does not pair with the bolt (thin, weaker class)
     f_strip: Any = math.nan
     if nut is not None and nut.pairs is False and nut_part is not None and tensile is not None:
-        f_strip = _plain(
-            fa.nut_thread_strip_force(
-                d,
-                pitch,
-                d2,
-                nut_part.height,
-                nut_part.width_across_flats,
-                fa.nut_proof_stress(nut.property_class, d, nut.style),
-                tensile,
-            )
-        )
+        f_strip = _plain(fa.nut_thread_resistance(d, pitch, d2, nut_part, nut, f_nut, tensile))
         checks["nut_thread_stripping"] = (f_strip == f_strip, f_strip >= f_s_max)
 
     # R9 alternating stress -----------------------------------------------------------------------

@@ -226,8 +226,9 @@ NUT_OUTPUTS: tuple[Output, ...] = (
     Output(
         "nut_stripping_force",
         "N",
-        "R11 for a nut that does not pair with the bolt (thin, weaker class): F_SM = "
-        "C1 C3 τ_BM A_SGM over m − 2P, τ_BM = 0.6 S_p",
+        "Thread strength of a nut that does not pair with the bolt (thin, weaker class): "
+        "the larger of R11's F_SM = C1 C3 τ_BM A_SGM over m − 2P (τ_BM = 0.6 S_p) and the "
+        "ISO 898-2 proof load the thread is tested to",
         display_unit="kN",
     ),
 )
@@ -304,8 +305,9 @@ def nut_stripping_text(nut: fa.NutChoice, strip_force: float, against: str, ok: 
     """The ``nut_thread_stripping`` check's sentence (VDI 2230-1 R11 for the nut's thread)."""
     return (
         f"thread of the {nut.standard} nut, class {nut.property_class}, which does not pair "
-        f"with the bolt: it strips at F_SM = {_kn(strip_force)} (VDI 2230-1 R11, τ_BM = "
-        f"{fa.STEEL_SHEAR_RATIO:g} S_p, m − 2P engaged) vs {against}"
+        f"with the bolt: it holds F_SM = {_kn(strip_force)}, the larger of VDI 2230-1 R11's "
+        f"estimate (τ_BM = {fa.STEEL_SHEAR_RATIO:g} S_p, m − 2P engaged) and the ISO 898-2 proof "
+        f"load its thread is tested to, vs {against}"
         + ("" if ok else ": use a full-height nut of the class that pairs with the bolt")
     )
 
@@ -346,14 +348,13 @@ def _nut_rating(
     strip: Any = math.nan
     thread = None if bolt.fastener is None else bolt.fastener.thread
     if choice.pairs is False and thread is not None and tensile is not None:
-        part = fa.nut(choice.standard, thread)
-        strip = fa.nut_thread_strip_force(
+        strip = fa.nut_thread_resistance(
             bolt.diameter,
             bolt.pitch,
             bolt.pitch_diameter,
-            part.height,
-            part.width_across_flats,
-            fa.nut_proof_stress(choice.property_class, bolt.diameter, choice.style),
+            fa.nut(choice.standard, thread),
+            choice,
+            proof,
             tensile,
         )
     return _NutRating(choice, proof, bolt_preload, strip)

@@ -45,7 +45,7 @@ def form_request(spec: ModelSpec, entry: dict[str, Any]) -> dict[str, Any]:
     names = {p.name for p in spec.inputs}
     if "thread" in names:
         x["thread"] = entry["designation"]
-        if entry["grade"] is not None:
+        if entry["grade"] is not None and "grade" in names:  # as app.js: only to a grade input
             x["grade"] = entry["grade"]
         return x
     x.update(

@@ -176,11 +176,12 @@ def test_a_thin_nut_limits_the_preload_and_fails():
     checks = {c.name: c for c in r.checks}
     assert not checks["nut_strength"].ok and not checks["nut_class_pairing"].ok
     assert any("limits the preload" in w and "32.02 kN" in w for w in r.warnings)
-    # an unnamed thin-nut class is taken as the stronger one made (05: 500 MPa) and says so
+    # an unnamed thin-nut class is taken as the weaker one made (04: 380 MPa, the safe side)
+    # and says so
     x = {k: v for k, v in M12_129_THIN.items() if k != "nut_property_class"}
-    r05 = run(JOINT, x)
-    assert r05.results["permissible_preload"] == pytest.approx(500e6 * A_S, rel=1e-9)
-    assert "class 05 (assumed)" in {c.name: c for c in r05.checks}["nut_strength"].detail
+    r04 = run(JOINT, x)
+    assert r04.results["permissible_preload"] == pytest.approx(380e6 * A_S, rel=1e-9)
+    assert "class 04 (assumed)" in {c.name: c for c in r04.checks}["nut_strength"].detail
 
 
 def test_a_paired_full_nut_leaves_the_bolt_alone_and_a_weak_class_fails_pairing():
@@ -191,9 +192,15 @@ def test_a_paired_full_nut_leaves_the_bolt_alone_and_a_weak_class_fails_pairing(
     checks = {c.name: c for c in r.checks}
     assert checks["nut_strength"].ok and checks["nut_class_pairing"].ok
     assert "class 8 (assumed)" in checks["nut_class_pairing"].detail
-    # a 12.9 bolt in an ISO 4032 nut: the strongest made (10, 1050 MPa × A_s = 88.5 kN)
-    # carries 74.1 kN, but ISO 898-2 does not pair class 10 with 12.9
+    # a 12.9 bolt in an ISO 4032 nut of no named class: no class it is made in pairs with
+    # 12.9, so the weakest made is assumed (6: 700 MPa × A_s = 58.99 kN < the bolt's 74.1 kN)
     r = run(JOINT, {**full, "thread": "M12 ISO 4017 12.9"})
+    checks = {c.name: c for c in r.checks}
+    assert not checks["nut_strength"].ok and not checks["nut_class_pairing"].ok
+    assert "class 6 (assumed)" in checks["nut_strength"].detail
+    assert r.results["permissible_preload"] == pytest.approx(700e6 * A_S, rel=1e-9)
+    # named class 10 (1050 MPa × A_s = 88.5 kN) carries the bolt's 74.1 kN but does not pair
+    r = run(JOINT, {**full, "thread": "M12 ISO 4017 12.9", "nut_property_class": "10"})
     checks = {c.name: c for c in r.checks}
     assert checks["nut_strength"].ok and not checks["nut_class_pairing"].ok
     assert r.results["permissible_preload"] == pytest.approx(_f_mzul(0.12, rp=1100e6), rel=1e-9)

@@ -43,3 +43,14 @@ def test_rolled_after_heat_treatment_names_its_own_relation():
 def test_inside_the_fit_nothing_is_said():
     r = run(JOINT, {**BASE, "thread": "M36 ISO 4017 10.9"})
     assert not [w for w in r.warnings if "outside its range" in w]
+
+
+def test_a_typed_yield_strength_without_a_grade_leaves_the_class_unknown():
+    # M12 by its numbers with R_p0.2 = 900 MPa typed: the default class "8.8" names nothing,
+    # so σ_ASV's fit (8.8–12.9) cannot be said to hold
+    bolt = {"thread_diameter": 0.012, "thread_pitch": 0.00175, "yield_strength": 900e6}
+    r = run(JOINT, {**BASE, **bolt, "plate1_thickness": 0.02, "plate2_thickness": 0.02})
+    (said,) = [w for w in r.warnings if "outside its range" in w]
+    assert "property class is unknown" in said
+    named = run(JOINT, {**BASE, "thread_diameter": 0.012, "thread_pitch": 0.00175})
+    assert not [w for w in named.warnings if "outside its range" in w]

@@ -47,7 +47,8 @@ def _exact_k(p: float, d2: float, outer: float, hole: float, mu_g: float, mu_k: 
 
 
 def test_tightening_m10_socket_head_12_9_every_output() -> None:
-    """M10 ISO 4762 12.9 into S235JR, a nut ISO 4032 too; μ_G = μ_K = 0.12, ν = 0.9."""
+    """M10 ISO 4762 12.9 into S235JR, a nut ISO 4032 class 10 too (strong enough, though
+    ISO 898-2 does not pair it with 12.9); μ_G = μ_K = 0.12, ν = 0.9."""
     x = {
         "thread": "M10 ISO 4762 12.9",
         "clamped_material": "S235JR",
@@ -55,6 +56,7 @@ def test_tightening_m10_socket_head_12_9_every_output() -> None:
         "engagement_length": 0.012,
         "working_bolt_force": 30e3,
         "nut": "ISO 4032",
+        "nut_property_class": "10",
     }
     r = run(TIGHTENING, x).results
     d, p = 0.010, 0.0015
@@ -350,6 +352,7 @@ def test_control_bought_parts_m8_socket_head_in_aluminium() -> None:
         **CONTROL.examples[2],
         "working_bolt_force": 20e3,
         "nut": "ISO 4032",
+        "nut_property_class": "10",
     }
     r = run(CONTROL, x).results
     d, p = 0.008, 0.00125
