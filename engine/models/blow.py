@@ -28,7 +28,6 @@ from ..physics.blow import (
     BlowProblem,
     BlowSeries,
     blow_series,
-    blow_series_array,
     clutch_preload_window,
     energy_blow,
     energy_blow_error,
@@ -784,16 +783,53 @@ class _Setup:
         )
 
 
+#: The last array setup and the content it was worked out from (:func:`_content_key`).
+_LAST_SETUP: tuple[tuple[Any, ...], _Setup] | None = None
+
+
+def _content_key(x: Mapping[str, Any]) -> tuple[Any, ...]:
+    """What ``x`` holds now: each array by its shape, type and a hash of its bytes.
+
+    Keyed on the values, not on the objects: a caller that refills its arrays in place
+    gets a new key (a hash of the bytes costs ~10 µs per 2,000 points).
+
+    >>> a = np.array([1.0, 2.0])
+    >>> k = _content_key({"v": a, "s": "x"})
+    >>> a[0] = 3.0
+    >>> k == _content_key({"v": a, "s": "x"})
+    False
+    """
+    return tuple(
+        (k, v.shape, v.dtype.str, hash(v.tobytes())) if isinstance(v, np.ndarray) else (k, v)
+        for k, v in x.items()
+    )
+
+
 def _setup(x: Mapping[str, Any]) -> _Setup:
     """The tool, the thread's torque per preload, the target and the joint's torque rate.
 
-    One procedure for one design (floats) and many (arrays of one shape), worked out
-    once per call of an estimate, a single run or the array path, from the values the
-    inputs hold now (no cache: a caller may refill its arrays in place). The bolt and a
-    'joint' rate are resolved once per distinct combination of the inputs they read
-    (:func:`_per_group`). For one design a refusal raises its reason; for many the
-    refused designs are marked in ``refused`` (a sweep runs them alone, to say why).
+    One procedure for one design (floats) and many (arrays of one shape), from the values
+    the inputs hold now. The bolt and a 'joint' rate are resolved once per distinct
+    combination of the inputs they read (:func:`_per_group`). For one design a refusal
+    raises its reason; for many the refused designs are marked in ``refused`` (a sweep
+    runs them alone, to say why). Many designs are worked out once per request: a sweep
+    asks the rung's estimate and then the array path of the same inputs, and the second
+    call finds the first's setup by the inputs' content (:func:`_content_key`).
     """
+    global _LAST_SETUP
+    if not _is_array(x):
+        return _setup_of(x)
+    key = _content_key(x)
+    last = _LAST_SETUP
+    if last is not None and last[0] == key:
+        return last[1]
+    s = _setup_of(x)
+    _LAST_SETUP = (key, s)
+    return s
+
+
+def _setup_of(x: Mapping[str, Any]) -> _Setup:
+    """:func:`_setup` worked out."""
     one = not _is_array(x)
     tool = _tool(x, one)
     names = _THREAD_INPUTS + (_JOINT_INPUTS if x["joint_rate_from"] == "joint" else ())
@@ -1019,6 +1055,10 @@ def _simulation_estimate(x: Mapping[str, Any]) -> Any:
 # --------------------------------------------------------------------------- compute
 
 
+_WINDOW_LABELS = np.array(["within", "below", "above"], dtype=object)
+_BOLT_LABELS = np.array(["elastic", "past yield", "past breaking"], dtype=object)
+
+
 def _window_verdict(preload: Any, lo: Any, hi: Any) -> Any:
     """'below', 'within' or 'above' the window [lo, hi] (either limit may be None).
 
@@ -1030,11 +1070,17 @@ def _window_verdict(preload: Any, lo: Any, hi: Any) -> Any:
     >>> _window_verdict(np.array([60e3, 80e3, 120e3]), 70e3, 100e3).tolist()
     ['below', 'within', 'above']
     """
+    code = _window_code(preload, lo, hi)
+    return _WINDOW_LABELS[code] if isinstance(code, np.ndarray) else str(_WINDOW_LABELS[code])
+
+
+def _window_code(preload: Any, lo: Any, hi: Any) -> Any:
+    """:func:`_window_verdict` as an index into its labels: 0 within, 1 below, 2 above."""
     below = False if lo is None else preload < lo
     above = False if hi is None else preload > hi
     if isinstance(below, np.ndarray) or isinstance(above, np.ndarray):
-        return np.where(above, "above", np.where(below, "below", "within")).astype(object)
-    return "above" if above else ("below" if below else "within")
+        return np.where(above, 2, np.asarray(below, dtype=np.int8))
+    return 2 if above else int(below)
 
 
 def _clutch_verdict(f_lo: Any, f_hi: Any, lo: Any, hi: Any) -> tuple[Any, Any]:
@@ -1099,10 +1145,16 @@ def _bolt_verdict(yielded: Any, demand: Any, breaking_load: Any) -> Any:
     >>> _bolt_verdict(np.array([False, True]), np.array([np.nan, 254.9e3]), 125.6e3).tolist()
     ['elastic', 'past breaking']
     """
-    with np.errstate(invalid="ignore"):
-        broken = np.logical_and(yielded, demand > breaking_load)
-    verdict = np.where(broken, "past breaking", np.where(yielded, "past yield", "elastic"))
-    return str(verdict) if verdict.ndim == 0 else verdict.astype(object)
+    code = _bolt_code(yielded, demand, breaking_load)
+    return _BOLT_LABELS[code] if isinstance(code, np.ndarray) else str(_BOLT_LABELS[code])
+
+
+def _bolt_code(yielded: Any, demand: Any, breaking_load: Any) -> Any:
+    """:func:`_bolt_verdict` as an index into its labels (elastic, past yield, past breaking)."""
+    broken = yielded & (demand > breaking_load)  # NaN: not past
+    if isinstance(broken, np.ndarray):
+        return np.add(yielded, broken, dtype=np.int8)
+    return int(yielded) + int(broken)
 
 
 def _bolt_checks(s: _Setup, series: BlowSeries, warnings: list[str]) -> tuple[Any, list[Check]]:
@@ -1110,8 +1162,8 @@ def _bolt_checks(s: _Setup, series: BlowSeries, warnings: list[str]) -> tuple[An
     if s.per is None:
         return None, []
     f_y, f_b = s.yield_preload, s.breaking_load
-    yielded = series.yield_blow is not None
-    demand = math.nan if series.elastic_demand is None else series.elastic_demand / s.per
+    yielded = series.yield_blow > 0
+    demand = series.elastic_demand / s.per  # NaN: the bolt stayed elastic
     verdict = _bolt_verdict(yielded, demand, f_b)
     at = f"blow {series.yield_blow}" if yielded else ""
     checks = [
@@ -1289,7 +1341,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         yield_torque=s.yield_torque,
     )
 
-    n = len(series.torque_after)
+    n = series.blows
     if e == 0.0:  # the energy account divides by it (on arrays: the point is refused)
         raise ZeroDivisionError("the tool's energy underflows to 0 J")
     found = {
@@ -1297,15 +1349,15 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         **_blow_values(
             ctx.rung,
             s,
-            peak=series.peak[0],
-            rotation=series.rotation[0],
-            after=series.torque_after[0],
-            work=series.joint_work[0],
-            final=series.torque_after[-1],
+            peak=series.peak,
+            rotation=series.rotation,
+            after=series.torque_after,
+            work=series.work,
+            final=series.final_torque,
             blows=n,
-            joint_work=sum(series.joint_work),
+            joint_work=series.joint_work,
         ),
-        "blows_to_target": series.blows_to_target,
+        "blows_to_target": series.blows_to_target or None,
     }
     if per is not None:
         found["yield_preload"] = s.yield_preload
@@ -1318,11 +1370,11 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     warnings: list[str] = []
     values["bolt_verdict"], bolt_checks = _bolt_checks(s, series, warnings)
     checks.extend(bolt_checks)
-    if target is not None and series.blows_to_target is None:
+    if target is not None and not series.blows_to_target:
         why = (
-            f"the bolt yields at {series.torque_after[-1]:.4g} N·m"
-            if series.yield_blow is not None
-            else f"the joint holds against the blow at {series.torque_after[-1]:.4g} N·m"
+            f"the bolt yields at {series.final_torque:.4g} N·m"
+            if series.yield_blow
+            else f"the joint holds against the blow at {series.final_torque:.4g} N·m"
             if series.saturated
             else f"not reached in max_blows = {max_blows}"
         )
@@ -1354,7 +1406,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         error = _estimate(x, _rigid_estimate_of(x, s))
     elif ctx.rung == "energy":
         # the estimate from the first blow the rung ran (energy_blow: the same balance)
-        blow1 = (series.peak[0], series.torque_after[0])
+        blow1 = (series.peak, series.torque_after)
         error = _estimate(x, _energy_error(x, s, blow1, peak=ctx.wants(*_PEAK_OUTPUTS)))
         notes.append(
             "energy: E + N·φ_t = T_p²/(2C) + (T_p² − T_0²)/(2k_j) per blow, struck inertia and "
@@ -1372,13 +1424,13 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
     out_series: dict[str, list[float]] = {
         "blow_number": [float(i + 1) for i in range(n)],
-        "torque_per_blow": list(series.torque_after),
-        "peak_per_blow": list(series.peak),
+        "torque_per_blow": list(series.per_blow["torque"]),
+        "peak_per_blow": list(series.per_blow["peak"]),
     }
     if ctx.rung != "rigid":
-        out_series["rotation_per_blow"] = list(series.rotation)
+        out_series["rotation_per_blow"] = list(series.per_blow["rotation"])
     if per is not None:
-        out_series["preload_per_blow"] = [t / per for t in series.torque_after]
+        out_series["preload_per_blow"] = [t / per for t in series.per_blow["torque"]]
     if series.first is not None and len(series.first.time):
         out_series["time_in_blow"] = series.first.time.tolist()
         out_series["torque_in_blow"] = series.first.torque.tolist()
@@ -1531,14 +1583,20 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     e, c, drive = s.energy, s.tool.stiffness, s.tool.drive
     dead |= np.broadcast_to(e == 0.0, n)  # joint_energy_fraction divides by it: refused
     with np.errstate(all="ignore"):
-        series = blow_series_array(
-            e,
+        p = BlowProblem(
+            s.tool.inertia,
+            x["struck_inertia"],
             c,
+            s.speed,
             s.rate,
+            x["breakaway_factor"],
+            drive,
+            x["restitution"],
+        )
+        series = blow_series(
+            p,
             t0,
             ctx.rung,
-            breakaway=x["breakaway_factor"],
-            drive_torque=drive,
             target_torque=s.target,
             max_blows=x["max_blows"],
             yield_torque=s.yield_torque,
@@ -1557,11 +1615,12 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 joint_work=series.joint_work,
             ),
         }
+        reached = np.broadcast_to(series.blows_to_target, n)
         if s.per is not None:
             raw["yield_preload"] = s.yield_preload
             raw["breaking_load"] = s.breaking_load
-            yielded = series.yield_blow > 0
-            bolt = _bolt_verdict(yielded, series.elastic_demand / s.per, s.breaking_load)
+            yielded = np.broadcast_to(series.yield_blow > 0, n)
+            bolt_code = _bolt_code(yielded, series.elastic_demand / s.per, s.breaking_load)
     any_dead = bool(dead.any())
     values: dict[str, Any] = {}
     for name, column in raw.items():
@@ -1574,35 +1633,34 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
         values[name] = (
             column if np.isfinite(column).all() else np.where(np.isfinite(column), column, np.nan)
         )
-    reached = series.blows_to_target
     values["blows_to_target"] = _nullable(reached, dead | (reached == 0))
     checks: dict[str, np.ndarray] = {}
     # a point the model refuses reports no check; if every point is refused, no check at all
     reports = not bool(dead.all())
     if s.per is not None and (lo is not None or hi is not None):
-        verdict = np.broadcast_to(_window_verdict(values["final_preload"], lo, hi), n).copy()
+        code = np.broadcast_to(_window_code(values["final_preload"], lo, hi), n)
+        verdict = _WINDOW_LABELS[code]
         verdict[dead] = None
         values["preload_verdict"] = verdict
         if reports:
-            checks["preload_window"] = np.where(dead, -1, verdict == "within").astype(np.int8)
+            checks["preload_window"] = np.where(dead, -1, code == 0).astype(np.int8)
     if s.target is not None and reports:
         checks["target_reached"] = np.where(dead, -1, reached > 0).astype(np.int8)
     if s.per is not None:
-        bolt = np.broadcast_to(bolt, n).copy()
+        bolt_code = np.broadcast_to(bolt_code, n)
+        bolt = _BOLT_LABELS[bolt_code]
         bolt[dead] = None
         values["bolt_verdict"] = bolt
         if reports:
             checks["bolt_yield"] = np.where(dead, -1, ~yielded).astype(np.int8)
             has_rm = np.broadcast_to(np.isfinite(s.breaking_load), n)
-            checks["bolt_break"] = np.where(dead | ~has_rm, -1, bolt != "past breaking").astype(
-                np.int8
-            )
+            checks["bolt_break"] = np.where(dead | ~has_rm, -1, bolt_code != 2).astype(np.int8)
     for o in _OUTPUTS:  # what a single run leaves null here: None (no scalar probe)
         if not o.series and o.name not in values:
             values[o.name] = None
     notes = [
         f"{ctx.rung}: evaluated on arrays, the same equations as a single run "
-        "(engine.physics.blow.blow_series_array)",
+        "(engine.physics.blow.blow_series)",
         *s.notes,
     ]
     return Result(
