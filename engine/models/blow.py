@@ -39,7 +39,7 @@ from ..physics.blow import (
 )
 from ..physics.joint import clamped_compliance as vdi_clamped_compliance
 from ..physics.rare_impact import rotating_inertia
-from ..procedures.striker_cycle import closed_form_cycle_array, release_radius_of, release_speed_of
+from ..procedures.striker_cycle import closed_form_cycle, release_radius_of, release_speed_of
 from .clutch import BALL_CLUTCH
 from .nutrunner import NUTRUNNER_DRIVE
 from .preload import (
@@ -525,7 +525,7 @@ def _striker(x: Mapping[str, Any], one: bool) -> _Striker:
             w_m = r = math.nan
             refused = True
     else:
-        cycle: Any = closed_form_cycle_array(design)
+        cycle: Any = closed_form_cycle(design, refuse=False)
         w_m, r, refused = cycle.release_speed, cycle.release_radius, cycle.refused
     with np.errstate(all="ignore"):
         inertia = rotating_inertia(

@@ -32,7 +32,6 @@ from ..procedures.striker_cycle import (
     GEOMETRIES,
     CycleOutcome,
     closed_form_cycle,
-    closed_form_cycle_array,
     closed_form_errors,
     release_speed_of,
     relock_friction,
@@ -145,7 +144,7 @@ def _cycle(x: Mapping[str, Any]) -> CycleOutcome:
     last = _LAST_CYCLE[-1] if _LAST_CYCLE else None
     if last is not None and last[0] == key:
         return last[1]
-    o = closed_form_cycle_array(x)
+    o = closed_form_cycle(x, refuse=False)
     _LAST_CYCLE[:] = [(key, o, {})]
     return o
 
@@ -273,7 +272,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """The closed form at many points (the array path of sweeps and studies).
 
     The same lines as a single run (:func:`_outputs`, :func:`_verdicts` on
-    :func:`engine.procedures.striker_cycle.closed_form_cycle_array`); NaN/None where a single
+    :func:`engine.procedures.striker_cycle.closed_form_cycle`); NaN/None where a single
     run refuses the point or leaves the output null, and the verdicts of
     :func:`design_checks` as ``check_arrays``.
     """
