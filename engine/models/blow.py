@@ -381,7 +381,12 @@ _OUTPUTS: tuple[Output, ...] = (
         "joint torque above which a blow no longer turns the "
         "nut (energy balance: (N + √(N² + 2EC))/b)",
     ),
-    Output("joint_energy_fraction", "1", "work into the joint / energy supplied, first blow"),
+    Output(
+        "joint_energy_fraction",
+        "1",
+        "first blow's work into the joint / the tool's kinetic energy E; the drive's work "
+        "N·φ_t during the blow is not in E, so with a drive torque it can exceed 1",
+    ),
     Output("energy_supplied", "J", "energy supplied over all blows"),
     Output("energy_into_joint", "J", "work into the joint over all blows"),
     Output("preload_verdict", "1", "final preload against [preload_min, preload_max]", kind="str"),
@@ -1395,6 +1400,13 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
     if per is None:
         notes.append("preloads are null: give thread_diameter for the tightening relation")
+    fraction = values.get("joint_energy_fraction")
+    if fraction is not None and fraction > 1.0:
+        notes.append(
+            f"joint_energy_fraction {fraction:.4g} > 1: the drive torque "
+            f"{float(s.tool.drive):.4g} N·m works on the tool during the blow, and that work "
+            "is not in the tool's energy E it is divided by"
+        )
     if ctx.rung == "rigid":
         notes.append(
             "rigid: the struck end fixed, M = √(2EC) [000, eq. 7–8] less the idle friction "
