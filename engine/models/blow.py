@@ -251,10 +251,12 @@ _INPUTS: tuple[Param, ...] = (
         choices=RATES,
         group="joint",
     ),
-    positive(
+    Param(
         "joint_rate",
         "N*m/rad",
-        "torque rate k_j of the joint ('number')",
+        "torque rate k_j of the joint ('number'); 0 with snug_torque 0: a free struck side "
+        "(the two-flywheel impact, simulation rung)",
+        minimum=0.0,
         maximum=1e9,
         group="joint",
     ),
@@ -1594,6 +1596,8 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
         dead |= np.broadcast_to(lo > hi, n)  # "preload_min must not exceed preload_max"
     e, c, drive = s.energy, s.tool.stiffness, s.tool.drive
     dead |= np.broadcast_to(e == 0.0, n)  # joint_energy_fraction divides by it: refused
+    if ctx.rung == "energy":  # energy_blow refuses a massless nut that never stops
+        dead |= np.broadcast_to((s.rate <= 0.0) & (t0 <= drive), n)
     with np.errstate(all="ignore"):
         p = BlowProblem(
             s.tool.inertia,

@@ -1062,12 +1062,16 @@ def simulate_blow(
     t_total = 0.0
     while True:
         if deadline is not None and time.perf_counter() > deadline:
+            if st[0] <= 0.0 and st[3] > 0.0:
+                raise _coasting(f"its time budget after {total} steps", p, start_torque)
             raise BudgetExceeded(
                 f"the blow simulation stopped at its time budget after {total} steps",
                 field="fidelity",
             )
         chunk = min(200_000, max_steps - total)
         if chunk <= 0:
+            if st[0] <= 0.0 and st[3] > 0.0:
+                raise _coasting(f"its budget of {max_steps} steps", p, start_torque)
             raise BudgetExceeded(
                 f"one blow used its budget of {max_steps} steps without ending (a nut much "
                 "lighter than the tool on a stiff joint, or a joint that never stops it); use "
@@ -1109,6 +1113,17 @@ def simulate_blow(
         steps=total,
         time=out_t[:n_rec].copy(),
         torque=out_ts[:n_rec].copy(),
+    )
+
+
+def _coasting(budget: str, p: BlowProblem, start_torque: float) -> BudgetExceeded:
+    """The budget ran out with the jaws apart and the nut still turning: say so."""
+    return BudgetExceeded(
+        f"one blow used {budget} with the nut still coasting after the jaws parted: the "
+        f"joint's torque (T_0 = {start_torque:.4g} N·m, k_j = {p.rate:.4g} N·m/rad) barely "
+        "slows it; for a free struck side give joint_rate 0 and snug_torque 0 (the blow then "
+        "ends when the jaws part)",
+        field="joint_rate",
     )
 
 
