@@ -94,9 +94,15 @@ _RI_NAMES = (
     "stepped_shaft_mass",
     "gravity",
 )
+#: The sources' motors, for the time between blows: the nut-runner's power [000, eq. 5],
+#: the striker's motor [002, eq. 1] (its defaults kept: impact.rare's reference motor).
+_NR_MOTOR = ("motor_power",)
+_RI_MOTOR = ("motor_torque", "motor_no_load_speed")
 #: Borrowed inputs that keep the tool model's default here (what the striker's release
-#: speed reads beyond its springs and rollers; the nut-runner's material).
-_KEEP_DEFAULT = frozenset(("shear_modulus", "half_coupling_mass", "stepped_shaft_mass", "gravity"))
+#: speed reads beyond its springs and rollers; the nut-runner's material; the striker's motor).
+_KEEP_DEFAULT = frozenset(
+    ("shear_modulus", "half_coupling_mass", "stepped_shaft_mass", "gravity", *_RI_MOTOR)
+)
 _CL_NAMES = (
     "ball_circle_diameter",
     "groove_angle",
@@ -187,8 +193,8 @@ _INPUTS: tuple[Param, ...] = (
         exclusive_minimum=True,
         maximum=1.0,
     ),
-    *_borrow(NUTRUNNER_DRIVE, _NR_NAMES, "nut-runner"),
-    *_borrow(RARE_IMPACT, _RI_NAMES, "rare-impact"),
+    *_borrow(NUTRUNNER_DRIVE, _NR_NAMES + _NR_MOTOR, "nut-runner"),
+    *_borrow(RARE_IMPACT, _RI_NAMES + _RI_MOTOR, "rare-impact"),
     *_borrow(BALL_CLUTCH, _CL_NAMES, "clutch"),
     positive(
         "clutch_spring_force",
@@ -390,6 +396,19 @@ _OUTPUTS: tuple[Output, ...] = (
         "N·φ_t during the blow is not in E, so with a drive torque it can exceed 1",
     ),
     Output("energy_supplied", "J", "energy supplied over all blows"),
+    Output(
+        "blow_interval",
+        "s",
+        "time from one blow to the next: the source's motor spins the flywheel from rest "
+        "back to its blow speed (nut-runner T/P [000, eq. 5]; rare impact: impact.rare's "
+        "cycle [002]; energy: J_t·ω0/N)",
+    ),
+    Output("blows_per_second", "1/s", "blows per second, 1/blow_interval"),
+    Output(
+        "time_to_final",
+        "s",
+        "time from motor start to the last blow: blows × blow_interval",
+    ),
     Output("energy_into_joint", "J", "work into the joint over all blows"),
     Output("preload_verdict", "1", "final preload against [preload_min, preload_max]", kind="str"),
     Output(
@@ -434,6 +453,28 @@ _OUTPUTS: tuple[Output, ...] = (
         display_unit="deg",
     ),
     Output(
+        "blow_time",
+        "s",
+        "time of each blow from motor start (blow_number × blow_interval)",
+        series=True,
+        x="blow_number",
+    ),
+    Output(
+        "torque_against_time",
+        "N*m",
+        "joint torque after each blow against its time",
+        series=True,
+        x="blow_time",
+    ),
+    Output(
+        "preload_against_time",
+        "N",
+        "preload after each blow against its time",
+        series=True,
+        x="blow_time",
+        display_unit="kN",
+    ),
+    Output(
         "time_in_blow", "s", "time in the first blow (simulation)", series=True, display_unit="ms"
     ),
     Output(
@@ -458,6 +499,8 @@ class _Tool:
     drive: Any  # N, net drive during the blow [N·m]
     fails: Any  # where the arithmetic fails (a spindle speed or stiffness that underflows)
     notes: list[str]  # what the source took from the tool model (one design)
+    kinetic: Any = None  # the source's kinetic energy before the blow efficiency [J]
+    striker: Any = None  # the rare-impact source's striker (_Striker)
 
 
 def _need(x: Mapping[str, Any], names: tuple[str, ...], why: str) -> None:
@@ -521,6 +564,7 @@ def _striker(x: Mapping[str, Any], one: bool) -> _Striker:
     (243.96, 0.001541875, 45.89)
     """
     design = {**_STRIKER_DEFAULTS, **{n: x[n] for n in _RI_NAMES}}
+    design.update((n, x[n]) for n in _RI_MOTOR if x.get(n) is not None)
     refused: Any = False
     if one or not any(isinstance(design[n], np.ndarray) for n in _RI_NAMES):
         # one striker (a single run, or a sweep of anything else): impact.rare's stage 1
@@ -616,7 +660,59 @@ def _tool(x: Mapping[str, Any], one: bool) -> _Tool:
             notes.append(_striker_note(striker))
     else:
         raise AssertionError(src)
-    return _Tool(x["blow_efficiency"] * e, j, c, drive, fails, notes)
+    return _Tool(
+        x["blow_efficiency"] * e,
+        j,
+        c,
+        drive,
+        fails,
+        notes,
+        e,
+        striker if src == "rare_impact" else None,
+    )
+
+
+def _blow_interval(x: Mapping[str, Any], s: _Setup) -> tuple[Any, str]:
+    r"""Time from one blow to the next: the source's motor brings the flywheel back.
+
+    Each blow is taken to leave the flywheel at rest (its energy spent on the joint, the
+    tool's spring and the contact; a rebound is not driven back); the source's own motor
+    then spins it up to the blow speed again:
+
+    .. math::
+        \Delta t = rac{T}{P}\ 	ext{(nut-runner [000, eq. 5])},\qquad
+        \Delta t = t_{cycle}\ 	ext{(rare impact [002]: spin-up to re-lock)},\qquad
+        \Delta t = rac{J_t\,\omega_0}{N}\ 	ext{(energy: the drive torque N)}
+
+    (T the drive's kinetic energy at working speed, P the motor power; t_cycle impact.rare's
+    closed-form cycle from motor start to re-lock with the striker's motor; J_t ω0/N a
+    constant torque N on J_t from rest to ω0). Floats or arrays; NaN where the source has
+    no motor (the second value says why, one design).
+    """
+    src = x["source"]
+    tool = s.tool
+    with np.errstate(all="ignore"):
+        if src == "nutrunner":
+            power = x.get("motor_power")
+            if power is None:
+                return math.nan, "give motor_power for the time between blows"
+            return nr.acceleration_time(tool.kinetic, power), (
+                f"the drive's energy T = {float(np.mean(tool.kinetic)):.4g} J restored at "
+                "constant motor power P after each blow, Δt = T/P [000, eq. 5]"
+            )
+        if src == "rare_impact":
+            cycle = closed_form_cycle(tool.striker.design, refuse=False)
+            return cycle.cycle_time, (
+                "one impact.rare cycle per blow, from motor start to re-lock (spin-up "
+                "[002, eq. 1], engagement, return, re-lock [002, eq. 4])"
+            )
+        drive = tool.drive
+        dt = where(drive > 0.0, tool.inertia * s.speed / where(drive > 0.0, drive, 1.0), math.nan)
+        return dt, (
+            "the drive torque N spins the tool from rest to ω0 after each blow, Δt = J_t·ω0/N"
+            if isinstance(drive, np.ndarray) or drive > 0.0
+            else "give a positive drive_torque for the time between blows (source 'energy')"
+        )
 
 
 # --------------------------------------------------------------------------- the joint
@@ -936,6 +1032,16 @@ def _blow_values(
 #: The scalar outputs of the blows' sources, in their order (the clutch's are its own).
 _BLOW_OUTPUTS = tuple(
     o.name for o in _OUTPUTS if not o.series and not o.name.startswith(("clutch", "delivered"))
+)
+
+#: Outputs that need the time between blows (:func:`_blow_interval`).
+_TIME_OUTPUTS = (
+    "blow_interval",
+    "blows_per_second",
+    "time_to_final",
+    "blow_time",
+    "torque_against_time",
+    "preload_against_time",
 )
 
 #: Outputs whose energy-rung error is the nut's kick (energy_peak_error), not the torque's.
@@ -1366,6 +1472,17 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         ),
         "blows_to_target": series.blows_to_target or None,
     }
+    interval = math.nan
+    if ctx.wants(*_TIME_OUTPUTS):
+        interval, why = _blow_interval(x, s)
+        interval = float(interval)
+        if math.isfinite(interval) and interval > 0.0:
+            found["blow_interval"] = interval
+            found["blows_per_second"] = 1.0 / interval
+            found["time_to_final"] = n * interval
+            notes.append(f"time: {why}; the blows' own duration (ms) is not added")
+        else:
+            notes.append(f"blow_interval is null: {why or 'the striker never re-locks'}")
     if per is not None:
         found["yield_preload"] = s.yield_preload
         # null where only R_p0.2 is given
@@ -1445,6 +1562,12 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         out_series["rotation_per_blow"] = list(series.per_blow["rotation"])
     if per is not None:
         out_series["preload_per_blow"] = [t / per for t in series.per_blow["torque"]]
+    if math.isfinite(interval) and interval > 0.0:
+        times = [(i + 1) * interval for i in range(n)]
+        out_series["blow_time"] = times
+        out_series["torque_against_time"] = list(series.per_blow["torque"])
+        if per is not None:
+            out_series["preload_against_time"] = [t / per for t in series.per_blow["torque"]]
     if series.first is not None and len(series.first.time):
         out_series["time_in_blow"] = series.first.time.tolist()
         out_series["torque_in_blow"] = series.first.torque.tolist()
@@ -1632,6 +1755,12 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             ),
         }
         reached = np.broadcast_to(series.blows_to_target, n)
+        if ctx.wants(*_TIME_OUTPUTS[:3]):
+            interval = np.asarray(_blow_interval(x, s)[0], dtype=float)
+            interval = np.where(np.isfinite(interval) & (interval > 0.0), interval, np.nan)
+            raw["blow_interval"] = interval
+            raw["blows_per_second"] = 1.0 / interval
+            raw["time_to_final"] = series.blows * interval
         if s.per is not None:
             raw["yield_preload"] = s.yield_preload
             raw["breaking_load"] = s.breaking_load
@@ -1744,7 +1873,7 @@ def _vectorized_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 # --------------------------------------------------------------------------- examples
 
-_NUTRUNNER = {n: NUTRUNNER_DRIVE.examples[0][n] for n in _NR_NAMES}
+_NUTRUNNER = {n: NUTRUNNER_DRIVE.examples[0][n] for n in _NR_NAMES + _NR_MOTOR}
 #: Nut-runner of nutrunner.drive's reference case on an M20×1.5 wheel nut, target 600 N·m.
 NUTRUNNER_HARD: dict[str, Any] = {
     "source": "nutrunner",

@@ -232,7 +232,7 @@ def _outputs(x: Mapping[str, Any], o: CycleOutcome) -> dict[str, Any]:
             "return_time": where(returns, o.return_time, math.nan),
             "striker_home_time": where(returns, t_home, math.nan),
             "relock_time": where(relocks, o.relock_time, math.nan),
-            "cycle_time": where(relocks, t_home + o.relock_time, math.nan),
+            "cycle_time": o.cycle_time,
         }
 
 

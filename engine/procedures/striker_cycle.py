@@ -588,6 +588,12 @@ class CycleOutcome:
     def relocks(self) -> Any:
         return self.returns & isfinite(self.home_time) & isfinite(self.relock_time)
 
+    @property
+    def cycle_time(self) -> Any:
+        """Motor start to re-lock: spin-up, engagement, home, re-lock [s]; NaN if no re-lock."""
+        t = self.spin_up_time + self.engagement_time + self.home_time + self.relock_time
+        return where(self.relocks, t, math.nan)
+
 
 # ---------------------------------------------------------------------------
 # Closed forms of the piecewise-linear stages (the cheap rung)

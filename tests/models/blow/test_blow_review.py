@@ -98,3 +98,85 @@ def test_a_nearly_free_struck_side_says_the_nut_is_coasting() -> None:
     with pytest.raises(BudgetExceeded, match="coasting after the jaws parted") as stopped:
         run(BLOW, {**FREE, "joint_rate": 1e-9}, fidelity="simulation", budget_s=0.5)
     assert stopped.value.field == "joint_rate"
+
+
+# ---------------------------------------------------------------- blows against time
+
+
+def test_the_energy_sources_drive_torque_spins_the_tool_back_between_blows() -> None:
+    # ENERGY_M16: J_t = 0.004 kg·m², E = 6 J, so ω0 = √(2E/J_t) = √3000 rad/s; a constant
+    # drive torque N = 5 N·m takes the tool from rest to ω0 in Δt = J_t·ω0/N (J dω/dt = N),
+    # also the quadrature ∫ J dω/M(ω) of motor_spinup with a flat torque curve
+    from engine.models.blow import ENERGY_M16
+    from engine.physics.motor_spinup import MotorCurve, spin_up_time
+
+    w0 = math.sqrt(2 * 6.0 / 0.004)
+    dt = 0.004 * w0 / 5.0
+    quad, _ = spin_up_time(0.004, MotorCurve("constant", lambda w: 5.0 + 0.0 * w), w0)
+    assert quad == pytest.approx(dt, rel=1e-10)
+    r = run(BLOW, ENERGY_M16, fidelity="energy", series=True)
+    blows = len(r.series["blow_number"])
+    assert blows == 8  # the example's eight blows to 80 kN
+    pin("blow.joint", "blow_interval", r.results["blow_interval"], dt, rel=1e-12)
+    pin("blow.joint", "blows_per_second", r.results["blows_per_second"], 1 / dt, rel=1e-12)
+    pin("blow.joint", "time_to_final", r.results["time_to_final"], 8 * dt, rel=1e-12)
+    assert r.series["blow_time"] == pytest.approx([(i + 1) * dt for i in range(blows)])
+    assert r.series["torque_against_time"] == r.series["torque_per_blow"]
+    assert r.series["preload_against_time"] == r.series["preload_per_blow"]
+
+
+def test_the_nutrunners_motor_restores_the_drive_energy_at_constant_power() -> None:
+    # [000, eq. 5]: t = T/P with the drive's energy T (blow efficiency 1: the tool's energy)
+    # and the motor power P: the same time nutrunner.drive reports as its acceleration_time
+    from engine.models import get_model
+    from engine.models.blow import NUTRUNNER_HARD
+
+    drive = get_model("nutrunner.drive")
+    paper = run(drive, drive.examples[0], fidelity="closed_form").results
+    r = run(BLOW, NUTRUNNER_HARD, fidelity="energy")
+    t = float(r.results["tool_energy_used"]) / NUTRUNNER_HARD["motor_power"]  # type: ignore[arg-type]
+    pin("blow.joint", "blow_interval", r.results["blow_interval"], t, rel=1e-12)
+    assert r.results["blow_interval"] == pytest.approx(paper["acceleration_time"], rel=1e-12)
+    pin("blow.joint", "blows_per_second", r.results["blows_per_second"], 1 / t, rel=1e-12)
+    pin("blow.joint", "time_to_final", r.results["time_to_final"], 2 * t, rel=1e-12)  # 2 blows
+    # without a motor power there is no time: null, and the note says what to give
+    bare = {k: v for k, v in NUTRUNNER_HARD.items() if k != "motor_power"}
+    r = run(BLOW, bare, fidelity="energy")
+    assert r.results["blow_interval"] is None and r.results["blows_per_second"] is None
+    assert any("give motor_power" in note for note in r.notes)
+
+
+def test_the_rare_impact_wrench_strikes_once_per_striker_cycle() -> None:
+    # one blow per impact.rare cycle of the same striker (motor start to re-lock):
+    # spin-up + engagement + striker home + re-lock, as impact.rare reports them
+    from engine.models import get_model
+    from engine.models.blow import _RI_NAMES, RARE_IMPACT_M16
+
+    striker = get_model("impact.rare")
+    design = {**striker.examples[0], **{n: RARE_IMPACT_M16[n] for n in _RI_NAMES}}
+    cycle = run(striker, design, fidelity="closed_form").results
+    total = float(cycle["striker_home_time"]) + float(cycle["relock_time"])  # type: ignore[arg-type]
+    assert cycle["cycle_time"] == pytest.approx(total, rel=1e-12)
+    r = run(BLOW, RARE_IMPACT_M16, fidelity="energy")
+    pin("blow.joint", "blow_interval", r.results["blow_interval"], total, rel=1e-12)
+    pin("blow.joint", "blows_per_second", r.results["blows_per_second"], 1 / total, rel=1e-12)
+    # a slower motor (half the torque, no-load speed far above): a longer spin-up, the same
+    # blow (the release speed does not depend on the motor)
+    slow = run(BLOW, {**RARE_IMPACT_M16, "motor_torque": 2.5}, fidelity="energy").results
+    assert slow["tool_energy_used"] == r.results["tool_energy_used"]
+    assert slow["blow_interval"] > r.results["blow_interval"]  # type: ignore[operator]
+
+
+def test_blows_against_time_on_arrays_are_each_designs_own() -> None:
+    # a sweep of the drive torque: Δt = J_t·ω0/N point by point
+    from engine import sweep
+    from engine.models.blow import ENERGY_M16
+
+    drives = [2.0, 5.0, 10.0]
+    swept = sweep(BLOW, ENERGY_M16, "drive_torque", drives, fidelity="energy")
+    w0 = math.sqrt(2 * 6.0 / 0.004)
+    for j, n in enumerate(drives):
+        assert swept.results["blow_interval"][j] == pytest.approx(0.004 * w0 / n, rel=1e-12)
+        alone = run(BLOW, {**ENERGY_M16, "drive_torque": n}, fidelity="energy").results
+        for name in ("blows_per_second", "time_to_final"):
+            assert swept.results[name][j] == pytest.approx(alone[name], rel=1e-12)
