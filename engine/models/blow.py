@@ -691,28 +691,28 @@ def _blow_interval(x: Mapping[str, Any], s: _Setup) -> tuple[Any, str]:
     """
     src = x["source"]
     tool = s.tool
-    with np.errstate(all="ignore"):
-        if src == "nutrunner":
-            power = x.get("motor_power")
-            if power is None:
-                return math.nan, "give motor_power for the time between blows"
-            return nr.acceleration_time(tool.kinetic, power), (
-                f"the drive's energy T = {float(np.mean(tool.kinetic)):.4g} J restored at "
-                "constant motor power P after each blow, Δt = T/P [000, eq. 5]"
-            )
-        if src == "rare_impact":
-            cycle = closed_form_cycle(tool.striker.design, refuse=False)
-            return cycle.cycle_time, (
-                "one impact.rare cycle per blow, from motor start to re-lock (spin-up "
-                "[002, eq. 1], engagement, return, re-lock [002, eq. 4])"
-            )
-        drive = tool.drive
-        dt = where(drive > 0.0, tool.inertia * s.speed / where(drive > 0.0, drive, 1.0), math.nan)
-        return dt, (
-            "the drive torque N spins the tool from rest to ω0 after each blow, Δt = J_t·ω0/N"
-            if isinstance(drive, np.ndarray) or drive > 0.0
-            else "give a positive drive_torque for the time between blows (source 'energy')"
+    if src == "nutrunner":
+        power = x.get("motor_power")
+        if power is None:
+            return math.nan, "give motor_power for the time between blows"
+        return nr.acceleration_time(tool.kinetic, power), (
+            "the drive's energy T restored at constant motor power P after each blow, "
+            "Δt = T/P [000, eq. 5]"
         )
+    if src == "rare_impact":
+        cycle = closed_form_cycle(tool.striker.design, refuse=False)
+        return cycle.cycle_time, (
+            "one impact.rare cycle per blow, from motor start to re-lock (spin-up "
+            "[002, eq. 1], engagement, return, re-lock [002, eq. 4])"
+        )
+    drive = tool.drive
+    with np.errstate(all="ignore"):  # arrays: 0/0 and overflow are NaN and inf, as wanted
+        dt = where(drive > 0.0, tool.inertia * s.speed / where(drive > 0.0, drive, 1.0), math.nan)
+    return dt, (
+        "the drive torque N spins the tool from rest to ω0 after each blow, Δt = J_t·ω0/N"
+        if isinstance(drive, np.ndarray) or drive > 0.0
+        else "give a positive drive_torque for the time between blows (source 'energy')"
+    )
 
 
 # --------------------------------------------------------------------------- the joint
@@ -1713,14 +1713,14 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     t0 = x["snug_torque"]
     dead = s.refused.copy()
     if s.target is not None:
-        dead |= np.broadcast_to(t0 >= s.target, n)  # "snug_torque must be below the target"
+        dead |= t0 >= s.target  # "snug_torque must be below the target"
     lo, hi = x.get("preload_min"), x.get("preload_max")
     if s.per is not None and lo is not None and hi is not None:
-        dead |= np.broadcast_to(lo > hi, n)  # "preload_min must not exceed preload_max"
+        dead |= lo > hi  # "preload_min must not exceed preload_max"
     e, c, drive = s.energy, s.tool.stiffness, s.tool.drive
-    dead |= np.broadcast_to(e == 0.0, n)  # joint_energy_fraction divides by it: refused
+    dead |= e == 0.0  # joint_energy_fraction divides by it: refused (|= broadcasts)
     if ctx.rung == "energy":  # energy_blow refuses a massless nut that never stops
-        dead |= np.broadcast_to((s.rate <= 0.0) & (t0 <= drive), n)
+        dead |= (s.rate <= 0.0) & (t0 <= drive)
     with np.errstate(all="ignore"):
         p = BlowProblem(
             s.tool.inertia,
@@ -1766,18 +1766,14 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             raw["breaking_load"] = s.breaking_load
             yielded = np.broadcast_to(series.yield_blow > 0, n)
             bolt_code = _bolt_code(yielded, series.elastic_demand / s.per, s.breaking_load)
-    any_dead = bool(dead.any())
-    values: dict[str, Any] = {}
-    for name, column in raw.items():
-        column = np.asarray(column, dtype=float)
-        if column.shape != n:
-            column = np.broadcast_to(column, n)
-        if any_dead:
-            column = np.where(dead, np.nan, column)
-        # a non-finite value is null in a single run's answer (the runner's rule)
-        values[name] = (
-            column if np.isfinite(column).all() else np.where(np.isfinite(column), column, np.nan)
-        )
+    # every column at once: a refused point is NaN, and a non-finite value is null in a
+    # single run's answer (the runner's rule), so NaN here
+    table = np.empty((len(raw), *n))
+    for row, column in zip(table, raw.values(), strict=True):
+        row[...] = column  # one number for all points is broadcast
+    table[:, dead] = np.nan
+    table[~np.isfinite(table)] = np.nan
+    values: dict[str, Any] = dict(zip(raw, table, strict=True))
     values["blows_to_target"] = _nullable(reached, dead | (reached == 0))
     checks: dict[str, np.ndarray] = {}
     # a point the model refuses reports no check; if every point is refused, no check at all
