@@ -1034,6 +1034,13 @@ _BLOW_OUTPUTS = tuple(
     o.name for o in _OUTPUTS if not o.series and not o.name.startswith(("clutch", "delivered"))
 )
 
+#: The rigid rung on a joint whose torque does not rise (k_j = 0): refused, by name.
+_RIGID_NEEDS_A_RATE = (
+    "the rigid rung takes the joint to the blow's torque √(2EC) along its torque rate; with "
+    "joint_rate 0 the joint's torque does not rise (a free struck side or a constant "
+    "torque): use fidelity 'simulation'"
+)
+
 #: Outputs that need the time between blows (:func:`_blow_interval`).
 _TIME_OUTPUTS = (
     "blow_interval",
@@ -1431,6 +1438,8 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     max_blows = int(x["max_blows"])
     if target is not None and t0 >= target:
         raise InputOutOfRange("snug_torque must be below the target torque", field="snug_torque")
+    if ctx.rung == "rigid" and s.rate <= 0.0:
+        raise InputOutOfRange(_RIGID_NEEDS_A_RATE, field="joint_rate")
     e = s.energy
     tool_values: dict[str, Any] = {n: float(v) for n, v in _tool_values(x, s).items()}
     saturation = tool_values["saturation_torque"]
@@ -1721,6 +1730,8 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     dead |= e == 0.0  # joint_energy_fraction divides by it: refused (|= broadcasts)
     if ctx.rung == "energy":  # energy_blow refuses a massless nut that never stops
         dead |= (s.rate <= 0.0) & (t0 <= drive)
+    elif ctx.rung == "rigid":
+        dead |= s.rate <= 0.0  # _RIGID_NEEDS_A_RATE
     with np.errstate(all="ignore"):
         p = BlowProblem(
             s.tool.inertia,

@@ -180,3 +180,19 @@ def test_blows_against_time_on_arrays_are_each_designs_own() -> None:
         alone = run(BLOW, {**ENERGY_M16, "drive_torque": n}, fidelity="energy").results
         for name in ("blows_per_second", "time_to_final"):
             assert swept.results[name][j] == pytest.approx(alone[name], rel=1e-12)
+
+
+def test_the_rigid_rung_refuses_a_joint_whose_torque_does_not_rise() -> None:
+    # √(2EC) is a fixed end's peak; "the joint reaches it" needs a torque rate: at k_j = 0
+    # the rigid rung said the free side's joint ended at 1028.3 N·m. Refused by name, and
+    # masked on arrays
+    from engine import sweep
+    from engine.core.errors import InputOutOfRange
+
+    with pytest.raises(InputOutOfRange, match="joint_rate 0") as refused:
+        run(BLOW, FREE, fidelity="rigid")
+    assert refused.value.field == "joint_rate"
+    swept = sweep(BLOW, FREE, "joint_rate", [0.0, 100.0], fidelity="rigid")
+    assert swept.results["final_torque"][0] is None
+    m = math.sqrt(2 * 0.5 * JT * W0 * W0 * C)  # 1028.3 N·m, [000, eq. 7–8]
+    assert swept.results["final_torque"][1] == pytest.approx(m, rel=1e-12)
