@@ -902,10 +902,11 @@ def _content_key(x: Mapping[str, Any]) -> tuple[Any, ...]:
     >>> k == _content_key({"v": a, "s": "x"})
     False
     """
-    return tuple(
-        (k, v.shape, v.dtype.str, hash(v.tobytes())) if isinstance(v, np.ndarray) else (k, v)
-        for k, v in x.items()
-    )
+    nd = np.ndarray
+    arrays = [
+        (k, v.shape, v.dtype.str, hash(v.tobytes())) for k, v in x.items() if isinstance(v, nd)
+    ]
+    return tuple(x), tuple([v for v in x.values() if not isinstance(v, nd)]), tuple(arrays)
 
 
 def _setup(x: Mapping[str, Any]) -> _Setup:
