@@ -1481,10 +1481,11 @@ def blow_series(
     per_blow: dict[str, list[Any]] = {"peak": [], "rotation": [], "torque": [], "work": []}
     kept_peak, kept_rot, kept_torque, kept_work = per_blow.values()
     for i in range(top):
-        if many:  # the designs still running
-            t0 = torque[idx]
-            ty_i, target_i, held_i = _at(ty, idx), _at(target, idx), _at(held, idx)
-            args = (_at(e, idx), _at(c, idx), _at(k, idx), t0, _at(b, idx), _at(n, idx))
+        if many:  # the designs still running (a slice while it is all of them: no copies)
+            at: Any = slice(None) if idx.size == limit.size else idx
+            t0 = torque[at]
+            ty_i, target_i, held_i = _at(ty, at), _at(target, at), _at(held, at)
+            args = (_at(e, at), _at(c, at), _at(k, at), t0, _at(b, at), _at(n, at))
         else:
             t0, ty_i, target_i, args, held_i = torque, ty, target, (e, c, k, torque, b, n), held
         if method == "energy":  # blow_step's energy branch, with the held peak worked out once
@@ -1530,15 +1531,16 @@ def blow_series(
             kept_work.append(blow[3])
         if many:
             if i == 0:
-                peak0[idx], rot0[idx], after0[idx], work0[idx] = peak, rot, new, work
-            total[idx] += work
-            blows[idx] = i + 1
-            torque[idx] = new
-            yielded[idx[past]] = i + 1
-            demand[idx[past]] = elastic[past]
-            reached[idx[hit]] = i + 1
-            saturated[idx] = stuck
-            idx = idx[~(hit | past | stuck | (limit[idx] <= i + 1))]
+                peak0[at], rot0[at], after0[at], work0[at] = peak, rot, new, work
+            total[at] += work
+            blows[at] = i + 1
+            torque[at] = new
+            # a mask over the running designs picks from idx; over all of them, it is one
+            yielded[_pick(at, idx, past)] = i + 1
+            demand[_pick(at, idx, past)] = elastic[past]
+            reached[_pick(at, idx, hit)] = i + 1
+            saturated[at] = stuck
+            idx = idx[~(hit | past | stuck | (limit[at] <= i + 1))]
             if not idx.size:
                 break
         else:
@@ -1561,9 +1563,14 @@ def blow_series(
     return BlowSeries(*found, steps=steps, first=first, per_blow=per_blow if keep else {})
 
 
-def _at(v: Any, idx: np.ndarray) -> Any:
-    """The designs ``idx`` of an input of many designs; one number (or None) as it is."""
-    return v[idx] if isinstance(v, np.ndarray) else v
+def _at(v: Any, at: Any) -> Any:
+    """The designs ``at`` (indices or a slice) of an input of many; one number as it is."""
+    return v[at] if isinstance(v, np.ndarray) else v
+
+
+def _pick(at: Any, idx: np.ndarray, mask: Any) -> Any:
+    """The designs where ``mask`` (over the running ones) holds, as an index into all."""
+    return mask if isinstance(at, slice) else idx[mask]
 
 
 def _rows(idx: np.ndarray, size: int, shape: tuple[int, ...], *values: np.ndarray) -> list[Any]:
