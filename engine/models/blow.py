@@ -701,6 +701,14 @@ def _blow_interval(x: Mapping[str, Any], s: _Setup) -> tuple[Any, str]:
         )
     if src == "rare_impact":
         cycle = closed_form_cycle(tool.striker.design, refuse=False)
+        one = not isinstance(cycle.refusal, np.ndarray)
+        if one and cycle.refused:
+            return math.nan, (
+                "impact.rare refuses the striker's cycle (its motor never reaches the release "
+                "speed, or the preloads do not hold the half-coupling)"
+            )
+        if one and not math.isfinite(cycle.cycle_time):
+            return math.nan, "the striker's cycle never re-locks (impact.rare)"
         return cycle.cycle_time, (
             "one impact.rare cycle per blow, from motor start to re-lock (spin-up "
             "[002, eq. 1], engagement, return, re-lock [002, eq. 4])"
@@ -1492,7 +1500,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             found["time_to_final"] = n * interval
             notes.append(f"time: {why}; the blows' own duration (ms) is not added")
         else:
-            notes.append(f"blow_interval is null: {why or 'the striker never re-locks'}")
+            notes.append(f"blow_interval is null: {why}")
     if per is not None:
         found["yield_preload"] = s.yield_preload
         # null where only R_p0.2 is given

@@ -196,3 +196,13 @@ def test_the_rigid_rung_refuses_a_joint_whose_torque_does_not_rise() -> None:
     assert swept.results["final_torque"][0] is None
     m = math.sqrt(2 * 0.5 * JT * W0 * W0 * C)  # 1028.3 N·m, [000, eq. 7–8]
     assert swept.results["final_torque"][1] == pytest.approx(m, rel=1e-12)
+
+
+def test_a_striker_motor_too_slow_for_its_release_speed_gives_no_time_and_says_why() -> None:
+    # a no-load speed of 100 rad/s below the release speed (~244 rad/s): impact.rare refuses
+    # the cycle; the blow itself (its release speed does not depend on the motor) still runs
+    from engine.models.blow import RARE_IMPACT_M16
+
+    r = run(BLOW, {**RARE_IMPACT_M16, "motor_no_load_speed": 100.0}, fidelity="energy")
+    assert r.results["blow_interval"] is None and r.results["final_preload"] is not None
+    assert any("refuses the striker's cycle" in note for note in r.notes)
