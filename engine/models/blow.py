@@ -39,7 +39,12 @@ from ..physics.blow import (
 )
 from ..physics.joint import clamped_compliance as vdi_clamped_compliance
 from ..physics.rare_impact import rotating_inertia
-from ..procedures.striker_cycle import closed_form_cycle, release_radius_of, release_speed_of
+from ..procedures.striker_cycle import (
+    NOT_HELD,
+    closed_form_cycle,
+    release_radius_of,
+    release_speed_of,
+)
 from .clutch import BALL_CLUTCH
 from .nutrunner import NUTRUNNER_DRIVE
 from .preload import (
@@ -541,6 +546,7 @@ class _Striker:
     energy: Any  # ½·I·ω_M² [J]
     refused: Any  # where impact.rare refuses the design
     design: dict[str, Any]  # impact.rare's inputs
+    cycle: Any = None  # impact.rare's closed-form cycle of one design, where it was worked out
 
 
 def _striker(x: Mapping[str, Any], one: bool) -> _Striker:
@@ -566,17 +572,21 @@ def _striker(x: Mapping[str, Any], one: bool) -> _Striker:
     design = {**_STRIKER_DEFAULTS, **{n: x[n] for n in _RI_NAMES}}
     design.update((n, x[n]) for n in _RI_MOTOR if x.get(n) is not None)
     refused: Any = False
-    if one or not any(isinstance(design[n], np.ndarray) for n in _RI_NAMES):
-        # one striker (a single run, or a sweep of anything else): impact.rare's stage 1
+    cycle: Any = None
+    if one:  # one design: impact.rare's cycle, whose release the blow and whose time it needs
+        cycle = closed_form_cycle(design, refuse=False)
+        if cycle.refusal == NOT_HELD:
+            closed_form_cycle(design)  # raises the refusal with its reason
+        w_m, r = float(cycle.release_speed), float(cycle.release_radius)
+    elif not any(isinstance(design[n], np.ndarray) for n in _RI_NAMES):
+        # one striker in a sweep of anything else: impact.rare's stage 1
         try:
             w_m, r = release_speed_of(design), release_radius_of(design)
         except InfeasibleDesign:
-            if one:
-                raise
             w_m = r = math.nan
             refused = True
     else:
-        cycle: Any = closed_form_cycle(design, refuse=False)
+        cycle = closed_form_cycle(design, refuse=False)
         w_m, r, refused = cycle.release_speed, cycle.release_radius, cycle.refused
     with np.errstate(all="ignore"):
         inertia = rotating_inertia(
@@ -586,7 +596,7 @@ def _striker(x: Mapping[str, Any], one: bool) -> _Striker:
             r,
             rollers_counted=design["roller_geometry"] != "paper",
         )
-        return _Striker(w_m, r, inertia, 0.5 * inertia * w_m * w_m, refused, design)
+        return _Striker(w_m, r, inertia, 0.5 * inertia * w_m * w_m, refused, design, cycle)
 
 
 def _striker_note(s: _Striker) -> str:
@@ -700,7 +710,7 @@ def _blow_interval(x: Mapping[str, Any], s: _Setup) -> tuple[Any, str]:
             "Δt = T/P [000, eq. 5]"
         )
     if src == "rare_impact":
-        cycle = closed_form_cycle(tool.striker.design, refuse=False)
+        cycle = tool.striker.cycle or closed_form_cycle(tool.striker.design, refuse=False)
         one = not isinstance(cycle.refusal, np.ndarray)
         if one and cycle.refused:
             return math.nan, (
