@@ -43,9 +43,6 @@ from ..physics.preload_methods import (
 from ..procedures import bolt as fz
 from ..procedures.bolt import Bolt, BoltArrays, resolve_bolt, resolve_bolts
 
-#: The one bolt resolution for many points, under the name blow.joint imports it by.
-resolve_bolt_arrays = resolve_bolts
-
 SOURCE = (
     "[004] review of preload selection and tightening control, eq. 2–19, "
     "fig. 1–9; VDI 2230-1:2015 steps R7 and R13, Table A8;"

@@ -43,7 +43,6 @@ from ..procedures.striker_cycle import (
     GEOMETRIES,
     CycleOutcome,
     closed_form_cycle,
-    closed_form_cycle_array,
     closed_form_errors,
     release_speed_of,
     relock_friction,
@@ -142,7 +141,7 @@ def _cycle(x: Mapping[str, Any], scratch: Scratch) -> CycleOutcome:
     Once per request: the rung estimate and the outputs of a run (or of a sweep chunk)
     read the same cycle from the request's ``scratch``, which no other request sees.
     """
-    return scratch.once("impact.rare cycle", lambda: closed_form_cycle_array(x))
+    return scratch.once("impact.rare cycle", lambda: closed_form_cycle(x, refuse=False))
 
 
 def _errors(x: Mapping[str, Any], scratch: Scratch) -> dict[str, Any]:
@@ -232,7 +231,7 @@ def _outputs(x: Mapping[str, Any], o: CycleOutcome) -> dict[str, Any]:
             "return_time": where(returns, o.return_time, math.nan),
             "striker_home_time": where(returns, t_home, math.nan),
             "relock_time": where(relocks, o.relock_time, math.nan),
-            "cycle_time": where(relocks, t_home + o.relock_time, math.nan),
+            "cycle_time": o.cycle_time,
         }
 
 
@@ -272,7 +271,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """The closed form at many points (the array path of sweeps and studies).
 
     The same lines as a single run (:func:`_outputs`, :func:`_verdicts` on
-    :func:`engine.procedures.striker_cycle.closed_form_cycle_array`); NaN/None where a single
+    :func:`engine.procedures.striker_cycle.closed_form_cycle`); NaN/None where a single
     run refuses the point or leaves the output null, and the verdicts of
     :func:`design_checks` as ``check_arrays``.
     """
@@ -1108,7 +1107,7 @@ RARE_IMPACT = ModelSpec(
             typical_time="~60 µs",
             shared_estimate=_closed_form_estimate,
             steps=(
-                closed_form_cycle_array,
+                closed_form_cycle,
                 closed_form_errors,
                 _outputs,
                 design_checks,

@@ -55,7 +55,7 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field, fields
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -69,9 +69,7 @@ __all__ = [
     "BlowOutcome",
     "BlowProblem",
     "BlowSeries",
-    "BlowSeriesArrays",
     "blow_series",
-    "blow_series_array",
     "bolt_joint_torque",
     "clutch_preload_window",
     "contact_restitution",
@@ -96,6 +94,8 @@ ISO5393_ANGLE = {"hard": math.radians(30.0), "soft": math.radians(720.0)}
 STEPS_PER_PERIOD = 200
 _BISECT = 60
 _SERIES_CAP = 400
+
+_ARRAY = np.ndarray
 
 #: The blow kernel's measured cost per RK4 step in this process (issue 21: budgets in
 #: time, not steps); the prior is a slow machine's figure (~0.3 µs measured on the 2-core
@@ -282,7 +282,7 @@ def held_blow_peak(energy: Any, stiffness: Any, drive_torque: Any = 0.0) -> Any:
     >>> round(float(held_blow_peak(100.0, 2.0e4, 10.0)), 3)  # 10 + √(100 + 4e6)
     2010.025
     """
-    return drive_torque + sqrt(drive_torque * drive_torque + 2.0 * energy * stiffness)
+    return drive_torque + _sqrt(drive_torque * drive_torque + 2.0 * energy * stiffness)
 
 
 def energy_blow(
@@ -292,6 +292,7 @@ def energy_blow(
     start_torque: Any,
     breakaway: Any = 1.0,
     drive_torque: Any = 0.0,
+    held_peak: Any = None,
 ) -> tuple[Any, Any, Any, Any]:
     r"""One blow by energy balance, struck inertia neglected (floats or numpy arrays).
 
@@ -320,6 +321,9 @@ def energy_blow(
         b ≥ 1, static over kinetic friction, [-]
     drive_torque : float or array, optional
         N, net torque driving the tool during the blow (feed less drag), [N*m]
+    held_peak : float, array or None, optional
+        :func:`held_blow_peak` of (E, C, N) where the caller has it (a run of blows: the
+        same for every blow of a design), [N*m]
 
     Returns
     -------
@@ -352,11 +356,17 @@ def energy_blow(
     [60.0, 60.0, 1.665, 99.91]
     """
     e, c, k, t0, b, n = energy, stiffness, rate, start_torque, breakaway, drive_torque
-    single = not is_array(e, c, k, t0, b, n)
-    if single:  # one design: the same steps without numpy's per-call cost (35 blows ×)
-        held = held_blow_peak(e, c, n)
+    if not (  # one design (is_array's test, spelled out: this runs once per blow)
+        e.__class__ is _ARRAY
+        or c.__class__ is _ARRAY
+        or k.__class__ is _ARRAY
+        or t0.__class__ is _ARRAY
+        or b.__class__ is _ARRAY
+        or n.__class__ is _ARRAY
+    ):  # one design: the same steps without numpy's per-call cost (35 blows ×)
+        held = held_blow_peak(e, c, n) if held_peak is None else held_peak
         if held <= b * t0:
-            return float(held), float(t0), 0.0, 0.0
+            return held, t0, 0.0, 0.0
         if k <= 0.0:
             if t0 <= n:
                 raise InfeasibleDesign(
@@ -366,12 +376,12 @@ def energy_blow(
                     field="joint_rate",
                 )
             rot = _constant_torque_rotation(e, c, t0, n)
-            return float(max(b * t0, t0)), float(t0), float(rot), float(t0 * rot)
+            return max(b * t0, t0), t0, rot, t0 * rot
         tp, rot, work = _rising_joint_blow(e, c, k, t0, n)
         peak = b * t0 if tp <= b * t0 else tp  # NaN stays NaN, as np.maximum on arrays
-        return float(peak), float(tp), float(rot), float(work)
+        return peak, tp, rot, work
     with np.errstate(all="ignore"):
-        held = held_blow_peak(e, c, n)
+        held = held_blow_peak(e, c, n) if held_peak is None else held_peak
         holds = held <= b * t0
         flat = k <= 0.0
         stops = t0 > n  # a constant joint torque stops the nut only above the drive torque
@@ -393,8 +403,22 @@ def _rising_joint_blow(e: Any, c: Any, k: Any, t0: Any, n: Any) -> tuple[Any, An
     """(T_p, rotation, work) of :func:`energy_blow`'s balance on a joint of rate k > 0."""
     a = 0.5 * (1.0 / c + 1.0 / k)
     rhs = e + t0 * t0 / (2.0 * k) - n * t0 / k
-    tp = n + sqrt(n * n + rhs / a)
+    tp = n + _sqrt(n * n + rhs / a)
     return tp, (tp - t0) / k, 0.5 * (tp * tp - t0 * t0) / k
+
+
+def _sqrt(v: Any) -> Any:
+    """:func:`engine.numerics.ode.sqrt` that keeps a Python float a Python float.
+
+    The blow loop of one design stays in plain floats, whose arithmetic costs a twentieth
+    of numpy scalars'; any other value goes to ``sqrt`` as it is.
+
+    >>> _sqrt(2.25), _sqrt(-1.0), _sqrt(np.array([4.0])).tolist()
+    (1.5, nan, [2.0])
+    """
+    if v.__class__ is float:
+        return math.sqrt(v) if v >= 0.0 else math.nan
+    return sqrt(v)
 
 
 def _constant_torque_rotation(e: Any, c: Any, t0: Any, n: Any) -> Any:
@@ -498,7 +522,8 @@ def bolt_joint_torque(elastic_torque: Any, yield_torque: Any) -> Any:
     >>> bolt_joint_torque(np.array([300.0, 400.0]), 350.0).tolist()
     [300.0, 350.0]
     """
-    return np.minimum(elastic_torque, yield_torque)
+    # pymin: NaN stays NaN (where, not pymin's extra call: this runs once per blow)
+    return where(yield_torque < elastic_torque, yield_torque, elastic_torque)
 
 
 def blow_gains_nothing(rotation: Any, torque_after: Any, torque_before: Any) -> Any:
@@ -522,10 +547,11 @@ def blow_gains_nothing(rotation: Any, torque_after: Any, torque_before: Any) -> 
     >>> blow_gains_nothing(0.0, 100.0, 100.0), blow_gains_nothing(0.1, 101.0, 100.0)
     (True, False)
     """
+    scale = abs(torque_after)
     stuck = (rotation <= 1e-12) | (
-        torque_after - torque_before <= 1e-12 * pymax(abs(torque_after), 1.0)
+        torque_after - torque_before <= 1e-12 * where(scale > 1.0, scale, 1.0)
     )
-    return stuck if is_array(stuck) else bool(stuck)
+    return stuck if stuck.__class__ is _ARRAY else bool(stuck)
 
 
 def energy_blow_error(
@@ -902,19 +928,23 @@ _blow_kernel_c = jit(_blow_kernel)
 
 @dataclass(frozen=True)
 class BlowProblem:
-    """One blow reduced to numbers (SI)."""
+    """One blow reduced to numbers (SI): floats, or arrays of one shape for many designs.
 
-    tool_inertia: float  # J_t [kg m²]
-    struck_inertia: float  # J_s [kg m²]
-    stiffness: float  # C [N m/rad]
-    speed: float  # ω_0 [rad/s]
-    rate: float  # k_j [N m/rad]
-    breakaway: float = 1.0  # b [-]
-    drive_torque: float = 0.0  # N [N m]
-    restitution: float = 1.0  # e [-]
+    The simulation takes one design (floats); :func:`blow_series`' rigid and energy rungs
+    and :func:`energy_peak_error` take many.
+    """
+
+    tool_inertia: Any  # J_t [kg m²]
+    struck_inertia: Any  # J_s [kg m²]
+    stiffness: Any  # C [N m/rad]
+    speed: Any  # ω_0 [rad/s]
+    rate: Any  # k_j [N m/rad]
+    breakaway: Any = 1.0  # b [-]
+    drive_torque: Any = 0.0  # N [N m]
+    restitution: Any = 1.0  # e [-]
 
     @property
-    def energy(self) -> float:
+    def energy(self) -> Any:
         """Kinetic energy of the tool, [J]."""
         return 0.5 * self.tool_inertia * self.speed**2
 
@@ -1032,12 +1062,16 @@ def simulate_blow(
     t_total = 0.0
     while True:
         if deadline is not None and time.perf_counter() > deadline:
+            if st[0] <= 0.0 and st[3] > 0.0:
+                raise _coasting(f"its time budget after {total} steps", p, start_torque)
             raise BudgetExceeded(
                 f"the blow simulation stopped at its time budget after {total} steps",
                 field="fidelity",
             )
         chunk = min(200_000, max_steps - total)
         if chunk <= 0:
+            if st[0] <= 0.0 and st[3] > 0.0:
+                raise _coasting(f"its budget of {max_steps} steps", p, start_torque)
             raise BudgetExceeded(
                 f"one blow used its budget of {max_steps} steps without ending (a nut much "
                 "lighter than the tool on a stiff joint, or a joint that never stops it); use "
@@ -1082,14 +1116,26 @@ def simulate_blow(
     )
 
 
+def _coasting(budget: str, p: BlowProblem, start_torque: float) -> BudgetExceeded:
+    """The budget ran out with the jaws apart and the nut still turning: say so."""
+    return BudgetExceeded(
+        f"one blow used {budget} with the nut still coasting after the jaws parted: the "
+        f"joint's torque (T_0 = {start_torque:.4g} N·m, k_j = {p.rate:.4g} N·m/rad) barely "
+        "slows it; for a free struck side give joint_rate 0 and snug_torque 0 (the blow then "
+        "ends when the jaws part)",
+        field="joint_rate",
+    )
+
+
 def simulate_blow_reference(
     p: BlowProblem, start_torque: float, *, rtol: float = 1e-10, method: str = "DOP853"
 ) -> tuple[float, float, int]:
     """The same blow by scipy's ``solve_ivp``, one solve per stick/slip phase with terminal events.
 
     Independent of the compiled kernel (its own right-hand side and scipy's
-    event location); the peak is read on a 2001-point grid of each phase's
-    dense output.
+    event location); the peak is found on a 2001-point grid of each phase's
+    dense output and refined by Brent's bounded search between the grid
+    points beside it (the dense output's own accuracy, not the grid's ~1e-6).
 
     Parameters
     ----------
@@ -1108,6 +1154,7 @@ def simulate_blow_reference(
         (peak torque [N*m], nut rotation [rad], RHS evaluations [-])
     """
     from scipy.integrate import solve_ivp
+    from scipy.optimize import minimize_scalar
 
     jt, js, c, k, b, n = (
         p.tool_inertia,
@@ -1166,10 +1213,21 @@ def simulate_blow_reference(
                             atol=rtol * 1e-6, events=(ev_stop, ev_sep),
                             dense_output=True, max_step=period)  # fmt: skip
         nfev += int(sol.nfev)
-        dense = sol.sol(np.linspace(sol.t[0], sol.t[-1], 2001))
+        grid = np.linspace(sol.t[0], sol.t[-1], 2001)
+        dense = sol.sol(grid)
         twist = dense[0]
         torque = np.where(twist > 0.0, c * twist + cd * (dense[1] - dense[3]), 0.0)
-        peak = max(peak, float(np.max(torque)))
+        j = int(np.argmax(torque))
+        peak = max(peak, float(torque[j]))
+        if torque[j] > 0.0:  # refine between the grid points beside the grid's maximum
+            lo, hi = grid[max(j - 1, 0)], grid[min(j + 1, len(grid) - 1)]
+            found = minimize_scalar(
+                lambda t, s=sol: -spring(s.sol(t)),
+                bounds=(lo, hi),
+                method="bounded",
+                options={"xatol": 1e-15 * max(abs(hi), 1e-300)},
+            )
+            peak = max(peak, -float(found.fun))
         y = sol.y[:, -1].copy()
         t = float(sol.t[-1])
         hit = [i for i, e in enumerate(sol.t_events) if len(e)]
@@ -1243,20 +1301,30 @@ def clutch_preload_window(
 
 @dataclass
 class BlowSeries:
-    """A run of blows on one joint, each starting from the torque the last one left."""
+    """A run of blows on one joint or many, each blow starting from the torque the last one left.
 
-    peak: list[float]
-    rotation: list[float]
-    torque_after: list[float]
-    joint_work: list[float]
-    blows_to_target: int | None
-    saturated: bool
+    Floats for one design, arrays of one shape for many (one design each). ``blows_to_target``
+    and ``yield_blow`` are 0 where the target is not reached and the bolt stays elastic;
+    ``per_blow`` holds each blow's numbers in order where the run kept them (``history``).
+    """
+
+    peak: Any  # the first blow's peak spring torque [N m]
+    rotation: Any  # the first blow's nut rotation [rad]
+    torque_after: Any  # the joint torque after the first blow [N m]
+    work: Any  # the first blow's work into the joint [J]
+    final_torque: Any  # the joint torque after the last blow [N m]
+    joint_work: Any  # the work of all blows into the joint, summed in their order [J]
+    blows: Any  # blows run [-]
+    blows_to_target: Any  # the blow that reached the target, 1-based (0: not reached)
+    saturated: Any  # the last blow no longer turned the nut
+    #: The blow that reached the bolt's yield torque, 1-based (0: the bolt stayed elastic)
+    yield_blow: Any
+    #: The joint torque that blow would have reached on the elastic line, [N*m] (NaN: none)
+    elastic_demand: Any
     steps: int = 0
     first: BlowOutcome | None = None
-    #: The blow that reached the bolt's yield torque, 1-based (None: the bolt stayed elastic)
-    yield_blow: int | None = None
-    #: The joint torque that blow would have reached on the elastic line, [N*m]
-    elastic_demand: float | None = None
+    #: Each blow's "peak", "rotation", "torque" (after it) and "work", in order
+    per_blow: dict[str, list[Any]] = field(default_factory=dict)
 
 
 def energy_peak_error(p: BlowProblem, peak: Any) -> Any:
@@ -1294,34 +1362,37 @@ def energy_peak_error(p: BlowProblem, peak: Any) -> Any:
 
 def blow_series(
     p: BlowProblem,
-    start_torque: float,
+    start_torque: Any,
     method: str,
     *,
-    target_torque: float | None = None,
-    max_blows: int = 100,
+    target_torque: Any = None,
+    max_blows: Any = 100,
     record_first: bool = False,
     max_steps: int = 1_000_000,
     deadline: float | None = None,
-    yield_torque: float = math.inf,
+    yield_torque: Any = math.inf,
+    history: bool | None = None,
 ) -> BlowSeries:
-    """Blows by ``method`` (``rigid``, ``energy`` or ``simulation``) until the target or no gain.
+    """Blows by ``method`` until the target or no gain, for one design or many.
 
     Stops at the first blow that brings the joint torque to ``target_torque``,
     when a blow no longer turns the nut (the joint holds against the blow:
-    saturation), or after ``max_blows``. The rigid rung takes the joint to the
-    blow's peak torque in one blow ([000, eq. 7–8, 10]: √(2EC) + N).
+    saturation), at the blow that takes the bolt to its yield torque, or after
+    ``max_blows``. The rigid rung takes the joint to the blow's peak torque in one
+    blow ([000, eq. 7–8, 10]: √(2EC) + N).
 
     Parameters
     ----------
     p : BlowProblem
-        Tool, struck side and joint
-    start_torque : float
+        Tool, struck side and joint; its numbers may be arrays of one shape (one design
+        each) on the ``rigid`` and ``energy`` rungs
+    start_torque : float or array
         Joint torque before the first blow (snug), [N*m]
     method : str
-        ``rigid``, ``energy`` or ``simulation``
-    target_torque : float or None
+        ``rigid``, ``energy`` or ``simulation`` (one design)
+    target_torque : float, array or None
         Stop at the first blow that reaches it, [N*m]
-    max_blows : int
+    max_blows : int or array
         Most blows, [-]
     record_first : bool
         Keep the torque against time of the first blow (simulation)
@@ -1330,33 +1401,97 @@ def blow_series(
         budget is what the time left affords (:func:`engine.numerics.ode.step_budget`)
     deadline : float or None
         ``time.perf_counter()`` value after which the run stops, [s]
-    yield_torque : float
+    yield_torque : float or array
         T_y, the joint torque at which the bolt yields (:func:`bolt_joint_torque`);
         the run stops at the blow that reaches it (further blows only stretch the
         bolt at T_y), [N*m]
+    history : bool or None
+        Keep each blow's numbers in ``per_blow`` (default: for one design only)
 
     Returns
     -------
     BlowSeries
+
+    Notes
+    -----
+    One loop for one design and many: each blow is :func:`blow_step` (or
+    :func:`simulate_blow`) on the designs still running, bent over at yield by
+    :func:`bolt_joint_torque`, and stopped by the same rules; on arrays the designs
+    that have stopped drop out of the next blow.
+
+    Examples
+    --------
+    M = √(2·100·2e4) = 2000 N·m on the rigid rung; the energy rung's first blow is
+    :func:`energy_blow`'s 440.346 N·m, and two designs reach 600 N·m in 2 and 5 blows:
+
+    >>> s = blow_series(BlowProblem(0.02, 1e-3, 2.0e4, 100.0, 1000.0), 60.0, "energy",
+    ...                 target_torque=600.0)
+    >>> round(s.torque_after, 3), s.blows_to_target, len(s.per_blow["torque"])
+    (440.346, 2, 2)
+    >>> two = BlowProblem(0.02, 1e-3, 2.0e4, np.array([100.0, 50.0 * math.sqrt(2.0)]), 1000.0)
+    >>> blow_series(two, 60.0, "energy", target_torque=600.0).blows_to_target.tolist()
+    [2, 5]
     """
+    e, c, k, b, n = p.energy, p.stiffness, p.rate, p.breakaway, p.drive_torque
+    given = (e, c, k, b, n, start_torque, target_torque, max_blows, yield_torque)
+    many = is_array(*given)
+    keep = not many if history is None else history
+    # floats for one design, flat arrays over the designs for many
+    peak0: Any
+    rot0: Any
+    after0: Any
+    work0: Any
+    demand: Any
+    total: Any
+    blows: Any
+    reached: Any
+    yielded: Any
+    saturated: Any
+    torque: Any
+    if many:
+        if method == "simulation":
+            raise ValueError("the simulation rung runs one design at a time")
+        shape = np.broadcast_shapes(*(np.shape(v) for v in given if v is not None))
+
+        def full(v: Any) -> np.ndarray:
+            return np.array(np.broadcast_to(np.asarray(v, dtype=float), shape)).ravel()
+
+        def flat(v: Any) -> Any:  # an input of many designs flat; one number as it is
+            return full(v) if isinstance(v, np.ndarray) else v
+
+        e, c, k, b, n, ty = flat(e), flat(c), flat(k), flat(b), flat(n), flat(yield_torque)
+        held = held_blow_peak(e, c, n)
+        torque = full(start_torque)
+        target = None if target_torque is None else flat(target_torque)
+        limit = full(max_blows)
+        peak0, rot0, after0, work0, demand = (np.full(limit.size, np.nan) for _ in range(5))
+        total = np.zeros(limit.size)
+        blows, reached, yielded = (np.zeros(limit.size, dtype=np.int64) for _ in range(3))
+        saturated = np.zeros(limit.size, dtype=bool)
+        idx = np.flatnonzero(limit > 0)
+        top = int(limit.max(initial=0))
+    else:
+        torque, ty, target, top = start_torque, yield_torque, target_torque, int(max_blows)
+        held = held_blow_peak(e, c, n)
+        peak0 = rot0 = after0 = work0 = demand = math.nan
+        total, blows, reached, yielded, saturated = 0.0, 0, 0, 0, False
     budget = step_budget(deadline, max_steps) if method == "simulation" else max_steps
-    peaks: list[float] = []
-    rots: list[float] = []
-    after: list[float] = []
-    works: list[float] = []
-    torque = start_torque
     steps = 0
     first: BlowOutcome | None = None
-    reached: int | None = None
-    saturated = False
-    yield_blow: int | None = None
-    demand: float | None = None
-    e, c = p.energy, p.stiffness
-    for i in range(max_blows):
-        if method in ("rigid", "energy"):
-            peak, new, rot, work = blow_step(
-                method, e, c, p.rate, torque, p.breakaway, p.drive_torque
-            )
+    per_blow: dict[str, list[Any]] = {"peak": [], "rotation": [], "torque": [], "work": []}
+    kept_peak, kept_rot, kept_torque, kept_work = per_blow.values()
+    for i in range(top):
+        if many:  # the designs still running (a slice while it is all of them: no copies)
+            at: Any = slice(None) if idx.size == limit.size else idx
+            t0 = torque[at]
+            ty_i, target_i, held_i = _at(ty, at), _at(target, at), _at(held, at)
+            args = (_at(e, at), _at(c, at), _at(k, at), t0, _at(b, at), _at(n, at))
+        else:
+            t0, ty_i, target_i, args, held_i = torque, ty, target, (e, c, k, torque, b, n), held
+        if method == "energy":  # blow_step's energy branch, with the held peak worked out once
+            peak, elastic, rot, work = energy_blow(*args, held_i)
+        elif method == "rigid":
+            peak, elastic, rot, work = blow_step(method, *args)
         else:
             left = budget - steps
             if left <= 0:
@@ -1368,170 +1503,81 @@ def blow_series(
                     expected_steps=float(budget),
                 )
             out = simulate_blow(
-                p, torque, record=record_first and i == 0, max_steps=left, deadline=deadline
+                p, t0, record=record_first and i == 0, max_steps=left, deadline=deadline
             )
             steps += out.steps
             if i == 0:
                 first = out
-            peak, new, rot, work = out.peak_torque, out.torque_after, out.rotation, out.joint_work
-        if new >= yield_torque:
-            yield_blow, demand = i + 1, new
-            new = float(bolt_joint_torque(new, yield_torque))
-        peaks.append(peak)
-        rots.append(rot)
-        after.append(new)
-        works.append(work)
-        if target_torque is not None and new >= target_torque:
-            reached = i + 1
-            break
-        if yield_blow is not None:
-            break  # ideally plastic: another blow turns the nut at T_y, the torque stays
-        if blow_gains_nothing(rot, new, torque):
-            saturated = True
-            break
-        if method == "rigid":
-            saturated = True  # the rigid rung's joint cannot rise past the blow's torque
-            break
-        torque = new
-    return BlowSeries(
-        peaks, rots, after, works, reached, saturated, steps, first, yield_blow, demand
-    )
-
-
-# ---------------------------------------------------------------------------
-# Rungs 1 and 2 on arrays (sweeps and studies: several inputs may vary at once)
-# ---------------------------------------------------------------------------
-
-
-@dataclass
-class BlowSeriesArrays:
-    """:class:`BlowSeries` of the rigid or energy rung at many points (first and last blow).
-
-    ``blows_to_target`` is 0 where the target is not reached (or there is none);
-    ``joint_work`` the sum over the blows, in their order.
-    """
-
-    peak: np.ndarray  # first blow
-    rotation: np.ndarray  # first blow
-    torque_after: np.ndarray  # first blow
-    work: np.ndarray  # first blow
-    final_torque: np.ndarray
-    joint_work: np.ndarray
-    blows: np.ndarray  # number of blows run
-    blows_to_target: np.ndarray
-    saturated: np.ndarray
-    yield_blow: np.ndarray  # the blow that reached T_y (0: the bolt stayed elastic)
-    elastic_demand: np.ndarray  # that blow's joint torque on the elastic line (NaN: none)
-
-
-def blow_series_array(
-    energy: Any,
-    stiffness: Any,
-    rate: Any,
-    start_torque: Any,
-    method: str,
-    *,
-    breakaway: Any = 1.0,
-    drive_torque: Any = 0.0,
-    target_torque: Any = None,
-    max_blows: Any = 100,
-    yield_torque: Any = math.inf,
-) -> BlowSeriesArrays:
-    """:func:`blow_series` of the ``rigid`` or ``energy`` rung at many points.
-
-    Parameters
-    ----------
-    energy, stiffness, rate, start_torque : float or array
-        E [J], C [N*m/rad], k_j [N*m/rad], T_0 [N*m] (equal-length arrays or scalars)
-    method : str
-        ``rigid`` or ``energy``
-    breakaway, drive_torque : float or array
-        b [-], N [N*m]
-    target_torque : float, array or None
-        Stop at the first blow that reaches it, [N*m]
-    max_blows : int or array
-        Most blows, [-]
-    yield_torque : float or array
-        T_y, where the bolt yields (:func:`blow_series`), [N*m]
-
-    Notes
-    -----
-    The blows run for all points at once, each point stopping by the rules of
-    :func:`blow_series` (target reached, a blow that no longer turns the nut,
-    ``max_blows``); every point's numbers are those of its own scalar run
-    (:func:`blow_series` gives the same 2 and 5 blows for these two).
-
-    >>> s = blow_series_array(np.array([100.0, 50.0]), 2.0e4, 1000.0, 60.0, "energy",
-    ...                       target_torque=600.0)
-    >>> s.blows_to_target.tolist(), round(float(s.torque_after[0]), 3)
-    ([2, 5], 440.346)
-    """
-    given = (energy, stiffness, rate, start_torque, breakaway, drive_torque, max_blows)
-    shape = np.broadcast_shapes(
-        *(np.shape(v) for v in (*given, yield_torque) if v is not None),
-        np.shape(target_torque) if target_torque is not None else (),
-    )
-
-    def full(v: Any) -> np.ndarray:
-        return np.array(np.broadcast_to(np.asarray(v, dtype=float), shape))
-
-    e, c, k, b, n = full(energy), full(stiffness), full(rate), full(breakaway), full(drive_torque)
-    torque = full(start_torque)
-    ty = full(yield_torque)
-    target = None if target_torque is None else full(target_torque)
-    limit = np.broadcast_to(np.asarray(max_blows), shape)
-    peak0 = np.full(shape, np.nan)
-    rot0, after0, work0 = peak0.copy(), peak0.copy(), peak0.copy()
-    total = np.zeros(shape)
-    blows = np.zeros(shape, dtype=np.int64)
-    reached = np.zeros(shape, dtype=np.int64)
-    saturated = np.zeros(shape, dtype=bool)
-    yielded = np.zeros(shape, dtype=np.int64)
-    demand = np.full(shape, np.nan)
-    idx = np.flatnonzero(limit.ravel() > 0) if shape else np.arange(0)
-    flat = shape != ()
-    if not flat:  # a single point: the same code on arrays of one
-        return _series_one(e, c, k, torque, method, b, n, target, int(limit), ty)
-    i = 0
-    with np.errstate(all="ignore"):
-        while idx.size:
-            t0 = torque[idx]
-            peak, new, rot, work = blow_step(method, e[idx], c[idx], k[idx], t0, b[idx], n[idx])
-            past = new >= ty[idx]
-            yielded[idx[past]] = i + 1
-            demand[idx[past]] = new[past]
-            new = bolt_joint_torque(new, ty[idx])
+            peak, elastic, rot, work = (
+                out.peak_torque,
+                out.torque_after,
+                out.rotation,
+                out.joint_work,
+            )
+        new = bolt_joint_torque(elastic, ty_i)
+        past = elastic >= ty_i  # the bolt yields: another blow only stretches it at T_y
+        hit = False if target_i is None else new >= target_i
+        # the rigid rung's joint cannot rise past the blow's torque: one blow
+        stuck = True if method == "rigid" else blow_gains_nothing(rot, new, t0)
+        if keep:  # on arrays, each blow's row of all designs (NaN: stopped before it)
+            blow = (
+                (peak, rot, new, work)
+                if not many
+                else _rows(idx, limit.size, shape, peak, rot, new, work)
+            )
+            kept_peak.append(blow[0])
+            kept_rot.append(blow[1])
+            kept_torque.append(blow[2])
+            kept_work.append(blow[3])
+        if many:
             if i == 0:
-                peak0[idx], rot0[idx], after0[idx], work0[idx] = peak, rot, new, work
-            total[idx] = total[idx] + work
-            blows[idx] = i + 1
-            torque[idx] = new
-            done = np.zeros(idx.size, dtype=bool)
-            if target is not None:
-                hit = new >= target[idx]
-                reached[idx[hit]] = i + 1
-                done |= hit
-            stuck = ~done & blow_gains_nothing(rot, new, t0)
-            if method == "rigid":
-                stuck = ~done
-            saturated[idx[stuck]] = True
-            done |= stuck | past
-            i += 1
-            done |= limit.ravel()[idx] <= i
-            idx = idx[~done]
-    return BlowSeriesArrays(
-        peak0, rot0, after0, work0, torque, total, blows, reached, saturated, yielded, demand
-    )
+                peak0[at], rot0[at], after0[at], work0[at] = peak, rot, new, work
+            total[at] += work
+            blows[at] = i + 1
+            torque[at] = new
+            # a mask over the running designs picks from idx; over all of them, it is one
+            yielded[_pick(at, idx, past)] = i + 1
+            demand[_pick(at, idx, past)] = elastic[past]
+            reached[_pick(at, idx, hit)] = i + 1
+            saturated[at] = stuck
+            idx = idx[~(hit | past | stuck | (limit[at] <= i + 1))]
+            if not idx.size:
+                break
+        else:
+            if i == 0:
+                peak0, rot0, after0, work0 = peak, rot, new, work
+            total += work
+            blows, torque = i + 1, new
+            if past:
+                yielded, demand = i + 1, elastic
+            if hit:
+                reached = i + 1
+            saturated = stuck
+            if hit or past or stuck:
+                break
+    # saturated: the last blow gained nothing, and neither the target nor yield stopped it
+    saturated = saturated & (reached == 0) & (yielded == 0)
+    found = (peak0, rot0, after0, work0, torque, total, blows, reached, saturated, yielded, demand)
+    if many:
+        found = tuple(v.reshape(shape) for v in found)
+    return BlowSeries(*found, steps=steps, first=first, per_blow=per_blow if keep else {})
 
 
-def _series_one(
-    e: Any, c: Any, k: Any, t0: Any, method: str, b: Any, n: Any, target: Any, limit: int,
-    ty: Any,
-) -> BlowSeriesArrays:  # fmt: skip
-    s = blow_series_array(
-        e.reshape(1), c.reshape(1), k.reshape(1), t0.reshape(1), method,
-        breakaway=b.reshape(1), drive_torque=n.reshape(1),
-        target_torque=None if target is None else target.reshape(1), max_blows=limit,
-        yield_torque=ty.reshape(1),
-    )  # fmt: skip
-    return BlowSeriesArrays(*(getattr(s, f.name).reshape(()) for f in fields(BlowSeriesArrays)))
+def _at(v: Any, at: Any) -> Any:
+    """The designs ``at`` (indices or a slice) of an input of many; one number as it is."""
+    return v[at] if isinstance(v, np.ndarray) else v
+
+
+def _pick(at: Any, idx: np.ndarray, mask: Any) -> Any:
+    """The designs where ``mask`` (over the running ones) holds, as an index into all."""
+    return mask if isinstance(at, slice) else idx[mask]
+
+
+def _rows(idx: np.ndarray, size: int, shape: tuple[int, ...], *values: np.ndarray) -> list[Any]:
+    """One blow's values of the designs ``idx`` as rows over all designs (NaN elsewhere)."""
+    rows = []
+    for v in values:
+        row = np.full(size, np.nan)
+        row[idx] = v
+        rows.append(row.reshape(shape))
+    return rows

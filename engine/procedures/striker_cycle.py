@@ -164,7 +164,6 @@ __all__ = [
     "CycleOutcome",
     "Geometry",
     "closed_form_cycle",
-    "closed_form_cycle_array",
     "closed_form_errors",
     "face_forces",
     "geometry",
@@ -600,6 +599,12 @@ class CycleOutcome:
     def relocks(self) -> Any:
         return self.returns & isfinite(self.home_time) & isfinite(self.relock_time)
 
+    @property
+    def cycle_time(self) -> Any:
+        """Motor start to re-lock: spin-up, engagement, home, re-lock [s]; NaN if no re-lock."""
+        t = self.spin_up_time + self.engagement_time + self.home_time + self.relock_time
+        return where(self.relocks, t, math.nan)
+
 
 # ---------------------------------------------------------------------------
 # Closed forms of the piecewise-linear stages (the cheap rung)
@@ -860,7 +865,7 @@ def quasi_static_release_velocity(x: Mapping[str, Any], w_m: Any) -> Any:
         return _one_or_many(_release_velocity(x, g, w, _radius(x, g)))
 
 
-def closed_form_cycle_array(x: Mapping[str, Any]) -> CycleOutcome:
+def closed_form_cycle(x: Mapping[str, Any], *, refuse: bool = True) -> CycleOutcome:
     """The cheap rung for one design or many: numbers or equal-length arrays in ``x``.
 
     Parameters
@@ -868,6 +873,10 @@ def closed_form_cycle_array(x: Mapping[str, Any]) -> CycleOutcome:
     x : Mapping
         The model's inputs in SI (names as in ``impact.rare``); numeric ones numbers or
         equal-length arrays, ``roller_geometry`` one choice for all points
+    refuse : bool
+        For one design: raise the closed form's refusal (InfeasibleDesign, with its
+        reason) and give Python floats. False: mark it in ``refusal`` with NaN in every
+        field, as on arrays (numpy numbers kept). Arrays never raise.
 
     Notes
     -----
@@ -876,14 +885,17 @@ def closed_form_cycle_array(x: Mapping[str, Any]) -> CycleOutcome:
     inertia kept: the half-coupling held, the striker and the rollers' share moving,
     :math:`M_{22}\\ddot y_s = -c_3(\\lambda_3 + y_s) + (m_3 + n m_p a_s)g`. A design the
     closed form refuses (preloads that do not hold the half-coupling, a motor that never
-    reaches the release speed) has ``refusal`` set and NaN in every field; it is not
-    raised (:func:`closed_form_cycle` raises it for one design).
+    reaches the release speed) has ``refusal`` set and NaN in every field on arrays; one
+    such design raises unless ``refuse`` is False.
 
     >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
-    >>> o = closed_form_cycle_array({**R, "power_spring_rate": np.array([5e4, 6e4])})
+    >>> o = closed_form_cycle({**R, "power_spring_rate": np.array([5e4, 6e4])})
     >>> o1 = closed_form_cycle({**R, "power_spring_rate": 6e4})
     >>> bool(o.engagement_time[1] == o1.engagement_time)
     True
+    >>> o = closed_form_cycle(R)
+    >>> round(o.release_speed, 2), round(o.engagement_time * 1e3, 3)
+    (243.96, 6.55)
     """
     with np.errstate(all="ignore"):
         x = _numbers(x)
@@ -927,7 +939,12 @@ def closed_form_cycle_array(x: Mapping[str, Any]) -> CycleOutcome:
             zip(_NUMERIC, (w_m, t_spin, r, v_rel, t_eng, reach, t_ret, t_home, t_lock), strict=True)
         )
         if not is_array(*x.values()):
-            return CycleOutcome(**fields, snap=bool(snap), refusal=int(refusal), flies=bool(flies))
+            o = CycleOutcome(**fields, snap=bool(snap), refusal=int(refusal), flies=bool(flies))
+            if not refuse:
+                return o
+            if o.refused:
+                raise _refuse(x, o)
+            return _as_floats(o)
         n = np.broadcast_shapes(*(np.shape(v) for v in x.values() if isinstance(v, np.ndarray)))
         refused = np.broadcast_to(refusal != HELD, n)
         any_refused = bool(refused.any())
@@ -1004,31 +1021,6 @@ def _refuse(x: Mapping[str, Any], o: CycleOutcome) -> EngineError:
         return _preloads_do_not_hold(x, g)
     w_0 = _liftoff_speed(x, g)
     return _never_fast_enough(x, max(_release_speed(x, g, w_0, _radius(x, g)), w_0))
-
-
-def closed_form_cycle(x: Mapping[str, Any]) -> CycleOutcome:
-    """The cheap rung for one design: :func:`closed_form_cycle_array` with floats out.
-
-    Parameters
-    ----------
-    x : Mapping
-        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``)
-
-    Notes
-    -----
-    Raises InfeasibleDesign, with its reason, where the closed form refuses the design.
-
-    >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
-    >>> o = closed_form_cycle(R)
-    >>> round(o.release_speed, 2), round(o.engagement_time * 1e3, 3)
-    (243.96, 6.55)
-    """
-    with np.errstate(all="ignore"):
-        xn = _numbers(x)
-        o = closed_form_cycle_array(xn)
-        if o.refused:
-            raise _refuse(xn, o)
-    return _as_floats(o)
 
 
 def _as_floats(o: CycleOutcome) -> CycleOutcome:
@@ -2554,7 +2546,7 @@ def closed_form_errors(x: Mapping[str, Any], outcome: CycleOutcome) -> dict[str,
         The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``);
         numbers or arrays of one shape
     outcome : CycleOutcome
-        The closed form's outcome for ``x`` (:func:`closed_form_cycle_array`)
+        The closed form's outcome for ``x`` (:func:`closed_form_cycle`)
 
     Notes
     -----

@@ -72,9 +72,10 @@ KNOWN_STEPS = {
     "blow.joint": (
         "stress_area",
         "torque_limit",
-        "release_speed_of",
+        "_release_speed",  # the striker's release, inside impact.rare's cycle
         "rotating_inertia",
         "energy_blow",
+        "acceleration_time",  # the nut-runner's motor between blows [000, eq. 5]
     ),
     "tool.capability": (
         "sample_mean",

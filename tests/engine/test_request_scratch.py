@@ -26,13 +26,13 @@ from engine.studies.plan import evaluate_chunk
 
 def _count_cycles(monkeypatch: pytest.MonkeyPatch) -> Counter[str]:
     calls: Counter[str] = Counter()
-    cycle = mr.closed_form_cycle_array
+    cycle = mr.closed_form_cycle
 
-    def counted(x: Any) -> Any:
+    def counted(x: Any, **kw: Any) -> Any:
         calls["cycle"] += 1
-        return cycle(x)
+        return cycle(x, **kw)
 
-    monkeypatch.setattr(mr, "closed_form_cycle_array", counted)
+    monkeypatch.setattr(mr, "closed_form_cycle", counted)
     return calls
 
 

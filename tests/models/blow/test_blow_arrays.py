@@ -17,7 +17,7 @@ from engine import EngineError, run, sweep
 from engine.core.points import auto_index, rung_estimates
 from engine.core.runner import choose_rung
 from engine.models.blow import BLOW, CLUTCH_M10, ENERGY_M16, NUTRUNNER_HARD, RARE_IMPACT_M16
-from engine.physics.blow import BlowProblem, blow_series, blow_series_array
+from engine.physics.blow import BlowProblem, blow_series
 from engine.studies.plan import (
     CHECK_FAILED,
     CHECK_OK,
@@ -196,30 +196,43 @@ def test_a_2000_point_rigid_sweep_runs_on_the_array_path() -> None:
     )
 
 
-def test_blow_series_on_arrays_is_the_scalar_series() -> None:
+def test_blow_series_on_arrays_stops_each_design_by_its_own_rules() -> None:
     # drive torque, breakaway and a target across the stopping rules (target, saturation,
-    # max_blows), each point against blow_series on its own BlowProblem
+    # max_blows): one call on arrays, each design against the same function on its floats
     rng = np.random.default_rng(1)
     n = 50
-    energy = rng.uniform(1.0, 200.0, n)
+    speed = np.sqrt(2.0 * rng.uniform(1.0, 200.0, n))
     rate = rng.uniform(100.0, 5000.0, n)
     drive = rng.uniform(-20.0, 20.0, n)
     brk = rng.uniform(1.0, 2.0, n)
+    stopped = set()
     for method in ("rigid", "energy"):
-        s = blow_series_array(
-            energy, 2e4, rate, 40.0, method, breakaway=brk, drive_torque=drive,
-            target_torque=900.0, max_blows=12,
-        )  # fmt: skip
+        p = BlowProblem(1.0, 1e-3, 2e4, speed, rate, brk, drive)
+        s = blow_series(p, 40.0, method, target_torque=900.0, max_blows=12)
         for j in range(n):
-            p = BlowProblem(1.0, 1e-3, 2e4, math.sqrt(2.0 * energy[j]), rate[j], brk[j], drive[j])
-            # the array series takes the energy as given; the problem's is 0.5·J·ω²
-            ref = blow_series(p, 40.0, method, target_torque=900.0, max_blows=12)
-            assert s.blows[j] == len(ref.torque_after), (method, j)
-            assert s.blows_to_target[j] == (ref.blows_to_target or 0), (method, j)
+            pj = BlowProblem(1.0, 1e-3, 2e4, float(speed[j]), rate[j], brk[j], drive[j])
+            ref = blow_series(pj, 40.0, method, target_torque=900.0, max_blows=12)
+            assert s.blows[j] == ref.blows == len(ref.per_blow["torque"]), (method, j)
+            assert s.blows_to_target[j] == ref.blows_to_target, (method, j)
             assert bool(s.saturated[j]) == ref.saturated, (method, j)
-            assert s.final_torque[j] == pytest.approx(ref.torque_after[-1], rel=1e-9)
-            assert s.peak[j] == pytest.approx(ref.peak[0], rel=1e-9)
-            assert s.joint_work[j] == pytest.approx(sum(ref.joint_work), rel=1e-9)
+            assert s.final_torque[j] == pytest.approx(ref.per_blow["torque"][-1], rel=1e-12)
+            assert s.peak[j] == pytest.approx(ref.per_blow["peak"][0], rel=1e-12)
+            assert s.joint_work[j] == pytest.approx(sum(ref.per_blow["work"]), rel=1e-12)
+            stopped.add(("target" if ref.blows_to_target else "saturated" if ref.saturated
+                         else "max_blows") if method == "energy" else "rigid")  # fmt: skip
+    assert stopped == {"rigid", "target", "saturated", "max_blows"}
+
+
+def test_blow_series_keeps_each_blow_of_many_designs_when_asked() -> None:
+    # 2 and 5 blows to 600 N·m (the doctest's designs): the second row of each blow is
+    # NaN once its design has stopped; the energy of each blow sums to joint_work
+    p = BlowProblem(0.02, 1e-3, 2.0e4, np.array([100.0, 50.0 * math.sqrt(2.0)]), 1000.0)
+    s = blow_series(p, 60.0, "energy", target_torque=600.0, history=True)
+    torque = np.array(s.per_blow["torque"])
+    assert torque.shape == (5, 2)
+    assert np.isnan(torque[2:, 0]).all() and not np.isnan(torque[:, 1]).any()
+    assert torque[0, 0] == pytest.approx(440.346, abs=1e-3)  # energy_blow's hand value
+    assert np.nansum(np.array(s.per_blow["work"]), axis=0) == pytest.approx(s.joint_work)
 
 
 @pytest.mark.parametrize(
@@ -412,19 +425,21 @@ def test_a_study_of_outputs_the_rung_leaves_null_still_gives_the_checks_of_singl
 
 
 def test_a_buffer_refilled_in_place_gives_the_new_designs_answer() -> None:
-    # a caller that reuses its input arrays: the estimates and the array path read the
-    # values the arrays hold now (an identity-keyed cache answered the previous design)
+    # a caller that reuses its input arrays: the estimates and the array path of each
+    # request read the values the arrays hold now (an identity-keyed module cache once
+    # answered the previous design; the setup now lives in the request's scratch)
     from engine.core.spec import RunContext
 
     fixed, _ = BLOW.validate(RARE_IMPACT_M16)
     springs = np.array([4e4, 5e4])
     friction = np.array([0.10, 0.12])
     x = {**fixed, "power_spring_rate": springs, "thread_friction": friction}
-    ctx = RunContext(rung="energy", outputs=frozenset(FLOATS), tolerance=0.01)
     energy_rung = BLOW.rung_names.index("energy")
     for rates, mus in (((4e4, 5e4), (0.10, 0.12)), ((6e4, 7e4), (0.14, 0.16))):
         springs[:] = rates
         friction[:] = mus
+        # a request of its own: its scratch holds its setup and no other's
+        ctx = RunContext(rung="energy", outputs=frozenset(FLOATS), tolerance=0.01)
         estimate = BLOW.rungs[energy_rung].estimate(x)
         got = BLOW.vectorized(x, ctx).values
         for j in range(2):

@@ -24,7 +24,6 @@ from engine.procedures.striker_cycle import (
     NEVER_FAST_ENOUGH,
     NOT_HELD,
     closed_form_cycle,
-    closed_form_cycle_array,
     linear_reach,
 )
 from engine.studies.plan import (
@@ -173,7 +172,7 @@ def test_an_infeasible_design_is_nan_with_no_estimate() -> None:
     x = {**REFERENCE_DESIGN, "gravity": np.array([9.80665, -100.0, -9.80665])}
     x["power_spring_preload"] = np.array([0.002, 1e-6, 0.002])
     x["auxiliary_spring_preload"] = np.array([0.008, 1e-6, 0.008])
-    o = closed_form_cycle_array(x)
+    o = closed_form_cycle(x)
     assert o.refused.tolist() == [False, True, False]
     assert math.isnan(o.release_speed[1]) and math.isnan(o.engagement_time[1])
     est = np.asarray(RARE_IMPACT.rungs[0].estimate(x))
@@ -267,13 +266,13 @@ def test_a_refused_point_carries_its_reason_on_both_paths() -> None:
     x["power_spring_preload"] = np.array([0.002, 1e-6, 0.002])
     x["auxiliary_spring_preload"] = np.array([0.008, 1e-6, 0.008])
     x["motor_no_load_speed"] = np.array([1e4, 1e4, 100.0])
-    o = closed_form_cycle_array(x)
+    o = closed_form_cycle(x)
     assert o.refusal.tolist() == [HELD, NOT_HELD, NEVER_FAST_ENOUGH]
     assert np.isnan(o.release_speed[1:]).all() and np.isfinite(o.release_speed[0])
     fields = {NOT_HELD: "power_spring_preload", NEVER_FAST_ENOUGH: "motor_no_load_speed"}
     for j in (1, 2):
         one = {k: (v[j] if isinstance(v, np.ndarray) else v) for k, v in x.items()}
-        alone = closed_form_cycle_array(one)  # the same lines on one design: marked
+        alone = closed_form_cycle(one, refuse=False)  # the same lines on one design: marked
         assert alone.refusal == o.refusal[j]
         with pytest.raises(EngineError) as refused:  # and raised with its reason
             closed_form_cycle(one)
