@@ -444,7 +444,7 @@ function fieldRow(p) {
     el("div", { class: "error", id: "err-" + p.name }));
 }
 
-/** A list of measured values (issue 32): pasted into a text area or read from a CSV file, in one unit. */
+/** A list of measured values: pasted into a text area or read from a CSV file, in one unit. */
 function samplesRow(p, id, described) {
   const input = el("textarea", { id, name: p.name, rows: 4, cols: 24, spellcheck: "false", "aria-describedby": described + " read-" + p.name,
     placeholder: "one value a line, or separated by spaces or semicolons" });

@@ -120,7 +120,7 @@ class Param:
     def check(self, value: Any) -> Any:
         """Return ``value`` converted to this param's kind, or raise InputOutOfRange."""
         kind = self.kind
-        if kind != "float" and kind != "int":  # numbers first: most inputs are (issue 21)
+        if kind != "float" and kind != "int":  # numbers first: most inputs are numbers
             return self._check_other(value)
         if isinstance(value, bool) or not isinstance(value, int | float):
             raise self._error(value)
@@ -535,7 +535,7 @@ class ModelSpec:
     #: Derived from :attr:`name`: ``clutch.ball_setting`` is served at ``/clutch/ball_setting``.
     path: str = field(init=False)
     #: Lookup tables derived once from the declaration (every :func:`engine.run` used to
-    #: rebuild them: ~5 µs a call, issue 21).
+    #: rebuild them: ~5 µs a call).
     _params: dict[str, Param] = field(init=False, repr=False, compare=False)
     _defaults: dict[str, Any] = field(init=False, repr=False, compare=False)
     _units: dict[str, str] = field(init=False, repr=False, compare=False)

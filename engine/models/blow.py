@@ -2015,7 +2015,7 @@ BLOW = ModelSpec(
             "(RK4 at 200 steps per period loses order at a damped contact's kink): exceeded "
             f"in {_exceeded('simulation')}",
             typical_time="~0.5 ms per blow (one-off numba load in a fresh process)",
-            heavy=True,  # blow after blow: the service's heavy lane (issue 20)
+            heavy=True,  # blow after blow: the service's heavy lane
             **_typical("simulation"),
         ),
     ),

@@ -638,7 +638,7 @@ _INPUTS: tuple[Param, ...] = (
         "kg*m^2",
         "I_M: moment of inertia of the flywheel with half-coupling, shaft and striker [002, eq. 1]",
         default=0.02,
-        # 1e-6 kg*m^2 (a 20 g disc of 2 cm radius); 1e-300 crashed the model (issue 20)
+        # 1e-6 kg*m^2 (a 20 g disc of 2 cm radius); 1e-300 crashed the model (hostile inputs)
         minimum=1e-6,
         maximum=100.0,
         display_unit="kg*m^2",
@@ -651,7 +651,7 @@ _INPUTS: tuple[Param, ...] = (
         "M: motor torque on the flywheel (the stall torque when a no-load speed is given) "
         "[002, eq. 1]",
         default=5.0,
-        minimum=1e-3,  # 1 mN*m; 5e-324 made the simulation's step count NaN (issue 20)
+        minimum=1e-3,  # 1 mN*m; 5e-324 made the simulation's step count NaN (hostile inputs)
         maximum=1e5,
         display_unit="N*m",
         symbol="M",
@@ -674,7 +674,7 @@ _INPUTS: tuple[Param, ...] = (
         "kg",
         "m_p: mass of one centrifugal roller [002, eq. 1]",
         default=0.05,
-        minimum=1e-4,  # 0.1 g; 1e-320 divided by zero (issue 20)
+        minimum=1e-4,  # 0.1 g; 1e-320 divided by zero (hostile inputs)
         maximum=100.0,
         display_unit="g",
         symbol="m_p",
@@ -694,7 +694,7 @@ _INPUTS: tuple[Param, ...] = (
         "m",
         "x_0: radius of the rollers' centres at rest [002, eq. 1]",
         default=0.04,
-        minimum=1e-4,  # 0.1 mm; 5e-324 divided by zero (issue 20)
+        minimum=1e-4,  # 0.1 mm; 5e-324 divided by zero (hostile inputs)
         maximum=2.0,
         display_unit="mm",
         symbol="x_0",
@@ -706,7 +706,7 @@ _INPUTS: tuple[Param, ...] = (
         "α: angle of the conical faces of half-coupling and striker [002, eq. 1]; the paper's "
         "closed form is for 45°",
         default=math.pi / 4,
-        # 1°: a flatter cone has no axial push to speak of (1e-300 divided by zero, issue 20)
+        # 1°: a flatter cone has no axial push to speak of (1e-300 divided by zero)
         minimum=math.radians(1.0),
         maximum=math.pi / 2,
         exclusive_maximum=True,
@@ -830,7 +830,7 @@ _INPUTS: tuple[Param, ...] = (
         "φ_eng: the anvil's opening, the angle the flywheel turns while the striker must "
         "engage [002, after eq. 5]",
         default=math.radians(120.0),
-        minimum=math.radians(0.1),  # 0.1°; 5e-324 divided by zero (issue 20)
+        minimum=math.radians(0.1),  # 0.1°; 5e-324 divided by zero (hostile inputs)
         maximum=2.0 * math.pi,
         display_unit="deg",
         symbol="φ_eng",

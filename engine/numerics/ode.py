@@ -10,7 +10,7 @@ RK4 compiled by numba; what is not model-specific is here, once:
   step and the first point where it reaches zero from below, end crossings and
   grazes inside the step alike (the event location of a position level);
 * :func:`step_budget` and :class:`StepCost`: a simulation's budget in time, as
-  steps at the kernel's measured cost per step (issue 21);
+  steps at the kernel's measured cost per step;
 * :func:`as_numbers`, :func:`where`, :func:`sqrt`, ...: what lets one procedure take
   one design (floats) or many (arrays) through the same lines.
 
@@ -231,7 +231,7 @@ def step_budget(
 
     Notes
     -----
-    A budget in time, not in steps (issue 21): a stiff design needing millions of steps
+    A budget in time, not in steps: a stiff design needing millions of steps
     runs when the kernel finishes them well inside the time left, and one that would
     not is declined up front (the runner's fallback can take over at once).
 

@@ -97,7 +97,7 @@ _SERIES_CAP = 400
 
 _ARRAY = np.ndarray
 
-#: The blow kernel's measured cost per RK4 step in this process (issue 21: budgets in
+#: The blow kernel's measured cost per RK4 step in this process (budgets in
 #: time, not steps); the prior is a slow machine's figure (~0.3 µs measured on the 2-core
 #: CI box, about 3× that).
 _COST = StepCost()

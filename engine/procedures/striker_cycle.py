@@ -185,7 +185,7 @@ STEPS_PER_PERIOD = 200
 _CHUNK = 400_000
 _SERIES_POINTS = 240
 
-#: The cycle kernel's measured cost per RK4 step in this process (issue 21: budgets in
+#: The cycle kernel's measured cost per RK4 step in this process (budgets in
 #: time, not steps); the prior is a slow machine's figure (~0.2 µs measured on the 2-core
 #: CI box, 5× that).
 _COST = StepCost()
