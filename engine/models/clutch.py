@@ -494,6 +494,31 @@ def _arrangement_notes(x: Mapping[str, Any], force: float) -> list[str]:
     ]
 
 
+def _equal_flanks_note(x: Mapping[str, Any]) -> list[str]:
+    """The free ball's limit where both flanks are inclined alike (its moment neglected).
+
+    A free ball between two flanks of equal angle touches them at opposite points: its
+    moment balance then admits no friction at either, so a rolling ball pushes with the
+    frictionless tan α. The model takes friction on the flank the ball rides (the seed's
+    single-flank law), which gives the higher limit; the note states the lower one.
+    """
+    alpha, f, driving = x["groove_angle"], x["flank_friction"], x["driving_groove_angle"]
+    if driving is None or f == 0.0 or x["flank_construction"] != "free_ball":
+        return []
+    if not math.isclose(driving, alpha, rel_tol=0.0, abs_tol=math.radians(5.0)):
+        return []
+    low = combined_push_factor(alpha, f, driving, "free_ball") / combined_push_factor(
+        alpha, 0.0, driving, "free_ball"
+    )
+    return [
+        f"both flanks are inclined alike (α′ = {math.degrees(driving):.3g}°, α = "
+        f"{math.degrees(alpha):.3g}°): a free ball then touches them at opposite points and "
+        "may roll, its moment balance admitting no flank friction; a rolling ball slips "
+        f"{1.0 - float(low):.1%} below the limit given here (friction taken on the ridden "
+        "flank, the ball's own moment neglected)"
+    ]
+
+
 def _friction_note(alpha: float, f: float) -> str:
     if f == 0.0:
         typical = flank_push_factor(alpha) / flank_push_factor(alpha, TYPICAL_FLANK_FRICTION) - 1.0
@@ -628,6 +653,7 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
     notes = [
         *_arrangement_notes(x, v["spring_force"]),
         _friction_note(alpha, f),
+        *_equal_flanks_note(x),
         f"ball forces are for the most-loaded ball (K_r = {x['load_factor']:g}) {where}; "
         "F_a = F_t tan(α − ρ), F_N = F_t / (cos α + f sin α) [001, eq. 1].",
         *asbuilt.notes(x, spring, v),
