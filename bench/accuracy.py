@@ -302,11 +302,8 @@ def markdown_table(rows: Sequence[Row]) -> str:
         return "No family measured yet: there is no `bench/accuracy_*.py`."
     lines = [
         "| " + " | ".join(COLUMNS) + " |",
-        "|"
-        + "|".join(
-            "---:" if c in ("n", "exceeded", "share", "worst ratio") else "---" for c in COLUMNS
-        )
-        + "|",
+        # no alignment markers: they become inline styles, which the manual's CSP forbids
+        "|" + "|".join("---" for _ in COLUMNS) + "|",
     ]
     lines += ["| " + " | ".join(_md(c) for c in cells(r)) + " |" for r in rows]
     return "\n".join(lines)
