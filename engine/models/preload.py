@@ -752,7 +752,7 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
 
 
-def _bought_part_arrays(
+def _bought_part_verdicts(
     x: Mapping[str, Any],
     bolt: BoltArrays,
     max_preload: Any,
@@ -761,7 +761,7 @@ def _bought_part_arrays(
     verdicts: dict[str, Any],
 ) -> None:
     """:func:`_add_bought_part_checks` on arrays: values and verdicts, no sentences."""
-    more, more_verdicts = fz.bought_part_arrays(
+    more, more_verdicts = fz.bought_part_verdicts(
         x, bolt.fastener, **_part_numbers(bolt, max_preload, torque)
     )
     more["fastener"] = bolt.label
@@ -769,7 +769,7 @@ def _bought_part_arrays(
     verdicts.update(more_verdicts)
 
 
-def _tightening_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
+def _tightening_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """The array path of ``preload.tightening``: its numbers on many points at once."""
     n = _points(x) or 1
     bolt, notes = resolve_bolts(x, n, labels=ctx.wants("fastener"))
@@ -782,7 +782,7 @@ def _tightening_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if x.get("preload") is not None:
         verdicts["below_yield"] = values["equivalent_stress"] <= bolt.yield_strength
     force, total = values["assembly_preload"], values["tightening_torque"]
-    _bought_part_arrays(x, bolt, force, total, values, verdicts)
+    _bought_part_verdicts(x, bolt, force, total, values, verdicts)
     return Result(
         values=_finish(values, bolt.ok, n),
         rung=ctx.rung,
@@ -878,7 +878,7 @@ TIGHTENING = ModelSpec(
     outputs=TIGHTENING_OUTPUTS,
     rungs=(CLOSED_FORM,),
     compute=_tightening,
-    vectorized=_tightening_arrays,
+    vectorized=_tightening_vectorized,
     vector_rungs=("closed_form",),
     assumptions=TIGHTENING_ASSUMPTIONS,
     examples=(
@@ -1694,7 +1694,7 @@ def _method_texts(
     return cheaper_text[index], passing_text[index]
 
 
-def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
+def _control_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """The array path of ``preload.control``: its numbers on many points at once.
 
     The friction histogram (a series) is not part of it; its min, max and mean are.
@@ -1741,7 +1741,7 @@ def _control_arrays(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "coupling_outer_diameter",
             field="coupling_outer_diameter",
         )
-    _bought_part_arrays(x, bolt, f_max, torque, values, verdicts)
+    _bought_part_verdicts(x, bolt, f_max, torque, values, verdicts)
     top = at_yield * (1.0 + 1e-12)
     meets, below = f_min >= required, f_max <= top
     values["min_meets_clamp"] = meets
@@ -1960,7 +1960,7 @@ CONTROL = ModelSpec(
     outputs=CONTROL_OUTPUTS,
     rungs=(CLOSED_FORM,),
     compute=_control,
-    vectorized=_control_arrays,
+    vectorized=_control_vectorized,
     vector_rungs=("closed_form",),
     examples=(
         # [004, fig. 5]: 5/8"-11 UNC bolts at 80 N·m, friction 0.10…0.20 -> about ±30 %

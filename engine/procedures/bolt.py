@@ -823,7 +823,7 @@ def _bought_parts(
     """Surface pressure (VDI 2230-1 R10), thread stripping (R11) and the hex key (ISO 2936).
 
     The one set of lines :func:`bought_part_checks` (one design, with its sentences) and
-    :func:`bought_part_arrays` (many designs) both run; the numbers may be floats or
+    :func:`bought_part_verdicts` (many designs) both run; the numbers may be floats or
     numpy arrays, the catalogue parts are the same for every design.
     """
     values: dict[str, Any] = {"fastener": fastener.label}
@@ -1076,7 +1076,7 @@ def bought_part_checks(
     return values, checks, notes
 
 
-def bought_part_arrays(
+def bought_part_verdicts(
     x: Mapping[str, Any],
     fastener: Fastener,
     *,
@@ -1161,8 +1161,8 @@ __all__ = [
     "Bolt",
     "BoltArrays",
     "Fastener",
-    "bought_part_arrays",
     "bought_part_checks",
+    "bought_part_verdicts",
     "joint_check_hook",
     "resolve",
     "resolve_bolt",
