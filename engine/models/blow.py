@@ -716,9 +716,10 @@ def _blow_interval(x: Mapping[str, Any], s: _Setup) -> tuple[Any, str]:
                 "impact.rare refuses the striker's cycle (its motor never reaches the release "
                 "speed, or the preloads do not hold the half-coupling)"
             )
-        if one and not math.isfinite(cycle.cycle_time):
+        t_cycle = cycle.cycle_time  # a property summing the stages: read it once
+        if one and not math.isfinite(t_cycle):
             return math.nan, "the striker's cycle never re-locks (impact.rare)"
-        return cycle.cycle_time, (
+        return t_cycle, (
             "one impact.rare cycle per blow, from motor start to re-lock (spin-up "
             "[002, eq. 1], engagement, return, re-lock [002, eq. 4])"
         )
