@@ -716,9 +716,10 @@ def _blow_interval(x: Mapping[str, Any], s: _Setup) -> tuple[Any, str]:
                 "impact.rare refuses the striker's cycle (its motor never reaches the release "
                 "speed, or the preloads do not hold the half-coupling)"
             )
-        if one and not math.isfinite(cycle.cycle_time):
+        t_cycle = cycle.cycle_time  # a property summing the stages: read it once
+        if one and not math.isfinite(t_cycle):
             return math.nan, "the striker's cycle never re-locks (impact.rare)"
-        return cycle.cycle_time, (
+        return t_cycle, (
             "one impact.rare cycle per blow, from motor start to re-lock (spin-up "
             "[002, eq. 1], engagement, return, re-lock [002, eq. 4])"
         )
@@ -963,8 +964,26 @@ def _setup_or_none(x: Mapping[str, Any], scratch: Scratch) -> _Setup | None:
         return None
 
 
+#: The outputs :func:`_tool_values` gives (the tool and the joint alone, no blow run).
+_TOOL_VALUES = (
+    "tool_energy_used",
+    "tool_inertia_used",
+    "tool_speed",
+    "tool_stiffness_used",
+    "joint_rate_used",
+    "rigid_torque",
+    "saturation_torque",
+)
+
+#: The outputs that need the blows run (every one :func:`_tool_values` does not give).
+_NEED_BLOWS = tuple(o.name for o in _OUTPUTS if o.name not in _TOOL_VALUES)
+
+
 def _tool_values(x: Mapping[str, Any], s: _Setup) -> dict[str, Any]:
-    """The outputs that follow from the tool and the joint alone (floats or arrays)."""
+    """The outputs that follow from the tool and the joint alone (floats or arrays).
+
+    Its keys are :data:`_TOOL_VALUES`, in that order.
+    """
     e, c, drive = s.energy, s.tool.stiffness, s.tool.drive
     with np.errstate(all="ignore"):
         return {
@@ -1428,7 +1447,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     e = s.energy
     tool_values: dict[str, Any] = {n: float(v) for n, v in _tool_values(x, s).items()}
     saturation = tool_values["saturation_torque"]
-    if not ctx.wants(*(o.name for o in _OUTPUTS if o.name not in tool_values)):
+    if not ctx.wants(*_NEED_BLOWS):
         notes.append("no requested output needs the blows: none was run")
         return Result(
             values=tool_values,
