@@ -29,8 +29,19 @@ def client() -> TestClient:
 
 
 def _case(spec: engine.ModelSpec) -> tuple[dict[str, Any], str, float, float] | None:
-    """The first example and a float input swept ±10 % about its value, inside its range."""
-    base = dict(spec.examples[0])
+    """The first example with a float input given, that input swept ±10 % about its value,
+    inside its range (a model of measured series may give only lists and a designation in
+    its first example)."""
+    for example in spec.examples:
+        case = _case_of(spec, dict(example))
+        if case is not None:
+            return case
+    return None
+
+
+def _case_of(
+    spec: engine.ModelSpec, base: dict[str, Any]
+) -> tuple[dict[str, Any], str, float, float] | None:
     for p in spec.inputs:
         value = base.get(p.name)
         if p.kind != "float" or not isinstance(value, int | float) or not value:
