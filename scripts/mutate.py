@@ -53,6 +53,7 @@ TESTS: dict[str, tuple[str, ...]] = {
     "physics/springs": ("tests/models/springs", "tests/validation/test_springs_textbooks.py"),
     "physics/threads": (
         "tests/models/preload/test_threads.py",
+        "tests/models/preload/test_threads_values.py",
         "tests/models/preload/test_preload_formulas.py",
         "tests/validation/test_iso898_loads.py",
     ),
