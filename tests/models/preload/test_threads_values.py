@@ -229,6 +229,8 @@ def test_size_step_tolerates_unit_round_off_only():
     # 16 mm parsed as 0.016000000000000002 m is still at the step (the small-size row)
     assert th.property_class_strengths("8.8", 0.016 * (1 + 1e-12)) == (640e6, 800e6)
     assert th.property_class_strengths("8.8", 0.016 * (1 + 1e-6)) == (660e6, 830e6)
+    # the tolerance is 1e-9 of the step: 2e-9 above it is a larger size
+    assert th.property_class_strengths("8.8", 0.016 * (1 + 2e-9)) == (660e6, 830e6)
     assert th.property_class_strengths("9.8", 0.016 * (1 + 1e-12)) == (720e6, 900e6)
     with pytest.raises(InputOutOfRange):
         th.property_class_strengths("9.8", 0.016 * (1 + 1e-6))
