@@ -775,3 +775,49 @@ def test_countersunk_friction_factor_by_hand():
     assert fa.countersunk_friction_factor() == pytest.approx(math.sqrt(2), rel=1e-12)
     assert fa.countersunk_friction_factor(math.radians(120)) == pytest.approx(2 / math.sqrt(3))
     assert fa.countersunk_friction_factor(math.radians(60)) == pytest.approx(2.0)
+
+
+def _c2(x):
+    return 5.594 - 13.682 * x + 14.107 * x**2 - 6.057 * x**3 + 0.9353 * x**4
+
+
+def _c3(x):
+    return 0.728 + 1.769 * x - 2.896 * x**2 + 1.296 * x**3
+
+
+@pytest.mark.parametrize(
+    ("ratio", "c2", "c3"),
+    [
+        # Alexander's polynomials by hand, R_S held inside 0.4…2.2
+        (1.5, 5.594 - 13.682 * 1.5 + 14.107 * 2.25 - 6.057 * 3.375 + 0.9353 * 5.0625, 0.897),
+        (2.0, _c2(2.0), 0.897),
+        (3.0, _c2(2.2), 0.897),
+        (0.6, 0.897, 0.728 + 1.769 * 0.6 - 2.896 * 0.36 + 1.296 * 0.216),
+        (0.1, 0.897, _c3(0.4)),
+        (1.0, 0.897, 0.897),
+    ],
+)
+def test_thread_bending_factors_by_hand_for_one_ratio_and_many(ratio, c2, c3):
+    assert fa.thread_bending_factors(ratio) == pytest.approx((c2, c3), rel=1e-12)
+    arr = fa.thread_bending_factors(np.array([ratio, ratio]))
+    assert arr[0] == pytest.approx([c2, c2], rel=1e-12)
+    assert arr[1] == pytest.approx([c3, c3], rel=1e-12)
+
+
+def test_engagement_for_bolt_failure_adds_two_pitches_to_every_length():
+    # M12 8.8 into S235JR: thread_stripping at 1.2 R_m on the full threads (m − 2 P),
+    # then 2 P of entry chamfers on each minimum length
+    args = (0.012, 0.00175, 0.0108633, 0.0101056, 84.27e-6)
+    for length in (0.012, 0.002):
+        s = fa.engagement_for_bolt_failure(*args, 800e6, 480e6, 216e6, length)
+        plain = fa.thread_stripping(*args, 1.2 * 800e6, 480e6, 216e6, max(length - 0.0035, 0.0))
+        assert s.bolt_breaking_force == pytest.approx(1.2 * 800e6 * 84.27e-6, rel=1e-12)
+        assert s.min_engagement_length == pytest.approx(plain.min_engagement_length + 0.0035)
+        assert s.min_engagement_internal == pytest.approx(plain.min_engagement_internal + 0.0035)
+        assert s.min_engagement_external == pytest.approx(plain.min_engagement_external + 0.0035)
+        assert s.internal_strip_force == pytest.approx(plain.internal_strip_force, abs=1e-9)
+        assert s.external_strip_force == pytest.approx(plain.external_strip_force, abs=1e-9)
+    many = fa.engagement_for_bolt_failure(*args, 800e6, 480e6, 216e6, np.array([0.012, 0.002]))
+    assert many.internal_strip_force[1] == 0.0
+    # the minimum lengths do not depend on the length as built
+    assert many.min_engagement_external == pytest.approx(s.min_engagement_external)
