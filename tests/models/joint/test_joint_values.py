@@ -1,0 +1,92 @@
+"""The VDI 2230 tables and constants of engine.physics.joint, row by row, and their lookups.
+
+Written out again from VDI 2230-1:2015 (Table 5.4/1 for embedding, R3 for the length
+factors, eq. 5.1/21-22 for the cone) so that a changed digit fails.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from engine.core.errors import InputOutOfRange
+from engine.physics import joint as jt
+
+# VDI 2230-1:2015 Table 5.4/1 [µm]: (thread, each bearing face, each inner interface)
+EMBEDDING = {
+    "Rz<10": {"axial": (3.0, 2.5, 1.5), "transverse": (3.0, 3.0, 2.0)},
+    "Rz10-40": {"axial": (3.0, 3.0, 2.0), "transverse": (3.0, 4.5, 2.5)},
+    "Rz40-160": {"axial": (3.0, 4.0, 3.0), "transverse": (3.0, 6.5, 3.5)},
+}
+
+
+def test_length_factors_and_constants_are_vdi_2230s():
+    assert jt.HEAD_LENGTH_FACTOR == {"hex": 0.5, "socket": 0.4}
+    assert jt.NUT_LENGTH_FACTOR == {"through": 0.4, "tapped": 0.33}
+    assert jt.ENGAGED_THREAD_FACTOR == 0.5
+    assert jt.TORSION_REDUCTION_IN_SERVICE == 0.5
+    assert jt.MIN_CONE_TANGENT == 0.1
+    assert jt.ROUGHNESS_CLASSES == ("Rz<10", "Rz10-40", "Rz40-160")
+
+
+@pytest.mark.parametrize("roughness", list(EMBEDDING))
+@pytest.mark.parametrize("load", ["axial", "transverse"])
+def test_every_embedding_row(roughness, load):
+    thread, bearing, interface = EMBEDDING[roughness][load]
+    assert jt.EMBEDDING_UM[roughness][load] == (thread, bearing, interface)
+    for n_k, n_t in ((2, 1), (1, 1), (2, 3), (1, 0)):
+        expected = (thread + n_k * bearing + n_t * interface) * 1e-6
+        assert jt.embedding(roughness, load, n_k, n_t) == pytest.approx(expected, rel=1e-12)
+    # the column follows the load the joint carries, for one design and for many
+    other = "axial" if load == "transverse" else "transverse"
+    f_q = 1.0 if load == "transverse" else 0.0
+    assert jt.embedding_for_load(roughness, f_q, 2, 1) == pytest.approx(
+        jt.embedding(roughness, load, 2, 1), rel=1e-12
+    )
+    many = jt.embedding_for_load(roughness, np.array([f_q, 1.0 - f_q]), 2, 1)
+    assert many == pytest.approx(
+        [jt.embedding(roughness, load, 2, 1), jt.embedding(roughness, other, 2, 1)], rel=1e-12
+    )
+
+
+def test_unknown_roughness_or_load_is_refused_by_name():
+    for args in (("Rz<5", "axial"), ("Rz<10", "torsion")):
+        with pytest.raises(InputOutOfRange) as err:
+            jt.embedding(*args, 2, 1)
+        assert err.value.field == "surface_roughness"
+
+
+@pytest.mark.parametrize(
+    ("joint", "plates", "expected"),
+    [("through", 2, (2, 1)), ("through", 4, (2, 3)), ("tapped", 1, (1, 1)), ("tapped", 3, (1, 3))],
+)
+def test_embedding_locations(joint, plates, expected):
+    assert jt.embedding_locations(joint, plates) == expected
+
+
+@pytest.mark.parametrize(
+    ("grip", "dw", "da", "joint"),
+    [
+        (0.040, 0.01663, 0.040, "through"),
+        (0.010, 0.01663, 0.025, "through"),
+        (0.040, 0.01663, 0.040, "tapped"),
+        (0.060, 0.0228, 0.030, "tapped"),
+    ],
+)
+def test_cone_tangent_by_hand(grip, dw, da, joint):
+    # VDI 2230-1 eq. 5.1/21 (through) and 5.1/22 (tapped), β_L = l_K/d_W, y = D_A/d_W
+    beta, y = grip / dw, da / dw
+    if joint == "through":
+        tan = 0.362 + 0.032 * math.log(beta / 2) + 0.153 * math.log(y)
+    else:
+        tan = 0.348 + 0.013 * math.log(beta) + 0.193 * math.log(y)
+    assert jt.cone_tangent(grip, dw, da, joint) == pytest.approx(tan, rel=1e-12)
+    assert jt.cone_tangent(np.array([grip]), dw, da, joint) == pytest.approx([tan], rel=1e-12)
+
+
+def test_cone_tangent_is_held_at_0_1():
+    # a grip far shorter than d_W with no outer margin: the fit falls below 0.1
+    raw = 0.362 + 0.032 * math.log(1e-6 / 0.02 / 2) + 0.153 * math.log(1.0)
+    assert raw < 0.1
+    assert jt.cone_tangent(1e-6, 0.02, 0.02) == 0.1
+    assert jt.cone_tangent(np.array([1e-6, 0.040]), 0.02, 0.02).tolist()[0] == 0.1
