@@ -7,8 +7,8 @@ an operator swapped, a comparison turned, a number changed, a loop or a branch d
 Mutants that cannot change behaviour by construction are left out and counted (those inside
 type annotations and docstrings, and bitwise or shift operators put in place of arithmetic
 on floats, which fail with a TypeError and so say nothing about the tests). A seeded sample
-of the rest (``--sample`` per module at most, fewer if the module's share of ``--minutes``
-is too short for its tests; ``--sample 0`` with a long budget takes them all) is then
+of the rest (``--sample`` per module at most, fewer if the module's share of ``--minutes``,
+the time left over the modules left, is too short for its tests; ``--sample 0`` with a long budget takes them all) is then
 applied one at a time to a copy of the project and the module's own tests (:data:`TESTS`,
 its doctests included) run against it; a mutant is killed when they fail or time out. Two
 copies run side by side (``--jobs``).
@@ -288,9 +288,10 @@ def _run(
             )
         else:
             kept.append(item)
-    # as many as the module's share of the time budget allows (a survivor runs every test;
-    # a killed mutant stops at its first failure, so this errs on the short side)
-    share = args.minutes * 60 / args.modules_count
+    # as many as the module's share of the time budget allows: the time left over the modules
+    # left, so what a quick module leaves the next ones use (a survivor runs every test; a
+    # killed mutant stops at its first failure, so this errs on the short side)
+    share = max(args.deadline - time.perf_counter(), 0.0) / max(args.modules_left, 1)
     n = max(1, int(share * len(copies) / max(out.baseline_s, 1.0)))
     n = min(n, args.sample) if args.sample else n
     rng = random.Random(f"{args.seed}:{name}")
@@ -416,7 +417,10 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("modules", nargs="*", help="engine/<name>.py files or names (default: all)")
     p.add_argument("--sample", type=int, default=100, help="at most this many per module (0: all)")
     p.add_argument(
-        "--minutes", type=float, default=50.0, help="time budget, shared evenly by the modules"
+        "--minutes",
+        type=float,
+        default=50.0,
+        help="time budget: each module takes the time left over the modules left",
     )
     p.add_argument("--seed", default="0", help="seed of the sample")
     p.add_argument("--jobs", type=int, default=2, help="copies of the project run side by side")
@@ -427,7 +431,7 @@ def main(argv: list[str] | None = None) -> int:
     args = p.parse_args(argv)
     names = [_key(m) for m in args.modules] or list(TESTS)
     equivalents = _equivalents()
-    args.modules_count = len(names)
+    args.modules_left = len(names)
     with tempfile.TemporaryDirectory(prefix="mutate-") as tmp:
         args.work = tmp
         # compiled bytecode of the unmutated copies, kept apart from the project's: Cosmic Ray
@@ -442,7 +446,11 @@ def main(argv: list[str] | None = None) -> int:
             copies.append(copy)
         t0 = time.perf_counter()
         with open(Path(tmp) / "log.jsonl", "w") as log:
-            outcomes = [_run(n, args, copies, args.python, log, equivalents) for n in names]
+            args.deadline = t0 + args.minutes * 60
+            outcomes = []
+            for n in names:
+                outcomes.append(_run(n, args, copies, args.python, log, equivalents))
+                args.modules_left -= 1
         wall_s = time.perf_counter() - t0
     _report(outcomes, wall_s)
     if args.json:
