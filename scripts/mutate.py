@@ -8,9 +8,10 @@ Mutants that cannot change behaviour by construction are left out and counted (t
 type annotations and docstrings, and bitwise or shift operators put in place of arithmetic
 on floats, which fail with a TypeError and so say nothing about the tests). A seeded sample
 of the rest (``--sample`` per module at most, fewer if the module's share of ``--minutes``,
-the time left over the modules left, is too short for its tests; ``--sample 0`` with a long budget takes them all) is then
-applied one at a time to a copy of the project and the module's own tests (:data:`TESTS`,
-its doctests included) run against it; a mutant is killed when they fail or time out. Two
+the time left over the modules left, is too short for its tests; ``--sample 0`` with a long
+budget takes them all) is then applied one at a time to a copy of the project and the
+module's own tests (:data:`TESTS`, its doctests included) run against it; a mutant is killed
+when they fail or time out. Two
 copies run side by side (``--jobs``).
 
 A survivor listed in :data:`EQUIVALENT_FILE` (module, operator and the changed lines, with
