@@ -90,3 +90,47 @@ def test_cone_tangent_is_held_at_0_1():
     assert raw < 0.1
     assert jt.cone_tangent(1e-6, 0.02, 0.02) == 0.1
     assert jt.cone_tangent(np.array([1e-6, 0.040]), 0.02, 0.02).tolist()[0] == 0.1
+
+
+def test_load_factor_by_hand_with_and_without_load_introduction():
+    # Φ_n = n δ_P / (δ_S + δ_P): 1e-9 / 4e-9 = 0.25, n = 1 unless given
+    assert jt.load_factor(3e-9, 1e-9) == pytest.approx(0.25, rel=1e-12)
+    assert jt.load_factor(3e-9, 1e-9, 0.5) == pytest.approx(0.125, rel=1e-12)
+
+
+def test_required_slip_safety_is_1_8_only_for_a_load_that_alternates():
+    # VDI 2230-1 R12: 1.8 where F_A,min < F_A,max, 1.2 otherwise (equal, or given upside down)
+    assert jt.required_slip_safety(8e3, 0.0) == 1.8
+    assert jt.required_slip_safety(8e3, 8e3) == 1.2
+    assert jt.required_slip_safety(8e3, 9e3) == 1.2
+    assert jt.required_slip_safety(
+        np.array([8e3, 8e3, 8e3]), np.array([0.0, 8e3, 9e3])
+    ).tolist() == [
+        1.8,
+        1.2,
+        1.2,
+    ]
+
+
+def test_joint_diagram_lines_by_hand():
+    # F_M = 30 kN, δ_S = 3e-9, δ_P = 1e-9 m/N, F_A = 10 kN, Φ_n = 0.25, F_Z = 2 kN:
+    # f_SM = 90 µm, the axis ends at F_M (δ_S + δ_P) = 120 µm, so point 30 of 41 is f_SM;
+    # F_V = 28 kN at f_SV = 84 µm; the lines are clipped to 1.2 × max(F_M, F_V + Φ_n F_A) = 36.6 kN
+    d = jt.joint_diagram(30e3, 3e-9, 1e-9, 10e3, 0.25, 2e3)
+    x = d["deformation"]
+    assert x[0] == 0.0 and x[-1] == pytest.approx(120e-6, rel=1e-12) and len(x) == 41
+    assert x[30] == pytest.approx(90e-6, rel=1e-12)
+    clamped, embedded, bolt = d["clamped_line"], d["embedded_clamped_line"], d["bolt_line"]
+    assert clamped[30] == pytest.approx(30e3, rel=1e-9)  # through F_M at f_SM
+    assert clamped[35] == pytest.approx(30e3 - 15e-6 / 1e-9, rel=1e-9)  # slope −1/δ_P
+    assert clamped[20] == pytest.approx(36.6e3, rel=1e-12)  # 30 kN + 30 µm/δ_P, clipped
+    assert clamped[-1] == pytest.approx(0.0, abs=1e-6)
+    # the embedded line through F_V = 28 kN at f_SV = 84 µm: at 90 µm, 28 kN − 6 µm/δ_P
+    assert embedded[30] == pytest.approx(22e3, rel=1e-9)
+    assert bolt[30] == pytest.approx(30e3, rel=1e-9) and bolt[-1] == pytest.approx(36.6e3)
+    assert d["service_preload_level"] == [28e3] * 41
+    assert d["working_bolt_force_level"][0] == pytest.approx(30.5e3)
+    assert d["residual_clamp_level"][0] == pytest.approx(28e3 - 0.75 * 10e3)
+    assert d["preload_level"] == [30e3] * 41
+    # a working load beyond separation: the residual clamp force is held at 0
+    assert jt.joint_diagram(30e3, 3e-9, 1e-9, 60e3, 0.25, 2e3)["residual_clamp_level"][0] == 0.0
