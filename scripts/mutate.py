@@ -351,6 +351,7 @@ def _run(
                     mark = "!"
                 print(mark, end="", flush=True)
                 log.write(json.dumps({"module": name, "mark": mark, **entry}) + "\n")
+                log.flush()  # each mutant as it ends, to follow a long run
 
     t0 = time.perf_counter()
     threads = [threading.Thread(target=worker, args=(c,)) for c in copies]
@@ -428,6 +429,7 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--timeout-factor", type=float, default=4.0)
     p.add_argument("--min-timeout", type=float, default=60.0)
     p.add_argument("--json", help="write the outcome here")
+    p.add_argument("--log", help="write each mutant's outcome here as it ends (JSON lines)")
     p.add_argument("--python", default=sys.executable)
     args = p.parse_args(argv)
     names = [_key(m) for m in args.modules] or list(TESTS)
@@ -446,7 +448,7 @@ def main(argv: list[str] | None = None) -> int:
             _copy_tree(copy)
             copies.append(copy)
         t0 = time.perf_counter()
-        with open(Path(tmp) / "log.jsonl", "w") as log:
+        with open(args.log or Path(tmp) / "log.jsonl", "w") as log:
             args.deadline = t0 + args.minutes * 60
             outcomes = []
             for n in names:
