@@ -91,3 +91,16 @@ def test_a_disc_without_both_diameters_is_left_to_require_spring():
     assert asbuilt.refused(x) == {"disc_inner_diameter": True}
     x = {"spring_type": "disc", "disc_inner_diameter": 0.0204, "disc_outer_diameter": 0.040}
     assert asbuilt.refused(x) == {"disc_inner_diameter": False}
+
+
+def test_warnings_name_the_proportions_and_the_nearest_wire():
+    narrow = engine.run(BALL_CLUTCH, {**DISC, "disc_inner_diameter": 0.0267}).warnings
+    assert any("De/Di = 1.5 is outside 1.75…2.5" in w for w in narrow)  # 40/26.7 = 1.498
+    wide = engine.run(BALL_CLUTCH, {**DISC, "disc_inner_diameter": 0.0145}).warnings
+    assert any("De/Di = 2.76 is outside 1.75…2.5" in w for w in wide)  # 40/14.5 = 2.759
+    assert not any("De/Di" in w for w in engine.run(BALL_CLUTCH, DISC).warnings)  # 1.96
+    odd = engine.run(BALL_CLUTCH, {**ORDINARY, "spring_wire_diameter": 0.0041}).warnings
+    assert (
+        "spring_wire_diameter = 4.1 mm is not a preferred size of EN 10270-1; "
+        "the nearest is 4 mm" in odd
+    )
