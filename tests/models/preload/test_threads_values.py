@@ -242,3 +242,27 @@ def test_size_step_tolerates_unit_round_off_only():
         th.property_class_strengths("8.8", 0.064 * (1 + 1e-6))
     assert th.CARRIED_TO_MM == 64.0
     assert th.HOLE_SERIES == ("fine", "medium", "coarse")
+
+
+def test_refusals_state_the_size_asked_in_mm():
+    # the refusal is what the caller reads: it names the size as given, in mm
+    with pytest.raises(InputOutOfRange) as err:
+        th.coarse_pitch(0.011)
+    assert "no ISO 261 coarse pitch is tabulated for d = 11 mm" in str(err.value)
+    assert "M3, M3.5, M4" in str(err.value) and str(err.value).endswith("give thread_pitch")
+    with pytest.raises(InputOutOfRange) as err:
+        th.hex_bearing_diameter(0.007)
+    assert "no ISO 4017 hexagon head is tabulated for d = 7 mm" in str(err.value)
+    with pytest.raises(InputOutOfRange) as err:
+        th.clearance_hole(0.045)
+    assert "no ISO 273 clearance hole is tabulated for d = 45 mm" in str(err.value)
+    with pytest.raises(InputOutOfRange) as err:
+        th.clearance_hole(0.010, "loose")
+    assert "hole_series = 'loose' is not allowed: must be one of fine, medium, coarse" in str(
+        err.value
+    )
+    with pytest.raises(InputOutOfRange) as err:
+        th.property_class_strengths("9.8", 0.020)
+    assert "defined by ISO 898-1 only up to M16; give yield_strength for d = 20 mm" in str(
+        err.value
+    )
