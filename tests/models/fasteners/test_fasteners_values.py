@@ -821,3 +821,27 @@ def test_engagement_for_bolt_failure_adds_two_pitches_to_every_length():
     assert many.internal_strip_force[1] == 0.0
     # the minimum lengths do not depend on the length as built
     assert many.min_engagement_external == pytest.approx(s.min_engagement_external)
+
+
+def test_refusals_state_the_range_and_the_size_asked():
+    with pytest.raises(InputOutOfRange) as err:
+        fa.grade_strengths("A2-70", 0.030)
+    assert "A2-70 (ISO 3506-1) is defined for d = 0…24 mm, not 30 mm" in str(err.value)
+    with pytest.raises(InputOutOfRange) as err:
+        fa.grade_strengths("SAE 5", 0.2 * INCH)
+    assert "SAE 5 (SAE J429) is defined for d = 6.35…38.1 mm, not 5.08 mm" in str(err.value)
+    with pytest.raises(InputOutOfRange) as err:
+        fa.metric_thread(11)
+    assert "M11 is not an ISO 261 size in the catalogue (M1.6…M64: M1.6, M2, M2.5, M3" in str(
+        err.value
+    )
+    with pytest.raises(InputOutOfRange) as err:
+        fa.metric_thread(12, 1.0)
+    assert "pitch 1 mm is not an ISO 261/262 pitch of M12 (allowed: 1.75, 1.5, 1.25 mm)" in str(
+        err.value
+    )
+    with pytest.raises(InputOutOfRange) as err:
+        fa.head("EN 1665", fa.metric_thread(24))
+    assert "EN 1665 has no M24 in the catalogue (sizes M5, M6, M8, M10, M12, M14, M16, M20)" in str(
+        err.value
+    )
