@@ -845,3 +845,33 @@ def test_refusals_state_the_range_and_the_size_asked():
     assert "EN 1665 has no M24 in the catalogue (sizes M5, M6, M8, M10, M12, M14, M16, M20)" in str(
         err.value
     )
+
+
+def test_a_grade_range_tolerates_round_off_at_both_ends():
+    # 1/4 in computed as 0.00635 × (1 − 1e-12) is still SAE J429's smallest size
+    low = fa.grade_strengths("SAE 5", 0.25 * INCH * (1 - 1e-12))
+    assert low.tensile_strength == pytest.approx(120 * KSI, rel=1e-12)
+    high = fa.grade_strengths("SAE 8", 1.5 * INCH * (1 + 1e-12))
+    assert high.tensile_strength == pytest.approx(150 * KSI, rel=1e-12)
+    with pytest.raises(InputOutOfRange):
+        fa.grade_strengths("SAE 5", 0.25 * INCH * (1 - 1e-6))
+
+
+def test_catalogue_records_are_frozen():
+    # parts are shared by every request and design of a study: none may be changed in place
+    import dataclasses
+
+    t = fa.metric_thread(12)
+    records = [
+        t,
+        fa.grade_strengths("8.8", 0.012),
+        fa.head("ISO 4017", t),
+        fa.nut("ISO 4032", t),
+        fa.washer("ISO 7089", t),
+        fa.material("S235JR"),
+        fa.parse_designation("M12"),
+    ]
+    for r in records:
+        field = dataclasses.fields(r)[0].name
+        with pytest.raises(dataclasses.FrozenInstanceError):
+            setattr(r, field, None)
