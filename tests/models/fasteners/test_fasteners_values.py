@@ -875,3 +875,21 @@ def test_catalogue_records_are_frozen():
         field = dataclasses.fields(r)[0].name
         with pytest.raises(dataclasses.FrozenInstanceError):
             setattr(r, field, None)
+
+
+def test_thread_stripping_forces_carry_c1_and_the_bending_factors():
+    # M12 (d2 10.8633, D1 10.1056 mm), a strong nut thread (τ_BM 600 MPa) on a 480 MPa
+    # bolt thread: R_S > 1, so C2 is Alexander's polynomial and C3 = 0.897; C1 = 0.9 given
+    args = (0.012, 0.00175, 0.0108633, 0.0101056, 84.27e-6, 800e6, 480e6, 600e6, 0.010)
+    s = fa.thread_stripping(*args, c1=0.9)
+    a_n = fa.internal_thread_shear_area(0.012, 0.00175, 0.0108633, 1.0)
+    a_s = fa.external_thread_shear_area(0.00175, 0.0108633, 0.0101056, 1.0)
+    r_s = 600e6 * a_n / (480e6 * a_s)
+    assert r_s > 1.0 and s.strength_ratio == pytest.approx(r_s, rel=1e-12)
+    c2 = _c2(min(r_s, 2.2))
+    assert (s.c1, s.c2, s.c3) == pytest.approx((0.9, c2, 0.897), rel=1e-12)
+    assert s.external_strip_force == pytest.approx(0.9 * c2 * 480e6 * a_s * 0.010, rel=1e-12)
+    assert s.internal_strip_force == pytest.approx(0.9 * 0.897 * 600e6 * a_n * 0.010, rel=1e-12)
+    f_b = 800e6 * 84.27e-6
+    assert s.min_engagement_external == pytest.approx(f_b / (0.9 * c2 * 480e6 * a_s), rel=1e-12)
+    assert s.min_engagement_internal == pytest.approx(f_b / (0.9 * 0.897 * 600e6 * a_n), rel=1e-12)
