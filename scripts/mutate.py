@@ -382,6 +382,21 @@ def _survivors(o: Outcome) -> None:
     sys.stdout.flush()
 
 
+def _rescored(path: Path, equivalents: dict[tuple[str, str, str], str]) -> list[Outcome]:
+    """The outcomes a ``--json`` file holds, survivors matched again against ``equivalents``."""
+    outcomes = []
+    for d in json.loads(path.read_text()):
+        o = Outcome(**{k: v for k, v in d.items() if k in Outcome.__dataclass_fields__})
+        survivors, o.survivors = o.survivors, []
+        for s in survivors:
+            why = equivalents.get((o.module, s["operator"], _normal(s["diff"])))
+            (o.survivors if why is None else o.equivalent).append(
+                s if why is None else {**s, "why": why}
+            )
+        outcomes.append(o)
+    return outcomes
+
+
 def _report(outcomes: list[Outcome], wall_s: float) -> None:
     print(
         "\nmodule                     mutants  left out  run  killed  survived  equivalent"
@@ -431,7 +446,15 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--json", help="write the outcome here")
     p.add_argument("--log", help="write each mutant's outcome here as it ends (JSON lines)")
     p.add_argument("--python", default=sys.executable)
+    p.add_argument(
+        "--rescore",
+        metavar="JSON",
+        help="no run: print the report of a --json outcome with today's list of equivalents",
+    )
     args = p.parse_args(argv)
+    if args.rescore:
+        _report(_rescored(Path(args.rescore), _equivalents()), float("nan"))
+        return 0
     names = [_key(m) for m in args.modules] or list(TESTS)
     equivalents = _equivalents()
     args.modules_left = len(names)
