@@ -134,3 +134,33 @@ def test_joint_diagram_lines_by_hand():
     assert d["preload_level"] == [30e3] * 41
     # a working load beyond separation: the residual clamp force is held at 0
     assert jt.joint_diagram(30e3, 3e-9, 1e-9, 60e3, 0.25, 2e3)["residual_clamp_level"][0] == 0.0
+
+
+def test_endurance_limit_rolled_after_heat_treatment_by_hand():
+    # σ_ASV = 0.85 (150/d + 45) MPa, d in mm; σ_ASG = (2 − F_Sm/F_0.2) σ_ASV, the ratio in 0…1
+    asv = 0.85 * (150 / 12 + 45) * 1e6
+    assert jt.endurance_limit(0.012) == pytest.approx(asv, rel=1e-12)
+    sg = "after_heat_treatment"
+    assert jt.endurance_limit(0.012, sg) == pytest.approx(2 * asv, rel=1e-12)  # F_Sm = 0
+    assert jt.endurance_limit(0.012, sg, 30e3, 60e3) == pytest.approx(1.5 * asv, rel=1e-12)
+    assert jt.endurance_limit(0.012, sg, 90e3, 60e3) == pytest.approx(asv, rel=1e-12)
+
+
+def test_a_joint_whose_plates_never_unload_never_separates():
+    # F_A,sep = (F_M − losses)/(1 − Φ_n), infinite where Φ_n ≥ 1
+    assert jt.separation_load(30e3, 2.6e3, 0.1) == pytest.approx(27.4e3 / 0.9, rel=1e-12)
+    assert jt.separation_load(30e3, 2.6e3, 1.0) == math.inf
+    assert jt.separation_load(30e3, 2.6e3, 1.2) == math.inf
+    assert jt.separation_load(2e3, 2.6e3, 0.1) == 0.0  # the losses exceed the preload
+    many = jt.separation_load(np.array([30e3, 30e3]), 2.6e3, np.array([0.1, 1.2]))
+    assert many.tolist() == [pytest.approx(27.4e3 / 0.9, rel=1e-12), math.inf]
+
+
+def test_smallest_section_says_shank_where_any_section_is_thinner():
+    # two sections thinner than d_S: the thinnest wins, and it is a shank either way
+    assert jt.smallest_section(0.010358, [(0.02, 0.009), (0.03, 0.0075)]) == (0.0075, "shank")
+    assert jt.smallest_section(0.010358, [(0.02, 0.011)]) == (0.010358, "thread")
+    d0, which = jt.smallest_section(
+        0.010358, [(np.array([0.02, 0.0]), 0.009), (np.array([0.03, 0.0]), 0.0075)]
+    )
+    assert d0.tolist() == [0.0075, 0.010358] and which.tolist() == ["shank", "thread"]
