@@ -47,3 +47,11 @@ def test_friction_sensitivity_with_a_driving_flank_by_hand():
     # one inclined flank: T/tan(α″ − ρ) · sec²(α″ − ρ)/(1 + f²)
     one = t / math.tan(a2 - rho) / math.cos(a2 - rho) ** 2 / (1 + f * f)
     assert cl.friction_sensitivity(t, a2, f) == pytest.approx(one, rel=1e-12)
+
+
+@pytest.mark.parametrize("name", ["single", "Per_ball", "zeta", "", "common "])
+def test_torque_sharing_takes_its_two_arrangements_only(name):
+    assert cl.torque_sharing("common", 4, 0.85) == 1.0
+    assert cl.torque_sharing("per_ball", 4, 0.85) == pytest.approx(3.4, rel=1e-12)
+    with pytest.raises(ValueError, match="arrangement must be one of"):
+        cl.torque_sharing(name, 4, 0.85)
