@@ -89,3 +89,31 @@ def test_a_failed_surface_pressure_says_the_bearing_area_it_needs():
     assert not check.ok
     assert "needs a bearing area ≥ 200 mm²" in check.detail
     assert f"(now {area:.4g} mm²)" in check.detail
+
+
+def test_the_thread_notes_state_pitch_and_stress_area():
+    # ISO 898-1: A_s of M12 = π/4 (12 − 0.938194 × 1.75)² = 84.27 mm²; ASME B1.1: A_t of
+    # 1/2-13 UNC = π/4 (0.5 − 0.9743/13)² = 0.1419 in², E = 0.5 − 0.649519/13 = 0.4500 in
+    _, _, notes = fz.resolve({"thread": "M12"})
+    a_s = math.pi / 4 * (12 - 0.938194 * 1.75) ** 2
+    assert notes[0] == f"thread M12: P = 1.75 mm (ISO 261/262), A_s = {a_s:.4g} mm² (ISO 898-1)"
+    _, _, notes = fz.resolve({"thread": "1/2-13 UNC", "grade": "SAE 5"})
+    a_t = math.pi / 4 * (0.5 - 0.9743 / 13) ** 2
+    assert notes[0].startswith(f"thread 1/2-13 UNC: d = 0.5 in, E = 0.4500 in, A_t = {a_t:.4f} in²")
+
+
+def test_numeric_inputs_find_the_catalogue_thread_for_a_head_but_keep_their_hole():
+    # d and P given as numbers: the catalogue's M12 supplies the ISO 4762 head (d_w 17.23 mm);
+    # no designation was typed, so the clearance hole is not taken from ISO 273
+    fields, fastener, notes = fz.resolve(
+        {"thread_diameter": 0.012, "thread_pitch": 0.00175, "head_standard": "ISO 4762"}
+    )
+    assert fields["bearing_outer_diameter"] == pytest.approx(17.23e-3, rel=1e-12)
+    assert "hole_diameter" not in fields
+    assert fastener.label == "M12 ISO 4762 8.8"
+    assert notes == ["bearing face D_f = d_w,min = 17.23 mm (ISO 4762)"]
+
+
+def test_engagement_length_is_bounded_at_1_m():
+    p = {q.name: q for q in fz.CHECK_INPUTS}["engagement_length"]
+    assert p.maximum == 1.0 and p.minimum == 0.0 and p.exclusive_minimum
