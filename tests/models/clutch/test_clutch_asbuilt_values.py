@@ -104,3 +104,15 @@ def test_warnings_name_the_proportions_and_the_nearest_wire():
         "spring_wire_diameter = 4.1 mm is not a preferred size of EN 10270-1; "
         "the nearest is 4 mm" in odd
     )
+
+
+def test_the_self_locking_sentence_states_the_angles_in_degrees():
+    # α − atan f = 45° − atan 0.1 = 39.29°, against the 10° margin
+    c = checks(ORDINARY)["self_locking"]
+    assert c.ok
+    assert c.detail.startswith(f"α − atan f = {45 - math.degrees(math.atan(0.1)):.3g}° ≥ 10°")
+    # at 15° flanks with f = 0.1 the margin is 9.29° < 10°: the sentence says what to change
+    tight = checks({**ORDINARY, "groove_angle": 15 * DEG})["self_locking"]
+    assert not tight.ok
+    assert tight.detail.startswith(f"α − atan f = {15 - math.degrees(math.atan(0.1)):.3g}° < 10°")
+    assert "use flatter flanks" in tight.detail
