@@ -75,7 +75,8 @@ test-fast: $(VENV)/.installed-dev
 	PY=$(BIN)/python scripts/check -q -m "$(FAST)" --hypothesis-profile=fast -n 2 \
 		--ignore=tests/service/test_fuzz.py
 
-# Mutation testing of the physics modules, each against its own tests (scripts/mutate.py):
+# Mutation testing of engine/physics and engine/procedures, each module against its own tests
+# (scripts/mutate.py; survivors judged equivalent: scripts/mutate_equivalent.toml):
 # a seeded sample within a time budget; prints the share killed and the survivors. Not in CI.
 #   make mutate MODULES="engine/physics/springs.py engine/physics/threads.py" SAMPLE=80 SEED=1
 MODULES ?=
