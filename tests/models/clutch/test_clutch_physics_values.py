@@ -36,17 +36,23 @@ def test_wire_for_torque_defaults_match_the_explicit_call():
 
 
 def test_friction_sensitivity_with_a_driving_flank_by_hand():
-    # T/p · (sec²(α″ − ρ) + sec²(α′ − ρ)) / (1 + f²), p = tan(α′ − ρ) + tan(α″ − ρ)
+    # balls lifting a pressure disc (both flanks at once): p = tan(α′ − ρ) + tan(α″ − ρ),
+    # dT/df = T/p · (sec²(α″ − ρ) + sec²(α′ − ρ)) / (1 + f²)
     t, a2, a1, f = 1.5, 45 * DEG, 30 * DEG, 0.1
     rho = math.atan(f)
     p = math.tan(a1 - rho) + math.tan(a2 - rho)
     expected = t / p * (1 / math.cos(a2 - rho) ** 2 + 1 / math.cos(a1 - rho) ** 2) / (1 + f * f)
-    assert cl.friction_sensitivity(t, a2, f, a1) == pytest.approx(expected, rel=1e-12)
-    many = cl.friction_sensitivity(np.array([t, t]), a2, f, a1)
+    disc = cl.friction_sensitivity(t, a2, f, a1, "pressure_disc")
+    assert disc == pytest.approx(expected, rel=1e-12)
+    many = cl.friction_sensitivity(np.array([t, t]), a2, f, a1, "pressure_disc")
     assert many == pytest.approx([expected, expected], rel=1e-12)
     # one inclined flank: T/tan(α″ − ρ) · sec²(α″ − ρ)/(1 + f²)
     one = t / math.tan(a2 - rho) / math.cos(a2 - rho) ** 2 / (1 + f * f)
     assert cl.friction_sensitivity(t, a2, f) == pytest.approx(one, rel=1e-12)
+    # a free ball (the default) pushes by the larger of the two, here the 45° flank's:
+    # the same as that flank alone, 1.5/0.81818 · 1.66942/1.01 = 3.0303 N·m
+    assert cl.friction_sensitivity(t, a2, f, a1) == pytest.approx(one, rel=1e-12)
+    assert one == pytest.approx(3.030303, rel=1e-6)
 
 
 @pytest.mark.parametrize("name", ["single", "Per_ball", "zeta", "", "common "])
