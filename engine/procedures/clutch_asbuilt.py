@@ -659,20 +659,28 @@ def peak_friction_shift(x: Mapping[str, Any], low: Any, high: Any) -> Any:
     of it). Floats or arrays, like :func:`characteristic`.
     """
 
-    def peaks(f: Any) -> tuple[Any, Any]:
-        point = {**x, "flank_friction": f}
+    f = x["flank_friction"]
+
+    def peaks(point: dict[str, Any]) -> tuple[Any, Any]:
         spring = Spring(point)
         coarse = characteristic(point, spring)["peak_torque"]
         fine = characteristic(point, spring, points=FINE_POINTS)["peak_torque"]
         return np.asarray(coarse, float), np.asarray(fine, float)
 
-    (here, at), (up_c, up), (down_c, down) = (
-        peaks(x["flank_friction"]),
-        peaks(high),
-        peaks(low),
-    )
+    if _arrays(x) or np.ndim(f) or np.ndim(low) or np.ndim(high):  # many designs
+        (here, at), (up_c, up), (down_c, down) = (
+            peaks({**x, "flank_friction": g}) for g in (f, high, low)
+        )
+    else:  # one design: its three frictions as three elements of one call of each grid
+        coarse, fine = peaks({**x, "flank_friction": np.array([f, high, low], dtype=float)})
+        (here, up_c, down_c), (at, up, down) = coarse, fine
     grid = np.maximum(np.abs(at - here), np.maximum(np.abs(up - up_c), np.abs(down - down_c)))
     return (np.maximum(up - here, here - down) + grid) / np.abs(here)
+
+
+def _arrays(x: Mapping[str, Any]) -> list[np.ndarray]:
+    """The inputs of ``x`` that are numpy arrays (one design per element)."""
+    return [v for v in x.values() if isinstance(v, np.ndarray) and v.ndim]
 
 
 #: Outputs only the whole characteristic gives (its peak); :func:`end_values` gives the rest.
