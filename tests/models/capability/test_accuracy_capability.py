@@ -1,0 +1,19 @@
+"""bench/accuracy_capability.py's measurement held as a test: on the seeded 200-series draw
+tool.capability and friction.iso16047 agree with exact rational arithmetic to float
+rounding, the error 0 they state."""
+
+import pytest
+
+from bench import accuracy_capability
+
+
+@pytest.mark.slow
+def test_no_estimate_is_exceeded_on_200_random_series():
+    rows = accuracy_capability.rows(200, seed=0)
+    assert {r["model"] for r in rows} == {"tool.capability", "friction.iso16047"}
+    for row in rows:
+        where = f"{row['model']} {row['rung']} {row['output']}"
+        assert row["n"] == 200, where
+        assert row["exceeded"] == 0, where
+        assert row["worst_ratio"] <= 1.0, where
+        assert row["kind"] == "bound", where
