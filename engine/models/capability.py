@@ -8,7 +8,10 @@ as two limits), calls those functions and turns the numbers into a verdict with 
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import dataclass
 from typing import Any
+
+import numpy as np
 
 from ..core.errors import InputOutOfRange
 from ..core.params import count, positive, quantity, samples
@@ -66,11 +69,66 @@ INPUTS: tuple[Param, ...] = (
     ),
     count(
         "sample_count",
-        "Number of measured torques behind mean_torque and torque_sd (for the sample-size check)",
+        "Number of measured torques behind mean_torque and torque_sd (for the sample-size "
+        "check); with the ISO 5393 run means, the tightenings in each run",
         minimum=2,
         maximum=1_000_000,
         symbol="n",
         group="measurements",
+    ),
+    samples(
+        "hard_joint_samples",
+        "N*m",
+        "ISO 5393 run on the hard test joint: its measured torques (with soft_joint_samples; "
+        "the two runs are pooled into one sample)",
+        minimum=0.0,
+        maximum=MAX_TORQUE,
+        symbol="T_hard,i",
+        group="ISO 5393 runs",
+    ),
+    samples(
+        "soft_joint_samples",
+        "N*m",
+        "ISO 5393 run on the soft test joint: its measured torques (with hard_joint_samples)",
+        minimum=0.0,
+        maximum=MAX_TORQUE,
+        symbol="T_soft,i",
+        group="ISO 5393 runs",
+    ),
+    Param(
+        "hard_mean_torque",
+        "N*m",
+        "Mean torque of the hard-joint run, when its samples are not given (with "
+        "hard_torque_sd, the soft run's two and sample_count, the tightenings in each run)",
+        minimum=0.0,
+        maximum=MAX_TORQUE,
+        symbol="x̄_hard",
+        group="ISO 5393 runs",
+    ),
+    positive(
+        "hard_torque_sd",
+        "N*m",
+        "Standard deviation (n − 1) of the hard-joint run",
+        maximum=MAX_TORQUE,
+        symbol="s_hard",
+        group="ISO 5393 runs",
+    ),
+    Param(
+        "soft_mean_torque",
+        "N*m",
+        "Mean torque of the soft-joint run",
+        minimum=0.0,
+        maximum=MAX_TORQUE,
+        symbol="x̄_soft",
+        group="ISO 5393 runs",
+    ),
+    positive(
+        "soft_torque_sd",
+        "N*m",
+        "Standard deviation (n − 1) of the soft-joint run",
+        maximum=MAX_TORQUE,
+        symbol="s_soft",
+        group="ISO 5393 runs",
     ),
     positive(
         "nominal_torque",
@@ -169,12 +227,36 @@ OUTPUTS: tuple[Output, ...] = (
         "Share outside the tolerance if the torques were normal with x̄ and s, in ppm",
         label="outside, normal estimate [ppm]",
     ),
+    Output(
+        "torque_scatter",
+        "1",
+        "The tool's scatter as makers rate it: ±3s over the mean (null at a mean of 0)",
+        label="scatter ±3s/x̄",
+        display_unit="%",
+    ),
+    Output("hard_mean_torque", "N*m", "Mean of the hard-joint run (null without ISO 5393 runs)"),
+    Output("soft_mean_torque", "N*m", "Mean of the soft-joint run (null without ISO 5393 runs)"),
+    Output("hard_torque_sd", "N*m", "s of the hard-joint run (null without ISO 5393 runs)"),
+    Output("soft_torque_sd", "N*m", "s of the soft-joint run (null without ISO 5393 runs)"),
+    Output(
+        "mean_shift",
+        "N*m",
+        "Mean shift x̄_soft − x̄_hard between the runs (null without ISO 5393 runs)",
+    ),
     Output("capable", "1", "Both indices reach the required index and n is large enough", "bool"),
 )
 
 
-def _limits(x: Mapping[str, Any]) -> tuple[float, float, str]:
-    """(L, U, how they were given) from the limits or the nominal ± tolerance."""
+def _points(x: Mapping[str, Any]) -> int:
+    """Points of an array request (0 when every input is a scalar)."""
+    for v in x.values():
+        if isinstance(v, np.ndarray) and v.ndim == 1:
+            return int(v.shape[0])
+    return 0
+
+
+def _limits(x: Mapping[str, Any]) -> tuple[Any, Any, str]:
+    """(L, U, how they were given) from the limits or the nominal ± tolerance (floats or arrays)."""
     lower, upper = x.get("lower_limit"), x.get("upper_limit")
     if (lower is None) != (upper is None):
         missing = "upper_limit" if upper is None else "lower_limit"
@@ -183,13 +265,16 @@ def _limits(x: Mapping[str, Any]) -> tuple[float, float, str]:
             field=missing,
         )
     if lower is not None and upper is not None:
-        if not lower < upper:
+        if not np.all(np.less(lower, upper)):
+            if isinstance(lower, np.ndarray) or isinstance(upper, np.ndarray):
+                # some points refused: the loop names each (the array path answers none)
+                raise InputOutOfRange("lower_limit must be below upper_limit", field="lower_limit")
             raise InputOutOfRange(
                 f"lower_limit = {lower:g} N*m is not allowed: must be below upper_limit = "
                 f"{upper:g} N*m",
                 field="lower_limit",
             )
-        return float(lower), float(upper), "limits as given"
+        return lower, upper, "limits as given"
     nominal = x.get("nominal_torque")
     if nominal is None:
         raise InputOutOfRange(
@@ -197,16 +282,116 @@ def _limits(x: Mapping[str, Any]) -> tuple[float, float, str]:
             "upper_limit",
             field="nominal_torque",
         )
-    t = float(x["relative_tolerance"])
-    return (
-        nominal * (1.0 - t),
-        nominal * (1.0 + t),
-        f"{quantity(nominal, 'N*m', '.4g')} ± {quantity(t, '%')}",
+    t = x["relative_tolerance"]
+    how = (
+        "nominal ± tolerance"
+        if isinstance(nominal, np.ndarray) or isinstance(t, np.ndarray)
+        else f"{quantity(nominal, 'N*m', '.4g')} ± {quantity(t, '%')}"
     )
+    return nominal * (1.0 - t), nominal * (1.0 + t), how
 
 
-def _statistics(x: Mapping[str, Any]) -> tuple[float, float, int | None, tuple[float, ...]]:
-    """(x̄, s, n, samples) from the samples, or from the mean and σ given."""
+@dataclass(frozen=True)
+class _Runs:
+    """The ISO 5393 hard-joint and soft-joint runs (floats, or arrays in a sweep)."""
+
+    hard_mean: Any
+    hard_sd: Any
+    soft_mean: Any
+    soft_sd: Any
+    #: Values in each run (None: not given with the means).
+    hard_count: Any
+    soft_count: Any
+
+
+@dataclass(frozen=True)
+class _Statistics:
+    """x̄, s and n of the test (the runs pooled where ISO 5393 runs are given)."""
+
+    mean: Any
+    sd: Any
+    count: Any
+    values: tuple[float, ...]
+    runs: _Runs | None
+
+
+def _run_samples(name: str, given: Any) -> tuple[float, float, int]:
+    values = tuple(given)
+    mean = cap.sample_mean(values)
+    sd = cap.sample_standard_deviation(values)
+    if not sd > 0.0:
+        raise InputOutOfRange(
+            f"{name}: all {len(values)} values are equal, so s = 0: give the values as measured, "
+            "with their full resolution",
+            field=name,
+        )
+    return mean, sd, len(values)
+
+
+def _runs(x: Mapping[str, Any]) -> _Statistics | None:
+    """The two ISO 5393 runs pooled, or None where the request gives no run."""
+    sample_names = ("hard_joint_samples", "soft_joint_samples")
+    summary_names = ("hard_mean_torque", "hard_torque_sd", "soft_mean_torque", "soft_torque_sd")
+    given_samples = [n for n in sample_names if x.get(n) is not None]
+    given_summary = [n for n in summary_names if x.get(n) is not None]
+    if not given_samples and not given_summary:
+        return None
+    for name in ("torque_samples", "mean_torque", "torque_sd"):
+        if x.get(name) is not None:
+            raise InputOutOfRange(
+                f"give the ISO 5393 runs (hard_… and soft_…) or {name}, not both", field=name
+            )
+    if given_samples and given_summary:
+        raise InputOutOfRange(
+            "give both runs as samples (hard_joint_samples, soft_joint_samples) or both as "
+            f"mean and standard deviation, not {given_samples[0]} with {given_summary[0]}",
+            field=given_summary[0],
+        )
+    if given_samples:
+        for name in sample_names:
+            if x.get(name) is None:
+                raise InputOutOfRange(f"{name} is required with the other run", field=name)
+        if x.get("sample_count") is not None:
+            raise InputOutOfRange(
+                "sample_count goes with run means, not with samples", field="sample_count"
+            )
+        hm, hs, hn = _run_samples("hard_joint_samples", x["hard_joint_samples"])
+        sm, ss, sn = _run_samples("soft_joint_samples", x["soft_joint_samples"])
+        values = (*x["hard_joint_samples"], *x["soft_joint_samples"])
+        runs = _Runs(hm, hs, sm, ss, hn, sn)
+        count: Any = hn + sn
+    else:
+        for name in summary_names:
+            if x.get(name) is None:
+                raise InputOutOfRange(f"{name} is required with the other run's", field=name)
+        n = x.get("sample_count")
+        if n is None:
+            raise InputOutOfRange(
+                "sample_count (the tightenings in each run) is required to pool the two runs",
+                field="sample_count",
+            )
+        values = ()
+        runs = _Runs(
+            x["hard_mean_torque"],
+            x["hard_torque_sd"],
+            x["soft_mean_torque"],
+            x["soft_torque_sd"],
+            n,
+            n,
+        )
+        count = 2 * n
+    mean = cap.pooled_mean(runs.hard_mean, runs.hard_count, runs.soft_mean, runs.soft_count)
+    sd = cap.pooled_standard_deviation(
+        runs.hard_mean, runs.hard_sd, runs.hard_count, runs.soft_mean, runs.soft_sd, runs.soft_count
+    )
+    return _Statistics(mean, sd, count, values, runs)
+
+
+def _statistics(x: Mapping[str, Any]) -> _Statistics:
+    """(x̄, s, n, samples) from the samples, the mean and σ given, or the ISO 5393 runs."""
+    pooled = _runs(x)
+    if pooled is not None:
+        return pooled
     given = x.get("torque_samples")
     summary = [n for n in ("mean_torque", "torque_sd") if x.get(n) is not None]
     if given is not None:
@@ -224,28 +409,103 @@ def _statistics(x: Mapping[str, Any]) -> tuple[float, float, int | None, tuple[f
                 "are unbounded: give the values as measured, with their full resolution",
                 field="torque_samples",
             )
-        return mean, sd, len(values), values
+        return _Statistics(mean, sd, len(values), values, None)
     if len(summary) < 2:
         missing = "mean_torque" if x.get("mean_torque") is None else "torque_sd"
         raise InputOutOfRange(
             f"give torque_samples, or mean_torque and torque_sd: {missing} is missing",
             field="torque_samples" if not summary else missing,
         )
-    n = x.get("sample_count")
-    return float(x["mean_torque"]), float(x["torque_sd"]), None if n is None else int(n), ()
+    return _Statistics(x["mean_torque"], x["torque_sd"], x.get("sample_count"), (), None)
+
+
+@dataclass(frozen=True)
+class _Evaluation:
+    """The numbers of one design or of many (floats or arrays), and each check's verdict."""
+
+    values: dict[str, Any]
+    verdicts: dict[str, Any]
+    stats: _Statistics
+    how: str
+    outside_count: Any
+
+
+def _evaluate(x: Mapping[str, Any]) -> _Evaluation:
+    """The statistics, indices and verdicts: the same lines for one design and for many."""
+    st = _statistics(x)
+    lower, upper, how = _limits(x)
+    name, name_k, n_min, _, _ = STUDIES[str(x["study"])]
+    required = x["required_index"]
+    c = cap.capability_index(upper, lower, st.sd)
+    ck = cap.critical_capability_index(upper, lower, st.mean, st.sd)
+    outside = cap.normal_fraction_outside(upper, lower, st.mean, st.sd)
+    offset = (st.mean - 0.5 * (upper + lower)) / (0.5 * (upper - lower))
+    verdicts: dict[str, Any] = {
+        "capability_index": np.greater_equal(c, required),
+        "critical_capability_index": np.greater_equal(ck, required),
+        "sample_size": False if st.count is None else np.greater_equal(st.count, n_min),
+    }
+    outside_count: Any = None
+    if st.values:
+        v = np.asarray(st.values)
+        lo, hi = np.asarray(lower)[..., None], np.asarray(upper)[..., None]
+        outside_count = np.sum((v < lo) | (v > hi), axis=-1)
+        verdicts["samples_within_limits"] = outside_count == 0
+    capable: Any = np.True_
+    for verdict in verdicts.values():
+        capable = np.logical_and(capable, verdict)
+    runs = st.runs
+    values: dict[str, Any] = {
+        "mean_torque": st.mean,
+        "torque_sd": st.sd,
+        "sample_count": st.count,
+        "minimum_sample_count": n_min,
+        "min_torque": min(st.values) if st.values else None,
+        "max_torque": max(st.values) if st.values else None,
+        "lower_limit": lower,
+        "upper_limit": upper,
+        "capability_index": c,
+        "critical_capability_index": ck,
+        "index_names": f"{name}/{name_k}",
+        "required_index": required,
+        "mean_offset": offset,
+        "outside_ppm": outside * 1e6,
+        "torque_scatter": _scatter(st.mean, st.sd),
+        "hard_mean_torque": None if runs is None else runs.hard_mean,
+        "soft_mean_torque": None if runs is None else runs.soft_mean,
+        "hard_torque_sd": None if runs is None else runs.hard_sd,
+        "soft_torque_sd": None if runs is None else runs.soft_sd,
+        "mean_shift": None if runs is None else cap.mean_shift(runs.hard_mean, runs.soft_mean),
+        "capable": capable,
+    }
+    return _Evaluation(values, verdicts, st, how, outside_count)
+
+
+def _scatter(mean: Any, sd: Any) -> Any:
+    """±3s/x̄ where the mean is positive; none (NaN in an array) at a mean of 0."""
+    if isinstance(mean, np.ndarray) or isinstance(sd, np.ndarray):
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(np.greater(mean, 0.0), cap.relative_scatter(mean, sd), np.nan)
+    return cap.relative_scatter(mean, sd) if mean > 0.0 else None
+
+
+def _plain(value: Any) -> Any:
+    """A numpy scalar as the Python number (or bool) the scalar path returns."""
+    if isinstance(value, np.generic | np.ndarray):
+        return value.item()
+    return value
 
 
 def _capability(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    mean, sd, n, values = _statistics(x)
-    lower, upper, how = _limits(x)
+    ev = _evaluate(x)
+    values = {k: _plain(v) for k, v in ev.values.items()}
+    st = ev.stats
+    n = None if st.count is None else int(st.count)
     study = str(x["study"])
     name, name_k, n_min, test, how_taken = STUDIES[study]
     required = float(x["required_index"])
-    c = float(cap.capability_index(upper, lower, sd))
-    ck = float(cap.critical_capability_index(upper, lower, mean, sd))
-    outside = float(cap.normal_fraction_outside(upper, lower, mean, sd))
-    half = 0.5 * (upper - lower)
-    offset = (mean - 0.5 * (upper + lower)) / half
+    c, ck = values["capability_index"], values["critical_capability_index"]
+    lower, upper = values["lower_limit"], values["upper_limit"]
     checks = [
         Check(
             "capability_index",
@@ -293,52 +553,65 @@ def _capability(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 "scatters widely"
             )
     notes = [
-        f"tolerance {quantity(lower, 'N*m', '.4g')} … {quantity(upper, 'N*m', '.4g')} ({how})",
+        f"tolerance {quantity(lower, 'N*m', '.4g')} … {quantity(upper, 'N*m', '.4g')} ({ev.how})",
         f"{name} and {name_k} use the sample standard deviation (n − 1); the ppm figure assumes "
         "normally distributed torques",
     ]
-    if values:
-        outside_count = sum(1 for v in values if not lower <= v <= upper)
-        if outside_count:
-            checks.append(
-                Check(
-                    "samples_within_limits",
-                    False,
-                    f"{outside_count} of {len(values)} measured torques lie outside the tolerance",
-                )
+    if st.runs is not None:
+        notes.append(
+            f"ISO 5393 runs pooled as one sample of {n} values: hard joint x̄ = "
+            f"{values['hard_mean_torque']:.4g} N·m, soft joint x̄ = "
+            f"{values['soft_mean_torque']:.4g} N·m, mean shift "
+            f"{values['mean_shift']:+.3g} N·m; the pooled s includes the shift. ISO 5393's own "
+            "evaluation text was not read (docs/sources.md): the pooling is exact arithmetic"
+        )
+    if st.values:
+        count = int(ev.outside_count)
+        total = len(st.values)
+        checks.append(
+            Check(
+                "samples_within_limits",
+                count == 0,
+                f"{count} of {total} measured torques lie outside the tolerance"
+                if count
+                else f"all {total} measured torques lie within the tolerance",
             )
-        else:
-            checks.append(
-                Check(
-                    "samples_within_limits",
-                    True,
-                    f"all {len(values)} measured torques lie within the tolerance",
-                )
-            )
-    capable = all(ch.ok for ch in checks)
+        )
+    values["capable"] = all(ch.ok for ch in checks)
     return Result(
-        values={
-            "mean_torque": mean,
-            "torque_sd": sd,
-            "sample_count": n,
-            "minimum_sample_count": n_min,
-            "min_torque": min(values) if values else None,
-            "max_torque": max(values) if values else None,
-            "lower_limit": lower,
-            "upper_limit": upper,
-            "capability_index": c,
-            "critical_capability_index": ck,
-            "index_names": f"{name}/{name_k}",
-            "required_index": required,
-            "mean_offset": offset,
-            "outside_ppm": outside * 1e6,
-            "capable": capable,
-        },
+        values=values,
         rung=ctx.rung,
         error_estimate=0.0,
         checks=checks,
         notes=notes,
         warnings=warnings,
+    )
+
+
+def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    """The array path: :func:`_evaluate` on the columns of a sweep or a study's chunk."""
+    n = _points(x) or 1
+    ev = _evaluate(x)
+    values: dict[str, Any] = {}
+    for name, v in ev.values.items():
+        if v is None:
+            values[name] = None
+        elif isinstance(v, np.ndarray) and v.shape == (n,):
+            values[name] = v
+        else:
+            values[name] = np.broadcast_to(np.asarray(v), (n,)).copy()
+    checks = {k: np.broadcast_to(np.asarray(v, dtype=bool), (n,)) for k, v in ev.verdicts.items()}
+    name, name_k = STUDIES[str(x["study"])][:2]
+    notes = [
+        f"{name} and {name_k} use the sample standard deviation (n − 1); the ppm figure assumes "
+        "normally distributed torques"
+    ]
+    return Result(
+        values=values,
+        rung=ctx.rung,
+        error_estimate=0.0,
+        notes=notes,
+        check_arrays=checks,
     )
 
 
@@ -370,6 +643,8 @@ CAPABILITY = ModelSpec(
     outputs=OUTPUTS,
     rungs=(CLOSED_FORM,),
     compute=_capability,
+    vectorized=_vectorized,
+    vector_rungs=("closed_form",),
     examples=(
         # [Danikor]'s worked example: 0.8 N·m ± 10 %, 25 readings, x̄ = 0.81, s = 0.011 N·m
         {
@@ -387,6 +662,16 @@ CAPABILITY = ModelSpec(
             "lower_limit": 72.0,
             "upper_limit": 88.0,
             "study": "process",
+        },
+        # ISO 5393 runs of a 50 N·m nutrunner, 25 tightenings on each joint, ±5 %
+        {
+            "hard_mean_torque": 50.2,
+            "hard_torque_sd": 0.35,
+            "soft_mean_torque": 49.6,
+            "soft_torque_sd": 0.45,
+            "sample_count": 25,
+            "nominal_torque": 50.0,
+            "relative_tolerance": 0.05,
         },
     ),
 )
