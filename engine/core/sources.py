@@ -691,6 +691,101 @@ SOURCES: dict[str, Source] = {
             "exact helix relation.",
         ),
         Source(
+            id="Danikor-ISO5393",
+            kind="web page",
+            title="6σ, ±3σ: telling tool accuracy apart (ISO 5393)",
+            authors="Danikor (tightening-tool maker)",
+            year="read 2026",
+            published="https://www.danikor.cn/en/newsinfo/293",
+            covers="Model tool.capability's ISO 5393 runs: tool accuracy is evaluated with the "
+            "6 sigma method of ISO 5393 on readings from hard and soft joints, and makers quote "
+            "it as +/-3 sigma over the mean (the model's torque_scatter).",
+            reconstruction="ISO 5393 itself was not read. The page's formulas are images; the "
+            "pooling of the two runs into one sample (mean, s with n - 1, the mean shift) is "
+            "exact arithmetic on the runs' values, not a reading of the standard.",
+        ),
+        Source(
+            id="TorqueAudit",
+            kind="web page",
+            title="Torque audit methods: first motion, breakaway, mark (residual torque)",
+            authors="S&R Torque (srtorque.com, FAQ 9 and 'What is break-away torque'); "
+            "Mountz (first movement torque test); Desoutter Delta user manual (loose and "
+            "tightening)",
+            year="read 2026",
+            published="http://www.srtorque.com/faq9.html; "
+            "https://www.srtorque.com/resources/what-is-break-away-torque/",
+            covers="Model joint.audit: the three audit methods (first motion in the "
+            "tightening direction, first motion in the loosening direction, the torque to "
+            "turn back to a mark after loosening) and that the static (breakaway) torque "
+            "exceeds the dynamic torque of tightening; that auditors read first motion as the "
+            "installed torque (a practice, used only in a warning).",
+        ),
+        Source(
+            id="FrictionTables",
+            kind="web page",
+            title="Static and sliding friction values",
+            authors="pickedshares.com; Lust CDA3000 engineering guide, Table 7.21",
+            year="read 2026",
+            published="https://pickedshares.com/en/static-and-sliding-friction-values/",
+            covers="Model joint.audit's default static-friction excess r = 1...1.15: steel on "
+            "steel dry static 0.45...0.80 against sliding 0.40...0.70 (ratio about 1.13), "
+            "lubricated 0.10 both (ratio 1).",
+        ),
+        Source(
+            id="Bickford",
+            kind="textbook",
+            title="An Introduction to the Design and Behavior of Bolted Joints",
+            authors="J. H. Bickford",
+            year="3rd ed.",
+            published="Marcel Dekker / CRC Press",
+            covers="A published restart torque (the tank-tread end-connector bolts: 5/8-18 "
+            "Grade 8 tightened to 150 lb-ft, stretch 0.0015 in relaxing to 0.001 in, restarted "
+            "at 100 lb-ft), reproduced in tests/validation/test_audit_restart_torque.py.",
+            reconstruction="Read as the chapter abstract published by Taylor & Francis, not "
+            "the book.",
+        ),
+        Source(
+            id="ASTME1685",
+            kind="standard",
+            title="Standard Practice for Measuring the Change in Length of Fasteners Using "
+            "the Ultrasonic Pulse-Echo Technique",
+            authors="ASTM E28",
+            year="2013, 2020",
+            published="ASTM E1685",
+            covers="Model bolt.ultrasonic: the practice of measuring a bolt's change in length "
+            "by pulse-echo time of flight; its scope (bolts of 6.3 mm and more with effective "
+            "length-to-diameter ratios of 2:1 or more) as a check.",
+            reconstruction="Paywalled; the scope is as the publishers' abstracts print it. "
+            "The relations are the instrument makers' ([BoltMike], [Dakota]).",
+        ),
+        Source(
+            id="BoltMike",
+            kind="web page",
+            title="Guide to Ultrasonic Inspection of Fasteners (BoltMike III), chapter 8: "
+            "BoltMike formulas",
+            authors="StressTel / GE",
+            year="2003",
+            published="manualshelf.com copy of the operating manual, page 35",
+            covers="Model bolt.ultrasonic: the time of flight is half the sound path "
+            "duration; the change in ultrasonic length is the velocity times the change in "
+            "time of flight; elongation = stress x effective length / E.",
+        ),
+        Source(
+            id="Dakota",
+            kind="web page",
+            title="MAX II / MINI-MAX ultrasonic bolt tension monitor, operation manual "
+            "(sonic stress factor and temperature factor calibration; quantities of "
+            "measurement)",
+            authors="Dakota Ultrasonics",
+            year="read 2026",
+            published="manualshive.com and manualslib.com copies, pages 85-135",
+            covers="Model bolt.ultrasonic: the sonic stress factor SSF = (L_M1 - L_M0)/"
+            "(L_U1 - L_U0), mechanical over ultrasonic change in length; elongation = change "
+            "in time x velocity x stress factor; the temperature factor T_F = (L_T - L_0)/"
+            "(L_0 (T - T_0)) x 10^6 combining thermal expansion and the velocity's change; "
+            "that stress factor and velocity vary by about 5 % over steel fasteners.",
+        ),
+        Source(
             id="Saltelli2010",
             kind="paper",
             title="Variance based sensitivity analysis of model output. Design and estimator "
@@ -754,6 +849,13 @@ _PATTERNS: tuple[tuple[re.Pattern[str], str | None], ...] = (
     (re.compile(r"\bVDI/VDE 2645\b"), "VDI-VDE2645"),
     (re.compile(r"\bDanikor\b"), "Danikor"),
     (re.compile(r"\bISO 16047\b"), "ISO16047"),
+    (re.compile(r"\bDanikor-ISO5393\b"), "Danikor-ISO5393"),
+    (re.compile(r"\bTorqueAudit\b"), "TorqueAudit"),
+    (re.compile(r"\bFrictionTables\b"), "FrictionTables"),
+    (re.compile(r"\bBickford\b"), "Bickford"),
+    (re.compile(r"\bASTM E1685\b"), "ASTME1685"),
+    (re.compile(r"\bBoltMike\b"), "BoltMike"),
+    (re.compile(r"\bDakota\b"), "Dakota"),
 )
 
 

@@ -13,6 +13,7 @@ schema, the form and ``GET /api/v1/models`` all derive from this tuple.
 from __future__ import annotations
 
 from ..core.spec import ModelSpec
+from .audit import AUDIT as JOINT_AUDIT
 from .blow import BLOW
 from .capability import CAPABILITY as TOOL_CAPABILITY
 from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
@@ -31,6 +32,7 @@ MODELS: tuple[ModelSpec, ...] = (
     PRELOAD_TIGHTENING,
     PRELOAD_CONTROL,
     JOINT_VDI2230,
+    JOINT_AUDIT,
     BLOW,
     TOOL_CAPABILITY,
     FRICTION_ISO16047,

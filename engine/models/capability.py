@@ -20,7 +20,8 @@ from ..physics import capability as cap
 
 SOURCE = (
     "VDI/VDE 2645-2 (machine capability, Cm and Cmk) and VDI/VDE 2645-3 (process "
-    "capability, Cp and Cpk), as public secondary sources print them; worked example [Danikor]"
+    "capability, Cp and Cpk), as public secondary sources print them; worked example [Danikor]; "
+    "ISO 5393 hard- and soft-joint runs pooled into one sample [Danikor-ISO5393]"
 )
 
 #: Largest torque a sample or a limit may hold, [N*m] (a large bolting tool: 100 kN·m).
@@ -563,7 +564,7 @@ def _capability(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"{values['hard_mean_torque']:.4g} N·m, soft joint x̄ = "
             f"{values['soft_mean_torque']:.4g} N·m, mean shift "
             f"{values['mean_shift']:+.3g} N·m; the pooled s includes the shift. ISO 5393's own "
-            "evaluation text was not read (docs/sources.md): the pooling is exact arithmetic"
+            "evaluation text was not read [Danikor-ISO5393]: the pooling is exact arithmetic"
         )
     if st.values:
         count = int(ev.outside_count)

@@ -238,7 +238,7 @@ def mean_shift(hard_mean: Any, soft_mean: Any) -> Any:
     Notes
     -----
     ISO 5393 runs a tool on a hard and a soft test joint; tool makers quote the
-    difference of the two means as the tool's mean shift ([Danikor] on ISO 5393's
+    difference of the two means as the tool's mean shift ([Danikor-ISO5393] on ISO 5393's
     6σ accuracy from hard and soft joints).
 
     Examples
@@ -345,7 +345,7 @@ def relative_scatter(mean: Any, standard_deviation: Any) -> Any:
 
     Notes
     -----
-    ISO 5393's "6σ accuracy" as [Danikor] quotes it: the 6σ band of the readings on
+    ISO 5393's "6σ accuracy" as [Danikor-ISO5393] quotes it: the 6σ band of the readings on
     the hard and soft joints, stated as ±3σ over the mean.
 
     Examples

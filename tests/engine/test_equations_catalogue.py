@@ -92,6 +92,20 @@ KNOWN_STEPS = {
         "total_friction_from_test",
         "sample_mean",
     ),
+    # R13 per newton, the pitch term, the preload band, then each audit window
+    "joint.audit": (
+        "tightening_torque_per_preload",
+        "pitch_torque_per_preload",
+        "preload_bounds_from_torque",
+        "audit_window",
+    ),
+    # a reading: the temperature's share off, the ultrasonic change, ΔL, then F = ΔL/δ_S
+    "preload.ultrasonic": (
+        "thermal_length_change",
+        "ultrasonic_length_change",
+        "mechanical_elongation",
+        "preload_from_elongation",
+    ),
 }
 
 
