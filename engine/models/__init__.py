@@ -23,6 +23,7 @@ from .nutrunner import NUTRUNNER_DRIVE
 from .preload import CONTROL as PRELOAD_CONTROL
 from .preload import TIGHTENING as PRELOAD_TIGHTENING
 from .rare_impact import RARE_IMPACT
+from .ultrasonic import ULTRASONIC as PRELOAD_ULTRASONIC
 
 MODELS: tuple[ModelSpec, ...] = (
     NUTRUNNER_DRIVE,
@@ -31,6 +32,7 @@ MODELS: tuple[ModelSpec, ...] = (
     RARE_IMPACT,
     PRELOAD_TIGHTENING,
     PRELOAD_CONTROL,
+    PRELOAD_ULTRASONIC,
     JOINT_VDI2230,
     JOINT_AUDIT,
     BLOW,
