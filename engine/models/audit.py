@@ -57,6 +57,11 @@ _NOT_AUDIT = {
     "engaged_length",
     "nut_class",
     "drive",
+    "utilization",
+    "internal_thread_shear_strength",
+    "engagement_length",
+    "nut_property_class",
+    "load_introduction",
 }
 
 _JOINT_NAMES = tuple(p.name for p in JOINT_INPUTS if p.name not in _NOT_AUDIT)

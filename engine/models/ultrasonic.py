@@ -26,7 +26,7 @@ SOURCE = (
 
 #: The joint inputs that fix the bolt and its compliance.
 _JOINT_NAMES = (
-    *_BOLT_NAMES,
+    *(name for name in _BOLT_NAMES if name != "utilization"),
     "head",
     "joint_type",
     "shank_length",

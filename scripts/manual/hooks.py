@@ -60,6 +60,8 @@ VALIDATION: dict[str, tuple[str, ...]] = {
     "blow.joint": ("test_blow_two_mass.py",),
     "tool.capability": ("test_capability_published.py",),
     "friction.iso16047": ("test_iso16047_derivation.py",),
+    "joint.audit": ("test_audit_restart_torque.py",),
+    "preload.ultrasonic": ("test_ultrasonic_acoustoelastic.py",),
 }
 
 #: Hand-written pages, in the order of the navigation (generated ones are placed among them).
