@@ -275,7 +275,7 @@ CLOSED_FORM = Rung(
 
 #: M12 8.8 through 2 × 20 mm steel at 80 N·m ± 5 %, μ 0.08…0.16 (joint.vdi2230's second case).
 M12_AT_80 = {
-    "thread": "M12",
+    "thread_diameter": 0.012,
     "plate1_thickness": 0.020,
     "plate2_thickness": 0.020,
     "tightening_torque": 80.0,

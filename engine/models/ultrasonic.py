@@ -48,7 +48,7 @@ INPUTS: tuple[Param, ...] = (
     positive(
         "preload",
         "N",
-        "Preload F to convert into elongation and time of flight (or give "
+        "Preload F to convert into elongation and time of flight (or give elongation or "
         "time_of_flight_change to get the preload)",
         maximum=1e8,
         display_unit="kN",
@@ -56,13 +56,24 @@ INPUTS: tuple[Param, ...] = (
         group="ultrasonic",
     ),
     Param(
+        "elongation",
+        "m",
+        "Measured mechanical elongation ΔL (as an instrument displays it, the stress factor "
+        "applied), to get the preload and the time of flight",
+        minimum=-0.1,
+        maximum=0.1,
+        display_unit="mm",
+        symbol="ΔL",
+        group="ultrasonic",
+    ),
+    Param(
         "time_of_flight_change",
         "s",
         "Measured change in the echo's round-trip time between the zero reading and the "
-        "loaded reading (or give preload)",
+        "loaded reading (or give preload or elongation)",
         minimum=-1e-3,
         maximum=1e-3,
-        display_unit="ns",
+        display_unit="µs",
         symbol="Δt",
         group="ultrasonic",
     ),
@@ -138,7 +149,7 @@ OUTPUTS: tuple[Output, ...] = (
         "time_of_flight_change",
         "s",
         "Change in round-trip time the instrument reads (stress and temperature)",
-        display_unit="ns",
+        display_unit="µs",
     ),
     Output("bolt_compliance", "m/N", "δ_S of the joint model (VDI 2230-1 R3)"),
     Output(
@@ -164,12 +175,13 @@ def _compliance(x: Mapping[str, Any], ctx: RunContext) -> float:
 
 
 def _ultrasonic(x: Mapping[str, Any], ctx: RunContext) -> Result:
-    given = [n for n in ("preload", "time_of_flight_change") if x.get(n) is not None]
+    given = [n for n in ("preload", "elongation", "time_of_flight_change") if x.get(n) is not None]
     if len(given) != 1:
         raise InputOutOfRange(
-            "give preload (to get the elongation and time of flight) or time_of_flight_change "
-            "(to get the preload), one of them",
-            field="preload",
+            "give one of preload (to get the elongation and time of flight), elongation or "
+            "time_of_flight_change (to get the preload)"
+            + ("" if not given else f", not {' and '.join(given)}"),
+            field=given[-1] if given else "preload",
         )
     bolt, notes = resolve_bolt(x)
     delta_s = _compliance(x, ctx)
@@ -187,6 +199,11 @@ def _ultrasonic(x: Mapping[str, Any], ctx: RunContext) -> Result:
         elongation = float(pl.elongation(force, delta_s))
         change = float(us.ultrasonic_from_elongation(elongation, factor))
         tof = float(us.time_of_flight_change(change + thermal, velocity))
+    elif x.get("elongation") is not None:
+        elongation = float(x["elongation"])
+        change = float(us.ultrasonic_from_elongation(elongation, factor))
+        tof = float(us.time_of_flight_change(change + thermal, velocity))
+        force = float(pl.preload_from_elongation(elongation, delta_s))
     else:
         tof = float(x["time_of_flight_change"])
         change = float(us.ultrasonic_length_change(tof, velocity)) - thermal
@@ -263,7 +280,7 @@ CLOSED_FORM = Rung(
 
 #: M12 8.8 through 2 × 20 mm, 40 kN; V and S_F are example calibration values, not data.
 M12_40KN = {
-    "thread": "M12",
+    "thread_diameter": 0.012,
     "plate1_thickness": 0.020,
     "plate2_thickness": 0.020,
     "preload": 40e3,

@@ -77,9 +77,26 @@ def test_the_two_directions_are_inverses_with_a_temperature_change() -> None:
     pin("preload.ultrasonic", "preload", back.results["preload"], 40e3, rel=1e-12)
 
 
+def test_a_measured_elongation_gives_the_preload_and_the_reading() -> None:
+    inputs = {k: v for k, v in M12_40KN.items() if k != "preload"}
+    v = run(ULTRASONIC, {**inputs, "elongation": 100e-6}).results
+    pin("preload.ultrasonic", "preload", v["preload"], 100e-6 / DELTA_S, rel=1e-6)
+    pin(
+        "preload.ultrasonic",
+        "time_of_flight_change",
+        v["time_of_flight_change"],
+        2 * 100e-6 / 0.3 / 5900.0,
+        rel=1e-12,
+    )
+
+
 def test_refusals_name_the_field() -> None:
     with pytest.raises(InputOutOfRange) as err:
         run(ULTRASONIC, {**M12_40KN, "time_of_flight_change": 1e-7})
+    assert err.value.field == "time_of_flight_change"
+    bare = {k: v for k, v in M12_40KN.items() if k != "preload"}
+    with pytest.raises(InputOutOfRange) as err:
+        run(ULTRASONIC, bare)
     assert err.value.field == "preload"
     with pytest.raises(InputOutOfRange) as err:
         run(ULTRASONIC, {**M12_40KN, "temperature_factor": 1e-4, "reading_temperature_change": 2.0})
