@@ -25,7 +25,8 @@ from .joint import JOINT_INPUTS, VDI2230
 SOURCE = (
     "VDI 2230-1 R4 (embedding) and R13 (tightening and loosening torque), the joint of "
     "joint.vdi2230; audit methods as public secondary sources describe them [TorqueAudit]; "
-    "static friction excess [FrictionTables]; a published restart torque [Bickford]"
+    "static friction excess [FrictionTables]; published restart and untightening torques "
+    "[Bickford], [BoltScience]"
 )
 
 #: Joint inputs that do not change the audit (service loads, fatigue, checks of bought parts).

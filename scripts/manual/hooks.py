@@ -60,7 +60,7 @@ VALIDATION: dict[str, tuple[str, ...]] = {
     "blow.joint": ("test_blow_two_mass.py",),
     "tool.capability": ("test_capability_published.py",),
     "friction.iso16047": ("test_iso16047_derivation.py",),
-    "joint.audit": ("test_audit_restart_torque.py",),
+    "joint.audit": ("test_audit_restart_torque.py", "test_audit_untightening.py"),
     "preload.ultrasonic": ("test_ultrasonic_acoustoelastic.py",),
 }
 
