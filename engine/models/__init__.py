@@ -22,6 +22,8 @@ from .nutrunner import NUTRUNNER_DRIVE
 from .preload import CONTROL as PRELOAD_CONTROL
 from .preload import TIGHTENING as PRELOAD_TIGHTENING
 from .rare_impact import RARE_IMPACT
+from .trace import ANALYSIS as TRACE_ANALYSIS
+from .trace import PROGRAM as TRACE_PROGRAM
 
 MODELS: tuple[ModelSpec, ...] = (
     NUTRUNNER_DRIVE,
@@ -34,6 +36,8 @@ MODELS: tuple[ModelSpec, ...] = (
     BLOW,
     TOOL_CAPABILITY,
     FRICTION_ISO16047,
+    TRACE_ANALYSIS,
+    TRACE_PROGRAM,
 )
 
 

@@ -25,6 +25,7 @@ Detection functions take one trace as 1-D arrays or many traces of one length as
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -244,7 +245,10 @@ def preload_from_torque(torque: Any, torque_per_preload: Any, prevailing_torque:
 
 
 def split_steps(
-    torque: Any, zero_fraction: float = STEP_ZERO_FRACTION, min_samples: int = 3
+    torque: Any,
+    angle: Any = None,
+    zero_fraction: float = STEP_ZERO_FRACTION,
+    min_samples: int = 3,
 ) -> list[tuple[int, int]]:
     r"""The steps of a multi-step tightening: runs whose torque stays above a floor.
 
@@ -255,6 +259,9 @@ def split_steps(
     ----------
     torque : numpy array
         T of one trace, [N*m]
+    angle : numpy array or None
+        θ of the same samples, [rad]: a step reaches back over the low torques before it
+        (the run-down, the snug region) while the angle does not fall
     zero_fraction : float
         z, the share of the peak torque below which the tool is taken as off the joint
         (a pause, a loosening: torque at or below zero), [-]
@@ -271,12 +278,15 @@ def split_steps(
     Our rule: a program's steps (run-down, loosen, retighten) are separated where the
     torque drops to about zero, as a controller's step restriction ends a step. A run that
     never reaches a tenth of the peak torque (the run-down's prevailing torque, noise) is
-    not a step.
+    not a step. Each step reaches back to the end of the one before it over samples whose
+    torque is above −z T_max and whose angle does not fall, so the snug region belongs to it.
 
     Examples
     --------
     >>> split_steps(np.array([0.0, 5, 9, 10, 0, -3, 0, 4, 12, 20, 19]))
     [(1, 4), (7, 11)]
+    >>> split_steps(np.array([0.0, 5, 9, 10, 0, -3, 0, 4, 12, 20, 19]), np.arange(11.0))
+    [(0, 4), (6, 11)]
     """
     t = np.asarray(torque, dtype=float)
     peak = float(np.max(t)) if t.size else 0.0
@@ -285,7 +295,21 @@ def split_steps(
     on = np.concatenate(([False], t > zero_fraction * peak, [False]))
     edges = np.flatnonzero(np.diff(on.astype(np.int8)))
     runs = zip(edges[::2].tolist(), edges[1::2].tolist(), strict=True)
-    return [(a, b) for a, b in runs if b - a >= min_samples and float(np.max(t[a:b])) >= 0.1 * peak]
+    steps = [
+        (a, b) for a, b in runs if b - a >= min_samples and float(np.max(t[a:b])) >= 0.1 * peak
+    ]
+    if angle is None:
+        return steps
+    theta = np.asarray(angle, dtype=float)
+    floor = -zero_fraction * peak
+    reached: list[tuple[int, int]] = []
+    before = 0
+    for a, b in steps:
+        while a > before and t[a - 1] > floor and theta[a - 1] <= theta[a]:
+            a -= 1
+        reached.append((a, b))
+        before = b
+    return reached
 
 
 def first_backward(angle: Any, tolerance: float) -> int:
@@ -561,3 +585,100 @@ def yield_index(
     g = np.asarray(gradient, dtype=float)
     below = np.where(np.isnan(g), np.inf, -g)  # NaN never counts as a drop
     return first_at_or_above(below, -fraction * np.asarray(rate, dtype=float), start, stop)
+
+
+@dataclass(frozen=True)
+class Detection:
+    """What :func:`detect` finds: floats for one trace, arrays (one a row) for many."""
+
+    rate: Any  # R, [N*m/rad]
+    intercept: Any  # a of T = a + R θ, [N*m]
+    zero_angle: Any  # θ where the elastic line meets M_ü, [rad]
+    snug: Any  # index of the snug point
+    yield_at: Any  # index of the yield point, −1: none
+    peak: Any  # index of the peak torque
+    window_first: Any  # first and last index of the elastic window (−1: empty)
+    window_last: Any
+    gradient: Any  # g at each sample, [N*m/rad]
+
+
+def detect(
+    angle: Any,
+    torque: Any,
+    window: int,
+    *,
+    window_low: float = ELASTIC_WINDOW[0],
+    window_high: float = ELASTIC_WINDOW[1],
+    snug_fraction: float = SNUG_GRADIENT_FRACTION,
+    yield_fraction: float = YIELD_GRADIENT_FRACTION,
+    prevailing_torque: Any = 0.0,
+) -> Detection:
+    r"""The points of one step of a trace (1-D) or of many of one length (2-D, one a row).
+
+    .. math::
+        R = \text{robust slope over } aT_{max} \le T \le bT_{max},\quad
+        \theta_0 = \frac{M_{\ddot u} - a_0}{R},\quad
+        i_{snug} = \min\{i : g_i \ge s R\},\quad i_y = \min\{i > i_{b} : g_i \le f R\}
+
+    Parameters
+    ----------
+    angle, torque : numpy array
+        θ at the nut [rad] and T [N*m] of one step
+    window : int
+        Samples of the gradient window (:func:`local_gradient`)
+    window_low, window_high : float
+        a and b of the elastic window (:func:`elastic_window`)
+    snug_fraction, yield_fraction : float
+        s and f, shares of the elastic rate
+    prevailing_torque : float
+        M_ü, the torque with no preload, [N*m]
+
+    Returns
+    -------
+    Detection
+
+    Notes
+    -----
+    The steps in order: :func:`local_gradient`, :func:`elastic_window`, :func:`robust_line`,
+    the snug point (first sample, up to the window, whose gradient reaches s R; the window's
+    first sample if none does), the yield point (:func:`yield_index`, searched from the
+    window's end to the peak torque).
+
+    Examples
+    --------
+    A bilinear trace, 2 N·m/rad from θ = 1 rad, flat from 3 rad:
+
+    >>> th = np.linspace(0.0, 4.0, 401)
+    >>> t = np.clip(2.0 * (th - 1.0), 0.0, 4.0) + 0.001 * th
+    >>> d = detect(th, t, 5)
+    >>> round(float(d.rate), 3), round(float(d.zero_angle), 3), round(float(th[d.yield_at]), 2)
+    (2.001, 1.0, 3.01)
+    """
+    x = np.asarray(angle, dtype=float)
+    y = np.asarray(torque, dtype=float)
+    g = local_gradient(x, y, window)
+    mask = elastic_window(y, window_low, window_high)
+    rate, intercept = robust_line(x, y, mask)
+    rate_a = np.asarray(rate, dtype=float)
+    has = mask.any(axis=-1)
+    first = np.where(has, np.argmax(mask, axis=-1), -1)
+    last = np.where(has, x.shape[-1] - 1 - np.argmax(mask[..., ::-1], axis=-1), -1)
+    peak = np.argmax(y, axis=-1)
+    snug = first_at_or_above(g, snug_fraction * rate_a, 0, np.maximum(first, 0) + 1)
+    snug = np.where(np.asarray(snug) < 0, np.maximum(first, 0), snug)
+    found = yield_index(g, rate_a, last + 1, peak + 1, yield_fraction)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        zero = (prevailing_torque - np.asarray(intercept)) / rate_a
+    if x.ndim == 1:
+        return Detection(
+            float(rate_a),
+            float(intercept),
+            float(zero),
+            int(snug),
+            int(found),
+            int(peak),
+            int(first),
+            int(last),
+            g,
+        )
+    return Detection(rate_a, intercept, zero, snug, found, peak, first, last, g)
