@@ -237,38 +237,35 @@ class JointFacts:
     utilization: float
     notes: tuple[str, ...]
 
-    def torque_per_preload(self, thread: Any, bearing: Any) -> Any:
-        """k(μ_G, μ_K) of VDI 2230-1 R13 for this bolt, [m]."""
-        b = self.bolt
-        kt, kb = pl.tightening_torque_per_preload(
-            b.pitch,
-            b.pitch_diameter,
-            b.diameter,
-            thread,
-            bearing,
-            b.bearing_outer_diameter,
-            b.hole_diameter,
-        )
-        return kt + kb
 
-    def yield_preload(self, thread_friction: Any, utilization: float = 1.0) -> Any:
-        """F at which the equivalent stress reaches ν R_p0.2 at μ_G (VDI 2230-1 R7), [N]."""
-        b = self.bolt
-        beta = pl.torsion_factor(b.pitch, b.pitch_diameter, self.smallest_diameter, thread_friction)
-        return pl.assembly_preload(b.yield_strength, self.smallest_area, beta, utilization)
+def _torque_per_preload(j: JointFacts, thread: Any, bearing: Any) -> Any:
+    """k(μ_G, μ_K) of VDI 2230-1 R13 for the joint's bolt, [m]."""
+    b = j.bolt
+    kt, kb = pl.tightening_torque_per_preload(
+        b.pitch,
+        b.pitch_diameter,
+        b.diameter,
+        thread,
+        bearing,
+        b.bearing_outer_diameter,
+        b.hole_diameter,
+    )
+    return kt + kb
 
-    def friction(self, k: Any, split: Any = 1.0) -> Any:
-        """μ_G for a torque coefficient k with μ_K = split · μ_G (split 1: μ_ges)."""
-        b = self.bolt
-        return tr.friction_from_torque_per_preload(
-            k,
-            b.pitch,
-            b.pitch_diameter,
-            b.diameter,
-            b.bearing_outer_diameter,
-            b.hole_diameter,
-            split,
-        )
+
+def _yield_preload(j: JointFacts, thread_friction: Any, utilization: float = 1.0) -> Any:
+    """F at which the equivalent stress reaches ν R_p0.2 at μ_G (VDI 2230-1 R7), [N]."""
+    b = j.bolt
+    beta = pl.torsion_factor(b.pitch, b.pitch_diameter, j.smallest_diameter, thread_friction)
+    return pl.assembly_preload(b.yield_strength, j.smallest_area, beta, utilization)
+
+
+def _friction(j: JointFacts, k: Any, split: Any = 1.0) -> Any:
+    """μ_G for a torque coefficient k with μ_K = split · μ_G (split 1: μ_ges)."""
+    b = j.bolt
+    return tr.friction_from_torque_per_preload(
+        k, b.pitch, b.pitch_diameter, b.diameter, b.bearing_outer_diameter, b.hole_diameter, split
+    )
 
 
 def _joint(x: Mapping[str, Any], ctx: RunContext) -> JointFacts:
@@ -480,11 +477,11 @@ def _analysis(x: Mapping[str, Any], ctx: RunContext) -> Result:
     mu_g_lo, mu_g_hi, mu_k_lo, mu_k_hi = j.friction_box
 
     # the joint's prediction over its friction box
-    k_pred_lo = float(j.torque_per_preload(mu_g_lo, mu_k_lo))
-    k_pred_hi = float(j.torque_per_preload(mu_g_hi, mu_k_hi))
+    k_pred_lo = float(_torque_per_preload(j, mu_g_lo, mu_k_lo))
+    k_pred_hi = float(_torque_per_preload(j, mu_g_hi, mu_k_hi))
     rate_lo = float(tr.elastic_torque_rate(k_pred_lo, delta, pitch))
     rate_hi = float(tr.elastic_torque_rate(k_pred_hi, delta, pitch))
-    fy_lo_mu, fy_hi_mu = float(j.yield_preload(mu_g_lo)), float(j.yield_preload(mu_g_hi))
+    fy_lo_mu, fy_hi_mu = float(_yield_preload(j, mu_g_lo)), float(_yield_preload(j, mu_g_hi))
     ty_lo, ty_hi = k_pred_lo * fy_lo_mu + m_u, k_pred_hi * fy_hi_mu + m_u
     sy_lo_mu = float(pl.nut_rotation_angle(fy_lo_mu, delta, pitch))
     sy_hi_mu = float(pl.nut_rotation_angle(fy_hi_mu, delta, pitch))
@@ -494,16 +491,16 @@ def _analysis(x: Mapping[str, Any], ctx: RunContext) -> Result:
     k = float(tr.torque_per_preload_from_rate(rate, delta, pitch))
     k_lo = float(tr.torque_per_preload_from_rate(rate, delta_lo, pitch))
     k_hi = float(tr.torque_per_preload_from_rate(rate, delta_hi, pitch))
-    mu = float(j.friction(k))
-    mu_lo, mu_hi = float(j.friction(k_lo)), float(j.friction(k_hi))
-    thread = [float(j.friction(kk, s)) for kk in (k_lo, k_hi) for s in (split_lo, split_hi)]
+    mu = float(_friction(j, k))
+    mu_lo, mu_hi = float(_friction(j, k_lo)), float(_friction(j, k_hi))
+    thread = [float(_friction(j, kk, s)) for kk in (k_lo, k_hi) for s in (split_lo, split_hi)]
     mu_g_min, mu_g_max = min(thread), max(thread)
     peak = reading.peak
     t_final, th_final = float(step.torque[peak]), float(step.angle[peak])
     f = float(tr.preload_from_torque(t_final, k, m_u))
     f_lo = float(tr.preload_from_torque(t_final, k_hi, m_u))
     f_hi = float(tr.preload_from_torque(t_final, k_lo, m_u))
-    f_yield = float(j.yield_preload(mu_g_max))  # the lowest yield preload the split allows
+    f_yield = float(_yield_preload(j, mu_g_max))  # the lowest yield preload the split allows
 
     snug_i, yield_i = reading.snug, reading.yield_at
     yielded = yield_i >= 0
@@ -566,9 +563,9 @@ def _analysis(x: Mapping[str, Any], ctx: RunContext) -> Result:
         ),
         Check(
             "friction_in_joint_range",
-            mu_hi >= float(j.friction(k_pred_lo)) and mu_lo <= float(j.friction(k_pred_hi)),
+            mu_hi >= float(_friction(j, k_pred_lo)) and mu_lo <= float(_friction(j, k_pred_hi)),
             f"total friction μ_ges = {mu:.3f} ({mu_lo:.3f}…{mu_hi:.3f}) against the joint's "
-            f"{float(j.friction(k_pred_lo)):.3f}…{float(j.friction(k_pred_hi)):.3f}",
+            f"{float(_friction(j, k_pred_lo)):.3f}…{float(_friction(j, k_pred_hi)):.3f}",
         ),
     ]
     if yielded:
@@ -838,9 +835,9 @@ def _program(x: Mapping[str, Any], ctx: RunContext) -> Result:
     pitch, m_u = j.bolt.pitch, j.prevailing_torque
     delta, delta_lo, delta_hi = _compliance_range(j, x)
     mu_g_lo, mu_g_hi, mu_k_lo, mu_k_hi = j.friction_box
-    k_lo = float(j.torque_per_preload(mu_g_lo, mu_k_lo))
-    k_hi = float(j.torque_per_preload(mu_g_hi, mu_k_hi))
-    k_mid = float(j.torque_per_preload(0.5 * (mu_g_lo + mu_g_hi), 0.5 * (mu_k_lo + mu_k_hi)))
+    k_lo = float(_torque_per_preload(j, mu_g_lo, mu_k_lo))
+    k_hi = float(_torque_per_preload(j, mu_g_hi, mu_k_hi))
+    k_mid = float(_torque_per_preload(j, 0.5 * (mu_g_lo + mu_g_hi), 0.5 * (mu_k_lo + mu_k_hi)))
     rate_lo = float(tr.elastic_torque_rate(k_lo, delta, pitch))
     rate_hi = float(tr.elastic_torque_rate(k_hi, delta, pitch))
     share = float(x["yield_gradient_fraction"])
@@ -873,7 +870,7 @@ def _program(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
         final_out: float | None = final
     else:
-        f_y = [float(j.yield_preload(mu)) for mu in (mu_g_lo, mu_g_hi)]
+        f_y = [float(_yield_preload(j, mu)) for mu in (mu_g_lo, mu_g_hi)]
         target = max(f_y)
         m_snug = snug_share * min(f_y) * k_mid
         angles = [

@@ -500,12 +500,21 @@ def robust_line(
         if k == passes:
             break
         resid = y - (intercept[..., None] + slope[..., None] * x)
-        mad = np.nanmedian(np.where(w, np.abs(resid), np.nan), axis=-1)
-        limit = cut * 1.4826 * mad
-        w = w & ~(np.abs(resid) > limit[..., None]) if np.all(np.isfinite(limit)) else w
+        limit = cut * 1.4826 * _masked_median(np.abs(resid), w, n)
+        w = w & ~(np.abs(resid) > limit[..., None])
     if slope.ndim == 0:
         return float(slope), float(intercept)
     return slope, intercept
+
+
+def _masked_median(values: np.ndarray, mask: np.ndarray, count: Any) -> Any:
+    """Median of each row's masked values (inf where a row has none)."""
+    ordered = np.sort(np.where(mask, values, np.inf), axis=-1)
+    n = np.asarray(count)[..., None]
+    low = np.take_along_axis(ordered, np.maximum((n - 1) // 2, 0), axis=-1)
+    high = np.take_along_axis(ordered, np.maximum(n // 2, 0), axis=-1)
+    with np.errstate(invalid="ignore"):
+        return (0.5 * (low + high))[..., 0]
 
 
 def first_at_or_above(values: Any, level: Any, start: Any = 0, stop: Any = None) -> Any:
