@@ -651,7 +651,8 @@ def detect(
     The steps in order: :func:`local_gradient`, :func:`elastic_window`, :func:`robust_line`,
     the snug point (first sample, up to the window, whose gradient reaches s R; the window's
     first sample if none does), the yield point (:func:`yield_index`, searched from the
-    window's end to the peak torque).
+    window's end to the last sample whose gradient window ends at the peak torque: the
+    tool's release after the stop is no yield).
 
     Examples
     --------
@@ -675,7 +676,8 @@ def detect(
     peak = np.argmax(y, axis=-1)
     snug = first_at_or_above(g, snug_fraction * rate_a, 0, np.maximum(first, 0) + 1)
     snug = np.where(np.asarray(snug) < 0, np.maximum(first, 0), snug)
-    found = yield_index(g, rate_a, last + 1, peak + 1, yield_fraction)
+    # a gradient whose window reaches past the peak (the tool's release) is no yield
+    found = yield_index(g, rate_a, last + 1, peak + 1 - max(int(window) // 2, 1), yield_fraction)
     with np.errstate(divide="ignore", invalid="ignore"):
         zero = (prevailing_torque - np.asarray(intercept)) / rate_a
     if x.ndim == 1:
