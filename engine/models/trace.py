@@ -630,7 +630,13 @@ def _series(
         return {}
     theta = step.angle
     rise = np.maximum(theta - reading.zero_angle, 0.0)
-    grad = np.where(np.isfinite(reading.gradient), reading.gradient, 0.0)
+    finite = np.isfinite(reading.gradient)
+    where = np.arange(theta.size)
+    grad = (
+        np.interp(where, where[finite], reading.gradient[finite])  # the ends: nearest value
+        if finite.any()
+        else np.zeros(theta.size)
+    )
     return {
         "trace_angle": theta.tolist(),
         "trace_torque": step.torque.tolist(),
@@ -692,7 +698,10 @@ ANALYSIS_OUTPUTS: tuple[Output, ...] = (
         "Nut angle of each sample of the step",
         series=True,
         plot=Plot(
-            windows=(Window("elastic window", "elastic_window_start", "elastic_window_end"),)
+            windows=(
+                Window("elastic window", "elastic_window_start", "elastic_window_end"),
+                Window("yield…stop", "yield_angle", "final_angle"),
+            )
         ),
     ),
     _o("trace_torque", "N*m", "Torque of each sample of the step", series=True, x="trace_angle"),
