@@ -60,6 +60,8 @@ VALIDATION: dict[str, tuple[str, ...]] = {
     "blow.joint": ("test_blow_two_mass.py",),
     "tool.capability": ("test_capability_published.py",),
     "friction.iso16047": ("test_iso16047_derivation.py",),
+    "trace.analysis": ("test_trace_synthetic.py",),
+    "trace.program": ("test_trace_synthetic.py",),
 }
 
 #: Hand-written pages, in the order of the navigation (generated ones are placed among them).
