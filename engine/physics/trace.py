@@ -30,6 +30,12 @@ from typing import Any
 
 import numpy as np
 
+from .capability import (
+    capability_index,
+    critical_capability_index,
+    sample_mean,
+    sample_standard_deviation,
+)
 from .preload import nut_rotation_angle, tightening_torque_per_preload
 
 #: Share of the elastic rate below which the gradient marks the yield point: the default
@@ -693,3 +699,84 @@ def detect(
             g,
         )
     return Detection(rate_a, intercept, zero, snug, found, peak, first, last, g)
+
+
+#: A robust z beyond which a trace's friction is an outlier (Iglewicz and Hoaglin's 3.5).
+OUTLIER_Z = 3.5
+
+
+@dataclass(frozen=True)
+class BatchSummary:
+    """What many traces of one joint say together."""
+
+    friction_mean: float
+    friction_sd: float
+    preload_mean: float
+    preload_sd: float
+    outliers: tuple[int, ...]  # indices of traces whose friction is far from the others'
+    capability_index: float  # Cp of the preload against F_M,min…F_M,zul
+    critical_capability_index: float  # Cpk
+
+
+def batch_summary(
+    friction: Any, preload: Any, preload_window: tuple[float, float], z: float = OUTLIER_Z
+) -> BatchSummary:
+    r"""Distribution of the friction and preload many traces gave, their outliers, and the
+    capability of the clamp force against the joint's window.
+
+    .. math::
+        z_i = \frac{0.6745\,(\mu_i - \tilde\mu)}{\mathrm{MAD}(\mu)},\qquad
+        C_p = \frac{F_{M,zul} - F_{M,min}}{6 s_F},\qquad
+        C_{pk} = \frac{\min(F_{M,zul} - \bar F, \bar F - F_{M,min})}{3 s_F}
+
+    Parameters
+    ----------
+    friction : sequence of float
+        μ_ges of each trace, [-]
+    preload : sequence of float
+        F of each trace, [N]
+    preload_window : (float, float)
+        F_M,min and F_M,zul of the joint, [N]
+    z : float
+        Robust z beyond which a friction is an outlier
+
+    Returns
+    -------
+    BatchSummary
+
+    Notes
+    -----
+    The modified z-score of Iglewicz and Hoaglin (median and median absolute deviation) marks
+    a lot's odd friction without letting it move the mark; the capability indices are those
+    of ``tool.capability`` ([ECSS-E-HB-32-23A] as VDI/VDE 2645 prints them,
+    :mod:`engine.physics.capability`) with the joint's window as the tolerance of the clamp
+    force. Needs at least two traces.
+
+    Examples
+    --------
+    Five traces, the last with a lot's odd friction: s_F = √(82/4) kN = 4.528 kN, so
+    C_p = 20/(6 · 4.528) = 0.74 and C_pk = min(7, 13)/(3 · 4.528) = 0.52
+
+    >>> s = batch_summary([0.12, 0.121, 0.119, 0.12, 0.2], [40e3, 41e3, 39e3, 40e3, 30e3],
+    ...                   (25e3, 45e3))
+    >>> s.outliers, round(s.friction_mean, 4), round(s.capability_index, 2)
+    ((4,), 0.136, 0.74)
+    >>> round(s.critical_capability_index, 2)
+    0.52
+    """
+    mu = np.asarray(friction, dtype=float)
+    f = np.asarray(preload, dtype=float)
+    centre = float(np.median(mu))
+    mad = float(np.median(np.abs(mu - centre)))
+    robust = 0.6745 * (mu - centre) / mad if mad > 0.0 else np.zeros_like(mu)
+    low, high = preload_window
+    f_mean, f_sd = sample_mean(f.tolist()), sample_standard_deviation(f.tolist())
+    return BatchSummary(
+        friction_mean=sample_mean(mu.tolist()),
+        friction_sd=sample_standard_deviation(mu.tolist()),
+        preload_mean=f_mean,
+        preload_sd=f_sd,
+        outliers=tuple(int(i) for i in np.flatnonzero(np.abs(robust) > z)),
+        capability_index=float(capability_index(high, low, f_sd)),
+        critical_capability_index=float(critical_capability_index(high, low, f_mean, f_sd)),
+    )

@@ -27,6 +27,7 @@ import pytest
 
 import engine
 from engine.models.trace import M12_JOINT
+from engine.physics import trace as tr
 
 DEG = math.pi / 180.0
 P, D2, D0 = 1.75e-3, 10.86334175e-3, 10.3581605e-3
@@ -255,3 +256,21 @@ def test_the_issue_m12_rate_and_yield_from_a_synthetic_trace(
     predicted = 2 * math.pi * yield_force(mu) * (DS + DP) / P
     assert float(r["snug_to_yield_angle"]) > 0.98 * predicted
     assert float(r["snug_to_yield_angle"]) < 1.12 * predicted
+
+
+def test_a_lot_of_traces_summarised_finds_the_odd_one() -> None:
+    """Twelve tightenings of one lot (μ 0.12 ± 0.004) and one dry part (μ 0.2): the batch's
+    outlier is the dry one, its friction mean is the true one's within 0.003, and the clamp
+    force's C_p from the read preloads is within 15 % of the true preloads'."""
+    rng = np.random.default_rng(12)
+    lot = [float(m) for m in rng.normal(0.12, 0.004, 12)] + [0.2]
+    made = [generate(rng, mu_g=m, split=1.0, past_yield=False) for m in lot]
+    read = [analyse(s.inputs) for s in made]
+    window = (float(JOINT["assembly_preload_min"]), float(JOINT["permissible_preload"]))
+    ours = tr.batch_summary(
+        [r["total_friction"] for r in read], [r["preload"] for r in read], window
+    )
+    truth = tr.batch_summary([s.friction for s in made], [s.preload for s in made], window)
+    assert ours.outliers == truth.outliers == (12,)
+    assert abs(ours.friction_mean - truth.friction_mean) < 0.003
+    assert ours.capability_index == pytest.approx(truth.capability_index, rel=0.15)
