@@ -322,6 +322,10 @@ def measure_outputs(spec: ModelSpec, seconds: float) -> list[dict[str, Any]]:
     return rows
 
 
+#: Bench files with a ``measure()`` that are not named ``extra_*.py``.
+MORE_EXTRAS: tuple[Path, ...] = (HERE / "trace_batch.py",)
+
+
 def run_extras(paths: Sequence[Path]) -> tuple[list[dict[str, Any]], list[str]]:
     """Rows from each ``bench/extra_*.py``'s ``measure()``; failures are reported, not fatal."""
     rows: list[dict[str, Any]] = []
@@ -604,7 +608,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         if not models:
             print("engine.MODELS is empty: measuring the test-only toy models instead")
         models += toy_models()
-    extras = [] if args.no_extras else sorted(HERE.glob("extra_*.py"))
+    extras = [] if args.no_extras else [*sorted(HERE.glob("extra_*.py")), *MORE_EXTRAS]
     results = collect(models, args.seconds, extras)
     args.out.mkdir(parents=True, exist_ok=True)
     text = json.dumps(json_safe(results), indent=1, allow_nan=False)

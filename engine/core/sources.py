@@ -812,6 +812,76 @@ SOURCES: dict[str, Source] = {
             "Ishigami function's analytic indices (T. Ishigami, T. Homma, 1990; Saltelli et al., "
             "Global Sensitivity Analysis: The Primer, Wiley 2008, §4.8).",
         ),
+        Source(
+            id="Desoutter-CVIR",
+            kind="web page",
+            title="CVIR II user manual, section 9.5: yield point controlled tightening",
+            authors="Desoutter (tightening-tool maker)",
+            year="2014 (issue 04)",
+            published="manual 6159933910, p. 59 (read at manualshive.com, 2026)",
+            covers="The yield-point rule of engine.physics.trace.yield_index: the torque rate "
+            "is compared with a reference torque rate taken early in the tightening, and the "
+            "yield point is where it has fallen to X % of it; default X = 50, reference over "
+            "N = 16 samples.",
+        ),
+        Source(
+            id="AtlasCopco-PF",
+            kind="web page",
+            title="Power Focus 3000 / PowerMACS 4000 manuals: yield control and gradient",
+            authors="Atlas Copco (tightening-tool maker)",
+            year="read 2026",
+            published="Power Focus 3000 manual 9836 3123 01, p. 108; PowerMACS 4000 manual "
+            "9836 3521 01, 6.5.3.5 (read at easymanua.ls)",
+            covers="Yield control: the torque difference over a step angle is compared with the "
+            "largest difference met so far and the yield point is where it falls below a "
+            "'yield slope ratio' of it; the gradient is a torque difference over an angle "
+            "distance after a sliding-average filter, computed at every sample.",
+        ),
+        Source(
+            id="OPC40450",
+            kind="standard",
+            title="OPC UA for Joining Systems / Tightening (OPC 40450-1)",
+            authors="OPC Foundation and VDMA",
+            year="2021 (Tightening 1.00), 2024 (IJT Base 1.00)",
+            published="reference.opcfoundation.org, Tightening 10.11-10.12, OPC 40450-1 C.5",
+            covers="The StepTraceDataType (StepTraceId, StepResultId, NumberOfTracePoints, "
+            "SamplingInterval, StartTimeOffset, StepTraceContent) and TraceContentDataType "
+            "(Values, Name, PhysicalQuantity, EngineeringUnits) that "
+            "engine.procedures.trace_import reads as JSON; the YIELD tag (C.5): where the "
+            "linear growth of torque against angle drops, an approximation any system reports.",
+            reconstruction="PhysicalQuantity's coded values (its section 9.1/9.10) were not "
+            "read: the importer takes the quantity from Name or EngineeringUnits instead.",
+        ),
+        Source(
+            id="OpenProtocol",
+            kind="standard",
+            title="Open Protocol: MID 0900 trace curve data, MID 0901 trace plotting parameters",
+            authors="Atlas Copco (protocol owner); open parsers node-open-protocol (PR #47) "
+            "and open-protocol-codec",
+            year="read 2026",
+            published="the protocol specification is distributed by its owner; field layout as "
+            "the open parsers decode it",
+            covers="The decoded fields engine.procedures.trace_import reads: result id, time "
+            "stamp, data fields (PID, value, unit), trace type (1 angle, 2 torque, 3 current, "
+            "4 gradient, 5 stroke, 6 force), transducer type, unit code, resolution fields "
+            "(the sample time interval), number of samples and the samples.",
+            reconstruction="The specification itself was not read; the unit codes accepted "
+            "(001 N*m, 002 lbf*ft, 003 lbf*in, 008 N*cm, 050 degree, 051 radian, 200 s, "
+            "201 min, 202 ms) are as we recall them from it: other codes are refused, and a "
+            "user with another code converts first.",
+        ),
+        Source(
+            id="pyscrew",
+            kind="web page",
+            title="pyscrew: screw-driving data sets and their loader (Rexroth result JSON)",
+            authors="N. West and co-workers (open project)",
+            year="read 2026",
+            published="github.com/nikolaiwest/pyscrew, data on Zenodo",
+            covers="The layout of the Bosch Rexroth controller's result JSON that "
+            "engine.procedures.trace_import reads: 'tightening steps', each with 'name', "
+            "'result' and 'graph' holding 'angle values', 'torque values', 'time values' "
+            "(and 'gradient values').",
+        ),
     )
 }
 
@@ -870,6 +940,11 @@ _PATTERNS: tuple[tuple[re.Pattern[str], str | None], ...] = (
     (re.compile(r"\bASTM E1685\b"), "ASTME1685"),
     (re.compile(r"\bBoltMike\b"), "BoltMike"),
     (re.compile(r"\bDakota\b"), "Dakota"),
+    (re.compile(r"\bDesoutter-CVIR\b"), "Desoutter-CVIR"),
+    (re.compile(r"\bAtlasCopco-PF\b"), "AtlasCopco-PF"),
+    (re.compile(r"\bOPC 40450\b"), "OPC40450"),
+    (re.compile(r"\bOpen Protocol\b"), "OpenProtocol"),
+    (re.compile(r"\bpyscrew\b"), "pyscrew"),
 )
 
 

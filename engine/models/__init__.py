@@ -24,6 +24,8 @@ from .preload import CONTROL as PRELOAD_CONTROL
 from .preload import TIGHTENING as PRELOAD_TIGHTENING
 from .rare_impact import RARE_IMPACT
 from .ultrasonic import ULTRASONIC as PRELOAD_ULTRASONIC
+from .trace import ANALYSIS as TRACE_ANALYSIS
+from .trace import PROGRAM as TRACE_PROGRAM
 
 MODELS: tuple[ModelSpec, ...] = (
     NUTRUNNER_DRIVE,
@@ -38,6 +40,8 @@ MODELS: tuple[ModelSpec, ...] = (
     BLOW,
     TOOL_CAPABILITY,
     FRICTION_ISO16047,
+    TRACE_ANALYSIS,
+    TRACE_PROGRAM,
 )
 
 

@@ -62,6 +62,8 @@ VALIDATION: dict[str, tuple[str, ...]] = {
     "friction.iso16047": ("test_iso16047_derivation.py",),
     "joint.audit": ("test_audit_restart_torque.py", "test_audit_untightening.py"),
     "preload.ultrasonic": ("test_ultrasonic_acoustoelastic.py",),
+    "trace.analysis": ("test_trace_synthetic.py",),
+    "trace.program": ("test_trace_synthetic.py",),
 }
 
 #: Hand-written pages, in the order of the navigation (generated ones are placed among them).

@@ -106,6 +106,24 @@ KNOWN_STEPS = {
         "mechanical_elongation",
         "preload_from_elongation",
     ),
+    # a trace: steps, the tool's wind-up, detection, then the joint's rate and its inverse
+    "trace.analysis": (
+        "split_steps",
+        "nut_angle",
+        "local_gradient",
+        "robust_line",
+        "yield_index",
+        "tightening_torque_per_preload",
+        "elastic_torque_rate",
+        "torque_per_preload_from_rate",
+        "preload_from_torque",
+    ),
+    "trace.program": (
+        "tightening_torque_per_preload",
+        "elastic_torque_rate",
+        "nominal_preload",
+        "torque_then_angle",
+    ),
 }
 
 
