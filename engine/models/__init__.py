@@ -23,9 +23,9 @@ from .nutrunner import NUTRUNNER_DRIVE
 from .preload import CONTROL as PRELOAD_CONTROL
 from .preload import TIGHTENING as PRELOAD_TIGHTENING
 from .rare_impact import RARE_IMPACT
-from .ultrasonic import ULTRASONIC as PRELOAD_ULTRASONIC
 from .trace import ANALYSIS as TRACE_ANALYSIS
 from .trace import PROGRAM as TRACE_PROGRAM
+from .ultrasonic import ULTRASONIC as PRELOAD_ULTRASONIC
 
 MODELS: tuple[ModelSpec, ...] = (
     NUTRUNNER_DRIVE,
