@@ -15,6 +15,7 @@ from __future__ import annotations
 from ..core.spec import ModelSpec
 from .blow import BLOW
 from .capability import CAPABILITY as TOOL_CAPABILITY
+from .clamp import CLAMP_CAPABILITY as JOINT_CLAMP_CAPABILITY
 from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
 from .friction import ISO16047 as FRICTION_ISO16047
 from .joint import VDI2230 as JOINT_VDI2230
@@ -34,6 +35,7 @@ MODELS: tuple[ModelSpec, ...] = (
     BLOW,
     TOOL_CAPABILITY,
     FRICTION_ISO16047,
+    JOINT_CLAMP_CAPABILITY,
 )
 
 
