@@ -76,6 +76,8 @@ UTILISATION_QUANTILES = (
 )
 #: The relative error a tail must reach; the quadrature refines to 128 panels at most.
 TAIL_TARGET = 1e-3
+#: Panels per score axis for the moments and quantiles.
+QUANTILE_PANELS = 8
 MAX_TORQUE = 1e5
 
 
@@ -437,6 +439,13 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "normal torque law would give negative torques",
             field="torque_sd",
         )
+    m_u = float(x["prevailing_torque"])
+    if m_u >= mean_t - 6.0 * sd_t:
+        raise InputOutOfRange(
+            f"prevailing_torque = {m_u:g} N*m is not allowed: must be below the tool's mean "
+            f"torque less 6σ, {mean_t - 6.0 * sd_t:.4g} N*m (the torque left for preload)",
+            field="prevailing_torque",
+        )
     scatter = cap.Scatter(torque, thread, bearing, rho)
     notes: list[str] = []
     warnings: list[str] = []
@@ -470,7 +479,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         float(joint["smallest_diameter"]),  # type: ignore[arg-type]
         float(joint["smallest_area"]),  # type: ignore[arg-type]
         bolt.yield_strength,
-        float(x["prevailing_torque"]),
+        m_u,
     )
     nu = float(x["utilization"])
 
@@ -485,30 +494,48 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     p_low, e_low, n_low = cap.tail_with_error(below, TAIL_TARGET)
     p_high, e_high, n_high = cap.tail_with_error(above, TAIL_TARGET)
     panels = max(n_low, n_high)
-    # the quantiles and moments at no more than 32 panels: a quantile moves by the tail's
-    # relative error divided by d ln P/d ln x, which is large in a tail
-    fewer = min(panels, 32)
-    mean_f, sd_f = cap.preload_moments(clamp, scatter, fewer)
-    quantiles: dict[str, float] = {}
-    for name, q in PRELOAD_QUANTILES:
-        quantiles[name] = cap.tail_quantile(
-            lambda v, up: cap.preload_tail(clamp, scatter, v, up, fewer),
-            q,
-            (1e-3, 1e10),
-            (0.2 * mean_f, 5.0 * mean_f),
+    # the moments on 16 panels, the quantiles on 8: a quantile moves by the tail's relative error
+    # divided by d ln P/d ln x, which is large in a tail (bench/capability_tails.py)
+    mean_f, sd_f = cap.preload_moments(clamp, scatter, 16)
+    # every quantile to 1 − 1e-6 lies between the extremes at ±6 scores of each law
+    corners = [
+        (t, g, k)
+        for t in (float(torque.from_score(-6.0)), float(torque.from_score(6.0)))
+        for g in (float(thread.from_score(-6.0)), float(thread.from_score(6.0)))
+        for k in (float(bearing.from_score(-6.0)), float(bearing.from_score(6.0)))
+    ]
+    f_corners = [float(cap.preload_at_torque(clamp, t, g, k)) for t, g, k in corners]
+    nu_corners = [
+        float(cap.bolt_utilisation(clamp, f, c[1])) for f, c in zip(f_corners, corners, strict=True)
+    ]
+    quantiles: dict[str, float | None] = dict.fromkeys(
+        [n for n, _ in (*PRELOAD_QUANTILES, *UTILISATION_QUANTILES)]
+    )
+    wanted = [(n, q) for n, q in PRELOAD_QUANTILES if n in ctx.outputs]
+    if wanted:
+        found = cap.tail_quantiles(
+            lambda v, up, n: cap.preload_tails(clamp, scatter, v, up, n),
+            [q for _, q in wanted],
+            min(f_corners),
+            max(f_corners),
+            QUANTILE_PANELS,
         )
-    nu_mean = float(cap.bolt_utilisation(clamp, mean_f, float(thread.from_score(0.0))))
-    for name, q in UTILISATION_QUANTILES:
-        quantiles[name] = cap.tail_quantile(
-            lambda v, up: cap.utilisation_tail(clamp, scatter, v, up, fewer),
-            q,
-            (1e-9, 1e3),
-            (0.2 * nu_mean, 5.0 * nu_mean),
+        quantiles.update(zip([n for n, _ in wanted], found, strict=False))
+    wanted = [(n, q) for n, q in UTILISATION_QUANTILES if n in ctx.outputs]
+    if wanted:
+        found = cap.tail_quantiles(
+            lambda v, up, n: cap.utilisation_tails(clamp, scatter, v, up, n),
+            [q for _, q in wanted],
+            min(nu_corners),
+            max(nu_corners),
+            QUANTILE_PANELS,
         )
+        quantiles.update(zip([n for n, _ in wanted], found, strict=False))
     mu_g_median = float(thread.from_score(0.0))
     f_zul = float(cap.permissible_preload_at(clamp, mu_g_median, nu))
     cpk = float(cap.critical_capability_index(f_zul, required, mean_f, sd_f)) if sd_f else math.inf
-    alpha = quantiles["preload_q99865"] / quantiles["preload_q00135"]
+    top, bottom = quantiles["preload_q99865"], quantiles["preload_q00135"]
+    alpha = None if top is None or bottom is None else top / bottom
     t = float(x["relative_tolerance"])
     nominal = float(x["nominal_torque"])
     tool_index = (

@@ -457,7 +457,8 @@ class Law:
         lower = np.asarray(self.cdf(x), dtype=float)
         upper = np.asarray(self.sf(x), dtype=float)
         with np.errstate(divide="ignore"):
-            return np.where(lower <= 0.5, ndtri(lower), -ndtri(upper))
+            z = ndtri(np.minimum(lower, upper))
+        return np.where(lower <= upper, z, -z)
 
     def from_score(self, z: Any) -> Any:
         """x with normal score z: ppf(Φ(z)), the upper half through Φ(−z) for its digits.

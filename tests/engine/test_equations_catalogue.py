@@ -92,6 +92,13 @@ KNOWN_STEPS = {
         "total_friction_from_test",
         "sample_mean",
     ),
+    # the tool's σ from Cm, then the tails with their error, by the preload and the utilisation
+    "joint.clamp_capability": (
+        "index_standard_deviation",
+        "tail_with_error",
+        "preload_tail",
+        "utilisation_tail",
+    ),
 }
 
 

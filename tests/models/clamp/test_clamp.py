@@ -55,41 +55,77 @@ def test_normal_torque_and_fixed_friction_give_a_normal_preload() -> None:
     res = r.results
     k = k_total(0.12, 0.12)
     mean, sd = 79.6 / k, 4.0 / k
-    pin(MODEL, "mean_torque", res["mean_torque"], 80.0)
-    pin(MODEL, "torque_sd", res["torque_sd"], 4.0)
-    pin(MODEL, "preload_mean", res["preload_mean"], mean, rel=1e-9)
-    pin(MODEL, "preload_sd", res["preload_sd"], sd, rel=1e-9)
-    for name, q in (
-        ("preload_q1e-6", 1e-6),
-        ("preload_q00135", 0.00135),
-        ("preload_median", 0.5),
-        ("preload_q99865", 0.99865),
-        ("preload_q1-1e-6", 1 - 1e-6),
-    ):
-        pin(MODEL, name, res[name], mean + sd * stats.norm.ppf(q), rel=1e-9)
+    pin("joint.clamp_capability", "mean_torque", res["mean_torque"], 80.0)
+    pin("joint.clamp_capability", "torque_sd", res["torque_sd"], 4.0)
+    pin("joint.clamp_capability", "preload_mean", res["preload_mean"], mean, rel=1e-9)
+    pin("joint.clamp_capability", "preload_sd", res["preload_sd"], sd, rel=1e-9)
+
+    def at(q: float) -> float:
+        return float(mean + sd * stats.norm.ppf(q))
+
+    pin("joint.clamp_capability", "preload_q1e-6", res["preload_q1e-6"], at(1e-6), rel=1e-9)
+    pin("joint.clamp_capability", "preload_q00135", res["preload_q00135"], at(0.00135), rel=1e-9)
+    pin("joint.clamp_capability", "preload_median", res["preload_median"], mean, rel=1e-9)
+    pin("joint.clamp_capability", "preload_q99865", res["preload_q99865"], at(0.99865), rel=1e-9)
+    pin("joint.clamp_capability", "preload_q1-1e-6", res["preload_q1-1e-6"], at(1 - 1e-6), rel=1e-9)
     # ν = F_M / F_M,zul(μ_G) × 0.9 is normal too
     nu_mean, nu_sd = 0.9 * mean / f_zul(0.12), 0.9 * sd / f_zul(0.12)
-    for name, q in (
-        ("utilisation_median", 0.5),
-        ("utilisation_q99865", 0.99865),
-        ("utilisation_q1-1e-6", 1 - 1e-6),
-    ):
-        pin(MODEL, name, res[name], nu_mean + nu_sd * stats.norm.ppf(q), rel=1e-7)
-    pin(MODEL, "permissible_preload", res["permissible_preload"], f_zul(0.12), rel=1e-9)
+    nu_at = {q: nu_mean + nu_sd * stats.norm.ppf(q) for q in (0.99865, 1 - 1e-6)}
+    pin(
+        "joint.clamp_capability", "utilisation_median", res["utilisation_median"], nu_mean, rel=1e-7
+    )
+    pin(
+        "joint.clamp_capability",
+        "utilisation_q99865",
+        res["utilisation_q99865"],
+        nu_at[0.99865],
+        rel=1e-7,
+    )
+    pin(
+        "joint.clamp_capability",
+        "utilisation_q1-1e-6",
+        res["utilisation_q1-1e-6"],
+        nu_at[1 - 1e-6],
+        rel=1e-7,
+    )
+    pin(
+        "joint.clamp_capability",
+        "permissible_preload",
+        res["permissible_preload"],
+        f_zul(0.12),
+        rel=1e-9,
+    )
     high = stats.norm.sf((f_zul(0.12) - mean) / sd)
-    pin(MODEL, "high_ppm", res["high_ppm"], high * 1e6, rel=1e-9)
-    pin(MODEL, "high_ppm_error", res["high_ppm_error"], 0.0, abs=1e-9)
+    pin("joint.clamp_capability", "high_ppm", res["high_ppm"], high * 1e6, rel=1e-9)
+    pin("joint.clamp_capability", "high_ppm_error", res["high_ppm_error"], 0.0, abs=1e-9)
     f_min = res["required_preload_min"]
-    pin(MODEL, "low_ppm", res["low_ppm"], stats.norm.cdf((f_min - mean) / sd) * 1e6, rel=1e-9)
-    pin(MODEL, "low_ppm_error", res["low_ppm_error"], 0.0, abs=1e-9)
+    pin(
+        "joint.clamp_capability",
+        "low_ppm",
+        res["low_ppm"],
+        stats.norm.cdf((f_min - mean) / sd) * 1e6,
+        rel=1e-9,
+    )
+    pin("joint.clamp_capability", "low_ppm_error", res["low_ppm_error"], 0.0, abs=1e-9)
     cpk = min(f_zul(0.12) - mean, mean - f_min) / (3 * sd)
-    pin(MODEL, "clamp_force_cpk", res["clamp_force_cpk"], cpk, rel=1e-9)
+    pin("joint.clamp_capability", "clamp_force_cpk", res["clamp_force_cpk"], cpk, rel=1e-9)
     z = stats.norm.ppf(0.99865)
-    pin(MODEL, "tightening_factor", res["tightening_factor"], (mean + z * sd) / (mean - z * sd))
-    pin(MODEL, "friction_copula", res["friction_copula"], 0.0)
+    pin(
+        "joint.clamp_capability",
+        "tightening_factor",
+        res["tightening_factor"],
+        (mean + z * sd) / (mean - z * sd),
+    )
+    pin("joint.clamp_capability", "friction_copula", res["friction_copula"], 0.0)
     # Cmk of N(80, 4) at ±10 %: 8/(3 × 4)
-    pin(MODEL, "tool_critical_index", res["tool_critical_index"], 8 / 12, rel=1e-12)
-    pin(MODEL, "quadrature_panels", res["quadrature_panels"], 16)
+    pin(
+        "joint.clamp_capability",
+        "tool_critical_index",
+        res["tool_critical_index"],
+        8 / 12,
+        rel=1e-12,
+    )
+    pin("joint.clamp_capability", "quadrature_panels", res["quadrature_panels"], 16)
 
 
 def test_the_joint_requirement_is_joint_vdi2230s() -> None:
@@ -98,7 +134,7 @@ def test_the_joint_requirement_is_joint_vdi2230s() -> None:
     ours = run(CLAMP_CAPABILITY, dict(CLAMP_CAPABILITY.examples[0])).results
     theirs = run(get_model("joint.vdi2230"), dict(get_model("joint.vdi2230").examples[1]))
     pin(
-        MODEL,
+        "joint.clamp_capability",
         "required_preload_min",
         ours["required_preload_min"],
         theirs.results["required_preload_min"],
@@ -204,10 +240,21 @@ def test_capability_in_and_the_mean_offset() -> None:
     3σ(1.2 − 1.0) = 1.1667 N·m above 70; a category A minimum of 1.67 is missed."""
     r = run(CLAMP_CAPABILITY, dict(CLAMP_CAPABILITY.examples[1]))
     res = r.results
-    pin(MODEL, "torque_sd", res["torque_sd"], 14 / 7.2, rel=1e-12)
-    pin(MODEL, "mean_torque", res["mean_torque"], 70 + 3 * 14 / 7.2 * 0.2, rel=1e-12)
-    pin(MODEL, "tool_critical_index", res["tool_critical_index"], 1.0, rel=1e-12)
-    pin(MODEL, "friction_copula", res["friction_copula"], 2 * math.sin(math.pi * 0.5 / 6))
+    pin("joint.clamp_capability", "torque_sd", res["torque_sd"], 14 / 7.2, rel=1e-12)
+    pin(
+        "joint.clamp_capability",
+        "mean_torque",
+        res["mean_torque"],
+        70 + 3 * 14 / 7.2 * 0.2,
+        rel=1e-12,
+    )
+    pin("joint.clamp_capability", "tool_critical_index", res["tool_critical_index"], 1.0, rel=1e-12)
+    pin(
+        "joint.clamp_capability",
+        "friction_copula",
+        res["friction_copula"],
+        2 * math.sin(math.pi * 0.5 / 6),
+    )
     assert res["category_minimum_met"] is False
     assert {c.name: c.ok for c in r.checks}["category_minimum"] is False
 
@@ -215,7 +262,7 @@ def test_capability_in_and_the_mean_offset() -> None:
 def test_samples_give_the_tool() -> None:
     values = [79.0, 80.0, 81.0, 80.0]  # mean 80, s = √(2/3)
     res = run(CLAMP_CAPABILITY, {**M12_JOINT, "torque_samples": values}).results
-    pin(MODEL, "torque_sd", res["torque_sd"], math.sqrt(2 / 3), rel=1e-12)
+    pin("joint.clamp_capability", "torque_sd", res["torque_sd"], math.sqrt(2 / 3), rel=1e-12)
 
 
 def test_monte_carlo_agrees_at_a_share_it_resolves() -> None:
