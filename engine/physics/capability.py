@@ -692,6 +692,35 @@ def preload_moments(joint: ClampJoint, scatter: Scatter, panels: int = 16) -> tu
     return first, math.sqrt(max(second - first * first, 0.0))
 
 
+def _refine(gap: Callable[[Any], Any], low: float, guess: float, high: float) -> float:
+    """The root of a rising ``gap`` in [low, high] from ``guess``: regula falsi (Illinois),
+    the bracket kept, until a step moves x by less than 1e-9 (at most 8 evaluations)."""
+    g_low, g_guess, g_high = (float(v) for v in gap(np.array([low, guess, high])))
+    if not g_low < 0.0 <= g_high:  # the finer rule moved the root off the coarse bracket
+        return guess
+    x, g = guess, g_guess
+    side = 0
+    for _ in range(8):
+        if g == 0.0 or not math.isfinite(g):
+            break
+        if g < 0.0:
+            low, g_low = x, g
+            if side == -1:
+                g_high *= 0.5
+            side = -1
+        else:
+            high, g_high = x, g
+            if side == 1:
+                g_low *= 0.5
+            side = 1
+        step = high - g_high * (high - low) / (g_high - g_low) - x
+        x += step
+        if abs(step) <= 1e-9 * abs(x):
+            break
+        g = float(gap(np.array([x]))[0])
+    return x
+
+
 def tail_quantiles(
     tails: Callable[[Any, bool, int], Any],
     probabilities: Sequence[float],
@@ -703,8 +732,8 @@ def tail_quantiles(
 
     Both tails are tabulated at :data:`TABLE_LEVELS` levels from ``low`` to ``high`` on a
     quarter rule (4 panels); each quantile is interpolated linearly in the tail's normal
-    score Φ⁻¹(P) between the two levels around it (exact where X is normal), then found by
-    one secant step on ``panels`` from two evaluations 10⁻⁴ apart. The lower tail serves
+    score Φ⁻¹(P) between the two levels around it (exact where X is normal), then refined
+    on ``panels`` by regula falsi within those two levels. The lower tail serves
     q < 0.5 and the upper tail 1 − q otherwise (no cancellation at 1 − 10⁻⁶). ``low``
     when even it holds a share q (an atom at 0).
 
@@ -744,12 +773,11 @@ def tail_quantiles(
             continue
         x0, x1, g0, g1 = x[i - 1], x[i], float(g[i - 1]), float(g[i])
         guess = float(x0 - g0 * (x1 - x0) / (g1 - g0))
-        pair = np.array([guess, guess * (1.0 + 1e-4)])
-        ga, gb = score(tails(pair, upper, panels), upper) - target
-        if gb == ga or not math.isfinite(ga) or not math.isfinite(gb):
-            out.append(guess)
-            continue
-        out.append(guess - float(ga) * float(pair[1] - pair[0]) / float(gb - ga))
+
+        def gap(v: Any, up: bool = upper, aim: float = target) -> Any:
+            return score(tails(v, up, panels), up) - aim
+
+        out.append(_refine(gap, x0, guess, x1))
     return out
 
 

@@ -205,6 +205,31 @@ def test_a_perfect_tool_is_the_limit_of_a_small_scatter() -> None:
     assert perfect["high_ppm"] == pytest.approx(ref * 1e6, rel=1e-6)
 
 
+def test_a_perfect_tools_quantiles_by_the_corner_triangle() -> None:
+    """A perfect tool and μ_G, μ_K uniform on 0.08…0.16: F_M = 79.6/k with k linear in
+    both, so P(F_M ≤ x) near the smallest F_M is the triangle s²/(2AB) of the unit square,
+    A = 0.58 d2 × 0.08, B = 0.08 (d_W + d_h)/4, s = k_max − 79.6/x. The quantiles come
+    from 8 panels: to 1e-4 here, where the kinks of the uniform laws meet in the corner."""
+    res = run(CLAMP_CAPABILITY, {**M12_JOINT, "torque_sd": 0.0}).results
+    a, b = 0.58 * D2 * 0.08, 0.08 * (DW + DH) / 4
+    k_max, k_min = k_total(0.16, 0.16), k_total(0.08, 0.08)
+    s = math.sqrt(2 * a * b * 1e-6)
+    pin(
+        "joint.clamp_capability",
+        "preload_q1e-6",
+        res["preload_q1e-6"],
+        79.6 / (k_max - s),
+        rel=1e-4,
+    )
+    pin(
+        "joint.clamp_capability",
+        "preload_q1-1e-6",
+        res["preload_q1-1e-6"],
+        79.6 / (k_min + s),
+        rel=1e-4,
+    )
+
+
 def test_symmetry_of_a_normal_preload() -> None:
     """A normal F_M: the quantiles at q and 1 − q lie symmetric about the median."""
     res = run(CLAMP_CAPABILITY, {**M12_JOINT, "torque_sd": 2.0, **fixed_friction(0.1)}).results
