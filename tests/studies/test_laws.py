@@ -189,3 +189,39 @@ def test_a_lognormal_law_needs_a_positive_mean() -> None:
     )
     with pytest.raises(InputOutOfRange, match="lognormal"):
         plan(CLUTCH, study)
+
+
+def test_a_correlated_lognormal_study_over_http(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The Study schema takes the lognormal law and rank correlations; a refusal names
+    ``correlations``."""
+    import time
+
+    from fastapi.testclient import TestClient
+
+    from service import create_app
+
+    monkeypatch.setenv("STUDY_INPROCESS_POINTS", "100000")
+    body = {
+        "base": BASE,
+        "variables": [
+            {"name": "flank_friction", "distribution": "lognormal", "mean": 0.1, "sd": 0.02},
+            {"name": "load_factor", "low": 0.7, "high": 0.9},
+        ],
+        "samples": 300,
+        "outputs": ["torque_limit"],
+        "correlations": [{"a": "flank_friction", "b": "load_factor", "rank_correlation": 0.6}],
+    }
+    with TestClient(create_app()) as client:
+        r = client.post("/api/v1/clutch/ball/study", json=body)
+        assert r.status_code == 202, r.text
+        job = r.json()["job"]
+        deadline = time.monotonic() + 30
+        while (state := client.get(f"/api/v1/jobs/{job}").json())["state"] in ("queued", "running"):
+            assert time.monotonic() < deadline
+            time.sleep(0.02)
+        assert state["state"] == "done", state
+        assert any("Gaussian copula" in n for n in state["result"]["notes"])
+        bad = {**body, "method": "sobol"}
+        refused = client.post("/api/v1/clutch/ball/study", json=bad)
+        assert refused.status_code == 422, refused.text
+        assert "correlations" in refused.text
