@@ -348,6 +348,8 @@ def conditional_normal_cdf(z: Any, given: Any, rho: Any) -> Any:
     >>> round(float(conditional_normal_cdf(1.0, 0.0, 0.0)), 6)
     0.841345
     """
+    if np.ndim(rho) == 0 and rho == 0.0:  # independent: the given score does not enter
+        return ndtr(z)
     return ndtr((z - rho * given) / np.sqrt(1.0 - rho * rho))
 
 
@@ -454,6 +456,11 @@ class Law:
             return (np.asarray(x, dtype=float) - self.mean) / self.sd
         if self.kind == "lognormal":
             return _log_score(x, self.median, self.gsd)
+        if self.kind == "uniform":  # the nearer tail's share, 0…0.5, straight from x
+            u = (np.asarray(x, dtype=float) - self.low) / (self.high - self.low)
+            with np.errstate(divide="ignore"):
+                z = ndtri(np.clip(np.minimum(u, 1.0 - u), 0.0, 0.5))
+            return np.where(u <= 0.5, z, -z)
         lower = np.asarray(self.cdf(x), dtype=float)
         upper = np.asarray(self.sf(x), dtype=float)
         with np.errstate(divide="ignore"):

@@ -695,10 +695,14 @@ def preload_moments(joint: ClampJoint, scatter: Scatter, panels: int = 16) -> tu
 def _refine(gap: Callable[[Any], Any], low: float, guess: float, high: float) -> float:
     """The root of a rising ``gap`` in [low, high] from ``guess``: regula falsi (Illinois),
     the bracket kept, until a step moves x by less than 1e-9 (at most 8 evaluations)."""
-    g_low, g_guess, g_high = (float(v) for v in gap(np.array([low, guess, high])))
-    if not g_low < 0.0 <= g_high:  # the finer rule moved the root off the coarse bracket
+    g = float(gap(np.array([guess]))[0])
+    # the other end of the bracket, on the finer rule too
+    other = high if g < 0.0 else low
+    g_other = float(gap(np.array([other]))[0])
+    if (g < 0.0) == (g_other < 0.0):  # the finer rule moved the root off the coarse bracket
         return guess
-    x, g = guess, g_guess
+    g_low, g_high = (g, g_other) if g < 0.0 else (g_other, g)
+    x = guess
     side = 0
     for _ in range(8):
         if g == 0.0 or not math.isfinite(g):
