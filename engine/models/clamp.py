@@ -11,6 +11,7 @@ come from :mod:`engine.physics.capability` (quadrature, no sampling).
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping
 from typing import Any
@@ -427,6 +428,64 @@ def _tool(x: Mapping[str, Any]) -> tuple[float, float, str]:
     return mean, 0.0, "no scatter given: a perfect tool"
 
 
+@functools.lru_cache(maxsize=64)
+def _distribution(
+    clamp: cap.ClampJoint, scatter: cap.Scatter, nu: float, wanted: tuple[str, ...]
+) -> tuple[tuple[float, float, int], tuple[float, float], dict[str, float | None]]:
+    """What depends on the tool, the frictions and the bolt only, not on F_M,min: the share
+    above ν with its error and panels, the moments of F_M and the quantiles in ``wanted``.
+
+    Kept for the last designs (a pure function of its frozen arguments): a sweep or study
+    over the joint's loads or plates leaves these unchanged and reads them again.
+    """
+
+    def above(panels: int) -> float:
+        return cap.utilisation_tail(clamp, scatter, nu, upper=True, panels=panels)
+
+    high = cap.tail_with_error(above, TAIL_TARGET)
+    torque, thread, bearing = scatter.torque, scatter.thread, scatter.bearing
+    # the moments on 16 panels, the quantiles on 8: a quantile moves by the tail's relative
+    # error divided by d ln P/d ln x, which is large in a tail (bench/capability_tails.py)
+    mean_f, sd_f = cap.preload_moments(clamp, scatter, 16)
+    # every quantile to 1 − 1e-6 lies between the extremes at ±6 scores of each law
+    corners = [
+        (t, g, k)
+        for t in (float(torque.from_score(-6.0)), float(torque.from_score(6.0)))
+        for g in (float(thread.from_score(-6.0)), float(thread.from_score(6.0)))
+        for k in (float(bearing.from_score(-6.0)), float(bearing.from_score(6.0)))
+    ]
+    f_corners = [float(cap.preload_at_torque(clamp, t, g, k)) for t, g, k in corners]
+    nu_corners = [
+        float(cap.bolt_utilisation(clamp, f, c[1])) for f, c in zip(f_corners, corners, strict=True)
+    ]
+    quantiles: dict[str, float | None] = dict.fromkeys(
+        [n for n, _ in (*PRELOAD_QUANTILES, *UTILISATION_QUANTILES)]
+    )
+    # α_A reads the ±3σ-equivalent quantiles
+    alpha_needs = ("preload_q00135", "preload_q99865") if "tightening_factor" in wanted else ()
+    chosen = [(n, q) for n, q in PRELOAD_QUANTILES if n in wanted or n in alpha_needs]
+    if chosen:
+        found = cap.tail_quantiles(
+            lambda v, up, n: cap.preload_tails(clamp, scatter, v, up, n),
+            [q for _, q in chosen],
+            min(f_corners),
+            max(f_corners),
+            QUANTILE_PANELS,
+        )
+        quantiles.update(zip([n for n, _ in chosen], found, strict=True))
+    chosen = [(n, q) for n, q in UTILISATION_QUANTILES if n in wanted]
+    if chosen:
+        found = cap.tail_quantiles(
+            lambda v, up, n: cap.utilisation_tails(clamp, scatter, v, up, n),
+            [q for _, q in chosen],
+            min(nu_corners),
+            max(nu_corners),
+            QUANTILE_PANELS,
+        )
+        quantiles.update(zip([n for n, _ in chosen], found, strict=True))
+    return high, (mean_f, sd_f), quantiles
+
+
 def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     mean_t, sd_t, how = _tool(x)
     thread, bearing = _law(x, "thread"), _law(x, "bearing")
@@ -488,51 +547,10 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             return 0.0
         return cap.preload_tail(clamp, scatter, required, upper=False, panels=panels)
 
-    def above(panels: int) -> float:
-        return cap.utilisation_tail(clamp, scatter, nu, upper=True, panels=panels)
-
     p_low, e_low, n_low = cap.tail_with_error(below, TAIL_TARGET)
-    p_high, e_high, n_high = cap.tail_with_error(above, TAIL_TARGET)
+    wanted = tuple(sorted(ctx.outputs))
+    (p_high, e_high, n_high), (mean_f, sd_f), quantiles = _distribution(clamp, scatter, nu, wanted)
     panels = max(n_low, n_high)
-    # the moments on 16 panels, the quantiles on 8: a quantile moves by the tail's relative error
-    # divided by d ln P/d ln x, which is large in a tail (bench/capability_tails.py)
-    mean_f, sd_f = cap.preload_moments(clamp, scatter, 16)
-    # every quantile to 1 − 1e-6 lies between the extremes at ±6 scores of each law
-    corners = [
-        (t, g, k)
-        for t in (float(torque.from_score(-6.0)), float(torque.from_score(6.0)))
-        for g in (float(thread.from_score(-6.0)), float(thread.from_score(6.0)))
-        for k in (float(bearing.from_score(-6.0)), float(bearing.from_score(6.0)))
-    ]
-    f_corners = [float(cap.preload_at_torque(clamp, t, g, k)) for t, g, k in corners]
-    nu_corners = [
-        float(cap.bolt_utilisation(clamp, f, c[1])) for f, c in zip(f_corners, corners, strict=True)
-    ]
-    quantiles: dict[str, float | None] = dict.fromkeys(
-        [n for n, _ in (*PRELOAD_QUANTILES, *UTILISATION_QUANTILES)]
-    )
-    # α_A reads the ±3σ-equivalent quantiles
-    alpha_needs = ("preload_q00135", "preload_q99865") if "tightening_factor" in ctx.outputs else ()
-    wanted = [(n, q) for n, q in PRELOAD_QUANTILES if n in ctx.outputs or n in alpha_needs]
-    if wanted:
-        found = cap.tail_quantiles(
-            lambda v, up, n: cap.preload_tails(clamp, scatter, v, up, n),
-            [q for _, q in wanted],
-            min(f_corners),
-            max(f_corners),
-            QUANTILE_PANELS,
-        )
-        quantiles.update(zip([n for n, _ in wanted], found, strict=False))
-    wanted = [(n, q) for n, q in UTILISATION_QUANTILES if n in ctx.outputs]
-    if wanted:
-        found = cap.tail_quantiles(
-            lambda v, up, n: cap.utilisation_tails(clamp, scatter, v, up, n),
-            [q for _, q in wanted],
-            min(nu_corners),
-            max(nu_corners),
-            QUANTILE_PANELS,
-        )
-        quantiles.update(zip([n for n, _ in wanted], found, strict=False))
     mu_g_median = float(thread.from_score(0.0))
     f_zul = float(cap.permissible_preload_at(clamp, mu_g_median, nu))
     cpk = float(cap.critical_capability_index(f_zul, required, mean_f, sd_f)) if sd_f else math.inf
