@@ -11,8 +11,8 @@ come from :mod:`engine.physics.capability` (quadrature, no sampling).
 
 from __future__ import annotations
 
-import functools
 import math
+import threading
 from collections.abc import Mapping
 from typing import Any
 
@@ -428,16 +428,27 @@ def _tool(x: Mapping[str, Any]) -> tuple[float, float, str]:
     return mean, 0.0, "no scatter given: a perfect tool"
 
 
-@functools.lru_cache(maxsize=64)
+_Distribution = tuple[tuple[float, float, int], tuple[float, float], dict[str, float | None]]
+#: The last designs' :func:`_distribution`, by its (frozen) arguments, oldest first.
+_KEPT: dict[tuple[Any, ...], _Distribution] = {}
+_KEPT_SIZE = 64
+_KEPT_LOCK = threading.Lock()
+
+
 def _distribution(
     clamp: cap.ClampJoint, scatter: cap.Scatter, nu: float, wanted: tuple[str, ...]
-) -> tuple[tuple[float, float, int], tuple[float, float], dict[str, float | None]]:
+) -> _Distribution:
     """What depends on the tool, the frictions and the bolt only, not on F_M,min: the share
     above ν with its error and panels, the moments of F_M and the quantiles in ``wanted``.
 
     Kept for the last designs (a pure function of its frozen arguments): a sweep or study
     over the joint's loads or plates leaves these unchanged and reads them again.
     """
+    key = (clamp, scatter, nu, wanted)
+    with _KEPT_LOCK:
+        kept = _KEPT.get(key)
+    if kept is not None:
+        return kept
 
     def above(panels: int) -> float:
         return cap.utilisation_tail(clamp, scatter, nu, upper=True, panels=panels)
@@ -483,7 +494,12 @@ def _distribution(
             QUANTILE_PANELS,
         )
         quantiles.update(zip([n for n, _ in chosen], found, strict=True))
-    return high, (mean_f, sd_f), quantiles
+    made: _Distribution = (high, (mean_f, sd_f), quantiles)
+    with _KEPT_LOCK:
+        _KEPT[key] = made
+        while len(_KEPT) > _KEPT_SIZE:
+            del _KEPT[next(iter(_KEPT))]
+    return made
 
 
 def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
