@@ -111,16 +111,29 @@ class VariableIn(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
     name: str = Field(max_length=80, description="the input to vary")
-    distribution: Literal["uniform", "normal", "triangular"] = Field(
+    distribution: Literal["uniform", "normal", "triangular", "lognormal"] = Field(
         default="uniform", description="for Monte Carlo, LHS and Sobol' (ignored by a grid)"
     )
     low: Number | None = Field(default=None, description="lower end (grid, uniform, triangular)")
     high: Number | None = Field(default=None, description="upper end")
-    mean: Number | None = Field(default=None, description="normal: mean")
-    sd: Number | None = Field(default=None, description="normal: standard deviation")
+    mean: Number | None = Field(default=None, description="normal, lognormal: mean")
+    sd: Number | None = Field(
+        default=None, description="normal, lognormal: standard deviation (arithmetic)"
+    )
     mode: Number | None = Field(default=None, description="triangular: most likely value")
     num: int = Field(default=11, ge=2, le=1000, description="grid: points on this axis")
     scale: Literal["linear", "log"] = Field(default="linear", description="grid: spacing")
+
+
+class CorrelationIn(BaseModel):
+    """Two varied inputs joined by a Gaussian copula of this rank (Spearman) correlation."""
+
+    model_config = ConfigDict(extra="forbid")
+    a: str = Field(max_length=80, description="one varied input")
+    b: str = Field(max_length=80, description="another varied input")
+    rank_correlation: float = Field(
+        ge=-0.99, le=0.99, allow_inf_nan=False, description="Spearman's ρ_S, −0.99…0.99"
+    )
 
 
 class StudyIn(BaseModel):
@@ -137,6 +150,11 @@ class StudyIn(BaseModel):
     outputs: list[str] | None = Field(default=None, max_length=200)
     bins: int = Field(default=30, ge=1, le=200)
     feasible_when: str | None = Field(default=None, max_length=80)
+    correlations: list[CorrelationIn] = Field(
+        default_factory=list,
+        max_length=66,
+        description="rank correlations between varied inputs (Monte Carlo and LHS only)",
+    )
     keep_points: bool = Field(
         default=False,
         description=(
@@ -443,6 +461,7 @@ def to_study(spec: ModelSpec, body: StudyIn) -> Study:
         outputs=None if body.outputs is None else tuple(body.outputs),
         bins=body.bins,
         feasible_when=body.feasible_when,
+        correlations=tuple((c.a, c.b, c.rank_correlation) for c in body.correlations),
     )
 
 

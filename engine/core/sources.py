@@ -881,6 +881,31 @@ SOURCES: dict[str, Source] = {
             "engine.procedures.trace_import reads: 'tightening steps', each with 'name', "
             "'result' and 'graph' holding 'angle values', 'torque values', 'time values' "
             "(and 'gradient values').",
+            id="Kruskal1958",
+            kind="paper",
+            title="Ordinal measures of association",
+            authors="W. H. Kruskal",
+            year="1958",
+            published="Journal of the American Statistical Association 53(284), 814-861",
+            covers="engine.numerics.laws: the rank (Spearman) correlation of a bivariate "
+            "normal pair, rho_S = (6/pi) asin(rho/2), which holds for any two margins joined "
+            "by a Gaussian copula (ranks do not change under the margins' monotone maps); the "
+            "studies and joint.clamp_capability take rank correlations and convert them.",
+        ),
+        Source(
+            id="CSP2862",
+            kind="web page",
+            title="VDI/VDE 2862 explains: bolting classes A/B/C, minimum requirements",
+            authors="A. Lederle (CSP)",
+            year="read 2026",
+            published="https://www.csp-sw.com/blog/vdi/vde-2862-screw-drive-classes",
+            covers="joint.clamp_capability's category check: class A 'Cpk >= 1.67 for torque "
+            "and angle of rotation', class B 'Cpk >= 1.33', class C no capability minimum, as "
+            "this secondary source summarises VDI/VDE 2862.",
+            reconstruction="VDI/VDE 2862 itself (Beuth) was not read; this is one software "
+            "maker's summary, the only public one found that states numbers. It sets a minimum "
+            "on the tool's torque capability, not on the clamp force or alpha_A; the check is "
+            "opt-in (category 'none' by default).",
         ),
     )
 }
@@ -931,6 +956,8 @@ _PATTERNS: tuple[tuple[re.Pattern[str], str | None], ...] = (
     (re.compile(r"\bmisams/BAT\b"), "BAT"),
     (re.compile(r"\bVDI/VDE 2645\b"), "VDI-VDE2645"),
     (re.compile(r"\bDanikor\b"), "Danikor"),
+    (re.compile(r"\bKruskal1958\b"), "Kruskal1958"),
+    (re.compile(r"\bCSP2862\b"), "CSP2862"),
     (re.compile(r"\bISO 16047\b"), "ISO16047"),
     (re.compile(r"\bDanikor-ISO5393\b"), "Danikor-ISO5393"),
     (re.compile(r"\bTorqueAudit\b"), "TorqueAudit"),

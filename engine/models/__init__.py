@@ -16,6 +16,7 @@ from ..core.spec import ModelSpec
 from .audit import AUDIT as JOINT_AUDIT
 from .blow import BLOW
 from .capability import CAPABILITY as TOOL_CAPABILITY
+from .clamp import CLAMP_CAPABILITY as JOINT_CLAMP_CAPABILITY
 from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
 from .friction import ISO16047 as FRICTION_ISO16047
 from .joint import VDI2230 as JOINT_VDI2230
@@ -42,6 +43,7 @@ MODELS: tuple[ModelSpec, ...] = (
     FRICTION_ISO16047,
     TRACE_ANALYSIS,
     TRACE_PROGRAM,
+    JOINT_CLAMP_CAPABILITY,
 )
 
 

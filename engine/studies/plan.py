@@ -34,15 +34,19 @@ from typing import Any
 
 import numpy as np
 from scipy import stats
+from scipy.special import ndtr, ndtri
 from scipy.stats import qmc
 
 from ..core.errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange
 from ..core.points import at, auto_index, in_range, rung_estimates, take, vector
 from ..core.runner import DEFAULT_TOLERANCE, choose_rung, run
 from ..core.spec import ModelSpec, Param, Scratch
+from ..numerics import laws
 
 METHODS = ("grid", "monte_carlo", "lhs", "sobol")
-DISTRIBUTIONS = ("uniform", "normal", "triangular")
+DISTRIBUTIONS = ("uniform", "normal", "triangular", "lognormal")
+#: Largest |rank correlation| a study may ask for between two inputs.
+MAX_CORRELATION = 0.99
 MAX_GRID_INPUTS = 3
 MAX_VARIABLES = 12
 MAX_STUDY_POINTS = 2_000_000
@@ -63,6 +67,9 @@ class Variable:
     ``normal``: ``mean``, ``sd``, truncated to ``low``…``high`` when given and
     always to the input's declared range (sampled by the inverse CDF of the
     truncated law, so no point is rejected and the sample stays seeded).
+    ``lognormal``: the arithmetic ``mean`` and ``sd`` of the input (converted to the
+    median and geometric sd by :func:`engine.numerics.laws.lognormal_from_mean_sd`),
+    truncated like the normal law; the input must be positive.
     """
 
     name: str
@@ -92,6 +99,9 @@ class Study:
     #: A boolean output that defines a feasible design (e.g. ``full_engagement``);
     #: None: a design is feasible when every check it reports passes.
     feasible_when: str | None = None
+    #: Rank (Spearman) correlations between pairs of varied inputs, ``(a, b, rho_S)``:
+    #: the inputs are joined by a Gaussian copula (Monte Carlo and LHS only).
+    correlations: tuple[tuple[str, str, float], ...] = ()
 
 
 @dataclass
@@ -169,30 +179,48 @@ def _bounds(param: Param, var: Variable) -> tuple[float, float]:
 
 
 def _transform(param: Param, var: Variable, u: np.ndarray) -> np.ndarray:
-    """Map uniform numbers in (0, 1) to the variable's (truncated) distribution."""
+    """Map uniform numbers in (0, 1) to the variable's (truncated) distribution.
+
+    Each law's quantile function is :mod:`engine.numerics.laws`', the one the clamp-force
+    capability integrates over too.
+    """
     lo, hi = _bounds(param, var)
     if var.distribution == "uniform":
         _need(var, "low", "high")
-        x = lo + u * (hi - lo)
+        x = laws.uniform_ppf(u, lo, hi)
     elif var.distribution == "triangular":
         a, c, b = _need(var, "low", "mode", "high")
         if not a <= c <= b:
             raise InputOutOfRange(
                 f"variables: {var.name} needs low ≤ mode ≤ high", field="variables"
             )
-        x = stats.triang.ppf(u, (c - a) / (b - a), loc=a, scale=b - a)
-    elif var.distribution == "normal":
+        x = laws.triangular_ppf(u, a, c, b)
+    elif var.distribution in ("normal", "lognormal"):
         mean, sd = _need(var, "mean", "sd")
         if not sd > 0.0:
             raise InputOutOfRange(f"variables: {var.name} needs sd > 0", field="variables")
-        a, b = (lo - mean) / sd, (hi - mean) / sd
+        if var.distribution == "normal":
+            loc, scale, a, b = mean, sd, (lo - mean) / sd, (hi - mean) / sd
+        else:
+            if not mean > 0.0 or hi <= 0.0:
+                raise InputOutOfRange(
+                    f"variables: {var.name}: a lognormal law needs mean > 0 and a positive range",
+                    field="variables",
+                )
+            median, gsd = laws.lognormal_from_mean_sd(mean, sd)
+            loc, scale = math.log(median), math.log(gsd)
+            a = (math.log(lo) - loc) / scale if lo > 0.0 else -math.inf
+            b = (math.log(hi) - loc) / scale
         if not a < b or a > 37.0 or b < -37.0:
             raise InputOutOfRange(
-                f"variables: {var.name}: the normal law N({mean:g}, {sd:g}) has no mass "
-                f"inside {lo:g}…{hi:g} {param.unit}",
+                f"variables: {var.name}: the {var.distribution} law of mean {mean:g} and sd "
+                f"{sd:g} has no mass inside {lo:g}…{hi:g} {param.unit}",
                 field="variables",
             )
-        x = stats.truncnorm.ppf(u, a, b, loc=mean, scale=sd)
+        if var.distribution == "normal":
+            x = laws.truncated_normal_ppf(u, mean, sd, lo, hi)
+        else:
+            x = laws.truncated_lognormal_ppf(u, median, gsd, max(lo, 0.0), hi)
     else:
         raise InputOutOfRange(
             f"variables: {var.name}: distribution must be one of {', '.join(DISTRIBUTIONS)}",
@@ -202,6 +230,52 @@ def _transform(param: Param, var: Variable, u: np.ndarray) -> np.ndarray:
     if param.kind == "int":
         x = np.clip(np.round(x), math.ceil(lo), math.floor(hi))
     return x
+
+
+def _correlation_matrix(study: Study) -> np.ndarray | None:
+    """The Gaussian copula's correlation matrix of the varied inputs' normal scores.
+
+    Each pair's rank correlation ρ_S becomes ρ = 2 sin(π ρ_S / 6)
+    (:func:`engine.numerics.laws.copula_from_spearman`); None without correlations.
+    """
+    if not study.correlations:
+        return None
+    if study.method not in ("monte_carlo", "lhs"):
+        raise InputOutOfRange(
+            f"correlations: only Monte Carlo and LHS studies take correlated inputs, not "
+            f"{study.method!r} (Sobol' indices and grids assume independent inputs)",
+            field="correlations",
+        )
+    index = {v.name: i for i, v in enumerate(study.variables)}
+    r = np.eye(len(index))
+    seen: set[frozenset[str]] = set()
+    for pair in study.correlations:
+        a, b, rank = pair
+        if a not in index or b not in index or a == b:
+            raise InputOutOfRange(
+                f"correlations: ({str(a)[:40]!r}, {str(b)[:40]!r}) must name two different "
+                "varied inputs",
+                field="correlations",
+            )
+        if frozenset((a, b)) in seen:
+            raise InputOutOfRange(
+                f"correlations: the pair ({a}, {b}) is given twice", field="correlations"
+            )
+        seen.add(frozenset((a, b)))
+        if not -MAX_CORRELATION <= float(rank) <= MAX_CORRELATION:
+            raise InputOutOfRange(
+                f"correlations: rank correlation {rank!r} of ({a}, {b}) is not allowed: must "
+                f"be −{MAX_CORRELATION}…{MAX_CORRELATION}",
+                field="correlations",
+            )
+        r[index[a], index[b]] = r[index[b], index[a]] = float(laws.copula_from_spearman(rank))
+    if np.linalg.eigvalsh(r)[0] <= 1e-9:
+        raise InputOutOfRange(
+            "correlations: the correlations given contradict each other (their matrix is "
+            "not positive definite)",
+            field="correlations",
+        )
+    return r
 
 
 def _grid_axis(param: Param, var: Variable) -> np.ndarray:
@@ -324,6 +398,7 @@ def _checked(
         raise InputOutOfRange("samples must be ≥ 2", field="samples")
     for p, v in zip(params, study.variables, strict=True):
         _transform(p, v, np.full(1, 0.5))  # each law's refusals, on one number
+    _correlation_matrix(study)
     n = study.samples
     if study.method == "sobol":
         n = 2 ** math.ceil(math.log2(study.samples)) * (k + 2)
@@ -381,6 +456,14 @@ def plan(spec: ModelSpec, study: Study) -> Plan:
     rng = np.random.default_rng(study.seed)
     u = qmc.LatinHypercube(d=k, seed=rng).random(n) if study.method == "lhs" else rng.random((n, k))
     u = np.clip(u, 1e-12, 1.0 - 1e-12)
+    correlation = _correlation_matrix(study)
+    if correlation is not None:
+        # Gaussian copula: the uniforms' normal scores correlated, then back to uniforms
+        u = np.clip(ndtr(laws.correlate_scores(ndtri(u), correlation)), 1e-12, 1.0 - 1e-12)
+        notes.append(
+            "correlated inputs drawn through a Gaussian copula of the given rank correlations"
+            + (" (the copula mixes the Latin hypercube's strata)" if study.method == "lhs" else "")
+        )
     columns = {
         v.name: _transform(p, v, u[:, i])
         for i, (p, v) in enumerate(zip(params, study.variables, strict=True))

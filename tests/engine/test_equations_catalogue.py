@@ -124,6 +124,13 @@ KNOWN_STEPS = {
         "nominal_preload",
         "torque_then_angle",
     ),
+    # the tool's σ from Cm, then the tails with their error, by the preload and the utilisation
+    "joint.clamp_capability": (
+        "index_standard_deviation",
+        "tail_with_error",
+        "preload_tail",
+        "utilisation_tail",
+    ),
 }
 
 

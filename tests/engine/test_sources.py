@@ -27,13 +27,14 @@ CITING = [
 ]
 #: The layers of engine/ and the layers each may import (engine.core.errors is open to all).
 #: Physics is pure functions and never the spec machinery; nothing below the models knows
-#: a model but the studies, which run them by name; core knows no physics.
+#: a model but the studies, which run them by name (and draw through the numerics' laws);
+#: core knows no physics.
 LAYERS: dict[str, set[str]] = {
     "core": {"core"},
     "numerics": {"numerics"},
     "physics": {"physics", "numerics"},
     "procedures": {"procedures", "physics", "numerics", "core"},
-    "studies": {"studies", "models", "core"},
+    "studies": {"studies", "models", "numerics", "core"},
     "models": {"models", "procedures", "physics", "numerics", "core"},
 }
 LAYERED = [p for layer in LAYERS for p in sorted((ROOT / "engine" / layer).glob("*.py"))]

@@ -1,6 +1,7 @@
 """bench/accuracy_capability.py's measurement held as a test: on the seeded 200-series draw
 tool.capability and friction.iso16047 agree with exact rational arithmetic to float
-rounding, the error 0 they state."""
+rounding, the error 0 they state; joint.clamp_capability's ppm figures keep within the 10 %
+its rung states (and within the error each result states) against a 16× finer quadrature."""
 
 import pytest
 
@@ -10,10 +11,17 @@ from bench import accuracy_capability
 @pytest.mark.slow
 def test_no_estimate_is_exceeded_on_200_random_series():
     rows = accuracy_capability.rows(200, seed=0)
-    assert {r["model"] for r in rows} == {"tool.capability", "friction.iso16047"}
+    assert {r["model"] for r in rows} == {
+        "tool.capability",
+        "friction.iso16047",
+        "joint.clamp_capability",
+    }
     for row in rows:
         where = f"{row['model']} {row['rung']} {row['output']}"
-        assert row["n"] == 200, where
+        # the clamp rows count only designs whose share is resolvable (>= 1e-9)
+        assert row["n"] == 200 or (row["model"] == "joint.clamp_capability" and row["n"] > 50)
         assert row["exceeded"] == 0, where
         assert row["worst_ratio"] <= 1.0, where
         assert row["kind"] == "bound", where
+        if row["model"] == "joint.clamp_capability":
+            assert " 0 of " in row["reference"], where
