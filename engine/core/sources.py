@@ -881,6 +881,8 @@ SOURCES: dict[str, Source] = {
             "engine.procedures.trace_import reads: 'tightening steps', each with 'name', "
             "'result' and 'graph' holding 'angle values', 'torque values', 'time values' "
             "(and 'gradient values').",
+        ),
+        Source(
             id="Kruskal1958",
             kind="paper",
             title="Ordinal measures of association",
