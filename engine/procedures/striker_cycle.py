@@ -151,6 +151,7 @@ from ..numerics.ode import (
     isfinite,
     jit,
     log1p,
+    newton_fraction_c,
     pymax,
     pymin,
     sqrt,
@@ -1271,14 +1272,9 @@ def _advance(  # type: ignore[no-untyped-def]
                 c1 = ec1[which]
                 for _ in range(3):  # Newton on a real RK4 sub-step
                     ws, a0s, a1s, b0s, b1s = _rk4_c(mode, p, w, q0, q1, v0, v1, s * hh)
-                    vs = c0 * b0s + c1 * b1s
-                    if vs == 0.0:
-                        break
-                    ds = (c0 * a0s + c1 * a1s - elvl[which]) / (vs * hh)
-                    if abs(ds) > 0.05 or s - ds < 0.0 or s - ds > 1.0:
-                        break
-                    s -= ds
-                    if abs(ds) < 1e-15:
+                    z = c0 * a0s + c1 * a1s - elvl[which]
+                    s, more = newton_fraction_c(s, z, c0 * b0s + c1 * b1s, hh)
+                    if not more:
                         break
             ws, a0s, a1s, b0s, b1s = _rk4_c(mode, p, w, q0, q1, v0, v1, s * hh)
             if n_rec < cap:
@@ -1522,13 +1518,8 @@ def _contact_advance(  # type: ignore[no-untyped-def]
                     for j in range(4):
                         zs += ecoef[which, j] * qs[j]
                         rate += ecoef[which, j] * vs[j]
-                    if rate == 0.0:
-                        break
-                    ds = zs / (rate * hh)
-                    if abs(ds) > 0.05 or s - ds < 0.0 or s - ds > 1.0:
-                        break
-                    s -= ds
-                    if abs(ds) < 1e-15:
+                    s, more = newton_fraction_c(s, zs, rate, hh)
+                    if not more:
                         break
             _contact_rk4_c(p, active, q, v, s * hh, qs, vs, st, wk, idx)
             for j in range(4):
