@@ -134,6 +134,7 @@ import math
 import time
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -584,23 +585,25 @@ class CycleOutcome:
     #: (rollers held on both faces) does not describe the return (:func:`_rollers_fly_at_blow`)
     flies: Any = False
 
-    @property
+    # the verdicts below are read a dozen times a run: each is worked out once (an
+    # outcome's fields are not changed once it is made)
+    @cached_property
     def refused(self) -> Any:
         return self.refusal != HELD
 
-    @property
+    @cached_property
     def blow(self) -> Any:
         return isfinite(self.engagement_time)
 
-    @property
+    @cached_property
     def returns(self) -> Any:
         return self.blow & isfinite(self.return_time)
 
-    @property
+    @cached_property
     def relocks(self) -> Any:
         return self.returns & isfinite(self.home_time) & isfinite(self.relock_time)
 
-    @property
+    @cached_property
     def cycle_time(self) -> Any:
         """Motor start to re-lock: spin-up, engagement, home, re-lock [s]; NaN if no re-lock."""
         t = self.spin_up_time + self.engagement_time + self.home_time + self.relock_time
