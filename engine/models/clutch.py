@@ -205,14 +205,28 @@ def _estimate(x: Mapping[str, Any]) -> Any:
     NaN-free: None where the shifted friction locks. On arrays (a sweep or a study
     choosing ``auto`` per point): the same per point, NaN where a scalar call gives None.
     """
-    alpha, f = x["groove_angle"], np.asarray(x["flank_friction"], dtype=float)
-    driving, construction = x["driving_groove_angle"], x["flank_construction"]
+    return _band_estimate(_band_pushes(x)[1])
+
+
+def _band_pushes(x: Mapping[str, Any]) -> tuple[Any, Any]:
+    """The flank frictions f, f_hi, f_lo (:func:`_friction_band`) stacked on a first axis,
+    and the push of the flanks the ball slides on at each, as the torque limit takes it."""
+    f = np.asarray(x["flank_friction"], dtype=float)
     low, high = _friction_band(f)
+    frictions = np.stack(np.broadcast_arrays(f, high, low))
+    if frictions.ndim == 1 and _array_inputs(x) is not None:
+        frictions = frictions[:, None]  # the three against every design
     with np.errstate(all="ignore"):
-        # the push of the flanks the ball slides on, as the torque limit takes it
-        push = np.asarray(combined_push_factor(alpha, f, driving, construction))
-        upper = np.asarray(combined_push_factor(alpha, high, driving, construction))
-        lower = np.asarray(combined_push_factor(alpha, low, driving, construction))
+        push = combined_push_factor(
+            x["groove_angle"], frictions, x["driving_groove_angle"], x["flank_construction"]
+        )
+    return frictions, np.asarray(push)
+
+
+def _band_estimate(pushes: Any) -> Any:
+    """:func:`_estimate` from the pushes at f, f_hi, f_lo (:func:`_band_pushes`)."""
+    push, upper, lower = pushes
+    with np.errstate(all="ignore"):
         shift = np.maximum(push / upper - 1.0, lower / push - 1.0)
         estimate = np.where((push > 0.0) & (upper > 0.0), shift, np.nan)
     if estimate.ndim == 0:
@@ -241,9 +255,12 @@ def _estimate_ball(x: Mapping[str, Any]) -> Any:
     the torque more there, so the zero-lift shift need not cover the peak
     (bench/accuracy_clutch.py found it exceeded in 6 of 1200 random designs, worst 1.18×).
     :func:`asbuilt.peak_friction_shift` evaluates the peak at the band's ends, with the
-    grid's error. Inputs that do not describe a spring yet: :func:`_estimate` alone.
+    grid's error, on the designs whose peak may leave the rim (elsewhere,
+    :func:`asbuilt.peak_at_rim`, the zero-lift shift is the peak's too). Inputs that do
+    not describe a spring yet: :func:`_estimate` alone.
     """
-    base = _estimate(x)
+    frictions, pushes = _band_pushes(x)
+    base = _band_estimate(pushes)
     helical = x["spring_type"] == "helical"
     needed = (
         ("spring_wire_diameter", "spring_mean_diameter", "spring_active_coils")
@@ -252,34 +269,31 @@ def _estimate_ball(x: Mapping[str, Any]) -> Any:
     )
     if base is None or any(x[name] is None for name in needed):
         return base
-    low, high = _friction_band(x["flank_friction"])
-    if low.ndim == 0:  # one friction: floats, as the characteristic takes a scalar input
-        low, high = low.item(), high.item()
+    # where the peak is the torque at the rim for every band friction, it scales with
+    # the friction exactly as the zero-lift torque does, on every grid: the peak's shift
+    # is the zero-lift one (its lower side at most) and need not be evaluated
+    at_rim = np.all(asbuilt.peak_at_rim(x, frictions, push=pushes), axis=0)
+    _, high, low = frictions
     n = _array_inputs(x)
     with np.errstate(all="ignore"):
-        if n is None or n <= _ESTIMATE_CHUNK:
-            peak = asbuilt.peak_friction_shift(x, low, high)
-        else:
-            parts = []
-            for i in range(0, n, _ESTIMATE_CHUNK):
-                part = slice(i, i + _ESTIMATE_CHUNK)
-                chunk = {
-                    k: (v[part] if isinstance(v, np.ndarray) and v.shape == (n,) else v)
-                    for k, v in x.items()
-                }
-                lo = low[part] if np.shape(low) == (n,) else low
-                hi = high[part] if np.shape(high) == (n,) else high
-                parts.append(
-                    np.broadcast_to(
-                        asbuilt.peak_friction_shift(chunk, lo, hi), (min(_ESTIMATE_CHUNK, n - i),)
-                    )
-                )
-            peak = np.concatenate(parts)
-        estimate = np.fmax(np.asarray(base, dtype=float), np.asarray(peak, dtype=float))
-        estimate = np.where(np.isnan(np.asarray(base, dtype=float)), np.nan, estimate)
-    if estimate.ndim == 0:
-        return None if math.isnan(estimate) else float(estimate)
-    return estimate
+        if n is None:  # one design
+            if at_rim:
+                return base
+            peak = asbuilt.peak_friction_shift(x, low.item(), high.item())
+            estimate = float(np.fmax(base, peak))
+            return None if math.isnan(estimate) else estimate
+        many = np.array(np.broadcast_to(np.asarray(base, dtype=float), (n,)))
+        todo = np.flatnonzero(~np.broadcast_to(at_rim, (n,)) & ~np.isnan(many))
+        lo, hi = np.broadcast_to(low, (n,)), np.broadcast_to(high, (n,))
+        for i in range(0, todo.size, _ESTIMATE_CHUNK):
+            part = todo[i : i + _ESTIMATE_CHUNK]
+            chunk = {
+                k: (v[part] if isinstance(v, np.ndarray) and v.shape == (n,) else v)
+                for k, v in x.items()
+            }
+            peak = asbuilt.peak_friction_shift(chunk, lo[part], hi[part])
+            many[part] = np.fmax(many[part], np.asarray(peak, dtype=float))
+    return many
 
 
 _RUNG = Rung(

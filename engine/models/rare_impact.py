@@ -171,10 +171,15 @@ def _groups(output: str) -> tuple[str, ...]:
     return () if group is None else (group,) if isinstance(group, str) else group
 
 
+#: (output, its groups) for every output of :data:`_GROUP`, read once a run.
+_OUTPUT_GROUPS = tuple((name, _groups(name)) for name in _GROUP)
+
+
 def _output_error(x: Mapping[str, Any], ctx: RunContext) -> float | None:
     """Estimated error of the outputs asked for (the closed form's groups)."""
     errs = _errors(x, ctx.scratch)
-    asked = [errs[g] for n in _GROUP if ctx.wants(n) for g in _groups(n)]
+    wanted = ctx.outputs
+    asked = [errs[g] for n, groups in _OUTPUT_GROUPS if n in wanted for g in groups]
     if not asked:
         return 0.0
     if not all(math.isfinite(e) for e in asked):

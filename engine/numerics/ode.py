@@ -9,6 +9,9 @@ RK4 compiled by numba; what is not model-specific is here, once:
 * :func:`hermite` and :func:`first_rise`: the cubic Hermite interpolant of one
   step and the first point where it reaches zero from below, end crossings and
   grazes inside the step alike (the event location of a position level);
+  :func:`newton_fraction`, one guarded Newton update of that point on a real
+  sub-step (the kernels take their sub-steps themselves: numba's disk cache refuses
+  a compiled function handed another as a value);
 * :func:`step_budget` and :class:`StepCost`: a simulation's budget in time, as
   steps at the kernel's measured cost per step;
 * :func:`as_numbers`, :func:`where`, :func:`sqrt`, ...: what lets one procedure take
@@ -18,9 +21,9 @@ The right-hand sides, the RK4 steps over each model's state and the kernels'
 event loops stay with their models.
 
 numba's disk cache keys a compiled function on its own source file: a kernel
-that calls :func:`hermite_c` or :func:`first_rise_c` is not recompiled when only
-this file changes (numba does not track callees), so clear ``__pycache__`` after
-editing a compiled function here.
+that calls :func:`hermite_c`, :func:`first_rise_c` or :func:`newton_fraction_c` is
+not recompiled when only this file changes (numba does not track callees), so clear
+``__pycache__`` after editing a compiled function here.
 """
 
 from __future__ import annotations
@@ -51,6 +54,8 @@ __all__ = [
     "isfinite",
     "jit",
     "log1p",
+    "newton_fraction",
+    "newton_fraction_c",
     "pymax",
     "pymin",
     "sqrt",
@@ -207,6 +212,52 @@ def first_rise(z0, v0, z1, v1, h):  # type: ignore[no-untyped-def]
 
 
 first_rise_c = jit(first_rise, error_model="numpy")
+
+
+def newton_fraction(s, z, rate, h):  # type: ignore[no-untyped-def]
+    r"""One Newton update of a level event's fraction s of a step: (s, go on).
+
+    .. math::
+        s \leftarrow s - \frac{z(s)}{\dot z(s)\,h}
+
+    Parameters
+    ----------
+    s : float
+        The fraction so far (first located on the step's cubic, :func:`first_rise`), [-]
+    z : float
+        The level's residual after a real sub-step of s·h (the kernel's own RK4 from the
+        step's start), [unit]
+    rate : float
+        Its rate there, [unit/s]
+    h : float
+        Step length, [s]
+
+    Notes
+    -----
+    The kernels of :mod:`engine.procedures.striker_cycle` refine a position event with up
+    to three of these (the cubic's root is within its O(h⁴) error of the sub-step's, so
+    one or two reach the last bit), stopping where this says so. An update is refused (s
+    kept, stop) where the rate is 0 or where it would move s by more than 0.05 of the step
+    or out of [0, 1] (the cubic's root stands); after an update below 1e-15, stop.
+    z(s) = s − 0.5 with rate 1 per step (h = 1): from 0.47 the update lands on 0.5; from
+    0.4 it (0.1) is refused; at the root the update is 0 and the refinement stops:
+
+    >>> newton_fraction(0.47, -0.03, 1.0, 1.0)
+    (0.5, True)
+    >>> newton_fraction(0.4, -0.1, 1.0, 1.0), newton_fraction(0.4, -0.1, 0.0, 1.0)
+    ((0.4, False), (0.4, False))
+    >>> newton_fraction(0.5, 0.0, 1.0, 1.0)
+    (0.5, False)
+    """
+    if rate == 0.0:
+        return s, False
+    ds = z / (rate * h)
+    if abs(ds) > 0.05 or s - ds < 0.0 or s - ds > 1.0:
+        return s, False
+    return s - ds, abs(ds) >= 1e-15
+
+
+newton_fraction_c = jit(newton_fraction, error_model="numpy")
 
 
 def step_budget(

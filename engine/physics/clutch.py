@@ -1207,6 +1207,71 @@ def lift_points(
     return lift, np.concatenate([seated, beta_rim], axis=-1)
 
 
+def rim_torque_slope(
+    deflection_at_rim: FloatArray,
+    ball_diameter: FloatArray,
+    riding_angle: FloatArray,
+    flank_friction: FloatArray,
+    push: FloatArray,
+) -> FloatArray:
+    r"""Slope of ln T over the rim's contact angle where the ball leaves the flank.
+
+    .. math::
+        \left.\frac{d \ln T}{d\beta}\right|_{\beta=\alpha} =
+        \frac{(d/2)\cos\alpha}{s_h} - \frac{1}{p(\alpha)\,\cos^2(\alpha - \rho)}
+
+    Parameters
+    ----------
+    deflection_at_rim : float
+        s_h = Δ + h, the helical spring's total deflection with the ball at the rim, [m]
+    ball_diameter : float
+        d, [m]
+    riding_angle : float
+        α of the flank the ball climbs (:func:`riding_flank_angle`), [rad]
+    flank_friction : float
+        f, ρ = atan f, [-]
+    push : float
+        p(α), :func:`combined_push_factor` at the riding angle, [-]
+
+    Returns
+    -------
+    slope : float
+        d ln T / dβ at β = α; at or below 0 the peak of the characteristic is at the
+        rim (see Notes), [1/rad]
+
+    Notes
+    -----
+    :func:`torque_against_lift` with a helical spring (F = c s) and the lift of
+    :func:`lift_points`: T(β) = K c (s_h + (d/2)(sin β − sin α)) / p(β), p =
+    tan(β − ρ) + c₀ (c₀ = tan(α′ − ρ) under a pressure disc, else 0: a free ball
+    rides the flatter flank, so p = tan(β − ρ) from its rim on), whose logarithmic
+    derivative at β = α is the expression above. The sign of dT/dβ over the rim is
+    that of φ(β) = (d/2) cos β cos x (sin x + c₀ cos x) − s(β), x = β − ρ, and
+    φ′ = −(d/2)(sin x + c₀ cos x)(sin β cos x + 2 cos β sin x) < 0 wherever p > 0 and
+    0 < x < 90°: T has at most one maximum over the rim, and along the flank (β = α)
+    it rises with the spring force. With slope ≤ 0 and α > ρ the characteristic's
+    peak is therefore the torque at the rim, T(h) = T(0) s_h/Δ. Derived here from
+    [001, eq. 1–3] and the rim geometry (:func:`rim_rise`); not in [001].
+
+    Examples
+    --------
+    A 10 mm ball on 45° flanks, 8 mm of deflection at the rim, f = 0 (p = 1):
+    5 · 0.7071/8 − 1/(1 · 0.5) = −1.558, the torque falls from the rim on; with 1 mm
+    it rises (+1.536):
+
+    >>> round(rim_torque_slope(0.008, 0.01, math.radians(45.0), 0.0, 1.0), 4)
+    -1.5581
+    >>> round(rim_torque_slope(0.001, 0.01, math.radians(45.0), 0.0, 1.0), 4)
+    1.5355
+    """
+    alpha = np.asarray(riding_angle, dtype=float)
+    cos_x = np.cos(alpha - np.arctan(flank_friction))
+    return _out(
+        np.asarray(ball_diameter) / 2.0 * np.cos(alpha) / np.asarray(deflection_at_rim)
+        - 1.0 / (np.asarray(push) * cos_x * cos_x)
+    )
+
+
 def torque_against_lift(
     spring_force: FloatArray,
     contact_angle: FloatArray,

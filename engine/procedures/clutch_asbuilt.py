@@ -30,11 +30,13 @@ from ..physics.clutch import (
     CONSTRUCTIONS,
     RECOMMENDED_SERVICE_FACTOR,
     SELF_LOCKING_MARGIN,
+    combined_push_factor,
     friction_sensitivity,
     lift_points,
     residual_torque,
     riding_flank_angle,
     rim_rise,
+    rim_torque_slope,
     self_locking_margin,
     torque_against_lift,
     torque_sharing,
@@ -564,6 +566,8 @@ def characteristic(
     """
     flat_spring = spring
     preload = np.asarray(x["spring_deflection"] if deflection is None else deflection, float)
+    if spring.kind == "helical" and not curves and np.all(peak_at_rim(x, deflection=deflection)):
+        return _rim_peak(x, spring, preload, lift_of(x, deflection))
     # A helical spring's force rises with the lift and the flank's push is constant, so
     # on the flank the torque rises to the rim: the grid's peak and maxima lie from the
     # rim on. Without the curves, only those points are evaluated (the same floats).
@@ -637,6 +641,76 @@ def characteristic(
             springs,
         )
         out["residual_torque"] = np.asarray(residual)[..., 0]
+    return out
+
+
+def peak_at_rim(
+    x: Mapping[str, Any], friction: Any = None, deflection: Any = None, push: Any = None
+) -> Any:
+    """True where a helical spring's characteristic peaks where the ball reaches the rim.
+
+    :func:`rim_torque_slope` ≤ 0 there, with every sliding flank steeper than the
+    friction angle (:func:`margin` > 0): the torque rises along the flank and falls
+    from the rim on, on any grid of the lift (each has the rim as a point).
+    ``friction`` replaces the flank friction (an array of several broadcasts against
+    the inputs' arrays), ``push`` its :func:`combined_push_factor` if known. A disc
+    spring: False.
+    """
+    if x["spring_type"] != "helical":
+        return np.asarray(False)
+    f = x["flank_friction"] if friction is None else friction
+    at_rim = np.asarray(
+        x["spring_deflection"] if deflection is None else deflection, float
+    ) + np.asarray(lift_of(x, deflection), float)
+    ride, driving, construction = _ride(x), x["driving_groove_angle"], x["flank_construction"]
+    if push is None:
+        push = combined_push_factor(ride, f, driving, construction)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        slope = np.asarray(rim_torque_slope(at_rim, x["ball_diameter"], ride, f, push), float)
+    return (slope <= 0.0) & (margin({**x, "flank_friction": f}) > 0.0)
+
+
+def _rim_peak(x: Mapping[str, Any], spring: Spring, preload: Any, h: Any) -> dict[str, Any]:
+    """:func:`characteristic`'s values where its peak is at the rim (:func:`peak_at_rim`).
+
+    The torque at z = h, and the force and stress at the end for the maxima: the floats
+    the grid would give at those points, without the grid.
+    """
+    h = np.asarray(h, float)
+    lift = 1.0 * h
+    total = preload + lift
+    force = spring.force(total)
+    torque = np.asarray(
+        torque_against_lift(
+            force,
+            np.asarray(_ride(x), float),
+            x["ball_circle_diameter"],
+            x["flank_friction"],
+            x["driving_groove_angle"],
+            _sharing(x),
+            x["flank_construction"],
+        )
+    )
+    shape = np.broadcast_shapes(torque.shape, np.shape(preload))
+
+    def full(value: Any) -> Any:
+        value = np.asarray(value, dtype=float)
+        return value if value.shape == shape else np.array(np.broadcast_to(value, shape))
+
+    end = end_values({**x, "spring_deflection": preload}, spring)
+    out: dict[str, Any] = {
+        "peak_torque": full(torque),
+        "lift_at_peak": full(lift),
+        "torque_at_rim": full(torque),
+        "total_lift": full(end["total_lift"]),
+        "flank_lift": full(lift),
+        "spring_force_at_peak": full(force),
+        "spring_force_max": full(end["spring_force_max"]),
+        "spring_stress_at_peak": full(spring.stress(total)),
+        "spring_stress_max": full(end["spring_stress_max"]),
+    }
+    if "residual_torque" in end:
+        out["residual_torque"] = full(end["residual_torque"])
     return out
 
 

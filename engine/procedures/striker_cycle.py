@@ -134,6 +134,7 @@ import math
 import time
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -151,6 +152,7 @@ from ..numerics.ode import (
     isfinite,
     jit,
     log1p,
+    newton_fraction_c,
     pymax,
     pymin,
     sqrt,
@@ -583,23 +585,25 @@ class CycleOutcome:
     #: (rollers held on both faces) does not describe the return (:func:`_rollers_fly_at_blow`)
     flies: Any = False
 
-    @property
+    # the verdicts below are read a dozen times a run: each is worked out once (an
+    # outcome's fields are not changed once it is made)
+    @cached_property
     def refused(self) -> Any:
         return self.refusal != HELD
 
-    @property
+    @cached_property
     def blow(self) -> Any:
         return isfinite(self.engagement_time)
 
-    @property
+    @cached_property
     def returns(self) -> Any:
         return self.blow & isfinite(self.return_time)
 
-    @property
+    @cached_property
     def relocks(self) -> Any:
         return self.returns & isfinite(self.home_time) & isfinite(self.relock_time)
 
-    @property
+    @cached_property
     def cycle_time(self) -> Any:
         """Motor start to re-lock: spin-up, engagement, home, re-lock [s]; NaN if no re-lock."""
         t = self.spin_up_time + self.engagement_time + self.home_time + self.relock_time
@@ -1271,14 +1275,9 @@ def _advance(  # type: ignore[no-untyped-def]
                 c1 = ec1[which]
                 for _ in range(3):  # Newton on a real RK4 sub-step
                     ws, a0s, a1s, b0s, b1s = _rk4_c(mode, p, w, q0, q1, v0, v1, s * hh)
-                    vs = c0 * b0s + c1 * b1s
-                    if vs == 0.0:
-                        break
-                    ds = (c0 * a0s + c1 * a1s - elvl[which]) / (vs * hh)
-                    if abs(ds) > 0.05 or s - ds < 0.0 or s - ds > 1.0:
-                        break
-                    s -= ds
-                    if abs(ds) < 1e-15:
+                    z = c0 * a0s + c1 * a1s - elvl[which]
+                    s, more = newton_fraction_c(s, z, c0 * b0s + c1 * b1s, hh)
+                    if not more:
                         break
             ws, a0s, a1s, b0s, b1s = _rk4_c(mode, p, w, q0, q1, v0, v1, s * hh)
             if n_rec < cap:
@@ -1522,13 +1521,8 @@ def _contact_advance(  # type: ignore[no-untyped-def]
                     for j in range(4):
                         zs += ecoef[which, j] * qs[j]
                         rate += ecoef[which, j] * vs[j]
-                    if rate == 0.0:
-                        break
-                    ds = zs / (rate * hh)
-                    if abs(ds) > 0.05 or s - ds < 0.0 or s - ds > 1.0:
-                        break
-                    s -= ds
-                    if abs(ds) < 1e-15:
+                    s, more = newton_fraction_c(s, zs, rate, hh)
+                    if not more:
                         break
             _contact_rk4_c(p, active, q, v, s * hh, qs, vs, st, wk, idx)
             for j in range(4):
