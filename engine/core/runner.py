@@ -325,7 +325,10 @@ def prepare(
         )
     asked = _fidelity(spec, fidelity, tolerance)
     scratch = Scratch()
-    with _arithmetic_refused(spec):
+    if asked == "auto":  # the estimates run: one numpy error state for them
+        with _arithmetic_refused(spec):
+            rung, notes = choose_rung(spec, values, asked, tol, scratch)
+    else:  # a named rung is only checked against the declared names
         rung, notes = choose_rung(spec, values, asked, tol, scratch)
     return Prepared(values, warnings, tol, asked, rung, tuple(notes), scratch)
 
@@ -449,12 +452,10 @@ def run(
         error = None
     ran = _declared(spec, result.rung)
     error_kind = None if error is None or ran is None else ran.estimate_kind
-    if (
-        error_kind == "typical"
-        and ran is not None
-        and not any(ran.estimate_caveat in n for n in notes)
-    ):
-        notes.append(ran.estimate_caveat)
+    if error_kind == "typical" and ran is not None:
+        caveat = ran.estimate_caveat  # a sentence made on each call: made once here
+        if not any(caveat in n for n in notes):
+            notes.append(caveat)
     return RunResult(
         model=spec.name,
         results=scalars,
