@@ -12,7 +12,6 @@ import functools
 import math
 import threading
 import time
-from collections import Counter
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any, Literal
@@ -53,11 +52,13 @@ class RunResult:
 class SweepResult:
     """One input varied over ``values``; ``results[name][i]`` belongs to ``values[i]``.
 
-    The sweep keeps its columns as numpy arrays (``columns``: a float array with NaN,
-    or an object array with None, where a point was not computed); ``results``,
-    ``values``, ``rungs`` and ``error_estimates`` are the same as Python lists, made
-    on first use. A caller that encodes the arrays itself never builds a Python
-    object per point: the bookkeeping stays in numpy.
+    The sweep keeps its bookkeeping in numpy: ``columns`` holds a float array per
+    output (NaN where a point was not computed), or an object array (None there) for
+    texts and flags that miss points; the rung of each point is a code into
+    ``rung_names`` (``rung_codes``, -1 where the point was refused). ``results``,
+    ``values``, ``rungs``, ``rung_array`` and ``error_estimates`` are the same as Python
+    lists (an object array for ``rung_array``), made on first use: a caller that encodes
+    the arrays itself never builds a Python object per point.
     """
 
     model: str
@@ -71,9 +72,11 @@ class SweepResult:
     elapsed_s: float
     notes: list[str] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
-    #: The rung that ran at each point (None where the point was refused): ``auto``
-    #: chooses per point, so a sweep across a regime change may mix rungs.
-    rung_array: np.ndarray = field(default_factory=lambda: np.empty(0, dtype=object))
+    #: The rung that ran at each point, as an index into ``rung_names`` (-1 where the
+    #: point was refused): ``auto`` chooses per point, so a sweep across a regime change
+    #: may mix rungs.
+    rung_codes: np.ndarray = field(default_factory=lambda: np.empty(0, dtype=np.int8))
+    rung_names: tuple[str, ...] = ()
     #: Each point's error estimate (NaN where refused or not known).
     error_array: np.ndarray = field(default_factory=lambda: np.empty(0))
 
@@ -84,6 +87,12 @@ class SweepResult:
     @functools.cached_property
     def results(self) -> dict[str, list[Value]]:
         return {name: _listed(column) for name, column in self.columns.items()}
+
+    @functools.cached_property
+    def rung_array(self) -> np.ndarray:
+        """The rung of each point as an object array of names (None where refused)."""
+        names = np.array([*self.rung_names, None], dtype=object)
+        return names[self.rung_codes]  # code -1 picks the trailing None
 
     @functools.cached_property
     def rungs(self) -> list[str | None]:
@@ -105,10 +114,23 @@ def _listed(column: np.ndarray) -> list[Value]:
     return out
 
 
-def _rung_summary(rungs: Sequence[str | None]) -> tuple[str, list[str]]:
+def _rung_counts(codes: np.ndarray, names: Sequence[str]) -> dict[str, int]:
+    """How many points each rung ran at, in the order the points first use them.
+
+    Counted with ``np.bincount`` over the codes (-1, a refused point, is not counted).
+
+    >>> _rung_counts(np.array([1, -1, 0, 1, 1], dtype=np.int8), ("closed_form", "simulation"))
+    {'simulation': 3, 'closed_form': 1}
+    """
+    counts = np.bincount(codes[codes >= 0], minlength=len(names))
+    used = np.flatnonzero(counts).tolist()
+    if len(used) > 1:  # first-seen order, as a reader of the points meets them
+        used.sort(key=lambda k: int(np.argmax(codes == k)))
+    return {names[k]: int(counts[k]) for k in used}
+
+
+def _rung_summary(counts: Mapping[str, int]) -> tuple[str, list[str]]:
     """The sweep's ``rung`` field and, when points differ, a note saying how."""
-    every = Counter(rungs)  # counted in C, first-seen order kept
-    counts = {r: c for r, c in every.items() if r is not None}
     if len(counts) <= 1:
         return next(iter(counts), ""), []
     return ", ".join(counts), [
@@ -303,7 +325,10 @@ def prepare(
         )
     asked = _fidelity(spec, fidelity, tolerance)
     scratch = Scratch()
-    with _arithmetic_refused(spec):
+    if asked == "auto":  # the estimates run: one numpy error state for them
+        with _arithmetic_refused(spec):
+            rung, notes = choose_rung(spec, values, asked, tol, scratch)
+    else:  # a named rung is only checked against the declared names
         rung, notes = choose_rung(spec, values, asked, tol, scratch)
     return Prepared(values, warnings, tol, asked, rung, tuple(notes), scratch)
 
@@ -427,12 +452,10 @@ def run(
         error = None
     ran = _declared(spec, result.rung)
     error_kind = None if error is None or ran is None else ran.estimate_kind
-    if (
-        error_kind == "typical"
-        and ran is not None
-        and not any(ran.estimate_caveat in n for n in notes)
-    ):
-        notes.append(ran.estimate_caveat)
+    if error_kind == "typical" and ran is not None:
+        caveat = ran.estimate_caveat  # a sentence made on each call: made once here
+        if not any(caveat in n for n in notes):
+            notes.append(caveat)
     return RunResult(
         model=spec.name,
         results=scalars,
@@ -528,19 +551,22 @@ def sweep(
         index = np.full(n, k, dtype=np.int64)
     known = [o.name for o in spec.outputs if not o.series]
     scalar_names = known if wanted is None else [o for o in wanted if o in known]
-    # per output: an object column filled from the array groups and the looped points
-    columns: dict[str, Any] = {}
-    computed: list[str] = []
-    rungs = np.full(n, None, dtype=object)
+    # per output: a float column (NaN where not computed), or an object column (None) for
+    # texts and flags that miss points, filled from the array groups and the looped points
+    columns: dict[str, np.ndarray] = {}
+    computed: dict[str, None] = {}  # the outputs given, in the order first given
+    names = list(spec.rung_names)
+    codes = np.full(n, -1, dtype=np.int8)  # the rung of each point: an index into names
     errors = np.full(n, np.nan)
     loop = refused.copy()
     bad_total = 0
     for k, rung_name in enumerate(spec.rung_names):
         sel = (index == k) & ~refused
-        if not sel.any():
+        m = int(np.count_nonzero(sel))
+        if not m:
             continue
-        m = int(sel.sum())
-        sub = points.take(x, n, sel) if m < n else x
+        whole = m == n
+        sub = x if whole else points.take(x, n, sel)
         try:
             with _arithmetic_refused(spec):
                 vec = points.vector(
@@ -551,7 +577,7 @@ def sweep(
                     tol,
                     m,
                     dtype=None,
-                    scratch=scratch if m == n else None,
+                    scratch=scratch if whole else None,
                 )
         except SolverFailed:
             vec = None  # loop instead: the points that fail are null, with a note
@@ -567,40 +593,25 @@ def sweep(
             continue
         # a point the array path refuses is NaN in every float output it computed (the
         # study's rule); one NaN beside finite outputs is a null the scalar path gives too
-        bad = np.zeros(m, dtype=bool)
-        some_finite = np.zeros(m, dtype=bool)
-        any_float = False
+        some_finite: np.ndarray | None = None
+        every_finite = False
         for name in scalar_names:
             if name not in vec.computed:
                 continue
             column = vec.values[name]
-            if name not in computed:
-                computed.append(name)
-            if column.dtype.kind == "f":
+            computed[name] = None
+            if column.dtype.kind == "f" and not every_finite:
                 finite = np.isfinite(column)
-                some_finite |= finite
-                any_float = True
-            else:
-                finite = None
-            if m == n and finite is not None and finite.all():
-                columns[name] = column  # the common case: one array, listed once below
-                continue
-            obj = columns.get(name)
-            if obj is None or obj.dtype != object:
-                obj = columns[name] = np.full(n, None, dtype=object)
-            part = column.astype(object)
-            if finite is not None:
-                part[~finite] = None
-            obj[sel] = part
-        if any_float:
-            bad = ~some_finite
+                some_finite = finite if some_finite is None else some_finite | finite
+                every_finite = bool(some_finite.all())
+            _put(columns, name, column, sel, whole)
+        bad = None if some_finite is None or every_finite else ~some_finite
+        codes[sel] = k if bad is None else np.where(bad, -1, k)
         est = estimates.get(k)
-        part_rungs = np.full(m, rung_name, dtype=object)
-        part_rungs[bad] = None
-        rungs[sel] = part_rungs
         if est is not None:
-            errors[sel] = np.where(bad, np.nan, est[sel])
-        bad_total += int(bad.sum())
+            errors[sel] = est[sel] if bad is None else np.where(bad, np.nan, est[sel])
+        if bad is not None:
+            bad_total += int(np.count_nonzero(bad))
         for note in vec.notes:
             if note not in notes:
                 notes.append(note)
@@ -644,18 +655,13 @@ def sweep(
             notes.append(f"{vary} = {value:g}: {exc.message}")
             continue
         any_point = True
-        rungs[j] = point.rung
+        if point.rung not in names:
+            names.append(point.rung)
+        codes[j] = names.index(point.rung)
         errors[j] = np.nan if point.error_estimate is None else point.error_estimate
         for name, v in point.results.items():
-            if name not in computed:
-                computed.append(name)
-            obj = columns.get(name)
-            if obj is None or obj.dtype != object:
-                old = obj
-                obj = columns[name] = np.full(n, None, dtype=object)
-                if old is not None:  # cannot happen with a loop, kept for safety
-                    obj[:] = old.astype(object)
-            obj[j] = v
+            computed[name] = None
+            _set(columns, name, j, v, n)
         for w in point.warnings:
             if w not in warnings and not w.startswith(f"{vary} = "):
                 warnings.append(w)
@@ -663,12 +669,13 @@ def sweep(
         if isinstance(first_refusal, InputOutOfRange) and first_refusal.field != vary:
             raise first_refusal  # the fixed inputs themselves are out of range
         notes.append("no point of the sweep could be computed")
-    order = [o for o in scalar_names if o in computed] + [o for o in computed if o not in known]
-    rung_list: list[str | None] = rungs.tolist()
-    rung, mixed = _rung_summary(rung_list)
+    declared = set(known)
+    order = [o for o in scalar_names if o in computed] + [o for o in computed if o not in declared]
+    counts = _rung_counts(codes, names)
+    rung, mixed = _rung_summary(counts)
     if asked == "auto" and not mixed and rung:
         notes.insert(0, f"auto: chose {rung!r} at every point (tolerance {tol:.2g})")
-    for name in dict.fromkeys(r for r in rung_list if r is not None):
+    for name in counts:
         ran = _declared(spec, name)
         if ran is not None and ran.estimate_caveat and ran.estimate_caveat not in notes:
             notes.append(ran.estimate_caveat)  # the points it ran at: ``rungs``
@@ -683,9 +690,58 @@ def sweep(
         elapsed_s=time.perf_counter() - start,
         notes=mixed + notes,
         warnings=warnings,
-        rung_array=rungs,
+        rung_codes=codes,
+        rung_names=tuple(names),
         error_array=errors,
     )
+
+
+def _objects(column: np.ndarray) -> np.ndarray:
+    """A float column as an object column, None where it was NaN or infinite."""
+    out = column.astype(object)
+    out[~np.isfinite(column)] = None
+    return out
+
+
+def _put(
+    columns: dict[str, np.ndarray], name: str, part: np.ndarray, sel: np.ndarray, whole: bool
+) -> None:
+    """One rung group's column ``part`` written at the points ``sel`` of ``columns[name]``.
+
+    A float column stays float (NaN where no group or point gave a value); a text, flag
+    or integer column that misses points becomes an object column (None there).
+    """
+    have = columns.get(name)
+    floats = part.dtype.kind == "f"
+    if have is None:
+        if whole:
+            columns[name] = part  # the common case: the array path's own column, no copy
+            return
+        n = sel.shape[0]
+        have = columns[name] = np.full(n, np.nan) if floats else np.full(n, None, dtype=object)
+    elif have.dtype.kind == "f" and not floats:
+        have = columns[name] = _objects(have)
+    if have.dtype.kind == "f":
+        have[sel] = part
+    else:
+        have[sel] = _objects(part) if floats else part.astype(object)
+
+
+def _set(columns: dict[str, np.ndarray], name: str, j: int, value: Value, n: int) -> None:
+    """A looped point's ``value`` of output ``name`` (NaN or None where null)."""
+    plain = value is None or type(value) is float
+    have = columns.get(name)
+    if have is None:
+        have = columns[name] = np.full(n, np.nan) if plain else np.full(n, None, dtype=object)
+    elif have.dtype.kind == "f":
+        if not plain:
+            have = columns[name] = _objects(have)
+    elif have.dtype != object:  # a column one array group gave whole: no loop follows it
+        have = columns[name] = have.astype(object)
+    if have.dtype.kind == "f":
+        have[j] = np.nan if value is None else value
+    else:
+        have[j] = value
 
 
 def _sweep_column(param: Param, values: Sequence[float]) -> np.ndarray:

@@ -10,6 +10,7 @@ checks and notes.
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import math
 from collections.abc import Mapping
@@ -641,7 +642,7 @@ def _tool(x: Mapping[str, Any], one: bool) -> _Tool:
         fails = (w5 * w5 == 0.0) | (c7 + c8 == 0.0)
         if one and fails:
             raise ZeroDivisionError("the spindle speed or the shaft stiffness underflows to 0")
-        with np.errstate(all="ignore"):
+        with _quiet(not one):
             j = 2.0 * e / (w5 * w5)
             c = c7 * c8 / (c7 + c8)
             drag = (x["spindle_count"] - 1) * x["idle_spindle_friction_torque"]
@@ -724,7 +725,7 @@ def _blow_interval(x: Mapping[str, Any], s: _Setup) -> tuple[Any, str]:
             "[002, eq. 1], engagement, return, re-lock [002, eq. 4])"
         )
     drive = tool.drive
-    with np.errstate(all="ignore"):  # arrays: 0/0 and overflow are NaN and inf, as wanted
+    with _quiet(s.many):  # arrays: 0/0 and overflow are NaN and inf, as wanted
         dt = where(drive > 0.0, tool.inertia * s.speed / where(drive > 0.0, drive, 1.0), math.nan)
     return dt, (
         "the drive torque N spins the tool from rest to ω0 after each blow, Δt = J_t·ω0/N"
@@ -886,6 +887,11 @@ class _Setup:
     notes: list[str]  # the rate's and the thread's (one design)
 
     @property
+    def many(self) -> bool:
+        """Whether this is the setup of many designs (arrays), not of one (floats)."""
+        return isinstance(self.refused, np.ndarray)
+
+    @property
     def yield_torque(self) -> Any:
         """T_y = (k_G + k_K)·F_M0.2, where the joint's torque–angle line bends over [N·m]."""
         return math.inf if self.per is None else self.per * self.yield_preload
@@ -930,7 +936,7 @@ def _setup_of(x: Mapping[str, Any]) -> _Setup:
     if one and error is not None:
         raise error
     k = _rate(x, target, got[1])
-    with np.errstate(all="ignore"):
+    with _quiet(not one):
         speed = sqrt(2.0 * tool.energy / tool.inertia)
         energy = 0.5 * tool.inertia * speed**2
         overflow = _squares_overflow(speed) | _squares_overflow(tool.drive)
@@ -985,7 +991,7 @@ def _tool_values(x: Mapping[str, Any], s: _Setup) -> dict[str, Any]:
     Its keys are :data:`_TOOL_VALUES`, in that order.
     """
     e, c, drive = s.energy, s.tool.stiffness, s.tool.drive
-    with np.errstate(all="ignore"):
+    with _quiet(s.many):
         return {
             "tool_energy_used": e,
             "tool_inertia_used": s.tool.inertia,
@@ -1085,7 +1091,7 @@ def _energy_errors(
     """
     peak, _ = _first_blow(x, s) if first is None else first
     k = s.rate
-    with np.errstate(all="ignore"):
+    with _quiet(s.many):
         kk = where(k > 0.0, k, 1.0)
         # the breakaway's jump at the first blow's start (snug)
         after = energy_blow_error(
@@ -1108,7 +1114,7 @@ def _rigid_error(x: Mapping[str, Any], s: _Setup) -> Any:
     """The rigid rung's error: its torque against the energy rung's, plus the latter's error."""
     first = _first_blow(x, s)
     after_error, peak_error = _energy_errors(x, s, first)
-    with np.errstate(all="ignore"):
+    with _quiet(s.many):
         after = first[1]
         rigid = rigid_blow_torque(s.energy, s.tool.stiffness) + s.tool.drive
         base = where(peak_error > after_error, peak_error, after_error)
@@ -1614,6 +1620,20 @@ _THREAD_INPUTS = (
     "yield_strength",
 )
 _JOINT_INPUTS = ("clamped_compliance", "clamped_length", "bolt_compliance", "youngs_modulus")
+
+
+#: What :func:`_quiet` enters for one design (reusable: it does nothing).
+_AS_IS = contextlib.nullcontext()
+
+
+def _quiet(many: bool) -> contextlib.AbstractContextManager[Any]:
+    """numpy's 0/0 and overflow silenced (NaN and inf, as wanted) for many designs' arrays.
+
+    One design's numbers need no error state of their own: Python's floats raise where
+    they fail (the refusal the single design gives), and the runner's error state covers
+    the numpy calls; entering a state costs about what one small step does.
+    """
+    return np.errstate(all="ignore") if many else _AS_IS
 
 
 def _is_array(x: Mapping[str, Any]) -> bool:

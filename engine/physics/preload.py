@@ -26,6 +26,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from ..core.errors import InputOutOfRange
+from ..numerics.ode import where
 
 #: cos 30°: half the 60° flank angle of an ISO metric thread.
 COS_HALF_FLANK = math.cos(math.radians(30.0))
@@ -1098,7 +1099,7 @@ def _panel_rule(panels: int) -> tuple[np.ndarray, np.ndarray]:
 
 def _panels(length: Any) -> Any:
     """The rule for a v interval ``length`` long: 0 (8 nodes) or the number of 16-node panels."""
-    long = np.where(length > SCATTER_MEAN_SHORT, length, 0.0)
+    long = where(length > SCATTER_MEAN_SHORT, length, 0.0)
     return np.ceil(long / SCATTER_MEAN_PANEL).astype(int)
 
 
@@ -1200,7 +1201,7 @@ def friction_scatter_band(
     everything = (torque, g_lo, g_hi, k_lo, k_hi, *geometry)
     with np.errstate(all="ignore"):  # an upside-down range gives NaN; the caller refuses it
         t = _band_terms(torque, geometry, (g_lo, g_hi), (k_lo, k_hi), formula)
-        if all(np.ndim(v) == 0 for v in everything):
+        if all(v.__class__ is float or np.ndim(v) == 0 for v in everything):
             # one design: its one rule, without the bookkeeping of many (5x faster here)
             rule = int(_panels(t.length))
             mean = _panel_mean(torque, t, g_lo, geometry, formula, rule)
@@ -1278,22 +1279,22 @@ def _band_terms(
     )
     # k_K = c μ_K under every formula: its span is k_K(Δ_K), no difference taken
     _, bearing_span = tightening_torque_per_preload(
-        p, d2, d, 0.0, np.subtract(k_hi, k_lo), outer, hole, formula
+        p, d2, d, 0.0, k_hi - k_lo, outer, hole, formula
     )
-    u_lo = np.add(thread_lo, bearing_lo)
-    ratio = np.subtract(thread_hi, thread_lo) / u_lo  # Δ_G/δ
+    u_lo = thread_lo + bearing_lo
+    ratio = (thread_hi - thread_lo) / u_lo  # Δ_G/δ
     # ratio ≤ 1e-17: k_G is constant on the μ_G range to 1e-17, its integral is its value
-    flat = ~(ratio > 1e-17)
-    safe = np.where(flat, 1.0, ratio)
-    length = np.where(flat, 0.0, np.log1p(safe))  # of the v interval
+    flat = np.logical_not(ratio > 1e-17)
+    safe = where(flat, 1.0, ratio)
+    length = where(flat, 0.0, np.log1p(safe))  # of the v interval
     return _BandTerms(
-        low=np.divide(torque, np.add(thread_hi, bearing_hi)),
-        high=np.divide(torque, u_lo),
+        low=torque / (thread_hi + bearing_hi),
+        high=torque / u_lo,
         u_lo=u_lo,
         bearing_lo=bearing_lo,
         bearing_span=bearing_span,
-        reach=np.where(flat, 0.0, np.subtract(g_hi, g_lo) / safe),
-        scale=np.where(flat, 1.0, length / safe),
+        reach=where(flat, 0.0, (g_hi - g_lo) / safe),
+        scale=where(flat, 1.0, length / safe),
         length=length,
     )
 
@@ -1310,7 +1311,7 @@ def _panel_mean(
     the nodes τ on a trailing axis of the points' values (floats or 1-D arrays)."""
 
     def col(v: Any) -> Any:
-        return v if np.ndim(v) == 0 else np.asarray(v)[:, None]
+        return v[:, None] if isinstance(v, np.ndarray) and v.ndim else v
 
     tau, half_w = _panel_rule(panels)
     grow = np.expm1(tau * col(t.length))  # e^{τℓ} − 1
@@ -1321,8 +1322,8 @@ def _panel_mean(
     # the mean of 1/(u + k_K) over the μ_K range: ln(1 + c Δ_K/u)/(c Δ_K); where
     # Δ_K ≤ 1e-17 u everywhere it is 1/u to 1e-17
     spread = t.bearing_span > 1e-17 * t.u_lo
-    k_safe = np.where(spread, t.bearing_span, 1.0)
-    inner = np.where(col(spread), np.log1p(col(t.bearing_span) / u) / col(k_safe), 1.0 / u)
+    k_safe = where(spread, t.bearing_span, 1.0)
+    inner = where(col(spread), np.log1p(col(t.bearing_span) / u) / col(k_safe), 1.0 / u)
     return torque * t.scale * np.sum(half_w * (1.0 + grow) * inner, axis=-1)
 
 

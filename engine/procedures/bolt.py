@@ -10,6 +10,7 @@ pressure under head and nut/washer (VDI 2230-1 R10), thread stripping
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
@@ -214,8 +215,13 @@ class Fastener:
     grade: fa.Grade | None
 
 
+@functools.lru_cache(maxsize=256)
 def _catalogue_thread(d: float, pitch: float | None) -> fa.Thread | None:
-    """The catalogue's metric thread for a numeric diameter/pitch, or None."""
+    """The catalogue's metric thread for a numeric diameter/pitch, or None.
+
+    Kept by value (a thread is frozen, the catalogue fixed): a request repeats the sizes
+    of the last, and a size the catalogue lacks otherwise costs a refusal's sentence.
+    """
     try:
         return fa.metric_thread(round(d * 1e3, 6), None if pitch is None else round(pitch * 1e3, 6))
     except InputOutOfRange:

@@ -131,7 +131,8 @@ def test_non_finite_and_mixed_columns() -> None:
         units={k: "1" for k in columns},
         rung="closed_form",
         elapsed_s=1e-3,
-        rung_array=np.array(["closed_form", None, "closed_form", "closed_form", "a"], dtype=object),
+        rung_codes=np.array([0, -1, 0, 0, 1], dtype=np.int8),
+        rung_names=("closed_form", "a"),
         error_array=np.array([1e-3, np.nan, 0.0, 2e-3, np.inf]),
     )
     raw = _sweep_answer(result, "m").body
