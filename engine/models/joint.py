@@ -218,6 +218,50 @@ JOINT_INPUTS: tuple[Param, ...] = (
         symbol="n",
         group="loads",
     ),
+    _length(
+        "bolt_offset",
+        "Eccentric clamping (VDI 2230-1 §5.3.2): distance s_sym of the bolt axis from the axis "
+        "O–O of the clamped body, positive towards the working load's line; 0: concentric",
+        default=0.0,
+        minimum=-1.0,
+        maximum=1.0,
+        symbol="s_sym",
+        group="eccentric",
+    ),
+    _length(
+        "load_lever",
+        "Eccentric loading: distance a of the working load's line from the axis O–O; 0: the "
+        "load acts on the body's axis",
+        default=0.0,
+        minimum=0.0,
+        symbol="a",
+        group="eccentric",
+    ),
+    _length(
+        "opening_edge",
+        "Distance u from O–O of the interface edge that opens first (on the load's side); 0: "
+        "no opening requirement F_KA",
+        default=0.0,
+        minimum=0.0,
+        symbol="u",
+        group="eccentric",
+    ),
+    _length(
+        "interface_length",
+        "Length c_T of the interface in the bending plane (needed with s_sym, a or u ≠ 0)",
+        minimum=0.0,
+        exclusive_minimum=True,
+        symbol="c_T",
+        group="eccentric",
+    ),
+    _length(
+        "interface_width",
+        "Width b of the interface across the bending plane (needed with c_T)",
+        minimum=0.0,
+        exclusive_minimum=True,
+        symbol="b",
+        group="eccentric",
+    ),
     Param(
         "working_load",
         "N",
@@ -682,13 +726,73 @@ def _solve(
     )
     parts = jt.clamped_compliance(thick, moduli, d_w, d_h, outer, joint_type)
     delta_s, delta_p = bolt_c.total, parts.total
-    phi_k = jt.load_factor(delta_s, delta_p, 1.0)
-    phi_n = jt.load_factor(delta_s, delta_p, col("load_introduction"))
 
-    # R2 required clamp force -------------------------------------------------------------------
+    # R3 eccentric clamping and loading (VDI 2230-1 §5.3.2); zero offsets: concentric --------------
+    s_sym, lever, edge = col("bolt_offset"), col("load_lever"), col("opening_edge")
+    eccentric = x.get("interface_length") is not None and x.get("interface_width") is not None
+    i_bers: Any = math.nan
+    beta_p: Any = 0.0
+    beta_s: Any = math.nan
+    k_ab: Any = 0.0
+    if eccentric:
+        c_t, b_t = col("interface_length"), col("interface_width")
+        refusals.add(
+            abs(s_sym) >= 0.5 * c_t,
+            "bolt_offset",
+            lambda: (
+                f"bolt_offset s_sym = {s_sym * 1e3:g} mm puts the bolt outside the interface "
+                f"c_T = {c_t * 1e3:g} mm: |s_sym| must be < {0.5 * c_t * 1e3:g} mm"
+            ),
+        )
+        refusals.add(
+            edge > 0.5 * c_t * (1.0 + 1e-12),
+            "opening_edge",
+            lambda: (
+                f"opening_edge u = {edge * 1e3:g} mm lies outside the interface c_T = "
+                f"{c_t * 1e3:g} mm: must be ≤ {0.5 * c_t * 1e3:g} mm"
+            ),
+        )
+        cone_d = _pick(
+            parts.outer_diameter < parts.limit_diameter, parts.outer_diameter, parts.limit_diameter
+        )
+        i_bers = jt.substitute_bending_inertia(
+            grip, d_w, cone_d, parts.tangent, s_sym, b_t, c_t, joint_type
+        )
+        beta_p = jt.clamped_bending_compliance(thick, moduli, i_bers)
+        beta_s = jt.bolt_bending_compliance(
+            d,
+            b["minor_diameter"],
+            col("youngs_modulus"),
+            sections,
+            free_thread,
+            str(x["head"]),
+            joint_type,
+            col_or("nut_youngs_modulus", _tapped_modulus(x)),
+        )
+        area_d, inertia_t = jt.interface_section(b_t, c_t, d_h)
+        k_ab = jt.opening_ratio(lever, s_sym, edge, area_d, inertia_t)
+    else:
+        for name, value in (("bolt_offset", s_sym), ("load_lever", lever), ("opening_edge", edge)):
+            refusals.add(
+                value != 0.0,
+                "interface_length",
+                partial(
+                    "{0} = {1:g} mm needs the interface: give interface_length c_T and "
+                    "interface_width b (> 0 mm), or {0} = 0 for a concentric joint".format,
+                    name,
+                    value * 1e3,
+                ),
+            )
+    delta_p1 = jt.eccentric_compliance(delta_p, beta_p, s_sym, s_sym)  # δ*_P
+    delta_p2 = jt.eccentric_compliance(delta_p, beta_p, s_sym, lever)  # δ**_P
+    phi_k = jt.load_factor(delta_s, delta_p1, 1.0, delta_p2)
+    phi_n = jt.load_factor(delta_s, delta_p1, col("load_introduction"), delta_p2)
+
+    # R2 required clamp force (the opening requirement F_KA once F_A is read) --------------------
     f_q, q_f, mu_t = col("transverse_load"), col("slip_interfaces"), col("interface_friction")
     f_kq = jt.transverse_clamp_force(f_q, q_f, mu_t)
-    f_kerf = jt.required_clamp_force(f_kq, col("sealing_clamp_force"))
+    f_kp = col("sealing_clamp_force")
+    f_kerf_grip = jt.required_clamp_force(f_kq, f_kp)
 
     # R1 friction box, loads --------------------------------------------------------------------
     method = get_method(str(x["method"]))
@@ -717,11 +821,13 @@ def _solve(
             f"{f_a:g} N"
         ),
     )
+    f_ka = jt.opening_clamp_force(f_a, k_ab)
+    f_kerf = jt.required_clamp_force(f_kq, f_kp, f_ka)
 
     # R4 embedding --------------------------------------------------------------------------------
     faces, interfaces = jt.embedding_locations(joint_type, plates)
     f_z_len = jt.embedding_for_load(str(x["surface_roughness"]), f_q, faces, interfaces)
-    f_z = jt.embedding_loss(f_z_len, delta_s, delta_p)
+    f_z = jt.embedding_loss(f_z_len, delta_s, delta_p1)
 
     # R7 permissible preload at the smallest section ---------------------------------------------
     d0, where = jt.smallest_section(b["stress_diameter"], sections)
@@ -775,7 +881,7 @@ def _solve(
         clamped_expansion_length=jt.plates_expansion_length(thick, alphas),
         plate_temperature_change=col_or("plate_temperature_change", dt_s),
         bolt=delta_s,
-        clamped=delta_p,
+        clamped=delta_p1,
         bolt_modulus_ratio=col("bolt_modulus_ratio"),
         clamped_modulus_ratio=col("plate_modulus_ratio"),
     )
@@ -787,13 +893,13 @@ def _solve(
     alpha_req = _finite_or(alpha_a, method_factor)
     req_min = jt.minimum_assembly_preload(f_kerf, f_a, phi_n, f_z, th_loss)
     req_max = jt.required_preload_max(alpha_req, req_min)
-    fa_limit = jt.max_working_load(f_mzul, alpha_req, f_kerf, loss, phi_n)
-    fa_sep_any = jt.separation_load(f_mzul, loss, phi_n)
+    fa_limit = jt.max_working_load(f_mzul, alpha_req, f_kerf_grip, loss, phi_n, k_ab, f_kp)
+    fa_sep_any = jt.separation_load(f_mzul, loss, phi_n, k_ab)
     f_kr_raw = jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)
     # a joint that opens has no clamp force left (the linear diagram's negative value is not
     # a force): F_KR,min and S_G are held at 0 there and the checks fail on the raw value
     f_kr_min = _larger(f_kr_raw, 0.0)
-    fa_sep = jt.separation_load(fm_min, loss, phi_n)
+    fa_sep = jt.separation_load(fm_min, loss, phi_n, k_ab)
     checks: dict[str, tuple[Any, Any]] = {
         "R7_window_fits": (True, req_max <= f_mzul * (1.0 + 1e-12)),
         "separation_avoidable": (True, f_a < fa_sep_any),
@@ -831,11 +937,18 @@ def _solve(
         checks["nut_thread_stripping"] = (f_strip == f_strip, f_strip >= f_s_max)
 
     # R9 alternating stress -----------------------------------------------------------------------
-    sigma_a = jt.stress_amplitude(phi_n, f_a, f_a_min, a_s)
+    phi_b = phi_n
+    if eccentric:
+        phi_b = jt.eccentric_stress_factor(
+            phi_n, lever, s_sym, beta_p, beta_s, b["stress_diameter"]
+        )
+    sigma_a = jt.stress_amplitude(phi_b, f_a, f_a_min, a_s)
     f_sm = jt.mean_bolt_force(fm_max, phi_n, f_a, f_a_min)
     sigma_as = jt.endurance_limit(d, str(x["rolling"]), f_sm, a_s * yield_strength)
     s_d = jt.fatigue_safety(sigma_as, sigma_a)
     checks["R9_fatigue"] = (sigma_a > 0.0, s_d >= 1.2)
+    # §5.3.2: σ_SAb and Φ*_en hold while the interface stays closed (F_A ≤ F_Aab at F_M,min)
+    checks["opening_limit"] = (eccentric, f_a <= fa_sep * (1.0 + 1e-12))
 
     # R12 slipping -----------------------------------------------------------------------
     s_g = jt.slip_safety(f_kr_min, q_f, mu_t, f_q)
@@ -858,6 +971,12 @@ def _solve(
         "bolt_compliance_free_thread": bolt_c.free_thread,
         "bolt_compliance_engaged": bolt_c.engaged,
         "clamped_compliance": delta_p,
+        "eccentric_clamped_compliance": delta_p1,
+        "substitute_bending_inertia": i_bers,
+        "clamped_bending_compliance": beta_p if eccentric else math.nan,
+        "bolt_bending_compliance": beta_s,
+        "opening_clamp_force": f_ka,
+        "additional_bolt_stress": jt.additional_bolt_stress(phi_b, f_a, a_s),
         "cone_tangent": parts.tangent,
         "cone_limit_diameter": parts.limit_diameter,
         "outer_diameter_used": parts.outer_diameter,
@@ -1045,6 +1164,9 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     values: dict[str, Any] = {name: s[name] for name in _SCALARS}
     if not math.isfinite(values["nut_stripping_force"]):
         del values["nut_stripping_force"]  # the nut pairs with the bolt, or there is none
+    for name in _ECCENTRIC_ONLY:
+        if not math.isfinite(values[name]):
+            del values[name]  # a concentric joint: no interface given
     for name in ("tightening_factor", "fatigue_safety", "slip_safety"):
         if not math.isfinite(values[name]):
             values[name] = None
@@ -1153,6 +1275,19 @@ def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[s
         f"({why}); VDI 2230 R7 instead limits the equivalent stress to ν R_p0.2 (ν = {nu:g}), "
         "which allows more",
     }
+    if s["_checks"]["opening_limit"][0]:
+        opens_ok = bool(s["_checks"]["opening_limit"][1])
+        out["opening_limit"] = (
+            f"F_A = {_kn(f_a)} vs the opening limit F_Aab = {_kn(s['separation_load'])} at "
+            f"F_M,min (Φ*_en = {s['load_factor']:.4g}, F_KA = {_kn(s['opening_clamp_force'])}, "
+            "VDI 2230-1 §5.3.2)"
+            + (
+                ""
+                if opens_ok
+                else ": the interface opens at its edge, where Φ*_en and σ_SAb no longer hold "
+                "(VDI's nonlinear range); raise the preload or bring the bolt nearer the load"
+            )
+        )
     nut, f_nut, f_mzul_bolt, _ = s["_nut"]
     if "nut_strength" in s["_checks"]:
         out["nut_strength"] = nut_strength_text(
@@ -1244,7 +1379,11 @@ def _f(name: str, desc: str, **kw: Any) -> Output:
 
 JOINT_OUTPUTS: tuple[Output, ...] = (
     Output("tightening_factor", "1", "R1: α_A = F_M,max/F_M,min (method, given, or torque box)"),
-    _f("required_clamp_force", "R2: F_K,erf = max(F_KQ, F_KP)"),
+    _f("required_clamp_force", "R2: F_K,erf = max(F_KQ, F_KP + F_KA)"),
+    _f(
+        "opening_clamp_force",
+        "R2: F_KA = F_A (a − s_sym) u/(I_BT/A_D + s_sym u), not below 0 (0 concentric)",
+    ),
     _f("transverse_clamp_force", "R2: F_KQ = F_Q/(q_F μ_T,min)"),
     Output("bolt_compliance", "m/N", "R3: δ_S, head + shank + free thread + engaged thread + nut"),
     Output("bolt_compliance_head", "m/N", "R3: δ_SK = l_SK/(E_S A_N), l_SK = 0.5 d / 0.4 d"),
@@ -1256,12 +1395,37 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
         "R3: δ_GM = 0.5 d/(E_S A_d3) + l_M/(E_M A_N), l_M = 0.4 d (nut) / 0.33 d (tapped)",
     ),
     Output("clamped_compliance", "m/N", "R3: δ_P, deformation cone and sleeve, plate by plate"),
+    Output(
+        "eccentric_clamped_compliance",
+        "m/N",
+        "R3 §5.3.2: δ*_P = δ_P + s_sym² β_P (δ_P for a concentric joint)",
+    ),
+    Output(
+        "substitute_bending_inertia",
+        "m^4",
+        "R3 §5.3.2: I_Bers of cone (Steiner-shifted by s_sym) and sleeve b c_T³/12 in series "
+        "(null without the interface)",
+    ),
+    Output(
+        "clamped_bending_compliance",
+        "1/(N*m)",
+        "R3 §5.3.2: β_P = Σ h_i/E_i / I_Bers (null without the interface)",
+    ),
+    Output(
+        "bolt_bending_compliance",
+        "1/(N*m)",
+        "R9 §5.1.1.2: β_S = Σ l_i/(E I_i) over the bolt's sections (null without the interface)",
+    ),
     Output("cone_tangent", "1", "R3: tan φ of the deformation cone (VDI fit)"),
     Output("cone_limit_diameter", "m", "R3: D_A,Gr = d_W + w l_K tan φ", display_unit="mm"),
     Output("outer_diameter_used", "m", "R3: D_A used", display_unit="mm"),
     Output("grip", "m", "R3: clamp length l_K = Σ h_i", display_unit="mm"),
     Output("load_factor_k", "1", "R3: Φ_K = δ_P/(δ_S + δ_P) (load under head and nut)"),
-    Output("load_factor", "1", "R3: Φ_n = n Φ_K"),
+    Output(
+        "load_factor",
+        "1",
+        "R3: Φ_n = n Φ_K; eccentric: Φ*_en = n δ**_P/(δ_S + δ*_P), δ**_P = δ_P + a s_sym β_P",
+    ),
     _f("additional_bolt_load", "R3/R8: F_SA = Φ_n F_A,max"),
     _f("clamp_load_reduction", "R3: F_PA = (1 − Φ_n) F_A,max"),
     Output("embedding_settlement", "m", "R4: f_Z from the VDI table", display_unit="mm"),
@@ -1286,13 +1450,27 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
         "residual_clamp_force_min",
         "R12: F_KR,min = F_M,min − (1 − Φ_n) F_A − F_Z − ΔF_th, 0 where the joint opens",
     ),
-    _f("separation_load", "R5/R12: F_A at which the joint opens from the lowest assembly preload"),
+    _f(
+        "separation_load",
+        "R5/R12: F_A at which the joint opens from the lowest assembly preload; eccentric: the "
+        "opening limit F_Aab = F_V/(1 − Φ*_en + F_KA/F_A)",
+    ),
     _f("max_working_load", "R5–R7: largest F_A whose required window fits under F_M,zul"),
     _f("max_bolt_force", "R8: F_S,max = F_M,max + Φ_n F_A,max"),
     Output("working_stress", "Pa", "R8: σ_red,B (k_τ = 0.5)", display_unit="MPa"),
     Output("yield_safety", "1", "R8: S_F = R_p0.2/σ_red,B"),
     Output(
-        "stress_amplitude", "Pa", "R9: σ_a = Φ_n (F_A,max − F_A,min)/(2 A_S)", display_unit="MPa"
+        "stress_amplitude",
+        "Pa",
+        "R9: σ_a = Φ_n (F_A,max − F_A,min)/(2 A_S); eccentric: σ_ab = (σ_SAbo − σ_SAbu)/2",
+        display_unit="MPa",
+    ),
+    Output(
+        "additional_bolt_stress",
+        "Pa",
+        "R9: σ_SAb = Φ_b F_A,max/A_S, Φ_b = Φ*_en + (a − s_sym Φ*_en)(β_P/β_S)(A_S/W_S) with the "
+        "bending (σ_SA = Φ_n F_A/A_S concentric)",
+        display_unit="MPa",
     ),
     Output("endurance_limit", "Pa", "R9: σ_ASV or σ_ASG", display_unit="MPa"),
     Output("fatigue_safety", "1", "R9: S_D = σ_AS/σ_a (null for static load)"),
@@ -1394,6 +1572,13 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
 
 #: The scalar outputs, in declaration order.
 _SCALARS: tuple[str, ...] = tuple(o.name for o in JOINT_OUTPUTS if not o.series)
+
+#: Outputs only an eccentric joint (interface given) has.
+_ECCENTRIC_ONLY = (
+    "substitute_bending_inertia",
+    "clamped_bending_compliance",
+    "bolt_bending_compliance",
+)
 
 # --------------------------------------------------------------------------- array path
 #

@@ -2484,3 +2484,35 @@ def eccentric_stress_factor(
     return load_factor_en + (load_lever - bolt_offset * load_factor_en) * (
         clamped_bending / bolt_bending
     ) * (8.0 / stress_diameter)
+
+
+def additional_bolt_stress(stress_factor: float, working_load: float, stress_area: float) -> float:
+    r"""Additional stress in the bolt's thread under the working load, bending included.
+
+    .. math::
+        \sigma_{SAb} = \Phi_b \frac{F_{A,max}}{A_S}
+
+    Parameters
+    ----------
+    stress_factor : float
+        Φ_b from :func:`eccentric_stress_factor` (Φ_n for a concentric joint), [-]
+    working_load : float
+        F_A,max, [N]
+    stress_area : float
+        A_S, [m^2]
+
+    Returns
+    -------
+    float
+        σ_SAb (σ_SA = Φ_n F_A/A_S concentric), [Pa]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R9 (σ_SAbo at F_A,max, valid up to the opening limit F_Aab).
+
+    Examples
+    --------
+    >>> round(additional_bolt_stress(0.2587, 8e3, 84.27e-6) / 1e6, 2)
+    24.56
+    """
+    return stress_factor * working_load / stress_area
