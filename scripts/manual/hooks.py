@@ -53,6 +53,7 @@ VALIDATION: dict[str, tuple[str, ...]] = {
     "preload.control": ("test_preload_vdi2230.py", "test_fasteners_standards.py"),
     "joint.vdi2230": (
         "test_joint_compliance.py",
+        "test_joint_eccentric.py",
         "test_preload_vdi2230_coarse.py",
         "test_iso898_loads.py",
         "test_fasteners_standards.py",
