@@ -270,9 +270,22 @@ def bolt_bending_compliance(
 
     Parameters
     ----------
-    diameter, minor_diameter, youngs_modulus, sections, free_thread_length, head, joint, \
-nut_youngs_modulus
-        As :func:`bolt_compliance`
+    diameter : float
+        Nominal diameter d, [m]
+    minor_diameter : float
+        Minor diameter d3, [m]
+    youngs_modulus : float
+        E_S of the bolt, [Pa]
+    sections : sequence of (float, float)
+        (length l_i [m], diameter d_i [m]) of the plain and reduced shank sections
+    free_thread_length : float
+        l_Gew, [m]
+    head : str
+        ``"hex"`` or ``"socket"``
+    joint : str
+        ``"through"`` or ``"tapped"``
+    nut_youngs_modulus : float, optional
+        E_M of the nut or the tapped part; E_S when None, [Pa]
 
     Returns
     -------
