@@ -16,6 +16,7 @@ from ..core.spec import ModelSpec
 from .blow import BLOW
 from .capability import CAPABILITY as TOOL_CAPABILITY
 from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
+from .flange import FLANGE as JOINT_FLANGE
 from .friction import ISO16047 as FRICTION_ISO16047
 from .joint import VDI2230 as JOINT_VDI2230
 from .nutrunner import NUTRUNNER_DRIVE
@@ -31,6 +32,7 @@ MODELS: tuple[ModelSpec, ...] = (
     PRELOAD_TIGHTENING,
     PRELOAD_CONTROL,
     JOINT_VDI2230,
+    JOINT_FLANGE,
     BLOW,
     TOOL_CAPABILITY,
     FRICTION_ISO16047,

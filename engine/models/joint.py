@@ -1886,8 +1886,10 @@ VDI2230 = ModelSpec(
     assumptions=(
         "VDI 2230-1's text was not available to us: its relations as reproduced in "
         "ECSS-E-HB-32-23A and implemented in misams/BAT (docs/sources.md)",
-        "concentric clamping and loading (no bending, Φ_en = Φ_n); the nut's bearing face as "
-        "large as the head's",
+        "concentric clamping and loading unless bolt_offset, load_lever or opening_edge is "
+        "given with the interface (then VDI 2230-1 §5.3.2's linear eccentric relations, valid "
+        "while the interface stays closed, F_A ≤ F_Aab); the nut's bearing face as large as "
+        "the head's",
     ),
     examples=(
         # M12 8.8 through 2 × 20 mm steel, 8 kN alternating 0…8 kN, 2 kN transverse

@@ -2530,3 +2530,92 @@ def additional_bolt_stress(stress_factor: float, working_load: float, stress_are
     24.56
     """
     return stress_factor * working_load / stress_area
+
+
+# --------------------------------------------------------------------------- many bolts
+
+
+def ring_flange_axial_load(
+    axial_force: float, bending_moment: float, bolts: int, circle_diameter: float
+) -> float:
+    r"""Working load of the most loaded bolt of a rigid ring flange of z equal bolts.
+
+    .. math::
+        F_{A,max} = \frac{F_{ax}}{z} + \frac{4\,M_B}{z\,D_t}
+
+    Parameters
+    ----------
+    axial_force : float
+        F_ax, the flange's axial (opening) force, [N]
+    bending_moment : float
+        M_B, the bending moment on the flange about a diameter, [N*m]
+    bolts : int
+        z, equally spaced on the bolt circle (≥ 3), [1]
+    circle_diameter : float
+        D_t, the bolt circle diameter, [m]
+
+    Returns
+    -------
+    float
+        F_A of the bolt farthest from the bending axis, [N]
+
+    Notes
+    -----
+    VDI 2230-1:2015 §3.1 (the single-bolt joint cut from a multi-bolt joint, the
+    simplification of VDI 2230 Part 2 for rigid flanges): the interface stays
+    closed and the flanges rigid, so the bolt loads are linear in their distance
+    from the neutral axis through the circle's centre; for z ≥ 3 equally spaced
+    bolts Σ y_i² = z D_t²/8, and the load on a bolt on the bending plane is the
+    largest (a bolt half a pitch off it carries cos(π/z) of the bending share).
+    It does not hold once the interface opens (tilting about the flange's edge)
+    or for flexible flanges and gaskets (VDI 2230 Part 2's models).
+
+    Examples
+    --------
+    100 kN and 5 kN·m on 8 bolts on a 200 mm circle: 12.5 kN + 12.5 kN
+
+    >>> ring_flange_axial_load(100e3, 5e3, 8, 0.200)
+    25000.0
+    """
+    return axial_force / bolts + 4.0 * bending_moment / (bolts * circle_diameter)
+
+
+def ring_flange_transverse_load(
+    transverse_force: float, torque: float, bolts: int, circle_diameter: float
+) -> float:
+    r"""Transverse load per bolt of a ring flange under a shear force and a torque.
+
+    .. math::
+        F_{Q,max} = \frac{F_Q}{z} + \frac{2\,M_T}{z\,D_t}
+
+    Parameters
+    ----------
+    transverse_force : float
+        F_Q, the flange's shear force, [N]
+    torque : float
+        M_T, the torque about the flange's axis, [N*m]
+    bolts : int
+        z, [1]
+    circle_diameter : float
+        D_t, [m]
+
+    Returns
+    -------
+    float
+        F_Q per bolt, the torque's share tangential and the shear force's added
+        to it at the bolt where both point the same way, [N]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R2 (F_KQ from the transverse load per bolt; a torque on a
+    bolt circle is carried by friction at radius D_t/2, equally by every bolt) with
+    the same rigid-flange simplification as :func:`ring_flange_axial_load`.
+
+    Examples
+    --------
+    2 kN·m on 8 bolts on a 200 mm circle, no shear force: 2 × 2000/(8 × 0.2)
+
+    >>> ring_flange_transverse_load(0.0, 2e3, 8, 0.200)
+    2500.0
+    """
+    return transverse_force / bolts + 2.0 * torque / (bolts * circle_diameter)
