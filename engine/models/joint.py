@@ -304,6 +304,35 @@ JOINT_INPUTS: tuple[Param, ...] = (
         group="loads",
     ),
     Param(
+        "torsional_moment",
+        "N*m",
+        "Torsional moment M_Y,max about the bolt axis carried by interface friction (VDI "
+        "2230-1 R2/R12); needs friction_radius",
+        default=0.0,
+        minimum=0.0,
+        maximum=1e7,
+        symbol="M_Y",
+        group="loads",
+    ),
+    Param(
+        "torque_interfaces",
+        "1",
+        "Number q_M of interfaces that carry the torsional moment",
+        default=1,
+        kind="int",
+        minimum=1,
+        maximum=20,
+        group="loads",
+    ),
+    _length(
+        "friction_radius",
+        "Friction radius r_a of the interface for the torsional moment (needed with M_Y > 0)",
+        minimum=0.0,
+        exclusive_minimum=True,
+        symbol="r_a",
+        group="loads",
+    ),
+    Param(
         "interface_friction",
         "1",
         "Smallest interface friction coefficient μ_T,min (VDI 2230-1 Table A6: 0.1…0.2 dry steel)",
@@ -790,7 +819,17 @@ def _solve(
 
     # R2 required clamp force (the opening requirement F_KA once F_A is read) --------------------
     f_q, q_f, mu_t = col("transverse_load"), col("slip_interfaces"), col("interface_friction")
-    f_kq = jt.transverse_clamp_force(f_q, q_f, mu_t)
+    m_y, q_m = col("torsional_moment"), col("torque_interfaces")
+    if x.get("friction_radius") is None:
+        r_a: Any = 1.0  # unused: M_Y must be 0 then
+        refusals.add(
+            m_y > 0.0,
+            "friction_radius",
+            lambda: f"torsional_moment = {m_y:g} N*m needs friction_radius r_a (> 0 mm)",
+        )
+    else:
+        r_a = col("friction_radius")
+    f_kq = jt.transverse_clamp_force(f_q, q_f, mu_t, m_y, q_m, r_a)
     f_kp = col("sealing_clamp_force")
     f_kerf_grip = jt.required_clamp_force(f_kq, f_kp)
 
@@ -826,7 +865,8 @@ def _solve(
 
     # R4 embedding --------------------------------------------------------------------------------
     faces, interfaces = jt.embedding_locations(joint_type, plates)
-    f_z_len = jt.embedding_for_load(str(x["surface_roughness"]), f_q, faces, interfaces)
+    # the transverse column of Table 5.4/1 wherever the interfaces carry shear (F_Q or M_Y)
+    f_z_len = jt.embedding_for_load(str(x["surface_roughness"]), f_kq, faces, interfaces)
     f_z = jt.embedding_loss(f_z_len, delta_s, delta_p1)
 
     # R7 permissible preload at the smallest section ---------------------------------------------
@@ -951,9 +991,9 @@ def _solve(
     checks["opening_limit"] = (eccentric, f_a <= fa_sep * (1.0 + 1e-12))
 
     # R12 slipping -----------------------------------------------------------------------
-    s_g = jt.slip_safety(f_kr_min, q_f, mu_t, f_q)
+    s_g = jt.slip_safety(f_kr_min, q_f, mu_t, f_q, m_y, q_m, r_a)
     need = jt.required_slip_safety(f_a, f_a_min)
-    checks["R12_slip"] = (f_q > 0.0, s_g >= need)
+    checks["R12_slip"] = ((f_q > 0.0) | (m_y > 0.0), s_g >= need)
 
     # [004] rules and the tightening targets [004, eq. 6–9] ----------------------------------------
     nominal = jt.nominal_preload(fm_min, fm_max)
@@ -1194,7 +1234,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 "lower one): take σ_AS from the bolt's maker or a fatigue test"
             )
     if values["slip_safety"] is None:
-        notes.append("no transverse load: slip_safety null (R12)")
+        notes.append("no transverse load or torsional moment: slip_safety null (R12)")
     if s["_f_kr_raw"] < 0.0:
         warnings.append(
             f"the joint opens: F_A = {_kn(float(x['working_load']))} exceeds the separation "
@@ -1268,7 +1308,8 @@ def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[s
         "R9_fatigue": "σ_a = Φ_n (F_A,max − F_A,min)/(2 A_S) = "
         f"{s['stress_amplitude'] / 1e6:.3g} MPa vs σ_AS = {s['endurance_limit'] / 1e6:.3g} MPa: "
         f"S_D = {s['fatigue_safety']:.3g} (VDI asks ≥ 1.2)",
-        "R12_slip": f"S_G = F_KR,min q_F μ_T / F_Q = {s['slip_safety']:.3g} (VDI asks ≥ {need:g} "
+        "R12_slip": "S_G = F_KR,min q_F μ_T / (F_Q + M_Y q_F/(q_M r_a)) = "
+        f"{s['slip_safety']:.3g} (VDI asks ≥ {need:g} "
         f"for {'alternating' if need > 1.2 else 'static'} load)",
         "seed_004_preload_stress": f"σ0 = F_M,nom/A_0 = {sigma0 / 1e6:.4g} MPa = "
         f"{s['preload_stress_ratio']:.2f} σ_T; [004, eq. 6] allows {lo_rule:g}…{hi_rule:g} σ_T "
@@ -1384,7 +1425,7 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
         "opening_clamp_force",
         "R2: F_KA = F_A (a − s_sym) u/(I_BT/A_D + s_sym u), not below 0 (0 concentric)",
     ),
-    _f("transverse_clamp_force", "R2: F_KQ = F_Q/(q_F μ_T,min)"),
+    _f("transverse_clamp_force", "R2: F_KQ = F_Q/(q_F μ_T,min) + M_Y/(q_M r_a μ_T,min)"),
     Output("bolt_compliance", "m/N", "R3: δ_S, head + shank + free thread + engaged thread + nut"),
     Output("bolt_compliance_head", "m/N", "R3: δ_SK = l_SK/(E_S A_N), l_SK = 0.5 d / 0.4 d"),
     Output("bolt_compliance_shank", "m/N", "R3: Σ l_i/(E_S A_i) of the plain and reduced shank"),
@@ -1475,7 +1516,10 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
     Output("endurance_limit", "Pa", "R9: σ_ASV or σ_ASG", display_unit="MPa"),
     Output("fatigue_safety", "1", "R9: S_D = σ_AS/σ_a (null for static load)"),
     Output(
-        "slip_safety", "1", "R12: S_G = F_KR,min q_F μ_T/F_Q (null without F_Q; 0 where it opens)"
+        "slip_safety",
+        "1",
+        "R12: S_G = F_KR,min q_F μ_T/(F_Q + M_Y q_F/(q_M r_a)) (null without F_Q and M_Y; 0 "
+        "where it opens)",
     ),
     Output("preload_stress_ratio", "1", "[004, eq. 6]: σ0/σ_T at the nominal preload, on A_0"),
     Output("bolt_elongation", "m", "[004, eq. 7]: F_M,nom δ_S", display_unit="mm"),

@@ -846,11 +846,18 @@ def thermal_preload_loss(
     return preload * (1.0 - (bolt + clamped) / denominator) + mismatch / denominator
 
 
-def transverse_clamp_force(transverse_load: float, interfaces: int, slip_friction: float) -> float:
-    r"""Clamp force that carries a transverse load by friction.
+def transverse_clamp_force(
+    transverse_load: float,
+    interfaces: int,
+    slip_friction: float,
+    torsional_moment: float = 0.0,
+    torque_interfaces: int = 1,
+    friction_radius: float = 1.0,
+) -> float:
+    r"""Clamp force that carries a transverse load and a torsional moment by friction.
 
     .. math::
-        F_{KQ} = \frac{F_{Q,max}}{q_F\,\mu_{T,min}}
+        F_{KQ} = \frac{F_{Q,max}}{q_F\,\mu_{T,min}} + \frac{M_{Y,max}}{q_M\,r_a\,\mu_{T,min}}
 
     Parameters
     ----------
@@ -860,6 +867,12 @@ def transverse_clamp_force(transverse_load: float, interfaces: int, slip_frictio
         q_F, the number of interfaces that transmit it, [-]
     slip_friction : float
         μ_T,min, the interface friction coefficient, [-]
+    torsional_moment : float
+        M_Y,max, a torsional moment about the bolt axis the interfaces carry, [N*m]
+    torque_interfaces : int
+        q_M, the number of interfaces that carry M_Y, [-]
+    friction_radius : float
+        r_a, the interface's friction radius for M_Y, [m]
 
     Returns
     -------
@@ -868,15 +881,21 @@ def transverse_clamp_force(transverse_load: float, interfaces: int, slip_frictio
 
     Notes
     -----
-    VDI 2230-1:2015 step R2, eq. (R2/1) without torsion; ECSS-E-HB-32-23A
-    eq. 8.2.2.
+    VDI 2230-1:2015 step R2, eq. (R2/1); ECSS-E-HB-32-23A eq. 8.2.2 for the
+    transverse part. With M_Y = 0 it is F_Q/(q_F μ_T) to the bit.
 
     Examples
     --------
     >>> transverse_clamp_force(3000.0, 1, 0.15)
     20000.0
+
+    Plus 30 N·m at r_a = 20 mm on one interface: 30/(0.02 × 0.15) = 10 kN more
+
+    >>> round(transverse_clamp_force(3000.0, 1, 0.15, 30.0, 1, 0.020), 6)
+    30000.0
     """
-    return transverse_load / (interfaces * slip_friction)
+    friction = transverse_load / (interfaces * slip_friction)
+    return friction + torsional_moment / (torque_interfaces * friction_radius * slip_friction)
 
 
 def minimum_assembly_preload(
@@ -1917,11 +1936,14 @@ def slip_safety(
     slip_interfaces: int,
     interface_friction: float,
     transverse_load: float,
+    torsional_moment: float = 0.0,
+    torque_interfaces: int = 1,
+    friction_radius: float = 1.0,
 ) -> float:
     r"""Safety of the interfaces against slipping; infinite without a transverse load.
 
     .. math::
-        S_G = \frac{F_{KR,min}\, q_F\, \mu_{T,min}}{F_{Q,max}}
+        S_G = \frac{F_{KR,min}\, q_F\, \mu_{T,min}}{F_{Q,max} + M_{Y,max}\,q_F/(q_M r_a)}
 
     All arguments may be floats or numpy arrays of one shape.
 
@@ -1935,6 +1957,12 @@ def slip_safety(
         μ_T,min, [1]
     transverse_load : float
         F_Q,max, [N]
+    torsional_moment : float
+        M_Y,max about the bolt axis, [N*m]
+    torque_interfaces : int
+        q_M, [1]
+    friction_radius : float
+        r_a, [m]
 
     Returns
     -------
@@ -1943,17 +1971,26 @@ def slip_safety(
 
     Notes
     -----
-    VDI 2230-1:2015 step R12, eq. (R12/2).
+    VDI 2230-1:2015 step R12, eq. (R12/2): F_KR,min over the F_KQ of
+    :func:`transverse_clamp_force`, the torsional moment as the transverse load
+    it equals on the q_F interfaces. Without M_Y it is F_KR q_F μ_T/F_Q to the bit.
 
     Examples
     --------
     >>> round(slip_safety(20e3, 1, 0.15, 2e3), 3)
     1.5
+
+    Plus 30 N·m at r_a = 20 mm: 3000/(2000 + 1500)
+
+    >>> round(slip_safety(20e3, 1, 0.15, 2e3, 30.0, 1, 0.020), 4)
+    0.8571
     """
+    torsion = torsional_moment * slip_interfaces / (torque_interfaces * friction_radius)
+    demand = transverse_load + torsion
     return _quotient(
-        transverse_load > 0.0,
+        demand > 0.0,
         residual_clamp_force * slip_interfaces * interface_friction,
-        transverse_load,
+        demand,
         math.inf,
     )
 
