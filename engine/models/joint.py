@@ -705,12 +705,12 @@ def _solve(
     outer = None if x.get("outer_diameter") is None else col("outer_diameter")
     if outer is not None:
         refusals.add(
-            outer < d_w * (1.0 - 1e-12),
+            outer <= d_h,
             "outer_diameter",
             lambda: (
-                f"outer_diameter D_A = {outer * 1e3:g} mm is smaller than the bearing "
-                f"diameter d_W = {d_w * 1e3:g} mm: must be ≥ {d_w * 1e3:g} mm (D_A = d_W is the "
-                "sleeve)"
+                f"outer_diameter D_A = {outer * 1e3:g} mm leaves no wall around the hole "
+                f"d_h = {d_h * 1e3:g} mm: must be > {d_h * 1e3:g} mm (D_A ≤ d_W = "
+                f"{d_w * 1e3:g} mm is VDI's sleeve)"
             ),
         )
     l_shank, l_reduced = col("shank_length"), col("reduced_length")
@@ -1110,6 +1110,16 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"D_A not given: plates taken just wide enough for the full cone, D_A = D_A,Gr = "
             f"{s['outer_diameter_used'] * 1e3:.4g} mm (our convention; VDI's cone-angle fit "
             "needs a D_A); a wider plate is stiffer by that fit"
+        )
+    if (
+        x.get("outer_diameter") is not None
+        and float(x["outer_diameter"]) < bolt.bearing_outer_diameter
+    ):
+        warnings.append(
+            f"D_A = {float(x['outer_diameter']) * 1e3:.4g} mm < d_W = "
+            f"{bolt.bearing_outer_diameter * 1e3:.4g} mm: the plates are VDI's sleeve "
+            "(δ_P = 4 l_K/(E π (D_A² − d_h²))); the head bears on the sleeve's face only, so "
+            "the surface pressure (R10), computed on d_W, is higher than stated"
         )
     if s["cone_tangent"] <= jt.MIN_CONE_TANGENT:
         warnings.append(

@@ -574,8 +574,8 @@ def clamped_compliance(
             {(d_W - d_h)(d_W + w l_K\tan\varphi + d_h)}\right]}{w\,E_P\,\pi\,d_h\tan\varphi}
 
     and for d_W < D_A < D_A,Gr the cone part up to D_A plus a sleeve of length
-    l_K − (D_A − d_W)/(w tan φ); D_A → d_W leaves the sleeve
-    4 l_K / (E_P π (d_W² − d_h²)).
+    l_K − (D_A − d_W)/(w tan φ); D_A ≤ d_W leaves the sleeve
+    4 l_K / (E_P π (D_A² − d_h²)) (VDI 2230-1 R3, d_h < D_A ≤ d_W).
 
     Parameters
     ----------
@@ -624,7 +624,7 @@ def clamped_compliance(
     if outer_diameter is None:
         outer = unlimited_outer_diameter(grip, bearing_diameter, joint)
     else:
-        outer = _max(outer_diameter, bearing_diameter)
+        outer = outer_diameter  # below d_W: VDI's sleeve, no cone (the cap lies behind z = 0)
     tan = cone_tangent(grip, bearing_diameter, outer, joint) if tangent is None else tangent
     limit = cone_limit_diameter(grip, bearing_diameter, tan, joint)
     per_plate = []
@@ -2277,7 +2277,7 @@ def substitute_bending_inertia(
         cone_diameter
     )
     sleeve = interface_width * interface_length**3 / 12.0
-    cone_length = (cone_diameter - bearing_diameter) / (2.0 * tangent)
+    cone_length = _max((cone_diameter - bearing_diameter) / (2.0 * tangent), 0.0)  # 0: a sleeve
     sleeve_length = _max(grip - 2.0 * cone_length / w, 0.0)
     return grip / (2.0 * cone_length / (w * cone) + sleeve_length / sleeve)
 
