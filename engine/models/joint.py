@@ -1380,7 +1380,7 @@ def _series(ctx: RunContext, s: Mapping[str, Any], x: Mapping[str, Any]) -> dict
     f_a, phi_n, f_z = float(x["working_load"]), s["load_factor"], s["embedding_loss"]
     if ctx.wants(*_DIAGRAM):
         diagram = jt.joint_diagram(
-            fm_min, s["bolt_compliance"], s["clamped_compliance"], f_a, phi_n, f_z
+            fm_min, s["bolt_compliance"], s["eccentric_clamped_compliance"], f_a, phi_n, f_z
         )
         series.update({f"diagram_{k}": v for k, v in diagram.items()})
     if ctx.wants(*_WINDOW):
@@ -1412,6 +1412,10 @@ _DIAGRAM = tuple(
         "service_preload_level",
         "working_bolt_force_level",
         "residual_clamp_level",
+        "working_deformation",
+        "working_force",
+        "opening_deformation",
+        "opening_force",
     )
 )
 _WINDOW = (
@@ -1595,6 +1599,32 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
         "Joint diagram: residual clamp force F_V − (1 − Φ_n) F_A",
         series=True,
         x="diagram_deformation",
+    ),
+    Output(
+        "diagram_working_deformation",
+        "m",
+        "Joint diagram: the working point's deformation f_SV + Φ_n F_A δ_S (2 points)",
+        series=True,
+        display_unit="mm",
+    ),
+    _f(
+        "diagram_working_force",
+        "Joint diagram: F_A at the working point, from F_KR up to F_S (VDI's split by Φ_n)",
+        series=True,
+        x="diagram_working_deformation",
+    ),
+    Output(
+        "diagram_opening_deformation",
+        "m",
+        "Joint diagram: where the joint separates, at F_A = F_V/(1 − Φ_n) (2 points)",
+        series=True,
+        display_unit="mm",
+    ),
+    _f(
+        "diagram_opening_force",
+        "Joint diagram: the bolt force at separation, from 0 up (F_KR = 0)",
+        series=True,
+        x="diagram_opening_deformation",
     ),
     _f("window_working_load", "Preload window: F_A axis", series=True),
     _f(

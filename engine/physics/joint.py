@@ -2131,7 +2131,11 @@ def joint_diagram(
         ``service_preload_level`` (F_V), ``working_bolt_force_level``
         (F_V + Φ_n F_A) and ``residual_clamp_level`` (F_V − (1 − Φ_n) F_A,
         not below 0). The lines are clipped to 0…1.2 × the largest level so
-        they stay on the plot.
+        they stay on the plot. Two segments of two points each, as VDI draws
+        them: ``working_deformation``/``working_force``, F_A split by Φ_n at the
+        working point f_SV + Φ_n F_A δ_S (from F_KR up to F_S), and
+        ``opening_deformation``/``opening_force``, the same at the separation load
+        F_V/(1 − Φ_n) (from 0 up to the bolt force there; empty where Φ_n ≥ 1).
 
     Notes
     -----
@@ -2144,6 +2148,14 @@ def joint_diagram(
     >>> d = joint_diagram(30e3, 3e-9, 1e-9, 10e3, 0.25, 2e3)
     >>> d["bolt_line"][-1], d["clamped_line"][-1], d["working_bolt_force_level"][0]
     (36600.0, 0.0, 30500.0)
+
+    F_A = 10 kN from 20.5 kN (F_KR) up to 30.5 kN (F_S) at 84 + 7.5 µm; the joint separates
+    at F_V/(1 − Φ_n) = 37.33 kN, where the bolt carries 37.33 kN:
+
+    >>> [round(v * 1e6, 3) for v in d["working_deformation"]], d["working_force"]
+    ([91.5, 91.5], [20500.0, 30500.0])
+    >>> [round(v, 1) for v in d["opening_force"]]
+    [0.0, 37333.3]
     """
     f_sm = preload * bolt
     f_end = f_sm + preload * clamped
@@ -2157,7 +2169,19 @@ def joint_diagram(
         return min(max(v, 0.0), top)
 
     xs = [f_end * i / (points - 1) for i in range(points)]
+    f_work = f_sv + load_factor_n * working_load * bolt
+    opening: dict[str, list[float]] = {"opening_deformation": [], "opening_force": []}
+    if load_factor_n < 1.0:
+        f_sep = max(service, 0.0) / (1.0 - load_factor_n)
+        top_sep = service + load_factor_n * f_sep
+        opening = {
+            "opening_deformation": [f_sv + load_factor_n * f_sep * bolt] * 2,
+            "opening_force": [0.0, top_sep],
+        }
     return {
+        "working_deformation": [f_work, f_work],
+        "working_force": [service - (1.0 - load_factor_n) * working_load, bolt_force],
+        **opening,
         "deformation": xs,
         "bolt_line": [clip(x / bolt) for x in xs],
         "clamped_line": [clip(preload - (x - f_sm) / clamped) for x in xs],
