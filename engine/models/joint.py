@@ -303,6 +303,16 @@ JOINT_INPUTS: tuple[Param, ...] = (
         maximum=20,
         group="loads",
     ),
+    _length(
+        "fitted_diameter",
+        "Fitted bolt: diameter d_τ of the fitted shank that carries F_Q in shear and bearing "
+        "(VDI 2230-1 R12); absent: the interfaces carry F_Q by friction alone",
+        minimum=0.0,
+        exclusive_minimum=True,
+        maximum=1.0,
+        symbol="d_τ",
+        group="loads",
+    ),
     Param(
         "torsional_moment",
         "N*m",
@@ -992,6 +1002,19 @@ def _solve(
 
     # R12 slipping -----------------------------------------------------------------------
     s_g = jt.slip_safety(f_kr_min, q_f, mu_t, f_q, m_y, q_m, r_a)
+    tau_q: Any = math.nan
+    s_a: Any = math.nan
+    p_q: Any = math.nan
+    if x.get("fitted_diameter") is not None:
+        d_tau = col("fitted_diameter")
+        h_min: Any = math.inf
+        for h in thick:
+            h_min = _pick(h > 0.0, _pick(h < h_min, h, h_min), h_min)
+        r_m = b.get("tensile_strength")
+        tau_q = jt.fitted_shank_shear_stress(f_q, q_f, d_tau)
+        s_a = jt.fitted_shear_safety(math.nan if r_m is None else r_m, tau_q)
+        p_q = jt.fitted_bearing_pressure(f_q, d_tau, h_min)
+        checks["R12_fitted_shear"] = ((f_q > 0.0) & (s_a == s_a), s_a >= 1.1)
     need = jt.required_slip_safety(f_a, f_a_min)
     checks["R12_slip"] = ((f_q > 0.0) | (m_y > 0.0), s_g >= need)
 
@@ -1047,6 +1070,9 @@ def _solve(
         "endurance_limit": sigma_as,
         "fatigue_safety": s_d,
         "slip_safety": s_g,
+        "fitted_shear_stress": tau_q,
+        "fitted_shear_safety": s_a,
+        "fitted_bearing_pressure": p_q,
         "preload_stress_ratio": ratio0,
         "bolt_elongation": pl.elongation(nominal, delta_s),
         "target_angle": pl.nut_rotation_angle(nominal, delta_s + delta_p, pitch),
@@ -1214,9 +1240,9 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     values: dict[str, Any] = {name: s[name] for name in _SCALARS}
     if not math.isfinite(values["nut_stripping_force"]):
         del values["nut_stripping_force"]  # the nut pairs with the bolt, or there is none
-    for name in _ECCENTRIC_ONLY:
+    for name in _GIVEN_ONLY:
         if not math.isfinite(values[name]):
-            del values[name]  # a concentric joint: no interface given
+            del values[name]  # a concentric joint (no interface), or no fitted shank
     for name in ("tightening_factor", "fatigue_safety", "slip_safety"):
         if not math.isfinite(values[name]):
             values[name] = None
@@ -1326,6 +1352,13 @@ def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[s
         f"({why}); VDI 2230 R7 instead limits the equivalent stress to ν R_p0.2 (ν = {nu:g}), "
         "which allows more",
     }
+    if "R12_fitted_shear" in s["_checks"] and s["_checks"]["R12_fitted_shear"][0]:
+        out["R12_fitted_shear"] = (
+            f"fitted shank: τ_Q = F_Q/(q_F A_τ) = {s['fitted_shear_stress'] / 1e6:.4g} MPa vs "
+            f"τ_B = 0.6 R_m: S_A = {s['fitted_shear_safety']:.3g} (VDI asks ≥ 1.1); bearing "
+            f"p_Q = {s['fitted_bearing_pressure'] / 1e6:.4g} MPa on the thinnest plate, to hold "
+            "against the plate's bearing strength"
+        )
     if s["_checks"]["opening_limit"][0]:
         opens_ok = bool(s["_checks"]["opening_limit"][1])
         out["opening_limit"] = (
@@ -1535,6 +1568,25 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
         "R12: S_G = F_KR,min q_F μ_T/(F_Q + M_Y q_F/(q_M r_a)) (null without F_Q and M_Y; 0 "
         "where it opens)",
     ),
+    Output(
+        "fitted_shear_stress",
+        "Pa",
+        "R12 fitted bolt: τ_Q = F_Q/(q_F π d_τ²/4) (null without fitted_diameter)",
+        display_unit="MPa",
+    ),
+    Output(
+        "fitted_shear_safety",
+        "1",
+        "R12 fitted bolt: S_A = 0.6 R_m/τ_Q, VDI asks ≥ 1.1 (null without fitted_diameter, R_m "
+        "or F_Q)",
+    ),
+    Output(
+        "fitted_bearing_pressure",
+        "Pa",
+        "R12 fitted bolt: p_Q = F_Q/(d_τ h_min) on the thinnest plate (null without "
+        "fitted_diameter)",
+        display_unit="MPa",
+    ),
     Output("preload_stress_ratio", "1", "[004, eq. 6]: σ0/σ_T at the nominal preload, on A_0"),
     Output("bolt_elongation", "m", "[004, eq. 7]: F_M,nom δ_S", display_unit="mm"),
     Output(
@@ -1657,11 +1709,15 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
 #: The scalar outputs, in declaration order.
 _SCALARS: tuple[str, ...] = tuple(o.name for o in JOINT_OUTPUTS if not o.series)
 
-#: Outputs only an eccentric joint (interface given) has.
-_ECCENTRIC_ONLY = (
+#: Outputs only an eccentric joint (interface given) or a fitted bolt has.
+_GIVEN_ONLY = (
     "substitute_bending_inertia",
     "clamped_bending_compliance",
     "bolt_bending_compliance",
+    # and the fitted bolt's, only with fitted_diameter
+    "fitted_shear_stress",
+    "fitted_shear_safety",
+    "fitted_bearing_pressure",
 )
 
 # --------------------------------------------------------------------------- array path
@@ -1676,6 +1732,7 @@ _ECCENTRIC_ONLY = (
 
 #: Bolt fields carried as arrays ([m, m², Pa]).
 _BOLT_FIELDS = (
+    "tensile_strength",
     "diameter",
     "pitch",
     "pitch_diameter",

@@ -59,6 +59,10 @@ ROUGHNESS_CLASSES: tuple[str, ...] = tuple(EMBEDDING_UM)
 #: Torsional stress share kept in service (VDI 2230-1 R8): k_τ = 0.5.
 TORSION_REDUCTION_IN_SERVICE = 0.5
 
+#: τ_B/R_m of a fitted shank in shear (VDI 2230-1 R12; the ratio the engine also takes for
+#: the bolt's thread in shear).
+SHANK_SHEAR_RATIO = 0.6
+
 #: Smallest cone tangent used: the VDI fit is not meant for plates far thinner than d_W.
 MIN_CONE_TANGENT = 0.1
 
@@ -2680,3 +2684,112 @@ def ring_flange_transverse_load(
     2500.0
     """
     return transverse_force / bolts + 2.0 * torque / (bolts * circle_diameter)
+
+
+# --------------------------------------------------------------------------- fitted bolts
+
+
+def fitted_shank_shear_stress(
+    transverse_load: float, shear_planes: int, fitted_diameter: float
+) -> float:
+    r"""Shear stress in the fitted shank of a bolt that carries the transverse load itself.
+
+    .. math::
+        \tau_Q = \frac{F_{Q,max}}{q_F\,A_\tau},\qquad A_\tau = \frac{\pi}{4} d_\tau^2
+
+    Parameters
+    ----------
+    transverse_load : float
+        F_Q,max, [N]
+    shear_planes : int
+        q_F, the interfaces the shank crosses (one shear section each), [1]
+    fitted_diameter : float
+        d_τ, the fitted shank's diameter, [m]
+
+    Returns
+    -------
+    float
+        τ_Q, [Pa]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R12 (fitted bolts: τ_Q,max = F_Q,max/A_τ against τ_B with
+    S_A ≥ 1.1), the load shared equally by the q_F shear sections.
+
+    Examples
+    --------
+    20 kN in single shear on a 13 mm fitted shank: 20 000/132.73 mm²
+
+    >>> round(fitted_shank_shear_stress(20e3, 1, 0.013) / 1e6, 2)
+    150.68
+    """
+    return transverse_load / (shear_planes * _area(fitted_diameter))
+
+
+def fitted_bearing_pressure(
+    transverse_load: float, fitted_diameter: float, thinnest_plate: float
+) -> float:
+    r"""Bearing pressure of a fitted shank on the hole wall of the thinnest plate.
+
+    .. math::
+        p_Q = \frac{F_{Q,max}}{d_\tau\,h_{min}}
+
+    Parameters
+    ----------
+    transverse_load : float
+        F_Q,max, [N]
+    fitted_diameter : float
+        d_τ, [m]
+    thinnest_plate : float
+        h_min, the thinnest clamped plate, [m]
+
+    Returns
+    -------
+    float
+        p_Q, [Pa]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R12 (fitted bolts: the hole wall's bearing, to be held
+    against the plate material's bearing strength); the projected area of the
+    thinnest plate carrying the whole F_Q is the conservative case.
+
+    Examples
+    --------
+    >>> round(fitted_bearing_pressure(20e3, 0.013, 0.010) / 1e6, 1)
+    153.8
+    """
+    return transverse_load / (fitted_diameter * thinnest_plate)
+
+
+def fitted_shear_safety(tensile_strength: float, shear_stress: float) -> float:
+    r"""Safety of a fitted shank against shearing off.
+
+    .. math::
+        S_A = \frac{\tau_B}{\tau_Q},\qquad \tau_B = 0.6\,R_m
+
+    Parameters
+    ----------
+    tensile_strength : float
+        R_m of the bolt, [Pa]
+    shear_stress : float
+        τ_Q (:func:`fitted_shank_shear_stress`), [Pa]
+
+    Returns
+    -------
+    float
+        S_A, [-] (VDI asks ≥ 1.1; infinite without a transverse load)
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R12; τ_B/R_m = 0.6, the ratio the engine takes for the
+    bolt's thread shear as well (:data:`engine.procedures.bolt.BOLT_SHEAR_RATIO`).
+
+    Examples
+    --------
+    >>> round(fitted_shear_safety(800e6, 150.68e6), 3)
+    3.186
+    """
+    return _quotient(
+        shear_stress > 0.0, SHANK_SHEAR_RATIO * tensile_strength, shear_stress, math.inf
+    )

@@ -156,11 +156,15 @@ FIRST = run(JOINT, JOINT.examples[0]).results
 def test_the_hand_calculation_covers_every_numeric_output():
     # nut_stripping_force is given only for a nut that does not pair with the bolt: held by
     # tests/models/joint/test_nut_strength.py's hand calculation; the bending outputs only for
-    # an eccentric joint: held by tests/models/joint/test_joint_eccentric.py's
+    # an eccentric joint: held by tests/models/joint/test_joint_eccentric.py's; the fitted
+    # shank's only with fitted_diameter: held by test_joint_fitted.py's
     eccentric = {
         "substitute_bending_inertia",
         "clamped_bending_compliance",
         "bolt_bending_compliance",
+        "fitted_shear_stress",
+        "fitted_shear_safety",
+        "fitted_bearing_pressure",
     }
     numeric = {o.name for o in JOINT.outputs if not o.series} - {"nut_stripping_force", *eccentric}
     assert set(HAND) == numeric
