@@ -776,11 +776,20 @@ def _solve(
     if eccentric:
         c_t, b_t = col("interface_length"), col("interface_width")
         refusals.add(
-            abs(s_sym) >= 0.5 * c_t,
+            b_t <= d_h,
+            "interface_width",
+            lambda: (
+                f"interface_width b = {b_t * 1e3:g} mm leaves no interface beside the hole d_h = "
+                f"{d_h * 1e3:g} mm: must be > {d_h * 1e3:g} mm"
+            ),
+        )
+        refusals.add(
+            abs(s_sym) + 0.5 * d_h > 0.5 * c_t,
             "bolt_offset",
             lambda: (
-                f"bolt_offset s_sym = {s_sym * 1e3:g} mm puts the bolt outside the interface "
-                f"c_T = {c_t * 1e3:g} mm: |s_sym| must be < {0.5 * c_t * 1e3:g} mm"
+                f"bolt_offset s_sym = {s_sym * 1e3:g} mm puts the hole (d_h = {d_h * 1e3:g} mm) "
+                f"outside the interface c_T = {c_t * 1e3:g} mm: |s_sym| must be ≤ "
+                f"{0.5 * (c_t - d_h) * 1e3:g} mm"
             ),
         )
         refusals.add(
@@ -809,6 +818,16 @@ def _solve(
             col_or("nut_youngs_modulus", _tapped_modulus(x)),
         )
         area_d, inertia_t = jt.interface_section(b_t, c_t, d_h)
+        # the clamp force must act inside the interface's kern, or the preload alone lifts u
+        refusals.add(
+            inertia_t / area_d + s_sym * edge <= 0.0,
+            "bolt_offset",
+            lambda: (
+                f"bolt_offset s_sym = {s_sym * 1e3:g} mm lies outside the interface's kern for "
+                f"the edge u = {edge * 1e3:g} mm (I_BT/A_D + s_sym u ≤ 0): the preload alone "
+                "opens that edge; bring the bolt towards the load's side"
+            ),
+        )
         k_ab = jt.opening_ratio(lever, s_sym, edge, area_d, inertia_t)
     else:
         for name, value in (("bolt_offset", s_sym), ("load_lever", lever), ("opening_edge", edge)):

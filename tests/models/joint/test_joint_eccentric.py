@@ -150,16 +150,26 @@ def test_offsets_need_the_interface_and_stay_inside_it():
             run(JOINT, {**BASE, name: 0.01})
         assert err.value.field == "interface_length"
         assert "interface_length" in str(err.value)
+    # the hole inside the interface: |s_sym| ≤ (c_T − d_h)/2 = 18.25 mm
     with pytest.raises(InputOutOfRange) as err:
-        run(JOINT, {**ECCENTRIC, "bolt_offset": 0.025})
-    assert err.value.field == "bolt_offset" and "25 mm" in str(err.value)
+        run(JOINT, {**ECCENTRIC, "bolt_offset": 0.0183})
+    assert err.value.field == "bolt_offset" and "18.25 mm" in str(err.value)
+    # the interface wider than the hole
+    with pytest.raises(InputOutOfRange) as err:
+        run(JOINT, {**ECCENTRIC, "interface_width": 0.013})
+    assert err.value.field == "interface_width"
+    # the bolt outside the kern away from the load: I_BT/A_D + s_sym u ≤ 0 (c_T²/12 ≈ 2.1e-4,
+    # −0.018 × 0.025 = −4.5e-4)
+    with pytest.raises(InputOutOfRange) as err:
+        run(JOINT, {**ECCENTRIC, "bolt_offset": -0.018})
+    assert err.value.field == "bolt_offset" and "kern" in str(err.value)
     with pytest.raises(InputOutOfRange) as err:
         run(JOINT, {**ECCENTRIC, "opening_edge": 0.026})
     assert err.value.field == "opening_edge"
 
 
 def test_a_sweep_over_the_bolt_offset_runs_the_same_lines():
-    offsets = [-0.010, 0.0, 0.005, 0.015]
+    offsets = [-0.005, 0.0, 0.005, 0.015]
     many = sweep(JOINT, ECCENTRIC, "bolt_offset", offsets)
     for i, s in enumerate(offsets):
         one = run(JOINT, {**ECCENTRIC, "bolt_offset": s}).results
