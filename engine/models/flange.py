@@ -10,6 +10,7 @@ R0–R13 of ``joint.vdi2230`` unchanged, with every input of that model.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from typing import Any
 
@@ -172,6 +173,14 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     f_a = jt.ring_flange_axial_load(f_ax, m_b, z, d_t)
     f_a_min = jt.ring_flange_axial_load(f_ax_min, m_b_min, z, d_t)
     f_q = jt.ring_flange_transverse_load(float(x["transverse_force"]), float(x["torque"]), z, d_t)
+    limit = next(p.maximum for p in JOINT_INPUTS if p.name == "working_load")
+    if not max(f_a, f_q) <= (limit or math.inf):
+        raise InputOutOfRange(
+            f"the most loaded bolt would carry F_A = {f_a:.4g} N, F_Q = {f_q:.4g} N, beyond one "
+            f"bolt's {limit:g} N: give a larger bolt_circle_diameter (now {d_t * 1e3:g} mm), "
+            "more bolts or smaller loads",
+            field="bolt_circle_diameter",
+        )
     single = {p.name: x.get(p.name) for p in JOINT_INPUTS}
     single.update(working_load=f_a, working_load_min=f_a_min, transverse_load=f_q)
     one = _single_bolt(single, ctx)

@@ -92,6 +92,10 @@ def test_checks_and_refusals():
     with pytest.raises(InputOutOfRange) as err:
         run(FLANGE, {**FIRST, "bolts": 2})
     assert err.value.field == "bolts"
+    # 1 GN·m on a 1 mm circle: far beyond what one bolt is declared for
+    with pytest.raises(InputOutOfRange) as err:
+        run(FLANGE, {**FIRST, "bending_moment": 1e9, "bolt_circle_diameter": 1e-3})
+    assert err.value.field == "bolt_circle_diameter"
 
 
 def test_more_bolts_share_the_load():
