@@ -18,6 +18,7 @@ from .blow import BLOW
 from .capability import CAPABILITY as TOOL_CAPABILITY
 from .clamp import CLAMP_CAPABILITY as JOINT_CLAMP_CAPABILITY
 from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
+from .flange import FLANGE as JOINT_FLANGE
 from .friction import ISO16047 as FRICTION_ISO16047
 from .joint import VDI2230 as JOINT_VDI2230
 from .nutrunner import NUTRUNNER_DRIVE
@@ -38,6 +39,7 @@ MODELS: tuple[ModelSpec, ...] = (
     PRELOAD_ULTRASONIC,
     JOINT_VDI2230,
     JOINT_AUDIT,
+    JOINT_FLANGE,
     BLOW,
     TOOL_CAPABILITY,
     FRICTION_ISO16047,

@@ -218,6 +218,50 @@ JOINT_INPUTS: tuple[Param, ...] = (
         symbol="n",
         group="loads",
     ),
+    _length(
+        "bolt_offset",
+        "Eccentric clamping (VDI 2230-1 §5.3.2): distance s_sym of the bolt axis from the axis "
+        "O–O of the clamped body, positive towards the working load's line; 0: concentric",
+        default=0.0,
+        minimum=-1.0,
+        maximum=1.0,
+        symbol="s_sym",
+        group="eccentric",
+    ),
+    _length(
+        "load_lever",
+        "Eccentric loading: distance a of the working load's line from the axis O–O; 0: the "
+        "load acts on the body's axis",
+        default=0.0,
+        minimum=0.0,
+        symbol="a",
+        group="eccentric",
+    ),
+    _length(
+        "opening_edge",
+        "Distance u from O–O of the interface edge that opens first (on the load's side); 0: "
+        "no opening requirement F_KA",
+        default=0.0,
+        minimum=0.0,
+        symbol="u",
+        group="eccentric",
+    ),
+    _length(
+        "interface_length",
+        "Length c_T of the interface in the bending plane (needed with s_sym, a or u ≠ 0)",
+        minimum=0.0,
+        exclusive_minimum=True,
+        symbol="c_T",
+        group="eccentric",
+    ),
+    _length(
+        "interface_width",
+        "Width b of the interface across the bending plane (needed with c_T)",
+        minimum=0.0,
+        exclusive_minimum=True,
+        symbol="b",
+        group="eccentric",
+    ),
     Param(
         "working_load",
         "N",
@@ -257,6 +301,45 @@ JOINT_INPUTS: tuple[Param, ...] = (
         kind="int",
         minimum=1,
         maximum=20,
+        group="loads",
+    ),
+    _length(
+        "fitted_diameter",
+        "Fitted bolt: diameter d_τ of the fitted shank that carries F_Q in shear and bearing "
+        "(VDI 2230-1 R12); absent: the interfaces carry F_Q by friction alone",
+        minimum=0.0,
+        exclusive_minimum=True,
+        maximum=1.0,
+        symbol="d_τ",
+        group="loads",
+    ),
+    Param(
+        "torsional_moment",
+        "N*m",
+        "Torsional moment M_Y,max about the bolt axis carried by interface friction (VDI "
+        "2230-1 R2/R12); needs friction_radius",
+        default=0.0,
+        minimum=0.0,
+        maximum=1e7,
+        symbol="M_Y",
+        group="loads",
+    ),
+    Param(
+        "torque_interfaces",
+        "1",
+        "Number q_M of interfaces that carry the torsional moment",
+        default=1,
+        kind="int",
+        minimum=1,
+        maximum=20,
+        group="loads",
+    ),
+    _length(
+        "friction_radius",
+        "Friction radius r_a of the interface for the torsional moment (needed with M_Y > 0)",
+        minimum=0.0,
+        exclusive_minimum=True,
+        symbol="r_a",
         group="loads",
     ),
     Param(
@@ -632,12 +715,12 @@ def _solve(
     outer = None if x.get("outer_diameter") is None else col("outer_diameter")
     if outer is not None:
         refusals.add(
-            outer < d_w * (1.0 - 1e-12),
+            outer <= d_h,
             "outer_diameter",
             lambda: (
-                f"outer_diameter D_A = {outer * 1e3:g} mm is smaller than the bearing "
-                f"diameter d_W = {d_w * 1e3:g} mm: must be ≥ {d_w * 1e3:g} mm (D_A = d_W is the "
-                "sleeve)"
+                f"outer_diameter D_A = {outer * 1e3:g} mm leaves no wall around the hole "
+                f"d_h = {d_h * 1e3:g} mm: must be > {d_h * 1e3:g} mm (D_A ≤ d_W = "
+                f"{d_w * 1e3:g} mm is VDI's sleeve)"
             ),
         )
     l_shank, l_reduced = col("shank_length"), col("reduced_length")
@@ -682,13 +765,102 @@ def _solve(
     )
     parts = jt.clamped_compliance(thick, moduli, d_w, d_h, outer, joint_type)
     delta_s, delta_p = bolt_c.total, parts.total
-    phi_k = jt.load_factor(delta_s, delta_p, 1.0)
-    phi_n = jt.load_factor(delta_s, delta_p, col("load_introduction"))
 
-    # R2 required clamp force -------------------------------------------------------------------
+    # R3 eccentric clamping and loading (VDI 2230-1 §5.3.2); zero offsets: concentric --------------
+    s_sym, lever, edge = col("bolt_offset"), col("load_lever"), col("opening_edge")
+    eccentric = x.get("interface_length") is not None and x.get("interface_width") is not None
+    i_bers: Any = math.nan
+    beta_p: Any = 0.0
+    beta_s: Any = math.nan
+    k_ab: Any = 0.0
+    if eccentric:
+        c_t, b_t = col("interface_length"), col("interface_width")
+        refusals.add(
+            b_t <= d_h,
+            "interface_width",
+            lambda: (
+                f"interface_width b = {b_t * 1e3:g} mm leaves no interface beside the hole d_h = "
+                f"{d_h * 1e3:g} mm: must be > {d_h * 1e3:g} mm"
+            ),
+        )
+        refusals.add(
+            abs(s_sym) + 0.5 * d_h > 0.5 * c_t,
+            "bolt_offset",
+            lambda: (
+                f"bolt_offset s_sym = {s_sym * 1e3:g} mm puts the hole (d_h = {d_h * 1e3:g} mm) "
+                f"outside the interface c_T = {c_t * 1e3:g} mm: |s_sym| must be ≤ "
+                f"{0.5 * (c_t - d_h) * 1e3:g} mm"
+            ),
+        )
+        refusals.add(
+            edge > 0.5 * c_t * (1.0 + 1e-12),
+            "opening_edge",
+            lambda: (
+                f"opening_edge u = {edge * 1e3:g} mm lies outside the interface c_T = "
+                f"{c_t * 1e3:g} mm: must be ≤ {0.5 * c_t * 1e3:g} mm"
+            ),
+        )
+        cone_d = _pick(
+            parts.outer_diameter < parts.limit_diameter, parts.outer_diameter, parts.limit_diameter
+        )
+        i_bers = jt.substitute_bending_inertia(
+            grip, d_w, cone_d, parts.tangent, s_sym, b_t, c_t, joint_type
+        )
+        beta_p = jt.clamped_bending_compliance(thick, moduli, i_bers)
+        beta_s = jt.bolt_bending_compliance(
+            d,
+            b["minor_diameter"],
+            col("youngs_modulus"),
+            sections,
+            free_thread,
+            str(x["head"]),
+            joint_type,
+            col_or("nut_youngs_modulus", _tapped_modulus(x)),
+        )
+        area_d, inertia_t = jt.interface_section(b_t, c_t, d_h)
+        # the clamp force must act inside the interface's kern, or the preload alone lifts u
+        refusals.add(
+            inertia_t / area_d + s_sym * edge <= 0.0,
+            "bolt_offset",
+            lambda: (
+                f"bolt_offset s_sym = {s_sym * 1e3:g} mm lies outside the interface's kern for "
+                f"the edge u = {edge * 1e3:g} mm (I_BT/A_D + s_sym u ≤ 0): the preload alone "
+                "opens that edge; bring the bolt towards the load's side"
+            ),
+        )
+        k_ab = jt.opening_ratio(lever, s_sym, edge, area_d, inertia_t)
+    else:
+        for name, value in (("bolt_offset", s_sym), ("load_lever", lever), ("opening_edge", edge)):
+            refusals.add(
+                value != 0.0,
+                "interface_length",
+                partial(
+                    "{0} = {1:g} mm needs the interface: give interface_length c_T and "
+                    "interface_width b (> 0 mm), or {0} = 0 for a concentric joint".format,
+                    name,
+                    value * 1e3,
+                ),
+            )
+    delta_p1 = jt.eccentric_compliance(delta_p, beta_p, s_sym, s_sym)  # δ*_P
+    delta_p2 = jt.eccentric_compliance(delta_p, beta_p, s_sym, lever)  # δ**_P
+    phi_k = jt.load_factor(delta_s, delta_p1, 1.0, delta_p2)
+    phi_n = jt.load_factor(delta_s, delta_p1, col("load_introduction"), delta_p2)
+
+    # R2 required clamp force (the opening requirement F_KA once F_A is read) --------------------
     f_q, q_f, mu_t = col("transverse_load"), col("slip_interfaces"), col("interface_friction")
-    f_kq = jt.transverse_clamp_force(f_q, q_f, mu_t)
-    f_kerf = jt.required_clamp_force(f_kq, col("sealing_clamp_force"))
+    m_y, q_m = col("torsional_moment"), col("torque_interfaces")
+    if x.get("friction_radius") is None:
+        r_a: Any = 1.0  # unused: M_Y must be 0 then
+        refusals.add(
+            m_y > 0.0,
+            "friction_radius",
+            lambda: f"torsional_moment = {m_y:g} N*m needs friction_radius r_a (> 0 mm)",
+        )
+    else:
+        r_a = col("friction_radius")
+    f_kq = jt.transverse_clamp_force(f_q, q_f, mu_t, m_y, q_m, r_a)
+    f_kp = col("sealing_clamp_force")
+    f_kerf_grip = jt.required_clamp_force(f_kq, f_kp)
 
     # R1 friction box, loads --------------------------------------------------------------------
     method = get_method(str(x["method"]))
@@ -717,11 +889,14 @@ def _solve(
             f"{f_a:g} N"
         ),
     )
+    f_ka = jt.opening_clamp_force(f_a, k_ab)
+    f_kerf = jt.required_clamp_force(f_kq, f_kp, f_ka)
 
     # R4 embedding --------------------------------------------------------------------------------
     faces, interfaces = jt.embedding_locations(joint_type, plates)
-    f_z_len = jt.embedding_for_load(str(x["surface_roughness"]), f_q, faces, interfaces)
-    f_z = jt.embedding_loss(f_z_len, delta_s, delta_p)
+    # the transverse column of Table 5.4/1 wherever the interfaces carry shear (F_Q or M_Y)
+    f_z_len = jt.embedding_for_load(str(x["surface_roughness"]), f_kq, faces, interfaces)
+    f_z = jt.embedding_loss(f_z_len, delta_s, delta_p1)
 
     # R7 permissible preload at the smallest section ---------------------------------------------
     d0, where = jt.smallest_section(b["stress_diameter"], sections)
@@ -775,7 +950,7 @@ def _solve(
         clamped_expansion_length=jt.plates_expansion_length(thick, alphas),
         plate_temperature_change=col_or("plate_temperature_change", dt_s),
         bolt=delta_s,
-        clamped=delta_p,
+        clamped=delta_p1,
         bolt_modulus_ratio=col("bolt_modulus_ratio"),
         clamped_modulus_ratio=col("plate_modulus_ratio"),
     )
@@ -787,13 +962,13 @@ def _solve(
     alpha_req = _finite_or(alpha_a, method_factor)
     req_min = jt.minimum_assembly_preload(f_kerf, f_a, phi_n, f_z, th_loss)
     req_max = jt.required_preload_max(alpha_req, req_min)
-    fa_limit = jt.max_working_load(f_mzul, alpha_req, f_kerf, loss, phi_n)
-    fa_sep_any = jt.separation_load(f_mzul, loss, phi_n)
+    fa_limit = jt.max_working_load(f_mzul, alpha_req, f_kerf_grip, loss, phi_n, k_ab, f_kp)
+    fa_sep_any = jt.separation_load(f_mzul, loss, phi_n, k_ab)
     f_kr_raw = jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)
     # a joint that opens has no clamp force left (the linear diagram's negative value is not
     # a force): F_KR,min and S_G are held at 0 there and the checks fail on the raw value
     f_kr_min = _larger(f_kr_raw, 0.0)
-    fa_sep = jt.separation_load(fm_min, loss, phi_n)
+    fa_sep = jt.separation_load(fm_min, loss, phi_n, k_ab)
     checks: dict[str, tuple[Any, Any]] = {
         "R7_window_fits": (True, req_max <= f_mzul * (1.0 + 1e-12)),
         "separation_avoidable": (True, f_a < fa_sep_any),
@@ -831,16 +1006,36 @@ def _solve(
         checks["nut_thread_stripping"] = (f_strip == f_strip, f_strip >= f_s_max)
 
     # R9 alternating stress -----------------------------------------------------------------------
-    sigma_a = jt.stress_amplitude(phi_n, f_a, f_a_min, a_s)
+    phi_b = phi_n
+    if eccentric:
+        phi_b = jt.eccentric_stress_factor(
+            phi_n, lever, s_sym, beta_p, beta_s, b["stress_diameter"]
+        )
+    sigma_a = jt.stress_amplitude(phi_b, f_a, f_a_min, a_s)
     f_sm = jt.mean_bolt_force(fm_max, phi_n, f_a, f_a_min)
     sigma_as = jt.endurance_limit(d, str(x["rolling"]), f_sm, a_s * yield_strength)
     s_d = jt.fatigue_safety(sigma_as, sigma_a)
     checks["R9_fatigue"] = (sigma_a > 0.0, s_d >= 1.2)
+    # §5.3.2: σ_SAb and Φ*_en hold while the interface stays closed (F_A ≤ F_Aab at F_M,min)
+    checks["opening_limit"] = (eccentric, f_a <= fa_sep * (1.0 + 1e-12))
 
     # R12 slipping -----------------------------------------------------------------------
-    s_g = jt.slip_safety(f_kr_min, q_f, mu_t, f_q)
+    s_g = jt.slip_safety(f_kr_min, q_f, mu_t, f_q, m_y, q_m, r_a)
+    tau_q: Any = math.nan
+    s_a: Any = math.nan
+    p_q: Any = math.nan
+    if x.get("fitted_diameter") is not None:
+        d_tau = col("fitted_diameter")
+        h_min: Any = math.inf
+        for h in thick:
+            h_min = _pick(h > 0.0, _pick(h < h_min, h, h_min), h_min)
+        r_m = b.get("tensile_strength")
+        tau_q = jt.fitted_shank_shear_stress(f_q, q_f, d_tau)
+        s_a = jt.fitted_shear_safety(math.nan if r_m is None else r_m, tau_q)
+        p_q = jt.fitted_bearing_pressure(f_q, d_tau, h_min)
+        checks["R12_fitted_shear"] = ((f_q > 0.0) & (s_a == s_a), s_a >= 1.1)
     need = jt.required_slip_safety(f_a, f_a_min)
-    checks["R12_slip"] = (f_q > 0.0, s_g >= need)
+    checks["R12_slip"] = ((f_q > 0.0) | (m_y > 0.0), s_g >= need)
 
     # [004] rules and the tightening targets [004, eq. 6–9] ----------------------------------------
     nominal = jt.nominal_preload(fm_min, fm_max)
@@ -858,6 +1053,12 @@ def _solve(
         "bolt_compliance_free_thread": bolt_c.free_thread,
         "bolt_compliance_engaged": bolt_c.engaged,
         "clamped_compliance": delta_p,
+        "eccentric_clamped_compliance": delta_p1,
+        "substitute_bending_inertia": i_bers,
+        "clamped_bending_compliance": beta_p if eccentric else math.nan,
+        "bolt_bending_compliance": beta_s,
+        "opening_clamp_force": f_ka,
+        "additional_bolt_stress": jt.additional_bolt_stress(phi_b, f_a, a_s),
         "cone_tangent": parts.tangent,
         "cone_limit_diameter": parts.limit_diameter,
         "outer_diameter_used": parts.outer_diameter,
@@ -888,6 +1089,9 @@ def _solve(
         "endurance_limit": sigma_as,
         "fatigue_safety": s_d,
         "slip_safety": s_g,
+        "fitted_shear_stress": tau_q,
+        "fitted_shear_safety": s_a,
+        "fitted_bearing_pressure": p_q,
         "preload_stress_ratio": ratio0,
         "bolt_elongation": pl.elongation(nominal, delta_s),
         "target_angle": pl.nut_rotation_angle(nominal, delta_s + delta_p, pitch),
@@ -951,6 +1155,16 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"D_A not given: plates taken just wide enough for the full cone, D_A = D_A,Gr = "
             f"{s['outer_diameter_used'] * 1e3:.4g} mm (our convention; VDI's cone-angle fit "
             "needs a D_A); a wider plate is stiffer by that fit"
+        )
+    if (
+        x.get("outer_diameter") is not None
+        and float(x["outer_diameter"]) < bolt.bearing_outer_diameter
+    ):
+        warnings.append(
+            f"D_A = {float(x['outer_diameter']) * 1e3:.4g} mm < d_W = "
+            f"{bolt.bearing_outer_diameter * 1e3:.4g} mm: the plates are VDI's sleeve "
+            "(δ_P = 4 l_K/(E π (D_A² − d_h²))); the head bears on the sleeve's face only, so "
+            "the surface pressure (R10), computed on d_W, is higher than stated"
         )
     if s["cone_tangent"] <= jt.MIN_CONE_TANGENT:
         warnings.append(
@@ -1045,6 +1259,9 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     values: dict[str, Any] = {name: s[name] for name in _SCALARS}
     if not math.isfinite(values["nut_stripping_force"]):
         del values["nut_stripping_force"]  # the nut pairs with the bolt, or there is none
+    for name in _GIVEN_ONLY:
+        if not math.isfinite(values[name]):
+            del values[name]  # a concentric joint (no interface), or no fitted shank
     for name in ("tightening_factor", "fatigue_safety", "slip_safety"):
         if not math.isfinite(values[name]):
             values[name] = None
@@ -1072,7 +1289,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 "lower one): take σ_AS from the bolt's maker or a fatigue test"
             )
     if values["slip_safety"] is None:
-        notes.append("no transverse load: slip_safety null (R12)")
+        notes.append("no transverse load or torsional moment: slip_safety null (R12)")
     if s["_f_kr_raw"] < 0.0:
         warnings.append(
             f"the joint opens: F_A = {_kn(float(x['working_load']))} exceeds the separation "
@@ -1146,13 +1363,34 @@ def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[s
         "R9_fatigue": "σ_a = Φ_n (F_A,max − F_A,min)/(2 A_S) = "
         f"{s['stress_amplitude'] / 1e6:.3g} MPa vs σ_AS = {s['endurance_limit'] / 1e6:.3g} MPa: "
         f"S_D = {s['fatigue_safety']:.3g} (VDI asks ≥ 1.2)",
-        "R12_slip": f"S_G = F_KR,min q_F μ_T / F_Q = {s['slip_safety']:.3g} (VDI asks ≥ {need:g} "
+        "R12_slip": "S_G = F_KR,min q_F μ_T / (F_Q + M_Y q_F/(q_M r_a)) = "
+        f"{s['slip_safety']:.3g} (VDI asks ≥ {need:g} "
         f"for {'alternating' if need > 1.2 else 'static'} load)",
         "seed_004_preload_stress": f"σ0 = F_M,nom/A_0 = {sigma0 / 1e6:.4g} MPa = "
         f"{s['preload_stress_ratio']:.2f} σ_T; [004, eq. 6] allows {lo_rule:g}…{hi_rule:g} σ_T "
         f"({why}); VDI 2230 R7 instead limits the equivalent stress to ν R_p0.2 (ν = {nu:g}), "
         "which allows more",
     }
+    if "R12_fitted_shear" in s["_checks"] and s["_checks"]["R12_fitted_shear"][0]:
+        out["R12_fitted_shear"] = (
+            f"fitted shank: τ_Q = F_Q/(q_F A_τ) = {s['fitted_shear_stress'] / 1e6:.4g} MPa vs "
+            f"τ_B = 0.6 R_m: S_A = {s['fitted_shear_safety']:.3g} (VDI asks ≥ 1.1); bearing "
+            f"p_Q = {s['fitted_bearing_pressure'] / 1e6:.4g} MPa on the thinnest plate, to hold "
+            "against the plate's bearing strength"
+        )
+    if s["_checks"]["opening_limit"][0]:
+        opens_ok = bool(s["_checks"]["opening_limit"][1])
+        out["opening_limit"] = (
+            f"F_A = {_kn(f_a)} vs the opening limit F_Aab = {_kn(s['separation_load'])} at "
+            f"F_M,min (Φ*_en = {s['load_factor']:.4g}, F_KA = {_kn(s['opening_clamp_force'])}, "
+            "VDI 2230-1 §5.3.2)"
+            + (
+                ""
+                if opens_ok
+                else ": the interface opens at its edge, where Φ*_en and σ_SAb no longer hold "
+                "(VDI's nonlinear range); raise the preload or bring the bolt nearer the load"
+            )
+        )
     nut, f_nut, f_mzul_bolt, _ = s["_nut"]
     if "nut_strength" in s["_checks"]:
         out["nut_strength"] = nut_strength_text(
@@ -1194,7 +1432,7 @@ def _series(ctx: RunContext, s: Mapping[str, Any], x: Mapping[str, Any]) -> dict
     f_a, phi_n, f_z = float(x["working_load"]), s["load_factor"], s["embedding_loss"]
     if ctx.wants(*_DIAGRAM):
         diagram = jt.joint_diagram(
-            fm_min, s["bolt_compliance"], s["clamped_compliance"], f_a, phi_n, f_z
+            fm_min, s["bolt_compliance"], s["eccentric_clamped_compliance"], f_a, phi_n, f_z
         )
         series.update({f"diagram_{k}": v for k, v in diagram.items()})
     if ctx.wants(*_WINDOW):
@@ -1226,6 +1464,10 @@ _DIAGRAM = tuple(
         "service_preload_level",
         "working_bolt_force_level",
         "residual_clamp_level",
+        "working_deformation",
+        "working_force",
+        "opening_deformation",
+        "opening_force",
     )
 )
 _WINDOW = (
@@ -1244,8 +1486,12 @@ def _f(name: str, desc: str, **kw: Any) -> Output:
 
 JOINT_OUTPUTS: tuple[Output, ...] = (
     Output("tightening_factor", "1", "R1: α_A = F_M,max/F_M,min (method, given, or torque box)"),
-    _f("required_clamp_force", "R2: F_K,erf = max(F_KQ, F_KP)"),
-    _f("transverse_clamp_force", "R2: F_KQ = F_Q/(q_F μ_T,min)"),
+    _f("required_clamp_force", "R2: F_K,erf = max(F_KQ, F_KP + F_KA)"),
+    _f(
+        "opening_clamp_force",
+        "R2: F_KA = F_A (a − s_sym) u/(I_BT/A_D + s_sym u), not below 0 (0 concentric)",
+    ),
+    _f("transverse_clamp_force", "R2: F_KQ = F_Q/(q_F μ_T,min) + M_Y/(q_M r_a μ_T,min)"),
     Output("bolt_compliance", "m/N", "R3: δ_S, head + shank + free thread + engaged thread + nut"),
     Output("bolt_compliance_head", "m/N", "R3: δ_SK = l_SK/(E_S A_N), l_SK = 0.5 d / 0.4 d"),
     Output("bolt_compliance_shank", "m/N", "R3: Σ l_i/(E_S A_i) of the plain and reduced shank"),
@@ -1256,12 +1502,37 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
         "R3: δ_GM = 0.5 d/(E_S A_d3) + l_M/(E_M A_N), l_M = 0.4 d (nut) / 0.33 d (tapped)",
     ),
     Output("clamped_compliance", "m/N", "R3: δ_P, deformation cone and sleeve, plate by plate"),
+    Output(
+        "eccentric_clamped_compliance",
+        "m/N",
+        "R3 §5.3.2: δ*_P = δ_P + s_sym² β_P (δ_P for a concentric joint)",
+    ),
+    Output(
+        "substitute_bending_inertia",
+        "m^4",
+        "R3 §5.3.2: I_Bers of cone (Steiner-shifted by s_sym) and sleeve b c_T³/12 in series "
+        "(null without the interface)",
+    ),
+    Output(
+        "clamped_bending_compliance",
+        "1/(N*m)",
+        "R3 §5.3.2: β_P = Σ h_i/E_i / I_Bers (null without the interface)",
+    ),
+    Output(
+        "bolt_bending_compliance",
+        "1/(N*m)",
+        "R9 §5.1.1.2: β_S = Σ l_i/(E I_i) over the bolt's sections (null without the interface)",
+    ),
     Output("cone_tangent", "1", "R3: tan φ of the deformation cone (VDI fit)"),
     Output("cone_limit_diameter", "m", "R3: D_A,Gr = d_W + w l_K tan φ", display_unit="mm"),
     Output("outer_diameter_used", "m", "R3: D_A used", display_unit="mm"),
     Output("grip", "m", "R3: clamp length l_K = Σ h_i", display_unit="mm"),
     Output("load_factor_k", "1", "R3: Φ_K = δ_P/(δ_S + δ_P) (load under head and nut)"),
-    Output("load_factor", "1", "R3: Φ_n = n Φ_K"),
+    Output(
+        "load_factor",
+        "1",
+        "R3: Φ_n = n Φ_K; eccentric: Φ*_en = n δ**_P/(δ_S + δ*_P), δ**_P = δ_P + a s_sym β_P",
+    ),
     _f("additional_bolt_load", "R3/R8: F_SA = Φ_n F_A,max"),
     _f("clamp_load_reduction", "R3: F_PA = (1 − Φ_n) F_A,max"),
     Output("embedding_settlement", "m", "R4: f_Z from the VDI table", display_unit="mm"),
@@ -1286,18 +1557,54 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
         "residual_clamp_force_min",
         "R12: F_KR,min = F_M,min − (1 − Φ_n) F_A − F_Z − ΔF_th, 0 where the joint opens",
     ),
-    _f("separation_load", "R5/R12: F_A at which the joint opens from the lowest assembly preload"),
+    _f(
+        "separation_load",
+        "R5/R12: F_A at which the joint opens from the lowest assembly preload; eccentric: the "
+        "opening limit F_Aab = F_V/(1 − Φ*_en + F_KA/F_A)",
+    ),
     _f("max_working_load", "R5–R7: largest F_A whose required window fits under F_M,zul"),
     _f("max_bolt_force", "R8: F_S,max = F_M,max + Φ_n F_A,max"),
     Output("working_stress", "Pa", "R8: σ_red,B (k_τ = 0.5)", display_unit="MPa"),
     Output("yield_safety", "1", "R8: S_F = R_p0.2/σ_red,B"),
     Output(
-        "stress_amplitude", "Pa", "R9: σ_a = Φ_n (F_A,max − F_A,min)/(2 A_S)", display_unit="MPa"
+        "stress_amplitude",
+        "Pa",
+        "R9: σ_a = Φ_n (F_A,max − F_A,min)/(2 A_S); eccentric: σ_ab = (σ_SAbo − σ_SAbu)/2",
+        display_unit="MPa",
+    ),
+    Output(
+        "additional_bolt_stress",
+        "Pa",
+        "R9: σ_SAb = Φ_b F_A,max/A_S, Φ_b = Φ*_en + (a − s_sym Φ*_en)(β_P/β_S)(A_S/W_S) with the "
+        "bending (σ_SA = Φ_n F_A/A_S concentric)",
+        display_unit="MPa",
     ),
     Output("endurance_limit", "Pa", "R9: σ_ASV or σ_ASG", display_unit="MPa"),
     Output("fatigue_safety", "1", "R9: S_D = σ_AS/σ_a (null for static load)"),
     Output(
-        "slip_safety", "1", "R12: S_G = F_KR,min q_F μ_T/F_Q (null without F_Q; 0 where it opens)"
+        "slip_safety",
+        "1",
+        "R12: S_G = F_KR,min q_F μ_T/(F_Q + M_Y q_F/(q_M r_a)) (null without F_Q and M_Y; 0 "
+        "where it opens)",
+    ),
+    Output(
+        "fitted_shear_stress",
+        "Pa",
+        "R12 fitted bolt: τ_Q = F_Q/(q_F π d_τ²/4) (null without fitted_diameter)",
+        display_unit="MPa",
+    ),
+    Output(
+        "fitted_shear_safety",
+        "1",
+        "R12 fitted bolt: S_A = 0.6 R_m/τ_Q, VDI asks ≥ 1.1 (null without fitted_diameter, R_m "
+        "or F_Q)",
+    ),
+    Output(
+        "fitted_bearing_pressure",
+        "Pa",
+        "R12 fitted bolt: p_Q = F_Q/(d_τ h_min) on the thinnest plate (null without "
+        "fitted_diameter)",
+        display_unit="MPa",
     ),
     Output("preload_stress_ratio", "1", "[004, eq. 6]: σ0/σ_T at the nominal preload, on A_0"),
     Output("bolt_elongation", "m", "[004, eq. 7]: F_M,nom δ_S", display_unit="mm"),
@@ -1364,6 +1671,32 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
         series=True,
         x="diagram_deformation",
     ),
+    Output(
+        "diagram_working_deformation",
+        "m",
+        "Joint diagram: the working point's deformation f_SV + Φ_n F_A δ_S (2 points)",
+        series=True,
+        display_unit="mm",
+    ),
+    _f(
+        "diagram_working_force",
+        "Joint diagram: F_A at the working point, from F_KR up to F_S (VDI's split by Φ_n)",
+        series=True,
+        x="diagram_working_deformation",
+    ),
+    Output(
+        "diagram_opening_deformation",
+        "m",
+        "Joint diagram: where the joint separates, at F_A = F_V/(1 − Φ_n) (2 points)",
+        series=True,
+        display_unit="mm",
+    ),
+    _f(
+        "diagram_opening_force",
+        "Joint diagram: the bolt force at separation, from 0 up (F_KR = 0)",
+        series=True,
+        x="diagram_opening_deformation",
+    ),
     _f("window_working_load", "Preload window: F_A axis", series=True),
     _f(
         "window_required_min",
@@ -1395,6 +1728,17 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
 #: The scalar outputs, in declaration order.
 _SCALARS: tuple[str, ...] = tuple(o.name for o in JOINT_OUTPUTS if not o.series)
 
+#: Outputs only an eccentric joint (interface given) or a fitted bolt has.
+_GIVEN_ONLY = (
+    "substitute_bending_inertia",
+    "clamped_bending_compliance",
+    "bolt_bending_compliance",
+    # and the fitted bolt's, only with fitted_diameter
+    "fitted_shear_stress",
+    "fitted_shear_safety",
+    "fitted_bearing_pressure",
+)
+
 # --------------------------------------------------------------------------- array path
 #
 # ``_vectorized`` runs :func:`_solve` (the lines a single run runs) for a request whose
@@ -1407,6 +1751,7 @@ _SCALARS: tuple[str, ...] = tuple(o.name for o in JOINT_OUTPUTS if not o.series)
 
 #: Bolt fields carried as arrays ([m, m², Pa]).
 _BOLT_FIELDS = (
+    "tensile_strength",
     "diameter",
     "pitch",
     "pitch_diameter",
@@ -1701,8 +2046,10 @@ VDI2230 = ModelSpec(
     assumptions=(
         "VDI 2230-1's text was not available to us: its relations as reproduced in "
         "ECSS-E-HB-32-23A and implemented in misams/BAT (docs/sources.md)",
-        "concentric clamping and loading (no bending, Φ_en = Φ_n); the nut's bearing face as "
-        "large as the head's",
+        "concentric clamping and loading unless bolt_offset, load_lever or opening_edge is "
+        "given with the interface (then VDI 2230-1 §5.3.2's linear eccentric relations, valid "
+        "while the interface stays closed, F_A ≤ F_Aab); the nut's bearing face as large as "
+        "the head's",
     ),
     examples=(
         # M12 8.8 through 2 × 20 mm steel, 8 kN alternating 0…8 kN, 2 kN transverse

@@ -28,7 +28,7 @@ are not computed here (see :data:`engine.models.joint.CHECK_HOOKS`).
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -58,6 +58,10 @@ ROUGHNESS_CLASSES: tuple[str, ...] = tuple(EMBEDDING_UM)
 
 #: Torsional stress share kept in service (VDI 2230-1 R8): k_τ = 0.5.
 TORSION_REDUCTION_IN_SERVICE = 0.5
+
+#: τ_B/R_m of a fitted shank in shear (VDI 2230-1 R12; the ratio the engine also takes for
+#: the bolt's thread in shear).
+SHANK_SHEAR_RATIO = 0.6
 
 #: Smallest cone tangent used: the VDI fit is not meant for plates far thinner than d_W.
 MIN_CONE_TANGENT = 0.1
@@ -210,15 +214,114 @@ def bolt_compliance(
             f"joint_type = {joint!r} is not allowed: must be 'through' or 'tapped'",
             field="joint_type",
         )
+    return _bolt_sections(
+        _area,
+        diameter,
+        minor_diameter,
+        youngs_modulus,
+        sections,
+        free_thread_length,
+        head,
+        joint,
+        nut_youngs_modulus,
+    )
+
+
+def _bolt_sections(
+    section: Callable[[Any], Any],
+    diameter: float,
+    minor_diameter: float,
+    youngs_modulus: float,
+    sections: Sequence[tuple[float, float]],
+    free_thread_length: float,
+    head: str,
+    joint: str,
+    nut_youngs_modulus: float | None,
+) -> BoltCompliance:
+    """Σ l_i/(E S_i) over VDI 2230-1 R3's bolt sections, S the area (axial) or the second
+    moment (bending) of each section's diameter: one list of sections for both."""
     e_nut = youngs_modulus if nut_youngs_modulus is None else nut_youngs_modulus
-    a_n, a_d3 = _area(diameter), _area(minor_diameter)
+    a_n, a_d3 = section(diameter), section(minor_diameter)
     return BoltCompliance(
         head=HEAD_LENGTH_FACTOR[head] * diameter / (youngs_modulus * a_n),
-        shank=sum((li / (youngs_modulus * _area(di)) for li, di in sections), 0.0),
+        shank=sum((li / (youngs_modulus * section(di)) for li, di in sections), 0.0),
         free_thread=free_thread_length / (youngs_modulus * a_d3),
         engaged_thread=ENGAGED_THREAD_FACTOR * diameter / (youngs_modulus * a_d3),
         nut=NUT_LENGTH_FACTOR[joint] * diameter / (e_nut * a_n),
     )
+
+
+def _second_moment(diameter: Any) -> Any:
+    return math.pi / 64.0 * diameter**4
+
+
+def bolt_bending_compliance(
+    diameter: float,
+    minor_diameter: float,
+    youngs_modulus: float,
+    sections: Sequence[tuple[float, float]],
+    free_thread_length: float,
+    head: str = "hex",
+    joint: str = "through",
+    nut_youngs_modulus: float | None = None,
+) -> float:
+    r"""Bending compliance β_S of the bolt from the same sections as its axial compliance.
+
+    .. math::
+        \beta_S = \frac{l_{SK}}{E_S I_N} + \sum_i \frac{l_i}{E_S I_i}
+            + \frac{l_{Gew}}{E_S I_{d3}} + \frac{0.5\,d}{E_S I_{d3}}
+            + \frac{l_M}{E_M I_N}, \qquad I = \frac{\pi}{64} d^4
+
+    Parameters
+    ----------
+    diameter : float
+        Nominal diameter d, [m]
+    minor_diameter : float
+        Minor diameter d3, [m]
+    youngs_modulus : float
+        E_S of the bolt, [Pa]
+    sections : sequence of (float, float)
+        (length l_i [m], diameter d_i [m]) of the plain and reduced shank sections
+    free_thread_length : float
+        l_Gew, [m]
+    head : str
+        ``"hex"`` or ``"socket"``
+    joint : str
+        ``"through"`` or ``"tapped"``
+    nut_youngs_modulus : float, optional
+        E_M of the nut or the tapped part; E_S when None, [Pa]
+
+    Returns
+    -------
+    float
+        β_S, [1/(N*m)]
+
+    Notes
+    -----
+    VDI 2230-1:2015 §5.1.1.2 (bending resilience of the bolt, the sections and
+    substitute lengths of R3 with I instead of A), as the open implementation
+    h18340637145/vdi2230 sums it. It enters the additional bending stress of
+    :func:`eccentric_stress_factor`.
+
+    Examples
+    --------
+    M12 hexagon bolt, 40 mm grip all free thread, nut: 6 mm/I_N + 40 mm/I_d3
+    + 6 mm/I_d3 + 4.8 mm/I_N over E_S
+
+    >>> round(bolt_bending_compliance(0.012, 0.009853, 2.1e11, [], 0.040) * 1e3, 4)
+    0.524
+    """
+    return _bolt_sections(
+        _second_moment,
+        diameter,
+        minor_diameter,
+        youngs_modulus,
+        sections,
+        free_thread_length,
+        head,
+        joint,
+        nut_youngs_modulus,
+    ).total
 
 
 def cone_tangent(
@@ -475,8 +578,8 @@ def clamped_compliance(
             {(d_W - d_h)(d_W + w l_K\tan\varphi + d_h)}\right]}{w\,E_P\,\pi\,d_h\tan\varphi}
 
     and for d_W < D_A < D_A,Gr the cone part up to D_A plus a sleeve of length
-    l_K − (D_A − d_W)/(w tan φ); D_A → d_W leaves the sleeve
-    4 l_K / (E_P π (d_W² − d_h²)).
+    l_K − (D_A − d_W)/(w tan φ); D_A ≤ d_W leaves the sleeve
+    4 l_K / (E_P π (D_A² − d_h²)) (VDI 2230-1 R3, d_h < D_A ≤ d_W).
 
     Parameters
     ----------
@@ -525,7 +628,7 @@ def clamped_compliance(
     if outer_diameter is None:
         outer = unlimited_outer_diameter(grip, bearing_diameter, joint)
     else:
-        outer = _max(outer_diameter, bearing_diameter)
+        outer = outer_diameter  # below d_W: VDI's sleeve, no cone (the cap lies behind z = 0)
     tan = cone_tangent(grip, bearing_diameter, outer, joint) if tangent is None else tangent
     limit = cone_limit_diameter(grip, bearing_diameter, tan, joint)
     per_plate = []
@@ -545,38 +648,59 @@ def clamped_compliance(
     return ClampedCompliance(tuple(per_plate), tan, limit, outer)
 
 
-def load_factor(bolt: float, clamped: float, load_introduction: float = 1.0) -> float:
-    r"""Load factor Φ_n: the share of the working load that adds to the bolt force.
+def load_factor(
+    bolt: float,
+    clamped: float,
+    load_introduction: float = 1.0,
+    clamped_loaded: float | None = None,
+) -> float:
+    r"""Load factor Φ_n (Φ*_en): the share of the working load that adds to the bolt force.
 
     .. math::
-        \Phi_n = n\,\frac{\delta_P}{\delta_S + \delta_P}
+        \Phi_n = n\,\frac{\delta_P}{\delta_S + \delta_P},
+        \qquad
+        \Phi^*_{en} = n\,\frac{\delta^{**}_P}{\delta_S + \delta^*_P}
 
     Parameters
     ----------
     bolt : float
         δ_S, [m/N]
     clamped : float
-        δ_P, [m/N]
+        δ_P, or δ*_P = δ_P + s_sym² β_P of an eccentrically clamped joint
+        (:func:`eccentric_compliance`), [m/N]
     load_introduction : float
         n, the load-introduction factor (1: under the head and nut; VDI 2230-1
         Table 5.2/1 gives 0.1…0.7 for loads introduced inside the plates), [-]
+    clamped_loaded : float, optional
+        δ**_P = δ_P + a s_sym β_P of an eccentrically loaded joint; ``clamped``
+        when None (the load acts where the clamping does), [m/N]
 
     Returns
     -------
     float
-        Φ_n, [-]
+        Φ_n or Φ*_en, [-]
 
     Notes
     -----
     VDI 2230-1:2015 step R3, eq. (5.2/1)–(5.2/2) (concentric clamping and
-    loading); ECSS-E-HB-32-23A eq. 7.3.2.
+    loading; ECSS-E-HB-32-23A eq. 7.3.2) and §5.3.2 for eccentric clamping and
+    loading (Φ*_en with δ*_P in the denominator and δ**_P in the numerator, the
+    form the open implementation h18340637145/vdi2230 runs too). With
+    s_sym = a = 0 both compliances are δ_P and Φ*_en = Φ_n to the bit.
 
     Examples
     --------
     >>> round(load_factor(3.0e-9, 0.6e-9, 0.5), 4)
     0.0833
+
+    Bolt 5 mm off the body's axis, load 20 mm out, β_P = 2e-6 /(N m):
+    δ*_P = 0.6e-9 + 0.005² × 2e-6, δ**_P = 0.6e-9 + 0.02 × 0.005 × 2e-6
+
+    >>> round(load_factor(3.0e-9, 0.65e-9, 1.0, 0.8e-9), 4)
+    0.2192
     """
-    return load_introduction * clamped / (bolt + clamped)
+    loaded = clamped if clamped_loaded is None else clamped_loaded
+    return load_introduction * loaded / (bolt + clamped)
 
 
 def embedding(roughness: str, load: str, bearing_faces: int, interfaces: int) -> float:
@@ -726,11 +850,18 @@ def thermal_preload_loss(
     return preload * (1.0 - (bolt + clamped) / denominator) + mismatch / denominator
 
 
-def transverse_clamp_force(transverse_load: float, interfaces: int, slip_friction: float) -> float:
-    r"""Clamp force that carries a transverse load by friction.
+def transverse_clamp_force(
+    transverse_load: float,
+    interfaces: int,
+    slip_friction: float,
+    torsional_moment: float = 0.0,
+    torque_interfaces: int = 1,
+    friction_radius: float = 1.0,
+) -> float:
+    r"""Clamp force that carries a transverse load and a torsional moment by friction.
 
     .. math::
-        F_{KQ} = \frac{F_{Q,max}}{q_F\,\mu_{T,min}}
+        F_{KQ} = \frac{F_{Q,max}}{q_F\,\mu_{T,min}} + \frac{M_{Y,max}}{q_M\,r_a\,\mu_{T,min}}
 
     Parameters
     ----------
@@ -740,6 +871,12 @@ def transverse_clamp_force(transverse_load: float, interfaces: int, slip_frictio
         q_F, the number of interfaces that transmit it, [-]
     slip_friction : float
         μ_T,min, the interface friction coefficient, [-]
+    torsional_moment : float
+        M_Y,max, a torsional moment about the bolt axis the interfaces carry, [N*m]
+    torque_interfaces : int
+        q_M, the number of interfaces that carry M_Y, [-]
+    friction_radius : float
+        r_a, the interface's friction radius for M_Y, [m]
 
     Returns
     -------
@@ -748,15 +885,21 @@ def transverse_clamp_force(transverse_load: float, interfaces: int, slip_frictio
 
     Notes
     -----
-    VDI 2230-1:2015 step R2, eq. (R2/1) without torsion; ECSS-E-HB-32-23A
-    eq. 8.2.2.
+    VDI 2230-1:2015 step R2, eq. (R2/1); ECSS-E-HB-32-23A eq. 8.2.2 for the
+    transverse part. With M_Y = 0 it is F_Q/(q_F μ_T) to the bit.
 
     Examples
     --------
     >>> transverse_clamp_force(3000.0, 1, 0.15)
     20000.0
+
+    Plus 30 N·m at r_a = 20 mm on one interface: 30/(0.02 × 0.15) = 10 kN more
+
+    >>> round(transverse_clamp_force(3000.0, 1, 0.15, 30.0, 1, 0.020), 6)
+    30000.0
     """
-    return transverse_load / (interfaces * slip_friction)
+    friction = transverse_load / (interfaces * slip_friction)
+    return friction + torsional_moment / (torque_interfaces * friction_radius * slip_friction)
 
 
 def minimum_assembly_preload(
@@ -1083,11 +1226,13 @@ def endurance_limit(
 # and once for arrays); each is one relation here, floats or arrays.
 
 
-def required_clamp_force(transverse_clamp_force: float, sealing_clamp_force: float) -> float:
+def required_clamp_force(
+    transverse_clamp_force: float, sealing_clamp_force: float, opening_clamp_force: float = 0.0
+) -> float:
     r"""Clamp force the joint needs in service.
 
     .. math::
-        F_{K,erf} = \max(F_{KQ},\ F_{KP})
+        F_{K,erf} = \max(F_{KQ},\ F_{KP} + F_{KA})
 
     All arguments may be floats or numpy arrays of one shape.
 
@@ -1097,6 +1242,9 @@ def required_clamp_force(transverse_clamp_force: float, sealing_clamp_force: flo
         F_KQ, the clamp force that carries the transverse load by friction, [N]
     sealing_clamp_force : float
         F_KP, the clamp force needed for sealing or other reasons, [N]
+    opening_clamp_force : float
+        F_KA, the clamp force that keeps an eccentrically loaded interface from
+        opening at its edge (:func:`opening_clamp_force`; 0 concentric), [N]
 
     Returns
     -------
@@ -1105,15 +1253,17 @@ def required_clamp_force(transverse_clamp_force: float, sealing_clamp_force: flo
 
     Notes
     -----
-    VDI 2230-1:2015 step R2, eq. (R2/4) (the largest of the requirements;
-    without the torsion and tilting terms).
+    VDI 2230-1:2015 step R2, eq. (R2/4): the friction grip or the sealing plus
+    the opening requirement, whichever is larger (without the torsion term).
 
     Examples
     --------
     >>> required_clamp_force(13333.3, 5000.0)
     13333.3
+    >>> required_clamp_force(13333.3, 5000.0, 9000.0)
+    14000.0
     """
-    return _max(transverse_clamp_force, sealing_clamp_force)
+    return _max(transverse_clamp_force, sealing_clamp_force + opening_clamp_force)
 
 
 def plates_expansion_length(thicknesses: Sequence[float], expansions: Sequence[float]) -> float:
@@ -1365,13 +1515,18 @@ def residual_clamp_force(
     )
 
 
-def separation_load(assembly_preload: float, losses: float, load_factor_n: float) -> float:
-    r"""Working load at which the joint opens (no clamp force left).
+def separation_load(
+    assembly_preload: float, losses: float, load_factor_n: float, opening_ratio: float = 0.0
+) -> float:
+    r"""Working load at which the joint opens: no clamp force left, or the edge lifts.
 
     .. math::
-        F_{A,sep} = \frac{\max(F_M - F_Z - \max(\Delta F_{th}, 0),\ 0)}{1 - \Phi_n}
+        F_{A,sep} = \frac{\max(F_M - F_Z - \max(\Delta F_{th}, 0),\ 0)}{1 - \Phi_n},
+        \qquad
+        F_{Aab} = \frac{\max(F_M - F_Z - \max(\Delta F_{th}, 0),\ 0)}{1 - \Phi^*_{en} + k_{ab}}
 
-    infinite where Φ_n ≥ 1 (the plates never unload). Floats or arrays.
+    infinite where the denominator is not positive (the plates never unload).
+    Floats or arrays.
 
     Parameters
     ----------
@@ -1380,25 +1535,36 @@ def separation_load(assembly_preload: float, losses: float, load_factor_n: float
     losses : float
         F_Z + max(ΔF_th, 0), see :func:`preload_losses`, [N]
     load_factor_n : float
-        Φ_n, [-]
+        Φ_n (Φ*_en), [-]
+    opening_ratio : float
+        k_ab = F_KA/F_A of an eccentrically loaded interface
+        (:func:`opening_ratio`; 0 concentric), [-]
 
     Returns
     -------
     float
-        F_A at which F_KR = 0, [N]
+        F_A at which F_KR = F_KA (concentric: F_KR = 0), [N]
 
     Notes
     -----
-    VDI 2230-1:2015 step R12, eq. (R12/1) with F_KR = 0 solved for F_A.
+    VDI 2230-1:2015 step R12, eq. (R12/1) with F_KR = 0 solved for F_A; for an
+    eccentric joint the opening limit F_Aab of §5.3.2, the load at which the
+    residual clamp force F_V − (1 − Φ*_en) F_A falls to R2's F_KA = k_ab F_A
+    (the interface starts to open at its edge u). With k_ab = 0 it is the
+    concentric separation load to the bit.
 
     Examples
     --------
     >>> round(separation_load(30e3, 2.6e3, 0.1), 1)
     30444.4
+
+    The same joint loaded off its bolt, opening ratio 0.5: 27 400/(0.9 + 0.5)
+
+    >>> round(separation_load(30e3, 2.6e3, 0.1, 0.5), 1)
+    19571.4
     """
-    return _quotient(
-        load_factor_n < 1.0, _max(assembly_preload - losses, 0.0), 1.0 - load_factor_n, math.inf
-    )
+    denominator = (1.0 - load_factor_n) + opening_ratio
+    return _quotient(denominator > 0.0, _max(assembly_preload - losses, 0.0), denominator, math.inf)
 
 
 def max_working_load(
@@ -1407,12 +1573,17 @@ def max_working_load(
     required_clamp_force: float,
     losses: float,
     load_factor_n: float,
+    opening_ratio: float = 0.0,
+    sealing_clamp_force: float = 0.0,
 ) -> float:
     r"""Largest working load whose required preload window fits under F_M,zul.
 
     .. math::
         F_{A,max} = \frac{\max(F_{M,zul}/\alpha_A - F_{K,erf} - F_Z
             - \max(\Delta F_{th}, 0),\ 0)}{1 - \Phi_n}
+
+    and, for an eccentrically loaded joint (k_ab > 0), not above the load whose
+    opening requirement F_KP + k_ab F_A fits: (F_M,zul/α_A − F_KP − losses)/(1 − Φ*_en + k_ab).
 
     Parameters
     ----------
@@ -1421,11 +1592,15 @@ def max_working_load(
     tightening_factor : float
         α_A, [-]
     required_clamp_force : float
-        F_K,erf, [N]
+        F_K,erf without the opening requirement, max(F_KQ, F_KP), [N]
     losses : float
         F_Z + max(ΔF_th, 0), [N]
     load_factor_n : float
-        Φ_n, [-]
+        Φ_n (Φ*_en), [-]
+    opening_ratio : float
+        k_ab = F_KA/F_A (:func:`opening_ratio`; 0 concentric), [-]
+    sealing_clamp_force : float
+        F_KP, [N]
 
     Returns
     -------
@@ -1442,9 +1617,17 @@ def max_working_load(
     --------
     >>> round(max_working_load(43.1e3, 1.6, 10e3, 2.6e3, 0.1), 1)
     15930.6
+
+    Loaded eccentrically (k_ab = 0.5, no sealing force): 24 337.5/1.4 = 17 383.9 is
+    above the friction limit, which holds
+
+    >>> round(max_working_load(43.1e3, 1.6, 10e3, 2.6e3, 0.1, 0.5), 1)
+    15930.6
     """
-    floor = permissible_preload / tightening_factor - required_clamp_force
-    return separation_load(floor, losses, load_factor_n)
+    top = permissible_preload / tightening_factor
+    friction = separation_load(top - required_clamp_force, losses, load_factor_n)
+    opening = separation_load(top - sealing_clamp_force, losses, load_factor_n, opening_ratio)
+    return _where(opening_ratio > 0.0, _min(friction, opening), friction)
 
 
 def required_preload_max(tightening_factor: float, required_preload_min: float) -> float:
@@ -1757,11 +1940,14 @@ def slip_safety(
     slip_interfaces: int,
     interface_friction: float,
     transverse_load: float,
+    torsional_moment: float = 0.0,
+    torque_interfaces: int = 1,
+    friction_radius: float = 1.0,
 ) -> float:
     r"""Safety of the interfaces against slipping; infinite without a transverse load.
 
     .. math::
-        S_G = \frac{F_{KR,min}\, q_F\, \mu_{T,min}}{F_{Q,max}}
+        S_G = \frac{F_{KR,min}\, q_F\, \mu_{T,min}}{F_{Q,max} + M_{Y,max}\,q_F/(q_M r_a)}
 
     All arguments may be floats or numpy arrays of one shape.
 
@@ -1775,6 +1961,12 @@ def slip_safety(
         μ_T,min, [1]
     transverse_load : float
         F_Q,max, [N]
+    torsional_moment : float
+        M_Y,max about the bolt axis, [N*m]
+    torque_interfaces : int
+        q_M, [1]
+    friction_radius : float
+        r_a, [m]
 
     Returns
     -------
@@ -1783,17 +1975,26 @@ def slip_safety(
 
     Notes
     -----
-    VDI 2230-1:2015 step R12, eq. (R12/2).
+    VDI 2230-1:2015 step R12, eq. (R12/2): F_KR,min over the F_KQ of
+    :func:`transverse_clamp_force`, the torsional moment as the transverse load
+    it equals on the q_F interfaces. Without M_Y it is F_KR q_F μ_T/F_Q to the bit.
 
     Examples
     --------
     >>> round(slip_safety(20e3, 1, 0.15, 2e3), 3)
     1.5
+
+    Plus 30 N·m at r_a = 20 mm: 3000/(2000 + 1500)
+
+    >>> round(slip_safety(20e3, 1, 0.15, 2e3, 30.0, 1, 0.020), 4)
+    0.8571
     """
+    torsion = torsional_moment * slip_interfaces / (torque_interfaces * friction_radius)
+    demand = transverse_load + torsion
     return _quotient(
-        transverse_load > 0.0,
+        demand > 0.0,
         residual_clamp_force * slip_interfaces * interface_friction,
-        transverse_load,
+        demand,
         math.inf,
     )
 
@@ -1934,7 +2135,11 @@ def joint_diagram(
         ``service_preload_level`` (F_V), ``working_bolt_force_level``
         (F_V + Φ_n F_A) and ``residual_clamp_level`` (F_V − (1 − Φ_n) F_A,
         not below 0). The lines are clipped to 0…1.2 × the largest level so
-        they stay on the plot.
+        they stay on the plot. Two segments of two points each, as VDI draws
+        them: ``working_deformation``/``working_force``, F_A split by Φ_n at the
+        working point f_SV + Φ_n F_A δ_S (from F_KR up to F_S), and
+        ``opening_deformation``/``opening_force``, the same at the separation load
+        F_V/(1 − Φ_n) (from 0 up to the bolt force there; empty where Φ_n ≥ 1).
 
     Notes
     -----
@@ -1947,6 +2152,14 @@ def joint_diagram(
     >>> d = joint_diagram(30e3, 3e-9, 1e-9, 10e3, 0.25, 2e3)
     >>> d["bolt_line"][-1], d["clamped_line"][-1], d["working_bolt_force_level"][0]
     (36600.0, 0.0, 30500.0)
+
+    F_A = 10 kN from 20.5 kN (F_KR) up to 30.5 kN (F_S) at 84 + 7.5 µm; the joint separates
+    at F_V/(1 − Φ_n) = 37.33 kN, where the bolt carries 37.33 kN:
+
+    >>> [round(v * 1e6, 3) for v in d["working_deformation"]], d["working_force"]
+    ([91.5, 91.5], [20500.0, 30500.0])
+    >>> [round(v, 1) for v in d["opening_force"]]
+    [0.0, 37333.3]
     """
     f_sm = preload * bolt
     f_end = f_sm + preload * clamped
@@ -1960,7 +2173,19 @@ def joint_diagram(
         return min(max(v, 0.0), top)
 
     xs = [f_end * i / (points - 1) for i in range(points)]
+    f_work = f_sv + load_factor_n * working_load * bolt
+    opening: dict[str, list[float]] = {"opening_deformation": [], "opening_force": []}
+    if load_factor_n < 1.0:
+        f_sep = max(service, 0.0) / (1.0 - load_factor_n)
+        top_sep = service + load_factor_n * f_sep
+        opening = {
+            "opening_deformation": [f_sv + load_factor_n * f_sep * bolt] * 2,
+            "opening_force": [0.0, top_sep],
+        }
     return {
+        "working_deformation": [f_work, f_work],
+        "working_force": [service - (1.0 - load_factor_n) * working_load, bolt_force],
+        **opening,
         "deformation": xs,
         "bolt_line": [clip(x / bolt) for x in xs],
         "clamped_line": [clip(preload - (x - f_sm) / clamped) for x in xs],
@@ -1970,3 +2195,601 @@ def joint_diagram(
         "working_bolt_force_level": [bolt_force] * points,
         "residual_clamp_level": [residual] * points,
     }
+
+
+# --------------------------------------------------------------------------- eccentric joint
+#
+# VDI 2230-1:2015 §5.3.2: the bolt off the axis O–O of the clamped body (s_sym), the working
+# load at a lever a from it, the interface's edge u where it opens first. Every relation
+# reduces to the concentric one at s_sym = a = u = 0 (to the bit: the offsets multiply).
+
+
+def cone_bending_inertia(bearing_diameter: float, cone_diameter: float) -> float:
+    r"""Second moment of area of VDI's deformation cone about its own axis.
+
+    .. math::
+        I_{V,Bers} = 0.147\,\frac{(D_A' - d_W)\,d_W^3\,D_A'^3}{D_A'^3 - d_W^3}
+            = 0.147\,\frac{d_W^3\,D_A'^3}{D_A'^2 + D_A' d_W + d_W^2}
+
+    Parameters
+    ----------
+    bearing_diameter : float
+        d_W, [m]
+    cone_diameter : float
+        D_A' = min(D_A, D_A,Gr), where the cone ends, [m]
+
+    Returns
+    -------
+    float
+        I_V,Bers, [m^4]
+
+    Notes
+    -----
+    VDI 2230-1:2015 §5.3.2 (substitute moment of inertia of the cone), as the
+    open implementation h18340637145/vdi2230 states it; written in the second,
+    factored form so that D_A' = d_W gives its limit 0.049 d_W⁴ (≈ π d_W⁴/64)
+    instead of 0/0.
+
+    Examples
+    --------
+    >>> round(cone_bending_inertia(0.01663, 0.03609) * 1e12, 1)
+    14583.2
+    """
+    d_w, outer = bearing_diameter, cone_diameter
+    return 0.147 * d_w**3 * outer**3 / (outer * outer + outer * d_w + d_w * d_w)
+
+
+def substitute_bending_inertia(
+    grip: float,
+    bearing_diameter: float,
+    cone_diameter: float,
+    tangent: float,
+    bolt_offset: float,
+    interface_width: float,
+    interface_length: float,
+    joint: str = "through",
+) -> float:
+    r"""Substitute second moment I_Bers of the clamped body about its axis O–O.
+
+    .. math::
+        I_{ve,Bers} = I_{V,Bers} + s_{sym}^2\,\frac{\pi}{4} D_A'^2,\quad
+        I_{H,Bers} = \frac{b\,c_T^3}{12},\quad
+        l_V = \frac{D_A' - d_W}{2\tan\varphi},\quad l_H = l_K - \frac{2 l_V}{w}
+
+    .. math::
+        I_{Bers} = \frac{l_K}{\dfrac{2 l_V}{w\,I_{ve,Bers}} + \dfrac{l_H}{I_{H,Bers}}}
+
+    Parameters
+    ----------
+    grip : float
+        l_K, [m]
+    bearing_diameter : float
+        d_W, [m]
+    cone_diameter : float
+        D_A' = min(D_A, D_A,Gr), [m]
+    tangent : float
+        tan φ of the cone, [-]
+    bolt_offset : float
+        s_sym, the bolt axis's distance from the body's axis O–O, [m]
+    interface_width : float
+        b, the interface's width across the bending plane, [m]
+    interface_length : float
+        c_T, the interface's length in the bending plane, [m]
+    joint : str
+        ``"through"`` (w = 1, two cones) or ``"tapped"`` (w = 2, one)
+
+    Returns
+    -------
+    float
+        I_Bers, [m^4]
+
+    Notes
+    -----
+    VDI 2230-1:2015 §5.3.2: the cone (shifted to O–O by Steiner's term) and the
+    sleeve of the prismatic body b × c_T in series along the grip; a fully
+    developed cone (D_A ≥ D_A,Gr, l_H = 0) gives I_ve,Bers alone. The open
+    implementation h18340637145/vdi2230 combines them the same way (it writes
+    l_V without the parentheses around D_A − d_W; we take the cone height).
+
+    Examples
+    --------
+    M12, l_K = 40 mm through, D_A' = 30 mm < D_A,Gr, tan φ = 0.5, bolt 10 mm off
+    the axis of a 40 × 60 mm interface (b = 40, c_T = 60):
+
+    >>> round(substitute_bending_inertia(0.040, 0.01663, 0.030, 0.5, 0.010, 0.040, 0.060)
+    ...       * 1e12)
+    115543
+    """
+    w = 1.0 if joint == "through" else 2.0
+    cone = cone_bending_inertia(bearing_diameter, cone_diameter) + bolt_offset**2 * _area(
+        cone_diameter
+    )
+    sleeve = interface_width * interface_length**3 / 12.0
+    cone_length = _max((cone_diameter - bearing_diameter) / (2.0 * tangent), 0.0)  # 0: a sleeve
+    sleeve_length = _max(grip - 2.0 * cone_length / w, 0.0)
+    return grip / (2.0 * cone_length / (w * cone) + sleeve_length / sleeve)
+
+
+def clamped_bending_compliance(
+    thicknesses: Sequence[float], youngs_moduli: Sequence[float], inertia: float
+) -> float:
+    r"""Bending compliance β_P of the clamped parts.
+
+    .. math::
+        \beta_P = \frac{1}{I_{Bers}} \sum_i \frac{h_i}{E_i}
+            \quad\left(= \frac{l_K}{E_P I_{Bers}}\ \text{for one material}\right)
+
+    Parameters
+    ----------
+    thicknesses : sequence of float
+        h_i, [m]
+    youngs_moduli : sequence of float
+        E_i, [Pa]
+    inertia : float
+        I_Bers (:func:`substitute_bending_inertia`); inf gives β_P = 0, [m^4]
+
+    Returns
+    -------
+    float
+        β_P, [1/(N*m)]
+
+    Notes
+    -----
+    VDI 2230-1:2015 §5.3.2, β_P = l_K/(E_P I_Bers); plates of several moduli in
+    series along the grip, each over the same I_Bers (our extension of VDI's one E_P).
+
+    Examples
+    --------
+    >>> round(clamped_bending_compliance([0.02, 0.02], [2.1e11, 2.1e11], 2.4e-7) * 1e6, 4)
+    0.7937
+    """
+    length: Any = 0.0
+    for h, e in zip(thicknesses, youngs_moduli, strict=True):
+        length = length + h / e
+    return length / inertia
+
+
+def eccentric_compliance(clamped: float, bending: float, bolt_offset: float, lever: float) -> float:
+    r"""Axial compliance of eccentrically clamped (δ*_P) or loaded (δ**_P) plates.
+
+    .. math::
+        \delta^*_P = \delta_P + s_{sym}^2\,\beta_P,\qquad
+        \delta^{**}_P = \delta_P + s_{sym}\,a\,\beta_P
+
+    Parameters
+    ----------
+    clamped : float
+        δ_P, [m/N]
+    bending : float
+        β_P, [1/(N*m)]
+    bolt_offset : float
+        s_sym, [m]
+    lever : float
+        s_sym for δ*_P, the load's lever a for δ**_P, [m]
+
+    Returns
+    -------
+    float
+        δ*_P or δ**_P, [m/N]
+
+    Notes
+    -----
+    VDI 2230-1:2015 §5.3.2 (eq. 5.3/… for δ*_P and δ**_P); zero offsets give δ_P.
+
+    Examples
+    --------
+    >>> round(eccentric_compliance(0.6e-9, 2e-6, 0.005, 0.005) * 1e9, 4)
+    0.65
+    >>> round(eccentric_compliance(0.6e-9, 2e-6, 0.005, 0.02) * 1e9, 4)
+    0.8
+    """
+    return clamped + bolt_offset * lever * bending
+
+
+def interface_section(width: float, length: float, hole_diameter: float) -> tuple[float, float]:
+    r"""Area and second moment of the interface (the bending plane's section of the joint).
+
+    .. math::
+        A_D = b\,c_T - \frac{\pi}{4} d_h^2,\qquad I_{BT} = \frac{b\,c_T^3}{12}
+
+    Parameters
+    ----------
+    width : float
+        b, [m]
+    length : float
+        c_T, [m]
+    hole_diameter : float
+        d_h, [m]
+
+    Returns
+    -------
+    tuple of float
+        (A_D [m^2], I_BT [m^4])
+
+    Notes
+    -----
+    VDI 2230-1:2015 R2 (the opening requirement's section of a rectangular
+    interface; the hole is left out of I_BT, as VDI's and the open
+    implementation h18340637145/vdi2230's b c_T³/12).
+
+    Examples
+    --------
+    >>> a, i = interface_section(0.040, 0.060, 0.0135)
+    >>> round(a * 1e6, 2), round(i * 1e12)
+    (2256.86, 720000)
+    """
+    return width * length - _area(hole_diameter), width * length**3 / 12.0
+
+
+def opening_ratio(
+    load_lever: float,
+    bolt_offset: float,
+    edge_distance: float,
+    interface_area: float,
+    interface_inertia: float,
+) -> float:
+    r"""Clamp force per newton of working load that keeps the interface's edge closed.
+
+    .. math::
+        k_{ab} = \max\left(\frac{(a - s_{sym})\,u}{I_{BT}/A_D + s_{sym}\,u},\ 0\right)
+            = \frac{F_{KA}}{F_A}
+
+    Parameters
+    ----------
+    load_lever : float
+        a, the working load's distance from the axis O–O, [m]
+    bolt_offset : float
+        s_sym, [m]
+    edge_distance : float
+        u, the distance from O–O of the interface edge that opens first, [m]
+    interface_area : float
+        A_D, [m^2]
+    interface_inertia : float
+        I_BT, [m^4]
+
+    Returns
+    -------
+    float
+        k_ab, [-] (0 where the load line is not beyond the bolt: the edge does
+        not open before the whole interface separates)
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R2, eq. (R2/3) with M_B = 0: F_KA = F_A (a u − s_sym u)
+    /(I_BT/A_D + s_sym u), the linear pressure of the interface falling to zero
+    at the edge; the open implementation h18340637145/vdi2230 computes the same.
+
+    Examples
+    --------
+    Load 40 mm out, bolt 10 mm off, edge 30 mm, 40 × 60 mm interface:
+
+    >>> round(opening_ratio(0.040, 0.010, 0.030, 2256.86e-6, 720000e-12), 4)
+    1.4539
+    """
+    moment = (load_lever - bolt_offset) * edge_distance
+    ratio = moment / (interface_inertia / interface_area + bolt_offset * edge_distance)
+    return _max(ratio, 0.0)
+
+
+def opening_clamp_force(working_load: float, opening_ratio: float) -> float:
+    r"""Clamp force F_KA that keeps an eccentrically loaded interface from opening.
+
+    .. math::
+        F_{KA} = k_{ab}\,F_{A,max}
+
+    Parameters
+    ----------
+    working_load : float
+        F_A,max, [N]
+    opening_ratio : float
+        k_ab (:func:`opening_ratio`), [-]
+
+    Returns
+    -------
+    float
+        F_KA, [N]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R2, eq. (R2/3) (M_B = 0); it adds to the sealing
+    force F_KP in F_K,erf (:func:`required_clamp_force`).
+
+    Examples
+    --------
+    >>> round(opening_clamp_force(8e3, 1.4539), 1)
+    11631.2
+    """
+    return opening_ratio * working_load
+
+
+def eccentric_stress_factor(
+    load_factor_en: float,
+    load_lever: float,
+    bolt_offset: float,
+    clamped_bending: float,
+    bolt_bending: float,
+    stress_diameter: float,
+) -> float:
+    r"""Share Φ_b of the working load that the bolt's thread sees as stress, with bending.
+
+    .. math::
+        \sigma_{SAb} = \Phi_b \frac{F_A}{A_S},\qquad
+        \Phi_b = \Phi^*_{en} + (a - s_{sym}\Phi^*_{en})\,
+            \frac{\beta_P}{\beta_S}\,\frac{A_S}{W_S},\quad W_S = \frac{\pi}{32} d_S^3
+
+    which is VDI's σ_SAb = [1 + (1/Φ*_en − s_sym/a)(l_K/l_ers)(E_S/E_P)
+    π a d_S³/(8 I_Bers)] Φ*_en F_A/A_S with l_ers = β_S E_S π d_S⁴/64.
+
+    Parameters
+    ----------
+    load_factor_en : float
+        Φ*_en, [-]
+    load_lever : float
+        a, [m]
+    bolt_offset : float
+        s_sym, [m]
+    clamped_bending : float
+        β_P, [1/(N*m)]
+    bolt_bending : float
+        β_S, [1/(N*m)]
+    stress_diameter : float
+        d_S, [m]
+
+    Returns
+    -------
+    float
+        Φ_b, [-] (Φ*_en where a = s_sym = 0)
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R9, eq. (R9/… σ_SAb) for F_A ≤ F_Aab: the bending moment
+    (a − s_sym Φ*_en) F_A that the plates take turns them by β_P per N·m, and the
+    bolt, bent through the same angle, carries β_P/β_S of it at its section
+    modulus W_S. VDI writes the bolt's bending compliance through a substitute
+    length l_ers; taking it at the stress section (l_ers = β_S E_S π d_S⁴/64) is
+    what makes its relation this beam result; the open implementation
+    h18340637145/vdi2230 refers l_ers to the nominal section instead (π d⁴/64)
+    and leaves the engaged thread out of it, which gives a bending term 0.63 times
+    ours for M12 through 40 mm (tests/validation/test_joint_eccentric.py).
+
+    Examples
+    --------
+    Φ*_en = 0.2, a = 20 mm, s_sym = 5 mm, β_P = 2e-6, β_S = 5e-4 /(N m), d_S = 10.358 mm:
+    A_S/W_S = 8/d_S
+
+    >>> round(eccentric_stress_factor(0.2, 0.020, 0.005, 2e-6, 5e-4, 0.010358), 4)
+    0.2587
+    """
+    return load_factor_en + (load_lever - bolt_offset * load_factor_en) * (
+        clamped_bending / bolt_bending
+    ) * (8.0 / stress_diameter)
+
+
+def additional_bolt_stress(stress_factor: float, working_load: float, stress_area: float) -> float:
+    r"""Additional stress in the bolt's thread under the working load, bending included.
+
+    .. math::
+        \sigma_{SAb} = \Phi_b \frac{F_{A,max}}{A_S}
+
+    Parameters
+    ----------
+    stress_factor : float
+        Φ_b from :func:`eccentric_stress_factor` (Φ_n for a concentric joint), [-]
+    working_load : float
+        F_A,max, [N]
+    stress_area : float
+        A_S, [m^2]
+
+    Returns
+    -------
+    float
+        σ_SAb (σ_SA = Φ_n F_A/A_S concentric), [Pa]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R9 (σ_SAbo at F_A,max, valid up to the opening limit F_Aab).
+
+    Examples
+    --------
+    >>> round(additional_bolt_stress(0.2587, 8e3, 84.27e-6) / 1e6, 2)
+    24.56
+    """
+    return stress_factor * working_load / stress_area
+
+
+# --------------------------------------------------------------------------- many bolts
+
+
+def ring_flange_axial_load(
+    axial_force: float, bending_moment: float, bolts: int, circle_diameter: float
+) -> float:
+    r"""Working load of the most loaded bolt of a rigid ring flange of z equal bolts.
+
+    .. math::
+        F_{A,max} = \frac{F_{ax}}{z} + \frac{4\,M_B}{z\,D_t}
+
+    Parameters
+    ----------
+    axial_force : float
+        F_ax, the flange's axial (opening) force, [N]
+    bending_moment : float
+        M_B, the bending moment on the flange about a diameter, [N*m]
+    bolts : int
+        z, equally spaced on the bolt circle (≥ 3), [1]
+    circle_diameter : float
+        D_t, the bolt circle diameter, [m]
+
+    Returns
+    -------
+    float
+        F_A of the bolt farthest from the bending axis, [N]
+
+    Notes
+    -----
+    VDI 2230-1:2015 §3.1 (the single-bolt joint cut from a multi-bolt joint, the
+    simplification of VDI 2230 Part 2 for rigid flanges): the interface stays
+    closed and the flanges rigid, so the bolt loads are linear in their distance
+    from the neutral axis through the circle's centre; for z ≥ 3 equally spaced
+    bolts Σ y_i² = z D_t²/8, and the load on a bolt on the bending plane is the
+    largest (a bolt half a pitch off it carries cos(π/z) of the bending share).
+    It does not hold once the interface opens (tilting about the flange's edge)
+    or for flexible flanges and gaskets (VDI 2230 Part 2's models).
+
+    Examples
+    --------
+    100 kN and 5 kN·m on 8 bolts on a 200 mm circle: 12.5 kN + 12.5 kN
+
+    >>> ring_flange_axial_load(100e3, 5e3, 8, 0.200)
+    25000.0
+    """
+    return axial_force / bolts + 4.0 * bending_moment / (bolts * circle_diameter)
+
+
+def ring_flange_transverse_load(
+    transverse_force: float, torque: float, bolts: int, circle_diameter: float
+) -> float:
+    r"""Transverse load per bolt of a ring flange under a shear force and a torque.
+
+    .. math::
+        F_{Q,max} = \frac{F_Q}{z} + \frac{2\,M_T}{z\,D_t}
+
+    Parameters
+    ----------
+    transverse_force : float
+        F_Q, the flange's shear force, [N]
+    torque : float
+        M_T, the torque about the flange's axis, [N*m]
+    bolts : int
+        z, [1]
+    circle_diameter : float
+        D_t, [m]
+
+    Returns
+    -------
+    float
+        F_Q per bolt, the torque's share tangential and the shear force's added
+        to it at the bolt where both point the same way, [N]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R2 (F_KQ from the transverse load per bolt; a torque on a
+    bolt circle is carried by friction at radius D_t/2, equally by every bolt) with
+    the same rigid-flange simplification as :func:`ring_flange_axial_load`.
+
+    Examples
+    --------
+    2 kN·m on 8 bolts on a 200 mm circle, no shear force: 2 × 2000/(8 × 0.2)
+
+    >>> ring_flange_transverse_load(0.0, 2e3, 8, 0.200)
+    2500.0
+    """
+    return transverse_force / bolts + 2.0 * torque / (bolts * circle_diameter)
+
+
+# --------------------------------------------------------------------------- fitted bolts
+
+
+def fitted_shank_shear_stress(
+    transverse_load: float, shear_planes: int, fitted_diameter: float
+) -> float:
+    r"""Shear stress in the fitted shank of a bolt that carries the transverse load itself.
+
+    .. math::
+        \tau_Q = \frac{F_{Q,max}}{q_F\,A_\tau},\qquad A_\tau = \frac{\pi}{4} d_\tau^2
+
+    Parameters
+    ----------
+    transverse_load : float
+        F_Q,max, [N]
+    shear_planes : int
+        q_F, the interfaces the shank crosses (one shear section each), [1]
+    fitted_diameter : float
+        d_τ, the fitted shank's diameter, [m]
+
+    Returns
+    -------
+    float
+        τ_Q, [Pa]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R12 (fitted bolts: τ_Q,max = F_Q,max/A_τ against τ_B with
+    S_A ≥ 1.1), the load shared equally by the q_F shear sections.
+
+    Examples
+    --------
+    20 kN in single shear on a 13 mm fitted shank: 20 000/132.73 mm²
+
+    >>> round(fitted_shank_shear_stress(20e3, 1, 0.013) / 1e6, 2)
+    150.68
+    """
+    return transverse_load / (shear_planes * _area(fitted_diameter))
+
+
+def fitted_bearing_pressure(
+    transverse_load: float, fitted_diameter: float, thinnest_plate: float
+) -> float:
+    r"""Bearing pressure of a fitted shank on the hole wall of the thinnest plate.
+
+    .. math::
+        p_Q = \frac{F_{Q,max}}{d_\tau\,h_{min}}
+
+    Parameters
+    ----------
+    transverse_load : float
+        F_Q,max, [N]
+    fitted_diameter : float
+        d_τ, [m]
+    thinnest_plate : float
+        h_min, the thinnest clamped plate, [m]
+
+    Returns
+    -------
+    float
+        p_Q, [Pa]
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R12 (fitted bolts: the hole wall's bearing, to be held
+    against the plate material's bearing strength); the projected area of the
+    thinnest plate carrying the whole F_Q is the conservative case.
+
+    Examples
+    --------
+    >>> round(fitted_bearing_pressure(20e3, 0.013, 0.010) / 1e6, 1)
+    153.8
+    """
+    return transverse_load / (fitted_diameter * thinnest_plate)
+
+
+def fitted_shear_safety(tensile_strength: float, shear_stress: float) -> float:
+    r"""Safety of a fitted shank against shearing off.
+
+    .. math::
+        S_A = \frac{\tau_B}{\tau_Q},\qquad \tau_B = 0.6\,R_m
+
+    Parameters
+    ----------
+    tensile_strength : float
+        R_m of the bolt, [Pa]
+    shear_stress : float
+        τ_Q (:func:`fitted_shank_shear_stress`), [Pa]
+
+    Returns
+    -------
+    float
+        S_A, [-] (VDI asks ≥ 1.1; infinite without a transverse load)
+
+    Notes
+    -----
+    VDI 2230-1:2015 step R12; τ_B/R_m = 0.6, the ratio the engine takes for the
+    bolt's thread shear as well (:data:`engine.procedures.bolt.BOLT_SHEAR_RATIO`).
+
+    Examples
+    --------
+    >>> round(fitted_shear_safety(800e6, 150.68e6), 3)
+    3.186
+    """
+    return _quotient(
+        shear_stress > 0.0, SHANK_SHEAR_RATIO * tensile_strength, shear_stress, math.inf
+    )

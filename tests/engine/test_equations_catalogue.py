@@ -63,6 +63,17 @@ KNOWN_STEPS = {
         "endurance_limit",
         "tightening_torque_per_preload",
     ),
+    # the most loaded bolt's loads, then joint.vdi2230's chain for it
+    "joint.flange": (
+        "ring_flange_axial_load",
+        "ring_flange_transverse_load",
+        "stress_area",
+        "bolt_compliance",
+        "load_factor",
+        "embedding_loss",
+        "minimum_assembly_preload",
+        "service_stress",
+    ),
     "preload.tightening": ("stress_area", "assembly_preload", "thread_torque", "friction_radius"),
     "preload.control": ("stress_area", "assembly_preload", "thread_torque", "thread_stripping"),
     "nutrunner.drive": ("flywheel_speed", "impact_torque", "spin_up_time"),

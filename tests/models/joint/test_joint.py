@@ -296,7 +296,7 @@ def test_joint_diagram_lines_cross_at_the_preload():
 @pytest.mark.parametrize(
     ("extra", "field"),
     [
-        ({"outer_diameter": 0.015}, "outer_diameter"),
+        ({"outer_diameter": 0.0135}, "outer_diameter"),  # D_A = d_h: no wall left
         ({"plate1_thickness": -0.01}, "plate1_thickness"),
         ({"plate2_thickness": -0.01}, "plate2_thickness"),
         ({"shank_length": 0.05}, "shank_length"),
