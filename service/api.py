@@ -152,7 +152,12 @@ def _encoder(spec: ModelSpec) -> Any:
             if not (type(c["name"]) is str and type(c["detail"]) is str):
                 raise WrongKind("a check's name and detail are texts")
         answer["checks"] = [
-            {"name": c["name"], "ok": _coerce("bool", c["ok"]), "detail": c["detail"]}
+            {
+                "name": c["name"],
+                "ok": _coerce("bool", c["ok"]),
+                "detail": c["detail"],
+                "level": c.get("level", "requirement"),
+            }
             for c in checks
         ]
         for text in (*answer["notes"], *answer["warnings"]):

@@ -181,7 +181,7 @@ def test_a_grid_shows_check_pass_fractions_and_the_feasible_map(gate_page: Any) 
     e = _expected()
     meta = pg.inner_text("#study-meta")
     assert "121 designs (grid), 3 refused" in meta
-    assert f"feasible (every reported check passes): {_pct(e['feasible'], 118)}" in meta
+    assert f"feasible (every reported requirement passes): {_pct(e['feasible'], 118)}" in meta
     items = _checks(pg)
     ok, bad = e["counts"]["gap_closed"]
     assert any(
@@ -190,7 +190,7 @@ def test_a_grid_shows_check_pass_fractions_and_the_feasible_map(gate_page: Any) 
     ), items
     ok, bad = e["counts"]["a_fits"]
     assert any(f"a fits: {_pct(ok, ok + bad)} pass ({ok} pass, {bad} fail" in t for t in items)
-    assert any(f"all checks: {_pct(e['feasible'], 118)}" in t for t in items), items
+    assert any(f"all requirements: {_pct(e['feasible'], 118)}" in t for t in items), items
     assert "not evaluated on the model's array path" not in pg.inner_text("#study-notes")
     # the map: drawn, with the feasible region outlined in red (#b3261e)
     assert pg.is_visible("#study-map")
@@ -261,7 +261,8 @@ def test_the_ball_clutch_grid_shows_the_checks_its_array_path_reports(clutch_pag
         line = f"{name.replace('_', ' ')}: {_pct(ok, 64)} pass ({ok} pass, {bad} fail)"
         assert any(line in t for t in items), (line, items)
     assert any(
-        f"all checks: {_pct(feasible, 64)} pass ({feasible} of 64 designs)" in t for t in items
+        f"all requirements: {_pct(feasible, 64)} pass ({feasible} of 64 designs)" in t
+        for t in items
     )
     assert "not evaluated on the model's array path" not in pg.inner_text("#study-notes")
     assert pg.is_visible("#study-map")
