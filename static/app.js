@@ -870,8 +870,8 @@ async function compute() {
   renderResult(m, data);
   markStale();
   renderReport(m);
-  const failed = data.checks.filter((c) => !c.ok).length;
-  announce(`Computed (method ${data.rung})${data.checks.length ? `: ${failed ? `${failed} of ${data.checks.length} checks fail` : "every check passes"}` : ""}.`);
+  const verdict = verdictText(m, data);
+  announce(`Computed (method ${data.rung})${verdict ? `: ${verdict}` : ""}.`);
   document.getElementById("to-result").hidden = false;
   showAnswer();
   document.body.dataset.result = "ok";
@@ -1049,16 +1049,93 @@ function resultRows(m, data, { interactive = false, withDesc = true } = {}) {
   return rows;
 }
 
-/** Failed checks first, each with the action it suggests; or one line saying all pass. */
-function checkSummary(data) {
-  if (!data.checks.length) return null;
-  const failed = data.checks.filter((c) => !c.ok);
-  if (!failed.length) {
-    return el("p", { class: "check-summary ok", id: "check-summary" }, `✓ All ${data.checks.length} checks pass.`);
-  }
-  return el("div", { class: "check-summary fail", id: "check-summary" },
-    el("strong", {}, `✗ ${failed.length} of ${data.checks.length} check${data.checks.length > 1 ? "s" : ""} fail${failed.length > 1 ? "" : "s"}:`),
-    el("ul", {}, ...failed.map((c) => el("li", {}, el("strong", {}, c.name.replaceAll("_", " ")), ": ", c.detail))));
+/** A symbol as the standard writes it: "F_M,min" -> F with "M,min" set below. */
+function symbolNode(sym) {
+  const i = String(sym).indexOf("_");
+  if (i < 0) return el("var", { class: "sym" }, sym);
+  return el("var", { class: "sym" }, sym.slice(0, i), el("sub", {}, sym.slice(i + 1)));
+}
+
+/** Checks split by level: requirements (a standard's: they fail) and advice (they warn). */
+function checkLevels(data) {
+  const req = data.checks.filter((c) => c.level !== "advice");
+  const adv = data.checks.filter((c) => c.level === "advice");
+  return { req, adv, failed: req.filter((c) => !c.ok), warned: adv.filter((c) => !c.ok) };
+}
+
+/** The verdict in words: "passes VDI 2230" or "2 of 6 requirements fail". */
+function verdictText(m, data) {
+  const { req, failed, warned } = checkLevels(data);
+  const warn = warned.length ? `, ${warned.length} warning${warned.length > 1 ? "s" : ""}` : "";
+  if (!req.length) return data.checks.length ? `no requirement checked${warn}` : "";
+  if (!failed.length) return `passes ${m.requirements_of || `every requirement (${req.length})`}${warn}`;
+  const of = m.requirements_of ? `${m.requirements_of} ` : "";
+  return `${failed.length} of ${req.length} ${of}requirement${req.length > 1 ? "s" : ""} fail${failed.length > 1 ? "" : "s"}${warn}`;
+}
+
+function checkName(c) {
+  return c.name.replaceAll("_", " ");
+}
+
+/** The verdict banner (requirements counted) and, apart, the failing requirements named and
+ *  the advice not followed listed as warnings. */
+function checkSummary(m, data, interactive = true) {
+  if (!data.checks.length) return [null, null];
+  const id = (x) => (interactive ? x : null);
+  const { failed, warned } = checkLevels(data);
+  const item = (c) => el("li", {}, el("strong", {}, checkName(c)), ": ", c.detail);
+  const banner = el("div", { class: `check-summary ${failed.length ? "fail" : "ok"}`, id: id("check-summary") },
+    el("strong", { class: "verdict", id: id("verdict") }, (failed.length ? "✗ " : "✓ ") + verdictText(m, data)));
+  const details = failed.length || warned.length ? el("div", { class: "verdict-details" },
+    failed.length ? el("ul", { class: "failed", id: id("failed") }, ...failed.map(item)) : null,
+    warned.length ? el("p", { class: "advice-head" }, "⚠ Advice not followed (a rule of thumb or a recommendation: it does not fail the design):") : null,
+    warned.length ? el("ul", { class: "advice", id: id("advice") }, ...warned.map(item)) : null) : null;
+  return [banner, details];
+}
+
+/** A value of one output in its best unit, with the unit: "73.5 N·m". */
+function valueText(m, data, name) {
+  const o = m.outputs.find((x) => x.name === name);
+  const v = data.results[name];
+  if (!o || v === null || v === undefined) return "—";
+  if (typeof v !== "number") return choiceText(String(v));
+  const u = outputUnit(o, v);
+  const digits = o.kind === "int" ? 12 : sigFigs(data.error_estimate);
+  return `${signOf(o) && v > 0 ? "±" : ""}${fmt(v / u.factor, digits)}${u.label ? " " + u.label : ""}`;
+}
+
+/** A required value declared as a number (SI), in the unit its output is shown in: "1.2". */
+function boundText(o, bound, v) {
+  const u = outputUnit(o, v);
+  return `${short(bound / u.factor, 4)}${u.label ? " " + u.label : ""}`;
+}
+
+/**
+ * The answer card: the numbers the model's question asks for (declared in its spec), each
+ * with its symbol, its required value and the verdict of the check that judges it; the
+ * verdict of the standard's requirements above them.
+ */
+function answerCard(m, data, { interactive = true } = {}) {
+  // an answer the model does not give for this design (S_G without a transverse load) is left out
+  const items = (m.answer || []).filter((a) => data.results[a.output] !== null && data.results[a.output] !== undefined);
+  if (!items.length && !data.checks.length) return null;
+  const byName = Object.fromEntries(data.checks.map((c) => [c.name, c]));
+  const rows = items.map((a) => {
+    const o = m.outputs.find((x) => x.name === a.output);
+    const c = a.check ? byName[a.check] : null;
+    const bound = a.bound === null || a.bound === undefined ? null
+      : typeof a.bound === "string" ? valueText(m, data, a.bound)
+        : boundText(o, a.bound, data.results[a.output]);
+    const need = a.relation ? [` ${a.relation} `, a.bound_symbol ? [symbolNode(a.bound_symbol), " "] : null, bound] : null;
+    return el("li", { "data-answer": a.output, class: c ? (c.ok ? "ok" : c.level === "advice" ? "warn" : "fail") : null },
+      el("span", { class: "what" }, labelOf(o)), " ",
+      symbolNode(a.symbol), " = ", el("strong", { class: "value" }, valueText(m, data, a.output)),
+      need ? el("span", { class: "need" }, ...need.flat()) : null,
+      c ? el("span", { class: "mark", title: c.detail }, c.ok ? " ✓" : c.level === "advice" ? " ⚠" : " ✗") : null);
+  });
+  const [banner, details] = checkSummary(m, data, interactive);
+  return el("section", { class: "answer-card", id: interactive ? "answer-card" : null, "aria-label": "the answer" },
+    banner, rows.length ? el("ul", { class: "answers" }, ...rows) : null, details);
 }
 
 /** When the method's error is large and a finer one exists, say which to pick. */
@@ -1084,7 +1161,9 @@ function resultParts(m, data, { interactive = false } = {}) {
     ` · shown to ${sig} significant figures`);
   const checks = data.checks.length
     ? el("ul", { class: "checks", id: interactive ? "checks" : null }, ...data.checks.map((c) =>
-      el("li", { class: c.ok ? "ok" : "fail" }, el("span", { class: "mark" }, c.ok ? "✓ pass " : "✗ fail "), el("strong", {}, c.name), ": ", c.detail)))
+      el("li", { class: c.ok ? "ok" : c.level === "advice" ? "warn" : "fail", "data-level": c.level || "requirement" },
+        el("span", { class: "mark" }, c.ok ? "✓ pass " : c.level === "advice" ? "⚠ advice " : "✗ fail "), el("strong", {}, c.name),
+        c.level === "advice" ? el("span", { class: "muted" }, " (advice)") : null, ": ", c.detail)))
     : null;
   const warnings = data.warnings.length
     ? el("ul", { class: "warnings", id: interactive ? "warnings" : null }, ...data.warnings.map((w) => el("li", {}, "⚠ ", w))) : null;
@@ -1096,7 +1175,8 @@ function resultParts(m, data, { interactive = false } = {}) {
     el("table", { id: interactive ? "results" : null, class: "results" }, el("tbody", {}, ...resultRows(m, data, { interactive, withDesc: interactive }))));
   if (!interactive) return [meta, table, checks ? el("h3", {}, "Checks") : null, checks, warnings ? el("h3", {}, "Warnings") : null, warnings, notes ? el("h3", {}, "Notes") : null, notes].filter(Boolean);
   return [
-    el("h3", { id: "result-heading", tabindex: "-1" }, "Results"), checkSummary(data), meta, methodHint(m, data), table,
+    el("h3", { id: "result-heading", tabindex: "-1" }, "Results"), answerCard(m, data), meta, methodHint(m, data),
+    el("h4", {}, "Every result"), table,
     checks ? el("h4", {}, "Checks") : null, checks,
     warnings ? el("h4", {}, "Warnings") : null, warnings,
     notes ? el("h4", {}, "Notes") : null, notes,
@@ -1677,7 +1757,7 @@ function renderReport(m) {
     el("p", { class: "summary" }, m.summary),
     el("p", { class: "source" }, el("strong", {}, "Source: "), m.source),
     sources.length ? el("ul", { class: "sources" }, ...sources) : null,
-    checkSummary(data),
+    answerCard(m, data, { interactive: false }),
     (m.assumptions || []).length ? el("h3", {}, "Assumptions") : null,
     (m.assumptions || []).length ? el("ul", { class: "notes assumptions" }, ...m.assumptions.map((x) => el("li", {}, x))) : null,
     el("div", { class: "two-col" },

@@ -574,6 +574,9 @@ class ModelSpec:
     advice: frozenset[str] = frozenset()
     #: The outputs that answer the model's question, in the order the answer card shows them.
     answer: tuple[Answer, ...] = ()
+    #: Whose requirements the checks hold, for the verdict ("passes VDI 2230"); empty:
+    #: "passes every requirement".
+    requirements_of: str = ""
     #: Derived from :attr:`name`: ``clutch.ball_setting`` is served at ``/clutch/ball_setting``.
     path: str = field(init=False)
     #: Lookup tables derived once from the declaration (every :func:`engine.run` used to
@@ -756,6 +759,7 @@ class ModelSpec:
             "assumptions": list(self.assumptions),
             "advice": sorted(self.advice),
             "answer": [a.describe() for a in self.answer],
+            "requirements_of": self.requirements_of,
             "examples": [dict(e) for e in self.examples],
             # read from the engine functions' docstrings, for the calculation report
             "equations": [dict(e) for e in self.equations()],

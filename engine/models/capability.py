@@ -367,6 +367,7 @@ RUN_OF_50 = tuple(round(50.0 + 0.9 * ((i * 37) % 50 - 24.5) / 24.5, 3) for i in 
 
 CAPABILITY = ModelSpec(
     name="tool.capability",
+    requirements_of="VDI/VDE 2645-2",
     answer=(
         Answer(
             "capability_index",

@@ -1691,6 +1691,7 @@ CLOSED_FORM = Rung(
 
 VDI2230 = ModelSpec(
     name="joint.vdi2230",
+    requirements_of="VDI 2230",
     advice=frozenset(("seed_004_preload_stress", "nut_class_pairing")),
     answer=(
         Answer("tightening_torque", "M_A"),
