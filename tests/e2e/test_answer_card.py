@@ -44,7 +44,10 @@ def _joint_registered() -> None:
 
 @pytest.mark.parametrize("viewport", [DESKTOP, PHONE], ids=["desktop", "phone"])
 def test_the_issue_joint_passes_vdi_2230_with_the_rule_of_thumb_as_a_warning(
-    page: Any, api: httpx.Client, base_url: str, viewport: dict[str, int]
+    page: Any,  # noqa: F811
+    api: httpx.Client,  # noqa: F811
+    base_url: str,  # noqa: F811
+    viewport: dict[str, int],
 ) -> None:
     page.set_viewport_size(viewport)
     _open(page, base_url, _joint_link(ISSUE_JOINT))
@@ -72,7 +75,10 @@ def test_the_issue_joint_passes_vdi_2230_with_the_rule_of_thumb_as_a_warning(
     )
 
 
-def test_the_first_example_names_the_vdi_requirements_that_fail(page: Any, base_url: str) -> None:
+def test_the_first_example_names_the_vdi_requirements_that_fail(
+    page: Any,  # noqa: F811
+    base_url: str,  # noqa: F811
+) -> None:
     page.set_viewport_size(DESKTOP)
     _open(page, base_url, f"m={JOINT}")
     page.select_option("#example", "0")
