@@ -27,7 +27,8 @@ const state = {
   imperial: false, // the metric/imperial switch (results, fields and sweeps)
   choiceNames: {}, // choice key -> readable name, from the spec and the API's catalogues
   fasteners: null, // GET /api/v1/fasteners when the service has it
-  version: "", // the service's version, for the report
+  version: "", // the product's version and commit, for the report
+  commit: "",
   lastSnapshot: null, // the inputs (SI) of the result shown, to mark it stale
 };
 window.calcState = state; // for the browser test and for curious users in the console
@@ -223,7 +224,7 @@ async function init() {
   ]);
   state.models = models.models;
   for (const [si, choices] of Object.entries(units)) if (!si.startsWith("_")) state.units[norm(si)] = choices;
-  await loadCatalogues();
+  await loadCatalogues(models.service || {});
   state.imperial = localStorage.getItem("unit-system") === "imperial";
   const system = document.getElementById("unit-system");
   system.value = state.imperial ? "imperial" : "metric";
@@ -239,18 +240,19 @@ async function init() {
 }
 
 /**
- * What the service offers beyond the catalogue, each optional: its version (for the
- * report), the preload-control methods with their scatter (readable method names),
+ * What the service offers beyond the models, as the catalogue names it (``service`` in
+ * GET /api/v1/models: nothing else is fetched to learn it): its version and commit (for
+ * the report), the preload-control methods with their scatter (readable method names),
  * and the fastener catalogue (thread and property-class pickers) where it exists.
  */
-async function loadCatalogues() {
+async function loadCatalogues(service = {}) {
   const get = (path) => fetch(path).then((r) => (r.ok ? r.json() : null)).catch(() => null);
-  // only what the service declares is asked for (no 404s in the console)
-  const openapi = await get("openapi.json");
-  const has = (path) => Boolean(openapi?.paths?.["/" + API + path]);
+  // only the catalogues the service names are asked for (no 404s in the console)
+  const path = (key) => (service.catalogues?.[key] ?? "").replace(/^\//, "");
   const [methods, fasteners] = await Promise.all([
-    has("/preload/methods") ? get(API + "/preload/methods") : null, has("/fasteners") ? get(API + "/fasteners") : null]);
-  state.version = openapi?.info?.version ?? "";
+    path("preload_methods") ? get(path("preload_methods")) : null, path("fasteners") ? get(path("fasteners")) : null]);
+  state.version = service.version ?? "";
+  state.commit = service.commit ?? "";
   for (const m of state.models) {
     for (const p of m.inputs) {
       (p.choice_labels || []).forEach((label, i) => { state.choiceNames[p.choices[i]] = label; });
@@ -869,7 +871,8 @@ async function compute() {
   state.lastSnapshot = snap;
   renderResult(m, data);
   markStale();
-  renderReport(m);
+  // the report (its equations typeset) is built when it is asked for, not on every Compute
+  if (document.body.classList.contains("view-report")) renderReport(m);
   const verdict = verdictText(m, data);
   announce(`Computed (method ${data.rung})${verdict ? `: ${verdict}` : ""}.`);
   document.getElementById("to-result").hidden = false;
@@ -1738,7 +1741,9 @@ function renderReport(m) {
   const proj = document.getElementById("report-project").value.trim(), part = document.getElementById("report-part").value.trim();
   document.getElementById("report-ids").replaceChildren("Project ", el("strong", {}, proj || "—"), " · Part ", el("strong", {}, part || "—"));
   document.getElementById("report-meta").replaceChildren(
-    `${now.toISOString().slice(0, 16).replace("T", " ")} UTC · service ${state.version || "?"} · model `,
+    `${now.toISOString().slice(0, 16).replace("T", " ")} UTC · tightening-calc ${state.version || "?"}`,
+    state.commit && state.commit !== "unknown" ? [" (commit ", el("code", { id: "report-commit" }, state.commit.slice(0, 12)), ")"] : "",
+    " · model ",
     el("code", {}, m.name), " · ", el("a", { href: location.href, class: "report-link" }, "link to this calculation"));
   const sources = (m.sources || []).map((x) => el("li", {}, String(x.reference).startsWith("[") ? x.reference : `[${x.id}] ${x.reference}`));
   // the equations of the steps of the rung that produced this result (the model's all when
@@ -1982,7 +1987,7 @@ function switchSystem(imperial) {
   setFieldSystem(m, imperial);
   if (state.lastResponse) {
     renderResult(m, state.lastResponse);
-    renderReport(m);
+    if (document.body.classList.contains("view-report")) renderReport(m);
   }
   if (state.lastSweep?.response) plotSweep(m);
   markStale();
