@@ -384,8 +384,8 @@ function showModel(m, params = new URLSearchParams()) {
     openOne, el("label", { class: "button", for: "open-design" }, "Open design…"),
     openMany, el("label", { class: "button", for: "compare-designs" }, "Compare designs…")));
   form.addEventListener("submit", (e) => { e.preventDefault(); compute(); });
-  form.addEventListener("input", markStale);
-  form.addEventListener("change", markStale);
+  form.addEventListener("input", () => { syncUsage(m); markStale(); });
+  form.addEventListener("change", () => { syncUsage(m); markStale(); });
   const stale = el("p", { id: "stale-note", class: "stale-note", hidden: true },
     "Inputs changed: compute again ", el("button", { type: "button", onclick: compute }, "Compute"));
   sec.append(form, el("div", { id: "error-box", tabindex: "-1" }), stale, el("div", { id: "result" }), sweepPanel(m),
@@ -393,6 +393,7 @@ function showModel(m, params = new URLSearchParams()) {
 
   fillForm(m, params.get("ex") ?? "defaults");
   applyParams(m, params);
+  syncUsage(m);
   // imperial chosen earlier: the fields the link does not set open in imperial units
   if (state.imperial) setFieldSystem(m, true, (p) => !params.has(p.name));
 }
@@ -443,7 +444,34 @@ function fieldRow(p) {
       numeric ? el("output", { class: "read-as", id: "read-" + p.name, for: id }) : null),
     el("div", { class: "desc", id: "desc-" + p.name, title: p.description }, p.description || ""),
     el("div", { class: "hint", id: "hint-" + p.name }, hintText(p)),
+    p.used_with ? el("div", { class: "unused", id: "unused-" + p.name, hidden: true }) : null,
     el("div", { class: "error", id: "err-" + p.name }));
+}
+
+/**
+ * An input that changes nothing in the current mode is disabled, with the reason: the
+ * model declares which input it takes effect with (``used_with``: the joint's μ_max and
+ * torque tolerance act only with a torque specification). A disabled input is not sent.
+ */
+function syncUsage(m) {
+  for (const p of m.inputs) {
+    if (!p.used_with) continue;
+    const input = document.getElementById("in-" + p.name);
+    const other = document.getElementById("in-" + p.used_with);
+    const reason = document.getElementById("unused-" + p.name);
+    if (!input || !other || !reason) continue;
+    const off = other.type === "checkbox" ? !other.checked : other.value.trim() === "";
+    const needs = m.inputs.find((x) => x.name === p.used_with);
+    const was = input.disabled;
+    input.disabled = off;
+    if (was !== off) checkField(p);
+    for (const sel of document.querySelectorAll(`#unit-${p.name}`)) if (sel.tagName === "SELECT") sel.disabled = off;
+    reason.hidden = !off;
+    reason.textContent = off ? `Used only with a ${needs ? needs.label : p.used_with}: without one it changes nothing.` : "";
+    input.closest(".field")?.classList.toggle("unused", off);
+    const described = (input.getAttribute("aria-describedby") || "").split(" ").filter((x) => x && x !== reason.id);
+    input.setAttribute("aria-describedby", [...described, ...(off ? [reason.id] : [])].join(" "));
+  }
 }
 
 /** A list of measured values: pasted into a text area or read from a CSV file, in one unit. */
@@ -590,6 +618,7 @@ function fillForm(m, key) {
   }
   const chooser = document.getElementById("example");
   if (chooser) chooser.value = state.example;
+  syncUsage(m);
   markStale();
 }
 
@@ -685,7 +714,9 @@ function checkField(p) {
   const q = readQuantity(raw);
   const u = currentUnit(p);
   let msg = "", echo = "", format = false;
-  if (raw === "") {
+  if (input.disabled) {
+    // not sent in this mode (syncUsage): nothing to refuse
+  } else if (raw === "") {
     if (p.required) msg = `${p.label} is required`;
   } else if (!q.ok) {
     format = true;
@@ -754,6 +785,7 @@ function requestBody(m, { skip = null } = {}) {
   for (const p of m.inputs) {
     if (p.name === skip) continue;
     const input = document.getElementById("in-" + p.name);
+    if (input.disabled) continue; // no effect in this mode (syncUsage): not sent
     if (p.kind === "bool") { body[p.name] = input.checked; continue; }
     const raw = input.value.trim();
     if (raw === "") continue;

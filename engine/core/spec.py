@@ -86,6 +86,9 @@ class Param:
     #: For a ``samples`` param: the fewest and the most values it takes.
     min_length: int = MIN_SAMPLES
     max_length: int = MAX_SAMPLES
+    #: The input this one takes effect with: while that one is not given, this one changes
+    #: nothing (the form disables it and says so).
+    used_with: str | None = None
 
     @property
     def is_numeric(self) -> bool:
@@ -244,6 +247,7 @@ class Param:
             "range": self.range_text(),
             "group": self.group,
             "description": self.description,
+            "used_with": self.used_with,
             **(
                 {"min_length": self.min_length, "max_length": self.max_length}
                 if self.kind == "samples"
@@ -615,6 +619,8 @@ class ModelSpec:
         for p in self.inputs:
             if p.choice_labels and len(p.choice_labels) != len(p.choices):
                 raise ValueError(f"{self.name}.{p.name}: one choice label per choice")
+            if p.used_with is not None and p.used_with not in names:
+                raise ValueError(f"{self.name}.{p.name}: used with {p.used_with!r}, no input")
         if self.default_fidelity not in ("auto", *self.rung_names):
             raise ValueError(f"{self.name}: unknown default_fidelity {self.default_fidelity!r}")
         for r in self.rungs:

@@ -351,6 +351,7 @@ JOINT_INPUTS: tuple[Param, ...] = (
         minimum=0.0,
         maximum=1.0,
         group="friction",
+        used_with="tightening_torque",
     ),
     Param(
         "bearing_friction_min",
@@ -368,6 +369,7 @@ JOINT_INPUTS: tuple[Param, ...] = (
         minimum=0.0,
         maximum=1.0,
         group="friction",
+        used_with="tightening_torque",
     ),
     Param(
         "method",
@@ -405,6 +407,7 @@ JOINT_INPUTS: tuple[Param, ...] = (
         minimum=0.0,
         maximum=0.9,
         group="tightening",
+        used_with="tightening_torque",
     ),
     Param(
         "prevailing_torque",

@@ -103,3 +103,28 @@ def test_the_first_example_names_the_vdi_requirements_that_fail(
     )
     row = page.inner_text("#checks li[data-level=advice]")
     assert row.startswith("⚠ advice seed_004_preload_stress (advice)"), row
+
+
+def test_an_input_without_effect_is_disabled_with_its_reason_and_not_sent(
+    page: Any,  # noqa: F811
+    base_url: str,  # noqa: F811
+) -> None:
+    """The joint's mu_max and torque tolerance act only with a torque specification (declared
+    ``used_with`` in the model): without one they are disabled, say why, and are not sent."""
+    page.set_viewport_size(DESKTOP)
+    _open(page, base_url, f"m={JOINT}")
+    page.select_option("#example", "0")
+    for name in ("thread_friction_max", "bearing_friction_max", "torque_tolerance"):
+        assert page.is_disabled(f"#in-{name}"), name
+        reason = page.inner_text(f"#unused-{name}")
+        assert reason == "Used only with a tightening torque: without one it changes nothing."
+        assert f"unused-{name}" in (page.get_attribute(f"#in-{name}", "aria-describedby") or "")
+    assert _submit(page) == "ok"
+    assert "torque_tolerance" not in page.evaluate("window.calcState.lastRequest")
+    page.fill("#in-tightening_torque", "70")
+    assert page.is_enabled("#in-torque_tolerance") and page.is_hidden("#unused-torque_tolerance")
+    page.fill("#in-torque_tolerance", "0.1")
+    page.fill("#in-thread_friction_max", "0.16")
+    assert _submit(page) == "ok"
+    sent = page.evaluate("window.calcState.lastRequest")
+    assert (sent["torque_tolerance"], sent["thread_friction_max"]) == (0.1, 0.16)

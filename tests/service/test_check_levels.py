@@ -90,3 +90,52 @@ def test_an_answer_naming_no_output_is_refused() -> None:
             compute=spec.compute,
             answer=(engine.core.spec.Answer("nothing", "x"),),
         )
+
+
+@pytest.mark.parametrize(
+    "spec", [s for s in MODELS if any(p.used_with for p in s.inputs)], ids=lambda s: s.name
+)
+def test_an_input_declared_used_with_another_changes_nothing_without_it(
+    spec: engine.ModelSpec,
+) -> None:
+    """The form disables an input while the one it is ``used_with`` is empty: that must be
+    true of the model (every output and check the same over the input's range), and with
+    the other given the input must act (else the declaration hides a real input)."""
+    base = {k: v for k, v in spec.examples[0].items()}
+    for p in (p for p in spec.inputs if p.used_with):
+        without = {k: v for k, v in base.items() if k != p.used_with}
+        assert spec.param(p.used_with).default is None, p.used_with
+        lo = max(p.minimum if p.minimum is not None else 0.0, 0.15)  # over each mu_min
+        hi = min(p.maximum if p.maximum is not None else 1.0, lo + 0.5)
+        low, high = (engine.run(spec, {**without, p.name: v}) for v in (lo, hi))
+        assert low.results == high.results, p.name
+        assert [(c.name, c.ok) for c in low.checks] == [(c.name, c.ok) for c in high.checks]
+    # with a torque specification each acts: M_A 70 N·m on example 1's M12 joint
+    given = {**base, "tightening_torque": 70.0} if spec.name == "joint.vdi2230" else None
+    if given is not None:
+        for name, lo, hi in [
+            ("thread_friction_max", 0.12, 0.30),
+            ("bearing_friction_max", 0.12, 0.30),
+            ("torque_tolerance", 0.0, 0.2),
+        ]:
+            a, b = (engine.run(spec, {**given, name: v}) for v in (lo, hi))
+            # more friction or a wider tolerance at the same torque: a lower preload floor
+            assert b.results["assembly_preload_min"] < a.results["assembly_preload_min"], name
+
+
+def test_the_issue_joint_reads_23_79_kN_for_either_friction_box_without_a_torque() -> None:
+    spec = get_model("joint.vdi2230")
+    for mu_max in (0.16, 0.30):
+        values = {**ISSUE_JOINT, "thread_friction_max": mu_max, "bearing_friction_max": mu_max}
+        r = engine.run(spec, values)
+        # F_M,min = F_M,zul / alpha_A at mu_min: 44.19 kN / 1.857 (torque wrench)
+        assert r.results["assembly_preload_min"] == pytest.approx(23_794.7, rel=1e-5)
+    described = {p["name"]: p["used_with"] for p in spec.describe()["inputs"]}
+    assert [n for n, w in described.items() if w] == [
+        "thread_friction_max",
+        "bearing_friction_max",
+        "torque_tolerance",
+    ]
+    assert {described[n] for n in ("thread_friction_max", "torque_tolerance")} == {
+        "tightening_torque"
+    }
