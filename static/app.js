@@ -919,8 +919,8 @@ function updateHash(m, body) {
   params.set("fidelity", body.fidelity);
   if ("tolerance" in body) params.set("tol", fieldNumber(body.tolerance * 100));
   for (const [k, v] of Object.entries(state.sweepParams || {})) params.set(k, v);
-  for (const [k, id] of [["proj", "report-project"], ["part", "report-part"]]) {
-    const v = document.getElementById(id)?.value.trim();
+  for (const [k, id] of REPORT_NAMES) {
+    const v = reportName(id);
     if (v) params.set(k, v);
   }
   if (document.body.classList.contains("view-report")) params.set("view", "report");
@@ -1062,7 +1062,9 @@ function resultRows(m, data, { interactive = false, withDesc = true } = {}) {
     const u = choices[0];
     const digits = o.kind === "int" ? 12 : sig;
     const sign = typeof v === "number" && v > 0 ? signOf(o) : "";
-    const shown = typeof v === "number" ? sign + fmt(v / u.factor, digits) : fmt(choiceText(v));
+    // a count reads as a whole number ("2 blows", not 2.00000000000)
+    const shown = o.kind === "int" && Number.isInteger(v) ? group(String(v))
+      : typeof v === "number" ? sign + fmt(v / u.factor, digits) : fmt(choiceText(v));
     const cell = el("td", { class: typeof v === "string" ? "num text" : "num", "data-si": v === null ? "null" : String(v), "data-factor": u.factor, "data-sig": digits }, shown);
     let unitCell = typeof v === "number" ? u.label : "";
     if (interactive && typeof v === "number" && choices.length > 1 && o.kind !== "int") {
@@ -1075,13 +1077,34 @@ function resultRows(m, data, { interactive = false, withDesc = true } = {}) {
         cell.textContent = sign + fmt(v / c.factor, digits);
       });
     }
+    const sym = interactive ? "" : symbolOf(m, o);
     rows.push(el("tr", { "data-output": o.name },
       el("th", { scope: "row", title: o.description }, labelOf(o)),
+      interactive ? null : el("td", { class: "symbol" }, sym ? symbolNode(sym) : ""),
       cell,
       el("td", { class: "unit" }, unitCell),
-      withDesc ? el("td", { class: "desc" }, o.description) : null));
+      withDesc ? el("td", { class: "desc" }, o.description) : null,
+      interactive ? null : el("td", { class: "step" }, stepOf(o))));
   }
   return rows;
+}
+
+/** An output's symbol: its answer declaration's, else the one its description defines
+ *  ("R2: F_K,erf = max(F_KQ, F_KP)" → F_K,erf), else none. */
+function symbolOf(m, o) {
+  const a = (m.answer || []).find((x) => x.output === o.name);
+  if (a) return a.symbol;
+  const hit = /^(?:[^:]{1,24}:\s*)?([^\s=;:()]{1,16}) = /.exec(o.description || "");
+  return hit ? hit[1] : "";
+}
+
+/** The standard's step or the source's equation an output comes from: "R7", "[004, eq. 13]". */
+function stepOf(o) {
+  const d = o.description || "";
+  const step = /^(R\d+(?:\/R\d+)*)\s*:/.exec(d);
+  if (step) return "VDI 2230-1 " + step[1];
+  const cite = /\[(\d{3}[^\]]*|[A-Z][^\]]*)\]/.exec(d);
+  return cite ? `[${cite[1]}]` : "";
 }
 
 /** A symbol as the standard writes it: "F_M,min" -> F with "M,min" set below. */
@@ -1135,7 +1158,8 @@ function valueText(m, data, name) {
   if (!o || v === null || v === undefined) return "—";
   if (typeof v !== "number") return choiceText(String(v));
   const u = outputUnit(o, v);
-  const digits = o.kind === "int" ? 12 : sigFigs(data.error_estimate);
+  if (o.kind === "int" && Number.isInteger(v)) return group(String(v));
+  const digits = sigFigs(data.error_estimate);
   return `${signOf(o) && v > 0 ? "±" : ""}${fmt(v / u.factor, digits)}${u.label ? " " + u.label : ""}`;
 }
 
@@ -1207,7 +1231,9 @@ function resultParts(m, data, { interactive = false } = {}) {
   const notes = noteList.length
     ? el("ul", { class: "notes", id: interactive ? "notes" : null }, ...noteList.map((n) => el("li", {}, n))) : null;
   const table = el("div", { class: "table-wrap" },
-    el("table", { id: interactive ? "results" : null, class: "results" }, el("tbody", {}, ...resultRows(m, data, { interactive, withDesc: interactive }))));
+    el("table", { id: interactive ? "results" : null, class: "results" },
+      interactive ? null : el("thead", {}, el("tr", {}, ...["result", "symbol", "value", "unit", "step, source"].map((h) => el("th", {}, h)))),
+      el("tbody", {}, ...resultRows(m, data, { interactive, withDesc: interactive }))));
   if (!interactive) return [meta, table, checks ? el("h3", {}, "Checks") : null, checks, warnings ? el("h3", {}, "Warnings") : null, warnings, notes ? el("h3", {}, "Notes") : null, notes].filter(Boolean);
   return [
     el("h3", { id: "result-heading", tabindex: "-1" }, "Results"), answerCard(m, data), meta, methodHint(m, data),
@@ -1324,11 +1350,13 @@ function histogramMarks(m, data, xo) {
 function makeChart(container, kind, { title, xLabel, yLabel, yLabel2 = null, x, ys, bars = false, bands = [], marks = [], xRange = null, xLog = false }) {
   const colors = ["#1f5f99", "#c0392b", "#2e8b57", "#8e44ad", "#b8860b", "#555"];
   const twin = ys.some((s) => s.scale === "y2");
+  // the report's plots are drawn at the size they print at (12 cm wide), their text legible on paper
+  const paper = kind === "report";
   const axis = { size: 70, labelSize: 18, font: "12px system-ui", labelFont: "12px system-ui" };
   const opts = {
     title,
-    width: chartWidth(container),
-    height: 280,
+    width: paper ? 560 : chartWidth(container),
+    height: paper ? 300 : 280,
     scales: { x: { time: false, ...(xLog ? { distr: 3 } : {}), ...(xRange ? { range: xRange } : {}) }, ...(bars ? { y: { range: (u, lo, hi) => [0, hi * 1.1 || 1] } } : {}) },
     axes: [{ label: xLabel, font: axis.font, labelFont: axis.labelFont }, { ...axis, label: yLabel },
       ...(twin ? [{ ...axis, scale: "y2", side: 1, label: yLabel2, grid: { show: false } }] : [])],
@@ -1696,12 +1724,38 @@ function downloadSweep(m, kind) {
 
 /** The calculation report: a view on screen (view=report), and what the page prints. */
 /** Project and part name: kept in the link, the design file and the report's header. */
+/** The report's names, kept in the link: what it is for, who made and checked it, which revision. */
+const REPORT_NAMES = [
+  ["proj", "report-project", "Project", "project"],
+  ["part", "report-part", "Part", "part / joint"],
+  ["auth", "report-author", "Author", "calculated by"],
+  ["chk", "report-checker", "Checker", "checked by"],
+  ["rev", "report-revision", "Revision", "e.g. A"],
+];
+
 function designNames(m, params) {
-  const project = el("input", { id: "report-project", type: "text", value: params.get("proj") ?? "", placeholder: "project" });
-  const part = el("input", { id: "report-part", type: "text", value: params.get("part") ?? "", placeholder: "part / joint" });
-  for (const f of [project, part]) f.addEventListener("change", () => updateHash(m, { ...requestBody(m), ...fidelityBody() }));
-  return el("div", { class: "actions names" },
-    el("label", { for: "report-project" }, "Project"), project, el("label", { for: "report-part" }, "Part"), part);
+  const row = el("div", { class: "actions names" });
+  for (const [key, id, label, hint] of REPORT_NAMES) {
+    const f = el("input", { id, type: "text", value: params.get(key) ?? "", placeholder: hint, class: key === "rev" ? "short" : null });
+    f.addEventListener("change", () => updateHash(m, { ...requestBody(m), ...fidelityBody() }));
+    row.append(el("span", { class: "name" }, el("label", { for: id }, label), " ", f));
+  }
+  return row;
+}
+
+function reportName(id) {
+  return document.getElementById(id)?.value.trim() ?? "";
+}
+
+/** The fastener the result is for, as a designation: "M12 8.8", "M20×1.5 10.9", or "" (no bolt). */
+function fastenerText(data) {
+  const r = data.results || {}, x = data.inputs || {};
+  if (typeof r.fastener === "string" && r.fastener) return r.fastener;
+  if (typeof x.thread === "string" && x.thread) return [x.thread, x.grade || x.property_class].filter(Boolean).join(" ");
+  if (typeof x.thread_diameter !== "number") return "";
+  const pitch = typeof x.thread_pitch === "number" ? `×${short(x.thread_pitch * 1e3, 3)}` : "";
+  const parts = [`M${short(x.thread_diameter * 1e3, 4)}${pitch}`, x.property_class, x.head_standard, x.washer && `washer ${x.washer}`, x.nut && `nut ${x.nut}`];
+  return parts.filter(Boolean).join(" ");
 }
 
 function reportSection(m) {
@@ -1770,11 +1824,19 @@ function renderReport(m) {
   if (!body || !data) return;
   destroyCharts("report");
   const now = new Date();
-  const proj = document.getElementById("report-project").value.trim(), part = document.getElementById("report-part").value.trim();
-  document.getElementById("report-ids").replaceChildren("Project ", el("strong", {}, proj || "—"), " · Part ", el("strong", {}, part || "—"));
+  const names = Object.fromEntries(REPORT_NAMES.map(([key, id]) => [key, reportName(id)]));
+  const fastener = fastenerText(data);
+  const ids = [["Project", names.proj], ["Part", names.part], ...(fastener ? [["Fastener", fastener]] : []),
+    ["Author", names.auth], ["Checker", names.chk], ["Revision", names.rev]];
+  document.getElementById("report-ids").replaceChildren(...ids.flatMap(([label, v], i) =>
+    [i ? " · " : "", `${label} `, el("strong", { id: label === "Fastener" ? "report-fastener" : null }, v || "—")]));
+  // the running header and footer of every printed page (CSS @page margin boxes read them)
+  const root = document.documentElement.style;
+  root.setProperty("--report-head", JSON.stringify(`Calculation report · ${m.title}${names.proj ? " · " + names.proj : ""}${names.part ? " · " + names.part : ""}`));
+  root.setProperty("--report-foot", JSON.stringify(`tightening-calc ${state.version || "?"}${state.commit && state.commit !== "unknown" ? " (" + state.commit.slice(0, 12) + ")" : ""} · ${m.name}${names.rev ? " · revision " + names.rev : ""} · ${now.toISOString().slice(0, 10)}`));
   document.getElementById("report-meta").replaceChildren(
     `${now.toISOString().slice(0, 16).replace("T", " ")} UTC · tightening-calc ${state.version || "?"}`,
-    state.commit && state.commit !== "unknown" ? [" (commit ", el("code", { id: "report-commit" }, state.commit.slice(0, 12)), ")"] : "",
+    ...(state.commit && state.commit !== "unknown" ? [" (commit ", el("code", { id: "report-commit" }, state.commit.slice(0, 12)), ")"] : []),
     " · model ",
     el("code", {}, m.name), " · ", el("a", { href: location.href, class: "report-link" }, "link to this calculation"));
   const sources = (m.sources || []).map((x) => el("li", {}, String(x.reference).startsWith("[") ? x.reference : `[${x.id}] ${x.reference}`));
@@ -1782,7 +1844,7 @@ function renderReport(m) {
   // the rung declares none), in the order of its procedure
   const ran = (m.rungs || []).find((r) => r.name === data.rung);
   const eqs = ((ran && ran.equations) || m.equations || []).map((e) => el("div", { class: "eq-row" },
-    el("p", { class: "eq-what" }, e.summary.replace(/\s*\[[^\]]*\]\.?$/, ""), e.source ? el("span", { class: "muted" }, ` ${e.source}`) : null),
+    el("p", { class: "eq-what" }, plainText(e.summary).replace(/\s*\[[^\]]*\]\.?$/, ""), e.source ? el("span", { class: "muted" }, ` ${e.source}`) : null),
     ...e.latex.map(equationNode)));
   const seriesBox = el("div", { class: "plots report-plots" });
   // results and checks beside the inputs; warnings and notes below both, full width
@@ -1803,9 +1865,25 @@ function renderReport(m) {
     below.length ? el("div", { class: "report-notes" }, ...below) : null,
     eqs.length ? el("h3", {}, "Equations used") : null,
     eqs.length ? el("div", { class: "equations" }, ...eqs) : null,
-    seriesBox].filter(Boolean));
+    seriesBox,
+    signOff(names)].filter(Boolean));
   if (Object.values(data.series).some((v) => v.length)) renderSeries(m, data, seriesBox, "report");
   if (state.lastSweep?.response) plotSweep(m, seriesBox.appendChild(el("div", {})), "report");
+}
+
+/** A docstring's sentence without its markup: ``code`` and :role:`text` read as their text. */
+function plainText(text) {
+  return String(text ?? "").replace(/:[a-z]+:`~?([^`]*)`/g, "$1").replace(/``([^`]*)``/g, "$1");
+}
+
+/** Who calculated and who checked, with room to sign: the names from the form, the rest by hand. */
+function signOff(names) {
+  const row = (role, name) => el("tr", {}, el("th", { scope: "row" }, role), el("td", { class: "who" }, name || ""), el("td", { class: "sign" }, ""), el("td", { class: "sign" }, ""));
+  return el("section", { class: "sign-off", id: "sign-off", "aria-label": "sign-off" },
+    el("h3", {}, `Sign-off${names.rev ? ` · revision ${names.rev}` : ""}`),
+    el("table", { class: "sign-table" },
+      el("thead", {}, el("tr", {}, el("th", {}, ""), el("th", {}, "name"), el("th", {}, "date"), el("th", {}, "signature"))),
+      el("tbody", {}, row("Calculated by", names.auth), row("Checked by", names.chk))));
 }
 
 // ---------------------------------------------------------------- designs as files
