@@ -13,7 +13,7 @@ import contextlib
 import json
 import math
 import threading
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -152,7 +152,12 @@ def _encoder(spec: ModelSpec) -> Any:
             if not (type(c["name"]) is str and type(c["detail"]) is str):
                 raise WrongKind("a check's name and detail are texts")
         answer["checks"] = [
-            {"name": c["name"], "ok": _coerce("bool", c["ok"]), "detail": c["detail"]}
+            {
+                "name": c["name"],
+                "ok": _coerce("bool", c["ok"]),
+                "detail": c["detail"],
+                "level": c.get("level", "requirement"),
+            }
             for c in checks
         ]
         for text in (*answer["notes"], *answer["warnings"]):
@@ -466,11 +471,17 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
     return router
 
 
-def catalogue_router(models: Sequence[ModelSpec]) -> APIRouter:
+def catalogue_router(
+    models: Sequence[ModelSpec], about: Mapping[str, Any] | None = None
+) -> APIRouter:
+    """``/models`` (every model, and ``service``: what the form needs besides the models,
+    so it fetches nothing else to start: the product's version and commit, and the paths
+    of the other catalogues it offers), ``/models/{name}`` and ``/sources``."""
     router = APIRouter(prefix=API_PREFIX, tags=["catalogue"])
 
-    catalogue = {"models": [spec.describe() for spec in models]}  # fixed once the app is built
-    entries = {spec.name: entry for spec, entry in zip(models, catalogue["models"], strict=True)}
+    described = [spec.describe() for spec in models]
+    catalogue = {"models": described, "service": dict(about or {})}  # fixed once the app is built
+    entries = {spec.name: entry for spec, entry in zip(models, described, strict=True)}
 
     @router.get(
         "/models",

@@ -1,9 +1,10 @@
 """Build the FastAPI application: health, catalogue, one router per model, the form.
 
 Middleware, outermost first: :class:`~service.middleware.FrontDoor` (request
-id, security headers, access log), CORS when ``CORS_ORIGINS`` names origins
-(closed otherwise: no ``Access-Control-*`` header is ever sent),
-:class:`~service.middleware.BodyGuard` (415 for non-JSON bodies, 413 over
+id, security headers, access log), :class:`~service.middleware.Compress` (gzip for
+answers and files of :data:`GZIP_MINIMUM_BYTES` or more), CORS when
+``CORS_ORIGINS`` names origins (closed otherwise: no ``Access-Control-*`` header is
+ever sent), :class:`~service.middleware.BodyGuard` (415 for non-JSON bodies, 413 over
 ``MAX_BODY_BYTES``). Model computations run in :mod:`service.workers`.
 
 ``/manual/`` serves the manual as built by MkDocs (``make run`` builds it into ``site/``;
@@ -24,7 +25,10 @@ from __future__ import annotations
 import base64
 import contextlib
 import hashlib
+import importlib.metadata
+import os
 import re
+import subprocess
 import threading
 from collections.abc import AsyncIterator, Sequence
 from contextlib import asynccontextmanager
@@ -44,11 +48,46 @@ from . import errors
 from .api import Limits, catalogue_router, model_router
 from .config import Settings
 from .extra import EXTRA_ROUTERS
-from .middleware import BodyGuard, ExactRoutes, FrontDoor
+from .middleware import BodyGuard, Compress, ExactRoutes, FrontDoor
 from .studies import Studies, StudySettings, study_router
 from .workers import EnginePool
 
 _CDN = "https://cdn.jsdelivr.net"
+
+#: Answers and files smaller than this go uncompressed (a single answer of a few fields);
+#: the form's scripts, the catalogue, series and sweeps are gzipped for a client that asks.
+GZIP_MINIMUM_BYTES = 4096
+#: zlib level 6: within a few per cent of level 9's size at about a third of its time
+#: (the static files are compressed per request).
+GZIP_LEVEL = 6
+
+
+def product_version() -> str:
+    """The installed package's version (pyproject.toml), or "unknown" outside an install."""
+    try:
+        return importlib.metadata.version("tightening-calc")
+    except importlib.metadata.PackageNotFoundError:
+        return "unknown"
+
+
+def product_commit() -> str:
+    """The commit the service runs: ``COMMIT`` (set by an image build), else the checkout's
+    HEAD, else "unknown" (no git, or not a checkout)."""
+    if os.environ.get("COMMIT"):
+        return os.environ["COMMIT"][:40]
+    try:
+        out = subprocess.run(
+            ["git", "rev-parse", "HEAD"],
+            cwd=Path(__file__).resolve().parent,
+            capture_output=True,
+            text=True,
+            timeout=5,
+            check=True,
+        )
+    except (OSError, subprocess.SubprocessError):
+        return "unknown"
+    head = out.stdout.strip()
+    return head if re.fullmatch(r"[0-9a-f]{40}", head) else "unknown"
 
 
 def docs_csp(html: str, *, cdn: bool = True) -> str:
@@ -157,9 +196,10 @@ def create_app(
         pool.shutdown()
         studies.shutdown()
 
+    version = product_version()
     app = FastAPI(
         title="Tightening-tool calculator",
-        version="1.0",
+        version=version,
         summary="Validated engineering models of threaded-joint assembly tools.",
         description="Every input is a number in SI base units or a string with a unit "
         "('45 mm', '1450 rpm'); every result is SI, with its unit alongside. "
@@ -218,7 +258,19 @@ def create_app(
             "./#" + (query + "&" if query else "") + "view=report", status_code=303
         )
 
-    routers = [catalogue_router(models), *(model_router(s, limits) for s in models), *EXTRA_ROUTERS]
+    # the other catalogues the form may read (preload methods, fasteners): named in /models
+    others = {
+        r.path.removeprefix("/api/v1/").replace("/", "_"): r.path
+        for router in EXTRA_ROUTERS
+        for r in router.routes
+        if isinstance(r, APIRoute) and "GET" in (r.methods or ()) and not r.param_convertors
+    }
+    about = {"version": version, "commit": product_commit(), "catalogues": others}
+    routers = [
+        catalogue_router(models, about),
+        *(model_router(s, limits) for s in models),
+        *EXTRA_ROUTERS,
+    ]
     studies_router = study_router(models, studies)
     for router in (*routers, studies_router):
         # The routes themselves, not include_router: FastAPI ≥ 0.16x nests an included
@@ -254,6 +306,8 @@ def create_app(
             allow_headers=["content-type", "x-request-id"],
             expose_headers=["x-request-id"],
         )
+    # compression inside FrontDoor: its security headers and request id go on either body
+    app.add_middleware(Compress, minimum_size=GZIP_MINIMUM_BYTES, compresslevel=GZIP_LEVEL)
     app.add_middleware(FrontDoor, log_requests=settings.access_log)
 
     @app.get("/manual", include_in_schema=False)

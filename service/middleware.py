@@ -3,6 +3,8 @@
 * :class:`FrontDoor` (outermost): a request id, security headers on every
   response, redirects to a path on this server (never the request's Host), one
   JSON access-log line per request (never the body).
+* :class:`Compress`: gzip for a client that accepts it, for answers and files of a
+  minimum size (Starlette's GZipMiddleware, asked only where it can help).
 * :class:`BodyGuard`: JSON bodies only (415 otherwise) and at most
   ``MAX_BODY_BYTES`` (413), counted as the bytes arrive, so a chunked body
   without ``content-length`` is cut off as soon as it passes the limit; the whole
@@ -23,6 +25,7 @@ from typing import Any
 from urllib.parse import urlsplit
 
 from starlette.exceptions import HTTPException
+from starlette.middleware.gzip import GZipMiddleware
 
 Scope = MutableMapping[str, Any]
 Message = MutableMapping[str, Any]
@@ -413,3 +416,37 @@ class ExactRoutes:
         scope["route"] = route
         scope["path_params"] = {}
         await route.app(scope, receive, send)
+
+
+class Compress:
+    """gzip the answers and files of ``minimum_size`` bytes or more for a client that
+    accepts it; smaller ones, images and fonts go as they are.
+
+    Starlette's :class:`GZipMiddleware` does the compressing. It is asked only when the
+    client accepts gzip and the path is not an already-compressed file (judged by its
+    extension here, once, instead of its content type per response): it costs ~25 µs a
+    request even for an answer it leaves alone, most of it re-reading its list of excluded
+    content types, which a small single answer should not pay for nothing.
+    """
+
+    #: Files that are compressed already (the form's and the manual's images, fonts).
+    PACKED = (".png", ".jpg", ".jpeg", ".gif", ".webp", ".avif", ".ico", ".woff", ".woff2", ".gz")
+
+    def __init__(self, app: ASGIApp, *, minimum_size: int, compresslevel: int) -> None:
+        self.app = app
+        self.gzip = GZipMiddleware(
+            app,
+            minimum_size=minimum_size,
+            compresslevel=compresslevel,
+            exclude_content_types=(),
+        )
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] == "http" and not scope["path"].endswith(self.PACKED):
+            for key, value in scope["headers"]:
+                if key == b"accept-encoding":
+                    if b"gzip" in value:
+                        await self.gzip(scope, receive, send)
+                        return
+                    break
+        await self.app(scope, receive, send)

@@ -40,6 +40,9 @@ class CheckOut(BaseModel):
     name: str
     ok: bool
     detail: str
+    #: "requirement": a standard's condition (a failure fails the design); "advice": a rule
+    #: of thumb or a recommendation (a failure warns).
+    level: Literal["requirement", "advice"] = "requirement"
 
 
 class ErrorItem(BaseModel):

@@ -27,7 +27,8 @@ const state = {
   imperial: false, // the metric/imperial switch (results, fields and sweeps)
   choiceNames: {}, // choice key -> readable name, from the spec and the API's catalogues
   fasteners: null, // GET /api/v1/fasteners when the service has it
-  version: "", // the service's version, for the report
+  version: "", // the product's version and commit, for the report
+  commit: "",
   lastSnapshot: null, // the inputs (SI) of the result shown, to mark it stale
 };
 window.calcState = state; // for the browser test and for curious users in the console
@@ -223,7 +224,7 @@ async function init() {
   ]);
   state.models = models.models;
   for (const [si, choices] of Object.entries(units)) if (!si.startsWith("_")) state.units[norm(si)] = choices;
-  await loadCatalogues();
+  await loadCatalogues(models.service || {});
   state.imperial = localStorage.getItem("unit-system") === "imperial";
   const system = document.getElementById("unit-system");
   system.value = state.imperial ? "imperial" : "metric";
@@ -239,18 +240,19 @@ async function init() {
 }
 
 /**
- * What the service offers beyond the catalogue, each optional: its version (for the
- * report), the preload-control methods with their scatter (readable method names),
+ * What the service offers beyond the models, as the catalogue names it (``service`` in
+ * GET /api/v1/models: nothing else is fetched to learn it): its version and commit (for
+ * the report), the preload-control methods with their scatter (readable method names),
  * and the fastener catalogue (thread and property-class pickers) where it exists.
  */
-async function loadCatalogues() {
+async function loadCatalogues(service = {}) {
   const get = (path) => fetch(path).then((r) => (r.ok ? r.json() : null)).catch(() => null);
-  // only what the service declares is asked for (no 404s in the console)
-  const openapi = await get("openapi.json");
-  const has = (path) => Boolean(openapi?.paths?.["/" + API + path]);
+  // only the catalogues the service names are asked for (no 404s in the console)
+  const path = (key) => (service.catalogues?.[key] ?? "").replace(/^\//, "");
   const [methods, fasteners] = await Promise.all([
-    has("/preload/methods") ? get(API + "/preload/methods") : null, has("/fasteners") ? get(API + "/fasteners") : null]);
-  state.version = openapi?.info?.version ?? "";
+    path("preload_methods") ? get(path("preload_methods")) : null, path("fasteners") ? get(path("fasteners")) : null]);
+  state.version = service.version ?? "";
+  state.commit = service.commit ?? "";
   for (const m of state.models) {
     for (const p of m.inputs) {
       (p.choice_labels || []).forEach((label, i) => { state.choiceNames[p.choices[i]] = label; });
@@ -382,8 +384,8 @@ function showModel(m, params = new URLSearchParams()) {
     openOne, el("label", { class: "button", for: "open-design" }, "Open design…"),
     openMany, el("label", { class: "button", for: "compare-designs" }, "Compare designs…")));
   form.addEventListener("submit", (e) => { e.preventDefault(); compute(); });
-  form.addEventListener("input", markStale);
-  form.addEventListener("change", markStale);
+  form.addEventListener("input", () => { syncUsage(m); markStale(); });
+  form.addEventListener("change", () => { syncUsage(m); markStale(); });
   const stale = el("p", { id: "stale-note", class: "stale-note", hidden: true },
     "Inputs changed: compute again ", el("button", { type: "button", onclick: compute }, "Compute"));
   sec.append(form, el("div", { id: "error-box", tabindex: "-1" }), stale, el("div", { id: "result" }), sweepPanel(m),
@@ -391,6 +393,7 @@ function showModel(m, params = new URLSearchParams()) {
 
   fillForm(m, params.get("ex") ?? "defaults");
   applyParams(m, params);
+  syncUsage(m);
   // imperial chosen earlier: the fields the link does not set open in imperial units
   if (state.imperial) setFieldSystem(m, true, (p) => !params.has(p.name));
 }
@@ -441,7 +444,34 @@ function fieldRow(p) {
       numeric ? el("output", { class: "read-as", id: "read-" + p.name, for: id }) : null),
     el("div", { class: "desc", id: "desc-" + p.name, title: p.description }, p.description || ""),
     el("div", { class: "hint", id: "hint-" + p.name }, hintText(p)),
+    p.used_with ? el("div", { class: "unused", id: "unused-" + p.name, hidden: true }) : null,
     el("div", { class: "error", id: "err-" + p.name }));
+}
+
+/**
+ * An input that changes nothing in the current mode is disabled, with the reason: the
+ * model declares which input it takes effect with (``used_with``: the joint's μ_max and
+ * torque tolerance act only with a torque specification). A disabled input is not sent.
+ */
+function syncUsage(m) {
+  for (const p of m.inputs) {
+    if (!p.used_with) continue;
+    const input = document.getElementById("in-" + p.name);
+    const other = document.getElementById("in-" + p.used_with);
+    const reason = document.getElementById("unused-" + p.name);
+    if (!input || !other || !reason) continue;
+    const off = other.type === "checkbox" ? !other.checked : other.value.trim() === "";
+    const needs = m.inputs.find((x) => x.name === p.used_with);
+    const was = input.disabled;
+    input.disabled = off;
+    if (was !== off) checkField(p);
+    for (const sel of document.querySelectorAll(`#unit-${p.name}`)) if (sel.tagName === "SELECT") sel.disabled = off;
+    reason.hidden = !off;
+    reason.textContent = off ? `Used only with a ${needs ? needs.label : p.used_with}: without one it changes nothing.` : "";
+    input.closest(".field")?.classList.toggle("unused", off);
+    const described = (input.getAttribute("aria-describedby") || "").split(" ").filter((x) => x && x !== reason.id);
+    input.setAttribute("aria-describedby", [...described, ...(off ? [reason.id] : [])].join(" "));
+  }
 }
 
 /** A list of measured values: pasted into a text area or read from a CSV file, in one unit. */
@@ -588,6 +618,7 @@ function fillForm(m, key) {
   }
   const chooser = document.getElementById("example");
   if (chooser) chooser.value = state.example;
+  syncUsage(m);
   markStale();
 }
 
@@ -683,7 +714,9 @@ function checkField(p) {
   const q = readQuantity(raw);
   const u = currentUnit(p);
   let msg = "", echo = "", format = false;
-  if (raw === "") {
+  if (input.disabled) {
+    // not sent in this mode (syncUsage): nothing to refuse
+  } else if (raw === "") {
     if (p.required) msg = `${p.label} is required`;
   } else if (!q.ok) {
     format = true;
@@ -752,6 +785,7 @@ function requestBody(m, { skip = null } = {}) {
   for (const p of m.inputs) {
     if (p.name === skip) continue;
     const input = document.getElementById("in-" + p.name);
+    if (input.disabled) continue; // no effect in this mode (syncUsage): not sent
     if (p.kind === "bool") { body[p.name] = input.checked; continue; }
     const raw = input.value.trim();
     if (raw === "") continue;
@@ -869,9 +903,10 @@ async function compute() {
   state.lastSnapshot = snap;
   renderResult(m, data);
   markStale();
-  renderReport(m);
-  const failed = data.checks.filter((c) => !c.ok).length;
-  announce(`Computed (method ${data.rung})${data.checks.length ? `: ${failed ? `${failed} of ${data.checks.length} checks fail` : "every check passes"}` : ""}.`);
+  // the report (its equations typeset) is built when it is asked for, not on every Compute
+  if (document.body.classList.contains("view-report")) renderReport(m);
+  const verdict = verdictText(m, data);
+  announce(`Computed (method ${data.rung})${verdict ? `: ${verdict}` : ""}.`);
   document.getElementById("to-result").hidden = false;
   showAnswer();
   document.body.dataset.result = "ok";
@@ -884,8 +919,8 @@ function updateHash(m, body) {
   params.set("fidelity", body.fidelity);
   if ("tolerance" in body) params.set("tol", fieldNumber(body.tolerance * 100));
   for (const [k, v] of Object.entries(state.sweepParams || {})) params.set(k, v);
-  for (const [k, id] of [["proj", "report-project"], ["part", "report-part"]]) {
-    const v = document.getElementById(id)?.value.trim();
+  for (const [k, id] of REPORT_NAMES) {
+    const v = reportName(id);
     if (v) params.set(k, v);
   }
   if (document.body.classList.contains("view-report")) params.set("view", "report");
@@ -1027,7 +1062,9 @@ function resultRows(m, data, { interactive = false, withDesc = true } = {}) {
     const u = choices[0];
     const digits = o.kind === "int" ? 12 : sig;
     const sign = typeof v === "number" && v > 0 ? signOf(o) : "";
-    const shown = typeof v === "number" ? sign + fmt(v / u.factor, digits) : fmt(choiceText(v));
+    // a count reads as a whole number ("2 blows", not 2.00000000000)
+    const shown = o.kind === "int" && Number.isInteger(v) ? group(String(v))
+      : typeof v === "number" ? sign + fmt(v / u.factor, digits) : fmt(choiceText(v));
     const cell = el("td", { class: typeof v === "string" ? "num text" : "num", "data-si": v === null ? "null" : String(v), "data-factor": u.factor, "data-sig": digits }, shown);
     let unitCell = typeof v === "number" ? u.label : "";
     if (interactive && typeof v === "number" && choices.length > 1 && o.kind !== "int") {
@@ -1040,25 +1077,124 @@ function resultRows(m, data, { interactive = false, withDesc = true } = {}) {
         cell.textContent = sign + fmt(v / c.factor, digits);
       });
     }
+    const sym = interactive ? "" : symbolOf(m, o);
     rows.push(el("tr", { "data-output": o.name },
       el("th", { scope: "row", title: o.description }, labelOf(o)),
+      interactive ? null : el("td", { class: "symbol" }, sym ? symbolNode(sym) : ""),
       cell,
       el("td", { class: "unit" }, unitCell),
-      withDesc ? el("td", { class: "desc" }, o.description) : null));
+      withDesc ? el("td", { class: "desc" }, o.description) : null,
+      interactive ? null : el("td", { class: "step" }, stepOf(o))));
   }
   return rows;
 }
 
-/** Failed checks first, each with the action it suggests; or one line saying all pass. */
-function checkSummary(data) {
-  if (!data.checks.length) return null;
-  const failed = data.checks.filter((c) => !c.ok);
-  if (!failed.length) {
-    return el("p", { class: "check-summary ok", id: "check-summary" }, `✓ All ${data.checks.length} checks pass.`);
-  }
-  return el("div", { class: "check-summary fail", id: "check-summary" },
-    el("strong", {}, `✗ ${failed.length} of ${data.checks.length} check${data.checks.length > 1 ? "s" : ""} fail${failed.length > 1 ? "" : "s"}:`),
-    el("ul", {}, ...failed.map((c) => el("li", {}, el("strong", {}, c.name.replaceAll("_", " ")), ": ", c.detail))));
+/** An output's symbol: its answer declaration's, else the one its description defines
+ *  ("R2: F_K,erf = max(F_KQ, F_KP)" → F_K,erf), else none. */
+function symbolOf(m, o) {
+  const a = (m.answer || []).find((x) => x.output === o.name);
+  if (a) return a.symbol;
+  const hit = /^(?:[^:]{1,24}:\s*)?([^\s=;:()]{1,16}) = /.exec(o.description || "");
+  return hit ? hit[1] : "";
+}
+
+/** The standard's step or the source's equation an output comes from: "R7", "[004, eq. 13]". */
+function stepOf(o) {
+  const d = o.description || "";
+  const step = /^(R\d+(?:\/R\d+)*)\s*:/.exec(d);
+  if (step) return "VDI 2230-1 " + step[1];
+  const cite = /\[(\d{3}[^\]]*|[A-Z][^\]]*)\]/.exec(d);
+  return cite ? `[${cite[1]}]` : "";
+}
+
+/** A symbol as the standard writes it: "F_M,min" -> F with "M,min" set below. */
+function symbolNode(sym) {
+  const i = String(sym).indexOf("_");
+  if (i < 0) return el("var", { class: "sym" }, sym);
+  return el("var", { class: "sym" }, sym.slice(0, i), el("sub", {}, sym.slice(i + 1)));
+}
+
+/** Checks split by level: requirements (a standard's: they fail) and advice (they warn). */
+function checkLevels(data) {
+  const req = data.checks.filter((c) => c.level !== "advice");
+  const adv = data.checks.filter((c) => c.level === "advice");
+  return { req, adv, failed: req.filter((c) => !c.ok), warned: adv.filter((c) => !c.ok) };
+}
+
+/** The verdict in words: "passes VDI 2230" or "2 of 6 requirements fail". */
+function verdictText(m, data) {
+  const { req, failed, warned } = checkLevels(data);
+  const warn = warned.length ? `, ${warned.length} warning${warned.length > 1 ? "s" : ""}` : "";
+  if (!req.length) return data.checks.length ? `no requirement checked${warn}` : "";
+  if (!failed.length) return `passes ${m.requirements_of || `every requirement (${req.length})`}${warn}`;
+  const of = m.requirements_of ? `${m.requirements_of} ` : "";
+  return `${failed.length} of ${req.length} ${of}requirement${req.length > 1 ? "s" : ""} fail${failed.length > 1 ? "" : "s"}${warn}`;
+}
+
+function checkName(c) {
+  return c.name.replaceAll("_", " ");
+}
+
+/** The verdict banner (requirements counted) and, apart, the failing requirements named and
+ *  the advice not followed listed as warnings. */
+function checkSummary(m, data, interactive = true) {
+  if (!data.checks.length) return [null, null];
+  const id = (x) => (interactive ? x : null);
+  const { failed, warned } = checkLevels(data);
+  const item = (c) => el("li", {}, el("strong", {}, checkName(c)), ": ", c.detail);
+  const banner = el("div", { class: `check-summary ${failed.length ? "fail" : "ok"}`, id: id("check-summary") },
+    el("strong", { class: "verdict", id: id("verdict") }, (failed.length ? "✗ " : "✓ ") + verdictText(m, data)));
+  const details = failed.length || warned.length ? el("div", { class: "verdict-details" },
+    failed.length ? el("ul", { class: "failed", id: id("failed") }, ...failed.map(item)) : null,
+    warned.length ? el("p", { class: "advice-head" }, "⚠ Advice not followed (a rule of thumb or a recommendation: it does not fail the design):") : null,
+    warned.length ? el("ul", { class: "advice", id: id("advice") }, ...warned.map(item)) : null) : null;
+  return [banner, details];
+}
+
+/** A value of one output in its best unit, with the unit: "73.5 N·m". */
+function valueText(m, data, name) {
+  const o = m.outputs.find((x) => x.name === name);
+  const v = data.results[name];
+  if (!o || v === null || v === undefined) return "—";
+  if (typeof v !== "number") return choiceText(String(v));
+  const u = outputUnit(o, v);
+  if (o.kind === "int" && Number.isInteger(v)) return group(String(v));
+  const digits = sigFigs(data.error_estimate);
+  return `${signOf(o) && v > 0 ? "±" : ""}${fmt(v / u.factor, digits)}${u.label ? " " + u.label : ""}`;
+}
+
+/** A required value declared as a number (SI), in the unit its output is shown in: "1.2". */
+function boundText(o, bound, v) {
+  const u = outputUnit(o, v);
+  return `${short(bound / u.factor, 4)}${u.label ? " " + u.label : ""}`;
+}
+
+/**
+ * The answer card: the numbers the model's question asks for (declared in its spec), each
+ * with its symbol, its required value and the verdict of the check that judges it; the
+ * verdict of the standard's requirements above them.
+ */
+function answerCard(m, data, { interactive = true } = {}) {
+  // an answer the model does not give for this design (S_G without a transverse load) is left out
+  const items = (m.answer || []).filter((a) => data.results[a.output] !== null && data.results[a.output] !== undefined);
+  if (!items.length && !data.checks.length) return null;
+  const byName = Object.fromEntries(data.checks.map((c) => [c.name, c]));
+  const rows = items.map((a) => {
+    const o = m.outputs.find((x) => x.name === a.output);
+    const c = a.check ? byName[a.check] : null;
+    const bound = a.bound === null || a.bound === undefined ? null
+      : typeof a.bound === "string" ? valueText(m, data, a.bound)
+        : boundText(o, a.bound, data.results[a.output]);
+    const need = a.relation ? [` ${a.relation} `, a.bound_symbol ? [symbolNode(a.bound_symbol), " "] : null, bound] : null;
+    return el("li", { "data-answer": a.output, class: c ? (c.ok ? "ok" : c.level === "advice" ? "warn" : "fail") : null },
+      el("span", { class: "what" }, labelOf(o)), " ",
+      symbolNode(a.symbol), " = ", el("strong", { class: "value" }, valueText(m, data, a.output)),
+      need ? el("span", { class: "need" }, ...need.flat()) : null,
+      c ? el("span", { class: "mark", title: c.detail }, c.ok ? " ✓" : c.level === "advice" ? " ⚠" : " ✗") : null);
+  });
+  const [banner, details] = checkSummary(m, data, interactive);
+  return el("section", { class: "answer-card", id: interactive ? "answer-card" : null, "aria-label": "the answer" },
+    banner, rows.length ? el("ul", { class: "answers" }, ...rows) : null, details);
 }
 
 /** When the method's error is large and a finer one exists, say which to pick. */
@@ -1084,7 +1220,9 @@ function resultParts(m, data, { interactive = false } = {}) {
     ` · shown to ${sig} significant figures`);
   const checks = data.checks.length
     ? el("ul", { class: "checks", id: interactive ? "checks" : null }, ...data.checks.map((c) =>
-      el("li", { class: c.ok ? "ok" : "fail" }, el("span", { class: "mark" }, c.ok ? "✓ pass " : "✗ fail "), el("strong", {}, c.name), ": ", c.detail)))
+      el("li", { class: c.ok ? "ok" : c.level === "advice" ? "warn" : "fail", "data-level": c.level || "requirement" },
+        el("span", { class: "mark" }, c.ok ? "✓ pass " : c.level === "advice" ? "⚠ advice " : "✗ fail "), el("strong", {}, c.name),
+        c.level === "advice" ? el("span", { class: "muted" }, " (advice)") : null, ": ", c.detail)))
     : null;
   const warnings = data.warnings.length
     ? el("ul", { class: "warnings", id: interactive ? "warnings" : null }, ...data.warnings.map((w) => el("li", {}, "⚠ ", w))) : null;
@@ -1093,10 +1231,13 @@ function resultParts(m, data, { interactive = false } = {}) {
   const notes = noteList.length
     ? el("ul", { class: "notes", id: interactive ? "notes" : null }, ...noteList.map((n) => el("li", {}, n))) : null;
   const table = el("div", { class: "table-wrap" },
-    el("table", { id: interactive ? "results" : null, class: "results" }, el("tbody", {}, ...resultRows(m, data, { interactive, withDesc: interactive }))));
+    el("table", { id: interactive ? "results" : null, class: "results" },
+      interactive ? null : el("thead", {}, el("tr", {}, ...["result", "symbol", "value", "unit", "step, source"].map((h) => el("th", {}, h)))),
+      el("tbody", {}, ...resultRows(m, data, { interactive, withDesc: interactive }))));
   if (!interactive) return [meta, table, checks ? el("h3", {}, "Checks") : null, checks, warnings ? el("h3", {}, "Warnings") : null, warnings, notes ? el("h3", {}, "Notes") : null, notes].filter(Boolean);
   return [
-    el("h3", { id: "result-heading", tabindex: "-1" }, "Results"), checkSummary(data), meta, methodHint(m, data), table,
+    el("h3", { id: "result-heading", tabindex: "-1" }, "Results"), answerCard(m, data), meta, methodHint(m, data),
+    el("h4", {}, "Every result"), table,
     checks ? el("h4", {}, "Checks") : null, checks,
     warnings ? el("h4", {}, "Warnings") : null, warnings,
     notes ? el("h4", {}, "Notes") : null, notes,
@@ -1209,11 +1350,13 @@ function histogramMarks(m, data, xo) {
 function makeChart(container, kind, { title, xLabel, yLabel, yLabel2 = null, x, ys, bars = false, bands = [], marks = [], xRange = null, xLog = false }) {
   const colors = ["#1f5f99", "#c0392b", "#2e8b57", "#8e44ad", "#b8860b", "#555"];
   const twin = ys.some((s) => s.scale === "y2");
+  // the report's plots are drawn at the size they print at (12 cm wide), their text legible on paper
+  const paper = kind === "report";
   const axis = { size: 70, labelSize: 18, font: "12px system-ui", labelFont: "12px system-ui" };
   const opts = {
     title,
-    width: chartWidth(container),
-    height: 280,
+    width: paper ? 560 : chartWidth(container),
+    height: paper ? 300 : 280,
     scales: { x: { time: false, ...(xLog ? { distr: 3 } : {}), ...(xRange ? { range: xRange } : {}) }, ...(bars ? { y: { range: (u, lo, hi) => [0, hi * 1.1 || 1] } } : {}) },
     axes: [{ label: xLabel, font: axis.font, labelFont: axis.labelFont }, { ...axis, label: yLabel },
       ...(twin ? [{ ...axis, scale: "y2", side: 1, label: yLabel2, grid: { show: false } }] : [])],
@@ -1581,12 +1724,38 @@ function downloadSweep(m, kind) {
 
 /** The calculation report: a view on screen (view=report), and what the page prints. */
 /** Project and part name: kept in the link, the design file and the report's header. */
+/** The report's names, kept in the link: what it is for, who made and checked it, which revision. */
+const REPORT_NAMES = [
+  ["proj", "report-project", "Project", "project"],
+  ["part", "report-part", "Part", "part / joint"],
+  ["auth", "report-author", "Author", "calculated by"],
+  ["chk", "report-checker", "Checker", "checked by"],
+  ["rev", "report-revision", "Revision", "e.g. A"],
+];
+
 function designNames(m, params) {
-  const project = el("input", { id: "report-project", type: "text", value: params.get("proj") ?? "", placeholder: "project" });
-  const part = el("input", { id: "report-part", type: "text", value: params.get("part") ?? "", placeholder: "part / joint" });
-  for (const f of [project, part]) f.addEventListener("change", () => updateHash(m, { ...requestBody(m), ...fidelityBody() }));
-  return el("div", { class: "actions names" },
-    el("label", { for: "report-project" }, "Project"), project, el("label", { for: "report-part" }, "Part"), part);
+  const row = el("div", { class: "actions names" });
+  for (const [key, id, label, hint] of REPORT_NAMES) {
+    const f = el("input", { id, type: "text", value: params.get(key) ?? "", placeholder: hint, class: key === "rev" ? "short" : null });
+    f.addEventListener("change", () => updateHash(m, { ...requestBody(m), ...fidelityBody() }));
+    row.append(el("span", { class: "name" }, el("label", { for: id }, label), " ", f));
+  }
+  return row;
+}
+
+function reportName(id) {
+  return document.getElementById(id)?.value.trim() ?? "";
+}
+
+/** The fastener the result is for, as a designation: "M12 8.8", "M20×1.5 10.9", or "" (no bolt). */
+function fastenerText(data) {
+  const r = data.results || {}, x = data.inputs || {};
+  if (typeof r.fastener === "string" && r.fastener) return r.fastener;
+  if (typeof x.thread === "string" && x.thread) return [x.thread, x.grade || x.property_class].filter(Boolean).join(" ");
+  if (typeof x.thread_diameter !== "number") return "";
+  const pitch = typeof x.thread_pitch === "number" ? `×${short(x.thread_pitch * 1e3, 3)}` : "";
+  const parts = [`M${short(x.thread_diameter * 1e3, 4)}${pitch}`, x.property_class, x.head_standard, x.washer && `washer ${x.washer}`, x.nut && `nut ${x.nut}`];
+  return parts.filter(Boolean).join(" ");
 }
 
 function reportSection(m) {
@@ -1655,17 +1824,27 @@ function renderReport(m) {
   if (!body || !data) return;
   destroyCharts("report");
   const now = new Date();
-  const proj = document.getElementById("report-project").value.trim(), part = document.getElementById("report-part").value.trim();
-  document.getElementById("report-ids").replaceChildren("Project ", el("strong", {}, proj || "—"), " · Part ", el("strong", {}, part || "—"));
+  const names = Object.fromEntries(REPORT_NAMES.map(([key, id]) => [key, reportName(id)]));
+  const fastener = fastenerText(data);
+  const ids = [["Project", names.proj], ["Part", names.part], ...(fastener ? [["Fastener", fastener]] : []),
+    ["Author", names.auth], ["Checker", names.chk], ["Revision", names.rev]];
+  document.getElementById("report-ids").replaceChildren(...ids.flatMap(([label, v], i) =>
+    [i ? " · " : "", `${label} `, el("strong", { id: label === "Fastener" ? "report-fastener" : null }, v || "—")]));
+  // the running header and footer of every printed page (CSS @page margin boxes read them)
+  const root = document.documentElement.style;
+  root.setProperty("--report-head", JSON.stringify(`Calculation report · ${m.title}${names.proj ? " · " + names.proj : ""}${names.part ? " · " + names.part : ""}`));
+  root.setProperty("--report-foot", JSON.stringify(`tightening-calc ${state.version || "?"}${state.commit && state.commit !== "unknown" ? " (" + state.commit.slice(0, 12) + ")" : ""} · ${m.name}${names.rev ? " · revision " + names.rev : ""} · ${now.toISOString().slice(0, 10)}`));
   document.getElementById("report-meta").replaceChildren(
-    `${now.toISOString().slice(0, 16).replace("T", " ")} UTC · service ${state.version || "?"} · model `,
+    `${now.toISOString().slice(0, 16).replace("T", " ")} UTC · tightening-calc ${state.version || "?"}`,
+    ...(state.commit && state.commit !== "unknown" ? [" (commit ", el("code", { id: "report-commit" }, state.commit.slice(0, 12)), ")"] : []),
+    " · model ",
     el("code", {}, m.name), " · ", el("a", { href: location.href, class: "report-link" }, "link to this calculation"));
   const sources = (m.sources || []).map((x) => el("li", {}, String(x.reference).startsWith("[") ? x.reference : `[${x.id}] ${x.reference}`));
   // the equations of the steps of the rung that produced this result (the model's all when
   // the rung declares none), in the order of its procedure
   const ran = (m.rungs || []).find((r) => r.name === data.rung);
   const eqs = ((ran && ran.equations) || m.equations || []).map((e) => el("div", { class: "eq-row" },
-    el("p", { class: "eq-what" }, e.summary.replace(/\s*\[[^\]]*\]\.?$/, ""), e.source ? el("span", { class: "muted" }, ` ${e.source}`) : null),
+    el("p", { class: "eq-what" }, plainText(e.summary).replace(/\s*\[[^\]]*\]\.?$/, ""), e.source ? el("span", { class: "muted" }, ` ${e.source}`) : null),
     ...e.latex.map(equationNode)));
   const seriesBox = el("div", { class: "plots report-plots" });
   // results and checks beside the inputs; warnings and notes below both, full width
@@ -1677,7 +1856,7 @@ function renderReport(m) {
     el("p", { class: "summary" }, m.summary),
     el("p", { class: "source" }, el("strong", {}, "Source: "), m.source),
     sources.length ? el("ul", { class: "sources" }, ...sources) : null,
-    checkSummary(data),
+    answerCard(m, data, { interactive: false }),
     (m.assumptions || []).length ? el("h3", {}, "Assumptions") : null,
     (m.assumptions || []).length ? el("ul", { class: "notes assumptions" }, ...m.assumptions.map((x) => el("li", {}, x))) : null,
     el("div", { class: "two-col" },
@@ -1686,9 +1865,25 @@ function renderReport(m) {
     below.length ? el("div", { class: "report-notes" }, ...below) : null,
     eqs.length ? el("h3", {}, "Equations used") : null,
     eqs.length ? el("div", { class: "equations" }, ...eqs) : null,
-    seriesBox].filter(Boolean));
+    seriesBox,
+    signOff(names)].filter(Boolean));
   if (Object.values(data.series).some((v) => v.length)) renderSeries(m, data, seriesBox, "report");
   if (state.lastSweep?.response) plotSweep(m, seriesBox.appendChild(el("div", {})), "report");
+}
+
+/** A docstring's sentence without its markup: ``code`` and :role:`text` read as their text. */
+function plainText(text) {
+  return String(text ?? "").replace(/:[a-z]+:`~?([^`]*)`/g, "$1").replace(/``([^`]*)``/g, "$1");
+}
+
+/** Who calculated and who checked, with room to sign: the names from the form, the rest by hand. */
+function signOff(names) {
+  const row = (role, name) => el("tr", {}, el("th", { scope: "row" }, role), el("td", { class: "who" }, name || ""), el("td", { class: "sign" }, ""), el("td", { class: "sign" }, ""));
+  return el("section", { class: "sign-off", id: "sign-off", "aria-label": "sign-off" },
+    el("h3", {}, `Sign-off${names.rev ? ` · revision ${names.rev}` : ""}`),
+    el("table", { class: "sign-table" },
+      el("thead", {}, el("tr", {}, el("th", {}, ""), el("th", {}, "name"), el("th", {}, "date"), el("th", {}, "signature"))),
+      el("tbody", {}, row("Calculated by", names.auth), row("Checked by", names.chk))));
 }
 
 // ---------------------------------------------------------------- designs as files
@@ -1902,7 +2097,7 @@ function switchSystem(imperial) {
   setFieldSystem(m, imperial);
   if (state.lastResponse) {
     renderResult(m, state.lastResponse);
-    renderReport(m);
+    if (document.body.classList.contains("view-report")) renderReport(m);
   }
   if (state.lastSweep?.response) plotSweep(m);
   markStale();

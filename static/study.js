@@ -148,7 +148,7 @@ function pickModel(name) {
   fid.replaceChildren(el("option", { value: "", text: `default (${model.default_fidelity})` }), el("option", { value: "auto", text: "auto" }));
   for (const r of model.rungs) fid.append(el("option", { value: r.name, text: r.name }));
   const feas = $("#study-feasible");
-  feas.replaceChildren(el("option", { value: "", text: "every reported check passes" }));
+  feas.replaceChildren(el("option", { value: "", text: "every reported requirement passes" }));
   for (const o of model.outputs.filter((o) => o.kind === "bool" && !o.series)) feas.append(el("option", { value: o.name, text: label(o) }));
 }
 
@@ -339,15 +339,16 @@ function renderChecks() {
   };
   const rows = Object.entries(summary.checks).map(([name, c]) => {
     const unknown = c.unknown ? `, ${c.unknown.toLocaleString("en")} not evaluated` : "";
-    return item(name.replaceAll("_", " "), c.pass_fraction,
+    const label = name.replaceAll("_", " ") + (c.level === "advice" ? " (advice, not counted)" : "");
+    return item(label, c.pass_fraction,
       `(${c.passed.toLocaleString("en")} pass, ${c.failed.toLocaleString("en")} fail${unknown})`, c.passed, c.failed);
   });
   const f = summary.feasible;
   if (rows.length || f.fraction !== null) {
-    const every = f.criterion === "every reported check passes";
+    const every = f.criterion === "every reported requirement passes";
     const ok = f.fraction === null ? 0 : Math.round(f.fraction * f.known);
     const rest = summary.points - f.known;
-    rows.push(item(every ? "all checks" : `feasible (${f.criterion.replaceAll("_", " ")})`, f.fraction,
+    rows.push(item(every ? "all requirements" : `feasible (${f.criterion.replaceAll("_", " ")})`, f.fraction,
       `(${ok.toLocaleString("en")} of ${f.known.toLocaleString("en")} designs${rest ? `, ${rest.toLocaleString("en")} not known` : ""})`,
       ok, f.known - ok));
     rows[rows.length - 1].classList.add("all");

@@ -464,7 +464,7 @@ def run(
         error_estimate=error,
         elapsed_s=elapsed,
         inputs=values,
-        checks=result.checks,
+        checks=spec.levelled(result.checks),
         notes=notes,
         warnings=warnings + result.warnings,
         series=curves,

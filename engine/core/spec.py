@@ -31,6 +31,9 @@ MAX_TEXT_LENGTH = 64
 MIN_SAMPLES = 2
 MAX_SAMPLES = 10_000
 OutputKind = Literal["float", "int", "bool", "str"]
+#: A check of a standard's requirement fails the design; advice (a rule of thumb, a
+#: recommendation) only warns.
+CheckLevel = Literal["requirement", "advice"]
 Value = float | int | bool | str | None
 
 
@@ -83,6 +86,9 @@ class Param:
     #: For a ``samples`` param: the fewest and the most values it takes.
     min_length: int = MIN_SAMPLES
     max_length: int = MAX_SAMPLES
+    #: The input this one takes effect with: while that one is not given, this one changes
+    #: nothing (the form disables it and says so).
+    used_with: str | None = None
 
     @property
     def is_numeric(self) -> bool:
@@ -241,6 +247,7 @@ class Param:
             "range": self.range_text(),
             "group": self.group,
             "description": self.description,
+            "used_with": self.used_with,
             **(
                 {"min_length": self.min_length, "max_length": self.max_length}
                 if self.kind == "samples"
@@ -440,11 +447,45 @@ class Rung:
 
 @dataclass(frozen=True)
 class Check:
-    """A design condition and whether this design meets it, with an actionable sentence."""
+    """A design condition and whether this design meets it, with an actionable sentence.
+
+    ``level`` says what a failure means: ``"requirement"`` (a standard's or the
+    source's condition: the design fails) or ``"advice"`` (a rule of thumb or a
+    recommendation: a warning). The runner sets it from :attr:`ModelSpec.advice`.
+    """
 
     name: str
     ok: bool
     detail: str
+    level: CheckLevel = "requirement"
+
+
+@dataclass(frozen=True)
+class Answer:
+    """One number that answers a model's question, for the answer card above the results.
+
+    ``output`` is a scalar output; ``symbol`` its symbol in the standard; ``check`` the
+    check that judges it (its verdict shown beside it), and ``relation`` with ``bound``
+    the required value: a number in the output's unit or the name of another output
+    (``"≥", "required_clamp_force"`` reads "≥ F_K,erf"), ``bound_symbol`` its symbol.
+    """
+
+    output: str
+    symbol: str
+    check: str | None = None
+    relation: Literal["≥", "≤", ""] = ""
+    bound: float | str | None = None
+    bound_symbol: str | None = None
+
+    def describe(self) -> dict[str, Any]:
+        return {
+            "output": self.output,
+            "symbol": self.symbol,
+            "check": self.check,
+            "relation": self.relation or None,
+            "bound": self.bound,
+            "bound_symbol": self.bound_symbol,
+        }
 
 
 @dataclass
@@ -532,6 +573,14 @@ class ModelSpec:
     #: reconstructions): the runner adds them to each result's notes, and the
     #: catalogue lists them.
     assumptions: tuple[str, ...] = ()
+    #: Names of the checks that are advice (a rule of thumb, a recommendation): a failing
+    #: one warns and the design still passes. Every other check is a requirement.
+    advice: frozenset[str] = frozenset()
+    #: The outputs that answer the model's question, in the order the answer card shows them.
+    answer: tuple[Answer, ...] = ()
+    #: Whose requirements the checks hold, for the verdict ("passes VDI 2230"); empty:
+    #: "passes every requirement".
+    requirements_of: str = ""
     #: Derived from :attr:`name`: ``clutch.ball_setting`` is served at ``/clutch/ball_setting``.
     path: str = field(init=False)
     #: Lookup tables derived once from the declaration (every :func:`engine.run` used to
@@ -570,6 +619,8 @@ class ModelSpec:
         for p in self.inputs:
             if p.choice_labels and len(p.choice_labels) != len(p.choices):
                 raise ValueError(f"{self.name}.{p.name}: one choice label per choice")
+            if p.used_with is not None and p.used_with not in names:
+                raise ValueError(f"{self.name}.{p.name}: used with {p.used_with!r}, no input")
         if self.default_fidelity not in ("auto", *self.rung_names):
             raise ValueError(f"{self.name}: unknown default_fidelity {self.default_fidelity!r}")
         for r in self.rungs:
@@ -578,6 +629,10 @@ class ModelSpec:
                     f"{self.name}: rung {r.name!r} falls back to unknown {r.fallback!r}"
                 )
         outputs = {o.name: o for o in self.outputs}
+        for a in self.answer:
+            for end in (a.output, a.bound if isinstance(a.bound, str) else a.output):
+                if end not in outputs or outputs[end].series:
+                    raise ValueError(f"{self.name}: answer {a.output!r} names {end!r}, no scalar")
         for o in self.outputs:
             if o.x is not None and not (o.x in outputs and outputs[o.x].series):
                 raise ValueError(
@@ -615,6 +670,16 @@ class ModelSpec:
     def sources(self) -> tuple[str, ...]:
         """Ids of the sources (:mod:`engine.core.sources`) that :attr:`source` cites."""
         return tuple(sorted(cited_ids(self.source)))
+
+    def check_level(self, name: str) -> CheckLevel:
+        """``"advice"`` for a check named in :attr:`advice`, else ``"requirement"``."""
+        return "advice" if name in self.advice else "requirement"
+
+    def levelled(self, checks: list[Check]) -> list[Check]:
+        """``checks`` with each one's :attr:`Check.level` as this model declares it."""
+        if not self.advice:
+            return checks
+        return [replace(c, level="advice") if c.name in self.advice else c for c in checks]
 
     def param(self, name: str) -> Param:
         return self._params[name]
@@ -698,6 +763,9 @@ class ModelSpec:
             "outputs": [o.describe() for o in self.outputs],
             "rungs": [r.describe() for r in self.rungs],
             "assumptions": list(self.assumptions),
+            "advice": sorted(self.advice),
+            "answer": [a.describe() for a in self.answer],
+            "requirements_of": self.requirements_of,
             "examples": [dict(e) for e in self.examples],
             # read from the engine functions' docstrings, for the calculation report
             "equations": [dict(e) for e in self.equations()],

@@ -20,7 +20,7 @@ import numpy as np
 
 from ..core.errors import EngineError, InfeasibleDesign, InputOutOfRange
 from ..core.params import DEG, RPM, count, friction_coefficient, length, positive, quantity
-from ..core.spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, Scratch
+from ..core.spec import Answer, Check, ModelSpec, Output, Param, Result, RunContext, Rung, Scratch
 from ..numerics.ode import sqrt, where
 from ..physics import clutch as cl
 from ..physics import nutrunner as nr
@@ -2005,6 +2005,12 @@ def _typical(rung: str) -> dict[str, Any]:
 
 BLOW = ModelSpec(
     name="blow.joint",
+    answer=(
+        Answer("blows_to_target", "n"),
+        Answer("final_torque", "M_final"),
+        Answer("final_preload", "F_V,final", check="preload_window"),
+        Answer("peak_torque", "M_peak"),
+    ),
     title="Blow into a joint: torque and preload per blow, blows to target",
     family="blow",
     summary=(

@@ -15,7 +15,17 @@ import numpy as np
 
 from ..core.errors import InputOutOfRange
 from ..core.params import count, positive, quantity, samples
-from ..core.spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
+from ..core.spec import (
+    Answer,
+    Check,
+    ModelSpec,
+    Output,
+    Param,
+    Result,
+    RunContext,
+    Rung,
+    fixed_error,
+)
 from ..physics import capability as cap
 
 SOURCE = (
@@ -631,6 +641,26 @@ RUN_OF_50 = tuple(round(50.0 + 0.9 * ((i * 37) % 50 - 24.5) / 24.5, 3) for i in 
 
 CAPABILITY = ModelSpec(
     name="tool.capability",
+    requirements_of="VDI/VDE 2645-2",
+    answer=(
+        Answer(
+            "capability_index",
+            "C_m",
+            check="capability_index",
+            relation="≥",
+            bound="required_index",
+            bound_symbol="C_m,req",
+        ),
+        Answer(
+            "critical_capability_index",
+            "C_mk",
+            check="critical_capability_index",
+            relation="≥",
+            bound="required_index",
+            bound_symbol="C_mk,req",
+        ),
+        Answer("mean_torque", "M̄"),
+    ),
     title="Tightening tool capability: Cm, Cmk (Cp, Cpk) from measured torques",
     family="tool",
     summary=(

@@ -17,7 +17,7 @@ import numpy.typing as npt
 
 from ..core.errors import InfeasibleDesign, InputOutOfRange
 from ..core.params import DEG, count, friction_coefficient, length
-from ..core.spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from ..core.spec import Answer, Check, ModelSpec, Output, Param, Result, RunContext, Rung
 from ..physics.clutch import (
     ARRANGEMENTS,
     RECOMMENDED_GROOVE_ANGLE,
@@ -830,6 +830,20 @@ def _chunked_forward(x: Mapping[str, Any], peak: bool = True) -> dict[str, Any]:
 
 BALL_CLUTCH = ModelSpec(
     name="clutch.ball",
+    advice=frozenset(("spring_index", "groove_angle", "self_locking", "residual_torque")),
+    answer=(
+        Answer("torque_limit", "T"),
+        Answer("peak_torque", "T_max"),
+        Answer(
+            "spring_stress_max",
+            "τ_k,max",
+            check="spring_stress_max",
+            relation="≤",
+            bound="permissible_stress",
+            bound_symbol="τ_zul",
+        ),
+        Answer("residual_torque", "T_R", check="residual_torque"),
+    ),
     title="Ball safety clutch: torque limit",
     family="clutch",
     summary=(
@@ -1270,6 +1284,13 @@ def _setting_verdicts(
 
 BALL_CLUTCH_SETTING = ModelSpec(
     name="clutch.ball_setting",
+    advice=frozenset(("spring_index", "required_wire_spring_index", "groove_angle")),
+    answer=(
+        Answer("required_spring_force", "F"),
+        Answer("required_deflection", "Δ", check="required_deflection_groove_depth"),
+        Answer("suggested_wire_diameter", "d_0"),
+        Answer("peak_setting_stress_max", "τ_k,max", check="peak_setting_stress_max"),
+    ),
     title="Ball safety clutch: setting for a target torque",
     family="clutch",
     summary=(

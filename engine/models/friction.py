@@ -16,7 +16,17 @@ import numpy as np
 
 from ..core.errors import InputOutOfRange
 from ..core.params import length, quantity, samples
-from ..core.spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
+from ..core.spec import (
+    Answer,
+    Check,
+    ModelSpec,
+    Output,
+    Param,
+    Result,
+    RunContext,
+    Rung,
+    fixed_error,
+)
 from ..physics import capability as cap
 from ..physics import iso16047 as iso
 from ..physics import threads as th
@@ -305,6 +315,12 @@ CLOSED_FORM = Rung(
 
 ISO16047 = ModelSpec(
     name="friction.iso16047",
+    answer=(
+        Answer("thread_friction_mean", "μ_th"),
+        Answer("bearing_friction_mean", "μ_b"),
+        Answer("total_friction_mean", "μ_tot"),
+        Answer("torque_coefficient_mean", "K"),
+    ),
     title="Friction from a torque/clamp-force test series (ISO 16047)",
     family="friction",
     summary=(

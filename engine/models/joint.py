@@ -22,7 +22,17 @@ from typing import Any
 import numpy as np
 
 from ..core.errors import InputOutOfRange
-from ..core.spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
+from ..core.spec import (
+    Answer,
+    Check,
+    ModelSpec,
+    Output,
+    Param,
+    Result,
+    RunContext,
+    Rung,
+    fixed_error,
+)
 from ..physics import fasteners as fa
 from ..physics import joint as jt
 from ..physics import preload as pl
@@ -424,6 +434,7 @@ JOINT_INPUTS: tuple[Param, ...] = (
         minimum=0.0,
         maximum=1.0,
         group="friction",
+        used_with="tightening_torque",
     ),
     Param(
         "bearing_friction_min",
@@ -441,6 +452,7 @@ JOINT_INPUTS: tuple[Param, ...] = (
         minimum=0.0,
         maximum=1.0,
         group="friction",
+        used_with="tightening_torque",
     ),
     Param(
         "method",
@@ -478,6 +490,7 @@ JOINT_INPUTS: tuple[Param, ...] = (
         minimum=0.0,
         maximum=0.9,
         group="tightening",
+        used_with="tightening_torque",
     ),
     Param(
         "prevailing_torque",
@@ -2026,6 +2039,31 @@ CLOSED_FORM = Rung(
 
 VDI2230 = ModelSpec(
     name="joint.vdi2230",
+    requirements_of="VDI 2230",
+    advice=frozenset(("seed_004_preload_stress", "nut_class_pairing")),
+    answer=(
+        Answer("tightening_torque", "M_A"),
+        Answer("assembly_preload_min", "F_M,min"),
+        Answer(
+            "permissible_preload",
+            "F_M,zul",
+            check="R7_window_fits",
+            relation="≥",
+            bound="required_preload_max",
+            bound_symbol="F_M,max,erf",
+        ),
+        Answer(
+            "residual_clamp_force_min",
+            "F_KR,min",
+            check="residual_clamp_force",
+            relation="≥",
+            bound="required_clamp_force",
+            bound_symbol="F_K,erf",
+        ),
+        Answer("yield_safety", "S_F", check="R8_working_stress", relation="≥", bound=1.0),
+        Answer("fatigue_safety", "S_D", check="R9_fatigue", relation="≥", bound=1.2),
+        Answer("slip_safety", "S_G", check="R12_slip"),
+    ),
     title="Bolted joint: stiffness, service loads, losses and the preload window (VDI 2230)",
     family="joint",
     summary=(

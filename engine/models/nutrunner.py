@@ -17,7 +17,7 @@ import numpy as np
 from ..core import points
 from ..core.errors import InfeasibleDesign, InputOutOfRange
 from ..core.params import RPM, count, friction_coefficient, length, positive
-from ..core.spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from ..core.spec import Answer, Check, ModelSpec, Output, Param, Result, RunContext, Rung
 from ..physics.clutch import (
     acceleration_torque,
     friction_clutch_torque,
@@ -1086,6 +1086,12 @@ EXAMPLE_INDUCTION_MOTOR: dict[str, Any] = {
 
 NUTRUNNER_DRIVE = ModelSpec(
     name="nutrunner.drive",
+    answer=(
+        Answer("impact_torque", "M"),
+        Answer("max_spindle_torque", "M_sp", check="wheel_nut_torque"),
+        Answer("spindle_torque_reserve", "M_sp/M_nut"),
+        Answer("acceleration_time", "t_a"),
+    ),
     title="Multi-spindle impact nut-runner drive",
     family="nutrunner",
     summary=(

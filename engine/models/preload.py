@@ -18,6 +18,7 @@ import numpy as np
 from ..core.errors import EngineError, InputOutOfRange
 from ..core.params import count, friction_coefficient
 from ..core.spec import (
+    Answer,
     Check,
     ModelSpec,
     Output,
@@ -865,6 +866,12 @@ TIGHTENING_ASSUMPTIONS = (
 
 TIGHTENING = ModelSpec(
     name="preload.tightening",
+    answer=(
+        Answer("tightening_torque", "M_A"),
+        Answer("assembly_preload", "F_M"),
+        Answer("permissible_preload", "F_M,zul"),
+        Answer("stress_utilization", "ν"),
+    ),
     title="Bolt preload and tightening torque",
     family="preload",
     summary=(
@@ -1946,6 +1953,26 @@ CONTROL_OUTPUTS: tuple[Output, ...] = (
 
 CONTROL = ModelSpec(
     name="preload.control",
+    answer=(
+        Answer("target_torque", "M_A"),
+        Answer(
+            "preload_min",
+            "F_M,min",
+            check="min_meets_clamp",
+            relation="≥",
+            bound="required_preload",
+            bound_symbol="υ F_K",
+        ),
+        Answer(
+            "preload_max",
+            "F_M,max",
+            check="max_below_yield",
+            relation="≤",
+            bound="yield_preload",
+            bound_symbol="F_M0.2",
+        ),
+        Answer("tightening_factor", "α_A"),
+    ),
     title="Preload control: target value, preload band and friction scatter",
     family="preload",
     summary=(

@@ -20,6 +20,7 @@ import numpy as np
 from ..core.errors import EngineError
 from ..core.params import count, friction_coefficient, in_mm, in_ms, in_n_per_mm, in_rpm, positive
 from ..core.spec import (
+    Answer,
     Check,
     ModelSpec,
     Output,
@@ -1085,6 +1086,18 @@ PAPER_DESIGN: dict[str, Any] = {**REFERENCE_DESIGN, "roller_geometry": "paper"}
 
 RARE_IMPACT = ModelSpec(
     name="impact.rare",
+    answer=(
+        Answer(
+            "engagement_time",
+            "t_e",
+            check="full engagement",
+            relation="≤",
+            bound="engagement_window",
+            bound_symbol="t_w",
+        ),
+        Answer("release_speed", "ω_r"),
+        Answer("cycle_time", "t_c"),
+    ),
     title="Rare-impact wrench: striker engagement",
     family="impact",
     summary=(

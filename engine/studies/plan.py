@@ -28,7 +28,7 @@ import math
 import threading
 import time
 from collections import Counter
-from collections.abc import Mapping, Sequence
+from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -811,15 +811,28 @@ def sobol_indices(y: np.ndarray, base: int, names: Sequence[str]) -> dict[str, d
     return out
 
 
-def feasible_mask(merged: ChunkResult, feasible_when: str | None) -> np.ndarray:
-    """Per point: 1 feasible, 0 not, -1 unknown (refused, or no check reported)."""
+def feasible_mask(
+    merged: ChunkResult, feasible_when: str | None, advice: Collection[str] = ()
+) -> np.ndarray:
+    """Per point: 1 feasible, 0 not, -1 unknown (refused, or no requirement reported).
+
+    Feasible means every requirement the point reports passes; the checks named in
+    ``advice`` (a model's rules of thumb, :attr:`ModelSpec.advice`) warn and do not count.
+    ``feasible_when``, a true/false output, replaces the checks.
+
+    >>> checks = {"R8": np.array([1, 1, 0], np.int8), "thumb": np.array([0, 1, 1], np.int8)}
+    >>> m = ChunkResult({}, checks, ["closed_form"] * 3, {}, 0.0)
+    >>> feasible_mask(m, None).tolist(), feasible_mask(m, None, {"thumb"}).tolist()
+    ([0, 1, 0], [1, 1, 0])
+    """
     n = len(merged.rungs)
     if feasible_when is not None:
         col = merged.values[feasible_when]
         return np.where(np.isfinite(col), (col > 0.5).astype(np.int8), CHECK_UNKNOWN)
-    if not merged.checks:
+    counted = [arr for name, arr in merged.checks.items() if name not in advice]
+    if not counted:
         return np.full(n, CHECK_UNKNOWN, dtype=np.int8)
-    stack = np.vstack(list(merged.checks.values()))
+    stack = np.vstack(counted)
     failed = (stack == CHECK_FAILED).any(axis=0)
     known = (stack != CHECK_UNKNOWN).any(axis=0)
     return np.where(failed, CHECK_FAILED, np.where(known, CHECK_OK, CHECK_UNKNOWN)).astype(np.int8)
@@ -834,9 +847,10 @@ def summarize(spec: ModelSpec, study: Study, p: Plan, merged: ChunkResult) -> di
     units = {o.name: o.unit for o in spec.outputs}
     n = p.n_points
     outputs = {name: _stats(merged.values[name], study.bins) for name in p.outputs}
-    feasible = feasible_mask(merged, study.feasible_when)
+    feasible = feasible_mask(merged, study.feasible_when, spec.advice)
     checks = {
         name: {
+            "level": spec.check_level(name),
             "passed": int((arr == CHECK_OK).sum()),
             "failed": int((arr == CHECK_FAILED).sum()),
             "unknown": int((arr == CHECK_UNKNOWN).sum()),
@@ -860,7 +874,7 @@ def summarize(spec: ModelSpec, study: Study, p: Plan, merged: ChunkResult) -> di
         "outputs": outputs,
         "checks": checks,
         "feasible": {
-            "criterion": study.feasible_when or "every reported check passes",
+            "criterion": study.feasible_when or "every reported requirement passes",
             "fraction": float((feasible == CHECK_OK).sum() / known.sum()) if known.any() else None,
             "known": int(known.sum()),
         },
