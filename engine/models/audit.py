@@ -15,7 +15,17 @@ from typing import Any
 
 from ..core.errors import InputOutOfRange
 from ..core.params import quantity
-from ..core.spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
+from ..core.spec import (
+    Answer,
+    Check,
+    ModelSpec,
+    Output,
+    Param,
+    Result,
+    RunContext,
+    Rung,
+    fixed_error,
+)
 from ..physics import audit as au
 from ..physics import joint as jt
 from ..physics import preload as pl
@@ -76,7 +86,9 @@ INPUTS: tuple[Param, ...] = (
             "prevailing torque)",
         )
         if p.name == "tightening_torque"
-        else p
+        # the friction box's upper ends and the tolerance act on every audit window here,
+        # not only with a torque specification as in joint.vdi2230
+        else replace(p, used_with=None)
         for p in JOINT_INPUTS
         if p.name in _JOINT_NAMES
     ),
@@ -288,6 +300,15 @@ M12_AT_80 = {
 }
 
 AUDIT = ModelSpec(
+    answer=(
+        Answer("first_motion_min", "M_fm,min"),
+        Answer("first_motion_max", "M_fm,max"),
+        Answer("breakaway_min", "M_ba,min"),
+        Answer("breakaway_max", "M_ba,max"),
+        Answer("mark_min", "M_mk,min"),
+        Answer("mark_max", "M_mk,max"),
+        Answer("residual_preload_min", "F_V,min", check="preload_after_embedding"),
+    ),
     name="joint.audit",
     title="Audit window: first-motion, breakaway and mark torque of a tightened joint",
     family="joint",

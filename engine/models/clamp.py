@@ -19,7 +19,17 @@ from typing import Any
 from ..core.errors import InputOutOfRange
 from ..core.params import positive, quantity, samples
 from ..core.runner import run
-from ..core.spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
+from ..core.spec import (
+    Answer,
+    Check,
+    ModelSpec,
+    Output,
+    Param,
+    Result,
+    RunContext,
+    Rung,
+    fixed_error,
+)
 from ..numerics import laws
 from ..numerics.laws import Law
 from ..physics import capability as cap
@@ -687,6 +697,13 @@ M12_JOINT = {
 }
 
 CLAMP_CAPABILITY = ModelSpec(
+    answer=(
+        Answer("low_ppm", "p(F_M < F_M,min)", check="below_required_preload"),
+        Answer("high_ppm", "p(F_M > F_M,zul)", check="above_permissible_preload"),
+        Answer("clamp_force_cpk", "C_pk,F"),
+        Answer("tightening_factor", "α_A"),
+        Answer("preload_median", "F_M,50%"),
+    ),
     name="joint.clamp_capability",
     title="Clamp-force capability: ppm below F_M,min and above F_M,zul of a tool on a joint",
     family="joint",

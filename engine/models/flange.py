@@ -15,7 +15,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from ..core.errors import InputOutOfRange
-from ..core.spec import ModelSpec, Output, Param, Result, RunContext
+from ..core.spec import Answer, ModelSpec, Output, Param, Result, RunContext
 from ..physics import joint as jt
 from .joint import CLOSED_FORM, JOINT_INPUTS, JOINT_OUTPUTS, VDI2230
 from .joint import _compute as _single_bolt  # the chain R0–R13, its equations listed with ours
@@ -207,6 +207,18 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 
 FLANGE = ModelSpec(
+    requirements_of="VDI 2230",
+    advice=frozenset(("seed_004_preload_stress", "nut_class_pairing")),
+    answer=(
+        Answer("bolt_working_load", "F_A"),
+        Answer("tightening_torque", "M_A"),
+        Answer("assembly_preload_min", "F_M,min"),
+        Answer("permissible_preload", "F_M,zul", check="R7_window_fits"),
+        Answer("residual_clamp_force_min", "F_KR,min", check="residual_clamp_force"),
+        Answer("yield_safety", "S_F", check="R8_working_stress", relation="≥", bound=1.0),
+        Answer("fatigue_safety", "S_D", check="R9_fatigue", relation="≥", bound=1.2),
+        Answer("slip_safety", "S_G", check="R12_slip"),
+    ),
     name="joint.flange",
     title="Ring flange of z bolts: the most loaded bolt through VDI 2230",
     family="joint",

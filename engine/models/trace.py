@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -21,6 +21,7 @@ import numpy as np
 from ..core.errors import InputOutOfRange
 from ..core.params import DEG, positive, quantity, samples
 from ..core.spec import (
+    Answer,
     Check,
     ModelSpec,
     Output,
@@ -215,7 +216,11 @@ TRACE_INPUTS: tuple[Param, ...] = (
     ),
 )
 
-INPUTS: tuple[Param, ...] = (*TRACE_INPUTS, *JOINT_INPUTS)
+# the joint's inputs as the trace models read them: the friction box's upper ends and the
+# torque tolerance bound the predicted envelope here whether or not a torque is specified
+_JOINT_INPUTS = tuple(replace(p, used_with=None) for p in JOINT_INPUTS)
+
+INPUTS: tuple[Param, ...] = (*TRACE_INPUTS, *_JOINT_INPUTS)
 _JOINT_NAMES = frozenset(p.name for p in JOINT_INPUTS)
 
 # --------------------------------------------------------------------------- the joint
@@ -775,6 +780,13 @@ M12_JOINT: dict[str, Any] = {
 }
 
 ANALYSIS = ModelSpec(
+    answer=(
+        Answer("preload", "F_V", check="preload_below_permissible"),
+        Answer("total_friction", "μ_ges", check="friction_in_joint_range"),
+        Answer("elastic_rate", "dM/dθ"),
+        Answer("final_torque", "M_end"),
+        Answer("yield_torque", "M_y", check="yield"),
+    ),
     name="trace.analysis",
     title="Tightening trace read against the joint: snug, rate, yield, friction and preload",
     family="trace",
@@ -823,7 +835,7 @@ PROGRAM_INPUTS: tuple[Param, ...] = (
     _SHARED["yield_gradient_fraction"],
     _SHARED["bolt_compliance_uncertainty"],
     _SHARED["clamped_compliance_uncertainty"],
-    *JOINT_INPUTS,
+    *_JOINT_INPUTS,
 )
 
 PROGRAM_OUTPUTS: tuple[Output, ...] = (
@@ -941,6 +953,14 @@ def _program(x: Mapping[str, Any], ctx: RunContext) -> Result:
 
 
 PROGRAM = ModelSpec(
+    answer=(
+        Answer("snug_torque", "M_snug"),
+        Answer("final_angle", "θ_A"),
+        Answer("angle_min", "θ_min", check="angle_window_open"),
+        Answer("angle_max", "θ_max"),
+        Answer("torque_min", "M_min"),
+        Answer("torque_max", "M_max", check="window_fits"),
+    ),
     name="trace.program",
     title="Controller program from the joint: snug torque, angle, torque and gradient windows",
     family="trace",

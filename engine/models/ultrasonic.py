@@ -13,7 +13,17 @@ from typing import Any
 
 from ..core.errors import InputOutOfRange
 from ..core.params import positive
-from ..core.spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
+from ..core.spec import (
+    Answer,
+    Check,
+    ModelSpec,
+    Output,
+    Param,
+    Result,
+    RunContext,
+    Rung,
+    fixed_error,
+)
 from ..physics import preload as pl
 from ..physics import ultrasonic as us
 from ..procedures.bolt import resolve_bolt
@@ -289,6 +299,12 @@ M12_40KN = {
 }
 
 ULTRASONIC = ModelSpec(
+    answer=(
+        Answer("preload", "F_V"),
+        Answer("elongation", "ΔL"),
+        Answer("time_of_flight_change", "Δt"),
+        Answer("bolt_stress", "σ_S", check="below_yield"),
+    ),
     name="preload.ultrasonic",
     title="Ultrasonic elongation ↔ preload (pulse-echo time of flight)",
     family="preload",
