@@ -817,7 +817,7 @@ SOURCES: dict[str, Source] = {
             kind="web page",
             title="CVIR II user manual, section 9.5: yield point controlled tightening",
             authors="Desoutter (tightening-tool maker)",
-            year="2014 (issue 04)",
+            year="2014 (edition 04)",
             published="manual 6159933910, p. 59 (read at manualshive.com, 2026)",
             covers="The yield-point rule of engine.physics.trace.yield_index: the torque rate "
             "is compared with a reference torque rate taken early in the tightening, and the "

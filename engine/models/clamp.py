@@ -664,8 +664,9 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "friction_copula": rho,
         "tool_critical_index": tool_index,
         "quadrature_panels": panels,
-        "category_minimum_met": met,
     }
+    if met is not None:  # only where a category was asked for: no null in the answer
+        values["category_minimum_met"] = met
     return Result(
         values=values,
         rung=ctx.rung,
