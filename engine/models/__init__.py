@@ -17,6 +17,7 @@ from .audit import AUDIT as JOINT_AUDIT
 from .blow import BLOW
 from .capability import CAPABILITY as TOOL_CAPABILITY
 from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
+from .clutch_spring import SPRING_DESIGN as CLUTCH_SPRING_DESIGN
 from .friction import ISO16047 as FRICTION_ISO16047
 from .joint import VDI2230 as JOINT_VDI2230
 from .nutrunner import NUTRUNNER_DRIVE
@@ -31,6 +32,7 @@ MODELS: tuple[ModelSpec, ...] = (
     NUTRUNNER_DRIVE,
     BALL_CLUTCH,
     BALL_CLUTCH_SETTING,
+    CLUTCH_SPRING_DESIGN,
     RARE_IMPACT,
     PRELOAD_TIGHTENING,
     PRELOAD_CONTROL,
