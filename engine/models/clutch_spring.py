@@ -166,15 +166,18 @@ _WHAT = {
 
 
 def _checks(v: Mapping[str, Any]) -> list[Check]:
-    return [
-        Check(
-            c,
-            v[f"margin_{c}"] >= 0.0,
-            f"{_WHAT[c]}: margin {v[f'margin_{c}']:+.3f}"
-            + ("" if v[f"margin_{c}"] >= 0.0 else " (fails)"),
-        )
-        for c in sd.CHECKS
-    ]
+    out = []
+    for c in sd.CHECKS:
+        m = v[f"margin_{c}"]
+        if m is None:  # e.g. a spring so slender it buckles at no deflection (s_K = 0)
+            out.append(Check(c, False, f"{_WHAT[c]}: fails beyond any margin"))
+        else:
+            out.append(
+                Check(
+                    c, m >= 0.0, f"{_WHAT[c]}: margin {m:+.3f}" + ("" if m >= 0.0 else " (fails)")
+                )
+            )
+    return out
 
 
 def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
@@ -183,6 +186,9 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     v["stress_utilisation_stroke"] = v["shear_stress_stroke"] / v["permissible_stress"]
     if not math.isfinite(v["buckling_deflection"]):
         v["buckling_deflection"] = None
+    for c in sd.CHECKS:
+        if not math.isfinite(v[f"margin_{c}"]):
+            v[f"margin_{c}"] = None
     spring = (
         f"d {v['wire_diameter'] * 1e3:g} mm, D {v['mean_diameter'] * 1e3:.4g} mm, "
         f"n {v['active_coils']:g}, L0 {v['free_length'] * 1e3:.4g} mm"
@@ -196,7 +202,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     else:
         verdict = (
             f"no spring in the bounds passes every check: the binding limit is "
-            f"{_WHAT[binding]} (margin {v[f'margin_{binding}']:+.3f}); the nearest spring "
+            f"{_WHAT[binding]}; the nearest spring "
             f"that passes every other check is {spring}"
         )
     notes = [
