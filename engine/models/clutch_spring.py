@@ -110,9 +110,11 @@ INPUTS: tuple[Param, ...] = (
     Param(
         "objective",
         "1",
-        "'lightest': the fewest coils that keep the stress, the lightest spring; "
+        "'thinnest': the thinnest wire that passes every check, with the fewest coils that "
+        "keep the stress, and of its springs the lightest (a larger force never gets a "
+        "thinner wire); "
         "'margin': the most coils the pocket allows, the most stress margin at full stroke",
-        default="lightest",
+        default="thinnest",
         kind="choice",
         choices=sd.OBJECTIVES,
         group="spring",
@@ -197,7 +199,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if v["candidates_passing"]:
         verdict = (
             f"{v['candidates_passing']} of {v['candidates_checked']} springs pass every check; "
-            f"the {x['objective']} is {spring}; the least margin is {_WHAT[binding]}"
+            f"the chosen ({x['objective']}) is {spring}; the least margin is {_WHAT[binding]}"
         )
     else:
         verdict = (

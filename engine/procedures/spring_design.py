@@ -15,14 +15,15 @@ The procedure, as named steps:
    table covers) against mean diameters D on a grid, 3 ≤ D/d ≤ 24 (a little wider
    than the check's 4…20, so that a near miss can still be named).
 3. :func:`coils`: per candidate, the active coils n in half coils: the fewest that
-   keep the corrected shear stress at full stroke within τ_zul ("lightest"), or the
+   keep the corrected shear stress at full stroke within τ_zul ("thinnest"), or the
    most that leave EN 13906-1's minimum gap sum at full stroke ("margin"); never
    fewer than 2.
 4. :func:`evaluate`: every candidate at once (numpy): rate, free length L₀ with the
    spring at the pocket's length at the setting (L₁ = L_set,max), stresses with
    Bergsträsser's factor at the setting and at full stroke against τ_zul = 0.5 R_m(d),
    solid length with S_a, buckling, the margin of every check.
-5. :func:`choose`: among the springs that pass every check, the lightest or the one
+5. :func:`choose`: among the springs that pass every check, the thinnest wire and of
+   its springs the lightest (so a larger force never gets a thinner wire), or the one
    with the most stress margin at full stroke; where none passes, the limit that
    binds and the nearest spring that passes every other check.
 """
@@ -50,7 +51,7 @@ GRID_INDEX = (3.0, 24.0)
 MIN_ACTIVE_COILS = 2.0
 #: Mean diameters on the grid per wire (a step of 0.1 mm or (D_max − D_min)/this).
 MEAN_DIAMETER_STEPS = 400
-OBJECTIVES = ("lightest", "margin")
+OBJECTIVES = ("thinnest", "margin")
 #: The checks, in the order they are reported; each margin is ≥ 0 where it passes.
 CHECKS = (
     "spring_index",
@@ -197,7 +198,7 @@ def coils(
     stroke: float,
     set_length: float,
     material: str,
-    objective: str = "lightest",
+    objective: str = "thinnest",
     dynamic: bool = False,
 ) -> Array:
     r"""Active coils per candidate, in half coils, for the objective.
@@ -219,7 +220,7 @@ def coils(
         L₁, the spring's length at the setting, [m]
     material : str
         Wire material, [-]
-    objective : {"lightest", "margin"}
+    objective : {"thinnest", "margin"}
         Fewest coils that keep τ_k at full stroke within τ_zul (rounded up), or most
         coils that leave S_a at full stroke (rounded down), [-]
     dynamic : bool
@@ -235,7 +236,7 @@ def coils(
     EN 13906-1: F₂ = F₁ + R s_h ≤ F_zul with R = G d⁴/(8 D³ n) gives n ≥ n_τ (no n
     where F₁ ≥ F_zul already: the stress at the setting fails); L₂ = L₁ − s_h ≥
     L_c + S_a with L_c = (n + 2) d (closed, ground ends) gives n ≤ n_L. Where the
-    lightest has no n_τ it takes n_L, and the other way round.
+    fewest has no n_τ it takes n_L, and the other way round.
 
     Examples
     --------
@@ -257,7 +258,7 @@ def coils(
     n_len = (set_length - stroke - 2.0 * wire) / (wire + gap)
     fewest = np.where(np.isfinite(n_tau), _half_up(n_tau), _half_down(n_len))
     most = np.where(n_len > 0.0, _half_down(n_len), _half_up(n_tau))
-    n = fewest if objective == "lightest" else most
+    n = fewest if objective == "thinnest" else most
     n = np.where(np.isfinite(n), n, MIN_ACTIVE_COILS)
     return np.maximum(n, MIN_ACTIVE_COILS)
 
@@ -380,15 +381,16 @@ def choose(values: Mapping[str, Array], objective: str) -> tuple[int, str, int]:
 
     .. math::
         \text{pass}_j = \min_c m_{c,j} \ge 0; \quad
-        j^* = \arg\min_{\text{pass}} m_{mass} \;\text{or}\;
+        j^* = \arg\min_{\text{pass}} (d, m) \;\text{or}\;
         \arg\max_{\text{pass}} m_{\tau,stroke}
 
     Parameters
     ----------
     values : mapping
         :func:`evaluate` of every candidate
-    objective : {"lightest", "margin"}
-        Lightest spring, or most stress margin at full stroke, [-]
+    objective : {"thinnest", "margin"}
+        Thinnest wire (then the lightest of its springs), or most stress margin at
+        full stroke, [-]
 
     Returns
     -------
@@ -408,10 +410,11 @@ def choose(values: Mapping[str, Array], objective: str) -> tuple[int, str, int]:
 
     Examples
     --------
-    >>> v = {"mass": np.array([2.0, 1.0, 3.0]), "margin_stress_at_stroke":
+    >>> v = {"wire_diameter": np.array([0.002, 0.002, 0.001]),
+    ...      "mass": np.array([2.0, 1.0, 3.0]), "margin_stress_at_stroke":
     ...      np.array([0.3, -0.1, 0.2]), "margin_coil_gaps": np.array([0.1, 0.5, 0.4])}
-    >>> choose(v, "lightest"), choose(v, "margin")
-    ((0, 'coil_gaps', 2), (0, 'coil_gaps', 2))
+    >>> choose(v, "thinnest"), choose(v, "margin")
+    ((2, 'stress_at_stroke', 2), (0, 'coil_gaps', 2))
     """
     names = [k for k in values if k.startswith("margin_")]
     m = np.stack([np.asarray(values[k], dtype=float) for k in names])
@@ -419,11 +422,11 @@ def choose(values: Mapping[str, Array], objective: str) -> tuple[int, str, int]:
     ok = (m >= 0.0).all(axis=0)
     passing = int(ok.sum())
     if passing:
-        if objective == "lightest":
-            score = np.where(ok, -np.asarray(values["mass"]), -np.inf)
+        if objective == "thinnest":
+            wire = np.where(ok, np.asarray(values["wire_diameter"]), np.inf)
+            j = int(np.lexsort((np.asarray(values["mass"]), wire))[0])
         else:
-            score = np.where(ok, np.asarray(values["margin_stress_at_stroke"]), -np.inf)
-        j = int(np.argmax(score))
+            j = int(np.argmax(np.where(ok, np.asarray(values["margin_stress_at_stroke"]), -np.inf)))
         return j, names[int(np.argmin(m[:, j]))][len("margin_") :], passing
     best, best_c, best_j = -np.inf, 0, -1
     for c in range(len(names)):
