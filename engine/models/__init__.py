@@ -18,6 +18,7 @@ from .blow import BLOW
 from .capability import CAPABILITY as TOOL_CAPABILITY
 from .clamp import CLAMP_CAPABILITY as JOINT_CLAMP_CAPABILITY
 from .clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
+from .clutch_spring import SPRING_DESIGN as CLUTCH_SPRING_DESIGN
 from .flange import FLANGE as JOINT_FLANGE
 from .friction import ISO16047 as FRICTION_ISO16047
 from .joint import VDI2230 as JOINT_VDI2230
@@ -33,6 +34,7 @@ MODELS: tuple[ModelSpec, ...] = (
     NUTRUNNER_DRIVE,
     BALL_CLUTCH,
     BALL_CLUTCH_SETTING,
+    CLUTCH_SPRING_DESIGN,
     RARE_IMPACT,
     PRELOAD_TIGHTENING,
     PRELOAD_CONTROL,

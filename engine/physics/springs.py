@@ -57,6 +57,7 @@ __all__ = [
     "disc_k4",
     "disc_stresses",
     "disc_thickness_for_flat_force",
+    "helical_mass",
     "helical_natural_frequency",
     "helical_rate",
     "helical_shear_stress",
@@ -1163,3 +1164,53 @@ def disc_k4(
     c1 = ratio**2 / ((l0_t / 4.0 - ratio + 0.75) * (5.0 * l0_t / 8.0 - ratio + 0.375))
     c2 = c1 / ratio**3 * (5.0 / 32.0 * (l0_t - 1.0) ** 2 + 1.0)
     return _out(np.sqrt(-c1 / 2.0 + np.sqrt((c1 / 2.0) ** 2 + c2)))
+
+
+def helical_mass(
+    wire_diameter: FloatArray,
+    mean_diameter: FloatArray,
+    total_coils: FloatArray,
+    density: FloatArray,
+) -> FloatArray:
+    r"""Mass of a helical spring's wire: its length π D n_t times its section.
+
+    .. math::
+        m = \rho \, \frac{\pi d^2}{4} \, \pi D n_t
+
+    Parameters
+    ----------
+    wire_diameter : float
+        d, [m]
+    mean_diameter : float
+        D, [m]
+    total_coils : float
+        n_t, active plus end coils, [-]
+    density : float
+        ρ of the wire, [kg/m^3]
+
+    Returns
+    -------
+    mass : float
+        m, [kg]
+
+    Notes
+    -----
+    EN 13906-1, spring mass (the wire of the coils as a straight bar of length
+    π D n_t; the grinding of the ends is neglected). All arguments may be
+    floats or numpy arrays.
+
+    Examples
+    --------
+    >>> round(helical_mass(0.004, 0.045, 7, 7850.0) * 1e3, 2)
+    97.62
+    """
+    d = np.asarray(wire_diameter, dtype=float)
+    return _out(
+        np.asarray(density)
+        * np.pi
+        * d**2
+        / 4.0
+        * np.pi
+        * np.asarray(mean_diameter)
+        * np.asarray(total_coils)
+    )

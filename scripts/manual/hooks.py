@@ -39,6 +39,7 @@ VALIDATION: dict[str, tuple[str, ...]] = {
         "test_springs_textbooks.py",
     ),
     "clutch.ball_setting": (
+    "clutch.spring_design": ("test_springs_textbooks.py",),
         "test_clutch_paper.py",
         "test_clutch_two_flanks.py",
         "test_springs_textbooks.py",

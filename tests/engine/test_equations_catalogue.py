@@ -79,6 +79,15 @@ KNOWN_STEPS = {
     "nutrunner.drive": ("flywheel_speed", "impact_torque", "spin_up_time"),
     "clutch.ball": ("torque_limit", "ball_tangential_force", "spring_rate"),
     "clutch.ball_setting": ("spring_force_for_torque", "spring_deflection_for_force"),
+    "clutch.spring_design": (
+        "spring_force_for_torque",
+        "rim_rise",
+        "helical_rate",
+        "helical_shear_stress",
+        "solid_length",
+        "minimum_gap_sum",
+        "buckling_deflection",
+    ),
     "impact.rare": ("release_speed_of", "min_return_spring_rate", "relock_margin"),
     "blow.joint": (
         "stress_area",

@@ -1,0 +1,288 @@
+"""Model spec for the spring a clutch setting needs (``clutch.spring_design``).
+
+The clutch inputs are clutch.ball_setting's own declarations; the duty (force at the
+setting, stroke) and the search are :mod:`engine.procedures.spring_design`'s, the
+spring relations :mod:`engine.physics.springs`' (EN 13906-1).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Mapping
+from typing import Any
+
+from ..core.params import length
+from ..core.spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
+from ..physics import springs as sp
+from ..procedures import spring_design as sd
+from .clutch import BALL_CLUTCH_SETTING
+
+_CLUTCH_NAMES = (
+    "target_torque",
+    "ball_circle_diameter",
+    "ball_count",
+    "ball_diameter",
+    "groove_angle",
+    "load_factor",
+    "flank_friction",
+    "spring_arrangement",
+    "driving_groove_angle",
+    "flank_construction",
+    "ball_lift",
+)
+
+
+def _clutch_param(p: Param) -> Param:
+    if p.name == "target_torque":
+        return dataclasses.replace(
+            p, required=True, description="T, the slipping torque to set [001, eq. 1–3]"
+        )
+    if p.name == "ball_lift":
+        return dataclasses.replace(
+            p,
+            required=True,
+            minimum=1e-5,
+            description="h, rise of the ball (and the pressure disk) along the flank from "
+            "seated to the groove's rim; the stroke adds the rise over the rim",
+        )
+    return p
+
+
+INPUTS: tuple[Param, ...] = (
+    *(_clutch_param(p) for p in BALL_CLUTCH_SETTING.inputs if p.name in _CLUTCH_NAMES),
+    length(
+        "max_outer_diameter",
+        "D_e,max, largest outer diameter of the spring (the bore it sits in)",
+        minimum=1e-3,
+        maximum=1.0,
+        required=True,
+        symbol="D_e,max",
+        group="space",
+    ),
+    length(
+        "min_inner_diameter",
+        "D_i,min, smallest inner diameter of the spring (the shaft it sits on); 0 for none",
+        minimum=0.0,
+        maximum=1.0,
+        default=0.0,
+        symbol="D_i,min",
+        group="space",
+    ),
+    length(
+        "max_set_length",
+        "L_1, the pocket's length: the spring's length at the setting (its free length is "
+        "chosen so that it sits at this length)",
+        minimum=1e-3,
+        maximum=2.0,
+        required=True,
+        symbol="L_1",
+        group="space",
+    ),
+    Param(
+        "spring_material",
+        "1",
+        "spring wire: EN 10270-1 SH or DH, or 1.4310 (EN 10270-3); G, E, ρ and "
+        "τ_zul = 0.5 R_m(d) from the tables",
+        default="EN10270-1-DH",
+        kind="choice",
+        choices=tuple(sp.MATERIALS),
+        group="spring",
+    ),
+    Param(
+        "spring_seating",
+        "1",
+        "end seating for buckling: fixed_fixed (ν = 0.5, parallel ground ends), "
+        "fixed_hinged (0.7), hinged_hinged (1), fixed_free (2)",
+        default="fixed_fixed",
+        kind="choice",
+        choices=tuple(sp.SEATING_COEFFICIENTS),
+        group="spring",
+    ),
+    Param(
+        "dynamic_load",
+        "1",
+        "the minimum gap sum S_a × 1.5 (EN 13906-1, dynamic load)",
+        default=False,
+        kind="bool",
+        group="spring",
+    ),
+    Param(
+        "objective",
+        "1",
+        "'thinnest': the thinnest wire that passes every check, with the fewest coils that "
+        "keep the stress, and of its springs the lightest (a larger force never gets a "
+        "thinner wire); "
+        "'margin': the most coils the pocket allows, the most stress margin at full stroke",
+        default="thinnest",
+        kind="choice",
+        choices=sd.OBJECTIVES,
+        group="spring",
+    ),
+)
+
+OUTPUTS: tuple[Output, ...] = (
+    Output("wire_diameter", "m", "d, a preferred EN 10270-1 size", display_unit="mm"),
+    Output("mean_diameter", "m", "D, mean coil diameter", display_unit="mm"),
+    Output("active_coils", "1", "n, active coils (half coils)"),
+    Output("total_coils", "1", "n_t = n + 2, closed and ground ends"),
+    Output("free_length", "m", "L0 = L1 + s1", display_unit="mm"),
+    Output("rate", "N/m", "R = G d⁴/(8 D³ n)", display_unit="N/mm"),
+    Output("set_force", "N", "F1, spring force at the setting [001, eq. 1–3]"),
+    Output("stroke", "m", "s_h = h + (d_b/2)(1 − sin α): the balls' whole lift", display_unit="mm"),
+    Output("set_length", "m", "L1, length at the setting (the pocket)", display_unit="mm"),
+    Output("set_deflection", "m", "s1 = F1/R, the nut setting", display_unit="mm"),
+    Output("stroke_force", "N", "F2 = F1 + R s_h, force at full stroke"),
+    Output("stroke_length", "m", "L2 = L1 − s_h, length at full stroke", display_unit="mm"),
+    Output("solid_length", "m", "L_c = n_t d", display_unit="mm"),
+    Output(
+        "gap_sum", "m", "S_a, minimum sum of gaps at full stroke (EN 13906-1)", display_unit="mm"
+    ),
+    Output("permissible_stress", "Pa", "τ_zul = 0.5 R_m(d)", display_unit="MPa"),
+    Output(
+        "shear_stress_set", "Pa", "τ_k1 = k 8 F1 D/(π d³), Bergsträsser's k", display_unit="MPa"
+    ),
+    Output("shear_stress_stroke", "Pa", "τ_k2 at F2", display_unit="MPa"),
+    Output("buckling_deflection", "m", "s_K; null: it cannot buckle", display_unit="mm"),
+    Output("mass", "kg", "m = ρ (π d²/4) π D n_t", display_unit="g"),
+    Output("stress_utilisation_set", "1", "τ_k1/τ_zul"),
+    Output("stress_utilisation_stroke", "1", "τ_k2/τ_zul"),
+    *(
+        Output(f"margin_{c}", "1", f"margin of the {c.replace('_', ' ')} check: ≥ 0 passes")
+        for c in sd.CHECKS
+    ),
+    Output("binding_limit", "1", "the check with the least margin (or the one failed)", kind="str"),
+    Output("candidates_checked", "1", "springs (d, D) evaluated", kind="int"),
+    Output("candidates_passing", "1", "springs that pass every check", kind="int"),
+)
+
+_WHAT = {
+    "spring_index": "spring index D/d within 4…20",
+    "outer_diameter": "outer diameter D + d within the bore",
+    "inner_diameter": "inner diameter D − d clear of the shaft",
+    "stress_at_set": "τ_k at the setting within τ_zul",
+    "stress_at_stroke": "τ_k at full stroke within τ_zul",
+    "coil_gaps": "length at full stroke ≥ L_c + S_a",
+    "buckling": "deflection at full stroke within s_K",
+}
+
+
+def _checks(v: Mapping[str, Any]) -> list[Check]:
+    out = []
+    for c in sd.CHECKS:
+        m = v[f"margin_{c}"]
+        if m is None:  # e.g. a spring so slender it buckles at no deflection (s_K = 0)
+            out.append(Check(c, False, f"{_WHAT[c]}: fails beyond any margin"))
+        else:
+            out.append(
+                Check(
+                    c, m >= 0.0, f"{_WHAT[c]}: margin {m:+.3f}" + ("" if m >= 0.0 else " (fails)")
+                )
+            )
+    return out
+
+
+def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    v = sd.spring_design(x)
+    v["stress_utilisation_set"] = v["shear_stress_set"] / v["permissible_stress"]
+    v["stress_utilisation_stroke"] = v["shear_stress_stroke"] / v["permissible_stress"]
+    if not math.isfinite(v["buckling_deflection"]):
+        v["buckling_deflection"] = None
+    for c in sd.CHECKS:
+        if not math.isfinite(v[f"margin_{c}"]):
+            v[f"margin_{c}"] = None
+    spring = (
+        f"d {v['wire_diameter'] * 1e3:g} mm, D {v['mean_diameter'] * 1e3:.4g} mm, "
+        f"n {v['active_coils']:g}, L0 {v['free_length'] * 1e3:.4g} mm"
+    )
+    binding = v["binding_limit"]
+    if v["candidates_passing"]:
+        verdict = (
+            f"{v['candidates_passing']} of {v['candidates_checked']} springs pass every check; "
+            f"the chosen ({x['objective']}) is {spring}; the least margin is {_WHAT[binding]}"
+        )
+    else:
+        verdict = (
+            f"no spring in the bounds passes every check: the binding limit is "
+            f"{_WHAT[binding]}; the nearest spring "
+            f"that passes every other check is {spring}"
+        )
+    notes = [
+        verdict,
+        f"F1 = {v['set_force']:.4g} N is the force that makes the balls start to move at "
+        f"{x['target_torque']:g} N·m (clutch.ball_setting's required_spring_force); while "
+        "they climb the spring is compressed by the stroke, so the peak torque is higher: "
+        "run clutch.ball with this spring for the characteristic",
+        "free length chosen so that the spring sits at the pocket's length L1 at the setting; "
+        "the stress at solid length is not checked (a stop at L2 keeps it off solid)",
+    ]
+    return Result(
+        values=v,
+        rung=ctx.rung,
+        error_estimate=0.0,
+        checks=_checks(v),
+        notes=notes,
+    )
+
+
+CLOSED_FORM = Rung(
+    "closed_form",
+    "EN 13906-1's relations over a grid of preferred wires and mean diameters; the coils "
+    "in half coils. Exact against the stated relations; the grid's D step (0.1 mm, or "
+    "1/400 of the range) bounds how close to a limit the chosen spring lies",
+    fixed_error(0.0),
+    typical_error="exact against the stated relations",
+    typical_time="about 10 ms",
+    steps=(
+        sd.clutch_duty,
+        sd.candidate_grid,
+        sd.coils,
+        sd.evaluate,
+        sd.choose,
+    ),
+)
+
+#: The issue's clutch (clutch.ball_setting's second example) set for 60 N·m, in a
+#: 40 mm bore on a 20 mm shaft, 80 mm long.
+SIXTY_NM = {
+    "target_torque": 60.0,
+    "ball_circle_diameter": 0.05,
+    "ball_count": 4,
+    "ball_diameter": 0.01,
+    "groove_angle": math.radians(45.0),
+    "flank_friction": 0.1,
+    "ball_lift": 0.002,
+    "max_outer_diameter": 0.040,
+    "min_inner_diameter": 0.020,
+    "max_set_length": 0.080,
+}
+
+SPRING_DESIGN = ModelSpec(
+    name="clutch.spring_design",
+    title="Ball safety clutch: the spring for a setting (EN 13906-1)",
+    family="clutch",
+    summary=(
+        "The helical compression spring a ball clutch's setting needs: wire, mean diameter, "
+        "coils and free length from the clutch's spring force and stroke and the space, "
+        "checked to EN 13906-1 (stress at the setting and at full stroke, solid length with "
+        "the minimum gap sum, buckling, spring index); where none fits, the binding limit "
+        "and the nearest spring that passes every other check."
+    ),
+    source="[001, eq. 1–3] for the force; EN 13906-1 for the spring; EN 10270-1 wire sizes",
+    inputs=INPUTS,
+    outputs=OUTPUTS,
+    rungs=(CLOSED_FORM,),
+    compute=_compute,
+    examples=(
+        SIXTY_NM,
+        # the paper's clutch at 0.5 N·m: a light spring in a roomy pocket
+        {
+            **SIXTY_NM,
+            "target_torque": 0.5,
+            "flank_friction": 0.0,
+            "max_outer_diameter": 0.050,
+            "min_inner_diameter": 0.0,
+            "max_set_length": 0.040,
+        },
+    ),
+)

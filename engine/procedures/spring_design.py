@@ -1,0 +1,491 @@
+r"""The spring for a clutch setting: a helical compression spring found to EN 13906-1.
+
+The clutch's duty comes from the clutch's own functions: the spring force at the
+setting is the force that makes the balls start to move at the target torque
+(:func:`engine.physics.clutch.spring_force_for_torque`, [001, eq. 1–3]); the stroke
+is the balls' whole lift, up the flank and over the rim
+(:func:`engine.physics.clutch.rim_rise`). The space is the pocket: the largest
+outer diameter, the smallest inner diameter (the shaft) and the largest length of
+the spring at the setting.
+
+The procedure, as named steps:
+
+1. :func:`clutch_duty`: F₁ at the setting and the stroke s_h.
+2. :func:`candidate_grid`: every preferred wire d (EN 10270-1 sizes the material's
+   table covers) against mean diameters D on a grid, 3 ≤ D/d ≤ 24 (a little wider
+   than the check's 4…20, so that a near miss can still be named).
+3. :func:`coils`: per candidate, the active coils n in half coils: the fewest that
+   keep the corrected shear stress at full stroke within τ_zul ("thinnest"), or the
+   most that leave EN 13906-1's minimum gap sum at full stroke ("margin"); never
+   fewer than 2.
+4. :func:`evaluate`: every candidate at once (numpy): rate, free length L₀ with the
+   spring at the pocket's length at the setting (L₁ = L_set,max), stresses with
+   Bergsträsser's factor at the setting and at full stroke against τ_zul = 0.5 R_m(d),
+   solid length with S_a, buckling, the margin of every check.
+5. :func:`choose`: among the springs that pass every check, the thinnest wire and of
+   its springs the lightest (so a larger force never gets a thinner wire), or the one
+   with the most stress margin at full stroke; where none passes, the limit that
+   binds and the nearest spring that passes every other check.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from ..core.errors import InputOutOfRange
+from ..physics import springs as sp
+from ..physics.clutch import riding_flank_angle, rim_rise, spring_force_for_torque
+
+Array = npt.NDArray[np.float64]
+
+#: Spring index range the design checks (EN 13906-1's range for cold-coiled springs).
+INDEX_RANGE = (4.0, 20.0)
+#: Spring index range of the candidate grid: wider than the check so near misses stay.
+GRID_INDEX = (3.0, 24.0)
+#: Fewest active coils EN 13906-1 admits.
+MIN_ACTIVE_COILS = 2.0
+#: Mean diameters on the grid per wire (a step of 0.1 mm or (D_max − D_min)/this).
+MEAN_DIAMETER_STEPS = 400
+OBJECTIVES = ("thinnest", "margin")
+#: The checks, in the order they are reported; each margin is ≥ 0 where it passes.
+CHECKS = (
+    "spring_index",
+    "outer_diameter",
+    "inner_diameter",
+    "stress_at_set",
+    "stress_at_stroke",
+    "coil_gaps",
+    "buckling",
+)
+
+
+def clutch_duty(x: Mapping[str, Any]) -> tuple[Any, Any]:
+    r"""Spring force at the setting and the stroke of a ball clutch, from its own functions.
+
+    .. math::
+        F_1 = \frac{2 T \tan(\alpha - \rho)}{D_0 \, s}, \qquad
+        s_h = h + \frac{d_b}{2}\,(1 - \sin\alpha_{ride})
+
+    Parameters
+    ----------
+    x : mapping
+        The clutch inputs: ``target_torque`` [N*m], ``ball_circle_diameter`` [m],
+        ``groove_angle`` [rad], ``ball_count``, ``load_factor``, ``flank_friction``,
+        ``spring_arrangement``, ``driving_groove_angle`` [rad], ``flank_construction``,
+        ``ball_diameter`` [m] and ``ball_lift`` h [m]; floats or numpy arrays
+
+    Returns
+    -------
+    force, stroke : float
+        F₁, the spring force that sets the zero-lift slipping torque to T [N], and s_h,
+        the further compression while the balls climb the flank and roll over the
+        rim [m]
+
+    Notes
+    -----
+    [001, eq. 1–3] through :func:`engine.physics.clutch.spring_force_for_torque` (the
+    function clutch.ball_setting's required_spring_force calls) and the rim of
+    :func:`engine.physics.clutch.rim_rise` on the flank the ball rides.
+
+    Examples
+    --------
+    >>> f, s = clutch_duty({"target_torque": 0.5, "ball_circle_diameter": 0.05,
+    ...     "groove_angle": math.radians(45.0), "ball_count": 4, "load_factor": 0.85,
+    ...     "flank_friction": 0.0, "spring_arrangement": "common",
+    ...     "driving_groove_angle": None, "flank_construction": "free_ball",
+    ...     "ball_diameter": 0.01, "ball_lift": 0.002})
+    >>> round(f, 6), round(s * 1e3, 4)
+    (20.0, 3.4645)
+    """
+    force = spring_force_for_torque(
+        x["target_torque"],
+        x["ball_circle_diameter"],
+        x["groove_angle"],
+        x["ball_count"],
+        x["load_factor"],
+        x["flank_friction"],
+        x["spring_arrangement"],
+        x["driving_groove_angle"],
+        x["flank_construction"],
+    )
+    ride = riding_flank_angle(x["groove_angle"], x["driving_groove_angle"], x["flank_construction"])
+    stroke = np.asarray(x["ball_lift"]) + np.asarray(rim_rise(x["ball_diameter"], ride))
+    return force, float(stroke) if stroke.ndim == 0 else stroke
+
+
+def candidate_grid(
+    material: str, max_outer_diameter: float, min_inner_diameter: float
+) -> tuple[Array, Array]:
+    r"""Every preferred wire d against a grid of mean diameters D, flattened.
+
+    .. math::
+        D \in [D_{min}, D_{max}], \quad D_{min} = D_{i,min} + d_{min}, \quad
+        D_{max} = D_{e,max} - d_{min}, \quad 3 \le D/d \le 24
+
+    Parameters
+    ----------
+    material : str
+        Wire material (its table bounds the wire sizes), [-]
+    max_outer_diameter : float
+        D_e,max, [m]
+    min_inner_diameter : float
+        D_i,min, 0 for none, [m]
+
+    Returns
+    -------
+    wire, mean : ndarray
+        d and D of every candidate, [m]
+
+    Notes
+    -----
+    Wires: :data:`engine.physics.springs.STANDARD_WIRE_DIAMETERS` within the
+    material's EN 10270 table. D: :data:`MEAN_DIAMETER_STEPS` steps or 0.1 mm,
+    whichever is coarser. The space itself is checked by :func:`evaluate`, so a
+    spring a little too wide stays a candidate to name when nothing fits.
+
+    Examples
+    --------
+    >>> d, D = candidate_grid("EN10270-1-DH", 0.040, 0.020)
+    >>> d.size == D.size, round(float(D.min()) * 1e3, 6), float((D / d).max()) <= 24.0
+    (True, 20.3, True)
+    """
+    lo, hi = sp.MATERIALS[material].diameter_range
+    wires = np.array([w * 1e-3 for w in sp.STANDARD_WIRE_DIAMETERS])
+    wires = wires[(wires >= lo * (1 - 1e-9)) & (wires <= hi * (1 + 1e-9))]
+    d_min = float(wires.min())
+    d_lo = max(min_inner_diameter + d_min, GRID_INDEX[0] * d_min)
+    d_hi = max_outer_diameter - d_min
+    if d_hi <= d_lo:
+        raise InputOutOfRange(
+            f"max_outer_diameter {max_outer_diameter * 1e3:.4g} mm leaves no coil around "
+            f"min_inner_diameter {min_inner_diameter * 1e3:.4g} mm with the thinnest wire "
+            f"({d_min * 1e3:g} mm)",
+            field="max_outer_diameter",
+        )
+    step = max(1e-4, (d_hi - d_lo) / MEAN_DIAMETER_STEPS)
+    means = np.round(np.arange(d_lo, d_hi + 0.5 * step, step), 7)  # whole 0.1 µm
+    wire, mean = (a.ravel() for a in np.meshgrid(wires, means, indexing="ij"))
+    index = mean / wire
+    keep = (index >= GRID_INDEX[0]) & (index <= GRID_INDEX[1])
+    if not keep.any():
+        raise InputOutOfRange(
+            f"between min_inner_diameter {min_inner_diameter * 1e3:.4g} mm and "
+            f"max_outer_diameter {max_outer_diameter * 1e3:.4g} mm no preferred wire "
+            f"({wires.min() * 1e3:g}…{wires.max() * 1e3:g} mm) makes a coil of spring index "
+            f"{GRID_INDEX[0]:g}…{GRID_INDEX[1]:g}",
+            field="min_inner_diameter",
+        )
+    return wire[keep], mean[keep]
+
+
+def _half_up(n: Array) -> Array:
+    return np.ceil(2.0 * n - 1e-9) / 2.0
+
+
+def _half_down(n: Array) -> Array:
+    return np.floor(2.0 * n + 1e-9) / 2.0
+
+
+def coils(
+    wire: Array,
+    mean: Array,
+    force: float,
+    stroke: float,
+    set_length: float,
+    material: str,
+    objective: str = "thinnest",
+    dynamic: bool = False,
+) -> Array:
+    r"""Active coils per candidate, in half coils, for the objective.
+
+    .. math::
+        n_\tau = \frac{G d^4 s_h}{8 D^3 (F_{zul} - F_1)}, \quad
+        F_{zul} = \frac{\pi d^3 \tau_{zul}}{8 k D}; \qquad
+        n_L = \frac{L_1 - s_h - 2d}{d + 0.0015 D^2/d + 0.1 d}
+
+    Parameters
+    ----------
+    wire, mean : ndarray
+        d and D of the candidates, [m]
+    force : float
+        F₁ at the setting, [N]
+    stroke : float
+        s_h, [m]
+    set_length : float
+        L₁, the spring's length at the setting, [m]
+    material : str
+        Wire material, [-]
+    objective : {"thinnest", "margin"}
+        Fewest coils that keep τ_k at full stroke within τ_zul (rounded up), or most
+        coils that leave S_a at full stroke (rounded down), [-]
+    dynamic : bool
+        S_a × 1.5 (EN 13906-1, dynamic load)
+
+    Returns
+    -------
+    n : ndarray
+        Active coils, ≥ 2, [-]
+
+    Notes
+    -----
+    EN 13906-1: F₂ = F₁ + R s_h ≤ F_zul with R = G d⁴/(8 D³ n) gives n ≥ n_τ (no n
+    where F₁ ≥ F_zul already: the stress at the setting fails); L₂ = L₁ − s_h ≥
+    L_c + S_a with L_c = (n + 2) d (closed, ground ends) gives n ≤ n_L. Where the
+    fewest has no n_τ it takes n_L, and the other way round.
+
+    Examples
+    --------
+    >>> n = coils(np.array([0.0045]), np.array([0.027]), 800.0, 0.004, 0.06, "EN10270-1-DH")
+    >>> float(n[0])
+    8.5
+    """
+    m = sp.MATERIALS[material]
+    tau = sp.permissible_shear_stress(material, wire)
+    k = sp.bergstrasser_factor(mean / wire)
+    f_zul = np.pi * wire**3 * tau / (8.0 * k * mean)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        n_tau = np.where(
+            f_zul > force,
+            m.shear_modulus * wire**4 * stroke / (8.0 * mean**3 * (f_zul - force)),
+            np.inf,
+        )
+    gap = (0.0015 * mean**2 / wire + 0.1 * wire) * (1.5 if dynamic else 1.0)
+    n_len = (set_length - stroke - 2.0 * wire) / (wire + gap)
+    fewest = np.where(np.isfinite(n_tau), _half_up(n_tau), _half_down(n_len))
+    most = np.where(n_len > 0.0, _half_down(n_len), _half_up(n_tau))
+    n = fewest if objective == "thinnest" else most
+    n = np.where(np.isfinite(n), n, MIN_ACTIVE_COILS)
+    return np.maximum(n, MIN_ACTIVE_COILS)
+
+
+def evaluate(
+    wire: Any,
+    mean: Any,
+    active: Any,
+    force: float,
+    stroke: float,
+    set_length: float,
+    space: Mapping[str, Any],
+) -> dict[str, Any]:
+    r"""Every EN 13906-1 quantity and check margin of the candidates, all at once.
+
+    .. math::
+        R = \frac{G d^4}{8 D^3 n}, \; s_1 = \frac{F_1}{R}, \; F_2 = F_1 + R s_h, \;
+        L_0 = L_1 + s_1, \; L_2 = L_1 - s_h, \\
+        \tau_{k,i} = k \frac{8 F_i D}{\pi d^3}, \; k = \frac{w + 0.5}{w - 0.75}, \;
+        L_c = (n + 2) d, \; S_a = \left(0.0015 \frac{D^2}{d} + 0.1 d\right) n
+
+    Parameters
+    ----------
+    wire, mean, active : ndarray
+        d [m], D [m], n [-] of the candidates
+    force : float
+        F₁ at the setting, [N]
+    stroke : float
+        s_h, [m]
+    set_length : float
+        L₁, [m]
+    space : mapping
+        ``max_outer_diameter``, ``min_inner_diameter`` [m], ``spring_material``,
+        ``spring_seating``, ``dynamic_load``
+
+    Returns
+    -------
+    values : dict
+        The quantities (``rate``, ``free_length``, ``shear_stress_set``, …) and
+        ``margin_<check>`` for each of :data:`CHECKS`: 1 − used/allowed, ≥ 0 passes
+
+    Notes
+    -----
+    EN 13906-1 through :mod:`engine.physics.springs`: :func:`~engine.physics.springs.helical_rate`,
+    :func:`~engine.physics.springs.helical_shear_stress` (Bergsträsser),
+    :func:`~engine.physics.springs.permissible_shear_stress`,
+    :func:`~engine.physics.springs.solid_length`,
+    :func:`~engine.physics.springs.minimum_gap_sum`,
+    :func:`~engine.physics.springs.buckling_deflection` (s₂ ≤ s_K; margin 1 where it
+    cannot buckle), :func:`~engine.physics.springs.helical_mass`. Index margin
+    min(w/4 − 1, 1 − w/20); outer 1 − (D + d)/D_e,max; inner 1 − D_i,min/(D − d).
+
+    Examples
+    --------
+    >>> v = evaluate(0.0045, 0.027, 8.5, 800.0, 0.004, 0.06,
+    ...     {"max_outer_diameter": 0.035, "min_inner_diameter": 0.02,
+    ...      "spring_material": "EN10270-1-DH", "spring_seating": "fixed_fixed",
+    ...      "dynamic_load": False})
+    >>> round(v["rate"] / 1e3, 3), round(v["margin_stress_at_stroke"], 4)
+    (24.969, 0.0052)
+    """
+    material = sp.MATERIALS[space["spring_material"]]
+    d, dm, n = (np.asarray(a, dtype=float) for a in (wire, mean, active))
+    rate = np.asarray(sp.helical_rate(material.shear_modulus, d, dm, n))
+    s1 = force / rate
+    f2 = force + rate * stroke
+    free = set_length + s1
+    l2 = set_length - stroke
+    tau = np.asarray(sp.permissible_shear_stress(material.name, d))
+    t1 = np.asarray(sp.helical_shear_stress(force, dm, d, "bergstrasser"))
+    t2 = np.asarray(sp.helical_shear_stress(f2, dm, d, "bergstrasser"))
+    solid = np.asarray(sp.solid_length(d, n))
+    gaps = np.asarray(sp.minimum_gap_sum(d, dm, n, bool(space["dynamic_load"])))
+    s_k = np.asarray(
+        sp.buckling_deflection(
+            free,
+            dm,
+            sp.SEATING_COEFFICIENTS[space["spring_seating"]],
+            material.shear_modulus,
+            material.elastic_modulus,
+        )
+    )
+    w = dm / d
+    lo, hi = INDEX_RANGE
+    inner = float(space["min_inner_diameter"])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        margins = {
+            "spring_index": np.minimum(w / lo - 1.0, 1.0 - w / hi),
+            "outer_diameter": 1.0 - (dm + d) / float(space["max_outer_diameter"]),
+            "inner_diameter": 1.0 - inner / (dm - d),
+            "stress_at_set": 1.0 - t1 / tau,
+            "stress_at_stroke": 1.0 - t2 / tau,
+            "coil_gaps": 1.0 - (solid + gaps) / l2,
+            "buckling": np.where(np.isfinite(s_k), 1.0 - (s1 + stroke) / s_k, 1.0),
+        }
+    out: dict[str, Any] = {
+        "wire_diameter": d,
+        "mean_diameter": dm,
+        "active_coils": n,
+        "total_coils": n + 2.0,
+        "rate": rate,
+        "set_deflection": s1,
+        "stroke_force": f2,
+        "free_length": free,
+        "stroke_length": l2 + 0.0 * d,
+        "solid_length": solid,
+        "gap_sum": gaps,
+        "permissible_stress": tau,
+        "shear_stress_set": t1,
+        "shear_stress_stroke": t2,
+        "buckling_deflection": s_k,
+        "mass": np.asarray(sp.helical_mass(d, dm, n + 2.0, material.density)),
+        **{f"margin_{c}": m for c, m in margins.items()},
+    }
+    return {k: float(v) if np.ndim(v) == 0 else v for k, v in out.items()}
+
+
+def choose(values: Mapping[str, Array], objective: str) -> tuple[int, str, int]:
+    r"""The spring to name, the limit that binds, and how many candidates pass.
+
+    .. math::
+        \text{pass}_j = \min_c m_{c,j} \ge 0; \quad
+        j^* = \arg\min_{\text{pass}} (d, m) \;\text{or}\;
+        \arg\max_{\text{pass}} m_{\tau,stroke}
+
+    Parameters
+    ----------
+    values : mapping
+        :func:`evaluate` of every candidate
+    objective : {"thinnest", "margin"}
+        Thinnest wire (then the lightest of its springs), or most stress margin at
+        full stroke, [-]
+
+    Returns
+    -------
+    index : int
+        The chosen candidate
+    binding : str
+        The check with the smallest margin (where one passes) or the one it fails
+    passing : int
+        How many candidates pass every check
+
+    Notes
+    -----
+    Where none passes: per check, the candidates that pass every *other* check,
+    and among them the one that comes closest to passing this one; the check whose
+    nearest spring comes closest binds. Where no candidate fails only one check,
+    the candidate whose worst margin is least bad, and its worst check.
+
+    Examples
+    --------
+    >>> v = {"wire_diameter": np.array([0.002, 0.002, 0.001]),
+    ...      "mass": np.array([2.0, 1.0, 3.0]), "margin_stress_at_stroke":
+    ...      np.array([0.3, -0.1, 0.2]), "margin_coil_gaps": np.array([0.1, 0.5, 0.4])}
+    >>> choose(v, "thinnest"), choose(v, "margin")
+    ((2, 'stress_at_stroke', 2), (0, 'coil_gaps', 2))
+    """
+    names = [k for k in values if k.startswith("margin_")]
+    m = np.stack([np.asarray(values[k], dtype=float) for k in names])
+    m = np.where(np.isnan(m), -np.inf, m)
+    ok = (m >= 0.0).all(axis=0)
+    passing = int(ok.sum())
+    if passing:
+        if objective == "thinnest":
+            wire = np.where(ok, np.asarray(values["wire_diameter"]), np.inf)
+            j = int(np.lexsort((np.asarray(values["mass"]), wire))[0])
+        else:
+            j = int(np.argmax(np.where(ok, np.asarray(values["margin_stress_at_stroke"]), -np.inf)))
+        return j, names[int(np.argmin(m[:, j]))][len("margin_") :], passing
+    best, best_c, best_j = -np.inf, 0, -1
+    for c in range(len(names)):
+        others = np.delete(m, c, axis=0)
+        cand = (others >= 0.0).all(axis=0)
+        if cand.any():
+            j = int(np.argmax(np.where(cand, m[c], -np.inf)))
+            if m[c, j] > best:
+                best, best_c, best_j = float(m[c, j]), c, j
+    if best_j < 0:
+        best_j = int(np.argmax(m.min(axis=0)))
+        best_c = int(np.argmin(m[:, best_j]))
+    return best_j, names[best_c][len("margin_") :], 0
+
+
+def spring_design(x: Mapping[str, Any]) -> dict[str, Any]:
+    """The clutch's spring: duty, grid, coils, checks, choice (steps 1–5 above).
+
+    Returns the chosen candidate's :func:`evaluate` values as floats, with
+    ``set_force``, ``stroke``, ``set_length``, ``binding_limit``,
+    ``candidates_checked`` and ``candidates_passing``.
+    """
+    force, stroke = clutch_duty(x)
+    force, stroke = float(force), float(stroke)
+    if not math.isfinite(force):
+        raise InputOutOfRange(
+            "the flank never pushes the balls out (groove angle ≤ atan f): no spring force "
+            "sets a slipping torque",
+            field="flank_friction",
+        )
+    set_length = float(x["max_set_length"])
+    if set_length <= stroke:
+        raise InputOutOfRange(
+            f"max_set_length {set_length * 1e3:.4g} mm must exceed the stroke "
+            f"{stroke * 1e3:.4g} mm (ball lift plus the rise over the rim)",
+            field="max_set_length",
+        )
+    wire, mean = candidate_grid(
+        x["spring_material"], float(x["max_outer_diameter"]), float(x["min_inner_diameter"])
+    )
+    active = coils(
+        wire,
+        mean,
+        force,
+        stroke,
+        set_length,
+        x["spring_material"],
+        x["objective"],
+        bool(x["dynamic_load"]),
+    )
+    values = evaluate(wire, mean, active, force, stroke, set_length, x)
+    j, binding, passing = choose(values, x["objective"])
+    out: dict[str, Any] = {k: float(np.asarray(v)[j]) for k, v in values.items()}
+    out.update(
+        set_force=force,
+        stroke=stroke,
+        set_length=set_length,
+        binding_limit=binding,
+        candidates_checked=int(wire.size),
+        candidates_passing=passing,
+    )
+    return out
