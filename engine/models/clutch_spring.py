@@ -13,7 +13,17 @@ from collections.abc import Mapping
 from typing import Any
 
 from ..core.params import length
-from ..core.spec import Check, ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
+from ..core.spec import (
+    Answer,
+    Check,
+    ModelSpec,
+    Output,
+    Param,
+    Result,
+    RunContext,
+    Rung,
+    fixed_error,
+)
 from ..physics import springs as sp
 from ..procedures import spring_design as sd
 from .clutch import BALL_CLUTCH_SETTING
@@ -258,6 +268,21 @@ SIXTY_NM = {
 }
 
 SPRING_DESIGN = ModelSpec(
+    requirements_of="EN 13906-1",
+    answer=(
+        Answer("wire_diameter", "d"),
+        Answer("mean_diameter", "D", check="spring_index"),
+        Answer("active_coils", "n"),
+        Answer("free_length", "L_0", check="coil_gaps"),
+        Answer("rate", "R"),
+        Answer(
+            "stress_utilisation_stroke",
+            "τ_k2/τ_zul",
+            check="stress_at_stroke",
+            relation="≤",
+            bound=1.0,
+        ),
+    ),
     name="clutch.spring_design",
     title="Ball safety clutch: the spring for a setting (EN 13906-1)",
     family="clutch",

@@ -38,8 +38,8 @@ VALIDATION: dict[str, tuple[str, ...]] = {
         "test_clutch_two_flanks.py",
         "test_springs_textbooks.py",
     ),
-    "clutch.ball_setting": (
     "clutch.spring_design": ("test_springs_textbooks.py",),
+    "clutch.ball_setting": (
         "test_clutch_paper.py",
         "test_clutch_two_flanks.py",
         "test_springs_textbooks.py",
