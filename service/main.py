@@ -180,12 +180,21 @@ def create_app(
         operation_id="readyz",
         tags=["service"],
         summary="Readiness: 503 while either engine lane cannot admit work",
+        description=(
+            "Each lane's running and waiting computations, and the studies: running and "
+            "queued in this process, and unfinished in all. Studies never make the service "
+            "busy (they run on their own threads and workers): they are reported, not gated."
+        ),
         responses={503: {"description": "a lane has no free slot and a full queue"}},
     )
     async def readyz() -> JSONResponse:
         ready = pool.ready()
         return JSONResponse(
-            {"status": "ready" if ready else "busy", "lanes": pool.state()},
+            {
+                "status": "ready" if ready else "busy",
+                "lanes": pool.state(),
+                "studies": studies.state(),
+            },
             status_code=200 if ready else 503,
             headers=None if ready else {"retry-after": "1"},
         )

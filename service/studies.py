@@ -258,6 +258,20 @@ class Studies:
                 self._dask = DaskExecutor(self.settings.dask_scheduler, n_workers=workers)
             return self._dask
 
+    def state(self) -> dict[str, Any]:
+        """Studies running and queued here, the unfinished ones in all, and the limits
+        (for ``/readyz``)."""
+        with self.lock:
+            active = [j for j in self.jobs.values() if j.active]
+        running = sum(j.state == "running" for j in active)
+        return {
+            "running": running,
+            "queued": len(active) - running,
+            "active": len(active),
+            "max_active": self.settings.max_active,
+            "per_client": self.settings.per_client,
+        }
+
     def _prune(self) -> None:
         now = time.time()
         done = sorted(

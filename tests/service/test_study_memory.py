@@ -182,3 +182,14 @@ def test_a_job_error_does_not_show_a_worker_address(
     assert msg.startswith("OSError: Timed out trying to connect to <worker> after 10 s")
     for leak in ("10.20.30.40", "8786", "fe80", "192.168", "tcp://", "tls://"):
         assert leak not in msg
+
+
+def test_readyz_reports_running_studies(setup: tuple[TestClient, Studies]) -> None:
+    client, studies = setup
+    idle = client.get("/readyz").json()["studies"]
+    assert idle == {"running": 0, "queued": 0, "active": 0, "max_active": 4, "per_client": 1}
+    studies.jobs["busy"] = Job("busy", TOY.name, "x", 10, False, state="running")
+    studies.jobs["next"] = Job("next", TOY.name, "y", 10, False)
+    r = client.get("/readyz")
+    assert r.status_code == 200  # studies run on their own threads: reported, not gated
+    assert r.json()["studies"] == {**idle, "running": 1, "queued": 1, "active": 2}
