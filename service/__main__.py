@@ -77,6 +77,9 @@ def main(argv: list[str] | None = None) -> None:
         server_header=False,
         date_header=False,
         http=protocol(),
+        # X-Forwarded-For is read by the app from TRUSTED_PROXIES alone (service.main);
+        # uvicorn's own reading would trust loopback (FORWARDED_ALLOW_IPS' default)
+        proxy_headers=False,
         h11_max_incomplete_event_size=settings.max_head_bytes,
         limit_concurrency=settings.max_connections,
         timeout_keep_alive=5,

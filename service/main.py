@@ -36,6 +36,7 @@ from fastapi.openapi.docs import get_redoc_html, get_swagger_ui_html
 from fastapi.responses import HTMLResponse, JSONResponse, RedirectResponse
 from fastapi.routing import APIRoute
 from fastapi.staticfiles import StaticFiles
+from uvicorn.middleware.proxy_headers import ProxyHeadersMiddleware
 
 import engine
 from engine import ModelSpec
@@ -264,6 +265,8 @@ def create_app(
             expose_headers=["x-request-id"],
         )
     app.add_middleware(FrontDoor, log_requests=settings.access_log)
+    if settings.trusted_proxies:  # outermost: every guard and quota sees the real client
+        app.add_middleware(ProxyHeadersMiddleware, trusted_hosts=list(settings.trusted_proxies))
 
     @app.get("/manual", include_in_schema=False)
     def manual_root() -> RedirectResponse:

@@ -59,10 +59,12 @@ from engine.studies.plan import (
 
 from . import schemas
 from .api import _ERRORS, API_PREFIX
-from .config import _float, _int, usable_cpus
+from .config import _float, _int, usable_cpus, usable_memory
 from .units import quantity
 
 _KEEP_JOBS = 64
+#: The share of the usable memory the local Dask workers may hold between them.
+DASK_MEMORY_SHARE = 0.5
 
 log = logging.getLogger("service.studies")
 
@@ -82,6 +84,9 @@ class StudySettings:
         default_factory=lambda: os.environ.get("DASK_SCHEDULER") or None
     )
     dask_workers: int | None = field(default_factory=lambda: _int("DASK_WORKERS", 0) or None)
+    #: Memory each local Dask worker may use [bytes]; 0: a share of the memory the process
+    #: may really use (cgroup limit), DASK_MEMORY_SHARE of it split between the workers.
+    dask_worker_memory: int = field(default_factory=lambda: _int("DASK_WORKER_MEMORY", 0))
 
     def __post_init__(self) -> None:
         """Refuse a bound that makes no sense at start-up, naming the variable and its range
@@ -93,6 +98,7 @@ class StudySettings:
             ("STUDY_INPROCESS_POINTS", self.inprocess_points, 0, "0: every study on Dask"),
             ("STUDY_KEEP_POINTS", self.keep_points_max, 0, "0: raw points never kept"),
             ("DASK_WORKERS", self.dask_workers or 0, 0, "0: one worker per usable CPU"),
+            ("DASK_WORKER_MEMORY", self.dask_worker_memory, 0, "0: sized from the usable memory"),
         )
         for name, value, lowest, meaning in counts:
             if not value >= lowest:
@@ -255,7 +261,14 @@ class Studies:
                 # one worker per CPU this process may use (affinity, cgroup quota), not one
                 # per CPU of the host: 2 in a 2-CPU container on a 64-CPU machine
                 workers = self.settings.dask_workers or usable_cpus()
-                self._dask = DaskExecutor(self.settings.dask_scheduler, n_workers=workers)
+                # and memory from what the process may use (cgroup memory.max), half of it
+                # for the workers: 1 GB each in a 4 GB, 2-CPU container on a 24 GB host
+                memory = self.settings.dask_worker_memory or int(
+                    DASK_MEMORY_SHARE * usable_memory() / workers
+                )
+                self._dask = DaskExecutor(
+                    self.settings.dask_scheduler, n_workers=workers, memory_limit=memory
+                )
             return self._dask
 
     def state(self) -> dict[str, Any]:

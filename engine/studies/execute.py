@@ -76,9 +76,17 @@ class InProcess:
 class DaskExecutor:
     """Evaluate chunks on ``dask.distributed`` workers (local cluster or ``address``)."""
 
-    def __init__(self, address: str | None = None, n_workers: int | None = None) -> None:
+    def __init__(
+        self,
+        address: str | None = None,
+        n_workers: int | None = None,
+        memory_limit: int | None = None,
+    ) -> None:
         self.address = address
         self.n_workers = n_workers or os.cpu_count() or 1
+        #: Bytes each local worker may hold (Dask pauses, then restarts one beyond it);
+        #: None: Dask's default, the machine's memory split between the workers.
+        self.memory_limit = memory_limit
         self._client: Any = None
         self._cluster: Any = None
         self._lock = threading.Lock()
@@ -95,6 +103,7 @@ class DaskExecutor:
                         n_workers=self.n_workers,
                         threads_per_worker=1,
                         processes=True,
+                        memory_limit=self.memory_limit or "auto",
                         host="127.0.0.1",
                         # an HTTP port of its own on loopback (None would still take 8787)
                         dashboard_address="127.0.0.1:0",
