@@ -84,6 +84,10 @@ def main(argv: list[str] | None = None) -> None:
         limit_concurrency=settings.max_connections,
         timeout_keep_alive=5,
         timeout_graceful_shutdown=settings.shutdown_timeout_s,
+        # a worker process imports the engine (numpy, scipy, numba) before it answers the
+        # supervisor's ping: ~2 s of CPU, over uvicorn's 5 s default on a loaded machine,
+        # where workers were killed and restarted in a loop
+        timeout_worker_healthcheck=30,
     )
 
 

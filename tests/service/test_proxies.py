@@ -44,7 +44,7 @@ def _submit(proxies: str, monkeypatch: pytest.MonkeyPatch) -> tuple[int, int]:
         study_settings=StudySettings(per_client=1, inprocess_points=1000),
     )
     busy = Job("busy", TOY.name, "127.0.0.1", 10, False, state="running")
-    app.state.studies.jobs[busy.id] = busy
+    app.state.studies.store.put(busy.row("a process"))
 
     async def run() -> tuple[int, int]:
         transport = httpx.ASGITransport(app=app, client=("127.0.0.1", 40000))
