@@ -21,12 +21,14 @@ SHA-256 hash (no ``'unsafe-inline'`` for scripts), and /redoc also its CDN.
 
 from __future__ import annotations
 
+import asyncio
 import base64
 import contextlib
 import hashlib
 import re
+import signal
 import threading
-from collections.abc import AsyncIterator, Sequence
+from collections.abc import AsyncIterator, Callable, Sequence
 from contextlib import asynccontextmanager
 from pathlib import Path
 
@@ -94,6 +96,36 @@ def warm_up(models: Sequence[ModelSpec]) -> None:
                     engine.run(spec, example, fidelity=rung)
 
 
+#: On SIGTERM, open work gets the shutdown timeout less this to finish; then it is stopped
+#: and answers 503 before uvicorn closes the connections at the timeout [s].
+STOP_MARGIN_S = 1.0
+
+
+def after_stop_signal(callback: Callable[[], None]) -> Callable[[], None]:
+    """Call ``callback`` when SIGTERM or SIGINT arrives, after the handler already set (the
+    server's: uvicorn's starts its graceful shutdown); answers a function that puts the
+    handlers back. Nothing is set outside the main thread (a test client's lifespan)."""
+    if threading.current_thread() is not threading.main_thread():
+        return lambda: None
+    previous = {sig: signal.getsignal(sig) for sig in (signal.SIGTERM, signal.SIGINT)}
+
+    def handler(sig: int, frame: object) -> None:
+        before = previous[signal.Signals(sig)]
+        if callable(before):
+            before(sig, frame)  # type: ignore[arg-type]
+        callback()
+
+    for sig in previous:
+        signal.signal(sig, handler)
+
+    def undo() -> None:
+        for sig, before in previous.items():
+            if signal.getsignal(sig) is handler:
+                signal.signal(sig, before)
+
+    return undo
+
+
 def static_dir() -> Path:
     """``service/static`` in an installed wheel, ``static/`` beside the package in a checkout."""
     here = Path(__file__).resolve().parent
@@ -154,7 +186,17 @@ def create_app(
     async def lifespan(_: FastAPI) -> AsyncIterator[None]:
         if settings.warm_up:
             threading.Thread(target=warm_up, args=(models,), name="warm-up", daemon=True).start()
+        # on SIGTERM open work may finish for a while, then answers 503 (not a dropped
+        # connection at uvicorn's graceful-shutdown timeout)
+        loop = asyncio.get_running_loop()
+        grace = max(0.0, settings.shutdown_timeout_s - STOP_MARGIN_S)
+
+        def stop_later() -> None:  # in the signal handler: hand it to the loop
+            loop.call_soon_threadsafe(loop.call_later, grace, pool.stop)
+
+        undo = after_stop_signal(stop_later)
         yield
+        undo()
         pool.shutdown()
         studies.shutdown()
 
