@@ -102,18 +102,20 @@ STOP_MARGIN_S = 1.0
 
 
 def after_stop_signal(callback: Callable[[], None]) -> Callable[[], None]:
-    """Call ``callback`` when SIGTERM or SIGINT arrives, after the handler already set (the
-    server's: uvicorn's starts its graceful shutdown); answers a function that puts the
-    handlers back. Nothing is set outside the main thread (a test client's lifespan)."""
+    """Call ``callback`` when SIGTERM or SIGINT arrives, then the handler already set (the
+    server's: uvicorn's starts its graceful shutdown; Python's raises KeyboardInterrupt);
+    answers a function that puts the handlers back. Nothing is set outside the main
+    thread (a test client's lifespan)."""
     if threading.current_thread() is not threading.main_thread():
         return lambda: None
     previous = {sig: signal.getsignal(sig) for sig in (signal.SIGTERM, signal.SIGINT)}
 
     def handler(sig: int, frame: object) -> None:
         before = previous[signal.Signals(sig)]
+        with contextlib.suppress(RuntimeError):  # the app's loop closed: nothing to stop
+            callback()
         if callable(before):
             before(sig, frame)  # type: ignore[arg-type]
-        callback()
 
     for sig in previous:
         signal.signal(sig, handler)
