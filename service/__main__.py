@@ -77,10 +77,17 @@ def main(argv: list[str] | None = None) -> None:
         server_header=False,
         date_header=False,
         http=protocol(),
+        # X-Forwarded-For is read by the app from TRUSTED_PROXIES alone (service.main);
+        # uvicorn's own reading would trust loopback (FORWARDED_ALLOW_IPS' default)
+        proxy_headers=False,
         h11_max_incomplete_event_size=settings.max_head_bytes,
         limit_concurrency=settings.max_connections,
         timeout_keep_alive=5,
         timeout_graceful_shutdown=settings.shutdown_timeout_s,
+        # a worker process imports the engine (numpy, scipy, numba) before it answers the
+        # supervisor's ping: ~2 s of CPU, over uvicorn's 5 s default on a loaded machine,
+        # where workers were killed and restarted in a loop
+        timeout_worker_healthcheck=30,
     )
 
 

@@ -26,6 +26,11 @@ def _origins() -> tuple[str, ...]:
     return tuple(o.strip() for o in raw.split(",") if o.strip())
 
 
+def _proxies() -> tuple[str, ...]:
+    raw = os.environ.get("TRUSTED_PROXIES", "")
+    return tuple(p.strip() for p in raw.split(",") if p.strip())
+
+
 def _quota(text: str, period_text: str | None = None) -> float | None:
     """CPUs a cgroup quota allows: cgroup v2 ``cpu.max`` holds ``"<quota> <period>"`` or
     ``"max <period>"``; v1 gives the quota and period in two files, ``-1`` for none."""
@@ -46,6 +51,37 @@ def _read(path: Path) -> str | None:
         return None
 
 
+def _groups(self_cgroup: Path | None) -> dict[str, str]:
+    """This process's cgroup paths from ``/proc/self/cgroup``: v2's under ``""``, v1's under
+    each controller's name."""
+    groups = {"": "/"}
+    for line in (_read(self_cgroup or Path("/proc/self/cgroup")) or "").splitlines():
+        number, _, rest = line.partition(":")
+        controllers, _, path = rest.partition(":")
+        if number == "0" and controllers == "":
+            groups[""] = path
+        else:
+            for name in controllers.split(","):
+                groups[name] = path
+    return groups
+
+
+def _limits(
+    root: Path, self_cgroup: Path | None, controller: str, v1_dirs: tuple[str, ...]
+) -> list[tuple[Path, bool]]:
+    """The folders to read a limit from, the process's group first and then each parent up
+    to ``root``: v2's (``True``) and, under ``root/<v1 dir>``, v1's (``False``)."""
+    groups = _groups(self_cgroup)
+    places = [(root, groups[""], True)]
+    places += [(root / d, groups.get(controller, "/"), False) for d in v1_dirs]
+    found = []
+    for base, group, v2 in places:
+        parts = [p for p in group.split("/") if p and p != ".."]
+        for depth in range(len(parts), -1, -1):  # the group itself, then each parent
+            found.append((base.joinpath(*parts[:depth]), v2))
+    return found
+
+
 def cgroup_cpus(
     root: Path = Path("/sys/fs/cgroup"), self_cgroup: Path | None = None
 ) -> float | None:
@@ -55,31 +91,41 @@ def cgroup_cpus(
     and each parent up to ``root``; v1: ``cpu.cfs_quota_us / cpu.cfs_period_us`` under
     ``root/cpu`` (or ``root/cpu,cpuacct``). The smallest quota found holds.
     """
-    groups = {"": "/"}
-    for line in (_read(self_cgroup or Path("/proc/self/cgroup")) or "").splitlines():
-        number, _, rest = line.partition(":")
-        controllers, _, path = rest.partition(":")
-        if number == "0" and controllers == "":
-            groups[""] = path
-        elif "cpu" in controllers.split(","):
-            groups["cpu"] = path
     found: list[float] = []
-    places = (
-        (root, groups[""], True),
-        (root / "cpu", groups.get("cpu", "/"), False),
-        (root / "cpu,cpuacct", groups.get("cpu", "/"), False),
-    )
-    for base, group, v2 in places:
-        parts = [p for p in group.split("/") if p and p != ".."]
-        for depth in range(len(parts), -1, -1):  # the group itself, then each parent
-            here = base.joinpath(*parts[:depth])
-            text = _read(here / ("cpu.max" if v2 else "cpu.cfs_quota_us"))
-            if text is None:
-                continue
-            cpus = _quota(text) if v2 else _quota(text, _read(here / "cpu.cfs_period_us") or "")
-            if cpus is not None:
-                found.append(cpus)
+    for here, v2 in _limits(root, self_cgroup, "cpu", ("cpu", "cpu,cpuacct")):
+        text = _read(here / ("cpu.max" if v2 else "cpu.cfs_quota_us"))
+        if text is None:
+            continue
+        cpus = _quota(text) if v2 else _quota(text, _read(here / "cpu.cfs_period_us") or "")
+        if cpus is not None:
+            found.append(cpus)
     return min(found) if found else None
+
+
+def cgroup_memory(
+    root: Path = Path("/sys/fs/cgroup"), self_cgroup: Path | None = None
+) -> int | None:
+    """The memory limit of this process's cgroup (and its parents) in bytes; None when
+    unlimited: v2 ``memory.max`` (``max`` for none), v1 ``memory/memory.limit_in_bytes``
+    (a number near 2^63 for none). The smallest limit found holds."""
+    found: list[int] = []
+    for here, v2 in _limits(root, self_cgroup, "memory", ("memory",)):
+        text = (_read(here / ("memory.max" if v2 else "memory.limit_in_bytes")) or "").strip()
+        if text.isdigit() and 0 < int(text) < 2**62:
+            found.append(int(text))
+    return min(found) if found else None
+
+
+def usable_memory(root: Path = Path("/sys/fs/cgroup"), self_cgroup: Path | None = None) -> int:
+    """The memory this process may really use [bytes]: the machine's, capped by its cgroup's
+    limit (a container limited to 4 GB on a 24 GB host answers 4 GB)."""
+    try:
+        physical = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+    except (ValueError, OSError, AttributeError):
+        physical = 0
+    limit = cgroup_memory(root, self_cgroup)
+    candidates = [m for m in (physical, limit) if m]
+    return min(candidates) if candidates else 2**30
 
 
 def usable_cpus(root: Path = Path("/sys/fs/cgroup"), self_cgroup: Path | None = None) -> int:
@@ -149,6 +195,11 @@ class Settings:
     max_connections_per_client: int = field(
         default_factory=lambda: _int("MAX_CONNECTIONS_PER_CLIENT", 100)
     )
+    #: Addresses or networks ("10.0.0.0/8") of reverse proxies whose X-Forwarded-For and
+    #: X-Forwarded-Proto are believed: the client's identity (per-client quotas, lanes and
+    #: the connection cap) is then the forwarded address. Empty: no one's (a client could
+    #: otherwise pose as many), loopback included.
+    trusted_proxies: tuple[str, ...] = field(default_factory=_proxies)
     #: Largest request head (request line and headers); over it: 431 [bytes].
     max_head_bytes: int = field(default_factory=lambda: _int("MAX_HEAD_BYTES", 16 * 1024))
     #: A request's headers must arrive within this many seconds of its first byte [s].

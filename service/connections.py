@@ -23,14 +23,17 @@
   file-descriptor limit the accept loop logs one error per attempt (measured:
   82 MB in 10 s); with this filter, a few lines.
 
-The per-client cap keys on the TCP peer address: behind a reverse proxy every
-client shares the proxy's address, so raise the cap there (or set it to the
-proxy's own connection count).
+The per-client cap keys on the TCP peer address, except for a connection from a
+reverse proxy named in ``TRUSTED_PROXIES`` (:class:`Proxies`): there each request
+counts for the client its ``X-Forwarded-For`` names while it is answered, so the
+proxy's many users do not share one cap, and a client cannot pose as many by
+sending the header itself (no address is trusted by default, loopback included).
 """
 
 from __future__ import annotations
 
 import asyncio
+import ipaddress
 import json
 import logging
 import time
@@ -76,6 +79,37 @@ def refusal(status: int, reason: str, kind: str, msg: str) -> bytes:
     return head + b"\r\n" + body
 
 
+class Proxies:
+    """The reverse proxies whose ``X-Forwarded-For`` is believed: addresses or networks.
+
+    >>> p = Proxies(("10.0.0.0/8", "::1"))
+    >>> "10.1.2.3" in p, "127.0.0.1" in p, "::1" in p, "unknown" in p
+    (True, False, True, False)
+    >>> p.client("10.0.0.2", "203.0.113.9, 10.0.0.7")  # the nearest address not a proxy's
+    '203.0.113.9'
+    >>> p.client("10.0.0.2", "")  # no header: the proxy itself
+    '10.0.0.2'
+    """
+
+    def __init__(self, entries: tuple[str, ...]) -> None:
+        self.networks = [ipaddress.ip_network(e, strict=False) for e in entries]
+
+    def __contains__(self, host: str) -> bool:
+        try:
+            address = ipaddress.ip_address(host)
+        except ValueError:
+            return False
+        return any(address in net for net in self.networks)
+
+    def client(self, peer: str, forwarded: str) -> str:
+        """The client a proxy at ``peer`` forwards for: the right-most ``X-Forwarded-For``
+        entry that is not itself a trusted proxy (entries left of it are the client's word)."""
+        for entry in reversed([e.strip() for e in forwarded.split(",") if e.strip()]):
+            if entry not in self:
+                return entry[:64]
+        return peer
+
+
 class HeadDeadline:
     """Close a connection whose request head is late or too large, or whose client
     already holds its share of connections."""
@@ -83,11 +117,14 @@ class HeadDeadline:
     header_timeout_s = HEADER_TIMEOUT_S
     max_head_bytes = MAX_HEAD_BYTES
     max_per_client = MAX_CONNECTIONS_PER_CLIENT
+    proxies = Proxies(_SETTINGS.trusted_proxies)
     #: Open connections per client address, in this server process.
     per_client: ClassVar[Counter[str]] = Counter()
     _head_timer: asyncio.TimerHandle | None = None
     _head_bytes = 0
     _client: str | None = None  # set while this connection is counted for its client
+    _proxy: str | None = None  # a trusted proxy's address: its requests count per client
+    _forwarded: str | None = None  # the client a proxied request in flight is counted for
     _refused = False
     # provided by the uvicorn protocol this is mixed into
     loop: asyncio.AbstractEventLoop
@@ -122,6 +159,10 @@ class HeadDeadline:
         super().connection_made(transport)  # type: ignore[misc]
         peer = transport.get_extra_info("peername")
         client = str(peer[0]) if isinstance(peer, tuple) and peer else "unknown"
+        if client in self.proxies:
+            self._proxy = client  # counted per forwarded client, request by request
+            self._arm()
+            return
         if self.per_client[client] >= self.max_per_client:
             # over the cap: answered (503) as soon as its request starts, and given only a
             # moment to start it, so such connections never pile up
@@ -149,6 +190,8 @@ class HeadDeadline:
         if self.cycle is not None and not self.cycle.response_complete:
             self._disarm()  # a head arrived; its body has BODY_TIMEOUT_S in all
             self._head_bytes = 0
+            if self._proxy is not None and self._forwarded is None:
+                self._count_forwarded(self._proxy)
         elif waiting and not self.transport.is_closing():
             self._head_bytes += len(data)  # still no complete head: count what it holds
             if self._head_bytes > self.max_head_bytes:
@@ -159,17 +202,42 @@ class HeadDeadline:
                     f"the request head is over {self.max_head_bytes} bytes (MAX_HEAD_BYTES)",
                 )
 
+    def _count_forwarded(self, proxy: str) -> None:
+        """Count a proxied request for the client it is forwarded for, or refuse it (503)
+        when that client already has its share in flight."""
+        forwarded = b", ".join(
+            v for k, v in self.cycle.scope["headers"] if k == b"x-forwarded-for"
+        ).decode("latin-1")
+        client = self.proxies.client(proxy, forwarded)
+        if self.per_client[client] >= self.max_per_client:
+            self._refuse(
+                503,
+                "Service Unavailable",
+                "too_many_connections",
+                f"this client has {self.max_per_client} requests open "
+                "(MAX_CONNECTIONS_PER_CLIENT); retry after the Retry-After seconds",
+            )
+            return
+        self._forwarded = client
+        self.per_client[client] += 1
+
+    def _uncount(self, attribute: str) -> None:
+        client = getattr(self, attribute)
+        if client is not None:
+            self.per_client[client] -= 1
+            if self.per_client[client] <= 0:
+                del self.per_client[client]
+            setattr(self, attribute, None)
+
     def on_response_complete(self) -> None:
         super().on_response_complete()  # type: ignore[misc]
+        self._uncount("_forwarded")
         self._arm()  # the next request's head, if any, is on the clock
 
     def connection_lost(self, exc: Exception | None) -> None:
         self._disarm()
-        if self._client is not None:
-            self.per_client[self._client] -= 1
-            if self.per_client[self._client] <= 0:
-                del self.per_client[self._client]
-            self._client = None
+        self._uncount("_client")
+        self._uncount("_forwarded")
         super().connection_lost(exc)  # type: ignore[misc]
 
 

@@ -22,15 +22,17 @@ SHA-256 hash (no ``'unsafe-inline'`` for scripts), and /redoc also its CDN.
 
 from __future__ import annotations
 
+import asyncio
 import base64
 import contextlib
 import hashlib
 import importlib.metadata
 import os
 import re
+import signal
 import subprocess
 import threading
-from collections.abc import AsyncIterator, Sequence
+from collections.abc import AsyncIterator, Callable, Sequence
 from contextlib import asynccontextmanager
 from pathlib import Path
 
@@ -40,6 +42,7 @@ from fastapi.openapi.docs import get_redoc_html, get_swagger_ui_html
 from fastapi.responses import HTMLResponse, JSONResponse, RedirectResponse
 from fastapi.routing import APIRoute
 from fastapi.staticfiles import StaticFiles
+from uvicorn.middleware.proxy_headers import ProxyHeadersMiddleware
 
 import engine
 from engine import ModelSpec
@@ -132,6 +135,38 @@ def warm_up(models: Sequence[ModelSpec]) -> None:
                     engine.run(spec, example, fidelity=rung)
 
 
+#: On SIGTERM, open work gets the shutdown timeout less this to finish; then it is stopped
+#: and answers 503 before uvicorn closes the connections at the timeout [s].
+STOP_MARGIN_S = 1.0
+
+
+def after_stop_signal(callback: Callable[[], None]) -> Callable[[], None]:
+    """Call ``callback`` when SIGTERM or SIGINT arrives, then the handler already set (the
+    server's: uvicorn's starts its graceful shutdown; Python's raises KeyboardInterrupt);
+    answers a function that puts the handlers back. Nothing is set outside the main
+    thread (a test client's lifespan)."""
+    if threading.current_thread() is not threading.main_thread():
+        return lambda: None
+    previous = {sig: signal.getsignal(sig) for sig in (signal.SIGTERM, signal.SIGINT)}
+
+    def handler(sig: int, frame: object) -> None:
+        before = previous[signal.Signals(sig)]
+        with contextlib.suppress(RuntimeError):  # the app's loop closed: nothing to stop
+            callback()
+        if callable(before):
+            before(sig, frame)  # type: ignore[arg-type]
+
+    for sig in previous:
+        signal.signal(sig, handler)
+
+    def undo() -> None:
+        for sig, before in previous.items():
+            if signal.getsignal(sig) is handler:
+                signal.signal(sig, before)
+
+    return undo
+
+
 def static_dir() -> Path:
     """``service/static`` in an installed wheel, ``static/`` beside the package in a checkout."""
     here = Path(__file__).resolve().parent
@@ -192,7 +227,17 @@ def create_app(
     async def lifespan(_: FastAPI) -> AsyncIterator[None]:
         if settings.warm_up:
             threading.Thread(target=warm_up, args=(models,), name="warm-up", daemon=True).start()
+        # on SIGTERM open work may finish for a while, then answers 503 (not a dropped
+        # connection at uvicorn's graceful-shutdown timeout)
+        loop = asyncio.get_running_loop()
+        grace = max(0.0, settings.shutdown_timeout_s - STOP_MARGIN_S)
+
+        def stop_later() -> None:  # in the signal handler: hand it to the loop
+            loop.call_soon_threadsafe(loop.call_later, grace, pool.stop)
+
+        undo = after_stop_signal(stop_later)
         yield
+        undo()
         pool.shutdown()
         studies.shutdown()
 
@@ -220,12 +265,21 @@ def create_app(
         operation_id="readyz",
         tags=["service"],
         summary="Readiness: 503 while either engine lane cannot admit work",
+        description=(
+            "Each lane's running and waiting computations, and the studies: running and "
+            "queued in this process, and unfinished in all. Studies never make the service "
+            "busy (they run on their own threads and workers): they are reported, not gated."
+        ),
         responses={503: {"description": "a lane has no free slot and a full queue"}},
     )
     async def readyz() -> JSONResponse:
         ready = pool.ready()
         return JSONResponse(
-            {"status": "ready" if ready else "busy", "lanes": pool.state()},
+            {
+                "status": "ready" if ready else "busy",
+                "lanes": pool.state(),
+                "studies": studies.state(),
+            },
             status_code=200 if ready else 503,
             headers=None if ready else {"retry-after": "1"},
         )
@@ -309,6 +363,8 @@ def create_app(
     # compression inside FrontDoor: its security headers and request id go on either body
     app.add_middleware(Compress, minimum_size=GZIP_MINIMUM_BYTES, compresslevel=GZIP_LEVEL)
     app.add_middleware(FrontDoor, log_requests=settings.access_log)
+    if settings.trusted_proxies:  # outermost: every guard and quota sees the real client
+        app.add_middleware(ProxyHeadersMiddleware, trusted_hosts=list(settings.trusted_proxies))
 
     @app.get("/manual", include_in_schema=False)
     def manual_root() -> RedirectResponse:

@@ -12,11 +12,13 @@ the service's interpreter.
 
 Budgets: ``STUDY_MAX_POINTS`` points and ``STUDY_BUDGET_S`` seconds per study;
 at most ``STUDY_PER_CLIENT`` unfinished studies per client address and
-``STUDY_MAX_ACTIVE`` in all (503 with Retry-After beyond that), checked before a
-single point is drawn. Finished jobs keep their summary for ``STUDY_KEEP_S`` seconds
-(at most 64 jobs); the raw values only when the study asked for them
-(``keep_points``). ``DELETE`` cancels an unfinished job and removes a finished one
-with its data. A value out of its range (a zero
+``STUDY_MAX_ACTIVE`` in all, and the disk the kept points may take (503 with
+Retry-After beyond that), checked before a single point is drawn. Jobs live in the
+:class:`~service.jobstore.JobStore` (``STUDY_STORE``), which every server process shares
+and a restart keeps: finished jobs keep their summary for ``STUDY_KEEP_S`` seconds (at
+most 64 jobs); the raw values only when the study asked for them (``keep_points``), in
+a file, never in memory. ``DELETE`` cancels an unfinished job (in whichever process runs
+it) and removes a finished one with its file. A value out of its range (a zero
 or negative count or time) stops the service at start-up, naming the variable.
 """
 
@@ -29,18 +31,21 @@ import logging
 import math
 import os
 import re
+import sqlite3
+import tempfile
 import threading
 import time
 import uuid
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any, Literal
 
 import numpy as np
 from fastapi import APIRouter, HTTPException, Request, Response
 from fastapi.concurrency import run_in_threadpool
-from fastapi.responses import JSONResponse
+from fastapi.responses import FileResponse, JSONResponse, StreamingResponse
 from pydantic import BaseModel, ConfigDict, Field
 
 import engine
@@ -59,10 +64,13 @@ from engine.studies.plan import (
 
 from . import schemas
 from .api import _ERRORS, API_PREFIX
-from .config import _float, _int, usable_cpus
+from .config import _float, _int, usable_cpus, usable_memory
+from .jobstore import ACTIVE, BEAT_S, Full, JobStore
 from .units import quantity
 
 _KEEP_JOBS = 64
+#: The share of the usable memory the local Dask workers may hold between them.
+DASK_MEMORY_SHARE = 0.5
 
 log = logging.getLogger("service.studies")
 
@@ -78,10 +86,18 @@ class StudySettings:
     inprocess_points: int = field(default_factory=lambda: _int("STUDY_INPROCESS_POINTS", 2000))
     keep_s: float = field(default_factory=lambda: _float("STUDY_KEEP_S", 3600.0))
     keep_points_max: int = field(default_factory=lambda: _int("STUDY_KEEP_POINTS", 1_000_000))
+    #: The job store's folder (SQLite database and points files), shared by every server
+    #: process that serves the same jobs and kept across restarts.
+    store: str = field(default_factory=lambda: os.environ.get("STUDY_STORE") or default_store())
+    #: Disk the stored points may take, reservations of running studies included [bytes].
+    disk_bytes: int = field(default_factory=lambda: _int("STUDY_DISK_BYTES", 2 * 10**9))
     dask_scheduler: str | None = field(
         default_factory=lambda: os.environ.get("DASK_SCHEDULER") or None
     )
     dask_workers: int | None = field(default_factory=lambda: _int("DASK_WORKERS", 0) or None)
+    #: Memory each local Dask worker may use [bytes]; 0: a share of the memory the process
+    #: may really use (cgroup limit), DASK_MEMORY_SHARE of it split between the workers.
+    dask_worker_memory: int = field(default_factory=lambda: _int("DASK_WORKER_MEMORY", 0))
 
     def __post_init__(self) -> None:
         """Refuse a bound that makes no sense at start-up, naming the variable and its range
@@ -92,7 +108,9 @@ class StudySettings:
             ("STUDY_MAX_ACTIVE", self.max_active, 1, ""),
             ("STUDY_INPROCESS_POINTS", self.inprocess_points, 0, "0: every study on Dask"),
             ("STUDY_KEEP_POINTS", self.keep_points_max, 0, "0: raw points never kept"),
+            ("STUDY_DISK_BYTES", self.disk_bytes, 0, "0: raw points never kept"),
             ("DASK_WORKERS", self.dask_workers or 0, 0, "0: one worker per usable CPU"),
+            ("DASK_WORKER_MEMORY", self.dask_worker_memory, 0, "0: sized from the usable memory"),
         )
         for name, value, lowest, meaning in counts:
             if not value >= lowest:
@@ -165,6 +183,9 @@ class StudyIn(BaseModel):
 
 @dataclass
 class Job:
+    """A job this process runs: what its thread and its beat need. The job's record,
+    which every process reads, is its row in the :class:`~service.jobstore.JobStore`."""
+
     id: str
     model: str
     client: str
@@ -178,50 +199,71 @@ class Job:
     started: float | None = None
     finished: float | None = None
     error: dict[str, Any] | None = None
-    #: The summary of a finished study (small: statistics, histograms, extremes).
-    summary: dict[str, Any] | None = None
-    #: The raw values, only where the study asked for them (``keep_points``).
-    run: StudyRun | None = None
     cancel: threading.Event = field(default_factory=threading.Event)
     #: Set when the job thread is done with the job (finished, failed, cancelled or skipped).
     settled: bool = False
+    #: Bytes its points file is expected to take (reserved against the disk quota).
+    disk_bytes: int = 0
 
     @property
     def active(self) -> bool:
         # a job counts until its thread has let it go: a queued job that was cancelled still
-        # holds its place in the pool until the pool reaches it and drops it
+        # holds its thread's place until the pool reaches it and drops it
         return not self.settled
 
-    def describe(self) -> dict[str, Any]:
-        now = time.time()
-        elapsed = 0.0 if self.started is None else (self.finished or now) - self.started
-        rate = self.done / elapsed if elapsed > 0 else None
-        left = None
-        if rate and self.state == "running":
-            left = (self.total - self.done) / rate
-        body: dict[str, Any] = {
-            "job": self.id,
+    def row(self, owner: str) -> dict[str, Any]:
+        """The job's fields as the store keeps them."""
+        return {
+            "id": self.id,
             "model": self.model,
+            "client": self.client,
+            "total": self.total,
+            "keep_points": int(self.keep_points),
             "state": self.state,
-            "phase": self.phase if self.state in ("queued", "running") else self.state,
-            "progress": {
-                "done": self.done,
-                "total": self.total,
-                "fraction": self.done / self.total if self.total else 1.0,
-                "rate_per_s": rate,
-                "elapsed_s": elapsed,
-                "eta_s": left,
-            },
-            "links": {"self": f"{API_PREFIX}/jobs/{self.id}"},
+            "phase": self.phase,
+            "done": self.done,
+            "created": self.created,
+            "started": self.started,
+            "finished": self.finished,
+            "error": self.error,
+            "disk_bytes": self.disk_bytes,
+            "owner": owner,
+            "beat": time.time(),
         }
-        if self.error is not None:
-            body["error"] = self.error
-        if self.summary is not None:
-            body["result"] = self.summary
-            if self.run is not None:
-                body["links"]["points_csv"] = f"{API_PREFIX}/jobs/{self.id}/points.csv"
-                body["links"]["points_parquet"] = f"{API_PREFIX}/jobs/{self.id}/points.parquet"
-        return body
+
+
+def describe(job: dict[str, Any]) -> dict[str, Any]:
+    """A job's answer (state, progress, result, links) from its stored record."""
+    now = time.time()
+    started, finished, done, total = job["started"], job["finished"], job["done"], job["total"]
+    elapsed = 0.0 if started is None else (finished or now) - started
+    rate = done / elapsed if elapsed > 0 else None
+    left = None
+    if rate and job["state"] == "running":
+        left = (total - done) / rate
+    body: dict[str, Any] = {
+        "job": job["id"],
+        "model": job["model"],
+        "state": job["state"],
+        "phase": job["phase"] if job["state"] in ("queued", "running") else job["state"],
+        "progress": {
+            "done": done,
+            "total": total,
+            "fraction": done / total if total else 1.0,
+            "rate_per_s": rate,
+            "elapsed_s": elapsed,
+            "eta_s": left,
+        },
+        "links": {"self": f"{API_PREFIX}/jobs/{job['id']}"},
+    }
+    if job["error"] is not None:
+        body["error"] = job["error"]
+    if job["summary"] is not None:
+        body["result"] = job["summary"]
+        if job["points"]:
+            body["links"]["points_csv"] = f"{API_PREFIX}/jobs/{job['id']}/points.csv"
+            body["links"]["points_parquet"] = f"{API_PREFIX}/jobs/{job['id']}/points.parquet"
+    return body
 
 
 #: A network address in an error from Dask ("tcp://10.0.0.5:40123", "127.0.0.1:8786"):
@@ -255,17 +297,29 @@ def _json_clean(value: Any) -> Any:
     return value
 
 
+def default_store() -> str:
+    """``STUDY_STORE``'s default: a folder of this user's under the system's temporary
+    directory, shared by every server process of the user on this machine."""
+    return os.path.join(tempfile.gettempdir(), f"tightening-calc-jobs-{os.getuid()}")
+
+
 class Studies:
-    """The job table, the job threads and the Dask executor, for one app."""
+    """The job store, this process's job threads and its beat, and the Dask executor."""
 
     def __init__(self, settings: StudySettings) -> None:
         self.settings = settings
+        self.store = JobStore(Path(settings.store), settings.disk_bytes)
+        #: This process's share of the store: the jobs its threads run.
+        self.owner = uuid.uuid4().hex
         self.jobs: dict[str, Job] = {}
         self.lock = threading.Lock()
         self.threads = ThreadPoolExecutor(
             max_workers=max(1, settings.max_active), thread_name_prefix="study"
         )
         self._dask: DaskExecutor | None = None
+        self._stop = threading.Event()
+        self._beat = threading.Thread(target=self._beating, name="study-beat", daemon=True)
+        self._beat.start()
 
     def dask(self) -> DaskExecutor:
         with self.lock:
@@ -273,26 +327,63 @@ class Studies:
                 # one worker per CPU this process may use (affinity, cgroup quota), not one
                 # per CPU of the host: 2 in a 2-CPU container on a 64-CPU machine
                 workers = self.settings.dask_workers or usable_cpus()
-                self._dask = DaskExecutor(self.settings.dask_scheduler, n_workers=workers)
+                # and memory from what the process may use (cgroup memory.max), half of it
+                # for the workers: 1 GB each in a 4 GB, 2-CPU container on a 24 GB host
+                memory = self.settings.dask_worker_memory or int(
+                    DASK_MEMORY_SHARE * usable_memory() / workers
+                )
+                self._dask = DaskExecutor(
+                    self.settings.dask_scheduler, n_workers=workers, memory_limit=memory
+                )
             return self._dask
 
+    def _beating(self) -> None:
+        """Every BEAT_S: the progress of this process's jobs to the store, the cancels
+        asked of them (in any process) to their threads."""
+        while not self._stop.wait(BEAT_S):
+            self.beat()
+
+    def beat(self) -> None:
+        with self.lock:
+            mine = [j for j in self.jobs.values() if j.active]
+            for j in [j for j in self.jobs.values() if not j.active]:
+                del self.jobs[j.id]  # settled and written: the store has it
+        if not mine:
+            return
+        try:
+            cancels = self.store.beat(self.owner, [(j.id, j.done, j.phase) for j in mine])
+        except sqlite3.Error as exc:  # a locked or full disk: said, and tried again
+            log.warning("the job store did not take the beat: %s", exc)
+            return
+        for j in mine:
+            if j.id in cancels:
+                j.cancel.set()
+
+    def state(self) -> dict[str, Any]:
+        """Studies running and queued here, the unfinished ones in all, and the limits
+        (for ``/readyz``)."""
+        with self.lock:
+            here = [j for j in self.jobs.values() if j.active]
+        running = sum(j.state == "running" for j in here)
+        return {
+            "running": running,
+            "queued": len(here) - running,
+            "active": len(self.store.active()),
+            "max_active": self.settings.max_active,
+            "per_client": self.settings.per_client,
+        }
+
     def _prune(self) -> None:
-        now = time.time()
-        done = sorted(
-            (j for j in self.jobs.values() if not j.active), key=lambda j: j.finished or 0.0
-        )
-        excess = max(0, len(done) - _KEEP_JOBS)
-        for i, j in enumerate(done):
-            if i < excess or now - (j.finished or now) > self.settings.keep_s:
-                del self.jobs[j.id]
+        self.store.prune(self.settings.keep_s, _KEEP_JOBS)
 
     def submit(self, spec: ModelSpec, study: Study, client: str, keep_points: bool) -> Job:
         """Check the study, then the limits and quotas, and only then draw its points.
 
         Every refusal that needs no drawing (a 422: a bad law, an unknown fidelity, too
-        many points) and the quotas (503) come before :func:`engine.studies.plan.plan`, which
-        takes seconds and gigabytes for a study of millions of points; a refusal that
-        needs the drawn points (the base with the first point) frees the job's place.
+        many points) and the quotas (503: per client, in all, disk) come before
+        :func:`engine.studies.plan.plan`, which takes seconds and gigabytes for a study of
+        millions of points; a refusal that needs the drawn points (the base with the
+        first point) frees the job's place.
         """
         n_points = study_size(spec, study)
         if n_points > self.settings.max_points:
@@ -306,37 +397,55 @@ class Studies:
                 f"keep_points is allowed up to {self.settings.keep_points_max} points",
                 field="keep_points",
             )
+        job = Job(uuid.uuid4().hex, spec.name, client, n_points, keep_points)
+        if keep_points:  # the file's float64 columns: the varied inputs, then the outputs
+            columns = len(study.variables) + len(study.outputs or spec.outputs)
+            job.disk_bytes = 8 * n_points * columns
+        self._prune()
+        try:
+            self.store.admit(
+                job.row(self.owner),
+                per_client=self.settings.per_client,
+                max_active=self.settings.max_active,
+            )
+        except Full as exc:
+            raise HTTPException(
+                status_code=503, detail=str(exc), headers={"retry-after": "5"}
+            ) from None
         with self.lock:
-            self._prune()
-            active = [j for j in self.jobs.values() if j.active]
-            mine = [j for j in active if j.client == client]
-            if len(mine) >= self.settings.per_client or len(active) >= self.settings.max_active:
-                raise HTTPException(
-                    status_code=503,
-                    detail=(
-                        f"{len(mine)} of your studies and {len(active)} in all are running "
-                        f"(limits {self.settings.per_client} per client, "
-                        f"{self.settings.max_active} in all); retry when one finishes or "
-                        "cancel one"
-                    ),
-                    headers={"retry-after": "5"},
-                )
-            job = Job(uuid.uuid4().hex, spec.name, client, n_points, keep_points)
-            self.jobs[job.id] = job  # holds its place while the points are drawn
+            self.jobs[job.id] = job
         try:
             p = plan(spec, study)
         except BaseException:
             with self.lock:
                 self.jobs.pop(job.id, None)
+            self.store.remove(job.id)
             raise
         self.threads.submit(self._work, job, spec, study, p)
         return job
 
+    def _finish(self, job: Job, **fields: Any) -> None:
+        job.finished = time.time()
+        try:
+            self.store.update(
+                job.id, state=job.state, done=job.done, finished=job.finished, **fields
+            )
+        except sqlite3.Error as exc:
+            log.warning("study %s: the job store did not take its end: %s", job.id, exc)
+
     def _work(self, job: Job, spec: ModelSpec, study: Study, p: Plan | None = None) -> None:
-        if job.cancel.is_set():  # cancelled while it waited for a thread
+        try:
+            self._run(job, spec, study, p)
+        finally:
             job.settled = True
+
+    def _run(self, job: Job, spec: ModelSpec, study: Study, p: Plan | None) -> None:
+        if job.cancel.is_set():  # cancelled while it waited for a thread
+            job.state = "cancelled"
+            self._finish(job)
             return
         job.state, job.started = "running", time.time()
+        self.store.update(job.id, state="running", started=job.started, phase=job.phase)
 
         def progress(done: int, total: int) -> None:
             job.done = done
@@ -358,53 +467,72 @@ class Studies:
                 budget_s=self.settings.budget_s,
                 planned=p,
             )
-            job.summary = _json_clean(result.summary)
-            # the raw values leave memory once summarised unless the study asked for them
-            job.run = result if job.keep_points else None
+            summary = _json_clean(result.summary)
+            written = 0
+            if job.keep_points:  # the raw values go to disk, never stay in memory
+                job.phase = "writing the points"
+                path = self.store.points_path(job.id)
+                write_points(path, job.id, result)
+                written = path.stat().st_size
+            del result
             job.state = "done"
+            self._finish(job, summary=summary, points=int(job.keep_points), disk_bytes=written)
         except Cancelled:
             job.state = "cancelled"
+            self._finish(job, disk_bytes=0)
         except engine.EngineError as exc:
             job.state = "failed"
             job.error = {"type": exc.kind, "msg": exc.message, "field": exc.field}
+            self._finish(job, error=job.error, disk_bytes=0)
         except Exception as exc:  # a worker that died, a lost scheduler: said, not hidden
             log.warning("study %s failed: %s: %s", job.id, type(exc).__name__, exc)
             job.state = "failed"
             job.error = {"type": "study_failed", "msg": _public(f"{type(exc).__name__}: {exc}")}
-        finally:
-            job.finished = time.time()
-            job.settled = True
+            self._finish(job, error=job.error, disk_bytes=0)
 
-    def get(self, job_id: str) -> Job:
-        with self.lock:
-            job = self.jobs.get(job_id)
+    def record(self, job_id: str) -> dict[str, Any]:
+        """The stored job, or 404."""
+        job = self.store.get(job_id)
         if job is None:
             raise HTTPException(status_code=404, detail=f"no job {job_id[:40]!r}")
         return job
 
+    def get(self, job_id: str) -> dict[str, Any]:
+        """The job's answer (state, progress, result, links), from any process's store."""
+        return describe(self.record(job_id))
+
     def cancel(self, job_id: str) -> dict[str, Any]:
         """Cancel an unfinished job; remove a finished one with its summary and points.
 
-        The answer is the job as it stood; a removed job answers 404 from then on.
+        The answer is the job as it stood; a removed job answers 404 from then on. A job
+        another process runs is stopped by that process at its next beat.
         """
-        job = self.get(job_id)
+        job = self.record(job_id)
+        if job["state"] not in ACTIVE:
+            self.store.remove(job_id)
+            body = describe(job)
+            body["links"] = {}
+            body["deleted"] = True
+            return body
         with self.lock:
-            if not job.active:
-                self.jobs.pop(job.id, None)
-                body = job.describe()
-                body["links"] = {}
-                body["deleted"] = True
-                job.summary = job.run = None
-                return body
-        job.cancel.set()
-        if job.state == "queued":
-            job.state, job.finished = "cancelled", time.time()
-        return job.describe()
+            local = self.jobs.get(job_id)
+        if local is not None:
+            local.cancel.set()
+            if local.state == "queued":
+                local.state = "cancelled"
+        return describe(self.store.ask_cancel(job_id) or job)
 
     def shutdown(self) -> None:
-        for job in list(self.jobs.values()):
+        self._stop.set()
+        with self.lock:
+            mine = list(self.jobs.values())
+        for job in mine:
             job.cancel.set()
         self.threads.shutdown(wait=False, cancel_futures=True)
+        for job in mine:  # what never ran is said, not left "queued" in the store
+            if job.state == "queued":
+                job.state = "cancelled"
+                self._finish(job)
         if self._dask is not None:
             self._dask.close()
 
@@ -476,7 +604,7 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
             # drawing up to STUDY_MAX_POINTS points takes a while: off the event loop
             job = await run_in_threadpool(studies.submit, spec, study, client, body.keep_points)
             return JSONResponse(
-                job.describe(),
+                await run_in_threadpool(studies.get, job.id),
                 status_code=202,
                 headers={"location": f"{API_PREFIX}/jobs/{job.id}"},
             )
@@ -506,7 +634,10 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
                 },
                 503: {
                     "model": schemas.ErrorResponse,
-                    "description": "too many unfinished studies (per client or in all); retry",
+                    "description": (
+                        "too many unfinished studies (per client or in all), or no disk for "
+                        "the points to keep; retry after Retry-After"
+                    ),
                 },
             },
         )
@@ -525,7 +656,7 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
         responses=_404,
     )
     def get_job(job_id: str) -> dict[str, Any]:
-        return studies.get(job_id).describe()
+        return studies.get(job_id)
 
     @router.delete(
         "/jobs/{job_id}",
@@ -536,34 +667,30 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
     def cancel_job(job_id: str) -> dict[str, Any]:
         return studies.cancel(job_id)
 
-    def finished(job_id: str) -> tuple[Job, StudyRun]:
-        job = studies.get(job_id)
-        if job.run is None or not job.keep_points:
+    def stored_points(job_id: str) -> Path:
+        job = studies.record(job_id)
+        path = studies.store.points_path(job_id)
+        if not job["points"] or not path.is_file():
             raise HTTPException(
                 status_code=404,
                 detail="no points: the study is not done, or was run without keep_points",
             )
-        return job, job.run
+        return path
 
     @router.get(
         "/jobs/{job_id}/points.csv",
         operation_id="get_job_points_csv",
         summary="The raw points of a finished study (asked with keep_points)",
+        description="Streamed from the stored file, a block of rows at a time.",
         response_class=Response,
         responses={**_404, 200: {"content": {"text/csv": {}}, "description": "the points"}},
     )
-    def points(job_id: str) -> Response:
-        job, run = finished(job_id)
-        header, matrix = points_table(run.plan, run.merged)
-        out = io.StringIO()
-        writer = csv.writer(out)
-        writer.writerow(header)
-        for row in matrix.tolist():
-            writer.writerow(["" if not math.isfinite(v) else repr(v) for v in row])
-        return Response(
-            out.getvalue(),
+    def points(job_id: str) -> StreamingResponse:
+        path = stored_points(job_id)
+        return StreamingResponse(
+            csv_blocks(path),  # a plain iterator: Starlette reads it on a worker thread
             media_type="text/csv",
-            headers={"content-disposition": f'attachment; filename="study-{job.id}.csv"'},
+            headers={"content-disposition": f'attachment; filename="study-{job_id}.csv"'},
         )
 
     @router.get(
@@ -573,7 +700,7 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
         description=(
             "The columns of points.csv (inputs, then outputs, SI), float64, null where a "
             "point was refused; each field's `unit` metadata and the schema's `units` say "
-            "the units."
+            "the units. The stored file itself, streamed."
         ),
         response_class=Response,
         responses={
@@ -581,12 +708,11 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
             200: {"content": {PARQUET: {}}, "description": "the points"},
         },
     )
-    def points_parquet(job_id: str) -> Response:
-        job, run = finished(job_id)
-        return Response(
-            parquet_points(job.id, run),
+    def points_parquet(job_id: str) -> FileResponse:
+        return FileResponse(
+            stored_points(job_id),
             media_type=PARQUET,
-            headers={"content-disposition": f'attachment; filename="study-{job.id}.parquet"'},
+            headers={"content-disposition": f'attachment; filename="study-{job_id}.parquet"'},
         )
 
     return router
@@ -596,12 +722,17 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
 PARQUET = "application/vnd.apache.parquet"
 
 
-def parquet_points(job_id: str, run: StudyRun) -> bytes:
+#: Rows of a Parquet row group, and of a block of the streamed CSV.
+ROWS_PER_BLOCK = 65_536
+
+
+def write_points(path: Path, job_id: str, run: StudyRun) -> None:
     """The raw points of a study as a Parquet file: the CSV's columns, float64, SI units.
 
     A point the model refused is null (the CSV leaves the cell empty); each field carries
     its unit in its metadata (``unit``), and the schema names the model, the job and every
     column's unit (``units``, JSON) so a reader that drops field metadata still has them.
+    Written beside ``path`` and renamed, so a reader never sees half a file.
     """
     import pyarrow as pa  # imported on first use: the service starts without it loaded
     import pyarrow.parquet as pq
@@ -621,9 +752,31 @@ def parquet_points(job_id: str, run: StudyRun) -> bytes:
             "units": json.dumps({name: units.get(name, "") for name in header}),
         },
     )
-    out = io.BytesIO()
-    pq.write_table(pa.Table.from_arrays(arrays, schema=schema), out)
-    return out.getvalue()
+    partial = path.with_suffix(".partial")
+    table = pa.Table.from_arrays(arrays, schema=schema)
+    pq.write_table(table, partial, row_group_size=ROWS_PER_BLOCK)
+    partial.replace(path)
 
 
-__all__ = ["Studies", "StudySettings", "study_router", "to_study"]
+def csv_blocks(path: Path) -> Iterator[bytes]:
+    """The points file as CSV, a block of rows at a time (never the whole file in memory):
+    a header, then each row's values as Python writes a float, empty where refused."""
+    import pyarrow.parquet as pq
+
+    reader = pq.ParquetFile(path)
+    out = io.StringIO()
+    writer = csv.writer(out)
+    writer.writerow(reader.schema_arrow.names)
+    for batch in reader.iter_batches(batch_size=ROWS_PER_BLOCK):
+        columns = [c.to_numpy(zero_copy_only=False) for c in batch.columns]
+        matrix = np.column_stack(columns) if columns else np.empty((0, 0))
+        for row in matrix.tolist():
+            writer.writerow(["" if not math.isfinite(v) else repr(v) for v in row])
+        yield out.getvalue().encode()
+        out.seek(0)
+        out.truncate()
+    if out.tell():
+        yield out.getvalue().encode()
+
+
+__all__ = ["Studies", "StudySettings", "describe", "study_router", "to_study"]

@@ -155,6 +155,8 @@ class Lane:
         self._executor: ThreadPoolExecutor | None = None
         self._lock = threading.Lock()
         self._running: set[threading.Event] = set()  # the cancel events of running work
+        #: Set on SIGTERM once open work had its time to finish (:meth:`stop`).
+        self.stopping = False
 
     # --- state -----------------------------------------------------------------------------
     @property
@@ -220,7 +222,16 @@ class Lane:
             retry_after=self.retry_after(),
         )
 
+    def _stopped(self, what: str) -> Busy:
+        return Busy(
+            f"the server is stopping: {what} was not finished; retry, another server "
+            "process or the restarted one answers it",
+            retry_after=1,
+        )
+
     async def _acquire(self, ticket: Ticket, what: str) -> None:
+        if self.stopping:
+            raise self._stopped(what)
         if not self._waiters and self._eligible(ticket.client):
             self._take(ticket.client)
             return
@@ -273,6 +284,9 @@ class Lane:
     ) -> T:
         """``fn(budget_s, cancel)`` in a thread of this lane, once a slot is had."""
         await self._acquire(ticket, what)
+        if self.stopping:  # a waiter granted a slot after the stop: it does not start
+            self._release_now(ticket.client)
+            raise self._stopped(what)
         end = time.perf_counter() + budget_s
         self._ends.append(end)
         self._running.add(ticket.cancel)
@@ -295,6 +309,10 @@ class Lane:
         future.add_done_callback(done)
         try:
             return await asyncio.wait_for(asyncio.wrap_future(future), budget_s + self.grace_s)
+        except Cancelled:
+            if self.stopping and not ticket.gone.is_set():
+                raise self._stopped(what) from None  # an answer the client can act on
+            raise
         except TimeoutError:
             log.warning(
                 "%s ignored its %g s deadline; left running in the background", what, budget_s
@@ -303,6 +321,14 @@ class Lane:
                 f"{what} did not finish within its {budget_s:g} s wall-clock budget (BUDGET_S)",
                 budget_s=budget_s,
             ) from None
+
+    def stop(self) -> None:
+        """The server is stopping (SIGTERM): running work stops at its next budget check and
+        answers 503 with Retry-After, and nothing more is admitted, so every open request
+        gets an answer before uvicorn's graceful-shutdown timeout closes its connection."""
+        self.stopping = True
+        for cancel in list(self._running):
+            cancel.set()
 
     def shutdown(self) -> None:
         """Cancel running work (it stops at its next budget check), drop queued work.
@@ -431,6 +457,11 @@ class EnginePool:
 
     def state(self) -> dict[str, Any]:
         return {"quick": self.quick.state(), "heavy": self.heavy.state()}
+
+    def stop(self) -> None:
+        """SIGTERM, once open work had its time: every lane stops (:meth:`Lane.stop`)."""
+        self.quick.stop()
+        self.heavy.stop()
 
     def shutdown(self) -> None:
         self.quick.shutdown()

@@ -13,8 +13,10 @@ the same summary, bit for bit, whichever executor ran them:
   workers must have this package installed.
 
 Progress is reported after every chunk; a cancel event stops the study
-between chunks (on Dask, pending chunks are cancelled at once and a running
-chunk ends within its own few hundred milliseconds).
+between chunks. On Dask, pending chunks are cancelled at once, and a running chunk
+stops at its next point (or inside a point's simulation) once it reads the study's
+``distributed.Event``, which it asks at most every ``CANCEL_POLL_S``: the workers are
+idle within that and one point's time, where they ran a 256-point chunk to its end.
 """
 
 from __future__ import annotations
@@ -22,6 +24,7 @@ from __future__ import annotations
 import os
 import threading
 import time
+import uuid
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import Any, Protocol
@@ -34,6 +37,8 @@ from .plan import ChunkResult, Plan, Study, chunks, evaluate_chunk, merge, plan,
 
 VECTOR_CHUNK = 65_536
 LOOP_CHUNK = 256
+#: How often a chunk on a Dask worker asks whether its study was cancelled [s].
+CANCEL_POLL_S = 0.1
 
 Progress = Callable[[int, int], None]
 
@@ -73,12 +78,65 @@ class InProcess:
             yield i, evaluate_chunk(*args, cancel=cancel)
 
 
+class RemoteCancel(threading.Event):
+    """A study's cancel as a chunk on a Dask worker sees it: the ``distributed.Event``
+    named for the study, asked at most every ``CANCEL_POLL_S`` (the chunk asks at each
+    point and inside each simulation; a scheduler round trip each time would cost more
+    than the point)."""
+
+    def __init__(self, name: str) -> None:
+        super().__init__()
+        self.name = name
+        self._next = 0.0
+        self._event: Any = None
+
+    def is_set(self) -> bool:
+        if super().is_set():
+            return True
+        now = time.monotonic()
+        if now >= self._next:
+            self._next = now + CANCEL_POLL_S
+            try:
+                if self._event is None:
+                    from distributed import Event
+
+                    self._event = Event(self.name)
+                if self._event.is_set():
+                    self.set()
+            except Exception:  # outside a worker, or the scheduler gone: the chunk goes on
+                self._next = now + 10 * CANCEL_POLL_S
+        return super().is_set()
+
+
+def evaluate_remote(
+    cancel_name: str,
+    spec: str,
+    base: dict[str, Any],
+    columns: dict[str, np.ndarray],
+    outputs: tuple[str, ...],
+    fidelity: str | None,
+    tolerance: float | None,
+    deadline_s: float | None,
+) -> ChunkResult:
+    """:func:`evaluate_chunk` on a Dask worker, stopped when the study's event is set."""
+    cancel = RemoteCancel(cancel_name)
+    return evaluate_chunk(spec, base, columns, outputs, fidelity, tolerance, deadline_s, cancel)
+
+
 class DaskExecutor:
     """Evaluate chunks on ``dask.distributed`` workers (local cluster or ``address``)."""
 
-    def __init__(self, address: str | None = None, n_workers: int | None = None) -> None:
+    def __init__(
+        self,
+        address: str | None = None,
+        n_workers: int | None = None,
+        memory_limit: int | None = None,
+    ) -> None:
         self.address = address
         self.n_workers = n_workers or os.cpu_count() or 1
+        #: Bytes each local worker may hold (Dask pauses, then restarts one beyond it);
+        #: None: Dask's default, the machine's memory split between the workers.
+        self.memory_limit = memory_limit
         self._client: Any = None
         self._cluster: Any = None
         self._lock = threading.Lock()
@@ -95,6 +153,7 @@ class DaskExecutor:
                         n_workers=self.n_workers,
                         threads_per_worker=1,
                         processes=True,
+                        memory_limit=self.memory_limit or "auto",
                         host="127.0.0.1",
                         # an HTTP port of its own on loopback (None would still take 8787)
                         dashboard_address="127.0.0.1:0",
@@ -109,22 +168,26 @@ class DaskExecutor:
     def map(
         self, calls: list[ChunkArgs], cancel: threading.Event
     ) -> Iterator[tuple[int, ChunkResult]]:
-        from dask.distributed import as_completed
+        from dask.distributed import Event, as_completed
 
         client = self.client()
+        name = f"study-cancel-{uuid.uuid4().hex}"
+        stop = Event(name, client=client)
         # workers look the model up by name in their own registry (a spec's functions
         # need not pickle)
         futures = [
-            client.submit(evaluate_chunk, _name(args[0]), *args[1:], pure=False) for args in calls
+            client.submit(evaluate_remote, name, _name(args[0]), *args[1:], pure=False)
+            for args in calls
         ]
         index = {f.key: i for i, f in enumerate(futures)}
         finished = threading.Event()
 
         def watch() -> None:
-            # cancel the pending chunks the moment the study is cancelled, not when the
-            # next chunk happens to finish
+            # the moment the study is cancelled, not when the next chunk happens to finish:
+            # the running chunks read the event, the pending ones are cancelled
             while not finished.wait(0.02):
                 if cancel.is_set():
+                    stop.set()
                     client.cancel([f for f in futures if not f.done()])
                     return
 
@@ -138,6 +201,7 @@ class DaskExecutor:
             finished.set()
             pending = [f for f in futures if not f.done()]
             if pending:
+                stop.set()  # a budget or an error ended the study: its chunks stop too
                 client.cancel(pending)
 
     def close(self) -> None:

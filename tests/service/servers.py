@@ -7,7 +7,7 @@ import socket
 import subprocess
 import sys
 import time
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from pathlib import Path
 
@@ -24,23 +24,36 @@ def free_port() -> int:
 
 @contextmanager
 def toy_server(
-    settings: Mapping[str, str], *, keep_output: bool = True
+    settings: Mapping[str, str],
+    *,
+    keep_output: bool = True,
+    args: Sequence[str] = (),
+    start_s: float = 30.0,
 ) -> Iterator[tuple[int, subprocess.Popen[str]]]:
     """``python -m service`` serving the test toys on a free port with ``settings`` in its
     environment (no warm-up, no access log); its output piped for the caller to read
     (``keep_output``) or dropped (a test that floods it and never reads must not fill the
-    pipe); killed on exit if alive."""
+    pipe); ``args`` for ``python -m service`` (``--workers 2``); killed on exit if alive."""
     port = free_port()
     env = {**os.environ, "WARM_UP": "0", "ACCESS_LOG": "0", "PYTHONPATH": str(ROOT), **settings}
     proc = subprocess.Popen(
-        [sys.executable, "-m", "service", "--port", str(port), "--factory", "tests.toys:crash_app"],
+        [
+            sys.executable,
+            "-m",
+            "service",
+            "--port",
+            str(port),
+            "--factory",
+            "tests.toys:crash_app",
+            *args,
+        ],
         cwd=ROOT,
         env=env,
         stdout=subprocess.PIPE if keep_output else subprocess.DEVNULL,
         stderr=subprocess.STDOUT,
         text=True,
     )
-    deadline = time.monotonic() + 30
+    deadline = time.monotonic() + start_s
     while True:
         try:
             if httpx.get(f"http://127.0.0.1:{port}/healthz", timeout=1).status_code == 200:

@@ -133,29 +133,32 @@ def test_a_queued_study_that_is_cancelled_never_runs_and_holds_its_place() -> No
     studies = Studies(StudySettings(max_active=2, per_client=5, inprocess_points=10**6))
     try:
         first = studies.submit(rare, long, "a", False)
-        # a job cancelled before a thread reaches it: settled only when the thread drops it
+        # a job cancelled before a thread reaches it never runs; the store says cancelled
         queued = Job("queued", rare.name, "b", 20_000, False)
+        studies.store.put(queued.row(studies.owner))
         studies.jobs[queued.id] = queued
-        studies.cancel(queued.id)
-        assert queued.state == "cancelled"
-        assert queued.active  # still holds its place until the pool drops it
+        assert studies.cancel(queued.id)["state"] == "cancelled"
+        assert queued.state == "cancelled" and queued.cancel.is_set()
+        assert queued.active  # its thread's place is held until the pool drops it
         studies._work(queued, rare, long)
         assert not queued.active and queued.started is None and queued.done == 0
+        assert studies.get(queued.id)["state"] == "cancelled"
         studies.cancel(first.id)
         deadline = time.monotonic() + 10
         while first.active:
             assert time.monotonic() < deadline
             time.sleep(0.01)
         assert first.state == "cancelled" and first.done < 20_000
+        assert studies.get(first.id)["state"] == "cancelled"
         # pruning keeps at most 64 finished jobs, the oldest go first
         for i in range(100):
             job = Job(f"old{i}", "x", "c", 1, False, state="done", settled=True)
             job.finished = time.time() - 100 + i
-            studies.jobs[job.id] = job
+            studies.store.put(job.row("a process"))
         studies._prune()
-        finished = [j for j in studies.jobs.values() if not j.active]
-        assert len(finished) == 64  # the 100 old ones and the two above: the newest 64 stay
-        assert "old99" in studies.jobs and "old0" not in studies.jobs
+        kept = {i for i in range(100) if studies.store.get(f"old{i}") is not None}
+        # the 100 old ones and the two above: the newest 64 stay
+        assert kept == set(range(38, 100))
     finally:
         studies.shutdown()
 

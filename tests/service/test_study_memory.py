@@ -82,7 +82,7 @@ def test_refused_submissions_draw_nothing(
     """Eight 2,000,000-point submissions beyond the client's quota: 503 each, no point drawn."""
     client, studies = setup
     busy = Job("busy", TOY.name, "testclient", 10, False, state="running")
-    studies.jobs[busy.id] = busy  # the client's one study is running
+    studies.store.put(busy.row("another process"))  # the client's one study is running
     drawn: list[int] = []
     real = service.studies.plan
 
@@ -100,7 +100,7 @@ def test_refused_submissions_draw_nothing(
     assert drawn == []
     # drawing 2·10^6 points once takes seconds; eight refusals without drawing take far less
     assert time.perf_counter() - start < 2.0
-    assert [j.id for j in studies.jobs.values()] == ["busy"]
+    assert [j["id"] for j in studies.store.active()] == ["busy"]
 
 
 def test_a_study_refused_after_drawing_frees_its_place(setup: tuple[TestClient, Studies]) -> None:
@@ -108,7 +108,7 @@ def test_a_study_refused_after_drawing_frees_its_place(setup: tuple[TestClient, 
     r = client.post(URL, json={**SMALL, "base": {"diameter": -1.0}})  # the base is checked
     assert r.status_code == 422, r.text  # with the first drawn point: after the quota
     assert r.json()["detail"][0]["field"] == "diameter"
-    assert studies.jobs == {}
+    assert studies.store.active() == []
     ok = client.post(URL, json=SMALL)  # one study per client here: the place is free
     assert ok.status_code == 202, ok.text
 
@@ -120,7 +120,7 @@ def test_an_unknown_fidelity_is_refused_at_submit(setup: tuple[TestClient, Studi
     (item,) = r.json()["detail"]
     assert item["field"] == "fidelity"
     assert "'rough', 'exact', 'auto'" in item["msg"]
-    assert studies.jobs == {}
+    assert studies.store.active() == []
     for rung in ("rough", "exact", "auto"):
         r = client.post(URL, json={**SMALL, "fidelity": rung})
         assert r.status_code == 202, r.text
@@ -149,18 +149,20 @@ def test_raw_values_leave_memory_unless_kept(
 
     kept = client.post(URL, json={**SMALL, "keep_points": True})
     job = _settled(client, kept.json()["job"])
-    assert merged[1]() is not None
-    assert client.get(job["links"]["points_csv"]).status_code == 200
-    # DELETE removes a finished job with its data
+    gc.collect()
+    assert merged[1]() is None  # kept on disk, not in memory
+    stored = studies.store.points_path(job["job"])
+    assert stored.is_file()
+    csv = client.get(job["links"]["points_csv"])
+    assert csv.status_code == 200 and len(csv.text.splitlines()) == 1 + 50
+    # DELETE removes a finished job with its data, its file included
     d = client.delete(f"/api/v1/jobs/{job['job']}")
     assert d.status_code == 200
     assert d.json()["deleted"] is True and d.json()["state"] == "done"
     assert client.get(f"/api/v1/jobs/{job['job']}").status_code == 404
     assert client.get(f"/api/v1/jobs/{job['job']}/points.csv").status_code == 404
     assert client.delete(f"/api/v1/jobs/{job['job']}").status_code == 404
-    assert studies.jobs.keys().isdisjoint({job["job"]})
-    gc.collect()
-    assert merged[1]() is None
+    assert studies.store.get(job["job"]) is None and not stored.exists()
 
 
 def test_a_job_error_does_not_show_a_worker_address(
@@ -182,3 +184,17 @@ def test_a_job_error_does_not_show_a_worker_address(
     assert msg.startswith("OSError: Timed out trying to connect to <worker> after 10 s")
     for leak in ("10.20.30.40", "8786", "fe80", "192.168", "tcp://", "tls://"):
         assert leak not in msg
+
+
+def test_readyz_reports_running_studies(setup: tuple[TestClient, Studies]) -> None:
+    client, studies = setup
+    idle = client.get("/readyz").json()["studies"]
+    assert idle == {"running": 0, "queued": 0, "active": 0, "max_active": 4, "per_client": 1}
+    studies.jobs["busy"] = Job("busy", TOY.name, "x", 10, False, state="running")
+    studies.jobs["next"] = Job("next", TOY.name, "y", 10, False)
+    for job in (*studies.jobs.values(), Job("there", TOY.name, "z", 10, False)):
+        studies.store.put(job.row("a process"))  # one more runs in another process
+    r = client.get("/readyz")
+    assert r.status_code == 200  # studies run on their own threads: reported, not gated
+    assert r.json()["studies"] == {**idle, "running": 1, "queued": 1, "active": 3}
+    studies.jobs.clear()

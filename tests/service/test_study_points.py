@@ -155,7 +155,7 @@ def test_no_points_is_refused_as_the_csv_route_refuses_it(
     assert both("nope") == (404, "no job 'nope'")
     # a study still running: no points yet
     running = Job("running", TOY.name, "testclient", 10, keep_points=True, state="running")
-    studies.jobs[running.id] = running
+    studies.store.put(running.row("a process"))
     status, detail = both("running")
     assert status == 404 and "not done" in detail
     # a finished study run without keep_points: no links, no points

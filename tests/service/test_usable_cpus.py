@@ -14,7 +14,7 @@ import pytest
 
 import service.config
 import service.studies
-from service.config import Settings, cgroup_cpus, usable_cpus
+from service.config import Settings, cgroup_cpus, cgroup_memory, usable_cpus, usable_memory
 from service.studies import Studies, StudySettings
 
 AFFINITY = len(os.sched_getaffinity(0))
@@ -106,3 +106,41 @@ def test_the_dask_workers_and_the_heavy_lane_follow_the_usable_cpus(
         explicit.shutdown()
     finally:
         studies.shutdown()
+
+
+@pytest.mark.parametrize(
+    ("files", "self_cgroup", "limit"),
+    [
+        ({"memory.max": "4294967296\n"}, "0::/\n", 4 * 2**30),  # v2: 4 GiB
+        ({"memory.max": "max\n"}, "0::/\n", None),
+        # v2 nested: the parent's 2 GiB holds below the group's 8 GiB
+        ({"a/memory.max": str(2 * 2**30), "a/b/memory.max": str(8 * 2**30)}, "0::/a/b\n", 2**31),
+        # v1, and v1's "no limit" (a page-rounded 2^63 - 1)
+        ({"memory/memory.limit_in_bytes": "1073741824"}, "9:memory:/\n", 2**30),
+        ({"memory/memory.limit_in_bytes": "9223372036854771712"}, "9:memory:/\n", None),
+        ({}, "", None),
+    ],
+)
+def test_the_memory_limit_is_read_from_cgroup_files(
+    tmp_path: Path, files: dict[str, str], self_cgroup: str, limit: int | None
+) -> None:
+    root, proc = _tree(tmp_path, files, self_cgroup)
+    assert cgroup_memory(root, proc) == limit
+    physical = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+    assert usable_memory(root, proc) == min(physical, limit or physical)
+
+
+def test_the_dask_workers_memory_follows_the_usable_memory(monkeypatch: pytest.MonkeyPatch) -> None:
+    """2 CPUs and 4 GiB in a container: two workers of 1 GiB each (half the memory), not
+    Dask's default share of the host's memory."""
+    monkeypatch.setattr(service.studies, "usable_cpus", lambda: 2)
+    monkeypatch.setattr(service.studies, "usable_memory", lambda: 4 * 2**30)
+    for name in ("DASK_WORKERS", "DASK_WORKER_MEMORY"):
+        monkeypatch.delenv(name, raising=False)
+    studies = Studies(StudySettings())
+    assert (studies.dask().n_workers, studies.dask().memory_limit) == (2, 2**30)
+    studies.shutdown()
+    monkeypatch.setenv("DASK_WORKER_MEMORY", str(3 * 2**29))
+    explicit = Studies(StudySettings())
+    assert explicit.dask().memory_limit == 3 * 2**29
+    explicit.shutdown()

@@ -1,0 +1,244 @@
+"""The study jobs' store: SQLite for state, progress and summaries; Parquet files for points.
+
+Every server process (``--workers N``) and every restart sees the same jobs: a job is a
+row of one SQLite database (the standard library's ``sqlite3``, WAL journal, nothing to
+configure) in the folder ``STUDY_STORE``; a study's raw points, when it asked for them
+(``keep_points``), are one Parquet file beside it, written once when the study finishes,
+so they leave the process's memory then and are streamed from disk by the downloads.
+
+The quotas are checked and the job inserted in one write transaction (``BEGIN
+IMMEDIATE``), so two processes cannot both take the last place. Disk: a study that keeps
+its points reserves an estimate of its file (8 bytes a value) before a point is drawn;
+the reservations and the files written count against ``STUDY_DISK_BYTES``.
+
+A process beats for the jobs it runs (:meth:`JobStore.beat`, every ``BEAT_S``); an
+unfinished job whose process stopped beating for ``stale_s`` (a restart, a killed worker)
+is answered as failed, and no longer counts against a quota. The beat also carries a
+cancel asked in another process (``DELETE`` reaches any worker) to the one that runs it.
+"""
+
+from __future__ import annotations
+
+import json
+import sqlite3
+import time
+from collections.abc import Iterator
+from contextlib import closing, contextmanager
+from pathlib import Path
+from typing import Any
+
+#: How often a process writes its jobs' progress and reads the cancels asked of them [s].
+BEAT_S = 0.25
+ACTIVE = ("queued", "running")
+_COLUMNS = {
+    "id": "TEXT PRIMARY KEY",
+    "model": "TEXT NOT NULL",
+    "client": "TEXT NOT NULL",
+    "total": "INTEGER NOT NULL",
+    "keep_points": "INTEGER NOT NULL",
+    "state": "TEXT NOT NULL",
+    "phase": "TEXT NOT NULL",
+    "done": "INTEGER NOT NULL DEFAULT 0",
+    "created": "REAL NOT NULL",
+    "started": "REAL",
+    "finished": "REAL",
+    "error": "TEXT",  # JSON
+    "summary": "TEXT",  # JSON
+    "points": "INTEGER NOT NULL DEFAULT 0",  # 1 when the points file is written
+    "disk_bytes": "INTEGER NOT NULL DEFAULT 0",  # the file's size, or its reservation
+    "owner": "TEXT NOT NULL",  # the process (Studies instance) running it
+    "beat": "REAL NOT NULL",
+    "cancel": "INTEGER NOT NULL DEFAULT 0",
+}
+_JSON = ("error", "summary")
+#: What a job whose process stopped says, in place of a progress that never ends.
+LOST = {
+    "type": "study_lost",
+    "msg": "the server process running this study stopped (a restart?); submit it again",
+    "field": None,
+}
+
+
+class Full(Exception):
+    """A quota (per client, in all, disk) has no room for the job: the message says which."""
+
+
+class JobStore:
+    """Jobs in ``folder/jobs.sqlite``, their points in ``folder/points/<job>.parquet``."""
+
+    def __init__(self, folder: Path, disk_bytes: int, stale_s: float = 20.0) -> None:
+        self.folder = folder
+        self.files = folder / "points"
+        self.files.mkdir(parents=True, exist_ok=True)
+        self.path = folder / "jobs.sqlite"
+        self.disk_bytes = disk_bytes
+        self.stale_s = stale_s
+        with closing(sqlite3.connect(self.path, timeout=30.0, isolation_level=None)) as db:
+            db.execute("PRAGMA journal_mode=WAL")  # readers never wait for the writer
+        with self._db(immediate=True) as db:
+            columns = ", ".join(f"{k} {v}" for k, v in _COLUMNS.items())
+            db.execute(f"CREATE TABLE IF NOT EXISTS jobs ({columns})")
+            db.execute("CREATE INDEX IF NOT EXISTS jobs_state ON jobs (state, client)")
+
+    @contextmanager
+    def _db(self, immediate: bool = False) -> Iterator[sqlite3.Connection]:
+        """One connection for one transaction (cheap with SQLite; safe across threads and
+        processes), committed on success."""
+        with closing(sqlite3.connect(self.path, timeout=30.0, isolation_level=None)) as db:
+            db.row_factory = sqlite3.Row
+            db.execute("PRAGMA synchronous=NORMAL")
+            db.execute("BEGIN IMMEDIATE" if immediate else "BEGIN")
+            try:
+                yield db
+            except BaseException:
+                db.execute("ROLLBACK")
+                raise
+            db.execute("COMMIT")
+
+    def points_path(self, job_id: str) -> Path:
+        return self.files / f"{job_id}.parquet"
+
+    @staticmethod
+    def _row(row: sqlite3.Row) -> dict[str, Any]:
+        out = dict(row)
+        for key in _JSON:
+            out[key] = None if out[key] is None else json.loads(out[key])
+        out["keep_points"] = bool(out["keep_points"])
+        return out
+
+    def _live(self, now: float) -> str:
+        """SQL: an unfinished job whose process still beats."""
+        return f"state IN {ACTIVE!r} AND beat > {now - self.stale_s!r}"
+
+    def put(self, job: dict[str, Any]) -> None:
+        """Insert or replace a job (its fields as :data:`_COLUMNS` names them)."""
+        row = {k: job.get(k) for k in _COLUMNS}
+        for key in _JSON:
+            row[key] = None if row[key] is None else json.dumps(row[key])
+        for key in ("done", "points", "disk_bytes", "cancel"):
+            row[key] = int(row[key] or 0)
+        with self._db() as db:
+            names = ", ".join(row)
+            marks = ", ".join("?" for _ in row)
+            db.execute(
+                f"INSERT OR REPLACE INTO jobs ({names}) VALUES ({marks})", list(row.values())
+            )
+
+    def admit(self, job: dict[str, Any], *, per_client: int, max_active: int) -> None:
+        """Insert ``job`` if the client, the server and the disk have room; else :class:`Full`.
+
+        One write transaction: a concurrent admission in another process waits for it.
+        """
+        now = time.time()
+        with self._db(immediate=True) as db:
+            live = self._live(now)
+            active = db.execute(f"SELECT count(*) FROM jobs WHERE {live}").fetchone()[0]
+            mine = db.execute(
+                f"SELECT count(*) FROM jobs WHERE {live} AND client = ?", (job["client"],)
+            ).fetchone()[0]
+            if mine >= per_client or active >= max_active:
+                raise Full(
+                    f"{mine} of your studies and {active} in all are running "
+                    f"(limits {per_client} per client, {max_active} in all); retry when one "
+                    "finishes or cancel one"
+                )
+            need = int(job.get("disk_bytes") or 0)
+            if need:
+                used = db.execute("SELECT coalesce(sum(disk_bytes), 0) FROM jobs").fetchone()[0]
+                if used + need > self.disk_bytes:
+                    raise Full(
+                        f"keeping this study's points needs about {need / 1e6:.0f} MB and the "
+                        f"job store has {max(0, self.disk_bytes - used) / 1e6:.0f} MB free of "
+                        f"{self.disk_bytes / 1e6:.0f} MB (STUDY_DISK_BYTES); retry when older "
+                        "jobs expire, delete one, or run it without keep_points"
+                    )
+            row = {k: job.get(k) for k in _COLUMNS}
+            row.update(beat=now, created=now, cancel=0, points=0, done=0)
+            for key in _JSON:
+                row[key] = None if row[key] is None else json.dumps(row[key])
+            names, marks = ", ".join(row), ", ".join("?" for _ in row)
+            db.execute(f"INSERT INTO jobs ({names}) VALUES ({marks})", list(row.values()))
+
+    def update(self, job_id: str, **fields: Any) -> None:
+        if not fields:
+            return
+        values = [json.dumps(v) if k in _JSON and v is not None else v for k, v in fields.items()]
+        sets = ", ".join(f"{k} = ?" for k in fields)
+        with self._db() as db:
+            db.execute(f"UPDATE jobs SET {sets} WHERE id = ?", [*values, job_id])
+
+    def get(self, job_id: str) -> dict[str, Any] | None:
+        """The job, or None; an unfinished one whose process stopped beating is failed here."""
+        now = time.time()
+        with self._db() as db:
+            row = db.execute("SELECT * FROM jobs WHERE id = ?", (job_id,)).fetchone()
+            if row is None:
+                return None
+            job = self._row(row)
+            if job["state"] in ACTIVE and job["beat"] <= now - self.stale_s:
+                job.update(state="failed", error=LOST, finished=now)
+                db.execute(
+                    "UPDATE jobs SET state = 'failed', error = ?, finished = ? WHERE id = ?",
+                    (json.dumps(LOST), now, job_id),
+                )
+        return job
+
+    def active(self) -> list[dict[str, Any]]:
+        """The unfinished jobs of every live process (without their summaries)."""
+        with self._db() as db:
+            rows = db.execute(
+                f"SELECT id, client, state, owner FROM jobs WHERE {self._live(time.time())}"
+            ).fetchall()
+        return [dict(r) for r in rows]
+
+    def remove(self, job_id: str) -> None:
+        """Forget a job and delete its points file."""
+        with self._db() as db:
+            db.execute("DELETE FROM jobs WHERE id = ?", (job_id,))
+        self.points_path(job_id).unlink(missing_ok=True)
+
+    def prune(self, keep_s: float, keep_jobs: int) -> None:
+        """Remove finished jobs older than ``keep_s`` and all but the newest ``keep_jobs``
+        finished ones, with their files."""
+        now = time.time()
+        with self._db() as db:
+            finished = db.execute(
+                f"SELECT id, finished FROM jobs WHERE state NOT IN {ACTIVE!r} "
+                "ORDER BY finished DESC, created DESC"
+            ).fetchall()
+            gone = [
+                r["id"]
+                for i, r in enumerate(finished)
+                if i >= keep_jobs or now - (r["finished"] or now) > keep_s
+            ]
+            db.executemany("DELETE FROM jobs WHERE id = ?", [(g,) for g in gone])
+        for job_id in gone:
+            self.points_path(job_id).unlink(missing_ok=True)
+
+    def beat(self, owner: str, progress: list[tuple[str, int, str]]) -> set[str]:
+        """Write the progress ``(job, done, phase)`` of the jobs ``owner`` runs and mark them
+        alive; answer those of them a cancel was asked of (here or in another process)."""
+        now = time.time()
+        with self._db() as db:
+            db.executemany(
+                "UPDATE jobs SET beat = ?, done = ?, phase = ? "
+                f"WHERE id = ? AND state IN {ACTIVE!r}",
+                [(now, done, phase, job_id) for job_id, done, phase in progress],
+            )
+            rows = db.execute(
+                "SELECT id FROM jobs WHERE owner = ? AND cancel = 1", (owner,)
+            ).fetchall()
+        return {r["id"] for r in rows}
+
+    def ask_cancel(self, job_id: str) -> dict[str, Any] | None:
+        """Ask the process running ``job_id`` to stop it; a job still queued is cancelled
+        here at once. Answers the job as it stands."""
+        now = time.time()
+        with self._db(immediate=True) as db:
+            db.execute("UPDATE jobs SET cancel = 1 WHERE id = ?", (job_id,))
+            db.execute(
+                "UPDATE jobs SET state = 'cancelled', finished = ? "
+                "WHERE id = ? AND state = 'queued'",
+                (now, job_id),
+            )
+        return self.get(job_id)

@@ -1,0 +1,71 @@
+"""Cancel stops the chunks running on Dask workers, not only the pending ones.
+
+Issue 34: after DELETE the workers kept computing for about 50 s: ``client.cancel`` drops
+pending chunks, but a running one (256 simulations) ran to its end. Each chunk now reads
+its study's ``distributed.Event`` every ``CANCEL_POLL_S`` and stops at its next point.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from typing import Any
+
+import pytest
+
+import engine
+from engine.studies.execute import CANCEL_POLL_S, LOOP_CHUNK, DaskExecutor, run_study
+from engine.studies.plan import Study, Variable
+
+pytestmark = pytest.mark.slow
+
+
+def _executing(dask_worker: Any) -> int:
+    return int(dask_worker.state.executing_count)
+
+
+def test_a_cancelled_study_leaves_the_workers_idle_within_a_bound() -> None:
+    rare = engine.get_model("impact.rare")
+    example = dict(rare.examples[0])
+    study = Study(
+        variables=(Variable("motor_torque", low=4.5, high=5.5),),
+        base={k: v for k, v in example.items() if k != "motor_torque"},
+        samples=4 * LOOP_CHUNK,
+        fidelity="simulation",
+    )
+    # one simulation, to size the bound: a running chunk of 256 of them ran to its end
+    start = time.perf_counter()
+    engine.run(rare, example, fidelity="simulation")
+    engine.run(rare, example, fidelity="simulation")
+    point_s = (time.perf_counter() - start) / 2
+    executor = DaskExecutor(n_workers=1)
+    try:
+        client = executor.client()
+        cancel = threading.Event()
+        ended: list[BaseException] = []
+
+        def run() -> None:
+            try:
+                run_study(rare, study, executor, cancel=cancel)
+            except BaseException as exc:
+                ended.append(exc)
+
+        thread = threading.Thread(target=run)
+        thread.start()
+        deadline = time.monotonic() + 60
+        while sum(client.run(_executing).values()) == 0:
+            assert time.monotonic() < deadline, "no chunk started"
+            time.sleep(0.05)
+        time.sleep(0.3)  # well inside the first chunk
+        start = time.perf_counter()
+        cancel.set()
+        while sum(client.run(_executing).values()) > 0:
+            time.sleep(0.02)
+        idle_s = time.perf_counter() - start
+        thread.join(30)
+        assert ended and isinstance(ended[0], engine.Cancelled)
+        # the poll, a few points (at this load), a round trip: far below the chunk's time
+        assert idle_s < CANCEL_POLL_S + 10 * point_s + 0.5, (idle_s, point_s)
+        assert idle_s < 0.5 * LOOP_CHUNK * point_s, (idle_s, point_s)
+    finally:
+        executor.close()
