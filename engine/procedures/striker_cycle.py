@@ -249,6 +249,14 @@ def _numbers(x: Mapping[str, Any]) -> dict[str, Any]:
 def step_inputs(x: Mapping[str, Any]) -> Mapping[str, Any]:
     """The inputs converted once for every step of a request (floats as numpy's float64).
 
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``);
+        numbers or arrays of one shape
+
+    Notes
+    -----
     Every public step here converts its inputs at its door; handed this mapping, it
     skips that, so a request that runs the cycle, its error estimate and the geometry
     note converts them once. Do not modify the result (a copy, ``{**x}``, is converted
