@@ -49,6 +49,7 @@ from ..procedures.striker_cycle import (
     relock_friction,
     simulate_cycle,
     simulation_release_velocity_error,
+    step_inputs,
 )
 
 _SIMULATION_ERROR = 1e-6
@@ -142,12 +143,21 @@ def _cycle(x: Mapping[str, Any], scratch: Scratch) -> CycleOutcome:
     Once per request: the rung estimate and the outputs of a run (or of a sweep chunk)
     read the same cycle from the request's ``scratch``, which no other request sees.
     """
-    return scratch.once("impact.rare cycle", lambda: closed_form_cycle(x, refuse=False))
+    return scratch.once(
+        "impact.rare cycle", lambda: closed_form_cycle(_inputs(x, scratch), refuse=False)
+    )
+
+
+def _inputs(x: Mapping[str, Any], scratch: Scratch) -> Mapping[str, Any]:
+    """The inputs as the procedure's steps take them, converted once per request."""
+    return scratch.once("impact.rare inputs", lambda: step_inputs(x))
 
 
 def _errors(x: Mapping[str, Any], scratch: Scratch) -> dict[str, Any]:
     """:func:`engine.procedures.striker_cycle.closed_form_errors` of the closed form's cycle."""
-    return scratch.once("impact.rare errors", lambda: closed_form_errors(x, _cycle(x, scratch)))
+    return scratch.once(
+        "impact.rare errors", lambda: closed_form_errors(_inputs(x, scratch), _cycle(x, scratch))
+    )
 
 
 def _closed_form_estimate(x: Mapping[str, Any], scratch: Scratch) -> Any:
@@ -326,7 +336,7 @@ def _geometry_note(x: Mapping[str, Any], w_m: float) -> str:
         if other == geo:
             continue
         try:
-            w_o = release_speed_of({**x, "roller_geometry": other})
+            w_o = release_speed_of(x, other)
         except EngineError:
             continue
         parts.append(f"{_GEOMETRY_TEXT[other]} {in_rpm(w_o)} ({100.0 * (w_o / w_m - 1.0):+.1f} %)")
@@ -557,7 +567,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"{o.release_velocity:.3g} m/s leaves out the half-coupling's oscillation, which can "
             "double it; ask the simulation"
         )
-    notes.append(_geometry_note(x, o.release_speed))
+    notes.append(_geometry_note(_inputs(x, ctx.scratch), o.release_speed))
     if o.snap:
         notes.append(
             "the stage-1 stiffness c1 + c2 − A·κ·ω² is already negative when the rollers lift "

@@ -132,7 +132,7 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any
@@ -181,6 +181,7 @@ __all__ = [
     "simulation_release_velocity_error",
     "snaps_at_liftoff",
     "stage1_effective_mass",
+    "step_inputs",
 ]
 
 STEPS_PER_PERIOD = 200
@@ -208,9 +209,64 @@ def _one_or_many(v: Any) -> Any:
     return v if isinstance(v, np.ndarray) else float(v)
 
 
+class _Numbers(dict[str, Any]):
+    """Inputs already as the steps take them (:func:`step_inputs`): passed on as they are.
+
+    ``memo`` keeps what a step derived from these inputs alone (:func:`_once`): the
+    roller geometries, the stage-1 speeds, stage 2's coefficients.
+    """
+
+    __slots__ = ("memo",)
+
+    def __init__(self, x: Mapping[str, Any]) -> None:
+        super().__init__(x)
+        self.memo: dict[tuple[str, str], Any] = {}
+
+
+def _once(x: Mapping[str, Any], key: tuple[str, str], compute: Callable[[], Any]) -> Any:
+    """``compute()``, once per :func:`step_inputs` mapping (every time on a plain mapping).
+
+    Only for values that depend on ``x`` and ``key`` alone.
+
+    >>> x, calls = step_inputs({"a": 1.0}), []
+    >>> _once(x, ("k", ""), lambda: calls.append(1) or 7), _once(x, ("k", ""), lambda: 0), calls
+    (7, 7, [1])
+    """
+    if x.__class__ is not _Numbers:
+        return compute()
+    memo = x.memo
+    if key in memo:
+        return memo[key]
+    value = memo[key] = compute()
+    return value
+
+
 def _numbers(x: Mapping[str, Any]) -> dict[str, Any]:
-    """The inputs as the steps take them (:func:`engine.numerics.ode.as_numbers`)."""
-    return as_numbers(x)
+    """The inputs as the steps take them (:func:`engine.numerics.ode.as_numbers`), once."""
+    return x if x.__class__ is _Numbers else _Numbers(as_numbers(x))
+
+
+def step_inputs(x: Mapping[str, Any]) -> Mapping[str, Any]:
+    """The inputs converted once for every step of a request (floats as numpy's float64).
+
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``);
+        numbers or arrays of one shape
+
+    Notes
+    -----
+    Every public step here converts its inputs at its door; handed this mapping, it
+    skips that, so a request that runs the cycle, its error estimate and the geometry
+    note converts them once. Do not modify the result (a copy, ``{**x}``, is converted
+    anew).
+
+    >>> x = step_inputs({"a": 1, "g": "paper"})
+    >>> x, step_inputs(x) is x, _numbers(x) is x
+    ({'a': np.float64(1.0), 'g': 'paper'}, True, True)
+    """
+    return _numbers(x)
 
 
 # ---------------------------------------------------------------------------
@@ -271,8 +327,30 @@ def geometry(name: str, cone_angle: Any) -> Geometry:
     raise ValueError(f"unknown roller geometry {name!r}; one of {', '.join(GEOMETRIES)}")
 
 
+def _geometry_of(x: Mapping[str, Any], name: str) -> Geometry:
+    """:func:`geometry` ``name`` at ``x``'s cone angle, made once for :func:`step_inputs`."""
+    g: Geometry = _once(x, ("geometry", name), lambda: geometry(name, x["cone_angle"]))
+    return g
+
+
+def _speeds(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, Any]:
+    """(release radius r, lift-off speed ω_0, release speed ω_M) of stage 1, once a request.
+
+    :func:`_radius`, :func:`_liftoff_speed` and :func:`_release_speed`, which the cycle,
+    its error estimate and the release speed share.
+    """
+
+    def compute() -> tuple[Any, Any, Any]:
+        r = _radius(x, g)
+        w_0 = _liftoff_speed(x, g)
+        return r, w_0, _release_speed(x, g, w_0, r)
+
+    speeds: tuple[Any, Any, Any] = _once(x, ("stage 1", g.name), compute)
+    return speeds
+
+
 def _geo(x: Mapping[str, Any]) -> Geometry:
-    return geometry(str(x.get("roller_geometry", "symmetric_v")), x["cone_angle"])
+    return _geometry_of(x, str(x.get("roller_geometry", "symmetric_v")))
 
 
 def _effective_mass(x: Mapping[str, Any], g: Geometry) -> Any:
@@ -402,7 +480,7 @@ def _preloads_do_not_hold(x: Mapping[str, Any], g: Geometry) -> InfeasibleDesign
     )
 
 
-def release_speed_of(x: Mapping[str, Any]) -> Any:
+def release_speed_of(x: Mapping[str, Any], roller_geometry: str | None = None) -> Any:
     r"""Quasi-static release speed of the chosen geometry [rad/s] (module notes).
 
     Parameters
@@ -410,6 +488,8 @@ def release_speed_of(x: Mapping[str, Any]) -> Any:
     x : Mapping
         The model's inputs in SI (names as in ``impact.rare``, with ``roller_geometry``);
         numbers or arrays of one shape
+    roller_geometry : str, optional
+        One of :data:`GEOMETRIES` in place of ``x``'s own (a comparison of readings)
 
     Notes
     -----
@@ -430,15 +510,16 @@ def release_speed_of(x: Mapping[str, Any]) -> Any:
     >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
     >>> round(release_speed_of({**R, "roller_geometry": "symmetric_v", "gravity": 0.0}), 2)
     242.86
+    >>> release_speed_of({**R, "gravity": 0.0}, "symmetric_v") == 242.8587905694639
+    True
     """
     with np.errstate(all="ignore"):
         x = _numbers(x)
-        g = _geo(x)
+        g = _geo(x) if roller_geometry is None else _geometry_of(x, roller_geometry)
         held = _preload_force(x, g) > 0.0
         if not is_array(held) and not held:
             raise _preloads_do_not_hold(x, g)
-        w_0 = _liftoff_speed(x, g)
-        w_m = _release_speed(x, g, w_0, _radius(x, g))
+        _, _, w_m = _speeds(x, g)
         return _one_or_many(where(held, w_m, math.nan))
 
 
@@ -732,6 +813,41 @@ def _striker_alone(x: Mapping[str, Any], y: Any) -> tuple[Any, Any]:
     return x["gravity"] - c3 * (x["return_spring_preload"] + y) / m3, c3 / m3
 
 
+def _stage2_terms(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, Any, Any, Any, Any]:
+    r"""Stage 2's terms that do not depend on the release velocity [002, eqs. 2 and 5].
+
+    .. math::
+        -(m_1 + m_2 + n m_p\rho),\ M_2 + m_2,\
+        k_a = \sqrt{\frac{c_1 + c_2 + c_3}{M_2 + m_2}},\ \frac{F_0}{(M_2 + m_2)k_a^2},\ B,\ k^2
+
+    with :math:`F_0 = (M_2 + m_2)g + c_1(\lambda_1 + h_1) + c_2(\lambda_2 + h_1) - c_3\lambda_3`
+    (the sandwich with the shaft at release) and B, k of [002, eq. 5]. The reference design
+    (M_2 = 0.85, with the shaft 0.9 kg): k_a² = 104000/0.9 = 115555.6 s⁻², and
+    k² = (50000 + 52000)/0.85 = 120000 s⁻²:
+
+    >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
+    >>> t = _stage2_terms(R, geometry("symmetric_v", math.pi / 4))
+    >>> round(t[0], 12), round(t[1], 12), round(float(t[2]) ** 2, 1), round(float(t[5]), 6)
+    (-0.35, 0.9, 115555.6, 120000.0)
+    """
+    c1, c2, c3 = x["power_spring_rate"], x["auxiliary_spring_rate"], x["return_spring_rate"]
+    lam1, lam2, lam3 = (
+        x["power_spring_preload"],
+        x["auxiliary_spring_preload"],
+        x["return_spring_preload"],
+    )
+    h1, grav = x["release_travel"], x["gravity"]
+    m1, m2, m3 = x["half_coupling_mass"], x["stepped_shaft_mass"], x["striker_mass"]
+    nm = x["roller_count"] * x["roller_mass"]
+    big = m1 + nm + m3
+    mass = big + m2
+    f_at0 = mass * grav + c1 * (lam1 + h1) + c2 * (lam2 + h1) - c3 * lam3
+    k_a = sqrt((c1 + c2 + c3) / mass)
+    # the striker's own stage-2 motion, B and k of [002, eqs. 2 and 5]
+    acc0, k = striker_oscillation(c1, lam1, c3, lam3, h1, big, grav)
+    return -(m1 + m2 + nm * g.a_h), mass, k_a, f_at0 / mass / k_a**2, acc0, k * k
+
+
 def _stage2(x: Mapping[str, Any], v_release: Any, g: Geometry) -> tuple[Any, Any]:
     r"""Stage 2 [002, eq. 2] from the release state, exact per linear piece: (time, reach).
 
@@ -749,28 +865,14 @@ def _stage2(x: Mapping[str, Any], v_release: Any, g: Geometry) -> tuple[Any, Any
     Returns (release -> blow time, farthest travel), the time inf where it never gets to
     :math:`h_2` (the striker turns back short of it: an edge blow at best).
     """
-    c1, c2, c3 = x["power_spring_rate"], x["auxiliary_spring_rate"], x["return_spring_rate"]
-    lam1, lam2, lam3 = (
-        x["power_spring_preload"],
-        x["auxiliary_spring_preload"],
-        x["return_spring_preload"],
-    )
-    h1, h2, grav = x["release_travel"], x["engagement_height"], x["gravity"]
-    m1, m2, m3 = x["half_coupling_mass"], x["stepped_shaft_mass"], x["striker_mass"]
-    nm = x["roller_count"] * x["roller_mass"]
-    big = m1 + nm + m3
-    v0 = -(m1 + m2 + nm * g.a_h) * v_release / (big + m2)
+    lead, mass, k_a, centre, acc0, w2 = _once(x, ("stage 2", g.name), lambda: _stage2_terms(x, g))
+    h1, h2 = x["release_travel"], x["engagement_height"]
+    v0 = lead * v_release / mass
     back = v0 < 0.0
     # with the shaft, from 0 backwards and back to 0 with the same speed (conservative):
     # y = c(1 - cos θ) + (v0/k) sin θ is back at 0 when tan(θ/2) = -(v0/k)/c
-    mass = big + m2
-    f_at0 = mass * grav + c1 * (lam1 + h1) + c2 * (lam2 + h1) - c3 * lam3
-    k_a = sqrt((c1 + c2 + c3) / mass)
-    t_back = where(back, 2.0 * atan2(-v0 / k_a, f_at0 / mass / k_a**2) / k_a, 0.0)
+    t_back = where(back, 2.0 * atan2(-v0 / k_a, centre) / k_a, 0.0)
     v_start = where(back, -v0, 0.0)
-    # the striker's own stage-2 motion, B and k of [002, eqs. 2 and 5]
-    acc0, k = striker_oscillation(c1, lam1, c3, lam3, h1, big, grav)
-    w2 = k * k
     reach = _peak(0.0, v_start, acc0, w2)
     one_piece = (h2 <= h1) | (reach <= h1)
     if all_true(one_piece):  # the blow (or the turning point) before the half-coupling's stop
@@ -905,9 +1007,7 @@ def closed_form_cycle(x: Mapping[str, Any], *, refuse: bool = True) -> CycleOutc
         x = _numbers(x)
         g = _geo(x)
         x0 = x["roller_radius"]
-        r = _radius(x, g)
-        w_0 = _liftoff_speed(x, g)
-        w_m = _release_speed(x, g, w_0, r)
+        r, w_0, w_m = _speeds(x, g)
         t_spin = _time_to_speed(x, _inertia(x, g, r), w_m)
         t_lift = _time_to_speed(x, _inertia(x, g, x0), w_0)
         refusal = where(
@@ -2331,12 +2431,10 @@ def _quasi_static_error(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, An
     fm = _preload_force(x, g) + stiff * h1
     a_push, kap = _push_per_w2(x, g), g.kappa
     m_e = _effective_mass(x, g)
-    r = _radius(x, g)
+    r, w_0, w_m = _speeds(x, g)
     inertia = _inertia(x, g, r)
     inertia_0 = _inertia(x, g, x0)
     torque, w_nl = x["motor_torque"], x.get("motor_no_load_speed")
-    w_0 = _liftoff_speed(x, g)
-    w_m = _release_speed(x, g, w_0, r)
     inertia_share: Any = 0.0
     if w_nl is not None and not g.paper:
         # the closed form runs the whole spin-up on the inertia at release; a relative
