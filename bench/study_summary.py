@@ -7,8 +7,9 @@ scalar output collected (the default outputs):
   thickness and working load scattered);
 * ``preload.tightening``: M12 8.8 with μ_G uniform 0.08…0.16 and μ_K normal (0.12, 0.012);
 
-and prints the split of each: points drawn (:func:`engine.studies.plan.plan`), model
-evaluation (the chunks), merge, quantiles and histograms (``_stats`` of every output),
+and prints the split of each, in CPU seconds of this process: points drawn
+(:func:`engine.studies.plan.plan`), model evaluation (the chunks), merge, quantiles and
+histograms (``_stats`` of every output),
 rank correlations, the rest of :func:`engine.studies.plan.summarize` (extremes, checks,
 rung counts), and the share merge + summary take of the whole.
 
@@ -88,9 +89,11 @@ def joint_study(n: int) -> Study:
 
 
 def _clock(call: Callable[[], Any]) -> tuple[float, Any]:
-    t0 = time.perf_counter()
+    """The CPU seconds of this process ``call`` takes (steadier than the wall clock on a
+    machine other work shares: numpy's summaries here run in one thread), and its value."""
+    t0 = time.process_time()
     out = call()
-    return time.perf_counter() - t0, out
+    return time.process_time() - t0, out
 
 
 def split(spec: engine.ModelSpec, study: Study) -> dict[str, float]:
