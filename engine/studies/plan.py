@@ -649,6 +649,8 @@ def _stats(column: np.ndarray, bins: int) -> dict[str, Any]:
 BRACKET_POINTS = 50_000
 #: Every how many points the bracketing subsample takes one.
 BRACKET_STEP = 64
+#: Ranks in the lowest or highest this share of a column are sought in its tail alone.
+TAIL_SHARE = 0.1
 
 
 def _order_statistics(y: np.ndarray, ranks: np.ndarray) -> np.ndarray:
@@ -658,7 +660,9 @@ def _order_statistics(y: np.ndarray, ranks: np.ndarray) -> np.ndarray:
     a bracket [a, b] a sorted subsample (every :data:`BRACKET_STEP`-th point) places
     around it, eight standard deviations of the subsample's rank error wide: with
     ``c`` points below a, rank r is rank r - c of the few points inside the bracket, found
-    by partitioning those alone. That holds whatever the subsample: a bracket that misses
+    by partitioning those alone; the ranks of a tail (the lowest or highest
+    :data:`TAIL_SHARE`) are sought so in the tail, cut from the column in one pass. That
+    holds whatever the subsample: a bracket that misses
     its rank (a sorted or gridded column can fool the subsample) falls back to the
     partition of the whole column, so the values are always exact.
 
@@ -672,22 +676,39 @@ def _order_statistics(y: np.ndarray, ranks: np.ndarray) -> np.ndarray:
         return np.partition(y, ranks)[ranks]
     sample = np.sort(y[::BRACKET_STEP])
     m = sample.size
-    out = np.empty(ranks.size)
-    i = 0
-    while i < ranks.size:  # one bracket for this rank and the next ones it holds
-        share = int(ranks[i]) / (n - 1)
+
+    def bracket(r: int) -> tuple[float, float]:
+        share = r / (n - 1)
         j = share * (m - 1)
         half = 8.0 * math.sqrt(share * (1.0 - share) * m) + 2.0
-        a = sample[max(int(j - half), 0)]
-        b = sample[min(int(j + half) + 1, m - 1)]
+        return sample[max(int(j - half), 0)], sample[min(int(j + half) + 1, m - 1)]
+
+    out = np.empty(ranks.size)
+    todo = np.ones(ranks.size, dtype=bool)
+    # the ranks in a tail: one pass cuts the tail (the smallest or largest points, ties
+    # at the cut included), and their brackets are then sought in it alone
+    low, high = ranks < TAIL_SHARE * n, ranks > (1.0 - TAIL_SHARE) * n
+    if low.any():
+        tail = y[y <= bracket(int(ranks[low].max()))[1]]
+        if tail.size <= n // 2 and int(ranks[low].max()) < tail.size:
+            out[low], todo[low] = _order_statistics(tail, ranks[low]), False
+    if high.any():
+        top = y[y >= bracket(int(ranks[high].min()))[0]]
+        offset = n - top.size
+        if top.size <= n // 2 and int(ranks[high].min()) >= offset:
+            out[high], todo[high] = _order_statistics(top, ranks[high] - offset), False
+    rest = np.flatnonzero(todo)
+    i = 0
+    while i < rest.size:  # one bracket for this rank and the next ones it holds
+        a, b = bracket(int(ranks[rest[i]]))
         below = int(np.count_nonzero(y < a))
         inside = y[(y >= a) & (y <= b)]
-        ks = ranks[i:] - below
+        ks = ranks[rest[i:]] - below
         held = int(np.count_nonzero((ks >= 0) & (ks < inside.size)))
         if held == 0 or ks[0] < 0:
             return np.partition(y, ranks)[ranks]
         ks = ks[:held]
-        out[i : i + held] = a if a == b else np.partition(inside, ks)[ks]
+        out[rest[i : i + held]] = a if a == b else np.partition(inside, ks)[ks]
         i += held
     return out
 
