@@ -323,7 +323,7 @@ def measure_outputs(spec: ModelSpec, seconds: float) -> list[dict[str, Any]]:
 
 
 #: Bench files with a ``measure()`` that are not named ``extra_*.py``.
-MORE_EXTRAS: tuple[Path, ...] = (HERE / "trace_batch.py",)
+MORE_EXTRAS: tuple[Path, ...] = (HERE / "trace_batch.py", HERE / "study_summary.py")
 
 
 def run_extras(paths: Sequence[Path]) -> tuple[list[dict[str, Any]], list[str]]:

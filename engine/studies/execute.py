@@ -33,7 +33,7 @@ import numpy as np
 
 from ..core.errors import BudgetExceeded, Cancelled
 from ..core.spec import ModelSpec
-from .plan import ChunkResult, Plan, Study, chunks, evaluate_chunk, merge, plan, summarize
+from .plan import ChunkResult, Merger, Plan, Study, chunks, evaluate_chunk, plan, summarize
 
 VECTOR_CHUNK = 65_536
 LOOP_CHUNK = 256
@@ -258,13 +258,14 @@ def run_study(
         )
         for a, b in slices
     ]
-    parts: list[ChunkResult | None] = [None] * len(calls)
+    # each chunk goes to its place as it arrives (the study holds its values once)
+    merger = Merger(p.n_points, p.outputs)
     done = 0
     if progress:
         progress(0, p.n_points)
     for i, part in (executor or InProcess()).map(calls, cancel):
-        parts[i] = part
         a, b = slices[i]
+        merger.add(a, part)
         done += b - a
         if progress:
             progress(done, p.n_points)
@@ -275,9 +276,9 @@ def run_study(
                 "budget",
                 field="samples",
             )
-    if cancel.is_set() or any(part is None for part in parts):
+    if cancel.is_set() or merger.received < len(calls):
         raise Cancelled(f"the study was cancelled after {done} of {p.n_points} points")
-    merged = merge([part for part in parts if part is not None], p.outputs)
+    merged = merger.result()
     summary = summarize(spec, study, p, merged)
     elapsed = time.perf_counter() - start
     summary["elapsed_s"] = elapsed
