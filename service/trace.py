@@ -22,6 +22,7 @@ from engine.models.trace import ANALYSIS
 from engine.procedures import trace_import as ti
 
 from . import schemas
+from .api import _ERRORS
 
 router = APIRouter(prefix="/api/v1/trace", tags=["trace"])
 
@@ -168,7 +169,11 @@ def read_trace(body: TraceImport) -> ti.Trace:
     operation_id="import_trace",
     summary="Read a trace as a tool exports it into the inputs of trace.analysis",
     response_model=TraceImported,
-    responses={422: {"model": schemas.ErrorResponse, "description": "content not readable"}},
+    # the body checks every POST route has (400, 413, 415); no engine lane, so no 503
+    responses={
+        **{status: doc for status, doc in _ERRORS.items() if status != 503},
+        422: {"model": schemas.ErrorResponse, "description": "a field or the content unreadable"},
+    },
 )
 def import_trace(body: TraceImport) -> TraceImported:
     """CSV (column mapping and units), Open Protocol MID 0900, OPC UA StepTraceDataType or
