@@ -1242,7 +1242,8 @@ BATCH = ModelSpec(
             estimate_kind="typical",
             typical_exceeded=ANALYSIS_RUNG.typical_exceeded,
             typical_error=ANALYSIS_RUNG.typical_error,
-            typical_time="about 3 ms a trace of 300 samples (the joint solved once)",
+            typical_time="about 4 ms a trace of 200 samples, the joint solved once (22 ms for "
+            "the five-trace example)",
         ),
     ),
     compute=_batch,
