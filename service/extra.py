@@ -10,5 +10,6 @@ from fastapi import APIRouter
 
 from .fasteners import router as fasteners_router
 from .preload import router as preload_router
+from .trace import router as trace_router
 
-EXTRA_ROUTERS: list[APIRouter] = [preload_router, fasteners_router]
+EXTRA_ROUTERS: list[APIRouter] = [preload_router, fasteners_router, trace_router]

@@ -27,6 +27,7 @@ from .preload import CONTROL as PRELOAD_CONTROL
 from .preload import TIGHTENING as PRELOAD_TIGHTENING
 from .rare_impact import RARE_IMPACT
 from .trace import ANALYSIS as TRACE_ANALYSIS
+from .trace import BATCH as TRACE_BATCH
 from .trace import PROGRAM as TRACE_PROGRAM
 from .ultrasonic import ULTRASONIC as PRELOAD_ULTRASONIC
 
@@ -47,6 +48,7 @@ MODELS: tuple[ModelSpec, ...] = (
     FRICTION_ISO16047,
     TRACE_ANALYSIS,
     TRACE_PROGRAM,
+    TRACE_BATCH,
     JOINT_CLAMP_CAPABILITY,
 )
 

@@ -11,6 +11,7 @@ steps, refuses what cannot be read, and turns the numbers into verdicts.
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
@@ -987,5 +988,295 @@ PROGRAM = ModelSpec(
     examples=(
         M12_JOINT,
         {**M12_JOINT, "strategy": "yield"},
+    ),
+)
+
+
+# --------------------------------------------------------------------------- trace.batch
+
+#: Most traces one batch holds, and most samples all of them together hold.
+MAX_BATCH_TRACES = 500
+MAX_BATCH_SAMPLES = 500_000
+_ONE_TRACE = {p.name: p for p in TRACE_INPUTS}
+
+
+def _concatenated(name: str) -> Param:
+    """A trace input of ``trace.analysis`` taking every trace of a batch one after another."""
+    p = _ONE_TRACE[name]
+    return replace(
+        p,
+        description=f"{p.description}; every trace of the batch one after another, "
+        "as trace_lengths splits them",
+        min_length=2 * MIN_TRACE_SAMPLES,
+        max_length=MAX_BATCH_SAMPLES,
+    )
+
+
+BATCH_INPUTS: tuple[Param, ...] = (
+    _concatenated("angle"),
+    _concatenated("torque"),
+    _concatenated("time"),
+    samples(
+        "trace_lengths",
+        "1",
+        "Samples of each trace, in the order angle and torque hold them (whole numbers "
+        "adding up to the samples given)",
+        required=True,
+        minimum=MIN_TRACE_SAMPLES,
+        maximum=MAX_BATCH_SAMPLES,
+        min_length=2,
+        max_length=MAX_BATCH_TRACES,
+        group="trace",
+    ),
+    Param(
+        "required_index",
+        "1",
+        "Index C_p and C_pk of the preload must reach (1.33 is a common process-capability "
+        "limit; set your own specification's)",
+        default=1.33,
+        minimum=0.5,
+        maximum=5.0,
+        symbol="C_req",
+        group="analysis",
+    ),
+    *(p for p in TRACE_INPUTS if p.name not in ("angle", "torque", "time")),
+    *JOINT_INPUTS,
+)
+
+
+def _trace_bounds(x: Mapping[str, Any]) -> list[tuple[int, int]]:
+    """Where each trace of the batch starts and ends in the concatenated samples."""
+    lengths = x["trace_lengths"]
+    for i, n in enumerate(lengths):
+        if not float(n).is_integer():
+            raise InputOutOfRange(
+                f"trace_lengths[{i}] = {n:g} is not a whole number of samples",
+                field="trace_lengths",
+                index=i,
+            )
+    total, given = int(sum(lengths)), len(x["angle"])
+    if total != given:
+        raise InputOutOfRange(
+            f"trace_lengths add up to {total} samples and angle holds {given}: must be equal",
+            field="trace_lengths",
+        )
+    ends = [0, *np.cumsum([int(n) for n in lengths]).tolist()]
+    return list(itertools.pairwise(ends))
+
+
+def _one_of_batch(
+    x: Mapping[str, Any], ctx: RunContext, number: int, a: int, b: int
+) -> Mapping[str, Any]:
+    """``trace.analysis``'s scalar results for the batch's trace ``number`` (samples a…b−1),
+    the joint solved once for the batch (the request's scratch); a refusal names the trace
+    and its sample index in the batch."""
+    one = {k: v for k, v in x.items() if k not in ("trace_lengths", "required_index")}
+    for name in ("angle", "torque", "time"):
+        if x.get(name) is not None:
+            one[name] = x[name][a:b]
+    inner = RunContext(
+        rung=ANALYSIS_RUNG.name,
+        outputs=ANALYSIS.scalar_outputs,
+        tolerance=ctx.tolerance,
+        deadline=ctx.deadline,
+        max_steps=ctx.max_steps,
+        cancel=ctx.cancel,
+        scratch=ctx.scratch,
+    )
+    try:
+        return _analysis(one, inner).values
+    except InputOutOfRange as exc:
+        where = dict(exc.context)
+        if isinstance(where.get("index"), int):
+            where["index"] += a
+        raise InputOutOfRange(
+            f"trace {number} (samples {a}…{b - 1}): {exc.message}",
+            field=exc.field,
+            **{**where, "trace": number},
+        ) from None
+
+
+def _batch(x: Mapping[str, Any], ctx: RunContext) -> Result:
+    bounds = _trace_bounds(x)
+    j = _joint(x, ctx)
+    friction, preload, inside = [], [], 0
+    for number, (a, b) in enumerate(bounds, start=1):
+        ctx.check_budget(f"trace {number} of the batch")
+        v = _one_of_batch(x, ctx, number, a, b)
+        friction.append(float(v["total_friction"]))
+        preload.append(float(v["preload"]))
+        inside += bool(v["preload_in_window"])
+    if max(preload) == min(preload):
+        raise InputOutOfRange(
+            f"torque: the {len(bounds)} traces give one preload, "
+            f"{quantity(preload[0], 'kN', '.6g')}: a capability needs a spread (are they "
+            "copies of one trace?)",
+            field="torque",
+        )
+    window = (j.assembly_preload_min, j.permissible_preload)
+    s = tr.batch_summary(friction, preload, window)
+    n = len(bounds)
+    required = float(x["required_index"])
+    capable = s.critical_capability_index >= required
+    numbers = ", ".join(str(i + 1) for i in s.outliers)
+    values: dict[str, Any] = {
+        "traces": n,
+        "friction_mean": s.friction_mean,
+        "friction_sd": s.friction_sd,
+        "preload_mean": s.preload_mean,
+        "preload_sd": s.preload_sd,
+        "preload_lowest": min(preload),
+        "preload_highest": max(preload),
+        "outlier_count": len(s.outliers),
+        "outlier_traces": numbers,
+        "traces_in_window": inside,
+        "capability_index": s.capability_index,
+        "critical_capability_index": s.critical_capability_index,
+        "assembly_preload_min": j.assembly_preload_min,
+        "permissible_preload": j.permissible_preload,
+    }
+    kn = "kN"
+    checks = [
+        Check(
+            "no_outliers",
+            not s.outliers,
+            "no trace's friction lies apart from the others'"
+            if not s.outliers
+            else f"trace{'s' if len(s.outliers) > 1 else ''} {numbers}: friction apart from "
+            f"the others' (robust z beyond {tr.OUTLIER_Z:g}): check the parts' lot or the "
+            "lubrication",
+        ),
+        Check(
+            "all_in_window",
+            inside == n,
+            f"{inside} of {n} traces have their preload bounds within F_M,min = "
+            f"{quantity(j.assembly_preload_min, kn)} … F_M,zul = "
+            f"{quantity(j.permissible_preload, kn)}",
+        ),
+        Check(
+            "capability",
+            capable,
+            f"C_p = {s.capability_index:.3g}, C_pk = {s.critical_capability_index:.3g} of the "
+            f"preload against F_M,min…F_M,zul {'≥' if capable else '<'} {required:g}",
+        ),
+    ]
+    notes = [
+        "each trace read as trace.analysis reads it (its step, its elastic rate, the total "
+        "friction μ_ges the rate implies, the preload at its peak torque), the joint solved "
+        "once for the batch",
+        f"outliers: modified z-score of the friction beyond {tr.OUTLIER_Z:g} (median and "
+        "median absolute deviation); C_p and C_pk of the preloads against the joint's "
+        "F_M,min…F_M,zul, sample standard deviation (n − 1)",
+        *j.notes,
+    ]
+    warnings = (
+        [f"only {n} traces: a capability index from fewer than 25 values scatters widely"]
+        if n < 25
+        else []
+    )
+    series: dict[str, list[float]] = {}
+    if ctx.wants("trace_number", "trace_friction", "trace_preload"):
+        series = {
+            "trace_number": [float(i) for i in range(1, n + 1)],
+            "trace_friction": friction,
+            "trace_preload": preload,
+        }
+    return Result(
+        values=values,
+        rung=ctx.rung,
+        error_estimate=None,
+        checks=checks,
+        notes=notes,
+        warnings=warnings,
+        series=series,
+    )
+
+
+BATCH_OUTPUTS: tuple[Output, ...] = (
+    _o("traces", "1", "Traces read", kind="int"),
+    _o("friction_mean", "1", "Mean of the traces' total friction μ_ges"),
+    _o("friction_sd", "1", "Sample standard deviation of μ_ges"),
+    _o("preload_mean", "N", "Mean of the traces' preload at their peak torque"),
+    _o("preload_sd", "N", "Sample standard deviation of the preload"),
+    _o("preload_lowest", "N", "Lowest preload of the batch"),
+    _o("preload_highest", "N", "Highest preload of the batch"),
+    _o("outlier_count", "1", "Traces whose friction lies apart from the others'", kind="int"),
+    _o(
+        "outlier_traces",
+        "1",
+        "Those traces, counted from 1 as trace_number, comma-separated (empty: none)",
+        kind="str",
+    ),
+    _o(
+        "traces_in_window",
+        "1",
+        "Traces whose preload bounds lie within F_M,min…F_M,zul",
+        kind="int",
+    ),
+    _o("capability_index", "1", "C_p of the preload against F_M,min…F_M,zul"),
+    _o("critical_capability_index", "1", "C_pk of the preload against F_M,min…F_M,zul"),
+    _o("assembly_preload_min", "N", "The joint's F_M,min (lower end of its window)"),
+    _o("permissible_preload", "N", "The joint's F_M,zul (upper end of its window)"),
+    _o("trace_number", "1", "Each trace, counted from 1", series=True),
+    _o("trace_friction", "1", "Total friction μ_ges of each trace", series=True, x="trace_number"),
+    _o("trace_preload", "N", "Preload of each trace at its peak torque", series=True,
+       x="trace_number"),
+)  # fmt: skip
+
+
+def _example_batch() -> dict[str, Any]:
+    """Five made-up torque-controlled tightenings of the M12 example to 70 N·m: its trace
+    with the torques scaled by 0.96…1.04 (a lot's friction scatter) and cut at the target,
+    one after another. Not a measurement."""
+    one = _example_trace()
+    angles: list[float] = []
+    torques: list[float] = []
+    lengths: list[float] = []
+    for scale in (0.96, 0.98, 1.0, 1.02, 1.04):
+        kept = [round(t * scale, 2) for t in one["torque"] if t * scale <= 70.0]
+        angles += one["angle"][: len(kept)]
+        torques += kept
+        lengths.append(float(len(kept)))
+    return {"angle": tuple(angles), "torque": tuple(torques), "trace_lengths": tuple(lengths)}
+
+
+BATCH = ModelSpec(
+    answer=(
+        Answer("friction_mean", "μ_ges,mean"),
+        Answer("preload_mean", "F_V,mean"),
+        Answer("preload_lowest", "F_V,low", check="all_in_window"),
+        Answer("outlier_count", "outliers", check="no_outliers"),
+        Answer("critical_capability_index", "C_pk,F", check="capability"),
+    ),
+    name="trace.batch",
+    title="Many tightening traces of one joint: friction and preload spread, outliers, C_p",
+    family="trace",
+    summary=(
+        "Many torque–angle traces of one joint, each read as trace.analysis reads it: the "
+        "distribution of the total friction and of the preload they imply, the traces whose "
+        "friction lies apart from the others', and the capability C_p, C_pk of the preload "
+        "against the joint's window F_M,min…F_M,zul."
+    ),
+    source=SOURCE + "; modified z-score (Iglewicz and Hoaglin); C_p, C_pk as "
+    "[ECSS-E-HB-32-23A] prints them",
+    inputs=BATCH_INPUTS,
+    outputs=BATCH_OUTPUTS,
+    rungs=(
+        Rung(
+            "detection",
+            "Each trace through trace.analysis's detection, then the batch's statistics",
+            fixed_error(0.0),
+            estimate_kind="typical",
+            typical_exceeded=ANALYSIS_RUNG.typical_exceeded,
+            typical_error=ANALYSIS_RUNG.typical_error,
+            typical_time="about 4 ms a trace of 200 samples, the joint solved once (22 ms for "
+            "the five-trace example)",
+        ),
+    ),
+    compute=_batch,
+    assumptions=ANALYSIS.assumptions,
+    examples=(
+        {**M12_JOINT, **_example_batch()},
+        {**M12_JOINT, **_example_batch(), "tool_stiffness": 20000.0, "yield_allowed": True},
     ),
 )

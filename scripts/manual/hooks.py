@@ -68,6 +68,7 @@ VALIDATION: dict[str, tuple[str, ...]] = {
     "preload.ultrasonic": ("test_ultrasonic_acoustoelastic.py",),
     "trace.analysis": ("test_trace_synthetic.py",),
     "trace.program": ("test_trace_synthetic.py",),
+    "trace.batch": ("test_trace_synthetic.py",),
     # the R7/R13 functions and the Cm formula it carries a tool through
     "joint.clamp_capability": ("test_clamp_monte_carlo.py", "test_preload_vdi2230.py"),
 }

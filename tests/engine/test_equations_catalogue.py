@@ -138,6 +138,16 @@ KNOWN_STEPS = {
         "torque_per_preload_from_rate",
         "preload_from_torque",
     ),
+    # each trace as trace.analysis reads it, then the batch's spread, outliers and C_p, C_pk
+    "trace.batch": (
+        "split_steps",
+        "robust_line",
+        "torque_per_preload_from_rate",
+        "preload_from_torque",
+        "batch_summary",
+        "capability_index",
+        "critical_capability_index",
+    ),
     "trace.program": (
         "tightening_torque_per_preload",
         "elastic_torque_rate",
