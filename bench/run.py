@@ -323,7 +323,11 @@ def measure_outputs(spec: ModelSpec, seconds: float) -> list[dict[str, Any]]:
 
 
 #: Bench files with a ``measure()`` that are not named ``extra_*.py``.
-MORE_EXTRAS: tuple[Path, ...] = (HERE / "trace_batch.py", HERE / "study_summary.py")
+MORE_EXTRAS: tuple[Path, ...] = (
+    HERE / "trace_batch.py",
+    HERE / "study_summary.py",
+    HERE / "capability_tails.py",  # two 10⁸-point references, a few minutes
+)
 
 
 def run_extras(paths: Sequence[Path]) -> tuple[list[dict[str, Any]], list[str]]:
