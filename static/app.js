@@ -381,6 +381,7 @@ function showModel(m, params = new URLSearchParams()) {
   el("div", { class: "actions files" },
     el("button", { type: "button", id: "show-report", onclick: () => showView("report") }, "Calculation report"),
     el("button", { type: "button", id: "save-design", onclick: () => saveDesign(m) }, "Save design"),
+    el("button", { type: "button", id: "study-design", onclick: () => studyDesign(m) }, "Study this design"),
     openOne, el("label", { class: "button", for: "open-design" }, "Open design…"),
     openMany, el("label", { class: "button", for: "compare-designs" }, "Compare designs…")));
   form.addEventListener("submit", (e) => { e.preventDefault(); compute(); });
@@ -951,6 +952,16 @@ function formInputs(m) {
     }
   }
   return out;
+}
+
+/**
+ * "Study this design": the study page opens with the form's design as its base, every
+ * number with its unit as the link holds it (formInputs), carried in sessionStorage; the
+ * study page checks that base with one run before any point of a study runs.
+ */
+function studyDesign(m) {
+  sessionStorage.setItem("study-base", JSON.stringify({ model: m.name, base: formInputs(m) }));
+  location.assign(`study.html?model=${encodeURIComponent(m.name)}&from=form`);
 }
 
 /** The inputs in SI (numbers typed with a unit left as typed) with the fidelity: what a result answers. */
