@@ -1377,6 +1377,7 @@ function makeChart(container, kind, { title, xLabel, yLabel, yLabel2 = null, x, 
       stroke: s.color || colors[i % colors.length],
       width: 2,
       ...(s.dash ? { dash: s.dash } : {}),
+      ...(s.noPoints ? { points: { show: false } } : {}),
       ...(bars ? { fill: "rgba(31,95,153,0.35)", paths: uPlot.paths.stepped({ align: 1 }), points: { show: false } } : {}),
     }))],
     legend: { show: true },
@@ -1418,7 +1419,9 @@ function makeChart(container, kind, { title, xLabel, yLabel, yLabel2 = null, x, 
           ctx.save();
           ctx.strokeStyle = sg.color || "#555";
           ctx.lineWidth = (sg.width || 2) * devicePixelRatio;
-          if (sg.dash) ctx.setLineDash(sg.dash.map((d) => d * devicePixelRatio));
+          ctx.setLineDash((sg.dash || []).map((d) => d * devicePixelRatio));
+          ctx.textAlign = "left";
+          ctx.textBaseline = "alphabetic";
           ctx.beginPath(); ctx.moveTo(px, y0); ctx.lineTo(px, y1); ctx.stroke();
           ctx.setLineDash([]);
           for (const yy of [y0, y1]) { ctx.beginPath(); ctx.moveTo(px - 5 * devicePixelRatio, yy); ctx.lineTo(px + 5 * devicePixelRatio, yy); ctx.stroke(); }
@@ -1426,7 +1429,8 @@ function makeChart(container, kind, { title, xLabel, yLabel, yLabel2 = null, x, 
           ctx.font = `bold ${13 * devicePixelRatio}px system-ui`;
           const w = ctx.measureText(sg.label).width;
           const left = sg.side === "left";
-          ctx.fillText(sg.label, left ? px - 6 * devicePixelRatio - w : px + 6 * devicePixelRatio, (y0 + y1) / 2 + 4 * devicePixelRatio);
+          const ty = sg.side === "top" ? Math.min(y0, y1) - 6 * devicePixelRatio : (y0 + y1) / 2 + 4 * devicePixelRatio;
+          ctx.fillText(sg.label, left ? px - 6 * devicePixelRatio - w : sg.side === "top" ? px - w / 2 : px + 6 * devicePixelRatio, ty);
           ctx.restore();
         }
       }],
@@ -1481,22 +1485,29 @@ function jointDiagram(m, data, box, kind) {
   const du = outputUnit(byName.diagram_deformation, d[n - 1]);
   const F = (v) => (v === null || v === undefined ? null : v / fu.factor);
   const boltY = xs.map((x) => (x <= xm ? F(x / slope) : null));
-  const plateY = xs.map((x) => (x >= xm ? F(x === xm ? fm : Math.max(0, at(plate, x))) : null));
+  // a clamped-part line from its start (x0, f0) down to zero force, not along the axis beyond
+  const falling = (ys, x0, f0) => {
+    let ended = false;
+    return xs.map((x) => {
+      if (x < x0 || ended) return null;
+      const v = x === x0 ? f0 : at(ys, x);
+      if (v <= 0) { ended = true; return 0; }
+      return F(v);
+    });
+  };
+  const line = { unit: fu.label, color: "#2e8b57", noPoints: true };
   const ys = [
-    { label: "bolt", data: boltY, unit: fu.label, color: "#1f5f99" },
-    { label: "clamped parts", data: plateY, unit: fu.label, color: "#2e8b57" },
+    { label: "bolt", data: boltY, unit: fu.label, color: "#1f5f99", noPoints: true },
+    { label: "clamped parts", data: falling(plate, xm, fm), ...line },
   ];
-  if (embedded && fv < fm) {
-    const embY = xs.map((x) => (x >= xv ? F(x === xv ? fv : Math.max(0, at(embedded, x))) : null));
-    ys.push({ label: "clamped parts after embedding", data: embY, unit: fu.label, color: "#2e8b57", dash: [6, 4] });
-  }
+  if (embedded && fv < fm) ys.push({ label: "clamped parts after embedding", data: falling(embedded, xv, fv), ...line, dash: [6, 4] });
   const segments = [
-    { key: "F_A", at: xw / du.factor, from: F(fkr), to: F(fs), label: "F_A", color: "#c0392b", width: 3 },
-    { key: "F_KR", at: xw / du.factor, from: 0, to: F(fkr), label: "F_KR", color: "#8e44ad" },
+    { key: "F_A", at: xw / du.factor, from: F(fkr), to: F(fs), label: "F_A", color: "#c0392b", width: 3, side: "left" },
+    { key: "F_KR", at: xw / du.factor, from: 0, to: F(fkr), label: "F_KR", color: "#8e44ad", side: "left" },
   ];
-  if (fv < fm) segments.push({ key: "F_Z", at: xm / du.factor, from: F(fv), to: F(fm), label: "F_Z", color: "#b8860b", side: "left" });
+  if (fv < fm) segments.push({ key: "F_Z", at: xm / du.factor, from: F(fv), to: F(fm), label: "F_Z", color: "#b8860b" });
   if (xo !== undefined && S.diagram_opening_force) {
-    segments.push({ key: "opening", at: xo / du.factor, from: 0, to: F(S.diagram_opening_force[1]), label: "separation", color: "#888", dash: [4, 4], width: 1 });
+    segments.push({ key: "opening", at: xo / du.factor, from: 0, to: F(S.diagram_opening_force[1]), label: "separation", color: "#888", dash: [4, 4], width: 1, side: "top" });
   }
   const top = Math.max(fm, fs, ...(S.diagram_opening_force ?? [0]));
   makeChart(box, kind, {
