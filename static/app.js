@@ -7,6 +7,7 @@
 // about a model comes from the catalogue entry, so a newly registered model
 // appears here without any change to this file.
 
+import { choiceName } from "./choices.js";
 import { decimalSeparator, echoNumber, isPlain, localNumber, parseNum, readNumber, readQuantity, readSamples, setDecimalSeparator } from "./numbers.js";
 
 const API = "api/v1";
@@ -267,6 +268,12 @@ async function loadCatalogues(service = {}) {
     if (typeof pc.yield_strength === "number") {
       state.choiceNames[pc.name] ??= `${pc.name} (R_p0.2 ${short(pc.yield_strength / 1e6, 4)} MPa)`;
     }
+  }
+  // keys named by neither the spec nor the service's catalogues are shown readably too
+  // ("iso5393_hard" → "ISO 5393 hard joint"); the hint still lists their keys
+  state.namedChoices = new Set(Object.keys(state.choiceNames));
+  for (const m of state.models) {
+    for (const p of m.inputs) if (p.kind === "choice") for (const c of p.choices) state.choiceNames[c] ??= choiceName(p, c);
   }
 }
 
@@ -543,7 +550,7 @@ function hintText(p) {
   if (p.kind === "text") return (p.required ? "" : "optional · ") + (p.choices?.length ? `e.g. ${p.choices.slice(0, 3).join(", ")}` : "text");
   if (p.kind === "choice" || p.kind === "bool") {
     if (p.default !== null && p.default !== undefined) parts.push(`default ${state.choiceNames[p.default] ?? p.default}`);
-    if (p.kind === "choice" && !p.choices.some((c) => state.choiceNames[c])) parts.push(`one of ${p.choices.join(", ")}`);
+    if (p.kind === "choice" && !p.choices.some((c) => state.namedChoices?.has(c))) parts.push(`one of ${p.choices.join(", ")}`);
     return parts.join(" · ");
   }
   const u = document.getElementById("unit-" + p.name) ? currentUnit(p) : unitChoices(p.unit, p.display_unit)[0];

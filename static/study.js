@@ -3,6 +3,7 @@
 // the summary: histogram with reference lines, grid map with the feasible region, sensitivity bars.
 // Plain ES module, no build step, nothing fetched but this server.
 
+import { choiceName } from "./choices.js";
 import { decimalSeparator, echoNumber, isPlain, localNumber, readQuantity, readSamples, setDecimalSeparator } from "./numbers.js";
 
 const $ = (sel) => document.querySelector(sel);
@@ -130,7 +131,7 @@ function pickModel(name, carried = null) {
     if (p.kind === "choice") {
       control = el("select", { id, "data-name": p.name });
       if (carried && !p.required) control.append(el("option", { value: "", text: "—" }));
-      for (const c of p.choices) control.append(el("option", { value: c, text: c }));
+      for (const c of p.choices) control.append(el("option", { value: c, text: choiceName(p, c) }));
       if (value !== null && value !== undefined) control.value = value;
       else if (carried && !p.required) control.value = "";
     } else if (p.kind === "bool") {
