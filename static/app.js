@@ -7,6 +7,7 @@
 // about a model comes from the catalogue entry, so a newly registered model
 // appears here without any change to this file.
 
+import { choiceName } from "./choices.js";
 import { decimalSeparator, echoNumber, isPlain, localNumber, parseNum, readNumber, readQuantity, readSamples, setDecimalSeparator } from "./numbers.js";
 
 const API = "api/v1";
@@ -268,6 +269,12 @@ async function loadCatalogues(service = {}) {
       state.choiceNames[pc.name] ??= `${pc.name} (R_p0.2 ${short(pc.yield_strength / 1e6, 4)} MPa)`;
     }
   }
+  // keys named by neither the spec nor the service's catalogues are shown readably too
+  // ("iso5393_hard" → "ISO 5393 hard joint"); the hint still lists their keys
+  state.namedChoices = new Set(Object.keys(state.choiceNames));
+  for (const m of state.models) {
+    for (const p of m.inputs) if (p.kind === "choice") for (const c of p.choices) state.choiceNames[c] ??= choiceName(p, c);
+  }
 }
 
 function renderNav() {
@@ -381,6 +388,7 @@ function showModel(m, params = new URLSearchParams()) {
   el("div", { class: "actions files" },
     el("button", { type: "button", id: "show-report", onclick: () => showView("report") }, "Calculation report"),
     el("button", { type: "button", id: "save-design", onclick: () => saveDesign(m) }, "Save design"),
+    el("button", { type: "button", id: "study-design", onclick: () => studyDesign(m) }, "Study this design"),
     openOne, el("label", { class: "button", for: "open-design" }, "Open design…"),
     openMany, el("label", { class: "button", for: "compare-designs" }, "Compare designs…")));
   form.addEventListener("submit", (e) => { e.preventDefault(); compute(); });
@@ -542,7 +550,7 @@ function hintText(p) {
   if (p.kind === "text") return (p.required ? "" : "optional · ") + (p.choices?.length ? `e.g. ${p.choices.slice(0, 3).join(", ")}` : "text");
   if (p.kind === "choice" || p.kind === "bool") {
     if (p.default !== null && p.default !== undefined) parts.push(`default ${state.choiceNames[p.default] ?? p.default}`);
-    if (p.kind === "choice" && !p.choices.some((c) => state.choiceNames[c])) parts.push(`one of ${p.choices.join(", ")}`);
+    if (p.kind === "choice" && !p.choices.some((c) => state.namedChoices?.has(c))) parts.push(`one of ${p.choices.join(", ")}`);
     return parts.join(" · ");
   }
   const u = document.getElementById("unit-" + p.name) ? currentUnit(p) : unitChoices(p.unit, p.display_unit)[0];
@@ -953,6 +961,16 @@ function formInputs(m) {
   return out;
 }
 
+/**
+ * "Study this design": the study page opens with the form's design as its base, every
+ * number with its unit as the link holds it (formInputs), carried in sessionStorage; the
+ * study page checks that base with one run before any point of a study runs.
+ */
+function studyDesign(m) {
+  sessionStorage.setItem("study-base", JSON.stringify({ model: m.name, base: formInputs(m) }));
+  location.assign(`study.html?model=${encodeURIComponent(m.name)}&from=form`);
+}
+
 /** The inputs in SI (numbers typed with a unit left as typed) with the fidelity: what a result answers. */
 function snapshot(m) {
   const snap = {};
@@ -1347,7 +1365,7 @@ function histogramMarks(m, data, xo) {
   return marks;
 }
 
-function makeChart(container, kind, { title, xLabel, yLabel, yLabel2 = null, x, ys, bars = false, bands = [], marks = [], xRange = null, xLog = false }) {
+function makeChart(container, kind, { title, xLabel, yLabel, yLabel2 = null, x, ys, bars = false, bands = [], marks = [], segments = [], xRange = null, yRange = null, xLog = false }) {
   const colors = ["#1f5f99", "#c0392b", "#2e8b57", "#8e44ad", "#b8860b", "#555"];
   const twin = ys.some((s) => s.scale === "y2");
   // the report's plots are drawn at the size they print at (12 cm wide), their text legible on paper
@@ -1357,14 +1375,16 @@ function makeChart(container, kind, { title, xLabel, yLabel, yLabel2 = null, x, 
     title,
     width: paper ? 560 : chartWidth(container),
     height: paper ? 300 : 280,
-    scales: { x: { time: false, ...(xLog ? { distr: 3 } : {}), ...(xRange ? { range: xRange } : {}) }, ...(bars ? { y: { range: (u, lo, hi) => [0, hi * 1.1 || 1] } } : {}) },
+    scales: { x: { time: false, ...(xLog ? { distr: 3 } : {}), ...(xRange ? { range: xRange } : {}) }, ...(bars ? { y: { range: (u, lo, hi) => [0, hi * 1.1 || 1] } } : {}), ...(yRange ? { y: { range: yRange } } : {}) },
     axes: [{ label: xLabel, font: axis.font, labelFont: axis.labelFont }, { ...axis, label: yLabel },
       ...(twin ? [{ ...axis, scale: "y2", side: 1, label: yLabel2, grid: { show: false } }] : [])],
     series: [{ label: xLabel }, ...ys.map((s, i) => ({
       label: s.label,
       scale: s.scale || "y",
-      stroke: colors[i % colors.length],
+      stroke: s.color || colors[i % colors.length],
       width: 2,
+      ...(s.dash ? { dash: s.dash } : {}),
+      ...(s.noPoints ? { points: { show: false } } : {}),
       ...(bars ? { fill: "rgba(31,95,153,0.35)", paths: uPlot.paths.stepped({ align: 1 }), points: { show: false } } : {}),
     }))],
     legend: { show: true },
@@ -1399,6 +1419,27 @@ function makeChart(container, kind, { title, xLabel, yLabel, yLabel2 = null, x, 
           ctx.fillText(mk.label, right ? px - 4 - w : px + 4, u.bbox.top + (14 + 14 * i) * devicePixelRatio);
           ctx.restore();
         });
+        // vertical segments between two values of y (the joint diagram's F_A, F_Z, F_KR), labelled
+        for (const sg of segments) {
+          const px = u.valToPos(sg.at, "x", true);
+          const y0 = u.valToPos(sg.from, "y", true), y1 = u.valToPos(sg.to, "y", true);
+          ctx.save();
+          ctx.strokeStyle = sg.color || "#555";
+          ctx.lineWidth = (sg.width || 2) * devicePixelRatio;
+          ctx.setLineDash((sg.dash || []).map((d) => d * devicePixelRatio));
+          ctx.textAlign = "left";
+          ctx.textBaseline = "alphabetic";
+          ctx.beginPath(); ctx.moveTo(px, y0); ctx.lineTo(px, y1); ctx.stroke();
+          ctx.setLineDash([]);
+          for (const yy of [y0, y1]) { ctx.beginPath(); ctx.moveTo(px - 5 * devicePixelRatio, yy); ctx.lineTo(px + 5 * devicePixelRatio, yy); ctx.stroke(); }
+          ctx.fillStyle = sg.color || "#555";
+          ctx.font = `bold ${13 * devicePixelRatio}px system-ui`;
+          const w = ctx.measureText(sg.label).width;
+          const left = sg.side === "left";
+          const ty = sg.side === "top" ? Math.min(y0, y1) - 6 * devicePixelRatio : (y0 + y1) / 2 + 4 * devicePixelRatio;
+          ctx.fillText(sg.label, left ? px - 6 * devicePixelRatio - w : sg.side === "top" ? px - w / 2 : px + 6 * devicePixelRatio, ty);
+          ctx.restore();
+        }
       }],
     },
   };
@@ -1407,7 +1448,82 @@ function makeChart(container, kind, { title, xLabel, yLabel, yLabel2 = null, x, 
   const chart = new uPlot(opts, [x, ...ys.map((s) => s.data)], box);
   state.charts.push({ kind, chart });
   box.append(dataTable(title, xLabel, x, ys));
+  if (segments.length) box.dataset.segments = JSON.stringify(Object.fromEntries(segments.map((sg) => [sg.key, [sg.at, sg.from, sg.to]])));
   return chart;
+}
+
+/**
+ * The joint diagram as VDI 2230 draws it (Part 1, §3.2), from the joint model's series:
+ * the bolt line rising from the origin to the preload F_M,min, the clamped-part line
+ * falling from that point, and after embedding from F_V; F_A inserted at the working
+ * point (the model's diagram_working_* pair, from F_KR up to F_S), F_Z as the drop from
+ * F_M,min to F_V, F_KR from zero up, the separation point dashed. The points where the
+ * lines meet are read off the series (the bolt line is straight through the origin), no
+ * formula repeated here. Returns the names it drew, or an empty set when the model has
+ * no such series.
+ */
+function jointDiagram(m, data, box, kind) {
+  const S = data.series;
+  const need = ["diagram_deformation", "diagram_bolt_line", "diagram_clamped_line", "diagram_preload_level", "diagram_working_deformation", "diagram_working_force"];
+  if (!need.every((k) => S[k] && S[k].length)) return new Set();
+  const byName = Object.fromEntries(m.outputs.map((o) => [o.name, o]));
+  const drawn = new Set(m.outputs.filter((o) => o.name.startsWith("diagram_")).map((o) => o.name));
+  const d = S.diagram_deformation, bolt = S.diagram_bolt_line, plate = S.diagram_clamped_line;
+  const n = d.length;
+  // deformation per force along the bolt line (δ_S), read at its first step (its top end is clipped)
+  const slope = d[1] / bolt[1];
+  if (!(Number.isFinite(slope) && slope > 0)) return new Set();
+  const fm = S.diagram_preload_level[0];
+  const fv = S.diagram_service_preload_level?.[0] ?? fm;
+  const xm = fm * slope, xv = fv * slope;
+  const [xw] = S.diagram_working_deformation, [fkr, fs] = S.diagram_working_force;
+  const xo = S.diagram_opening_deformation?.[0];
+  const embedded = S.diagram_embedded_clamped_line;
+  // one x axis: the series' grid with the points where the lines meet
+  const xs = [...new Set([...d, xm, xv, xw, ...(xo !== undefined ? [xo] : [])])].sort((a, b) => a - b);
+  const at = (ys, x) => {
+    // the series' value at x, linear between its grid points
+    let i = d.findIndex((v) => v >= x);
+    if (i <= 0) return ys[Math.max(i, 0)];
+    const t = (x - d[i - 1]) / (d[i] - d[i - 1]);
+    return ys[i - 1] + t * (ys[i] - ys[i - 1]);
+  };
+  const fu = outputUnit(byName.diagram_bolt_line, Math.max(fm, fs, ...bolt));
+  const du = outputUnit(byName.diagram_deformation, d[n - 1]);
+  const F = (v) => (v === null || v === undefined ? null : v / fu.factor);
+  const boltY = xs.map((x) => (x <= xm ? F(x / slope) : null));
+  // a clamped-part line from its start (x0, f0) down to zero force, not along the axis beyond
+  const falling = (ys, x0, f0) => {
+    let ended = false;
+    return xs.map((x) => {
+      if (x < x0 || ended) return null;
+      const v = x === x0 ? f0 : at(ys, x);
+      if (v <= 0) { ended = true; return 0; }
+      return F(v);
+    });
+  };
+  const line = { unit: fu.label, color: "#2e8b57", noPoints: true };
+  const ys = [
+    { label: "bolt", data: boltY, unit: fu.label, color: "#1f5f99", noPoints: true },
+    { label: "clamped parts", data: falling(plate, xm, fm), ...line },
+  ];
+  if (embedded && fv < fm) ys.push({ label: "clamped parts after embedding", data: falling(embedded, xv, fv), ...line, dash: [6, 4] });
+  const segments = [
+    { key: "F_A", at: xw / du.factor, from: F(fkr), to: F(fs), label: "F_A", color: "#c0392b", width: 3, side: "left" },
+    { key: "F_KR", at: xw / du.factor, from: 0, to: F(fkr), label: "F_KR", color: "#8e44ad", side: "left" },
+  ];
+  if (fv < fm) segments.push({ key: "F_Z", at: xm / du.factor, from: F(fv), to: F(fm), label: "F_Z", color: "#b8860b" });
+  if (xo !== undefined && S.diagram_opening_force) {
+    segments.push({ key: "opening", at: xo / du.factor, from: 0, to: F(S.diagram_opening_force[1]), label: "separation", color: "#888", dash: [4, 4], width: 1, side: "top" });
+  }
+  const top = Math.max(fm, fs, ...(S.diagram_opening_force ?? [0]));
+  makeChart(box, kind, {
+    title: "Joint diagram (VDI 2230): bolt and clamped parts, F_A at the working point",
+    xLabel: `deformation f${du.label ? " [" + du.label + "]" : ""}`,
+    yLabel: `force F${fu.label ? " [" + fu.label + "]" : ""}`,
+    x: xs.map((x) => x / du.factor), ys, segments, yRange: [0, F(top) * 1.1],
+  });
+  return drawn;
 }
 
 /** The plotted values as a table (the plot's text alternative): at most 200 rows. */
@@ -1437,9 +1553,10 @@ function renderSeries(m, data, box = document.getElementById("series-plots"), ki
   const usedAsX = new Set(m.outputs.filter((o) => o.series && o.x).map((o) => o.x));
   const charts = new Map(); // key -> chart spec, in the order the model lists its outputs
   const unitOf = new Map(); // one unit per output unit, so curves of a chart agree
+  const diagram = jointDiagram(m, data, box, kind); // drawn as VDI draws it, not as plain curves
   for (const o of m.outputs) {
     const ys = data.series[o.name];
-    if (!o.series || !ys || !ys.length) continue;
+    if (!o.series || !ys || !ys.length || diagram.has(o.name)) continue;
     if (!o.x && usedAsX.has(o.name)) continue; // an axis, not a curve
     const ukey = norm(o.unit);
     if (!unitOf.has(ukey)) unitOf.set(ukey, outputUnit(o, maxAbs(m.outputs.filter((q) => q.series && norm(q.unit) === ukey).flatMap((q) => data.series[q.name] || []))));

@@ -95,10 +95,17 @@ export function localNumber(canonical, dec = decimalSeparator()) {
   return dec === "," ? String(canonical).replace(".", ",") : String(canonical);
 }
 
-/** Plain text the user typed (digits, at most one decimal separator): nothing to echo. */
+/**
+ * Plain text the user typed (digits, at most one decimal separator): nothing to echo.
+ * Not plain: a decimal separator followed by exactly three digits ("1,500" under the
+ * comma, "1.500" under the point), which reads as a thousands group in the other
+ * convention; the value read (1.5) is then echoed so a misreading shows at once.
+ */
 export function isPlain(text, dec = decimalSeparator()) {
   const d = dec === "," ? "," : "\\.";
-  return new RegExp(`^[+-]?(\\d+(${d}\\d*)?|${d}\\d+)$`).test(String(text ?? "").trim());
+  const s = String(text ?? "").trim();
+  if (new RegExp(`^[+-]?\\d{1,3}${d}\\d{3}$`).test(s)) return false;
+  return new RegExp(`^[+-]?(\\d+(${d}\\d*)?|${d}\\d+)$`).test(s);
 }
 
 /**

@@ -3,6 +3,7 @@
 // the summary: histogram with reference lines, grid map with the feasible region, sensitivity bars.
 // Plain ES module, no build step, nothing fetched but this server.
 
+import { choiceName } from "./choices.js";
 import { decimalSeparator, echoNumber, isPlain, localNumber, readQuantity, readSamples, setDecimalSeparator } from "./numbers.js";
 
 const $ = (sel) => document.querySelector(sel);
@@ -43,7 +44,33 @@ async function loadCatalogue() {
   const wanted = new URLSearchParams(location.search).get("model");
   if (wanted && catalogue.some((m) => m.name === wanted)) sel.value = wanted;
   sel.addEventListener("change", () => pickModel(sel.value));
-  pickModel(sel.value);
+  const carried = fromForm(sel.value);
+  pickModel(sel.value, carried);
+  if (carried) {
+    $("#study-status").textContent = "Base design carried from the form: checking it…";
+    checkBase();
+  }
+}
+
+/**
+ * The design the form's "Study this design" carried here (sessionStorage, the inputs as
+ * the form's link holds them: numbers with their unit, "12 mm"), or null.
+ */
+function fromForm(name) {
+  if (new URLSearchParams(location.search).get("from") !== "form") return null;
+  try {
+    const carried = JSON.parse(sessionStorage.getItem("study-base") ?? "null");
+    return carried && carried.model === name && carried.base ? carried.base : null;
+  } catch {
+    return null;
+  }
+}
+
+/** A carried value as the study's field shows it: the number with the user's decimal separator, its unit kept. */
+function carriedText(value) {
+  const s = String(value);
+  const m = s.match(/^([+-]?[\d.]+(?:[eE][+-]?\d+)?)(\s.*)?$/);
+  return m ? localNumber(m[1]) + (m[2] ?? "") : s;
 }
 
 function lawCell(p, value) {
@@ -90,32 +117,36 @@ function lawCell(p, value) {
   return cell;
 }
 
-function pickModel(name) {
+function pickModel(name, carried = null) {
   model = catalogue.find((m) => m.name === name);
   $("#study-model-hint").textContent = model.summary;
   const example = (model.examples && model.examples[0]) || {};
   const rows = $("#study-rows");
   rows.replaceChildren();
   for (const p of model.inputs) {
-    const value = example[p.name] ?? p.default;
+    // a design carried from the form is taken as it stands: what it leaves empty stays empty
+    const value = carried ? carried[p.name] : example[p.name] ?? p.default;
     const id = `in-${p.name}`;
     let control;
     if (p.kind === "choice") {
       control = el("select", { id, "data-name": p.name });
-      for (const c of p.choices) control.append(el("option", { value: c, text: c }));
+      if (carried && !p.required) control.append(el("option", { value: "", text: "—" }));
+      for (const c of p.choices) control.append(el("option", { value: c, text: choiceName(p, c) }));
       if (value !== null && value !== undefined) control.value = value;
+      else if (carried && !p.required) control.value = "";
     } else if (p.kind === "bool") {
       control = el("input", { id, type: "checkbox", "data-name": p.name });
-      control.checked = Boolean(value);
+      control.checked = value === "true" || value === true;
     } else if (p.kind === "samples") {
       // a list of measured values in SI, held fixed (a study cannot vary a list)
       control = el("textarea", { id, "data-name": p.name, "data-kind": "samples", rows: 3, placeholder: `values in ${p.unit}, ${p.required ? "required" : "optional"}`, "aria-describedby": `${id}-range` });
       if (Array.isArray(value)) control.value = value.map((v) => localNumber(String(v))).join("\n");
+      else if (typeof value === "string") control.value = value.split(/\s+/).filter((t) => t !== p.unit).map(carriedText).join("\n");
     } else {
       control = el("input", {
         id,
         "data-name": p.name,
-        value: value === null || value === undefined ? "" : typeof value === "number" ? localNumber(String(value)) : String(value),
+        value: value === null || value === undefined ? "" : typeof value === "number" ? localNumber(String(value)) : carried ? carriedText(value) : String(value),
         placeholder: p.required ? "required" : "optional",
         "aria-describedby": `${id}-range`,
       });
@@ -182,6 +213,56 @@ function echo(tr) {
   tr.read.classList.toggle("error", bad);
 }
 
+/** Every input as set in its field, varied or not: the base design the single check computes. */
+function design(errors = []) {
+  const base = {};
+  for (const tr of $("#study-rows").children) {
+    const name = tr.dataset.name;
+    if (tr.control.type === "checkbox") base[name] = tr.control.checked;
+    else if (tr.control.dataset.kind === "samples" && tr.control.value.trim() !== "") {
+      const r = readSamples(tr.control.value);
+      if (r.ok) base[name] = r.values;
+      else errors.push(`${label(model.inputs.find((p) => p.name === name))}: ${r.error}`);
+    } else if (tr.control.value.trim() !== "") {
+      base[name] = tr.control.tagName === "SELECT" ? tr.control.value : number(tr.control.value, label(model.inputs.find((p) => p.name === name)), errors);
+    }
+  }
+  return base;
+}
+
+/**
+ * One run of the model on the base design (POST the model's endpoint once), before any
+ * point of a study runs: a design the model refuses is said at once, naming the field,
+ * not after thousands of points. Returns true when the model computes it.
+ */
+async function checkBase() {
+  const errors = [];
+  const base = design(errors);
+  if (errors.length) { showError(errors.join("; ")); return false; }
+  const r = await fetch(`${API}${model.path}`, {
+    method: "POST",
+    headers: { "content-type": "application/json" },
+    body: JSON.stringify(base),
+  });
+  let reply = {};
+  try { reply = await r.json(); } catch { /* no body */ }
+  if (!r.ok) {
+    $("#study-status").textContent = "";
+    showError(`The base design is refused by the model: ${detailText(reply.detail ?? r.statusText)}`);
+    document.body.dataset.baseCheck = "refused";
+    return false;
+  }
+  $("#study-status").textContent = "Base design checked: the model computes it.";
+  document.body.dataset.baseCheck = "ok";
+  return true;
+}
+
+function detailText(detail) {
+  const items = Array.isArray(detail) ? detail : [{ msg: String(detail) }];
+  const field = (d) => d.field ?? (Array.isArray(d.loc) && d.loc.length > 1 ? d.loc[d.loc.length - 1] : "");
+  return items.map((d) => (field(d) ? `${field(d)}: ${d.msg}` : d.msg)).join("; ");
+}
+
 function body(errors = []) {
   const base = {};
   const variables = [];
@@ -219,8 +300,7 @@ function body(errors = []) {
 }
 
 function showError(detail) {
-  const items = Array.isArray(detail) ? detail : [{ msg: String(detail) }];
-  $("#study-error").textContent = items.map((d) => (d.field ? `${d.field}: ${d.msg}` : d.msg)).join("; ");
+  $("#study-error").textContent = detailText(detail);
 }
 
 async function run(event) {
@@ -231,6 +311,11 @@ async function run(event) {
   if (errors.length) return showError(errors.join("; "));
   if (!b.variables.length) return showError("tick at least one input to vary");
   $("#study-run").disabled = true;
+  delete document.body.dataset.baseCheck;
+  if (!(await checkBase())) {
+    $("#study-run").disabled = false;
+    return;
+  }
   const r = await fetch(`${API}${model.path}/study`, {
     method: "POST",
     headers: { "content-type": "application/json" },

@@ -15,7 +15,15 @@ from service import create_app
 from tests.toys import TOY
 
 STATIC = Path(__file__).parents[2] / "static"
-PAGE_FILES = ["index.html", "app.js", "trace_import.js", "numbers.js", "style.css", "units.json"]
+PAGE_FILES = [
+    "index.html",
+    "app.js",
+    "trace_import.js",
+    "numbers.js",
+    "choices.js",
+    "style.css",
+    "units.json",
+]
 VENDOR = ["vendor/uplot/uPlot.iife.min.js", "vendor/uplot/uPlot.min.css", "vendor/uplot/LICENSE"]
 KATEX = ["vendor/katex/katex.min.js", "vendor/katex/katex.min.css", "vendor/katex/LICENSE"]
 
