@@ -873,10 +873,11 @@ def _pdf_tools() -> None:
 
 
 @pytest.mark.parametrize("name", [s.name for s in (*REAL, STRIKER)])
-def test_report_prints_every_equation_on_one_to_five_a4_pages(page, base_url, tmp_path, name):
+def test_report_prints_every_equation_on_one_to_eight_a4_pages(page, base_url, tmp_path, name):
     """/report?… opens the report with every equation of the model; printed to PDF it is A4,
-    one to five pages (the joint's equations take a page of their own, its plots 12 cm wide
-    another), numbered "page n of N" under a running header, with symbols and the
+    one to eight pages (the joint's VDI 2230 chain with its eccentric, torsion and fitted-bolt
+    relations takes about three pages of equations, its plots 12 cm wide and the VDI diagram
+    another; seven in all), numbered "page n of N" under a running header, with symbols and the
     standard's step per result, the author, checker and revision, the product's version,
     and a sign-off."""
     import subprocess
@@ -906,7 +907,7 @@ def test_report_prints_every_equation_on_one_to_five_a4_pages(page, base_url, tm
     info = subprocess.run(["pdfinfo", str(pdf)], capture_output=True, text=True, check=True)
     pages = int(re.search(r"Pages:\s+(\d+)", info.stdout)[1])
     size = re.search(r"Page size:\s+([\d.]+) x ([\d.]+)", info.stdout)
-    assert 1 <= pages <= 5, f"{name}: the report prints on {pages} pages"
+    assert 1 <= pages <= 8, f"{name}: the report prints on {pages} pages"
     assert abs(float(size[1]) - 595) < 2 and abs(float(size[2]) - 842) < 2, info.stdout
     subprocess.run(["pdftoppm", "-r", "60", "-png", str(pdf), str(tmp_path / "page")], check=True)
     pngs = sorted(tmp_path.glob("page*.png"))
