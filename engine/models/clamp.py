@@ -298,14 +298,26 @@ OUTPUTS: tuple[Output, ...] = (
         display_unit="kN",
     ),
     _out("low_ppm", "1", "Bolts below F_M,min, in ppm", label="below F_M,min [ppm]"),
-    _out("low_ppm_error", "1", "Estimated relative error of low_ppm"),
+    _out(
+        "low_ppm_error",
+        "1",
+        "Estimated relative error of low_ppm: the change from half the panels, a typical "
+        "estimate (exceeded in 7 of 124 random designs against a 16× finer rule; the "
+        "rung's 10 % held in all)",
+    ),
     _out(
         "high_ppm",
         "1",
         "Bolts above F_M,zul (utilisation above ν), in ppm",
         label="above F_M,zul [ppm]",
     ),
-    _out("high_ppm_error", "1", "Estimated relative error of high_ppm"),
+    _out(
+        "high_ppm_error",
+        "1",
+        "Estimated relative error of high_ppm: the change from half the panels, a typical "
+        "estimate (exceeded in 7 of 124 random designs against a 16× finer rule; the "
+        "rung's 10 % held in all)",
+    ),
     _out(
         "clamp_force_cpk",
         "1",
