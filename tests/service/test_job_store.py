@@ -184,8 +184,9 @@ def test_every_lookup_is_answered_with_two_workers_and_after_a_restart(
                 r = fresh.post(URL, json=STUDY)
                 assert r.status_code == 202, r.text
                 jobs.append(r.json()["job"])
-        for job_id in jobs:
-            _settled(c, job_id)
+            # one at a time: on a loaded machine four running at once meet the per-client
+            # limit, which is not what this test is about
+            _settled(c, jobs[-1])
         for _ in range(10):
             for job_id in jobs:
                 with httpx.Client(base_url=url, timeout=10) as fresh:
