@@ -32,6 +32,10 @@ Agreement, each joint:
   engaged thread; with its l_ers our bending term gives its σ_SAb to 1e-12 (A: ours
   14.29 MPa, S_D = 8.21; its 12.00 MPa, S_D = 9.78);
 * F_Aab and the opening check: it computes neither.
+
+With s_sym = a = 0 on joint A (u and the interface kept) our answers are the concentric
+chain's to 1e-12, and they meet the figures it prints in its concentric mode to its digits,
+F_Z, F_M,min, σ_a and S_D included; only its 1.155 in F_M,zul, F_S,max and S_F remains.
 """
 
 import math
@@ -136,6 +140,22 @@ def _numbers(case: dict[str, float]) -> dict[str, float]:
 
 
 GOT = {name: _numbers(case) for name, case in CASES.items()}
+
+# joint A with s_sym = a = 0 (u and the interface kept), and its figures in its concentric mode
+ZERO = {**CASES["A"], "bolt_offset": 0.0, "load_lever": 0.0}
+THEIRS_CONCENTRIC = {
+    "delta_S": 3.32758216900128e-06,
+    "delta_P": 6.1543337320732244e-07,
+    "Phi": 0.0780409519845057,
+    "F_Z": 2789.7429980300221,
+    "F_Mmin": 8321.4972861229871,
+    "F_Mmax": 15454.209245656977,
+    "F_Mzul": 43109.532244923088,
+    "F_Smax": 43577.777956830119,
+    "S_F": 1.1712654273257788,
+    "sigma_a": 2.3153007557648744,
+    "S_D": 21.1095685423615,
+}
 
 
 def _ours_mm(name: str) -> dict[str, float]:
@@ -287,3 +307,34 @@ def test_both_joints_stay_closed_where_the_eccentric_relations_hold() -> None:
             f_v / (1.0 - g["load_factor"] + k),
             rel=1e-12,
         )
+
+
+def test_zero_offsets_meet_the_concentric_chain_and_its_concentric_figures() -> None:
+    """s_sym = a = 0, all else kept: our concentric answers (1e-12), and its figures but F_M,zul."""
+    zero = run(JOINT, ZERO).results
+    eccentric_only = ("bolt_offset", "load_lever", "opening_edge", "interface_length")
+    plain = {k: v for k, v in ZERO.items() if k not in (*eccentric_only, "interface_width")}
+    concentric = run(JOINT, plain).results
+    shared = set(zero) & set(concentric)
+    assert len(shared) >= 45
+    for key in shared:
+        if concentric[key] is None or isinstance(concentric[key], str):
+            assert zero[key] == concentric[key], key
+        else:
+            assert zero[key] == pytest.approx(concentric[key], rel=1e-12, abs=1e-300), key
+    # its concentric mode: F_Z, the window, σ_a and S_D agree to the digits (no δ*_P, no
+    # bending here); F_M,zul, F_S,max and S_F keep only its 1.155
+    z, t = _numbers(ZERO), THEIRS_CONCENTRIC
+    pin(MODEL, "bolt_compliance", z["bolt_compliance"], t["delta_S"] * 1e-3, rel=1e-12)
+    pin(MODEL, "clamped_compliance", z["clamped_compliance"], t["delta_P"] * 1e-3, rel=1e-12)
+    pin(MODEL, "load_factor", z["load_factor"], t["Phi"], rel=1e-12)
+    pin(MODEL, "embedding_loss", z["embedding_loss"], t["F_Z"], rel=1e-12)
+    pin(MODEL, "required_clamp_force", z["required_clamp_force"], 0.0, abs=1e-9)
+    pin(MODEL, "required_preload_min", z["required_preload_min"], t["F_Mmin"], rel=1e-12)
+    pin(MODEL, "required_preload_max", z["required_preload_max"], t["F_Mmax"], rel=1e-12)
+    pin(MODEL, "stress_amplitude", z["stress_amplitude"], t["sigma_a"] * 1e6, rel=1e-12)
+    pin(MODEL, "fatigue_safety", z["fatigue_safety"], t["S_D"], rel=1e-12)
+    assert _permissible_preload(1.155) == pytest.approx(t["F_Mzul"], rel=1e-12)
+    gap = _permissible_preload(1.0 / math.cos(math.pi / 6)) - t["F_Mzul"]
+    pin(MODEL, "max_bolt_force", z["max_bolt_force"], t["F_Smax"] + gap, rel=1e-12)
+    pin(MODEL, "yield_safety", z["yield_safety"], t["S_F"], rel=5e-5)
