@@ -124,6 +124,22 @@ def _plate_inputs(i: int) -> tuple[Param, ...]:
             maximum=1e-3,
             group="plates",
         ),
+        *(
+            ()
+            if first
+            else (
+                _length(
+                    f"plate{i}_outer_diameter",
+                    f"Outer diameter D_A,{i} of plate {i} (VDI 2230-1 R3: its part of the cone "
+                    "is capped there, a sleeve below d_W); outer_diameter (plate 1's) when "
+                    "absent",
+                    minimum=0.0,
+                    exclusive_minimum=True,
+                    symbol=f"D_A,{i}",
+                    group="plates",
+                ),
+            )
+        ),
     )
 
 
@@ -813,12 +829,16 @@ def _solve(
     # R0/R3 geometry (a plate of thickness 0 adds exactly 0) -----------------------------------
     e1, a1 = col("plate1_youngs_modulus"), col("plate1_expansion")
     thick, moduli, alphas = [], [], []
+    outers: list[Any] = []  # D_A,i of plates 2 and 3 where given (None: plate 1's D_A)
+    numbers: list[int] = []
     for i in range(1, MAX_PLATES + 1):
         if x.get(f"plate{i}_thickness") is None:
             continue
         thick.append(_larger(col(f"plate{i}_thickness"), 0.0))
         moduli.append(col_or(f"plate{i}_youngs_modulus", e1))
         alphas.append(col_or(f"plate{i}_expansion", a1))
+        outers.append(col_or(f"plate{i}_outer_diameter", None) if i > 1 else None)
+        numbers.append(i)
     plates = sum(h > 0.0 for h in thick)
     grip = sum(thick)
     outer = None if x.get("outer_diameter") is None else col("outer_diameter")
@@ -832,6 +852,19 @@ def _solve(
                 f"{d_w * 1e3:g} mm is VDI's sleeve)"
             ),
         )
+    for i, own in zip(numbers, outers, strict=True):
+        if own is not None:
+            refusals.add(
+                own <= d_h,
+                f"plate{i}_outer_diameter",
+                partial(
+                    "plate{0}_outer_diameter D_A,{0} = {1:g} mm leaves no wall around the hole "
+                    "d_h = {2:g} mm: must be > {2:g} mm".format,
+                    i,
+                    own * 1e3,
+                    d_h * 1e3,
+                ),
+            )
     l_shank, l_reduced = col("shank_length"), col("reduced_length")
     refusals.add(
         l_shank + l_reduced > grip * (1.0 + 1e-12),
@@ -872,7 +905,10 @@ def _solve(
         joint_type,
         col_or("nut_youngs_modulus", _tapped_modulus(x)),
     )
-    parts = jt.clamped_compliance(thick, moduli, d_w, d_h, outer, joint_type)
+    own_outers = outers if any(o is not None for o in outers) else None
+    parts = jt.clamped_compliance(
+        thick, moduli, d_w, d_h, outer, joint_type, plate_outer_diameters=own_outers
+    )
     delta_s, delta_p = bolt_c.total, parts.total
     hot = _at_temperature(x, col, b, moduli, refusals)
     yield_t = yield_strength if hot is None else yield_strength * hot.yield_ratio  # R7, R8
@@ -1292,6 +1328,17 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if s["cone_tangent"] <= jt.MIN_CONE_TANGENT:
         warnings.append(
             f"plates very thin against d_W: the cone tangent is held at {jt.MIN_CONE_TANGENT}"
+        )
+    own = [i for i in range(2, MAX_PLATES + 1) if x.get(f"plate{i}_outer_diameter") is not None]
+    if own:
+        notes.append(
+            "D_A per plate: plate "
+            + ", ".join(
+                f"{i} D_A,{i} = {float(x[f'plate{i}_outer_diameter']) * 1e3:.4g} mm" for i in own
+            )
+            + "; each plate's part of the cone is capped at its own D_A (a sleeve below d_W), "
+            f"tan φ = {s['cone_tangent']:.4g} from plate 1's D_A = "
+            f"{s['outer_diameter_used'] * 1e3:.4g} mm (VDI 2230-1 R3)"
         )
     if x.get("service_temperature") is not None:
         hot_notes, hot_warnings = _temperature_notes(x, s, bolt)
