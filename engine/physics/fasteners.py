@@ -1634,8 +1634,28 @@ MATERIAL_TEMPERATURE_CLASS: dict[str, str] = {
 
 
 def temperature_range(temperatures_c: tuple[float, ...]) -> tuple[float, float]:
-    """The absolute temperatures [K] a table over ``temperatures_c`` [°C] covers.
+    r"""The absolute temperatures a table over ``temperatures_c`` covers.
 
+    .. math::
+        T_{min} = T_0 + 273.15\,K, \qquad T_{max} = T_{n} + 273.15\,K
+
+    Parameters
+    ----------
+    temperatures_c : tuple of float
+        The table's columns T_0 … T_n, ascending, [°C]
+
+    Returns
+    -------
+    tuple of float
+        (T_min, T_max), [K]
+
+    Notes
+    -----
+    The range a service temperature is refused outside (the tables' own columns, no
+    extrapolation).
+
+    Examples
+    --------
     >>> temperature_range(PROOF_STRENGTH_TEMPERATURES_C)
     (293.15, 573.15)
     """
