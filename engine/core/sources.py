@@ -909,6 +909,52 @@ SOURCES: dict[str, Source] = {
             "on the tool's torque capability, not on the clamp force or alpha_A; the check is "
             "opt-in (category 'none' by default).",
         ),
+        Source(
+            id="NFG-898T",
+            kind="web page",
+            title="Wytrzymałość i temperatura (strength and temperature of bolts)",
+            authors="NFG AB (fastener distributor), technical pages",
+            year="read 2026",
+            published="https://www.nfgab.pl/technologia-i-jakosc/informacje-techniczne/"
+            "wytrzymalosci/temperatura",
+            covers="ISO 898-1 Annex A (informative) as reprinted: lower yield strength R_eL or "
+            "0.2 % proof strength R_p0.2 [N/mm²] at 20/100/200/250/300 °C, 5.6: 300 270 230 "
+            "215 195; 8.8: 640 590 540 510 480; 10.9: 940 875 790 745 705; 12.9: 1100 1020 "
+            "925 875 825, given as guidance, not requirements "
+            "(engine.physics.fasteners.yield_strength_ratio; joint.vdi2230 service_temperature).",
+            reconstruction="ISO 898-1 itself was not read; the values are the distributor's "
+            "reprint, the only public one found.",
+            original_title="Wytrzymałość i temperatura (Polish)",
+        ),
+        Source(
+            id="RICHTER-E",
+            kind="web page",
+            title="E-Modul & Temperatur (forming handbook, section 1.1.1)",
+            authors="4ming (forming handbook), after F. Richter, Die physikalischen Eigenschaften "
+            "der Stähle, TU Graz",
+            year="read 2026",
+            published="https://4ming.de/de/forming-handbuch/e-modul-und-temperatur",
+            covers="Young's modulus [GPa] at 20/200/400/600 °C: low-alloy steels 212 199 184 "
+            "164; austenitic steels 196 186 179 157; aluminium alloys 70 63 (to 200 °C); "
+            "GGG-38 170 168 135 (to 400 °C) (engine.physics.fasteners.youngs_modulus_ratio).",
+            reconstruction="Richter's report itself was not read. VDI 2230-1 prints its own "
+            "E(T) table, paywalled; tests/validation/test_joint_temperature.py compares these "
+            "ratios with [ASME-B31.1-E].",
+            original_title="E-Modul & Temperatur (German)",
+        ),
+        Source(
+            id="ASME-B31.1-E",
+            kind="web page",
+            title="Metals and Alloys - Young's Modulus of Elasticity (after ASME B31.1-1995)",
+            authors="The Engineering ToolBox",
+            year="read 2026",
+            published="https://www.engineeringtoolbox.com/young-modulus-d_773.html",
+            covers="E [10^6 psi] at -325…1200 °F after ASME B31.1-1995: grey cast iron 13.4 "
+            "13.2 12.9 12.6 12.2 11.7 at 70…600 °F (engine.physics.fasteners."
+            "youngs_modulus_ratio), and the carbon-steel and austenitic rows the validation "
+            "compares with [RICHTER-E].",
+            reconstruction="ASME B31.1 itself was not read.",
+        ),
     )
 }
 
@@ -974,6 +1020,9 @@ _PATTERNS: tuple[tuple[re.Pattern[str], str | None], ...] = (
     (re.compile(r"\bOPC 40450\b"), "OPC40450"),
     (re.compile(r"\bOpen Protocol\b"), "OpenProtocol"),
     (re.compile(r"\bpyscrew\b"), "pyscrew"),
+    (re.compile(r"\[NFG-898T\]"), "NFG-898T"),
+    (re.compile(r"\[RICHTER-E\]"), "RICHTER-E"),
+    (re.compile(r"\[ASME-B31\.1-E\]"), "ASME-B31.1-E"),
 )
 
 

@@ -124,6 +124,22 @@ def _plate_inputs(i: int) -> tuple[Param, ...]:
             maximum=1e-3,
             group="plates",
         ),
+        *(
+            ()
+            if first
+            else (
+                _length(
+                    f"plate{i}_outer_diameter",
+                    f"Outer diameter D_A,{i} of plate {i} (VDI 2230-1 R3: its part of the cone "
+                    "is capped there, a sleeve below d_W); outer_diameter (plate 1's) when "
+                    "absent",
+                    minimum=0.0,
+                    exclusive_minimum=True,
+                    symbol=f"D_A,{i}",
+                    group="plates",
+                ),
+            )
+        ),
     )
 
 
@@ -418,6 +434,18 @@ JOINT_INPUTS: tuple[Param, ...] = (
         group="losses",
     ),
     Param(
+        "service_temperature",
+        "K",
+        "Absolute temperature of bolt and plates in service (e.g. '150 degC'); absent: room "
+        "temperature. At it R_p0.2 of the bolt's class (ISO 898-1 Annex A: 5.6, 8.8, 10.9, "
+        "12.9) sets R7 and R8, and E of bolt and plates (tables by material) set the thermal "
+        "preload loss in place of bolt_modulus_ratio and plate_modulus_ratio",
+        minimum=fa.temperature_range(fa.PROOF_STRENGTH_TEMPERATURES_C)[0],
+        maximum=fa.temperature_range(fa.PROOF_STRENGTH_TEMPERATURES_C)[1],
+        symbol="T",
+        group="losses",
+    ),
+    Param(
         "thread_friction_min",
         "1",
         "Smallest thread friction μ_G,min (sets F_M,zul and the highest preload)",
@@ -693,6 +721,90 @@ def _overflows_squared(value: Any) -> Any:
     return False  # a float that overflows has raised OverflowError already
 
 
+#: Plates at least this stiff are read as steel for E(T) when clamped_material is absent.
+_STEEL_MODULUS_FLOOR = 1.9e11
+
+
+def _strength_class(x: Mapping[str, Any], bolt: Bolt | None) -> str | None:
+    """The bolt's ISO 898-1 class (or grade) whose R_p0.2(T) applies; None where a typed
+    yield strength names no class."""
+    fastener = None if bolt is None else bolt.fastener
+    if fastener is not None and fastener.grade is not None:
+        return fastener.grade.name
+    if x.get("yield_strength") is not None:  # it overrides the class, as in R9's scope
+        return None
+    return str(x.get("property_class") or "8.8")
+
+
+def _plate_temperature_class(x: Mapping[str, Any]) -> str | None:
+    """The E(T) class of the plates named by clamped_material (None: not named, or no table)."""
+    name = x.get("clamped_material")
+    return None if name is None else fa.MATERIAL_TEMPERATURE_CLASS.get(str(name))
+
+
+@dataclass(frozen=True)
+class _AtTemperature:
+    """The ratios a service temperature sets (all 1 at room temperature, no input)."""
+
+    yield_ratio: Any
+    bolt_modulus_ratio: Any
+    plate_modulus_ratios: list[Any]
+
+
+def _at_temperature(
+    x: Mapping[str, Any],
+    col: Callable[[str], Any],
+    b: Mapping[str, Any],
+    moduli: list[Any],
+    refusals: _Refusals,
+) -> _AtTemperature | None:
+    """R_p0.2(T)/R_p0.2 and E(T)/E of bolt and each plate at ``service_temperature``.
+
+    The bolt's R_p0.2 from ISO 898-1 Annex A for its class, its E from the steel table; each
+    plate's E from clamped_material's class, or, without it, the steel table for a plate of
+    E ≥ 190 GPa (steel) and its room-temperature E otherwise (said in a note).
+    """
+    if x.get("service_temperature") is None:
+        return None
+    for name in ("bolt_modulus_ratio", "plate_modulus_ratio"):
+        if float(np.max(col(name))) != 1.0 or float(np.min(col(name))) != 1.0:
+            raise InputOutOfRange(
+                f"{name} is set by service_temperature from the E(T) tables: give one of them, "
+                f"leave {name} at 1",
+                field=name,
+            )
+    cls = b.get("_strength_class")
+    if cls is None:
+        raise InputOutOfRange(
+            "service_temperature needs the bolt's property class (R_p0.2 at temperature is "
+            "tabulated per class, and a typed yield_strength overrides property_class): give grade "
+            "(e.g. '10.9') with it",
+            field="service_temperature",
+        )
+    t = col("service_temperature")
+    yield_ratio = fa.yield_strength_ratio(str(cls), t)
+    steel = fa.youngs_modulus_ratio("steel", t)
+    kind = _plate_temperature_class(x)
+    if kind is not None:
+        low, high = fa.temperature_range(fa.YOUNGS_MODULUS_AT_TEMPERATURE_GPA[kind][0])
+        refusals.add(
+            t > high * (1.0 + 1e-12),
+            "service_temperature",
+            lambda: (
+                f"service_temperature = {t:g} K is beyond the E(T) table of {kind} "
+                f"({x['clamped_material']}): must be {low:g}…{high:g} K "
+                f"({low - fa.CELSIUS_ZERO:g}…{high - fa.CELSIUS_ZERO:g} °C)"
+            ),
+        )
+        plate = fa.youngs_modulus_ratio(kind, t)
+        plates = [plate for _ in moduli]
+    elif x.get("clamped_material") is not None:
+        plates = [1.0 for _ in moduli]  # a material without a table: E at room temperature
+    else:
+        plates = [_pick(e >= _STEEL_MODULUS_FLOOR, steel, 1.0) for e in moduli]
+    return _AtTemperature(yield_ratio, steel, plates)
+
+
 def _solve(
     x: Mapping[str, Any],
     col: Callable[[str], Any],
@@ -717,12 +829,16 @@ def _solve(
     # R0/R3 geometry (a plate of thickness 0 adds exactly 0) -----------------------------------
     e1, a1 = col("plate1_youngs_modulus"), col("plate1_expansion")
     thick, moduli, alphas = [], [], []
+    outers: list[Any] = []  # D_A,i of plates 2 and 3 where given (None: plate 1's D_A)
+    numbers: list[int] = []
     for i in range(1, MAX_PLATES + 1):
         if x.get(f"plate{i}_thickness") is None:
             continue
         thick.append(_larger(col(f"plate{i}_thickness"), 0.0))
         moduli.append(col_or(f"plate{i}_youngs_modulus", e1))
         alphas.append(col_or(f"plate{i}_expansion", a1))
+        outers.append(col_or(f"plate{i}_outer_diameter", None) if i > 1 else None)
+        numbers.append(i)
     plates = sum(h > 0.0 for h in thick)
     grip = sum(thick)
     outer = None if x.get("outer_diameter") is None else col("outer_diameter")
@@ -736,6 +852,19 @@ def _solve(
                 f"{d_w * 1e3:g} mm is VDI's sleeve)"
             ),
         )
+    for i, own in zip(numbers, outers, strict=True):
+        if own is not None:
+            refusals.add(
+                own <= d_h,
+                f"plate{i}_outer_diameter",
+                partial(
+                    "plate{0}_outer_diameter D_A,{0} = {1:g} mm leaves no wall around the hole "
+                    "d_h = {2:g} mm: must be > {2:g} mm".format,
+                    i,
+                    own * 1e3,
+                    d_h * 1e3,
+                ),
+            )
     l_shank, l_reduced = col("shank_length"), col("reduced_length")
     refusals.add(
         l_shank + l_reduced > grip * (1.0 + 1e-12),
@@ -776,8 +905,13 @@ def _solve(
         joint_type,
         col_or("nut_youngs_modulus", _tapped_modulus(x)),
     )
-    parts = jt.clamped_compliance(thick, moduli, d_w, d_h, outer, joint_type)
+    own_outers = outers if any(o is not None for o in outers) else None
+    parts = jt.clamped_compliance(
+        thick, moduli, d_w, d_h, outer, joint_type, plate_outer_diameters=own_outers
+    )
     delta_s, delta_p = bolt_c.total, parts.total
+    hot = _at_temperature(x, col, b, moduli, refusals)
+    yield_t = yield_strength if hot is None else yield_strength * hot.yield_ratio  # R7, R8
 
     # R3 eccentric clamping and loading (VDI 2230-1 §5.3.2); zero offsets: concentric --------------
     s_sym, lever, edge = col("bolt_offset"), col("load_lever"), col("opening_edge")
@@ -916,8 +1050,8 @@ def _solve(
     a0 = jt.smallest_area(d0, a_s, where)
     nu = col("utilization")
     beta = _plain(pl.torsion_factor(pitch, d2, d0, mu_g_lo, "vdi2230"))
-    f_mzul_bolt = pl.assembly_preload(yield_strength, a0, beta, nu)
-    f_myield = pl.assembly_preload(yield_strength, a0, beta, 1.0)
+    f_mzul_bolt = pl.assembly_preload(yield_t, a0, beta, nu)
+    f_myield = pl.assembly_preload(yield_t, a0, beta, 1.0)
     # the nut's proof load (ISO 898-2) caps the preload a through bolt may be given
     nut, nut_part, tensile = b.get("_nut") or (None, None, None)
     f_nut: Any = math.nan
@@ -955,6 +1089,13 @@ def _solve(
 
     # R4 thermal loss at the lowest service preload -----------------------------------------------
     dt_s = col("temperature_change")
+    # VDI 2230-1 5.4.2.3: δ_S, δ_P at room temperature (assembly, Φ_n, F_Z); E at T only here
+    modulus_s, modulus_p = col("bolt_modulus_ratio"), col("plate_modulus_ratio")
+    if hot is not None:
+        modulus_s = hot.bolt_modulus_ratio
+        modulus_p = delta_p / sum(
+            c / r for c, r in zip(parts.per_plate, hot.plate_modulus_ratios, strict=True)
+        )
     thermal = partial(
         jt.thermal_preload_loss,
         grip=grip,
@@ -964,8 +1105,8 @@ def _solve(
         plate_temperature_change=col_or("plate_temperature_change", dt_s),
         bolt=delta_s,
         clamped=delta_p1,
-        bolt_modulus_ratio=col("bolt_modulus_ratio"),
-        clamped_modulus_ratio=col("plate_modulus_ratio"),
+        bolt_modulus_ratio=modulus_s,
+        clamped_modulus_ratio=modulus_p,
     )
     th_loss = thermal(fm_min - f_z)
     th_top = thermal(fm_max)  # R8: the change at the largest assembly preload
@@ -1003,7 +1144,7 @@ def _solve(
         | _overflows_squared(jt.TORSION_REDUCTION_IN_SERVICE * stress.torsional),
         "σ_red,B overflows",
     )
-    s_f = jt.yield_safety(yield_strength, stress.equivalent)
+    s_f = jt.yield_safety(yield_t, stress.equivalent)
     checks["R8_working_stress"] = (True, s_f >= 1.0)
     if nut is not None:
         checks["nut_strength"] = (
@@ -1110,7 +1251,11 @@ def _solve(
         "target_angle": pl.nut_rotation_angle(nominal, delta_s + delta_p, pitch),
         "rigid_joint_angle": pl.nut_rotation_angle(nominal, delta_s, pitch),
         "nut_stripping_force": f_strip,
+        "yield_strength_at_temperature": math.nan if hot is None else yield_t,
+        "bolt_modulus_ratio_at_temperature": math.nan if hot is None else modulus_s,
+        "plate_modulus_ratio_at_temperature": math.nan if hot is None else modulus_p,
         # what the sentences, hooks and series read
+        "_yield_t": yield_t,
         "_checks": checks,
         "_where": where,
         "_alpha_req": alpha_req,
@@ -1142,6 +1287,7 @@ def _seed_004_rule(
 def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     bolt, notes = resolve_bolt(x)
     b: dict[str, Any] = {f: getattr(bolt, f) for f in _BOLT_FIELDS}
+    b["_strength_class"] = _strength_class(x, bolt)
     b["_nut"] = _nut_choice(
         x, bolt.tensile_strength, None if bolt.fastener is None else bolt.fastener.thread
     )
@@ -1183,6 +1329,21 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         warnings.append(
             f"plates very thin against d_W: the cone tangent is held at {jt.MIN_CONE_TANGENT}"
         )
+    own = [i for i in range(2, MAX_PLATES + 1) if x.get(f"plate{i}_outer_diameter") is not None]
+    if own:
+        notes.append(
+            "D_A per plate: plate "
+            + ", ".join(
+                f"{i} D_A,{i} = {float(x[f'plate{i}_outer_diameter']) * 1e3:.4g} mm" for i in own
+            )
+            + "; each plate's part of the cone is capped at its own D_A (a sleeve below d_W), "
+            f"tan φ = {s['cone_tangent']:.4g} from plate 1's D_A = "
+            f"{s['outer_diameter_used'] * 1e3:.4g} mm (VDI 2230-1 R3)"
+        )
+    if x.get("service_temperature") is not None:
+        hot_notes, hot_warnings = _temperature_notes(x, s, bolt)
+        notes += hot_notes
+        warnings += hot_warnings
     if s["_where"] == "shank":
         notes.append(
             f"smallest section is the shank, d_0 = {s['smallest_diameter'] * 1e3:.4g} mm < d_S = "
@@ -1323,6 +1484,39 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
 
 
+def _temperature_notes(
+    x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt
+) -> tuple[list[str], list[str]]:
+    """What a service temperature changed, and which E each step uses (one design)."""
+    t = float(x["service_temperature"])
+    celsius = t - fa.CELSIUS_ZERO
+    material = x.get("clamped_material")
+    if material is None:
+        plates = "plates of E ≥ 190 GPa as steel, others at their room-temperature E"
+    elif _plate_temperature_class(x) is None:
+        plates = f"{material}: no E(T) table, the plates at their room-temperature E"
+    else:
+        plates = f"{material} as {_plate_temperature_class(x)}"
+    notes = [
+        f"at T = {t:.5g} K ({celsius:.4g} °C): R_p0.2 = {s['_yield_t'] / 1e6:.4g} MPa "
+        f"({bolt.yield_strength / 1e6:.4g} MPa × {s['_yield_t'] / bolt.yield_strength:.4f}, "
+        "ISO 898-1 Annex A [NFG-898T], linear between its columns) in R7 (F_M,zul) and R8 "
+        f"(S_F); E_S,T/E_S,RT = {s['bolt_modulus_ratio_at_temperature']:.4f} (steel) and "
+        f"E_P,T/E_P,RT = {s['plate_modulus_ratio_at_temperature']:.4f} ({plates}; "
+        "[RICHTER-E], [ASME-B31.1-E]) in the thermal loss ΔF_Vth only (VDI 2230-1 5.4.2.3): "
+        "δ_S, δ_P, Φ_n and F_Z are the assembly's, at room temperature; R9's F_0.2 and R10's "
+        "p_G stay at room temperature (no public table of p_G at temperature found)"
+    ]
+    warnings = []
+    if float(x["temperature_change"]) == 0.0 and abs(celsius - 20.0) > 1.0:
+        warnings.append(
+            f"service_temperature = {celsius:.4g} °C but temperature_change ΔT_S = 0: the "
+            "expansion mismatch of bolt and plates is not in ΔF_Vth; give temperature_change "
+            "= T − T_assembly (and plate_temperature_change) for it"
+        )
+    return notes, warnings
+
+
 def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[str, str]:
     """The sentence of each check of one solved design."""
     f_mzul, fm_min, fm_max = (
@@ -1371,8 +1565,9 @@ def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[s
         ),
         "R8_working_stress": f"σ_red,B = {stress / 1e6:.4g} MPa at F_S,max = "
         "F_M,max + Φ_n F_A − ΔF_Vth (a thermal gain only) = "
-        f"{_kn(s['max_bolt_force'])} vs R_p0.2 = {bolt.yield_strength / 1e6:.4g} MPa: S_F = "
-        f"{s_f:.3g} (≥ 1.0)",
+        f"{_kn(s['max_bolt_force'])} vs R_p0.2 = {s['_yield_t'] / 1e6:.4g} MPa"
+        + ("" if x.get("service_temperature") is None else " at the service temperature")
+        + f": S_F = {s_f:.3g} (≥ 1.0)",
         "R9_fatigue": "σ_a = Φ_n (F_A,max − F_A,min)/(2 A_S) = "
         f"{s['stress_amplitude'] / 1e6:.3g} MPa vs σ_AS = {s['endurance_limit'] / 1e6:.3g} MPa: "
         f"S_D = {s['fatigue_safety']:.3g} (VDI asks ≥ 1.2)",
@@ -1641,6 +1836,25 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
         display_unit="kN",
     ),
     Output(
+        "yield_strength_at_temperature",
+        "Pa",
+        "R7/R8 at service_temperature: R_p0.2(T) = R_p0.2 × R_p0.2,T/R_p0.2,20°C of the class "
+        "(ISO 898-1 Annex A), the yield strength R7 and R8 use (null at room temperature)",
+        display_unit="MPa",
+    ),
+    Output(
+        "bolt_modulus_ratio_at_temperature",
+        "1",
+        "R4 at service_temperature: E_S,T/E_S,RT of the bolt (steel table), in ΔF_Vth (null at "
+        "room temperature)",
+    ),
+    Output(
+        "plate_modulus_ratio_at_temperature",
+        "1",
+        "R4 at service_temperature: E_P,T/E_P,RT of the plates, δ_P/Σ(δ_i E_i,RT/E_i,T), in "
+        "ΔF_Vth (null at room temperature)",
+    ),
+    Output(
         "diagram_deformation",
         "m",
         "Joint diagram (VDI §3.2): deformation axis",
@@ -1750,6 +1964,10 @@ _GIVEN_ONLY = (
     "fitted_shear_stress",
     "fitted_shear_safety",
     "fitted_bearing_pressure",
+    # and the service temperature's, only with service_temperature
+    "yield_strength_at_temperature",
+    "bolt_modulus_ratio_at_temperature",
+    "plate_modulus_ratio_at_temperature",
 )
 
 # --------------------------------------------------------------------------- array path
@@ -1904,6 +2122,7 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         for v in (getattr(resolved, f),)
     }
     refused = ~resolved.ok
+    b["_strength_class"] = _strength_class(x, bolts[0] if bolts else None)
     if x.get("nut") is not None:
         strengths = {k.tensile_strength for k in bolts} - {None}
         if len(strengths) > 1:

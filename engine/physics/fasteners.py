@@ -1582,6 +1582,206 @@ def material(name: str, *, field: str = "material") -> Material:
     return MATERIALS[name]
 
 
+# --------------------------------------------------------------------------- at temperature
+
+#: Celsius zero [K]: the tables below are printed in °C (grey iron's in °F).
+CELSIUS_ZERO = 273.15
+
+#: Lower yield strength R_eL or 0.2 % proof strength R_p0.2 [MPa] of ISO 898-1 classes at
+#: elevated temperature: ISO 898-1 Annex A (informative), as reprinted by [NFG-898T]. The
+#: standard gives them as guidance for the loss of strength with temperature, not as
+#: requirements. Columns at :data:`PROOF_STRENGTH_TEMPERATURES_C`.
+PROOF_STRENGTH_TEMPERATURES_C: tuple[float, ...] = (20.0, 100.0, 200.0, 250.0, 300.0)
+PROOF_STRENGTH_AT_TEMPERATURE_MPA: dict[str, tuple[float, ...]] = {
+    "5.6": (300.0, 270.0, 230.0, 215.0, 195.0),
+    "8.8": (640.0, 590.0, 540.0, 510.0, 480.0),
+    "10.9": (940.0, 875.0, 790.0, 745.0, 705.0),
+    "12.9": (1100.0, 1020.0, 925.0, 875.0, 825.0),
+}
+
+#: Young's modulus E(T) [GPa] by material class: (temperatures [°C], moduli [GPa]).
+#: Low-alloy (ferritic) steel, austenitic steel, aluminium alloys and nodular iron
+#: (GGG-38 = EN-GJS-400) after Richter's tables as printed by [RICHTER-E]; grey cast iron
+#: from ASME B31.1 as printed by [ASME-B31.1-E] (10^6 psi at 70…600 °F, the 70 °F column read
+#: as room temperature 20 °C). Only the ratio E(T)/E(20 °C) is used: it scales the modulus a
+#: design gives.
+YOUNGS_MODULUS_AT_TEMPERATURE_GPA: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {
+    "steel": ((20.0, 200.0, 400.0, 600.0), (212.0, 199.0, 184.0, 164.0)),
+    "austenitic steel": ((20.0, 200.0, 400.0, 600.0), (196.0, 186.0, 179.0, 157.0)),
+    "aluminium": ((20.0, 200.0), (70.0, 63.0)),
+    "nodular cast iron": ((20.0, 200.0, 400.0), (170.0, 168.0, 135.0)),
+    "grey cast iron": (
+        (20.0, *((f - 32.0) * 5.0 / 9.0 for f in (200.0, 300.0, 400.0, 500.0, 600.0))),
+        tuple(m * KSI / 1e6 for m in (13.4, 13.2, 12.9, 12.6, 12.2, 11.7)),
+    ),
+}
+
+#: The E(T) class of the catalogue's materials (None: no table found for it).
+MATERIAL_TEMPERATURE_CLASS: dict[str, str] = {
+    "S235JR": "steel",
+    "E295": "steel",
+    "C45 (normalised)": "steel",
+    "42CrMo4 (QT)": "steel",
+    "X5CrNi18-10": "austenitic steel",
+    "EN-GJL-250": "grey cast iron",
+    "EN-GJS-400": "nodular cast iron",
+    "EN-GJS-500": "nodular cast iron",
+    "EN AW-6082 T6": "aluminium",
+    "EN AW-7075 T6": "aluminium",
+    "EN AC-46000 (die cast)": "aluminium",
+    "EN AC-42100 T6": "aluminium",
+}
+
+
+def temperature_range(temperatures_c: tuple[float, ...]) -> tuple[float, float]:
+    r"""The absolute temperatures a table over ``temperatures_c`` covers.
+
+    .. math::
+        T_{min} = T_0 + 273.15\,K, \qquad T_{max} = T_{n} + 273.15\,K
+
+    Parameters
+    ----------
+    temperatures_c : tuple of float
+        The table's columns T_0 … T_n, ascending, [°C]
+
+    Returns
+    -------
+    tuple of float
+        (T_min, T_max), [K]
+
+    Notes
+    -----
+    The range a service temperature is refused outside (the tables' own columns, no
+    extrapolation).
+
+    Examples
+    --------
+    >>> temperature_range(PROOF_STRENGTH_TEMPERATURES_C)
+    (293.15, 573.15)
+    """
+    return temperatures_c[0] + CELSIUS_ZERO, temperatures_c[-1] + CELSIUS_ZERO
+
+
+def table_ratio(
+    temperature: Any, temperatures_c: tuple[float, ...], values: tuple[float, ...]
+) -> Any:
+    r"""A tabulated property at a temperature over its room-temperature value, interpolated.
+
+    .. math::
+        r(T) = \frac{X_i + (X_{i+1} - X_i)\,\frac{T - T_i}{T_{i+1} - T_i}}{X_0},
+        \qquad T_i \le T \le T_{i+1}
+
+    Parameters
+    ----------
+    temperature : float or array
+        T, the absolute temperature, [K]
+    temperatures_c : tuple of float
+        T_i of the table, ascending, T_0 room temperature, [°C]
+    values : tuple of float
+        X_i, the property at T_i (any unit), [-]
+
+    Returns
+    -------
+    float or array
+        r = X(T)/X(T_0), [-]
+
+    Notes
+    -----
+    Linear interpolation between the printed columns, as VDI 2230-1 and the tables'
+    sources leave it to the user; a temperature outside the table is held at its end here,
+    the caller refuses it (:func:`temperature_range`).
+
+    Examples
+    --------
+    8.8 at 150 °C, half-way between 590 and 540 MPa: 565/640
+
+    >>> round(table_ratio(423.15, *_row("8.8")), 6)
+    0.882812
+    """
+    celsius = np.asarray(temperature, dtype=float) - CELSIUS_ZERO
+    ratio = np.interp(celsius, temperatures_c, values) / values[0]
+    return ratio if isinstance(temperature, np.ndarray) else float(ratio)
+
+
+def _row(property_class: str) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    return PROOF_STRENGTH_TEMPERATURES_C, PROOF_STRENGTH_AT_TEMPERATURE_MPA[property_class]
+
+
+def yield_strength_ratio(property_class: str, temperature: Any) -> Any:
+    r"""R_p0.2(T)/R_p0.2(20 °C) of an ISO 898-1 property class.
+
+    .. math::
+        \frac{R_{p0.2}(T)}{R_{p0.2}(20\,°C)} = r(T)\ \text{of ISO 898-1 Annex A}
+
+    Parameters
+    ----------
+    property_class : str
+        One of :data:`PROOF_STRENGTH_AT_TEMPERATURE_MPA` (5.6, 8.8, 10.9, 12.9), [-]
+    temperature : float or array
+        Service temperature T, 293.15…573.15 K, [K]
+
+    Returns
+    -------
+    float or array
+        The ratio, applied to the R_p0.2,min of the bolt's size, [-]
+
+    Notes
+    -----
+    ISO 898-1 Annex A (informative) as reprinted by [NFG-898T], interpolated linearly
+    (:func:`table_ratio`). The ratio, not the printed MPa, is applied, so that 8.8 above M16
+    (R_p0.2 = 660 MPa) and a typed yield strength of the class scale the same way. Raises
+    InputOutOfRange (field ``service_temperature``) for a class without a table.
+
+    Examples
+    --------
+    >>> round(yield_strength_ratio("10.9", 473.15) * 940, 6)
+    790.0
+    """
+    if property_class not in PROOF_STRENGTH_AT_TEMPERATURE_MPA:
+        raise InputOutOfRange(
+            f"service_temperature: R_p0.2 at temperature is tabulated for ISO 898-1 classes "
+            f"{', '.join(PROOF_STRENGTH_AT_TEMPERATURE_MPA)} only (ISO 898-1 Annex A), not for "
+            f"{property_class}: leave service_temperature out and give the bolt's yield "
+            "strength at that temperature as yield_strength",
+            field="service_temperature",
+        )
+    return table_ratio(temperature, *_row(property_class))
+
+
+def youngs_modulus_ratio(material_class: str, temperature: Any) -> Any:
+    r"""E(T)/E(20 °C) of a material class (bolt or plate).
+
+    .. math::
+        \frac{E(T)}{E(20\,°C)} = r(T)\ \text{of the class's table}
+
+    Parameters
+    ----------
+    material_class : str
+        A key of :data:`YOUNGS_MODULUS_AT_TEMPERATURE_GPA`, [-]
+    temperature : float or array
+        T, inside the class's table (:func:`temperature_range`), [K]
+
+    Returns
+    -------
+    float or array
+        E_T/E_RT, [-]
+
+    Notes
+    -----
+    [RICHTER-E] for steels, aluminium and nodular iron, [ASME-B31.1-E] for grey iron,
+    interpolated linearly (:func:`table_ratio`). VDI 2230-1 prints its own E(T) table; its
+    text was not available to us.
+
+    Examples
+    --------
+    Steel at 200 °C: 199/212; aluminium at 110 °C: (70 − 7 × 90/180)/70
+
+    >>> round(youngs_modulus_ratio("steel", 473.15), 6), youngs_modulus_ratio("aluminium", 383.15)
+    (0.938679, 0.95)
+    """
+    return table_ratio(temperature, *YOUNGS_MODULUS_AT_TEMPERATURE_GPA[material_class])
+
+
 # --------------------------------------------------------------------------- the designation
 
 

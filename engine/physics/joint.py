@@ -561,6 +561,7 @@ def clamped_compliance(
     outer_diameter: float | None = None,
     joint: str = "through",
     tangent: float | None = None,
+    plate_outer_diameters: Sequence[Any] | None = None,
 ) -> ClampedCompliance:
     r"""Compliance of the clamped plates by VDI 2230's deformation cone and sleeve.
 
@@ -598,11 +599,14 @@ def clamped_compliance(
         ``"through"`` or ``"tapped"``
     tangent : float, optional
         tan φ to use instead of VDI's fit (for comparisons), [-]
+    plate_outer_diameters : sequence of float or None, optional
+        D_A,i of each plate, None for an entry (or the whole): the first plate's D_A; each
+        plate's part of the cone is capped at its own D_A,i (its sleeve below d_W), [m]
 
     Returns
     -------
     ClampedCompliance
-        Per-plate compliances [m/N], tan φ, D_A,Gr and D_A used [m]
+        Per-plate compliances [m/N], tan φ, D_A,Gr and D_A used [m] (the first plate's)
 
     Notes
     -----
@@ -610,8 +614,10 @@ def clamped_compliance(
     several materials by integrating each plate's part of the same cone and
     sleeve with its own E (VDI 2230-1:2015 §5.1.2.2; ECSS-E-HB-32-23A §7.6.3
     and misams/BAT instead spread one substitute area over the plates, which
-    differs where the plates differ). The cone angle uses the whole grip.
-    The nut's bearing face is taken as large as the head's.
+    differs where the plates differ). The cone angle uses the whole grip and the
+    first plate's D_A (VDI's y = D_A'/d_W at the head); a plate of its own D_A,i caps
+    its part of the same cone there (our reading of §5.1.2.2 plate by plate: VDI's text
+    was not available). The nut's bearing face is taken as large as the head's.
 
     Examples
     --------
@@ -620,6 +626,14 @@ def clamped_compliance(
     >>> c = clamped_compliance([0.02, 0.02], [2.1e11, 2.1e11], 0.01663, 0.0135, 0.040)
     >>> round(c.total * 1e9, 4)
     0.6676
+
+    The second plate of 15 mm outer diameter, below d_W: a sleeve of h_2 = 20 mm,
+    4 h_2/(E π (D_A,2² − d_h²)) = 2.8365e-9 m/N
+
+    >>> c2 = clamped_compliance([0.02, 0.02], [2.1e11, 2.1e11], 0.01663, 0.0135, 0.040,
+    ...                         plate_outer_diameters=[None, 0.015])
+    >>> round(c2.per_plate[1] * 1e9, 4)
+    2.8365
     """
     if len(thicknesses) != len(youngs_moduli) or not thicknesses:
         raise InputOutOfRange("give one Young's modulus per plate", field="plate1_thickness")
@@ -634,9 +648,10 @@ def clamped_compliance(
     per_plate = []
     z = 0.0
     half = 0.5 * grip
-    for h, e in zip(thicknesses, youngs_moduli, strict=True):
+    own = plate_outer_diameters or [None] * len(thicknesses)
+    for h, e, plate_outer in zip(thicknesses, youngs_moduli, own, strict=True):
         a, b = z, z + h
-        args = (bearing_diameter, hole_diameter, tan, outer)
+        args = (bearing_diameter, hole_diameter, tan, outer if plate_outer is None else plate_outer)
         if joint == "through":
             integral = _one_sided(_min(a, half), _min(b, half), *args) + _one_sided(
                 grip - _max(b, half), grip - _max(a, half), *args

@@ -55,6 +55,7 @@ VALIDATION: dict[str, tuple[str, ...]] = {
     "joint.vdi2230": (
         "test_joint_compliance.py",
         "test_joint_eccentric.py",
+        "test_joint_temperature.py",
         "test_preload_vdi2230_coarse.py",
         "test_iso898_loads.py",
         "test_fasteners_standards.py",

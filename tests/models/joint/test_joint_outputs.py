@@ -157,8 +157,12 @@ def test_the_hand_calculation_covers_every_numeric_output():
     # nut_stripping_force is given only for a nut that does not pair with the bolt: held by
     # tests/models/joint/test_nut_strength.py's hand calculation; the bending outputs only for
     # an eccentric joint: held by tests/models/joint/test_joint_eccentric.py's; the fitted
-    # shank's only with fitted_diameter: held by test_joint_fitted.py's
+    # shank's only with fitted_diameter: held by test_joint_fitted.py's; the service
+    # temperature's only with service_temperature: held by test_joint_temperature.py's
     eccentric = {
+        "yield_strength_at_temperature",
+        "bolt_modulus_ratio_at_temperature",
+        "plate_modulus_ratio_at_temperature",
         "substitute_bending_inertia",
         "clamped_bending_compliance",
         "bolt_bending_compliance",

@@ -1,0 +1,73 @@
+"""One outer diameter D_A per plate (VDI 2230-1 R3, the cone and sleeve plate by plate), by hand.
+
+M12 8.8 through 2 × 20 mm steel (d_W = 16.63 mm, d_h = 13.5 mm, E = 210 GPa). Each half of a
+through joint is a cone from its bearing face to mid-grip; plate i's part is capped at its own
+D_A,i. A fully developed half cone is VDI's closed form
+ln[(d_W + d_h)(d_W + 2 z tan φ − d_h)/((d_W − d_h)(d_W + 2 z tan φ + d_h))]/(E π d_h tan φ) with
+z = l_K/2; a plate with D_A,i ≤ d_W is a sleeve 4 h_i/(E π (D_A,i² − d_h²)).
+"""
+
+import math
+
+import pytest
+
+from engine import run, sweep
+from engine.core.errors import InputOutOfRange
+from engine.models import get_model
+from tests.pins import pin
+
+JOINT = get_model("joint.vdi2230")
+BASE = {**JOINT.examples[0], "outer_diameter": 0.040}
+E, D_W, D_H, H = 2.1e11, 0.01663, 0.0135, 0.020
+
+
+def _half_cone(tan: float) -> float:
+    top = D_W + 2.0 * H * tan
+    ratio = (D_W + D_H) * (top - D_H) / ((D_W - D_H) * (top + D_H))
+    return math.log(ratio) / (E * math.pi * D_H * tan)
+
+
+def test_the_first_plate_s_diameter_for_both_is_today_s_answer_to_the_bit():
+    same = run(JOINT, {**BASE, "plate2_outer_diameter": 0.040}).results
+    assert same == run(JOINT, BASE).results
+
+
+def test_a_narrow_second_plate_is_a_sleeve_by_hand():
+    got = run(JOINT, {**BASE, "plate2_outer_diameter": 0.015}).results
+    tan = got["cone_tangent"]  # VDI's fit at D_A,1 = 40 mm (D_A,Gr = 36.7 mm: full cone)
+    sleeve = 4.0 * H / (E * math.pi * (0.015**2 - D_H**2))
+    pin(
+        "joint.vdi2230",
+        "clamped_compliance",
+        got["clamped_compliance"],
+        _half_cone(tan) + sleeve,
+        rel=1e-12,
+    )
+
+
+def test_a_wide_second_plate_keeps_the_full_cone_by_hand():
+    got = run(JOINT, {**BASE, "plate2_outer_diameter": 0.100}).results
+    tan = got["cone_tangent"]
+    pin(
+        "joint.vdi2230",
+        "clamped_compliance",
+        got["clamped_compliance"],
+        2 * _half_cone(tan),
+        rel=1e-12,
+    )
+
+
+def test_a_diameter_inside_the_hole_is_refused_naming_the_plate():
+    with pytest.raises(InputOutOfRange) as err:
+        run(JOINT, {**BASE, "plate2_outer_diameter": 0.013})
+    assert err.value.field == "plate2_outer_diameter" and "13.5 mm" in str(err.value)
+
+
+def test_a_sweep_over_the_second_diameter_runs_the_same_lines():
+    values = [0.014, 0.016, 0.030, 0.060]
+    many = sweep(JOINT, BASE, "plate2_outer_diameter", values)
+    for i, d in enumerate(values):
+        one = run(JOINT, {**BASE, "plate2_outer_diameter": d}).results
+        for name in ("clamped_compliance", "load_factor", "embedding_loss"):
+            got = float(many.columns[name][i])
+            assert got == pytest.approx(one[name], rel=1e-12), name
