@@ -1024,7 +1024,7 @@ _OUTPUTS: tuple[Output, ...] = (
         "N",
         "c_2λ_2 + m_2g − c_3λ_3f: the static re-lock condition, [002, eq. 4] at the end of "
         "the travel (the relock check also follows the shaft's motion)",
-        symbol="c_2λ_2 + m_2g − c_3λ_3f",
+        symbol="c_2 λ_2 + m_2 g − c_3 λ_3 f",
         step="[002, eq. 4]",
     ),
     Output(
