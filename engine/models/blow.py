@@ -833,9 +833,9 @@ def _blow_interval(x: Mapping[str, Any], s: _Setup) -> tuple[Any, str]:
     then spins it up to the blow speed again:
 
     .. math::
-        \Delta t = rac{T}{P}\ 	ext{(nut-runner [000, eq. 5])},\qquad
-        \Delta t = t_{cycle}\ 	ext{(rare impact [002]: spin-up to re-lock)},\qquad
-        \Delta t = rac{J_t\,\omega_0}{N}\ 	ext{(energy: the drive torque N)}
+        \Delta t = \frac{T}{P}\ \text{(nut-runner [000, eq. 5])},\qquad
+        \Delta t = t_{cycle}\ \text{(rare impact [002]: spin-up to re-lock)},\qquad
+        \Delta t = \frac{J_t\,\omega_0}{N}\ \text{(energy: the drive torque N)}
 
     (T the drive's kinetic energy at working speed, P the motor power; t_cycle impact.rare's
     closed-form cycle from motor start to re-lock with the striker's motor; J_t ω0/N a
