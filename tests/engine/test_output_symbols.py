@@ -7,6 +7,8 @@ and a result no source states (an error estimate, a textbook stress) step "".
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from engine.core.sources import SOURCES, cited_ids
@@ -86,3 +88,16 @@ def test_the_catalogue_carries_symbol_and_step() -> None:
     joint = next(m for m in MODELS if m.name == "joint.vdi2230").describe()
     series = next(o for o in joint["outputs"] if o["series"])
     assert (series["symbol"], series["step"]) == ("", "")
+
+
+def test_no_engine_source_holds_a_control_character() -> None:
+    """A docstring's \\frac or \\text in a string that is not raw becomes a form feed or a
+    tab: the printed report then shows "rac{T}{P} ext{…}" (the blow's time between blows did)."""
+    engine_dir = Path(__file__).resolve().parents[2] / "engine"
+    bad = [
+        (str(f.relative_to(engine_dir)), n)
+        for f in sorted(engine_dir.rglob("*.py"))
+        for n, line in enumerate(f.read_text(encoding="utf-8").splitlines(), 1)
+        if any(ord(c) < 32 for c in line)
+    ]
+    assert bad == []
