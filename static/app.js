@@ -1095,41 +1095,28 @@ function resultRows(m, data, { interactive = false, withDesc = true } = {}) {
         cell.textContent = sign + fmt(v / c.factor, digits);
       });
     }
-    const sym = interactive ? "" : symbolOf(m, o);
+    // the symbol and step the model declares for this result ("" for a count or a flag)
+    const sym = o.symbol || "";
     rows.push(el("tr", { "data-output": o.name },
-      el("th", { scope: "row", title: o.description }, labelOf(o)),
+      el("th", { scope: "row", title: o.step ? `${o.description} (${o.step})` : o.description },
+        labelOf(o), interactive && sym ? [" ", symbolNode(sym)] : null),
       interactive ? null : el("td", { class: "symbol" }, sym ? symbolNode(sym) : ""),
       cell,
       el("td", { class: "unit" }, unitCell),
       withDesc ? el("td", { class: "desc" }, o.description) : null,
-      interactive ? null : el("td", { class: "step" }, stepOf(o))));
+      interactive ? null : el("td", { class: "step" }, o.step || "")));
   }
   return rows;
 }
 
-/** An output's symbol: its answer declaration's, else the one its description defines
- *  ("R2: F_K,erf = max(F_KQ, F_KP)" → F_K,erf), else none. */
-function symbolOf(m, o) {
-  const a = (m.answer || []).find((x) => x.output === o.name);
-  if (a) return a.symbol;
-  const hit = /^(?:[^:]{1,24}:\s*)?([^\s=;:()]{1,16}) = /.exec(o.description || "");
-  return hit ? hit[1] : "";
-}
-
-/** The standard's step or the source's equation an output comes from: "R7", "[004, eq. 13]". */
-function stepOf(o) {
-  const d = o.description || "";
-  const step = /^(R\d+(?:\/R\d+)*)\s*:/.exec(d);
-  if (step) return "VDI 2230-1 " + step[1];
-  const cite = /\[(\d{3}[^\]]*|[A-Z][^\]]*)\]/.exec(d);
-  return cite ? `[${cite[1]}]` : "";
-}
-
-/** A symbol as the standard writes it: "F_M,min" -> F with "M,min" set below. */
+/** A symbol as the standard writes it: "F_M,min" -> F with "M,min" set below; each term of
+ *  a ratio or difference ("τ_k2/τ_zul", "θ_y − θ_0") gets its own subscript. */
 function symbolNode(sym) {
-  const i = String(sym).indexOf("_");
-  if (i < 0) return el("var", { class: "sym" }, sym);
-  return el("var", { class: "sym" }, sym.slice(0, i), el("sub", {}, sym.slice(i + 1)));
+  const parts = String(sym).split(/(\s*[/+−()]\s*|\s+)/).filter((t) => t !== "").map((t) => {
+    const i = t.indexOf("_");
+    return i < 0 ? t : [t.slice(0, i), el("sub", {}, t.slice(i + 1))];
+  });
+  return el("var", { class: "sym" }, ...parts);
 }
 
 /** Checks split by level: requirements (a standard's: they fail) and advice (they warn). */
@@ -1986,7 +1973,27 @@ function renderReport(m) {
     signOff(names)].filter(Boolean));
   if (Object.values(data.series).some((v) => v.length)) renderSeries(m, data, seriesBox, "report");
   if (state.lastSweep?.response) plotSweep(m, seriesBox.appendChild(el("div", {})), "report");
+  markWideEquations(body);
 }
+
+/** Equations wider than half the printed page take the whole width (print CSS: .eq-row.wide)
+ *  instead of being cut at their column's edge: a column of A4 holds about 28 em of KaTeX. */
+function markWideEquations(root) {
+  for (const row of root.querySelectorAll(".eq-row")) {
+    let em = 0;
+    for (const k of row.querySelectorAll(".katex-html")) {
+      const range = document.createRange();
+      range.selectNodeContents(k);
+      const size = parseFloat(getComputedStyle(k).fontSize);
+      if (size > 0) em = Math.max(em, range.getBoundingClientRect().width / size);
+    }
+    if (em > 0) row.classList.toggle("wide", em > 28);  // 0: not laid out (hidden), keep as is
+  }
+}
+window.addEventListener("beforeprint", () => {
+  const body = document.getElementById("report-body");
+  if (body) markWideEquations(body);
+});
 
 /** A docstring's sentence without its markup: ``code`` and :role:`text` read as their text. */
 function plainText(text) {

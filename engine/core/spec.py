@@ -301,8 +301,21 @@ class Output:
     x: str | None = None
     #: For a series: how the form draws it (histogram, shaded windows).
     plot: Plot | None = None
+    #: The symbol as the standard or source writes it ("F_M,zul", "Φ*_en", "ω_M"; the
+    #: first "_" starts the subscript); "" for a count, a flag or a label; None: undeclared.
+    symbol: str | None = None
+    #: The step or equation it comes from, citing a source of :mod:`engine.core.sources`
+    #: ("VDI 2230-1 R7", "[004, eq. 13]", "EN 13906-1 eq. (8)"); "" only with symbol "".
+    step: str | None = None
 
     def describe(self) -> dict[str, Any]:
+        """The catalogue's entry (``GET /api/v1/models``).
+
+        >>> o = Output("permissible_preload", "N", "R7: F_M,zul = ν R_p0.2 A_0/β",
+        ...            symbol="F_M,zul", step="VDI 2230-1 R7")
+        >>> {k: o.describe()[k] for k in ("label", "symbol", "step")}
+        {'label': 'permissible preload', 'symbol': 'F_M,zul', 'step': 'VDI 2230-1 R7'}
+        """
         return {
             "name": self.name,
             "label": self.label or self.name.replace("_", " "),
@@ -313,6 +326,8 @@ class Output:
             "unit": self.unit,
             "display_unit": self.display_unit or self.unit,
             "description": self.description,
+            "symbol": self.symbol or "",
+            "step": self.step or "",
         }
 
 

@@ -371,72 +371,215 @@ _INPUTS: tuple[Param, ...] = (
 # --------------------------------------------------------------------------- outputs
 
 _OUTPUTS: tuple[Output, ...] = (
-    Output("tool_energy_used", "J", "kinetic energy per blow (after the blow efficiency)"),
-    Output("tool_inertia_used", "kg*m^2", "inertia of the striking tool at the nut"),
-    Output("tool_speed", "rad/s", "tool speed at the blow", display_unit="rpm"),
-    Output("tool_stiffness_used", "N*m/rad", "torsional stiffness C of the tool"),
-    Output("joint_rate_used", "N*m/rad", "torque rate k_j of the joint"),
+    Output(
+        "tool_energy_used",
+        "J",
+        "kinetic energy per blow (after the blow efficiency)",
+        symbol="E",
+        step="[000, eq. 3–4]",
+    ),
+    Output(
+        "tool_inertia_used",
+        "kg*m^2",
+        "inertia of the striking tool at the nut",
+        symbol="J_t",
+        step="[000, eq. 3–4]",
+    ),
+    Output(
+        "tool_speed",
+        "rad/s",
+        "tool speed at the blow",
+        display_unit="rpm",
+        symbol="ω_t",
+        step="[000, eq. 3–4]",
+    ),
+    Output(
+        "tool_stiffness_used",
+        "N*m/rad",
+        "torsional stiffness C of the tool",
+        symbol="C",
+        step="[000, eq. 9]",
+    ),
+    Output(
+        "joint_rate_used", "N*m/rad", "torque rate k_j of the joint", symbol="k_j", step="ISO 5393"
+    ),
     Output(
         "rigid_torque",
         "N*m",
         "√(2EC) + drive torque: the paper's blow into a fixed end [000, eq. 7–8, 10]",
+        symbol="M",
+        step="[000, eq. 7–8, 10]",
     ),
-    Output("peak_torque", "N*m", "peak spring torque of the first blow"),
-    Output("nut_rotation", "rad", "nut rotation in the first blow", display_unit="deg"),
-    Output("torque_after_first_blow", "N*m", "joint torque after the first blow"),
-    Output("preload_after_first_blow", "N", "preload after the first blow", display_unit="kN"),
-    Output("blows_to_target", "1", "blows until the target torque/preload", kind="int"),
-    Output("final_torque", "N*m", "joint torque after the last blow"),
-    Output("final_preload", "N", "preload after the last blow", display_unit="kN"),
+    Output(
+        "peak_torque",
+        "N*m",
+        "peak spring torque of the first blow",
+        symbol="M_peak",
+        step="[000, eq. 7–8]",
+    ),
+    Output(
+        "nut_rotation",
+        "rad",
+        "nut rotation in the first blow",
+        display_unit="deg",
+        symbol="φ_t",
+        step="[000, eq. 7–8]",
+    ),
+    Output(
+        "torque_after_first_blow",
+        "N*m",
+        "joint torque after the first blow",
+        symbol="T_1",
+        step="[000, eq. 7–8]",
+    ),
+    Output(
+        "preload_after_first_blow",
+        "N",
+        "preload after the first blow",
+        display_unit="kN",
+        symbol="F_1",
+        step="[004, eq. 10–13]",
+    ),
+    Output(
+        "blows_to_target",
+        "1",
+        "blows until the target torque/preload",
+        kind="int",
+        symbol="n",
+        step="[000, eq. 7–8]",
+    ),
+    Output(
+        "final_torque",
+        "N*m",
+        "joint torque after the last blow",
+        symbol="M_final",
+        step="[000, eq. 7–8]",
+    ),
+    Output(
+        "final_preload",
+        "N",
+        "preload after the last blow",
+        display_unit="kN",
+        symbol="F_V,final",
+        step="[004, eq. 10–13]",
+    ),
     Output(
         "saturation_torque",
         "N*m",
         "joint torque above which a blow no longer turns the "
         "nut (energy balance: (N + √(N² + 2EC))/b)",
+        symbol="T_sat",
+        step="[000, eq. 7–8]",
     ),
     Output(
         "joint_energy_fraction",
         "1",
         "first blow's work into the joint / the tool's kinetic energy E; the drive's work "
         "N·φ_t during the blow is not in E, so with a drive torque it can exceed 1",
+        symbol="W_j/E",
+        step="[000, eq. 7–8]",
     ),
-    Output("energy_supplied", "J", "energy supplied over all blows"),
+    Output(
+        "energy_supplied", "J", "energy supplied over all blows", symbol="ΣE", step="[000, eq. 3–4]"
+    ),
     Output(
         "blow_interval",
         "s",
         "time from one blow to the next: the source's motor spins the flywheel from rest "
         "back to its blow speed (nut-runner T/P [000, eq. 5]; rare impact: impact.rare's "
         "cycle [002]; energy: J_t·ω0/N)",
+        symbol="Δt_b",
+        step="[000, eq. 5]",
     ),
-    Output("blows_per_second", "1/s", "blows per second, 1/blow_interval"),
+    Output(
+        "blows_per_second",
+        "1/s",
+        "blows per second, 1/blow_interval",
+        symbol="f_b",
+        step="[000, eq. 5]",
+    ),
     Output(
         "time_to_final",
         "s",
         "time from motor start to the last blow: blows × blow_interval",
+        symbol="t_N",
+        step="[000, eq. 5]",
     ),
-    Output("energy_into_joint", "J", "work into the joint over all blows"),
-    Output("preload_verdict", "1", "final preload against [preload_min, preload_max]", kind="str"),
+    Output(
+        "energy_into_joint",
+        "J",
+        "work into the joint over all blows",
+        symbol="W_j",
+        step="[000, eq. 7–8]",
+    ),
+    Output(
+        "preload_verdict",
+        "1",
+        "final preload against [preload_min, preload_max]",
+        kind="str",
+        symbol="",
+        step="",
+    ),
     Output(
         "yield_preload",
         "N",
         "F_M0.2: preload at which the bolt yields, torsion included (VDI 2230-1 R7, ν = 1)",
         display_unit="kN",
+        symbol="F_M0.2",
+        step="VDI 2230-1 R7",
     ),
-    Output("breaking_load", "N", "F_B = R_m·A_s: the bolt's breaking load", display_unit="kN"),
+    Output(
+        "breaking_load",
+        "N",
+        "F_B = R_m·A_s: the bolt's breaking load",
+        display_unit="kN",
+        symbol="F_B",
+        step="ISO 898-1",
+    ),
     Output(
         "bolt_verdict",
         "1",
         "what the blows do to the bolt: 'elastic', 'past yield' or 'past breaking'",
         kind="str",
+        symbol="",
+        step="VDI 2230-1 R7",
     ),
-    Output("clutch_torque_min", "N*m", "lowest slipping torque (source clutch) [001, eq. 1–3]"),
-    Output("clutch_torque_max", "N*m", "highest slipping torque (source clutch)"),
-    Output("delivered_preload_min", "N", "lowest preload the clutch gives", display_unit="kN"),
-    Output("delivered_preload_max", "N", "highest preload the clutch gives", display_unit="kN"),
+    Output(
+        "clutch_torque_min",
+        "N*m",
+        "lowest slipping torque (source clutch) [001, eq. 1–3]",
+        symbol="T_min",
+        step="[001, eq. 1–3]",
+    ),
+    Output(
+        "clutch_torque_max",
+        "N*m",
+        "highest slipping torque (source clutch)",
+        symbol="T_max",
+        step="[001, eq. 1–3]",
+    ),
+    Output(
+        "delivered_preload_min",
+        "N",
+        "lowest preload the clutch gives",
+        display_unit="kN",
+        symbol="F_M,min",
+        step="VDI 2230-1 R13",
+    ),
+    Output(
+        "delivered_preload_max",
+        "N",
+        "highest preload the clutch gives",
+        display_unit="kN",
+        symbol="F_M,max",
+        step="VDI 2230-1 R13",
+    ),
     Output(
         "clutch_spring_force_for_target",
         "N",
         "spring force that sets the clutch for the target preload at nominal friction",
+        symbol="F",
+        step="[001, eq. 1–3]",
     ),
     Output("blow_number", "1", "blow number", series=True),
     Output("torque_per_blow", "N*m", "joint torque after each blow", series=True, x="blow_number"),
@@ -690,9 +833,9 @@ def _blow_interval(x: Mapping[str, Any], s: _Setup) -> tuple[Any, str]:
     then spins it up to the blow speed again:
 
     .. math::
-        \Delta t = rac{T}{P}\ 	ext{(nut-runner [000, eq. 5])},\qquad
-        \Delta t = t_{cycle}\ 	ext{(rare impact [002]: spin-up to re-lock)},\qquad
-        \Delta t = rac{J_t\,\omega_0}{N}\ 	ext{(energy: the drive torque N)}
+        \Delta t = \frac{T}{P}\ \text{(nut-runner [000, eq. 5])},\qquad
+        \Delta t = t_{cycle}\ \text{(rare impact [002]: spin-up to re-lock)},\qquad
+        \Delta t = \frac{J_t\,\omega_0}{N}\ \text{(energy: the drive torque N)}
 
     (T the drive's kinetic energy at working speed, P the motor power; t_cycle impact.rare's
     closed-form cycle from motor start to re-lock with the striker's motor; J_t ω0/N a

@@ -272,16 +272,55 @@ def _out(name: str, unit: str, description: str, **kw: Any) -> Output:
 
 
 OUTPUTS: tuple[Output, ...] = (
-    _out("mean_torque", "N*m", "Mean of the tool's torque law"),
-    _out("torque_sd", "N*m", "Standard deviation of the tool's torque law"),
-    _out("preload_mean", "N", "Mean assembly preload F_M", display_unit="kN"),
-    _out("preload_sd", "N", "Standard deviation of F_M", display_unit="kN"),
+    _out(
+        "mean_torque",
+        "N*m",
+        "Mean of the tool's torque law",
+        symbol="M_A,mean",
+        step="VDI/VDE 2645",
+    ),
+    _out(
+        "torque_sd",
+        "N*m",
+        "Standard deviation of the tool's torque law",
+        symbol="s_M",
+        step="VDI/VDE 2645",
+    ),
+    _out(
+        "preload_mean",
+        "N",
+        "Mean assembly preload F_M",
+        display_unit="kN",
+        symbol="F_M,mean",
+        step="VDI 2230-1 R13",
+    ),
+    _out(
+        "preload_sd",
+        "N",
+        "Standard deviation of F_M",
+        display_unit="kN",
+        symbol="s_FM",
+        step="VDI 2230-1 R13",
+    ),
     *(
-        _out(name, "N", f"F_M exceeded by a share {1 - q:.6g} of the bolts", display_unit="kN")
+        _out(
+            name,
+            "N",
+            f"F_M exceeded by a share {1 - q:.6g} of the bolts",
+            display_unit="kN",
+            symbol=f"F_M,{q:.6g}",
+            step="VDI 2230-1 R13",
+        )
         for name, q in PRELOAD_QUANTILES
     ),
     *(
-        _out(name, "1", f"Bolt utilisation ν = σ_red,M/R_p0.2 at the quantile {q:.6g}")
+        _out(
+            name,
+            "1",
+            f"Bolt utilisation ν = σ_red,M/R_p0.2 at the quantile {q:.6g}",
+            symbol=f"ν_{q:.6g}",
+            step="VDI 2230-1 R7",
+        )
         for name, q in UTILISATION_QUANTILES
     ),
     _out(
@@ -290,26 +329,41 @@ OUTPUTS: tuple[Output, ...] = (
         "F_M,min the joint requires (VDI 2230-1 R5: F_K,erf, the working load's share, "
         "embedding and thermal losses)",
         display_unit="kN",
+        symbol="F_M,min",
+        step="VDI 2230-1 R5",
     ),
     _out(
         "permissible_preload",
         "N",
         "F_M,zul at the median thread friction (each bolt is judged at its own μ_G)",
         display_unit="kN",
+        symbol="F_M,zul",
+        step="VDI 2230-1 R7",
     ),
-    _out("low_ppm", "1", "Bolts below F_M,min, in ppm", label="below F_M,min [ppm]"),
+    _out(
+        "low_ppm",
+        "1",
+        "Bolts below F_M,min, in ppm",
+        label="below F_M,min [ppm]",
+        symbol="p_low",
+        step="VDI 2230-1 R5",
+    ),
     _out(
         "low_ppm_error",
         "1",
         "Estimated relative error of low_ppm: the change from half the panels, a typical "
         "estimate (exceeded in 7 of 124 random designs against a 16× finer rule; the "
         "rung's 10 % held in all)",
+        symbol="ε_low",
+        step="",
     ),
     _out(
         "high_ppm",
         "1",
         "Bolts above F_M,zul (utilisation above ν), in ppm",
         label="above F_M,zul [ppm]",
+        symbol="p_high",
+        step="VDI 2230-1 R7",
     ),
     _out(
         "high_ppm_error",
@@ -317,30 +371,53 @@ OUTPUTS: tuple[Output, ...] = (
         "Estimated relative error of high_ppm: the change from half the panels, a typical "
         "estimate (exceeded in 7 of 124 random designs against a 16× finer rule; the "
         "rung's 10 % held in all)",
+        symbol="ε_high",
+        step="",
     ),
     _out(
         "clamp_force_cpk",
         "1",
         "Cpk of the preload between F_M,min and F_M,zul: min(U − mean, mean − L)/(3 sd)",
+        symbol="C_pk,F",
+        step="VDI/VDE 2645",
     ),
     _out(
         "tightening_factor",
         "1",
         "α_A this process has: F_M at 0.99865 over F_M at 0.00135 (±3σ equivalents)",
         label="α_A",
+        symbol="α_A",
+        step="VDI 2230-1 R1",
     ),
-    _out("friction_copula", "1", "The Gaussian copula's ρ for the rank correlation given"),
+    _out(
+        "friction_copula",
+        "1",
+        "The Gaussian copula's ρ for the rank correlation given",
+        symbol="ρ",
+        step="Kruskal1958",
+    ),
     _out(
         "tool_critical_index",
         "1",
         "Cmk of the tool's torque law at relative_tolerance (null for a perfect tool)",
+        symbol="C_mk",
+        step="VDI/VDE 2645",
     ),
-    _out("quadrature_panels", "1", "Gauss-Legendre panels per score axis used", kind="int"),
+    _out(
+        "quadrature_panels",
+        "1",
+        "Gauss-Legendre panels per score axis used",
+        kind="int",
+        symbol="",
+        step="",
+    ),
     _out(
         "category_minimum_met",
         "1",
         "The tool reaches the category's minimum Cmk as [CSP2862] states it (null: none)",
         kind="bool",
+        symbol="",
+        step="[CSP2862]",
     ),
 )
 

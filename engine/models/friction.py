@@ -153,13 +153,48 @@ INPUTS: tuple[Param, ...] = (
 )
 
 OUTPUTS: tuple[Output, ...] = (
-    Output("test_count", "1", "Number of tests n in the series", kind="int"),
-    Output("thread_diameter", "m", "Nominal thread diameter d", display_unit="mm"),
-    Output("thread_pitch", "m", "Thread pitch P", display_unit="mm"),
-    Output("pitch_diameter", "m", "Pitch diameter d2", display_unit="mm"),
-    Output("bearing_diameter", "m", "Mean bearing diameter D_b", display_unit="mm"),
+    Output(
+        "test_count",
+        "1",
+        "Number of tests n in the series",
+        kind="int",
+        symbol="n",
+        step="ISO 16047",
+    ),
+    Output(
+        "thread_diameter",
+        "m",
+        "Nominal thread diameter d",
+        display_unit="mm",
+        symbol="d",
+        step="ISO 16047",
+    ),
+    Output("thread_pitch", "m", "Thread pitch P", display_unit="mm", symbol="P", step="ISO 16047"),
+    Output(
+        "pitch_diameter", "m", "Pitch diameter d2", display_unit="mm", symbol="d_2", step="ISO 68-1"
+    ),
+    Output(
+        "bearing_diameter",
+        "m",
+        "Mean bearing diameter D_b",
+        display_unit="mm",
+        symbol="D_b",
+        step="ISO 16047",
+    ),
     *(
-        Output(f"{stem}_{stat}", "1", f"{what.capitalize()} of the {text} over the series")
+        Output(
+            f"{stem}_{stat}",
+            "1",
+            f"{what.capitalize()} of the {text} over the series",
+            symbol=dict(
+                torque_coefficient="K_",
+                thread_friction="μ_th,",
+                bearing_friction="μ_b,",
+                total_friction="μ_tot,",
+            )[stem]
+            + stat,
+            step="ISO 16047",
+        )
         for stem, text in COEFFICIENTS
         for stat, what in _STATISTICS
     ),

@@ -446,25 +446,55 @@ _INPUTS: tuple[Param, ...] = (
 
 _OUTPUTS: tuple[Output, ...] = (
     Output(
-        "kinetic_energy", "J", "Kinetic energy T of parts 1…5 at the working speed [000, eq. 3–4]"
+        "kinetic_energy",
+        "J",
+        "Kinetic energy T of parts 1…5 at the working speed [000, eq. 3–4]",
+        symbol="T",
+        step="[000, eq. 3–4]",
     ),
-    Output("acceleration_time", "s", "Spin-up time: T/P [000, eq. 5], or ∫J dω/M(ω) (motor_curve)"),
     Output(
-        "shaft_stiffness", "N*m/rad", "Torsional stiffness C7 of the flywheel shaft [000, eq. 9]"
+        "acceleration_time",
+        "s",
+        "Spin-up time: T/P [000, eq. 5], or ∫J dω/M(ω) (motor_curve)",
+        symbol="t_a",
+        step="[000, eq. 5]",
     ),
-    Output("spindle_stiffness", "N*m/rad", "Torsional stiffness C8 of a spindle [000, eq. 9]"),
+    Output(
+        "shaft_stiffness",
+        "N*m/rad",
+        "Torsional stiffness C7 of the flywheel shaft [000, eq. 9]",
+        symbol="C_7",
+        step="[000, eq. 9]",
+    ),
+    Output(
+        "spindle_stiffness",
+        "N*m/rad",
+        "Torsional stiffness C8 of a spindle [000, eq. 9]",
+        symbol="C_8",
+        step="[000, eq. 9]",
+    ),
     Output(
         "impact_torque",
         "N*m",
         "Peak torque M on the struck spindle [000, eq. 7–8]; with the gear ratio in the "
         "gear_ratio and motor_curve rungs",
+        symbol="M",
+        step="[000, eq. 7–8]",
     ),
-    Output("max_spindle_torque", "N*m", "M_max = M − (z−1)·M_tr [000, eq. 10]"),
+    Output(
+        "max_spindle_torque",
+        "N*m",
+        "M_max = M − (z−1)·M_tr [000, eq. 10]",
+        symbol="M_sp",
+        step="[000, eq. 10]",
+    ),
     Output(
         "spindle_torque_reserve",
         "1",
         "M_max / M_nut: how many times the torque reaching the nut covers what the wheel nut "
         "needs ([000]: the spindle torque must tighten and free it)",
+        symbol="M_sp/M_nut",
+        step="[000, eq. 10]",
     ),
     Output(
         "friction_clutch_torque",
@@ -472,61 +502,142 @@ _OUTPUTS: tuple[Output, ...] = (
         "M_tr of each idle spindle's friction clutch, as eq. 10 takes it: z_f μ F (D + d)/4 "
         "from the clamp of its nut [000] where friction_clutch_clamp_force is given, else "
         "idle_spindle_friction_torque",
+        symbol="M_tr",
+        step="[000, eq. 10]",
     ),
     Output(
-        "shaft_twist", "rad", "Twist of shaft 7 during the blow [000, eq. 6]", display_unit="deg"
+        "shaft_twist",
+        "rad",
+        "Twist of shaft 7 during the blow [000, eq. 6]",
+        display_unit="deg",
+        symbol="φ_7",
+        step="[000, eq. 6]",
     ),
     Output(
         "spindle_twist",
         "rad",
         "Twist of spindle 8 during the blow [000, eq. 6]",
         display_unit="deg",
+        symbol="φ_8",
+        step="[000, eq. 6]",
     ),
-    Output("shaft_torque", "N*m", "Torque on shaft 7 during the blow: M (source) or u·M (geared)"),
-    Output("coupling_energy", "J", "Kinetic energy of coupling 1 [000, eq. 3]"),
-    Output("motor_pulley_energy", "J", "Kinetic energy of motor pulley 2 [000, eq. 3]"),
-    Output("flywheel_energy", "J", "Kinetic energy of flywheel 3 [000, eq. 3]"),
-    Output("drive_gear_energy", "J", "Kinetic energy of drive gear 4 [000, eq. 3]"),
-    Output("spindle_gears_energy", "J", "Kinetic energy of all z spindle gears 5 [000, eq. 3]"),
+    Output(
+        "shaft_torque",
+        "N*m",
+        "Torque on shaft 7 during the blow: M (source) or u·M (geared)",
+        symbol="M_7",
+        step="[000, eq. 7–8]",
+    ),
+    Output(
+        "coupling_energy",
+        "J",
+        "Kinetic energy of coupling 1 [000, eq. 3]",
+        symbol="T_1",
+        step="[000, eq. 3]",
+    ),
+    Output(
+        "motor_pulley_energy",
+        "J",
+        "Kinetic energy of motor pulley 2 [000, eq. 3]",
+        symbol="T_2",
+        step="[000, eq. 3]",
+    ),
+    Output(
+        "flywheel_energy",
+        "J",
+        "Kinetic energy of flywheel 3 [000, eq. 3]",
+        symbol="T_3",
+        step="[000, eq. 3]",
+    ),
+    Output(
+        "drive_gear_energy",
+        "J",
+        "Kinetic energy of drive gear 4 [000, eq. 3]",
+        symbol="T_4",
+        step="[000, eq. 3]",
+    ),
+    Output(
+        "spindle_gears_energy",
+        "J",
+        "Kinetic energy of all z spindle gears 5 [000, eq. 3]",
+        symbol="T_5",
+        step="[000, eq. 3]",
+    ),
     Output(
         "equivalent_inertia",
         "kg*m^2",
         "Inertia of parts 1…5 referred to the motor shaft, 2T/ω² [000, eq. 3–4]",
+        symbol="J_eq",
+        step="[000, eq. 3–4]",
     ),
-    Output("flywheel_speed", "rad/s", "Flywheel speed ω3 = ω·D2/D3", display_unit="rpm"),
-    Output("spindle_gear_speed", "rad/s", "Spindle gear speed ω5 = ω3·D4/D5", display_unit="rpm"),
-    Output("gear_ratio", "1", "u = D4/D5, shaft torque over spindle torque"),
+    Output(
+        "flywheel_speed",
+        "rad/s",
+        "Flywheel speed ω3 = ω·D2/D3",
+        display_unit="rpm",
+        symbol="ω_3",
+        step="[000, eq. 3]",
+    ),
+    Output(
+        "spindle_gear_speed",
+        "rad/s",
+        "Spindle gear speed ω5 = ω3·D4/D5",
+        display_unit="rpm",
+        symbol="ω_5",
+        step="[000, eq. 3]",
+    ),
+    Output(
+        "gear_ratio",
+        "1",
+        "u = D4/D5, shaft torque over spindle torque",
+        symbol="u",
+        step="[000, eq. 7–8]",
+    ),
     Output(
         "gear_ratio_torque_change",
         "1",
         "Relative change of the impact torque when the gear ratio is taken into account: "
         "M(u)/M(source) − 1",
+        symbol="M(u)/M − 1",
+        step="[000, eq. 7–8]",
     ),
     Output(
         "shaft_shear_stress",
         "Pa",
         "Peak shear stress in shaft 7, 16·M7/(π d7³)",
         display_unit="MPa",
+        symbol="τ_7",
+        step="",
     ),
     Output(
         "spindle_shear_stress",
         "Pa",
         "Peak shear stress in spindle 8, 16·M/(π d8³)",
         display_unit="MPa",
+        symbol="τ_8",
+        step="",
     ),
     Output(
         "drive_inertia",
         "kg*m^2",
         "motor_curve: inertia accelerated by the motor at its shaft (rotor, parts 1…5, "
         "divided by the belt and gear efficiencies)",
+        symbol="J_eq",
+        step="Kloss",
     ),
     Output(
-        "constant_power_time", "s", "motor_curve: the source's constant-power time T/P [000, eq. 5]"
+        "constant_power_time",
+        "s",
+        "motor_curve: the source's constant-power time T/P [000, eq. 5]",
+        symbol="t_P",
+        step="[000, eq. 5]",
     ),
     Output(
         "time_vs_constant_power",
         "1",
         "motor_curve: spin-up time over the constant-power time, minus 1",
+        symbol="t/t_P − 1",
+        step="Kloss",
     ),
     Output("time", "s", "Time during spin-up (x-axis of the speed curves)", series=True),
     Output(
@@ -551,6 +662,8 @@ _OUTPUTS: tuple[Output, ...] = (
         "N*m",
         "slip torque to set on the safety coupling 1: max(K P/ω, T_a), T_a = T_b J_L/(J_A + J_L) "
         "while a motor with breakdown torque T_b and rotor inertia J_A starts parts 2…5 (J_L)",
+        symbol="T_R",
+        step="",
     ),
 )
 

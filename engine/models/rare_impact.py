@@ -893,33 +893,45 @@ _OUTPUTS: tuple[Output, ...] = (
         "ω_M: flywheel speed when the half-coupling reaches h_1 and frees the striker "
         "[002, after eq. 4] for the chosen roller geometry (simulation: the first crossing of h_1)",
         display_unit="rpm",
+        symbol="ω_r",
+        step="[002, after eq. 4]",
     ),
     Output(
         "spin_up_time",
         "s",
         "time from motor start to release [002, eq. 1]",
         display_unit="ms",
+        symbol="t_1",
+        step="[002, eq. 1]",
     ),
     Output(
         "release_radius",
         "m",
         "r: roller centre radius at release, x_0 + κ·h_1 for the chosen geometry",
         display_unit="mm",
+        symbol="r",
+        step="[002, after eq. 4]",
     ),
     Output(
         "half_coupling_release_speed",
         "m/s",
         "axial speed of the half-coupling (away from the anvil) at release, carried into stage 2",
+        symbol="ż_1",
+        step="[002, eq. 1]",
     ),
     Output(
         "engagement_acceleration",
         "m/s^2",
         "B: the striker's acceleration at the start of stage 2 [002, eq. 5] (was oscillation_B)",
+        symbol="B",
+        step="[002, eq. 5]",
     ),
     Output(
         "engagement_frequency",
         "rad/s",
         "k: angular frequency of the striker's stage-2 motion [002, eq. 5] (was oscillation_k)",
+        symbol="k",
+        step="[002, eq. 5]",
     ),
     Output(
         "max_striker_travel",
@@ -927,18 +939,24 @@ _OUTPUTS: tuple[Output, ...] = (
         "the farthest the springs carry the striker in stage 2 (2B/k² from rest [002, eq. 5], "
         "more with the release velocity)",
         display_unit="mm",
+        symbol="z_2,max",
+        step="[002, eq. 5]",
     ),
     Output(
         "engagement_time",
         "s",
         "time from release for the striker to travel h_2 [002, eq. 5]; null if never",
         display_unit="ms",
+        symbol="t_e",
+        step="[002, eq. 5]",
     ),
     Output(
         "engagement_window",
         "s",
         "φ_eng/ω_M: time the anvil's opening takes to pass [002, after eq. 5]",
         display_unit="ms",
+        symbol="t_eng",
+        step="[002, after eq. 5]",
     ),
     Output(
         "engagement_start",
@@ -946,6 +964,8 @@ _OUTPUTS: tuple[Output, ...] = (
         "time from motor start at which the striker is freed and the engagement window "
         "opens (= spin_up_time)",
         display_unit="ms",
+        symbol="t_start",
+        step="[002, eq. 1]",
     ),
     Output(
         "engagement_end",
@@ -953,24 +973,32 @@ _OUTPUTS: tuple[Output, ...] = (
         "time from motor start at which the anvil's opening has passed: "
         "spin_up_time + engagement_window",
         display_unit="ms",
+        symbol="t_end",
+        step="[002, after eq. 5]",
     ),
     Output(
         "full_engagement",
         "1",
         "true when the striker reaches h_2 inside the window (no edge blow)",
         kind="bool",
+        symbol="",
+        step="[002, after eq. 5]",
     ),
     Output(
         "engagement_margin",
         "1",
         "(window − engagement time)/window: the spare fraction of the window; negative means "
         "an edge blow",
+        symbol="(t_eng − t_2)/t_eng",
+        step="[002, after eq. 5]",
     ),
     Output(
         "blow_time",
         "s",
         "time from motor start of the blow (striker at h_2): the end of stage 2",
         display_unit="ms",
+        symbol="t_blow",
+        step="[002, eq. 2]",
     ),
     Output(
         "spring_height_limit",
@@ -979,6 +1007,8 @@ _OUTPUTS: tuple[Output, ...] = (
         "2M_2g/(c_3 − c_1), 0 when nothing is reachable (g ≤ 0); null when there is no upper "
         "limit (c_3 ≤ c_1)",
         display_unit="mm",
+        symbol="h_max",
+        step="[002, eq. 6]",
     ),
     Output(
         "min_return_spring_rate",
@@ -986,12 +1016,16 @@ _OUTPUTS: tuple[Output, ...] = (
         "smallest c_3 that brings the striker back the jaw height from rest in the paper's "
         "reduction of [002, eq. 3] (half-coupling at rest, rollers unloaded)",
         display_unit="N/mm",
+        symbol="c_3,min",
+        step="[002, eq. 3]",
     ),
     Output(
         "relock_margin",
         "N",
         "c_2λ_2 + m_2g − c_3λ_3f: the static re-lock condition, [002, eq. 4] at the end of "
         "the travel (the relock check also follows the shaft's motion)",
+        symbol="c_2 λ_2 + m_2 g − c_3 λ_3 f",
+        step="[002, eq. 4]",
     ),
     Output(
         "return_time",
@@ -999,6 +1033,8 @@ _OUTPUTS: tuple[Output, ...] = (
         "stage 3: time from the blow until the striker is back the jaw height h_3 "
         "[002, eq. 3], rollers and half-coupling moving",
         display_unit="ms",
+        symbol="t_3",
+        step="[002, eq. 3]",
     ),
     Output(
         "striker_home_time",
@@ -1006,6 +1042,8 @@ _OUTPUTS: tuple[Output, ...] = (
         "time from motor start at which the striker is home and the balls can re-lock it: the "
         "end of stage 3",
         display_unit="ms",
+        symbol="t_home",
+        step="[002, eq. 3]",
     ),
     Output(
         "relock_time",
@@ -1013,12 +1051,16 @@ _OUTPUTS: tuple[Output, ...] = (
         "stage 4: time for the stepped shaft to travel back h_1 against the cone friction "
         "[002, eq. 4]",
         display_unit="ms",
+        symbol="t_4",
+        step="[002, eq. 4]",
     ),
     Output(
         "cycle_time",
         "s",
         "time from motor start to the re-lock: the end of stage 4 and of the impact",
         display_unit="ms",
+        symbol="t_c",
+        step="[002, eq. 4]",
     ),
     Output(
         "time",

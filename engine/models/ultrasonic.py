@@ -141,34 +141,64 @@ INPUTS: tuple[Param, ...] = (
 )
 
 OUTPUTS: tuple[Output, ...] = (
-    Output("preload", "N", "Preload F = ΔL/δ_S", display_unit="kN"),
-    Output("elongation", "m", "Mechanical elongation ΔL = F δ_S", display_unit="mm"),
+    Output(
+        "preload", "N", "Preload F = ΔL/δ_S", display_unit="kN", symbol="F_V", step="ASTM E1685"
+    ),
+    Output(
+        "elongation",
+        "m",
+        "Mechanical elongation ΔL = F δ_S",
+        display_unit="mm",
+        symbol="ΔL",
+        step="ASTM E1685",
+    ),
     Output(
         "ultrasonic_length_change",
         "m",
         "Ultrasonic change in length ΔL/S_F, at the zero reading's temperature",
         display_unit="mm",
+        symbol="ΔL_U",
+        step="ASTM E1685",
     ),
     Output(
         "thermal_length_change",
         "m",
         "Apparent change from the temperature alone, τ L_U ΔT",
         display_unit="mm",
+        symbol="ΔL_T",
+        step="ASTM E1685",
     ),
     Output(
         "time_of_flight_change",
         "s",
         "Change in round-trip time the instrument reads (stress and temperature)",
         display_unit="µs",
+        symbol="Δt",
+        step="ASTM E1685",
     ),
-    Output("bolt_compliance", "m/N", "δ_S of the joint model (VDI 2230-1 R3)"),
+    Output(
+        "bolt_compliance",
+        "m/N",
+        "δ_S of the joint model (VDI 2230-1 R3)",
+        symbol="δ_S",
+        step="VDI 2230-1 R3",
+    ),
     Output(
         "effective_length",
         "m",
         "Length of a bar of the stress area with the bolt's compliance, E A_s δ_S",
         display_unit="mm",
+        symbol="L_eff",
+        step="ASTM E1685",
     ),
-    Output("bolt_stress", "Pa", "Axial stress F/A_s", display_unit="MPa"),
+    Output(
+        "bolt_stress",
+        "Pa",
+        "Axial stress F/A_s",
+        display_unit="MPa",
+        symbol="σ_S",
+        step="ASTM E1685",
+    ),
 )
 
 

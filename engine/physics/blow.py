@@ -531,7 +531,7 @@ def blow_gains_nothing(rotation: Any, torque_after: Any, torque_before: Any) -> 
 
     .. math::
         \varphi \le 10^{-12}\ \text{rad} \quad\lor\quad
-        T - T_0 \le 10^{-12}\max(|T|, 1\ \text{N·m})
+        T - T_0 \le 10^{-12}\max(|T|, 1\ \text{N}\cdot\text{m})
 
     Parameters
     ----------

@@ -151,56 +151,85 @@ CHECK_INPUTS: tuple[Param, ...] = (
 )
 
 CHECK_OUTPUTS: tuple[Output, ...] = (
-    Output("fastener", "1", "The fastener resolved from the inputs", kind="str"),
+    Output(
+        "fastener",
+        "1",
+        "The fastener resolved from the inputs",
+        kind="str",
+        symbol="",
+        step="ISO 4017",
+    ),
     Output(
         "surface_pressure_head",
         "Pa",
         "Surface pressure under the head (or washer) at the largest assembly preload, "
         "p = F_M,max / A_p (VDI 2230-1 R10)",
         display_unit="MPa",
+        symbol="p_M",
+        step="VDI 2230-1 R10",
     ),
     Output(
         "surface_pressure_head_working",
         "Pa",
         "Surface pressure under the head (or washer) at working_bolt_force (VDI 2230-1 R10)",
         display_unit="MPa",
+        symbol="p_B",
+        step="VDI 2230-1 R10",
     ),
     Output(
         "surface_pressure_nut",
         "Pa",
         "Surface pressure under the nut at the largest assembly preload (VDI 2230-1 R10)",
         display_unit="MPa",
+        symbol="p_M,nut",
+        step="VDI 2230-1 R10",
     ),
     Output(
         "limiting_surface_pressure",
         "Pa",
         "Limiting surface pressure p_G used (clamped_material or as given)",
         display_unit="MPa",
+        symbol="p_G",
+        step="VDI 2230-1 R10",
     ),
-    Output("bearing_area", "m^2", "Bearing area A_p on the clamped part under the head/washer"),
+    Output(
+        "bearing_area",
+        "m^2",
+        "Bearing area A_p on the clamped part under the head/washer",
+        symbol="A_p",
+        step="VDI 2230-1 R10",
+    ),
     Output(
         "min_engagement_length",
         "m",
         "Shortest engagement, entry chamfers (2P) included, for which a bolt at its upper "
         "strength 1.2 R_m breaks before a thread strips (VDI 2230-1 R11, Alexander)",
         display_unit="mm",
+        symbol="m_eff,min",
+        step="VDI 2230-1 R11",
     ),
     Output(
         "stripping_force",
         "N",
         "Force that strips the weaker thread at engagement_length (VDI 2230-1 R11)",
         display_unit="kN",
+        symbol="F_mGM",
+        step="VDI 2230-1 R11",
     ),
     Output(
         "bolt_breaking_force",
         "N",
         "1.2 R_m A_s: the upper breaking force the threads must exceed (VDI 2230-1 R11)",
         display_unit="kN",
+        symbol="F_mS",
+        step="VDI 2230-1 R11",
     ),
     Output(
         "drive_torque_limit",
         "N*m",
         "Test torque of the hex key the head takes (ISO 2936): the drive's limit",
+        symbol="M_prüf",
+        step="ISO 2936",
     ),
 )
 
