@@ -2045,18 +2045,24 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
         "R7/R8 at service_temperature: R_p0.2(T) = R_p0.2 × R_p0.2,T/R_p0.2,20°C of the class "
         "(ISO 898-1 Annex A), the yield strength R7 and R8 use (null at room temperature)",
         display_unit="MPa",
+        symbol="R_p0.2,T",
+        step="VDI 2230-1 R7",
     ),
     Output(
         "bolt_modulus_ratio_at_temperature",
         "1",
         "R4 at service_temperature: E_S,T/E_S,RT of the bolt (steel table), in ΔF_Vth (null at "
         "room temperature)",
+        symbol="E_S,T/E_S,RT",
+        step="VDI 2230-1 R4",
     ),
     Output(
         "plate_modulus_ratio_at_temperature",
         "1",
         "R4 at service_temperature: E_P,T/E_P,RT of the plates, δ_P/Σ(δ_i E_i,RT/E_i,T), in "
         "ΔF_Vth (null at room temperature)",
+        symbol="E_P,T/E_P,RT",
+        step="VDI 2230-1 R4",
     ),
     Output(
         "diagram_deformation",
