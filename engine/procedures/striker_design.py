@@ -332,6 +332,21 @@ def nearest_passing(
     )
 
 
+def _round_to(values: Array, x0: Array, digits: int, away: bool) -> Array:
+    """Changed values at ``digits`` significant digits: nearest, or away from the base."""
+    out = []
+    for v, b in zip(values.tolist(), x0.tolist(), strict=True):
+        if v == b or v == 0.0:
+            out.append(b if v == b else v)
+            continue
+        q = 10.0 ** (digits - 1 - math.floor(math.log10(abs(v))))
+        if not away:
+            out.append(round(v * q) / q)
+        else:
+            out.append((math.ceil(v * q - 1e-9) if v > b else math.floor(v * q + 1e-9)) / q)
+    return np.array(out)
+
+
 def rounded(
     design: Array, x0: Array, judge: Callable[[Array], bool], digits: Sequence[int] = (3, 4, 5)
 ) -> Array:
@@ -353,22 +368,19 @@ def rounded(
     Returns
     -------
     design : ndarray
-        The first rounding that passes, else ``design`` unchanged; unchanged variables
-        keep their base value exactly
+        The first rounding that passes (to the nearest, else away from the base: a
+        little more of the change that made it pass), else ``design`` unchanged;
+        unchanged variables keep their base value exactly
 
     Examples
     --------
     >>> d = rounded(np.array([61234.5, 2.0]), np.array([60000.0, 2.0]), lambda d: d[0] > 61200)
-    >>> d.tolist()  # 61200 fails: four digits
-    [61230.0, 2.0]
+    >>> d.tolist()  # 61200 fails, 61300 (away from 60000) passes
+    [61300.0, 2.0]
     """
     for p in digits:
-        trial = np.array(
-            [
-                b if v == b or v == 0.0 else round(v, p - 1 - math.floor(math.log10(abs(v))))
-                for v, b in zip(design.tolist(), x0.tolist(), strict=True)
-            ]
-        )
-        if judge(trial):
-            return trial
+        for away in (False, True):
+            trial = _round_to(design, x0, p, away)
+            if judge(trial):
+                return trial
     return design
