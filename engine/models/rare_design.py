@@ -290,11 +290,11 @@ SEARCH = Rung(
     "closed_form",
     "random designs in shells around the design, judged at once by impact.rare's closed "
     "form (its array path), then the nearest passing one pulled towards the design (line, "
-    "one variable at a time, shrinking random steps); its changes rounded to 3 significant "
-    "digits where the rounded design still passes",
+    "shrinking random steps, one variable at a time); its changes rounded to 3, 4 or 5 "
+    "significant digits, the fewest where the rounded design still passes",
     _closed_form_estimate,
     typical_error="impact.rare's closed form's (1e-3 to 1e-2, bench/accuracy_striker.py) for "
-    "the design found: a margin smaller than that may not hold in the simulation; the "
+    "the design found, which keeps the engagement margin asked for (0.02) beyond it; the "
     "search is local",
     typical_time="about 0.1 s (some 7,000 designs)",
     steps=(
