@@ -25,6 +25,7 @@ from .joint import VDI2230 as JOINT_VDI2230
 from .nutrunner import NUTRUNNER_DRIVE
 from .preload import CONTROL as PRELOAD_CONTROL
 from .preload import TIGHTENING as PRELOAD_TIGHTENING
+from .rare_design import RARE_DESIGN
 from .rare_impact import RARE_IMPACT
 from .trace import ANALYSIS as TRACE_ANALYSIS
 from .trace import BATCH as TRACE_BATCH
@@ -50,6 +51,7 @@ MODELS: tuple[ModelSpec, ...] = (
     TRACE_PROGRAM,
     TRACE_BATCH,
     JOINT_CLAMP_CAPABILITY,
+    RARE_DESIGN,
 )
 
 

@@ -376,7 +376,12 @@ def evaluate(
     return {k: float(v) if np.ndim(v) == 0 else v for k, v in out.items()}
 
 
-def choose(values: Mapping[str, Array], objective: str) -> tuple[int, str, int]:
+def choose(
+    values: Mapping[str, Array],
+    objective: str,
+    order: tuple[str, str] = ("wire_diameter", "mass"),
+    most: str = "margin_stress_at_stroke",
+) -> tuple[int, str, int]:
     r"""The spring to name, the limit that binds, and how many candidates pass.
 
     .. math::
@@ -391,6 +396,11 @@ def choose(values: Mapping[str, Array], objective: str) -> tuple[int, str, int]:
     objective : {"thinnest", "margin"}
         Thinnest wire (then the lightest of its springs), or most stress margin at
         full stroke, [-]
+    order : (str, str)
+        The values "thinnest" ranks by, first then second (a disc pack: the fewest
+        discs, then the smallest disc)
+    most : str
+        The margin "margin" maximises
 
     Returns
     -------
@@ -423,10 +433,10 @@ def choose(values: Mapping[str, Array], objective: str) -> tuple[int, str, int]:
     passing = int(ok.sum())
     if passing:
         if objective == "thinnest":
-            wire = np.where(ok, np.asarray(values["wire_diameter"]), np.inf)
-            j = int(np.lexsort((np.asarray(values["mass"]), wire))[0])
+            first = np.where(ok, np.asarray(values[order[0]], dtype=float), np.inf)
+            j = int(np.lexsort((np.asarray(values[order[1]]), first))[0])
         else:
-            j = int(np.argmax(np.where(ok, np.asarray(values["margin_stress_at_stroke"]), -np.inf)))
+            j = int(np.argmax(np.where(ok, np.asarray(values[most]), -np.inf)))
         return j, names[int(np.argmin(m[:, j]))][len("margin_") :], passing
     best, best_c, best_j = -np.inf, 0, -1
     for c in range(len(names)):
@@ -440,6 +450,415 @@ def choose(values: Mapping[str, Array], objective: str) -> tuple[int, str, int]:
         best_j = int(np.argmax(m.min(axis=0)))
         best_c = int(np.argmin(m[:, best_j]))
     return best_j, names[best_c][len("margin_") :], 0
+
+
+# --------------------------------------------------------------------------
+# Disc packs (DIN EN 16983, DIN 2093 standard discs)
+# --------------------------------------------------------------------------
+
+SPRING_KINDS = ("helical", "disc_pack")
+DISC_SERIES = ("any", "A", "B", "C")
+#: The checks of a disc pack, in the order they are reported; each margin ≥ 0 passes.
+DISC_CHECKS = (
+    "outer_diameter",
+    "inner_diameter",
+    "disc_preload",
+    "disc_deflection",
+    "disc_stress_om",
+    "stack_length",
+)
+#: Largest deflection of a disc in use, as a share of h0: DIN 2093 tabulates the force
+#: and stresses at 0.75 h0, and the measured curve leaves the Almen–László line nearer
+#: flat (the discs roll on their edges).
+DISC_MAX_DEFLECTION = 0.75
+#: Smallest deflection at the setting under fatigue loading, as a share of h0
+#: (DIN 2093: 0.15…0.20 h0, so that no crack starts at the upper inner edge).
+DISC_MIN_PRELOAD = 0.15
+#: Discs nested in parallel the search tries (more makes the friction of the pack large).
+MAX_PARALLEL = 4
+#: E and μ of the discs (DIN 2093's table: spring steel, 206 GPa, 0.3).
+DISC_ELASTIC_MODULUS = 206e9
+DISC_POISSON = 0.3
+
+#: DIN 2093 standard disc springs of groups 1 and 2 (t ≤ 6 mm, no contact flats):
+#: (De, Di, t, h0) in mm per series: A (De/t ≈ 18, h0/t ≈ 0.4), B (≈ 28, ≈ 0.75),
+#: C (≈ 40, ≈ 1.3). Group 3 (t > 6 mm, with contact flats and K4) is left out.
+#: Series A 8…31.5 and 40 were checked against a public reprint of DIN 2093's table
+#: (the force and σ_OM printed at its deflection, tests/models/clutch_spring); the other
+#: rows are transcribed and checked only against the series' ratios.
+DISC_TABLE: dict[str, tuple[tuple[float, float, float, float], ...]] = {
+    "A": (
+        (8.0, 4.2, 0.4, 0.2),
+        (10.0, 5.2, 0.5, 0.25),
+        (12.5, 6.2, 0.7, 0.3),
+        (14.0, 7.2, 0.8, 0.3),
+        (16.0, 8.2, 0.9, 0.35),
+        (18.0, 9.2, 1.0, 0.4),
+        (20.0, 10.2, 1.1, 0.45),
+        (22.5, 11.2, 1.25, 0.5),
+        (25.0, 12.2, 1.5, 0.55),
+        (28.0, 14.2, 1.5, 0.65),
+        (31.5, 16.3, 1.75, 0.7),
+        (35.5, 18.3, 2.0, 0.8),
+        (40.0, 20.4, 2.25, 0.9),
+        (45.0, 22.4, 2.5, 1.0),
+        (50.0, 25.4, 3.0, 1.1),
+        (56.0, 28.5, 3.0, 1.3),
+        (63.0, 31.0, 3.5, 1.4),
+        (71.0, 36.0, 4.0, 1.6),
+        (80.0, 41.0, 5.0, 1.7),
+        (90.0, 46.0, 5.0, 2.0),
+        (100.0, 51.0, 6.0, 2.2),
+        (112.0, 57.0, 6.0, 2.5),
+    ),
+    "B": (
+        (8.0, 4.2, 0.3, 0.25),
+        (10.0, 5.2, 0.4, 0.3),
+        (12.5, 6.2, 0.5, 0.35),
+        (14.0, 7.2, 0.5, 0.4),
+        (16.0, 8.2, 0.6, 0.45),
+        (18.0, 9.2, 0.7, 0.5),
+        (20.0, 10.2, 0.8, 0.55),
+        (22.5, 11.2, 0.8, 0.65),
+        (25.0, 12.2, 0.9, 0.7),
+        (28.0, 14.2, 1.0, 0.8),
+        (31.5, 16.3, 1.25, 0.9),
+        (35.5, 18.3, 1.25, 1.0),
+        (40.0, 20.4, 1.5, 1.15),
+        (45.0, 22.4, 1.75, 1.3),
+        (50.0, 25.4, 2.0, 1.4),
+        (56.0, 28.5, 2.0, 1.6),
+        (63.0, 31.0, 2.5, 1.75),
+        (71.0, 36.0, 2.5, 2.0),
+        (80.0, 41.0, 3.0, 2.3),
+        (90.0, 46.0, 3.5, 2.5),
+        (100.0, 51.0, 3.5, 2.8),
+        (112.0, 57.0, 4.0, 3.2),
+        (125.0, 64.0, 5.0, 3.5),
+        (140.0, 72.0, 5.0, 4.0),
+        (160.0, 82.0, 6.0, 4.5),
+    ),
+    "C": (
+        (8.0, 4.2, 0.2, 0.25),
+        (10.0, 5.2, 0.25, 0.3),
+        (12.5, 6.2, 0.35, 0.45),
+        (14.0, 7.2, 0.35, 0.45),
+        (16.0, 8.2, 0.4, 0.5),
+        (18.0, 9.2, 0.45, 0.6),
+        (20.0, 10.2, 0.5, 0.65),
+        (22.5, 11.2, 0.6, 0.8),
+        (25.0, 12.2, 0.7, 0.9),
+        (28.0, 14.2, 0.8, 1.0),
+        (31.5, 16.3, 0.8, 1.05),
+        (35.5, 18.3, 0.9, 1.15),
+        (40.0, 20.4, 1.0, 1.3),
+        (45.0, 22.4, 1.25, 1.6),
+        (50.0, 25.4, 1.25, 1.6),
+        (56.0, 28.5, 1.5, 1.95),
+        (63.0, 31.0, 1.8, 2.35),
+        (71.0, 36.0, 2.0, 2.6),
+        (80.0, 41.0, 2.25, 2.95),
+        (90.0, 46.0, 2.5, 3.2),
+        (100.0, 51.0, 2.7, 3.5),
+        (112.0, 57.0, 3.0, 3.9),
+        (125.0, 64.0, 3.5, 4.5),
+        (140.0, 72.0, 3.8, 4.9),
+        (160.0, 82.0, 4.3, 5.6),
+        (180.0, 92.0, 4.8, 6.2),
+        (200.0, 102.0, 5.5, 7.0),
+    ),
+}
+
+
+def disc_designation(series: str, outer: float, inner: float, t: float, h0: float) -> str:
+    """The disc as DIN 2093 names it, with its dimensions in mm.
+
+    >>> disc_designation("B", 0.040, 0.0204, 0.0015, 0.00115)
+    'DIN 2093 B 40 (40 × 20.4 × 1.5, h0 1.15)'
+    """
+    mm = [f"{v * 1e3:g}" for v in (outer, inner, t, h0)]
+    return f"DIN 2093 {series} {mm[0]} ({mm[0]} × {mm[1]} × {mm[2]}, h0 {mm[3]})"
+
+
+def disc_candidates(series: str) -> dict[str, Any]:
+    r"""Every standard disc of the series, each with 1…4 discs nested in parallel.
+
+    .. math::
+        (D_e, D_i, t, h_0) \in \text{DIN 2093 A, B, C}, \quad n = 1 \dots 4
+
+    Parameters
+    ----------
+    series : {"any", "A", "B", "C"}
+        The series to search, [-]
+
+    Returns
+    -------
+    candidates : dict
+        ``outer``, ``inner``, ``thickness``, ``cone_height`` [m], ``parallel`` [-]
+        arrays, and ``series`` (the letter of each)
+
+    Notes
+    -----
+    :data:`DISC_TABLE`; the space is checked by :func:`evaluate_discs`, so a disc a
+    little too large stays a candidate to name when nothing fits.
+
+    Examples
+    --------
+    >>> c = disc_candidates("B")
+    >>> c["outer"].size, float(c["parallel"].max())
+    (100, 4.0)
+    """
+    rows = [(k, r) for k in ("A", "B", "C") if series in ("any", k) for r in DISC_TABLE[k]]
+    dims = np.array([r for _, r in rows]) * 1e-3
+    par = np.arange(1.0, MAX_PARALLEL + 1.0)
+    idx, n = (a.ravel() for a in np.meshgrid(np.arange(len(rows)), par, indexing="ij"))
+    return {
+        "outer": dims[idx, 0],
+        "inner": dims[idx, 1],
+        "thickness": dims[idx, 2],
+        "cone_height": dims[idx, 3],
+        "parallel": n,
+        "series": np.array([rows[i][0] for i in idx]),
+    }
+
+
+def disc_set_deflection(force: float, c: Mapping[str, Any]) -> Array:
+    r"""Deflection of each disc at which the pack carries the force at the setting.
+
+    .. math::
+        n\,F(s_1) = F_1, \quad 0 \le s_1 \le 2 h_0
+
+    Parameters
+    ----------
+    force : float
+        F₁, [N]
+    c : mapping
+        :func:`disc_candidates`
+
+    Returns
+    -------
+    s1 : ndarray
+        Per disc, [m]; 2 h0 where even that does not carry F₁
+
+    Notes
+    -----
+    :func:`engine.physics.springs.disc_force` and
+    :func:`engine.physics.springs.stack_force` (frictionless) solved by bisection, all
+    candidates at once. The discs of DIN 2093 have h0/t ≤ 1.33 < √2: their force rises
+    over the whole deflection, so the root is unique.
+
+    Examples
+    --------
+    >>> c = {"outer": np.array([0.040]), "inner": np.array([0.0204]),
+    ...      "thickness": np.array([0.00225]), "cone_height": np.array([0.0009]),
+    ...      "parallel": np.array([1.0])}
+    >>> round(float(disc_set_deflection(6500.0, c)[0]) * 1e3, 4)  # F(0.675 mm) = 6500 N
+    0.675
+    """
+    lo = np.zeros_like(c["outer"])
+    hi = 2.0 * c["cone_height"]
+
+    def pack(s: Array) -> Array:
+        single = sp.disc_force(
+            s,
+            c["outer"],
+            c["inner"],
+            c["thickness"],
+            c["cone_height"],
+            DISC_ELASTIC_MODULUS,
+            DISC_POISSON,
+        )
+        return np.asarray(sp.stack_force(single, 1) * c["parallel"])
+
+    enough = pack(hi) >= force
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        below = pack(mid) < force
+        lo = np.where(below, mid, lo)
+        hi = np.where(below, hi, mid)
+    return np.where(enough, 0.5 * (lo + hi), 2.0 * c["cone_height"])
+
+
+def discs_in_series(
+    c: Mapping[str, Any], s1: Array, stroke: float, set_length: float, objective: str
+) -> Array:
+    r"""Discs (or packs) in series per candidate, for the objective.
+
+    .. math::
+        i_s = \frac{s_h}{0.75 h_0 - s_1}, \qquad
+        i_L = \frac{L_1}{h_0 + n t - s_1}
+
+    Parameters
+    ----------
+    c : mapping
+        :func:`disc_candidates`
+    s1 : ndarray
+        Per-disc deflection at the setting, [m]
+    stroke : float
+        s_h, [m]
+    set_length : float
+        L₁, the pocket, [m]
+    objective : {"thinnest", "margin"}
+        Fewest packs that keep every disc within 0.75 h0 at full stroke (rounded up),
+        or most that fit the pocket at the setting (rounded down), [-]
+
+    Returns
+    -------
+    i : ndarray
+        Packs in series, ≥ 1, [-]
+
+    Notes
+    -----
+    The stroke shares out over the i packs in series: s₂ = s₁ + s_h/i per disc
+    (DIN EN 16983, stacks in series). Where s₁ ≥ 0.75 h0 already no i keeps the
+    deflection (the pack is too weak): the fewest takes i_L, and the other way round.
+
+    Examples
+    --------
+    >>> c = {"thickness": np.array([0.0015]), "cone_height": np.array([0.00115]),
+    ...      "parallel": np.array([1.0])}
+    >>> discs_in_series(c, np.array([0.0005]), 0.003, 0.08, "thinnest").tolist()  # 3/0.3625
+    [9.0]
+    """
+    room = DISC_MAX_DEFLECTION * c["cone_height"] - s1
+    with np.errstate(divide="ignore", invalid="ignore"):
+        i_s = np.where(room > 0.0, stroke / room, np.inf)
+        i_l = set_length / (c["cone_height"] + c["parallel"] * c["thickness"] - s1)
+    fewest = np.where(np.isfinite(i_s), np.ceil(i_s - 1e-9), np.floor(i_l + 1e-9))
+    most = np.where(np.isfinite(i_l) & (i_l >= 1.0), np.floor(i_l + 1e-9), np.ceil(i_s - 1e-9))
+    i = fewest if objective == "thinnest" else most
+    return np.maximum(np.where(np.isfinite(i), i, 1.0), 1.0)
+
+
+def evaluate_discs(
+    c: Mapping[str, Any],
+    s1: Array,
+    series: Array,
+    force: float,
+    stroke: float,
+    space: Mapping[str, Any],
+) -> dict[str, Any]:
+    r"""Every DIN EN 16983 quantity and check margin of the disc packs, all at once.
+
+    .. math::
+        s_2 = s_1 + \frac{s_h}{i}, \; F_2 = n F(s_2), \;
+        L_0 = i (h_0 + n t), \; L_1 = L_0 - i s_1, \; L_2 = L_1 - s_h, \;
+        L_c = i n t, \; |\sigma_{OM}(s_2)| \le R_e
+
+    Parameters
+    ----------
+    c : mapping
+        :func:`disc_candidates`
+    s1, series : ndarray
+        Per-disc deflection at the setting [m], packs in series i [-]
+    force : float
+        F₁, [N]
+    stroke : float
+        s_h, [m]
+    space : mapping
+        ``max_outer_diameter``, ``min_inner_diameter``, ``max_set_length`` [m],
+        ``disc_yield_strength`` [Pa], ``dynamic_load``
+
+    Returns
+    -------
+    values : dict
+        The pack's quantities and ``margin_<check>`` for each of :data:`DISC_CHECKS`,
+        arrays of the candidates' shape
+
+    Notes
+    -----
+    DIN EN 16983 through :func:`~engine.physics.springs.disc_force`,
+    :func:`~engine.physics.springs.stack_force` and
+    :func:`~engine.physics.springs.disc_stresses` (σ_OM, the static check, against
+    R_e). Margins: outer 1 − De/D_e,max; inner 1 − D_i,min/Di; deflection
+    1 − s₂/(0.75 h0); preload (s₁ − s_min)/h0 with s_min = 0.15 h0 under dynamic
+    load (DIN 2093), else 0; σ_OM 1 − |σ_OM|/R_e; length 1 − L₁/L_set (a shim fills
+    the rest of the pocket).
+
+    Examples
+    --------
+    >>> c = {"outer": np.array([0.040]), "inner": np.array([0.0204]),
+    ...      "thickness": np.array([0.00225]), "cone_height": np.array([0.0009]),
+    ...      "parallel": np.array([1.0])}
+    >>> v = evaluate_discs(c, np.array([0.0003]), np.array([2.0]), 3000.0, 0.00075,
+    ...     {"max_outer_diameter": 0.041, "min_inner_diameter": 0.02,
+    ...      "max_set_length": 0.01, "disc_yield_strength": 1.4e9, "dynamic_load": False})
+    >>> round(float(v["disc_stroke_deflection"][0]) * 1e3, 9)  # 0.3 + 0.75/2
+    0.675
+    >>> round(float(v["free_length"][0]) * 1e3, 9)  # 2 (0.9 + 2.25)
+    6.3
+    """
+    de, di, t, h0, n = (
+        np.asarray(c[k], dtype=float)
+        for k in ("outer", "inner", "thickness", "cone_height", "parallel")
+    )
+    i = np.asarray(series, dtype=float)
+    s2 = s1 + stroke / i
+    single = sp.disc_force(s2, de, di, t, h0, DISC_ELASTIC_MODULUS, DISC_POISSON)
+    f2 = np.asarray(sp.stack_force(single, 1)) * n
+    om = np.asarray(sp.disc_stresses(s2, de, di, t, h0, DISC_ELASTIC_MODULUS, DISC_POISSON)["OM"])
+    free = i * (h0 + n * t)
+    l1 = free - i * s1
+    r_e = float(space["disc_yield_strength"])
+    s_min = DISC_MIN_PRELOAD * h0 if space["dynamic_load"] else 0.0 * h0
+    margins = {
+        "outer_diameter": 1.0 - de / float(space["max_outer_diameter"]),
+        "inner_diameter": 1.0 - float(space["min_inner_diameter"]) / di,
+        "disc_preload": (s1 - s_min) / h0,
+        "disc_deflection": 1.0 - s2 / (DISC_MAX_DEFLECTION * h0),
+        "disc_stress_om": 1.0 - np.abs(om) / r_e,
+        "stack_length": 1.0 - l1 / float(space["max_set_length"]),
+    }
+    out: dict[str, Any] = {
+        "disc_outer_diameter": de,
+        "disc_inner_diameter": di,
+        "disc_thickness": t,
+        "disc_cone_height": h0,
+        "discs_parallel": n,
+        "discs_series": i,
+        "disc_count": n * i,
+        "disc_set_deflection": s1 + 0.0 * de,
+        "disc_stroke_deflection": s2,
+        "disc_stress_om": np.abs(om),
+        "set_deflection": i * s1,
+        "stroke_force": f2,
+        "free_length": free,
+        "set_length": l1,
+        "stroke_length": l1 - stroke,
+        "solid_length": i * n * t,
+        "shim_length": float(space["max_set_length"]) - l1,
+        "permissible_stress": r_e + 0.0 * de,
+        **{f"margin_{k}": m for k, m in margins.items()},
+    }
+    return {k: np.asarray(v, dtype=float) for k, v in out.items()}
+
+
+def disc_pack_design(x: Mapping[str, Any], force: float, stroke: float) -> dict[str, Any]:
+    """The clutch's disc pack: candidates, deflection at the setting, packs in series,
+    checks, choice (the disc steps above)."""
+    c = disc_candidates(str(x["disc_series"]))
+    s1 = disc_set_deflection(force, c)
+    i = discs_in_series(c, s1, stroke, float(x["max_set_length"]), x["objective"])
+    values = evaluate_discs(c, s1, i, force, stroke, x)
+    j, binding, passing = choose(
+        values, x["objective"], ("disc_count", "disc_outer_diameter"), "margin_disc_stress_om"
+    )
+    out: dict[str, Any] = {k: float(np.asarray(v)[j]) for k, v in values.items()}
+    for k in ("discs_parallel", "discs_series", "disc_count"):
+        out[k] = int(out[k])
+    out["disc_designation"] = disc_designation(
+        str(c["series"][j]),
+        out["disc_outer_diameter"],
+        out["disc_inner_diameter"],
+        out["disc_thickness"],
+        out["disc_cone_height"],
+    )
+    out.update(
+        binding_limit=binding,
+        candidates_checked=int(c["outer"].size),
+        candidates_passing=passing,
+    )
+    return out
 
 
 def spring_design(x: Mapping[str, Any]) -> dict[str, Any]:
@@ -458,6 +877,10 @@ def spring_design(x: Mapping[str, Any]) -> dict[str, Any]:
             field="flank_friction",
         )
     set_length = float(x["max_set_length"])
+    if x.get("spring_kind", "helical") == "disc_pack":
+        pack = disc_pack_design(x, force, stroke)
+        pack.update(set_force=force, stroke=stroke)
+        return pack
     if set_length <= stroke:
         raise InputOutOfRange(
             f"max_set_length {set_length * 1e3:.4g} mm must exceed the stroke "

@@ -45,6 +45,7 @@ VALIDATION: dict[str, tuple[str, ...]] = {
         "test_springs_textbooks.py",
     ),
     "impact.rare": ("test_rare_impact_002.py",),
+    "impact.rare_design": ("test_rare_impact_002.py",),
     "preload.tightening": (
         "test_preload_vdi2230.py",
         "test_preload_vdi2230_coarse.py",

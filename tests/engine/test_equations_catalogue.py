@@ -89,6 +89,7 @@ KNOWN_STEPS = {
         "buckling_deflection",
     ),
     "impact.rare": ("release_speed_of", "min_return_spring_rate", "relock_margin"),
+    "impact.rare_design": ("design_box", "nearest_passing", "rounded"),
     "blow.joint": (
         "stress_area",
         "torque_limit",
