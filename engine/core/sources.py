@@ -955,6 +955,20 @@ SOURCES: dict[str, Source] = {
             "compares with [RICHTER-E].",
             reconstruction="ASME B31.1 itself was not read.",
         ),
+        Source(
+            id="STEELPY-VDI",
+            kind="web page",
+            title="steelpy: VDI 2230 bolt design tool (steelpy/design/codes/bolt/VDI2230.py)",
+            authors="S. Vargas-Ortega (open project)",
+            year="read 2026",
+            published="github.com/svortega/steelpy",
+            covers="VDI 2230-1's limit of the eccentric relations on the interface c_T as it "
+            "reproduces them: G = h_min + d_W (R0/1, eq. 5.1/38) of a through-bolted joint, "
+            "G' = (1.5…2) d_W of a tapped one (engine.physics.joint.interface_limit; "
+            "joint.vdi2230's warning where c_T > G).",
+            reconstruction="VDI 2230-1's own text was not read; h18340637145/vdi2230 states the "
+            "same G and 1.5 d_W (docs/sources.md).",
+        ),
     )
 }
 
@@ -1023,6 +1037,7 @@ _PATTERNS: tuple[tuple[re.Pattern[str], str | None], ...] = (
     (re.compile(r"\[NFG-898T\]"), "NFG-898T"),
     (re.compile(r"\[RICHTER-E\]"), "RICHTER-E"),
     (re.compile(r"\[ASME-B31\.1-E\]"), "ASME-B31.1-E"),
+    (re.compile(r"\[STEELPY-VDI\]"), "STEELPY-VDI"),
 )
 
 

@@ -644,6 +644,9 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         budget_s=None,
     ).results
     required = float(joint["required_preload_min"])  # type: ignore[arg-type]
+    # R7's R_p0.2 is the joint's: at service_temperature, its R_p0.2(T) (absent: room)
+    hot = joint.get("yield_strength_at_temperature")
+    yield_strength = bolt.yield_strength if hot is None else float(hot)
     clamp = cap.ClampJoint(
         bolt.pitch,
         bolt.pitch_diameter,
@@ -652,7 +655,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         bolt.hole_diameter,
         float(joint["smallest_diameter"]),  # type: ignore[arg-type]
         float(joint["smallest_area"]),  # type: ignore[arg-type]
-        bolt.yield_strength,
+        yield_strength,
         m_u,
     )
     nu = float(x["utilization"])
@@ -726,6 +729,12 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "at the mean torque and the laws' ±3σ friction box (VDI 2230-1 R5); a nut's proof "
         "load, where joint.vdi2230 caps F_M,zul by it, is not applied here",
     ]
+    if hot is not None:
+        notes.append(
+            f"F_M,zul and ν at service_temperature: R_p0.2(T) = "
+            f"{quantity(yield_strength, 'MPa', '.4g')} from joint.vdi2230's R7 (ISO 898-1 "
+            "Annex A for the bolt's class)"
+        )
     if category in ("A", "B"):
         notes.append(
             "VDI/VDE 2862 itself was not read: its minimum is as one public secondary source "

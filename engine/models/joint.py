@@ -1325,6 +1325,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "(δ_P = 4 l_K/(E π (D_A² − d_h²))); the head bears on the sleeve's face only, so "
             "the surface pressure (R10), computed on d_W, is higher than stated"
         )
+    warnings += _interface_limit_warning(x, bolt)
     if s["cone_tangent"] <= jt.MIN_CONE_TANGENT:
         warnings.append(
             f"plates very thin against d_W: the cone tangent is held at {jt.MIN_CONE_TANGENT}"
@@ -1482,6 +1483,33 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         warnings=warnings,
         series=_series(ctx, s, x),
     )
+
+
+def _interface_limit_warning(x: Mapping[str, Any], bolt: Bolt) -> list[str]:
+    """VDI 2230-1's limit c_T ≤ G of the eccentric relations, where c_T exceeds it (one design)."""
+    if x.get("interface_length") is None or x.get("interface_width") is None:
+        return []
+    c_t, d_w = float(x["interface_length"]), bolt.bearing_outer_diameter
+    tapped = x["joint_type"] == "tapped"
+    plates = [x.get(f"plate{i}_thickness") for i in range(1, MAX_PLATES + 1)]
+    h_min = min([float(h) for h in plates if h is not None and float(h) > 0.0] or [0.0])
+    limit = float(jt.interface_limit(d_w, h_min, str(x["joint_type"])))
+    if c_t <= limit * (1.0 + 1e-12):
+        return []
+    low, high = jt.TAPPED_INTERFACE_LIMIT
+    rule = (
+        f"G' = ({low:g}…{high:g}) d_W = {low * d_w * 1e3:.4g}…{high * d_w * 1e3:.4g} mm of a "
+        f"tapped joint (d_W = {d_w * 1e3:.4g} mm; the lower end applied)"
+        if tapped
+        else f"G = d_W + h_min = {d_w * 1e3:.4g} + {h_min * 1e3:.4g} = {limit * 1e3:.4g} mm of "
+        "a through-bolted joint"
+    )
+    return [
+        f"interface_length c_T = {c_t * 1e3:.4g} mm exceeds VDI 2230-1's limit {rule}: its "
+        "eccentric relations (I_Bers, I_BT, Φ*_en, F_KA, σ_SAb) hold only for c_T ≤ G; the "
+        f"interface beyond G is not clamped by this bolt. Give c_T ≤ {limit * 1e3:.4g} mm (the "
+        "part beyond G taken as not clamped), or read the eccentric figures as outside VDI's range"
+    ]
 
 
 def _temperature_notes(

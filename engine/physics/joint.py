@@ -2436,6 +2436,52 @@ def interface_section(width: float, length: float, hole_diameter: float) -> tupl
     return width * length - _area(hole_diameter), width * length**3 / 12.0
 
 
+#: VDI 2230-1's G' = (1.5…2) d_W of a tapped joint, as multiples of d_W (the lower end is
+#: the one the open implementations apply without a counterbore).
+TAPPED_INTERFACE_LIMIT = (1.5, 2.0)
+
+
+def interface_limit(bearing_diameter: Any, thinnest_plate: Any, joint_type: str) -> Any:
+    r"""The widest interface c_T the eccentric relations hold for, VDI 2230-1's G.
+
+    .. math::
+        G = d_W + h_{min}\ \text{(through-bolted)},\qquad
+        G' = 1.5\,d_W\ \text{(tapped; VDI gives } (1.5 \ldots 2)\,d_W)
+
+    Parameters
+    ----------
+    bearing_diameter : float or array
+        d_W, outer diameter of the head's (or nut's) bearing face, [m]
+    thinnest_plate : float or array
+        h_min, the thinnest clamped plate (unused for a tapped joint), [m]
+    joint_type : str
+        ``"through"`` or ``"tapped"``, [-]
+
+    Returns
+    -------
+    float or array
+        G (through) or the lower end of G' (tapped), [m]
+
+    Notes
+    -----
+    VDI 2230-1 R0 and eqs. (5.1/38), (5.1/39) as the open implementations
+    [STEELPY-VDI] (G = h_min + d_W, G' = (1.5…2) d_W) and h18340637145/vdi2230
+    (G = d_W + h_min, 1.5 d_W tapped) reproduce them. The eccentric relations
+    (I_Bers, I_BT, Φ*_en, F_KA) hold for c_T ≤ G; beyond it the interface
+    is not clamped by this bolt alone.
+
+    Examples
+    --------
+    >>> round(interface_limit(0.01663, 0.020, "through") * 1e3, 2)
+    36.63
+    >>> round(interface_limit(0.01663, 0.020, "tapped") * 1e3, 3)
+    24.945
+    """
+    if joint_type == "tapped":
+        return TAPPED_INTERFACE_LIMIT[0] * bearing_diameter
+    return bearing_diameter + thinnest_plate
+
+
 def opening_ratio(
     load_lever: float,
     bolt_offset: float,
