@@ -914,7 +914,7 @@ PILOT_POINTS = 16_384
 #: heavy tail does not stretch them): its values fall in the bins below and above.
 PILOT_TAIL = 0.0005
 #: Uniform bins over the pilot's range.
-FINE_BINS = 4_096
+FINE_BINS = 16_384
 #: Beyond this share of an output's values in the bins the summary must look into
 #: (a point mass, a pilot that was no fair sample), the merged column is read instead.
 GATHER_SHARE = 0.25
