@@ -11,8 +11,9 @@ and prints the split of each, in CPU seconds of this process: points drawn
 (:func:`engine.studies.plan.plan`), model evaluation (the chunks), the chunks' partial
 summaries (:func:`engine.studies.plan.summarize_chunk`, made where a chunk runs: on its
 worker under Dask, here in this process, so counted as summary work), merge (the values
-put in place, the values near each quantile gathered, the partials combined), quantiles
-and histograms (``_stats`` of every output), rank correlations, the rest of
+put in place, each output counted in fine bins, the partials combined), quantiles and
+histograms (``_stats`` of every output: one pass over the few fine bins that hold them,
+exact), rank correlations, the rest of
 :func:`engine.studies.plan.summarize` (extremes, checks, rung counts), and the share the
 partial summaries, merge and summary take of the whole.
 
