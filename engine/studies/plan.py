@@ -653,10 +653,10 @@ class Merger:
 
     The chunks' partial summaries (:func:`summarize_chunk`; made here for a chunk that
     comes without one) are kept and combined in the chunks' order at the end, and a study
-    of :data:`GATHER_POINTS` points or more
-    counts each output's values in fine bins as the chunks arrive (:class:`FineCounts`,
-    placed by the first chunk to arrive), so :func:`summarize` finds quantiles and
-    histogram in one cheap pass over the few bins that hold them.
+    of :data:`GATHER_POINTS` points or more counts each output's values in fine bins as
+    the chunks arrive (:class:`FineCounts`, placed by the first chunk to arrive), so
+    :func:`summarize` finds quantiles and histogram in one cheap pass over the few bins
+    that hold them.
     """
 
     def __init__(self, n_points: int, outputs: Sequence[str]) -> None:
@@ -716,18 +716,16 @@ class Merger:
         for s in parts:
             for rung, count in s.rungs.items():
                 rungs[rung] = rungs.get(rung, 0) + count
+
+        def shifted(name: str) -> list[Moments | None]:
+            # each chunk's moments, their places counted from the study's first point
+            moments = (s.moments[name] for s in parts)
+            return [
+                None if m is None else m.shifted(a) for a, m in zip(starts, moments, strict=True)
+            ]
+
         summary = ChunkSummary(
-            moments={
-                name: _combined(
-                    [
-                        None if m is None else m.shifted(a)
-                        for a, m in (
-                            (a, s.moments[name]) for a, s in zip(starts, parts, strict=True)
-                        )
-                    ]
-                )
-                for name in self.values
-            },
+            moments={name: _combined(shifted(name)) for name in self.values},
             checks={
                 name: (
                     sum(s.checks[name][0] for s in parts if name in s.checks),
@@ -1034,17 +1032,15 @@ def _stats(
         # histogram from one value times the count and every quantile at that value
         counts, edges = np.histogram(finite[:1], bins=bins, range=(lo, hi))
         counts *= finite.size
-    except ValueError:  # a (near-)constant output: one bin around it
+    except ValueError:  # min and max too close for the bins: one bin around them
         counts, edges = np.array([finite.size]), np.array([lo, hi])
-    if lo == hi or edges.size == 2:
-        quantiles = np.full(len(QUANTILES), lo) if lo == hi else _quantiles(finite)
-        if lo != hi:
-            counts, edges = np.histogram(finite, bins=edges)
+    if lo == hi:
+        quantiles = np.full(len(QUANTILES), lo)
     else:
         ranks = _quantile_ranks(finite.size)
         got = None if fine is None else fine.resolve(finite, ranks, edges[:-1])
         if got is None:
-            counts, edges = np.histogram(finite, bins=edges)
+            counts = np.histogram(finite, bins=edges)[0]
             found = _order_statistics(finite, ranks)
         else:
             found, below = got
