@@ -33,7 +33,17 @@ import numpy as np
 
 from ..core.errors import BudgetExceeded, Cancelled
 from ..core.spec import ModelSpec
-from .plan import ChunkResult, Merger, Plan, Study, chunks, evaluate_chunk, plan, summarize
+from .plan import (
+    ChunkResult,
+    Merger,
+    Plan,
+    Study,
+    chunks,
+    evaluate_chunk,
+    plan,
+    summarize,
+    summarize_chunk,
+)
 
 VECTOR_CHUNK = 65_536
 LOOP_CHUNK = 256
@@ -75,7 +85,7 @@ class InProcess:
         for i, args in enumerate(calls):
             if cancel.is_set():
                 return
-            yield i, evaluate_chunk(*args, cancel=cancel)
+            yield i, summarize_chunk(evaluate_chunk(*args, cancel=cancel))
 
 
 class RemoteCancel(threading.Event):
@@ -118,9 +128,12 @@ def evaluate_remote(
     tolerance: float | None,
     deadline_s: float | None,
 ) -> ChunkResult:
-    """:func:`evaluate_chunk` on a Dask worker, stopped when the study's event is set."""
+    """:func:`evaluate_chunk` on a Dask worker, stopped when the study's event is set, with
+    its partial summary (:func:`summarize_chunk`) made there too."""
     cancel = RemoteCancel(cancel_name)
-    return evaluate_chunk(spec, base, columns, outputs, fidelity, tolerance, deadline_s, cancel)
+    return summarize_chunk(
+        evaluate_chunk(spec, base, columns, outputs, fidelity, tolerance, deadline_s, cancel)
+    )
 
 
 class DaskExecutor:

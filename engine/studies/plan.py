@@ -29,7 +29,7 @@ import threading
 import time
 from collections import Counter
 from collections.abc import Collection, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -119,13 +119,18 @@ class Plan:
 
 @dataclass
 class ChunkResult:
-    """The values of one chunk of points; NaN where a point was refused."""
+    """The values of one chunk of points; NaN where a point was refused.
+
+    ``summary``: the chunk's partial summary (:func:`summarize_chunk`), where the chunk's
+    executor made it; for a merged study, the study's, combined from its chunks'.
+    """
 
     values: dict[str, np.ndarray]
     checks: dict[str, np.ndarray]
     rungs: list[str | None]
     refusals: dict[str, int]
     elapsed_s: float
+    summary: ChunkSummary | None = None
 
 
 # --------------------------------------------------------------------------- planning
@@ -645,6 +650,13 @@ class Merger:
     spread over the evaluation instead of following it. Checks keep the order
     :func:`merge` gives them (first reported in the earliest chunk first), whatever the
     order the chunks arrive in.
+
+    The chunks' partial summaries (:func:`summarize_chunk`; made here for a chunk that
+    comes without one) are kept and combined in the chunks' order at the end, and a study
+    of :data:`GATHER_POINTS` points or more counts each output's values in fine bins as
+    the chunks arrive (:class:`FineCounts`, placed by the first chunk to arrive), so
+    :func:`summarize` finds quantiles and histogram in one cheap pass over the few bins
+    that hold them.
     """
 
     def __init__(self, n_points: int, outputs: Sequence[str]) -> None:
@@ -656,9 +668,18 @@ class Merger:
         self.refusals: dict[str, int] = {}
         self.elapsed_s = 0.0
         self.received = 0
+        self._summaries: dict[int, ChunkSummary] = {}
+        self._gather = n_points >= GATHER_POINTS
+        #: per output its fine counts, None where the first chunk could not place them
+        self._fine: dict[str, FineCounts | None] = {}
 
     def add(self, start: int, part: ChunkResult) -> None:
         """Put ``part``, the chunk of points ``start`` onward, in its place."""
+        summary = part.summary or summarize_chunk(part).summary
+        assert summary is not None
+        self._summaries[start] = summary
+        if self._gather:
+            self._count_fine(part, summary)
         stop = start + len(part.rungs)
         for name, column in self.values.items():
             column[start:stop] = part.values[name]
@@ -674,15 +695,54 @@ class Merger:
         self.elapsed_s += part.elapsed_s
         self.received += 1
 
+    def _count_fine(self, part: ChunkResult, summary: ChunkSummary) -> None:
+        for name, y in part.values.items():
+            moments = summary.moments.get(name)
+            if moments is None:
+                continue
+            finite = y if moments.count == y.size else y[np.isfinite(y)]
+            if name not in self._fine:  # the pilot: the first chunk with values
+                self._fine[name] = FineCounts(finite) if finite.size >= PILOT_MIN else None
+            fine = self._fine[name]
+            if fine is not None:
+                fine.add(finite)
+
     def result(self) -> ChunkResult:
-        """The merged study (every chunk added)."""
+        """The merged study (every chunk added), with its combined partial summary."""
         names = sorted(self.checks, key=self._first.__getitem__)
+        starts = sorted(self._summaries)
+        parts = [self._summaries[a] for a in starts]
+        rungs: dict[str | None, int] = {}
+        for s in parts:
+            for rung, count in s.rungs.items():
+                rungs[rung] = rungs.get(rung, 0) + count
+
+        def shifted(name: str) -> list[Moments | None]:
+            # each chunk's moments, their places counted from the study's first point
+            moments = (s.moments[name] for s in parts)
+            return [
+                None if m is None else m.shifted(a) for a, m in zip(starts, moments, strict=True)
+            ]
+
+        summary = ChunkSummary(
+            moments={name: _combined(shifted(name)) for name in self.values},
+            checks={
+                name: (
+                    sum(s.checks[name][0] for s in parts if name in s.checks),
+                    sum(s.checks[name][1] for s in parts if name in s.checks),
+                )
+                for name in names
+            },
+            rungs=rungs,
+            fine={name: f for name, f in self._fine.items() if f is not None and f.active},
+        )
         return ChunkResult(
             self.values,
             {name: self.checks[name] for name in names},
             self.rungs,
             self.refusals,
             self.elapsed_s,
+            summary,
         )
 
 
@@ -696,30 +756,300 @@ def merge(parts: Sequence[ChunkResult], outputs: Sequence[str]) -> ChunkResult:
     return merger.result()
 
 
+# --------------------------------------------------------------------------- partial summaries
+
+
+@dataclass(frozen=True)
+class Moments:
+    r"""Count, mean, sum of squared deviations from the mean and extremes of finite values.
+
+    ``first_low`` and ``first_high`` are the places of the first lowest and the first
+    highest value (in a chunk, or in the study once shifted), as :func:`numpy.nanargmin`
+    and :func:`numpy.nanargmax` find them. Two sets of points combine exactly in count and
+    extremes, and in mean and ``m2`` by the pairwise update of Chan, Golub and LeVeque
+    (1979), to the rounding of a few operations (points of one value have that value
+    as their mean and no spread, exactly):
+
+    .. math::
+        n = n_a + n_b, \quad \delta = \bar y_b - \bar y_a, \quad
+        \bar y = \bar y_a + \delta \frac{n_b}{n}, \quad
+        M_2 = M_{2,a} + M_{2,b} + \delta^2 \frac{n_a n_b}{n}
+
+    By hand: 3, 1 (and a NaN), then 4, 1, 5: n = 2 + 3, means 2 and 10/3, δ = 4/3,
+    mean 2 + 4/3 · 3/5 = 2.8, M_2 = 2 + 8.667 + 16/9 · 6/5 = 12.8; the first lowest is
+    the 1 at place 1, the highest the 5 at place 5.
+
+    >>> y = np.array([3.0, 1.0, np.nan, 4.0, 1.0, 5.0])
+    >>> a, b = Moments.of(y[:3]), Moments.of(y[3:])
+    >>> assert a is not None and b is not None
+    >>> both = a.then(b.shifted(3))
+    >>> both.count, round(both.mean, 12), round(both.m2, 12), both.first_low, both.first_high
+    (5, 2.8, 12.8, 1, 5)
+    """
+
+    count: int
+    mean: float
+    m2: float
+    low: float
+    high: float
+    first_low: int
+    first_high: int
+
+    @staticmethod
+    def of(y: np.ndarray) -> Moments | None:
+        """The moments of ``y``'s finite values; None when it has none."""
+        ok = np.isfinite(y)
+        every = bool(ok.all())
+        finite = y if every else y[ok]
+        if finite.size == 0:
+            return None
+        lo, hi = int(finite.argmin()), int(finite.argmax())
+        places = [lo, hi] if every else np.flatnonzero(ok)[[lo, hi]].tolist()
+        if finite[lo] == finite[hi]:  # one value: its mean, no spread (not their rounding)
+            mean, m2 = float(finite[lo]), 0.0
+        else:
+            mean = float(finite.mean())
+            deviation = finite - mean
+            m2 = float(np.add.reduce(deviation * deviation))
+        return Moments(
+            count=int(finite.size),
+            mean=mean,
+            m2=m2,
+            low=float(finite[lo]),
+            high=float(finite[hi]),
+            first_low=int(places[0]),
+            first_high=int(places[1]),
+        )
+
+    def shifted(self, offset: int) -> Moments:
+        """The same moments, their places ``offset`` points further on."""
+        return replace(self, first_low=self.first_low + offset, first_high=self.first_high + offset)
+
+    def then(self, later: Moments) -> Moments:
+        """These points and ``later``'s, which all come after them (ties keep the first)."""
+        n = self.count + later.count
+        delta = later.mean - self.mean
+        lower, higher = later.low < self.low, later.high > self.high
+        return Moments(
+            count=n,
+            mean=self.mean + delta * (later.count / n),
+            m2=self.m2 + later.m2 + delta * delta * (self.count * later.count / n),
+            low=later.low if lower else self.low,
+            high=later.high if higher else self.high,
+            first_low=later.first_low if lower else self.first_low,
+            first_high=later.first_high if higher else self.first_high,
+        )
+
+    @property
+    def std(self) -> float:
+        """The sample standard deviation (ddof = 1; 0 for one point)."""
+        return math.sqrt(self.m2 / (self.count - 1)) if self.count > 1 else 0.0
+
+
+@dataclass
+class ChunkSummary:
+    """What the study's summary needs of a chunk (or of the whole study, combined).
+
+    Per output its :class:`Moments` (None: no finite value); per check the points that
+    passed and failed; the points per rung (None: refused), first seen first.
+    ``fine`` (the whole study only): each output's values counted in fine bins by
+    :class:`Merger` as the chunks arrived.
+    """
+
+    moments: dict[str, Moments | None]
+    checks: dict[str, tuple[int, int]]
+    rungs: dict[str | None, int]
+    fine: dict[str, FineCounts] = field(default_factory=dict)
+
+
+def summarize_chunk(part: ChunkResult) -> ChunkResult:
+    """``part`` with its partial summary: run where the chunk ran (on its worker), so the
+    study's summary combines a few numbers per chunk instead of reading every value again.
+
+    >>> part = ChunkResult({"y": np.array([2.0, np.nan, 4.0])},
+    ...                    {"R8": np.array([1, 0, -1], np.int8)}, ["a", None, "a"], {}, 0.0)
+    >>> s = summarize_chunk(part).summary
+    >>> assert s is not None
+    >>> s.moments["y"].mean, s.checks, s.rungs
+    (3.0, {'R8': (1, 1)}, {'a': 2, None: 1})
+    """
+    rungs = part.rungs
+    if rungs and rungs.count(rungs[0]) == len(rungs):  # the usual chunk: one rung
+        counted: dict[str | None, int] = {rungs[0]: len(rungs)}
+    else:
+        counted = dict(Counter(rungs))  # counted in C, first-seen order kept
+    part.summary = ChunkSummary(
+        moments={name: Moments.of(y) for name, y in part.values.items()},
+        checks={
+            name: (
+                int(np.count_nonzero(codes == CHECK_OK)),
+                int(np.count_nonzero(codes == CHECK_FAILED)),
+            )
+            for name, codes in part.checks.items()
+        },
+        rungs=counted,
+    )
+    return part
+
+
+def _combined(moments: Sequence[Moments | None]) -> Moments | None:
+    """The moments of consecutive chunks (already shifted), combined pairwise in order."""
+    known = [m for m in moments if m is not None]
+    while len(known) > 1:
+        pairs = [a.then(b) for a, b in zip(known[::2], known[1::2], strict=False)]
+        known = pairs + known[len(pairs) * 2 :]
+    return known[0] if known else None
+
+
+#: A study this long or longer counts each output's values in fine bins chunk by chunk
+#: (:class:`FineCounts`); a shorter one is summarised from its merged columns alone.
+GATHER_POINTS = 50_000
+#: The fewest finite values of an output the first chunk must have to place its bins.
+PILOT_MIN = 4_096
+#: At most this many of the first chunk's values (spread evenly) place the bins.
+PILOT_POINTS = 16_384
+#: Share of the pilot left out at either end of the range the fine bins span (so a
+#: heavy tail does not stretch them): its values fall in the bins below and above.
+PILOT_TAIL = 0.0005
+#: Uniform bins over the pilot's range.
+FINE_BINS = 16_384
+#: Beyond this share of an output's values in the bins the summary must look into
+#: (a point mass, a pilot that was no fair sample), the merged column is read instead.
+GATHER_SHARE = 0.25
+#: Values looked at together in the summary's pass over a column (they stay in cache).
+BLOCK = 65_536
+
+
+class FineCounts:
+    """An output's values counted chunk by chunk in fine bins, for its quantiles and
+    histogram found exactly with one cheap pass over the merged column.
+
+    The first chunk that arrives (the pilot) places :data:`FINE_BINS` uniform bins over
+    its range (less :data:`PILOT_TAIL` of it at either end), with one bin below and one
+    above for the values beyond. A value's bin never decreases as the value grows, so
+    every value of a lower bin is smaller than every value of a higher one: with c values
+    in the bins below, the order statistic of rank r is the value of rank r - c among its
+    bin's values, and the values below a histogram edge are those of the bins below plus
+    those of the edge's bin that are smaller. The summary therefore looks only into the
+    few bins that hold a rank or an edge (:meth:`resolve`), in one pass that keeps their
+    values. That is exact whatever the pilot; where those bins hold more than
+    :data:`GATHER_SHARE` of the values (a point mass, a pilot that was no fair sample of
+    the study) :meth:`resolve` gives None and the caller reads the whole column.
+
+    >>> y = np.random.default_rng(5).standard_normal(200_000)
+    >>> fine = FineCounts(y[:65_536])
+    >>> for a in range(0, y.size, 65_536):
+    ...     fine.add(y[a : a + 65_536])
+    >>> edges = np.histogram_bin_edges(y, 30)
+    >>> found = fine.resolve(y, np.array([0, 100_000, 199_999]), edges[:-1])
+    >>> assert found is not None
+    >>> bool((found[0] == np.sort(y)[[0, 100_000, 199_999]]).all())
+    True
+    >>> bool((np.diff(np.r_[found[1], y.size]) == np.histogram(y, edges)[0]).all())
+    True
+    """
+
+    def __init__(self, pilot: np.ndarray) -> None:
+        sample = np.sort(pilot[:: max(1, -(-pilot.size // PILOT_POINTS))])
+        cut = int(PILOT_TAIL * sample.size)
+        low, high = float(sample[cut]), float(sample[sample.size - 1 - cut])
+        if not high > low:  # most of the pilot at one value: span all of it
+            low, high = float(sample[0]), float(sample[-1])
+        self.low = low
+        scale = FINE_BINS / (high - low) if high > low else 0.0
+        # a constant pilot, or extremes too far apart for their difference: not counted
+        self.active = 0.0 < scale < math.inf
+        self.scale = scale if self.active else 0.0
+        self.counts = np.zeros(FINE_BINS + 2, dtype=np.int64)
+
+    def bins(self, y: np.ndarray) -> np.ndarray:
+        """Each finite value's bin, 0 (below the range) … FINE_BINS + 1 (above it)."""
+        f = (y - self.low) * self.scale
+        np.clip(f, -1.0, float(FINE_BINS), out=f)
+        return f.astype(np.intp) + 1
+
+    def add(self, y: np.ndarray) -> None:
+        """Count a chunk's finite values ``y``."""
+        if self.active:
+            self.counts += np.bincount(self.bins(y), minlength=self.counts.size)
+
+    def resolve(
+        self, y: np.ndarray, ranks: np.ndarray, edges: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray] | None:
+        """The values of rank ``ranks`` (0-based) and the number of values below each of
+        ``edges``, of the finite values ``y`` whose chunks were all added; None where the
+        bins to look into hold too many of them."""
+        if not self.active:
+            return None
+        total = np.cumsum(self.counts)  # values in this bin and the ones below
+        if total[-1] != y.size:  # pragma: no cover - defensive: every chunk is added
+            return None
+        under = total - self.counts  # values in the bins below
+        rank_bins = np.searchsorted(total, ranks, side="right")
+        edge_bins = self.bins(np.asarray(edges, dtype=float))
+        wanted = np.zeros(self.counts.size, dtype=bool)
+        wanted[rank_bins] = wanted[edge_bins] = True
+        if self.counts[wanted].sum() > GATHER_SHARE * y.size:
+            return None
+        kept = np.concatenate(
+            [block[wanted[self.bins(block)]] for block in np.split(y, range(BLOCK, y.size, BLOCK))]
+        )
+        labels = self.bins(kept)
+        found = np.empty(ranks.size)
+        for b in np.unique(rank_bins).tolist():
+            here = rank_bins == b
+            k = ranks[here] - under[b]
+            found[here] = np.partition(kept[labels == b], k)[k]
+        below = np.array(
+            [
+                under[b] + np.count_nonzero(kept[labels == b] < e)
+                for b, e in zip(edge_bins.tolist(), np.asarray(edges).tolist(), strict=True)
+            ]
+        )
+        return found, below
+
+
 # --------------------------------------------------------------------------- summaries
 
 
-def _stats(column: np.ndarray, bins: int) -> dict[str, Any]:
-    ok = np.isfinite(column)
-    finite = column if ok.all() else column[ok]
-    if finite.size == 0:
+def _stats(
+    column: np.ndarray, bins: int, moments: Moments | None, fine: FineCounts | None = None
+) -> dict[str, Any]:
+    """One output's summary from its merged ``column`` and its combined ``moments``.
+
+    Count, mean, standard deviation and extremes come from the moments. The histogram
+    spans the extremes (its bins are known only once every chunk is in) and the
+    quantiles are numpy's; both are found exactly, through the ``fine`` counts where
+    they serve (:meth:`FineCounts.resolve`), else from the whole column.
+    """
+    if moments is None:
         return {"count": 0}
-    lo, hi = float(finite.min()), float(finite.max())
-    # a constant output (common in a study: one not moved by the varied inputs) has its
-    # histogram from one value times the count and every quantile at that value
-    same = lo == hi
+    lo, hi = moments.low, moments.high
+    finite = column if moments.count == column.size else column[np.isfinite(column)]
     try:
-        # the range numpy would find itself (min, max), passed so it is not searched twice
-        counts, edges = np.histogram(finite[:1] if same else finite, bins=bins, range=(lo, hi))
-        if same:
-            counts = counts * finite.size
-    except ValueError:  # a (near-)constant output: one bin around it
+        # numpy's edges for the range numpy would find itself (min, max); a constant
+        # output (common in a study: one not moved by the varied inputs) has its
+        # histogram from one value times the count and every quantile at that value
+        counts, edges = np.histogram(finite[:1], bins=bins, range=(lo, hi))
+        counts *= finite.size
+    except ValueError:  # min and max too close for the bins: one bin around them
         counts, edges = np.array([finite.size]), np.array([lo, hi])
-    quantiles = np.full(len(QUANTILES), lo) if same else _quantiles(finite)
+    if lo == hi:
+        quantiles = np.full(len(QUANTILES), lo)
+    else:
+        ranks = _quantile_ranks(finite.size)
+        got = None if fine is None else fine.resolve(finite, ranks, edges[:-1])
+        if got is None:
+            counts = np.histogram(finite, bins=edges)[0]
+            found = _order_statistics(finite, ranks)
+        else:
+            found, below = got
+            counts = np.diff(np.r_[below, finite.size])
+        quantiles = _interpolate(finite.size, ranks, found)
     return {
-        "count": int(finite.size),
-        "mean": float(finite.mean()),
-        "std": float(finite.std(ddof=1)) if finite.size > 1 else 0.0,
+        "count": moments.count,
+        "mean": moments.mean,
+        "std": moments.std,
         "min": lo,
         "max": hi,
         "quantiles": {f"{q:g}": float(v) for q, v in zip(QUANTILES, quantiles, strict=True)},
@@ -796,28 +1126,48 @@ def _order_statistics(y: np.ndarray, ranks: np.ndarray) -> np.ndarray:
     return out
 
 
-def _quantiles(y: np.ndarray) -> np.ndarray:
-    """``np.quantile(y, QUANTILES)`` (its default linear method), to the last bit.
+def _quantile_ranks(n: int) -> np.ndarray:
+    """The ranks (0-based, ascending, once each) of the order statistics numpy's linear
+    quantiles of :data:`QUANTILES` of ``n`` values are made of: floor and ceiling of
+    the virtual index h = (n - 1) q.
 
-    The same rule as numpy's: virtual index h = (n - 1) q, the order statistics
-    below and above it, and numpy's two-sided linear interpolation between them;
-    only the order statistics are found faster (:func:`_order_statistics`).
+    By hand, n = 11: h = 10 q = 0.01, 0.1, 0.5, 2.5, 5, 7.5, 9.5, 9.9, 9.99; floors
+    0 0 0 2 5 7 9 9 9 and ceilings (floor + 1, at most 10) 1 1 1 3 6 8 10 10 10.
 
-    >>> y = np.random.default_rng(4).standard_normal(100_001)
-    >>> bool((_quantiles(y) == np.quantile(y, QUANTILES)).all())
-    True
+    >>> _quantile_ranks(11).tolist()
+    [0, 1, 2, 3, 5, 6, 7, 8, 9, 10]
     """
-    n = y.size
+    below = np.floor((n - 1) * np.asarray(QUANTILES)).astype(np.intp)
+    return np.unique(np.concatenate([below, np.minimum(below + 1, n - 1)]))
+
+
+def _interpolate(n: int, ranks: np.ndarray, found: np.ndarray) -> np.ndarray:
+    """numpy's linear quantiles of :data:`QUANTILES` of ``n`` values from the order
+    statistics ``found`` of ``ranks`` (:func:`_quantile_ranks`): virtual index
+    h = (n - 1) q and numpy's two-sided linear interpolation between its floor and
+    ceiling, so the values are numpy's to the last bit."""
     virtual = (n - 1) * np.asarray(QUANTILES)
     below = np.floor(virtual)
     gamma = virtual - below
     prev = below.astype(np.intp)
     nxt = np.minimum(prev + 1, n - 1)
-    wanted = np.unique(np.concatenate([prev, nxt]))
-    found = _order_statistics(y, wanted)
-    a, b = found[np.searchsorted(wanted, prev)], found[np.searchsorted(wanted, nxt)]
+    a, b = found[np.searchsorted(ranks, prev)], found[np.searchsorted(ranks, nxt)]
     step = b - a
     return np.where(gamma >= 0.5, b - step * (1.0 - gamma), a + step * gamma)
+
+
+def _quantiles(y: np.ndarray) -> np.ndarray:
+    """``np.quantile(y, QUANTILES)`` (its default linear method), to the last bit.
+
+    The same rule as numpy's (:func:`_interpolate`); only the order statistics are
+    found faster (:func:`_order_statistics`).
+
+    >>> y = np.random.default_rng(4).standard_normal(100_001)
+    >>> bool((_quantiles(y) == np.quantile(y, QUANTILES)).all())
+    True
+    """
+    ranks = _quantile_ranks(y.size)
+    return _interpolate(y.size, ranks, _order_statistics(y, ranks))
 
 
 def _rank(x: np.ndarray) -> np.ndarray:
@@ -874,7 +1224,7 @@ def rank_correlations(
         columns = {k: v[:RANK_POINTS] for k, v in columns.items()}
         values = {k: v[:RANK_POINTS] for k, v in values.items()}
     out: dict[str, dict[str, float | None]] = {}
-    # per finite mask: the orders known so far and each input's ranks
+    # per finite mask: the orders known so far and each input's standardised ranks
     known: dict[bytes, tuple[list[np.ndarray], dict[str, np.ndarray]]] = {}
     for name, y in values.items():
         ok = np.isfinite(y)
@@ -882,20 +1232,22 @@ def rank_correlations(
         key = b"" if every else np.packbits(ok).tobytes()
         orders, input_ranks = known.setdefault(key, ([], {}))
         row: dict[str, float | None] = {}
-        ry: np.ndarray | None = None
+        ys = y if every else y[ok]
+        flat = ys.size < 3 or np.ptp(ys) == 0
+        zy: np.ndarray | None = None
         for var, x in columns.items():
-            xs, ys = (x, y) if every else (x[ok], y[ok])
-            if ys.size < 3 or np.ptp(xs) == 0 or np.ptp(ys) == 0:
+            xs = x if every else x[ok]
+            if flat or np.ptp(xs) == 0:
                 row[var] = None
                 continue
-            rx = input_ranks.get(var)
-            if rx is None:
+            zx = input_ranks.get(var)
+            if zx is None:
                 order = np.argsort(xs)
                 orders.append(order)
                 ranked = _ranks_along(xs, order)
                 assert ranked is not None
-                rx = input_ranks[var] = ranked
-            if ry is None:
+                zx = input_ranks[var] = _standardised(ranked)
+            if zy is None:
                 for order in orders:
                     ry = _ranks_along(ys, order)
                     if ry is not None:
@@ -905,9 +1257,25 @@ def rank_correlations(
                     orders.append(order)
                     ry = _ranks_along(ys, order)
                 assert ry is not None
-            row[var] = float(np.corrcoef(rx, ry)[0, 1])
+                zy = _standardised(ry)
+            row[var] = max(-1.0, min(1.0, float(np.add.reduce(zx * zy))))
         out[name] = row
     return out
+
+
+def _standardised(r: np.ndarray) -> np.ndarray:
+    """``r`` less its mean, over the root of its sum of squares: Pearson's correlation of
+    two such arrays is the sum of their products (the ranks' here, Spearman's ρ), one
+    pass per pair instead of :func:`numpy.corrcoef`'s covariance matrix.
+
+    By hand, ranks 1 2 3 4 against 1 3 2 4: ρ = 1 - 6 Σd² / (n (n² - 1)) = 1 - 12/60 = 0.8.
+
+    >>> a, b = _standardised(np.array([1.0, 2, 3, 4])), _standardised(np.array([1.0, 3, 2, 4]))
+    >>> round(float((a * b).sum()), 12)
+    0.8
+    """
+    z = r - r.mean()
+    return z / math.sqrt(float(np.add.reduce(z * z)))
 
 
 def sobol_indices(y: np.ndarray, base: int, names: Sequence[str]) -> dict[str, dict[str, float]]:
@@ -983,22 +1351,25 @@ def summarize(spec: ModelSpec, study: Study, p: Plan, merged: ChunkResult) -> di
     """JSON-ready summary of a finished study (SI units)."""
     units = {o.name: o.unit for o in spec.outputs}
     n = p.n_points
-    outputs = {name: _stats(merged.values[name], study.bins) for name in p.outputs}
-    feasible = feasible_mask(merged, study.feasible_when, spec.advice)
-    checks = {
-        name: {
-            "level": spec.check_level(name),
-            "passed": int((arr == CHECK_OK).sum()),
-            "failed": int((arr == CHECK_FAILED).sum()),
-            "unknown": int((arr == CHECK_UNKNOWN).sum()),
-            "pass_fraction": (
-                float((arr == CHECK_OK).sum() / max(1, (arr != CHECK_UNKNOWN).sum()))
-                if (arr != CHECK_UNKNOWN).any()
-                else None
-            ),
-        }
-        for name, arr in merged.checks.items()
+    # the chunks' partial summaries, combined by the merge (made here from the merged
+    # values, as of one chunk, where the merge did not combine them)
+    partial = merged.summary or summarize_chunk(replace(merged)).summary
+    assert partial is not None
+    outputs = {
+        name: _stats(merged.values[name], study.bins, partial.moments[name], partial.fine.get(name))
+        for name in p.outputs
     }
+    feasible = feasible_mask(merged, study.feasible_when, spec.advice)
+    checks = {}
+    for name in merged.checks:
+        passed, failed = partial.checks[name]
+        checks[name] = {
+            "level": spec.check_level(name),
+            "passed": passed,
+            "failed": failed,
+            "unknown": n - passed - failed,
+            "pass_fraction": passed / (passed + failed) if passed + failed else None,
+        }
     known = feasible != CHECK_UNKNOWN
     summary: dict[str, Any] = {
         "model": spec.name,
@@ -1015,12 +1386,12 @@ def summarize(spec: ModelSpec, study: Study, p: Plan, merged: ChunkResult) -> di
             "fraction": float((feasible == CHECK_OK).sum() / known.sum()) if known.any() else None,
             "known": int(known.sum()),
         },
-        "rungs": _rung_counts(merged.rungs),
+        "rungs": _rung_counts(partial.rungs),
         "compute_s": merged.elapsed_s,
         "notes": list(p.notes),
     }
     if merged.checks and any(
-        (arr == CHECK_UNKNOWN).all() for arr in merged.checks.values()
+        sum(partial.checks[name]) == 0 for name in merged.checks
     ):  # pragma: no cover - defensive; checks arrays are created on first report
         summary["notes"].append("some checks were never evaluated")
     if any(r is not None for r in merged.rungs) and not merged.checks:
@@ -1031,17 +1402,17 @@ def summarize(spec: ModelSpec, study: Study, p: Plan, merged: ChunkResult) -> di
     # the designs behind the extremes of each output
     extremes: dict[str, Any] = {}
     for name in p.outputs:
-        col = merged.values[name]
-        if not np.isfinite(col).any():
+        moments = partial.moments[name]
+        if moments is None:
             continue
-        lo, hi = int(np.nanargmin(col)), int(np.nanargmax(col))
+        lo, hi = moments.first_low, moments.first_high
         extremes[name] = {
             "min": {
-                "value": float(col[lo]),
+                "value": moments.low,
                 "inputs": {k: float(v[lo]) for k, v in p.columns.items()},
             },
             "max": {
-                "value": float(col[hi]),
+                "value": moments.high,
                 "inputs": {k: float(v[hi]) for k, v in p.columns.items()},
             },
         }
@@ -1075,9 +1446,10 @@ def summarize(spec: ModelSpec, study: Study, p: Plan, merged: ChunkResult) -> di
     return summary
 
 
-def _rung_counts(rungs: Sequence[str | None]) -> dict[str, int]:
+def _rung_counts(rungs: Mapping[str | None, int]) -> dict[str, int]:
+    """Points per rung by name, the refused (None) as ``"refused"``, first seen first."""
     counts: dict[str, int] = {}
-    for r, c in Counter(rungs).items():  # counted in C, first-seen order kept
+    for r, c in rungs.items():
         key = r if r is not None else "refused"
         counts[key] = counts.get(key, 0) + c
     return counts

@@ -1,0 +1,239 @@
+"""A study summarised chunk by chunk gives the numbers of its merged columns.
+
+Each chunk's partial summary (moments, extremes, check and rung counts) and the fine
+counts gathered as chunks arrive are held against the plain computation on the merged
+columns: ``np.quantile`` and ``np.histogram`` to the last bit, ``np.mean`` and
+``np.std`` to 1e-12 (the pairwise combination rounds differently from numpy's pairwise
+sum), ``np.nanargmin``/``np.nanargmax`` for the extremes' designs, and
+``scipy.stats.spearmanr`` to 1e-12. The laws reach every branch: continuous and heavy
+tailed (lognormal, Cauchy), point masses and ties, refused points (NaN), a column in
+order (a pilot that is no fair sample) and chunks arriving out of order.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Callable
+
+import numpy as np
+import pytest
+from scipy import stats
+
+import engine
+from engine.studies.execute import run_study
+from engine.studies.plan import (
+    CHECK_FAILED,
+    CHECK_OK,
+    CHECK_UNKNOWN,
+    GATHER_POINTS,
+    QUANTILES,
+    ChunkResult,
+    Merger,
+    Moments,
+    Study,
+    Variable,
+    _quantile_ranks,
+    _stats,
+    rank_correlations,
+    summarize_chunk,
+)
+
+N = 3 * 65_536 + 4_321  # four chunks, the last one short
+CHUNK = 65_536
+BINS = 30
+
+
+def _laws() -> dict[str, Callable[[np.random.Generator], np.ndarray]]:
+    return {
+        "normal": lambda g: g.normal(1e3, 10.0, N),
+        # a heavy tail: the pilot's range is cut at its 0.05 % ends
+        "lognormal": lambda g: g.lognormal(0.0, 2.0, N),
+        "cauchy": lambda g: g.standard_cauchy(N),
+        # point masses (a bool output, a table of three values): ties at every quantile
+        "bool": lambda g: (g.random(N) < 0.3).astype(float),
+        "three_values": lambda g: g.choice([1.0, 2.0, 3.0], size=N, p=[0.2, 0.5, 0.3]),
+        # 40 % at one value, the rest spread above it
+        "constant_tail": lambda g: np.where(g.random(N) < 0.4, 5.0, 5.0 + g.random(N)),
+        # integers 0 … 6000: every histogram edge (a multiple of 200) falls on values
+        "integers": lambda g: g.integers(0, 6001, N).astype(float),
+        # refused points
+        "with_nan": lambda g: np.where(g.random(N) < 0.1, np.nan, g.gamma(2.0, size=N)),
+        # in order: the first chunk sees only the lowest quarter
+        "sorted": lambda g: np.sort(g.random(N)),
+        "constant": lambda g: np.full(N, 0.1),
+    }
+
+
+def _parts(y: np.ndarray) -> list[tuple[int, ChunkResult]]:
+    out = []
+    for a in range(0, y.size, CHUNK):
+        b = min(a + CHUNK, y.size)
+        rungs: list[str | None] = ["closed_form"] * (b - a)
+        part = ChunkResult({"y": y[a:b].copy()}, {}, rungs, {}, 0.0)
+        out.append((a, summarize_chunk(part)))
+    return out
+
+
+def _merged(y: np.ndarray, order: list[int] | None = None) -> ChunkResult:
+    parts = _parts(y)
+    merger = Merger(y.size, ("y",))
+    for i in order or range(len(parts)):
+        merger.add(*parts[i])
+    return merger.result()
+
+
+@pytest.mark.parametrize("law", list(_laws()))
+def test_quantiles_and_histogram_are_numpys_to_the_last_bit(law: str) -> None:
+    y = _laws()[law](np.random.default_rng(35))
+    merged = _merged(y, order=[2, 0, 3, 1])  # as a cluster might deliver them
+    summary = merged.summary
+    assert summary is not None
+    got = _stats(merged.values["y"], BINS, summary.moments["y"], summary.fine.get("y"))
+    finite = y[np.isfinite(y)]
+    assert list(got["quantiles"].values()) == np.quantile(finite, QUANTILES).tolist()
+    counts, edges = np.histogram(finite, BINS)
+    assert got["histogram"]["counts"] == counts.tolist()
+    assert got["histogram"]["edges"] == edges.tolist()
+    assert got["count"] == finite.size
+    assert (got["min"], got["max"]) == (finite.min(), finite.max())
+    scale = max(abs(float(finite.mean())), float(finite.std()), 1e-300)
+    assert abs(got["mean"] - finite.mean()) <= 1e-12 * scale
+    assert abs(got["std"] - finite.std(ddof=1)) <= 1e-12 * scale
+
+
+@pytest.mark.parametrize("law", ["normal", "lognormal", "cauchy", "with_nan", "integers"])
+def test_fine_counts_serve_continuous_and_heavy_tailed_laws(law: str) -> None:
+    # the test above passes through the fallback too: here the fine counts must serve
+    y = _laws()[law](np.random.default_rng(36))
+    merged = _merged(y)
+    assert merged.summary is not None
+    fine = merged.summary.fine["y"]
+    finite = y[np.isfinite(y)]
+    ranks = _quantile_ranks(finite.size)
+    edges = np.histogram_bin_edges(finite, BINS)
+    found = fine.resolve(finite, ranks, edges[:-1])
+    assert found is not None
+    assert found[0].tolist() == np.sort(finite)[ranks].tolist()
+    below = [int(np.count_nonzero(finite < e)) for e in edges[:-1]]
+    assert found[1].tolist() == below
+
+
+def test_a_point_mass_or_a_sorted_column_falls_back_to_the_column() -> None:
+    for law in ("bool", "sorted"):
+        y = _laws()[law](np.random.default_rng(37))
+        merged = _merged(y)
+        assert merged.summary is not None
+        fine = merged.summary.fine["y"]
+        ranks = _quantile_ranks(y.size)
+        assert fine.resolve(y, ranks, np.histogram_bin_edges(y, BINS)[:-1]) is None, law
+
+
+def test_a_short_study_is_summarised_from_its_columns_alone() -> None:
+    y = np.random.default_rng(38).random(GATHER_POINTS - 1)
+    merged = _merged(y)
+    assert merged.summary is not None and merged.summary.fine == {}
+    got = _stats(merged.values["y"], BINS, merged.summary.moments["y"])
+    assert list(got["quantiles"].values()) == np.quantile(y, QUANTILES).tolist()
+
+
+def test_moments_by_hand() -> None:
+    # 1, 2 | 3, 4, NaN | 10: n = 5, mean 4, deviations -3 -2 -1 0 6, M2 = 50, s² = 12.5
+    chunks = [np.array([1.0, 2.0]), np.array([3.0, 4.0, np.nan]), np.array([10.0])]
+    starts = [0, 2, 5]
+    parts = [Moments.of(c) for c in chunks]
+    whole = parts[0]
+    for a, m in zip(starts[1:], parts[1:], strict=True):
+        assert whole is not None and m is not None
+        whole = whole.then(m.shifted(a))
+    assert whole is not None
+    assert (whole.count, whole.mean, whole.m2, whole.std) == (5, 4.0, 50.0, 12.5**0.5)
+    assert (whole.low, whole.first_low, whole.high, whole.first_high) == (1.0, 0, 10.0, 5)
+    assert Moments.of(np.array([np.nan, np.inf])) is None
+
+
+def test_extremes_keep_the_first_of_tied_points_across_chunks() -> None:
+    y = np.random.default_rng(39).integers(0, 5, N).astype(float)
+    y[: CHUNK + 7] = 2.0  # the first lowest and highest are in a later chunk
+    y[CHUNK + 9] = y[N - 1] = -1.0
+    y[2 * CHUNK + 3] = y[2 * CHUNK + 5] = 9.0
+    m = _merged(y, order=[3, 1, 0, 2]).summary
+    assert m is not None
+    got = m.moments["y"]
+    assert got is not None
+    assert (got.first_low, got.first_high) == (np.nanargmin(y), np.nanargmax(y))
+    assert (got.first_low, got.first_high) == (CHUNK + 9, 2 * CHUNK + 3)
+
+
+def test_check_and_rung_counts_are_the_merged_arrays() -> None:
+    rng = np.random.default_rng(40)
+    merger = Merger(N, ("y",))
+    slices = [(a, min(a + CHUNK, N)) for a in range(0, N, CHUNK)]
+    names = np.array(["closed_form", "simulation", None], dtype=object)
+    for a, b in reversed(slices):
+        n = b - a
+        checks = {"R8": rng.choice([CHECK_OK, CHECK_FAILED, CHECK_UNKNOWN], n).astype(np.int8)}
+        if a:  # the first chunk reports a check the others do not
+            checks["R12"] = np.full(n, CHECK_OK, np.int8)
+        rungs = list(names[rng.integers(0, 3, n)]) if a else ["closed_form"] * n
+        part = ChunkResult({"y": rng.random(n)}, checks, rungs, {}, 0.0)
+        merger.add(a, summarize_chunk(part))
+    merged = merger.result()
+    assert merged.summary is not None
+    for name, codes in merged.checks.items():
+        want = (int((codes == CHECK_OK).sum()), int((codes == CHECK_FAILED).sum()))
+        assert merged.summary.checks[name] == want
+    # the same counts in the same order (first seen first), whatever the arrival order
+    assert list(merged.summary.rungs.items()) == list(Counter(merged.rungs).items())
+
+
+def test_rank_correlations_are_scipys_spearman() -> None:
+    rng = np.random.default_rng(41)
+    x = {"a": rng.random(20_000), "b": rng.integers(0, 7, 20_000).astype(float)}
+    y = {
+        "sum": x["a"] + 0.3 * x["b"],
+        "ties": np.round(x["a"] * 4.0) - x["b"],
+        "nan": np.where(x["a"] < 0.2, np.nan, np.exp(x["a"]) * x["b"]),
+    }
+    got = rank_correlations(x, y)
+    for name, col in y.items():
+        ok = np.isfinite(col)
+        for var, xs in x.items():
+            want = stats.spearmanr(xs[ok], col[ok]).statistic
+            assert got[name][var] == pytest.approx(want, abs=1e-12)
+
+
+def test_a_study_summary_is_the_plain_numbers_of_its_points() -> None:
+    spec = engine.get_model("preload.tightening")
+    base = {k: v for k, v in spec.examples[0].items() if k != "thread_friction"}
+    study = Study(
+        variables=(
+            Variable("thread_friction", "uniform", low=0.08, high=0.16),
+            Variable("bearing_friction", "normal", mean=0.12, sd=0.012),
+        ),
+        base=base,
+        samples=GATHER_POINTS + 30_000,
+        seed=4,
+    )
+    run = run_study(spec, study)
+    summary, values, columns = run.summary, run.merged.values, run.plan.columns
+    for name, got in summary["outputs"].items():
+        y = values[name]
+        finite = y[np.isfinite(y)]
+        if finite.size == 0:
+            continue
+        assert list(got["quantiles"].values()) == np.quantile(finite, QUANTILES).tolist(), name
+        try:
+            counts = np.histogram(finite, study.bins)[0].tolist()
+        except ValueError:  # an output constant to rounding: one bin
+            counts = [finite.size]
+        assert got["histogram"]["counts"] == counts, name
+        scale = max(abs(float(finite.mean())), 1e-300)
+        assert abs(got["mean"] - finite.mean()) <= 1e-12 * scale, name
+        assert abs(got["std"] - finite.std(ddof=1)) <= 1e-12 * scale, name
+        lo = int(np.nanargmin(y))
+        assert summary["extremes"][name]["min"]["inputs"] == {
+            k: float(v[lo]) for k, v in columns.items()
+        }
+    assert summary["rungs"] == {
+        (k if k is not None else "refused"): c for k, c in Counter(run.merged.rungs).items()
+    }
