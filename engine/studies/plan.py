@@ -764,8 +764,10 @@ class Moments:
     r"""Count, mean, sum of squared deviations from the mean and extremes of finite values.
 
     ``first_low`` and ``first_high`` are the places of the first lowest and the first
-    highest value (in a chunk, or in the study once shifted), as :func:`numpy.nanargmin`
-    and :func:`numpy.nanargmax` find them. Two sets of points combine exactly in count and
+    highest finite value (in a chunk, or in the study once shifted), as
+    :func:`numpy.nanargmin` and :func:`numpy.nanargmax` find them among the finite values
+    (an infinite output is left out like a refused point, so no ±inf reaches a summary).
+    Two sets of points combine exactly in count and
     extremes, and in mean and ``m2`` by the pairwise update of Chan, Golub and LeVeque
     (1979), to the rounding of a few operations (points of one value have that value
     as their mean and no spread, exactly):
@@ -794,6 +796,10 @@ class Moments:
     high: float
     first_low: int
     first_high: int
+    #: What ``mean`` leaves out by its rounding (the mean of the points less ``mean``): δ
+    #: between two chunks' means is taken with it, so an output that barely moves (spread
+    #: 1e-11 of its mean) keeps its spread to numpy's precision, not to the means' rounding.
+    mean_residual: float = 0.0
 
     @staticmethod
     def of(y: np.ndarray) -> Moments | None:
@@ -811,6 +817,7 @@ class Moments:
             mean = float(finite.mean())
             deviation = finite - mean
             m2 = float(np.add.reduce(deviation * deviation))
+        residual = float(deviation.mean()) if finite[lo] != finite[hi] else 0.0
         return Moments(
             count=int(finite.size),
             mean=mean,
@@ -819,6 +826,7 @@ class Moments:
             high=float(finite[hi]),
             first_low=int(places[0]),
             first_high=int(places[1]),
+            mean_residual=residual if math.isfinite(residual) else 0.0,
         )
 
     def shifted(self, offset: int) -> Moments:
@@ -828,11 +836,18 @@ class Moments:
     def then(self, later: Moments) -> Moments:
         """These points and ``later``'s, which all come after them (ties keep the first)."""
         n = self.count + later.count
-        delta = later.mean - self.mean
+        delta = (later.mean - self.mean) + (later.mean_residual - self.mean_residual)
+        step = delta * (later.count / n)
+        mean = self.mean + step
+        # what the rounded sum left out (Fast2Sum where |step| ≤ |mean|, else none kept)
+        residual = (
+            ((self.mean - mean) + step) + self.mean_residual if abs(step) <= abs(self.mean) else 0.0
+        )
         lower, higher = later.low < self.low, later.high > self.high
         return Moments(
             count=n,
-            mean=self.mean + delta * (later.count / n),
+            mean=mean,
+            mean_residual=residual if math.isfinite(residual) else 0.0,
             m2=self.m2 + later.m2 + delta * delta * (self.count * later.count / n),
             low=later.low if lower else self.low,
             high=later.high if higher else self.high,

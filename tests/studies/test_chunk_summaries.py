@@ -12,6 +12,7 @@ order (a pilot that is no fair sample) and chunks arriving out of order.
 
 from __future__ import annotations
 
+import math
 from collections import Counter
 from collections.abc import Callable
 
@@ -237,3 +238,24 @@ def test_a_study_summary_is_the_plain_numbers_of_its_points() -> None:
     assert summary["rungs"] == {
         (k if k is not None else "refused"): c for k, c in Counter(run.merged.rungs).items()
     }
+
+
+def test_an_output_that_barely_moves_keeps_its_spread() -> None:
+    """Four chunks of 1e8 + N(0, 1e-3): the chunks' means are rounded to about 1e-8, as
+    large as the differences between them, so combining them by the rounded means alone
+    gave the spread 1e-8 off; with each mean's residual it stays within numpy's own error
+    of the exact spread (a rational sum of every point)."""
+    from fractions import Fraction
+
+    rng = np.random.default_rng(11)
+    size = 4096
+    chunks = [1e8 + rng.normal(0.0, 1e-3, size) for _ in range(4)]
+    merger = Merger(4 * size, ("y",))
+    for i, c in enumerate(chunks):
+        merger.add(i * size, summarize_chunk(ChunkResult({"y": c}, {}, ["r"] * size, {}, 0.0)))
+    got = merger.result().summary.moments["y"].std
+    y = np.concatenate(chunks)
+    exact_values = [Fraction(v) for v in y.tolist()]
+    mu = sum(exact_values) / len(exact_values)
+    exact = math.sqrt(float(sum((v - mu) ** 2 for v in exact_values) / (len(y) - 1)))
+    assert abs(got - exact) <= 1e-10 * exact
