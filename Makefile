@@ -6,7 +6,7 @@ HOST ?= 127.0.0.1
 PORT ?= 8000
 BIN := $(VENV)/bin
 
-.PHONY: run test test-fast check bench mutate install manual docs clean
+.PHONY: run test test-fast check bench mutate install manual docs clean client
 
 # Dependencies come pinned from the lock files (scripts/lock regenerates them from
 # pyproject.toml); the project itself is installed on top without resolving again.
@@ -94,6 +94,12 @@ bench: $(VENV)/.installed-bench
 	$(BIN)/python -m bench.run
 	$(BIN)/python scripts/loadtest.py --seconds 4
 	$(BIN)/python -m bench.accuracy
+
+# The Python client in clients/python, regenerated from the service's OpenAPI document by the
+# pinned openapi-python-client (clients/generate.py); commit the result. A test fails while
+# it is stale (tests/service/test_python_client.py).
+client: $(VENV)/.installed-dev
+	$(BIN)/python -m clients.generate
 
 clean:
 	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache .hypothesis site

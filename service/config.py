@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from engine.core.runner import DEFAULT_BUDGET_S, DEFAULT_MAX_STEPS
+from engine.studies.execute import TLSFiles
 
 
 def _origins() -> tuple[str, ...]:
@@ -246,3 +247,43 @@ class Settings:
             raise ValueError("ENGINE_QUEUE, HEAVY_QUEUE and BUDGET_GRACE_S must not be negative")
         if not self.inline_budget_s >= 0:
             raise ValueError(f"INLINE_BUDGET_S must not be negative, not {self.inline_budget_s!r}")
+
+
+def dask_tls(scheduler: str | None) -> TLSFiles | None:
+    """The certificates for the scheduler ``DASK_SCHEDULER`` names (issue 34), from
+    ``DASK_TLS_CA_FILE`` (the authority that signed the cluster's certificates),
+    ``DASK_TLS_CERT`` (this client's certificate) and ``DASK_TLS_KEY`` (its key, when not in
+    the certificate's file); None when none is set (Dask's own ``distributed.comm.tls``
+    configuration then applies, plain TCP when it names none).
+
+    Checked when the app is built: a CA without a certificate (or the reverse), a file
+    that cannot be read, or certificates for a ``tcp://`` scheduler stop the service with
+    a message naming the variable. The local cluster needs none of them: it makes its own
+    (:class:`engine.studies.execute.DaskExecutor`).
+
+    >>> dask_tls(None) is None
+    True
+    """
+    names = ("DASK_TLS_CA_FILE", "DASK_TLS_CERT", "DASK_TLS_KEY")
+    ca, cert, key = (os.environ.get(n) or None for n in names)
+    if not (ca or cert or key):
+        return None
+    if not (ca and cert):
+        raise ValueError(
+            "DASK_TLS_CA_FILE and DASK_TLS_CERT must be set together (DASK_TLS_KEY too when "
+            "the key is not in the certificate's file)"
+        )
+    for name, path in zip(names, (ca, cert, key), strict=True):
+        if path is not None and not os.access(path, os.R_OK):
+            raise ValueError(f"{name} must name a readable PEM file, not {path!r}")
+    if not scheduler:
+        raise ValueError(
+            "DASK_TLS_CA_FILE and DASK_TLS_CERT are for a scheduler of your own: set "
+            "DASK_SCHEDULER=tls://host:port too (the local cluster makes its own certificates)"
+        )
+    if not scheduler.startswith("tls://"):
+        raise ValueError(
+            f"DASK_SCHEDULER must be a tls:// address when DASK_TLS_CA_FILE is set, not "
+            f"{scheduler!r}"
+        )
+    return TLSFiles(ca, cert, key)

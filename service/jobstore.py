@@ -15,11 +15,17 @@ A process beats for the jobs it runs (:meth:`JobStore.beat`, every ``BEAT_S``); 
 unfinished job whose process stopped beating for ``stale_s`` (a restart, a killed worker)
 is answered as failed, and no longer counts against a quota. The beat also carries a
 cancel asked in another process (``DELETE`` reaches any worker) to the one that runs it.
+
+Several hosts serving one API share a database server instead: ``JOB_STORE=postgresql://…``
+selects :class:`PostgresJobStore`, the same interface and the same SQL on PostgreSQL
+(psycopg 3, the optional extra ``[postgres]``); the points files stay under
+``STUDY_STORE``, which those hosts must then share (a network file system).
 """
 
 from __future__ import annotations
 
 import json
+import os
 import sqlite3
 import time
 from collections.abc import Iterator
@@ -59,6 +65,12 @@ LOST = {
 }
 
 
+class StoreError(sqlite3.DatabaseError):
+    """The job store's database failed (a server gone, a lock not granted): whichever
+    database holds the jobs, its errors reach the service as this DB-API error, which it
+    reports and retries (``sqlite3.Error`` covers both)."""
+
+
 class Full(Exception):
     """A quota (per client, in all, disk) has no room for the job: the message says which."""
 
@@ -77,7 +89,7 @@ class JobStore:
             db.execute("PRAGMA journal_mode=WAL")  # readers never wait for the writer
         with self._db(immediate=True) as db:
             columns = ", ".join(f"{k} {v}" for k, v in _COLUMNS.items())
-            db.execute(f"CREATE TABLE IF NOT EXISTS jobs ({columns})")
+            db.execute(f"CREATE TABLE IF NOT EXISTS jobs ({self._types(columns)})")
             db.execute("CREATE INDEX IF NOT EXISTS jobs_state ON jobs (state, client)")
 
     @contextmanager
@@ -95,11 +107,16 @@ class JobStore:
                 raise
             db.execute("COMMIT")
 
+    @staticmethod
+    def _types(columns: str) -> str:
+        """The table's column types in this database's names."""
+        return columns
+
     def points_path(self, job_id: str) -> Path:
         return self.files / f"{job_id}.parquet"
 
     @staticmethod
-    def _row(row: sqlite3.Row) -> dict[str, Any]:
+    def _row(row: Any) -> dict[str, Any]:
         out = dict(row)
         for key in _JSON:
             out[key] = None if out[key] is None else json.loads(out[key])
@@ -120,9 +137,8 @@ class JobStore:
         with self._db() as db:
             names = ", ".join(row)
             marks = ", ".join("?" for _ in row)
-            db.execute(
-                f"INSERT OR REPLACE INTO jobs ({names}) VALUES ({marks})", list(row.values())
-            )
+            db.execute("DELETE FROM jobs WHERE id = ?", (row["id"],))
+            db.execute(f"INSERT INTO jobs ({names}) VALUES ({marks})", list(row.values()))
 
     def admit(self, job: dict[str, Any], *, per_client: int, max_active: int) -> None:
         """Insert ``job`` if the client, the server and the disk have room; else :class:`Full`.
@@ -132,10 +148,10 @@ class JobStore:
         now = time.time()
         with self._db(immediate=True) as db:
             live = self._live(now)
-            active = db.execute(f"SELECT count(*) FROM jobs WHERE {live}").fetchone()[0]
+            active = db.execute(f"SELECT count(*) AS n FROM jobs WHERE {live}").fetchone()["n"]
             mine = db.execute(
-                f"SELECT count(*) FROM jobs WHERE {live} AND client = ?", (job["client"],)
-            ).fetchone()[0]
+                f"SELECT count(*) AS n FROM jobs WHERE {live} AND client = ?", (job["client"],)
+            ).fetchone()["n"]
             if mine >= per_client or active >= max_active:
                 raise Full(
                     f"{mine} of your studies and {active} in all are running "
@@ -144,7 +160,9 @@ class JobStore:
                 )
             need = int(job.get("disk_bytes") or 0)
             if need:
-                used = db.execute("SELECT coalesce(sum(disk_bytes), 0) FROM jobs").fetchone()[0]
+                # int(): PostgreSQL sums a bigint column as numeric (a Decimal)
+                total = "SELECT coalesce(sum(disk_bytes), 0) AS n FROM jobs"
+                used = int(db.execute(total).fetchone()["n"])
                 if used + need > self.disk_bytes:
                     raise Full(
                         f"keeping this study's points needs about {need / 1e6:.0f} MB and the "
@@ -242,3 +260,95 @@ class JobStore:
                 (now, job_id),
             )
         return self.get(job_id)
+
+
+class _Postgres:
+    """A psycopg connection that takes the store's SQL as written for SQLite (``?`` marks)."""
+
+    def __init__(self, conn: Any) -> None:
+        self.conn = conn
+
+    def execute(self, sql: str, params: Any = ()) -> Any:
+        return self.conn.execute(sql.replace("?", "%s"), params)
+
+    def executemany(self, sql: str, params: Any) -> None:
+        with self.conn.cursor() as cur:
+            cur.executemany(sql.replace("?", "%s"), params)
+
+
+#: The advisory lock that serialises the store's writers on PostgreSQL, as ``BEGIN
+#: IMMEDIATE`` does on SQLite (an arbitrary number of this store's own).
+_PG_LOCK = 3_402_026
+
+
+class PostgresJobStore(JobStore):
+    """Jobs in a PostgreSQL database (``url``), their points in ``folder/points``.
+
+    The interface, the SQL and the semantics of :class:`JobStore`: an admission holds the
+    store's transaction lock (``pg_advisory_xact_lock``) as SQLite's ``BEGIN IMMEDIATE``
+    does, so two hosts cannot both take the last place; times are double precision.
+    """
+
+    def __init__(self, url: str, folder: Path, disk_bytes: int, stale_s: float = 20.0) -> None:
+        try:
+            import psycopg  # noqa: F401
+        except ImportError:
+            raise ValueError(
+                "JOB_STORE=postgresql://… needs psycopg: pip install 'tightening-calc[postgres]'"
+            ) from None
+        self.url = url
+        self.folder = folder
+        self.files = folder / "points"
+        self.files.mkdir(parents=True, exist_ok=True)
+        self.disk_bytes = disk_bytes
+        self.stale_s = stale_s
+        with self._db(immediate=True) as db:
+            columns = ", ".join(f"{k} {v}" for k, v in _COLUMNS.items())
+            db.execute(f"CREATE TABLE IF NOT EXISTS jobs ({self._types(columns)})")
+            db.execute("CREATE INDEX IF NOT EXISTS jobs_state ON jobs (state, client)")
+
+    @staticmethod
+    def _types(columns: str) -> str:
+        # PostgreSQL's REAL is single precision and its INTEGER 32 bits: times need double
+        # precision, disk sizes beyond 2 GB a bigint
+        return columns.replace("REAL", "DOUBLE PRECISION").replace("INTEGER", "BIGINT")
+
+    @contextmanager
+    def _db(self, immediate: bool = False) -> Iterator[Any]:
+        """One connection for one transaction, committed on success, rolled back on error."""
+        import psycopg
+        from psycopg.rows import dict_row
+
+        try:
+            with psycopg.connect(self.url, row_factory=dict_row, connect_timeout=10) as conn:
+                if immediate:
+                    conn.execute("SELECT pg_advisory_xact_lock(%s)", (_PG_LOCK,))
+                yield _Postgres(conn)
+        except psycopg.Error as exc:
+            raise StoreError(f"{type(exc).__name__}: {exc}") from exc
+
+
+def open_store(
+    folder: Path, disk_bytes: int, url: str | None = None, stale_s: float = 20.0
+) -> JobStore:
+    """The job store ``JOB_STORE`` names (``url`` when given): empty for SQLite in
+    ``folder`` (the default, nothing to configure), ``postgresql://…`` for a database
+    server that several hosts share; anything else stops the service at start-up.
+
+    >>> import tempfile
+    >>> type(open_store(Path(tempfile.mkdtemp()), 10**6, url="")).__name__
+    'JobStore'
+    >>> open_store(Path(tempfile.mkdtemp()), 10**6, url="mysql://db/jobs")
+    Traceback (most recent call last):
+    ...
+    ValueError: JOB_STORE must be empty (SQLite in STUDY_STORE) or a postgresql:// URL, not 'mysql://...'
+    """
+    url = os.environ.get("JOB_STORE", "") if url is None else url
+    if not url:
+        return JobStore(folder, disk_bytes, stale_s)
+    if url.startswith(("postgresql://", "postgres://")):
+        return PostgresJobStore(url, folder, disk_bytes, stale_s)
+    shown = url.split("//", 1)[0] + "//..." if "//" in url else "..."  # never a password
+    raise ValueError(
+        f"JOB_STORE must be empty (SQLite in STUDY_STORE) or a postgresql:// URL, not {shown!r}"
+    )

@@ -64,8 +64,8 @@ from engine.studies.plan import (
 
 from . import schemas
 from .api import _ERRORS, API_PREFIX
-from .config import _float, _int, usable_cpus, usable_memory
-from .jobstore import ACTIVE, BEAT_S, Full, JobStore
+from .config import _float, _int, dask_tls, usable_cpus, usable_memory
+from .jobstore import ACTIVE, BEAT_S, Full, open_store
 from .units import quantity
 
 _KEEP_JOBS = 64
@@ -308,7 +308,10 @@ class Studies:
 
     def __init__(self, settings: StudySettings) -> None:
         self.settings = settings
-        self.store = JobStore(Path(settings.store), settings.disk_bytes)
+        # SQLite in STUDY_STORE, or the PostgreSQL server JOB_STORE names
+        self.store = open_store(Path(settings.store), settings.disk_bytes)
+        #: Certificates for DASK_SCHEDULER (DASK_TLS_*), checked here, at start-up.
+        self.dask_tls = dask_tls(settings.dask_scheduler)
         #: This process's share of the store: the jobs its threads run.
         self.owner = uuid.uuid4().hex
         self.jobs: dict[str, Job] = {}
@@ -333,7 +336,10 @@ class Studies:
                     DASK_MEMORY_SHARE * usable_memory() / workers
                 )
                 self._dask = DaskExecutor(
-                    self.settings.dask_scheduler, n_workers=workers, memory_limit=memory
+                    self.settings.dask_scheduler,
+                    n_workers=workers,
+                    memory_limit=memory,
+                    tls=self.dask_tls,
                 )
             return self._dask
 

@@ -12,6 +12,12 @@ the same summary, bit for bit, whichever executor ran them:
   use, or an existing scheduler at ``address`` (``DASK_SCHEDULER``), whose
   workers must have this package installed.
 
+The local cluster is private: its scheduler and workers speak mutual TLS with a key and
+a self-signed certificate made in memory when it starts (Dask's
+``Security.temporary()``), so a process without them, on this machine or another, cannot
+connect, submit work or run code in the service's workers. An existing scheduler is
+reached with the certificate files it is given (:class:`TLSFiles`), over TLS.
+
 Progress is reported after every chunk; a cancel event stops the study
 between chunks. On Dask, pending chunks are cancelled at once, and a running chunk
 stops at its next point (or inside a point's simulation) once it reads the study's
@@ -51,6 +57,27 @@ LOOP_CHUNK = 256
 CANCEL_POLL_S = 0.1
 
 Progress = Callable[[int, int], None]
+
+
+@dataclass(frozen=True)
+class TLSFiles:
+    """PEM files for a TLS scheduler: the authority that signed the cluster's certificates,
+    and this client's certificate and key (one file may hold both)."""
+
+    ca_file: str
+    cert_file: str
+    key_file: str | None = None
+
+    def security(self) -> Any:
+        """Dask's ``Security`` for a client of that scheduler, encryption required."""
+        from distributed.security import Security
+
+        return Security(
+            tls_ca_file=self.ca_file,
+            tls_client_cert=self.cert_file,
+            tls_client_key=self.key_file,
+            require_encryption=True,
+        )
 
 
 @dataclass
@@ -144,8 +171,12 @@ class DaskExecutor:
         address: str | None = None,
         n_workers: int | None = None,
         memory_limit: int | None = None,
+        tls: TLSFiles | None = None,
     ) -> None:
         self.address = address
+        #: Certificates for the scheduler at ``address``; None: Dask's own configuration
+        #: (``distributed.comm.tls``), plain TCP when it names none.
+        self.tls = tls
         self.n_workers = n_workers or os.cpu_count() or 1
         #: Bytes each local worker may hold (Dask pauses, then restarts one beyond it);
         #: None: Dask's default, the machine's memory split between the workers.
@@ -158,11 +189,20 @@ class DaskExecutor:
         with self._lock:
             if self._client is None:
                 from dask.distributed import Client, LocalCluster
+                from distributed.security import Security
 
                 if self.address:
-                    self._client = Client(self.address, set_as_default=False, timeout="10s")
+                    self._client = Client(
+                        self.address,
+                        set_as_default=False,
+                        timeout="10s",
+                        security=self.tls.security() if self.tls else None,
+                    )
                 else:
                     self._cluster = LocalCluster(
+                        # mutual TLS with credentials made for this cluster alone (the
+                        # protocol follows: tls://); a client must present them
+                        security=Security.temporary(),
                         n_workers=self.n_workers,
                         threads_per_worker=1,
                         processes=True,

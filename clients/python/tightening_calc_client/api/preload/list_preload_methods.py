@@ -1,0 +1,136 @@
+from http import HTTPStatus
+from typing import Any
+
+import httpx
+
+from ... import errors
+from ...client import AuthenticatedClient, Client
+from ...models.list_preload_methods_response_list_preload_methods import ListPreloadMethodsResponseListPreloadMethods
+from ...types import Response
+
+
+def _get_kwargs() -> dict[str, Any]:
+
+    _kwargs: dict[str, Any] = {
+        "method": "get",
+        "url": "/api/v1/preload/methods",
+    }
+
+    return _kwargs
+
+
+def _parse_response(
+    *, client: AuthenticatedClient | Client, response: httpx.Response
+) -> ListPreloadMethodsResponseListPreloadMethods | None:
+    if response.status_code == 200:
+        response_200 = ListPreloadMethodsResponseListPreloadMethods.from_dict(response.json())
+
+        return response_200
+
+    if client.raise_on_unexpected_status:
+        raise errors.UnexpectedStatus(response.status_code, response.content)
+    else:
+        return None
+
+
+def _build_response(
+    *, client: AuthenticatedClient | Client, response: httpx.Response
+) -> Response[ListPreloadMethodsResponseListPreloadMethods]:
+    return Response(
+        status_code=HTTPStatus(response.status_code),
+        content=response.content,
+        headers=response.headers,
+        parsed=_parse_response(client=client, response=response),
+    )
+
+
+def sync_detailed(
+    *,
+    client: AuthenticatedClient | Client,
+) -> Response[ListPreloadMethodsResponseListPreloadMethods]:
+    """Preload-control methods with their scatter and α_A
+
+     Every control method of [004] with its scatter, α_A, fit, misfit and source.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[ListPreloadMethodsResponseListPreloadMethods]
+    """
+
+    kwargs = _get_kwargs()
+
+    response = client.get_httpx_client().request(
+        **kwargs,
+    )
+
+    return _build_response(client=client, response=response)
+
+
+def sync(
+    *,
+    client: AuthenticatedClient | Client,
+) -> ListPreloadMethodsResponseListPreloadMethods | None:
+    """Preload-control methods with their scatter and α_A
+
+     Every control method of [004] with its scatter, α_A, fit, misfit and source.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        ListPreloadMethodsResponseListPreloadMethods
+    """
+
+    return sync_detailed(
+        client=client,
+    ).parsed
+
+
+async def asyncio_detailed(
+    *,
+    client: AuthenticatedClient | Client,
+) -> Response[ListPreloadMethodsResponseListPreloadMethods]:
+    """Preload-control methods with their scatter and α_A
+
+     Every control method of [004] with its scatter, α_A, fit, misfit and source.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[ListPreloadMethodsResponseListPreloadMethods]
+    """
+
+    kwargs = _get_kwargs()
+
+    response = await client.get_async_httpx_client().request(**kwargs)
+
+    return _build_response(client=client, response=response)
+
+
+async def asyncio(
+    *,
+    client: AuthenticatedClient | Client,
+) -> ListPreloadMethodsResponseListPreloadMethods | None:
+    """Preload-control methods with their scatter and α_A
+
+     Every control method of [004] with its scatter, α_A, fit, misfit and source.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        ListPreloadMethodsResponseListPreloadMethods
+    """
+
+    return (
+        await asyncio_detailed(
+            client=client,
+        )
+    ).parsed

@@ -1,0 +1,197 @@
+from http import HTTPStatus
+from typing import Any
+
+import httpx
+
+from ... import errors
+from ...client import AuthenticatedClient, Client
+from ...models.error_response import ErrorResponse
+from ...models.trace_import import TraceImport
+from ...models.trace_imported import TraceImported
+from ...types import Response
+
+
+def _get_kwargs(
+    *,
+    body: TraceImport,
+) -> dict[str, Any]:
+    headers: dict[str, Any] = {}
+
+    _kwargs: dict[str, Any] = {
+        "method": "post",
+        "url": "/api/v1/trace/import",
+    }
+
+    _kwargs["json"] = body.to_dict()
+
+    headers["Content-Type"] = "application/json"
+
+    _kwargs["headers"] = headers
+    return _kwargs
+
+
+def _parse_response(
+    *, client: AuthenticatedClient | Client, response: httpx.Response
+) -> ErrorResponse | TraceImported | None:
+    if response.status_code == 200:
+        response_200 = TraceImported.from_dict(response.json())
+
+        return response_200
+
+    if response.status_code == 400:
+        response_400 = ErrorResponse.from_dict(response.json())
+
+        return response_400
+
+    if response.status_code == 413:
+        response_413 = ErrorResponse.from_dict(response.json())
+
+        return response_413
+
+    if response.status_code == 415:
+        response_415 = ErrorResponse.from_dict(response.json())
+
+        return response_415
+
+    if response.status_code == 422:
+        response_422 = ErrorResponse.from_dict(response.json())
+
+        return response_422
+
+    if client.raise_on_unexpected_status:
+        raise errors.UnexpectedStatus(response.status_code, response.content)
+    else:
+        return None
+
+
+def _build_response(
+    *, client: AuthenticatedClient | Client, response: httpx.Response
+) -> Response[ErrorResponse | TraceImported]:
+    return Response(
+        status_code=HTTPStatus(response.status_code),
+        content=response.content,
+        headers=response.headers,
+        parsed=_parse_response(client=client, response=response),
+    )
+
+
+def sync_detailed(
+    *,
+    client: AuthenticatedClient | Client,
+    body: TraceImport,
+) -> Response[ErrorResponse | TraceImported]:
+    """Read a trace as a tool exports it into the inputs of trace.analysis
+
+     CSV (column mapping and units), Open Protocol MID 0900, OPC UA StepTraceDataType or
+    Rexroth result JSON, answered as angle [rad], torque [N*m] and time [s]: merge
+    ``inputs`` with the joint's inputs and POST them to /api/v1/trace/analysis.
+
+    Args:
+        body (TraceImport): A trace as a tool exported it.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[ErrorResponse | TraceImported]
+    """
+
+    kwargs = _get_kwargs(
+        body=body,
+    )
+
+    response = client.get_httpx_client().request(
+        **kwargs,
+    )
+
+    return _build_response(client=client, response=response)
+
+
+def sync(
+    *,
+    client: AuthenticatedClient | Client,
+    body: TraceImport,
+) -> ErrorResponse | TraceImported | None:
+    """Read a trace as a tool exports it into the inputs of trace.analysis
+
+     CSV (column mapping and units), Open Protocol MID 0900, OPC UA StepTraceDataType or
+    Rexroth result JSON, answered as angle [rad], torque [N*m] and time [s]: merge
+    ``inputs`` with the joint's inputs and POST them to /api/v1/trace/analysis.
+
+    Args:
+        body (TraceImport): A trace as a tool exported it.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        ErrorResponse | TraceImported
+    """
+
+    return sync_detailed(
+        client=client,
+        body=body,
+    ).parsed
+
+
+async def asyncio_detailed(
+    *,
+    client: AuthenticatedClient | Client,
+    body: TraceImport,
+) -> Response[ErrorResponse | TraceImported]:
+    """Read a trace as a tool exports it into the inputs of trace.analysis
+
+     CSV (column mapping and units), Open Protocol MID 0900, OPC UA StepTraceDataType or
+    Rexroth result JSON, answered as angle [rad], torque [N*m] and time [s]: merge
+    ``inputs`` with the joint's inputs and POST them to /api/v1/trace/analysis.
+
+    Args:
+        body (TraceImport): A trace as a tool exported it.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[ErrorResponse | TraceImported]
+    """
+
+    kwargs = _get_kwargs(
+        body=body,
+    )
+
+    response = await client.get_async_httpx_client().request(**kwargs)
+
+    return _build_response(client=client, response=response)
+
+
+async def asyncio(
+    *,
+    client: AuthenticatedClient | Client,
+    body: TraceImport,
+) -> ErrorResponse | TraceImported | None:
+    """Read a trace as a tool exports it into the inputs of trace.analysis
+
+     CSV (column mapping and units), Open Protocol MID 0900, OPC UA StepTraceDataType or
+    Rexroth result JSON, answered as angle [rad], torque [N*m] and time [s]: merge
+    ``inputs`` with the joint's inputs and POST them to /api/v1/trace/analysis.
+
+    Args:
+        body (TraceImport): A trace as a tool exported it.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        ErrorResponse | TraceImported
+    """
+
+    return (
+        await asyncio_detailed(
+            client=client,
+            body=body,
+        )
+    ).parsed

@@ -1,0 +1,218 @@
+from http import HTTPStatus
+from typing import Any
+
+import httpx
+
+from ... import errors
+from ...client import AuthenticatedClient, Client
+from ...models.error_response import ErrorResponse
+from ...models.trace_program_request import TraceProgramRequest
+from ...models.trace_program_response import TraceProgramResponse
+from ...types import Response
+
+
+def _get_kwargs(
+    *,
+    body: TraceProgramRequest,
+) -> dict[str, Any]:
+    headers: dict[str, Any] = {}
+
+    _kwargs: dict[str, Any] = {
+        "method": "post",
+        "url": "/api/v1/trace/program",
+    }
+
+    _kwargs["json"] = body.to_dict()
+
+    headers["Content-Type"] = "application/json"
+
+    _kwargs["headers"] = headers
+    return _kwargs
+
+
+def _parse_response(
+    *, client: AuthenticatedClient | Client, response: httpx.Response
+) -> ErrorResponse | TraceProgramResponse | None:
+    if response.status_code == 200:
+        response_200 = TraceProgramResponse.from_dict(response.json())
+
+        return response_200
+
+    if response.status_code == 400:
+        response_400 = ErrorResponse.from_dict(response.json())
+
+        return response_400
+
+    if response.status_code == 413:
+        response_413 = ErrorResponse.from_dict(response.json())
+
+        return response_413
+
+    if response.status_code == 415:
+        response_415 = ErrorResponse.from_dict(response.json())
+
+        return response_415
+
+    if response.status_code == 422:
+        response_422 = ErrorResponse.from_dict(response.json())
+
+        return response_422
+
+    if response.status_code == 503:
+        response_503 = ErrorResponse.from_dict(response.json())
+
+        return response_503
+
+    if client.raise_on_unexpected_status:
+        raise errors.UnexpectedStatus(response.status_code, response.content)
+    else:
+        return None
+
+
+def _build_response(
+    *, client: AuthenticatedClient | Client, response: httpx.Response
+) -> Response[ErrorResponse | TraceProgramResponse]:
+    return Response(
+        status_code=HTTPStatus(response.status_code),
+        content=response.content,
+        headers=response.headers,
+        parsed=_parse_response(client=client, response=response),
+    )
+
+
+def sync_detailed(
+    *,
+    client: AuthenticatedClient | Client,
+    body: TraceProgramRequest,
+) -> Response[ErrorResponse | TraceProgramResponse]:
+    """Controller program from the joint: snug torque, angle, torque and gradient windows
+
+     From the joint (its compliance, friction box and window F_M,min…F_M,zul): the settings of a torque-
+    then-angle or yield-point program in plain parameters: snug torque, final angle and its window, the
+    torque monitoring window, the elastic rate expected and the yield-gradient threshold.
+
+    Source: [004, eq. 8] differentiated and VDI 2230-1 R13 (the elastic torque rate from the joint's
+    compliance and torque coefficient); gradient-drop yield detection as controllers do it [Desoutter-
+    CVIR] [AtlasCopco-PF], the YIELD tag of OPC 40450; the joint of VDI 2230-1 R0–R13 (joint.vdi2230)
+
+    Args:
+        body (TraceProgramRequest):
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[ErrorResponse | TraceProgramResponse]
+    """
+
+    kwargs = _get_kwargs(
+        body=body,
+    )
+
+    response = client.get_httpx_client().request(
+        **kwargs,
+    )
+
+    return _build_response(client=client, response=response)
+
+
+def sync(
+    *,
+    client: AuthenticatedClient | Client,
+    body: TraceProgramRequest,
+) -> ErrorResponse | TraceProgramResponse | None:
+    """Controller program from the joint: snug torque, angle, torque and gradient windows
+
+     From the joint (its compliance, friction box and window F_M,min…F_M,zul): the settings of a torque-
+    then-angle or yield-point program in plain parameters: snug torque, final angle and its window, the
+    torque monitoring window, the elastic rate expected and the yield-gradient threshold.
+
+    Source: [004, eq. 8] differentiated and VDI 2230-1 R13 (the elastic torque rate from the joint's
+    compliance and torque coefficient); gradient-drop yield detection as controllers do it [Desoutter-
+    CVIR] [AtlasCopco-PF], the YIELD tag of OPC 40450; the joint of VDI 2230-1 R0–R13 (joint.vdi2230)
+
+    Args:
+        body (TraceProgramRequest):
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        ErrorResponse | TraceProgramResponse
+    """
+
+    return sync_detailed(
+        client=client,
+        body=body,
+    ).parsed
+
+
+async def asyncio_detailed(
+    *,
+    client: AuthenticatedClient | Client,
+    body: TraceProgramRequest,
+) -> Response[ErrorResponse | TraceProgramResponse]:
+    """Controller program from the joint: snug torque, angle, torque and gradient windows
+
+     From the joint (its compliance, friction box and window F_M,min…F_M,zul): the settings of a torque-
+    then-angle or yield-point program in plain parameters: snug torque, final angle and its window, the
+    torque monitoring window, the elastic rate expected and the yield-gradient threshold.
+
+    Source: [004, eq. 8] differentiated and VDI 2230-1 R13 (the elastic torque rate from the joint's
+    compliance and torque coefficient); gradient-drop yield detection as controllers do it [Desoutter-
+    CVIR] [AtlasCopco-PF], the YIELD tag of OPC 40450; the joint of VDI 2230-1 R0–R13 (joint.vdi2230)
+
+    Args:
+        body (TraceProgramRequest):
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[ErrorResponse | TraceProgramResponse]
+    """
+
+    kwargs = _get_kwargs(
+        body=body,
+    )
+
+    response = await client.get_async_httpx_client().request(**kwargs)
+
+    return _build_response(client=client, response=response)
+
+
+async def asyncio(
+    *,
+    client: AuthenticatedClient | Client,
+    body: TraceProgramRequest,
+) -> ErrorResponse | TraceProgramResponse | None:
+    """Controller program from the joint: snug torque, angle, torque and gradient windows
+
+     From the joint (its compliance, friction box and window F_M,min…F_M,zul): the settings of a torque-
+    then-angle or yield-point program in plain parameters: snug torque, final angle and its window, the
+    torque monitoring window, the elastic rate expected and the yield-gradient threshold.
+
+    Source: [004, eq. 8] differentiated and VDI 2230-1 R13 (the elastic torque rate from the joint's
+    compliance and torque coefficient); gradient-drop yield detection as controllers do it [Desoutter-
+    CVIR] [AtlasCopco-PF], the YIELD tag of OPC 40450; the joint of VDI 2230-1 R0–R13 (joint.vdi2230)
+
+    Args:
+        body (TraceProgramRequest):
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        ErrorResponse | TraceProgramResponse
+    """
+
+    return (
+        await asyncio_detailed(
+            client=client,
+            body=body,
+        )
+    ).parsed

@@ -1,0 +1,231 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, TypeVar, cast
+
+from attrs import define as _attrs_define
+from attrs import field as _attrs_field
+
+from ..models.clutch_ball_response_error_kind_type_0 import ClutchBallResponseErrorKindType0
+from ..types import UNSET, Unset
+
+if TYPE_CHECKING:
+    from ..models.check_out import CheckOut
+    from ..models.clutch_ball_response_inputs import ClutchBallResponseInputs
+    from ..models.clutch_ball_response_series import ClutchBallResponseSeries
+    from ..models.clutch_ball_response_units import ClutchBallResponseUnits
+    from ..models.clutch_ball_results import ClutchBallResults
+
+
+T = TypeVar("T", bound="ClutchBallResponse")
+
+
+@_attrs_define
+class ClutchBallResponse:
+    """
+    Attributes:
+        model (str): model name
+        results (ClutchBallResults):
+        units (ClutchBallResponseUnits): SI unit of each result and series
+        rung (str): the rung that ran
+        error_estimate (float | None): estimated relative error of the results (null: not known)
+        elapsed_s (float): compute time, seconds
+        error_kind (ClutchBallResponseErrorKindType0 | None | Unset): what error_estimate promises: 'bound' (no design
+            in the declared ranges exceeds it, measured: docs/accuracy.md) or 'typical' (some do; a note says how often);
+            null with no estimate
+        checks (list[CheckOut] | Unset):
+        notes (list[str] | Unset):
+        warnings (list[str] | Unset):
+        series (ClutchBallResponseSeries | Unset): time series for plots, SI values
+        inputs (ClutchBallResponseInputs | Unset): every input used, defaults filled, SI
+    """
+
+    model: str
+    results: ClutchBallResults
+    units: ClutchBallResponseUnits
+    rung: str
+    error_estimate: float | None
+    elapsed_s: float
+    error_kind: ClutchBallResponseErrorKindType0 | None | Unset = UNSET
+    checks: list[CheckOut] | Unset = UNSET
+    notes: list[str] | Unset = UNSET
+    warnings: list[str] | Unset = UNSET
+    series: ClutchBallResponseSeries | Unset = UNSET
+    inputs: ClutchBallResponseInputs | Unset = UNSET
+    additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
+
+    def to_dict(self) -> dict[str, Any]:
+        model = self.model
+
+        results = self.results.to_dict()
+
+        units = self.units.to_dict()
+
+        rung = self.rung
+
+        error_estimate: float | None
+        error_estimate = self.error_estimate
+
+        elapsed_s = self.elapsed_s
+
+        error_kind: None | str | Unset
+        if isinstance(self.error_kind, Unset):
+            error_kind = UNSET
+        elif isinstance(self.error_kind, ClutchBallResponseErrorKindType0):
+            error_kind = self.error_kind.value
+        else:
+            error_kind = self.error_kind
+
+        checks: list[dict[str, Any]] | Unset = UNSET
+        if not isinstance(self.checks, Unset):
+            checks = []
+            for checks_item_data in self.checks:
+                checks_item = checks_item_data.to_dict()
+                checks.append(checks_item)
+
+        notes: list[str] | Unset = UNSET
+        if not isinstance(self.notes, Unset):
+            notes = self.notes
+
+        warnings: list[str] | Unset = UNSET
+        if not isinstance(self.warnings, Unset):
+            warnings = self.warnings
+
+        series: dict[str, Any] | Unset = UNSET
+        if not isinstance(self.series, Unset):
+            series = self.series.to_dict()
+
+        inputs: dict[str, Any] | Unset = UNSET
+        if not isinstance(self.inputs, Unset):
+            inputs = self.inputs.to_dict()
+
+        field_dict: dict[str, Any] = {}
+        field_dict.update(self.additional_properties)
+        field_dict.update(
+            {
+                "model": model,
+                "results": results,
+                "units": units,
+                "rung": rung,
+                "error_estimate": error_estimate,
+                "elapsed_s": elapsed_s,
+            }
+        )
+        if error_kind is not UNSET:
+            field_dict["error_kind"] = error_kind
+        if checks is not UNSET:
+            field_dict["checks"] = checks
+        if notes is not UNSET:
+            field_dict["notes"] = notes
+        if warnings is not UNSET:
+            field_dict["warnings"] = warnings
+        if series is not UNSET:
+            field_dict["series"] = series
+        if inputs is not UNSET:
+            field_dict["inputs"] = inputs
+
+        return field_dict
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.check_out import CheckOut  # noqa: PLC0415
+        from ..models.clutch_ball_response_inputs import ClutchBallResponseInputs  # noqa: PLC0415
+        from ..models.clutch_ball_response_series import ClutchBallResponseSeries  # noqa: PLC0415
+        from ..models.clutch_ball_response_units import ClutchBallResponseUnits  # noqa: PLC0415
+        from ..models.clutch_ball_results import ClutchBallResults  # noqa: PLC0415
+
+        d = dict(src_dict)
+        model = d.pop("model")
+
+        results = ClutchBallResults.from_dict(d.pop("results"))
+
+        units = ClutchBallResponseUnits.from_dict(d.pop("units"))
+
+        rung = d.pop("rung")
+
+        def _parse_error_estimate(data: object) -> float | None:
+            if data is None:
+                return data
+            return cast(float | None, data)
+
+        error_estimate = _parse_error_estimate(d.pop("error_estimate"))
+
+        elapsed_s = d.pop("elapsed_s")
+
+        def _parse_error_kind(data: object) -> ClutchBallResponseErrorKindType0 | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, str):
+                    raise TypeError()
+                error_kind_type_0 = ClutchBallResponseErrorKindType0(data)
+
+                return error_kind_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(ClutchBallResponseErrorKindType0 | None | Unset, data)
+
+        error_kind = _parse_error_kind(d.pop("error_kind", UNSET))
+
+        _checks = d.pop("checks", UNSET)
+        checks: list[CheckOut] | Unset = UNSET
+        if _checks is not UNSET:
+            checks = []
+            for checks_item_data in _checks:
+                checks_item = CheckOut.from_dict(checks_item_data)
+
+                checks.append(checks_item)
+
+        notes = cast(list[str], d.pop("notes", UNSET))
+
+        warnings = cast(list[str], d.pop("warnings", UNSET))
+
+        _series = d.pop("series", UNSET)
+        series: ClutchBallResponseSeries | Unset
+        if isinstance(_series, Unset):
+            series = UNSET
+        else:
+            series = ClutchBallResponseSeries.from_dict(_series)
+
+        _inputs = d.pop("inputs", UNSET)
+        inputs: ClutchBallResponseInputs | Unset
+        if isinstance(_inputs, Unset):
+            inputs = UNSET
+        else:
+            inputs = ClutchBallResponseInputs.from_dict(_inputs)
+
+        clutch_ball_response = cls(
+            model=model,
+            results=results,
+            units=units,
+            rung=rung,
+            error_estimate=error_estimate,
+            elapsed_s=elapsed_s,
+            error_kind=error_kind,
+            checks=checks,
+            notes=notes,
+            warnings=warnings,
+            series=series,
+            inputs=inputs,
+        )
+
+        clutch_ball_response.additional_properties = d
+        return clutch_ball_response
+
+    @property
+    def additional_keys(self) -> list[str]:
+        return list(self.additional_properties.keys())
+
+    def __getitem__(self, key: str) -> Any:
+        return self.additional_properties[key]
+
+    def __setitem__(self, key: str, value: Any) -> None:
+        self.additional_properties[key] = value
+
+    def __delitem__(self, key: str) -> None:
+        del self.additional_properties[key]
+
+    def __contains__(self, key: str) -> bool:
+        return key in self.additional_properties

@@ -1,0 +1,10 @@
+from enum import StrEnum
+
+
+class ImpactRareRequestFidelityType0(StrEnum):
+    AUTO = "auto"
+    CLOSED_FORM = "closed_form"
+    SIMULATION = "simulation"
+
+    def __str__(self) -> str:
+        return str(self.value)

@@ -1,0 +1,209 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, TypeVar, cast
+
+from attrs import define as _attrs_define
+
+from ..models.joint_flange_sweep_request_fidelity_type_0 import JointFlangeSweepRequestFidelityType0
+from ..models.joint_flange_sweep_request_outputs_type_0_item import JointFlangeSweepRequestOutputsType0Item
+from ..models.joint_flange_sweep_request_scale import JointFlangeSweepRequestScale
+from ..models.joint_flange_sweep_request_vary import JointFlangeSweepRequestVary
+from ..types import UNSET, Unset
+
+if TYPE_CHECKING:
+    from ..models.joint_flange_sweep_base import JointFlangeSweepBase
+
+
+T = TypeVar("T", bound="JointFlangeSweepRequest")
+
+
+@_attrs_define
+class JointFlangeSweepRequest:
+    """
+    Attributes:
+        vary (JointFlangeSweepRequestVary): the input to vary
+        start (float | str): first value: SI number or string with a unit
+        stop (float | str): last value: SI number or string with a unit
+        base (JointFlangeSweepBase | Unset):
+        num (int | Unset): number of points Default: 50.
+        scale (JointFlangeSweepRequestScale | Unset):  Default: JointFlangeSweepRequestScale.LINEAR.
+        outputs (list[JointFlangeSweepRequestOutputsType0Item] | None | Unset):
+        fidelity (JointFlangeSweepRequestFidelityType0 | None | Unset): as for a single evaluation (absent: 'auto', or
+            'auto' when a tolerance is given); auto chooses per point
+        tolerance (float | None | Unset):
+    """
+
+    vary: JointFlangeSweepRequestVary
+    start: float | str
+    stop: float | str
+    base: JointFlangeSweepBase | Unset = UNSET
+    num: int | Unset = 50
+    scale: JointFlangeSweepRequestScale | Unset = JointFlangeSweepRequestScale.LINEAR
+    outputs: list[JointFlangeSweepRequestOutputsType0Item] | None | Unset = UNSET
+    fidelity: JointFlangeSweepRequestFidelityType0 | None | Unset = UNSET
+    tolerance: float | None | Unset = UNSET
+
+    def to_dict(self) -> dict[str, Any]:
+        vary = self.vary.value
+
+        start: float | str
+        start = self.start
+
+        stop: float | str
+        stop = self.stop
+
+        base: dict[str, Any] | Unset = UNSET
+        if not isinstance(self.base, Unset):
+            base = self.base.to_dict()
+
+        num = self.num
+
+        scale: str | Unset = UNSET
+        if not isinstance(self.scale, Unset):
+            scale = self.scale.value
+
+        outputs: list[str] | None | Unset
+        if isinstance(self.outputs, Unset):
+            outputs = UNSET
+        elif isinstance(self.outputs, list):
+            outputs = []
+            for outputs_type_0_item_data in self.outputs:
+                outputs_type_0_item = outputs_type_0_item_data.value
+                outputs.append(outputs_type_0_item)
+
+        else:
+            outputs = self.outputs
+
+        fidelity: None | str | Unset
+        if isinstance(self.fidelity, Unset):
+            fidelity = UNSET
+        elif isinstance(self.fidelity, JointFlangeSweepRequestFidelityType0):
+            fidelity = self.fidelity.value
+        else:
+            fidelity = self.fidelity
+
+        tolerance: float | None | Unset
+        if isinstance(self.tolerance, Unset):
+            tolerance = UNSET
+        else:
+            tolerance = self.tolerance
+
+        field_dict: dict[str, Any] = {}
+
+        field_dict.update(
+            {
+                "vary": vary,
+                "start": start,
+                "stop": stop,
+            }
+        )
+        if base is not UNSET:
+            field_dict["base"] = base
+        if num is not UNSET:
+            field_dict["num"] = num
+        if scale is not UNSET:
+            field_dict["scale"] = scale
+        if outputs is not UNSET:
+            field_dict["outputs"] = outputs
+        if fidelity is not UNSET:
+            field_dict["fidelity"] = fidelity
+        if tolerance is not UNSET:
+            field_dict["tolerance"] = tolerance
+
+        return field_dict
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.joint_flange_sweep_base import JointFlangeSweepBase  # noqa: PLC0415
+
+        d = dict(src_dict)
+        vary = JointFlangeSweepRequestVary(d.pop("vary"))
+
+        def _parse_start(data: object) -> float | str:
+            return cast(float | str, data)
+
+        start = _parse_start(d.pop("start"))
+
+        def _parse_stop(data: object) -> float | str:
+            return cast(float | str, data)
+
+        stop = _parse_stop(d.pop("stop"))
+
+        _base = d.pop("base", UNSET)
+        base: JointFlangeSweepBase | Unset
+        if isinstance(_base, Unset):
+            base = UNSET
+        else:
+            base = JointFlangeSweepBase.from_dict(_base)
+
+        num = d.pop("num", UNSET)
+
+        _scale = d.pop("scale", UNSET)
+        scale: JointFlangeSweepRequestScale | Unset
+        if isinstance(_scale, Unset):
+            scale = UNSET
+        else:
+            scale = JointFlangeSweepRequestScale(_scale)
+
+        def _parse_outputs(data: object) -> list[JointFlangeSweepRequestOutputsType0Item] | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                outputs_type_0 = []
+                _outputs_type_0 = data
+                for outputs_type_0_item_data in _outputs_type_0:
+                    outputs_type_0_item = JointFlangeSweepRequestOutputsType0Item(outputs_type_0_item_data)
+
+                    outputs_type_0.append(outputs_type_0_item)
+
+                return outputs_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[JointFlangeSweepRequestOutputsType0Item] | None | Unset, data)
+
+        outputs = _parse_outputs(d.pop("outputs", UNSET))
+
+        def _parse_fidelity(data: object) -> JointFlangeSweepRequestFidelityType0 | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, str):
+                    raise TypeError()
+                fidelity_type_0 = JointFlangeSweepRequestFidelityType0(data)
+
+                return fidelity_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(JointFlangeSweepRequestFidelityType0 | None | Unset, data)
+
+        fidelity = _parse_fidelity(d.pop("fidelity", UNSET))
+
+        def _parse_tolerance(data: object) -> float | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | Unset, data)
+
+        tolerance = _parse_tolerance(d.pop("tolerance", UNSET))
+
+        joint_flange_sweep_request = cls(
+            vary=vary,
+            start=start,
+            stop=stop,
+            base=base,
+            num=num,
+            scale=scale,
+            outputs=outputs,
+            fidelity=fidelity,
+            tolerance=tolerance,
+        )
+
+        return joint_flange_sweep_request

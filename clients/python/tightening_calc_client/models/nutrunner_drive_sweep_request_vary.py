@@ -1,0 +1,43 @@
+from enum import StrEnum
+
+
+class NutrunnerDriveSweepRequestVary(StrEnum):
+    BELT_EFFICIENCY = "belt_efficiency"
+    BREAKDOWN_TORQUE = "breakdown_torque"
+    COUPLING_DIAMETER = "coupling_diameter"
+    COUPLING_MASS = "coupling_mass"
+    COUPLING_SERVICE_FACTOR = "coupling_service_factor"
+    DRIVE_GEAR_DIAMETER = "drive_gear_diameter"
+    DRIVE_GEAR_MASS = "drive_gear_mass"
+    FLYWHEEL_DIAMETER = "flywheel_diameter"
+    FLYWHEEL_MASS = "flywheel_mass"
+    FRICTION_CLUTCH_CLAMP_FORCE = "friction_clutch_clamp_force"
+    FRICTION_CLUTCH_FACES = "friction_clutch_faces"
+    FRICTION_CLUTCH_FRICTION = "friction_clutch_friction"
+    FRICTION_CLUTCH_INNER_DIAMETER = "friction_clutch_inner_diameter"
+    FRICTION_CLUTCH_OUTER_DIAMETER = "friction_clutch_outer_diameter"
+    GEAR_EFFICIENCY = "gear_efficiency"
+    IDLE_SPINDLE_FRICTION_TORQUE = "idle_spindle_friction_torque"
+    MOTOR_POWER = "motor_power"
+    MOTOR_PULLEY_DIAMETER = "motor_pulley_diameter"
+    MOTOR_PULLEY_MASS = "motor_pulley_mass"
+    MOTOR_SPEED = "motor_speed"
+    NO_LOAD_SPEED = "no_load_speed"
+    RATED_SPEED = "rated_speed"
+    RATED_TORQUE = "rated_torque"
+    ROTOR_INERTIA = "rotor_inertia"
+    SHAFT_DIAMETER = "shaft_diameter"
+    SHAFT_LENGTH = "shaft_length"
+    SHEAR_MODULUS = "shear_modulus"
+    SHEAR_YIELD_STRENGTH = "shear_yield_strength"
+    SPINDLE_COUNT = "spindle_count"
+    SPINDLE_DIAMETER = "spindle_diameter"
+    SPINDLE_GEAR_DIAMETER = "spindle_gear_diameter"
+    SPINDLE_GEAR_MASS = "spindle_gear_mass"
+    SPINDLE_LENGTH = "spindle_length"
+    STALL_TORQUE = "stall_torque"
+    SYNCHRONOUS_SPEED = "synchronous_speed"
+    WHEEL_NUT_TORQUE = "wheel_nut_torque"
+
+    def __str__(self) -> str:
+        return str(self.value)

@@ -1,0 +1,40 @@
+from enum import StrEnum
+
+
+class PreloadControlSweepRequestVary(StrEnum):
+    BEARING_FRICTION = "bearing_friction"
+    BEARING_FRICTION_MAX = "bearing_friction_max"
+    BEARING_FRICTION_MIN = "bearing_friction_min"
+    BEARING_OUTER_DIAMETER = "bearing_outer_diameter"
+    CLAMPED_COMPLIANCE = "clamped_compliance"
+    CLAMPED_LENGTH = "clamped_length"
+    CLAMPED_YOUNGS_MODULUS = "clamped_youngs_modulus"
+    COUPLING_OUTER_DIAMETER = "coupling_outer_diameter"
+    ENGAGEMENT_LENGTH = "engagement_length"
+    HISTOGRAM_BINS = "histogram_bins"
+    HOLE_DIAMETER = "hole_diameter"
+    INTERNAL_THREAD_SHEAR_STRENGTH = "internal_thread_shear_strength"
+    LIMITING_SURFACE_PRESSURE = "limiting_surface_pressure"
+    NUT_HEIGHT = "nut_height"
+    PRELOAD = "preload"
+    PRELOAD_FACTOR = "preload_factor"
+    REDUCED_DIAMETER = "reduced_diameter"
+    REDUCED_LENGTH = "reduced_length"
+    REQUIRED_CLAMP_FORCE = "required_clamp_force"
+    SAMPLE_SIZE = "sample_size"
+    SCATTER_TORQUE = "scatter_torque"
+    SHANK_DIAMETER = "shank_diameter"
+    SHANK_LENGTH = "shank_length"
+    SNUG_FRACTION = "snug_fraction"
+    THREAD_DIAMETER = "thread_diameter"
+    THREAD_FRICTION = "thread_friction"
+    THREAD_FRICTION_MAX = "thread_friction_max"
+    THREAD_FRICTION_MIN = "thread_friction_min"
+    THREAD_PITCH = "thread_pitch"
+    UTILIZATION = "utilization"
+    WORKING_BOLT_FORCE = "working_bolt_force"
+    YIELD_STRENGTH = "yield_strength"
+    YOUNGS_MODULUS = "youngs_modulus"
+
+    def __str__(self) -> str:
+        return str(self.value)

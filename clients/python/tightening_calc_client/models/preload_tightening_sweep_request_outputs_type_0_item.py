@@ -1,0 +1,42 @@
+from enum import StrEnum
+
+
+class PreloadTighteningSweepRequestOutputsType0Item(StrEnum):
+    ASSEMBLY_PRELOAD = "assembly_preload"
+    BEARING_AREA = "bearing_area"
+    BEARING_OUTER_DIAMETER = "bearing_outer_diameter"
+    BEARING_TORQUE = "bearing_torque"
+    BOLT_BREAKING_FORCE = "bolt_breaking_force"
+    DRIVE_TORQUE_LIMIT = "drive_torque_limit"
+    EQUIVALENT_STRESS = "equivalent_stress"
+    FASTENER = "fastener"
+    FRICTION_RADIUS = "friction_radius"
+    HOLE_DIAMETER = "hole_diameter"
+    IDEAL_TORQUE = "ideal_torque"
+    IDEAL_TORQUE_SHARE = "ideal_torque_share"
+    LIMITING_SURFACE_PRESSURE = "limiting_surface_pressure"
+    MINOR_DIAMETER = "minor_diameter"
+    MIN_ENGAGEMENT_LENGTH = "min_engagement_length"
+    NUT_PROOF_LOAD = "nut_proof_load"
+    NUT_STRIPPING_FORCE = "nut_stripping_force"
+    PERMISSIBLE_PRELOAD = "permissible_preload"
+    PITCH_DIAMETER = "pitch_diameter"
+    RULE_OF_THUMB_DEVIATION = "rule_of_thumb_deviation"
+    RULE_OF_THUMB_TORQUE = "rule_of_thumb_torque"
+    STRESS_AREA = "stress_area"
+    STRESS_UTILIZATION = "stress_utilization"
+    STRIPPING_FORCE = "stripping_force"
+    SURFACE_PRESSURE_HEAD = "surface_pressure_head"
+    SURFACE_PRESSURE_HEAD_WORKING = "surface_pressure_head_working"
+    SURFACE_PRESSURE_NUT = "surface_pressure_nut"
+    THREAD_PITCH = "thread_pitch"
+    THREAD_TORQUE = "thread_torque"
+    TIGHTENING_TORQUE = "tightening_torque"
+    TORQUE_FORMULA_DEVIATION = "torque_formula_deviation"
+    TORSION_FACTOR = "torsion_factor"
+    YIELD_RULE_DEVIATION = "yield_rule_deviation"
+    YIELD_RULE_TORQUE = "yield_rule_torque"
+    YIELD_STRENGTH = "yield_strength"
+
+    def __str__(self) -> str:
+        return str(self.value)

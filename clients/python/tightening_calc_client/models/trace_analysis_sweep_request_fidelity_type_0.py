@@ -1,0 +1,9 @@
+from enum import StrEnum
+
+
+class TraceAnalysisSweepRequestFidelityType0(StrEnum):
+    AUTO = "auto"
+    DETECTION = "detection"
+
+    def __str__(self) -> str:
+        return str(self.value)

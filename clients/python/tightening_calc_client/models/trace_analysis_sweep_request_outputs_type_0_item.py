@@ -1,0 +1,40 @@
+from enum import StrEnum
+
+
+class TraceAnalysisSweepRequestOutputsType0Item(StrEnum):
+    ASSEMBLY_PRELOAD_MIN = "assembly_preload_min"
+    ELASTIC_RATE = "elastic_rate"
+    ELASTIC_WINDOW_END = "elastic_window_end"
+    ELASTIC_WINDOW_START = "elastic_window_start"
+    FINAL_ANGLE = "final_angle"
+    FINAL_TORQUE = "final_torque"
+    PERMISSIBLE_PRELOAD = "permissible_preload"
+    PREDICTED_RATE_MAX = "predicted_rate_max"
+    PREDICTED_RATE_MIN = "predicted_rate_min"
+    PREDICTED_SNUG_TO_YIELD_MAX = "predicted_snug_to_yield_max"
+    PREDICTED_SNUG_TO_YIELD_MIN = "predicted_snug_to_yield_min"
+    PREDICTED_YIELD_TORQUE_MAX = "predicted_yield_torque_max"
+    PREDICTED_YIELD_TORQUE_MIN = "predicted_yield_torque_min"
+    PRELOAD = "preload"
+    PRELOAD_IN_WINDOW = "preload_in_window"
+    PRELOAD_MAX = "preload_max"
+    PRELOAD_MIN = "preload_min"
+    SNUG_ANGLE = "snug_angle"
+    SNUG_TORQUE = "snug_torque"
+    SNUG_TO_YIELD_ANGLE = "snug_to_yield_angle"
+    STEPS_FOUND = "steps_found"
+    STEP_ANALYSED = "step_analysed"
+    THREAD_FRICTION_HIGH = "thread_friction_high"
+    THREAD_FRICTION_LOW = "thread_friction_low"
+    TORQUE_PER_PRELOAD = "torque_per_preload"
+    TOTAL_FRICTION = "total_friction"
+    TOTAL_FRICTION_MAX = "total_friction_max"
+    TOTAL_FRICTION_MIN = "total_friction_min"
+    YIELD_ANGLE = "yield_angle"
+    YIELD_DETECTED = "yield_detected"
+    YIELD_PRELOAD_MIN = "yield_preload_min"
+    YIELD_TORQUE = "yield_torque"
+    ZERO_PRELOAD_ANGLE = "zero_preload_angle"
+
+    def __str__(self) -> str:
+        return str(self.value)
