@@ -126,7 +126,7 @@ def spring_height_bounds(moving_mass: Any, gravity: Any, c1: Any, c3: Any) -> tu
 def _outcome(x: Mapping[str, Any], ctx: RunContext) -> CycleOutcome:
     if ctx.rung == "simulation":
         return simulate_cycle(
-            x,
+            _inputs(x, ctx.scratch),
             record=ctx.wants(*_SERIES),
             deadline=ctx.deadline,
             max_steps=ctx.max_steps,
@@ -538,7 +538,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         error: float | None = _SIMULATION_ERROR
         if ctx.wants("half_coupling_release_speed"):
             # the speed at release is a small difference of an oscillation: its own bound
-            speed_error = simulation_release_velocity_error(x, o)
+            speed_error = simulation_release_velocity_error(_inputs(x, ctx.scratch), o)
             error = max(_SIMULATION_ERROR, speed_error) if math.isfinite(speed_error) else None
         notes.append(
             f"simulation: the whole cycle, one compiled RK4 with {200} steps per shortest "

@@ -2080,6 +2080,7 @@ def simulate_cycle(
     >>> round(o.release_speed, 2), round(o.engagement_time * 1e3, 3)
     (244.12, 6.558)
     """
+    x = _numbers(x)  # once for the stage-1 steps below (their geometry and speeds)
     g = _geo(x)
     p = _params(x, g)
     if deadline is not None:
