@@ -1338,6 +1338,10 @@ def _advance(  # type: ignore[no-untyped-def]
     """
     n_ev = ekind.shape[0]
     cap = rt.shape[0]
+    # the one-sided stage 3's arguments of _sign_change, which this kernel does not use
+    f1 = np.empty(0)
+    f2 = np.empty((0, 0))
+    none = (np.empty(0, dtype=np.bool_), f1, f1, 0, f1, f1, f1, f1, f2, f2, np.empty(0, np.int64))
     for i in range(n_max):
         hh = h
         if t + hh > t_end:
@@ -1366,16 +1370,7 @@ def _advance(  # type: ignore[no-untyped-def]
                 gb = d * _gfun_c(mode, ekind[e], p, wn, q0n, q1n, v0n, v1n)
                 s = -1.0
                 if ga < 0.0 and gb >= 0.0:
-                    lo = 0.0
-                    hi = 1.0
-                    for _ in range(50):
-                        mid = 0.5 * (lo + hi)
-                        wm, a0m, a1m, b0m, b1m = _rk4_c(mode, p, w, q0, q1, v0, v1, mid * hh)
-                        if d * _gfun_c(mode, ekind[e], p, wm, a0m, a1m, b0m, b1m) >= 0.0:
-                            hi = mid
-                        else:
-                            lo = mid
-                    s = hi
+                    s = _sign_change_c(mode, ekind[e], d, p, w, q0, q1, v0, v1, hh, *none)
             if s >= 0.0 and s < best:
                 best = s
                 which = e
@@ -1549,6 +1544,39 @@ def _contact_rk4(p, active, q, v, h, qn, vn, st, wk, idx):  # type: ignore[no-un
 _contact_rk4_c = jit(_contact_rk4, error_model="numpy")
 
 
+def _sign_change(  # type: ignore[no-untyped-def]
+    mode, kind, d, p, w, q0, q1, v0, v1, h, active, q, v, c, qs, vs, acc, lam, st, wk, idx,
+):  # fmt: skip
+    """Fraction s of a step where d·g first turns ≥ 0 (negative at its start, ≥ 0 at its end).
+
+    Bisected 50 times on real RK4 sub-steps from the step's start. ``g`` is, for
+    ``mode`` ≥ 0 (:func:`_advance`), :func:`_gfun`'s event ``kind`` of that mode from
+    (w, q0, q1, v0, v1); for ``mode`` = -1 (:func:`_contact_advance`), the reaction of
+    contact ``c`` of the one-sided stage 3 from (q, v), ``qs`` to ``idx`` its scratch
+    space. Both kernels call it directly (numba's disk cache refuses a function passed as
+    a value), each with the other's arguments unused.
+    """
+    lo = 0.0
+    hi = 1.0
+    for _ in range(50):
+        mid = 0.5 * (lo + hi)
+        if mode < 0:
+            _contact_rk4_c(p, active, q, v, mid * h, qs, vs, st, wk, idx)
+            _contact_accel_c(p, active, qs, acc, lam, wk, idx)
+            g = lam[c]
+        else:
+            wm, a0m, a1m, b0m, b1m = _rk4_c(mode, p, w, q0, q1, v0, v1, mid * h)
+            g = _gfun_c(mode, kind, p, wm, a0m, a1m, b0m, b1m)
+        if d * g >= 0.0:
+            hi = mid
+        else:
+            lo = mid
+    return hi
+
+
+_sign_change_c = jit(_sign_change, error_model="numpy")
+
+
 def _contact_advance(  # type: ignore[no-untyped-def]
     p, active, t, q, v, h, n_max, t_end, ekind, ecoef, elvl, edir, stride, rt, rx, rq0, rq1,
     n_rec,
@@ -1608,17 +1636,10 @@ def _contact_advance(  # type: ignore[no-untyped-def]
                 _contact_accel_c(p, active, qn, acc, lam, wk, idx)
                 gb = d * lam[c]
                 if ga < 0.0 and gb >= 0.0:
-                    lo = 0.0
-                    hi = 1.0
-                    for _ in range(50):
-                        mid = 0.5 * (lo + hi)
-                        _contact_rk4_c(p, active, q, v, mid * hh, qs, vs, st, wk, idx)
-                        _contact_accel_c(p, active, qs, acc, lam, wk, idx)
-                        if d * lam[c] >= 0.0:
-                            hi = mid
-                        else:
-                            lo = mid
-                    s = hi
+                    s = _sign_change_c(
+                        -1, 0, d, p, 0.0, 0.0, 0.0, 0.0, 0.0, hh,
+                        active, q, v, c, qs, vs, acc, lam, st, wk, idx,
+                    )  # fmt: skip
             if s >= 0.0 and s < best:
                 best = s
                 which = e
