@@ -32,7 +32,7 @@ from ..core.spec import (
     Scratch,
     Window,
 )
-from ..numerics.ode import is_array, pymax, where
+from ..numerics.ode import divide, is_array, pymax, quiet, where
 from ..physics.rare_impact import (
     G0,
     min_return_spring_rate,
@@ -126,7 +126,7 @@ def spring_height_bounds(moving_mass: Any, gravity: Any, c1: Any, c3: Any) -> tu
 def _outcome(x: Mapping[str, Any], ctx: RunContext) -> CycleOutcome:
     if ctx.rung == "simulation":
         return simulate_cycle(
-            x,
+            _inputs(x, ctx.scratch),
             record=ctx.wants(*_SERIES),
             deadline=ctx.deadline,
             max_steps=ctx.max_steps,
@@ -212,9 +212,9 @@ def _outputs(x: Mapping[str, Any], o: CycleOutcome) -> dict[str, Any]:
     c1, c3 = x["power_spring_rate"], x["return_spring_rate"]
     lam1, lam3 = x["power_spring_preload"], x["return_spring_preload"]
     h1, h2, g = x["release_travel"], x["engagement_height"], x["gravity"]
-    with np.errstate(all="ignore"):
+    with quiet(is_array(o.release_speed)):
         b, k = striker_oscillation(c1, lam1, c3, lam3, h1, m2_total, g)
-        window = x["engagement_angle"] / o.release_speed
+        window = divide(x["engagement_angle"], o.release_speed)
         _, upper = spring_height_bounds(m2_total, g, c1, c3)
         t_blow = o.spin_up_time + o.engagement_time
         t_home = t_blow + o.home_time
@@ -231,7 +231,7 @@ def _outputs(x: Mapping[str, Any], o: CycleOutcome) -> dict[str, Any]:
             "engagement_start": o.spin_up_time,
             "engagement_end": o.spin_up_time + window,
             "full_engagement": blow & (o.engagement_time <= window),
-            "engagement_margin": where(blow, (window - o.engagement_time) / window, math.nan),
+            "engagement_margin": where(blow, divide(window - o.engagement_time, window), math.nan),
             "blow_time": t_blow,
             "spring_height_limit": upper,
             "min_return_spring_rate": min_return_spring_rate(
@@ -253,7 +253,7 @@ def _outputs(x: Mapping[str, Any], o: CycleOutcome) -> dict[str, Any]:
 
 def _verdicts(x: Mapping[str, Any], o: CycleOutcome) -> dict[str, Any]:
     """The verdict of every check (:func:`design_checks`, in its order), one design or many."""
-    window = x["engagement_angle"] / o.release_speed
+    window = divide(x["engagement_angle"], o.release_speed)
     return {
         "c3 > c1": x["return_spring_rate"] > x["power_spring_rate"],
         "λ1 < λ3": x["power_spring_preload"] < x["return_spring_preload"],
@@ -339,7 +339,9 @@ def _geometry_note(x: Mapping[str, Any], w_m: float) -> str:
             w_o = release_speed_of(x, other)
         except EngineError:
             continue
-        parts.append(f"{_GEOMETRY_TEXT[other]} {in_rpm(w_o)} ({100.0 * (w_o / w_m - 1.0):+.1f} %)")
+        parts.append(
+            f"{_GEOMETRY_TEXT[other]} {in_rpm(w_o)} ({100.0 * (divide(w_o, w_m) - 1.0):+.1f} %)"
+        )
     text = (
         f"roller geometry: {_GEOMETRY_TEXT[geo]}; the quasi-static release speed under the "
         "other readings of [002, eq. 1] would be " + ", ".join(parts)
@@ -485,7 +487,7 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
                 f"{ff:.3g} N: the shaft will not re-lock; {paper_relock}: raise c2·λ2",
             )
         )
-    window = x["engagement_angle"] / o.release_speed
+    window = divide(x["engagement_angle"], o.release_speed)
     if ok["full engagement"]:
         checks.append(
             Check(
@@ -536,7 +538,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         error: float | None = _SIMULATION_ERROR
         if ctx.wants("half_coupling_release_speed"):
             # the speed at release is a small difference of an oscillation: its own bound
-            speed_error = simulation_release_velocity_error(x, o)
+            speed_error = simulation_release_velocity_error(_inputs(x, ctx.scratch), o)
             error = max(_SIMULATION_ERROR, speed_error) if math.isfinite(speed_error) else None
         notes.append(
             f"simulation: the whole cycle, one compiled RK4 with {200} steps per shortest "

@@ -15,7 +15,7 @@ RK4 compiled by numba; what is not model-specific is here, once:
 * :func:`step_budget` and :class:`StepCost`: a simulation's budget in time, as
   steps at the kernel's measured cost per step;
 * :func:`as_numbers`, :func:`where`, :func:`sqrt`, ...: what lets one procedure take
-  one design (floats) or many (arrays) through the same lines.
+  one design (Python floats, ``math``) or many (arrays, numpy) through the same lines.
 
 The right-hand sides, the RK4 steps over each model's state and the kernels'
 event loops stay with their models.
@@ -28,6 +28,7 @@ not recompiled when only this file changes (numba does not track callees), so cl
 
 from __future__ import annotations
 
+import contextlib
 import math
 import time
 from collections.abc import Callable, Mapping
@@ -45,6 +46,7 @@ __all__ = [
     "as_numbers",
     "asin",
     "atan2",
+    "divide",
     "first_rise",
     "first_rise_c",
     "hermite",
@@ -54,10 +56,12 @@ __all__ = [
     "isfinite",
     "jit",
     "log1p",
+    "negate",
     "newton_fraction",
     "newton_fraction_c",
     "pymax",
     "pymin",
+    "quiet",
     "sqrt",
     "step_budget",
     "tan",
@@ -340,34 +344,59 @@ class StepCost:
 # ---------------------------------------------------------------------------
 #
 # A procedure written once for a single design and for a sweep takes each input as a
-# float or an array. Plain arithmetic serves both when the floats are numpy's float64
-# (a division by zero gives inf, an overflow inf, as on arrays, instead of raising):
-# :func:`as_numbers` makes them so at the procedure's door, and the few functions below
-# take the fast ``math`` route for one design and numpy's for arrays, with numpy's
-# answers (NaN, not an exception, outside a function's domain). Run the procedure under
-# ``np.errstate(all="ignore")``: what is NaN or inf is then masked by the procedure itself.
+# float or an array. One design runs on Python floats (:func:`as_numbers` makes them so
+# at the procedure's door): their arithmetic is numpy's, bit for bit, at a tenth of the
+# cost of numpy's scalars, and the functions below take ``math`` for them and numpy for
+# arrays, with numpy's answers (NaN, not an exception, outside a function's domain).
+# Where Python's floats and numpy's part, the procedure guards its lines so that both
+# give the same numbers:
+#
+# * a division by zero raises ZeroDivisionError on floats (numpy gives inf or NaN):
+#   divide by a guarded denominator, ``a / where(b == 0.0, 1.0, b)``, where the quotient
+#   is replaced anyway;
+# * ``v ** 2`` raises OverflowError on a float whose square overflows (write ``v * v``),
+#   and a negative float to a fractional power is complex (numpy: NaN);
+# * ``~`` on a Python bool is an integer (-1 or -2): :func:`negate` a mask instead.
+#
+# Arrays run under ``np.errstate(all="ignore")`` (:func:`quiet`): what is NaN or inf is
+# masked by the procedure itself.
 
 
 _ND = np.ndarray
-#: The plain number types :func:`as_numbers` converts (bool is not one).
-_PLAIN = (int, float)
+#: The plain number types :func:`as_numbers` converts to float (bool is not one).
+_PLAIN: frozenset[Any] = frozenset((int, float, np.float64, np.float32, np.int64, np.int32))
+#: What :func:`quiet` gives for one design: nothing to silence.
+_NO_STATE = contextlib.nullcontext()
 
 
 def as_numbers(x: Mapping[str, Any]) -> dict[str, Any]:
-    """The inputs with every plain number as numpy's float64 (arrays and text as they are).
+    """The inputs with every plain number as a Python float (arrays and text as they are).
 
-    >>> as_numbers({"a": 1, "b": 2.5, "c": "v", "d": None})
-    {'a': np.float64(1.0), 'b': np.float64(2.5), 'c': 'v', 'd': None}
+    >>> as_numbers({"a": 1, "b": np.float64(2.5), "c": "v", "d": None, "e": True})
+    {'a': 1.0, 'b': 2.5, 'c': 'v', 'd': None, 'e': True}
     """
-    return {k: np.float64(v) if type(v) in _PLAIN else v for k, v in x.items()}
+    return {k: float(v) if v.__class__ in _PLAIN else v for k, v in x.items()}
 
 
 def is_array(*values: Any) -> bool:
     """True if any of ``values`` is a numpy array (a sweep), False for one design."""
     for v in values:  # noqa: SIM110 - a loop, not any(): it runs hundreds of times a design
-        if isinstance(v, np.ndarray):
+        if v.__class__ is _ND:
             return True
     return False
+
+
+def quiet(many: bool) -> contextlib.AbstractContextManager[Any]:
+    """numpy's warnings off (``np.errstate(all="ignore")``) for many designs; none for one.
+
+    One design's floats make no numpy call that could warn, and entering an error state
+    costs about what a dozen of their operations do.
+
+    >>> with quiet(True):
+    ...     float(np.array([1.0])[0] / np.array([0.0])[0])
+    inf
+    """
+    return np.errstate(all="ignore") if many else _NO_STATE
 
 
 def where(cond: Any, a: Any, b: Any) -> Any:
@@ -381,42 +410,99 @@ def where(cond: Any, a: Any, b: Any) -> Any:
     return np.where(cond, a, b)
 
 
+def divide(a: Any, b: Any) -> Any:
+    """``a / b`` with numpy's answer where ``b`` is 0 (±inf, or NaN for 0/0), floats too.
+
+    For a quotient whose value stands where its denominator can reach 0 (Python raises
+    ZeroDivisionError there, numpy gives inf or NaN).
+
+    >>> divide(1.0, 0.0), divide(-1.0, 0.0), divide(1.0, -0.0), divide(0.0, 0.0), divide(3.0, 2.0)
+    (inf, -inf, -inf, nan, 1.5)
+    >>> with quiet(True):
+    ...     divide(np.array([1.0, 0.0]), 0.0).tolist(), divide(1.0, np.array([0.0, 2.0])).tolist()
+    ([inf, nan], [inf, 0.5])
+    """
+    if b.__class__ is _ND or b:  # not a zero number: Python's division is numpy's
+        return a / b
+    if a.__class__ is _ND:
+        return a / np.float64(b)
+    if a != a or a == 0.0:
+        return math.nan
+    return math.copysign(math.inf, a) * math.copysign(1.0, b)
+
+
+def negate(mask: Any) -> Any:
+    """Not ``mask``, per point (``~`` on arrays; on one design's bool, ``not``).
+
+    >>> negate(1.0 > 2.0), negate(np.array([True, False])).tolist()
+    (True, [False, True])
+    """
+    return ~mask if mask.__class__ is _ND else not mask
+
+
 def pymax(a: Any, b: Any) -> Any:
     """``max(a, b)`` with Python's NaN rule (``b`` replaces ``a`` only if ``b > a``).
 
     >>> float(pymax(np.float64("nan"), 1.0)), float(pymax(1.0, np.float64("nan")))
     (nan, 1.0)
     """
-    return where(b > a, b, a)
+    if a.__class__ is not _ND and b.__class__ is not _ND:
+        return b if b > a else a  # one design (a hot path)
+    return np.where(b > a, b, a)
 
 
 def pymin(a: Any, b: Any) -> Any:
     """``min(a, b)`` with Python's NaN rule (``b`` replaces ``a`` only if ``b < a``)."""
-    return where(b < a, b, a)
+    if a.__class__ is not _ND and b.__class__ is not _ND:
+        return b if b < a else a
+    return np.where(b < a, b, a)
 
 
 def isfinite(v: Any) -> Any:
     """Neither inf nor NaN, per point."""
-    return np.isfinite(v) if isinstance(v, np.ndarray) else math.isfinite(v)
+    return np.isfinite(v) if v.__class__ is _ND else math.isfinite(v)
 
 
 def sqrt(v: Any) -> Any:
-    """Square root; NaN below 0.
+    """Square root; NaN below 0. A float gives a float, a numpy number numpy's.
 
-    >>> float(sqrt(np.float64(2.25))), float(sqrt(-1.0))
-    (1.5, nan)
+    >>> sqrt(2.25), float(sqrt(np.float64(2.25))), sqrt(-1.0), sqrt(np.float64(-1.0))
+    (1.5, 1.5, nan, np.float64(nan))
     """
+    if v.__class__ is float:
+        return math.sqrt(v) if v >= 0.0 else math.nan
     if isinstance(v, np.ndarray):
         return np.sqrt(v)
     return np.float64(math.sqrt(v)) if v >= 0.0 else np.float64(math.nan)
 
 
+def _compiled_sqrt() -> None:
+    """Let a compiled kernel call :func:`sqrt`: numba compiles it as ``np.sqrt``.
+
+    A function run both by Python (floats or arrays) and compiled in a kernel (such as
+    :func:`engine.procedures.striker_cycle.face_forces`) takes its root from :func:`sqrt`.
+    """
+    try:
+        from numba.extending import overload
+    except ImportError:  # pragma: no cover - numba is a declared dependency
+        return
+
+    @overload(sqrt)
+    def _sqrt(v):  # type: ignore[no-untyped-def]
+        return lambda v: np.sqrt(v)
+
+
+_compiled_sqrt()
+
+
 def hypot(a: Any, b: Any) -> Any:
     r""":math:`\sqrt{a^2 + b^2}` without overflow.
 
-    >>> float(hypot(3.0, 4.0))
-    5.0
+    >>> hypot(3.0, 4.0), hypot(np.float64(3.0), 4.0), hypot(1e200, 1e200) > 1e200
+    (5.0, np.float64(5.0), True)
     """
+    if a.__class__ is float and b.__class__ is float:
+        return math.hypot(a, b)
     if is_array(a, b):
         return np.hypot(a, b)
     return np.float64(math.hypot(a, b))
@@ -425,9 +511,11 @@ def hypot(a: Any, b: Any) -> Any:
 def atan2(y: Any, x: Any) -> Any:
     """The angle of (x, y), [rad] (-π…π).
 
-    >>> round(float(atan2(1.0, -1.0)) / math.pi, 12)
-    0.75
+    >>> round(atan2(1.0, -1.0) / math.pi, 12), float(atan2(np.float64(0.0), -1.0)) == math.pi
+    (0.75, True)
     """
+    if y.__class__ is float and x.__class__ is float:
+        return math.atan2(y, x)
     if is_array(y, x):
         return np.arctan2(y, x)
     return np.float64(math.atan2(y, x))
@@ -436,9 +524,11 @@ def atan2(y: Any, x: Any) -> Any:
 def tan(v: Any) -> Any:
     """Tangent of an angle, [rad]; NaN at ±inf.
 
-    >>> round(float(tan(math.pi / 4)), 12)
-    1.0
+    >>> round(tan(math.pi / 4), 12), tan(math.inf), float(tan(np.float64(0.0)))
+    (1.0, nan, 0.0)
     """
+    if v.__class__ is float:
+        return math.tan(v) if math.isfinite(v) else math.nan
     if isinstance(v, np.ndarray):
         return np.tan(v)
     return np.float64(math.tan(v)) if math.isfinite(v) else np.float64(math.nan)
@@ -447,32 +537,32 @@ def tan(v: Any) -> Any:
 def log1p(v: Any) -> Any:
     """:math:`\\ln(1 + v)`, accurate for small v; -inf at -1, NaN below.
 
-    >>> float(log1p(-1.0)), float(log1p(-2.0)), float(log1p(0.0))
-    (-inf, nan, 0.0)
+    >>> log1p(-1.0), log1p(-2.0), log1p(0.0), float(log1p(np.float64(-1.0)))
+    (-inf, nan, 0.0, -inf)
     """
     if isinstance(v, np.ndarray):
         return np.log1p(v)
-    if v > -1.0:
-        return np.float64(math.log1p(v))
-    return np.float64(-math.inf) if v == -1.0 else np.float64(math.nan)
+    out = math.log1p(v) if v > -1.0 else -math.inf if v == -1.0 else math.nan
+    return out if v.__class__ is float else np.float64(out)
 
 
 def any_true(mask: Any) -> bool:
     """True if ``mask`` holds at any point (one design: if it holds)."""
-    return bool(mask.any()) if isinstance(mask, np.ndarray) else bool(mask)
+    return bool(mask.any()) if mask.__class__ is _ND else bool(mask)
 
 
 def all_true(mask: Any) -> bool:
     """True if ``mask`` holds at every point (one design: if it holds)."""
-    return bool(mask.all()) if isinstance(mask, np.ndarray) else bool(mask)
+    return bool(mask.all()) if mask.__class__ is _ND else bool(mask)
 
 
 def asin(v: Any) -> Any:
     """Arcsine, [rad]; NaN outside [-1, 1].
 
-    >>> round(float(asin(0.5)) * 6.0 / math.pi, 12), float(asin(2.0))
-    (1.0, nan)
+    >>> round(asin(0.5) * 6.0 / math.pi, 12), asin(2.0), float(asin(np.float64(2.0)))
+    (1.0, nan, nan)
     """
     if isinstance(v, np.ndarray):
         return np.arcsin(v)
-    return np.float64(math.asin(v)) if -1.0 <= v <= 1.0 else np.float64(math.nan)
+    out = math.asin(v) if -1.0 <= v <= 1.0 else math.nan
+    return out if v.__class__ is float else np.float64(out)

@@ -72,7 +72,7 @@ from typing import Any
 import numpy as np
 
 from ..core.errors import InfeasibleDesign
-from ..numerics.ode import asin, is_array, pymax, pymin, sqrt, where
+from ..numerics.ode import asin, divide, is_array, pymax, pymin, quiet, sqrt, where
 
 __all__ = [
     "effective_stage1_mass",
@@ -396,7 +396,7 @@ def striker_oscillation(
         )
         / moving_mass
     )
-    k = np.sqrt((power_spring_rate + return_spring_rate) / moving_mass)
+    k = sqrt((power_spring_rate + return_spring_rate) / moving_mass)
     return b, k
 
 
@@ -443,10 +443,10 @@ def time_to_travel(distance: Any, b: Any, k: Any) -> Any:
     >>> float(time_to_travel(0.005, 293.101, 346.41))  # beyond 2B/k² = 4.885 mm
     inf
     """
-    with np.errstate(all="ignore"):
+    with quiet(is_array(distance, b, k)):
         q = distance * k * k / (2.0 * where(b > 0.0, b, 1.0))
         never = (b <= 0.0) | (q > 1.0 + 1e-12)
-        t = 2.0 / k * asin(sqrt(pymin(pymax(q, 0.0), 1.0)))
+        t = divide(2.0, k) * asin(sqrt(pymin(pymax(q, 0.0), 1.0)))
         out = where(never, math.inf, t)
     return out if is_array(out) else float(out)
 
@@ -483,7 +483,7 @@ def spring_height_limit(
     inf
     """
     d = return_spring_rate - power_spring_rate
-    with np.errstate(all="ignore"):
+    with quiet(is_array(d)):
         out = where(d > 0.0, 2.0 * moving_mass * gravity / where(d > 0.0, d, 1.0), math.inf)
     return out if is_array(out) else float(out)
 
@@ -523,7 +523,7 @@ def min_return_spring_rate(
     """
     arm = return_spring_preload + engagement_height - 0.5 * jaw_height
     load = striker_mass * gravity
-    with np.errstate(all="ignore"):
+    with quiet(is_array(arm, load)):
         out = where(load <= 0.0, 0.0, where(arm > 0.0, load / where(arm > 0.0, arm, 1.0), math.inf))
     return out if is_array(out) else float(out)
 
@@ -581,14 +581,13 @@ def relock_time(
     >>> round(relock_time(0.05, 9.80665, 2000.0, 0.008, 0.005, 10.92), 7)
     0.0060247
     """
-    k4 = np.sqrt(np.asarray(auxiliary_spring_rate / stepped_shaft_mass, dtype=float))
+    k4 = sqrt(auxiliary_spring_rate / stepped_shaft_mass)
     d = (
         auxiliary_spring_preload
         + release_travel
         + (stepped_shaft_mass * gravity - friction_force) / auxiliary_spring_rate
     )
-    out = np.asarray(time_to_travel(release_travel, d * k4 * k4, k4), dtype=float)
-    return float(out) if out.ndim == 0 else out
+    return time_to_travel(release_travel, d * k4 * k4, k4)
 
 
 def relock_margin(

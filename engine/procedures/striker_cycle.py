@@ -146,15 +146,18 @@ from ..numerics.ode import (
     any_true,
     as_numbers,
     atan2,
+    divide,
     first_rise_c,
     hypot,
     is_array,
     isfinite,
     jit,
     log1p,
+    negate,
     newton_fraction_c,
     pymax,
     pymin,
+    quiet,
     sqrt,
     tan,
     where,
@@ -199,8 +202,9 @@ step_budget = _COST.budget
 
 # ---------------------------------------------------------------------------
 # One design or many: every closed-form step below takes the inputs as floats or as
-# numpy arrays of one shape (engine.numerics.ode: float64 numbers, math for one design,
-# numpy for many); a single run and a sweep run the same lines.
+# numpy arrays of one shape (engine.numerics.ode: Python floats and math for one design,
+# numpy for many; a division that can meet 0 is guarded, as the kit's notes say); a
+# single run and a sweep run the same lines.
 # ---------------------------------------------------------------------------
 
 
@@ -213,14 +217,16 @@ class _Numbers(dict[str, Any]):
     """Inputs already as the steps take them (:func:`step_inputs`): passed on as they are.
 
     ``memo`` keeps what a step derived from these inputs alone (:func:`_once`): the
-    roller geometries, the stage-1 speeds, stage 2's coefficients.
+    roller geometries, the stage-1 speeds, stage 2's coefficients; ``many`` says whether
+    they are arrays (many designs) or floats (one).
     """
 
-    __slots__ = ("memo",)
+    __slots__ = ("many", "memo")
 
     def __init__(self, x: Mapping[str, Any]) -> None:
         super().__init__(x)
         self.memo: dict[tuple[str, str], Any] = {}
+        self.many = is_array(*x.values())
 
 
 def _once(x: Mapping[str, Any], key: tuple[str, str], compute: Callable[[], Any]) -> Any:
@@ -241,13 +247,13 @@ def _once(x: Mapping[str, Any], key: tuple[str, str], compute: Callable[[], Any]
     return value
 
 
-def _numbers(x: Mapping[str, Any]) -> dict[str, Any]:
+def _numbers(x: Mapping[str, Any]) -> _Numbers:
     """The inputs as the steps take them (:func:`engine.numerics.ode.as_numbers`), once."""
-    return x if x.__class__ is _Numbers else _Numbers(as_numbers(x))
+    return x if isinstance(x, _Numbers) else _Numbers(as_numbers(x))
 
 
 def step_inputs(x: Mapping[str, Any]) -> Mapping[str, Any]:
-    """The inputs converted once for every step of a request (floats as numpy's float64).
+    """The inputs converted once for every step of a request (numbers as Python floats).
 
     Parameters
     ----------
@@ -264,7 +270,7 @@ def step_inputs(x: Mapping[str, Any]) -> Mapping[str, Any]:
 
     >>> x = step_inputs({"a": 1, "g": "paper"})
     >>> x, step_inputs(x) is x, _numbers(x) is x
-    ({'a': np.float64(1.0), 'g': 'paper'}, True, True)
+    ({'a': 1.0, 'g': 'paper'}, True, True)
     """
     return _numbers(x)
 
@@ -317,7 +323,7 @@ def geometry(name: str, cone_angle: Any) -> Geometry:
     >>> round(float(geometry("single_cone", math.pi / 4).kappa), 12)
     1.0
     """
-    t = tan(cone_angle if isinstance(cone_angle, np.ndarray) else np.float64(cone_angle))
+    t = tan(cone_angle if isinstance(cone_angle, np.ndarray) else float(cone_angle))
     if name == "symmetric_v":
         return Geometry(name, 0.5 / t, 0.5, 0.5, False, t)
     if name == "single_cone":
@@ -359,7 +365,7 @@ def _effective_mass(x: Mapping[str, Any], g: Geometry) -> Any:
     m12 = x["half_coupling_mass"] + x["stepped_shaft_mass"]
     if g.paper:
         return m12 + nm / (2.0 * g.tan_a * g.tan_a)
-    return m12 + nm * (g.kappa**2 + g.a_h**2)
+    return m12 + nm * (g.kappa * g.kappa + g.a_h * g.a_h)
 
 
 def stage1_effective_mass(x: Mapping[str, Any]) -> Any:
@@ -381,8 +387,8 @@ def stage1_effective_mass(x: Mapping[str, Any]) -> Any:
     >>> round(stage1_effective_mass({**R, "roller_geometry": "symmetric_v"}), 6)  # 0.2 + 0.3·0.5
     0.35
     """
-    with np.errstate(all="ignore"):
-        x = _numbers(x)
+    x = _numbers(x)
+    with quiet(x.many):
         return _one_or_many(_effective_mass(x, _geo(x)))
 
 
@@ -432,8 +438,8 @@ def release_radius_of(x: Mapping[str, Any]) -> Any:
     >>> round(release_radius_of({**R, "roller_geometry": "paper"}), 6)
     0.045
     """
-    with np.errstate(all="ignore"):
-        x = _numbers(x)
+    x = _numbers(x)
+    with quiet(x.many):
         return _one_or_many(_radius(x, _geo(x)))
 
 
@@ -513,8 +519,8 @@ def release_speed_of(x: Mapping[str, Any], roller_geometry: str | None = None) -
     >>> release_speed_of({**R, "gravity": 0.0}, "symmetric_v") == 242.8587905694639
     True
     """
-    with np.errstate(all="ignore"):
-        x = _numbers(x)
+    x = _numbers(x)
+    with quiet(x.many):
         g = _geo(x) if roller_geometry is None else _geometry_of(x, roller_geometry)
         held = _preload_force(x, g) > 0.0
         if not is_array(held) and not held:
@@ -543,8 +549,8 @@ def liftoff_speed_of(x: Mapping[str, Any]) -> Any:
     >>> round(liftoff_speed_of({**R, "roller_geometry": "symmetric_v", "gravity": 0.0}), 2)
     139.04
     """
-    with np.errstate(all="ignore"):
-        x = _numbers(x)
+    x = _numbers(x)
+    with quiet(x.many):
         return _one_or_many(_liftoff_speed(x, _geo(x)))
 
 
@@ -574,8 +580,8 @@ def snaps_at_liftoff(x: Mapping[str, Any]) -> Any:
     >>> snaps_at_liftoff(R), snaps_at_liftoff({**R, "power_spring_preload": 0.09})
     (False, True)
     """
-    with np.errstate(all="ignore"):
-        x = _numbers(x)
+    x = _numbers(x)
+    with quiet(x.many):
         g = _geo(x)
         snap = _stage1_stiffness(x, g, _liftoff_speed(x, g)) < 0.0
         return snap if is_array(snap) else bool(snap)
@@ -726,8 +732,8 @@ def linear_reach(y0: Any, v0: Any, acc: Any, w2: Any, level: Any) -> tuple[Any, 
     >>> linear_reach(0.0, 0.0, 293.101, 120000.0, 0.005)[0]  # beyond 2B/k²
     inf
     """
-    args = [v if isinstance(v, np.ndarray) else np.float64(v) for v in (y0, v0, acc, w2, level)]
-    with np.errstate(all="ignore"):
+    args = [v if isinstance(v, np.ndarray) else float(v) for v in (y0, v0, acc, w2, level)]
+    with quiet(is_array(*args)):
         t, vel = _reach(*args)
     return _one_or_many(t), _one_or_many(vel)
 
@@ -739,7 +745,9 @@ def _reach(y0: Any, v0: Any, acc: Any, w2: Any, level: Any) -> tuple[Any, Any]:
         y - y_0 = c - A\cos(wt + \delta),\quad c = \frac{acc}{w^2},\
         A = \sqrt{c^2 + (v_0/w)^2};\qquad y - y_0 = v_0 t + \tfrac12 acc\,t^2\ (w = 0)
 
-    On numbers (float64) or arrays, under ``np.errstate(all="ignore")``; [002, eqs. 2-5].
+    On floats or arrays (these under ``np.errstate(all="ignore")``); [002, eqs. 2-5]. Where
+    :math:`w^2 \le 0` the oscillation's lines run on :math:`w^2 = 1` and their answer is
+    replaced by the parabola's (floats do not divide by zero).
     """
     d = level - y0
     s = where(d > 0.0, 1.0, -1.0)
@@ -747,7 +755,7 @@ def _reach(y0: Any, v0: Any, acc: Any, w2: Any, level: Any) -> tuple[Any, Any]:
     par = w2 <= 0.0
     any_par = any_true(par)
     if any_par:  # no stiffness (a vanishing spring rate): uniform acceleration
-        t_lin = where(v > 0.0, d / v, math.inf)
+        t_lin = where(v > 0.0, d / where(v > 0.0, v, 1.0), math.inf)
         v_lin = where(v > 0.0, v * s, math.nan)
         disc = v * v + 2.0 * a * d
         root = sqrt(disc)
@@ -756,6 +764,7 @@ def _reach(y0: Any, v0: Any, acc: Any, w2: Any, level: Any) -> tuple[Any, Any]:
         ok = (disc >= 0.0) & (t_q >= 0.0) & isfinite(t_q)
         t_q, v_q = where(ok, t_q, math.inf), where(ok, root * s, math.nan)
         t_par, v_par = where(a == 0.0, t_lin, t_q), where(a == 0.0, v_lin, v_q)
+        w2 = where(par, 1.0, w2)  # the oscillation below is replaced there
     k = sqrt(w2)
     c = a / w2  # centre offset from the start
     vk = v / k
@@ -766,7 +775,9 @@ def _reach(y0: Any, v0: Any, acc: Any, w2: Any, level: Any) -> tuple[Any, Any]:
     q = c - d  # amp cos(θ + δ) = q
     # where amp - q cancels (c > 0, q > 0): amp - c + d with amp - c = vk²/(amp + c)
     exact = (c > 0.0) & (q > 0.0)
-    sin_part = sqrt(pymax(where(exact, vk * vk / (amp + c) + d, amp - q) * (amp + q), 0.0))
+    sin_part = sqrt(
+        pymax(where(exact, vk * vk / where(exact, amp + c, 1.0) + d, amp - q) * (amp + q), 0.0)
+    )
     theta = atan2(sin_part, q) - delta
     theta = where(theta < 0.0, theta + 2.0 * math.pi, theta)
     t, vel = theta / k, s * k * sin_part
@@ -791,8 +802,8 @@ def _peak(y0: Any, v0: Any, acc: Any, w2: Any) -> Any:
     >>> round(float(_peak(0.0, 0.0, 293.101, 120000.0)) * 1e3, 6)  # 2B/k²
     4.885017
     """
-    c = acc / w2
-    return y0 + c + hypot(c, v0 / sqrt(w2))
+    c = divide(acc, w2)
+    return y0 + c + hypot(c, divide(v0, sqrt(w2)))
 
 
 def _striker_alone(x: Mapping[str, Any], y: Any) -> tuple[Any, Any]:
@@ -845,7 +856,7 @@ def _stage2_terms(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, Any, Any
     k_a = sqrt((c1 + c2 + c3) / mass)
     # the striker's own stage-2 motion, B and k of [002, eqs. 2 and 5]
     acc0, k = striker_oscillation(c1, lam1, c3, lam3, h1, big, grav)
-    return -(m1 + m2 + nm * g.a_h), mass, k_a, f_at0 / mass / k_a**2, acc0, k * k
+    return -(m1 + m2 + nm * g.a_h), mass, k_a, divide(f_at0 / mass, k_a * k_a), acc0, k * k
 
 
 def _stage2(x: Mapping[str, Any], v_release: Any, g: Geometry) -> tuple[Any, Any]:
@@ -871,7 +882,7 @@ def _stage2(x: Mapping[str, Any], v_release: Any, g: Geometry) -> tuple[Any, Any
     back = v0 < 0.0
     # with the shaft, from 0 backwards and back to 0 with the same speed (conservative):
     # y = c(1 - cos θ) + (v0/k) sin θ is back at 0 when tan(θ/2) = -(v0/k)/c
-    t_back = where(back, 2.0 * atan2(-v0 / k_a, centre) / k_a, 0.0)
+    t_back = where(back, divide(2.0 * atan2(divide(-v0, k_a), centre), k_a), 0.0)
     v_start = where(back, -v0, 0.0)
     reach = _peak(0.0, v_start, acc0, w2)
     one_piece = (h2 <= h1) | (reach <= h1)
@@ -941,7 +952,7 @@ def _release_velocity(x: Mapping[str, Any], g: Geometry, w_m: Any, r: Any) -> An
     return where(
         k <= 0.0,
         x["release_travel"] * sqrt(-k / _effective_mass(x, g)),
-        2.0 * _push_per_w2(x, g) * w_m * r / k * wd,
+        2.0 * _push_per_w2(x, g) * w_m * r / where(k <= 0.0, 1.0, k) * wd,
     )
 
 
@@ -964,10 +975,10 @@ def quasi_static_release_velocity(x: Mapping[str, Any], w_m: Any) -> Any:
 
     (snap-through: :math:`h_1\sqrt{-K_0/m_e}`, the energy of the snap).
     """
-    with np.errstate(all="ignore"):
-        x = _numbers(x)
+    x = _numbers(x)
+    with quiet(x.many):
         g = _geo(x)
-        w = w_m if isinstance(w_m, np.ndarray) else np.float64(w_m)
+        w = w_m if isinstance(w_m, np.ndarray) else float(w_m)
         return _one_or_many(_release_velocity(x, g, w, _radius(x, g)))
 
 
@@ -1003,8 +1014,8 @@ def closed_form_cycle(x: Mapping[str, Any], *, refuse: bool = True) -> CycleOutc
     >>> round(o.release_speed, 2), round(o.engagement_time * 1e3, 3)
     (243.96, 6.55)
     """
-    with np.errstate(all="ignore"):
-        x = _numbers(x)
+    x = _numbers(x)
+    with quiet(x.many):
         g = _geo(x)
         x0 = x["roller_radius"]
         r, w_0, w_m = _speeds(x, g)
@@ -1042,7 +1053,7 @@ def closed_form_cycle(x: Mapping[str, Any], *, refuse: bool = True) -> CycleOutc
         fields: dict[str, Any] = dict(
             zip(_NUMERIC, (w_m, t_spin, r, v_rel, t_eng, reach, t_ret, t_home, t_lock), strict=True)
         )
-        if not is_array(*x.values()):
+        if not x.many:
             o = CycleOutcome(**fields, snap=bool(snap), refusal=int(refusal), flies=bool(flies))
             if not refuse:
                 return o
@@ -1109,8 +1120,8 @@ def _rollers_fly_at_blow(x: Mapping[str, Any], g: Geometry, q_s: Any) -> Any:
     )
     det = m11 * m22 - m12 * m12
     held = y_h >= 0.0
-    a_h = where(held, 0.0, (m22 * q_h - m12 * q_s) / det)
-    a_s = where(held, q_s / m22, (m11 * q_s - m12 * q_h) / det)
+    a_h = where(held, 0.0, divide(m22 * q_h - m12 * q_s, det))
+    a_s = where(held, q_s / m22, divide(m11 * q_s - m12 * q_h, det))
     n_a, n_b = face_forces(
         g.kappa * (a_s - a_h), g.a_h * a_h + g.a_s * a_s - x["gravity"], g.a_h / g.kappa,
         g.a_s / g.kappa,
@@ -1235,8 +1246,8 @@ def face_forces(xdd, ydd, t_a, t_b):  # type: ignore[no-untyped-def]
     >>> [round(float(v), 12) + 0.0 for v in face_forces(-2.0, 2.0, 1.0, 1.0)]
     [0.0, 2.828427124746]
     """
-    sec_a = np.sqrt(1.0 + t_a * t_a)
-    sec_b = np.sqrt(1.0 + t_b * t_b)
+    sec_a = sqrt(1.0 + t_a * t_a)
+    sec_b = sqrt(1.0 + t_b * t_b)
     sin_a, cos_a = t_a / sec_a, 1.0 / sec_a
     sin_b, cos_b = t_b / sec_b, 1.0 / sec_b
     det = -(sin_a * cos_b + sin_b * cos_a)
@@ -1327,6 +1338,10 @@ def _advance(  # type: ignore[no-untyped-def]
     """
     n_ev = ekind.shape[0]
     cap = rt.shape[0]
+    # the one-sided stage 3's arguments of _sign_change, which this kernel does not use
+    f1 = np.empty(0)
+    f2 = np.empty((0, 0))
+    none = (np.empty(0, dtype=np.bool_), f1, f1, 0, f1, f1, f1, f1, f2, f2, np.empty(0, np.int64))
     for i in range(n_max):
         hh = h
         if t + hh > t_end:
@@ -1355,16 +1370,7 @@ def _advance(  # type: ignore[no-untyped-def]
                 gb = d * _gfun_c(mode, ekind[e], p, wn, q0n, q1n, v0n, v1n)
                 s = -1.0
                 if ga < 0.0 and gb >= 0.0:
-                    lo = 0.0
-                    hi = 1.0
-                    for _ in range(50):
-                        mid = 0.5 * (lo + hi)
-                        wm, a0m, a1m, b0m, b1m = _rk4_c(mode, p, w, q0, q1, v0, v1, mid * hh)
-                        if d * _gfun_c(mode, ekind[e], p, wm, a0m, a1m, b0m, b1m) >= 0.0:
-                            hi = mid
-                        else:
-                            lo = mid
-                    s = hi
+                    s = _sign_change_c(mode, ekind[e], d, p, w, q0, q1, v0, v1, hh, *none)
             if s >= 0.0 and s < best:
                 best = s
                 which = e
@@ -1538,6 +1544,39 @@ def _contact_rk4(p, active, q, v, h, qn, vn, st, wk, idx):  # type: ignore[no-un
 _contact_rk4_c = jit(_contact_rk4, error_model="numpy")
 
 
+def _sign_change(  # type: ignore[no-untyped-def]
+    mode, kind, d, p, w, q0, q1, v0, v1, h, active, q, v, c, qs, vs, acc, lam, st, wk, idx,
+):  # fmt: skip
+    """Fraction s of a step where d·g first turns ≥ 0 (negative at its start, ≥ 0 at its end).
+
+    Bisected 50 times on real RK4 sub-steps from the step's start. ``g`` is, for
+    ``mode`` ≥ 0 (:func:`_advance`), :func:`_gfun`'s event ``kind`` of that mode from
+    (w, q0, q1, v0, v1); for ``mode`` = -1 (:func:`_contact_advance`), the reaction of
+    contact ``c`` of the one-sided stage 3 from (q, v), ``qs`` to ``idx`` its scratch
+    space. Both kernels call it directly (numba's disk cache refuses a function passed as
+    a value), each with the other's arguments unused.
+    """
+    lo = 0.0
+    hi = 1.0
+    for _ in range(50):
+        mid = 0.5 * (lo + hi)
+        if mode < 0:
+            _contact_rk4_c(p, active, q, v, mid * h, qs, vs, st, wk, idx)
+            _contact_accel_c(p, active, qs, acc, lam, wk, idx)
+            g = lam[c]
+        else:
+            wm, a0m, a1m, b0m, b1m = _rk4_c(mode, p, w, q0, q1, v0, v1, mid * h)
+            g = _gfun_c(mode, kind, p, wm, a0m, a1m, b0m, b1m)
+        if d * g >= 0.0:
+            hi = mid
+        else:
+            lo = mid
+    return hi
+
+
+_sign_change_c = jit(_sign_change, error_model="numpy")
+
+
 def _contact_advance(  # type: ignore[no-untyped-def]
     p, active, t, q, v, h, n_max, t_end, ekind, ecoef, elvl, edir, stride, rt, rx, rq0, rq1,
     n_rec,
@@ -1597,17 +1636,10 @@ def _contact_advance(  # type: ignore[no-untyped-def]
                 _contact_accel_c(p, active, qn, acc, lam, wk, idx)
                 gb = d * lam[c]
                 if ga < 0.0 and gb >= 0.0:
-                    lo = 0.0
-                    hi = 1.0
-                    for _ in range(50):
-                        mid = 0.5 * (lo + hi)
-                        _contact_rk4_c(p, active, q, v, mid * hh, qs, vs, st, wk, idx)
-                        _contact_accel_c(p, active, qs, acc, lam, wk, idx)
-                        if d * lam[c] >= 0.0:
-                            hi = mid
-                        else:
-                            lo = mid
-                    s = hi
+                    s = _sign_change_c(
+                        -1, 0, d, p, 0.0, 0.0, 0.0, 0.0, 0.0, hh,
+                        active, q, v, c, qs, vs, acc, lam, st, wk, idx,
+                    )  # fmt: skip
             if s >= 0.0 and s < best:
                 best = s
                 which = e
@@ -2069,6 +2101,7 @@ def simulate_cycle(
     >>> round(o.release_speed, 2), round(o.engagement_time * 1e3, 3)
     (244.12, 6.558)
     """
+    x = _numbers(x)  # once for the stage-1 steps below (their geometry and speeds)
     g = _geo(x)
     p = _params(x, g)
     if deadline is not None:
@@ -2442,7 +2475,7 @@ def _quasi_static_error(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, An
         # near the no-load speed (1 for a constant torque); SAFETY for the Coriolis torque
         below = w_m < w_nl
         u = where(below, w_m / w_nl, 0.5)
-        amplify = pymax(u / ((1.0 - u) * -log1p(-u)), 1.0)
+        amplify = pymax(divide(u, (1.0 - u) * -log1p(-u)), 1.0)
         inertia_share = where(below, SAFETY * amplify * (inertia - inertia_0) / inertia, 0.0)
 
     def accel(w: Any) -> Any:
@@ -2452,24 +2485,27 @@ def _quasi_static_error(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, An
     snap = k_lift < 0.0
     if any_true(snap):  # snap-through at lift-off
         wd_0 = accel(w_0)
-        t_s = (6.0 * h1 * m_e / (2.0 * a_push * x0 * w_0 * wd_0)) ** (1.0 / 3.0)
+        stalled = wd_0 <= 0.0  # no estimate: inf below (a float's root of a negative is complex)
+        t_s = (6.0 * h1 * m_e / (2.0 * a_push * x0 * w_0 * where(stalled, 1.0, wd_0))) ** (
+            1.0 / 3.0
+        )
         # plus the share of the flywheel's inertia the rollers take on the way out: the
         # closed form assumes the snap conserves angular momentum, the motor may refill it
         share = 0.0 if g.paper else (inertia - inertia_0) / inertia
         dw_s = SAFETY * (wd_0 * t_s / w_0 + share)
         t_0 = _time_to_speed(x, inertia, w_0)
         # t = L/M: the time is off by as much as the speed (constant torque)
-        dt_s = pymax(SAFETY * t_s / t_0 + inertia_share, dw_s)
+        dt_s = pymax(divide(SAFETY * t_s, t_0) + inertia_share, dw_s)
         dv_s = SAFETY * h1 * sqrt(-k_lift / m_e)
-        stalled = wd_0 <= 0.0
         dw_s, dt_s, dv_s = (where(stalled, math.inf, v) for v in (dw_s, dt_s, dv_s))
         if all_true(snap):
             return dw_s, dt_s, dv_s, False
 
     def rates(w: Any, rr: Any) -> tuple[Any, Any, Any]:
         k = stiff - a_push * kap * w * w
-        dz_du = a_push * rr / k
-        d2z_du2 = 2.0 * a_push * kap / k * dz_du
+        k_or_1 = where(k == 0.0, 1.0, k)  # a stiffness of 0 gives no estimate (fails below)
+        dz_du = a_push * rr / k_or_1
+        d2z_du2 = 2.0 * a_push * kap / k_or_1 * dz_du
         wd = accel(w)
         wdd = 0.0 if w_nl is None else -torque / inertia / w_nl * wd
         dz_dw = 2.0 * w * dz_du
@@ -2480,14 +2516,14 @@ def _quasi_static_error(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, An
     k_m, _, zdd_m = rates(w_m, r)
     om_0, om_m = sqrt(k_0 / m_e), sqrt(k_m / m_e)
     # a stiffness of zero or below, or frequencies whose squares overflow: no estimate
-    fails = ~snap & ((k_0 == 0.0) | ~(k_m > 0.0) | (om_0 > 1e154) | (om_m > 1e154))
-    amp = (abs(zd_0) / om_0 + abs(zdd_0) / om_0**2) * sqrt(om_0 / om_m)
-    err = amp + abs(zdd_m) / om_m**2
-    dw = SAFETY * err * k_m / (2.0 * fm)
+    fails = negate(snap) & ((k_0 == 0.0) | negate(k_m > 0.0) | (om_0 > 1e154) | (om_m > 1e154))
+    amp = (divide(abs(zd_0), om_0) + divide(abs(zdd_0), om_0 * om_0)) * sqrt(divide(om_0, om_m))
+    err = amp + divide(abs(zdd_m), om_m * om_m)
+    dw = divide(SAFETY * err * k_m, 2.0 * fm)
     wd_m = accel(w_m)
     t_m = _time_to_speed(x, inertia, w_m)
-    dt = where(wd_m > 0.0, dw * w_m / (wd_m * t_m), math.inf) + inertia_share
-    dv = SAFETY * (amp * om_m + abs(zdd_m) / om_m)
+    dt = where(wd_m > 0.0, divide(dw * w_m, wd_m * t_m), math.inf) + inertia_share
+    dv = SAFETY * (amp * om_m + divide(abs(zdd_m), om_m))
     if any_true(snap):
         dw, dt, dv = where(snap, dw_s, dw), where(snap, dt_s, dt), where(snap, dv_s, dv)
     return dw, dt, dv, fails
@@ -2523,8 +2559,8 @@ def quasi_static_error(x: Mapping[str, Any]) -> tuple[Any, Any, Any]:
     :math:`t_s = (6h_1m_e/(2Ax_0\omega_0\dot\omega_0))^{1/3}`, in which the flywheel
     gains :math:`\dot\omega_0 t_s`.
     """
-    with np.errstate(all="ignore"):
-        x = _numbers(x)
+    x = _numbers(x)
+    with quiet(x.many):
         dw, dt, dv, fails = _quasi_static_error(x, _geo(x))
         if any_true(fails):
             dw, dt, dv = (where(fails, math.nan, v) for v in (dw, dt, dv))
@@ -2621,7 +2657,7 @@ def _return_error(x: Mapping[str, Any], g: Geometry, outcome: CycleOutcome) -> A
         band = delta + lag * t * t
         far = pymax(abs(level - band - centre), abs(level + band - centre))
         v2 = w2 * (amp * amp - far * far)
-        term = where(v2 > 0.0, band / sqrt(where(v2 > 0.0, v2, 1.0)) / t, math.inf)
+        term = where(v2 > 0.0, divide(band / sqrt(where(v2 > 0.0, v2, 1.0)), t), math.inf)
         # never there in the closed form: nor in truth if its turning point is δ short of L
         short = (centre - amp) - delta > level
         term = where(isfinite(t), term, where(short, 0.0, math.inf))
@@ -2663,8 +2699,8 @@ def closed_form_errors(x: Mapping[str, Any], outcome: CycleOutcome) -> dict[str,
     >>> e["relock"], round(float(e["return"]), 5)
     (1e-07, 0.00601)
     """
-    with np.errstate(all="ignore"):
-        x = _numbers(x)
+    x = _numbers(x)
+    with quiet(x.many):
         g = _geo(x)
         dw, dt, dv, fails = _quasi_static_error(x, g)
         stage1 = pymax(pymax(dw, dt), EXACT_FLOOR)
@@ -2672,7 +2708,7 @@ def closed_form_errors(x: Mapping[str, Any], outcome: CycleOutcome) -> dict[str,
         worst: Any = 0.0
         for sign in (1.0, -1.0):
             other, _ = _stage2(x, pymax(outcome.release_velocity + sign * dv, 0.0), g)
-            worst = pymax(worst, where(isfinite(other), abs(other - base) / base, math.inf))
+            worst = pymax(worst, where(isfinite(other), divide(abs(other - base), base), math.inf))
         engagement = where(outcome.blow, pymax(worst + dw, EXACT_FLOOR), pymax(dw, EXACT_FLOOR))
         ret = _return_error(x, g, outcome)
         ret = where(isfinite(ret), pymax(ret, EXACT_FLOOR), math.nan)
