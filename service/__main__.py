@@ -13,17 +13,27 @@ duration_ms, request_id; never a body). ``ACCESS_LOG=0`` silences it.
 
 from __future__ import annotations
 
-import argparse
-import copy
-import socket
-from typing import Any
+import gc
 
-import uvicorn
-import uvicorn.config
-from uvicorn.config import LOGGING_CONFIG
+# Run as the program (or as a worker process's copy of it), the collector is off while the
+# process imports the engine and builds the app (some million objects, all kept for the
+# process's life, scanned again and again: about a quarter of the start-up's time,
+# measured); :func:`service.main.create_app`'s start-up freezes them out of later scans
+# and turns it back on. Imported (a test reading log_config), nothing changes.
+if __name__ in ("__main__", "__mp_main__"):
+    gc.disable()
 
-from .config import Settings
-from .connections import protocol
+import argparse  # noqa: E402
+import copy  # noqa: E402
+import socket  # noqa: E402
+from typing import Any  # noqa: E402
+
+import uvicorn  # noqa: E402
+import uvicorn.config  # noqa: E402
+from uvicorn.config import LOGGING_CONFIG  # noqa: E402
+
+from .config import Settings  # noqa: E402
+from .connections import protocol  # noqa: E402
 
 
 def log_config(level: str) -> dict[str, Any]:
