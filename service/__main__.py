@@ -23,17 +23,17 @@ import gc
 if __name__ in ("__main__", "__mp_main__"):
     gc.disable()
 
-import argparse  # noqa: E402
-import copy  # noqa: E402
-import socket  # noqa: E402
-from typing import Any  # noqa: E402
+import argparse
+import copy
+import socket
+from typing import Any
 
-import uvicorn  # noqa: E402
-import uvicorn.config  # noqa: E402
-from uvicorn.config import LOGGING_CONFIG  # noqa: E402
+import uvicorn
+import uvicorn.config
+from uvicorn.config import LOGGING_CONFIG
 
-from .config import Settings  # noqa: E402
-from .connections import protocol  # noqa: E402
+from .config import Settings
+from .connections import protocol
 
 
 def log_config(level: str) -> dict[str, Any]:
@@ -75,6 +75,10 @@ def main(argv: list[str] | None = None) -> None:
     args = parser.parse_args(argv)
     if args.workers > 1:
         _listen_with_nodelay()
+        # each worker process builds its own app (and turns its collector back on then);
+        # this one only supervises them, for as long as the service runs
+        gc.freeze()
+        gc.enable()
     uvicorn.run(
         args.factory,
         factory=True,
