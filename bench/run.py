@@ -327,6 +327,7 @@ MORE_EXTRAS: tuple[Path, ...] = (
     HERE / "trace_batch.py",
     HERE / "study_summary.py",
     HERE / "capability_tails.py",  # two 10⁸-point references, a few minutes
+    HERE / "cold_start.py",  # spawn to /readyz against a bare app; first simulation after
 )
 
 

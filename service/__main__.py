@@ -13,6 +13,16 @@ duration_ms, request_id; never a body). ``ACCESS_LOG=0`` silences it.
 
 from __future__ import annotations
 
+import gc
+
+# Run as the program (or as a worker process's copy of it), the collector is off while the
+# process imports the engine and builds the app (some million objects, all kept for the
+# process's life, scanned again and again: about a quarter of the start-up's time,
+# measured); :func:`service.main.create_app`'s start-up freezes them out of later scans
+# and turns it back on. Imported (a test reading log_config), nothing changes.
+if __name__ in ("__main__", "__mp_main__"):
+    gc.disable()
+
 import argparse
 import copy
 import socket
@@ -65,6 +75,10 @@ def main(argv: list[str] | None = None) -> None:
     args = parser.parse_args(argv)
     if args.workers > 1:
         _listen_with_nodelay()
+        # each worker process builds its own app (and turns its collector back on then);
+        # this one only supervises them, for as long as the service runs
+        gc.freeze()
+        gc.enable()
     uvicorn.run(
         args.factory,
         factory=True,

@@ -25,6 +25,7 @@ from __future__ import annotations
 import asyncio
 import base64
 import contextlib
+import gc
 import hashlib
 import importlib.metadata
 import os
@@ -32,6 +33,7 @@ import re
 import signal
 import subprocess
 import threading
+import time
 from collections.abc import AsyncIterator, Callable, Sequence
 from contextlib import asynccontextmanager
 from pathlib import Path
@@ -125,14 +127,102 @@ def warm_up(models: Sequence[ModelSpec]) -> None:
     """Evaluate each model's first example once per rung, ignoring every outcome.
 
     Some rungs pay a one-off cost on their first call in a process (the
-    rare-impact simulation loads its numba-compiled kernel, ~1.5 s); paying it
-    here, in a background thread at start-up, keeps it off the first request.
+    rare-impact and blow simulations load their numba-compiled kernels, 0.3-0.5 s
+    from numba's disk cache, seconds to compile without it); paying it here, in a
+    background thread at start-up, keeps it off the first request. ``/readyz``
+    answers "warming" until it has run (:class:`WarmUp`).
     """
     for spec in models:
         for example in spec.examples[:1]:
             for rung in spec.rung_names:
                 with contextlib.suppress(Exception):
                     engine.run(spec, example, fidelity=rung)
+
+
+def kernel_cache() -> dict[str, dict[str, int]]:
+    """Every numba-compiled function of the engine that this process has called from
+    Python: its signatures, how many of them came from numba's disk cache (``loaded``) and
+    how many were compiled here (``compiled``). Functions only ever called from inside
+    another kernel are compiled into it and are not listed.
+
+    After :func:`warm_up` in a process whose cache is warm, every kernel is loaded and
+    none compiled (the image build checks this; ``tests/service/test_cold_start.py``).
+
+    >>> kernel_cache() == {} or all(k["signatures"] > 0 for k in kernel_cache().values())
+    True
+    """
+    import sys
+
+    try:
+        from numba.core.dispatcher import Dispatcher
+    except ImportError:  # pragma: no cover - numba is a declared dependency
+        return {}
+    found: dict[str, dict[str, int]] = {}
+    for name, module in list(sys.modules.items()):
+        if name != "engine" and not name.startswith("engine."):
+            continue
+        for attr, value in list(vars(module).items()):
+            if isinstance(value, Dispatcher) and value.signatures:
+                stats = value.stats
+                found[f"{name}.{attr}"] = {
+                    "signatures": len(value.signatures),
+                    "loaded": sum(stats.cache_hits.values()),
+                    "compiled": sum(stats.cache_misses.values()),
+                }
+    return found
+
+
+class WarmUp:
+    """The start-up warm-up (:func:`warm_up`) on its own thread, and whether it is done.
+
+    ``/readyz`` answers 503 "warming" until :attr:`done`: a load balancer or an
+    orchestrator waiting on it sends no request before the compiled kernels are loaded.
+    Off (``WARM_UP=0``) it is done at once. It is done however it ends: a model that
+    fails while warming up does not keep the service unready.
+
+    >>> off = WarmUp([], enabled=False)
+    >>> off.done, off.state
+    (True, 'off')
+    >>> on = WarmUp([], enabled=True)
+    >>> on.done, on.state
+    (False, 'warming')
+    >>> on.run(); on.done, on.state, on.seconds is not None
+    (True, 'done', True)
+    """
+
+    def __init__(self, models: Sequence[ModelSpec], *, enabled: bool) -> None:
+        self.models = models
+        self.enabled = enabled
+        self.seconds: float | None = None  #: how long it took, once done [s]
+        self._done = threading.Event()
+        if not enabled:
+            self._done.set()
+
+    @property
+    def done(self) -> bool:
+        return self._done.is_set()
+
+    @property
+    def state(self) -> str:
+        """``off``, ``warming`` or ``done``."""
+        return "off" if not self.enabled else "done" if self.done else "warming"
+
+    def start(self) -> None:
+        """Run it on a daemon thread (nothing when off or already done)."""
+        if not self.done:
+            threading.Thread(target=self.run, name="warm-up", daemon=True).start()
+
+    def run(self) -> None:
+        start = time.perf_counter()
+        try:
+            warm_up(self.models)
+        finally:
+            self.seconds = time.perf_counter() - start
+            self._done.set()
+
+    def wait(self, timeout: float | None = None) -> bool:
+        """Block until done or ``timeout`` [s]; whether it is done."""
+        return self._done.wait(timeout)
 
 
 #: On SIGTERM, open work gets the shutdown timeout less this to finish; then it is stopped
@@ -222,11 +312,14 @@ def create_app(
     )
 
     studies = Studies(study_settings or StudySettings())
+    warming = WarmUp(models, enabled=settings.warm_up)
 
     @asynccontextmanager
     async def lifespan(_: FastAPI) -> AsyncIterator[None]:
-        if settings.warm_up:
-            threading.Thread(target=warm_up, args=(models,), name="warm-up", daemon=True).start()
+        if not gc.isenabled():  # off while starting (service.__main__): the app is built
+            gc.freeze()  # what start-up made lives as long as the process: never rescanned
+            gc.enable()
+        warming.start()
         # on SIGTERM open work may finish for a while, then answers 503 (not a dropped
         # connection at uvicorn's graceful-shutdown timeout)
         loop = asyncio.get_running_loop()
@@ -255,6 +348,7 @@ def create_app(
     )
     errors.install(app)
     app.state.engine_pool = pool
+    app.state.warm_up = warming
 
     @app.get("/healthz", tags=["service"], summary="Liveness", operation_id="healthz")
     async def healthz() -> dict[str, str]:  # on the loop: a liveness probe needs no thread
@@ -264,19 +358,25 @@ def create_app(
         "/readyz",
         operation_id="readyz",
         tags=["service"],
-        summary="Readiness: 503 while either engine lane cannot admit work",
+        summary="Readiness: 503 while warming up or while either engine lane cannot admit work",
         description=(
-            "Each lane's running and waiting computations, and the studies: running and "
-            "queued in this process, and unfinished in all. Studies never make the service "
-            "busy (they run on their own threads and workers): they are reported, not gated."
+            '503 "warming" until the start-up warm-up has run every model\'s first example '
+            "once per rung (the compiled kernels loaded; at once with WARM_UP=0); then 503 "
+            '"busy" while a lane has no free slot and a full queue. Each lane\'s running '
+            "and waiting computations, and the studies: running and queued in this process, "
+            "and unfinished in all. Studies never make the service busy (they run on their "
+            "own threads and workers): they are reported, not gated."
         ),
-        responses={503: {"description": "a lane has no free slot and a full queue"}},
+        responses={503: {"description": "warming up, or a lane has no free slot and a full queue"}},
     )
     async def readyz() -> JSONResponse:
-        ready = pool.ready()
+        admits = pool.ready()
+        ready = admits and warming.done
+        status = "ready" if ready else "busy" if warming.done else "warming"
         return JSONResponse(
             {
-                "status": "ready" if ready else "busy",
+                "status": status,
+                "warm_up": warming.state,
                 "lanes": pool.state(),
                 "studies": studies.state(),
             },
