@@ -22,7 +22,6 @@ from engine.models.rare_impact import RARE_IMPACT, REFERENCE_DESIGN
 from tests.pins import pin
 
 
-
 def _impact(design: dict) -> dict:
     r = run(RARE_IMPACT, design, fidelity="closed_form")
     return {c.name: c.ok for c in r.checks} | {"_results": r.results}
