@@ -250,7 +250,7 @@ class Settings:
 
 
 def dask_tls(scheduler: str | None) -> TLSFiles | None:
-    """The certificates for the scheduler ``DASK_SCHEDULER`` names (issue 34), from
+    """The certificates for the scheduler ``DASK_SCHEDULER`` names, from
     ``DASK_TLS_CA_FILE`` (the authority that signed the cluster's certificates),
     ``DASK_TLS_CERT`` (this client's certificate) and ``DASK_TLS_KEY`` (its key, when not in
     the certificate's file); None when none is set (Dask's own ``distributed.comm.tls``
