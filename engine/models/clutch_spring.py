@@ -147,7 +147,7 @@ INPUTS: tuple[Param, ...] = (
         "disc_series",
         "1",
         "disc pack: the DIN 2093 series to choose from: A (stiff, h0/t ≈ 0.4), B (h0/t ≈ "
-        "0.75), C (soft, h0/t ≈ 1.3), or any",
+        "0.75), or any (the rows a public reprint of the standard's table confirms)",
         default="any",
         kind="choice",
         choices=sd.DISC_SERIES,
