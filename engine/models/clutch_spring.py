@@ -111,6 +111,7 @@ INPUTS: tuple[Param, ...] = (
         kind="choice",
         choices=tuple(sp.MATERIALS),
         group="spring",
+        used_with="spring_kind=helical",
     ),
     Param(
         "spring_seating",
@@ -121,6 +122,7 @@ INPUTS: tuple[Param, ...] = (
         kind="choice",
         choices=tuple(sp.SEATING_COEFFICIENTS),
         group="spring",
+        used_with="spring_kind=helical",
     ),
     Param(
         "dynamic_load",
@@ -152,6 +154,7 @@ INPUTS: tuple[Param, ...] = (
         kind="choice",
         choices=sd.DISC_SERIES,
         group="disc pack",
+        used_with="spring_kind=disc_pack",
     ),
     Param(
         "disc_yield_strength",
@@ -164,6 +167,7 @@ INPUTS: tuple[Param, ...] = (
         display_unit="MPa",
         symbol="R_e",
         group="disc pack",
+        used_with="spring_kind=disc_pack",
     ),
 )
 

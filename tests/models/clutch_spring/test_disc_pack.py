@@ -255,3 +255,31 @@ def test_the_helical_spring_is_unchanged_by_the_kind_input() -> None:
     a = run(SPRING_DESIGN, SIXTY_NM).results
     b = run(SPRING_DESIGN, {**SIXTY_NM, "spring_kind": "helical"}).results
     assert a == b and a["disc_designation"] is None and a["wire_diameter"] == 0.007
+
+
+#: The inputs one spring kind reads and the other does not (``used_with`` in the model):
+#: the form disables them for the other kind, so there they must change nothing.
+KIND_ONLY = {
+    "disc_series": ("disc_pack", ("A", "B")),
+    "disc_yield_strength": ("disc_pack", (1000e6, 2000e6)),
+    "spring_material": ("helical", ("EN10270-1-DH", "1.4310")),
+    "spring_seating": ("helical", ("fixed_fixed", "fixed_free")),
+}
+
+
+def test_each_kind_only_input_declares_its_kind() -> None:
+    declared = {p.name: p.used_with for p in SPRING_DESIGN.inputs if p.used_with}
+    assert declared == {n: f"spring_kind={k}" for n, (k, _) in KIND_ONLY.items()}
+
+
+@pytest.mark.parametrize("name", sorted(KIND_ONLY))
+def test_a_kind_only_input_changes_nothing_with_the_other_kind_and_acts_with_its_own(
+    name: str,
+) -> None:
+    kind, (a, b) = KIND_ONLY[name]
+    other = "helical" if kind == "disc_pack" else "disc_pack"
+    off = [run(SPRING_DESIGN, {**SIXTY_NM, "spring_kind": other, name: v}) for v in (a, b)]
+    assert off[0].results == off[1].results, name
+    assert [(c.name, c.ok) for c in off[0].checks] == [(c.name, c.ok) for c in off[1].checks]
+    on = [run(SPRING_DESIGN, {**SIXTY_NM, "spring_kind": kind, name: v}).results for v in (a, b)]
+    assert on[0] != on[1], name  # with its own kind it acts
