@@ -378,7 +378,7 @@ OUTPUTS: tuple[Output, ...] = (
         "disc_stress_utilisation",
         "1",
         "|σ_OM|/R_e at full stroke",
-        symbol="σ_OM/R_e",
+        symbol="|σ_OM|/R_e",
         step="DIN EN 16983",
     ),
     Output(
