@@ -459,23 +459,31 @@ function fieldRow(p) {
 /**
  * An input that changes nothing in the current mode is disabled, with the reason: the
  * model declares which input it takes effect with (``used_with``: the joint's μ_max and
- * torque tolerance act only with a torque specification). A disabled input is not sent.
+ * torque tolerance act only with a torque specification; ``"name=value"``: only while that
+ * choice is made, as a disc pack's inputs with spring kind "disc pack"). A disabled input
+ * is not sent.
  */
 function syncUsage(m) {
   for (const p of m.inputs) {
     if (!p.used_with) continue;
+    const [otherName, wanted] = p.used_with.split("=");
     const input = document.getElementById("in-" + p.name);
-    const other = document.getElementById("in-" + p.used_with);
+    const other = document.getElementById("in-" + otherName);
     const reason = document.getElementById("unused-" + p.name);
     if (!input || !other || !reason) continue;
-    const off = other.type === "checkbox" ? !other.checked : other.value.trim() === "";
-    const needs = m.inputs.find((x) => x.name === p.used_with);
+    const off = wanted !== undefined ? other.value !== wanted
+      : other.type === "checkbox" ? !other.checked : other.value.trim() === "";
+    const needs = m.inputs.find((x) => x.name === otherName);
+    const label = needs ? needs.label : otherName;
     const was = input.disabled;
     input.disabled = off;
-    if (was !== off) checkField(p);
+    if (was !== off && ["float", "int", "samples"].includes(p.kind)) checkField(p);
     for (const sel of document.querySelectorAll(`#unit-${p.name}`)) if (sel.tagName === "SELECT") sel.disabled = off;
     reason.hidden = !off;
-    reason.textContent = off ? `Used only with a ${needs ? needs.label : p.used_with}: without one it changes nothing.` : "";
+    const choice = wanted === undefined ? "" : (state.choiceNames[wanted] || wanted);
+    reason.textContent = !off ? ""
+      : wanted !== undefined ? `Used only with ${label} “${choice}”: with another it changes nothing.`
+      : `Used only with a ${label}: without one it changes nothing.`;
     input.closest(".field")?.classList.toggle("unused", off);
     const described = (input.getAttribute("aria-describedby") || "").split(" ").filter((x) => x && x !== reason.id);
     input.setAttribute("aria-describedby", [...described, ...(off ? [reason.id] : [])].join(" "));

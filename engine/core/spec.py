@@ -87,8 +87,21 @@ class Param:
     min_length: int = MIN_SAMPLES
     max_length: int = MAX_SAMPLES
     #: The input this one takes effect with: while that one is not given, this one changes
-    #: nothing (the form disables it and says so).
+    #: nothing (the form disables it and says so). ``"name=value"``: only while that choice
+    #: input has that value (a disc pack's inputs with ``spring_kind`` "disc_pack").
     used_with: str | None = None
+
+    @property
+    def used_with_input(self) -> str | None:
+        """The name of the input this one takes effect with (``used_with`` up to ``=``)."""
+        return None if self.used_with is None else self.used_with.split("=", 1)[0]
+
+    @property
+    def used_with_value(self) -> str | None:
+        """The choice of :attr:`used_with_input` this one takes effect at, if one is named."""
+        if self.used_with is None or "=" not in self.used_with:
+            return None
+        return self.used_with.split("=", 1)[1]
 
     @property
     def is_numeric(self) -> bool:
@@ -634,8 +647,12 @@ class ModelSpec:
         for p in self.inputs:
             if p.choice_labels and len(p.choice_labels) != len(p.choices):
                 raise ValueError(f"{self.name}.{p.name}: one choice label per choice")
-            if p.used_with is not None and p.used_with not in names:
+            if p.used_with_input is not None and p.used_with_input not in names:
                 raise ValueError(f"{self.name}.{p.name}: used with {p.used_with!r}, no input")
+            if p.used_with_value is not None:
+                other = self.inputs[names.index(str(p.used_with_input))]
+                if p.used_with_value not in other.choices:
+                    raise ValueError(f"{self.name}.{p.name}: used with {p.used_with!r}, no choice")
         if self.default_fidelity not in ("auto", *self.rung_names):
             raise ValueError(f"{self.name}: unknown default_fidelity {self.default_fidelity!r}")
         for r in self.rungs:

@@ -345,7 +345,7 @@ OUTPUTS: tuple[Output, ...] = (
         "1",
         "Bolts below F_M,min, in ppm",
         label="below F_M,min [ppm]",
-        symbol="p_low",
+        symbol="p(F_M < F_M,min)",
         step="VDI 2230-1 R5",
     ),
     _out(
@@ -362,7 +362,7 @@ OUTPUTS: tuple[Output, ...] = (
         "1",
         "Bolts above F_M,zul (utilisation above ν), in ppm",
         label="above F_M,zul [ppm]",
-        symbol="p_high",
+        symbol="p(F_M > F_M,zul)",
         step="VDI 2230-1 R7",
     ),
     _out(
@@ -801,7 +801,7 @@ CLAMP_CAPABILITY = ModelSpec(
         Answer("high_ppm", "p(F_M > F_M,zul)", check="above_permissible_preload"),
         Answer("clamp_force_cpk", "C_pk,F"),
         Answer("tightening_factor", "α_A"),
-        Answer("preload_median", "F_M,50%"),
+        Answer("preload_median", "F_M,0.5"),
     ),
     name="joint.clamp_capability",
     title="Clamp-force capability: ppm below F_M,min and above F_M,zul of a tool on a joint",

@@ -111,6 +111,7 @@ INPUTS: tuple[Param, ...] = (
         kind="choice",
         choices=tuple(sp.MATERIALS),
         group="spring",
+        used_with="spring_kind=helical",
     ),
     Param(
         "spring_seating",
@@ -121,6 +122,7 @@ INPUTS: tuple[Param, ...] = (
         kind="choice",
         choices=tuple(sp.SEATING_COEFFICIENTS),
         group="spring",
+        used_with="spring_kind=helical",
     ),
     Param(
         "dynamic_load",
@@ -147,11 +149,12 @@ INPUTS: tuple[Param, ...] = (
         "disc_series",
         "1",
         "disc pack: the DIN 2093 series to choose from: A (stiff, h0/t ≈ 0.4), B (h0/t ≈ "
-        "0.75), C (soft, h0/t ≈ 1.3), or any",
+        "0.75), or any (the rows a public reprint of the standard's table confirms)",
         default="any",
         kind="choice",
         choices=sd.DISC_SERIES,
         group="disc pack",
+        used_with="spring_kind=disc_pack",
     ),
     Param(
         "disc_yield_strength",
@@ -164,6 +167,7 @@ INPUTS: tuple[Param, ...] = (
         display_unit="MPa",
         symbol="R_e",
         group="disc pack",
+        used_with="spring_kind=disc_pack",
     ),
 )
 
@@ -374,7 +378,7 @@ OUTPUTS: tuple[Output, ...] = (
         "disc_stress_utilisation",
         "1",
         "|σ_OM|/R_e at full stroke",
-        symbol="σ_OM/R_e",
+        symbol="|σ_OM|/R_e",
         step="DIN EN 16983",
     ),
     Output(

@@ -351,10 +351,10 @@ CLOSED_FORM = Rung(
 ISO16047 = ModelSpec(
     name="friction.iso16047",
     answer=(
-        Answer("thread_friction_mean", "μ_th"),
-        Answer("bearing_friction_mean", "μ_b"),
-        Answer("total_friction_mean", "μ_tot"),
-        Answer("torque_coefficient_mean", "K"),
+        Answer("thread_friction_mean", "μ_th,mean"),
+        Answer("bearing_friction_mean", "μ_b,mean"),
+        Answer("total_friction_mean", "μ_tot,mean"),
+        Answer("torque_coefficient_mean", "K_mean"),
     ),
     title="Friction from a torque/clamp-force test series (ISO 16047)",
     family="friction",

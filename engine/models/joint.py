@@ -2507,7 +2507,7 @@ VDI2230 = ModelSpec(
             check="R7_window_fits",
             relation="≥",
             bound="required_preload_max",
-            bound_symbol="F_M,max,erf",
+            bound_symbol="F_M,max",
         ),
         Answer(
             "residual_clamp_force_min",

@@ -385,7 +385,7 @@ RARE_DESIGN = ModelSpec(
         Answer("design_change", "Δ"),
         Answer("new_power_spring_rate", "c1"),
         Answer("new_return_spring_rate", "c3", check="c3 > c1"),
-        Answer("engagement_margin", "(t_w − t_e)/t_w", check=MARGIN_CHECK),
+        Answer("engagement_margin", "(t_eng − t_2)/t_eng", check=MARGIN_CHECK),
     ),
     examples=(
         EDGE_BLOW,

@@ -1147,7 +1147,7 @@ RARE_IMPACT = ModelSpec(
             check="full engagement",
             relation="≤",
             bound="engagement_window",
-            bound_symbol="t_w",
+            bound_symbol="t_eng",
         ),
         Answer("release_speed", "ω_r"),
         Answer("cycle_time", "t_c"),

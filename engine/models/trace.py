@@ -1478,7 +1478,7 @@ BATCH_OUTPUTS: tuple[Output, ...] = (
     _o("preload_highest", "N", "Highest preload of the batch",
        symbol="F_M,high", step="VDI 2230-1 R13"),
     _o("outlier_count", "1", "Traces whose friction lies apart from the others'", kind="int",
-       symbol="", step=""),
+       symbol="n_out", step=""),
     _o(
         "outlier_traces",
         "1",
@@ -1527,7 +1527,7 @@ BATCH = ModelSpec(
         Answer("friction_mean", "μ_ges,mean"),
         Answer("preload_mean", "F_V,mean"),
         Answer("preload_lowest", "F_V,low", check="all_in_window"),
-        Answer("outlier_count", "outliers", check="no_outliers"),
+        Answer("outlier_count", "n_out", check="no_outliers"),
         Answer("critical_capability_index", "C_pk,F", check="capability"),
     ),
     name="trace.batch",

@@ -128,3 +128,42 @@ def test_an_input_without_effect_is_disabled_with_its_reason_and_not_sent(
     assert _submit(page) == "ok"
     sent = page.evaluate("window.calcState.lastRequest")
     assert (sent["torque_tolerance"], sent["thread_friction_max"]) == (0.1, 0.16)
+
+
+def test_a_disc_pack_s_inputs_are_disabled_for_a_helical_spring_and_the_reverse(
+    page: Any,  # noqa: F811
+    base_url: str,  # noqa: F811
+) -> None:
+    """clutch.spring_design's disc inputs act only with spring kind "disc pack", its wire
+    inputs only with "helical spring" (``used_with="spring_kind=…"``): the other kind's are
+    disabled, say why, and are not sent."""
+    page.set_viewport_size(DESKTOP)
+    _open(page, base_url, "m=clutch.spring_design")
+    page.select_option("#example", "0")
+    disc, wire = ("disc_series", "disc_yield_strength"), ("spring_material", "spring_seating")
+    assert page.input_value("#in-spring_kind") == "helical"
+    for name in disc:
+        assert page.is_disabled(f"#in-{name}"), name
+        reason = page.inner_text(f"#unused-{name}")
+        assert reason == "Used only with spring kind “disc pack”: with another it changes nothing."
+        assert f"unused-{name}" in (page.get_attribute(f"#in-{name}", "aria-describedby") or "")
+    for name in wire:
+        assert page.is_enabled(f"#in-{name}") and page.is_hidden(f"#unused-{name}"), name
+    assert _submit(page) == "ok"
+    sent = page.evaluate("window.calcState.lastRequest")
+    assert not set(disc) & set(sent) and set(wire) <= set(sent)
+    page.select_option("#in-spring_kind", "disc_pack")
+    for name in wire:
+        assert page.is_disabled(f"#in-{name}"), name
+        reason = page.inner_text(f"#unused-{name}")
+        assert (
+            reason
+            == "Used only with spring kind “helical spring”: with another it changes nothing."
+        )
+    for name in disc:
+        assert page.is_enabled(f"#in-{name}") and page.is_hidden(f"#unused-{name}"), name
+    page.select_option("#in-disc_series", "A")
+    assert _submit(page) == "ok"
+    sent = page.evaluate("window.calcState.lastRequest")
+    assert not set(wire) & set(sent) and sent["disc_series"] == "A"
+    assert "DIN 2093 A 40" in page.inner_text("#results")

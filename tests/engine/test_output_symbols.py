@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 from engine.core.sources import SOURCES, cited_ids
-from engine.core.spec import Output
+from engine.core.spec import Answer, ModelSpec, Output
 from engine.models import MODELS
 
 
@@ -101,3 +101,19 @@ def test_no_engine_source_holds_a_control_character() -> None:
         if any(ord(c) < 32 and c != "\r" for c in line)
     ]
     assert bad == []
+
+
+ANSWERS = [(m, a) for m in MODELS for a in m.answer]
+
+
+@pytest.mark.parametrize(
+    ("model", "answer"), ANSWERS, ids=[f"{m.name}.{a.output}" for m, a in ANSWERS]
+)
+def test_the_answer_card_writes_each_result_with_the_symbol_the_table_does(
+    model: ModelSpec, answer: Answer
+) -> None:
+    """One symbol per result: the card's "C_m/C_p = 1.9 ≥ C_req" reads as the table's rows."""
+    outputs = {o.name: o for o in model.outputs}
+    assert answer.symbol == outputs[answer.output].symbol
+    if isinstance(answer.bound, str):  # a bound that is another result is written as it is
+        assert answer.bound_symbol == outputs[answer.bound].symbol
