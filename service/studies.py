@@ -64,8 +64,9 @@ from engine.studies.plan import (
 
 from . import schemas
 from .api import _ERRORS, API_PREFIX
-from .config import _float, _int, usable_cpus, usable_memory
+from .config import ApiKey, _float, _int, usable_cpus, usable_memory
 from .jobstore import ACTIVE, BEAT_S, Full, JobStore
+from .middleware import client_of, key_of
 from .units import quantity
 
 _KEEP_JOBS = 64
@@ -376,20 +377,32 @@ class Studies:
     def _prune(self) -> None:
         self.store.prune(self.settings.keep_s, _KEEP_JOBS)
 
-    def submit(self, spec: ModelSpec, study: Study, client: str, keep_points: bool) -> Job:
+    def submit(
+        self,
+        spec: ModelSpec,
+        study: Study,
+        client: str,
+        keep_points: bool,
+        key: ApiKey | None = None,
+    ) -> Job:
         """Check the study, then the limits and quotas, and only then draw its points.
 
         Every refusal that needs no drawing (a 422: a bad law, an unknown fidelity, too
         many points) and the quotas (503: per client, in all, disk) come before
         :func:`engine.studies.plan.plan`, which takes seconds and gigabytes for a study of
         millions of points; a refusal that needs the drawn points (the base with the
-        first point) frees the job's place.
+        first point) frees the job's place. A client with an API ``key`` has the key's
+        quotas where it names them (studies at once, points per study), the server's
+        otherwise.
         """
         n_points = study_size(spec, study)
-        if n_points > self.settings.max_points:
+        max_points, limit = self.settings.max_points, "this server's limit"
+        if key is not None and key.points is not None:
+            max_points, limit = key.points, f"the limit of the API key {key.name!r}"
+        if n_points > max_points:
             raise engine.InputOutOfRange(
-                f"the study has {n_points} points, over this server's limit of "
-                f"{self.settings.max_points} (STUDY_MAX_POINTS)",
+                f"the study has {n_points} points, over {limit} of {max_points}"
+                + (" (STUDY_MAX_POINTS)" if max_points == self.settings.max_points else ""),
                 field="samples",
             )
         if keep_points and n_points > self.settings.keep_points_max:
@@ -405,7 +418,9 @@ class Studies:
         try:
             self.store.admit(
                 job.row(self.owner),
-                per_client=self.settings.per_client,
+                per_client=self.settings.per_client
+                if key is None or key.studies is None
+                else key.studies,
                 max_active=self.settings.max_active,
             )
         except Full as exc:
@@ -600,9 +615,11 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
     def add(spec: ModelSpec) -> None:
         async def submit(body: StudyIn, request: Request) -> JSONResponse:
             study = to_study(spec, body)
-            client = request.client.host if request.client else "unknown"
+            client, key = client_of(request.scope), key_of(request.scope)
             # drawing up to STUDY_MAX_POINTS points takes a while: off the event loop
-            job = await run_in_threadpool(studies.submit, spec, study, client, body.keep_points)
+            job = await run_in_threadpool(
+                studies.submit, spec, study, client, body.keep_points, key
+            )
             return JSONResponse(
                 await run_in_threadpool(studies.get, job.id),
                 status_code=202,
