@@ -505,24 +505,25 @@ class Studies:
             job.error = {"type": "study_failed", "msg": _public(f"{type(exc).__name__}: {exc}")}
             self._finish(job, error=job.error, disk_bytes=0)
 
-    def record(self, job_id: str) -> dict[str, Any]:
-        """The stored job, or 404."""
+    def record(self, job_id: str, client: str | None = None) -> dict[str, Any]:
+        """The stored job, or 404; with a ``client`` (a key's identity, where the server has
+        API keys) only a job of that client: another key's job is not there for it."""
         job = self.store.get(job_id)
-        if job is None:
+        if job is None or (client is not None and job["client"] != client):
             raise HTTPException(status_code=404, detail=f"no job {job_id[:40]!r}")
         return job
 
-    def get(self, job_id: str) -> dict[str, Any]:
+    def get(self, job_id: str, client: str | None = None) -> dict[str, Any]:
         """The job's answer (state, progress, result, links), from any process's store."""
-        return describe(self.record(job_id))
+        return describe(self.record(job_id, client))
 
-    def cancel(self, job_id: str) -> dict[str, Any]:
+    def cancel(self, job_id: str, client: str | None = None) -> dict[str, Any]:
         """Cancel an unfinished job; remove a finished one with its summary and points.
 
         The answer is the job as it stood; a removed job answers 404 from then on. A job
         another process runs is stopped by that process at its next beat.
         """
-        job = self.record(job_id)
+        job = self.record(job_id, client)
         if job["state"] not in ACTIVE:
             self.store.remove(job_id)
             body = describe(job)
@@ -608,6 +609,12 @@ def to_study(spec: ModelSpec, body: StudyIn) -> Study:
     )
 
 
+def _keyed(request: Request) -> str | None:
+    """The client whose jobs alone a request may see: its key's identity where the server
+    has API keys; None (every job) where the API is open."""
+    return client_of(request.scope) if key_of(request.scope) is not None else None
+
+
 def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
     """``POST <path>/study`` per model, and ``/jobs/{id}`` to poll, fetch and cancel."""
     router = APIRouter(prefix=API_PREFIX, tags=["studies"])
@@ -621,7 +628,7 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
                 studies.submit, spec, study, client, body.keep_points, key
             )
             return JSONResponse(
-                await run_in_threadpool(studies.get, job.id),
+                await run_in_threadpool(studies.get, job.id, None),
                 status_code=202,
                 headers={"location": f"{API_PREFIX}/jobs/{job.id}"},
             )
@@ -672,8 +679,8 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
         summary="A study's state, progress and, when done, result",
         responses=_404,
     )
-    def get_job(job_id: str) -> dict[str, Any]:
-        return studies.get(job_id)
+    def get_job(job_id: str, request: Request) -> dict[str, Any]:
+        return studies.get(job_id, _keyed(request))
 
     @router.delete(
         "/jobs/{job_id}",
@@ -681,11 +688,11 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
         summary="Cancel a study and free its workers, or remove a finished one and its data",
         responses=_404,
     )
-    def cancel_job(job_id: str) -> dict[str, Any]:
-        return studies.cancel(job_id)
+    def cancel_job(job_id: str, request: Request) -> dict[str, Any]:
+        return studies.cancel(job_id, _keyed(request))
 
-    def stored_points(job_id: str) -> Path:
-        job = studies.record(job_id)
+    def stored_points(job_id: str, request: Request) -> Path:
+        job = studies.record(job_id, _keyed(request))
         path = studies.store.points_path(job_id)
         if not job["points"] or not path.is_file():
             raise HTTPException(
@@ -702,8 +709,8 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
         response_class=Response,
         responses={**_404, 200: {"content": {"text/csv": {}}, "description": "the points"}},
     )
-    def points(job_id: str) -> StreamingResponse:
-        path = stored_points(job_id)
+    def points(job_id: str, request: Request) -> StreamingResponse:
+        path = stored_points(job_id, request)
         return StreamingResponse(
             csv_blocks(path),  # a plain iterator: Starlette reads it on a worker thread
             media_type="text/csv",
@@ -725,9 +732,9 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
             200: {"content": {PARQUET: {}}, "description": "the points"},
         },
     )
-    def points_parquet(job_id: str) -> FileResponse:
+    def points_parquet(job_id: str, request: Request) -> FileResponse:
         return FileResponse(
-            stored_points(job_id),
+            stored_points(job_id, request),
             media_type=PARQUET,
             headers={"content-disposition": f'attachment; filename="study-{job_id}.parquet"'},
         )

@@ -117,6 +117,19 @@ def test_quotas_follow_the_key_not_the_address() -> None:
     assert "20 points, over the limit of the API key 'line-4' of 10" in detail["msg"]
 
 
+def test_a_key_sees_its_own_jobs_alone() -> None:
+    """With keys, another key's job answers 404 (as an unknown one): its id is no ticket."""
+    a, c = {"x-api-key": SECRET_A}, {"x-api-key": SECRET_C}
+    job = "/api/v1/jobs/busy"
+    answers = _calls(
+        KEYS,
+        [("GET", job, a), ("GET", job + "/points.csv", a), ("DELETE", job, a), ("GET", job, c)],
+        busy="key:line-5",
+    )
+    assert [r.status_code for r in answers] == [404, 404, 404, 200]
+    assert answers[-1].json()["state"] == "running"
+
+
 def test_the_openapi_document_names_the_key_schemes() -> None:
     open_doc, keyed_doc = (
         _calls(keys, [("GET", "/openapi.json", {})])[0].json() for keys in ((), KEYS)
