@@ -53,6 +53,7 @@ from engine import ModelSpec
 from engine.studies.execute import Cancelled, DaskExecutor, InProcess, StudyRun, run_study
 from engine.studies.plan import (
     DISTRIBUTIONS,
+    MAX_POINT_COLUMNS,
     METHODS,
     Plan,
     Study,
@@ -155,13 +156,40 @@ class CorrelationIn(BaseModel):
     )
 
 
+#: Designs an explicit-point study may list (JSON rows or CSV lines); the body's size
+#: (MAX_BODY_BYTES) bounds them too.
+MAX_POINT_ROWS = 100_000
+
+
 class StudyIn(BaseModel):
     model_config = ConfigDict(extra="forbid")
     base: dict[str, float | int | bool | str | list[float]] = Field(
         default_factory=dict, description="inputs held fixed (defaults fill the rest)"
     )
-    variables: list[VariableIn] = Field(min_length=1, max_length=12)
-    method: Literal["grid", "monte_carlo", "lhs", "sobol"] = "monte_carlo"
+    variables: list[VariableIn] = Field(
+        default_factory=list,
+        max_length=12,
+        description="the inputs to vary and how (every method but 'points')",
+    )
+    method: Literal["grid", "monte_carlo", "lhs", "sobol", "points"] = Field(
+        default="monte_carlo",
+        description="how the designs are made; 'points': the designs listed in `points` or "
+        "`points_csv` (set by giving either)",
+    )
+    points: list[dict[str, float | str]] | None = Field(
+        default=None,
+        min_length=1,
+        max_length=MAX_POINT_ROWS,
+        description="explicit designs, one object per design: the same numeric inputs in "
+        "each, numbers in SI or strings with a unit as in a single run ('45 mm'); the other "
+        "inputs from `base`",
+    )
+    points_csv: str | None = Field(
+        default=None,
+        description="explicit designs as CSV text: a header of input names, each with an "
+        "optional unit in brackets ('clamp_length [mm]'), then one design a line; a cell is "
+        "a number (in the column's unit, SI without one) or a number with its own unit",
+    )
     samples: int = Field(default=1000, ge=2, le=2_000_000)
     seed: int = Field(default=0, ge=0, lt=2**63)
     fidelity: str | None = Field(default=None, max_length=40)
@@ -412,7 +440,8 @@ class Studies:
             )
         job = Job(uuid.uuid4().hex, spec.name, client, n_points, keep_points)
         if keep_points:  # the file's float64 columns: the varied inputs, then the outputs
-            columns = len(study.variables) + len(study.outputs or spec.outputs)
+            varied = len(study.points) if study.points is not None else len(study.variables)
+            columns = varied + len(study.outputs or spec.outputs)
             job.disk_bytes = 8 * n_points * columns
         self._prune()
         try:
@@ -567,6 +596,147 @@ def _si(spec: ModelSpec, name: str, value: Number | None, part: str) -> float | 
     return quantity(param, value, part, field="variables", spread=part == "sd")
 
 
+_HEADER = re.compile(r"\s*([A-Za-z_][A-Za-z0-9_]*)\s*(?:\[([^\]]+)\])?\s*")
+
+
+def _point_param(spec: ModelSpec, name: str, where: str, field: str) -> Any:
+    """The numeric input ``name`` a design gives, or a refusal naming ``where``."""
+    try:
+        param = spec.param(name)
+    except KeyError:
+        raise engine.InputOutOfRange(
+            f"{where}: {name[:80]!r} is not an input of {spec.name}", field=field
+        ) from None
+    if not param.is_numeric:
+        raise engine.InputOutOfRange(
+            f"{where}: {name} is not a numeric input of {spec.name}; give it in base",
+            field=field,
+        )
+    return param
+
+
+def _csv_rows(text: str) -> Iterator[tuple[str, dict[str, float | str]]]:
+    """The designs of ``points_csv``, each with its place (``points_csv line N``): a cell
+    that is a plain number takes its column's unit from the header, where there is one."""
+    if text.count("\n") > MAX_POINT_ROWS + 1:
+        raise engine.InputOutOfRange(
+            f"points_csv: at most {MAX_POINT_ROWS} designs", field="points_csv"
+        )
+    reader = csv.reader(io.StringIO(text.removeprefix("\ufeff")))
+    header = next((cells for cells in reader if cells), None)  # blank lines skipped
+    columns: list[tuple[str, str | None]] = []
+    for cell in header or []:
+        match = _HEADER.fullmatch(cell)
+        if match is None:
+            raise engine.InputOutOfRange(
+                f"points_csv line 1: {cell[:80]!r} is not an input name with an optional [unit]",
+                field="points_csv",
+            )
+        columns.append((match.group(1), match.group(2)))
+    if not columns:
+        raise engine.InputOutOfRange(
+            "points_csv: a header of input names, then one design a line", field="points_csv"
+        )
+    if len(columns) > MAX_POINT_COLUMNS:
+        raise engine.InputOutOfRange(
+            f"points_csv line 1: at most {MAX_POINT_COLUMNS} inputs", field="points_csv"
+        )
+    for cells in reader:
+        if not cells:  # a blank line
+            continue
+        where = f"points_csv line {reader.line_num}"
+        if len(cells) != len(columns):
+            raise engine.InputOutOfRange(
+                f"{where}: {len(cells)} values for the header's {len(columns)} inputs",
+                field="points_csv",
+            )
+        row: dict[str, float | str] = {}
+        for (name, unit), cell in zip(columns, cells, strict=True):
+            cell = cell.strip()
+            try:
+                number = float(cell)
+            except ValueError:
+                row[name] = cell  # a number with its own unit, read below
+            else:
+                row[name] = f"{cell} {unit}" if unit else number
+        yield where, row
+
+
+def _on_csv_line(exc: engine.InputOutOfRange, text: str | None) -> engine.InputOutOfRange:
+    """The engine's refusal of a design (its index in ``context["row"]``) as the line of
+    ``points_csv`` it came from, where the designs came as CSV; else as it is."""
+    row = exc.context.get("row")
+    if text is None or exc.field != "points" or not isinstance(row, int):
+        return exc
+    reader = csv.reader(io.StringIO(text.removeprefix("\ufeff")))
+    seen = -2  # the header, then the designs from 0, blank lines skipped as _csv_rows skips
+    for cells in reader:
+        seen += bool(cells)
+        if seen == row:
+            break
+    where = f"points_csv line {reader.line_num}"
+    msg = re.sub(r"^points: design \d+ \(points\[\d+\]\)", where, exc.message)
+    return engine.InputOutOfRange(msg, field="points_csv", **exc.context)
+
+
+def designs(spec: ModelSpec, body: StudyIn) -> dict[str, np.ndarray] | None:
+    """The explicit designs of ``points`` or ``points_csv`` as SI columns (None without).
+
+    Every design gives the same numeric inputs; a value is a number in SI or a string with
+    a unit (one reader with a single run's: :func:`units.quantity`). The limits (designs,
+    inputs) are checked before a value is read, and a refusal names the design (``points[3]``
+    or ``points_csv line 5``) and the input. Ranges are the engine's to check
+    (:func:`engine.studies.plan.study_size`).
+    """
+    if body.points is None and body.points_csv is None:
+        if body.method == "points":
+            raise engine.InputOutOfRange(
+                "points: method 'points' needs the designs, in points or points_csv",
+                field="points",
+            )
+        return None
+    if "method" in body.model_fields_set and body.method != "points":
+        raise engine.InputOutOfRange(
+            f"method: designs listed in points or points_csv are method 'points', not "
+            f"{body.method!r}",
+            field="method",
+        )
+    if body.points is not None and body.points_csv is not None:
+        raise engine.InputOutOfRange(
+            "points: give the designs once, in points or in points_csv", field="points"
+        )
+    field = "points" if body.points is not None else "points_csv"
+    rows: Iterator[tuple[str, dict[str, float | str]]] = (
+        ((f"points[{i}]", row) for i, row in enumerate(body.points))
+        if body.points is not None
+        else _csv_rows(body.points_csv or "")
+    )
+    names: list[str] = []
+    params: dict[str, Any] = {}
+    values: dict[str, list[float]] = {}
+    for where, row in rows:
+        if not names:
+            names = list(row)
+            if not names or len(names) > MAX_POINT_COLUMNS:
+                raise engine.InputOutOfRange(
+                    f"{where}: a design gives 1 to {MAX_POINT_COLUMNS} inputs", field=field
+                )
+            head = "points_csv line 1" if field == "points_csv" else where
+            params = {n: _point_param(spec, n, head, field) for n in names}
+            values = {n: [] for n in names}
+        if row.keys() != params.keys():
+            odd = sorted(set(row) ^ set(params))[0]
+            said = "is missing" if odd in params else "is not in the first design"
+            raise engine.InputOutOfRange(
+                f"{where}: {odd[:80]} {said} (every design gives the same inputs)", field=field
+            )
+        for name, value in row.items():
+            values[name].append(quantity(params[name], value, where, field=field))
+    if not names:
+        raise engine.InputOutOfRange(f"{field}: no design given", field=field)
+    return {name: np.asarray(column, dtype=float) for name, column in values.items()}
+
+
 def to_study(spec: ModelSpec, body: StudyIn) -> Study:
     """The engine's :class:`Study` from a request body (unit strings → SI)."""
     base: dict[str, Any] = {}
@@ -594,10 +764,12 @@ def to_study(spec: ModelSpec, body: StudyIn) -> Study:
         )
         for v in body.variables
     )
+    points = designs(spec, body)
     return Study(
         variables=variables,
         base=base,
-        method=body.method,
+        method="points" if points is not None else body.method,
+        points=points,
         samples=body.samples,
         seed=body.seed,
         fidelity=body.fidelity,
@@ -621,12 +793,16 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
 
     def add(spec: ModelSpec) -> None:
         async def submit(body: StudyIn, request: Request) -> JSONResponse:
-            study = to_study(spec, body)
+            # explicit designs may be many cells with units to read: off the event loop
+            study = await run_in_threadpool(to_study, spec, body)
             client, key = client_of(request.scope), key_of(request.scope)
             # drawing up to STUDY_MAX_POINTS points takes a while: off the event loop
-            job = await run_in_threadpool(
-                studies.submit, spec, study, client, body.keep_points, key
-            )
+            try:
+                job = await run_in_threadpool(
+                    studies.submit, spec, study, client, body.keep_points, key
+                )
+            except engine.InputOutOfRange as exc:
+                raise _on_csv_line(exc, body.points_csv) from None
             return JSONResponse(
                 await run_in_threadpool(studies.get, job.id, None),
                 status_code=202,
@@ -641,7 +817,8 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
             summary=f"{spec.title}: a design study (grid, Monte Carlo, LHS, Sobol')",
             description=(
                 "Vary up to 12 inputs (a grid: up to 3) by distribution "
-                f"({', '.join(DISTRIBUTIONS)}) with method one of {', '.join(METHODS)}; "
+                f"({', '.join(DISTRIBUTIONS)}) with method one of {', '.join(METHODS)}, "
+                "or list the designs themselves (`points`: JSON rows, or `points_csv`); "
                 "returns 202 with a job to poll at GET /api/v1/jobs/{id}."
             ),
             operation_id=spec.name.replace(".", "_") + "_study",
