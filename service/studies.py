@@ -40,13 +40,13 @@ from collections.abc import Iterator, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Literal
+from typing import Annotated, Any, Literal
 
 import numpy as np
 from fastapi import APIRouter, HTTPException, Request, Response
 from fastapi.concurrency import run_in_threadpool
 from fastapi.responses import FileResponse, JSONResponse, StreamingResponse
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, WithJsonSchema, create_model
 
 import engine
 from engine import ModelSpec
@@ -161,9 +161,14 @@ class CorrelationIn(BaseModel):
 MAX_POINT_ROWS = 100_000
 
 
+#: A study's fixed inputs as read (each model's route publishes them typed:
+#: :func:`study_request`).
+StudyBase = dict[str, float | int | bool | str | list[float]]
+
+
 class StudyIn(BaseModel):
     model_config = ConfigDict(extra="forbid")
-    base: dict[str, float | int | bool | str | list[float]] = Field(
+    base: StudyBase = Field(
         default_factory=dict, description="inputs held fixed (defaults fill the rest)"
     )
     variables: list[VariableIn] = Field(
@@ -737,6 +742,30 @@ def designs(spec: ModelSpec, body: StudyIn) -> dict[str, np.ndarray] | None:
     return {name: np.asarray(column, dtype=float) for name, column in values.items()}
 
 
+def study_request(spec: ModelSpec) -> type[StudyIn]:
+    """The body of ``POST <path>/study`` for ``spec``: :class:`StudyIn`, its ``base``
+    published as the model's own inputs, each optional (the schema of
+    :func:`schemas.inputs_model`, the sweep's base), so the OpenAPI document, and a client
+    generated from it, name every input with its unit and range.
+
+    The base is read as before, as a study law's numbers are (:func:`units.quantity`, the
+    engine's ranges, a refusal naming the input), and takes what the published schema
+    takes (tests/service/test_study_typed_base.py).
+    """
+    typed = schemas.inputs_model(spec, all_optional=True)
+    published = typed.model_json_schema()
+    published["title"] = schemas._class_name(spec, "StudyBase")
+    model: type[StudyIn] = create_model(
+        schemas._class_name(spec, "StudyRequest"),
+        __base__=StudyIn,
+        base=(
+            Annotated[StudyBase, WithJsonSchema(published)],
+            Field(default_factory=dict, description="inputs held fixed (defaults fill the rest)"),
+        ),
+    )
+    return model
+
+
 def to_study(spec: ModelSpec, body: StudyIn) -> Study:
     """The engine's :class:`Study` from a request body (unit strings → SI)."""
     base: dict[str, Any] = {}
@@ -809,6 +838,7 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
                 headers={"location": f"{API_PREFIX}/jobs/{job.id}"},
             )
 
+        submit.__annotations__["body"] = study_request(spec)  # the model's typed base
         router.add_api_route(
             spec.path + "/study",
             submit,
