@@ -24,6 +24,7 @@ or negative count or time) stops the service at start-up, naming the variable.
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import io
 import json
@@ -622,7 +623,17 @@ def _point_param(spec: ModelSpec, name: str, where: str, field: str) -> Any:
 
 def _csv_rows(text: str) -> Iterator[tuple[str, dict[str, float | str]]]:
     """The designs of ``points_csv``, each with its place (``points_csv line N``): a cell
-    that is a plain number takes its column's unit from the header, where there is one."""
+    that is a plain number takes its column's unit from the header, where there is one.
+    Text that is not CSV (a NUL byte, an unclosed quote over a huge field) is refused."""
+    try:
+        yield from _csv_read(text)
+    except csv.Error as exc:
+        raise engine.InputOutOfRange(
+            f"points_csv: not readable as CSV ({str(exc)[:120]})", field="points_csv"
+        ) from None
+
+
+def _csv_read(text: str) -> Iterator[tuple[str, dict[str, float | str]]]:
     if text.count("\n") > MAX_POINT_ROWS + 1:
         raise engine.InputOutOfRange(
             f"points_csv: at most {MAX_POINT_ROWS} designs", field="points_csv"
@@ -675,10 +686,11 @@ def _on_csv_line(exc: engine.InputOutOfRange, text: str | None) -> engine.InputO
         return exc
     reader = csv.reader(io.StringIO(text.removeprefix("\ufeff")))
     seen = -2  # the header, then the designs from 0, blank lines skipped as _csv_rows skips
-    for cells in reader:
-        seen += bool(cells)
-        if seen == row:
-            break
+    with contextlib.suppress(csv.Error):  # read whole once already: it is CSV
+        for cells in reader:
+            seen += bool(cells)
+            if seen == row:
+                break
     where = f"points_csv line {reader.line_num}"
     msg = re.sub(r"^points: design \d+ \(points\[\d+\]\)", where, exc.message)
     return engine.InputOutOfRange(msg, field="points_csv", **exc.context)

@@ -115,6 +115,8 @@ def test_designs_as_json_rows_and_as_csv_give_the_same_study() -> None:
          "points_csv", "points_csv line 1: 'dia meter' is not an input name"),
         ({"points_csv": "mass,diameter\n1,nan\n"},
          "points_csv", "diameter (points_csv line 2) = nan: not a finite number"),
+        ({"points_csv": 'mass,diameter\n1,"' + "1" * 140_000 + '"\n'},
+         "points_csv", "points_csv: not readable as CSV (field larger than field limit"),
         ({"points": [{"diameter": 0.1}], "points_csv": "diameter\n0.1\n"},
          "points", "give the designs once"),
         ({"points": [{"diameter": 0.1}], "method": "sobol"}, "method", "not 'sobol'"),
