@@ -11,7 +11,8 @@ calculations, and their heavy compute runs in Dask's worker processes, not in
 the service's interpreter.
 
 Budgets: ``STUDY_MAX_POINTS`` points and ``STUDY_BUDGET_S`` seconds per study;
-at most ``STUDY_PER_CLIENT`` unfinished studies per client address and
+at most ``STUDY_PER_CLIENT`` unfinished studies per client (its address, or its API key,
+whose own quotas then hold) and
 ``STUDY_MAX_ACTIVE`` in all, and the disk the kept points may take (503 with
 Retry-After beyond that), checked before a single point is drawn. Jobs live in the
 :class:`~service.jobstore.JobStore` (``STUDY_STORE``), which every server process shares
