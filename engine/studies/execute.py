@@ -14,9 +14,10 @@ the same summary, bit for bit, whichever executor ran them:
 
 Progress is reported after every chunk; a cancel event stops the study
 between chunks. On Dask a study has a few chunks in flight at once (``IN_FLIGHT_PER_THREAD``
-per worker thread) and submits the next as one finishes, so studies running side by side
-take turns: a small study submitted behind a large one starts within about two chunks'
-time, where it waited for the whole large study. A chunk's time budget follows the cost
+per worker thread) and submits the next as one finishes, and its first chunks have a
+higher priority than the spare ones of a study already running, so studies side by side
+take turns: a small study submitted behind a large one starts as soon as a worker frees,
+where it waited for the whole large study. A chunk's time budget follows the cost
 of the chunks measured before it (:class:`ChunkBudget`), not a fixed 60 s. Pending chunks
 are cancelled at once, and a running chunk
 stops at its next point (or inside a point's simulation) once it reads the study's
@@ -244,7 +245,9 @@ class DaskExecutor:
         stop = Event(name, client=client)
         # a window of chunks in flight, the next submitted as one finishes: what another
         # study submits meanwhile queues before this one's next chunks (Dask runs equal
-        # priorities in the order submitted), so studies take turns
+        # priorities in the order submitted), so studies take turns; a chunk's priority
+        # falls with the study's chunks already in flight, so a new study's first chunks
+        # go before the spare ones of a study that is running
         window = max(2, IN_FLIGHT_PER_THREAD * sum(client.nthreads().values()))
         index: dict[str, int] = {}
         flying: set[Any] = set()
@@ -255,8 +258,18 @@ class DaskExecutor:
             deadline = args[6] if budget is None else budget(len(next(iter(args[2].values()))))
             # workers look the model up by name in their own registry (a spec's functions
             # need not pickle)
+            with lock:
+                # a study's first chunks before any study's spare ones: a study just
+                # submitted starts as soon as a worker frees, not behind queued chunks
+                priority = -len(flying)
             fut = client.submit(
-                evaluate_remote, name, _name(args[0]), *args[1:6], deadline, pure=False
+                evaluate_remote,
+                name,
+                _name(args[0]),
+                *args[1:6],
+                deadline,
+                pure=False,
+                priority=priority,
             )
             index[fut.key] = i
             with lock:
