@@ -32,6 +32,7 @@ from engine import ModelSpec
 from engine.core.runner import DEFAULT_BUDGET_S, DEFAULT_MAX_STEPS
 
 from . import schemas
+from .middleware import client_of
 from .units import quantity
 from .workers import EnginePool, FallBack, Lane, Ticket, watch_disconnect
 
@@ -339,8 +340,7 @@ def _route(
 
 async def _in_lane(request: Request, lane: Lane, fn: Any, budget_s: float, what: str) -> Any:
     """Run ``fn`` in ``lane``, withdrawing it if the client disconnects meanwhile."""
-    client = request.client.host if request.client else "?"
-    ticket = Ticket(client)
+    ticket = Ticket(client_of(request.scope))  # the key's name, or the address
     watcher = asyncio.create_task(watch_disconnect(request.receive, ticket))
     try:
         return await lane.run(fn, budget_s, what, ticket)

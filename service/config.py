@@ -13,8 +13,10 @@ really use (:func:`usable_cpus`: affinity and cgroup quota), not the host's coun
 
 from __future__ import annotations
 
+import hashlib
 import math
 import os
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -30,6 +32,83 @@ def _origins() -> tuple[str, ...]:
 def _proxies() -> tuple[str, ...]:
     raw = os.environ.get("TRUSTED_PROXIES", "")
     return tuple(p.strip() for p in raw.split(",") if p.strip())
+
+
+#: A key's name: its identity in quotas, the heavy lane's share and the logs.
+_KEY_NAME = re.compile(r"[A-Za-z0-9._-]{1,64}")
+#: The shortest secret a key may have [characters].
+MIN_KEY_CHARS = 16
+
+
+@dataclass(frozen=True)
+class ApiKey:
+    """A client's API key: its name, the secret's SHA-256 (the secret itself is not kept),
+    and its study quotas; None takes the server's (``STUDY_PER_CLIENT``,
+    ``STUDY_MAX_POINTS``)."""
+
+    name: str
+    digest: bytes = field(repr=False)
+    #: Unfinished studies the key may have at once.
+    studies: int | None = None
+    #: Points one study of the key may have.
+    points: int | None = None
+
+    @classmethod
+    def of(
+        cls, name: str, secret: str, studies: int | None = None, points: int | None = None
+    ) -> ApiKey:
+        """The key of ``name`` with the secret ``secret``."""
+        return cls(name, hashlib.sha256(secret.encode()).digest(), studies, points)
+
+
+def read_api_keys(path: Path) -> tuple[ApiKey, ...]:
+    r"""The keys of ``API_KEYS_FILE``: one a line, ``name secret [studies=N] [points=N]``,
+    blank lines and ``#`` comments ignored. A malformed line stops the service at start-up,
+    naming the file and the line (never the secret).
+
+    >>> import tempfile
+    >>> with tempfile.NamedTemporaryFile("w", suffix=".keys", delete=False) as f:
+    ...     _ = f.write("# shop floor\nline-3  k3-2f9a8e1c7b6d5a4f  studies=1 points=50000\n")
+    >>> key = read_api_keys(Path(f.name))[0]
+    >>> key.name, key.studies, key.points, len(key.digest)
+    ('line-3', 1, 50000, 32)
+    """
+    try:
+        text = path.read_text()
+    except OSError as exc:
+        raise ValueError(f"API_KEYS_FILE {str(path)!r} cannot be read: {exc.strerror}") from None
+    keys: list[ApiKey] = []
+    for number, line in enumerate(text.splitlines(), start=1):
+        words = line.split("#", 1)[0].split()
+        if not words:
+            continue
+        where = f"API_KEYS_FILE {str(path)!r} line {number}"
+        if len(words) < 2 or not _KEY_NAME.fullmatch(words[0]):
+            raise ValueError(
+                f"{where}: write 'name secret [studies=N] [points=N]', the name of letters, "
+                "digits and ._- (at most 64)"
+            )
+        name, secret, quotas = words[0], words[1], dict.fromkeys(("studies", "points"))
+        if len(secret) < MIN_KEY_CHARS:
+            raise ValueError(f"{where}: the secret of {name!r} is shorter than {MIN_KEY_CHARS}")
+        for word in words[2:]:
+            quota, _, value = word.partition("=")
+            if quota not in quotas or not value.isdigit() or int(value) < 1:
+                raise ValueError(
+                    f"{where}: {word[:40]!r} is not studies=N or points=N with N an integer >= 1"
+                )
+            quotas[quota] = int(value)
+        keys.append(ApiKey.of(name, secret, quotas["studies"], quotas["points"]))
+    names = [k.name for k in keys]
+    digests = [k.digest for k in keys]
+    if len(set(names)) < len(names) or len(set(digests)) < len(digests):
+        raise ValueError(f"API_KEYS_FILE {str(path)!r}: each name and each secret may appear once")
+    return tuple(keys)
+
+
+def _api_keys() -> tuple[ApiKey, ...]:
+    path = os.environ.get("API_KEYS_FILE", "")
+    return read_api_keys(Path(path)) if path else ()
 
 
 def _quota(text: str, period_text: str | None = None) -> float | None:
@@ -201,6 +280,11 @@ class Settings:
     #: the connection cap) is then the forwarded address. Empty: no one's (a client could
     #: otherwise pose as many), loopback included.
     trusted_proxies: tuple[str, ...] = field(default_factory=_proxies)
+    #: The API keys (``API_KEYS_FILE``, :func:`read_api_keys`): with any, every /api/v1
+    #: request must carry one (``Authorization: Bearer <key>`` or ``X-API-Key``; 401
+    #: otherwise), and the key's name is the client's identity. None: the API is open,
+    #: as a single user's embedded service needs.
+    api_keys: tuple[ApiKey, ...] = field(default_factory=_api_keys)
     #: Largest request head (request line and headers); over it: 431 [bytes].
     max_head_bytes: int = field(default_factory=lambda: _int("MAX_HEAD_BYTES", 16 * 1024))
     #: A request's headers must arrive within this many seconds of its first byte [s].

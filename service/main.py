@@ -37,6 +37,7 @@ import time
 from collections.abc import AsyncIterator, Callable, Sequence
 from contextlib import asynccontextmanager
 from pathlib import Path
+from typing import Any
 
 from fastapi import FastAPI, Request
 from fastapi.middleware.cors import CORSMiddleware
@@ -50,10 +51,10 @@ import engine
 from engine import ModelSpec
 
 from . import errors
-from .api import Limits, catalogue_router, model_router
+from .api import API_PREFIX, Limits, catalogue_router, model_router
 from .config import Settings
 from .extra import EXTRA_ROUTERS
-from .middleware import BodyGuard, Compress, ExactRoutes, FrontDoor
+from .middleware import ApiKeys, BodyGuard, Compress, ExactRoutes, FrontDoor, document_keys
 from .studies import Studies, StudySettings, study_router
 from .workers import EnginePool
 
@@ -452,12 +453,23 @@ def create_app(
         json_paths=json_paths,
         body_timeout_s=settings.body_timeout_s,
     )
+    if settings.api_keys:  # before any body is read: an unknown client costs nothing
+        app.add_middleware(ApiKeys, keys=settings.api_keys, prefix=API_PREFIX)
+    build_openapi = app.openapi
+
+    def openapi() -> dict[str, Any]:
+        if app.openapi_schema is None:
+            document_keys(build_openapi(), bool(settings.api_keys), API_PREFIX)
+        assert app.openapi_schema is not None
+        return app.openapi_schema
+
+    app.openapi = openapi  # type: ignore[method-assign]
     if settings.cors_origins:
         app.add_middleware(
             CORSMiddleware,
             allow_origins=list(settings.cors_origins),
             allow_methods=["GET", "POST"],
-            allow_headers=["content-type", "x-request-id"],
+            allow_headers=["content-type", "x-request-id", "authorization", "x-api-key"],
             expose_headers=["x-request-id"],
         )
     # compression inside FrontDoor: its security headers and request id go on either body

@@ -9,11 +9,15 @@
   ``MAX_BODY_BYTES`` (413), counted as the bytes arrive, so a chunked body
   without ``content-length`` is cut off as soon as it passes the limit; the whole
   body within ``BODY_TIMEOUT_S`` (408).
+* :class:`ApiKeys`: with API keys configured, every ``/api/v1`` request carries a known
+  one (401 otherwise) and its name becomes the client's identity (:func:`client_of`).
 """
 
 from __future__ import annotations
 
 import asyncio
+import hashlib
+import hmac
 import itertools
 import json
 import logging
@@ -26,6 +30,8 @@ from urllib.parse import urlsplit
 
 from starlette.exceptions import HTTPException
 from starlette.middleware.gzip import GZipMiddleware
+
+from .config import ApiKey
 
 Scope = MutableMapping[str, Any]
 Message = MutableMapping[str, Any]
@@ -450,3 +456,119 @@ class Compress:
                         return
                     break
         await self.app(scope, receive, send)
+
+
+def client_of(scope: Scope) -> str:
+    """The client's identity, for the per-client quotas and the heavy lane's share: the
+    name of its API key (``key:<name>``) where keys are configured, else its address (the
+    forwarded one behind a proxy in ``TRUSTED_PROXIES``).
+
+    >>> client_of({"client": ("203.0.113.9", 5000), "state": {}})
+    '203.0.113.9'
+    >>> client_of({"client": ("203.0.113.9", 5000), "state": {"client": "key:line-3"}})
+    'key:line-3'
+    """
+    named = (scope.get("state") or {}).get("client")
+    if named:
+        return str(named)
+    peer = scope.get("client")
+    return str(peer[0]) if peer else "unknown"
+
+
+def key_of(scope: Scope) -> ApiKey | None:
+    """The API key the request was let in with (None where the API is open)."""
+    key = (scope.get("state") or {}).get("api_key")
+    return key if isinstance(key, ApiKey) else None
+
+
+_BEARER = re.compile(rb"[Bb][Ee][Aa][Rr][Ee][Rr] +(\S+) *")
+
+
+class ApiKeys:
+    """Every request under ``prefix`` must carry one of ``keys``, else 401 (JSON, with
+    ``WWW-Authenticate: Bearer``); other paths (the form, the manual, ``/healthz``,
+    ``/openapi.json``) stay open.
+
+    The key comes as ``Authorization: Bearer <key>`` or ``X-API-Key: <key>``. The SHA-256
+    of what was sent is compared with every key's (:func:`hmac.compare_digest`, all of
+    them, no early exit), so neither the time taken nor its length says which part of a
+    secret was right. The key's name goes to ``scope["state"]`` (:func:`client_of`).
+    """
+
+    def __init__(self, app: ASGIApp, keys: tuple[ApiKey, ...], prefix: str = "/api/v1") -> None:
+        self.app = app
+        self.keys = keys
+        self.prefix = prefix
+
+    def _guarded(self, path: str) -> bool:
+        return path == self.prefix or path.startswith(self.prefix + "/")
+
+    def _key(self, scope: Scope) -> tuple[ApiKey | None, bool]:
+        """The key matched, and whether one was sent at all."""
+        sent = _header(scope, b"x-api-key")
+        if sent is None:
+            auth = _header(scope, b"authorization")
+            match = _BEARER.fullmatch(auth) if auth is not None else None
+            sent = match.group(1) if match else None
+        if not sent:
+            return None, False
+        digest = hashlib.sha256(sent).digest()
+        found = None
+        for key in self.keys:  # every key compared, whichever matches
+            if hmac.compare_digest(digest, key.digest):
+                found = key
+        return found, True
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http" or not self._guarded(scope["path"]):
+            await self.app(scope, receive, send)
+            return
+        key, sent = self._key(scope)
+        if key is None:
+            msg = (
+                "the API key sent is not known here"
+                if sent
+                else "this server needs an API key: send the header 'Authorization: Bearer "
+                "<key>' or 'X-API-Key: <key>'"
+            )
+            challenge = b'Bearer realm="api", error="invalid_token"' if sent else b"Bearer"
+            await _refuse(send, 401, "unauthorized", msg, [(b"www-authenticate", challenge)])
+            return
+        state = scope.setdefault("state", {})
+        state["client"] = f"key:{key.name}"
+        state["api_key"] = key
+        await self.app(scope, receive, send)
+
+
+#: The OpenAPI security schemes of :class:`ApiKeys`: either header carries the key.
+SECURITY_SCHEMES: dict[str, dict[str, str]] = {
+    "bearer": {
+        "type": "http",
+        "scheme": "bearer",
+        "description": "Authorization: Bearer <key>, where the server has API keys "
+        "(API_KEYS_FILE); an open server ignores it",
+    },
+    "apiKey": {
+        "type": "apiKey",
+        "in": "header",
+        "name": "X-API-Key",
+        "description": "the key in X-API-Key instead of Authorization",
+    },
+}
+
+
+def document_keys(schema: dict[str, Any], required: bool, prefix: str = "/api/v1") -> None:
+    """Add the key's security schemes to an OpenAPI ``schema``; where ``required``, every
+    operation under ``prefix`` asks for one of them and lists its 401."""
+    schema.setdefault("components", {})["securitySchemes"] = SECURITY_SCHEMES
+    if not required:
+        return
+    unauthorized = {
+        "description": "no API key, or one this server does not know",
+        "content": {"application/json": {"schema": {"$ref": "#/components/schemas/ErrorResponse"}}},
+    }
+    for path, operations in schema.get("paths", {}).items():
+        if path == prefix or path.startswith(prefix + "/"):
+            for operation in operations.values():
+                operation["security"] = [{name: []} for name in SECURITY_SCHEMES]
+                operation.setdefault("responses", {})["401"] = unauthorized

@@ -11,7 +11,8 @@ calculations, and their heavy compute runs in Dask's worker processes, not in
 the service's interpreter.
 
 Budgets: ``STUDY_MAX_POINTS`` points and ``STUDY_BUDGET_S`` seconds per study;
-at most ``STUDY_PER_CLIENT`` unfinished studies per client address and
+at most ``STUDY_PER_CLIENT`` unfinished studies per client (its address, or its API key,
+whose own quotas then hold) and
 ``STUDY_MAX_ACTIVE`` in all, and the disk the kept points may take (503 with
 Retry-After beyond that), checked before a single point is drawn. Jobs live in the
 :class:`~service.jobstore.JobStore` (``STUDY_STORE``), which every server process shares
@@ -24,6 +25,7 @@ or negative count or time) stops the service at start-up, naming the variable.
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import io
 import json
@@ -40,19 +42,20 @@ from collections.abc import Iterator, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Literal
+from typing import Annotated, Any, Literal
 
 import numpy as np
 from fastapi import APIRouter, HTTPException, Request, Response
 from fastapi.concurrency import run_in_threadpool
 from fastapi.responses import FileResponse, JSONResponse, StreamingResponse
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, WithJsonSchema, create_model
 
 import engine
 from engine import ModelSpec
 from engine.studies.execute import Cancelled, DaskExecutor, InProcess, StudyRun, run_study
 from engine.studies.plan import (
     DISTRIBUTIONS,
+    MAX_POINT_COLUMNS,
     METHODS,
     Plan,
     Study,
@@ -64,8 +67,9 @@ from engine.studies.plan import (
 
 from . import schemas
 from .api import _ERRORS, API_PREFIX
-from .config import _float, _int, dask_tls, usable_cpus, usable_memory
+from .config import ApiKey, _float, _int, dask_tls, usable_cpus, usable_memory
 from .jobstore import ACTIVE, BEAT_S, Full, open_store
+from .middleware import client_of, key_of
 from .units import quantity
 
 _KEEP_JOBS = 64
@@ -154,13 +158,45 @@ class CorrelationIn(BaseModel):
     )
 
 
+#: Designs an explicit-point study may list (JSON rows or CSV lines); the body's size
+#: (MAX_BODY_BYTES) bounds them too.
+MAX_POINT_ROWS = 100_000
+
+
+#: A study's fixed inputs as read (each model's route publishes them typed:
+#: :func:`study_request`).
+StudyBase = dict[str, float | int | bool | str | list[float]]
+
+
 class StudyIn(BaseModel):
     model_config = ConfigDict(extra="forbid")
-    base: dict[str, float | int | bool | str | list[float]] = Field(
+    base: StudyBase = Field(
         default_factory=dict, description="inputs held fixed (defaults fill the rest)"
     )
-    variables: list[VariableIn] = Field(min_length=1, max_length=12)
-    method: Literal["grid", "monte_carlo", "lhs", "sobol"] = "monte_carlo"
+    variables: list[VariableIn] = Field(
+        default_factory=list,
+        max_length=12,
+        description="the inputs to vary and how (every method but 'points')",
+    )
+    method: Literal["grid", "monte_carlo", "lhs", "sobol", "points"] = Field(
+        default="monte_carlo",
+        description="how the designs are made; 'points': the designs listed in `points` or "
+        "`points_csv` (set by giving either)",
+    )
+    points: list[dict[str, float | str]] | None = Field(
+        default=None,
+        min_length=1,
+        max_length=MAX_POINT_ROWS,
+        description="explicit designs, one object per design: the same numeric inputs in "
+        "each, numbers in SI or strings with a unit as in a single run ('45 mm'); the other "
+        "inputs from `base`",
+    )
+    points_csv: str | None = Field(
+        default=None,
+        description="explicit designs as CSV text: a header of input names, each with an "
+        "optional unit in brackets ('clamp_length [mm]'), then one design a line; a cell is "
+        "a number (in the column's unit, SI without one) or a number with its own unit",
+    )
     samples: int = Field(default=1000, ge=2, le=2_000_000)
     seed: int = Field(default=0, ge=0, lt=2**63)
     fidelity: str | None = Field(default=None, max_length=40)
@@ -382,20 +418,32 @@ class Studies:
     def _prune(self) -> None:
         self.store.prune(self.settings.keep_s, _KEEP_JOBS)
 
-    def submit(self, spec: ModelSpec, study: Study, client: str, keep_points: bool) -> Job:
+    def submit(
+        self,
+        spec: ModelSpec,
+        study: Study,
+        client: str,
+        keep_points: bool,
+        key: ApiKey | None = None,
+    ) -> Job:
         """Check the study, then the limits and quotas, and only then draw its points.
 
         Every refusal that needs no drawing (a 422: a bad law, an unknown fidelity, too
         many points) and the quotas (503: per client, in all, disk) come before
         :func:`engine.studies.plan.plan`, which takes seconds and gigabytes for a study of
         millions of points; a refusal that needs the drawn points (the base with the
-        first point) frees the job's place.
+        first point) frees the job's place. A client with an API ``key`` has the key's
+        quotas where it names them (studies at once, points per study), the server's
+        otherwise.
         """
         n_points = study_size(spec, study)
-        if n_points > self.settings.max_points:
+        max_points, limit = self.settings.max_points, "this server's limit"
+        if key is not None and key.points is not None:
+            max_points, limit = key.points, f"the limit of the API key {key.name!r}"
+        if n_points > max_points:
             raise engine.InputOutOfRange(
-                f"the study has {n_points} points, over this server's limit of "
-                f"{self.settings.max_points} (STUDY_MAX_POINTS)",
+                f"the study has {n_points} points, over {limit} of {max_points}"
+                + (" (STUDY_MAX_POINTS)" if max_points == self.settings.max_points else ""),
                 field="samples",
             )
         if keep_points and n_points > self.settings.keep_points_max:
@@ -405,13 +453,16 @@ class Studies:
             )
         job = Job(uuid.uuid4().hex, spec.name, client, n_points, keep_points)
         if keep_points:  # the file's float64 columns: the varied inputs, then the outputs
-            columns = len(study.variables) + len(study.outputs or spec.outputs)
+            varied = len(study.points) if study.points is not None else len(study.variables)
+            columns = varied + len(study.outputs or spec.outputs)
             job.disk_bytes = 8 * n_points * columns
         self._prune()
         try:
             self.store.admit(
                 job.row(self.owner),
-                per_client=self.settings.per_client,
+                per_client=self.settings.per_client
+                if key is None or key.studies is None
+                else key.studies,
                 max_active=self.settings.max_active,
             )
         except Full as exc:
@@ -496,24 +547,25 @@ class Studies:
             job.error = {"type": "study_failed", "msg": _public(f"{type(exc).__name__}: {exc}")}
             self._finish(job, error=job.error, disk_bytes=0)
 
-    def record(self, job_id: str) -> dict[str, Any]:
-        """The stored job, or 404."""
+    def record(self, job_id: str, client: str | None = None) -> dict[str, Any]:
+        """The stored job, or 404; with a ``client`` (a key's identity, where the server has
+        API keys) only a job of that client: another key's job is not there for it."""
         job = self.store.get(job_id)
-        if job is None:
+        if job is None or (client is not None and job["client"] != client):
             raise HTTPException(status_code=404, detail=f"no job {job_id[:40]!r}")
         return job
 
-    def get(self, job_id: str) -> dict[str, Any]:
+    def get(self, job_id: str, client: str | None = None) -> dict[str, Any]:
         """The job's answer (state, progress, result, links), from any process's store."""
-        return describe(self.record(job_id))
+        return describe(self.record(job_id, client))
 
-    def cancel(self, job_id: str) -> dict[str, Any]:
+    def cancel(self, job_id: str, client: str | None = None) -> dict[str, Any]:
         """Cancel an unfinished job; remove a finished one with its summary and points.
 
         The answer is the job as it stood; a removed job answers 404 from then on. A job
         another process runs is stopped by that process at its next beat.
         """
-        job = self.record(job_id)
+        job = self.record(job_id, client)
         if job["state"] not in ACTIVE:
             self.store.remove(job_id)
             body = describe(job)
@@ -557,6 +609,182 @@ def _si(spec: ModelSpec, name: str, value: Number | None, part: str) -> float | 
     return quantity(param, value, part, field="variables", spread=part == "sd")
 
 
+_HEADER = re.compile(r"\s*([A-Za-z_][A-Za-z0-9_]*)\s*(?:\[([^\]]+)\])?\s*")
+
+
+def _point_param(spec: ModelSpec, name: str, where: str, field: str) -> Any:
+    """The numeric input ``name`` a design gives, or a refusal naming ``where``."""
+    try:
+        param = spec.param(name)
+    except KeyError:
+        raise engine.InputOutOfRange(
+            f"{where}: {name[:80]!r} is not an input of {spec.name}", field=field
+        ) from None
+    if not param.is_numeric:
+        raise engine.InputOutOfRange(
+            f"{where}: {name} is not a numeric input of {spec.name}; give it in base",
+            field=field,
+        )
+    return param
+
+
+def _csv_rows(text: str) -> Iterator[tuple[str, dict[str, float | str]]]:
+    """The designs of ``points_csv``, each with its place (``points_csv line N``): a cell
+    that is a plain number takes its column's unit from the header, where there is one.
+    Text that is not CSV (a NUL byte, an unclosed quote over a huge field) is refused."""
+    try:
+        yield from _csv_read(text)
+    except csv.Error as exc:
+        raise engine.InputOutOfRange(
+            f"points_csv: not readable as CSV ({str(exc)[:120]})", field="points_csv"
+        ) from None
+
+
+def _csv_read(text: str) -> Iterator[tuple[str, dict[str, float | str]]]:
+    if text.count("\n") > MAX_POINT_ROWS + 1:
+        raise engine.InputOutOfRange(
+            f"points_csv: at most {MAX_POINT_ROWS} designs", field="points_csv"
+        )
+    reader = csv.reader(io.StringIO(text.removeprefix("\ufeff")))
+    header = next((cells for cells in reader if cells), None)  # blank lines skipped
+    columns: list[tuple[str, str | None]] = []
+    for cell in header or []:
+        match = _HEADER.fullmatch(cell)
+        if match is None:
+            raise engine.InputOutOfRange(
+                f"points_csv line 1: {cell[:80]!r} is not an input name with an optional [unit]",
+                field="points_csv",
+            )
+        columns.append((match.group(1), match.group(2)))
+    if not columns:
+        raise engine.InputOutOfRange(
+            "points_csv: a header of input names, then one design a line", field="points_csv"
+        )
+    if len(columns) > MAX_POINT_COLUMNS:
+        raise engine.InputOutOfRange(
+            f"points_csv line 1: at most {MAX_POINT_COLUMNS} inputs", field="points_csv"
+        )
+    for cells in reader:
+        if not cells:  # a blank line
+            continue
+        where = f"points_csv line {reader.line_num}"
+        if len(cells) != len(columns):
+            raise engine.InputOutOfRange(
+                f"{where}: {len(cells)} values for the header's {len(columns)} inputs",
+                field="points_csv",
+            )
+        row: dict[str, float | str] = {}
+        for (name, unit), cell in zip(columns, cells, strict=True):
+            cell = cell.strip()
+            try:
+                number = float(cell)
+            except ValueError:
+                row[name] = cell  # a number with its own unit, read below
+            else:
+                row[name] = f"{cell} {unit}" if unit else number
+        yield where, row
+
+
+def _on_csv_line(exc: engine.InputOutOfRange, text: str | None) -> engine.InputOutOfRange:
+    """The engine's refusal of a design (its index in ``context["row"]``) as the line of
+    ``points_csv`` it came from, where the designs came as CSV; else as it is."""
+    row = exc.context.get("row")
+    if text is None or exc.field != "points" or not isinstance(row, int):
+        return exc
+    reader = csv.reader(io.StringIO(text.removeprefix("\ufeff")))
+    seen = -2  # the header, then the designs from 0, blank lines skipped as _csv_rows skips
+    with contextlib.suppress(csv.Error):  # read whole once already: it is CSV
+        for cells in reader:
+            seen += bool(cells)
+            if seen == row:
+                break
+    where = f"points_csv line {reader.line_num}"
+    msg = re.sub(r"^points: design \d+ \(points\[\d+\]\)", where, exc.message)
+    return engine.InputOutOfRange(msg, field="points_csv", **exc.context)
+
+
+def designs(spec: ModelSpec, body: StudyIn) -> dict[str, np.ndarray] | None:
+    """The explicit designs of ``points`` or ``points_csv`` as SI columns (None without).
+
+    Every design gives the same numeric inputs; a value is a number in SI or a string with
+    a unit (one reader with a single run's: :func:`units.quantity`). The limits (designs,
+    inputs) are checked before a value is read, and a refusal names the design (``points[3]``
+    or ``points_csv line 5``) and the input. Ranges are the engine's to check
+    (:func:`engine.studies.plan.study_size`).
+    """
+    if body.points is None and body.points_csv is None:
+        if body.method == "points":
+            raise engine.InputOutOfRange(
+                "points: method 'points' needs the designs, in points or points_csv",
+                field="points",
+            )
+        return None
+    if "method" in body.model_fields_set and body.method != "points":
+        raise engine.InputOutOfRange(
+            f"method: designs listed in points or points_csv are method 'points', not "
+            f"{body.method!r}",
+            field="method",
+        )
+    if body.points is not None and body.points_csv is not None:
+        raise engine.InputOutOfRange(
+            "points: give the designs once, in points or in points_csv", field="points"
+        )
+    field = "points" if body.points is not None else "points_csv"
+    rows: Iterator[tuple[str, dict[str, float | str]]] = (
+        ((f"points[{i}]", row) for i, row in enumerate(body.points))
+        if body.points is not None
+        else _csv_rows(body.points_csv or "")
+    )
+    names: list[str] = []
+    params: dict[str, Any] = {}
+    values: dict[str, list[float]] = {}
+    for where, row in rows:
+        if not names:
+            names = list(row)
+            if not names or len(names) > MAX_POINT_COLUMNS:
+                raise engine.InputOutOfRange(
+                    f"{where}: a design gives 1 to {MAX_POINT_COLUMNS} inputs", field=field
+                )
+            head = "points_csv line 1" if field == "points_csv" else where
+            params = {n: _point_param(spec, n, head, field) for n in names}
+            values = {n: [] for n in names}
+        if row.keys() != params.keys():
+            odd = sorted(set(row) ^ set(params))[0]
+            said = "is missing" if odd in params else "is not in the first design"
+            raise engine.InputOutOfRange(
+                f"{where}: {odd[:80]} {said} (every design gives the same inputs)", field=field
+            )
+        for name, value in row.items():
+            values[name].append(quantity(params[name], value, where, field=field))
+    if not names:
+        raise engine.InputOutOfRange(f"{field}: no design given", field=field)
+    return {name: np.asarray(column, dtype=float) for name, column in values.items()}
+
+
+def study_request(spec: ModelSpec) -> type[StudyIn]:
+    """The body of ``POST <path>/study`` for ``spec``: :class:`StudyIn`, its ``base``
+    published as the model's own inputs, each optional (the schema of
+    :func:`schemas.inputs_model`, the sweep's base), so the OpenAPI document, and a client
+    generated from it, name every input with its unit and range.
+
+    The base is read as before, as a study law's numbers are (:func:`units.quantity`, the
+    engine's ranges, a refusal naming the input), and takes what the published schema
+    takes (tests/service/test_study_typed_base.py).
+    """
+    typed = schemas.inputs_model(spec, all_optional=True)
+    published = typed.model_json_schema()
+    published["title"] = schemas._class_name(spec, "StudyBase")
+    model: type[StudyIn] = create_model(
+        schemas._class_name(spec, "StudyRequest"),
+        __base__=StudyIn,
+        base=(
+            Annotated[StudyBase, WithJsonSchema(published)],
+            Field(default_factory=dict, description="inputs held fixed (defaults fill the rest)"),
+        ),
+    )
+    return model
+
+
 def to_study(spec: ModelSpec, body: StudyIn) -> Study:
     """The engine's :class:`Study` from a request body (unit strings → SI)."""
     base: dict[str, Any] = {}
@@ -584,10 +812,12 @@ def to_study(spec: ModelSpec, body: StudyIn) -> Study:
         )
         for v in body.variables
     )
+    points = designs(spec, body)
     return Study(
         variables=variables,
         base=base,
-        method=body.method,
+        method="points" if points is not None else body.method,
+        points=points,
         samples=body.samples,
         seed=body.seed,
         fidelity=body.fidelity,
@@ -599,22 +829,35 @@ def to_study(spec: ModelSpec, body: StudyIn) -> Study:
     )
 
 
+def _keyed(request: Request) -> str | None:
+    """The client whose jobs alone a request may see: its key's identity where the server
+    has API keys; None (every job) where the API is open."""
+    return client_of(request.scope) if key_of(request.scope) is not None else None
+
+
 def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
     """``POST <path>/study`` per model, and ``/jobs/{id}`` to poll, fetch and cancel."""
     router = APIRouter(prefix=API_PREFIX, tags=["studies"])
 
     def add(spec: ModelSpec) -> None:
         async def submit(body: StudyIn, request: Request) -> JSONResponse:
-            study = to_study(spec, body)
-            client = request.client.host if request.client else "unknown"
+            # explicit designs may be many cells with units to read: off the event loop
+            study = await run_in_threadpool(to_study, spec, body)
+            client, key = client_of(request.scope), key_of(request.scope)
             # drawing up to STUDY_MAX_POINTS points takes a while: off the event loop
-            job = await run_in_threadpool(studies.submit, spec, study, client, body.keep_points)
+            try:
+                job = await run_in_threadpool(
+                    studies.submit, spec, study, client, body.keep_points, key
+                )
+            except engine.InputOutOfRange as exc:
+                raise _on_csv_line(exc, body.points_csv) from None
             return JSONResponse(
-                await run_in_threadpool(studies.get, job.id),
+                await run_in_threadpool(studies.get, job.id, None),
                 status_code=202,
                 headers={"location": f"{API_PREFIX}/jobs/{job.id}"},
             )
 
+        submit.__annotations__["body"] = study_request(spec)  # the model's typed base
         router.add_api_route(
             spec.path + "/study",
             submit,
@@ -623,7 +866,8 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
             summary=f"{spec.title}: a design study (grid, Monte Carlo, LHS, Sobol')",
             description=(
                 "Vary up to 12 inputs (a grid: up to 3) by distribution "
-                f"({', '.join(DISTRIBUTIONS)}) with method one of {', '.join(METHODS)}; "
+                f"({', '.join(DISTRIBUTIONS)}) with method one of {', '.join(METHODS)}, "
+                "or list the designs themselves (`points`: JSON rows, or `points_csv`); "
                 "returns 202 with a job to poll at GET /api/v1/jobs/{id}."
             ),
             operation_id=spec.name.replace(".", "_") + "_study",
@@ -661,8 +905,8 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
         summary="A study's state, progress and, when done, result",
         responses=_404,
     )
-    def get_job(job_id: str) -> dict[str, Any]:
-        return studies.get(job_id)
+    def get_job(job_id: str, request: Request) -> dict[str, Any]:
+        return studies.get(job_id, _keyed(request))
 
     @router.delete(
         "/jobs/{job_id}",
@@ -670,11 +914,11 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
         summary="Cancel a study and free its workers, or remove a finished one and its data",
         responses=_404,
     )
-    def cancel_job(job_id: str) -> dict[str, Any]:
-        return studies.cancel(job_id)
+    def cancel_job(job_id: str, request: Request) -> dict[str, Any]:
+        return studies.cancel(job_id, _keyed(request))
 
-    def stored_points(job_id: str) -> Path:
-        job = studies.record(job_id)
+    def stored_points(job_id: str, request: Request) -> Path:
+        job = studies.record(job_id, _keyed(request))
         path = studies.store.points_path(job_id)
         if not job["points"] or not path.is_file():
             raise HTTPException(
@@ -691,8 +935,8 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
         response_class=Response,
         responses={**_404, 200: {"content": {"text/csv": {}}, "description": "the points"}},
     )
-    def points(job_id: str) -> StreamingResponse:
-        path = stored_points(job_id)
+    def points(job_id: str, request: Request) -> StreamingResponse:
+        path = stored_points(job_id, request)
         return StreamingResponse(
             csv_blocks(path),  # a plain iterator: Starlette reads it on a worker thread
             media_type="text/csv",
@@ -714,9 +958,9 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
             200: {"content": {PARQUET: {}}, "description": "the points"},
         },
     )
-    def points_parquet(job_id: str) -> FileResponse:
+    def points_parquet(job_id: str, request: Request) -> FileResponse:
         return FileResponse(
-            stored_points(job_id),
+            stored_points(job_id, request),
             media_type=PARQUET,
             headers={"content-disposition": f'attachment; filename="study-{job_id}.parquet"'},
         )

@@ -76,7 +76,7 @@ function carriedText(value) {
 function lawCell(p, value) {
   const cell = el("div", { class: "law" });
   const law = el("select", { "aria-label": `${label(p)}: law`, "data-part": "distribution" });
-  for (const d of ["uniform", "normal", "triangular"]) law.append(el("option", { value: d, text: d }));
+  for (const d of ["uniform", "normal", "lognormal", "triangular"]) law.append(el("option", { value: d, text: d }));
   const num = typeof value === "number" ? value : Number(p.default) || 1;
   const spread = Math.abs(num) * 0.1 || 0.1;
   const lo = p.minimum !== null ? Math.max(p.minimum, num - spread) : num - spread;
@@ -104,7 +104,7 @@ function lawCell(p, value) {
             ? false
             : d === "uniform"
               ? ["low", "high"].includes(part)
-              : d === "normal"
+              : d === "normal" || d === "lognormal"
                 ? ["mean", "sd"].includes(part)
                 : ["low", "high", "mode"].includes(part);
       input.hidden = !show;
@@ -159,6 +159,7 @@ function pickModel(name, carried = null) {
     vary.addEventListener("change", () => {
       valueCell.replaceChildren(vary.checked ? law : control, read);
       echo(tr);
+      refreshPairs();
     });
     const tr = el(
       "tr",
@@ -181,6 +182,81 @@ function pickModel(name, carried = null) {
   const feas = $("#study-feasible");
   feas.replaceChildren(el("option", { value: "", text: "every reported requirement passes" }));
   for (const o of model.outputs.filter((o) => o.kind === "bool" && !o.series)) feas.append(el("option", { value: o.name, text: label(o) }));
+  $("#study-pairs").replaceChildren();
+  refreshPairs();
+}
+
+/**
+ * The rank correlations between varied inputs (Monte Carlo and Latin hypercube only: the
+ * API joins them by a Gaussian copula). Built here, after the inputs' fieldset: each pair
+ * is two selects of the varied inputs and Spearman's ρ_S, −0.99…0.99.
+ */
+function correlationBox() {
+  // a fieldset is laid out as a grid by the stylesheet, which `hidden` would not undo: the
+  // box around it is what hides
+  const box = el(
+    "div",
+    { id: "study-correlations" },
+    el(
+      "fieldset",
+      { class: "study-settings" },
+      el("legend", { text: "Correlated inputs (Monte Carlo, Latin hypercube)" }),
+      el("ul", { id: "study-pairs", class: "pairs" }),
+      el("div", {}, el("button", { type: "button", id: "study-add-pair", text: "add a correlation" })),
+      el("p", { class: "hint", text: "Spearman rank correlation ρ_S of two varied inputs, −0.99…0.99: the inputs are drawn through a Gaussian copula, each keeping its own law." }),
+    ),
+  );
+  $("#study-inputs").after(box);
+  $("#study-add-pair").addEventListener("click", addPair);
+  $("#study-method").addEventListener("change", refreshPairs);
+}
+
+function varied() {
+  return [...$("#study-rows").children].filter((tr) => tr.vary.checked).map((tr) => tr.dataset.name);
+}
+
+function addPair() {
+  const names = varied();
+  const pick = (which, i) => {
+    const sel = el("select", { "data-part": which, "aria-label": `correlation: ${which === "a" ? "first" : "second"} input` });
+    sel.dataset.want = names[i] ?? "";
+    return sel;
+  };
+  const rho = el("input", { "data-part": "rank_correlation", value: localNumber("0.5"), inputmode: "decimal", "aria-label": "correlation: ρ_S", title: "Spearman's ρ_S, −0.99…0.99" });
+  const remove = el("button", { type: "button", text: "remove", "aria-label": "remove this correlation" });
+  const li = el("li", {}, pick("a", 0), el("span", { text: " and " }), pick("b", 1), el("span", { text: " ρ_S " }), rho, remove);
+  remove.addEventListener("click", () => { li.remove(); refreshPairs(); });
+  $("#study-pairs").append(li);
+  refreshPairs();
+}
+
+/** Each pair's selects offer the inputs varied now (a choice that stays varied is kept); the box shows for the methods that take correlations. */
+function refreshPairs() {
+  const box = $("#study-correlations");
+  if (!box) return;
+  const names = varied();
+  for (const sel of box.querySelectorAll("select")) {
+    const keep = sel.value || sel.dataset.want;
+    sel.replaceChildren(...names.map((n) => el("option", { value: n, text: label(model.inputs.find((p) => p.name === n)) })));
+    if (names.includes(keep)) sel.value = keep;
+    delete sel.dataset.want;
+  }
+  box.hidden = !["monte_carlo", "lhs"].includes($("#study-method").value);
+  $("#study-add-pair").disabled = names.length < 2;
+}
+
+/** The correlations to send: each complete pair (a, b, ρ_S read under the decimal setting). */
+function correlations(errors) {
+  const box = $("#study-correlations");
+  if (!box || box.hidden) return [];
+  return [...box.querySelectorAll("#study-pairs li")].map((li) => {
+    const [a, b] = [...li.querySelectorAll("select")].map((s) => s.value);
+    const rho = number(li.querySelector("input").value, "correlation ρ_S", errors);
+    return { a, b, rank_correlation: typeof rho === "number" ? rho : NaN };
+  }).filter((c) => {
+    if (Number.isNaN(c.rank_correlation)) errors.push(`correlation of ${c.a} and ${c.b}: ρ_S must be a number −0.99…0.99`);
+    return c.a && c.b && !Number.isNaN(c.rank_correlation);
+  });
 }
 
 /**
@@ -296,6 +372,8 @@ function body(errors = []) {
   if ($("#study-fidelity").value) out.fidelity = $("#study-fidelity").value;
   if ($("#study-tolerance").value.trim()) out.tolerance = Number(number($("#study-tolerance").value, "tolerance", errors));
   if ($("#study-feasible").value) out.feasible_when = $("#study-feasible").value;
+  const pairs = correlations(errors);
+  if (pairs.length) out.correlations = pairs;
   return out;
 }
 
@@ -655,4 +733,5 @@ $("#study-rows").addEventListener("input", (e) => { const tr = e.target.closest(
   });
 }
 $("#study-cancel").addEventListener("click", cancel);
+correlationBox();
 loadCatalogue();

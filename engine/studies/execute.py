@@ -19,7 +19,13 @@ connect, submit work or run code in the service's workers. An existing scheduler
 reached with the certificate files it is given (:class:`TLSFiles`), over TLS.
 
 Progress is reported after every chunk; a cancel event stops the study
-between chunks. On Dask, pending chunks are cancelled at once, and a running chunk
+between chunks. On Dask a study has a few chunks in flight at once (``IN_FLIGHT_PER_THREAD``
+per worker thread) and submits the next as one finishes, and its first chunks have a
+higher priority than the spare ones of a study already running, so studies side by side
+take turns: a small study submitted behind a large one starts as soon as a worker frees,
+where it waited for the whole large study. A chunk's time budget follows the cost
+of the chunks measured before it (:class:`ChunkBudget`), not a fixed 60 s. Pending chunks
+are cancelled at once, and a running chunk
 stops at its next point (or inside a point's simulation) once it reads the study's
 ``distributed.Event``, which it asks at most every ``CANCEL_POLL_S``: the workers are
 idle within that and one point's time, where they ran a 256-point chunk to its end.
@@ -55,6 +61,13 @@ VECTOR_CHUNK = 65_536
 LOOP_CHUNK = 256
 #: How often a chunk on a Dask worker asks whether its study was cancelled [s].
 CANCEL_POLL_S = 0.1
+#: Chunks of one study on Dask at once, per worker thread: enough to keep every worker
+#: busy, few enough that another study's chunks wait at most about two chunks' time.
+IN_FLIGHT_PER_THREAD = 2
+#: The least time budget of a chunk [s], and how many times the slowest measured cost per
+#: point a chunk may take (:class:`ChunkBudget`).
+CHUNK_FLOOR_S = 60.0
+CHUNK_MARGIN = 10.0
 
 Progress = Callable[[int, int], None]
 
@@ -95,24 +108,81 @@ ChunkArgs = tuple[
 ]
 
 
+#: A chunk's time budget [s] from its number of points (:class:`ChunkBudget`).
+Budget = Callable[[int], float]
+
+
 class Executor(Protocol):
-    """Runs chunk evaluations; yields ``(index, ChunkResult)`` as they finish."""
+    """Runs chunk evaluations; yields ``(index, ChunkResult)`` as they finish. With a
+    ``budget``, a chunk's time budget is ``budget(points)`` asked when it starts (the
+    ``deadline_s`` in its arguments otherwise)."""
 
     def map(
-        self, calls: list[ChunkArgs], cancel: threading.Event
+        self, calls: list[ChunkArgs], cancel: threading.Event, budget: Budget | None = None
     ) -> Iterator[tuple[int, ChunkResult]]: ...
+
+
+class ChunkBudget:
+    r"""A chunk's time budget from the measured cost of the study's chunks before it.
+
+    .. math::
+        t_{chunk} = \min\left(\max\left(t_{floor},\; m\, n \max_j \frac{t_j}{n_j}\right),
+        \; t_{left}\right)
+
+    with :math:`n` the chunk's points, :math:`t_j / n_j` the cost per point of each chunk
+    measured so far (on its worker, queueing excluded), :math:`m` = ``margin``, and
+    :math:`t_{left}` what is left of the study's budget (at least 1 s). Before any chunk
+    is measured a chunk has the larger of the floor and :math:`t_{left}`. A study slowed
+    down by load (a shared machine, a busy cluster) keeps going, where a fixed 60 s let a
+    256-point chunk fail the whole study; a chunk stuck far past what its neighbours took
+    still stops.
+
+    >>> b = ChunkBudget(floor_s=60.0, margin=10.0)
+    >>> b(256)  # nothing measured, no study budget: the floor
+    60.0
+    >>> b.observe(256, 30.0)  # a chunk took 30 s: the next may take 10 x 30 s
+    >>> b(256)
+    300.0
+    >>> b.observe(128, 1.0)  # a faster one does not lower it: the slowest per point holds
+    >>> b(256)
+    300.0
+    >>> ChunkBudget(60.0, 10.0, deadline=time.perf_counter() + 100.0)(256) <= 100.0
+    True
+    """
+
+    def __init__(self, floor_s: float, margin: float, deadline: float | None = None) -> None:
+        self.floor_s = floor_s
+        self.margin = margin
+        #: The study's deadline on :func:`time.perf_counter`'s clock (None: no budget).
+        self.deadline = deadline
+        #: The slowest cost per point measured so far [s].
+        self.per_point_s: float | None = None
+
+    def observe(self, points: int, elapsed_s: float) -> None:
+        """A chunk of ``points`` points took ``elapsed_s`` seconds."""
+        if points > 0 and elapsed_s >= 0.0:
+            cost = elapsed_s / points
+            self.per_point_s = max(cost, self.per_point_s or 0.0)
+
+    def __call__(self, points: int) -> float:
+        left = None if self.deadline is None else max(self.deadline - time.perf_counter(), 1.0)
+        if self.per_point_s is None:
+            return self.floor_s if left is None else max(self.floor_s, left)
+        scaled = max(self.floor_s, self.margin * points * self.per_point_s)
+        return scaled if left is None else min(scaled, left)
 
 
 class InProcess:
     """Evaluate chunks one after another in the calling thread."""
 
     def map(
-        self, calls: list[ChunkArgs], cancel: threading.Event
+        self, calls: list[ChunkArgs], cancel: threading.Event, budget: Budget | None = None
     ) -> Iterator[tuple[int, ChunkResult]]:
         for i, args in enumerate(calls):
             if cancel.is_set():
                 return
-            yield i, summarize_chunk(evaluate_chunk(*args, cancel=cancel))
+            deadline = args[6] if budget is None else budget(len(next(iter(args[2].values()))))
+            yield i, summarize_chunk(evaluate_chunk(*args[:6], deadline, cancel=cancel))
 
 
 class RemoteCancel(threading.Event):
@@ -219,20 +289,50 @@ class DaskExecutor:
             return self._client
 
     def map(
-        self, calls: list[ChunkArgs], cancel: threading.Event
+        self, calls: list[ChunkArgs], cancel: threading.Event, budget: Budget | None = None
     ) -> Iterator[tuple[int, ChunkResult]]:
         from dask.distributed import Event, as_completed
 
         client = self.client()
         name = f"study-cancel-{uuid.uuid4().hex}"
         stop = Event(name, client=client)
-        # workers look the model up by name in their own registry (a spec's functions
-        # need not pickle)
-        futures = [
-            client.submit(evaluate_remote, name, _name(args[0]), *args[1:], pure=False)
-            for args in calls
-        ]
-        index = {f.key: i for i, f in enumerate(futures)}
+        # a window of chunks in flight, the next submitted as one finishes: what another
+        # study submits meanwhile queues before this one's next chunks (Dask runs equal
+        # priorities in the order submitted), so studies take turns; a chunk's priority
+        # falls with the study's chunks already in flight, so a new study's first chunks
+        # go before the spare ones of a study that is running
+        window = max(2, IN_FLIGHT_PER_THREAD * sum(client.nthreads().values()))
+        index: dict[str, int] = {}
+        flying: set[Any] = set()
+        lock = threading.Lock()
+
+        def submit(i: int) -> Any:
+            args = calls[i]
+            deadline = args[6] if budget is None else budget(len(next(iter(args[2].values()))))
+            # workers look the model up by name in their own registry (a spec's functions
+            # need not pickle)
+            with lock:
+                # a study's first chunks before any study's spare ones: a study just
+                # submitted starts as soon as a worker frees, not behind queued chunks
+                priority = -len(flying)
+            fut = client.submit(
+                evaluate_remote,
+                name,
+                _name(args[0]),
+                *args[1:6],
+                deadline,
+                pure=False,
+                priority=priority,
+            )
+            index[fut.key] = i
+            with lock:
+                flying.add(fut)
+            return fut
+
+        def in_flight() -> list[Any]:
+            with lock:
+                return [f for f in flying if not f.done()]
+
         finished = threading.Event()
 
         def watch() -> None:
@@ -241,18 +341,28 @@ class DaskExecutor:
             while not finished.wait(0.02):
                 if cancel.is_set():
                     stop.set()
-                    client.cancel([f for f in futures if not f.done()])
+                    client.cancel(in_flight())
                     return
 
+        first = [submit(i) for i in range(min(window, len(calls)))]
+        following = len(first)
         threading.Thread(target=watch, name="study-cancel", daemon=True).start()
+        done = as_completed(first, loop=client.loop, with_results=False)
         try:
-            for fut in as_completed(futures, loop=client.loop, with_results=False):
+            for fut in done:
                 if cancel.is_set():
                     break
-                yield index[fut.key], fut.result()
+                result = fut.result()
+                with lock:
+                    flying.discard(fut)
+                yield index[fut.key], result
+                # after the caller took the result: its cost is in the next chunk's budget
+                if following < len(calls) and not cancel.is_set():
+                    done.add(submit(following))
+                    following += 1
         finally:
             finished.set()
-            pending = [f for f in futures if not f.done()]
+            pending = in_flight()
             if pending:
                 stop.set()  # a budget or an error ended the study: its chunks stop too
                 client.cancel(pending)
@@ -285,14 +395,15 @@ def run_study(
     progress: Progress | None = None,
     cancel: threading.Event | None = None,
     budget_s: float | None = None,
-    chunk_budget_s: float | None = 60.0,
+    chunk_budget_s: float | None = CHUNK_FLOOR_S,
     planned: Plan | None = None,
 ) -> StudyRun:
     """Plan, evaluate and summarise ``study``; raise Cancelled or BudgetExceeded when stopped.
 
     ``planned`` is :func:`engine.studies.plan.plan` of the same study, where the caller has
     already drawn its points (the service does, to refuse a bad study at once): they are
-    not drawn again.
+    not drawn again. ``chunk_budget_s`` is a chunk's least time budget; it grows with the
+    cost of the chunks measured before it (:class:`ChunkBudget`); None: no chunk budget.
     """
     start = time.perf_counter()
     p = plan(spec, study) if planned is None else planned
@@ -316,8 +427,14 @@ def run_study(
     done = 0
     if progress:
         progress(0, p.n_points)
-    for i, part in (executor or InProcess()).map(calls, cancel):
+    budget = None
+    if chunk_budget_s is not None:
+        deadline = None if budget_s is None else start + budget_s
+        budget = ChunkBudget(chunk_budget_s, CHUNK_MARGIN, deadline)
+    for i, part in (executor or InProcess()).map(calls, cancel, budget):
         a, b = slices[i]
+        if budget is not None:
+            budget.observe(b - a, part.elapsed_s)
         merger.add(a, part)
         done += b - a
         if progress:

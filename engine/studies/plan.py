@@ -43,13 +43,15 @@ from ..core.runner import DEFAULT_TOLERANCE, choose_rung, run
 from ..core.spec import ModelSpec, Param, Scratch
 from ..numerics import laws
 
-METHODS = ("grid", "monte_carlo", "lhs", "sobol")
+METHODS = ("grid", "monte_carlo", "lhs", "sobol", "points")
 DISTRIBUTIONS = ("uniform", "normal", "triangular", "lognormal")
 #: Largest |rank correlation| a study may ask for between two inputs.
 MAX_CORRELATION = 0.99
 MAX_GRID_INPUTS = 3
 MAX_VARIABLES = 12
 MAX_STUDY_POINTS = 2_000_000
+#: Inputs an explicit-point study may give per design.
+MAX_POINT_COLUMNS = 64
 MAX_HISTOGRAM_BINS = 200
 QUANTILES = (0.001, 0.01, 0.05, 0.25, 0.5, 0.75, 0.95, 0.99, 0.999)
 #: Points the rank correlations of a larger study are computed on (its first ones).
@@ -102,6 +104,9 @@ class Study:
     #: Rank (Spearman) correlations between pairs of varied inputs, ``(a, b, rho_S)``:
     #: the inputs are joined by a Gaussian copula (Monte Carlo and LHS only).
     correlations: tuple[tuple[str, str, float], ...] = ()
+    #: ``method="points"``: the designs themselves, a column per numeric input (SI units,
+    #: one value per design) instead of ``variables``; the rest of the inputs from ``base``.
+    points: Mapping[str, np.ndarray] | None = None
 
 
 @dataclass
@@ -345,6 +350,13 @@ def _checked(
             f"method = {study.method!r} is not allowed: must be one of {', '.join(METHODS)}",
             field="method",
         )
+    if study.method == "points":
+        params, n = _explicit(spec, study)
+        return params, _collected(spec, study), n, None
+    if study.points is not None:
+        raise InputOutOfRange(
+            f"points: explicit designs need method 'points', not {study.method!r}", field="points"
+        )
     if not study.variables:
         raise InputOutOfRange("variables: vary at least one input", field="variables")
     if len(study.variables) > MAX_VARIABLES:
@@ -359,6 +371,32 @@ def _checked(
         raise InputOutOfRange(
             "base: an input that varies may not also be fixed in base", field="base"
         )
+    outputs = _collected(spec, study)
+    k = len(params)
+    if study.method == "grid":
+        if k > MAX_GRID_INPUTS:
+            raise InputOutOfRange(
+                f"variables: a grid varies at most {MAX_GRID_INPUTS} inputs", field="variables"
+            )
+        axes = {v.name: _grid_axis(p, v) for p, v in zip(params, study.variables, strict=True)}
+        n = math.prod(a.size for a in axes.values())
+        _check_size(n)
+        return params, outputs, n, axes
+    if study.samples < 2:
+        raise InputOutOfRange("samples must be ≥ 2", field="samples")
+    for p, v in zip(params, study.variables, strict=True):
+        _transform(p, v, np.full(1, 0.5))  # each law's refusals, on one number
+    _correlation_matrix(study)
+    n = study.samples
+    if study.method == "sobol":
+        n = 2 ** math.ceil(math.log2(study.samples)) * (k + 2)
+    _check_size(n)
+    return params, outputs, n, None
+
+
+def _collected(spec: ModelSpec, study: Study) -> tuple[str, ...]:
+    """The outputs to collect (with ``feasible_when``), after the cheap refusals of the
+    bins, the seed, the outputs and the fidelity."""
     if not 1 <= study.bins <= MAX_HISTOGRAM_BINS:
         raise InputOutOfRange(f"bins must be 1…{MAX_HISTOGRAM_BINS}", field="bins")
     if not 0 <= study.seed < 2**63:
@@ -389,26 +427,74 @@ def _checked(
             f"one of {', '.join(repr(r) for r in rungs)}",
             field="fidelity",
         )
-    k = len(params)
-    if study.method == "grid":
-        if k > MAX_GRID_INPUTS:
-            raise InputOutOfRange(
-                f"variables: a grid varies at most {MAX_GRID_INPUTS} inputs", field="variables"
-            )
-        axes = {v.name: _grid_axis(p, v) for p, v in zip(params, study.variables, strict=True)}
-        n = math.prod(a.size for a in axes.values())
-        _check_size(n)
-        return params, outputs, n, axes
-    if study.samples < 2:
-        raise InputOutOfRange("samples must be ≥ 2", field="samples")
-    for p, v in zip(params, study.variables, strict=True):
-        _transform(p, v, np.full(1, 0.5))  # each law's refusals, on one number
-    _correlation_matrix(study)
-    n = study.samples
-    if study.method == "sobol":
-        n = 2 ** math.ceil(math.log2(study.samples)) * (k + 2)
+    return outputs
+
+
+def _explicit(spec: ModelSpec, study: Study) -> tuple[list[Param], int]:
+    """An explicit-point study's columns checked before any work: numeric inputs not in
+    ``base``, at most ``MAX_POINT_COLUMNS`` of them, one length, and every value in its
+    input's range (an integer input's integral); a refusal names the design and the input.
+
+    >>> from engine.models import get_model
+    >>> clutch = get_model("clutch.ball")
+    >>> designs = {"flank_friction": np.array([0.05, 0.08, 1.5])}
+    >>> try:
+    ...     _explicit(clutch, Study(variables=(), method="points", points=designs))
+    ... except InputOutOfRange as exc:
+    ...     print(exc.field, "|", exc.message)  # doctest: +NORMALIZE_WHITESPACE
+    points | points: design 3 (points[2]), flank_friction = 1.5 is not allowed: must be
+    a finite number ≥ 0 and ≤ 1
+    """
+    columns = study.points or {}
+    if study.variables or study.correlations:
+        raise InputOutOfRange(
+            "points: explicit designs take neither variables nor correlations", field="points"
+        )
+    if not columns:
+        raise InputOutOfRange("points: give at least one design of one input", field="points")
+    if len(columns) > MAX_POINT_COLUMNS:
+        raise InputOutOfRange(
+            f"points: a design gives at most {MAX_POINT_COLUMNS} inputs, not {len(columns)}",
+            field="points",
+        )
+    lengths = {len(col) for col in columns.values()}
+    n = lengths.pop()
+    if lengths or n < 1:
+        raise InputOutOfRange("points: every input needs one value per design", field="points")
     _check_size(n)
-    return params, outputs, n, None
+    params: list[Param] = []
+    for name, col in columns.items():
+        try:
+            param: Param | None = spec.param(name)
+        except KeyError:
+            param = None
+        if param is None or not param.is_numeric:
+            what = "an input" if param is None else "a numeric input"
+            raise InputOutOfRange(
+                f"points: {str(name)[:80]!r} is not {what} of {spec.name}"
+                + ("" if param is None else "; give it in base"),
+                field="points",
+            )
+        if name in study.base:
+            raise InputOutOfRange(
+                f"points: {name} is given per design and in base: give it once", field="points"
+            )
+        values = np.asarray(col, dtype=float)
+        bad = ~in_range(param, values)
+        if param.kind == "int":
+            bad |= np.isfinite(values) & (values != np.round(values))
+        if bad.any():
+            j = int(np.flatnonzero(bad)[0])
+            unit = "" if param.unit == "1" else f" {param.unit}"
+            raise InputOutOfRange(
+                f"points: design {j + 1} (points[{j}]), {name} = {values[j]:g}{unit} is not "
+                f"allowed: must be {param.range_text()}",
+                field="points",
+                row=j,
+                input=name,
+            )
+        params.append(param)
+    return params, n
 
 
 def plan(spec: ModelSpec, study: Study) -> Plan:
@@ -417,6 +503,11 @@ def plan(spec: ModelSpec, study: Study) -> Plan:
     names = [v.name for v in study.variables]
     notes: list[str] = []
     k = len(params)
+    if study.method == "points":
+        given = study.points or {}
+        columns = {name: np.asarray(col, dtype=float).copy() for name, col in given.items()}
+        _validate_base(spec, study, columns)
+        return Plan(columns, n, outputs, notes=notes)
     if axes is not None:
         shape = tuple(a.size for a in axes.values())
         mesh = np.meshgrid(*axes.values(), indexing="ij")
