@@ -5,6 +5,7 @@ from typing import Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
+from ..models.clutch_spring_design_request_disc_series_type_0 import ClutchSpringDesignRequestDiscSeriesType0
 from ..models.clutch_spring_design_request_fidelity_type_0 import ClutchSpringDesignRequestFidelityType0
 from ..models.clutch_spring_design_request_flank_construction_type_0 import (
     ClutchSpringDesignRequestFlankConstructionType0,
@@ -14,6 +15,7 @@ from ..models.clutch_spring_design_request_outputs_type_0_item import ClutchSpri
 from ..models.clutch_spring_design_request_spring_arrangement_type_0 import (
     ClutchSpringDesignRequestSpringArrangementType0,
 )
+from ..models.clutch_spring_design_request_spring_kind_type_0 import ClutchSpringDesignRequestSpringKindType0
 from ..models.clutch_spring_design_request_spring_material_type_0 import ClutchSpringDesignRequestSpringMaterialType0
 from ..models.clutch_spring_design_request_spring_seating_type_0 import ClutchSpringDesignRequestSpringSeatingType0
 from ..types import UNSET, Unset
@@ -56,6 +58,9 @@ class ClutchSpringDesignRequest:
             tan(α′ − ρ) + tan(α − ρ) (virtual work) Default: ClutchSpringDesignRequestFlankConstructionType0.FREE_BALL.
         min_inner_diameter (float | None | str | Unset): D_i,min, smallest inner diameter of the spring (the shaft it
             sits on); 0 for none Default: 0.0.
+        spring_kind (ClutchSpringDesignRequestSpringKindType0 | None | Unset): 'helical': a helical compression spring
+            (EN 13906-1); 'disc_pack': a stack of DIN 2093 standard disc springs, n nested in parallel in each of i packs in
+            series (DIN EN 16983) Default: ClutchSpringDesignRequestSpringKindType0.HELICAL.
         spring_material (ClutchSpringDesignRequestSpringMaterialType0 | None | Unset): spring wire: EN 10270-1 SH or DH,
             or 1.4310 (EN 10270-3); G, E, ρ and τ_zul = 0.5 R_m(d) from the tables Default:
             ClutchSpringDesignRequestSpringMaterialType0.EN10270_1_DH.
@@ -65,8 +70,14 @@ class ClutchSpringDesignRequest:
         dynamic_load (bool | None | Unset): the minimum gap sum S_a × 1.5 (EN 13906-1, dynamic load) Default: False.
         objective (ClutchSpringDesignRequestObjectiveType0 | None | Unset): 'thinnest': the thinnest wire that passes
             every check, with the fewest coils that keep the stress, and of its springs the lightest (a larger force never
-            gets a thinner wire); 'margin': the most coils the pocket allows, the most stress margin at full stroke Default:
+            gets a thinner wire); a disc pack: the fewest discs, then the smallest; 'margin': the most coils (packs in
+            series) the pocket allows, the most stress margin at full stroke Default:
             ClutchSpringDesignRequestObjectiveType0.THINNEST.
+        disc_series (ClutchSpringDesignRequestDiscSeriesType0 | None | Unset): disc pack: the DIN 2093 series to choose
+            from: A (stiff, h0/t ≈ 0.4), B (h0/t ≈ 0.75), or any (the rows a public reprint of the standard's table
+            confirms) Default: ClutchSpringDesignRequestDiscSeriesType0.ANY.
+        disc_yield_strength (float | None | str | Unset): disc pack: R_e, the limit of |σ_OM| at full stroke (DIN EN
+            16983, static or moderate fatigue load; about 1400…1600 MPa for C60S and 51CrV4) Default: 1400000000.0.
         fidelity (ClutchSpringDesignRequestFidelityType0 | None | Unset): 'auto' picks the cheapest rung whose error
             estimate meets `tolerance`; or name a rung. Absent: 'auto', or 'auto' when a tolerance is given
         tolerance (float | None | Unset): relative tolerance for 'auto' (0.01)
@@ -94,6 +105,9 @@ class ClutchSpringDesignRequest:
         ClutchSpringDesignRequestFlankConstructionType0.FREE_BALL
     )
     min_inner_diameter: float | None | str | Unset = 0.0
+    spring_kind: ClutchSpringDesignRequestSpringKindType0 | None | Unset = (
+        ClutchSpringDesignRequestSpringKindType0.HELICAL
+    )
     spring_material: ClutchSpringDesignRequestSpringMaterialType0 | None | Unset = (
         ClutchSpringDesignRequestSpringMaterialType0.EN10270_1_DH
     )
@@ -102,6 +116,8 @@ class ClutchSpringDesignRequest:
     )
     dynamic_load: bool | None | Unset = False
     objective: ClutchSpringDesignRequestObjectiveType0 | None | Unset = ClutchSpringDesignRequestObjectiveType0.THINNEST
+    disc_series: ClutchSpringDesignRequestDiscSeriesType0 | None | Unset = ClutchSpringDesignRequestDiscSeriesType0.ANY
+    disc_yield_strength: float | None | str | Unset = 1400000000.0
     fidelity: ClutchSpringDesignRequestFidelityType0 | None | Unset = UNSET
     tolerance: float | None | Unset = UNSET
     outputs: list[ClutchSpringDesignRequestOutputsType0Item] | None | Unset = UNSET
@@ -172,6 +188,14 @@ class ClutchSpringDesignRequest:
         else:
             min_inner_diameter = self.min_inner_diameter
 
+        spring_kind: None | str | Unset
+        if isinstance(self.spring_kind, Unset):
+            spring_kind = UNSET
+        elif isinstance(self.spring_kind, ClutchSpringDesignRequestSpringKindType0):
+            spring_kind = self.spring_kind.value
+        else:
+            spring_kind = self.spring_kind
+
         spring_material: None | str | Unset
         if isinstance(self.spring_material, Unset):
             spring_material = UNSET
@@ -201,6 +225,20 @@ class ClutchSpringDesignRequest:
             objective = self.objective.value
         else:
             objective = self.objective
+
+        disc_series: None | str | Unset
+        if isinstance(self.disc_series, Unset):
+            disc_series = UNSET
+        elif isinstance(self.disc_series, ClutchSpringDesignRequestDiscSeriesType0):
+            disc_series = self.disc_series.value
+        else:
+            disc_series = self.disc_series
+
+        disc_yield_strength: float | None | str | Unset
+        if isinstance(self.disc_yield_strength, Unset):
+            disc_yield_strength = UNSET
+        else:
+            disc_yield_strength = self.disc_yield_strength
 
         fidelity: None | str | Unset
         if isinstance(self.fidelity, Unset):
@@ -256,6 +294,8 @@ class ClutchSpringDesignRequest:
             field_dict["flank_construction"] = flank_construction
         if min_inner_diameter is not UNSET:
             field_dict["min_inner_diameter"] = min_inner_diameter
+        if spring_kind is not UNSET:
+            field_dict["spring_kind"] = spring_kind
         if spring_material is not UNSET:
             field_dict["spring_material"] = spring_material
         if spring_seating is not UNSET:
@@ -264,6 +304,10 @@ class ClutchSpringDesignRequest:
             field_dict["dynamic_load"] = dynamic_load
         if objective is not UNSET:
             field_dict["objective"] = objective
+        if disc_series is not UNSET:
+            field_dict["disc_series"] = disc_series
+        if disc_yield_strength is not UNSET:
+            field_dict["disc_yield_strength"] = disc_yield_strength
         if fidelity is not UNSET:
             field_dict["fidelity"] = fidelity
         if tolerance is not UNSET:
@@ -389,6 +433,23 @@ class ClutchSpringDesignRequest:
 
         min_inner_diameter = _parse_min_inner_diameter(d.pop("min_inner_diameter", UNSET))
 
+        def _parse_spring_kind(data: object) -> ClutchSpringDesignRequestSpringKindType0 | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, str):
+                    raise TypeError()
+                spring_kind_type_0 = ClutchSpringDesignRequestSpringKindType0(data)
+
+                return spring_kind_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(ClutchSpringDesignRequestSpringKindType0 | None | Unset, data)
+
+        spring_kind = _parse_spring_kind(d.pop("spring_kind", UNSET))
+
         def _parse_spring_material(data: object) -> ClutchSpringDesignRequestSpringMaterialType0 | None | Unset:
             if data is None:
                 return data
@@ -448,6 +509,32 @@ class ClutchSpringDesignRequest:
             return cast(ClutchSpringDesignRequestObjectiveType0 | None | Unset, data)
 
         objective = _parse_objective(d.pop("objective", UNSET))
+
+        def _parse_disc_series(data: object) -> ClutchSpringDesignRequestDiscSeriesType0 | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, str):
+                    raise TypeError()
+                disc_series_type_0 = ClutchSpringDesignRequestDiscSeriesType0(data)
+
+                return disc_series_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(ClutchSpringDesignRequestDiscSeriesType0 | None | Unset, data)
+
+        disc_series = _parse_disc_series(d.pop("disc_series", UNSET))
+
+        def _parse_disc_yield_strength(data: object) -> float | None | str | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | str | Unset, data)
+
+        disc_yield_strength = _parse_disc_yield_strength(d.pop("disc_yield_strength", UNSET))
 
         def _parse_fidelity(data: object) -> ClutchSpringDesignRequestFidelityType0 | None | Unset:
             if data is None:
@@ -514,10 +601,13 @@ class ClutchSpringDesignRequest:
             driving_groove_angle=driving_groove_angle,
             flank_construction=flank_construction,
             min_inner_diameter=min_inner_diameter,
+            spring_kind=spring_kind,
             spring_material=spring_material,
             spring_seating=spring_seating,
             dynamic_load=dynamic_load,
             objective=objective,
+            disc_series=disc_series,
+            disc_yield_strength=disc_yield_strength,
             fidelity=fidelity,
             tolerance=tolerance,
             outputs=outputs,

@@ -5,6 +5,7 @@ from typing import Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
+from ..models.clutch_spring_design_sweep_base_disc_series_type_0 import ClutchSpringDesignSweepBaseDiscSeriesType0
 from ..models.clutch_spring_design_sweep_base_flank_construction_type_0 import (
     ClutchSpringDesignSweepBaseFlankConstructionType0,
 )
@@ -12,6 +13,7 @@ from ..models.clutch_spring_design_sweep_base_objective_type_0 import ClutchSpri
 from ..models.clutch_spring_design_sweep_base_spring_arrangement_type_0 import (
     ClutchSpringDesignSweepBaseSpringArrangementType0,
 )
+from ..models.clutch_spring_design_sweep_base_spring_kind_type_0 import ClutchSpringDesignSweepBaseSpringKindType0
 from ..models.clutch_spring_design_sweep_base_spring_material_type_0 import (
     ClutchSpringDesignSweepBaseSpringMaterialType0,
 )
@@ -57,6 +59,9 @@ class ClutchSpringDesignSweepBase:
             sits on); 0 for none Default: 0.0.
         max_set_length (float | str | Unset): L_1, the pocket's length: the spring's length at the setting (its free
             length is chosen so that it sits at this length)
+        spring_kind (ClutchSpringDesignSweepBaseSpringKindType0 | None | Unset): 'helical': a helical compression spring
+            (EN 13906-1); 'disc_pack': a stack of DIN 2093 standard disc springs, n nested in parallel in each of i packs in
+            series (DIN EN 16983) Default: ClutchSpringDesignSweepBaseSpringKindType0.HELICAL.
         spring_material (ClutchSpringDesignSweepBaseSpringMaterialType0 | None | Unset): spring wire: EN 10270-1 SH or
             DH, or 1.4310 (EN 10270-3); G, E, ρ and τ_zul = 0.5 R_m(d) from the tables Default:
             ClutchSpringDesignSweepBaseSpringMaterialType0.EN10270_1_DH.
@@ -66,8 +71,14 @@ class ClutchSpringDesignSweepBase:
         dynamic_load (bool | None | Unset): the minimum gap sum S_a × 1.5 (EN 13906-1, dynamic load) Default: False.
         objective (ClutchSpringDesignSweepBaseObjectiveType0 | None | Unset): 'thinnest': the thinnest wire that passes
             every check, with the fewest coils that keep the stress, and of its springs the lightest (a larger force never
-            gets a thinner wire); 'margin': the most coils the pocket allows, the most stress margin at full stroke Default:
+            gets a thinner wire); a disc pack: the fewest discs, then the smallest; 'margin': the most coils (packs in
+            series) the pocket allows, the most stress margin at full stroke Default:
             ClutchSpringDesignSweepBaseObjectiveType0.THINNEST.
+        disc_series (ClutchSpringDesignSweepBaseDiscSeriesType0 | None | Unset): disc pack: the DIN 2093 series to
+            choose from: A (stiff, h0/t ≈ 0.4), B (h0/t ≈ 0.75), or any (the rows a public reprint of the standard's table
+            confirms) Default: ClutchSpringDesignSweepBaseDiscSeriesType0.ANY.
+        disc_yield_strength (float | None | str | Unset): disc pack: R_e, the limit of |σ_OM| at full stroke (DIN EN
+            16983, static or moderate fatigue load; about 1400…1600 MPa for C60S and 51CrV4) Default: 1400000000.0.
     """
 
     target_torque: float | str | Unset = UNSET
@@ -88,6 +99,9 @@ class ClutchSpringDesignSweepBase:
     max_outer_diameter: float | str | Unset = UNSET
     min_inner_diameter: float | None | str | Unset = 0.0
     max_set_length: float | str | Unset = UNSET
+    spring_kind: ClutchSpringDesignSweepBaseSpringKindType0 | None | Unset = (
+        ClutchSpringDesignSweepBaseSpringKindType0.HELICAL
+    )
     spring_material: ClutchSpringDesignSweepBaseSpringMaterialType0 | None | Unset = (
         ClutchSpringDesignSweepBaseSpringMaterialType0.EN10270_1_DH
     )
@@ -98,6 +112,10 @@ class ClutchSpringDesignSweepBase:
     objective: ClutchSpringDesignSweepBaseObjectiveType0 | None | Unset = (
         ClutchSpringDesignSweepBaseObjectiveType0.THINNEST
     )
+    disc_series: ClutchSpringDesignSweepBaseDiscSeriesType0 | None | Unset = (
+        ClutchSpringDesignSweepBaseDiscSeriesType0.ANY
+    )
+    disc_yield_strength: float | None | str | Unset = 1400000000.0
 
     def to_dict(self) -> dict[str, Any]:
         target_torque: float | str | Unset
@@ -188,6 +206,14 @@ class ClutchSpringDesignSweepBase:
         else:
             max_set_length = self.max_set_length
 
+        spring_kind: None | str | Unset
+        if isinstance(self.spring_kind, Unset):
+            spring_kind = UNSET
+        elif isinstance(self.spring_kind, ClutchSpringDesignSweepBaseSpringKindType0):
+            spring_kind = self.spring_kind.value
+        else:
+            spring_kind = self.spring_kind
+
         spring_material: None | str | Unset
         if isinstance(self.spring_material, Unset):
             spring_material = UNSET
@@ -217,6 +243,20 @@ class ClutchSpringDesignSweepBase:
             objective = self.objective.value
         else:
             objective = self.objective
+
+        disc_series: None | str | Unset
+        if isinstance(self.disc_series, Unset):
+            disc_series = UNSET
+        elif isinstance(self.disc_series, ClutchSpringDesignSweepBaseDiscSeriesType0):
+            disc_series = self.disc_series.value
+        else:
+            disc_series = self.disc_series
+
+        disc_yield_strength: float | None | str | Unset
+        if isinstance(self.disc_yield_strength, Unset):
+            disc_yield_strength = UNSET
+        else:
+            disc_yield_strength = self.disc_yield_strength
 
         field_dict: dict[str, Any] = {}
 
@@ -249,6 +289,8 @@ class ClutchSpringDesignSweepBase:
             field_dict["min_inner_diameter"] = min_inner_diameter
         if max_set_length is not UNSET:
             field_dict["max_set_length"] = max_set_length
+        if spring_kind is not UNSET:
+            field_dict["spring_kind"] = spring_kind
         if spring_material is not UNSET:
             field_dict["spring_material"] = spring_material
         if spring_seating is not UNSET:
@@ -257,6 +299,10 @@ class ClutchSpringDesignSweepBase:
             field_dict["dynamic_load"] = dynamic_load
         if objective is not UNSET:
             field_dict["objective"] = objective
+        if disc_series is not UNSET:
+            field_dict["disc_series"] = disc_series
+        if disc_yield_strength is not UNSET:
+            field_dict["disc_yield_strength"] = disc_yield_strength
 
         return field_dict
 
@@ -390,6 +436,23 @@ class ClutchSpringDesignSweepBase:
 
         max_set_length = _parse_max_set_length(d.pop("max_set_length", UNSET))
 
+        def _parse_spring_kind(data: object) -> ClutchSpringDesignSweepBaseSpringKindType0 | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, str):
+                    raise TypeError()
+                spring_kind_type_0 = ClutchSpringDesignSweepBaseSpringKindType0(data)
+
+                return spring_kind_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(ClutchSpringDesignSweepBaseSpringKindType0 | None | Unset, data)
+
+        spring_kind = _parse_spring_kind(d.pop("spring_kind", UNSET))
+
         def _parse_spring_material(data: object) -> ClutchSpringDesignSweepBaseSpringMaterialType0 | None | Unset:
             if data is None:
                 return data
@@ -450,6 +513,32 @@ class ClutchSpringDesignSweepBase:
 
         objective = _parse_objective(d.pop("objective", UNSET))
 
+        def _parse_disc_series(data: object) -> ClutchSpringDesignSweepBaseDiscSeriesType0 | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, str):
+                    raise TypeError()
+                disc_series_type_0 = ClutchSpringDesignSweepBaseDiscSeriesType0(data)
+
+                return disc_series_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(ClutchSpringDesignSweepBaseDiscSeriesType0 | None | Unset, data)
+
+        disc_series = _parse_disc_series(d.pop("disc_series", UNSET))
+
+        def _parse_disc_yield_strength(data: object) -> float | None | str | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | str | Unset, data)
+
+        disc_yield_strength = _parse_disc_yield_strength(d.pop("disc_yield_strength", UNSET))
+
         clutch_spring_design_sweep_base = cls(
             target_torque=target_torque,
             ball_circle_diameter=ball_circle_diameter,
@@ -465,10 +554,13 @@ class ClutchSpringDesignSweepBase:
             max_outer_diameter=max_outer_diameter,
             min_inner_diameter=min_inner_diameter,
             max_set_length=max_set_length,
+            spring_kind=spring_kind,
             spring_material=spring_material,
             spring_seating=spring_seating,
             dynamic_load=dynamic_load,
             objective=objective,
+            disc_series=disc_series,
+            disc_yield_strength=disc_yield_strength,
         )
 
         return clutch_spring_design_sweep_base

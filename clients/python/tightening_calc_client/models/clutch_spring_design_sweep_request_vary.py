@@ -6,6 +6,7 @@ class ClutchSpringDesignSweepRequestVary(StrEnum):
     BALL_COUNT = "ball_count"
     BALL_DIAMETER = "ball_diameter"
     BALL_LIFT = "ball_lift"
+    DISC_YIELD_STRENGTH = "disc_yield_strength"
     DRIVING_GROOVE_ANGLE = "driving_groove_angle"
     FLANK_FRICTION = "flank_friction"
     GROOVE_ANGLE = "groove_angle"

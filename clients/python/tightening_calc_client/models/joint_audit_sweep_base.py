@@ -58,9 +58,13 @@ class JointAuditSweepBase:
         plate2_thickness (float | None | str | Unset): Thickness h_2 of clamped plate 2 (from the head side); absent or
             0: no such plate
         plate2_youngs_modulus (float | None | str | Unset): Young's modulus E_2 of plate 2; plate 1's when absent
+        plate2_outer_diameter (float | None | str | Unset): Outer diameter D_A,2 of plate 2 (VDI 2230-1 R3: its part of
+            the cone is capped there, a sleeve below d_W); outer_diameter (plate 1's) when absent
         plate3_thickness (float | None | str | Unset): Thickness h_3 of clamped plate 3 (from the head side); absent or
             0: no such plate
         plate3_youngs_modulus (float | None | str | Unset): Young's modulus E_3 of plate 3; plate 1's when absent
+        plate3_outer_diameter (float | None | str | Unset): Outer diameter D_A,3 of plate 3 (VDI 2230-1 R3: its part of
+            the cone is capped there, a sleeve below d_W); outer_diameter (plate 1's) when absent
         outer_diameter (float | None | str | Unset): Outer diameter D_A of the clamped parts (equivalent); absent:
             plates wide enough for the full deformation cone. Must be ≥ the bearing diameter d_W
         bolt_offset (float | None | str | Unset): Eccentric clamping (VDI 2230-1 §5.3.2): distance s_sym of the bolt
@@ -86,6 +90,10 @@ class JointAuditSweepBase:
             (needed with M_Y > 0)
         surface_roughness (JointAuditSweepBaseSurfaceRoughnessType0 | None | Unset): Mean roughness depth class of the
             bearing faces and interfaces (embedding, VDI R4) Default: JointAuditSweepBaseSurfaceRoughnessType0.RZ10_40.
+        service_temperature (float | None | str | Unset): Absolute temperature of bolt and plates in service (e.g. '150
+            degC'); absent: room temperature. At it R_p0.2 of the bolt's class (ISO 898-1 Annex A: 5.6, 8.8, 10.9, 12.9)
+            sets R7 and R8, and E of bolt and plates (tables by material) set the thermal preload loss in place of
+            bolt_modulus_ratio and plate_modulus_ratio
         thread_friction_min (float | None | str | Unset): Smallest thread friction μ_G,min (sets F_M,zul and the highest
             preload) Default: 0.12.
         thread_friction_max (float | None | str | Unset): Largest thread friction μ_G,max (sets the lowest preload at a
@@ -128,8 +136,10 @@ class JointAuditSweepBase:
     plate1_youngs_modulus: float | None | str | Unset = 210000000000.0
     plate2_thickness: float | None | str | Unset = UNSET
     plate2_youngs_modulus: float | None | str | Unset = UNSET
+    plate2_outer_diameter: float | None | str | Unset = UNSET
     plate3_thickness: float | None | str | Unset = UNSET
     plate3_youngs_modulus: float | None | str | Unset = UNSET
+    plate3_outer_diameter: float | None | str | Unset = UNSET
     outer_diameter: float | None | str | Unset = UNSET
     bolt_offset: float | None | str | Unset = 0.0
     load_lever: float | None | str | Unset = 0.0
@@ -144,6 +154,7 @@ class JointAuditSweepBase:
     surface_roughness: JointAuditSweepBaseSurfaceRoughnessType0 | None | Unset = (
         JointAuditSweepBaseSurfaceRoughnessType0.RZ10_40
     )
+    service_temperature: float | None | str | Unset = UNSET
     thread_friction_min: float | None | str | Unset = 0.12
     thread_friction_max: float | None | str | Unset = UNSET
     bearing_friction_min: float | None | str | Unset = 0.12
@@ -282,6 +293,12 @@ class JointAuditSweepBase:
         else:
             plate2_youngs_modulus = self.plate2_youngs_modulus
 
+        plate2_outer_diameter: float | None | str | Unset
+        if isinstance(self.plate2_outer_diameter, Unset):
+            plate2_outer_diameter = UNSET
+        else:
+            plate2_outer_diameter = self.plate2_outer_diameter
+
         plate3_thickness: float | None | str | Unset
         if isinstance(self.plate3_thickness, Unset):
             plate3_thickness = UNSET
@@ -293,6 +310,12 @@ class JointAuditSweepBase:
             plate3_youngs_modulus = UNSET
         else:
             plate3_youngs_modulus = self.plate3_youngs_modulus
+
+        plate3_outer_diameter: float | None | str | Unset
+        if isinstance(self.plate3_outer_diameter, Unset):
+            plate3_outer_diameter = UNSET
+        else:
+            plate3_outer_diameter = self.plate3_outer_diameter
 
         outer_diameter: float | None | str | Unset
         if isinstance(self.outer_diameter, Unset):
@@ -367,6 +390,12 @@ class JointAuditSweepBase:
             surface_roughness = self.surface_roughness.value
         else:
             surface_roughness = self.surface_roughness
+
+        service_temperature: float | None | str | Unset
+        if isinstance(self.service_temperature, Unset):
+            service_temperature = UNSET
+        else:
+            service_temperature = self.service_temperature
 
         thread_friction_min: float | None | str | Unset
         if isinstance(self.thread_friction_min, Unset):
@@ -473,10 +502,14 @@ class JointAuditSweepBase:
             field_dict["plate2_thickness"] = plate2_thickness
         if plate2_youngs_modulus is not UNSET:
             field_dict["plate2_youngs_modulus"] = plate2_youngs_modulus
+        if plate2_outer_diameter is not UNSET:
+            field_dict["plate2_outer_diameter"] = plate2_outer_diameter
         if plate3_thickness is not UNSET:
             field_dict["plate3_thickness"] = plate3_thickness
         if plate3_youngs_modulus is not UNSET:
             field_dict["plate3_youngs_modulus"] = plate3_youngs_modulus
+        if plate3_outer_diameter is not UNSET:
+            field_dict["plate3_outer_diameter"] = plate3_outer_diameter
         if outer_diameter is not UNSET:
             field_dict["outer_diameter"] = outer_diameter
         if bolt_offset is not UNSET:
@@ -501,6 +534,8 @@ class JointAuditSweepBase:
             field_dict["friction_radius"] = friction_radius
         if surface_roughness is not UNSET:
             field_dict["surface_roughness"] = surface_roughness
+        if service_temperature is not UNSET:
+            field_dict["service_temperature"] = service_temperature
         if thread_friction_min is not UNSET:
             field_dict["thread_friction_min"] = thread_friction_min
         if thread_friction_max is not UNSET:
@@ -732,6 +767,15 @@ class JointAuditSweepBase:
 
         plate2_youngs_modulus = _parse_plate2_youngs_modulus(d.pop("plate2_youngs_modulus", UNSET))
 
+        def _parse_plate2_outer_diameter(data: object) -> float | None | str | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | str | Unset, data)
+
+        plate2_outer_diameter = _parse_plate2_outer_diameter(d.pop("plate2_outer_diameter", UNSET))
+
         def _parse_plate3_thickness(data: object) -> float | None | str | Unset:
             if data is None:
                 return data
@@ -749,6 +793,15 @@ class JointAuditSweepBase:
             return cast(float | None | str | Unset, data)
 
         plate3_youngs_modulus = _parse_plate3_youngs_modulus(d.pop("plate3_youngs_modulus", UNSET))
+
+        def _parse_plate3_outer_diameter(data: object) -> float | None | str | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | str | Unset, data)
+
+        plate3_outer_diameter = _parse_plate3_outer_diameter(d.pop("plate3_outer_diameter", UNSET))
 
         def _parse_outer_diameter(data: object) -> float | None | str | Unset:
             if data is None:
@@ -866,6 +919,15 @@ class JointAuditSweepBase:
 
         surface_roughness = _parse_surface_roughness(d.pop("surface_roughness", UNSET))
 
+        def _parse_service_temperature(data: object) -> float | None | str | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | str | Unset, data)
+
+        service_temperature = _parse_service_temperature(d.pop("service_temperature", UNSET))
+
         def _parse_thread_friction_min(data: object) -> float | None | str | Unset:
             if data is None:
                 return data
@@ -976,8 +1038,10 @@ class JointAuditSweepBase:
             plate1_youngs_modulus=plate1_youngs_modulus,
             plate2_thickness=plate2_thickness,
             plate2_youngs_modulus=plate2_youngs_modulus,
+            plate2_outer_diameter=plate2_outer_diameter,
             plate3_thickness=plate3_thickness,
             plate3_youngs_modulus=plate3_youngs_modulus,
+            plate3_outer_diameter=plate3_outer_diameter,
             outer_diameter=outer_diameter,
             bolt_offset=bolt_offset,
             load_lever=load_lever,
@@ -990,6 +1054,7 @@ class JointAuditSweepBase:
             torque_interfaces=torque_interfaces,
             friction_radius=friction_radius,
             surface_roughness=surface_roughness,
+            service_temperature=service_temperature,
             thread_friction_min=thread_friction_min,
             thread_friction_max=thread_friction_max,
             bearing_friction_min=bearing_friction_min,

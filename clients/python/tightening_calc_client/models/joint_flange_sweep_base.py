@@ -88,11 +88,15 @@ class JointFlangeSweepBase:
         plate2_youngs_modulus (float | None | str | Unset): Young's modulus E_2 of plate 2; plate 1's when absent
         plate2_expansion (float | None | str | Unset): Thermal expansion coefficient α_2 of plate 2; plate 1's when
             absent
+        plate2_outer_diameter (float | None | str | Unset): Outer diameter D_A,2 of plate 2 (VDI 2230-1 R3: its part of
+            the cone is capped there, a sleeve below d_W); outer_diameter (plate 1's) when absent
         plate3_thickness (float | None | str | Unset): Thickness h_3 of clamped plate 3 (from the head side); absent or
             0: no such plate
         plate3_youngs_modulus (float | None | str | Unset): Young's modulus E_3 of plate 3; plate 1's when absent
         plate3_expansion (float | None | str | Unset): Thermal expansion coefficient α_3 of plate 3; plate 1's when
             absent
+        plate3_outer_diameter (float | None | str | Unset): Outer diameter D_A,3 of plate 3 (VDI 2230-1 R3: its part of
+            the cone is capped there, a sleeve below d_W); outer_diameter (plate 1's) when absent
         outer_diameter (float | None | str | Unset): Outer diameter D_A of the clamped parts (equivalent); absent:
             plates wide enough for the full deformation cone. Must be ≥ the bearing diameter d_W
         load_introduction (float | None | str | Unset): Load-introduction factor n (VDI 2230-1 R3): 1 under the head and
@@ -130,6 +134,10 @@ class JointFlangeSweepBase:
             Default: 1.0.
         plate_modulus_ratio (float | None | str | Unset): E of the plates at service temperature / at room temperature
             Default: 1.0.
+        service_temperature (float | None | str | Unset): Absolute temperature of bolt and plates in service (e.g. '150
+            degC'); absent: room temperature. At it R_p0.2 of the bolt's class (ISO 898-1 Annex A: 5.6, 8.8, 10.9, 12.9)
+            sets R7 and R8, and E of bolt and plates (tables by material) set the thermal preload loss in place of
+            bolt_modulus_ratio and plate_modulus_ratio
         thread_friction_min (float | None | str | Unset): Smallest thread friction μ_G,min (sets F_M,zul and the highest
             preload) Default: 0.12.
         thread_friction_max (float | None | str | Unset): Largest thread friction μ_G,max (sets the lowest preload at a
@@ -209,9 +217,11 @@ class JointFlangeSweepBase:
     plate2_thickness: float | None | str | Unset = UNSET
     plate2_youngs_modulus: float | None | str | Unset = UNSET
     plate2_expansion: float | None | str | Unset = UNSET
+    plate2_outer_diameter: float | None | str | Unset = UNSET
     plate3_thickness: float | None | str | Unset = UNSET
     plate3_youngs_modulus: float | None | str | Unset = UNSET
     plate3_expansion: float | None | str | Unset = UNSET
+    plate3_outer_diameter: float | None | str | Unset = UNSET
     outer_diameter: float | None | str | Unset = UNSET
     load_introduction: float | None | str | Unset = 0.5
     bolt_offset: float | None | str | Unset = 0.0
@@ -233,6 +243,7 @@ class JointFlangeSweepBase:
     plate_temperature_change: float | None | str | Unset = UNSET
     bolt_modulus_ratio: float | None | str | Unset = 1.0
     plate_modulus_ratio: float | None | str | Unset = 1.0
+    service_temperature: float | None | str | Unset = UNSET
     thread_friction_min: float | None | str | Unset = 0.12
     thread_friction_max: float | None | str | Unset = UNSET
     bearing_friction_min: float | None | str | Unset = 0.12
@@ -455,6 +466,12 @@ class JointFlangeSweepBase:
         else:
             plate2_expansion = self.plate2_expansion
 
+        plate2_outer_diameter: float | None | str | Unset
+        if isinstance(self.plate2_outer_diameter, Unset):
+            plate2_outer_diameter = UNSET
+        else:
+            plate2_outer_diameter = self.plate2_outer_diameter
+
         plate3_thickness: float | None | str | Unset
         if isinstance(self.plate3_thickness, Unset):
             plate3_thickness = UNSET
@@ -472,6 +489,12 @@ class JointFlangeSweepBase:
             plate3_expansion = UNSET
         else:
             plate3_expansion = self.plate3_expansion
+
+        plate3_outer_diameter: float | None | str | Unset
+        if isinstance(self.plate3_outer_diameter, Unset):
+            plate3_outer_diameter = UNSET
+        else:
+            plate3_outer_diameter = self.plate3_outer_diameter
 
         outer_diameter: float | None | str | Unset
         if isinstance(self.outer_diameter, Unset):
@@ -588,6 +611,12 @@ class JointFlangeSweepBase:
             plate_modulus_ratio = UNSET
         else:
             plate_modulus_ratio = self.plate_modulus_ratio
+
+        service_temperature: float | None | str | Unset
+        if isinstance(self.service_temperature, Unset):
+            service_temperature = UNSET
+        else:
+            service_temperature = self.service_temperature
 
         thread_friction_min: float | None | str | Unset
         if isinstance(self.thread_friction_min, Unset):
@@ -806,12 +835,16 @@ class JointFlangeSweepBase:
             field_dict["plate2_youngs_modulus"] = plate2_youngs_modulus
         if plate2_expansion is not UNSET:
             field_dict["plate2_expansion"] = plate2_expansion
+        if plate2_outer_diameter is not UNSET:
+            field_dict["plate2_outer_diameter"] = plate2_outer_diameter
         if plate3_thickness is not UNSET:
             field_dict["plate3_thickness"] = plate3_thickness
         if plate3_youngs_modulus is not UNSET:
             field_dict["plate3_youngs_modulus"] = plate3_youngs_modulus
         if plate3_expansion is not UNSET:
             field_dict["plate3_expansion"] = plate3_expansion
+        if plate3_outer_diameter is not UNSET:
+            field_dict["plate3_outer_diameter"] = plate3_outer_diameter
         if outer_diameter is not UNSET:
             field_dict["outer_diameter"] = outer_diameter
         if load_introduction is not UNSET:
@@ -850,6 +883,8 @@ class JointFlangeSweepBase:
             field_dict["bolt_modulus_ratio"] = bolt_modulus_ratio
         if plate_modulus_ratio is not UNSET:
             field_dict["plate_modulus_ratio"] = plate_modulus_ratio
+        if service_temperature is not UNSET:
+            field_dict["service_temperature"] = service_temperature
         if thread_friction_min is not UNSET:
             field_dict["thread_friction_min"] = thread_friction_min
         if thread_friction_max is not UNSET:
@@ -1212,6 +1247,15 @@ class JointFlangeSweepBase:
 
         plate2_expansion = _parse_plate2_expansion(d.pop("plate2_expansion", UNSET))
 
+        def _parse_plate2_outer_diameter(data: object) -> float | None | str | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | str | Unset, data)
+
+        plate2_outer_diameter = _parse_plate2_outer_diameter(d.pop("plate2_outer_diameter", UNSET))
+
         def _parse_plate3_thickness(data: object) -> float | None | str | Unset:
             if data is None:
                 return data
@@ -1238,6 +1282,15 @@ class JointFlangeSweepBase:
             return cast(float | None | str | Unset, data)
 
         plate3_expansion = _parse_plate3_expansion(d.pop("plate3_expansion", UNSET))
+
+        def _parse_plate3_outer_diameter(data: object) -> float | None | str | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | str | Unset, data)
+
+        plate3_outer_diameter = _parse_plate3_outer_diameter(d.pop("plate3_outer_diameter", UNSET))
 
         def _parse_outer_diameter(data: object) -> float | None | str | Unset:
             if data is None:
@@ -1417,6 +1470,15 @@ class JointFlangeSweepBase:
             return cast(float | None | str | Unset, data)
 
         plate_modulus_ratio = _parse_plate_modulus_ratio(d.pop("plate_modulus_ratio", UNSET))
+
+        def _parse_service_temperature(data: object) -> float | None | str | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | str | Unset, data)
+
+        service_temperature = _parse_service_temperature(d.pop("service_temperature", UNSET))
 
         def _parse_thread_friction_min(data: object) -> float | None | str | Unset:
             if data is None:
@@ -1718,9 +1780,11 @@ class JointFlangeSweepBase:
             plate2_thickness=plate2_thickness,
             plate2_youngs_modulus=plate2_youngs_modulus,
             plate2_expansion=plate2_expansion,
+            plate2_outer_diameter=plate2_outer_diameter,
             plate3_thickness=plate3_thickness,
             plate3_youngs_modulus=plate3_youngs_modulus,
             plate3_expansion=plate3_expansion,
+            plate3_outer_diameter=plate3_outer_diameter,
             outer_diameter=outer_diameter,
             load_introduction=load_introduction,
             bolt_offset=bolt_offset,
@@ -1740,6 +1804,7 @@ class JointFlangeSweepBase:
             plate_temperature_change=plate_temperature_change,
             bolt_modulus_ratio=bolt_modulus_ratio,
             plate_modulus_ratio=plate_modulus_ratio,
+            service_temperature=service_temperature,
             thread_friction_min=thread_friction_min,
             thread_friction_max=thread_friction_max,
             bearing_friction_min=bearing_friction_min,

@@ -13,6 +13,7 @@ class JointVdi2230RequestOutputsType0Item(StrEnum):
     BOLT_COMPLIANCE_HEAD = "bolt_compliance_head"
     BOLT_COMPLIANCE_SHANK = "bolt_compliance_shank"
     BOLT_ELONGATION = "bolt_elongation"
+    BOLT_MODULUS_RATIO_AT_TEMPERATURE = "bolt_modulus_ratio_at_temperature"
     CLAMPED_BENDING_COMPLIANCE = "clamped_bending_compliance"
     CLAMPED_COMPLIANCE = "clamped_compliance"
     CLAMP_LOAD_REDUCTION = "clamp_load_reduction"
@@ -47,6 +48,7 @@ class JointVdi2230RequestOutputsType0Item(StrEnum):
     OPENING_CLAMP_FORCE = "opening_clamp_force"
     OUTER_DIAMETER_USED = "outer_diameter_used"
     PERMISSIBLE_PRELOAD = "permissible_preload"
+    PLATE_MODULUS_RATIO_AT_TEMPERATURE = "plate_modulus_ratio_at_temperature"
     PRELOAD_STRESS_RATIO = "preload_stress_ratio"
     REQUIRED_CLAMP_FORCE = "required_clamp_force"
     REQUIRED_PRELOAD_MAX = "required_preload_max"
@@ -73,6 +75,7 @@ class JointVdi2230RequestOutputsType0Item(StrEnum):
     WORKING_STRESS = "working_stress"
     YIELD_PRELOAD = "yield_preload"
     YIELD_SAFETY = "yield_safety"
+    YIELD_STRENGTH_AT_TEMPERATURE = "yield_strength_at_temperature"
 
     def __str__(self) -> str:
         return str(self.value)

@@ -88,6 +88,13 @@ class JointVdi2230Results:
             [rad]
         nut_stripping_force (float | None | Unset): R11 for a nut that does not pair with the bolt (thin, weaker class):
             F_SM = C1 C3 τ_BM A_SGM over m − 2P, τ_BM = 0.6 S_p (null where the nut pairs or is absent) [N]
+        yield_strength_at_temperature (float | None | Unset): R7/R8 at service_temperature: R_p0.2(T) = R_p0.2 ×
+            R_p0.2,T/R_p0.2,20°C of the class (ISO 898-1 Annex A), the yield strength R7 and R8 use (null at room
+            temperature) [Pa]
+        bolt_modulus_ratio_at_temperature (float | None | Unset): R4 at service_temperature: E_S,T/E_S,RT of the bolt
+            (steel table), in ΔF_Vth (null at room temperature) [dimensionless]
+        plate_modulus_ratio_at_temperature (float | None | Unset): R4 at service_temperature: E_P,T/E_P,RT of the
+            plates, δ_P/Σ(δ_i E_i,RT/E_i,T), in ΔF_Vth (null at room temperature) [dimensionless]
     """
 
     tightening_factor: float | None | Unset = UNSET
@@ -143,6 +150,9 @@ class JointVdi2230Results:
     target_angle: float | None | Unset = UNSET
     rigid_joint_angle: float | None | Unset = UNSET
     nut_stripping_force: float | None | Unset = UNSET
+    yield_strength_at_temperature: float | None | Unset = UNSET
+    bolt_modulus_ratio_at_temperature: float | None | Unset = UNSET
+    plate_modulus_ratio_at_temperature: float | None | Unset = UNSET
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
@@ -464,6 +474,24 @@ class JointVdi2230Results:
         else:
             nut_stripping_force = self.nut_stripping_force
 
+        yield_strength_at_temperature: float | None | Unset
+        if isinstance(self.yield_strength_at_temperature, Unset):
+            yield_strength_at_temperature = UNSET
+        else:
+            yield_strength_at_temperature = self.yield_strength_at_temperature
+
+        bolt_modulus_ratio_at_temperature: float | None | Unset
+        if isinstance(self.bolt_modulus_ratio_at_temperature, Unset):
+            bolt_modulus_ratio_at_temperature = UNSET
+        else:
+            bolt_modulus_ratio_at_temperature = self.bolt_modulus_ratio_at_temperature
+
+        plate_modulus_ratio_at_temperature: float | None | Unset
+        if isinstance(self.plate_modulus_ratio_at_temperature, Unset):
+            plate_modulus_ratio_at_temperature = UNSET
+        else:
+            plate_modulus_ratio_at_temperature = self.plate_modulus_ratio_at_temperature
+
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
         field_dict.update({})
@@ -573,6 +601,12 @@ class JointVdi2230Results:
             field_dict["rigid_joint_angle"] = rigid_joint_angle
         if nut_stripping_force is not UNSET:
             field_dict["nut_stripping_force"] = nut_stripping_force
+        if yield_strength_at_temperature is not UNSET:
+            field_dict["yield_strength_at_temperature"] = yield_strength_at_temperature
+        if bolt_modulus_ratio_at_temperature is not UNSET:
+            field_dict["bolt_modulus_ratio_at_temperature"] = bolt_modulus_ratio_at_temperature
+        if plate_modulus_ratio_at_temperature is not UNSET:
+            field_dict["plate_modulus_ratio_at_temperature"] = plate_modulus_ratio_at_temperature
 
         return field_dict
 
@@ -1057,6 +1091,39 @@ class JointVdi2230Results:
 
         nut_stripping_force = _parse_nut_stripping_force(d.pop("nut_stripping_force", UNSET))
 
+        def _parse_yield_strength_at_temperature(data: object) -> float | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | Unset, data)
+
+        yield_strength_at_temperature = _parse_yield_strength_at_temperature(
+            d.pop("yield_strength_at_temperature", UNSET)
+        )
+
+        def _parse_bolt_modulus_ratio_at_temperature(data: object) -> float | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | Unset, data)
+
+        bolt_modulus_ratio_at_temperature = _parse_bolt_modulus_ratio_at_temperature(
+            d.pop("bolt_modulus_ratio_at_temperature", UNSET)
+        )
+
+        def _parse_plate_modulus_ratio_at_temperature(data: object) -> float | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | Unset, data)
+
+        plate_modulus_ratio_at_temperature = _parse_plate_modulus_ratio_at_temperature(
+            d.pop("plate_modulus_ratio_at_temperature", UNSET)
+        )
+
         joint_vdi_2230_results = cls(
             tightening_factor=tightening_factor,
             required_clamp_force=required_clamp_force,
@@ -1111,6 +1178,9 @@ class JointVdi2230Results:
             target_angle=target_angle,
             rigid_joint_angle=rigid_joint_angle,
             nut_stripping_force=nut_stripping_force,
+            yield_strength_at_temperature=yield_strength_at_temperature,
+            bolt_modulus_ratio_at_temperature=bolt_modulus_ratio_at_temperature,
+            plate_modulus_ratio_at_temperature=plate_modulus_ratio_at_temperature,
         )
 
         joint_vdi_2230_results.additional_properties = d

@@ -85,14 +85,17 @@ def sync_detailed(
     client: AuthenticatedClient | Client,
     body: ClutchSpringDesignRequest,
 ) -> Response[ClutchSpringDesignResponse | ErrorResponse]:
-    """Ball safety clutch: the spring for a setting (EN 13906-1)
+    """Ball safety clutch: the spring for a setting (EN 13906-1, DIN EN 16983)
 
      The helical compression spring a ball clutch's setting needs: wire, mean diameter, coils and free
     length from the clutch's spring force and stroke and the space, checked to EN 13906-1 (stress at the
     setting and at full stroke, solid length with the minimum gap sum, buckling, spring index); where
-    none fits, the binding limit and the nearest spring that passes every other check.
+    none fits, the binding limit and the nearest spring that passes every other check. Or a stack of DIN
+    2093 standard disc springs (n in parallel, i in series) to DIN EN 16983: deflection per disc within
+    0.75 h0, σ_OM within R_e, the stack within the pocket.
 
-    Source: [001, eq. 1–3] for the force; EN 13906-1 for the spring; EN 10270-1 wire sizes
+    Source: [001, eq. 1–3] for the force; EN 13906-1 for the spring; EN 10270-1 wire sizes; DIN EN 16983
+    and DIN 2093's standard discs for a disc pack
 
     Args:
         body (ClutchSpringDesignRequest):
@@ -121,14 +124,17 @@ def sync(
     client: AuthenticatedClient | Client,
     body: ClutchSpringDesignRequest,
 ) -> ClutchSpringDesignResponse | ErrorResponse | None:
-    """Ball safety clutch: the spring for a setting (EN 13906-1)
+    """Ball safety clutch: the spring for a setting (EN 13906-1, DIN EN 16983)
 
      The helical compression spring a ball clutch's setting needs: wire, mean diameter, coils and free
     length from the clutch's spring force and stroke and the space, checked to EN 13906-1 (stress at the
     setting and at full stroke, solid length with the minimum gap sum, buckling, spring index); where
-    none fits, the binding limit and the nearest spring that passes every other check.
+    none fits, the binding limit and the nearest spring that passes every other check. Or a stack of DIN
+    2093 standard disc springs (n in parallel, i in series) to DIN EN 16983: deflection per disc within
+    0.75 h0, σ_OM within R_e, the stack within the pocket.
 
-    Source: [001, eq. 1–3] for the force; EN 13906-1 for the spring; EN 10270-1 wire sizes
+    Source: [001, eq. 1–3] for the force; EN 13906-1 for the spring; EN 10270-1 wire sizes; DIN EN 16983
+    and DIN 2093's standard discs for a disc pack
 
     Args:
         body (ClutchSpringDesignRequest):
@@ -152,14 +158,17 @@ async def asyncio_detailed(
     client: AuthenticatedClient | Client,
     body: ClutchSpringDesignRequest,
 ) -> Response[ClutchSpringDesignResponse | ErrorResponse]:
-    """Ball safety clutch: the spring for a setting (EN 13906-1)
+    """Ball safety clutch: the spring for a setting (EN 13906-1, DIN EN 16983)
 
      The helical compression spring a ball clutch's setting needs: wire, mean diameter, coils and free
     length from the clutch's spring force and stroke and the space, checked to EN 13906-1 (stress at the
     setting and at full stroke, solid length with the minimum gap sum, buckling, spring index); where
-    none fits, the binding limit and the nearest spring that passes every other check.
+    none fits, the binding limit and the nearest spring that passes every other check. Or a stack of DIN
+    2093 standard disc springs (n in parallel, i in series) to DIN EN 16983: deflection per disc within
+    0.75 h0, σ_OM within R_e, the stack within the pocket.
 
-    Source: [001, eq. 1–3] for the force; EN 13906-1 for the spring; EN 10270-1 wire sizes
+    Source: [001, eq. 1–3] for the force; EN 13906-1 for the spring; EN 10270-1 wire sizes; DIN EN 16983
+    and DIN 2093's standard discs for a disc pack
 
     Args:
         body (ClutchSpringDesignRequest):
@@ -186,14 +195,17 @@ async def asyncio(
     client: AuthenticatedClient | Client,
     body: ClutchSpringDesignRequest,
 ) -> ClutchSpringDesignResponse | ErrorResponse | None:
-    """Ball safety clutch: the spring for a setting (EN 13906-1)
+    """Ball safety clutch: the spring for a setting (EN 13906-1, DIN EN 16983)
 
      The helical compression spring a ball clutch's setting needs: wire, mean diameter, coils and free
     length from the clutch's spring force and stroke and the space, checked to EN 13906-1 (stress at the
     setting and at full stroke, solid length with the minimum gap sum, buckling, spring index); where
-    none fits, the binding limit and the nearest spring that passes every other check.
+    none fits, the binding limit and the nearest spring that passes every other check. Or a stack of DIN
+    2093 standard disc springs (n in parallel, i in series) to DIN EN 16983: deflection per disc within
+    0.75 h0, σ_OM within R_e, the stack within the pocket.
 
-    Source: [001, eq. 1–3] for the force; EN 13906-1 for the spring; EN 10270-1 wire sizes
+    Source: [001, eq. 1–3] for the force; EN 13906-1 for the spring; EN 10270-1 wire sizes; DIN EN 16983
+    and DIN 2093's standard discs for a disc pack
 
     Args:
         body (ClutchSpringDesignRequest):

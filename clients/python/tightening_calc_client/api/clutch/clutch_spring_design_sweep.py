@@ -85,7 +85,7 @@ def sync_detailed(
     client: AuthenticatedClient | Client,
     body: ClutchSpringDesignSweepRequest,
 ) -> Response[ErrorResponse | SweepResponse]:
-    """Ball safety clutch: the spring for a setting (EN 13906-1): sweep one input
+    """Ball safety clutch: the spring for a setting (EN 13906-1, DIN EN 16983): sweep one input
 
      Evaluate the model with one input varied over a range; a point the model refuses is null in every
     output, with a note.
@@ -117,7 +117,7 @@ def sync(
     client: AuthenticatedClient | Client,
     body: ClutchSpringDesignSweepRequest,
 ) -> ErrorResponse | SweepResponse | None:
-    """Ball safety clutch: the spring for a setting (EN 13906-1): sweep one input
+    """Ball safety clutch: the spring for a setting (EN 13906-1, DIN EN 16983): sweep one input
 
      Evaluate the model with one input varied over a range; a point the model refuses is null in every
     output, with a note.
@@ -144,7 +144,7 @@ async def asyncio_detailed(
     client: AuthenticatedClient | Client,
     body: ClutchSpringDesignSweepRequest,
 ) -> Response[ErrorResponse | SweepResponse]:
-    """Ball safety clutch: the spring for a setting (EN 13906-1): sweep one input
+    """Ball safety clutch: the spring for a setting (EN 13906-1, DIN EN 16983): sweep one input
 
      Evaluate the model with one input varied over a range; a point the model refuses is null in every
     output, with a note.
@@ -174,7 +174,7 @@ async def asyncio(
     client: AuthenticatedClient | Client,
     body: ClutchSpringDesignSweepRequest,
 ) -> ErrorResponse | SweepResponse | None:
-    """Ball safety clutch: the spring for a setting (EN 13906-1): sweep one input
+    """Ball safety clutch: the spring for a setting (EN 13906-1, DIN EN 16983): sweep one input
 
      Evaluate the model with one input varied over a range; a point the model refuses is null in every
     output, with a note.

@@ -44,11 +44,13 @@ def sync_detailed(
     *,
     client: AuthenticatedClient | Client,
 ) -> Response[Any]:
-    """Readiness: 503 while either engine lane cannot admit work
+    """Readiness: 503 while warming up or while either engine lane cannot admit work
 
-     Each lane's running and waiting computations, and the studies: running and queued in this process,
-    and unfinished in all. Studies never make the service busy (they run on their own threads and
-    workers): they are reported, not gated.
+     503 "warming" until the start-up warm-up has run every model's first example once per rung (the
+    compiled kernels loaded; at once with WARM_UP=0); then 503 "busy" while a lane has no free slot and
+    a full queue. Each lane's running and waiting computations, and the studies: running and queued in
+    this process, and unfinished in all. Studies never make the service busy (they run on their own
+    threads and workers): they are reported, not gated.
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -71,11 +73,13 @@ async def asyncio_detailed(
     *,
     client: AuthenticatedClient | Client,
 ) -> Response[Any]:
-    """Readiness: 503 while either engine lane cannot admit work
+    """Readiness: 503 while warming up or while either engine lane cannot admit work
 
-     Each lane's running and waiting computations, and the studies: running and queued in this process,
-    and unfinished in all. Studies never make the service busy (they run on their own threads and
-    workers): they are reported, not gated.
+     503 "warming" until the start-up warm-up has run every model's first example once per rung (the
+    compiled kernels loaded; at once with WARM_UP=0); then 503 "busy" while a lane has no free slot and
+    a full queue. Each lane's running and waiting computations, and the studies: running and queued in
+    this process, and unfinished in all. Studies never make the service busy (they run on their own
+    threads and workers): they are reported, not gated.
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.

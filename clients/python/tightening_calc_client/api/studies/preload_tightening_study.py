@@ -6,13 +6,13 @@ import httpx
 from ... import errors
 from ...client import AuthenticatedClient, Client
 from ...models.error_response import ErrorResponse
-from ...models.study_in import StudyIn
+from ...models.preload_tightening_study_request import PreloadTighteningStudyRequest
 from ...types import Response
 
 
 def _get_kwargs(
     *,
-    body: StudyIn,
+    body: PreloadTighteningStudyRequest,
 ) -> dict[str, Any]:
     headers: dict[str, Any] = {}
 
@@ -77,16 +77,16 @@ def _build_response(*, client: AuthenticatedClient | Client, response: httpx.Res
 def sync_detailed(
     *,
     client: AuthenticatedClient | Client,
-    body: StudyIn,
+    body: PreloadTighteningStudyRequest,
 ) -> Response[Any | ErrorResponse]:
     """Bolt preload and tightening torque: a design study (grid, Monte Carlo, LHS, Sobol')
 
      Vary up to 12 inputs (a grid: up to 3) by distribution (uniform, normal, triangular, lognormal) with
-    method one of grid, monte_carlo, lhs, sobol; returns 202 with a job to poll at GET
-    /api/v1/jobs/{id}.
+    method one of grid, monte_carlo, lhs, sobol, points, or list the designs themselves (`points`: JSON
+    rows, or `points_csv`); returns 202 with a job to poll at GET /api/v1/jobs/{id}.
 
     Args:
-        body (StudyIn):
+        body (PreloadTighteningStudyRequest):
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -110,16 +110,16 @@ def sync_detailed(
 def sync(
     *,
     client: AuthenticatedClient | Client,
-    body: StudyIn,
+    body: PreloadTighteningStudyRequest,
 ) -> Any | ErrorResponse | None:
     """Bolt preload and tightening torque: a design study (grid, Monte Carlo, LHS, Sobol')
 
      Vary up to 12 inputs (a grid: up to 3) by distribution (uniform, normal, triangular, lognormal) with
-    method one of grid, monte_carlo, lhs, sobol; returns 202 with a job to poll at GET
-    /api/v1/jobs/{id}.
+    method one of grid, monte_carlo, lhs, sobol, points, or list the designs themselves (`points`: JSON
+    rows, or `points_csv`); returns 202 with a job to poll at GET /api/v1/jobs/{id}.
 
     Args:
-        body (StudyIn):
+        body (PreloadTighteningStudyRequest):
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -138,16 +138,16 @@ def sync(
 async def asyncio_detailed(
     *,
     client: AuthenticatedClient | Client,
-    body: StudyIn,
+    body: PreloadTighteningStudyRequest,
 ) -> Response[Any | ErrorResponse]:
     """Bolt preload and tightening torque: a design study (grid, Monte Carlo, LHS, Sobol')
 
      Vary up to 12 inputs (a grid: up to 3) by distribution (uniform, normal, triangular, lognormal) with
-    method one of grid, monte_carlo, lhs, sobol; returns 202 with a job to poll at GET
-    /api/v1/jobs/{id}.
+    method one of grid, monte_carlo, lhs, sobol, points, or list the designs themselves (`points`: JSON
+    rows, or `points_csv`); returns 202 with a job to poll at GET /api/v1/jobs/{id}.
 
     Args:
-        body (StudyIn):
+        body (PreloadTighteningStudyRequest):
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -169,16 +169,16 @@ async def asyncio_detailed(
 async def asyncio(
     *,
     client: AuthenticatedClient | Client,
-    body: StudyIn,
+    body: PreloadTighteningStudyRequest,
 ) -> Any | ErrorResponse | None:
     """Bolt preload and tightening torque: a design study (grid, Monte Carlo, LHS, Sobol')
 
      Vary up to 12 inputs (a grid: up to 3) by distribution (uniform, normal, triangular, lognormal) with
-    method one of grid, monte_carlo, lhs, sobol; returns 202 with a job to poll at GET
-    /api/v1/jobs/{id}.
+    method one of grid, monte_carlo, lhs, sobol, points, or list the designs themselves (`points`: JSON
+    rows, or `points_csv`); returns 202 with a job to poll at GET /api/v1/jobs/{id}.
 
     Args:
-        body (StudyIn):
+        body (PreloadTighteningStudyRequest):
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.

@@ -6,13 +6,13 @@ import httpx
 from ... import errors
 from ...client import AuthenticatedClient, Client
 from ...models.error_response import ErrorResponse
-from ...models.study_in import StudyIn
+from ...models.tool_capability_study_request import ToolCapabilityStudyRequest
 from ...types import Response
 
 
 def _get_kwargs(
     *,
-    body: StudyIn,
+    body: ToolCapabilityStudyRequest,
 ) -> dict[str, Any]:
     headers: dict[str, Any] = {}
 
@@ -77,17 +77,17 @@ def _build_response(*, client: AuthenticatedClient | Client, response: httpx.Res
 def sync_detailed(
     *,
     client: AuthenticatedClient | Client,
-    body: StudyIn,
+    body: ToolCapabilityStudyRequest,
 ) -> Response[Any | ErrorResponse]:
     """Tightening tool capability: Cm, Cmk (Cp, Cpk) from measured torques: a design study (grid, Monte
     Carlo, LHS, Sobol')
 
      Vary up to 12 inputs (a grid: up to 3) by distribution (uniform, normal, triangular, lognormal) with
-    method one of grid, monte_carlo, lhs, sobol; returns 202 with a job to poll at GET
-    /api/v1/jobs/{id}.
+    method one of grid, monte_carlo, lhs, sobol, points, or list the designs themselves (`points`: JSON
+    rows, or `points_csv`); returns 202 with a job to poll at GET /api/v1/jobs/{id}.
 
     Args:
-        body (StudyIn):
+        body (ToolCapabilityStudyRequest):
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -111,17 +111,17 @@ def sync_detailed(
 def sync(
     *,
     client: AuthenticatedClient | Client,
-    body: StudyIn,
+    body: ToolCapabilityStudyRequest,
 ) -> Any | ErrorResponse | None:
     """Tightening tool capability: Cm, Cmk (Cp, Cpk) from measured torques: a design study (grid, Monte
     Carlo, LHS, Sobol')
 
      Vary up to 12 inputs (a grid: up to 3) by distribution (uniform, normal, triangular, lognormal) with
-    method one of grid, monte_carlo, lhs, sobol; returns 202 with a job to poll at GET
-    /api/v1/jobs/{id}.
+    method one of grid, monte_carlo, lhs, sobol, points, or list the designs themselves (`points`: JSON
+    rows, or `points_csv`); returns 202 with a job to poll at GET /api/v1/jobs/{id}.
 
     Args:
-        body (StudyIn):
+        body (ToolCapabilityStudyRequest):
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -140,17 +140,17 @@ def sync(
 async def asyncio_detailed(
     *,
     client: AuthenticatedClient | Client,
-    body: StudyIn,
+    body: ToolCapabilityStudyRequest,
 ) -> Response[Any | ErrorResponse]:
     """Tightening tool capability: Cm, Cmk (Cp, Cpk) from measured torques: a design study (grid, Monte
     Carlo, LHS, Sobol')
 
      Vary up to 12 inputs (a grid: up to 3) by distribution (uniform, normal, triangular, lognormal) with
-    method one of grid, monte_carlo, lhs, sobol; returns 202 with a job to poll at GET
-    /api/v1/jobs/{id}.
+    method one of grid, monte_carlo, lhs, sobol, points, or list the designs themselves (`points`: JSON
+    rows, or `points_csv`); returns 202 with a job to poll at GET /api/v1/jobs/{id}.
 
     Args:
-        body (StudyIn):
+        body (ToolCapabilityStudyRequest):
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -172,17 +172,17 @@ async def asyncio_detailed(
 async def asyncio(
     *,
     client: AuthenticatedClient | Client,
-    body: StudyIn,
+    body: ToolCapabilityStudyRequest,
 ) -> Any | ErrorResponse | None:
     """Tightening tool capability: Cm, Cmk (Cp, Cpk) from measured torques: a design study (grid, Monte
     Carlo, LHS, Sobol')
 
      Vary up to 12 inputs (a grid: up to 3) by distribution (uniform, normal, triangular, lognormal) with
-    method one of grid, monte_carlo, lhs, sobol; returns 202 with a job to poll at GET
-    /api/v1/jobs/{id}.
+    method one of grid, monte_carlo, lhs, sobol, points, or list the designs themselves (`points`: JSON
+    rows, or `points_csv`); returns 202 with a job to poll at GET /api/v1/jobs/{id}.
 
     Args:
-        body (StudyIn):
+        body (ToolCapabilityStudyRequest):
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.

@@ -5,25 +5,33 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
-from ..models.study_in_method import StudyInMethod
+from ..models.joint_audit_study_request_method import JointAuditStudyRequestMethod
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
     from ..models.correlation_in import CorrelationIn
-    from ..models.study_in_base import StudyInBase
+    from ..models.joint_audit_study_request_joint_audit_study_base import JointAuditStudyRequestJointAuditStudyBase
+    from ..models.joint_audit_study_request_points_type_0_item import JointAuditStudyRequestPointsType0Item
     from ..models.variable_in import VariableIn
 
 
-T = TypeVar("T", bound="StudyIn")
+T = TypeVar("T", bound="JointAuditStudyRequest")
 
 
 @_attrs_define
-class StudyIn:
+class JointAuditStudyRequest:
     """
     Attributes:
-        variables (list[VariableIn]):
-        base (StudyInBase | Unset): inputs held fixed (defaults fill the rest)
-        method (StudyInMethod | Unset):  Default: StudyInMethod.MONTE_CARLO.
+        base (JointAuditStudyRequestJointAuditStudyBase | Unset): inputs held fixed (defaults fill the rest)
+        variables (list[VariableIn] | Unset): the inputs to vary and how (every method but 'points')
+        method (JointAuditStudyRequestMethod | Unset): how the designs are made; 'points': the designs listed in
+            `points` or `points_csv` (set by giving either) Default: JointAuditStudyRequestMethod.MONTE_CARLO.
+        points (list[JointAuditStudyRequestPointsType0Item] | None | Unset): explicit designs, one object per design:
+            the same numeric inputs in each, numbers in SI or strings with a unit as in a single run ('45 mm'); the other
+            inputs from `base`
+        points_csv (None | str | Unset): explicit designs as CSV text: a header of input names, each with an optional
+            unit in brackets ('clamp_length [mm]'), then one design a line; a cell is a number (in the column's unit, SI
+            without one) or a number with its own unit
         samples (int | Unset):  Default: 1000.
         seed (int | Unset):  Default: 0.
         fidelity (None | str | Unset):
@@ -36,9 +44,11 @@ class StudyIn:
             Default: False.
     """
 
-    variables: list[VariableIn]
-    base: StudyInBase | Unset = UNSET
-    method: StudyInMethod | Unset = StudyInMethod.MONTE_CARLO
+    base: JointAuditStudyRequestJointAuditStudyBase | Unset = UNSET
+    variables: list[VariableIn] | Unset = UNSET
+    method: JointAuditStudyRequestMethod | Unset = JointAuditStudyRequestMethod.MONTE_CARLO
+    points: list[JointAuditStudyRequestPointsType0Item] | None | Unset = UNSET
+    points_csv: None | str | Unset = UNSET
     samples: int | Unset = 1000
     seed: int | Unset = 0
     fidelity: None | str | Unset = UNSET
@@ -50,18 +60,38 @@ class StudyIn:
     keep_points: bool | Unset = False
 
     def to_dict(self) -> dict[str, Any]:
-        variables = []
-        for variables_item_data in self.variables:
-            variables_item = variables_item_data.to_dict()
-            variables.append(variables_item)
-
         base: dict[str, Any] | Unset = UNSET
         if not isinstance(self.base, Unset):
             base = self.base.to_dict()
 
+        variables: list[dict[str, Any]] | Unset = UNSET
+        if not isinstance(self.variables, Unset):
+            variables = []
+            for variables_item_data in self.variables:
+                variables_item = variables_item_data.to_dict()
+                variables.append(variables_item)
+
         method: str | Unset = UNSET
         if not isinstance(self.method, Unset):
             method = self.method.value
+
+        points: list[dict[str, Any]] | None | Unset
+        if isinstance(self.points, Unset):
+            points = UNSET
+        elif isinstance(self.points, list):
+            points = []
+            for points_type_0_item_data in self.points:
+                points_type_0_item = points_type_0_item_data.to_dict()
+                points.append(points_type_0_item)
+
+        else:
+            points = self.points
+
+        points_csv: None | str | Unset
+        if isinstance(self.points_csv, Unset):
+            points_csv = UNSET
+        else:
+            points_csv = self.points_csv
 
         samples = self.samples
 
@@ -107,15 +137,17 @@ class StudyIn:
 
         field_dict: dict[str, Any] = {}
 
-        field_dict.update(
-            {
-                "variables": variables,
-            }
-        )
+        field_dict.update({})
         if base is not UNSET:
             field_dict["base"] = base
+        if variables is not UNSET:
+            field_dict["variables"] = variables
         if method is not UNSET:
             field_dict["method"] = method
+        if points is not UNSET:
+            field_dict["points"] = points
+        if points_csv is not UNSET:
+            field_dict["points_csv"] = points_csv
         if samples is not UNSET:
             field_dict["samples"] = samples
         if seed is not UNSET:
@@ -140,30 +172,64 @@ class StudyIn:
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
         from ..models.correlation_in import CorrelationIn  # noqa: PLC0415
-        from ..models.study_in_base import StudyInBase  # noqa: PLC0415
+        from ..models.joint_audit_study_request_joint_audit_study_base import JointAuditStudyRequestJointAuditStudyBase  # noqa: PLC0415
+        from ..models.joint_audit_study_request_points_type_0_item import JointAuditStudyRequestPointsType0Item  # noqa: PLC0415
         from ..models.variable_in import VariableIn  # noqa: PLC0415
 
         d = dict(src_dict)
-        variables = []
-        _variables = d.pop("variables")
-        for variables_item_data in _variables:
-            variables_item = VariableIn.from_dict(variables_item_data)
-
-            variables.append(variables_item)
-
         _base = d.pop("base", UNSET)
-        base: StudyInBase | Unset
+        base: JointAuditStudyRequestJointAuditStudyBase | Unset
         if isinstance(_base, Unset):
             base = UNSET
         else:
-            base = StudyInBase.from_dict(_base)
+            base = JointAuditStudyRequestJointAuditStudyBase.from_dict(_base)
+
+        _variables = d.pop("variables", UNSET)
+        variables: list[VariableIn] | Unset = UNSET
+        if _variables is not UNSET:
+            variables = []
+            for variables_item_data in _variables:
+                variables_item = VariableIn.from_dict(variables_item_data)
+
+                variables.append(variables_item)
 
         _method = d.pop("method", UNSET)
-        method: StudyInMethod | Unset
+        method: JointAuditStudyRequestMethod | Unset
         if isinstance(_method, Unset):
             method = UNSET
         else:
-            method = StudyInMethod(_method)
+            method = JointAuditStudyRequestMethod(_method)
+
+        def _parse_points(data: object) -> list[JointAuditStudyRequestPointsType0Item] | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                points_type_0 = []
+                _points_type_0 = data
+                for points_type_0_item_data in _points_type_0:
+                    points_type_0_item = JointAuditStudyRequestPointsType0Item.from_dict(points_type_0_item_data)
+
+                    points_type_0.append(points_type_0_item)
+
+                return points_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[JointAuditStudyRequestPointsType0Item] | None | Unset, data)
+
+        points = _parse_points(d.pop("points", UNSET))
+
+        def _parse_points_csv(data: object) -> None | str | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(None | str | Unset, data)
+
+        points_csv = _parse_points_csv(d.pop("points_csv", UNSET))
 
         samples = d.pop("samples", UNSET)
 
@@ -226,10 +292,12 @@ class StudyIn:
 
         keep_points = d.pop("keep_points", UNSET)
 
-        study_in = cls(
-            variables=variables,
+        joint_audit_study_request = cls(
             base=base,
+            variables=variables,
             method=method,
+            points=points,
+            points_csv=points_csv,
             samples=samples,
             seed=seed,
             fidelity=fidelity,
@@ -241,4 +309,4 @@ class StudyIn:
             keep_points=keep_points,
         )
 
-        return study_in
+        return joint_audit_study_request

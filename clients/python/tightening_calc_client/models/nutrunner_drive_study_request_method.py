@@ -1,10 +1,11 @@
 from enum import StrEnum
 
 
-class StudyInMethod(StrEnum):
+class NutrunnerDriveStudyRequestMethod(StrEnum):
     GRID = "grid"
     LHS = "lhs"
     MONTE_CARLO = "monte_carlo"
+    POINTS = "points"
     SOBOL = "sobol"
 
     def __str__(self) -> str:

@@ -6,14 +6,16 @@ from typing import Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
-T = TypeVar("T", bound="StudyInBase")
+T = TypeVar("T", bound="ImpactRareDesignResponseInputs")
 
 
 @_attrs_define
-class StudyInBase:
-    """inputs held fixed (defaults fill the rest)"""
+class ImpactRareDesignResponseInputs:
+    """every input used, defaults filled, SI"""
 
-    additional_properties: dict[str, bool | float | int | list[float] | str] = _attrs_field(init=False, factory=dict)
+    additional_properties: dict[str, bool | float | int | list[float] | None | str] = _attrs_field(
+        init=False, factory=dict
+    )
 
     def to_dict(self) -> dict[str, Any]:
 
@@ -30,12 +32,14 @@ class StudyInBase:
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
         d = dict(src_dict)
-        study_in_base = cls()
+        impact_rare_design_response_inputs = cls()
 
         additional_properties = {}
         for prop_name, prop_dict in d.items():
 
-            def _parse_additional_property(data: object) -> bool | float | int | list[float] | str:
+            def _parse_additional_property(data: object) -> bool | float | int | list[float] | None | str:
+                if data is None:
+                    return data
                 try:
                     if not isinstance(data, list):
                         raise TypeError()
@@ -44,23 +48,23 @@ class StudyInBase:
                     return additional_property_type_4
                 except (TypeError, ValueError, AttributeError, KeyError):
                     pass
-                return cast(bool | float | int | list[float] | str, data)
+                return cast(bool | float | int | list[float] | None | str, data)
 
             additional_property = _parse_additional_property(prop_dict)
 
             additional_properties[prop_name] = additional_property
 
-        study_in_base.additional_properties = additional_properties
-        return study_in_base
+        impact_rare_design_response_inputs.additional_properties = additional_properties
+        return impact_rare_design_response_inputs
 
     @property
     def additional_keys(self) -> list[str]:
         return list(self.additional_properties.keys())
 
-    def __getitem__(self, key: str) -> bool | float | int | list[float] | str:
+    def __getitem__(self, key: str) -> bool | float | int | list[float] | None | str:
         return self.additional_properties[key]
 
-    def __setitem__(self, key: str, value: bool | float | int | list[float] | str) -> None:
+    def __setitem__(self, key: str, value: bool | float | int | list[float] | None | str) -> None:
         self.additional_properties[key] = value
 
     def __delitem__(self, key: str) -> None:

@@ -1,0 +1,9 @@
+from enum import StrEnum
+
+
+class ClutchBallSettingStudyRequestClutchBallSettingStudyBaseStressCorrectionType0(StrEnum):
+    BERGSTRASSER = "bergstrasser"
+    WAHL = "wahl"
+
+    def __str__(self) -> str:
+        return str(self.value)

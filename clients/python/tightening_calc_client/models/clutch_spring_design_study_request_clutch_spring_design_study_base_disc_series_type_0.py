@@ -1,0 +1,10 @@
+from enum import StrEnum
+
+
+class ClutchSpringDesignStudyRequestClutchSpringDesignStudyBaseDiscSeriesType0(StrEnum):
+    A = "A"
+    ANY = "any"
+    B = "B"
+
+    def __str__(self) -> str:
+        return str(self.value)

@@ -1,0 +1,10 @@
+from enum import StrEnum
+
+
+class ClutchSpringDesignStudyRequestClutchSpringDesignStudyBaseSpringMaterialType0(StrEnum):
+    EN10270_1_DH = "EN10270-1-DH"
+    EN10270_1_SH = "EN10270-1-SH"
+    VALUE_2 = "1.4310"
+
+    def __str__(self) -> str:
+        return str(self.value)

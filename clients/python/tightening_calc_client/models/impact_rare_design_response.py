@@ -1,0 +1,231 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, TypeVar, cast
+
+from attrs import define as _attrs_define
+from attrs import field as _attrs_field
+
+from ..models.impact_rare_design_response_error_kind_type_0 import ImpactRareDesignResponseErrorKindType0
+from ..types import UNSET, Unset
+
+if TYPE_CHECKING:
+    from ..models.check_out import CheckOut
+    from ..models.impact_rare_design_response_inputs import ImpactRareDesignResponseInputs
+    from ..models.impact_rare_design_response_series import ImpactRareDesignResponseSeries
+    from ..models.impact_rare_design_response_units import ImpactRareDesignResponseUnits
+    from ..models.impact_rare_design_results import ImpactRareDesignResults
+
+
+T = TypeVar("T", bound="ImpactRareDesignResponse")
+
+
+@_attrs_define
+class ImpactRareDesignResponse:
+    """
+    Attributes:
+        model (str): model name
+        results (ImpactRareDesignResults):
+        units (ImpactRareDesignResponseUnits): SI unit of each result and series
+        rung (str): the rung that ran
+        error_estimate (float | None): estimated relative error of the results (null: not known)
+        elapsed_s (float): compute time, seconds
+        error_kind (ImpactRareDesignResponseErrorKindType0 | None | Unset): what error_estimate promises: 'bound' (no
+            design in the declared ranges exceeds it, measured: docs/accuracy.md) or 'typical' (some do; a note says how
+            often); null with no estimate
+        checks (list[CheckOut] | Unset):
+        notes (list[str] | Unset):
+        warnings (list[str] | Unset):
+        series (ImpactRareDesignResponseSeries | Unset): time series for plots, SI values
+        inputs (ImpactRareDesignResponseInputs | Unset): every input used, defaults filled, SI
+    """
+
+    model: str
+    results: ImpactRareDesignResults
+    units: ImpactRareDesignResponseUnits
+    rung: str
+    error_estimate: float | None
+    elapsed_s: float
+    error_kind: ImpactRareDesignResponseErrorKindType0 | None | Unset = UNSET
+    checks: list[CheckOut] | Unset = UNSET
+    notes: list[str] | Unset = UNSET
+    warnings: list[str] | Unset = UNSET
+    series: ImpactRareDesignResponseSeries | Unset = UNSET
+    inputs: ImpactRareDesignResponseInputs | Unset = UNSET
+    additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
+
+    def to_dict(self) -> dict[str, Any]:
+        model = self.model
+
+        results = self.results.to_dict()
+
+        units = self.units.to_dict()
+
+        rung = self.rung
+
+        error_estimate: float | None
+        error_estimate = self.error_estimate
+
+        elapsed_s = self.elapsed_s
+
+        error_kind: None | str | Unset
+        if isinstance(self.error_kind, Unset):
+            error_kind = UNSET
+        elif isinstance(self.error_kind, ImpactRareDesignResponseErrorKindType0):
+            error_kind = self.error_kind.value
+        else:
+            error_kind = self.error_kind
+
+        checks: list[dict[str, Any]] | Unset = UNSET
+        if not isinstance(self.checks, Unset):
+            checks = []
+            for checks_item_data in self.checks:
+                checks_item = checks_item_data.to_dict()
+                checks.append(checks_item)
+
+        notes: list[str] | Unset = UNSET
+        if not isinstance(self.notes, Unset):
+            notes = self.notes
+
+        warnings: list[str] | Unset = UNSET
+        if not isinstance(self.warnings, Unset):
+            warnings = self.warnings
+
+        series: dict[str, Any] | Unset = UNSET
+        if not isinstance(self.series, Unset):
+            series = self.series.to_dict()
+
+        inputs: dict[str, Any] | Unset = UNSET
+        if not isinstance(self.inputs, Unset):
+            inputs = self.inputs.to_dict()
+
+        field_dict: dict[str, Any] = {}
+        field_dict.update(self.additional_properties)
+        field_dict.update(
+            {
+                "model": model,
+                "results": results,
+                "units": units,
+                "rung": rung,
+                "error_estimate": error_estimate,
+                "elapsed_s": elapsed_s,
+            }
+        )
+        if error_kind is not UNSET:
+            field_dict["error_kind"] = error_kind
+        if checks is not UNSET:
+            field_dict["checks"] = checks
+        if notes is not UNSET:
+            field_dict["notes"] = notes
+        if warnings is not UNSET:
+            field_dict["warnings"] = warnings
+        if series is not UNSET:
+            field_dict["series"] = series
+        if inputs is not UNSET:
+            field_dict["inputs"] = inputs
+
+        return field_dict
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.check_out import CheckOut  # noqa: PLC0415
+        from ..models.impact_rare_design_response_inputs import ImpactRareDesignResponseInputs  # noqa: PLC0415
+        from ..models.impact_rare_design_response_series import ImpactRareDesignResponseSeries  # noqa: PLC0415
+        from ..models.impact_rare_design_response_units import ImpactRareDesignResponseUnits  # noqa: PLC0415
+        from ..models.impact_rare_design_results import ImpactRareDesignResults  # noqa: PLC0415
+
+        d = dict(src_dict)
+        model = d.pop("model")
+
+        results = ImpactRareDesignResults.from_dict(d.pop("results"))
+
+        units = ImpactRareDesignResponseUnits.from_dict(d.pop("units"))
+
+        rung = d.pop("rung")
+
+        def _parse_error_estimate(data: object) -> float | None:
+            if data is None:
+                return data
+            return cast(float | None, data)
+
+        error_estimate = _parse_error_estimate(d.pop("error_estimate"))
+
+        elapsed_s = d.pop("elapsed_s")
+
+        def _parse_error_kind(data: object) -> ImpactRareDesignResponseErrorKindType0 | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, str):
+                    raise TypeError()
+                error_kind_type_0 = ImpactRareDesignResponseErrorKindType0(data)
+
+                return error_kind_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(ImpactRareDesignResponseErrorKindType0 | None | Unset, data)
+
+        error_kind = _parse_error_kind(d.pop("error_kind", UNSET))
+
+        _checks = d.pop("checks", UNSET)
+        checks: list[CheckOut] | Unset = UNSET
+        if _checks is not UNSET:
+            checks = []
+            for checks_item_data in _checks:
+                checks_item = CheckOut.from_dict(checks_item_data)
+
+                checks.append(checks_item)
+
+        notes = cast(list[str], d.pop("notes", UNSET))
+
+        warnings = cast(list[str], d.pop("warnings", UNSET))
+
+        _series = d.pop("series", UNSET)
+        series: ImpactRareDesignResponseSeries | Unset
+        if isinstance(_series, Unset):
+            series = UNSET
+        else:
+            series = ImpactRareDesignResponseSeries.from_dict(_series)
+
+        _inputs = d.pop("inputs", UNSET)
+        inputs: ImpactRareDesignResponseInputs | Unset
+        if isinstance(_inputs, Unset):
+            inputs = UNSET
+        else:
+            inputs = ImpactRareDesignResponseInputs.from_dict(_inputs)
+
+        impact_rare_design_response = cls(
+            model=model,
+            results=results,
+            units=units,
+            rung=rung,
+            error_estimate=error_estimate,
+            elapsed_s=elapsed_s,
+            error_kind=error_kind,
+            checks=checks,
+            notes=notes,
+            warnings=warnings,
+            series=series,
+            inputs=inputs,
+        )
+
+        impact_rare_design_response.additional_properties = d
+        return impact_rare_design_response
+
+    @property
+    def additional_keys(self) -> list[str]:
+        return list(self.additional_properties.keys())
+
+    def __getitem__(self, key: str) -> Any:
+        return self.additional_properties[key]
+
+    def __setitem__(self, key: str, value: Any) -> None:
+        self.additional_properties[key] = value
+
+    def __delitem__(self, key: str) -> None:
+        del self.additional_properties[key]
+
+    def __contains__(self, key: str) -> bool:
+        return key in self.additional_properties

@@ -1,0 +1,9 @@
+from enum import StrEnum
+
+
+class JointAuditStudyRequestJointAuditStudyBaseHeadType0(StrEnum):
+    HEX = "hex"
+    SOCKET = "socket"
+
+    def __str__(self) -> str:
+        return str(self.value)

@@ -1,0 +1,10 @@
+from enum import StrEnum
+
+
+class PreloadControlStudyRequestPreloadControlStudyBaseHoleSeriesType0(StrEnum):
+    COARSE = "coarse"
+    FINE = "fine"
+    MEDIUM = "medium"
+
+    def __str__(self) -> str:
+        return str(self.value)

@@ -1,0 +1,9 @@
+from enum import StrEnum
+
+
+class TraceProgramStudyRequestTraceProgramStudyBaseJointTypeType0(StrEnum):
+    TAPPED = "tapped"
+    THROUGH = "through"
+
+    def __str__(self) -> str:
+        return str(self.value)
