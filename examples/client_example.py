@@ -21,8 +21,8 @@ from tightening_calc_client.models import (
     ErrorResponse,
     PreloadTighteningRequest,
     PreloadTighteningRequestPropertyClassType0,
+    PreloadTighteningStudyRequest,
     PreloadTighteningSweepRequest,
-    StudyIn,
 )
 
 BOLT = {"thread_diameter": "12 mm", "property_class": "8.8"}
@@ -60,7 +60,7 @@ def main(url: str) -> dict[str, Any]:
         torques = sweep.results["tightening_torque"]
 
         # a study: 202 and the job's address, then poll it until it is done
-        study = StudyIn.from_dict(
+        study = PreloadTighteningStudyRequest.from_dict(
             {
                 "base": BOLT,
                 "variables": [{"name": "thread_friction", "low": 0.08, "high": 0.16}],
