@@ -438,7 +438,8 @@ JOINT_INPUTS: tuple[Param, ...] = (
         "K",
         "Absolute temperature of bolt and plates in service (e.g. '150 degC'); absent: room "
         "temperature. At it R_p0.2 of the bolt's class (ISO 898-1 Annex A: 5.6, 8.8, 10.9, "
-        "12.9) sets R7 and R8, and E of bolt and plates (tables by material) set the thermal "
+        "12.9) sets R8 (R7 stays at room temperature: the bolt is tightened cold), and E of "
+        "bolt and plates (tables by material) set the thermal "
         "preload loss in place of bolt_modulus_ratio and plate_modulus_ratio",
         minimum=fa.temperature_range(fa.PROOF_STRENGTH_TEMPERATURES_C)[0],
         maximum=fa.temperature_range(fa.PROOF_STRENGTH_TEMPERATURES_C)[1],
@@ -911,7 +912,9 @@ def _solve(
     )
     delta_s, delta_p = bolt_c.total, parts.total
     hot = _at_temperature(x, col, b, moduli, refusals)
-    yield_t = yield_strength if hot is None else yield_strength * hot.yield_ratio  # R7, R8
+    # R8 only: the bolt is tightened cold (R7, F_M,zul and the torque at room temperature) and
+    # meets R_p0.2(T) in service, under the F_S,max built from the cold F_M,max
+    yield_t = yield_strength if hot is None else yield_strength * hot.yield_ratio
 
     # R3 eccentric clamping and loading (VDI 2230-1 §5.3.2); zero offsets: concentric --------------
     s_sym, lever, edge = col("bolt_offset"), col("load_lever"), col("opening_edge")
@@ -1050,8 +1053,8 @@ def _solve(
     a0 = jt.smallest_area(d0, a_s, where)
     nu = col("utilization")
     beta = _plain(pl.torsion_factor(pitch, d2, d0, mu_g_lo, "vdi2230"))
-    f_mzul_bolt = pl.assembly_preload(yield_t, a0, beta, nu)
-    f_myield = pl.assembly_preload(yield_t, a0, beta, 1.0)
+    f_mzul_bolt = pl.assembly_preload(yield_strength, a0, beta, nu)
+    f_myield = pl.assembly_preload(yield_strength, a0, beta, 1.0)
     # the nut's proof load (ISO 898-2) caps the preload a through bolt may be given
     nut, nut_part, tensile = b.get("_nut") or (None, None, None)
     f_nut: Any = math.nan
@@ -1528,8 +1531,9 @@ def _temperature_notes(
     notes = [
         f"at T = {t:.5g} K ({celsius:.4g} °C): R_p0.2 = {s['_yield_t'] / 1e6:.4g} MPa "
         f"({bolt.yield_strength / 1e6:.4g} MPa × {s['_yield_t'] / bolt.yield_strength:.4f}, "
-        "ISO 898-1 Annex A [NFG-898T], linear between its columns) in R7 (F_M,zul) and R8 "
-        f"(S_F); E_S,T/E_S,RT = {s['bolt_modulus_ratio_at_temperature']:.4f} (steel) and "
+        "ISO 898-1 Annex A [NFG-898T], linear between its columns) in R8 (S_F; R7's F_M,zul "
+        "and the torque at room temperature, the bolt is tightened cold); "
+        f"E_S,T/E_S,RT = {s['bolt_modulus_ratio_at_temperature']:.4f} (steel) and "
         f"E_P,T/E_P,RT = {s['plate_modulus_ratio_at_temperature']:.4f} ({plates}; "
         "[RICHTER-E], [ASME-B31.1-E]) in the thermal loss ΔF_Vth only (VDI 2230-1 5.4.2.3): "
         "δ_S, δ_P, Φ_n and F_Z are the assembly's, at room temperature; R9's F_0.2 and R10's "
@@ -2070,11 +2074,12 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
     Output(
         "yield_strength_at_temperature",
         "Pa",
-        "R7/R8 at service_temperature: R_p0.2(T) = R_p0.2 × R_p0.2,T/R_p0.2,20°C of the class "
-        "(ISO 898-1 Annex A), the yield strength R7 and R8 use (null at room temperature)",
+        "R8 at service_temperature: R_p0.2(T) = R_p0.2 × R_p0.2,T/R_p0.2,20°C of the class "
+        "(ISO 898-1 Annex A), the yield strength of S_F in service (R7, tightened cold, keeps "
+        "R_p0.2 at room temperature; null at room temperature)",
         display_unit="MPa",
         symbol="R_p0.2,T",
-        step="VDI 2230-1 R7",
+        step="VDI 2230-1 R8",
     ),
     Output(
         "bolt_modulus_ratio_at_temperature",
