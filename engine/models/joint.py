@@ -66,6 +66,13 @@ STEEL_ALPHA = 11.5e-6
 
 MAX_PLATES = 3
 
+#: VDI 2230-1's scope in temperature: −40 °C up to the top of ISO 898-1 Annex A (300 °C) [K].
+#: Below 20 °C the tables' 20 °C ratio 1 holds (R_p0.2 and E rise in the cold: conservative).
+COLDEST_SERVICE_K = fa.CELSIUS_ZERO - 40.0
+#: The relative slack on those bounds, for a temperature converted from °F or °C (68 °F is
+#: 293.1499999999992 K, −40 °C is 233.14999999999998 K).
+TEMPERATURE_BOUND_SLACK = 1e-9
+
 # --------------------------------------------------------------------------- inputs
 
 _BOLT_NAMES = (
@@ -437,12 +444,14 @@ JOINT_INPUTS: tuple[Param, ...] = (
         "service_temperature",
         "K",
         "Absolute temperature of bolt and plates in service (e.g. '150 degC'); absent: room "
-        "temperature. At it R_p0.2 of the bolt's class (ISO 898-1 Annex A: 5.6, 8.8, 10.9, "
+        "temperature; −40…300 °C (below 20 °C the 20 °C values, conservative). At it R_p0.2 "
+        "of the bolt's class (ISO 898-1 Annex A: 5.6, 8.8, 10.9, "
         "12.9) sets R8 (R7 stays at room temperature: the bolt is tightened cold), and E of "
         "bolt and plates (tables by material) set the thermal "
         "preload loss in place of bolt_modulus_ratio and plate_modulus_ratio",
-        minimum=fa.temperature_range(fa.PROOF_STRENGTH_TEMPERATURES_C)[0],
-        maximum=fa.temperature_range(fa.PROOF_STRENGTH_TEMPERATURES_C)[1],
+        minimum=COLDEST_SERVICE_K * (1.0 - TEMPERATURE_BOUND_SLACK),
+        maximum=fa.temperature_range(fa.PROOF_STRENGTH_TEMPERATURES_C)[1]
+        * (1.0 + TEMPERATURE_BOUND_SLACK),
         symbol="T",
         group="losses",
     ),
@@ -787,9 +796,10 @@ def _at_temperature(
     steel = fa.youngs_modulus_ratio("steel", t)
     kind = _plate_temperature_class(x)
     if kind is not None:
-        low, high = fa.temperature_range(fa.YOUNGS_MODULUS_AT_TEMPERATURE_GPA[kind][0])
+        high = fa.temperature_range(fa.YOUNGS_MODULUS_AT_TEMPERATURE_GPA[kind][0])[1]
+        low = COLDEST_SERVICE_K
         refusals.add(
-            t > high * (1.0 + 1e-12),
+            t > high * (1.0 + TEMPERATURE_BOUND_SLACK),
             "service_temperature",
             lambda: (
                 f"service_temperature = {t:g} K is beyond the E(T) table of {kind} "
@@ -1539,6 +1549,11 @@ def _temperature_notes(
         "δ_S, δ_P, Φ_n and F_Z are the assembly's, at room temperature; R9's F_0.2 and R10's "
         "p_G stay at room temperature (no public table of p_G at temperature found)"
     ]
+    if celsius < 20.0:
+        notes.append(
+            f"below 20 °C ({celsius:.4g} °C, VDI 2230-1's scope reaches −40 °C) R_p0.2 and E "
+            "keep their 20 °C values (ratio 1): both rise in the cold, so this is conservative"
+        )
     warnings = []
     if float(x["temperature_change"]) == 0.0 and abs(celsius - 20.0) > 1.0:
         warnings.append(

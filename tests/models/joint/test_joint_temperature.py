@@ -105,7 +105,7 @@ def test_steel_and_an_aluminium_plate_without_a_material_by_hand():
 @pytest.mark.parametrize(
     ("extra", "field", "says"),
     [
-        ({"service_temperature": 523.15}, "service_temperature", "293.15…473.15 K"),
+        ({"service_temperature": 523.15}, "service_temperature", "233.15…473.15 K"),
         ({"service_temperature": 373.15, "grade": "A4-70"}, "service_temperature", "5.6, 8.8"),
         ({"service_temperature": 373.15, "bolt_modulus_ratio": 0.9}, "bolt_modulus_ratio", "1"),
     ],
@@ -128,7 +128,7 @@ def test_a_typed_yield_strength_needs_its_class():
     pin("joint.vdi2230", "yield_strength_at_temperature", ok[AT_TEMPERATURE[0]], 7e8 * 875 / 940)
 
 
-@pytest.mark.parametrize("outside", [290.0, 580.0])
+@pytest.mark.parametrize("outside", [233.0, 233.15 * (1 - 2e-9), 573.15 * (1 + 2e-9), 580.0])
 def test_the_declared_range_is_the_table(outside):
     with pytest.raises(InputOutOfRange) as err:
         run(JOINT, {**TORQUE, "service_temperature": outside})
@@ -173,3 +173,33 @@ def test_tightened_cold_to_f_m_zul_and_yield_safety_at_300_c_by_hand():
         for c in run(JOINT, {**example, "service_temperature": 573.15}).checks
         if c.name == "R8_working_stress"
     ).ok
+
+
+@pytest.mark.parametrize(
+    "kelvin",
+    [
+        (68.0 - 32.0) * 5.0 / 9.0 + 273.15,  # 68 °F = 293.1499999999992 K
+        -40.0 + 273.15,  # 233.14999999999998 K, VDI 2230-1's coldest
+        300.0 + 273.15,
+        573.15 * (1 + 5e-10),
+    ],
+)
+def test_the_bounds_take_a_converted_temperature(kelvin):
+    run(JOINT, {**TORQUE, "service_temperature": kelvin})
+
+
+def test_in_the_cold_the_room_temperature_values_hold():
+    """At −20 °C R_p0.2 and E keep their 20 °C values (ratio 1, conservative): S_F, F_M,zul
+    and the thermal loss are the room temperature's, and a note says why."""
+    cold = run(JOINT, TORQUE)
+    frozen = run(JOINT, {**TORQUE, "service_temperature": 253.15})
+    pin("joint.vdi2230", "yield_strength_at_temperature", frozen.results[AT_TEMPERATURE[0]], 640e6)
+    pin(
+        "joint.vdi2230",
+        "plate_modulus_ratio_at_temperature",
+        frozen.results[AT_TEMPERATURE[2]],
+        1.0,
+    )
+    for name in ("yield_safety", "permissible_preload", "thermal_loss"):
+        assert frozen.results[name] == cold.results[name], name
+    assert any("conservative" in n and "−40 °C" in n for n in frozen.notes)
