@@ -731,8 +731,35 @@ def _overflows_squared(value: Any) -> Any:
     return False  # a float that overflows has raised OverflowError already
 
 
-#: Plates at least this stiff are read as steel for E(T) when clamped_material is absent.
-_STEEL_MODULUS_FLOOR = 1.9e11
+#: The E(T) class a plate is read as from its own room-temperature E [Pa], where no material
+#: is named for it (the classes' E at 20 °C: steel 212, grey iron 92…110, nodular iron 170,
+#: aluminium 70 GPa): steel 190…220 GPa, grey cast iron 100…150 GPa, nodular cast iron
+#: 150…175 GPa, aluminium 65…75 GPa; outside every band a plate keeps its room-temperature E.
+PLATE_MODULUS_BANDS: tuple[tuple[str, float, float], ...] = (
+    ("steel", 190e9, 220e9),
+    ("nodular cast iron", 150e9, 175e9),
+    ("grey cast iron", 100e9, 150e9),
+    ("aluminium", 65e9, 75e9),
+)
+
+
+def _modulus_band(kind: str) -> tuple[float, float] | None:
+    """The band of room-temperature E [Pa] of an E(T) class (austenitic steel: steel's)."""
+    kind = "steel" if kind == "austenitic steel" else kind
+    return next(((lo, hi) for k, lo, hi in PLATE_MODULUS_BANDS if k == kind), None)
+
+
+def _in_band(modulus: Any, low: float, high: float) -> Any:
+    """Where a modulus lies in [low, high] (1e-9 slack, for a value converted from GPa or psi)."""
+    return (modulus >= low * (1.0 - 1e-9)) & (modulus <= high * (1.0 + 1e-9))
+
+
+def _material_plates(x: Mapping[str, Any], numbers: list[int]) -> set[int]:
+    """The plates clamped_material names: under the head (plate 1) and, through-bolted, under
+    the nut (the last plate)."""
+    if x.get("clamped_material") is None or not numbers:
+        return set()
+    return {numbers[0], numbers[-1]} if x["joint_type"] == "through" else {numbers[0]}
 
 
 def _strength_class(x: Mapping[str, Any], bolt: Bolt | None) -> str | None:
@@ -766,13 +793,15 @@ def _at_temperature(
     col: Callable[[str], Any],
     b: Mapping[str, Any],
     moduli: list[Any],
+    numbers: list[int],
     refusals: _Refusals,
 ) -> _AtTemperature | None:
     """R_p0.2(T)/R_p0.2 and E(T)/E of bolt and each plate at ``service_temperature``.
 
-    The bolt's R_p0.2 from ISO 898-1 Annex A for its class, its E from the steel table; each
-    plate's E from clamped_material's class, or, without it, the steel table for a plate of
-    E ≥ 190 GPa (steel) and its room-temperature E otherwise (said in a note).
+    The bolt's R_p0.2 from ISO 898-1 Annex A for its class, its E from the steel table. The
+    plates under head and nut take clamped_material's class where it is given (its room E
+    without a table); every other plate is read by its own E (:data:`PLATE_MODULUS_BANDS`),
+    and keeps its room-temperature E outside every band (said in a note).
     """
     if x.get("service_temperature") is None:
         return None
@@ -794,25 +823,35 @@ def _at_temperature(
     t = col("service_temperature")
     yield_ratio = fa.yield_strength_ratio(str(cls), t)
     steel = fa.youngs_modulus_ratio("steel", t)
+    named = _material_plates(x, numbers)
     kind = _plate_temperature_class(x)
-    if kind is not None:
+
+    def beyond(where: Any, what: str, kind: str) -> None:
         high = fa.temperature_range(fa.YOUNGS_MODULUS_AT_TEMPERATURE_GPA[kind][0])[1]
         low = COLDEST_SERVICE_K
         refusals.add(
-            t > high * (1.0 + TEMPERATURE_BOUND_SLACK),
+            where & (t > high * (1.0 + TEMPERATURE_BOUND_SLACK)),
             "service_temperature",
             lambda: (
-                f"service_temperature = {t:g} K is beyond the E(T) table of {kind} "
-                f"({x['clamped_material']}): must be {low:g}…{high:g} K "
-                f"({low - fa.CELSIUS_ZERO:g}…{high - fa.CELSIUS_ZERO:g} °C)"
+                f"service_temperature = {t:g} K is beyond the E(T) table of {kind} ({what}): "
+                f"must be {low:g}…{high:g} K ({low - fa.CELSIUS_ZERO:g}…"
+                f"{high - fa.CELSIUS_ZERO:g} °C)"
             ),
         )
-        plate = fa.youngs_modulus_ratio(kind, t)
-        plates = [plate for _ in moduli]
-    elif x.get("clamped_material") is not None:
-        plates = [1.0 for _ in moduli]  # a material without a table: E at room temperature
-    else:
-        plates = [_pick(e >= _STEEL_MODULUS_FLOOR, steel, 1.0) for e in moduli]
+
+    if kind is not None:
+        beyond(True, str(x["clamped_material"]), kind)
+    plates: list[Any] = []
+    for i, e in zip(numbers, moduli, strict=True):
+        if i in named:
+            plates.append(1.0 if kind is None else fa.youngs_modulus_ratio(kind, t))
+            continue
+        ratio: Any = 1.0  # outside every band: E at room temperature
+        for band, low, high in reversed(PLATE_MODULUS_BANDS):
+            inside = _in_band(e, low, high)
+            beyond(inside, f"plate {i}, E = {e / 1e9:g} GPa", band)
+            ratio = _pick(inside, fa.youngs_modulus_ratio(band, t), ratio)
+        plates.append(ratio)
     return _AtTemperature(yield_ratio, steel, plates)
 
 
@@ -921,7 +960,7 @@ def _solve(
         thick, moduli, d_w, d_h, outer, joint_type, plate_outer_diameters=own_outers
     )
     delta_s, delta_p = bolt_c.total, parts.total
-    hot = _at_temperature(x, col, b, moduli, refusals)
+    hot = _at_temperature(x, col, b, moduli, numbers, refusals)
     # R8 only: the bolt is tightened cold (R7, F_M,zul and the torque at room temperature) and
     # meets R_p0.2(T) in service, under the F_S,max built from the cold F_M,max
     yield_t = yield_strength if hot is None else yield_strength * hot.yield_ratio
@@ -1532,12 +1571,31 @@ def _temperature_notes(
     t = float(x["service_temperature"])
     celsius = t - fa.CELSIUS_ZERO
     material = x.get("clamped_material")
-    if material is None:
-        plates = "plates of E ≥ 190 GPa as steel, others at their room-temperature E"
-    elif _plate_temperature_class(x) is None:
-        plates = f"{material}: no E(T) table, the plates at their room-temperature E"
-    else:
-        plates = f"{material} as {_plate_temperature_class(x)}"
+    kind = _plate_temperature_class(x)
+    numbers = [i for i in range(1, MAX_PLATES + 1) if x.get(f"plate{i}_thickness") is not None]
+    named = _material_plates(x, numbers)
+    read = []
+    warnings = []
+    for i in numbers:
+        e = float(x.get(f"plate{i}_youngs_modulus") or x["plate1_youngs_modulus"])
+        by_e = next((k for k, lo, hi in PLATE_MODULUS_BANDS if _in_band(e, lo, hi)), None)
+        if i in named:
+            read.append(f"plate {i} {material} as {kind or 'no table: room E'}")
+            band = None if kind is None else _modulus_band(kind)
+            if band is not None and not _in_band(e, *band):
+                warnings.append(
+                    f"plate {i}: E = {e / 1e9:.4g} GPa contradicts clamped_material = "
+                    f"{material} ({kind}, {band[0] / 1e9:g}…{band[1] / 1e9:g} GPa): its E(T) "
+                    f"is {kind}'s; name the material under head and nut or correct "
+                    f"plate{i}_youngs_modulus"
+                )
+        else:
+            read.append(f"plate {i} ({e / 1e9:.4g} GPa) as {by_e or 'no band: room E'}")
+    plates = (
+        ", ".join(read)
+        + "; by E: "
+        + ", ".join(f"{k} {lo / 1e9:g}…{hi / 1e9:g} GPa" for k, lo, hi in PLATE_MODULUS_BANDS)
+    )
     notes = [
         f"at T = {t:.5g} K ({celsius:.4g} °C): R_p0.2 = {s['_yield_t'] / 1e6:.4g} MPa "
         f"({bolt.yield_strength / 1e6:.4g} MPa × {s['_yield_t'] / bolt.yield_strength:.4f}, "
@@ -1554,7 +1612,6 @@ def _temperature_notes(
             f"below 20 °C ({celsius:.4g} °C, VDI 2230-1's scope reaches −40 °C) R_p0.2 and E "
             "keep their 20 °C values (ratio 1): both rise in the cold, so this is conservative"
         )
-    warnings = []
     if float(x["temperature_change"]) == 0.0 and abs(celsius - 20.0) > 1.0:
         warnings.append(
             f"service_temperature = {celsius:.4g} °C but temperature_change ΔT_S = 0: the "

@@ -83,14 +83,51 @@ def test_a_12_9_screw_in_aluminium_at_150_c_by_hand():
 
 
 def test_steel_and_an_aluminium_plate_without_a_material_by_hand():
+    """The reviewer's case: the second example with plate 2 at 70 GPa, 200 °C, no material.
+
+    Plate 1 (210 GPa) is read as steel, 199/212; plate 2 (70 GPa) as aluminium, 63/70 = 0.9:
+    E_P,T/E_P,RT = δ_P/(δ_1/r_S + δ_2/r_Al) ≈ 0.9094 and, with ΔT = 0,
+    ΔF_Vth = F_V (1 − (δ_S + δ_P)/(δ_S/r_S + δ_P/r_P)) ≈ 1959 N.
+    """
     design = {**TORQUE, "plate2_youngs_modulus": 7e10, "service_temperature": 473.15}
     hot = run(JOINT, design)
-    # plate 1 (210 GPa) is read as steel, plate 2 (70 GPa, no clamped_material) keeps its E:
-    # E_P,T/E_P,RT = δ_P/(δ_1/r + δ_2), δ_i from the cone and sleeve of the joint's D_A,Gr
+    cold = run(JOINT, {**TORQUE, "plate2_youngs_modulus": 7e10}).results
     parts = jt.clamped_compliance([0.02, 0.02], [2.1e11, 7e10], 0.01663, 0.0135)
-    r = 199.0 / 212.0
+    r_s, r_al = 199.0 / 212.0, 63.0 / 70.0
     d1, d2 = parts.per_plate
-    expected = (d1 + d2) / (d1 / r + d2)
+    r_p = (d1 + d2) / (d1 / r_s + d2 / r_al)
+    pin(
+        "joint.vdi2230",
+        "plate_modulus_ratio_at_temperature",
+        hot.results[AT_TEMPERATURE[2]],
+        r_p,
+        rel=1e-9,
+    )
+    assert hot.results[AT_TEMPERATURE[2]] == pytest.approx(0.9094, abs=5e-5)
+    d_s, d_p = cold["bolt_compliance"], cold["clamped_compliance"]
+    f_v = cold["assembly_preload_min"] - cold["embedding_loss"]
+    loss = f_v * (1.0 - (d_s + d_p) / (d_s / r_s + d_p / r_p))
+    pin("joint.vdi2230", "thermal_loss", hot.results["thermal_loss"], loss, rel=1e-9)
+    assert hot.results["thermal_loss"] == pytest.approx(1959.0, abs=1.0)
+    assert any("plate 2 (70 GPa) as aluminium" in n for n in hot.notes)
+    assert any("temperature_change ΔT_S = 0" in w for w in hot.warnings)
+
+
+def test_a_middle_plate_is_read_by_its_own_modulus():
+    """clamped_material (S235JR, steel) covers the plates under head and nut; the middle one,
+    a 70 GPa aluminium spacer, takes aluminium's 63/70 (Richter) by its own E."""
+    design = {
+        **TORQUE,
+        "plate3_thickness": 0.01,
+        "plate2_youngs_modulus": 7e10,
+        "clamped_material": "S235JR",
+        "service_temperature": 473.15,
+    }
+    hot = run(JOINT, design)
+    parts = jt.clamped_compliance([0.02, 0.02, 0.01], [2.1e11, 7e10, 2.1e11], 0.01663, 0.0135)
+    r_s, r_al = 199.0 / 212.0, 63.0 / 70.0
+    d1, d2, d3 = parts.per_plate
+    expected = (d1 + d2 + d3) / (d1 / r_s + d2 / r_al + d3 / r_s)
     pin(
         "joint.vdi2230",
         "plate_modulus_ratio_at_temperature",
@@ -98,8 +135,30 @@ def test_steel_and_an_aluminium_plate_without_a_material_by_hand():
         expected,
         rel=1e-9,
     )
-    assert any("plates of E ≥ 190 GPa as steel" in n for n in hot.notes)
-    assert any("temperature_change ΔT_S = 0" in w for w in hot.warnings)
+    assert not any("contradicts" in w for w in hot.warnings)
+
+
+def test_a_modulus_that_contradicts_the_material_is_warned():
+    """EN AW-6082 T6 under the head but plate 1 typed at 210 GPa: aluminium's E(T) (the named
+    material) is used, 63/70 at 200 °C, and a warning names both."""
+    design = {**JOINT.examples[3], "plate1_youngs_modulus": 2.1e11, "service_temperature": 473.15}
+    hot = run(JOINT, design)
+    pin(
+        "joint.vdi2230",
+        "plate_modulus_ratio_at_temperature",
+        hot.results[AT_TEMPERATURE[2]],
+        0.9,
+        rel=1e-12,
+    )
+    assert any("plate 1: E = 210 GPa contradicts clamped_material" in w for w in hot.warnings)
+
+
+def test_an_aluminium_plate_by_its_modulus_beyond_its_table_is_refused():
+    """Richter's aluminium row ends at 200 °C: a 70 GPa plate at 250 °C is refused."""
+    design = {**TORQUE, "plate2_youngs_modulus": 7e10, "service_temperature": 523.15}
+    with pytest.raises(InputOutOfRange, match="plate 2, E = 70 GPa") as err:
+        run(JOINT, design)
+    assert err.value.field == "service_temperature" and "473.15 K" in str(err.value)
 
 
 @pytest.mark.parametrize(
