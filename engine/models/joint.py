@@ -600,6 +600,17 @@ class JointSolution:
     assembly_preload_max: float
     max_bolt_force: float
     joint_type: str
+    #: D_A of the plate under the nut (the last plate's, or plate 1's), None: wide plates.
+    nut_outer_diameter: float | None = None
+
+
+def _nut_side_outer(x: Mapping[str, Any], read: Callable[[str], Any]) -> Any:
+    """D_A of the plate the nut bears on: the last plate's own, else plate 1's; None: wide."""
+    given = [i for i in range(1, MAX_PLATES + 1) if x.get(f"plate{i}_thickness") is not None]
+    own = f"plate{max(given, default=1)}_outer_diameter"
+    if x.get(own) is not None:
+        return read(own)
+    return None if x.get("outer_diameter") is None else read("outer_diameter")
 
 
 # --------------------------------------------------------------------------- helpers
@@ -1377,6 +1388,16 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "(δ_P = 4 l_K/(E π (D_A² − d_h²))); the head bears on the sleeve's face only, so "
             "the surface pressure (R10), computed on d_W, is higher than stated"
         )
+    nut_outer = _nut_side_outer(x, lambda name: float(x[name]))
+    if x.get("nut") is not None and bolt.fastener is not None and nut_outer is not None:
+        thread = bolt.fastener.thread
+        nut_w = None if thread is None else fa.nut(str(x["nut"]), thread).bearing_diameter
+        if nut_w is not None and nut_outer < nut_w:
+            warnings.append(
+                f"D_A = {nut_outer * 1e3:.4g} mm under the nut < its d_W = {nut_w * 1e3:.4g} "
+                "mm: the nut bears on the plate's face only; R10 under the nut takes "
+                "A_p = π/4 (D_A² − d_h²)"
+            )
     warnings += _interface_limit_warning(x, bolt)
     if s["cone_tangent"] <= jt.MIN_CONE_TANGENT:
         warnings.append(
@@ -1472,6 +1493,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         fm_max,
         s["max_bolt_force"],
         str(x["joint_type"]),
+        _nut_side_outer(x, lambda name: float(x[name])),
     )
     for hook in CHECK_HOOKS:
         more_checks, more_notes = hook(x, solution)
@@ -2368,7 +2390,13 @@ def _vector_hook_checks(
                 verdict = fa.surface_pressure(force, outer, inner) <= limit
             elif name == "surface_pressure_nut" and fastener.thread is not None:
                 nut = fa.nut(str(x["nut"]), fastener.thread)
-                verdict = fa.surface_pressure(fm_max, nut.bearing_diameter, hole) <= limit
+                nut_outer = _nut_side_outer(x, col)
+                face = (
+                    nut.bearing_diameter
+                    if nut_outer is None
+                    else np.minimum(nut.bearing_diameter, nut_outer)
+                )
+                verdict = fa.surface_pressure(fm_max, face, hole) <= limit
             elif (
                 name == "thread_stripping" and tau is not None and bolt.tensile_strength is not None
             ):
@@ -2479,7 +2507,14 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
             return float(np.broadcast_to(value, (n,))[j])
 
         solution = JointSolution(
-            bolt, at(s["grip"]), at(d_w), at(d_h), at(fm_max), at(f_s_max), joint_type
+            bolt,
+            at(s["grip"]),
+            at(d_w),
+            at(d_h),
+            at(fm_max),
+            at(f_s_max),
+            joint_type,
+            _nut_side_outer(point, lambda name: float(point[name])),
         )
         return _scalar_hooks(point, solution)
 
