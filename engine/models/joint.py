@@ -894,6 +894,12 @@ def _solve(
     numbers: list[int] = []
     for i in range(1, MAX_PLATES + 1):
         if x.get(f"plate{i}_thickness") is None:
+            if i > 1 and x.get(f"plate{i}_outer_diameter") is not None:
+                raise InputOutOfRange(
+                    f"plate{i}_outer_diameter is given without plate{i}_thickness: give "
+                    f"plate{i}_thickness (> 0 mm) for plate {i}, or leave its D_A out",
+                    field=f"plate{i}_outer_diameter",
+                )
             continue
         thick.append(_larger(col(f"plate{i}_thickness"), 0.0))
         moduli.append(col_or(f"plate{i}_youngs_modulus", e1))

@@ -96,3 +96,12 @@ def test_a_sweep_over_the_second_diameter_runs_the_same_lines():
         for name in ("clamped_compliance", "load_factor", "embedding_loss"):
             got = float(many.columns[name][i])
             assert got == pytest.approx(one[name], rel=1e-12), name
+
+
+def test_a_diameter_for_a_plate_not_given_is_refused():
+    """Plate 3's D_A without plate 3 (two plates): refused, naming the field (it was ignored
+    while the note said it was used)."""
+    with pytest.raises(InputOutOfRange) as err:
+        run(JOINT, {**BASE, "plate3_outer_diameter": 0.030})
+    assert err.value.field == "plate3_outer_diameter"
+    assert "plate3_thickness" in str(err.value)
