@@ -1572,7 +1572,10 @@ def _interface_limit_warning(x: Mapping[str, Any], bolt: Bolt) -> list[str]:
     c_t, d_w = float(x["interface_length"]), bolt.bearing_outer_diameter
     tapped = x["joint_type"] == "tapped"
     plates = [x.get(f"plate{i}_thickness") for i in range(1, MAX_PLATES + 1)]
-    h_min = min([float(h) for h in plates if h is not None and float(h) > 0.0] or [0.0])
+    given = [float(h) for h in plates if h is not None and float(h) > 0.0]
+    # h_min: the thinner of the two outer plates, the ones that carry the interface to head and
+    # nut ("the smallest thickness of two clamped plates", [STEELPY-VDI]), not a thin middle shim
+    h_min = min(given[0], given[-1]) if given else 0.0
     limit = float(jt.interface_limit(d_w, h_min, str(x["joint_type"])))
     if c_t <= limit * (1.0 + 1e-12):
         return []

@@ -2477,7 +2477,8 @@ def interface_limit(bearing_diameter: Any, thinnest_plate: Any, joint_type: str)
     bearing_diameter : float or array
         d_W, outer diameter of the head's (or nut's) bearing face, [m]
     thinnest_plate : float or array
-        h_min, the thinnest clamped plate (unused for a tapped joint), [m]
+        h_min, the thinner of the outer clamped plates (under head and nut; unused for a
+        tapped joint), [m]
     joint_type : str
         ``"through"`` or ``"tapped"``, [-]
 
