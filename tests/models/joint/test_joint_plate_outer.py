@@ -105,3 +105,23 @@ def test_a_diameter_for_a_plate_not_given_is_refused():
         run(JOINT, {**BASE, "plate3_outer_diameter": 0.030})
     assert err.value.field == "plate3_outer_diameter"
     assert "plate3_thickness" in str(err.value)
+
+
+@pytest.mark.parametrize("index", range(len(JOINT.examples)))
+def test_every_example_with_equal_diameters_is_the_single_d_a_answer_to_the_bit(index):
+    """Each plate's own D_A equal to plate 1's gives every output, check and warning of the
+    single-D_A joint bit for bit (the nut half-cone's angle is then the head's)."""
+    example = {**JOINT.examples[index]}
+    example.setdefault("outer_diameter", 0.036)
+    own = {
+        f"plate{i}_outer_diameter": example["outer_diameter"]
+        for i in range(2, 4)
+        if example.get(f"plate{i}_thickness") is not None
+    }
+    single = run(JOINT, example)
+    each = run(JOINT, {**example, **own})
+    assert each.results == single.results  # == on floats: bit for bit
+    assert [(c.name, c.ok, c.detail) for c in each.checks] == [
+        (c.name, c.ok, c.detail) for c in single.checks
+    ]
+    assert each.warnings == single.warnings
