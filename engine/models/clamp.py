@@ -644,9 +644,10 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         budget_s=None,
     ).results
     required = float(joint["required_preload_min"])  # type: ignore[arg-type]
-    # R7's R_p0.2 is the joint's: at service_temperature, its R_p0.2(T) (absent: room)
-    hot = joint.get("yield_strength_at_temperature")
-    yield_strength = bolt.yield_strength if hot is None else float(hot)
+    # F_M,zul and ν are the assembly's (VDI 2230-1 R7, tightened cold): the room-temperature
+    # R_p0.2 at any service_temperature, which moves only the F_M,min required (ΔF_Vth, R5)
+    hot = x.get("service_temperature") is not None
+    yield_strength = bolt.yield_strength
     clamp = cap.ClampJoint(
         bolt.pitch,
         bolt.pitch_diameter,
@@ -729,11 +730,11 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         "at the mean torque and the laws' ±3σ friction box (VDI 2230-1 R5); a nut's proof "
         "load, where joint.vdi2230 caps F_M,zul by it, is not applied here",
     ]
-    if hot is not None:
+    if hot:
         notes.append(
-            f"F_M,zul and ν at service_temperature: R_p0.2(T) = "
-            f"{quantity(yield_strength, 'MPa', '.4g')} from joint.vdi2230's R7 (ISO 898-1 "
-            "Annex A for the bolt's class)"
+            "F_M,zul and ν at assembly, at room temperature (R_p0.2 = "
+            f"{quantity(yield_strength, 'MPa', '.4g')}; the bolt is tightened cold, VDI 2230-1 "
+            "R7); service_temperature sets only the F_M,min required (thermal loss, R5)"
         )
     if category in ("A", "B"):
         notes.append(

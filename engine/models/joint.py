@@ -66,6 +66,13 @@ STEEL_ALPHA = 11.5e-6
 
 MAX_PLATES = 3
 
+#: VDI 2230-1's scope in temperature: −40 °C up to the top of ISO 898-1 Annex A (300 °C) [K].
+#: Below 20 °C the tables' 20 °C ratio 1 holds (R_p0.2 and E rise in the cold: conservative).
+COLDEST_SERVICE_K = fa.CELSIUS_ZERO - 40.0
+#: The relative slack on those bounds, for a temperature converted from °F or °C (68 °F is
+#: 293.1499999999992 K, −40 °C is 233.14999999999998 K).
+TEMPERATURE_BOUND_SLACK = 1e-9
+
 # --------------------------------------------------------------------------- inputs
 
 _BOLT_NAMES = (
@@ -437,11 +444,14 @@ JOINT_INPUTS: tuple[Param, ...] = (
         "service_temperature",
         "K",
         "Absolute temperature of bolt and plates in service (e.g. '150 degC'); absent: room "
-        "temperature. At it R_p0.2 of the bolt's class (ISO 898-1 Annex A: 5.6, 8.8, 10.9, "
-        "12.9) sets R7 and R8, and E of bolt and plates (tables by material) set the thermal "
+        "temperature; −40…300 °C (below 20 °C the 20 °C values, conservative). At it R_p0.2 "
+        "of the bolt's class (ISO 898-1 Annex A: 5.6, 8.8, 10.9, "
+        "12.9) sets R8 (R7 stays at room temperature: the bolt is tightened cold), and E of "
+        "bolt and plates (tables by material) set the thermal "
         "preload loss in place of bolt_modulus_ratio and plate_modulus_ratio",
-        minimum=fa.temperature_range(fa.PROOF_STRENGTH_TEMPERATURES_C)[0],
-        maximum=fa.temperature_range(fa.PROOF_STRENGTH_TEMPERATURES_C)[1],
+        minimum=COLDEST_SERVICE_K * (1.0 - TEMPERATURE_BOUND_SLACK),
+        maximum=fa.temperature_range(fa.PROOF_STRENGTH_TEMPERATURES_C)[1]
+        * (1.0 + TEMPERATURE_BOUND_SLACK),
         symbol="T",
         group="losses",
     ),
@@ -590,6 +600,17 @@ class JointSolution:
     assembly_preload_max: float
     max_bolt_force: float
     joint_type: str
+    #: D_A of the plate under the nut (the last plate's, or plate 1's), None: wide plates.
+    nut_outer_diameter: float | None = None
+
+
+def _nut_side_outer(x: Mapping[str, Any], read: Callable[[str], Any]) -> Any:
+    """D_A of the plate the nut bears on: the last plate's own, else plate 1's; None: wide."""
+    given = [i for i in range(1, MAX_PLATES + 1) if x.get(f"plate{i}_thickness") is not None]
+    own = f"plate{max(given, default=1)}_outer_diameter"
+    if x.get(own) is not None:
+        return read(own)
+    return None if x.get("outer_diameter") is None else read("outer_diameter")
 
 
 # --------------------------------------------------------------------------- helpers
@@ -721,8 +742,35 @@ def _overflows_squared(value: Any) -> Any:
     return False  # a float that overflows has raised OverflowError already
 
 
-#: Plates at least this stiff are read as steel for E(T) when clamped_material is absent.
-_STEEL_MODULUS_FLOOR = 1.9e11
+#: The E(T) class a plate is read as from its own room-temperature E [Pa], where no material
+#: is named for it (the classes' E at 20 °C: steel 212, grey iron 92…110, nodular iron 170,
+#: aluminium 70 GPa): steel 190…220 GPa, grey cast iron 100…150 GPa, nodular cast iron
+#: 150…175 GPa, aluminium 65…75 GPa; outside every band a plate keeps its room-temperature E.
+PLATE_MODULUS_BANDS: tuple[tuple[str, float, float], ...] = (
+    ("steel", 190e9, 220e9),
+    ("nodular cast iron", 150e9, 175e9),
+    ("grey cast iron", 100e9, 150e9),
+    ("aluminium", 65e9, 75e9),
+)
+
+
+def _modulus_band(kind: str) -> tuple[float, float] | None:
+    """The band of room-temperature E [Pa] of an E(T) class (austenitic steel: steel's)."""
+    kind = "steel" if kind == "austenitic steel" else kind
+    return next(((lo, hi) for k, lo, hi in PLATE_MODULUS_BANDS if k == kind), None)
+
+
+def _in_band(modulus: Any, low: float, high: float) -> Any:
+    """Where a modulus lies in [low, high] (1e-9 slack, for a value converted from GPa or psi)."""
+    return (modulus >= low * (1.0 - 1e-9)) & (modulus <= high * (1.0 + 1e-9))
+
+
+def _material_plates(x: Mapping[str, Any], numbers: list[int]) -> set[int]:
+    """The plates clamped_material names: under the head (plate 1) and, through-bolted, under
+    the nut (the last plate)."""
+    if x.get("clamped_material") is None or not numbers:
+        return set()
+    return {numbers[0], numbers[-1]} if x["joint_type"] == "through" else {numbers[0]}
 
 
 def _strength_class(x: Mapping[str, Any], bolt: Bolt | None) -> str | None:
@@ -756,13 +804,15 @@ def _at_temperature(
     col: Callable[[str], Any],
     b: Mapping[str, Any],
     moduli: list[Any],
+    numbers: list[int],
     refusals: _Refusals,
 ) -> _AtTemperature | None:
     """R_p0.2(T)/R_p0.2 and E(T)/E of bolt and each plate at ``service_temperature``.
 
-    The bolt's R_p0.2 from ISO 898-1 Annex A for its class, its E from the steel table; each
-    plate's E from clamped_material's class, or, without it, the steel table for a plate of
-    E ≥ 190 GPa (steel) and its room-temperature E otherwise (said in a note).
+    The bolt's R_p0.2 from ISO 898-1 Annex A for its class, its E from the steel table. The
+    plates under head and nut take clamped_material's class where it is given (its room E
+    without a table); every other plate is read by its own E (:data:`PLATE_MODULUS_BANDS`),
+    and keeps its room-temperature E outside every band (said in a note).
     """
     if x.get("service_temperature") is None:
         return None
@@ -784,24 +834,35 @@ def _at_temperature(
     t = col("service_temperature")
     yield_ratio = fa.yield_strength_ratio(str(cls), t)
     steel = fa.youngs_modulus_ratio("steel", t)
+    named = _material_plates(x, numbers)
     kind = _plate_temperature_class(x)
-    if kind is not None:
-        low, high = fa.temperature_range(fa.YOUNGS_MODULUS_AT_TEMPERATURE_GPA[kind][0])
+
+    def beyond(where: Any, what: str, kind: str) -> None:
+        high = fa.temperature_range(fa.YOUNGS_MODULUS_AT_TEMPERATURE_GPA[kind][0])[1]
+        low = COLDEST_SERVICE_K
         refusals.add(
-            t > high * (1.0 + 1e-12),
+            where & (t > high * (1.0 + TEMPERATURE_BOUND_SLACK)),
             "service_temperature",
             lambda: (
-                f"service_temperature = {t:g} K is beyond the E(T) table of {kind} "
-                f"({x['clamped_material']}): must be {low:g}…{high:g} K "
-                f"({low - fa.CELSIUS_ZERO:g}…{high - fa.CELSIUS_ZERO:g} °C)"
+                f"service_temperature = {t:g} K is beyond the E(T) table of {kind} ({what}): "
+                f"must be {low:g}…{high:g} K ({low - fa.CELSIUS_ZERO:g}…"
+                f"{high - fa.CELSIUS_ZERO:g} °C)"
             ),
         )
-        plate = fa.youngs_modulus_ratio(kind, t)
-        plates = [plate for _ in moduli]
-    elif x.get("clamped_material") is not None:
-        plates = [1.0 for _ in moduli]  # a material without a table: E at room temperature
-    else:
-        plates = [_pick(e >= _STEEL_MODULUS_FLOOR, steel, 1.0) for e in moduli]
+
+    if kind is not None:
+        beyond(True, str(x["clamped_material"]), kind)
+    plates: list[Any] = []
+    for i, e in zip(numbers, moduli, strict=True):
+        if i in named:
+            plates.append(1.0 if kind is None else fa.youngs_modulus_ratio(kind, t))
+            continue
+        ratio: Any = 1.0  # outside every band: E at room temperature
+        for band, low, high in reversed(PLATE_MODULUS_BANDS):
+            inside = _in_band(e, low, high)
+            beyond(inside, f"plate {i}, E = {e / 1e9:g} GPa", band)
+            ratio = _pick(inside, fa.youngs_modulus_ratio(band, t), ratio)
+        plates.append(ratio)
     return _AtTemperature(yield_ratio, steel, plates)
 
 
@@ -833,6 +894,12 @@ def _solve(
     numbers: list[int] = []
     for i in range(1, MAX_PLATES + 1):
         if x.get(f"plate{i}_thickness") is None:
+            if i > 1 and x.get(f"plate{i}_outer_diameter") is not None:
+                raise InputOutOfRange(
+                    f"plate{i}_outer_diameter is given without plate{i}_thickness: give "
+                    f"plate{i}_thickness (> 0 mm) for plate {i}, or leave its D_A out",
+                    field=f"plate{i}_outer_diameter",
+                )
             continue
         thick.append(_larger(col(f"plate{i}_thickness"), 0.0))
         moduli.append(col_or(f"plate{i}_youngs_modulus", e1))
@@ -910,8 +977,10 @@ def _solve(
         thick, moduli, d_w, d_h, outer, joint_type, plate_outer_diameters=own_outers
     )
     delta_s, delta_p = bolt_c.total, parts.total
-    hot = _at_temperature(x, col, b, moduli, refusals)
-    yield_t = yield_strength if hot is None else yield_strength * hot.yield_ratio  # R7, R8
+    hot = _at_temperature(x, col, b, moduli, numbers, refusals)
+    # R8 only: the bolt is tightened cold (R7, F_M,zul and the torque at room temperature) and
+    # meets R_p0.2(T) in service, under the F_S,max built from the cold F_M,max
+    yield_t = yield_strength if hot is None else yield_strength * hot.yield_ratio
 
     # R3 eccentric clamping and loading (VDI 2230-1 §5.3.2); zero offsets: concentric --------------
     s_sym, lever, edge = col("bolt_offset"), col("load_lever"), col("opening_edge")
@@ -1050,8 +1119,8 @@ def _solve(
     a0 = jt.smallest_area(d0, a_s, where)
     nu = col("utilization")
     beta = _plain(pl.torsion_factor(pitch, d2, d0, mu_g_lo, "vdi2230"))
-    f_mzul_bolt = pl.assembly_preload(yield_t, a0, beta, nu)
-    f_myield = pl.assembly_preload(yield_t, a0, beta, 1.0)
+    f_mzul_bolt = pl.assembly_preload(yield_strength, a0, beta, nu)
+    f_myield = pl.assembly_preload(yield_strength, a0, beta, 1.0)
     # the nut's proof load (ISO 898-2) caps the preload a through bolt may be given
     nut, nut_part, tensile = b.get("_nut") or (None, None, None)
     f_nut: Any = math.nan
@@ -1325,6 +1394,16 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "(δ_P = 4 l_K/(E π (D_A² − d_h²))); the head bears on the sleeve's face only, so "
             "the surface pressure (R10), computed on d_W, is higher than stated"
         )
+    nut_outer = _nut_side_outer(x, lambda name: float(x[name]))
+    if x.get("nut") is not None and bolt.fastener is not None and nut_outer is not None:
+        thread = bolt.fastener.thread
+        nut_w = None if thread is None else fa.nut(str(x["nut"]), thread).bearing_diameter
+        if nut_w is not None and nut_outer < nut_w:
+            warnings.append(
+                f"D_A = {nut_outer * 1e3:.4g} mm under the nut < its d_W = {nut_w * 1e3:.4g} "
+                "mm: the nut bears on the plate's face only; R10 under the nut takes "
+                "A_p = π/4 (D_A² − d_h²)"
+            )
     warnings += _interface_limit_warning(x, bolt)
     if s["cone_tangent"] <= jt.MIN_CONE_TANGENT:
         warnings.append(
@@ -1420,6 +1499,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         fm_max,
         s["max_bolt_force"],
         str(x["joint_type"]),
+        _nut_side_outer(x, lambda name: float(x[name])),
     )
     for hook in CHECK_HOOKS:
         more_checks, more_notes = hook(x, solution)
@@ -1492,7 +1572,10 @@ def _interface_limit_warning(x: Mapping[str, Any], bolt: Bolt) -> list[str]:
     c_t, d_w = float(x["interface_length"]), bolt.bearing_outer_diameter
     tapped = x["joint_type"] == "tapped"
     plates = [x.get(f"plate{i}_thickness") for i in range(1, MAX_PLATES + 1)]
-    h_min = min([float(h) for h in plates if h is not None and float(h) > 0.0] or [0.0])
+    given = [float(h) for h in plates if h is not None and float(h) > 0.0]
+    # h_min: the thinner of the two outer plates, the ones that carry the interface to head and
+    # nut ("the smallest thickness of two clamped plates", [STEELPY-VDI]), not a thin middle shim
+    h_min = min(given[0], given[-1]) if given else 0.0
     limit = float(jt.interface_limit(d_w, h_min, str(x["joint_type"])))
     if c_t <= limit * (1.0 + 1e-12):
         return []
@@ -1519,23 +1602,47 @@ def _temperature_notes(
     t = float(x["service_temperature"])
     celsius = t - fa.CELSIUS_ZERO
     material = x.get("clamped_material")
-    if material is None:
-        plates = "plates of E ≥ 190 GPa as steel, others at their room-temperature E"
-    elif _plate_temperature_class(x) is None:
-        plates = f"{material}: no E(T) table, the plates at their room-temperature E"
-    else:
-        plates = f"{material} as {_plate_temperature_class(x)}"
+    kind = _plate_temperature_class(x)
+    numbers = [i for i in range(1, MAX_PLATES + 1) if x.get(f"plate{i}_thickness") is not None]
+    named = _material_plates(x, numbers)
+    read = []
+    warnings = []
+    for i in numbers:
+        e = float(x.get(f"plate{i}_youngs_modulus") or x["plate1_youngs_modulus"])
+        by_e = next((k for k, lo, hi in PLATE_MODULUS_BANDS if _in_band(e, lo, hi)), None)
+        if i in named:
+            read.append(f"plate {i} {material} as {kind or 'no table: room E'}")
+            band = None if kind is None else _modulus_band(kind)
+            if band is not None and not _in_band(e, *band):
+                warnings.append(
+                    f"plate {i}: E = {e / 1e9:.4g} GPa contradicts clamped_material = "
+                    f"{material} ({kind}, {band[0] / 1e9:g}…{band[1] / 1e9:g} GPa): its E(T) "
+                    f"is {kind}'s; name the material under head and nut or correct "
+                    f"plate{i}_youngs_modulus"
+                )
+        else:
+            read.append(f"plate {i} ({e / 1e9:.4g} GPa) as {by_e or 'no band: room E'}")
+    plates = (
+        ", ".join(read)
+        + "; by E: "
+        + ", ".join(f"{k} {lo / 1e9:g}…{hi / 1e9:g} GPa" for k, lo, hi in PLATE_MODULUS_BANDS)
+    )
     notes = [
         f"at T = {t:.5g} K ({celsius:.4g} °C): R_p0.2 = {s['_yield_t'] / 1e6:.4g} MPa "
         f"({bolt.yield_strength / 1e6:.4g} MPa × {s['_yield_t'] / bolt.yield_strength:.4f}, "
-        "ISO 898-1 Annex A [NFG-898T], linear between its columns) in R7 (F_M,zul) and R8 "
-        f"(S_F); E_S,T/E_S,RT = {s['bolt_modulus_ratio_at_temperature']:.4f} (steel) and "
+        "ISO 898-1 Annex A [NFG-898T], linear between its columns) in R8 (S_F; R7's F_M,zul "
+        "and the torque at room temperature, the bolt is tightened cold); "
+        f"E_S,T/E_S,RT = {s['bolt_modulus_ratio_at_temperature']:.4f} (steel) and "
         f"E_P,T/E_P,RT = {s['plate_modulus_ratio_at_temperature']:.4f} ({plates}; "
         "[RICHTER-E], [ASME-B31.1-E]) in the thermal loss ΔF_Vth only (VDI 2230-1 5.4.2.3): "
         "δ_S, δ_P, Φ_n and F_Z are the assembly's, at room temperature; R9's F_0.2 and R10's "
         "p_G stay at room temperature (no public table of p_G at temperature found)"
     ]
-    warnings = []
+    if celsius < 20.0:
+        notes.append(
+            f"below 20 °C ({celsius:.4g} °C, VDI 2230-1's scope reaches −40 °C) R_p0.2 and E "
+            "keep their 20 °C values (ratio 1): both rise in the cold, so this is conservative"
+        )
     if float(x["temperature_change"]) == 0.0 and abs(celsius - 20.0) > 1.0:
         warnings.append(
             f"service_temperature = {celsius:.4g} °C but temperature_change ΔT_S = 0: the "
@@ -2070,11 +2177,12 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
     Output(
         "yield_strength_at_temperature",
         "Pa",
-        "R7/R8 at service_temperature: R_p0.2(T) = R_p0.2 × R_p0.2,T/R_p0.2,20°C of the class "
-        "(ISO 898-1 Annex A), the yield strength R7 and R8 use (null at room temperature)",
+        "R8 at service_temperature: R_p0.2(T) = R_p0.2 × R_p0.2,T/R_p0.2,20°C of the class "
+        "(ISO 898-1 Annex A), the yield strength of S_F in service (R7, tightened cold, keeps "
+        "R_p0.2 at room temperature; null at room temperature)",
         display_unit="MPa",
         symbol="R_p0.2,T",
-        step="VDI 2230-1 R7",
+        step="VDI 2230-1 R8",
     ),
     Output(
         "bolt_modulus_ratio_at_temperature",
@@ -2291,7 +2399,13 @@ def _vector_hook_checks(
                 verdict = fa.surface_pressure(force, outer, inner) <= limit
             elif name == "surface_pressure_nut" and fastener.thread is not None:
                 nut = fa.nut(str(x["nut"]), fastener.thread)
-                verdict = fa.surface_pressure(fm_max, nut.bearing_diameter, hole) <= limit
+                nut_outer = _nut_side_outer(x, col)
+                face = (
+                    nut.bearing_diameter
+                    if nut_outer is None
+                    else np.minimum(nut.bearing_diameter, nut_outer)
+                )
+                verdict = fa.surface_pressure(fm_max, face, hole) <= limit
             elif (
                 name == "thread_stripping" and tau is not None and bolt.tensile_strength is not None
             ):
@@ -2402,7 +2516,14 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
             return float(np.broadcast_to(value, (n,))[j])
 
         solution = JointSolution(
-            bolt, at(s["grip"]), at(d_w), at(d_h), at(fm_max), at(f_s_max), joint_type
+            bolt,
+            at(s["grip"]),
+            at(d_w),
+            at(d_h),
+            at(fm_max),
+            at(f_s_max),
+            joint_type,
+            _nut_side_outer(point, lambda name: float(point[name])),
         )
         return _scalar_hooks(point, solution)
 

@@ -614,9 +614,11 @@ def clamped_compliance(
     several materials by integrating each plate's part of the same cone and
     sleeve with its own E (VDI 2230-1:2015 §5.1.2.2; ECSS-E-HB-32-23A §7.6.3
     and misams/BAT instead spread one substitute area over the plates, which
-    differs where the plates differ). The cone angle uses the whole grip and the
-    first plate's D_A (VDI's y = D_A'/d_W at the head); a plate of its own D_A,i caps
-    its part of the same cone there (our reading of §5.1.2.2 plate by plate: VDI's text
+    differs where the plates differ). Each half-cone's angle uses the whole grip and its
+    own side's D_A (VDI's y = D_A'/d_W per side: the head's from the first plate's D_A, a
+    through-bolted joint's nut half from the last plate's), so a mirrored joint gives the
+    same δ_P; tan φ and D_A,Gr returned are the head side's. A plate of its own D_A,i caps
+    its part of its half-cone there (our reading of §5.1.2.2 plate by plate: VDI's text
     was not available). The nut's bearing face is taken as large as the head's.
 
     Examples
@@ -634,6 +636,13 @@ def clamped_compliance(
     ...                         plate_outer_diameters=[None, 0.015])
     >>> round(c2.per_plate[1] * 1e9, 4)
     2.8365
+
+    Mirrored (15 mm under the head, 40 mm under the nut) it gives the same δ_P:
+
+    >>> c3 = clamped_compliance([0.02, 0.02], [2.1e11, 2.1e11], 0.01663, 0.0135, 0.015,
+    ...                         plate_outer_diameters=[None, 0.040])
+    >>> abs(c3.total - c2.total) < 1e-12 * c2.total
+    True
     """
     if len(thicknesses) != len(youngs_moduli) or not thicknesses:
         raise InputOutOfRange("give one Young's modulus per plate", field="plate1_thickness")
@@ -645,19 +654,34 @@ def clamped_compliance(
         outer = outer_diameter  # below d_W: VDI's sleeve, no cone (the cap lies behind z = 0)
     tan = cone_tangent(grip, bearing_diameter, outer, joint) if tangent is None else tangent
     limit = cone_limit_diameter(grip, bearing_diameter, tan, joint)
+    own = plate_outer_diameters or [None] * len(thicknesses)
+    caps = [outer if plate_outer is None else plate_outer for plate_outer in own]
+    # the nut's half-cone takes its angle from the nut side's D_A (the last plate of some
+    # thickness), as the head's from the head side's: a mirrored joint gives the same δ_P
+    tan_nut = tan
+    if joint == "through" and tangent is None and any(o is not None for o in own):
+        nut_outer = outer
+        for h, cap in zip(thicknesses, caps, strict=True):
+            nut_outer = _where(h > 0.0, cap, nut_outer)
+        tan_nut = cone_tangent(grip, bearing_diameter, nut_outer, joint)
     per_plate = []
     z = 0.0
     half = 0.5 * grip
-    own = plate_outer_diameters or [None] * len(thicknesses)
-    for h, e, plate_outer in zip(thicknesses, youngs_moduli, own, strict=True):
+    for h, e, cap in zip(thicknesses, youngs_moduli, caps, strict=True):
         a, b = z, z + h
-        args = (bearing_diameter, hole_diameter, tan, outer if plate_outer is None else plate_outer)
         if joint == "through":
-            integral = _one_sided(_min(a, half), _min(b, half), *args) + _one_sided(
-                grip - _max(b, half), grip - _max(a, half), *args
+            integral = _one_sided(
+                _min(a, half), _min(b, half), bearing_diameter, hole_diameter, tan, cap
+            ) + _one_sided(
+                grip - _max(b, half),
+                grip - _max(a, half),
+                bearing_diameter,
+                hole_diameter,
+                tan_nut,
+                cap,
             )
         else:
-            integral = _one_sided(a, b, *args)
+            integral = _one_sided(a, b, bearing_diameter, hole_diameter, tan, cap)
         per_plate.append(integral / e)
         z = b
     return ClampedCompliance(tuple(per_plate), tan, limit, outer)
@@ -2453,7 +2477,8 @@ def interface_limit(bearing_diameter: Any, thinnest_plate: Any, joint_type: str)
     bearing_diameter : float or array
         d_W, outer diameter of the head's (or nut's) bearing face, [m]
     thinnest_plate : float or array
-        h_min, the thinnest clamped plate (unused for a tapped joint), [m]
+        h_min, the thinner of the outer clamped plates (under head and nut; unused for a
+        tapped joint), [m]
     joint_type : str
         ``"through"`` or ``"tapped"``, [-]
 

@@ -838,6 +838,8 @@ class _Parts:
     stripping: fa.Stripping | None
     length: Any
     key_limit: float | None
+    #: The nut's bearing face: its d_W, or the nut-side plate's D_A where that is smaller.
+    nut_outer: Any = None
 
 
 def _bought_parts(
@@ -854,12 +856,15 @@ def _bought_parts(
     max_assembly_preload: Any,
     tightening_torque: Any,
     working_force: Any = None,
+    nut_outer_diameter: Any = None,
 ) -> _Parts:
     """Surface pressure (VDI 2230-1 R10), thread stripping (R11) and the hex key (ISO 2936).
 
     The one set of lines :func:`bought_part_checks` (one design, with its sentences) and
     :func:`bought_part_verdicts` (many designs) both run; the numbers may be floats or
-    numpy arrays, the catalogue parts are the same for every design.
+    numpy arrays, the catalogue parts are the same for every design. ``nut_outer_diameter``
+    (D_A of the plate under the nut, None: wide) caps the nut's bearing face: the nut bears
+    on min(d_W,nut, D_A) (VDI 2230-1 R10, A_p of the face that carries).
     """
     values: dict[str, Any] = {"fastener": fastener.label}
     verdicts: dict[str, Any] = {}
@@ -885,8 +890,12 @@ def _bought_parts(
         if thread is None:
             raise InputOutOfRange("nut needs a catalogue thread (give thread)", field="nut")
         nut = fa.nut(str(x["nut"]), thread, field="nut")
+        nut_outer: Any = nut.bearing_diameter
+        if nut_outer_diameter is not None:
+            nut_outer = np.minimum(nut_outer, nut_outer_diameter)
+            nut_outer = nut_outer if isinstance(nut_outer, np.ndarray) else float(nut_outer)
         pressures["surface_pressure_nut"] = fa.surface_pressure(
-            max_assembly_preload, nut.bearing_diameter, hole_diameter
+            max_assembly_preload, nut_outer, hole_diameter
         )
         values["surface_pressure_nut"] = pressures["surface_pressure_nut"]
     limit: Any = None
@@ -951,6 +960,7 @@ def _bought_parts(
         stripping,
         length,
         key_limit,
+        None if nut is None else nut_outer,
     )
 
 
@@ -968,6 +978,7 @@ def bought_part_checks(
     max_assembly_preload: float,
     tightening_torque: float | None,
     working_force: float | None = None,
+    nut_outer_diameter: float | None = None,
 ) -> tuple[dict[str, Any], list[Check], list[str]]:
     """Surface pressure, thread stripping and drive torque of the bolt a request describes.
 
@@ -988,6 +999,7 @@ def bought_part_checks(
         max_assembly_preload=max_assembly_preload,
         tightening_torque=tightening_torque,
         working_force=working_force,
+        nut_outer_diameter=nut_outer_diameter,
     )
     values, verdicts = parts.values, parts.verdicts
     checks: list[Check] = []
@@ -1017,9 +1029,11 @@ def bought_part_checks(
                 "compressive yield at 23 °C, so the preload will relax: use a metal sleeve or "
                 "give limiting_surface_pressure for your grade and temperature"
             )
-        area = values["bearing_area"]
         for name, p in parts.pressures.items():
             face = "nut" if name == "surface_pressure_nut" else where
+            area = values["bearing_area"]
+            if face == "nut":
+                area = fa.bearing_area(parts.nut_outer, hole_diameter)
             force_name = "F_S,max" if name == "surface_pressure_working" else "F_M,max"
             ok = bool(verdicts[name])
             need = parts.working_force if force_name == "F_S,max" else max_assembly_preload
@@ -1154,7 +1168,8 @@ def joint_check_hook(x: Mapping[str, Any], solution: Any) -> tuple[list[Check], 
 
     ``solution`` has ``bolt`` (the preload models' resolved bolt),
     ``bearing_diameter``, ``hole_diameter``, ``assembly_preload_max`` and
-    ``max_bolt_force`` (F_S,max): surface pressure at both (VDI 2230-1 R10) and
+    ``max_bolt_force`` (F_S,max), and may have ``nut_outer_diameter`` (D_A of the plate
+    under the nut): surface pressure at both (VDI 2230-1 R10) and
     the engagement (R11), and the hex key against the joint's
     ``tightening_torque`` specification when one is given.
     """
@@ -1175,6 +1190,7 @@ def joint_check_hook(x: Mapping[str, Any], solution: Any) -> tuple[list[Check], 
         if x.get("tightening_torque") is None
         else float(x["tightening_torque"]),
         working_force=solution.max_bolt_force,
+        nut_outer_diameter=getattr(solution, "nut_outer_diameter", None),
     )
     head = fastener.head
     style = x.get("head")

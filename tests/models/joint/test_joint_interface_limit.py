@@ -57,6 +57,15 @@ def test_the_thinnest_plate_sets_g() -> None:
     assert "16.63 + 12 = 28.63 mm" in said
 
 
+def test_a_thin_middle_shim_does_not_set_g() -> None:
+    """Plates 20, 2 (a shim) and 15 mm: h_min is the thinner outer plate, 15 mm, so
+    G = 16.63 + 15 = 31.63 mm as without the shim (not 16.63 + 2 = 18.63 mm)."""
+    shim = {"plate2_thickness": 0.002, "plate3_thickness": 0.015}
+    assert limit_warnings({**shim, "interface_length": G_THROUGH}) == []
+    (said,) = limit_warnings({**shim, "interface_length": 0.0317})
+    assert "16.63 + 15 = 31.63 mm" in said
+
+
 def test_tapped_joint_uses_one_and_a_half_d_w() -> None:
     assert limit_warnings({"joint_type": "tapped", "interface_length": G_TAPPED - 0.05e-3}) == []
     (said,) = limit_warnings({"joint_type": "tapped", "interface_length": 0.026})
