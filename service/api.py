@@ -88,8 +88,11 @@ def _response(result: engine.RunResult, max_series_points: int) -> dict[str, Any
         "error_estimate": result.error_estimate,
         "error_kind": result.error_kind,
         "elapsed_s": result.elapsed_s,
-        "checks": [vars(c) for c in result.checks],
+        "checks": [
+            {**vars(c), "detail_parts": list(c.detail_parts or (c.detail,))} for c in result.checks
+        ],
         "notes": result.notes,
+        "notes_parts": result.notes_parts,
         "warnings": result.warnings,
         "series": result.series,
         "inputs": result.inputs,
@@ -157,6 +160,7 @@ def _encoder(spec: ModelSpec) -> Any:
                 "ok": _coerce("bool", c["ok"]),
                 "detail": c["detail"],
                 "level": c.get("level", "requirement"),
+                "detail_parts": c.get("detail_parts") or [c["detail"]],
             }
             for c in checks
         ]

@@ -21,6 +21,7 @@ import numpy as np
 from . import points
 from .errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange, SolverFailed
 from .spec import Check, ModelSpec, Param, RunContext, Rung, Scratch, Value
+from .text import OPEN, Parts, plain, split
 
 DEFAULT_TOLERANCE = 0.01
 MAX_SWEEP_POINTS = 2000
@@ -43,6 +44,8 @@ class RunResult:
     notes: list[str] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
     series: dict[str, list[float]] = field(default_factory=dict)
+    #: ``notes`` as text and quantities, one entry per note (:func:`engine.core.text.parts`).
+    notes_parts: list[Parts] = field(default_factory=list)
     #: What ``error_estimate`` promises (the rung's :attr:`Rung.estimate_kind`): "bound",
     #: or "typical" (a note then says how often it is exceeded); None with no estimate.
     error_kind: Literal["bound", "typical"] | None = None
@@ -456,6 +459,7 @@ def run(
         caveat = ran.estimate_caveat  # a sentence made on each call: made once here
         if not any(caveat in n for n in notes):
             notes.append(caveat)
+    plain_notes, notes_parts = _sentences(notes)
     return RunResult(
         model=spec.name,
         results=scalars,
@@ -464,12 +468,36 @@ def run(
         error_estimate=error,
         elapsed_s=elapsed,
         inputs=values,
-        checks=spec.levelled(result.checks),
-        notes=notes,
-        warnings=warnings + result.warnings,
+        checks=[_check_parts(c) for c in spec.levelled(result.checks)],
+        notes=plain_notes,
+        warnings=[plain(w) for w in warnings + result.warnings],
         series=curves,
         error_kind=error_kind,
+        notes_parts=notes_parts,
     )
+
+
+def _sentences(texts: list[str]) -> tuple[list[str], list[Parts]]:
+    """Sentences as a person reads them and as parts (:func:`engine.core.text.split`)."""
+    read: list[str] = []
+    parted: list[Parts] = []
+    for text in texts:
+        if OPEN in text:
+            t, p = split(text)
+        else:
+            t, p = text, [text]
+        read.append(t)
+        parted.append(p)
+    return read, parted
+
+
+def _check_parts(check: Check) -> Check:
+    """``check`` with its quantities taken out of ``detail`` into ``detail_parts`` (left
+    empty for a detail without quantities: the detail is its one part)."""
+    if OPEN not in check.detail:
+        return check
+    detail, detail_parts = split(check.detail)
+    return Check(check.name, check.ok, detail, check.level, tuple(detail_parts))
 
 
 def sweep_values(start: float, stop: float, num: int, scale: str = "linear") -> np.ndarray:
