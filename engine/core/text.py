@@ -46,6 +46,7 @@ DISPLAY: dict[str, tuple[str, float, str]] = {
     "N/mm": ("N/m", 1e-3, " N/mm"),
     "kN/mm": ("N/m", 1e-6, " kN/mm"),
     "MPa": ("Pa", 1e-6, " MPa"),
+    "GPa": ("Pa", 1e-9, " GPa"),
     "rpm": ("rad/s", 30.0 / math.pi, " rpm"),
     "deg": ("rad", 180.0 / math.pi, "°"),
     "%": ("1", 100.0, " %"),
