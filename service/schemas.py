@@ -45,6 +45,9 @@ class QuantityOut(BaseModel):
     display_unit: str = Field(description="the unit the plain sentence writes it in")
     digits: int = Field(description="significant digits the plain sentence shows")
     text: str = Field(description="the quantity as the plain sentence writes it")
+    bare: bool = Field(
+        default=False, description="the text is the number alone (a range's first value)"
+    )
 
 
 #: A sentence as parts: texts, and quantities where it has numbers; joined, the texts

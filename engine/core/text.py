@@ -45,6 +45,7 @@ DISPLAY: dict[str, tuple[str, float, str]] = {
     "N*m": ("N*m", 1.0, " N·m"),
     "N/mm": ("N/m", 1e-3, " N/mm"),
     "kN/mm": ("N/m", 1e-6, " kN/mm"),
+    "µm/kN": ("m/N", 1e9, " µm/kN"),
     "MPa": ("Pa", 1e-6, " MPa"),
     "GPa": ("Pa", 1e-9, " GPa"),
     "rpm": ("rad/s", 30.0 / math.pi, " rpm"),
@@ -59,13 +60,15 @@ DISPLAY: dict[str, tuple[str, float, str]] = {
 
 class Quantity(TypedDict):
     """A number in a sentence: ``value`` in ``unit`` (SI, None if not finite), written
-    ``text`` in ``display_unit`` with ``digits`` significant digits."""
+    ``text`` in ``display_unit`` with ``digits`` significant digits; ``bare`` when the text
+    is the number alone, its unit written once after a range ("12.3…14.5 kN")."""
 
     value: float | None
     unit: str
     display_unit: str
     digits: int
     text: str
+    bare: bool
 
 
 #: A sentence as parts: text, and quantities where the sentence has numbers.
@@ -93,12 +96,17 @@ def _digits_shown(number: str) -> int:
     return max(1, len(digits))
 
 
-def q(value: float, display: str, digits: int = 3, *, fmt: str | None = None) -> str:
+def q(
+    value: float, display: str, digits: int = 3, *, fmt: str | None = None, bare: bool = False
+) -> str:
     """A quantity for a sentence: the SI ``value`` written in ``display`` with ``digits``
     significant digits (or the format ``fmt``, e.g. ``".0f"``), marked so the runner can
-    give it to the form as data.
+    give it to the form as data; ``bare`` writes the number without its unit (the first
+    of a range: ``f"{q(lo, 'kN', bare=True)}…{q(hi, 'kN')}"``).
 
-    ``display`` is a key of :data:`DISPLAY`; the SI unit comes from there.
+    ``display`` is a key of :data:`DISPLAY`; the SI unit comes from there. The digits the
+    parts carry are those the text shows, at least 3 ("12 mm" written with ``:g`` carries 3,
+    so 0.472 in, not 0.47 in).
 
     >>> plain(q(23790.0, "kN"))
     '23.8 kN'
@@ -108,8 +116,14 @@ def q(value: float, display: str, digits: int = 3, *, fmt: str | None = None) ->
     3
     """
     text = written(float(value), display, fmt or f".{digits}g")
-    shown = digits if fmt is None else _digits_shown(text.split(" ")[0].rstrip("°"))
-    return f"{OPEN}{float(value)!r}{SEP}{display}{SEP}{shown}{SEP}{text}{CLOSE}"
+    number = text.removesuffix(DISPLAY[display][2])
+    shown = max(3, _digits_shown(number))
+    if fmt is None:
+        shown = min(digits, shown)
+    if bare:
+        text = number
+    flag = "1" if bare else ""
+    return f"{OPEN}{float(value)!r}{SEP}{display}{SEP}{shown}{SEP}{flag}{SEP}{text}{CLOSE}"
 
 
 def plain(sentence: str) -> str:
@@ -128,8 +142,11 @@ def plain(sentence: str) -> str:
 def parts(sentence: str) -> Parts:
     """``sentence`` split into its text and its quantities, in order.
 
-    >>> parts("a " + q(150.0, "N") + " b")
-    ['a ', {'value': 150.0, 'unit': 'N', 'display_unit': 'N', 'digits': 3, 'text': '150 N'}, ' b']
+    >>> parts("a " + q(150.0, "N") + " b")  # doctest: +NORMALIZE_WHITESPACE
+    ['a ', {'value': 150.0, 'unit': 'N', 'display_unit': 'N', 'digits': 3, 'text': '150 N',
+            'bare': False}, ' b']
+    >>> plain(f"{q(12_300.0, 'kN', bare=True)}…{q(14_500.0, 'kN')}")
+    '12.3…14.5 kN'
     >>> parts("no quantity")
     ['no quantity']
     """
@@ -140,11 +157,11 @@ def parts(sentence: str) -> Parts:
     for piece in marked:
         payload, close, rest = piece.partition(CLOSE)
         fields = payload.split(SEP)
-        if not close or len(fields) != 4 or fields[1] not in DISPLAY:
+        if not close or len(fields) != 5 or fields[1] not in DISPLAY:
             # not a quantity this module wrote: keep what a reader would see
             out.append(piece.replace(SEP, "").replace(CLOSE, ""))
             continue
-        raw, display, shown, text = fields
+        raw, display, shown, flag, text = fields
         try:
             value: float | None = float(raw)
             digits = int(shown)
@@ -160,6 +177,7 @@ def parts(sentence: str) -> Parts:
                 display_unit=display,
                 digits=digits,
                 text=text,
+                bare=flag == "1",
             )
         )
         if rest:
