@@ -13,7 +13,7 @@ import math
 from typing import Any
 
 from .spec import Param
-from .text import written
+from .text import q, written
 
 #: One degree, [rad].
 DEG = math.pi / 180.0
@@ -71,20 +71,21 @@ def samples(name: str, unit: str, description: str, **kw: Any) -> Param:
 
 
 def in_mm(value: float) -> str:
-    """A length [m] in mm, 3 significant digits: ``in_mm(0.0042)`` is ``'4.2 mm'``."""
-    return quantity(value, "mm")
+    """A length [m] in mm, 3 significant digits, for a check or a note (:func:`q`):
+    ``plain(in_mm(0.0042))`` is ``'4.2 mm'``."""
+    return q(value, "mm")
 
 
 def in_ms(value: float) -> str:
-    """A time [s] in ms, 3 significant digits."""
-    return quantity(value, "ms")
+    """A time [s] in ms, 3 significant digits, for a check or a note."""
+    return q(value, "ms")
 
 
 def in_n_per_mm(value: float) -> str:
-    """A spring rate [N/m] in N/mm, 4 significant digits."""
-    return quantity(value, "N/mm", ".4g")
+    """A spring rate [N/m] in N/mm, 4 significant digits, for a check or a note."""
+    return q(value, "N/mm", 4)
 
 
 def in_rpm(value: float) -> str:
-    """An angular speed [rad/s] in whole rpm."""
-    return quantity(value, "rpm", ".0f")
+    """An angular speed [rad/s] in whole rpm, for a check or a note."""
+    return q(value, "rpm", fmt=".0f")

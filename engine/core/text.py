@@ -97,14 +97,21 @@ def _digits_shown(number: str) -> int:
 
 
 def q(
-    value: float, display: str, digits: int = 3, *, fmt: str | None = None, bare: bool = False
+    value: float,
+    display: str,
+    digits: int = 3,
+    *,
+    fmt: str | None = None,
+    bare: bool = False,
+    suffix: str | None = None,
 ) -> str:
     """A quantity for a sentence: the SI ``value`` written in ``display`` with ``digits``
     significant digits (or the format ``fmt``, e.g. ``".0f"``), marked so the runner can
     give it to the form as data; ``bare`` writes the number without its unit (the first
     of a range: ``f"{q(lo, 'kN', bare=True)}…{q(hi, 'kN')}"``).
 
-    ``display`` is a key of :data:`DISPLAY`; the SI unit comes from there. The digits the
+    ``display`` is a key of :data:`DISPLAY`; the SI unit comes from there; ``suffix``
+    writes the unit otherwise than :data:`DISPLAY` does (``" N*m"``). The digits the
     parts carry are those the text shows, at least 3 ("12 mm" written with ``:g`` carries 3,
     so 0.472 in, not 0.47 in).
 
@@ -114,9 +121,13 @@ def q(
     '1.2 mm'
     >>> parts(q(201.4, "N*m", fmt=".0f"))[0]["digits"]
     3
+    >>> plain(q(201.4, "N*m", 4, suffix=" N*m"))
+    '201.4 N*m'
     """
     text = written(float(value), display, fmt or f".{digits}g")
     number = text.removesuffix(DISPLAY[display][2])
+    if suffix is not None:
+        text = number + suffix
     shown = max(3, _digits_shown(number))
     if fmt is None:
         shown = min(digits, shown)
