@@ -17,7 +17,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from ..core.errors import InputOutOfRange
-from ..core.params import positive, quantity, samples
+from ..core.params import positive, samples
 from ..core.runner import run
 from ..core.spec import (
     Answer,
@@ -30,6 +30,7 @@ from ..core.spec import (
     Rung,
     fixed_error,
 )
+from ..core.text import q
 from ..numerics import laws
 from ..numerics.laws import Law
 from ..physics import capability as cap
@@ -606,7 +607,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         Check(
             "below_required_preload",
             p_low * 1e6 <= allowed,
-            f"{p_low * 1e6:.3g} ppm below F_M,min = {quantity(required, 'kN', '.4g')} "
+            f"{p_low * 1e6:.3g} ppm below F_M,min = {q(required, 'kN', fmt='.4g')} "
             f"({'≤' if p_low * 1e6 <= allowed else '>'} {allowed:g} ppm allowed)",
         ),
         Check(
