@@ -89,7 +89,14 @@ def _response(result: engine.RunResult, max_series_points: int) -> dict[str, Any
         "error_kind": result.error_kind,
         "elapsed_s": result.elapsed_s,
         "checks": [
-            {**vars(c), "detail_parts": list(c.detail_parts or (c.detail,))} for c in result.checks
+            {
+                "name": c.name,
+                "ok": c.ok,
+                "detail": c.detail,
+                "level": c.level,
+                "detail_parts": c.detail_parts,
+            }
+            for c in result.checks
         ],
         "notes": result.notes,
         "notes_parts": result.notes_parts,

@@ -21,7 +21,7 @@ import numpy as np
 from . import points
 from .errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange, SolverFailed
 from .spec import Check, ModelSpec, Param, RunContext, Rung, Scratch, Value
-from .text import OPEN, Parts, plain, split
+from .text import OPEN, Parts, parts, plain
 
 DEFAULT_TOLERANCE = 0.01
 MAX_SWEEP_POINTS = 2000
@@ -44,11 +44,17 @@ class RunResult:
     notes: list[str] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
     series: dict[str, list[float]] = field(default_factory=dict)
-    #: ``notes`` as text and quantities, one entry per note (:func:`engine.core.text.parts`).
-    notes_parts: list[Parts] = field(default_factory=list)
+    #: ``notes`` as the model wrote them, quantities marked (:func:`engine.core.text.q`);
+    #: empty when no note has one.
+    marked_notes: list[str] = field(default_factory=list, repr=False)
     #: What ``error_estimate`` promises (the rung's :attr:`Rung.estimate_kind`): "bound",
     #: or "typical" (a note then says how often it is exceeded); None with no estimate.
     error_kind: Literal["bound", "typical"] | None = None
+
+    @property
+    def notes_parts(self) -> list[Parts]:
+        """``notes`` as text and quantities, one entry per note (:func:`engine.core.text.parts`)."""
+        return [parts(n) for n in self.marked_notes or self.notes]
 
 
 @dataclass
@@ -459,7 +465,7 @@ def run(
         caveat = ran.estimate_caveat  # a sentence made on each call: made once here
         if not any(caveat in n for n in notes):
             notes.append(caveat)
-    plain_notes, notes_parts = _sentences(notes)
+    marked = any(OPEN in n for n in notes)
     return RunResult(
         model=spec.name,
         results=scalars,
@@ -469,35 +475,19 @@ def run(
         elapsed_s=elapsed,
         inputs=values,
         checks=[_check_parts(c) for c in spec.levelled(result.checks)],
-        notes=plain_notes,
+        notes=[plain(n) for n in notes] if marked else notes,
         warnings=[plain(w) for w in warnings + result.warnings],
         series=curves,
         error_kind=error_kind,
-        notes_parts=notes_parts,
+        marked_notes=notes if marked else [],
     )
 
 
-def _sentences(texts: list[str]) -> tuple[list[str], list[Parts]]:
-    """Sentences as a person reads them and as parts (:func:`engine.core.text.split`)."""
-    read: list[str] = []
-    parted: list[Parts] = []
-    for text in texts:
-        if OPEN in text:
-            t, p = split(text)
-        else:
-            t, p = text, [text]
-        read.append(t)
-        parted.append(p)
-    return read, parted
-
-
 def _check_parts(check: Check) -> Check:
-    """``check`` with its quantities taken out of ``detail`` into ``detail_parts`` (left
-    empty for a detail without quantities: the detail is its one part)."""
+    """``check`` with a plain ``detail``, the marked one kept for its parts."""
     if OPEN not in check.detail:
         return check
-    detail, detail_parts = split(check.detail)
-    return Check(check.name, check.ok, detail, check.level, tuple(detail_parts))
+    return Check(check.name, check.ok, plain(check.detail), check.level, check.detail)
 
 
 def sweep_values(start: float, stop: float, num: int, scale: str = "linear") -> np.ndarray:

@@ -88,15 +88,19 @@ def written(value: float, display: str, fmt: str = ".3g") -> str:
     >>> written(math.radians(45.0), "deg")
     '45°'
     """
-    _, factor, suffix = DISPLAY[display]
-    return f"{value * factor:{fmt}}{suffix}"
+    return _number(value, display, fmt) + DISPLAY[display][2]
+
+
+def _number(value: float, display: str, fmt: str) -> str:
+    """The number of :func:`written`, without its unit."""
+    return f"{value * DISPLAY[display][1]:{fmt}}"
 
 
 def _digits_shown(number: str) -> int:
-    """Significant digits of a number as :func:`written` wrote it ("0.0450" → 3)."""
-    mantissa = number.split("e")[0].split("E")[0]
-    digits = "".join(c for c in mantissa if c.isdigit()).lstrip("0")
-    return max(1, len(digits))
+    """Significant digits of a number as :func:`written` wrote it ("0.0450" → 3,
+    "-1.50e+03" → 3)."""
+    mantissa = number.partition("e")[0].lstrip("-0.").replace(".", "")
+    return max(1, len(mantissa))
 
 
 def q(
@@ -127,17 +131,13 @@ def q(
     >>> plain(q(201.4, "N*m", 4, suffix=" N*m"))
     '201.4 N*m'
     """
-    text = written(float(value), display, fmt or f".{digits}g")
-    number = text.removesuffix(DISPLAY[display][2])
-    if suffix is not None:
-        text = number + suffix
+    value = float(value)
+    number = _number(value, display, fmt or f".{digits}g")
+    text = number if bare else number + (DISPLAY[display][2] if suffix is None else suffix)
     shown = max(3, _digits_shown(number))
-    if fmt is None:
-        shown = min(digits, shown)
-    if bare:
-        text = number
-    flag = "1" if bare else ""
-    return f"{OPEN}{float(value)!r}{SEP}{display}{SEP}{shown}{SEP}{flag}{SEP}{text}{CLOSE}"
+    if fmt is None and digits < shown:
+        shown = digits
+    return f"{OPEN}{value!r}{SEP}{display}{SEP}{shown}{SEP}{'1' if bare else ''}{SEP}{text}{CLOSE}"
 
 
 def plain(sentence: str) -> str:
@@ -150,7 +150,16 @@ def plain(sentence: str) -> str:
     """
     if OPEN not in sentence:
         return sentence
-    return "".join(p if isinstance(p, str) else p["text"] for p in parts(sentence))
+    head, *marked = sentence.split(OPEN)
+    out = [head]
+    for piece in marked:
+        payload, close, rest = piece.partition(CLOSE)
+        fields = payload.split(SEP)
+        if close and len(fields) == 5 and fields[1] in DISPLAY:
+            out += (fields[4], rest)  # a quantity's text is its last field
+        else:  # not a quantity this module wrote, as parts() reads it
+            out.append(piece.replace(SEP, "").replace(CLOSE, ""))
+    return "".join(out)
 
 
 def parts(sentence: str) -> Parts:
@@ -168,42 +177,39 @@ def parts(sentence: str) -> Parts:
         return [sentence]
     head, *marked = sentence.split(OPEN)
     out: Parts = [head] if head else []
+
+    def add(text: str) -> None:  # neighbouring texts joined
+        if out and isinstance(out[-1], str):
+            out[-1] += text
+        elif text:
+            out.append(text)
+
     for piece in marked:
         payload, close, rest = piece.partition(CLOSE)
         fields = payload.split(SEP)
         if not close or len(fields) != 5 or fields[1] not in DISPLAY:
             # not a quantity this module wrote: keep what a reader would see
-            out.append(piece.replace(SEP, "").replace(CLOSE, ""))
+            add(piece.replace(SEP, "").replace(CLOSE, ""))
             continue
         raw, display, shown, flag, text = fields
         try:
-            value: float | None = float(raw)
+            value = float(raw)
             digits = int(shown)
         except ValueError:
-            out.append(text + rest)
+            add(text + rest)
             continue
-        if value is not None and not math.isfinite(value):
-            value = None
         out.append(
-            Quantity(
-                value=value,
-                unit=DISPLAY[display][0],
-                display_unit=display,
-                digits=digits,
-                text=text,
-                bare=flag == "1",
-            )
+            {
+                "value": value if math.isfinite(value) else None,
+                "unit": DISPLAY[display][0],
+                "display_unit": display,
+                "digits": digits,
+                "text": text,
+                "bare": flag == "1",
+            }
         )
-        if rest:
-            out.append(rest)
-    # neighbouring texts joined, so a sentence without quantities is one text
-    joined: Parts = []
-    for p in out:
-        if isinstance(p, str) and joined and isinstance(joined[-1], str):
-            joined[-1] = joined[-1] + p
-        else:
-            joined.append(p)
-    return joined or [""]
+        add(rest)
+    return out or [""]
 
 
 def split(sentence: str) -> tuple[str, Parts]:
