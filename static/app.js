@@ -2299,6 +2299,7 @@ function switchDecimal(sep) {
     if (!q.ok) return;
     const text = localNumber(q.canonical, now) + (q.unit ? " " + q.unit : "");
     if (input.dataset.shown === input.value) input.dataset.shown = text; // still the loaded value
+    if (input.dataset.exactShown === input.value) input.dataset.exactShown = text; // still converted
     input.value = text;
   };
   for (const p of m.inputs) {
