@@ -8,12 +8,14 @@ text reads as the sentence always read once :func:`plain` has taken the marks ou
 display unit, the significant digits shown and the text as written).
 
 The marks are three characters of Unicode's private use area, which no sentence of a
-model writes otherwise: a quantity is ``OPEN value SEP display SEP digits SEP text
-CLOSE``. A sentence survives f-strings, joins and concatenation with its quantities in
-it; the runner takes the marks out of every check, note and warning before they leave
-the engine (:func:`split`), so an API client reads the plain sentence as before and,
-beside it, the parts. Reading the marks is splitting on those three characters: no
-pattern is matched against numbers in free text.
+model writes otherwise: a quantity is ``OPEN value SEP display SEP digits SEP bare SEP
+text CLOSE``. A sentence survives f-strings, joins and concatenation with its quantities
+in it; the runner takes the marks out of every check, note and warning before they leave
+the engine (:func:`plain`) and keeps the marked sentences, from which a check's
+``detail_parts`` and the answer's ``notes_parts`` are read when asked (:func:`parts`): an
+API client reads the plain sentence as before and, beside it, the parts. Reading the
+marks is splitting on those characters: no pattern is matched against numbers in free
+text. Refusals (exceptions) keep plain text (:func:`engine.core.params.quantity`).
 
 >>> s = f"F_M = {q(23790.0, 'kN')} is below F_M,min"
 >>> plain(s)
