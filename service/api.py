@@ -89,8 +89,18 @@ def _response(result: engine.RunResult, max_series_points: int) -> dict[str, Any
         "error_estimate": result.error_estimate,
         "error_kind": result.error_kind,
         "elapsed_s": result.elapsed_s,
-        "checks": [vars(c) for c in result.checks],
+        "checks": [
+            {
+                "name": c.name,
+                "ok": c.ok,
+                "detail": c.detail,
+                "level": c.level,
+                "detail_parts": c.detail_parts,
+            }
+            for c in result.checks
+        ],
         "notes": result.notes,
+        "notes_parts": result.notes_parts,
         "warnings": result.warnings,
         "series": result.series,
         "inputs": result.inputs,
@@ -158,6 +168,7 @@ def _encoder(spec: ModelSpec) -> Any:
                 "ok": _coerce("bool", c["ok"]),
                 "detail": c["detail"],
                 "level": c.get("level", "requirement"),
+                "detail_parts": c.get("detail_parts") or [c["detail"]],
             }
             for c in checks
         ]

@@ -36,6 +36,25 @@ from .units import (
 SIValue = float | int | bool | str | list[float] | None
 
 
+class QuantityOut(BaseModel):
+    """A number in a check's or a note's sentence, as data: the form writes it in the
+    unit system the user chose."""
+
+    value: float | None = Field(description="SI value (null: not finite)")
+    unit: str = Field(description="SI unit, as the model's outputs write units")
+    display_unit: str = Field(description="the unit the plain sentence writes it in")
+    digits: int = Field(description="significant digits the plain sentence shows")
+    text: str = Field(description="the quantity as the plain sentence writes it")
+    bare: bool = Field(
+        default=False, description="the text is the number alone (a range's first value)"
+    )
+
+
+#: A sentence as parts: texts, and quantities where it has numbers; joined, the texts
+#: and the quantities' ``text`` are the plain sentence.
+SentenceParts = list[str | QuantityOut]
+
+
 class CheckOut(BaseModel):
     name: str
     ok: bool
@@ -43,6 +62,9 @@ class CheckOut(BaseModel):
     #: "requirement": a standard's condition (a failure fails the design); "advice": a rule
     #: of thumb or a recommendation (a failure warns).
     level: Literal["requirement", "advice"] = "requirement"
+    detail_parts: SentenceParts = Field(
+        default_factory=list, description="detail as texts and quantities (SI values)"
+    )
 
 
 class ErrorItem(BaseModel):
@@ -383,6 +405,13 @@ def response_model(spec: ModelSpec) -> type[BaseModel]:
         elapsed_s=(float, Field(description="compute time, seconds")),
         checks=(list[CheckOut], Field(default_factory=list)),
         notes=(list[str], Field(default_factory=list)),
+        notes_parts=(
+            list[SentenceParts],
+            Field(
+                default_factory=list,
+                description="each note as texts and quantities (SI values), as notes",
+            ),
+        ),
         warnings=(list[str], Field(default_factory=list)),
         series=(
             dict[str, list[float]],

@@ -8,7 +8,7 @@
 // appears here without any change to this file.
 
 import { choiceName } from "./choices.js";
-import { decimalSeparator, echoNumber, isPlain, localNumber, parseNum, readNumber, readQuantity, readSamples, setDecimalSeparator } from "./numbers.js";
+import { decimalSeparator, echoNumber, formatNumber, group, isPlain, localNumber, parseNum, readNumber, readQuantity, readSamples, setDecimalSeparator, typedDigits } from "./numbers.js";
 
 const API = "api/v1";
 const uPlot = window.uPlot;
@@ -98,28 +98,33 @@ function sigFigs(err) {
   return Math.min(6, Math.max(2, Math.ceil(-Math.log10(err)) + 1));
 }
 
+/** A value for the reader (numbers.js's formatNumber, shared with the study page). */
 function fmt(x, sig = 4) {
   if (x === null || x === undefined) return "—";
   if (typeof x === "boolean") return x ? "yes" : "no";
   if (typeof x !== "number") return String(x);
-  if (x === 0) return "0";
-  const a = Math.abs(x);
-  if (a >= 1e6 || a < 1e-3) return x.toExponential(sig - 1).replace("e+", "e");
-  const p = x.toPrecision(sig);
-  return group(p.includes("e") ? String(Number(p)) : p);
-}
-
-/** Digit grouping with a narrow no-break space, for integer parts of five digits or more. */
-const GROUP = "\u202f";
-function group(s) {
-  const m = String(s).match(/^([+-]?)(\d+)(\.\d+)?$/);
-  if (!m || m[2].length < 5) return s;
-  return m[1] + m[2].replace(/\B(?=(\d{3})+(?!\d))/g, GROUP) + (m[3] || "");
+  return formatNumber(x, sig);
 }
 
 /** A number for a text field, in the user's decimal separator (see fieldNumber). */
 function fieldText(x, sig = 10) {
   return localNumber(fieldNumber(x, sig));
+}
+
+/**
+ * Digits to show a loaded (SI) value of ``p`` with in another unit: two more than it has
+ * in the model's display unit, 5 to 7 (0.012 m, "12 mm", reads "0.47244 in", not
+ * "0.4724409 in"); the exact SI value is still what is sent until the field is edited.
+ */
+function loadedDigits(p, si) {
+  const shown = si / unitChoices(p.unit, p.display_unit)[0].factor;
+  if (!Number.isFinite(shown) || shown === 0) return 7;
+  return Math.min(7, Math.max(5, typedDigits(String(Number(shown.toPrecision(7)))) + 2));
+}
+
+/** Digits to show a typed value with in another unit: two more than were typed, 4 to 10. */
+function convertedDigits(canonical) {
+  return Math.min(10, Math.max(4, typedDigits(canonical) + 2));
 }
 
 /**
@@ -593,8 +598,16 @@ function changeUnit(p, input, sel) {
     else if (r.ok) input.value = samplesText(r.values.map((x) => x * prev), { factor: next });
   } else if (!touched(input) && input.dataset.si !== undefined) {
     // still the loaded value: convert from its exact SI value, and keep it untouched
-    input.value = input.dataset.shown = fieldText(Number(input.dataset.si) / next, 7);
-  } else if (v !== "" && Number.isFinite(parseNum(v))) input.value = fieldText((parseNum(v) * prev) / next);
+    input.value = input.dataset.shown = fieldText(Number(input.dataset.si) / next, loadedDigits(p, Number(input.dataset.si)));
+  } else if (v !== "" && Number.isFinite(parseNum(v))) {
+    // a typed value: shown to the precision typed (two digits more), not 10 digits of
+    // noise; its exact value is what is sent until the field is edited (exactSI)
+    const kept = input.dataset.exact !== undefined && v === input.dataset.exactShown; // converted before
+    const si = kept ? Number(input.dataset.exact) : parseNum(v) * prev;
+    const digits = kept ? Number(input.dataset.digits) : convertedDigits(readNumber(v).canonical);
+    input.value = fieldText(si / next, digits);
+    Object.assign(input.dataset, { exact: String(si), exactShown: input.value, digits: String(digits) });
+  }
   sel.dataset.prev = sel.value;
   document.getElementById("hint-" + p.name).textContent = hintText(p);
   checkField(p);
@@ -613,6 +626,7 @@ function fillForm(m, key) {
   for (const p of m.inputs) {
     const input = document.getElementById("in-" + p.name);
     const v = p.name in values ? values[p.name] : p.default;
+    delete input.dataset.exact; // a converted typed value (changeUnit): replaced
     if (p.kind === "bool") input.checked = Boolean(v);
     else if (p.kind === "choice" || p.kind === "text") input.value = v ?? "";
     else if (p.kind === "samples") {
@@ -623,7 +637,7 @@ function fillForm(m, key) {
       input.value = v; // a unit string ("45 mm"): sent as written
       delete input.dataset.si;
     } else {
-      input.value = v === null || v === undefined ? "" : fieldText(inUnit(v, currentUnit(p)), 7);
+      input.value = v === null || v === undefined ? "" : fieldText(inUnit(v, currentUnit(p)), loadedDigits(p, v));
       if (v === null || v === undefined) delete input.dataset.si;
       else input.dataset.si = String(v);
     }
@@ -636,6 +650,16 @@ function fillForm(m, key) {
   if (chooser) chooser.value = state.example;
   syncUsage(m);
   markStale();
+}
+
+/**
+ * The exact SI value a number field stands for, or undefined: a loaded value not edited
+ * since, or a typed value converted to another unit and not edited since (shown rounded).
+ */
+function exactSI(input) {
+  if (!touched(input) && input.dataset.si !== undefined) return Number(input.dataset.si);
+  if (input.dataset.exact !== undefined && input.value === input.dataset.exactShown) return Number(input.dataset.exact);
+  return undefined;
 }
 
 function shownValue(input) {
@@ -674,7 +698,13 @@ function applyParams(m, params) {
       const opt = [...sel.options].find((o) => norm(o.value) === norm(match[2]) || norm(o.textContent) === norm(match[2]));
       if (opt) {
         sel.value = opt.value; sel.dataset.prev = opt.value; input.value = linkNumber(match[1]);
-        if (input.dataset.si !== undefined) input.dataset.shown = fieldText(Number(input.dataset.si) / Number(opt.dataset.factor), 7);
+        if (input.dataset.si !== undefined) {
+          const si = Number(input.dataset.si), factor = Number(opt.dataset.factor);
+          input.dataset.shown = fieldText(si / factor, loadedDigits(p, si));
+          // the loaded value itself (a link holds it to 10 digits): shown rounded, sent exact
+          const linked = readNumber(match[1], ".").value * factor;
+          if (Math.abs(linked - si) <= 1e-9 * Math.abs(si)) input.value = input.dataset.shown;
+        }
       }
       else input.value = raw; // the API will parse it, or say why not
     } else if (match && (!match[2] || sel?.dataset.api === match[2])) input.value = linkNumber(match[1]);
@@ -815,7 +845,7 @@ function requestBody(m, { skip = null } = {}) {
       continue;
     }
     const q = readQuantity(raw);
-    if (!touched(input) && input.dataset.si !== undefined) body[p.name] = Number(input.dataset.si);
+    if (exactSI(input) !== undefined) body[p.name] = exactSI(input);
     else if (q.ok && !q.unit) body[p.name] = u.api ? `${q.canonical} ${u.api}` : q.value;
     else if (q.ok) body[p.name] = `${q.canonical} ${q.unit}`; // a unit typed with the number
     else body[p.name] = raw; // the form refuses it before sending; the server would too
@@ -961,9 +991,11 @@ function formInputs(m) {
       out[p.name] = r.ok ? [...r.canonical, ...(u.api ? [u.api] : [])].join(" ") : raw;
     } else if (p.kind === "choice" || p.kind === "text" || !readQuantity(raw).ok) out[p.name] = raw;
     else {
-      // canonical numbers (a point, no grouping): the link means the same on every machine
-      const q = readQuantity(raw), u = currentUnit(p);
-      out[p.name] = q.unit ? `${q.canonical} ${q.unit}` : u.api ? `${q.canonical} ${u.api}` : q.canonical;
+      // canonical numbers (a point, no grouping): the link means the same on every machine;
+      // a value shown rounded (loaded, or converted) with its exact value to 10 digits
+      const q = readQuantity(raw), u = currentUnit(p), exact = exactSI(input);
+      const n = exact !== undefined && !q.unit ? fieldNumber(exact / u.factor, 10) : q.canonical;
+      out[p.name] = q.unit ? `${n} ${q.unit}` : u.api ? `${n} ${u.api}` : n;
     }
   }
   return out;
@@ -988,7 +1020,7 @@ function snapshot(m) {
     const raw = input.value.trim();
     if (p.kind === "choice" || p.kind === "text") { snap[p.name] = raw; continue; }
     if (p.kind === "samples") { snap[p.name] = `${raw} ${currentUnit(p).api}`; continue; }
-    if (!touched(input) && input.dataset.si !== undefined) snap[p.name] = Number(input.dataset.si);
+    if (exactSI(input) !== undefined) snap[p.name] = exactSI(input);
     else if (Number.isFinite(parseNum(raw))) snap[p.name] = parseNum(raw) * currentUnit(p).factor;
     else snap[p.name] = raw;
   }
@@ -1148,13 +1180,44 @@ function checkName(c) {
   return c.name.replaceAll("_", " ");
 }
 
+/**
+ * A check's detail or a note in the unit system chosen. The API gives each sentence as
+ * parts, texts and quantities (SI value, unit, the digits shown); in imperial each
+ * quantity is converted as the results table converts a value of its unit, to the digits
+ * the sentence showed ("F_M = 23.8 kN" reads "F_M = 5350 lbf"). Metric, and sentences
+ * without parts, read as the model wrote them.
+ */
+function sentenceText(text, parts) {
+  if (!state.imperial || !Array.isArray(parts) || parts.every((p) => typeof p === "string")) return text;
+  return parts.map((p) => (typeof p === "string" ? p : quantityText(p))).join("");
+}
+
+function quantityText(q) {
+  if (typeof q.value !== "number") return q.text;
+  const u = outputUnit({ name: "", unit: q.unit, display_unit: q.display_unit, kind: "float" }, q.value);
+  if (!IMPERIAL.has(u.label)) return q.text; // no imperial unit for it (°, %, s): as written
+  const number = formatNumber(q.value / u.factor, q.digits || 3, { trim: true });
+  return q.bare ? number : `${number} ${u.label}`; // bare: a range's first value
+}
+
+/** A check's sentence in the unit system chosen. */
+function checkDetail(c) {
+  return sentenceText(c.detail, c.detail_parts);
+}
+
+/** The notes of an answer in the unit system chosen, ``keep(note)`` only. */
+function noteTexts(data, keep = () => true) {
+  const parts = data.notes_parts || [];
+  return data.notes.map((n, i) => [n, parts[i]]).filter(([n]) => keep(n)).map(([n, p]) => sentenceText(n, p));
+}
+
 /** The verdict banner (requirements counted) and, apart, the failing requirements named and
  *  the advice not followed listed as warnings. */
 function checkSummary(m, data, interactive = true) {
   if (!data.checks.length) return [null, null];
   const id = (x) => (interactive ? x : null);
   const { failed, warned } = checkLevels(data);
-  const item = (c) => el("li", {}, el("strong", {}, checkName(c)), ": ", c.detail);
+  const item = (c) => el("li", {}, el("strong", {}, checkName(c)), ": ", checkDetail(c));
   const banner = el("div", { class: `check-summary ${failed.length ? "fail" : "ok"}`, id: id("check-summary") },
     el("strong", { class: "verdict", id: id("verdict") }, (failed.length ? "✗ " : "✓ ") + verdictText(m, data)));
   const details = failed.length || warned.length ? el("div", { class: "verdict-details" },
@@ -1203,7 +1266,7 @@ function answerCard(m, data, { interactive = true } = {}) {
       el("span", { class: "what" }, labelOf(o)), " ",
       symbolNode(a.symbol), " = ", el("strong", { class: "value" }, valueText(m, data, a.output)),
       need ? el("span", { class: "need" }, ...need.flat()) : null,
-      c ? el("span", { class: "mark", title: c.detail }, c.ok ? " ✓" : c.level === "advice" ? " ⚠" : " ✗") : null);
+      c ? el("span", { class: "mark", title: checkDetail(c) }, c.ok ? " ✓" : c.level === "advice" ? " ⚠" : " ✗") : null);
   });
   const [banner, details] = checkSummary(m, data, interactive);
   return el("section", { class: "answer-card", id: interactive ? "answer-card" : null, "aria-label": "the answer" },
@@ -1235,12 +1298,12 @@ function resultParts(m, data, { interactive = false } = {}) {
     ? el("ul", { class: "checks", id: interactive ? "checks" : null }, ...data.checks.map((c) =>
       el("li", { class: c.ok ? "ok" : c.level === "advice" ? "warn" : "fail", "data-level": c.level || "requirement" },
         el("span", { class: "mark" }, c.ok ? "✓ pass " : c.level === "advice" ? "⚠ advice " : "✗ fail "), el("strong", {}, c.name),
-        c.level === "advice" ? el("span", { class: "muted" }, " (advice)") : null, ": ", c.detail)))
+        c.level === "advice" ? el("span", { class: "muted" }, " (advice)") : null, ": ", checkDetail(c))))
     : null;
   const warnings = data.warnings.length
     ? el("ul", { class: "warnings", id: interactive ? "warnings" : null }, ...data.warnings.map((w) => el("li", {}, "⚠ ", w))) : null;
   // the report lists the model's assumptions once, under their own heading
-  const noteList = interactive ? data.notes : data.notes.filter((n) => !(m.assumptions || []).includes(n));
+  const noteList = interactive ? noteTexts(data) : noteTexts(data, (n) => !(m.assumptions || []).includes(n));
   const notes = noteList.length
     ? el("ul", { class: "notes", id: interactive ? "notes" : null }, ...noteList.map((n) => el("li", {}, n))) : null;
   const table = el("div", { class: "table-wrap" },
@@ -1668,7 +1731,7 @@ function setSweepUnit(m, api) {
 /** A dashed line at the design in the form (its varied input's current value). */
 function designMark(m, p, u) {
   const input = document.getElementById("in-" + p.name);
-  const si = !touched(input) && input.dataset.si !== undefined ? Number(input.dataset.si) : parseNum(input.value) * currentUnit(p).factor;
+  const si = exactSI(input) ?? parseNum(input.value) * currentUnit(p).factor;
   return Number.isFinite(si) ? [{ at: si / u.factor, label: "this design" }] : [];
 }
 
@@ -2251,6 +2314,7 @@ function switchDecimal(sep) {
     if (!q.ok) return;
     const text = localNumber(q.canonical, now) + (q.unit ? " " + q.unit : "");
     if (input.dataset.shown === input.value) input.dataset.shown = text; // still the loaded value
+    if (input.dataset.exactShown === input.value) input.dataset.exactShown = text; // still converted
     input.value = text;
   };
   for (const p of m.inputs) {
@@ -2263,6 +2327,7 @@ function switchDecimal(sep) {
     const f = document.getElementById(id);
     if (f) { rewrite(f); f.dispatchEvent(new Event("input")); }
   }
+  if (state.lastResponse) renderResult(m, state.lastResponse); // its numbers in the new separator
   markStale();
 }
 

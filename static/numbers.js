@@ -149,3 +149,55 @@ export function readSamples(text, dec = decimalSeparator()) {
   }
   return { ok: true, values, canonical };
 }
+
+// ---------------------------------------------------------------- numbers shown
+
+/** The narrow no-break space that groups digits in what the pages show. */
+export const GROUP = "\u202f";
+
+/**
+ * Digit grouping for integer parts of five digits or more, with a narrow no-break space
+ * (readable under either decimal separator): group("12345.6") is "12 345.6", group("2000")
+ * "2000". Text that is not a plain number (with a point) is returned as it is.
+ */
+export function group(s) {
+  const m = String(s).match(/^([+-]?)(\d+)(\.\d+)?$/);
+  if (!m || m[2].length < 5) return s;
+  return m[1] + m[2].replace(/\B(?=(\d{3})+(?!\d))/g, GROUP) + (m[3] || "");
+}
+
+/**
+ * A number as both pages show it: ``sig`` significant digits, the exponent form below
+ * 0.001 and from a million ("1.5e-7", "2.35e6"), integer parts of five digits or more
+ * grouped ("12 350"), the user's decimal separator. ``trim`` drops trailing zeros
+ * (statistics, axis ticks, converted quantities); results keep them ("23.80"). For
+ * example formatNumber(12345.6) is "12 350", formatNumber(0.5, 3) "0.500",
+ * formatNumber(0.5, 3, {trim: true}) "0.5", formatNumber(2.5, 2, {dec: ","}) "2,5"
+ * (tests/e2e/test_units_in_sentences.py runs these in the browser).
+ */
+export function formatNumber(x, sig = 4, { trim = false, dec = decimalSeparator() } = {}) {
+  if (!Number.isFinite(x)) return String(x);
+  if (x === 0) return "0";
+  const a = Math.abs(x);
+  let s;
+  if (a >= 1e6 || a < 1e-3) {
+    s = x.toExponential(sig - 1).replace("e+", "e");
+    if (trim) s = s.replace(/\.?0+e/, "e");
+  } else {
+    const p = x.toPrecision(sig);
+    s = group(p.includes("e") || trim ? String(Number(p)) : p);
+  }
+  return dec === "," ? s.replace(".", ",") : s;
+}
+
+/** A count of things ("4000 designs", "12 000 designs"), grouped as formatNumber groups. */
+export function formatCount(n) {
+  return group(String(Math.round(n)));
+}
+
+/** Significant digits of a typed number ("2.50" 3, "0.012" 2, "1500" 4), at least 1. */
+export function typedDigits(canonical) {
+  const mantissa = String(canonical).replace(/^[+-]/, "").split(/[eE]/)[0];
+  const digits = mantissa.replace(".", "").replace(/^0+/, "");
+  return Math.max(1, digits.length);
+}

@@ -4,7 +4,7 @@
 // Plain ES module, no build step, nothing fetched but this server.
 
 import { choiceName } from "./choices.js";
-import { decimalSeparator, echoNumber, isPlain, localNumber, readQuantity, readSamples, setDecimalSeparator } from "./numbers.js";
+import { decimalSeparator, echoNumber, formatCount, formatNumber, isPlain, localNumber, readQuantity, readSamples, setDecimalSeparator } from "./numbers.js";
 
 const $ = (sel) => document.querySelector(sel);
 const API = "api/v1";
@@ -24,12 +24,11 @@ function el(tag, attrs = {}, ...children) {
   return node;
 }
 
+/** A value for the reader, as the form writes one (numbers.js's formatNumber), trailing zeros dropped. */
 function fmt(v, digits = 4) {
   if (v === null || v === undefined || Number.isNaN(v)) return "–";
   if (typeof v === "boolean") return v ? "yes" : "no";
-  const a = Math.abs(v);
-  if (a !== 0 && (a < 1e-3 || a >= 1e6)) return v.toExponential(digits - 1);
-  return Number(v.toPrecision(digits)).toLocaleString("en", { maximumFractionDigits: 10 });
+  return formatNumber(v, digits, { trim: true });
 }
 
 function label(p) {
@@ -418,7 +417,7 @@ async function poll() {
   const rate = p.rate_per_s ? `${fmt(p.rate_per_s, 3)} designs/s` : "";
   const eta = p.eta_s !== null && p.eta_s !== undefined ? `, ${fmt(p.eta_s, 2)} s left` : "";
   const phase = j.state === "running" && j.phase ? ` (${j.phase})` : "";
-  $("#study-status").textContent = `${j.state}${phase}: ${p.done.toLocaleString("en")} of ${p.total.toLocaleString("en")} designs ${rate}${eta}`;
+  $("#study-status").textContent = `${j.state}${phase}: ${formatCount(p.done)} of ${formatCount(p.total)} designs ${rate}${eta}`;
   if (j.state === "queued" || j.state === "running") {
     timer = setTimeout(poll, 300);
     return;
@@ -441,7 +440,7 @@ function render(j) {
   $("#study-result").hidden = false;
   const feas = summary.feasible.fraction;
   $("#study-meta").textContent =
-    `${summary.points.toLocaleString("en")} designs (${summary.method.replace("_", " ")}), ` +
+    `${formatCount(summary.points)} designs (${summary.method.replace("_", " ")}), ` +
     `${summary.refused} refused; feasible (${summary.feasible.criterion}): ` +
     `${feas === null ? "not known" : (100 * feas).toFixed(1) + " %"}; ` +
     `method of the model: ${Object.entries(summary.rungs).map(([k, v]) => `${k} ×${v}`).join(", ")}; ` +
@@ -501,10 +500,10 @@ function renderChecks() {
       el("span", { text: `${name}: ${pct(fraction)} ` }), el("span", { class: "hint", text: detail }));
   };
   const rows = Object.entries(summary.checks).map(([name, c]) => {
-    const unknown = c.unknown ? `, ${c.unknown.toLocaleString("en")} not evaluated` : "";
+    const unknown = c.unknown ? `, ${formatCount(c.unknown)} not evaluated` : "";
     const label = name.replaceAll("_", " ") + (c.level === "advice" ? " (advice, not counted)" : "");
     return item(label, c.pass_fraction,
-      `(${c.passed.toLocaleString("en")} pass, ${c.failed.toLocaleString("en")} fail${unknown})`, c.passed, c.failed);
+      `(${formatCount(c.passed)} pass, ${formatCount(c.failed)} fail${unknown})`, c.passed, c.failed);
   });
   const f = summary.feasible;
   if (rows.length || f.fraction !== null) {
@@ -512,7 +511,7 @@ function renderChecks() {
     const ok = f.fraction === null ? 0 : Math.round(f.fraction * f.known);
     const rest = summary.points - f.known;
     rows.push(item(every ? "all requirements" : `feasible (${f.criterion.replaceAll("_", " ")})`, f.fraction,
-      `(${ok.toLocaleString("en")} of ${f.known.toLocaleString("en")} designs${rest ? `, ${rest.toLocaleString("en")} not known` : ""})`,
+      `(${formatCount(ok)} of ${formatCount(f.known)} designs${rest ? `, ${formatCount(rest)} not known` : ""})`,
       ok, f.known - ok));
     rows[rows.length - 1].classList.add("all");
   }

@@ -13,35 +13,19 @@ import math
 from typing import Any
 
 from .spec import Param
+from .text import q, written
 
 #: One degree, [rad].
 DEG = math.pi / 180.0
 #: One revolution per minute, [rad/s].
 RPM = math.pi / 30.0
 
-#: Display units for sentences: unit -> (factor from SI, suffix).
-_SCALES: dict[str, tuple[float, str]] = {
-    "m": (1.0, " m"),
-    "mm": (1e3, " mm"),
-    "µm": (1e6, " µm"),
-    "s": (1.0, " s"),
-    "ms": (1e3, " ms"),
-    "N": (1.0, " N"),
-    "kN": (1e-3, " kN"),
-    "N*m": (1.0, " N·m"),
-    "N/mm": (1e-3, " N/mm"),
-    "MPa": (1e-6, " MPa"),
-    "rpm": (1.0 / RPM, " rpm"),
-    "deg": (1.0 / DEG, "°"),
-    "%": (100.0, " %"),
-    "kg": (1.0, " kg"),
-    "J": (1.0, " J"),
-    "W": (1.0, " W"),
-}
-
 
 def quantity(value: float, unit: str, fmt: str = ".3g") -> str:
     """An SI ``value`` written in ``unit`` for a sentence, e.g. ``quantity(0.0042, "mm")``.
+
+    Plain text, for refusals and warnings; a check or a note writes its quantities with
+    :func:`engine.core.text.q`, which the form shows in the unit system chosen.
 
     >>> quantity(0.0042, "mm")
     '4.2 mm'
@@ -52,8 +36,7 @@ def quantity(value: float, unit: str, fmt: str = ".3g") -> str:
     >>> quantity(math.radians(45.0), "deg")
     '45°'
     """
-    factor, suffix = _SCALES[unit]
-    return f"{value * factor:{fmt}}{suffix}"
+    return written(value, unit, fmt)
 
 
 def length(name: str, description: str, *, minimum: float, maximum: float, **kw: Any) -> Param:
@@ -88,20 +71,21 @@ def samples(name: str, unit: str, description: str, **kw: Any) -> Param:
 
 
 def in_mm(value: float) -> str:
-    """A length [m] in mm, 3 significant digits: ``in_mm(0.0042)`` is ``'4.2 mm'``."""
-    return quantity(value, "mm")
+    """A length [m] in mm, 3 significant digits, for a check or a note (:func:`q`):
+    ``plain(in_mm(0.0042))`` is ``'4.2 mm'``."""
+    return q(value, "mm")
 
 
 def in_ms(value: float) -> str:
-    """A time [s] in ms, 3 significant digits."""
-    return quantity(value, "ms")
+    """A time [s] in ms, 3 significant digits, for a check or a note."""
+    return q(value, "ms")
 
 
 def in_n_per_mm(value: float) -> str:
-    """A spring rate [N/m] in N/mm, 4 significant digits."""
-    return quantity(value, "N/mm", ".4g")
+    """A spring rate [N/m] in N/mm, 4 significant digits, for a check or a note."""
+    return q(value, "N/mm", 4)
 
 
 def in_rpm(value: float) -> str:
-    """An angular speed [rad/s] in whole rpm."""
-    return quantity(value, "rpm", ".0f")
+    """An angular speed [rad/s] in whole rpm, for a check or a note."""
+    return q(value, "rpm", fmt=".0f")

@@ -19,6 +19,7 @@ import numpy as np
 
 from .errors import EngineError
 from .spec import ModelSpec, Param, RunContext, Scratch
+from .text import plain
 
 _ESTIMATE_FAILS = (TypeError, ValueError, ArithmeticError)
 
@@ -210,7 +211,8 @@ def vector(
         arr = np.asarray(verdict)
         codes = arr.astype(np.int8) if arr.dtype == bool else np.asarray(arr, dtype=np.int8)
         checks[name] = np.broadcast_to(codes, (n,)).copy()
-    return Vector(values, computed, list(result.notes), list(result.warnings), checks)
+    notes = [plain(n) for n in result.notes]
+    return Vector(values, computed, notes, [plain(w) for w in result.warnings], checks)
 
 
 def scalar_gives(

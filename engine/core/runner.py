@@ -21,6 +21,7 @@ import numpy as np
 from . import points
 from .errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange, SolverFailed
 from .spec import Check, ModelSpec, Param, RunContext, Rung, Scratch, Value
+from .text import OPEN, Parts, parts, plain
 
 DEFAULT_TOLERANCE = 0.01
 MAX_SWEEP_POINTS = 2000
@@ -43,9 +44,17 @@ class RunResult:
     notes: list[str] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
     series: dict[str, list[float]] = field(default_factory=dict)
+    #: ``notes`` as the model wrote them, quantities marked (:func:`engine.core.text.q`);
+    #: empty when no note has one.
+    marked_notes: list[str] = field(default_factory=list, repr=False)
     #: What ``error_estimate`` promises (the rung's :attr:`Rung.estimate_kind`): "bound",
     #: or "typical" (a note then says how often it is exceeded); None with no estimate.
     error_kind: Literal["bound", "typical"] | None = None
+
+    @property
+    def notes_parts(self) -> list[Parts]:
+        """``notes`` as text and quantities, one entry per note (:func:`engine.core.text.parts`)."""
+        return [parts(n) for n in self.marked_notes or self.notes]
 
 
 @dataclass
@@ -456,6 +465,7 @@ def run(
         caveat = ran.estimate_caveat  # a sentence made on each call: made once here
         if not any(caveat in n for n in notes):
             notes.append(caveat)
+    marked = any(OPEN in n for n in notes)
     return RunResult(
         model=spec.name,
         results=scalars,
@@ -464,12 +474,20 @@ def run(
         error_estimate=error,
         elapsed_s=elapsed,
         inputs=values,
-        checks=spec.levelled(result.checks),
-        notes=notes,
-        warnings=warnings + result.warnings,
+        checks=[_check_parts(c) for c in spec.levelled(result.checks)],
+        notes=[plain(n) for n in notes] if marked else notes,
+        warnings=[plain(w) for w in warnings + result.warnings],
         series=curves,
         error_kind=error_kind,
+        marked_notes=notes if marked else [],
     )
+
+
+def _check_parts(check: Check) -> Check:
+    """``check`` with a plain ``detail``, the marked one kept for its parts."""
+    if OPEN not in check.detail:
+        return check
+    return Check(check.name, check.ok, plain(check.detail), check.level, check.detail)
 
 
 def sweep_values(start: float, stop: float, num: int, scale: str = "linear") -> np.ndarray:

@@ -23,6 +23,7 @@ from typing import Any, Literal
 from .equations import equations_of, equations_of_steps
 from .errors import BudgetExceeded, Cancelled, InputOutOfRange
 from .sources import SOURCES, cited_ids
+from .text import Parts, parts
 
 ParamKind = Literal["float", "int", "choice", "bool", "text", "samples"]
 #: Longest value a ``text`` input accepts (a designation such as "M10x1.25 ISO 4762 12.9").
@@ -486,6 +487,14 @@ class Check:
     ok: bool
     detail: str
     level: CheckLevel = "requirement"
+    #: ``detail`` as the model wrote it, its quantities marked (:func:`engine.core.text.q`):
+    #: the runner keeps it here and gives ``detail`` plain; "" when the two are the same.
+    marked: str = field(default="", compare=False, repr=False)
+
+    @property
+    def detail_parts(self) -> Parts:
+        """``detail`` as text and quantities (:func:`engine.core.text.parts`)."""
+        return parts(self.marked or self.detail)
 
 
 @dataclass(frozen=True)

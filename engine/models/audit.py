@@ -14,7 +14,6 @@ from dataclasses import replace
 from typing import Any
 
 from ..core.errors import InputOutOfRange
-from ..core.params import quantity
 from ..core.spec import (
     Answer,
     Check,
@@ -26,6 +25,7 @@ from ..core.spec import (
     Rung,
     fixed_error,
 )
+from ..core.text import q
 from ..physics import audit as au
 from ..physics import joint as jt
 from ..physics import preload as pl
@@ -344,8 +344,8 @@ def _audit(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
     notes.extend(
         [
-            f"torque band {quantity(torque * (1 - tol), 'N*m', '.4g')} … "
-            f"{quantity(torque * (1 + tol), 'N*m', '.4g')}; friction μ_G {mu_g_lo:g}…{mu_g_hi:g}, "
+            f"torque band {q(torque * (1 - tol), 'N*m', fmt='.4g')} … "
+            f"{q(torque * (1 + tol), 'N*m', fmt='.4g')}; friction μ_G {mu_g_lo:g}…{mu_g_hi:g}, "
             f"μ_K {mu_k_lo:g}…{mu_k_hi:g}; static excess r = "
             f"{x['static_friction_ratio_min']:g}…{x['static_friction_ratio_max']:g}",
             f"embedding loss F_Z = {f_z / 1e3:.4g} kN from the joint model (VDI 2230-1 R4); "

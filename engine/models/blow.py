@@ -19,8 +19,9 @@ from typing import Any
 import numpy as np
 
 from ..core.errors import EngineError, InfeasibleDesign, InputOutOfRange
-from ..core.params import DEG, RPM, count, friction_coefficient, length, positive, quantity
+from ..core.params import DEG, count, friction_coefficient, length, positive
 from ..core.spec import Answer, Check, ModelSpec, Output, Param, Result, RunContext, Rung, Scratch
+from ..core.text import q
 from ..numerics.ode import sqrt, where
 from ..physics import clutch as cl
 from ..physics import nutrunner as nr
@@ -747,14 +748,15 @@ def _striker_note(s: _Striker) -> str:
     geometry = s.design["roller_geometry"]
     return (
         f"rare-impact: one blow per release at impact.rare's closed-form release speed "
-        f"ω_M = {float(s.speed) / RPM:.0f} rpm ({geometry} roller geometry, "
+        f"ω_M = {q(float(s.speed), 'rpm', fmt='.0f')} ({geometry} roller geometry, "
         f"g = {s.design['gravity']:g} m/s²) [002, after eq. 4]; the flywheel "
         + (
             "alone (the paper's geometry)"
             if geometry == "paper"
-            else f"with the rollers at r = {float(s.radius) * 1e3:.4g} mm"
+            else f"with the rollers at r = {q(float(s.radius), 'mm', 4)}"
         )
-        + f", I = {float(s.inertia):.4g} kg·m², carries E = ½·I·ω_M² = {float(s.energy):.4g} J"
+        + f", I = {q(float(s.inertia), 'kg*m^2', 4)}, "
+        f"carries E = ½·I·ω_M² = {q(float(s.energy), 'J', 4)}"
     )
 
 
@@ -793,13 +795,14 @@ def _tool(x: Mapping[str, Any], one: bool) -> _Tool:
         drive = drive + (feed - drag)
         if one:
             notes.append(
-                f"nut-runner: drive energy T = {float(e):.4g} J [000, eq. 3–4] at spindle "
-                f"speed {float(w5) / RPM:.0f} rpm, i.e. J_t = 2T/ω5² = {float(j):.4g} kg·m² "
-                f"at the spindle; C = C7·C8/(C7 + C8) = {float(c):.4g} N·m/rad [000, eq. 7–9] "
+                f"nut-runner: drive energy T = {q(float(e), 'J', 4)} [000, eq. 3–4] at spindle "
+                f"speed {q(float(w5), 'rpm', fmt='.0f')}, "
+                f"i.e. J_t = 2T/ω5² = {q(float(j), 'kg*m^2', 4)} "
+                f"at the spindle; C = C7·C8/(C7 + C8) = {q(float(c), 'N*m/rad', 4)} [000, eq. 7–9] "
                 "(the paper's convention, gear ratio ignored); idle spindles take (z − 1)·M_tr "
-                f"= {float(drag):.4g} N·m [000, eq. 10]"
+                f"= {q(float(drag), 'N*m', 4)} [000, eq. 10]"
                 + (
-                    f", the slipping coupling 1 feeds {float(feed):.4g} N·m [000, text]"
+                    f", the slipping coupling 1 feeds {q(float(feed), 'N*m', 4)} [000, text]"
                     if feed
                     else ""
                 )
@@ -970,7 +973,8 @@ def _rate_note(x: Mapping[str, Any], target: float | None) -> str | None:
     if how.startswith("iso5393"):
         kind = how.split("_")[1]
         return (
-            f"ISO 5393 {kind} test joint: target {target:.4g} N·m reached "
+            f"ISO 5393 {kind} test joint: target "
+            f"{q(math.nan if target is None else target, 'N*m', 4)} reached "
             f"{'30' if kind == 'hard' else '720'}° after snug"
         )
     return None
@@ -1005,9 +1009,9 @@ def _joint_rate(x: Mapping[str, Any], thread: Any) -> tuple[float, str]:
         how_s = "plain shank over l_K plus a third of the nut height at d3 [004, eq. 4, 7]"
     k = joint_rate(per_preload, bolt.pitch, float(delta_s), float(delta_p))
     return k, (
-        f"joint: k_j = (k_G + k_K)·P/(2π(δ_S + δ_P)) = {k:.4g} N·m/rad with k_G + k_K = "
-        f"{per_preload * 1e3:.4g} mm (tightening relation), δ_S = {float(delta_s):.4g} m/N "
-        f"({how_s}), δ_P = {float(delta_p):.4g} m/N ({how_p}) [004, eq. 8]"
+        f"joint: k_j = (k_G + k_K)·P/(2π(δ_S + δ_P)) = {q(k, 'N*m/rad', 4)} with k_G + k_K = "
+        f"{q(per_preload, 'mm', 4)} (tightening relation), δ_S = {q(float(delta_s), 'm/N', 4)} "
+        f"({how_s}), δ_P = {q(float(delta_p), 'm/N', 4)} ({how_p}) [004, eq. 8]"
     )
 
 
@@ -1388,11 +1392,11 @@ def _verdict(
     if lo is not None and hi is not None and lo > hi:
         raise InputOutOfRange("preload_min must not exceed preload_max", field="preload_min")
     verdict = _window_verdict(preload, lo, hi)
-    window = f"[{quantity(lo or 0.0, 'kN')}, {quantity(hi, 'kN') if hi else '∞'}]"
+    window = f"[{q(lo or 0.0, 'kN')}, {q(hi, 'kN') if hi else '∞'}]"
     check = Check(
         "preload_window",
         verdict == "within",
-        f"final preload {quantity(preload, 'kN')} is {verdict} the window {window}"
+        f"final preload {q(preload, 'kN')} is {verdict} the window {window}"
         + (
             ""
             if verdict == "within"
@@ -1443,11 +1447,11 @@ def _bolt_checks(s: _Setup, series: BlowSeries, warnings: list[str]) -> tuple[An
         Check(
             "bolt_yield",
             not yielded,
-            f"{at} takes the bolt to its yield preload F_M0.2 = {quantity(f_y, 'kN')} "
-            f"(torque {s.yield_torque:.4g} N·m): it stretches plastically; less energy per "
+            f"{at} takes the bolt to its yield preload F_M0.2 = {q(f_y, 'kN')} "
+            f"(torque {q(s.yield_torque, 'N*m', 4)}): it stretches plastically; less energy per "
             "blow, fewer blows or a stronger bolt"
             if yielded
-            else f"the blows stay below the yield preload F_M0.2 = {quantity(f_y, 'kN')}",
+            else f"the blows stay below the yield preload F_M0.2 = {q(f_y, 'kN')}",
         )
     ]
     if math.isfinite(f_b):
@@ -1456,18 +1460,18 @@ def _bolt_checks(s: _Setup, series: BlowSeries, warnings: list[str]) -> tuple[An
             Check(
                 "bolt_break",
                 not broken,
-                f"{at} would take an elastic bolt to {quantity(demand, 'kN')}, past its "
-                f"breaking load F_B = R_m·A_s = {quantity(f_b, 'kN')}: the bolt may break"
+                f"{at} would take an elastic bolt to {q(demand, 'kN')}, past its "
+                f"breaking load F_B = R_m·A_s = {q(f_b, 'kN')}: the bolt may break"
                 if broken
-                else f"the blows stay below the breaking load F_B = {quantity(f_b, 'kN')}",
+                else f"the blows stay below the breaking load F_B = {q(f_b, 'kN')}",
             )
         )
     if yielded:
         warnings.append(
-            f"the bolt yields: {at} reaches F_M0.2 = {quantity(f_y, 'kN')}"
+            f"the bolt yields: {at} reaches F_M0.2 = {q(f_y, 'kN')}"
             + (
-                f" and on the elastic line would reach {quantity(demand, 'kN')}, past the "
-                f"breaking load {quantity(f_b, 'kN')}"
+                f" and on the elastic line would reach {q(demand, 'kN')}, past the "
+                f"breaking load {q(f_b, 'kN')}"
                 if verdict == "past breaking"
                 else ""
             )
@@ -1552,7 +1556,8 @@ def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
     tol, dmu = float(x["spring_force_tolerance"]), x["friction_scatter"]
     notes = [
         "clutch: a continuous tool stops turning the nut when its clutch slips; the slipping "
-        f"torque spans {t_min:.4g}…{t_max:.4g} N·m (spring force ±{tol:.0%}, flank friction "
+        f"torque spans {q(t_min, 'N*m', 4, bare=True)}…{q(t_max, 'N*m', 4)} "
+        f"(spring force ±{tol:.0%}, flank friction "
         f"{f:g} ± {df:g}) [001, eq. 1–3], and the preload follows through the tightening "
         f"relation with μ ± {dmu:g} (VDI 2230-1 R13); dynamic overshoot at the end of the "
         "run-down is neglected (no error estimate)",
@@ -1567,7 +1572,7 @@ def _compute_clutch(x: Mapping[str, Any], ctx: RunContext) -> Result:
             Check(
                 "preload_window",
                 ok,
-                f"the clutch gives {quantity(f_lo, 'kN')}…{quantity(f_hi, 'kN')}"
+                f"the clutch gives {q(f_lo, 'kN')}…{q(f_hi, 'kN')}"
                 + ("" if ok else "; narrow the spring tolerance or the friction"),
             )
         )
@@ -1658,25 +1663,25 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     checks.extend(bolt_checks)
     if target is not None and not series.blows_to_target:
         why = (
-            f"the bolt yields at {series.final_torque:.4g} N·m"
+            f"the bolt yields at {q(series.final_torque, 'N*m', 4)}"
             if series.yield_blow
-            else f"the joint holds against the blow at {series.final_torque:.4g} N·m"
+            else f"the joint holds against the blow at {q(series.final_torque, 'N*m', 4)}"
             if series.saturated
             else f"not reached in max_blows = {max_blows}"
         )
         notes.append(
-            f"blows_to_target is null: {why}; the blows saturate near {saturation:.4g} N·m "
-            f"(energy balance), below the target {target:.4g} N·m"
+            f"blows_to_target is null: {why}; the blows saturate near {q(saturation, 'N*m', 4)} "
+            f"(energy balance), below the target {q(target, 'N*m', 4)}"
             if saturation < target
             else f"blows_to_target is null: {why}"
         )
-        checks.append(Check("target_reached", False, f"target {target:.4g} N·m: {why}"))
+        checks.append(Check("target_reached", False, f"target {q(target, 'N*m', 4)}: {why}"))
     elif target is not None:
         checks.append(
             Check(
                 "target_reached",
                 True,
-                f"target {target:.4g} N·m after {series.blows_to_target} blow(s)",
+                f"target {q(target, 'N*m', 4)} after {series.blows_to_target} blow(s)",
             )
         )
     if per is None:
@@ -1685,7 +1690,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if fraction is not None and fraction > 1.0:
         notes.append(
             f"joint_energy_fraction {fraction:.4g} > 1: the drive torque "
-            f"{float(s.tool.drive):.4g} N·m works on the tool during the blow, and that work "
+            f"{q(float(s.tool.drive), 'N*m', 4)} works on the tool during the blow, and that work "
             "is not in the tool's energy E it is divided by"
         )
     if ctx.rung == "rigid":
@@ -1712,7 +1717,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         assert first is not None
         notes.append(
             f"simulation: two-mass stick-slip model, compiled RK4, {series.steps} steps over "
-            f"{n} blow(s); first blow lasted {first.duration * 1e3:.3g} ms, energy balance "
+            f"{n} blow(s); first blow lasted {q(first.duration, 'ms')}, energy balance "
             f"closes to {abs(first.joint_work + first.energy_left + first.damping_loss - e - first.drive_work) / e:.1e}"  # noqa: E501
         )
     out_series: dict[str, list[float]] = {

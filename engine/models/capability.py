@@ -26,6 +26,7 @@ from ..core.spec import (
     Rung,
     fixed_error,
 )
+from ..core.text import q
 from ..physics import capability as cap
 
 SOURCE = (
@@ -654,7 +655,7 @@ def _capability(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 "scatters widely"
             )
     notes = [
-        f"tolerance {quantity(lower, 'N*m', '.4g')} … {quantity(upper, 'N*m', '.4g')} ({ev.how})",
+        f"tolerance {q(lower, 'N*m', fmt='.4g')} … {q(upper, 'N*m', fmt='.4g')} ({ev.how})",
         f"{name} and {name_k} use the sample standard deviation (n − 1); the ppm figure assumes "
         "normally distributed torques",
     ]

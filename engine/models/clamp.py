@@ -17,7 +17,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from ..core.errors import InputOutOfRange
-from ..core.params import positive, quantity, samples
+from ..core.params import positive, samples
 from ..core.runner import run
 from ..core.spec import (
     Answer,
@@ -30,6 +30,7 @@ from ..core.spec import (
     Rung,
     fixed_error,
 )
+from ..core.text import q
 from ..numerics import laws
 from ..numerics.laws import Law
 from ..physics import capability as cap
@@ -687,7 +688,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         Check(
             "below_required_preload",
             p_low * 1e6 <= allowed,
-            f"{p_low * 1e6:.3g} ppm below F_M,min = {quantity(required, 'kN', '.4g')} "
+            f"{p_low * 1e6:.3g} ppm below F_M,min = {q(required, 'kN', fmt='.4g')} "
             f"({'≤' if p_low * 1e6 <= allowed else '>'} {allowed:g} ppm allowed)",
         ),
         Check(
@@ -733,7 +734,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if hot:
         notes.append(
             "F_M,zul and ν at assembly, at room temperature (R_p0.2 = "
-            f"{quantity(yield_strength, 'MPa', '.4g')}; the bolt is tightened cold, VDI 2230-1 "
+            f"{q(yield_strength, 'MPa', 4)}; the bolt is tightened cold, VDI 2230-1 "
             "R7); service_temperature sets only the F_M,min required (thermal loss, R5)"
         )
     if category in ("A", "B"):

@@ -18,6 +18,7 @@ import numpy.typing as npt
 from ..core.errors import InfeasibleDesign, InputOutOfRange
 from ..core.params import DEG, count, friction_coefficient, length
 from ..core.spec import Answer, Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from ..core.text import q
 from ..physics.clutch import (
     ARRANGEMENTS,
     RECOMMENDED_GROOVE_ANGLE,
@@ -417,9 +418,9 @@ def _stress_check(
     if allowable is None:
         return []
     detail = (
-        f"{which} shear stress {stress / 1e6:.4g} MPa "
+        f"{which} shear stress {q(stress, 'MPa', 4)} "
         + ("≤" if ok else ">")
-        + f" allowable {allowable / 1e6:.4g} MPa"
+        + f" allowable {q(allowable, 'MPa', 4)}"
         + ("" if ok else ": use thicker wire, a smaller coil diameter or a lower setting")
     )
     return [Check(name, ok, detail)]
@@ -435,16 +436,17 @@ def _groove_check(name: str, depth: float, ball_diameter: float, what: str, ok: 
     """
     if ok:
         detail = (
-            f"groove depth ({what}) {depth * 1e3:.4g} mm ≤ ball radius {ball_diameter * 500:.4g} mm"
+            f"groove depth ({what}) {q(depth, 'mm', 4)} ≤ ball radius "
+            f"{q(ball_diameter / 2, 'mm', 4)}"
         )
     else:
         deeper = (
-            f"even the whole ball (d = {ball_diameter * 1e3:.4g} mm)"
+            f"even the whole ball (d = {q(ball_diameter, 'mm', 4)})"
             if depth >= ball_diameter
-            else f"the ball radius (d/2 = {ball_diameter * 500:.4g} mm)"
+            else f"the ball radius (d/2 = {q(ball_diameter / 2, 'mm', 4)})"
         )
         detail = (
-            f"groove depth ({what}) {depth * 1e3:.4g} mm exceeds {deeper}: the ball's "
+            f"groove depth ({what}) {q(depth, 'mm', 4)} exceeds {deeper}: the ball's "
             "centre would sit below the rim, so it cannot climb out cleanly (it wedges on "
             "the rim); use larger balls, a shallower groove, or a stiffer spring with less "
             "deflection"
@@ -490,7 +492,7 @@ def _arrangement_notes(x: Mapping[str, Any], force: float) -> list[str]:
             "statics fixes the sum of the balls' tangential forces however unevenly they "
             "share it. The paper's eq. 3 sets ONE ball's axial force equal to the WHOLE "
             f"spring force, which holds only for one spring per ball: it would give "
-            f"K_r i = {kr * i:.4g} times more, {per_ball:.4g} N·m."
+            f"K_r i = {kr * i:.4g} times more, {q(float(per_ball), 'N*m', 4)}."
         )
     else:
         first = (
@@ -498,7 +500,7 @@ def _arrangement_notes(x: Mapping[str, Any], force: float) -> list[str]:
             "these dimensions (the paper's eq. 3, F_a = F_spring for the most-loaded ball), "
             "T = K_r D0 i F_spring / (2 tan(α − ρ)). With one common spring, as the paper's "
             f"fig. 1 draws, the same spring would give K_r i = {kr * i:.4g} times less, "
-            f"{common:.4g} N·m."
+            f"{q(float(common), 'N*m', 4)}."
         )
     return [
         first,
@@ -651,15 +653,15 @@ def _compute_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
     ]
     where = "at the torque limit"
     if x["torque"] is not None:
-        where = f"at the given torque {x['torque']:.4g} N·m"
+        where = f"at the given torque {q(x['torque'], 'N*m', 4)}"
         ok = passed["torque_below_limit"]
         checks.append(
             Check(
                 "torque_below_limit",
                 ok,
-                f"torque {x['torque']:.4g} N·m "
+                f"torque {q(x['torque'], 'N*m', 4)} "
                 + ("≤" if ok else ">")
-                + f" torque limit {v['torque_limit']:.4g} N·m"
+                + f" torque limit {q(v['torque_limit'], 'N*m', 4)}"
                 + ("" if ok else ": the clutch slips at this torque"),
             )
         )
@@ -1071,10 +1073,10 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
             )
         x = {**x, "target_torque": drive["required_slip_torque"]}
         drive_notes.append(
-            f"target torque = required slip torque {drive['required_slip_torque']:.4g} N·m = "
+            f"target torque = required slip torque {q(drive['required_slip_torque'], 'N*m', 4)} = "
             f"max(K T_N, T_a) with K = {x['service_factor']:g}, T_N = "
-            f"{drive['rated_drive_torque']:.4g} N·m"
-            + (f", T_a = {drive['start_torque']:.4g} N·m" if "start_torque" in drive else "")
+            f"{q(drive['rated_drive_torque'], 'N*m', 4)}"
+            + (f", T_a = {q(drive['start_torque'], 'N*m', 4)}" if "start_torque" in drive else "")
         )
     wire, deflection = x["spring_wire_diameter"], x["spring_deflection"]
     helical = x["spring_type"] == "helical"
@@ -1114,7 +1116,7 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
             v["spring_shear_stress"],
             allow,
             passed.get("spring_shear_stress", True),
-            f"given wire ({wire * 1e3:.4g} mm) at the required deflection,",
+            f"given wire ({q(wire, 'mm', 4)}) at the required deflection,",
         )
         checks.append(
             _groove_check(
@@ -1132,8 +1134,8 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 Check(
                     "required_wire_spring_index",
                     False,
-                    f"the required wire ({v['required_wire_diameter'] * 1e3:.4g} mm) is not "
-                    f"thinner than the coil (D = {x['spring_mean_diameter'] * 1e3:g} mm): no "
+                    f"the required wire ({q(v['required_wire_diameter'], 'mm', 4)}) is not "
+                    f"thinner than the coil (D = {q(x['spring_mean_diameter'], 'mm', 6)}): no "
                     "such spring exists; use a larger coil, more deflection or fewer coils",
                 )
             )
@@ -1151,7 +1153,7 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 v["required_wire_shear_stress"],
                 allow,
                 passed.get("required_wire_shear_stress", True),
-                f"required wire ({v['required_wire_diameter'] * 1e3:.4g} mm)",
+                f"required wire ({q(v['required_wire_diameter'], 'mm', 4)})",
             )
         checks.append(
             _groove_check(
@@ -1170,9 +1172,9 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 "peak_setting_stress_max",
                 ok,
                 f"largest spring stress over the lift at the peak setting "
-                f"{v['peak_setting_stress_max'] / 1e6:.4g} MPa "
+                f"{q(v['peak_setting_stress_max'], 'MPa', 4)} "
                 + ("≤" if ok else ">")
-                + f" permissible {limit / 1e6:.4g} MPa",
+                + f" permissible {q(limit, 'MPa', 4)}",
             )
         )
     checks.append(_angle_check(alpha, passed["groove_angle"]))
@@ -1182,9 +1184,9 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
             Check(
                 "target_covers_drive",
                 ok,
-                f"target {x['target_torque']:.4g} N·m "
+                f"target {q(x['target_torque'], 'N*m', 4)} "
                 + ("≥" if ok else "<")
-                + f" required slip torque {drive['required_slip_torque']:.4g} N·m"
+                + f" required slip torque {q(drive['required_slip_torque'], 'N*m', 4)}"
                 + ("" if ok else ": the clutch would slip in normal work or at every start"),
             )
         )

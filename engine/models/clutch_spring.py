@@ -24,6 +24,7 @@ from ..core.spec import (
     Rung,
     fixed_error,
 )
+from ..core.text import q
 from ..physics import springs as sp
 from ..procedures import spring_design as sd
 from ..procedures.clutch_asbuilt import DISC_YIELD_DEFAULT
@@ -501,8 +502,8 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         if not math.isfinite(v[f"margin_{c}"]):
             v[f"margin_{c}"] = None
     spring = (
-        f"d {v['wire_diameter'] * 1e3:g} mm, D {v['mean_diameter'] * 1e3:.4g} mm, "
-        f"n {v['active_coils']:g}, L0 {v['free_length'] * 1e3:.4g} mm"
+        f"d {q(v['wire_diameter'], 'mm', 6)}, D {q(v['mean_diameter'], 'mm', 4)}, "
+        f"n {v['active_coils']:g}, L0 {q(v['free_length'], 'mm', 4)}"
     )
     binding = v["binding_limit"]
     if v["candidates_passing"]:
@@ -518,8 +519,8 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
     notes = [
         verdict,
-        f"F1 = {v['set_force']:.4g} N is the force that makes the balls start to move at "
-        f"{x['target_torque']:g} N·m (clutch.ball_setting's required_spring_force); while "
+        f"F1 = {q(v['set_force'], 'N', 4)} is the force that makes the balls start to move at "
+        f"{q(x['target_torque'], 'N*m', 6)} (clutch.ball_setting's required_spring_force); while "
         "they climb the spring is compressed by the stroke, so the peak torque is higher: "
         "run clutch.ball with this spring for the characteristic",
         "free length chosen so that the spring sits at the pocket's length L1 at the setting; "

@@ -16,6 +16,7 @@ from typing import Any
 
 from ..core.errors import InputOutOfRange
 from ..core.spec import Answer, ModelSpec, Output, Param, Result, RunContext
+from ..core.text import q
 from ..physics import joint as jt
 from .joint import CLOSED_FORM, JOINT_INPUTS, JOINT_OUTPUTS, VDI2230
 from .joint import _compute as _single_bolt  # the chain R0–R13, its equations listed with ours
@@ -197,8 +198,8 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     }
     values.update({name: one.values.get(name) for name in _PASSED})
     notes = [
-        f"most loaded of z = {z} bolts on D_t = {d_t * 1e3:g} mm: F_A = {f_a / 1e3:.4g} kN "
-        f"(F_A,min {f_a_min / 1e3:.4g} kN), F_Q = {f_q / 1e3:.4g} kN, worked through "
+        f"most loaded of z = {z} bolts on D_t = {q(d_t, 'mm', 6)}: F_A = {q(f_a, 'kN', 4)} "
+        f"(F_A,min {q(f_a_min, 'kN', 4)}), F_Q = {q(f_q, 'kN', 4)}, worked through "
         "joint.vdi2230's steps R0–R13",
         *one.notes,
     ]

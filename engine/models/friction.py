@@ -27,6 +27,7 @@ from ..core.spec import (
     Rung,
     fixed_error,
 )
+from ..core.text import q
 from ..physics import capability as cap
 from ..physics import iso16047 as iso
 from ..physics import threads as th
@@ -256,7 +257,7 @@ def _geometry(x: Mapping[str, Any]) -> tuple[float, float, float, float, list[st
         d2 = fields.get("pitch_diameter") or (thread.pitch_diameter if thread else None)
     if d2 is None:
         d2 = th.pitch_diameter(d, float(pitch))
-        notes.append(f"pitch diameter d2 = d − 0.649519 P = {quantity(d2, 'mm', '.5g')} (ISO 68-1)")
+        notes.append(f"pitch diameter d2 = d − 0.649519 P = {q(d2, 'mm', fmt='.5g')} (ISO 68-1)")
     if not 0.0 < d2 < d:
         raise InputOutOfRange(
             f"pitch_diameter = {quantity(d2, 'mm')} is not allowed: must lie between 0 and the "
@@ -281,8 +282,8 @@ def _geometry(x: Mapping[str, Any]) -> tuple[float, float, float, float, list[st
         )
     d_b = float(iso.mean_bearing_diameter(outer, inner))
     notes.append(
-        f"D_b = (d_o + d_i)/2 = ({quantity(outer, 'mm', '.4g')} + {quantity(inner, 'mm', '.4g')})/2"
-        f" = {quantity(d_b, 'mm', '.4g')}"
+        f"D_b = (d_o + d_i)/2 = ({q(outer, 'mm', fmt='.4g')} + {q(inner, 'mm', fmt='.4g')})/2"
+        f" = {q(d_b, 'mm', fmt='.4g')}"
     )
     return d, float(pitch), float(d2), d_b, notes
 

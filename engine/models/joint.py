@@ -33,6 +33,7 @@ from ..core.spec import (
     Rung,
     fixed_error,
 )
+from ..core.text import q
 from ..physics import fasteners as fa
 from ..physics import joint as jt
 from ..physics import preload as pl
@@ -617,7 +618,7 @@ def _nut_side_outer(x: Mapping[str, Any], read: Callable[[str], Any]) -> Any:
 
 
 def _kn(force: float) -> str:
-    return f"{force / 1e3:.4g} kN"
+    return q(force, "kN", 4)
 
 
 # --------------------------------------------------------------------------- the procedure
@@ -1381,7 +1382,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if x.get("outer_diameter") is None:
         notes.append(
             f"D_A not given: plates taken just wide enough for the full cone, D_A = D_A,Gr = "
-            f"{s['outer_diameter_used'] * 1e3:.4g} mm (our convention; VDI's cone-angle fit "
+            f"{q(s['outer_diameter_used'], 'mm', 4)} (our convention; VDI's cone-angle fit "
             "needs a D_A); a wider plate is stiffer by that fit"
         )
     if (
@@ -1389,8 +1390,8 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         and float(x["outer_diameter"]) < bolt.bearing_outer_diameter
     ):
         warnings.append(
-            f"D_A = {float(x['outer_diameter']) * 1e3:.4g} mm < d_W = "
-            f"{bolt.bearing_outer_diameter * 1e3:.4g} mm: the plates are VDI's sleeve "
+            f"D_A = {q(float(x['outer_diameter']), 'mm', 4)} < d_W = "
+            f"{q(bolt.bearing_outer_diameter, 'mm', 4)}: the plates are VDI's sleeve "
             "(δ_P = 4 l_K/(E π (D_A² − d_h²))); the head bears on the sleeve's face only, so "
             "the surface pressure (R10), computed on d_W, is higher than stated"
         )
@@ -1400,7 +1401,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         nut_w = None if thread is None else fa.nut(str(x["nut"]), thread).bearing_diameter
         if nut_w is not None and nut_outer < nut_w:
             warnings.append(
-                f"D_A = {nut_outer * 1e3:.4g} mm under the nut < its d_W = {nut_w * 1e3:.4g} "
+                f"D_A = {q(nut_outer, 'mm', 4)} under the nut < its d_W = {nut_w * 1e3:.4g} "
                 "mm: the nut bears on the plate's face only; R10 under the nut takes "
                 "A_p = π/4 (D_A² − d_h²)"
             )
@@ -1418,7 +1419,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             )
             + "; each plate's part of the cone is capped at its own D_A (a sleeve below d_W), "
             f"tan φ = {s['cone_tangent']:.4g} from plate 1's D_A = "
-            f"{s['outer_diameter_used'] * 1e3:.4g} mm (VDI 2230-1 R3)"
+            f"{q(s['outer_diameter_used'], 'mm', 4)} (VDI 2230-1 R3)"
         )
     if x.get("service_temperature") is not None:
         hot_notes, hot_warnings = _temperature_notes(x, s, bolt)
@@ -1426,14 +1427,15 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         warnings += hot_warnings
     if s["_where"] == "shank":
         notes.append(
-            f"smallest section is the shank, d_0 = {s['smallest_diameter'] * 1e3:.4g} mm < d_S = "
-            f"{bolt.stress_diameter * 1e3:.4g} mm: F_M,zul = {_kn(f_mzul)} at A_0 = "
-            f"{s['smallest_area'] * 1e6:.4g} mm² (VDI 2230-1 R7)"
+            f"smallest section is the shank, d_0 = {q(s['smallest_diameter'], 'mm', 4)} < d_S = "
+            f"{q(bolt.stress_diameter, 'mm', 4)}: F_M,zul = {_kn(f_mzul)} at A_0 = "
+            f"{q(s['smallest_area'], 'mm²', 4)} (VDI 2230-1 R7)"
         )
     if x.get("tightening_torque") is not None:
         tol, m_u = float(x["torque_tolerance"]), s["_m_u"]
         notes.append(
-            f"torque {s['tightening_torque']:.4g} N·m ± {tol:.0%}, prevailing {m_u:.3g} N·m, "
+            f"torque {q(s['tightening_torque'], 'N*m', 4)} ± {tol:.0%}, "
+            f"prevailing {q(m_u, 'N*m')}, "
             f"μ_G {mu_g_lo:g}…{mu_g_hi:g}, μ_K {mu_k_lo:g}…{mu_k_hi:g}: F_M = {_kn(fm_min)} "
             f"(M_A,min at μ_max) … {_kn(fm_max)} (M_A,max at μ_min), VDI 2230-1 R13 inverted"
         )
@@ -1446,14 +1448,14 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"no torque given: tightened to F_M,zul = {_kn(f_mzul)} with α_A = "
             f"{s['tightening_factor']:.3g} "
             f"({method.key if x.get('tightening_factor') is None else 'as given'}); "
-            f"M_A = {s['tightening_torque']:.4g} N·m at μ_G,min, μ_K,min (VDI 2230-1 R13)"
+            f"M_A = {q(s['tightening_torque'], 'N*m', 4)} at μ_G,min, μ_K,min (VDI 2230-1 R13)"
         )
     if x.get("nut_property_class") is not None and x.get("nut") is None:
         notes.append("nut_property_class ignored: no nut given (a tapped joint, or give nut)")
     e_tapped = _tapped_modulus(x)
     if x.get("nut_youngs_modulus") is None and e_tapped is not None:
         notes.append(
-            f"E_M = {e_tapped / 1e9:.4g} GPa of {x['internal_thread_material']} for the tapped "
+            f"E_M = {q(e_tapped, 'GPa', 4)} of {x['internal_thread_material']} for the tapped "
             "thread's compliance δ_M (VDI 2230-1 R3); give nut_youngs_modulus to override"
         )
     elif (
@@ -1476,7 +1478,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     elif nut is not None and f_nut != f_nut:
         notes.append(
             f"nut strength not checked: ISO 898-2 gives no proof load for class "
-            f"{nut.property_class} at d = {d * 1e3:g} mm"
+            f"{nut.property_class} at d = {q(d, 'mm', 6)}"
         )
     sentences = _sentences(x, s, bolt)
     checks = [
@@ -1486,7 +1488,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     ]
     if not bool(x["controlled"]) and d < 0.010:
         warnings.append(
-            f"d = {d * 1e3:g} mm < 10 mm tightened without control: [004] warns of "
+            f"d = {q(d, 'mm', 6)} < 10 mm tightened without control: [004] warns of "
             "over-tightening; lower the admissible load or control the tightening"
         )
 
@@ -1531,7 +1533,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             else "σ_ASV = 0.85 (150/d + 45) MPa"
         )
         said = (
-            f"R9's endurance limit {relation} = {values['endurance_limit'] / 1e6:.4g} MPa "
+            f"R9's endurance limit {relation} = {q(values['endurance_limit'], 'MPa', 4)} "
             "(the value used) is VDI 2230's fit for metric ISO 898-1 bolts of class 8.8–12.9, "
             f"d ≤ 40 mm; here {outside}: it is applied outside its range"
         )
@@ -1581,16 +1583,16 @@ def _interface_limit_warning(x: Mapping[str, Any], bolt: Bolt) -> list[str]:
         return []
     low, high = jt.TAPPED_INTERFACE_LIMIT
     rule = (
-        f"G' = ({low:g}…{high:g}) d_W = {low * d_w * 1e3:.4g}…{high * d_w * 1e3:.4g} mm of a "
-        f"tapped joint (d_W = {d_w * 1e3:.4g} mm; the lower end applied)"
+        f"G' = ({low:g}…{high:g}) d_W = {low * d_w * 1e3:.4g}…{q(high * d_w, 'mm', 4)} of a "
+        f"tapped joint (d_W = {q(d_w, 'mm', 4)}; the lower end applied)"
         if tapped
-        else f"G = d_W + h_min = {d_w * 1e3:.4g} + {h_min * 1e3:.4g} = {limit * 1e3:.4g} mm of "
+        else f"G = d_W + h_min = {d_w * 1e3:.4g} + {h_min * 1e3:.4g} = {q(limit, 'mm', 4)} of "
         "a through-bolted joint"
     )
     return [
-        f"interface_length c_T = {c_t * 1e3:.4g} mm exceeds VDI 2230-1's limit {rule}: its "
+        f"interface_length c_T = {q(c_t, 'mm', 4)} exceeds VDI 2230-1's limit {rule}: its "
         "eccentric relations (I_Bers, I_BT, Φ*_en, F_KA, σ_SAb) hold only for c_T ≤ G; the "
-        f"interface beyond G is not clamped by this bolt. Give c_T ≤ {limit * 1e3:.4g} mm (the "
+        f"interface beyond G is not clamped by this bolt. Give c_T ≤ {q(limit, 'mm', 4)} (the "
         "part beyond G taken as not clamped), or read the eccentric figures as outside VDI's range"
     ]
 
@@ -1615,21 +1617,21 @@ def _temperature_notes(
             band = None if kind is None else _modulus_band(kind)
             if band is not None and not _in_band(e, *band):
                 warnings.append(
-                    f"plate {i}: E = {e / 1e9:.4g} GPa contradicts clamped_material = "
+                    f"plate {i}: E = {q(e, 'GPa', 4)} contradicts clamped_material = "
                     f"{material} ({kind}, {band[0] / 1e9:g}…{band[1] / 1e9:g} GPa): its E(T) "
                     f"is {kind}'s; name the material under head and nut or correct "
                     f"plate{i}_youngs_modulus"
                 )
         else:
-            read.append(f"plate {i} ({e / 1e9:.4g} GPa) as {by_e or 'no band: room E'}")
+            read.append(f"plate {i} ({q(e, 'GPa', 4)}) as {by_e or 'no band: room E'}")
     plates = (
         ", ".join(read)
         + "; by E: "
         + ", ".join(f"{k} {lo / 1e9:g}…{hi / 1e9:g} GPa" for k, lo, hi in PLATE_MODULUS_BANDS)
     )
     notes = [
-        f"at T = {t:.5g} K ({celsius:.4g} °C): R_p0.2 = {s['_yield_t'] / 1e6:.4g} MPa "
-        f"({bolt.yield_strength / 1e6:.4g} MPa × {s['_yield_t'] / bolt.yield_strength:.4f}, "
+        f"at T = {t:.5g} K ({celsius:.4g} °C): R_p0.2 = {q(s['_yield_t'], 'MPa', 4)} "
+        f"({q(bolt.yield_strength, 'MPa', 4)} × {s['_yield_t'] / bolt.yield_strength:.4f}, "
         "ISO 898-1 Annex A [NFG-898T], linear between its columns) in R8 (S_F; R7's F_M,zul "
         "and the torque at room temperature, the bolt is tightened cold); "
         f"E_S,T/E_S,RT = {s['bolt_modulus_ratio_at_temperature']:.4f} (steel) and "
@@ -1698,27 +1700,27 @@ def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[s
             )
             + ": raise the preload floor (torque, method) or lower F_A"
         ),
-        "R8_working_stress": f"σ_red,B = {stress / 1e6:.4g} MPa at F_S,max = "
+        "R8_working_stress": f"σ_red,B = {q(stress, 'MPa', 4)} at F_S,max = "
         "F_M,max + Φ_n F_A − ΔF_Vth (a thermal gain only) = "
-        f"{_kn(s['max_bolt_force'])} vs R_p0.2 = {s['_yield_t'] / 1e6:.4g} MPa"
+        f"{_kn(s['max_bolt_force'])} vs R_p0.2 = {q(s['_yield_t'], 'MPa', 4)}"
         + ("" if x.get("service_temperature") is None else " at the service temperature")
         + f": S_F = {s_f:.3g} (≥ 1.0)",
         "R9_fatigue": "σ_a = Φ_n (F_A,max − F_A,min)/(2 A_S) = "
-        f"{s['stress_amplitude'] / 1e6:.3g} MPa vs σ_AS = {s['endurance_limit'] / 1e6:.3g} MPa: "
+        f"{q(s['stress_amplitude'], 'MPa')} vs σ_AS = {q(s['endurance_limit'], 'MPa')}: "
         f"S_D = {s['fatigue_safety']:.3g} (VDI asks ≥ 1.2)",
         "R12_slip": "S_G = F_KR,min q_F μ_T / (F_Q + M_Y q_F/(q_M r_a)) = "
         f"{s['slip_safety']:.3g} (VDI asks ≥ {need:g} "
         f"for {'alternating' if need > 1.2 else 'static'} load)",
-        "seed_004_preload_stress": f"σ0 = F_M,nom/A_0 = {sigma0 / 1e6:.4g} MPa = "
+        "seed_004_preload_stress": f"σ0 = F_M,nom/A_0 = {q(sigma0, 'MPa', 4)} = "
         f"{s['preload_stress_ratio']:.2f} σ_T; [004, eq. 6] allows {lo_rule:g}…{hi_rule:g} σ_T "
         f"({why}); VDI 2230 R7 instead limits the equivalent stress to ν R_p0.2 (ν = {nu:g}), "
         "which allows more",
     }
     if "R12_fitted_shear" in s["_checks"] and s["_checks"]["R12_fitted_shear"][0]:
         out["R12_fitted_shear"] = (
-            f"fitted shank: τ_Q = F_Q/(q_F A_τ) = {s['fitted_shear_stress'] / 1e6:.4g} MPa vs "
+            f"fitted shank: τ_Q = F_Q/(q_F A_τ) = {q(s['fitted_shear_stress'], 'MPa', 4)} vs "
             f"τ_B = 0.6 R_m: S_A = {s['fitted_shear_safety']:.3g} (VDI asks ≥ 1.1); bearing "
-            f"p_Q = {s['fitted_bearing_pressure'] / 1e6:.4g} MPa on the thinnest plate, to hold "
+            f"p_Q = {q(s['fitted_bearing_pressure'], 'MPa', 4)} on the thinnest plate, to hold "
             "against the plate's bearing strength"
         )
     if s["_checks"]["opening_limit"][0]:

@@ -18,6 +18,7 @@ from ..core import points
 from ..core.errors import InfeasibleDesign, InputOutOfRange
 from ..core.params import RPM, count, friction_coefficient, length, positive
 from ..core.spec import Answer, Check, ModelSpec, Output, Param, Result, RunContext, Rung
+from ..core.text import q
 from ..physics.clutch import (
     acceleration_torque,
     friction_clutch_torque,
@@ -59,6 +60,11 @@ from ..physics.nutrunner import (
 
 _DIAMETER: dict[str, Any] = {"minimum": 1e-4, "maximum": 2.0, "display_unit": "mm"}
 _MASS: dict[str, Any] = {"minimum": 0.0, "maximum": 1e3, "display_unit": "kg"}
+
+
+def _nm(torque: float) -> str:
+    """A torque [N·m] for a check or a note, 4 significant digits, written "N*m" as here."""
+    return q(torque, "N*m", 4, suffix=" N*m")
 
 
 def _friction_clutch_params() -> tuple[Param, ...]:
@@ -955,15 +961,15 @@ def _checks(x: Mapping[str, Any], values: Mapping[str, Any]) -> tuple[list[Check
             Check(
                 "max_spindle_torque_positive",
                 True,
-                f"the idle spindles' friction takes {(z - 1) * m_tr:.4g} N*m of the "
-                f"{m:.4g} N*m blow; {m_max:.4g} N*m reach the nut",
+                f"the idle spindles' friction takes {_nm((z - 1) * m_tr)} of the "
+                f"{_nm(m)} blow; {_nm(m_max)} reach the nut",
             )
         )
     else:
         detail = (
-            f"the friction of the {z - 1} idle spindles, {(z - 1) * m_tr:.4g} N*m, absorbs "
-            f"the whole {m:.4g} N*m blow (M_max = {m_max:.4g} N*m): lower the friction-clutch "
-            f"torque below {m / max(z - 1, 1):.4g} N*m per spindle, or raise the blow energy"
+            f"the friction of the {z - 1} idle spindles, {_nm((z - 1) * m_tr)}, absorbs "
+            f"the whole {_nm(m)} blow (M_max = {_nm(m_max)}): lower the friction-clutch "
+            f"torque below {_nm(m / max(z - 1, 1))} per spindle, or raise the blow energy"
         )
         checks.append(Check("max_spindle_torque_positive", False, detail))
         warnings.append("no torque reaches the nut: " + detail)
@@ -974,7 +980,7 @@ def _checks(x: Mapping[str, Any], values: Mapping[str, Any]) -> tuple[list[Check
             Check(
                 "wheel_nut_torque",
                 enough,
-                f"{m_max:.4g} N*m reach the nut against the {need:.4g} N*m the wheel nut needs "
+                f"{_nm(m_max)} reach the nut against the {_nm(need)} the wheel nut needs "
                 f"(×{m_max / need:.3g}; [000]: the spindle torque must tighten and free it)"
                 + (
                     ""
@@ -985,7 +991,7 @@ def _checks(x: Mapping[str, Any], values: Mapping[str, Any]) -> tuple[list[Check
             )
         )
     if "wheel_nut_torque" in verdicts and not enough:
-        warnings.append(f"the blow gives {m_max:.4g} N*m, less than the wheel nut's {need:.4g} N*m")
+        warnings.append(f"the blow gives {_nm(m_max)}, less than the wheel nut's {_nm(need)}")
     fit = int(verdicts.get("spindle_gears_fit", -1))
     if fit >= 0:
         d4, d5 = float(x["drive_gear_diameter"]), float(x["spindle_gear_diameter"])
@@ -994,8 +1000,8 @@ def _checks(x: Mapping[str, Any], values: Mapping[str, Any]) -> tuple[list[Check
             Check(
                 "spindle_gears_fit",
                 bool(fit),
-                f"neighbouring spindle gears' centres are {pitch * 1e3:.4g} mm apart on the "
-                f"{(d4 + d5) * 1e3:.4g} mm circle; a gear is {d5 * 1e3:.4g} mm across"
+                f"neighbouring spindle gears' centres are {q(pitch, 'mm', 4)} apart on the "
+                f"{q(d4 + d5, 'mm', 4)} circle; a gear is {q(d5, 'mm', 4)} across"
                 + ("" if fit else ": they overlap, use smaller spindle gears or fewer"),
             )
         )
@@ -1009,7 +1015,7 @@ def _checks(x: Mapping[str, Any], values: Mapping[str, Any]) -> tuple[list[Check
                 Check(
                     name,
                     ok,
-                    f"{part}: peak shear stress {tau / 1e6:.4g} MPa vs yield {tau_y / 1e6:.4g} MPa"
+                    f"{part}: peak shear stress {q(tau, 'MPa', 4)} vs yield {q(tau_y, 'MPa', 4)}"
                     + (
                         ""
                         if ok
@@ -1094,8 +1100,8 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         values["constant_power_time"] = t_cp
         values["time_vs_constant_power"] = t_curve / t_cp - 1.0
         notes.append(
-            f"spin-up by quadrature of J dω/M(ω) on the {curve.kind} curve: {t_curve:.4g} s, "
-            f"{t_curve / t_cp - 1.0:+.1%} against the source's constant-power {t_cp:.4g} s"
+            f"spin-up by quadrature of J dω/M(ω) on the {curve.kind} curve: {q(t_curve, 's', 4)}, "
+            f"{t_curve / t_cp - 1.0:+.1%} against the source's constant-power {q(t_cp, 's', 4)}"
         )
         if curve.kind == "induction":
             notes.append(
@@ -1107,8 +1113,8 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         check = Check(
             "motor_reaches_speed",
             True,
-            f"the motor reaches {w * 30 / math.pi:.0f} rpm in {t_curve:.3g} s; its torque "
-            f"there is {m_end:.4g} N*m ({m_end / m_peak:.0%} of its peak on the way)",
+            f"the motor reaches {q(w, 'rpm', fmt='.0f')} in {q(t_curve, 's')}; its torque "
+            f"there is {_nm(m_end)} ({m_end / m_peak:.0%} of its peak on the way)",
         )
         if wants_series:
             times, speeds = spin_up_profile(j_drive, curve, w)

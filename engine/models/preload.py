@@ -29,6 +29,7 @@ from ..core.spec import (
     Rung,
     Scratch,
 )
+from ..core.text import q
 from ..physics import fasteners as fa
 from ..physics import joint as jt
 from ..physics import preload as pl
@@ -242,7 +243,7 @@ NUT_OUTPUTS: tuple[Output, ...] = (
 
 
 def _kn(force: float) -> str:
-    return f"{force / 1e3:.4g} kN"
+    return q(force, "kN", 4)
 
 
 def nut_limit_warning(
@@ -280,7 +281,7 @@ def nut_class_pairing_text(nut: fa.NutChoice, bolt_tensile_strength: float, ok: 
     cls = nut.property_class
     return (
         f"nut class {cls}{'' if nut.given else ' (assumed)'} with bolt R_m = "
-        f"{bolt_tensile_strength / 1e6:.4g} MPa: ISO 898-2 mates a class-N nut with bolts up "
+        f"{q(bolt_tensile_strength, 'MPa', 4)}: ISO 898-2 mates a class-N nut with bolts up "
         "to class N.x"
         + (
             ""
@@ -401,7 +402,7 @@ def _nut_checks(
     elif proof != proof:
         notes.append(
             f"nut strength not checked: ISO 898-2 gives no proof load for class "
-            f"{nut.choice.property_class} at d = {bolt.diameter * 1e3:g} mm"
+            f"{nut.choice.property_class} at d = {q(bolt.diameter, 'mm', 6)}"
         )
     if nut.choice.pairs:
         notes.append(nut_paired_note(nut.choice))
@@ -717,13 +718,13 @@ def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
     force, total = values["assembly_preload"], values["tightening_torque"]
     sigma_eq, share = values["equivalent_stress"], values["ideal_torque_share"]
     if x.get("preload") is not None:
-        notes.append(f"preload F0 = {force / 1e3:.4g} kN as given (not the permissible one)")
+        notes.append(f"preload F0 = {_kn(force)} as given (not the permissible one)")
         ok = sigma_eq <= bolt.yield_strength
         checks.append(
             Check(
                 "below_yield",
                 ok,
-                f"equivalent stress {sigma_eq / 1e6:.4g} MPa is "
+                f"equivalent stress {q(sigma_eq, 'MPa', 4)} is "
                 f"{sigma_eq / bolt.yield_strength:.1%} of the yield strength"
                 + ("" if ok else ": lower the preload, or choose a stronger property class"),
             )
@@ -1458,9 +1459,9 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
     if shank:
         notes.append(
-            f"smallest section is the shank, d_0 = {d0 * 1e3:.4g} mm < d_S = "
-            f"{bolt.stress_diameter * 1e3:.4g} mm: the permissible and yield preloads use "
-            f"A_0 = {area0 * 1e6:.4g} mm² and W_p = π d_0³/16 (VDI 2230-1 R7; [004, eq. 3–4])"
+            f"smallest section is the shank, d_0 = {q(d0, 'mm', 4)} < d_S = "
+            f"{q(bolt.stress_diameter, 'mm', 4)}: the permissible and yield preloads use "
+            f"A_0 = {q(area0, 'mm²', 4)} and W_p = π d_0³/16 (VDI 2230-1 R7; [004, eq. 3–4])"
         )
     shared, deviation = _control_values(x, bolt, method, (d0, area0), ctx.scratch)
     nut, _ = shared.pop("_nut")
@@ -1490,10 +1491,11 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
         parts = float(_clamped_compliance(bolt, x, method))
         if x.get("clamped_compliance") is None and method.family == "bolt":
             notes.append(
-                f"clamped parts λ_p = {parts * 1e9:.4g} µm/kN from VDI 2230-1 R3's "
-                f"deformation cone (l_K = {x['clamped_length'] * 1e3:g} mm, E_p = "
-                f"{_clamped_youngs(x) / 1e9:g} GPa, d_W = {bolt.bearing_outer_diameter * 1e3:g} "
-                f"mm, d_h = {bolt.hole_diameter * 1e3:g} mm, through-bolted, wide plates); give "
+                f"clamped parts λ_p = {q(parts, 'µm/kN', 4)} from VDI 2230-1 R3's "
+                f"deformation cone (l_K = {q(x['clamped_length'], 'mm', 6)}, E_p = "
+                f"{q(_clamped_youngs(x), 'GPa', 6)}, "
+                f"d_W = {q(bolt.bearing_outer_diameter, 'mm', 6)}, "
+                f"d_h = {q(bolt.hole_diameter, 'mm', 6)}, through-bolted, wide plates); give "
                 "clamped_compliance to override (0: rigid)"
             )
         values.update(_plain(_stretch_values(x, bolt, lengths, diameters, parts, nominal)))
@@ -1532,8 +1534,8 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
         grip = float(x["clamped_length"])
         if method.controls == "elongation" and grip < 6.0 * bolt.diameter:
             warnings.append(
-                f"clamped length {grip * 1e3:g} mm < 6 d: the elongation is only "
-                f"{values['target_elongation'] * 1e6:.0f} µm; [004] warns of large "
+                f"clamped length {q(grip, 'mm', 6)} < 6 d: the elongation is only "
+                f"{q(values['target_elongation'], 'µm', fmt='.0f')}; [004] warns of large "
                 "measuring errors on short bolts"
             )
     elif needs_grip:
@@ -1558,7 +1560,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
         Check(
             "min_meets_clamp",
             meets,
-            f"minimum preload {f_min / 1e3:.4g} kN vs required υ·F_K = {required / 1e3:.4g} kN"
+            f"minimum preload {_kn(f_min)} vs required υ·F_K = {_kn(required)}"
             + (
                 ""
                 if meets
@@ -1570,7 +1572,7 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
         Check(
             "max_below_yield",
             below,
-            f"maximum preload {f_max / 1e3:.4g} kN vs {at_yield / 1e3:.4g} kN at yield"
+            f"maximum preload {_kn(f_max)} vs {_kn(at_yield)} at yield"
             + ("" if below else ": lower the target preload or choose a more accurate method"),
         )
     )
@@ -1642,10 +1644,10 @@ def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
             scatter_torque_applied=fixed,
         )
         notes.append(
-            f"friction scatter at {fixed:.4g} N·m: μ_G {g_range[0]:g}…{g_range[1]:g}, "
+            f"friction scatter at {q(fixed, 'N*m', 4)}: μ_G {g_range[0]:g}…{g_range[1]:g}, "
             f"μ_K {k_range[0]:g}…{k_range[1]:g} (independent, uniform) give "
-            f"preload {f_lo / 1e3:.4g}…{f_hi / 1e3:.4g} kN (the corners), mean "
-            f"{f_mean / 1e3:.4g} kN, ±{spread:.0%} "
+            f"preload {q(f_lo, 'kN', 4, bare=True)}…{_kn(f_hi)} (the corners), mean "
+            f"{_kn(f_mean)}, ±{spread:.0%} "
             '([004, fig. 5]: ±30 % for 38 bolts 5/8" at 80 N·m)'
         )
         notes.append(SCATTER_MEAN_NOTE)

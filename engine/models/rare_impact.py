@@ -32,6 +32,7 @@ from ..core.spec import (
     Scratch,
     Window,
 )
+from ..core.text import q
 from ..numerics.ode import divide, is_array, pymax, quiet, where
 from ..physics.rare_impact import (
     G0,
@@ -456,8 +457,8 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
     weight = x["stepped_shaft_mass"] * x["gravity"]
     margin = float(relock_margin(c2, lam2, x["stepped_shaft_mass"], x["gravity"], ff))
     paper_relock = (
-        f"the condition c2·λ2 + m2·g = {c2 * lam2 + weight:.3g} N > c3·λ3·f = {ff:.3g} N "
-        + ("holds" if margin > 0.0 else f"fails by {-margin:.3g} N")
+        f"the condition c2·λ2 + m2·g = {q(c2 * lam2 + weight, 'N')} > c3·λ3·f = {q(ff, 'N')} "
+        + ("holds" if margin > 0.0 else f"fails by {q(-margin, 'N')}")
         + " [002, eq. 4]"
     )
     if not o.returns or not math.isfinite(o.home_time):
@@ -475,7 +476,7 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
                 "relock",
                 True,
                 f"the auxiliary spring pushes the shaft back h1 in {in_ms(o.relock_time)} against "
-                f"the friction {ff:.3g} N; " + paper_relock + extra,
+                f"the friction {q(ff, 'N')}; " + paper_relock + extra,
             )
         )
     else:
@@ -484,7 +485,7 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
                 "relock",
                 False,
                 f"the auxiliary spring does not push the shaft back h1 against the friction "
-                f"{ff:.3g} N: the shaft will not re-lock; {paper_relock}: raise c2·λ2",
+                f"{q(ff, 'N')}: the shaft will not re-lock; {paper_relock}: raise c2·λ2",
             )
         )
     window = divide(x["engagement_angle"], o.release_speed)
@@ -566,7 +567,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if ctx.rung != "simulation" and ctx.wants("half_coupling_release_speed"):
         notes.append(
             "half_coupling_release_speed is null: the closed form's quasi-static value "
-            f"{o.release_velocity:.3g} m/s leaves out the half-coupling's oscillation, which can "
+            f"{q(o.release_velocity, 'm/s')} leaves out the half-coupling's oscillation, which can "
             "double it; ask the simulation"
         )
     notes.append(_geometry_note(_inputs(x, ctx.scratch), o.release_speed))

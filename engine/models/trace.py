@@ -34,6 +34,7 @@ from ..core.spec import (
     Window,
     fixed_error,
 )
+from ..core.text import q
 from ..physics import joint as jt
 from ..physics import preload as pl
 from ..physics import trace as tr
@@ -560,16 +561,16 @@ def _analysis(x: Mapping[str, Any], ctx: RunContext) -> Result:
         Check(
             "preload_above_minimum",
             f_lo >= j.assembly_preload_min * (1 - 1e-12),
-            f"preload {quantity(f_lo, kn)}…{quantity(f_hi, kn)} "
+            f"preload {q(f_lo, kn)}…{q(f_hi, kn)} "
             f"{'≥' if f_lo >= j.assembly_preload_min else 'reaches below'} the joint's "
-            f"F_M,min = {quantity(j.assembly_preload_min, kn)}",
+            f"F_M,min = {q(j.assembly_preload_min, kn)}",
         ),
         Check(
             "preload_below_permissible",
             f_hi <= j.permissible_preload * (1 + 1e-12),
-            f"preload {quantity(f_lo, kn)}…{quantity(f_hi, kn)} "
+            f"preload {q(f_lo, kn)}…{q(f_hi, kn)} "
             f"{'≤' if f_hi <= j.permissible_preload else 'reaches above'} F_M,zul = "
-            f"{quantity(j.permissible_preload, kn)} (VDI 2230-1 R7)",
+            f"{q(j.permissible_preload, kn)} (VDI 2230-1 R7)",
         ),
         Check(
             "friction_in_joint_range",
@@ -584,7 +585,7 @@ def _analysis(x: Mapping[str, Any], ctx: RunContext) -> Result:
             Check(
                 "yield",
                 allowed,
-                f"yield point at {quantity(float(step.angle[yield_i]), 'deg', '.4g')}, "
+                f"yield point at {q(float(step.angle[yield_i]), 'deg', fmt='.4g')}, "
                 f"{float(step.torque[yield_i]):.4g} N·m (gradient below "
                 f"{float(x['yield_gradient_fraction']):.0%} of the elastic rate)"
                 + ("" if allowed else ": the strategy was not meant to reach yield"),
@@ -1163,8 +1164,8 @@ def _program(x: Mapping[str, Any], ctx: RunContext) -> Result:
         f_lo, f_hi = min(reached), max(reached)
         notes.append(
             f"torque then angle: snug at {snug_share:.0%} of the target "
-            f"{quantity(target, 'kN')} at the middle friction, then "
-            f"{quantity(final, 'deg', '.3g')}; the window holds F_M,min…F_M,zul at every "
+            f"{q(target, 'kN')} at the middle friction, then "
+            f"{q(final, 'deg', fmt='.3g')}; the window holds F_M,min…F_M,zul at every "
             "corner of friction and compliance ([004, eq. 8])"
         )
         final_out: float | None = final
@@ -1193,14 +1194,14 @@ def _program(x: Mapping[str, Any], ctx: RunContext) -> Result:
         Check(
             "window_fits",
             fits,
-            f"preload {quantity(f_lo, 'kN')}…{quantity(f_hi, 'kN')} against F_M,min = "
-            f"{quantity(f_min, 'kN')}"
-            + ("" if strategy == "yield" else f" and F_M,zul = {quantity(f_zul, 'kN')}"),
+            f"preload {q(f_lo, 'kN')}…{q(f_hi, 'kN')} against F_M,min = "
+            f"{q(f_min, 'kN')}"
+            + ("" if strategy == "yield" else f" and F_M,zul = {q(f_zul, 'kN')}"),
         ),
         Check(
             "angle_window_open",
             angle_min <= angle_max,
-            f"angle window {quantity(angle_min, 'deg', '.3g')}…{quantity(angle_max, 'deg', '.3g')}"
+            f"angle window {q(angle_min, 'deg', fmt='.3g')}…{q(angle_max, 'deg', fmt='.3g')}"
             + ("" if angle_min <= angle_max else ": empty, the friction box is too wide"),
         ),
     ]
@@ -1421,8 +1422,8 @@ def _batch(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "all_in_window",
             inside == n,
             f"{inside} of {n} traces have their preload bounds within F_M,min = "
-            f"{quantity(j.assembly_preload_min, kn)} … F_M,zul = "
-            f"{quantity(j.permissible_preload, kn)}",
+            f"{q(j.assembly_preload_min, kn)} … F_M,zul = "
+            f"{q(j.permissible_preload, kn)}",
         ),
         Check(
             "capability",

@@ -24,6 +24,7 @@ from ..core.spec import (
     Rung,
     fixed_error,
 )
+from ..core.text import q
 from ..physics import preload as pl
 from ..physics import ultrasonic as us
 from ..procedures.bolt import resolve_bolt
@@ -256,12 +257,12 @@ def _ultrasonic(x: Mapping[str, Any], ctx: RunContext) -> Result:
         Check(
             "below_yield",
             stress < bolt.yield_strength,
-            f"σ = F/A_s = {stress / 1e6:.4g} MPa "
+            f"σ = F/A_s = {q(stress, 'MPa', 4)} "
             + (
-                f"< R_p0.2 = {bolt.yield_strength / 1e6:.4g} MPa: elongation and preload are "
+                f"< R_p0.2 = {q(bolt.yield_strength, 'MPa', 4)}: elongation and preload are "
                 "proportional"
                 if stress < bolt.yield_strength
-                else f"≥ R_p0.2 = {bolt.yield_strength / 1e6:.4g} MPa: past yield the "
+                else f"≥ R_p0.2 = {q(bolt.yield_strength, 'MPa', 4)}: past yield the "
                 "elastic relation F = ΔL/δ_S no longer holds"
             ),
         ),
@@ -278,7 +279,7 @@ def _ultrasonic(x: Mapping[str, Any], ctx: RunContext) -> Result:
     ratio = effective / bolt.diameter
     if ratio < MIN_LENGTH_RATIO:
         warnings.append(
-            f"effective length {effective * 1e3:.3g} mm is {ratio:.2g} d: ASTM E1685 is meant for "
+            f"effective length {q(effective, 'mm')} is {ratio:.2g} d: ASTM E1685 is meant for "
             f"effective length-to-diameter ratios of {MIN_LENGTH_RATIO:g}:1 or more"
         )
     notes.extend(

@@ -224,7 +224,7 @@ def test_a_monte_carlo_shows_the_pass_fractions_without_a_map(gate_page: Any) ->
     assert pg.is_hidden("#study-map-fig")
     # b = 0.5 m: the gap closes for a ≥ 0.45 m, so always; a fits below 0.85 m: ~70 %
     items = _checks(pg)
-    assert any(t == "✓ gap closed: 100.0 % pass (4,000 pass, 0 fail)" for t in items), items
+    assert any(t == "✓ gap closed: 100.0 % pass (4000 pass, 0 fail)" for t in items), items
     (fits,) = [t for t in items if "a fits" in t]
     share = float(fits.split(": ")[1].split(" %")[0])
     assert 67.0 < share < 73.0, fits

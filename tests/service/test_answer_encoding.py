@@ -91,7 +91,15 @@ def test_kinds_are_coerced_as_the_response_model_did() -> None:
     ours, theirs = _both(spec, result)
     assert _typed(ours) == _typed(theirs)
     assert _typed(ours["results"]) == {int_out: ("int", 3), float_out: ("float", 3.0)}
-    assert ours["checks"] == [{"name": "a", "ok": True, "detail": "fine", "level": "requirement"}]
+    assert ours["checks"] == [
+        {
+            "name": "a",
+            "ok": True,
+            "detail": "fine",
+            "level": "requirement",
+            "detail_parts": ["fine"],
+        }
+    ]
     assert ours["error_estimate"] is None
     assert _coerce("bool", 1) is True and _coerce("bool", 0) is False
     for kind, wrong in [("int", 2.5), ("bool", 2), ("float", "lots"), ("str", 1.0),

@@ -53,10 +53,12 @@ def test_response_shape_and_values(toy):
         "elapsed_s",
         "checks",
         "notes",
+        "notes_parts",
         "warnings",
         "series",
         "inputs",
     }
+    assert [p for ps in body["notes_parts"] for p in ps] == body["notes"]  # no quantities
     assert body["model"] == "toy.disc" and body["rung"] == "exact"
     assert body["error_estimate"] == 1e-15 and body["error_kind"] == "bound"
     assert body["results"]["energy"] == pytest.approx(25.0)

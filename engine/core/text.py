@@ -1,0 +1,225 @@
+"""Quantities in sentences, carried as data.
+
+A model writes its checks and notes as sentences with numbers in them ("F_M = 23.8 kN").
+The form shows them in the unit system the user chose, so each number must travel as a
+value and a unit, not only as digits. :func:`q` writes a quantity for a sentence: the
+text reads as the sentence always read once :func:`plain` has taken the marks out, and
+:func:`parts` splits the same sentence into text and quantities (SI value, SI unit, the
+display unit, the significant digits shown and the text as written).
+
+The marks are three characters of Unicode's private use area, which no sentence of a
+model writes otherwise: a quantity is ``OPEN value SEP display SEP digits SEP bare SEP
+text CLOSE``. A sentence survives f-strings, joins and concatenation with its quantities
+in it; the runner takes the marks out of every check, note and warning before they leave
+the engine (:func:`plain`) and keeps the marked sentences, from which a check's
+``detail_parts`` and the answer's ``notes_parts`` are read when asked (:func:`parts`): an
+API client reads the plain sentence as before and, beside it, the parts. Reading the
+marks is splitting on those characters: no pattern is matched against numbers in free
+text. Refusals (exceptions) keep plain text (:func:`engine.core.params.quantity`).
+
+>>> s = f"F_M = {q(23790.0, 'kN')} is below F_M,min"
+>>> plain(s)
+'F_M = 23.8 kN is below F_M,min'
+>>> parts(s)[1]["value"], parts(s)[1]["unit"], parts(s)[1]["display_unit"]
+(23790.0, 'N', 'kN')
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TypedDict
+
+OPEN = "\ue000"
+SEP = "\ue001"
+CLOSE = "\ue002"
+
+#: Display units of sentences: display unit -> (SI unit as the specs write it, factor
+#: from SI, suffix written after the number).
+DISPLAY: dict[str, tuple[str, float, str]] = {
+    "m": ("m", 1.0, " m"),
+    "mm": ("m", 1e3, " mm"),
+    "µm": ("m", 1e6, " µm"),
+    "mm²": ("m^2", 1e6, " mm²"),
+    "s": ("s", 1.0, " s"),
+    "ms": ("s", 1e3, " ms"),
+    "N": ("N", 1.0, " N"),
+    "kN": ("N", 1e-3, " kN"),
+    "N*m": ("N*m", 1.0, " N·m"),
+    "N*m/rad": ("N*m/rad", 1.0, " N·m/rad"),
+    "N/mm": ("N/m", 1e-3, " N/mm"),
+    "kN/mm": ("N/m", 1e-6, " kN/mm"),
+    "µm/kN": ("m/N", 1e9, " µm/kN"),
+    "m/N": ("m/N", 1.0, " m/N"),
+    "MPa": ("Pa", 1e-6, " MPa"),
+    "GPa": ("Pa", 1e-9, " GPa"),
+    "rpm": ("rad/s", 30.0 / math.pi, " rpm"),
+    "deg": ("rad", 180.0 / math.pi, "°"),
+    "%": ("1", 100.0, " %"),
+    "kg": ("kg", 1.0, " kg"),
+    "kg*m^2": ("kg*m^2", 1.0, " kg·m²"),
+    "J": ("J", 1.0, " J"),
+    "W": ("W", 1.0, " W"),
+    "m/s": ("m/s", 1.0, " m/s"),
+}
+
+
+class Quantity(TypedDict):
+    """A number in a sentence: ``value`` in ``unit`` (SI, None if not finite), written
+    ``text`` in ``display_unit`` with ``digits`` significant digits; ``bare`` when the text
+    is the number alone, its unit written once after a range ("12.3…14.5 kN")."""
+
+    value: float | None
+    unit: str
+    display_unit: str
+    digits: int
+    text: str
+    bare: bool
+
+
+#: A sentence as parts: text, and quantities where the sentence has numbers.
+Parts = list[str | Quantity]
+
+
+def written(value: float, display: str, fmt: str = ".3g") -> str:
+    """An SI ``value`` written in the display unit ``display``, with the format ``fmt``.
+
+    >>> written(0.0042, "mm")
+    '4.2 mm'
+    >>> written(157.07963, "rpm", ".0f")
+    '1500 rpm'
+    >>> written(math.radians(45.0), "deg")
+    '45°'
+    """
+    return _number(value, display, fmt) + DISPLAY[display][2]
+
+
+def _number(value: float, display: str, fmt: str) -> str:
+    """The number of :func:`written`, without its unit."""
+    return f"{value * DISPLAY[display][1]:{fmt}}"
+
+
+def _digits_shown(number: str) -> int:
+    """Significant digits of a number as :func:`written` wrote it ("0.0450" → 3,
+    "-1.50e+03" → 3)."""
+    mantissa = number.partition("e")[0].lstrip("-0.").replace(".", "")
+    return max(1, len(mantissa))
+
+
+def q(
+    value: float,
+    display: str,
+    digits: int = 3,
+    *,
+    fmt: str | None = None,
+    bare: bool = False,
+    suffix: str | None = None,
+) -> str:
+    """A quantity for a sentence: the SI ``value`` written in ``display`` with ``digits``
+    significant digits (or the format ``fmt``, e.g. ``".0f"``), marked so the runner can
+    give it to the form as data; ``bare`` writes the number without its unit (the first
+    of a range: ``f"{q(lo, 'kN', bare=True)}…{q(hi, 'kN')}"``).
+
+    ``display`` is a key of :data:`DISPLAY`; the SI unit comes from there; ``suffix``
+    writes the unit otherwise than :data:`DISPLAY` does (``" N*m"``). The digits the
+    parts carry are those the text shows, at least 3 ("12 mm" written with ``:g`` carries 3,
+    so 0.472 in, not 0.47 in).
+
+    >>> plain(q(23790.0, "kN"))
+    '23.8 kN'
+    >>> plain(q(0.0012, "mm", 4))
+    '1.2 mm'
+    >>> parts(q(201.4, "N*m", fmt=".0f"))[0]["digits"]
+    3
+    >>> plain(q(201.4, "N*m", 4, suffix=" N*m"))
+    '201.4 N*m'
+    """
+    value = float(value)
+    number = _number(value, display, fmt or f".{digits}g")
+    text = number if bare else number + (DISPLAY[display][2] if suffix is None else suffix)
+    shown = max(3, _digits_shown(number))
+    if fmt is None and digits < shown:
+        shown = digits
+    return f"{OPEN}{value!r}{SEP}{display}{SEP}{shown}{SEP}{'1' if bare else ''}{SEP}{text}{CLOSE}"
+
+
+def plain(sentence: str) -> str:
+    """``sentence`` as a person reads it: every quantity's text, the marks taken out.
+
+    >>> plain("M_A = " + q(73.51, "N*m") + " at μ_G = 0.1")
+    'M_A = 73.5 N·m at μ_G = 0.1'
+    >>> plain("no quantity")
+    'no quantity'
+    """
+    if OPEN not in sentence:
+        return sentence
+    head, *marked = sentence.split(OPEN)
+    out = [head]
+    for piece in marked:
+        payload, close, rest = piece.partition(CLOSE)
+        fields = payload.split(SEP)
+        if close and len(fields) == 5 and fields[1] in DISPLAY:
+            out += (fields[4], rest)  # a quantity's text is its last field
+        else:  # not a quantity this module wrote, as parts() reads it
+            out.append(piece.replace(SEP, "").replace(CLOSE, ""))
+    return "".join(out)
+
+
+def parts(sentence: str) -> Parts:
+    """``sentence`` split into its text and its quantities, in order.
+
+    >>> parts("a " + q(150.0, "N") + " b")  # doctest: +NORMALIZE_WHITESPACE
+    ['a ', {'value': 150.0, 'unit': 'N', 'display_unit': 'N', 'digits': 3, 'text': '150 N',
+            'bare': False}, ' b']
+    >>> plain(f"{q(12_300.0, 'kN', bare=True)}…{q(14_500.0, 'kN')}")
+    '12.3…14.5 kN'
+    >>> parts("no quantity")
+    ['no quantity']
+    """
+    if OPEN not in sentence:
+        return [sentence]
+    head, *marked = sentence.split(OPEN)
+    out: Parts = [head] if head else []
+
+    def add(text: str) -> None:  # neighbouring texts joined
+        if out and isinstance(out[-1], str):
+            out[-1] += text
+        elif text:
+            out.append(text)
+
+    for piece in marked:
+        payload, close, rest = piece.partition(CLOSE)
+        fields = payload.split(SEP)
+        if not close or len(fields) != 5 or fields[1] not in DISPLAY:
+            # not a quantity this module wrote: keep what a reader would see
+            add(piece.replace(SEP, "").replace(CLOSE, ""))
+            continue
+        raw, display, shown, flag, text = fields
+        try:
+            value = float(raw)
+            digits = int(shown)
+        except ValueError:
+            add(text + rest)
+            continue
+        out.append(
+            {
+                "value": value if math.isfinite(value) else None,
+                "unit": DISPLAY[display][0],
+                "display_unit": display,
+                "digits": digits,
+                "text": text,
+                "bare": flag == "1",
+            }
+        )
+        add(rest)
+    return out or [""]
+
+
+def split(sentence: str) -> tuple[str, Parts]:
+    """``(plain(sentence), parts(sentence))`` in one pass.
+
+    >>> text, (head, quantity) = split("F_K = " + q(11900.0, "kN"))
+    >>> text, head, quantity["value"], quantity["text"]
+    ('F_K = 11.9 kN', 'F_K = ', 11900.0, '11.9 kN')
+    """
+    ps = parts(sentence)
+    return "".join(p if isinstance(p, str) else p["text"] for p in ps), ps

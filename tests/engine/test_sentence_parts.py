@@ -1,0 +1,88 @@
+"""Checks and notes carry their quantities as data (engine/core/text.py).
+
+A sentence's parts, joined, are its plain text; each quantity's SI value, written in its
+display unit with its digits, is the text the sentence shows; and over HTTP the same
+parts come beside the plain strings, which stay what they were.
+"""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+import engine
+from engine.core.text import DISPLAY, parts, plain, q, split
+from engine.models import get_model
+
+
+def _joined(ps: list) -> str:
+    return "".join(p if isinstance(p, str) else p["text"] for p in ps)
+
+
+def test_a_quantity_reads_as_the_format_it_replaces() -> None:
+    # the f-strings the models wrote before, computed by hand here
+    assert plain(q(23_790.0, "kN", 4)) == f"{23_790.0 / 1e3:.4g} kN" == "23.79 kN"
+    assert plain(q(0.012, "mm", 6)) == f"{0.012 * 1e3:g} mm" == "12 mm"
+    assert plain(q(640e6, "MPa", 4)) == "640 MPa"
+    assert plain(q(73.51, "N*m", 4)) == "73.51 N·m"
+    assert plain(q(math.pi / 4, "deg")) == "45°"
+    assert plain(q(201.4, "N*m", fmt=".0f")) == "201 N·m"
+
+
+def test_parts_carry_the_si_value_and_unit() -> None:
+    text, ps = split(f"F_M = {q(23_790.0, 'kN', 4)} … {q(0.0254, 'mm')} long")
+    assert text == "F_M = 23.79 kN … 25.4 mm long"
+    assert ps[0] == "F_M = " and ps[2] == " … " and ps[4] == " long"
+    force, length = ps[1], ps[3]
+    assert isinstance(force, dict) and isinstance(length, dict)
+    assert (force["value"], force["unit"], force["display_unit"], force["digits"]) == (
+        23_790.0,
+        "N",
+        "kN",
+        4,
+    )
+    assert (length["value"], length["unit"], length["display_unit"]) == (0.0254, "m", "mm")
+
+
+def test_a_non_finite_value_has_no_value_and_a_stray_mark_is_only_dropped() -> None:
+    (quantity,) = parts(q(float("nan"), "kN"))
+    assert isinstance(quantity, dict) and quantity["value"] is None
+    assert quantity["text"] == "nan kN"
+    assert plain("a\ue000b") == "ab"  # not a quantity this module wrote
+
+
+def test_every_display_unit_converts_back_to_its_si_unit() -> None:
+    # 1 display unit in SI, by hand: kN 1000 N, mm 0.001 m, MPa 1e6 Pa, rpm 2π/60 rad/s, ° π/180 rad
+    by_hand = {"kN": 1e3, "mm": 1e-3, "MPa": 1e6, "rpm": 2 * math.pi / 60, "deg": math.pi / 180}
+    for display, si in by_hand.items():
+        assert DISPLAY[display][1] * si == pytest.approx(1.0, rel=1e-15)
+
+
+def test_joint_checks_and_notes_give_parts_whose_text_is_the_sentence() -> None:
+    spec = get_model("joint.vdi2230")
+    r = engine.run(spec, spec.examples[0])
+    window = next(c for c in r.checks if c.name == "R7_window_fits")
+    assert window.detail == _joined(list(window.detail_parts))
+    quantities = [p for p in window.detail_parts if isinstance(p, dict)]
+    # F_M,min, F_M,max = α_A F_M,min and F_M,zul, in N, as the results give them
+    assert [p["unit"] for p in quantities[:3]] == ["N", "N", "N"]
+    assert quantities[0]["value"] == pytest.approx(r.results["required_preload_min"], rel=1e-12)
+    assert quantities[1]["value"] == pytest.approx(r.results["required_preload_max"], rel=1e-12)
+    assert quantities[2]["value"] == pytest.approx(r.results["permissible_preload"], rel=1e-12)
+    f_m_min = float(r.results["required_preload_min"])  # type: ignore[arg-type]
+    assert quantities[0]["text"] == f"{f_m_min / 1e3:.4g} kN"
+    assert len(r.notes_parts) == len(r.notes)
+    for note, ps in zip(r.notes, r.notes_parts, strict=True):
+        assert _joined(ps) == note and "\ue000" not in note
+    assert any(isinstance(p, dict) and p["unit"] == "m" for ps in r.notes_parts for p in ps)
+
+
+def test_the_api_gives_the_parts_beside_the_plain_sentences(client) -> None:  # type: ignore[no-untyped-def]
+    spec = get_model("joint.vdi2230")
+    body = client.post("/api/v1/joint/vdi2230", json=spec.examples[0]).json()
+    for check in body["checks"]:
+        assert _joined(check["detail_parts"]) == check["detail"]
+    assert [_joined(ps) for ps in body["notes_parts"]] == body["notes"]
+    window = next(c for c in body["checks"] if c["name"] == "R7_window_fits")
+    assert window["detail_parts"][1]["unit"] == "N"
