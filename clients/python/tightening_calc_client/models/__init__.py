@@ -854,6 +854,7 @@ from .preload_ultrasonic_sweep_request_fidelity_type_0 import PreloadUltrasonicS
 from .preload_ultrasonic_sweep_request_outputs_type_0_item import PreloadUltrasonicSweepRequestOutputsType0Item
 from .preload_ultrasonic_sweep_request_scale import PreloadUltrasonicSweepRequestScale
 from .preload_ultrasonic_sweep_request_vary import PreloadUltrasonicSweepRequestVary
+from .quantity_out import QuantityOut
 from .sweep_response import SweepResponse
 from .sweep_response_results import SweepResponseResults
 from .sweep_response_units import SweepResponseUnits
@@ -1813,6 +1814,7 @@ __all__ = (
     "PreloadUltrasonicSweepRequestOutputsType0Item",
     "PreloadUltrasonicSweepRequestScale",
     "PreloadUltrasonicSweepRequestVary",
+    "QuantityOut",
     "SweepResponse",
     "SweepResponseResults",
     "SweepResponseUnits",

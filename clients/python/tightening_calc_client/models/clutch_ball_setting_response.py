@@ -15,6 +15,7 @@ if TYPE_CHECKING:
     from ..models.clutch_ball_setting_response_series import ClutchBallSettingResponseSeries
     from ..models.clutch_ball_setting_response_units import ClutchBallSettingResponseUnits
     from ..models.clutch_ball_setting_results import ClutchBallSettingResults
+    from ..models.quantity_out import QuantityOut
 
 
 T = TypeVar("T", bound="ClutchBallSettingResponse")
@@ -35,6 +36,7 @@ class ClutchBallSettingResponse:
             often); null with no estimate
         checks (list[CheckOut] | Unset):
         notes (list[str] | Unset):
+        notes_parts (list[list[QuantityOut | str]] | Unset): each note as texts and quantities (SI values), as notes
         warnings (list[str] | Unset):
         series (ClutchBallSettingResponseSeries | Unset): time series for plots, SI values
         inputs (ClutchBallSettingResponseInputs | Unset): every input used, defaults filled, SI
@@ -49,12 +51,15 @@ class ClutchBallSettingResponse:
     error_kind: ClutchBallSettingResponseErrorKindType0 | None | Unset = UNSET
     checks: list[CheckOut] | Unset = UNSET
     notes: list[str] | Unset = UNSET
+    notes_parts: list[list[QuantityOut | str]] | Unset = UNSET
     warnings: list[str] | Unset = UNSET
     series: ClutchBallSettingResponseSeries | Unset = UNSET
     inputs: ClutchBallSettingResponseInputs | Unset = UNSET
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
+        from ..models.quantity_out import QuantityOut  # noqa: PLC0415
+
         model = self.model
 
         results = self.results.to_dict()
@@ -87,6 +92,21 @@ class ClutchBallSettingResponse:
         if not isinstance(self.notes, Unset):
             notes = self.notes
 
+        notes_parts: list[list[dict[str, Any] | str]] | Unset = UNSET
+        if not isinstance(self.notes_parts, Unset):
+            notes_parts = []
+            for notes_parts_item_data in self.notes_parts:
+                notes_parts_item = []
+                for notes_parts_item_item_data in notes_parts_item_data:
+                    notes_parts_item_item: dict[str, Any] | str
+                    if isinstance(notes_parts_item_item_data, QuantityOut):
+                        notes_parts_item_item = notes_parts_item_item_data.to_dict()
+                    else:
+                        notes_parts_item_item = notes_parts_item_item_data
+                    notes_parts_item.append(notes_parts_item_item)
+
+                notes_parts.append(notes_parts_item)
+
         warnings: list[str] | Unset = UNSET
         if not isinstance(self.warnings, Unset):
             warnings = self.warnings
@@ -117,6 +137,8 @@ class ClutchBallSettingResponse:
             field_dict["checks"] = checks
         if notes is not UNSET:
             field_dict["notes"] = notes
+        if notes_parts is not UNSET:
+            field_dict["notes_parts"] = notes_parts
         if warnings is not UNSET:
             field_dict["warnings"] = warnings
         if series is not UNSET:
@@ -133,6 +155,7 @@ class ClutchBallSettingResponse:
         from ..models.clutch_ball_setting_response_series import ClutchBallSettingResponseSeries  # noqa: PLC0415
         from ..models.clutch_ball_setting_response_units import ClutchBallSettingResponseUnits  # noqa: PLC0415
         from ..models.clutch_ball_setting_results import ClutchBallSettingResults  # noqa: PLC0415
+        from ..models.quantity_out import QuantityOut  # noqa: PLC0415
 
         d = dict(src_dict)
         model = d.pop("model")
@@ -180,6 +203,32 @@ class ClutchBallSettingResponse:
 
         notes = cast(list[str], d.pop("notes", UNSET))
 
+        _notes_parts = d.pop("notes_parts", UNSET)
+        notes_parts: list[list[QuantityOut | str]] | Unset = UNSET
+        if _notes_parts is not UNSET:
+            notes_parts = []
+            for notes_parts_item_data in _notes_parts:
+                notes_parts_item = []
+                _notes_parts_item = notes_parts_item_data
+                for notes_parts_item_item_data in _notes_parts_item:
+
+                    def _parse_notes_parts_item_item(data: object) -> QuantityOut | str:
+                        try:
+                            if not isinstance(data, dict):
+                                raise TypeError()
+                            notes_parts_item_item_type_1 = QuantityOut.from_dict(data)
+
+                            return notes_parts_item_item_type_1
+                        except (TypeError, ValueError, AttributeError, KeyError):
+                            pass
+                        return cast(QuantityOut | str, data)
+
+                    notes_parts_item_item = _parse_notes_parts_item_item(notes_parts_item_item_data)
+
+                    notes_parts_item.append(notes_parts_item_item)
+
+                notes_parts.append(notes_parts_item)
+
         warnings = cast(list[str], d.pop("warnings", UNSET))
 
         _series = d.pop("series", UNSET)
@@ -206,6 +255,7 @@ class ClutchBallSettingResponse:
             error_kind=error_kind,
             checks=checks,
             notes=notes,
+            notes_parts=notes_parts,
             warnings=warnings,
             series=series,
             inputs=inputs,

@@ -135,8 +135,9 @@ class JointFlangeRequest:
         plate_modulus_ratio (float | None | str | Unset): E of the plates at service temperature / at room temperature
             Default: 1.0.
         service_temperature (float | None | str | Unset): Absolute temperature of bolt and plates in service (e.g. '150
-            degC'); absent: room temperature. At it R_p0.2 of the bolt's class (ISO 898-1 Annex A: 5.6, 8.8, 10.9, 12.9)
-            sets R7 and R8, and E of bolt and plates (tables by material) set the thermal preload loss in place of
+            degC'); absent: room temperature; −40…300 °C (below 20 °C the 20 °C values, conservative). At it R_p0.2 of the
+            bolt's class (ISO 898-1 Annex A: 5.6, 8.8, 10.9, 12.9) sets R8 (R7 stays at room temperature: the bolt is
+            tightened cold), and E of bolt and plates (tables by material) set the thermal preload loss in place of
             bolt_modulus_ratio and plate_modulus_ratio
         thread_friction_min (float | None | str | Unset): Smallest thread friction μ_G,min (sets F_M,zul and the highest
             preload) Default: 0.12.

@@ -88,9 +88,9 @@ class JointVdi2230Results:
             [rad]
         nut_stripping_force (float | None | Unset): R11 for a nut that does not pair with the bolt (thin, weaker class):
             F_SM = C1 C3 τ_BM A_SGM over m − 2P, τ_BM = 0.6 S_p (null where the nut pairs or is absent) [N]
-        yield_strength_at_temperature (float | None | Unset): R7/R8 at service_temperature: R_p0.2(T) = R_p0.2 ×
-            R_p0.2,T/R_p0.2,20°C of the class (ISO 898-1 Annex A), the yield strength R7 and R8 use (null at room
-            temperature) [Pa]
+        yield_strength_at_temperature (float | None | Unset): R8 at service_temperature: R_p0.2(T) = R_p0.2 ×
+            R_p0.2,T/R_p0.2,20°C of the class (ISO 898-1 Annex A), the yield strength of S_F in service (R7, tightened cold,
+            keeps R_p0.2 at room temperature; null at room temperature) [Pa]
         bolt_modulus_ratio_at_temperature (float | None | Unset): R4 at service_temperature: E_S,T/E_S,RT of the bolt
             (steel table), in ΔF_Vth (null at room temperature) [dimensionless]
         plate_modulus_ratio_at_temperature (float | None | Unset): R4 at service_temperature: E_P,T/E_P,RT of the

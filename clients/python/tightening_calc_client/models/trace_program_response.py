@@ -11,6 +11,7 @@ from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
     from ..models.check_out import CheckOut
+    from ..models.quantity_out import QuantityOut
     from ..models.trace_program_response_inputs import TraceProgramResponseInputs
     from ..models.trace_program_response_series import TraceProgramResponseSeries
     from ..models.trace_program_response_units import TraceProgramResponseUnits
@@ -35,6 +36,7 @@ class TraceProgramResponse:
             null with no estimate
         checks (list[CheckOut] | Unset):
         notes (list[str] | Unset):
+        notes_parts (list[list[QuantityOut | str]] | Unset): each note as texts and quantities (SI values), as notes
         warnings (list[str] | Unset):
         series (TraceProgramResponseSeries | Unset): time series for plots, SI values
         inputs (TraceProgramResponseInputs | Unset): every input used, defaults filled, SI
@@ -49,12 +51,15 @@ class TraceProgramResponse:
     error_kind: None | TraceProgramResponseErrorKindType0 | Unset = UNSET
     checks: list[CheckOut] | Unset = UNSET
     notes: list[str] | Unset = UNSET
+    notes_parts: list[list[QuantityOut | str]] | Unset = UNSET
     warnings: list[str] | Unset = UNSET
     series: TraceProgramResponseSeries | Unset = UNSET
     inputs: TraceProgramResponseInputs | Unset = UNSET
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
+        from ..models.quantity_out import QuantityOut  # noqa: PLC0415
+
         model = self.model
 
         results = self.results.to_dict()
@@ -87,6 +92,21 @@ class TraceProgramResponse:
         if not isinstance(self.notes, Unset):
             notes = self.notes
 
+        notes_parts: list[list[dict[str, Any] | str]] | Unset = UNSET
+        if not isinstance(self.notes_parts, Unset):
+            notes_parts = []
+            for notes_parts_item_data in self.notes_parts:
+                notes_parts_item = []
+                for notes_parts_item_item_data in notes_parts_item_data:
+                    notes_parts_item_item: dict[str, Any] | str
+                    if isinstance(notes_parts_item_item_data, QuantityOut):
+                        notes_parts_item_item = notes_parts_item_item_data.to_dict()
+                    else:
+                        notes_parts_item_item = notes_parts_item_item_data
+                    notes_parts_item.append(notes_parts_item_item)
+
+                notes_parts.append(notes_parts_item)
+
         warnings: list[str] | Unset = UNSET
         if not isinstance(self.warnings, Unset):
             warnings = self.warnings
@@ -117,6 +137,8 @@ class TraceProgramResponse:
             field_dict["checks"] = checks
         if notes is not UNSET:
             field_dict["notes"] = notes
+        if notes_parts is not UNSET:
+            field_dict["notes_parts"] = notes_parts
         if warnings is not UNSET:
             field_dict["warnings"] = warnings
         if series is not UNSET:
@@ -129,6 +151,7 @@ class TraceProgramResponse:
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
         from ..models.check_out import CheckOut  # noqa: PLC0415
+        from ..models.quantity_out import QuantityOut  # noqa: PLC0415
         from ..models.trace_program_response_inputs import TraceProgramResponseInputs  # noqa: PLC0415
         from ..models.trace_program_response_series import TraceProgramResponseSeries  # noqa: PLC0415
         from ..models.trace_program_response_units import TraceProgramResponseUnits  # noqa: PLC0415
@@ -180,6 +203,32 @@ class TraceProgramResponse:
 
         notes = cast(list[str], d.pop("notes", UNSET))
 
+        _notes_parts = d.pop("notes_parts", UNSET)
+        notes_parts: list[list[QuantityOut | str]] | Unset = UNSET
+        if _notes_parts is not UNSET:
+            notes_parts = []
+            for notes_parts_item_data in _notes_parts:
+                notes_parts_item = []
+                _notes_parts_item = notes_parts_item_data
+                for notes_parts_item_item_data in _notes_parts_item:
+
+                    def _parse_notes_parts_item_item(data: object) -> QuantityOut | str:
+                        try:
+                            if not isinstance(data, dict):
+                                raise TypeError()
+                            notes_parts_item_item_type_1 = QuantityOut.from_dict(data)
+
+                            return notes_parts_item_item_type_1
+                        except (TypeError, ValueError, AttributeError, KeyError):
+                            pass
+                        return cast(QuantityOut | str, data)
+
+                    notes_parts_item_item = _parse_notes_parts_item_item(notes_parts_item_item_data)
+
+                    notes_parts_item.append(notes_parts_item_item)
+
+                notes_parts.append(notes_parts_item)
+
         warnings = cast(list[str], d.pop("warnings", UNSET))
 
         _series = d.pop("series", UNSET)
@@ -206,6 +255,7 @@ class TraceProgramResponse:
             error_kind=error_kind,
             checks=checks,
             notes=notes,
+            notes_parts=notes_parts,
             warnings=warnings,
             series=series,
             inputs=inputs,
