@@ -26,6 +26,7 @@ from __future__ import annotations
 import math
 import re
 from functools import lru_cache
+from pathlib import Path
 from typing import Any
 
 import pint
@@ -43,7 +44,26 @@ _QUANTITY = re.compile(rf"\s*({_NUMBER})\s*({_UNIT})?\s*")
 # pint treats angles as dimensionless too, and "45 deg" is no friction coefficient.
 _DIMENSIONLESS_UNITS = {"%": 0.01, "percent": 0.01, "ppm": 1e-6}
 
-_REGISTRY: Any = pint.UnitRegistry()
+#: pint's cache of its parsed unit definitions (pickles keyed on pint's and Python's versions
+#: and the definition files' content), beside the package's bytecode: building the registry
+#: from it takes about a quarter of the time of parsing the definitions.
+PINT_CACHE = Path(__file__).resolve().parent / "__pycache__" / "pint"
+
+
+def _unit_registry() -> Any:
+    """pint's unit registry, from its definition cache where that can be read or written,
+    parsed afresh otherwise (a read-only install, a cache file another process is writing).
+
+    >>> _unit_registry().parse_units("mm")
+    <Unit('millimeter')>
+    """
+    try:
+        return pint.UnitRegistry(cache_folder=PINT_CACHE)
+    except Exception:  # no cache: the same registry, slower
+        return pint.UnitRegistry()
+
+
+_REGISTRY: Any = _unit_registry()
 # spellings workshop users type that pint does not know
 _REGISTRY.define("Nm = newton * meter")
 _REGISTRY.define("RPM = revolution / minute")

@@ -30,8 +30,12 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from scipy import stats
-from scipy.special import ndtr, ndtri
+
+from .lazy import LazyModule
+
+#: scipy, imported on first use (engine.numerics.lazy): it weighs on the service's start-up
+special = LazyModule("scipy.special")
+stats = LazyModule("scipy.stats")
 
 #: The laws :class:`Law` knows, by ``kind``.
 KINDS = ("uniform", "normal", "truncated_normal", "lognormal", "triangular", "fixed")
@@ -91,7 +95,7 @@ def normal_cdf(x: Any, mean: Any, sd: Any) -> Any:
     >>> round(float(normal_cdf(-3.0, 0.0, 1.0)), 7)
     0.0013499
     """
-    return ndtr((np.asarray(x, dtype=float) - mean) / sd)
+    return special.ndtr((np.asarray(x, dtype=float) - mean) / sd)
 
 
 def normal_sf(x: Any, mean: Any, sd: Any) -> Any:
@@ -100,7 +104,7 @@ def normal_sf(x: Any, mean: Any, sd: Any) -> Any:
     >>> float(normal_sf(8.0, 0.0, 1.0)) > 0.0
     True
     """
-    return ndtr((mean - np.asarray(x, dtype=float)) / sd)
+    return special.ndtr((mean - np.asarray(x, dtype=float)) / sd)
 
 
 def normal_ppf(u: Any, mean: Any, sd: Any) -> Any:
@@ -111,7 +115,7 @@ def normal_ppf(u: Any, mean: Any, sd: Any) -> Any:
     >>> round(float(normal_ppf(0.00135, 10.0, 2.0)), 3)
     4.0
     """
-    return mean + sd * ndtri(u)
+    return mean + sd * special.ndtri(u)
 
 
 def normal_pdf(x: Any, mean: Any, sd: Any) -> Any:
@@ -203,7 +207,7 @@ def lognormal_cdf(x: Any, median: Any, gsd: Any) -> Any:
     >>> float(lognormal_cdf(0.12, 0.12, 1.1))
     0.5
     """
-    return ndtr(_log_score(x, median, gsd))
+    return special.ndtr(_log_score(x, median, gsd))
 
 
 def lognormal_sf(x: Any, median: Any, gsd: Any) -> Any:
@@ -212,7 +216,7 @@ def lognormal_sf(x: Any, median: Any, gsd: Any) -> Any:
     >>> float(lognormal_sf(0.12, 0.12, 1.1))
     0.5
     """
-    return ndtr(-_log_score(x, median, gsd))
+    return special.ndtr(-_log_score(x, median, gsd))
 
 
 def lognormal_ppf(u: Any, median: Any, gsd: Any) -> Any:
@@ -221,7 +225,7 @@ def lognormal_ppf(u: Any, median: Any, gsd: Any) -> Any:
     >>> round(float(lognormal_ppf(0.8413447460685429, 0.12, 1.1)), 6)
     0.132
     """
-    return median * np.exp(np.log(gsd) * ndtri(u))
+    return median * np.exp(np.log(gsd) * special.ndtri(u))
 
 
 def lognormal_pdf(x: Any, median: Any, gsd: Any) -> Any:
@@ -349,8 +353,8 @@ def conditional_normal_cdf(z: Any, given: Any, rho: Any) -> Any:
     0.841345
     """
     if np.ndim(rho) == 0 and rho == 0.0:  # independent: the given score does not enter
-        return ndtr(z)
-    return ndtr((z - rho * given) / np.sqrt(1.0 - rho * rho))
+        return special.ndtr(z)
+    return special.ndtr((z - rho * given) / np.sqrt(1.0 - rho * rho))
 
 
 def correlate_scores(scores: Any, correlation: Any) -> Any:
@@ -459,12 +463,12 @@ class Law:
         if self.kind == "uniform":  # the nearer tail's share, 0…0.5, straight from x
             u = (np.asarray(x, dtype=float) - self.low) / (self.high - self.low)
             with np.errstate(divide="ignore"):
-                z = ndtri(np.clip(np.minimum(u, 1.0 - u), 0.0, 0.5))
+                z = special.ndtri(np.clip(np.minimum(u, 1.0 - u), 0.0, 0.5))
             return np.where(u <= 0.5, z, -z)
         lower = np.asarray(self.cdf(x), dtype=float)
         upper = np.asarray(self.sf(x), dtype=float)
         with np.errstate(divide="ignore"):
-            z = ndtri(np.minimum(lower, upper))
+            z = special.ndtri(np.minimum(lower, upper))
         return np.where(lower <= upper, z, -z)
 
     def from_score(self, z: Any) -> Any:
@@ -480,8 +484,8 @@ class Law:
             return self.median * np.exp(np.log(self.gsd) * z)
         if self.kind == "fixed":
             return np.full(z.shape, self.mean)
-        lower = self.ppf(ndtr(np.minimum(z, 0.0)))
-        upper = self.ppf(1.0 - ndtr(-np.maximum(z, 0.0)))
+        lower = self.ppf(special.ndtr(np.minimum(z, 0.0)))
+        upper = self.ppf(1.0 - special.ndtr(-np.maximum(z, 0.0)))
         return np.where(z <= 0.0, lower, upper)
 
     @property

@@ -33,12 +33,15 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from scipy.special import erfc, ndtri
 
 from ..numerics import laws
 from ..numerics.laws import Law
+from ..numerics.lazy import LazyModule
 from . import joint as jt
 from . import preload as pl
+
+#: scipy, imported on first use (engine.numerics.lazy): it weighs on the service's start-up
+special = LazyModule("scipy.special")
 
 #: Half the 6σ spread: the index divides a half-tolerance by 3σ.
 _SIGMAS_PER_SIDE = 3.0
@@ -220,7 +223,9 @@ def normal_fraction_outside(
     2700
     """
     scale = standard_deviation * math.sqrt(2.0)
-    return 0.5 * (erfc((mean - lower_limit) / scale) + erfc((upper_limit - mean) / scale))
+    return 0.5 * (
+        special.erfc((mean - lower_limit) / scale) + special.erfc((upper_limit - mean) / scale)
+    )
 
 
 # --------------------------------------------------------------------------- ISO 5393 runs
@@ -905,7 +910,7 @@ def tail_quantiles(
     table: dict[bool, Any] = {}
 
     def score(p: Any, upper: bool) -> Any:
-        s = ndtri(np.clip(p, 1e-300, 1.0 - 1e-16))
+        s = special.ndtri(np.clip(p, 1e-300, 1.0 - 1e-16))
         return -s if upper else s  # rising with x either way
 
     out = []
@@ -913,7 +918,7 @@ def tail_quantiles(
         upper = q >= 0.5
         if upper not in table:
             table[upper] = np.asarray(tails(levels, upper, 4))
-        target = float(ndtri(1.0 - q if upper else q)) * (-1.0 if upper else 1.0)
+        target = float(special.ndtri(1.0 - q if upper else q)) * (-1.0 if upper else 1.0)
         g = score(table[upper], upper) - target
         above = np.flatnonzero(g >= 0.0)
         if above.size == 0:

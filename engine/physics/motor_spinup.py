@@ -20,9 +20,12 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from scipy import integrate
 
 from ..core.errors import InfeasibleDesign, SolverFailed
+from ..numerics.lazy import LazyModule
+
+#: scipy, imported on first use (engine.numerics.lazy): it weighs on the service's start-up
+integrate = LazyModule("scipy.integrate")
 
 __all__ = [
     "MotorCurve",

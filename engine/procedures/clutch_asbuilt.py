@@ -19,12 +19,12 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 import numpy as np
-from scipy.optimize import brentq
 
 from ..core import points
 from ..core.errors import InputOutOfRange
 from ..core.params import DEG, count, friction_coefficient, length, positive
 from ..core.spec import Check, Output, Param, Plot, Window
+from ..numerics.lazy import LazyModule
 from ..physics import springs as sp
 from ..physics.clutch import (
     CONSTRUCTIONS,
@@ -44,6 +44,9 @@ from ..physics.clutch import (
 from ..physics.clutch import acceleration_torque as cl_acceleration_torque
 from ..physics.clutch import rated_torque as cl_rated_torque
 from ..physics.clutch import required_slip_torque as cl_required_slip_torque
+
+#: scipy, imported on first use (engine.numerics.lazy): it weighs on the service's start-up
+optimize = LazyModule("scipy.optimize")
 
 #: Points on the flank (and as many over the rim) of the characteristic.
 POINTS = 41
@@ -1243,7 +1246,7 @@ def solve_setting(
     if above.size == 0:
         return None
     i = int(above[0]) + 1  # the first grid point at or past the target
-    return float(brentq(peak, float(grid[i - 1]), float(grid[i]), xtol=1e-12, rtol=1e-12))
+    return float(optimize.brentq(peak, float(grid[i - 1]), float(grid[i]), xtol=1e-12, rtol=1e-12))
 
 
 Candidate = Callable[[float], Mapping[str, Any]]
@@ -1510,7 +1513,7 @@ def disc_breakaway_setting(x: Mapping[str, Any], force: float) -> float | None:
 
     if excess(upper) < 0.0:
         return None
-    return float(brentq(excess, 0.0, upper, xtol=1e-13, rtol=1e-12))
+    return float(optimize.brentq(excess, 0.0, upper, xtol=1e-13, rtol=1e-12))
 
 
 # --------------------------------------------------------------------------

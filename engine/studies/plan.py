@@ -33,15 +33,18 @@ from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
-from scipy import stats
-from scipy.special import ndtr, ndtri
-from scipy.stats import qmc
 
 from ..core.errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange
 from ..core.points import at, auto_index, in_range, rung_estimates, take, vector
 from ..core.runner import DEFAULT_TOLERANCE, choose_rung, run
 from ..core.spec import ModelSpec, Param, Scratch
 from ..numerics import laws
+from ..numerics.lazy import LazyModule
+
+#: scipy, imported on first use (engine.numerics.lazy): it weighs on the service's start-up
+special = LazyModule("scipy.special")
+stats = LazyModule("scipy.stats")
+qmc = LazyModule("scipy.stats.qmc")
 
 METHODS = ("grid", "monte_carlo", "lhs", "sobol", "points")
 DISTRIBUTIONS = ("uniform", "normal", "triangular", "lognormal")
@@ -555,7 +558,9 @@ def plan(spec: ModelSpec, study: Study) -> Plan:
     correlation = _correlation_matrix(study)
     if correlation is not None:
         # Gaussian copula: the uniforms' normal scores correlated, then back to uniforms
-        u = np.clip(ndtr(laws.correlate_scores(ndtri(u), correlation)), 1e-12, 1.0 - 1e-12)
+        u = np.clip(
+            special.ndtr(laws.correlate_scores(special.ndtri(u), correlation)), 1e-12, 1.0 - 1e-12
+        )
         notes.append(
             "correlated inputs drawn through a Gaussian copula of the given rank correlations"
             + (" (the copula mixes the Latin hypercube's strata)" if study.method == "lhs" else "")
