@@ -8,8 +8,8 @@ text reads as the sentence always read once :func:`plain` has taken the marks ou
 display unit, the significant digits shown and the text as written).
 
 The marks are three characters of Unicode's private use area, which no sentence of a
-model writes otherwise: a quantity is ``OPEN value SEP display SEP digits SEP bare SEP
-text CLOSE``. A sentence survives f-strings, joins and concatenation with its quantities
+model writes otherwise: a quantity is ``OPEN text SEP value SEP display SEP digits SEP
+bare CLOSE``. A sentence survives f-strings, joins and concatenation with its quantities
 in it; the runner takes the marks out of every check, note and warning before they leave
 the engine (:func:`plain`) and keeps the marked sentences, from which a check's
 ``detail_parts`` and the answer's ``notes_parts`` are read when asked (:func:`parts`): an
@@ -27,6 +27,7 @@ text. Refusals (exceptions) keep plain text (:func:`engine.core.params.quantity`
 from __future__ import annotations
 
 import math
+import re
 from typing import TypedDict
 
 OPEN = "\ue000"
@@ -61,6 +62,11 @@ DISPLAY: dict[str, tuple[str, float, str]] = {
     "W": ("W", 1.0, " W"),
     "m/s": ("m/s", 1.0, " m/s"),
 }
+
+
+#: A quantity's marks as :func:`q` writes them (five fields; the text is the last): the marks
+#: alone are matched, never the numbers of free text.
+_DATA = re.compile(f"{SEP}[^{OPEN}{CLOSE}]*{CLOSE}")
 
 
 class Quantity(TypedDict):
@@ -134,12 +140,25 @@ def q(
     '201.4 N*m'
     """
     value = float(value)
-    number = _number(value, display, fmt or f".{digits}g")
+    spec = fmt or f".{digits}g"
+    number = f"{value * DISPLAY[display][1]:{spec}}"
     text = number if bare else number + (DISPLAY[display][2] if suffix is None else suffix)
-    shown = max(3, _digits_shown(number))
-    if fmt is None and digits < shown:
-        shown = digits
-    return f"{OPEN}{value!r}{SEP}{display}{SEP}{shown}{SEP}{'1' if bare else ''}{SEP}{text}{CLOSE}"
+    # the digits the parts carry are counted when they are asked for (parts()): a request
+    # writes many sentences and reads their parts rarely; "=" marks an explicit format
+    how = spec if fmt is None else "=" + fmt
+    return f"{OPEN}{text}{SEP}{value!r}{SEP}{display}{SEP}{how}{SEP}{'1' if bare else ''}{CLOSE}"
+
+
+def _shown(value: float, display: str, how: str) -> int:
+    """The significant digits a quantity's parts carry: those its text shows, at least 3,
+    at most the digits asked for (``how`` is ``".4g"``, or ``"=" + fmt`` for a format)."""
+    explicit = how.startswith("=")
+    spec = how[1:] if explicit else how
+    shown = max(3, _digits_shown(_number(value, display, spec)))
+    if not explicit:
+        asked = int(spec[1:-1])
+        shown = min(shown, asked)
+    return shown
 
 
 def plain(sentence: str) -> str:
@@ -152,13 +171,17 @@ def plain(sentence: str) -> str:
     """
     if OPEN not in sentence:
         return sentence
+    # each quantity's data dropped and its opening mark: two passes in C
+    fast = _DATA.sub("", sentence).replace(OPEN, "")
+    if SEP not in fast and CLOSE not in fast:
+        return fast
     head, *marked = sentence.split(OPEN)
     out = [head]
     for piece in marked:
         payload, close, rest = piece.partition(CLOSE)
         fields = payload.split(SEP)
-        if close and len(fields) == 5 and fields[1] in DISPLAY:
-            out += (fields[4], rest)  # a quantity's text is its last field
+        if close and len(fields) == 5 and fields[2] in DISPLAY:
+            out += (fields[0], rest)  # a quantity's text is its first field
         else:  # not a quantity this module wrote, as parts() reads it
             out.append(piece.replace(SEP, "").replace(CLOSE, ""))
     return "".join(out)
@@ -189,14 +212,14 @@ def parts(sentence: str) -> Parts:
     for piece in marked:
         payload, close, rest = piece.partition(CLOSE)
         fields = payload.split(SEP)
-        if not close or len(fields) != 5 or fields[1] not in DISPLAY:
+        if not close or len(fields) != 5 or fields[2] not in DISPLAY:
             # not a quantity this module wrote: keep what a reader would see
             add(piece.replace(SEP, "").replace(CLOSE, ""))
             continue
-        raw, display, shown, flag, text = fields
+        text, raw, display, how, flag = fields
         try:
             value = float(raw)
-            digits = int(shown)
+            digits = _shown(value, display, how) if math.isfinite(value) else 3
         except ValueError:
             add(text + rest)
             continue
