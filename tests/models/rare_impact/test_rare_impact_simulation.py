@@ -5,7 +5,7 @@ import time
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
@@ -532,6 +532,12 @@ def test_rungs_agree_as_the_spin_up_slows():
     no_load=st.one_of(st.none(), st.floats(50.0, 5000.0)),
     geometry=st.sampled_from(C.GEOMETRIES),
 )
+# heavy rollers on a light flywheel, no power-spring preload, a soft c2: the estimate once
+# took the flywheel's acceleration at lift-off on the inertia at release (half of it here)
+# and missed the closed form's release-speed error by 1.38x
+@example(c1=334100.0, c2=100.0, lam1=0.0, lam2=0.00391, alpha=0.125, mp=0.5, n=4, x0=0.0569,
+         inertia=0.015625, torque=0.125, h1=0.015625, no_load=None,
+         geometry="symmetric_v")  # fmt: skip
 def test_property_quasi_static_stage1_within_its_estimate(
     c1, c2, lam1, lam2, alpha, mp, n, x0, inertia, torque, h1, no_load, geometry
 ):
