@@ -18,8 +18,9 @@ from typing import Any
 import numpy as np
 
 from ..core.errors import EngineError, InputOutOfRange
-from ..core.params import positive, quantity
+from ..core.params import positive
 from ..core.spec import Check, Output, Param
+from ..core.text import q
 from ..physics import fasteners as fa
 from ..physics import threads as th
 
@@ -310,8 +311,8 @@ def resolve(x: Mapping[str, Any]) -> tuple[dict[str, Any], Fastener, list[str]]:
         )
         if t.is_metric:
             notes.append(
-                f"thread {t.designation}: P = {t.pitch * 1e3:g} mm (ISO 261/262), "
-                f"A_s = {t.stress_area * 1e6:.4g} mm² (ISO 898-1)"
+                f"thread {t.designation}: P = {q(t.pitch, 'mm', fmt='g')} (ISO 261/262), "
+                f"A_s = {q(t.stress_area, 'mm²', 4)} (ISO 898-1)"
             )
         else:
             notes.append(
@@ -341,9 +342,9 @@ def resolve(x: Mapping[str, Any]) -> tuple[dict[str, Any], Fastener, list[str]]:
                 yield_strength=grade.yield_strength, tensile_strength=grade.tensile_strength
             )
             notes.append(
-                f"grade {grade.name} ({grade.standard}) at d = {d * 1e3:.4g} mm: "
-                f"yield {quantity(grade.yield_strength, 'MPa', '.4g')}, "
-                f"R_m {quantity(grade.tensile_strength, 'MPa', '.4g')} (minimum values)"
+                f"grade {grade.name} ({grade.standard}) at d = {q(d, 'mm', 4)}: "
+                f"yield {q(grade.yield_strength, 'MPa', 4)}, "
+                f"R_m {q(grade.tensile_strength, 'MPa', 4)} (minimum values)"
             )
     elif thread is not None and not thread.is_metric and x.get("yield_strength") is None:
         raise InputOutOfRange(
@@ -363,9 +364,7 @@ def resolve(x: Mapping[str, Any]) -> tuple[dict[str, Any], Fastener, list[str]]:
         if x.get("bearing_outer_diameter") is None:
             fields["bearing_outer_diameter"] = head.bearing_diameter
             what = "d_k,min of the countersunk head" if head.style == "countersunk" else "d_w,min"
-            notes.append(
-                f"bearing face D_f = {what} = {head.bearing_diameter * 1e3:.4g} mm ({std})"
-            )
+            notes.append(f"bearing face D_f = {what} = {q(head.bearing_diameter, 'mm', 4)} ({std})")
         if head.style == "countersunk":
             factor = fa.countersunk_friction_factor(head.cone_angle)
             fields["bearing_friction_factor"] = factor
@@ -384,7 +383,8 @@ def resolve(x: Mapping[str, Any]) -> tuple[dict[str, Any], Fastener, list[str]]:
             series = str(x.get("hole_series") or "medium")
             fields["hole_diameter"] = fa.clearance_hole(thread, series)
             notes.append(
-                f"clearance hole d_h = {fields['hole_diameter'] * 1e3:g} mm (ISO 273 {series})"
+                f"clearance hole d_h = {q(fields['hole_diameter'], 'mm', fmt='g')} "
+                f"(ISO 273 {series})"
             )
         else:
             fields["hole_diameter"] = fa.clearance_hole(thread)
@@ -434,15 +434,18 @@ class Bolt:
 def _class_note(name: str, diameter: float, yield_strength: float, tensile: float) -> str:
     """Where a property class's strengths come from: ISO 898-1, or its M39 values carried on."""
     kind = th.PROPERTY_CLASSES[name].yield_kind
-    values = f"{kind} = {yield_strength / 1e6:g} MPa, R_m = {tensile / 1e6:g} MPa"
+    values = f"{kind} = {q(yield_strength, 'MPa', fmt='g')}, R_m = {q(tensile, 'MPa', fmt='g')}"
     if th.beyond_iso898(name, diameter):
         return (
-            f"property class {name}, d = {diameter * 1e3:g} mm: ISO 898-1 defines the class "
+            f"property class {name}, d = {q(diameter, 'mm', fmt='g')}: ISO 898-1 defines the class "
             f"only up to M39; its M39 minimum values {values} are taken here (an assumption: "
             "larger bolts are made to the class by agreement); give yield_strength for the "
             "bolt's certified values"
         )
-    return f"property class {name}, d = {diameter * 1e3:g} mm: {values} (ISO 898-1 minimum values)"
+    return (
+        f"property class {name}, d = {q(diameter, 'mm', fmt='g')}: {values} "
+        "(ISO 898-1 minimum values)"
+    )
 
 
 def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
@@ -490,7 +493,7 @@ def _bolt_numbers(
             ok = ok & found
         else:
             pitch = th.coarse_pitch(d)
-            note(lambda: f"pitch P = {pitch * 1e3:g} mm: ISO 261 coarse thread M{d * 1e3:g}")
+            note(lambda: f"pitch P = {q(pitch, 'mm', fmt='g')}: ISO 261 coarse thread M{d * 1e3:g}")
     else:
         pitch = num(x["thread_pitch"])
         need(
@@ -504,7 +507,7 @@ def _bolt_numbers(
     tensile: Any
     if x.get("yield_strength") is not None:
         yield_strength, tensile = num(x["yield_strength"]), None
-        note(lambda: f"yield strength R_p0.2 = {yield_strength / 1e6:g} MPa as given")
+        note(lambda: f"yield strength R_p0.2 = {q(yield_strength, 'MPa', fmt='g')} as given")
     elif "yield_strength" in cat:
         yield_strength, tensile = num(cat["yield_strength"]), num(cat["tensile_strength"])
     else:
@@ -533,7 +536,11 @@ def _bolt_numbers(
         ok = ok & found
     else:
         outer = th.hex_bearing_diameter(d)
-        note(lambda: f"bearing face D_f = d_w,min = {outer * 1e3:g} mm (ISO 4017 hexagon head)")
+        note(
+            lambda: (
+                f"bearing face D_f = d_w,min = {q(outer, 'mm', fmt='g')} (ISO 4017 hexagon head)"
+            )
+        )
     if x.get("hole_diameter") is not None:
         hole = num(x["hole_diameter"])
         need(
@@ -554,7 +561,7 @@ def _bolt_numbers(
             ok = ok & found
         else:
             hole = th.clearance_hole(d, series)
-            note(lambda: f"clearance hole d_h = {hole * 1e3:g} mm (ISO 273 {series})")
+            note(lambda: f"clearance hole d_h = {q(hole, 'mm', fmt='g')} (ISO 273 {series})")
     need(
         outer > hole,
         lambda: InputOutOfRange(
@@ -1011,8 +1018,8 @@ def bought_part_checks(
         where = f"washer {parts.washer.standard}"
         notes.append(
             f"the clamped part bears on the {parts.washer.standard} washer: d = "
-            f"{parts.inner * 1e3:.3g}…{parts.outer * 1e3:.3g} mm (taken as spreading over its "
-            "whole face; true for a hardened washer, optimistic for a thin soft one)"
+            f"{q(parts.inner, 'mm', bare=True)}…{q(parts.outer, 'mm')} (taken as spreading "
+            "over its whole face; true for a hardened washer, optimistic for a thin soft one)"
         )
     if parts.nut is not None and parts.nut.standard == "ISO 4035":
         notes.append(
@@ -1042,13 +1049,13 @@ def bought_part_checks(
                     name,
                     ok,
                     f"surface pressure under the {face} at {force_name}: "
-                    f"{quantity(p, 'MPa', '.4g')} vs p_G = {quantity(limit, 'MPa', '.4g')} ({src}; "
+                    f"{q(p, 'MPa', 4)} vs p_G = {q(limit, 'MPa', 4)} ({src}; "
                     "VDI 2230-1 R10)"
                     + (
                         ""
                         if ok
-                        else f": needs a bearing area ≥ {need / limit * 1e6:.4g} mm² (now "
-                        f"{area * 1e6:.4g} mm²): a washer (ISO 7093), a flange head (EN 1665) "
+                        else f": needs a bearing area ≥ {q(need / limit, 'mm²', 4)} (now "
+                        f"{q(area, 'mm²', 4)}): a washer (ISO 7093), a flange head (EN 1665) "
                         "or a lower preload"
                     ),
                 )
@@ -1068,7 +1075,7 @@ def bought_part_checks(
     elif s is not None:
         notes.append(
             f"thread stripping (VDI 2230-1 R11 after Alexander): τ_BM = "
-            f"{quantity(parts.tau, 'MPa', '.4g')} ({parts.tau_source}), τ_BS = "
+            f"{q(parts.tau, 'MPa', 4)} ({parts.tau_source}), τ_BS = "
             f"{BOLT_SHEAR_RATIO:g} R_m, R_S = {s.strength_ratio:.3g}, C1 = {s.c1:.3g} (tapped "
             f"hole), C2 = {s.c2:.3g}, C3 = {s.c3:.3g}; the {s.weaker} thread is the weaker; "
             f"F_B at the bolt's upper strength {fa.BOLT_UPPER_STRENGTH_FACTOR:g} R_m; lengths "
@@ -1080,15 +1087,15 @@ def bought_part_checks(
                 Check(
                     "thread_stripping",
                     ok,
-                    f"engagement {quantity(length, 'mm')} vs the "
-                    f"{quantity(s.min_engagement_length, 'mm')} needed for the bolt "
-                    f"({quantity(s.bolt_breaking_force, 'kN', '.4g')}) to break before the "
-                    f"{s.weaker} thread strips ({quantity(s.strip_force, 'kN', '.4g')} at this "
+                    f"engagement {q(length, 'mm')} vs the "
+                    f"{q(s.min_engagement_length, 'mm')} needed for the bolt "
+                    f"({q(s.bolt_breaking_force, 'kN', 4)}) to break before the "
+                    f"{s.weaker} thread strips ({q(s.strip_force, 'kN', 4)} at this "
                     "length)"
                     + (
                         ""
                         if ok
-                        else f": engage at least {quantity(s.min_engagement_length, 'mm')} of "
+                        else f": engage at least {q(s.min_engagement_length, 'mm')} of "
                         "thread (chamfers included), use a thread insert, or a stronger "
                         "internal-thread "
                         "material"
@@ -1104,13 +1111,15 @@ def bought_part_checks(
     # --- drive torque, ISO 2936 hex keys
     if "drive_torque" in verdicts:
         head = fastener.head
-        assert head is not None and tightening_torque is not None
+        key_limit = parts.key_limit
+        assert head is not None and tightening_torque is not None and key_limit is not None
         ok = bool(verdicts["drive_torque"])
         checks.append(
             Check(
                 "drive_torque",
                 ok,
-                f"tightening torque {tightening_torque:.3g} N·m vs {parts.key_limit:g} N·m, the "
+                f"tightening torque {q(tightening_torque, 'N*m')} vs "
+                f"{q(key_limit, 'N*m', fmt='g')}, the "
                 f"ISO 2936 test torque of the {head.drive_size * 1e3:g} mm hex key of the "
                 f"{head.standard} head"
                 + (

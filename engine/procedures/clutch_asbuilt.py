@@ -24,6 +24,7 @@ from ..core import points
 from ..core.errors import InputOutOfRange
 from ..core.params import DEG, count, friction_coefficient, length, positive
 from ..core.spec import Check, Output, Param, Plot, Window
+from ..core.text import q
 from ..numerics.lazy import LazyModule
 from ..physics import springs as sp
 from ..physics.clutch import (
@@ -987,15 +988,16 @@ def checks(
         Check(
             "self_locking",
             ok,
-            f"{angle} − atan f = {m / DEG:.3g}° "
+            f"{angle} − atan f = {q(m, 'deg')} "
             + ("≥" if ok else "<")
-            + f" {SELF_LOCKING_MARGIN / DEG:g}°; dT/df = {float(v['friction_sensitivity']):.4g} N·m"
+            + f" {q(SELF_LOCKING_MARGIN, 'deg', fmt='g')}; "
+            f"dT/df = {q(float(v['friction_sensitivity']), 'N*m', 4)}"
             + (
                 ""
                 if ok
                 else ": near self-locking the limit follows the friction, not the spring "
                 "(a change of f by 0.01 moves it by "
-                f"{0.01 * float(v['friction_sensitivity']):.3g} N·m); use flatter flanks "
+                f"{q(0.01 * float(v['friction_sensitivity']), 'N*m')}); use flatter flanks "
                 "(larger α) or less flank friction"
             ),
         )
@@ -1009,10 +1011,10 @@ def checks(
             Check(
                 "spring_stress_max",
                 ok,
-                f"largest {what} over the lift {s / 1e6:.4g} MPa "
+                f"largest {what} over the lift {q(s, 'MPa', 4)} "
                 + ("≤" if ok else ">")
-                + f" permissible {allow / 1e6:.4g} MPa (at peak torque "
-                + f"{float(v['spring_stress_at_peak']) / 1e6:.4g} MPa)"
+                + f" permissible {q(allow, 'MPa', 4)} (at peak torque "
+                + f"{q(float(v['spring_stress_at_peak']), 'MPa', 4)})"
                 + (
                     ""
                     if ok
@@ -1031,9 +1033,9 @@ def checks(
             Check(
                 "residual_torque",
                 ok,
-                f"residual torque on the face {res:.4g} N·m "
+                f"residual torque on the face {q(res, 'N*m', 4)} "
                 + ("≤" if ok else ">")
-                + f" {RESIDUAL_SHARE:.0%} of the peak {peak:.4g} N·m"
+                + f" {RESIDUAL_SHARE:.0%} of the peak {q(peak, 'N*m', 4)}"
                 + ("" if ok else ": the slipping clutch keeps dragging the load and heats up"),
             )
         )
@@ -1051,9 +1053,9 @@ def _disc_checks(
         Check(
             "disc_not_past_flat",
             ok,
-            f"largest deflection per disc {per_disc_max * 1e3:.4g} mm "
+            f"largest deflection per disc {q(per_disc_max, 'mm', 4)} "
             + ("≤" if ok else ">")
-            + f" cone height h0 = {h0 * 1e3:.4g} mm"
+            + f" cone height h0 = {q(h0, 'mm', 4)}"
             + (
                 ""
                 if ok
@@ -1073,14 +1075,14 @@ def _disc_checks(
     elif ok:
         where = "at the setting" if setting >= s_max else "within the lift"
         detail = (
-            f"the discs pass their force maximum (s = {s_max * 1e3:.4g} mm per disc) "
-            f"{where}: the torque falls from {float(v['peak_torque']):.4g} to "
-            f"{float(v['torque_at_rim']):.4g} N·m at the rim"
+            f"the discs pass their force maximum (s = {q(s_max, 'mm', 4)} per disc) "
+            f"{where}: the torque falls from {q(float(v['peak_torque']), 'N*m', 4, bare=True)} "
+            f"to {q(float(v['torque_at_rim']), 'N*m', 4)} at the rim"
         )
     else:
         detail = (
-            f"the discs never reach their force maximum (s = {s_max * 1e3:.4g} mm per "
-            f"disc; setting {setting * 1e3:.4g} mm): the torque does not fall; set the "
+            f"the discs never reach their force maximum (s = {q(s_max, 'mm', 4)} per "
+            f"disc; setting {q(setting, 'mm', 4)}): the torque does not fall; set the "
             "stack further"
         )
     out.append(Check("falling_curve", ok, detail))
@@ -1100,9 +1102,9 @@ def _helical_length_checks(
         Check(
             "solid_length",
             ok,
-            f"shortest working length {shortest * 1e3:.4g} mm "
+            f"shortest working length {q(shortest, 'mm', 4)} "
             + ("≥" if ok else "<")
-            + f" solid length + minimum gaps L_c + S_a = {need * 1e3:.4g} mm (EN 13906-1)"
+            + f" solid length + minimum gaps L_c + S_a = {q(need, 'mm', 4)} (EN 13906-1)"
             + (
                 ""
                 if ok
@@ -1118,14 +1120,14 @@ def _helical_length_checks(
             "buckling",
             ok,
             (
-                f"largest deflection {travel * 1e3:.4g} mm < buckling deflection "
-                f"{s_k * 1e3:.4g} mm (seating {x['spring_seating']})"
+                f"largest deflection {q(travel, 'mm', 4)} < buckling deflection "
+                f"{q(s_k, 'mm', 4)} (seating {x['spring_seating']})"
                 if math.isfinite(s_k)
                 else f"the spring cannot buckle (seating {x['spring_seating']})"
             )
             if ok
-            else f"largest deflection {travel * 1e3:.4g} mm ≥ buckling deflection "
-            f"{s_k * 1e3:.4g} mm: "
+            else f"largest deflection {q(travel, 'mm', 4)} ≥ buckling deflection "
+            f"{q(s_k, 'mm', 4)}: "
             "guide the spring on a mandrel or in a sleeve, or use a shorter, fatter spring",
         )
     )
@@ -1153,8 +1155,8 @@ def warnings(x: Mapping[str, Any]) -> list[str]:
     if ok:
         return []
     return [
-        f"spring_wire_diameter = {wire * 1e3:.4g} mm is not a preferred size of EN 10270-1; "
-        f"the nearest is {near * 1e3:g} mm"
+        f"spring_wire_diameter = {q(wire, 'mm', 4)} is not a preferred size of EN 10270-1; "
+        f"the nearest is {q(near, 'mm', fmt='g')}"
     ]
 
 
@@ -1164,23 +1166,26 @@ def notes(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[st
     if x["ball_lift"] is None:
         out.append(
             "ball_lift not given: the balls rise along the flank by the paper's groove depth, "
-            f"equal to the spring deflection Δ = {x['spring_deflection'] * 1e3:.4g} mm "
+            f"equal to the spring deflection Δ = {q(x['spring_deflection'], 'mm', 4)} "
             "[001, eq. 2], then over the rim by (d/2)(1 − sin α) = "
-            f"{(float(v['total_lift']) - x['spring_deflection']) * 1e3:.4g} mm"
+            f"{q(float(v['total_lift']) - x['spring_deflection'], 'mm', 4)}"
         )
     out.append(
-        f"torque against lift: {float(v['torque_at_rim']):.4g} N·m when the balls reach the rim, "
-        f"peak {float(v['peak_torque']):.4g} N·m at lift {float(v['lift_at_peak']) * 1e3:.4g} mm; "
-        f"the spring then carries {float(v['spring_force_at_peak']):.4g} N "
-        f"({float(v['spring_stress_at_peak']) / 1e6:.4g} MPa), at most "
-        f"{float(v['spring_force_max']):.4g} N ({float(v['spring_stress_max']) / 1e6:.4g} MPa) "
+        f"torque against lift: {q(float(v['torque_at_rim']), 'N*m', 4)} when the balls reach "
+        f"the rim, peak {q(float(v['peak_torque']), 'N*m', 4)} at lift "
+        f"{q(float(v['lift_at_peak']), 'mm', 4)}; "
+        f"the spring then carries {q(float(v['spring_force_at_peak']), 'N', 4)} "
+        f"({q(float(v['spring_stress_at_peak']), 'MPa', 4)}), at most "
+        f"{q(float(v['spring_force_max']), 'N', 4)} "
+        f"({q(float(v['spring_stress_max']), 'MPa', 4)}) "
         "on the face. torque_limit is the zero-lift point [001, eq. 3]."
     )
     if x["driving_groove_angle"] is not None and x["flank_construction"] == "free_ball":
         a1, a2 = x["driving_groove_angle"] / DEG, x["groove_angle"] / DEG
         rides = "the driving" if a1 > a2 else "the driven"
         out.append(
-            f"flank_construction = free_ball, α′ = {a1:.4g}°, α = {a2:.4g}°: the free ball "
+            f"flank_construction = free_ball, α′ = {q(x['driving_groove_angle'], 'deg', 4)}, "
+            f"α = {q(x['groove_angle'], 'deg', 4)}: the free ball "
             f"stays seated in the steeper groove and rides {rides} flank, the one that "
             "separates the halves least (virtual work): F_a/F_t = max(tan(α′ − ρ), "
             "tan(α − ρ)), and over that groove's rim. Were the balls lifting a separate "
@@ -1197,7 +1202,8 @@ def notes(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[st
         )
     if spring.kind == "helical" and spring.material is not None:
         out.append(
-            f"spring material {spring.material.standard}: G = {spring.shear_modulus / 1e9:g} GPa "
+            f"spring material {spring.material.standard}: "
+            f"G = {q(spring.shear_modulus, 'GPa', fmt='g')} "
             f"(overrides shear_modulus), permissible τ = 0.5 R_m(d) (EN 13906-1), compared with "
             f"the {x['stress_correction']}-corrected stress, stricter than the standard's "
             "static check"
@@ -1205,7 +1211,7 @@ def notes(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[st
     if spring.kind == "helical" and spring.material is None and x["spring_free_length"]:
         given = x["spring_elastic_modulus"] is not None
         out.append(
-            f"custom wire: buckling with E = {float(spring.elastic_modulus) / 1e9:.4g} GPa "
+            f"custom wire: buckling with E = {q(float(spring.elastic_modulus), 'GPa', 4)} "
             + (
                 "(spring_elastic_modulus)"
                 if given
@@ -1472,9 +1478,9 @@ def suggest_wire(
             "its solid length"
         )
     said.append(
-        f"suggested wire {float(wire) * 1e3:g} mm: the thinnest preferred size that reaches "
-        f"{float(target):.4g} N·m at its peak with {float(stress_at) / 1e6:.4g} MPa ≤ "
-        f"{float(allow_at) / 1e6:.4g} MPa"
+        f"suggested wire {q(float(wire), 'mm', fmt='g')}: the thinnest preferred size that "
+        f"reaches {q(float(target), 'N*m', 4)} at its peak with "
+        f"{q(float(stress_at), 'MPa', 4)} ≤ {q(float(allow_at), 'MPa', 4)}"
     )
     return {"suggested_wire_diameter": float(wire), "suggested_wire_setting": float(setting)}
 

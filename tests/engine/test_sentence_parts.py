@@ -86,3 +86,38 @@ def test_the_api_gives_the_parts_beside_the_plain_sentences(client) -> None:  # 
     assert [_joined(ps) for ps in body["notes_parts"]] == body["notes"]
     window = next(c for c in body["checks"] if c["name"] == "R7_window_fits")
     assert window["detail_parts"][1]["unit"] == "N"
+
+
+def _quantities(notes: list[str], notes_parts: list, start: str) -> list:
+    """The quantities of the one note that starts with ``start``, its parts joined checked."""
+    (ps,) = [ps for note, ps in zip(notes, notes_parts, strict=True) if note.startswith(start)]
+    (note,) = [note for note in notes if note.startswith(start)]
+    assert _joined(ps) == note and "\ue000" not in note
+    return [p for p in ps if isinstance(p, dict)]
+
+
+def test_a_bolt_note_and_an_as_built_clutch_note_carry_their_quantities() -> None:
+    spec = get_model("preload.tightening")
+    r = engine.run(spec, spec.examples[3])  # M10 ISO 4762 12.9
+    pitch, area = _quantities(r.notes, r.notes_parts, "thread M10: P = ")
+    # ISO 261: M10 coarse pitch 1.5 mm; ISO 898-1: A_s = π/4 ((d2 + d3)/2)², d2 = d − 0.649519 P,
+    # d3 = d − 1.226869 P: (9.026 + 8.160)/2 = 8.593 mm, A_s = 57.99 mm²
+    assert (pitch["value"], pitch["unit"], pitch["display_unit"]) == (0.0015, "m", "mm")
+    d2, d3 = 10.0 - 0.649519 * 1.5, 10.0 - 1.226869 * 1.5
+    assert area["value"] == pytest.approx(math.pi / 4 * ((d2 + d3) / 2) ** 2 * 1e-6, rel=1e-5)
+    assert (area["unit"], area["display_unit"], area["text"]) == ("m^2", "mm²", "57.99 mm²")
+
+    spec = get_model("clutch.ball")
+    x = spec.examples[3]  # as built: EN 10270-1 DH wire, free length, ball lift 2 mm
+    r = engine.run(spec, x)
+    qs = _quantities(r.notes, r.notes_parts, "torque against lift: ")
+    assert [p["unit"] for p in qs] == ["N*m", "N*m", "m", "N", "Pa", "N", "Pa"]
+    assert qs[2]["value"] == pytest.approx(x["ball_lift"], rel=1e-12)  # peak at the given lift
+    # the spring at the peak: c (Δ + lift), c = G d⁴ / (8 D³ n) with G = 81.5 GPa (DH wire),
+    # d = 4 mm, D = 32 mm, n = 8: c = 9948.7 N/m, F = c (30 + 2) mm = 318.36 N
+    rate = 81.5e9 * 0.004**4 / (8 * 0.032**3 * 8)
+    assert qs[3]["value"] == pytest.approx(rate * (0.030 + 0.002), rel=1e-9)
+    assert qs[3]["text"] == "318.4 N" and qs[3]["display_unit"] == "N"
+    assert qs[4]["display_unit"] == "MPa" and qs[4]["value"] == pytest.approx(
+        r.results["spring_stress_at_peak"], rel=1e-12
+    )
