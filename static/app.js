@@ -9,7 +9,7 @@
 
 import { choiceName } from "./choices.js";
 import {
-  decimalSeparator, echoNumber, formatNumber, group, imperialChosen, IMPERIAL, isPlain, isRatio, localNumber, norm, outputChoices as sharedOutputChoices,
+  decimalSeparator, echoNumber, formatNumber, group, imperialChosen, IMPERIAL, inputUnit, isPlain, isRatio, localNumber, norm, outputChoices as sharedOutputChoices,
   parseNum, PERCENT, readNumber, readQuantity, readSamples, setDecimalSeparator, setImperial, typedDigits, unitChoices as sharedUnitChoices, unitTable,
 } from "./numbers.js";
 
@@ -2127,9 +2127,7 @@ function renderCompare(model) {
   for (const p of model.inputs) {
     const vals = cols.map((c) => (c.ok ? c.data.inputs[p.name] : undefined));
     if (vals.every((v) => v === null || v === undefined)) continue;
-    const choices = unitChoices(p.unit, p.display_unit);
-    const u = p.kind !== "float" ? { factor: 1, label: "" }
-      : (state.imperial && choices.find((c) => IMPERIAL.has(c.label))) || choices[0];
+    const u = p.kind !== "float" ? { factor: 1, label: "" } : inputUnit(state.units, p, state.imperial);
     rows.push(row(p.label, u.label, vals, (v) => (typeof v === "number" ? group(short(v / u.factor, 6))
       : Array.isArray(v) ? `${v.length} values` : v === undefined || v === null ? "—" : choiceText(String(v)))));
   }

@@ -296,3 +296,12 @@ export function outputChoices(table, o, v = null, imperial = imperialChosen()) {
   }
   return choices;
 }
+
+/**
+ * The unit an input's value is written in: the model's display unit, or in imperial the
+ * first imperial choice for it (units.json's order); {label, api, factor}.
+ */
+export function inputUnit(table, p, imperial = imperialChosen()) {
+  const choices = unitChoices(table, p.unit, p.display_unit);
+  return (imperial && choices.find((c) => IMPERIAL.has(c.label))) || choices[0];
+}

@@ -5,8 +5,8 @@
 
 import { choiceName } from "./choices.js";
 import {
-  decimalSeparator, echoNumber, formatCount, formatNumber, imperialChosen, isPlain, localNumber, outputChoices, readQuantity, readSamples,
-  setDecimalSeparator, setImperial, unitTable,
+  decimalSeparator, echoNumber, formatCount, formatNumber, imperialChosen, inputUnit, isPlain, localNumber, outputChoices, readQuantity, readSamples,
+  setDecimalSeparator, setImperial, unitChoices, unitTable,
 } from "./numbers.js";
 
 const $ = (sel) => document.querySelector(sel);
@@ -56,6 +56,33 @@ function typical(...values) {
 /** " [lbf·ft]" after an axis name, nothing for a pure number. */
 function bracket(u) {
   return u.label ? ` [${u.label}]` : "";
+}
+
+/**
+ * An input's SI value as its field shows it: the number in the input's unit in the system
+ * chosen, with that unit ("12 mm", "0.4724 in"), or the bare SI number when that unit is
+ * SI. The field keeps the exact SI value it was written from (data-si) and sends it until
+ * it is edited, so a value rounded for reading is never what runs.
+ */
+function writeSI(input, p, si) {
+  const u = inputUnit(units, p);
+  const bare = u.factor === 1 && (u.label === "" || u.api === p.unit);
+  const text = bare ? localNumber(String(Number(si.toPrecision(6))))
+    : `${localNumber(String(Number((si / u.factor).toPrecision(5))))} ${u.label}`;
+  input.value = text;
+  input.dataset.si = String(si);
+  input.dataset.shown = text;
+}
+
+/** The exact SI value a field was written from, while it shows it unedited; else undefined. */
+function exactSI(input) {
+  return input.dataset.si !== undefined && input.dataset.shown === input.value ? Number(input.dataset.si) : undefined;
+}
+
+/** A unit typed as the pages write it ("lbf·ft", "µm") in the form the API reads ("lbf*ft", "um"). */
+function apiUnit(p, typed) {
+  const c = p ? unitChoices(units, p.unit, p.display_unit).find((x) => x.label === typed) : null;
+  return c && c.api ? c.api : typed;
 }
 
 function label(p) {
@@ -108,8 +135,12 @@ function lawCell(p, value) {
   const spread = Math.abs(num) * 0.1 || 0.1;
   const lo = p.minimum !== null ? Math.max(p.minimum, num - spread) : num - spread;
   const hi = p.maximum !== null ? Math.min(p.maximum, num + spread) : num + spread;
-  const field = (part, v, title) =>
-    el("input", { "data-part": part, value: localNumber(String(Number(v.toPrecision(6)))), "aria-label": `${label(p)}: ${title}`, title });
+  const field = (part, v, title) => {
+    const input = el("input", { "data-part": part, "aria-label": `${label(p)}: ${title}`, title });
+    if (part === "num") input.value = String(v);
+    else writeSI(input, p, v);
+    return input;
+  };
   cell.append(
     law,
     field("low", lo, "low"),
@@ -177,6 +208,7 @@ function pickModel(name, carried = null) {
         placeholder: p.required ? "required" : "optional",
         "aria-describedby": `${id}-range`,
       });
+      if (typeof value === "number" && p.kind === "float") writeSI(control, p, value);
     }
     const vary = el("input", { type: "checkbox", "aria-label": `vary ${label(p)}` });
     vary.disabled = !(p.kind === "float" || p.kind === "int");
@@ -291,12 +323,20 @@ function correlations(errors) {
  * typed with it, sent in canonical form), or text (a designation) as typed. A number the
  * setting cannot read ("2,5" with a decimal point) is collected in ``errors``, never sent.
  */
-function number(text, what = "", errors = []) {
+function number(text, what = "", errors = [], p = null) {
   const t = String(text).trim();
   const q = readQuantity(t);
-  if (q.ok) return q.unit ? `${q.canonical} ${q.unit}` : q.value;
+  if (q.ok) return q.unit ? `${q.canonical} ${apiUnit(p, q.unit)}` : q.value;
   if (!q.text && !q.empty) errors.push(`${what}: ${q.error}`);
   return t;
+}
+
+/** What an input's field sends: its exact SI value while unedited, else what is typed (number()). */
+function fieldValue(input, name, errors, part = "") {
+  const exact = exactSI(input);
+  if (exact !== undefined) return exact;
+  const p = model.inputs.find((q) => q.name === name);
+  return number(input.value, label(p) + part, errors, p);
 }
 
 /** The value read beside a row whose typed numbers differ from it ("= 2000 mm"), or why it cannot be read. */
@@ -327,7 +367,7 @@ function design(errors = []) {
       if (r.ok) base[name] = r.values;
       else errors.push(`${label(model.inputs.find((p) => p.name === name))}: ${r.error}`);
     } else if (tr.control.value.trim() !== "") {
-      base[name] = tr.control.tagName === "SELECT" ? tr.control.value : number(tr.control.value, label(model.inputs.find((p) => p.name === name)), errors);
+      base[name] = tr.control.tagName === "SELECT" ? tr.control.value : fieldValue(tr.control, name, errors);
     }
   }
   return base;
@@ -375,7 +415,7 @@ function body(errors = []) {
       const v = { name, distribution: tr.law.querySelector("select").value };
       for (const input of tr.law.querySelectorAll("input")) {
         if (input.hidden || input.value.trim() === "") continue;
-        v[input.dataset.part] = input.dataset.part === "num" ? parseInt(input.value, 10) : number(input.value, `${label(model.inputs.find((p) => p.name === name))} (${input.dataset.part})`, errors);
+        v[input.dataset.part] = input.dataset.part === "num" ? parseInt(input.value, 10) : fieldValue(input, name, errors, ` (${input.dataset.part})`);
       }
       variables.push(v);
     } else if (tr.control.type === "checkbox") {
@@ -385,7 +425,7 @@ function body(errors = []) {
       if (r.ok) base[name] = r.values;
       else errors.push(`${label(model.inputs.find((p) => p.name === name))}: ${r.error}`);
     } else if (tr.control.value.trim() !== "") {
-      base[name] = tr.control.tagName === "SELECT" ? tr.control.value : number(tr.control.value, label(model.inputs.find((p) => p.name === name)), errors);
+      base[name] = tr.control.tagName === "SELECT" ? tr.control.value : fieldValue(tr.control, name, errors);
     }
   }
   const out = {
@@ -773,7 +813,10 @@ $("#study-rows").addEventListener("input", (e) => { const tr = e.target.closest(
     for (const f of document.querySelectorAll("#study-form input:not([type=checkbox])")) {
       if (f.dataset.part === "num" || f.id === "study-samples" || f.id === "study-seed") continue;
       const q = readQuantity(f.value, old);
-      if (q.ok) f.value = localNumber(q.canonical) + (q.unit ? " " + q.unit : "");
+      if (!q.ok) continue;
+      const text = localNumber(q.canonical) + (q.unit ? " " + q.unit : "");
+      if (f.dataset.shown === f.value) f.dataset.shown = text; // still the value written: still exact
+      f.value = text;
     }
     for (const tr of $("#study-rows").children) echo(tr);
   });
@@ -784,6 +827,10 @@ $("#study-rows").addEventListener("input", (e) => { const tr = e.target.closest(
   system.value = imperialChosen() ? "imperial" : "metric";
   system.addEventListener("change", () => {
     setImperial(system.value === "imperial");
+    for (const f of document.querySelectorAll("#study-rows input[data-si]")) {
+      const p = model.inputs.find((q) => q.name === f.closest("tr").dataset.name);
+      if (exactSI(f) !== undefined) writeSI(f, p, exactSI(f));
+    }
     if (lastJob) render(lastJob);
   });
 }

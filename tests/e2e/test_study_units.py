@@ -97,7 +97,12 @@ def test_the_study_reads_in_the_unit_system_chosen_on_the_form(page: Any, base_u
     page.goto(f"{base_url}/study.html?model=preload.tightening")
     page.wait_for_selector("#study-rows tr")
     expect(page.locator("#unit-system")).to_have_value("imperial")
-    torques = _torques(_run_study(page))
+    # the inputs read in imperial too (0.012 m = 0.47244 in, to 5 digits), and are sent as
+    # the exact SI value they were written from
+    expect(page.locator("#in-thread_diameter")).to_have_value("0.47244 in")
+    base = _run_study(page)
+    assert base["thread_diameter"] == MODEL.examples[0]["thread_diameter"] == 0.012
+    torques = _torques(base)
     assert 40 < torques.mean() < 120  # an M12 8.8 at μ 0.10…0.16: tens of N·m
     _expect_row(_torque_row(page), "lbf·ft", torques)
     # a preload reads in an imperial force unit too, never in N
@@ -114,6 +119,7 @@ def test_the_study_reads_in_the_unit_system_chosen_on_the_form(page: Any, base_u
         "aria-label", "histogram of tightening torque [N·m]"
     )
     assert page.inner_text('#study-stats tbody tr[data-name="assembly_preload"] td.unit') == "kN"
+    expect(page.locator("#in-thread_diameter")).to_have_value("12 mm")
     # and the form reads the study's choice back
     page.goto(f"{base_url}/")
     page.wait_for_selector("body[data-ready='1']")
