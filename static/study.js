@@ -5,7 +5,7 @@
 
 import { choiceName } from "./choices.js";
 import {
-  decimalSeparator, echoNumber, formatCount, formatNumber, imperialChosen, inputUnit, isPlain, localNumber, outputChoices, readQuantity, readSamples,
+  decimalSeparator, echoNumber, formatCount, formatNumber, imperialChosen, inputUnit, isPlain, localNumber, outputChoices, pretty, readQuantity, readSamples,
   setDecimalSeparator, setImperial, unitChoices, unitTable,
 } from "./numbers.js";
 
@@ -226,7 +226,7 @@ function pickModel(name, carried = null) {
       el("td", {}, vary),
       el("td", { class: "name" }, el("label", { for: id, text: label(p) }), el("div", { class: "hint", id: `${id}-range`, text: p.range })),
       valueCell,
-      el("td", { class: "unit", text: p.unit === "1" ? "" : p.unit }),
+      el("td", { class: "unit", text: pretty(p.unit) }),
     );
     tr.read = read;
     tr.unit = p.unit;
