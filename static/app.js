@@ -8,7 +8,10 @@
 // appears here without any change to this file.
 
 import { choiceName } from "./choices.js";
-import { decimalSeparator, echoNumber, formatNumber, group, isPlain, localNumber, parseNum, readNumber, readQuantity, readSamples, setDecimalSeparator, typedDigits } from "./numbers.js";
+import {
+  decimalSeparator, echoNumber, formatNumber, group, imperialChosen, IMPERIAL, inputUnit, isPlain, isRatio, localNumber, norm, outputChoices as sharedOutputChoices,
+  parseNum, PERCENT, readNumber, readQuantity, readSamples, setDecimalSeparator, setImperial, typedDigits, unitChoices as sharedUnitChoices, unitTable,
+} from "./numbers.js";
 
 const API = "api/v1";
 const uPlot = window.uPlot;
@@ -47,39 +50,9 @@ function el(tag, attrs = {}, ...children) {
   return e;
 }
 
-/** Unit expressions compared loosely: "N·m" == "N*m", "kg·m²" == "kg*m^2", "µm" == "um". */
-function norm(unit) {
-  return String(unit ?? "")
-    .replaceAll("·", "*").replaceAll("**", "^").replaceAll("²", "^2").replaceAll("³", "^3")
-    .replaceAll("⁴", "^4").replaceAll("µ", "u").replaceAll("μ", "u").replace(/\s+/g, "");
-}
-
-/** Pretty SI unit for display: "kg*m^2" -> "kg·m²", "1" -> "". */
-function pretty(unit) {
-  if (!unit || unit === "1") return "";
-  return unit.replaceAll("*", "·").replaceAll("^2", "²").replaceAll("^3", "³").replaceAll("^4", "⁴")
-    .replaceAll("^-1", "⁻¹");
-}
-
-/**
- * The unit choices for an SI unit, display unit first: [{label, api, factor}].
- * Unknown SI units get one choice, the SI unit itself (the API still parses it).
- */
+/** The unit choices for an SI unit, display unit first (numbers.js's unitChoices over units.json). */
 function unitChoices(si, display) {
-  const table = state.units[norm(si)];
-  let choices = table
-    ? table.map(([label, api, factor]) => ({ label, api, factor }))
-    : [{ label: pretty(si), api: "", factor: 1 }]; // unknown unit: send plain SI numbers
-  if (norm(si) === "1" && norm(display) !== "%") choices = choices.filter((c) => c.api !== "%");
-  const want = norm(display || si);
-  const i = choices.findIndex((c) => norm(c.label) === want || norm(c.api) === want);
-  if (i > 0) choices = [choices[i], ...choices.slice(0, i), ...choices.slice(i + 1)];
-  else if (i < 0) {
-    // display unit unknown to the table: fall back to SI (exact, if less friendly)
-    const s = choices.findIndex((c) => c.factor === 1);
-    if (s > 0) choices = [choices[s], ...choices.slice(0, s), ...choices.slice(s + 1)];
-  }
-  return choices;
+  return sharedUnitChoices(state.units, si, display);
 }
 
 /**
@@ -137,16 +110,6 @@ function linkNumber(raw) {
   const legacy = /^[+-]?\d*,\d+(e[+-]?\d+)?$/i.test(s) ? s.replace(",", ".") : s;
   const r = readNumber(legacy, ".");
   return r.ok ? localNumber(r.canonical) : s;
-}
-
-/** Units the metric/imperial switch treats as imperial (offered after the metric ones in units.json). */
-const IMPERIAL = new Set(["in", "ft", "in²", "in³", "lb", "lbf", "kip", "lbf·ft", "lbf·in", "psi", "ksi", "hp",
-  "ft·lbf", "lbf/in", "in/lbf", "lbf·ft/rad", "lb·in²", "ft/s", "in/s", "ft/s²"]);
-
-/** Outputs that are ratios, shown in %: shares, utilisations, deviations, scatters, margins. */
-function isRatio(o) {
-  return norm(o.unit) === "1" && o.kind === "float"
-    && /share|utili[sz]ation|deviation|scatter|relative|margin|fraction|efficiency|change/.test(o.name);
 }
 
 /** A readable name: the spec's label, or its description when the label is only a code ("z1"). */
@@ -229,9 +192,9 @@ async function init() {
     fetch("units.json").then((r) => r.json()),
   ]);
   state.models = models.models;
-  for (const [si, choices] of Object.entries(units)) if (!si.startsWith("_")) state.units[norm(si)] = choices;
+  state.units = unitTable(units);
   await loadCatalogues(models.service || {});
-  state.imperial = localStorage.getItem("unit-system") === "imperial";
+  state.imperial = imperialChosen();
   const system = document.getElementById("unit-system");
   system.value = state.imperial ? "imperial" : "metric";
   system.addEventListener("change", () => switchSystem(system.value === "imperial"));
@@ -1069,29 +1032,9 @@ async function copyLink() {
 
 // ---------------------------------------------------------------- results
 
-const PERCENT = { label: "%", api: "%", factor: 0.01 };
-
-/**
- * The unit choices of an output, best first: % for ratios; otherwise the
- * system's (metric or imperial) choices, the model's display unit first, then
- * the one that shows ``v`` (an SI value, or a series' largest magnitude)
- * between 0.01 and 100 000 with the fewest digits.
- */
+/** The unit choices of an output, best first (numbers.js's outputChoices, in the system chosen). */
 function outputChoices(o, v = null) {
-  let choices = unitChoices(o.unit, o.display_unit);
-  if (isRatio(o)) return [PERCENT, ...choices.filter((c) => c.api !== "%")];
-  const inSystem = choices.filter((c) => IMPERIAL.has(c.label) === state.imperial);
-  if (inSystem.length) choices = [...inSystem, ...choices.filter((c) => !inSystem.includes(c))];
-  const a = typeof v === "number" ? Math.abs(v) : 0;
-  if (a > 0 && Number.isFinite(a) && inSystem.length) {
-    const fits = (c) => a / c.factor >= 0.01 && a / c.factor < 1e5;
-    if (!fits(choices[0])) {
-      const score = (c) => { const e = Math.log10(a / c.factor); return e < 0 ? -e + 1 : e > 3 ? e - 3 : 0; };
-      const best = inSystem.reduce((b, c) => (score(c) < score(b) ? c : b), inSystem[0]);
-      choices = [best, ...choices.filter((c) => c !== best)];
-    }
-  }
-  return choices;
+  return sharedOutputChoices(state.units, o, v, state.imperial);
 }
 
 function outputUnit(o, v = null) {
@@ -2184,9 +2127,7 @@ function renderCompare(model) {
   for (const p of model.inputs) {
     const vals = cols.map((c) => (c.ok ? c.data.inputs[p.name] : undefined));
     if (vals.every((v) => v === null || v === undefined)) continue;
-    const choices = unitChoices(p.unit, p.display_unit);
-    const u = p.kind !== "float" ? { factor: 1, label: "" }
-      : (state.imperial && choices.find((c) => IMPERIAL.has(c.label))) || choices[0];
+    const u = p.kind !== "float" ? { factor: 1, label: "" } : inputUnit(state.units, p, state.imperial);
     rows.push(row(p.label, u.label, vals, (v) => (typeof v === "number" ? group(short(v / u.factor, 6))
       : Array.isArray(v) ? `${v.length} values` : v === undefined || v === null ? "—" : choiceText(String(v)))));
   }
@@ -2286,7 +2227,7 @@ function setFieldSystem(m, imperial, which = () => true) {
 /** Metric or imperial: every field, result, plot and sweep at once. */
 function switchSystem(imperial) {
   state.imperial = imperial;
-  localStorage.setItem("unit-system", imperial ? "imperial" : "metric");
+  setImperial(imperial);
   const m = state.model;
   if (!m) return;
   setFieldSystem(m, imperial);

@@ -201,3 +201,107 @@ export function typedDigits(canonical) {
   const digits = mantissa.replace(".", "").replace(/^0+/, "");
   return Math.max(1, digits.length);
 }
+
+// ---------------------------------------------------------------- units shown
+//
+// The unit a quantity is shown in, one way on both pages: the table is static/units.json
+// (keyed by the model's SI unit), the system (metric or imperial) is the page setting
+// "unit-system", shared by the form and the design study.
+
+const SYSTEM_KEY = "unit-system";
+
+/** True when the user chose imperial units (on either page). */
+export function imperialChosen() {
+  return localStorage.getItem(SYSTEM_KEY) === "imperial";
+}
+
+export function setImperial(imperial) {
+  localStorage.setItem(SYSTEM_KEY, imperial ? "imperial" : "metric");
+}
+
+/** Unit expressions compared loosely: "N·m" == "N*m", "kg·m²" == "kg*m^2", "µm" == "um". */
+export function norm(unit) {
+  return String(unit ?? "")
+    .replaceAll("·", "*").replaceAll("**", "^").replaceAll("²", "^2").replaceAll("³", "^3")
+    .replaceAll("⁴", "^4").replaceAll("µ", "u").replaceAll("μ", "u").replace(/\s+/g, "");
+}
+
+/** Pretty SI unit for display: "kg*m^2" -> "kg·m²", "1" -> "". */
+export function pretty(unit) {
+  if (!unit || unit === "1") return "";
+  return unit.replaceAll("*", "·").replaceAll("^2", "²").replaceAll("^3", "³").replaceAll("^4", "⁴")
+    .replaceAll("^-1", "⁻¹");
+}
+
+/** units.json as the pages use it: normalised SI unit -> [[label, api, factor], ...]. */
+export function unitTable(json) {
+  const table = {};
+  for (const [si, choices] of Object.entries(json)) if (!si.startsWith("_")) table[norm(si)] = choices;
+  return table;
+}
+
+/**
+ * The unit choices for an SI unit in ``table`` (unitTable), display unit first:
+ * [{label, api, factor}]. Unknown SI units get one choice, the SI unit itself.
+ */
+export function unitChoices(table, si, display) {
+  const row = table[norm(si)];
+  let choices = row
+    ? row.map(([label, api, factor]) => ({ label, api, factor }))
+    : [{ label: pretty(si), api: "", factor: 1 }]; // unknown unit: plain SI numbers
+  if (norm(si) === "1" && norm(display) !== "%") choices = choices.filter((c) => c.api !== "%");
+  const want = norm(display || si);
+  const i = choices.findIndex((c) => norm(c.label) === want || norm(c.api) === want);
+  if (i > 0) choices = [choices[i], ...choices.slice(0, i), ...choices.slice(i + 1)];
+  else if (i < 0) {
+    // display unit unknown to the table: fall back to SI (exact, if less friendly)
+    const s = choices.findIndex((c) => c.factor === 1);
+    if (s > 0) choices = [choices[s], ...choices.slice(0, s), ...choices.slice(s + 1)];
+  }
+  return choices;
+}
+
+/** Units the metric/imperial switch treats as imperial (offered after the metric ones in units.json). */
+export const IMPERIAL = new Set(["in", "ft", "in²", "in³", "lb", "lbf", "kip", "lbf·ft", "lbf·in", "psi", "ksi", "hp",
+  "ft·lbf", "lbf/in", "in/lbf", "lbf·ft/rad", "lb·in²", "ft/s", "in/s", "ft/s²"]);
+
+/** Outputs that are ratios, shown in %: shares, utilisations, deviations, scatters, margins. */
+export function isRatio(o) {
+  return norm(o.unit) === "1" && o.kind === "float"
+    && /share|utili[sz]ation|deviation|scatter|relative|margin|fraction|efficiency|change/.test(o.name);
+}
+
+export const PERCENT = { label: "%", api: "%", factor: 0.01 };
+
+/**
+ * The unit choices of an output (or input) ``o`` ({name, unit, display_unit, kind}), best
+ * first: % for ratios; otherwise the system's (metric or imperial) choices, the model's
+ * display unit first, then the one that shows ``v`` (an SI value, or a series' largest
+ * magnitude) between 0.01 and 100 000 with the fewest digits. A value in SI is shown as
+ * ``v / choice.factor``.
+ */
+export function outputChoices(table, o, v = null, imperial = imperialChosen()) {
+  let choices = unitChoices(table, o.unit, o.display_unit);
+  if (isRatio(o)) return [PERCENT, ...choices.filter((c) => c.api !== "%")];
+  const inSystem = choices.filter((c) => IMPERIAL.has(c.label) === imperial);
+  if (inSystem.length) choices = [...inSystem, ...choices.filter((c) => !inSystem.includes(c))];
+  const a = typeof v === "number" ? Math.abs(v) : 0;
+  if (a > 0 && Number.isFinite(a) && inSystem.length) {
+    const fits = (c) => a / c.factor >= 0.01 && a / c.factor < 1e5;
+    if (!fits(choices[0])) {
+      const score = (c) => { const e = Math.log10(a / c.factor); return e < 0 ? -e + 1 : e > 3 ? e - 3 : 0; };
+      const best = inSystem.reduce((b, c) => (score(c) < score(b) ? c : b), inSystem[0]);
+      choices = [best, ...choices.filter((c) => c !== best)];
+    }
+  }
+  return choices;
+}
+
+/**
+ * The unit an input's value is written in: the model's display unit, or in imperial the
+ * first imperial choice for it (units.json's order); {label, api, factor}.
+ */
+export function inputUnit(table, p, imperial = imperialChosen()) {
+  const choices = unitChoices(table, p.unit, p.display_unit);
+  return (imperial && choices.find((c) => IMPERIAL.has(c.label))) || choices[0];
+}

@@ -4,7 +4,10 @@
 // Plain ES module, no build step, nothing fetched but this server.
 
 import { choiceName } from "./choices.js";
-import { decimalSeparator, echoNumber, formatCount, formatNumber, isPlain, localNumber, readQuantity, readSamples, setDecimalSeparator } from "./numbers.js";
+import {
+  decimalSeparator, echoNumber, formatCount, formatNumber, imperialChosen, inputUnit, isPlain, localNumber, outputChoices, pretty, readQuantity, readSamples,
+  setDecimalSeparator, setImperial, unitChoices, unitTable,
+} from "./numbers.js";
 
 const $ = (sel) => document.querySelector(sel);
 const API = "api/v1";
@@ -13,6 +16,8 @@ let model = null;
 let job = null;
 let timer = null;
 let summary = null;
+let lastJob = null;
+let units = {}; // units.json, as numbers.js's unitTable gives it
 
 function el(tag, attrs = {}, ...children) {
   const node = document.createElement(tag);
@@ -31,13 +36,63 @@ function fmt(v, digits = 4) {
   return formatNumber(v, digits, { trim: true });
 }
 
+/**
+ * The unit an output (or input) of the study is shown in: the form's choice for it in the
+ * unit system chosen (numbers.js's outputChoices), ``v`` a typical SI value of it;
+ * {label, factor}, a value in SI shown as ``v / factor``.
+ */
+function shownUnit(name, v = null) {
+  const o = model.outputs.find((q) => q.name === name) ?? model.inputs.find((q) => q.name === name)
+    ?? { name, unit: summary?.units?.[name] ?? "1", kind: "float" };
+  return outputChoices(units, o, v)[0];
+}
+
+/** The largest magnitude among numbers (null if none): what picks a unit for a column or an axis. */
+function typical(...values) {
+  const a = values.filter((v) => typeof v === "number" && Number.isFinite(v)).map(Math.abs);
+  return a.length ? Math.max(...a) : null;
+}
+
+/** " [lbf·ft]" after an axis name, nothing for a pure number. */
+function bracket(u) {
+  return u.label ? ` [${u.label}]` : "";
+}
+
+/**
+ * An input's SI value as its field shows it: the number in the input's unit in the system
+ * chosen, with that unit ("12 mm", "0.4724 in"), or the bare SI number when that unit is
+ * SI. The field keeps the exact SI value it was written from (data-si) and sends it until
+ * it is edited, so a value rounded for reading is never what runs.
+ */
+function writeSI(input, p, si) {
+  const u = inputUnit(units, p);
+  const bare = u.factor === 1 && (u.label === "" || u.api === p.unit);
+  const text = bare ? localNumber(String(Number(si.toPrecision(6))))
+    : `${localNumber(String(Number((si / u.factor).toPrecision(5))))} ${u.label}`;
+  input.value = text;
+  input.dataset.si = String(si);
+  input.dataset.shown = text;
+}
+
+/** The exact SI value a field was written from, while it shows it unedited; else undefined. */
+function exactSI(input) {
+  return input.dataset.si !== undefined && input.dataset.shown === input.value ? Number(input.dataset.si) : undefined;
+}
+
+/** A unit typed as the pages write it ("lbf·ft", "µm") in the form the API reads ("lbf*ft", "um"). */
+function apiUnit(p, typed) {
+  const c = p ? unitChoices(units, p.unit, p.display_unit).find((x) => x.label === typed) : null;
+  return c && c.api ? c.api : typed;
+}
+
 function label(p) {
   return p.label || p.name.replaceAll("_", " ");
 }
 
 async function loadCatalogue() {
-  const r = await fetch(`${API}/models`);
+  const [r, u] = await Promise.all([fetch(`${API}/models`), fetch("units.json")]);
   catalogue = (await r.json()).models;
+  units = unitTable(await u.json());
   const sel = $("#study-model");
   for (const m of catalogue) sel.append(el("option", { value: m.name, text: `${m.title}` }));
   const wanted = new URLSearchParams(location.search).get("model");
@@ -80,8 +135,12 @@ function lawCell(p, value) {
   const spread = Math.abs(num) * 0.1 || 0.1;
   const lo = p.minimum !== null ? Math.max(p.minimum, num - spread) : num - spread;
   const hi = p.maximum !== null ? Math.min(p.maximum, num + spread) : num + spread;
-  const field = (part, v, title) =>
-    el("input", { "data-part": part, value: localNumber(String(Number(v.toPrecision(6)))), "aria-label": `${label(p)}: ${title}`, title });
+  const field = (part, v, title) => {
+    const input = el("input", { "data-part": part, "aria-label": `${label(p)}: ${title}`, title });
+    if (part === "num") input.value = String(v);
+    else writeSI(input, p, v);
+    return input;
+  };
   cell.append(
     law,
     field("low", lo, "low"),
@@ -149,6 +208,7 @@ function pickModel(name, carried = null) {
         placeholder: p.required ? "required" : "optional",
         "aria-describedby": `${id}-range`,
       });
+      if (typeof value === "number" && p.kind === "float") writeSI(control, p, value);
     }
     const vary = el("input", { type: "checkbox", "aria-label": `vary ${label(p)}` });
     vary.disabled = !(p.kind === "float" || p.kind === "int");
@@ -166,7 +226,7 @@ function pickModel(name, carried = null) {
       el("td", {}, vary),
       el("td", { class: "name" }, el("label", { for: id, text: label(p) }), el("div", { class: "hint", id: `${id}-range`, text: p.range })),
       valueCell,
-      el("td", { class: "unit", text: p.unit === "1" ? "" : p.unit }),
+      el("td", { class: "unit", text: pretty(p.unit) }),
     );
     tr.read = read;
     tr.unit = p.unit;
@@ -263,12 +323,20 @@ function correlations(errors) {
  * typed with it, sent in canonical form), or text (a designation) as typed. A number the
  * setting cannot read ("2,5" with a decimal point) is collected in ``errors``, never sent.
  */
-function number(text, what = "", errors = []) {
+function number(text, what = "", errors = [], p = null) {
   const t = String(text).trim();
   const q = readQuantity(t);
-  if (q.ok) return q.unit ? `${q.canonical} ${q.unit}` : q.value;
+  if (q.ok) return q.unit ? `${q.canonical} ${apiUnit(p, q.unit)}` : q.value;
   if (!q.text && !q.empty) errors.push(`${what}: ${q.error}`);
   return t;
+}
+
+/** What an input's field sends: its exact SI value while unedited, else what is typed (number()). */
+function fieldValue(input, name, errors, part = "") {
+  const exact = exactSI(input);
+  if (exact !== undefined) return exact;
+  const p = model.inputs.find((q) => q.name === name);
+  return number(input.value, label(p) + part, errors, p);
 }
 
 /** The value read beside a row whose typed numbers differ from it ("= 2000 mm"), or why it cannot be read. */
@@ -299,7 +367,7 @@ function design(errors = []) {
       if (r.ok) base[name] = r.values;
       else errors.push(`${label(model.inputs.find((p) => p.name === name))}: ${r.error}`);
     } else if (tr.control.value.trim() !== "") {
-      base[name] = tr.control.tagName === "SELECT" ? tr.control.value : number(tr.control.value, label(model.inputs.find((p) => p.name === name)), errors);
+      base[name] = tr.control.tagName === "SELECT" ? tr.control.value : fieldValue(tr.control, name, errors);
     }
   }
   return base;
@@ -347,7 +415,7 @@ function body(errors = []) {
       const v = { name, distribution: tr.law.querySelector("select").value };
       for (const input of tr.law.querySelectorAll("input")) {
         if (input.hidden || input.value.trim() === "") continue;
-        v[input.dataset.part] = input.dataset.part === "num" ? parseInt(input.value, 10) : number(input.value, `${label(model.inputs.find((p) => p.name === name))} (${input.dataset.part})`, errors);
+        v[input.dataset.part] = input.dataset.part === "num" ? parseInt(input.value, 10) : fieldValue(input, name, errors, ` (${input.dataset.part})`);
       }
       variables.push(v);
     } else if (tr.control.type === "checkbox") {
@@ -357,7 +425,7 @@ function body(errors = []) {
       if (r.ok) base[name] = r.values;
       else errors.push(`${label(model.inputs.find((p) => p.name === name))}: ${r.error}`);
     } else if (tr.control.value.trim() !== "") {
-      base[name] = tr.control.tagName === "SELECT" ? tr.control.value : number(tr.control.value, label(model.inputs.find((p) => p.name === name)), errors);
+      base[name] = tr.control.tagName === "SELECT" ? tr.control.value : fieldValue(tr.control, name, errors);
     }
   }
   const out = {
@@ -436,6 +504,7 @@ async function cancel() {
 }
 
 function render(j) {
+  lastJob = j;
   summary = j.result;
   $("#study-result").hidden = false;
   const feas = summary.feasible.fraction;
@@ -453,19 +522,23 @@ function render(j) {
   const preferred = ["required_preload", "yield_preload", "permissible_preload"];
   for (const o of lines.options) o.selected = preferred.includes(o.value);
   const first = names.find((n) => summary.outputs[n].count && summary.outputs[n].max !== summary.outputs[n].min) || names[0];
-  sel.value = first;
-  sel.onchange = lines.onchange = draw;
+  sel.value = names.includes(sel.dataset.keep) ? sel.dataset.keep : first; // a redraw (units switched) keeps the output
+  sel.onchange = () => { sel.dataset.keep = sel.value; draw(); };
+  lines.onchange = draw;
   // statistics table
   const head = el("tr", {}, ...["output", "unit", "mean", "sd", "1 %", "50 %", "99 %", "min", "max"].map((h) => el("th", { scope: "col", text: h })));
   const rows = names.map((n) => {
     const s = summary.outputs[n];
     const q = s.quantiles || {};
+    // each row in its output's unit in the system chosen, as the form shows the output
+    const u = shownUnit(n, typical(s.min, s.max, s.mean));
+    const shown = (v) => (typeof v === "number" ? v / u.factor : v);
     return el(
       "tr",
-      {},
+      { "data-name": n },
       el("th", { scope: "row", text: n.replaceAll("_", " ") }),
-      el("td", { text: summary.units[n] === "1" ? "" : summary.units[n] }),
-      ...[s.mean, s.std, q["0.01"], q["0.5"], q["0.99"], s.min, s.max].map((v) => el("td", { class: "num", text: fmt(v) })),
+      el("td", { class: "unit", text: u.label }),
+      ...[s.mean, s.std, q["0.01"], q["0.5"], q["0.99"], s.min, s.max].map((v) => el("td", { class: "num", text: fmt(shown(v)) })),
     );
   });
   $("#study-stats").replaceChildren(el("thead", {}, head), el("tbody", {}, ...rows));
@@ -564,18 +637,25 @@ function drawHistogram(name) {
   ctx.clearRect(0, 0, w, h);
   const s = summary.outputs[name];
   if (!s || !s.histogram) return;
-  const { edges, counts } = s.histogram;
-  const unit = summary.units[name] === "1" ? "" : ` [${summary.units[name]}]`;
-  const refs = [...$("#study-lines").selectedOptions].map((o) => o.value).filter((n) => n !== name && summary.outputs[n] && summary.outputs[n].mean !== undefined);
+  // the axis in the output's unit in the system chosen; reference lines of another SI unit
+  // cannot share the axis and are left out
+  const u = shownUnit(name, typical(s.min, s.max, s.mean));
+  const edges = s.histogram.edges.map((v) => v / u.factor);
+  const { counts } = s.histogram;
+  const unit = bracket(u);
+  const refs = [...$("#study-lines").selectedOptions].map((o) => o.value).filter((n) => n !== name && summary.outputs[n] && typeof summary.outputs[n].mean === "number"
+    && summary.units[n] === summary.units[name]);
+  const refMean = (r) => summary.outputs[r].mean / u.factor;
   let xlo = edges[0], xhi = edges[edges.length - 1];
   for (const r of refs) {
-    xlo = Math.min(xlo, summary.outputs[r].mean);
-    xhi = Math.max(xhi, summary.outputs[r].mean);
+    xlo = Math.min(xlo, refMean(r));
+    xhi = Math.max(xhi, refMean(r));
   }
   if (xhi === xlo) xhi = xlo + 1;
   const pad = { l: 68, r: 12, t: 12, b: 36 }; // room for "0.00925" beside the rotated label
   const ymax = Math.max(...counts, 1);
   axes(ctx, w, h, pad, xlo, xhi, 0, ymax, name.replaceAll("_", " ") + unit, "designs");
+  canvas.setAttribute("aria-label", `histogram of ${name.replaceAll("_", " ")}${unit}`);
   const X = (v) => pad.l + ((v - xlo) / (xhi - xlo)) * (w - pad.l - pad.r);
   const Y = (c) => h - pad.b - (c / ymax) * (h - pad.t - pad.b);
   ctx.fillStyle = "#1f5f99";
@@ -587,7 +667,7 @@ function drawHistogram(name) {
   ctx.lineWidth = 2;
   const colours = ["#b3261e", "#1e7b34", "#8a5a00"];
   refs.forEach((r, i) => {
-    const x = X(summary.outputs[r].mean);
+    const x = X(refMean(r));
     ctx.strokeStyle = colours[i % colours.length];
     ctx.beginPath();
     ctx.moveTo(x, pad.t);
@@ -619,7 +699,12 @@ function drawMap(name) {
   const w = canvas.width, h = canvas.height;
   ctx.clearRect(0, 0, w, h);
   const axesNames = Object.keys(grid.axes);
-  let values = grid.maps[name];
+  // axes in their inputs' units and the output in its own, in the system chosen
+  const axisUnit = (a) => shownUnit(a, typical(...grid.axes[a]));
+  const axis = (a) => grid.axes[a].map((v) => v / axisUnit(a).factor);
+  const axisLabel = (a) => a.replaceAll("_", " ") + bracket(axisUnit(a));
+  const ou = shownUnit(name, typical(...grid.maps[name].flat(2)));
+  let values = grid.maps[name].map(function scale(v) { return Array.isArray(v) ? v.map(scale) : v === null ? null : v / ou.factor; });
   let feasible = grid.feasible;
   if (axesNames.length === 3) {
     const k = Math.floor(grid.shape[2] / 2);
@@ -628,10 +713,10 @@ function drawMap(name) {
   }
   const pad = { l: 68, r: 12, t: 12, b: 36 }; // room for "0.00925" beside the rotated label
   if (axesNames.length === 1) {
-    const xs = grid.axes[axesNames[0]];
+    const xs = axis(axesNames[0]);
     const ys = values.filter((v) => v !== null);
     const ylo = Math.min(...ys), yhi = Math.max(...ys) === ylo ? ylo + 1 : Math.max(...ys);
-    axes(ctx, w, h, pad, xs[0], xs[xs.length - 1], ylo, yhi, axesNames[0], name);
+    axes(ctx, w, h, pad, xs[0], xs[xs.length - 1], ylo, yhi, axisLabel(axesNames[0]), name.replaceAll("_", " ") + bracket(ou));
     ctx.strokeStyle = "#1f5f99";
     ctx.beginPath();
     xs.forEach((x, i) => {
@@ -643,10 +728,10 @@ function drawMap(name) {
     ctx.stroke();
     return;
   }
-  const xs = grid.axes[axesNames[0]], ys = grid.axes[axesNames[1]];
+  const xs = axis(axesNames[0]), ys = axis(axesNames[1]);
   const flat = values.flat().filter((v) => v !== null);
   const lo = Math.min(...flat), hi = Math.max(...flat);
-  axes(ctx, w, h, pad, xs[0], xs[xs.length - 1], ys[0], ys[ys.length - 1], axesNames[0], axesNames[1]);
+  axes(ctx, w, h, pad, xs[0], xs[xs.length - 1], ys[0], ys[ys.length - 1], axisLabel(axesNames[0]), axisLabel(axesNames[1]));
   const cw = (w - pad.l - pad.r) / xs.length, ch = (h - pad.t - pad.b) / ys.length;
   for (let i = 0; i < xs.length; i++) {
     for (let j = 0; j < ys.length; j++) {
@@ -681,7 +766,9 @@ function drawMap(name) {
   ctx.stroke();
   ctx.lineWidth = 1;
   ctx.textAlign = "left";
-  const legend = `${name.replaceAll("_", " ")}: ${fmt(lo, 3)} … ${fmt(hi, 3)}${axesNames.length === 3 ? ` (slice ${axesNames[2]} = ${fmt(grid.axes[axesNames[2]][Math.floor(grid.shape[2] / 2)], 3)})` : ""}`;
+  const sliced = axesNames.length === 3 ? axesNames[2] : null;
+  const slice = sliced ? ` (slice ${sliced.replaceAll("_", " ")} = ${fmt(axis(sliced)[Math.floor(grid.shape[2] / 2)], 3)}${axisUnit(sliced).label ? " " + axisUnit(sliced).label : ""})` : "";
+  const legend = `${name.replaceAll("_", " ")}: ${fmt(lo, 3)} … ${fmt(hi, 3)}${ou.label ? " " + ou.label : ""}${slice}`;
   ctx.fillStyle = "rgba(255,255,255,0.85)"; // readable over the dark end of the colour ramp
   ctx.fillRect(pad.l + 1, pad.t + 1, ctx.measureText(legend).width + 6, 16);
   ctx.fillStyle = "#1d2630";
@@ -726,9 +813,25 @@ $("#study-rows").addEventListener("input", (e) => { const tr = e.target.closest(
     for (const f of document.querySelectorAll("#study-form input:not([type=checkbox])")) {
       if (f.dataset.part === "num" || f.id === "study-samples" || f.id === "study-seed") continue;
       const q = readQuantity(f.value, old);
-      if (q.ok) f.value = localNumber(q.canonical) + (q.unit ? " " + q.unit : "");
+      if (!q.ok) continue;
+      const text = localNumber(q.canonical) + (q.unit ? " " + q.unit : "");
+      if (f.dataset.shown === f.value) f.dataset.shown = text; // still the value written: still exact
+      f.value = text;
     }
     for (const tr of $("#study-rows").children) echo(tr);
+  });
+}
+{
+  // the unit system, shared with the form's page: a change redraws the results, same values
+  const system = $("#unit-system");
+  system.value = imperialChosen() ? "imperial" : "metric";
+  system.addEventListener("change", () => {
+    setImperial(system.value === "imperial");
+    for (const f of document.querySelectorAll("#study-rows input[data-si]")) {
+      const p = model.inputs.find((q) => q.name === f.closest("tr").dataset.name);
+      if (exactSI(f) !== undefined) writeSI(f, p, exactSI(f));
+    }
+    if (lastJob) render(lastJob);
   });
 }
 $("#study-cancel").addEventListener("click", cancel);
