@@ -77,7 +77,10 @@ STEP_COST_CAP = 1e-5
 
 
 def jit(
-    func: Callable[..., Any], *, error_model: Literal["python", "numpy"] = "python"
+    func: Callable[..., Any],
+    *,
+    error_model: Literal["python", "numpy"] = "python",
+    inline: bool = False,
 ) -> Callable[..., Any]:
     """Compile ``func`` with numba when it is installed; ``func`` itself otherwise.
 
@@ -88,6 +91,9 @@ def jit(
     error_model : str
         numba's error model: ``"python"`` raises on a division by zero,
         ``"numpy"`` gives inf/NaN as numpy does
+    inline : bool
+        Inline ``func`` into every compiled caller (numba's ``inline="always"``): for the
+        small functions a kernel calls every step, whose calls LLVM does not always inline
 
     Notes
     -----
@@ -101,10 +107,11 @@ def jit(
         import numba
     except ImportError:  # pragma: no cover - numba is a declared dependency
         return func
+    how: Literal["always", "never"] = "always" if inline else "never"
     try:
-        return numba.njit(cache=True, nogil=True, error_model=error_model)(func)
+        return numba.njit(cache=True, nogil=True, error_model=error_model, inline=how)(func)
     except RuntimeError:  # pragma: no cover - no writable cache directory at all
-        return numba.njit(cache=False, nogil=True, error_model=error_model)(func)
+        return numba.njit(cache=False, nogil=True, error_model=error_model, inline=how)(func)
 
 
 def hermite(s, z0, v0, z1, v1, h):  # type: ignore[no-untyped-def]

@@ -53,6 +53,7 @@ blow conserves energy to the integrator's tolerance.
 
 from __future__ import annotations
 
+import functools
 import math
 import time
 from dataclasses import dataclass, field
@@ -716,6 +717,21 @@ def damping_for_restitution(
             f"least {MIN_RESTITUTION:.3f}",
             field="restitution",
         )
+    zeta = _damping_ratio(restitution)
+    jr = tool_inertia * struck_inertia / (tool_inertia + struck_inertia)
+    return 2.0 * zeta * math.sqrt(stiffness * jr)
+
+
+@functools.lru_cache(maxsize=256)
+def _damping_ratio(restitution: float) -> float:
+    """ζ with :func:`contact_restitution` (ζ) = restitution, by 60 bisections on [0, 0.99].
+
+    Kept per restitution: a simulation asks for it blow after blow (some 60 µs of Python
+    each time otherwise, the cost of hundreds of the kernel's steps).
+
+    >>> round(contact_restitution(_damping_ratio(0.5)), 12)
+    0.5
+    """
     lo, hi = 0.0, 0.99
     for _ in range(60):
         mid = 0.5 * (lo + hi)
@@ -723,9 +739,7 @@ def damping_for_restitution(
             lo = mid
         else:
             hi = mid
-    zeta = 0.5 * (lo + hi)
-    jr = tool_inertia * struck_inertia / (tool_inertia + struck_inertia)
-    return 2.0 * zeta * math.sqrt(stiffness * jr)
+    return 0.5 * (lo + hi)
 
 
 # ---------------------------------------------------------------------------
@@ -733,9 +747,8 @@ def damping_for_restitution(
 # ---------------------------------------------------------------------------
 
 
-def _rates(st, mode, jt, js, c, cd, k, t0, n):  # type: ignore[no-untyped-def]
-    """Derivatives of (u, wt, th, ws, Wj, Wd, Wc) and the spring torque."""
-    u, wt, th, ws = st[0], st[1], st[2], st[3]
+def _rates(u, wt, th, ws, mode, jt, js, c, cd, k, t0, n):  # type: ignore[no-untyped-def]
+    """Derivatives of (u, wt, th, ws, Wj, Wd, Wc) and the spring torque at one state."""
     du = wt - ws
     ts = 0.0
     up = 0.0
@@ -756,76 +769,77 @@ def _rates(st, mode, jt, js, c, cd, k, t0, n):  # type: ignore[no-untyped-def]
     return du, dwt, dth, dws, pj, n * wt, (ts - c * up) * du, ts
 
 
-_rates_c = jit(_rates)
+_rates_c = jit(_rates, inline=True)
 
 
-def _rk4(st, h, mode, jt, js, c, cd, k, t0, n, out):  # type: ignore[no-untyped-def]
-    """One RK4 step of length h from st into out (7 states)."""
-    tmp = np.empty(7)
-    k1 = _rates_c(st, mode, jt, js, c, cd, k, t0, n)
-    for i in range(7):
-        tmp[i] = st[i] + 0.5 * h * k1[i]
-    if mode == 0:
-        tmp[3] = 0.0
-    k2 = _rates_c(tmp, mode, jt, js, c, cd, k, t0, n)
-    for i in range(7):
-        tmp[i] = st[i] + 0.5 * h * k2[i]
-    if mode == 0:
-        tmp[3] = 0.0
-    k3 = _rates_c(tmp, mode, jt, js, c, cd, k, t0, n)
-    for i in range(7):
-        tmp[i] = st[i] + h * k3[i]
-    if mode == 0:
-        tmp[3] = 0.0
-    k4 = _rates_c(tmp, mode, jt, js, c, cd, k, t0, n)
-    for i in range(7):
-        out[i] = st[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i])
-    if mode == 0:
-        out[3] = 0.0
+def _rk4(u, wt, th, ws, wj, wn, wc, h, mode, jt, js, c, cd, k, t0, n):  # type: ignore[no-untyped-def]
+    """One RK4 step of length h from the seven states: the seven states after it.
+
+    The states are scalars in and out (a tuple back): no array is touched per step.
+    """
+    f = 0.5 * h
+    r1 = _rates_c(u, wt, th, ws, mode, jt, js, c, cd, k, t0, n)
+    a = ws + f * r1[3] if mode == 1 else 0.0
+    r2 = _rates_c(u + f * r1[0], wt + f * r1[1], th + f * r1[2], a, mode, jt, js, c, cd, k, t0, n)
+    a = ws + f * r2[3] if mode == 1 else 0.0
+    r3 = _rates_c(u + f * r2[0], wt + f * r2[1], th + f * r2[2], a, mode, jt, js, c, cd, k, t0, n)
+    a = ws + h * r3[3] if mode == 1 else 0.0
+    r4 = _rates_c(u + h * r3[0], wt + h * r3[1], th + h * r3[2], a, mode, jt, js, c, cd, k, t0, n)
+    g = h / 6.0
+    return (
+        u + g * (r1[0] + 2.0 * r2[0] + 2.0 * r3[0] + r4[0]),
+        wt + g * (r1[1] + 2.0 * r2[1] + 2.0 * r3[1] + r4[1]),
+        th + g * (r1[2] + 2.0 * r2[2] + 2.0 * r3[2] + r4[2]),
+        ws + g * (r1[3] + 2.0 * r2[3] + 2.0 * r3[3] + r4[3]) if mode == 1 else 0.0,
+        wj + g * (r1[4] + 2.0 * r2[4] + 2.0 * r3[4] + r4[4]),
+        wn + g * (r1[5] + 2.0 * r2[5] + 2.0 * r3[5] + r4[5]),
+        wc + g * (r1[6] + 2.0 * r2[6] + 2.0 * r3[6] + r4[6]),
+    )
 
 
-_rk4_c = jit(_rk4)
+_rk4_c = jit(_rk4, inline=True)
 
 
-def _spring(st, c, cd):  # type: ignore[no-untyped-def]
-    u = st[0]
+def _spring(u, wt, ws, c, cd):  # type: ignore[no-untyped-def]
+    """Spring torque T_s = max(0, C u + c u') on the contact (u > 0), 0 off it."""
     if u <= 0.0:
         return 0.0
-    ts = c * u + cd * (st[1] - st[3])
+    ts = c * u + cd * (wt - ws)
     return ts if ts > 0.0 else 0.0
 
 
-_spring_c = jit(_spring)
+_spring_c = jit(_spring, inline=True)
 
 
-def _event(st, mode, jt, js, c, cd, k, t0, b, n, started):  # type: ignore[no-untyped-def]
-    """Which event the state st shows: 0 none, 1 stick, 2 breakaway, 3 end of blow."""
-    tj = t0 + k * st[2]
+def _event(u, wt, th, ws, mode, jt, js, c, cd, k, t0, b, n, started):  # type: ignore[no-untyped-def]
+    """Which event a state shows: 0 none, 1 stick, 2 breakaway, 3 end of blow."""
+    tj = t0 + k * th
     if mode == 1:
-        if st[3] < 0.0:
+        if ws < 0.0:
             return 1
         # jaws apart, the nut running away faster and decelerating no faster than the tool
-        if started and st[0] < 0.0 and st[1] <= st[3] and n * js + tj * jt <= 0.0:
+        if started and u < 0.0 and wt <= ws and n * js + tj * jt <= 0.0:
             return 3
         return 0
-    if _spring_c(st, c, cd) > b * tj:
+    if _spring_c(u, wt, ws, c, cd) > b * tj:
         return 2
-    if started and st[1] <= 0.0:
+    if started and wt <= 0.0:
         return 3  # tool turning back, nut at rest: the spring torque only falls from here
     return 0
 
 
-_event_c = jit(_event)
+_event_c = jit(_event, inline=True)
 
 
-def _torque_rate(st, mode, jt, js, c, cd, k, t0, n):  # type: ignore[no-untyped-def]
-    r = _rates_c(st, mode, jt, js, c, cd, k, t0, n)
-    if st[0] <= 0.0:
+def _torque_rate(u, wt, th, ws, mode, jt, js, c, cd, k, t0, n):  # type: ignore[no-untyped-def]
+    """dT_s/dt = C u' + c u'' on the contact, 0 off it."""
+    r = _rates_c(u, wt, th, ws, mode, jt, js, c, cd, k, t0, n)
+    if u <= 0.0:
         return 0.0
     return c * r[0] + cd * (r[1] - r[3])
 
 
-_torque_rate_c = jit(_torque_rate)
+_torque_rate_c = jit(_torque_rate, inline=True)
 
 
 def _blow_kernel(  # type: ignore[no-untyped-def]
@@ -835,63 +849,68 @@ def _blow_kernel(  # type: ignore[no-untyped-def]
 
     info carries in [.., mode, started] and receives [status, steps, t_end, peak torque,
     t_peak, records, mode, started]: status 1 = the blow ended, 0 = max_steps used.
+    The state lives in local variables between the steps (st is read once and written
+    once); the torque's rate at a step's start is the one at the previous step's end
+    unless an event changed the mode; events and maxima are bisected only on the steps
+    whose end shows them.
     """
     mode = int(info[6])
     started = info[7] > 0.0
     t = 0.0
     peak = 0.0
     t_peak = 0.0
-    nxt = np.empty(7)
-    sub = np.empty(7)
+    u, wt, th, ws, wj, wn, wc = st[0], st[1], st[2], st[3], st[4], st[5], st[6]
     cap = out_t.shape[0]
     n_rec = 0
     if stride > 0 and cap > 0:
         out_t[0] = 0.0
-        out_ts[0] = _spring_c(st, c, cd)
+        out_ts[0] = _spring_c(u, wt, ws, c, cd)
         n_rec = 1
     steps = 0
     status = 0
+    r0 = _torque_rate_c(u, wt, th, ws, mode, jt, js, c, cd, k, t0, n)
     while steps < max_steps:
-        _rk4_c(st, h, mode, jt, js, c, cd, k, t0, n, nxt)
+        x = _rk4_c(u, wt, th, ws, wj, wn, wc, h, mode, jt, js, c, cd, k, t0, n)
         steps += 1
-        ev = _event_c(nxt, mode, jt, js, c, cd, k, t0, b, n, started or nxt[0] > 0.0)
+        ev = _event_c(x[0], x[1], x[2], x[3], mode, jt, js, c, cd, k, t0, b, n,
+                      started or x[0] > 0.0)  # fmt: skip
         frac = 1.0
         if ev != 0:
             lo = 0.0
             hi = 1.0
             for _ in range(60):
                 mid = 0.5 * (lo + hi)
-                _rk4_c(st, mid * h, mode, jt, js, c, cd, k, t0, n, sub)
-                if _event_c(sub, mode, jt, js, c, cd, k, t0, b, n, started or sub[0] > 0.0) == ev:
+                y = _rk4_c(u, wt, th, ws, wj, wn, wc, mid * h, mode, jt, js, c, cd, k, t0, n)
+                if _event_c(y[0], y[1], y[2], y[3], mode, jt, js, c, cd, k, t0, b, n,
+                            started or y[0] > 0.0) == ev:  # fmt: skip
                     hi = mid
                 else:
                     lo = mid
             frac = hi
-            _rk4_c(st, frac * h, mode, jt, js, c, cd, k, t0, n, nxt)
+            x = _rk4_c(u, wt, th, ws, wj, wn, wc, frac * h, mode, jt, js, c, cd, k, t0, n)
         # a torque maximum inside the step: locate it on RK4 sub-steps
-        r0 = _torque_rate_c(st, mode, jt, js, c, cd, k, t0, n)
-        r1 = _torque_rate_c(nxt, mode, jt, js, c, cd, k, t0, n)
+        r1 = _torque_rate_c(x[0], x[1], x[2], x[3], mode, jt, js, c, cd, k, t0, n)
         if r0 > 0.0 and r1 <= 0.0:
             lo = 0.0
             hi = frac
             for _ in range(60):
                 mid = 0.5 * (lo + hi)
-                _rk4_c(st, mid * h, mode, jt, js, c, cd, k, t0, n, sub)
-                if _torque_rate_c(sub, mode, jt, js, c, cd, k, t0, n) > 0.0:
+                y = _rk4_c(u, wt, th, ws, wj, wn, wc, mid * h, mode, jt, js, c, cd, k, t0, n)
+                if _torque_rate_c(y[0], y[1], y[2], y[3], mode, jt, js, c, cd, k, t0, n) > 0.0:
                     lo = mid
                 else:
                     hi = mid
-            _rk4_c(st, lo * h, mode, jt, js, c, cd, k, t0, n, sub)
-            tsm = _spring_c(sub, c, cd)
+            y = _rk4_c(u, wt, th, ws, wj, wn, wc, lo * h, mode, jt, js, c, cd, k, t0, n)
+            tsm = _spring_c(y[0], y[1], y[3], c, cd)
             if tsm > peak:
                 peak = tsm
                 t_peak = t + lo * h
-        for i in range(7):
-            st[i] = nxt[i]
+        u, wt, th, ws, wj, wn, wc = x
+        r0 = r1
         t += frac * h
-        if st[0] > 0.0:
+        if u > 0.0:
             started = True
-        ts = _spring_c(st, c, cd)
+        ts = _spring_c(u, wt, ws, c, cd)
         if ts > peak:
             peak = ts
             t_peak = t
@@ -903,16 +922,19 @@ def _blow_kernel(  # type: ignore[no-untyped-def]
             status = 1
             break
         if ev == 1:
-            st[3] = 0.0
+            ws = 0.0
             mode = 0
             # stuck: does the spring already hold enough to break away again?
-            if _spring_c(st, c, cd) > b * (t0 + k * st[2]):
+            if _spring_c(u, wt, ws, c, cd) > b * (t0 + k * th):
                 mode = 1
-            elif st[1] <= 0.0 and started:
+            elif wt <= 0.0 and started:
                 status = 1
                 break
+            r0 = _torque_rate_c(u, wt, th, ws, mode, jt, js, c, cd, k, t0, n)
         elif ev == 2:
             mode = 1
+            r0 = _torque_rate_c(u, wt, th, ws, mode, jt, js, c, cd, k, t0, n)
+    st[0], st[1], st[2], st[3], st[4], st[5], st[6] = u, wt, th, ws, wj, wn, wc
     info[0] = status
     info[1] = steps
     info[2] = t
