@@ -523,8 +523,10 @@ def bolt_joint_torque(elastic_torque: Any, yield_torque: Any) -> Any:
     >>> bolt_joint_torque(np.array([300.0, 400.0]), 350.0).tolist()
     [300.0, 350.0]
     """
-    # pymin: NaN stays NaN (where, not pymin's extra call: this runs once per blow)
-    return where(yield_torque < elastic_torque, yield_torque, elastic_torque)
+    # pymin's rule: NaN stays NaN; one design's floats without a call (once per blow)
+    if elastic_torque.__class__ is not _ARRAY and yield_torque.__class__ is not _ARRAY:
+        return yield_torque if yield_torque < elastic_torque else elastic_torque
+    return np.where(yield_torque < elastic_torque, yield_torque, elastic_torque)
 
 
 def blow_gains_nothing(rotation: Any, torque_after: Any, torque_before: Any) -> Any:
@@ -549,10 +551,18 @@ def blow_gains_nothing(rotation: Any, torque_after: Any, torque_before: Any) -> 
     (True, False)
     """
     scale = abs(torque_after)
-    stuck = (rotation <= 1e-12) | (
-        torque_after - torque_before <= 1e-12 * where(scale > 1.0, scale, 1.0)
+    if (  # one design
+        scale.__class__ is not _ARRAY
+        and rotation.__class__ is not _ARRAY
+        and torque_before.__class__ is not _ARRAY
+    ):
+        return bool(
+            rotation <= 1e-12
+            or torque_after - torque_before <= 1e-12 * (scale if scale > 1.0 else 1.0)
+        )
+    return (rotation <= 1e-12) | (
+        torque_after - torque_before <= 1e-12 * np.where(scale > 1.0, scale, 1.0)
     )
-    return stuck if stuck.__class__ is _ARRAY else bool(stuck)
 
 
 def energy_blow_error(
