@@ -1290,9 +1290,12 @@ def _rigid_estimate_of(x: Mapping[str, Any], s: _Setup) -> Any:
         return math.nan
 
 
-def _estimate(x: Mapping[str, Any], value: Any) -> Any:
-    """An estimate as the runner takes it: a float or None for one design, else an array."""
-    if _is_array(x):
+def _estimate(s: _Setup, value: Any) -> Any:
+    """An estimate as the runner takes it: a float or None for one design, else an array.
+
+    One design or many as the setup ``s`` says (not a second scan of the inputs).
+    """
+    if s.many:
         return value
     v = float(value)
     return v if math.isfinite(v) else None
@@ -1304,7 +1307,7 @@ def _energy_estimate(x: Mapping[str, Any], scratch: Scratch | None = None) -> An
     s = _setup_or_none(x, Scratch() if scratch is None else scratch)
     if s is None:
         return np.full(_points(x), np.nan) if _is_array(x) else None
-    return _estimate(x, _energy_error(x, s))
+    return _estimate(s, _energy_error(x, s))
 
 
 def _rigid_estimate(x: Mapping[str, Any], scratch: Scratch | None = None) -> Any:
@@ -1313,7 +1316,7 @@ def _rigid_estimate(x: Mapping[str, Any], scratch: Scratch | None = None) -> Any
     s = _setup_or_none(x, Scratch() if scratch is None else scratch)
     if s is None:
         return np.full(_points(x), np.nan) if _is_array(x) else None
-    return _estimate(x, _rigid_estimate_of(x, s))
+    return _estimate(s, _rigid_estimate_of(x, s))
 
 
 #: With damping the contact force is clipped at zero inside a step (the jaws part): RK4
@@ -1701,11 +1704,11 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "(M does not follow from an energy balance with the joint); see 'energy' and "
             "'simulation'"
         )
-        error = _estimate(x, _rigid_estimate_of(x, s))
+        error = _estimate(s, _rigid_estimate_of(x, s))
     elif ctx.rung == "energy":
         # the estimate from the first blow the rung ran (energy_blow: the same balance)
         blow1 = (series.peak, series.torque_after)
-        error = _estimate(x, _energy_error(x, s, blow1, peak=ctx.wants(*_PEAK_OUTPUTS)))
+        error = _estimate(s, _energy_error(x, s, blow1, peak=ctx.wants(*_PEAK_OUTPUTS)))
         notes.append(
             "energy: E + N·φ_t = T_p²/(2C) + (T_p² − T_0²)/(2k_j) per blow, struck inertia and "
             "damping neglected; the estimated error concerns the joint torque after each blow, "
