@@ -1612,6 +1612,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             error_estimate=0.0,
             notes=notes,
         )
+    want_series = ctx.wants(*_SERIES_OUTPUTS)  # each blow's numbers kept only for a series
     series = blow_series(
         p,
         t0,
@@ -1622,6 +1623,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         max_steps=ctx.max_steps,
         deadline=ctx.deadline,
         yield_torque=s.yield_torque,
+        history=want_series,
     )
 
     n = series.blows
@@ -1723,24 +1725,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"{n} blow(s); first blow lasted {q(first.duration, 'ms')}, energy balance "
             f"closes to {abs(first.joint_work + first.energy_left + first.damping_loss - e - first.drive_work) / e:.1e}"  # noqa: E501
         )
-    out_series: dict[str, list[float]] = {
-        "blow_number": [float(i + 1) for i in range(n)],
-        "torque_per_blow": list(series.per_blow["torque"]),
-        "peak_per_blow": list(series.per_blow["peak"]),
-    }
-    if ctx.rung != "rigid":
-        out_series["rotation_per_blow"] = list(series.per_blow["rotation"])
-    if per is not None:
-        out_series["preload_per_blow"] = [t / per for t in series.per_blow["torque"]]
-    if math.isfinite(interval) and interval > 0.0:
-        times = [(i + 1) * interval for i in range(n)]
-        out_series["blow_time"] = times
-        out_series["torque_against_time"] = list(series.per_blow["torque"])
-        if per is not None:
-            out_series["preload_against_time"] = [t / per for t in series.per_blow["torque"]]
-    if series.first is not None and len(series.first.time):
-        out_series["time_in_blow"] = series.first.time.tolist()
-        out_series["torque_in_blow"] = series.first.torque.tolist()
+    out_series = _out_series(ctx.rung, series, per, interval) if want_series else {}
     return Result(
         values=values,
         rung=ctx.rung,
@@ -1750,6 +1735,39 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         warnings=warnings,
         series=out_series,
     )
+
+
+#: The series outputs of the blows' sources (none is built unless one is asked for).
+_SERIES_OUTPUTS = tuple(o.name for o in _OUTPUTS if o.series)
+
+
+def _out_series(
+    rung: str, series: BlowSeries, per: float | None, interval: float
+) -> dict[str, list[float]]:
+    """The series of one design's blows: per blow, against time, and the first blow's torque.
+
+    Built only where some series is asked for (the runner keeps those asked for): a run of
+    35 blows otherwise spends on lists no one reads.
+    """
+    n = series.blows
+    out: dict[str, list[float]] = {
+        "blow_number": [float(i + 1) for i in range(n)],
+        "torque_per_blow": list(series.per_blow["torque"]),
+        "peak_per_blow": list(series.per_blow["peak"]),
+    }
+    if rung != "rigid":
+        out["rotation_per_blow"] = list(series.per_blow["rotation"])
+    if per is not None:
+        out["preload_per_blow"] = [t / per for t in series.per_blow["torque"]]
+    if math.isfinite(interval) and interval > 0.0:
+        out["blow_time"] = [(i + 1) * interval for i in range(n)]
+        out["torque_against_time"] = list(series.per_blow["torque"])
+        if per is not None:
+            out["preload_against_time"] = [t / per for t in series.per_blow["torque"]]
+    if series.first is not None and len(series.first.time):
+        out["time_in_blow"] = series.first.time.tolist()
+        out["torque_in_blow"] = series.first.torque.tolist()
+    return out
 
 
 # --------------------------------------------------------------------------- array path
