@@ -1426,8 +1426,13 @@ def suggest_wire(
         return {}
     grid = SettingGrid(x)
     dm = np.asarray(x["spring_mean_diameter"], float)
+    # every varied input (coils and free length too, which the grid does not see)
     shape = np.broadcast_shapes(
-        dm.shape, np.shape(target), np.shape(force), grid.inverse_gain.shape[:-1]
+        dm.shape,
+        np.shape(target),
+        np.shape(force),
+        grid.inverse_gain.shape[:-1],
+        *(v.shape for v in _arrays(x)),
     )
     wire = np.full(shape, np.nan)
     setting = np.full(shape, np.nan)

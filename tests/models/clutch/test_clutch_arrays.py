@@ -377,3 +377,31 @@ def test_a_refused_point_is_masked_with_its_reason_on_both_paths():
     )
     assert sweep.results["torque_limit"][-1] is None
     assert any("1 of 4 points refused: no coil" in n for n in sweep.notes), sweep.notes
+
+
+@pytest.mark.parametrize(
+    "vary, low, high",
+    [
+        ("spring_active_coils", 4.0, 12.0),
+        ("ball_lift", 0.001, 0.004),
+        ("spring_free_length", 0.05, 0.12),
+    ],
+)
+def test_as_built_setting_swept_alone_over_its_geometry_stays_on_the_array_path(vary, low, high):
+    # one geometry input varied alone (the setting's lines do not see coils or free length):
+    # the array path, and every output equal to the single run at its point to 1e-12
+    base = dict(BALL_CLUTCH_SETTING.examples[1])
+    values = np.linspace(low, high, 17)
+    _array_path_used(BALL_CLUTCH_SETTING, base, {vary: values})
+    s = engine.sweep(BALL_CLUTCH_SETTING, base, vary, values.tolist())
+    moved = set()
+    for j, value in enumerate(values.tolist()):
+        one = engine.run(BALL_CLUTCH_SETTING, {**base, vary: value})
+        for name, got in s.results.items():
+            want = one.results.get(name)
+            if want is None:
+                assert got[j] is None, (name, j)
+            else:
+                assert got[j] == pytest.approx(want, rel=1e-12), (name, j)
+                moved.add(name) if got[j] != s.results[name][0] else None
+    assert "suggested_wire_diameter" in moved or "suggested_wire_setting" in moved
