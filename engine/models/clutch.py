@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from typing import Any
 
 import numpy as np
@@ -804,19 +804,27 @@ _CHUNK = 20_000
 
 def _chunked_forward(x: Mapping[str, Any], peak: bool = True) -> dict[str, Any]:
     """:func:`_forward_values` over long varied inputs, a chunk at a time (bounded memory)."""
-    n = _array_inputs(x)
-    if n is None or n <= _CHUNK or not peak:  # without the 81-point curve: no chunks needed
+    if not peak:  # without the 81-point curve: no chunks needed
         return _forward_values(x, peak=peak)
-    parts = [
-        _forward_values(
-            {
-                k: (v[i : i + _CHUNK] if isinstance(v, np.ndarray) and v.shape == (n,) else v)
-                for k, v in x.items()
-            },
-            peak=peak,
-        )
-        for i in range(0, n, _CHUNK)
-    ]
+    return _in_chunks(lambda part: _forward_values(part, peak=peak), _array_inputs(x), x)
+
+
+def _in_chunks(fn: Callable[..., dict[str, Any]], n: int | None, *args: Any) -> dict[str, Any]:
+    """``fn(*args)`` on :data:`_CHUNK` points at a time, its columns joined.
+
+    ``args`` are inputs (mappings) or columns; every array of ``n`` elements is cut,
+    the rest passed whole. Memory stays bounded where ``fn`` holds a characteristic
+    (81 values) per point; the numbers are those of one call on all points.
+    """
+    if n is None or n <= _CHUNK:
+        return fn(*args)
+
+    def cut(a: Any, i: int) -> Any:
+        if isinstance(a, Mapping):
+            return {k: cut(v, i) for k, v in a.items()}
+        return a[i : i + _CHUNK] if isinstance(a, np.ndarray) and a.shape == (n,) else a
+
+    parts = [fn(*(cut(a, i) for a in args)) for i in range(0, n, _CHUNK)]
     return {
         k: None
         if parts[0][k] is None
@@ -1241,7 +1249,15 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
             x = {**x, "target_torque": drive["required_slip_torque"]}
         ok, refusals = _feasible(x, wire)
         v: dict[str, Any] = dict(_setting_values(x))
-        v.update(asbuilt.setting_values(x, v["required_spring_force"])[0])
+        # the setting's lines hold 81 values per point: a chunk of points at a time
+        v.update(
+            _in_chunks(
+                lambda part, force: asbuilt.setting_values(part, force)[0],
+                _array_inputs(x),
+                x,
+                v["required_spring_force"],
+            )
+        )
         v.update(drive)
         check_arrays = {
             k: _verdicts(c, ok) for k, c in _setting_verdicts(x, v, drive, target_given).items()

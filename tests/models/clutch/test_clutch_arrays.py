@@ -405,3 +405,32 @@ def test_as_built_setting_swept_alone_over_its_geometry_stays_on_the_array_path(
                 assert got[j] == pytest.approx(want, rel=1e-12), (name, j)
                 moved.add(name) if got[j] != s.results[name][0] else None
     assert "suggested_wire_diameter" in moved or "suggested_wire_setting" in moved
+
+
+def test_long_setting_columns_are_evaluated_in_chunks_with_the_same_numbers(monkeypatch):
+    # the setting's lines hold 81 values per point: no array of n x 81 for a long column
+    from engine.models import clutch
+
+    n = 3 * 40 + 11
+    x, _ = BALL_CLUTCH_SETTING.validate(BALL_CLUTCH_SETTING.examples[1])
+    rng = np.random.default_rng(4)
+    cols = {
+        "drive_power": rng.uniform(200.0, 600.0, n),
+        "spring_active_coils": rng.uniform(5.0, 11.0, n),
+    }
+    ctx = RunContext("closed_form", frozenset(FLOATS[BALL_CLUTCH_SETTING.name]), 0.01)
+    whole = BALL_CLUTCH_SETTING.vectorized({**x, **cols}, ctx).values
+    widest = []
+    setting = asbuilt.SettingGrid.setting
+
+    def spy(self, rate, target, upper):
+        widest.append(np.size(self.inverse_gain) + np.size(target) * self.q.size)
+        return setting(self, rate, target, upper)
+
+    monkeypatch.setattr(asbuilt.SettingGrid, "setting", spy)
+    monkeypatch.setattr(clutch, "_CHUNK", 40)
+    got = BALL_CLUTCH_SETTING.vectorized({**x, **cols}, ctx).values
+    assert max(widest) <= 2 * 40 * asbuilt.POINTS
+    for name in ("required_peak_setting", "suggested_wire_diameter", "suggested_wire_setting"):
+        assert np.isfinite(got[name]).any(), name
+        np.testing.assert_array_equal(got[name], whole[name], err_msg=name)
