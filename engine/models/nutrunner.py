@@ -937,7 +937,7 @@ def _idealisation_error(x: Mapping[str, Any]) -> Any:
 _FLOOR = 1e-12  # float rounding of the closed forms
 
 
-def _estimate_closed_form(x: Mapping[str, Any]) -> float:
+def _estimate_closed_form(x: Mapping[str, Any], drive: _Drive | None = None) -> Any:
     """Largest relative change the gear ratio makes to any torque output, either way round.
 
     Spindle quantities scale with M_paper/M_geared, shaft quantities (torque, twist,
@@ -947,14 +947,13 @@ def _estimate_closed_form(x: Mapping[str, Any]) -> float:
     is taken as the reference. With a motor curve, the constant-power idealisation of
     the spin-up time counts too.
     """
-    d = _drive(x)
-    m_paper = np.asarray(d.m_paper, dtype=float)
-    m_geared = np.asarray(d.m_geared, dtype=float)
+    d = _drive(x) if drive is None else drive
+    # numpy scalars for one design (their arithmetic is cheap), arrays for many
+    m_paper = np.asarray(d.m_paper, dtype=float)[()]
+    m_geared = np.asarray(d.m_geared, dtype=float)[()]
     friction = (x["spindle_count"] - 1) * x["idle_spindle_friction_torque"]
     with np.errstate(all="ignore"):  # array-capable: a sweep estimates every point at once
-        gear = np.maximum(
-            _spread(m_paper / m_geared), _spread(m_paper / (np.asarray(d.u) * m_geared))
-        )
+        gear = np.maximum(_spread(m_paper / m_geared), _spread(m_paper / (d.u * m_geared)))
         after_friction = _spread((m_paper - friction) / (m_geared - friction))
     gear = np.where(
         np.minimum(m_paper, m_geared) > friction, np.maximum(gear, after_friction), gear
@@ -965,7 +964,7 @@ def _estimate_closed_form(x: Mapping[str, Any]) -> float:
 
 def _spread(r: Any) -> Any:
     """max(|r − 1|, |1/r − 1|): a ratio's relative change, either way round."""
-    return np.maximum(np.abs(r - 1.0), np.abs(1.0 / r - 1.0))
+    return np.maximum(abs(r - 1.0), abs(1.0 / r - 1.0))
 
 
 def _estimate_gear_ratio(x: Mapping[str, Any]) -> Any:
@@ -1130,7 +1129,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"and the shaft torque (twist, stress) by {d.u * (1.0 + effect) - 1.0:+.2%} "
             "(rung gear_ratio); the error estimate is the larger change, either way round"
         )
-        error: float | None = _estimate_closed_form(x)
+        error: float | None = _estimate_closed_form(x, d)
     else:
         notes.append(
             f"shaft 7 carries u·M with u = D4/D5 = {d.u:.4g}; this moves the spindle torque by "
