@@ -1102,7 +1102,8 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
     else:
         force = _required_force(x)
         v = {"required_spring_force": float(force)}
-        v["required_deflection"] = asbuilt.disc_breakaway_setting(x, float(force))
+        setting = asbuilt.disc_breakaway_setting(x, float(force))
+        v["required_deflection"] = None if math.isnan(setting) else setting
     extra, extra_notes = asbuilt.setting_values(x, v["required_spring_force"])
     v.update(extra)
     v.update(drive)
@@ -1226,19 +1227,15 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """clutch.ball_setting on arrays: every output and check of the scalar compute, helical.
 
     Several inputs may vary at once; the same functions as a single run
-    (:func:`asbuilt.setting_values`, :func:`asbuilt.sizing`). NaN (and -1 in the
-    checks) where the scalar compute refuses the point or leaves an output null.
-    Disc stacks, and inputs missing for the spring or the target, go to the scalar
-    compute.
+    (:func:`asbuilt.setting_values`, :func:`asbuilt.disc_breakaway_setting`,
+    :func:`asbuilt.sizing`). NaN (and -1 in the checks) where the scalar compute
+    refuses the point or leaves an output null. Inputs missing for the spring or the
+    target go to the scalar compute (it names them).
     """
     helical = x["spring_type"] == "helical"
     wire, deflection = x["spring_wire_diameter"], x["spring_deflection"]
-    if (
-        not helical
-        or (wire is None and deflection is None)
-        or x["spring_mean_diameter"] is None
-        or x["spring_active_coils"] is None
-    ):
+    needed = ("spring_mean_diameter", "spring_active_coils") if helical else _DISC_INPUTS
+    if any(x[name] is None for name in needed) or (helical and wire is None and deflection is None):
         return Result(values={}, rung=ctx.rung, error_estimate=None)
     with np.errstate(all="ignore"):
         drive = asbuilt.sizing(x)
@@ -1247,8 +1244,15 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
             if not drive:
                 return Result(values={}, rung=ctx.rung, error_estimate=None)
             x = {**x, "target_torque": drive["required_slip_torque"]}
-        ok, refusals = _feasible(x, wire)
-        v: dict[str, Any] = dict(_setting_values(x))
+        ok, refusals = _feasible(x, wire if helical else None)
+        if helical:
+            v: dict[str, Any] = dict(_setting_values(x))
+        else:
+            force = _required_force(x)
+            v = {
+                "required_spring_force": force,
+                "required_deflection": asbuilt.disc_breakaway_setting(x, force),
+            }
         # the setting's lines hold 81 values per point: a chunk of points at a time
         v.update(
             _in_chunks(
@@ -1270,6 +1274,10 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         notes=refusals,
         check_arrays=check_arrays,
     )
+
+
+#: The inputs a disc stack needs (:func:`asbuilt.require_spring` names a missing one).
+_DISC_INPUTS = ("disc_outer_diameter", "disc_inner_diameter", "disc_thickness", "disc_cone_height")
 
 
 def _setting_verdicts(
