@@ -1292,8 +1292,10 @@ def bracketed_roots(
     return root
 
 
-#: Designs whose 64-setting grid is evaluated at once (64 × 81 values each).
-_GRID_DESIGNS = 128
+#: Designs whose grid of settings is evaluated at once, :data:`_GRID_BLOCK` settings at a
+#: time (81 values each): a design whose target is reached early is not evaluated further.
+_GRID_DESIGNS = 1024
+_GRID_BLOCK = 8
 
 
 def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
@@ -1324,12 +1326,19 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
     low, high = np.full(n, np.nan), np.full(n, np.nan)
     for first in range(0, todo.size, _GRID_DESIGNS):
         lanes = todo[first : first + _GRID_DESIGNS]
-        peaks = excess(grid[lanes, 1:].ravel(), np.repeat(lanes, 64)).reshape(-1, 64)
-        above = peaks >= 0.0
-        reached = above.any(axis=-1)
-        i = np.argmax(above, axis=-1) + 1  # the first grid point at or past the target
-        at = lanes[reached]
-        low[at], high[at] = grid[at, i[reached] - 1], grid[at, i[reached]]
+        # the grid a block of settings at a time, each design until it crosses the target
+        for start in range(1, 65, _GRID_BLOCK):
+            width = min(_GRID_BLOCK, 65 - start)
+            settings = grid[lanes, start : start + width]
+            peaks = excess(settings.ravel(), np.repeat(lanes, width)).reshape(-1, width)
+            above = peaks >= 0.0
+            reached = above.any(axis=-1)
+            i = np.argmax(above, axis=-1) + start  # the first grid point at or past it
+            at = lanes[reached]
+            low[at], high[at] = grid[at, i[reached] - 1], grid[at, i[reached]]
+            lanes = lanes[~reached]
+            if not lanes.size:
+                break
     bracketed = np.flatnonzero(np.isfinite(low))
     if bracketed.size:
         root[bracketed] = bracketed_roots(
