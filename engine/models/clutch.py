@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from typing import Any
 
 import numpy as np
@@ -804,19 +804,27 @@ _CHUNK = 20_000
 
 def _chunked_forward(x: Mapping[str, Any], peak: bool = True) -> dict[str, Any]:
     """:func:`_forward_values` over long varied inputs, a chunk at a time (bounded memory)."""
-    n = _array_inputs(x)
-    if n is None or n <= _CHUNK or not peak:  # without the 81-point curve: no chunks needed
+    if not peak:  # without the 81-point curve: no chunks needed
         return _forward_values(x, peak=peak)
-    parts = [
-        _forward_values(
-            {
-                k: (v[i : i + _CHUNK] if isinstance(v, np.ndarray) and v.shape == (n,) else v)
-                for k, v in x.items()
-            },
-            peak=peak,
-        )
-        for i in range(0, n, _CHUNK)
-    ]
+    return _in_chunks(lambda part: _forward_values(part, peak=peak), _array_inputs(x), x)
+
+
+def _in_chunks(fn: Callable[..., dict[str, Any]], n: int | None, *args: Any) -> dict[str, Any]:
+    """``fn(*args)`` on :data:`_CHUNK` points at a time, its columns joined.
+
+    ``args`` are inputs (mappings) or columns; every array of ``n`` elements is cut,
+    the rest passed whole. Memory stays bounded where ``fn`` holds a characteristic
+    (81 values) per point; the numbers are those of one call on all points.
+    """
+    if n is None or n <= _CHUNK:
+        return fn(*args)
+
+    def cut(a: Any, i: int) -> Any:
+        if isinstance(a, Mapping):
+            return {k: cut(v, i) for k, v in a.items()}
+        return a[i : i + _CHUNK] if isinstance(a, np.ndarray) and a.shape == (n,) else a
+
+    parts = [fn(*(cut(a, i) for a in args)) for i in range(0, n, _CHUNK)]
     return {
         k: None
         if parts[0][k] is None
@@ -1094,7 +1102,8 @@ def _compute_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
     else:
         force = _required_force(x)
         v = {"required_spring_force": float(force)}
-        v["required_deflection"] = asbuilt.disc_breakaway_setting(x, float(force))
+        setting = asbuilt.disc_breakaway_setting(x, float(force))
+        v["required_deflection"] = None if math.isnan(setting) else setting
     extra, extra_notes = asbuilt.setting_values(x, v["required_spring_force"])
     v.update(extra)
     v.update(drive)
@@ -1218,19 +1227,15 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """clutch.ball_setting on arrays: every output and check of the scalar compute, helical.
 
     Several inputs may vary at once; the same functions as a single run
-    (:func:`asbuilt.setting_values`, :func:`asbuilt.sizing`). NaN (and -1 in the
-    checks) where the scalar compute refuses the point or leaves an output null.
-    Disc stacks, and inputs missing for the spring or the target, go to the scalar
-    compute.
+    (:func:`asbuilt.setting_values`, :func:`asbuilt.disc_breakaway_setting`,
+    :func:`asbuilt.sizing`). NaN (and -1 in the checks) where the scalar compute
+    refuses the point or leaves an output null. Inputs missing for the spring or the
+    target go to the scalar compute (it names them).
     """
     helical = x["spring_type"] == "helical"
     wire, deflection = x["spring_wire_diameter"], x["spring_deflection"]
-    if (
-        not helical
-        or (wire is None and deflection is None)
-        or x["spring_mean_diameter"] is None
-        or x["spring_active_coils"] is None
-    ):
+    needed = ("spring_mean_diameter", "spring_active_coils") if helical else _DISC_INPUTS
+    if any(x[name] is None for name in needed) or (helical and wire is None and deflection is None):
         return Result(values={}, rung=ctx.rung, error_estimate=None)
     with np.errstate(all="ignore"):
         drive = asbuilt.sizing(x)
@@ -1239,9 +1244,24 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
             if not drive:
                 return Result(values={}, rung=ctx.rung, error_estimate=None)
             x = {**x, "target_torque": drive["required_slip_torque"]}
-        ok, refusals = _feasible(x, wire)
-        v: dict[str, Any] = dict(_setting_values(x))
-        v.update(asbuilt.setting_values(x, v["required_spring_force"])[0])
+        ok, refusals = _feasible(x, wire if helical else None)
+        if helical:
+            v: dict[str, Any] = dict(_setting_values(x))
+        else:
+            force = _required_force(x)
+            v = {
+                "required_spring_force": force,
+                "required_deflection": asbuilt.disc_breakaway_setting(x, force),
+            }
+        # the setting's lines hold 81 values per point: a chunk of points at a time
+        v.update(
+            _in_chunks(
+                lambda part, force: asbuilt.setting_values(part, force)[0],
+                _array_inputs(x),
+                x,
+                v["required_spring_force"],
+            )
+        )
         v.update(drive)
         check_arrays = {
             k: _verdicts(c, ok) for k, c in _setting_verdicts(x, v, drive, target_given).items()
@@ -1254,6 +1274,10 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         notes=refusals,
         check_arrays=check_arrays,
     )
+
+
+#: The inputs a disc stack needs (:func:`asbuilt.require_spring` names a missing one).
+_DISC_INPUTS = ("disc_outer_diameter", "disc_inner_diameter", "disc_thickness", "disc_cone_height")
 
 
 def _setting_verdicts(

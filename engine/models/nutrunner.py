@@ -14,7 +14,6 @@ from typing import Any
 
 import numpy as np
 
-from ..core import points
 from ..core.errors import InfeasibleDesign, InputOutOfRange
 from ..core.params import RPM, count, friction_coefficient, length, positive
 from ..core.spec import Answer, Check, ModelSpec, Output, Param, Result, RunContext, Rung
@@ -29,10 +28,13 @@ from ..physics.motor_spinup import (
     MotorCurve,
     kloss_breakdown_slip,
     kloss_slip_torque,
+    kloss_spin_up_time,
     kloss_torque,
     linear_motor_torque,
+    linear_spin_up_time,
     spin_up_profile,
     spin_up_time,
+    torque_limited_constant_power_spin_up_time,
 )
 from ..physics.nutrunner import (
     STEEL_SHEAR_MODULUS,
@@ -701,28 +703,69 @@ def _motor_curve(x: Mapping[str, Any]) -> MotorCurve | None:
         m_c, power = need("stall_torque"), float(x["motor_power"])
         w_c = power / m_c
         return MotorCurve(kind, lambda w: power / np.maximum(w, w_c), None, (w_c,))
-    w_s = need("synchronous_speed")
-    m_k = need("breakdown_torque")
-    w_n = float(x["rated_speed"] if x.get("rated_speed") is not None else x["motor_speed"])
+    need("synchronous_speed"), need("breakdown_torque")
+    w_n, w_s, m_n, m_k = (float(v) for v in _induction_data(x))
     if not w_n < w_s:
         raise InputOutOfRange(
             f"rated_speed = {w_n:.4g} rad/s must be below synchronous_speed = {w_s:.4g} rad/s "
             "(an induction motor runs with slip)",
             field="rated_speed" if x.get("rated_speed") is not None else "synchronous_speed",
         )
-    m_n = float(x["rated_torque"]) if x.get("rated_torque") is not None else x["motor_power"] / w_n
     if not m_k > m_n:
         raise InputOutOfRange(
             f"breakdown_torque = {m_k:.4g} N*m must exceed the rated torque {m_n:.4g} N*m",
             field="breakdown_torque",
         )
-    s_k = kloss_breakdown_slip(w_n, w_s, m_k / m_n)
+    s_k = float(kloss_breakdown_slip(w_n, w_s, m_k / m_n))
     return MotorCurve(
         kind,
         lambda w: kloss_torque(w, m_k, w_s, s_k),
         w_s,
         torque_below_limit=lambda gap: kloss_slip_torque(gap / w_s, m_k, s_k),
     )
+
+
+def _induction_data(x: Mapping[str, Any]) -> tuple[Any, Any, Any, Any]:
+    """(ω_n, ω_s, M_n, M_k) of the induction curve; rated speed and torque default to
+    the motor's speed and P/ω_n. Floats or arrays."""
+    w_n = x["rated_speed"] if x.get("rated_speed") is not None else x["motor_speed"]
+    m_n = x["rated_torque"] if x.get("rated_torque") is not None else x["motor_power"] / w_n
+    return w_n, x["synchronous_speed"], m_n, x["breakdown_torque"]
+
+
+#: The inputs each motor curve needs (:func:`_motor_curve` names the missing one).
+_CURVE_INPUTS = {
+    "linear": ("stall_torque", "no_load_speed"),
+    "constant_power": ("stall_torque",),
+    "induction": ("synchronous_speed", "breakdown_torque"),
+}
+
+
+def _curve_time(x: Mapping[str, Any], inertia: Any) -> Any:
+    """Spin-up time J∫dω/M(ω) on the given motor curve, by the curve's closed form.
+
+    Floats or arrays. NaN where :func:`_motor_curve` or :func:`spin_up_time` refuses
+    the point: an induction motor without slip or whose breakdown torque is not above
+    the rated one, a torque that falls to zero before the working speed. The
+    closed forms equal the quadrature the motor_curve rung runs to ~2e-14
+    (``tests/models/nutrunner/test_estimate_arrays.py``).
+    """
+    kind, w = x["motor_curve"], x["motor_speed"]
+    if kind == "linear":
+        w0 = x["no_load_speed"]
+        t = linear_spin_up_time(inertia, x["stall_torque"], w0, w)
+        ok: Any = np.asarray(w) < w0
+    elif kind == "constant_power":
+        t = torque_limited_constant_power_spin_up_time(
+            inertia, x["motor_power"], x["stall_torque"], w
+        )
+        ok = True
+    else:
+        w_n, w_s, m_n, m_k = _induction_data(x)
+        ok = (np.asarray(w_n) < w_s) & (np.asarray(m_k) > m_n) & (np.asarray(w) < w_s)
+        s_k = kloss_breakdown_slip(w_n, w_s, m_k / m_n)
+        t = kloss_spin_up_time(inertia, m_k, w_s, s_k, w)
+    return np.where(ok, t, np.nan)
 
 
 @dataclass(frozen=True)
@@ -848,37 +891,53 @@ def _drive_inertia(x: Mapping[str, Any], d: _Drive) -> float:
 
 
 def _curve_time_ratio(x: Mapping[str, Any]) -> float | None:
-    """Constant-power time over motor-curve time, minus 1 (None without a curve)."""
+    """Constant-power time over motor-curve time, minus 1 (None without a curve).
+
+    One design; raises, naming the field, where the curve is refused.
+    """
     curve = _motor_curve(x)
     if curve is None:
         return None
     d = _drive(x)
-    t_curve, _ = spin_up_time(_drive_inertia(x, d), curve, float(x["motor_speed"]), rtol=1e-6)
+    j = _drive_inertia(x, d)
+    with np.errstate(all="ignore"):
+        t_curve = float(_curve_time(x, j))
+    if math.isnan(t_curve):
+        spin_up_time(j, curve, float(x["motor_speed"]))  # raises: why the motor cannot
     return float(acceleration_time(d.energy, x["motor_power"]) / t_curve - 1.0)
 
 
 def _idealisation_error(x: Mapping[str, Any]) -> Any:
     """How far the constant-power time is from the motor curve's (0 without a curve).
 
-    On arrays (a sweep or a study): one quadrature per point, as a float array.
+    |T/P / t_curve − 1|, 1 where the curve is refused (the constant-power time is
+    meaningless if the motor cannot get there). Floats or arrays (a sweep or a study):
+    the curves' closed forms (:func:`_curve_time`), every point at once.
     """
-    if x["motor_curve"] == "none":
+    kind = x["motor_curve"]
+    if kind == "none":
         return 0.0
-    sizes = {v.size for v in x.values() if isinstance(v, np.ndarray) and v.ndim > 0}
-    if sizes:
-        (n,) = sizes  # equal-length columns, as engine.core.points hands them
-        return np.array([_idealisation_error(points.at(x, n, j)) for j in range(n)])
-    try:
-        ratio = _curve_time_ratio(x)
-    except (InfeasibleDesign, InputOutOfRange):
-        return 1.0  # the constant-power time is meaningless if the motor cannot get there
-    return 0.0 if ratio is None else abs(ratio)
+    if any(x.get(name) is None for name in _CURVE_INPUTS[kind]):
+        return 1.0
+    d = _drive(x)
+    inertia = _inertia(
+        x,
+        d,
+        rotor_inertia=x["rotor_inertia"],
+        belt_efficiency=x["belt_efficiency"],
+        gear_efficiency=x["gear_efficiency"],
+    )
+    with np.errstate(all="ignore"):
+        t_curve = _curve_time(x, inertia)
+        ratio = np.abs(acceleration_time(d.energy, x["motor_power"]) / t_curve - 1.0)
+    error = np.where(np.isnan(t_curve), 1.0, ratio)
+    return float(error) if error.ndim == 0 else error
 
 
 _FLOOR = 1e-12  # float rounding of the closed forms
 
 
-def _estimate_closed_form(x: Mapping[str, Any]) -> float:
+def _estimate_closed_form(x: Mapping[str, Any], drive: _Drive | None = None) -> Any:
     """Largest relative change the gear ratio makes to any torque output, either way round.
 
     Spindle quantities scale with M_paper/M_geared, shaft quantities (torque, twist,
@@ -888,14 +947,13 @@ def _estimate_closed_form(x: Mapping[str, Any]) -> float:
     is taken as the reference. With a motor curve, the constant-power idealisation of
     the spin-up time counts too.
     """
-    d = _drive(x)
-    m_paper = np.asarray(d.m_paper, dtype=float)
-    m_geared = np.asarray(d.m_geared, dtype=float)
+    d = _drive(x) if drive is None else drive
+    # numpy scalars for one design (their arithmetic is cheap), arrays for many
+    m_paper = np.asarray(d.m_paper, dtype=float)[()]
+    m_geared = np.asarray(d.m_geared, dtype=float)[()]
     friction = (x["spindle_count"] - 1) * x["idle_spindle_friction_torque"]
     with np.errstate(all="ignore"):  # array-capable: a sweep estimates every point at once
-        gear = np.maximum(
-            _spread(m_paper / m_geared), _spread(m_paper / (np.asarray(d.u) * m_geared))
-        )
+        gear = np.maximum(_spread(m_paper / m_geared), _spread(m_paper / (d.u * m_geared)))
         after_friction = _spread((m_paper - friction) / (m_geared - friction))
     gear = np.where(
         np.minimum(m_paper, m_geared) > friction, np.maximum(gear, after_friction), gear
@@ -906,7 +964,7 @@ def _estimate_closed_form(x: Mapping[str, Any]) -> float:
 
 def _spread(r: Any) -> Any:
     """max(|r − 1|, |1/r − 1|): a ratio's relative change, either way round."""
-    return np.maximum(np.abs(r - 1.0), np.abs(1.0 / r - 1.0))
+    return np.maximum(abs(r - 1.0), abs(1.0 / r - 1.0))
 
 
 def _estimate_gear_ratio(x: Mapping[str, Any]) -> Any:
@@ -1071,7 +1129,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             f"and the shaft torque (twist, stress) by {d.u * (1.0 + effect) - 1.0:+.2%} "
             "(rung gear_ratio); the error estimate is the larger change, either way round"
         )
-        error: float | None = _estimate_closed_form(x)
+        error: float | None = _estimate_closed_form(x, d)
     else:
         notes.append(
             f"shaft 7 carries u·M with u = D4/D5 = {d.u:.4g}; this moves the spindle torque by "

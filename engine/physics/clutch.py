@@ -100,6 +100,8 @@ WORKABLE_SPRING_INDEX = (4.0, 12.0)
 
 def _out(value: Any) -> FloatArray:
     """A Python float for scalar input, a float array otherwise."""
+    if type(value) is np.float64:  # what numpy gives for scalar inputs: no array made
+        return float(value)
     arr = np.asarray(value, dtype=float)
     return float(arr) if arr.ndim == 0 else arr
 
@@ -1455,7 +1457,7 @@ def rated_torque(power: FloatArray, speed: FloatArray) -> FloatArray:
     >>> round(rated_torque(1500.0, 157.08), 3)
     9.549
     """
-    return _out(np.asarray(power) / np.asarray(speed))
+    return _out(np.divide(power, speed))
 
 
 def acceleration_torque(
@@ -1534,7 +1536,7 @@ def required_slip_torque(
     >>> required_slip_torque(10.0, 2.0, 25.0)
     25.0
     """
-    return _out(np.maximum(np.asarray(rated) * np.asarray(service_factor), start_torque))
+    return _out(np.maximum(np.multiply(rated, service_factor), start_torque))
 
 
 # --------------------------------------------------------------------------

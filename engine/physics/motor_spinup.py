@@ -69,15 +69,15 @@ def linear_motor_torque(speed: Any, stall_torque: float, no_load_speed: float) -
     return stall_torque * (1.0 - speed / no_load_speed)
 
 
-def kloss_breakdown_slip(
-    rated_speed: float, synchronous_speed: float, overload_ratio: float
-) -> float:
+def kloss_breakdown_slip(rated_speed: Any, synchronous_speed: Any, overload_ratio: Any) -> Any:
     r"""Breakdown (critical) slip of an induction motor from its catalogue data.
 
     .. math::
         s_n = 1 - \frac{\omega_n}{\omega_s}, \qquad
         s_k = s_n\left(\lambda + \sqrt{\lambda^2 - 1}\right),
         \qquad \lambda = \frac{M_k}{M_n}
+
+    All arguments may be floats or numpy arrays of one shape.
 
     Parameters
     ----------
@@ -100,11 +100,11 @@ def kloss_breakdown_slip(
 
     Examples
     --------
-    >>> round(kloss_breakdown_slip(1400.0, 1500.0, 2.5), 4)
+    >>> round(float(kloss_breakdown_slip(1400.0, 1500.0, 2.5)), 4)
     0.3194
     """
     s_n = 1.0 - rated_speed / synchronous_speed
-    return s_n * (overload_ratio + math.sqrt(overload_ratio**2 - 1.0))
+    return s_n * (overload_ratio + np.sqrt(overload_ratio**2 - 1.0))
 
 
 def kloss_slip_torque(slip: Any, breakdown_torque: float, breakdown_slip: float) -> Any:
@@ -174,13 +174,15 @@ def kloss_torque(
 
 
 def linear_spin_up_time(
-    equivalent_inertia: float, stall_torque: float, no_load_speed: float, speed: float
-) -> float:
+    equivalent_inertia: Any, stall_torque: Any, no_load_speed: Any, speed: Any
+) -> Any:
     r"""Closed-form spin-up time of an inertia on a linear torque–speed line.
 
     .. math::
         t = \int_0^{\omega} \frac{J\,d\omega'}{M_{st}(1 - \omega'/\omega_0)}
           = \frac{J\omega_0}{M_{st}}\ln\frac{\omega_0}{\omega_0 - \omega}
+
+    All arguments may be floats or numpy arrays of one shape.
 
     Parameters
     ----------
@@ -200,24 +202,26 @@ def linear_spin_up_time(
 
     Examples
     --------
-    >>> round(linear_spin_up_time(0.01, 10.0, 200.0, 100.0), 6)
+    >>> round(float(linear_spin_up_time(0.01, 10.0, 200.0, 100.0)), 6)
     0.138629
     """
-    return equivalent_inertia * no_load_speed / stall_torque * -math.log1p(-speed / no_load_speed)
+    return equivalent_inertia * no_load_speed / stall_torque * -np.log1p(-speed / no_load_speed)
 
 
 def kloss_spin_up_time(
-    equivalent_inertia: float,
-    breakdown_torque: float,
-    synchronous_speed: float,
-    breakdown_slip: float,
-    speed: float,
-) -> float:
+    equivalent_inertia: Any,
+    breakdown_torque: Any,
+    synchronous_speed: Any,
+    breakdown_slip: Any,
+    speed: Any,
+) -> Any:
     r"""Closed-form spin-up time of an inertia on the Kloss curve.
 
     .. math::
         t = \frac{J\omega_s}{2M_k}\left[\frac{1 - s_e^2}{2 s_k} + s_k\ln\frac{1}{s_e}\right],
         \qquad s_e = 1 - \frac{\omega}{\omega_s}
+
+    All arguments may be floats or numpy arrays of one shape.
 
     Parameters
     ----------
@@ -244,7 +248,7 @@ def kloss_spin_up_time(
 
     Examples
     --------
-    >>> round(kloss_spin_up_time(0.05, 20.0, 157.08, 0.3, 146.6), 4)
+    >>> round(float(kloss_spin_up_time(0.05, 20.0, 157.08, 0.3, 146.6)), 4)
     0.4853
     """
     s_e = 1.0 - speed / synchronous_speed
@@ -252,19 +256,21 @@ def kloss_spin_up_time(
         equivalent_inertia
         * synchronous_speed
         / (2.0 * breakdown_torque)
-        * ((1.0 - s_e**2) / (2.0 * breakdown_slip) - breakdown_slip * math.log(s_e))
+        * ((1.0 - s_e**2) / (2.0 * breakdown_slip) - breakdown_slip * np.log(s_e))
     )
 
 
 def torque_limited_constant_power_spin_up_time(
-    equivalent_inertia: float, motor_power: float, torque_limit: float, speed: float
-) -> float:
+    equivalent_inertia: Any, motor_power: Any, torque_limit: Any, speed: Any
+) -> Any:
     r"""Spin-up time of a motor giving constant power above a torque limit.
 
     .. math::
         M(\omega) = \min(M_c, P/\omega),\quad \omega_c = P/M_c:\qquad
         t = \frac{J\omega^2}{2P}\left[1 + \left(\frac{\omega_c}{\omega}\right)^2\right]
         \quad (\omega \ge \omega_c)
+
+    All arguments may be floats or numpy arrays of one shape.
 
     Parameters
     ----------
@@ -291,13 +297,16 @@ def torque_limited_constant_power_spin_up_time(
 
     Examples
     --------
-    >>> round(torque_limited_constant_power_spin_up_time(0.01, 1000.0, 100.0, 100.0), 6)
+    >>> round(float(torque_limited_constant_power_spin_up_time(0.01, 1000.0, 100.0, 100.0)), 6)
     0.0505
     """
     w_c = motor_power / torque_limit
-    if speed <= w_c:
-        return equivalent_inertia * speed / torque_limit
-    return equivalent_inertia * (speed**2 + w_c**2) / (2.0 * motor_power)
+    t = np.where(
+        speed <= w_c,
+        equivalent_inertia * speed / torque_limit,
+        equivalent_inertia * (speed**2 + w_c**2) / (2.0 * motor_power),
+    )
+    return float(t) if t.ndim == 0 else t
 
 
 @dataclass(frozen=True)

@@ -25,7 +25,6 @@ from ..core.errors import InputOutOfRange
 from ..core.params import DEG, count, friction_coefficient, length, positive
 from ..core.spec import Check, Output, Param, Plot, Window
 from ..core.text import q
-from ..numerics.lazy import LazyModule
 from ..physics import springs as sp
 from ..physics.clutch import (
     CONSTRUCTIONS,
@@ -45,9 +44,6 @@ from ..physics.clutch import (
 from ..physics.clutch import acceleration_torque as cl_acceleration_torque
 from ..physics.clutch import rated_torque as cl_rated_torque
 from ..physics.clutch import required_slip_torque as cl_required_slip_torque
-
-#: scipy, imported on first use (engine.numerics.lazy): it weighs on the service's start-up
-optimize = LazyModule("scipy.optimize")
 
 #: Points on the flank (and as many over the rim) of the characteristic.
 POINTS = 41
@@ -617,13 +613,15 @@ def characteristic(
     deflection: Any = None,
     curves: bool = False,
     points: int = POINTS,
+    peak_only: bool = False,
 ) -> dict[str, Any]:
     """Torque, spring force and stress against lift; arrays with the lift on the last axis.
 
     The curves themselves (keys ``_lift``, ``_torque``, ``_force``, ``_stress``) only with
-    ``curves=True``. ``points`` on the flank and as many over the rim (the outputs take
-    :data:`POINTS`; the error estimate a finer grid). A helical spring's stress is
-    evaluated only where it is read (at the
+    ``curves=True``; only ``peak_torque`` with ``peak_only=True`` (a root search's
+    function: no stress, the same floats). ``points`` on the flank and as many over the
+    rim (the outputs take :data:`POINTS`; the error estimate a finer grid). A helical
+    spring's stress is evaluated only where it is read (at the
     peak torque and at the largest force, where it is largest: it is proportional to the
     force), the same floats the whole curve would hold there.
     """
@@ -644,7 +642,7 @@ def characteristic(
     total = preload[..., None] + lift
     force = spring.force(total)
     helical = spring.kind == "helical"
-    stress: Any = None if helical and not curves else spring.stress(total)
+    stress: Any = None if (helical and not curves) or peak_only else spring.stress(total)
     # x's arrays already carry the trailing (lift) axis
     torque = np.asarray(
         torque_against_lift(
@@ -672,6 +670,8 @@ def characteristic(
         def at(arr: Any, idx: Any) -> Any:
             return np.take_along_axis(np.broadcast_to(arr, torque.shape), idx, axis=-1)[..., 0]
 
+    if peak_only:
+        return {"peak_torque": at(torque, peak)}
     rim = np.full_like(peak, points - 1 - first)
     forces = np.broadcast_to(force, torque.shape)
     out: dict[str, Any] = {
@@ -1230,29 +1230,136 @@ def notes(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[st
     return out
 
 
+def bracketed_roots(
+    f: Callable[[Any, Any], Any], a: Any, b: Any, xtol: float, rtol: float, maxiter: int = 100
+) -> Any:
+    """Roots of ``f`` in the brackets [a, b], many at once: Brent's method, lane by lane.
+
+    ``f(x, lanes)`` gives the function of the lanes ``lanes`` (an index array) at ``x``;
+    ``a`` and ``b`` (arrays of one shape) bracket a sign change of each lane's function.
+    Every lane takes the steps of scipy's ``brentq`` (its C code, step for step: the
+    same floats for the same function values, ``tests/models/clutch/test_clutch_asbuilt.py``),
+    so one design and a sweep of many get the same root; a lane stops where it
+    converges, |b − a|/2 < (xtol + rtol |x|)/2. NaN where a bracket holds no sign change.
+    """
+    xpre = np.array(a, dtype=float, ndmin=1)
+    xcur = np.array(np.broadcast_to(b, xpre.shape), dtype=float)
+    lanes = np.arange(xpre.size)
+    fpre = np.asarray(f(xpre, lanes), dtype=float)
+    fcur = np.asarray(f(xcur, lanes), dtype=float)
+    root = np.where(fpre == 0.0, xpre, np.where(fcur == 0.0, xcur, np.nan))
+    active = np.isnan(root) & (np.signbit(fpre) != np.signbit(fcur))
+    xblk, fblk, spre, scur = (np.zeros_like(xpre) for _ in range(4))
+    for _ in range(maxiter):
+        if not active.any():
+            break
+        i = np.flatnonzero(active)
+        xp, xc, xb, fp, fc, fb = xpre[i], xcur[i], xblk[i], fpre[i], fcur[i], fblk[i]
+        s_pre, s_cur = spre[i], scur[i]
+        # a new bracket where the last step crossed the root
+        new = (fp != 0) & (fc != 0) & (np.signbit(fp) != np.signbit(fc))
+        xb, fb = np.where(new, xp, xb), np.where(new, fp, fb)
+        s_pre, s_cur = np.where(new, xc - xp, s_pre), np.where(new, xc - xp, s_cur)
+        # the best point so far is the current one
+        swap = np.abs(fb) < np.abs(fc)
+        xp, xc, xb = np.where(swap, xc, xp), np.where(swap, xb, xc), np.where(swap, xc, xb)
+        fp, fc, fb = np.where(swap, fc, fp), np.where(swap, fb, fc), np.where(swap, fc, fb)
+        delta = (xtol + rtol * np.abs(xc)) / 2
+        sbis = (xb - xc) / 2
+        done = (fc == 0) | (np.abs(sbis) < delta)
+        with np.errstate(all="ignore"):
+            interpolate = -fc * (xc - xp) / (fc - fp)
+            dpre = (fp - fc) / (xp - xc)
+            dblk = (fb - fc) / (xb - xc)
+            extrapolate = -fc * (fb * dblk - fp * dpre) / (dblk * dpre * (fb - fp))
+        stry = np.where(xp == xb, interpolate, extrapolate)
+        good = (
+            (np.abs(s_pre) > delta)
+            & (np.abs(fc) < np.abs(fp))
+            & (2 * np.abs(stry) < np.minimum(np.abs(s_pre), 3 * np.abs(sbis) - delta))
+        )
+        s_pre, s_cur = np.where(good, s_cur, sbis), np.where(good, stry, sbis)
+        step = np.where(np.abs(s_cur) > delta, s_cur, np.where(sbis > 0, delta, -delta))
+        root[i[done]] = xc[done]
+        active[i[done]] = False
+        go = ~done
+        j = i[go]
+        xpre[j], fpre[j], xblk[j], fblk[j] = xc[go], fc[go], xb[go], fb[go]
+        spre[j], scur[j] = s_pre[go], s_cur[go]
+        xcur[j] = xc[go] + step[go]
+        if j.size:
+            fcur[j] = np.asarray(f(xcur[j], j), dtype=float)
+    return root
+
+
+#: Designs whose grid of settings is evaluated at once, :data:`_GRID_BLOCK` settings at a
+#: time (81 values each): a design whose target is reached early is not evaluated further.
+_GRID_DESIGNS = 1024
+_GRID_BLOCK = 8
+
+
+def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
+    r"""Nut setting Δ whose peak torque is ``target``; NaN where none in [0, upper] gives it.
+
+    .. math::
+        \max_k T(\Delta, z_k) = T_{target}
+
+    The first crossing on a 65-point grid of Δ brackets the root, refined by Brent's
+    method (:func:`bracketed_roots`). Floats or arrays (``x``'s arrays one design
+    per element): a float for one design, the same number as an element of a sweep.
+    [001, eq. 1–3] on :func:`characteristic`.
+    """
+    n = max([1, *(v.size for v in _arrays(x)), np.size(target), np.size(upper)])
+    aims = np.array(np.broadcast_to(np.asarray(target, dtype=float), (n,)))
+    tops = np.array(np.broadcast_to(np.asarray(upper, dtype=float), (n,)))
+    varied = bool(_arrays(x))
+
+    def excess(delta: Any, lanes: Any) -> Any:
+        part = points.take(x, n, lanes) if varied else x
+        peak = characteristic(part, Spring(part), delta, peak_only=True)["peak_torque"]
+        return np.asarray(peak, dtype=float) - aims[lanes]
+
+    lo_val = excess(np.zeros(n), np.arange(n))
+    root = np.where(lo_val == 0.0, 0.0, np.nan)
+    todo = np.flatnonzero(lo_val < 0.0)
+    grid = np.linspace(0.0, tops, 65, axis=-1)
+    low, high = np.full(n, np.nan), np.full(n, np.nan)
+    for first in range(0, todo.size, _GRID_DESIGNS):
+        lanes = todo[first : first + _GRID_DESIGNS]
+        # the grid a block of settings at a time, each design until it crosses the target
+        for start in range(1, 65, _GRID_BLOCK):
+            width = min(_GRID_BLOCK, 65 - start)
+            settings = grid[lanes, start : start + width]
+            peaks = excess(settings.ravel(), np.repeat(lanes, width)).reshape(-1, width)
+            above = peaks >= 0.0
+            reached = above.any(axis=-1)
+            i = np.argmax(above, axis=-1) + start  # the first grid point at or past it
+            at = lanes[reached]
+            low[at], high[at] = grid[at, i[reached] - 1], grid[at, i[reached]]
+            lanes = lanes[~reached]
+            if not lanes.size:
+                break
+    bracketed = np.flatnonzero(np.isfinite(low))
+    if bracketed.size:
+        root[bracketed] = bracketed_roots(
+            lambda delta, lanes: excess(delta, bracketed[lanes]),
+            low[bracketed],
+            high[bracketed],
+            xtol=1e-12,
+            rtol=1e-12,
+        )
+    return root if varied or np.ndim(target) or np.ndim(upper) else float(root[0])
+
+
 def solve_setting(
     x: Mapping[str, Any], spring: Spring, target: float, upper: float
 ) -> float | None:
     """Nut setting Δ whose peak torque is ``target``; None where none in [0, upper] gives it.
 
-    The first crossing on a 65-point grid of Δ brackets the root, refined by Brent's
-    method. The grid's peaks come from one characteristic on the whole grid
-    (one call instead of up to 64, the same bracket and so the same root).
+    One design: :func:`setting_roots` (``spring`` is ``Spring(x)``, kept for the callers).
     """
-
-    def peak(delta: float) -> float:
-        return float(characteristic(x, spring, delta)["peak_torque"]) - target
-
-    lo_val = peak(0.0)
-    if lo_val >= 0.0:
-        return 0.0 if lo_val == 0.0 else None
-    grid = np.linspace(0.0, upper, 65)
-    peaks = np.asarray(characteristic(x, spring, grid[1:])["peak_torque"], dtype=float)
-    above = np.flatnonzero(peaks - target >= 0.0)
-    if above.size == 0:
-        return None
-    i = int(above[0]) + 1  # the first grid point at or past the target
-    return float(optimize.brentq(peak, float(grid[i - 1]), float(grid[i]), xtol=1e-12, rtol=1e-12))
+    root = setting_roots(x, target, upper)
+    return None if math.isnan(root) else root
 
 
 Candidate = Callable[[float], Mapping[str, Any]]
@@ -1335,23 +1442,27 @@ def peak_setting(
 ) -> tuple[Any, Any]:
     """(setting, largest stress over the lift) for the target peak torque; NaN where none.
 
-    Floats or arrays (helical springs); a disc stack one design at a time. A helical
+    Floats or arrays. A helical
     spring's characteristic is a set of lines in the setting (:class:`SettingGrid`):
     where they all rise, the setting comes in closed form (one characteristic instead
     of the ~40 a bracketed root search takes; the two agree to 1e-12,
     ``tests/models/clutch/test_clutch_arrays.py``); at a point where they need not
-    (a push ≤ 0 on the driving flank), and for a disc stack, by :func:`solve_setting`.
+    (a push ≤ 0 on the driving flank), and for a disc stack, by :func:`setting_roots`.
     ``grid`` may be passed in when the same geometry serves several springs.
     """
     if spring.kind == "disc":
-        upper = float(x["disc_series"] * x["disc_cone_height"])
-        root = solve_setting(x, spring, float(target), upper)
-        if root is None:
-            return math.nan, math.nan
-        c = characteristic(x, spring, root)
-        if (root + float(c["total_lift"])) / x["disc_series"] > x["disc_cone_height"]:
-            return math.nan, math.nan  # reached only past flat
-        return root, float(c["spring_stress_max"])
+        root = setting_roots(x, target, x["disc_series"] * x["disc_cone_height"])
+        if np.ndim(root) == 0:  # one design
+            if math.isnan(root):
+                return math.nan, math.nan
+            c = characteristic(x, spring, root)
+            if (root + float(c["total_lift"])) / x["disc_series"] > x["disc_cone_height"]:
+                return math.nan, math.nan  # reached only past flat
+            return root, float(c["spring_stress_max"])
+        c = characteristic(x, spring, np.where(np.isnan(root), 0.0, root))
+        past = (root + c["total_lift"]) / x["disc_series"] > x["disc_cone_height"]
+        none = np.isnan(root) | past  # none reaches it, or only past flat
+        return np.where(none, np.nan, root), np.where(none, np.nan, c["spring_stress_max"])
     grid = SettingGrid(x) if grid is None else grid
     rate = np.asarray(spring.force(1.0), float)
     upper = np.maximum(np.asarray(force) / rate, 1e-9) * 1.000001
@@ -1384,14 +1495,14 @@ def peak_setting(
 def setting_values(x: Mapping[str, Any], force: Any) -> tuple[dict[str, Any], list[str]]:
     """As-built outputs of the inverse and, for one design, the notes that explain them.
 
-    Floats or arrays (helical springs; NaN where an output is null); a disc stack one
-    design at a time. On floats an output that does not exist is left out.
+    Floats or arrays (NaN where an output is null). On floats an output that does not
+    exist is left out.
     """
     target = x["target_torque"]
     values: dict[str, Any] = {}
     notes: list[str] = []
     helical = x["spring_type"] == "helical"
-    found: tuple[float, float] | None = None
+    found: tuple[Any, Any] | None = None
     if not helical or x["spring_wire_diameter"] is not None:
         delta, stress = peak_setting(x, Spring(x), target, force)
         if np.ndim(delta) == 0 and math.isnan(delta):
@@ -1401,11 +1512,11 @@ def setting_values(x: Mapping[str, Any], force: Any) -> tuple[dict[str, Any], li
             )
         else:
             values["required_peak_setting"], values["peak_setting_stress_max"] = delta, stress
-            found = (delta, stress) if np.ndim(delta) == 0 else None
+            found = (delta, stress)
     if helical and x["spring_mean_diameter"] is not None:
         values.update(suggest_wire(x, target, force, notes))
     if not helical:
-        values.update(_suggest_parallel(x, float(target), float(force), notes, found))
+        values.update(_suggest_parallel(x, target, force, notes, found))
     return values, notes
 
 
@@ -1426,8 +1537,13 @@ def suggest_wire(
         return {}
     grid = SettingGrid(x)
     dm = np.asarray(x["spring_mean_diameter"], float)
+    # every varied input (coils and free length too, which the grid does not see)
     shape = np.broadcast_shapes(
-        dm.shape, np.shape(target), np.shape(force), grid.inverse_gain.shape[:-1]
+        dm.shape,
+        np.shape(target),
+        np.shape(force),
+        grid.inverse_gain.shape[:-1],
+        *(v.shape for v in _arrays(x)),
     )
     wire = np.full(shape, np.nan)
     setting = np.full(shape, np.nan)
@@ -1487,39 +1603,83 @@ def suggest_wire(
 
 def _suggest_parallel(
     x: Mapping[str, Any],
-    target: float,
-    force: float,
+    target: Any,
+    force: Any,
     notes: list[str],
-    given: tuple[float, float] | None,
+    given: tuple[Any, Any] | None,
 ) -> dict[str, Any]:
     """The fewest discs in parallel that reach the target; ``given`` is the given stack's
-    own :func:`peak_setting` (not searched again for its own number of discs)."""
-    for n in range(1, 9):
-        if n == x["disc_parallel"]:
-            found = given
+    own :func:`peak_setting` (not searched again for its own number of discs).
+
+    Floats or arrays: each count is searched only at the points still without a pack;
+    NaN where none of up to 8 works, and on floats the outputs are then left out.
+    """
+    n = max([1, *(v.size for v in _arrays(x)), np.size(target)])
+    one = n == 1 and not _arrays(x) and np.ndim(target) == 0
+    aims = np.broadcast_to(np.asarray(target, dtype=float), (n,))
+    count, setting = np.full(n, np.nan), np.full(n, np.nan)
+    open_ = np.ones(n, dtype=bool)
+    limit = np.broadcast_to(np.asarray(x["disc_yield_strength"], dtype=float), (n,))
+    delta: Any
+    stress: Any
+    for k in range(1, 9):
+        lanes = np.flatnonzero(open_)
+        if np.ndim(x["disc_parallel"]) == 0 and k == x["disc_parallel"]:
+            if given is None:
+                delta, stress = math.nan, math.nan
+            else:  # the given stack's own setting, at the points still open
+                delta, stress = (np.broadcast_to(g, (n,))[lanes] for g in given)
         else:
-            trial = {**x, "disc_parallel": n}
-            delta, stress = peak_setting(trial, Spring(trial), target, force)
-            found = None if math.isnan(delta) else (delta, stress)
-        if found is not None and found[1] <= float(x["disc_yield_strength"]):
-            return {"suggested_disc_parallel": n, "suggested_disc_setting": found[0]}
-    notes.append("no stack of up to 8 of these discs in parallel reaches the target")
-    return {}
+            part = points.take(x, n, lanes) if _arrays(x) else x
+            trial = {**part, "disc_parallel": k}
+            aim = float(aims[0]) if one else aims[lanes]
+            delta, stress = peak_setting(trial, Spring(trial), aim, force)
+        fits = np.isfinite(delta) & (np.asarray(stress) <= limit[lanes])
+        count[lanes[fits]] = k
+        setting[lanes[fits]] = np.broadcast_to(delta, lanes.shape)[fits]
+        open_[lanes[fits]] = False
+        if not open_.any():
+            break
+    if not one:
+        return {"suggested_disc_parallel": count, "suggested_disc_setting": setting}
+    if open_[0]:
+        notes.append("no stack of up to 8 of these discs in parallel reaches the target")
+        return {}
+    return {"suggested_disc_parallel": int(count[0]), "suggested_disc_setting": float(setting[0])}
 
 
-def disc_breakaway_setting(x: Mapping[str, Any], force: float) -> float | None:
-    """Stack setting whose force is ``force`` on the rising branch; None if none gives it."""
-    spring = Spring(x)
-    s_max = float(sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])[0])
-    top = s_max if math.isfinite(s_max) else x["disc_cone_height"]
-    upper = float(x["disc_series"] * min(top, x["disc_cone_height"]))
+def disc_breakaway_setting(x: Mapping[str, Any], force: Any) -> Any:
+    r"""Stack setting whose force is ``force`` on the rising branch; NaN if none gives it.
 
-    def excess(delta: float) -> float:
-        return float(spring.force(delta)) - force
+    .. math::
+        F(s) = F_{target}, \quad 0 \le s \le i \min(s_{max}, h_0)
 
-    if excess(upper) < 0.0:
-        return None
-    return float(optimize.brentq(excess, 0.0, upper, xtol=1e-13, rtol=1e-12))
+    s_max where the disc's force peaks (none: the cone height). Brent's method
+    (:func:`bracketed_roots`) on floats or arrays: a float for one design. EN 16983.
+    """
+    n = max([1, *(v.size for v in _arrays(x)), np.size(force)])
+    varied = bool(_arrays(x))
+    wanted = np.array(np.broadcast_to(np.asarray(force, dtype=float), (n,)))
+    s_max = np.asarray(sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])[0])
+    top = np.where(np.isfinite(s_max), s_max, x["disc_cone_height"])
+    upper = np.broadcast_to(
+        np.asarray(x["disc_series"] * np.minimum(top, x["disc_cone_height"]), dtype=float), (n,)
+    )
+
+    def excess(delta: Any, lanes: Any) -> Any:
+        part = points.take(x, n, lanes) if varied else x
+        return np.asarray(Spring(part).force(delta), dtype=float) - wanted[lanes]
+
+    reach = np.flatnonzero(~(excess(upper, np.arange(n)) < 0.0))
+    setting = np.full(n, np.nan)
+    setting[reach] = bracketed_roots(
+        lambda delta, lanes: excess(delta, reach[lanes]),
+        np.zeros(reach.size),
+        upper[reach],
+        xtol=1e-13,
+        rtol=1e-12,
+    )
+    return setting if varied or np.ndim(force) else float(setting[0])
 
 
 # --------------------------------------------------------------------------

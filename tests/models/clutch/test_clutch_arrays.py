@@ -377,3 +377,60 @@ def test_a_refused_point_is_masked_with_its_reason_on_both_paths():
     )
     assert sweep.results["torque_limit"][-1] is None
     assert any("1 of 4 points refused: no coil" in n for n in sweep.notes), sweep.notes
+
+
+@pytest.mark.parametrize(
+    "vary, low, high",
+    [
+        ("spring_active_coils", 4.0, 12.0),
+        ("ball_lift", 0.001, 0.004),
+        ("spring_free_length", 0.05, 0.12),
+    ],
+)
+def test_as_built_setting_swept_alone_over_its_geometry_stays_on_the_array_path(vary, low, high):
+    # one geometry input varied alone (the setting's lines do not see coils or free length):
+    # the array path, and every output equal to the single run at its point to 1e-12
+    base = dict(BALL_CLUTCH_SETTING.examples[1])
+    values = np.linspace(low, high, 17)
+    _array_path_used(BALL_CLUTCH_SETTING, base, {vary: values})
+    s = engine.sweep(BALL_CLUTCH_SETTING, base, vary, values.tolist())
+    moved = set()
+    for j, value in enumerate(values.tolist()):
+        one = engine.run(BALL_CLUTCH_SETTING, {**base, vary: value})
+        for name, got in s.results.items():
+            want = one.results.get(name)
+            if want is None:
+                assert got[j] is None, (name, j)
+            else:
+                assert got[j] == pytest.approx(want, rel=1e-12), (name, j)
+                moved.add(name) if got[j] != s.results[name][0] else None
+    assert "suggested_wire_diameter" in moved or "suggested_wire_setting" in moved
+
+
+def test_long_setting_columns_are_evaluated_in_chunks_with_the_same_numbers(monkeypatch):
+    # the setting's lines hold 81 values per point: no array of n x 81 for a long column
+    from engine.models import clutch
+
+    n = 3 * 40 + 11
+    x, _ = BALL_CLUTCH_SETTING.validate(BALL_CLUTCH_SETTING.examples[1])
+    rng = np.random.default_rng(4)
+    cols = {
+        "drive_power": rng.uniform(200.0, 600.0, n),
+        "spring_active_coils": rng.uniform(5.0, 11.0, n),
+    }
+    ctx = RunContext("closed_form", frozenset(FLOATS[BALL_CLUTCH_SETTING.name]), 0.01)
+    whole = BALL_CLUTCH_SETTING.vectorized({**x, **cols}, ctx).values
+    widest = []
+    setting = asbuilt.SettingGrid.setting
+
+    def spy(self, rate, target, upper):
+        widest.append(np.size(self.inverse_gain) + np.size(target) * self.q.size)
+        return setting(self, rate, target, upper)
+
+    monkeypatch.setattr(asbuilt.SettingGrid, "setting", spy)
+    monkeypatch.setattr(clutch, "_CHUNK", 40)
+    got = BALL_CLUTCH_SETTING.vectorized({**x, **cols}, ctx).values
+    assert max(widest) <= 2 * 40 * asbuilt.POINTS
+    for name in ("required_peak_setting", "suggested_wire_diameter", "suggested_wire_setting"):
+        assert np.isfinite(got[name]).any(), name
+        np.testing.assert_array_equal(got[name], whole[name], err_msg=name)

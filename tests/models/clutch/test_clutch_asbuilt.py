@@ -524,3 +524,54 @@ def test_a_custom_wires_elastic_modulus_is_an_input():
         with pytest.raises(engine.InputOutOfRange, match="160000 … 240000 MPa") as err:
             run(BALL_CLUTCH, slender, spring_elastic_modulus=e)
         assert err.value.field == "spring_elastic_modulus"
+
+
+def test_brent_on_many_brackets_takes_scipys_steps():
+    # functions whose roots need interpolation, extrapolation and bisection steps, each
+    # lane against scipy's brentq on that lane alone: the same floats
+    from scipy.optimize import brentq
+
+    from engine.procedures.clutch_asbuilt import bracketed_roots
+
+    rng = np.random.default_rng(2)
+    c = rng.uniform(0.1, 3.0, 200)
+    shift = rng.uniform(-0.5, 0.5, 200)
+
+    def f(x, lanes):
+        return np.sin(c[lanes] * x) - 0.3 + shift[lanes] * x**3
+
+    b = np.full(200, 2.0)
+    ok = np.signbit(f(np.zeros(200), np.arange(200))) != np.signbit(f(b, np.arange(200)))
+    got = bracketed_roots(f, np.zeros(200), b, xtol=1e-12, rtol=1e-12)
+    assert ok.sum() > 50 and np.isnan(got[~ok]).all()
+    for j in np.flatnonzero(ok):
+        want = brentq(
+            lambda x, j=j: float(f(np.array([x]), np.array([j]))[0]),
+            0.0,
+            2.0,
+            xtol=1e-12,
+            rtol=1e-12,
+        )
+        assert got[j] == want, j
+
+
+def test_disc_stack_setting_on_the_array_path_equals_single_runs():
+    # targets across the stack's reach, and parallel packs of 1…3 and steep cones: the
+    # root searches of a sweep take the same steps as a single run's
+    from tests.models.clutch.test_clutch_arrays import FLOATS, _array_path_used
+
+    base = {k: v for k, v in DISC.items() if k != "spring_deflection"}
+    for changes in ({}, {"ball_lift": None}, {"disc_parallel": 3}, {"disc_cone_height": 0.0013}):
+        design = {**base, **changes, "target_torque": 50.0}
+        targets = np.geomspace(0.5, 1500.0, 11)
+        assert "required_peak_setting" in _array_path_used(
+            BALL_CLUTCH_SETTING, design, {"target_torque": targets}
+        )
+        s = engine.sweep(BALL_CLUTCH_SETTING, design, "target_torque", targets.tolist()).results
+        for j, t in enumerate(targets.tolist()):
+            one = run(BALL_CLUTCH_SETTING, {**design, "target_torque": t}).results
+            for name in FLOATS[BALL_CLUTCH_SETTING.name]:
+                assert s.get(name, [None] * 11)[j] == one.get(name), (changes, t, name)
+        for name in ("required_peak_setting", "required_deflection", "suggested_disc_setting"):
+            found = [v is not None for v in s[name]]
+            assert any(found) and not all(found), (changes, name)  # reached, and not

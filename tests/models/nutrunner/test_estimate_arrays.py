@@ -1,6 +1,7 @@
 """The nut-runner's rung estimates take arrays, so its sweeps never loop per point."""
 
 import numpy as np
+import pytest
 
 import engine
 from engine.models.nutrunner import EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
@@ -62,3 +63,69 @@ def test_series_only_when_asked_for_or_named():
     )
     assert set(every.series) == {"time", "motor_speed_curve", "flywheel_speed_curve"}
     assert every.results == plain.results
+
+
+def _curves():
+    """Each motor curve on the light truck's drive, with the inputs it needs."""
+    from engine.models.nutrunner import EXAMPLE_INDUCTION_MOTOR
+
+    w = EXAMPLE_LIGHT_TRUCK["motor_speed"]
+    return {
+        "induction": dict(EXAMPLE_INDUCTION_MOTOR),
+        "linear": {
+            **EXAMPLE_LIGHT_TRUCK,
+            "motor_curve": "linear",
+            "stall_torque": 30.0,
+            "no_load_speed": 1.1 * w,
+            "rotor_inertia": 0.0035,
+        },
+        "constant_power": {
+            **EXAMPLE_LIGHT_TRUCK,
+            "motor_curve": "constant_power",
+            "stall_torque": 12.0,
+        },
+    }
+
+
+def test_motor_curve_estimates_on_arrays_equal_single_runs():
+    # the motor speed swept past the no-load and synchronous speeds (1500 rpm): there the
+    # motor never gets to speed and the estimate is 1 on both paths
+    speeds = np.linspace(100.0, 170.0, 41).tolist()
+    for kind, base in _curves().items():
+        for rung in ("closed_form", "gear_ratio"):
+            s = engine.sweep(NUTRUNNER_DRIVE, base, "motor_speed", speeds, fidelity=rung)
+            assert s.rungs == [rung] * len(speeds), kind
+            for j in (0, 13, 27, 40):
+                one = engine.run(NUTRUNNER_DRIVE, {**base, "motor_speed": speeds[j]}, fidelity=rung)
+                assert s.error_estimates[j] == pytest.approx(one.error_estimate, rel=1e-12)
+            if kind != "constant_power":
+                assert s.error_estimates[-1] == 1.0, kind  # past the curve's zero torque
+            if rung == "gear_ratio":  # the curve's estimate alone: it varies and bites
+                assert min(s.error_estimates) < 0.5, kind
+
+
+def test_motor_curve_closed_forms_against_the_quadrature():
+    # the estimate's closed forms (one equation per curve) against the motor_curve rung's
+    # quadrature of J dω/M(ω), two independent ways to the same time
+    from engine.models.nutrunner import _curve_time, _drive, _drive_inertia, _motor_curve
+    from engine.physics.motor_spinup import spin_up_time
+
+    for kind, base in _curves().items():
+        for w in (120.0, 140.0, 155.0):
+            x = _inputs(**{**base, "motor_speed": w})
+            j = _drive_inertia(x, _drive(x))
+            want, _ = spin_up_time(j, _motor_curve(x), w, rtol=1e-12)
+            assert float(_curve_time(x, j)) == pytest.approx(want, rel=1e-12), (kind, w)
+
+
+def test_a_motor_curve_sweep_does_not_integrate_per_point(monkeypatch):
+    from engine.models import nutrunner
+
+    def refused(*args, **kwargs):
+        raise AssertionError("a quadrature per point")
+
+    monkeypatch.setattr(nutrunner, "spin_up_time", refused)
+    s = engine.sweep(
+        NUTRUNNER_DRIVE, _curves()["induction"], "motor_power", np.linspace(900, 1300, 300).tolist()
+    )
+    assert None not in s.rungs

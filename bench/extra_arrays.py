@@ -1,0 +1,135 @@
+"""Benchmark: inputs that used to fall off the array path, per point against the array cost.
+
+``measure()`` returns one row per case: the CPU time per point of an
+:func:`engine.sweep` over the case's input, against the same model's array
+path per point on a sweep of the same length (an input that has always been on
+it), and the ratio beside its target (≤ 5×). Cases:
+
+* clutch.ball_setting with a disc stack (target torque swept) against the
+  helical spring of its first example;
+* the as-built helical setting (clutch.ball_setting's second example) swept
+  over its coils, its ball lift and its free length, against the same design
+  swept over its drive power;
+* nutrunner.drive with an induction motor curve (its closed form's estimate
+  compares the constant-power time with the curve's) against the curveless drive.
+
+CPU time (``time.process_time``), medians of interleaved rounds: the machine
+is shared. Run alone: ``PYTHONPATH=. python -m bench.extra_arrays``.
+"""
+
+from __future__ import annotations
+
+import math
+import statistics
+import time
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+import engine
+from engine.models.clutch import BALL_CLUTCH_SETTING
+from engine.models.nutrunner import NUTRUNNER_DRIVE
+
+POINTS = 2000
+ROUNDS = 5
+TARGET_RATIO = 5.0
+
+#: A disc-spring limiter (two discs 40/20.4 × 1, h0 = 2 mm, in series) set for a torque.
+DISC_SETTING: dict[str, Any] = {
+    "target_torque": 60.0,
+    "ball_circle_diameter": 0.05,
+    "ball_count": 6,
+    "ball_diameter": 0.005,
+    "groove_angle": math.radians(45.0),
+    "flank_friction": 0.1,
+    "face_friction": 0.01,
+    "spring_type": "disc",
+    "disc_outer_diameter": 0.04,
+    "disc_inner_diameter": 0.0204,
+    "disc_thickness": 0.001,
+    "disc_cone_height": 0.002,
+    "disc_series": 2,
+    "ball_lift": 0.0004,
+}
+
+Case = tuple[str, Any, dict[str, Any], str, float, float]
+
+
+def _cases() -> list[tuple[str, Case, Case]]:
+    """(name, the case, its reference on the array path): spec, base, input, low, high."""
+    setting = BALL_CLUTCH_SETTING
+    helical = dict(setting.examples[0])
+    built = dict(setting.examples[1])
+    reference = ("as built, drive power", setting, built, "drive_power", 300.0, 450.0)
+    nut = NUTRUNNER_DRIVE
+    return [
+        (
+            "disc stack, target torque",
+            ("disc", setting, DISC_SETTING, "target_torque", 40.0, 80.0),
+            ("helical, target torque", setting, helical, "target_torque", 0.4, 0.6),
+        ),
+        (
+            "as built, active coils",
+            ("coils", setting, built, "spring_active_coils", 6.0, 10.0),
+            reference,
+        ),
+        ("as built, ball lift", ("lift", setting, built, "ball_lift", 0.0015, 0.0025), reference),
+        (
+            "as built, free length",
+            ("free", setting, built, "spring_free_length", 0.08, 0.1),
+            reference,
+        ),
+        (
+            "induction curve, power",
+            ("curve", nut, dict(nut.examples[1]), "motor_power", 1000.0, 1200.0),
+            ("no curve, power", nut, dict(nut.examples[0]), "motor_power", 1000.0, 1200.0),
+        ),
+    ]
+
+
+def _sweep(case: Case) -> Callable[[], Any]:
+    _, spec, base, vary, low, high = case
+    values = np.linspace(low, high, POINTS).tolist()
+    return lambda: engine.sweep(spec, base, vary, values, budget_s=None)
+
+
+def _cpu(call: Callable[[], Any]) -> float:
+    start = time.process_time()
+    call()
+    return time.process_time() - start
+
+
+def measure() -> list[dict[str, Any]]:
+    rows = []
+    for name, case, reference in _cases():
+        run_case, run_reference = _sweep(case), _sweep(reference)
+        run_case(), run_reference()  # warm-up: imports, caches
+        times, bases = [], []
+        for _ in range(ROUNDS):  # interleaved, so a busy moment hits both
+            times.append(_cpu(run_case))
+            bases.append(_cpu(run_reference))
+        ratio = statistics.median(t / b for t, b in zip(times, bases, strict=True))
+        per_point, base_point = statistics.median(times) / POINTS, statistics.median(bases) / POINTS
+        rows.append(
+            {
+                "model": case[1].name,
+                "method": "sweep closed_form",
+                "case": name,
+                "time_s": per_point,
+                "ratio": ratio,
+                "target": f"≤ {TARGET_RATIO:g}× the same model's array path per point",
+                "target_ratio": TARGET_RATIO,
+                "met": ratio <= TARGET_RATIO,
+                "notes": (
+                    f"{per_point * 1e6:.3g} µs a point against {base_point * 1e6:.3g} µs "
+                    f"({reference[0]}), {POINTS} points, CPU time, median of {ROUNDS} rounds"
+                ),
+            }
+        )
+    return rows
+
+
+if __name__ == "__main__":
+    for row in measure():
+        print(f"{row['model']:<22} {row['case']:<26} ×{row['ratio']:8.2f}  {row['notes']}")
