@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, replace
-from typing import Any
+from dataclasses import replace
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -315,8 +315,7 @@ def nut_stripping_text(nut: fa.NutChoice, strip_force: float, against: str, ok: 
     )
 
 
-@dataclass(frozen=True)
-class _NutRating:
+class _NutRating(NamedTuple):
     """A through bolt's nut as ISO 898-2 rates it, on floats or arrays."""
 
     choice: fa.NutChoice
@@ -487,8 +486,7 @@ def _deviation(
     return abs(chosen - exact) / exact
 
 
-@dataclass(frozen=True)
-class _Design:
+class _Design(NamedTuple):
     """One design's bolt and the notes of its resolution, as the rung estimate and the run
     of one request share them."""
 
