@@ -11,6 +11,7 @@ times and verdicts cannot contradict each other.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping
 from typing import Any
@@ -187,11 +188,23 @@ def _groups(output: str) -> tuple[str, ...]:
 _OUTPUT_GROUPS = tuple((name, _groups(name)) for name in _GROUP)
 
 
+@functools.lru_cache(maxsize=64)
+def _groups_asked(wanted: frozenset[str]) -> tuple[str, ...]:
+    """The error groups the outputs in ``wanted`` read, each once (by value: a set of outputs
+    is asked for again and again, every output by default).
+
+    >>> _groups_asked(frozenset({"cycle_time", "release_speed", "release_radius"}))
+    ('stage1', 'engagement', 'return', 'relock')
+    >>> _groups_asked(frozenset({"release_radius"}))
+    ()
+    """
+    return tuple(dict.fromkeys(g for n, groups in _OUTPUT_GROUPS if n in wanted for g in groups))
+
+
 def _output_error(x: Mapping[str, Any], ctx: RunContext) -> float | None:
-    """Estimated error of the outputs asked for (the closed form's groups)."""
+    """Estimated error of the outputs asked for: the largest of their groups' estimates."""
     errs = _errors(x, ctx.scratch)
-    wanted = ctx.outputs
-    asked = [errs[g] for n, groups in _OUTPUT_GROUPS if n in wanted for g in groups]
+    asked = [errs[g] for g in _groups_asked(frozenset(ctx.outputs))]
     if not asked:
         return 0.0
     if not all(math.isfinite(e) for e in asked):
