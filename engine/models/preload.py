@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, replace
-from typing import Any
+from dataclasses import replace
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -30,6 +30,7 @@ from ..core.spec import (
     Scratch,
 )
 from ..core.text import q
+from ..numerics.ode import negate
 from ..physics import fasteners as fa
 from ..physics import joint as jt
 from ..physics import preload as pl
@@ -315,8 +316,7 @@ def nut_stripping_text(nut: fa.NutChoice, strip_force: float, against: str, ok: 
     )
 
 
-@dataclass(frozen=True)
-class _NutRating:
+class _NutRating(NamedTuple):
     """A through bolt's nut as ISO 898-2 rates it, on floats or arrays."""
 
     choice: fa.NutChoice
@@ -487,8 +487,7 @@ def _deviation(
     return abs(chosen - exact) / exact
 
 
-@dataclass(frozen=True)
-class _Design:
+class _Design(NamedTuple):
     """One design's bolt and the notes of its resolution, as the rung estimate and the run
     of one request share them."""
 
@@ -1247,9 +1246,9 @@ def _grip_sections(
     grip = x["clamped_length"]
     l_shank, l_reduced = x["shank_length"], x["reduced_length"]
     free = grip - l_shank - l_reduced
-    fine = np.logical_not(free < -1e-12 * grip)
+    fine = negate(free < -1e-12 * grip)
     if x.get("reduced_diameter") is None:
-        fine = fine & np.logical_not(l_reduced > 0)
+        fine = fine & negate(l_reduced > 0)
     d = bolt.diameter
     shank_d = d if x.get("shank_diameter") is None else x["shank_diameter"]
     reduced_d = d if x.get("reduced_diameter") is None else x["reduced_diameter"]
@@ -1287,7 +1286,7 @@ def _smallest_section(bolt: Bolt | BoltArrays, x: Mapping[str, Any]) -> tuple[An
         sections.append((x["reduced_length"], x["reduced_diameter"]))
         fine: Any = True
     else:
-        fine = np.logical_not(x["reduced_length"] > 0.0)
+        fine = negate(x["reduced_length"] > 0.0)
     d0, where = jt.smallest_section(bolt.stress_diameter, sections)
     shank = where == "shank"  # a word for one design, an array of words for many
     area0 = _where(shank, 0.25 * math.pi * d0 * d0, bolt.stress_area)
@@ -1686,7 +1685,7 @@ def _range(x: Mapping[str, Any], name: str, nominal: Any) -> tuple[Any, Any, Any
         return nominal, nominal, True
     if lo is None or hi is None:
         raise InputOutOfRange(f"give both {name}_min and {name}_max", field=f"{name}_min")
-    return lo, hi, np.logical_not(lo > hi)
+    return lo, hi, negate(lo > hi)
 
 
 def _checked_range(x: Mapping[str, Any], name: str, nominal: float) -> tuple[float, float]:
@@ -1767,7 +1766,7 @@ def _passing(
         if other.controls in ("angle", "displacement") and stretch is not None:
             o_angle = pl.nut_rotation_angle(o_nominal, stretch, bolt.pitch)
             # too short for angle control, as the angle_resolution check says
-            passing = passing & np.logical_not(o_angle * other.scatter < ANGLE_READING_ERROR)
+            passing = passing & negate(o_angle * other.scatter < ANGLE_READING_ERROR)
         candidates.append(other)
         passes.append(passing)
     return candidates, passes

@@ -11,6 +11,7 @@ times and verdicts cannot contradict each other.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping
 from typing import Any
@@ -187,11 +188,23 @@ def _groups(output: str) -> tuple[str, ...]:
 _OUTPUT_GROUPS = tuple((name, _groups(name)) for name in _GROUP)
 
 
+@functools.lru_cache(maxsize=64)
+def _groups_asked(wanted: frozenset[str]) -> tuple[str, ...]:
+    """The error groups the outputs in ``wanted`` read, each once (by value: a set of outputs
+    is asked for again and again, every output by default).
+
+    >>> _groups_asked(frozenset({"cycle_time", "release_speed", "release_radius"}))
+    ('stage1', 'engagement', 'return', 'relock')
+    >>> _groups_asked(frozenset({"release_radius"}))
+    ()
+    """
+    return tuple(dict.fromkeys(g for n, groups in _OUTPUT_GROUPS if n in wanted for g in groups))
+
+
 def _output_error(x: Mapping[str, Any], ctx: RunContext) -> float | None:
-    """Estimated error of the outputs asked for (the closed form's groups)."""
+    """Estimated error of the outputs asked for: the largest of their groups' estimates."""
     errs = _errors(x, ctx.scratch)
-    wanted = ctx.outputs
-    asked = [errs[g] for n, groups in _OUTPUT_GROUPS if n in wanted for g in groups]
+    asked = [errs[g] for g in _groups_asked(frozenset(ctx.outputs))]
     if not asked:
         return 0.0
     if not all(math.isfinite(e) for e in asked):
@@ -372,12 +385,14 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
     h2, h3, g = x["engagement_height"], x["jaw_height"], x["gravity"]
     ok = _verdicts(x, o)
     checks: list[Check] = []
+    # a quantity two sentences quote is written once
+    c3_text, h2_text = in_n_per_mm(c3), in_mm(h2)
     if ok["c3 > c1"]:
         checks.append(
             Check(
                 "c3 > c1",
                 True,
-                f"the return spring ({in_n_per_mm(c3)}) is stiffer than the power spring "
+                f"the return spring ({c3_text}) is stiffer than the power spring "
                 f"({in_n_per_mm(c1)}), as [002, eq. 6] asks",
             )
         )
@@ -386,7 +401,7 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
             Check(
                 "c3 > c1",
                 False,
-                f"the return spring ({in_n_per_mm(c3)}) is not stiffer than the power spring "
+                f"the return spring ({c3_text}) is not stiffer than the power spring "
                 f"({in_n_per_mm(c1)}); the paper asks c3 > c1 [002, eq. 6] (for a vertical tool "
                 "with balanced preloads): raise the return-spring rate or soften the power spring",
             )
@@ -416,11 +431,11 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
             "eq. 6 (engagement height)",
             bool(ok["eq. 6 (engagement height)"]),
             (
-                f"the springs carry the striker to the engagement height {in_mm(h2)} (they "
+                f"the springs carry the striker to the engagement height {h2_text} (they "
                 f"would carry it {in_mm(reach)}) [002, eqs. 5-6]"
                 if o.blow
                 else f"the springs carry the striker only {in_mm(reach)}, less than the "
-                f"engagement height {in_mm(h2)} [002, eqs. 5-6]: it never engages. Raise the "
+                f"engagement height {h2_text} [002, eqs. 5-6]: it never engages. Raise the "
                 "power spring's force at release c1(λ1 + h1), lower the return-spring preload "
                 "c3·λ3 or the engagement height"
             ),
@@ -440,7 +455,7 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
             Check(
                 "return",
                 True,
-                f"the return spring ({in_n_per_mm(c3)}) brings the striker back the jaw height "
+                f"the return spring ({c3_text}) brings the striker back the jaw height "
                 f"{in_mm(h3)} in {in_ms(o.return_time)}" + paper_return,
             )
         )
@@ -449,15 +464,16 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
             Check(
                 "return",
                 False,
-                f"the return spring ({in_n_per_mm(c3)}) does not bring the striker back the jaw "
+                f"the return spring ({c3_text}) does not bring the striker back the jaw "
                 f"height {in_mm(h3)}: raise c3 or λ3" + paper_return,
             )
         )
     ff = relock_friction(x)
+    ff_text = q(ff, "N")
     weight = x["stepped_shaft_mass"] * x["gravity"]
     margin = float(relock_margin(c2, lam2, x["stepped_shaft_mass"], x["gravity"], ff))
     paper_relock = (
-        f"the condition c2·λ2 + m2·g = {q(c2 * lam2 + weight, 'N')} > c3·λ3·f = {q(ff, 'N')} "
+        f"the condition c2·λ2 + m2·g = {q(c2 * lam2 + weight, 'N')} > c3·λ3·f = {ff_text} "
         + ("holds" if margin > 0.0 else f"fails by {q(-margin, 'N')}")
         + " [002, eq. 4]"
     )
@@ -476,7 +492,7 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
                 "relock",
                 True,
                 f"the auxiliary spring pushes the shaft back h1 in {in_ms(o.relock_time)} against "
-                f"the friction {q(ff, 'N')}; " + paper_relock + extra,
+                f"the friction {ff_text}; " + paper_relock + extra,
             )
         )
     else:
@@ -485,7 +501,7 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
                 "relock",
                 False,
                 f"the auxiliary spring does not push the shaft back h1 against the friction "
-                f"{q(ff, 'N')}: the shaft will not re-lock; {paper_relock}: raise c2·λ2",
+                f"{ff_text}: the shaft will not re-lock; {paper_relock}: raise c2·λ2",
             )
         )
     window = divide(x["engagement_angle"], o.release_speed)
@@ -494,7 +510,7 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
             Check(
                 "full engagement",
                 True,
-                f"the striker travels the engagement height {in_mm(h2)} in "
+                f"the striker travels the engagement height {h2_text} in "
                 f"{in_ms(o.engagement_time)}, inside the {in_ms(window)} the flywheel takes to "
                 "turn through the anvil's opening [002, after eq. 5]",
             )
@@ -504,7 +520,7 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
             Check(
                 "full engagement",
                 False,
-                f"edge blow: the striker needs {in_ms(o.engagement_time)} to travel {in_mm(h2)} "
+                f"edge blow: the striker needs {in_ms(o.engagement_time)} to travel {h2_text} "
                 f"but the anvil's opening passes in {in_ms(window)} at {in_rpm(o.release_speed)} "
                 "[002, after eq. 5]; make the power spring stiffer or the moving parts lighter, "
                 "widen the opening, or lower the release speed",
@@ -515,7 +531,7 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
             Check(
                 "full engagement",
                 False,
-                f"edge blow: the striker never reaches the engagement height {in_mm(h2)} (it "
+                f"edge blow: the striker never reaches the engagement height {h2_text} (it "
                 f"travels at most {in_mm(reach)}) [002, eq. 5]; see the eq. 6 check",
             )
         )

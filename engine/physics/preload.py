@@ -26,7 +26,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from ..core.errors import InputOutOfRange
-from ..numerics.ode import where
+from ..numerics.ode import sqrt, where
 
 #: cos 30°: half the 60° flank angle of an ISO metric thread.
 COS_HALF_FLANK = math.cos(math.radians(30.0))
@@ -171,7 +171,7 @@ def torsion_factor(
             f"preload_convention = {convention!r} is not allowed: must be 'vdi2230' or 'elastic'",
             field="preload_convention",
         )
-    return np.sqrt(1.0 + 3.0 * ratio**2)
+    return sqrt(1.0 + 3.0 * ratio**2)  # math for a float, numpy for arrays
 
 
 def assembly_preload(

@@ -161,6 +161,8 @@ CARRIED_TO_MM = 64.0
 def _size_key(diameter: float, table: Mapping[float, object]) -> float | None:
     """The table key (mm) matching ``diameter`` [m], or None (tolerates unit round-off)."""
     mm = diameter * 1e3
+    if mm in table:  # the size as tabulated (the common case): no scan
+        return mm
     for key in table:
         if abs(mm - key) <= 1e-6 * key:
             return key

@@ -135,7 +135,7 @@ import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -280,14 +280,16 @@ def step_inputs(x: Mapping[str, Any]) -> Mapping[str, Any]:
 # ---------------------------------------------------------------------------
 
 
-@dataclass(frozen=True)
-class Geometry:
+class Geometry(NamedTuple):
     """Kinematics of the rollers between the cones for one roller geometry.
 
     ``kappa``: dx/du, roller radius per metre of gap [-] (per point where the cone
     angle varies); ``a_h``, ``a_s``: the roller's axial position
     :math:`y_r = a_h y_h + a_s y_s`; ``paper``: stage 1 uses the printed [002, eq. 1]
     instead of the Lagrangian; ``tan_a``: tan α.
+
+    A named tuple, not a frozen dataclass: a run makes one per roller geometry (its own
+    and the two its note compares), and a frozen dataclass costs a few µs to build.
     """
 
     name: str
