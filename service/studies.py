@@ -52,11 +52,20 @@ from pydantic import BaseModel, ConfigDict, Field, WithJsonSchema, create_model
 
 import engine
 from engine import ModelSpec
-from engine.studies.execute import Cancelled, DaskExecutor, InProcess, StudyRun, run_study
+from engine.studies.execute import (
+    Budget,
+    Cancelled,
+    ChunkArgs,
+    DaskExecutor,
+    InProcess,
+    StudyRun,
+    run_study,
+)
 from engine.studies.plan import (
     DISTRIBUTIONS,
     MAX_POINT_COLUMNS,
     METHODS,
+    ChunkResult,
     Plan,
     Study,
     Variable,
@@ -266,6 +275,22 @@ class Job:
             "owner": owner,
             "beat": time.time(),
         }
+
+
+@dataclass(frozen=True)
+class ClientShare:
+    """The Dask workers as one client's studies use them: its studies share one window
+    of chunks in flight (:meth:`DaskExecutor.map`'s ``owner``), so a client running two
+    studies has the share of a client running one, not twice it (issue 34: studies from
+    different clients interleave)."""
+
+    dask: DaskExecutor
+    client: str
+
+    def map(
+        self, calls: list[ChunkArgs], cancel: threading.Event, budget: Budget | None = None
+    ) -> Iterator[tuple[int, ChunkResult]]:
+        return self.dask.map(calls, cancel, budget, owner=self.client)
 
 
 def describe(job: dict[str, Any]) -> dict[str, Any]:
@@ -510,11 +535,12 @@ class Studies:
 
         try:
             if job.total <= self.settings.inprocess_points:
-                executor: InProcess | DaskExecutor = InProcess()
+                executor: InProcess | ClientShare = InProcess()
             else:
-                executor = self.dask()
+                dask = self.dask()
                 job.phase = "starting the Dask workers"
-                executor.client()
+                dask.client()
+                executor = ClientShare(dask, job.client)
             result = run_study(
                 spec,
                 study,
