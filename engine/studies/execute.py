@@ -20,10 +20,12 @@ reached with the certificate files it is given (:class:`TLSFiles`), over TLS.
 
 Progress is reported after every chunk; a cancel event stops the study
 between chunks. On Dask a study has a few chunks in flight at once (``IN_FLIGHT_PER_THREAD``
-per worker thread) and submits the next as one finishes, and its first chunks have a
+per worker thread) and submits the next as one finishes, and its first chunk has a
 higher priority than the spare ones of a study already running, so studies side by side
 take turns: a small study submitted behind a large one starts as soon as a worker frees,
-where it waited for the whole large study. A chunk's time budget follows the cost
+where it waited for the whole large study. The window is a client's, not a study's: the
+studies of one ``owner`` share it, so a client running two studies has the workers'
+share of a client running one, not twice it. A chunk's time budget follows the cost
 of the chunks measured before it (:class:`ChunkBudget`), not a fixed 60 s. Pending chunks
 are cancelled at once, and a running chunk
 stops at its next point (or inside a point's simulation) once it reads the study's
@@ -254,6 +256,8 @@ class DaskExecutor:
         self._client: Any = None
         self._cluster: Any = None
         self._lock = threading.Lock()
+        #: Studies on the workers now, per owner (a client): they share its window.
+        self._owners: dict[str, int] = {}
 
     def client(self) -> Any:
         with self._lock:
@@ -289,19 +293,51 @@ class DaskExecutor:
             return self._client
 
     def map(
-        self, calls: list[ChunkArgs], cancel: threading.Event, budget: Budget | None = None
+        self,
+        calls: list[ChunkArgs],
+        cancel: threading.Event,
+        budget: Budget | None = None,
+        owner: str | None = None,
+    ) -> Iterator[tuple[int, ChunkResult]]:
+        """The chunks' results as they finish; ``owner`` (a client) shares one window of
+        chunks in flight between its studies (None: the study is a client of its own)."""
+        client = self.client()
+        name = f"study-cancel-{uuid.uuid4().hex}"
+        key = owner if owner is not None else name
+        with self._lock:
+            self._owners[key] = self._owners.get(key, 0) + 1
+        try:
+            yield from self._map(client, name, key, calls, cancel, budget)
+        finally:
+            with self._lock:
+                self._owners[key] -= 1
+                if not self._owners[key]:
+                    del self._owners[key]
+
+    def _map(
+        self,
+        client: Any,
+        name: str,
+        owner: str,
+        calls: list[ChunkArgs],
+        cancel: threading.Event,
+        budget: Budget | None,
     ) -> Iterator[tuple[int, ChunkResult]]:
         from dask.distributed import Event, as_completed
 
-        client = self.client()
-        name = f"study-cancel-{uuid.uuid4().hex}"
         stop = Event(name, client=client)
         # a window of chunks in flight, the next submitted as one finishes: what another
         # study submits meanwhile queues before this one's next chunks (Dask runs equal
-        # priorities in the order submitted), so studies take turns; a chunk's priority
-        # falls with the study's chunks already in flight, so a new study's first chunks
-        # go before the spare ones of a study that is running
+        # priorities in the order submitted), so studies take turns, each in proportion to
+        # its chunks in flight; the window is the owner's, split between its studies, so
+        # clients take turns, not studies; a study's first chunk goes before the spare
+        # ones of a study that is running
         window = max(2, IN_FLIGHT_PER_THREAD * sum(client.nthreads().values()))
+
+        def share() -> int:
+            with self._lock:
+                return max(1, window // self._owners.get(owner, 1))
+
         index: dict[str, int] = {}
         flying: set[Any] = set()
         lock = threading.Lock()
@@ -311,10 +347,11 @@ class DaskExecutor:
             deadline = args[6] if budget is None else budget(len(next(iter(args[2].values()))))
             # workers look the model up by name in their own registry (a spec's functions
             # need not pickle)
-            with lock:
-                # a study's first chunks before any study's spare ones: a study just
-                # submitted starts as soon as a worker frees, not behind queued chunks
-                priority = -len(flying)
+            # a study's first chunk before any study's others: a study just submitted
+            # starts as soon as a worker frees, not behind queued chunks; the others all
+            # alike, whatever a study's window (a priority from the chunks in flight let
+            # the study with the smaller window go first, always)
+            priority = 0 if i == 0 else -1
             fut = client.submit(
                 evaluate_remote,
                 name,
@@ -344,7 +381,7 @@ class DaskExecutor:
                     client.cancel(in_flight())
                     return
 
-        first = [submit(i) for i in range(min(window, len(calls)))]
+        first = [submit(i) for i in range(min(share(), len(calls)))]
         following = len(first)
         threading.Thread(target=watch, name="study-cancel", daemon=True).start()
         done = as_completed(first, loop=client.loop, with_results=False)
@@ -356,8 +393,13 @@ class DaskExecutor:
                 with lock:
                     flying.discard(fut)
                 yield index[fut.key], result
-                # after the caller took the result: its cost is in the next chunk's budget
-                if following < len(calls) and not cancel.is_set():
+                # after the caller took the result: its cost is in the next chunk's budget;
+                # as many as the owner's share allows now (it grows when another of its
+                # studies ends), and one at least
+                while following < len(calls) and not cancel.is_set():
+                    flying_now = len(in_flight())
+                    if flying_now and flying_now >= share():
+                        break
                     done.add(submit(following))
                     following += 1
         finally:

@@ -19,6 +19,7 @@ from engine.core.errors import BudgetExceeded
 from engine.studies import execute
 from engine.studies.execute import DaskExecutor, InProcess, run_study
 from engine.studies.plan import Study, Variable
+from service.studies import ClientShare
 
 RARE = engine.get_model("impact.rare")
 CHUNK = 32
@@ -87,6 +88,68 @@ def test_a_small_study_runs_beside_a_large_one(monkeypatch: pytest.MonkeyPatch) 
     print(f"large study's chunks during the small one: {during} of {total}; small: {took:.2f} s")
     # two of the large study's chunks were in flight, and it gets one turn per small chunk
     assert during <= 2 + 4 + 2, (during, took)
+
+
+def _beside_two_studies_of_one_client(owners: tuple[str, str]) -> tuple[int, float]:
+    """Chunks two 60-chunk studies of ``owners`` got done while client ``b``'s 8-chunk
+    study, submitted once both run, went from submission to its end; its time [s]."""
+    executor = DaskExecutor(n_workers=1)
+    done = [0, 0]
+    cancel = threading.Event()
+    failed: list[BaseException] = []
+
+    def large(k: int) -> None:
+        def progress(points: int, total: int) -> None:
+            done[k] = points // CHUNK
+
+        share = ClientShare(executor, owners[k])
+        try:
+            run_study(RARE, _study(60, 5 + k), share, progress=progress, cancel=cancel)
+        except engine.Cancelled:
+            pass
+        except BaseException as exc:  # pragma: no cover - said by the assertion below
+            failed.append(exc)
+
+    try:
+        executor.client()
+        threads = [threading.Thread(target=large, args=(k,)) for k in (0, 1)]
+        for thread in threads:
+            thread.start()
+        deadline = time.monotonic() + 120
+        while min(done) < 1:  # both large studies run
+            assert time.monotonic() < deadline and not failed, failed
+            time.sleep(0.01)
+        before = sum(done)
+        start = time.perf_counter()
+        small = run_study(RARE, _study(8, 7), ClientShare(executor, "b"))
+        took = time.perf_counter() - start
+        during = sum(done) - before
+        cancel.set()
+        for thread in threads:
+            thread.join(60)
+        assert not failed, failed
+        assert small.summary["points"] == 8 * CHUNK
+        return during, took
+    finally:
+        executor.close()
+
+
+@pytest.mark.slow
+def test_a_client_with_two_studies_has_one_clients_share(monkeypatch: pytest.MonkeyPatch) -> None:
+    """One worker (a window of 2 chunks in flight), client ``a`` running two large studies,
+    client ``b`` one of 8 chunks. Per study (each its own window, as before) ``a`` kept 4
+    chunks in flight to ``b``'s 2 and had two of every three chunks run: about 16 of its
+    chunks during ``b``'s 8. Per client (its studies share its window: 1 each) the clients
+    take turns: about 8."""
+    monkeypatch.setattr(execute, "LOOP_CHUNK", CHUNK)
+    per_client, took = _beside_two_studies_of_one_client(("a", "a"))
+    per_study, took_before = _beside_two_studies_of_one_client(("a1", "a2"))
+    print(
+        f"client a's chunks during b's 8: {per_client} ({took:.2f} s) per client, "
+        f"{per_study} ({took_before:.2f} s) per study"
+    )
+    assert per_client <= 8 + 4, (per_client, per_study)
+    assert per_study > per_client, (per_client, per_study)
 
 
 def test_a_chunk_budget_grows_with_the_measured_cost() -> None:
