@@ -121,3 +121,34 @@ def test_a_bolt_note_and_an_as_built_clutch_note_carry_their_quantities() -> Non
     assert qs[4]["display_unit"] == "MPa" and qs[4]["value"] == pytest.approx(
         r.results["spring_stress_at_peak"], rel=1e-12
     )
+
+
+def test_a_quantity_carries_its_exact_value_and_the_digits_its_text_shows() -> None:
+    # the SI value comes back bit for bit, however awkward
+    for value in (0.1 + 0.2, -0.0, 5e-324, 1.7976931348623157e308, -23_790.123456789):
+        (quantity,) = parts(q(value, "N"))
+        assert isinstance(quantity, dict)
+        assert math.copysign(1.0, quantity["value"]) == math.copysign(1.0, value)  # type: ignore[arg-type]
+        assert quantity["value"] == value
+    (inf,) = parts(q(math.inf, "N", fmt=".0f"))
+    assert isinstance(inf, dict) and (inf["value"], inf["digits"], inf["text"]) == (
+        None,
+        3,
+        "inf N",
+    )
+    # digits: those the text shows, at least 3, at most those asked for (written out by hand)
+    cases = [
+        (q(0.0012, "mm", 4), "1.2 mm", 3),  # 1.2 shows 2: at least 3
+        (q(0.001234, "mm", 6), "1.234 mm", 4),  # 1.234 shows 4 of the 6 asked
+        (q(0.0012345678, "mm", 5), "1.2346 mm", 5),  # 5 shown, 5 asked
+        (q(12_345.0, "kN", 2), "12 kN", 2),  # fewer than 3 asked: as asked
+        (q(2014.0, "N*m", fmt=".1f"), "2014.0 N·m", 5),  # a format: all it shows
+        (q(201.4, "N*m", fmt=".0f"), "201 N·m", 3),
+        (q(0.0450, "m", fmt=".4f"), "0.0450 m", 3),  # leading zeros are not digits
+        (q(-1500.0, "N", fmt=".2e"), "-1.50e+03 N", 3),
+    ]
+    for sentence, text, digits in cases:
+        (quantity,) = parts(sentence)
+        assert isinstance(quantity, dict)
+        assert (quantity["text"], quantity["digits"]) == (text, digits), sentence
+
