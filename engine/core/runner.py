@@ -14,14 +14,14 @@ import threading
 import time
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 
 from . import points
 from .errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange, SolverFailed
 from .spec import Check, ModelSpec, Param, RunContext, Rung, Scratch, Value
-from .text import OPEN, Parts, parts, plain
+from .text import OPEN, Parts, parts, plain, split
 
 DEFAULT_TOLERANCE = 0.01
 MAX_SWEEP_POINTS = 2000
@@ -54,7 +54,65 @@ class RunResult:
     @property
     def notes_parts(self) -> list[Parts]:
         """``notes`` as text and quantities, one entry per note (:func:`engine.core.text.parts`)."""
+        made = self.__dict__.get("_notes_parts")  # read in the same pass as ``notes``
+        if made is not None:
+            return made
         return [parts(n) for n in self.marked_notes or self.notes]
+
+    @classmethod
+    def _of(
+        cls,
+        checks: list[Check],
+        notes: list[str],
+        warnings: list[str],
+        **fields: Any,
+    ) -> RunResult:
+        """A result whose sentences are made readable when first read (:func:`run`'s).
+
+        ``checks``, ``notes`` and ``warnings`` are as the model wrote them, quantities
+        marked: taking the marks out and reading the parts costs about a microsecond a
+        sentence, which a caller that reads only the numbers (a benchmark, a study, a
+        script) need not pay. The fields read the same as if they had been given made.
+        """
+        self = cls.__new__(cls)
+        self.__dict__.update(fields)
+        self.__dict__["_marked"] = (checks, notes, warnings)
+        return self
+
+    if not TYPE_CHECKING:  # the type checker sees the fields as declared
+
+        def __getattr__(self, name: str) -> Any:
+            """The sentence fields of a result :meth:`_of` made, on their first reading."""
+            marked = self.__dict__.get("_marked")
+            if marked is None or name not in _SENTENCE_FIELDS:
+                raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+            self.__dict__.update(_sentences(*marked))
+            self.__dict__.pop("_marked", None)
+            return self.__dict__[name]
+
+
+#: The fields of :class:`RunResult` that :meth:`RunResult._of` leaves to their first reading.
+_SENTENCE_FIELDS = frozenset({"checks", "notes", "warnings", "marked_notes"})
+
+
+def _sentences(checks: list[Check], notes: list[str], warnings: list[str]) -> dict[str, Any]:
+    """The sentence fields of a :class:`RunResult` from the sentences as the model wrote
+    them: each marked one read once (:func:`engine.core.text.split`) into its plain text
+    and its parts, which ``notes_parts`` and each check's ``detail_parts`` then give."""
+    marked = any(OPEN in n for n in notes)
+    if marked:
+        made = [split(n) for n in notes]
+        plain_notes = [text for text, _ in made]
+        notes_parts: list[Parts] | None = [ps for _, ps in made]
+    else:
+        plain_notes, notes_parts = notes, None
+    return {
+        "checks": [_check_parts(c) for c in checks],
+        "notes": plain_notes,
+        "warnings": [plain(w) for w in warnings],
+        "marked_notes": notes if marked else [],
+        **({"_notes_parts": notes_parts} if notes_parts is not None else {}),
+    }
 
 
 @dataclass
@@ -465,8 +523,10 @@ def run(
         caveat = ran.estimate_caveat  # a sentence made on each call: made once here
         if not any(caveat in n for n in notes):
             notes.append(caveat)
-    marked = any(OPEN in n for n in notes)
-    return RunResult(
+    return RunResult._of(
+        spec.levelled(result.checks),
+        notes,
+        warnings + result.warnings,
         model=spec.name,
         results=scalars,
         units={n: units[n] for n in (*scalars, *curves)},
@@ -474,20 +534,19 @@ def run(
         error_estimate=error,
         elapsed_s=elapsed,
         inputs=values,
-        checks=[_check_parts(c) for c in spec.levelled(result.checks)],
-        notes=[plain(n) for n in notes] if marked else notes,
-        warnings=[plain(w) for w in warnings + result.warnings],
         series=curves,
         error_kind=error_kind,
-        marked_notes=notes if marked else [],
     )
 
 
 def _check_parts(check: Check) -> Check:
-    """``check`` with a plain ``detail``, the marked one kept for its parts."""
+    """``check`` with a plain ``detail``, the marked one kept, and its parts read with it."""
     if OPEN not in check.detail:
         return check
-    return Check(check.name, check.ok, plain(check.detail), check.level, check.detail)
+    text, ps = split(check.detail)
+    made = Check(check.name, check.ok, text, check.level, check.detail)
+    object.__setattr__(made, "_parts", ps)  # Check.detail_parts gives them
+    return made
 
 
 def sweep_values(start: float, stop: float, num: int, scale: str = "linear") -> np.ndarray:

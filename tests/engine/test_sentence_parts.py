@@ -152,3 +152,27 @@ def test_a_quantity_carries_its_exact_value_and_the_digits_its_text_shows() -> N
         assert isinstance(quantity, dict)
         assert (quantity["text"], quantity["digits"]) == (text, digits), sentence
 
+
+def test_a_run_reads_its_sentences_once_and_as_if_made_at_once() -> None:
+    """engine.run leaves the marks in its sentences until they are first read; what is read
+    then is what plain() and parts() give of the marked sentences, and the result compares,
+    copies and pickles as one made with those values."""
+    import dataclasses
+    import pickle
+
+    spec = get_model("joint.vdi2230")
+    r = engine.run(spec, spec.examples[0])
+    assert "notes" not in vars(r) and "checks" not in vars(r)  # nothing read yet
+    again = pickle.loads(pickle.dumps(r))  # before the first reading: the marked sentences travel
+    assert r.marked_notes and all("\ue000" not in n for n in r.notes)
+    assert r.notes == [plain(n) for n in r.marked_notes]
+    assert r.notes_parts == [parts(n) for n in r.marked_notes]
+    marked_checks = [c for c in r.checks if c.marked]
+    assert len(marked_checks) >= 5
+    for c in marked_checks:
+        assert c.detail == plain(c.marked) and c.detail_parts == parts(c.marked)
+    made = dataclasses.replace(r)  # every field given, made at once
+    assert made == r and again == r and repr(again) == repr(r)
+    assert made.notes_parts == r.notes_parts
+    with pytest.raises(AttributeError):
+        r.no_such_field  # type: ignore[attr-defined]  # noqa: B018
