@@ -21,7 +21,7 @@ import numpy as np
 from . import points
 from .errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange, SolverFailed
 from .spec import Check, ModelSpec, Param, RunContext, Rung, Scratch, Value
-from .text import OPEN, Parts, parts, plain, split
+from .text import OPEN, Parts, parts, plains
 
 DEFAULT_TOLERANCE = 0.01
 MAX_SWEEP_POINTS = 2000
@@ -54,9 +54,6 @@ class RunResult:
     @property
     def notes_parts(self) -> list[Parts]:
         """``notes`` as text and quantities, one entry per note (:func:`engine.core.text.parts`)."""
-        made = self.__dict__.get("_notes_parts")  # read in the same pass as ``notes``
-        if made is not None:
-            return made
         return [parts(n) for n in self.marked_notes or self.notes]
 
     @classmethod
@@ -97,21 +94,20 @@ _SENTENCE_FIELDS = frozenset({"checks", "notes", "warnings", "marked_notes"})
 
 def _sentences(checks: list[Check], notes: list[str], warnings: list[str]) -> dict[str, Any]:
     """The sentence fields of a :class:`RunResult` from the sentences as the model wrote
-    them: each marked one read once (:func:`engine.core.text.split`) into its plain text
-    and its parts, which ``notes_parts`` and each check's ``detail_parts`` then give."""
+    them: the marks taken out (:func:`engine.core.text.plain`), the marked ones kept for
+    their parts (``notes_parts``, each check's ``detail_parts``, read when asked)."""
     marked = any(OPEN in n for n in notes)
-    if marked:
-        made = [split(n) for n in notes]
-        plain_notes = [text for text, _ in made]
-        notes_parts: list[Parts] | None = [ps for _, ps in made]
-    else:
-        plain_notes, notes_parts = notes, None
+    details = [c.detail for c in checks]
+    read = plains([*notes, *warnings, *details])  # one pass over every sentence
+    n, w = len(notes), len(notes) + len(warnings)
     return {
-        "checks": [_check_parts(c) for c in checks],
-        "notes": plain_notes,
-        "warnings": [plain(w) for w in warnings],
+        "checks": [
+            Check(c.name, c.ok, text, c.level, c.detail) if OPEN in c.detail else c
+            for c, text in zip(checks, read[w:], strict=True)
+        ],
+        "notes": read[:n] if marked else notes,
+        "warnings": read[n:w],
         "marked_notes": notes if marked else [],
-        **({"_notes_parts": notes_parts} if notes_parts is not None else {}),
     }
 
 
@@ -537,16 +533,6 @@ def run(
         series=curves,
         error_kind=error_kind,
     )
-
-
-def _check_parts(check: Check) -> Check:
-    """``check`` with a plain ``detail``, the marked one kept, and its parts read with it."""
-    if OPEN not in check.detail:
-        return check
-    text, ps = split(check.detail)
-    made = Check(check.name, check.ok, text, check.level, check.detail)
-    object.__setattr__(made, "_parts", ps)  # Check.detail_parts gives them
-    return made
 
 
 def sweep_values(start: float, stop: float, num: int, scale: str = "linear") -> np.ndarray:

@@ -499,9 +499,6 @@ class Check:
     @property
     def detail_parts(self) -> Parts:
         """``detail`` as text and quantities (:func:`engine.core.text.parts`)."""
-        made = self.__dict__.get("_parts")  # read by the runner with ``detail``
-        if made is not None:
-            return made
         return parts(self.marked or self.detail)
 
 
