@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import math
 import re
+import struct
 from typing import TypedDict
 
 OPEN = "\ue000"
@@ -114,6 +115,8 @@ def _digits_shown(number: str) -> int:
 #: Per display unit: the factor from SI and the unit as written after the number (the
 #: two columns of :data:`DISPLAY` that :func:`q` reads on every call).
 _WRITE: dict[str, tuple[float, str]] = {k: (v[1], v[2]) for k, v in DISPLAY.items()}
+#: A quantity's SI value as the mark carries it: its 8 bytes (little-endian IEEE 754), in hex.
+_DOUBLE = struct.Struct("<d")
 
 
 def q(
@@ -150,23 +153,37 @@ def q(
     """
     value = float(value)
     factor, unit = _WRITE[display]
-    # the digits the parts carry, counted here from the number written: with ``digits``
-    # ≤ 3 (the common case) they are ``digits`` whatever the number shows
     if fmt is None:
-        if digits == 3:
-            number = f"{value * factor:.3g}"
-            shown = 3
-        else:
-            number = f"{value * factor:.{digits}g}"
-            shown = digits if digits <= 3 else min(max(3, _digits_shown(number)), digits)
+        number = f"{value * factor:.3g}" if digits == 3 else f"{value * factor:.{digits}g}"
+        # the digits the parts carry: with ``digits`` ≤ 3 (most quantities) they are
+        # ``digits`` whatever the number shows; else parts() counts them in the number
+        # (the text's first characters), at most ``digits``
+        shown = str(digits) if digits <= 3 else f"{digits}:{len(number)}"
     else:
         number = f"{value * factor:{fmt}}"
-        shown = max(3, _digits_shown(number))
+        shown = f":{len(number)}"  # counted by parts(), no upper limit
     text = number if bare else number + (unit if suffix is None else suffix)
-    # the SI value travels as float.hex (exact, and cheaper to write than repr)
+    # the SI value travels as the hex of its 8 bytes: exact, and cheaper to write than repr
     return (
-        f"{OPEN}{text}{SEP}{value.hex()}{SEP}{display}{SEP}{shown}{SEP}{'1' if bare else ''}{CLOSE}"
+        f"{OPEN}{text}{SEP}{_DOUBLE.pack(value).hex()}{SEP}{display}{SEP}{shown}{SEP}"
+        f"{'1' if bare else ''}{CLOSE}"
     )
+
+
+def _digits(shown: str, text: str) -> int:
+    """The digits a quantity's parts carry, from what :func:`q` wrote of them: the number,
+    or ``"<at most>:<characters of the number>"`` to count in ``text`` (at least 3).
+
+    >>> _digits("3", "23.8 kN"), _digits("4:3", "1.2 mm"), _digits("4:5", "1.234 mm")
+    (3, 3, 4)
+    >>> _digits(":6", "2014.0 N·m"), _digits("6:8", "0.001234 mm")
+    (5, 4)
+    """
+    most, counted, length = shown.partition(":")
+    if not counted:
+        return int(most)
+    found = max(3, _digits_shown(text[: int(length)]))
+    return min(found, int(most)) if most else found
 
 
 def plain(sentence: str) -> str:
@@ -251,9 +268,9 @@ def parts(sentence: str) -> Parts:
             continue
         text, raw, display, shown, flag = fields
         try:
-            value = float.fromhex(raw)
-            digits = int(shown) if math.isfinite(value) else 3
-        except ValueError:
+            (value,) = _DOUBLE.unpack(bytes.fromhex(raw))
+            digits = _digits(shown, text) if math.isfinite(value) else 3
+        except (ValueError, struct.error):
             add(text + rest)
             continue
         out.append(
