@@ -21,7 +21,7 @@ import numpy as np
 from . import points
 from .errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange, SolverFailed
 from .spec import Check, ModelSpec, Param, RunContext, Rung, Scratch, Value
-from .text import OPEN, Parts, parts, plains
+from .text import OPEN, Parts, parts, plain
 
 DEFAULT_TOLERANCE = 0.01
 MAX_SWEEP_POINTS = 2000
@@ -97,16 +97,13 @@ def _sentences(checks: list[Check], notes: list[str], warnings: list[str]) -> di
     them: the marks taken out (:func:`engine.core.text.plain`), the marked ones kept for
     their parts (``notes_parts``, each check's ``detail_parts``, read when asked)."""
     marked = any(OPEN in n for n in notes)
-    details = [c.detail for c in checks]
-    read = plains([*notes, *warnings, *details])  # one pass over every sentence
-    n, w = len(notes), len(notes) + len(warnings)
     return {
         "checks": [
-            Check(c.name, c.ok, text, c.level, c.detail) if OPEN in c.detail else c
-            for c, text in zip(checks, read[w:], strict=True)
+            Check(c.name, c.ok, plain(c.detail), c.level, c.detail) if OPEN in c.detail else c
+            for c in checks
         ],
-        "notes": read[:n] if marked else notes,
-        "warnings": read[n:w],
+        "notes": [plain(n) for n in notes] if marked else notes,
+        "warnings": [plain(w) for w in warnings],
         "marked_notes": notes if marked else [],
     }
 
@@ -482,12 +479,13 @@ def run(
     scalars: dict[str, Value] = {}
     curves: dict[str, list[float]] = {}
     notes = notes + list(spec.assumptions) + result.notes
+    isfinite = math.isfinite
     for name, value in result.values.items():
         if name not in wanted:
             continue
         kind = type(value)
-        if isinstance(value, float) and kind is float:  # the common case, without a call
-            if not math.isfinite(value):
+        if isinstance(value, float) and kind is float:  # the common case
+            if not isfinite(value):
                 notes.append(f"{name} could not be computed for these inputs (non-finite); null")
                 value = None
         elif not (kind is int or kind is str or kind is bool or value is None):
@@ -519,13 +517,14 @@ def run(
         caveat = ran.estimate_caveat  # a sentence made on each call: made once here
         if not any(caveat in n for n in notes):
             notes.append(caveat)
+    keys = (*scalars, *curves)
     return RunResult._of(
         spec.levelled(result.checks),
         notes,
         warnings + result.warnings,
         model=spec.name,
         results=scalars,
-        units={n: units[n] for n in (*scalars, *curves)},
+        units=dict(zip(keys, map(units.__getitem__, keys), strict=True)),
         rung=result.rung,
         error_estimate=error,
         elapsed_s=elapsed,

@@ -728,7 +728,11 @@ class ModelSpec:
         """``checks`` with each one's :attr:`Check.level` as this model declares it."""
         if not self.advice:
             return checks
-        return [replace(c, level="advice") if c.name in self.advice else c for c in checks]
+        advice = self.advice
+        return [
+            Check(c.name, c.ok, c.detail, "advice", c.marked) if c.name in advice else c
+            for c in checks
+        ]
 
     def param(self, name: str) -> Param:
         return self._params[name]

@@ -203,33 +203,6 @@ def plain(sentence: str) -> str:
     return _joined(parts(sentence))  # stray marks: read as parts() reads them
 
 
-#: What :func:`plains` joins sentences with to read them in one pass: a fourth character
-#: of the private use area, which a quantity's data never spans (:data:`_DATA_IN`).
-_JOIN = "\ue003"
-_DATA_IN = re.compile(f"{SEP}[^{OPEN}{CLOSE}{_JOIN}]*{CLOSE}")
-
-
-def plains(sentences: list[str]) -> list[str]:
-    """:func:`plain` of each of ``sentences``, the marks of all taken out in one pass.
-
-    >>> plains(["F_M = " + q(23790.0, "kN"), "no quantity", "", q(0.0042, "mm")])
-    ['F_M = 23.8 kN', 'no quantity', '', '4.2 mm']
-    >>> plains(["a" + OPEN + "b" + SEP + "c", "d" + CLOSE])  # stray marks: as plain() reads them
-    ['abc', 'd\ue002']
-    """
-    out = list(sentences)
-    marked = [i for i, s in enumerate(sentences) if OPEN in s]  # the others stay as they are
-    if not marked:
-        return out
-    joined = _JOIN.join([sentences[i] for i in marked])
-    fast = _DATA_IN.sub("", joined).replace(OPEN, "")
-    if SEP in fast or CLOSE in fast or joined.count(_JOIN) != len(marked) - 1:
-        return [plain(s) for s in sentences]
-    for i, text in zip(marked, fast.split(_JOIN), strict=True):
-        out[i] = text
-    return out
-
-
 def _joined(ps: Parts) -> str:
     """The text of a sentence's parts: what a reader sees."""
     return "".join(p if isinstance(p, str) else p["text"] for p in ps)

@@ -176,26 +176,3 @@ def test_a_run_reads_its_sentences_once_and_as_if_made_at_once() -> None:
     assert made.notes_parts == r.notes_parts
     with pytest.raises(AttributeError):
         r.no_such_field  # type: ignore[attr-defined]  # noqa: B018
-
-
-def test_plains_reads_each_sentence_as_plain_does() -> None:
-    """plains() takes the marks out of many sentences in one pass; with stray marks, a
-    joining character inside a sentence, empty sentences, it gives what plain() gives of
-    each (random sentences from a seeded generator)."""
-    import random
-
-    from engine.core.text import CLOSE, OPEN, SEP, plains
-
-    pieces = ["a", " ", OPEN, SEP, CLOSE, "\ue003", q(1.5, "kN"), q(2.0, "mm", bare=True)]
-    rng = random.Random(28)
-    for _ in range(3000):
-        sentences = [
-            "".join(rng.choice(pieces) for _ in range(rng.randint(0, 6)))
-            for _ in range(rng.randint(1, 4))
-        ]
-        assert plains(sentences) == [plain(s) for s in sentences], sentences
-    assert plains([f"F = {q(1500.0, 'kN')}", "x", q(1500.0, "N")]) == [
-        "F = 1.5 kN",
-        "x",
-        "1.5e+03 N",
-    ]
