@@ -377,6 +377,18 @@ def prepare(
 
     Raises InputOutOfRange for an invalid input or tolerance, as :func:`run` does.
     """
+    return _prepare(spec, inputs, fidelity, tolerance, guarded=False)
+
+
+def _prepare(
+    spec: ModelSpec,
+    inputs: Mapping[str, Any],
+    fidelity: str | None,
+    tolerance: float | None,
+    *,
+    guarded: bool,
+) -> Prepared:
+    """:func:`prepare`; ``guarded``: the caller holds :class:`_arithmetic_refused` already."""
     values, warnings = spec.validate(inputs)
     tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
     if not (math.isfinite(tol) and 0.0 < tol < 1.0):
@@ -385,7 +397,7 @@ def prepare(
         )
     asked = _fidelity(spec, fidelity, tolerance)
     scratch = Scratch()
-    if asked == "auto":  # the estimates run: one numpy error state for them
+    if asked == "auto" and not guarded:  # the estimates run: one numpy error state for them
         with _arithmetic_refused(spec):
             rung, notes = choose_rung(spec, values, asked, tol, scratch)
     else:  # a named rung is only checked against the declared names
@@ -419,29 +431,29 @@ def run(
     ``inputs``, ``fidelity`` and ``tolerance`` (a caller that chose its lane by the rung
     does not validate and choose again).
     """
-    if prepared is None:
-        prepared = prepare(spec, inputs, fidelity, tolerance)
-    values, warnings, tol, rung = (
-        prepared.values,
-        prepared.warnings,
-        prepared.tolerance,
-        prepared.rung,
-    )
-    notes = list(prepared.notes)
-    units = spec.units
-    if outputs is None:
-        wanted = spec.scalar_outputs | spec.series_outputs if series else spec.scalar_outputs
-    else:
-        asked_for = set(outputs)
-        unknown = sorted(asked_for - units.keys())
-        if unknown:
-            raise InputOutOfRange(
-                f"unknown output(s) {', '.join(unknown)}; {spec.name} offers "
-                + ", ".join(sorted(units)),
-                field="outputs",
-            )
-        wanted = frozenset(_wanted(spec, asked_for, named=True, series=series))
-    with _arithmetic_refused(spec):  # one numpy error state for the model
+    with _arithmetic_refused(spec):  # one numpy error state for the estimates and the model
+        if prepared is None:
+            prepared = _prepare(spec, inputs, fidelity, tolerance, guarded=True)
+        values, warnings, tol, rung = (
+            prepared.values,
+            prepared.warnings,
+            prepared.tolerance,
+            prepared.rung,
+        )
+        notes = list(prepared.notes)
+        units = spec.units
+        if outputs is None:
+            wanted = spec.scalar_outputs | spec.series_outputs if series else spec.scalar_outputs
+        else:
+            asked_for = set(outputs)
+            unknown = sorted(asked_for - units.keys())
+            if unknown:
+                raise InputOutOfRange(
+                    f"unknown output(s) {', '.join(unknown)}; {spec.name} offers "
+                    + ", ".join(sorted(units)),
+                    field="outputs",
+                )
+            wanted = frozenset(_wanted(spec, asked_for, named=True, series=series))
         start = time.perf_counter()
         ctx = RunContext(
             rung=rung,
