@@ -57,23 +57,17 @@ class RunResult:
         return [parts(n) for n in self.marked_notes or self.notes]
 
     @classmethod
-    def _of(
-        cls,
-        checks: list[Check],
-        notes: list[str],
-        warnings: list[str],
-        **fields: Any,
-    ) -> RunResult:
-        """A result whose sentences are made readable when first read (:func:`run`'s).
+    def _of(cls, checks: list[Check], notes: list[str], **fields: Any) -> RunResult:
+        """A result whose checks and notes are made readable when first read (:func:`run`'s).
 
-        ``checks``, ``notes`` and ``warnings`` are as the model wrote them, quantities
-        marked: taking the marks out and reading the parts costs about a microsecond a
-        sentence, which a caller that reads only the numbers (a benchmark, a study, a
-        script) need not pay. The fields read the same as if they had been given made.
+        ``checks`` and ``notes`` are as the model wrote them, quantities marked: taking
+        the marks out costs about a microsecond a sentence, which a caller that reads only
+        the numbers and the warnings (a benchmark, a sweep's looped points, a script) need
+        not pay. The fields read the same as if they had been given made.
         """
         self = cls.__new__(cls)
         self.__dict__.update(fields)
-        self.__dict__["_marked"] = (checks, notes, warnings)
+        self.__dict__["_marked"] = (checks, notes)
         return self
 
     if not TYPE_CHECKING:  # the type checker sees the fields as declared
@@ -89,10 +83,10 @@ class RunResult:
 
 
 #: The fields of :class:`RunResult` that :meth:`RunResult._of` leaves to their first reading.
-_SENTENCE_FIELDS = frozenset({"checks", "notes", "warnings", "marked_notes"})
+_SENTENCE_FIELDS = frozenset({"checks", "notes", "marked_notes"})
 
 
-def _sentences(checks: list[Check], notes: list[str], warnings: list[str]) -> dict[str, Any]:
+def _sentences(checks: list[Check], notes: list[str]) -> dict[str, Any]:
     """The sentence fields of a :class:`RunResult` from the sentences as the model wrote
     them: the marks taken out (:func:`engine.core.text.plain`), the marked ones kept for
     their parts (``notes_parts``, each check's ``detail_parts``, read when asked)."""
@@ -103,7 +97,6 @@ def _sentences(checks: list[Check], notes: list[str], warnings: list[str]) -> di
             for c in checks
         ],
         "notes": [plain(n) for n in notes] if marked else notes,
-        "warnings": [plain(w) for w in warnings],
         "marked_notes": notes if marked else [],
     }
 
@@ -533,7 +526,6 @@ def run(
     return RunResult._of(
         spec.levelled(result.checks),
         notes,
-        warnings + result.warnings,
         model=spec.name,
         results=scalars,
         units=dict(zip(keys, map(units.__getitem__, keys), strict=True)),
@@ -543,6 +535,7 @@ def run(
         inputs=values,
         series=curves,
         error_kind=error_kind,
+        warnings=[plain(w) for w in warnings + result.warnings],
     )
 
 

@@ -163,6 +163,7 @@ def test_a_run_reads_its_sentences_once_and_as_if_made_at_once() -> None:
     spec = get_model("joint.vdi2230")
     r = engine.run(spec, spec.examples[0])
     assert "notes" not in vars(r) and "checks" not in vars(r)  # nothing read yet
+    assert r.warnings == [] and "notes" not in vars(r)  # warnings are made at once
     again = pickle.loads(pickle.dumps(r))  # before the first reading: the marked sentences travel
     assert r.marked_notes and all("\ue000" not in n for n in r.notes)
     assert r.notes == [plain(n) for n in r.marked_notes]
