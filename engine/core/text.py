@@ -242,13 +242,14 @@ def parts(sentence: str) -> Parts:
         text, raw, display, shown, flag = fields
         try:
             (value,) = _DOUBLE.unpack(bytes.fromhex(raw))
-            digits = _digits(shown, text) if math.isfinite(value) else 3
+            finite = math.isfinite(value)
+            digits = _digits(shown, text) if finite else 3
         except (ValueError, struct.error):
             add(text + rest)
             continue
         out.append(
             {
-                "value": value if math.isfinite(value) else None,
+                "value": value if finite else None,
                 "unit": DISPLAY[display][0],
                 "display_unit": display,
                 "digits": digits,
@@ -256,7 +257,8 @@ def parts(sentence: str) -> Parts:
                 "bare": flag == "1",
             }
         )
-        add(rest)
+        if rest:  # after a quantity: no text to join it to
+            out.append(rest)
     return out or [""]
 
 

@@ -177,3 +177,23 @@ def test_a_run_reads_its_sentences_once_and_as_if_made_at_once() -> None:
     assert made.notes_parts == r.notes_parts
     with pytest.raises(AttributeError):
         r.no_such_field  # type: ignore[attr-defined]  # noqa: B018
+
+
+def test_parts_and_plain_read_any_sentence_of_quantities_alike() -> None:
+    """For sentences of quantities and text in any order (a seeded generator), the parts
+    joined are plain()'s text, and no two texts stand side by side. (Stray marks, which no
+    model writes, are left out: there the two still differ, e.g. a stray SEP … CLOSE after a
+    quantity is dropped with its text by plain() and kept by parts().)"""
+    import itertools
+    import random
+
+    pieces = ["a", " ", "", q(1.5, "kN"), q(2.0, "mm", bare=True), q(0.1, "%", 4), q(-0.0, "N")]
+    pieces.append(q(float("nan"), "MPa", fmt=".1f"))
+    rng = random.Random(28)
+    for _ in range(3000):
+        sentence = "".join(rng.choice(pieces) for _ in range(rng.randint(0, 7)))
+        ps = parts(sentence)
+        assert _joined(ps) == plain(sentence), sentence
+        assert all(
+            not (isinstance(a, str) and isinstance(b, str)) for a, b in itertools.pairwise(ps)
+        )
