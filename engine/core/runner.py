@@ -14,7 +14,7 @@ import threading
 import time
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 
@@ -55,6 +55,50 @@ class RunResult:
     def notes_parts(self) -> list[Parts]:
         """``notes`` as text and quantities, one entry per note (:func:`engine.core.text.parts`)."""
         return [parts(n) for n in self.marked_notes or self.notes]
+
+    @classmethod
+    def _of(cls, checks: list[Check], notes: list[str], **fields: Any) -> RunResult:
+        """A result whose checks and notes are made readable when first read (:func:`run`'s).
+
+        ``checks`` and ``notes`` are as the model wrote them, quantities marked: taking
+        the marks out costs about a microsecond a sentence, which a caller that reads only
+        the numbers and the warnings (a benchmark, a sweep's looped points, a script) need
+        not pay. The fields read the same as if they had been given made.
+        """
+        self = cls.__new__(cls)
+        self.__dict__.update(fields)
+        self.__dict__["_marked"] = (checks, notes)
+        return self
+
+    if not TYPE_CHECKING:  # the type checker sees the fields as declared
+
+        def __getattr__(self, name: str) -> Any:
+            """The sentence fields of a result :meth:`_of` made, on their first reading."""
+            marked = self.__dict__.get("_marked")
+            if marked is None or name not in _SENTENCE_FIELDS:
+                raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+            self.__dict__.update(_sentences(*marked))
+            self.__dict__.pop("_marked", None)
+            return self.__dict__[name]
+
+
+#: The fields of :class:`RunResult` that :meth:`RunResult._of` leaves to their first reading.
+_SENTENCE_FIELDS = frozenset({"checks", "notes", "marked_notes"})
+
+
+def _sentences(checks: list[Check], notes: list[str]) -> dict[str, Any]:
+    """The sentence fields of a :class:`RunResult` from the sentences as the model wrote
+    them: the marks taken out (:func:`engine.core.text.plain`), the marked ones kept for
+    their parts (``notes_parts``, each check's ``detail_parts``, read when asked)."""
+    marked = any(OPEN in n for n in notes)
+    return {
+        "checks": [
+            Check(c.name, c.ok, plain(c.detail), c.level, c.detail) if OPEN in c.detail else c
+            for c in checks
+        ],
+        "notes": [plain(n) for n in notes] if marked else notes,
+        "marked_notes": notes if marked else [],
+    }
 
 
 @dataclass
@@ -326,6 +370,18 @@ def prepare(
 
     Raises InputOutOfRange for an invalid input or tolerance, as :func:`run` does.
     """
+    return _prepare(spec, inputs, fidelity, tolerance, guarded=False)
+
+
+def _prepare(
+    spec: ModelSpec,
+    inputs: Mapping[str, Any],
+    fidelity: str | None,
+    tolerance: float | None,
+    *,
+    guarded: bool,
+) -> Prepared:
+    """:func:`prepare`; ``guarded``: the caller holds :class:`_arithmetic_refused` already."""
     values, warnings = spec.validate(inputs)
     tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
     if not (math.isfinite(tol) and 0.0 < tol < 1.0):
@@ -334,7 +390,7 @@ def prepare(
         )
     asked = _fidelity(spec, fidelity, tolerance)
     scratch = Scratch()
-    if asked == "auto":  # the estimates run: one numpy error state for them
+    if asked == "auto" and not guarded:  # the estimates run: one numpy error state for them
         with _arithmetic_refused(spec):
             rung, notes = choose_rung(spec, values, asked, tol, scratch)
     else:  # a named rung is only checked against the declared names
@@ -368,29 +424,29 @@ def run(
     ``inputs``, ``fidelity`` and ``tolerance`` (a caller that chose its lane by the rung
     does not validate and choose again).
     """
-    if prepared is None:
-        prepared = prepare(spec, inputs, fidelity, tolerance)
-    values, warnings, tol, rung = (
-        prepared.values,
-        prepared.warnings,
-        prepared.tolerance,
-        prepared.rung,
-    )
-    notes = list(prepared.notes)
-    units = spec.units
-    if outputs is None:
-        wanted = spec.scalar_outputs | spec.series_outputs if series else spec.scalar_outputs
-    else:
-        asked_for = set(outputs)
-        unknown = sorted(asked_for - units.keys())
-        if unknown:
-            raise InputOutOfRange(
-                f"unknown output(s) {', '.join(unknown)}; {spec.name} offers "
-                + ", ".join(sorted(units)),
-                field="outputs",
-            )
-        wanted = frozenset(_wanted(spec, asked_for, named=True, series=series))
-    with _arithmetic_refused(spec):  # one numpy error state for the model
+    with _arithmetic_refused(spec):  # one numpy error state for the estimates and the model
+        if prepared is None:
+            prepared = _prepare(spec, inputs, fidelity, tolerance, guarded=True)
+        values, warnings, tol, rung = (
+            prepared.values,
+            prepared.warnings,
+            prepared.tolerance,
+            prepared.rung,
+        )
+        notes = list(prepared.notes)
+        units = spec.units
+        if outputs is None:
+            wanted = spec.scalar_outputs | spec.series_outputs if series else spec.scalar_outputs
+        else:
+            asked_for = set(outputs)
+            unknown = sorted(asked_for - units.keys())
+            if unknown:
+                raise InputOutOfRange(
+                    f"unknown output(s) {', '.join(unknown)}; {spec.name} offers "
+                    + ", ".join(sorted(units)),
+                    field="outputs",
+                )
+            wanted = frozenset(_wanted(spec, asked_for, named=True, series=series))
         start = time.perf_counter()
         ctx = RunContext(
             rung=rung,
@@ -428,12 +484,13 @@ def run(
     scalars: dict[str, Value] = {}
     curves: dict[str, list[float]] = {}
     notes = notes + list(spec.assumptions) + result.notes
+    isfinite = math.isfinite
     for name, value in result.values.items():
         if name not in wanted:
             continue
         kind = type(value)
-        if isinstance(value, float) and kind is float:  # the common case, without a call
-            if not math.isfinite(value):
+        if isinstance(value, float) and kind is float:  # the common case
+            if not isfinite(value):
                 notes.append(f"{name} could not be computed for these inputs (non-finite); null")
                 value = None
         elif not (kind is int or kind is str or kind is bool or value is None):
@@ -465,29 +522,21 @@ def run(
         caveat = ran.estimate_caveat  # a sentence made on each call: made once here
         if not any(caveat in n for n in notes):
             notes.append(caveat)
-    marked = any(OPEN in n for n in notes)
-    return RunResult(
+    keys = (*scalars, *curves)
+    return RunResult._of(
+        spec.levelled(result.checks),
+        notes,
         model=spec.name,
         results=scalars,
-        units={n: units[n] for n in (*scalars, *curves)},
+        units=dict(zip(keys, map(units.__getitem__, keys), strict=True)),
         rung=result.rung,
         error_estimate=error,
         elapsed_s=elapsed,
         inputs=values,
-        checks=[_check_parts(c) for c in spec.levelled(result.checks)],
-        notes=[plain(n) for n in notes] if marked else notes,
-        warnings=[plain(w) for w in warnings + result.warnings],
         series=curves,
         error_kind=error_kind,
-        marked_notes=notes if marked else [],
+        warnings=[plain(w) for w in warnings + result.warnings],
     )
-
-
-def _check_parts(check: Check) -> Check:
-    """``check`` with a plain ``detail``, the marked one kept for its parts."""
-    if OPEN not in check.detail:
-        return check
-    return Check(check.name, check.ok, plain(check.detail), check.level, check.detail)
 
 
 def sweep_values(start: float, stop: float, num: int, scale: str = "linear") -> np.ndarray:

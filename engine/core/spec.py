@@ -140,11 +140,16 @@ class Param:
     def check(self, value: Any) -> Any:
         """Return ``value`` converted to this param's kind, or raise InputOutOfRange."""
         kind = self.kind
-        if kind != "float" and kind != "int":  # numbers first: most inputs are numbers
+        if type(value) is float and kind == "float":  # the common case: a JSON number
+            if not -math.inf < value < math.inf:  # NaN and ±inf
+                raise self._error(value)
+            if value == 0.0:
+                value = 0.0  # fold -0.0
+        elif kind != "float" and kind != "int":  # numbers first: most inputs are numbers
             return self._check_other(value)
-        if isinstance(value, bool) or not isinstance(value, int | float):
+        elif isinstance(value, bool) or not isinstance(value, int | float):
             raise self._error(value)
-        if kind == "int":
+        elif kind == "int":
             if isinstance(value, float):
                 if not value.is_integer():
                     raise self._error(value)
@@ -630,6 +635,7 @@ class ModelSpec:
     _rung_names: tuple[str, ...] = field(init=False, repr=False, compare=False)
     _required: tuple[str, ...] = field(init=False, repr=False, compare=False)
     _index: dict[str, int] = field(init=False, repr=False, compare=False)
+    _advised: frozenset[str] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "path", "/" + self.name.replace(".", "/"))
@@ -642,6 +648,8 @@ class ModelSpec:
             "_rung_names": tuple(r.name for r in self.rungs),
             "_required": tuple(p.name for p in self.inputs if p.required),
             "_index": {p.name: i for i, p in enumerate(self.inputs)},
+            # the numeric inputs with a recommended range: a warning outside it
+            "_advised": frozenset(p.name for p in self.inputs if p.recommended and p.is_numeric),
         }
         for key, value in tables.items():
             object.__setattr__(self, key, value)
@@ -720,7 +728,11 @@ class ModelSpec:
         """``checks`` with each one's :attr:`Check.level` as this model declares it."""
         if not self.advice:
             return checks
-        return [replace(c, level="advice") if c.name in self.advice else c for c in checks]
+        advice = self.advice
+        return [
+            Check(c.name, c.ok, c.detail, "advice", c.marked) if c.name in advice else c
+            for c in checks
+        ]
 
     def param(self, name: str) -> Param:
         return self._params[name]
@@ -762,7 +774,7 @@ class ModelSpec:
         """:meth:`validate` looking only at the inputs given (a request names a few of a
         model's 20–60): defaults copied from the spec's table, each given input checked.
         Raises on the first bad input it meets; :meth:`validate` then finds the one to name."""
-        params = self._params
+        params, advised = self._params, self._advised
         values = dict(self._defaults)  # declaration order; optional inputs at their default
         advice: list[tuple[int, str]] = []
         for name, given in raw.items():
@@ -772,7 +784,7 @@ class ModelSpec:
             if given is None:
                 continue
             value = values[name] = p.check(given)
-            if p.recommended and p.is_numeric:
+            if name in advised:
                 advice.extend((self._index[name], w) for w in p.advice(value))
         for name in self._required:
             if values[name] is None:

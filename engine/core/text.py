@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import math
 import re
+import struct
 from typing import TypedDict
 
 OPEN = "\ue000"
@@ -111,6 +112,13 @@ def _digits_shown(number: str) -> int:
     return max(1, len(mantissa))
 
 
+#: Per display unit: the factor from SI and the unit as written after the number (the
+#: two columns of :data:`DISPLAY` that :func:`q` reads on every call).
+_WRITE: dict[str, tuple[float, str]] = {k: (v[1], v[2]) for k, v in DISPLAY.items()}
+#: A quantity's SI value as the mark carries it: its 8 bytes (little-endian IEEE 754), in hex.
+_DOUBLE = struct.Struct("<d")
+
+
 def q(
     value: float,
     display: str,
@@ -127,38 +135,55 @@ def q(
 
     ``display`` is a key of :data:`DISPLAY`; the SI unit comes from there; ``suffix``
     writes the unit otherwise than :data:`DISPLAY` does (``" N*m"``). The digits the
-    parts carry are those the text shows, at least 3 ("12 mm" written with ``:g`` carries 3,
-    so 0.472 in, not 0.47 in).
+    parts carry are those the text shows, at least 3 and at most ``digits`` ("12 mm"
+    written with ``:g`` carries 3, so 0.472 in, not 0.47 in).
 
     >>> plain(q(23790.0, "kN"))
     '23.8 kN'
     >>> plain(q(0.0012, "mm", 4))
     '1.2 mm'
+    >>> parts(q(0.0012, "mm", 4))[0]["digits"], parts(q(0.001234, "mm", 4))[0]["digits"]
+    (3, 4)
     >>> parts(q(201.4, "N*m", fmt=".0f"))[0]["digits"]
     3
+    >>> parts(q(2014.0, "N*m", fmt=".1f"))[0]["digits"]
+    5
     >>> plain(q(201.4, "N*m", 4, suffix=" N*m"))
     '201.4 N*m'
     """
     value = float(value)
-    spec = fmt or f".{digits}g"
-    number = f"{value * DISPLAY[display][1]:{spec}}"
-    text = number if bare else number + (DISPLAY[display][2] if suffix is None else suffix)
-    # the digits the parts carry are counted when they are asked for (parts()): a request
-    # writes many sentences and reads their parts rarely; "=" marks an explicit format
-    how = spec if fmt is None else "=" + fmt
-    return f"{OPEN}{text}{SEP}{value!r}{SEP}{display}{SEP}{how}{SEP}{'1' if bare else ''}{CLOSE}"
+    factor, unit = _WRITE[display]
+    if fmt is None:
+        number = f"{value * factor:.3g}" if digits == 3 else f"{value * factor:.{digits}g}"
+        # the digits the parts carry: with ``digits`` ≤ 3 (most quantities) they are
+        # ``digits`` whatever the number shows; else parts() counts them in the number
+        # (the text's first characters), at most ``digits``
+        shown = str(digits) if digits <= 3 else f"{digits}:{len(number)}"
+    else:
+        number = f"{value * factor:{fmt}}"
+        shown = f":{len(number)}"  # counted by parts(), no upper limit
+    text = number if bare else number + (unit if suffix is None else suffix)
+    # the SI value travels as the hex of its 8 bytes: exact, and cheaper to write than repr
+    return (
+        f"{OPEN}{text}{SEP}{_DOUBLE.pack(value).hex()}{SEP}{display}{SEP}{shown}{SEP}"
+        f"{'1' if bare else ''}{CLOSE}"
+    )
 
 
-def _shown(value: float, display: str, how: str) -> int:
-    """The significant digits a quantity's parts carry: those its text shows, at least 3,
-    at most the digits asked for (``how`` is ``".4g"``, or ``"=" + fmt`` for a format)."""
-    explicit = how.startswith("=")
-    spec = how[1:] if explicit else how
-    shown = max(3, _digits_shown(_number(value, display, spec)))
-    if not explicit:
-        asked = int(spec[1:-1])
-        shown = min(shown, asked)
-    return shown
+def _digits(shown: str, text: str) -> int:
+    """The digits a quantity's parts carry, from what :func:`q` wrote of them: the number,
+    or ``"<at most>:<characters of the number>"`` to count in ``text`` (at least 3).
+
+    >>> _digits("3", "23.8 kN"), _digits("4:3", "1.2 mm"), _digits("4:5", "1.234 mm")
+    (3, 3, 4)
+    >>> _digits(":6", "2014.0 N·m"), _digits("6:8", "0.001234 mm")
+    (5, 4)
+    """
+    most, counted, length = shown.partition(":")
+    if not counted:
+        return int(most)
+    found = max(3, _digits_shown(text[: int(length)]))
+    return min(found, int(most)) if most else found
 
 
 def plain(sentence: str) -> str:
@@ -175,16 +200,12 @@ def plain(sentence: str) -> str:
     fast = _DATA.sub("", sentence).replace(OPEN, "")
     if SEP not in fast and CLOSE not in fast:
         return fast
-    head, *marked = sentence.split(OPEN)
-    out = [head]
-    for piece in marked:
-        payload, close, rest = piece.partition(CLOSE)
-        fields = payload.split(SEP)
-        if close and len(fields) == 5 and fields[2] in DISPLAY:
-            out += (fields[0], rest)  # a quantity's text is its first field
-        else:  # not a quantity this module wrote, as parts() reads it
-            out.append(piece.replace(SEP, "").replace(CLOSE, ""))
-    return "".join(out)
+    return _joined(parts(sentence))  # stray marks: read as parts() reads them
+
+
+def _joined(ps: Parts) -> str:
+    """The text of a sentence's parts: what a reader sees."""
+    return "".join(p if isinstance(p, str) else p["text"] for p in ps)
 
 
 def parts(sentence: str) -> Parts:
@@ -197,6 +218,8 @@ def parts(sentence: str) -> Parts:
     '12.3…14.5 kN'
     >>> parts("no quantity")
     ['no quantity']
+    >>> parts("a\ue000b" + SEP + "c")  # a stray mark: only dropped
+    ['abc']
     """
     if OPEN not in sentence:
         return [sentence]
@@ -216,16 +239,17 @@ def parts(sentence: str) -> Parts:
             # not a quantity this module wrote: keep what a reader would see
             add(piece.replace(SEP, "").replace(CLOSE, ""))
             continue
-        text, raw, display, how, flag = fields
+        text, raw, display, shown, flag = fields
         try:
-            value = float(raw)
-            digits = _shown(value, display, how) if math.isfinite(value) else 3
-        except ValueError:
+            (value,) = _DOUBLE.unpack(bytes.fromhex(raw))
+            finite = math.isfinite(value)
+            digits = _digits(shown, text) if finite else 3
+        except (ValueError, struct.error):
             add(text + rest)
             continue
         out.append(
             {
-                "value": value if math.isfinite(value) else None,
+                "value": value if finite else None,
                 "unit": DISPLAY[display][0],
                 "display_unit": display,
                 "digits": digits,
@@ -233,7 +257,8 @@ def parts(sentence: str) -> Parts:
                 "bare": flag == "1",
             }
         )
-        add(rest)
+        if rest:  # after a quantity: no text to join it to
+            out.append(rest)
     return out or [""]
 
 
@@ -244,5 +269,7 @@ def split(sentence: str) -> tuple[str, Parts]:
     >>> text, head, quantity["value"], quantity["text"]
     ('F_K = 11.9 kN', 'F_K = ', 11900.0, '11.9 kN')
     """
+    if OPEN not in sentence:
+        return sentence, [sentence]
     ps = parts(sentence)
-    return "".join(p if isinstance(p, str) else p["text"] for p in ps), ps
+    return _joined(ps), ps

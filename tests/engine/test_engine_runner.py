@@ -329,3 +329,28 @@ def test_the_service_validates_an_auto_request_once(monkeypatch: Any) -> None:
     assert answer.status_code == 200, answer.text
     assert answer.json()["rung"] == "simulation"
     assert calls == ["impact.rare"]
+
+
+def test_a_float_input_is_checked_alike_on_the_plain_float_path_and_the_general_one() -> None:
+    """A JSON number (a Python float) takes a shorter path through Param.check; it refuses
+    and converts exactly as the general path does for an int or a numpy float."""
+    from engine.core.spec import Param
+
+    p = Param("x", "m", "a length", minimum=0.0, maximum=1.0, exclusive_minimum=True)
+    for given in (0.5, 1.0, 5e-324):
+        for same in (given, np.float64(given)):
+            got = p.check(same)
+            assert type(got) is float and got == given
+    assert p.check(1) == 1.0 and type(p.check(1)) is float
+    for bad in (0.0, -0.0, 1.0000000001, math.nan, math.inf, -math.inf, np.float64(math.nan)):
+        with pytest.raises(InputOutOfRange) as refused:
+            p.check(bad)
+        assert (
+            refused.value.field == "x"
+            and "must be a finite number > 0 m and ≤ 1 m" in refused.value.message
+        )
+    free = Param("y", "m", "a length")
+    assert math.copysign(1.0, free.check(-0.0)) == 1.0  # -0.0 folded to 0.0
+    assert math.copysign(1.0, free.check(np.float64(-0.0))) == 1.0
+    with pytest.raises(InputOutOfRange):
+        free.check(math.inf)

@@ -121,3 +121,79 @@ def test_a_bolt_note_and_an_as_built_clutch_note_carry_their_quantities() -> Non
     assert qs[4]["display_unit"] == "MPa" and qs[4]["value"] == pytest.approx(
         r.results["spring_stress_at_peak"], rel=1e-12
     )
+
+
+def test_a_quantity_carries_its_exact_value_and_the_digits_its_text_shows() -> None:
+    # the SI value comes back bit for bit, however awkward
+    for value in (0.1 + 0.2, -0.0, 5e-324, 1.7976931348623157e308, -23_790.123456789):
+        (quantity,) = parts(q(value, "N"))
+        assert isinstance(quantity, dict)
+        assert math.copysign(1.0, quantity["value"]) == math.copysign(1.0, value)  # type: ignore[arg-type]
+        assert quantity["value"] == value
+    (inf,) = parts(q(math.inf, "N", fmt=".0f"))
+    assert isinstance(inf, dict) and (inf["value"], inf["digits"], inf["text"]) == (
+        None,
+        3,
+        "inf N",
+    )
+    # digits: those the text shows, at least 3, at most those asked for (written out by hand)
+    cases = [
+        (q(0.0012, "mm", 4), "1.2 mm", 3),  # 1.2 shows 2: at least 3
+        (q(0.001234, "mm", 6), "1.234 mm", 4),  # 1.234 shows 4 of the 6 asked
+        (q(0.0012345678, "mm", 5), "1.2346 mm", 5),  # 5 shown, 5 asked
+        (q(12_345.0, "kN", 2), "12 kN", 2),  # fewer than 3 asked: as asked
+        (q(2014.0, "N*m", fmt=".1f"), "2014.0 N·m", 5),  # a format: all it shows
+        (q(201.4, "N*m", fmt=".0f"), "201 N·m", 3),
+        (q(0.0450, "m", fmt=".4f"), "0.0450 m", 3),  # leading zeros are not digits
+        (q(-1500.0, "N", fmt=".2e"), "-1.50e+03 N", 3),
+    ]
+    for sentence, text, digits in cases:
+        (quantity,) = parts(sentence)
+        assert isinstance(quantity, dict)
+        assert (quantity["text"], quantity["digits"]) == (text, digits), sentence
+
+
+def test_a_run_reads_its_sentences_once_and_as_if_made_at_once() -> None:
+    """engine.run leaves the marks in its sentences until they are first read; what is read
+    then is what plain() and parts() give of the marked sentences, and the result compares,
+    copies and pickles as one made with those values."""
+    import dataclasses
+    import pickle
+
+    spec = get_model("joint.vdi2230")
+    r = engine.run(spec, spec.examples[0])
+    assert "notes" not in vars(r) and "checks" not in vars(r)  # nothing read yet
+    assert r.warnings == [] and "notes" not in vars(r)  # warnings are made at once
+    again = pickle.loads(pickle.dumps(r))  # before the first reading: the marked sentences travel
+    assert r.marked_notes and all("\ue000" not in n for n in r.notes)
+    assert r.notes == [plain(n) for n in r.marked_notes]
+    assert r.notes_parts == [parts(n) for n in r.marked_notes]
+    marked_checks = [c for c in r.checks if c.marked]
+    assert len(marked_checks) >= 5
+    for c in marked_checks:
+        assert c.detail == plain(c.marked) and c.detail_parts == parts(c.marked)
+    made = dataclasses.replace(r)  # every field given, made at once
+    assert made == r and again == r and repr(again) == repr(r)
+    assert made.notes_parts == r.notes_parts
+    with pytest.raises(AttributeError):
+        r.no_such_field  # type: ignore[attr-defined]  # noqa: B018
+
+
+def test_parts_and_plain_read_any_sentence_of_quantities_alike() -> None:
+    """For sentences of quantities and text in any order (a seeded generator), the parts
+    joined are plain()'s text, and no two texts stand side by side. (Stray marks, which no
+    model writes, are left out: there the two still differ, e.g. a stray SEP … CLOSE after a
+    quantity is dropped with its text by plain() and kept by parts().)"""
+    import itertools
+    import random
+
+    pieces = ["a", " ", "", q(1.5, "kN"), q(2.0, "mm", bare=True), q(0.1, "%", 4), q(-0.0, "N")]
+    pieces.append(q(float("nan"), "MPa", fmt=".1f"))
+    rng = random.Random(28)
+    for _ in range(3000):
+        sentence = "".join(rng.choice(pieces) for _ in range(rng.randint(0, 7)))
+        ps = parts(sentence)
+        assert _joined(ps) == plain(sentence), sentence
+        assert all(
+            not (isinstance(a, str) and isinstance(b, str)) for a, b in itertools.pairwise(ps)
+        )
