@@ -140,6 +140,56 @@ class ChunkResult:
     elapsed_s: float
     summary: ChunkSummary | None = None
 
+    def __getstate__(self) -> dict[str, Any]:
+        # a column of one number (a zero-stride view: :func:`one_numbers`) travels as that
+        # number and its length, where pickle would send the length's worth of copies
+        state = dict(self.__dict__)
+        state["values"] = {
+            name: (y[:1].copy(), y.size) if _is_one_number(y) else y
+            for name, y in self.values.items()
+        }
+        return state
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        state["values"] = {
+            name: np.broadcast_to(y[0], (y[1],)) if isinstance(y, tuple) else y
+            for name, y in state["values"].items()
+        }
+        self.__dict__.update(state)
+
+
+def _is_one_number(y: np.ndarray) -> bool:
+    """``y`` is a zero-stride view of one number (:func:`_one_number`)."""
+    return y.ndim == 1 and y.size > 1 and y.strides == (0,)
+
+
+def _one_number(y: np.ndarray) -> np.ndarray | None:
+    """``y`` as a read-only zero-stride view of its first value where every value has its
+    bits (so -0.0 and 0.0 stay apart, and NaNs of other payloads), else None."""
+    if y.ndim != 1 or y.size < 2:
+        return None
+    if _is_one_number(y):
+        return y
+    first = y[:1].copy()
+    same = y.view(np.int64) == first.view(np.int64)[0]
+    return np.broadcast_to(first, y.shape) if bool(same.all()) else None
+
+
+def one_numbers(part: ChunkResult) -> ChunkResult:
+    """``part`` with each output whose chunk is one number (its partial summary's
+    extremes equal, no refused point) as a zero-stride view of it: a chunk sent from a
+    Dask worker then carries a number, not a column of copies (most outputs of a study
+    are not moved by its varied inputs)."""
+    summary = part.summary or summarize_chunk(part).summary
+    assert summary is not None
+    values = dict(part.values)
+    for name, y in values.items():
+        m = summary.moments.get(name)
+        one = _one_number(y) if m is not None and m.count == y.size and m.low == m.high else None
+        if one is not None:
+            values[name] = one
+    return replace(part, values=values)
+
 
 # --------------------------------------------------------------------------- planning
 
@@ -766,11 +816,10 @@ class Columns(Mapping[str, np.ndarray]):
         ``maybe_one`` False: the caller knows the values are not all one number (their
         extremes differ), and they are not compared."""
         y = np.asarray(y, dtype=float)
-        if maybe_one and y.size and y.ndim == 1:
-            first = y[:1].copy()
-            if bool((y.view(np.int64) == first.view(np.int64)[0]).all()):
-                y = np.broadcast_to(first, y.shape)  # one number, to the bit: no memory
-        if y.strides != (0,) and getattr(y.base, "nbytes", 0) > y.nbytes:
+        one = _one_number(y) if maybe_one else None
+        if one is not None:
+            y = one  # one number, to the bit: no memory
+        elif getattr(y.base, "nbytes", 0) > y.nbytes and not _is_one_number(y):
             y = y.copy()  # a view: not the larger array behind it
         self._pieces[name][start] = y
 

@@ -13,8 +13,10 @@ order (a pilot that is no fair sample) and chunks arriving out of order.
 from __future__ import annotations
 
 import math
+import pickle
 from collections import Counter
 from collections.abc import Callable
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -36,6 +38,7 @@ from engine.studies.plan import (
     Variable,
     _quantile_ranks,
     _stats,
+    one_numbers,
     rank_correlations,
     summarize_chunk,
 )
@@ -294,3 +297,39 @@ def test_columns_keep_signed_zeros_and_copy_views() -> None:
     c.put("v", 3, big[3:6])
     assert c.nbytes == 8 * (3 + 3 + 3) and c["v"].tolist() == [0.0, 1.0, 2.0, 3.0, 4.0, 5.0]
     assert all(p.base is None for p in c.pieces("v"))
+
+
+def test_a_chunk_of_one_number_travels_as_that_number() -> None:
+    # what a Dask worker sends back: pickled (the protocol Dask falls back to for a result)
+    size = 65_536
+    spread = np.random.default_rng(40).random(size)
+    zeros = np.zeros(size)
+    zeros[7] = -0.0  # equal to the others, not the same bits: sent whole
+    part = ChunkResult(
+        {"one": np.full(size, 2.5), "spread": spread, "zeros": zeros},
+        {},
+        ["closed_form"] * size,
+        {},
+        0.0,
+    )
+    packed = one_numbers(summarize_chunk(part))
+    assert [y.strides for y in packed.values.values()] == [(0,), (8,), (8,)]
+    alone = len(pickle.dumps(ChunkResult({"spread": spread}, {}, [], {}, 0.0), protocol=5))
+    sent = pickle.dumps(packed, protocol=5)
+    # the one-number column adds a few bytes, where it added 8 bytes a point (512 kB)
+    assert (
+        len(
+            pickle.dumps(
+                replace(packed, values={**packed.values, "one": np.full(size, 2.5)}), protocol=5
+            )
+        )
+        - len(sent)
+        > 8 * size - 1_000
+    )
+    back = pickle.loads(sent)
+    assert len(sent) - alone < 8 * size + 200_000  # zeros, and the rung names
+    for name, y in part.values.items():
+        assert np.array_equal(back.values[name], y) and np.array_equal(
+            np.signbit(back.values[name]), np.signbit(y)
+        )
+    assert back.values["one"].strides == (0,) and back.summary == packed.summary
