@@ -628,7 +628,7 @@ def plan(spec: ModelSpec, study: Study) -> Plan:
         return Plan(columns, matrix.shape[0], outputs, sobol_base=base_n, notes=notes)
     rng = np.random.default_rng(study.seed)
     u = qmc.LatinHypercube(d=k, seed=rng).random(n) if study.method == "lhs" else rng.random((n, k))
-    u = np.clip(u, 1e-12, 1.0 - 1e-12)
+    np.clip(u, 1e-12, 1.0 - 1e-12, out=u)  # in place: a study's draws are held once
     correlation = _correlation_matrix(study)
     if correlation is not None:
         # Gaussian copula: the uniforms' normal scores correlated, then back to uniforms
@@ -700,7 +700,16 @@ def evaluate_chunk(
     deadline = None if deadline_s is None else start + deadline_s
     n = len(next(iter(columns.values())))
     tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
-    values = {o: np.full(n, np.nan) for o in outputs}
+    # each output's column, made NaN (a refused point) only where a part of the chunk or a
+    # point alone fills it: a chunk on one rung's array path takes the model's arrays
+    values: dict[str, np.ndarray] = {}
+
+    def nan_column(name: str) -> np.ndarray:
+        got = values.get(name)
+        if got is None:
+            got = values[name] = np.full(n, np.nan)
+        return got
+
     checks: dict[str, np.ndarray] = {}
     rungs: list[str | None] = [None] * n
     refusals: dict[str, int] = {}
@@ -755,7 +764,7 @@ def evaluate_chunk(
                 if whole:
                     values[name] = np.asarray(column, dtype=float)
                 else:
-                    values[name][sel] = column
+                    nan_column(name)[sel] = column
                 dead &= np.isnan(column)
             if dead.any():
                 key = "not computable on the array path (an infeasible design)"
@@ -798,16 +807,17 @@ def evaluate_chunk(
         for name in outputs:
             v = res.results.get(name)
             if v is not None:
-                values[name][j] = float(v)
+                nan_column(name)[j] = float(v)
         for chk in res.checks:
             arr = checks.get(chk.name)
             if arr is None:
                 arr = checks[chk.name] = np.full(n, CHECK_UNKNOWN, dtype=np.int8)
             arr[j] = CHECK_OK if chk.ok else CHECK_FAILED
-    for name in values:
-        values[name][~valid] = np.nan
+    values = {o: nan_column(o) for o in outputs} | values  # the asked order, every one
     bad = int((~valid).sum())
     if bad:
+        for column in values.values():
+            column[~valid] = np.nan
         refusals["outside an input's declared range"] = bad
     return ChunkResult(values, checks, rungs, refusals, time.perf_counter() - start)
 
