@@ -1,30 +1,39 @@
-"""Benchmark: where a 10⁶-point Monte Carlo study spends its time, and a numpy floor study.
+"""Benchmark: where a 10⁶-point Monte Carlo study spends its time, its memory, a numpy
+floor study, and the HTTP study endpoint against the same study in process.
 
-``python -m bench.study_summary [points]`` (default 10⁶) runs, in process, with every
-scalar output collected (the default outputs):
+``python -m bench.study_summary [points] [--http]`` (default 10⁶; ``--http-only`` for the
+last rows alone) runs, in process, with every scalar output collected (the default
+outputs):
 
 * ``joint.vdi2230``: the friction study of :mod:`bench.extra_joint` (friction box, plate
   thickness and working load scattered);
 * ``preload.tightening``: M12 8.8 with μ_G uniform 0.08…0.16 and μ_K normal (0.12, 0.012);
 
-and prints the split of each, in CPU seconds of this process: points drawn
-(:func:`engine.studies.plan.plan`), model evaluation (the chunks), the chunks' partial
-summaries (:func:`engine.studies.plan.summarize_chunk`, made where a chunk runs: on its
-worker under Dask, here in this process, so counted as summary work), merge (the values
-put in place, each output counted in fine bins, the partials combined), quantiles and
-histograms (``_stats`` of every output: one pass over the few fine bins that hold them,
-exact), rank correlations, the rest of
-:func:`engine.studies.plan.summarize` (extremes, checks, rung counts), and the share the
-partial summaries, merge and summary take of the whole.
+and prints for each, in CPU seconds of this process (medians of :data:`ROUNDS`), the
+share of the whole study (:func:`engine.studies.execute.run_study`) spent beyond drawing
+the points and evaluating the model with each chunk let go at once: the partial
+summaries, the merge, the summary and the first touch of the memory that keeps the raw
+values (target ≤ 30 %); and the phases timed apart: points drawn
+(:func:`engine.studies.plan.plan`), evaluation (chunks let go, and chunks kept), the
+chunks' partial summaries (:func:`engine.studies.plan.summarize_chunk`, made where a
+chunk runs), merge (the chunks kept in the study's columns, each output counted in fine
+bins, the partials combined), quantiles and histograms (exact, from the few fine bins
+that hold them), rank correlations. Then the peak resident memory above the idle process
+against the bytes of the raw values the study keeps (inputs drawn, output chunks not of
+one number), in a fresh process (target ≤ ×1.5).
 
 Beside ``preload.tightening`` it times a numpy floor study: the same laws drawn (inverse
 CDF of the same uniform numbers), the floor's equations (the assembly preload F_M and the
 tightening torque M_A of VDI 2230-1 R7 and R13, through :mod:`engine.physics.preload`),
 and the same summary statistics of those two outputs (count, mean, std, min, max, the
 nine quantiles, the histogram, Spearman's rank correlation with each input on the first
-:data:`~engine.studies.plan.RANK_POINTS` points); the ratio study / floor prints.
+:data:`~engine.studies.plan.RANK_POINTS` points); the ratio study / floor prints
+(target ≤ ×3). Last, the preload study at 10⁵ and 10⁶ points through ``POST …/study`` of
+a service process on loopback (its local Dask cluster warmed by a first study) against
+the same study in this process, wall seconds (target ≤ ×1.3).
 
-``measure()`` gives the same as rows for ``make bench`` (listed in ``bench/run.py``).
+``measure()`` gives the same as rows for ``make bench`` (listed in ``bench/run.py``), each
+with its ratio and target for the targets table.
 """
 
 from __future__ import annotations
@@ -411,14 +420,15 @@ def http_vs_inprocess(
     studies on its local Dask cluster, started and warmed by a first study) against the
     same study run in this process (:class:`~engine.studies.execute.InProcess`), in wall
     seconds (the HTTP study runs in other processes), alternating, medians of ``rounds``."""
+    import socket
     import subprocess
     import tempfile
 
     import httpx
 
-    from tests.service.servers import free_port
-
-    port = free_port()
+    with socket.socket() as probe:  # a free port on loopback
+        probe.bind(("127.0.0.1", 0))
+        port = int(probe.getsockname()[1])
     store = tempfile.mkdtemp(prefix="bench-study-store-")
     env = {**os.environ, "WARM_UP": "0", "STUDY_STORE": store, "PYTHONPATH": str(ROOT)}
     proc = subprocess.Popen(
