@@ -1,37 +1,49 @@
-"""Benchmark: where a 10⁶-point Monte Carlo study spends its time, and a numpy floor study.
+"""Benchmark: where a 10⁶-point Monte Carlo study spends its time, its memory, a numpy
+floor study, and the HTTP study endpoint against the same study in process.
 
-``python -m bench.study_summary [points]`` (default 10⁶) runs, in process, with every
-scalar output collected (the default outputs):
+``python -m bench.study_summary [points] [--http]`` (default 10⁶; ``--http-only`` for the
+last rows alone) runs, in process, with every scalar output collected (the default
+outputs):
 
 * ``joint.vdi2230``: the friction study of :mod:`bench.extra_joint` (friction box, plate
   thickness and working load scattered);
 * ``preload.tightening``: M12 8.8 with μ_G uniform 0.08…0.16 and μ_K normal (0.12, 0.012);
 
-and prints the split of each, in CPU seconds of this process: points drawn
-(:func:`engine.studies.plan.plan`), model evaluation (the chunks), the chunks' partial
-summaries (:func:`engine.studies.plan.summarize_chunk`, made where a chunk runs: on its
-worker under Dask, here in this process, so counted as summary work), merge (the values
-put in place, each output counted in fine bins, the partials combined), quantiles and
-histograms (``_stats`` of every output: one pass over the few fine bins that hold them,
-exact), rank correlations, the rest of
-:func:`engine.studies.plan.summarize` (extremes, checks, rung counts), and the share the
-partial summaries, merge and summary take of the whole.
+and prints for each, in CPU seconds of this process (medians of :data:`ROUNDS`), the
+share of the whole study (:func:`engine.studies.execute.run_study`) spent beyond drawing
+the points and evaluating the model with each chunk let go at once: the partial
+summaries, the merge, the summary and the first touch of the memory that keeps the raw
+values (target ≤ 30 %); and the phases timed apart: points drawn
+(:func:`engine.studies.plan.plan`), evaluation (chunks let go, and chunks kept), the
+chunks' partial summaries (:func:`engine.studies.plan.summarize_chunk`, made where a
+chunk runs), merge (the chunks kept in the study's columns, each output counted in fine
+bins, the partials combined), quantiles and histograms (exact, from the few fine bins
+that hold them), rank correlations. Then the peak resident memory above the idle process
+against the bytes of the raw values the study keeps (inputs drawn, output chunks not of
+one number), in a fresh process (target ≤ ×1.5).
 
 Beside ``preload.tightening`` it times a numpy floor study: the same laws drawn (inverse
 CDF of the same uniform numbers), the floor's equations (the assembly preload F_M and the
 tightening torque M_A of VDI 2230-1 R7 and R13, through :mod:`engine.physics.preload`),
 and the same summary statistics of those two outputs (count, mean, std, min, max, the
 nine quantiles, the histogram, Spearman's rank correlation with each input on the first
-:data:`~engine.studies.plan.RANK_POINTS` points); the ratio study / floor prints.
+:data:`~engine.studies.plan.RANK_POINTS` points); the ratio study / floor prints
+(target ≤ ×3). Last, the preload study at 10⁵ and 10⁶ points through ``POST …/study`` of
+a service process on loopback (its local Dask cluster warmed by a first study) against
+the same study in this process, wall seconds (target ≤ ×1.3).
 
-``measure()`` gives the same as rows for ``make bench`` (listed in ``bench/run.py``).
+``measure()`` gives the same as rows for ``make bench`` (listed in ``bench/run.py``), each
+with its ratio and target for the targets table.
 """
 
 from __future__ import annotations
 
+import os
 import sys
 import time
 from collections.abc import Callable
+from dataclasses import asdict
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -44,6 +56,8 @@ from engine.studies.execute import ChunkArgs, chunk_size, run_study
 from engine.studies.plan import (
     QUANTILES,
     RANK_POINTS,
+    Columns,
+    Plan,
     Study,
     Variable,
     _stats,
@@ -57,10 +71,16 @@ from engine.studies.plan import (
 )
 
 POINTS = 1_000_000
+ROOT = Path(__file__).resolve().parents[1]
 #: The share of a study merge and summary may take (issue 35's target).
 SHARE_TARGET = 0.30
 #: A study's time over its numpy floor study's (issue 35's target).
 FLOOR_RATIO_TARGET = 3.0
+#: A study's peak memory above the idle process over the bytes of the raw values it
+#: keeps (issue 35's target).
+MEMORY_TARGET = 1.5
+#: Rounds of each timing (medians: a shared machine's CPU time still varies with its load).
+ROUNDS = 3
 
 PRELOAD = engine.get_model("preload.tightening")
 #: μ_G's box and μ_K's mean and standard deviation in the preload study.
@@ -102,7 +122,13 @@ def _clock(call: Callable[[], Any]) -> tuple[float, Any]:
 
 
 def split(spec: engine.ModelSpec, study: Study) -> dict[str, float]:
-    """Seconds spent per phase of one in-process study (as :func:`run_study` runs it)."""
+    """Seconds spent per phase of one in-process study (as :func:`run_study` runs it).
+
+    ``evaluate`` is the model's evaluation of every chunk with each chunk let go at once
+    (the physics and nothing kept); ``bookkeeping`` is the rest of the whole study
+    beyond the drawing and that evaluation: the partial summaries, the merge, the summary
+    and the first touch of the memory that keeps the raw values. The phases after
+    ``evaluate`` are timed apart on chunks kept for them."""
     t_plan, p = _clock(lambda: plan(spec, study))
     base = {k: v for k, v in study.base.items() if v is not None}
     slices = chunks(p.n_points, chunk_size(spec, study))
@@ -110,33 +136,98 @@ def split(spec: engine.ModelSpec, study: Study) -> dict[str, float]:
         (spec, base, {k: v[a:b] for k, v in p.columns.items()}, p.outputs, None, None, None)
         for a, b in slices
     ]
-    t_eval, parts = _clock(lambda: [evaluate_chunk(*args) for args in calls])
-    t_partial, parts = _clock(lambda: [summarize_chunk(part) for part in parts])
-    t_merge, merged = _clock(lambda: merge(parts, p.outputs))
-    partial = merged.summary
-    assert partial is not None
-    t_quant, _ = _clock(
-        lambda: [
-            _stats(merged.values[o], study.bins, partial.moments[o], partial.fine.get(o))
-            for o in p.outputs
-        ]
-    )
-    t_rank, _ = _clock(
-        lambda: rank_correlations(p.columns, {o: merged.values[o] for o in p.outputs})
-    )
-    t_summary, _ = _clock(lambda: summarize(spec, study, p, merged))
+
+    def physics() -> None:
+        for args in calls:
+            evaluate_chunk(*args)
+
+    t_eval, _ = _clock(physics)
+    phases = _phases(spec, study, p, calls)  # its chunks let go before the whole study
     t_whole, _ = _clock(lambda: run_study(spec, study))
     return {
         "plan": t_plan,
         "evaluate": t_eval,
+        **phases,
+        "run_study": t_whole,
+        "bookkeeping": max(t_whole - t_plan - t_eval, 0.0),
+    }
+
+
+def _phases(
+    spec: engine.ModelSpec, study: Study, p: Plan, calls: list[ChunkArgs]
+) -> dict[str, float]:
+    """The phases after the evaluation, timed apart on chunks kept for them."""
+    t_kept, parts = _clock(lambda: [evaluate_chunk(*args) for args in calls])
+    t_partial, parts = _clock(lambda: [summarize_chunk(part) for part in parts])
+    t_merge, merged = _clock(lambda: merge(parts, p.outputs))
+    partial = merged.summary
+    assert partial is not None
+    values = merged.values
+    assert isinstance(values, Columns)
+    t_quant, _ = _clock(
+        lambda: [
+            _stats(values.pieces(o), study.bins, partial.moments[o], partial.fine.get(o))
+            for o in p.outputs
+        ]
+    )
+    t_rank, _ = _clock(
+        lambda: rank_correlations(p.columns, {o: values.head(o, RANK_POINTS) for o in p.outputs})
+    )
+    t_summary, _ = _clock(lambda: summarize(spec, study, p, merged))
+    return {
+        "evaluate_kept": t_kept,
         "partials": t_partial,
         "merge": t_merge,
         "quantiles": t_quant,
         "ranks": t_rank,
         "summary_rest": max(t_summary - t_quant - t_rank, 0.0),
         "summary": t_summary,
-        "run_study": t_whole,
     }
+
+
+def memory(model: str, n: int) -> dict[str, float]:
+    """Peak resident memory of a study above the idle process, and the bytes of the raw
+    values it keeps (the drawn inputs and the kept output chunks), in a fresh process
+    (the peak is the process's)."""
+    import json
+    import subprocess
+
+    out = subprocess.run(
+        [sys.executable, "-m", "bench.study_summary", "--memory", model, str(n)],
+        cwd=ROOT,
+        env={**os.environ, "PYTHONPATH": str(ROOT)},
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    got: dict[str, float] = json.loads(out.stdout.strip().splitlines()[-1])
+    return got
+
+
+def _memory_here(model: str, n: int) -> dict[str, float]:
+    import gc
+
+    spec = engine.get_model(model)
+    make = joint_study if model == "joint.vdi2230" else preload_study
+    run_study(spec, make(10_000))  # warm
+    gc.collect()
+    idle = _status_kb("VmRSS") * 1024
+    # the peak from here on, not the imports' (Linux: 5 resets the peak resident size)
+    Path("/proc/self/clear_refs").write_text("5")
+    result = run_study(spec, make(n))
+    peak = _status_kb("VmHWM") * 1024
+    values = result.merged.values
+    assert isinstance(values, Columns)
+    kept = values.nbytes + sum(col.nbytes for col in result.plan.columns.values())
+    return {"above_idle_b": float(peak - idle), "kept_b": float(kept)}
+
+
+def _status_kb(field: str) -> int:
+    """A field of /proc/self/status in kB (VmRSS: resident now, VmHWM: its peak)."""
+    for line in Path("/proc/self/status").read_text().splitlines():
+        if line.startswith(field + ":"):
+            return int(line.split()[1])
+    raise KeyError(field)
 
 
 def _floor_stats(y: np.ndarray, bins: int) -> dict[str, Any]:
@@ -192,24 +283,23 @@ def _row(model: str, case: str, seconds: float, n: int, notes: str, **extra: Any
     }
 
 
-def measure(n: int = POINTS) -> list[dict[str, Any]]:
+def measure(n: int = POINTS, http: bool = True) -> list[dict[str, Any]]:
     rows: list[dict[str, Any]] = []
     for spec, study in (
         (engine.get_model("joint.vdi2230"), joint_study(n)),
         (PRELOAD, preload_study(n)),
     ):
         run_study(spec, type(study)(study.variables, study.base, samples=10_000))  # warm
-        t = split(spec, study)
-        # of the phases run_study goes through (its merge runs inside the evaluation loop,
-        # chunk by chunk, and each chunk's partial summary where the chunk runs, so the
-        # split times them apart); the partials count as summary work wherever they run
-        summarising = t["partials"] + t["merge"] + t["summary"]
-        share = summarising / (t["plan"] + t["evaluate"] + summarising)
+        splits = [split(spec, study) for _ in range(ROUNDS)]
+        t = {k: float(np.median([one[k] for one in splits])) for k in splits[0]}
+        # the median of the rounds' shares (each round's phases under the same load)
+        share = float(np.median([one["bookkeeping"] / one["run_study"] for one in splits]))
         figures = ", ".join(
             f"{k} {t[k]:.3f} s"
             for k in (
                 "plan",
                 "evaluate",
+                "evaluate_kept",
                 "partials",
                 "merge",
                 "quantiles",
@@ -217,35 +307,196 @@ def measure(n: int = POINTS) -> list[dict[str, Any]]:
                 "summary_rest",
             )
         )
-        notes = (
-            f"{figures}; run_study {t['run_study']:.2f} s; partials + merge + summary "
-            f"{100 * share:.0f} % (target ≤ {100 * SHARE_TARGET:.0f} %)"
-        )
-        extra: dict[str, Any] = {"split": t, "share": share, "met": share <= SHARE_TARGET}
-        if spec is PRELOAD:
-            floor_study(10_000)  # warm
-            t_floor, _ = _clock(lambda: floor_study(n))
-            ratio = t["run_study"] / t_floor
-            notes += (
-                f"; numpy floor study {t_floor:.3f} s, study/floor ×{ratio:.1f} "
-                f"(target ≤ ×{FLOOR_RATIO_TARGET:g})"
-            )
-            extra.update(floor_s=t_floor, floor_ratio=ratio)
-            extra["met"] = extra["met"] and ratio <= FLOOR_RATIO_TARGET
+        load = f"load average {os.getloadavg()[0]:.1f}"
+        case = f"{n:,}-point Monte Carlo, every output, in-process"
         rows.append(
             _row(
                 spec.name,
-                f"{n:,}-point Monte Carlo, every output, in-process",
+                case + ": summary and merge",
                 t["run_study"],
                 n,
-                notes,
-                **extra,
+                f"run_study {t['run_study']:.2f} s, of it beyond drawing and evaluation "
+                f"{t['bookkeeping']:.2f} s = {100 * share:.0f} % (target ≤ "
+                f"{100 * SHARE_TARGET:.0f} %); phases: {figures} (CPU s, medians of "
+                f"{ROUNDS}); {load}",
+                split=t,
+                share=share,
+                ratio=share,
+                target_ratio=SHARE_TARGET,
+                met=share <= SHARE_TARGET,
             )
         )
+        mem = memory(spec.name, n)
+        mem_ratio = mem["above_idle_b"] / mem["kept_b"]
+        rows.append(
+            _row(
+                spec.name,
+                case + ": memory",
+                t["run_study"],
+                n,
+                f"peak {mem['above_idle_b'] / 1e6:.0f} MB above the idle process, raw values "
+                f"kept {mem['kept_b'] / 1e6:.0f} MB (inputs drawn and non-constant output "
+                f"chunks), ×{mem_ratio:.2f} (target ≤ ×{MEMORY_TARGET:g})",
+                **mem,
+                ratio=mem_ratio,
+                target_ratio=MEMORY_TARGET,
+                met=mem_ratio <= MEMORY_TARGET,
+            )
+        )
+        if spec is PRELOAD:
+            floor_study(10_000)  # warm
+            t_floor = float(np.median([_clock(lambda: floor_study(n))[0] for _ in range(ROUNDS)]))
+            ratio = t["run_study"] / t_floor
+            rows.append(
+                _row(
+                    spec.name,
+                    case + ": against a numpy floor study",
+                    t["run_study"],
+                    n,
+                    f"study {t['run_study']:.3f} s, numpy floor study {t_floor:.3f} s, "
+                    f"study/floor ×{ratio:.1f} (target ≤ ×{FLOOR_RATIO_TARGET:g}); {load}",
+                    floor_s=t_floor,
+                    floor_ratio=ratio,
+                    ratio=ratio,
+                    target_ratio=FLOOR_RATIO_TARGET,
+                    met=ratio <= FLOOR_RATIO_TARGET,
+                )
+            )
+    if http:
+        rows += http_vs_inprocess()
+    return rows
+
+
+def _body(study: Study) -> dict[str, Any]:
+    """``study`` as the HTTP study endpoint takes it (SI numbers, the laws' fields)."""
+    laws = [
+        {k: v for k, v in asdict(var).items() if v is not None and k in VARIABLE_FIELDS}
+        for var in study.variables
+    ]
+    return {
+        "base": dict(study.base),
+        "variables": laws,
+        "samples": study.samples,
+        "seed": study.seed,
+    }
+
+
+#: The fields of a varied input the HTTP study endpoint reads.
+VARIABLE_FIELDS = ("name", "distribution", "low", "high", "mean", "sd", "mode")
+
+
+def _http_study(base_url: str, path: str, body: dict[str, Any]) -> tuple[float, dict[str, Any]]:
+    """Wall seconds from the POST of a study to its finished job read back, polling its
+    job every :data:`POLL_S`; and the job's result."""
+    import httpx
+
+    t0 = time.perf_counter()
+    with httpx.Client(base_url=base_url, timeout=60.0) as client:
+        posted = client.post(f"/api/v1{path}/study", json=body)
+        posted.raise_for_status()
+        where = posted.headers["location"]
+        while True:
+            job = client.get(where).json()
+            if job["state"] not in ("queued", "running"):
+                break
+            time.sleep(POLL_S)
+    elapsed = time.perf_counter() - t0
+    if job["state"] != "done":
+        raise RuntimeError(f"the study ended {job['state']}: {job.get('error')}")
+    return elapsed, job["result"]
+
+
+#: How often the HTTP measurement polls its job [s] (a client's usual second would
+#: measure the polling, not the study).
+POLL_S = 0.02
+#: The HTTP study over the in-process one, on a warm cluster (issue 35's target).
+HTTP_RATIO_TARGET = 1.3
+
+
+def http_vs_inprocess(
+    sizes: tuple[int, ...] = (100_000, POINTS), rounds: int = 3
+) -> list[dict[str, Any]]:
+    """The preload study through ``POST …/study`` of a service process on loopback (its
+    studies on its local Dask cluster, started and warmed by a first study) against the
+    same study run in this process (:class:`~engine.studies.execute.InProcess`), in wall
+    seconds (the HTTP study runs in other processes), alternating, medians of ``rounds``."""
+    import socket
+    import subprocess
+    import tempfile
+
+    import httpx
+
+    with socket.socket() as probe:  # a free port on loopback
+        probe.bind(("127.0.0.1", 0))
+        port = int(probe.getsockname()[1])
+    store = tempfile.mkdtemp(prefix="bench-study-store-")
+    env = {**os.environ, "WARM_UP": "0", "STUDY_STORE": store, "PYTHONPATH": str(ROOT)}
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "service", "--port", str(port)],
+        cwd=ROOT,
+        env=env,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+    )
+    url = f"http://127.0.0.1:{port}"
+    rows = []
+    try:
+        deadline = time.monotonic() + 120.0
+        while True:
+            try:
+                if httpx.get(f"{url}/readyz", timeout=2).status_code == 200:
+                    break
+            except httpx.HTTPError:
+                pass
+            if time.monotonic() > deadline or proc.poll() is not None:
+                raise RuntimeError("the service did not start")
+            time.sleep(0.2)
+        _http_study(url, PRELOAD.path, _body(preload_study(20_000)))  # the cluster, warm
+        for n in sizes:
+            study = preload_study(n)
+            http, local = [], []
+            for _ in range(rounds):
+                http.append(_http_study(url, PRELOAD.path, _body(study))[0])
+                t0 = time.perf_counter()
+                run_study(PRELOAD, study)
+                local.append(time.perf_counter() - t0)
+            t_http, t_local = float(np.median(http)), float(np.median(local))
+            ratio = t_http / t_local
+            rows.append(
+                _row(
+                    PRELOAD.name,
+                    f"{n:,}-point Monte Carlo through the HTTP study endpoint (warm local "
+                    "Dask cluster) against in-process",
+                    t_http,
+                    n,
+                    f"HTTP {t_http:.2f} s, in-process {t_local:.2f} s (wall, medians of "
+                    f"{rounds}), HTTP/in-process ×{ratio:.2f} (target ≤ ×{HTTP_RATIO_TARGET:g}); "
+                    f"load average {os.getloadavg()[0]:.1f}",
+                    http_s=t_http,
+                    inprocess_s=t_local,
+                    ratio=ratio,
+                    met=ratio <= HTTP_RATIO_TARGET,
+                )
+            )
+    finally:
+        proc.terminate()
+        try:
+            proc.wait(timeout=30)
+        except subprocess.TimeoutExpired:
+            proc.kill()
     return rows
 
 
 if __name__ == "__main__":
-    size = int(sys.argv[1]) if len(sys.argv) > 1 else POINTS
-    for row in measure(size):
+    sizes = [int(a) for a in sys.argv[1:] if a.isdigit()]
+    if "--memory" in sys.argv:  # one study in this fresh process: see memory()
+        import json
+
+        print(json.dumps(_memory_here(sys.argv[2], int(sys.argv[3]))))
+        sys.exit(0)
+    if "--http-only" in sys.argv:
+        rows = http_vs_inprocess()
+    else:
+        rows = measure(sizes[0] if sizes else POINTS, http="--http" in sys.argv)
+    for row in rows:
         print(f"{row['model']:20s} {row['notes']}")

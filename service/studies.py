@@ -71,7 +71,7 @@ from engine.studies.plan import (
     Study,
     Variable,
     plan,
-    points_table,
+    points_blocks,
     study_size,
 )
 
@@ -1047,13 +1047,11 @@ def write_points(path: Path, job_id: str, run: StudyRun) -> None:
     import pyarrow as pa  # imported on first use: the service starts without it loaded
     import pyarrow.parquet as pq
 
-    header, matrix = points_table(run.plan, run.merged)
+    header = [*run.plan.columns, *run.plan.outputs]
     units = {**run.summary.get("input_units", {}), **run.summary.get("units", {})}
-    fields, arrays = [], []
-    for i, name in enumerate(header):
-        col = np.ascontiguousarray(matrix[:, i], dtype=np.float64)
-        arrays.append(pa.array(col, type=pa.float64(), mask=~np.isfinite(col)))
-        fields.append(pa.field(name, pa.float64(), metadata={"unit": units.get(name, "")}))
+    fields = [
+        pa.field(name, pa.float64(), metadata={"unit": units.get(name, "")}) for name in header
+    ]
     schema = pa.schema(
         fields,
         metadata={
@@ -1063,8 +1061,14 @@ def write_points(path: Path, job_id: str, run: StudyRun) -> None:
         },
     )
     partial = path.with_suffix(".partial")
-    table = pa.Table.from_arrays(arrays, schema=schema)
-    pq.write_table(table, partial, row_group_size=ROWS_PER_BLOCK)
+    # a row group at a time, from the study's chunks: no merged table in memory
+    with pq.ParquetWriter(partial, schema) as writer:
+        for block in points_blocks(run.plan, run.merged, ROWS_PER_BLOCK):
+            arrays = []
+            for values in block:
+                col = np.ascontiguousarray(values, dtype=np.float64)
+                arrays.append(pa.array(col, type=pa.float64(), mask=~np.isfinite(col)))
+            writer.write_table(pa.Table.from_arrays(arrays, schema=schema))
     partial.replace(path)
 
 

@@ -54,6 +54,7 @@ from .plan import (
     Study,
     chunks,
     evaluate_chunk,
+    one_numbers,
     plan,
     summarize,
     summarize_chunk,
@@ -97,7 +98,8 @@ class TLSFiles:
 
 @dataclass
 class StudyRun:
-    """A finished study: the summary, the plan and the merged raw values."""
+    """A finished study: the summary, the plan and the raw values (``merged.values``: the
+    chunks' arrays as kept, :class:`~engine.studies.plan.Columns`)."""
 
     summary: dict[str, Any]
     plan: Plan
@@ -228,10 +230,13 @@ def evaluate_remote(
     deadline_s: float | None,
 ) -> ChunkResult:
     """:func:`evaluate_chunk` on a Dask worker, stopped when the study's event is set, with
-    its partial summary (:func:`summarize_chunk`) made there too."""
+    its partial summary (:func:`summarize_chunk`) made there too, and its outputs of one
+    number sent as that number (:func:`one_numbers`)."""
     cancel = RemoteCancel(cancel_name)
-    return summarize_chunk(
-        evaluate_chunk(spec, base, columns, outputs, fidelity, tolerance, deadline_s, cancel)
+    return one_numbers(
+        summarize_chunk(
+            evaluate_chunk(spec, base, columns, outputs, fidelity, tolerance, deadline_s, cancel)
+        )
     )
 
 

@@ -28,7 +28,7 @@ import math
 import threading
 import time
 from collections import Counter
-from collections.abc import Collection, Mapping, Sequence
+from collections.abc import Collection, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -133,12 +133,62 @@ class ChunkResult:
     executor made it; for a merged study, the study's, combined from its chunks'.
     """
 
-    values: dict[str, np.ndarray]
+    values: Mapping[str, np.ndarray]
     checks: dict[str, np.ndarray]
     rungs: list[str | None]
     refusals: dict[str, int]
     elapsed_s: float
     summary: ChunkSummary | None = None
+
+    def __getstate__(self) -> dict[str, Any]:
+        # a column of one number (a zero-stride view: :func:`one_numbers`) travels as that
+        # number and its length, where pickle would send the length's worth of copies
+        state = dict(self.__dict__)
+        state["values"] = {
+            name: (y[:1].copy(), y.size) if _is_one_number(y) else y
+            for name, y in self.values.items()
+        }
+        return state
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        state["values"] = {
+            name: np.broadcast_to(y[0], (y[1],)) if isinstance(y, tuple) else y
+            for name, y in state["values"].items()
+        }
+        self.__dict__.update(state)
+
+
+def _is_one_number(y: np.ndarray) -> bool:
+    """``y`` is a zero-stride view of one number (:func:`_one_number`)."""
+    return y.ndim == 1 and y.size > 1 and y.strides == (0,)
+
+
+def _one_number(y: np.ndarray) -> np.ndarray | None:
+    """``y`` as a read-only zero-stride view of its first value where every value has its
+    bits (so -0.0 and 0.0 stay apart, and NaNs of other payloads), else None."""
+    if y.ndim != 1 or y.size < 2:
+        return None
+    if _is_one_number(y):
+        return y
+    first = y[:1].copy()
+    same = y.view(np.int64) == first.view(np.int64)[0]
+    return np.broadcast_to(first, y.shape) if bool(same.all()) else None
+
+
+def one_numbers(part: ChunkResult) -> ChunkResult:
+    """``part`` with each output whose chunk is one number (its partial summary's
+    extremes equal, no refused point) as a zero-stride view of it: a chunk sent from a
+    Dask worker then carries a number, not a column of copies (most outputs of a study
+    are not moved by its varied inputs)."""
+    summary = part.summary or summarize_chunk(part).summary
+    assert summary is not None
+    values = dict(part.values)
+    for name, y in values.items():
+        m = summary.moments.get(name)
+        one = _one_number(y) if m is not None and m.count == y.size and m.low == m.high else None
+        if one is not None:
+            values[name] = one
+    return replace(part, values=values)
 
 
 # --------------------------------------------------------------------------- planning
@@ -243,6 +293,30 @@ def _transform(param: Param, var: Variable, u: np.ndarray) -> np.ndarray:
     if param.kind == "int":
         x = np.clip(np.round(x), math.ceil(lo), math.floor(hi))
     return x
+
+
+#: Uniform numbers a law's quantile function takes at once while a study is drawn.
+DRAW_BLOCK = 65_536
+
+
+def _transform_blocks(param: Param, var: Variable, u: np.ndarray) -> np.ndarray:
+    """:func:`_transform` of ``u`` :data:`DRAW_BLOCK` numbers at a time into one column:
+    the same numbers (each law's quantile function works number by number), without the
+    temporaries of a quantile function over the whole study at once (scipy's truncated
+    normal held some 250 MB at once for 10⁶ points).
+
+    >>> v = Variable("thread_friction", "normal", mean=0.12, sd=0.012)
+    >>> param = Param("thread_friction", "", "friction", minimum=0.0, maximum=1.0)
+    >>> u = np.random.default_rng(1).random(3 * DRAW_BLOCK + 5)
+    >>> bool((_transform_blocks(param, v, u) == _transform(param, v, u)).all())
+    True
+    """
+    if u.size <= DRAW_BLOCK:
+        return _transform(param, var, u)
+    out = np.empty(u.size)
+    for a in range(0, u.size, DRAW_BLOCK):
+        out[a : a + DRAW_BLOCK] = _transform(param, var, u[a : a + DRAW_BLOCK])
+    return out
 
 
 def _correlation_matrix(study: Study) -> np.ndarray | None:
@@ -554,7 +628,7 @@ def plan(spec: ModelSpec, study: Study) -> Plan:
         return Plan(columns, matrix.shape[0], outputs, sobol_base=base_n, notes=notes)
     rng = np.random.default_rng(study.seed)
     u = qmc.LatinHypercube(d=k, seed=rng).random(n) if study.method == "lhs" else rng.random((n, k))
-    u = np.clip(u, 1e-12, 1.0 - 1e-12)
+    np.clip(u, 1e-12, 1.0 - 1e-12, out=u)  # in place: a study's draws are held once
     correlation = _correlation_matrix(study)
     if correlation is not None:
         # Gaussian copula: the uniforms' normal scores correlated, then back to uniforms
@@ -566,7 +640,7 @@ def plan(spec: ModelSpec, study: Study) -> Plan:
             + (" (the copula mixes the Latin hypercube's strata)" if study.method == "lhs" else "")
         )
     columns = {
-        v.name: _transform(p, v, u[:, i])
+        v.name: _transform_blocks(p, v, u[:, i])
         for i, (p, v) in enumerate(zip(params, study.variables, strict=True))
     }
     _validate_base(spec, study, columns)
@@ -626,7 +700,16 @@ def evaluate_chunk(
     deadline = None if deadline_s is None else start + deadline_s
     n = len(next(iter(columns.values())))
     tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
-    values = {o: np.full(n, np.nan) for o in outputs}
+    # each output's column, made NaN (a refused point) only where a part of the chunk or a
+    # point alone fills it: a chunk on one rung's array path takes the model's arrays
+    values: dict[str, np.ndarray] = {}
+
+    def nan_column(name: str) -> np.ndarray:
+        got = values.get(name)
+        if got is None:
+            got = values[name] = np.full(n, np.nan)
+        return got
+
     checks: dict[str, np.ndarray] = {}
     rungs: list[str | None] = [None] * n
     refusals: dict[str, int] = {}
@@ -681,7 +764,7 @@ def evaluate_chunk(
                 if whole:
                     values[name] = np.asarray(column, dtype=float)
                 else:
-                    values[name][sel] = column
+                    nan_column(name)[sel] = column
                 dead &= np.isnan(column)
             if dead.any():
                 key = "not computable on the array path (an infeasible design)"
@@ -724,26 +807,113 @@ def evaluate_chunk(
         for name in outputs:
             v = res.results.get(name)
             if v is not None:
-                values[name][j] = float(v)
+                nan_column(name)[j] = float(v)
         for chk in res.checks:
             arr = checks.get(chk.name)
             if arr is None:
                 arr = checks[chk.name] = np.full(n, CHECK_UNKNOWN, dtype=np.int8)
             arr[j] = CHECK_OK if chk.ok else CHECK_FAILED
-    for name in values:
-        values[name][~valid] = np.nan
+    values = {o: nan_column(o) for o in outputs} | values  # the asked order, every one
     bad = int((~valid).sum())
     if bad:
+        for column in values.values():
+            column[~valid] = np.nan
         refusals["outside an input's declared range"] = bad
     return ChunkResult(values, checks, rungs, refusals, time.perf_counter() - start)
 
 
-class Merger:
-    """Chunk results gathered, as they arrive, into columns allocated once for the study.
+class Columns(Mapping[str, np.ndarray]):
+    """A study's output columns held as its chunks gave them: no merged copy.
 
-    A chunk is copied into its place and can then be dropped, so a study holds its raw
-    values once (not the chunks and their concatenation side by side), and the copy is
-    spread over the evaluation instead of following it. Checks keep the order
+    Each chunk's array is kept as it arrived (a view of a larger array is copied, so
+    a kept chunk holds its own values alone), and a chunk whose values are all one
+    number, to the last bit, is kept as that number (a read-only broadcast view, no
+    memory): a study's outputs that the varied inputs do not move hold nothing. A column
+    is made whole only when it is asked for by name (``columns[name]``, a new array each
+    time: sensitivity indices, grid maps, a feasibility output); the summary reads the
+    pieces (:meth:`pieces`) and the first points (:meth:`head`) and copies nothing.
+
+    >>> c = Columns(5, ("y",))
+    >>> c.put("y", 3, np.array([7.0, 7.0]))
+    >>> c.put("y", 0, np.array([1.0, 2.0, 3.0]))
+    >>> c["y"].tolist(), c.head("y", 4).tolist(), c.nbytes
+    ([1.0, 2.0, 3.0, 7.0, 7.0], [1.0, 2.0, 3.0, 7.0], 24)
+    """
+
+    def __init__(self, n_points: int, names: Sequence[str]) -> None:
+        self.n_points = n_points
+        self._pieces: dict[str, dict[int, np.ndarray]] = {name: {} for name in names}
+
+    def put(self, name: str, start: int, y: np.ndarray, maybe_one: bool = True) -> None:
+        """Keep ``y``, the values of points ``start`` onward of output ``name``.
+
+        ``maybe_one`` False: the caller knows the values are not all one number (their
+        extremes differ), and they are not compared."""
+        y = np.asarray(y, dtype=float)
+        one = _one_number(y) if maybe_one else None
+        if one is not None:
+            y = one  # one number, to the bit: no memory
+        elif getattr(y.base, "nbytes", 0) > y.nbytes and not _is_one_number(y):
+            y = y.copy()  # a view: not the larger array behind it
+        self._pieces[name][start] = y
+
+    def pieces(self, name: str) -> list[np.ndarray]:
+        """The column's pieces in the points' order (every chunk put)."""
+        got = self._pieces[name]
+        return [got[a] for a in sorted(got)]
+
+    def head(self, name: str, m: int) -> np.ndarray:
+        """The column's first ``m`` values (fewer if it is shorter), copying only those."""
+        out, size = [], 0
+        for piece in self.pieces(name):
+            if size >= m:
+                break
+            out.append(piece[: m - size])
+            size += out[-1].size
+        return np.concatenate(out) if out else np.empty(0)
+
+    def rows(self, name: str, a: int, b: int) -> np.ndarray:
+        """The column's values of points ``a`` to ``b`` (excluded), copying only those.
+
+        >>> c = Columns(5, ("y",))
+        >>> c.put("y", 0, np.arange(3.0)); c.put("y", 3, np.arange(3.0, 5.0))
+        >>> c.rows("y", 2, 4).tolist()
+        [2.0, 3.0]
+        """
+        got = self._pieces[name]
+        out = []
+        for start in sorted(got):
+            piece = got[start]
+            lo, hi = max(a, start), min(b, start + piece.size)
+            if lo < hi:
+                out.append(piece[lo - start : hi - start])
+        return np.concatenate(out) if out else np.empty(0)
+
+    @property
+    def nbytes(self) -> int:
+        """The bytes the kept values take (a one-number chunk takes none)."""
+        return sum(
+            y.nbytes for got in self._pieces.values() for y in got.values() if y.strides != (0,)
+        )
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        pieces = self.pieces(name)
+        return np.concatenate(pieces) if pieces else np.empty(0)
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._pieces)
+
+    def __len__(self) -> int:
+        return len(self._pieces)
+
+
+class Merger:
+    """Chunk results gathered, as they arrive, into the study's :class:`Columns`.
+
+    A chunk's arrays are kept as they are (a chunk of one number as that number), so a
+    study holds its raw values once and copies none of them: a merged copy of every
+    column cost more than the model's evaluation (the first touch of its fresh pages).
+    Checks keep the order
     :func:`merge` gives them (first reported in the earliest chunk first), whatever the
     order the chunks arrive in.
 
@@ -757,7 +927,7 @@ class Merger:
 
     def __init__(self, n_points: int, outputs: Sequence[str]) -> None:
         self.n_points = n_points
-        self.values = {o: np.empty(n_points) for o in outputs}
+        self.values = Columns(n_points, outputs)
         self.checks: dict[str, np.ndarray] = {}
         self._first: dict[str, tuple[int, int]] = {}  # (chunk start, place in its chunk)
         self.rungs: list[str | None] = [None] * n_points
@@ -777,8 +947,10 @@ class Merger:
         if self._gather:
             self._count_fine(part, summary)
         stop = start + len(part.rungs)
-        for name, column in self.values.items():
-            column[start:stop] = part.values[name]
+        for name in self.values:
+            m = summary.moments.get(name)
+            y = part.values[name]
+            self.values.put(name, start, y, m is None or m.count < len(y) or m.low == m.high)
         for place, (name, codes) in enumerate(part.checks.items()):
             dest = self.checks.get(name)
             if dest is None:
@@ -1085,26 +1257,26 @@ class FineCounts:
             self.counts += np.bincount(self.bins(y), minlength=self.counts.size)
 
     def resolve(
-        self, y: np.ndarray, ranks: np.ndarray, edges: np.ndarray
+        self, y: np.ndarray | Sequence[np.ndarray], ranks: np.ndarray, edges: np.ndarray
     ) -> tuple[np.ndarray, np.ndarray] | None:
         """The values of rank ``ranks`` (0-based) and the number of values below each of
-        ``edges``, of the finite values ``y`` whose chunks were all added; None where the
-        bins to look into hold too many of them."""
+        ``edges``, of the finite values ``y`` (an array, or its pieces) whose chunks were
+        all added; None where the bins to look into hold too many of them."""
         if not self.active:
             return None
+        pieces = [y] if isinstance(y, np.ndarray) else y
+        size = sum(piece.size for piece in pieces)
         total = np.cumsum(self.counts)  # values in this bin and the ones below
-        if total[-1] != y.size:  # pragma: no cover - defensive: every chunk is added
+        if total[-1] != size:  # pragma: no cover - defensive: every chunk is added
             return None
         under = total - self.counts  # values in the bins below
         rank_bins = np.searchsorted(total, ranks, side="right")
         edge_bins = self.bins(np.asarray(edges, dtype=float))
         wanted = np.zeros(self.counts.size, dtype=bool)
         wanted[rank_bins] = wanted[edge_bins] = True
-        if self.counts[wanted].sum() > GATHER_SHARE * y.size:
+        if self.counts[wanted].sum() > GATHER_SHARE * size:
             return None
-        kept = np.concatenate(
-            [block[wanted[self.bins(block)]] for block in np.split(y, range(BLOCK, y.size, BLOCK))]
-        )
+        kept = np.concatenate([block[wanted[self.bins(block)]] for block in _blocks(pieces)])
         labels = self.bins(kept)
         found = np.empty(ranks.size)
         for b in np.unique(rank_bins).tolist():
@@ -1120,43 +1292,73 @@ class FineCounts:
         return found, below
 
 
+def _blocks(pieces: Sequence[np.ndarray]) -> Iterator[np.ndarray]:
+    """The values of ``pieces`` in order, :data:`BLOCK` at a time or about (a long piece
+    cut, short ones joined), a piece of one number (:class:`Columns`) as it is."""
+    short: list[np.ndarray] = []
+    held = 0
+    for piece in pieces:
+        if piece.size < BLOCK:
+            short.append(piece)
+            held += piece.size
+            if held >= BLOCK:
+                yield np.concatenate(short)
+                short, held = [], 0
+            continue
+        if short:
+            yield np.concatenate(short)
+            short, held = [], 0
+        yield from np.split(piece, range(BLOCK, piece.size, BLOCK))
+    if short:
+        yield np.concatenate(short)
+
+
 # --------------------------------------------------------------------------- summaries
 
 
 def _stats(
-    column: np.ndarray, bins: int, moments: Moments | None, fine: FineCounts | None = None
+    column: np.ndarray | Sequence[np.ndarray],
+    bins: int,
+    moments: Moments | None,
+    fine: FineCounts | None = None,
 ) -> dict[str, Any]:
-    """One output's summary from its merged ``column`` and its combined ``moments``.
+    """One output's summary from its ``column`` (an array, or its pieces in order,
+    :meth:`Columns.pieces`) and its combined ``moments``.
 
     Count, mean, standard deviation and extremes come from the moments. The histogram
     spans the extremes (its bins are known only once every chunk is in) and the
     quantiles are numpy's; both are found exactly, through the ``fine`` counts where
-    they serve (:meth:`FineCounts.resolve`), else from the whole column.
+    they serve (:meth:`FineCounts.resolve`, piece by piece), else from the whole column.
     """
     if moments is None:
         return {"count": 0}
     lo, hi = moments.low, moments.high
-    finite = column if moments.count == column.size else column[np.isfinite(column)]
+    pieces = [column] if isinstance(column, np.ndarray) else list(column)
+    size = sum(y.size for y in pieces)
+    if moments.count != size:
+        pieces = [y[np.isfinite(y)] for y in pieces]
+    count = moments.count  # the finite values
     try:
         # numpy's edges for the range numpy would find itself (min, max); a constant
         # output (common in a study: one not moved by the varied inputs) has its
         # histogram from one value times the count and every quantile at that value
-        counts, edges = np.histogram(finite[:1], bins=bins, range=(lo, hi))
-        counts *= finite.size
+        counts, edges = np.histogram(np.array([lo]), bins=bins, range=(lo, hi))
+        counts *= count
     except ValueError:  # min and max too close for the bins: one bin around them
-        counts, edges = np.array([finite.size]), np.array([lo, hi])
+        counts, edges = np.array([count]), np.array([lo, hi])
     if lo == hi:
         quantiles = np.full(len(QUANTILES), lo)
     else:
-        ranks = _quantile_ranks(finite.size)
-        got = None if fine is None else fine.resolve(finite, ranks, edges[:-1])
+        ranks = _quantile_ranks(count)
+        got = None if fine is None else fine.resolve(pieces, ranks, edges[:-1])
         if got is None:
+            finite = np.concatenate(pieces)
             counts = np.histogram(finite, bins=edges)[0]
             found = _order_statistics(finite, ranks)
         else:
             found, below = got
-            counts = np.diff(np.r_[below, finite.size])
-        quantiles = _interpolate(finite.size, ranks, found)
+            counts = np.diff(np.r_[below, count])
+        quantiles = _interpolate(count, ranks, found)
     return {
         "count": moments.count,
         "mean": moments.mean,
@@ -1333,11 +1535,11 @@ def rank_correlations(
     """
     if columns and len(next(iter(columns.values()))) > RANK_POINTS:
         columns = {k: v[:RANK_POINTS] for k, v in columns.items()}
-        values = {k: v[:RANK_POINTS] for k, v in values.items()}
     out: dict[str, dict[str, float | None]] = {}
     # per finite mask: the orders known so far and each input's standardised ranks
     known: dict[bytes, tuple[list[np.ndarray], dict[str, np.ndarray]]] = {}
-    for name, y in values.items():
+    for name in values:
+        y = values[name][:RANK_POINTS]  # one output at a time (:func:`_heads` makes it then)
         ok = np.isfinite(y)
         every = bool(ok.all())
         key = b"" if every else np.packbits(ok).tobytes()
@@ -1454,6 +1656,11 @@ def feasible_mask(
     return np.where(failed, CHECK_FAILED, np.where(known, CHECK_OK, CHECK_UNKNOWN)).astype(np.int8)
 
 
+def _pieces(values: Mapping[str, np.ndarray], name: str) -> list[np.ndarray]:
+    """An output's values as pieces: a :class:`Columns`' chunks, else the one array."""
+    return values.pieces(name) if isinstance(values, Columns) else [values[name]]
+
+
 def _none_if_nan(a: np.ndarray) -> list[Any]:
     return [None if not math.isfinite(v) else v for v in a.tolist()]
 
@@ -1467,7 +1674,9 @@ def summarize(spec: ModelSpec, study: Study, p: Plan, merged: ChunkResult) -> di
     partial = merged.summary or summarize_chunk(replace(merged)).summary
     assert partial is not None
     outputs = {
-        name: _stats(merged.values[name], study.bins, partial.moments[name], partial.fine.get(name))
+        name: _stats(
+            _pieces(merged.values, name), study.bins, partial.moments[name], partial.fine.get(name)
+        )
         for name in p.outputs
     }
     feasible = feasible_mask(merged, study.feasible_when, spec.advice)
@@ -1540,7 +1749,7 @@ def summarize(spec: ModelSpec, study: Study, p: Plan, merged: ChunkResult) -> di
         summary["sensitivity"] = {
             "method": "spearman rank correlation"
             + (f" (first {RANK_POINTS:,} points)" if n > RANK_POINTS else ""),
-            "indices": rank_correlations(p.columns, {o: merged.values[o] for o in p.outputs}),
+            "indices": rank_correlations(p.columns, _Heads(merged.values, p.outputs)),
         }
     if p.grid_shape is not None and p.grid_axes is not None:
         summary["grid"] = {
@@ -1555,6 +1764,26 @@ def summarize(spec: ModelSpec, study: Study, p: Plan, merged: ChunkResult) -> di
             "feasible": feasible.reshape(p.grid_shape).tolist(),
         }
     return summary
+
+
+class _Heads(Mapping[str, np.ndarray]):
+    """The first :data:`RANK_POINTS` values of each output (all the ranks look at), each
+    made when asked, copying no more than those from :class:`Columns`: the ranks hold one
+    output's at a time, not every output's at once."""
+
+    def __init__(self, values: Mapping[str, np.ndarray], names: Sequence[str]) -> None:
+        self._values, self._names = values, names
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        if isinstance(self._values, Columns):
+            return self._values.head(name, RANK_POINTS)
+        return self._values[name][:RANK_POINTS]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._names)
+
+    def __len__(self) -> int:
+        return len(self._names)
 
 
 def _rung_counts(rungs: Mapping[str | None, int]) -> dict[str, int]:
@@ -1573,3 +1802,22 @@ def points_table(p: Plan, merged: ChunkResult) -> tuple[list[str], np.ndarray]:
         [*(p.columns[c] for c in p.columns), *(merged.values[o] for o in p.outputs)]
     )
     return header, matrix
+
+
+def points_blocks(p: Plan, merged: ChunkResult, rows: int) -> Iterator[list[np.ndarray]]:
+    """The columns of :func:`points_table`'s matrix, ``rows`` points at a time (the last
+    block shorter): a writer holds one block, never the whole table or a merged column.
+
+    >>> p = Plan({"x": np.arange(5.0)}, 5, ("y",))
+    >>> m = ChunkResult({"y": 10 * np.arange(5.0)}, {}, [None] * 5, {}, 0.0)
+    >>> [[c.tolist() for c in block] for block in points_blocks(p, m, 3)]
+    [[[0.0, 1.0, 2.0], [0.0, 10.0, 20.0]], [[3.0, 4.0], [30.0, 40.0]]]
+    """
+    values = merged.values
+    for a in range(0, p.n_points, rows):
+        b = min(a + rows, p.n_points)
+        outs = [
+            values.rows(o, a, b) if isinstance(values, Columns) else values[o][a:b]
+            for o in p.outputs
+        ]
+        yield [*(p.columns[c][a:b] for c in p.columns), *outs]

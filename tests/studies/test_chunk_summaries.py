@@ -13,8 +13,10 @@ order (a pilot that is no fair sample) and chunks arriving out of order.
 from __future__ import annotations
 
 import math
+import pickle
 from collections import Counter
 from collections.abc import Callable
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -29,12 +31,14 @@ from engine.studies.plan import (
     GATHER_POINTS,
     QUANTILES,
     ChunkResult,
+    Columns,
     Merger,
     Moments,
     Study,
     Variable,
     _quantile_ranks,
     _stats,
+    one_numbers,
     rank_correlations,
     summarize_chunk,
 )
@@ -62,6 +66,8 @@ def _laws() -> dict[str, Callable[[np.random.Generator], np.ndarray]]:
         # in order: the first chunk sees only the lowest quarter
         "sorted": lambda g: np.sort(g.random(N)),
         "constant": lambda g: np.full(N, 0.1),
+        # the first two chunks at one value (kept as that number), the rest spread
+        "steps": lambda g: np.where(np.arange(N) < 2 * CHUNK, 2.0, 2.0 + g.random(N)),
     }
 
 
@@ -83,13 +89,15 @@ def _merged(y: np.ndarray, order: list[int] | None = None) -> ChunkResult:
     return merger.result()
 
 
+@pytest.mark.parametrize("whole", [False, True], ids=["pieces", "column"])
 @pytest.mark.parametrize("law", list(_laws()))
-def test_quantiles_and_histogram_are_numpys_to_the_last_bit(law: str) -> None:
+def test_quantiles_and_histogram_are_numpys_to_the_last_bit(law: str, whole: bool) -> None:
     y = _laws()[law](np.random.default_rng(35))
     merged = _merged(y, order=[2, 0, 3, 1])  # as a cluster might deliver them
     summary = merged.summary
-    assert summary is not None
-    got = _stats(merged.values["y"], BINS, summary.moments["y"], summary.fine.get("y"))
+    assert summary is not None and isinstance(merged.values, Columns)
+    column = merged.values["y"] if whole else merged.values.pieces("y")
+    got = _stats(column, BINS, summary.moments["y"], summary.fine.get("y"))
     finite = y[np.isfinite(y)]
     assert list(got["quantiles"].values()) == np.quantile(finite, QUANTILES).tolist()
     counts, edges = np.histogram(finite, BINS)
@@ -253,9 +261,75 @@ def test_an_output_that_barely_moves_keeps_its_spread() -> None:
     merger = Merger(4 * size, ("y",))
     for i, c in enumerate(chunks):
         merger.add(i * size, summarize_chunk(ChunkResult({"y": c}, {}, ["r"] * size, {}, 0.0)))
-    got = merger.result().summary.moments["y"].std
+    summary = merger.result().summary
+    assert summary is not None
+    moments = summary.moments["y"]
+    assert moments is not None
+    got = moments.std
     y = np.concatenate(chunks)
     exact_values = [Fraction(v) for v in y.tolist()]
     mu = sum(exact_values) / len(exact_values)
     exact = math.sqrt(float(sum((v - mu) ** 2 for v in exact_values) / (len(y) - 1)))
     assert abs(got - exact) <= 1e-10 * exact
+
+
+def test_columns_keep_each_chunk_once_and_a_one_number_chunk_as_that_number() -> None:
+    y = _laws()["steps"](np.random.default_rng(39))
+    merged = _merged(y, order=[3, 1, 0, 2])
+    values = merged.values
+    assert isinstance(values, Columns)
+    # the two chunks at 2.0 take no memory: only the other two chunks' 8-byte values
+    assert values.nbytes == 8 * (N - 2 * CHUNK)
+    assert [p.strides for p in values.pieces("y")[:2]] == [(0,), (0,)]
+    assert np.array_equal(values["y"], y)
+    assert np.array_equal(values.head("y", CHUNK + 5), y[: CHUNK + 5])
+    assert np.array_equal(values.head("y", 10 * N), y)
+
+
+def test_columns_keep_signed_zeros_and_copy_views() -> None:
+    c = Columns(6, ("z", "v"))
+    z = np.array([0.0, -0.0, 0.0])  # equal, not the same bits: kept as they are
+    c.put("z", 0, z)
+    c.put("z", 3, np.full(3, -0.0))  # one number to the bit: no memory
+    assert np.signbit(c["z"]).tolist() == [False, True, False, True, True, True]
+    big = np.arange(12.0)
+    c.put("v", 0, big[:3])  # a view of a larger array: copied, the larger one let go
+    c.put("v", 3, big[3:6])
+    assert c.nbytes == 8 * (3 + 3 + 3) and c["v"].tolist() == [0.0, 1.0, 2.0, 3.0, 4.0, 5.0]
+    assert all(p.base is None for p in c.pieces("v"))
+
+
+def test_a_chunk_of_one_number_travels_as_that_number() -> None:
+    # what a Dask worker sends back: pickled (the protocol Dask falls back to for a result)
+    size = 65_536
+    spread = np.random.default_rng(40).random(size)
+    zeros = np.zeros(size)
+    zeros[7] = -0.0  # equal to the others, not the same bits: sent whole
+    part = ChunkResult(
+        {"one": np.full(size, 2.5), "spread": spread, "zeros": zeros},
+        {},
+        ["closed_form"] * size,
+        {},
+        0.0,
+    )
+    packed = one_numbers(summarize_chunk(part))
+    assert [y.strides for y in packed.values.values()] == [(0,), (8,), (8,)]
+    alone = len(pickle.dumps(ChunkResult({"spread": spread}, {}, [], {}, 0.0), protocol=5))
+    sent = pickle.dumps(packed, protocol=5)
+    # the one-number column adds a few bytes, where it added 8 bytes a point (512 kB)
+    assert (
+        len(
+            pickle.dumps(
+                replace(packed, values={**packed.values, "one": np.full(size, 2.5)}), protocol=5
+            )
+        )
+        - len(sent)
+        > 8 * size - 1_000
+    )
+    back = pickle.loads(sent)
+    assert len(sent) - alone < 8 * size + 200_000  # zeros, and the rung names
+    for name, y in part.values.items():
+        assert np.array_equal(back.values[name], y) and np.array_equal(
+            np.signbit(back.values[name]), np.signbit(y)
+        )
+    assert back.values["one"].strides == (0,) and back.summary == packed.summary
