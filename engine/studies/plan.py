@@ -36,7 +36,7 @@ import numpy as np
 
 from ..core.errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange
 from ..core.points import at, auto_index, in_range, rung_estimates, take, vector
-from ..core.runner import DEFAULT_TOLERANCE, choose_rung, run
+from ..core.runner import DEFAULT_BUDGET_S, DEFAULT_TOLERANCE, choose_rung, run
 from ..core.spec import ModelSpec, Param, Scratch
 from ..numerics import laws
 from ..numerics.lazy import LazyModule
@@ -787,6 +787,8 @@ def evaluate_chunk(
                 f"a chunk of the study ran past its {deadline_s:g} s budget", field="samples"
             )
         point = at(x, n, j)
+        # a point has the budget it would have alone, or what is left of the chunk's
+        left = None if deadline is None else max(deadline - time.perf_counter(), 1e-3)
         try:
             res = run(
                 spec,
@@ -794,11 +796,21 @@ def evaluate_chunk(
                 fidelity=asked,
                 tolerance=tol,
                 outputs=outputs,
-                budget_s=None if deadline is None else max(deadline - time.perf_counter(), 1e-3),
+                budget_s=DEFAULT_BUDGET_S if left is None else min(left, DEFAULT_BUDGET_S),
                 cancel=cancel,
             )
         except Cancelled:
             break
+        except BudgetExceeded as exc:
+            if left is not None and left < DEFAULT_BUDGET_S:
+                # the chunk's time ran out, not the point's own budget: a refusal here would
+                # depend on the machine's load, so the chunk stops as its budget says
+                raise BudgetExceeded(
+                    f"a chunk of the study ran past its {deadline_s:g} s budget", field="samples"
+                ) from exc
+            key = type(exc).__name__ + ": " + exc.message.split(":")[0][:120]
+            refusals[key] = refusals.get(key, 0) + 1
+            continue
         except EngineError as exc:
             key = type(exc).__name__ + ": " + exc.message.split(":")[0][:120]
             refusals[key] = refusals.get(key, 0) + 1
