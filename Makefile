@@ -71,8 +71,15 @@ check: test
 FAST := not slow and not browser and not install and not fuzz
 # The lanes' timing tests under load are `slow` (tests/conftest.py: SLOW_ITEMS): they time
 # the service against an idle run and cannot share the CPU with a second worker.
+# PYTHONDONTWRITEBYTECODE is emptied for this loop alone: with it set, each of the three
+# pytest processes compiles every module again and pytest rewrites every test module's
+# asserts again (about 7 s of CPU per worker, every run); the .pyc files are git-ignored.
+# The schemathesis plugin serves the fuzz module alone, which this loop does not collect.
+# Work stealing keeps the two workers' shares even to the end (with --dist load, one worker
+# ran about 10 % longer than the other).
 test-fast: $(VENV)/.installed-dev
-	PY=$(BIN)/python scripts/check -q -m "$(FAST)" --hypothesis-profile=fast -n 2 \
+	PYTHONDONTWRITEBYTECODE= PY=$(BIN)/python scripts/check -q -m "$(FAST)" \
+		--hypothesis-profile=fast -n 2 --dist worksteal -p no:schemathesis \
 		--ignore=tests/service/test_fuzz.py
 
 # Mutation testing of engine/physics and engine/procedures, each module against its own tests

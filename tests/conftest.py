@@ -9,12 +9,15 @@ Layout: ``tests/engine`` (runner, spec, sources, layout), ``tests/service``
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import pytest
-from fastapi.testclient import TestClient
 from hypothesis import settings
 
-from service import create_app
-from tests.toys import TOY
+from tests.apps import real_client
+
+if TYPE_CHECKING:
+    from fastapi.testclient import TestClient
 
 # Hypothesis budgets. `make test` (CI) runs every property test at the budget its file sets;
 # `make test-fast` passes --hypothesis-profile=fast, which caps every property test at a few
@@ -59,18 +62,23 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
 @pytest.fixture(scope="session")
 def client() -> TestClient:
     """The real app with every registered model."""
-    return TestClient(create_app())
+    return real_client()
 
 
 @pytest.fixture(scope="session")
 def api() -> TestClient:
     """The real app, answering a model's crash with a 500 instead of raising it."""
-    return TestClient(create_app(), raise_server_exceptions=False)
+    return real_client(raise_server_exceptions=False)
 
 
 @pytest.fixture(scope="module")
 def toy() -> TestClient:
     """The app over the ``toy.disc`` model alone (modules may override it)."""
+    from fastapi.testclient import TestClient
+
+    from service import create_app
+    from tests.toys import TOY
+
     return TestClient(create_app(models=[TOY]), raise_server_exceptions=False)
 
 

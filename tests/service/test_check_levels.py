@@ -11,7 +11,7 @@ from fastapi.testclient import TestClient
 
 import engine
 from engine.models import MODELS, get_model
-from service import create_app
+from tests.apps import real_client
 
 #: The joint of the issue: M12 8.8, 2 x 20 mm steel, torque wrench, mu 0.10-0.16,
 #: F_A 0...10 kN, no transverse load.
@@ -31,8 +31,8 @@ ISSUE_JOINT: dict[str, Any] = {
 
 @pytest.fixture(scope="module")
 def client() -> Any:
-    with TestClient(create_app()) as c:
-        yield c
+    """The session's real app (tests/apps.py), not one more built for this module."""
+    return real_client()
 
 
 def test_the_issue_joint_passes_every_vdi_requirement_and_warns_of_the_rule_of_thumb() -> None:

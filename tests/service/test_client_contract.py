@@ -19,6 +19,7 @@ from fastapi.testclient import TestClient
 
 from service import create_app
 from service.studies import StudySettings
+from tests.apps import real_client
 from tests.toys import TOY
 
 NAME = re.compile(r"[a-z][a-z0-9_]*")
@@ -40,8 +41,8 @@ def _operations(schema: dict[str, Any]) -> dict[tuple[str, str], str]:
 
 
 def test_every_operation_has_a_chosen_name() -> None:
-    with TestClient(create_app()) as c:  # every real model's routes, as a client sees them
-        ops = _operations(c.get("/openapi.json").json())
+    # every real model's routes, as a client sees them (the app the session shares)
+    ops = _operations(real_client().get("/openapi.json").json())
     names = list(ops.values())
     assert len(names) == len(set(names))
     for (method, path), name in ops.items():

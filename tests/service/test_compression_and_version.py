@@ -13,19 +13,12 @@ from typing import Any
 import pytest
 from fastapi.testclient import TestClient
 
-from service import create_app
 from service.main import GZIP_MINIMUM_BYTES, product_commit
 
 ROOT = Path(__file__).resolve().parents[2]
 VERSION = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["version"]
 GZIP = {"accept-encoding": "gzip"}
 PLAIN = {"accept-encoding": "identity"}
-
-
-@pytest.fixture(scope="module")
-def client() -> Any:
-    with TestClient(create_app()) as c:
-        yield c
 
 
 def _raw(client: TestClient, path: str, headers: dict[str, str]) -> Any:

@@ -21,6 +21,7 @@ import engine
 from engine import RunContext
 from service import create_app
 from service.config import Settings
+from tests.apps import real_client
 from tests.toys import TOY, TOY_CRASH
 
 BIG_INT = "9" * 400  # an integer literal of 309-4300 digits: float() overflows
@@ -59,8 +60,8 @@ REPRODUCTIONS: list[tuple[str, str, str]] = [
 
 @pytest.fixture(scope="module")
 def real() -> TestClient:
-    app = create_app(settings=Settings(warm_up=False, access_log=False))
-    return TestClient(app, raise_server_exceptions=False)
+    """The session's real app (tests/apps.py), not one more built for this module."""
+    return real_client(raise_server_exceptions=False)
 
 
 @pytest.mark.parametrize(("path", "body", "field"), REPRODUCTIONS)

@@ -15,17 +15,17 @@ from fastapi.testclient import TestClient
 import engine
 from engine.core.runner import SweepResult
 from engine.models import MODELS
-from service import create_app
 from service.api import _sweep_answer
-from service.config import Settings
 from service.schemas import SweepResponse
+from tests.apps import real_client
 
 POINTS = 41
 
 
 @pytest.fixture(scope="module")
 def client() -> TestClient:
-    return TestClient(create_app(settings=Settings(warm_up=False, access_log=False)))
+    """The session's real app (tests/apps.py), not one more built for this module."""
+    return real_client()
 
 
 def _case(spec: engine.ModelSpec) -> tuple[dict[str, Any], str, float, float] | None:

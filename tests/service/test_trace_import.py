@@ -13,8 +13,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 from engine.models.trace import M12_JOINT
-from service import create_app
-from service.config import Settings
+from tests.apps import real_client
 
 URL = "/api/v1/trace/import"
 DATA = Path(__file__).resolve().parents[1] / "data"
@@ -38,8 +37,8 @@ CSV = {
 
 @pytest.fixture(scope="module")
 def real() -> TestClient:
-    app = create_app(settings=Settings(warm_up=False, access_log=False))
-    return TestClient(app, raise_server_exceptions=False)
+    """The session's real app (tests/apps.py), not one more built for this module."""
+    return real_client(raise_server_exceptions=False)
 
 
 def _text(name: str) -> str:

@@ -12,11 +12,14 @@ result after eq. 3), through the sweep endpoint a user would call.
 import math
 
 import pytest
-from fastapi.testclient import TestClient
 
-from service import create_app
+from tests.apps import real_client
 
-APP = TestClient(create_app(), raise_server_exceptions=False)
+
+def app():
+    """The real app's client, built once per test process when a test first asks for it."""
+    return real_client(raise_server_exceptions=False)
+
 
 G, D, IP, D0, NB, KR = 8e10, 0.045, 5.0, 0.05, 4, 0.85
 ALPHA = math.radians(45.0)
@@ -46,7 +49,7 @@ def paper_torque(d0, delta):
 
 
 def sweep(delta_mm, arrangement):
-    r = APP.post(
+    r = app().post(
         "/api/v1/clutch/ball/sweep",
         json={
             "base": {
@@ -66,14 +69,14 @@ def sweep(delta_mm, arrangement):
 
 
 def test_worked_case_single_point():
-    r = APP.post("/api/v1/clutch/ball", json=PAPER)
+    r = app().post("/api/v1/clutch/ball", json=PAPER)
     assert r.status_code == 200, r.text
     res = r.json()["results"]
     # eq. 2: 8e10·(4e-3)⁴·4e-3/(8·0.045³·5) = 0.08192/3.645e-3 = 22.474623 N
     assert res["spring_force"] == pytest.approx(22.474623, rel=1e-7)
     # common spring (fig. 1): 0.05·22.474623/2 = 0.5618656 N·m
     assert res["torque_limit"] == pytest.approx(0.5618656, rel=1e-6)
-    per_ball = APP.post("/api/v1/clutch/ball", json={**PAPER, "spring_arrangement": "per_ball"})
+    per_ball = app().post("/api/v1/clutch/ball", json={**PAPER, "spring_arrangement": "per_ball"})
     # the paper's formula: 3.4 × 0.5618656 = 1.9103429 N·m
     assert per_ball.json()["results"]["torque_limit"] == pytest.approx(
         paper_torque(4e-3, 4e-3), rel=1e-12
@@ -117,7 +120,7 @@ def test_worked_case_stress_at_the_peak_force():
     compresses the spring by another Δ, so the spring reaches c(Δ + Δ) = 44.95 N at the
     peak torque and the wire stress doubles, 45.38 → 90.77 MPa (Wahl-corrected); rolling
     over the rim adds (d/2)(1 − sin 45°) = 1.46 mm more, 107.4 MPa on the face."""
-    r = APP.post("/api/v1/clutch/ball", json={**PAPER, "series": True})
+    r = app().post("/api/v1/clutch/ball", json={**PAPER, "series": True})
     assert r.status_code == 200, r.text
     body = r.json()
     res = body["results"]

@@ -5,21 +5,19 @@ import math
 
 import numpy as np
 import pytest
-from fastapi.testclient import TestClient
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import engine
 from engine.models.clutch import BALL_CLUTCH, BALL_CLUTCH_SETTING
-from service import create_app
+from tests.apps import real_client
 
 DEG = math.pi / 180.0
-APP = TestClient(create_app(), raise_server_exceptions=False)
 PAPER = dict(BALL_CLUTCH.examples[0])
 
 
 def post(path, body):
-    return APP.post("/api/v1/clutch/ball" + path, json=body)
+    return real_client(raise_server_exceptions=False).post("/api/v1/clutch/ball" + path, json=body)
 
 
 def checks(body):
