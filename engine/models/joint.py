@@ -975,6 +975,7 @@ def _solve(
             )
     sections = [(l_shank, shank_d), (l_reduced, reduced_d)]
     free_thread = _larger(grip - l_shank - l_reduced, 0.0)
+    e_nut = col_or("nut_youngs_modulus", _tapped_modulus(x))  # E_M (None: E_S)
     bolt_c = jt.bolt_compliance(
         d,
         b["minor_diameter"],
@@ -983,7 +984,7 @@ def _solve(
         free_thread,
         str(x["head"]),
         joint_type,
-        col_or("nut_youngs_modulus", _tapped_modulus(x)),
+        e_nut,
     )
     own_outers = outers if any(o is not None for o in outers) else None
     parts = jt.clamped_compliance(
@@ -1044,7 +1045,7 @@ def _solve(
             free_thread,
             str(x["head"]),
             joint_type,
-            col_or("nut_youngs_modulus", _tapped_modulus(x)),
+            e_nut,
         )
         area_d, inertia_t = jt.interface_section(b_t, c_t, d_h)
         # the clamp force must act inside the interface's kern, or the preload alone lifts u
@@ -1374,13 +1375,9 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
     # validated numeric inputs are Python numbers already: read them as they are
     s = _solve(x, x.__getitem__, b, _Refusals(np.False_, many=False))
-    for name in (
-        *_SCALARS,
-        "_alpha_req",
-        "_fa_sep_any",
-        "_f_kr_raw",
-    ):  # Python floats out (some are numpy's)
-        s[name] = float(s[name])
+    for name in _FLOATED:  # Python floats out (some are numpy's)
+        if type(s[name]) is not float:
+            s[name] = float(s[name])
     warnings: list[str] = []
     d = bolt.diameter
     f_mzul, fm_min, fm_max = (
@@ -1421,7 +1418,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         warnings.append(
             f"plates very thin against d_W: the cone tangent is held at {jt.MIN_CONE_TANGENT}"
         )
-    own = [i for i in range(2, MAX_PLATES + 1) if x.get(f"plate{i}_outer_diameter") is not None]
+    own = [i for i, _, _, _, name in _PLATE_FIELDS[1:] if x.get(name) is not None]
     if own:
         notes.append(
             "D_A per plate: plate "
@@ -2313,6 +2310,10 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
 
 #: The scalar outputs, in declaration order.
 _SCALARS: tuple[str, ...] = tuple(o.name for o in JOINT_OUTPUTS if not o.series)
+
+#: What a single design hands on as Python floats: the outputs and the intermediate values
+#: its sentences and series read.
+_FLOATED = (*_SCALARS, "_alpha_req", "_fa_sep_any", "_f_kr_raw")
 
 #: Outputs only an eccentric joint (interface given) or a fitted bolt has.
 _GIVEN_ONLY = (

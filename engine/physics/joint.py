@@ -692,7 +692,12 @@ def clamped_compliance(
     # the nut's half-cone takes its angle from the nut side's D_A (the last plate of some
     # thickness), as the head's from the head side's: a mirrored joint gives the same δ_P
     tan_nut = tan
-    if joint == "through" and tangent is None and any(o is not None for o in own):
+    if (
+        joint == "through"
+        and tangent is None
+        and plate_outer_diameters
+        and any(o is not None for o in own)
+    ):
         nut_outer = outer
         for h, cap in zip(thicknesses, caps, strict=True):
             nut_outer = _where(h > 0.0, cap, nut_outer)
