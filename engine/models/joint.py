@@ -676,6 +676,8 @@ _TOO_WIDE = "{0} = {1:g} mm exceeds the thread diameter d = {2:g} mm: must be �
 
 
 def _larger(a: Any, b: Any) -> Any:
+    if type(a) is float and type(b) is float:  # one design: what max(a, b) returns
+        return b if b > a else a
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
         return np.maximum(a, b)
     return max(a, b)
@@ -1375,7 +1377,13 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
     # validated numeric inputs are Python numbers already: read them as they are
     s = _solve(x, x.__getitem__, b, _Refusals(np.False_, many=False))
-    for name in _FLOATED:  # Python floats out (some are numpy's)
+    values: dict[str, Any] = {}
+    for name in _SCALARS:  # Python floats out (some are numpy's)
+        value = s[name]
+        if type(value) is not float:
+            s[name] = value = float(value)
+        values[name] = value
+    for name in _READ_AS_FLOATS:
         if type(s[name]) is not float:
             s[name] = float(s[name])
     warnings: list[str] = []
@@ -1521,7 +1529,6 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "stripping (VDI R11) are not checked by this model yet"
         )
 
-    values: dict[str, Any] = {name: s[name] for name in _SCALARS}
     if not math.isfinite(values["nut_stripping_force"]):
         del values["nut_stripping_force"]  # the nut pairs with the bolt, or there is none
     for name in _GIVEN_ONLY:
@@ -1713,9 +1720,6 @@ def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[s
         f"{_kn(s['max_bolt_force'])} vs R_p0.2 = {q(s['_yield_t'], 'MPa', 4)}"
         + ("" if x.get("service_temperature") is None else " at the service temperature")
         + f": S_F = {s_f:.3g} (≥ 1.0)",
-        "R9_fatigue": "σ_a = Φ_n (F_A,max − F_A,min)/(2 A_S) = "
-        f"{q(s['stress_amplitude'], 'MPa')} vs σ_AS = {q(s['endurance_limit'], 'MPa')}: "
-        f"S_D = {s['fatigue_safety']:.3g} (VDI asks ≥ 1.2)",
         "R12_slip": "S_G = F_KR,min q_F μ_T / (F_Q + M_Y q_F/(q_M r_a)) = "
         f"{s['slip_safety']:.3g} (VDI asks ≥ {need:g} "
         f"for {'alternating' if need > 1.2 else 'static'} load)",
@@ -1724,6 +1728,12 @@ def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[s
         f"({why}); VDI 2230 R7 instead limits the equivalent stress to ν R_p0.2 (ν = {nu:g}), "
         "which allows more",
     }
+    if s["_checks"]["R9_fatigue"][0]:  # a static load has no R9 check (nor its sentence)
+        out["R9_fatigue"] = (
+            "σ_a = Φ_n (F_A,max − F_A,min)/(2 A_S) = "
+            f"{q(s['stress_amplitude'], 'MPa')} vs σ_AS = {q(s['endurance_limit'], 'MPa')}: "
+            f"S_D = {s['fatigue_safety']:.3g} (VDI asks ≥ 1.2)"
+        )
     if "R12_fitted_shear" in s["_checks"] and s["_checks"]["R12_fitted_shear"][0]:
         out["R12_fitted_shear"] = (
             f"fitted shank: τ_Q = F_Q/(q_F A_τ) = {q(s['fitted_shear_stress'], 'MPa', 4)} vs "
@@ -2311,9 +2321,8 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
 #: The scalar outputs, in declaration order.
 _SCALARS: tuple[str, ...] = tuple(o.name for o in JOINT_OUTPUTS if not o.series)
 
-#: What a single design hands on as Python floats: the outputs and the intermediate values
-#: its sentences and series read.
-_FLOATED = (*_SCALARS, "_alpha_req", "_fa_sep_any", "_f_kr_raw")
+#: The intermediate values a single design's sentences and series read, as Python floats.
+_READ_AS_FLOATS = ("_alpha_req", "_fa_sep_any", "_f_kr_raw")
 
 #: Outputs only an eccentric joint (interface given) or a fitted bolt has.
 _GIVEN_ONLY = (
