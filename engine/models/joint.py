@@ -17,7 +17,7 @@ import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from functools import partial
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -590,9 +590,9 @@ CheckHook = Callable[[Mapping[str, Any], "JointSolution"], tuple[list[Check], li
 CHECK_HOOKS: list[CheckHook] = [fz.joint_check_hook]
 
 
-@dataclass(frozen=True)
-class JointSolution:
-    """The solved joint a check hook sees (SI)."""
+class JointSolution(NamedTuple):
+    """The solved joint a check hook sees (SI; a named tuple: immutable, and cheap to build
+    on every single-design run)."""
 
     bolt: Bolt
     grip: float
@@ -605,10 +605,25 @@ class JointSolution:
     nut_outer_diameter: float | None = None
 
 
+#: Each plate's input names: (number, thickness, E, α, D_A), plate 1 first.
+_PLATE_FIELDS = tuple(
+    (
+        i,
+        f"plate{i}_thickness",
+        f"plate{i}_youngs_modulus",
+        f"plate{i}_expansion",
+        f"plate{i}_outer_diameter",
+    )
+    for i in range(1, MAX_PLATES + 1)
+)
+
+
 def _nut_side_outer(x: Mapping[str, Any], read: Callable[[str], Any]) -> Any:
     """D_A of the plate the nut bears on: the last plate's own, else plate 1's; None: wide."""
-    given = [i for i in range(1, MAX_PLATES + 1) if x.get(f"plate{i}_thickness") is not None]
-    own = f"plate{max(given, default=1)}_outer_diameter"
+    own = "plate1_outer_diameter"
+    for _, thickness, _, _, outer in _PLATE_FIELDS:
+        if x.get(thickness) is not None:
+            own = outer
     if x.get(own) is not None:
         return read(own)
     return None if x.get("outer_diameter") is None else read("outer_diameter")
@@ -641,12 +656,13 @@ class _Refusals:
         self.mask = mask
         self.many = many
 
-    def add(self, where: Any, field: str, message: Callable[[], str]) -> None:
-        """Refuse where ``where`` holds, naming ``field`` and the allowed range."""
+    def add(self, where: Any, field: str, message: Callable[..., str], *args: Any) -> None:
+        """Refuse where ``where`` holds, naming ``field`` and the allowed range
+        (``message(*args)``: made only when one design is refused)."""
         if self.many:
             self.mask = self.mask | where
         elif where:
-            raise InputOutOfRange(message(), field=field)
+            raise InputOutOfRange(message(*args), field=field)
 
     def arithmetic(self, where: Any, what: str) -> None:
         """Refuse where the arithmetic fails (alone: as Python's float arithmetic does)."""
@@ -660,6 +676,8 @@ _TOO_WIDE = "{0} = {1:g} mm exceeds the thread diameter d = {2:g} mm: must be �
 
 
 def _larger(a: Any, b: Any) -> Any:
+    if type(a) is float and type(b) is float:  # one design: what max(a, b) returns
+        return b if b > a else a
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
         return np.maximum(a, b)
     return max(a, b)
@@ -893,19 +911,19 @@ def _solve(
     thick, moduli, alphas = [], [], []
     outers: list[Any] = []  # D_A,i of plates 2 and 3 where given (None: plate 1's D_A)
     numbers: list[int] = []
-    for i in range(1, MAX_PLATES + 1):
-        if x.get(f"plate{i}_thickness") is None:
-            if i > 1 and x.get(f"plate{i}_outer_diameter") is not None:
+    for i, thickness, modulus, expansion, outer_name in _PLATE_FIELDS:
+        if x.get(thickness) is None:
+            if i > 1 and x.get(outer_name) is not None:
                 raise InputOutOfRange(
                     f"plate{i}_outer_diameter is given without plate{i}_thickness: give "
                     f"plate{i}_thickness (> 0 mm) for plate {i}, or leave its D_A out",
-                    field=f"plate{i}_outer_diameter",
+                    field=outer_name,
                 )
             continue
-        thick.append(_larger(col(f"plate{i}_thickness"), 0.0))
-        moduli.append(col_or(f"plate{i}_youngs_modulus", e1))
-        alphas.append(col_or(f"plate{i}_expansion", a1))
-        outers.append(col_or(f"plate{i}_outer_diameter", None) if i > 1 else None)
+        thick.append(_larger(col(thickness), 0.0))
+        moduli.append(col_or(modulus, e1))
+        alphas.append(col_or(expansion, a1))
+        outers.append(col_or(outer_name, None) if i > 1 else None)
         numbers.append(i)
     plates = sum(h > 0.0 for h in thick)
     grip = sum(thick)
@@ -925,28 +943,26 @@ def _solve(
             refusals.add(
                 own <= d_h,
                 f"plate{i}_outer_diameter",
-                partial(
-                    "plate{0}_outer_diameter D_A,{0} = {1:g} mm leaves no wall around the hole "
-                    "d_h = {2:g} mm: must be > {2:g} mm".format,
-                    i,
-                    own * 1e3,
-                    d_h * 1e3,
-                ),
+                "plate{0}_outer_diameter D_A,{0} = {1:g} mm leaves no wall around the hole "
+                "d_h = {2:g} mm: must be > {2:g} mm".format,
+                i,
+                own * 1e3,
+                d_h * 1e3,
             )
     l_shank, l_reduced = col("shank_length"), col("reduced_length")
     refusals.add(
         l_shank + l_reduced > grip * (1.0 + 1e-12),
         "shank_length",
-        lambda: (
-            f"shank_length + reduced_length = {(l_shank + l_reduced) * 1e3:g} mm exceeds "
-            f"the grip l_K = {grip * 1e3:g} mm (sum of the plates): must be ≤ {grip * 1e3:g} mm"
-        ),
+        "shank_length + reduced_length = {0:g} mm exceeds the grip l_K = {1:g} mm (sum of "
+        "the plates): must be ≤ {1:g} mm".format,
+        (l_shank + l_reduced) * 1e3,
+        grip * 1e3,
     )
     if x.get("reduced_diameter") is None:
         refusals.add(
             l_reduced > 0.0,
             "reduced_diameter",
-            lambda: "reduced_diameter is required when reduced_length > 0",
+            "reduced_diameter is required when reduced_length > 0".format,
         )
     shank_d, reduced_d = col_or("shank_diameter", d), col_or("reduced_diameter", d)
     for name, value in (("shank_diameter", shank_d), ("reduced_diameter", reduced_d)):
@@ -954,15 +970,14 @@ def _solve(
             refusals.add(
                 value > d * (1 + 1e-12),
                 name,
-                partial(
-                    _TOO_WIDE.format,
-                    name,
-                    value * 1e3,
-                    d * 1e3,
-                ),
+                _TOO_WIDE.format,
+                name,
+                value * 1e3,
+                d * 1e3,
             )
     sections = [(l_shank, shank_d), (l_reduced, reduced_d)]
     free_thread = _larger(grip - l_shank - l_reduced, 0.0)
+    e_nut = col_or("nut_youngs_modulus", _tapped_modulus(x))  # E_M (None: E_S)
     bolt_c = jt.bolt_compliance(
         d,
         b["minor_diameter"],
@@ -971,7 +986,7 @@ def _solve(
         free_thread,
         str(x["head"]),
         joint_type,
-        col_or("nut_youngs_modulus", _tapped_modulus(x)),
+        e_nut,
     )
     own_outers = outers if any(o is not None for o in outers) else None
     parts = jt.clamped_compliance(
@@ -1032,7 +1047,7 @@ def _solve(
             free_thread,
             str(x["head"]),
             joint_type,
-            col_or("nut_youngs_modulus", _tapped_modulus(x)),
+            e_nut,
         )
         area_d, inertia_t = jt.interface_section(b_t, c_t, d_h)
         # the clamp force must act inside the interface's kern, or the preload alone lifts u
@@ -1051,12 +1066,10 @@ def _solve(
             refusals.add(
                 value != 0.0,
                 "interface_length",
-                partial(
-                    "{0} = {1:g} mm needs the interface: give interface_length c_T and "
-                    "interface_width b (> 0 mm), or {0} = 0 for a concentric joint".format,
-                    name,
-                    value * 1e3,
-                ),
+                "{0} = {1:g} mm needs the interface: give interface_length c_T and "
+                "interface_width b (> 0 mm), or {0} = 0 for a concentric joint".format,
+                name,
+                value * 1e3,
             )
     delta_p1 = jt.eccentric_compliance(delta_p, beta_p, s_sym, s_sym)  # δ*_P
     delta_p2 = jt.eccentric_compliance(delta_p, beta_p, s_sym, lever)  # δ**_P
@@ -1071,7 +1084,8 @@ def _solve(
         refusals.add(
             m_y > 0.0,
             "friction_radius",
-            lambda: f"torsional_moment = {m_y:g} N*m needs friction_radius r_a (> 0 mm)",
+            "torsional_moment = {0:g} N*m needs friction_radius r_a (> 0 mm)".format,
+            m_y,
         )
     else:
         r_a = col("friction_radius")
@@ -1092,19 +1106,19 @@ def _solve(
         refusals.add(
             hi < lo,
             f"{name}_max",
-            partial(
-                "{0}_max = {1:g} is below {0}_min = {2:g}: must be ≥ {2:g}".format, name, hi, lo
-            ),
+            "{0}_max = {1:g} is below {0}_min = {2:g}: must be ≥ {2:g}".format,
+            name,
+            hi,
+            lo,
         )
     f_a = col("working_load")
     f_a_min = col_or("working_load_min", f_a)
     refusals.add(
         f_a_min > f_a,
         "working_load_min",
-        lambda: (
-            f"working_load_min = {f_a_min:g} N exceeds working_load = {f_a:g} N: must be ≤ "
-            f"{f_a:g} N"
-        ),
+        "working_load_min = {0:g} N exceeds working_load = {1:g} N: must be ≤ {1:g} N".format,
+        f_a_min,
+        f_a,
     )
     f_ka = jt.opening_clamp_force(f_a, k_ab)
     f_kerf = jt.required_clamp_force(f_kq, f_kp, f_ka)
@@ -1136,10 +1150,10 @@ def _solve(
     refusals.add(
         m_u_min > m_u,
         "prevailing_torque_min",
-        lambda: (
-            f"prevailing_torque_min = {m_u_min:g} N*m exceeds prevailing_torque = "
-            f"{m_u:g} N*m: must be ≤ {m_u:g} N*m"
-        ),
+        "prevailing_torque_min = {0:g} N*m exceeds prevailing_torque = {1:g} N*m: must be "
+        "≤ {1:g} N*m".format,
+        m_u_min,
+        m_u,
     )
     torque_given = x.get("tightening_torque") is not None
     kt_low, kb_low = pl.tightening_torque_per_preload(pitch, d2, d, mu_g_lo, mu_k_lo, d_w, d_h)
@@ -1363,13 +1377,15 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
     # validated numeric inputs are Python numbers already: read them as they are
     s = _solve(x, x.__getitem__, b, _Refusals(np.False_, many=False))
-    for name in (
-        *_SCALARS,
-        "_alpha_req",
-        "_fa_sep_any",
-        "_f_kr_raw",
-    ):  # Python floats out (some are numpy's)
-        s[name] = float(s[name])
+    values: dict[str, Any] = {}
+    for name in _SCALARS:  # Python floats out (some are numpy's)
+        value = s[name]
+        if type(value) is not float:
+            s[name] = value = float(value)
+        values[name] = value
+    for name in _READ_AS_FLOATS:
+        if type(s[name]) is not float:
+            s[name] = float(s[name])
     warnings: list[str] = []
     d = bolt.diameter
     f_mzul, fm_min, fm_max = (
@@ -1410,7 +1426,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         warnings.append(
             f"plates very thin against d_W: the cone tangent is held at {jt.MIN_CONE_TANGENT}"
         )
-    own = [i for i in range(2, MAX_PLATES + 1) if x.get(f"plate{i}_outer_diameter") is not None]
+    own = [i for i, _, _, _, name in _PLATE_FIELDS[1:] if x.get(name) is not None]
     if own:
         notes.append(
             "D_A per plate: plate "
@@ -1501,7 +1517,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         fm_max,
         s["max_bolt_force"],
         str(x["joint_type"]),
-        _nut_side_outer(x, lambda name: float(x[name])),
+        nut_outer,
     )
     for hook in CHECK_HOOKS:
         more_checks, more_notes = hook(x, solution)
@@ -1513,7 +1529,6 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "stripping (VDI R11) are not checked by this model yet"
         )
 
-    values: dict[str, Any] = {name: s[name] for name in _SCALARS}
     if not math.isfinite(values["nut_stripping_force"]):
         del values["nut_stripping_force"]  # the nut pairs with the bolt, or there is none
     for name in _GIVEN_ONLY:
@@ -1705,9 +1720,6 @@ def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[s
         f"{_kn(s['max_bolt_force'])} vs R_p0.2 = {q(s['_yield_t'], 'MPa', 4)}"
         + ("" if x.get("service_temperature") is None else " at the service temperature")
         + f": S_F = {s_f:.3g} (≥ 1.0)",
-        "R9_fatigue": "σ_a = Φ_n (F_A,max − F_A,min)/(2 A_S) = "
-        f"{q(s['stress_amplitude'], 'MPa')} vs σ_AS = {q(s['endurance_limit'], 'MPa')}: "
-        f"S_D = {s['fatigue_safety']:.3g} (VDI asks ≥ 1.2)",
         "R12_slip": "S_G = F_KR,min q_F μ_T / (F_Q + M_Y q_F/(q_M r_a)) = "
         f"{s['slip_safety']:.3g} (VDI asks ≥ {need:g} "
         f"for {'alternating' if need > 1.2 else 'static'} load)",
@@ -1716,6 +1728,12 @@ def _sentences(x: Mapping[str, Any], s: Mapping[str, Any], bolt: Bolt) -> dict[s
         f"({why}); VDI 2230 R7 instead limits the equivalent stress to ν R_p0.2 (ν = {nu:g}), "
         "which allows more",
     }
+    if s["_checks"]["R9_fatigue"][0]:  # a static load has no R9 check (nor its sentence)
+        out["R9_fatigue"] = (
+            "σ_a = Φ_n (F_A,max − F_A,min)/(2 A_S) = "
+            f"{q(s['stress_amplitude'], 'MPa')} vs σ_AS = {q(s['endurance_limit'], 'MPa')}: "
+            f"S_D = {s['fatigue_safety']:.3g} (VDI asks ≥ 1.2)"
+        )
     if "R12_fitted_shear" in s["_checks"] and s["_checks"]["R12_fitted_shear"][0]:
         out["R12_fitted_shear"] = (
             f"fitted shank: τ_Q = F_Q/(q_F A_τ) = {q(s['fitted_shear_stress'], 'MPa', 4)} vs "
@@ -2302,6 +2320,9 @@ JOINT_OUTPUTS: tuple[Output, ...] = (
 
 #: The scalar outputs, in declaration order.
 _SCALARS: tuple[str, ...] = tuple(o.name for o in JOINT_OUTPUTS if not o.series)
+
+#: The intermediate values a single design's sentences and series read, as Python floats.
+_READ_AS_FLOATS = ("_alpha_req", "_fa_sep_any", "_f_kr_raw")
 
 #: Outputs only an eccentric joint (interface given) or a fitted bolt has.
 _GIVEN_ONLY = (

@@ -29,8 +29,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -73,7 +72,12 @@ def _area(diameter: float) -> float:
 
 # Float or array: every function below takes SI floats (math, the scalar path's speed and
 # its exceptions kept) or numpy arrays (one request's points at once). The
-# helpers pick math or numpy by the arguments' type, so each formula is written once.
+# helpers pick math or numpy by the arguments' type, so each formula is written once; each
+# tests for Python numbers first (``type(x) is float`` costs no call), the case of every
+# single-design run, and otherwise decides as before.
+
+#: The types a helper takes for a plain Python number (no numpy involved).
+_NUMBER = frozenset((float, bool, int))
 
 
 def _arrays(*values: object) -> bool:
@@ -84,6 +88,8 @@ def _arrays(*values: object) -> bool:
 
 
 def _log(value: Any) -> Any:
+    if type(value) is float:
+        return math.log(value)
     return np.log(value) if isinstance(value, np.ndarray) else math.log(value)
 
 
@@ -92,12 +98,16 @@ def _sqrt(value: Any) -> Any:
 
 
 def _max(a: Any, b: Any) -> Any:
+    if type(a) is float and type(b) is float:
+        return b if b > a else a  # what max(a, b) returns, without its call
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
         return np.maximum(a, b)
-    return b if b > a else a  # what max(a, b) returns, without its call
+    return b if b > a else a
 
 
 def _where(condition: Any, a: Any, b: Any) -> Any:
+    if type(condition) is bool and type(a) in _NUMBER and type(b) in _NUMBER:
+        return a if condition else b
     if isinstance(condition, np.ndarray) or isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
         return np.where(condition, a, b)
     return a if condition else b
@@ -105,6 +115,8 @@ def _where(condition: Any, a: Any, b: Any) -> Any:
 
 def _quotient(ok: Any, numerator: Any, denominator: Any, otherwise: float) -> Any:
     """numerator/denominator where ``ok``, ``otherwise`` elsewhere (floats: not divided there)."""
+    if type(ok) is bool and type(numerator) in _NUMBER and type(denominator) in _NUMBER:
+        return numerator / denominator if ok else otherwise
     if _arrays(ok, numerator, denominator):
         with np.errstate(divide="ignore", invalid="ignore"):
             return np.where(ok, numerator / denominator, otherwise)
@@ -112,22 +124,31 @@ def _quotient(ok: Any, numerator: Any, denominator: Any, otherwise: float) -> An
 
 
 def _largest(value: Any) -> Any:
+    if type(value) is float:
+        return value
     return value.max(initial=0.0) if isinstance(value, np.ndarray) else value
 
 
 def _every(flags: Any) -> bool:
+    if type(flags) is bool:
+        return flags
     return bool(flags.all()) if isinstance(flags, np.ndarray) else bool(flags)
 
 
 def _min(a: Any, b: Any) -> Any:
+    if type(a) is float and type(b) is float:
+        return b if b < a else a  # what min(a, b) returns, without its call
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
         return np.minimum(a, b)
-    return b if b < a else a  # what min(a, b) returns, without its call
+    return b if b < a else a
 
 
-@dataclass(frozen=True)
-class BoltCompliance:
-    """The bolt's axial compliance by section (VDI 2230-1 R3), [m/N]."""
+class BoltCompliance(NamedTuple):
+    """The bolt's axial compliance by section (VDI 2230-1 R3), [m/N].
+
+    A named tuple, not a frozen dataclass: as immutable, and built in a third of the time
+    on every single-design run (the results below are NamedTuples for the same reason).
+    """
 
     head: float
     shank: float
@@ -372,8 +393,10 @@ def cone_tangent(
     """
     beta_l = grip / bearing_diameter
     y = outer_diameter / bearing_diameter
-    arrays = isinstance(beta_l, np.ndarray) or isinstance(y, np.ndarray)
-    log = np.log if arrays else math.log  # the scalar iteration calls this ~16 times a run
+    arrays = not (type(beta_l) is float and type(y) is float) and (
+        isinstance(beta_l, np.ndarray) or isinstance(y, np.ndarray)
+    )
+    log = np.log if arrays else math.log  # the D_A iteration calls this ~6 times a run
     if joint == "through":
         tan = 0.362 + 0.032 * log(beta_l / 2.0) + _CONE_Y_SLOPE[joint] * log(y)
     else:
@@ -475,6 +498,7 @@ def unlimited_outer_diameter(grip: float, bearing_diameter: float, joint: str = 
             np.asarray(grip, dtype=float), np.asarray(bearing_diameter, dtype=float)
         )
     w = 1.0 if joint == "through" else 2.0
+    lever = w * grips * _CONE_Y_SLOPE[joint]  # the map's slope is lever/D where tan φ > 0.1
     outer: Any = bearing * 2.0
     # a few safeguarded Newton steps on D − D_A,Gr(D) (where the map's slope w l_K ∂tanφ/∂D
     # is below ½; a plain step elsewhere), kept at D ≥ d_W where the cone lives: ~5 passes
@@ -482,7 +506,7 @@ def unlimited_outer_diameter(grip: float, bearing_diameter: float, joint: str = 
     for _ in range(8):
         tan = cone_tangent(grips, bearing, outer, joint)
         new = cone_limit_diameter(grips, bearing, tan, joint)
-        slope = _where(tan > MIN_CONE_TANGENT, w * grips * _CONE_Y_SLOPE[joint] / outer, 0.0)
+        slope = _where(tan > MIN_CONE_TANGENT, lever / outer, 0.0)
         step = (new - outer) / _where(slope < 0.5, 1.0 - slope, 1.0)
         outer = _max(outer + step, bearing)
         if not _largest(abs(step)) > 1e-13 * _largest(outer):
@@ -513,11 +537,6 @@ def _one_sided(
     Floats or arrays (the same lines); an empty interval (end ≤ start) gives 0.
     """
     d_h = hole_diameter
-
-    def g(z: float) -> float:
-        diameter = bearing_diameter + 2.0 * z * tangent
-        return _log((diameter - d_h) / (diameter + d_h))
-
     empty = end <= start
     if _every(empty):  # e.g. the far half of a through-bolted joint for a near plate
         zero: Any = np.zeros(np.shape(empty)) if isinstance(empty, np.ndarray) else 0.0
@@ -526,15 +545,29 @@ def _one_sided(
     a, b = start, _min(end, z_cap)
     # both pieces everywhere (z ≥ 0 keeps the logarithm's argument positive), each kept
     # where its interval is not empty
-    cone = _where(b > a, (g(b) - g(a)) / (math.pi * d_h * tangent), 0.0)
+    cone = _where(
+        b > a,
+        (
+            _cone_log(b, bearing_diameter, d_h, tangent)
+            - _cone_log(a, bearing_diameter, d_h, tangent)
+        )
+        / (math.pi * d_h * tangent),
+        0.0,
+    )
     a = _max(start, z_cap)
     sleeve = (end - a) / (0.25 * math.pi * (outer_diameter**2 - hole_diameter**2))
     both: Any = (0.0 + cone) + _where(end > a, sleeve, 0.0)
     return both
 
 
-@dataclass(frozen=True)
-class ClampedCompliance:
+def _cone_log(z: Any, bearing_diameter: Any, hole_diameter: Any, tangent: Any) -> Any:
+    """ln((D − d_h)/(D + d_h)) at the cone's diameter D = d_W + 2 z tan φ: the antiderivative
+    of 1/A(z) up to the factor π d_h tan φ."""
+    diameter = bearing_diameter + 2.0 * z * tangent
+    return _log((diameter - hole_diameter) / (diameter + hole_diameter))
+
+
+class ClampedCompliance(NamedTuple):
     """Compliance of the clamped parts (VDI 2230-1 R3)."""
 
     per_plate: tuple[float, ...]
@@ -659,7 +692,12 @@ def clamped_compliance(
     # the nut's half-cone takes its angle from the nut side's D_A (the last plate of some
     # thickness), as the head's from the head side's: a mirrored joint gives the same δ_P
     tan_nut = tan
-    if joint == "through" and tangent is None and any(o is not None for o in own):
+    if (
+        joint == "through"
+        and tangent is None
+        and plate_outer_diameters
+        and any(o is not None for o in own)
+    ):
         nut_outer = outer
         for h, cap in zip(thicknesses, caps, strict=True):
             nut_outer = _where(h > 0.0, cap, nut_outer)
@@ -1140,8 +1178,7 @@ def preload_bounds_from_torque(
     return low / per_newton_high_friction, high / per_newton_low_friction
 
 
-@dataclass(frozen=True)
-class ServiceStress:
+class ServiceStress(NamedTuple):
     """Bolt stresses in service (VDI 2230-1 R8)."""
 
     axial: float
