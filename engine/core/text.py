@@ -112,11 +112,15 @@ def _digits_shown(number: str) -> int:
     return max(1, len(mantissa))
 
 
-#: Per display unit: the factor from SI and the unit as written after the number (the
-#: two columns of :data:`DISPLAY` that :func:`q` reads on every call).
-_WRITE: dict[str, tuple[float, str]] = {k: (v[1], v[2]) for k, v in DISPLAY.items()}
+#: Per display unit: the factor from SI, the unit as written after the number (the two
+#: columns of :data:`DISPLAY` that :func:`q` reads on every call) and the mark's fields
+#: that follow the SI value (the display unit between its separators).
+_WRITE: dict[str, tuple[float, str, str]] = {
+    k: (v[1], v[2], f"{SEP}{k}{SEP}") for k, v in DISPLAY.items()
+}
 #: A quantity's SI value as the mark carries it: its 8 bytes (little-endian IEEE 754), in hex.
 _DOUBLE = struct.Struct("<d")
+_PACK = _DOUBLE.pack
 
 
 def q(
@@ -152,22 +156,24 @@ def q(
     '201.4 N*m'
     """
     value = float(value)
-    factor, unit = _WRITE[display]
+    factor, unit, tail = _WRITE[display]
     if fmt is None:
-        number = f"{value * factor:.3g}" if digits == 3 else f"{value * factor:.{digits}g}"
-        # the digits the parts carry: with ``digits`` ≤ 3 (most quantities) they are
-        # ``digits`` whatever the number shows; else parts() counts them in the number
-        # (the text's first characters), at most ``digits``
-        shown = str(digits) if digits <= 3 else f"{digits}:{len(number)}"
+        if digits == 3:  # most quantities: one format, the digits known
+            number, shown = f"{value * factor:.3g}", "3"
+        else:
+            number = f"{value * factor:.{digits}g}"
+            # the digits the parts carry: with ``digits`` ≤ 3 they are ``digits`` whatever
+            # the number shows; else parts() counts them in the number (the text's first
+            # characters), at most ``digits``
+            shown = str(digits) if digits <= 3 else f"{digits}:{len(number)}"
     else:
         number = f"{value * factor:{fmt}}"
         shown = f":{len(number)}"  # counted by parts(), no upper limit
-    text = number if bare else number + (unit if suffix is None else suffix)
     # the SI value travels as the hex of its 8 bytes: exact, and cheaper to write than repr
-    return (
-        f"{OPEN}{text}{SEP}{_DOUBLE.pack(value).hex()}{SEP}{display}{SEP}{shown}{SEP}"
-        f"{'1' if bare else ''}{CLOSE}"
-    )
+    if bare:
+        return f"{OPEN}{number}{SEP}{_PACK(value).hex()}{tail}{shown}{SEP}1{CLOSE}"
+    unit = unit if suffix is None else suffix
+    return f"{OPEN}{number}{unit}{SEP}{_PACK(value).hex()}{tail}{shown}{SEP}{CLOSE}"
 
 
 def _digits(shown: str, text: str) -> int:
