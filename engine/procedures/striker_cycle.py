@@ -1871,7 +1871,8 @@ class _Run:
             self.steps += int(used)
             if status != 0:
                 break
-        if not all(math.isfinite(v) for v in (t, w, q0, q1, v0, v1)):
+        fin = math.isfinite
+        if not (fin(t) and fin(w) and fin(q0) and fin(q1) and fin(v0) and fin(v1)):
             raise SolverFailed("the cycle integration diverged", field="fidelity")
         self.rec.add(mode, bufs, n_rec)
         return int(status), int(which), (t, w, q0, q1, v0, v1)
@@ -1935,7 +1936,8 @@ class _Run:
             self.steps += int(used) * _CONTACT_STEP_COST
             if status != 0:
                 break
-        if not (math.isfinite(t) and np.all(np.isfinite(q)) and np.all(np.isfinite(v))):
+        fin = math.isfinite
+        if not (fin(t) and all(map(fin, q.tolist())) and all(map(fin, v.tolist()))):
             raise SolverFailed("the cycle integration diverged in stage 3", field="fidelity")
         self.rec.add(S3U, bufs, n_rec)
         return int(status), int(which), float(t)
