@@ -555,7 +555,7 @@ def liftoff_speed_of(x: Mapping[str, Any]) -> Any:
     """
     x = _numbers(x)
     with quiet(x.many):
-        return _one_or_many(_liftoff_speed(x, _geo(x)))
+        return _one_or_many(_speeds(x, _geo(x))[1])  # once a request (_speeds)
 
 
 def _stage1_stiffness(x: Mapping[str, Any], g: Geometry, w: Any) -> Any:
@@ -587,7 +587,7 @@ def snaps_at_liftoff(x: Mapping[str, Any]) -> Any:
     x = _numbers(x)
     with quiet(x.many):
         g = _geo(x)
-        snap = _stage1_stiffness(x, g, _liftoff_speed(x, g)) < 0.0
+        snap = _stage1_stiffness(x, g, _speeds(x, g)[1]) < 0.0
         return snap if is_array(snap) else bool(snap)
 
 
