@@ -130,6 +130,8 @@ against this simulation is measured in the tests over a grid of designs.
 
 from __future__ import annotations
 
+import functools
+import itertools
 import math
 import time
 from collections.abc import Callable, Mapping
@@ -553,7 +555,7 @@ def liftoff_speed_of(x: Mapping[str, Any]) -> Any:
     """
     x = _numbers(x)
     with quiet(x.many):
-        return _one_or_many(_liftoff_speed(x, _geo(x)))
+        return _one_or_many(_speeds(x, _geo(x))[1])  # once a request (_speeds)
 
 
 def _stage1_stiffness(x: Mapping[str, Any], g: Geometry, w: Any) -> Any:
@@ -585,7 +587,7 @@ def snaps_at_liftoff(x: Mapping[str, Any]) -> Any:
     x = _numbers(x)
     with quiet(x.many):
         g = _geo(x)
-        snap = _stage1_stiffness(x, g, _liftoff_speed(x, g)) < 0.0
+        snap = _stage1_stiffness(x, g, _speeds(x, g)[1]) < 0.0
         return snap if is_array(snap) else bool(snap)
 
 
@@ -1690,13 +1692,30 @@ _contact_advance_c = jit(_contact_advance, error_model="numpy")
 # ---------------------------------------------------------------------------
 
 
+_LOADED = False
+
+
+def _kernels_loaded() -> bool:
+    """Whether both kernels are loaded; asked once a design, so the answer is kept once yes.
+
+    (A numba dispatcher's ``signatures`` costs tens of µs a look: a design asked it up to
+    three times.)
+    """
+    global _LOADED
+    if not _LOADED:
+        _LOADED = all(
+            getattr(k, "signatures", None) != [] for k in (_advance_c, _contact_advance_c)
+        )
+    return _LOADED
+
+
 def _ensure_compiled(p: np.ndarray) -> float:
     """Load (or compile) the kernels now if they are not yet; returns the seconds it took.
 
     Both the cycle kernel and the one-sided stage 3's (a design finds out only in stage 3
     whether it needs the latter, when its deadline is already running).
     """
-    if getattr(_advance_c, "signatures", None) != []:
+    if _kernels_loaded() or getattr(_advance_c, "signatures", None) != []:
         return 0.0
     start = time.perf_counter()
     buf = np.empty(1)
@@ -1732,6 +1751,9 @@ def _params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
     return p
 
 
+_NO_BUFFERS = (np.empty(1), np.empty(1), np.empty(1), np.empty(1))
+
+
 class _Recorder:
     """Collects (t, ω, q0, q1) per mode and maps them to the named series."""
 
@@ -1740,7 +1762,9 @@ class _Recorder:
         self.parts: list[tuple[int, np.ndarray, np.ndarray, np.ndarray, np.ndarray]] = []
 
     def buffers(self) -> tuple[np.ndarray, ...]:
-        n = _SERIES_POINTS + 16 if self.on else 1
+        if not self.on:  # stride 0: the kernels never write them
+            return _NO_BUFFERS
+        n = _SERIES_POINTS + 16
         return np.empty(n), np.empty(n), np.empty(n), np.empty(n)
 
     def add(self, mode: int, bufs: tuple[np.ndarray, ...], n: int) -> None:
@@ -1750,6 +1774,28 @@ class _Recorder:
 
 
 def _events(*rows: tuple[int, float, float, float, float]) -> tuple[np.ndarray, ...]:
+    """The kernel's event arrays (kind, c0, c1, level, direction) of ``rows``.
+
+    Kept for the last rows asked (a study that varies neither h1, h2 nor λ3 asks the same
+    rows every design); the kernels only read them. Rows with a level -0.0 (equal to 0.0
+    as a key) are made anew.
+    """
+    if not all(r[3] != 0.0 or math.copysign(1.0, r[3]) > 0.0 for r in rows):
+        return _make_events(rows)
+    made = _EVENTS.get(rows)
+    if made is None:
+        if len(_EVENTS) >= 256:
+            _EVENTS.clear()
+        made = _EVENTS[rows] = _make_events(rows)
+    return made
+
+
+_EVENTS: dict[tuple[tuple[int, float, float, float, float], ...], tuple[np.ndarray, ...]] = {}
+
+
+def _make_events(
+    rows: tuple[tuple[int, float, float, float, float], ...],
+) -> tuple[np.ndarray, ...]:
     arr = np.array(rows, dtype=float).reshape(-1, 5)
     return (
         arr[:, 0].astype(np.int64),
@@ -1825,7 +1871,8 @@ class _Run:
             self.steps += int(used)
             if status != 0:
                 break
-        if not all(math.isfinite(v) for v in (t, w, q0, q1, v0, v1)):
+        fin = math.isfinite
+        if not (fin(t) and fin(w) and fin(q0) and fin(q1) and fin(v0) and fin(v1)):
             raise SolverFailed("the cycle integration diverged", field="fidelity")
         self.rec.add(mode, bufs, n_rec)
         return int(status), int(which), (t, w, q0, q1, v0, v1)
@@ -1859,7 +1906,11 @@ class _Run:
         stride = max(1, int(expected / _SERIES_POINTS * 4)) if self.rec.on else 0
         bufs = self.rec.buffers()
         n_rec = 0
-        if self.deadline is not None and getattr(_contact_advance_c, "signatures", None) == []:
+        if (
+            self.deadline is not None
+            and not _kernels_loaded()
+            and (getattr(_contact_advance_c, "signatures", None) == [])
+        ):
             # loading or compiling this kernel (once per process) is not the design's time
             began = time.perf_counter()
             _contact_advance_c(p, active, t, q.copy(), v.copy(), h, 0, t_end, ekind, ecoef,
@@ -1885,7 +1936,8 @@ class _Run:
             self.steps += int(used) * _CONTACT_STEP_COST
             if status != 0:
                 break
-        if not (math.isfinite(t) and np.all(np.isfinite(q)) and np.all(np.isfinite(v))):
+        fin = math.isfinite
+        if not (fin(t) and all(map(fin, q.tolist())) and all(map(fin, v.tolist()))):
             raise SolverFailed("the cycle integration diverged in stage 3", field="fidelity")
         self.rec.add(S3U, bufs, n_rec)
         return int(status), int(which), float(t)
@@ -1940,7 +1992,7 @@ def _contact_set(
     vscale = max(float(np.max(np.abs(rate))), 1e-300)
     v_new = v
     if any(rate[i] < -1e-12 * vscale for i in cand):  # a gap closing: a plastic catch
-        for subset in _subsets(cand):
+        for subset in _subsets(tuple(cand)):
             s = list(subset)
             js = jac[s]
             imp = np.linalg.solve((js * minv) @ js.T, -js @ v)
@@ -1954,23 +2006,34 @@ def _contact_set(
     still = [i for i in cand if abs(rate[i]) <= 1e-9 * vscale]
     acc, lam = np.empty(4), np.empty(4)
     wk, idx = np.empty((6, 5)), np.empty(4, dtype=np.int64)
-    for subset in (*_subsets(still), ()):
-        act = np.zeros(4, dtype=np.bool_)
-        act[list(subset)] = True
+    for subset in (*_subsets(tuple(still)), ()):
+        act = _ACTIVE[sum(1 << i for i in subset)]
         _contact_accel_c(p, act, q, acc, lam, wk, idx)
-        ascale = max(float(np.max(np.abs(acc))), 1e-300)
-        if np.all(lam >= 0.0) and all(
+        # the largest |acc| and lam ≥ 0 on Python floats: a numpy reduction of four
+        # numbers costs more than the kernel (the same values; NaN fails both as before)
+        a0, a1, a2, a3 = acc.tolist()
+        ascale = max(abs(a0), abs(a1), abs(a2), abs(a3), 1e-300)
+        if all(r >= 0.0 for r in lam.tolist()) and all(
             (jac[i] @ acc) >= -1e-12 * ascale for i in still if i not in subset
         ):
-            return act, v_new
+            return act.copy(), v_new
     raise SolverFailed("stage 3: no consistent set of roller contacts", field="fidelity")
 
 
-def _subsets(items: list[int]) -> list[tuple[int, ...]]:
-    """The non-empty subsets of ``items``, the larger first."""
-    from itertools import combinations
+@functools.lru_cache(maxsize=64)
+def _subsets(items: tuple[int, ...]) -> tuple[tuple[int, ...], ...]:
+    """The non-empty subsets of ``items``, the larger first.
 
-    return [c for size in range(len(items), 0, -1) for c in combinations(items, size)]
+    >>> _subsets((0, 2, 3))
+    ((0, 2, 3), (0, 2), (0, 3), (2, 3), (0,), (2,), (3,))
+    """
+    return tuple(
+        c for size in range(len(items), 0, -1) for c in itertools.combinations(items, size)
+    )
+
+
+#: The active-contact masks of the one-sided stage 3, by bit (contact i: bit i); read only.
+_ACTIVE = tuple(np.array([bool(m >> i & 1) for i in range(4)]) for m in range(16))
 
 
 #: Most contact changes the one-sided stage 3 follows (a roller that keeps leaving and

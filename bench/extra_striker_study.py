@@ -1,0 +1,149 @@
+"""Benchmark: a 10⁴-design simulation study of the striker, time beyond its kernels.
+
+Issue 35's target: a 10⁴-design simulation study of the striker's reference design ±10 %
+(power spring rate and preload, roller mass, motor torque; uniform, Monte Carlo) at the
+product's default tolerance spends ≤ 10 % beyond its kernels' time. The study runs in
+process with the simulation rung named. The compiled kernels
+(``striker_cycle._advance_c`` and ``_contact_advance_c``) are wrapped for the run by a
+counter that adds up the CPU time of each call; everything else (stage set-up, events,
+the runner, validation, the error estimate, notes, the summary) is the overhead.
+Times are CPU seconds (``time.process_time``): the machine is shared.
+
+``STRIKER_STUDY_POINTS`` sets the study's size (default 10,000);
+``python bench/extra_striker_study.py`` prints the figures and the profile's top lines
+with ``--profile``.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import time
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Any
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+import engine
+from engine.procedures import striker_cycle
+from engine.studies.execute import run_study
+from engine.studies.plan import Study, Variable
+
+MODEL = "impact.rare"
+VARIED = ("power_spring_rate", "power_spring_preload", "roller_mass", "motor_torque")
+KERNELS = ("_advance_c", "_contact_advance_c")
+TARGET_OVERHEAD = 0.10
+
+
+def study(n: int, seed: int = 3) -> tuple[Study, engine.ModelSpec]:
+    """The reference design ±10 % on the four inputs, ``n`` designs, simulation rung."""
+    spec = engine.get_model(MODEL)
+    ex = dict(spec.examples[0])
+    return (
+        Study(
+            variables=tuple(
+                Variable(k, "uniform", low=0.9 * ex[k], high=1.1 * ex[k]) for k in VARIED
+            ),
+            base={k: v for k, v in ex.items() if k not in VARIED},
+            samples=n,
+            seed=seed,
+            fidelity="simulation",
+        ),
+        spec,
+    )
+
+
+class _Timed:
+    """A compiled function with its calls' CPU time added up."""
+
+    def __init__(self, fn: Any) -> None:
+        self.fn = fn
+        self.seconds = 0.0
+        self.calls = 0
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self.fn, name)
+
+    def __call__(self, *args: Any) -> Any:
+        t0 = time.process_time()
+        out = self.fn(*args)
+        self.seconds += time.process_time() - t0
+        self.calls += 1
+        return out
+
+
+@contextmanager
+def timed_kernels() -> Iterator[list[_Timed]]:
+    """Wrap the striker's kernels for the block; yields the counters."""
+    saved = {k: getattr(striker_cycle, k) for k in KERNELS}
+    wrapped = [_Timed(saved[k]) for k in KERNELS]
+    try:
+        for k, w in zip(KERNELS, wrapped, strict=True):
+            setattr(striker_cycle, k, w)
+        yield wrapped
+    finally:
+        for k, fn in saved.items():
+            setattr(striker_cycle, k, fn)
+
+
+def overhead(n: int) -> dict[str, Any]:
+    """One in-process study of ``n`` designs: total and kernel CPU seconds, kernel calls."""
+    s, spec = study(n)
+    run_study(spec, study(64, seed=1)[0])  # load the kernels
+    with timed_kernels() as counters:
+        t0 = time.process_time()
+        result = run_study(spec, s)
+        total = time.process_time() - t0
+    kernel = sum(c.seconds for c in counters)
+    return {
+        "total_s": total,
+        "kernel_s": kernel,
+        "calls": sum(c.calls for c in counters),
+        "overhead": total / kernel - 1.0,
+        "rungs": result.summary["rungs"],
+    }
+
+
+def measure() -> list[dict[str, Any]]:
+    n = int(os.environ.get("STRIKER_STUDY_POINTS", "10000"))
+    f = overhead(n)
+    return [
+        {
+            "model": MODEL,
+            "method": "study_sim_overhead",
+            "case": f"{n}-design simulation study, beyond kernels",
+            "time_s": f["total_s"] / n,
+            "ratio": f["total_s"] / f["kernel_s"],
+            "target_ratio": 1.0 + TARGET_OVERHEAD,
+            "met": f["overhead"] <= TARGET_OVERHEAD,
+            "error": None,
+            "notes": f"{f['total_s']:.2f} s CPU in all, kernels {f['kernel_s']:.2f} s "
+            f"({f['calls']} calls): {f['overhead'] * 100:.0f} % beyond the kernels "
+            f"(target ≤ {TARGET_OVERHEAD * 100:.0f} %); load {os.getloadavg()[0]:.1f}; "
+            f"rungs {f['rungs']}",
+        }
+    ]
+
+
+def _profile(n: int, show: Callable[[str], None] = print) -> None:
+    import cProfile
+    import io
+    import pstats
+
+    s, spec = study(n)
+    run_study(spec, study(64, seed=1)[0])
+    prof = cProfile.Profile()
+    prof.runcall(run_study, spec, s)
+    out = io.StringIO()
+    pstats.Stats(prof, stream=out).sort_stats("tottime").print_stats(30)
+    show(out.getvalue())
+
+
+if __name__ == "__main__":
+    if "--profile" in sys.argv:
+        _profile(int(os.environ.get("STRIKER_STUDY_POINTS", "10000")))
+    else:
+        for row in measure():
+            print(f"{row['method']}: {row['time_s'] * 1e6:.1f} µs/design  {row['notes']}")
