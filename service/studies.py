@@ -282,8 +282,8 @@ class Job:
 class ClientShare:
     """The Dask workers as one client's studies use them: its studies share one window
     of chunks in flight (:meth:`DaskExecutor.map`'s ``owner``), so a client running two
-    studies has the share of a client running one, not twice it (issue 34: studies from
-    different clients interleave)."""
+    studies has the share of a client running one, not twice it: studies from different
+    clients interleave."""
 
     dask: DaskExecutor
     client: str
@@ -311,8 +311,8 @@ def release_memory() -> bool:
 
     glibc keeps freed memory for the process to reuse: after a 1,000,000-point joint study
     (its values ~600 MB) the service stayed at 852 MB where it started at 183 MB, and with
-    its values on Dask it crept up 20 MB a study (1,121 MB after ten: issue 34's figures,
-    bench/shopfloor.py). Trimmed, it is back at 308 MB (measured). A few milliseconds,
+    its values on Dask it crept up 20 MB a study (1,121 MB after ten, measured
+    by bench/shopfloor.py). Trimmed, it is back at 308 MB (measured). A few milliseconds,
     on the study's thread, with the GIL released.
     """
     if _TRIM is None:
@@ -1032,7 +1032,7 @@ PARQUET = "application/vnd.apache.parquet"
 ROWS_PER_BLOCK = 65_536
 #: Rows of a piece of the streamed CSV: about 1.7 MB for a joint study (76 columns),
 #: where a whole row group's text (55 MB, with its Python floats 200 MB more) added
-#: 800 MB to the service's RSS during a 1,000,000-point download (issue 34's figures).
+#: 800 MB to the service's RSS during a 1,000,000-point download (bench/shopfloor.py).
 CSV_ROWS_PER_PIECE = 2048
 
 
