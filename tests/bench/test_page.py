@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import doctest
 from pathlib import Path
 
 from bench import page
@@ -100,3 +101,8 @@ def test_an_empty_run_still_gives_a_page() -> None:
 def test_the_committed_page_is_what_the_committed_figures_give() -> None:
     committed = (ROOT / "docs" / "performance.md").read_text(encoding="utf-8")
     assert committed == page.build(ROOT / "bench"), "run python -m bench.page"
+
+
+def test_the_generator_s_doctests() -> None:
+    # bench/ is outside the doctest paths of pytest's configuration
+    assert doctest.testmod(page).failed == 0
