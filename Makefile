@@ -101,6 +101,7 @@ bench: $(VENV)/.installed-bench
 	$(BIN)/python -m bench.run
 	$(BIN)/python scripts/loadtest.py --seconds 4
 	$(BIN)/python -m bench.accuracy
+	$(BIN)/python -m bench.page
 
 # The Python client in clients/python, regenerated from the service's OpenAPI document by the
 # pinned openapi-python-client (clients/generate.py); commit the result. A test fails while

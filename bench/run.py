@@ -541,6 +541,7 @@ def collect(models: Sequence[ModelSpec], seconds: float, extras: Sequence[Path])
     sweeps: list[dict[str, Any]] = []
     outputs: list[dict[str, Any]] = []
     started = time.perf_counter()
+    load_start = _load_average()
     failures: list[str] = []
     for spec in models:
         parts: tuple[tuple[str, list[dict[str, Any]], Callable[[], list[dict[str, Any]]]], ...] = (
@@ -557,7 +558,7 @@ def collect(models: Sequence[ModelSpec], seconds: float, extras: Sequence[Path])
     rows += extra_rows
     failures += extra_failures
     return {
-        "machine": machine(),
+        "machine": {**machine(), "load_start": load_start, "load_end": _load_average()},
         "models": [spec.name for spec in models],
         "rungs_order": {
             spec.name: _cheapest_first(spec, [r for r in rows if r.get("kind") == "rung"])
@@ -570,6 +571,11 @@ def collect(models: Sequence[ModelSpec], seconds: float, extras: Sequence[Path])
         "extras": [p.name for p in extras],
         "elapsed_s": time.perf_counter() - started,
     }
+
+
+def _load_average() -> float | None:
+    """The one-minute load average (None where the platform has none): the page's stamp."""
+    return os.getloadavg()[0] if hasattr(os, "getloadavg") else None
 
 
 def _cheapest_first(spec: ModelSpec, rows: Sequence[dict[str, Any]]) -> dict[str, Any]:
