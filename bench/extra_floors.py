@@ -1,0 +1,243 @@
+"""Benchmark: a 10⁶-point :func:`engine.sweep` of each closed form against its numpy floor.
+
+A *floor* is a model's core equations for one to three named outputs, written
+as a few vectorised numpy lines over the swept input, doing no other work: no
+validation, no rung choice, no checks, no bookkeeping. It is a measurement
+baseline, not product code, so it restates equations the engine keeps in
+``engine/physics`` (the product keeps each equation once; this file only
+measures against it). The fixed geometry of a design (a bolt's pitch and
+diameters, a drive's inertias) is resolved once outside the timed floor, as a
+study would hold it fixed.
+
+``measure()`` returns one row per model: the CPU time per point of
+``engine.sweep(spec, base, vary, values, outputs=<the floor's outputs>,
+fidelity="closed_form", budget_s=None)`` on 10⁶ points (``engine.sweep`` takes
+any number of points; the 2,000-point cap is :func:`engine.sweep_values`' and the
+service's), beside its floor on the same points, and the ratio against the target
+(≤ 3× the floor). Before timing, each row asserts the floor equals the engine on
+every point to 1e-12 relative, so the floor measures the same arithmetic.
+
+Floors, simplest first (sources as in ``docs/sources.md``):
+
+* preload.tightening, swept over μ_G: F_M,zul of VDI 2230-1 R7 and M_A of R13;
+* preload.control (torque wrench), swept over μ_G: the nominal preload (the band's
+  top at F_M,zul, VDI 2230-1 R7) and its target torque (R13);
+* nutrunner.drive, swept over the motor speed: the kinetic energy [000, eq. 1–4],
+  the spin-up time [000, eq. 5] and the impact torque [000, eq. 6–9].
+
+CPU time (``time.process_time``), medians of interleaved rounds: the machine is
+shared. Run alone: ``PYTHONPATH=. python -m bench.extra_floors``.
+"""
+
+from __future__ import annotations
+
+import math
+import statistics
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+import engine
+from engine.core.spec import ModelSpec
+from engine.models import get_model
+from engine.physics.preload_methods import get_method
+from engine.procedures.bolt import resolve_bolt
+
+POINTS = 1_000_000
+ROUNDS = 3
+TARGET_RATIO = 3.0
+RTOL = 1e-12
+
+#: The floors' per-point cost the issue measured, ns (low, high), printed beside ours.
+ISSUE_FLOOR_NS: dict[str, tuple[float, float]] = {
+    "preload.tightening": (5.5, 6.0),
+    "preload.control": (6.0, 7.0),
+    "nutrunner.drive": (13.0, 21.0),
+}
+
+Floor = Callable[[np.ndarray], dict[str, np.ndarray]]
+
+
+@dataclass(frozen=True)
+class Case:
+    """A model's swept input, its range and the floor over it."""
+
+    model: str
+    vary: str
+    low: float
+    high: float
+    outputs: tuple[str, ...]
+    build: Callable[[ModelSpec, dict[str, Any]], Floor]
+
+
+def _tightening_floor(spec: ModelSpec, base: dict[str, Any]) -> Floor:
+    """F_M,zul (VDI 2230-1 R7) and M_A (R13) over μ_G, μ_K fixed."""
+    x, _ = spec.validate(base)
+    bolt, _ = resolve_bolt(x)
+    p, d2, d0 = bolt.pitch, bolt.pitch_diameter, bolt.stress_diameter
+    top = x["utilization"] * bolt.yield_strength * bolt.stress_area
+    k_bearing = x["bearing_friction"] * 0.25 * (bolt.bearing_outer_diameter + bolt.hole_diameter)
+    cos30 = math.cos(math.radians(30.0))
+
+    def floor(mu: np.ndarray) -> dict[str, np.ndarray]:
+        ratio = 1.5 * (d2 / d0) * (p / (math.pi * d2) + mu / cos30)
+        preload = top / np.sqrt(1.0 + 3.0 * ratio**2)
+        torque = preload * (0.16 * p + 0.58 * d2 * mu) + preload * k_bearing
+        return {"assembly_preload": preload, "tightening_torque": torque}
+
+    return floor
+
+
+def _control_floor(spec: ModelSpec, base: dict[str, Any]) -> Floor:
+    """The nominal preload F_M,zul/(1 + s) (R7, the method's band) and its torque (R13)."""
+    x, _ = spec.validate(base)
+    tightening = _tightening_floor(spec, base)
+    s = get_method(str(x["method"])).scatter
+
+    def floor(mu: np.ndarray) -> dict[str, np.ndarray]:
+        got = tightening(mu)
+        nominal = got["assembly_preload"] / (1.0 + s)
+        return {
+            "nominal_preload": nominal,
+            "target_torque": got["tightening_torque"] / (1.0 + s),
+        }
+
+    return floor
+
+
+def _drive_floor(spec: ModelSpec, base: dict[str, Any]) -> Floor:
+    """T = Σ ½ J ω² [000, eq. 1–4], t = T/P [000, eq. 5], M = √(2T C7C8/(C7+C8)) [eq. 6–9]."""
+    x, _ = spec.validate(base)
+    j12 = (
+        x["coupling_mass"] * x["coupling_diameter"] ** 2
+        + x["motor_pulley_mass"] * x["motor_pulley_diameter"] ** 2
+    ) / 16.0
+    j34 = (
+        x["flywheel_mass"] * x["flywheel_diameter"] ** 2
+        + x["drive_gear_mass"] * x["drive_gear_diameter"] ** 2
+    ) / 16.0
+    j5 = x["spindle_count"] * x["spindle_gear_mass"] * x["spindle_gear_diameter"] ** 2 / 16.0
+    r3 = x["motor_pulley_diameter"] / x["flywheel_diameter"]
+    r5 = r3 * x["drive_gear_diameter"] / x["spindle_gear_diameter"]
+    g = x["shear_modulus"]
+    c7 = math.pi * g * x["shaft_diameter"] ** 4 / (32.0 * x["shaft_length"])
+    c8 = math.pi * g * x["spindle_diameter"] ** 4 / (32.0 * x["spindle_length"])
+    series = 2.0 * c7 * c8 / (c7 + c8)
+    power = x["motor_power"]
+
+    def floor(w: np.ndarray) -> dict[str, np.ndarray]:
+        w2 = w * w
+        energy = (j12 + j34 * r3 * r3 + j5 * r5 * r5) * w2
+        return {
+            "kinetic_energy": energy,
+            "acceleration_time": energy / power,
+            "impact_torque": np.sqrt(energy * series),
+        }
+
+    return floor
+
+
+CASES: tuple[Case, ...] = (
+    Case(
+        "preload.tightening",
+        "thread_friction",
+        0.08,
+        0.16,
+        ("assembly_preload", "tightening_torque"),
+        _tightening_floor,
+    ),
+    Case(
+        "preload.control",
+        "thread_friction",
+        0.10,
+        0.20,
+        ("nominal_preload", "target_torque"),
+        _control_floor,
+    ),
+    Case(
+        "nutrunner.drive",
+        "motor_speed",
+        0.9 * 146.60765716752368,
+        1.1 * 146.60765716752368,
+        ("kinetic_energy", "acceleration_time", "impact_torque"),
+        _drive_floor,
+    ),
+)
+
+
+def prepare(case: Case, points: int) -> tuple[Callable[[], Any], Callable[[], Any]]:
+    """(the engine's sweep, the floor) on ``points`` points of ``case``, checked equal.
+
+    Raises AssertionError where an output differs from the engine's by more than
+    :data:`RTOL` relative at any point.
+    """
+    spec = get_model(case.model)
+    base = dict(spec.examples[0])
+    values = np.linspace(case.low, case.high, points)
+    floor = case.build(spec, base)
+
+    def sweep() -> Any:
+        return engine.sweep(
+            spec,
+            base,
+            case.vary,
+            values,  # type: ignore[arg-type]  # an array is a sequence of floats here
+            outputs=case.outputs,
+            fidelity="closed_form",
+            budget_s=None,
+        )
+
+    got, want = floor(values), sweep().columns
+    for name in case.outputs:
+        np.testing.assert_allclose(got[name], want[name], rtol=RTOL, atol=0.0, err_msg=name)
+    return sweep, lambda: floor(values)
+
+
+def _cpu(call: Callable[[], Any]) -> float:
+    start = time.process_time()
+    call()
+    return time.process_time() - start
+
+
+def measure(points: int = POINTS, rounds: int = ROUNDS) -> list[dict[str, Any]]:
+    rows = []
+    for case in CASES:
+        run_sweep, run_floor = prepare(case, points)
+        sweeps, floors = [], []
+        for _ in range(rounds):  # interleaved, so a busy moment hits both
+            sweeps.append(_cpu(run_sweep))
+            floors.append(_cpu(run_floor))
+        ratio = statistics.median(s / f for s, f in zip(sweeps, floors, strict=True))
+        sweep_ns = statistics.median(sweeps) / points * 1e9
+        floor_ns = statistics.median(floors) / points * 1e9
+        low, high = ISSUE_FLOOR_NS[case.model]
+        rows.append(
+            {
+                "model": case.model,
+                "method": "sweep closed_form",
+                "case": f"{points:,} pts of {case.vary} → {', '.join(case.outputs)}",
+                "time_s": sweep_ns * 1e-9,
+                "floor_s": floor_ns * 1e-9,
+                "ratio": ratio,
+                "target": "10⁶-point engine.sweep / its numpy floor",
+                "target_ratio": TARGET_RATIO,
+                "met": ratio <= TARGET_RATIO,
+                "notes": (
+                    f"sweep {sweep_ns:.3g} ns a point, floor {floor_ns:.3g} ns "
+                    f"(issue: {low:g}–{high:g} ns), equal to {RTOL:g} relative; "
+                    f"CPU time, median of {rounds} rounds"
+                ),
+            }
+        )
+    return rows
+
+
+if __name__ == "__main__":
+    for row in measure():
+        print(
+            f"{row['model']:<20} ×{row['ratio']:7.2f} (target ≤ ×{TARGET_RATIO:g}, "
+            f"{'met' if row['met'] else 'MISSED'})  {row['notes']}"
+        )
