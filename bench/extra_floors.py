@@ -30,6 +30,9 @@ Floors, simplest first (sources as in ``docs/sources.md``):
 * clutch.ball_setting, swept over the target torque: the required spring force and
   deflection of its helical spring.
 
+* impact.rare (the striker), swept over the power spring's rate: the release speed
+  of stage 1 (quasi-static, or the snap-through's) [002, eq. 1].
+
 The clutch models are measured here as sweeps, like the others, not in the
 three-input study form the issue names for them.
 
@@ -66,6 +69,7 @@ ISSUE_FLOOR_NS: dict[str, tuple[float, float]] = {
     "nutrunner.drive": (13.0, 21.0),
     "clutch.ball": (2.0, 8.0),
     "clutch.ball_setting": (4.0, 8.0),
+    "impact.rare": (40.0, 50.0),
 }
 
 Floor = Callable[[np.ndarray], dict[str, np.ndarray]]
@@ -184,6 +188,38 @@ def _setting_floor(spec: ModelSpec, base: dict[str, Any]) -> Floor:
     return floor
 
 
+def _release_floor(spec: ModelSpec, base: dict[str, Any]) -> Floor:
+    """ω_M of stage 1 [002, eq. 1] (symmetric V), or the snap-through's where ω_0 > ω_M.
+
+    ω_0 = √((c1 λ1 + c2 λ2 + W)/(A x0)), ω_M = √((c1 (λ1 + h1) + c2 (λ2 + h1) + W)/(A r)),
+    snap: ω_0 (J + n m x0²)/(J + n m r²); A = n m κ, κ = 1/(2 tan α), r = x0 + κ h1,
+    W = (m1 + m2 + n m/2) g.
+    """
+    x, _ = spec.validate(base)
+    if x["roller_geometry"] != "symmetric_v":
+        raise ValueError("the striker's floor is written for the symmetric V rollers")
+    nm = x["roller_count"] * x["roller_mass"]
+    kappa = 0.5 / math.tan(x["cone_angle"])
+    x0, h1 = x["roller_radius"], x["release_travel"]
+    r = x0 + kappa * h1
+    push = nm * kappa
+    weight = (x["half_coupling_mass"] + x["stepped_shaft_mass"] + 0.5 * nm) * x["gravity"]
+    c2, lam1, lam2 = (
+        x["auxiliary_spring_rate"],
+        x["power_spring_preload"],
+        x["auxiliary_spring_preload"],
+    )
+    j = x["flywheel_inertia"]
+    snap = (j + nm * x0 * x0) / (j + nm * r * r)
+
+    def floor(c1: np.ndarray) -> dict[str, np.ndarray]:
+        w_0 = np.sqrt(np.maximum(c1 * lam1 + c2 * lam2 + weight, 0.0) / (push * x0))
+        w_m = np.sqrt((c1 * (lam1 + h1) + c2 * (lam2 + h1) + weight) / (push * r))
+        return {"release_speed": np.where(w_0 <= w_m, w_m, w_0 * snap)}
+
+    return floor
+
+
 CASES: tuple[Case, ...] = (
     Case(
         "preload.tightening",
@@ -224,6 +260,14 @@ CASES: tuple[Case, ...] = (
         0.55,
         ("required_spring_force", "required_deflection"),
         _setting_floor,
+    ),
+    Case(
+        "impact.rare",
+        "power_spring_rate",
+        45000.0,
+        55000.0,
+        ("release_speed",),
+        _release_floor,
     ),
 )
 
