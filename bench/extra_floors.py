@@ -33,6 +33,9 @@ Floors, simplest first (sources as in ``docs/sources.md``):
 * impact.rare (the striker), swept over the power spring's rate: the release speed
   of stage 1 (quasi-static, or the snap-through's) [002, eq. 1].
 
+* blow.joint on its energy rung, swept over the snug torque: the first blow's peak
+  torque and the joint torque after it [000, eq. 7–8].
+
 The clutch models are measured here as sweeps, like the others, not in the
 three-input study form the issue names for them.
 
@@ -53,6 +56,7 @@ import numpy as np
 
 import engine
 from engine.core.spec import ModelSpec
+from engine.models import blow as blow_model
 from engine.models import get_model
 from engine.physics.preload_methods import get_method
 from engine.procedures.bolt import resolve_bolt
@@ -70,6 +74,7 @@ ISSUE_FLOOR_NS: dict[str, tuple[float, float]] = {
     "clutch.ball": (2.0, 8.0),
     "clutch.ball_setting": (4.0, 8.0),
     "impact.rare": (40.0, 50.0),
+    "blow.joint": (61.0, 84.0),
 }
 
 Floor = Callable[[np.ndarray], dict[str, np.ndarray]]
@@ -85,6 +90,7 @@ class Case:
     high: float
     outputs: tuple[str, ...]
     build: Callable[[ModelSpec, dict[str, Any]], Floor]
+    rung: str = "closed_form"
 
 
 def _tightening_floor(spec: ModelSpec, base: dict[str, Any]) -> Floor:
@@ -220,6 +226,31 @@ def _release_floor(spec: ModelSpec, base: dict[str, Any]) -> Floor:
     return floor
 
 
+def _blow_floor(spec: ModelSpec, base: dict[str, Any]) -> Floor:
+    """The first blow's peak and the joint torque after it, by the energy balance [000, eq. 7–8].
+
+    T_h = N + √(N² + 2EC) into a held nut; where T_h > b T_0 the nut turns:
+    T_p = N + √(N² + (E + T_0²/2k_j − N T_0/k_j) / (½(1/C + 1/k_j))), peak max(T_p, b T_0).
+    The tool (E, C, N) and the joint's rate k_j are the model's own set-up of the design.
+    """
+    x, _ = spec.validate(base)
+    setup = blow_model._setup_of(x)
+    e, c, k = float(setup.energy), float(setup.tool.stiffness), float(setup.rate)
+    n, b = float(setup.tool.drive), float(x["breakaway_factor"])
+    held = n + math.sqrt(n * n + 2.0 * e * c)
+    a = 0.5 * (1.0 / c + 1.0 / k)
+
+    def floor(t0: np.ndarray) -> dict[str, np.ndarray]:
+        tp = n + np.sqrt(n * n + (e + t0 * t0 / (2.0 * k) - n * t0 / k) / a)
+        holds = held <= b * t0
+        return {
+            "peak_torque": np.where(holds, held, np.maximum(tp, b * t0)),
+            "torque_after_first_blow": np.where(holds, t0, tp),
+        }
+
+    return floor
+
+
 CASES: tuple[Case, ...] = (
     Case(
         "preload.tightening",
@@ -269,6 +300,15 @@ CASES: tuple[Case, ...] = (
         ("release_speed",),
         _release_floor,
     ),
+    Case(
+        "blow.joint",
+        "snug_torque",
+        54.0,
+        66.0,
+        ("peak_torque", "torque_after_first_blow"),
+        _blow_floor,
+        rung="energy",
+    ),
 )
 
 
@@ -290,7 +330,7 @@ def prepare(case: Case, points: int) -> tuple[Callable[[], Any], Callable[[], An
             case.vary,
             values,  # type: ignore[arg-type]  # an array is a sequence of floats here
             outputs=case.outputs,
-            fidelity="closed_form",
+            fidelity=case.rung,
             budget_s=None,
         )
 
@@ -321,7 +361,7 @@ def measure(points: int = POINTS, rounds: int = ROUNDS) -> list[dict[str, Any]]:
         rows.append(
             {
                 "model": case.model,
-                "method": "sweep closed_form",
+                "method": f"sweep {case.rung}",
                 "case": f"{points:,} pts of {case.vary} → {', '.join(case.outputs)}",
                 "time_s": sweep_ns * 1e-9,
                 "floor_s": floor_ns * 1e-9,
