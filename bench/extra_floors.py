@@ -33,6 +33,8 @@ Floors, simplest first (sources as in ``docs/sources.md``):
 * impact.rare (the striker), swept over the power spring's rate: the release speed
   of stage 1 (quasi-static, or the snap-through's) [002, eq. 1].
 
+* joint.vdi2230, swept over the axial working load: the additional bolt load (R4),
+  the least required assembly preload (R5) and the largest bolt force (R8);
 * blow.joint on its energy rung, swept over the snug torque: the first blow's peak
   torque and the joint torque after it [000, eq. 7–8].
 
@@ -75,6 +77,7 @@ ISSUE_FLOOR_NS: dict[str, tuple[float, float]] = {
     "clutch.ball_setting": (4.0, 8.0),
     "impact.rare": (40.0, 50.0),
     "blow.joint": (61.0, 84.0),
+    "joint.vdi2230": (28.0, 31.0),
 }
 
 Floor = Callable[[np.ndarray], dict[str, np.ndarray]]
@@ -251,6 +254,32 @@ def _blow_floor(spec: ModelSpec, base: dict[str, Any]) -> Floor:
     return floor
 
 
+def _joint_floor(spec: ModelSpec, base: dict[str, Any]) -> Floor:
+    """F_SA = Φ_n F_A (VDI 2230-1 R4), F_M,min (R5) and F_S,max = F_M,zul + Φ_n F_A (R8).
+
+    Φ_n = n δ_P / (δ_S + δ_P) (R3, R4), F_M,min = F_Kerf + (1 − Φ_n) F_A + F_Z + ΔF_th.
+    The compliances, F_Kerf (a transverse load, no eccentricity: it does not depend on
+    F_A), F_Z, ΔF_th and F_M,zul are the engine's at the base design, resolved once.
+    """
+    x, _ = spec.validate(base)
+    results = engine.run(spec, base, fidelity="closed_form").results
+    at = {k: v for k, v in results.items() if isinstance(v, float)}
+    bolt, plates = at["bolt_compliance"], at["clamped_compliance"]
+    phi = x["load_introduction"] * plates / (bolt + plates)
+    fixed = at["required_clamp_force"] + at["embedding_loss"] + at["thermal_loss"]
+    permissible = at["permissible_preload"]
+
+    def floor(load: np.ndarray) -> dict[str, np.ndarray]:
+        additional = phi * load
+        return {
+            "additional_bolt_load": additional,
+            "required_preload_min": fixed + (1.0 - phi) * load,
+            "max_bolt_force": permissible + additional,
+        }
+
+    return floor
+
+
 CASES: tuple[Case, ...] = (
     Case(
         "preload.tightening",
@@ -308,6 +337,14 @@ CASES: tuple[Case, ...] = (
         ("peak_torque", "torque_after_first_blow"),
         _blow_floor,
         rung="energy",
+    ),
+    Case(
+        "joint.vdi2230",
+        "working_load",
+        7200.0,
+        8800.0,
+        ("additional_bolt_load", "required_preload_min", "max_bolt_force"),
+        _joint_floor,
     ),
 )
 
