@@ -292,6 +292,22 @@ class DaskExecutor:
                     self._client.run(os.nice, 10)
             return self._client
 
+    def workers(self) -> int:
+        """The workers the cluster has now, asked without waiting on a lost scheduler: a
+        local cluster's own copy of the scheduler's list, a remote scheduler within 2 s
+        (0 when it does not answer); 0 before the cluster is started. For a watchdog: a
+        study's chunks wait for ever on a cluster whose workers died or never started."""
+        with self._lock:
+            client, cluster = self._client, self._cluster
+        if client is None:
+            return 0
+        try:
+            if cluster is not None:
+                return len(cluster.scheduler_info.get("workers", {}))
+            return len(client.sync(client.scheduler.ncores, callback_timeout=2.0))
+        except Exception:  # the scheduler gone, or not answering: no workers to count on
+            return 0
+
     def map(
         self,
         calls: list[ChunkArgs],
