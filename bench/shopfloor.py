@@ -664,9 +664,14 @@ def main(argv: list[str] | None = None) -> None:
                     if name in wanted:
                         say(name, fig(svc, args.scale))
         if "flood" in wanted:
-            with Service(root / "flood") as svc:
+            # the connection limits scaled with the sockets, so a reduced run fills them too
+            limits = {
+                "MAX_CONNECTIONS": str(max(10, int(1000 * args.scale))),
+                "MAX_CONNECTIONS_PER_CLIENT": str(max(1, int(100 * args.scale))),
+            }
+            with Service(root / "flood", env=limits) as svc:
                 say("flood", fig_flood(svc, args.scale))
-            with Service(root / "flood10") as svc:
+            with Service(root / "flood10", env=limits) as svc:
                 say("flood_10_addresses", fig_flood(svc, args.scale, spread=10))
         if "lookups" in wanted:
             say("lookups", fig_lookups(root, args.scale))

@@ -275,6 +275,10 @@ class Settings:
     max_connections_per_client: int = field(
         default_factory=lambda: _int("MAX_CONNECTIONS_PER_CLIENT", 100)
     )
+    #: Connections that may wait for their request at once (no byte yet, or a head or body
+    #: part-sent); beyond it the one that has been sending longest is shed. 0: half of
+    #: MAX_CONNECTIONS, so trickling sockets from many addresses leave room for others.
+    max_waiting_connections: int = field(default_factory=lambda: _int("MAX_WAITING_CONNECTIONS", 0))
     #: Addresses or networks ("10.0.0.0/8") of reverse proxies whose X-Forwarded-For and
     #: X-Forwarded-Proto are believed: the client's identity (per-client quotas, lanes and
     #: the connection cap) is then the forwarded address. Empty: no one's (a client could
@@ -327,6 +331,11 @@ class Settings:
         for name, value in positive.items():
             if not value > 0:
                 raise ValueError(f"{name} must be positive, not {value!r}")
+        if not self.max_waiting_connections >= 0:
+            raise ValueError(
+                "MAX_WAITING_CONNECTIONS must be an integer >= 0 (0: half of MAX_CONNECTIONS), "
+                f"not {self.max_waiting_connections!r}"
+            )
         if self.engine_queue < 0 or self.heavy_queue < 0 or self.budget_grace_s < 0:
             raise ValueError("ENGINE_QUEUE, HEAVY_QUEUE and BUDGET_GRACE_S must not be negative")
         if not self.inline_budget_s >= 0:

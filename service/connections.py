@@ -12,7 +12,17 @@
     closed (httptools has no limit of its own: 20 heads of 10 MB held 200 MB);
   - one client address holds at most ``MAX_CONNECTIONS_PER_CLIENT`` connections;
     a connection beyond that gets a JSON 503 with Retry-After and is closed, so one
-    client trickling bytes on a thousand sockets cannot take every slot.
+    client trickling bytes on a thousand sockets cannot take every slot;
+  - connections still waiting for their request (head or body not yet in, or idle
+    between requests) hold at most ``WAITING_SHARE`` of ``MAX_CONNECTIONS``
+    (``MAX_WAITING_CONNECTIONS`` where set): beyond it,
+    a new connection sheds the one whose request has been coming in longest (an idle
+    one, with no byte of a request yet, only when no request is part-sent), so many
+    addresses each under the per-client cap cannot fill the server with trickling
+    sockets either (issue 34: 10 addresses x 100 sockets left another client 14 % of
+    its requests). A request that arrives promptly is never among the longest
+    coming, a client's idle keep-alive connection is spared while tricklers remain,
+    and ``/healthz`` keeps answering.
 
 * :func:`service_unavailable`: uvicorn's answer beyond ``MAX_CONNECTIONS`` in all,
   JSON with Retry-After like every other 503 of the service (uvicorn's own is plain
@@ -34,6 +44,7 @@ from __future__ import annotations
 
 import asyncio
 import ipaddress
+import itertools
 import json
 import logging
 import time
@@ -51,6 +62,12 @@ _SETTINGS = Settings()  # read once per server process; nonsense stops it at sta
 HEADER_TIMEOUT_S = _SETTINGS.header_timeout_s
 MAX_HEAD_BYTES = _SETTINGS.max_head_bytes
 MAX_CONNECTIONS_PER_CLIENT = _SETTINGS.max_connections_per_client
+#: The share of ``MAX_CONNECTIONS`` that connections waiting for their request may hold
+#: (unless ``MAX_WAITING_CONNECTIONS`` says how many).
+WAITING_SHARE = 0.5
+MAX_WAITING = _SETTINGS.max_waiting_connections or max(
+    1, int(WAITING_SHARE * _SETTINGS.max_connections)
+)
 #: Seconds a client is asked to wait before it tries again after a 503.
 RETRY_AFTER_S = 1
 
@@ -117,6 +134,11 @@ class HeadDeadline:
     header_timeout_s = HEADER_TIMEOUT_S
     max_head_bytes = MAX_HEAD_BYTES
     max_per_client = MAX_CONNECTIONS_PER_CLIENT
+    max_waiting = MAX_WAITING
+    #: Connections waiting for their request, in this server process, in the order they
+    #: began to wait: idle (no byte of a request yet) and part-sent (a request begun).
+    idle: ClassVar[dict[HeadDeadline, None]] = {}
+    partial: ClassVar[dict[HeadDeadline, None]] = {}
     proxies = Proxies(_SETTINGS.trusted_proxies)
     #: Open connections per client address, in this server process.
     per_client: ClassVar[Counter[str]] = Counter()
@@ -130,6 +152,47 @@ class HeadDeadline:
     loop: asyncio.AbstractEventLoop
     transport: asyncio.Transport
     cycle: Any
+
+    def _wait(self) -> None:
+        """This connection waits for a request (at the end of the line); shed the longest
+        waiting beyond ``max_waiting``: part-sent requests first, the longest coming."""
+        self._served()
+        self.idle[self] = None
+        while len(self.idle) + len(self.partial) > self.max_waiting:
+            line = itertools.chain(self.partial, self.idle)
+            oldest = next((c for c in line if c is not self), None)
+            if oldest is None:
+                return
+            oldest._shed()
+
+    def _begun(self) -> None:
+        """Bytes of its request came and it is not all in: part-sent, at the end of the line."""
+        if self in self.idle:
+            del self.idle[self]
+            self.partial[self] = None
+
+    def _served(self) -> None:
+        """Its request is in (head and body), or it is closed: no longer waiting."""
+        self.idle.pop(self, None)
+        self.partial.pop(self, None)
+
+    def _shed(self) -> None:
+        """Close a connection that waited longest while the server is short of room: a
+        part-sent head gets the JSON 503 (no app is running for it), an idle or a
+        part-sent body is closed (the app reading it sees the client gone)."""
+        self._served()
+        log.warning("a slow connection shed: %d wait for their requests", self.max_waiting)
+        if self._head_bytes and (self.cycle is None or self.cycle.response_complete):
+            self._refuse(
+                503,
+                "Service Unavailable",
+                "too_many_connections",
+                f"over {self.max_waiting} connections are waiting for their requests; send a "
+                "request promptly once connected, or retry after the Retry-After seconds",
+            )
+        else:
+            self._disarm()
+            self.transport.close()
 
     def _arm(self, seconds: float | None = None) -> None:
         if self._head_timer is None:
@@ -162,6 +225,7 @@ class HeadDeadline:
         if client in self.proxies:
             self._proxy = client  # counted per forwarded client, request by request
             self._arm()
+            self._wait()
             return
         if self.per_client[client] >= self.max_per_client:
             # over the cap: answered (503) as soon as its request starts, and given only a
@@ -173,6 +237,7 @@ class HeadDeadline:
         self._client = client
         self.per_client[client] += 1
         self._arm()
+        self._wait()
 
     def data_received(self, data: bytes) -> None:
         if self._refused:
@@ -190,10 +255,15 @@ class HeadDeadline:
         if self.cycle is not None and not self.cycle.response_complete:
             self._disarm()  # a head arrived; its body has BODY_TIMEOUT_S in all
             self._head_bytes = 0
+            if not self.cycle.more_body:
+                self._served()  # the whole request is in
+            else:
+                self._begun()  # its body is still coming
             if self._proxy is not None and self._forwarded is None:
                 self._count_forwarded(self._proxy)
         elif waiting and not self.transport.is_closing():
             self._head_bytes += len(data)  # still no complete head: count what it holds
+            self._begun()
             if self._head_bytes > self.max_head_bytes:
                 self._refuse(
                     431,
@@ -233,8 +303,11 @@ class HeadDeadline:
         super().on_response_complete()  # type: ignore[misc]
         self._uncount("_forwarded")
         self._arm()  # the next request's head, if any, is on the clock
+        if not self.transport.is_closing():
+            self._wait()
 
     def connection_lost(self, exc: Exception | None) -> None:
+        self._served()
         self._disarm()
         self._uncount("_client")
         self._uncount("_forwarded")

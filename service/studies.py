@@ -85,6 +85,13 @@ from .units import quantity
 _KEEP_JOBS = 64
 #: The share of the usable memory the local Dask workers may hold between them.
 DASK_MEMORY_SHARE = 0.5
+#: How often the watchdog looks at this process's running studies [s] (:meth:`Studies.watch`).
+WATCHDOG_S = 1.0
+#: How long a study on Dask may wait on a cluster without a worker before it fails [s]:
+#: long enough for a nanny to restart a worker that died, short beside a study's budget.
+NO_WORKERS_S = 10.0
+#: Past its budget, how long a study may wait for the chunk that would end it [s].
+BUDGET_GRACE_S = 2.0
 
 log = logging.getLogger("service.studies")
 
@@ -250,6 +257,10 @@ class Job:
     settled: bool = False
     #: Bytes its points file is expected to take (reserved against the disk quota).
     disk_bytes: int = 0
+    #: The Dask executor its chunks wait on (None: in-process), for the watchdog.
+    dask: DaskExecutor | None = None
+    #: Since when (time.monotonic) the watchdog has seen the cluster without a worker.
+    no_workers_since: float | None = None
 
     @property
     def active(self) -> bool:
@@ -409,6 +420,7 @@ class Studies:
             max_workers=max(1, settings.max_active), thread_name_prefix="study"
         )
         self._dask: DaskExecutor | None = None
+        self._next_watch = 0.0
         self._stop = threading.Event()
         self._beat = threading.Thread(target=self._beating, name="study-beat", daemon=True)
         self._beat.start()
@@ -445,6 +457,11 @@ class Studies:
                 del self.jobs[j.id]  # settled and written: the store has it
         if not mine:
             return
+        now = time.monotonic()
+        if now >= self._next_watch:
+            self._next_watch = now + WATCHDOG_S
+            for j in mine:
+                self.watch(j, now)
         try:
             cancels = self.store.beat(self.owner, [(j.id, j.done, j.phase) for j in mine])
         except sqlite3.Error as exc:  # a locked or full disk: said, and tried again
@@ -454,15 +471,55 @@ class Studies:
             if j.id in cancels:
                 j.cancel.set()
 
+    def watch(self, job: Job, now: float) -> None:
+        """Fail a running study that can no longer end by itself: past its budget with no
+        chunk back (the budget is otherwise checked only when one comes back), or on a
+        Dask cluster that has had no worker for ``NO_WORKERS_S`` (workers killed, or never
+        started under load: a study sat at 0 points for 527 s). The job's error names the
+        cause, its place in the quotas is freed at once, and its chunks are cancelled."""
+        if job.state != "running" or job.started is None or job.done >= job.total:
+            return  # not started, or summarising: no chunk is awaited
+        where = f"after {job.done} of {job.total} points"
+        budget = self.settings.budget_s
+        if time.time() - job.started > budget + BUDGET_GRACE_S:
+            self._fail(
+                job,
+                "budget_exceeded",
+                f"the study passed its {budget:g} s budget (STUDY_BUDGET_S) {where} with no "
+                "chunk back from the workers",
+                field="samples",
+            )
+            return
+        if job.dask is None:
+            return
+        if job.dask.workers() > 0:
+            job.no_workers_since = None
+        elif job.no_workers_since is None:
+            job.no_workers_since = now
+        elif now - job.no_workers_since >= NO_WORKERS_S:
+            self._fail(
+                job,
+                "no_workers",
+                f"the Dask cluster has had no worker for {NO_WORKERS_S:g} s: the study "
+                f"stopped {where}; retry later",
+            )
+
+    def _fail(self, job: Job, kind: str, msg: str, field: str | None = None) -> None:
+        """The watchdog's end of a job: failed in the store (its quota freed), its chunks
+        stopped; the job's thread, when its executor lets it go, finds it finished."""
+        error = {"type": kind, "msg": msg, "field": field}
+        if self._finish(job, "failed", error=error, disk_bytes=0):
+            log.warning("study %s failed: %s", job.id, msg)
+            job.cancel.set()
+
     def state(self) -> dict[str, Any]:
         """Studies running and queued here, the unfinished ones in all, and the limits
         (for ``/readyz``)."""
         with self.lock:
             here = [j for j in self.jobs.values() if j.active]
-        running = sum(j.state == "running" for j in here)
         return {
-            "running": running,
-            "queued": len(here) - running,
+            "running": sum(j.state == "running" for j in here),
+            "queued": sum(j.state == "queued" for j in here),
             "active": len(self.store.active()),
             "max_active": self.settings.max_active,
             "per_client": self.settings.per_client,
@@ -534,14 +591,21 @@ class Studies:
         self.threads.submit(self._work, job, spec, study, p)
         return job
 
-    def _finish(self, job: Job, **fields: Any) -> None:
-        job.finished = time.time()
+    def _finish(self, job: Job, state: str, **fields: Any) -> bool:
+        """End ``job`` in ``state`` with the stored ``fields``, once: False (nothing
+        written) when it has already ended (the watchdog failed it meanwhile)."""
+        with self.lock:
+            if job.finished is not None:
+                return False
+            job.state, job.finished = state, time.time()
+            job.error = fields.get("error", job.error)
         try:
             self.store.update(
                 job.id, state=job.state, done=job.done, finished=job.finished, **fields
             )
         except sqlite3.Error as exc:
             log.warning("study %s: the job store did not take its end: %s", job.id, exc)
+        return True
 
     def _work(self, job: Job, spec: ModelSpec, study: Study, p: Plan | None = None) -> None:
         try:
@@ -553,8 +617,7 @@ class Studies:
 
     def _run(self, job: Job, spec: ModelSpec, study: Study, p: Plan | None) -> None:
         if job.cancel.is_set():  # cancelled while it waited for a thread
-            job.state = "cancelled"
-            self._finish(job)
+            self._finish(job, "cancelled")
             return
         job.state, job.started = "running", time.time()
         self.store.update(job.id, state="running", started=job.started, phase=job.phase)
@@ -570,6 +633,7 @@ class Studies:
                 dask = self.dask()
                 job.phase = "starting the Dask workers"
                 dask.client()
+                job.dask = dask
                 executor = ClientShare(dask, job.client)
             result = run_study(
                 spec,
@@ -582,26 +646,28 @@ class Studies:
             )
             summary = _json_clean(result.summary)
             written = 0
+            path = self.store.points_path(job.id)
             if job.keep_points:  # the raw values go to disk, never stay in memory
                 job.phase = "writing the points"
-                path = self.store.points_path(job.id)
                 write_points(path, job.id, result)
                 written = path.stat().st_size
             del result
-            job.state = "done"
-            self._finish(job, summary=summary, points=int(job.keep_points), disk_bytes=written)
+            if (
+                not self._finish(
+                    job, "done", summary=summary, points=int(job.keep_points), disk_bytes=written
+                )
+                and written
+            ):
+                path.unlink(missing_ok=True)  # the watchdog failed it first: nothing kept
         except Cancelled:
-            job.state = "cancelled"
-            self._finish(job, disk_bytes=0)
+            self._finish(job, "cancelled", disk_bytes=0)
         except engine.EngineError as exc:
-            job.state = "failed"
-            job.error = {"type": exc.kind, "msg": exc.message, "field": exc.field}
-            self._finish(job, error=job.error, disk_bytes=0)
+            error = {"type": exc.kind, "msg": exc.message, "field": exc.field}
+            self._finish(job, "failed", error=error, disk_bytes=0)
         except Exception as exc:  # a worker that died, a lost scheduler: said, not hidden
             log.warning("study %s failed: %s: %s", job.id, type(exc).__name__, exc)
-            job.state = "failed"
-            job.error = {"type": "study_failed", "msg": _public(f"{type(exc).__name__}: {exc}")}
-            self._finish(job, error=job.error, disk_bytes=0)
+            error = {"type": "study_failed", "msg": _public(f"{type(exc).__name__}: {exc}")}
+            self._finish(job, "failed", error=error, disk_bytes=0)
 
     def record(self, job_id: str, client: str | None = None) -> dict[str, Any]:
         """The stored job, or 404; with a ``client`` (a key's identity, where the server has
@@ -645,8 +711,7 @@ class Studies:
         self.threads.shutdown(wait=False, cancel_futures=True)
         for job in mine:  # what never ran is said, not left "queued" in the store
             if job.state == "queued":
-                job.state = "cancelled"
-                self._finish(job)
+                self._finish(job, "cancelled")
         if self._dask is not None:
             self._dask.close()
 
