@@ -19,7 +19,7 @@
     a new connection sheds the one whose request has been coming in longest (an idle
     one, with no byte of a request yet, only when no request is part-sent), so many
     addresses each under the per-client cap cannot fill the server with trickling
-    sockets either (issue 34: 10 addresses x 100 sockets left another client 14 % of
+    sockets either (measured: 10 addresses x 100 sockets left another client 14 % of
     its requests). A request that arrives promptly is never among the longest
     coming, a client's idle keep-alive connection is spared while tricklers remain,
     and ``/healthz`` keeps answering.
