@@ -311,18 +311,7 @@ def resolve(x: Mapping[str, Any]) -> tuple[dict[str, Any], Fastener, list[str]]:
             stress_diameter=(t.stress_area * 4 / 3.141592653589793) ** 0.5,
             stress_area=t.stress_area,
         )
-        if t.is_metric:
-            notes.append(
-                f"thread {t.designation}: P = {q(t.pitch, 'mm', fmt='g')} (ISO 261/262), "
-                f"A_s = {q(t.stress_area, 'mm²', 4)} (ISO 898-1)"
-            )
-        else:
-            notes.append(
-                f"thread {t.designation}: d = {t.diameter / fa.INCH:g} in, "
-                f"E = {t.pitch_diameter / fa.INCH:.4f} in, "
-                f"A_t = {t.stress_area / fa.INCH**2:.4f} in² "
-                "(ASME B1.1); minor diameter d − 1.299038 p"
-            )
+        notes.append(_thread_note(t))
     else:
         if x.get("thread_diameter") is None:
             raise InputOutOfRange(
@@ -436,6 +425,12 @@ class Bolt(NamedTuple):
     fastener: Fastener | None = None
 
 
+# The notes naming a standard value are kept by value, like the catalogue's threads: they
+# depend only on the size and class a request names, which the next request repeats, and
+# each costs a few marked quantities (q()) to write.
+
+
+@functools.lru_cache(maxsize=256)
 def _class_note(name: str, diameter: float, yield_strength: float, tensile: float) -> str:
     """Where a property class's strengths come from: ISO 898-1, or its M39 values carried on."""
     kind = th.PROPERTY_CLASSES[name].yield_kind
@@ -451,6 +446,40 @@ def _class_note(name: str, diameter: float, yield_strength: float, tensile: floa
         f"property class {name}, d = {q(diameter, 'mm', fmt='g')}: {values} "
         "(ISO 898-1 minimum values)"
     )
+
+
+@functools.lru_cache(maxsize=256)
+def _thread_note(t: fa.Thread) -> str:
+    """The catalogue thread's pitch and stress area, as its standard gives them."""
+    if t.is_metric:
+        return (
+            f"thread {t.designation}: P = {q(t.pitch, 'mm', fmt='g')} (ISO 261/262), "
+            f"A_s = {q(t.stress_area, 'mm²', 4)} (ISO 898-1)"
+        )
+    return (
+        f"thread {t.designation}: d = {t.diameter / fa.INCH:g} in, "
+        f"E = {t.pitch_diameter / fa.INCH:.4f} in, "
+        f"A_t = {t.stress_area / fa.INCH**2:.4f} in² "
+        "(ASME B1.1); minor diameter d − 1.299038 p"
+    )
+
+
+@functools.lru_cache(maxsize=256)
+def _coarse_pitch_note(diameter: float, pitch: float) -> str:
+    """The ISO 261 coarse pitch taken for a thread diameter."""
+    return f"pitch P = {q(pitch, 'mm', fmt='g')}: ISO 261 coarse thread M{diameter * 1e3:g}"
+
+
+@functools.lru_cache(maxsize=256)
+def _hex_bearing_note(outer: float) -> str:
+    """The ISO 4017 bearing face taken for a hexagon head."""
+    return f"bearing face D_f = d_w,min = {q(outer, 'mm', fmt='g')} (ISO 4017 hexagon head)"
+
+
+@functools.lru_cache(maxsize=256)
+def _clearance_hole_note(hole: float, series: str) -> str:
+    """The ISO 273 clearance hole taken for the thread."""
+    return f"clearance hole d_h = {q(hole, 'mm', fmt='g')} (ISO 273 {series})"
 
 
 def resolve_bolt(x: Mapping[str, Any]) -> tuple[Bolt, list[str]]:
@@ -498,7 +527,7 @@ def _bolt_numbers(
             ok = ok & found
         else:
             pitch = th.coarse_pitch(d)
-            note(lambda: f"pitch P = {q(pitch, 'mm', fmt='g')}: ISO 261 coarse thread M{d * 1e3:g}")
+            note(lambda: _coarse_pitch_note(d, pitch))
     else:
         pitch = num(x["thread_pitch"])
         need(
@@ -541,11 +570,7 @@ def _bolt_numbers(
         ok = ok & found
     else:
         outer = th.hex_bearing_diameter(d)
-        note(
-            lambda: (
-                f"bearing face D_f = d_w,min = {q(outer, 'mm', fmt='g')} (ISO 4017 hexagon head)"
-            )
-        )
+        note(lambda: _hex_bearing_note(outer))
     if x.get("hole_diameter") is not None:
         hole = num(x["hole_diameter"])
         need(
@@ -566,7 +591,7 @@ def _bolt_numbers(
             ok = ok & found
         else:
             hole = th.clearance_hole(d, series)
-            note(lambda: f"clearance hole d_h = {q(hole, 'mm', fmt='g')} (ISO 273 {series})")
+            note(lambda: _clearance_hole_note(hole, series))
     need(
         outer > hole,
         lambda: InputOutOfRange(
