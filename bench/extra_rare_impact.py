@@ -30,6 +30,7 @@ from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
+from engine.core.errors import BudgetExceeded
 from engine.models.rare_impact import RARE_IMPACT, REFERENCE_DESIGN
 from engine.procedures.striker_cycle import (
     closed_form_cycle,
@@ -97,8 +98,14 @@ def measure() -> list[dict[str, Any]]:
     """Rows {model, method, case, time_s, error, notes} for the bench runner."""
     rows: list[dict[str, Any]] = []
     for case, x in _cases().items():
+        try:
+            simulate_cycle(x)  # load the compiled kernel before timing
+        except BudgetExceeded as exc:
+            # the one-sided return (stage 3) of a very stiff striker takes more than the
+            # product's step budget, which then falls back to the closed form: not timed
+            print(f"{case}: not timed, the simulation refuses it ({exc.message[:80]}…)")
+            continue
         ref, _ = simulate_cycle_scipy(x, rtol=1e-13)
-        simulate_cycle(x)  # load the compiled kernel before timing
         o = simulate_cycle(x)
         rows.append(
             _row(

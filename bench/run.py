@@ -340,6 +340,8 @@ def run_extras(paths: Sequence[Path]) -> tuple[list[dict[str, Any]], list[str]]:
             module_spec = importlib.util.spec_from_file_location(f"bench.{path.stem}", path)
             assert module_spec is not None and module_spec.loader is not None
             module = importlib.util.module_from_spec(module_spec)
+            # registered before it runs: a dataclass in the module looks itself up there
+            sys.modules[module_spec.name] = module
             module_spec.loader.exec_module(module)
             for row in module.measure():
                 rows.append({**json_safe(row), "kind": "extra", "source": path.name})
@@ -405,7 +407,9 @@ def plot(rows: Sequence[dict[str, Any]], path: Path) -> None:
     for row in rows:
         if row.get("kind") not in ("rung", "extra") or not row.get("time_s"):
             continue
-        groups.setdefault((row["model"], str(row["method"])), []).append(row)
+        # an extra's row names its model, or only its method (a model's name)
+        model = str(row.get("model", row["method"]))
+        groups.setdefault((model, str(row["method"])), []).append(row)
     models = sorted({model for model, _ in groups})
     colours = {m: plt.get_cmap("tab10")(i % 10) for i, m in enumerate(models)}
     fig, ax = plt.subplots(figsize=(13, 7), layout="constrained")

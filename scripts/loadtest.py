@@ -252,10 +252,12 @@ def hammer(
     statuses: dict[int, int] = {}
     lock = threading.Lock()
     issued = 0
-    stop_at = time.perf_counter() + seconds
+    # the clock starts when the first client has warmed up: a slow model's warm-up (20
+    # requests a client) could otherwise use the whole time and leave nothing measured
+    stop_at: float | None = None
 
     def client_loop() -> None:
-        nonlocal issued
+        nonlocal issued, stop_at
         client = KeepAlive(url)
         request = client.prepare(method, path, body)
         try:
@@ -263,6 +265,8 @@ def hammer(
                 client.send(request)
             while True:
                 with lock:
+                    if stop_at is None:
+                        stop_at = time.perf_counter() + seconds
                     if issued >= requests or time.perf_counter() > stop_at:
                         return
                     issued += 1
