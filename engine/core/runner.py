@@ -74,12 +74,16 @@ class RunResult:
 
         def __getattr__(self, name: str) -> Any:
             """The sentence fields of a result :meth:`_of` made, on their first reading."""
-            marked = self.__dict__.get("_marked")
+            made = self.__dict__
+            marked = made.get("_marked")
             if marked is None or name not in _SENTENCE_FIELDS:
+                # another thread may have made the fields since this lookup missed them
+                if name in made:
+                    return made[name]
                 raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
-            self.__dict__.update(_sentences(*marked))
-            self.__dict__.pop("_marked", None)
-            return self.__dict__[name]
+            made.update(_sentences(*marked))
+            made.pop("_marked", None)
+            return made[name]
 
 
 #: The fields of :class:`RunResult` that :meth:`RunResult._of` leaves to their first reading.

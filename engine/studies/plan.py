@@ -787,7 +787,7 @@ def evaluate_chunk(
                 f"a chunk of the study ran past its {deadline_s:g} s budget", field="samples"
             )
         point = at(x, n, j)
-        # a point has the budget it would have alone, or what is left of the chunk's
+        # a point has what is left of the chunk's budget (none without one)
         left = None if deadline is None else max(deadline - time.perf_counter(), 1e-3)
         try:
             res = run(
@@ -796,15 +796,17 @@ def evaluate_chunk(
                 fidelity=asked,
                 tolerance=tol,
                 outputs=outputs,
-                budget_s=DEFAULT_BUDGET_S if left is None else min(left, DEFAULT_BUDGET_S),
+                budget_s=left,
                 cancel=cancel,
             )
         except Cancelled:
             break
         except BudgetExceeded as exc:
             if left is not None and left < DEFAULT_BUDGET_S:
-                # the chunk's time ran out, not the point's own budget: a refusal here would
-                # depend on the machine's load, so the chunk stops as its budget says
+                # with a deadline every step budget is the time it leaves: refused with less
+                # time than a request alone has (DEFAULT_BUDGET_S), the chunk's time ran out,
+                # not the point's; counted as a refusal it would depend on the machine's load,
+                # so the chunk stops as its budget says
                 raise BudgetExceeded(
                     f"a chunk of the study ran past its {deadline_s:g} s budget", field="samples"
                 ) from exc
