@@ -49,6 +49,8 @@ from typing import Any
 
 import httpx
 
+from bench.cold_start import free_port
+
 ROOT = Path(__file__).resolve().parents[1]
 API = "/api/v1"
 JOINT = f"{API}/joint/vdi2230/study"
@@ -72,12 +74,6 @@ BEFORE = {
 
 def load() -> float:
     return round(os.getloadavg()[0], 2)
-
-
-def free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return int(s.getsockname()[1])
 
 
 def rss_mb(pid: int) -> float:

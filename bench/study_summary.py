@@ -420,15 +420,14 @@ def http_vs_inprocess(
     studies on its local Dask cluster, started and warmed by a first study) against the
     same study run in this process (:class:`~engine.studies.execute.InProcess`), in wall
     seconds (the HTTP study runs in other processes), alternating, medians of ``rounds``."""
-    import socket
     import subprocess
     import tempfile
 
     import httpx
 
-    with socket.socket() as probe:  # a free port on loopback
-        probe.bind(("127.0.0.1", 0))
-        port = int(probe.getsockname()[1])
+    from bench.cold_start import free_port
+
+    port = free_port()
     store = tempfile.mkdtemp(prefix="bench-study-store-")
     env = {**os.environ, "WARM_UP": "0", "STUDY_STORE": store, "PYTHONPATH": str(ROOT)}
     proc = subprocess.Popen(
