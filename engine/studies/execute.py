@@ -430,7 +430,10 @@ class DaskExecutor:
                 # as many as the owner's share allows now (it grows when another of its
                 # studies ends), and one at least
                 while following < len(calls) and not cancel.is_set():
-                    flying_now = len(in_flight())
+                    # submitted and not yet taken: a finished chunk whose result waits to
+                    # be collected still holds its place (and its result on a worker)
+                    with lock:
+                        flying_now = len(flying)
                     if flying_now and flying_now >= share():
                         break
                     done.add(submit(following))
