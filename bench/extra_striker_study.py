@@ -115,8 +115,11 @@ def measure() -> list[dict[str, Any]]:
             "method": "study_sim_overhead",
             "case": f"{n}-design simulation study, beyond kernels",
             "time_s": f["total_s"] / n,
-            "ratio": f["total_s"] / f["kernel_s"],
-            "target_ratio": 1.0 + TARGET_OVERHEAD,
+            # the share beyond the kernels, as the target states it (the page prints a
+            # ratio under a "%" goal as a percentage): total / kernels - 1, not the quotient
+            "ratio": f["overhead"],
+            "share": True,
+            "target_ratio": TARGET_OVERHEAD,
             "met": f["overhead"] <= TARGET_OVERHEAD,
             "error": None,
             "notes": f"{f['total_s']:.2f} s CPU in all, kernels {f['kernel_s']:.2f} s "

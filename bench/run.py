@@ -502,7 +502,9 @@ def table(results: dict[str, Any]) -> str:
         lines += ["", "Speed targets: measured against target, with the floors"]
         for row in targets:
             met = {True: "met", False: "MISSED"}.get(row.get("met"), "")
-            if row.get("target_ratio") is not None:  # a ratio to a floor measured alongside
+            if row.get("share"):  # a share of a time measured alongside, as a percentage
+                figure, goal = f"{100 * row['ratio']:.0f} %", f"{100 * row['target_ratio']:g} %"
+            elif row.get("target_ratio") is not None:  # a ratio to a floor measured alongside
                 figure, goal = f"×{row['ratio']:.2f}", f"×{row['target_ratio']:g}"
             else:
                 figure, goal = _fmt_time(row["time_s"]), _fmt_time(row["target_s"])
