@@ -10,7 +10,10 @@
   output and check collected) through its array path, in-process (target ≤ 2 s);
 * ``study_sim_1w`` / ``study_sim_2w``: a rare-impact simulation study (LHS over the power
   spring's rate and preload, tolerance 1e-6) on a local Dask cluster of one and of two
-  worker processes, side by side, and the speed-up.
+  worker processes, side by side, and the speed-up, with the cores the machine gave the
+  workers (their CPU seconds over the wall time): the workers run at nice 10, so on a
+  machine whose other processes hold a core two workers share the one left and scale
+  ×1.0 (the run of 2026-11-26 16:59, load 1.1 on 2 CPUs).
 
 ``STUDY_BENCH_POINTS`` sets the simulation study's size (default 20,000; the
 10⁵ of the study target takes about 4× as long).
@@ -142,7 +145,11 @@ def measure() -> list[dict[str, Any]]:
         }
     )
     n = int(os.environ.get("STUDY_BENCH_POINTS", "20000"))
-    times = {}
+    times: dict[int, float] = {}
+    #: the workers' CPU seconds in the timed study: divided by its wall time, the cores the
+    #: machine gave them (the workers run at nice 10: on a loaded machine they get what the
+    #: other processes leave, and two workers on one free core scale ×1.0 whatever the code)
+    cpu: dict[int, float] = {}
     for workers in (1, 2):
         executor = DaskExecutor(n_workers=workers)
         try:
@@ -150,9 +157,13 @@ def measure() -> list[dict[str, Any]]:
             warm, _ = _sim_study(2 * workers * 256)
             run_study(spec := _sim_study(n)[1], warm, executor)  # numba load per worker
             study, spec = _sim_study(n)
+            client = executor.client()
+            cpu0 = client.run(time.process_time)
             t0 = time.perf_counter()
             result = run_study(spec, study, executor)
             times[workers] = time.perf_counter() - t0
+            cpu1 = client.run(time.process_time)
+            cpu[workers] = sum(cpu1[k] - cpu0[k] for k in cpu0)
         finally:
             executor.close()
         speedup: dict[str, Any] = (
@@ -170,7 +181,15 @@ def measure() -> list[dict[str, Any]]:
                 "error": None,
                 "notes": f"{times[workers]:.1f} s in all; rungs {result.summary['rungs']}; "
                 f"feasible fraction {result.summary['feasible']['fraction']}"
-                + (f"; speed-up 1→2 workers {times[1] / times[2]:.2f}×" if workers == 2 else "")
+                + f"; workers' CPU {cpu[workers]:.1f} s, {cpu[workers] / times[workers]:.2f} "
+                "cores given"
+                + (
+                    f"; speed-up 1→2 workers {times[1] / times[2]:.2f}×; the workers' CPU "
+                    f"2/1 ×{cpu[2] / cpu[1]:.2f} (about 1: the same work, no serial part added; "
+                    "the speed-up then follows the cores given)"
+                    if workers == 2
+                    else ""
+                )
                 + f"; load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} CPUs",
             }
         )
