@@ -56,6 +56,19 @@ class RunResult:
         """``notes`` as text and quantities, one entry per note (:func:`engine.core.text.parts`)."""
         return [parts(n) for n in self.marked_notes or self.notes]
 
+    @property
+    def check_flags(self) -> list[tuple[str, bool]]:
+        """Each check's (name, ok), without making the sentences readable: a caller that
+        keeps only the verdicts (a study's looped points) does not pay for the texts.
+
+        >>> from engine.core.spec import Check
+        >>> r = RunResult._of([Check("c3 > c1", False, "soften the power spring")], [], model="m")
+        >>> r.check_flags, "_marked" in r.__dict__
+        ([('c3 > c1', False)], True)
+        """
+        marked = self.__dict__.get("_marked")
+        return [(c.name, c.ok) for c in (self.checks if marked is None else marked[0])]
+
     @classmethod
     def _of(cls, checks: list[Check], notes: list[str], **fields: Any) -> RunResult:
         """A result whose checks and notes are made readable when first read (:func:`run`'s).

@@ -822,11 +822,11 @@ def evaluate_chunk(
             v = res.results.get(name)
             if v is not None:
                 nan_column(name)[j] = float(v)
-        for chk in res.checks:
-            arr = checks.get(chk.name)
+        for name, ok in res.check_flags:  # the verdicts alone: no sentence is made
+            arr = checks.get(name)
             if arr is None:
-                arr = checks[chk.name] = np.full(n, CHECK_UNKNOWN, dtype=np.int8)
-            arr[j] = CHECK_OK if chk.ok else CHECK_FAILED
+                arr = checks[name] = np.full(n, CHECK_UNKNOWN, dtype=np.int8)
+            arr[j] = CHECK_OK if ok else CHECK_FAILED
     values = {o: nan_column(o) for o in outputs} | values  # the asked order, every one
     bad = int((~valid).sum())
     if bad:

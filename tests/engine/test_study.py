@@ -268,3 +268,26 @@ def test_a_study_varies_at_most_twelve_inputs() -> None:
     variables = tuple(Variable(p.name, low=p.minimum, high=p.minimum + 1e-9) for p in numeric[:13])
     with pytest.raises(InputOutOfRange, match="at most 12"):
         plan(spec, Study(variables=variables, samples=10))
+
+
+def test_a_looped_chunk_keeps_each_points_check_verdicts_as_a_single_run_gives_them() -> None:
+    """The study's one-by-one points read only the checks' verdicts (no sentence is made):
+    each code is the single run's ok, point by point, for a failing check as for a passing."""
+    from engine.studies.plan import CHECK_FAILED, CHECK_OK, evaluate_chunk
+
+    ex = dict(RARE.examples[0])
+    c1 = ex["power_spring_rate"]
+    # the return spring's rate is 52 N/mm in the example: c3 > c1 fails above it
+    rates = np.array([0.5 * c1, 40_000.0, 60_000.0])
+    chunk = evaluate_chunk(
+        RARE,
+        _without(ex, "power_spring_rate"),
+        {"power_spring_rate": rates},
+        ("release_speed",),
+        fidelity="simulation",
+    )
+    for j, rate in enumerate(rates.tolist()):
+        alone = engine.run(RARE, {**ex, "power_spring_rate": rate}, fidelity="simulation")
+        for check in alone.checks:
+            assert chunk.checks[check.name][j] == (CHECK_OK if check.ok else CHECK_FAILED)
+    assert chunk.checks["c3 > c1"].tolist() == [CHECK_OK, CHECK_OK, CHECK_FAILED]
