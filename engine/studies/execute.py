@@ -458,11 +458,49 @@ def _name(spec: ModelSpec | str) -> str:
     return spec if isinstance(spec, str) else spec.name
 
 
-def chunk_size(spec: ModelSpec, study: Study) -> int:
-    """Points per chunk: fixed by the model and fidelity, never by timing (bit-identical runs)."""
+def chunk_size(spec: ModelSpec, study: Study, planned: Plan | None = None) -> int:
+    """Points per chunk: fixed by the model, the fidelity and, for ``auto`` on a model with
+    a rung off the array path, the rungs its first points take (``planned``: the study's
+    points); never by timing (bit-identical runs).
+
+    An ``auto`` study whose points the array path does not compute (a tolerance only the
+    simulation meets) goes one point after another; in chunks of 65,536 it was one chunk
+    up to that size, which one worker ran while the others waited. If any of its first
+    ``PROBE_POINTS`` points takes such a rung (:func:`engine.core.runner.prepare`, the
+    rung a single run would choose), its chunks are the looped ones.
+    """
     rung = study.fidelity or ("auto" if study.tolerance is not None else spec.default_fidelity)
-    vector = spec.vectorized is not None and (rung == "auto" or rung in spec.vector_rungs)
-    return VECTOR_CHUNK if vector else LOOP_CHUNK
+    if spec.vectorized is None:
+        return LOOP_CHUNK
+    if rung != "auto":
+        return VECTOR_CHUNK if rung in spec.vector_rungs else LOOP_CHUNK
+    looped = set(spec.rung_names) - set(spec.vector_rungs)
+    if not looped or planned is None:
+        return VECTOR_CHUNK
+    return LOOP_CHUNK if _loops(spec, study, planned, looped) else VECTOR_CHUNK
+
+
+#: Points of an ``auto`` study whose rungs :func:`chunk_size` asks before cutting it.
+PROBE_POINTS = 64
+
+
+def _loops(spec: ModelSpec, study: Study, planned: Plan, looped: set[str]) -> bool:
+    """Whether one of the study's first points takes a rung in ``looped`` at ``auto``."""
+    from ..core.errors import EngineError
+    from ..core.runner import prepare
+
+    base = {k: v for k, v in study.base.items() if v is not None}
+    for j in range(min(PROBE_POINTS, planned.n_points)):
+        point = {
+            k: (int(v[j]) if spec.param(k).kind == "int" else float(v[j]))
+            for k, v in planned.columns.items()
+        }
+        try:
+            if prepare(spec, {**base, **point}, "auto", study.tolerance).rung in looped:
+                return True
+        except EngineError:  # a refused point: the chunk refuses it too, whatever its size
+            continue
+    return False
 
 
 def run_study(
@@ -486,7 +524,7 @@ def run_study(
     start = time.perf_counter()
     p = plan(spec, study) if planned is None else planned
     cancel = cancel or threading.Event()
-    slices = chunks(p.n_points, chunk_size(spec, study))
+    slices = chunks(p.n_points, chunk_size(spec, study, p))
     base = {k: v for k, v in study.base.items() if v is not None}
     calls: list[ChunkArgs] = [
         (

@@ -291,3 +291,29 @@ def test_a_looped_chunk_keeps_each_points_check_verdicts_as_a_single_run_gives_t
         for check in alone.checks:
             assert chunk.checks[check.name][j] == (CHECK_OK if check.ok else CHECK_FAILED)
     assert chunk.checks["c3 > c1"].tolist() == [CHECK_OK, CHECK_OK, CHECK_FAILED]
+
+
+def test_an_auto_study_the_array_path_cannot_answer_is_cut_into_looped_chunks() -> None:
+    """At a tolerance only the simulation meets every point goes one by one: the study is
+    cut as a simulation study is (it was one chunk of up to 65,536 points, which one
+    worker ran while the others waited); at a loose one the closed form answers on arrays."""
+    from engine.studies.execute import VECTOR_CHUNK, chunk_size
+
+    ex = dict(RARE.examples[0])
+    c1 = ex["power_spring_rate"]
+
+    def study(tolerance: float) -> Study:
+        return Study(
+            variables=(Variable("power_spring_rate", "uniform", low=0.9 * c1, high=1.1 * c1),),
+            base=_without(ex, "power_spring_rate"),
+            samples=3 * LOOP_CHUNK,
+            seed=3,
+            tolerance=tolerance,
+        )
+
+    tight, loose = study(1e-6), study(0.5)
+    assert engine.run(RARE, ex, tolerance=1e-6).rung == "simulation"
+    assert engine.run(RARE, ex, tolerance=0.5).rung == "closed_form"
+    assert chunk_size(RARE, tight, plan(RARE, tight)) == LOOP_CHUNK
+    assert chunk_size(RARE, loose, plan(RARE, loose)) == VECTOR_CHUNK
+    assert chunk_size(RARE, tight) == VECTOR_CHUNK  # without its points: as before
