@@ -11,9 +11,10 @@
 * ``study_sim_1w`` / ``study_sim_2w``: a rare-impact simulation study (LHS over the power
   spring's rate and preload, tolerance 1e-6) on a local Dask cluster of one and of two
   worker processes, side by side, and the speed-up, with the cores the machine gave the
-  workers (their CPU seconds over the wall time): the workers run at nice 10, so on a
-  machine whose other processes hold a core two workers share the one left and scale
-  ×1.0 (the run of 2026-11-26 16:59, load 1.1 on 2 CPUs).
+  workers (their CPU seconds over the wall time; the workers run at nice 10, so on a
+  machine whose other processes hold a core two workers share the one left) and how the
+  chunks fell (the run of 2026-11-26 16:59 read ×1.00: the study, ``auto`` at 1e-6, was
+  one chunk, which one worker ran alone).
 
 ``STUDY_BENCH_POINTS`` sets the simulation study's size (default 20,000; the
 10⁵ of the study target takes about 4× as long).
@@ -26,7 +27,7 @@ import time
 from typing import Any
 
 import engine
-from engine.studies.execute import DaskExecutor, run_study
+from engine.studies.execute import DaskExecutor, chunk_size, run_study
 from engine.studies.plan import Study, Variable
 
 
@@ -148,7 +149,7 @@ def measure() -> list[dict[str, Any]]:
     times: dict[int, float] = {}
     #: the workers' CPU seconds in the timed study: divided by its wall time, the cores the
     #: machine gave them (the workers run at nice 10: on a loaded machine they get what the
-    #: other processes leave, and two workers on one free core scale ×1.0 whatever the code)
+    #: other processes leave, and two workers on one free core scale ×1.0 whatever the study)
     cpu: dict[int, float] = {}
     for workers in (1, 2):
         executor = DaskExecutor(n_workers=workers)
@@ -164,6 +165,7 @@ def measure() -> list[dict[str, Any]]:
             times[workers] = time.perf_counter() - t0
             cpu1 = client.run(time.process_time)
             cpu[workers] = sum(cpu1[k] - cpu0[k] for k in cpu0)
+            chunks = -(-n // chunk_size(spec, study, result.plan))
         finally:
             executor.close()
         speedup: dict[str, Any] = (
@@ -179,7 +181,8 @@ def measure() -> list[dict[str, Any]]:
                 "case": f"{n}-design LHS at tolerance 1e-6, local Dask, {workers} worker(s)",
                 "time_s": times[workers] / n,
                 "error": None,
-                "notes": f"{times[workers]:.1f} s in all; rungs {result.summary['rungs']}; "
+                "notes": f"{times[workers]:.1f} s in all, {chunks} chunks; "
+                f"rungs {result.summary['rungs']}; "
                 f"feasible fraction {result.summary['feasible']['fraction']}"
                 + f"; workers' CPU {cpu[workers]:.1f} s, {cpu[workers] / times[workers]:.2f} "
                 "cores given"
