@@ -66,9 +66,9 @@ class _Timed:
     def __getattr__(self, name: str) -> Any:
         return getattr(self.fn, name)
 
-    def __call__(self, *args: Any) -> Any:
+    def __call__(self, *args: Any, **kwargs: Any) -> Any:
         t0 = time.process_time()
-        out = self.fn(*args)
+        out = self.fn(*args, **kwargs)
         self.seconds += time.process_time() - t0
         self.calls += 1
         return out
@@ -88,6 +88,26 @@ def timed_kernels() -> Iterator[list[_Timed]]:
             setattr(striker_cycle, k, fn)
 
 
+@contextmanager
+def timed_layers() -> Iterator[dict[str, _Timed]]:
+    """Wrap the layers around the kernels for the block: the cycle's driver
+    (``simulate_cycle`` as the model calls it) and one point's ``engine.run`` as the study
+    calls it; yields their counters (each includes what it calls)."""
+    from engine.models import rare_impact
+    from engine.studies import plan
+
+    layers = {"cycle": (rare_impact, "simulate_cycle"), "run": (plan, "run")}
+    saved = {k: getattr(mod, name) for k, (mod, name) in layers.items()}
+    timed = {k: _Timed(fn) for k, fn in saved.items()}
+    try:
+        for k, (mod, name) in layers.items():
+            setattr(mod, name, timed[k])
+        yield timed
+    finally:
+        for k, (mod, name) in layers.items():
+            setattr(mod, name, saved[k])
+
+
 def overhead(n: int) -> dict[str, Any]:
     """One in-process study of ``n`` designs: total and kernel CPU seconds, kernel calls."""
     s, spec = study(n)
@@ -97,12 +117,25 @@ def overhead(n: int) -> dict[str, Any]:
         result = run_study(spec, s)
         total = time.process_time() - t0
     kernel = sum(c.seconds for c in counters)
+    # where the rest goes, in a second run (its timers would weigh on the first's figure)
+    with timed_kernels() as again, timed_layers() as layers:
+        t0 = time.process_time()
+        run_study(spec, s)
+        total2 = time.process_time() - t0
+    kernel2 = sum(c.seconds for c in again)
+    cycle, one = layers["cycle"].seconds, layers["run"].seconds
     return {
         "total_s": total,
         "kernel_s": kernel,
         "calls": sum(c.calls for c in counters),
         "overhead": total / kernel - 1.0,
         "rungs": result.summary["rungs"],
+        # per design [s]: the cycle driver's Python, the run and model adapter's, the study's
+        "layers_s": {
+            "driver": (cycle - kernel2) / n,
+            "run": (one - cycle) / n,
+            "study": (total2 - one) / n,
+        },
     }
 
 
@@ -125,7 +158,11 @@ def measure() -> list[dict[str, Any]]:
             "notes": f"{f['total_s']:.2f} s CPU in all, kernels {f['kernel_s']:.2f} s "
             f"({f['calls']} calls): {f['overhead'] * 100:.0f} % beyond the kernels "
             f"(target ≤ {TARGET_OVERHEAD * 100:.0f} %); load {os.getloadavg()[0]:.1f}; "
-            f"rungs {f['rungs']}",
+            f"rungs {f['rungs']}; per design beyond the kernels' "
+            f"{f['kernel_s'] / n * 1e6:.0f} µs: "
+            + ", ".join(f"{k} {v * 1e6:.0f} µs" for k, v in f["layers_s"].items())
+            + " (the cycle's Python driver around its 7 kernel calls; engine.run with "
+            "validation, the model's outputs, checks and notes; the study's loop)",
         }
     ]
 
