@@ -93,7 +93,13 @@ kernel(np.ones(2), 1e-3, 10)
 
 
 def cpu_seconds(pid: int) -> float:
-    """CPU time (user + system) process ``pid`` has used so far [s]; NaN off Linux."""
+    """CPU time (user + system) process ``pid`` has used so far [s]; NaN off Linux.
+
+    This process's, against Python's own count (the kernel counts in clock ticks):
+
+    >>> abs(cpu_seconds(os.getpid()) - time.process_time()) < 0.05
+    True
+    """
     try:
         fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
     except OSError:
