@@ -25,8 +25,12 @@ RUN python3 -m venv /opt/venv \
     && /opt/venv/bin/python -m pip install --quiet --no-index --find-links ./wheels \
         -r requirements.lock
 COPY wheelhouse/app ./app
+# pint's parsed unit definitions are cached beside the package's bytecode
+# (service.units.PINT_CACHE), written here by the install's owner: the runtime user cannot
+# write there and would parse them afresh at every start (0.13 s more CPU, measured).
 RUN /opt/venv/bin/python -m pip install --quiet --no-index --no-deps ./app/*.whl \
     && rm -rf /app \
+    && /opt/venv/bin/python -c "import service.units" \
     && useradd --create-home --uid 10001 app
 # the manual, built by scripts/image from the same checkout as the wheel, at /manual/
 COPY wheelhouse/manual /opt/manual

@@ -2,16 +2,22 @@
 first simulation request after ready against the steady one.
 
 Each round spawns, on free loopback ports, a bare app (``uvicorn`` serving one FastAPI route,
-``/readyz`` answering 200) and the service as ``make run`` starts it (``python -m service``,
-the access log on, ``WARM_UP`` at its default), alternately, one after the other, and polls
-``/readyz`` every 5 ms from just before the spawn until it answers 200. For the service it
+``/readyz`` answering 200), the floor (the bare app that first imports numba and loads one
+small compiled RK4 kernel from numba's disk cache: what any service with compiled kernels
+pays before it can be ready, :data:`FLOOR_APP`) and the service as ``make run`` starts it
+(``python -m service``, the access log on, ``WARM_UP`` at its default), one after the
+other, and polls ``/readyz`` every 5 ms from just before the spawn until it answers 200.
+Each spawn is timed in wall time and in the CPU time the process had used when it was
+first seen ready (``/proc/<pid>/stat``; the wall time of a machine shared with other work
+is several-fold an idle machine's, its CPU time much less so). For the service it
 then posts each simulation model's first example with the simulation rung named, once
 (the first request after ready) and :data:`STEADY_CALLS` times more (the steady request,
 their median). Figures are medians over the rounds; the ratios are medians of the
 per-round ratios (robust to the load of a machine shared with other work).
 
 Targets: spawn to ``/readyz`` ≤ 2× the bare app's in the same rounds; the first
-simulation after ready ≤ 2× the steady one.
+simulation after ready ≤ 2× the steady one. The floor's own ratio to the bare app is
+printed beside the first: where it is above 2, no service with these kernels meets it.
 
 Run alone: ``python -m bench.cold_start [--rounds N] [--root DIR]`` (``--root``: the
 checkout whose service is spawned, this one by default; the numba cache it uses is that
@@ -58,6 +64,49 @@ async def readyz() -> dict[str, str]:
 """
 
 
+#: The floor: the bare app that, before it listens, imports numba and loads a compiled
+#: kernel from numba's cache (written next to this file by the unmeasured first round).
+#: numba's first cache load in a process sets up its compiler's registries, which import
+#: numba's numpy and linear-algebra support and scipy.linalg (numba's BLAS check): the
+#: size of the kernel barely matters (the blow's kernel, loaded second, takes ~4 ms).
+FLOOR_APP = (
+    """
+import numba
+import numpy as np
+
+
+@numba.njit(cache=True, nogil=True)
+def kernel(y, h, n):
+    for _ in range(n):
+        k1 = -y
+        k2 = -(y + 0.5 * h * k1)
+        k3 = -(y + 0.5 * h * k2)
+        k4 = -(y + h * k3)
+        y = y + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
+    return y
+
+
+kernel(np.ones(2), 1e-3, 10)
+"""
+    + BARE_APP
+)
+
+
+def cpu_seconds(pid: int) -> float:
+    """CPU time (user + system) process ``pid`` has used so far [s]; NaN off Linux.
+
+    This process's, against Python's own count (the kernel counts in clock ticks):
+
+    >>> abs(cpu_seconds(os.getpid()) - time.process_time()) < 0.05
+    True
+    """
+    try:
+        fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    except OSError:
+        return float("nan")
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
 def free_port() -> int:
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
@@ -89,9 +138,9 @@ def post(url: str, body: object, timeout: float = 60.0) -> tuple[int, float, byt
 @contextlib.contextmanager
 def spawned(
     argv: Sequence[str], cwd: Path, env: dict[str, str], port: int
-) -> Iterator[tuple[float, float]]:
+) -> Iterator[tuple[float, float, float]]:
     """Start ``argv`` and wait for ``/readyz`` 200: (seconds to the first HTTP answer, to
-    ready); stopped on leaving."""
+    ready, and the CPU seconds the process had used when ready); stopped on leaving."""
     start = time.perf_counter()
     proc = subprocess.Popen(
         argv, cwd=cwd, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL
@@ -112,9 +161,10 @@ def spawned(
                 listening = time.perf_counter() - start
             if status == 200:
                 ready = time.perf_counter() - start
+                cpu = cpu_seconds(proc.pid)
                 break
             time.sleep(0.005)
-        yield listening if listening is not None else ready, ready
+        yield listening if listening is not None else ready, ready, cpu
     finally:
         proc.terminate()
         try:
@@ -148,23 +198,25 @@ def _examples(root: Path) -> dict[str, dict[str, Any]]:
 def one_round(
     root: Path, bare_dir: Path, cases: dict[str, dict[str, Any]], *, strict: bool = True
 ) -> dict[str, Any]:
-    """The bare app, then the service: spawn to ready, and the service's requests (a
-    steady request refused fails the round when ``strict``)."""
+    """The bare app, the floor, then the service: spawn to ready, and the service's
+    requests (a steady request refused fails the round when ``strict``)."""
     env = {**os.environ, "PYTHONPATH": str(root)}
     env.pop("WARM_UP", None)
     env.pop("ACCESS_LOG", None)
+    row: dict[str, Any] = {}
+    for app in ("bare", "floor"):
+        port = free_port()
+        argv = [sys.executable, "-m", "uvicorn", f"{app}:app", "--port", str(port)]
+        with spawned(argv, bare_dir, {**os.environ, "PYTHONPATH": str(bare_dir)}, port) as (
+            _,
+            ready,
+            cpu,
+        ):
+            row.update({f"{app}_s": ready, f"{app}_cpu_s": cpu})
     port = free_port()
-    bare_argv = [sys.executable, "-m", "uvicorn", "bare:app", "--port", str(port)]
-    with spawned(bare_argv, bare_dir, {**os.environ, "PYTHONPATH": str(bare_dir)}, port) as (
-        _,
-        bare,
-    ):
-        pass
-    port = free_port()
-    row: dict[str, Any] = {"bare_s": bare}
     service_argv = [sys.executable, "-m", "service", "--port", str(port)]
-    with spawned(service_argv, root, env, port) as (listening, ready):
-        row.update(service_s=ready, listening_s=listening)
+    with spawned(service_argv, root, env, port) as (listening, ready, cpu):
+        row.update(service_s=ready, listening_s=listening, service_cpu_s=cpu)
         for name, case in cases.items():
             url = f"http://127.0.0.1:{port}/api/v1{case['path']}"
             # the first may fail (a kernel still compiling past the budget): timed anyway
@@ -188,14 +240,21 @@ def measure(rounds: int = ROUNDS, root: Path = ROOT) -> list[dict[str, Any]]:
     with tempfile.TemporaryDirectory() as tmp:
         bare_dir = Path(tmp)
         (bare_dir / "bare.py").write_text(BARE_APP)
+        (bare_dir / "floor.py").write_text(FLOOR_APP)
         # one unmeasured round: the numba cache and the OS's file cache as a restart finds them
         one_round(root, bare_dir, cases, strict=False)
         runs = [one_round(root, bare_dir, cases) for _ in range(rounds)]
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
-    bare = statistics.median(r["bare_s"] for r in runs)
-    service = statistics.median(r["service_s"] for r in runs)
-    listening = statistics.median(r["listening_s"] for r in runs)
-    ratio = statistics.median(r["service_s"] / r["bare_s"] for r in runs)
+
+    def median(key: str, over: str = "") -> float:
+        return statistics.median(r[key] / (r[over] if over else 1.0) for r in runs)
+
+    bare, floor, service = median("bare_s"), median("floor_s"), median("service_s")
+    listening = median("listening_s")
+    ratio = median("service_s", "bare_s")
+    cpu = {k: median(f"{k}_cpu_s") for k in ("bare", "floor", "service")}
+    cpu_ratio = median("service_cpu_s", "bare_cpu_s")
+    floor_ratio, floor_cpu_ratio = median("floor_s", "bare_s"), median("floor_cpu_s", "bare_cpu_s")
     machine = f"{rounds} alternating rounds, load average {load:.1f} on {os.cpu_count()} CPUs"
     rows: list[dict[str, Any]] = [
         {
@@ -208,9 +267,19 @@ def measure(rounds: int = ROUNDS, root: Path = ROOT) -> list[dict[str, Any]]:
             "met": ratio <= READY_TARGET,
             "baseline_s": bare,
             "listening_s": listening,
+            "floor_s": floor,
+            "floor_ratio": floor_ratio,
+            "cpu_s": cpu["service"],
+            "cpu_ratio": cpu_ratio,
+            "baseline_cpu_s": cpu["bare"],
+            "floor_cpu_s": cpu["floor"],
+            "floor_cpu_ratio": floor_cpu_ratio,
             "notes": (
                 f"python -m service {service:.2f} s (answering from {listening:.2f} s) vs a "
-                f"bare uvicorn + FastAPI app {bare:.2f} s; {machine}"
+                f"bare uvicorn + FastAPI app {bare:.2f} s; in CPU time {cpu['service']:.2f} s "
+                f"vs {cpu['bare']:.2f} s (×{cpu_ratio:.2f}); the floor (the bare app + numba + "
+                f"one cached kernel) {floor:.2f} s, ×{floor_ratio:.2f} the bare app "
+                f"(CPU {cpu['floor']:.2f} s, ×{floor_cpu_ratio:.2f}); {machine}"
             ),
         }
     ]

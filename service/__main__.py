@@ -18,8 +18,9 @@ import gc
 # Run as the program (or as a worker process's copy of it), the collector is off while the
 # process imports the engine and builds the app (some million objects, all kept for the
 # process's life, scanned again and again: about a quarter of the start-up's time,
-# measured); :func:`service.main.create_app`'s start-up freezes them out of later scans
-# and turns it back on. Imported (a test reading log_config), nothing changes.
+# measured); once the app's start-up warm-up has loaded the compiled kernels,
+# :func:`service.main.collector_on` freezes them out of later scans and turns it back on.
+# Imported (a test reading log_config), nothing changes.
 if __name__ in ("__main__", "__mp_main__"):
     gc.disable()
 

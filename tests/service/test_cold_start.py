@@ -10,6 +10,7 @@
 
 from __future__ import annotations
 
+import gc
 import json
 import os
 import subprocess
@@ -57,6 +58,42 @@ def test_readyz_says_warming_with_retry_after_until_the_warm_up_is_done(
     assert ready.status_code == 200
     assert ready.json()["status"] == "ready" and ready.json()["warm_up"] == "done"
     assert "retry-after" not in ready.headers
+
+
+def test_a_service_started_without_the_collector_turns_it_on_once_warmed_up(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """``python -m service`` starts with the collector off; it stays off while the
+    warm-up loads the kernels and is on (start-up's objects frozen) before /readyz says
+    ready."""
+    gate = threading.Event()
+    monkeypatch.setattr(service.main, "warm_up", lambda models: gate.wait(10))
+    app = create_app(models=[TOY], settings=Settings(warm_up=True, access_log=False))
+    gc.disable()
+    try:
+        with TestClient(app) as client:
+            assert client.get("/readyz").json()["status"] == "warming"
+            assert not gc.isenabled()
+            gate.set()
+            assert app.state.warm_up.wait(10)
+            assert gc.isenabled()
+            assert gc.get_freeze_count() > 0
+            assert client.get("/readyz").status_code == 200
+    finally:
+        gc.unfreeze()
+        gc.enable()
+
+
+def test_without_warm_up_the_collector_is_on_at_start() -> None:
+    app = create_app(models=[TOY], settings=Settings(warm_up=False, access_log=False))
+    gc.disable()
+    try:
+        with TestClient(app) as client:
+            assert gc.isenabled()
+            assert client.get("/readyz").status_code == 200
+    finally:
+        gc.unfreeze()
+        gc.enable()
 
 
 def test_without_warm_up_readyz_is_ready_at_once() -> None:
