@@ -1,0 +1,65 @@
+"""The sweep's bookkeeping: a named rung's estimates made when read, the range told by the
+least and largest value, and the recommended-range warning, each against hand values."""
+
+import dataclasses
+from typing import Any
+
+import numpy as np
+import pytest
+
+import engine
+from engine import InputOutOfRange, Rung, fixed_error
+from tests.toys import TOY
+
+BASE = {"diameter": 0.2}
+
+
+def _counting_toy(calls: list[Any]) -> Any:
+    """TOY whose rough rung estimates diameter/10 and records every call (arrays included)."""
+
+    def estimate(x: Any) -> Any:
+        calls.append(x["diameter"])
+        return x["diameter"] / 10.0
+
+    return dataclasses.replace(
+        TOY,
+        rungs=(Rung("rough", "off", estimate), Rung("exact", "", fixed_error(0.0))),
+        vector_rungs=("rough", "exact"),
+    )
+
+
+def test_a_named_rungs_estimates_are_made_when_read() -> None:
+    calls: list[Any] = []
+    toy = _counting_toy(calls)
+    s = engine.sweep(toy, BASE, "diameter", [0.1, 0.3], outputs=["energy"], fidelity="rough")
+    # J = m d²/8 with m = 1 kg, T = ½ J ω² at 100 rad/s (the toy's array path, either rung)
+    assert s.results["energy"] == pytest.approx([0.5 * d**2 / 8 * 1e4 for d in (0.1, 0.3)])
+    assert calls == []  # the columns alone did not need the estimate
+    assert s.error_estimates == pytest.approx([0.01, 0.03], rel=1e-15)
+    assert len(calls) == 1 and s.error_array is s.error_array  # once, then kept
+
+
+def test_auto_still_chooses_per_point_from_the_estimates() -> None:
+    calls: list[Any] = []
+    s = engine.sweep(_counting_toy(calls), BASE, "diameter", [0.05, 0.5], outputs=["energy"])
+    # estimates 0.005 ≤ 0.01 → rough; 0.05 > 0.01 → exact (its own estimate: 0)
+    assert s.rungs == ["rough", "exact"] and s.error_estimates == [0.005, 0.0]
+    assert len(calls) == 1
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -0.1, 0.0, 20.0])
+def test_an_out_of_range_value_anywhere_is_refused_naming_the_field(bad: float) -> None:
+    values = [0.1, 0.2, bad, 0.3]
+    with pytest.raises(InputOutOfRange) as info:
+        engine.sweep(TOY, BASE, "diameter", values, fidelity="exact")
+    assert info.value.field == "diameter"
+
+
+def test_the_recommended_range_warning_counts_the_points_outside() -> None:
+    # the toy's speed: recommended 0…500 rad/s, allowed up to 1e4
+    inside = engine.sweep(TOY, BASE, "speed", [0.0, 500.0], fidelity="exact")
+    assert not any("recommends" in w for w in inside.warnings)
+    outside = engine.sweep(TOY, BASE, "speed", [0.0, 500.0, 750.0], fidelity="exact")
+    assert [w for w in outside.warnings if "recommends" in w] == [
+        "speed is outside the range the source recommends (0…500 rad/s) at 1 of 3 points"
+    ]
