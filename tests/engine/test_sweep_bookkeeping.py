@@ -63,3 +63,24 @@ def test_the_recommended_range_warning_counts_the_points_outside() -> None:
     assert [w for w in outside.warnings if "recommends" in w] == [
         "speed is outside the range the source recommends (0…500 rad/s) at 1 of 3 points"
     ]
+
+
+@pytest.mark.parametrize(
+    ("model", "asked"),
+    [
+        ("preload.tightening", ("assembly_preload", "tightening_torque")),
+        ("preload.control", ("nominal_preload", "target_torque")),
+    ],
+)
+def test_the_preload_array_paths_give_only_the_outputs_asked_for(
+    model: str, asked: tuple[str, ...]
+) -> None:
+    spec = engine.get_model(model)
+    x, _ = spec.validate(spec.examples[0])
+    mu = np.array([0.10, 0.12, 0.14])
+    ctx = engine.core.spec.RunContext("closed_form", frozenset(asked), 0.01)
+    got = spec.vectorized({**x, "thread_friction": mu}, ctx)  # type: ignore[misc]
+    assert set(got.values) == set(asked)
+    for j, m in enumerate(mu.tolist()):  # each the single run's, to the last bit
+        one = engine.run(spec, {**spec.examples[0], "thread_friction": m}, outputs=asked)
+        assert [got.values[name][j] for name in asked] == [one.results[name] for name in asked]
