@@ -84,3 +84,16 @@ def test_the_preload_array_paths_give_only_the_outputs_asked_for(
     for j, m in enumerate(mu.tolist()):  # each the single run's, to the last bit
         one = engine.run(spec, {**spec.examples[0], "thread_friction": m}, outputs=asked)
         assert [got.values[name][j] for name in asked] == [one.results[name] for name in asked]
+
+
+def test_the_joint_array_path_gives_only_the_outputs_asked_for() -> None:
+    spec = engine.get_model("joint.vdi2230")
+    asked = ("additional_bolt_load", "required_preload_min", "max_bolt_force")
+    x, _ = spec.validate(spec.examples[0])
+    load = np.array([6e3, 8e3, 1e4])
+    ctx = engine.core.spec.RunContext("closed_form", frozenset(asked), 0.01)
+    got = spec.vectorized({**x, "working_load": load}, ctx)  # type: ignore[misc]
+    assert set(got.values) == set(asked)
+    for j, f_a in enumerate(load.tolist()):  # each the single run's, to the last bit
+        one = engine.run(spec, {**spec.examples[0], "working_load": f_a}, outputs=asked)
+        assert [got.values[name][j] for name in asked] == [one.results[name] for name in asked]
