@@ -7,8 +7,9 @@ calls of those functions, checks and sentences.
 
 from __future__ import annotations
 
+import functools
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Container, Mapping
 from dataclasses import dataclass
 from typing import Any
 
@@ -818,36 +819,48 @@ def _drive(x: Mapping[str, Any]) -> _Drive:
     )
 
 
-def _closed_values(x: Mapping[str, Any], d: _Drive, geared: bool) -> dict[str, Any]:
+def _closed_values(
+    x: Mapping[str, Any], d: _Drive, geared: bool, wanted: Container[str] | None = None
+) -> dict[str, Any]:
+    """The closed-form outputs of drive ``d`` [000, eq. 1–10], on floats or arrays.
+
+    ``wanted``: the outputs to give (every one when None); each line runs only where its
+    output is asked for, an array path's pass over the points saved for each one not.
+    """
     m = d.m_geared if geared else d.m_paper
     m7 = d.u * m if geared else m
     t1, t2, t3, t4, t5 = d.energies
-    m_max = max_spindle_torque(m, x["spindle_count"], x["idle_spindle_friction_torque"])
-    return {
-        "kinetic_energy": d.energy,
-        "acceleration_time": acceleration_time(d.energy, x["motor_power"]),
-        "shaft_stiffness": d.c7,
-        "spindle_stiffness": d.c8,
-        "impact_torque": m,
+
+    @functools.cache
+    def m_max() -> Any:
+        return max_spindle_torque(m, x["spindle_count"], x["idle_spindle_friction_torque"])
+
+    lines: dict[str, Callable[[], Any]] = {
+        "kinetic_energy": lambda: d.energy,
+        "acceleration_time": lambda: acceleration_time(d.energy, x["motor_power"]),
+        "shaft_stiffness": lambda: d.c7,
+        "spindle_stiffness": lambda: d.c8,
+        "impact_torque": lambda: m,
         "max_spindle_torque": m_max,
-        "spindle_torque_reserve": spindle_torque_reserve(m_max, x["wheel_nut_torque"]),
-        "shaft_twist": twist_angle(m7, d.c7),
-        "spindle_twist": twist_angle(m, d.c8),
-        "shaft_torque": m7,
-        "coupling_energy": t1,
-        "motor_pulley_energy": t2,
-        "flywheel_energy": t3,
-        "drive_gear_energy": t4,
-        "spindle_gears_energy": t5,
-        "equivalent_inertia": _inertia(x, d),
-        "flywheel_speed": d.w3,
-        "spindle_gear_speed": d.w5,
-        "gear_ratio": d.u,
-        "gear_ratio_torque_change": gear_ratio_torque_change(d.c7, d.c8, d.u),
-        "shaft_shear_stress": shaft_shear_stress(m7, x["shaft_diameter"]),
-        "spindle_shear_stress": shaft_shear_stress(m, x["spindle_diameter"]),
-        "coupling_slip_torque": _coupling_slip_torque(x, d),
+        "spindle_torque_reserve": lambda: spindle_torque_reserve(m_max(), x["wheel_nut_torque"]),
+        "shaft_twist": lambda: twist_angle(m7, d.c7),
+        "spindle_twist": lambda: twist_angle(m, d.c8),
+        "shaft_torque": lambda: m7,
+        "coupling_energy": lambda: t1,
+        "motor_pulley_energy": lambda: t2,
+        "flywheel_energy": lambda: t3,
+        "drive_gear_energy": lambda: t4,
+        "spindle_gears_energy": lambda: t5,
+        "equivalent_inertia": lambda: _inertia(x, d),
+        "flywheel_speed": lambda: d.w3,
+        "spindle_gear_speed": lambda: d.w5,
+        "gear_ratio": lambda: d.u,
+        "gear_ratio_torque_change": lambda: gear_ratio_torque_change(d.c7, d.c8, d.u),
+        "shaft_shear_stress": lambda: shaft_shear_stress(m7, x["shaft_diameter"]),
+        "spindle_shear_stress": lambda: shaft_shear_stress(m, x["spindle_diameter"]),
+        "coupling_slip_torque": lambda: _coupling_slip_torque(x, d),
     }
+    return {k: line() for k, line in lines.items() if wanted is None or k in wanted}
 
 
 def _coupling_slip_torque(x: Mapping[str, Any], d: _Drive) -> Any:
@@ -1209,7 +1222,11 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     }
     arrays, m_tr, clutch_warnings = _with_friction_clutch(arrays)
     d = _drive(arrays)
-    values = _closed_values(arrays, d, geared=ctx.rung != "closed_form")
+    # the checks (:func:`_verdicts`) and the warning below read these too
+    wanted = ctx.outputs | {"max_spindle_torque", "spindle_torque_reserve"}
+    if x.get("shear_yield_strength") is not None:
+        wanted |= {"shaft_shear_stress", "spindle_shear_stress"}
+    values = _closed_values(arrays, d, geared=ctx.rung != "closed_form", wanted=wanted)
     values["friction_clutch_torque"] = m_tr
     warnings = list(clutch_warnings)
     m_max = np.asarray(values["max_spindle_torque"])
