@@ -674,6 +674,7 @@ def sweep(
                     m,
                     dtype=None,
                     scratch=scratch if whole else None,
+                    read_checks=False,  # a sweep keeps the outputs, not the checks
                 )
         except SolverFailed:
             vec = None  # loop instead: the points that fail are null, with a note

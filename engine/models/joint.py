@@ -2578,11 +2578,13 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if any_refused:
         table[:, refused] = np.nan
     values: dict[str, Any] = dict(zip(asked, table, strict=True))
-    verdicts: dict[str, Any] = {
-        name: ok if applies is True else np.where(applies, ok, -1)
-        for name, (applies, ok) in s["_checks"].items()
-    }
-    verdicts.update(hook_checks)
+    verdicts: dict[str, Any] = {}
+    if ctx.checks:  # a sweep reads none of them
+        verdicts = {
+            name: ok if applies is True else np.where(applies, ok, -1)
+            for name, (applies, ok) in s["_checks"].items()
+        }
+        verdicts.update(hook_checks)
     reported: dict[str, Any] = {}
     for name, verdict in verdicts.items():
         codes = np.empty(n, dtype=np.int8)

@@ -111,3 +111,21 @@ def test_the_nutrunner_array_path_gives_the_outputs_asked_for_and_what_its_check
     for j, w in enumerate(speed.tolist()):  # each the single run's, to the last bit
         one = engine.run(spec, {**spec.examples[0], "motor_speed": w}, outputs=asked)
         assert [got.values[name][j] for name in asked] == [one.results[name] for name in asked]
+
+
+def test_a_blow_sweep_of_first_blow_outputs_equals_the_full_series() -> None:
+    """A sweep asking for the first blow's outputs runs one blow: the same first blow as the
+    first of the whole series (a study, which reads the checks, runs the whole series)."""
+    spec = engine.get_model("blow.joint")
+    first = ("peak_torque", "torque_after_first_blow")
+    t0 = [54.0, 60.0, 66.0]
+    alone = engine.sweep(
+        spec, spec.examples[0], "snug_torque", t0, outputs=first, fidelity="energy"
+    )
+    every = engine.sweep(spec, spec.examples[0], "snug_torque", t0, fidelity="energy")
+    for name in first:
+        assert alone.results[name] == every.results[name]
+    assert every.results["blows_to_target"] != [1, 1, 1]  # the series is longer than one blow
+    for j, v in enumerate(t0):
+        one = engine.run(spec, {**spec.examples[0], "snug_torque": v}, fidelity="energy")
+        assert [alone.results[name][j] for name in first] == [one.results[name] for name in first]
