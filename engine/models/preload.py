@@ -694,21 +694,17 @@ def _tightening_values(
     )
     m_thread, m_bearing = force * k_thread, force * k_bearing
     total = m_thread + m_bearing
-    rules: dict[str, Any] = dict.fromkeys(_RULES, _LEFT_OUT)
-    if wanted is None or any(name in wanted for name in _RULES):
+    rules_wanted = wanted is None or any(name in wanted for name in _RULES)
+    ideal = thumb = thumb_yield = share = thumb_dev = yield_dev = _LEFT_OUT
+    if rules_wanted:
         ideal = pl.ideal_torque(force, bolt.pitch)
         thumb = pl.rule_of_thumb_torque(force, bolt.diameter)
         thumb_yield = pl.rule_of_thumb_torque_from_yield(bolt.yield_strength, bolt.diameter)
         positive = total > 0
         safe = _where(positive, total, 1.0)
-        rules = {
-            "ideal_torque": ideal,
-            "ideal_torque_share": _where(positive, ideal / safe, 1.0),
-            "rule_of_thumb_torque": thumb,
-            "rule_of_thumb_deviation": _where(positive, (thumb - total) / safe, math.inf),
-            "yield_rule_torque": thumb_yield,
-            "yield_rule_deviation": _where(positive, (thumb_yield - total) / safe, math.inf),
-        }
+        share = _where(positive, ideal / safe, 1.0)
+        thumb_dev = _where(positive, (thumb - total) / safe, math.inf)
+        yield_dev = _where(positive, (thumb_yield - total) / safe, math.inf)
     nut_values, nut_verdicts = _nut_values(nut, force)
     values = {
         **nut_values,
@@ -718,8 +714,8 @@ def _tightening_values(
         "tightening_torque": total,
         "thread_torque": m_thread,
         "bearing_torque": m_bearing,
-        "ideal_torque": rules["ideal_torque"],
-        "ideal_torque_share": rules["ideal_torque_share"],
+        "ideal_torque": ideal,
+        "ideal_torque_share": share,
         "friction_radius": radius,
         "stress_area": bolt.stress_area,
         "pitch_diameter": bolt.pitch_diameter,
@@ -732,11 +728,13 @@ def _tightening_values(
         "bearing_outer_diameter": bolt.bearing_outer_diameter,
         "hole_diameter": bolt.hole_diameter,
         "torque_formula_deviation": deviation if deviation_wanted else _LEFT_OUT,
-        "rule_of_thumb_torque": rules["rule_of_thumb_torque"],
-        "rule_of_thumb_deviation": rules["rule_of_thumb_deviation"],
-        "yield_rule_torque": rules["yield_rule_torque"],
-        "yield_rule_deviation": rules["yield_rule_deviation"],
+        "rule_of_thumb_torque": thumb,
+        "rule_of_thumb_deviation": thumb_dev,
+        "yield_rule_torque": thumb_yield,
+        "yield_rule_deviation": yield_dev,
     }
+    if wanted is None:  # every value computed
+        return values
     return {k: v for k, v in values.items() if v is not _LEFT_OUT}
 
 
