@@ -815,7 +815,7 @@ def sweep(
             out[j] = e
         return out
 
-    return SweepResult._of(
+    result = SweepResult._of(
         errors,
         model=spec.name,
         vary=vary,
@@ -829,6 +829,9 @@ def sweep(
         rung_codes=codes,
         rung_names=tuple(names),
     )
+    if estimates is not None:
+        result.error_array  # noqa: B018  (auto's estimates are made: keep the errors, not them)
+    return result
 
 
 def _objects(column: np.ndarray) -> np.ndarray:
