@@ -43,6 +43,15 @@ three-input study form the issue names for them.
 
 CPU time (``time.process_time``), medians of interleaved rounds: the machine is
 shared. Run alone: ``PYTHONPATH=. python -m bench.extra_floors``.
+
+The ratios depend on the C allocator's state as well as on the code: a floor's 8 MB
+output arrays cost twice as much where their pages are fresh from the kernel (page faults)
+as where the heap already holds them, and which of the two a run meets depends on what ran
+before it in the process (glibc raises its mmap threshold after freeing large blocks). On
+2026-11-26 the same floors measured 1.0–7.7 ns a point with
+``MALLOC_MMAP_THRESHOLD_=1073741824 MALLOC_TRIM_THRESHOLD_=4294967296`` (heap kept) and
+5–22 ns with ``MALLOC_MMAP_THRESHOLD_=131072`` (every array mapped fresh), the sweeps
+likewise; compare runs made under the same setting.
 """
 
 from __future__ import annotations

@@ -156,6 +156,7 @@ def vector(
     n: int,
     dtype: Any = float,
     scratch: Scratch | None = None,
+    read_checks: bool = True,
 ) -> Vector | None:
     """The array path for ``n`` points, or None where the model has none for this rung.
 
@@ -165,6 +166,7 @@ def vector(
     give for these inputs (a NaN column, not in ``computed``, and no scalar probe).
     ``dtype=None`` keeps each column's own type (integers stay integers). ``scratch``
     is what :func:`rung_estimates` left for the same ``x`` (a new one when None).
+    ``read_checks=False``: the caller does not read the checks (``Vector.checks`` may be empty).
     """
     if spec.vectorized is None or rung not in spec.vector_rungs:
         return None
@@ -173,6 +175,7 @@ def vector(
         outputs=frozenset(outputs),
         tolerance=tol,
         scratch=Scratch() if scratch is None else scratch,
+        checks=read_checks,
     )
     try:
         with np.errstate(all="ignore"):

@@ -12,7 +12,7 @@ import functools
 import math
 import threading
 import time
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any, Literal
 
@@ -147,8 +147,33 @@ class SweepResult:
     #: may mix rungs.
     rung_codes: np.ndarray = field(default_factory=lambda: np.empty(0, dtype=np.int8))
     rung_names: tuple[str, ...] = ()
-    #: Each point's error estimate (NaN where refused or not known).
+    #: Each point's error estimate (NaN where refused or not known). A sweep whose rung
+    #: was named makes it when first read (:meth:`_of`): a caller that reads only the
+    #: columns does not pay for the rungs' estimates.
     error_array: np.ndarray = field(default_factory=lambda: np.empty(0))
+
+    @classmethod
+    def _of(cls, errors: Callable[[], np.ndarray], **fields: Any) -> SweepResult:
+        """A sweep whose ``error_array`` is ``errors()``, made when first read."""
+        self = cls(**fields)
+        del self.__dict__["error_array"]
+        self.__dict__["_errors"] = errors
+        return self
+
+    if not TYPE_CHECKING:  # the type checker sees the field as declared
+
+        def __getattr__(self, name: str) -> Any:
+            """``error_array`` of a sweep :meth:`_of` made, on its first reading."""
+            made = self.__dict__
+            errors = made.get("_errors")
+            if errors is None or name != "error_array":
+                # another thread may have made it since this lookup missed it
+                if name in made:
+                    return made[name]
+                raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+            made["error_array"] = value = errors()
+            made.pop("_errors", None)
+            return value
 
     @functools.cached_property
     def values(self) -> list[float]:
@@ -598,11 +623,12 @@ def sweep(
         raise InputOutOfRange(f"vary = {vary!r} is not a numeric input", field="vary")
     wanted = list(outputs) if outputs is not None else None
     start = time.perf_counter()
-    arr = _sweep_column(param, values)
+    arr, low, high = _sweep_column(param, values)
     n = int(arr.size)
     # the fixed inputs (refused here if out of range) with the first point's varied one
     first, warnings = spec.validate({**base, vary: arr[0].item()})
-    warnings = [w for w in warnings if not w.startswith(f"{vary} = ")] + _recommended(param, arr)
+    warnings = [w for w in warnings if not w.startswith(f"{vary} = ")]
+    warnings += _recommended(param, arr, low, high)
     x: dict[str, Any] = {**first, vary: arr}
     tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
     asked = _fidelity(spec, fidelity, tolerance)
@@ -613,26 +639,23 @@ def sweep(
         raise InputOutOfRange(
             f"tolerance = {tol:g} is not allowed: must be > 0 and < 1", field="tolerance"
         )
-    if asked == "auto":
+    # each rung group: its rung, the points it holds (None: every point)
+    groups: list[tuple[int, np.ndarray | None]]
+    estimates: Mapping[int, np.ndarray | None] | None
+    if asked == "auto":  # the estimates choose the rung per point: needed now
         estimates = points.rung_estimates(
             spec, x, n, point=lambda j: points.at(x, n, j), refused=refused, scratch=scratch
         )
         assert estimates is not None
         index = points.auto_index(spec, estimates, n, tol)
+        groups = [(k, (index == k) & ~refused) for k in range(len(spec.rung_names))]
     else:
+        # a named rung runs everywhere: its estimates are wanted only by a caller that
+        # reads them (``error_array``), so they are computed then, not here
         choose_rung(spec, first, asked, tol)  # refuses an unknown rung name
-        k = spec.rung_names.index(asked)
-        estimates = points.rung_estimates(
-            spec,
-            x,
-            n,
-            [k],
-            point=lambda j: points.at(x, n, j),
-            refused=refused,
-            scratch=scratch,
-        )
-        assert estimates is not None
-        index = np.full(n, k, dtype=np.int64)
+        estimates = None
+        index = None
+        groups = [(spec.rung_names.index(asked), None)]
     known = [o.name for o in spec.outputs if not o.series]
     scalar_names = known if wanted is None else [o for o in wanted if o in known]
     # per output: a float column (NaN where not computed), or an object column (None) for
@@ -641,27 +664,30 @@ def sweep(
     computed: dict[str, None] = {}  # the outputs given, in the order first given
     names = list(spec.rung_names)
     codes = np.full(n, -1, dtype=np.int8)  # the rung of each point: an index into names
-    errors = np.full(n, np.nan)
-    loop = refused.copy()
+    # for the error estimates, made when read: (rung, its points or None, where refused)
+    given: list[tuple[int, np.ndarray | None, np.ndarray | None]] = []
+    looped_errors: dict[int, float] = {}
+    loop = refused.copy() if index is not None else None  # None: no point loops yet
+    counts_of_groups: dict[str, int] = {}
     bad_total = 0
-    for k, rung_name in enumerate(spec.rung_names):
-        sel = (index == k) & ~refused
-        m = int(np.count_nonzero(sel))
+    for k, sel in groups:
+        m = n if sel is None else int(np.count_nonzero(sel))
         if not m:
             continue
         whole = m == n
-        sub = x if whole else points.take(x, n, sel)
+        sub = x if whole or sel is None else points.take(x, n, sel)
         try:
             with _arithmetic_refused(spec):
                 vec = points.vector(
                     spec,
                     sub,
-                    rung_name,
+                    spec.rung_names[k],
                     scalar_names,
                     tol,
                     m,
                     dtype=None,
                     scratch=scratch if whole else None,
+                    read_checks=False,  # a sweep keeps the outputs, not the checks
                 )
         except SolverFailed:
             vec = None  # loop instead: the points that fail are null, with a note
@@ -673,7 +699,12 @@ def sweep(
             # found one), the loop answers
             vec = None
         if vec is None:
-            loop |= sel
+            if loop is None:
+                loop = np.zeros(n, dtype=bool)
+            if sel is None:
+                loop[:] = True
+            else:
+                loop |= sel
             continue
         # a point the array path refuses is NaN in every float output it computed (the
         # study's rule); one NaN beside finite outputs is a null the scalar path gives too
@@ -690,12 +721,13 @@ def sweep(
                 every_finite = bool(some_finite.all())
             _put(columns, name, column, sel, whole)
         bad = None if some_finite is None or every_finite else ~some_finite
-        codes[sel] = k if bad is None else np.where(bad, -1, k)
-        est = estimates.get(k)
-        if est is not None:
-            errors[sel] = est[sel] if bad is None else np.where(bad, np.nan, est[sel])
-        if bad is not None:
-            bad_total += int(np.count_nonzero(bad))
+        at_points = slice(None) if whole else sel
+        codes[at_points] = k if bad is None else np.where(bad, -1, k)
+        given.append((k, None if whole else sel, bad))
+        refused_here = 0 if bad is None else int(np.count_nonzero(bad))
+        if m > refused_here:
+            counts_of_groups[spec.rung_names[k]] = m - refused_here
+        bad_total += refused_here
         for note in vec.notes:
             if note not in notes:
                 notes.append(note)
@@ -706,7 +738,7 @@ def sweep(
         notes.append(f"{bad_total} of {n} points could not be computed; null there")
     deadline = None if budget_s is None else start + budget_s
     first_refusal: EngineError | None = None
-    looped = np.flatnonzero(loop).tolist()
+    looped = [] if loop is None else np.flatnonzero(loop).tolist()
     any_point = n - len(looped) > 0
     for count, j in enumerate(looped):
         if cancel is not None and cancel.is_set():
@@ -723,7 +755,7 @@ def sweep(
             point = run(
                 spec,
                 {**base, vary: value},
-                fidelity=asked if refused[j] else spec.rung_names[int(index[j])],
+                fidelity=asked if index is None or refused[j] else spec.rung_names[int(index[j])],
                 tolerance=tolerance,
                 outputs=wanted,
                 budget_s=remaining,
@@ -742,7 +774,7 @@ def sweep(
         if point.rung not in names:
             names.append(point.rung)
         codes[j] = names.index(point.rung)
-        errors[j] = np.nan if point.error_estimate is None else point.error_estimate
+        looped_errors[j] = np.nan if point.error_estimate is None else point.error_estimate
         for name, v in point.results.items():
             computed[name] = None
             _set(columns, name, j, v, n)
@@ -755,7 +787,8 @@ def sweep(
         notes.append("no point of the sweep could be computed")
     declared = set(known)
     order = [o for o in scalar_names if o in computed] + [o for o in computed if o not in declared]
-    counts = _rung_counts(codes, names)
+    # one array group and no loop: its count is known; else count the codes
+    counts = counts_of_groups if not looped and len(given) <= 1 else _rung_counts(codes, names)
     rung, mixed = _rung_summary(counts)
     if asked == "auto" and not mixed and rung:
         notes.insert(0, f"auto: chose {rung!r} at every point (tolerance {tol:.2g})")
@@ -764,7 +797,39 @@ def sweep(
         if ran is not None and ran.estimate_caveat and ran.estimate_caveat not in notes:
             notes.append(ran.estimate_caveat)  # the points it ran at: ``rungs``
     units = {o.name: o.unit for o in spec.outputs}
-    return SweepResult(
+    # a large sweep does not keep its array path's work alive for its estimates
+    kept = scratch if n <= MAX_SWEEP_POINTS else None
+
+    def errors() -> np.ndarray:
+        """Each point's error estimate: the array groups' rungs at their points, the
+        looped points' own (NaN where refused or not known)."""
+        found = estimates
+        if found is None:
+            found = points.rung_estimates(
+                spec,
+                x,
+                n,
+                [k for k, _, _ in given],
+                point=lambda j: points.at(x, n, j),
+                refused=np.zeros(n, dtype=bool),
+                scratch=Scratch() if kept is None else kept,
+            )
+            assert found is not None
+        out = np.full(n, np.nan)
+        for k, sel, bad in given:
+            est = found.get(k)
+            if est is None:
+                continue
+            part = est if sel is None else est[sel]
+            out[slice(None) if sel is None else sel] = (
+                part if bad is None else np.where(bad, np.nan, part)
+            )
+        for j, e in looped_errors.items():
+            out[j] = e
+        return out
+
+    result = SweepResult._of(
+        errors,
         model=spec.name,
         vary=vary,
         value_array=arr,
@@ -776,8 +841,10 @@ def sweep(
         warnings=warnings,
         rung_codes=codes,
         rung_names=tuple(names),
-        error_array=errors,
     )
+    if estimates is not None:
+        result.error_array  # noqa: B018  (auto's estimates are made: keep the errors, not them)
+    return result
 
 
 def _objects(column: np.ndarray) -> np.ndarray:
@@ -788,9 +855,14 @@ def _objects(column: np.ndarray) -> np.ndarray:
 
 
 def _put(
-    columns: dict[str, np.ndarray], name: str, part: np.ndarray, sel: np.ndarray, whole: bool
+    columns: dict[str, np.ndarray],
+    name: str,
+    part: np.ndarray,
+    sel: np.ndarray | None,
+    whole: bool,
 ) -> None:
-    """One rung group's column ``part`` written at the points ``sel`` of ``columns[name]``.
+    """One rung group's column ``part`` written at the points ``sel`` of ``columns[name]``
+    (every point where ``whole``; ``sel`` may then be None).
 
     A float column stays float (NaN where no group or point gave a value); a text, flag
     or integer column that misses points becomes an object column (None there).
@@ -801,14 +873,16 @@ def _put(
         if whole:
             columns[name] = part  # the common case: the array path's own column, no copy
             return
+        assert sel is not None
         n = sel.shape[0]
         have = columns[name] = np.full(n, np.nan) if floats else np.full(n, None, dtype=object)
     elif have.dtype.kind == "f" and not floats:
         have = columns[name] = _objects(have)
+    at = slice(None) if sel is None else sel
     if have.dtype.kind == "f":
-        have[sel] = part
+        have[at] = part
     else:
-        have[sel] = _objects(part) if floats else part.astype(object)
+        have[at] = _objects(part) if floats else part.astype(object)
 
 
 def _set(columns: dict[str, np.ndarray], name: str, j: int, value: Value, n: int) -> None:
@@ -828,31 +902,40 @@ def _set(columns: dict[str, np.ndarray], name: str, j: int, value: Value, n: int
         have[j] = value
 
 
-def _sweep_column(param: Param, values: Sequence[float]) -> np.ndarray:
-    """The swept values as an array, refused (naming the first bad value) if any is out of range."""
+def _sweep_column(param: Param, values: Sequence[float]) -> tuple[np.ndarray, float, float]:
+    """The swept values as an array, with their least and largest value; refused (naming
+    the first bad value) if any is out of range.
+
+    The common case, every value finite and within the range, is told by the least and
+    the largest value alone (a NaN makes both NaN); only otherwise is each value tested.
+    """
     arr = np.asarray(values, dtype=float)
     if arr.ndim != 1 or arr.size == 0:
         raise InputOutOfRange(f"a sweep of {param.name} needs at least one value", field="num")
-    bad = ~points.in_range(param, arr)
-    if param.kind == "int":
-        bad |= arr != np.round(arr)
-    if bad.any():
-        v = arr[int(np.flatnonzero(bad)[0])].item()
-        if param.kind == "int" and math.isfinite(v) and v == round(v):
-            v = int(v)
-        param.check(v)  # raises with the field's range
-        raise InputOutOfRange(f"{param.name} = {v!r} is not allowed", field=param.name)
-    return arr.astype(np.int64) if param.kind == "int" else arr
+    low, high = float(arr.min()), float(arr.max())
+    inside = bool(points.in_range(param, np.array([low, high])).all())
+    if not inside or param.kind == "int":
+        bad = ~points.in_range(param, arr)
+        if param.kind == "int":
+            bad |= arr != np.round(arr)
+        if bad.any():
+            v = arr[int(np.flatnonzero(bad)[0])].item()
+            if param.kind == "int" and math.isfinite(v) and v == round(v):
+                v = int(v)
+            param.check(v)  # raises with the field's range
+            raise InputOutOfRange(f"{param.name} = {v!r} is not allowed", field=param.name)
+    return (arr.astype(np.int64) if param.kind == "int" else arr), low, high
 
 
-def _recommended(param: Param, arr: np.ndarray) -> list[str]:
-    """One warning for the swept values outside the source's recommended range."""
+def _recommended(param: Param, arr: np.ndarray, low: float, high: float) -> list[str]:
+    """One warning for the swept values outside the source's recommended range (``low`` and
+    ``high``: the least and largest of ``arr``)."""
     if not param.recommended:
         return []
     lo, hi = param.recommended
-    out = (arr < lo) | (arr > hi)
-    if not out.any():
+    if lo <= low and high <= hi:
         return []
+    out = (arr < lo) | (arr > hi)
     unit = "" if param.unit == "1" else f" {param.unit}"
     return [
         f"{param.name} is outside the range the source recommends ({lo:g}…{hi:g}{unit}) at "

@@ -567,6 +567,9 @@ class RunContext:
     #: The request's shared work (:class:`Scratch`): a step computed once for the
     #: estimate and the compute of one request, gone when the request is.
     scratch: Scratch = field(default_factory=Scratch)
+    #: Whether the caller reads the checks: a sweep reports none (it keeps the outputs),
+    #: so an array path may leave out the work only its checks need.
+    checks: bool = True
 
     def once(self, key: str, compute: Callable[[], Any]) -> Any:
         """``compute()`` once per request: :meth:`Scratch.once` of :attr:`scratch`."""

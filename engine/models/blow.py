@@ -1208,6 +1208,29 @@ _TIME_OUTPUTS = (
     "preload_against_time",
 )
 
+#: Outputs of the tool and the first blow alone (:func:`_tool_values`, :func:`_blow_values`):
+#: a sweep asking for these only runs one blow.
+_FIRST_BLOW_OUTPUTS = frozenset(
+    (
+        "tool_energy_used",
+        "tool_inertia_used",
+        "tool_speed",
+        "tool_stiffness_used",
+        "joint_rate_used",
+        "rigid_torque",
+        "saturation_torque",
+        "peak_torque",
+        "torque_after_first_blow",
+        "nut_rotation",
+        "joint_energy_fraction",
+        "preload_after_first_blow",
+        "blow_interval",
+        "blows_per_second",
+        "yield_preload",
+        "breaking_load",
+    )
+)
+
 #: Outputs whose energy-rung error is the nut's kick (energy_peak_error), not the torque's.
 _PEAK_OUTPUTS = ("peak_torque", "peak_per_blow")
 
@@ -1936,12 +1959,15 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             drive,
             x["restitution"],
         )
+        # outputs of the first blow alone and no checks read (a sweep): one blow is the
+        # same first blow as the first of many, and the rest of the series is not needed
+        first_only = not ctx.checks and ctx.outputs <= _FIRST_BLOW_OUTPUTS
         series = blow_series(
             p,
             t0,
             ctx.rung,
             target_torque=s.target,
-            max_blows=x["max_blows"],
+            max_blows=np.minimum(x["max_blows"], 1) if first_only else x["max_blows"],
             yield_torque=s.yield_torque,
         )
         raw: dict[str, Any] = {
@@ -1970,32 +1996,39 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             raw["breaking_load"] = s.breaking_load
             yielded = np.broadcast_to(series.yield_blow > 0, n)
             bolt_code = _bolt_code(yielded, series.elastic_demand / s.per, s.breaking_load)
-    # every column at once: a refused point is NaN, and a non-finite value is null in a
-    # single run's answer (the runner's rule), so NaN here
-    table = np.empty((len(raw), *n))
-    for row, column in zip(table, raw.values(), strict=True):
-        row[...] = column  # one number for all points is broadcast
+    # every column asked for (and the final preload where its verdict is) at once: a
+    # refused point is NaN, and a non-finite value is null in a single run's answer (the
+    # runner's rule), so NaN here
+    window = s.per is not None and (lo is not None or hi is not None)
+    verdicts = ctx.checks or ctx.wants("preload_verdict")
+    kept = [k for k in raw if k in ctx.outputs or (k == "final_preload" and window and verdicts)]
+    table = np.empty((len(kept), *n))
+    for row, name in zip(table, kept, strict=True):
+        row[...] = raw[name]  # one number for all points is broadcast
     table[:, dead] = np.nan
     table[~np.isfinite(table)] = np.nan
-    values: dict[str, Any] = dict(zip(raw, table, strict=True))
-    values["blows_to_target"] = _nullable(reached, dead | (reached == 0))
+    values: dict[str, Any] = dict(zip(kept, table, strict=True))
+    if ctx.wants("blows_to_target"):
+        values["blows_to_target"] = _nullable(reached, dead | (reached == 0))
     checks: dict[str, np.ndarray] = {}
     # a point the model refuses reports no check; if every point is refused, no check at all
-    reports = not bool(dead.all())
-    if s.per is not None and (lo is not None or hi is not None):
+    reports = ctx.checks and not bool(dead.all())
+    if window and verdicts:
         code = np.broadcast_to(_window_code(values["final_preload"], lo, hi), n)
-        verdict = _WINDOW_LABELS[code]
-        verdict[dead] = None
-        values["preload_verdict"] = verdict
+        if ctx.wants("preload_verdict"):
+            verdict = _WINDOW_LABELS[code]
+            verdict[dead] = None
+            values["preload_verdict"] = verdict
         if reports:
             checks["preload_window"] = np.where(dead, -1, code == 0).astype(np.int8)
     if s.target is not None and reports:
         checks["target_reached"] = np.where(dead, -1, reached > 0).astype(np.int8)
     if s.per is not None:
         bolt_code = np.broadcast_to(bolt_code, n)
-        bolt = _BOLT_LABELS[bolt_code]
-        bolt[dead] = None
-        values["bolt_verdict"] = bolt
+        if ctx.wants("bolt_verdict"):
+            bolt = _BOLT_LABELS[bolt_code]
+            bolt[dead] = None
+            values["bolt_verdict"] = bolt
         if reports:
             checks["bolt_yield"] = np.where(dead, -1, ~yielded).astype(np.int8)
             has_rm = np.broadcast_to(np.isfinite(s.breaking_load), n)

@@ -2567,20 +2567,24 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "residual_clamp_force_min and slip_safety are 0 there"
         )
 
-    # what the runner makes of a non-finite value (null) and of a refused point (all null)
-    table = np.empty((len(_SCALARS), n))
-    for row, name in zip(table, _SCALARS, strict=True):
+    # what the runner makes of a non-finite value (null) and of a refused point (all null),
+    # for the outputs asked for only: each is a pass over the points
+    asked = [name for name in _SCALARS if name in ctx.outputs]
+    table = np.empty((len(asked), n))
+    for row, name in zip(table, asked, strict=True):
         row[...] = s[name]
     table[~np.isfinite(table)] = np.nan
     any_refused = bool(refused.any())
     if any_refused:
         table[:, refused] = np.nan
-    values: dict[str, Any] = dict(zip(_SCALARS, table, strict=True))
-    verdicts: dict[str, Any] = {
-        name: ok if applies is True else np.where(applies, ok, -1)
-        for name, (applies, ok) in s["_checks"].items()
-    }
-    verdicts.update(hook_checks)
+    values: dict[str, Any] = dict(zip(asked, table, strict=True))
+    verdicts: dict[str, Any] = {}
+    if ctx.checks:  # a sweep reads none of them
+        verdicts = {
+            name: ok if applies is True else np.where(applies, ok, -1)
+            for name, (applies, ok) in s["_checks"].items()
+        }
+        verdicts.update(hook_checks)
     reported: dict[str, Any] = {}
     for name, verdict in verdicts.items():
         codes = np.empty(n, dtype=np.int8)

@@ -8,7 +8,7 @@ calls of those functions, checks and sentences.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Container, Mapping
 from dataclasses import dataclass
 from typing import Any
 
@@ -818,12 +818,18 @@ def _drive(x: Mapping[str, Any]) -> _Drive:
     )
 
 
-def _closed_values(x: Mapping[str, Any], d: _Drive, geared: bool) -> dict[str, Any]:
+def _closed_values(
+    x: Mapping[str, Any], d: _Drive, geared: bool, wanted: Container[str] | None = None
+) -> dict[str, Any]:
+    """The closed-form outputs of drive ``d`` [000, eq. 1–10], on floats or arrays.
+
+    ``wanted``: the outputs asked for (every one when None); the drive's details (twists,
+    part energies, speeds, stresses, the coupling's slip torque) are left out where none
+    of them is: on arrays each is a pass over the points.
+    """
     m = d.m_geared if geared else d.m_paper
-    m7 = d.u * m if geared else m
-    t1, t2, t3, t4, t5 = d.energies
     m_max = max_spindle_torque(m, x["spindle_count"], x["idle_spindle_friction_torque"])
-    return {
+    values = {
         "kinetic_energy": d.energy,
         "acceleration_time": acceleration_time(d.energy, x["motor_power"]),
         "shaft_stiffness": d.c7,
@@ -831,23 +837,53 @@ def _closed_values(x: Mapping[str, Any], d: _Drive, geared: bool) -> dict[str, A
         "impact_torque": m,
         "max_spindle_torque": m_max,
         "spindle_torque_reserve": spindle_torque_reserve(m_max, x["wheel_nut_torque"]),
-        "shaft_twist": twist_angle(m7, d.c7),
-        "spindle_twist": twist_angle(m, d.c8),
-        "shaft_torque": m7,
-        "coupling_energy": t1,
-        "motor_pulley_energy": t2,
-        "flywheel_energy": t3,
-        "drive_gear_energy": t4,
-        "spindle_gears_energy": t5,
-        "equivalent_inertia": _inertia(x, d),
-        "flywheel_speed": d.w3,
-        "spindle_gear_speed": d.w5,
-        "gear_ratio": d.u,
-        "gear_ratio_torque_change": gear_ratio_torque_change(d.c7, d.c8, d.u),
-        "shaft_shear_stress": shaft_shear_stress(m7, x["shaft_diameter"]),
-        "spindle_shear_stress": shaft_shear_stress(m, x["spindle_diameter"]),
-        "coupling_slip_torque": _coupling_slip_torque(x, d),
     }
+    if wanted is not None and not any(name in wanted for name in _DRIVE_DETAILS):
+        return values
+    m7 = d.u * m if geared else m
+    t1, t2, t3, t4, t5 = d.energies
+    values.update(
+        {
+            "shaft_twist": twist_angle(m7, d.c7),
+            "spindle_twist": twist_angle(m, d.c8),
+            "shaft_torque": m7,
+            "coupling_energy": t1,
+            "motor_pulley_energy": t2,
+            "flywheel_energy": t3,
+            "drive_gear_energy": t4,
+            "spindle_gears_energy": t5,
+            "equivalent_inertia": _inertia(x, d),
+            "flywheel_speed": d.w3,
+            "spindle_gear_speed": d.w5,
+            "gear_ratio": d.u,
+            "gear_ratio_torque_change": gear_ratio_torque_change(d.c7, d.c8, d.u),
+            "shaft_shear_stress": shaft_shear_stress(m7, x["shaft_diameter"]),
+            "spindle_shear_stress": shaft_shear_stress(m, x["spindle_diameter"]),
+            "coupling_slip_torque": _coupling_slip_torque(x, d),
+        }
+    )
+    return values
+
+
+#: The outputs of :func:`_closed_values` beyond the energy, the time and the torques.
+_DRIVE_DETAILS = (
+    "shaft_twist",
+    "spindle_twist",
+    "shaft_torque",
+    "coupling_energy",
+    "motor_pulley_energy",
+    "flywheel_energy",
+    "drive_gear_energy",
+    "spindle_gears_energy",
+    "equivalent_inertia",
+    "flywheel_speed",
+    "spindle_gear_speed",
+    "gear_ratio",
+    "gear_ratio_torque_change",
+    "shaft_shear_stress",
+    "spindle_shear_stress",
+    "coupling_slip_torque",
+)
 
 
 def _coupling_slip_torque(x: Mapping[str, Any], d: _Drive) -> Any:
@@ -1209,7 +1245,11 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     }
     arrays, m_tr, clutch_warnings = _with_friction_clutch(arrays)
     d = _drive(arrays)
-    values = _closed_values(arrays, d, geared=ctx.rung != "closed_form")
+    # the checks (:func:`_verdicts`) read the shear stresses where a yield strength is given
+    wanted = ctx.outputs
+    if x.get("shear_yield_strength") is not None:
+        wanted = wanted | {"shaft_shear_stress", "spindle_shear_stress"}
+    values = _closed_values(arrays, d, geared=ctx.rung != "closed_form", wanted=wanted)
     values["friction_clutch_torque"] = m_tr
     warnings = list(clutch_warnings)
     m_max = np.asarray(values["max_spindle_torque"])

@@ -9,7 +9,7 @@ calls those functions and says where every number came from.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Container, Mapping
 from dataclasses import replace
 from typing import Any, NamedTuple
 
@@ -496,23 +496,32 @@ class _Design(NamedTuple):
 
 
 def _torque_terms(
-    x: Mapping[str, Any], bolt: Bolt | BoltArrays
+    x: Mapping[str, Any], bolt: Bolt | BoltArrays, deviation: bool = True
 ) -> tuple[tuple[Any, Any, Any], Any]:
-    """(k_G, k_K, R) of the torque formula and its deviation from the exact relations.
+    """(k_G, k_K, R) of the torque formula and its deviation from the exact relations
+    (None unless ``deviation``).
 
     VDI 2230-1 R13 / [004, eq. 10–15] on floats or arrays.
     """
     mu_g, mu_k, formula = x["thread_friction"], x["bearing_friction"], str(x["torque_formula"])
     coefficients = torque_coefficients_raw(bolt, mu_g, mu_k, formula)
+    if not deviation:
+        return coefficients, None
     return coefficients, _deviation(bolt, mu_g, mu_k, formula, coefficients[0] + coefficients[1])
 
 
 def _request_torque_terms(
-    x: Mapping[str, Any], bolt: Bolt | BoltArrays, scratch: Scratch | None
+    x: Mapping[str, Any],
+    bolt: Bolt | BoltArrays,
+    scratch: Scratch | None,
+    deviation: bool = True,
 ) -> tuple[tuple[Any, Any, Any], Any]:
-    """:func:`_torque_terms` once per request: the rung estimate's, where it ran first."""
+    """:func:`_torque_terms` once per request: the rung estimate's, where it ran first.
+
+    Without ``scratch`` (an array path), the deviation is computed only where asked for.
+    """
     if scratch is None:
-        return _torque_terms(x, bolt)
+        return _torque_terms(x, bolt, deviation)
     return scratch.once("preload.torque terms", lambda: _torque_terms(x, bolt))
 
 
@@ -571,14 +580,20 @@ def _verdicts(verdicts: Mapping[str, Any], ok: np.ndarray, n: int) -> dict[str, 
     return {k: np.broadcast_to(np.asarray(v, dtype=bool), (n,)) for k, v in verdicts.items()}
 
 
-def _finish(values: Mapping[str, Any], ok: np.ndarray, n: int) -> dict[str, Any]:
-    """The array path's values: NaN (floats) or None (flags, texts) where a point is refused.
+def _finish(
+    values: Mapping[str, Any], ok: np.ndarray, n: int, wanted: frozenset[str]
+) -> dict[str, Any]:
+    """The array path's ``wanted`` values: NaN (floats) or None (flags, texts) where a point
+    is refused.
 
-    Non-finite floats are NaN too: the scalar path returns them as null.
+    Non-finite floats are NaN too: the scalar path returns them as null. A value not asked
+    for is left out: each costs a pass over the points.
     """
     out: dict[str, Any] = {}
     every = bool(ok.all())
     for name, v in values.items():
+        if name not in wanted:
+            continue
         arr = np.asarray(v)
         if arr.dtype.kind in "OUSb":
             if every:
@@ -644,13 +659,18 @@ def _add_bought_part_checks(
 
 
 def _tightening_values(
-    x: Mapping[str, Any], bolt: Bolt | BoltArrays, scratch: Scratch | None = None
+    x: Mapping[str, Any],
+    bolt: Bolt | BoltArrays,
+    scratch: Scratch | None = None,
+    wanted: Container[str] | None = None,
 ) -> dict[str, Any]:
     """The numbers of ``preload.tightening``, on floats (one design) or arrays (many).
 
     The single run and the array path both come here, so one set of lines gives
     every number, in the order of the procedure: R7's preload, then R13's torque
     (:func:`_torque_terms`, once per request: with ``scratch``, the rung estimate's).
+    ``wanted``: the outputs asked for (every one when None); the torque formula's
+    deviation and the rules of thumb [004, eq. 14–18] are left out where none of theirs is.
     """
     beta = pl.torsion_factor(
         bolt.pitch,
@@ -668,16 +688,25 @@ def _tightening_values(
     )
     force = permissible if x.get("preload") is None else x["preload"]
     sigma_eq = pl.equivalent_stress(force, bolt.stress_area, beta)
-    (k_thread, k_bearing, radius), deviation = _request_torque_terms(x, bolt, scratch)
+    deviation_wanted = wanted is None or "torque_formula_deviation" in wanted
+    (k_thread, k_bearing, radius), deviation = _request_torque_terms(
+        x, bolt, scratch, deviation=deviation_wanted
+    )
     m_thread, m_bearing = force * k_thread, force * k_bearing
     total = m_thread + m_bearing
-    ideal = pl.ideal_torque(force, bolt.pitch)
-    thumb = pl.rule_of_thumb_torque(force, bolt.diameter)
-    thumb_yield = pl.rule_of_thumb_torque_from_yield(bolt.yield_strength, bolt.diameter)
-    positive = total > 0
-    safe = _where(positive, total, 1.0)
+    rules_wanted = wanted is None or any(name in wanted for name in _RULES)
+    ideal = thumb = thumb_yield = share = thumb_dev = yield_dev = _LEFT_OUT
+    if rules_wanted:
+        ideal = pl.ideal_torque(force, bolt.pitch)
+        thumb = pl.rule_of_thumb_torque(force, bolt.diameter)
+        thumb_yield = pl.rule_of_thumb_torque_from_yield(bolt.yield_strength, bolt.diameter)
+        positive = total > 0
+        safe = _where(positive, total, 1.0)
+        share = _where(positive, ideal / safe, 1.0)
+        thumb_dev = _where(positive, (thumb - total) / safe, math.inf)
+        yield_dev = _where(positive, (thumb_yield - total) / safe, math.inf)
     nut_values, nut_verdicts = _nut_values(nut, force)
-    return {
+    values = {
         **nut_values,
         "_nut": (nut, nut_verdicts),
         "assembly_preload": force,
@@ -686,7 +715,7 @@ def _tightening_values(
         "thread_torque": m_thread,
         "bearing_torque": m_bearing,
         "ideal_torque": ideal,
-        "ideal_torque_share": _where(positive, ideal / safe, 1.0),
+        "ideal_torque_share": share,
         "friction_radius": radius,
         "stress_area": bolt.stress_area,
         "pitch_diameter": bolt.pitch_diameter,
@@ -698,12 +727,28 @@ def _tightening_values(
         "stress_utilization": sigma_eq / bolt.yield_strength,
         "bearing_outer_diameter": bolt.bearing_outer_diameter,
         "hole_diameter": bolt.hole_diameter,
-        "torque_formula_deviation": deviation,
+        "torque_formula_deviation": deviation if deviation_wanted else _LEFT_OUT,
         "rule_of_thumb_torque": thumb,
-        "rule_of_thumb_deviation": _where(positive, (thumb - total) / safe, math.inf),
+        "rule_of_thumb_deviation": thumb_dev,
         "yield_rule_torque": thumb_yield,
-        "yield_rule_deviation": _where(positive, (thumb_yield - total) / safe, math.inf),
+        "yield_rule_deviation": yield_dev,
     }
+    if wanted is None:  # every value computed
+        return values
+    return {k: v for k, v in values.items() if v is not _LEFT_OUT}
+
+
+#: The outputs of the rules of thumb beside the torque formula ([004, eq. 14–18]).
+_RULES = (
+    "ideal_torque",
+    "ideal_torque_share",
+    "rule_of_thumb_torque",
+    "rule_of_thumb_deviation",
+    "yield_rule_torque",
+    "yield_rule_deviation",
+)
+#: A value :func:`_tightening_values` left out: no output asked for needs it.
+_LEFT_OUT = object()
 
 
 def _tightening(x: Mapping[str, Any], ctx: RunContext) -> Result:
@@ -778,7 +823,7 @@ def _tightening_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """The array path of ``preload.tightening``: its numbers on many points at once."""
     n = _points(x) or 1
     bolt, notes = resolve_bolts(x, n, labels=ctx.wants("fastener"))
-    values = _tightening_values(x, bolt)
+    values = _tightening_values(x, bolt, wanted=ctx.outputs)
     nut, nut_verdicts = values.pop("_nut")
     verdicts: dict[str, Any] = _nut_verdicts(nut_verdicts)
     warnings = []
@@ -789,7 +834,7 @@ def _tightening_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     force, total = values["assembly_preload"], values["tightening_torque"]
     _bought_part_verdicts(x, bolt, force, total, values, verdicts)
     return Result(
-        values=_finish(values, bolt.ok, n),
+        values=_finish(values, bolt.ok, n, ctx.outputs),
         rung=ctx.rung,
         error_estimate=None,
         notes=notes,
@@ -1343,14 +1388,17 @@ def _control_values(
     ``section`` is (d_0, A_0) of the smallest section. VDI 2230-1 R7 at the smallest
     section ([004, eq. 3–4]), the method's band, [004, eq. 2]'s required preload, then
     R13's torque for the nominal preload (:func:`_torque_terms`, once per request: with
-    ``scratch``, the rung estimate's); also the torque formula's deviation from the exact one.
+    ``scratch``, the rung estimate's); also the torque formula's deviation from the exact one
+    (None without ``scratch``: the array path does not give it).
     """
     d0, area0 = section
     beta = pl.torsion_factor(
         bolt.pitch, bolt.pitch_diameter, d0, x["thread_friction"], str(x["preload_convention"])
     )
     bolt_preload = pl.assembly_preload(bolt.yield_strength, area0, beta, x["utilization"])
-    (k_thread, k_bearing, _), deviation = _request_torque_terms(x, bolt, scratch)
+    (k_thread, k_bearing, _), deviation = _request_torque_terms(
+        x, bolt, scratch, deviation=scratch is not None
+    )
     nut = _nut_rating(x, bolt, bolt_preload)
     permissible = (
         bolt_preload if nut is None else fa.nut_limited_preload(bolt_preload, nut.proof_load)
@@ -1899,7 +1947,7 @@ def _control_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             field="thread_friction_min",
         )
     return Result(
-        values=_finish(values, ok, n),
+        values=_finish(values, ok, n, ctx.outputs),
         rung=ctx.rung,
         error_estimate=None,
         notes=notes,

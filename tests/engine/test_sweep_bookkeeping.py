@@ -1,0 +1,137 @@
+"""The sweep's bookkeeping: a named rung's estimates made when read, the range told by the
+least and largest value, and the recommended-range warning, each against hand values."""
+
+import dataclasses
+from typing import Any
+
+import numpy as np
+import pytest
+
+import engine
+from engine import InputOutOfRange, Rung, fixed_error
+from tests.toys import TOY
+
+BASE = {"diameter": 0.2}
+
+
+def _counting_toy(calls: list[Any]) -> Any:
+    """TOY whose rough rung estimates diameter/10 and records every call (arrays included)."""
+
+    def estimate(x: Any) -> Any:
+        calls.append(x["diameter"])
+        return x["diameter"] / 10.0
+
+    return dataclasses.replace(
+        TOY,
+        rungs=(Rung("rough", "off", estimate), Rung("exact", "", fixed_error(0.0))),
+        vector_rungs=("rough", "exact"),
+    )
+
+
+def test_a_named_rungs_estimates_are_made_when_read() -> None:
+    calls: list[Any] = []
+    toy = _counting_toy(calls)
+    s = engine.sweep(toy, BASE, "diameter", [0.1, 0.3], outputs=["energy"], fidelity="rough")
+    # J = m d²/8 with m = 1 kg, T = ½ J ω² at 100 rad/s (the toy's array path, either rung)
+    assert s.results["energy"] == pytest.approx([0.5 * d**2 / 8 * 1e4 for d in (0.1, 0.3)])
+    assert calls == []  # the columns alone did not need the estimate
+    assert s.error_estimates == pytest.approx([0.01, 0.03], rel=1e-15)
+    assert len(calls) == 1 and s.error_array is s.error_array  # once, then kept
+
+
+def test_auto_still_chooses_per_point_from_the_estimates() -> None:
+    calls: list[Any] = []
+    s = engine.sweep(_counting_toy(calls), BASE, "diameter", [0.05, 0.5], outputs=["energy"])
+    # estimates 0.005 ≤ 0.01 → rough; 0.05 > 0.01 → exact (its own estimate: 0)
+    assert s.rungs == ["rough", "exact"] and s.error_estimates == [0.005, 0.0]
+    assert len(calls) == 1
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -0.1, 0.0, 20.0])
+def test_an_out_of_range_value_anywhere_is_refused_naming_the_field(bad: float) -> None:
+    values = [0.1, 0.2, bad, 0.3]
+    with pytest.raises(InputOutOfRange) as info:
+        engine.sweep(TOY, BASE, "diameter", values, fidelity="exact")
+    assert info.value.field == "diameter"
+
+
+def test_the_recommended_range_warning_counts_the_points_outside() -> None:
+    # the toy's speed: recommended 0…500 rad/s, allowed up to 1e4
+    inside = engine.sweep(TOY, BASE, "speed", [0.0, 500.0], fidelity="exact")
+    assert not any("recommends" in w for w in inside.warnings)
+    outside = engine.sweep(TOY, BASE, "speed", [0.0, 500.0, 750.0], fidelity="exact")
+    assert [w for w in outside.warnings if "recommends" in w] == [
+        "speed is outside the range the source recommends (0…500 rad/s) at 1 of 3 points"
+    ]
+
+
+@pytest.mark.parametrize(
+    ("model", "asked"),
+    [
+        ("preload.tightening", ("assembly_preload", "tightening_torque")),
+        ("preload.control", ("nominal_preload", "target_torque")),
+    ],
+)
+def test_the_preload_array_paths_give_only_the_outputs_asked_for(
+    model: str, asked: tuple[str, ...]
+) -> None:
+    spec = engine.get_model(model)
+    x, _ = spec.validate(spec.examples[0])
+    mu = np.array([0.10, 0.12, 0.14])
+    ctx = engine.core.spec.RunContext("closed_form", frozenset(asked), 0.01)
+    got = spec.vectorized({**x, "thread_friction": mu}, ctx)  # type: ignore[misc]
+    assert set(got.values) == set(asked)
+    for j, m in enumerate(mu.tolist()):  # each the single run's, to the last bit
+        one = engine.run(spec, {**spec.examples[0], "thread_friction": m}, outputs=asked)
+        assert [got.values[name][j] for name in asked] == [one.results[name] for name in asked]
+
+
+def test_the_joint_array_path_gives_only_the_outputs_asked_for() -> None:
+    spec = engine.get_model("joint.vdi2230")
+    asked = ("additional_bolt_load", "required_preload_min", "max_bolt_force")
+    x, _ = spec.validate(spec.examples[0])
+    load = np.array([6e3, 8e3, 1e4])
+    ctx = engine.core.spec.RunContext("closed_form", frozenset(asked), 0.01)
+    got = spec.vectorized({**x, "working_load": load}, ctx)  # type: ignore[misc]
+    assert set(got.values) == set(asked)
+    for j, f_a in enumerate(load.tolist()):  # each the single run's, to the last bit
+        one = engine.run(spec, {**spec.examples[0], "working_load": f_a}, outputs=asked)
+        assert [got.values[name][j] for name in asked] == [one.results[name] for name in asked]
+
+
+def test_the_nutrunner_array_path_leaves_the_drive_details_out() -> None:
+    spec = engine.get_model("nutrunner.drive")
+    asked = ("kinetic_energy", "acceleration_time", "impact_torque")
+    x, _ = spec.validate(spec.examples[0])
+    speed = np.array([130.0, 146.6, 160.0])
+    ctx = engine.core.spec.RunContext("closed_form", frozenset(asked), 0.01)
+    got = spec.vectorized({**x, "motor_speed": speed}, ctx)  # type: ignore[misc]
+    # the energy, the time and the torques (the checks read the spindle torque), no details
+    assert set(got.values) == set(asked) | {
+        "shaft_stiffness",
+        "spindle_stiffness",
+        "max_spindle_torque",
+        "spindle_torque_reserve",
+        "friction_clutch_torque",
+    }
+    for j, w in enumerate(speed.tolist()):  # each the single run's, to the last bit
+        one = engine.run(spec, {**spec.examples[0], "motor_speed": w}, outputs=asked)
+        assert [got.values[name][j] for name in asked] == [one.results[name] for name in asked]
+
+
+def test_a_blow_sweep_of_first_blow_outputs_equals_the_full_series() -> None:
+    """A sweep asking for the first blow's outputs runs one blow: the same first blow as the
+    first of the whole series (a study, which reads the checks, runs the whole series)."""
+    spec = engine.get_model("blow.joint")
+    first = ("peak_torque", "torque_after_first_blow")
+    t0 = [54.0, 60.0, 66.0]
+    alone = engine.sweep(
+        spec, spec.examples[0], "snug_torque", t0, outputs=first, fidelity="energy"
+    )
+    every = engine.sweep(spec, spec.examples[0], "snug_torque", t0, fidelity="energy")
+    for name in first:
+        assert alone.results[name] == every.results[name]
+    assert every.results["blows_to_target"] != [1, 1, 1]  # the series is longer than one blow
+    for j, v in enumerate(t0):
+        one = engine.run(spec, {**spec.examples[0], "snug_torque": v}, fidelity="energy")
+        assert [alone.results[name][j] for name in first] == [one.results[name] for name in first]
