@@ -1043,8 +1043,12 @@ def _required_force(x: Mapping[str, Any]) -> Any:
     )
 
 
-def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
-    """Every output of clutch.ball_setting, on floats or arrays."""
+def _setting_values(x: Mapping[str, Any], stresses: bool = True) -> dict[str, Any]:
+    """Every output of clutch.ball_setting, on floats or arrays.
+
+    ``stresses=False`` leaves out the wire stresses, for an array path whose asked
+    outputs and checks do not read them (no allowable stress given).
+    """
     # the material's modulus where one is chosen, as the as-built outputs take it
     g = asbuilt.Spring(x).shear_modulus
     dm, ip = x["spring_mean_diameter"], x["spring_active_coils"]
@@ -1055,18 +1059,22 @@ def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
         out["spring_rate"] = spring_rate(g, wire, dm, ip)
         out["required_deflection"] = spring_deflection_for_force(force, g, wire, dm, ip)
         out["spring_index"] = spring_index(dm, wire)
-        out["spring_shear_stress"] = spring_shear_stress(force, dm, wire, x["stress_correction"])
+        if stresses:
+            out["spring_shear_stress"] = spring_shear_stress(
+                force, dm, wire, x["stress_correction"]
+            )
     if deflection is not None:
         new_wire = wire_diameter_for_force(force, g, dm, ip, deflection)
         out["required_wire_diameter"] = new_wire
         new_index = spring_index(dm, new_wire)
         out["required_wire_spring_index"] = new_index
-        # No coil exists for C <= 1 (the wire would fill the coil): no stress there.
-        out["required_wire_shear_stress"] = np.where(
-            np.asarray(new_index) > 1.0,
-            spring_shear_stress(force, dm, new_wire, x["stress_correction"]),
-            np.nan,
-        )
+        if stresses:
+            # No coil exists for C <= 1 (the wire would fill the coil): no stress there.
+            out["required_wire_shear_stress"] = np.where(
+                np.asarray(new_index) > 1.0,
+                spring_shear_stress(force, dm, new_wire, x["stress_correction"]),
+                np.nan,
+            )
     return out
 
 
@@ -1246,22 +1254,24 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
             x = {**x, "target_torque": drive["required_slip_torque"]}
         ok, refusals = _feasible(x, wire if helical else None)
         if helical:
-            v: dict[str, Any] = dict(_setting_values(x))
+            stresses = x["allowable_shear_stress"] is not None or ctx.wants(*_STRESSES)
+            v: dict[str, Any] = dict(_setting_values(x, stresses))
         else:
             force = _required_force(x)
             v = {
                 "required_spring_force": force,
                 "required_deflection": asbuilt.disc_breakaway_setting(x, force),
             }
-        # the setting's lines hold 81 values per point: a chunk of points at a time
-        v.update(
-            _in_chunks(
-                lambda part, force: asbuilt.setting_values(part, force)[0],
-                _array_inputs(x),
-                x,
-                v["required_spring_force"],
+        if _setting_read(x, ctx):
+            # the setting's lines hold 81 values per point: a chunk of points at a time
+            v.update(
+                _in_chunks(
+                    lambda part, force: asbuilt.setting_values(part, force)[0],
+                    _array_inputs(x),
+                    x,
+                    v["required_spring_force"],
+                )
             )
-        )
         v.update(drive)
         check_arrays = {
             k: _verdicts(c, ok) for k, c in _setting_verdicts(x, v, drive, target_given).items()
@@ -1274,6 +1284,28 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         notes=refusals,
         check_arrays=check_arrays,
     )
+
+
+#: The wire stresses of clutch.ball_setting (read by a check only with an allowable stress).
+_STRESSES = ("spring_shear_stress", "required_wire_shear_stress")
+#: clutch.ball_setting's outputs from the as-built setting (:func:`asbuilt.setting_values`).
+_AS_BUILT_SETTING = tuple(o.name for o in asbuilt.setting_outputs())
+
+
+def _setting_read(x: Mapping[str, Any], ctx: RunContext) -> bool:
+    """Whether an asked output or a check reads the as-built setting on the array path.
+
+    The setting (the peak setting's root search over the characteristic, the suggested
+    wire or discs) is most of the array path's work; a sweep or study asking only for
+    the paper's outputs (the required force, deflection or wire) leaves it out. The
+    check of the stress at the peak setting reads it wherever the spring has a
+    permissible stress (and, helical, a given wire), so its verdicts stay complete.
+    """
+    if ctx.wants(*_AS_BUILT_SETTING):
+        return True
+    if x["spring_type"] == "helical" and x["spring_wire_diameter"] is None:
+        return False
+    return asbuilt.Spring(x).permissible() is not None
 
 
 #: The inputs a disc stack needs (:func:`asbuilt.require_spring` names a missing one).
