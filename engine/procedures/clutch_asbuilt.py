@@ -1292,6 +1292,18 @@ def bracketed_roots(
     return root
 
 
+#: Inputs that set only a setting's target torque, not the characteristic it is found on.
+_TARGET_INPUTS = (
+    "target_torque",
+    "drive_torque",
+    "drive_power",
+    "drive_speed",
+    "service_factor",
+    "drive_start_torque",
+    "drive_inertia",
+    "load_inertia",
+)
+
 #: Designs whose grid of settings is evaluated at once, :data:`_GRID_BLOCK` settings at a
 #: time (81 values each): a design whose target is reached early is not evaluated further.
 _GRID_DESIGNS = 1024
@@ -1313,9 +1325,13 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
     aims = np.array(np.broadcast_to(np.asarray(target, dtype=float), (n,)))
     tops = np.array(np.broadcast_to(np.asarray(upper, dtype=float), (n,)))
     varied = bool(_arrays(x))
+    # the inputs that set only the target (a swept target torque or drive) leave the
+    # characteristic the same at every point: its peaks on the grid are found once
+    design = {k: v for k, v in x.items() if k not in _TARGET_INPUTS}
+    shared = not _arrays(design) and np.ndim(upper) == 0
 
     def excess(delta: Any, lanes: Any) -> Any:
-        part = points.take(x, n, lanes) if varied else x
+        part = design if shared else points.take(x, n, lanes) if varied else x
         peak = characteristic(part, Spring(part), delta, peak_only=True)["peak_torque"]
         return np.asarray(peak, dtype=float) - aims[lanes]
 
@@ -1324,6 +1340,15 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
     todo = np.flatnonzero(lo_val < 0.0)
     grid = np.linspace(0.0, tops, 65, axis=-1)
     low, high = np.full(n, np.nan), np.full(n, np.nan)
+    if shared and todo.size:
+        # the same floats as the scan below: every design's grid is this one
+        peaks = characteristic(design, Spring(design), grid[0], peak_only=True)["peak_torque"]
+        above = np.asarray(peaks, dtype=float)[None, 1:] - aims[todo, None] >= 0.0
+        reached = above.any(axis=-1)
+        i = np.argmax(above, axis=-1) + 1  # the first grid point at or past the target
+        at = todo[reached]
+        low[at], high[at] = grid[at, i[reached] - 1], grid[at, i[reached]]
+        todo = todo[:0]
     for first in range(0, todo.size, _GRID_DESIGNS):
         lanes = todo[first : first + _GRID_DESIGNS]
         # the grid a block of settings at a time, each design until it crosses the target
@@ -1368,6 +1393,19 @@ Candidate = Callable[[float], Mapping[str, Any]]
 # --------------------------------------------------------------------------
 # The inverse on the as-built inputs (clutch.ball_setting)
 # --------------------------------------------------------------------------
+
+
+def _disc_stack_end(x: Mapping[str, Any], spring: Spring, deflection: Any) -> tuple[Any, Any]:
+    """(total lift, largest |σ_OM| over the lift) of a disc stack set at ``deflection``.
+
+    |σ_OM| grows with the deflection (DIN EN 16983: σ_OM ∝ s) and the lift rises along
+    the grid, so the largest is at the last point (riding on the face): the same floats
+    :func:`characteristic` takes as its ``total_lift`` and ``spring_stress_max``,
+    without the 81-point curve.
+    """
+    lift, _ = lift_points(lift_of(x, deflection), x["ball_diameter"], _ride(x), POINTS, True)
+    total_lift = lift[..., -1]
+    return total_lift, spring.stress(np.asarray(deflection, dtype=float) + total_lift)
 
 
 def setting_outputs() -> tuple[Output, ...]:
@@ -1455,14 +1493,14 @@ def peak_setting(
         if np.ndim(root) == 0:  # one design
             if math.isnan(root):
                 return math.nan, math.nan
-            c = characteristic(x, spring, root)
-            if (root + float(c["total_lift"])) / x["disc_series"] > x["disc_cone_height"]:
+            total_lift, stress_max = _disc_stack_end(x, spring, root)
+            if (root + float(total_lift)) / x["disc_series"] > x["disc_cone_height"]:
                 return math.nan, math.nan  # reached only past flat
-            return root, float(c["spring_stress_max"])
-        c = characteristic(x, spring, np.where(np.isnan(root), 0.0, root))
-        past = (root + c["total_lift"]) / x["disc_series"] > x["disc_cone_height"]
+            return root, float(stress_max)
+        total_lift, stress_max = _disc_stack_end(x, spring, np.where(np.isnan(root), 0.0, root))
+        past = (root + total_lift) / x["disc_series"] > x["disc_cone_height"]
         none = np.isnan(root) | past  # none reaches it, or only past flat
-        return np.where(none, np.nan, root), np.where(none, np.nan, c["spring_stress_max"])
+        return np.where(none, np.nan, root), np.where(none, np.nan, stress_max)
     grid = SettingGrid(x) if grid is None else grid
     rate = np.asarray(spring.force(1.0), float)
     upper = np.maximum(np.asarray(force) / rate, 1e-9) * 1.000001

@@ -575,3 +575,40 @@ def test_disc_stack_setting_on_the_array_path_equals_single_runs():
         for name in ("required_peak_setting", "required_deflection", "suggested_disc_setting"):
             found = [v is not None for v in s[name]]
             assert any(found) and not all(found), (changes, name)  # reached, and not
+
+
+def test_a_setting_search_over_targets_alone_scans_the_shared_grid_once_to_the_same_roots():
+    # a varied target leaves the characteristic the same at every point (one grid scan
+    # for all); a varied geometry scans each point's own grid: the same roots to the
+    # last bit where the geometry varies in name only, and the same nulls
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    rng = np.random.default_rng(5)
+    for ratio, lift in ((1.2, 0.0004), (2.0, 0.0004), (2.0, None)):
+        design = {**DISC, "disc_cone_height": ratio * DISC["disc_thickness"], "ball_lift": lift}
+        x, _ = BALL_CLUTCH.validate(design)
+        upper = float(x["disc_series"] * x["disc_cone_height"])
+        top = float(asbuilt.characteristic(x, asbuilt.Spring(x), upper)["peak_torque"])
+        targets = rng.uniform(0.05, 1.3, 40) * top
+        shared = asbuilt.setting_roots({**x, "target_torque": targets}, targets, upper)
+        thickness = np.full(40, x["disc_thickness"])  # varied in name: each point scanned
+        scanned = asbuilt.setting_roots(
+            {**x, "target_torque": targets, "disc_thickness": thickness}, targets, upper
+        )
+        np.testing.assert_array_equal(shared, scanned)
+        assert np.isfinite(shared).sum() >= 10 and np.isnan(shared).sum() >= 2, ratio
+
+
+def test_a_disc_stacks_end_values_are_the_characteristics():
+    # |σ_OM| grows with the deflection and the lift along the grid: its largest value
+    # over the 81 points is the last point's, the same float
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    for lift in (0.0004, None):
+        x, _ = BALL_CLUTCH.validate({**DISC, "ball_lift": lift})
+        spring = asbuilt.Spring(x)
+        settings = np.linspace(0.0, 0.004, 17)
+        c = asbuilt.characteristic({**x, "spring_deflection": settings}, spring, settings)
+        total_lift, stress = asbuilt._disc_stack_end(x, spring, settings)
+        np.testing.assert_array_equal(total_lift, c["total_lift"])
+        np.testing.assert_array_equal(stress, c["spring_stress_max"])
