@@ -1335,11 +1335,17 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
         peak = characteristic(part, Spring(part), delta, peak_only=True)["peak_torque"]
         return np.asarray(peak, dtype=float) - aims[lanes]
 
-    lo_val = excess(np.zeros(n), np.arange(n))
+    if shared:  # one peak at δ = 0 for every point
+        seated = characteristic(design, Spring(design), 0.0, peak_only=True)["peak_torque"]
+        lo_val = np.asarray(seated, dtype=float) - aims
+    else:
+        lo_val = excess(np.zeros(n), np.arange(n))
     root = np.where(lo_val == 0.0, 0.0, np.nan)
     todo = np.flatnonzero(lo_val < 0.0)
     grid = np.linspace(0.0, tops, 65, axis=-1)
     low, high = np.full(n, np.nan), np.full(n, np.nan)
+    span = np.zeros(n, dtype=np.intp)  # the grid interval of a shared grid's bracket
+    curves: _Curves | None = None
     if shared and todo.size:
         # the same floats as the scan below: every design's grid is this one
         peaks = characteristic(design, Spring(design), grid[0], peak_only=True)["peak_torque"]
@@ -1348,7 +1354,9 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
         i = np.argmax(above, axis=-1) + 1  # the first grid point at or past the target
         at = todo[reached]
         low[at], high[at] = grid[at, i[reached] - 1], grid[at, i[reached]]
+        span[at] = i[reached]
         todo = todo[:0]
+        curves = _Curves.of(design, grid[0])
     for first in range(0, todo.size, _GRID_DESIGNS):
         lanes = todo[first : first + _GRID_DESIGNS]
         # the grid a block of settings at a time, each design until it crosses the target
@@ -1366,6 +1374,12 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
                 break
     bracketed = np.flatnonzero(np.isfinite(low))
     if bracketed.size:
+        if curves is not None:
+            shape = curves  # the peak over the lift points that can hold it in the bracket
+
+            def excess(delta: Any, lanes: Any) -> Any:
+                return shape.peak(delta, span[lanes]) - aims[lanes]
+
         root[bracketed] = bracketed_roots(
             lambda delta, lanes: excess(delta, bracketed[lanes]),
             low[bracketed],
@@ -1374,6 +1388,95 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
             rtol=1e-12,
         )
     return root if varied or np.ndim(target) or np.ndim(upper) else float(root[0])
+
+
+class _Curves:
+    """One disc-stack design's characteristic as 81 curves T_k(δ) of the nut setting δ.
+
+    With the ball at lift point k (``ball_lift`` given, so the lift points do not move
+    with δ) the torque is T_k(δ) = s D0 F((δ + z_k)/i)/(2 p(β_k)), and the peak torque
+    is max_k T_k(δ) (:func:`characteristic`). Between two settings of the root search's
+    grid, a curve can hold the peak only if its largest value there reaches the
+    largest of every curve's smallest: its values at the interval's ends, and at the
+    disc force's extrema inside it (:func:`springs.disc_falling_region`), bound it. The
+    peak over those curves alone is the same float as over all 81 (the maximum of a
+    set that holds it); the bounds carry a slack of 1e-9 of the largest torque.
+    """
+
+    #: Relative slack on the bounds (rounding is ~1e-16 of a torque).
+    SLACK = 1e-9
+
+    def __init__(self, x: Mapping[str, Any], lift: Any, beta: Any, candidates: Any) -> None:
+        self.x, self.spring = x, Spring(x)
+        self.lift, self.beta, self.candidates = lift, beta, candidates
+
+    @classmethod
+    def of(cls, x: Mapping[str, Any], grid: Any) -> _Curves | None:
+        """The curves of a disc stack ``x`` on the settings ``grid``; None where the lift
+        points move with the setting (``ball_lift`` absent), a torque is not finite, or
+        the spring is helical (whose setting :class:`SettingGrid` solves)."""
+        if x["ball_lift"] is None or x["spring_type"] != "disc":
+            return None
+        lift, beta = lift_points(x["ball_lift"], x["ball_diameter"], _ride(x), POINTS)
+        curves = cls(x, lift, beta, np.arange(lift.size))
+        bounds = curves.bounds(np.asarray(grid, dtype=float))
+        if bounds is None:
+            return None
+        upper, lower, ends = bounds
+        slack = cls.SLACK * float(np.max(np.abs(ends)))
+        holds = upper + slack >= np.max(lower, axis=-1, keepdims=True) - slack
+        # per interval the curves that may hold the peak, padded with the first of them
+        width = int(np.max(np.count_nonzero(holds, axis=-1)))
+        order = np.argsort(~holds, axis=-1, kind="stable")[:, :width]
+        first = order[:, :1]
+        count = np.count_nonzero(holds, axis=-1)[:, None]
+        padded = np.where(np.arange(width) < count, order, first)
+        # row j of ``candidates`` is the interval ending at grid point j (row 0 unused)
+        candidates = np.concatenate([padded[:1], padded])
+        return cls(x, lift, beta, candidates)
+
+    def bounds(self, grid: Any) -> tuple[Any, Any, Any] | None:
+        """(largest, smallest) of every curve in every interval of ``grid`` (interval j
+        between settings j and j + 1, a row each), and the curves at the settings; None
+        where a torque is not finite. Each curve is the disc force of a setting that
+        rises with δ, times a constant: its extremes lie at the ends or at the force's
+        extrema inside (none where the force rises everywhere)."""
+        x, every = self.x, np.arange(self.lift.size)
+        ends = self.torque(grid[:, None], every)  # (65, 81)
+        extrema = np.asarray(sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"]))
+        at = extrema[:, None] * x["disc_series"] - self.lift  # (2, 81)
+        inner = self.torque(np.where(np.isfinite(at), at, 0.0), every)
+        if not (np.all(np.isfinite(ends)) and np.all(np.isfinite(inner))):
+            return None
+        lo, hi = ends[:-1], ends[1:]
+        upper, lower = np.maximum(lo, hi), np.minimum(lo, hi)
+        for setting, value in zip(at, inner, strict=True):
+            inside = (grid[:-1, None] < setting) & (setting < grid[1:, None])
+            upper = np.where(inside, np.maximum(upper, value), upper)
+            lower = np.where(inside, np.minimum(lower, value), lower)
+        return upper, lower, ends
+
+    def torque(self, delta: Any, k: Any) -> Any:
+        """T_k(δ) as :func:`characteristic` evaluates it (the same floats)."""
+        x = self.x
+        force = self.spring.force(np.asarray(delta, dtype=float) + self.lift[k])
+        return np.asarray(
+            torque_against_lift(
+                force,
+                self.beta[k],
+                x["ball_circle_diameter"],
+                x["flank_friction"],
+                x["driving_groove_angle"],
+                _sharing(x),
+                x["flank_construction"],
+            )
+        )
+
+    def peak(self, delta: Any, span: Any) -> Any:
+        """The peak torque at settings ``delta``, each in the grid interval ending at
+        grid point ``span``."""
+        k = self.candidates[span]
+        return np.max(self.torque(np.asarray(delta, dtype=float)[:, None], k), axis=-1)
 
 
 def solve_setting(
