@@ -1357,21 +1357,28 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
         span[at] = i[reached]
         todo = todo[:0]
         curves = _Curves.of(design, grid[0])
+    begin = np.ones(n, dtype=np.intp)  # the first grid point each point's scan reads
+    if todo.size:
+        # where the peak rises along the grid, its first crossing is found by bisection;
+        # the points it leaves are scanned past the part where it rises below the target
+        todo = _bisect_rising(x, n, grid, todo, excess, low, high, begin)
+    block = np.arange(_GRID_BLOCK)
     for first in range(0, todo.size, _GRID_DESIGNS):
         lanes = todo[first : first + _GRID_DESIGNS]
         # the grid a block of settings at a time, each design until it crosses the target
-        for start in range(1, 65, _GRID_BLOCK):
-            width = min(_GRID_BLOCK, 65 - start)
-            settings = grid[lanes, start : start + width]
-            peaks = excess(settings.ravel(), np.repeat(lanes, width)).reshape(-1, width)
-            above = peaks >= 0.0
+        while lanes.size:
+            index = begin[lanes, None] + block
+            on = index <= 64
+            index = np.minimum(index, 64)
+            settings = grid[lanes[:, None], index]
+            peaks = excess(settings.ravel(), np.repeat(lanes, _GRID_BLOCK))
+            above = (peaks.reshape(-1, _GRID_BLOCK) >= 0.0) & on
             reached = above.any(axis=-1)
-            i = np.argmax(above, axis=-1) + start  # the first grid point at or past it
+            i = np.argmax(above, axis=-1) + begin[lanes]  # the first grid point at or past it
             at = lanes[reached]
             low[at], high[at] = grid[at, i[reached] - 1], grid[at, i[reached]]
-            lanes = lanes[~reached]
-            if not lanes.size:
-                break
+            begin[lanes] += _GRID_BLOCK
+            lanes = lanes[~reached & (begin[lanes] <= 64)]
     bracketed = np.flatnonzero(np.isfinite(low))
     if bracketed.size:
         if curves is not None:
@@ -1477,6 +1484,76 @@ class _Curves:
         grid point ``span``."""
         k = self.candidates[span]
         return np.max(self.torque(np.asarray(delta, dtype=float)[:, None], k), axis=-1)
+
+
+def _bisect_rising(
+    x: Mapping[str, Any],
+    n: int,
+    grid: Any,
+    todo: Any,
+    excess: Callable[[Any, Any], Any],
+    low: Any,
+    high: Any,
+    begin: Any,
+) -> Any:
+    """The grid brackets of the points of ``todo`` whose peak torque rises along the grid.
+
+    A disc stack's force rises up to its maximum s_max (everywhere where h0/t ≤ √2,
+    :func:`springs.disc_falling_region`) and every lift point's torque with it (a
+    positive push); the peak torque then rises with the setting while the stack's
+    largest compression, at the last lift point, stays below i s_max. Over the grid
+    points up to there the first at or past the target is found by bisection (the same
+    bracket the scan finds: a rising function crosses once). Sets ``low`` and ``high``
+    where found; returns the points left for the scan (not rising, or not reached), and
+    sets ``begin`` of those not reached to the grid point past the rising part.
+    """
+    if x["spring_type"] != "disc":
+        return todo
+    part = points.take(x, n, todo) if _arrays(x) else x
+    s_max = np.asarray(sp.disc_falling_region(part["disc_thickness"], part["disc_cone_height"])[0])
+    settings = grid[todo]  # (m, 65)
+    rim = np.asarray(rim_rise(part["ball_diameter"], _ride(part)))
+    given = np.asarray(part["ball_lift"] if part["ball_lift"] is not None else settings)
+    lift = given[..., None] if part["ball_lift"] is not None else given
+    last = settings + lift + rim[..., None]  # the largest compression, at the last point
+    rising = np.where(
+        np.isnan(s_max)[..., None], True, last <= (s_max * part["disc_series"])[..., None]
+    )
+    xs = {k: (v[..., None] if isinstance(v, np.ndarray) else v) for k, v in part.items()}
+    beta = lift_points(0.0, part["ball_diameter"], _ride(part), POINTS)[1]
+    gain = np.asarray(
+        torque_against_lift(
+            1.0,
+            beta,
+            xs["ball_circle_diameter"],
+            xs["flank_friction"],
+            xs["driving_groove_angle"],
+            _sharing(xs),
+            part["flank_construction"],
+        )
+    )
+    pushing = np.all(np.isfinite(gain) & (gain > 0.0), axis=-1)
+    # the last grid point of the rising prefix (0: none), per point
+    top = np.broadcast_to(
+        np.where(pushing, np.sum(np.cumprod(rising, axis=-1), -1) - 1, 0), todo.shape
+    )
+    ask = np.flatnonzero(top > 0)
+    lanes = todo[ask]
+    lo, hi = np.zeros(ask.size, dtype=np.intp), top[ask]
+    reached = excess(grid[lanes, hi], lanes) >= 0.0
+    begin[lanes[~reached]] = hi[~reached] + 1  # below the target up to there
+    lanes, lo, hi = lanes[reached], lo[reached], hi[reached]
+    while lanes.size:
+        more = hi - lo > 1
+        if not more.any():
+            break
+        mid = (lo + hi) // 2
+        at = np.flatnonzero(more)
+        up = excess(grid[lanes[at], mid[at]], lanes[at]) >= 0.0
+        hi[at] = np.where(up, mid[at], hi[at])
+        lo[at] = np.where(up, lo[at], mid[at])
+    low[lanes], high[lanes] = grid[lanes, lo], grid[lanes, hi]
+    return np.setdiff1d(todo, lanes, assume_unique=True)
 
 
 def solve_setting(

@@ -579,12 +579,14 @@ def test_disc_stack_setting_on_the_array_path_equals_single_runs():
 
 def test_a_setting_search_over_targets_alone_scans_the_shared_grid_once_to_the_same_roots():
     # a varied target leaves the characteristic the same at every point (one grid scan
-    # for all); a varied geometry scans each point's own grid: the same roots to the
-    # last bit where the geometry varies in name only, and the same nulls
+    # for all); a varied geometry bisects each point's own grid where its peak rises and
+    # scans on from there: the same roots to the last bit where the geometry varies in
+    # name only, and the same nulls, for rising, falling and past-flat negative discs
     from engine.procedures import clutch_asbuilt as asbuilt
 
     rng = np.random.default_rng(5)
-    for ratio, lift in ((1.2, 0.0004), (2.0, 0.0004), (2.0, None)):
+    cases = [(r, lift) for r in (1.0, 1.2, 1.6, 2.0, 2.2, 3.0) for lift in (0.0004, None)]
+    for ratio, lift in cases:
         design = {**DISC, "disc_cone_height": ratio * DISC["disc_thickness"], "ball_lift": lift}
         x, _ = BALL_CLUTCH.validate(design)
         upper = float(x["disc_series"] * x["disc_cone_height"])
