@@ -568,13 +568,14 @@ ASSUMPTIONS = (
 
 
 def _forward_values(
-    x: Mapping[str, Any], as_built: bool = True, peak: bool = True
+    x: Mapping[str, Any], as_built: bool = True, peak: bool = True, forces: bool = True
 ) -> dict[str, Any]:
     """Every output of clutch.ball, on floats or arrays (one input may be an array).
 
     ``as_built=False`` leaves out the characteristic (81 lifts per point), for long
     sweeps that ask only for the paper's outputs; ``peak=False`` leaves out only the
-    outputs at the characteristic's peak (:data:`asbuilt.PEAK_OUTPUTS`).
+    outputs at the characteristic's peak (:data:`asbuilt.PEAK_OUTPUTS`);
+    ``forces=False`` the ball forces (:data:`_BALL_FORCES`), which no check reads.
     """
     spring = asbuilt.Spring(x)
     alpha, f, kr = x["groove_angle"], x["flank_friction"], x["load_factor"]
@@ -592,19 +593,18 @@ def _forward_values(
         driving,
         construction,
     )
-    at = limit if x["torque"] is None else x["torque"]
-    tangential = ball_tangential_force(at, x["ball_circle_diameter"], x["ball_count"], kr)
-    values: dict[str, Any] = {
-        "spring_force": force,
-        "torque_limit": limit,
-        "ball_tangential_force": tangential,
-        "ball_axial_force": np.asarray(tangential)
-        * combined_push_factor(alpha, f, driving, construction),
+    values: dict[str, Any] = {"spring_force": force, "torque_limit": limit}
+    if forces:
+        at = limit if x["torque"] is None else x["torque"]
+        tangential = ball_tangential_force(at, x["ball_circle_diameter"], x["ball_count"], kr)
+        values["ball_tangential_force"] = tangential
+        values["ball_axial_force"] = np.asarray(tangential) * combined_push_factor(
+            alpha, f, driving, construction
+        )
         # on the flank the ball slides on (a free ball: the one it rides)
-        "ball_normal_force": ball_normal_force(
+        values["ball_normal_force"] = ball_normal_force(
             tangential, riding_flank_angle(alpha, driving, construction), f
-        ),
-    }
+        )
     if spring.kind == "helical":
         d0, dm = x["spring_wire_diameter"], x["spring_mean_diameter"]
         index = spring_index(dm, d0)
@@ -780,14 +780,26 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
     wire = x["spring_wire_diameter"] if helical else None
     with np.errstate(all="ignore"):
         ok, refusals = _feasible(x, wire)
-        # the 81-point characteristic only where an output or a check needs its peak
-        peak = not helical or x["face_friction"] is not None or ctx.wants(*asbuilt.PEAK_OUTPUTS)
-        values = _chunked_forward(x, peak)
         spring = asbuilt.Spring(x)
+        # the as-built values only where an output or a check reads them, and the
+        # 81-point characteristic only where one needs its peak
+        as_built = ctx.wants(*_AS_BUILT) or asbuilt.verdicts_read_values(x, spring)
+        peak = not helical or x["face_friction"] is not None or ctx.wants(*asbuilt.PEAK_OUTPUTS)
+        forces = ctx.wants(*_BALL_FORCES)
+        if as_built:
+            values = _chunked_forward(x, peak, forces)
+            skip: tuple[str, ...] = () if peak else asbuilt.PEAK_OUTPUTS
+        else:  # the paper's outputs, and the margin the self-locking check reads
+            values = {
+                **_forward_values(x, as_built=False, forces=forces),
+                "self_locking_margin": asbuilt.margin(x),
+            }
+            skip = _AS_BUILT
+        skip += () if forces else _BALL_FORCES
         check_arrays = {k: _verdicts(c, ok) for k, c in _ball_verdicts(x, values, spring).items()}
         values = _masked({k: v for k, v in values.items() if v is not None}, ok)
     return Result(
-        values=_with_absent(values, BALL_CLUTCH.outputs, () if peak else asbuilt.PEAK_OUTPUTS),
+        values=_with_absent(values, BALL_CLUTCH.outputs, skip),
         rung=ctx.rung,
         error_estimate=None,
         notes=[
@@ -798,15 +810,24 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
 
 
+#: The forces on the most-loaded ball (clutch.ball's [001, eq. 1]).
+_BALL_FORCES = ("ball_tangential_force", "ball_axial_force", "ball_normal_force")
+#: clutch.ball's as-built outputs (:func:`asbuilt.extra_values`).
+_AS_BUILT = tuple(o.name for o in asbuilt.outputs() if not o.series)
+
 #: Points evaluated at once (the characteristic holds 81 per point).
 _CHUNK = 20_000
 
 
-def _chunked_forward(x: Mapping[str, Any], peak: bool = True) -> dict[str, Any]:
+def _chunked_forward(
+    x: Mapping[str, Any], peak: bool = True, forces: bool = True
+) -> dict[str, Any]:
     """:func:`_forward_values` over long varied inputs, a chunk at a time (bounded memory)."""
     if not peak:  # without the 81-point curve: no chunks needed
-        return _forward_values(x, peak=peak)
-    return _in_chunks(lambda part: _forward_values(part, peak=peak), _array_inputs(x), x)
+        return _forward_values(x, peak=peak, forces=forces)
+    return _in_chunks(
+        lambda part: _forward_values(part, peak=peak, forces=forces), _array_inputs(x), x
+    )
 
 
 def _in_chunks(fn: Callable[..., dict[str, Any]], n: int | None, *args: Any) -> dict[str, Any]:

@@ -945,6 +945,18 @@ def series(x: Mapping[str, Any], spring: Spring) -> dict[str, list[float]]:
 # --------------------------------------------------------------------------
 
 
+def verdicts_read_values(x: Mapping[str, Any], spring: Spring) -> bool:
+    """Whether :func:`verdicts` reads an as-built value besides the self-locking margin:
+    the largest stress (a permissible stress known), the travel (a disc stack, a free
+    length given) or the residual torque (a face friction given)."""
+    return (
+        spring.kind == "disc"
+        or x["spring_free_length"] is not None
+        or x["face_friction"] is not None
+        or spring.permissible() is not None
+    )
+
+
 def verdicts(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> dict[str, Any]:
     """The as-built checks' verdicts on floats or arrays: True where a check passes.
 
@@ -955,14 +967,15 @@ def verdicts(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> dict
     allow = spring.permissible()
     if allow is not None:
         out["spring_stress_max"] = v["spring_stress_max"] <= allow
-    travel = x["spring_deflection"] + v["total_lift"]
     if spring.kind == "disc":
+        travel = x["spring_deflection"] + v["total_lift"]
         m = x["disc_series"]
         out["disc_not_past_flat"] = travel / m <= x["disc_cone_height"]
         s_max = sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])[0]
         # NaN (no force maximum) compares False: the torque never falls
         out["falling_curve"] = x["spring_deflection"] / m + v["total_lift"] / m > s_max
     elif x["spring_free_length"] is not None:
+        travel = x["spring_deflection"] + v["total_lift"]
         d, dm, n = x["spring_wire_diameter"], x["spring_mean_diameter"], x["spring_active_coils"]
         need = sp.solid_length(d, n) + sp.minimum_gap_sum(d, dm, n)
         out["solid_length"] = x["spring_free_length"] - travel >= need
