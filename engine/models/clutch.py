@@ -568,13 +568,14 @@ ASSUMPTIONS = (
 
 
 def _forward_values(
-    x: Mapping[str, Any], as_built: bool = True, peak: bool = True
+    x: Mapping[str, Any], as_built: bool = True, peak: bool = True, forces: bool = True
 ) -> dict[str, Any]:
     """Every output of clutch.ball, on floats or arrays (one input may be an array).
 
     ``as_built=False`` leaves out the characteristic (81 lifts per point), for long
     sweeps that ask only for the paper's outputs; ``peak=False`` leaves out only the
-    outputs at the characteristic's peak (:data:`asbuilt.PEAK_OUTPUTS`).
+    outputs at the characteristic's peak (:data:`asbuilt.PEAK_OUTPUTS`);
+    ``forces=False`` the ball forces (:data:`_BALL_FORCES`), which no check reads.
     """
     spring = asbuilt.Spring(x)
     alpha, f, kr = x["groove_angle"], x["flank_friction"], x["load_factor"]
@@ -592,19 +593,18 @@ def _forward_values(
         driving,
         construction,
     )
-    at = limit if x["torque"] is None else x["torque"]
-    tangential = ball_tangential_force(at, x["ball_circle_diameter"], x["ball_count"], kr)
-    values: dict[str, Any] = {
-        "spring_force": force,
-        "torque_limit": limit,
-        "ball_tangential_force": tangential,
-        "ball_axial_force": np.asarray(tangential)
-        * combined_push_factor(alpha, f, driving, construction),
+    values: dict[str, Any] = {"spring_force": force, "torque_limit": limit}
+    if forces:
+        at = limit if x["torque"] is None else x["torque"]
+        tangential = ball_tangential_force(at, x["ball_circle_diameter"], x["ball_count"], kr)
+        values["ball_tangential_force"] = tangential
+        values["ball_axial_force"] = np.asarray(tangential) * combined_push_factor(
+            alpha, f, driving, construction
+        )
         # on the flank the ball slides on (a free ball: the one it rides)
-        "ball_normal_force": ball_normal_force(
+        values["ball_normal_force"] = ball_normal_force(
             tangential, riding_flank_angle(alpha, driving, construction), f
-        ),
-    }
+        )
     if spring.kind == "helical":
         d0, dm = x["spring_wire_diameter"], x["spring_mean_diameter"]
         index = spring_index(dm, d0)
@@ -780,14 +780,26 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
     wire = x["spring_wire_diameter"] if helical else None
     with np.errstate(all="ignore"):
         ok, refusals = _feasible(x, wire)
-        # the 81-point characteristic only where an output or a check needs its peak
-        peak = not helical or x["face_friction"] is not None or ctx.wants(*asbuilt.PEAK_OUTPUTS)
-        values = _chunked_forward(x, peak)
         spring = asbuilt.Spring(x)
+        # the as-built values only where an output or a check reads them, and the
+        # 81-point characteristic only where one needs its peak
+        as_built = ctx.wants(*_AS_BUILT) or asbuilt.verdicts_read_values(x, spring)
+        peak = not helical or x["face_friction"] is not None or ctx.wants(*asbuilt.PEAK_OUTPUTS)
+        forces = ctx.wants(*_BALL_FORCES)
+        if as_built:
+            values = _chunked_forward(x, peak, forces)
+            skip: tuple[str, ...] = () if peak else asbuilt.PEAK_OUTPUTS
+        else:  # the paper's outputs, and the margin the self-locking check reads
+            values = {
+                **_forward_values(x, as_built=False, forces=forces),
+                "self_locking_margin": asbuilt.margin(x),
+            }
+            skip = _AS_BUILT
+        skip += () if forces else _BALL_FORCES
         check_arrays = {k: _verdicts(c, ok) for k, c in _ball_verdicts(x, values, spring).items()}
         values = _masked({k: v for k, v in values.items() if v is not None}, ok)
     return Result(
-        values=_with_absent(values, BALL_CLUTCH.outputs, () if peak else asbuilt.PEAK_OUTPUTS),
+        values=_with_absent(values, BALL_CLUTCH.outputs, skip),
         rung=ctx.rung,
         error_estimate=None,
         notes=[
@@ -798,15 +810,24 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
 
 
+#: The forces on the most-loaded ball (clutch.ball's [001, eq. 1]).
+_BALL_FORCES = ("ball_tangential_force", "ball_axial_force", "ball_normal_force")
+#: clutch.ball's as-built outputs (:func:`asbuilt.extra_values`).
+_AS_BUILT = tuple(o.name for o in asbuilt.outputs() if not o.series)
+
 #: Points evaluated at once (the characteristic holds 81 per point).
 _CHUNK = 20_000
 
 
-def _chunked_forward(x: Mapping[str, Any], peak: bool = True) -> dict[str, Any]:
+def _chunked_forward(
+    x: Mapping[str, Any], peak: bool = True, forces: bool = True
+) -> dict[str, Any]:
     """:func:`_forward_values` over long varied inputs, a chunk at a time (bounded memory)."""
     if not peak:  # without the 81-point curve: no chunks needed
-        return _forward_values(x, peak=peak)
-    return _in_chunks(lambda part: _forward_values(part, peak=peak), _array_inputs(x), x)
+        return _forward_values(x, peak=peak, forces=forces)
+    return _in_chunks(
+        lambda part: _forward_values(part, peak=peak, forces=forces), _array_inputs(x), x
+    )
 
 
 def _in_chunks(fn: Callable[..., dict[str, Any]], n: int | None, *args: Any) -> dict[str, Any]:
@@ -1043,8 +1064,12 @@ def _required_force(x: Mapping[str, Any]) -> Any:
     )
 
 
-def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
-    """Every output of clutch.ball_setting, on floats or arrays."""
+def _setting_values(x: Mapping[str, Any], stresses: bool = True) -> dict[str, Any]:
+    """Every output of clutch.ball_setting, on floats or arrays.
+
+    ``stresses=False`` leaves out the wire stresses, for an array path whose asked
+    outputs and checks do not read them (no allowable stress given).
+    """
     # the material's modulus where one is chosen, as the as-built outputs take it
     g = asbuilt.Spring(x).shear_modulus
     dm, ip = x["spring_mean_diameter"], x["spring_active_coils"]
@@ -1055,18 +1080,22 @@ def _setting_values(x: Mapping[str, Any]) -> dict[str, Any]:
         out["spring_rate"] = spring_rate(g, wire, dm, ip)
         out["required_deflection"] = spring_deflection_for_force(force, g, wire, dm, ip)
         out["spring_index"] = spring_index(dm, wire)
-        out["spring_shear_stress"] = spring_shear_stress(force, dm, wire, x["stress_correction"])
+        if stresses:
+            out["spring_shear_stress"] = spring_shear_stress(
+                force, dm, wire, x["stress_correction"]
+            )
     if deflection is not None:
         new_wire = wire_diameter_for_force(force, g, dm, ip, deflection)
         out["required_wire_diameter"] = new_wire
         new_index = spring_index(dm, new_wire)
         out["required_wire_spring_index"] = new_index
-        # No coil exists for C <= 1 (the wire would fill the coil): no stress there.
-        out["required_wire_shear_stress"] = np.where(
-            np.asarray(new_index) > 1.0,
-            spring_shear_stress(force, dm, new_wire, x["stress_correction"]),
-            np.nan,
-        )
+        if stresses:
+            # No coil exists for C <= 1 (the wire would fill the coil): no stress there.
+            out["required_wire_shear_stress"] = np.where(
+                np.asarray(new_index) > 1.0,
+                spring_shear_stress(force, dm, new_wire, x["stress_correction"]),
+                np.nan,
+            )
     return out
 
 
@@ -1246,22 +1275,24 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
             x = {**x, "target_torque": drive["required_slip_torque"]}
         ok, refusals = _feasible(x, wire if helical else None)
         if helical:
-            v: dict[str, Any] = dict(_setting_values(x))
+            stresses = x["allowable_shear_stress"] is not None or ctx.wants(*_STRESSES)
+            v: dict[str, Any] = dict(_setting_values(x, stresses))
         else:
             force = _required_force(x)
             v = {
                 "required_spring_force": force,
                 "required_deflection": asbuilt.disc_breakaway_setting(x, force),
             }
-        # the setting's lines hold 81 values per point: a chunk of points at a time
-        v.update(
-            _in_chunks(
-                lambda part, force: asbuilt.setting_values(part, force)[0],
-                _array_inputs(x),
-                x,
-                v["required_spring_force"],
+        if _setting_read(x, ctx):
+            # the setting's lines hold 81 values per point: a chunk of points at a time
+            v.update(
+                _in_chunks(
+                    lambda part, force: asbuilt.setting_values(part, force)[0],
+                    _array_inputs(x),
+                    x,
+                    v["required_spring_force"],
+                )
             )
-        )
         v.update(drive)
         check_arrays = {
             k: _verdicts(c, ok) for k, c in _setting_verdicts(x, v, drive, target_given).items()
@@ -1274,6 +1305,28 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         notes=refusals,
         check_arrays=check_arrays,
     )
+
+
+#: The wire stresses of clutch.ball_setting (read by a check only with an allowable stress).
+_STRESSES = ("spring_shear_stress", "required_wire_shear_stress")
+#: clutch.ball_setting's outputs from the as-built setting (:func:`asbuilt.setting_values`).
+_AS_BUILT_SETTING = tuple(o.name for o in asbuilt.setting_outputs())
+
+
+def _setting_read(x: Mapping[str, Any], ctx: RunContext) -> bool:
+    """Whether an asked output or a check reads the as-built setting on the array path.
+
+    The setting (the peak setting's root search over the characteristic, the suggested
+    wire or discs) is most of the array path's work; a sweep or study asking only for
+    the paper's outputs (the required force, deflection or wire) leaves it out. The
+    check of the stress at the peak setting reads it wherever the spring has a
+    permissible stress (and, helical, a given wire), so its verdicts stay complete.
+    """
+    if ctx.wants(*_AS_BUILT_SETTING):
+        return True
+    if x["spring_type"] == "helical" and x["spring_wire_diameter"] is None:
+        return False
+    return asbuilt.Spring(x).permissible() is not None
 
 
 #: The inputs a disc stack needs (:func:`asbuilt.require_spring` names a missing one).

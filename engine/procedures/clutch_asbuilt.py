@@ -945,6 +945,18 @@ def series(x: Mapping[str, Any], spring: Spring) -> dict[str, list[float]]:
 # --------------------------------------------------------------------------
 
 
+def verdicts_read_values(x: Mapping[str, Any], spring: Spring) -> bool:
+    """Whether :func:`verdicts` reads an as-built value besides the self-locking margin:
+    the largest stress (a permissible stress known), the travel (a disc stack, a free
+    length given) or the residual torque (a face friction given)."""
+    return (
+        spring.kind == "disc"
+        or x["spring_free_length"] is not None
+        or x["face_friction"] is not None
+        or spring.permissible() is not None
+    )
+
+
 def verdicts(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> dict[str, Any]:
     """The as-built checks' verdicts on floats or arrays: True where a check passes.
 
@@ -955,14 +967,15 @@ def verdicts(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> dict
     allow = spring.permissible()
     if allow is not None:
         out["spring_stress_max"] = v["spring_stress_max"] <= allow
-    travel = x["spring_deflection"] + v["total_lift"]
     if spring.kind == "disc":
+        travel = x["spring_deflection"] + v["total_lift"]
         m = x["disc_series"]
         out["disc_not_past_flat"] = travel / m <= x["disc_cone_height"]
         s_max = sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])[0]
         # NaN (no force maximum) compares False: the torque never falls
         out["falling_curve"] = x["spring_deflection"] / m + v["total_lift"] / m > s_max
     elif x["spring_free_length"] is not None:
+        travel = x["spring_deflection"] + v["total_lift"]
         d, dm, n = x["spring_wire_diameter"], x["spring_mean_diameter"], x["spring_active_coils"]
         need = sp.solid_length(d, n) + sp.minimum_gap_sum(d, dm, n)
         out["solid_length"] = x["spring_free_length"] - travel >= need
@@ -1292,6 +1305,18 @@ def bracketed_roots(
     return root
 
 
+#: Inputs that set only a setting's target torque, not the characteristic it is found on.
+_TARGET_INPUTS = (
+    "target_torque",
+    "drive_torque",
+    "drive_power",
+    "drive_speed",
+    "service_factor",
+    "drive_start_torque",
+    "drive_inertia",
+    "load_inertia",
+)
+
 #: Designs whose grid of settings is evaluated at once, :data:`_GRID_BLOCK` settings at a
 #: time (81 values each): a design whose target is reached early is not evaluated further.
 _GRID_DESIGNS = 1024
@@ -1313,34 +1338,68 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
     aims = np.array(np.broadcast_to(np.asarray(target, dtype=float), (n,)))
     tops = np.array(np.broadcast_to(np.asarray(upper, dtype=float), (n,)))
     varied = bool(_arrays(x))
+    # the inputs that set only the target (a swept target torque or drive) leave the
+    # characteristic the same at every point: its peaks on the grid are found once
+    design = {k: v for k, v in x.items() if k not in _TARGET_INPUTS}
+    shared = not _arrays(design) and np.ndim(upper) == 0
 
     def excess(delta: Any, lanes: Any) -> Any:
-        part = points.take(x, n, lanes) if varied else x
+        part = design if shared else points.take(x, n, lanes) if varied else x
         peak = characteristic(part, Spring(part), delta, peak_only=True)["peak_torque"]
         return np.asarray(peak, dtype=float) - aims[lanes]
 
-    lo_val = excess(np.zeros(n), np.arange(n))
+    if shared:  # one peak at δ = 0 for every point
+        seated = characteristic(design, Spring(design), 0.0, peak_only=True)["peak_torque"]
+        lo_val = np.asarray(seated, dtype=float) - aims
+    else:
+        lo_val = excess(np.zeros(n), np.arange(n))
     root = np.where(lo_val == 0.0, 0.0, np.nan)
     todo = np.flatnonzero(lo_val < 0.0)
     grid = np.linspace(0.0, tops, 65, axis=-1)
     low, high = np.full(n, np.nan), np.full(n, np.nan)
+    span = np.zeros(n, dtype=np.intp)  # the grid interval of a shared grid's bracket
+    curves: _Curves | None = None
+    if shared and todo.size:
+        # the same floats as the scan below: every design's grid is this one
+        peaks = characteristic(design, Spring(design), grid[0], peak_only=True)["peak_torque"]
+        above = np.asarray(peaks, dtype=float)[None, 1:] - aims[todo, None] >= 0.0
+        reached = above.any(axis=-1)
+        i = np.argmax(above, axis=-1) + 1  # the first grid point at or past the target
+        at = todo[reached]
+        low[at], high[at] = grid[at, i[reached] - 1], grid[at, i[reached]]
+        span[at] = i[reached]
+        todo = todo[:0]
+        curves = _Curves.of(design, grid[0])
+    begin = np.ones(n, dtype=np.intp)  # the first grid point each point's scan reads
+    if todo.size:
+        # where the peak rises along the grid, its first crossing is found by bisection;
+        # the points it leaves are scanned past the part where it rises below the target
+        todo = _bisect_rising(x, n, grid, todo, excess, low, high, begin)
+    block = np.arange(_GRID_BLOCK)
     for first in range(0, todo.size, _GRID_DESIGNS):
         lanes = todo[first : first + _GRID_DESIGNS]
         # the grid a block of settings at a time, each design until it crosses the target
-        for start in range(1, 65, _GRID_BLOCK):
-            width = min(_GRID_BLOCK, 65 - start)
-            settings = grid[lanes, start : start + width]
-            peaks = excess(settings.ravel(), np.repeat(lanes, width)).reshape(-1, width)
-            above = peaks >= 0.0
+        while lanes.size:
+            index = begin[lanes, None] + block
+            on = index <= 64
+            index = np.minimum(index, 64)
+            settings = grid[lanes[:, None], index]
+            peaks = excess(settings.ravel(), np.repeat(lanes, _GRID_BLOCK))
+            above = (peaks.reshape(-1, _GRID_BLOCK) >= 0.0) & on
             reached = above.any(axis=-1)
-            i = np.argmax(above, axis=-1) + start  # the first grid point at or past it
+            i = np.argmax(above, axis=-1) + begin[lanes]  # the first grid point at or past it
             at = lanes[reached]
             low[at], high[at] = grid[at, i[reached] - 1], grid[at, i[reached]]
-            lanes = lanes[~reached]
-            if not lanes.size:
-                break
+            begin[lanes] += _GRID_BLOCK
+            lanes = lanes[~reached & (begin[lanes] <= 64)]
     bracketed = np.flatnonzero(np.isfinite(low))
     if bracketed.size:
+        if curves is not None:
+            shape = curves  # the peak over the lift points that can hold it in the bracket
+
+            def excess(delta: Any, lanes: Any) -> Any:
+                return shape.peak(delta, span[lanes]) - aims[lanes]
+
         root[bracketed] = bracketed_roots(
             lambda delta, lanes: excess(delta, bracketed[lanes]),
             low[bracketed],
@@ -1349,6 +1408,165 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
             rtol=1e-12,
         )
     return root if varied or np.ndim(target) or np.ndim(upper) else float(root[0])
+
+
+class _Curves:
+    """One disc-stack design's characteristic as 81 curves T_k(δ) of the nut setting δ.
+
+    With the ball at lift point k (``ball_lift`` given, so the lift points do not move
+    with δ) the torque is T_k(δ) = s D0 F((δ + z_k)/i)/(2 p(β_k)), and the peak torque
+    is max_k T_k(δ) (:func:`characteristic`). Between two settings of the root search's
+    grid, a curve can hold the peak only if its largest value there reaches the
+    largest of every curve's smallest: its values at the interval's ends, and at the
+    disc force's extrema inside it (:func:`springs.disc_falling_region`), bound it. The
+    peak over those curves alone is the same float as over all 81 (the maximum of a
+    set that holds it); the bounds carry a slack of 1e-9 of the largest torque.
+    """
+
+    #: Relative slack on the bounds (rounding is ~1e-16 of a torque).
+    SLACK = 1e-9
+
+    def __init__(self, x: Mapping[str, Any], lift: Any, beta: Any, candidates: Any) -> None:
+        self.x, self.spring = x, Spring(x)
+        self.lift, self.beta, self.candidates = lift, beta, candidates
+
+    @classmethod
+    def of(cls, x: Mapping[str, Any], grid: Any) -> _Curves | None:
+        """The curves of a disc stack ``x`` on the settings ``grid``; None where the lift
+        points move with the setting (``ball_lift`` absent), a torque is not finite, or
+        the spring is helical (whose setting :class:`SettingGrid` solves)."""
+        if x["ball_lift"] is None or x["spring_type"] != "disc":
+            return None
+        lift, beta = lift_points(x["ball_lift"], x["ball_diameter"], _ride(x), POINTS)
+        curves = cls(x, lift, beta, np.arange(lift.size))
+        bounds = curves.bounds(np.asarray(grid, dtype=float))
+        if bounds is None:
+            return None
+        upper, lower, ends = bounds
+        slack = cls.SLACK * float(np.max(np.abs(ends)))
+        holds = upper + slack >= np.max(lower, axis=-1, keepdims=True) - slack
+        # per interval the curves that may hold the peak, padded with the first of them
+        width = int(np.max(np.count_nonzero(holds, axis=-1)))
+        order = np.argsort(~holds, axis=-1, kind="stable")[:, :width]
+        first = order[:, :1]
+        count = np.count_nonzero(holds, axis=-1)[:, None]
+        padded = np.where(np.arange(width) < count, order, first)
+        # row j of ``candidates`` is the interval ending at grid point j (row 0 unused)
+        candidates = np.concatenate([padded[:1], padded])
+        return cls(x, lift, beta, candidates)
+
+    def bounds(self, grid: Any) -> tuple[Any, Any, Any] | None:
+        """(largest, smallest) of every curve in every interval of ``grid`` (interval j
+        between settings j and j + 1, a row each), and the curves at the settings; None
+        where a torque is not finite. Each curve is the disc force of a setting that
+        rises with δ, times a constant: its extremes lie at the ends or at the force's
+        extrema inside (none where the force rises everywhere)."""
+        x, every = self.x, np.arange(self.lift.size)
+        ends = self.torque(grid[:, None], every)  # (65, 81)
+        extrema = np.asarray(sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"]))
+        at = extrema[:, None] * x["disc_series"] - self.lift  # (2, 81)
+        inner = self.torque(np.where(np.isfinite(at), at, 0.0), every)
+        if not (np.all(np.isfinite(ends)) and np.all(np.isfinite(inner))):
+            return None
+        lo, hi = ends[:-1], ends[1:]
+        upper, lower = np.maximum(lo, hi), np.minimum(lo, hi)
+        for setting, value in zip(at, inner, strict=True):
+            inside = (grid[:-1, None] < setting) & (setting < grid[1:, None])
+            upper = np.where(inside, np.maximum(upper, value), upper)
+            lower = np.where(inside, np.minimum(lower, value), lower)
+        return upper, lower, ends
+
+    def torque(self, delta: Any, k: Any) -> Any:
+        """T_k(δ) as :func:`characteristic` evaluates it (the same floats)."""
+        x = self.x
+        force = self.spring.force(np.asarray(delta, dtype=float) + self.lift[k])
+        return np.asarray(
+            torque_against_lift(
+                force,
+                self.beta[k],
+                x["ball_circle_diameter"],
+                x["flank_friction"],
+                x["driving_groove_angle"],
+                _sharing(x),
+                x["flank_construction"],
+            )
+        )
+
+    def peak(self, delta: Any, span: Any) -> Any:
+        """The peak torque at settings ``delta``, each in the grid interval ending at
+        grid point ``span``."""
+        k = self.candidates[span]
+        return np.max(self.torque(np.asarray(delta, dtype=float)[:, None], k), axis=-1)
+
+
+def _bisect_rising(
+    x: Mapping[str, Any],
+    n: int,
+    grid: Any,
+    todo: Any,
+    excess: Callable[[Any, Any], Any],
+    low: Any,
+    high: Any,
+    begin: Any,
+) -> Any:
+    """The grid brackets of the points of ``todo`` whose peak torque rises along the grid.
+
+    A disc stack's force rises up to its maximum s_max (everywhere where h0/t ≤ √2,
+    :func:`springs.disc_falling_region`) and every lift point's torque with it (a
+    positive push); the peak torque then rises with the setting while the stack's
+    largest compression, at the last lift point, stays below i s_max. Over the grid
+    points up to there the first at or past the target is found by bisection (the same
+    bracket the scan finds: a rising function crosses once). Sets ``low`` and ``high``
+    where found; returns the points left for the scan (not rising, or not reached), and
+    sets ``begin`` of those not reached to the grid point past the rising part.
+    """
+    if x["spring_type"] != "disc":
+        return todo
+    part = points.take(x, n, todo) if _arrays(x) else x
+    s_max = np.asarray(sp.disc_falling_region(part["disc_thickness"], part["disc_cone_height"])[0])
+    settings = grid[todo]  # (m, 65)
+    rim = np.asarray(rim_rise(part["ball_diameter"], _ride(part)))
+    given = np.asarray(part["ball_lift"] if part["ball_lift"] is not None else settings)
+    lift = given[..., None] if part["ball_lift"] is not None else given
+    last = settings + lift + rim[..., None]  # the largest compression, at the last point
+    rising = np.where(
+        np.isnan(s_max)[..., None], True, last <= (s_max * part["disc_series"])[..., None]
+    )
+    xs = {k: (v[..., None] if isinstance(v, np.ndarray) else v) for k, v in part.items()}
+    beta = lift_points(0.0, part["ball_diameter"], _ride(part), POINTS)[1]
+    gain = np.asarray(
+        torque_against_lift(
+            1.0,
+            beta,
+            xs["ball_circle_diameter"],
+            xs["flank_friction"],
+            xs["driving_groove_angle"],
+            _sharing(xs),
+            part["flank_construction"],
+        )
+    )
+    pushing = np.all(np.isfinite(gain) & (gain > 0.0), axis=-1)
+    # the last grid point of the rising prefix (0: none), per point
+    top = np.broadcast_to(
+        np.where(pushing, np.sum(np.cumprod(rising, axis=-1), -1) - 1, 0), todo.shape
+    )
+    ask = np.flatnonzero(top > 0)
+    lanes = todo[ask]
+    lo, hi = np.zeros(ask.size, dtype=np.intp), top[ask]
+    reached = excess(grid[lanes, hi], lanes) >= 0.0
+    begin[lanes[~reached]] = hi[~reached] + 1  # below the target up to there
+    lanes, lo, hi = lanes[reached], lo[reached], hi[reached]
+    while lanes.size:
+        more = hi - lo > 1
+        if not more.any():
+            break
+        mid = (lo + hi) // 2
+        at = np.flatnonzero(more)
+        up = excess(grid[lanes[at], mid[at]], lanes[at]) >= 0.0
+        hi[at] = np.where(up, mid[at], hi[at])
+        lo[at] = np.where(up, lo[at], mid[at])
+    low[lanes], high[lanes] = grid[lanes, lo], grid[lanes, hi]
+    return np.setdiff1d(todo, lanes, assume_unique=True)
 
 
 def solve_setting(
@@ -1368,6 +1586,19 @@ Candidate = Callable[[float], Mapping[str, Any]]
 # --------------------------------------------------------------------------
 # The inverse on the as-built inputs (clutch.ball_setting)
 # --------------------------------------------------------------------------
+
+
+def _disc_stack_end(x: Mapping[str, Any], spring: Spring, deflection: Any) -> tuple[Any, Any]:
+    """(total lift, largest |σ_OM| over the lift) of a disc stack set at ``deflection``.
+
+    |σ_OM| grows with the deflection (DIN EN 16983: σ_OM ∝ s) and the lift rises along
+    the grid, so the largest is at the last point (riding on the face): the same floats
+    :func:`characteristic` takes as its ``total_lift`` and ``spring_stress_max``,
+    without the 81-point curve.
+    """
+    lift, _ = lift_points(lift_of(x, deflection), x["ball_diameter"], _ride(x), POINTS, True)
+    total_lift = lift[..., -1]
+    return total_lift, spring.stress(np.asarray(deflection, dtype=float) + total_lift)
 
 
 def setting_outputs() -> tuple[Output, ...]:
@@ -1455,14 +1686,14 @@ def peak_setting(
         if np.ndim(root) == 0:  # one design
             if math.isnan(root):
                 return math.nan, math.nan
-            c = characteristic(x, spring, root)
-            if (root + float(c["total_lift"])) / x["disc_series"] > x["disc_cone_height"]:
+            total_lift, stress_max = _disc_stack_end(x, spring, root)
+            if (root + float(total_lift)) / x["disc_series"] > x["disc_cone_height"]:
                 return math.nan, math.nan  # reached only past flat
-            return root, float(c["spring_stress_max"])
-        c = characteristic(x, spring, np.where(np.isnan(root), 0.0, root))
-        past = (root + c["total_lift"]) / x["disc_series"] > x["disc_cone_height"]
+            return root, float(stress_max)
+        total_lift, stress_max = _disc_stack_end(x, spring, np.where(np.isnan(root), 0.0, root))
+        past = (root + total_lift) / x["disc_series"] > x["disc_cone_height"]
         none = np.isnan(root) | past  # none reaches it, or only past flat
-        return np.where(none, np.nan, root), np.where(none, np.nan, c["spring_stress_max"])
+        return np.where(none, np.nan, root), np.where(none, np.nan, stress_max)
     grid = SettingGrid(x) if grid is None else grid
     rate = np.asarray(spring.force(1.0), float)
     upper = np.maximum(np.asarray(force) / rate, 1e-9) * 1.000001

@@ -268,6 +268,69 @@ def test_a_study_asking_no_peak_output_skips_the_curve_with_the_same_verdicts():
     assert "peak_torque" not in got.values  # left out for speed, not declared absent
 
 
+@pytest.mark.parametrize(
+    ("example", "skipped", "kept"),
+    [
+        # custom wire, no allowable stress, free length or face friction: no check reads
+        # an as-built value but the self-locking margin, none the ball forces
+        (0, ("spring_stress_max", "total_lift", "ball_normal_force"), ()),
+        # a free length and a face friction: their checks read the travel and the peak
+        (3, ("ball_axial_force",), ("total_lift", "residual_torque", "peak_torque")),
+    ],
+)
+def test_a_ball_study_asking_the_paper_outputs_skips_what_no_check_reads(example, skipped, kept):
+    spec = BALL_CLUTCH
+    base = dict(spec.examples[example])
+    cols = _spread(spec, base, 60, 0.3, seed=9)
+    outs = ["spring_force", "torque_limit"]
+    fast = evaluate_chunk(spec, base, cols, outs, fidelity="closed_form")
+    slow = evaluate_chunk(_loop(spec), base, cols, outs, fidelity="closed_form")
+    for name in outs:
+        np.testing.assert_array_equal(fast.values[name], slow.values[name], err_msg=name)
+    assert sorted(fast.checks) == sorted(slow.checks)
+    for name, verdicts in slow.checks.items():
+        np.testing.assert_array_equal(fast.checks[name], verdicts, err_msg=name)
+    ctx = RunContext("closed_form", frozenset(outs), 0.01)
+    x, _ = spec.validate(base)
+    got = spec.vectorized({**x, **cols}, ctx).values
+    for name in skipped:  # left out for speed
+        assert got.get(name) is None, name
+    for name in kept:
+        assert np.isfinite(got[name]).any(), name
+
+
+@pytest.mark.parametrize(
+    ("example", "extra", "skipped"),
+    [
+        # no allowable stress, custom wire: no check reads the stresses or the setting
+        (0, {}, ("required_peak_setting", "spring_shear_stress", "required_wire_shear_stress")),
+        # an allowable stress: its checks read the stresses and the peak setting's
+        (0, {"allowable_shear_stress": 3e8}, ()),
+    ],
+)
+def test_a_setting_study_asking_the_paper_outputs_skips_what_no_check_reads(
+    example, extra, skipped
+):
+    spec = BALL_CLUTCH_SETTING
+    base = {**spec.examples[example], **extra}
+    cols = _spread(spec, base, 60, 0.3, seed=5)
+    outs = ["required_spring_force", "required_deflection"]
+    fast = evaluate_chunk(spec, base, cols, outs, fidelity="closed_form")
+    slow = evaluate_chunk(_loop(spec), base, cols, outs, fidelity="closed_form")
+    for name in outs:
+        np.testing.assert_array_equal(fast.values[name], slow.values[name], err_msg=name)
+    assert sorted(fast.checks) == sorted(slow.checks)
+    for name, verdicts in slow.checks.items():
+        np.testing.assert_array_equal(fast.checks[name], verdicts, err_msg=name)
+    ctx = RunContext("closed_form", frozenset(outs), 0.01)
+    x, _ = spec.validate(base)
+    got = spec.vectorized({**x, **cols}, ctx).values
+    for name in skipped:  # left out for speed (declared absent only as unasked)
+        assert got.get(name) is None, name
+    if not skipped:
+        assert np.isfinite(got["peak_setting_stress_max"]).any()
+
+
 def test_rung_estimate_takes_arrays():
     x, _ = BALL_CLUTCH.validate(BALL_CLUTCH.examples[0])
     alpha = np.linspace(1 * DEG, 89 * DEG, 89)

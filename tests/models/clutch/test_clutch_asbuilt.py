@@ -575,3 +575,100 @@ def test_disc_stack_setting_on_the_array_path_equals_single_runs():
         for name in ("required_peak_setting", "required_deflection", "suggested_disc_setting"):
             found = [v is not None for v in s[name]]
             assert any(found) and not all(found), (changes, name)  # reached, and not
+
+
+def test_a_setting_search_over_targets_alone_scans_the_shared_grid_once_to_the_same_roots():
+    # a varied target leaves the characteristic the same at every point (one grid scan
+    # for all); a varied geometry bisects each point's own grid where its peak rises and
+    # scans on from there: the same roots to the last bit where the geometry varies in
+    # name only, and the same nulls, for rising, falling and past-flat negative discs
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    rng = np.random.default_rng(5)
+    cases = [(r, lift) for r in (1.0, 1.2, 1.6, 2.0, 2.2, 3.0) for lift in (0.0004, None)]
+    for ratio, lift in cases:
+        design = {**DISC, "disc_cone_height": ratio * DISC["disc_thickness"], "ball_lift": lift}
+        x, _ = BALL_CLUTCH.validate(design)
+        upper = float(x["disc_series"] * x["disc_cone_height"])
+        top = float(asbuilt.characteristic(x, asbuilt.Spring(x), upper)["peak_torque"])
+        targets = rng.uniform(0.05, 1.3, 40) * top
+        shared = asbuilt.setting_roots({**x, "target_torque": targets}, targets, upper)
+        thickness = np.full(40, x["disc_thickness"])  # varied in name: each point scanned
+        scanned = asbuilt.setting_roots(
+            {**x, "target_torque": targets, "disc_thickness": thickness}, targets, upper
+        )
+        np.testing.assert_array_equal(shared, scanned)
+        assert np.isfinite(shared).sum() >= 10 and np.isnan(shared).sum() >= 2, ratio
+
+
+def test_a_disc_stacks_end_values_are_the_characteristics():
+    # |σ_OM| grows with the deflection and the lift along the grid: its largest value
+    # over the 81 points is the last point's, the same float
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    for lift in (0.0004, None):
+        x, _ = BALL_CLUTCH.validate({**DISC, "ball_lift": lift})
+        spring = asbuilt.Spring(x)
+        settings = np.linspace(0.0, 0.004, 17)
+        c = asbuilt.characteristic({**x, "spring_deflection": settings}, spring, settings)
+        total_lift, stress = asbuilt._disc_stack_end(x, spring, settings)
+        np.testing.assert_array_equal(total_lift, c["total_lift"])
+        np.testing.assert_array_equal(stress, c["spring_stress_max"])
+
+
+@pytest.mark.parametrize("ratio", [1.0, 1.6, 2.2, 3.0])
+@pytest.mark.parametrize("size", [65, 3])
+def test_the_peak_over_the_curves_that_can_hold_it_is_the_peak_over_all(ratio, size):
+    # rising, flattening, falling and past-flat negative discs: at settings across
+    # every interval of the search's grid (its ends and its force extrema included),
+    # the peak over the few curves the bounds keep is the 81-point peak, to the last bit;
+    # on a coarse grid (3 settings) a curve's peak inside an interval must be bounded too
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    design = {**DISC, "disc_cone_height": ratio * DISC["disc_thickness"], "ball_lift": 0.0004}
+    x, _ = BALL_CLUTCH.validate(design)
+    spring = asbuilt.Spring(x)
+    grid = np.linspace(0.0, x["disc_series"] * x["disc_cone_height"], size)
+    curves = asbuilt._Curves.of(x, grid)
+    assert curves is not None
+    if size == 65:
+        assert curves.candidates.shape[1] < 41  # the bounds leave out most curves
+    rng = np.random.default_rng(int(ratio * 10))
+    span = np.repeat(np.arange(1, size), 400 // size)
+    settings = grid[span - 1] + rng.uniform(0.0, 1.0, span.size) * (grid[span] - grid[span - 1])
+    extrema = np.asarray(sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"]))
+    settings[: size - 1] = grid[1:]  # the grid points themselves
+    span[: size - 1] = np.arange(1, size)
+    for s_at in extrema[np.isfinite(extrema)] * x["disc_series"]:
+        near = np.clip(np.searchsorted(grid, s_at - curves.lift), 1, size - 1)
+        settings = np.concatenate([settings, s_at - curves.lift])
+        span = np.concatenate([span, near])
+    inside = (settings >= 0.0) & (settings <= grid[-1])
+    settings, span = settings[inside], span[inside]
+    want = asbuilt.characteristic(x, spring, settings, peak_only=True)["peak_torque"]
+    np.testing.assert_array_equal(curves.peak(settings, span), want)
+
+
+@pytest.mark.parametrize("ratio", [1.0, 2.2, 3.0])
+def test_every_curve_stays_within_its_bounds_in_every_interval(ratio):
+    # dense settings inside each interval of the grid: no curve leaves the bounds that
+    # choose which curves can hold the peak (its force extremum inside included)
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    design = {**DISC, "disc_cone_height": ratio * DISC["disc_thickness"], "ball_lift": 0.0004}
+    x, _ = BALL_CLUTCH.validate(design)
+    grid = np.linspace(0.0, x["disc_series"] * x["disc_cone_height"], 65)
+    curves = asbuilt._Curves.of(x, grid)
+    assert curves is not None
+    upper, lower, _ = curves.bounds(grid)
+    every = np.arange(curves.lift.size)
+    tiny = 1e-12 * float(np.max(np.abs(upper)))
+    inside_max = 0
+    for j in range(64):
+        settings = np.linspace(grid[j], grid[j + 1], 101)[:, None]
+        torque = curves.torque(settings, every)
+        assert np.all(torque <= upper[j] + tiny), j
+        assert np.all(torque >= lower[j] - tiny), j
+        inside_max += int(np.sum(np.max(torque[1:-1], axis=0) > np.maximum(torque[0], torque[-1])))
+    if ratio > 2.0:
+        assert inside_max > 0  # some curve peaks inside an interval: the ends alone miss it
