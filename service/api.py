@@ -24,6 +24,7 @@ from fastapi.exceptions import RequestValidationError
 from fastapi.responses import Response
 from fastapi.routing import APIRoute
 from pydantic import BaseModel, ValidationError
+from starlette.requests import ClientDisconnect
 from starlette.routing import request_response
 
 import engine
@@ -180,12 +181,38 @@ def _encoder(spec: ModelSpec) -> Any:
     return encode
 
 
+async def _body(request: Request) -> bytes:
+    """The request body, as :meth:`starlette.requests.Request.body` reads it (the same
+    messages taken, :class:`ClientDisconnect` on a disconnect, the request marked read
+    as it marks it), without its async generator and its closing context: a body of
+    one message, every API request's, is one ``receive``."""
+    receive = request.receive
+    message = await receive()
+    if message["type"] == "http.request" and not message.get("more_body", False):
+        raw = message.get("body", b"")  # the whole body at once
+    else:
+        chunks: list[bytes] = []
+        while True:
+            if message["type"] == "http.request":
+                chunks.append(message.get("body", b""))
+                if not message.get("more_body", False):
+                    break
+            elif message["type"] == "http.disconnect":
+                request._is_disconnected = True
+                raise ClientDisconnect()
+            message = await receive()
+        raw = b"".join(chunks)
+    request._stream_consumed = True
+    request._body = raw
+    return raw
+
+
 async def _json(request: Request) -> Any:
     """The request body parsed as FastAPI's own body handling parses it (the same JSON
     parser, the same errors and their ``loc``), without its dependency machinery (~30 µs a
     request). The error handlers in :mod:`service.errors` turn what this raises
     into the same 400/422 answers."""
-    raw = await request.body()  # BodyGuard has checked the content type and the size
+    raw = await _body(request)  # BodyGuard has checked the content type and the size
     if not raw:
         raise RequestValidationError(
             [{"type": "missing", "loc": ("body",), "msg": "Field required", "input": None}]

@@ -1,0 +1,40 @@
+"""The in-process request bench measures with the access log on, as the service writes it."""
+
+from __future__ import annotations
+
+import json
+import logging
+import os
+
+from service.middleware import _access_line
+
+
+def test_the_bench_writes_access_lines_and_puts_the_logger_back() -> None:
+    from bench.extra_service import access_log_on
+
+    logger = logging.getLogger("service.access")
+    before = (logger.handlers[:], logger.level, logger.propagate)
+    with access_log_on():
+        (handler,) = logger.handlers
+        assert isinstance(handler, logging.StreamHandler)
+        assert handler.stream.name == os.devnull and not logger.propagate
+        assert logger.isEnabledFor(logging.INFO)  # the line is made and written
+        assert handler.format(logger.makeRecord("service.access", 20, "f", 1, "L", (), None)) == "L"
+    assert (logger.handlers, logger.level, logger.propagate) == before
+
+
+def test_the_access_line_is_json_dumps_of_its_fields_for_any_path() -> None:
+    for path in ("/api/v1/joint/vdi2230", '/a"b\\c', "/é/\u2028/\x00", "/\ud800"):
+        for method, status, seconds in (
+            ("POST", 200, 1.25e-4),
+            ("GET", 404, 12.0),
+            (None, 500, 0.0),
+        ):
+            fields = {
+                "method": method,
+                "path": path,
+                "status": status,
+                "duration_ms": round(seconds * 1e3, 3),
+                "request_id": "0123abcd._-",
+            }
+            assert _access_line(method, path, status, seconds, "0123abcd._-") == json.dumps(fields)
