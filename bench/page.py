@@ -98,7 +98,7 @@ TARGETS: tuple[Target, ...] = (
         "simulation study, 2 local workers / 1", "≥ ×1.8", _source("extra_study.py", "2 worker")
     ),
     Target(
-        "closed-form request in process / the same-body FastAPI floor",
+        "service's share of a closed-form request (request − `engine.run`, access log on) / the same-body FastAPI floor",
         "≤ ×1.3",
         _source("extra_service.py", "request / bare FastAPI"),
     ),
