@@ -14,10 +14,11 @@ share of the whole study (:func:`engine.studies.execute.run_study`) spent beyond
 the points and evaluating the model with each chunk let go at once: the partial
 summaries, the merge, the summary and the first touch of the memory that keeps the raw
 values (target ≤ 30 %); and the phases timed apart: points drawn
-(:func:`engine.studies.plan.plan`), evaluation (chunks let go, and chunks kept), the
-chunks' partial summaries (:func:`engine.studies.plan.summarize_chunk`, made where a
-chunk runs), merge (the chunks kept in the study's columns, each output counted in fine
-bins, the partials combined), quantiles and histograms (exact, from the few fine bins
+(:func:`engine.studies.plan.plan`), evaluation (chunks let go; and as the study runs it,
+each chunk merged before the next), the chunks' partial summaries
+(:func:`engine.studies.plan.summarize_chunk`, made where a chunk runs), merge (each
+chunk written into the study's whole columns, each output counted in fine bins, the
+partials combined), quantiles and histograms (exact, from the few fine bins
 that hold them), rank correlations. Then the peak resident memory above the idle process
 against the bytes of the raw values the study keeps (inputs drawn, output chunks not of
 one number), in a fresh process (target ≤ ×1.5).
@@ -57,13 +58,13 @@ from engine.studies.plan import (
     QUANTILES,
     RANK_POINTS,
     Columns,
+    Merger,
     Plan,
     Study,
     Variable,
     _stats,
     chunks,
     evaluate_chunk,
-    merge,
     plan,
     rank_correlations,
     summarize,
@@ -126,9 +127,9 @@ def split(spec: engine.ModelSpec, study: Study) -> dict[str, float]:
 
     ``evaluate`` is the model's evaluation of every chunk with each chunk let go at once
     (the physics and nothing kept); ``bookkeeping`` is the rest of the whole study
-    beyond the drawing and that evaluation: the partial summaries, the merge, the summary
-    and the first touch of the memory that keeps the raw values. The phases after
-    ``evaluate`` are timed apart on chunks kept for them."""
+    beyond the drawing and that evaluation: the partial summaries, the merge (the first
+    touch of the memory that keeps the raw values included), the summary. The phases
+    after ``evaluate`` are timed apart in a study run as :func:`run_study` runs it."""
     t_plan, p = _clock(lambda: plan(spec, study))
     base = {k: v for k, v in study.base.items() if v is not None}
     slices = chunks(p.n_points, chunk_size(spec, study))
@@ -142,7 +143,7 @@ def split(spec: engine.ModelSpec, study: Study) -> dict[str, float]:
             evaluate_chunk(*args)
 
     t_eval, _ = _clock(physics)
-    phases = _phases(spec, study, p, calls)  # its chunks let go before the whole study
+    phases = _phases(spec, study, p, slices, calls)  # let go before the whole study
     t_whole, _ = _clock(lambda: run_study(spec, study))
     return {
         "plan": t_plan,
@@ -154,12 +155,30 @@ def split(spec: engine.ModelSpec, study: Study) -> dict[str, float]:
 
 
 def _phases(
-    spec: engine.ModelSpec, study: Study, p: Plan, calls: list[ChunkArgs]
+    spec: engine.ModelSpec,
+    study: Study,
+    p: Plan,
+    slices: list[tuple[int, int]],
+    calls: list[ChunkArgs],
 ) -> dict[str, float]:
-    """The phases after the evaluation, timed apart on chunks kept for them."""
-    t_kept, parts = _clock(lambda: [evaluate_chunk(*args) for args in calls])
-    t_partial, parts = _clock(lambda: [summarize_chunk(part) for part in parts])
-    t_merge, merged = _clock(lambda: merge(parts, p.outputs))
+    """The phases after the evaluation, each chunk evaluated, summarised and merged in
+    turn as :func:`run_study` does (``evaluate_merged``: the evaluation there, with the
+    memory the study keeps), then the summary's parts timed apart."""
+    t_kept = t_partial = t_add = 0.0
+    merger = Merger(p.n_points, p.outputs)
+    for (a, _), args in zip(slices, calls, strict=True):
+        t0 = time.process_time()
+        part = evaluate_chunk(*args)
+        t1 = time.process_time()
+        summarize_chunk(part)
+        t2 = time.process_time()
+        merger.add(a, part)
+        t_kept, t_partial, t_add = (
+            t_kept + t1 - t0,
+            t_partial + t2 - t1,
+            t_add + time.process_time() - t2,
+        )
+    t_result, merged = _clock(merger.result)
     partial = merged.summary
     assert partial is not None
     values = merged.values
@@ -175,9 +194,9 @@ def _phases(
     )
     t_summary, _ = _clock(lambda: summarize(spec, study, p, merged))
     return {
-        "evaluate_kept": t_kept,
+        "evaluate_merged": t_kept,
         "partials": t_partial,
-        "merge": t_merge,
+        "merge": t_add + t_result,
         "quantiles": t_quant,
         "ranks": t_rank,
         "summary_rest": max(t_summary - t_quant - t_rank, 0.0),
@@ -299,7 +318,7 @@ def measure(n: int = POINTS, http: bool = True) -> list[dict[str, Any]]:
             for k in (
                 "plan",
                 "evaluate",
-                "evaluate_kept",
+                "evaluate_merged",
                 "partials",
                 "merge",
                 "quantiles",

@@ -837,26 +837,32 @@ def evaluate_chunk(
 
 
 class Columns(Mapping[str, np.ndarray]):
-    """A study's output columns held as its chunks gave them: no merged copy.
+    """A study's output columns, each made whole once, as the chunks arrive.
 
-    Each chunk's array is kept as it arrived (a view of a larger array is copied, so
-    a kept chunk holds its own values alone), and a chunk whose values are all one
-    number, to the last bit, is kept as that number (a read-only broadcast view, no
-    memory): a study's outputs that the varied inputs do not move hold nothing. A column
-    is made whole only when it is asked for by name (``columns[name]``, a new array each
-    time: sensitivity indices, grid maps, a feasibility output); the summary reads the
-    pieces (:meth:`pieces`) and the first points (:meth:`head`) and copies nothing.
+    An output whose chunks are all one number, each to the last bit, holds those numbers
+    alone (read-only broadcast views, no memory): a study's outputs that the varied
+    inputs do not move hold nothing. The first chunk of an output that moves gets its
+    whole column (one array of the study's length; the chunks put before it written
+    in), and every chunk is then copied to its place in it: the chunk's own arrays are let
+    go, so the next chunk's evaluation reuses their memory, and the study's values are
+    first touched once, in large arrays, not chunk by chunk in fresh small ones (a cost
+    that was larger than the merge). The summary reads the pieces (:meth:`pieces`) and the
+    first points (:meth:`head`), copying nothing; ``columns[name]`` is a new array.
 
-    >>> c = Columns(5, ("y",))
+    >>> c = Columns(5, ("y", "k"))
     >>> c.put("y", 3, np.array([7.0, 7.0]))
+    >>> c.put("k", 0, np.full(3, 2.0)); c.put("k", 3, np.full(2, 2.0))
+    >>> c.nbytes
+    0
     >>> c.put("y", 0, np.array([1.0, 2.0, 3.0]))
-    >>> c["y"].tolist(), c.head("y", 4).tolist(), c.nbytes
-    ([1.0, 2.0, 3.0, 7.0, 7.0], [1.0, 2.0, 3.0, 7.0], 24)
+    >>> c["y"].tolist(), c.head("y", 4).tolist(), c["k"].tolist(), c.nbytes
+    ([1.0, 2.0, 3.0, 7.0, 7.0], [1.0, 2.0, 3.0, 7.0], [2.0, 2.0, 2.0, 2.0, 2.0], 40)
     """
 
     def __init__(self, n_points: int, names: Sequence[str]) -> None:
         self.n_points = n_points
         self._pieces: dict[str, dict[int, np.ndarray]] = {name: {} for name in names}
+        self._whole: dict[str, np.ndarray] = {}
 
     def put(self, name: str, start: int, y: np.ndarray, maybe_one: bool = True) -> None:
         """Keep ``y``, the values of points ``start`` onward of output ``name``.
@@ -864,20 +870,33 @@ class Columns(Mapping[str, np.ndarray]):
         ``maybe_one`` False: the caller knows the values are not all one number (their
         extremes differ), and they are not compared."""
         y = np.asarray(y, dtype=float)
-        one = _one_number(y) if maybe_one else None
-        if one is not None:
-            y = one  # one number, to the bit: no memory
-        elif getattr(y.base, "nbytes", 0) > y.nbytes and not _is_one_number(y):
-            y = y.copy()  # a view: not the larger array behind it
-        self._pieces[name][start] = y
+        whole = self._whole.get(name)
+        if whole is None:
+            one = _one_number(y) if maybe_one else None
+            if one is not None:
+                self._pieces[name][start] = one  # one number, to the bit: no memory
+                return
+            whole = self._whole[name] = np.empty(self.n_points)
+            for a, piece in self._pieces[name].items():
+                whole[a : a + piece.size] = piece
+            self._pieces[name] = {}
+        whole[start : start + y.size] = y
 
     def pieces(self, name: str) -> list[np.ndarray]:
-        """The column's pieces in the points' order (every chunk put)."""
+        """The column's pieces in the points' order (every chunk put): its whole array
+        where it has one."""
+        whole = self._whole.get(name)
+        if whole is not None:
+            return [whole]
         got = self._pieces[name]
         return [got[a] for a in sorted(got)]
 
     def head(self, name: str, m: int) -> np.ndarray:
-        """The column's first ``m`` values (fewer if it is shorter), copying only those."""
+        """The column's first ``m`` values (fewer if it is shorter): a view where the
+        column is whole, else only those copied."""
+        whole = self._whole.get(name)
+        if whole is not None:
+            return whole[:m]
         out, size = [], 0
         for piece in self.pieces(name):
             if size >= m:
@@ -887,13 +906,16 @@ class Columns(Mapping[str, np.ndarray]):
         return np.concatenate(out) if out else np.empty(0)
 
     def rows(self, name: str, a: int, b: int) -> np.ndarray:
-        """The column's values of points ``a`` to ``b`` (excluded), copying only those.
+        """The column's values of points ``a`` to ``b`` (excluded).
 
         >>> c = Columns(5, ("y",))
         >>> c.put("y", 0, np.arange(3.0)); c.put("y", 3, np.arange(3.0, 5.0))
         >>> c.rows("y", 2, 4).tolist()
         [2.0, 3.0]
         """
+        whole = self._whole.get(name)
+        if whole is not None:
+            return whole[a:b]
         got = self._pieces[name]
         out = []
         for start in sorted(got):
@@ -905,14 +927,12 @@ class Columns(Mapping[str, np.ndarray]):
 
     @property
     def nbytes(self) -> int:
-        """The bytes the kept values take (a one-number chunk takes none)."""
-        return sum(
-            y.nbytes for got in self._pieces.values() for y in got.values() if y.strides != (0,)
-        )
+        """The bytes the kept values take (the whole columns; one-number chunks none)."""
+        return sum(y.nbytes for y in self._whole.values())
 
     def __getitem__(self, name: str) -> np.ndarray:
         pieces = self.pieces(name)
-        return np.concatenate(pieces) if pieces else np.empty(0)
+        return np.concatenate(pieces) if pieces else np.empty(0)  # a new array
 
     def __iter__(self) -> Iterator[str]:
         return iter(self._pieces)
@@ -924,10 +944,9 @@ class Columns(Mapping[str, np.ndarray]):
 class Merger:
     """Chunk results gathered, as they arrive, into the study's :class:`Columns`.
 
-    A chunk's arrays are kept as they are (a chunk of one number as that number), so a
-    study holds its raw values once and copies none of them: a merged copy of every
-    column cost more than the model's evaluation (the first touch of its fresh pages).
-    Checks keep the order
+    Each chunk is written into the study's whole columns as it arrives (a chunk of one
+    number kept as that number, :class:`Columns`), so a study holds its raw values once,
+    and the chunk's arrays are let go before the next is evaluated. Checks keep the order
     :func:`merge` gives them (first reported in the earliest chunk first), whatever the
     order the chunks arrive in.
 
@@ -1094,12 +1113,14 @@ class Moments:
         lo, hi = int(finite.argmin()), int(finite.argmax())
         places = [lo, hi] if every else np.flatnonzero(ok)[[lo, hi]].tolist()
         if finite[lo] == finite[hi]:  # one value: its mean, no spread (not their rounding)
-            mean, m2 = float(finite[lo]), 0.0
+            mean, m2, residual = float(finite[lo]), 0.0, 0.0
         else:
             mean = float(finite.mean())
-            deviation = finite - mean
-            m2 = float(np.add.reduce(deviation * deviation))
-        residual = float(deviation.mean()) if finite[lo] != finite[hi] else 0.0
+            work = _work(finite.size)[0] if finite.size <= 2 * BLOCK else None
+            deviation = np.subtract(finite, mean, out=work)
+            residual = float(deviation.mean())
+            np.multiply(deviation, deviation, out=deviation)  # in place: one array, not two
+            m2 = float(np.add.reduce(deviation))
         return Moments(
             count=int(finite.size),
             mean=mean,
@@ -1259,16 +1280,30 @@ class FineCounts:
         self.scale = scale if self.active else 0.0
         self.counts = np.zeros(FINE_BINS + 2, dtype=np.int64)
 
-    def bins(self, y: np.ndarray) -> np.ndarray:
-        """Each finite value's bin, 0 (below the range) … FINE_BINS + 1 (above it)."""
-        f = (y - self.low) * self.scale
+    def bins(self, y: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
+        """Each finite value's bin, 0 (below the range) … FINE_BINS + 1 (above it).
+
+        ``out`` (:func:`_work`'s, as long as ``y``) takes the bins, and the arithmetic is
+        done in it in place: a chunk's fresh temporaries cost their pages' first touch,
+        more than the arithmetic does."""
+        f = (
+            np.subtract(y, self.low)
+            if out is None
+            else np.subtract(y, self.low, out=_work(y.size)[0])
+        )
+        np.multiply(f, self.scale, out=f)
         np.clip(f, -1.0, float(FINE_BINS), out=f)
-        return f.astype(np.intp) + 1
+        labels = np.empty(f.shape, dtype=np.intp) if out is None else out
+        np.copyto(labels, f, casting="unsafe")  # truncated toward zero, as astype does
+        labels += 1
+        return labels
 
     def add(self, y: np.ndarray) -> None:
         """Count a chunk's finite values ``y``."""
         if self.active:
-            self.counts += np.bincount(self.bins(y), minlength=self.counts.size)
+            for block in _blocks([y]):
+                labels = self.bins(block, _work(block.size)[1])
+                self.counts += np.bincount(labels, minlength=self.counts.size)
 
     def resolve(
         self, y: np.ndarray | Sequence[np.ndarray], ranks: np.ndarray, edges: np.ndarray
@@ -1290,7 +1325,9 @@ class FineCounts:
         wanted[rank_bins] = wanted[edge_bins] = True
         if self.counts[wanted].sum() > GATHER_SHARE * size:
             return None
-        kept = np.concatenate([block[wanted[self.bins(block)]] for block in _blocks(pieces)])
+        kept = np.concatenate(
+            [block[wanted[self.bins(block, _work(block.size)[1])]] for block in _blocks(pieces)]
+        )
         labels = self.bins(kept)
         found = np.empty(ranks.size)
         for b in np.unique(rank_bins).tolist():
@@ -1304,6 +1341,24 @@ class FineCounts:
             ]
         )
         return found, below
+
+
+_WORK = threading.local()
+
+
+def _work(size: int) -> tuple[np.ndarray, np.ndarray]:
+    """This thread's work arrays (float, intp), ``size`` long at most :data:`BLOCK`: made
+    once and reused, so a pass over a study's columns makes no fresh large temporaries
+    (each would cost the first touch of its pages again).
+
+    >>> a, b = _work(10)
+    >>> a.size, b.dtype == np.intp, _work(10)[0].base is a.base
+    (10, True, True)
+    """
+    got = getattr(_WORK, "arrays", None)
+    if got is None or got[0].size < size:
+        got = _WORK.arrays = (np.empty(max(size, BLOCK)), np.empty(max(size, BLOCK), dtype=np.intp))
+    return got[0][:size], got[1][:size]
 
 
 def _blocks(pieces: Sequence[np.ndarray]) -> Iterator[np.ndarray]:
