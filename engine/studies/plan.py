@@ -1589,17 +1589,90 @@ def _ranks_along(y: np.ndarray, order: np.ndarray) -> np.ndarray | None:
     return ranks
 
 
+#: From this many points on, ranks are binned (:func:`_binned_ranks`) where that is
+#: accurate enough, not found by sorting.
+RANK_BINNED_POINTS = 50_000
+#: Uniform bins a column's range is cut into for its binned ranks.
+RANK_BINS = 65_536
+#: The most a binned rank correlation may differ from the exact one on the same points
+#: (half of it per column: :func:`_binned_ranks`).
+RANK_TOLERANCE = 1e-3
+
+
+def _binned_ranks(
+    x: np.ndarray, bins: int = RANK_BINS, tolerance: float = RANK_TOLERANCE
+) -> np.ndarray | None:
+    r"""Ranks of the finite values ``x`` from ``bins`` uniform bins over their range, each
+    value taking the average rank of its bin's values; None where the bins hold too many
+    values for ``tolerance`` (or the range has no width).
+
+    A bin's values, c of them above u in lower bins, take exact (average) ranks u + 1 …
+    u + c and binned rank u + (c + 1)/2: the ranks keep their mean, and the error e has
+    a sum of squares at most (c³ - c)/12 per bin, so against the exact ranks' spread
+    (n³ - n)/12
+
+    .. math::
+        \delta = \frac{\lVert e \rVert}{\lVert r - \bar r \rVert}
+        \le \sqrt{\frac{\sum_b (c_b^3 - c_b)}{n^3 - n}}
+
+    and a correlation of two columns, the cosine of the angle between their centred
+    ranks, moves by at most arcsin δ_x + arcsin δ_y. A column is binned only where
+    arcsin δ ≤ tolerance / 2, so each coefficient is within ``tolerance`` of the exact
+    one (about 1e-5 for the smooth laws of a study, each bin holding a few values). O(n),
+    against the sort's O(n log n).
+
+    By hand, x = 0, 3, 1, 4 in 4 bins over 0…4 (width 1, the top one closed): bins 0, 3,
+    1, 3; the two values of bin 3 share ranks 3 and 4: 1, 3.5, 2, 3.5, with
+    δ = √(6/60) ≈ 0.316 (arcsin 0.322: refused at a tolerance of 0.5, kept at 1).
+
+    >>> x = np.array([0.0, 3.0, 1.0, 4.0])
+    >>> _binned_ranks(x, bins=4, tolerance=0.5) is None
+    True
+    >>> _binned_ranks(x, bins=4, tolerance=1.0).tolist()
+    [1.0, 3.5, 2.0, 3.5]
+
+    Two correlated normal columns of 100,000 points: the binned coefficient against the
+    exact one (:func:`scipy.stats.rankdata`'s ranks):
+
+    >>> rng = np.random.default_rng(2)
+    >>> x = rng.standard_normal(100_000); y = x + rng.standard_normal(100_000)
+    >>> def rho(a, b): return float(np.add.reduce(_standardised(a) * _standardised(b)))
+    >>> bx, by = _binned_ranks(x), _binned_ranks(y)
+    >>> assert bx is not None and by is not None
+    >>> bool(abs(rho(bx, by) - rho(_rank(x), _rank(y))) < 1e-5)
+    True
+    """
+    n = x.size
+    lo, hi = float(x.min()), float(x.max())
+    scale = bins / (hi - lo) if hi > lo else 0.0
+    if not 0.0 < scale < math.inf:
+        return None
+    f = np.subtract(x, lo)
+    np.multiply(f, scale, out=f)
+    np.minimum(f, bins - 1, out=f)
+    labels = f.astype(np.intp)
+    counts = np.bincount(labels, minlength=bins)
+    c = counts[counts > 1].astype(float)
+    delta = math.sqrt(float(np.add.reduce(c * c * c - c)) / (float(n) ** 3 - n))
+    if not math.asin(min(delta, 1.0)) <= tolerance / 2:
+        return None
+    mid = np.cumsum(counts) - 0.5 * (counts - 1)  # the average rank of each bin's values
+    return mid[labels]
+
+
 def rank_correlations(
     columns: Mapping[str, np.ndarray], values: Mapping[str, np.ndarray]
 ) -> dict[str, dict[str, float | None]]:
     """Spearman's rank correlation of each output with each varied input (finite points).
 
-    Ranks are computed once per array and finite mask, and an output sorted by an order
-    already known (an input's, an earlier output's) is ranked without a new sort. Ties
-    take their average rank whatever order a sort leaves them in, so numpy's fastest
-    sort serves. Over
-    :data:`RANK_POINTS` points, the first :data:`RANK_POINTS` (a random sample of the
-    study's draws) are ranked: the coefficient's standard error there is about 0.002,
+    Ranks are computed once per array and finite mask. From
+    :data:`RANK_BINNED_POINTS` points on, a column's ranks are binned (:func:`_binned_ranks`,
+    each coefficient then within :data:`RANK_TOLERANCE` of the exact one) where its bins
+    allow; else they are found by a sort, and an output sorted by an order already known
+    (an input's, an earlier output's) is ranked without a new sort. Ties take their
+    average rank whatever order a sort leaves them in, so numpy's fastest sort serves.
+    Over :data:`RANK_POINTS` points, the first :data:`RANK_POINTS` (a random sample of
+    the study's draws) are ranked: the coefficient's standard error there is about 0.002,
     and ranking a million points costs more than the model did.
     """
     if columns and len(next(iter(columns.values()))) > RANK_POINTS:
@@ -1616,6 +1689,7 @@ def rank_correlations(
         row: dict[str, float | None] = {}
         ys = y if every else y[ok]
         flat = ys.size < 3 or np.ptp(ys) == 0
+        binned = ys.size >= RANK_BINNED_POINTS
         zy: np.ndarray | None = None
         for var, x in columns.items():
             xs = x if every else x[ok]
@@ -1624,17 +1698,20 @@ def rank_correlations(
                 continue
             zx = input_ranks.get(var)
             if zx is None:
-                order = np.argsort(xs)
-                orders.append(order)
-                ranked = _ranks_along(xs, order)
+                ranked = _binned_ranks(xs) if binned else None
+                if ranked is None:
+                    order = np.argsort(xs)
+                    orders.append(order)
+                    ranked = _ranks_along(xs, order)
                 assert ranked is not None
                 zx = input_ranks[var] = _standardised(ranked)
             if zy is None:
-                for order in orders:
+                ry = _binned_ranks(ys) if binned else None
+                for order in orders if ry is None else ():
                     ry = _ranks_along(ys, order)
                     if ry is not None:
                         break
-                else:
+                if ry is None:
                     order = np.argsort(ys)
                     orders.append(order)
                     ry = _ranks_along(ys, order)
@@ -1817,7 +1894,13 @@ def summarize(spec: ModelSpec, study: Study, p: Plan, merged: ChunkResult) -> di
     elif study.method != "grid":
         summary["sensitivity"] = {
             "method": "spearman rank correlation"
-            + (f" (first {RANK_POINTS:,} points)" if n > RANK_POINTS else ""),
+            + (f" (first {RANK_POINTS:,} points)" if n > RANK_POINTS else "")
+            + (
+                f"; ranks binned where that keeps each coefficient within {RANK_TOLERANCE:g}"
+                " of the exact one"
+                if n >= RANK_BINNED_POINTS
+                else ""
+            ),
             "indices": rank_correlations(p.columns, _Heads(merged.values, p.outputs)),
         }
     if p.grid_shape is not None and p.grid_axes is not None:
