@@ -1105,12 +1105,19 @@ class Moments:
     @staticmethod
     def of(y: np.ndarray) -> Moments | None:
         """The moments of ``y``'s finite values; None when it has none."""
-        ok = np.isfinite(y)
-        every = bool(ok.all())
-        finite = y if every else y[ok]
-        if finite.size == 0:
+        if y.size == 0:
             return None
-        lo, hi = int(finite.argmin()), int(finite.argmax())
+        # extremes both finite: no NaN (where the extremes' search stops) and no ±inf, so
+        # every value is finite and no mask is made (the usual chunk)
+        lo, hi = int(y.argmin()), int(y.argmax())
+        every = math.isfinite(y[lo]) and math.isfinite(y[hi])
+        finite = y
+        if not every:
+            ok = np.isfinite(y)
+            finite = y[ok]
+            if finite.size == 0:
+                return None
+            lo, hi = int(finite.argmin()), int(finite.argmax())
         places = [lo, hi] if every else np.flatnonzero(ok)[[lo, hi]].tolist()
         if finite[lo] == finite[hi]:  # one value: its mean, no spread (not their rounding)
             mean, m2, residual = float(finite[lo]), 0.0, 0.0
