@@ -1414,6 +1414,7 @@ def _stats(
     if moments.count != size:
         pieces = [y[np.isfinite(y)] for y in pieces]
     count = moments.count  # the finite values
+    few = None
     try:
         # numpy's edges for the range numpy would find itself (min, max); a constant
         # output (common in a study: one not moved by the varied inputs) has its
@@ -1422,8 +1423,13 @@ def _stats(
         counts *= count
     except ValueError:  # min and max too close for the bins: one bin around them
         counts, edges = np.array([count]), np.array([lo, hi])
+        few = _floats_between(lo, hi)
     if lo == hi:
         quantiles = np.full(len(QUANTILES), lo)
+    elif few is not None:  # an output moved by rounding alone: a few floats, counted
+        ranks = _quantile_ranks(count)
+        at_most = np.array([sum(int(np.count_nonzero(y <= v)) for y in pieces) for v in few])
+        quantiles = _interpolate(count, ranks, few[np.searchsorted(at_most, ranks, "right")])
     else:
         ranks = _quantile_ranks(count)
         got = None if fine is None else fine.resolve(pieces, ranks, edges[:-1])
@@ -1444,6 +1450,29 @@ def _stats(
         "quantiles": {f"{q:g}": float(v) for q, v in zip(QUANTILES, quantiles, strict=True)},
         "histogram": {"edges": edges.tolist(), "counts": counts.tolist()},
     }
+
+
+#: The most floats an output's range may hold for its quantiles to be found by counting
+#: the values at or below each (:func:`_floats_between`).
+FEW_FLOATS = 16
+
+
+def _floats_between(lo: float, hi: float) -> np.ndarray | None:
+    """Every float from ``lo`` to ``hi`` (finite, ``lo`` ≤ ``hi``), in order, where there
+    are at most :data:`FEW_FLOATS` of them (an output the inputs move only by rounding,
+    too narrow for a histogram); else None.
+
+    >>> _floats_between(1.0, float(np.nextafter(np.nextafter(1.0, 2.0), 2.0))).size
+    3
+    >>> _floats_between(1.0, 1.5) is None
+    True
+    """
+    out = [lo]
+    while out[-1] < hi:
+        if len(out) == FEW_FLOATS:
+            return None
+        out.append(float(np.nextafter(out[-1], math.inf)))
+    return np.array(out)
 
 
 #: A column this long or longer has its order statistics found in brackets (see

@@ -23,10 +23,12 @@ from engine.studies.plan import (
     RANK_TOLERANCE,
     ChunkResult,
     Merger,
+    Moments,
     _binned_ranks,
     _order_statistics,
     _quantiles,
     _ranks_along,
+    _stats,
     merge,
     rank_correlations,
 )
@@ -183,3 +185,19 @@ def test_a_column_of_few_values_is_ranked_exactly_among_many_points() -> None:
     assert _binned_ranks(x) is None and _binned_ranks(y) is None
     got = rank_correlations({"x": x}, {"y": y})["y"]["x"]
     assert got == pytest.approx(_spearman(x, y), abs=1e-12)
+
+
+def test_an_output_moved_by_rounding_alone_has_numpys_quantiles() -> None:
+    """Values three floats apart (too narrow for a histogram's 30 bins), with refused
+    points and in two pieces: the quantiles found by counting are np.quantile's."""
+    one = 5.76e8
+    floats = [one, float(np.nextafter(one, np.inf)), float(np.nextafter(one, -np.inf))]
+    y = RNG.choice(floats, size=N, p=[0.6, 0.3, 0.1])
+    y[::97] = np.nan
+    moments = Moments.of(y)
+    assert moments is not None
+    got = _stats([y[: N // 2], y[N // 2 :]], 30, moments)
+    finite = y[np.isfinite(y)]
+    want = np.quantile(finite, QUANTILES)
+    assert [got["quantiles"][f"{q:g}"] for q in QUANTILES] == want.tolist()
+    assert got["histogram"]["counts"] == [finite.size]
