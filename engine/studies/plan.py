@@ -1655,7 +1655,8 @@ def _binned_ranks(
     ranks, moves by at most arcsin δ_x + arcsin δ_y. A column is binned only where
     arcsin δ ≤ tolerance / 2, so each coefficient is within ``tolerance`` of the exact
     one (about 1e-5 for the smooth laws of a study, each bin holding a few values). O(n),
-    against the sort's O(n log n).
+    against the sort's O(n log n). A column whose range holds at most :data:`FEW_FLOATS`
+    floats (:func:`_floats_between`) takes each float as a bin: its ranks are exact.
 
     By hand, x = 0, 3, 1, 4 in 4 bins over 0…4 (width 1, the top one closed): bins 0, 3,
     1, 3; the two values of bin 3 share ranks 3 and 4: 1, 3.5, 2, 3.5, with
@@ -1680,6 +1681,11 @@ def _binned_ranks(
     """
     n = x.size
     lo, hi = float(x.min()), float(x.max())
+    few = _floats_between(lo, hi) if lo < hi else None
+    if few is not None:  # a column moved by rounding alone: each float its own bin, exact
+        labels = np.searchsorted(few, x)
+        counts = np.bincount(labels, minlength=few.size)
+        return (np.cumsum(counts) - 0.5 * (counts - 1))[labels]
     scale = bins / (hi - lo) if hi > lo else 0.0
     if not 0.0 < scale < math.inf:
         return None

@@ -201,3 +201,19 @@ def test_an_output_moved_by_rounding_alone_has_numpys_quantiles() -> None:
     want = np.quantile(finite, QUANTILES)
     assert [got["quantiles"][f"{q:g}"] for q in QUANTILES] == want.tolist()
     assert got["histogram"]["counts"] == [finite.size]
+
+
+def test_a_column_of_a_few_floats_is_ranked_exactly_without_a_sort() -> None:
+    """An output moved by rounding alone (three adjacent floats) over 60,000 points:
+    each float is its own bin, so its ranks are scipy's average ranks to the bit."""
+    rng = np.random.default_rng(37)
+    one = 0.9
+    floats = np.array([float(np.nextafter(one, 0.0)), one, float(np.nextafter(one, 1.0))])
+    index = rng.integers(0, 3, 60_000)
+    y = floats[index]
+    near_two = np.nextafter(2.0, np.array([0.0, 0.0, 4.0, 4.0]))  # two floats, each twice
+    x = near_two[index + rng.integers(0, 2, index.size)]  # moves with y, also by rounding
+    got = _binned_ranks(y)
+    assert got is not None and np.array_equal(got, stats.rankdata(y))
+    rho = rank_correlations({"x": x}, {"y": y})["y"]["x"]
+    assert rho == pytest.approx(_spearman(x, y), abs=1e-12)
