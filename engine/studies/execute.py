@@ -104,7 +104,7 @@ class TLSFiles:
 @dataclass
 class StudyRun:
     """A finished study: the summary, the plan and the raw values (``merged.values``: the
-    chunks' arrays as kept, :class:`~engine.studies.plan.Columns`)."""
+    study's columns, :class:`~engine.studies.plan.Columns`)."""
 
     summary: dict[str, Any]
     plan: Plan

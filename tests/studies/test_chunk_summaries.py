@@ -273,20 +273,27 @@ def test_an_output_that_barely_moves_keeps_its_spread() -> None:
     assert abs(got - exact) <= 1e-10 * exact
 
 
-def test_columns_keep_each_chunk_once_and_a_one_number_chunk_as_that_number() -> None:
+def test_a_moving_column_is_made_whole_once_and_a_one_number_output_holds_nothing() -> None:
     y = _laws()["steps"](np.random.default_rng(39))
     merged = _merged(y, order=[3, 1, 0, 2])
     values = merged.values
     assert isinstance(values, Columns)
-    # the two chunks at 2.0 take no memory: only the other two chunks' 8-byte values
-    assert values.nbytes == 8 * (N - 2 * CHUNK)
-    assert [p.strides for p in values.pieces("y")[:2]] == [(0,), (0,)]
-    assert np.array_equal(values["y"], y)
+    # the output moves in two chunks: one whole column of 8-byte values, every chunk in it
+    assert values.nbytes == 8 * N
+    (whole,) = values.pieces("y")
+    assert np.array_equal(whole, y) and np.array_equal(values["y"], y)
+    assert values["y"] is not whole  # by name: a new array
     assert np.array_equal(values.head("y", CHUNK + 5), y[: CHUNK + 5])
     assert np.array_equal(values.head("y", 10 * N), y)
+    # an output of one number in every chunk holds those numbers alone
+    c = Columns(N, ("k",))
+    for a in range(0, N, CHUNK):
+        c.put("k", a, np.full(min(CHUNK, N - a), 2.0))
+    assert c.nbytes == 0 and all(p.strides == (0,) for p in c.pieces("k"))
+    assert np.array_equal(c["k"], np.full(N, 2.0)) and c.rows("k", 5, 9).tolist() == [2.0] * 4
 
 
-def test_columns_keep_signed_zeros_and_copy_views() -> None:
+def test_columns_keep_signed_zeros_and_copy_what_they_are_given() -> None:
     c = Columns(6, ("z", "v"))
     z = np.array([0.0, -0.0, 0.0])  # equal, not the same bits: kept as they are
     c.put("z", 0, z)
@@ -295,8 +302,8 @@ def test_columns_keep_signed_zeros_and_copy_views() -> None:
     big = np.arange(12.0)
     c.put("v", 0, big[:3])  # a view of a larger array: copied, the larger one let go
     c.put("v", 3, big[3:6])
-    assert c.nbytes == 8 * (3 + 3 + 3) and c["v"].tolist() == [0.0, 1.0, 2.0, 3.0, 4.0, 5.0]
-    assert all(p.base is None for p in c.pieces("v"))
+    assert c.nbytes == 8 * (6 + 6) and c["v"].tolist() == [0.0, 1.0, 2.0, 3.0, 4.0, 5.0]
+    assert all(not np.shares_memory(p, big) for p in c.pieces("v"))
 
 
 def test_a_chunk_of_one_number_travels_as_that_number() -> None:

@@ -19,12 +19,18 @@ from engine.studies.plan import (
     CHECK_OK,
     CHECK_UNKNOWN,
     QUANTILES,
+    RANK_BINNED_POINTS,
+    RANK_TOLERANCE,
     ChunkResult,
     Merger,
+    Moments,
+    _binned_ranks,
     _order_statistics,
     _quantiles,
     _ranks_along,
+    _stats,
     merge,
+    rank_correlations,
 )
 
 RNG = np.random.default_rng(2026)
@@ -140,3 +146,74 @@ def test_merger_in_any_arrival_order_gives_the_merge() -> None:
     for name in whole.checks:
         assert np.array_equal(m.checks[name], whole.checks[name])
     assert m.rungs == whole.rungs and m.refusals == whole.refusals == {"outside": 4 + 4 + 4 + 1}
+
+
+def _spearman(x: np.ndarray, y: np.ndarray) -> float:
+    return float(stats.spearmanr(x, y).statistic)
+
+
+def test_binned_rank_correlations_stay_within_their_tolerance_of_scipys() -> None:
+    """200,000 points (binned ranks): a heavy-tailed output (lognormal of σ = 2, most of
+    its values in the lowest bins of its range: ranked by a sort) and smooth ones (binned)
+    each within RANK_TOLERANCE of scipy's exact coefficient; in practice far closer."""
+    rng = np.random.default_rng(35)
+    n = 200_000
+    x1, x2 = rng.standard_normal(n), rng.uniform(0.0, 1.0, n)
+    outputs = {
+        "smooth": x1 + 3.0 * x2,
+        "heavy": np.exp(2.0 * (x1 + 0.3 * rng.standard_normal(n))),
+        "product": x1 * x2,
+    }
+    assert n >= RANK_BINNED_POINTS
+    assert _binned_ranks(outputs["smooth"]) is not None
+    assert _binned_ranks(outputs["heavy"]) is None  # too coarse: sorted
+    got = rank_correlations({"x1": x1, "x2": x2}, outputs)
+    for name, y in outputs.items():
+        for var, x in (("x1", x1), ("x2", x2)):
+            rho = got[name][var]
+            assert rho is not None
+            # the bound allows RANK_TOLERANCE; the bins' few values each give far less
+            assert abs(rho - _spearman(x, y)) <= 1e-5 < RANK_TOLERANCE, (name, var)
+
+
+def test_a_column_of_few_values_is_ranked_exactly_among_many_points() -> None:
+    """Ten and a hundred values over 60,000 points: every bin a tie of hundreds, refused
+    by the bound; the exact average ranks of the sort give scipy's coefficient."""
+    rng = np.random.default_rng(36)
+    x = rng.integers(0, 10, 60_000).astype(float)
+    y = 10.0 * x + rng.integers(0, 30, x.size)
+    assert _binned_ranks(x) is None and _binned_ranks(y) is None
+    got = rank_correlations({"x": x}, {"y": y})["y"]["x"]
+    assert got == pytest.approx(_spearman(x, y), abs=1e-12)
+
+
+def test_an_output_moved_by_rounding_alone_has_numpys_quantiles() -> None:
+    """Values three floats apart (too narrow for a histogram's 30 bins), with refused
+    points and in two pieces: the quantiles found by counting are np.quantile's."""
+    one = 5.76e8
+    floats = [one, float(np.nextafter(one, np.inf)), float(np.nextafter(one, -np.inf))]
+    y = RNG.choice(floats, size=N, p=[0.6, 0.3, 0.1])
+    y[::97] = np.nan
+    moments = Moments.of(y)
+    assert moments is not None
+    got = _stats([y[: N // 2], y[N // 2 :]], 30, moments)
+    finite = y[np.isfinite(y)]
+    want = np.quantile(finite, QUANTILES)
+    assert [got["quantiles"][f"{q:g}"] for q in QUANTILES] == want.tolist()
+    assert got["histogram"]["counts"] == [finite.size]
+
+
+def test_a_column_of_a_few_floats_is_ranked_exactly_without_a_sort() -> None:
+    """An output moved by rounding alone (three adjacent floats) over 60,000 points:
+    each float is its own bin, so its ranks are scipy's average ranks to the bit."""
+    rng = np.random.default_rng(37)
+    one = 0.9
+    floats = np.array([float(np.nextafter(one, 0.0)), one, float(np.nextafter(one, 1.0))])
+    index = rng.integers(0, 3, 60_000)
+    y = floats[index]
+    near_two = np.nextafter(2.0, np.array([0.0, 0.0, 4.0, 4.0]))  # two floats, each twice
+    x = near_two[index + rng.integers(0, 2, index.size)]  # moves with y, also by rounding
+    got = _binned_ranks(y)
+    assert got is not None and np.array_equal(got, stats.rankdata(y))
+    rho = rank_correlations({"x": x}, {"y": y})["y"]["x"]
+    assert rho == pytest.approx(_spearman(x, y), abs=1e-12)
