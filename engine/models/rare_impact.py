@@ -13,8 +13,9 @@ from __future__ import annotations
 
 import functools
 import math
-from collections.abc import Callable, Container, Mapping
-from typing import Any
+from collections.abc import Mapping
+from collections.abc import Set as AbstractSet
+from typing import Any, cast
 
 import numpy as np
 
@@ -219,87 +220,105 @@ def _simulation_estimate(x: Mapping[str, Any]) -> float:
 
 
 def _outputs(
-    x: Mapping[str, Any], o: CycleOutcome | Release, wanted: Container[str] | None = None
+    x: Mapping[str, Any], o: CycleOutcome | Release, wanted: AbstractSet[str] | None = None
 ) -> dict[str, Any]:
     """Every numeric output (and full_engagement) from the inputs and a cycle's outcome.
 
     One design (numbers) or many (arrays): NaN or inf where the output is null (never
     reached), read by :func:`_compute` as None and by :func:`_vectorized` as NaN.
-    ``wanted``: the outputs to give (every one when None), each line run only where its
-    output is asked for; a :class:`~engine.procedures.striker_cycle.Release` (stage 1
-    alone) serves the outputs of :data:`_RELEASE_OUTPUTS`.
+    ``wanted``: the outputs to give (every one when None; more may come), each line run
+    only where its output is asked for (those of the later stages together); a
+    :class:`~engine.procedures.striker_cycle.Release` (stage 1 alone) serves the outputs
+    of :data:`_RELEASE_OUTPUTS`.
     """
     c1, c3 = x["power_spring_rate"], x["return_spring_rate"]
     g = x["gravity"]
+    every = wanted is None
+    want: AbstractSet[str] = frozenset() if wanted is None else wanted
+    # read only by the lines of the later stages, which a Release is never asked for
+    c = cast(CycleOutcome, o)
+    out: dict[str, Any] = {}
     with quiet(is_array(o.release_speed)):
-
-        @functools.cache
-        def cycle() -> CycleOutcome:
-            assert isinstance(o, CycleOutcome), "an output of the later stages from stage 1"
-            return o
-
-        @functools.cache
-        def window() -> Any:
-            return divide(x["engagement_angle"], o.release_speed)
-
-        @functools.cache
-        def oscillation() -> tuple[Any, Any]:
-            m2_total = _moving_mass(x)
+        window = (
+            divide(x["engagement_angle"], o.release_speed)
+            if every or not _WINDOW_READERS.isdisjoint(want) or not _CYCLE_READERS.isdisjoint(want)
+            else None
+        )
+        if every or "release_speed" in want:
+            out["release_speed"] = o.release_speed
+        if every or "spin_up_time" in want:
+            out["spin_up_time"] = o.spin_up_time
+        if every or "release_radius" in want:
+            out["release_radius"] = o.release_radius
+        if every or "engagement_acceleration" in want or "engagement_frequency" in want:
             b, k = striker_oscillation(
                 c1,
                 x["power_spring_preload"],
                 c3,
                 x["return_spring_preload"],
                 x["release_travel"],
-                m2_total,
+                _moving_mass(x),
                 g,
             )
-            return b, k
-
-        @functools.cache
-        def t_blow() -> Any:
-            return o.spin_up_time + cycle().engagement_time
-
-        lines: dict[str, Callable[[], Any]] = {
-            "release_speed": lambda: o.release_speed,
-            "spin_up_time": lambda: o.spin_up_time,
-            "release_radius": lambda: o.release_radius,
-            "engagement_acceleration": lambda: oscillation()[0],
-            "engagement_frequency": lambda: oscillation()[1],
-            "max_striker_travel": lambda: cycle().max_travel,
-            "engagement_time": lambda: cycle().engagement_time,
-            "engagement_window": window,
-            "engagement_start": lambda: o.spin_up_time,
-            "engagement_end": lambda: o.spin_up_time + window(),
-            "full_engagement": lambda: cycle().blow & (cycle().engagement_time <= window()),
-            "engagement_margin": lambda: where(
-                cycle().blow, divide(window() - cycle().engagement_time, window()), math.nan
-            ),
-            "blow_time": t_blow,
-            "spring_height_limit": lambda: spring_height_bounds(_moving_mass(x), g, c1, c3)[1],
-            "min_return_spring_rate": lambda: min_return_spring_rate(
+            out["engagement_acceleration"] = b
+            out["engagement_frequency"] = k
+        if every or not _CYCLE_READERS.isdisjoint(want):
+            t_blow = o.spin_up_time + c.engagement_time
+            out["max_striker_travel"] = c.max_travel
+            out["engagement_time"] = c.engagement_time
+        if window is not None:
+            out["engagement_window"] = window
+            out["engagement_start"] = o.spin_up_time
+            out["engagement_end"] = o.spin_up_time + window
+        if every or not _CYCLE_READERS.isdisjoint(want):
+            out["full_engagement"] = c.blow & (c.engagement_time <= window)
+            out["engagement_margin"] = where(
+                c.blow, divide(window - c.engagement_time, window), math.nan
+            )
+            out["blow_time"] = t_blow
+        if every or "spring_height_limit" in want:
+            out["spring_height_limit"] = spring_height_bounds(_moving_mass(x), g, c1, c3)[1]
+        if every or "min_return_spring_rate" in want:
+            out["min_return_spring_rate"] = min_return_spring_rate(
                 x["striker_mass"],
                 g,
                 x["return_spring_preload"],
                 x["engagement_height"],
                 x["jaw_height"],
-            ),
-            "relock_margin": lambda: relock_margin(
+            )
+        if every or "relock_margin" in want:
+            out["relock_margin"] = relock_margin(
                 x["auxiliary_spring_rate"],
                 x["auxiliary_spring_preload"],
                 x["stepped_shaft_mass"],
                 g,
                 relock_friction(x),
-            ),
-            "return_time": lambda: where(cycle().returns, cycle().return_time, math.nan),
-            "striker_home_time": lambda: where(
-                cycle().returns, t_blow() + cycle().home_time, math.nan
-            ),
-            "relock_time": lambda: where(cycle().relocks, cycle().relock_time, math.nan),
-            "cycle_time": lambda: cycle().cycle_time,
-        }
-        return {k: line() for k, line in lines.items() if wanted is None or k in wanted}
+            )
+        if every or not _CYCLE_READERS.isdisjoint(want):
+            out["return_time"] = where(c.returns, c.return_time, math.nan)
+            out["striker_home_time"] = where(c.returns, t_blow + c.home_time, math.nan)
+            out["relock_time"] = where(c.relocks, c.relock_time, math.nan)
+            out["cycle_time"] = c.cycle_time
+    return out
 
+
+#: The outputs of the later stages (a :class:`CycleOutcome`'s): asked for one, :func:`_outputs`
+#: gives them all, their lines sharing the blow's time.
+_CYCLE_READERS = frozenset(
+    {
+        "max_striker_travel",
+        "engagement_time",
+        "full_engagement",
+        "engagement_margin",
+        "blow_time",
+        "return_time",
+        "striker_home_time",
+        "relock_time",
+        "cycle_time",
+    }
+)
+#: The outputs of stage 1 that read the engagement window φ_eng/ω_M (every later one does).
+_WINDOW_READERS = frozenset({"engagement_window", "engagement_start", "engagement_end"})
 
 #: The outputs :func:`_outputs` gives from stage 1 alone (a
 #: :class:`~engine.procedures.striker_cycle.Release`): the release, the window, and the
