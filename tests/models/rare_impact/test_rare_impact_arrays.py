@@ -10,6 +10,7 @@ forbidden, and every point is compared with its own single run.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 import pytest
@@ -292,7 +293,7 @@ def test_a_sweep_of_stage_1_outputs_runs_stage_1_alone_with_the_same_numbers(
     assert RARE_IMPACT.vectorized is not None
     stage1 = ["release_speed", "spin_up_time", "release_radius", "engagement_window"]
 
-    def values(asked: list[str]) -> dict[str, np.ndarray]:
+    def values(asked: list[str]) -> dict[str, Any]:
         ctx = RunContext(rung="closed_form", outputs=frozenset(asked), tolerance=1e-2, checks=False)
         assert RARE_IMPACT.vectorized is not None
         return RARE_IMPACT.vectorized(validated, ctx).values
