@@ -14,7 +14,8 @@ from __future__ import annotations
 import functools
 import math
 from collections.abc import Mapping
-from typing import Any
+from collections.abc import Set as AbstractSet
+from typing import Any, cast
 
 import numpy as np
 
@@ -45,8 +46,10 @@ from ..physics.rare_impact import (
 from ..procedures.striker_cycle import (
     GEOMETRIES,
     CycleOutcome,
+    Release,
     closed_form_cycle,
     closed_form_errors,
+    closed_form_release,
     release_speed_of,
     relock_friction,
     simulate_cycle,
@@ -216,53 +219,125 @@ def _simulation_estimate(x: Mapping[str, Any]) -> float:
     return _SIMULATION_ERROR  # a constant: broadcast over the points of a sweep
 
 
-def _outputs(x: Mapping[str, Any], o: CycleOutcome) -> dict[str, Any]:
+def _outputs(
+    x: Mapping[str, Any], o: CycleOutcome | Release, wanted: AbstractSet[str] | None = None
+) -> dict[str, Any]:
     """Every numeric output (and full_engagement) from the inputs and a cycle's outcome.
 
     One design (numbers) or many (arrays): NaN or inf where the output is null (never
     reached), read by :func:`_compute` as None and by :func:`_vectorized` as NaN.
+    ``wanted``: the outputs to give (every one when None; more may come), each line run
+    only where its output is asked for (those of the later stages together); a
+    :class:`~engine.procedures.striker_cycle.Release` (stage 1 alone) serves the outputs
+    of :data:`_RELEASE_OUTPUTS`.
     """
-    m2_total = _moving_mass(x)
     c1, c3 = x["power_spring_rate"], x["return_spring_rate"]
-    lam1, lam3 = x["power_spring_preload"], x["return_spring_preload"]
-    h1, h2, g = x["release_travel"], x["engagement_height"], x["gravity"]
+    g = x["gravity"]
+    every = wanted is None
+    want: AbstractSet[str] = frozenset() if wanted is None else wanted
+    # read only by the lines of the later stages, which a Release is never asked for
+    c = cast(CycleOutcome, o)
+    out: dict[str, Any] = {}
     with quiet(is_array(o.release_speed)):
-        b, k = striker_oscillation(c1, lam1, c3, lam3, h1, m2_total, g)
-        window = divide(x["engagement_angle"], o.release_speed)
-        _, upper = spring_height_bounds(m2_total, g, c1, c3)
-        t_blow = o.spin_up_time + o.engagement_time
-        t_home = t_blow + o.home_time
-        blow, returns, relocks = o.blow, o.returns, o.relocks
-        return {
-            "release_speed": o.release_speed,
-            "spin_up_time": o.spin_up_time,
-            "release_radius": o.release_radius,
-            "engagement_acceleration": b,
-            "engagement_frequency": k,
-            "max_striker_travel": o.max_travel,
-            "engagement_time": o.engagement_time,
-            "engagement_window": window,
-            "engagement_start": o.spin_up_time,
-            "engagement_end": o.spin_up_time + window,
-            "full_engagement": blow & (o.engagement_time <= window),
-            "engagement_margin": where(blow, divide(window - o.engagement_time, window), math.nan),
-            "blow_time": t_blow,
-            "spring_height_limit": upper,
-            "min_return_spring_rate": min_return_spring_rate(
-                x["striker_mass"], g, lam3, h2, x["jaw_height"]
-            ),
-            "relock_margin": relock_margin(
+        window = (
+            divide(x["engagement_angle"], o.release_speed)
+            if every or not _WINDOW_READERS.isdisjoint(want) or not _CYCLE_READERS.isdisjoint(want)
+            else None
+        )
+        if every or "release_speed" in want:
+            out["release_speed"] = o.release_speed
+        if every or "spin_up_time" in want:
+            out["spin_up_time"] = o.spin_up_time
+        if every or "release_radius" in want:
+            out["release_radius"] = o.release_radius
+        if every or "engagement_acceleration" in want or "engagement_frequency" in want:
+            b, k = striker_oscillation(
+                c1,
+                x["power_spring_preload"],
+                c3,
+                x["return_spring_preload"],
+                x["release_travel"],
+                _moving_mass(x),
+                g,
+            )
+            out["engagement_acceleration"] = b
+            out["engagement_frequency"] = k
+        if every or not _CYCLE_READERS.isdisjoint(want):
+            t_blow = o.spin_up_time + c.engagement_time
+            out["max_striker_travel"] = c.max_travel
+            out["engagement_time"] = c.engagement_time
+        if window is not None:
+            out["engagement_window"] = window
+            out["engagement_start"] = o.spin_up_time
+            out["engagement_end"] = o.spin_up_time + window
+        if every or not _CYCLE_READERS.isdisjoint(want):
+            out["full_engagement"] = c.blow & (c.engagement_time <= window)
+            out["engagement_margin"] = where(
+                c.blow, divide(window - c.engagement_time, window), math.nan
+            )
+            out["blow_time"] = t_blow
+        if every or "spring_height_limit" in want:
+            out["spring_height_limit"] = spring_height_bounds(_moving_mass(x), g, c1, c3)[1]
+        if every or "min_return_spring_rate" in want:
+            out["min_return_spring_rate"] = min_return_spring_rate(
+                x["striker_mass"],
+                g,
+                x["return_spring_preload"],
+                x["engagement_height"],
+                x["jaw_height"],
+            )
+        if every or "relock_margin" in want:
+            out["relock_margin"] = relock_margin(
                 x["auxiliary_spring_rate"],
                 x["auxiliary_spring_preload"],
                 x["stepped_shaft_mass"],
                 g,
                 relock_friction(x),
-            ),
-            "return_time": where(returns, o.return_time, math.nan),
-            "striker_home_time": where(returns, t_home, math.nan),
-            "relock_time": where(relocks, o.relock_time, math.nan),
-            "cycle_time": o.cycle_time,
-        }
+            )
+        if every or not _CYCLE_READERS.isdisjoint(want):
+            out["return_time"] = where(c.returns, c.return_time, math.nan)
+            out["striker_home_time"] = where(c.returns, t_blow + c.home_time, math.nan)
+            out["relock_time"] = where(c.relocks, c.relock_time, math.nan)
+            out["cycle_time"] = c.cycle_time
+    return out
+
+
+#: The outputs of the later stages (a :class:`CycleOutcome`'s): asked for one, :func:`_outputs`
+#: gives them all, their lines sharing the blow's time.
+_CYCLE_READERS = frozenset(
+    {
+        "max_striker_travel",
+        "engagement_time",
+        "full_engagement",
+        "engagement_margin",
+        "blow_time",
+        "return_time",
+        "striker_home_time",
+        "relock_time",
+        "cycle_time",
+    }
+)
+#: The outputs of stage 1 that read the engagement window φ_eng/ω_M (every later one does).
+_WINDOW_READERS = frozenset({"engagement_window", "engagement_start", "engagement_end"})
+
+#: The outputs :func:`_outputs` gives from stage 1 alone (a
+#: :class:`~engine.procedures.striker_cycle.Release`): the release, the window, and the
+#: formulas of the inputs alone.
+_RELEASE_OUTPUTS = frozenset(
+    {
+        "release_speed",
+        "spin_up_time",
+        "release_radius",
+        "engagement_acceleration",
+        "engagement_frequency",
+        "engagement_window",
+        "engagement_start",
+        "engagement_end",
+        "spring_height_limit",
+        "min_return_spring_rate",
+        "relock_margin",
+    }
+)
 
 
 def _verdicts(x: Mapping[str, Any], o: CycleOutcome) -> dict[str, Any]:
@@ -307,12 +382,19 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """
     if ctx.rung != "closed_form":
         raise EngineError(f"impact.rare has no array path for the rung {ctx.rung!r}")
-    o = _cycle(x, ctx.scratch)
+    # a sweep reads no checks: where it asks only for outputs of stage 1, stages 2-4 are
+    # left out (the same arrays: closed_form_release is closed_form_cycle's stage 1)
+    wanted = None if ctx.checks else ctx.outputs
+    o: CycleOutcome | Release
+    if wanted is not None and wanted <= _RELEASE_OUTPUTS:
+        o = closed_form_release(_inputs(x, ctx.scratch))
+    else:
+        o = _cycle(x, ctx.scratch)
     dead = o.refused
     n = dead.shape
     any_dead = bool(dead.any())
     values: dict[str, Any] = {}
-    for name, raw in _outputs(x, o).items():
+    for name, raw in _outputs(x, o, wanted).items():
         column = np.broadcast_to(np.asarray(raw), n)
         if column.dtype != bool:
             column = column.astype(float, copy=False)
@@ -323,7 +405,9 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     values["half_coupling_release_speed"] = None
     checks = {}
     # a point the model refuses reports no check; if every point is refused, no check at all
-    if not dead.all():
+    # (and none where the caller reads none: a sweep)
+    if ctx.checks and not dead.all():
+        assert isinstance(o, CycleOutcome)  # every check reads the later stages
         for name, ok in _verdicts(x, o).items():
             code = np.broadcast_to(np.asarray(ok, dtype=np.int8), n)
             checks[name] = np.where(dead, np.int8(-1), code) if any_dead else code

@@ -170,8 +170,10 @@ __all__ = [
     "GEOMETRIES",
     "CycleOutcome",
     "Geometry",
+    "Release",
     "closed_form_cycle",
     "closed_form_errors",
+    "closed_form_release",
     "face_forces",
     "geometry",
     "liftoff_speed_of",
@@ -1021,15 +1023,7 @@ def closed_form_cycle(x: Mapping[str, Any], *, refuse: bool = True) -> CycleOutc
     x = _numbers(x)
     with quiet(x.many):
         g = _geo(x)
-        x0 = x["roller_radius"]
-        r, w_0, w_m = _speeds(x, g)
-        t_spin = _time_to_speed(x, _inertia(x, g, r), w_m)
-        t_lift = _time_to_speed(x, _inertia(x, g, x0), w_0)
-        refusal = where(
-            _preload_force(x, g) > 0.0,
-            where(isfinite(t_spin) & isfinite(t_lift), HELD, NEVER_FAST_ENOUGH),
-            NOT_HELD,
-        )
+        r, w_0, w_m, t_spin, refusal = _stage1(x, g)
         v_rel = _release_velocity(x, g, w_m, r)
         t_eng, reach = _stage2(x, v_rel, g)
         # stage 3, the paper's reduction with the rollers' inertia kept: the half-coupling
@@ -1064,14 +1058,7 @@ def closed_form_cycle(x: Mapping[str, Any], *, refuse: bool = True) -> CycleOutc
             if o.refused:
                 raise _refuse(x, o)
             return _as_floats(o)
-        n = np.broadcast_shapes(*(np.shape(v) for v in x.values() if isinstance(v, np.ndarray)))
-        refused = np.broadcast_to(refusal != HELD, n)
-        any_refused = bool(refused.any())
-
-        def out(v: Any) -> np.ndarray:
-            v = np.broadcast_to(np.asarray(v, dtype=float), n)
-            return np.where(refused, math.nan, v) if any_refused else v
-
+        n, refused, out = _masked(x, refusal)
         columns: dict[str, Any] = {k: out(v) for k, v in fields.items()}
         return CycleOutcome(
             **columns,
@@ -1079,6 +1066,96 @@ def closed_form_cycle(x: Mapping[str, Any], *, refuse: bool = True) -> CycleOutc
             refusal=np.broadcast_to(refusal, n),
             flies=np.broadcast_to(flies, n) & ~refused,
         )
+
+
+def _stage1(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, Any, Any, Any]:
+    r"""Stage 1 of the closed form and its refusal test: (r, ω_0, ω_M, t_1, refusal).
+
+    .. math::
+        t_1 = t(I(r), \omega_M),\qquad \text{refused where } c_1\lambda_1 + c_2\lambda_2 + W
+        \le 0\ \text{or}\ t(I(r), \omega_M),\ t(I(x_0), \omega_0)\ \text{infinite}
+
+    (:func:`_speeds`, :func:`_time_to_speed`, [002, eq. 1]); what
+    :func:`closed_form_cycle` and :func:`closed_form_release` share.
+    """
+    r, w_0, w_m = _speeds(x, g)
+    t_spin = _time_to_speed(x, _inertia(x, g, r), w_m)
+    t_lift = _time_to_speed(x, _inertia(x, g, x["roller_radius"]), w_0)
+    refusal = where(
+        _preload_force(x, g) > 0.0,
+        where(isfinite(t_spin) & isfinite(t_lift), HELD, NEVER_FAST_ENOUGH),
+        NOT_HELD,
+    )
+    return r, w_0, w_m, t_spin, refusal
+
+
+def _masked(
+    x: Mapping[str, Any], refusal: Any
+) -> tuple[tuple[int, ...], np.ndarray, Callable[[Any], np.ndarray]]:
+    """(shape, refused, column) for many designs: ``column(v)`` is ``v`` as a float array of
+    the points' shape, NaN where the point is refused."""
+    n = np.broadcast_shapes(*(np.shape(v) for v in x.values() if isinstance(v, np.ndarray)))
+    refused = np.broadcast_to(refusal != HELD, n)
+    any_refused = bool(refused.any())
+
+    def out(v: Any) -> np.ndarray:
+        v = np.broadcast_to(np.asarray(v, dtype=float), n)
+        return np.where(refused, math.nan, v) if any_refused else v
+
+    return n, refused, out
+
+
+@dataclass
+class Release:
+    """Stage 1 alone of the closed form for many designs (:func:`closed_form_release`).
+
+    The fields :class:`CycleOutcome` shares, the same arrays :func:`closed_form_cycle`
+    gives for them (NaN where the point is refused, ``refusal`` saying why).
+    """
+
+    release_speed: np.ndarray
+    spin_up_time: np.ndarray
+    release_radius: np.ndarray
+    refusal: np.ndarray
+
+    @cached_property
+    def refused(self) -> np.ndarray:
+        return self.refusal != HELD
+
+
+def closed_form_release(x: Mapping[str, Any]) -> Release:
+    """Stage 1 of :func:`closed_form_cycle` on arrays, without the stages after it.
+
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``); numeric ones numbers or
+        equal-length arrays (at least one), ``roller_geometry`` one choice for all points
+
+    Notes
+    -----
+    The release speed, the spin-up time and the release radius (:func:`_stage1`: the
+    quasi-static stage 1 of [002, eq. 1] and its refusal test), the very arrays
+    :func:`closed_form_cycle` gives for them, for a caller that reads nothing of stages
+    2 to 4.
+
+    >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
+    >>> x = {**R, "power_spring_rate": np.array([5e4, 6e4])}
+    >>> a, b = closed_form_release(x), closed_form_cycle(x)
+    >>> all(np.array_equal(getattr(a, f), getattr(b, f)) for f in _NUMERIC[:3])
+    True
+
+    At c1 = 60 N/mm: (60000·0.007 + 2000·0.013 + 0.35·9.80665)/(0.3·0.5·0.0425) =
+    449.4323/0.006375 = 70499.2, root 265.52 rad/s:
+
+    >>> np.round(a.release_speed, 2)
+    array([243.96, 265.52])
+    """
+    x = _numbers(x)
+    with quiet(x.many):
+        r, _, w_m, t_spin, refusal = _stage1(x, _geo(x))
+        n, _, out = _masked(x, refusal)
+        return Release(out(w_m), out(t_spin), out(r), np.broadcast_to(refusal, n))
 
 
 def _striker_force_at_blow(x: Mapping[str, Any], g: Geometry) -> Any:

@@ -10,6 +10,7 @@ forbidden, and every point is compared with its own single run.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 import pytest
@@ -277,3 +278,38 @@ def test_a_refused_point_carries_its_reason_on_both_paths() -> None:
         with pytest.raises(EngineError) as refused:  # and raised with its reason
             closed_form_cycle(one)
         assert refused.value.field == fields[int(o.refusal[j])]
+
+
+def test_a_sweep_of_stage_1_outputs_runs_stage_1_alone_with_the_same_numbers(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # held, not held (gravity pulls the half-coupling off its stop harder than the
+    # preloads hold it) and a motor too slow (no-load 100 rad/s below the release speed)
+    x = {**REFERENCE_DESIGN, "gravity": np.array([9.80665, -100.0, 9.80665, 0.0])}
+    x["power_spring_preload"] = np.array([0.002, 1e-6, 0.002, 0.002])
+    x["auxiliary_spring_preload"] = np.array([0.008, 1e-6, 0.008, 0.008])
+    x["motor_no_load_speed"] = np.array([1e4, 1e4, 100.0, 1e4])
+    validated = {**RARE_IMPACT.validate(REFERENCE_DESIGN)[0], **x}
+    assert RARE_IMPACT.vectorized is not None
+    stage1 = ["release_speed", "spin_up_time", "release_radius", "engagement_window"]
+
+    def values(asked: list[str]) -> dict[str, Any]:
+        ctx = RunContext(rung="closed_form", outputs=frozenset(asked), tolerance=1e-2, checks=False)
+        assert RARE_IMPACT.vectorized is not None
+        return RARE_IMPACT.vectorized(validated, ctx).values
+
+    whole = values(OUTPUTS)  # the whole cycle: an output of stage 3 is asked
+
+    def no_cycle(*args: object, **kwargs: object) -> None:
+        raise AssertionError("stage 1's outputs ran the whole cycle")
+
+    monkeypatch.setattr("engine.models.rare_impact.closed_form_cycle", no_cycle)
+    alone = values(stage1)
+    for name in stage1:  # bit for bit, NaN at the refused points
+        np.testing.assert_array_equal(alone[name], whole[name], strict=True)
+    assert np.isnan(alone["release_speed"][1:3]).all()
+    # g = 0, symmetric V: ω² = (5e4·0.007 + 2000·0.013)/(6·0.05·0.5·0.0425) = 376/0.006375
+    assert alone["release_speed"][3] == pytest.approx(math.sqrt(376.0 / 0.006375), rel=1e-12)
+    assert alone["release_speed"][3] == pytest.approx(242.8588, abs=1e-4)
+    # nothing asked beyond them: the stage-2 formulas of the inputs are left out too
+    assert "engagement_acceleration" not in alone and "cycle_time" not in alone
