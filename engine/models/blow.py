@@ -1872,18 +1872,16 @@ def _per_group(
         return [float(v) for v in got], False, notes, None
     varied = [k for k in names if isinstance(x.get(k), np.ndarray)]
     n = _points(x)
-    out = np.full((width, *n), np.nan)
-    refused = np.zeros(n, dtype=bool)
-    error: EngineError | None = None
-    if not varied:
+    if not varied:  # one group: its values broadcast over the points (read-only, no copies)
         try:
             got, notes = fn(x)
         except EngineError as exc:
-            refused[...] = True
-            error = exc
-        else:
-            out[:] = np.asarray(got, dtype=float).reshape(width, *([1] * len(n)))
-        return out, refused, notes, error
+            return np.full((width, *n), np.nan), np.ones(n, dtype=bool), notes, exc
+        column = np.asarray(got, dtype=float).reshape(width, *([1] * len(n)))
+        return np.broadcast_to(column, (width, *n)), np.zeros(n, dtype=bool), notes, None
+    out = np.full((width, *n), np.nan)
+    refused = np.zeros(n, dtype=bool)
+    error: EngineError | None = None
     table = np.stack([np.broadcast_to(np.asarray(x[k], dtype=float), n) for k in varied], axis=-1)
     rows, inverse = np.unique(table.reshape(-1, len(varied)), axis=0, return_inverse=True)
     inverse = inverse.reshape(n)
