@@ -294,6 +294,7 @@ def energy_blow(
     breakaway: Any = 1.0,
     drive_torque: Any = 0.0,
     held_peak: Any = None,
+    motion: bool = True,
 ) -> tuple[Any, Any, Any, Any]:
     r"""One blow by energy balance, struck inertia neglected (floats or numpy arrays).
 
@@ -325,6 +326,9 @@ def energy_blow(
     held_peak : float, array or None, optional
         :func:`held_blow_peak` of (E, C, N) where the caller has it (a run of blows: the
         same for every blow of a design), [N*m]
+    motion : bool, optional
+        On arrays, False leaves the nut rotation and the work out (None in their places)
+        where the caller reads the torques only; one design always has all four
 
     Returns
     -------
@@ -355,6 +359,9 @@ def energy_blow(
     [440.346, 440.346, 0.38, 95.152]
     >>> [round(v, 3) for v in energy_blow(100.0, 2.0e4, 0.0, 60.0)]  # constant joint torque
     [60.0, 60.0, 1.665, 99.91]
+    >>> [v if v is None else v.round(3).tolist() for v in energy_blow(
+    ...     np.array([100.0, 100.0]), 2.0e4, np.array([1000.0, 0.0]), 60.0, motion=False)]
+    [[440.346, 60.0], [440.346, 60.0], None, None]
     """
     e, c, k, t0, b, n = energy, stiffness, rate, start_torque, breakaway, drive_torque
     if not (  # one design (is_array's test, spelled out: this runs once per blow)
@@ -383,29 +390,46 @@ def energy_blow(
         return peak, tp, rot, work
     with np.errstate(all="ignore"):
         held = held_blow_peak(e, c, n) if held_peak is None else held_peak
-        holds = held <= b * t0
+        b_t0 = b * t0
+        holds = held <= b_t0
         flat = k <= 0.0
-        stops = t0 > n  # a constant joint torque stops the nut only above the drive torque
-        tp, rot, work = _rising_joint_blow(e, c, np.where(flat, 1.0, k), t0, n)
-        rot_flat = np.where(stops, _constant_torque_rotation(e, c, t0, n), np.nan)
-        tp = np.where(flat, np.where(stops, t0, np.nan), tp)
-        rot = np.where(flat, rot_flat, rot)
-        work = np.where(flat, t0 * rot_flat, work)
-        peak = np.maximum(tp, b * t0)  # NaN where the nut never stops
-        return (
-            np.where(holds, held, peak),
-            np.where(holds, t0, tp),
-            np.where(holds, 0.0, rot),
-            np.where(holds, 0.0, work),
-        )
+        # the flat joint's branch only where some point has one (where it picks nothing,
+        # np.where(flat, ·, v) is v itself)
+        some_flat = bool(np.any(flat))
+        k_rising = np.where(flat, 1.0, k) if some_flat else k
+        rising = _rising_joint_peak(e, c, k_rising, t0, n)
+        tp = rising
+        if some_flat:
+            stops = t0 > n  # a constant joint torque stops the nut only above the drive torque
+            rot_flat = np.where(stops, _constant_torque_rotation(e, c, t0, n), np.nan)
+            tp = np.where(flat, np.where(stops, t0, np.nan), tp)
+        peak = np.maximum(tp, b_t0)  # NaN where the nut never stops
+        torques = (np.where(holds, held, peak), np.where(holds, t0, tp))
+        if not motion:
+            return (*torques, None, None)
+        rot, work = _rising_joint_motion(rising, t0, k_rising)
+        if some_flat:
+            rot = np.where(flat, rot_flat, rot)
+            work = np.where(flat, t0 * rot_flat, work)
+        return (*torques, np.where(holds, 0.0, rot), np.where(holds, 0.0, work))
 
 
 def _rising_joint_blow(e: Any, c: Any, k: Any, t0: Any, n: Any) -> tuple[Any, Any, Any]:
     """(T_p, rotation, work) of :func:`energy_blow`'s balance on a joint of rate k > 0."""
+    tp = _rising_joint_peak(e, c, k, t0, n)
+    return (tp, *_rising_joint_motion(tp, t0, k))
+
+
+def _rising_joint_peak(e: Any, c: Any, k: Any, t0: Any, n: Any) -> Any:
+    """T_p of :func:`energy_blow`'s balance on a joint of rate k > 0."""
     a = 0.5 * (1.0 / c + 1.0 / k)
     rhs = e + t0 * t0 / (2.0 * k) - n * t0 / k
-    tp = n + _sqrt(n * n + rhs / a)
-    return tp, (tp - t0) / k, 0.5 * (tp * tp - t0 * t0) / k
+    return n + _sqrt(n * n + rhs / a)
+
+
+def _rising_joint_motion(tp: Any, t0: Any, k: Any) -> tuple[Any, Any]:
+    """(nut rotation (T_p − T_0)/k, work into the joint (T_p² − T_0²)/2k) of that blow."""
+    return (tp - t0) / k, 0.5 * (tp * tp - t0 * t0) / k
 
 
 def _sqrt(v: Any) -> Any:
