@@ -13,7 +13,7 @@ from __future__ import annotations
 import contextlib
 import dataclasses
 import math
-from collections.abc import Mapping
+from collections.abc import Container, Mapping
 from typing import Any
 
 import numpy as np
@@ -1162,6 +1162,7 @@ def _blow_values(
     final: Any,
     blows: Any,
     joint_work: Any,
+    outputs: Container[str] | None = None,
 ) -> dict[str, Any]:
     """The outputs of the blows (floats for one design, arrays for many).
 
@@ -1169,20 +1170,33 @@ def _blow_values(
     last blow's joint torque, the number of blows and the work of all of them: the
     preloads through the tightening relation (with a thread) and the energy account (not
     on the rigid rung, whose joint torque does not follow from an energy balance).
+    With ``outputs`` given, only those are worked out (the others' inputs may be None).
     """
-    values: dict[str, Any] = {
-        "peak_torque": peak,
-        "torque_after_first_blow": after,
-        "final_torque": final,
-        "energy_supplied": s.energy * blows,
-    }
+
+    def want(name: str) -> bool:
+        return outputs is None or name in outputs
+
+    values: dict[str, Any] = {}
+    if want("peak_torque"):
+        values["peak_torque"] = peak
+    if want("torque_after_first_blow"):
+        values["torque_after_first_blow"] = after
+    if want("final_torque"):
+        values["final_torque"] = final
+    if want("energy_supplied"):
+        values["energy_supplied"] = s.energy * blows
     if rung != "rigid":
-        values["nut_rotation"] = rotation
-        values["joint_energy_fraction"] = work / s.energy
-        values["energy_into_joint"] = joint_work
+        if want("nut_rotation"):
+            values["nut_rotation"] = rotation
+        if want("joint_energy_fraction"):
+            values["joint_energy_fraction"] = work / s.energy
+        if want("energy_into_joint"):
+            values["energy_into_joint"] = joint_work
     if s.per is not None:
-        values["preload_after_first_blow"] = after / s.per
-        values["final_preload"] = final / s.per
+        if want("preload_after_first_blow"):
+            values["preload_after_first_blow"] = after / s.per
+        if want("final_preload"):
+            values["final_preload"] = final / s.per
     return values
 
 
@@ -1229,6 +1243,16 @@ _FIRST_BLOW_OUTPUTS = frozenset(
         "yield_preload",
         "breaking_load",
     )
+)
+
+#: The first-blow outputs that read the blow itself, and the :class:`BlowSeries` field
+#: each reads (the others are the tool's, the thread's or the time between blows).
+_FIRST_BLOW_FIELDS = (
+    ("peak_torque", "peak"),
+    ("torque_after_first_blow", "torque_after"),
+    ("preload_after_first_blow", "torque_after"),
+    ("nut_rotation", "rotation"),
+    ("joint_energy_fraction", "work"),
 )
 
 #: Outputs whose energy-rung error is the nut's kick (energy_peak_error), not the torque's.
@@ -1967,6 +1991,8 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             target_torque=s.target,
             max_blows=np.minimum(x["max_blows"], 1) if first_only else x["max_blows"],
             yield_torque=s.yield_torque,
+            # the first blow's numbers the asked outputs read, and nothing else
+            need=[f for o, f in _FIRST_BLOW_FIELDS if o in ctx.outputs] if first_only else None,
         )
         raw: dict[str, Any] = {
             **_tool_values(x, s),
@@ -1980,9 +2006,10 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 final=series.final_torque,
                 blows=series.blows,
                 joint_work=series.joint_work,
+                outputs=ctx.outputs if first_only else None,
             ),
         }
-        reached = np.broadcast_to(series.blows_to_target, n)
+        reached: Any = None if first_only else np.broadcast_to(series.blows_to_target, n)
         if ctx.wants(*_TIME_OUTPUTS[:3]):
             interval = np.asarray(_blow_interval(x, s)[0], dtype=float)
             interval = np.where(np.isfinite(interval) & (interval > 0.0), interval, np.nan)
@@ -1992,8 +2019,9 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
         if s.per is not None:
             raw["yield_preload"] = s.yield_preload
             raw["breaking_load"] = s.breaking_load
-            yielded = np.broadcast_to(series.yield_blow > 0, n)
-            bolt_code = _bolt_code(yielded, series.elastic_demand / s.per, s.breaking_load)
+            if not first_only:  # a bolt verdict is no first-blow output, and no check is read
+                yielded = np.broadcast_to(series.yield_blow > 0, n)
+                bolt_code = _bolt_code(yielded, series.elastic_demand / s.per, s.breaking_load)
     # every column asked for (and the final preload where its verdict is) at once: a
     # refused point is NaN, and a non-finite value is null in a single run's answer (the
     # runner's rule), so NaN here
@@ -2006,7 +2034,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     table[:, dead] = np.nan
     table[~np.isfinite(table)] = np.nan
     values: dict[str, Any] = dict(zip(kept, table, strict=True))
-    if ctx.wants("blows_to_target"):
+    if reached is not None and ctx.wants("blows_to_target"):
         values["blows_to_target"] = _nullable(reached, dead | (reached == 0))
     checks: dict[str, np.ndarray] = {}
     # a point the model refuses reports no check; if every point is refused, no check at all
@@ -2021,7 +2049,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             checks["preload_window"] = np.where(dead, -1, code == 0).astype(np.int8)
     if s.target is not None and reports:
         checks["target_reached"] = np.where(dead, -1, reached > 0).astype(np.int8)
-    if s.per is not None:
+    if s.per is not None and not first_only:
         bolt_code = np.broadcast_to(bolt_code, n)
         if ctx.wants("bolt_verdict"):
             bolt = _BOLT_LABELS[bolt_code]
