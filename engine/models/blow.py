@@ -943,8 +943,24 @@ def _target(x: Mapping[str, Any], per_preload: Any) -> Any:
                 "target_preload needs the thread (thread_diameter) for the tightening relation",
                 field="thread_diameter",
             )
-        return x["target_preload"] * per_preload
+        return _times(x["target_preload"], per_preload)
     return None
+
+
+def _times(a: Any, b: Any) -> Any:
+    """a·b; where each is one number, or one number broadcast over the points (a group
+    :func:`_per_group` resolved once), the product is worked out once and broadcast.
+
+    >>> one = np.broadcast_to(np.array([2.0]), (3,))
+    >>> _times(one, 1.5).tolist(), _times(one, np.array([1.0, 2.0, 3.0])).tolist()
+    ([3.0, 3.0, 3.0], [2.0, 4.0, 6.0])
+    """
+    arrays = [v for v in (a, b) if isinstance(v, np.ndarray)]
+    shapes = {v.shape for v in arrays}
+    if len(shapes) == 1 and all(v.size and not any(v.strides) for v in arrays):
+        first = [v.flat[0] if isinstance(v, np.ndarray) else v for v in (a, b)]
+        return np.broadcast_to(first[0] * first[1], shapes.pop())
+    return a * b
 
 
 def _rate(x: Mapping[str, Any], target: Any, from_joint: Any) -> Any:
@@ -1041,7 +1057,7 @@ class _Setup:
     @property
     def yield_torque(self) -> Any:
         """T_y = (k_G + k_K)·F_M0.2, where the joint's torque–angle line bends over [N·m]."""
-        return math.inf if self.per is None else self.per * self.yield_preload
+        return math.inf if self.per is None else _times(self.per, self.yield_preload)
 
     def problem(self, x: Mapping[str, Any]) -> BlowProblem:
         """The blow of one design."""
