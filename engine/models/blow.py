@@ -955,6 +955,8 @@ def _times(a: Any, b: Any) -> Any:
     >>> _times(one, 1.5).tolist(), _times(one, np.array([1.0, 2.0, 3.0])).tolist()
     ([3.0, 3.0, 3.0], [2.0, 4.0, 6.0])
     """
+    if a.__class__ is not np.ndarray and b.__class__ is not np.ndarray:  # one design
+        return a * b
     arrays = [v for v in (a, b) if isinstance(v, np.ndarray)]
     shapes = {v.shape for v in arrays}
     if len(shapes) == 1 and all(v.size and not any(v.strides) for v in arrays):
@@ -1167,6 +1169,16 @@ def _tool_values(x: Mapping[str, Any], s: _Setup) -> dict[str, Any]:
         }
 
 
+#: The outputs :func:`_blow_values` gives where it is not told which are asked.
+_EVERY_BLOW_VALUE = frozenset(
+    (
+        *("peak_torque", "torque_after_first_blow", "final_torque", "energy_supplied"),
+        *("nut_rotation", "joint_energy_fraction", "energy_into_joint"),
+        *("preload_after_first_blow", "final_preload"),
+    )
+)
+
+
 def _blow_values(
     rung: str,
     s: _Setup,
@@ -1188,30 +1200,27 @@ def _blow_values(
     on the rigid rung, whose joint torque does not follow from an energy balance).
     With ``outputs`` given, only those are worked out (the others' inputs may be None).
     """
-
-    def want(name: str) -> bool:
-        return outputs is None or name in outputs
-
+    want = _EVERY_BLOW_VALUE if outputs is None else outputs
     values: dict[str, Any] = {}
-    if want("peak_torque"):
+    if "peak_torque" in want:
         values["peak_torque"] = peak
-    if want("torque_after_first_blow"):
+    if "torque_after_first_blow" in want:
         values["torque_after_first_blow"] = after
-    if want("final_torque"):
+    if "final_torque" in want:
         values["final_torque"] = final
-    if want("energy_supplied"):
+    if "energy_supplied" in want:
         values["energy_supplied"] = s.energy * blows
     if rung != "rigid":
-        if want("nut_rotation"):
+        if "nut_rotation" in want:
             values["nut_rotation"] = rotation
-        if want("joint_energy_fraction"):
+        if "joint_energy_fraction" in want:
             values["joint_energy_fraction"] = work / s.energy
-        if want("energy_into_joint"):
+        if "energy_into_joint" in want:
             values["energy_into_joint"] = joint_work
     if s.per is not None:
-        if want("preload_after_first_blow"):
+        if "preload_after_first_blow" in want:
             values["preload_after_first_blow"] = after / s.per
-        if want("final_preload"):
+        if "final_preload" in want:
             values["final_preload"] = final / s.per
     return values
 

@@ -396,41 +396,34 @@ def energy_blow(
         flat = k <= 0.0
         # the flat joint's branch only where some point has one (where it picks nothing,
         # np.where(flat, ·, v) is v itself)
-        some_flat = bool(np.any(flat))
+        some_flat = bool(flat.any()) if flat.__class__ is _ARRAY else bool(flat)
         k_rising = np.where(flat, 1.0, k) if some_flat else k
-        rising = _rising_joint_peak(e, c, k_rising, t0, n)
-        tp = rising
+        tp, rot, work = _rising_joint_blow(e, c, k_rising, t0, n, motion)
         if some_flat:
             stops = t0 > n  # a constant joint torque stops the nut only above the drive torque
-            rot_flat = np.where(stops, _constant_torque_rotation(e, c, t0, n), np.nan)
             tp = np.where(flat, np.where(stops, t0, np.nan), tp)
         peak = np.maximum(tp, b_t0)  # NaN where the nut never stops
         torques = (np.where(holds, held, peak), np.where(holds, t0, tp))
         if not motion:
             return (*torques, None, None)
-        rot, work = _rising_joint_motion(rising, t0, k_rising)
         if some_flat:
+            rot_flat = np.where(stops, _constant_torque_rotation(e, c, t0, n), np.nan)
             rot = np.where(flat, rot_flat, rot)
             work = np.where(flat, t0 * rot_flat, work)
         return (*torques, np.where(holds, 0.0, rot), np.where(holds, 0.0, work))
 
 
-def _rising_joint_blow(e: Any, c: Any, k: Any, t0: Any, n: Any) -> tuple[Any, Any, Any]:
-    """(T_p, rotation, work) of :func:`energy_blow`'s balance on a joint of rate k > 0."""
-    tp = _rising_joint_peak(e, c, k, t0, n)
-    return (tp, *_rising_joint_motion(tp, t0, k))
-
-
-def _rising_joint_peak(e: Any, c: Any, k: Any, t0: Any, n: Any) -> Any:
-    """T_p of :func:`energy_blow`'s balance on a joint of rate k > 0."""
+def _rising_joint_blow(
+    e: Any, c: Any, k: Any, t0: Any, n: Any, motion: bool = True
+) -> tuple[Any, Any, Any]:
+    """(T_p, rotation, work) of :func:`energy_blow`'s balance on a joint of rate k > 0
+    (rotation and work None where ``motion`` is False)."""
     a = 0.5 * (1.0 / c + 1.0 / k)
     rhs = e + t0 * t0 / (2.0 * k) - n * t0 / k
-    return n + _sqrt(n * n + rhs / a)
-
-
-def _rising_joint_motion(tp: Any, t0: Any, k: Any) -> tuple[Any, Any]:
-    """(nut rotation (T_p − T_0)/k, work into the joint (T_p² − T_0²)/2k) of that blow."""
-    return (tp - t0) / k, 0.5 * (tp * tp - t0 * t0) / k
+    tp = n + _sqrt(n * n + rhs / a)
+    if not motion:
+        return tp, None, None
+    return tp, (tp - t0) / k, 0.5 * (tp * tp - t0 * t0) / k
 
 
 def _sqrt(v: Any) -> Any:
