@@ -13,7 +13,7 @@ from __future__ import annotations
 import contextlib
 import dataclasses
 import math
-from collections.abc import Mapping
+from collections.abc import Container, Mapping
 from typing import Any
 
 import numpy as np
@@ -943,8 +943,26 @@ def _target(x: Mapping[str, Any], per_preload: Any) -> Any:
                 "target_preload needs the thread (thread_diameter) for the tightening relation",
                 field="thread_diameter",
             )
-        return x["target_preload"] * per_preload
+        return _times(x["target_preload"], per_preload)
     return None
+
+
+def _times(a: Any, b: Any) -> Any:
+    """a·b; where each is one number, or one number broadcast over the points (a group
+    :func:`_per_group` resolved once), the product is worked out once and broadcast.
+
+    >>> one = np.broadcast_to(np.array([2.0]), (3,))
+    >>> _times(one, 1.5).tolist(), _times(one, np.array([1.0, 2.0, 3.0])).tolist()
+    ([3.0, 3.0, 3.0], [2.0, 4.0, 6.0])
+    """
+    if a.__class__ is not np.ndarray and b.__class__ is not np.ndarray:  # one design
+        return a * b
+    arrays = [v for v in (a, b) if isinstance(v, np.ndarray)]
+    shapes = {v.shape for v in arrays}
+    if len(shapes) == 1 and all(v.size and not any(v.strides) for v in arrays):
+        first = [v.flat[0] if isinstance(v, np.ndarray) else v for v in (a, b)]
+        return np.broadcast_to(first[0] * first[1], shapes.pop())
+    return a * b
 
 
 def _rate(x: Mapping[str, Any], target: Any, from_joint: Any) -> Any:
@@ -1041,7 +1059,7 @@ class _Setup:
     @property
     def yield_torque(self) -> Any:
         """T_y = (k_G + k_K)·F_M0.2, where the joint's torque–angle line bends over [N·m]."""
-        return math.inf if self.per is None else self.per * self.yield_preload
+        return math.inf if self.per is None else _times(self.per, self.yield_preload)
 
     def problem(self, x: Mapping[str, Any]) -> BlowProblem:
         """The blow of one design."""
@@ -1151,6 +1169,16 @@ def _tool_values(x: Mapping[str, Any], s: _Setup) -> dict[str, Any]:
         }
 
 
+#: The outputs :func:`_blow_values` gives where it is not told which are asked.
+_EVERY_BLOW_VALUE = frozenset(
+    (
+        *("peak_torque", "torque_after_first_blow", "final_torque", "energy_supplied"),
+        *("nut_rotation", "joint_energy_fraction", "energy_into_joint"),
+        *("preload_after_first_blow", "final_preload"),
+    )
+)
+
+
 def _blow_values(
     rung: str,
     s: _Setup,
@@ -1162,6 +1190,7 @@ def _blow_values(
     final: Any,
     blows: Any,
     joint_work: Any,
+    outputs: Container[str] | None = None,
 ) -> dict[str, Any]:
     """The outputs of the blows (floats for one design, arrays for many).
 
@@ -1169,20 +1198,30 @@ def _blow_values(
     last blow's joint torque, the number of blows and the work of all of them: the
     preloads through the tightening relation (with a thread) and the energy account (not
     on the rigid rung, whose joint torque does not follow from an energy balance).
+    With ``outputs`` given, only those are worked out (the others' inputs may be None).
     """
-    values: dict[str, Any] = {
-        "peak_torque": peak,
-        "torque_after_first_blow": after,
-        "final_torque": final,
-        "energy_supplied": s.energy * blows,
-    }
+    want = _EVERY_BLOW_VALUE if outputs is None else outputs
+    values: dict[str, Any] = {}
+    if "peak_torque" in want:
+        values["peak_torque"] = peak
+    if "torque_after_first_blow" in want:
+        values["torque_after_first_blow"] = after
+    if "final_torque" in want:
+        values["final_torque"] = final
+    if "energy_supplied" in want:
+        values["energy_supplied"] = s.energy * blows
     if rung != "rigid":
-        values["nut_rotation"] = rotation
-        values["joint_energy_fraction"] = work / s.energy
-        values["energy_into_joint"] = joint_work
+        if "nut_rotation" in want:
+            values["nut_rotation"] = rotation
+        if "joint_energy_fraction" in want:
+            values["joint_energy_fraction"] = work / s.energy
+        if "energy_into_joint" in want:
+            values["energy_into_joint"] = joint_work
     if s.per is not None:
-        values["preload_after_first_blow"] = after / s.per
-        values["final_preload"] = final / s.per
+        if "preload_after_first_blow" in want:
+            values["preload_after_first_blow"] = after / s.per
+        if "final_preload" in want:
+            values["final_preload"] = final / s.per
     return values
 
 
@@ -1229,6 +1268,16 @@ _FIRST_BLOW_OUTPUTS = frozenset(
         "yield_preload",
         "breaking_load",
     )
+)
+
+#: The first-blow outputs that read the blow itself, and the :class:`BlowSeries` field
+#: each reads (the others are the tool's, the thread's or the time between blows).
+_FIRST_BLOW_FIELDS = (
+    ("peak_torque", "peak"),
+    ("torque_after_first_blow", "torque_after"),
+    ("preload_after_first_blow", "torque_after"),
+    ("nut_rotation", "rotation"),
+    ("joint_energy_fraction", "work"),
 )
 
 #: Outputs whose energy-rung error is the nut's kick (energy_peak_error), not the torque's.
@@ -1872,18 +1921,16 @@ def _per_group(
         return [float(v) for v in got], False, notes, None
     varied = [k for k in names if isinstance(x.get(k), np.ndarray)]
     n = _points(x)
-    out = np.full((width, *n), np.nan)
-    refused = np.zeros(n, dtype=bool)
-    error: EngineError | None = None
-    if not varied:
+    if not varied:  # one group: its values broadcast over the points (read-only, no copies)
         try:
             got, notes = fn(x)
         except EngineError as exc:
-            refused[...] = True
-            error = exc
-        else:
-            out[:] = np.asarray(got, dtype=float).reshape(width, *([1] * len(n)))
-        return out, refused, notes, error
+            return np.full((width, *n), np.nan), np.ones(n, dtype=bool), notes, exc
+        column = np.asarray(got, dtype=float).reshape(width, *([1] * len(n)))
+        return np.broadcast_to(column, (width, *n)), np.zeros(n, dtype=bool), notes, None
+    out = np.full((width, *n), np.nan)
+    refused = np.zeros(n, dtype=bool)
+    error: EngineError | None = None
     table = np.stack([np.broadcast_to(np.asarray(x[k], dtype=float), n) for k in varied], axis=-1)
     rows, inverse = np.unique(table.reshape(-1, len(varied)), axis=0, return_inverse=True)
     inverse = inverse.reshape(n)
@@ -1969,6 +2016,8 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             target_torque=s.target,
             max_blows=np.minimum(x["max_blows"], 1) if first_only else x["max_blows"],
             yield_torque=s.yield_torque,
+            # the first blow's numbers the asked outputs read, and nothing else
+            need=[f for o, f in _FIRST_BLOW_FIELDS if o in ctx.outputs] if first_only else None,
         )
         raw: dict[str, Any] = {
             **_tool_values(x, s),
@@ -1982,9 +2031,10 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 final=series.final_torque,
                 blows=series.blows,
                 joint_work=series.joint_work,
+                outputs=ctx.outputs if first_only else None,
             ),
         }
-        reached = np.broadcast_to(series.blows_to_target, n)
+        reached: Any = None if first_only else np.broadcast_to(series.blows_to_target, n)
         if ctx.wants(*_TIME_OUTPUTS[:3]):
             interval = np.asarray(_blow_interval(x, s)[0], dtype=float)
             interval = np.where(np.isfinite(interval) & (interval > 0.0), interval, np.nan)
@@ -1994,8 +2044,9 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
         if s.per is not None:
             raw["yield_preload"] = s.yield_preload
             raw["breaking_load"] = s.breaking_load
-            yielded = np.broadcast_to(series.yield_blow > 0, n)
-            bolt_code = _bolt_code(yielded, series.elastic_demand / s.per, s.breaking_load)
+            if not first_only:  # a bolt verdict is no first-blow output, and no check is read
+                yielded = np.broadcast_to(series.yield_blow > 0, n)
+                bolt_code = _bolt_code(yielded, series.elastic_demand / s.per, s.breaking_load)
     # every column asked for (and the final preload where its verdict is) at once: a
     # refused point is NaN, and a non-finite value is null in a single run's answer (the
     # runner's rule), so NaN here
@@ -2008,7 +2059,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     table[:, dead] = np.nan
     table[~np.isfinite(table)] = np.nan
     values: dict[str, Any] = dict(zip(kept, table, strict=True))
-    if ctx.wants("blows_to_target"):
+    if reached is not None and ctx.wants("blows_to_target"):
         values["blows_to_target"] = _nullable(reached, dead | (reached == 0))
     checks: dict[str, np.ndarray] = {}
     # a point the model refuses reports no check; if every point is refused, no check at all
@@ -2023,7 +2074,7 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             checks["preload_window"] = np.where(dead, -1, code == 0).astype(np.int8)
     if s.target is not None and reports:
         checks["target_reached"] = np.where(dead, -1, reached > 0).astype(np.int8)
-    if s.per is not None:
+    if s.per is not None and not first_only:
         bolt_code = np.broadcast_to(bolt_code, n)
         if ctx.wants("bolt_verdict"):
             bolt = _BOLT_LABELS[bolt_code]

@@ -56,6 +56,7 @@ from __future__ import annotations
 import functools
 import math
 import time
+from collections.abc import Collection
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -294,6 +295,7 @@ def energy_blow(
     breakaway: Any = 1.0,
     drive_torque: Any = 0.0,
     held_peak: Any = None,
+    motion: bool = True,
 ) -> tuple[Any, Any, Any, Any]:
     r"""One blow by energy balance, struck inertia neglected (floats or numpy arrays).
 
@@ -325,6 +327,9 @@ def energy_blow(
     held_peak : float, array or None, optional
         :func:`held_blow_peak` of (E, C, N) where the caller has it (a run of blows: the
         same for every blow of a design), [N*m]
+    motion : bool, optional
+        On arrays, False leaves the nut rotation and the work out (None in their places)
+        where the caller reads the torques only; one design always has all four
 
     Returns
     -------
@@ -355,6 +360,9 @@ def energy_blow(
     [440.346, 440.346, 0.38, 95.152]
     >>> [round(v, 3) for v in energy_blow(100.0, 2.0e4, 0.0, 60.0)]  # constant joint torque
     [60.0, 60.0, 1.665, 99.91]
+    >>> [v if v is None else v.round(3).tolist() for v in energy_blow(
+    ...     np.array([100.0, 100.0]), 2.0e4, np.array([1000.0, 0.0]), 60.0, motion=False)]
+    [[440.346, 60.0], [440.346, 60.0], None, None]
     """
     e, c, k, t0, b, n = energy, stiffness, rate, start_torque, breakaway, drive_torque
     if not (  # one design (is_array's test, spelled out: this runs once per blow)
@@ -383,28 +391,38 @@ def energy_blow(
         return peak, tp, rot, work
     with np.errstate(all="ignore"):
         held = held_blow_peak(e, c, n) if held_peak is None else held_peak
-        holds = held <= b * t0
+        b_t0 = b * t0
+        holds = held <= b_t0
         flat = k <= 0.0
-        stops = t0 > n  # a constant joint torque stops the nut only above the drive torque
-        tp, rot, work = _rising_joint_blow(e, c, np.where(flat, 1.0, k), t0, n)
-        rot_flat = np.where(stops, _constant_torque_rotation(e, c, t0, n), np.nan)
-        tp = np.where(flat, np.where(stops, t0, np.nan), tp)
-        rot = np.where(flat, rot_flat, rot)
-        work = np.where(flat, t0 * rot_flat, work)
-        peak = np.maximum(tp, b * t0)  # NaN where the nut never stops
-        return (
-            np.where(holds, held, peak),
-            np.where(holds, t0, tp),
-            np.where(holds, 0.0, rot),
-            np.where(holds, 0.0, work),
-        )
+        # the flat joint's branch only where some point has one (where it picks nothing,
+        # np.where(flat, ·, v) is v itself)
+        some_flat = bool(flat.any()) if flat.__class__ is _ARRAY else bool(flat)
+        k_rising = np.where(flat, 1.0, k) if some_flat else k
+        tp, rot, work = _rising_joint_blow(e, c, k_rising, t0, n, motion)
+        if some_flat:
+            stops = t0 > n  # a constant joint torque stops the nut only above the drive torque
+            tp = np.where(flat, np.where(stops, t0, np.nan), tp)
+        peak = np.maximum(tp, b_t0)  # NaN where the nut never stops
+        torques = (np.where(holds, held, peak), np.where(holds, t0, tp))
+        if not motion:
+            return (*torques, None, None)
+        if some_flat:
+            rot_flat = np.where(stops, _constant_torque_rotation(e, c, t0, n), np.nan)
+            rot = np.where(flat, rot_flat, rot)
+            work = np.where(flat, t0 * rot_flat, work)
+        return (*torques, np.where(holds, 0.0, rot), np.where(holds, 0.0, work))
 
 
-def _rising_joint_blow(e: Any, c: Any, k: Any, t0: Any, n: Any) -> tuple[Any, Any, Any]:
-    """(T_p, rotation, work) of :func:`energy_blow`'s balance on a joint of rate k > 0."""
+def _rising_joint_blow(
+    e: Any, c: Any, k: Any, t0: Any, n: Any, motion: bool = True
+) -> tuple[Any, Any, Any]:
+    """(T_p, rotation, work) of :func:`energy_blow`'s balance on a joint of rate k > 0
+    (rotation and work None where ``motion`` is False)."""
     a = 0.5 * (1.0 / c + 1.0 / k)
     rhs = e + t0 * t0 / (2.0 * k) - n * t0 / k
     tp = n + _sqrt(n * n + rhs / a)
+    if not motion:
+        return tp, None, None
     return tp, (tp - t0) / k, 0.5 * (tp * tp - t0 * t0) / k
 
 
@@ -1404,6 +1422,7 @@ def blow_series(
     deadline: float | None = None,
     yield_torque: Any = math.inf,
     history: bool | None = None,
+    need: Collection[str] | None = None,
 ) -> BlowSeries:
     """Blows by ``method`` until the target or no gain, for one design or many.
 
@@ -1439,6 +1458,10 @@ def blow_series(
         bolt at T_y), [N*m]
     history : bool or None
         Keep each blow's numbers in ``per_blow`` (default: for one design only)
+    need : collection of str or None
+        The fields of the result the caller reads (default: all). On arrays, a series of
+        one blow (``max_blows`` 1, one number) on the energy rung then works out these
+        alone, without the loop's bookkeeping, and leaves the others None
 
     Returns
     -------
@@ -1484,6 +1507,14 @@ def blow_series(
         if method == "simulation":
             raise ValueError("the simulation rung runs one design at a time")
         shape = np.broadcast_shapes(*(np.shape(v) for v in given if v is not None))
+        if (
+            need is not None
+            and method == "energy"
+            and not isinstance(max_blows, np.ndarray)
+            and int(max_blows) == 1
+            and not history
+        ):
+            return _one_energy_blow(p, start_torque, target_torque, yield_torque, need, shape)
 
         def full(v: Any) -> np.ndarray:
             return np.array(np.broadcast_to(np.asarray(v, dtype=float), shape)).ravel()
@@ -1593,6 +1624,75 @@ def blow_series(
     if many:
         found = tuple(v.reshape(shape) for v in found)
     return BlowSeries(*found, steps=steps, first=first, per_blow=per_blow if keep else {})
+
+
+def _one_energy_blow(
+    p: BlowProblem,
+    start_torque: Any,
+    target_torque: Any,
+    yield_torque: Any,
+    need: Collection[str],
+    shape: tuple[int, ...],
+) -> BlowSeries:
+    """:func:`blow_series` of one energy blow on arrays: the fields in ``need`` alone.
+
+    The same steps as the loop's first blow (:func:`energy_blow` with the held peak,
+    bent over at yield by :func:`bolt_joint_torque`, stopped by the same rules), each
+    worked out only where a field in ``need`` reads it; the others are None.
+
+    At 50 rad/s, E = ½·0.02·50² = 25 J and T = √((25 + 60²/2000)/(½(1/2e4 + 1/1000)))
+    = √(26.8/5.25e-4) = 225.937 N·m:
+
+    >>> two = BlowProblem(0.02, 1e-3, 2.0e4, np.array([100.0, 50.0]), 1000.0)
+    >>> s = blow_series(two, 60.0, "energy", max_blows=1, need=("peak", "torque_after"))
+    >>> s.torque_after.round(3).tolist(), s.rotation
+    ([440.346, 225.937], None)
+    >>> full = blow_series(two, 60.0, "energy", max_blows=1)
+    >>> bool((full.torque_after == s.torque_after).all() and (full.peak == s.peak).all())
+    True
+    """
+    e, c, k, b, n = p.energy, p.stiffness, p.rate, p.breakaway, p.drive_torque
+    t0 = np.asarray(start_torque, dtype=float)
+    motion = not {"rotation", "work", "joint_work", "saturated"}.isdisjoint(need)
+    peak, elastic, rot, work = energy_blow(e, c, k, t0, b, n, held_blow_peak(e, c, n), motion)
+    fields: dict[str, Any] = dict.fromkeys(
+        (
+            *("peak", "rotation", "torque_after", "work", "final_torque", "joint_work"),
+            *("blows", "blows_to_target", "saturated", "yield_blow", "elastic_demand"),
+        )
+    )
+
+    def put(name: str, v: Any) -> None:  # an array of the designs' shape
+        fields[name] = np.array(np.broadcast_to(v, shape)) if np.shape(v) != shape else v
+
+    new = bolt_joint_torque(elastic, yield_torque)
+    past: Any = None
+    hit: Any = None
+    if not {"yield_blow", "elastic_demand", "saturated"}.isdisjoint(need):
+        past = elastic >= yield_torque  # the bolt yields
+    if not {"blows_to_target", "saturated"}.isdisjoint(need):
+        hit = np.zeros(shape, dtype=bool) if target_torque is None else new >= target_torque
+    for name, v in (("peak", peak), ("rotation", rot), ("torque_after", new), ("work", work)):
+        if name in need:
+            put(name, v)
+    if "final_torque" in need:
+        put("final_torque", new)
+    if "joint_work" in need:
+        put("joint_work", 0.0 + work)  # the loop's sum from 0 over one blow
+    if "blows" in need:
+        fields["blows"] = np.ones(shape, dtype=np.int64)
+    reached = None if hit is None else np.where(hit, 1, 0).astype(np.int64)
+    yielded = None if past is None else np.where(past, 1, 0).astype(np.int64)
+    if "blows_to_target" in need:
+        put("blows_to_target", reached)
+    if "yield_blow" in need:
+        put("yield_blow", yielded)
+    if "elastic_demand" in need:
+        put("elastic_demand", np.where(past, elastic, np.nan))
+    if "saturated" in need:
+        stuck = blow_gains_nothing(rot, new, t0)
+        put("saturated", stuck & (reached == 0) & (yielded == 0))
+    return BlowSeries(**fields)
 
 
 def _at(v: Any, at: Any) -> Any:
