@@ -302,7 +302,14 @@ class DaskExecutor:
                         dashboard_address="127.0.0.1:0",
                         silence_logs=40,
                     )
-                    self._client = Client(self._cluster, set_as_default=False)
+                    # results fetched from the worker that holds them, not relayed by the
+                    # scheduler (Dask's default for a client outside the cluster): the
+                    # scheduler runs in this process, so a relayed chunk was decrypted,
+                    # encrypted again and decrypted once more here; the workers are on
+                    # loopback, so the client reaches them as the scheduler does
+                    self._client = Client(
+                        self._cluster, set_as_default=False, direct_to_workers=True
+                    )
                     # the local workers share this machine with the service: lower their
                     # priority so single calculations get the cores first
                     self._client.run(os.nice, 10)
