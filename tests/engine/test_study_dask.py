@@ -91,6 +91,23 @@ def test_a_local_cluster_gives_the_in_process_result(reference: StudyRun) -> Non
         scheduler.handlers["gather"] = counted
         _equal(reference, run_study(RARE, _study(), executor))
         assert relayed == []
+
+        def faults() -> int:
+            # a chunk's column made and freed 50 times: from the heap, its pages are
+            # faulted in once; from a fresh mapping each time, 128 pages each time
+            import resource
+
+            import numpy
+
+            before = resource.getrusage(resource.RUSAGE_THREAD).ru_minflt
+            for _ in range(50):
+                column = numpy.ones(LOOP_CHUNK * 256)
+                del column
+            return resource.getrusage(resource.RUSAGE_THREAD).ru_minflt - before
+
+        per_worker = executor.client().run(faults)
+        assert len(per_worker) == 2
+        assert all(n < 10 * 128 for n in per_worker.values()), per_worker
     finally:
         executor.close()
 
