@@ -1,5 +1,8 @@
 """Design studies as jobs: ``POST <model path>/study`` → 202, then poll, fetch, cancel.
 
+A client polls ``GET /jobs/{id}``, or asks it to ``wait`` (up to ``MAX_WAIT_S``) for the
+job to end: the answer comes the moment the job's end is stored, no poll interval added.
+
 A study (:mod:`engine.studies.plan`) can take minutes, so it never runs in a request:
 the POST validates it, draws nothing yet, and returns ``202`` with the job's
 address. A small pool of job threads drives studies; a study of at most
@@ -25,6 +28,7 @@ or negative count or time) stops the service at start-up, naming the variable.
 
 from __future__ import annotations
 
+import asyncio
 import contextlib
 import csv
 import ctypes
@@ -46,7 +50,7 @@ from pathlib import Path
 from typing import Annotated, Any, Literal
 
 import numpy as np
-from fastapi import APIRouter, HTTPException, Request, Response
+from fastapi import APIRouter, HTTPException, Query, Request, Response
 from fastapi.concurrency import run_in_threadpool
 from fastapi.responses import FileResponse, JSONResponse, StreamingResponse
 from pydantic import BaseModel, ConfigDict, Field, WithJsonSchema, create_model
@@ -92,6 +96,8 @@ WATCHDOG_S = 1.0
 NO_WORKERS_S = 10.0
 #: Past its budget, how long a study may wait for the chunk that would end it [s].
 BUDGET_GRACE_S = 2.0
+#: The longest ``GET /jobs/{id}?wait=`` holds its answer for the job to end [s].
+MAX_WAIT_S = 30.0
 
 log = logging.getLogger("service.studies")
 
@@ -261,6 +267,10 @@ class Job:
     dask: DaskExecutor | None = None
     #: Since when (time.monotonic) the watchdog has seen the cluster without a worker.
     no_workers_since: float | None = None
+    #: True once the job's end is in the store (``finished`` is set before it is written).
+    stored_end: bool = False
+    #: Called once the job's end is in the store (:meth:`Studies.settled`'s waits).
+    waiters: list[Callable[[], None]] = field(default_factory=list)
 
     @property
     def active(self) -> bool:
@@ -605,7 +615,43 @@ class Studies:
             )
         except sqlite3.Error as exc:
             log.warning("study %s: the job store did not take its end: %s", job.id, exc)
+        with self.lock:
+            job.stored_end = True
+            waiters = list(job.waiters)
+        for wake in waiters:
+            wake()
         return True
+
+    async def settled(self, job_id: str, seconds: float) -> None:
+        """Return once the job is no longer queued or running (or gone), or after
+        ``seconds``: woken by its end where this process runs it, and reading the store
+        every ``BEAT_S`` otherwise (a job of another process, a cancel asked there)."""
+        loop = asyncio.get_running_loop()
+        deadline = loop.time() + seconds
+        ended = asyncio.Event()
+
+        def wake() -> None:
+            with contextlib.suppress(RuntimeError):  # the loop closed: nobody waits
+                loop.call_soon_threadsafe(ended.set)
+
+        with self.lock:
+            job = self.jobs.get(job_id)
+            if job is not None:
+                if job.stored_end:
+                    return
+                job.waiters.append(wake)
+        try:
+            while (left := deadline - loop.time()) > 0:
+                with contextlib.suppress(TimeoutError):
+                    await asyncio.wait_for(ended.wait(), min(BEAT_S, left))
+                    return
+                record = await run_in_threadpool(self.store.get, job_id)
+                if record is None or record["state"] not in ACTIVE:
+                    return
+        finally:
+            if job is not None:
+                with self.lock, contextlib.suppress(ValueError):
+                    job.waiters.remove(wake)
 
     def _work(self, job: Job, spec: ModelSpec, study: Study, p: Plan | None = None) -> None:
         try:
@@ -1024,10 +1070,31 @@ def study_router(models: Sequence[ModelSpec], studies: Studies) -> APIRouter:
         "/jobs/{job_id}",
         operation_id="get_job",
         summary="A study's state, progress and, when done, result",
+        description=(
+            "With `wait`, the answer waits up to that many seconds for an unfinished job "
+            "to end, and comes as soon as it has: a client learns of the end at once, "
+            "without polling."
+        ),
         responses=_404,
     )
-    def get_job(job_id: str, request: Request) -> dict[str, Any]:
-        return studies.get(job_id, _keyed(request))
+    async def get_job(
+        job_id: str,
+        request: Request,
+        wait: Annotated[
+            float,
+            Query(
+                ge=0,
+                le=MAX_WAIT_S,
+                description=f"seconds to wait for an unfinished job to end, 0…{MAX_WAIT_S:g}",
+            ),
+        ] = 0.0,
+    ) -> dict[str, Any]:
+        client = _keyed(request)
+        body = await run_in_threadpool(studies.get, job_id, client)
+        if wait > 0 and body["state"] in ACTIVE:
+            await studies.settled(job_id, wait)
+            body = await run_in_threadpool(studies.get, job_id, client)
+        return body
 
     @router.delete(
         "/jobs/{job_id}",

@@ -9,18 +9,27 @@ from ...client import AuthenticatedClient, Client
 from ...models.error_response import ErrorResponse
 from ...models.get_job_response_get_job import GetJobResponseGetJob
 from ...models.http_validation_error import HTTPValidationError
-from ...types import Response
+from ...types import UNSET, Response, Unset
 
 
 def _get_kwargs(
     job_id: str,
+    *,
+    wait: float | Unset = 0.0,
 ) -> dict[str, Any]:
+
+    params: dict[str, Any] = {}
+
+    params["wait"] = wait
+
+    params = {k: v for k, v in params.items() if v is not UNSET and v is not None}
 
     _kwargs: dict[str, Any] = {
         "method": "get",
         "url": "/api/v1/jobs/{job_id}".format(
             job_id=quote(str(job_id), safe=""),
         ),
+        "params": params,
     }
 
     return _kwargs
@@ -65,11 +74,16 @@ def sync_detailed(
     job_id: str,
     *,
     client: AuthenticatedClient | Client,
+    wait: float | Unset = 0.0,
 ) -> Response[ErrorResponse | GetJobResponseGetJob | HTTPValidationError]:
     """A study's state, progress and, when done, result
 
+     With `wait`, the answer waits up to that many seconds for an unfinished job to end, and comes as
+    soon as it has: a client learns of the end at once, without polling.
+
     Args:
         job_id (str):
+        wait (float | Unset): seconds to wait for an unfinished job to end, 0…30 Default: 0.0.
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -81,6 +95,7 @@ def sync_detailed(
 
     kwargs = _get_kwargs(
         job_id=job_id,
+        wait=wait,
     )
 
     response = client.get_httpx_client().request(
@@ -94,11 +109,16 @@ def sync(
     job_id: str,
     *,
     client: AuthenticatedClient | Client,
+    wait: float | Unset = 0.0,
 ) -> ErrorResponse | GetJobResponseGetJob | HTTPValidationError | None:
     """A study's state, progress and, when done, result
 
+     With `wait`, the answer waits up to that many seconds for an unfinished job to end, and comes as
+    soon as it has: a client learns of the end at once, without polling.
+
     Args:
         job_id (str):
+        wait (float | Unset): seconds to wait for an unfinished job to end, 0…30 Default: 0.0.
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -111,6 +131,7 @@ def sync(
     return sync_detailed(
         job_id=job_id,
         client=client,
+        wait=wait,
     ).parsed
 
 
@@ -118,11 +139,16 @@ async def asyncio_detailed(
     job_id: str,
     *,
     client: AuthenticatedClient | Client,
+    wait: float | Unset = 0.0,
 ) -> Response[ErrorResponse | GetJobResponseGetJob | HTTPValidationError]:
     """A study's state, progress and, when done, result
 
+     With `wait`, the answer waits up to that many seconds for an unfinished job to end, and comes as
+    soon as it has: a client learns of the end at once, without polling.
+
     Args:
         job_id (str):
+        wait (float | Unset): seconds to wait for an unfinished job to end, 0…30 Default: 0.0.
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -134,6 +160,7 @@ async def asyncio_detailed(
 
     kwargs = _get_kwargs(
         job_id=job_id,
+        wait=wait,
     )
 
     response = await client.get_async_httpx_client().request(**kwargs)
@@ -145,11 +172,16 @@ async def asyncio(
     job_id: str,
     *,
     client: AuthenticatedClient | Client,
+    wait: float | Unset = 0.0,
 ) -> ErrorResponse | GetJobResponseGetJob | HTTPValidationError | None:
     """A study's state, progress and, when done, result
 
+     With `wait`, the answer waits up to that many seconds for an unfinished job to end, and comes as
+    soon as it has: a client learns of the end at once, without polling.
+
     Args:
         job_id (str):
+        wait (float | Unset): seconds to wait for an unfinished job to end, 0…30 Default: 0.0.
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -163,5 +195,6 @@ async def asyncio(
         await asyncio_detailed(
             job_id=job_id,
             client=client,
+            wait=wait,
         )
     ).parsed
