@@ -568,7 +568,11 @@ ASSUMPTIONS = (
 
 
 def _forward_values(
-    x: Mapping[str, Any], as_built: bool = True, peak: bool = True, forces: bool = True
+    x: Mapping[str, Any],
+    as_built: bool = True,
+    peak: bool = True,
+    forces: bool = True,
+    wanted: frozenset[str] | None = None,
 ) -> dict[str, Any]:
     """Every output of clutch.ball, on floats or arrays (one input may be an array).
 
@@ -576,6 +580,8 @@ def _forward_values(
     sweeps that ask only for the paper's outputs; ``peak=False`` leaves out only the
     outputs at the characteristic's peak (:data:`asbuilt.PEAK_OUTPUTS`);
     ``forces=False`` the ball forces (:data:`_BALL_FORCES`), which no check reads.
+    ``wanted``: the helical spring's index, Wahl factor, stress and rate only where
+    named (an array path whose caller reads no checks); None gives them all.
     """
     spring = asbuilt.Spring(x)
     alpha, f, kr = x["groove_angle"], x["flank_friction"], x["load_factor"]
@@ -607,11 +613,22 @@ def _forward_values(
         )
     if spring.kind == "helical":
         d0, dm = x["spring_wire_diameter"], x["spring_mean_diameter"]
-        index = spring_index(dm, d0)
-        values["spring_index"] = index
-        values["wahl_factor"] = wahl_factor(index)
-        values["spring_shear_stress"] = spring_shear_stress(force, dm, d0, x["stress_correction"])
-        values["spring_rate"] = spring_rate(spring.shear_modulus, d0, dm, x["spring_active_coils"])
+
+        def want(name: str) -> bool:
+            return wanted is None or name in wanted
+
+        if want("spring_index") or want("wahl_factor"):
+            index = spring_index(dm, d0)
+            values["spring_index"] = index
+            values["wahl_factor"] = wahl_factor(index)
+        if want("spring_shear_stress"):
+            values["spring_shear_stress"] = spring_shear_stress(
+                force, dm, d0, x["stress_correction"]
+            )
+        if want("spring_rate"):
+            values["spring_rate"] = spring_rate(
+                spring.shear_modulus, d0, dm, x["spring_active_coils"]
+            )
     if as_built:
         values.update(asbuilt.extra_values(x, spring, limit, peak))
     return values
@@ -783,20 +800,26 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
         spring = asbuilt.Spring(x)
         # the as-built values only where an output or a check reads them, and the
         # 81-point characteristic only where one needs its peak
-        as_built = ctx.wants(*_AS_BUILT) or asbuilt.verdicts_read_values(x, spring)
+        reads = ctx.checks and asbuilt.verdicts_read_values(x, spring)
+        as_built = ctx.wants(*_AS_BUILT) or reads
         peak = not helical or x["face_friction"] is not None or ctx.wants(*asbuilt.PEAK_OUTPUTS)
         forces = ctx.wants(*_BALL_FORCES)
         if as_built:
             values = _chunked_forward(x, peak, forces)
             skip: tuple[str, ...] = () if peak else asbuilt.PEAK_OUTPUTS
         else:  # the paper's outputs, and the margin the self-locking check reads
-            values = {
-                **_forward_values(x, as_built=False, forces=forces),
-                "self_locking_margin": asbuilt.margin(x),
-            }
+            # a caller reading no checks (a sweep) gets the outputs it asked for alone
+            wanted = None if ctx.checks else ctx.outputs
+            values = _forward_values(x, as_built=False, forces=forces, wanted=wanted)
+            if ctx.checks or ctx.wants("self_locking_margin"):
+                values["self_locking_margin"] = asbuilt.margin(x)
             skip = _AS_BUILT
         skip += () if forces else _BALL_FORCES
-        check_arrays = {k: _verdicts(c, ok) for k, c in _ball_verdicts(x, values, spring).items()}
+        check_arrays = (
+            {k: _verdicts(c, ok) for k, c in _ball_verdicts(x, values, spring).items()}
+            if ctx.checks
+            else {}
+        )
         values = _masked({k: v for k, v in values.items() if v is not None}, ok)
     return Result(
         values=_with_absent(values, BALL_CLUTCH.outputs, skip),
@@ -1064,12 +1087,20 @@ def _required_force(x: Mapping[str, Any]) -> Any:
     )
 
 
-def _setting_values(x: Mapping[str, Any], stresses: bool = True) -> dict[str, Any]:
+def _setting_values(
+    x: Mapping[str, Any], stresses: bool = True, wanted: frozenset[str] | None = None
+) -> dict[str, Any]:
     """Every output of clutch.ball_setting, on floats or arrays.
 
     ``stresses=False`` leaves out the wire stresses, for an array path whose asked
-    outputs and checks do not read them (no allowable stress given).
+    outputs and checks do not read them (no allowable stress given). ``wanted``: the
+    outputs past the required force only where named (an array path whose caller reads
+    no checks: the required wire's fourth root only where asked); None gives them all.
     """
+
+    def want(*names: str) -> bool:
+        return wanted is None or any(n in wanted for n in names)
+
     # the material's modulus where one is chosen, as the as-built outputs take it
     g = asbuilt.Spring(x).shear_modulus
     dm, ip = x["spring_mean_diameter"], x["spring_active_coils"]
@@ -1077,14 +1108,17 @@ def _setting_values(x: Mapping[str, Any], stresses: bool = True) -> dict[str, An
     out: dict[str, Any] = {"required_spring_force": force}
     wire, deflection = x["spring_wire_diameter"], x["spring_deflection"]
     if wire is not None:
-        out["spring_rate"] = spring_rate(g, wire, dm, ip)
-        out["required_deflection"] = spring_deflection_for_force(force, g, wire, dm, ip)
-        out["spring_index"] = spring_index(dm, wire)
-        if stresses:
+        if want("spring_rate"):
+            out["spring_rate"] = spring_rate(g, wire, dm, ip)
+        if want("required_deflection"):
+            out["required_deflection"] = spring_deflection_for_force(force, g, wire, dm, ip)
+        if want("spring_index"):
+            out["spring_index"] = spring_index(dm, wire)
+        if stresses and want("spring_shear_stress"):
             out["spring_shear_stress"] = spring_shear_stress(
                 force, dm, wire, x["stress_correction"]
             )
-    if deflection is not None:
+    if deflection is not None and want(*_REQUIRED_WIRE):
         new_wire = wire_diameter_for_force(force, g, dm, ip, deflection)
         out["required_wire_diameter"] = new_wire
         new_index = spring_index(dm, new_wire)
@@ -1276,14 +1310,16 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         ok, refusals = _feasible(x, wire if helical else None)
         if helical:
             stresses = x["allowable_shear_stress"] is not None or ctx.wants(*_STRESSES)
-            v: dict[str, Any] = dict(_setting_values(x, stresses))
+            # a caller reading no checks (a sweep) gets the outputs it asked for alone
+            wanted = None if ctx.checks else ctx.outputs
+            v: dict[str, Any] = dict(_setting_values(x, stresses, wanted))
         else:
             force = _required_force(x)
             v = {
                 "required_spring_force": force,
                 "required_deflection": asbuilt.disc_breakaway_setting(x, force),
             }
-        if _setting_read(x, ctx):
+        if _setting_read(x, ctx) if ctx.checks else ctx.wants(*_AS_BUILT_SETTING):
             # the setting's lines hold 81 values per point: a chunk of points at a time
             v.update(
                 _in_chunks(
@@ -1294,9 +1330,11 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 )
             )
         v.update(drive)
-        check_arrays = {
-            k: _verdicts(c, ok) for k, c in _setting_verdicts(x, v, drive, target_given).items()
-        }
+        check_arrays = (
+            {k: _verdicts(c, ok) for k, c in _setting_verdicts(x, v, drive, target_given).items()}
+            if ctx.checks
+            else {}
+        )
         values = _masked(v, ok)
     return Result(
         values=_with_absent(values, BALL_CLUTCH_SETTING.outputs),
@@ -1307,6 +1345,12 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
 
 
+#: The outputs of the wire a given compression needs (clutch.ball_setting).
+_REQUIRED_WIRE = (
+    "required_wire_diameter",
+    "required_wire_spring_index",
+    "required_wire_shear_stress",
+)
 #: The wire stresses of clutch.ball_setting (read by a check only with an allowable stress).
 _STRESSES = ("spring_shear_stress", "required_wire_shear_stress")
 #: clutch.ball_setting's outputs from the as-built setting (:func:`asbuilt.setting_values`).

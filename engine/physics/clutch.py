@@ -77,6 +77,7 @@ the face (:func:`residual_torque`); sizing from the drive
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import Any, Literal
 
 import numpy as np
@@ -104,6 +105,23 @@ def _out(value: Any) -> FloatArray:
         return float(value)
     arr = np.asarray(value, dtype=float)
     return float(arr) if arr.ndim == 0 else arr
+
+
+def _where_pushing(push: np.ndarray, value: Callable[[Any], Any]) -> FloatArray:
+    """``value(push)`` where the push is positive, NaN where it is not (the balls wedge).
+
+    A positive push given as one number (the groove fixed, a torque or force varied)
+    needs no mask: the same numbers without a pass over the points.
+
+    >>> _where_pushing(np.asarray(0.5), lambda p: 2.0 * p)
+    1.0
+    >>> _where_pushing(np.array([0.5, -0.1]), lambda p: 2.0 * p).tolist()
+    [1.0, nan]
+    """
+    with np.errstate(divide="ignore", invalid="ignore"):
+        if push.ndim == 0 and push > 0.0:
+            return _out(value(push))
+        return _out(np.where(push > 0.0, value(np.where(push > 0.0, push, 1.0)), np.nan))
 
 
 # --------------------------------------------------------------------------
@@ -579,16 +597,15 @@ def torque_limit(
         combined_push_factor(groove_angle, flank_friction, driving_groove_angle, construction)
     )
     share = torque_sharing(arrangement, ball_count, load_factor)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        torque = np.where(
-            push > 0.0,
+    return _where_pushing(
+        push,
+        lambda p: (
             np.asarray(share)
             * np.asarray(ball_circle_diameter)
             * np.asarray(spring_force)
-            / (2.0 * np.where(push > 0.0, push, 1.0)),
-            np.nan,
-        )
-    return _out(torque)
+            / (2.0 * p)
+        ),
+    )
 
 
 def spring_force_for_torque(
@@ -649,12 +666,10 @@ def spring_force_for_torque(
         combined_push_factor(groove_angle, flank_friction, driving_groove_angle, construction)
     )
     share = torque_sharing(arrangement, ball_count, load_factor)
-    force = np.where(
-        push > 0.0,
-        2.0 * np.asarray(torque) * push / (np.asarray(ball_circle_diameter) * share),
-        np.nan,
+    return _where_pushing(
+        push,
+        lambda p: 2.0 * np.asarray(torque) * p / (np.asarray(ball_circle_diameter) * share),
     )
-    return _out(force)
 
 
 def spring_deflection_for_force(

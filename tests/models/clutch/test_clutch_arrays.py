@@ -497,3 +497,43 @@ def test_long_setting_columns_are_evaluated_in_chunks_with_the_same_numbers(monk
     for name in ("required_peak_setting", "suggested_wire_diameter", "suggested_wire_setting"):
         assert np.isfinite(got[name]).any(), name
         np.testing.assert_array_equal(got[name], whole[name], err_msg=name)
+
+
+@pytest.mark.parametrize(
+    ("spec", "extra", "outs", "skipped"),
+    [
+        # the paper's outputs: not the wire stress, index or rate nobody asked for
+        (
+            BALL_CLUTCH,
+            {},
+            ("spring_force", "torque_limit"),
+            ("spring_shear_stress", "spring_index", "spring_rate", "self_locking_margin"),
+        ),
+        # an allowable stress: its check would read the stresses and the peak setting,
+        # but a caller reading no checks gets neither, nor the required wire's root
+        (
+            BALL_CLUTCH_SETTING,
+            {"allowable_shear_stress": 3e8},
+            ("required_spring_force", "required_deflection"),
+            ("required_wire_diameter", "spring_shear_stress", "peak_setting_stress_max"),
+        ),
+    ],
+)
+def test_a_caller_reading_no_checks_gets_the_asked_outputs_alone_and_the_same(
+    spec, extra, outs, skipped
+):
+    base = {**spec.examples[0], **extra}
+    cols = _spread(spec, base, 60, 0.3, seed=11)
+    x, _ = spec.validate(base)
+    lean = spec.vectorized(
+        {**x, **cols}, RunContext("closed_form", frozenset(outs), 0.01, checks=False)
+    )
+    full = spec.vectorized({**x, **cols}, RunContext("closed_form", frozenset(outs), 0.01))
+    slow = evaluate_chunk(_loop(spec), base, cols, list(outs), fidelity="closed_form")
+    for name in outs:
+        np.testing.assert_array_equal(lean.values[name], full.values[name], err_msg=name)
+        np.testing.assert_array_equal(lean.values[name], slow.values[name], err_msg=name)
+    assert lean.check_arrays == {} and full.check_arrays
+    for name in skipped:  # computed for the checks, left out without them
+        assert lean.values.get(name) is None, name
+        assert full.values.get(name) is not None, name
