@@ -660,14 +660,18 @@ class _Refusals:
         """Refuse where ``where`` holds, naming ``field`` and the allowed range
         (``message(*args)``: made only when one design is refused)."""
         if self.many:
-            self.mask = self.mask | where
+            # a condition on fixed inputs alone is one value: where it refuses nothing the
+            # mask stays as it is, without a pass over the points
+            if isinstance(where, np.ndarray) or where:
+                self.mask = self.mask | where
         elif where:
             raise InputOutOfRange(message(*args), field=field)
 
     def arithmetic(self, where: Any, what: str) -> None:
         """Refuse where the arithmetic fails (alone: as Python's float arithmetic does)."""
         if self.many:
-            self.mask = self.mask | where
+            if isinstance(where, np.ndarray) or where:
+                self.mask = self.mask | where
         elif where:
             raise ZeroDivisionError(what)
 
