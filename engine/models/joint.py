@@ -894,17 +894,27 @@ def _solve(
     col: Callable[[str], Any],
     b: Mapping[str, Any],
     refusals: _Refusals,
+    outputs: frozenset[str] | None = None,
 ) -> dict[str, Any]:
     """The VDI 2230-1 chain R0–R13 for the inputs ``x`` and the bolt columns ``b``.
 
     ``col(name)`` is an input as a float (one design) or a float array (many); text and
     choice inputs are read from ``x``. Returns every output under its name plus the
     intermediate values the checks, notes and series need (keys starting with ``_``), and
-    per check ``(applies, passes)`` under ``_checks``.
+    per check ``(applies, passes)`` under ``_checks``. Given ``outputs`` (an array run
+    that reads no check), a late step that no output in it needs and that refuses no
+    point is left out: its outputs are NaN and ``_checks`` is empty.
     """
 
     def col_or(name: str, other: Any) -> Any:
         return other if x.get(name) is None else col(name)
+
+    def need(*names: str) -> bool:
+        """Whether a step whose outputs are ``names`` (and the checks) is read."""
+        return outputs is None or any(name in outputs for name in names)
+
+    nan: Any = math.nan
+    full = outputs is None
 
     joint_type = str(x["joint_type"])
     d, d_w, d_h, pitch = b["diameter"], b["bearing_outer_diameter"], b["hole_diameter"], b["pitch"]
@@ -1203,23 +1213,25 @@ def _solve(
     # R5/R6 required window, R7 against it ---------------------------------------------------------
     alpha_req = _finite_or(alpha_a, method_factor)
     req_min = jt.minimum_assembly_preload(f_kerf, f_a, phi_n, f_z, th_loss)
-    req_max = jt.required_preload_max(alpha_req, req_min)
-    fa_limit = jt.max_working_load(f_mzul, alpha_req, f_kerf_grip, loss, phi_n, k_ab, f_kp)
-    fa_sep_any = jt.separation_load(f_mzul, loss, phi_n, k_ab)
-    f_kr_raw = jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)
+    req_max = jt.required_preload_max(alpha_req, req_min) if need("required_preload_max") else nan
+    fa_limit = nan
+    if need("max_working_load"):
+        fa_limit = jt.max_working_load(f_mzul, alpha_req, f_kerf_grip, loss, phi_n, k_ab, f_kp)
+    fa_sep_any = jt.separation_load(f_mzul, loss, phi_n, k_ab) if full else nan
+    f_kr_raw = jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)  # a warning reads it
     # a joint that opens has no clamp force left (the linear diagram's negative value is not
     # a force): F_KR,min and S_G are held at 0 there and the checks fail on the raw value
-    f_kr_min = _larger(f_kr_raw, 0.0)
-    fa_sep = jt.separation_load(fm_min, loss, phi_n, k_ab)
-    checks: dict[str, tuple[Any, Any]] = {
-        "R7_window_fits": (True, req_max <= f_mzul * (1.0 + 1e-12)),
-        "separation_avoidable": (True, f_a < fa_sep_any),
-        "residual_clamp_force": (
+    f_kr_min = _larger(f_kr_raw, 0.0) if need("residual_clamp_force_min", "slip_safety") else nan
+    fa_sep = jt.separation_load(fm_min, loss, phi_n, k_ab) if need("separation_load") else nan
+    checks: dict[str, tuple[Any, Any]] = {}
+    if full:
+        checks["R7_window_fits"] = (True, req_max <= f_mzul * (1.0 + 1e-12))
+        checks["separation_avoidable"] = (True, f_a < fa_sep_any)
+        checks["residual_clamp_force"] = (
             True,
             (f_kr_raw >= f_kerf * (1.0 - 1e-12)) & (f_kr_raw > 0.0),
-        ),
-    }
-    if torque_given:
+        )
+    if full and torque_given:
         checks["R7_max_below_permissible"] = (True, fm_max <= f_mzul * (1.0 + 1e-12))
 
     # R8 working stress ---------------------------------------------------------------------------
@@ -1232,9 +1244,10 @@ def _solve(
         | _overflows_squared(jt.TORSION_REDUCTION_IN_SERVICE * stress.torsional),
         "σ_red,B overflows",
     )
-    s_f = jt.yield_safety(yield_t, stress.equivalent)
-    checks["R8_working_stress"] = (True, s_f >= 1.0)
-    if nut is not None:
+    s_f = jt.yield_safety(yield_t, stress.equivalent) if need("yield_safety") else nan
+    if full:
+        checks["R8_working_stress"] = (True, s_f >= 1.0)
+    if full and nut is not None:
         checks["nut_strength"] = (
             f_nut == f_nut,  # ISO 898-2 covers the size
             (f_mzul_bolt <= f_nut) & (f_s_max <= f_nut * (1.0 + 1e-12)),
@@ -1245,28 +1258,34 @@ def _solve(
     f_strip: Any = math.nan
     if nut is not None and nut.pairs is False and nut_part is not None and tensile is not None:
         f_strip = _plain(fa.nut_thread_resistance(d, pitch, d2, nut_part, nut, f_nut, tensile))
-        checks["nut_thread_stripping"] = (f_strip == f_strip, f_strip >= f_s_max)
+        if full:
+            checks["nut_thread_stripping"] = (f_strip == f_strip, f_strip >= f_s_max)
 
     # R9 alternating stress -----------------------------------------------------------------------
+    fatigue = ("stress_amplitude", "endurance_limit", "fatigue_safety")
     phi_b = phi_n
-    if eccentric:
+    if eccentric and need("additional_bolt_stress", *fatigue):
         phi_b = jt.eccentric_stress_factor(
             phi_n, lever, s_sym, beta_p, beta_s, b["stress_diameter"]
         )
-    sigma_a = jt.stress_amplitude(phi_b, f_a, f_a_min, a_s)
-    f_sm = jt.mean_bolt_force(fm_max, phi_n, f_a, f_a_min)
-    sigma_as = jt.endurance_limit(d, str(x["rolling"]), f_sm, a_s * yield_strength)
-    s_d = jt.fatigue_safety(sigma_as, sigma_a)
-    checks["R9_fatigue"] = (sigma_a > 0.0, s_d >= 1.2)
-    # §5.3.2: σ_SAb and Φ*_en hold while the interface stays closed (F_A ≤ F_Aab at F_M,min)
-    checks["opening_limit"] = (eccentric, f_a <= fa_sep * (1.0 + 1e-12))
+    sigma_a = sigma_as = s_d = nan
+    if need(*fatigue):
+        sigma_a = jt.stress_amplitude(phi_b, f_a, f_a_min, a_s)
+        f_sm = jt.mean_bolt_force(fm_max, phi_n, f_a, f_a_min)
+        sigma_as = jt.endurance_limit(d, str(x["rolling"]), f_sm, a_s * yield_strength)
+        s_d = jt.fatigue_safety(sigma_as, sigma_a)
+    if full:
+        checks["R9_fatigue"] = (sigma_a > 0.0, s_d >= 1.2)
+        # §5.3.2: σ_SAb and Φ*_en hold while the interface stays closed (F_A ≤ F_Aab at F_M,min)
+        checks["opening_limit"] = (eccentric, f_a <= fa_sep * (1.0 + 1e-12))
 
     # R12 slipping -----------------------------------------------------------------------
-    s_g = jt.slip_safety(f_kr_min, q_f, mu_t, f_q, m_y, q_m, r_a)
+    s_g = jt.slip_safety(f_kr_min, q_f, mu_t, f_q, m_y, q_m, r_a) if need("slip_safety") else nan
     tau_q: Any = math.nan
     s_a: Any = math.nan
     p_q: Any = math.nan
-    if x.get("fitted_diameter") is not None:
+    fitted = ("fitted_shear_stress", "fitted_shear_safety", "fitted_bearing_pressure")
+    if x.get("fitted_diameter") is not None and need(*fitted):
         d_tau = col("fitted_diameter")
         h_min: Any = math.inf
         for h in thick:
@@ -1275,15 +1294,19 @@ def _solve(
         tau_q = jt.fitted_shank_shear_stress(f_q, q_f, d_tau)
         s_a = jt.fitted_shear_safety(math.nan if r_m is None else r_m, tau_q)
         p_q = jt.fitted_bearing_pressure(f_q, d_tau, h_min)
-        checks["R12_fitted_shear"] = ((f_q > 0.0) & (s_a == s_a), s_a >= 1.1)
-    need = jt.required_slip_safety(f_a, f_a_min)
-    checks["R12_slip"] = ((f_q > 0.0) | (m_y > 0.0), s_g >= need)
+        if full:
+            checks["R12_fitted_shear"] = ((f_q > 0.0) & (s_a == s_a), s_a >= 1.1)
+    need_slip: Any = nan
+    if full:
+        need_slip = jt.required_slip_safety(f_a, f_a_min)
+        checks["R12_slip"] = ((f_q > 0.0) | (m_y > 0.0), s_g >= need_slip)
 
     # [004] rules and the tightening targets [004, eq. 6–9] ----------------------------------------
     nominal = jt.nominal_preload(fm_min, fm_max)
     ratio0 = jt.preload_stress_ratio(nominal, a0, yield_strength)
     rule = _seed_004_rule(x, method, torque_given)
-    checks["seed_004_preload_stress"] = (True, ratio0 <= rule[1] + 1e-12)
+    if full:
+        checks["seed_004_preload_stress"] = (True, ratio0 <= rule[1] + 1e-12)
 
     return {
         "tightening_factor": alpha_a,
@@ -1300,7 +1323,9 @@ def _solve(
         "clamped_bending_compliance": beta_p if eccentric else math.nan,
         "bolt_bending_compliance": beta_s,
         "opening_clamp_force": f_ka,
-        "additional_bolt_stress": jt.additional_bolt_stress(phi_b, f_a, a_s),
+        "additional_bolt_stress": (
+            jt.additional_bolt_stress(phi_b, f_a, a_s) if need("additional_bolt_stress") else nan
+        ),
         "cone_tangent": parts.tangent,
         "cone_limit_diameter": parts.limit_diameter,
         "outer_diameter_used": parts.outer_diameter,
@@ -1308,7 +1333,9 @@ def _solve(
         "load_factor_k": phi_k,
         "load_factor": phi_n,
         "additional_bolt_load": add_load,
-        "clamp_load_reduction": jt.clamp_load_reduction(phi_n, f_a),
+        "clamp_load_reduction": (
+            jt.clamp_load_reduction(phi_n, f_a) if need("clamp_load_reduction") else nan
+        ),
         "embedding_settlement": f_z_len,
         "embedding_loss": f_z,
         "thermal_loss": th_loss,
@@ -1348,7 +1375,7 @@ def _solve(
         "_where": where,
         "_alpha_req": alpha_req,
         "_fa_sep_any": fa_sep_any,
-        "_need_slip": need,
+        "_need_slip": need_slip,
         "_rule": rule,
         "_method": method,
         "_mu": (mu_g_lo, mu_g_hi, mu_k_lo, mu_k_hi),
@@ -2511,7 +2538,8 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
             x, strengths.pop() if strengths else None, threads.pop() if len(threads) == 1 else None
         )
     refusals = _Refusals(refused, many=True)
-    s = _solve(x, col, b, refusals)
+    # a sweep reads no check: the steps only they (and no asked output) read are left out
+    s = _solve(x, col, b, refusals, None if ctx.checks else ctx.outputs)
     refused = np.broadcast_to(refusals.mask, (n,))
     if refused.all():
         # alone, the first point says why it is refused (InputOutOfRange naming the field, or
