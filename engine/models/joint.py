@@ -761,7 +761,10 @@ def _finite_or(value: Any, other: Any) -> Any:
 def _overflows_squared(value: Any) -> Any:
     """Where a finite value's square overflows (Python floats raise there; arrays give inf)."""
     if isinstance(value, np.ndarray):
-        return np.isfinite(value) & ~np.isfinite(value * value)
+        square = value * value
+        if np.isfinite(np.add.reduce(square, axis=None)):
+            return False  # no square is inf (nor NaN): none overflows, found in one pass
+        return np.isfinite(value) & ~np.isfinite(square)
     return False  # a float that overflows has raised OverflowError already
 
 
@@ -2413,6 +2416,7 @@ def _vector_hook_checks(
     fm_max: Any,
     f_s_max: Any,
     probe: Callable[[int], tuple[list[Check], list[str]]],
+    verdicts: bool = True,
 ) -> tuple[dict[str, np.ndarray], list[str]]:
     """The verdicts of ``fz.joint_check_hook`` (VDI 2230-1 R10, R11, ISO 2936) on arrays.
 
@@ -2420,7 +2424,8 @@ def _vector_hook_checks(
     per distinct bolt (``probe``: at its first computable point) for their names, its notes
     and its refusals; the verdicts are then the same comparisons as
     :func:`engine.procedures.bolt.bought_part_checks`, on arrays. A check name this does
-    not know raises TypeError (the caller loops instead).
+    not know raises TypeError (the caller loops instead). Without ``verdicts`` (a sweep
+    reads no check) only the notes are made.
     """
     n = index.size
     out: dict[str, np.ndarray] = {}
@@ -2436,11 +2441,14 @@ def _vector_hook_checks(
     elif x.get("internal_thread_material") is not None:
         tau = np.full(n, fa.material(str(x["internal_thread_material"])).shear_strength)
     for k, bolt in enumerate(bolts):
-        sel = ok & (index == k)
+        # one bolt: the index is 0 wherever the bolt resolved, and ok is within that
+        sel = ok if len(bolts) == 1 else ok & (index == k)
         if not sel.any():
             continue
-        checks, said = probe(int(np.flatnonzero(sel)[0]))
+        checks, said = probe(int(np.argmax(sel)))  # the first point of this bolt
         notes += [s for s in said if s not in notes]
+        if not verdicts:
+            continue
         fastener = bolt.fastener or fz.Fastener("", None, None, None)
         outer, inner = bearing, hole
         if x.get("washer") is not None and fastener.thread is not None:
@@ -2550,13 +2558,21 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     joint_type = str(x["joint_type"])
     d_w, d_h = b["bearing_outer_diameter"], b["hole_diameter"]
     fm_max, f_s_max = s["assembly_preload_max"], s["max_bolt_force"]
+    any_refused = bool(refused.any())
+
+    def somewhere(condition: Any) -> bool:
+        """Whether ``condition`` holds at a point not refused (some point is not)."""
+        if np.ndim(condition) == 0:
+            return bool(condition)
+        return bool(np.any(condition & ~refused if any_refused else condition))
+
     if x.get("outer_diameter") is None:
         notes.append("D_A not given: plates taken just wide enough for the full cone (D_A,Gr)")
-    if np.any(~refused & (s["cone_tangent"] <= jt.MIN_CONE_TANGENT)):
+    if somewhere(s["cone_tangent"] <= jt.MIN_CONE_TANGENT):
         warnings.append(
             f"plates very thin against d_W: the cone tangent is held at {jt.MIN_CONE_TANGENT}"
         )
-    if not bool(x["controlled"]) and np.any(~refused & (b["diameter"] < 0.010)):
+    if not bool(x["controlled"]) and somewhere(b["diameter"] < 0.010):
         warnings.append(
             "d < 10 mm tightened without control: [004] warns of over-tightening; lower the "
             "admissible load or control the tightening"
@@ -2583,17 +2599,17 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         return _scalar_hooks(point, solution)
 
     hook_checks, hook_notes = _vector_hook_checks(
-        x, col, bolts, bolt_index, ~refused, d_w, d_h, fm_max, f_s_max, probe
+        x, col, bolts, bolt_index, ~refused, d_w, d_h, fm_max, f_s_max, probe, ctx.checks
     )
     notes += hook_notes
     notes.append(MODEL_FORM_NOTE)
     nut, _, _, nut_limits = s["_nut"]
-    if nut is not None and np.any(~refused & np.broadcast_to(nut_limits, (n,))):
+    if nut is not None and somewhere(nut_limits):
         warnings.append(
             nut_limit_warning(nut, None, None)
             + ", the preload window and the torque are built on it"
         )
-    if np.any(~refused & np.broadcast_to(s["_f_kr_raw"] < 0.0, (n,))):
+    if somewhere(s["_f_kr_raw"] < 0.0):
         warnings.append(
             "the joint opens at some points (F_A above the separation load at F_M,min): "
             "residual_clamp_force_min and slip_safety are 0 there"
@@ -2605,8 +2621,8 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     table = np.empty((len(asked), n))
     for row, name in zip(table, asked, strict=True):
         row[...] = s[name]
-    table[~np.isfinite(table)] = np.nan
-    any_refused = bool(refused.any())
+    if not np.isfinite(np.add.reduce(table, axis=None)):  # a NaN or inf somewhere
+        table[~np.isfinite(table)] = np.nan
     if any_refused:
         table[:, refused] = np.nan
     values: dict[str, Any] = dict(zip(asked, table, strict=True))

@@ -490,7 +490,9 @@ def test_a_refusal_is_the_same_line_alone_and_among_many():
         ("transverse_load", 0.0, 9e3),
     ],
 )
-def test_an_output_asked_alone_equals_its_column_among_all(vary, low, high):
+def test_an_output_asked_alone_equals_its_column_among_all(
+    vary: str, low: float, high: float
+) -> None:
     """A sweep that reads no check leaves out the late steps no asked output needs (R9, R12,
     the checks' comparisons): each output asked alone is bit-identical to its column when
     every output is asked, refused points (null) included, and a swept range that refuses
