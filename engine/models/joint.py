@@ -660,14 +660,18 @@ class _Refusals:
         """Refuse where ``where`` holds, naming ``field`` and the allowed range
         (``message(*args)``: made only when one design is refused)."""
         if self.many:
-            self.mask = self.mask | where
+            # a condition on fixed inputs alone is one value: where it refuses nothing the
+            # mask stays as it is, without a pass over the points
+            if isinstance(where, np.ndarray) or where:
+                self.mask = self.mask | where
         elif where:
             raise InputOutOfRange(message(*args), field=field)
 
     def arithmetic(self, where: Any, what: str) -> None:
         """Refuse where the arithmetic fails (alone: as Python's float arithmetic does)."""
         if self.many:
-            self.mask = self.mask | where
+            if isinstance(where, np.ndarray) or where:
+                self.mask = self.mask | where
         elif where:
             raise ZeroDivisionError(what)
 
@@ -757,7 +761,10 @@ def _finite_or(value: Any, other: Any) -> Any:
 def _overflows_squared(value: Any) -> Any:
     """Where a finite value's square overflows (Python floats raise there; arrays give inf)."""
     if isinstance(value, np.ndarray):
-        return np.isfinite(value) & ~np.isfinite(value * value)
+        square = value * value
+        if np.isfinite(np.add.reduce(square, axis=None)):
+            return False  # no square is inf (nor NaN): none overflows, found in one pass
+        return np.isfinite(value) & ~np.isfinite(square)
     return False  # a float that overflows has raised OverflowError already
 
 
@@ -890,17 +897,27 @@ def _solve(
     col: Callable[[str], Any],
     b: Mapping[str, Any],
     refusals: _Refusals,
+    outputs: frozenset[str] | None = None,
 ) -> dict[str, Any]:
     """The VDI 2230-1 chain R0–R13 for the inputs ``x`` and the bolt columns ``b``.
 
     ``col(name)`` is an input as a float (one design) or a float array (many); text and
     choice inputs are read from ``x``. Returns every output under its name plus the
     intermediate values the checks, notes and series need (keys starting with ``_``), and
-    per check ``(applies, passes)`` under ``_checks``.
+    per check ``(applies, passes)`` under ``_checks``. Given ``outputs`` (an array run
+    that reads no check), a late step that no output in it needs and that refuses no
+    point is left out: its outputs are NaN and ``_checks`` is empty.
     """
 
     def col_or(name: str, other: Any) -> Any:
         return other if x.get(name) is None else col(name)
+
+    def need(*names: str) -> bool:
+        """Whether a step whose outputs are ``names`` (and the checks) is read."""
+        return outputs is None or any(name in outputs for name in names)
+
+    nan: Any = math.nan
+    full = outputs is None
 
     joint_type = str(x["joint_type"])
     d, d_w, d_h, pitch = b["diameter"], b["bearing_outer_diameter"], b["hole_diameter"], b["pitch"]
@@ -1199,23 +1216,25 @@ def _solve(
     # R5/R6 required window, R7 against it ---------------------------------------------------------
     alpha_req = _finite_or(alpha_a, method_factor)
     req_min = jt.minimum_assembly_preload(f_kerf, f_a, phi_n, f_z, th_loss)
-    req_max = jt.required_preload_max(alpha_req, req_min)
-    fa_limit = jt.max_working_load(f_mzul, alpha_req, f_kerf_grip, loss, phi_n, k_ab, f_kp)
-    fa_sep_any = jt.separation_load(f_mzul, loss, phi_n, k_ab)
-    f_kr_raw = jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)
+    req_max = jt.required_preload_max(alpha_req, req_min) if need("required_preload_max") else nan
+    fa_limit = nan
+    if need("max_working_load"):
+        fa_limit = jt.max_working_load(f_mzul, alpha_req, f_kerf_grip, loss, phi_n, k_ab, f_kp)
+    fa_sep_any = jt.separation_load(f_mzul, loss, phi_n, k_ab) if full else nan
+    f_kr_raw = jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)  # a warning reads it
     # a joint that opens has no clamp force left (the linear diagram's negative value is not
     # a force): F_KR,min and S_G are held at 0 there and the checks fail on the raw value
-    f_kr_min = _larger(f_kr_raw, 0.0)
-    fa_sep = jt.separation_load(fm_min, loss, phi_n, k_ab)
-    checks: dict[str, tuple[Any, Any]] = {
-        "R7_window_fits": (True, req_max <= f_mzul * (1.0 + 1e-12)),
-        "separation_avoidable": (True, f_a < fa_sep_any),
-        "residual_clamp_force": (
+    f_kr_min = _larger(f_kr_raw, 0.0) if need("residual_clamp_force_min", "slip_safety") else nan
+    fa_sep = jt.separation_load(fm_min, loss, phi_n, k_ab) if need("separation_load") else nan
+    checks: dict[str, tuple[Any, Any]] = {}
+    if full:
+        checks["R7_window_fits"] = (True, req_max <= f_mzul * (1.0 + 1e-12))
+        checks["separation_avoidable"] = (True, f_a < fa_sep_any)
+        checks["residual_clamp_force"] = (
             True,
             (f_kr_raw >= f_kerf * (1.0 - 1e-12)) & (f_kr_raw > 0.0),
-        ),
-    }
-    if torque_given:
+        )
+    if full and torque_given:
         checks["R7_max_below_permissible"] = (True, fm_max <= f_mzul * (1.0 + 1e-12))
 
     # R8 working stress ---------------------------------------------------------------------------
@@ -1228,9 +1247,10 @@ def _solve(
         | _overflows_squared(jt.TORSION_REDUCTION_IN_SERVICE * stress.torsional),
         "σ_red,B overflows",
     )
-    s_f = jt.yield_safety(yield_t, stress.equivalent)
-    checks["R8_working_stress"] = (True, s_f >= 1.0)
-    if nut is not None:
+    s_f = jt.yield_safety(yield_t, stress.equivalent) if need("yield_safety") else nan
+    if full:
+        checks["R8_working_stress"] = (True, s_f >= 1.0)
+    if full and nut is not None:
         checks["nut_strength"] = (
             f_nut == f_nut,  # ISO 898-2 covers the size
             (f_mzul_bolt <= f_nut) & (f_s_max <= f_nut * (1.0 + 1e-12)),
@@ -1241,28 +1261,34 @@ def _solve(
     f_strip: Any = math.nan
     if nut is not None and nut.pairs is False and nut_part is not None and tensile is not None:
         f_strip = _plain(fa.nut_thread_resistance(d, pitch, d2, nut_part, nut, f_nut, tensile))
-        checks["nut_thread_stripping"] = (f_strip == f_strip, f_strip >= f_s_max)
+        if full:
+            checks["nut_thread_stripping"] = (f_strip == f_strip, f_strip >= f_s_max)
 
     # R9 alternating stress -----------------------------------------------------------------------
+    fatigue = ("stress_amplitude", "endurance_limit", "fatigue_safety")
     phi_b = phi_n
-    if eccentric:
+    if eccentric and need("additional_bolt_stress", *fatigue):
         phi_b = jt.eccentric_stress_factor(
             phi_n, lever, s_sym, beta_p, beta_s, b["stress_diameter"]
         )
-    sigma_a = jt.stress_amplitude(phi_b, f_a, f_a_min, a_s)
-    f_sm = jt.mean_bolt_force(fm_max, phi_n, f_a, f_a_min)
-    sigma_as = jt.endurance_limit(d, str(x["rolling"]), f_sm, a_s * yield_strength)
-    s_d = jt.fatigue_safety(sigma_as, sigma_a)
-    checks["R9_fatigue"] = (sigma_a > 0.0, s_d >= 1.2)
-    # §5.3.2: σ_SAb and Φ*_en hold while the interface stays closed (F_A ≤ F_Aab at F_M,min)
-    checks["opening_limit"] = (eccentric, f_a <= fa_sep * (1.0 + 1e-12))
+    sigma_a = sigma_as = s_d = nan
+    if need(*fatigue):
+        sigma_a = jt.stress_amplitude(phi_b, f_a, f_a_min, a_s)
+        f_sm = jt.mean_bolt_force(fm_max, phi_n, f_a, f_a_min)
+        sigma_as = jt.endurance_limit(d, str(x["rolling"]), f_sm, a_s * yield_strength)
+        s_d = jt.fatigue_safety(sigma_as, sigma_a)
+    if full:
+        checks["R9_fatigue"] = (sigma_a > 0.0, s_d >= 1.2)
+        # §5.3.2: σ_SAb and Φ*_en hold while the interface stays closed (F_A ≤ F_Aab at F_M,min)
+        checks["opening_limit"] = (eccentric, f_a <= fa_sep * (1.0 + 1e-12))
 
     # R12 slipping -----------------------------------------------------------------------
-    s_g = jt.slip_safety(f_kr_min, q_f, mu_t, f_q, m_y, q_m, r_a)
+    s_g = jt.slip_safety(f_kr_min, q_f, mu_t, f_q, m_y, q_m, r_a) if need("slip_safety") else nan
     tau_q: Any = math.nan
     s_a: Any = math.nan
     p_q: Any = math.nan
-    if x.get("fitted_diameter") is not None:
+    fitted = ("fitted_shear_stress", "fitted_shear_safety", "fitted_bearing_pressure")
+    if x.get("fitted_diameter") is not None and need(*fitted):
         d_tau = col("fitted_diameter")
         h_min: Any = math.inf
         for h in thick:
@@ -1271,15 +1297,19 @@ def _solve(
         tau_q = jt.fitted_shank_shear_stress(f_q, q_f, d_tau)
         s_a = jt.fitted_shear_safety(math.nan if r_m is None else r_m, tau_q)
         p_q = jt.fitted_bearing_pressure(f_q, d_tau, h_min)
-        checks["R12_fitted_shear"] = ((f_q > 0.0) & (s_a == s_a), s_a >= 1.1)
-    need = jt.required_slip_safety(f_a, f_a_min)
-    checks["R12_slip"] = ((f_q > 0.0) | (m_y > 0.0), s_g >= need)
+        if full:
+            checks["R12_fitted_shear"] = ((f_q > 0.0) & (s_a == s_a), s_a >= 1.1)
+    need_slip: Any = nan
+    if full:
+        need_slip = jt.required_slip_safety(f_a, f_a_min)
+        checks["R12_slip"] = ((f_q > 0.0) | (m_y > 0.0), s_g >= need_slip)
 
     # [004] rules and the tightening targets [004, eq. 6–9] ----------------------------------------
     nominal = jt.nominal_preload(fm_min, fm_max)
     ratio0 = jt.preload_stress_ratio(nominal, a0, yield_strength)
     rule = _seed_004_rule(x, method, torque_given)
-    checks["seed_004_preload_stress"] = (True, ratio0 <= rule[1] + 1e-12)
+    if full:
+        checks["seed_004_preload_stress"] = (True, ratio0 <= rule[1] + 1e-12)
 
     return {
         "tightening_factor": alpha_a,
@@ -1296,7 +1326,9 @@ def _solve(
         "clamped_bending_compliance": beta_p if eccentric else math.nan,
         "bolt_bending_compliance": beta_s,
         "opening_clamp_force": f_ka,
-        "additional_bolt_stress": jt.additional_bolt_stress(phi_b, f_a, a_s),
+        "additional_bolt_stress": (
+            jt.additional_bolt_stress(phi_b, f_a, a_s) if need("additional_bolt_stress") else nan
+        ),
         "cone_tangent": parts.tangent,
         "cone_limit_diameter": parts.limit_diameter,
         "outer_diameter_used": parts.outer_diameter,
@@ -1304,7 +1336,9 @@ def _solve(
         "load_factor_k": phi_k,
         "load_factor": phi_n,
         "additional_bolt_load": add_load,
-        "clamp_load_reduction": jt.clamp_load_reduction(phi_n, f_a),
+        "clamp_load_reduction": (
+            jt.clamp_load_reduction(phi_n, f_a) if need("clamp_load_reduction") else nan
+        ),
         "embedding_settlement": f_z_len,
         "embedding_loss": f_z,
         "thermal_loss": th_loss,
@@ -1344,7 +1378,7 @@ def _solve(
         "_where": where,
         "_alpha_req": alpha_req,
         "_fa_sep_any": fa_sep_any,
-        "_need_slip": need,
+        "_need_slip": need_slip,
         "_rule": rule,
         "_method": method,
         "_mu": (mu_g_lo, mu_g_hi, mu_k_lo, mu_k_hi),
@@ -2382,6 +2416,7 @@ def _vector_hook_checks(
     fm_max: Any,
     f_s_max: Any,
     probe: Callable[[int], tuple[list[Check], list[str]]],
+    verdicts: bool = True,
 ) -> tuple[dict[str, np.ndarray], list[str]]:
     """The verdicts of ``fz.joint_check_hook`` (VDI 2230-1 R10, R11, ISO 2936) on arrays.
 
@@ -2389,7 +2424,8 @@ def _vector_hook_checks(
     per distinct bolt (``probe``: at its first computable point) for their names, its notes
     and its refusals; the verdicts are then the same comparisons as
     :func:`engine.procedures.bolt.bought_part_checks`, on arrays. A check name this does
-    not know raises TypeError (the caller loops instead).
+    not know raises TypeError (the caller loops instead). Without ``verdicts`` (a sweep
+    reads no check) only the notes are made.
     """
     n = index.size
     out: dict[str, np.ndarray] = {}
@@ -2405,11 +2441,14 @@ def _vector_hook_checks(
     elif x.get("internal_thread_material") is not None:
         tau = np.full(n, fa.material(str(x["internal_thread_material"])).shear_strength)
     for k, bolt in enumerate(bolts):
-        sel = ok & (index == k)
+        # one bolt: the index is 0 wherever the bolt resolved, and ok is within that
+        sel = ok if len(bolts) == 1 else ok & (index == k)
         if not sel.any():
             continue
-        checks, said = probe(int(np.flatnonzero(sel)[0]))
+        checks, said = probe(int(np.argmax(sel)))  # the first point of this bolt
         notes += [s for s in said if s not in notes]
+        if not verdicts:
+            continue
         fastener = bolt.fastener or fz.Fastener("", None, None, None)
         outer, inner = bearing, hole
         if x.get("washer") is not None and fastener.thread is not None:
@@ -2507,7 +2546,8 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
             x, strengths.pop() if strengths else None, threads.pop() if len(threads) == 1 else None
         )
     refusals = _Refusals(refused, many=True)
-    s = _solve(x, col, b, refusals)
+    # a sweep reads no check: the steps only they (and no asked output) read are left out
+    s = _solve(x, col, b, refusals, None if ctx.checks else ctx.outputs)
     refused = np.broadcast_to(refusals.mask, (n,))
     if refused.all():
         # alone, the first point says why it is refused (InputOutOfRange naming the field, or
@@ -2518,13 +2558,21 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     joint_type = str(x["joint_type"])
     d_w, d_h = b["bearing_outer_diameter"], b["hole_diameter"]
     fm_max, f_s_max = s["assembly_preload_max"], s["max_bolt_force"]
+    any_refused = bool(refused.any())
+
+    def somewhere(condition: Any) -> bool:
+        """Whether ``condition`` holds at a point not refused (some point is not)."""
+        if np.ndim(condition) == 0:
+            return bool(condition)
+        return bool(np.any(condition & ~refused if any_refused else condition))
+
     if x.get("outer_diameter") is None:
         notes.append("D_A not given: plates taken just wide enough for the full cone (D_A,Gr)")
-    if np.any(~refused & (s["cone_tangent"] <= jt.MIN_CONE_TANGENT)):
+    if somewhere(s["cone_tangent"] <= jt.MIN_CONE_TANGENT):
         warnings.append(
             f"plates very thin against d_W: the cone tangent is held at {jt.MIN_CONE_TANGENT}"
         )
-    if not bool(x["controlled"]) and np.any(~refused & (b["diameter"] < 0.010)):
+    if not bool(x["controlled"]) and somewhere(b["diameter"] < 0.010):
         warnings.append(
             "d < 10 mm tightened without control: [004] warns of over-tightening; lower the "
             "admissible load or control the tightening"
@@ -2551,17 +2599,17 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         return _scalar_hooks(point, solution)
 
     hook_checks, hook_notes = _vector_hook_checks(
-        x, col, bolts, bolt_index, ~refused, d_w, d_h, fm_max, f_s_max, probe
+        x, col, bolts, bolt_index, ~refused, d_w, d_h, fm_max, f_s_max, probe, ctx.checks
     )
     notes += hook_notes
     notes.append(MODEL_FORM_NOTE)
     nut, _, _, nut_limits = s["_nut"]
-    if nut is not None and np.any(~refused & np.broadcast_to(nut_limits, (n,))):
+    if nut is not None and somewhere(nut_limits):
         warnings.append(
             nut_limit_warning(nut, None, None)
             + ", the preload window and the torque are built on it"
         )
-    if np.any(~refused & np.broadcast_to(s["_f_kr_raw"] < 0.0, (n,))):
+    if somewhere(s["_f_kr_raw"] < 0.0):
         warnings.append(
             "the joint opens at some points (F_A above the separation load at F_M,min): "
             "residual_clamp_force_min and slip_safety are 0 there"
@@ -2573,8 +2621,8 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     table = np.empty((len(asked), n))
     for row, name in zip(table, asked, strict=True):
         row[...] = s[name]
-    table[~np.isfinite(table)] = np.nan
-    any_refused = bool(refused.any())
+    if not np.isfinite(np.add.reduce(table, axis=None)):  # a NaN or inf somewhere
+        table[~np.isfinite(table)] = np.nan
     if any_refused:
         table[:, refused] = np.nan
     values: dict[str, Any] = dict(zip(asked, table, strict=True))

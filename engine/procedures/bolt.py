@@ -690,13 +690,16 @@ class BoltArrays:
         marks, each at its first such point, and each point's index into them (-1 where
         refused): what a check that reads the bolt as a whole runs once per bolt."""
         n = self.ok.size
+        one_size = self.rows is None and not any(
+            isinstance(v, np.ndarray) and v.ndim for v in (self.diameter, self.pitch)
+        )
+        if one_size and n and self.ok.all():  # one bolt at every point
+            return [self.at(0)], np.zeros(n, dtype=np.int64)
         index = np.full(n, -1, dtype=np.int64)
         good = np.flatnonzero(self.ok)
         if good.size == 0:
             return [], index
-        if self.rows is None and not any(
-            isinstance(v, np.ndarray) and v.ndim for v in (self.diameter, self.pitch)
-        ):
+        if one_size:
             index[good] = 0
             return [self.at(int(good[0]))], index
         if self.rows is not None:

@@ -479,3 +479,29 @@ def test_a_refusal_is_the_same_line_alone_and_among_many():
         joint_model._vectorized({**x, "working_load_min": np.array([6e3, 7e3])}, ctx)
     assert many.value.field == "working_load_min"
     assert many.value.message == alone.value.message
+
+
+@pytest.mark.parametrize(
+    ("vary", "low", "high"),
+    [
+        ("working_load", 0.0, 60_000.0),  # the joint opens above about 20 kN
+        ("shank_length", 0.0, 0.08),  # refused beyond the grip, 40 mm
+        ("plate1_thickness", 0.004, 0.05),
+        ("transverse_load", 0.0, 9e3),
+    ],
+)
+def test_an_output_asked_alone_equals_its_column_among_all(
+    vary: str, low: float, high: float
+) -> None:
+    """A sweep that reads no check leaves out the late steps no asked output needs (R9, R12,
+    the checks' comparisons): each output asked alone is bit-identical to its column when
+    every output is asked, refused points (null) included, and a swept range that refuses
+    some points and opens the joint at others keeps its warnings."""
+    base = dict(JOINT.examples[0])
+    values = list(np.linspace(low, high, 41))
+    every = sweep(JOINT, base, vary, values, outputs=OUTPUTS, budget_s=None)
+    for name in OUTPUTS:
+        alone = sweep(JOINT, base, vary, values, outputs=(name,), budget_s=None)
+        np.testing.assert_array_equal(alone.columns[name], every.columns[name], err_msg=name)
+        assert alone.warnings == every.warnings
+    assert np.isnan(every.columns["max_bolt_force"]).any() == (vary == "shank_length")
