@@ -2040,7 +2040,8 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             interval = np.where(np.isfinite(interval) & (interval > 0.0), interval, np.nan)
             raw["blow_interval"] = interval
             raw["blows_per_second"] = 1.0 / interval
-            raw["time_to_final"] = series.blows * interval
+            if not first_only:  # the whole series' time: no first-blow output
+                raw["time_to_final"] = series.blows * interval
         if s.per is not None:
             raw["yield_preload"] = s.yield_preload
             raw["breaking_load"] = s.breaking_load

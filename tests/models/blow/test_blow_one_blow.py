@@ -70,3 +70,26 @@ def test_energy_blow_without_motion_keeps_the_torques() -> None:
     for want, got in zip(both[:2], torques[:2], strict=True):
         assert np.array_equal(got, want, equal_nan=True)
     assert torques[2:] == (None, None)
+
+
+def test_a_sweep_asking_the_time_between_blows_stays_on_the_array_path() -> None:
+    """The time between blows is a first-blow output; the time to the final torque is the
+    whole series'. A sweep asking the former with the first blow's numbers runs on arrays
+    (its note says so) and gives the loop's values: asking it once made the one-blow path
+    read the series' blow count it leaves out, and every point ran one at a time."""
+    import engine
+
+    spec = engine.get_model("blow.joint")
+    example = spec.examples[1]
+    base = spec.validate(dict(example))[0]
+    name = "flywheel_diameter" if base.get("flywheel_diameter") else "struck_inertia"
+    values = np.linspace(base[name] * 0.8, base[name] * 1.2, 7)
+    asked = ["peak_torque", "blows_per_second", "blow_interval"]
+    swept = engine.sweep(spec, example, name, values, fidelity="energy", outputs=asked)
+    assert any("evaluated on arrays" in n for n in swept.notes)
+    for j in (0, 6):
+        one = engine.run(spec, {**example, name: float(values[j])}, fidelity="energy")
+        for o in asked:
+            assert swept.columns[o][j] == one.results[o]
+    interval = np.asarray(swept.columns["blow_interval"], dtype=float)
+    assert np.allclose(np.asarray(swept.columns["blows_per_second"], dtype=float) * interval, 1.0)
