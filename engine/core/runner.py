@@ -175,6 +175,13 @@ class SweepResult:
             made.pop("_errors", None)
             return value
 
+    def __getstate__(self) -> dict[str, Any]:
+        """The fields, ``error_array`` made if it was not yet (its maker is a closure,
+        which does not pickle)."""
+        if "_errors" in self.__dict__:
+            self.error_array  # noqa: B018  (made now, kept in __dict__)
+        return {k: v for k, v in self.__dict__.items() if k != "_errors"}
+
     @functools.cached_property
     def values(self) -> list[float]:
         return list(self.value_array.astype(float).tolist())
@@ -909,7 +916,9 @@ def _sweep_column(param: Param, values: Sequence[float]) -> tuple[np.ndarray, fl
     The common case, every value finite and within the range, is told by the least and
     the largest value alone (a NaN makes both NaN); only otherwise is each value tested.
     """
-    arr = np.asarray(values, dtype=float)
+    # a copy, the sweep's own: a named rung's estimates are made from these values when
+    # first read, and the caller may have changed its array by then
+    arr = np.array(values, dtype=float)
     if arr.ndim != 1 or arr.size == 0:
         raise InputOutOfRange(f"a sweep of {param.name} needs at least one value", field="num")
     low, high = float(arr.min()), float(arr.max())

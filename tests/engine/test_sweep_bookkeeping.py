@@ -135,3 +135,25 @@ def test_a_blow_sweep_of_first_blow_outputs_equals_the_full_series() -> None:
     for j, v in enumerate(t0):
         one = engine.run(spec, {**spec.examples[0], "snug_torque": v}, fidelity="energy")
         assert [alone.results[name][j] for name in first] == [one.results[name] for name in first]
+
+
+def test_a_named_rungs_estimates_are_of_the_values_swept_not_of_the_callers_array_later() -> None:
+    """The estimates of a named rung are made when first read; the sweep keeps its own
+    copy of the values, so a caller changing its array in between does not change them,
+    and the result pickles before they are read (with them made)."""
+    import pickle
+
+    spec = engine.get_model("preload.tightening")
+    example = spec.examples[0]
+    values = np.linspace(0.08, 0.16, 5)
+    first = engine.sweep(spec, example, "thread_friction", values, fidelity=spec.rung_names[0])
+    expected = np.array(first.error_array)
+    again = engine.sweep(spec, example, "thread_friction", values, fidelity=spec.rung_names[0])
+    values *= 1.2  # the caller reuses its array before reading the estimates
+    assert np.array_equal(again.error_array, expected, equal_nan=True)
+    third = engine.sweep(
+        spec, example, "thread_friction", values / 1.2, fidelity=spec.rung_names[0]
+    )
+    copied = pickle.loads(pickle.dumps(third))
+    assert np.array_equal(copied.error_array, expected, equal_nan=True)
+    assert np.array_equal(copied.columns["tightening_torque"], first.columns["tightening_torque"])
