@@ -38,3 +38,36 @@ def test_the_access_line_is_json_dumps_of_its_fields_for_any_path() -> None:
                 "request_id": "0123abcd._-",
             }
             assert _access_line(method, path, status, seconds, "0123abcd._-") == json.dumps(fields)
+
+
+def test_the_access_record_is_made_by_the_record_factory_in_force() -> None:
+    """A factory that adds a field (a trace id) sees the access lines as every record."""
+    from service.middleware import _log_access
+
+    logger = logging.getLogger("service.access")
+    seen: list[logging.LogRecord] = []
+
+    class Keep(logging.Handler):
+        def emit(self, record: logging.LogRecord) -> None:
+            seen.append(record)
+
+    old_factory = logging.getLogRecordFactory()
+
+    def factory(*args: object, **kwargs: object) -> logging.LogRecord:
+        record = old_factory(*args, **kwargs)  # type: ignore[arg-type]
+        record.trace_id = "t-1"
+        return record
+
+    keep, before = Keep(), (logger.level, logger.propagate)
+    logger.addHandler(keep)
+    logger.setLevel(logging.INFO)
+    logging.setLogRecordFactory(factory)
+    try:
+        _log_access({"method": "GET", "path": "/healthz"}, 200, 0.001, "r-1")
+    finally:
+        logging.setLogRecordFactory(old_factory)
+        logger.removeHandler(keep)
+        logger.setLevel(before[0])
+    (record,) = seen
+    assert getattr(record, "trace_id", None) == "t-1"
+    assert json.loads(record.getMessage())["path"] == "/healthz"
