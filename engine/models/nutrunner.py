@@ -46,6 +46,7 @@ from ..physics.nutrunner import (
     gear_ratio_torque_change,
     impact_torque,
     impact_torque_geared,
+    kinetic_energy,
     max_spindle_torque,
     part_energies,
     shaft_shear_stress,
@@ -770,9 +771,12 @@ def _curve_time(x: Mapping[str, Any], inertia: Any) -> Any:
 
 @dataclass(frozen=True)
 class _Drive:
-    """Everything the closed forms give, for one design (floats or arrays)."""
+    """Everything the closed forms give, for one design (floats or arrays).
 
-    energies: tuple[Any, Any, Any, Any, Any]
+    A field :func:`_drive` was asked to leave out is None.
+    """
+
+    energies: tuple[Any, Any, Any, Any, Any] | None
     energy: Any
     w3: Any
     w5: Any
@@ -783,10 +787,15 @@ class _Drive:
     m_geared: Any
 
 
-def _drive(x: Mapping[str, Any]) -> _Drive:
+def _drive(x: Mapping[str, Any], *, parts: bool = True, torque: str = "both") -> _Drive:
+    """The closed forms of drive ``x`` [000, eq. 1–9], on floats or arrays.
+
+    ``parts``: the part energies and the flywheel and spindle-gear speeds (else None: the
+    energy alone, the same sum). ``torque``: "paper", "geared" or "both" impact-torque
+    forms (the other None). On arrays each left-out quantity is a pass over the points.
+    """
     w = x["motor_speed"]
-    energies = part_energies(
-        w,
+    masses = (
         x["coupling_mass"],
         x["coupling_diameter"],
         x["motor_pulley_mass"],
@@ -799,8 +808,14 @@ def _drive(x: Mapping[str, Any]) -> _Drive:
         x["spindle_gear_diameter"],
         x["spindle_count"],
     )
-    energy = energies[0] + energies[1] + energies[2] + energies[3] + energies[4]
-    w3 = flywheel_speed(w, x["motor_pulley_diameter"], x["flywheel_diameter"])
+    energies = part_energies(w, *masses) if parts else None
+    if energies is None:
+        energy = kinetic_energy(w, *masses)
+        w3 = w5 = None
+    else:
+        energy = energies[0] + energies[1] + energies[2] + energies[3] + energies[4]
+        w3 = flywheel_speed(w, x["motor_pulley_diameter"], x["flywheel_diameter"])
+        w5 = spindle_speed(w3, x["drive_gear_diameter"], x["spindle_gear_diameter"])
     u = x["drive_gear_diameter"] / x["spindle_gear_diameter"]
     g = x["shear_modulus"]
     c7 = torsional_stiffness(g, x["shaft_diameter"], x["shaft_length"])
@@ -809,38 +824,53 @@ def _drive(x: Mapping[str, Any]) -> _Drive:
         energies=energies,
         energy=energy,
         w3=w3,
-        w5=spindle_speed(w3, x["drive_gear_diameter"], x["spindle_gear_diameter"]),
+        w5=w5,
         u=u,
         c7=c7,
         c8=c8,
-        m_paper=impact_torque(energy, c7, c8),
-        m_geared=impact_torque_geared(energy, c7, c8, u),
+        m_paper=impact_torque(energy, c7, c8) if torque != "geared" else None,
+        m_geared=impact_torque_geared(energy, c7, c8, u) if torque != "paper" else None,
     )
 
 
 def _closed_values(
-    x: Mapping[str, Any], d: _Drive, geared: bool, wanted: Container[str] | None = None
+    x: Mapping[str, Any],
+    d: _Drive,
+    geared: bool,
+    wanted: Container[str] | None = None,
+    every: bool = True,
 ) -> dict[str, Any]:
     """The closed-form outputs of drive ``d`` [000, eq. 1–10], on floats or arrays.
 
     ``wanted``: the outputs asked for (every one when None); the drive's details (twists,
     part energies, speeds, stresses, the coupling's slip torque) are left out where none
-    of them is: on arrays each is a pass over the points.
+    of them is: on arrays each is a pass over the points. ``every``: False leaves out the
+    energy, time, torques and reserve not in ``wanted`` too (a caller reading no checks).
     """
     m = d.m_geared if geared else d.m_paper
-    m_max = max_spindle_torque(m, x["spindle_count"], x["idle_spindle_friction_torque"])
-    values = {
-        "kinetic_energy": d.energy,
-        "acceleration_time": acceleration_time(d.energy, x["motor_power"]),
-        "shaft_stiffness": d.c7,
-        "spindle_stiffness": d.c8,
-        "impact_torque": m,
-        "max_spindle_torque": m_max,
-        "spindle_torque_reserve": spindle_torque_reserve(m_max, x["wheel_nut_torque"]),
-    }
+    values: dict[str, Any] = {}
+    if every or wanted is None or "kinetic_energy" in wanted:
+        values["kinetic_energy"] = d.energy
+    if every or wanted is None or "acceleration_time" in wanted:
+        values["acceleration_time"] = acceleration_time(d.energy, x["motor_power"])
+    values["shaft_stiffness"] = d.c7
+    values["spindle_stiffness"] = d.c8
+    if every or wanted is None or "impact_torque" in wanted:
+        values["impact_torque"] = m
+    if (
+        every
+        or wanted is None
+        or "max_spindle_torque" in wanted
+        or "spindle_torque_reserve" in wanted
+    ):
+        m_max = max_spindle_torque(m, x["spindle_count"], x["idle_spindle_friction_torque"])
+        values["max_spindle_torque"] = m_max
+        reserve = spindle_torque_reserve(m_max, x["wheel_nut_torque"])
+        values["spindle_torque_reserve"] = reserve
     if wanted is not None and not any(name in wanted for name in _DRIVE_DETAILS):
         return values
     m7 = d.u * m if geared else m
+    assert d.energies is not None  # the details read the part energies
     t1, t2, t3, t4, t5 = d.energies
     values.update(
         {
@@ -1244,26 +1274,32 @@ def _vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
         k: (np.asarray(v, dtype=float) if isinstance(v, np.ndarray) else v) for k, v in x.items()
     }
     arrays, m_tr, clutch_warnings = _with_friction_clutch(arrays)
-    d = _drive(arrays)
-    # the checks (:func:`_verdicts`) read the shear stresses where a yield strength is given
+    geared = ctx.rung != "closed_form"
     wanted = ctx.outputs
-    if x.get("shear_yield_strength") is not None:
+    # the checks (:func:`_verdicts`) read the shear stresses where a yield strength is given
+    if ctx.checks and x.get("shear_yield_strength") is not None:
         wanted = wanted | {"shaft_shear_stress", "spindle_shear_stress"}
-    values = _closed_values(arrays, d, geared=ctx.rung != "closed_form", wanted=wanted)
+    # a caller reading no checks (a sweep) gets the outputs it asked for alone: the rung's
+    # torque form, and the part energies and speeds only where a detail reads them
+    details = ctx.checks or any(name in wanted for name in _DRIVE_DETAILS)
+    torque = "both" if ctx.checks else ("geared" if geared else "paper")
+    d = _drive(arrays, parts=details, torque=torque)
+    values = _closed_values(arrays, d, geared=geared, wanted=wanted, every=ctx.checks)
     values["friction_clutch_torque"] = m_tr
     warnings = list(clutch_warnings)
-    m_max = np.asarray(values["max_spindle_torque"])
-    if np.any(m_max <= 0.0):
-        warnings.append(
-            f"at {int(np.sum(m_max <= 0.0))} points the idle spindles' friction absorbs the "
-            "whole blow (max_spindle_torque ≤ 0)"
-        )
+    if "max_spindle_torque" in values:
+        m_max = np.asarray(values["max_spindle_torque"])
+        if np.any(m_max <= 0.0):
+            warnings.append(
+                f"at {int(np.sum(m_max <= 0.0))} points the idle spindles' friction absorbs "
+                "the whole blow (max_spindle_torque ≤ 0)"
+            )
     return Result(
         values=values,
         rung=ctx.rung,
         error_estimate=None,
         warnings=warnings,
-        check_arrays=_verdicts(arrays, values),
+        check_arrays=_verdicts(arrays, values) if ctx.checks else {},
     )
 
 

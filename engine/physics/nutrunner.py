@@ -221,10 +221,11 @@ def part_energies(
     w = motor_speed
     w3 = flywheel_speed(w, motor_pulley_diameter, flywheel_diameter)
     w5 = spindle_speed(w3, drive_gear_diameter, spindle_gear_diameter)
-    t1 = 0.5 * disc_inertia(coupling_mass, coupling_diameter) * w**2
-    t2 = 0.5 * disc_inertia(motor_pulley_mass, motor_pulley_diameter) * w**2
-    t3 = 0.5 * disc_inertia(flywheel_mass, flywheel_diameter) * w3**2
-    t4 = 0.5 * disc_inertia(drive_gear_mass, drive_gear_diameter) * w3**2
+    w_sq, w3_sq = w**2, w3**2  # each square once: on arrays, a pass over the points each
+    t1 = 0.5 * disc_inertia(coupling_mass, coupling_diameter) * w_sq
+    t2 = 0.5 * disc_inertia(motor_pulley_mass, motor_pulley_diameter) * w_sq
+    t3 = 0.5 * disc_inertia(flywheel_mass, flywheel_diameter) * w3_sq
+    t4 = 0.5 * disc_inertia(drive_gear_mass, drive_gear_diameter) * w3_sq
     t5 = 0.5 * spindle_count * disc_inertia(spindle_gear_mass, spindle_gear_diameter) * w5**2
     return t1, t2, t3, t4, t5
 

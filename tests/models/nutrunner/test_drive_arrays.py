@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 import engine
+from engine.core.spec import RunContext
 from engine.models.nutrunner import EXAMPLE_INDUCTION_MOTOR, EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
 from engine.studies.execute import run_study
 from engine.studies.plan import Study, Variable, evaluate_chunk, plan
@@ -135,3 +136,62 @@ def test_huge_and_tiny_inputs_stay_consistent():
             fast.values[name], slow.values[name], rtol=1e-12, atol=1e-300, equal_nan=True
         )
     assert math.isfinite(fast.values["impact_torque"][2])
+
+
+@pytest.mark.parametrize("rung", ["closed_form", "gear_ratio"])
+@pytest.mark.parametrize(
+    ("outs", "skipped"),
+    [
+        # the floor's outputs: no spindle torque, reserve or detail nobody asked for
+        (
+            ("kinetic_energy", "acceleration_time", "impact_torque"),
+            ("max_spindle_torque", "spindle_torque_reserve", "flywheel_energy", "shaft_twist"),
+        ),
+        # the reserve reads the spindle torque, which is then computed; the energy is not
+        (
+            ("spindle_torque_reserve",),
+            ("kinetic_energy", "acceleration_time", "impact_torque", "flywheel_speed"),
+        ),
+        # a detail: the part energies and speeds, as the checks-reading path gives them
+        (
+            ("flywheel_energy", "spindle_gear_speed", "shaft_shear_stress"),
+            ("kinetic_energy", "max_spindle_torque"),
+        ),
+    ],
+)
+def test_a_caller_reading_no_checks_gets_the_asked_outputs_alone_and_the_same(rung, outs, skipped):
+    base = {**EXAMPLE_LIGHT_TRUCK, "shear_yield_strength": 4e8}
+    cols = _columns(60, seed=5)
+    x, _ = SPEC.validate(base)
+    lean = SPEC.vectorized({**x, **cols}, RunContext(rung, frozenset(outs), 0.01, checks=False))
+    full = SPEC.vectorized({**x, **cols}, RunContext(rung, frozenset(outs), 0.01))
+    slow = evaluate_chunk(LOOP, base, cols, list(outs), fidelity=rung)
+    for name in outs:
+        np.testing.assert_array_equal(lean.values[name], full.values[name], err_msg=name)
+        # the loop's Python-float power and numpy's square root differ in the last bit (the
+        # reserve M - (z - 1) M_tr cancels: absolute)
+        np.testing.assert_allclose(
+            lean.values[name], slow.values[name], rtol=1e-15, atol=1e-12, err_msg=name
+        )
+    assert lean.check_arrays == {} and full.check_arrays
+    for name in skipped:  # the checks-reading path computes them, a lean caller does not
+        assert name not in lean.values, name
+        assert name in full.values, name
+
+
+def test_a_lean_sweep_of_the_motor_speed_equals_the_hand_sum():
+    """T = Σ ½ J_k ω_k² with J = m D²/8 [000, eq. 1–4], ω3 = ω D2/D3, ω5 = ω3 D4/D5."""
+    w = np.array([100.0, 150.0])
+    got = engine.sweep(SPEC, EXAMPLE_LIGHT_TRUCK, "motor_speed", w, outputs=("kinetic_energy",))
+    e = EXAMPLE_LIGHT_TRUCK
+    for i, speed in enumerate(w):
+        w3 = speed * 0.08 / 0.25
+        w5 = w3 * 0.10 / 0.05
+        parts = (
+            1.2 * 0.09**2 / 8 * speed**2,
+            0.8 * 0.08**2 / 8 * speed**2,
+            12.0 * 0.25**2 / 8 * w3**2,
+            2.5 * 0.10**2 / 8 * w3**2,
+            e["spindle_count"] * 0.5 * 0.05**2 / 8 * w5**2,
+        )
+        assert got.columns["kinetic_energy"][i] == pytest.approx(0.5 * sum(parts), rel=1e-14)
