@@ -231,6 +231,60 @@ def parts(sentence: str) -> Parts:
         return [sentence]
     head, *marked = sentence.split(OPEN)
     out: Parts = [head] if head else []
+    append = out.append
+    unit_of = _SI_UNIT
+    shown_digits = _SHOWN
+    unpack = _DOUBLE.unpack
+    for piece in marked:
+        payload, close, rest = piece.partition(CLOSE)
+        fields = payload.split(SEP)
+        if not close or len(fields) != 5:
+            return _parts_marked(sentence)  # a mark outside a quantity q() wrote
+        text, raw, display, shown, flag = fields
+        unit = unit_of.get(display)
+        if unit is None:
+            return _parts_marked(sentence)  # a display unit this module does not write
+        try:
+            (value,) = unpack(bytes.fromhex(raw))
+            if value - value == 0.0:  # finite
+                digits = shown_digits.get(shown)
+                if digits is None:
+                    digits = _digits(shown, text)
+            else:
+                value, digits = None, 3
+        except (ValueError, struct.error):
+            return _parts_marked(sentence)
+        append(
+            {
+                "value": value,
+                "unit": unit,
+                "display_unit": display,
+                "digits": digits,
+                "text": text,
+                "bare": flag == "1",
+            }
+        )
+        if rest:  # after a quantity: no text to join it to
+            append(rest)
+    return out
+
+
+#: Per display unit, its SI unit (the first column of :data:`DISPLAY`).
+_SI_UNIT: dict[str, str] = {k: v[0] for k, v in DISPLAY.items()}
+#: The digits of a quantity :func:`q` wrote with at most 3 (its mark carries the number).
+_SHOWN: dict[str, int] = {"1": 1, "2": 2, "3": 3}
+
+
+def _parts_marked(sentence: str) -> Parts:
+    """:func:`parts` of a sentence with a mark outside a quantity :func:`q` wrote: each
+    piece between opening marks read on its own; what is not a quantity keeps what a
+    reader would see.
+
+    >>> _parts_marked("a" + OPEN + "b" + SEP + "c" + CLOSE + " d")
+    ['abc d']
+    """
+    head, *marked = sentence.split(OPEN)
+    out: Parts = [head] if head else []
 
     def add(text: str) -> None:  # neighbouring texts joined
         if out and isinstance(out[-1], str):
