@@ -105,13 +105,6 @@ def _number(value: float, display: str, fmt: str) -> str:
     return f"{value * DISPLAY[display][1]:{fmt}}"
 
 
-def _digits_shown(number: str) -> int:
-    """Significant digits of a number as :func:`written` wrote it ("0.0450" → 3,
-    "-1.50e+03" → 3)."""
-    mantissa = number.partition("e")[0].lstrip("-0.").replace(".", "")
-    return max(1, len(mantissa))
-
-
 #: Per display unit: the factor from SI, the unit as written after the number (the two
 #: columns of :data:`DISPLAY` that :func:`q` reads on every call) and the mark's fields
 #: that follow the SI value (the display unit between its separators).
@@ -184,12 +177,20 @@ def _digits(shown: str, text: str) -> int:
     (3, 3, 4)
     >>> _digits(":6", "2014.0 N·m"), _digits("6:8", "0.001234 mm")
     (5, 4)
+    >>> _digits(":6", "0.0450 mm"), _digits("5:9", "-1.50e+03 N"), _digits(":1", "0 mm")
+    (3, 3, 3)
     """
     most, counted, length = shown.partition(":")
     if not counted:
         return int(most)
-    found = max(3, _digits_shown(text[: int(length)]))
-    return min(found, int(most)) if most else found
+    # the significant digits the number shows ("0.0450" → 3, "-1.50e+03" → 3): its
+    # mantissa without sign, leading zeros and point, counted in one expression
+    found = len(text[: int(length)].partition("e")[0].lstrip("-0.").replace(".", ""))
+    if found < 3:
+        found = 3
+    if most and found > int(most):
+        return int(most)
+    return found
 
 
 def plain(sentence: str) -> str:
