@@ -4,6 +4,8 @@ sentence with a mark outside such a quantity to the piece-by-piece reader
 
 from __future__ import annotations
 
+import re
+
 import pytest
 
 import engine
@@ -61,3 +63,22 @@ def test_a_quantity_written_with_four_digits_carries_them_by_hand() -> None:
     assert plain("x " + q(float("nan"), "kN")) == "x nan kN"
     nan = parts("x " + q(float("nan"), "kN"))[1]
     assert isinstance(nan, dict) and (nan["value"], nan["digits"]) == (None, 3)
+
+
+@pytest.mark.parametrize(
+    "sentence",
+    [
+        "a" + SEP + "x" + OPEN + "y" + CLOSE + " b",  # the data's pattern runs over a mark
+        SEP + "x" + OPEN + GOOD,
+        GOOD + SEP + OPEN + CLOSE,
+        OPEN + "t" + SEP + "u" + SEP + "v" + CLOSE,  # three fields: dropped as before
+        GOOD + " and " + q(0.0254, "mm", 4),
+    ],
+)
+def test_plain_reads_a_sentence_with_stray_marks_as_before(sentence: str) -> None:
+    # the reading before: the data dropped up to a closing mark with no opening mark
+    # between, the opening marks dropped, parts() where a mark was left over
+    before = re.sub(f"{SEP}[^{OPEN}{CLOSE}]*{CLOSE}", "", sentence).replace(OPEN, "")
+    if SEP in before or CLOSE in before:
+        before = "".join(p if isinstance(p, str) else p["text"] for p in parts(sentence))
+    assert plain(sentence) == before
