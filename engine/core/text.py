@@ -67,7 +67,7 @@ DISPLAY: dict[str, tuple[str, float, str]] = {
 
 #: A quantity's marks as :func:`q` writes them (five fields; the text is the last): the marks
 #: alone are matched, never the numbers of free text.
-_DATA = re.compile(f"{SEP}[^{CLOSE}]*{CLOSE}")
+_DATA = re.compile(f"{SEP}[^{OPEN}{CLOSE}]*{CLOSE}")
 
 
 class Quantity(TypedDict):
@@ -203,13 +203,9 @@ def plain(sentence: str) -> str:
     """
     if OPEN not in sentence:
         return sentence
-    # each quantity's data dropped and its opening mark: two passes in C. The data's
-    # pattern runs to the next closing mark; where it ran over an opening mark (a stray
-    # mark: the opening marks counted before and after) the sentence is read as parts()
-    # reads it, as it is where a mark is left over
-    dropped = _DATA.sub("", sentence)
-    fast = dropped.replace(OPEN, "")
-    if SEP not in fast and CLOSE not in fast and len(fast) + sentence.count(OPEN) == len(dropped):
+    # each quantity's data dropped and its opening mark: two passes in C
+    fast = _DATA.sub("", sentence).replace(OPEN, "")
+    if SEP not in fast and CLOSE not in fast:
         return fast
     return _joined(parts(sentence))  # stray marks: read as parts() reads them
 
