@@ -105,13 +105,6 @@ def _number(value: float, display: str, fmt: str) -> str:
     return f"{value * DISPLAY[display][1]:{fmt}}"
 
 
-def _digits_shown(number: str) -> int:
-    """Significant digits of a number as :func:`written` wrote it ("0.0450" → 3,
-    "-1.50e+03" → 3)."""
-    mantissa = number.partition("e")[0].lstrip("-0.").replace(".", "")
-    return max(1, len(mantissa))
-
-
 #: Per display unit: the factor from SI, the unit as written after the number (the two
 #: columns of :data:`DISPLAY` that :func:`q` reads on every call) and the mark's fields
 #: that follow the SI value (the display unit between its separators).
@@ -184,12 +177,20 @@ def _digits(shown: str, text: str) -> int:
     (3, 3, 4)
     >>> _digits(":6", "2014.0 N·m"), _digits("6:8", "0.001234 mm")
     (5, 4)
+    >>> _digits(":6", "0.0450 mm"), _digits("5:9", "-1.50e+03 N"), _digits(":1", "0 mm")
+    (3, 3, 3)
     """
     most, counted, length = shown.partition(":")
     if not counted:
         return int(most)
-    found = max(3, _digits_shown(text[: int(length)]))
-    return min(found, int(most)) if most else found
+    # the significant digits the number shows ("0.0450" → 3, "-1.50e+03" → 3): its
+    # mantissa without sign, leading zeros and point, counted in one expression
+    found = len(text[: int(length)].partition("e")[0].lstrip("-0.").replace(".", ""))
+    if found < 3:
+        found = 3
+    if most and found > int(most):
+        return int(most)
+    return found
 
 
 def plain(sentence: str) -> str:
@@ -229,6 +230,60 @@ def parts(sentence: str) -> Parts:
     """
     if OPEN not in sentence:
         return [sentence]
+    head, *marked = sentence.split(OPEN)
+    out: Parts = [head] if head else []
+    append = out.append
+    unit_of = _SI_UNIT
+    shown_digits = _SHOWN
+    unpack = _DOUBLE.unpack
+    for piece in marked:
+        payload, close, rest = piece.partition(CLOSE)
+        fields = payload.split(SEP)
+        if not close or len(fields) != 5:
+            return _parts_marked(sentence)  # a mark outside a quantity q() wrote
+        text, raw, display, shown, flag = fields
+        unit = unit_of.get(display)
+        if unit is None:
+            return _parts_marked(sentence)  # a display unit this module does not write
+        try:
+            (value,) = unpack(bytes.fromhex(raw))
+            if value - value == 0.0:  # finite
+                digits = shown_digits.get(shown)
+                if digits is None:
+                    digits = _digits(shown, text)
+            else:
+                value, digits = None, 3
+        except (ValueError, struct.error):
+            return _parts_marked(sentence)
+        append(
+            {
+                "value": value,
+                "unit": unit,
+                "display_unit": display,
+                "digits": digits,
+                "text": text,
+                "bare": flag == "1",
+            }
+        )
+        if rest:  # after a quantity: no text to join it to
+            append(rest)
+    return out
+
+
+#: Per display unit, its SI unit (the first column of :data:`DISPLAY`).
+_SI_UNIT: dict[str, str] = {k: v[0] for k, v in DISPLAY.items()}
+#: The digits of a quantity :func:`q` wrote with at most 3 (its mark carries the number).
+_SHOWN: dict[str, int] = {"1": 1, "2": 2, "3": 3}
+
+
+def _parts_marked(sentence: str) -> Parts:
+    """:func:`parts` of a sentence with a mark outside a quantity :func:`q` wrote: each
+    piece between opening marks read on its own; what is not a quantity keeps what a
+    reader would see.
+
+    >>> _parts_marked("a" + OPEN + "b" + SEP + "c" + CLOSE + " d")
+    ['abc d']
+    """
     head, *marked = sentence.split(OPEN)
     out: Parts = [head] if head else []
 

@@ -1,0 +1,84 @@
+"""parts() reads the quantities q() wrote in one loop without joining helpers, and hands any
+sentence with a mark outside such a quantity to the piece-by-piece reader
+(engine.core.text._parts_marked): the two give the same parts for every sentence."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+import engine
+from engine.core.text import CLOSE, OPEN, SEP, _parts_marked, parts, plain, q
+from engine.models import MODELS
+
+
+def _sentences() -> list[str]:
+    out: list[str] = []
+    for spec in MODELS:
+        result = engine.run(spec, spec.examples[0])
+        out += [c.marked or c.detail for c in result.checks]
+        out += result.marked_notes or result.notes
+    return out
+
+
+def test_every_first_examples_sentence_reads_as_the_piece_by_piece_reader() -> None:
+    sentences = [s for s in _sentences() if OPEN in s]
+    assert len(sentences) > 20
+    for s in sentences:
+        assert parts(s) == _parts_marked(s), s
+
+
+GOOD = q(23_790.0, "kN")
+
+
+@pytest.mark.parametrize(
+    "sentence",
+    [
+        "a" + OPEN + "b" + SEP + "c",
+        GOOD + CLOSE,
+        SEP + GOOD,
+        OPEN + GOOD,
+        GOOD[:-1],
+        OPEN + "t" + SEP + "zz" + SEP + "kN" + SEP + "3" + SEP + CLOSE,  # not hex
+        OPEN + "t" + SEP + "00" * 8 + SEP + "kN" + SEP + "x:1" + SEP + CLOSE,  # bad digits
+        OPEN + "t" + SEP + "00" * 8 + SEP + "furlong" + SEP + "3" + SEP + CLOSE,
+        OPEN + "t" + SEP + "00 " * 8 + SEP + "kN" + SEP + "3" + SEP + CLOSE,  # spaced hex
+        OPEN,
+        q(float("nan"), "mm") + " then " + q(float("inf"), "mm", 5),
+    ],
+)
+def test_a_sentence_with_stray_marks_reads_as_before(sentence: str) -> None:
+    assert parts(sentence) == _parts_marked(sentence)
+
+
+def test_a_quantity_written_with_four_digits_carries_them_by_hand() -> None:
+    # 0.001234 m in mm with 4 digits: "1.234 mm", 4 digits shown
+    (quantity,) = parts(q(0.001234, "mm", 4))
+    assert isinstance(quantity, dict)
+    assert (quantity["text"], quantity["digits"], quantity["value"]) == ("1.234 mm", 4, 0.001234)
+    # 0.0012 m with 4 digits writes "1.2 mm": the parts carry at least 3
+    (short,) = parts(q(0.0012, "mm", 4))
+    assert isinstance(short, dict) and short["digits"] == 3
+    assert plain("x " + q(float("nan"), "kN")) == "x nan kN"
+    nan = parts("x " + q(float("nan"), "kN"))[1]
+    assert isinstance(nan, dict) and (nan["value"], nan["digits"]) == (None, 3)
+
+
+@pytest.mark.parametrize(
+    "sentence",
+    [
+        "a" + SEP + "x" + OPEN + "y" + CLOSE + " b",  # the data's pattern runs over a mark
+        SEP + "x" + OPEN + GOOD,
+        GOOD + SEP + OPEN + CLOSE,
+        OPEN + "t" + SEP + "u" + SEP + "v" + CLOSE,  # three fields: dropped as before
+        GOOD + " and " + q(0.0254, "mm", 4),
+    ],
+)
+def test_plain_reads_a_sentence_with_stray_marks_as_before(sentence: str) -> None:
+    # the reading before: the data dropped up to a closing mark with no opening mark
+    # between, the opening marks dropped, parts() where a mark was left over
+    before = re.sub(f"{SEP}[^{OPEN}{CLOSE}]*{CLOSE}", "", sentence).replace(OPEN, "")
+    if SEP in before or CLOSE in before:
+        before = "".join(p if isinstance(p, str) else p["text"] for p in parts(sentence))
+    assert plain(sentence) == before
