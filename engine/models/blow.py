@@ -1251,13 +1251,7 @@ _TIME_OUTPUTS = (
 #: a sweep asking for these only runs one blow.
 _FIRST_BLOW_OUTPUTS = frozenset(
     (
-        "tool_energy_used",
-        "tool_inertia_used",
-        "tool_speed",
-        "tool_stiffness_used",
-        "joint_rate_used",
-        "rigid_torque",
-        "saturation_torque",
+        *_TOOL_VALUES,
         "peak_torque",
         "torque_after_first_blow",
         "nut_rotation",

@@ -595,6 +595,24 @@ def _sharing(x: Mapping[str, Any]) -> Any:
     return torque_sharing(x["spring_arrangement"], x["ball_count"], x["load_factor"])
 
 
+def _gain_at(x: Mapping[str, Any], beta: Any) -> np.ndarray:
+    """The torque per newton of spring force at the flank angles ``beta`` (one row of lift
+    points per design: the designs' arrays in ``x`` broadcast against the last axis)
+    [torque_against_lift with unit force]."""
+    xs = {k: (v[..., None] if isinstance(v, np.ndarray) else v) for k, v in x.items()}
+    return np.asarray(
+        torque_against_lift(
+            1.0,
+            beta,
+            xs["ball_circle_diameter"],
+            xs["flank_friction"],
+            xs["driving_groove_angle"],
+            _sharing(xs),
+            x["flank_construction"],
+        )
+    )
+
+
 def _ride(x: Mapping[str, Any]) -> Any:
     """The flank (and rim) the ball climbs: :func:`riding_flank_angle`."""
     return riding_flank_angle(x["groove_angle"], x["driving_groove_angle"], x["flank_construction"])
@@ -1532,19 +1550,8 @@ def _bisect_rising(
     rising = np.where(
         np.isnan(s_max)[..., None], True, last <= (s_max * part["disc_series"])[..., None]
     )
-    xs = {k: (v[..., None] if isinstance(v, np.ndarray) else v) for k, v in part.items()}
     beta = lift_points(0.0, part["ball_diameter"], _ride(part), POINTS)[1]
-    gain = np.asarray(
-        torque_against_lift(
-            1.0,
-            beta,
-            xs["ball_circle_diameter"],
-            xs["flank_friction"],
-            xs["driving_groove_angle"],
-            _sharing(xs),
-            part["flank_construction"],
-        )
-    )
+    gain = _gain_at(part, beta)
     pushing = np.all(np.isfinite(gain) & (gain > 0.0), axis=-1)
     # the last grid point of the rising prefix (0: none), per point
     top = np.broadcast_to(
@@ -2052,18 +2059,7 @@ class SettingGrid:
             x["ball_lift"] if given else 0.0, x["ball_diameter"], _ride(x), POINTS, True
         )
         self.share = 1.0 if given else 0.5  # 1/(1 + p)
-        xs = {k: (val[..., None] if isinstance(val, np.ndarray) else val) for k, val in x.items()}
-        gain = np.asarray(
-            torque_against_lift(
-                1.0,
-                beta,
-                xs["ball_circle_diameter"],
-                xs["flank_friction"],
-                xs["driving_groove_angle"],
-                _sharing(xs),
-                x["flank_construction"],
-            )
-        )
+        gain = _gain_at(x, beta)
         # the lines rise with δ only where every push is positive and finite
         self.regular = np.all(np.isfinite(gain) & (gain > 0.0), axis=-1)
         self.inverse_gain = 1.0 / gain
