@@ -66,36 +66,38 @@ def test_the_recommended_range_warning_counts_the_points_outside() -> None:
 
 
 @pytest.mark.parametrize(
-    ("model", "asked"),
+    ("model", "vary", "values", "asked"),
     [
-        ("preload.tightening", ("assembly_preload", "tightening_torque")),
-        ("preload.control", ("nominal_preload", "target_torque")),
+        (
+            "preload.tightening",
+            "thread_friction",
+            (0.10, 0.12, 0.14),
+            ("assembly_preload", "tightening_torque"),
+        ),
+        (
+            "preload.control",
+            "thread_friction",
+            (0.10, 0.12, 0.14),
+            ("nominal_preload", "target_torque"),
+        ),
+        (
+            "joint.vdi2230",
+            "working_load",
+            (6e3, 8e3, 1e4),
+            ("additional_bolt_load", "required_preload_min", "max_bolt_force"),
+        ),
     ],
 )
-def test_the_preload_array_paths_give_only_the_outputs_asked_for(
-    model: str, asked: tuple[str, ...]
+def test_the_array_paths_give_only_the_outputs_asked_for(
+    model: str, vary: str, values: tuple[float, ...], asked: tuple[str, ...]
 ) -> None:
     spec = engine.get_model(model)
     x, _ = spec.validate(spec.examples[0])
-    mu = np.array([0.10, 0.12, 0.14])
     ctx = engine.core.spec.RunContext("closed_form", frozenset(asked), 0.01)
-    got = spec.vectorized({**x, "thread_friction": mu}, ctx)  # type: ignore[misc]
+    got = spec.vectorized({**x, vary: np.array(values)}, ctx)  # type: ignore[misc]
     assert set(got.values) == set(asked)
-    for j, m in enumerate(mu.tolist()):  # each the single run's, to the last bit
-        one = engine.run(spec, {**spec.examples[0], "thread_friction": m}, outputs=asked)
-        assert [got.values[name][j] for name in asked] == [one.results[name] for name in asked]
-
-
-def test_the_joint_array_path_gives_only_the_outputs_asked_for() -> None:
-    spec = engine.get_model("joint.vdi2230")
-    asked = ("additional_bolt_load", "required_preload_min", "max_bolt_force")
-    x, _ = spec.validate(spec.examples[0])
-    load = np.array([6e3, 8e3, 1e4])
-    ctx = engine.core.spec.RunContext("closed_form", frozenset(asked), 0.01)
-    got = spec.vectorized({**x, "working_load": load}, ctx)  # type: ignore[misc]
-    assert set(got.values) == set(asked)
-    for j, f_a in enumerate(load.tolist()):  # each the single run's, to the last bit
-        one = engine.run(spec, {**spec.examples[0], "working_load": f_a}, outputs=asked)
+    for j, v in enumerate(values):  # each the single run's, to the last bit
+        one = engine.run(spec, {**spec.examples[0], vary: v}, outputs=asked)
         assert [got.values[name][j] for name in asked] == [one.results[name] for name in asked]
 
 

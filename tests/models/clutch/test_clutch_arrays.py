@@ -268,6 +268,25 @@ def test_a_study_asking_no_peak_output_skips_the_curve_with_the_same_verdicts():
     assert "peak_torque" not in got.values  # left out for speed, not declared absent
 
 
+def _study_as_the_loop_then_array_values(
+    spec: ModelSpec, base: dict[str, object], outs: list[str], seed: int
+) -> dict[str, object]:
+    """A 60-design study of ``outs`` equals the point-by-point loop's (values and check
+    verdicts); then the array path's values for a caller that reads no checks."""
+    cols = _spread(spec, base, 60, 0.3, seed=seed)
+    fast = evaluate_chunk(spec, base, cols, outs, fidelity="closed_form")
+    slow = evaluate_chunk(_loop(spec), base, cols, outs, fidelity="closed_form")
+    for name in outs:
+        np.testing.assert_array_equal(fast.values[name], slow.values[name], err_msg=name)
+    assert sorted(fast.checks) == sorted(slow.checks)
+    for name, verdicts in slow.checks.items():
+        np.testing.assert_array_equal(fast.checks[name], verdicts, err_msg=name)
+    x, _ = spec.validate(base)
+    return dict(
+        spec.vectorized({**x, **cols}, RunContext("closed_form", frozenset(outs), 0.01)).values
+    )
+
+
 @pytest.mark.parametrize(
     ("example", "skipped", "kept"),
     [
@@ -281,18 +300,7 @@ def test_a_study_asking_no_peak_output_skips_the_curve_with_the_same_verdicts():
 def test_a_ball_study_asking_the_paper_outputs_skips_what_no_check_reads(example, skipped, kept):
     spec = BALL_CLUTCH
     base = dict(spec.examples[example])
-    cols = _spread(spec, base, 60, 0.3, seed=9)
-    outs = ["spring_force", "torque_limit"]
-    fast = evaluate_chunk(spec, base, cols, outs, fidelity="closed_form")
-    slow = evaluate_chunk(_loop(spec), base, cols, outs, fidelity="closed_form")
-    for name in outs:
-        np.testing.assert_array_equal(fast.values[name], slow.values[name], err_msg=name)
-    assert sorted(fast.checks) == sorted(slow.checks)
-    for name, verdicts in slow.checks.items():
-        np.testing.assert_array_equal(fast.checks[name], verdicts, err_msg=name)
-    ctx = RunContext("closed_form", frozenset(outs), 0.01)
-    x, _ = spec.validate(base)
-    got = spec.vectorized({**x, **cols}, ctx).values
+    got = _study_as_the_loop_then_array_values(spec, base, ["spring_force", "torque_limit"], 9)
     for name in skipped:  # left out for speed
         assert got.get(name) is None, name
     for name in kept:
@@ -313,18 +321,8 @@ def test_a_setting_study_asking_the_paper_outputs_skips_what_no_check_reads(
 ):
     spec = BALL_CLUTCH_SETTING
     base = {**spec.examples[example], **extra}
-    cols = _spread(spec, base, 60, 0.3, seed=5)
     outs = ["required_spring_force", "required_deflection"]
-    fast = evaluate_chunk(spec, base, cols, outs, fidelity="closed_form")
-    slow = evaluate_chunk(_loop(spec), base, cols, outs, fidelity="closed_form")
-    for name in outs:
-        np.testing.assert_array_equal(fast.values[name], slow.values[name], err_msg=name)
-    assert sorted(fast.checks) == sorted(slow.checks)
-    for name, verdicts in slow.checks.items():
-        np.testing.assert_array_equal(fast.checks[name], verdicts, err_msg=name)
-    ctx = RunContext("closed_form", frozenset(outs), 0.01)
-    x, _ = spec.validate(base)
-    got = spec.vectorized({**x, **cols}, ctx).values
+    got = _study_as_the_loop_then_array_values(spec, base, outs, 5)
     for name in skipped:  # left out for speed (declared absent only as unasked)
         assert got.get(name) is None, name
     if not skipped:
