@@ -41,14 +41,14 @@ from ..physics.nutrunner import (
     WHEEL_NUT_TORQUE,
     acceleration_time,
     disc_inertia,
-    equivalent_inertia,
+    drive_inertia,
     flywheel_speed,
     gear_ratio_torque_change,
     impact_torque,
     impact_torque_geared,
-    kinetic_energy,
     max_spindle_torque,
     part_energies,
+    rotational_energy,
     shaft_shear_stress,
     spindle_gear_spacing,
     spindle_speed,
@@ -777,6 +777,7 @@ class _Drive:
     """
 
     energies: tuple[Any, Any, Any, Any, Any] | None
+    inertia: Any
     energy: Any
     w3: Any
     w5: Any
@@ -790,30 +791,31 @@ class _Drive:
 def _drive(x: Mapping[str, Any], *, parts: bool = True, torque: str = "both") -> _Drive:
     """The closed forms of drive ``x`` [000, eq. 1–9], on floats or arrays.
 
-    ``parts``: the part energies and the flywheel and spindle-gear speeds (else None: the
-    energy alone, the same sum). ``torque``: "paper", "geared" or "both" impact-torque
-    forms (the other None). On arrays each left-out quantity is a pass over the points.
+    The energy is the inertia of parts 1…5 at the motor shaft (one number where the parts
+    do not vary) times ω²/2, in every path. ``parts``: the part energies and the flywheel
+    and spindle-gear speeds too (else None). ``torque``: "paper", "geared", "both" or
+    "none" of the impact-torque forms (the others None). On arrays each left-out
+    quantity is a pass over the points.
     """
     w = x["motor_speed"]
-    masses = (
-        x["coupling_mass"],
-        x["coupling_diameter"],
-        x["motor_pulley_mass"],
-        x["motor_pulley_diameter"],
-        x["flywheel_mass"],
-        x["flywheel_diameter"],
-        x["drive_gear_mass"],
-        x["drive_gear_diameter"],
-        x["spindle_gear_mass"],
-        x["spindle_gear_diameter"],
-        x["spindle_count"],
-    )
-    energies = part_energies(w, *masses) if parts else None
-    if energies is None:
-        energy = kinetic_energy(w, *masses)
-        w3 = w5 = None
-    else:
-        energy = energies[0] + energies[1] + energies[2] + energies[3] + energies[4]
+    inertia = _inertia(x)
+    energy = rotational_energy(inertia, w)
+    energies = w3 = w5 = None
+    if parts:
+        energies = part_energies(
+            w,
+            x["coupling_mass"],
+            x["coupling_diameter"],
+            x["motor_pulley_mass"],
+            x["motor_pulley_diameter"],
+            x["flywheel_mass"],
+            x["flywheel_diameter"],
+            x["drive_gear_mass"],
+            x["drive_gear_diameter"],
+            x["spindle_gear_mass"],
+            x["spindle_gear_diameter"],
+            x["spindle_count"],
+        )
         w3 = flywheel_speed(w, x["motor_pulley_diameter"], x["flywheel_diameter"])
         w5 = spindle_speed(w3, x["drive_gear_diameter"], x["spindle_gear_diameter"])
     u = x["drive_gear_diameter"] / x["spindle_gear_diameter"]
@@ -822,14 +824,15 @@ def _drive(x: Mapping[str, Any], *, parts: bool = True, torque: str = "both") ->
     c8 = torsional_stiffness(g, x["spindle_diameter"], x["spindle_length"])
     return _Drive(
         energies=energies,
+        inertia=inertia,
         energy=energy,
         w3=w3,
         w5=w5,
         u=u,
         c7=c7,
         c8=c8,
-        m_paper=impact_torque(energy, c7, c8) if torque != "geared" else None,
-        m_geared=impact_torque_geared(energy, c7, c8, u) if torque != "paper" else None,
+        m_paper=impact_torque(energy, c7, c8) if torque in ("paper", "both") else None,
+        m_geared=impact_torque_geared(energy, c7, c8, u) if torque in ("geared", "both") else None,
     )
 
 
@@ -882,7 +885,7 @@ def _closed_values(
             "flywheel_energy": t3,
             "drive_gear_energy": t4,
             "spindle_gears_energy": t5,
-            "equivalent_inertia": _inertia(x, d),
+            "equivalent_inertia": d.inertia,
             "flywheel_speed": d.w3,
             "spindle_gear_speed": d.w5,
             "gear_ratio": d.u,
@@ -922,80 +925,75 @@ def _coupling_slip_torque(x: Mapping[str, Any], d: _Drive) -> Any:
     start: Any = 0.0
     if x["breakdown_torque"] is not None and x["rotor_inertia"] is not None:
         # parts 2…5 are the load; the coupling's own inertia counts with the motor's side
-        load = _inertia(x, d, coupling=False)
+        load = _inertia(x, coupling=False)
         drive = x["rotor_inertia"] + disc_inertia(x["coupling_mass"], x["coupling_diameter"])
         start = acceleration_torque(x["breakdown_torque"], drive, load)
     return required_slip_torque(rated, x["coupling_service_factor"], start)
 
 
-def _inertia(x: Mapping[str, Any], d: _Drive, *, coupling: bool = True, **motor: Any) -> Any:
+def _inertia(x: Mapping[str, Any], *, coupling: bool = True, **motor: Any) -> Any:
     """Inertia of parts 1…5 (or 2…5) at the motor shaft; ``motor``: rotor and efficiencies."""
-    return equivalent_inertia(
-        disc_inertia(x["coupling_mass"], x["coupling_diameter"]) if coupling else 0.0,
-        disc_inertia(x["motor_pulley_mass"], x["motor_pulley_diameter"]),
-        disc_inertia(x["flywheel_mass"], x["flywheel_diameter"]),
-        disc_inertia(x["drive_gear_mass"], x["drive_gear_diameter"]),
-        disc_inertia(x["spindle_gear_mass"], x["spindle_gear_diameter"]),
+    return drive_inertia(
+        x["coupling_mass"] if coupling else 0.0,
+        x["coupling_diameter"],
+        x["motor_pulley_mass"],
+        x["motor_pulley_diameter"],
+        x["flywheel_mass"],
+        x["flywheel_diameter"],
+        x["drive_gear_mass"],
+        x["drive_gear_diameter"],
+        x["spindle_gear_mass"],
+        x["spindle_gear_diameter"],
         x["spindle_count"],
-        d.w3 / x["motor_speed"],
-        d.u,
         **motor,
     )
 
 
-def _drive_inertia(x: Mapping[str, Any], d: _Drive) -> float:
+def _drive_inertia(x: Mapping[str, Any]) -> Any:
     """What the motor accelerates: rotor, parts 1…5, through the belt and gear losses."""
-    return float(
-        _inertia(
-            x,
-            d,
-            rotor_inertia=x["rotor_inertia"],
-            belt_efficiency=x["belt_efficiency"],
-            gear_efficiency=x["gear_efficiency"],
-        )
+    return _inertia(
+        x,
+        rotor_inertia=x["rotor_inertia"],
+        belt_efficiency=x["belt_efficiency"],
+        gear_efficiency=x["gear_efficiency"],
     )
 
 
-def _curve_time_ratio(x: Mapping[str, Any]) -> float | None:
+def _curve_time_ratio(x: Mapping[str, Any], energy: float) -> float | None:
     """Constant-power time over motor-curve time, minus 1 (None without a curve).
 
-    One design; raises, naming the field, where the curve is refused.
+    One design of drive energy ``energy``; raises, naming the field, where the curve
+    is refused.
     """
     curve = _motor_curve(x)
     if curve is None:
         return None
-    d = _drive(x)
-    j = _drive_inertia(x, d)
+    j = float(_drive_inertia(x))
     with np.errstate(all="ignore"):
         t_curve = float(_curve_time(x, j))
     if math.isnan(t_curve):
         spin_up_time(j, curve, float(x["motor_speed"]))  # raises: why the motor cannot
-    return float(acceleration_time(d.energy, x["motor_power"]) / t_curve - 1.0)
+    return float(acceleration_time(energy, x["motor_power"]) / t_curve - 1.0)
 
 
-def _idealisation_error(x: Mapping[str, Any]) -> Any:
+def _idealisation_error(x: Mapping[str, Any], energy: Any = None) -> Any:
     """How far the constant-power time is from the motor curve's (0 without a curve).
 
     |T/P / t_curve − 1|, 1 where the curve is refused (the constant-power time is
     meaningless if the motor cannot get there). Floats or arrays (a sweep or a study):
-    the curves' closed forms (:func:`_curve_time`), every point at once.
+    the curves' closed forms (:func:`_curve_time`), every point at once. ``energy``:
+    the drive's, where the caller has it.
     """
     kind = x["motor_curve"]
     if kind == "none":
         return 0.0
     if any(x.get(name) is None for name in _CURVE_INPUTS[kind]):
         return 1.0
-    d = _drive(x)
-    inertia = _inertia(
-        x,
-        d,
-        rotor_inertia=x["rotor_inertia"],
-        belt_efficiency=x["belt_efficiency"],
-        gear_efficiency=x["gear_efficiency"],
-    )
+    if energy is None:
+        energy = _drive(x, parts=False, torque="none").energy
     with np.errstate(all="ignore"):
-        t_curve = _curve_time(x, inertia)
-        ratio = np.abs(acceleration_time(d.energy, x["motor_power"]) / t_curve - 1.0)
+        t_curve = _curve_time(x, _drive_inertia(x))
+        ratio = np.abs(acceleration_time(energy, x["motor_power"]) / t_curve - 1.0)
     error = np.where(np.isnan(t_curve), 1.0, ratio)
     return float(error) if error.ndim == 0 else error
 
@@ -1024,7 +1022,7 @@ def _estimate_closed_form(x: Mapping[str, Any], drive: _Drive | None = None) -> 
     gear = np.where(
         np.minimum(m_paper, m_geared) > friction, np.maximum(gear, after_friction), gear
     )
-    estimate = np.maximum(np.maximum(_FLOOR, gear), _idealisation_error(x))
+    estimate = np.maximum(np.maximum(_FLOOR, gear), _idealisation_error(x, d.energy))
     return float(estimate) if estimate.ndim == 0 else estimate
 
 
@@ -1151,10 +1149,10 @@ def _checks(x: Mapping[str, Any], values: Mapping[str, Any]) -> tuple[list[Check
     return checks, warnings
 
 
-def _constant_power_note(x: Mapping[str, Any]) -> str:
+def _constant_power_note(x: Mapping[str, Any], energy: float) -> str:
     """What the given motor curve says about this rung's constant-power spin-up time."""
     try:
-        ratio = _curve_time_ratio(x)
+        ratio = _curve_time_ratio(x, energy)
     except (InfeasibleDesign, InputOutOfRange) as exc:
         return f"the motor curve given is not used by this rung, and it fails: {exc.message}"
     assert ratio is not None
@@ -1203,7 +1201,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
         error = _estimate_gear_ratio(x) if ctx.rung == "gear_ratio" else None
     if ctx.rung != "motor_curve" and x["motor_curve"] != "none":
-        notes.append(_constant_power_note(x))
+        notes.append(_constant_power_note(x, d.energy))
     series: dict[str, list[float]] = {}
     wants_series = ctx.wants("time", "motor_speed_curve", "flywheel_speed_curve")
     w = float(x["motor_speed"])
@@ -1215,7 +1213,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
                 "'linear', 'induction' or 'constant_power' with its inputs",
                 field="motor_curve",
             )
-        j_drive = _drive_inertia(x, d)
+        j_drive = float(_drive_inertia(x))
         t_curve, abserr = spin_up_time(j_drive, curve, w)
         t_cp = float(values["acceleration_time"])
         error = max(abserr / t_curve, 1e-15)

@@ -36,10 +36,13 @@ from typing import Any
 
 import numpy as np
 
+from ..numerics.ode import sqrt
+
 __all__ = [
     "WHEEL_NUT_TORQUE",
     "acceleration_time",
     "disc_inertia",
+    "drive_inertia",
     "equivalent_inertia",
     "flywheel_speed",
     "gear_ratio_torque_change",
@@ -48,6 +51,7 @@ __all__ = [
     "kinetic_energy",
     "max_spindle_torque",
     "part_energies",
+    "rotational_energy",
     "shaft_shear_stress",
     "spindle_gear_spacing",
     "spindle_speed",
@@ -93,7 +97,7 @@ def disc_inertia(mass: Any, diameter: Any) -> Any:
     >>> disc_inertia(12.0, 0.25)
     0.09375
     """
-    return mass * diameter**2 / 8.0
+    return mass * (diameter * diameter) / 8.0  # a product, not a power: floats and arrays agree
 
 
 def flywheel_speed(motor_speed: Any, motor_pulley_diameter: Any, flywheel_diameter: Any) -> Any:
@@ -221,27 +225,29 @@ def part_energies(
     w = motor_speed
     w3 = flywheel_speed(w, motor_pulley_diameter, flywheel_diameter)
     w5 = spindle_speed(w3, drive_gear_diameter, spindle_gear_diameter)
-    w_sq, w3_sq = w**2, w3**2  # each square once: on arrays, a pass over the points each
-    t1 = 0.5 * disc_inertia(coupling_mass, coupling_diameter) * w_sq
-    t2 = 0.5 * disc_inertia(motor_pulley_mass, motor_pulley_diameter) * w_sq
-    t3 = 0.5 * disc_inertia(flywheel_mass, flywheel_diameter) * w3_sq
-    t4 = 0.5 * disc_inertia(drive_gear_mass, drive_gear_diameter) * w3_sq
-    t5 = 0.5 * spindle_count * disc_inertia(spindle_gear_mass, spindle_gear_diameter) * w5**2
-    return t1, t2, t3, t4, t5
+    return (
+        rotational_energy(disc_inertia(coupling_mass, coupling_diameter), w),
+        rotational_energy(disc_inertia(motor_pulley_mass, motor_pulley_diameter), w),
+        rotational_energy(disc_inertia(flywheel_mass, flywheel_diameter), w3),
+        rotational_energy(disc_inertia(drive_gear_mass, drive_gear_diameter), w3),
+        rotational_energy(
+            spindle_count * disc_inertia(spindle_gear_mass, spindle_gear_diameter), w5
+        ),
+    )
 
 
-def kinetic_energy(*args: Any) -> Any:
-    r"""Kinetic energy of all rotating parts of the drive [000, eq. 3–4].
+def rotational_energy(inertia: Any, speed: Any) -> Any:
+    r"""Kinetic energy of a body turning about its axis [000, eq. 3].
 
     .. math::
-        T = \frac{1}{16}\left[m_1 D_1^2\omega_1^2 + m_2 D_2^2\omega_2^2
-            + m_3 D_3^2\omega_3^2 + m_4 D_4^2\omega_4^2 + z\,m_5 D_5^2\omega_5^2\right]
+        T = \tfrac12 J \omega^2
 
     Parameters
     ----------
-    *args
-        As :func:`part_energies` (motor speed, then mass and diameter of
-        parts 1…5, then the spindle count).
+    inertia : float
+        Moment of inertia :math:`J` about the axis, [kg*m^2]
+    speed : float
+        Angular speed :math:`\omega`, [rad/s]
 
     Returns
     -------
@@ -250,15 +256,165 @@ def kinetic_energy(*args: Any) -> Any:
 
     Notes
     -----
-    The sum of :func:`part_energies`; reconstructed form, see there.
+    The term of each part in [000, eq. 3]; with the drive's inertia referred to the
+    motor shaft (:func:`drive_inertia`) and the motor speed, the whole drive's energy
+    [000, eq. 3–4]. Computed as :math:`(J/2)\,(\omega\,\omega)`: on arrays of speeds
+    with one inertia, two passes over the points; floats and arrays give the same bits.
 
     Examples
     --------
-    >>> round(kinetic_energy(100.0, 1, 0.1, 1, 0.1, 8, 0.2, 1, 0.1, 1, 0.1, 2), 4)
+    >>> rotational_energy(0.09375, 40.0)  # by hand: 0.09375 * 1600 / 2 = 75
+    75.0
+    """
+    return 0.5 * inertia * (speed * speed)
+
+
+def drive_inertia(
+    coupling_mass: Any,
+    coupling_diameter: Any,
+    motor_pulley_mass: Any,
+    motor_pulley_diameter: Any,
+    flywheel_mass: Any,
+    flywheel_diameter: Any,
+    drive_gear_mass: Any,
+    drive_gear_diameter: Any,
+    spindle_gear_mass: Any,
+    spindle_gear_diameter: Any,
+    spindle_count: Any,
+    rotor_inertia: Any = 0.0,
+    belt_efficiency: Any = 1.0,
+    gear_efficiency: Any = 1.0,
+) -> Any:
+    r"""Inertia of parts 1…5 referred to the motor shaft, from their masses and diameters.
+
+    .. math::
+        J_{eq} = \frac18\left[m_1 D_1^2 + m_2 D_2^2 + (m_3 D_3^2 + m_4 D_4^2)\,i_b^2
+            + z\,m_5 D_5^2\,i_b^2 u^2\right],
+        \qquad i_b = \frac{D_2}{D_3},\; u = \frac{D_4}{D_5}
+
+    Parameters
+    ----------
+    coupling_mass, coupling_diameter : float
+        Safety coupling 1, [kg], [m]
+    motor_pulley_mass, motor_pulley_diameter : float
+        Motor pulley 2, [kg], [m]
+    flywheel_mass, flywheel_diameter : float
+        Flywheel 3 (driven pulley), [kg], [m]
+    drive_gear_mass, drive_gear_diameter : float
+        Drive gear 4 on the flywheel shaft, [kg], [m]
+    spindle_gear_mass, spindle_gear_diameter : float
+        One spindle gear 5, [kg], [m]
+    spindle_count : int
+        Number of spindles :math:`z`, [-]
+    rotor_inertia : float, optional
+        Motor rotor :math:`J_r`, [kg*m^2]; the source leaves it out.
+    belt_efficiency, gear_efficiency : float, optional
+        :math:`\eta_b, \eta_g` while accelerating, [-]; 1 in the source.
+
+    Returns
+    -------
+    J_eq : float
+        Equivalent inertia at the motor shaft, [kg*m^2]
+
+    Notes
+    -----
+    Parts 1…5 as solid discs (:func:`disc_inertia`) reduced to the motor shaft through
+    the belt and gear ratios of the kinematic chain (:func:`equivalent_inertia`), so
+    that :math:`T = J_{eq}\omega^2/2` (:func:`rotational_energy`) is the drive's energy
+    of [000, eq. 3–4]. A design's fixed parts give one number, whatever the speed.
+
+    Examples
+    --------
+    >>> # by hand: [1·0.01 + 1·0.01 + (8·0.04 + 1·0.01)·0.25 + 2·1·0.01·0.25·1]/8
+    >>> # = 0.1075/8 = 0.0134375
+    >>> round(drive_inertia(1, 0.1, 1, 0.1, 8, 0.2, 1, 0.1, 1, 0.1, 2), 12)
+    0.0134375
+    """
+    return equivalent_inertia(
+        disc_inertia(coupling_mass, coupling_diameter),
+        disc_inertia(motor_pulley_mass, motor_pulley_diameter),
+        disc_inertia(flywheel_mass, flywheel_diameter),
+        disc_inertia(drive_gear_mass, drive_gear_diameter),
+        disc_inertia(spindle_gear_mass, spindle_gear_diameter),
+        spindle_count,
+        motor_pulley_diameter / flywheel_diameter,
+        drive_gear_diameter / spindle_gear_diameter,
+        rotor_inertia,
+        belt_efficiency,
+        gear_efficiency,
+    )
+
+
+def kinetic_energy(
+    motor_speed: Any,
+    coupling_mass: Any,
+    coupling_diameter: Any,
+    motor_pulley_mass: Any,
+    motor_pulley_diameter: Any,
+    flywheel_mass: Any,
+    flywheel_diameter: Any,
+    drive_gear_mass: Any,
+    drive_gear_diameter: Any,
+    spindle_gear_mass: Any,
+    spindle_gear_diameter: Any,
+    spindle_count: Any,
+) -> Any:
+    r"""Kinetic energy of all rotating parts of the drive [000, eq. 3–4].
+
+    .. math::
+        T = \frac{1}{16}\left[m_1 D_1^2\omega_1^2 + m_2 D_2^2\omega_2^2
+            + m_3 D_3^2\omega_3^2 + m_4 D_4^2\omega_4^2 + z\,m_5 D_5^2\omega_5^2\right]
+          = \tfrac12 J_{eq}\,\omega^2
+
+    Parameters
+    ----------
+    motor_speed : float
+        Motor shaft speed :math:`\omega`, [rad/s]
+    coupling_mass, coupling_diameter : float
+        Safety coupling 1, [kg], [m]
+    motor_pulley_mass, motor_pulley_diameter : float
+        Motor pulley 2, [kg], [m]
+    flywheel_mass, flywheel_diameter : float
+        Flywheel 3 (driven pulley), [kg], [m]
+    drive_gear_mass, drive_gear_diameter : float
+        Drive gear 4 on the flywheel shaft, [kg], [m]
+    spindle_gear_mass, spindle_gear_diameter : float
+        One spindle gear 5, [kg], [m]
+    spindle_count : int
+        Number of spindles :math:`z`, [-]
+
+    Returns
+    -------
+    T : float
+        Kinetic energy, [J]
+
+    Notes
+    -----
+    The sum of :func:`part_energies`, taken in the cheaper order: the inertia of parts
+    1…5 referred to the motor shaft (:func:`drive_inertia`, one number for a design)
+    times :math:`\omega^2/2` (:func:`rotational_energy`); reconstructed form, see
+    :func:`part_energies`.
+
+    Examples
+    --------
+    >>> # by hand: 0.0134375 * 100**2 / 2 = 67.1875, the sum of part_energies
+    >>> round(kinetic_energy(100.0, 1, 0.1, 1, 0.1, 8, 0.2, 1, 0.1, 1, 0.1, 2), 10)
     67.1875
     """
-    t1, t2, t3, t4, t5 = part_energies(*args)
-    return t1 + t2 + t3 + t4 + t5
+    inertia = drive_inertia(
+        coupling_mass,
+        coupling_diameter,
+        motor_pulley_mass,
+        motor_pulley_diameter,
+        flywheel_mass,
+        flywheel_diameter,
+        drive_gear_mass,
+        drive_gear_diameter,
+        spindle_gear_mass,
+        spindle_gear_diameter,
+        spindle_count,
+    )
+    return rotational_energy(inertia, motor_speed)
 
 
 def equivalent_inertia(
@@ -315,7 +471,7 @@ def equivalent_inertia(
     >>> round(equivalent_inertia(0.001, 0.001, 0.04, 0.001, 0.0001, 4, 0.5, 2.0), 8)
     0.01265
     """
-    ib2 = belt_ratio**2
+    ib2 = belt_ratio * belt_ratio
     return (
         rotor_inertia
         + coupling_inertia
@@ -324,7 +480,7 @@ def equivalent_inertia(
         + spindle_count
         * spindle_gear_inertia
         * ib2
-        * gear_ratio**2
+        * (gear_ratio * gear_ratio)
         / (belt_efficiency * gear_efficiency)
     )
 
@@ -398,7 +554,9 @@ def torsional_stiffness(shear_modulus: Any, diameter: Any, length: Any) -> Any:
     >>> round(torsional_stiffness(8e10, 0.04, 0.4))
     50265
     """
-    return math.pi * shear_modulus * diameter**4 / (32.0 * length)
+    # d⁴ as (d·d)², not a power: floats and arrays then give the same bits
+    d_sq = diameter * diameter
+    return math.pi * shear_modulus * (d_sq * d_sq) / (32.0 * length)
 
 
 def impact_torque(kinetic_energy: Any, shaft_stiffness: Any, spindle_stiffness: Any) -> Any:
@@ -437,7 +595,8 @@ def impact_torque(kinetic_energy: Any, shaft_stiffness: Any, spindle_stiffness: 
     3077.3
     """
     c7, c8 = shaft_stiffness, spindle_stiffness
-    return (2.0 * kinetic_energy * c7 * c8 / (c7 + c8)) ** 0.5
+    # the stiffnesses' factor first: one number for a design's fixed shaft and spindle
+    return sqrt(kinetic_energy * (2.0 * c7 * c8 / (c7 + c8)))
 
 
 def impact_torque_geared(
@@ -479,8 +638,8 @@ def impact_torque_geared(
     >>> round(impact_torque_geared(268.5, 57446.0, 25447.0, 2.0), 1)
     2220.3
     """
-    compliance = gear_ratio**2 / shaft_stiffness + 1.0 / spindle_stiffness
-    return (2.0 * kinetic_energy / compliance) ** 0.5
+    compliance = gear_ratio * gear_ratio / shaft_stiffness + 1.0 / spindle_stiffness
+    return sqrt(kinetic_energy * (2.0 / compliance))
 
 
 def gear_ratio_torque_change(shaft_stiffness: Any, spindle_stiffness: Any, gear_ratio: Any) -> Any:
@@ -691,4 +850,4 @@ def shaft_shear_stress(torque: Any, diameter: Any) -> Any:
     >>> round(shaft_shear_stress(1000.0, 0.04) / 1e6, 2)
     79.58
     """
-    return 16.0 * torque / (math.pi * diameter**3)
+    return 16.0 * torque / (math.pi * (diameter * diameter * diameter))  # the same bits on arrays

@@ -168,11 +168,8 @@ def test_a_caller_reading_no_checks_gets_the_asked_outputs_alone_and_the_same(ru
     slow = evaluate_chunk(LOOP, base, cols, list(outs), fidelity=rung)
     for name in outs:
         np.testing.assert_array_equal(lean.values[name], full.values[name], err_msg=name)
-        # the loop's Python-float power and numpy's square root differ in the last bit (the
-        # reserve M - (z - 1) M_tr cancels: absolute)
-        np.testing.assert_allclose(
-            lean.values[name], slow.values[name], rtol=1e-15, atol=1e-12, err_msg=name
-        )
+        # the same functions on floats and on arrays: the same bits
+        np.testing.assert_array_equal(lean.values[name], slow.values[name], err_msg=name)
     assert lean.check_arrays == {} and full.check_arrays
     for name in skipped:  # the checks-reading path computes them, a lean caller does not
         assert name not in lean.values, name
@@ -195,3 +192,42 @@ def test_a_lean_sweep_of_the_motor_speed_equals_the_hand_sum():
             e["spindle_count"] * 0.5 * 0.05**2 / 8 * w5**2,
         )
         assert got.columns["kinetic_energy"][i] == pytest.approx(0.5 * sum(parts), rel=1e-14)
+
+
+@pytest.mark.parametrize("rung", ["closed_form", "gear_ratio"])
+def test_single_runs_and_the_array_path_agree_bit_for_bit(rung):
+    # one function per equation, written with products rather than powers (Python's float
+    # power and numpy's differ in the last bit): a study's or a sweep's values are the
+    # single runs' exactly, every part of the drive varied at once
+    rng = np.random.default_rng(11)
+    n = 40
+    cols = {
+        **_columns(n, seed=7),
+        **{
+            name: EXAMPLE_LIGHT_TRUCK[name] * rng.uniform(0.5, 1.5, n)
+            for name in (
+                "coupling_mass",
+                "coupling_diameter",
+                "motor_pulley_diameter",
+                "flywheel_mass",
+                "flywheel_diameter",
+                "drive_gear_diameter",
+                "spindle_gear_mass",
+                "shaft_length",
+                "motor_power",
+            )
+        },
+        "spindle_count": rng.integers(1, 13, n).astype(float),
+    }
+    outs = [
+        o.name
+        for o in SPEC.outputs
+        if not o.series
+        and o.name not in ("drive_inertia", "constant_power_time")
+        and o.name != "time_vs_constant_power"
+    ]
+    fast = evaluate_chunk(SPEC, EXAMPLE_LIGHT_TRUCK, cols, outs, fidelity=rung)
+    slow = evaluate_chunk(LOOP, EXAMPLE_LIGHT_TRUCK, cols, outs, fidelity=rung)
+    assert "kinetic_energy" in outs and "equivalent_inertia" in outs
+    for name in outs:
+        np.testing.assert_array_equal(fast.values[name], slow.values[name], err_msg=name)

@@ -107,13 +107,13 @@ def test_motor_curve_estimates_on_arrays_equal_single_runs():
 def test_motor_curve_closed_forms_against_the_quadrature():
     # the estimate's closed forms (one equation per curve) against the motor_curve rung's
     # quadrature of J dω/M(ω), two independent ways to the same time
-    from engine.models.nutrunner import _curve_time, _drive, _drive_inertia, _motor_curve
+    from engine.models.nutrunner import _curve_time, _drive_inertia, _motor_curve
     from engine.physics.motor_spinup import spin_up_time
 
     for kind, base in _curves().items():
         for w in (120.0, 140.0, 155.0):
             x = _inputs(**{**base, "motor_speed": w})
-            j = _drive_inertia(x, _drive(x))
+            j = _drive_inertia(x)
             want, _ = spin_up_time(j, _motor_curve(x), w, rtol=1e-12)
             assert float(_curve_time(x, j)) == pytest.approx(want, rel=1e-12), (kind, w)
 
