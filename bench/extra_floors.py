@@ -159,14 +159,18 @@ def _drive_floor(spec: ModelSpec, base: dict[str, Any]) -> Floor:
     c8 = math.pi * g * x["spindle_diameter"] ** 4 / (32.0 * x["spindle_length"])
     series = 2.0 * c7 * c8 / (c7 + c8)
     power = x["motor_power"]
+    coefficient = j12 + j34 * r3 * r3 + j5 * r5 * r5
 
     def floor(w: np.ndarray) -> dict[str, np.ndarray]:
-        w2 = w * w
-        energy = (j12 + j34 * r3 * r3 + j5 * r5 * r5) * w2
+        # the fewest arrays: the square's becomes the energy's (numpy reuses a temporary),
+        # the root is taken in place; three arrays of the points, one per output
+        energy = coefficient * (w * w)
+        torque = energy * series
+        np.sqrt(torque, out=torque)
         return {
             "kinetic_energy": energy,
             "acceleration_time": energy / power,
-            "impact_torque": np.sqrt(energy * series),
+            "impact_torque": torque,
         }
 
     return floor
