@@ -1011,7 +1011,7 @@ def _estimate_closed_form(x: Mapping[str, Any], drive: _Drive | None = None) -> 
     is taken as the reference. With a motor curve, the constant-power idealisation of
     the spin-up time counts too.
     """
-    d = _drive(x) if drive is None else drive
+    d = _drive(x, parts=False) if drive is None else drive  # the torques alone
     # numpy scalars for one design (their arithmetic is cheap), arrays for many
     m_paper = np.asarray(d.m_paper, dtype=float)[()]
     m_geared = np.asarray(d.m_geared, dtype=float)[()]
