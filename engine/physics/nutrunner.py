@@ -71,9 +71,11 @@ def _root(value: Any) -> Any:
     array for it (a fresh array's pages cost as much as the root itself). Anything else
     goes to :func:`engine.numerics.ode.sqrt` (a float stays a float; NaN below 0).
 
-    >>> _root(np.array([4.0, 2.25])).tolist(), _root(6.25)
-    ([2.0, 1.5], 2.5)
+    >>> _root(np.array([4.0, 2.25])).tolist(), _root(6.25), _root(-1.0)
+    ([2.0, 1.5], 2.5, nan)
     """
+    if value.__class__ is float:  # one design: no call beyond the root's own
+        return math.sqrt(value) if value >= 0.0 else math.nan
     if isinstance(value, np.ndarray) and value.ndim:
         return np.sqrt(value, out=value)
     return sqrt(value)
