@@ -739,8 +739,11 @@ def _tightening_values(
     (k_thread, k_bearing, radius), deviation = _request_torque_terms(
         x, bolt, scratch, deviation=deviation_wanted
     )
+    terms = wanted is None or any(name in wanted for name in _TORQUE_TERMS)
     m_thread, m_bearing = force * k_thread, force * k_bearing
-    total = m_thread + m_bearing
+    total = _add(m_thread, m_bearing, reuse=not terms)  # M_A = M_G + M_K (R13)
+    if not terms:
+        m_thread = m_bearing = _LEFT_OUT
     rules_wanted = wanted is None or any(name in wanted for name in _RULES)
     ideal = thumb = thumb_yield = share = thumb_dev = yield_dev = _LEFT_OUT
     if rules_wanted:
@@ -785,6 +788,19 @@ def _tightening_values(
     return {k: v for k, v in values.items() if v is not _LEFT_OUT}
 
 
+def _add(a: Any, b: Any, reuse: bool) -> Any:
+    """``a + b``; with ``reuse``, written into ``b`` where ``b`` is an array of the sum's
+    shape, which the caller made and does not keep (no new array, and its pages are warm).
+
+    >>> b = np.array([1.0, 2.0])
+    >>> _add(0.5, b, reuse=True) is b, b.tolist(), _add(0.5, 1.0, reuse=True)
+    (True, [1.5, 2.5], 1.5)
+    """
+    if reuse and isinstance(b, np.ndarray) and np.shape(a) in ((), b.shape):
+        return np.add(a, b, out=b)
+    return a + b
+
+
 #: The outputs of the rules of thumb beside the torque formula ([004, eq. 14–18]).
 _RULES = (
     "ideal_torque",
@@ -794,6 +810,8 @@ _RULES = (
     "yield_rule_torque",
     "yield_rule_deviation",
 )
+#: The terms of the tightening torque, the thread's and the bearing face's (R13).
+_TORQUE_TERMS = ("thread_torque", "bearing_torque")
 #: The outputs of the equivalent stress (VDI 2230-1 R7, [004, eq. 5]).
 _STRESS = ("equivalent_stress", "stress_utilization")
 #: A value :func:`_tightening_values` left out: no output asked for needs it.
@@ -1985,6 +2003,14 @@ def _band_verdicts(
         )
 
 
+def _also(ok: np.ndarray, fine: Any) -> np.ndarray:
+    """``ok & fine`` per point, as a new array; ``ok`` itself where ``fine`` is one True
+    (a condition every point meets costs no pass)."""
+    if fine is True or fine is np.True_:
+        return ok
+    return ok & fine
+
+
 def _control_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """The array path of ``preload.control``: its numbers on many points at once.
 
@@ -1992,13 +2018,13 @@ def _control_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """
     n = _points(x) or 1
     bolt, notes = resolve_bolts(x, n, labels=ctx.wants("fastener"))
-    ok = bolt.ok.copy()
+    ok = bolt.ok
     verdicts: dict[str, Any] = {}
     method = get_method(str(x["method"]))
     mu_g, mu_k = x["thread_friction"], x["bearing_friction"]
     formula = str(x["torque_formula"])
     d0, area0, _, fine = _smallest_section(bolt, x)
-    ok &= fine
+    ok = _also(ok, fine)
     # the band's ends and the yield preload: for the checks and the outputs that read them
     band = ctx.checks or x.get("nut") is not None or ctx.wants(*_BAND_READERS)
     values, _ = _control_values(x, bolt, method, (d0, area0), band=band)
@@ -2011,7 +2037,7 @@ def _control_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     stretch: Any = None
     if x.get("clamped_length") is not None:
         lengths, diameters, fine = _grip_sections(bolt, x)
-        ok &= fine
+        ok = _also(ok, fine)
         parts = _clamped_compliance(bolt, x, method, ok)
         values.update(_stretch_values(x, bolt, lengths, diameters, parts, nominal))
         stretch = values["bolt_compliance"] + parts
@@ -2049,7 +2075,7 @@ def _control_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if scatter_wanted and has_range:
         g_lo, g_hi, fine_g = _range(x, "thread_friction", mu_g)
         k_lo, k_hi, fine_k = _range(x, "bearing_friction", mu_k)
-        ok &= fine_g & fine_k
+        ok = _also(ok, fine_g & fine_k)
         if bolt.bearing_friction_factor != 1.0:  # a countersunk head: μ_K acts on the cone
             k_lo, k_hi = k_lo * bolt.bearing_friction_factor, k_hi * bolt.bearing_friction_factor
         fixed = torque if x.get("scatter_torque") is None else x["scatter_torque"]
