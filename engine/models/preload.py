@@ -433,9 +433,13 @@ def _where(condition: Any, yes: Any, no: Any) -> Any:
     The same lines serve a single design and arrays; this keeps numpy's per-call cost
     (a few µs) off the single design.
     """
-    if isinstance(condition, bool | np.bool_):
+    if isinstance(condition, _ONE_FLAG):
         return yes if condition else no
     return np.where(condition, yes, no)
+
+
+#: One design's condition (``bool | np.bool_`` would build its union at every call).
+_ONE_FLAG = (bool, np.bool_)
 
 
 def torque_coefficients_raw(
@@ -1502,12 +1506,7 @@ def _control_values(
         at_yield = pl.assembly_preload(bolt.yield_strength, area0, beta, 1.0)
     lo_factor, _ = pl.preload_factor_range(str(x["load_type"]))
     factor = lo_factor if x.get("preload_factor") is None else x["preload_factor"]
-    f_min: Any = _LEFT_OUT
-    f_max: Any = _LEFT_OUT
-    if band:
-        nominal, f_min, f_max = _method_band(method, permissible, at_yield, x.get("preload"))
-    else:
-        nominal = _nominal_preload(method, permissible, at_yield, x.get("preload"))
+    nominal, f_min, f_max = _method_band(method, permissible, at_yield, x.get("preload"), band)
     nut_values, nut_verdicts = _nut_values(nut, f_max)
     values = {
         **nut_values,
@@ -1579,25 +1578,25 @@ _PLAIN = frozenset((float, int, bool, str, type(None)))
 
 
 def _method_band(
-    method: ControlMethod, permissible: float, at_yield: float, given: float | None
-) -> tuple[float, float, float]:
-    """(nominal, min, max) preload a method gives [N]: F_nom (1 ∓ s) about
-    :func:`_nominal_preload`."""
-    s = method.scatter
-    nominal = _nominal_preload(method, permissible, at_yield, given)
-    return nominal, nominal * (1.0 - s), nominal * (1.0 + s)
+    method: ControlMethod,
+    permissible: float,
+    at_yield: float,
+    given: float | None,
+    ends: bool = True,
+) -> tuple[Any, Any, Any]:
+    """(nominal, min, max) preload a method gives [N]; without ``ends``, the nominal alone
+    (min and max left out).
 
-
-def _nominal_preload(method: ControlMethod, permissible: Any, at_yield: Any, given: Any) -> Any:
-    """The middle of a method's band [N].
-
-    With a given preload it is that preload; otherwise the middle is set so the top
-    of the band is the permissible preload (yield control: the preload at yield).
+    With a given preload it is the middle of the band; otherwise the middle is
+    set so the top of the band is the permissible preload (yield control: the
+    preload at yield).
     """
-    if given is not None:
-        return given
+    s = method.scatter
     top = at_yield if method.controls == "yield" else permissible
-    return top / (1.0 + method.scatter)
+    nominal = given if given is not None else top / (1.0 + s)
+    if not ends:
+        return nominal, _LEFT_OUT, _LEFT_OUT
+    return nominal, nominal * (1.0 - s), nominal * (1.0 + s)
 
 
 def _control(x: Mapping[str, Any], ctx: RunContext) -> Result:
