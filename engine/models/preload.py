@@ -9,8 +9,8 @@ calls those functions and says where every number came from.
 from __future__ import annotations
 
 import math
-from collections.abc import Container, Mapping
-from dataclasses import replace
+from collections.abc import Container, Iterable, Mapping
+from dataclasses import fields, replace
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -433,9 +433,13 @@ def _where(condition: Any, yes: Any, no: Any) -> Any:
     The same lines serve a single design and arrays; this keeps numpy's per-call cost
     (a few µs) off the single design.
     """
-    if isinstance(condition, bool | np.bool_):
+    if isinstance(condition, _ONE_FLAG):
         return yes if condition else no
     return np.where(condition, yes, no)
+
+
+#: One design's condition (``bool | np.bool_`` would build its union at every call).
+_ONE_FLAG = (bool, np.bool_)
 
 
 def torque_coefficients_raw(
@@ -581,16 +585,25 @@ def _verdicts(verdicts: Mapping[str, Any], ok: np.ndarray, n: int) -> dict[str, 
 
 
 def _finish(
-    values: Mapping[str, Any], ok: np.ndarray, n: int, wanted: frozenset[str]
+    values: Mapping[str, Any],
+    ok: np.ndarray,
+    n: int,
+    wanted: frozenset[str],
+    borrowed: Iterable[Any] = (),
 ) -> dict[str, Any]:
     """The array path's ``wanted`` values: NaN (floats) or None (flags, texts) where a point
     is refused.
 
     Non-finite floats are NaN too: the scalar path returns them as null. A value not asked
-    for is left out: each costs a pass over the points.
+    for is left out: each costs a pass over the points. A float column the step made for
+    itself, every point of it kept and finite, is given as it is: a copy would cost a pass
+    and, at 10⁶ points, 8 MB of fresh pages. An array the step did not make (an input, a
+    bolt number: ``borrowed``) or one already given under another name is copied, so no
+    two columns, and no column and an input, share memory.
     """
     out: dict[str, Any] = {}
     every = bool(ok.all())
+    taken = {id(v) for v in borrowed if isinstance(v, np.ndarray)}
     for name, v in values.items():
         if name not in wanted:
             continue
@@ -604,9 +617,43 @@ def _finish(
             col[~ok] = None
             out[name] = col
             continue
-        arr = np.broadcast_to(arr.astype(float), (n,))
+        if every and _own_column(arr, n, taken) and _all_finite(arr):
+            out[name] = arr
+            taken.add(id(arr))
+            continue
+        arr = np.broadcast_to(arr.astype(float, copy=False), (n,))
         out[name] = np.where(ok & np.isfinite(arr), arr, np.nan)
     return out
+
+
+def _borrowed(x: Mapping[str, Any], bolt: BoltArrays) -> list[Any]:
+    """What an array path's values may hold without having made it: the inputs, the bolt."""
+    return [*x.values(), *(getattr(bolt, f.name) for f in fields(bolt))]
+
+
+def _own_column(arr: np.ndarray, n: int, taken: Container[int]) -> bool:
+    """Whether ``arr`` can be a column as it is: n floats in memory of its own, not
+    ``taken`` (borrowed, or given already)."""
+    return (
+        arr.dtype == np.float64
+        and arr.shape == (n,)
+        and arr.base is None
+        and arr.flags.writeable
+        and id(arr) not in taken
+    )
+
+
+def _all_finite(arr: np.ndarray) -> bool:
+    """Whether every value of ``arr`` is finite, without a mask of its size.
+
+    A NaN or an infinity makes the sum NaN or infinite; a sum that overflows from finite
+    values says no as well, and the caller then tests each value.
+
+    >>> _all_finite(np.array([1.0, 2.0])), _all_finite(np.array([1.0, np.inf]))
+    (True, False)
+    """
+    with np.errstate(over="ignore", invalid="ignore"):
+        return bool(np.isfinite(np.add.reduce(arr)))
 
 
 CLOSED_FORM = Rung(
@@ -670,7 +717,8 @@ def _tightening_values(
     every number, in the order of the procedure: R7's preload, then R13's torque
     (:func:`_torque_terms`, once per request: with ``scratch``, the rung estimate's).
     ``wanted``: the outputs asked for (every one when None); the torque formula's
-    deviation and the rules of thumb [004, eq. 14–18] are left out where none of theirs is.
+    deviation, the equivalent stress and the rules of thumb [004, eq. 14–18] are left out
+    where none of theirs is.
     """
     beta = pl.torsion_factor(
         bolt.pitch,
@@ -687,13 +735,19 @@ def _tightening_values(
         bolt_preload if nut is None else fa.nut_limited_preload(bolt_preload, nut.proof_load)
     )
     force = permissible if x.get("preload") is None else x["preload"]
-    sigma_eq = pl.equivalent_stress(force, bolt.stress_area, beta)
+    sigma_eq = stress_share = _LEFT_OUT
+    if wanted is None or any(name in wanted for name in _STRESS):
+        sigma_eq = pl.equivalent_stress(force, bolt.stress_area, beta)
+        stress_share = sigma_eq / bolt.yield_strength
     deviation_wanted = wanted is None or "torque_formula_deviation" in wanted
     (k_thread, k_bearing, radius), deviation = _request_torque_terms(
         x, bolt, scratch, deviation=deviation_wanted
     )
+    terms = wanted is None or any(name in wanted for name in _TORQUE_TERMS)
     m_thread, m_bearing = force * k_thread, force * k_bearing
-    total = m_thread + m_bearing
+    total = _add(m_thread, m_bearing, reuse=not terms)  # M_A = M_G + M_K (R13)
+    if not terms:
+        m_thread = m_bearing = _LEFT_OUT
     rules_wanted = wanted is None or any(name in wanted for name in _RULES)
     ideal = thumb = thumb_yield = share = thumb_dev = yield_dev = _LEFT_OUT
     if rules_wanted:
@@ -724,7 +778,7 @@ def _tightening_values(
         "torsion_factor": beta,
         "equivalent_stress": sigma_eq,
         "yield_strength": bolt.yield_strength,
-        "stress_utilization": sigma_eq / bolt.yield_strength,
+        "stress_utilization": stress_share,
         "bearing_outer_diameter": bolt.bearing_outer_diameter,
         "hole_diameter": bolt.hole_diameter,
         "torque_formula_deviation": deviation if deviation_wanted else _LEFT_OUT,
@@ -738,6 +792,19 @@ def _tightening_values(
     return {k: v for k, v in values.items() if v is not _LEFT_OUT}
 
 
+def _add(a: Any, b: Any, reuse: bool) -> Any:
+    """``a + b``; with ``reuse``, written into ``b`` where ``b`` is an array of the sum's
+    shape, which the caller made and does not keep (no new array, and its pages are warm).
+
+    >>> b = np.array([1.0, 2.0])
+    >>> _add(0.5, b, reuse=True) is b, b.tolist(), _add(0.5, 1.0, reuse=True)
+    (True, [1.5, 2.5], 1.5)
+    """
+    if reuse and isinstance(b, np.ndarray) and np.shape(a) in ((), b.shape):
+        return np.add(a, b, out=b)
+    return a + b
+
+
 #: The outputs of the rules of thumb beside the torque formula ([004, eq. 14–18]).
 _RULES = (
     "ideal_torque",
@@ -747,6 +814,10 @@ _RULES = (
     "yield_rule_torque",
     "yield_rule_deviation",
 )
+#: The terms of the tightening torque, the thread's and the bearing face's (R13).
+_TORQUE_TERMS = ("thread_torque", "bearing_torque")
+#: The outputs of the equivalent stress (VDI 2230-1 R7, [004, eq. 5]).
+_STRESS = ("equivalent_stress", "stress_utilization")
 #: A value :func:`_tightening_values` left out: no output asked for needs it.
 _LEFT_OUT = object()
 
@@ -819,27 +890,51 @@ def _bought_part_verdicts(
     verdicts.update(more_verdicts)
 
 
+#: The outputs of the bought-part checks (surface pressure, stripping, drive torque).
+_BOUGHT_PART_OUTPUTS = tuple(o.name for o in fz.CHECK_OUTPUTS)
+
+
+def _bought_parts_read(ctx: RunContext) -> bool:
+    """Whether an array path's caller reads anything of the bought-part checks."""
+    return ctx.checks or ctx.wants(*_BOUGHT_PART_OUTPUTS)
+
+
+def _bought_part_refusals(x: Mapping[str, Any], bolt: BoltArrays) -> None:
+    """The bought-part checks' refusals alone (a washer or a nut without a catalogue
+    thread, an unknown material), where no number of theirs is read: the array path
+    refuses what the single run refuses. Their forces do not decide a refusal, so a
+    zero stands in for them and no array of the points' size is made."""
+    fz.bought_part_verdicts(x, bolt.fastener, **_part_numbers(bolt, 0.0, 0.0))
+
+
 def _tightening_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """The array path of ``preload.tightening``: its numbers on many points at once."""
     n = _points(x) or 1
     bolt, notes = resolve_bolts(x, n, labels=ctx.wants("fastener"))
-    values = _tightening_values(x, bolt, wanted=ctx.outputs)
+    given = x.get("preload") is not None
+    below_yield = given and ctx.checks  # the check of a given preload reads σ_red
+    values = _tightening_values(
+        x, bolt, wanted=ctx.outputs | {"equivalent_stress"} if below_yield else ctx.outputs
+    )
     nut, nut_verdicts = values.pop("_nut")
     verdicts: dict[str, Any] = _nut_verdicts(nut_verdicts)
     warnings = []
     if nut is not None and np.any(bolt.ok & (nut.proof_load < nut.bolt_preload)):
         warnings.append(nut_limit_warning(nut.choice, None, None))
-    if x.get("preload") is not None:
+    if below_yield:
         verdicts["below_yield"] = values["equivalent_stress"] <= bolt.yield_strength
-    force, total = values["assembly_preload"], values["tightening_torque"]
-    _bought_part_verdicts(x, bolt, force, total, values, verdicts)
+    if _bought_parts_read(ctx):
+        force, total = values["assembly_preload"], values["tightening_torque"]
+        _bought_part_verdicts(x, bolt, force, total, values, verdicts)
+    else:
+        _bought_part_refusals(x, bolt)
     return Result(
-        values=_finish(values, bolt.ok, n, ctx.outputs),
+        values=_finish(values, bolt.ok, n, ctx.outputs, _borrowed(x, bolt)),
         rung=ctx.rung,
         error_estimate=None,
         notes=notes,
         warnings=warnings,
-        check_arrays=_verdicts(verdicts, bolt.ok, n),
+        check_arrays=_verdicts(verdicts, bolt.ok, n) if ctx.checks else {},
     )
 
 
@@ -1382,6 +1477,7 @@ def _control_values(
     method: ControlMethod,
     section: tuple[Any, Any],
     scratch: Scratch | None = None,
+    band: bool = True,
 ) -> tuple[dict[str, Any], Any]:
     """The preload band and target of ``preload.control``, on floats or arrays.
 
@@ -1389,7 +1485,9 @@ def _control_values(
     section ([004, eq. 3–4]), the method's band, [004, eq. 2]'s required preload, then
     R13's torque for the nominal preload (:func:`_torque_terms`, once per request: with
     ``scratch``, the rung estimate's); also the torque formula's deviation from the exact one
-    (None without ``scratch``: the array path does not give it).
+    (None without ``scratch``: the array path does not give it). Without ``band`` (an
+    array path whose caller reads neither the band's ends nor the checks), the band's
+    ends and the yield preload are left out where the nominal preload does not need them.
     """
     d0, area0 = section
     beta = pl.torsion_factor(
@@ -1403,10 +1501,12 @@ def _control_values(
     permissible = (
         bolt_preload if nut is None else fa.nut_limited_preload(bolt_preload, nut.proof_load)
     )
-    at_yield = pl.assembly_preload(bolt.yield_strength, area0, beta, 1.0)
+    at_yield: Any = _LEFT_OUT
+    if band or method.controls == "yield":
+        at_yield = pl.assembly_preload(bolt.yield_strength, area0, beta, 1.0)
     lo_factor, _ = pl.preload_factor_range(str(x["load_type"]))
     factor = lo_factor if x.get("preload_factor") is None else x["preload_factor"]
-    nominal, f_min, f_max = _method_band(method, permissible, at_yield, x.get("preload"))
+    nominal, f_min, f_max = _method_band(method, permissible, at_yield, x.get("preload"), band)
     nut_values, nut_verdicts = _nut_values(nut, f_max)
     values = {
         **nut_values,
@@ -1424,6 +1524,8 @@ def _control_values(
         "permissible_preload": permissible,
         "yield_preload": at_yield,
     }
+    if not band:
+        values = {k: v for k, v in values.items() if v is not _LEFT_OUT}
     return values, deviation
 
 
@@ -1476,9 +1578,14 @@ _PLAIN = frozenset((float, int, bool, str, type(None)))
 
 
 def _method_band(
-    method: ControlMethod, permissible: float, at_yield: float, given: float | None
-) -> tuple[float, float, float]:
-    """(nominal, min, max) preload a method gives [N].
+    method: ControlMethod,
+    permissible: float,
+    at_yield: float,
+    given: float | None,
+    ends: bool = True,
+) -> tuple[Any, Any, Any]:
+    """(nominal, min, max) preload a method gives [N]; without ``ends``, the nominal alone
+    (min and max left out).
 
     With a given preload it is the middle of the band; otherwise the middle is
     set so the top of the band is the permissible preload (yield control: the
@@ -1487,6 +1594,8 @@ def _method_band(
     s = method.scatter
     top = at_yield if method.controls == "yield" else permissible
     nominal = given if given is not None else top / (1.0 + s)
+    if not ends:
+        return nominal, _LEFT_OUT, _LEFT_OUT
     return nominal, nominal * (1.0 - s), nominal * (1.0 + s)
 
 
@@ -1849,6 +1958,58 @@ def _method_texts(
     return cheaper_text[index], passing_text[index]
 
 
+#: The outputs of ``preload.control`` that read the band's ends or the yield preload.
+_BAND_READERS = (
+    "preload_min",
+    "preload_max",
+    "yield_preload",
+    "min_meets_clamp",
+    "max_below_yield",
+    "cheaper_methods",
+    "passing_methods",
+    *_BOUGHT_PART_OUTPUTS,
+)
+
+
+def _band_verdicts(
+    x: Mapping[str, Any],
+    bolt: BoltArrays,
+    method: ControlMethod,
+    stretch: Any,
+    values: dict[str, Any],
+    verdicts: dict[str, Any],
+    ctx: RunContext,
+    n: int,
+) -> None:
+    """The array path's checks of the band (and the bought parts' at its top), into
+    ``values`` and ``verdicts``; the cheaper and passing methods where asked for."""
+    permissible, at_yield = values["permissible_preload"], values["yield_preload"]
+    f_min, f_max = values["preload_min"], values["preload_max"]
+    required = values["required_preload"]
+    _bought_part_verdicts(x, bolt, f_max, values["target_torque"], values, verdicts)
+    top = at_yield * (1.0 + 1e-12)
+    meets, below = f_min >= required, f_max <= top
+    values["min_meets_clamp"] = meets
+    values["max_below_yield"] = below
+    verdicts["min_meets_clamp"] = meets
+    verdicts["max_below_yield"] = below
+    if ctx.wants("cheaper_methods", "passing_methods"):
+        candidates, passes = _passing(
+            x, bolt, method, (permissible, at_yield, x.get("preload"), required), stretch
+        )
+        values["cheaper_methods"], values["passing_methods"] = _method_texts(
+            candidates, passes, method.cost_rank, n
+        )
+
+
+def _also(ok: np.ndarray, fine: Any) -> np.ndarray:
+    """``ok & fine`` per point, as a new array; ``ok`` itself where ``fine`` is one True
+    (a condition every point meets costs no pass)."""
+    if fine is True or fine is np.True_:
+        return ok
+    return ok & fine
+
+
 def _control_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """The array path of ``preload.control``: its numbers on many points at once.
 
@@ -1856,27 +2017,26 @@ def _control_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     """
     n = _points(x) or 1
     bolt, notes = resolve_bolts(x, n, labels=ctx.wants("fastener"))
-    ok = bolt.ok.copy()
+    ok = bolt.ok
     verdicts: dict[str, Any] = {}
     method = get_method(str(x["method"]))
     mu_g, mu_k = x["thread_friction"], x["bearing_friction"]
     formula = str(x["torque_formula"])
     d0, area0, _, fine = _smallest_section(bolt, x)
-    ok &= fine
-    values, _ = _control_values(x, bolt, method, (d0, area0))
+    ok = _also(ok, fine)
+    # the band's ends and the yield preload: for the checks and the outputs that read them
+    band = ctx.checks or x.get("nut") is not None or ctx.wants(*_BAND_READERS)
+    values, _ = _control_values(x, bolt, method, (d0, area0), band=band)
     nut, nut_verdicts = values.pop("_nut")
     verdicts.update(_nut_verdicts(nut_verdicts))
     warnings = []
     if nut is not None and np.any(ok & (nut.proof_load < nut.bolt_preload)):
         warnings.append(nut_limit_warning(nut.choice, None, None))
-    permissible, at_yield = values["permissible_preload"], values["yield_preload"]
-    nominal, f_min, f_max = values["nominal_preload"], values["preload_min"], values["preload_max"]
-    torque, required = values["target_torque"], values["required_preload"]
-    given = x.get("preload")
+    nominal, torque = values["nominal_preload"], values["target_torque"]
     stretch: Any = None
     if x.get("clamped_length") is not None:
         lengths, diameters, fine = _grip_sections(bolt, x)
-        ok &= fine
+        ok = _also(ok, fine)
         parts = _clamped_compliance(bolt, x, method, ok)
         values.update(_stretch_values(x, bolt, lengths, diameters, parts, nominal))
         stretch = values["bolt_compliance"] + parts
@@ -1896,21 +2056,10 @@ def _control_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "coupling_outer_diameter",
             field="coupling_outer_diameter",
         )
-    _bought_part_verdicts(x, bolt, f_max, torque, values, verdicts)
-    top = at_yield * (1.0 + 1e-12)
-    meets, below = f_min >= required, f_max <= top
-    values["min_meets_clamp"] = meets
-    values["max_below_yield"] = below
-    verdicts["min_meets_clamp"] = meets
-    verdicts["max_below_yield"] = below
-
-    if ctx.wants("cheaper_methods", "passing_methods"):
-        candidates, passes = _passing(
-            x, bolt, method, (permissible, at_yield, given, required), stretch
-        )
-        values["cheaper_methods"], values["passing_methods"] = _method_texts(
-            candidates, passes, method.cost_rank, n
-        )
+    if band:
+        _band_verdicts(x, bolt, method, stretch, values, verdicts, ctx, n)
+    else:
+        _bought_part_refusals(x, bolt)
 
     scatter_wanted = ctx.wants(
         "scatter_preload_min",
@@ -1925,7 +2074,7 @@ def _control_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if scatter_wanted and has_range:
         g_lo, g_hi, fine_g = _range(x, "thread_friction", mu_g)
         k_lo, k_hi, fine_k = _range(x, "bearing_friction", mu_k)
-        ok &= fine_g & fine_k
+        ok = _also(ok, fine_g & fine_k)
         if bolt.bearing_friction_factor != 1.0:  # a countersunk head: μ_K acts on the cone
             k_lo, k_hi = k_lo * bolt.bearing_friction_factor, k_hi * bolt.bearing_friction_factor
         fixed = torque if x.get("scatter_torque") is None else x["scatter_torque"]
@@ -1947,12 +2096,12 @@ def _control_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             field="thread_friction_min",
         )
     return Result(
-        values=_finish(values, ok, n, ctx.outputs),
+        values=_finish(values, ok, n, ctx.outputs, _borrowed(x, bolt)),
         rung=ctx.rung,
         error_estimate=None,
         notes=notes,
         warnings=warnings,
-        check_arrays=_verdicts(verdicts, ok, n),
+        check_arrays=_verdicts(verdicts, ok, n) if ctx.checks else {},
     )
 
 

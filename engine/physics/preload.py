@@ -110,7 +110,57 @@ def torsion_factor(
     .. math::
         \beta = \sqrt{1 + 3\left(\frac{\tau}{\sigma}\right)^2}
 
-    with, by convention,
+    with τ/σ of :func:`torsion_stress_ratio` by convention.
+
+    Parameters
+    ----------
+    pitch : float
+        Thread pitch P, [m]
+    pitch_diameter : float
+        Pitch diameter d2, [m]
+    stress_diameter : float
+        Diameter d0 of the stressed section (the stress diameter for a plain bolt), [m]
+    thread_friction : float
+        Thread friction coefficient μ_G, [-]
+    convention : str
+        ``"vdi2230"`` or ``"elastic"``
+
+    Returns
+    -------
+    float
+        β, [-]
+
+    Notes
+    -----
+    [004, eq. 5] (``elastic``) and VDI 2230-1:2015 step R7 (``vdi2230``): von Mises'
+    σ_red = √(σ² + 3τ²) = β σ. [004] quotes β = 1.19…1.50.
+
+    Examples
+    --------
+    M12 coarse, μ_G = 0.12: d2 = 10.863 mm, d0 = 10.358 mm
+
+    >>> round(float(torsion_factor(0.00175, 0.010863, 0.010358, 0.12)), 4)
+    1.1259
+    >>> round(float(torsion_factor(0.00175, 0.010863, 0.010358, 0.12, "elastic")), 4)
+    1.2176
+    """
+    # the ratio is squared where it was made (numpy squares a temporary array in place)
+    return sqrt(  # math for a float, numpy for arrays
+        1.0
+        + 3.0
+        * torsion_stress_ratio(pitch, pitch_diameter, stress_diameter, thread_friction, convention)
+        ** 2
+    )
+
+
+def torsion_stress_ratio(
+    pitch: float,
+    pitch_diameter: float,
+    stress_diameter: float,
+    thread_friction: float,
+    convention: str = "vdi2230",
+) -> float:
+    r"""Ratio τ/σ of the torsional to the axial stress in the bolt while it is tightened.
 
     .. math::
         \text{vdi2230:}\quad \frac{\tau}{\sigma} = \frac{3}{2}\frac{d_2}{d_0}
@@ -134,44 +184,40 @@ def torsion_factor(
     Returns
     -------
     float
-        β, [-]
+        τ/σ, [-]
 
     Notes
     -----
     ``elastic`` is [004, eq. 5]: σ = F/A0 and τ = M_p / (π d0³/16) with the
     thread torque of [004, eq. 10], which gives τ/σ = 2 (d2/d0) tan(ψ + ρ').
-    [004] quotes β = 1.19…1.50. ``vdi2230`` is VDI 2230-1:2015, step R7: the
-    torsional stress is reduced to 3/4 of its elastic value (factor 3/2
-    instead of 2) because the section yields partly during tightening, and
-    tan(ψ + ρ') is linearised to tan ψ + 1.155 μ_G.
+    ``vdi2230`` is VDI 2230-1:2015, step R7: the torsional stress is reduced
+    to 3/4 of its elastic value (factor 3/2 instead of 2) because the section
+    yields partly during tightening, and tan(ψ + ρ') is linearised to
+    tan ψ + 1.155 μ_G.
 
     Examples
     --------
-    M12 coarse, μ_G = 0.12: d2 = 10.863 mm, d0 = 10.358 mm
+    M12 coarse, μ_G = 0.12: 1.5 · (10.863/10.358) · (1.75/(π · 10.863) + 0.12/cos 30°)
 
-    >>> round(float(torsion_factor(0.00175, 0.010863, 0.010358, 0.12)), 4)
-    1.1259
-    >>> round(float(torsion_factor(0.00175, 0.010863, 0.010358, 0.12, "elastic")), 4)
-    1.2176
+    >>> round(float(torsion_stress_ratio(0.00175, 0.010863, 0.010358, 0.12)), 4)
+    0.2986
     """
     if convention == "vdi2230":
-        ratio = (
+        return (
             1.5
             * (pitch_diameter / stress_diameter)
             * (pitch / (math.pi * pitch_diameter) + thread_friction / COS_HALF_FLANK)
         )
-    elif convention == "elastic":
-        ratio = (
+    if convention == "elastic":
+        return (
             2.0
             * (pitch_diameter / stress_diameter)
             * np.tan(lead_angle(pitch, pitch_diameter) + thread_friction_angle(thread_friction))
         )
-    else:
-        raise InputOutOfRange(
-            f"preload_convention = {convention!r} is not allowed: must be 'vdi2230' or 'elastic'",
-            field="preload_convention",
-        )
-    return sqrt(1.0 + 3.0 * ratio**2)  # math for a float, numpy for arrays
+    raise InputOutOfRange(
+        f"preload_convention = {convention!r} is not allowed: must be 'vdi2230' or 'elastic'",
+        field="preload_convention",
+    )
 
 
 def assembly_preload(

@@ -345,3 +345,104 @@ def test_histogram_only_when_its_series_is_asked_for() -> None:
     ctx = RunContext("closed_form", frozenset({"preload_bins", "preload_counts"}), 0.01)
     got = CONTROL.vectorized({**x, "thread_friction": np.array([0.12, 0.13])}, ctx)  # type: ignore[misc]
     assert got.series == {}
+
+
+#: A sweep's outputs of each model (the bench's), with designs that take every branch of
+#: the array path: a plain bolt, bought parts with their checks, a given preload, a nut.
+NO_CHECK_CASES = [
+    (TIGHTENING, {"thread_diameter": 0.012}, ("assembly_preload", "tightening_torque")),
+    (TIGHTENING, dict(TIGHTENING.examples[4]), ("assembly_preload", "tightening_torque")),
+    (TIGHTENING, {"thread_diameter": 0.012, "preload": 30e3}, ("equivalent_stress",)),
+    (
+        TIGHTENING,
+        {"thread": "M12 ISO 4762 12.9", "nut": "ISO 4035"},
+        ("assembly_preload", "permissible_preload"),
+    ),
+    (CONTROL, dict(CONTROL.examples[0]), ("nominal_preload", "target_torque")),
+    (CONTROL, dict(CONTROL.examples[2]), ("nominal_preload", "target_force")),
+    (CONTROL, dict(CONTROL.examples[1]), ("target_angle", "target_torque")),
+    (
+        CONTROL,
+        {"thread_diameter": 0.012, "required_clamp_force": 20e3, "method": "torque_gradient"},
+        ("nominal_preload", "target_torque"),
+    ),
+]
+
+
+@pytest.mark.parametrize("k", range(len(NO_CHECK_CASES)))
+def test_a_caller_reading_no_checks_gets_the_asked_outputs_alone_and_the_same(k: int) -> None:
+    """A sweep reads no checks: the array path then leaves out the band's ends, the yield
+    preload, σ_red and the bought parts' numbers that no asked output needs, and gives
+    the asked outputs to the last bit as with the checks and as the single run."""
+    spec, base, asked = NO_CHECK_CASES[k]
+    x, _ = spec.validate(base)
+    mu = np.array([0.08, 0.12, 0.16])
+    point = {**x, "thread_friction": mu}
+    plain = spec.vectorized(point, RunContext("closed_form", frozenset(asked), 0.01, checks=False))  # type: ignore[misc]
+    full = spec.vectorized(point, RunContext("closed_form", frozenset(asked), 0.01))  # type: ignore[misc]
+    assert set(plain.values) == set(asked) and plain.check_arrays == {}
+    assert full.check_arrays or spec is TIGHTENING  # the control model always checks its band
+    for name in asked:
+        np.testing.assert_array_equal(plain.values[name], full.values[name], err_msg=name)
+    for j, m in enumerate(mu.tolist()):
+        one = engine.run(spec, {**base, "thread_friction": m}, outputs=asked)
+        got = [np.asarray(plain.values[name])[j] for name in asked]
+        assert got == [one.results[name] for name in asked]
+
+
+def test_a_sweep_reading_no_bought_part_number_still_refuses_what_the_single_run_refuses() -> None:
+    """ISO 7093 makes no washer for M39: the single run refuses it, so does a sweep that
+    asks only for the preload (the bought-part checks' numbers are not computed for it)."""
+    base = {"thread_diameter": 0.039, "washer": "ISO 7093"}
+    with pytest.raises(engine.InputOutOfRange) as alone:
+        engine.run(TIGHTENING, base)
+    with pytest.raises(engine.InputOutOfRange) as swept:
+        engine.sweep(TIGHTENING, base, "thread_friction", [0.1, 0.12], outputs=["assembly_preload"])
+    assert alone.value.field == swept.value.field == "washer"
+    assert alone.value.message == swept.value.message
+
+
+@pytest.mark.parametrize(
+    ("spec", "base", "vary", "asked"),
+    [
+        (
+            TIGHTENING,
+            {"thread_diameter": 0.012},
+            "preload",
+            ("assembly_preload", "permissible_preload", "tightening_torque"),
+        ),
+        (
+            TIGHTENING,
+            {"thread_diameter": 0.012},
+            "thread_friction",
+            ("assembly_preload", "permissible_preload"),
+        ),
+        (
+            CONTROL,
+            {"thread_diameter": 0.012, "required_clamp_force": 2e4},
+            "preload",
+            ("nominal_preload", "target_force"),
+        ),
+        (
+            CONTROL,
+            {"thread_diameter": 0.012, "required_clamp_force": 2e4},
+            "thread_friction",
+            ("nominal_preload", "target_force"),
+        ),
+    ],
+)
+def test_no_two_columns_of_a_sweep_share_memory(
+    spec: engine.ModelSpec, base: dict[str, Any], vary: str, asked: tuple[str, ...]
+) -> None:
+    """The array path gives the arrays it made as columns without copying them; an input
+    (the swept preload is F_M itself) or one array under two names (F_M,zul is F_M without
+    a given preload; the target force is the nominal preload) is copied."""
+    values = [20e3, 25e3, 30e3] if vary == "preload" else [0.1, 0.12, 0.14]
+    got = engine.sweep(spec, base, vary, values, outputs=asked, fidelity="closed_form")
+    columns = [got.columns[name] for name in asked]
+    for i, column in enumerate(columns):
+        assert not np.shares_memory(column, got.value_array), asked[i]
+        for other in columns[i + 1 :]:
+            assert not np.shares_memory(column, other), asked[i]
+    if vary == "preload":  # F_M is the given preload, to the last bit
+        assert got.columns[asked[0]].tolist() == values
