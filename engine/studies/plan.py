@@ -693,8 +693,10 @@ def evaluate_chunk(
 
     Points that share a rung run through the model's array path where it has
     one for that rung (with its checks where the array path gives them, else
-    CHECK_UNKNOWN), else one
-    by one through :func:`engine.run`. A refused point is NaN in every output.
+    CHECK_UNKNOWN), else one by one: on a named rung through
+    :func:`engine.core.runner.run_point` (:func:`engine.run`'s answer without its per-point
+    validation and sentences), under ``auto`` through :func:`engine.run`. A refused point is
+    NaN in every output.
     ``deadline_s`` is a budget for the whole chunk, in seconds. ``cancel`` (in-process
     only: an event does not travel to a Dask worker) stops the chunk at the next point or
     inside a point's simulation; the caller then discards it.
