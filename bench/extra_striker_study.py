@@ -91,12 +91,17 @@ def timed_kernels() -> Iterator[list[_Timed]]:
 @contextmanager
 def timed_layers() -> Iterator[dict[str, _Timed]]:
     """Wrap the layers around the kernels for the block: the cycle's driver
-    (``simulate_cycle`` as the model calls it) and one point's ``engine.run`` as the study
-    calls it; yields their counters (each includes what it calls)."""
+    (``simulate_cycle`` as the model calls it) and one point's evaluation as the study
+    calls it (``run_point``, or ``engine.run`` where a point goes through it); yields their
+    counters (each includes what it calls)."""
     from engine.models import rare_impact
     from engine.studies import plan
 
-    layers = {"cycle": (rare_impact, "simulate_cycle"), "run": (plan, "run")}
+    layers = {
+        "cycle": (rare_impact, "simulate_cycle"),
+        "run": (plan, "run"),
+        "run_point": (plan, "run_point"),
+    }
     saved = {k: getattr(mod, name) for k, (mod, name) in layers.items()}
     timed = {k: _Timed(fn) for k, fn in saved.items()}
     try:
@@ -123,7 +128,8 @@ def overhead(n: int) -> dict[str, Any]:
         run_study(spec, s)
         total2 = time.process_time() - t0
     kernel2 = sum(c.seconds for c in again)
-    cycle, one = layers["cycle"].seconds, layers["run"].seconds
+    cycle = layers["cycle"].seconds
+    one = layers["run"].seconds + layers["run_point"].seconds
     return {
         "total_s": total,
         "kernel_s": kernel,
@@ -161,8 +167,9 @@ def measure() -> list[dict[str, Any]]:
             f"rungs {f['rungs']}; per design beyond the kernels' "
             f"{f['kernel_s'] / n * 1e6:.0f} µs: "
             + ", ".join(f"{k} {v * 1e6:.0f} µs" for k, v in f["layers_s"].items())
-            + " (the cycle's Python driver around its 7 kernel calls; engine.run with "
-            "validation, the model's outputs, checks and notes; the study's loop)",
+            + " (the cycle's Python driver around its 7 kernel calls; a point's run with "
+            "the model's outputs, error estimate and verdicts; the study's loop with its "
+            "validation)",
         }
     ]
 

@@ -20,7 +20,7 @@ import numpy as np
 
 from . import points
 from .errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange, SolverFailed
-from .spec import Check, ModelSpec, Param, RunContext, Rung, Scratch, Value
+from .spec import Check, ModelSpec, Param, Result, RunContext, Rung, Scratch, Value
 from .text import OPEN, Parts, parts, plain
 
 DEFAULT_TOLERANCE = 0.01
@@ -447,6 +447,96 @@ def _prepare(
     return Prepared(values, warnings, tol, asked, rung, tuple(notes), scratch)
 
 
+def _computed(
+    spec: ModelSpec, values: dict[str, Any], ctx: RunContext, auto: bool, notes: list[str]
+) -> Result:
+    """``spec.compute`` on ``ctx``, or on the rung's declared fallback where the rung declines
+    up front (:func:`_fallback`; the note saying so is added to ``notes``)."""
+    try:
+        return spec.compute(values, ctx)
+    except BudgetExceeded as exc:
+        rung, tol = ctx.rung, ctx.tolerance
+        found = _fallback(spec, rung, values, exc, auto=auto, scratch=ctx.scratch)
+        if found is None:
+            raise
+        fallback, own, theirs = found
+        notes.append(
+            f"{rung!r} would need about {exc.context['expected_steps']:.2g} steps (budget "
+            f"{exc.context.get('step_budget', ctx.max_steps):g}); ran its declared fallback "
+            f"{fallback!r} instead, whose estimated "
+            + (
+                f"error {theirs:.2g} is within {rung!r}'s own {own:.2g}"
+                if theirs <= own
+                else f"error is {theirs:.2g}"
+            )
+            + (f": the tolerance {tol:.2g} is not met" if auto and theirs > tol else "")
+            + _caveat(spec, fallback)
+        )
+        return spec.compute(values, replace(ctx, rung=fallback))
+
+
+def _scalar(value: Value) -> Value:
+    """A scalar output as :func:`run` gives it: a numpy scalar as its Python value, None
+    where it is not finite (run's note says so)."""
+    kind = type(value)
+    if kind is float:
+        return value if math.isfinite(value) else None  # type: ignore[arg-type]
+    if not (kind is int or kind is str or kind is bool or value is None):
+        if isinstance(value, np.generic):
+            value = value.item()
+        if not _finite(value):
+            return None
+    return value
+
+
+def run_point(
+    spec: ModelSpec,
+    values: dict[str, Any],
+    rung: str,
+    outputs: Sequence[str],
+    *,
+    tolerance: float,
+    budget_s: float | None,
+    max_steps: int = DEFAULT_MAX_STEPS,
+    cancel: threading.Event | None = None,
+) -> tuple[str, dict[str, Value], list[tuple[str, bool]]]:
+    """One point as a study keeps it: the rung that ran, the ``outputs`` and the checks'
+    verdicts, what :func:`run` gives for the same point without its sentences.
+
+    ``values`` are validated inputs (:meth:`ModelSpec.validate`'s) and ``rung`` a rung
+    named, not ``"auto"`` (a study's chunk validates its points as arrays and picks the rung
+    once); the model is told it need not write its sentences (``RunContext.sentences``).
+    The same compute, fallback, nulls (None where run gives null) and refusals as
+    :func:`run`.
+    """
+    with _arithmetic_refused(spec):
+        if not (math.isfinite(tolerance) and 0.0 < tolerance < 1.0):
+            raise InputOutOfRange(
+                f"tolerance = {tolerance:g} is not allowed: must be > 0 and < 1", field="tolerance"
+            )
+        choose_rung(spec, values, rung, tolerance)  # refuses an unknown rung name
+        unknown = sorted(set(outputs) - spec.units.keys())
+        if unknown:
+            raise InputOutOfRange(
+                f"unknown output(s) {', '.join(unknown)}; {spec.name} offers "
+                + ", ".join(sorted(spec.units)),
+                field="outputs",
+            )
+        ctx = RunContext(
+            rung=rung,
+            outputs=frozenset(_wanted(spec, set(outputs), named=True, series=False)),
+            tolerance=tolerance,
+            deadline=None if budget_s is None else time.perf_counter() + budget_s,
+            max_steps=max_steps,
+            cancel=cancel,
+            sentences=False,
+        )
+        result = _computed(spec, values, ctx, False, [])
+    got = result.values
+    scalars = {name: _scalar(got[name]) if name in got else None for name in outputs}
+    return result.rung, scalars, [(c.name, c.ok) for c in spec.levelled(result.checks)]
+
+
 def run(
     spec: ModelSpec,
     inputs: Mapping[str, Any],
@@ -506,28 +596,7 @@ def run(
             cancel=cancel,
             scratch=prepared.scratch,
         )
-        try:
-            result = spec.compute(values, ctx)
-        except BudgetExceeded as exc:
-            auto = prepared.fidelity == "auto"
-            found = _fallback(spec, rung, values, exc, auto=auto, scratch=prepared.scratch)
-            if found is None:
-                raise
-            fallback, own, theirs = found
-            ctx = replace(ctx, rung=fallback)
-            notes.append(
-                f"{rung!r} would need about {exc.context['expected_steps']:.2g} steps (budget "
-                f"{exc.context.get('step_budget', max_steps):g}); ran its declared fallback "
-                f"{fallback!r} instead, whose estimated "
-                + (
-                    f"error {theirs:.2g} is within {rung!r}'s own {own:.2g}"
-                    if theirs <= own
-                    else f"error is {theirs:.2g}"
-                )
-                + (f": the tolerance {tol:.2g} is not met" if auto and theirs > tol else "")
-                + _caveat(spec, fallback)
-            )
-            result = spec.compute(values, ctx)
+        result = _computed(spec, values, ctx, prepared.fidelity == "auto", notes)
     elapsed = time.perf_counter() - start
 
     scalars: dict[str, Value] = {}

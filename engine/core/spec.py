@@ -570,6 +570,10 @@ class RunContext:
     #: Whether the caller reads the checks: a sweep reports none (it keeps the outputs),
     #: so an array path may leave out the work only its checks need.
     checks: bool = True
+    #: Whether the caller reads the sentences (notes, warnings, the checks' details): a
+    #: study's looped points keep the values and the verdicts alone
+    #: (:func:`engine.core.runner.run_point`), so a compute may leave the sentences out.
+    sentences: bool = True
 
     def once(self, key: str, compute: Callable[[], Any]) -> Any:
         """``compute()`` once per request: :meth:`Scratch.once` of :attr:`scratch`."""

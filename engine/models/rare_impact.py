@@ -631,23 +631,52 @@ def _named_series(o: CycleOutcome) -> dict[str, list[float]]:
     return out
 
 
+def _error(x: Mapping[str, Any], ctx: RunContext, o: CycleOutcome) -> float | None:
+    """The run's error estimate: the simulation's (with the half-coupling's speed at release
+    its own bound), or the closed form's over the outputs asked for."""
+    if ctx.rung != "simulation":
+        return _output_error(x, ctx)
+    if not ctx.wants("half_coupling_release_speed"):
+        return _SIMULATION_ERROR
+    # the speed at release is a small difference of an oscillation: its own bound
+    speed_error = simulation_release_velocity_error(_inputs(x, ctx.scratch), o)
+    return max(_SIMULATION_ERROR, speed_error) if math.isfinite(speed_error) else None
+
+
+def _values(x: Mapping[str, Any], o: CycleOutcome, rung: str) -> dict[str, Any]:
+    """One design's outputs as a run gives them: None where never reached (inf or NaN)."""
+    values: dict[str, Any] = {}
+    for name, v in _outputs(x, o).items():
+        if name == "full_engagement":
+            values[name] = bool(v)
+        else:  # inf or NaN: never reached, null
+            values[name] = float(v) if math.isfinite(v) else None
+        if name == "release_radius":
+            values["half_coupling_release_speed"] = (
+                float(o.release_velocity) if rung == "simulation" else None
+            )
+    return values
+
+
 def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     o = _outcome(x, ctx)
+    error = _error(x, ctx, o)
+    if not ctx.sentences:  # the values and the verdicts alone (a study's looped point)
+        return Result(
+            values=_values(x, o, ctx.rung),
+            rung=ctx.rung,
+            error_estimate=error,
+            checks=[Check(name, bool(ok), "") for name, ok in _verdicts(x, o).items()],
+        )
     notes = list(o.notes)
     warnings = list(o.warnings)
     if ctx.rung == "simulation":
-        error: float | None = _SIMULATION_ERROR
-        if ctx.wants("half_coupling_release_speed"):
-            # the speed at release is a small difference of an oscillation: its own bound
-            speed_error = simulation_release_velocity_error(_inputs(x, ctx.scratch), o)
-            error = max(_SIMULATION_ERROR, speed_error) if math.isfinite(speed_error) else None
         notes.append(
             f"simulation: the whole cycle, one compiled RK4 with {200} steps per shortest "
             f"period and every switch located on the step's cubic ({o.steps} steps); the "
             "state (positions, velocities) is carried across release, blow and return"
         )
     else:
-        error = _output_error(x, ctx)
         notes.append(
             "closed form: quasi-static spin-up, piecewise-linear stages 2 and 4 started from "
             "the quasi-static release velocity, stage 3 with the half-coupling held"
@@ -679,16 +708,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
     c1, c3 = x["power_spring_rate"], x["return_spring_rate"]
     lam1, h1, g = x["power_spring_preload"], x["release_travel"], x["gravity"]
-    values: dict[str, Any] = {}
-    for name, v in _outputs(x, o).items():
-        if name == "full_engagement":
-            values[name] = bool(v)
-        else:  # inf or NaN: never reached, null
-            values[name] = float(v) if math.isfinite(v) else None
-        if name == "release_radius":
-            values["half_coupling_release_speed"] = (
-                float(o.release_velocity) if ctx.rung == "simulation" else None
-            )
+    values = _values(x, o, ctx.rung)
     lower, upper = spring_height_bounds(_moving_mass(x), g, c1, c3)
     if not o.blow:
         notes.append(

@@ -36,7 +36,14 @@ import numpy as np
 
 from ..core.errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange
 from ..core.points import at, auto_index, in_range, rung_estimates, take, vector
-from ..core.runner import DEFAULT_BUDGET_S, DEFAULT_TOLERANCE, choose_rung, run
+from ..core.runner import (
+    DEFAULT_BUDGET_S,
+    DEFAULT_TOLERANCE,
+    RunResult,
+    choose_rung,
+    run,
+    run_point,
+)
 from ..core.spec import ModelSpec, Param, Scratch
 from ..numerics import laws
 from ..numerics.lazy import LazyModule
@@ -686,8 +693,10 @@ def evaluate_chunk(
 
     Points that share a rung run through the model's array path where it has
     one for that rung (with its checks where the array path gives them, else
-    CHECK_UNKNOWN), else one
-    by one through :func:`engine.run`. A refused point is NaN in every output.
+    CHECK_UNKNOWN), else one by one: on a named rung through
+    :func:`engine.core.runner.run_point` (:func:`engine.run`'s answer without its per-point
+    validation and sentences), under ``auto`` through :func:`engine.run`. A refused point is
+    NaN in every output.
     ``deadline_s`` is a budget for the whole chunk, in seconds. ``cancel`` (in-process
     only: an event does not travel to a Dask worker) stops the chunk at the next point or
     inside a point's simulation; the caller then discards it.
@@ -779,6 +788,12 @@ def evaluate_chunk(
                 continue
             for j, is_dead in zip(np.flatnonzero(sel).tolist(), dead.tolist(), strict=True):
                 rungs[j] = None if is_dead else rung
+    # a named rung: each point's inputs are the chunk's validated ones with its own varied
+    # values (each checked as validate checks it) and run on that rung without the sentences
+    # (run_point); under auto (each point's own estimates) or where a value is refused, the
+    # point goes through engine.run as a request would
+    named = asked != "auto"
+    varied = [(name, spec.param(name), x[name]) for name in cols]
     for j in np.flatnonzero(loop).tolist():
         if cancel is not None and cancel.is_set():
             break
@@ -786,19 +801,27 @@ def evaluate_chunk(
             raise BudgetExceeded(
                 f"a chunk of the study ran past its {deadline_s:g} s budget", field="samples"
             )
-        point = at(x, n, j)
+        values_j = _point_values(fixed, varied, j) if named else None
         # a point has what is left of the chunk's budget (none without one)
         left = None if deadline is None else max(deadline - time.perf_counter(), 1e-3)
         try:
-            res = run(
-                spec,
-                {k: v for k, v in point.items() if v is not None},
-                fidelity=asked,
-                tolerance=tol,
-                outputs=outputs,
-                budget_s=left,
-                cancel=cancel,
-            )
+            if values_j is not None:
+                res = run_point(
+                    spec, values_j, asked, outputs, tolerance=tol, budget_s=left, cancel=cancel
+                )
+            else:
+                res = _as_point(
+                    run(
+                        spec,
+                        {k: v for k, v in at(x, n, j).items() if v is not None},
+                        fidelity=asked,
+                        tolerance=tol,
+                        outputs=outputs,
+                        budget_s=left,
+                        cancel=cancel,
+                    ),
+                    outputs,
+                )
         except Cancelled:
             break
         except BudgetExceeded as exc:
@@ -817,12 +840,12 @@ def evaluate_chunk(
             key = type(exc).__name__ + ": " + exc.message.split(":")[0][:120]
             refusals[key] = refusals.get(key, 0) + 1
             continue
-        rungs[j] = res.rung
+        rungs[j], results, flags = res
         for name in outputs:
-            v = res.results.get(name)
+            v = results.get(name)
             if v is not None:
                 nan_column(name)[j] = float(v)
-        for name, ok in res.check_flags:  # the verdicts alone: no sentence is made
+        for name, ok in flags:  # the verdicts alone: no sentence is made
             arr = checks.get(name)
             if arr is None:
                 arr = checks[name] = np.full(n, CHECK_UNKNOWN, dtype=np.int8)
@@ -834,6 +857,26 @@ def evaluate_chunk(
             column[~valid] = np.nan
         refusals["outside an input's declared range"] = bad
     return ChunkResult(values, checks, rungs, refusals, time.perf_counter() - start)
+
+
+def _point_values(
+    fixed: Mapping[str, Any], varied: Sequence[tuple[str, Param, np.ndarray]], j: int
+) -> dict[str, Any] | None:
+    """Point ``j``'s validated inputs: ``fixed`` (the chunk's, validated once) with its
+    varied values, each checked as :meth:`ModelSpec.validate` checks it; None where one is
+    refused (the point then goes through :func:`engine.run`, which says why)."""
+    values = dict(fixed)
+    try:
+        for name, param, column in varied:
+            values[name] = param.check(column[j].item())
+    except InputOutOfRange:
+        return None
+    return values
+
+
+def _as_point(res: RunResult, outputs: Sequence[str]) -> tuple[str, dict[str, Any], list[Any]]:
+    """A result of :func:`engine.run` as :func:`engine.core.runner.run_point` gives a point."""
+    return res.rung, {name: res.results.get(name) for name in outputs}, res.check_flags
 
 
 class Columns(Mapping[str, np.ndarray]):

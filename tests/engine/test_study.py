@@ -293,6 +293,46 @@ def test_a_looped_chunk_keeps_each_points_check_verdicts_as_a_single_run_gives_t
     assert chunk.checks["c3 > c1"].tolist() == [CHECK_OK, CHECK_OK, CHECK_FAILED]
 
 
+def test_a_looped_chunk_on_a_named_rung_gives_each_point_what_a_single_run_gives() -> None:
+    """Points on a named rung run without engine.run's validation and sentences
+    (engine.core.runner.run_point): each value, null, rung, verdict and refusal is still the
+    single run's, bit for bit. The motor's no-load speed 260 rad/s is above the reference
+    release speed (244 rad/s) but below the 265 rad/s of a 60 N/mm power spring (refused:
+    never fast enough); at 40 N/mm the shaft does not re-lock (relock_time null)."""
+    from engine.studies.plan import CHECK_FAILED, CHECK_OK, CHECK_UNKNOWN, evaluate_chunk
+
+    ex = {**RARE.examples[0], "motor_no_load_speed": 260.0}
+    varied = {
+        "power_spring_rate": np.array([40_000.0, 60_000.0, 50_000.0, 45_000.0]),
+        "motor_torque": np.array([5.0, 5.5, 2.5, 4.0]),
+    }
+    outputs = ("release_speed", "half_coupling_release_speed", "cycle_time", "relock_time")
+    chunk = evaluate_chunk(RARE, _without(ex, *varied), varied, outputs, fidelity="simulation")
+    refused = 0
+    for j in range(4):
+        point = {**ex, **{k: float(v[j]) for k, v in varied.items()}}
+        try:
+            alone = engine.run(RARE, point, fidelity="simulation", outputs=outputs)
+        except engine.EngineError as exc:
+            assert "never reaches the release speed" in exc.message
+            refused += 1
+            assert chunk.rungs[j] is None
+            assert all(math.isnan(chunk.values[name][j]) for name in outputs)
+            assert all(codes[j] == CHECK_UNKNOWN for codes in chunk.checks.values())
+            continue
+        assert chunk.rungs[j] == alone.rung == "simulation"
+        for name in outputs:
+            got, want = chunk.values[name][j], alone.results[name]
+            assert math.isnan(got) if want is None else got == want
+        for check in alone.checks:
+            assert chunk.checks[check.name][j] == (CHECK_OK if check.ok else CHECK_FAILED)
+    assert refused == 1 and math.isnan(chunk.values["release_speed"][1])
+    assert math.isnan(chunk.values["relock_time"][0]) and chunk.values["relock_time"][3] > 0.0
+    assert chunk.refusals == {"InfeasibleDesign: the motor never reaches the release speed": 1}
+    assert chunk.checks["c3 > c1"].tolist() == [CHECK_OK, CHECK_UNKNOWN, CHECK_OK, CHECK_OK]
+    assert chunk.checks["relock"].tolist() == [CHECK_FAILED, CHECK_UNKNOWN, CHECK_OK, CHECK_OK]
+
+
 def test_an_auto_study_the_array_path_cannot_answer_is_cut_into_looped_chunks() -> None:
     """At a tolerance only the simulation meets every point goes one by one: the study is
     cut as a simulation study is (it was one chunk of up to 65,536 points, which one
