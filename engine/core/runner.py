@@ -422,6 +422,25 @@ def prepare(
     return _prepare(spec, inputs, fidelity, tolerance, guarded=False)
 
 
+def _check_tolerance(tol: float) -> None:
+    """Refuse a tolerance outside (0, 1), naming the field."""
+    if not (math.isfinite(tol) and 0.0 < tol < 1.0):
+        raise InputOutOfRange(
+            f"tolerance = {tol:g} is not allowed: must be > 0 and < 1", field="tolerance"
+        )
+
+
+def _check_outputs(spec: ModelSpec, asked: set[str]) -> None:
+    """Refuse output names ``spec`` does not offer, listing the ones it does."""
+    unknown = sorted(asked - spec.units.keys())
+    if unknown:
+        raise InputOutOfRange(
+            f"unknown output(s) {', '.join(unknown)}; {spec.name} offers "
+            + ", ".join(sorted(spec.units)),
+            field="outputs",
+        )
+
+
 def _prepare(
     spec: ModelSpec,
     inputs: Mapping[str, Any],
@@ -433,10 +452,7 @@ def _prepare(
     """:func:`prepare`; ``guarded``: the caller holds :class:`_arithmetic_refused` already."""
     values, warnings = spec.validate(inputs)
     tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
-    if not (math.isfinite(tol) and 0.0 < tol < 1.0):
-        raise InputOutOfRange(
-            f"tolerance = {tol:g} is not allowed: must be > 0 and < 1", field="tolerance"
-        )
+    _check_tolerance(tol)
     asked = _fidelity(spec, fidelity, tolerance)
     scratch = Scratch()
     if asked == "auto" and not guarded:  # the estimates run: one numpy error state for them
@@ -510,18 +526,9 @@ def run_point(
     :func:`run`.
     """
     with _arithmetic_refused(spec):
-        if not (math.isfinite(tolerance) and 0.0 < tolerance < 1.0):
-            raise InputOutOfRange(
-                f"tolerance = {tolerance:g} is not allowed: must be > 0 and < 1", field="tolerance"
-            )
+        _check_tolerance(tolerance)
         choose_rung(spec, values, rung, tolerance)  # refuses an unknown rung name
-        unknown = sorted(set(outputs) - spec.units.keys())
-        if unknown:
-            raise InputOutOfRange(
-                f"unknown output(s) {', '.join(unknown)}; {spec.name} offers "
-                + ", ".join(sorted(spec.units)),
-                field="outputs",
-            )
+        _check_outputs(spec, set(outputs))
         ctx = RunContext(
             rung=rung,
             outputs=frozenset(_wanted(spec, set(outputs), named=True, series=False)),
@@ -578,13 +585,7 @@ def run(
             wanted = spec.scalar_outputs | spec.series_outputs if series else spec.scalar_outputs
         else:
             asked_for = set(outputs)
-            unknown = sorted(asked_for - units.keys())
-            if unknown:
-                raise InputOutOfRange(
-                    f"unknown output(s) {', '.join(unknown)}; {spec.name} offers "
-                    + ", ".join(sorted(units)),
-                    field="outputs",
-                )
+            _check_outputs(spec, asked_for)
             wanted = frozenset(_wanted(spec, asked_for, named=True, series=series))
         start = time.perf_counter()
         ctx = RunContext(
@@ -711,10 +712,7 @@ def sweep(
     notes: list[str] = []
     refused = np.zeros(n, dtype=bool)  # points an estimate refuses: run alone, to say why
     scratch = Scratch()  # the estimates' work on x, for the array path on the same x
-    if not (math.isfinite(tol) and 0.0 < tol < 1.0):
-        raise InputOutOfRange(
-            f"tolerance = {tol:g} is not allowed: must be > 0 and < 1", field="tolerance"
-        )
+    _check_tolerance(tol)
     # each rung group: its rung, the points it holds (None: every point)
     groups: list[tuple[int, np.ndarray | None]]
     estimates: Mapping[int, np.ndarray | None] | None
