@@ -686,3 +686,100 @@ def test_every_curve_stays_within_its_bounds_in_every_interval(ratio):
         inside_max += int(np.sum(np.max(torque[1:-1], axis=0) > np.maximum(torque[0], torque[-1])))
     if ratio > 2.0:
         assert inside_max > 0  # some curve peaks inside an interval: the ends alone miss it
+
+
+def test_newton_on_many_brackets_finds_each_root_alone():
+    # a flat start (x³, zero slope at 0), a far overshoot (atan: bisection takes over),
+    # roots at the bracket's ends and brackets without a crossing; each lane against
+    # its closed-form root, and alone the same float as among the others
+    from engine.procedures.clutch_asbuilt import newton_roots
+
+    rng = np.random.default_rng(7)
+    c = rng.uniform(0.01, 5.0, 50)
+    r = rng.uniform(-5.0, 5.0, 50)
+
+    def f(x, lanes):
+        kind = lanes % 2 == 0
+        cube = (x**3 - c[lanes], 3 * x**2)
+        turn = (np.arctan(x - r[lanes]), 1.0 / (1.0 + (x - r[lanes]) ** 2))
+        return np.where(kind, cube[0], turn[0]), np.where(kind, cube[1], turn[1])
+
+    lanes = np.arange(50)
+    a = np.where(lanes % 2 == 0, 0.0, -10.0)
+    b = np.where(lanes % 2 == 0, 2.0, 30.0)
+    fa, fb = f(a, lanes)[0], f(b, lanes)[0]
+    got = newton_roots(f, a, b, fa, fb, xtol=1e-12, rtol=1e-12)
+    want = np.where(lanes % 2 == 0, np.cbrt(c), r)
+    crossing = (fa < 0) & (fb > 0)
+    assert crossing.sum() > 30 and np.isnan(got[~crossing]).all()
+    assert np.all(np.abs(got - want)[crossing] <= 1e-12 * (1 + np.abs(want[crossing])))
+    for j in np.flatnonzero(crossing)[:10]:
+        alone = newton_roots(
+            lambda x, _, j=j: f(x, np.full(np.size(x), j)), a[j], b[j], fa[j], fb[j], 1e-12, 1e-12
+        )
+        assert alone[0] == got[j]
+    # an end where the function is zero is the root; no crossing: NaN
+    ends = newton_roots(f, [0.0, 0.0], [2.0, 2.0], [0.0, -1.0], [1.0, 0.0], 1e-12, 1e-12)
+    assert ends.tolist() == [0.0, 2.0]
+    assert np.isnan(newton_roots(f, [0.0], [2.0], [1.0], [2.0], 1e-12, 1e-12)).all()
+
+
+def _disc_setting_case(ratio):
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    design = {**DISC, "disc_cone_height": ratio * DISC["disc_thickness"], "ball_lift": 0.0004}
+    x, _ = BALL_CLUTCH.validate(design)
+    upper = float(x["disc_series"] * x["disc_cone_height"])
+    grid = np.linspace(0.0, upper, 65)
+    peaks = asbuilt.characteristic(x, asbuilt.Spring(x), grid, peak_only=True)["peak_torque"]
+    return dict(x), upper, grid, np.asarray(peaks)
+
+
+def test_a_target_on_a_grid_point_at_the_flat_top_or_out_of_reach():
+    # the target exactly the peak at a grid point: that point; just under the grid's
+    # largest peak of a falling stack (a flat crossing, the slope ~0): within 1e-12 m of
+    # the crossing; above the top or at zero (the seated peak overshoots it): NaN; one
+    # design as in a sweep
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    x, upper, grid, peaks = _disc_setting_case(2.2)
+    spring = asbuilt.Spring(x)
+    top = float(np.max(peaks))
+    assert 0 < np.argmax(peaks) < 64  # the peak torque falls past its top
+    at_point = float(peaks[20])
+    assert np.all(np.diff(peaks[:21]) > 0)  # rising up to there: grid point 20 is the first
+    targets = np.array([at_point, top * (1 - 1e-9), top * 1.01, 0.0])
+    swept = asbuilt.setting_roots({**x, "target_torque": targets}, targets, upper)
+    one = [asbuilt.setting_roots({**x, "target_torque": t}, float(t), upper) for t in targets]
+    np.testing.assert_array_equal(swept, one)
+    assert swept[0] == grid[20]
+    assert _crosses_within(x, spring, float(targets[1]), float(swept[1]), 1e-12)
+    assert np.isnan(swept[2:]).all()
+
+
+def test_the_breakaway_setting_on_its_grid_and_against_the_force():
+    # forces across the rising branch, one exactly the force at a grid point (that point),
+    # one above the stack's largest (NaN); the stack varied in name only (each point its
+    # own grid) gives the same floats; each root within the tolerance of the force's
+    # crossing (bisection to the neighbouring floats)
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    x, _ = BALL_CLUTCH.validate(DISC)
+    x = dict(x)
+    spring = asbuilt.Spring(x)
+    s_max = float(sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])[0])
+    upper = x["disc_series"] * s_max
+    grid = np.linspace(0.0, upper, 65)
+    largest = float(spring.force(upper))
+    forces = np.concatenate([np.linspace(0.01, 0.99, 9) * largest, [1.01 * largest]])
+    forces[3] = float(spring.force(grid[17]))
+    got = asbuilt.disc_breakaway_setting(x, forces)
+    varied = {**x, "disc_thickness": np.full(forces.size, x["disc_thickness"])}
+    np.testing.assert_array_equal(asbuilt.disc_breakaway_setting(varied, forces), got)
+    assert got[3] == grid[17] and np.isnan(got[-1])
+    assert asbuilt.disc_breakaway_setting(x, float(forces[5])) == got[5]
+    for force, root in zip(forces[:-1].tolist(), got[:-1].tolist(), strict=True):
+        lo, hi = 0.0, upper
+        while (mid := 0.5 * (lo + hi)) not in (lo, hi):
+            lo, hi = (mid, hi) if float(spring.force(mid)) < force else (lo, mid)
+        assert abs(root - lo) <= 1e-13 + 1e-12 * root, (force, root, lo)
