@@ -1423,9 +1423,11 @@ def newton_roots(
     first point interpolates linearly between the ends; each step narrows the bracket
     to the side of the root and takes Newton's step, or bisects where that step leaves
     the bracket or is not half the step before last (Numerical Recipes' ``rtsafe``).
-    A lane stops at the first step shorter than (xtol + rtol |x|)/2 (Newton's next is
-    quadratically shorter; a bisection's midpoint is that close to the root), or at an
-    exact zero; an end where the function is zero is the root. Each lane's steps depend
+    A lane stops where the step it takes is shorter than (xtol + rtol |x|)/2 (a
+    bisection's midpoint is then that close to the root), or where Newton's next step,
+    d_{n+1} ≈ d_n³/d_{n−1}² from the rate of its last two, would be (the root is then
+    that close to the point stepped to), or at an exact zero; an end where the function
+    is zero is the root. Each lane's steps depend
     on its own values alone: one design and a sweep of many get the same root. NaN
     where the ends hold no such crossing.
     """
@@ -1442,6 +1444,7 @@ def newton_roots(
     last = before.copy()
     i = np.flatnonzero(active)
     lo, hi, x, before, last = lo[i], hi[i], x[i], before[i], last[i]
+    newer = np.zeros(i.size, dtype=bool)  # the last step was Newton's
     for _ in range(maxiter):
         if not i.size:
             break
@@ -1457,11 +1460,15 @@ def newton_roots(
         middle = 0.5 * (lo + hi)
         new = np.where(newton, new, middle)
         moved = np.where(newton, moved, hi - middle)
-        done = (moved < (xtol + rtol * np.abs(x)) * 0.5) | (value == 0.0)
+        # Newton's next step from here, were it taken: the last two steps give the
+        # rate of quadratic convergence, d_{n+1} ≈ d_n³/d_{n-1}²
+        with np.errstate(all="ignore"):
+            ahead = np.where(newton & newer, moved * (moved / last) ** 2, moved)
+        done = (ahead < (xtol + rtol * np.abs(x)) * 0.5) | (value == 0.0)
         root[i[done]] = np.where(value == 0.0, x, new)[done]
         go = ~done
         i, lo, hi, x = i[go], lo[go], hi[go], new[go]
-        before, last = last[go], moved[go]
+        before, last, newer = last[go], moved[go], newton[go]
     return root
 
 
