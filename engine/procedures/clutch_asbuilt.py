@@ -1488,6 +1488,10 @@ _TARGET_INPUTS = (
 #: time (81 values each): a design whose target is reached early is not evaluated further.
 _GRID_DESIGNS = 1024
 _GRID_BLOCK = 8
+#: From this many points sharing one disc stack's curves, their candidates are chosen on
+#: a grid :data:`_FINE_CANDIDATES` times finer (the same peak, from fewer curves).
+_FINE_LANES = 8192
+_FINE_CANDIDATES = 8
 
 
 def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
@@ -1544,7 +1548,9 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
         f_low[at], f_high[at] = peaks[i - 1] - aims[at], peaks[i] - aims[at]
         span[at] = i
         todo = todo[:0]
-        curves = _Curves.of(design, line) if at.size else None
+        # a large sweep's curves on a finer grid: fewer of them to evaluate at each step
+        refine = _FINE_CANDIDATES if at.size >= _FINE_LANES else 1
+        curves = _Curves.of(design, line, refine) if at.size else None
     grid = np.linspace(0.0, tops, 65, axis=-1) if todo.size else tops[:, None]
     begin = np.ones(n, dtype=np.intp)  # the first grid point each point's scan reads
     before = lo_val.copy()  # the function at the grid point before ``begin``
@@ -1618,17 +1624,26 @@ class _Curves:
     def __init__(self, x: Mapping[str, Any], lift: Any, beta: Any, candidates: Any) -> None:
         self.x, self.spring = x, Spring(x)
         self.lift, self.beta, self.candidates = lift, beta, candidates
+        # the candidates' grid: ``refine`` intervals in each of the search's, from
+        # ``start`` in steps of ``step``
+        self.refine, self.start, self.step = 1, 0.0, 1.0
 
     @classmethod
-    def of(cls, x: Mapping[str, Any], grid: Any) -> _Curves | None:
-        """The curves of a disc stack ``x`` on the settings ``grid``; None where the lift
-        points move with the setting (``ball_lift`` absent), a torque is not finite, or
-        the spring is helical (whose setting :class:`SettingGrid` solves)."""
+    def of(cls, x: Mapping[str, Any], grid: Any, refine: int = 1) -> _Curves | None:
+        """The curves of a disc stack ``x`` on the settings ``grid`` (their candidates on
+        ``refine`` equal intervals in each of its: fewer curves each, at the price of
+        more bounds); None where the lift points move with the setting (``ball_lift``
+        absent), a torque is not finite, or the spring is helical (whose setting
+        :class:`SettingGrid` solves)."""
         if x["ball_lift"] is None or x["spring_type"] != "disc":
             return None
         lift, beta = lift_points(x["ball_lift"], x["ball_diameter"], _ride(x), POINTS)
         curves = cls(x, lift, beta, np.arange(lift.size))
-        bounds = curves.bounds(np.asarray(grid, dtype=float))
+        grid = np.asarray(grid, dtype=float)
+        intervals = (grid.size - 1) * refine
+        if refine > 1:
+            grid = np.linspace(grid[0], grid[-1], intervals + 1)
+        bounds = curves.bounds(grid)
         if bounds is None:
             return None
         upper, lower, ends = bounds
@@ -1642,7 +1657,10 @@ class _Curves:
         padded = np.where(np.arange(width) < count, order, first)
         # row j of ``candidates`` is the interval ending at grid point j (row 0 unused)
         candidates = np.concatenate([padded[:1], padded])
-        return cls(x, lift, beta, candidates)
+        out = cls(x, lift, beta, candidates)
+        out.refine, out.start = refine, float(grid[0])
+        out.step = (float(grid[-1]) - out.start) / intervals
+        return out
 
     def bounds(self, grid: Any) -> tuple[Any, Any, Any] | None:
         """(largest, smallest) of every curve in every interval of ``grid`` (interval j
@@ -1690,6 +1708,9 @@ class _Curves:
         """:meth:`peak` and the slope dT_k/dδ of the curve k holding it
         (:func:`peak_slope`, the same floats as :func:`characteristic`'s)."""
         delta = np.asarray(delta, dtype=float)
+        if self.refine > 1:  # the candidates' interval that holds each setting
+            fine = np.floor((delta - self.start) / self.step).astype(np.intp) + 1
+            span = np.clip(fine, (span - 1) * self.refine + 1, span * self.refine)
         k = self.candidates[span]
         torque = self.torque(delta[:, None], k)
         top = np.arange(k.shape[0]) * k.shape[1] + np.argmax(torque, axis=-1)

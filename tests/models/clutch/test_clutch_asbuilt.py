@@ -630,9 +630,10 @@ def test_a_disc_stacks_end_values_are_the_characteristics():
         np.testing.assert_array_equal(stress, c["spring_stress_max"])
 
 
+@pytest.mark.parametrize("refine", [1, 8])
 @pytest.mark.parametrize("ratio", [1.0, 1.6, 2.2, 3.0])
 @pytest.mark.parametrize("size", [65, 3])
-def test_the_peak_over_the_curves_that_can_hold_it_is_the_peak_over_all(ratio, size):
+def test_the_peak_over_the_curves_that_can_hold_it_is_the_peak_over_all(ratio, size, refine):
     # rising, flattening, falling and past-flat negative discs: at settings across
     # every interval of the search's grid (its ends and its force extrema included),
     # the peak over the few curves the bounds keep is the 81-point peak, to the last bit;
@@ -643,10 +644,12 @@ def test_the_peak_over_the_curves_that_can_hold_it_is_the_peak_over_all(ratio, s
     x, _ = BALL_CLUTCH.validate(design)
     spring = asbuilt.Spring(x)
     grid = np.linspace(0.0, x["disc_series"] * x["disc_cone_height"], size)
-    curves = asbuilt._Curves.of(x, grid)
+    curves = asbuilt._Curves.of(x, grid, refine)
     assert curves is not None
     if size == 65:
         assert curves.candidates.shape[1] < 41  # the bounds leave out most curves
+    if refine > 1:  # fewer still on the finer grid
+        assert curves.candidates.shape[1] < asbuilt._Curves.of(x, grid).candidates.shape[1]
     rng = np.random.default_rng(int(ratio * 10))
     span = np.repeat(np.arange(1, size), 400 // size)
     settings = grid[span - 1] + rng.uniform(0.0, 1.0, span.size) * (grid[span] - grid[span - 1])
@@ -783,3 +786,21 @@ def test_the_breakaway_setting_on_its_grid_and_against_the_force():
         while (mid := 0.5 * (lo + hi)) not in (lo, hi):
             lo, hi = (mid, hi) if float(spring.force(mid)) < force else (lo, mid)
         assert abs(root - lo) <= 1e-13 + 1e-12 * root, (force, root, lo)
+
+
+@pytest.mark.parametrize("ratio", [1.0, 2.2])
+def test_a_large_sweep_on_finer_candidates_finds_the_roots_of_small_ones(ratio):
+    # from _FINE_LANES points on, the curves' candidates come from a finer grid: the same
+    # roots, to the last bit, as the same targets searched a few at a time
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    x, upper, _, peaks = _disc_setting_case(ratio)
+    n = asbuilt._FINE_LANES + 100
+    targets = np.random.default_rng(3).uniform(0.01, 1.05, n) * float(np.max(peaks))
+    big = asbuilt.setting_roots({**x, "target_torque": targets}, targets, upper)
+    parts = [targets[i : i + 1000] for i in range(0, n, 1000)]
+    small = np.concatenate(
+        [asbuilt.setting_roots({**x, "target_torque": t}, t, upper) for t in parts]
+    )
+    np.testing.assert_array_equal(big, small)
+    assert np.isfinite(big).sum() > n // 2 and np.isnan(big).sum() > 100
