@@ -55,6 +55,7 @@ __all__ = [
     "disc_force",
     "disc_force_flat",
     "disc_k4",
+    "disc_rate",
     "disc_stresses",
     "disc_thickness_for_flat_force",
     "helical_mass",
@@ -845,6 +846,81 @@ def disc_force(
     k4s = np.asarray(k4, dtype=float) ** 2
     scale = _disc_scale(outer_diameter, t, k1, elastic_modulus, poisson)
     return _out(scale * t**4 * k4s * u * (k4s * (a - u) * (a - u / 2.0) + 1.0))
+
+
+def disc_rate(
+    deflection: FloatArray,
+    outer_diameter: FloatArray,
+    inner_diameter: FloatArray,
+    thickness: FloatArray,
+    cone_height: FloatArray,
+    elastic_modulus: FloatArray = 206e9,
+    poisson: FloatArray = 0.3,
+    k4: FloatArray = 1.0,
+) -> FloatArray:
+    r"""Rate dF/ds of one disc spring deflected by s (Almen–László, DIN EN 16983).
+
+    .. math::
+        R = \frac{dF}{ds} = \frac{4E}{1 - \mu^2}\frac{t^3}{K_1 D_e^2} K_4^2
+            \left[K_4^2\left(\left(\frac{h_0}{t}\right)^2
+            - 3\frac{h_0}{t}\frac{s}{t} + \frac{3}{2}\left(\frac{s}{t}\right)^2\right)
+            + 1\right]
+
+    Parameters
+    ----------
+    deflection : float
+        s, from the free state, [m]
+    outer_diameter : float
+        De, [m]
+    inner_diameter : float
+        Di, [m]
+    thickness : float
+        t, [m]
+    cone_height : float
+        h0, [m]
+    elastic_modulus : float, optional
+        E, [Pa]
+    poisson : float, optional
+        μ, [-]
+    k4 : float, optional
+        K4, [-]
+
+    Returns
+    -------
+    rate : float
+        R, [N/m]; negative between the force's maximum and minimum
+        (:func:`disc_falling_region`)
+
+    Notes
+    -----
+    DIN EN 16983, the spring rate of a single disc: the derivative of
+    :func:`disc_force` in s. Its zeros are :func:`disc_falling_region`'s.
+
+    Examples
+    --------
+    At s = 0 the rate is (4E/(1 − μ²)) t³/(K1 De²) ((h0/t)² + 1); at the force's
+    maximum it is zero; it matches a central difference of :func:`disc_force`:
+
+    >>> k1 = disc_factors(0.040, 0.0204)[0]
+    >>> hand = 4 * 206e9 / (1 - 0.3**2) * 0.001**3 / (k1 * 0.040**2) * (2.0**2 + 1)
+    >>> round(float(disc_rate(0.0, 0.040, 0.0204, 0.001, 0.002) / hand), 12)
+    1.0
+    >>> top = disc_falling_region(0.001, 0.002)[0]
+    >>> abs(float(disc_rate(top, 0.040, 0.0204, 0.001, 0.002))) < 1e-6
+    True
+    >>> h = 1e-7
+    >>> diff = (disc_force(6e-4 + h, 0.040, 0.0204, 0.001, 0.002)
+    ...         - disc_force(6e-4 - h, 0.040, 0.0204, 0.001, 0.002)) / (2 * h)
+    >>> round(float(disc_rate(6e-4, 0.040, 0.0204, 0.001, 0.002) / diff), 6)
+    1.0
+    """
+    k1, _, _ = disc_factors(outer_diameter, inner_diameter)
+    t = np.asarray(thickness, dtype=float)
+    u = np.asarray(deflection, dtype=float) / t
+    a = np.asarray(cone_height, dtype=float) / t
+    k4s = np.asarray(k4, dtype=float) ** 2
+    scale = _disc_scale(outer_diameter, t, k1, elastic_modulus, poisson)
+    return _out(scale * t**3 * k4s * (k4s * (a * a - 3.0 * a * u + 1.5 * u * u) + 1.0))
 
 
 def disc_force_flat(

@@ -473,6 +473,25 @@ class Spring:
         )
         return sp.stack_force(single, x["disc_parallel"], x["disc_friction"])
 
+    def rate(self, deflection: Any) -> Any:
+        """dF/d(deflection): the helical rate, or the stack's (the disc's rate at the
+        per-disc deflection over the discs in series, through the stack's parallel
+        discs and friction as its force)."""
+        x = self.x
+        if self.kind == "helical":
+            return np.asarray(self.force(1.0)) * np.ones(np.shape(deflection))
+        single = sp.disc_rate(
+            np.asarray(deflection) / x["disc_series"],
+            x["disc_outer_diameter"],
+            x["disc_inner_diameter"],
+            x["disc_thickness"],
+            x["disc_cone_height"],
+            x["disc_elastic_modulus"],
+        )
+        return sp.stack_force(
+            np.asarray(single) / x["disc_series"], x["disc_parallel"], x["disc_friction"]
+        )
+
     def stress(self, deflection: Any) -> Any:
         x = self.x
         if self.kind == "helical":
@@ -636,17 +655,26 @@ def characteristic(
     """Torque, spring force and stress against lift; arrays with the lift on the last axis.
 
     The curves themselves (keys ``_lift``, ``_torque``, ``_force``, ``_stress``) only with
-    ``curves=True``; only ``peak_torque`` with ``peak_only=True`` (a root search's
-    function: no stress, the same floats). ``points`` on the flank and as many over the
+    ``curves=True``; only ``peak_torque`` and ``peak_slope`` with ``peak_only=True`` (a
+    root search's function, the same floats, and its derivative in the setting,
+    :func:`peak_slope`). ``points`` on the flank and as many over the
     rim (the outputs take :data:`POINTS`; the error estimate a finer grid). A helical
     spring's stress is evaluated only where it is read (at the
     peak torque and at the largest force, where it is largest: it is proportional to the
     force), the same floats the whole curve would hold there.
     """
-    flat_spring = spring
+    flat_spring, given = spring, x
     preload = np.asarray(x["spring_deflection"] if deflection is None else deflection, float)
     if spring.kind == "helical" and not curves and np.all(peak_at_rim(x, deflection=deflection)):
-        return _rim_peak(x, spring, preload, lift_of(x, deflection))
+        at_rim = _rim_peak(x, spring, preload, lift_of(x, deflection))
+        if peak_only:  # the rim point z = h (h = Δ when ball_lift is absent)
+            moves = 0.0 if x["ball_lift"] is not None else 1.0
+            compressed = preload + np.asarray(lift_of(x, deflection), float)
+            return {
+                "peak_torque": at_rim["peak_torque"],
+                "peak_slope": peak_slope(x, spring, compressed, _ride(x), moves),
+            }
+        return at_rim
     # A helical spring's force rises with the lift and the flank's push is constant, so
     # on the flank the torque rises to the rim: the grid's peak and maxima lie from the
     # rim on. Without the curves, only those points are evaluated (the same floats).
@@ -689,7 +717,19 @@ def characteristic(
             return np.take_along_axis(np.broadcast_to(arr, torque.shape), idx, axis=-1)[..., 0]
 
     if peak_only:
-        return {"peak_torque": at(torque, peak)}
+        # dz_k/dΔ: 0 where the lift points stay put, the unit flank's lifts where they
+        # follow the setting (z = u h on the flank, h + rim rise over it, h = Δ)
+        follows: Any = (
+            0.0
+            if given["ball_lift"] is not None
+            else lift_points(1.0, 0.0, 0.0, points, first > 0)[0]
+        )
+        return {
+            "peak_torque": at(torque, peak),
+            "peak_slope": peak_slope(
+                given, flat_spring, at(total, peak), at(beta, peak), at(follows, peak)
+            ),
+        }
     rim = np.full_like(peak, points - 1 - first)
     forces = np.broadcast_to(force, torque.shape)
     out: dict[str, Any] = {
@@ -723,6 +763,45 @@ def characteristic(
         )
         out["residual_torque"] = np.asarray(residual)[..., 0]
     return out
+
+
+def peak_slope(x: Mapping[str, Any], spring: Spring, total: Any, beta: Any, follows: Any) -> Any:
+    r"""dT_k/dΔ of the lift point k holding the peak: the derivative of the root
+    searches' function (:func:`setting_roots`), for Newton's steps.
+
+    .. math::
+        \frac{dT_k}{d\Delta} = \left(1 + \frac{dz_k}{d\Delta}\right)
+        \frac{s D_0}{2 p(\beta_k)} \frac{dF}{ds}\Big|_{\Delta + z_k}
+
+    T_k = s D0 F(Δ + z_k)/(2 p(β_k)) is linear in the force, so its derivative is
+    :func:`torque_against_lift` of the spring's rate (:meth:`Spring.rate`) at the
+    compression ``total`` = Δ + z_k, at the contact angle ``beta`` = β_k; ``follows``
+    is dz_k/dΔ (0 where the lift points stay put, ``ball_lift`` given). [001, eq. 1–3]
+    with EN 16983's rate.
+
+    A helical spring on the paper's 45° flanks without friction (p = 1), 4 balls on a
+    50 mm circle sharing one spring: the slope is D0/2 times the rate, twice that
+    where the lift follows the setting:
+
+    >>> from engine.models.clutch import BALL_CLUTCH
+    >>> x, _ = BALL_CLUTCH.validate({**BALL_CLUTCH.examples[0], "spring_deflection": 0.004})
+    >>> spring = Spring(x)
+    >>> rate = float(spring.force(1.0))  # F = c s
+    >>> round(float(peak_slope(x, spring, 0.005, math.pi / 4, 0.0) / (0.025 * rate)), 12)
+    1.0
+    >>> round(float(peak_slope(x, spring, 0.005, math.pi / 4, 1.0) / (0.05 * rate)), 12)
+    1.0
+    """
+    push = torque_against_lift(
+        spring.rate(total),
+        beta,
+        x["ball_circle_diameter"],
+        x["flank_friction"],
+        x["driving_groove_angle"],
+        _sharing(x),
+        x["flank_construction"],
+    )
+    return np.asarray((1.0 + np.asarray(follows)) * np.asarray(push))
 
 
 def peak_at_rim(
@@ -1323,6 +1402,76 @@ def bracketed_roots(
     return root
 
 
+def newton_roots(
+    f: Callable[[Any, Any], tuple[Any, Any]],
+    a: Any,
+    b: Any,
+    fa: Any,
+    fb: Any,
+    xtol: float,
+    rtol: float,
+    maxiter: int = 100,
+) -> Any:
+    r"""Roots of ``f`` in the brackets [a, b], many at once: Newton's method kept inside
+    the bracket, lane by lane.
+
+    .. math::
+        x_{n+1} = x_n - \frac{f(x_n)}{f'(x_n)}
+
+    ``f(x, lanes)`` gives (value, derivative) of the lanes ``lanes`` (an index array) at
+    ``x``; ``fa`` < 0 ≤ ``fb`` are the values at ``a`` < ``b`` (a rising crossing). The
+    first point interpolates linearly between the ends; each step narrows the bracket
+    to the side of the root and takes Newton's step, or bisects where that step leaves
+    the bracket or is not half the step before last (Numerical Recipes' ``rtsafe``).
+    A lane stops where the step it takes is shorter than (xtol + rtol |x|)/2 (a
+    bisection's midpoint is then that close to the root), or where Newton's next step,
+    d_{n+1} ≈ d_n³/d_{n−1}² from the rate of its last two, would be (the root is then
+    that close to the point stepped to), or at an exact zero; an end where the function
+    is zero is the root. Each lane's steps depend
+    on its own values alone: one design and a sweep of many get the same root. NaN
+    where the ends hold no such crossing.
+    """
+    lo = np.array(a, dtype=float, ndmin=1)
+    hi = np.array(np.broadcast_to(b, lo.shape), dtype=float)
+    flo = np.broadcast_to(np.asarray(fa, dtype=float), lo.shape)
+    fhi = np.broadcast_to(np.asarray(fb, dtype=float), lo.shape)
+    root = np.where(flo == 0.0, lo, np.where(fhi == 0.0, hi, np.nan))
+    active = (flo < 0.0) & (fhi > 0.0)
+    with np.errstate(all="ignore"):
+        x = lo - flo * (hi - lo) / (fhi - flo)
+    x = np.where((x > lo) & (x < hi), x, 0.5 * (lo + hi))
+    before = hi - lo  # the step before last: none yet, the bracket
+    last = before.copy()
+    i = np.flatnonzero(active)
+    lo, hi, x, before, last = lo[i], hi[i], x[i], before[i], last[i]
+    newer = np.zeros(i.size, dtype=bool)  # the last step was Newton's
+    for _ in range(maxiter):
+        if not i.size:
+            break
+        value, slope = f(x, i)
+        below = value < 0.0
+        lo = np.where(below, x, lo)
+        hi = np.where(below, hi, x)
+        with np.errstate(all="ignore"):
+            step = value / slope
+        new = x - step
+        moved = np.abs(step)
+        newton = (new > lo) & (new < hi) & (moved + moved <= before)
+        middle = 0.5 * (lo + hi)
+        new = np.where(newton, new, middle)
+        moved = np.where(newton, moved, hi - middle)
+        # Newton's next step from here, were it taken: the last two steps give the
+        # rate of quadratic convergence, d_{n+1} ≈ d_n³/d_{n-1}²
+        with np.errstate(all="ignore"):
+            ahead = np.where(newton & newer, moved * (moved / last) ** 2, moved)
+        done = (ahead < (xtol + rtol * np.abs(x)) * 0.5) | (value == 0.0)
+        root[i[done]] = np.where(value == 0.0, x, new)[done]
+        go = ~done
+        i, lo, hi, x = i[go], lo[go], hi[go], new[go]
+        before, last, newer = last[go], moved[go], newton[go]
+    return root
+
+
 #: Inputs that set only a setting's target torque, not the characteristic it is found on.
 _TARGET_INPUTS = (
     "target_torque",
@@ -1339,6 +1488,10 @@ _TARGET_INPUTS = (
 #: time (81 values each): a design whose target is reached early is not evaluated further.
 _GRID_DESIGNS = 1024
 _GRID_BLOCK = 8
+#: From this many points sharing one disc stack's curves, their candidates are chosen on
+#: a grid :data:`_FINE_CANDIDATES` times finer (the same peak, from fewer curves).
+_FINE_LANES = 8192
+_FINE_CANDIDATES = 8
 
 
 def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
@@ -1347,10 +1500,11 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
     .. math::
         \max_k T(\Delta, z_k) = T_{target}
 
-    The first crossing on a 65-point grid of Δ brackets the root, refined by Brent's
-    method (:func:`bracketed_roots`). Floats or arrays (``x``'s arrays one design
-    per element): a float for one design, the same number as an element of a sweep.
-    [001, eq. 1–3] on :func:`characteristic`.
+    The first crossing on a 65-point grid of Δ brackets the root, refined by Newton's
+    method on the peak and the slope of the curve holding it (:func:`newton_roots`,
+    :func:`peak_slope`), from the linear interpolation between the bracket's ends.
+    Floats or arrays (``x``'s arrays one design per element): a float for one design,
+    the same number as an element of a sweep. [001, eq. 1–3] on :func:`characteristic`.
     """
     n = max([1, *(v.size for v in _arrays(x)), np.size(target), np.size(upper)])
     aims = np.array(np.broadcast_to(np.asarray(target, dtype=float), (n,)))
@@ -1361,38 +1515,51 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
     design = {k: v for k, v in x.items() if k not in _TARGET_INPUTS}
     shared = not _arrays(design) and np.ndim(upper) == 0
 
-    def excess(delta: Any, lanes: Any) -> Any:
+    def excess_slope(delta: Any, lanes: Any) -> tuple[Any, Any]:
         part = design if shared else points.take(x, n, lanes) if varied else x
-        peak = characteristic(part, Spring(part), delta, peak_only=True)["peak_torque"]
-        return np.asarray(peak, dtype=float) - aims[lanes]
+        c = characteristic(part, Spring(part), delta, peak_only=True)
+        return np.asarray(c["peak_torque"], dtype=float) - aims[lanes], c["peak_slope"]
 
-    if shared:  # one peak at δ = 0 for every point
-        seated = characteristic(design, Spring(design), 0.0, peak_only=True)["peak_torque"]
-        lo_val = np.asarray(seated, dtype=float) - aims
+    def excess(delta: Any, lanes: Any) -> Any:
+        return excess_slope(delta, lanes)[0]
+
+    if shared:  # one grid for every point, the same floats as each point's own
+        line = np.linspace(0.0, float(upper), 65)
+        peaks = characteristic(design, Spring(design), line, peak_only=True)["peak_torque"]
+        peaks = np.asarray(peaks, dtype=float)
+        lo_val = peaks[0] - aims  # δ = 0
     else:
         lo_val = excess(np.zeros(n), np.arange(n))
     root = np.where(lo_val == 0.0, 0.0, np.nan)
     todo = np.flatnonzero(lo_val < 0.0)
-    grid = np.linspace(0.0, tops, 65, axis=-1)
+    # each point's bracket on the grid and the function's values at its ends
     low, high = np.full(n, np.nan), np.full(n, np.nan)
+    f_low, f_high = np.full(n, np.nan), np.full(n, np.nan)
     span = np.zeros(n, dtype=np.intp)  # the grid interval of a shared grid's bracket
     curves: _Curves | None = None
-    if shared and todo.size:
-        # the same floats as the scan below: every design's grid is this one
-        peaks = characteristic(design, Spring(design), grid[0], peak_only=True)["peak_torque"]
-        above = np.asarray(peaks, dtype=float)[None, 1:] - aims[todo, None] >= 0.0
-        reached = above.any(axis=-1)
-        i = np.argmax(above, axis=-1) + 1  # the first grid point at or past the target
-        at = todo[reached]
-        low[at], high[at] = grid[at, i[reached] - 1], grid[at, i[reached]]
-        span[at] = i[reached]
+    if shared:
+        # the first grid point at or past a target: where the running largest peak
+        # (a torque that is not a number never reaches it) first reaches it
+        running = np.maximum.accumulate(np.where(np.isnan(peaks[1:]), -np.inf, peaks[1:]))
+        i = np.searchsorted(running, aims[todo], side="left") + 1
+        reached = i <= 64
+        at, i = todo[reached], i[reached]
+        low[at], high[at] = line[i - 1], line[i]
+        f_low[at], f_high[at] = peaks[i - 1] - aims[at], peaks[i] - aims[at]
+        span[at] = i
         todo = todo[:0]
-        curves = _Curves.of(design, grid[0])
+        # a large sweep's curves on a finer grid: fewer of them to evaluate at each step
+        refine = _FINE_CANDIDATES if at.size >= _FINE_LANES else 1
+        curves = _Curves.of(design, line, refine) if at.size else None
+    grid = np.linspace(0.0, tops, 65, axis=-1) if todo.size else tops[:, None]
     begin = np.ones(n, dtype=np.intp)  # the first grid point each point's scan reads
+    before = lo_val.copy()  # the function at the grid point before ``begin``
     if todo.size:
         # where the peak rises along the grid, its first crossing is found by bisection;
         # the points it leaves are scanned past the part where it rises below the target
-        todo = _bisect_rising(x, n, grid, todo, excess, low, high, begin)
+        todo = _bisect_rising(
+            x, n, grid, todo, excess, (low, high, f_low, f_high), begin, before, lo_val
+        )
     block = np.arange(_GRID_BLOCK)
     for first in range(0, todo.size, _GRID_DESIGNS):
         lanes = todo[first : first + _GRID_DESIGNS]
@@ -1402,12 +1569,19 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
             on = index <= 64
             index = np.minimum(index, 64)
             settings = grid[lanes[:, None], index]
-            peaks = excess(settings.ravel(), np.repeat(lanes, _GRID_BLOCK))
-            above = (peaks.reshape(-1, _GRID_BLOCK) >= 0.0) & on
+            values = excess(settings.ravel(), np.repeat(lanes, _GRID_BLOCK))
+            values = values.reshape(-1, _GRID_BLOCK)
+            above = (values >= 0.0) & on
             reached = above.any(axis=-1)
-            i = np.argmax(above, axis=-1) + begin[lanes]  # the first grid point at or past it
-            at = lanes[reached]
+            k = np.argmax(above, axis=-1)  # the first grid point at or past it, in the block
+            i = k + begin[lanes]
+            at, rows = lanes[reached], np.flatnonzero(reached)
             low[at], high[at] = grid[at, i[reached] - 1], grid[at, i[reached]]
+            f_high[at] = values[rows, k[reached]]
+            f_low[at] = np.where(
+                k[reached] > 0, values[rows, np.maximum(k[reached] - 1, 0)], before[at]
+            )
+            before[lanes] = values[:, -1]
             begin[lanes] += _GRID_BLOCK
             lanes = lanes[~reached & (begin[lanes] <= 64)]
     bracketed = np.flatnonzero(np.isfinite(low))
@@ -1415,13 +1589,16 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
         if curves is not None:
             shape = curves  # the peak over the lift points that can hold it in the bracket
 
-            def excess(delta: Any, lanes: Any) -> Any:
-                return shape.peak(delta, span[lanes]) - aims[lanes]
+            def excess_slope(delta: Any, lanes: Any) -> tuple[Any, Any]:
+                peak, slope = shape.peak_slope(delta, span[lanes])
+                return peak - aims[lanes], slope
 
-        root[bracketed] = bracketed_roots(
-            lambda delta, lanes: excess(delta, bracketed[lanes]),
+        root[bracketed] = newton_roots(
+            lambda delta, lanes: excess_slope(delta, bracketed[lanes]),
             low[bracketed],
             high[bracketed],
+            f_low[bracketed],
+            f_high[bracketed],
             xtol=1e-12,
             rtol=1e-12,
         )
@@ -1447,17 +1624,26 @@ class _Curves:
     def __init__(self, x: Mapping[str, Any], lift: Any, beta: Any, candidates: Any) -> None:
         self.x, self.spring = x, Spring(x)
         self.lift, self.beta, self.candidates = lift, beta, candidates
+        # the candidates' grid: ``refine`` intervals in each of the search's, from
+        # ``start`` in steps of ``step``
+        self.refine, self.start, self.step = 1, 0.0, 1.0
 
     @classmethod
-    def of(cls, x: Mapping[str, Any], grid: Any) -> _Curves | None:
-        """The curves of a disc stack ``x`` on the settings ``grid``; None where the lift
-        points move with the setting (``ball_lift`` absent), a torque is not finite, or
-        the spring is helical (whose setting :class:`SettingGrid` solves)."""
+    def of(cls, x: Mapping[str, Any], grid: Any, refine: int = 1) -> _Curves | None:
+        """The curves of a disc stack ``x`` on the settings ``grid`` (their candidates on
+        ``refine`` equal intervals in each of its: fewer curves each, at the price of
+        more bounds); None where the lift points move with the setting (``ball_lift``
+        absent), a torque is not finite, or the spring is helical (whose setting
+        :class:`SettingGrid` solves)."""
         if x["ball_lift"] is None or x["spring_type"] != "disc":
             return None
         lift, beta = lift_points(x["ball_lift"], x["ball_diameter"], _ride(x), POINTS)
         curves = cls(x, lift, beta, np.arange(lift.size))
-        bounds = curves.bounds(np.asarray(grid, dtype=float))
+        grid = np.asarray(grid, dtype=float)
+        intervals = (grid.size - 1) * refine
+        if refine > 1:
+            grid = np.linspace(grid[0], grid[-1], intervals + 1)
+        bounds = curves.bounds(grid)
         if bounds is None:
             return None
         upper, lower, ends = bounds
@@ -1471,7 +1657,10 @@ class _Curves:
         padded = np.where(np.arange(width) < count, order, first)
         # row j of ``candidates`` is the interval ending at grid point j (row 0 unused)
         candidates = np.concatenate([padded[:1], padded])
-        return cls(x, lift, beta, candidates)
+        out = cls(x, lift, beta, candidates)
+        out.refine, out.start = refine, float(grid[0])
+        out.step = (float(grid[-1]) - out.start) / intervals
+        return out
 
     def bounds(self, grid: Any) -> tuple[Any, Any, Any] | None:
         """(largest, smallest) of every curve in every interval of ``grid`` (interval j
@@ -1513,8 +1702,21 @@ class _Curves:
     def peak(self, delta: Any, span: Any) -> Any:
         """The peak torque at settings ``delta``, each in the grid interval ending at
         grid point ``span``."""
+        return self.peak_slope(delta, span)[0]
+
+    def peak_slope(self, delta: Any, span: Any) -> tuple[Any, Any]:
+        """:meth:`peak` and the slope dT_k/dδ of the curve k holding it
+        (:func:`peak_slope`, the same floats as :func:`characteristic`'s)."""
+        delta = np.asarray(delta, dtype=float)
+        if self.refine > 1:  # the candidates' interval that holds each setting
+            fine = np.floor((delta - self.start) / self.step).astype(np.intp) + 1
+            span = np.clip(fine, (span - 1) * self.refine + 1, span * self.refine)
         k = self.candidates[span]
-        return np.max(self.torque(np.asarray(delta, dtype=float)[:, None], k), axis=-1)
+        torque = self.torque(delta[:, None], k)
+        top = np.arange(k.shape[0]) * k.shape[1] + np.argmax(torque, axis=-1)
+        held = k.ravel()[top]
+        slope = peak_slope(self.x, self.spring, delta + self.lift[held], self.beta[held], 0.0)
+        return torque.ravel()[top], slope
 
 
 def _bisect_rising(
@@ -1523,9 +1725,10 @@ def _bisect_rising(
     grid: Any,
     todo: Any,
     excess: Callable[[Any, Any], Any],
-    low: Any,
-    high: Any,
+    brackets: tuple[Any, Any, Any, Any],
     begin: Any,
+    before: Any,
+    seated: Any,
 ) -> Any:
     """The grid brackets of the points of ``todo`` whose peak torque rises along the grid.
 
@@ -1534,9 +1737,11 @@ def _bisect_rising(
     positive push); the peak torque then rises with the setting while the stack's
     largest compression, at the last lift point, stays below i s_max. Over the grid
     points up to there the first at or past the target is found by bisection (the same
-    bracket the scan finds: a rising function crosses once). Sets ``low`` and ``high``
-    where found; returns the points left for the scan (not rising, or not reached), and
-    sets ``begin`` of those not reached to the grid point past the rising part.
+    bracket the scan finds: a rising function crosses once). Sets the ``brackets``
+    (low, high and the function ``excess`` there) where found, from ``seated``, the
+    function at the grid's first point; returns the points left for the scan (not
+    rising, or not reached), and sets ``begin`` of those not reached to the grid point
+    past the rising part and ``before`` to the function at the point before it.
     """
     if x["spring_type"] != "disc":
         return todo
@@ -1560,19 +1765,25 @@ def _bisect_rising(
     ask = np.flatnonzero(top > 0)
     lanes = todo[ask]
     lo, hi = np.zeros(ask.size, dtype=np.intp), top[ask]
-    reached = excess(grid[lanes, hi], lanes) >= 0.0
+    f_hi = excess(grid[lanes, hi], lanes)
+    reached = f_hi >= 0.0
     begin[lanes[~reached]] = hi[~reached] + 1  # below the target up to there
-    lanes, lo, hi = lanes[reached], lo[reached], hi[reached]
+    before[lanes[~reached]] = f_hi[~reached]
+    lanes, lo, hi, f_hi = lanes[reached], lo[reached], hi[reached], f_hi[reached]
+    f_lo = seated[lanes]
     while lanes.size:
         more = hi - lo > 1
         if not more.any():
             break
         mid = (lo + hi) // 2
         at = np.flatnonzero(more)
-        up = excess(grid[lanes[at], mid[at]], lanes[at]) >= 0.0
-        hi[at] = np.where(up, mid[at], hi[at])
-        lo[at] = np.where(up, lo[at], mid[at])
+        value = excess(grid[lanes[at], mid[at]], lanes[at])
+        up = value >= 0.0
+        hi[at], f_hi[at] = np.where(up, mid[at], hi[at]), np.where(up, value, f_hi[at])
+        lo[at], f_lo[at] = np.where(up, lo[at], mid[at]), np.where(up, f_lo[at], value)
+    low, high, f_low, f_high = brackets
     low[lanes], high[lanes] = grid[lanes, lo], grid[lanes, hi]
+    f_low[lanes], f_high[lanes] = f_lo, f_hi
     return np.setdiff1d(todo, lanes, assume_unique=True)
 
 
@@ -1886,14 +2097,31 @@ def _suggest_parallel(
     return {"suggested_disc_parallel": int(count[0]), "suggested_disc_setting": float(setting[0])}
 
 
+#: The inputs of a disc stack's force (:class:`Spring`) and of its rising branch.
+_DISC_STACK = (
+    "disc_outer_diameter",
+    "disc_inner_diameter",
+    "disc_thickness",
+    "disc_cone_height",
+    "disc_series",
+    "disc_parallel",
+    "disc_friction",
+    "disc_elastic_modulus",
+)
+
+
 def disc_breakaway_setting(x: Mapping[str, Any], force: Any) -> Any:
     r"""Stack setting whose force is ``force`` on the rising branch; NaN if none gives it.
 
     .. math::
         F(s) = F_{target}, \quad 0 \le s \le i \min(s_{max}, h_0)
 
-    s_max where the disc's force peaks (none: the cone height). Brent's method
-    (:func:`bracketed_roots`) on floats or arrays: a float for one design. EN 16983.
+    s_max where the disc's force peaks (none: the cone height). On a 65-point grid of
+    the branch (the force rises along it) bisection finds the interval that holds the
+    setting, refined by Newton's method on the force and the stack's rate
+    (:func:`newton_roots`, :meth:`Spring.rate`). Floats or arrays: a float for one
+    design, the same number as an element of a sweep (a stack that is the same at
+    every point is evaluated on its grid once). EN 16983.
     """
     n = max([1, *(v.size for v in _arrays(x)), np.size(force)])
     varied = bool(_arrays(x))
@@ -1904,16 +2132,42 @@ def disc_breakaway_setting(x: Mapping[str, Any], force: Any) -> Any:
         np.asarray(x["disc_series"] * np.minimum(top, x["disc_cone_height"]), dtype=float), (n,)
     )
 
-    def excess(delta: Any, lanes: Any) -> Any:
-        part = points.take(x, n, lanes) if varied else x
-        return np.asarray(Spring(part).force(delta), dtype=float) - wanted[lanes]
+    def excess_rate(delta: Any, lanes: Any) -> tuple[Any, Any]:
+        spring = Spring(points.take(x, n, lanes) if varied else x)
+        return np.asarray(spring.force(delta), dtype=float) - wanted[lanes], spring.rate(delta)
 
-    reach = np.flatnonzero(~(excess(upper, np.arange(n)) < 0.0))
+    if any(isinstance(x[k], np.ndarray) for k in _DISC_STACK):
+        grid = np.linspace(0.0, upper, 65, axis=-1)
+
+        def excess(index: Any, lanes: Any) -> Any:
+            return excess_rate(grid[lanes, index], lanes)[0]
+
+    else:  # one stack: its forces on the grid once, the same floats
+        line = np.linspace(0.0, float(upper[0]), 65)
+        grid = np.broadcast_to(line, (n, 65))
+        forces = np.asarray(Spring(x).force(line), dtype=float)
+
+        def excess(index: Any, lanes: Any) -> Any:
+            return forces[index] - wanted[lanes]
+
+    every = np.arange(n)
+    at_top = excess(np.full(n, 64), every)
+    reach = np.flatnonzero(~(at_top < 0.0))
+    lo, hi = np.zeros(reach.size, dtype=np.intp), np.full(reach.size, 64)
+    f_lo, f_hi = excess(lo, reach), at_top[reach]
+    while reach.size and np.any(hi - lo > 1):
+        mid = (lo + hi) // 2
+        value = excess(mid, reach)
+        up = value >= 0.0
+        hi, f_hi = np.where(up, mid, hi), np.where(up, value, f_hi)
+        lo, f_lo = np.where(up, lo, mid), np.where(up, f_lo, value)
     setting = np.full(n, np.nan)
-    setting[reach] = bracketed_roots(
-        lambda delta, lanes: excess(delta, reach[lanes]),
-        np.zeros(reach.size),
-        upper[reach],
+    setting[reach] = newton_roots(
+        lambda delta, lanes: excess_rate(delta, reach[lanes]),
+        grid[reach, lo],
+        grid[reach, hi],
+        f_lo,
+        f_hi,
         xtol=1e-13,
         rtol=1e-12,
     )

@@ -323,11 +323,10 @@ def test_nutrunner_coupling_1_gets_its_slip_torque():
     )
 
 
-def _first_crossing_one_by_one(x, spring, target, upper):
-    """The setting search as it was before issue 21's one-call grid: a characteristic per
-    grid point, the first at or past the target brackets Brent's method (the reference)."""
-    from scipy.optimize import brentq
-
+def _first_bracket_one_by_one(x, spring, target, upper):
+    """The setting search's bracket as it was before issue 21's one-call grid: a
+    characteristic per grid point, the first at or past the target (the reference);
+    None where none reaches it, (0, 0) where the seated peak is the target."""
     from engine.procedures import clutch_asbuilt as asbuilt
 
     def peak(delta):
@@ -335,20 +334,32 @@ def _first_crossing_one_by_one(x, spring, target, upper):
 
     lo_val = peak(0.0)
     if lo_val >= 0.0:
-        return 0.0 if lo_val == 0.0 else None
+        return (0.0, 0.0) if lo_val == 0.0 else None
     grid = np.linspace(0.0, upper, 65)
     prev = 0.0
     for g in grid[1:]:
         if peak(float(g)) >= 0.0:
-            return float(brentq(peak, prev, float(g), xtol=1e-12, rtol=1e-12))
+            return prev, float(g)
         prev = float(g)
     return None
+
+
+def _crosses_within(x, spring, target, root, tol):
+    """True where the peak torque crosses the target within ``tol`` of ``root``: below it
+    at root − tol (or at the bracket's low end), at or above it at root + tol."""
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    def peak(delta):
+        return float(asbuilt.characteristic(x, spring, delta)["peak_torque"]) - target
+
+    return peak(max(root - tol, 0.0)) <= 0.0 <= peak(root + tol)
 
 
 def test_the_setting_search_on_one_grid_call_is_the_point_by_point_search():
     # disc stacks whose peak torque rises, flattens and falls with the setting (h0/t from
     # 1 to 2.2, 1 to 3 in series, 1 to 3 in parallel) and targets across and beyond their
-    # reach: the same root to the last bit, the same None where no setting reaches it
+    # reach: the same bracket and None as a characteristic per grid point, and a root
+    # within Newton's stated tolerance (1e-12 m) of where the peak crosses the target
     from engine.procedures import clutch_asbuilt as asbuilt
 
     rng = np.random.default_rng(11)
@@ -366,9 +377,12 @@ def test_the_setting_search_on_one_grid_call_is_the_point_by_point_search():
         upper = float(x["disc_series"] * x["disc_cone_height"])
         top = float(asbuilt.characteristic(x, spring, upper)["peak_torque"])
         for target in rng.uniform(0.05, 1.3, 3) * max(top, 1.0):
-            want = _first_crossing_one_by_one(x, spring, float(target), upper)
+            want = _first_bracket_one_by_one(x, spring, float(target), upper)
             got = asbuilt.solve_setting(x, spring, float(target), upper)
-            assert got == want, (design, target)
+            assert (got is None) == (want is None), (design, target)
+            if want is not None:
+                assert want[0] <= got <= want[1], (design, target)
+                assert _crosses_within(x, spring, float(target), got, 1e-12), (design, target)
             found += want is not None
             missed += want is None
     assert found >= 40 and missed >= 10, (found, missed)
@@ -616,9 +630,10 @@ def test_a_disc_stacks_end_values_are_the_characteristics():
         np.testing.assert_array_equal(stress, c["spring_stress_max"])
 
 
+@pytest.mark.parametrize("refine", [1, 8])
 @pytest.mark.parametrize("ratio", [1.0, 1.6, 2.2, 3.0])
 @pytest.mark.parametrize("size", [65, 3])
-def test_the_peak_over_the_curves_that_can_hold_it_is_the_peak_over_all(ratio, size):
+def test_the_peak_over_the_curves_that_can_hold_it_is_the_peak_over_all(ratio, size, refine):
     # rising, flattening, falling and past-flat negative discs: at settings across
     # every interval of the search's grid (its ends and its force extrema included),
     # the peak over the few curves the bounds keep is the 81-point peak, to the last bit;
@@ -629,10 +644,12 @@ def test_the_peak_over_the_curves_that_can_hold_it_is_the_peak_over_all(ratio, s
     x, _ = BALL_CLUTCH.validate(design)
     spring = asbuilt.Spring(x)
     grid = np.linspace(0.0, x["disc_series"] * x["disc_cone_height"], size)
-    curves = asbuilt._Curves.of(x, grid)
+    curves = asbuilt._Curves.of(x, grid, refine)
     assert curves is not None
     if size == 65:
         assert curves.candidates.shape[1] < 41  # the bounds leave out most curves
+    if refine > 1:  # fewer still on the finer grid
+        assert curves.candidates.shape[1] < asbuilt._Curves.of(x, grid).candidates.shape[1]
     rng = np.random.default_rng(int(ratio * 10))
     span = np.repeat(np.arange(1, size), 400 // size)
     settings = grid[span - 1] + rng.uniform(0.0, 1.0, span.size) * (grid[span] - grid[span - 1])
@@ -672,3 +689,118 @@ def test_every_curve_stays_within_its_bounds_in_every_interval(ratio):
         inside_max += int(np.sum(np.max(torque[1:-1], axis=0) > np.maximum(torque[0], torque[-1])))
     if ratio > 2.0:
         assert inside_max > 0  # some curve peaks inside an interval: the ends alone miss it
+
+
+def test_newton_on_many_brackets_finds_each_root_alone():
+    # a flat start (x³, zero slope at 0), a far overshoot (atan: bisection takes over),
+    # roots at the bracket's ends and brackets without a crossing; each lane against
+    # its closed-form root, and alone the same float as among the others
+    from engine.procedures.clutch_asbuilt import newton_roots
+
+    rng = np.random.default_rng(7)
+    c = rng.uniform(0.01, 5.0, 50)
+    r = rng.uniform(-5.0, 5.0, 50)
+
+    def f(x, lanes):
+        kind = lanes % 2 == 0
+        cube = (x**3 - c[lanes], 3 * x**2)
+        turn = (np.arctan(x - r[lanes]), 1.0 / (1.0 + (x - r[lanes]) ** 2))
+        return np.where(kind, cube[0], turn[0]), np.where(kind, cube[1], turn[1])
+
+    lanes = np.arange(50)
+    a = np.where(lanes % 2 == 0, 0.0, -10.0)
+    b = np.where(lanes % 2 == 0, 2.0, 30.0)
+    fa, fb = f(a, lanes)[0], f(b, lanes)[0]
+    got = newton_roots(f, a, b, fa, fb, xtol=1e-12, rtol=1e-12)
+    want = np.where(lanes % 2 == 0, np.cbrt(c), r)
+    crossing = (fa < 0) & (fb > 0)
+    assert crossing.sum() > 30 and np.isnan(got[~crossing]).all()
+    assert np.all(np.abs(got - want)[crossing] <= 1e-12 * (1 + np.abs(want[crossing])))
+    for j in np.flatnonzero(crossing)[:10]:
+        alone = newton_roots(
+            lambda x, _, j=j: f(x, np.full(np.size(x), j)), a[j], b[j], fa[j], fb[j], 1e-12, 1e-12
+        )
+        assert alone[0] == got[j]
+    # an end where the function is zero is the root; no crossing: NaN
+    ends = newton_roots(f, [0.0, 0.0], [2.0, 2.0], [0.0, -1.0], [1.0, 0.0], 1e-12, 1e-12)
+    assert ends.tolist() == [0.0, 2.0]
+    assert np.isnan(newton_roots(f, [0.0], [2.0], [1.0], [2.0], 1e-12, 1e-12)).all()
+
+
+def _disc_setting_case(ratio):
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    design = {**DISC, "disc_cone_height": ratio * DISC["disc_thickness"], "ball_lift": 0.0004}
+    x, _ = BALL_CLUTCH.validate(design)
+    upper = float(x["disc_series"] * x["disc_cone_height"])
+    grid = np.linspace(0.0, upper, 65)
+    peaks = asbuilt.characteristic(x, asbuilt.Spring(x), grid, peak_only=True)["peak_torque"]
+    return dict(x), upper, grid, np.asarray(peaks)
+
+
+def test_a_target_on_a_grid_point_at_the_flat_top_or_out_of_reach():
+    # the target exactly the peak at a grid point: that point; just under the grid's
+    # largest peak of a falling stack (a flat crossing, the slope ~0): within 1e-12 m of
+    # the crossing; above the top or at zero (the seated peak overshoots it): NaN; one
+    # design as in a sweep
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    x, upper, grid, peaks = _disc_setting_case(2.2)
+    spring = asbuilt.Spring(x)
+    top = float(np.max(peaks))
+    assert 0 < np.argmax(peaks) < 64  # the peak torque falls past its top
+    at_point = float(peaks[20])
+    assert np.all(np.diff(peaks[:21]) > 0)  # rising up to there: grid point 20 is the first
+    targets = np.array([at_point, top * (1 - 1e-9), top * 1.01, 0.0])
+    swept = asbuilt.setting_roots({**x, "target_torque": targets}, targets, upper)
+    one = [asbuilt.setting_roots({**x, "target_torque": t}, float(t), upper) for t in targets]
+    np.testing.assert_array_equal(swept, one)
+    assert swept[0] == grid[20]
+    assert _crosses_within(x, spring, float(targets[1]), float(swept[1]), 1e-12)
+    assert np.isnan(swept[2:]).all()
+
+
+def test_the_breakaway_setting_on_its_grid_and_against_the_force():
+    # forces across the rising branch, one exactly the force at a grid point (that point),
+    # one above the stack's largest (NaN); the stack varied in name only (each point its
+    # own grid) gives the same floats; each root within the tolerance of the force's
+    # crossing (bisection to the neighbouring floats)
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    x, _ = BALL_CLUTCH.validate(DISC)
+    x = dict(x)
+    spring = asbuilt.Spring(x)
+    s_max = float(sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])[0])
+    upper = x["disc_series"] * s_max
+    grid = np.linspace(0.0, upper, 65)
+    largest = float(spring.force(upper))
+    forces = np.concatenate([np.linspace(0.01, 0.99, 9) * largest, [1.01 * largest]])
+    forces[3] = float(spring.force(grid[17]))
+    got = asbuilt.disc_breakaway_setting(x, forces)
+    varied = {**x, "disc_thickness": np.full(forces.size, x["disc_thickness"])}
+    np.testing.assert_array_equal(asbuilt.disc_breakaway_setting(varied, forces), got)
+    assert got[3] == grid[17] and np.isnan(got[-1])
+    assert asbuilt.disc_breakaway_setting(x, float(forces[5])) == got[5]
+    for force, root in zip(forces[:-1].tolist(), got[:-1].tolist(), strict=True):
+        lo, hi = 0.0, upper
+        while (mid := 0.5 * (lo + hi)) not in (lo, hi):
+            lo, hi = (mid, hi) if float(spring.force(mid)) < force else (lo, mid)
+        assert abs(root - lo) <= 1e-13 + 1e-12 * root, (force, root, lo)
+
+
+@pytest.mark.parametrize("ratio", [1.0, 2.2])
+def test_a_large_sweep_on_finer_candidates_finds_the_roots_of_small_ones(ratio):
+    # from _FINE_LANES points on, the curves' candidates come from a finer grid: the same
+    # roots, to the last bit, as the same targets searched a few at a time
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    x, upper, _, peaks = _disc_setting_case(ratio)
+    n = asbuilt._FINE_LANES + 100
+    targets = np.random.default_rng(3).uniform(0.01, 1.05, n) * float(np.max(peaks))
+    big = asbuilt.setting_roots({**x, "target_torque": targets}, targets, upper)
+    parts = [targets[i : i + 1000] for i in range(0, n, 1000)]
+    small = np.concatenate(
+        [asbuilt.setting_roots({**x, "target_torque": t}, t, upper) for t in parts]
+    )
+    np.testing.assert_array_equal(big, small)
+    assert np.isfinite(big).sum() > n // 2 and np.isnan(big).sum() > 100
