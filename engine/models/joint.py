@@ -660,20 +660,22 @@ class _Refusals:
         """Refuse where ``where`` holds, naming ``field`` and the allowed range
         (``message(*args)``: made only when one design is refused)."""
         if self.many:
-            # a condition on fixed inputs alone is one value: where it refuses nothing the
-            # mask stays as it is, without a pass over the points
-            if isinstance(where, np.ndarray) or where:
-                self.mask = self.mask | where
+            self._mask(where)
         elif where:
             raise InputOutOfRange(message(*args), field=field)
 
     def arithmetic(self, where: Any, what: str) -> None:
         """Refuse where the arithmetic fails (alone: as Python's float arithmetic does)."""
         if self.many:
-            if isinstance(where, np.ndarray) or where:
-                self.mask = self.mask | where
+            self._mask(where)
         elif where:
             raise ZeroDivisionError(what)
+
+    def _mask(self, where: Any) -> None:
+        # a condition that refuses nothing (a fixed input's one value, or no point of a
+        # varied one) leaves the mask as it is: no new mask of the points is made
+        if where.any() if isinstance(where, np.ndarray) else where:
+            self.mask = self.mask | where
 
 
 _TOO_WIDE = "{0} = {1:g} mm exceeds the thread diameter d = {2:g} mm: must be ≤ {2:g} mm"
@@ -766,6 +768,68 @@ def _overflows_squared(value: Any) -> Any:
             return False  # no square is inf (nor NaN): none overflows, found in one pass
         return np.isfinite(value) & ~np.isfinite(square)
     return False  # a float that overflows has raised OverflowError already
+
+
+def _varied_alone(value: Any, *others: Any) -> bool:
+    """Whether ``value`` is an array (many points) and none of ``others`` is."""
+    return isinstance(value, np.ndarray) and not any(isinstance(o, np.ndarray) for o in others)
+
+
+class _EndsOf:
+    """The smallest and the largest of a varied input at the points not refused (so far),
+    taken once per mask: every such value where one is NaN (a NaN is neither), none where
+    every point is refused."""
+
+    __slots__ = ("refusals", "taken", "values")
+
+    def __init__(self, values: Any, refusals: _Refusals) -> None:
+        self.values = values
+        self.refusals = refusals
+        self.taken: tuple[Any, np.ndarray] | None = None  # the mask they were taken under
+
+    def __call__(self) -> Any:
+        mask = self.refusals.mask
+        if self.taken is None or self.taken[0] is not mask:
+            values = self.values
+            if isinstance(mask, np.ndarray):
+                values = values[~mask]
+            elif mask:
+                values = values[:0]
+            if values.size:
+                lo, hi = values.min(), values.max()
+                values = values if lo != lo or hi != hi else np.array([lo, hi])
+            self.taken = (mask, values)
+        return self.taken[1]
+
+
+def _working_stress(
+    bolt_force: Any,
+    ends: Any,
+    others: tuple[Any, ...],
+    refusals: _Refusals,
+    read: bool,
+) -> jt.ServiceStress | None:
+    """R8's σ_red,B (:func:`engine.physics.joint.service_stress` of F_S,max and ``others``),
+    refused where it is 0 or a square in it overflows; None where it is not ``read``.
+
+    ``ends``: the least and the largest F_S,max of the points not refused, where nothing
+    reads σ_red,B and F_S,max is its only varied argument. σ_red,B grows with |F_S,max|
+    (σ_z = F_S/A_0, then squares and a root, every rounding monotone), so where both ends
+    have one sign and give a finite σ_red,B > 0, no point gives 0 or a square that
+    overflows: nothing is evaluated per point. Else, as for a single design, every point.
+    """
+    if ends is not None and (bool(np.all(ends > 0.0)) or bool(np.all(ends < 0.0))):
+        at_ends = jt.service_stress(ends, *others).equivalent
+        if bool(np.all((at_ends > 0.0) & (at_ends < math.inf))):
+            return None
+    stress = jt.service_stress(bolt_force, *others)
+    refusals.arithmetic(stress.equivalent == 0.0, "σ_red,B = 0")
+    refusals.arithmetic(
+        _overflows_squared(stress.axial)
+        | _overflows_squared(jt.TORSION_REDUCTION_IN_SERVICE * stress.torsional),
+        "σ_red,B overflows",
+    )
+    return stress if read else None
 
 
 #: The E(T) class a plate is read as from its own room-temperature E [Pa], where no material
@@ -1137,7 +1201,8 @@ def _solve(
         f_a_min,
         f_a,
     )
-    f_ka = jt.opening_clamp_force(f_a, k_ab)
+    # concentric (k_ab = 0): F_KA = 0 at every point, one number (F_A is finite and ≥ 0)
+    f_ka = jt.opening_clamp_force(f_a, k_ab) if eccentric else 0.0
     f_kerf = jt.required_clamp_force(f_kq, f_kp, f_ka)
 
     # R4 embedding --------------------------------------------------------------------------------
@@ -1221,7 +1286,18 @@ def _solve(
     if need("max_working_load"):
         fa_limit = jt.max_working_load(f_mzul, alpha_req, f_kerf_grip, loss, phi_n, k_ab, f_kp)
     fa_sep_any = jt.separation_load(f_mzul, loss, phi_n, k_ab) if full else nan
-    f_kr_raw = jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)  # a warning reads it
+    # the "joint opens" warning reads F_KR at every point; where nothing else does and F_A is
+    # its only varied argument, at the two ends of F_A alone (below, after the last refusal)
+    # F_A swept alone (every other argument of R5–R8 one number): F_KR, F_S,max and σ_red,B
+    # are monotone in F_A or in |F_S,max| (so is every rounding), and a decision that reads
+    # only their least or largest value (the warning, R8's refusals) reads them at the ends
+    # of F_A over the points not refused
+    f_a_alone = _varied_alone(
+        f_a, fm_min, fm_max, phi_n, f_z, th_loss, th_top, pitch, d2, d0, mu_g_lo
+    )
+    f_a_ends = _EndsOf(f_a, refusals)
+    f_kr_ends = f_a_alone and not need("residual_clamp_force_min", "slip_safety")
+    f_kr_raw: Any = None if f_kr_ends else jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)
     # a joint that opens has no clamp force left (the linear diagram's negative value is not
     # a force): F_KR,min and S_G are held at 0 there and the checks fail on the raw value
     f_kr_min = _larger(f_kr_raw, 0.0) if need("residual_clamp_force_min", "slip_safety") else nan
@@ -1240,14 +1316,16 @@ def _solve(
     # R8 working stress ---------------------------------------------------------------------------
     add_load = jt.additional_bolt_load(phi_n, f_a)
     f_s_max = jt.max_bolt_force(fm_max, add_load, th_top)
-    stress = jt.service_stress(f_s_max, fm_max, pitch, d2, d0, mu_g_lo)
-    refusals.arithmetic(stress.equivalent == 0.0, "σ_red,B = 0")
-    refusals.arithmetic(
-        _overflows_squared(stress.axial)
-        | _overflows_squared(jt.TORSION_REDUCTION_IN_SERVICE * stress.torsional),
-        "σ_red,B overflows",
+    read_stress = need("working_stress", "yield_safety")
+    force_ends: Any = None
+    if f_a_alone and not read_stress:
+        force_ends = jt.max_bolt_force(fm_max, jt.additional_bolt_load(phi_n, f_a_ends()), th_top)
+    stress = _working_stress(
+        f_s_max, force_ends, (fm_max, pitch, d2, d0, mu_g_lo), refusals, read_stress
     )
-    s_f = jt.yield_safety(yield_t, stress.equivalent) if need("yield_safety") else nan
+    s_f: Any = nan
+    if stress is not None and need("yield_safety"):
+        s_f = jt.yield_safety(yield_t, stress.equivalent)
     if full:
         checks["R8_working_stress"] = (True, s_f >= 1.0)
     if full and nut is not None:
@@ -1310,6 +1388,8 @@ def _solve(
     rule = _seed_004_rule(x, method, torque_given)
     if full:
         checks["seed_004_preload_stress"] = (True, ratio0 <= rule[1] + 1e-12)
+    if f_kr_ends:  # every refusal is made: the ends of F_A over the points not refused
+        f_kr_raw = jt.residual_clamp_force(fm_min, f_a_ends(), phi_n, f_z, th_loss)
 
     return {
         "tightening_factor": alpha_a,
@@ -1355,7 +1435,7 @@ def _solve(
         "separation_load": fa_sep,
         "max_working_load": fa_limit,
         "max_bolt_force": f_s_max,
-        "working_stress": stress.equivalent,
+        "working_stress": stress.equivalent if stress is not None else nan,
         "yield_safety": s_f,
         "stress_amplitude": sigma_a,
         "endurance_limit": sigma_as,
@@ -1384,6 +1464,7 @@ def _solve(
         "_mu": (mu_g_lo, mu_g_hi, mu_k_lo, mu_k_hi),
         "_m_u": m_u,
         "_f_kr_raw": f_kr_raw,
+        "_f_kr_ends": f_kr_ends,
         "_nut": (nut, f_nut, f_mzul_bolt, nut_limits),
     }
 
@@ -2535,7 +2616,7 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         for f in _BOLT_FIELDS
         for v in (getattr(resolved, f),)
     }
-    refused = ~resolved.ok
+    refused: Any = np.False_ if resolved.ok.all() else ~resolved.ok  # a mask only where needed
     b["_strength_class"] = _strength_class(x, bolts[0] if bolts else None)
     if x.get("nut") is not None:
         strengths = {k.tensile_strength for k in bolts} - {None}
@@ -2548,8 +2629,11 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     refusals = _Refusals(refused, many=True)
     # a sweep reads no check: the steps only they (and no asked output) read are left out
     s = _solve(x, col, b, refusals, None if ctx.checks else ctx.outputs)
-    refused = np.broadcast_to(refusals.mask, (n,))
-    if refused.all():
+    mask = refusals.mask
+    every_refused = bool(mask.all()) if isinstance(mask, np.ndarray) else bool(mask)
+    any_refused = bool(mask.any()) if isinstance(mask, np.ndarray) else every_refused
+    refused = np.broadcast_to(mask, (n,))
+    if every_refused:
         # alone, the first point says why it is refused (InputOutOfRange naming the field, or
         # the arithmetic); the caller then runs each point alone
         _compute({k: (v[0].item() if isinstance(v, np.ndarray) else v) for k, v in x.items()}, ctx)
@@ -2558,7 +2642,6 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     joint_type = str(x["joint_type"])
     d_w, d_h = b["bearing_outer_diameter"], b["hole_diameter"]
     fm_max, f_s_max = s["assembly_preload_max"], s["max_bolt_force"]
-    any_refused = bool(refused.any())
 
     def somewhere(condition: Any) -> bool:
         """Whether ``condition`` holds at a point not refused (some point is not)."""
@@ -2609,23 +2692,23 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
             nut_limit_warning(nut, None, None)
             + ", the preload window and the torque are built on it"
         )
-    if somewhere(s["_f_kr_raw"] < 0.0):
+    # F_KR at the ends of F_A over the points not refused (_solve), or at every point
+    opens = (
+        bool((s["_f_kr_raw"] < 0.0).any()) if s["_f_kr_ends"] else somewhere(s["_f_kr_raw"] < 0.0)
+    )
+    if opens:
         warnings.append(
             "the joint opens at some points (F_A above the separation load at F_M,min): "
             "residual_clamp_force_min and slip_safety are 0 there"
         )
 
-    # what the runner makes of a non-finite value (null) and of a refused point (all null),
-    # for the outputs asked for only: each is a pass over the points
-    asked = [name for name in _SCALARS if name in ctx.outputs]
-    table = np.empty((len(asked), n))
-    for row, name in zip(table, asked, strict=True):
-        row[...] = s[name]
-    if not np.isfinite(np.add.reduce(table, axis=None)):  # a NaN or inf somewhere
-        table[~np.isfinite(table)] = np.nan
-    if any_refused:
-        table[:, refused] = np.nan
-    values: dict[str, Any] = dict(zip(asked, table, strict=True))
+    values: dict[str, Any] = _output_columns(
+        s,
+        [name for name in _SCALARS if name in ctx.outputs],
+        n,
+        refused if any_refused else None,
+        (*x.values(), *b.values()),
+    )
     verdicts: dict[str, Any] = {}
     if ctx.checks:  # a sweep reads none of them
         verdicts = {
@@ -2649,6 +2732,43 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         warnings=warnings,
         check_arrays=reported,
     )
+
+
+def _output_columns(
+    s: Mapping[str, Any],
+    asked: list[str],
+    n: int,
+    refused: np.ndarray | None,
+    foreign: tuple[Any, ...],
+) -> dict[str, np.ndarray]:
+    """The ``asked`` outputs of the solved joint ``s`` as float columns of ``n`` points, each
+    its own: null (NaN) where not finite, as the runner makes a non-finite value, and at
+    the ``refused`` points. An array the procedure made for this request is written in
+    place; a number, an input or bolt value (``foreign``) or a column given already is
+    copied first."""
+    taken = {id(v) for v in foreign if isinstance(v, np.ndarray)}
+    out: dict[str, np.ndarray] = {}
+    for name in asked:
+        value = s[name]
+        if (
+            isinstance(value, np.ndarray)
+            and value.shape == (n,)
+            and value.dtype == np.float64
+            and value.flags.owndata
+            and value.flags.writeable
+            and id(value) not in taken
+        ):
+            column = value
+        else:
+            column = np.empty(n)
+            column[...] = value
+        taken.add(id(column))
+        if not np.isfinite(np.add.reduce(column)):  # a NaN or inf somewhere: one pass to find
+            column[~np.isfinite(column)] = np.nan
+        if refused is not None:
+            column[refused] = np.nan
+        out[name] = column
+    return out
 
 
 def _scalar_hooks(x: Mapping[str, Any], solution: JointSolution) -> tuple[list[Check], list[str]]:
