@@ -2734,6 +2734,11 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     )
 
 
+#: Points from which an output array is written in place rather than copied: below, the copy
+#: of a column costs less than the calls that test and write it alone.
+IN_PLACE_FROM = 8192
+
+
 def _output_columns(
     s: Mapping[str, Any],
     asked: list[str],
@@ -2741,34 +2746,41 @@ def _output_columns(
     refused: np.ndarray | None,
     foreign: tuple[Any, ...],
 ) -> dict[str, np.ndarray]:
-    """The ``asked`` outputs of the solved joint ``s`` as float columns of ``n`` points, each
-    its own: null (NaN) where not finite, as the runner makes a non-finite value, and at
-    the ``refused`` points. An array the procedure made for this request is written in
-    place; a number, an input or bolt value (``foreign``) or a column given already is
-    copied first."""
-    taken = {id(v) for v in foreign if isinstance(v, np.ndarray)}
-    out: dict[str, np.ndarray] = {}
-    for name in asked:
-        value = s[name]
-        if (
-            isinstance(value, np.ndarray)
-            and value.shape == (n,)
-            and value.dtype == np.float64
-            and value.flags.owndata
-            and value.flags.writeable
-            and id(value) not in taken
-        ):
-            column = value
-        else:
-            column = np.empty(n)
-            column[...] = value
-        taken.add(id(column))
-        if not np.isfinite(np.add.reduce(column)):  # a NaN or inf somewhere: one pass to find
+    """The ``asked`` outputs of the solved joint ``s`` as float columns of ``n`` points: null
+    (NaN) where not finite, as the runner makes a non-finite value, and at the ``refused``
+    points. From :data:`IN_PLACE_FROM` points on, an array the procedure made for this
+    request is written in place; the rest (a number, an input or bolt value in ``foreign``,
+    a column given already) is copied into one table, each a row, tested for a non-finite
+    value in one pass."""
+    made: dict[str, np.ndarray] = {}
+    if n >= IN_PLACE_FROM:
+        taken = {id(v) for v in foreign if isinstance(v, np.ndarray)}
+        for name in asked:
+            value = s[name]
+            if (
+                isinstance(value, np.ndarray)
+                and value.shape == (n,)
+                and value.dtype == np.float64
+                and value.flags.owndata
+                and value.flags.writeable
+                and id(value) not in taken
+            ):
+                made[name] = value
+                taken.add(id(value))
+    rest = [name for name in asked if name not in made]
+    columns = [*made.values()]
+    if rest:
+        table = np.empty((len(rest), n))
+        for row, name in zip(table, rest, strict=True):
+            row[...] = s[name]
+        columns.append(table)
+    for column in columns:
+        if not np.isfinite(np.add.reduce(column, axis=None)):  # a NaN or inf: one pass to find
             column[~np.isfinite(column)] = np.nan
         if refused is not None:
-            column[refused] = np.nan
-        out[name] = column
-    return out
+            column[..., refused] = np.nan
+    given = {**made, **(dict(zip(rest, table, strict=True)) if rest else {})}
+    return {name: given[name] for name in asked}
 
 
 def _scalar_hooks(x: Mapping[str, Any], solution: JointSolution) -> tuple[list[Check], list[str]]:

@@ -524,12 +524,18 @@ FLOOR_OUTPUTS = ("additional_bolt_load", "required_preload_min", "max_bolt_force
 )
 @pytest.mark.parametrize("asked", [FLOOR_OUTPUTS, ("working_stress",), ("slip_safety",)])
 def test_a_sweep_of_the_working_load_refuses_and_warns_as_single_runs(
-    given: dict[str, float], high: float, refused: int, opens: bool, asked: tuple[str, ...]
+    given: dict[str, float],
+    high: float,
+    refused: int,
+    opens: bool,
+    asked: tuple[str, ...],
+    monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     """F_A swept alone: where no asked output reads σ_red,B or F_KR per point, R8's refusals
     and the "joint opens" warning are decided at the ends of F_A over the points not refused;
     the refused points, the nulls, every value (bit for bit) and the warning are those of
-    single runs of the same points."""
+    single runs of the same points (the columns written in place, as from 8192 points on)."""
+    monkeypatch.setattr(joint_model, "IN_PLACE_FROM", 1)
     base = {**JOINT.examples[0], **given}
     values = np.linspace(0.0, high, 31)
     got = sweep(JOINT, base, "working_load", list(values), outputs=asked, budget_s=None)
@@ -553,10 +559,13 @@ def test_a_sweep_of_the_working_load_refuses_and_warns_as_single_runs(
     assert any(w.startswith("the joint opens at some points") for w in got.warnings) == opens
 
 
-def test_an_output_that_is_a_swept_input_leaves_the_input_intact() -> None:
+def test_an_output_that_is_a_swept_input_leaves_the_input_intact(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
     """The array path writes null into the columns it made itself, never into an input:
     M_A is its own output where it is given, and the points whose torque the prevailing
     torque eats (30 and 40 N·m against 40 N·m) are null in the output, not in the values."""
+    monkeypatch.setattr(joint_model, "IN_PLACE_FROM", 1)  # as from 8192 points on
     base = {**JOINT.examples[0], "working_load": 0.0, "prevailing_torque": 40.0}
     base["tightening_torque"] = 80.0
     values = [30.0, 40.0, 50.0, 120.0]
