@@ -605,6 +605,8 @@ class JointSolution(NamedTuple):
     nut_outer_diameter: float | None = None
 
 
+_INPUTS_BY_NAME = {p.name: p for p in JOINT_INPUTS}
+
 #: Each plate's input names: (number, thickness, E, α, D_A), plate 1 first.
 _PLATE_FIELDS = tuple(
     (
@@ -775,36 +777,82 @@ def _varied_alone(value: Any, *others: Any) -> bool:
     return isinstance(value, np.ndarray) and not any(isinstance(o, np.ndarray) for o in others)
 
 
-class _EndsOf:
-    """The smallest and the largest of a varied input at the points not refused (so far),
-    taken once per mask: every such value where one is NaN (a NaN is neither), none where
-    every point is refused."""
+def _declared(name: str) -> tuple[float, float]:
+    """The least and the largest value input ``name`` is declared to take (±inf where
+    open): the runner and the study pass no value outside it."""
+    param = _INPUTS_BY_NAME[name]
+    low = -math.inf if param.minimum is None else float(param.minimum)
+    return low, math.inf if param.maximum is None else float(param.maximum)
 
-    __slots__ = ("refusals", "taken", "values")
 
-    def __init__(self, values: Any, refusals: _Refusals) -> None:
+def _exceeds(value: Any, varied: Any, name: str) -> Any:
+    """``value > varied`` at each point, ``varied`` being input ``name``; False without a
+    pass over the points where ``value`` is one number not above its declared least."""
+    if _varied_alone(varied, value) and value <= _declared(name)[0]:
+        return False
+    return value > varied
+
+
+class _Extremes:
+    """A varied input's range: as declared (no pass over the points), or its least and
+    largest value at the points not refused so far (one pass each, once per mask; NaN
+    where a value is NaN or every point is refused)."""
+
+    __slots__ = ("name", "refusals", "seen", "values")
+
+    def __init__(self, values: Any, name: str, refusals: _Refusals) -> None:
         self.values = values
+        self.name = name
         self.refusals = refusals
-        self.taken: tuple[Any, np.ndarray] | None = None  # the mask they were taken under
+        self.seen: dict[str, tuple[Any, float]] = {}  # "min"/"max": (mask, value)
 
-    def __call__(self) -> Any:
+    def declared(self) -> np.ndarray:
+        return np.array(_declared(self.name))
+
+    def points(self) -> Any:
+        """The values at the points not refused."""
         mask = self.refusals.mask
-        if self.taken is None or self.taken[0] is not mask:
-            values = self.values
-            if isinstance(mask, np.ndarray):
-                values = values[~mask]
-            elif mask:
-                values = values[:0]
-            if values.size:
-                lo, hi = values.min(), values.max()
-                values = values if lo != lo or hi != hi else np.array([lo, hi])
-            self.taken = (mask, values)
-        return self.taken[1]
+        if isinstance(mask, np.ndarray):
+            return self.values[~mask]
+        return self.values[:0] if mask else self.values
+
+    def _end(self, which: str) -> float:
+        mask = self.refusals.mask
+        seen = self.seen.get(which)
+        if seen is None or seen[0] is not mask:
+            values = self.points()
+            end = float(getattr(values, which)()) if values.size else math.nan
+            self.seen[which] = seen = (mask, end)
+        return seen[1]
+
+    def low(self) -> float:
+        return self._end("min")
+
+    def high(self) -> float:
+        return self._end("max")
+
+
+def _least_clamp_force(f_kr: Callable[[Any], Any], loads: _Extremes) -> Any:
+    """F_KR (``f_kr`` of F_A) where it is least among the points not refused, F_A swept alone.
+
+    F_KR is monotone in F_A (every rounding too): where it is ≥ 0 at both ends of F_A's
+    declared range, no point has opened; else it is least at the largest F_A where it falls
+    with F_A, at the least where it rises (both where that is not told), and at every point
+    where a value of F_A is NaN.
+    """
+    bounds = f_kr(loads.declared())
+    if bool(np.all(bounds >= 0.0)):
+        return bounds
+    falls, rises = bounds[1] <= bounds[0], bounds[1] > bounds[0]
+    ends = [end for end, read in ((loads.low(), not falls), (loads.high(), not rises)) if read]
+    if any(end != end for end in ends):
+        return f_kr(loads.points())
+    return f_kr(np.array(ends))
 
 
 def _working_stress(
     bolt_force: Any,
-    ends: Any,
+    ranges: tuple[Callable[[], Any], ...],
     others: tuple[Any, ...],
     refusals: _Refusals,
     read: bool,
@@ -812,16 +860,19 @@ def _working_stress(
     """R8's σ_red,B (:func:`engine.physics.joint.service_stress` of F_S,max and ``others``),
     refused where it is 0 or a square in it overflows; None where it is not ``read``.
 
-    ``ends``: the least and the largest F_S,max of the points not refused, where nothing
-    reads σ_red,B and F_S,max is its only varied argument. σ_red,B grows with |F_S,max|
-    (σ_z = F_S/A_0, then squares and a root, every rounding monotone), so where both ends
-    have one sign and give a finite σ_red,B > 0, no point gives 0 or a square that
-    overflows: nothing is evaluated per point. Else, as for a single design, every point.
+    ``ranges``: ways to a least and a largest F_S,max that bound those of the points not
+    refused, cheapest first, where nothing reads σ_red,B and F_S,max is its only varied
+    argument. σ_red,B grows with |F_S,max| (σ_z = F_S/A_0, then squares and a root, every
+    rounding monotone), so where both ends have one sign and give a finite σ_red,B > 0, no
+    point gives 0 or a square that overflows: nothing is evaluated per point. Else, as for
+    a single design, every point.
     """
-    if ends is not None and (bool(np.all(ends > 0.0)) or bool(np.all(ends < 0.0))):
-        at_ends = jt.service_stress(ends, *others).equivalent
-        if bool(np.all((at_ends > 0.0) & (at_ends < math.inf))):
-            return None
+    for ends_of in ranges:
+        ends = ends_of()
+        if bool(np.all(ends > 0.0)) or bool(np.all(ends < 0.0)):
+            at_ends = jt.service_stress(ends, *others).equivalent
+            if bool(np.all((at_ends > 0.0) & (at_ends < math.inf))):
+                return None
     stress = jt.service_stress(bolt_force, *others)
     refusals.arithmetic(stress.equivalent == 0.0, "σ_red,B = 0")
     refusals.arithmetic(
@@ -1195,7 +1246,7 @@ def _solve(
     f_a = col("working_load")
     f_a_min = col_or("working_load_min", f_a)
     refusals.add(
-        f_a_min > f_a,
+        _exceeds(f_a_min, f_a, "working_load"),
         "working_load_min",
         "working_load_min = {0:g} N exceeds working_load = {1:g} N: must be ≤ {1:g} N".format,
         f_a_min,
@@ -1295,7 +1346,7 @@ def _solve(
     f_a_alone = _varied_alone(
         f_a, fm_min, fm_max, phi_n, f_z, th_loss, th_top, pitch, d2, d0, mu_g_lo
     )
-    f_a_ends = _EndsOf(f_a, refusals)
+    f_a_range = _Extremes(f_a, "working_load", refusals)
     f_kr_ends = f_a_alone and not need("residual_clamp_force_min", "slip_safety")
     f_kr_raw: Any = None if f_kr_ends else jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)
     # a joint that opens has no clamp force left (the linear diagram's negative value is not
@@ -1317,11 +1368,20 @@ def _solve(
     add_load = jt.additional_bolt_load(phi_n, f_a)
     f_s_max = jt.max_bolt_force(fm_max, add_load, th_top)
     read_stress = need("working_stress", "yield_safety")
-    force_ends: Any = None
-    if f_a_alone and not read_stress:
-        force_ends = jt.max_bolt_force(fm_max, jt.additional_bolt_load(phi_n, f_a_ends()), th_top)
+    force_ranges: tuple[Callable[[], Any], ...] = ()
+    if f_a_alone and not read_stress:  # F_S,max over F_A's declared range, else the points'
+
+        def force_at(loads: Callable[[], Any]) -> Callable[[], Any]:
+            return lambda: jt.max_bolt_force(
+                fm_max, jt.additional_bolt_load(phi_n, loads()), th_top
+            )
+
+        force_ranges = (
+            force_at(f_a_range.declared),
+            force_at(lambda: np.array([f_a_range.low(), f_a_range.high()])),
+        )
     stress = _working_stress(
-        f_s_max, force_ends, (fm_max, pitch, d2, d0, mu_g_lo), refusals, read_stress
+        f_s_max, force_ranges, (fm_max, pitch, d2, d0, mu_g_lo), refusals, read_stress
     )
     s_f: Any = nan
     if stress is not None and need("yield_safety"):
@@ -1388,8 +1448,10 @@ def _solve(
     rule = _seed_004_rule(x, method, torque_given)
     if full:
         checks["seed_004_preload_stress"] = (True, ratio0 <= rule[1] + 1e-12)
-    if f_kr_ends:  # every refusal is made: the ends of F_A over the points not refused
-        f_kr_raw = jt.residual_clamp_force(fm_min, f_a_ends(), phi_n, f_z, th_loss)
+    if f_kr_ends:  # every refusal is made
+        f_kr_raw = _least_clamp_force(
+            lambda loads: jt.residual_clamp_force(fm_min, loads, phi_n, f_z, th_loss), f_a_range
+        )
 
     return {
         "tightening_factor": alpha_a,
