@@ -2729,6 +2729,8 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         bolt = resolved.at(j)
 
         def at(value: Any) -> float:
+            if not isinstance(value, np.ndarray) or value.ndim == 0:
+                return float(value)
             return float(np.broadcast_to(value, (n,))[j])
 
         solution = JointSolution(

@@ -679,7 +679,13 @@ class BoltArrays:
             return bolt
         n = self.ok.size
         numbers: dict[str, Any] = {
-            f: None if v is None else float(np.broadcast_to(v, (n,))[j])
+            f: (
+                None
+                if v is None
+                else float(v)
+                if not isinstance(v, np.ndarray) or v.ndim == 0
+                else float(np.broadcast_to(v, (n,))[j])
+            )
             for f in _NUMBER_FIELDS
             for v in (getattr(self, f),)
         }
