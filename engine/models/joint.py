@@ -850,37 +850,23 @@ def _least_clamp_force(f_kr: Callable[[Any], Any], loads: _Extremes) -> Any:
     return f_kr(np.array(ends))
 
 
-def _working_stress(
-    bolt_force: Any,
-    ranges: tuple[Callable[[], Any], ...],
-    others: tuple[Any, ...],
-    refusals: _Refusals,
-    read: bool,
-) -> jt.ServiceStress | None:
-    """R8's σ_red,B (:func:`engine.physics.joint.service_stress` of F_S,max and ``others``),
-    refused where it is 0 or a square in it overflows; None where it is not ``read``.
+def _no_stress_refusal(ranges: tuple[Callable[[], Any], ...], others: tuple[Any, ...]) -> bool:
+    """Whether R8 refuses no point for σ_red,B (:func:`engine.physics.joint.service_stress` of
+    F_S,max and ``others``), told without a pass over the points.
 
     ``ranges``: ways to a least and a largest F_S,max that bound those of the points not
     refused, cheapest first, where nothing reads σ_red,B and F_S,max is its only varied
     argument. σ_red,B grows with |F_S,max| (σ_z = F_S/A_0, then squares and a root, every
     rounding monotone), so where both ends have one sign and give a finite σ_red,B > 0, no
-    point gives 0 or a square that overflows: nothing is evaluated per point. Else, as for
-    a single design, every point.
+    point gives 0 or a square that overflows. False where no range tells it.
     """
     for ends_of in ranges:
         ends = ends_of()
         if bool(np.all(ends > 0.0)) or bool(np.all(ends < 0.0)):
             at_ends = jt.service_stress(ends, *others).equivalent
             if bool(np.all((at_ends > 0.0) & (at_ends < math.inf))):
-                return None
-    stress = jt.service_stress(bolt_force, *others)
-    refusals.arithmetic(stress.equivalent == 0.0, "σ_red,B = 0")
-    refusals.arithmetic(
-        _overflows_squared(stress.axial)
-        | _overflows_squared(jt.TORSION_REDUCTION_IN_SERVICE * stress.torsional),
-        "σ_red,B overflows",
-    )
-    return stress if read else None
+                return True
+    return False
 
 
 #: The E(T) class a plate is read as from its own room-temperature E [Pa], where no material
@@ -1380,9 +1366,15 @@ def _solve(
             force_at(f_a_range.declared),
             force_at(lambda: np.array([f_a_range.low(), f_a_range.high()])),
         )
-    stress = _working_stress(
-        f_s_max, force_ranges, (fm_max, pitch, d2, d0, mu_g_lo), refusals, read_stress
-    )
+    stress: Any = None
+    if read_stress or not _no_stress_refusal(force_ranges, (fm_max, pitch, d2, d0, mu_g_lo)):
+        stress = jt.service_stress(f_s_max, fm_max, pitch, d2, d0, mu_g_lo)
+        refusals.arithmetic(stress.equivalent == 0.0, "σ_red,B = 0")
+        refusals.arithmetic(
+            _overflows_squared(stress.axial)
+            | _overflows_squared(jt.TORSION_REDUCTION_IN_SERVICE * stress.torsional),
+            "σ_red,B overflows",
+        )
     s_f: Any = nan
     if stress is not None and need("yield_safety"):
         s_f = jt.yield_safety(yield_t, stress.equivalent)
