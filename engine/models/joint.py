@@ -2545,7 +2545,7 @@ def _vector_hook_checks(
     col: Callable[[str], np.ndarray],
     bolts: list[Bolt],
     index: np.ndarray,
-    ok: np.ndarray,
+    ok: np.ndarray | None,
     bearing: Any,
     hole: Any,
     fm_max: Any,
@@ -2560,7 +2560,8 @@ def _vector_hook_checks(
     and its refusals; the verdicts are then the same comparisons as
     :func:`engine.procedures.bolt.bought_part_checks`, on arrays. A check name this does
     not know raises TypeError (the caller loops instead). Without ``verdicts`` (a sweep
-    reads no check) only the notes are made.
+    reads no check) only the notes are made. ``ok``: the points not refused (None: every
+    point).
     """
     n = index.size
     out: dict[str, np.ndarray] = {}
@@ -2577,10 +2578,12 @@ def _vector_hook_checks(
         tau = np.full(n, fa.material(str(x["internal_thread_material"])).shear_strength)
     for k, bolt in enumerate(bolts):
         # one bolt: the index is 0 wherever the bolt resolved, and ok is within that
-        sel = ok if len(bolts) == 1 else ok & (index == k)
-        if not sel.any():
+        sel: Any = ok if len(bolts) == 1 else index == k if ok is None else ok & (index == k)
+        if sel is None:  # one bolt, every point
+            sel = slice(None)
+        elif not sel.any():
             continue
-        checks, said = probe(int(np.argmax(sel)))  # the first point of this bolt
+        checks, said = probe(0 if type(sel) is slice else int(np.argmax(sel)))  # its first point
         notes += [s for s in said if s not in notes]
         if not verdicts:
             continue
@@ -2738,7 +2741,17 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         return _scalar_hooks(point, solution)
 
     hook_checks, hook_notes = _vector_hook_checks(
-        x, col, bolts, bolt_index, ~refused, d_w, d_h, fm_max, f_s_max, probe, ctx.checks
+        x,
+        col,
+        bolts,
+        bolt_index,
+        ~refused if any_refused else None,
+        d_w,
+        d_h,
+        fm_max,
+        f_s_max,
+        probe,
+        ctx.checks,
     )
     notes += hook_notes
     notes.append(MODEL_FORM_NOTE)
