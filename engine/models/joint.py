@@ -788,7 +788,7 @@ def _declared(name: str) -> tuple[float, float]:
 def _exceeds(value: Any, varied: Any, name: str) -> Any:
     """``value > varied`` at each point, ``varied`` being input ``name``; False without a
     pass over the points where ``value`` is one number not above its declared least."""
-    if _varied_alone(varied, value) and value <= _declared(name)[0]:
+    if type(varied) is not float and _varied_alone(varied, value) and value <= _declared(name)[0]:
         return False
     return value > varied
 
@@ -1329,15 +1329,16 @@ def _solve(
     # are monotone in F_A or in |F_S,max| (so is every rounding), and a decision that reads
     # only their least or largest value (the warning, R8's refusals) reads them at the ends
     # of F_A over the points not refused
-    f_a_alone = _varied_alone(
+    f_a_alone = type(f_a) is not float and _varied_alone(
         f_a, fm_min, fm_max, phi_n, f_z, th_loss, th_top, pitch, d2, d0, mu_g_lo
     )
-    f_a_range = _Extremes(f_a, "working_load", refusals)
-    f_kr_ends = f_a_alone and not need("residual_clamp_force_min", "slip_safety")
+    f_a_range: Any = _Extremes(f_a, "working_load", refusals) if f_a_alone else None
+    read_kr = need("residual_clamp_force_min", "slip_safety")
+    f_kr_ends = f_a_alone and not read_kr
     f_kr_raw: Any = None if f_kr_ends else jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)
     # a joint that opens has no clamp force left (the linear diagram's negative value is not
     # a force): F_KR,min and S_G are held at 0 there and the checks fail on the raw value
-    f_kr_min = _larger(f_kr_raw, 0.0) if need("residual_clamp_force_min", "slip_safety") else nan
+    f_kr_min = _larger(f_kr_raw, 0.0) if read_kr else nan
     fa_sep = jt.separation_load(fm_min, loss, phi_n, k_ab) if need("separation_load") else nan
     checks: dict[str, tuple[Any, Any]] = {}
     if full:
@@ -1973,11 +1974,14 @@ def _series(ctx: RunContext, s: Mapping[str, Any], x: Mapping[str, Any]) -> dict
         top = top if top > 0.0 else f_mzul
         loads = [top * i / 40 for i in range(41)]
         f_kerf, th_loss = s["required_clamp_force"], s["thermal_loss"]
-        req = [jt.minimum_assembly_preload(f_kerf, a, phi_n, f_z, th_loss) for a in loads]
+        # R5 and R6 over the 41 loads at once (the same operations on each, as floats)
+        grid: Any = np.array(loads)
+        req: Any = jt.minimum_assembly_preload(f_kerf, grid, phi_n, f_z, th_loss)
+        req_max: Any = jt.required_preload_max(s["_alpha_req"], req)
         series.update(
             window_working_load=loads,
-            window_required_min=req,
-            window_required_max=[jt.required_preload_max(s["_alpha_req"], r) for r in req],
+            window_required_min=req.tolist(),
+            window_required_max=req_max.tolist(),
             window_permissible=[f_mzul] * len(loads),
             window_assembly_min=[fm_min] * len(loads),
             window_assembly_max=[fm_max] * len(loads),
