@@ -605,6 +605,8 @@ class JointSolution(NamedTuple):
     nut_outer_diameter: float | None = None
 
 
+_INPUTS_BY_NAME = {p.name: p for p in JOINT_INPUTS}
+
 #: Each plate's input names: (number, thickness, E, α, D_A), plate 1 first.
 _PLATE_FIELDS = tuple(
     (
@@ -660,20 +662,22 @@ class _Refusals:
         """Refuse where ``where`` holds, naming ``field`` and the allowed range
         (``message(*args)``: made only when one design is refused)."""
         if self.many:
-            # a condition on fixed inputs alone is one value: where it refuses nothing the
-            # mask stays as it is, without a pass over the points
-            if isinstance(where, np.ndarray) or where:
-                self.mask = self.mask | where
+            self._mask(where)
         elif where:
             raise InputOutOfRange(message(*args), field=field)
 
     def arithmetic(self, where: Any, what: str) -> None:
         """Refuse where the arithmetic fails (alone: as Python's float arithmetic does)."""
         if self.many:
-            if isinstance(where, np.ndarray) or where:
-                self.mask = self.mask | where
+            self._mask(where)
         elif where:
             raise ZeroDivisionError(what)
+
+    def _mask(self, where: Any) -> None:
+        # a condition that refuses nothing (a fixed input's one value, or no point of a
+        # varied one) leaves the mask as it is: no new mask of the points is made
+        if where.any() if isinstance(where, np.ndarray) else where:
+            self.mask = self.mask | where
 
 
 _TOO_WIDE = "{0} = {1:g} mm exceeds the thread diameter d = {2:g} mm: must be ≤ {2:g} mm"
@@ -766,6 +770,103 @@ def _overflows_squared(value: Any) -> Any:
             return False  # no square is inf (nor NaN): none overflows, found in one pass
         return np.isfinite(value) & ~np.isfinite(square)
     return False  # a float that overflows has raised OverflowError already
+
+
+def _varied_alone(value: Any, *others: Any) -> bool:
+    """Whether ``value`` is an array (many points) and none of ``others`` is."""
+    return isinstance(value, np.ndarray) and not any(isinstance(o, np.ndarray) for o in others)
+
+
+def _declared(name: str) -> tuple[float, float]:
+    """The least and the largest value input ``name`` is declared to take (±inf where
+    open): the runner and the study pass no value outside it."""
+    param = _INPUTS_BY_NAME[name]
+    low = -math.inf if param.minimum is None else float(param.minimum)
+    return low, math.inf if param.maximum is None else float(param.maximum)
+
+
+def _exceeds(value: Any, varied: Any, name: str) -> Any:
+    """``value > varied`` at each point, ``varied`` being input ``name``; False without a
+    pass over the points where ``value`` is one number not above its declared least."""
+    if type(varied) is not float and _varied_alone(varied, value) and value <= _declared(name)[0]:
+        return False
+    return value > varied
+
+
+class _Extremes:
+    """A varied input's range: as declared (no pass over the points), or its least and
+    largest value at the points not refused so far (one pass each, once per mask; NaN
+    where a value is NaN or every point is refused)."""
+
+    __slots__ = ("name", "refusals", "seen", "values")
+
+    def __init__(self, values: Any, name: str, refusals: _Refusals) -> None:
+        self.values = values
+        self.name = name
+        self.refusals = refusals
+        self.seen: dict[str, tuple[Any, float]] = {}  # "min"/"max": (mask, value)
+
+    def declared(self) -> np.ndarray:
+        return np.array(_declared(self.name))
+
+    def points(self) -> Any:
+        """The values at the points not refused."""
+        mask = self.refusals.mask
+        if isinstance(mask, np.ndarray):
+            return self.values[~mask]
+        return self.values[:0] if mask else self.values
+
+    def _end(self, which: str) -> float:
+        mask = self.refusals.mask
+        seen = self.seen.get(which)
+        if seen is None or seen[0] is not mask:
+            values = self.points()
+            end = float(getattr(values, which)()) if values.size else math.nan
+            self.seen[which] = seen = (mask, end)
+        return seen[1]
+
+    def low(self) -> float:
+        return self._end("min")
+
+    def high(self) -> float:
+        return self._end("max")
+
+
+def _least_clamp_force(f_kr: Callable[[Any], Any], loads: _Extremes) -> Any:
+    """F_KR (``f_kr`` of F_A) where it is least among the points not refused, F_A swept alone.
+
+    F_KR is monotone in F_A (every rounding too): where it is ≥ 0 at both ends of F_A's
+    declared range, no point has opened; else it is least at the largest F_A where it falls
+    with F_A, at the least where it rises (both where that is not told), and at every point
+    where a value of F_A is NaN.
+    """
+    bounds = f_kr(loads.declared())
+    if bool(np.all(bounds >= 0.0)):
+        return bounds
+    falls, rises = bounds[1] <= bounds[0], bounds[1] > bounds[0]
+    ends = [end for end, read in ((loads.low(), not falls), (loads.high(), not rises)) if read]
+    if any(end != end for end in ends):
+        return f_kr(loads.points())
+    return f_kr(np.array(ends))
+
+
+def _no_stress_refusal(ranges: tuple[Callable[[], Any], ...], others: tuple[Any, ...]) -> bool:
+    """Whether R8 refuses no point for σ_red,B (:func:`engine.physics.joint.service_stress` of
+    F_S,max and ``others``), told without a pass over the points.
+
+    ``ranges``: ways to a least and a largest F_S,max that bound those of the points not
+    refused, cheapest first, where nothing reads σ_red,B and F_S,max is its only varied
+    argument. σ_red,B grows with |F_S,max| (σ_z = F_S/A_0, then squares and a root, every
+    rounding monotone), so where both ends have one sign and give a finite σ_red,B > 0, no
+    point gives 0 or a square that overflows. False where no range tells it.
+    """
+    for ends_of in ranges:
+        ends = ends_of()
+        if bool(np.all(ends > 0.0)) or bool(np.all(ends < 0.0)):
+            at_ends = jt.service_stress(ends, *others).equivalent
+            if bool(np.all((at_ends > 0.0) & (at_ends < math.inf))):
+                return True
+    return False
 
 
 #: The E(T) class a plate is read as from its own room-temperature E [Pa], where no material
@@ -1131,13 +1232,14 @@ def _solve(
     f_a = col("working_load")
     f_a_min = col_or("working_load_min", f_a)
     refusals.add(
-        f_a_min > f_a,
+        _exceeds(f_a_min, f_a, "working_load"),
         "working_load_min",
         "working_load_min = {0:g} N exceeds working_load = {1:g} N: must be ≤ {1:g} N".format,
         f_a_min,
         f_a,
     )
-    f_ka = jt.opening_clamp_force(f_a, k_ab)
+    # concentric (k_ab = 0): F_KA = 0 at every point, one number (F_A is finite and ≥ 0)
+    f_ka = jt.opening_clamp_force(f_a, k_ab) if eccentric else 0.0
     f_kerf = jt.required_clamp_force(f_kq, f_kp, f_ka)
 
     # R4 embedding --------------------------------------------------------------------------------
@@ -1221,10 +1323,22 @@ def _solve(
     if need("max_working_load"):
         fa_limit = jt.max_working_load(f_mzul, alpha_req, f_kerf_grip, loss, phi_n, k_ab, f_kp)
     fa_sep_any = jt.separation_load(f_mzul, loss, phi_n, k_ab) if full else nan
-    f_kr_raw = jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)  # a warning reads it
+    # the "joint opens" warning reads F_KR at every point; where nothing else does and F_A is
+    # its only varied argument, at the two ends of F_A alone (below, after the last refusal)
+    # F_A swept alone (every other argument of R5–R8 one number): F_KR, F_S,max and σ_red,B
+    # are monotone in F_A or in |F_S,max| (so is every rounding), and a decision that reads
+    # only their least or largest value (the warning, R8's refusals) reads them at the ends
+    # of F_A over the points not refused
+    f_a_alone = type(f_a) is not float and _varied_alone(
+        f_a, fm_min, fm_max, phi_n, f_z, th_loss, th_top, pitch, d2, d0, mu_g_lo
+    )
+    f_a_range: Any = _Extremes(f_a, "working_load", refusals) if f_a_alone else None
+    read_kr = need("residual_clamp_force_min", "slip_safety")
+    f_kr_ends = f_a_alone and not read_kr
+    f_kr_raw: Any = None if f_kr_ends else jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)
     # a joint that opens has no clamp force left (the linear diagram's negative value is not
     # a force): F_KR,min and S_G are held at 0 there and the checks fail on the raw value
-    f_kr_min = _larger(f_kr_raw, 0.0) if need("residual_clamp_force_min", "slip_safety") else nan
+    f_kr_min = _larger(f_kr_raw, 0.0) if read_kr else nan
     fa_sep = jt.separation_load(fm_min, loss, phi_n, k_ab) if need("separation_load") else nan
     checks: dict[str, tuple[Any, Any]] = {}
     if full:
@@ -1240,14 +1354,31 @@ def _solve(
     # R8 working stress ---------------------------------------------------------------------------
     add_load = jt.additional_bolt_load(phi_n, f_a)
     f_s_max = jt.max_bolt_force(fm_max, add_load, th_top)
-    stress = jt.service_stress(f_s_max, fm_max, pitch, d2, d0, mu_g_lo)
-    refusals.arithmetic(stress.equivalent == 0.0, "σ_red,B = 0")
-    refusals.arithmetic(
-        _overflows_squared(stress.axial)
-        | _overflows_squared(jt.TORSION_REDUCTION_IN_SERVICE * stress.torsional),
-        "σ_red,B overflows",
-    )
-    s_f = jt.yield_safety(yield_t, stress.equivalent) if need("yield_safety") else nan
+    read_stress = need("working_stress", "yield_safety")
+    force_ranges: tuple[Callable[[], Any], ...] = ()
+    if f_a_alone and not read_stress:  # F_S,max over F_A's declared range, else the points'
+
+        def force_at(loads: Callable[[], Any]) -> Callable[[], Any]:
+            return lambda: jt.max_bolt_force(
+                fm_max, jt.additional_bolt_load(phi_n, loads()), th_top
+            )
+
+        force_ranges = (
+            force_at(f_a_range.declared),
+            force_at(lambda: np.array([f_a_range.low(), f_a_range.high()])),
+        )
+    stress: Any = None
+    if read_stress or not _no_stress_refusal(force_ranges, (fm_max, pitch, d2, d0, mu_g_lo)):
+        stress = jt.service_stress(f_s_max, fm_max, pitch, d2, d0, mu_g_lo)
+        refusals.arithmetic(stress.equivalent == 0.0, "σ_red,B = 0")
+        refusals.arithmetic(
+            _overflows_squared(stress.axial)
+            | _overflows_squared(jt.TORSION_REDUCTION_IN_SERVICE * stress.torsional),
+            "σ_red,B overflows",
+        )
+    s_f: Any = nan
+    if stress is not None and need("yield_safety"):
+        s_f = jt.yield_safety(yield_t, stress.equivalent)
     if full:
         checks["R8_working_stress"] = (True, s_f >= 1.0)
     if full and nut is not None:
@@ -1310,6 +1441,10 @@ def _solve(
     rule = _seed_004_rule(x, method, torque_given)
     if full:
         checks["seed_004_preload_stress"] = (True, ratio0 <= rule[1] + 1e-12)
+    if f_kr_ends:  # every refusal is made
+        f_kr_raw = _least_clamp_force(
+            lambda loads: jt.residual_clamp_force(fm_min, loads, phi_n, f_z, th_loss), f_a_range
+        )
 
     return {
         "tightening_factor": alpha_a,
@@ -1355,7 +1490,7 @@ def _solve(
         "separation_load": fa_sep,
         "max_working_load": fa_limit,
         "max_bolt_force": f_s_max,
-        "working_stress": stress.equivalent,
+        "working_stress": stress.equivalent if stress is not None else nan,
         "yield_safety": s_f,
         "stress_amplitude": sigma_a,
         "endurance_limit": sigma_as,
@@ -1384,6 +1519,7 @@ def _solve(
         "_mu": (mu_g_lo, mu_g_hi, mu_k_lo, mu_k_hi),
         "_m_u": m_u,
         "_f_kr_raw": f_kr_raw,
+        "_f_kr_ends": f_kr_ends,
         "_nut": (nut, f_nut, f_mzul_bolt, nut_limits),
     }
 
@@ -1838,11 +1974,14 @@ def _series(ctx: RunContext, s: Mapping[str, Any], x: Mapping[str, Any]) -> dict
         top = top if top > 0.0 else f_mzul
         loads = [top * i / 40 for i in range(41)]
         f_kerf, th_loss = s["required_clamp_force"], s["thermal_loss"]
-        req = [jt.minimum_assembly_preload(f_kerf, a, phi_n, f_z, th_loss) for a in loads]
+        # R5 and R6 over the 41 loads at once (the same operations on each, as floats)
+        grid: Any = np.array(loads)
+        req: Any = jt.minimum_assembly_preload(f_kerf, grid, phi_n, f_z, th_loss)
+        req_max: Any = jt.required_preload_max(s["_alpha_req"], req)
         series.update(
             window_working_load=loads,
-            window_required_min=req,
-            window_required_max=[jt.required_preload_max(s["_alpha_req"], r) for r in req],
+            window_required_min=req.tolist(),
+            window_required_max=req_max.tolist(),
             window_permissible=[f_mzul] * len(loads),
             window_assembly_min=[fm_min] * len(loads),
             window_assembly_max=[fm_max] * len(loads),
@@ -2410,7 +2549,7 @@ def _vector_hook_checks(
     col: Callable[[str], np.ndarray],
     bolts: list[Bolt],
     index: np.ndarray,
-    ok: np.ndarray,
+    ok: np.ndarray | None,
     bearing: Any,
     hole: Any,
     fm_max: Any,
@@ -2425,7 +2564,8 @@ def _vector_hook_checks(
     and its refusals; the verdicts are then the same comparisons as
     :func:`engine.procedures.bolt.bought_part_checks`, on arrays. A check name this does
     not know raises TypeError (the caller loops instead). Without ``verdicts`` (a sweep
-    reads no check) only the notes are made.
+    reads no check) only the notes are made. ``ok``: the points not refused (None: every
+    point).
     """
     n = index.size
     out: dict[str, np.ndarray] = {}
@@ -2442,10 +2582,12 @@ def _vector_hook_checks(
         tau = np.full(n, fa.material(str(x["internal_thread_material"])).shear_strength)
     for k, bolt in enumerate(bolts):
         # one bolt: the index is 0 wherever the bolt resolved, and ok is within that
-        sel = ok if len(bolts) == 1 else ok & (index == k)
-        if not sel.any():
+        sel: Any = ok if len(bolts) == 1 else index == k if ok is None else ok & (index == k)
+        if sel is None:  # one bolt, every point
+            sel = slice(None)
+        elif not sel.any():
             continue
-        checks, said = probe(int(np.argmax(sel)))  # the first point of this bolt
+        checks, said = probe(0 if type(sel) is slice else int(np.argmax(sel)))  # its first point
         notes += [s for s in said if s not in notes]
         if not verdicts:
             continue
@@ -2535,7 +2677,7 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         for f in _BOLT_FIELDS
         for v in (getattr(resolved, f),)
     }
-    refused = ~resolved.ok
+    refused: Any = np.False_ if resolved.ok.all() else ~resolved.ok  # a mask only where needed
     b["_strength_class"] = _strength_class(x, bolts[0] if bolts else None)
     if x.get("nut") is not None:
         strengths = {k.tensile_strength for k in bolts} - {None}
@@ -2548,8 +2690,11 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     refusals = _Refusals(refused, many=True)
     # a sweep reads no check: the steps only they (and no asked output) read are left out
     s = _solve(x, col, b, refusals, None if ctx.checks else ctx.outputs)
-    refused = np.broadcast_to(refusals.mask, (n,))
-    if refused.all():
+    mask = refusals.mask
+    every_refused = bool(mask.all()) if isinstance(mask, np.ndarray) else bool(mask)
+    any_refused = bool(mask.any()) if isinstance(mask, np.ndarray) else every_refused
+    refused = np.broadcast_to(mask, (n,))
+    if every_refused:
         # alone, the first point says why it is refused (InputOutOfRange naming the field, or
         # the arithmetic); the caller then runs each point alone
         _compute({k: (v[0].item() if isinstance(v, np.ndarray) else v) for k, v in x.items()}, ctx)
@@ -2558,7 +2703,6 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
     joint_type = str(x["joint_type"])
     d_w, d_h = b["bearing_outer_diameter"], b["hole_diameter"]
     fm_max, f_s_max = s["assembly_preload_max"], s["max_bolt_force"]
-    any_refused = bool(refused.any())
 
     def somewhere(condition: Any) -> bool:
         """Whether ``condition`` holds at a point not refused (some point is not)."""
@@ -2584,6 +2728,8 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         bolt = resolved.at(j)
 
         def at(value: Any) -> float:
+            if not isinstance(value, np.ndarray) or value.ndim == 0:
+                return float(value)
             return float(np.broadcast_to(value, (n,))[j])
 
         solution = JointSolution(
@@ -2599,7 +2745,17 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         return _scalar_hooks(point, solution)
 
     hook_checks, hook_notes = _vector_hook_checks(
-        x, col, bolts, bolt_index, ~refused, d_w, d_h, fm_max, f_s_max, probe, ctx.checks
+        x,
+        col,
+        bolts,
+        bolt_index,
+        ~refused if any_refused else None,
+        d_w,
+        d_h,
+        fm_max,
+        f_s_max,
+        probe,
+        ctx.checks,
     )
     notes += hook_notes
     notes.append(MODEL_FORM_NOTE)
@@ -2609,23 +2765,23 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
             nut_limit_warning(nut, None, None)
             + ", the preload window and the torque are built on it"
         )
-    if somewhere(s["_f_kr_raw"] < 0.0):
+    # F_KR at the ends of F_A over the points not refused (_solve), or at every point
+    opens = (
+        bool((s["_f_kr_raw"] < 0.0).any()) if s["_f_kr_ends"] else somewhere(s["_f_kr_raw"] < 0.0)
+    )
+    if opens:
         warnings.append(
             "the joint opens at some points (F_A above the separation load at F_M,min): "
             "residual_clamp_force_min and slip_safety are 0 there"
         )
 
-    # what the runner makes of a non-finite value (null) and of a refused point (all null),
-    # for the outputs asked for only: each is a pass over the points
-    asked = [name for name in _SCALARS if name in ctx.outputs]
-    table = np.empty((len(asked), n))
-    for row, name in zip(table, asked, strict=True):
-        row[...] = s[name]
-    if not np.isfinite(np.add.reduce(table, axis=None)):  # a NaN or inf somewhere
-        table[~np.isfinite(table)] = np.nan
-    if any_refused:
-        table[:, refused] = np.nan
-    values: dict[str, Any] = dict(zip(asked, table, strict=True))
+    values: dict[str, Any] = _output_columns(
+        s,
+        [name for name in _SCALARS if name in ctx.outputs],
+        n,
+        refused if any_refused else None,
+        (*x.values(), *b.values()),
+    )
     verdicts: dict[str, Any] = {}
     if ctx.checks:  # a sweep reads none of them
         verdicts = {
@@ -2649,6 +2805,55 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         warnings=warnings,
         check_arrays=reported,
     )
+
+
+#: Points from which an output array is written in place rather than copied: below, the copy
+#: of a column costs less than the calls that test and write it alone.
+IN_PLACE_FROM = 8192
+
+
+def _output_columns(
+    s: Mapping[str, Any],
+    asked: list[str],
+    n: int,
+    refused: np.ndarray | None,
+    foreign: tuple[Any, ...],
+) -> dict[str, np.ndarray]:
+    """The ``asked`` outputs of the solved joint ``s`` as float columns of ``n`` points: null
+    (NaN) where not finite, as the runner makes a non-finite value, and at the ``refused``
+    points. From :data:`IN_PLACE_FROM` points on, an array the procedure made for this
+    request is written in place; the rest (a number, an input or bolt value in ``foreign``,
+    a column given already) is copied into one table, each a row, tested for a non-finite
+    value in one pass."""
+    made: dict[str, np.ndarray] = {}
+    if n >= IN_PLACE_FROM:
+        taken = {id(v) for v in foreign if isinstance(v, np.ndarray)}
+        for name in asked:
+            value = s[name]
+            if (
+                isinstance(value, np.ndarray)
+                and value.shape == (n,)
+                and value.dtype == np.float64
+                and value.flags.owndata
+                and value.flags.writeable
+                and id(value) not in taken
+            ):
+                made[name] = value
+                taken.add(id(value))
+    rest = [name for name in asked if name not in made]
+    columns = [*made.values()]
+    if rest:
+        table = np.empty((len(rest), n))
+        for row, name in zip(table, rest, strict=True):
+            row[...] = s[name]
+        columns.append(table)
+    for column in columns:
+        if not np.isfinite(np.add.reduce(column, axis=None)):  # a NaN or inf: one pass to find
+            column[~np.isfinite(column)] = np.nan
+        if refused is not None:
+            column[..., refused] = np.nan
+    given = {**made, **(dict(zip(rest, table, strict=True)) if rest else {})}
+    return {name: given[name] for name in asked}
 
 
 def _scalar_hooks(x: Mapping[str, Any], solution: JointSolution) -> tuple[list[Check], list[str]]:

@@ -143,6 +143,44 @@ def _min(a: Any, b: Any) -> Any:
     return b if b < a else a
 
 
+# In place on the arrays a step makes itself: a sum of terms over many points costs one new
+# array, not one per term. The operations and their order are the formula's (IEEE addition
+# commutes bit for bit), so a point gives what it gives alone.
+
+
+def _fits(made: Any, other: Any) -> bool:
+    """Whether ``made`` (an array the calling step computed itself, no one else's) can hold
+    its elementwise result with ``other``: float64, of the result's shape."""
+    return (
+        isinstance(made, np.ndarray)
+        and made.dtype == np.float64
+        and (not isinstance(other, np.ndarray) or other.shape == made.shape)
+    )
+
+
+def _add_to(made: Any, other: Any) -> Any:
+    """``made + other`` (equal bit for bit to ``other + made``), into ``made`` where it fits."""
+    if type(made) is float or not _fits(made, other):
+        return made + other
+    return np.add(made, other, out=made)
+
+
+def _subtract_from(made: Any, other: Any) -> Any:
+    """``made - other``, into ``made`` where it fits (x − (+0) is x, every x: no pass)."""
+    if type(made) is float or not _fits(made, other):
+        return made - other
+    if isinstance(other, float) and other == 0.0 and math.copysign(1.0, other) > 0.0:
+        return made
+    return np.subtract(made, other, out=made)
+
+
+def _subtract_into(other: Any, made: Any) -> Any:
+    """``other - made``, into ``made`` where it fits."""
+    if type(made) is float or not _fits(made, other):
+        return other - made
+    return np.subtract(other, made, out=made)
+
+
 class BoltCompliance(NamedTuple):
     """The bolt's axial compliance by section (VDI 2230-1 R3), [m/N].
 
@@ -1018,11 +1056,8 @@ def minimum_assembly_preload(
     >>> minimum_assembly_preload(10e3, 8e3, 0.1, 2.6e3, 0.0)
     19800.0
     """
-    return (
-        required_clamp_force
-        + clamp_load_reduction(load_factor_n, working_load_max)
-        + preload_losses(embedding_force, thermal_loss)
-    )
+    required = _add_to(clamp_load_reduction(load_factor_n, working_load_max), required_clamp_force)
+    return _add_to(required, preload_losses(embedding_force, thermal_loss))
 
 
 def tightening_torque(
@@ -1584,11 +1619,8 @@ def residual_clamp_force(
     >>> residual_clamp_force(30e3, 8e3, 0.1, 2.6e3, 0.0)
     20200.0
     """
-    return (
-        assembly_preload_min
-        - clamp_load_reduction(load_factor_n, working_load)
-        - preload_losses(embedding_force, thermal_loss)
-    )
+    left = _subtract_into(assembly_preload_min, clamp_load_reduction(load_factor_n, working_load))
+    return _subtract_from(left, preload_losses(embedding_force, thermal_loss))
 
 
 def separation_load(
@@ -1876,7 +1908,7 @@ def max_bolt_force(
     >>> max_bolt_force(43.1e3, 800.0, -12.9e3), max_bolt_force(43.1e3, 800.0, 5e3)
     (56800.0, 43900.0)
     """
-    return assembly_preload_max + additional_bolt_load - _min(thermal_change, 0.0)
+    return _subtract_from(assembly_preload_max + additional_bolt_load, _min(thermal_change, 0.0))
 
 
 def yield_safety(yield_strength: float, working_stress: float) -> float:

@@ -679,7 +679,13 @@ class BoltArrays:
             return bolt
         n = self.ok.size
         numbers: dict[str, Any] = {
-            f: None if v is None else float(np.broadcast_to(v, (n,))[j])
+            f: (
+                None
+                if v is None
+                else float(v)
+                if not isinstance(v, np.ndarray) or v.ndim == 0
+                else float(np.broadcast_to(v, (n,))[j])
+            )
             for f in _NUMBER_FIELDS
             for v in (getattr(self, f),)
         }
@@ -688,13 +694,14 @@ class BoltArrays:
     def distinct(self) -> tuple[list[Bolt], np.ndarray]:
         """The distinct bolts (thread size and catalogue part) among the points ``ok``
         marks, each at its first such point, and each point's index into them (-1 where
-        refused): what a check that reads the bolt as a whole runs once per bolt."""
+        refused): what a check that reads the bolt as a whole runs once per bolt. The
+        index is read-only (one bolt at every point: no array of the points is made)."""
         n = self.ok.size
         one_size = self.rows is None and not any(
             isinstance(v, np.ndarray) and v.ndim for v in (self.diameter, self.pitch)
         )
         if one_size and n and self.ok.all():  # one bolt at every point
-            return [self.at(0)], np.zeros(n, dtype=np.int64)
+            return [self.at(0)], np.broadcast_to(np.int64(0), (n,))
         index = np.full(n, -1, dtype=np.int64)
         good = np.flatnonzero(self.ok)
         if good.size == 0:

@@ -505,3 +505,71 @@ def test_an_output_asked_alone_equals_its_column_among_all(
         np.testing.assert_array_equal(alone.columns[name], every.columns[name], err_msg=name)
         assert alone.warnings == every.warnings
     assert np.isnan(every.columns["max_bolt_force"]).any() == (vary == "shank_length")
+
+
+FLOOR_OUTPUTS = ("additional_bolt_load", "required_preload_min", "max_bolt_force")
+
+
+@pytest.mark.parametrize(
+    ("given", "high", "refused", "opens"),
+    [
+        # F_A,min = 5 kN: F_A below it refused (0, 2, 4 kN; 0…4.5 kN in steps of 0.5 kN);
+        # the joint opens above about 20 kN
+        ({"working_load_min": 5e3}, 60e3, 3, True),
+        ({"working_load_min": 5e3}, 15e3, 10, False),
+        # 90 N·m of prevailing torque eat the 80 N·m: F_M = 0, so F_S,max = 0 and σ_red,B = 0
+        # at F_A = 0 (refused), and no clamp force is left anywhere (the joint opens)
+        ({"tightening_torque": 80.0, "prevailing_torque": 90.0}, 10e3, 1, True),
+    ],
+)
+@pytest.mark.parametrize("asked", [FLOOR_OUTPUTS, ("working_stress",), ("slip_safety",)])
+def test_a_sweep_of_the_working_load_refuses_and_warns_as_single_runs(
+    given: dict[str, float],
+    high: float,
+    refused: int,
+    opens: bool,
+    asked: tuple[str, ...],
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """F_A swept alone: where no asked output reads σ_red,B or F_KR per point, R8's refusals
+    and the "joint opens" warning are decided at the ends of F_A over the points not refused;
+    the refused points, the nulls, every value (bit for bit) and the warning are those of
+    single runs of the same points (the columns written in place, as from 8192 points on)."""
+    monkeypatch.setattr(joint_model, "IN_PLACE_FROM", 1)
+    base = {**JOINT.examples[0], **given}
+    values = np.linspace(0.0, high, 31)
+    got = sweep(JOINT, base, "working_load", list(values), outputs=asked, budget_s=None)
+    nulls, warned = 0, False
+    for j, value in enumerate(values.tolist()):
+        try:
+            alone = run(JOINT, {**base, "working_load": value}, outputs=asked)
+        except EngineError:
+            nulls += 1
+            for name in asked:
+                assert math.isnan(got.columns[name][j]), f"point {j}: {name}"
+            continue
+        warned |= any(w.startswith("the joint opens") for w in alone.warnings)
+        for name in asked:
+            want = alone.results[name]
+            assert got.columns[name][j] == (math.nan if want is None else want) or (
+                want is None and math.isnan(got.columns[name][j])
+            ), f"point {j}: {name}"
+    assert nulls == refused
+    assert warned == opens
+    assert any(w.startswith("the joint opens at some points") for w in got.warnings) == opens
+
+
+def test_an_output_that_is_a_swept_input_leaves_the_input_intact(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The array path writes null into the columns it made itself, never into an input:
+    M_A is its own output where it is given, and the points whose torque the prevailing
+    torque eats (30 and 40 N·m against 40 N·m) are null in the output, not in the values."""
+    monkeypatch.setattr(joint_model, "IN_PLACE_FROM", 1)  # as from 8192 points on
+    base = {**JOINT.examples[0], "working_load": 0.0, "prevailing_torque": 40.0}
+    base["tightening_torque"] = 80.0
+    values = [30.0, 40.0, 50.0, 120.0]
+    got = sweep(JOINT, base, "tightening_torque", values, outputs=("tightening_torque",))
+    assert got.value_array.tolist() == values
+    assert np.isnan(got.columns["tightening_torque"][:2]).all()
+    assert got.columns["tightening_torque"][2:].tolist() == [50.0, 120.0]
