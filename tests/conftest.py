@@ -25,7 +25,9 @@ if TYPE_CHECKING:
 settings.register_profile("fast", max_examples=8)
 
 
-#: Property sweeps over whole declared ranges, hostile-value fuzzing and timing under load:
+#: Property sweeps over whole declared ranges, hostile-value fuzzing, timing under load and
+#: the memory of a full-size row group (15 MB of CSV traced by tracemalloc; its sibling
+#: test_pieces_have_a_bounded_number_of_rows_and_every_row holds the pieces and every value):
 #: `slow` (the full suite, `make test`, runs them; the inner loop does not). Value tests and
 #: doctests are never listed here.
 SLOW_ITEMS = (
@@ -35,6 +37,7 @@ SLOW_ITEMS = (
     "tests/service/test_hostile.py::test_every_numeric_input_of_every_model_survives_hostile",
     "tests/service/test_lanes.py::",
     "tests/service/test_isolation.py::",
+    "tests/service/test_shopfloor_csv.py::test_a_row_group_is_not_held_as_text",
 )
 
 

@@ -21,6 +21,10 @@ value. The output is credited to the models the enclosing test function names
 imported from ``engine.models`` such as ``VDI2230``, or a module-level alias of
 one of those); a function naming none is credited with the models its file names.
 
+Only the tests ``make test-fast`` runs count (:func:`_fast_units`): a test marked ``slow``,
+``browser``, ``install`` or ``fuzz``, listed in ``tests/conftest.py``'s SLOW_ITEMS or in a
+module the fast set ignores holds nothing here, so the inner loop holds every output too.
+
 What is left is compared with :data:`NOT_YET_PINNED` both ways: a new output no
 test holds fails, and so does an output that became held and is still listed
 (take it off the list). The list is printed (``pytest -s``).
@@ -314,6 +318,47 @@ def _units(tree: ast.Module) -> Iterator[ast.FunctionDef | ast.AsyncFunctionDef]
             yield from (s for s in stmt.body if isinstance(s, ast.FunctionDef))
 
 
+#: The marks ``make test-fast`` deselects (the Makefile's FAST), and the module it does not
+#: collect: a value held only there is not held by the inner loop.
+OUT_OF_FAST_MARKS = ("slow", "browser", "install", "fuzz")
+OUT_OF_FAST_FILES = ("tests/service/test_fuzz.py",)
+
+
+def _out_of_fast(node: ast.AST | None) -> bool:
+    """Whether a decorator or a ``pytestmark`` value carries a mark the fast set deselects."""
+    if node is None:
+        return False
+    return any(
+        isinstance(n, ast.Attribute)
+        and n.attr in OUT_OF_FAST_MARKS
+        and isinstance(n.value, ast.Attribute)
+        and n.value.attr == "mark"
+        for n in ast.walk(node)
+    )
+
+
+def _fast_units(tree: ast.Module, where: str) -> Iterator[ast.FunctionDef | ast.AsyncFunctionDef]:
+    """:func:`_units` less the tests ``make test-fast`` leaves out: marked (by decorator or the
+    module's ``pytestmark``), listed in ``tests/conftest.py``'s SLOW_ITEMS, or in a module it
+    ignores. ``where`` is the file's path from the repository root."""
+    from tests.conftest import SLOW_ITEMS
+
+    if where in OUT_OF_FAST_FILES or any(
+        isinstance(s, ast.Assign)
+        and any(isinstance(t, ast.Name) and t.id == "pytestmark" for t in s.targets)
+        and _out_of_fast(s.value)
+        for s in tree.body
+    ):
+        return
+    for unit in _units(tree):
+        if unit.name.startswith("test") and (
+            any(_out_of_fast(d) for d in unit.decorator_list)
+            or f"{where}::{unit.name}".startswith(SLOW_ITEMS)
+        ):
+            continue
+        yield unit
+
+
 def _aliases(tree: ast.Module) -> dict[str, set[str]]:
     """Module-level names bound to something that names a model (``J = get_model("…")``)."""
     aliases: dict[str, set[str]] = {}
@@ -340,7 +385,8 @@ def _quoted(outputs: dict[str, set[str]]) -> re.Pattern[str]:
 
 
 def pinned_in_tests(outputs: dict[str, set[str]]) -> set[tuple[str, str]]:
-    """(model, output) pairs a test under ``tests/`` compares with a value."""
+    """(model, output) pairs a test under ``tests/`` compares with a value, counting only
+    the tests ``make test-fast`` runs (:func:`_fast_units`): the inner loop holds them all."""
     held: set[tuple[str, str]] = set()
     quoted = _quoted(outputs)
     for path in sorted((ROOT / "tests").rglob("*.py")):
@@ -354,7 +400,7 @@ def pinned_in_tests(outputs: dict[str, set[str]]) -> set[tuple[str, str]]:
         aliases = _aliases(tree)
         known = _module_literals(tree)
         whole: set[str] | None = None
-        for unit in _units(tree):
+        for unit in _fast_units(tree, path.relative_to(ROOT).as_posix()):
             source = "\n".join(lines[unit.lineno - 1 : unit.end_lineno])
             if "pin(" in source:
                 held |= _pins(unit, known)
@@ -491,6 +537,16 @@ def test_the_scan_sees_the_assertions_it_should() -> None:
     assert scan('def t():\n    assert run(VDI2230, x)["grip"] == 0.03') == {"grip"}
     assert scan('def t():\n    assert post("/joint/vdi2230/run")["grip"] == 0.03') == {"grip"}
     assert scan('def t():\n    assert post("/joint/vdi2230x")["grip"] == 0.03') == set()
+    # only what the fast set runs: a test marked slow (or in SLOW_ITEMS) holds nothing there
+    fast = 'def test_a():\n    pin("joint.vdi2230", "grip", a, 0.03)\n'
+    slow = '@pytest.mark.slow\ndef test_b():\n    pin("joint.vdi2230", "preload", a, 1.0)\n'
+    tree = ast.parse(fast + slow)
+    assert [u.name for u in _fast_units(tree, "tests/x.py")] == ["test_a"]
+    marked = ast.parse("pytestmark = pytest.mark.browser\n" + fast)
+    assert list(_fast_units(marked, "tests/x.py")) == []
+    listed = "tests/service/test_shopfloor_csv.py"
+    tree = ast.parse(fast.replace("test_a", "test_a_row_group_is_not_held_as_text"))
+    assert list(_fast_units(tree, listed)) == []
 
 
 def test_every_numeric_output_is_held_by_a_value_test() -> None:

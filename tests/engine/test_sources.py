@@ -8,6 +8,7 @@ The layers of ``engine/``, each a folder (see LAYERS): physics in ``engine/physi
 from __future__ import annotations
 
 import ast
+import functools
 import importlib
 import re
 from pathlib import Path
@@ -92,8 +93,10 @@ def test_the_catalogue_serves_the_sources(client):
     assert [s["id"] for s in nut["sources"]] == ["000", "Kloss"]
 
 
-def _engine_imports(path: Path) -> set[str]:
-    """The ``engine`` modules a module imports (relative imports resolved)."""
+@functools.cache
+def _engine_imports(path: Path) -> frozenset[str]:
+    """The ``engine`` modules a module imports (relative imports resolved); each file
+    parsed once per test process (the layer tests and the circle test read the same files)."""
     package = path.relative_to(ROOT).with_suffix("").parts[:-1]
     found: set[str] = set()
     for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
@@ -104,7 +107,7 @@ def _engine_imports(path: Path) -> set[str]:
             found.update(n for n in names if n.startswith("engine"))
         elif isinstance(node, ast.Import):
             found.update(a.name for a in node.names if a.name.startswith("engine"))
-    return found
+    return frozenset(found)
 
 
 def test_every_engine_module_is_in_a_layer():

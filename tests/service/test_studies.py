@@ -14,6 +14,7 @@ from service.studies import StudySettings
 
 CLUTCH = engine.get_model("clutch.ball")
 BASE = {k: v for k, v in CLUTCH.examples[0].items() if k != "flank_friction"}
+RARE = engine.get_model("impact.rare")
 
 
 def _wait(client: TestClient, job: str, seconds: float = 30.0) -> dict[str, Any]:
@@ -30,7 +31,9 @@ def _wait(client: TestClient, job: str, seconds: float = 30.0) -> dict[str, Any]
 def app_client(monkeypatch: pytest.MonkeyPatch) -> TestClient:
     monkeypatch.setenv("STUDY_PER_CLIENT", "1")
     monkeypatch.setenv("STUDY_INPROCESS_POINTS", "100000")  # no Dask in these tests
-    with TestClient(create_app()) as c:
+    # the routes of the two models these tests study (a whole app builds every model's
+    # request models, a second of CPU, and warms every model up)
+    with TestClient(create_app(models=[CLUTCH, RARE])) as c:
         yield c
 
 

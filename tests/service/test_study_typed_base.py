@@ -6,28 +6,21 @@ from __future__ import annotations
 from typing import Any
 
 import pytest
-from fastapi import FastAPI
 from fastapi.testclient import TestClient
 from pydantic import ValidationError
 
 import engine
 from service import create_app, schemas
 from service.config import Settings
-from service.studies import Studies, StudySettings, study_router
+from tests.apps import real_app
 from tests.toys import TOY
 
 
 @pytest.fixture(scope="module")
 def document() -> dict[str, Any]:
-    """The OpenAPI document of the study routes of every model (as the app publishes them:
-    the routes are the app's own, tests/service/test_client_contract.py holds the app's)."""
-    studies = Studies(StudySettings())
-    app = FastAPI()
-    app.include_router(study_router(engine.MODELS, studies))
-    try:
-        return app.openapi()
-    finally:
-        studies.shutdown()
+    """The real app's OpenAPI document (tests/apps.py: the session's app, whose document is
+    built once per test process), where the study routes of every model are published."""
+    return real_app().openapi()
 
 
 def _resolve(doc: dict[str, Any], schema: dict[str, Any]) -> dict[str, Any]:

@@ -37,7 +37,7 @@ def app() -> Iterator[tuple[TestClient, list[threading.Event]]]:
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(service.studies, "run_study", held_study)
         mp.setenv("STUDY_INPROCESS_POINTS", "100000")
-        with TestClient(create_app()) as client:
+        with TestClient(create_app(models=[CLUTCH])) as client:  # the model it studies
             yield client, gate
 
 

@@ -211,7 +211,7 @@ def test_a_correlated_lognormal_study_over_http(monkeypatch: pytest.MonkeyPatch)
         "outputs": ["torque_limit"],
         "correlations": [{"a": "flank_friction", "b": "load_factor", "rank_correlation": 0.6}],
     }
-    with TestClient(create_app()) as client:
+    with TestClient(create_app(models=[CLUTCH])) as client:  # the model it studies
         r = client.post("/api/v1/clutch/ball/study", json=body)
         assert r.status_code == 202, r.text
         job = r.json()["job"]

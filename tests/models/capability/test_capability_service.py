@@ -8,6 +8,7 @@ import time
 import pytest
 from fastapi.testclient import TestClient
 
+import engine
 from service import create_app
 
 URL = "/api/v1/tool/capability"
@@ -86,7 +87,7 @@ def test_a_study_holds_samples_fixed_and_refuses_to_vary_them(
 ) -> None:
     """Cmk = min(U − 10, 10 − L)/(3s) with s = 0.1 (samples 9.9, 10, 10.1), L, U = T ∓ 10 %."""
     monkeypatch.setenv("STUDY_INPROCESS_POINTS", "100000")  # no Dask here
-    with TestClient(create_app()) as c:
+    with TestClient(create_app(models=[engine.get_model("tool.capability")])) as c:
         r = c.post(
             URL + "/study",
             json={
