@@ -9,11 +9,10 @@ Engine errors become HTTP statuses in :mod:`service.errors`.
 """
 
 import asyncio
-import contextlib
 import json
 import math
 import threading
-from collections.abc import Mapping, Sequence
+from collections.abc import Awaitable, Callable, Mapping, MutableMapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -24,8 +23,8 @@ from fastapi.exceptions import RequestValidationError
 from fastapi.responses import Response
 from fastapi.routing import APIRoute
 from pydantic import BaseModel, ValidationError
+from starlette._exception_handler import wrap_app_handling_exceptions
 from starlette.requests import ClientDisconnect
-from starlette.routing import request_response
 
 import engine
 import engine.core.runner
@@ -343,17 +342,40 @@ def _prepared(
         return None
 
 
+@dataclass(frozen=True)
+class _Rungs:
+    """What routing asks of a model's rungs, found once when its routes are built."""
+
+    heavy: frozenset[str]  #: rungs declared heavy (simulations): the heavy lane
+    fallback: frozenset[str]  #: rungs with a fallback rung: never inline
+
+    @classmethod
+    def of(cls, spec: ModelSpec) -> "_Rungs":
+        return cls(
+            frozenset(r.name for r in spec.rungs if r.heavy),
+            frozenset(r.name for r in spec.rungs if r.fallback is not None),
+        )
+
+
 def _route(
-    spec: ModelSpec, body: Any, inputs: dict[str, Any], pool: EnginePool, sweep: bool
+    spec: ModelSpec,
+    body: Any,
+    inputs: dict[str, Any],
+    pool: EnginePool,
+    sweep: bool,
+    rungs: _Rungs | None = None,
 ) -> tuple[Lane, str | None, engine.core.runner.Prepared | None]:
     """The lane; for a single evaluation that may run inline, the rung it will run; and
     the request as :func:`_prepared` made it, where the rung had to be chosen to route it.
 
     The rung is None where inline is out: a heavy rung, a rung with a fallback,
     a sweep, inputs the rung choice refused. Without heavy rungs the fidelity
-    asked for names the rung ("auto" then picks among cheap ones only).
+    asked for names the rung ("auto" then picks among cheap ones only). ``rungs``:
+    the model's :class:`_Rungs`, found here where not given.
     """
-    heavy = {r.name for r in spec.rungs if r.heavy}
+    if rungs is None:
+        rungs = _Rungs.of(spec)
+    heavy = rungs.heavy
     prepared = None
     if not heavy and not sweep:
         rung: str | None = _fidelity_of(spec, body)
@@ -370,7 +392,7 @@ def _route(
             if spec.vectorized is None or rung not in spec.vector_rungs:
                 return pool.heavy, None, None
             return pool.quick, None, None
-    fallback = {r.name for r in spec.rungs if r.fallback is not None}
+    fallback = rungs.fallback
     if rung is None or rung in fallback or (rung == "auto" and fallback):
         return pool.quick, None, prepared
     return pool.quick, rung, prepared
@@ -384,6 +406,55 @@ async def _in_lane(request: Request, lane: Lane, fn: Any, budget_s: float, what:
         return await lane.run(fn, budget_s, what, ticket)
     finally:
         watcher.cancel()
+
+
+_Scope = MutableMapping[str, Any]
+_Receive = Callable[[], Awaitable[MutableMapping[str, Any]]]
+_Send = Callable[[MutableMapping[str, Any]], Awaitable[None]]
+_ASGIApp = Callable[[_Scope, _Receive, _Send], Awaitable[None]]
+
+
+def lean_endpoint(handler: Callable[[Request], Awaitable[bytes | Response]]) -> _ASGIApp:
+    """A route's ASGI app for ``handler``, which answers JSON bytes (sent with status 200)
+    or a :class:`Response`: :func:`starlette.routing.request_response` without the wrapper
+    it builds around every request.
+
+    An exception from ``handler`` goes through Starlette's own handling
+    (``wrap_app_handling_exceptions``, with the handlers the scope carries): the same
+    handler and answer, or raised on where none applies. The answer is sent outside it, as
+    nothing was sent before; sending raises none of the exceptions that have a handler
+    (those come from reading the body, validating and the engine). Bytes go as
+    :class:`Response` sends them: ``content-length``, then ``content-type``.
+    """
+
+    async def app(scope: _Scope, receive: _Receive, send: _Send) -> None:
+        request = Request(scope, receive, send)
+        try:
+            answer = await handler(request)
+        except Exception as exc:
+            await wrap_app_handling_exceptions(_raising(exc), request)(scope, receive, send)
+            return
+        if type(answer) is bytes:
+            headers = [(b"content-length", str(len(answer)).encode()), _JSON_TYPE]
+            await send({"type": "http.response.start", "status": 200, "headers": headers})
+            await send({"type": "http.response.body", "body": answer})
+        else:
+            assert isinstance(answer, Response)
+            await answer(scope, receive, send)
+
+    return app
+
+
+_JSON_TYPE = (b"content-type", b"application/json")
+
+
+def _raising(exc: Exception) -> _ASGIApp:
+    """An app that raises ``exc``: the handler's error, for Starlette's handling."""
+
+    async def app(scope: _Scope, receive: _Receive, send: _Send) -> None:
+        raise exc
+
+    return app
 
 
 def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
@@ -410,13 +481,16 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
 
     encode = _encoder(spec)
     plain = schemas.plain_reader(spec)
+    rungs = _Rungs.of(spec)
+    inline = lim.pool.inline
+    name = spec.name
 
-    async def evaluate(request: Request) -> Response:
+    async def evaluate(request: Request) -> bytes:
         data = await _json(request)
         body = plain(data) or schemas.body_of(_model(data, request_model))
         inputs = body.inputs
 
-        lane, rung, prepared = _route(spec, body, inputs, lim.pool, sweep=False)
+        lane, rung, prepared = _route(spec, body, inputs, lim.pool, False, rungs)
 
         def work(budget_s: float, cancel: threading.Event) -> bytes:
             result = engine.run(
@@ -434,20 +508,16 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
             return encode(_response(result, lim.max_series_points))
 
         if rung is None:
-            answer = await _in_lane(request, lane, work, lim.budget_s, spec.name)
-        else:
-            inline = lim.pool.inline
-            key = (spec.name, rung, bool(body.series or body.outputs))
-            answer = None
-            if inline.allows(key):
-                # FallBack: it checks its budget and needs longer than the time box: a lane
-                with contextlib.suppress(FallBack):
-                    answer = inline.run(work, key, lim.budget_s)
-            if answer is None:
-                answer = await _in_lane(
-                    request, lane, inline.timed(work, key), lim.budget_s, spec.name
-                )
-        return Response(answer, media_type="application/json")
+            answer: bytes = await _in_lane(request, lane, work, lim.budget_s, name)
+            return answer
+        key = (name, rung, bool(body.series or body.outputs))
+        if inline.allows(key):
+            try:
+                return inline.run(work, key, lim.budget_s)
+            except FallBack:  # it checks its budget and needs longer than the time box
+                pass
+        answer = await _in_lane(request, lane, inline.timed(work, key), lim.budget_s, name)
+        return answer
 
     async def sweep(request: Request) -> Response:
         body: Any = await _validated(request, sweep_request)
@@ -470,7 +540,7 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
             return _sweep_answer(result, spec.param(result.vary).unit)
 
         point = {**base, body.vary: values[0]}
-        lane, _, _ = _route(spec, body, point, lim.pool, sweep=True)
+        lane, _, _ = _route(spec, body, point, lim.pool, True, rungs)
         return await _in_lane(request, lane, work, lim.budget_s, f"{spec.name} sweep")
 
     # What OpenAPI publishes: the typed signatures (request and response models). What
@@ -503,9 +573,10 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
         operation_id=spec.name.replace(".", "_") + "_sweep",
         responses=_ERRORS,
     )
-    for route, handler in zip(router.routes[-2:], (evaluate, sweep), strict=True):
+    handlers: tuple[Callable[[Request], Awaitable[bytes | Response]], ...] = (evaluate, sweep)
+    for route, handler in zip(router.routes[-2:], handlers, strict=True):
         assert isinstance(route, APIRoute)
-        route.app = request_response(handler)
+        route.app = lean_endpoint(handler)
     return router
 
 

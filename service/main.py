@@ -1,11 +1,14 @@
 """Build the FastAPI application: health, catalogue, one router per model, the form.
 
 Middleware, outermost first: :class:`~service.middleware.FrontDoor` (request
-id, security headers, access log), :class:`~service.middleware.Compress` (gzip for
-answers and files of :data:`GZIP_MINIMUM_BYTES` or more), CORS when
-``CORS_ORIGINS`` names origins (closed otherwise: no ``Access-Control-*`` header is
-ever sent), :class:`~service.middleware.BodyGuard` (415 for non-JSON bodies, 413 over
-``MAX_BODY_BYTES``). Model computations run in :mod:`service.workers`.
+id, security headers, access log, then gzip for answers and files of
+:data:`GZIP_MINIMUM_BYTES` or more), CORS when ``CORS_ORIGINS`` names origins (closed
+otherwise: no ``Access-Control-*`` header is ever sent), API keys where configured,
+:class:`~service.middleware.BodyGuard` (415 for non-JSON bodies, 413 over
+``MAX_BODY_BYTES``). A model's POST routes are reached from there directly
+(:class:`~service.middleware.ExactRoutes`, their apps applying the exception handlers
+themselves); every other request goes on through Starlette's exception layer and the
+router. Model computations run in :mod:`service.workers`.
 
 ``/manual/`` serves the manual as built by MkDocs (``make run`` builds it into ``site/``;
 the container image carries it at ``MANUAL_DIR``), under the same strict CSP as the form:
@@ -45,6 +48,7 @@ from fastapi.openapi.docs import get_redoc_html, get_swagger_ui_html
 from fastapi.responses import HTMLResponse, JSONResponse, RedirectResponse
 from fastapi.routing import APIRoute
 from fastapi.staticfiles import StaticFiles
+from starlette.middleware.exceptions import ExceptionMiddleware
 from uvicorn.middleware.proxy_headers import ProxyHeadersMiddleware
 
 import engine
@@ -54,7 +58,7 @@ from . import errors
 from .api import API_PREFIX, Limits, catalogue_router, model_router
 from .config import Settings
 from .extra import EXTRA_ROUTERS
-from .middleware import ApiKeys, BodyGuard, Compress, ExactRoutes, FrontDoor, document_keys
+from .middleware import ApiKeys, BodyGuard, ExactRoutes, FrontDoor, document_keys
 from .studies import Studies, StudySettings, study_router
 from .workers import EnginePool
 
@@ -449,11 +453,8 @@ def create_app(
         if isinstance(r, APIRoute) and "GET" in (r.methods or ()) and not r.param_convertors
     }
     about = {"version": version, "commit": product_commit(), "catalogues": others}
-    routers = [
-        catalogue_router(models, about),
-        *(model_router(s, limits) for s in models),
-        *EXTRA_ROUTERS,
-    ]
+    model_routers = [model_router(s, limits) for s in models]
+    routers = [catalogue_router(models, about), *model_routers, *EXTRA_ROUTERS]
     studies_router = study_router(models, studies)
     for router in (*routers, studies_router):
         # The routes themselves, not include_router: FastAPI ≥ 0.16x nests an included
@@ -475,6 +476,21 @@ def create_app(
         if isinstance(r, APIRoute) and "POST" in (r.methods or ()) and not r.param_convertors
     }
     app.router.middleware_stack = ExactRoutes(app.router.middleware_stack, app.router, exact)
+    # the model routes (service.api.lean_endpoint) from the innermost middleware on
+    lean = {r.path: r for router in model_routers for r in router.routes if isinstance(r, APIRoute)}
+    build_stack = app.build_middleware_stack
+
+    def build_middleware_stack() -> Any:
+        stack = build_stack()
+        layer: Any = stack  # each middleware holds the next as .app
+        while not isinstance(layer.app, ExceptionMiddleware):
+            layer = layer.app
+        caught = layer.app
+        handlers = (caught._exception_handlers, caught._status_handlers)
+        layer.app = ExactRoutes(caught, app.router, lean, handlers)
+        return stack
+
+    app.build_middleware_stack = build_middleware_stack  # type: ignore[method-assign]
     app.add_middleware(
         BodyGuard,
         limit=settings.max_body_bytes,
@@ -500,9 +516,13 @@ def create_app(
             allow_headers=["content-type", "x-request-id", "authorization", "x-api-key"],
             expose_headers=["x-request-id"],
         )
-    # compression inside FrontDoor: its security headers and request id go on either body
-    app.add_middleware(Compress, minimum_size=GZIP_MINIMUM_BYTES, compresslevel=GZIP_LEVEL)
-    app.add_middleware(FrontDoor, log_requests=settings.access_log)
+    # compression inside FrontDoor's headers and log: they go on either body
+    app.add_middleware(
+        FrontDoor,
+        log_requests=settings.access_log,
+        gzip_minimum_size=GZIP_MINIMUM_BYTES,
+        gzip_level=GZIP_LEVEL,
+    )
     if settings.trusted_proxies:  # outermost: every guard and quota sees the real client
         app.add_middleware(ProxyHeadersMiddleware, trusted_hosts=list(settings.trusted_proxies))
 

@@ -2,9 +2,9 @@
 
 * :class:`FrontDoor` (outermost): a request id, security headers on every
   response, redirects to a path on this server (never the request's Host), one
-  JSON access-log line per request (never the body).
-* :class:`Compress`: gzip for a client that accepts it, for answers and files of a
-  minimum size (Starlette's GZipMiddleware, asked only where it can help).
+  JSON access-log line per request (never the body), and gzip for a client that
+  accepts it, for answers and files of a minimum size (Starlette's GZipMiddleware,
+  asked only where it can help: one layer, not two, on every request).
 * :class:`BodyGuard`: JSON bodies only (415 otherwise) and at most
   ``MAX_BODY_BYTES`` (413), counted as the bytes arrive, so a chunked body
   without ``content-length`` is cut off as soon as it passes the limit; the whole
@@ -82,10 +82,43 @@ class FrontDoor:
          "duration_ms": 1.42, "request_id": "3f2a…"}
     """
 
-    def __init__(self, app: ASGIApp, *, log_requests: bool = True) -> None:
+    #: Files that are compressed already (the form's and the manual's images, fonts).
+    PACKED = (".png", ".jpg", ".jpeg", ".gif", ".webp", ".avif", ".ico", ".woff", ".woff2", ".gz")
+
+    def __init__(
+        self,
+        app: ASGIApp,
+        *,
+        log_requests: bool = True,
+        gzip_minimum_size: int | None = None,
+        gzip_level: int = 6,
+    ) -> None:
         self.app = app
         self.log_requests = log_requests
         self._csp = STRICT_CSP.encode()
+        #: gzip, inside the headers and the log (they go on either body): Starlette's
+        #: :class:`GZipMiddleware` around the same ``app``, asked only when the client
+        #: accepts gzip and the path is not an already-compressed file (judged by its
+        #: extension here, instead of its content type per response): it costs ~25 µs a
+        #: request even for an answer it leaves alone. None: never compress.
+        self.gzip: ASGIApp | None = (
+            None
+            if gzip_minimum_size is None
+            else GZipMiddleware(
+                app,
+                minimum_size=gzip_minimum_size,
+                compresslevel=gzip_level,
+                exclude_content_types=(),
+            )
+        )
+
+    def _inner(self, scope: Scope) -> ASGIApp:
+        """The app to hand ``scope`` to: gzip's wrapper where it can help, else the app."""
+        if self.gzip is not None and not scope["path"].endswith(self.PACKED):
+            for key, value in scope["headers"]:
+                if key == b"accept-encoding":
+                    return self.gzip if b"gzip" in value else self.app
+        return self.app
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         if scope["type"] != "http":
@@ -104,20 +137,11 @@ class FrontDoor:
             if message["type"] == "http.response.start":
                 started = True
                 status = message["status"]
-                headers = [
-                    (k, _local(v) if k.lower() == b"location" else v)
-                    for k, v in message.get("headers", ())
-                    if k.lower() != b"server"
-                ]
-                if not any(k.lower() == _CSP for k, _ in headers):
-                    headers.append((_CSP, self._csp))
-                headers.extend(SECURITY_HEADERS)
-                headers.append((b"x-request-id", rid))
-                message["headers"] = headers
+                message["headers"] = _with_ours(message.get("headers", ()), self._csp, rid)
             await send(message)
 
         try:
-            await self.app(scope, receive, send_with_headers)
+            await self._inner(scope)(scope, receive, send_with_headers)
         except Exception as exc:  # the one place every unexpected error ends
             status = 500
             # one line, no traceback: the type and where it was raised are enough to
@@ -141,6 +165,40 @@ class FrontDoor:
         finally:
             if self.log_requests and access_log.isEnabledFor(logging.INFO):
                 _log_access(scope, status, time.perf_counter() - start, request_id)
+
+
+def _with_ours(
+    headers: Any, csp: bytes, rid: bytes, _server: bytes = b"server", _location: bytes = b"location"
+) -> list[tuple[bytes, bytes]]:
+    """A response's headers as they leave: ``server`` dropped, a redirect's ``location``
+    made local (:func:`_local`), the strict CSP unless the route set its own, the security
+    headers and the request id after them; one pass.
+
+    >>> _with_ours([(b"Server", b"x"), (b"location", b"http://h/a"), (b"x-a", b"1")], b"C", b"r")
+    ... # doctest: +NORMALIZE_WHITESPACE
+    [(b'location', b'/a'), (b'x-a', b'1'), (b'content-security-policy', b'C'),
+     (b'x-content-type-options', b'nosniff'), (b'x-frame-options', b'DENY'),
+     (b'referrer-policy', b'no-referrer'), (b'cross-origin-opener-policy', b'same-origin'),
+     (b'x-request-id', b'r')]
+    >>> [k for k, _ in _with_ours([(b"Content-Security-Policy", b"own")], b"C", b"r")][:2]
+    [b'Content-Security-Policy', b'x-content-type-options']
+    """
+    out = []
+    own_csp = False
+    for key, value in headers:
+        name = key.lower()
+        if name == _server:
+            continue
+        if name == _location:
+            value = _local(value)
+        elif name == _CSP:
+            own_csp = True
+        out.append((key, value))
+    if not own_csp:
+        out.append((_CSP, csp))
+    out += SECURITY_HEADERS
+    out.append((b"x-request-id", rid))
+    return out
 
 
 def _access_line(method: Any, path: Any, status: int, seconds: float, request_id: str) -> str:
@@ -433,64 +491,46 @@ class BodyTimeout(HTTPException):
 
 
 class ExactRoutes:
-    """The router's front: a POST to a fixed path goes straight to its route.
+    """A POST to a fixed path goes straight to its route.
 
     Starlette tries each route's pattern in turn (~1 µs each); a model route near the end
     of the table waited for ~25 of them, a measurable share of a cheap request. Only
     routes without path parameters and with POST among their methods are listed; every
-    other request, and a method the route does not take, goes to the router as before. It
-    sits inside the router, so the exception handlers apply as they do to a matched route.
+    other request, and a method the route does not take, goes on to ``app`` as before.
+
+    It is used twice. Inside the router (``handlers`` None), for routes run by FastAPI's
+    own handler: the exception layer and FastAPI's exit stack are outside it, as for a
+    matched route. In front of Starlette's exception layer (``handlers``: that layer's
+    exception and status handlers), for the model routes, whose apps apply the handlers
+    themselves (:func:`service.api.lean_endpoint`) and open no file for FastAPI's exit
+    stack to close: the handlers are put in the scope as that layer puts them, and the
+    layer's per-request wrapper, the exit stack and the router are skipped.
     """
 
-    def __init__(self, app: ASGIApp, router: Any, routes: dict[str, Any]) -> None:
+    def __init__(
+        self,
+        app: ASGIApp,
+        router: Any,
+        routes: dict[str, Any],
+        handlers: tuple[dict[Any, Any], dict[int, Any]] | None = None,
+    ) -> None:
         self.app = app
         self.router = router
         self.routes = routes
+        self.handlers = handlers
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         route = self.routes.get(scope["path"]) if scope["type"] == "http" else None
         if route is None or scope["method"] != "POST" or scope.get("root_path"):
             await self.app(scope, receive, send)
             return
+        if self.handlers is not None:
+            scope["starlette.exception_handlers"] = self.handlers
         scope["router"] = self.router
         scope["endpoint"] = route.endpoint
         scope["route"] = route
         scope["path_params"] = {}
         await route.app(scope, receive, send)
-
-
-class Compress:
-    """gzip the answers and files of ``minimum_size`` bytes or more for a client that
-    accepts it; smaller ones, images and fonts go as they are.
-
-    Starlette's :class:`GZipMiddleware` does the compressing. It is asked only when the
-    client accepts gzip and the path is not an already-compressed file (judged by its
-    extension here, once, instead of its content type per response): it costs ~25 µs a
-    request even for an answer it leaves alone, most of it re-reading its list of excluded
-    content types, which a small single answer should not pay for nothing.
-    """
-
-    #: Files that are compressed already (the form's and the manual's images, fonts).
-    PACKED = (".png", ".jpg", ".jpeg", ".gif", ".webp", ".avif", ".ico", ".woff", ".woff2", ".gz")
-
-    def __init__(self, app: ASGIApp, *, minimum_size: int, compresslevel: int) -> None:
-        self.app = app
-        self.gzip = GZipMiddleware(
-            app,
-            minimum_size=minimum_size,
-            compresslevel=compresslevel,
-            exclude_content_types=(),
-        )
-
-    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
-        if scope["type"] == "http" and not scope["path"].endswith(self.PACKED):
-            for key, value in scope["headers"]:
-                if key == b"accept-encoding":
-                    if b"gzip" in value:
-                        await self.gzip(scope, receive, send)
-                        return
-                    break
-        await self.app(scope, receive, send)
 
 
 def client_of(scope: Scope) -> str:
