@@ -588,9 +588,20 @@ def catalogue_router(
     of the other catalogues it offers), ``/models/{name}`` and ``/sources``."""
     router = APIRouter(prefix=API_PREFIX, tags=["catalogue"])
 
-    described = [spec.describe() for spec in models]
-    catalogue = {"models": described, "service": dict(about or {})}  # fixed once the app is built
-    entries = {spec.name: entry for spec, entry in zip(models, described, strict=True)}
+    service = dict(about or {})  # fixed once the app is built
+    # the entries are made on the first request that reads them (~0.07 s of a start-up,
+    # measured, which /readyz does not need), then kept
+    catalogue: dict[str, Any] = {}
+    entries: dict[str, dict[str, Any]] = {}
+    describing = threading.Lock()
+
+    def described() -> dict[str, Any]:
+        with describing:
+            if not catalogue:
+                made = [spec.describe() for spec in models]
+                entries.update((spec.name, e) for spec, e in zip(models, made, strict=True))
+                catalogue.update(models=made, service=service)
+        return catalogue
 
     @router.get(
         "/models",
@@ -598,7 +609,7 @@ def catalogue_router(
         summary="Every model: inputs, units, ranges, outputs, rungs",
     )
     def list_models() -> dict[str, Any]:
-        return catalogue
+        return described()
 
     @router.get(
         "/models/{name}",
@@ -607,6 +618,7 @@ def catalogue_router(
         responses={404: {"model": schemas.ErrorResponse, "description": "no such model"}},
     )
     def get_model(name: str) -> dict[str, Any]:
+        described()
         if name in entries:
             return entries[name]
         raise HTTPException(status_code=404, detail=f"no model named {name[:80]!r}")

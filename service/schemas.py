@@ -4,10 +4,15 @@ Nothing here knows any physics: field names, units, defaults, ranges and
 descriptions all come from :class:`engine.ModelSpec`, so the OpenAPI schema
 cannot drift from what the engine enforces. Ranges are checked by the same
 :meth:`engine.Param.check` the engine uses.
+
+Every model made here is built on first use (:data:`DEFERRED`): the service declares
+some hundred of them when it starts, and most are only ever read by ``/openapi.json``
+or by a body that is not plain (:func:`plain_reader`).
 """
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Annotated, Any, Literal
@@ -20,6 +25,7 @@ from pydantic import (
     WithJsonSchema,
     create_model,
 )
+from pydantic.warnings import UnsupportedFieldAttributeWarning
 from pydantic_core import PydanticCustomError
 
 from engine import InputOutOfRange, ModelSpec, Param
@@ -35,10 +41,27 @@ from .units import (
 
 SIValue = float | int | bool | str | list[float] | None
 
+#: The configuration of every model made here: pydantic builds its validator, serialiser
+#: and JSON schema on first use, not when the class is made (two thirds of the cost of
+#: making the service's request, response and sweep models, measured at start-up).
+DEFERRED = ConfigDict(defer_build=True)
+
+# FastAPI makes each route's body field from ``Annotated[model, Field(alias="body")]`` and
+# drops pydantic's warning that the alias does nothing there, around the build; a model
+# built on first use builds that field later, outside FastAPI's guard (when /openapi.json
+# is first made): the same warning, dropped the same way.
+warnings.filterwarnings(
+    "ignore",
+    message="The 'alias' attribute with value 'body'",
+    category=UnsupportedFieldAttributeWarning,
+)
+
 
 class QuantityOut(BaseModel):
     """A number in a check's or a note's sentence, as data: the form writes it in the
     unit system the user chose."""
+
+    model_config = DEFERRED
 
     value: float | None = Field(description="SI value (null: not finite)")
     unit: str = Field(description="SI unit, as the model's outputs write units")
@@ -56,6 +79,7 @@ SentenceParts = list[str | QuantityOut]
 
 
 class CheckOut(BaseModel):
+    model_config = DEFERRED
     name: str
     ok: bool
     detail: str
@@ -68,6 +92,7 @@ class CheckOut(BaseModel):
 
 
 class ErrorItem(BaseModel):
+    model_config = DEFERRED
     type: str
     loc: list[str | int]
     msg: str
@@ -76,7 +101,34 @@ class ErrorItem(BaseModel):
 
 
 class ErrorResponse(BaseModel):
+    model_config = DEFERRED
     detail: list[ErrorItem]
+
+
+class LazyJsonSchema:
+    """:class:`pydantic.WithJsonSchema` whose schema is made by ``make`` when a JSON schema
+    is first asked for (``/openapi.json``), not when the annotated model is declared.
+
+    >>> from pydantic import TypeAdapter
+    >>> made = []
+    >>> lazy = LazyJsonSchema(lambda: made.append(1) or {"title": "Base", "type": "object"})
+    >>> adapter = TypeAdapter(Annotated[dict[str, float], lazy])
+    >>> made
+    []
+    >>> adapter.json_schema()
+    {'title': 'Base', 'type': 'object'}
+    >>> adapter.json_schema() == adapter.json_schema(), made
+    (True, [1])
+    """
+
+    def __init__(self, make: Callable[[], dict[str, Any]]) -> None:
+        self._make = make
+        self._schema: dict[str, Any] | None = None
+
+    def __get_pydantic_json_schema__(self, core_schema: Any, handler: Any) -> dict[str, Any]:
+        if self._schema is None:
+            self._schema = self._make()
+        return self._schema.copy()  # as WithJsonSchema gives its schema
 
 
 def _literal(values: tuple[str, ...]) -> Any:
@@ -303,14 +355,21 @@ def _class_name(spec: ModelSpec, suffix: str) -> str:
     return "".join(part.capitalize() for part in spec.name.replace("/", ".").split(".")) + suffix
 
 
+#: A body's configuration: unknown fields are refused; built on first use.
+_CLOSED = ConfigDict(extra="forbid", defer_build=True)
+
+
+def _input_fields(spec: ModelSpec, *, all_optional: bool = False) -> dict[str, Any]:
+    return {p.name: _field(p, all_optional=all_optional) for p in spec.inputs}
+
+
 def inputs_model(spec: ModelSpec, *, all_optional: bool = False) -> type[BaseModel]:
     """A model holding only ``spec``'s inputs (unknown fields are refused)."""
-    fields: dict[str, Any] = {p.name: _field(p, all_optional=all_optional) for p in spec.inputs}
     suffix = "SweepBase" if all_optional else "Inputs"
     return create_model(
         _class_name(spec, suffix),
-        __config__=ConfigDict(extra="forbid"),
-        **fields,
+        __config__=_CLOSED,
+        **_input_fields(spec, all_optional=all_optional),
     )
 
 
@@ -319,11 +378,13 @@ def _fidelity_type(spec: ModelSpec) -> Any:
 
 
 def request_model(spec: ModelSpec) -> type[BaseModel]:
-    """The body of ``POST /api/v1<path>``: inputs plus fidelity, tolerance and outputs."""
+    """The body of ``POST /api/v1<path>``: inputs plus fidelity, tolerance and outputs
+    (one class: the fields :func:`inputs_model` holds, then these four)."""
     output_names = _literal(spec.output_names)
     return create_model(
         _class_name(spec, "Request"),
-        __base__=inputs_model(spec),
+        __config__=_CLOSED,
+        **_input_fields(spec),
         fidelity=(
             _fidelity_type(spec) | None,
             Field(
@@ -375,7 +436,7 @@ def results_model(spec: ModelSpec) -> type[BaseModel]:
             kinds[o.kind] | None,
             Field(default=None, description=f"{o.description} [{unit}]"),
         )
-    return create_model(_class_name(spec, "Results"), **fields)
+    return create_model(_class_name(spec, "Results"), __config__=DEFERRED, **fields)
 
 
 #: What a result's error estimate promises (engine.RunResult.error_kind).
@@ -385,6 +446,7 @@ _ERROR_KIND: Any = Literal["bound", "typical"] | None
 def response_model(spec: ModelSpec) -> type[BaseModel]:
     return create_model(
         _class_name(spec, "Response"),
+        __config__=DEFERRED,
         model=(str, Field(description="model name")),
         results=(results_model(spec), Field(description="requested outputs, SI values")),
         units=(dict[str, str], Field(description="SI unit of each result and series")),
@@ -430,7 +492,7 @@ def sweep_request_model(spec: ModelSpec) -> type[BaseModel]:
     base = inputs_model(spec, all_optional=True)
     return create_model(
         _class_name(spec, "SweepRequest"),
-        __config__=ConfigDict(extra="forbid"),
+        __config__=_CLOSED,
         base=(
             base,
             # a model instance, not a dict: the route calls base.model_dump() (found by fuzzing)
@@ -461,6 +523,7 @@ def sweep_request_model(spec: ModelSpec) -> type[BaseModel]:
 
 
 class SweepResponse(BaseModel):
+    model_config = DEFERRED
     model: str
     vary: str
     unit: str

@@ -53,7 +53,7 @@ import numpy as np
 from fastapi import APIRouter, HTTPException, Query, Request, Response
 from fastapi.concurrency import run_in_threadpool
 from fastapi.responses import FileResponse, JSONResponse, StreamingResponse
-from pydantic import BaseModel, ConfigDict, Field, WithJsonSchema, create_model
+from pydantic import BaseModel, ConfigDict, Field, create_model
 
 import engine
 from engine import ModelSpec
@@ -192,7 +192,9 @@ StudyBase = dict[str, float | int | bool | str | list[float]]
 
 
 class StudyIn(BaseModel):
-    model_config = ConfigDict(extra="forbid")
+    # built on first use, as the models of service.schemas: each model's study route
+    # declares its own subclass (study_request)
+    model_config = ConfigDict(extra="forbid", defer_build=True)
     base: StudyBase = Field(
         default_factory=dict, description="inputs held fixed (defaults fill the rest)"
     )
@@ -938,14 +940,17 @@ def study_request(spec: ModelSpec) -> type[StudyIn]:
     engine's ranges, a refusal naming the input), and takes what the published schema
     takes (tests/service/test_study_typed_base.py).
     """
-    typed = schemas.inputs_model(spec, all_optional=True)
-    published = typed.model_json_schema()
-    published["title"] = schemas._class_name(spec, "StudyBase")
+
+    def published() -> dict[str, Any]:  # when /openapi.json is first asked for
+        schema = schemas.inputs_model(spec, all_optional=True).model_json_schema()
+        schema["title"] = schemas._class_name(spec, "StudyBase")
+        return schema
+
     model: type[StudyIn] = create_model(
         schemas._class_name(spec, "StudyRequest"),
         __base__=StudyIn,
         base=(
-            Annotated[StudyBase, WithJsonSchema(published)],
+            Annotated[StudyBase, schemas.LazyJsonSchema(published)],
             Field(default_factory=dict, description="inputs held fixed (defaults fill the rest)"),
         ),
     )
