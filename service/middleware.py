@@ -31,6 +31,7 @@ from urllib.parse import urlsplit
 
 from starlette.exceptions import HTTPException
 from starlette.middleware.gzip import GZipMiddleware
+from starlette.requests import ClientDisconnect
 
 from .config import ApiKey
 
@@ -142,6 +143,10 @@ class FrontDoor:
 
         try:
             await self._inner(scope)(scope, receive, send_with_headers)
+        except ClientDisconnect:
+            # the client left while its body was being read: there is no one to answer,
+            # and nothing went wrong here; logged as 499 (client closed request)
+            status = 499
         except Exception as exc:  # the one place every unexpected error ends
             status = 500
             # one line, no traceback: the type and where it was raised are enough to

@@ -51,3 +51,44 @@ def test_a_model_route_answers_as_through_the_router(body: bytes, suffix: str) -
     routed = asyncio.run(call(front.app, "POST", path, body))  # the exception layer, the router
     assert direct[0] == routed[0] and direct[0] in (200, 400, 422)
     assert _without_timing(direct[1]) == _without_timing(routed[1])
+
+
+def test_a_client_that_leaves_mid_body_is_no_internal_error(
+    caplog: pytest.LogCaptureFixture,
+) -> None:
+    """The body's first part arrives, then the client disconnects: nothing is sent (no one
+    is there), no internal error is logged, and the access line says 499."""
+    app = create_app(models=[TOY])
+    asyncio.run(call(app, "GET", "/healthz"))
+    messages = [
+        {"type": "http.request", "body": b'{"x": ', "more_body": True},
+        {"type": "http.disconnect"},
+    ]
+    sent: list[dict[str, Any]] = []
+
+    async def receive() -> dict[str, Any]:
+        return messages.pop(0) if messages else {"type": "http.disconnect"}
+
+    async def send(message: dict[str, Any]) -> None:
+        sent.append(message)
+
+    scope = {
+        "type": "http",
+        "asgi": {"version": "3.0"},
+        "http_version": "1.1",
+        "method": "POST",
+        "scheme": "http",
+        "path": "/api/v1" + TOY.path,
+        "raw_path": ("/api/v1" + TOY.path).encode(),
+        "query_string": b"",
+        "root_path": "",
+        "headers": [(b"content-type", b"application/json"), (b"host", b"test")],
+        "client": ("127.0.0.1", 1234),
+        "server": ("test", 80),
+    }
+    with caplog.at_level("INFO"):
+        asyncio.run(app(scope, receive, send))
+    assert sent == []
+    assert not [r for r in caplog.records if "internal error" in r.getMessage()]
+    lines = [json.loads(r.getMessage()) for r in caplog.records if r.name == "service.access"]
+    assert [line["status"] for line in lines] == [499]
