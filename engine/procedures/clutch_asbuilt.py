@@ -1616,12 +1616,11 @@ def _curve_tops(x: Mapping[str, Any], lifts: tuple[Any, Any] | None = None) -> t
     )
     rate: Any = 1.0 if given else 1.0 + lift_points(1.0, 0.0, 0.0, POINTS)[0]
     region = sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])
-    # the stack's compressions at the force's extrema, (2, …): maximum, minimum
-    shape = np.broadcast_shapes(*(v.shape for v in _arrays(x)))
+    # the stack's compressions at the force's extrema (maximum, minimum), one per design
     series = np.asarray(x["disc_series"], dtype=float)
-    stack = np.stack([np.broadcast_to(s * series, shape) for s in region])
-    settings = (np.moveaxis(stack, 0, -1)[..., None] - fixed[..., None, :]) / rate
-    force = np.moveaxis(np.asarray(Spring(x).force(stack)), 0, -1)
+    high, low, *_ = np.broadcast_arrays(region[0] * series, region[1] * series, *_arrays(x))
+    settings = (np.stack([high, low], axis=-1)[..., None] - fixed[..., None, :]) / rate
+    force = np.asarray(Spring(x).force(np.stack([high, low]))).T  # (…, 2)
     return settings, _gain_at(x, beta)[..., None, :] * force[..., None]
 
 
