@@ -1340,68 +1340,6 @@ def notes(x: Mapping[str, Any], spring: Spring, v: Mapping[str, Any]) -> list[st
     return out
 
 
-def bracketed_roots(
-    f: Callable[[Any, Any], Any], a: Any, b: Any, xtol: float, rtol: float, maxiter: int = 100
-) -> Any:
-    """Roots of ``f`` in the brackets [a, b], many at once: Brent's method, lane by lane.
-
-    ``f(x, lanes)`` gives the function of the lanes ``lanes`` (an index array) at ``x``;
-    ``a`` and ``b`` (arrays of one shape) bracket a sign change of each lane's function.
-    Every lane takes the steps of scipy's ``brentq`` (its C code, step for step: the
-    same floats for the same function values, ``tests/models/clutch/test_clutch_asbuilt.py``),
-    so one design and a sweep of many get the same root; a lane stops where it
-    converges, |b − a|/2 < (xtol + rtol |x|)/2. NaN where a bracket holds no sign change.
-    """
-    xpre = np.array(a, dtype=float, ndmin=1)
-    xcur = np.array(np.broadcast_to(b, xpre.shape), dtype=float)
-    lanes = np.arange(xpre.size)
-    fpre = np.asarray(f(xpre, lanes), dtype=float)
-    fcur = np.asarray(f(xcur, lanes), dtype=float)
-    root = np.where(fpre == 0.0, xpre, np.where(fcur == 0.0, xcur, np.nan))
-    active = np.isnan(root) & (np.signbit(fpre) != np.signbit(fcur))
-    xblk, fblk, spre, scur = (np.zeros_like(xpre) for _ in range(4))
-    for _ in range(maxiter):
-        if not active.any():
-            break
-        i = np.flatnonzero(active)
-        xp, xc, xb, fp, fc, fb = xpre[i], xcur[i], xblk[i], fpre[i], fcur[i], fblk[i]
-        s_pre, s_cur = spre[i], scur[i]
-        # a new bracket where the last step crossed the root
-        new = (fp != 0) & (fc != 0) & (np.signbit(fp) != np.signbit(fc))
-        xb, fb = np.where(new, xp, xb), np.where(new, fp, fb)
-        s_pre, s_cur = np.where(new, xc - xp, s_pre), np.where(new, xc - xp, s_cur)
-        # the best point so far is the current one
-        swap = np.abs(fb) < np.abs(fc)
-        xp, xc, xb = np.where(swap, xc, xp), np.where(swap, xb, xc), np.where(swap, xc, xb)
-        fp, fc, fb = np.where(swap, fc, fp), np.where(swap, fb, fc), np.where(swap, fc, fb)
-        delta = (xtol + rtol * np.abs(xc)) / 2
-        sbis = (xb - xc) / 2
-        done = (fc == 0) | (np.abs(sbis) < delta)
-        with np.errstate(all="ignore"):
-            interpolate = -fc * (xc - xp) / (fc - fp)
-            dpre = (fp - fc) / (xp - xc)
-            dblk = (fb - fc) / (xb - xc)
-            extrapolate = -fc * (fb * dblk - fp * dpre) / (dblk * dpre * (fb - fp))
-        stry = np.where(xp == xb, interpolate, extrapolate)
-        good = (
-            (np.abs(s_pre) > delta)
-            & (np.abs(fc) < np.abs(fp))
-            & (2 * np.abs(stry) < np.minimum(np.abs(s_pre), 3 * np.abs(sbis) - delta))
-        )
-        s_pre, s_cur = np.where(good, s_cur, sbis), np.where(good, stry, sbis)
-        step = np.where(np.abs(s_cur) > delta, s_cur, np.where(sbis > 0, delta, -delta))
-        root[i[done]] = xc[done]
-        active[i[done]] = False
-        go = ~done
-        j = i[go]
-        xpre[j], fpre[j], xblk[j], fblk[j] = xc[go], fc[go], xb[go], fb[go]
-        spre[j], scur[j] = s_pre[go], s_cur[go]
-        xcur[j] = xc[go] + step[go]
-        if j.size:
-            fcur[j] = np.asarray(f(xcur[j], j), dtype=float)
-    return root
-
-
 def newton_roots(
     f: Callable[[Any, Any], tuple[Any, Any]],
     a: Any,
@@ -1495,14 +1433,20 @@ _FINE_CANDIDATES = 8
 
 
 def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
-    r"""Nut setting Δ whose peak torque is ``target``; NaN where none in [0, upper] gives it.
+    r"""Nut setting Δ whose peak torque is ``target``: the least Δ in [0, upper] where it
+    reaches it; NaN where none does.
 
     .. math::
-        \max_k T(\Delta, z_k) = T_{target}
+        \min \{\Delta : \max_k T(\Delta, z_k) \ge T_{target}\}
 
     The first crossing on a 65-point grid of Δ brackets the root, refined by Newton's
     method on the peak and the slope of the curve holding it (:func:`newton_roots`,
-    :func:`peak_slope`), from the linear interpolation between the bracket's ends.
+    :func:`peak_slope`), from the linear interpolation between the bracket's ends. The
+    peak of a disc stack can rise above the target and fall back between two grid
+    points, at the top of a curve (:func:`_curve_tops`, where alone it has its local
+    maxima): where the least top at or past the target lies before that root (or none
+    of the grid's points reaches the target), the root is found again between it and
+    the grid point before it, which then hold one crossing (:func:`_first_top`).
     Floats or arrays (``x``'s arrays one design per element): a float for one design,
     the same number as an element of a sweep. [001, eq. 1–3] on :func:`characteristic`.
     """
@@ -1516,13 +1460,21 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
     shared = not _arrays(design) and np.ndim(upper) == 0
 
     def excess_slope(delta: Any, lanes: Any) -> tuple[Any, Any]:
+        if curves is not None:  # the peak over the lift points that can hold it there
+            peak, slope = curves.peak_slope(delta, span[lanes])
+            return peak - aims[lanes], slope
         part = design if shared else points.take(x, n, lanes) if varied else x
         c = characteristic(part, Spring(part), delta, peak_only=True)
         return np.asarray(c["peak_torque"], dtype=float) - aims[lanes], c["peak_slope"]
 
     def excess(delta: Any, lanes: Any) -> Any:
-        return excess_slope(delta, lanes)[0]
+        part = design if shared else points.take(x, n, lanes) if varied else x
+        c = characteristic(part, Spring(part), delta, peak_only=True)
+        return np.asarray(c["peak_torque"], dtype=float) - aims[lanes]
 
+    curves: _Curves | None = None
+    span = np.zeros(n, dtype=np.intp)  # the grid interval of a shared grid's bracket
+    peaks: Any = None
     if shared:  # one grid for every point, the same floats as each point's own
         line = np.linspace(0.0, float(upper), 65)
         peaks = characteristic(design, Spring(design), line, peak_only=True)["peak_torque"]
@@ -1531,12 +1483,10 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
     else:
         lo_val = excess(np.zeros(n), np.arange(n))
     root = np.where(lo_val == 0.0, 0.0, np.nan)
-    todo = np.flatnonzero(lo_val < 0.0)
+    todo = pending = np.flatnonzero(lo_val < 0.0)
     # each point's bracket on the grid and the function's values at its ends
     low, high = np.full(n, np.nan), np.full(n, np.nan)
     f_low, f_high = np.full(n, np.nan), np.full(n, np.nan)
-    span = np.zeros(n, dtype=np.intp)  # the grid interval of a shared grid's bracket
-    curves: _Curves | None = None
     if shared:
         # the first grid point at or past a target: where the running largest peak
         # (a torque that is not a number never reaches it) first reaches it
@@ -1584,25 +1534,173 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
             before[lanes] = values[:, -1]
             begin[lanes] += _GRID_BLOCK
             lanes = lanes[~reached & (begin[lanes] <= 64)]
-    bracketed = np.flatnonzero(np.isfinite(low))
-    if bracketed.size:
-        if curves is not None:
-            shape = curves  # the peak over the lift points that can hold it in the bracket
 
-            def excess_slope(delta: Any, lanes: Any) -> tuple[Any, Any]:
-                peak, slope = shape.peak_slope(delta, span[lanes])
-                return peak - aims[lanes], slope
+    def solve(lanes: Any) -> None:
+        if lanes.size:
+            root[lanes] = newton_roots(
+                lambda delta, part: excess_slope(delta, lanes[part]),
+                low[lanes],
+                high[lanes],
+                f_low[lanes],
+                f_high[lanes],
+                xtol=1e-12,
+                rtol=1e-12,
+            )
 
-        root[bracketed] = newton_roots(
-            lambda delta, lanes: excess_slope(delta, bracketed[lanes]),
-            low[bracketed],
-            high[bracketed],
-            f_low[bracketed],
-            f_high[bracketed],
-            xtol=1e-12,
-            rtol=1e-12,
-        )
+    solve(np.flatnonzero(np.isfinite(low)))
+    if x["spring_type"] == "disc" and pending.size:
+        # a curve's top past the target before the root: the first crossing lies below it
+        part = design if shared else points.take(x, n, pending) if varied else x
+        known = None if curves is None else curves.tops
+        found = _first_top(part, pending, aims, tops, root, peaks, excess, known)
+        if found is not None:
+            lanes, top, f_top = found
+            # the grid point before the top: the peak is below the target up to there
+            row = np.broadcast_to(line if shared else grid[lanes], (lanes.size, 65))
+            j = np.count_nonzero(row < top[:, None], axis=-1) - 1
+            low[lanes], high[lanes], f_high[lanes] = row[np.arange(lanes.size), j], top, f_top
+            f_low[lanes] = peaks[j] - aims[lanes] if shared else excess(low[lanes], lanes)
+            span[lanes] = j + 1
+            solve(lanes)
     return root if varied or np.ndim(target) or np.ndim(upper) else float(root[0])
+
+
+def _curve_tops(x: Mapping[str, Any], lifts: tuple[Any, Any] | None = None) -> tuple[Any, Any]:
+    r"""The settings δ where a disc stack's torque at each lift point has an extremum, and
+    the torque there: the only places where the peak torque max_k T_k(δ) has its local
+    maxima.
+
+    .. math::
+        \delta_{kq} = \frac{i\,s_q - b_k}{a_k}, \qquad T_{kq} = c_k\,F(i\,s_q)
+
+    At lift point k the stack is compressed by δ + z_k(δ) = a_k δ + b_k (a_k = 1 where
+    ``ball_lift`` is given, else 1 + u on the flank, z = u Δ, and 2 over the rim), so
+    T_k(δ) = c_k F(a_k δ + b_k), c_k the torque per newton (:func:`_gain_at`), has its
+    extrema where the disc force has its, s_max and s_min
+    (:func:`springs.disc_falling_region`; NaN where the force rises everywhere). A local
+    maximum of the largest of such curves is one of a curve that holds it: between
+    them the largest of rising or falling curves has none. Arrays with (q, k) on two
+    last axes, 2 × 81; ``x``'s arrays one design per element; ``lifts`` the lift
+    points' b_k and β_k where known (else from :func:`lift_points`). [001, eq. 1–3]
+    with EN 16983's force.
+
+    The default disc stack (h0/t = 2, 2 in series, h = 0.4 mm): the seated point k = 0
+    reaches the force's maximum at the setting i s_max = 2.367 mm, the last flank point
+    (z = h) 0.4 mm earlier:
+
+    >>> from engine.models.clutch import BALL_CLUTCH
+    >>> disc = {"spring_type": "disc", "disc_outer_diameter": 0.04,
+    ...         "disc_inner_diameter": 0.0204, "disc_thickness": 0.001,
+    ...         "disc_cone_height": 0.002, "disc_series": 2, "spring_deflection": 0.002}
+    >>> geometry = {"ball_circle_diameter": 0.05, "ball_count": 6, "ball_diameter": 0.005,
+    ...             "groove_angle": math.radians(45.0), "flank_friction": 0.1}
+    >>> x, _ = BALL_CLUTCH.validate({**geometry, **disc, "ball_lift": 0.0004})
+    >>> settings, torque = _curve_tops(x)
+    >>> [round(float(v) * 1e3, 4) for v in (settings[0, 0], settings[0, 40])]
+    [2.367, 1.967]
+
+    On the flank (one contact angle) every curve's top is the same torque:
+
+    >>> bool(np.all(torque[0, :41] == torque[0, 0]) and torque[0, 41] != torque[0, 0])
+    True
+
+    Where the lift follows the setting, the last flank point is compressed by 2 Δ:
+
+    >>> x, _ = BALL_CLUTCH.validate({**geometry, **disc})
+    >>> [round(float(v) * 1e3, 4) for v in _curve_tops(x)[0][0, [0, 40]]]
+    [2.367, 1.1835]
+    """
+    given = x["ball_lift"] is not None
+    fixed, beta = lifts or lift_points(
+        x["ball_lift"] if given else 0.0, x["ball_diameter"], _ride(x), POINTS
+    )
+    rate: Any = 1.0 if given else 1.0 + lift_points(1.0, 0.0, 0.0, POINTS)[0]
+    region = sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"])
+    # the stack's compressions at the force's extrema (maximum, minimum), one per design
+    series = np.asarray(x["disc_series"], dtype=float)
+    high, low, *_ = np.broadcast_arrays(region[0] * series, region[1] * series, *_arrays(x))
+    settings = (np.stack([high, low], axis=-1)[..., None] - fixed[..., None, :]) / rate
+    force = np.asarray(Spring(x).force(np.stack([high, low]))).T  # (…, 2)
+    return settings, _gain_at(x, beta)[..., None, :] * force[..., None]
+
+
+def _first_top(
+    x: Mapping[str, Any],
+    lanes: Any,
+    aims: Any,
+    uppers: Any,
+    root: Any,
+    peaks: Any,
+    excess: Callable[[Any, Any], Any],
+    known: tuple[Any, Any] | None = None,
+) -> tuple[Any, Any, Any] | None:
+    """The points of ``lanes`` whose peak torque reaches its target at a curve's top
+    (:func:`_curve_tops`) in (0, upper] before ``root`` (or where ``root`` is NaN): those
+    points, the least such top of each and the function ``excess`` there; None where
+    there are none.
+
+    A top counts where the curve's torque there (with a slack of :attr:`_Curves.SLACK`
+    for rounding) and the peak torque at its setting both reach the target. Up to the
+    least, the peak has no local maximum at or past the target (the tops hold them
+    all): between the grid point before it and it, the peak crosses the target once.
+    ``x`` the design (``peaks`` not None: one design for every point, whose tops are
+    all evaluated once) or the points' designs (each lane's tops evaluated in order of
+    the setting until one counts).
+    """
+    tops = _curve_tops(x) if known is None else known
+    settings, torque = (np.reshape(v, (*np.shape(v)[:-2], -1)) for v in tops)
+    reach = torque + _Curves.SLACK * np.abs(torque)
+    if peaks is not None:  # one design: the least top whose peak reaches each target
+        inside = (settings > 0.0) & (settings <= uppers[lanes[0]])
+        inside &= reach >= np.min(aims[lanes])  # (a NaN torque reaches none)
+        settings, reach = settings[inside], reach[inside]
+        # the targets a top before their root may reach: only there is the peak asked for
+        limit = np.where(np.isnan(root[lanes]), np.inf, root[lanes])
+        ask = np.flatnonzero(
+            (aims[lanes] <= np.max(reach, initial=-np.inf))
+            & (limit > np.min(settings, initial=np.inf))
+        )
+        if not ask.size:
+            return None
+        order = np.argsort(settings, kind="stable")
+        settings, reach = settings[order], reach[order]
+        before = np.searchsorted(settings, limit[ask])  # the tops before the root
+        best = np.maximum.accumulate(reach)
+        ask, before = ask[before > 0], before[before > 0]
+        keep = best[before - 1] >= aims[lanes[ask]]
+        ask, before = ask[keep], before[keep]
+        if not ask.size:
+            return None
+        settings, reach = settings[: np.max(before)], reach[: np.max(before)]
+        char = characteristic(x, Spring(x), settings, peak_only=True)["peak_torque"]
+        at_top = np.asarray(char, dtype=float)
+        counts = np.minimum(reach, at_top)
+        running = np.maximum.accumulate(np.where(np.isnan(counts), -np.inf, counts))
+        k = np.searchsorted(running, aims[lanes[ask]], side="left")
+        hit, k = ask[k < before], k[k < before]  # at a top before the root
+        if not hit.size:
+            return None
+        return lanes[hit], settings[k], at_top[k] - aims[lanes[hit]]
+    settings = np.broadcast_to(settings, (lanes.size, settings.shape[-1]))
+    reach = np.broadcast_to(reach, settings.shape)
+    ok = (
+        (reach >= aims[lanes, None])
+        & (settings > 0.0)
+        & (settings <= uppers[lanes, None])
+        & ~(settings >= root[lanes, None])
+    )
+    rows = np.flatnonzero(ok.any(axis=-1))
+    top, f_top = np.full(lanes.size, np.nan), np.full(lanes.size, np.nan)
+    while rows.size:  # each lane's tops that count, least first, until one reaches it
+        col = np.argmin(np.where(ok[rows], settings[rows], np.inf), axis=-1)
+        value = excess(settings[rows, col], lanes[rows])
+        hit = value >= 0.0
+        top[rows[hit]], f_top[rows[hit]] = settings[rows[hit], col[hit]], value[hit]
+        ok[rows[~hit], col[~hit]] = False
+        rows = rows[~hit]
+        rows = rows[ok[rows].any(axis=-1)]
+    found = np.flatnonzero(np.isfinite(top))
+    return (lanes[found], top[found], f_top[found]) if found.size else None
 
 
 class _Curves:
@@ -1621,9 +1719,13 @@ class _Curves:
     #: Relative slack on the bounds (rounding is ~1e-16 of a torque).
     SLACK = 1e-9
 
-    def __init__(self, x: Mapping[str, Any], lift: Any, beta: Any, candidates: Any) -> None:
+    def __init__(
+        self, x: Mapping[str, Any], lift: Any, beta: Any, candidates: Any, tops: Any = None
+    ) -> None:
         self.x, self.spring = x, Spring(x)
         self.lift, self.beta, self.candidates = lift, beta, candidates
+        #: the curves' tops, :func:`_curve_tops`
+        self.tops = _curve_tops(x, lifts=(lift, beta)) if tops is None else tops
         # the candidates' grid: ``refine`` intervals in each of the search's, from
         # ``start`` in steps of ``step``
         self.refine, self.start, self.step = 1, 0.0, 1.0
@@ -1657,7 +1759,7 @@ class _Curves:
         padded = np.where(np.arange(width) < count, order, first)
         # row j of ``candidates`` is the interval ending at grid point j (row 0 unused)
         candidates = np.concatenate([padded[:1], padded])
-        out = cls(x, lift, beta, candidates)
+        out = cls(x, lift, beta, candidates, curves.tops)
         out.refine, out.start = refine, float(grid[0])
         out.step = (float(grid[-1]) - out.start) / intervals
         return out
@@ -1668,10 +1770,9 @@ class _Curves:
         where a torque is not finite. Each curve is the disc force of a setting that
         rises with δ, times a constant: its extremes lie at the ends or at the force's
         extrema inside (none where the force rises everywhere)."""
-        x, every = self.x, np.arange(self.lift.size)
+        every = np.arange(self.lift.size)
         ends = self.torque(grid[:, None], every)  # (65, 81)
-        extrema = np.asarray(sp.disc_falling_region(x["disc_thickness"], x["disc_cone_height"]))
-        at = extrema[:, None] * x["disc_series"] - self.lift  # (2, 81)
+        at = self.tops[0]  # (2, 81): the curves' tops
         inner = self.torque(np.where(np.isfinite(at), at, 0.0), every)
         if not (np.all(np.isfinite(ends)) and np.all(np.isfinite(inner))):
             return None

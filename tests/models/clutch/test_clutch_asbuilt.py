@@ -358,8 +358,9 @@ def _crosses_within(x, spring, target, root, tol):
 def test_the_setting_search_on_one_grid_call_is_the_point_by_point_search():
     # disc stacks whose peak torque rises, flattens and falls with the setting (h0/t from
     # 1 to 2.2, 1 to 3 in series, 1 to 3 in parallel) and targets across and beyond their
-    # reach: the same bracket and None as a characteristic per grid point, and a root
-    # within Newton's stated tolerance (1e-12 m) of where the peak crosses the target
+    # reach: no later than the first grid point a characteristic per grid point finds
+    # at or past the target, and a root within Newton's stated tolerance (1e-12 m) of
+    # where the peak crosses the target
     from engine.procedures import clutch_asbuilt as asbuilt
 
     rng = np.random.default_rng(11)
@@ -379,9 +380,10 @@ def test_the_setting_search_on_one_grid_call_is_the_point_by_point_search():
         for target in rng.uniform(0.05, 1.3, 3) * max(top, 1.0):
             want = _first_bracket_one_by_one(x, spring, float(target), upper)
             got = asbuilt.solve_setting(x, spring, float(target), upper)
-            assert (got is None) == (want is None), (design, target)
-            if want is not None:
-                assert want[0] <= got <= want[1], (design, target)
+            # no later than the grid's first crossing (earlier where the peak reaches the
+            # target between grid points: test_the_setting_is_the_first_crossing_*)
+            assert want is None or (got is not None and got <= want[1]), (design, target)
+            if got is not None:
                 assert _crosses_within(x, spring, float(target), got, 1e-12), (design, target)
             found += want is not None
             missed += want is None
@@ -538,35 +540,6 @@ def test_a_custom_wires_elastic_modulus_is_an_input():
         with pytest.raises(engine.InputOutOfRange, match="160000 … 240000 MPa") as err:
             run(BALL_CLUTCH, slender, spring_elastic_modulus=e)
         assert err.value.field == "spring_elastic_modulus"
-
-
-def test_brent_on_many_brackets_takes_scipys_steps():
-    # functions whose roots need interpolation, extrapolation and bisection steps, each
-    # lane against scipy's brentq on that lane alone: the same floats
-    from scipy.optimize import brentq
-
-    from engine.procedures.clutch_asbuilt import bracketed_roots
-
-    rng = np.random.default_rng(2)
-    c = rng.uniform(0.1, 3.0, 200)
-    shift = rng.uniform(-0.5, 0.5, 200)
-
-    def f(x, lanes):
-        return np.sin(c[lanes] * x) - 0.3 + shift[lanes] * x**3
-
-    b = np.full(200, 2.0)
-    ok = np.signbit(f(np.zeros(200), np.arange(200))) != np.signbit(f(b, np.arange(200)))
-    got = bracketed_roots(f, np.zeros(200), b, xtol=1e-12, rtol=1e-12)
-    assert ok.sum() > 50 and np.isnan(got[~ok]).all()
-    for j in np.flatnonzero(ok):
-        want = brentq(
-            lambda x, j=j: float(f(np.array([x]), np.array([j]))[0]),
-            0.0,
-            2.0,
-            xtol=1e-12,
-            rtol=1e-12,
-        )
-        assert got[j] == want, j
 
 
 def test_disc_stack_setting_on_the_array_path_equals_single_runs():
@@ -804,3 +777,163 @@ def test_a_large_sweep_on_finer_candidates_finds_the_roots_of_small_ones(ratio):
     )
     np.testing.assert_array_equal(big, small)
     assert np.isfinite(big).sum() > n // 2 and np.isnan(big).sum() > 100
+
+
+def _random_disc_cases(seed, count):
+    """Random disc-stack clutches (h0/t 1…3, 1…3 in series and in parallel, ball lift
+    given or following the setting) with a target each: anywhere under the grid's
+    largest peak, just under it (where the peak can rise above it and fall back between
+    two grid points) or just over it (reached only between grid points, or not at all).
+    """
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    rng = np.random.default_rng(seed)
+    for _ in range(count):
+        design = {
+            **DISC,
+            "disc_cone_height": float(rng.uniform(1.0, 3.0)) * DISC["disc_thickness"],
+            "disc_series": int(rng.integers(1, 4)),
+            "disc_parallel": int(rng.integers(1, 4)),
+            "ball_diameter": float(rng.uniform(0.004, 0.008)),
+            "groove_angle": float(rng.uniform(35, 55)) * DEG,
+            "flank_friction": float(rng.uniform(0.05, 0.2)),
+            "ball_lift": None if rng.uniform() < 0.3 else float(rng.uniform(0.0001, 0.0008)),
+        }
+        x, _ = BALL_CLUTCH.validate(design)
+        x = dict(x)
+        upper = float(x["disc_series"] * x["disc_cone_height"])
+        grid = np.linspace(0.0, upper, 65)
+        peaks = asbuilt.characteristic(x, asbuilt.Spring(x), grid, peak_only=True)
+        top = float(np.max(peaks["peak_torque"]))
+        kind = rng.integers(0, 3)
+        if kind == 0:
+            target = float(rng.uniform(0.05, 1.0)) * top
+        elif kind == 1:
+            target = top * (1 - 10 ** rng.uniform(-7, -2))
+        else:
+            target = top * (1 + 10 ** rng.uniform(-9, -4))
+        yield x, upper, target
+
+
+def _first_crossing_by_scan(x, target, upper, points=100_001):
+    """The least setting whose peak torque reaches ``target``, by brute force: the first
+    of ``points`` equal steps over [0, upper] at or past it, then bisection to
+    neighbouring floats; 0.0 where the seated peak is the target, NaN where it is
+    above it or no step reaches it."""
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    spring = asbuilt.Spring(x)
+
+    def peak(delta):
+        delta = np.atleast_1d(np.asarray(delta, dtype=float))
+        return np.asarray(asbuilt.characteristic(x, spring, delta, peak_only=True)["peak_torque"])
+
+    seated = float(peak(0.0)[0])
+    if seated >= target:
+        return 0.0 if seated == target else math.nan
+    scan = np.linspace(0.0, upper, points)
+    values = np.concatenate([peak(scan[i : i + 10_000]) for i in range(0, points, 10_000)])
+    reached = np.flatnonzero(values >= target)
+    if not reached.size:
+        return math.nan
+    lo, hi = float(scan[reached[0] - 1]), float(scan[reached[0]])
+    while (mid := 0.5 * (lo + hi)) not in (lo, hi):
+        lo, hi = (lo, mid) if float(peak(mid)[0]) >= target else (mid, hi)
+    return hi
+
+
+def _the_first_crossing(x, upper, target):
+    """The setting search's root for one design, equal to the same point in an array of
+    designs (each point's own grid) and within 1e-12 m of the brute-force first
+    crossing; returns the root."""
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    got = asbuilt.setting_roots(x, target, upper)
+    varied = {**x, "disc_thickness": np.full(3, x["disc_thickness"])}
+    aims = np.array([target, target, 0.5 * target])
+    np.testing.assert_array_equal(asbuilt.setting_roots(varied, aims, upper)[:2], [got, got])
+    want = _first_crossing_by_scan(x, target, upper)
+    assert math.isnan(got) == math.isnan(want), (got, want)
+    if not math.isnan(want):
+        assert abs(got - want) <= 1e-12, (got, want)
+    return got
+
+
+#: Cases of ``_random_disc_cases(2, …)`` whose first crossing the 65-point grid missed:
+#: an earlier crossing in the grid interval before the bracket (18: 0.19 mm early, ball
+#: lift given; 16: 27 µm, the lift following the setting), or none on the grid at all
+#: (15 and 75: the peak reaches the target only between two grid points).
+MISSED = (15, 16, 18, 75)
+
+
+def test_the_setting_is_the_first_crossing_where_the_grid_missed_it():
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    cases = list(_random_disc_cases(2, max(MISSED) + 1))
+    for j in MISSED:
+        x, upper, target = cases[j]
+        grid = np.linspace(0.0, upper, 65)
+        got = _the_first_crossing(x, upper, target)
+        # the grid's own first crossing: later than the root by more than a step, or none
+        peaks = asbuilt.characteristic(x, asbuilt.Spring(x), grid, peak_only=True)
+        reached = np.flatnonzero(peaks["peak_torque"] >= target)
+        assert not reached.size or grid[reached[0]] > got + 1e-6, j
+
+
+@pytest.mark.slow
+def test_the_setting_is_the_first_crossing_on_random_disc_stacks():
+    # a tenth of such cases missed the first crossing on the grid's brackets alone
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    found = early = 0
+    for x, upper, target in _random_disc_cases(2, 120):
+        got = _the_first_crossing(x, upper, target)
+        grid = np.linspace(0.0, upper, 65)
+        peaks = asbuilt.characteristic(x, asbuilt.Spring(x), grid, peak_only=True)
+        reached = np.flatnonzero(peaks["peak_torque"] >= target)
+        found += not math.isnan(got)
+        early += not math.isnan(got) and (not reached.size or grid[reached[0] - 1] > got)
+    assert found >= 50 and early >= 5, (found, early)
+
+
+def test_a_target_on_the_grids_top_is_reached_before_it():
+    # h0/t = 2.2: the peak torque wavers near its top (each lift point's torque peaks
+    # at the stack's force maximum in turn); a target equal to the largest grid peak is
+    # reached inside the grid interval before that point, fallen back from and reached
+    # again at it: three crossings in the bracket, the first ~10 µm before the grid point
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    x, upper, grid, peaks = _disc_setting_case(2.2)
+    j = int(np.argmax(peaks))
+    target = float(peaks[j])
+    assert np.all(peaks[:j] < target)
+    fine = np.linspace(grid[j - 1], grid[j], 4001)
+    inside = asbuilt.characteristic(x, asbuilt.Spring(x), fine, peak_only=True)["peak_torque"]
+    above = np.asarray(inside) >= target
+    assert np.count_nonzero(np.diff(above.astype(int))) == 3 and above[-1]
+    got = _the_first_crossing(x, upper, target)
+    assert grid[j - 1] < got < grid[j] - 5e-6
+    # just under it: the same first crossing, three crossings again
+    under = target * (1 - 1e-9)
+    above = np.asarray(inside) >= under
+    assert np.count_nonzero(np.diff(above.astype(int))) == 3
+    assert _the_first_crossing(x, upper, under) <= got
+
+
+def test_a_bracket_with_several_crossings_gives_the_first():
+    # h0/t = 2: near the top the peak rises above and falls below a target several
+    # times inside one grid interval (seven crossings); the root is the first
+    from engine.procedures import clutch_asbuilt as asbuilt
+
+    x, upper, grid, peaks = _disc_setting_case(2.0)
+    j = 32
+    fine = np.linspace(grid[j - 1], grid[j], 4001)
+    inside = np.asarray(
+        asbuilt.characteristic(x, asbuilt.Spring(x), fine, peak_only=True)["peak_torque"]
+    )
+    target = float(peaks[j] * (1 - 1e-7))  # 6.4 µN·m under the grid point's peak
+    assert np.all(peaks[:j] < target) and peaks[j] >= target
+    above = inside >= target
+    assert np.count_nonzero(np.diff(above.astype(int))) == 7  # up, down, …, up
+    got = _the_first_crossing(x, upper, target)
+    assert got < fine[np.argmax(above)] and got > fine[np.argmax(above) - 1]
