@@ -1351,10 +1351,8 @@ def newton_roots(
     maxiter: int = 100,
 ) -> Any:
     r"""Roots of ``f`` in the brackets [a, b], many at once: Newton's method kept inside
-    the bracket, lane by lane.
-
-    .. math::
-        x_{n+1} = x_n - \frac{f(x_n)}{f'(x_n)}
+    the bracket, lane by lane (a numerical method, not an equation of the model: each step
+    is x_{n+1} = x_n − f(x_n)/f'(x_n)).
 
     ``f(x, lanes)`` gives (value, derivative) of the lanes ``lanes`` (an index array) at
     ``x``; ``fa`` < 0 ≤ ``fb`` are the values at ``a`` < ``b`` (a rising crossing). The
