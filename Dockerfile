@@ -30,7 +30,7 @@ COPY wheelhouse/app ./app
 # write there and would parse them afresh at every start (0.13 s more CPU, measured).
 RUN /opt/venv/bin/python -m pip install --quiet --no-index --no-deps ./app/*.whl \
     && rm -rf /app \
-    && /opt/venv/bin/python -c "import service.units" \
+    && /opt/venv/bin/python -c "import service.units; service.units.registry()" \
     && useradd --create-home --uid 10001 app
 # the manual, built by scripts/image from the same checkout as the wheel, at /manual/
 COPY wheelhouse/manual /opt/manual

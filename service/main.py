@@ -403,15 +403,21 @@ def create_app(
         responses={503: {"description": "warming up, or a lane has no free slot and a full queue"}},
     )
     async def readyz() -> JSONResponse:
-        admits = pool.ready()
-        ready = admits and warming.done
-        status = "ready" if ready else "busy" if warming.done else "warming"
+        admits, study_state = pool.ready(), studies.state()
+        stored = "store_error" not in study_state  # the job store can be read
+        ready = admits and warming.done and stored
+        if ready:
+            status = "ready"
+        elif not warming.done:
+            status = "warming"
+        else:  # a store that cannot be read is said before a full lane
+            status = "busy" if stored else "store_error"
         return JSONResponse(
             {
                 "status": status,
                 "warm_up": warming.state,
                 "lanes": pool.state(),
-                "studies": studies.state(),
+                "studies": study_state,
             },
             status_code=200 if ready else 503,
             headers=None if ready else {"retry-after": "1"},

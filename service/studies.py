@@ -526,16 +526,23 @@ class Studies:
 
     def state(self) -> dict[str, Any]:
         """Studies running and queued here, the unfinished ones in all, and the limits
-        (for ``/readyz``)."""
+        (for ``/readyz``); when the job store cannot be read, ``active`` is None and
+        ``store_error`` says why (``/readyz`` is then not ready)."""
         with self.lock:
             here = [j for j in self.jobs.values() if j.active]
-        return {
+        state: dict[str, Any] = {
             "running": sum(j.state == "running" for j in here),
             "queued": sum(j.state == "queued" for j in here),
-            "active": len(self.store.active()),
+            "active": None,
             "max_active": self.settings.max_active,
             "per_client": self.settings.per_client,
         }
+        try:
+            state["active"] = len(self.store.active())
+        except sqlite3.Error as exc:  # StoreError too: a database gone, locked, or broken
+            log.warning("readiness: the job store cannot be read: %s", exc)
+            state["store_error"] = f"{type(exc).__name__}: {exc}"[:200]
+        return state
 
     def _prune(self) -> None:
         self.store.prune(self.settings.keep_s, _KEEP_JOBS)
@@ -762,6 +769,7 @@ class Studies:
                 self._finish(job, "cancelled")
         if self._dask is not None:
             self._dask.close()
+        self.store.close()
 
 
 def _si(spec: ModelSpec, name: str, value: Number | None, part: str) -> float | None:
