@@ -526,8 +526,10 @@ imported scipy.optimize (14 % of `import service.main`) and `engine.numerics.law
 scipy.stats (9 %); the warm-up imports only scipy.special (`tool.capability`'s example), and
 studies import scipy.stats on their first request. pint's unit registry is built from
 pint's definition cache (`service/__pycache__/pint`, parsed afresh where it cannot be
-read or written): 0.05–0.07 s instead of 0.24–0.47 s. It is not built on first use, which
-would put that time on the first request with a unit string. What remains, from
+read or written): 0.05–0.07 s instead of 0.24–0.47 s. Since then pint is neither imported
+nor built before `/readyz` says ready: the warm-up builds the registry just after it (0.3 s
+of CPU off the path to ready, pint's import of dask included), so the form's unit strings
+still find it built; a request with one that comes sooner waits for it. What remained, from
 `python -X importtime` after these changes (three runs, load 3–14): pint and the units
 18–31 % (pint imports dask whenever dask is installed, 11–19 %: pint 0.25 offers no
 switch, and hiding dask from its import would patch its internals), numba 11–19 %

@@ -54,7 +54,7 @@ from uvicorn.middleware.proxy_headers import ProxyHeadersMiddleware
 import engine
 from engine import ModelSpec
 
-from . import errors
+from . import errors, units
 from .api import API_PREFIX, Limits, catalogue_router, model_router
 from .config import Settings
 from .extra import EXTRA_ROUTERS
@@ -194,6 +194,8 @@ class WarmUp:
     >>> on.run(); on.done, on.state, on.seconds is not None
     (True, 'done', True)
 
+    Once it says so, it builds the unit registry (:func:`service.units.registry`) too.
+
     ``after`` runs once it is done, before it says so (at once when off):
 
     >>> seen = []
@@ -240,6 +242,11 @@ class WarmUp:
                     self._after()
             finally:
                 self._done.set()
+        # then, ready already, the unit registry (pint, 0.3 s of CPU): the form sends unit
+        # strings, and its first request should not pay for it; one that comes sooner
+        # waits on the registry's lock, as it would without this
+        with contextlib.suppress(Exception):
+            units.registry()
 
     def wait(self, timeout: float | None = None) -> bool:
         """Block until done or ``timeout`` [s]; whether it is done."""

@@ -74,8 +74,10 @@ def registry() -> Any:
     pint (0.12 s of CPU to import, and it imports dask whenever dask is installed: 0.08 s
     more) and its registry (0.02 s from the definition cache) are loaded here, not when the
     service starts: a number in SI units, a dimensionless input ("5 %") and a request
-    without unit strings never load pint. The first unit string pays that time once per
-    process; a lock keeps two first requests from building two registries.
+    without unit strings never load pint. The start-up warm-up builds it once it has said
+    ready (:class:`service.main.WarmUp`), so the form's unit strings find it built; without
+    the warm-up the first unit string pays that time, once per process. A lock keeps two
+    first callers from building two registries.
 
     >>> registry().parse_units("Nm")
     <Unit('Nm')>

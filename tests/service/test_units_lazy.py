@@ -9,6 +9,9 @@ import json
 import os
 import subprocess
 import sys
+import time
+
+import pytest
 
 from .servers import ROOT
 
@@ -46,3 +49,25 @@ def test_pint_is_loaded_by_the_first_unit_string_and_not_before() -> None:
     del seen["unit"]["elapsed_s"], seen["si"]["elapsed_s"]
     assert seen["unit"] == seen["si"]  # 200 mm is 0.2 m: the same answer
     assert seen["refused"] == [422, "diameter"]
+
+
+def test_the_warm_up_builds_the_registry_once_it_says_ready(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The form sends unit strings: the warm-up builds the registry after it says ready, so
+    /readyz does not wait for pint and the form's first request does not pay for it."""
+    from service import units
+    from service.main import WarmUp
+
+    monkeypatch.setattr(units, "_REGISTRY", None)
+    seen: list[bool] = []
+    warm = WarmUp([], enabled=True)
+    warm.start(after=lambda: seen.append(units._REGISTRY is None))
+    assert warm.wait(30)
+    for _ in range(3000):  # the registry comes after "done"
+        if units._REGISTRY is not None:
+            break
+        time.sleep(0.01)
+    assert seen == [True]  # not built before it was ready
+    assert units._REGISTRY is not None
+    assert units.registry().parse_units("mm") == units.registry().parse_units("millimeter")
