@@ -802,20 +802,7 @@ def _drive(x: Mapping[str, Any], *, parts: bool = True, torque: str = "both") ->
     energy = rotational_energy(inertia, w)
     energies = w3 = w5 = None
     if parts:
-        energies = part_energies(
-            w,
-            x["coupling_mass"],
-            x["coupling_diameter"],
-            x["motor_pulley_mass"],
-            x["motor_pulley_diameter"],
-            x["flywheel_mass"],
-            x["flywheel_diameter"],
-            x["drive_gear_mass"],
-            x["drive_gear_diameter"],
-            x["spindle_gear_mass"],
-            x["spindle_gear_diameter"],
-            x["spindle_count"],
-        )
+        energies = part_energies(w, *_parts(x))
         w3 = flywheel_speed(w, x["motor_pulley_diameter"], x["flywheel_diameter"])
         w5 = spindle_speed(w3, x["drive_gear_diameter"], x["spindle_gear_diameter"])
     u = x["drive_gear_diameter"] / x["spindle_gear_diameter"]
@@ -933,7 +920,13 @@ def _coupling_slip_torque(x: Mapping[str, Any], d: _Drive) -> Any:
 
 def _inertia(x: Mapping[str, Any], *, coupling: bool = True, **motor: Any) -> Any:
     """Inertia of parts 1…5 (or 2…5) at the motor shaft; ``motor``: rotor and efficiencies."""
-    return drive_inertia(
+    return drive_inertia(*_parts(x, coupling=coupling), **motor)
+
+
+def _parts(x: Mapping[str, Any], *, coupling: bool = True) -> tuple[Any, ...]:
+    """Mass and diameter of parts 1…5 and the spindle count, in the order the drive's
+    energy and inertia functions take them (``coupling`` False: part 1's mass 0)."""
+    return (
         x["coupling_mass"] if coupling else 0.0,
         x["coupling_diameter"],
         x["motor_pulley_mass"],
@@ -945,7 +938,6 @@ def _inertia(x: Mapping[str, Any], *, coupling: bool = True, **motor: Any) -> An
         x["spindle_gear_mass"],
         x["spindle_gear_diameter"],
         x["spindle_count"],
-        **motor,
     )
 
 

@@ -463,15 +463,19 @@ class Spring:
                 x["spring_active_coils"],
             )
             return np.asarray(rate) * np.asarray(deflection)
-        single = sp.disc_force(
-            np.asarray(deflection) / x["disc_series"],
+        single = sp.disc_force(np.asarray(deflection) / x["disc_series"], *self.disc_geometry())
+        return sp.stack_force(single, x["disc_parallel"], x["disc_friction"])
+
+    def disc_geometry(self) -> tuple[Any, ...]:
+        """One disc's geometry and modulus, in the order the disc functions take them."""
+        x = self.x
+        return (
             x["disc_outer_diameter"],
             x["disc_inner_diameter"],
             x["disc_thickness"],
             x["disc_cone_height"],
             x["disc_elastic_modulus"],
         )
-        return sp.stack_force(single, x["disc_parallel"], x["disc_friction"])
 
     def rate(self, deflection: Any) -> Any:
         """dF/d(deflection): the helical rate, or the stack's (the disc's rate at the
@@ -480,14 +484,7 @@ class Spring:
         x = self.x
         if self.kind == "helical":
             return np.asarray(self.force(1.0)) * np.ones(np.shape(deflection))
-        single = sp.disc_rate(
-            np.asarray(deflection) / x["disc_series"],
-            x["disc_outer_diameter"],
-            x["disc_inner_diameter"],
-            x["disc_thickness"],
-            x["disc_cone_height"],
-            x["disc_elastic_modulus"],
-        )
+        single = sp.disc_rate(np.asarray(deflection) / x["disc_series"], *self.disc_geometry())
         return sp.stack_force(
             np.asarray(single) / x["disc_series"], x["disc_parallel"], x["disc_friction"]
         )
@@ -501,14 +498,9 @@ class Spring:
                 x["spring_wire_diameter"],
                 x["stress_correction"],
             )
-        om = sp.disc_stresses(
-            np.asarray(deflection) / x["disc_series"],
-            x["disc_outer_diameter"],
-            x["disc_inner_diameter"],
-            x["disc_thickness"],
-            x["disc_cone_height"],
-            x["disc_elastic_modulus"],
-        )["OM"]
+        om = sp.disc_stresses(np.asarray(deflection) / x["disc_series"], *self.disc_geometry())[
+            "OM"
+        ]
         return np.abs(om)
 
     def permissible(self) -> Any:
@@ -1012,13 +1004,7 @@ def extra_values(
             else:
                 values["buckling_deflection"] = np.where(np.isinf(s_k), np.nan, s_k)
     else:
-        single = sp.disc_force_flat(
-            x["disc_outer_diameter"],
-            x["disc_inner_diameter"],
-            x["disc_thickness"],
-            x["disc_cone_height"],
-            x["disc_elastic_modulus"],
-        )
+        single = sp.disc_force_flat(*spring.disc_geometry())
         values["disc_force_flat"] = single * x["disc_parallel"]
     allow = spring.permissible()
     if allow is not None:
