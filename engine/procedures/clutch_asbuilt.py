@@ -602,6 +602,24 @@ def require_spring(x: Mapping[str, Any], *, wire_needed: bool) -> None:
 # --------------------------------------------------------------------------
 
 
+def _flank_torque(
+    x: Mapping[str, Any], force: Any, beta: Any, shape: Mapping[str, Any] | None = None
+) -> Any:
+    """:func:`torque_against_lift` of ``force`` at flank angles ``beta`` with the clutch's
+    ball circle, flank friction, groove angle, torque sharing and flank construction
+    (``shape``: ``x``'s inputs reshaped for a trailing axis, read in its place)."""
+    s = x if shape is None else shape
+    return torque_against_lift(
+        force,
+        beta,
+        s["ball_circle_diameter"],
+        s["flank_friction"],
+        s["driving_groove_angle"],
+        _sharing(s),
+        x["flank_construction"],
+    )
+
+
 def _sharing(x: Mapping[str, Any]) -> Any:
     return torque_sharing(x["spring_arrangement"], x["ball_count"], x["load_factor"])
 
@@ -611,17 +629,7 @@ def _gain_at(x: Mapping[str, Any], beta: Any) -> np.ndarray:
     points per design: the designs' arrays in ``x`` broadcast against the last axis)
     [torque_against_lift with unit force]."""
     xs = {k: (v[..., None] if isinstance(v, np.ndarray) else v) for k, v in x.items()}
-    return np.asarray(
-        torque_against_lift(
-            1.0,
-            beta,
-            xs["ball_circle_diameter"],
-            xs["flank_friction"],
-            xs["driving_groove_angle"],
-            _sharing(xs),
-            x["flank_construction"],
-        )
-    )
+    return np.asarray(_flank_torque(x, 1.0, beta, shape=xs))
 
 
 def _ride(x: Mapping[str, Any]) -> Any:
@@ -682,17 +690,7 @@ def characteristic(
     helical = spring.kind == "helical"
     stress: Any = None if (helical and not curves) or peak_only else spring.stress(total)
     # x's arrays already carry the trailing (lift) axis
-    torque = np.asarray(
-        torque_against_lift(
-            force,
-            beta,
-            x["ball_circle_diameter"],
-            x["flank_friction"],
-            x["driving_groove_angle"],
-            _sharing(x),
-            x["flank_construction"],
-        )
-    )
+    torque = np.asarray(_flank_torque(x, force, beta))
     peak = np.argmax(torque, axis=-1)[..., None]
 
     if torque.ndim == 1:  # a single design: plain indexing, the same floats
@@ -784,15 +782,7 @@ def peak_slope(x: Mapping[str, Any], spring: Spring, total: Any, beta: Any, foll
     >>> round(float(peak_slope(x, spring, 0.005, math.pi / 4, 1.0) / (0.05 * rate)), 12)
     1.0
     """
-    push = torque_against_lift(
-        spring.rate(total),
-        beta,
-        x["ball_circle_diameter"],
-        x["flank_friction"],
-        x["driving_groove_angle"],
-        _sharing(x),
-        x["flank_construction"],
-    )
+    push = _flank_torque(x, spring.rate(total), beta)
     return np.asarray((1.0 + np.asarray(follows)) * np.asarray(push))
 
 
@@ -832,17 +822,7 @@ def _rim_peak(x: Mapping[str, Any], spring: Spring, preload: Any, h: Any) -> dic
     lift = 1.0 * h
     total = preload + lift
     force = spring.force(total)
-    torque = np.asarray(
-        torque_against_lift(
-            force,
-            np.asarray(_ride(x), float),
-            x["ball_circle_diameter"],
-            x["flank_friction"],
-            x["driving_groove_angle"],
-            _sharing(x),
-            x["flank_construction"],
-        )
-    )
+    torque = np.asarray(_flank_torque(x, force, np.asarray(_ride(x), float)))
     shape = np.broadcast_shapes(torque.shape, np.shape(preload))
 
     def full(value: Any) -> Any:
@@ -1772,17 +1752,7 @@ class _Curves:
         """T_k(δ) as :func:`characteristic` evaluates it (the same floats)."""
         x = self.x
         force = self.spring.force(np.asarray(delta, dtype=float) + self.lift[k])
-        return np.asarray(
-            torque_against_lift(
-                force,
-                self.beta[k],
-                x["ball_circle_diameter"],
-                x["flank_friction"],
-                x["driving_groove_angle"],
-                _sharing(x),
-                x["flank_construction"],
-            )
-        )
+        return np.asarray(_flank_torque(x, force, self.beta[k]))
 
     def peak(self, delta: Any, span: Any) -> Any:
         """The peak torque at settings ``delta``, each in the grid interval ending at
