@@ -682,12 +682,22 @@ def rule_of_thumb_torque_from_yield(yield_strength: float, diameter: float) -> f
     d1 ≈ 0.85 d (0.2 · 0.6 · π/4 · 0.85² = 0.068). It assumes a preload of
     0.6 σ_T, not the one the rest of the calculation uses.
 
+    d³ is written as two products, not a power: numpy's power of an array and
+    Python's of a float may round differently (by an ulp), products round alike,
+    so a sweep gives the single run's value bit for bit.
+
     Examples
     --------
     >>> round(rule_of_thumb_torque_from_yield(640e6, 0.012), 1)
     77.4
+    >>> import numpy as np
+    >>> d = [0.005, 0.01, 0.02]
+    >>> rule_of_thumb_torque_from_yield(640e6, np.array(d)).tolist() == [
+    ...     rule_of_thumb_torque_from_yield(640e6, v) for v in d
+    ... ]
+    True
     """
-    return 0.07 * yield_strength * diameter**3
+    return 0.07 * yield_strength * (diameter * diameter * diameter)
 
 
 def tightening_torque_per_preload(
