@@ -277,8 +277,7 @@ def choose_rung(
     ``tolerance``; if none is, the most accurate applicable rung runs and the
     note says the tolerance was not met. Where the chosen rung's estimate is typical,
     not a bound (:attr:`Rung.estimate_kind`), the note says so and how often it is exceeded.
-    note says the tolerance was not met. The estimates leave their work in
-    ``scratch`` (the request's) for the compute.
+    The estimates leave their work in ``scratch`` (the request's) for the compute.
     """
     if fidelity != "auto":
         if fidelity not in spec.rung_names:
@@ -294,18 +293,19 @@ def choose_rung(
         estimate = rung.estimate_in(inputs, shared)
         if estimate is None or not math.isfinite(estimate):
             continue
-        applicable.append((rung.name, estimate))
-        if estimate <= tolerance:
-            skipped = applicable[:-1]
+        if estimate <= tolerance:  # the common case: the first rung that applies meets it
             why = (
                 f"auto: chose {rung.name!r}, estimated error {estimate:.2g} "
                 f"≤ tolerance {tolerance:.2g}"
             )
-            if skipped:
-                why += "; cheaper rungs estimated " + ", ".join(f"{n} {e:.2g}" for n, e in skipped)
-            if rung.estimate_caveat:
+            if applicable:
+                why += "; cheaper rungs estimated " + ", ".join(
+                    f"{n} {e:.2g}" for n, e in applicable
+                )
+            if rung.estimate_kind != "bound":  # a typical estimate: its caveat follows
                 why += f"; {rung.estimate_caveat}"
             return rung.name, [why]
+        applicable.append((rung.name, estimate))
     if not applicable:
         name = spec.rungs[-1].name
         return name, [f"auto: no rung gave an error estimate; ran {name!r}"]
