@@ -407,7 +407,14 @@ def create_app(
             "and unfinished in all. Studies never make the service busy (they run on their "
             "own threads and workers): they are reported, not gated."
         ),
-        responses={503: {"description": "warming up, or a lane has no free slot and a full queue"}},
+        responses={
+            503: {
+                "description": 'not ready, and why in "status": "warming" while the start-up '
+                'warm-up runs, "busy" while a lane has no free slot and a full queue, '
+                '"store_error" while the study job store cannot be read (studies.store_error '
+                "says why); with Retry-After"
+            }
+        },
     )
     async def readyz() -> JSONResponse:
         admits, study_state = pool.ready(), studies.state()

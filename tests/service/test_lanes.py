@@ -328,3 +328,11 @@ def test_readyz_is_503_while_a_lane_cannot_admit_and_healthz_stays_live() -> Non
     assert busy.status_code == 503 and busy.json()["lanes"]["heavy"]["running"] == 1
     assert live.status_code == 200
     assert again.status_code == 200
+
+
+def test_readyz_declares_each_status_of_its_503_in_the_openapi_document() -> None:
+    """The 503 answer's description names every status the route gives with it, so a
+    client generated from the document reads of "store_error" too (as docs/api.md does)."""
+    said = app_with().openapi()["paths"]["/readyz"]["get"]["responses"]["503"]["description"]
+    for status in ("warming", "busy", "store_error"):
+        assert f'"{status}"' in said, status
