@@ -25,6 +25,7 @@ import pytest
 from engine import ModelSpec, Output, Param, Result, RunContext, Rung, fixed_error
 from service import create_app
 from service.config import Settings
+from tests.service.asgi import json_post_scope
 from tests.toys import TOY, TOY_ODE, TOY_SPIN, TOY_STUBBORN
 
 
@@ -88,20 +89,7 @@ class Abandoning:
             if message["type"] == "http.response.start":
                 self.status = message["status"]
 
-        scope = {
-            "type": "http",
-            "asgi": {"version": "3.0"},
-            "http_version": "1.1",
-            "method": "POST",
-            "scheme": "http",
-            "path": self.path,
-            "raw_path": self.path.encode(),
-            "query_string": b"",
-            "root_path": "",
-            "headers": [(b"content-type", b"application/json"), (b"host", b"t")],
-            "client": (self.host, 1),
-            "server": ("t", 80),
-        }
+        scope = json_post_scope(self.path, host="t", client=(self.host, 1))
         await self.app(scope, receive, send)
 
 

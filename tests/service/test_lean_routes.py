@@ -14,6 +14,7 @@ from starlette.middleware.exceptions import ExceptionMiddleware
 from bench.extra_service import call
 from service import create_app
 from service.middleware import ExactRoutes
+from tests.service.asgi import json_post_scope
 from tests.toys import TOY
 
 BODIES = [
@@ -72,20 +73,7 @@ def test_a_client_that_leaves_mid_body_is_no_internal_error(
     async def send(message: dict[str, Any]) -> None:
         sent.append(message)
 
-    scope = {
-        "type": "http",
-        "asgi": {"version": "3.0"},
-        "http_version": "1.1",
-        "method": "POST",
-        "scheme": "http",
-        "path": "/api/v1" + TOY.path,
-        "raw_path": ("/api/v1" + TOY.path).encode(),
-        "query_string": b"",
-        "root_path": "",
-        "headers": [(b"content-type", b"application/json"), (b"host", b"test")],
-        "client": ("127.0.0.1", 1234),
-        "server": ("test", 80),
-    }
+    scope = json_post_scope("/api/v1" + TOY.path, host="test", client=("127.0.0.1", 1234))
     with caplog.at_level("INFO"):
         asyncio.run(app(scope, receive, send))
     assert sent == []
