@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import asyncio
 import json
+from collections.abc import MutableMapping
 from typing import Any
 
 import pytest
@@ -61,16 +62,16 @@ def test_a_client_that_leaves_mid_body_is_no_internal_error(
     is there), no internal error is logged, and the access line says 499."""
     app = create_app(models=[TOY])
     asyncio.run(call(app, "GET", "/healthz"))
-    messages = [
+    messages: list[dict[str, Any]] = [
         {"type": "http.request", "body": b'{"x": ', "more_body": True},
         {"type": "http.disconnect"},
     ]
-    sent: list[dict[str, Any]] = []
+    sent: list[MutableMapping[str, Any]] = []
 
     async def receive() -> dict[str, Any]:
         return messages.pop(0) if messages else {"type": "http.disconnect"}
 
-    async def send(message: dict[str, Any]) -> None:
+    async def send(message: MutableMapping[str, Any]) -> None:
         sent.append(message)
 
     scope = json_post_scope("/api/v1" + TOY.path, host="test", client=("127.0.0.1", 1234))
