@@ -21,13 +21,13 @@ from __future__ import annotations
 
 import math
 import statistics
-import time
 from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
 import engine
+from bench.timing import cpu_time
 from engine.models.clutch import BALL_CLUTCH_SETTING
 from engine.models.nutrunner import NUTRUNNER_DRIVE
 
@@ -94,12 +94,6 @@ def _sweep(case: Case) -> Callable[[], Any]:
     return lambda: engine.sweep(spec, base, vary, values, budget_s=None)
 
 
-def _cpu(call: Callable[[], Any]) -> float:
-    start = time.process_time()
-    call()
-    return time.process_time() - start
-
-
 def measure() -> list[dict[str, Any]]:
     rows = []
     for name, case, reference in _cases():
@@ -107,8 +101,8 @@ def measure() -> list[dict[str, Any]]:
         run_case(), run_reference()  # warm-up: imports, caches
         times, bases = [], []
         for _ in range(ROUNDS):  # interleaved, so a busy moment hits both
-            times.append(_cpu(run_case))
-            bases.append(_cpu(run_reference))
+            times.append(cpu_time(run_case))
+            bases.append(cpu_time(run_reference))
         ratio = statistics.median(t / b for t, b in zip(times, bases, strict=True))
         per_point, base_point = statistics.median(times) / POINTS, statistics.median(bases) / POINTS
         rows.append(

@@ -12,18 +12,19 @@ rtol 1e-12, one solve per stick/slip phase with terminal events). Methods:
 from __future__ import annotations
 
 import math
-import statistics
 import sys
-import time
-from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
+from bench.timing import median_wall_time
 from engine.physics.blow import BlowProblem, simulate_blow, simulate_blow_reference
 
 MODEL = "blow.joint"
+
+#: Wall seconds after which a case's repeated calls stop (three timed at least).
+BUDGET_S = 3.0
 
 
 def _cases() -> dict[str, tuple[BlowProblem, float]]:
@@ -38,18 +39,6 @@ def _cases() -> dict[str, tuple[BlowProblem, float]]:
         ),
         "stick-slip, b = 1.3": (BlowProblem(0.03, 1e-3, 2e4, 90.0, 1000.0, 1.3), 60.0),
     }
-
-
-def _median(fn: Callable[[], Any], repeats: int, budget_s: float = 3.0) -> float:
-    times = []
-    start = time.perf_counter()
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-        if time.perf_counter() - start > budget_s and len(times) >= 3:
-            break
-    return statistics.median(times)
 
 
 def _row(method: str, case: str, time_s: float, error: float, notes: str) -> dict[str, Any]:
@@ -81,7 +70,7 @@ def measure() -> list[dict[str, Any]]:
             _row(
                 "fast",
                 case,
-                _median(lambda p=p, t0=t0: simulate_blow(p, t0), 300),
+                median_wall_time(lambda p=p, t0=t0: simulate_blow(p, t0), 300, BUDGET_S),
                 _err(out.peak_torque, out.rotation, ref),
                 f"numba RK4, {out.steps} steps",
             )
@@ -92,7 +81,11 @@ def measure() -> list[dict[str, Any]]:
                 _row(
                     f"solve_ivp DOP853 rtol={rtol:g}",
                     case,
-                    _median(lambda p=p, t0=t0, r=rtol: simulate_blow_reference(p, t0, rtol=r), 7),
+                    median_wall_time(
+                        lambda p=p, t0=t0, r=rtol: simulate_blow_reference(p, t0, rtol=r),
+                        7,
+                        BUDGET_S,
+                    ),
                     _err(res[0], res[1], ref),
                     f"{res[2]} RHS evaluations",
                 )

@@ -58,7 +58,6 @@ from __future__ import annotations
 
 import math
 import statistics
-import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
@@ -66,6 +65,7 @@ from typing import Any
 import numpy as np
 
 import engine
+from bench.timing import cpu_time
 from engine.core.spec import ModelSpec
 from engine.models import blow as blow_model
 from engine.models import get_model
@@ -390,20 +390,14 @@ def prepare(case: Case, points: int) -> tuple[Callable[[], Any], Callable[[], An
     return sweep, lambda: floor(values)
 
 
-def _cpu(call: Callable[[], Any]) -> float:
-    start = time.process_time()
-    call()
-    return time.process_time() - start
-
-
 def measure(points: int = POINTS, rounds: int = ROUNDS) -> list[dict[str, Any]]:
     rows = []
     for case in CASES:
         run_sweep, run_floor = prepare(case, points)
         sweeps, floors = [], []
         for _ in range(rounds):  # interleaved, so a busy moment hits both
-            sweeps.append(_cpu(run_sweep))
-            floors.append(_cpu(run_floor))
+            sweeps.append(cpu_time(run_sweep))
+            floors.append(cpu_time(run_floor))
         ratio = statistics.median(s / f for s, f in zip(sweeps, floors, strict=True))
         sweep_ns = statistics.median(sweeps) / points * 1e9
         floor_ns = statistics.median(floors) / points * 1e9

@@ -17,14 +17,12 @@ curve (exact to rounding). Methods:
 from __future__ import annotations
 
 import math
-import statistics
-import time
-from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from bench.timing import median_wall_time
 from engine import run
 from engine.core.spec import RunContext
 from engine.models.nutrunner import EXAMPLE_LIGHT_TRUCK, NUTRUNNER_DRIVE
@@ -44,15 +42,6 @@ from engine.physics.motor_spinup import (
 MODEL = "nutrunner.drive"
 W = 1400 * math.pi / 30  # working speed of the example, rad/s
 W_SYNC = 1500 * math.pi / 30
-
-
-def _median_time(fn: Callable[[], Any], repeat: int) -> float:
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
 
 
 def _ivp_time(j: float, curve: MotorCurve, speed: float, rtol: float = 1e-8) -> float:
@@ -126,7 +115,7 @@ def measure() -> list[dict[str, Any]]:
                 "model": MODEL,
                 "method": "quad",
                 "case": name,
-                "time_s": _median_time(lambda j=j, c=curve, s=speed: spin_up_time(j, c, s), 50),
+                "time_s": median_wall_time(lambda j=j, c=curve, s=speed: spin_up_time(j, c, s), 50),
                 "error": abs(t_q - exact) / exact,
                 "notes": "QUADPACK, ω = ω0(1 − e^-x) where M → 0, kinks as breakpoints; "
                 f"own estimate {err_q / t_q:.1e}",
@@ -138,7 +127,7 @@ def measure() -> list[dict[str, Any]]:
                 "model": MODEL,
                 "method": "solve_ivp",
                 "case": name,
-                "time_s": _median_time(lambda j=j, c=curve, s=speed: _ivp_time(j, c, s), 5),
+                "time_s": median_wall_time(lambda j=j, c=curve, s=speed: _ivp_time(j, c, s), 5),
                 "error": abs(t_i - exact) / exact,
                 "notes": "RK45 rtol 1e-8, terminal event at the working speed",
             }
@@ -149,7 +138,9 @@ def measure() -> list[dict[str, Any]]:
                 "model": MODEL,
                 "method": "profile",
                 "case": name,
-                "time_s": _median_time(lambda j=j, c=curve, s=speed: spin_up_profile(j, c, s), 20),
+                "time_s": median_wall_time(
+                    lambda j=j, c=curve, s=speed: spin_up_profile(j, c, s), 20
+                ),
                 "error": abs(float(t_p[-1]) - exact) / exact,
                 "notes": "cumulative Gauss–Legendre 8 × 100 panels (the plotted series)",
             }
@@ -159,7 +150,7 @@ def measure() -> list[dict[str, Any]]:
             "model": MODEL,
             "method": "closed_form",
             "case": "illustrative light-truck runner, engine.run",
-            "time_s": _median_time(lambda: run(NUTRUNNER_DRIVE, EXAMPLE_LIGHT_TRUCK), 200),
+            "time_s": median_wall_time(lambda: run(NUTRUNNER_DRIVE, EXAMPLE_LIGHT_TRUCK), 200),
             "error": 0.0,
             "notes": "the paper's rung; error against its own equations (rounding only)",
         }
@@ -173,7 +164,7 @@ def measure() -> list[dict[str, Any]]:
     )
     assert NUTRUNNER_DRIVE.vectorized is not None
     vec = NUTRUNNER_DRIVE.vectorized
-    total = _median_time(lambda: vec({**x, "spindle_diameter": d}, ctx), 5)
+    total = median_wall_time(lambda: vec({**x, "spindle_diameter": d}, ctx), 5)
     rows.append(
         {
             "model": MODEL,

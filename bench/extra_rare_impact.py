@@ -21,15 +21,13 @@ The stiff case is a 5e6 N/m power spring on a 20 g half-coupling.
 from __future__ import annotations
 
 import math
-import statistics
 import sys
-import time
-from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
+from bench.timing import median_wall_time
 from engine.core.errors import BudgetExceeded
 from engine.models.rare_impact import RARE_IMPACT, REFERENCE_DESIGN
 from engine.procedures.striker_cycle import (
@@ -39,6 +37,8 @@ from engine.procedures.striker_cycle import (
 )
 
 MODEL = "impact.rare"
+#: Wall seconds after which a case's repeated calls stop (three timed at least).
+BUDGET_S = 3.0
 NAMES = (
     "release_speed",
     "spin_up_time",
@@ -59,18 +59,6 @@ def _cases() -> dict[str, dict[str, Any]]:
         "reference, linear motor 3820 rpm": v({"motor_no_load_speed": 400.0}),
         "stiff: c1 = 5e6 N/m, m1 = 20 g": v({"power_spring_rate": 5e6, "half_coupling_mass": 0.02}),
     }
-
-
-def _median_time(fn: Callable[[], Any], repeats: int, budget_s: float = 3.0) -> float:
-    times = []
-    start = time.perf_counter()
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-        if time.perf_counter() - start > budget_s and len(times) >= 3:
-            break
-    return statistics.median(times)
 
 
 def _error(o: Any, ref: Any) -> float:
@@ -111,14 +99,16 @@ def measure() -> list[dict[str, Any]]:
             _row(
                 "cycle (numba RK4)",
                 case,
-                _median_time(lambda x=x: simulate_cycle(x), 300),
+                median_wall_time(lambda x=x: simulate_cycle(x), 300, BUDGET_S),
                 _error(o, ref),
                 f"stages 1-4, {o.steps} RK4 steps, events on the step's cubic",
             )
         )
         for rtol in (1e-6, 1e-8, 1e-10):
             res, nfev = simulate_cycle_scipy(x, rtol=rtol)
-            t_ivp = _median_time(lambda x=x, rtol=rtol: simulate_cycle_scipy(x, rtol=rtol), 7)
+            t_ivp = median_wall_time(
+                lambda x=x, rtol=rtol: simulate_cycle_scipy(x, rtol=rtol), 7, BUDGET_S
+            )
             rows.append(
                 _row(
                     f"solve_ivp DOP853 rtol={rtol:g}",
@@ -133,7 +123,7 @@ def measure() -> list[dict[str, Any]]:
             _row(
                 "closed_form",
                 case,
-                _median_time(lambda x=x: closed_form_cycle(x), 2000),
+                median_wall_time(lambda x=x: closed_form_cycle(x), 2000, BUDGET_S),
                 _error(cf, ref),
                 "quasi-static stage 1, piecewise-linear stages 2 and 4, stage 3 held",
             )

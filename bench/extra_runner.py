@@ -25,6 +25,7 @@ from collections.abc import Callable
 from typing import Any
 
 import engine
+from bench.timing import us
 from engine.core.runner import prepare
 from engine.core.spec import ModelSpec, RunContext, Scratch
 from engine.models import MODELS
@@ -91,7 +92,7 @@ def measure() -> list[dict[str, Any]]:
             times.append((c, r, a))
         c, r, a = (statistics.median(t) for t in zip(*times, strict=True))
         share, over = statistics.median(shares), statistics.median(autos)
-        timing = f"compute {_us(c)}, run named {_us(r)}, run auto {_us(a)} (CPU time)"
+        timing = f"compute {us(c)}, run named {us(r)}, run auto {us(a)} (CPU time)"
         rows.append(
             {
                 "model": spec.name,
@@ -119,10 +120,6 @@ def measure() -> list[dict[str, Any]]:
             }
         )
     return rows
-
-
-def _us(seconds: float) -> str:
-    return f"{seconds * 1e6:.0f} µs"
 
 
 if __name__ == "__main__":

@@ -22,13 +22,11 @@ random torque, noise): what is timed is the reading, not the making.
 from __future__ import annotations
 
 import math
-import statistics
-import time
-from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
+from bench.timing import median_wall_time
 from engine.physics import trace as tr
 
 TRACES, SAMPLES = 1000, 2000
@@ -98,21 +96,12 @@ def floor(angle: np.ndarray, torque: np.ndarray) -> dict[str, Any]:
     }
 
 
-def _median(f: Callable[[], Any], repeats: int = 3) -> float:
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        f()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
-
-
 def measure() -> list[dict[str, Any]]:
     angle, torque = batch()
     ours, base = read(angle, torque), floor(angle, torque)
     agree = float(np.nanmax(np.abs(ours["friction"] - base["friction"])))
-    t_ours = _median(lambda: read(angle, torque))
-    t_floor = _median(lambda: floor(angle, torque))
+    t_ours = median_wall_time(lambda: read(angle, torque), 3)
+    t_floor = median_wall_time(lambda: floor(angle, torque), 3)
     case = f"{TRACES} traces x {SAMPLES} samples"
     return [
         {
