@@ -1439,9 +1439,16 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
     curves: _Curves | None = None
     span = np.zeros(n, dtype=np.intp)  # the grid interval of a shared grid's bracket
     peaks: Any = None
+    every: _Curves | None = None
+    ends: Any = None
     if shared:  # one grid for every point, the same floats as each point's own
         line = np.linspace(0.0, float(upper), 65)
-        peaks = characteristic(design, Spring(design), line, peak_only=True)["peak_torque"]
+        every = _Curves.every(design)
+        if every is None:
+            peaks = characteristic(design, Spring(design), line, peak_only=True)["peak_torque"]
+        else:  # the curves on the grid, kept for their bounds: the peak is their largest
+            ends = every.on(line)
+            peaks = np.take_along_axis(ends, np.argmax(ends, axis=-1)[:, None], axis=-1)[:, 0]
         peaks = np.asarray(peaks, dtype=float)
         lo_val = peaks[0] - aims  # δ = 0
     else:
@@ -1464,7 +1471,7 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
         todo = todo[:0]
         # a large sweep's curves on a finer grid: fewer of them to evaluate at each step
         refine = _FINE_CANDIDATES if at.size >= _FINE_LANES else 1
-        curves = _Curves.of(design, line, refine) if at.size else None
+        curves = _Curves.of(design, line, refine, every, ends) if at.size else None
     grid = np.linspace(0.0, tops, 65, axis=-1) if todo.size else tops[:, None]
     begin = np.ones(n, dtype=np.intp)  # the first grid point each point's scan reads
     before = lo_val.copy()  # the function at the grid point before ``begin``
@@ -1695,21 +1702,44 @@ class _Curves:
         self.refine, self.start, self.step = 1, 0.0, 1.0
 
     @classmethod
-    def of(cls, x: Mapping[str, Any], grid: Any, refine: int = 1) -> _Curves | None:
+    def every(cls, x: Mapping[str, Any]) -> _Curves | None:
+        """All 81 curves of a disc stack ``x`` (candidates: every lift point); None where
+        the lift points move with the setting (``ball_lift`` absent) or the spring is
+        helical (whose setting :class:`SettingGrid` solves)."""
+        if x["ball_lift"] is None or x["spring_type"] != "disc":
+            return None
+        lift, beta = lift_points(x["ball_lift"], x["ball_diameter"], _ride(x), POINTS)
+        return cls(x, lift, beta, np.arange(lift.size))
+
+    def on(self, grid: Any) -> Any:
+        """Every curve at the settings ``grid``, (settings, 81): the floats
+        :func:`characteristic` evaluates there (its peak is their largest)."""
+        return self.torque(np.asarray(grid, dtype=float)[:, None], self.candidates)
+
+    @classmethod
+    def of(
+        cls,
+        x: Mapping[str, Any],
+        grid: Any,
+        refine: int = 1,
+        curves: _Curves | None = None,
+        ends: Any = None,
+    ) -> _Curves | None:
         """The curves of a disc stack ``x`` on the settings ``grid`` (their candidates on
         ``refine`` equal intervals in each of its: fewer curves each, at the price of
         more bounds); None where the lift points move with the setting (``ball_lift``
         absent), a torque is not finite, or the spring is helical (whose setting
-        :class:`SettingGrid` solves)."""
-        if x["ball_lift"] is None or x["spring_type"] != "disc":
+        :class:`SettingGrid` solves). ``curves`` and ``ends``: :meth:`every` curve and
+        their torques :meth:`on` the grid where known (not evaluated again)."""
+        curves = cls.every(x) if curves is None else curves
+        if curves is None:
             return None
-        lift, beta = lift_points(x["ball_lift"], x["ball_diameter"], _ride(x), POINTS)
-        curves = cls(x, lift, beta, np.arange(lift.size))
+        lift, beta = curves.lift, curves.beta
         grid = np.asarray(grid, dtype=float)
         intervals = (grid.size - 1) * refine
         if refine > 1:
-            grid = np.linspace(grid[0], grid[-1], intervals + 1)
-        bounds = curves.bounds(grid)
+            grid, ends = np.linspace(grid[0], grid[-1], intervals + 1), None
+        bounds = curves.bounds(grid, ends)
         if bounds is None:
             return None
         upper, lower, ends = bounds
@@ -1728,14 +1758,15 @@ class _Curves:
         out.step = (float(grid[-1]) - out.start) / intervals
         return out
 
-    def bounds(self, grid: Any) -> tuple[Any, Any, Any] | None:
+    def bounds(self, grid: Any, ends: Any = None) -> tuple[Any, Any, Any] | None:
         """(largest, smallest) of every curve in every interval of ``grid`` (interval j
         between settings j and j + 1, a row each), and the curves at the settings; None
         where a torque is not finite. Each curve is the disc force of a setting that
         rises with δ, times a constant: its extremes lie at the ends or at the force's
-        extrema inside (none where the force rises everywhere)."""
+        extrema inside (none where the force rises everywhere). ``ends``: the curves
+        :meth:`on` the grid, where known."""
         every = np.arange(self.lift.size)
-        ends = self.torque(grid[:, None], every)  # (65, 81)
+        ends = self.torque(grid[:, None], every) if ends is None else ends  # (65, 81)
         at = self.tops[0]  # (2, 81): the curves' tops
         inner = self.torque(np.where(np.isfinite(at), at, 0.0), every)
         if not (np.all(np.isfinite(ends)) and np.all(np.isfinite(inner))):
@@ -2173,7 +2204,8 @@ def disc_breakaway_setting(x: Mapping[str, Any], force: Any) -> Any:
 
     s_max where the disc's force peaks (none: the cone height). On a 65-point grid of
     the branch (the force rises along it) bisection finds the interval that holds the
-    setting, refined by Newton's method on the force and the stack's rate
+    setting (one stack whose grid forces rise: a sorted search of them, the same
+    interval), refined by Newton's method on the force and the stack's rate
     (:func:`newton_roots`, :meth:`Spring.rate`). Floats or arrays: a float for one
     design, the same number as an element of a sweep (a stack that is the same at
     every point is evaluated on its grid once). EN 16983.
@@ -2187,10 +2219,13 @@ def disc_breakaway_setting(x: Mapping[str, Any], force: Any) -> Any:
         np.asarray(x["disc_series"] * np.minimum(top, x["disc_cone_height"]), dtype=float), (n,)
     )
 
+    stack = None if varied else Spring(x)
+
     def excess_rate(delta: Any, lanes: Any) -> tuple[Any, Any]:
-        spring = Spring(points.take(x, n, lanes) if varied else x)
+        spring = Spring(points.take(x, n, lanes)) if stack is None else stack
         return np.asarray(spring.force(delta), dtype=float) - wanted[lanes], spring.rate(delta)
 
+    forces: Any = None
     if any(isinstance(x[k], np.ndarray) for k in _DISC_STACK):
         grid = np.linspace(0.0, upper, 65, axis=-1)
 
@@ -2200,7 +2235,7 @@ def disc_breakaway_setting(x: Mapping[str, Any], force: Any) -> Any:
     else:  # one stack: its forces on the grid once, the same floats
         line = np.linspace(0.0, float(upper[0]), 65)
         grid = np.broadcast_to(line, (n, 65))
-        forces = np.asarray(Spring(x).force(line), dtype=float)
+        forces = np.asarray((stack or Spring(x)).force(line), dtype=float)
 
         def excess(index: Any, lanes: Any) -> Any:
             return forces[index] - wanted[lanes]
@@ -2210,6 +2245,12 @@ def disc_breakaway_setting(x: Mapping[str, Any], force: Any) -> Any:
     reach = np.flatnonzero(~(at_top < 0.0))
     lo, hi = np.zeros(reach.size, dtype=np.intp), np.full(reach.size, 64)
     f_lo, f_hi = excess(lo, reach), at_top[reach]
+    if forces is not None and np.all(forces[1:] > forces[:-1]):
+        # one stack whose grid forces rise: the bracket the bisection below finds, at
+        # once (the first grid force at or past each point's; a NaN force: the last)
+        hi = np.clip(np.searchsorted(forces, wanted[reach], side="left"), 1, 64)
+        lo = hi - 1
+        f_lo, f_hi = excess(lo, reach), excess(hi, reach)
     while reach.size and np.any(hi - lo > 1):
         mid = (lo + hi) // 2
         value = excess(mid, reach)
