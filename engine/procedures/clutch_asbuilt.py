@@ -1700,6 +1700,9 @@ class _Curves:
         # the candidates' grid: ``refine`` intervals in each of the search's, from
         # ``start`` in steps of ``step``
         self.refine, self.start, self.step = 1, 0.0, 1.0
+        # the rows of ``candidates`` (one per interval, :meth:`of`): their lengths and starts
+        self.counts: Any = None
+        self.offsets: Any = None
 
     @classmethod
     def every(cls, x: Mapping[str, Any]) -> _Curves | None:
@@ -1745,15 +1748,12 @@ class _Curves:
         upper, lower, ends = bounds
         slack = cls.SLACK * float(np.max(np.abs(ends)))
         holds = upper + slack >= np.max(lower, axis=-1, keepdims=True) - slack
-        # per interval the curves that may hold the peak, padded with the first of them
-        width = int(np.max(np.count_nonzero(holds, axis=-1)))
-        order = np.argsort(~holds, axis=-1, kind="stable")[:, :width]
-        first = order[:, :1]
-        count = np.count_nonzero(holds, axis=-1)[:, None]
-        padded = np.where(np.arange(width) < count, order, first)
-        # row j of ``candidates`` is the interval ending at grid point j (row 0 unused)
-        candidates = np.concatenate([padded[:1], padded])
+        # per interval the curves that may hold the peak, in ascending order, one row
+        # after another; row j is the interval ending at grid point j (row 0 unused)
+        rows, candidates = np.nonzero(np.concatenate([holds[:1], holds]))
         out = cls(x, lift, beta, candidates, curves.tops)
+        out.counts = np.bincount(rows, minlength=holds.shape[0] + 1)
+        out.offsets = np.cumsum(out.counts) - out.counts
         out.refine, out.start = refine, float(grid[0])
         out.step = (float(grid[-1]) - out.start) / intervals
         return out
@@ -1797,12 +1797,20 @@ class _Curves:
         if self.refine > 1:  # the candidates' interval that holds each setting
             fine = np.floor((delta - self.start) / self.step).astype(np.intp) + 1
             span = np.clip(fine, (span - 1) * self.refine + 1, span * self.refine)
-        k = self.candidates[span]
-        torque = self.torque(delta[:, None], k)
-        top = np.arange(k.shape[0]) * k.shape[1] + np.argmax(torque, axis=-1)
-        held = k.ravel()[top]
+        # each setting's candidates, one setting after another (``owner`` their setting)
+        count = self.counts[span]
+        starts = np.cumsum(count) - count
+        owner = np.repeat(np.arange(span.size), count)
+        flat = np.arange(owner.size)
+        k = self.candidates[flat + np.repeat(self.offsets[span] - starts, count)]
+        torque = self.torque(delta[owner], k)
+        # each setting's first largest torque (its first NaN, if any), as argmax takes it
+        largest = np.maximum.reduceat(torque, starts)
+        first = (torque == largest[owner]) | np.isnan(torque)
+        top = np.minimum.reduceat(np.where(first, flat, owner.size), starts)
+        held = k[top]
         slope = peak_slope(self.x, self.spring, delta + self.lift[held], self.beta[held], 0.0)
-        return torque.ravel()[top], slope
+        return torque[top], slope
 
 
 def _bisect_rising(
