@@ -1356,21 +1356,26 @@ def newton_roots(
         hi = np.where(below, hi, x)
         with np.errstate(all="ignore"):
             step = value / slope
-        new = x - step
-        moved = np.abs(step)
-        newton = (new > lo) & (new < hi) & (moved + moved <= before)
-        middle = 0.5 * (lo + hi)
-        new = np.where(newton, new, middle)
-        moved = np.where(newton, moved, hi - middle)
-        # Newton's next step from here, were it taken: the last two steps give the
-        # rate of quadratic convergence, d_{n+1} ≈ d_n³/d_{n-1}²
-        with np.errstate(all="ignore"):
+            new = x - step
+            moved = np.abs(step)
+            newton = (new > lo) & (new < hi) & (moved + moved <= before)
+            middle = 0.5 * (lo + hi)
+            new = np.where(newton, new, middle)
+            moved = np.where(newton, moved, hi - middle)
+            # Newton's next step from here, were it taken: the last two steps give the
+            # rate of quadratic convergence, d_{n+1} ≈ d_n³/d_{n-1}²
             ahead = np.where(newton & newer, moved * (moved / last) ** 2, moved)
-        done = (ahead < (xtol + rtol * np.abs(x)) * 0.5) | (value == 0.0)
-        root[i[done]] = np.where(value == 0.0, x, new)[done]
-        go = ~done
-        i, lo, hi, x = i[go], lo[go], hi[go], new[go]
-        before, last, newer = last[go], moved[go], newton[go]
+            zero = value == 0.0
+            done = np.flatnonzero((ahead < (xtol + rtol * np.abs(x)) * 0.5) | zero)
+        if done.size:
+            root[i[done]] = np.where(zero[done], x[done], new[done])
+            if done.size == i.size:
+                break
+            go = np.ones(i.size, dtype=bool)
+            go[done] = False
+            i, lo, hi, new = i[go], lo[go], hi[go], new[go]
+            last, moved, newton = last[go], moved[go], newton[go]
+        x, before, last, newer = new, last, moved, newton
     return root
 
 
@@ -1396,7 +1401,9 @@ _FINE_LANES = 8192
 _FINE_CANDIDATES = 8
 
 
-def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
+def setting_roots(
+    x: Mapping[str, Any], target: Any, upper: Any, known: dict[Any, Any] | None = None
+) -> Any:
     r"""Nut setting Δ whose peak torque is ``target``: the least Δ in [0, upper] where it
     reaches it; NaN where none does.
 
@@ -1413,6 +1420,10 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
     the grid point before it, which then hold one crossing (:func:`_first_top`).
     Floats or arrays (``x``'s arrays one design per element): a float for one design,
     the same number as an element of a sweep. [001, eq. 1–3] on :func:`characteristic`.
+
+    ``known``, a dict kept by the caller for the calls on one design (the same stack at
+    other targets): its grid, the peaks there and its curves are evaluated once, at
+    the first of them (only where the design is the same at every point).
     """
     n = max([1, *(v.size for v in _arrays(x)), np.size(target), np.size(upper)])
     aims = np.array(np.broadcast_to(np.asarray(target, dtype=float), (n,)))
@@ -1441,7 +1452,12 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
     peaks: Any = None
     every: _Curves | None = None
     ends: Any = None
-    if shared:  # one grid for every point, the same floats as each point's own
+    if known is None or not shared or known.get("upper", float(upper)) != float(upper):
+        known = {}
+    if shared and "peaks" in known:  # the design's grid, peaks and curves from a call before
+        line, every, ends, peaks = known["line"], known["every"], known["ends"], known["peaks"]
+        lo_val = peaks[0] - aims
+    elif shared:  # one grid for every point, the same floats as each point's own
         line = np.linspace(0.0, float(upper), 65)
         every = _Curves.every(design)
         if every is None:
@@ -1450,6 +1466,7 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
             ends = every.on(line)
             peaks = np.take_along_axis(ends, np.argmax(ends, axis=-1)[:, None], axis=-1)[:, 0]
         peaks = np.asarray(peaks, dtype=float)
+        known.update(upper=float(upper), line=line, every=every, ends=ends, peaks=peaks)
         lo_val = peaks[0] - aims  # δ = 0
     else:
         lo_val = excess(np.zeros(n), np.arange(n))
@@ -1471,7 +1488,9 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
         todo = todo[:0]
         # a large sweep's curves on a finer grid: fewer of them to evaluate at each step
         refine = _FINE_CANDIDATES if at.size >= _FINE_LANES else 1
-        curves = _Curves.of(design, line, refine, every, ends) if at.size else None
+        if at.size and refine not in known:
+            known[refine] = _Curves.of(design, line, refine, every, ends)
+        curves = known[refine] if at.size else None
     grid = np.linspace(0.0, tops, 65, axis=-1) if todo.size else tops[:, None]
     begin = np.ones(n, dtype=np.intp)  # the first grid point each point's scan reads
     before = lo_val.copy()  # the function at the grid point before ``begin``
@@ -1982,6 +2001,7 @@ def peak_setting(
     target: Any,
     force: Any,
     grid: SettingGrid | None = None,
+    known: dict[Any, Any] | None = None,
 ) -> tuple[Any, Any]:
     """(setting, largest stress over the lift) for the target peak torque; NaN where none.
 
@@ -1991,10 +2011,11 @@ def peak_setting(
     of the ~40 a bracketed root search takes; the two agree to 1e-12,
     ``tests/models/clutch/test_clutch_arrays.py``); at a point where they need not
     (a push ≤ 0 on the driving flank), and for a disc stack, by :func:`setting_roots`.
-    ``grid`` may be passed in when the same geometry serves several springs.
+    ``grid`` may be passed in when the same geometry serves several springs; ``known``
+    (a disc stack), the :func:`setting_roots` work kept for other targets on it.
     """
     if spring.kind == "disc":
-        root = setting_roots(x, target, x["disc_series"] * x["disc_cone_height"])
+        root = setting_roots(x, target, x["disc_series"] * x["disc_cone_height"], known)
         if np.ndim(root) == 0:  # one design
             if math.isnan(root):
                 return math.nan, math.nan
@@ -2046,8 +2067,9 @@ def setting_values(x: Mapping[str, Any], force: Any) -> tuple[dict[str, Any], li
     notes: list[str] = []
     helical = x["spring_type"] == "helical"
     found: tuple[Any, Any] | None = None
+    known: dict[Any, Any] = {}  # a disc stack's root-search work, for its suggestion too
     if not helical or x["spring_wire_diameter"] is not None:
-        delta, stress = peak_setting(x, Spring(x), target, force)
+        delta, stress = peak_setting(x, Spring(x), target, force, known=known)
         if np.ndim(delta) == 0 and math.isnan(delta):
             notes.append(
                 "required_peak_setting is null: no setting of this spring gives the target as "
@@ -2059,7 +2081,7 @@ def setting_values(x: Mapping[str, Any], force: Any) -> tuple[dict[str, Any], li
     if helical and x["spring_mean_diameter"] is not None:
         values.update(suggest_wire(x, target, force, notes))
     if not helical:
-        values.update(_suggest_parallel(x, target, force, notes, found))
+        values.update(_suggest_parallel(x, target, force, notes, found, known))
     return values, notes
 
 
@@ -2150,9 +2172,17 @@ def _suggest_parallel(
     force: Any,
     notes: list[str],
     given: tuple[Any, Any] | None,
+    known: dict[Any, Any] | None = None,
 ) -> dict[str, Any]:
     """The fewest discs in parallel that reach the target; ``given`` is the given stack's
-    own :func:`peak_setting` (not searched again for its own number of discs).
+    own :func:`peak_setting` (not searched again for its own number of discs), ``known``
+    its root search's work (:func:`setting_roots`).
+
+    Frictionless discs (w_M = 0), 2^j times the given number in parallel (or a 2^j-th
+    of it), press with exactly 2^j times its force at every deflection (F = n F_1, a
+    power of two scales a float exactly): the torque curves are the given stack's times
+    2^j to the last bit, so the setting for the target is the given stack's for the
+    target over 2^j, found on its curves (``known``), the same floats.
 
     Floats or arrays: each count is searched only at the points still without a pack;
     NaN where none of up to 8 works, and on floats the outputs are then left out.
@@ -2165,13 +2195,20 @@ def _suggest_parallel(
     limit = np.broadcast_to(np.asarray(x["disc_yield_strength"], dtype=float), (n,))
     delta: Any
     stress: Any
+    parallel, friction = x["disc_parallel"], x["disc_friction"]
+    frictionless = np.ndim(parallel) == 0 and np.ndim(friction) == 0 and friction == 0.0
     for k in range(1, 9):
         lanes = np.flatnonzero(open_)
-        if np.ndim(x["disc_parallel"]) == 0 and k == x["disc_parallel"]:
+        scale = k / parallel if frictionless else 0.0
+        if np.ndim(parallel) == 0 and k == parallel:
             if given is None:
                 delta, stress = math.nan, math.nan
             else:  # the given stack's own setting, at the points still open
                 delta, stress = (np.broadcast_to(g, (n,))[lanes] for g in given)
+        elif scale > 0.0 and math.frexp(scale)[0] == 0.5:  # 2^j times the given force
+            part = points.take(x, n, lanes) if _arrays(x) else x
+            aim = float(aims[0]) / scale if one else aims[lanes] / scale
+            delta, stress = peak_setting(part, Spring(part), aim, force, known=known)
         else:
             part = points.take(x, n, lanes) if _arrays(x) else x
             trial = {**part, "disc_parallel": k}
