@@ -1541,8 +1541,8 @@ def setting_roots(
     if x["spring_type"] == "disc" and pending.size:
         # a curve's top past the target before the root: the first crossing lies below it
         part = design if shared else points.take(x, n, pending) if varied else x
-        known = None if curves is None else curves.tops
-        found = _first_top(part, pending, aims, tops, root, peaks, excess, known)
+        at_tops = None if curves is None else curves.tops
+        found = _first_top(part, pending, aims, tops, root, peaks, excess, at_tops)
         if found is not None:
             lanes, top, f_top = found
             # the grid point before the top: the peak is below the target up to there
