@@ -56,6 +56,7 @@ __all__ = [
     "disc_force_flat",
     "disc_k4",
     "disc_rate",
+    "disc_stress_om",
     "disc_stresses",
     "disc_thickness_for_flat_force",
     "helical_mass",
@@ -1039,16 +1040,69 @@ def disc_stresses(
     u = np.asarray(deflection, dtype=float) / t
     a = np.asarray(cone_height, dtype=float) / t
     k4_ = np.asarray(k4, dtype=float)
-    base = -_disc_scale(outer_diameter, t, k1, elastic_modulus, poisson) * t**2 * k4_ * u
+    base = _disc_stress_base(deflection, outer_diameter, t, k1, elastic_modulus, poisson, k4)
     bend = k4_ * np.asarray(k2) * (a - u / 2.0)
     outer = k4_ * (np.asarray(k2) - 2.0 * np.asarray(k3)) * (a - u / 2.0)
     return {
-        "OM": _out(base * 3.0 / np.pi),
+        "OM": _out(_om(base)),
         "I": _out(base * (bend + k3)),
         "II": _out(base * (bend - k3)),
         "III": _out(base / delta * (outer - k3)),
         "IV": _out(base / delta * (outer + k3)),
     }
+
+
+def _disc_stress_base(
+    deflection: Any,
+    outer_diameter: Any,
+    thickness: Any,
+    k1: Any,
+    elastic_modulus: Any,
+    poisson: Any,
+    k4: Any,
+) -> Any:
+    """−4E/(1 − μ²) t²/(K1 De²) K4 s/t, the factor every disc stress has
+    (:func:`disc_stresses`)."""
+    t = np.asarray(thickness, dtype=float)
+    u = np.asarray(deflection, dtype=float) / t
+    scale = _disc_scale(outer_diameter, t, k1, elastic_modulus, poisson)
+    return -scale * t**2 * np.asarray(k4, dtype=float) * u
+
+
+def _om(base: Any) -> Any:
+    """σ_OM from :func:`_disc_stress_base`."""
+    return base * 3.0 / np.pi
+
+
+def disc_stress_om(
+    deflection: FloatArray,
+    outer_diameter: FloatArray,
+    inner_diameter: FloatArray,
+    thickness: FloatArray,
+    cone_height: FloatArray,
+    elastic_modulus: FloatArray = 206e9,
+    poisson: FloatArray = 0.3,
+    k4: FloatArray = 1.0,
+) -> FloatArray:
+    r"""Stress of a disc spring at the point OM alone (the static check), DIN EN 16983.
+
+    .. math::
+        \sigma_{OM} = -\frac{4E}{1 - \mu^2}\frac{t^2}{K_1 D_e^2} K_4 \frac{s}{t}
+                      \frac{3}{\pi}
+
+    The same floats as :func:`disc_stresses`' ``"OM"`` without the other four points
+    (``cone_height`` is taken, and not needed, for the same arguments).
+
+    Examples
+    --------
+    >>> round(disc_stress_om(0.000675, 0.040, 0.0204, 0.00225, 0.0009) / 1e6)
+    -1196
+    """
+    k1, _, _ = disc_factors(outer_diameter, inner_diameter)
+    base = _disc_stress_base(
+        deflection, outer_diameter, thickness, k1, elastic_modulus, poisson, k4
+    )
+    return _out(_om(base))
 
 
 def disc_falling_region(thickness: Any, cone_height: Any, k4: Any = 1.0) -> tuple[Any, Any]:

@@ -498,9 +498,7 @@ class Spring:
                 x["spring_wire_diameter"],
                 x["stress_correction"],
             )
-        om = sp.disc_stresses(np.asarray(deflection) / x["disc_series"], *self.disc_geometry())[
-            "OM"
-        ]
+        om = sp.disc_stress_om(np.asarray(deflection) / x["disc_series"], *self.disc_geometry())
         return np.abs(om)
 
     def permissible(self) -> Any:
