@@ -452,6 +452,13 @@ class Spring:
             self.material = None
             self.shear_modulus = x["shear_modulus"]
             self.elastic_modulus = x["disc_elastic_modulus"]
+        self._disc: sp.DiscLaw | None = None
+
+    def disc_law(self) -> sp.DiscLaw:
+        """One disc's :func:`springs.disc_law`, computed at the first force or rate."""
+        if self._disc is None:
+            self._disc = sp.disc_law(*self.disc_geometry())
+        return self._disc
 
     def force(self, deflection: Any) -> Any:
         x = self.x
@@ -463,7 +470,7 @@ class Spring:
                 x["spring_active_coils"],
             )
             return np.asarray(rate) * np.asarray(deflection)
-        single = sp.disc_force(np.asarray(deflection) / x["disc_series"], *self.disc_geometry())
+        single = sp.disc_force_of(self.disc_law(), np.asarray(deflection) / x["disc_series"])
         return sp.stack_force(single, x["disc_parallel"], x["disc_friction"])
 
     def disc_geometry(self) -> tuple[Any, ...]:
@@ -484,7 +491,7 @@ class Spring:
         x = self.x
         if self.kind == "helical":
             return np.asarray(self.force(1.0)) * np.ones(np.shape(deflection))
-        single = sp.disc_rate(np.asarray(deflection) / x["disc_series"], *self.disc_geometry())
+        single = sp.disc_rate_of(self.disc_law(), np.asarray(deflection) / x["disc_series"])
         return sp.stack_force(
             np.asarray(single) / x["disc_series"], x["disc_parallel"], x["disc_friction"]
         )
