@@ -1398,7 +1398,11 @@ _TARGET_INPUTS = (
 
 #: Designs whose grid of settings is evaluated at once, :data:`_GRID_BLOCK` settings at a
 #: time (81 values each): a design whose target is reached early is not evaluated further.
-_GRID_DESIGNS = 1024
+#: 128 keeps each temporary near 0.7 MB: with 1024 (5.3 MB) the allocator handed them
+#: back to the system and took them again at every block, and a 2,000-design sweep of
+#: the cone height spent about half its time on page faults (each design's lane is
+#: its own: the same answers).
+_GRID_DESIGNS = 128
 _GRID_BLOCK = 8
 #: From this many points sharing one disc stack's curves, their candidates are chosen on
 #: a grid :data:`_FINE_CANDIDATES` times finer (the same peak, from fewer curves).
