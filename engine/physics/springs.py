@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import bisect
 import math
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 import numpy.typing as npt
@@ -47,6 +47,7 @@ __all__ = [
     "MATERIALS",
     "SEATING_COEFFICIENTS",
     "STANDARD_WIRE_DIAMETERS",
+    "DiscLaw",
     "SpringMaterial",
     "bergstrasser_factor",
     "buckling_deflection",
@@ -54,8 +55,12 @@ __all__ = [
     "disc_falling_region",
     "disc_force",
     "disc_force_flat",
+    "disc_force_of",
     "disc_k4",
+    "disc_law",
     "disc_rate",
+    "disc_rate_of",
+    "disc_stress_om",
     "disc_stresses",
     "disc_thickness_for_flat_force",
     "helical_mass",
@@ -839,13 +844,118 @@ def disc_force(
     >>> round(disc_force(0.000675, 0.040, 0.0204, 0.00225, 0.0009))
     6500
     """
+    law = disc_law(
+        outer_diameter, inner_diameter, thickness, cone_height, elastic_modulus, poisson, k4
+    )
+    return disc_force_of(law, deflection)
+
+
+class DiscLaw(NamedTuple):
+    """A disc's constants of :func:`disc_force` and :func:`disc_rate` (:func:`disc_law`)."""
+
+    thickness: Any
+    #: h0/t
+    height_ratio: Any
+    #: K4²
+    k4_squared: Any
+    #: 4E/(1 − μ²) t⁴/(K1 De²) K4², the force's factor
+    force_scale: Any
+    #: 4E/(1 − μ²) t³/(K1 De²) K4², the rate's factor
+    rate_scale: Any
+
+
+def disc_law(
+    outer_diameter: FloatArray,
+    inner_diameter: FloatArray,
+    thickness: FloatArray,
+    cone_height: FloatArray,
+    elastic_modulus: FloatArray = 206e9,
+    poisson: FloatArray = 0.3,
+    k4: FloatArray = 1.0,
+) -> DiscLaw:
+    """What :func:`disc_force` and :func:`disc_rate` compute before the deflection, once
+    (for a stack evaluated at many deflections, in the same order: the same floats):
+    4E/(1 − μ²) t⁴/(K1 De²) K4² and the same with t³, h0/t and K4² (a helper of their
+    equations, DIN EN 16983, which their docstrings give).
+
+    Parameters
+    ----------
+    outer_diameter : float
+        De, [m]
+    inner_diameter : float
+        Di, [m]
+    thickness : float
+        t, [m]
+    cone_height : float
+        h0, [m]
+    elastic_modulus : float, optional
+        E, [Pa]
+    poisson : float, optional
+        μ, [-]
+    k4 : float, optional
+        K4, [-]
+
+    Returns
+    -------
+    law : DiscLaw
+        t [m], h0/t [-], K4² [-], the force's factor [N], the rate's factor [N/m]
+
+    Examples
+    --------
+    >>> law = disc_law(0.040, 0.0204, 0.00225, 0.0009)
+    >>> round(float(law.height_ratio), 6), round(float(disc_force_of(law, 0.000675)))
+    (0.4, 6500)
+    """
     k1, _, _ = disc_factors(outer_diameter, inner_diameter)
     t = np.asarray(thickness, dtype=float)
-    u = np.asarray(deflection, dtype=float) / t
     a = np.asarray(cone_height, dtype=float) / t
     k4s = np.asarray(k4, dtype=float) ** 2
     scale = _disc_scale(outer_diameter, t, k1, elastic_modulus, poisson)
-    return _out(scale * t**4 * k4s * u * (k4s * (a - u) * (a - u / 2.0) + 1.0))
+    return DiscLaw(t, a, k4s, scale * t**4 * k4s, scale * t**3 * k4s)
+
+
+def disc_force_of(law: DiscLaw, deflection: FloatArray) -> FloatArray:
+    """Force of one disc spring deflected by s, from its :func:`disc_law`: the equation
+    of :func:`disc_force` (DIN EN 16983), which is this of the disc's law (its doctests
+    hold the numbers).
+
+    Parameters
+    ----------
+    law : DiscLaw
+        The disc's :func:`disc_law`
+    deflection : float
+        s, from the free state, [m]
+
+    Returns
+    -------
+    force : float
+        F, [N]
+    """
+    u = np.asarray(deflection, dtype=float) / law.thickness
+    a, k4s = law.height_ratio, law.k4_squared
+    return _out(law.force_scale * u * (k4s * (a - u) * (a - u / 2.0) + 1.0))
+
+
+def disc_rate_of(law: DiscLaw, deflection: FloatArray) -> FloatArray:
+    """Rate dF/ds of one disc spring deflected by s, from its :func:`disc_law`: the
+    equation of :func:`disc_rate` (DIN EN 16983), which is this of the disc's law (its
+    doctests hold the numbers).
+
+    Parameters
+    ----------
+    law : DiscLaw
+        The disc's :func:`disc_law`
+    deflection : float
+        s, from the free state, [m]
+
+    Returns
+    -------
+    rate : float
+        dF/ds, [N/m]
+    """
+    u = np.asarray(deflection, dtype=float) / law.thickness
+    a, k4s = law.height_ratio, law.k4_squared
+    return _out(law.rate_scale * (k4s * (a * a - 3.0 * a * u + 1.5 * u * u) + 1.0))
 
 
 def disc_rate(
@@ -914,13 +1024,10 @@ def disc_rate(
     >>> round(float(disc_rate(6e-4, 0.040, 0.0204, 0.001, 0.002) / diff), 6)
     1.0
     """
-    k1, _, _ = disc_factors(outer_diameter, inner_diameter)
-    t = np.asarray(thickness, dtype=float)
-    u = np.asarray(deflection, dtype=float) / t
-    a = np.asarray(cone_height, dtype=float) / t
-    k4s = np.asarray(k4, dtype=float) ** 2
-    scale = _disc_scale(outer_diameter, t, k1, elastic_modulus, poisson)
-    return _out(scale * t**3 * k4s * (k4s * (a * a - 3.0 * a * u + 1.5 * u * u) + 1.0))
+    law = disc_law(
+        outer_diameter, inner_diameter, thickness, cone_height, elastic_modulus, poisson, k4
+    )
+    return disc_rate_of(law, deflection)
 
 
 def disc_force_flat(
@@ -1039,16 +1146,93 @@ def disc_stresses(
     u = np.asarray(deflection, dtype=float) / t
     a = np.asarray(cone_height, dtype=float) / t
     k4_ = np.asarray(k4, dtype=float)
-    base = -_disc_scale(outer_diameter, t, k1, elastic_modulus, poisson) * t**2 * k4_ * u
+    base = _disc_stress_base(deflection, outer_diameter, t, k1, elastic_modulus, poisson, k4)
     bend = k4_ * np.asarray(k2) * (a - u / 2.0)
     outer = k4_ * (np.asarray(k2) - 2.0 * np.asarray(k3)) * (a - u / 2.0)
     return {
-        "OM": _out(base * 3.0 / np.pi),
+        "OM": _out(_om(base)),
         "I": _out(base * (bend + k3)),
         "II": _out(base * (bend - k3)),
         "III": _out(base / delta * (outer - k3)),
         "IV": _out(base / delta * (outer + k3)),
     }
+
+
+def _disc_stress_base(
+    deflection: Any,
+    outer_diameter: Any,
+    thickness: Any,
+    k1: Any,
+    elastic_modulus: Any,
+    poisson: Any,
+    k4: Any,
+) -> Any:
+    """−4E/(1 − μ²) t²/(K1 De²) K4 s/t, the factor every disc stress has
+    (:func:`disc_stresses`)."""
+    t = np.asarray(thickness, dtype=float)
+    u = np.asarray(deflection, dtype=float) / t
+    scale = _disc_scale(outer_diameter, t, k1, elastic_modulus, poisson)
+    return -scale * t**2 * np.asarray(k4, dtype=float) * u
+
+
+def _om(base: Any) -> Any:
+    """σ_OM from :func:`_disc_stress_base`."""
+    return base * 3.0 / np.pi
+
+
+def disc_stress_om(
+    deflection: FloatArray,
+    outer_diameter: FloatArray,
+    inner_diameter: FloatArray,
+    thickness: FloatArray,
+    cone_height: FloatArray,
+    elastic_modulus: FloatArray = 206e9,
+    poisson: FloatArray = 0.3,
+    k4: FloatArray = 1.0,
+) -> FloatArray:
+    r"""Stress of a disc spring at the point OM alone (the static check), DIN EN 16983.
+
+    .. math::
+        \sigma_{OM} = -\frac{4E}{1 - \mu^2}\frac{t^2}{K_1 D_e^2} K_4 \frac{s}{t}
+                      \frac{3}{\pi}
+
+    The same floats as :func:`disc_stresses`' ``"OM"`` without the other four points
+    (``cone_height`` is taken, and not needed, for the same arguments).
+
+    Parameters
+    ----------
+    deflection : float
+        s, [m]
+    outer_diameter : float
+        De, [m]
+    inner_diameter : float
+        Di, [m]
+    thickness : float
+        t, [m]
+    cone_height : float
+        h0, [m]
+    elastic_modulus : float, optional
+        E, [Pa]
+    poisson : float, optional
+        μ, [-]
+    k4 : float, optional
+        K4, [-]
+
+    Returns
+    -------
+    stress : float
+        σ_OM, negative is compression, [Pa]
+
+    Examples
+    --------
+    >>> round(disc_stress_om(0.000675, 0.040, 0.0204, 0.00225, 0.0009) / 1e6)
+    -1196
+    """
+    k1, _, _ = disc_factors(outer_diameter, inner_diameter)
+    base = _disc_stress_base(
+        deflection, outer_diameter, thickness, k1, elastic_modulus, poisson, k4
+    )
+    return _out(_om(base))
 
 
 def disc_falling_region(thickness: Any, cone_height: Any, k4: Any = 1.0) -> tuple[Any, Any]:

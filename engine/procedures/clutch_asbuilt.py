@@ -452,6 +452,13 @@ class Spring:
             self.material = None
             self.shear_modulus = x["shear_modulus"]
             self.elastic_modulus = x["disc_elastic_modulus"]
+        self._disc: sp.DiscLaw | None = None
+
+    def disc_law(self) -> sp.DiscLaw:
+        """One disc's :func:`springs.disc_law`, computed at the first force or rate."""
+        if self._disc is None:
+            self._disc = sp.disc_law(*self.disc_geometry())
+        return self._disc
 
     def force(self, deflection: Any) -> Any:
         x = self.x
@@ -463,7 +470,7 @@ class Spring:
                 x["spring_active_coils"],
             )
             return np.asarray(rate) * np.asarray(deflection)
-        single = sp.disc_force(np.asarray(deflection) / x["disc_series"], *self.disc_geometry())
+        single = sp.disc_force_of(self.disc_law(), np.asarray(deflection) / x["disc_series"])
         return sp.stack_force(single, x["disc_parallel"], x["disc_friction"])
 
     def disc_geometry(self) -> tuple[Any, ...]:
@@ -484,7 +491,7 @@ class Spring:
         x = self.x
         if self.kind == "helical":
             return np.asarray(self.force(1.0)) * np.ones(np.shape(deflection))
-        single = sp.disc_rate(np.asarray(deflection) / x["disc_series"], *self.disc_geometry())
+        single = sp.disc_rate_of(self.disc_law(), np.asarray(deflection) / x["disc_series"])
         return sp.stack_force(
             np.asarray(single) / x["disc_series"], x["disc_parallel"], x["disc_friction"]
         )
@@ -498,9 +505,7 @@ class Spring:
                 x["spring_wire_diameter"],
                 x["stress_correction"],
             )
-        om = sp.disc_stresses(np.asarray(deflection) / x["disc_series"], *self.disc_geometry())[
-            "OM"
-        ]
+        om = sp.disc_stress_om(np.asarray(deflection) / x["disc_series"], *self.disc_geometry())
         return np.abs(om)
 
     def permissible(self) -> Any:
@@ -1356,21 +1361,26 @@ def newton_roots(
         hi = np.where(below, hi, x)
         with np.errstate(all="ignore"):
             step = value / slope
-        new = x - step
-        moved = np.abs(step)
-        newton = (new > lo) & (new < hi) & (moved + moved <= before)
-        middle = 0.5 * (lo + hi)
-        new = np.where(newton, new, middle)
-        moved = np.where(newton, moved, hi - middle)
-        # Newton's next step from here, were it taken: the last two steps give the
-        # rate of quadratic convergence, d_{n+1} ≈ d_n³/d_{n-1}²
-        with np.errstate(all="ignore"):
+            new = x - step
+            moved = np.abs(step)
+            newton = (new > lo) & (new < hi) & (moved + moved <= before)
+            middle = 0.5 * (lo + hi)
+            new = np.where(newton, new, middle)
+            moved = np.where(newton, moved, hi - middle)
+            # Newton's next step from here, were it taken: the last two steps give the
+            # rate of quadratic convergence, d_{n+1} ≈ d_n³/d_{n-1}²
             ahead = np.where(newton & newer, moved * (moved / last) ** 2, moved)
-        done = (ahead < (xtol + rtol * np.abs(x)) * 0.5) | (value == 0.0)
-        root[i[done]] = np.where(value == 0.0, x, new)[done]
-        go = ~done
-        i, lo, hi, x = i[go], lo[go], hi[go], new[go]
-        before, last, newer = last[go], moved[go], newton[go]
+            zero = value == 0.0
+            done = np.flatnonzero((ahead < (xtol + rtol * np.abs(x)) * 0.5) | zero)
+        if done.size:
+            root[i[done]] = np.where(zero[done], x[done], new[done])
+            if done.size == i.size:
+                break
+            go = np.ones(i.size, dtype=bool)
+            go[done] = False
+            i, lo, hi, new = i[go], lo[go], hi[go], new[go]
+            last, moved, newton = last[go], moved[go], newton[go]
+        x, before, last, newer = new, last, moved, newton
     return root
 
 
@@ -1388,7 +1398,11 @@ _TARGET_INPUTS = (
 
 #: Designs whose grid of settings is evaluated at once, :data:`_GRID_BLOCK` settings at a
 #: time (81 values each): a design whose target is reached early is not evaluated further.
-_GRID_DESIGNS = 1024
+#: 128 keeps each temporary near 0.7 MB: with 1024 (5.3 MB) the allocator handed them
+#: back to the system and took them again at every block, and a 2,000-design sweep of
+#: the cone height spent about half its time on page faults (each design's lane is
+#: its own: the same answers).
+_GRID_DESIGNS = 128
 _GRID_BLOCK = 8
 #: From this many points sharing one disc stack's curves, their candidates are chosen on
 #: a grid :data:`_FINE_CANDIDATES` times finer (the same peak, from fewer curves).
@@ -1396,7 +1410,9 @@ _FINE_LANES = 8192
 _FINE_CANDIDATES = 8
 
 
-def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
+def setting_roots(
+    x: Mapping[str, Any], target: Any, upper: Any, known: dict[Any, Any] | None = None
+) -> Any:
     r"""Nut setting Δ whose peak torque is ``target``: the least Δ in [0, upper] where it
     reaches it; NaN where none does.
 
@@ -1413,6 +1429,10 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
     the grid point before it, which then hold one crossing (:func:`_first_top`).
     Floats or arrays (``x``'s arrays one design per element): a float for one design,
     the same number as an element of a sweep. [001, eq. 1–3] on :func:`characteristic`.
+
+    ``known``, a dict kept by the caller for the calls on one design (the same stack at
+    other targets): its grid, the peaks there and its curves are evaluated once, at
+    the first of them (only where the design is the same at every point).
     """
     n = max([1, *(v.size for v in _arrays(x)), np.size(target), np.size(upper)])
     aims = np.array(np.broadcast_to(np.asarray(target, dtype=float), (n,)))
@@ -1439,10 +1459,23 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
     curves: _Curves | None = None
     span = np.zeros(n, dtype=np.intp)  # the grid interval of a shared grid's bracket
     peaks: Any = None
-    if shared:  # one grid for every point, the same floats as each point's own
+    every: _Curves | None = None
+    ends: Any = None
+    if known is None or not shared or known.get("upper", float(upper)) != float(upper):
+        known = {}
+    if shared and "peaks" in known:  # the design's grid, peaks and curves from a call before
+        line, every, ends, peaks = known["line"], known["every"], known["ends"], known["peaks"]
+        lo_val = peaks[0] - aims
+    elif shared:  # one grid for every point, the same floats as each point's own
         line = np.linspace(0.0, float(upper), 65)
-        peaks = characteristic(design, Spring(design), line, peak_only=True)["peak_torque"]
+        every = _Curves.every(design)
+        if every is None:
+            peaks = characteristic(design, Spring(design), line, peak_only=True)["peak_torque"]
+        else:  # the curves on the grid, kept for their bounds: the peak is their largest
+            ends = every.on(line)
+            peaks = np.take_along_axis(ends, np.argmax(ends, axis=-1)[:, None], axis=-1)[:, 0]
         peaks = np.asarray(peaks, dtype=float)
+        known.update(upper=float(upper), line=line, every=every, ends=ends, peaks=peaks)
         lo_val = peaks[0] - aims  # δ = 0
     else:
         lo_val = excess(np.zeros(n), np.arange(n))
@@ -1464,7 +1497,9 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
         todo = todo[:0]
         # a large sweep's curves on a finer grid: fewer of them to evaluate at each step
         refine = _FINE_CANDIDATES if at.size >= _FINE_LANES else 1
-        curves = _Curves.of(design, line, refine) if at.size else None
+        if at.size and refine not in known:
+            known[refine] = _Curves.of(design, line, refine, every, ends)
+        curves = known[refine] if at.size else None
     grid = np.linspace(0.0, tops, 65, axis=-1) if todo.size else tops[:, None]
     begin = np.ones(n, dtype=np.intp)  # the first grid point each point's scan reads
     before = lo_val.copy()  # the function at the grid point before ``begin``
@@ -1515,8 +1550,8 @@ def setting_roots(x: Mapping[str, Any], target: Any, upper: Any) -> Any:
     if x["spring_type"] == "disc" and pending.size:
         # a curve's top past the target before the root: the first crossing lies below it
         part = design if shared else points.take(x, n, pending) if varied else x
-        known = None if curves is None else curves.tops
-        found = _first_top(part, pending, aims, tops, root, peaks, excess, known)
+        at_tops = None if curves is None else curves.tops
+        found = _first_top(part, pending, aims, tops, root, peaks, excess, at_tops)
         if found is not None:
             lanes, top, f_top = found
             # the grid point before the top: the peak is below the target up to there
@@ -1693,49 +1728,73 @@ class _Curves:
         # the candidates' grid: ``refine`` intervals in each of the search's, from
         # ``start`` in steps of ``step``
         self.refine, self.start, self.step = 1, 0.0, 1.0
+        # the rows of ``candidates`` (one per interval, :meth:`of`): their lengths and starts
+        self.counts: Any = None
+        self.offsets: Any = None
 
     @classmethod
-    def of(cls, x: Mapping[str, Any], grid: Any, refine: int = 1) -> _Curves | None:
+    def every(cls, x: Mapping[str, Any]) -> _Curves | None:
+        """All 81 curves of a disc stack ``x`` (candidates: every lift point); None where
+        the lift points move with the setting (``ball_lift`` absent) or the spring is
+        helical (whose setting :class:`SettingGrid` solves)."""
+        if x["ball_lift"] is None or x["spring_type"] != "disc":
+            return None
+        lift, beta = lift_points(x["ball_lift"], x["ball_diameter"], _ride(x), POINTS)
+        return cls(x, lift, beta, np.arange(lift.size))
+
+    def on(self, grid: Any) -> Any:
+        """Every curve at the settings ``grid``, (settings, 81): the floats
+        :func:`characteristic` evaluates there (its peak is their largest)."""
+        return self.torque(np.asarray(grid, dtype=float)[:, None], self.candidates)
+
+    @classmethod
+    def of(
+        cls,
+        x: Mapping[str, Any],
+        grid: Any,
+        refine: int = 1,
+        curves: _Curves | None = None,
+        ends: Any = None,
+    ) -> _Curves | None:
         """The curves of a disc stack ``x`` on the settings ``grid`` (their candidates on
         ``refine`` equal intervals in each of its: fewer curves each, at the price of
         more bounds); None where the lift points move with the setting (``ball_lift``
         absent), a torque is not finite, or the spring is helical (whose setting
-        :class:`SettingGrid` solves)."""
-        if x["ball_lift"] is None or x["spring_type"] != "disc":
+        :class:`SettingGrid` solves). ``curves`` and ``ends``: :meth:`every` curve and
+        their torques :meth:`on` the grid where known (not evaluated again)."""
+        curves = cls.every(x) if curves is None else curves
+        if curves is None:
             return None
-        lift, beta = lift_points(x["ball_lift"], x["ball_diameter"], _ride(x), POINTS)
-        curves = cls(x, lift, beta, np.arange(lift.size))
+        lift, beta = curves.lift, curves.beta
         grid = np.asarray(grid, dtype=float)
         intervals = (grid.size - 1) * refine
         if refine > 1:
-            grid = np.linspace(grid[0], grid[-1], intervals + 1)
-        bounds = curves.bounds(grid)
+            grid, ends = np.linspace(grid[0], grid[-1], intervals + 1), None
+        bounds = curves.bounds(grid, ends)
         if bounds is None:
             return None
         upper, lower, ends = bounds
         slack = cls.SLACK * float(np.max(np.abs(ends)))
         holds = upper + slack >= np.max(lower, axis=-1, keepdims=True) - slack
-        # per interval the curves that may hold the peak, padded with the first of them
-        width = int(np.max(np.count_nonzero(holds, axis=-1)))
-        order = np.argsort(~holds, axis=-1, kind="stable")[:, :width]
-        first = order[:, :1]
-        count = np.count_nonzero(holds, axis=-1)[:, None]
-        padded = np.where(np.arange(width) < count, order, first)
-        # row j of ``candidates`` is the interval ending at grid point j (row 0 unused)
-        candidates = np.concatenate([padded[:1], padded])
+        # per interval the curves that may hold the peak, in ascending order, one row
+        # after another; row j is the interval ending at grid point j (row 0 unused)
+        rows, candidates = np.nonzero(np.concatenate([holds[:1], holds]))
         out = cls(x, lift, beta, candidates, curves.tops)
+        out.counts = np.bincount(rows, minlength=holds.shape[0] + 1)
+        out.offsets = np.cumsum(out.counts) - out.counts
         out.refine, out.start = refine, float(grid[0])
         out.step = (float(grid[-1]) - out.start) / intervals
         return out
 
-    def bounds(self, grid: Any) -> tuple[Any, Any, Any] | None:
+    def bounds(self, grid: Any, ends: Any = None) -> tuple[Any, Any, Any] | None:
         """(largest, smallest) of every curve in every interval of ``grid`` (interval j
         between settings j and j + 1, a row each), and the curves at the settings; None
         where a torque is not finite. Each curve is the disc force of a setting that
         rises with δ, times a constant: its extremes lie at the ends or at the force's
-        extrema inside (none where the force rises everywhere)."""
+        extrema inside (none where the force rises everywhere). ``ends``: the curves
+        :meth:`on` the grid, where known."""
         every = np.arange(self.lift.size)
-        ends = self.torque(grid[:, None], every)  # (65, 81)
+        ends = self.torque(grid[:, None], every) if ends is None else ends  # (65, 81)
         at = self.tops[0]  # (2, 81): the curves' tops
         inner = self.torque(np.where(np.isfinite(at), at, 0.0), every)
         if not (np.all(np.isfinite(ends)) and np.all(np.isfinite(inner))):
@@ -1766,12 +1825,20 @@ class _Curves:
         if self.refine > 1:  # the candidates' interval that holds each setting
             fine = np.floor((delta - self.start) / self.step).astype(np.intp) + 1
             span = np.clip(fine, (span - 1) * self.refine + 1, span * self.refine)
-        k = self.candidates[span]
-        torque = self.torque(delta[:, None], k)
-        top = np.arange(k.shape[0]) * k.shape[1] + np.argmax(torque, axis=-1)
-        held = k.ravel()[top]
+        # each setting's candidates, one setting after another (``owner`` their setting)
+        count = self.counts[span]
+        starts = np.cumsum(count) - count
+        owner = np.repeat(np.arange(span.size), count)
+        flat = np.arange(owner.size)
+        k = self.candidates[flat + np.repeat(self.offsets[span] - starts, count)]
+        torque = self.torque(delta[owner], k)
+        # each setting's first largest torque (its first NaN, if any), as argmax takes it
+        largest = np.maximum.reduceat(torque, starts)
+        first = (torque == largest[owner]) | np.isnan(torque)
+        top = np.minimum.reduceat(np.where(first, flat, owner.size), starts)
+        held = k[top]
         slope = peak_slope(self.x, self.spring, delta + self.lift[held], self.beta[held], 0.0)
-        return torque.ravel()[top], slope
+        return torque[top], slope
 
 
 def _bisect_rising(
@@ -1943,6 +2010,7 @@ def peak_setting(
     target: Any,
     force: Any,
     grid: SettingGrid | None = None,
+    known: dict[Any, Any] | None = None,
 ) -> tuple[Any, Any]:
     """(setting, largest stress over the lift) for the target peak torque; NaN where none.
 
@@ -1952,10 +2020,11 @@ def peak_setting(
     of the ~40 a bracketed root search takes; the two agree to 1e-12,
     ``tests/models/clutch/test_clutch_arrays.py``); at a point where they need not
     (a push ≤ 0 on the driving flank), and for a disc stack, by :func:`setting_roots`.
-    ``grid`` may be passed in when the same geometry serves several springs.
+    ``grid`` may be passed in when the same geometry serves several springs; ``known``
+    (a disc stack), the :func:`setting_roots` work kept for other targets on it.
     """
     if spring.kind == "disc":
-        root = setting_roots(x, target, x["disc_series"] * x["disc_cone_height"])
+        root = setting_roots(x, target, x["disc_series"] * x["disc_cone_height"], known)
         if np.ndim(root) == 0:  # one design
             if math.isnan(root):
                 return math.nan, math.nan
@@ -2007,8 +2076,9 @@ def setting_values(x: Mapping[str, Any], force: Any) -> tuple[dict[str, Any], li
     notes: list[str] = []
     helical = x["spring_type"] == "helical"
     found: tuple[Any, Any] | None = None
+    known: dict[Any, Any] = {}  # a disc stack's root-search work, for its suggestion too
     if not helical or x["spring_wire_diameter"] is not None:
-        delta, stress = peak_setting(x, Spring(x), target, force)
+        delta, stress = peak_setting(x, Spring(x), target, force, known=known)
         if np.ndim(delta) == 0 and math.isnan(delta):
             notes.append(
                 "required_peak_setting is null: no setting of this spring gives the target as "
@@ -2020,7 +2090,7 @@ def setting_values(x: Mapping[str, Any], force: Any) -> tuple[dict[str, Any], li
     if helical and x["spring_mean_diameter"] is not None:
         values.update(suggest_wire(x, target, force, notes))
     if not helical:
-        values.update(_suggest_parallel(x, target, force, notes, found))
+        values.update(_suggest_parallel(x, target, force, notes, found, known))
     return values, notes
 
 
@@ -2111,9 +2181,17 @@ def _suggest_parallel(
     force: Any,
     notes: list[str],
     given: tuple[Any, Any] | None,
+    known: dict[Any, Any] | None = None,
 ) -> dict[str, Any]:
     """The fewest discs in parallel that reach the target; ``given`` is the given stack's
-    own :func:`peak_setting` (not searched again for its own number of discs).
+    own :func:`peak_setting` (not searched again for its own number of discs), ``known``
+    its root search's work (:func:`setting_roots`).
+
+    Frictionless discs (w_M = 0), 2^j times the given number in parallel (or a 2^j-th
+    of it), press with exactly 2^j times its force at every deflection (F = n F_1, a
+    power of two scales a float exactly): the torque curves are the given stack's times
+    2^j to the last bit, so the setting for the target is the given stack's for the
+    target over 2^j, found on its curves (``known``), the same floats.
 
     Floats or arrays: each count is searched only at the points still without a pack;
     NaN where none of up to 8 works, and on floats the outputs are then left out.
@@ -2126,13 +2204,20 @@ def _suggest_parallel(
     limit = np.broadcast_to(np.asarray(x["disc_yield_strength"], dtype=float), (n,))
     delta: Any
     stress: Any
+    parallel, friction = x["disc_parallel"], x["disc_friction"]
+    frictionless = np.ndim(parallel) == 0 and np.ndim(friction) == 0 and friction == 0.0
     for k in range(1, 9):
         lanes = np.flatnonzero(open_)
-        if np.ndim(x["disc_parallel"]) == 0 and k == x["disc_parallel"]:
+        scale = k / parallel if frictionless else 0.0
+        if np.ndim(parallel) == 0 and k == parallel:
             if given is None:
                 delta, stress = math.nan, math.nan
             else:  # the given stack's own setting, at the points still open
                 delta, stress = (np.broadcast_to(g, (n,))[lanes] for g in given)
+        elif scale > 0.0 and math.frexp(scale)[0] == 0.5:  # 2^j times the given force
+            part = points.take(x, n, lanes) if _arrays(x) else x
+            aim = float(aims[0]) / scale if one else aims[lanes] / scale
+            delta, stress = peak_setting(part, Spring(part), aim, force, known=known)
         else:
             part = points.take(x, n, lanes) if _arrays(x) else x
             trial = {**part, "disc_parallel": k}
@@ -2173,7 +2258,8 @@ def disc_breakaway_setting(x: Mapping[str, Any], force: Any) -> Any:
 
     s_max where the disc's force peaks (none: the cone height). On a 65-point grid of
     the branch (the force rises along it) bisection finds the interval that holds the
-    setting, refined by Newton's method on the force and the stack's rate
+    setting (one stack whose grid forces rise: a sorted search of them, the same
+    interval), refined by Newton's method on the force and the stack's rate
     (:func:`newton_roots`, :meth:`Spring.rate`). Floats or arrays: a float for one
     design, the same number as an element of a sweep (a stack that is the same at
     every point is evaluated on its grid once). EN 16983.
@@ -2187,10 +2273,13 @@ def disc_breakaway_setting(x: Mapping[str, Any], force: Any) -> Any:
         np.asarray(x["disc_series"] * np.minimum(top, x["disc_cone_height"]), dtype=float), (n,)
     )
 
+    stack = None if varied else Spring(x)
+
     def excess_rate(delta: Any, lanes: Any) -> tuple[Any, Any]:
-        spring = Spring(points.take(x, n, lanes) if varied else x)
+        spring = Spring(points.take(x, n, lanes)) if stack is None else stack
         return np.asarray(spring.force(delta), dtype=float) - wanted[lanes], spring.rate(delta)
 
+    forces: Any = None
     if any(isinstance(x[k], np.ndarray) for k in _DISC_STACK):
         grid = np.linspace(0.0, upper, 65, axis=-1)
 
@@ -2200,7 +2289,7 @@ def disc_breakaway_setting(x: Mapping[str, Any], force: Any) -> Any:
     else:  # one stack: its forces on the grid once, the same floats
         line = np.linspace(0.0, float(upper[0]), 65)
         grid = np.broadcast_to(line, (n, 65))
-        forces = np.asarray(Spring(x).force(line), dtype=float)
+        forces = np.asarray((stack or Spring(x)).force(line), dtype=float)
 
         def excess(index: Any, lanes: Any) -> Any:
             return forces[index] - wanted[lanes]
@@ -2210,6 +2299,12 @@ def disc_breakaway_setting(x: Mapping[str, Any], force: Any) -> Any:
     reach = np.flatnonzero(~(at_top < 0.0))
     lo, hi = np.zeros(reach.size, dtype=np.intp), np.full(reach.size, 64)
     f_lo, f_hi = excess(lo, reach), at_top[reach]
+    if forces is not None and np.all(forces[1:] > forces[:-1]):
+        # one stack whose grid forces rise: the bracket the bisection below finds, at
+        # once (the first grid force at or past each point's; a NaN force: the last)
+        hi = np.clip(np.searchsorted(forces, wanted[reach], side="left"), 1, 64)
+        lo = hi - 1
+        f_lo, f_hi = excess(lo, reach), excess(hi, reach)
     while reach.size and np.any(hi - lo > 1):
         mid = (lo + hi) // 2
         value = excess(mid, reach)

@@ -61,3 +61,19 @@ def test_torque_sharing_takes_its_two_arrangements_only(name):
     assert cl.torque_sharing("per_ball", 4, 0.85) == pytest.approx(3.4, rel=1e-12)
     with pytest.raises(ValueError, match="arrangement must be one of"):
         cl.torque_sharing(name, 4, 0.85)
+
+
+def test_the_om_stress_alone_is_disc_stresses_om_to_the_bit():
+    # σ_OM = −4E/(1 − μ²) t²/(K1 De²) K4 (s/t) 3/π, by hand for De/Di = 40/20.4
+    # (K1 = 0.6858...), and the same floats as the five-point function's OM
+    from engine.physics import springs as sp
+
+    s = np.linspace(0.0, 0.002, 57)
+    om = sp.disc_stress_om(s, 0.040, 0.0204, 0.001, 0.002)
+    np.testing.assert_array_equal(om, sp.disc_stresses(s, 0.040, 0.0204, 0.001, 0.002)["OM"])
+    d = 0.040 / 0.0204
+    k1 = ((d - 1) / d) ** 2 / ((d + 1) / (d - 1) - 2 / math.log(d)) / math.pi
+    hand = -4 * 206e9 / (1 - 0.3**2) * 0.001**2 / (k1 * 0.040**2) * (0.0015 / 0.001) * 3 / math.pi
+    assert float(sp.disc_stress_om(0.0015, 0.040, 0.0204, 0.001, 0.002)) == pytest.approx(
+        hand, rel=1e-13
+    )
