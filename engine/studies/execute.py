@@ -15,7 +15,9 @@ the same summary, bit for bit, whichever executor ran them:
 The local cluster is private: its scheduler and workers speak mutual TLS with a key and
 a self-signed certificate made in memory when it starts (Dask's
 ``Security.temporary()``), so a process without them, on this machine or another, cannot
-connect, submit work or run code in the service's workers. An existing scheduler is
+connect, submit work or run code in the service's workers; the client itself reaches that
+scheduler, which runs in its own process, in process (``inproc://``, no socket), and
+fetches results from the workers over TLS. An existing scheduler is
 reached with the certificate files it is given (:class:`TLSFiles`), over TLS.
 
 Progress is reported after every chunk; a cancel event stops the study
@@ -35,6 +37,7 @@ idle within that and one point's time, where they ran a 256-point chunk to its e
 
 from __future__ import annotations
 
+import concurrent.futures
 import os
 import threading
 import time
@@ -325,8 +328,21 @@ class DaskExecutor:
                     # scheduler runs in this process, so a relayed chunk was decrypted,
                     # encrypted again and decrypted once more here; the workers are on
                     # loopback, so the client reaches them as the scheduler does
+                    # and the client speaks to the scheduler, which runs in this process,
+                    # in process (inproc://: Python objects handed over, no socket): over
+                    # TLS each chunk's inputs were pickled and encrypted here, decrypted,
+                    # unpickled, pickled and encrypted again for the worker, all in this
+                    # process; the address is reachable from this process alone, and the
+                    # workers still reach the scheduler, and the client the workers, over
+                    # mutual TLS
+                    scheduler = self._cluster.scheduler
+                    self._cluster.sync(scheduler.listen, "inproc://")
                     self._client = Client(
-                        self._cluster, set_as_default=False, direct_to_workers=True
+                        scheduler.listeners[-1].contact_address,
+                        security=self._cluster.security,
+                        loop=self._cluster.loop,  # one event loop, as Client(cluster) had
+                        set_as_default=False,
+                        direct_to_workers=True,
                     )
                     # the local workers share this machine with the service: lower their
                     # priority so single calculations get the cores first
@@ -399,6 +415,17 @@ class DaskExecutor:
         index: dict[str, int] = {}
         flying: set[Any] = set()
         lock = threading.Lock()
+        #: each chunk's result, fetched from its worker the moment the chunk ends (on Dask's
+        #: callback thread; the transfer itself on the client's event loop) while this
+        #: thread merges the chunk before it: fetched when this thread asked, after the
+        #: merge, the transfer and the merge took turns
+        fetched: dict[str, concurrent.futures.Future[ChunkResult]] = {}
+
+        def fetch(fut: Any, box: concurrent.futures.Future[ChunkResult]) -> None:
+            try:
+                box.set_result(fut.result())
+            except BaseException as exc:  # the chunk's error, or its cancel: raised on taking
+                box.set_exception(exc)
 
         def submit(i: int) -> Any:
             args = calls[i]
@@ -420,6 +447,8 @@ class DaskExecutor:
                 priority=priority,
             )
             index[fut.key] = i
+            box = fetched[fut.key] = concurrent.futures.Future()
+            fut.add_done_callback(lambda done: fetch(done, box))
             with lock:
                 flying.add(fut)
             return fut
@@ -447,7 +476,7 @@ class DaskExecutor:
             for fut in done:
                 if cancel.is_set():
                     break
-                result = fut.result()
+                result = fetched.pop(fut.key).result()
                 with lock:
                     flying.discard(fut)
                 yield index[fut.key], result

@@ -184,15 +184,17 @@ def _one_number(y: np.ndarray) -> np.ndarray | None:
 
 def one_numbers(part: ChunkResult) -> ChunkResult:
     """``part`` with each output whose chunk is one number (its partial summary's
-    extremes equal, no refused point) as a zero-stride view of it: a chunk sent from a
-    Dask worker then carries a number, not a column of copies (most outputs of a study
-    are not moved by its varied inputs)."""
+    extremes equal, no refused point; or no finite value, each NaN to the bit) as a
+    zero-stride view of it: a chunk sent from a Dask worker then carries a number, not a
+    column of copies (most outputs of a study are not moved by its varied inputs, and an
+    output a design does not have is NaN at every point: 9 of the 24 columns a preload
+    study's chunk sent)."""
     summary = part.summary or summarize_chunk(part).summary
     assert summary is not None
     values = dict(part.values)
     for name, y in values.items():
         m = summary.moments.get(name)
-        one = _one_number(y) if m is not None and m.count == y.size and m.low == m.high else None
+        one = _one_number(y) if m is None or (m.count == y.size and m.low == m.high) else None
         if one is not None:
             values[name] = one
     return replace(part, values=values)

@@ -91,6 +91,14 @@ def test_a_local_cluster_gives_the_in_process_result(reference: StudyRun) -> Non
         scheduler.handlers["gather"] = counted
         _equal(reference, run_study(RARE, _study(), executor))
         assert relayed == []
+        # the client speaks to the scheduler in this process, with no socket (a chunk's
+        # inputs are not encrypted and decrypted here on their way to a worker); the
+        # workers, and the client's fetches from them, over the cluster's TLS
+        client = executor.client()
+        assert client.scheduler.address.startswith("inproc://")
+        assert executor._cluster.scheduler_address.startswith("tls://")
+        workers = client.scheduler_info()["workers"]
+        assert len(workers) == 2 and all(w.startswith("tls://") for w in workers)
 
         def faults() -> int:
             # a chunk's column made and freed 50 times: from the heap, its pages are

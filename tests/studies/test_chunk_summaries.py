@@ -340,3 +340,20 @@ def test_a_chunk_of_one_number_travels_as_that_number() -> None:
             np.signbit(back.values[name]), np.signbit(y)
         )
     assert back.values["one"].strides == (0,) and back.summary == packed.summary
+
+
+def test_a_chunk_with_no_value_travels_as_one_nan() -> None:
+    # an output the design does not have (a preload study's nut and stripping outputs
+    # without a nut) is NaN at every point: one number to the bit, sent as one
+    size = 65_536
+    nan = np.full(size, np.nan)
+    other = nan.copy()
+    other.view(np.int64)[9] ^= 1  # a NaN of another payload: not the same bits, sent whole
+    part = ChunkResult({"none": nan, "other": other}, {}, ["closed_form"] * size, {}, 0.0)
+    packed = one_numbers(summarize_chunk(part))
+    assert packed.summary is not None and packed.summary.moments == {"none": None, "other": None}
+    assert [y.strides for y in packed.values.values()] == [(0,), (8,)]
+    back = pickle.loads(pickle.dumps(packed, protocol=5))
+    assert back.values["none"].shape == (size,) and back.values["none"].strides == (0,)
+    for name, y in part.values.items():  # every bit as it was
+        assert np.array_equal(back.values[name].view(np.int64), y.view(np.int64))
