@@ -1807,25 +1807,30 @@ def _ensure_compiled(p: np.ndarray) -> float:
 
 
 def _params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
-    p = np.zeros(NPAR)
-    p[C1], p[L1] = x["power_spring_rate"], x["power_spring_preload"]
-    p[C2], p[L2] = x["auxiliary_spring_rate"], x["auxiliary_spring_preload"]
-    p[C3], p[L3] = x["return_spring_rate"], x["return_spring_preload"]
-    p[GR] = x["gravity"]
-    p[M1], p[M2], p[M3] = x["half_coupling_mass"], x["stepped_shaft_mass"], x["striker_mass"]
-    p[MP], p[NR], p[X0] = x["roller_mass"], x["roller_count"], x["roller_radius"]
-    p[KAP], p[AH], p[AS] = g.kappa, g.a_h, g.a_s
-    p[JJ], p[MT] = x["flywheel_inertia"], x["motor_torque"]
+    """The cycle kernel's parameter vector (indices ``C1`` … ``PUSHP``), made in one call."""
     w_nl = x.get("motor_no_load_speed")
-    p[WNL] = 0.0 if w_nl is None else w_nl
-    p[H1], p[H2] = x["release_travel"], x["engagement_height"]
-    p[FF] = relock_friction(x)
     t = math.tan(x["cone_angle"])
-    p[TANA] = t
     nm = x["roller_count"] * x["roller_mass"]
-    p[MEP] = x["half_coupling_mass"] + x["stepped_shaft_mass"] + nm / (2.0 * t * t)
-    p[PUSHP] = nm / (2.0 * t)
-    return p
+    m1, m2 = x["half_coupling_mass"], x["stepped_shaft_mass"]
+    return np.array(
+        [
+            x["power_spring_rate"], x["power_spring_preload"],
+            x["auxiliary_spring_rate"], x["auxiliary_spring_preload"],
+            x["return_spring_rate"], x["return_spring_preload"],
+            x["gravity"],
+            m1, m2, x["striker_mass"],
+            x["roller_mass"], x["roller_count"], x["roller_radius"],
+            g.kappa, g.a_h, g.a_s,
+            x["flywheel_inertia"], x["motor_torque"],
+            0.0 if w_nl is None else w_nl,
+            x["release_travel"], x["engagement_height"],
+            relock_friction(x),
+            t,
+            m1 + m2 + nm / (2.0 * t * t),
+            nm / (2.0 * t),
+        ],
+        dtype=float,
+    )  # fmt: skip
 
 
 _NO_BUFFERS = (np.empty(1), np.empty(1), np.empty(1), np.empty(1))
@@ -1873,13 +1878,13 @@ _EVENTS: dict[tuple[tuple[int, float, float, float, float], ...], tuple[np.ndarr
 def _make_events(
     rows: tuple[tuple[int, float, float, float, float], ...],
 ) -> tuple[np.ndarray, ...]:
-    arr = np.array(rows, dtype=float).reshape(-1, 5)
+    kind, c0, c1, level, way = zip(*rows, strict=True)
     return (
-        arr[:, 0].astype(np.int64),
-        arr[:, 1].copy(),
-        arr[:, 2].copy(),
-        arr[:, 3].copy(),
-        arr[:, 4].copy(),
+        np.array(kind, dtype=np.int64),
+        np.array(c0, dtype=float),
+        np.array(c1, dtype=float),
+        np.array(level, dtype=float),
+        np.array(way, dtype=float),
     )
 
 
@@ -2033,9 +2038,21 @@ def _contact_params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
     return p
 
 
+def _jacobian_fill(p, jac):  # type: ignore[no-untyped-def]
+    """``jac`` (4 x 4) := the constraint Jacobian of :data:`CONTACTS` (:func:`_jacobian`)."""
+    for i in range(4):
+        for j in range(4):
+            jac[i, j] = _jacobian_c(p, i, j)
+
+
+_jacobian_fill_c = jit(_jacobian_fill, error_model="numpy")
+
+
 def _jacobian_matrix(p: np.ndarray) -> np.ndarray:
     """The 4 x 4 constraint Jacobian of :data:`CONTACTS` (:func:`_jacobian`, row by row)."""
-    return np.array([[_jacobian(p, i, j) for j in range(4)] for i in range(4)])
+    jac = np.empty((4, 4))
+    _jacobian_fill_c(p, jac)
+    return jac
 
 
 def _contact_rates(p, jac, q, v, tol, cand, rate):  # type: ignore[no-untyped-def]
@@ -2570,7 +2587,7 @@ def simulate_cycle(
     # while both faces press the rollers, the two-degree-of-freedom stage 3; where one would
     # have to pull (kind 4), the one-sided stage 3 takes over (_stage3_one_sided)
     for _ in range(64):
-        if _gfun(mode, 4, run.p, *state[1:]) < 0.0:  # already at a mode's start
+        if _gfun_c(mode, 4, run.p, *state[1:]) < 0.0:  # already at a mode's start
             t_ret, t_home, said = _stage3_one_sided(
                 run, x, g, state, t_blow, t3_end, clear, steps_per_period, t_ret
             )
