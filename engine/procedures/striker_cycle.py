@@ -136,7 +136,6 @@ import math
 import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from functools import cached_property
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -423,6 +422,12 @@ def _preload_force(x: Mapping[str, Any], g: Geometry) -> Any:
     )
 
 
+def _held(x: Mapping[str, Any], g: Geometry) -> Any:
+    """True where the preloads hold the half-coupling on its stop: :math:`c_1\\lambda_1 +
+    c_2\\lambda_2 + W > 0` (else the design is refused)."""
+    return _preload_force(x, g) > 0.0
+
+
 def _radius(x: Mapping[str, Any], g: Geometry) -> Any:
     return x["roller_radius"] + g.kappa * x["release_travel"]
 
@@ -528,7 +533,7 @@ def release_speed_of(x: Mapping[str, Any], roller_geometry: str | None = None) -
     x = _numbers(x)
     with quiet(x.many):
         g = _geo(x) if roller_geometry is None else _geometry_of(x, roller_geometry)
-        held = _preload_force(x, g) > 0.0
+        held = _held(x, g)
         if not is_array(held) and not held:
             raise _preloads_do_not_hold(x, g)
         _, _, w_m = _speeds(x, g)
@@ -627,6 +632,36 @@ def _never_fast_enough(x: Mapping[str, Any], w: Any) -> InfeasibleDesign:
     )
 
 
+class _kept:
+    """``functools.cached_property`` without its lock: worked out on the first read, then an
+    attribute of the instance.
+
+    Python 3.11's takes a lock on every first read (a few µs each, five an outcome); an
+    outcome is read by the thread that made it.
+
+    >>> class A:
+    ...     @_kept
+    ...     def v(self):
+    ...         print("once")
+    ...         return 2
+    >>> a = A()
+    >>> a.v, a.v
+    once
+    (2, 2)
+    """
+
+    def __init__(self, fn: Callable[[Any], Any]) -> None:
+        self.fn = fn
+        self.name = fn.__name__
+        self.__doc__ = fn.__doc__
+
+    def __get__(self, obj: Any, owner: Any = None) -> Any:
+        if obj is None:
+            return self
+        value = obj.__dict__[self.name] = self.fn(obj)
+        return value
+
+
 #: The numeric fields of :class:`CycleOutcome`, in its order.
 _NUMERIC = (
     "release_speed",
@@ -680,23 +715,23 @@ class CycleOutcome:
 
     # the verdicts below are read a dozen times a run: each is worked out once (an
     # outcome's fields are not changed once it is made)
-    @cached_property
+    @_kept
     def refused(self) -> Any:
         return self.refusal != HELD
 
-    @cached_property
+    @_kept
     def blow(self) -> Any:
         return isfinite(self.engagement_time)
 
-    @cached_property
+    @_kept
     def returns(self) -> Any:
         return self.blow & isfinite(self.return_time)
 
-    @cached_property
+    @_kept
     def relocks(self) -> Any:
         return self.returns & isfinite(self.home_time) & isfinite(self.relock_time)
 
-    @cached_property
+    @_kept
     def cycle_time(self) -> Any:
         """Motor start to re-lock: spin-up, engagement, home, re-lock [s]; NaN if no re-lock."""
         t = self.spin_up_time + self.engagement_time + self.home_time + self.relock_time
@@ -1082,7 +1117,7 @@ def _stage1(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, Any, Any, Any]
     t_spin = _time_to_speed(x, _inertia(x, g, r), w_m)
     t_lift = _time_to_speed(x, _inertia(x, g, x["roller_radius"]), w_0)
     refusal = where(
-        _preload_force(x, g) > 0.0,
+        _held(x, g),
         where(isfinite(t_spin) & isfinite(t_lift), HELD, NEVER_FAST_ENOUGH),
         NOT_HELD,
     )
@@ -1118,7 +1153,7 @@ class Release:
     release_radius: np.ndarray
     refusal: np.ndarray
 
-    @cached_property
+    @_kept
     def refused(self) -> np.ndarray:
         return self.refusal != HELD
 
@@ -1972,8 +2007,11 @@ class _Run:
         """
         active = np.zeros(4, dtype=np.bool_)
         cand = np.zeros(4, dtype=np.bool_)
-        n = (_SERIES_POINTS + 16) * _MAX_SWITCHES if self.rec.on else 1
-        bufs = (np.empty(n), np.empty(n), np.empty(n), np.empty(n))
+        if self.rec.on:  # room for every segment's points
+            n = (_SERIES_POINTS + 16) * _MAX_SWITCHES
+            bufs = (np.empty(n), np.empty(n), np.empty(n), np.empty(n))
+        else:  # stride 0: the kernel writes at most an event's point there, read by no one
+            bufs = _NO_BUFFERS
         st[_U_REC] = 1 if self.rec.on else 0
         st[_U_STEPS], st[_U_MAX] = self.steps, self.max_steps
         while True:
@@ -2424,15 +2462,17 @@ def simulate_cycle(
     big = m1 + nm + m3
 
     # ---- stage 1: spin-up from rest; the half-coupling rests until lift-off -------------
-    w_0 = liftoff_speed_of(x)
-    w_qs = release_speed_of(x)  # also refuses a design whose preloads do not hold
+    # (release_speed_of, liftoff_speed_of, release_radius_of and stage1_effective_mass
+    # without their doors: x is converted already)
+    if not _held(x, g):  # the preloads do not hold the half-coupling: refused
+        raise _preloads_do_not_hold(x, g)
+    r, w_0, w_qs = _speeds(x, g)
     inertia_0 = _inertia(x, g, x["roller_radius"])
     t_l = _time_to_speed(x, inertia_0, w_0)
-    r = release_radius_of(x)
     t_qs = _time_to_speed(x, _inertia(x, g, r), w_qs)
     if not (math.isfinite(t_qs) and math.isfinite(t_l)):
         raise _never_fast_enough(x, max(w_qs, w_0))
-    m_e = stage1_effective_mass(x)
+    m_e = _effective_mass(x, g)
     w_nl = x.get("motor_no_load_speed")
     span = max(t_qs - t_l, 0.0)
     k_qs = _stage1_stiffness(x, g, w_qs)
@@ -2548,7 +2588,7 @@ def simulate_cycle(
             return_time=math.inf,
             home_time=math.inf,
             relock_time=math.inf,
-            snap=snaps_at_liftoff(x),
+            snap=_stage1_stiffness(x, g, w_0) < 0.0,  # snaps_at_liftoff
             notes=notes,
             warnings=warnings,
             series=_series(rec, x, g, r) if record else {},
@@ -2686,7 +2726,7 @@ def simulate_cycle(
         return_time=t_ret,
         home_time=t_home,
         relock_time=t_lock,
-        snap=snaps_at_liftoff(x),
+        snap=_stage1_stiffness(x, g, w_0) < 0.0,  # snaps_at_liftoff
         notes=notes,
         warnings=warnings,
         series=_series(rec, x, g, r) if record else {},
