@@ -2066,14 +2066,22 @@ def _contact_params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
     and :math:`y_r = a_h y_h + a_s y_s`): tan α on both faces for the symmetric V, tan α and
     0 (the striker's flat face) for the single cone.
     """
-    p = np.zeros(U_NPAR)
-    p[U_M1], p[U_M3] = x["half_coupling_mass"], x["striker_mass"]
-    p[U_NM] = x["roller_count"] * x["roller_mass"]
-    p[U_C1], p[U_L1] = x["power_spring_rate"], x["power_spring_preload"]
-    p[U_C3], p[U_L3] = x["return_spring_rate"], x["return_spring_preload"]
-    p[U_G], p[U_H2] = x["gravity"], x["engagement_height"]
-    p[U_TA], p[U_TB] = g.a_h / g.kappa, g.a_s / g.kappa
-    return p
+    return np.array(  # in the order of the indices U_M1 ... U_H2
+        [
+            x["half_coupling_mass"],
+            x["striker_mass"],
+            x["roller_count"] * x["roller_mass"],
+            x["power_spring_rate"],
+            x["power_spring_preload"],
+            x["return_spring_rate"],
+            x["return_spring_preload"],
+            x["gravity"],
+            g.a_h / g.kappa,
+            g.a_s / g.kappa,
+            x["engagement_height"],
+        ],
+        dtype=float,
+    )
 
 
 def _jacobian_fill(p, jac):  # type: ignore[no-untyped-def]
