@@ -1897,8 +1897,9 @@ def _events(*rows: tuple[int, float, float, float, float]) -> tuple[np.ndarray, 
     rows every design); the kernels only read them. Rows with a level -0.0 (equal to 0.0
     as a key) are made anew.
     """
-    if not all(r[3] != 0.0 or math.copysign(1.0, r[3]) > 0.0 for r in rows):
-        return _make_events(rows)
+    for r in rows:  # a loop, not all() over a generator: five times a design
+        if r[3] == 0.0 and math.copysign(1.0, r[3]) < 0.0:
+            return _make_events(rows)
     made = _EVENTS.get(rows)
     if made is None:
         if len(_EVENTS) >= 256:
@@ -1961,10 +1962,12 @@ class _Run:
                 expected_steps=self.steps + expected,
                 step_budget=self.max_steps,
             )
-        stride = max(1, int(expected / _SERIES_POINTS * 4)) if self.rec.on else 0
-        bufs = self.rec.buffers()
+        rec = self.rec
+        stride = max(1, int(expected / _SERIES_POINTS * 4)) if rec.on else 0
+        bufs = rec.buffers() if rec.on else _NO_BUFFERS
         n_rec = 0
         t, w, q0, q1, v0, v1 = state
+        measure = type(self) is _Run
         while True:
             if self.deadline is not None and time.perf_counter() > self.deadline:
                 raise BudgetExceeded(
@@ -1983,16 +1986,17 @@ class _Run:
                 mode, self.p, t, w, q0, q1, v0, v1, h, chunk, t_end, *events,
                 clamp0, stride, *bufs, n_rec,
             )  # fmt: skip
-            if type(self) is _Run:
-                _COST.measured(int(used), time.perf_counter() - began)
-            self.steps += int(used)
+            if measure:
+                _COST.measured(used, time.perf_counter() - began)
+            self.steps += used
             if status != 0:
                 break
         fin = math.isfinite
         if not (fin(t) and fin(w) and fin(q0) and fin(q1) and fin(v0) and fin(v1)):
             raise SolverFailed("the cycle integration diverged", field="fidelity")
-        self.rec.add(mode, bufs, n_rec)
-        return int(status), int(which), (t, w, q0, q1, v0, v1)
+        if rec.on:
+            rec.add(mode, bufs, n_rec)
+        return status, which, (t, w, q0, q1, v0, v1)
 
     def go_one_sided(
         self, p: np.ndarray, jac: np.ndarray, fs: np.ndarray, st: np.ndarray, q: np.ndarray,
