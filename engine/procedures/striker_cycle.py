@@ -2088,21 +2088,9 @@ def _contact_params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
     )
 
 
-def _jacobian_fill(p, jac):  # type: ignore[no-untyped-def]
-    """``jac`` (4 x 4) := the constraint Jacobian of :data:`CONTACTS` (:func:`_jacobian`)."""
-    for i in range(4):
-        for j in range(4):
-            jac[i, j] = _jacobian_c(p, i, j)
-
-
-_jacobian_fill_c = jit(_jacobian_fill, error_model="numpy")
-
-
 def _jacobian_matrix(p: np.ndarray) -> np.ndarray:
     """The 4 x 4 constraint Jacobian of :data:`CONTACTS` (:func:`_jacobian`, row by row)."""
-    jac = np.empty((4, 4))
-    _jacobian_fill_c(p, jac)
-    return jac
+    return np.array([[_jacobian(p, i, j) for j in range(4)] for i in range(4)])
 
 
 def _contact_rates(p, jac, q, v, tol, cand, rate):  # type: ignore[no-untyped-def]
@@ -2474,17 +2462,15 @@ def simulate_cycle(
     big = m1 + nm + m3
 
     # ---- stage 1: spin-up from rest; the half-coupling rests until lift-off -------------
-    # (release_speed_of, liftoff_speed_of, release_radius_of and stage1_effective_mass
-    # without their doors: x is converted already)
-    if not _held(x, g):  # the preloads do not hold the half-coupling: refused
-        raise _preloads_do_not_hold(x, g)
-    r, w_0, w_qs = _speeds(x, g)
+    w_0 = liftoff_speed_of(x)
+    w_qs = release_speed_of(x)  # also refuses a design whose preloads do not hold
+    r = _speeds(x, g)[0]  # release_radius_of without its door (x is converted already)
     inertia_0 = _inertia(x, g, x["roller_radius"])
     t_l = _time_to_speed(x, inertia_0, w_0)
     t_qs = _time_to_speed(x, _inertia(x, g, r), w_qs)
     if not (math.isfinite(t_qs) and math.isfinite(t_l)):
         raise _never_fast_enough(x, max(w_qs, w_0))
-    m_e = _effective_mass(x, g)
+    m_e = _effective_mass(x, g)  # stage1_effective_mass without its door
     w_nl = x.get("motor_no_load_speed")
     span = max(t_qs - t_l, 0.0)
     k_qs = _stage1_stiffness(x, g, w_qs)
