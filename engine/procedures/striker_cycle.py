@@ -1815,15 +1815,18 @@ def _kernels_loaded() -> bool:
     """
     global _LOADED
     if not _LOADED:
-        _LOADED = all(getattr(k, "signatures", None) != [] for k in (_advance_c, _one_sided_c))
+        _LOADED = all(
+            getattr(k, "signatures", None) != [] for k in (_advance_c, _one_sided_c, _gfun_c)
+        )
     return _LOADED
 
 
 def _ensure_compiled(p: np.ndarray) -> float:
     """Load (or compile) the kernels now if they are not yet; returns the seconds it took.
 
-    Both the cycle kernel and the one-sided stage 3's (a design finds out only in stage 3
-    whether it needs the latter, when its deadline is already running).
+    The cycle kernel, the one-sided stage 3's (a design finds out only in stage 3 whether
+    it needs the latter, when its deadline is already running) and the event function the
+    driver asks at stage 3's start.
     """
     if _kernels_loaded():
         return 0.0
@@ -1832,6 +1835,8 @@ def _ensure_compiled(p: np.ndarray) -> float:
     if getattr(_advance_c, "signatures", None) == []:
         _advance_c(S2, p, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-6, 0, 1.0,
                    *_events((0, 1.0, 0.0, 1.0, 1.0)), False, 0, buf, buf, buf, buf, 0)  # fmt: skip
+    if getattr(_gfun_c, "signatures", None) == []:
+        _gfun_c(S3, 4, p, 0.0, 0.0, 0.0, 0.0, 0.0)
     if getattr(_one_sided_c, "signatures", None) == []:
         st = np.zeros(_U_NI, dtype=np.int64)
         st[_U_PHASE], st[_U_SEGS] = 2, _MAX_SWITCHES  # returns at once (too many segments)
