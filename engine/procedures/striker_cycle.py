@@ -136,7 +136,6 @@ import math
 import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from functools import cached_property
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -423,6 +422,12 @@ def _preload_force(x: Mapping[str, Any], g: Geometry) -> Any:
     )
 
 
+def _held(x: Mapping[str, Any], g: Geometry) -> Any:
+    """True where the preloads hold the half-coupling on its stop: :math:`c_1\\lambda_1 +
+    c_2\\lambda_2 + W > 0` (else the design is refused)."""
+    return _preload_force(x, g) > 0.0
+
+
 def _radius(x: Mapping[str, Any], g: Geometry) -> Any:
     return x["roller_radius"] + g.kappa * x["release_travel"]
 
@@ -528,7 +533,7 @@ def release_speed_of(x: Mapping[str, Any], roller_geometry: str | None = None) -
     x = _numbers(x)
     with quiet(x.many):
         g = _geo(x) if roller_geometry is None else _geometry_of(x, roller_geometry)
-        held = _preload_force(x, g) > 0.0
+        held = _held(x, g)
         if not is_array(held) and not held:
             raise _preloads_do_not_hold(x, g)
         _, _, w_m = _speeds(x, g)
@@ -627,6 +632,36 @@ def _never_fast_enough(x: Mapping[str, Any], w: Any) -> InfeasibleDesign:
     )
 
 
+class _kept:
+    """``functools.cached_property`` without its lock: worked out on the first read, then an
+    attribute of the instance.
+
+    Python 3.11's takes a lock on every first read (a few µs each, five an outcome); an
+    outcome is read by the thread that made it.
+
+    >>> class A:
+    ...     @_kept
+    ...     def v(self):
+    ...         print("once")
+    ...         return 2
+    >>> a = A()
+    >>> a.v, a.v
+    once
+    (2, 2)
+    """
+
+    def __init__(self, fn: Callable[[Any], Any]) -> None:
+        self.fn = fn
+        self.name = fn.__name__
+        self.__doc__ = fn.__doc__
+
+    def __get__(self, obj: Any, owner: Any = None) -> Any:
+        if obj is None:
+            return self
+        value = obj.__dict__[self.name] = self.fn(obj)
+        return value
+
+
 #: The numeric fields of :class:`CycleOutcome`, in its order.
 _NUMERIC = (
     "release_speed",
@@ -680,23 +715,23 @@ class CycleOutcome:
 
     # the verdicts below are read a dozen times a run: each is worked out once (an
     # outcome's fields are not changed once it is made)
-    @cached_property
+    @_kept
     def refused(self) -> Any:
         return self.refusal != HELD
 
-    @cached_property
+    @_kept
     def blow(self) -> Any:
         return isfinite(self.engagement_time)
 
-    @cached_property
+    @_kept
     def returns(self) -> Any:
         return self.blow & isfinite(self.return_time)
 
-    @cached_property
+    @_kept
     def relocks(self) -> Any:
         return self.returns & isfinite(self.home_time) & isfinite(self.relock_time)
 
-    @cached_property
+    @_kept
     def cycle_time(self) -> Any:
         """Motor start to re-lock: spin-up, engagement, home, re-lock [s]; NaN if no re-lock."""
         t = self.spin_up_time + self.engagement_time + self.home_time + self.relock_time
@@ -1082,7 +1117,7 @@ def _stage1(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, Any, Any, Any]
     t_spin = _time_to_speed(x, _inertia(x, g, r), w_m)
     t_lift = _time_to_speed(x, _inertia(x, g, x["roller_radius"]), w_0)
     refusal = where(
-        _preload_force(x, g) > 0.0,
+        _held(x, g),
         where(isfinite(t_spin) & isfinite(t_lift), HELD, NEVER_FAST_ENOUGH),
         NOT_HELD,
     )
@@ -1118,7 +1153,7 @@ class Release:
     release_radius: np.ndarray
     refusal: np.ndarray
 
-    @cached_property
+    @_kept
     def refused(self) -> np.ndarray:
         return self.refusal != HELD
 
@@ -1781,7 +1816,7 @@ def _kernels_loaded() -> bool:
     global _LOADED
     if not _LOADED:
         _LOADED = all(
-            getattr(k, "signatures", None) != [] for k in (_advance_c, _contact_advance_c)
+            getattr(k, "signatures", None) != [] for k in (_advance_c, _one_sided_c, _gfun_c)
         )
     return _LOADED
 
@@ -1789,43 +1824,53 @@ def _kernels_loaded() -> bool:
 def _ensure_compiled(p: np.ndarray) -> float:
     """Load (or compile) the kernels now if they are not yet; returns the seconds it took.
 
-    Both the cycle kernel and the one-sided stage 3's (a design finds out only in stage 3
-    whether it needs the latter, when its deadline is already running).
+    The cycle kernel, the one-sided stage 3's (a design finds out only in stage 3 whether
+    it needs the latter, when its deadline is already running) and the event function the
+    driver asks at stage 3's start.
     """
-    if _kernels_loaded() or getattr(_advance_c, "signatures", None) != []:
+    if _kernels_loaded():
         return 0.0
     start = time.perf_counter()
     buf = np.empty(1)
-    _advance_c(S2, p, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-6, 0, 1.0,
-               *_events((0, 1.0, 0.0, 1.0, 1.0)), False, 0, buf, buf, buf, buf, 0)  # fmt: skip
-    if getattr(_contact_advance_c, "signatures", None) == []:
-        z4 = np.zeros(4)
-        _contact_advance_c(np.ones(U_NPAR), np.zeros(4, dtype=np.bool_), 0.0, z4, z4.copy(),
-                           1e-6, 0, 1.0, np.zeros(1, dtype=np.int64), np.zeros((1, 4)),
-                           np.zeros(1), np.ones(1), 0, buf, buf, buf, buf, 0)  # fmt: skip
+    if getattr(_advance_c, "signatures", None) == []:
+        _advance_c(S2, p, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-6, 0, 1.0,
+                   *_events((0, 1.0, 0.0, 1.0, 1.0)), False, 0, buf, buf, buf, buf, 0)  # fmt: skip
+    if getattr(_gfun_c, "signatures", None) == []:
+        _gfun_c(S3, 4, p, 0.0, 0.0, 0.0, 0.0, 0.0)
+    if getattr(_one_sided_c, "signatures", None) == []:
+        st = np.zeros(_U_NI, dtype=np.int64)
+        st[_U_PHASE], st[_U_SEGS] = 2, _MAX_SWITCHES  # returns at once (too many segments)
+        flags = np.zeros(4, dtype=np.bool_)
+        _one_sided_c(np.ones(U_NPAR), np.zeros((4, 4)), np.zeros(_U_NF), st, flags,
+                     flags.copy(), np.zeros(4), np.zeros(4), buf, buf, buf, buf)  # fmt: skip
     return time.perf_counter() - start
 
 
 def _params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
-    p = np.zeros(NPAR)
-    p[C1], p[L1] = x["power_spring_rate"], x["power_spring_preload"]
-    p[C2], p[L2] = x["auxiliary_spring_rate"], x["auxiliary_spring_preload"]
-    p[C3], p[L3] = x["return_spring_rate"], x["return_spring_preload"]
-    p[GR] = x["gravity"]
-    p[M1], p[M2], p[M3] = x["half_coupling_mass"], x["stepped_shaft_mass"], x["striker_mass"]
-    p[MP], p[NR], p[X0] = x["roller_mass"], x["roller_count"], x["roller_radius"]
-    p[KAP], p[AH], p[AS] = g.kappa, g.a_h, g.a_s
-    p[JJ], p[MT] = x["flywheel_inertia"], x["motor_torque"]
+    """The cycle kernel's parameter vector (indices ``C1`` … ``PUSHP``), made in one call."""
     w_nl = x.get("motor_no_load_speed")
-    p[WNL] = 0.0 if w_nl is None else w_nl
-    p[H1], p[H2] = x["release_travel"], x["engagement_height"]
-    p[FF] = relock_friction(x)
     t = math.tan(x["cone_angle"])
-    p[TANA] = t
     nm = x["roller_count"] * x["roller_mass"]
-    p[MEP] = x["half_coupling_mass"] + x["stepped_shaft_mass"] + nm / (2.0 * t * t)
-    p[PUSHP] = nm / (2.0 * t)
-    return p
+    m1, m2 = x["half_coupling_mass"], x["stepped_shaft_mass"]
+    return np.array(
+        [
+            x["power_spring_rate"], x["power_spring_preload"],
+            x["auxiliary_spring_rate"], x["auxiliary_spring_preload"],
+            x["return_spring_rate"], x["return_spring_preload"],
+            x["gravity"],
+            m1, m2, x["striker_mass"],
+            x["roller_mass"], x["roller_count"], x["roller_radius"],
+            g.kappa, g.a_h, g.a_s,
+            x["flywheel_inertia"], x["motor_torque"],
+            0.0 if w_nl is None else w_nl,
+            x["release_travel"], x["engagement_height"],
+            relock_friction(x),
+            t,
+            m1 + m2 + nm / (2.0 * t * t),
+            nm / (2.0 * t),
+        ],
+        dtype=float,
+    )  # fmt: skip
 
 
 _NO_BUFFERS = (np.empty(1), np.empty(1), np.empty(1), np.empty(1))
@@ -1857,8 +1902,9 @@ def _events(*rows: tuple[int, float, float, float, float]) -> tuple[np.ndarray, 
     rows every design); the kernels only read them. Rows with a level -0.0 (equal to 0.0
     as a key) are made anew.
     """
-    if not all(r[3] != 0.0 or math.copysign(1.0, r[3]) > 0.0 for r in rows):
-        return _make_events(rows)
+    for r in rows:  # a loop, not all() over a generator: five times a design
+        if r[3] == 0.0 and math.copysign(1.0, r[3]) < 0.0:
+            return _make_events(rows)
     made = _EVENTS.get(rows)
     if made is None:
         if len(_EVENTS) >= 256:
@@ -1873,13 +1919,13 @@ _EVENTS: dict[tuple[tuple[int, float, float, float, float], ...], tuple[np.ndarr
 def _make_events(
     rows: tuple[tuple[int, float, float, float, float], ...],
 ) -> tuple[np.ndarray, ...]:
-    arr = np.array(rows, dtype=float).reshape(-1, 5)
+    kind, c0, c1, level, way = zip(*rows, strict=True)
     return (
-        arr[:, 0].astype(np.int64),
-        arr[:, 1].copy(),
-        arr[:, 2].copy(),
-        arr[:, 3].copy(),
-        arr[:, 4].copy(),
+        np.array(kind, dtype=np.int64),
+        np.array(c0, dtype=float),
+        np.array(c1, dtype=float),
+        np.array(level, dtype=float),
+        np.array(way, dtype=float),
     )
 
 
@@ -1921,10 +1967,12 @@ class _Run:
                 expected_steps=self.steps + expected,
                 step_budget=self.max_steps,
             )
-        stride = max(1, int(expected / _SERIES_POINTS * 4)) if self.rec.on else 0
-        bufs = self.rec.buffers()
+        rec = self.rec
+        stride = max(1, int(expected / _SERIES_POINTS * 4)) if rec.on else 0
+        bufs = rec.buffers() if rec.on else _NO_BUFFERS
         n_rec = 0
         t, w, q0, q1, v0, v1 = state
+        measure = type(self) is _Run
         while True:
             if self.deadline is not None and time.perf_counter() > self.deadline:
                 raise BudgetExceeded(
@@ -1943,81 +1991,80 @@ class _Run:
                 mode, self.p, t, w, q0, q1, v0, v1, h, chunk, t_end, *events,
                 clamp0, stride, *bufs, n_rec,
             )  # fmt: skip
-            if type(self) is _Run:
-                _COST.measured(int(used), time.perf_counter() - began)
-            self.steps += int(used)
+            if measure:
+                _COST.measured(used, time.perf_counter() - began)
+            self.steps += used
             if status != 0:
                 break
         fin = math.isfinite
         if not (fin(t) and fin(w) and fin(q0) and fin(q1) and fin(v0) and fin(v1)):
             raise SolverFailed("the cycle integration diverged", field="fidelity")
-        self.rec.add(mode, bufs, n_rec)
-        return int(status), int(which), (t, w, q0, q1, v0, v1)
+        if rec.on:
+            rec.add(mode, bufs, n_rec)
+        return status, which, (t, w, q0, q1, v0, v1)
 
-    def go_contact(
-        self,
-        p: np.ndarray,
-        active: np.ndarray,
-        t: float,
-        q: np.ndarray,
+    def go_one_sided(
+        self, p: np.ndarray, jac: np.ndarray, fs: np.ndarray, st: np.ndarray, q: np.ndarray,
         v: np.ndarray,
-        h: float,
-        t_end: float,
-        rows: list[tuple[int, tuple[float, ...], float, float]],
-    ) -> tuple[int, int, float]:
-        """Run the one-sided stage 3 (:func:`_contact_advance`) from (t, q, v) to its first
-        event; ``q`` and ``v`` are updated in place. Returns (status, event, t)."""
-        expected = (t_end - t) / h
-        if self.steps + expected * _CONTACT_STEP_COST > self.max_steps:
-            raise BudgetExceeded(
-                f"the cycle simulation would take about {self.steps + expected:.2g} RK4 steps "
-                f"in stage 3 (budget {self.max_steps:.2g}); use fidelity 'closed_form'",
-                field="fidelity",
-                expected_steps=self.steps + expected,
-                step_budget=self.max_steps,
-            )
-        ekind = np.array([r[0] for r in rows], dtype=np.int64)
-        ecoef = np.array([r[1] for r in rows], dtype=float).reshape(-1, 4)
-        elvl = np.array([r[2] for r in rows], dtype=float)
-        edir = np.array([r[3] for r in rows], dtype=float)
-        stride = max(1, int(expected / _SERIES_POINTS * 4)) if self.rec.on else 0
-        bufs = self.rec.buffers()
-        n_rec = 0
-        if (
-            self.deadline is not None
-            and not _kernels_loaded()
-            and (getattr(_contact_advance_c, "signatures", None) == [])
-        ):
-            # loading or compiling this kernel (once per process) is not the design's time
-            began = time.perf_counter()
-            _contact_advance_c(p, active, t, q.copy(), v.copy(), h, 0, t_end, ekind, ecoef,
-                               elvl, edir, 0, *bufs, 0)  # fmt: skip
-            self.deadline += time.perf_counter() - began
+    ) -> None:  # fmt: skip
+        """Run the one-sided stage 3 (:func:`_one_sided`) from the state in ``fs``, ``st``,
+        ``q`` and ``v`` until the striker is home or ``t_end``; they are updated in place.
+
+        The kernel comes back here for what it does not do itself: the time budget's look
+        at the clock (between chunks of :data:`_CONTACT_CHUNK` steps), a plastic catch's
+        impulses (:func:`_catch`) and the refusals.
+        """
+        active = np.zeros(4, dtype=np.bool_)
+        cand = np.zeros(4, dtype=np.bool_)
+        if self.rec.on:  # room for every segment's points
+            n = (_SERIES_POINTS + 16) * _MAX_SWITCHES
+            bufs = (np.empty(n), np.empty(n), np.empty(n), np.empty(n))
+        else:  # stride 0: the kernel writes at most an event's point there, read by no one
+            bufs = _NO_BUFFERS
+        st[_U_REC] = 1 if self.rec.on else 0
+        st[_U_STEPS], st[_U_MAX] = self.steps, self.max_steps
         while True:
             if self.deadline is not None and time.perf_counter() > self.deadline:
                 raise BudgetExceeded(
                     f"the cycle simulation stopped at its time budget after {self.steps} steps",
                     field="fidelity",
                 )
-            chunk = min(_CONTACT_CHUNK, (self.max_steps - self.steps) // _CONTACT_STEP_COST)
-            if chunk <= 0:
+            code = _one_sided_c(p, jac, fs, st, active, cand, q, v, *bufs)
+            self.steps = int(st[_U_STEPS])
+            if code == _U_DONE:
+                break
+            if code == _U_CATCH:
+                v[:] = _catch(p, v, [i for i in range(4) if cand[i]], jac, float(fs[_U_VSCALE]))
+            elif code == _U_BUDGET:
+                expected = float(fs[_U_EXPECTED])
+                raise BudgetExceeded(
+                    f"the cycle simulation would take about {self.steps + expected:.2g} RK4 "
+                    f"steps in stage 3 (budget {self.max_steps:.2g}); use fidelity "
+                    "'closed_form'",
+                    field="fidelity",
+                    expected_steps=self.steps + expected,
+                    step_budget=self.max_steps,
+                )
+            elif code == _U_USED:
                 raise BudgetExceeded(
                     f"the cycle simulation used its budget of {self.max_steps} steps; use "
                     "fidelity 'closed_form'",
                     field="fidelity",
                 )
-            status, which, t, used, n_rec = _contact_advance_c(
-                p, active, t, q, v, h, chunk, t_end, ekind, ecoef, elvl, edir, stride, *bufs,
-                n_rec,
-            )  # fmt: skip
-            self.steps += int(used) * _CONTACT_STEP_COST
-            if status != 0:
-                break
-        fin = math.isfinite
-        if not (fin(t) and all(map(fin, q.tolist())) and all(map(fin, v.tolist()))):
-            raise SolverFailed("the cycle integration diverged in stage 3", field="fidelity")
-        self.rec.add(S3U, bufs, n_rec)
-        return int(status), int(which), float(t)
+            elif code == _U_DIVERGED:
+                raise SolverFailed("the cycle integration diverged in stage 3", field="fidelity")
+            elif code == _U_NO_SET:
+                raise SolverFailed(
+                    "stage 3: no consistent set of roller contacts", field="fidelity"
+                )
+            elif code == _U_SWITCHES:
+                raise SolverFailed(
+                    f"stage 3: the rollers changed contact more than {_MAX_SWITCHES} times "
+                    "before the striker came home; report this design",
+                    field="fidelity",
+                )
+            # _U_CHUNK: a look at the clock, then on
+        self.rec.add(S3U, bufs, int(st[_U_NREC]))
 
 
 def _contact_params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
@@ -2028,14 +2075,22 @@ def _contact_params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
     and :math:`y_r = a_h y_h + a_s y_s`): tan α on both faces for the symmetric V, tan α and
     0 (the striker's flat face) for the single cone.
     """
-    p = np.zeros(U_NPAR)
-    p[U_M1], p[U_M3] = x["half_coupling_mass"], x["striker_mass"]
-    p[U_NM] = x["roller_count"] * x["roller_mass"]
-    p[U_C1], p[U_L1] = x["power_spring_rate"], x["power_spring_preload"]
-    p[U_C3], p[U_L3] = x["return_spring_rate"], x["return_spring_preload"]
-    p[U_G], p[U_H2] = x["gravity"], x["engagement_height"]
-    p[U_TA], p[U_TB] = g.a_h / g.kappa, g.a_s / g.kappa
-    return p
+    return np.array(  # in the order of the indices U_M1 ... U_H2
+        [
+            x["half_coupling_mass"],
+            x["striker_mass"],
+            x["roller_count"] * x["roller_mass"],
+            x["power_spring_rate"],
+            x["power_spring_preload"],
+            x["return_spring_rate"],
+            x["return_spring_preload"],
+            x["gravity"],
+            g.a_h / g.kappa,
+            g.a_s / g.kappa,
+            x["engagement_height"],
+        ],
+        dtype=float,
+    )
 
 
 def _jacobian_matrix(p: np.ndarray) -> np.ndarray:
@@ -2043,58 +2098,116 @@ def _jacobian_matrix(p: np.ndarray) -> np.ndarray:
     return np.array([[_jacobian(p, i, j) for j in range(4)] for i in range(4)])
 
 
-def _gaps(p: np.ndarray, q: np.ndarray, jac: np.ndarray) -> np.ndarray:
-    """The four gaps :math:`g \\ge 0` of :data:`CONTACTS` at q = (y_h, y_s, x - x0, y_r) [m]."""
-    return jac @ q + np.array([0.0, p[U_H2], 0.0, 0.0])
+def _contact_rates(p, jac, q, v, tol, cand, rate):  # type: ignore[no-untyped-def]
+    """Which contacts touch and how fast their gaps open, at (q, v); returns the speed scale.
+
+    ``cand[i]``: the gap :math:`g_i` of :data:`CONTACTS` (:func:`_jacobian`, the jaws'
+    bottom at :math:`h_2`) within ``tol`` of 0; ``rate`` = :math:`J v`. The scale is the
+    largest :math:`|J v|` (NaN if one is), at least 1e-300.
+    """
+    top = 0.0
+    nan = False
+    for i in range(4):
+        gap = 0.0
+        r = 0.0
+        for j in range(4):
+            gap += jac[i, j] * q[j]
+            r += jac[i, j] * v[j]
+        if i == 1:
+            gap += p[10]
+        cand[i] = abs(gap) <= tol
+        rate[i] = r
+        if r != r:
+            nan = True
+        elif abs(r) > top:
+            top = abs(r)
+    if nan:
+        return math.nan
+    return 1e-300 if top < 1e-300 else top
 
 
-def _contact_set(
-    p: np.ndarray, q: np.ndarray, v: np.ndarray, tol: float, jac: np.ndarray
-) -> tuple[np.ndarray, np.ndarray]:
-    """The active contacts and the velocities after a plastic catch, at a touching state.
+_contact_rates_c = jit(_contact_rates, error_model="numpy")
 
-    The constraints whose gap is within ``tol`` of 0 are candidates. First the impulse
-    problem: a set S of candidates whose impulses :math:`P_S \\ge 0` stop their closing
+
+def _active_set(p, jac, q, rate, vscale, cand, active, acc, lam, wk, idx):  # type: ignore[no-untyped-def]
+    r"""The contacts that stay, into ``active``; False if no set is consistent.
+
+    Among the touching contacts (``cand``) that are neither opening nor closing
+    (:math:`|J_i v| \le 10^{-9}` ``vscale``), a set S whose reactions push
+    (:math:`\lambda_S \ge 0`, :func:`_contact_accel`) and leave every other such contact's
+    gap accelerating open: a complementarity problem of at most four constraints with a
+    positive definite matrix (one solution), solved by enumeration, the larger sets first
+    (each size in the order of ``itertools.combinations``), the empty set last.
+    """
+    still = np.empty(4, dtype=np.int64)
+    n = 0
+    for i in range(4):
+        if cand[i] and abs(rate[i]) <= 1e-9 * vscale:
+            still[n] = i
+            n += 1
+    trial = np.empty(4, dtype=np.bool_)
+    for size in range(n, -1, -1):
+        # the subsets of this size, position 0 the highest bit: descending masks are the
+        # combinations' order
+        for m in range((1 << n) - 1, -1, -1):
+            k = 0
+            for b in range(n):
+                k += (m >> b) & 1
+            if k != size:
+                continue
+            for i in range(4):
+                trial[i] = False
+            for b in range(n):
+                if (m >> (n - 1 - b)) & 1:
+                    trial[still[b]] = True
+            _contact_accel_c(p, trial, q, acc, lam, wk, idx)
+            ascale = abs(acc[0])  # the largest |acc|, at least 1e-300, as Python's max
+            for j in range(1, 4):
+                if abs(acc[j]) > ascale:
+                    ascale = abs(acc[j])
+            if ascale < 1e-300:
+                ascale = 1e-300
+            ok = True
+            for i in range(4):
+                if not lam[i] >= 0.0:
+                    ok = False
+            for b in range(n):
+                i = still[b]
+                if ok and not trial[i]:
+                    s = 0.0
+                    for j in range(4):
+                        s += jac[i, j] * acc[j]
+                    if not s >= -1e-12 * ascale:
+                        ok = False
+            if ok:
+                for i in range(4):
+                    active[i] = trial[i]
+                return True
+    return False
+
+
+_active_set_c = jit(_active_set, error_model="numpy")
+
+
+def _catch(p: np.ndarray, v: np.ndarray, cand: list[int], jac: np.ndarray, vscale: float) -> Any:
+    """The velocities after a plastic catch among the touching contacts ``cand``.
+
+    A set S of them whose impulses :math:`P_S \\ge 0` stop their closing
     (:math:`J_S v^+ = 0`, :math:`v^+ = v + M^{-1}J_S^TP_S`) and leave every other candidate
-    opening or still; then, among the candidates that are neither opening nor closing, a set
-    whose reactions push (:math:`\\lambda_S \\ge 0`) and leave every other such candidate's
-    gap accelerating open (:func:`_contact_accel`). Both are complementarity problems of at
-    most four constraints with a positive definite matrix (one solution), solved by
-    enumeration, the larger sets first.
+    opening or still, by enumeration, the larger sets first (one solution: the matrix is
+    positive definite); ``v`` itself if none is.
     """
     minv = 1.0 / p[[U_M1, U_M3, U_NM, U_NM]]
-    touching = np.abs(_gaps(p, q, jac)) <= tol
-    cand = [i for i in range(4) if touching[i]]
-    rate = jac @ v
-    vscale = max(float(np.max(np.abs(rate))), 1e-300)
-    v_new = v
-    if any(rate[i] < -1e-12 * vscale for i in cand):  # a gap closing: a plastic catch
-        for subset in _subsets(tuple(cand)):
-            s = list(subset)
-            js = jac[s]
-            imp = np.linalg.solve((js * minv) @ js.T, -js @ v)
-            if np.any(imp < 0.0):
-                continue
-            trial = v + minv * (js.T @ imp)
-            if all((jac[i] @ trial) >= -1e-12 * vscale for i in cand if i not in s):
-                v_new = trial
-                break
-        rate = jac @ v_new
-    still = [i for i in cand if abs(rate[i]) <= 1e-9 * vscale]
-    acc, lam = np.empty(4), np.empty(4)
-    wk, idx = np.empty((6, 5)), np.empty(4, dtype=np.int64)
-    for subset in (*_subsets(tuple(still)), ()):
-        act = _ACTIVE[sum(1 << i for i in subset)]
-        _contact_accel_c(p, act, q, acc, lam, wk, idx)
-        # the largest |acc| and lam ≥ 0 on Python floats: a numpy reduction of four
-        # numbers costs more than the kernel (the same values; NaN fails both as before)
-        a0, a1, a2, a3 = acc.tolist()
-        ascale = max(abs(a0), abs(a1), abs(a2), abs(a3), 1e-300)
-        if all(r >= 0.0 for r in lam.tolist()) and all(
-            (jac[i] @ acc) >= -1e-12 * ascale for i in still if i not in subset
-        ):
-            return act.copy(), v_new
-    raise SolverFailed("stage 3: no consistent set of roller contacts", field="fidelity")
+    for subset in _subsets(tuple(cand)):
+        s = list(subset)
+        js = jac[s]
+        imp = np.linalg.solve((js * minv) @ js.T, -js @ v)
+        if np.any(imp < 0.0):
+            continue
+        trial = v + minv * (js.T @ imp)
+        if all((jac[i] @ trial) >= -1e-12 * vscale for i in cand if i not in s):
+            return trial
+    return v
 
 
 @functools.lru_cache(maxsize=64)
@@ -2116,6 +2229,134 @@ _ACTIVE = tuple(np.array([bool(m >> i & 1) for i in range(4)]) for m in range(16
 #: Most contact changes the one-sided stage 3 follows (a roller that keeps leaving and
 #: touching a face faster than this is reported, not followed).
 _MAX_SWITCHES = 400
+
+# the one-sided stage 3's state between the kernel's returns (:func:`_one_sided`): floats
+(_U_T, _U_TBLOW, _U_TEND, _U_H, _U_CLEAR, _U_TRET, _U_THOME, _U_TOL, _U_LEFT2, _U_LEFT3,
+ _U_EXPECTED, _U_VSCALE, _U_TOL0, _U_NF) = range(14)  # fmt: skip
+# ... and integers: phase (0 contact set, 1 the same after a catch, 2 a segment's start,
+# 3 running), segments run, free flights, points recorded, stride, the segment's first
+# point, steps, step budget, recording, whether the set follows an event, first face let go
+(_U_PHASE, _U_SEGS, _U_FREE, _U_NREC, _U_STRIDE, _U_BASE, _U_STEPS, _U_MAX, _U_REC,
+ _U_AFTER, _U_FIRST, _U_NI) = range(12)  # fmt: skip
+# what the kernel comes back for
+(_U_DONE, _U_CATCH, _U_CHUNK, _U_BUDGET, _U_USED, _U_DIVERGED, _U_NO_SET,
+ _U_SWITCHES) = range(8)  # fmt: skip
+
+
+def _one_sided(p, jac, fs, st, active, cand, q, v, rt, rx, rq0, rq1):  # type: ignore[no-untyped-def]
+    """The one-sided stage 3's event loop (:func:`_stage3_one_sided`), compiled.
+
+    Runs from the state in ``fs`` and ``st`` (the ``_U_*`` slots), ``active``, ``q`` and
+    ``v``, updating them, until the striker is home or ``t_end`` (returns ``_U_DONE``) or
+    something only the caller can do: a plastic catch's impulses (``_U_CATCH``; it
+    replaces ``v`` and calls again), a look at the clock (``_U_CHUNK``, after
+    :data:`_CONTACT_CHUNK` steps of one segment), or a refusal (the other codes). A
+    segment is one call of :func:`_contact_advance` to its first event: the clear and home
+    levels, each active contact's reaction turning to a pull, each open gap closing.
+    Records into ``rt``… at most :data:`_SERIES_POINTS` + 16 points a segment.
+    """
+    rate = np.empty(4)
+    acc = np.empty(4)
+    lam = np.empty(4)
+    wk = np.empty((6, 5))
+    idx = np.empty(4, dtype=np.int64)
+    cap = _SERIES_POINTS + 16
+    while True:
+        phase = st[0]
+        if phase <= 1:  # the contacts that stay at a touching state
+            vscale = _contact_rates_c(p, jac, q, v, fs[7], cand, rate)
+            if phase == 0:
+                fs[11] = vscale
+                closing = False
+                for i in range(4):
+                    if cand[i] and rate[i] < -1e-12 * vscale:
+                        closing = True
+                if closing:  # a gap closing: a plastic catch (the caller's _catch)
+                    st[0] = 1
+                    return 1
+            if not _active_set_c(p, jac, q, rate, fs[11], cand, active, acc, lam, wk, idx):
+                return 6
+            if st[9] == 1 and not active[2] and not active[3]:
+                st[2] += 1
+            st[0] = 2
+            continue
+        if phase == 2:  # a segment's start
+            if st[1] >= _MAX_SWITCHES:
+                return 7
+            st[1] += 1
+            for i in range(2, 4):
+                if not active[i] and math.isnan(fs[6 + i]):
+                    fs[6 + i] = fs[0] - fs[1]
+                    if st[10] == 0:
+                        st[10] = i
+            expected = (fs[2] - fs[0]) / fs[3]
+            if st[6] + expected * _CONTACT_STEP_COST > st[7]:
+                fs[10] = expected
+                return 3
+            st[4] = max(1, int(expected / _SERIES_POINTS * 4)) if st[8] else 0
+            st[5] = st[3]
+            st[0] = 3
+        chunk = min(_CONTACT_CHUNK, (st[7] - st[6]) // _CONTACT_STEP_COST)
+        if chunk <= 0:
+            return 4
+        # the events, in this order: clear (once, while the return is not over), home, then
+        # per contact its reaction turning to a pull (active) or its gap closing (a hair of
+        # overlap, so a gap at 0 now is not yet a catch)
+        n_clear = 1 if (math.isinf(fs[5]) and fs[4] > 0.0) else 0
+        ekind = np.zeros(n_clear + 5, dtype=np.int64)
+        ecoef = np.zeros((n_clear + 5, 4))
+        elvl = np.zeros(n_clear + 5)
+        edir = np.full(n_clear + 5, -1.0)
+        e = 0
+        if n_clear:
+            ecoef[0, 1] = 1.0
+            elvl[0] = fs[4]
+            e = 1
+        ecoef[e, 1] = 1.0  # home
+        e += 1
+        for i in range(4):
+            if active[i]:
+                ekind[e] = 1
+                elvl[e] = float(i)
+            else:
+                for j in range(4):
+                    ecoef[e, j] = jac[i, j]
+                elvl[e] = -(p[10] if i == 1 else 0.0) - fs[12]
+            e += 1
+        a = st[5]
+        b = a + cap
+        status, which, t, used, n_rec = _contact_advance_c(
+            p, active, fs[0], q, v, fs[3], chunk, fs[2], ekind, ecoef, elvl, edir, st[4],
+            rt[a:b], rx[a:b], rq0[a:b], rq1[a:b], st[3] - a,
+        )  # fmt: skip
+        fs[0] = t
+        st[6] += used * _CONTACT_STEP_COST
+        st[3] = a + n_rec
+        if status == 0:
+            return 2
+        finite = math.isfinite(t)
+        for j in range(4):
+            finite = finite and math.isfinite(q[j]) and math.isfinite(v[j])
+        if not finite:
+            return 5
+        if status != 1:
+            return 0
+        k = which - n_clear  # -1 clear, 0 home, 1.. a contact
+        if k == 0:
+            fs[6] = t - fs[1]
+            if math.isinf(fs[5]):
+                fs[5] = fs[6]
+            return 0
+        if k < 0:
+            fs[5] = t - fs[1]
+            st[0] = 2
+            continue
+        fs[7] = 2.0 * fs[12]
+        st[9] = 1
+        st[0] = 0
+
+
+_one_sided_c = jit(_one_sided, error_model="numpy")
 
 
 def _stage3_one_sided(
@@ -2139,8 +2380,9 @@ def _stage3_one_sided(
     rollers go (its reaction's sign change is the event); a gap that closes is a plastic
     catch (no rebound: the same assumption as the seed's other catches, [002] gives no
     restitution for the rollers) whose impulses are found with the contacts that stay
-    (:func:`_contact_set`). While both faces hold, this is the two-degree-of-freedom
-    stage 3 of the module notes. Returns (return time, home time, notes) from the blow.
+    (:func:`_catch`, :func:`_active_set`). While both faces hold, this is the
+    two-degree-of-freedom stage 3 of the module notes. The event loop is compiled
+    (:func:`_one_sided`). Returns (return time, home time, notes) from the blow.
     """
     p = _contact_params(x, g)
     t, _, yh, ys, vh, vs = state
@@ -2150,66 +2392,30 @@ def _stage3_one_sided(
     scale = _x_scale(run.p)
     tol = 1e-12 * scale
     jac = _jacobian_matrix(p)
-    active, v = _contact_set(p, q, v, tol, jac)
     m1, m3 = x["half_coupling_mass"], x["striker_mass"]
     w_free = math.sqrt(max(x["power_spring_rate"] / m1, x["return_spring_rate"] / m3))
     m11, m12, m22 = _stage3_matrices(x, g)
     det = float(m11 * m22 - m12 * m12)
     w_both = math.sqrt(max(x["power_spring_rate"], x["return_spring_rate"]) / (det / max(m11, m22)))
     h = 2.0 * math.pi / (steps_per_period * max(w_free, w_both))
-    const = np.array([0.0, p[U_H2], 0.0, 0.0])
-    t_home = math.inf
-    left: dict[int, float] = {}
-    free_both = 0
-    for _ in range(_MAX_SWITCHES):
-        for i in (2, 3):
-            if not active[i] and i not in left:
-                left[i] = t - t_blow
-        rows: list[tuple[int, tuple[float, ...], float, float]] = []
-        labels: list[tuple[str, int]] = []
-        if math.isinf(t_ret) and clear > 0.0:
-            rows.append((0, (0.0, 1.0, 0.0, 0.0), clear, -1.0))
-            labels.append(("clear", -1))
-        rows.append((0, (0.0, 1.0, 0.0, 0.0), 0.0, -1.0))
-        labels.append(("home", -1))
-        for i in range(4):
-            if active[i]:  # its reaction turns to a pull: it lets go
-                rows.append((1, (0.0, 0.0, 0.0, 0.0), float(i), -1.0))
-                labels.append(("leave", i))
-            else:  # its gap closes (a hair of overlap, so a gap at 0 now is not yet a catch)
-                rows.append((0, tuple(jac[i]), -const[i] - tol, -1.0))
-                labels.append(("touch", i))
-        status, which, t = run.go_contact(p, active, t, q, v, h, t_end, rows)
-        if status != 1:
-            break
-        label, _i = labels[which]
-        if label == "home":
-            t_home = t - t_blow
-            if math.isinf(t_ret):
-                t_ret = t_home
-            break
-        if label == "clear":
-            t_ret = t - t_blow
-            continue
-        active, v = _contact_set(p, q, v, 2.0 * tol, jac)
-        if not active[2] and not active[3]:
-            free_both += 1
-    else:
-        raise SolverFailed(
-            f"stage 3: the rollers changed contact more than {_MAX_SWITCHES} times before the "
-            "striker came home; report this design",
-            field="fidelity",
-        )
+    fs = np.array([t, t_blow, t_end, h, clear, t_ret, math.inf, tol, math.nan, math.nan, 0.0,
+                   0.0, tol, 0.0])  # fmt: skip
+    st = np.zeros(_U_NI, dtype=np.int64)
+    run.go_one_sided(p, jac, fs, st, q, v)
     notes = []
+    left = {i: float(fs[6 + i]) for i in (2, 3) if not math.isnan(fs[6 + i])}
     if left:
-        first = min(left, key=left.__getitem__)
+        first = int(st[_U_FIRST])
+        if len(left) == 2 and left[5 - first] < left[first]:
+            first = 5 - first
+        free_both = int(st[_U_FREE])
         notes.append(
             f"stage 3: {left[first] * 1e3:.3g} ms after the blow {CONTACTS[first]} would have "
             "to pull the rollers; it lets them go and the return is followed with one-sided "
             "contacts (the rollers free between the cones, a plastic catch where a gap closes)"
             + (f"; they flew free of both faces {free_both} time(s)" if free_both else "")
         )
-    return t_ret, t_home, notes
+    return float(fs[_U_TRET]), float(fs[_U_THOME]), notes
 
 
 def simulate_cycle(
@@ -2263,13 +2469,13 @@ def simulate_cycle(
     # ---- stage 1: spin-up from rest; the half-coupling rests until lift-off -------------
     w_0 = liftoff_speed_of(x)
     w_qs = release_speed_of(x)  # also refuses a design whose preloads do not hold
+    r = _speeds(x, g)[0]  # release_radius_of without its door (x is converted already)
     inertia_0 = _inertia(x, g, x["roller_radius"])
     t_l = _time_to_speed(x, inertia_0, w_0)
-    r = release_radius_of(x)
     t_qs = _time_to_speed(x, _inertia(x, g, r), w_qs)
     if not (math.isfinite(t_qs) and math.isfinite(t_l)):
         raise _never_fast_enough(x, max(w_qs, w_0))
-    m_e = stage1_effective_mass(x)
+    m_e = _effective_mass(x, g)  # stage1_effective_mass without its door
     w_nl = x.get("motor_no_load_speed")
     span = max(t_qs - t_l, 0.0)
     k_qs = _stage1_stiffness(x, g, w_qs)
@@ -2385,7 +2591,7 @@ def simulate_cycle(
             return_time=math.inf,
             home_time=math.inf,
             relock_time=math.inf,
-            snap=snaps_at_liftoff(x),
+            snap=_stage1_stiffness(x, g, w_0) < 0.0,  # snaps_at_liftoff
             notes=notes,
             warnings=warnings,
             series=_series(rec, x, g, r) if record else {},
@@ -2424,7 +2630,7 @@ def simulate_cycle(
     # while both faces press the rollers, the two-degree-of-freedom stage 3; where one would
     # have to pull (kind 4), the one-sided stage 3 takes over (_stage3_one_sided)
     for _ in range(64):
-        if _gfun(mode, 4, run.p, *state[1:]) < 0.0:  # already at a mode's start
+        if _gfun_c(mode, 4, run.p, *state[1:]) < 0.0:  # already at a mode's start
             t_ret, t_home, said = _stage3_one_sided(
                 run, x, g, state, t_blow, t3_end, clear, steps_per_period, t_ret
             )
@@ -2523,7 +2729,7 @@ def simulate_cycle(
         return_time=t_ret,
         home_time=t_home,
         relock_time=t_lock,
-        snap=snaps_at_liftoff(x),
+        snap=_stage1_stiffness(x, g, w_0) < 0.0,  # snaps_at_liftoff
         notes=notes,
         warnings=warnings,
         series=_series(rec, x, g, r) if record else {},
