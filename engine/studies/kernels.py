@@ -104,6 +104,8 @@ def _gather_bins(y, low, scale, top, first, wanted, values, labels, k):  # type:
         if math.isfinite(v):
             b = _uniform_bin_c(v, low, scale, top, first)
             if wanted[b]:
+                if k == values.size:  # more than there is room for: say so, write nothing
+                    return -1
                 values[k] = v
                 labels[k] = b
                 k += 1
@@ -169,7 +171,9 @@ def gather_bins(
 ) -> int:
     """Append the finite values of ``y`` whose bin (:func:`uniform_bin`) is ``wanted``
     (bool per bin), in order, to ``values`` and their bins to ``labels``, from place
-    ``k`` on; the place after the last one written (the arrays must have room).
+    ``k`` on; the place after the last one written, or -1 where the arrays have no room
+    for them all (values that were not counted as they were: the caller then reads the
+    whole column; nothing is written beyond the arrays).
 
     >>> wanted = np.zeros(12, dtype=bool); wanted[[1, 11]] = True
     >>> values, labels = np.empty(4), np.empty(4, dtype=np.intp)
@@ -177,6 +181,8 @@ def gather_bins(
     >>> k = gather_bins(y, 0.0, 2.0, 10.0, 1, wanted, values, labels, 0)
     >>> values[:k].tolist(), labels[:k].tolist()
     ([0.2, 9.0, 0.4], [1, 11, 1])
+    >>> gather_bins(y, 0.0, 2.0, 10.0, 1, wanted, values[:2], labels[:2], 0)
+    -1
     """
     return int(
         _gather_bins_c(

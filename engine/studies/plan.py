@@ -1032,12 +1032,12 @@ class Merger:
         summary = part.summary or summarize_chunk(part).summary
         assert summary is not None
         self._summaries[start] = summary
-        if self._gather:
-            self._count_fine(part, summary)
         stop = start + len(part.rungs)
         for name in self.values:
             m = summary.moments.get(name)
             y = part.values[name]
+            if self._gather and m is not None:
+                self._count_fine(name, y, m)  # then the copy reads y from the cache
             self.values.put(name, start, y, m is None or m.count < len(y) or m.low == m.high)
         for place, (name, codes) in enumerate(part.checks.items()):
             dest = self.checks.get(name)
@@ -1051,17 +1051,15 @@ class Merger:
         self.elapsed_s += part.elapsed_s
         self.received += 1
 
-    def _count_fine(self, part: ChunkResult, summary: ChunkSummary) -> None:
-        for name, y in part.values.items():
-            moments = summary.moments.get(name)
-            if moments is None:
-                continue
-            if name not in self._fine:  # the pilot: the first chunk with values
-                finite = y if moments.count == y.size else y[np.isfinite(y)]
-                self._fine[name] = FineCounts(finite) if finite.size >= PILOT_MIN else None
-            fine = self._fine[name]
-            if fine is not None:
-                fine.add(y)  # its finite values
+    def _count_fine(self, name: str, y: np.ndarray, moments: Moments) -> None:
+        """Count output ``name``'s chunk ``y`` in its fine bins, placed by the first chunk
+        with values (the pilot)."""
+        if name not in self._fine:
+            finite = y if moments.count == y.size else y[np.isfinite(y)]
+            self._fine[name] = FineCounts(finite) if finite.size >= PILOT_MIN else None
+        fine = self._fine[name]
+        if fine is not None:
+            fine.add(y)  # its finite values
 
     def result(self) -> ChunkResult:
         """The merged study (every chunk added), with its combined partial summary."""
@@ -1395,6 +1393,10 @@ class FineCounts:
             k = kernels.gather_bins(
                 piece, self.low, self.scale, FINE_BINS, 1, wanted, kept, labels, k
             )
+            if k < 0:  # defensive: the values must be the ones counted
+                return None
+        if k != held:  # pragma: no cover - defensive, as above
+            return None
         found = np.empty(ranks.size)
         for b in np.unique(rank_bins).tolist():
             here = rank_bins == b

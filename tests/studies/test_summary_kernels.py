@@ -95,3 +95,13 @@ def test_fine_counts_place_edges_as_they_counted_values() -> None:
     labels = fine.bins(finite)
     fine.add(y)
     assert np.array_equal(fine.counts, np.bincount(labels, minlength=FINE_BINS + 2))
+
+
+def test_values_that_were_not_counted_are_refused_not_written_beyond_the_room() -> None:
+    # counts of one column, asked of another as long: every value of it falls in the
+    # median's bin, which counted a few; the gather stops at its room and says so
+    y = np.random.default_rng(48).random(100_000)
+    fine = FineCounts(y)
+    fine.add(y)
+    other = np.full(y.size, float(np.median(y)))
+    assert fine.resolve(other, np.array([50_000]), np.array([0.25])) is None
