@@ -31,6 +31,7 @@ __all__ = [
     "bins_counted",
     "count_bins",
     "gather_bins",
+    "lookup_bins",
     "uniform_bin",
     "warm",
 ]
@@ -98,6 +99,11 @@ def _bins_counted(y, low, scale, top, first, labels, counts):  # type: ignore[no
         counts[b] += 1
 
 
+def _lookup_bins(y, low, scale, top, first, table, out):  # type: ignore[no-untyped-def]
+    for i in range(y.size):
+        out[i] = table[_uniform_bin_c(y[i], low, scale, top, first)]
+
+
 def _gather_bins(y, low, scale, top, first, wanted, values, labels, k):  # type: ignore[no-untyped-def]
     for i in range(y.size):
         v = y[i]
@@ -114,6 +120,7 @@ def _gather_bins(y, low, scale, top, first, wanted, values, labels, k):  # type:
 
 _count_bins_c = jit(_count_bins, error_model="numpy")
 _bins_counted_c = jit(_bins_counted, error_model="numpy")
+_lookup_bins_c = jit(_lookup_bins, error_model="numpy")
 _gather_bins_c = jit(_gather_bins, error_model="numpy")
 
 
@@ -156,6 +163,26 @@ def bins_counted(
     ([0, 3, 1, 3], [1, 1, 0, 2])
     """
     _bins_counted_c(_floats(y), float(low), float(scale), float(top), int(first), labels, counts)
+
+
+def lookup_bins(
+    y: np.ndarray,
+    low: float,
+    scale: float,
+    top: float,
+    first: int,
+    table: np.ndarray,
+    out: np.ndarray,
+) -> None:
+    """``out[i] = table[b_i]`` (floats), ``b_i`` the bin of the finite value ``y[i]``
+    (:func:`uniform_bin`): numpy's ``table[labels]`` without the labels' array.
+
+    >>> out, table = np.empty(4), np.array([1.0, 2.0, 0.0, 3.5])
+    >>> lookup_bins(np.array([0.0, 3.0, 1.0, 4.0]), 0.0, 1.0, 3.0, 0, table, out)
+    >>> out.tolist()
+    [1.0, 3.5, 2.0, 3.5]
+    """
+    _lookup_bins_c(_floats(y), float(low), float(scale), float(top), int(first), table, out)
 
 
 def gather_bins(
@@ -203,3 +230,4 @@ def warm() -> None:
     count_bins(y, 0.0, 1.0, 2.0, 1, counts)
     bins_counted(y[:3], 0.0, 1.0, 2.0, 0, labels, counts)
     gather_bins(y, 0.0, 1.0, 2.0, 1, np.ones(4, dtype=bool), np.empty(4), labels, 0)
+    lookup_bins(y[:3], 0.0, 1.0, 2.0, 0, np.arange(4.0), np.empty(3))

@@ -1735,14 +1735,16 @@ def _binned_ranks(
     scale = bins / (hi - lo) if hi > lo else 0.0
     if not 0.0 < scale < math.inf:
         return None
-    labels, counts = np.empty(n, dtype=np.intp), np.zeros(bins, dtype=np.int64)
-    kernels.bins_counted(x, lo, scale, bins - 1, 0, labels, counts)  # one compiled pass
+    counts = np.zeros(bins, dtype=np.int64)
+    kernels.count_bins(x, lo, scale, bins - 1, 0, counts)  # one compiled pass
     c = counts[counts > 1].astype(float)
     delta = math.sqrt(float(np.add.reduce(c * c * c - c)) / (float(n) ** 3 - n))
     if not math.asin(min(delta, 1.0)) <= tolerance / 2:
         return None
     mid = np.cumsum(counts) - 0.5 * (counts - 1)  # the average rank of each bin's values
-    return mid[labels]
+    ranks = np.empty(n)
+    kernels.lookup_bins(x, lo, scale, bins - 1, 0, mid, ranks)  # each value's bin's, again
+    return ranks
 
 
 def rank_correlations(

@@ -105,3 +105,12 @@ def test_values_that_were_not_counted_are_refused_not_written_beyond_the_room() 
     fine.add(y)
     other = np.full(y.size, float(np.median(y)))
     assert fine.resolve(other, np.array([50_000]), np.array([0.25])) is None
+
+
+def test_a_lookup_is_numpys_table_indexed_by_the_bins() -> None:
+    y = _values()
+    finite = y[np.isfinite(y)]
+    table = np.random.default_rng(49).random(FINE_BINS + 2)
+    out = np.empty(finite.size)
+    kernels.lookup_bins(finite, LOW, SCALE, FINE_BINS, 1, table, out)
+    assert np.array_equal(out, table[_numpy_bins(finite)])
