@@ -140,13 +140,13 @@ def warm_up(models: Sequence[ModelSpec]) -> None:
     study's summary (:mod:`engine.studies.kernels`) are loaded here too, off a user's
     first study of 50,000 points or more.
     """
-    with contextlib.suppress(Exception):
-        study_kernels.warm()
     for spec in models:
         for example in spec.examples[:1]:
             for rung in spec.rung_names:
                 with contextlib.suppress(Exception):
                     engine.run(spec, example, fidelity=rung)
+    with contextlib.suppress(Exception):  # 0.01-0.02 s once numba is loaded (measured)
+        study_kernels.warm()
 
 
 def kernel_cache() -> dict[str, dict[str, int]]:
