@@ -47,6 +47,7 @@ from ..core.runner import (
 from ..core.spec import ModelSpec, Param, Scratch
 from ..numerics import laws
 from ..numerics.lazy import LazyModule
+from . import kernels
 
 #: scipy, imported on first use (engine.numerics.lazy): it weighs on the service's start-up
 special = LazyModule("scipy.special")
@@ -938,7 +939,15 @@ class Columns(Mapping[str, np.ndarray]):
 
     def head(self, name: str, m: int) -> np.ndarray:
         """The column's first ``m`` values (fewer if it is shorter): a view where the
-        column is whole, else only those copied."""
+        column is whole or those values are one number (a zero-stride view of it), else
+        only those copied.
+
+        >>> c = Columns(6, ("k", "s"))
+        >>> c.put("k", 0, np.full(3, 2.0)); c.put("k", 3, np.full(3, 2.0))
+        >>> c.put("s", 0, np.full(3, 1.0)); c.put("s", 3, np.full(3, 2.0))
+        >>> c.head("k", 5).tolist(), c.head("k", 5).strides, c.head("s", 5).tolist()
+        ([2.0, 2.0, 2.0, 2.0, 2.0], (0,), [1.0, 1.0, 1.0, 2.0, 2.0])
+        """
         whole = self._whole.get(name)
         if whole is not None:
             return whole[:m]
@@ -948,6 +957,9 @@ class Columns(Mapping[str, np.ndarray]):
                 break
             out.append(piece[: m - size])
             size += out[-1].size
+        one = out and all(_is_one_number(y) for y in out)
+        if one and len({y[:1].tobytes() for y in out}) == 1:  # one number, to the bit
+            return np.broadcast_to(out[0][:1], (size,))
         return np.concatenate(out) if out else np.empty(0)
 
     def rows(self, name: str, a: int, b: int) -> np.ndarray:
@@ -1022,12 +1034,12 @@ class Merger:
         summary = part.summary or summarize_chunk(part).summary
         assert summary is not None
         self._summaries[start] = summary
-        if self._gather:
-            self._count_fine(part, summary)
         stop = start + len(part.rungs)
         for name in self.values:
             m = summary.moments.get(name)
             y = part.values[name]
+            if self._gather and m is not None:
+                self._count_fine(name, y, m)  # then the copy reads y from the cache
             self.values.put(name, start, y, m is None or m.count < len(y) or m.low == m.high)
         for place, (name, codes) in enumerate(part.checks.items()):
             dest = self.checks.get(name)
@@ -1041,17 +1053,15 @@ class Merger:
         self.elapsed_s += part.elapsed_s
         self.received += 1
 
-    def _count_fine(self, part: ChunkResult, summary: ChunkSummary) -> None:
-        for name, y in part.values.items():
-            moments = summary.moments.get(name)
-            if moments is None:
-                continue
+    def _count_fine(self, name: str, y: np.ndarray, moments: Moments) -> None:
+        """Count output ``name``'s chunk ``y`` in its fine bins, placed by the first chunk
+        with values (the pilot)."""
+        if name not in self._fine:
             finite = y if moments.count == y.size else y[np.isfinite(y)]
-            if name not in self._fine:  # the pilot: the first chunk with values
-                self._fine[name] = FineCounts(finite) if finite.size >= PILOT_MIN else None
-            fine = self._fine[name]
-            if fine is not None:
-                fine.add(finite)
+            self._fine[name] = FineCounts(finite) if finite.size >= PILOT_MIN else None
+        fine = self._fine[name]
+        if fine is not None:
+            fine.add(y)  # its finite values
 
     def result(self) -> ChunkResult:
         """The merged study (every chunk added), with its combined partial summary."""
@@ -1168,7 +1178,7 @@ class Moments:
             mean, m2, residual = float(finite[lo]), 0.0, 0.0
         else:
             mean = float(finite.mean())
-            work = _work(finite.size)[0] if finite.size <= 2 * BLOCK else None
+            work = _work(finite.size) if finite.size <= 2 * BLOCK else None
             deviation = np.subtract(finite, mean, out=work)
             residual = float(deviation.mean())
             np.multiply(deviation, deviation, out=deviation)  # in place: one array, not two
@@ -1286,7 +1296,7 @@ FINE_BINS = 16_384
 #: Beyond this share of an output's values in the bins the summary must look into
 #: (a point mass, a pilot that was no fair sample), the merged column is read instead.
 GATHER_SHARE = 0.25
-#: Values looked at together in the summary's pass over a column (they stay in cache).
+#: The least length of the work array a chunk's moments are computed in (:func:`_work`).
 BLOCK = 65_536
 
 
@@ -1332,55 +1342,63 @@ class FineCounts:
         self.scale = scale if self.active else 0.0
         self.counts = np.zeros(FINE_BINS + 2, dtype=np.int64)
 
-    def bins(self, y: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
-        """Each finite value's bin, 0 (below the range) … FINE_BINS + 1 (above it).
+    def bins(self, y: np.ndarray) -> np.ndarray:
+        """Each finite value's bin, 0 (below the range) … FINE_BINS + 1 (above it), by
+        the rule the counts were made with (:func:`engine.studies.kernels.uniform_bin`).
 
-        ``out`` (:func:`_work`'s, as long as ``y``) takes the bins, and the arithmetic is
-        done in it in place: a chunk's fresh temporaries cost their pages' first touch,
-        more than the arithmetic does."""
-        f = (
-            np.subtract(y, self.low)
-            if out is None
-            else np.subtract(y, self.low, out=_work(y.size)[0])
-        )
-        np.multiply(f, self.scale, out=f)
-        np.clip(f, -1.0, float(FINE_BINS), out=f)
-        labels = np.empty(f.shape, dtype=np.intp) if out is None else out
-        np.copyto(labels, f, casting="unsafe")  # truncated toward zero, as astype does
-        labels += 1
+        >>> FineCounts(np.linspace(0.0, 1.0, 5_000)).bins(np.array([-1.0, 0.5, 2.0])).tolist()
+        [0, 8193, 16385]
+        """
+        labels = np.empty(y.size, dtype=np.intp)
+        spare = np.zeros(self.counts.size, dtype=np.int64)
+        kernels.bins_counted(y, self.low, self.scale, FINE_BINS, 1, labels, spare)
         return labels
 
     def add(self, y: np.ndarray) -> None:
-        """Count a chunk's finite values ``y``."""
+        """Count a chunk's finite values ``y`` (the others are left out), in one
+        compiled pass (:func:`engine.studies.kernels.count_bins`)."""
         if self.active:
-            for block in _blocks([y]):
-                labels = self.bins(block, _work(block.size)[1])
-                self.counts += np.bincount(labels, minlength=self.counts.size)
+            kernels.count_bins(y, self.low, self.scale, FINE_BINS, 1, self.counts)
 
     def resolve(
-        self, y: np.ndarray | Sequence[np.ndarray], ranks: np.ndarray, edges: np.ndarray
+        self,
+        y: np.ndarray | Sequence[np.ndarray],
+        ranks: np.ndarray,
+        edges: np.ndarray,
+        count: int | None = None,
     ) -> tuple[np.ndarray, np.ndarray] | None:
         """The values of rank ``ranks`` (0-based) and the number of values below each of
-        ``edges``, of the finite values ``y`` (an array, or its pieces) whose chunks were
-        all added; None where the bins to look into hold too many of them."""
+        ``edges``, of the finite values of ``y`` (an array, or its pieces; NaN and ±inf
+        are left out), ``count`` of them (counted here where not given), whose chunks
+        were all added; None where the bins to look into hold too many of them.
+
+        The values of the bins looked into are gathered in the points' order in one
+        compiled pass (:func:`engine.studies.kernels.gather_bins`)."""
         if not self.active:
             return None
         pieces = [y] if isinstance(y, np.ndarray) else y
-        size = sum(piece.size for piece in pieces)
+        if count is None:
+            count = sum(int(np.count_nonzero(np.isfinite(piece))) for piece in pieces)
         total = np.cumsum(self.counts)  # values in this bin and the ones below
-        if total[-1] != size:  # pragma: no cover - defensive: every chunk is added
+        if total[-1] != count:  # pragma: no cover - defensive: every chunk is added
             return None
         under = total - self.counts  # values in the bins below
         rank_bins = np.searchsorted(total, ranks, side="right")
         edge_bins = self.bins(np.asarray(edges, dtype=float))
         wanted = np.zeros(self.counts.size, dtype=bool)
         wanted[rank_bins] = wanted[edge_bins] = True
-        if self.counts[wanted].sum() > GATHER_SHARE * size:
+        held = int(self.counts[wanted].sum())
+        if held > GATHER_SHARE * count:
             return None
-        kept = np.concatenate(
-            [block[wanted[self.bins(block, _work(block.size)[1])]] for block in _blocks(pieces)]
-        )
-        labels = self.bins(kept)
+        kept, labels, k = np.empty(held), np.empty(held, dtype=np.intp), 0
+        for piece in pieces:
+            k = kernels.gather_bins(
+                piece, self.low, self.scale, FINE_BINS, 1, wanted, kept, labels, k
+            )
+            if k < 0:  # defensive: the values must be the ones counted
+                return None
+        if k != held:  # pragma: no cover - defensive, as above
+            return None
         found = np.empty(ranks.size)
         for b in np.unique(rank_bins).tolist():
             here = rank_bins == b
@@ -1398,40 +1416,19 @@ class FineCounts:
 _WORK = threading.local()
 
 
-def _work(size: int) -> tuple[np.ndarray, np.ndarray]:
-    """This thread's work arrays (float, intp), ``size`` long at most :data:`BLOCK`: made
-    once and reused, so a pass over a study's columns makes no fresh large temporaries
-    (each would cost the first touch of its pages again).
+def _work(size: int) -> np.ndarray:
+    """This thread's work array, ``size`` long (made at least :data:`BLOCK` long, once,
+    and reused): a chunk's summary then makes no fresh temporary (each would cost the
+    first touch of its pages again).
 
-    >>> a, b = _work(10)
-    >>> a.size, b.dtype == np.intp, _work(10)[0].base is a.base
-    (10, True, True)
+    >>> a = _work(10)
+    >>> a.size, _work(10).base is a.base
+    (10, True)
     """
-    got = getattr(_WORK, "arrays", None)
-    if got is None or got[0].size < size:
-        got = _WORK.arrays = (np.empty(max(size, BLOCK)), np.empty(max(size, BLOCK), dtype=np.intp))
-    return got[0][:size], got[1][:size]
-
-
-def _blocks(pieces: Sequence[np.ndarray]) -> Iterator[np.ndarray]:
-    """The values of ``pieces`` in order, :data:`BLOCK` at a time or about (a long piece
-    cut, short ones joined), a piece of one number (:class:`Columns`) as it is."""
-    short: list[np.ndarray] = []
-    held = 0
-    for piece in pieces:
-        if piece.size < BLOCK:
-            short.append(piece)
-            held += piece.size
-            if held >= BLOCK:
-                yield np.concatenate(short)
-                short, held = [], 0
-            continue
-        if short:
-            yield np.concatenate(short)
-            short, held = [], 0
-        yield from np.split(piece, range(BLOCK, piece.size, BLOCK))
-    if short:
-        yield np.concatenate(short)
+    got = getattr(_WORK, "array", None)
+    if got is None or got.size < size:
+        got = _WORK.array = np.empty(max(size, BLOCK))
+    return got[:size]
 
 
 # --------------------------------------------------------------------------- summaries
@@ -1454,11 +1451,16 @@ def _stats(
     if moments is None:
         return {"count": 0}
     lo, hi = moments.low, moments.high
-    pieces = [column] if isinstance(column, np.ndarray) else list(column)
-    size = sum(y.size for y in pieces)
-    if moments.count != size:
-        pieces = [y[np.isfinite(y)] for y in pieces]
+    given = [column] if isinstance(column, np.ndarray) else list(column)
     count = moments.count  # the finite values
+
+    def finite() -> list[np.ndarray]:
+        """The finite values' pieces: made only where read (the fine counts' pass leaves
+        NaN and ±inf out itself)."""
+        if count == sum(y.size for y in given):
+            return given
+        return [y[np.isfinite(y)] for y in given]
+
     few = None
     try:
         # numpy's edges for the range numpy would find itself (min, max); a constant
@@ -1473,15 +1475,16 @@ def _stats(
         quantiles = np.full(len(QUANTILES), lo)
     elif few is not None:  # an output moved by rounding alone: a few floats, counted
         ranks = _quantile_ranks(count)
+        pieces = finite()
         at_most = np.array([sum(int(np.count_nonzero(y <= v)) for y in pieces) for v in few])
         quantiles = _interpolate(count, ranks, few[np.searchsorted(at_most, ranks, "right")])
     else:
         ranks = _quantile_ranks(count)
-        got = None if fine is None else fine.resolve(pieces, ranks, edges[:-1])
+        got = None if fine is None else fine.resolve(given, ranks, edges[:-1], count)
         if got is None:
-            finite = np.concatenate(pieces)
-            counts = np.histogram(finite, bins=edges)[0]
-            found = _order_statistics(finite, ranks)
+            values = np.concatenate(finite())
+            counts = np.histogram(values, bins=edges)[0]
+            found = _order_statistics(values, ranks)
         else:
             found, below = got
             counts = np.diff(np.r_[below, count])
@@ -1734,17 +1737,16 @@ def _binned_ranks(
     scale = bins / (hi - lo) if hi > lo else 0.0
     if not 0.0 < scale < math.inf:
         return None
-    f = np.subtract(x, lo)
-    np.multiply(f, scale, out=f)
-    np.minimum(f, bins - 1, out=f)
-    labels = f.astype(np.intp)
-    counts = np.bincount(labels, minlength=bins)
+    counts = np.zeros(bins, dtype=np.int64)
+    kernels.count_bins(x, lo, scale, bins - 1, 0, counts)  # one compiled pass
     c = counts[counts > 1].astype(float)
     delta = math.sqrt(float(np.add.reduce(c * c * c - c)) / (float(n) ** 3 - n))
     if not math.asin(min(delta, 1.0)) <= tolerance / 2:
         return None
     mid = np.cumsum(counts) - 0.5 * (counts - 1)  # the average rank of each bin's values
-    return mid[labels]
+    ranks = np.empty(n)
+    kernels.lookup_bins(x, lo, scale, bins - 1, 0, mid, ranks)  # each value's bin's, again
+    return ranks
 
 
 def rank_correlations(
@@ -1769,6 +1771,9 @@ def rank_correlations(
     known: dict[bytes, tuple[list[np.ndarray], dict[str, np.ndarray]]] = {}
     for name in values:
         y = values[name][:RANK_POINTS]  # one output at a time (:func:`_heads` makes it then)
+        if _is_one_number(y):  # one number (a zero-stride view): no rank moves
+            out[name] = dict.fromkeys(columns)
+            continue
         ok = np.isfinite(y)
         every = bool(ok.all())
         key = b"" if every else np.packbits(ok).tobytes()
