@@ -64,6 +64,7 @@ from bench.extra_joint import monte_carlo as joint_monte_carlo
 from engine.physics import preload as pl
 from engine.studies.execute import ChunkArgs, chunk_size, run_study
 from engine.studies.plan import (
+    GATHER_POINTS,
     QUANTILES,
     RANK_POINTS,
     Columns,
@@ -237,7 +238,9 @@ def _memory_here(model: str, n: int) -> dict[str, float]:
 
     spec = engine.get_model(model)
     make = joint_study if model == "joint.vdi2230" else preload_study
-    run_study(spec, make(10_000))  # warm
+    # warm, at the size from which the summary counts fine bins (its compiled passes loaded,
+    # as the service loads them before it says ready)
+    run_study(spec, make(GATHER_POINTS))
     gc.collect()
     idle = _status_kb("VmRSS") * 1024
     # the peak from here on, not the imports' (Linux: 5 resets the peak resident size)
@@ -317,7 +320,9 @@ def measure(n: int = POINTS, http: bool = True) -> list[dict[str, Any]]:
         (engine.get_model("joint.vdi2230"), joint_study(n)),
         (PRELOAD, preload_study(n)),
     ):
-        run_study(spec, type(study)(study.variables, study.base, samples=10_000))  # warm
+        run_study(
+            spec, type(study)(study.variables, study.base, samples=GATHER_POINTS)
+        )  # warm, kernels too
         splits = [split(spec, study) for _ in range(ROUNDS)]
         t = {k: float(np.median([one[k] for one in splits])) for k in splits[0]}
         # the median of the rounds' shares (each round's phases under the same load)
