@@ -492,7 +492,7 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
 
         lane, rung, prepared = _route(spec, body, inputs, lim.pool, False, rungs)
 
-        def work(budget_s: float, cancel: threading.Event) -> bytes:
+        def work(budget_s: float, cancel: threading.Event | None) -> bytes:
             result = engine.run(
                 spec,
                 inputs,
