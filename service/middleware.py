@@ -113,21 +113,30 @@ class FrontDoor:
             )
         )
 
-    def _inner(self, scope: Scope) -> ASGIApp:
-        """The app to hand ``scope`` to: gzip's wrapper where it can help, else the app."""
-        if self.gzip is not None and not scope["path"].endswith(self.PACKED):
-            for key, value in scope["headers"]:
-                if key == b"accept-encoding":
-                    return self.gzip if b"gzip" in value else self.app
-        return self.app
-
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         if scope["type"] != "http":
             await self.app(scope, receive, send)
             return
         start = time.perf_counter()
-        given = _header(scope, b"x-request-id")
+        # one pass over the headers: the caller's request id, and whether it takes gzip
+        # (the first of each)
+        given = encoding = None
+        for key, value in scope.get("headers") or ():
+            if key == b"accept-encoding":
+                if encoding is None:
+                    encoding = value
+            elif given is None and key.lower() == b"x-request-id":
+                given = bytes(value)
         rid = given if given and _REQUEST_ID.fullmatch(given) else _fresh_id()
+        # gzip's wrapper where it can help, else the app
+        inner = (
+            self.gzip
+            if self.gzip is not None
+            and encoding is not None
+            and b"gzip" in encoding
+            and not scope["path"].endswith(self.PACKED)
+            else self.app
+        )
         request_id = rid.decode()
         scope.setdefault("state", {})["request_id"] = request_id
         status = 500
@@ -142,7 +151,7 @@ class FrontDoor:
             await send(message)
 
         try:
-            await self._inner(scope)(scope, receive, send_with_headers)
+            await inner(scope, receive, send_with_headers)
         except ClientDisconnect:
             # the client left while its body was being read: there is no one to answer,
             # and nothing went wrong here; logged as 499 (client closed request)
