@@ -139,6 +139,10 @@ def _coerce(kind: str, value: Any) -> Any:
     raise WrongKind(f"a {kind_of.__name__} where the output is declared {kind}")
 
 
+#: Per output kind, the type :func:`_coerce` passes through unchanged (text: ``str``).
+_EXACT: dict[str, type] = {"float": float, "int": int, "bool": bool}
+
+
 def _encoder(spec: ModelSpec) -> Any:
     """``answer dict -> JSON bytes`` for one model's single evaluation, as its response model
     (``schemas.response_model``, published for the route) serialised it.
@@ -152,11 +156,14 @@ def _encoder(spec: ModelSpec) -> Any:
     response model's own encoding, type for type.
     """
     kinds = {o.name: o.kind for o in spec.outputs if not o.series}
+    # the type a result of each kind already has where _coerce leaves it as it is: the
+    # common case answered without a call per result
+    exact = {name: _EXACT.get(kind, str) for name, kind in kinds.items()}
 
     def encode(answer: dict[str, Any]) -> bytes:
         results = answer["results"]
         for name, value in results.items():
-            if value is not None:
+            if value is not None and type(value) is not exact[name]:
                 results[name] = _coerce(kinds[name], value)
         checks = answer["checks"]
         for c in checks:
@@ -165,7 +172,7 @@ def _encoder(spec: ModelSpec) -> Any:
         answer["checks"] = [
             {
                 "name": c["name"],
-                "ok": _coerce("bool", c["ok"]),
+                "ok": c["ok"] if type(c["ok"]) is bool else _coerce("bool", c["ok"]),
                 "detail": c["detail"],
                 "level": c.get("level", "requirement"),
                 "detail_parts": c.get("detail_parts") or [c["detail"]],
@@ -492,7 +499,7 @@ def model_router(spec: ModelSpec, limits: Limits | None = None) -> APIRouter:
 
         lane, rung, prepared = _route(spec, body, inputs, lim.pool, False, rungs)
 
-        def work(budget_s: float, cancel: threading.Event) -> bytes:
+        def work(budget_s: float, cancel: threading.Event | None) -> bytes:
             result = engine.run(
                 spec,
                 inputs,

@@ -113,21 +113,30 @@ class FrontDoor:
             )
         )
 
-    def _inner(self, scope: Scope) -> ASGIApp:
-        """The app to hand ``scope`` to: gzip's wrapper where it can help, else the app."""
-        if self.gzip is not None and not scope["path"].endswith(self.PACKED):
-            for key, value in scope["headers"]:
-                if key == b"accept-encoding":
-                    return self.gzip if b"gzip" in value else self.app
-        return self.app
-
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
         if scope["type"] != "http":
             await self.app(scope, receive, send)
             return
         start = time.perf_counter()
-        given = _header(scope, b"x-request-id")
+        # one pass over the headers: the caller's request id, and whether it takes gzip
+        # (the first of each)
+        given = encoding = None
+        for key, value in scope.get("headers") or ():
+            if key == b"accept-encoding":
+                if encoding is None:
+                    encoding = value
+            elif given is None and key.lower() == b"x-request-id":
+                given = bytes(value)
         rid = given if given and _REQUEST_ID.fullmatch(given) else _fresh_id()
+        # gzip's wrapper where it can help, else the app
+        inner = (
+            self.gzip
+            if self.gzip is not None
+            and encoding is not None
+            and b"gzip" in encoding
+            and not scope["path"].endswith(self.PACKED)
+            else self.app
+        )
         request_id = rid.decode()
         scope.setdefault("state", {})["request_id"] = request_id
         status = 500
@@ -142,7 +151,7 @@ class FrontDoor:
             await send(message)
 
         try:
-            await self._inner(scope)(scope, receive, send_with_headers)
+            await inner(scope, receive, send_with_headers)
         except ClientDisconnect:
             # the client left while its body was being read: there is no one to answer,
             # and nothing went wrong here; logged as 499 (client closed request)
@@ -231,23 +240,82 @@ def _log_access(scope: Scope, status: int, seconds: float, request_id: str) -> N
     """One access line on ``service.access`` at INFO, its caller already asked whether the
     logger takes INFO.
 
-    The record is made here and handed to the logger (its filters, handlers and parents
-    as :meth:`logging.Logger.info` would), without ``info``'s search of the stack for its
-    caller, which no access line shows: about a third of the line's cost. It is made by
-    the record factory in force (:func:`logging.setLogRecordFactory`), as every record is,
-    so a factory that adds fields (a trace id) sees the access lines too.
+    Where the logger is set up as ``python -m service`` sets it up (:func:`_bare_stream`:
+    one stream handler writing the bare message, nothing else that could see a record),
+    the line is written to that handler's stream as its ``emit`` writes it (the same
+    bytes, its terminator, under its lock, flushed), without a record: making the record,
+    filtering and formatting it were most of the line's cost (~20 µs of a request,
+    measured). Any other set-up (filters, other handlers, a parent's handlers, a
+    formatter of its own, a record factory that adds fields) gets a record, as
+    :meth:`logging.Logger.info` would make, without ``info``'s search of the stack for its
+    caller, which no access line shows.
     """
-    record = logging.getLogRecordFactory()(
-        access_log.name,
-        logging.INFO,
-        __file__,
-        0,
-        _access_line(scope.get("method"), scope.get("path"), status, seconds, request_id),
-        None,
-        None,
-        "FrontDoor.__call__",
+    line = _access_line(scope.get("method"), scope.get("path"), status, seconds, request_id)
+    handler = _bare_stream(access_log)
+    if handler is not None:
+        handler.acquire()
+        try:
+            stream = handler.stream
+            stream.write(line + handler.terminator)
+            if stream and hasattr(stream, "flush"):  # as StreamHandler.flush
+                stream.flush()
+        except RecursionError:  # as StreamHandler.emit
+            raise
+        except Exception:
+            handler.handleError(_access_record(line))
+        finally:
+            handler.release()
+        return
+    access_log.handle(_access_record(line))
+
+
+def _access_record(line: str) -> logging.LogRecord:
+    """The access line as a record, made by the record factory in force
+    (:func:`logging.setLogRecordFactory`), as every record is."""
+    return logging.getLogRecordFactory()(
+        access_log.name, logging.INFO, __file__, 0, line, None, None, "FrontDoor.__call__"
     )
-    access_log.handle(record)
+
+
+def _bare_stream(logger: logging.Logger) -> logging.StreamHandler[Any] | None:
+    """The one handler of ``logger`` where writing a line to its stream is all that
+    handling a record of it would do: no filter on the logger or the handler, no parent's
+    handlers, a plain :class:`logging.StreamHandler` taking INFO whose formatter writes
+    the bare message (``%(message)s``, the default's format), records made by
+    :class:`logging.LogRecord` itself. None otherwise.
+
+    >>> import io
+    >>> log = logging.getLogger("doctest.access")
+    >>> handler = logging.StreamHandler(io.StringIO())
+    >>> handler.setFormatter(logging.Formatter("%(message)s"))
+    >>> log.handlers[:], log.propagate = [handler], False
+    >>> _bare_stream(log) is handler
+    True
+    >>> handler.setFormatter(logging.Formatter("%(levelname)s %(message)s"))
+    >>> _bare_stream(log) is None
+    True
+    """
+    handlers = logger.handlers
+    if len(handlers) != 1 or logger.propagate or logger.filters:
+        return None
+    handler = handlers[0]
+    if type(handler) is not logging.StreamHandler or handler.filters or handler.level > _INFO:
+        return None
+    formatter = handler.formatter
+    if formatter is not None and (
+        type(formatter) is not logging.Formatter
+        or type(formatter._style) is not logging.PercentStyle
+        or formatter._style._fmt != _BARE
+        or getattr(formatter._style, "_defaults", None)  # Formatter(defaults=...)
+    ):
+        return None
+    if logging.getLogRecordFactory() is not logging.LogRecord:
+        return None
+    return handler
+
+
+_INFO = logging.INFO
+_BARE = "%(message)s"
 
 
 async def _send_500(send: Send, request_id: str, rid: bytes) -> None:
@@ -427,10 +495,18 @@ async def _within(receive: Receive, timeout_s: float, budget_s: float) -> Messag
     """``await receive()``, or :class:`BodyTimeout` (naming the body's whole ``budget_s``)
     after ``timeout_s``, what is left of it.
 
-    One timer handle that cancels the task, not ``asyncio.timeout`` (its context object
-    and rescheduling cost ~8 µs a request) nor ``wait_for`` (a task per call,
-    ~15 µs). A cancellation that is not the timer's goes on as it came.
+    A message that is there already (a small body arrives with its head: every API
+    request's) is taken without a timer. Otherwise one timer handle cancels the task, not
+    ``asyncio.timeout`` (its context object and rescheduling cost ~8 µs a request) nor
+    ``wait_for`` (a task per call, ~15 µs). A cancellation that is not the timer's goes
+    on as it came.
     """
+    waiting = receive().__await__()
+    try:
+        first = waiting.send(None)
+    except StopIteration as done:  # it did not wait: nothing to time
+        message: Message = done.value
+        return message
     task = asyncio.current_task()
     assert task is not None
     expired: list[bool] = []
@@ -441,7 +517,7 @@ async def _within(receive: Receive, timeout_s: float, budget_s: float) -> Messag
 
     handle = asyncio.get_running_loop().call_later(timeout_s, expire)
     try:
-        return await receive()
+        return await _Resumed(waiting, first)
     except asyncio.CancelledError:
         if expired:
             task.uncancel()
@@ -449,6 +525,37 @@ async def _within(receive: Receive, timeout_s: float, budget_s: float) -> Messag
         raise
     finally:
         handle.cancel()
+
+
+class _Resumed:
+    """The rest of an awaitable's run, its first step taken already (:func:`_within`):
+    what that step yielded goes to the loop first, then every value, result and exception
+    passes between the loop and the awaitable as ``await`` would pass them."""
+
+    __slots__ = ("_first", "_waiting")
+
+    def __init__(self, waiting: Any, first: Any) -> None:
+        self._waiting = waiting
+        self._first = first
+
+    def __await__(self) -> Any:
+        waiting, step = self._waiting, self._first
+        while True:
+            try:
+                sent = yield step
+            except GeneratorExit:
+                waiting.close()
+                raise
+            except BaseException as exc:  # a cancellation, or another thrown in
+                try:
+                    step = waiting.throw(exc)
+                except StopIteration as done:
+                    return done.value
+            else:
+                try:
+                    step = waiting.send(sent)
+                except StopIteration as done:
+                    return done.value
 
 
 async def _refuse(

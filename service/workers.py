@@ -379,8 +379,11 @@ class Inline:
     def mean(self, key: Any) -> float:
         return self._mean.get(key, 0.0)
 
-    def run(self, fn: Callable[[float, threading.Event], T], key: Any, full_budget_s: float) -> T:
-        """``fn(budget, cancel)`` here and now, with the time box as its budget.
+    def run(
+        self, fn: Callable[[float, threading.Event | None], T], key: Any, full_budget_s: float
+    ) -> T:
+        """``fn(budget, None)`` here and now, with the time box as its budget: it runs on the
+        loop, to its end or its budget, so nothing could cancel it (no event to make).
 
         Raises :class:`FallBack` when ``fn`` stops with BudgetExceeded after using
         the time box (it checks its budget and needs longer): the caller runs it
@@ -389,7 +392,7 @@ class Inline:
         box = min(self.budget_s, full_budget_s)
         start = time.perf_counter()
         try:
-            result = fn(box, threading.Event())
+            result = fn(box, None)
         except BudgetExceeded:
             seconds = time.perf_counter() - start
             self.record(key, max(seconds, 10 * self.budget_s + 1e-9))
@@ -405,7 +408,7 @@ class Inline:
         return result
 
     def timed(
-        self, fn: Callable[[float, threading.Event], T], key: Any
+        self, fn: Callable[[float, threading.Event | None], T], key: Any
     ) -> Callable[[float, threading.Event], T]:
         """``fn`` measuring itself into ``key``'s mean (for the lane path)."""
 
