@@ -37,7 +37,6 @@ idle within that and one point's time, where they ran a 256-point chunk to its e
 
 from __future__ import annotations
 
-import concurrent.futures
 import os
 import threading
 import time
@@ -415,17 +414,6 @@ class DaskExecutor:
         index: dict[str, int] = {}
         flying: set[Any] = set()
         lock = threading.Lock()
-        #: each chunk's result, fetched from its worker the moment the chunk ends (on Dask's
-        #: callback thread; the transfer itself on the client's event loop) while this
-        #: thread merges the chunk before it: fetched when this thread asked, after the
-        #: merge, the transfer and the merge took turns
-        fetched: dict[str, concurrent.futures.Future[ChunkResult]] = {}
-
-        def fetch(fut: Any, box: concurrent.futures.Future[ChunkResult]) -> None:
-            try:
-                box.set_result(fut.result())
-            except BaseException as exc:  # the chunk's error, or its cancel: raised on taking
-                box.set_exception(exc)
 
         def submit(i: int) -> Any:
             args = calls[i]
@@ -447,8 +435,6 @@ class DaskExecutor:
                 priority=priority,
             )
             index[fut.key] = i
-            box = fetched[fut.key] = concurrent.futures.Future()
-            fut.add_done_callback(lambda done: fetch(done, box))
             with lock:
                 flying.add(fut)
             return fut
@@ -476,7 +462,7 @@ class DaskExecutor:
             for fut in done:
                 if cancel.is_set():
                     break
-                result = fetched.pop(fut.key).result()
+                result = fut.result()
                 with lock:
                     flying.discard(fut)
                 yield index[fut.key], result
