@@ -2290,6 +2290,8 @@ def _one_sided(p, jac, fs, st, active, cand, q, v, rt, rx, rq0, rq1):  # type: i
                     if st[10] == 0:
                         st[10] = i
             expected = (fs[2] - fs[0]) / fs[3]
+            if not math.isfinite(expected):  # a step of zero (a range's end): no integration
+                return 5
             if st[6] + expected * _CONTACT_STEP_COST > st[7]:
                 fs[10] = expected
                 return 3

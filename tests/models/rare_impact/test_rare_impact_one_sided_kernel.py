@@ -150,3 +150,42 @@ def test_the_one_sided_kernel_comes_back_for_a_catch_and_takes_the_new_velocitie
     assert q[1] == pytest.approx(0.0, abs=1e-12)
     assert fs[C._U_THOME] == fs[C._U_T] - fs[C._U_TBLOW] < 0.05
     assert 0.0 < fs[C._U_TRET] < fs[C._U_THOME]
+
+
+def test_a_step_of_zero_at_the_ranges_ends_is_a_solver_failure_not_a_budget_of_inf_steps():
+    # the smallest striker mass the range admits (5e-324, its open lower end) with the
+    # auxiliary spring and the engagement height at theirs: stage 3's step comes out 0, so
+    # its expected steps (t_end - t) / h are not finite; the kernel hands that back as a
+    # failed integration (as the Python loop's ZeroDivisionError was), never as "about inf
+    # steps" with inf in the refusal's context, nor a NaN compared and cast to a stride
+    from engine import run
+    from engine.core.errors import SolverFailed
+    from engine.models.rare_impact import RARE_IMPACT
+
+    design = {
+        **R,
+        "flywheel_inertia": 0.014297243376671143,
+        "motor_torque": 4.72788998148474,
+        "roller_mass": 0.04371795793105644,
+        "roller_count": 8,
+        "roller_radius": 0.031943850303395374,
+        "cone_angle": 1.283660495065539,
+        "half_coupling_mass": 0.09823363818909049,
+        "stepped_shaft_mass": 0.025675017651020118,
+        "striker_mass": 5e-324,
+        "power_spring_rate": 73956.36393176674,
+        "auxiliary_spring_rate": 5e-324,
+        "return_spring_rate": 84801.91853230752,
+        "power_spring_preload": 0.0022145508125792157,
+        "auxiliary_spring_preload": 0.013082684590930215,
+        "return_spring_preload": 0.001966807039543231,
+        "release_travel": 0.0035852071597096634,
+        "engagement_height": 5e-324,
+        "jaw_height": 0.006174986343746396,
+        "engagement_angle": 0.0017453292519943296,
+        "roller_friction": 0.0,
+        "gravity": 9.879827335116762,
+        "roller_geometry": "symmetric_v",
+    }
+    with pytest.raises(SolverFailed, match="diverged in stage 3"):
+        run(RARE_IMPACT, design, fidelity="simulation")
