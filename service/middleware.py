@@ -71,6 +71,50 @@ def security_headers(request_id: str | None = None) -> dict[str, str]:
     return headers
 
 
+class Quiet:
+    """How many HTTP requests are open in this process and when the last one ended, so
+    that work the service does once it is ready (building the unit registry) can wait for
+    a quiet moment instead of taking the processor from the first requests.
+
+    :class:`FrontDoor` counts every request, on the event loop's thread; another thread
+    only reads the two numbers.
+
+    >>> q = Quiet(); q.begin(); q.open
+    1
+    >>> q.wait(quiet_s=0.0, limit_s=0.05)  # one request open: waits to its limit
+    False
+    >>> q.end(); q.wait(quiet_s=0.0, limit_s=1.0)
+    True
+    """
+
+    def __init__(self) -> None:
+        self.open = 0
+        self.last = time.monotonic()
+
+    def begin(self) -> None:
+        self.open += 1
+
+    def end(self) -> None:
+        self.open -= 1
+        self.last = time.monotonic()
+
+    def wait(self, quiet_s: float, limit_s: float, poll_s: float = 0.02) -> bool:
+        """Block until no request has been open for ``quiet_s`` [s], at most ``limit_s``
+        [s]; whether it found that moment."""
+        deadline = time.monotonic() + limit_s
+        while True:
+            now = time.monotonic()
+            if self.open == 0 and now - self.last >= quiet_s:
+                return True
+            if now >= deadline:
+                return False
+            time.sleep(poll_s)
+
+
+#: The process's requests, counted by every :class:`FrontDoor`.
+QUIET = Quiet()
+
+
 class FrontDoor:
     """Request id, security headers and a structured access log for every HTTP request.
 
@@ -141,6 +185,7 @@ class FrontDoor:
         scope.setdefault("state", {})["request_id"] = request_id
         status = 500
         started = False
+        QUIET.begin()
 
         async def send_with_headers(message: Message) -> None:
             nonlocal status, started
@@ -177,6 +222,7 @@ class FrontDoor:
             # else: the answer is half sent; returning without finishing it makes the
             # server close the connection, which is all a client can be told now
         finally:
+            QUIET.end()
             if self.log_requests and access_log.isEnabledFor(logging.INFO):
                 _log_access(scope, status, time.perf_counter() - start, request_id)
 

@@ -71,3 +71,31 @@ def test_the_warm_up_builds_the_registry_once_it_says_ready(
     assert seen == [True]  # not built before it was ready
     assert units._REGISTRY is not None
     assert units.registry().parse_units("mm") == units.registry().parse_units("millimeter")
+
+
+def test_the_registry_waits_for_a_quiet_moment_after_ready(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Built at once after ready, pint's import took the processor from the first requests
+    (a rare-impact simulation 11-16 ms against its steady 3-6 ms): while a request is open
+    the registry waits; once none has been open for REGISTRY_QUIET_S it is built."""
+    from service import main, units
+    from service.main import WarmUp
+    from service.middleware import QUIET
+
+    monkeypatch.setattr(units, "_REGISTRY", None)
+    monkeypatch.setattr(main, "REGISTRY_QUIET_S", 0.05)
+    QUIET.begin()  # a request open
+    try:
+        warm = WarmUp([], enabled=True)
+        warm.start()
+        assert warm.wait(30)
+        time.sleep(0.5)
+        assert units._REGISTRY is None  # ready, but not quiet: not built
+    finally:
+        QUIET.end()
+    for _ in range(3000):
+        if units._REGISTRY is not None:
+            break
+        time.sleep(0.01)
+    assert units._REGISTRY is not None
