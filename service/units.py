@@ -75,8 +75,9 @@ def registry() -> Any:
     more) and its registry (0.02 s from the definition cache) are loaded here, not when the
     service starts: a number in SI units, a dimensionless input ("5 %") and a request
     without unit strings never load pint. The start-up warm-up builds it once it has said
-    ready, at the first quiet moment (:class:`service.main.WarmUp`), so the form's unit strings find it built; without
-    the warm-up the first unit string pays that time, once per process. A lock keeps two
+    ready, at the first quiet moment (:class:`service.main.WarmUp`), so the form's unit
+    strings find it built; without the warm-up the first unit string pays that time, once
+    per process. A lock keeps two
     first callers from building two registries.
 
     >>> registry().parse_units("Nm")
