@@ -183,6 +183,24 @@ def _one_number(y: np.ndarray) -> np.ndarray | None:
     return np.broadcast_to(first, y.shape) if bool(same.all()) else None
 
 
+def _one_valued(moments: Moments | None, size: int) -> bool:
+    """Whether the ``moments`` of ``size`` values prove them one number to the bit, with no
+    pass over them: every value finite and the extremes equal and not zero (two equal
+    floats other than 0.0 and -0.0 have the same bits); where they do not, only a
+    comparison of the bits (:func:`_one_number`) tells.
+
+    >>> m = Moments.of(np.full(4, 2.5)), Moments.of(np.array([0.0, -0.0]))
+    >>> _one_valued(m[0], 4), _one_valued(m[0], 5), _one_valued(m[1], 2), _one_valued(None, 4)
+    (True, False, False, False)
+    """
+    return (
+        moments is not None
+        and moments.count == size
+        and moments.low == moments.high
+        and moments.low != 0.0
+    )
+
+
 def one_numbers(part: ChunkResult) -> ChunkResult:
     """``part`` with each output whose chunk is one number (its partial summary's
     extremes equal, no refused point; or no finite value, each NaN to the bit) as a
@@ -910,17 +928,23 @@ class Columns(Mapping[str, np.ndarray]):
         self._pieces: dict[str, dict[int, np.ndarray]] = {name: {} for name in names}
         self._whole: dict[str, np.ndarray] = {}
 
-    def put(self, name: str, start: int, y: np.ndarray, maybe_one: bool = True) -> None:
+    def put(
+        self, name: str, start: int, y: np.ndarray, maybe_one: bool = True, one: bool = False
+    ) -> None:
         """Keep ``y``, the values of points ``start`` onward of output ``name``.
 
         ``maybe_one`` False: the caller knows the values are not all one number (their
-        extremes differ), and they are not compared."""
+        extremes differ), and they are not compared. ``one`` True: the caller knows they
+        are one number to the bit (:func:`_one_valued`), and they are not compared."""
         y = np.asarray(y, dtype=float)
         whole = self._whole.get(name)
         if whole is None:
-            one = _one_number(y) if maybe_one else None
-            if one is not None:
-                self._pieces[name][start] = one  # one number, to the bit: no memory
+            if one and y.size > 1:
+                one_view: np.ndarray | None = np.broadcast_to(y[:1].copy(), y.shape)
+            else:
+                one_view = _one_number(y) if maybe_one else None
+            if one_view is not None:
+                self._pieces[name][start] = one_view  # one number, to the bit: no memory
                 return
             whole = self._whole[name] = np.empty(self.n_points)
             for a, piece in self._pieces[name].items():
@@ -1040,7 +1064,13 @@ class Merger:
             y = part.values[name]
             if self._gather and m is not None:
                 self._count_fine(name, y, m)  # then the copy reads y from the cache
-            self.values.put(name, start, y, m is None or m.count < len(y) or m.low == m.high)
+            self.values.put(
+                name,
+                start,
+                y,
+                m is None or m.count < len(y) or m.low == m.high,
+                _one_valued(m, len(y)),
+            )
         for place, (name, codes) in enumerate(part.checks.items()):
             dest = self.checks.get(name)
             if dest is None:

@@ -306,6 +306,45 @@ def test_columns_keep_signed_zeros_and_copy_what_they_are_given() -> None:
     assert all(not np.shares_memory(p, big) for p in c.pieces("v"))
 
 
+def test_a_chunk_its_moments_prove_one_number_is_kept_without_comparing_its_bits(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Every value finite and the extremes equal and not zero: one number to the bit,
+    known from the chunk's moments; equal zeros (0.0 and -0.0 are equal) and chunks with a
+    refused point are still compared bit by bit, and each column holds the values put."""
+    from engine.studies import plan as study_plan
+
+    compared: list[int] = []
+    real = study_plan._one_number
+
+    def counted(y: np.ndarray) -> np.ndarray | None:
+        compared.append(y.size)
+        return real(y)
+
+    monkeypatch.setattr(study_plan, "_one_number", counted)
+    n = 2 * CHUNK
+    zeros = np.zeros(n)
+    zeros[CHUNK + 7] = -0.0  # the second chunk's zeros are not one number to the bit
+    refused = np.full(n, 3.0)
+    refused[5] = np.nan
+    columns = {"one": np.full(n, 2.5), "zeros": zeros, "refused": refused}
+    merger = Merger(n, tuple(columns))
+    for a in (0, CHUNK):
+        part = ChunkResult(
+            {k: v[a : a + CHUNK].copy() for k, v in columns.items()}, {}, [None] * CHUNK, {}, 0.0
+        )
+        merger.add(a, part)
+    # the zeros' chunks and the refused column's first chunk (its second is then one
+    # number: compared too, as the whole column is made by the first) were compared
+    assert compared == [CHUNK, CHUNK, CHUNK]
+    values = merger.result().values
+    assert isinstance(values, Columns)
+    assert all(p.strides == (0,) for p in values.pieces("one"))
+    for name, y in columns.items():
+        assert values[name].tobytes() == y.tobytes(), name  # every bit, signs and NaN too
+    assert values.nbytes == 8 * n * 2  # "zeros" and "refused" whole, "one" nothing
+
+
 def test_a_chunk_of_one_number_travels_as_that_number() -> None:
     # what a Dask worker sends back: pickled (the protocol Dask falls back to for a result)
     size = 65_536
