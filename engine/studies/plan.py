@@ -1714,7 +1714,10 @@ RANK_TOLERANCE = 1e-3
 
 
 def _binned_ranks(
-    x: np.ndarray, bins: int = RANK_BINS, tolerance: float = RANK_TOLERANCE
+    x: np.ndarray,
+    bins: int = RANK_BINS,
+    tolerance: float = RANK_TOLERANCE,
+    extremes: tuple[float, float] | None = None,
 ) -> np.ndarray | None:
     r"""Ranks of the finite values ``x`` from ``bins`` uniform bins over their range, each
     value taking the average rank of its bin's values; None where the bins hold too many
@@ -1735,6 +1738,8 @@ def _binned_ranks(
     one (about 1e-5 for the smooth laws of a study, each bin holding a few values). O(n),
     against the sort's O(n log n). A column whose range holds at most :data:`FEW_FLOATS`
     floats (:func:`_floats_between`) takes each float as a bin: its ranks are exact.
+    ``extremes``: the values' least and greatest, where the caller has them (not sought
+    again).
 
     By hand, x = 0, 3, 1, 4 in 4 bins over 0…4 (width 1, the top one closed): bins 0, 3,
     1, 3; the two values of bin 3 share ranks 3 and 4: 1, 3.5, 2, 3.5, with
@@ -1758,7 +1763,7 @@ def _binned_ranks(
     True
     """
     n = x.size
-    lo, hi = float(x.min()), float(x.max())
+    lo, hi = _extremes(x) if extremes is None else extremes
     few = _floats_between(lo, hi) if lo < hi else None
     if few is not None:  # a column moved by rounding alone: each float its own bin, exact
         labels = np.searchsorted(few, x)
@@ -1779,6 +1784,11 @@ def _binned_ranks(
     return ranks
 
 
+def _extremes(x: np.ndarray) -> tuple[float, float]:
+    """The least and the greatest of the values ``x`` (at least one)."""
+    return float(x.min()), float(x.max())
+
+
 def rank_correlations(
     columns: Mapping[str, np.ndarray], values: Mapping[str, np.ndarray]
 ) -> dict[str, dict[str, float | None]]:
@@ -1792,13 +1802,19 @@ def rank_correlations(
     average rank whatever order a sort leaves them in, so numpy's fastest sort serves.
     Over :data:`RANK_POINTS` points, the first :data:`RANK_POINTS` (a random sample of
     the study's draws) are ranked: the coefficient's standard error there is about 0.002,
-    and ranking a million points costs more than the model did.
+    and ranking a million points costs more than the model did. Each input's extremes
+    (whether it moves, where its rank bins lie) are found once per finite mask, each
+    output's once, not again for each pair.
     """
     if columns and len(next(iter(columns.values()))) > RANK_POINTS:
         columns = {k: v[:RANK_POINTS] for k, v in columns.items()}
     out: dict[str, dict[str, float | None]] = {}
-    # per finite mask: the orders known so far and each input's standardised ranks
-    known: dict[bytes, tuple[list[np.ndarray], dict[str, np.ndarray]]] = {}
+    # per finite mask: the orders known so far, each input's standardised ranks and each
+    # input's extremes on those points
+    known: dict[
+        bytes,
+        tuple[list[np.ndarray], dict[str, np.ndarray], dict[str, tuple[float, float]]],
+    ] = {}
     for name in values:
         y = values[name][:RANK_POINTS]  # one output at a time (:func:`_heads` makes it then)
         if _is_one_number(y):  # one number (a zero-stride view): no rank moves
@@ -1807,20 +1823,28 @@ def rank_correlations(
         ok = np.isfinite(y)
         every = bool(ok.all())
         key = b"" if every else np.packbits(ok).tobytes()
-        orders, input_ranks = known.setdefault(key, ([], {}))
+        orders, input_ranks, input_extremes = known.setdefault(key, ([], {}, {}))
         row: dict[str, float | None] = {}
         ys = y if every else y[ok]
-        flat = ys.size < 3 or np.ptp(ys) == 0
+        # fewer than 3 points, or one value (max - min is 0 exactly when they are equal)
+        y_extremes = _extremes(ys) if ys.size >= 3 else (0.0, 0.0)
+        flat = y_extremes[0] == y_extremes[1]
         binned = ys.size >= RANK_BINNED_POINTS
         zy: np.ndarray | None = None
         for var, x in columns.items():
+            if flat:
+                row[var] = None
+                continue
             xs = x if every else x[ok]
-            if flat or np.ptp(xs) == 0:
+            x_extremes = input_extremes.get(var)
+            if x_extremes is None:
+                x_extremes = input_extremes[var] = _extremes(xs)
+            if x_extremes[0] == x_extremes[1]:
                 row[var] = None
                 continue
             zx = input_ranks.get(var)
             if zx is None:
-                ranked = _binned_ranks(xs) if binned else None
+                ranked = _binned_ranks(xs, extremes=x_extremes) if binned else None
                 if ranked is None:
                     order = np.argsort(xs)
                     orders.append(order)
@@ -1828,7 +1852,7 @@ def rank_correlations(
                 assert ranked is not None
                 zx = input_ranks[var] = _standardised(ranked)
             if zy is None:
-                ry = _binned_ranks(ys) if binned else None
+                ry = _binned_ranks(ys, extremes=y_extremes) if binned else None
                 for order in orders if ry is None else ():
                     ry = _ranks_along(ys, order)
                     if ry is not None:

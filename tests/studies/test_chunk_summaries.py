@@ -211,6 +211,44 @@ def test_rank_correlations_are_scipys_spearman() -> None:
             assert got[name][var] == pytest.approx(want, abs=1e-12)
 
 
+def test_rank_correlations_seek_each_columns_extremes_once(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Each input's extremes are sought once per finite mask and each output's once (not
+    once per pair); an input or an output of one value has no coefficient."""
+    from engine.studies import plan as study_plan
+
+    sought: list[int] = []
+    real = study_plan._extremes
+
+    def counted(x: np.ndarray) -> tuple[float, float]:
+        sought.append(x.size)
+        return real(x)
+
+    monkeypatch.setattr(study_plan, "_extremes", counted)
+    rng = np.random.default_rng(42)
+    n = 60_000  # binned ranks
+    x = {"a": rng.random(n), "b": rng.standard_normal(n), "fixed": np.full(n, 0.5)}
+    y = {
+        "sum": x["a"] + x["b"],
+        "product": x["a"] * x["b"],
+        "flat": np.full(n, 7.0) + 0.0 * x["a"],  # one value, not a zero-stride view
+        "nan": np.where(x["a"] < 0.2, np.nan, x["b"] - x["a"]),
+    }
+    got = rank_correlations(x, y)
+    # 4 outputs (the "nan" one on its finite points), and the 3 inputs on all points and
+    # again on those finite points
+    m = int(np.isfinite(y["nan"]).sum())
+    assert sorted(sought) == sorted([n] * 3 + [m] + [n] * 3 + [m] * 3)
+    assert got["flat"] == dict.fromkeys(x)
+    for name in ("sum", "product", "nan"):
+        assert got[name]["fixed"] is None
+        ok = np.isfinite(y[name])
+        for var in ("a", "b"):
+            want = stats.spearmanr(x[var][ok], y[name][ok]).statistic
+            assert got[name][var] == pytest.approx(want, abs=1e-5), (name, var)
+
+
 def test_a_study_summary_is_the_plain_numbers_of_its_points() -> None:
     spec = engine.get_model("preload.tightening")
     base = {k: v for k, v in spec.examples[0].items() if k != "thread_friction"}
