@@ -1968,7 +1968,12 @@ class _Run:
                 step_budget=self.max_steps,
             )
         rec = self.rec
-        stride = max(1, int(expected / _SERIES_POINTS * 4)) if rec.on else 0
+        if not rec.on:
+            stride = 0
+        elif math.isfinite(expected):
+            stride = max(1, int(expected / _SERIES_POINTS * 4))
+        else:  # no step count (a period without end: a spring of rate ~0): as without series
+            stride = 1
         bufs = rec.buffers() if rec.on else _NO_BUFFERS
         n_rec = 0
         t, w, q0, q1, v0, v1 = state
