@@ -1968,7 +1968,12 @@ class _Run:
                 step_budget=self.max_steps,
             )
         rec = self.rec
-        stride = max(1, int(expected / _SERIES_POINTS * 4)) if rec.on else 0
+        if not rec.on:
+            stride = 0
+        elif math.isfinite(expected):
+            stride = max(1, int(expected / _SERIES_POINTS * 4))
+        else:  # no step count (a period without end: a spring of rate ~0): as without series
+            stride = 1
         bufs = rec.buffers() if rec.on else _NO_BUFFERS
         n_rec = 0
         t, w, q0, q1, v0, v1 = state
@@ -2094,8 +2099,24 @@ def _contact_params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
 
 
 def _jacobian_matrix(p: np.ndarray) -> np.ndarray:
-    """The 4 x 4 constraint Jacobian of :data:`CONTACTS` (:func:`_jacobian`, row by row)."""
-    return np.array([[_jacobian(p, i, j) for j in range(4)] for i in range(4)])
+    """The 4 x 4 constraint Jacobian of :data:`CONTACTS` (:func:`_jacobian`, row by row).
+
+    It reads the faces' slopes alone, which a study that varies neither the geometry nor
+    the cone angle keeps for every design: kept for the last slopes asked (by their bits,
+    so that -0.0 and 0.0 stay apart); the kernels only read it.
+    """
+    key = p[U_TA : U_TB + 1].tobytes()
+    made = _JACOBIANS.get(key)
+    if made is None:
+        if len(_JACOBIANS) >= 256:
+            _JACOBIANS.clear()
+        made = _JACOBIANS[key] = np.array(
+            [[_jacobian(p, i, j) for j in range(4)] for i in range(4)]
+        )
+    return made
+
+
+_JACOBIANS: dict[bytes, np.ndarray] = {}
 
 
 def _contact_rates(p, jac, q, v, tol, cand, rate):  # type: ignore[no-untyped-def]

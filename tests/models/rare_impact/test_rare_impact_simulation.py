@@ -304,6 +304,21 @@ def test_preloads_that_do_not_hold_the_parts_are_refused():
             run(RARE_IMPACT, x, fidelity=rung)
 
 
+def test_a_stage_without_a_step_count_records_as_it_runs_without_series():
+    # an auxiliary spring of 5e-324 N/m (in range) under a shaft heavy enough to beat the
+    # friction: stage 4's period and step are inf, its expected steps NaN; the run without
+    # series uses its step budget, and with series it did the same, not a ValueError
+    x = {**R, "auxiliary_spring_rate": 5e-324, "stepped_shaft_mass": 2.0}
+    said = []
+    for record in (False, True):
+        with pytest.raises(BudgetExceeded, match="used its budget of 200000 steps") as got:
+            C.simulate_cycle(C.step_inputs(x), record=record, max_steps=200_000)
+        said.append(got.value.message)
+    assert said[0] == said[1]
+    with pytest.raises(BudgetExceeded, match="used its budget of 200000 steps"):
+        run(RARE_IMPACT, x, fidelity="simulation", series=True, budget_s=None, max_steps=200_000)
+
+
 # ---------------------------------------------------------------------------
 # Budgets
 # ---------------------------------------------------------------------------
