@@ -159,3 +159,57 @@ def test_a_named_rungs_estimates_are_of_the_values_swept_not_of_the_callers_arra
     copied = pickle.loads(pickle.dumps(third))
     assert np.array_equal(copied.error_array, expected, equal_nan=True)
     assert np.array_equal(copied.columns["tightening_torque"], first.columns["tightening_torque"])
+
+
+def _two_column_toy(energy: Any, inertia: Any) -> Any:
+    """TOY whose array path gives ``energy(d)`` and ``inertia(d)`` of the diameters d."""
+
+    def vectorized(x: Any, ctx: Any) -> Any:
+        d = np.asarray(x["diameter"], dtype=float)
+        return engine.Result(
+            values={"energy": energy(d), "inertia": inertia(d)}, rung=ctx.rung, error_estimate=0.0
+        )
+
+    return dataclasses.replace(TOY, vectorized=vectorized)
+
+
+@pytest.mark.parametrize(
+    ("energy", "inertia", "want_energy", "want_inertia", "refused"),
+    [
+        # finite values whose sum overflows: told value by value, none refused
+        (
+            lambda d: np.where(d > 0.2, 1e308, d),
+            lambda d: np.where(d > 0.2, 1e308, 2.0 * d),
+            [0.1, 1e308, 1e308],
+            [0.2, 1e308, 1e308],
+            0,
+        ),
+        # a NaN beside a finite output is a null, not a refused point
+        (
+            lambda d: np.where(d == 0.3, np.nan, d),
+            lambda d: 2.0 * d,
+            [0.1, None, 0.4],
+            [0.2, 0.6, 0.8],
+            0,
+        ),
+        # NaN in every output: the point is refused (no rung), the others kept
+        (
+            lambda d: np.where(d == 0.3, np.nan, d),
+            lambda d: np.where(d == 0.3, np.nan, 2.0 * d),
+            [0.1, None, 0.4],
+            [0.2, None, 0.8],
+            1,
+        ),
+    ],
+)
+def test_a_point_is_refused_only_where_every_output_is_nan(
+    energy: Any, inertia: Any, want_energy: list[Any], want_inertia: list[Any], refused: int
+) -> None:
+    toy = _two_column_toy(energy, inertia)
+    s = engine.sweep(
+        toy, BASE, "diameter", [0.1, 0.3, 0.4], outputs=["energy", "inertia"], fidelity="exact"
+    )
+    assert s.results == {"energy": want_energy, "inertia": want_inertia}
+    assert s.rungs == ["exact", None if refused else "exact", "exact"]
+    said = [n for n in s.notes if "could not be computed" in n]
+    assert said == ([f"{refused} of 3 points could not be computed; null there"] if refused else [])
