@@ -213,3 +213,35 @@ def test_parts_and_plain_read_any_sentence_of_quantities_alike() -> None:
         assert all(
             not (isinstance(a, str) and isinstance(b, str)) for a, b in itertools.pairwise(ps)
         )
+
+
+@pytest.mark.parametrize("name", ["joint.vdi2230", "preload.tightening", "tool.capability"])
+def test_an_answer_reads_each_sentence_once_as_the_fields_read_them(name: str) -> None:
+    """sentences_with_parts() on a fresh result (each marked sentence read once, by split())
+    and on one whose sentences were read already gives what the properties give, and the
+    fresh result's fields then read as those of a result read field by field."""
+    spec = get_model(name)
+    fresh = engine.run(spec, spec.examples[0])
+    by_fields = engine.run(spec, spec.examples[0])
+    checks, notes_parts = fresh.sentences_with_parts()
+    assert "_marked" not in vars(fresh)  # the fields are made
+    assert [c for c, _ in checks] == by_fields.checks == fresh.checks
+    assert [c.detail for c, _ in checks] == [c.detail for c in by_fields.checks]
+    assert [ps for _, ps in checks] == [c.detail_parts for c in by_fields.checks]
+    assert notes_parts == by_fields.notes_parts
+    assert (fresh.notes, fresh.marked_notes) == (by_fields.notes, by_fields.marked_notes)
+    assert fresh.sentences_with_parts() == (checks, notes_parts)  # read already: the same
+    if name == "joint.vdi2230":  # marked checks and notes, read once
+        assert any(c.marked for c, _ in checks) and fresh.marked_notes
+
+
+def test_a_result_with_unmarked_notes_and_marked_checks_gives_the_notes_as_parts() -> None:
+    from engine.core.runner import RunResult
+    from engine.core.spec import Check
+
+    checks = [Check("a", True, "F = " + q(1500.0, "kN")), Check("b", False, "no number")]
+    r = RunResult._of(checks, ["a note", ""], model="m")
+    (a, a_parts), (b, b_parts) = r.sentences_with_parts()[0]
+    assert (a.detail, a.marked, _joined(a_parts)) == ("F = 1.5 kN", checks[0].detail, a.detail)
+    assert (b, b_parts) == (checks[1], ["no number"])
+    assert r.sentences_with_parts()[1] == [["a note"], [""]] and r.marked_notes == []
