@@ -56,28 +56,29 @@ class RunResult:
         """``notes`` as text and quantities, one entry per note (:func:`engine.core.text.parts`)."""
         return [parts(n) for n in self.marked_notes or self.notes]
 
-    def sentences_with_parts(self) -> tuple[list[tuple[Check, Parts]], list[Parts]]:
-        """Each check beside its ``detail_parts``, and ``notes_parts``: what an answer shows
-        beside the plain sentences. A result whose sentences were not read yet reads each
-        marked one once for its text and its parts (:func:`engine.core.text.split`, not
-        plain() then parts()); its sentence fields then read as if made at once.
+    def answer_sentences(self) -> tuple[list[tuple[Check, str, Parts]], list[str], list[Parts]]:
+        """The sentences as an answer shows them: each check with its plain ``detail`` and
+        its ``detail_parts``, the plain ``notes`` and ``notes_parts``.
+
+        A result whose sentences were not read yet reads each marked one once for its text
+        and its parts (:func:`engine.core.text.split`, not plain() then parts()) and is left
+        unread: its checks come as the model wrote them (name, verdict and level read from
+        them), no :class:`Check` is made again and no field is kept.
         """
-        made = self.__dict__
-        marked = made.get("_marked")
+        marked = self.__dict__.get("_marked")
         if marked is None:
-            return [(c, c.detail_parts) for c in self.checks], self.notes_parts
+            return (
+                [(c, c.detail, c.detail_parts) for c in self.checks],
+                self.notes,
+                self.notes_parts,
+            )
         written, notes = marked
-        fields, read = _sentences(written, notes, split)
-        made.update(fields)
-        made.pop("_marked", None)
         checks = [
-            (c, c.detail_parts if ps is None else ps)
-            for c, ps in zip(fields["checks"], read, strict=False)
+            (c, *split(c.detail)) if OPEN in c.detail else (c, c.detail, c.detail_parts)
+            for c in written
         ]
-        of_notes = read[len(checks) :]
-        return checks, [
-            parts(n) if ps is None else ps for n, ps in zip(fields["notes"], of_notes, strict=True)
-        ]
+        read = [split(n) for n in notes]
+        return checks, [text for text, _ in read], [ps for _, ps in read]
 
     @property
     def check_flags(self) -> list[tuple[str, bool]]:
@@ -117,7 +118,7 @@ class RunResult:
                 if name in made:
                     return made[name]
                 raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
-            made.update(_sentences(*marked)[0])
+            made.update(_sentences(*marked))
             made.pop("_marked", None)
             return made[name]
 
@@ -126,42 +127,19 @@ class RunResult:
 _SENTENCE_FIELDS = frozenset({"checks", "notes", "marked_notes"})
 
 
-def _sentences(
-    checks: list[Check],
-    notes: list[str],
-    read: Callable[[str], tuple[str, Parts | None]] | None = None,
-) -> tuple[dict[str, Any], list[Parts | None]]:
+def _sentences(checks: list[Check], notes: list[str]) -> dict[str, Any]:
     """The sentence fields of a :class:`RunResult` from the sentences as the model wrote
     them: the marks taken out (:func:`engine.core.text.plain`), the marked ones kept for
-    their parts (``notes_parts``, each check's ``detail_parts``, read when asked).
-
-    ``read`` reads a marked sentence instead of plain(), giving its parts beside its text
-    (:func:`engine.core.text.split`: a reader of both reads it once); the second item holds
-    them, each check's then each note's, None where a sentence was not read.
-    """
-    made: list[Check] = []
-    got: list[Parts | None] = []
-    for c in checks:
-        ps = None
-        if OPEN in c.detail:
-            if read is None:
-                text = plain(c.detail)
-            else:
-                text, ps = read(c.detail)
-            c = Check(c.name, c.ok, text, c.level, c.detail)
-        made.append(c)
-        got.append(ps)
-    if not any(OPEN in n for n in notes):
-        got += [None] * len(notes)
-        return {"checks": made, "notes": notes, "marked_notes": []}, got
-    if read is None:
-        texts = [plain(n) for n in notes]
-        got += [None] * len(notes)
-    else:
-        both = [read(n) for n in notes]
-        texts = [text for text, _ in both]
-        got += [ps for _, ps in both]
-    return {"checks": made, "notes": texts, "marked_notes": notes}, got
+    their parts (``notes_parts``, each check's ``detail_parts``, read when asked)."""
+    marked = any(OPEN in n for n in notes)
+    return {
+        "checks": [
+            Check(c.name, c.ok, plain(c.detail), c.level, c.detail) if OPEN in c.detail else c
+            for c in checks
+        ],
+        "notes": [plain(n) for n in notes] if marked else notes,
+        "marked_notes": notes if marked else [],
+    }
 
 
 @dataclass
