@@ -359,7 +359,7 @@ def _parts_marked(sentence: str) -> Parts:
 
 def split(sentence: str) -> tuple[str, Parts]:
     """``(plain(sentence), parts(sentence))``, the sentence read once where it has no stray
-    mark: for a reader of both (the service's answer), a third less than the two apart.
+    mark: for a reader of both (the service's answer), about a quarter less than the two apart.
 
     >>> text, (head, quantity) = split("F_K = " + q(11900.0, "kN"))
     >>> text, head, quantity["value"], quantity["text"]
