@@ -81,6 +81,7 @@ def _response(result: engine.RunResult, max_series_points: int) -> dict[str, Any
                 limit=max_series_points,
                 points=len(points),
             )
+    checks, notes, notes_parts = result.answer_sentences()  # each sentence read once
     return {
         "model": result.model,
         "results": result.results,
@@ -93,14 +94,14 @@ def _response(result: engine.RunResult, max_series_points: int) -> dict[str, Any
             {
                 "name": c.name,
                 "ok": c.ok,
-                "detail": c.detail,
+                "detail": detail,
                 "level": c.level,
-                "detail_parts": c.detail_parts,
+                "detail_parts": detail_parts,
             }
-            for c in result.checks
+            for c, detail, detail_parts in checks
         ],
-        "notes": result.notes,
-        "notes_parts": result.notes_parts,
+        "notes": notes,
+        "notes_parts": notes_parts,
         "warnings": result.warnings,
         "series": result.series,
         "inputs": result.inputs,

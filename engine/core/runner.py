@@ -21,7 +21,7 @@ import numpy as np
 from . import points
 from .errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange, SolverFailed
 from .spec import Check, ModelSpec, Param, Result, RunContext, Rung, Scratch, Value
-from .text import OPEN, Parts, parts, plain
+from .text import OPEN, Parts, parts, plain, split
 
 DEFAULT_TOLERANCE = 0.01
 MAX_SWEEP_POINTS = 2000
@@ -55,6 +55,30 @@ class RunResult:
     def notes_parts(self) -> list[Parts]:
         """``notes`` as text and quantities, one entry per note (:func:`engine.core.text.parts`)."""
         return [parts(n) for n in self.marked_notes or self.notes]
+
+    def answer_sentences(self) -> tuple[list[tuple[Check, str, Parts]], list[str], list[Parts]]:
+        """The sentences as an answer shows them: each check with its plain ``detail`` and
+        its ``detail_parts``, the plain ``notes`` and ``notes_parts``.
+
+        A result whose sentences were not read yet reads each marked one once for its text
+        and its parts (:func:`engine.core.text.split`, not plain() then parts()) and is left
+        unread: its checks come as the model wrote them (name, verdict and level read from
+        them), no :class:`Check` is made again and no field is kept.
+        """
+        marked = self.__dict__.get("_marked")
+        if marked is None:
+            return (
+                [(c, c.detail, c.detail_parts) for c in self.checks],
+                self.notes,
+                self.notes_parts,
+            )
+        written, notes = marked
+        checks = [
+            (c, *split(c.detail)) if OPEN in c.detail else (c, c.detail, c.detail_parts)
+            for c in written
+        ]
+        read = [split(n) for n in notes]
+        return checks, [text for text, _ in read], [ps for _, ps in read]
 
     @property
     def check_flags(self) -> list[tuple[str, bool]]:

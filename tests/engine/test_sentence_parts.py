@@ -213,3 +213,46 @@ def test_parts_and_plain_read_any_sentence_of_quantities_alike() -> None:
         assert all(
             not (isinstance(a, str) and isinstance(b, str)) for a, b in itertools.pairwise(ps)
         )
+
+
+@pytest.mark.parametrize("name", ["joint.vdi2230", "preload.tightening", "tool.capability"])
+def test_an_answer_reads_each_sentence_once_as_the_fields_read_them(name: str) -> None:
+    """answer_sentences() on a fresh result (each marked sentence read once, by split(), the
+    result left unread) and on one whose sentences were read already gives what the fields
+    and properties give."""
+    spec = get_model(name)
+    fresh = engine.run(spec, spec.examples[0])
+    by_fields = engine.run(spec, spec.examples[0])
+    checks, notes, notes_parts = fresh.answer_sentences()
+    assert "_marked" in vars(fresh) and "checks" not in vars(fresh)  # left unread
+    assert [(c.name, c.ok, c.level) for c, _, _ in checks] == [
+        (c.name, c.ok, c.level) for c in by_fields.checks
+    ]
+    assert [detail for _, detail, _ in checks] == [c.detail for c in by_fields.checks]
+    assert [ps for _, _, ps in checks] == [c.detail_parts for c in by_fields.checks]
+    assert (notes, notes_parts) == (by_fields.notes, by_fields.notes_parts)
+    read = by_fields.answer_sentences()  # read already: from the fields
+    assert [c for c, _, _ in read[0]] == by_fields.checks
+    assert [(d, ps) for _, d, ps in read[0]] == [(d, ps) for _, d, ps in checks]
+    assert read[1:] == (notes, notes_parts)
+    if name == "joint.vdi2230":  # marked checks and notes
+        assert any("\ue000" in c.detail for c, _, _ in checks) and fresh.marked_notes
+
+
+def test_an_answer_reads_unmarked_notes_and_a_check_made_readable_before() -> None:
+    from engine.core.runner import RunResult
+    from engine.core.spec import Check
+
+    marked = "F = " + q(1500.0, "kN")
+    checks = [
+        Check("a", True, marked),
+        Check("b", False, "no number", "advice"),
+        Check("c", True, "F = 1.5 kN", "requirement", marked),  # plain, its marks kept
+    ]
+    r = RunResult._of(checks, ["a note", ""], model="m")
+    (a, a_text, a_parts), b, (c, c_text, c_parts) = r.answer_sentences()[0]
+    assert (a, a_text, _joined(a_parts)) == (checks[0], "F = 1.5 kN", "F = 1.5 kN")
+    assert b == (checks[1], "no number", ["no number"])
+    assert (c, c_text, c_parts) == (checks[2], "F = 1.5 kN", a_parts)
+    assert r.answer_sentences()[1:] == (["a note", ""], [["a note"], [""]])
+    assert r.marked_notes == [] and r.answer_sentences()[0][0][1:] == ("F = 1.5 kN", a_parts)

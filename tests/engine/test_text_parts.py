@@ -9,7 +9,7 @@ import re
 import pytest
 
 import engine
-from engine.core.text import CLOSE, OPEN, SEP, _parts_marked, parts, plain, q
+from engine.core.text import CLOSE, OPEN, SEP, _parts_marked, parts, plain, q, split
 from engine.models import MODELS
 
 
@@ -82,3 +82,32 @@ def test_plain_reads_a_sentence_with_stray_marks_as_before(sentence: str) -> Non
     if SEP in before or CLOSE in before:
         before = "".join(p if isinstance(p, str) else p["text"] for p in parts(sentence))
     assert plain(sentence) == before
+
+
+@pytest.mark.parametrize(
+    "sentence",
+    [
+        "a" + SEP + "x" + OPEN + "y" + CLOSE + " b",
+        GOOD + SEP + OPEN + CLOSE,
+        GOOD + " x" + SEP + "y" + CLOSE + " z",  # separator … closing mark after a quantity
+        CLOSE + GOOD,
+        GOOD + " and " + q(0.0254, "mm", 4) + " then " + q(2.0, "kN", bare=True),
+        "no quantity",
+        "",
+    ],
+)
+def test_split_reads_a_sentence_as_plain_and_parts_apart(sentence: str) -> None:
+    # one reading where no mark stands outside a quantity; plain()'s where one does
+    assert split(sentence) == (plain(sentence), parts(sentence))
+
+
+def test_a_digits_field_is_read_once_and_a_bad_one_refused_each_time() -> None:
+    from engine.core.text import _LIMITS, _digits
+
+    assert _digits("4:5", "1.234 mm") == _digits("4:5", "1.234 mm") == 4
+    assert _LIMITS["4:5"] == (4, 5) and _digits(":6", "2014.0 N·m") == 5
+    assert _digits("6:9", "12345.6 N") == 6 and _digits("2", "12 mm") == 2
+    for bad in ("x:1", "", "4:"):
+        with pytest.raises(ValueError):
+            _digits(bad, "1.0 mm")
+        assert bad not in _LIMITS
