@@ -213,3 +213,14 @@ def test_a_point_is_refused_only_where_every_output_is_nan(
     assert s.rungs == ["exact", None if refused else "exact", "exact"]
     said = [n for n in s.notes if "could not be computed" in n]
     assert said == ([f"{refused} of 3 points could not be computed; null there"] if refused else [])
+
+
+@pytest.mark.parametrize(("rung", "code"), [("rough", 0), ("exact", 1)])
+def test_one_rung_everywhere_codes_every_point_with_it(rung: str, code: int) -> None:
+    # rung 0 everywhere is the allocator's zeros; a later rung a filled column
+    s = engine.sweep(
+        _counting_toy([]), BASE, "diameter", [0.1, 0.2, 0.3], outputs=["energy"], fidelity=rung
+    )
+    assert s.rung_codes.dtype == np.int8 and s.rung_codes.tolist() == [code] * 3
+    assert s.rung_names == ("rough", "exact") and s.rungs == [rung] * 3 and s.rung == rung
+    assert s.rung_codes.flags.writeable  # a column of the sweep's own, not a broadcast view
