@@ -1950,6 +1950,18 @@ class _Run:
         clamp0: bool = False,
     ) -> tuple[int, int, tuple[float, float, float, float, float, float]]:
         """Run ``mode`` from ``state`` = (t, ω, q0, q1, v0, v1) to its first event."""
+        if not math.isfinite(expected):
+            # a stage whose period has no end (a spring of rate ~0 under a shaft heavy enough
+            # to beat the friction) has no step count: NaN passed the comparison below and the
+            # stage integrated non-finite states until its whole time budget was spent
+            raise BudgetExceeded(
+                "the cycle simulation cannot count its RK4 steps ahead: a stage's period is not "
+                "finite (a spring rate near zero), so it would never reach its event; use "
+                "fidelity 'closed_form' or 'auto'",
+                field="fidelity",
+                expected_steps=math.inf,  # never reaches its event: declined up front
+                step_budget=self.max_steps,
+            )
         if self.steps + expected > self.max_steps:
             budget = (
                 f"budget {self.max_steps:g}"
@@ -1968,12 +1980,7 @@ class _Run:
                 step_budget=self.max_steps,
             )
         rec = self.rec
-        if not rec.on:
-            stride = 0
-        elif math.isfinite(expected):
-            stride = max(1, int(expected / _SERIES_POINTS * 4))
-        else:  # no step count (a period without end: a spring of rate ~0): as without series
-            stride = 1
+        stride = max(1, int(expected / _SERIES_POINTS * 4)) if rec.on else 0
         bufs = rec.buffers() if rec.on else _NO_BUFFERS
         n_rec = 0
         t, w, q0, q1, v0, v1 = state
