@@ -2106,24 +2106,8 @@ def _contact_params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
 
 
 def _jacobian_matrix(p: np.ndarray) -> np.ndarray:
-    """The 4 x 4 constraint Jacobian of :data:`CONTACTS` (:func:`_jacobian`, row by row).
-
-    It reads the faces' slopes alone, which a study that varies neither the geometry nor
-    the cone angle keeps for every design: kept for the last slopes asked (by their bits,
-    so that -0.0 and 0.0 stay apart); the kernels only read it.
-    """
-    key = p[U_TA : U_TB + 1].tobytes()
-    made = _JACOBIANS.get(key)
-    if made is None:
-        if len(_JACOBIANS) >= 256:
-            _JACOBIANS.clear()
-        made = _JACOBIANS[key] = np.array(
-            [[_jacobian(p, i, j) for j in range(4)] for i in range(4)]
-        )
-    return made
-
-
-_JACOBIANS: dict[bytes, np.ndarray] = {}
+    """The 4 x 4 constraint Jacobian of :data:`CONTACTS` (:func:`_jacobian`, row by row)."""
+    return np.array([[_jacobian(p, i, j) for j in range(4)] for i in range(4)])
 
 
 def _contact_rates(p, jac, q, v, tol, cand, rate):  # type: ignore[no-untyped-def]

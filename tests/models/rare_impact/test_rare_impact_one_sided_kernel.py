@@ -7,7 +7,6 @@ g_H = −y_h, g_J = h2 − y_s, g_B = y_r − y_h − (x − x0), g_A = y_s − 
 from __future__ import annotations
 
 import itertools
-import math
 
 import numpy as np
 import pytest
@@ -34,30 +33,6 @@ def test_the_jacobian_and_parameters_are_the_contacts_written_out() -> None:
         [-1.0, 0.0, -t, 1.0],
         [0.0, 1.0, -p[C.U_TA], -1.0],
     ]
-
-
-def test_the_jacobian_is_kept_per_slopes_with_the_sign_of_zero() -> None:
-    p, jac = _setup()
-    assert C._jacobian_matrix(p.copy()) is jac  # the same slopes: the one kept
-    flat = p.copy()
-    flat[C.U_TA] = 0.0  # the single cone's flat face
-    minus = flat.copy()
-    minus[C.U_TA] = -0.0
-    a, b = C._jacobian_matrix(flat), C._jacobian_matrix(minus)
-    assert a is not b and a.tolist() == b.tolist() == [
-        [-1.0, 0.0, 0.0, 0.0],
-        [0.0, -1.0, 0.0, 0.0],
-        [-1.0, 0.0, -p[C.U_TB], 1.0],
-        [0.0, 1.0, 0.0, -1.0],
-    ]
-    assert math.copysign(1.0, a[3, 2]) == -1.0 and math.copysign(1.0, b[3, 2]) == 1.0
-    for k in range(300):  # past the 256 kept: emptied, then made anew
-        other = p.copy()
-        other[C.U_TB] = 1.0 + k * 1e-3
-        got = C._jacobian_matrix(other)
-        assert got[2, 2] == -other[C.U_TB]
-    assert len(C._JACOBIANS) <= 256
-    assert C._jacobian_matrix(p).tolist() == jac.tolist()
 
 
 def test_touching_contacts_and_their_rates_by_hand() -> None:
