@@ -2847,9 +2847,13 @@ def _output_columns(
         for row, name in zip(table, rest, strict=True):
             row[...] = s[name]
         columns.append(table)
+    # one buffer of flags for every column: np.isfinite into it and a test of the flags take
+    # less CPU than a sum of the column (its additions wait on each other)
+    flags = np.empty(max((column.size for column in columns), default=0), dtype=bool)
     for column in columns:
-        if not np.isfinite(np.add.reduce(column, axis=None)):  # a NaN or inf: one pass to find
-            column[~np.isfinite(column)] = np.nan
+        finite = np.isfinite(column, out=flags[: column.size].reshape(column.shape))
+        if not finite.all():  # a NaN or inf
+            column[~finite] = np.nan
         if refused is not None:
             column[..., refused] = np.nan
     given = {**made, **(dict(zip(rest, table, strict=True)) if rest else {})}
