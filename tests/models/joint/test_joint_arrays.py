@@ -573,3 +573,28 @@ def test_an_output_that_is_a_swept_input_leaves_the_input_intact(
     assert got.value_array.tolist() == values
     assert np.isnan(got.columns["tightening_torque"][:2]).all()
     assert got.columns["tightening_torque"][2:].tolist() == [50.0, 120.0]
+
+
+@pytest.mark.parametrize("block", [3, 1 << 16])
+@pytest.mark.parametrize("in_place_from", [1, 10**9])
+def test_the_columns_null_exactly_the_values_not_finite(
+    in_place_from: int, block: int, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Each column is tested value by value, not by a sum (which overflows on large finite
+    values): ±inf and NaN become null, the refused points too, and every finite value stays
+    (1e308 twice included), in a column written in place and in the copied table alike, in
+    one block or in blocks (of 3: the table's second row starts in the middle of one)."""
+    monkeypatch.setattr(joint_model, "IN_PLACE_FROM", in_place_from)
+    monkeypatch.setattr(joint_model, "FINITE_BLOCK", block)
+    s = {
+        "large": np.array([1e308, 1e308, 2.0, 3.0]),
+        "odd": np.array([1.0, np.inf, -np.inf, np.nan]),
+        "fixed": 5.0,
+    }
+    refused = np.array([False, False, False, True])
+    got = joint_model._output_columns(s, ["large", "odd", "fixed"], 4, refused, ())
+    assert got["large"][:3].tolist() == [1e308, 1e308, 2.0]
+    assert got["odd"][0] == 1.0
+    assert np.isnan(got["odd"][1:]).all()
+    assert got["fixed"][:3].tolist() == [5.0, 5.0, 5.0]
+    assert np.isnan([got["large"][3], got["fixed"][3]]).all()
