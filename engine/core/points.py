@@ -228,3 +228,34 @@ def scalar_gives(
     except EngineError:
         return False
     return any(values.get(name) is not None for name in names)
+
+
+#: Values tested at a time: the flags of a block (64 KiB) stay in the processor's cache and
+#: come from the heap, where the flags of a whole column (1 MB for 10⁶ points) would be pages
+#: fresh from the kernel on each call, and a pass more.
+FINITE_BLOCK = 1 << 16
+
+
+def all_finite(values: np.ndarray) -> bool:
+    """Whether no value of the float array ``values`` is NaN or infinite.
+
+    Exact (a sum of the values, the earlier test, also said no where finite values overflow,
+    and took more CPU: its additions wait on each other), and it stops at the first block
+    that holds a non-finite value. ``values`` is read as one flat run of values: a view for a
+    contiguous array, a copy otherwise.
+
+    >>> all_finite(np.array([1.0, 2.0])), all_finite(np.array([1.0, np.nan]))
+    (True, False)
+    >>> all_finite(np.array([1e308, 1e308])), all_finite(np.array([[0.0], [-np.inf]]))
+    (True, False)
+    >>> all_finite(np.arange(FINITE_BLOCK + 3.0)), all_finite(np.empty(0))
+    (True, True)
+    """
+    flat = values.reshape(-1)
+    size = flat.size
+    flags = np.empty(min(size, FINITE_BLOCK), dtype=bool)
+    for start in range(0, size, FINITE_BLOCK):
+        block = flat[start : start + FINITE_BLOCK]
+        if not np.isfinite(block, out=flags[: block.size]).all():
+            return False
+    return True

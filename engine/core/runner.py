@@ -816,7 +816,7 @@ def sweep(
             column = vec.values[name]
             computed[name] = None
             if column.dtype.kind == "f" and not every_finite:
-                if _finite_sum(column):  # no NaN in it: every point has a value
+                if points.all_finite(column):  # no NaN in it: every point has a value
                     every_finite = True
                 else:
                     finite = np.isfinite(column)
@@ -953,23 +953,6 @@ def sweep(
     if estimates is not None:
         result.error_array  # noqa: B018  (auto's estimates are made: keep the errors, not them)
     return result
-
-
-def _finite_sum(column: np.ndarray) -> bool:
-    """Whether a float column's sum is finite: then no value of it is NaN or infinite.
-
-    The common case, every point computed, is told in one pass that makes no array (a
-    mask of the points is 1 MB and a pass more for 10⁶ points, its pages fresh from the
-    kernel on each sweep); a sum that is not finite (a NaN, an infinity, or finite values
-    whose sum overflows) leaves it to each value's test.
-
-    >>> _finite_sum(np.array([1.0, 2.0])), _finite_sum(np.array([1.0, np.nan]))
-    (True, False)
-    >>> _finite_sum(np.array([1e308, 1e308])), _finite_sum(np.array([np.inf, -np.inf]))
-    (False, False)
-    """
-    with np.errstate(over="ignore", invalid="ignore"):
-        return math.isfinite(column.sum())
 
 
 def _one_rung(n: int, k: int) -> np.ndarray:

@@ -22,6 +22,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from ..core.errors import InputOutOfRange
+from ..core.points import all_finite
 from ..core.spec import (
     Answer,
     Check,
@@ -766,8 +767,8 @@ def _overflows_squared(value: Any) -> Any:
     """Where a finite value's square overflows (Python floats raise there; arrays give inf)."""
     if isinstance(value, np.ndarray):
         square = value * value
-        if np.isfinite(np.add.reduce(square, axis=None)):
-            return False  # no square is inf (nor NaN): none overflows, found in one pass
+        if all_finite(square):
+            return False  # no square is inf (nor NaN): none overflows
         return np.isfinite(value) & ~np.isfinite(square)
     return False  # a float that overflows has raised OverflowError already
 
@@ -2811,11 +2812,6 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
 #: of a column costs less than the calls that test and write it alone.
 IN_PLACE_FROM = 8192
 
-#: Values of a column tested for a non-finite value at a time: the flags of a block stay in
-#: the processor's cache and come from the heap, where the flags of a whole column (1 MB for
-#: 10⁶ points) would be pages fresh from the kernel on each call.
-FINITE_BLOCK = 1 << 16
-
 
 def _output_columns(
     s: Mapping[str, Any],
@@ -2852,16 +2848,9 @@ def _output_columns(
         for row, name in zip(table, rest, strict=True):
             row[...] = s[name]
         columns.append(table)
-    # np.isfinite into one block of flags and a test of the flags take less CPU than a sum of
-    # the column (its additions wait on each other)
-    flags = np.empty(FINITE_BLOCK, dtype=bool)
     for column in columns:
-        values = column.reshape(-1)  # a view: a column, or the table made above
-        for start in range(0, values.size, FINITE_BLOCK):
-            block = values[start : start + FINITE_BLOCK]
-            finite = np.isfinite(block, out=flags[: block.size])
-            if not finite.all():  # a NaN or inf
-                block[~finite] = np.nan
+        if not all_finite(column):  # a NaN or inf: one pass more to find them
+            column[~np.isfinite(column)] = np.nan
         if refused is not None:
             column[..., refused] = np.nan
     given = {**made, **(dict(zip(rest, table, strict=True)) if rest else {})}

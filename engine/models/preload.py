@@ -17,6 +17,7 @@ import numpy as np
 
 from ..core.errors import EngineError, InputOutOfRange
 from ..core.params import count, friction_coefficient
+from ..core.points import all_finite
 from ..core.spec import (
     Answer,
     Check,
@@ -629,7 +630,7 @@ def _finish(
             col[~ok] = None
             out[name] = col
             continue
-        if every and _own_column(arr, n, taken) and _all_finite(arr):
+        if every and _own_column(arr, n, taken) and all_finite(arr):
             out[name] = arr
             taken.add(id(arr))
             continue
@@ -653,19 +654,6 @@ def _own_column(arr: np.ndarray, n: int, taken: Container[int]) -> bool:
         and arr.flags.writeable
         and id(arr) not in taken
     )
-
-
-def _all_finite(arr: np.ndarray) -> bool:
-    """Whether every value of ``arr`` is finite, without a mask of its size.
-
-    A NaN or an infinity makes the sum NaN or infinite; a sum that overflows from finite
-    values says no as well, and the caller then tests each value.
-
-    >>> _all_finite(np.array([1.0, 2.0])), _all_finite(np.array([1.0, np.inf]))
-    (True, False)
-    """
-    with np.errstate(over="ignore", invalid="ignore"):
-        return bool(np.isfinite(np.add.reduce(arr)))
 
 
 CLOSED_FORM = Rung(

@@ -9,6 +9,7 @@ import pytest
 
 import engine
 from engine import InputOutOfRange, Rung, fixed_error
+from engine.core import points
 from tests.toys import TOY
 
 BASE = {"diameter": 0.2}
@@ -224,3 +225,22 @@ def test_one_rung_everywhere_codes_every_point_with_it(rung: str, code: int) -> 
     assert s.rung_codes.dtype == np.int8 and s.rung_codes.tolist() == [code] * 3
     assert s.rung_names == ("rough", "exact") and s.rungs == [rung] * 3 and s.rung == rung
     assert s.rung_codes.flags.writeable  # a column of the sweep's own, not a broadcast view
+
+
+@pytest.mark.parametrize("block", [1, 3, 1 << 16])
+def test_all_finite_says_no_exactly_where_a_value_is_nan_or_infinite(
+    block: int, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The blocked test equals a whole-column mask's on columns with one bad value at the
+    first, a block's edge or the last place, on finite values whose sum overflows, on ±0,
+    subnormals and empty or two-dimensional arrays."""
+    monkeypatch.setattr(points, "FINITE_BLOCK", block)
+    rng = np.random.default_rng(7)
+    cases = [np.empty(0), np.array([-0.0, 0.0, 5e-324]), np.full(7, 1e308), rng.random((3, 5))]
+    for bad in (np.nan, np.inf, -np.inf):
+        for where in (0, 2, 3, 6, 9):
+            column = rng.random(10)
+            column[where] = bad
+            cases.append(column)
+    for column in cases:
+        assert points.all_finite(column) == bool(np.isfinite(column).all())

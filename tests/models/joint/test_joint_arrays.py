@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 from engine import run
+from engine.core import points
 from engine.core.errors import EngineError, InputOutOfRange
 from engine.core.runner import sweep
 from engine.core.spec import RunContext
@@ -585,7 +586,7 @@ def test_the_columns_null_exactly_the_values_not_finite(
     (1e308 twice included), in a column written in place and in the copied table alike, in
     one block or in blocks (of 3: the table's second row starts in the middle of one)."""
     monkeypatch.setattr(joint_model, "IN_PLACE_FROM", in_place_from)
-    monkeypatch.setattr(joint_model, "FINITE_BLOCK", block)
+    monkeypatch.setattr(points, "FINITE_BLOCK", block)
     s = {
         "large": np.array([1e308, 1e308, 2.0, 3.0]),
         "odd": np.array([1.0, np.inf, -np.inf, np.nan]),
