@@ -956,12 +956,13 @@ def sweep(
 
 
 def _one_rung(n: int, k: int) -> np.ndarray:
-    """The rung codes of ``n`` points that all ran rung ``k``, made without a pass where
-    ``k`` is 0 (the first rung, the common case).
+    """The rung codes of ``n`` points that all ran rung ``k``, written once (``k`` != 0)
+    or not at all where ``k`` is 0 (the first rung, the common case) and the pages are
+    fresh.
 
-    Zeros are the allocator's (``calloc``): a large column's pages are mapped when first
-    read, not written here, where a filled column is written twice over (-1, then ``k``),
-    its pages fresh from the kernel on each sweep of 10⁶ points.
+    Zeros are the allocator's (``calloc``): a large column taken fresh from the kernel is
+    mapped when first read, not written here (from a warm heap, calloc clears it: one
+    pass); a column filled with -1 and then given ``k`` was written twice over.
 
     >>> _one_rung(3, 0), _one_rung(2, 1)
     (array([0, 0, 0], dtype=int8), array([1, 1], dtype=int8))

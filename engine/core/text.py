@@ -207,7 +207,7 @@ def _limits(shown: str) -> int | tuple[int | None, int]:
     digits field, kept nowhere)."""
     most, counted, length = shown.partition(":")
     limits = int(most) if not counted else (int(most) if most else None, int(length))
-    if len(_LIMITS) < 1024:  # bounded whatever sentences come to be read
+    if len(_LIMITS) < 1024 and len(shown) <= 16:  # bounded whatever sentences are read
         _LIMITS[shown] = limits
     return limits
 

@@ -101,9 +101,13 @@ def test_split_reads_a_sentence_as_plain_and_parts_apart(sentence: str) -> None:
     assert split(sentence) == (plain(sentence), parts(sentence))
 
 
-def test_a_digits_field_is_read_once_and_a_bad_one_refused_each_time() -> None:
-    from engine.core.text import _LIMITS, _digits
+def test_a_digits_field_is_read_once_and_a_bad_one_refused_each_time(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    from engine.core import text
 
+    monkeypatch.setattr(text, "_LIMITS", {})  # room whatever other tests have read
+    _LIMITS, _digits = text._LIMITS, text._digits
     assert _digits("4:5", "1.234 mm") == _digits("4:5", "1.234 mm") == 4
     assert _LIMITS["4:5"] == (4, 5) and _digits(":6", "2014.0 N·m") == 5
     assert _digits("6:9", "12345.6 N") == 6 and _digits("2", "12 mm") == 2
