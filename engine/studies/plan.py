@@ -183,22 +183,25 @@ def _one_number(y: np.ndarray) -> np.ndarray | None:
     return np.broadcast_to(first, y.shape) if bool(same.all()) else None
 
 
-def _one_valued(moments: Moments | None, size: int) -> bool:
-    """Whether the ``moments`` of ``size`` values prove them one number to the bit, with no
-    pass over them: every value finite and the extremes equal and not zero (two equal
-    floats other than 0.0 and -0.0 have the same bits); where they do not, only a
-    comparison of the bits (:func:`_one_number`) tells.
+def _one_of(y: np.ndarray, moments: Moments | None) -> np.ndarray | None:
+    """:func:`_one_number` of ``y`` told from its ``moments`` (its finite values' partial
+    summary) where they can tell it, with no pass over ``y``: a finite value beside a NaN,
+    or two extremes, is not one number; every value finite and the extremes equal and not
+    zero is (two equal floats other than 0.0 and -0.0 have the same bits). Only equal
+    zeros and chunks with no finite value (``moments`` None) are compared bit by bit.
 
-    >>> m = Moments.of(np.full(4, 2.5)), Moments.of(np.array([0.0, -0.0]))
-    >>> _one_valued(m[0], 4), _one_valued(m[0], 5), _one_valued(m[1], 2), _one_valued(None, 4)
-    (True, False, False, False)
+    >>> m = Moments.of(np.full(4, 2.5))
+    >>> _one_of(np.full(4, 2.5), m).strides, _one_of(np.array([2.5, np.nan]), m)
+    ((0,), None)
+    >>> _one_of(np.array([0.0, -0.0]), Moments.of(np.array([0.0, -0.0]))) is None
+    True
     """
-    return (
-        moments is not None
-        and moments.count == size
-        and moments.low == moments.high
-        and moments.low != 0.0
-    )
+    if moments is not None:
+        if moments.count != y.size or moments.low != moments.high:
+            return None
+        if moments.low != 0.0 and y.ndim == 1 and y.size > 1:
+            return np.broadcast_to(y[:1].copy(), y.shape)
+    return _one_number(y)
 
 
 def one_numbers(part: ChunkResult) -> ChunkResult:
@@ -212,8 +215,7 @@ def one_numbers(part: ChunkResult) -> ChunkResult:
     assert summary is not None
     values = dict(part.values)
     for name, y in values.items():
-        m = summary.moments.get(name)
-        one = _one_number(y) if m is None or (m.count == y.size and m.low == m.high) else None
+        one = _one_of(y, summary.moments.get(name))
         if one is not None:
             values[name] = one
     return replace(part, values=values)
@@ -928,23 +930,18 @@ class Columns(Mapping[str, np.ndarray]):
         self._pieces: dict[str, dict[int, np.ndarray]] = {name: {} for name in names}
         self._whole: dict[str, np.ndarray] = {}
 
-    def put(
-        self, name: str, start: int, y: np.ndarray, maybe_one: bool = True, one: bool = False
-    ) -> None:
+    def put(self, name: str, start: int, y: np.ndarray, moments: Moments | None = None) -> None:
         """Keep ``y``, the values of points ``start`` onward of output ``name``.
 
-        ``maybe_one`` False: the caller knows the values are not all one number (their
-        extremes differ), and they are not compared. ``one`` True: the caller knows they
-        are one number to the bit (:func:`_one_valued`), and they are not compared."""
+        ``moments``: the partial summary of ``y``'s finite values where the caller has it,
+        which tells whether they are one number without comparing their bits where it can
+        (:func:`_one_of`); None: they are compared."""
         y = np.asarray(y, dtype=float)
         whole = self._whole.get(name)
         if whole is None:
-            if one and y.size > 1:
-                one_view: np.ndarray | None = np.broadcast_to(y[:1].copy(), y.shape)
-            else:
-                one_view = _one_number(y) if maybe_one else None
-            if one_view is not None:
-                self._pieces[name][start] = one_view  # one number, to the bit: no memory
+            one = _one_of(y, moments)
+            if one is not None:
+                self._pieces[name][start] = one  # one number, to the bit: no memory
                 return
             whole = self._whole[name] = np.empty(self.n_points)
             for a, piece in self._pieces[name].items():
@@ -1064,13 +1061,7 @@ class Merger:
             y = part.values[name]
             if self._gather and m is not None:
                 self._count_fine(name, y, m)  # then the copy reads y from the cache
-            self.values.put(
-                name,
-                start,
-                y,
-                m is None or m.count < len(y) or m.low == m.high,
-                _one_valued(m, len(y)),
-            )
+            self.values.put(name, start, y, m)
         for place, (name, codes) in enumerate(part.checks.items()):
             dest = self.checks.get(name)
             if dest is None:

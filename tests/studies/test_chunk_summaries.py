@@ -348,8 +348,9 @@ def test_a_chunk_its_moments_prove_one_number_is_kept_without_comparing_its_bits
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     """Every value finite and the extremes equal and not zero: one number to the bit,
-    known from the chunk's moments; equal zeros (0.0 and -0.0 are equal) and chunks with a
-    refused point are still compared bit by bit, and each column holds the values put."""
+    known from the chunk's moments; a chunk with a refused point beside a value is known
+    not to be one from them too; only equal zeros (0.0 and -0.0 are equal) are compared
+    bit by bit, and each column holds the values put."""
     from engine.studies import plan as study_plan
 
     compared: list[int] = []
@@ -372,9 +373,9 @@ def test_a_chunk_its_moments_prove_one_number_is_kept_without_comparing_its_bits
             {k: v[a : a + CHUNK].copy() for k, v in columns.items()}, {}, [None] * CHUNK, {}, 0.0
         )
         merger.add(a, part)
-    # the zeros' chunks and the refused column's first chunk (its second is then one
-    # number: compared too, as the whole column is made by the first) were compared
-    assert compared == [CHUNK, CHUNK, CHUNK]
+    # the zeros' chunks alone were compared: the refused column's first chunk is told
+    # from its moments, and its second (one number) goes into the whole column the first made
+    assert compared == [CHUNK, CHUNK]
     values = merger.result().values
     assert isinstance(values, Columns)
     assert all(p.strides == (0,) for p in values.pieces("one"))
