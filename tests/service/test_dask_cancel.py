@@ -30,7 +30,10 @@ def _simulate_once(name: str, design: dict) -> None:
 
 def test_a_cancelled_study_leaves_the_workers_idle_within_a_bound() -> None:
     rare = engine.get_model("impact.rare")
-    example = dict(rare.examples[0])
+    # a flywheel ten times the example's spins up for longer: about 5 ms a simulation, so a
+    # chunk of 256 takes about a second, far above the poll, on any machine this runs on (at
+    # the example's 0.7 ms a chunk took 0.18 s, under twice the poll and its round trip)
+    example = dict(rare.examples[0], flywheel_inertia=10 * rare.examples[0]["flywheel_inertia"])
     study = Study(
         variables=(Variable("motor_torque", low=4.5, high=5.5),),
         base={k: v for k, v in example.items() if k != "motor_torque"},
@@ -73,6 +76,7 @@ def test_a_cancelled_study_leaves_the_workers_idle_within_a_bound() -> None:
         assert ended and isinstance(ended[0], engine.Cancelled)
         # the poll, a few points (at this load), a round trip: far below the chunk's time
         assert idle_s < CANCEL_POLL_S + 10 * point_s + 0.5, (idle_s, point_s)
+        assert LOOP_CHUNK * point_s > 5 * CANCEL_POLL_S, point_s  # the bound below means something
         assert idle_s < 0.5 * LOOP_CHUNK * point_s, (idle_s, point_s)
     finally:
         executor.close()
