@@ -7,8 +7,9 @@ arrays of one shape.
 
 * uniform on [a, b];
 * normal N(m, s);
-* truncated normal: N(m, s) restricted to [a, b] (the ppf is scipy's ``truncnorm``, the
-  one implementation, so the studies' draws stay as they were);
+* truncated normal: N(m, s) restricted to [a, b] (the cdf, sf and pdf are scipy's
+  ``truncnorm``; the ppf inverts Φ from the side of the law where the point lies, checked
+  against ``truncnorm.ppf``);
 * lognormal, **given by its median and geometric standard deviation** (ln X is normal with
   mean ln(median) and sd ln(gsd)); :func:`lognormal_from_mean_sd` converts an arithmetic
   mean and sd to them;
@@ -161,14 +162,67 @@ def truncated_normal_sf(x: Any, mean: Any, sd: Any, low: Any, high: Any) -> Any:
     return stats.truncnorm.sf(x, a, b, loc=mean, scale=sd)
 
 
+#: Below this mass Z, u Z (u ≥ 2⁻⁵³) could fall among the subnormal numbers and lose digits:
+#: :func:`truncated_normal_ppf` then leaves the law to scipy's log-space ``truncnorm.ppf``
+#: (limits beyond about 35.8 standard deviations on one side).
+_SMALLEST_MASS = 1e-280
+
+
+def _normal_mass(alpha: Any, beta: Any) -> Any:
+    r"""Φ(β) − Φ(α) (α ≤ β), each difference taken on the side where both terms are small.
+
+    Both limits above 0: Φ(−α) − Φ(−β); both below: Φ(β) − Φ(α); across 0:
+    1 − Φ(α) − Φ(−β). No term near 1 is subtracted, so a far-tail interval keeps its digits.
+    """
+    lower = special.ndtr(alpha)
+    upper = special.ndtr(-beta)
+    return np.where(
+        beta <= 0.0,
+        special.ndtr(beta) - lower,
+        np.where(alpha >= 0.0, special.ndtr(-alpha) - upper, (1.0 - lower) - upper),
+    )
+
+
 def truncated_normal_ppf(u: Any, mean: Any, sd: Any, low: Any, high: Any) -> Any:
     r"""Quantile of N(m, s) truncated to [a, b]: the inverse of :func:`truncated_normal_cdf`.
 
+    .. math::
+        z = \begin{cases}
+        \Phi^{-1}\bigl(\Phi(\alpha) + u Z\bigr) & \text{if } \Phi(\alpha) + u Z \le \tfrac12\\
+        -\Phi^{-1}\bigl(\Phi(-\beta) + (1 - u) Z\bigr) & \text{otherwise}
+        \end{cases},\qquad Z = \Phi(\beta) - \Phi(\alpha),\quad x = m + s z
+
+    Each point is inverted from the side of the law where its probability is at most ½, the
+    mass below it (lower half) or above it (upper half), so Φ⁻¹ never receives a probability
+    near 1 and an upper-tail draw keeps its digits; Z comes from :func:`_normal_mass`. For
+    u ≥ ¼ the 1 − u is exact. z is clipped to [α, β] against the last bit. One Φ⁻¹ a point
+    (scipy's ``ndtri``), about 5 times faster than ``scipy.stats.truncnorm.ppf``. Against a
+    60-digit mpmath inversion at 10,230 points (limits to 35 sd, u from 2⁻⁵³ to 1 − 2⁻⁵³) it
+    is within 3.4 ε·max(1, |z|). scipy 1.17's ``truncnorm.ppf`` is as close at most points,
+    but 2e-12 off at u = 1 − 10⁻⁶ for a law cut just below 0 (−0.1…8 sd), 0.25 % off at
+    u = 1 − 2⁻⁵³ and infinite for some (``tests/studies/test_laws.py`` holds the reference).
+    A law with less mass than ``_SMALLEST_MASS`` (both limits beyond about 35.8 sd on one
+    side, where u Z could be subnormal) is left to ``truncnorm.ppf``.
+
     >>> round(float(truncated_normal_ppf(0.5, 0.0, 1.0, -1.0, 1.0)), 12)
     0.0
+
+    One-sided, u = ½: the median of the half-normal above 0 is Φ⁻¹(¾) = 0.674490
+
+    >>> round(float(truncated_normal_ppf(0.5, 0.0, 1.0, 0.0, math.inf)), 6)
+    0.67449
     """
     a, b = _truncated(mean, sd, low, high)
-    return stats.truncnorm.ppf(u, a, b, loc=mean, scale=sd)
+    mass = _normal_mass(a, b)
+    if np.all(mass > _SMALLEST_MASS):
+        u = np.asarray(u, dtype=float)
+        below = special.ndtr(a) + u * mass
+        lower_half = below <= 0.5
+        z = special.ndtri(np.where(lower_half, below, special.ndtr(-b) + (1.0 - u) * mass))
+        z = np.where(lower_half, z, -z)
+    else:
+        z = stats.truncnorm.ppf(u, a, b)
+    return mean + sd * np.clip(z, a, b)
 
 
 def truncated_normal_pdf(x: Any, mean: Any, sd: Any, low: Any, high: Any) -> Any:

@@ -105,9 +105,12 @@ def test_the_old_laws_draw_what_they_drew_before() -> None:
     )
     u = np.clip(np.random.default_rng(11).random((500, 2)), 1e-12, 1 - 1e-12)
     tri = stats.triang.ppf(u[:, 0], 0.25, loc=0.0, scale=0.2)
-    nor = stats.truncnorm.ppf(u[:, 1], (0.7 - 0.85) / 0.05, (1.0 - 0.85) / 0.05, 0.85, 0.05)
     assert np.array_equal(p.columns["flank_friction"], np.clip(tri, 0.0, 0.2))
-    assert np.array_equal(p.columns["load_factor"], np.clip(nor, 0.7, 1.0))
+    # the truncated normal is inverted by our own ppf now: the same points to its last bits
+    nor = stats.truncnorm.ppf(u[:, 1], (0.7 - 0.85) / 0.05, (1.0 - 0.85) / 0.05, 0.85, 0.05)
+    ours = laws.truncated_normal_ppf(u[:, 1], 0.85, 0.05, 0.7, 1.0)
+    assert np.array_equal(p.columns["load_factor"], np.clip(ours, 0.7, 1.0))
+    assert np.allclose(ours, nor, rtol=1e-14, atol=0.0)
     q = plan(
         CLUTCH,
         Study(variables=(Variable("flank_friction", low=0.0, high=0.2),), base=BASE, seed=2),
@@ -225,3 +228,80 @@ def test_a_correlated_lognormal_study_over_http(monkeypatch: pytest.MonkeyPatch)
         refused = client.post("/api/v1/clutch/ball/study", json=bad)
         assert refused.status_code == 422, refused.text
         assert "correlations" in refused.text
+
+
+#: (α, β, u, z): the standard normal truncated to [α, β], its quantile z at u, from mpmath at
+#: 60 digits (findroot on Φ(z) − Φ(α) = u (Φ(β) − Φ(α)), or on the upper tail's 1 − Φ(z)
+#: where the point lies above the median), rounded to double. 0.6744897501960817 is the
+#: half-normal's median Φ⁻¹(¾) of the printed tables.
+TRUNCATED_NORMAL_QUANTILES = (
+    (-1.5, 4.0, 0.001, -1.492833695019277),
+    (-1.5, 4.0, 0.5, 0.08378865289341855),
+    (-1.5, 4.0, 0.999, 3.100849295091483),
+    (0.0, math.inf, 0.5, 0.6744897501960817),
+    (0.0, math.inf, 1e-12, 1.2533141373155002e-12),
+    (0.0, math.inf, 0.999999999999, 7.130509892879273),
+    (-math.inf, math.inf, 1e-12, -7.034483825301132),
+    (-math.inf, math.inf, 0.999999999999, 7.0344869100478356),
+    (-math.inf, math.inf, 0.3, -0.5244005127080408),
+    # u = 1 − 2⁻⁵³: scipy 1.17's truncnorm.ppf gives 8.2095 (0.25 % low) and inf here
+    (-1.0, math.inf, 0.9999999999999999, 8.230254527416001),
+    (-0.1, 20.0, 0.9999999999999999, 8.283242630209834),
+    (3.0, math.inf, 0.5, 3.2051549205989334),
+    (8.0, 9.0, 0.25, 8.035339621905017),
+    (20.0, 35.0, 0.9, 20.114517324364595),
+    (-35.0, -20.0, 0.1, -20.114517324364595),
+    (-math.inf, -8.0, 1e-12, -10.893038042514783),
+    (-math.inf, -8.0, 0.999999, -8.000000123132024),
+    (5.0, 5.000001, 0.5, 5.000000499999375),
+    (-3.0, -1.0, 0.75, -1.1783481738218142),
+    (0.5, 1.0, 0.125, 0.5539625055642615),
+    (-0.1, 0.0, 1.1102230246251565e-16, -0.09999999999999999),
+    (-8.0, 8.0, 0.5, 0.0),
+)
+
+
+@pytest.mark.parametrize(("alpha", "beta", "u", "z"), TRUNCATED_NORMAL_QUANTILES)
+def test_the_truncated_normal_quantile_against_60_digits(
+    alpha: float, beta: float, u: float, z: float
+) -> None:
+    got = float(laws.truncated_normal_ppf(u, 0.0, 1.0, alpha, beta))
+    assert abs(got - z) <= 4 * np.finfo(float).eps * max(1.0, abs(z)), (got, z)
+    # scaled and shifted: x = m + s z
+    x = float(laws.truncated_normal_ppf(u, 0.12, 0.02, 0.12 + 0.02 * alpha, 0.12 + 0.02 * beta))
+    assert x == pytest.approx(0.12 + 0.02 * z, rel=1e-14, abs=1e-17)
+
+
+def test_the_truncated_normal_quantile_against_scipy_inside_and_in_the_tails() -> None:
+    rng = np.random.default_rng(5)
+    u = np.concatenate([rng.random(5000), 10 ** -rng.uniform(0, 12, 500)])
+    u = np.clip(np.concatenate([u, 1 - 10 ** -rng.uniform(6, 12, 500)]), 1e-12, 1 - 1e-6)
+    limits = (-math.inf, -30.0, -8.0, -3.0, -1.0, -0.1, 0.0, 0.5, 3.0, 8.0, 30.0, math.inf)
+    for alpha in limits:
+        for beta in limits:
+            if not alpha < beta:
+                continue
+            z = laws.truncated_normal_ppf(u, 0.0, 1.0, alpha, beta)
+            ref = stats.truncnorm.ppf(u, alpha, beta)
+            # scipy's own error reaches 2e-12 relative where the point lies above the median
+            # of a law cut below 0 (-0.1…8 at u = 1 − 1e-6, against mpmath)
+            assert np.all(np.abs(z - ref) <= 5e-12 * np.maximum(1.0, np.abs(ref))), (alpha, beta)
+            assert np.all((z >= alpha) & (z <= beta))
+            assert np.all(np.diff(z[np.argsort(u)]) >= 0.0), (alpha, beta)  # monotone in u
+
+
+def test_the_truncated_normal_quantile_is_its_own_mirror() -> None:
+    # X on [α, β] at u is −X on [−β, −α] at 1 − u (u dyadic, so 1 − u is exact)
+    u = np.arange(1, 64) / 64.0
+    for alpha, beta in ((-1.5, 4.0), (0.0, math.inf), (3.0, 9.0), (-30.0, -29.0)):
+        z = laws.truncated_normal_ppf(u, 0.0, 1.0, alpha, beta)
+        mirror = laws.truncated_normal_ppf(1.0 - u, 0.0, 1.0, -beta, -alpha)
+        assert np.allclose(z, -mirror, rtol=4 * np.finfo(float).eps, atol=1e-300)
+
+
+def test_a_truncated_normal_with_a_subnormal_share_is_left_to_scipy() -> None:
+    # both limits beyond 35.8 sd: u Z could be subnormal, so scipy's log-space ppf answers
+    u = np.array([1e-12, 0.5, 1 - 1e-12])
+    z = laws.truncated_normal_ppf(u, 0.0, 1.0, 36.0, 36.5)
+    assert np.array_equal(z, np.clip(stats.truncnorm.ppf(u, 36.0, 36.5), 36.0, 36.5))
+    assert laws._normal_mass(36.0, 36.5) < laws._SMALLEST_MASS < laws._normal_mass(35.0, 36.0)
