@@ -266,7 +266,8 @@ def test_the_truncated_normal_quantile_against_60_digits(
     alpha: float, beta: float, u: float, z: float
 ) -> None:
     got = float(laws.truncated_normal_ppf(u, 0.0, 1.0, alpha, beta))
-    assert abs(got - z) <= 4 * np.finfo(float).eps * max(1.0, abs(z)), (got, z)
+    # scipy's ndtri alone is up to 3.7 ε off near p = 0.14; the worst found is 4.3 ε
+    assert abs(got - z) <= 5 * np.finfo(float).eps * max(1.0, abs(z)), (got, z)
     # scaled and shifted: x = m + s z
     x = float(laws.truncated_normal_ppf(u, 0.12, 0.02, 0.12 + 0.02 * alpha, 0.12 + 0.02 * beta))
     assert x == pytest.approx(0.12 + 0.02 * z, rel=1e-14, abs=1e-17)
@@ -303,5 +304,17 @@ def test_a_truncated_normal_with_a_subnormal_share_is_left_to_scipy() -> None:
     # both limits beyond 35.8 sd: u Z could be subnormal, so scipy's log-space ppf answers
     u = np.array([1e-12, 0.5, 1 - 1e-12])
     z = laws.truncated_normal_ppf(u, 0.0, 1.0, 36.0, 36.5)
-    assert np.array_equal(z, np.clip(stats.truncnorm.ppf(u, 36.0, 36.5), 36.0, 36.5))
+    assert np.allclose(z, stats.truncnorm.ppf(u, 36.0, 36.5), rtol=1e-15, atol=0.0)
     assert laws._normal_mass(36.0, 36.5) < laws._SMALLEST_MASS < laws._normal_mass(35.0, 36.0)
+
+
+@pytest.mark.parametrize(
+    ("alpha", "beta"),
+    [
+        (20.082358186426227, 20.08235821335025),  # ndtri's last bit lands 3.6e-15 beyond β
+        (36.56435402478574, 36.56435439035847),  # scipy's (the fallback's), 7.1e-15 beyond
+    ],
+)
+def test_a_quantile_stays_inside_a_narrow_law(alpha: float, beta: float) -> None:
+    z = laws.truncated_normal_ppf(np.array([1e-12, 0.5, 1 - 1e-12]), 0.0, 1.0, alpha, beta)
+    assert np.all((z >= alpha) & (z <= beta)), z - alpha
