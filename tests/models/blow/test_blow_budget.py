@@ -40,7 +40,7 @@ def test_a_light_nut_needing_millions_of_steps_runs_inside_the_time_budget() -> 
     allows = 10 * LIGHT_NUT_STEPS * _COST.seconds / TIME_SHARE
     start = time.perf_counter()
     r = run(BLOW, LIGHT_NUT, fidelity="simulation", max_steps=1_000_000, budget_s=allows)
-    assert time.perf_counter() - start < allows
+    assert time.perf_counter() - start < 5.0  # about 0.2 s: the budget is not what it takes
     assert 1_000_000 < _steps(r.notes) <= LIGHT_NUT_STEPS, "more steps than the old fixed budget"
     assert r.results["blows_to_target"] == 12
     # the energy rung agrees on the blows within its own estimate's reach (a light nut is

@@ -364,7 +364,7 @@ def test_a_design_needing_millions_of_steps_runs_when_the_time_budget_allows():
     assert r.rung == "simulation"
     steps = int(next(n for n in r.notes if n.startswith("simulation:")).split("(")[1].split()[0])
     assert 2_000_000 < steps <= STIFF_STEPS, "more steps than the old fixed budget of 1e6"
-    assert elapsed < allows
+    assert elapsed < 5.0  # 0.2 to 0.4 s: the budget is not what it takes
     # the same design with a budget its steps do not fit in is declined up front, at once
     # (a 422 that says why when the simulation is asked by name; under auto the declared
     # fallback answers and the runner's note names the budget in steps)
