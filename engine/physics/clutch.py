@@ -599,13 +599,24 @@ def torque_limit(
     share = torque_sharing(arrangement, ball_count, load_factor)
     return _where_pushing(
         push,
-        lambda p: (
-            np.asarray(share)
-            * np.asarray(ball_circle_diameter)
-            * np.asarray(spring_force)
-            / (2.0 * p)
+        lambda p: _torque_of_push(
+            np.asarray(share), np.asarray(ball_circle_diameter), np.asarray(spring_force), p
         ),
     )
+
+
+def _torque_of_push(sharing: Any, ball_circle_diameter: Any, spring_force: Any, push: Any) -> Any:
+    """T = s D0 F / (2 p) [001, eq. 3], for :func:`torque_limit` and
+    :func:`torque_against_lift` (the same numbers at zero lift).
+
+    The factors other than the force first, (s D0 / (2 p)) F: where only the force
+    varies (a spring swept, the groove fixed) that is one product over the points, not
+    a product and a division. It may differ from s D0 F / (2 p) in the last bit.
+
+    >>> _torque_of_push(1.0, 0.05, 22.4746, 1.0)
+    0.561865
+    """
+    return sharing * ball_circle_diameter / (2.0 * push) * spring_force
 
 
 def spring_force_for_torque(
@@ -1341,7 +1352,7 @@ def torque_against_lift(
     """
     push = combined_push_factor(contact_angle, flank_friction, driving_groove_angle, construction)
     return _out(
-        sharing * ball_circle_diameter * np.asarray(spring_force) / (2.0 * np.asarray(push))
+        _torque_of_push(sharing, ball_circle_diameter, np.asarray(spring_force), np.asarray(push))
     )
 
 
