@@ -1049,15 +1049,20 @@ def minimum_assembly_preload(
 
     Notes
     -----
-    VDI 2230-1:2015 step R5, eq. (R5/1).
+    VDI 2230-1:2015 step R5, eq. (R5/1). Summed as (1 − Φ_n) F_A,max + (F_K,erf + F_Z +
+    max(ΔF_th, 0)): where F_A alone varies (a sweep of the working load) the terms that do
+    not vary are one number, and the points take one product and one sum, in place.
 
     Examples
     --------
     >>> minimum_assembly_preload(10e3, 8e3, 0.1, 2.6e3, 0.0)
     19800.0
     """
-    required = _add_to(clamp_load_reduction(load_factor_n, working_load_max), required_clamp_force)
-    return _add_to(required, preload_losses(embedding_force, thermal_loss))
+    fixed = _add_to(preload_losses(embedding_force, thermal_loss), required_clamp_force)
+    reduction = clamp_load_reduction(load_factor_n, working_load_max)
+    if isinstance(reduction, np.ndarray):
+        return _add_to(reduction, fixed)
+    return _add_to(fixed, reduction)
 
 
 def tightening_torque(
