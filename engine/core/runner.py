@@ -1033,11 +1033,22 @@ def _sweep_column(param: Param, values: Sequence[float]) -> tuple[np.ndarray, fl
     the largest value alone (a NaN makes both NaN); only otherwise is each value tested.
     """
     # a copy, the sweep's own: a named rung's estimates are made from these values when
-    # first read, and the caller may have changed its array by then
-    arr = np.array(values, dtype=float)
-    if arr.ndim != 1 or arr.size == 0:
-        raise InputOutOfRange(f"a sweep of {param.name} needs at least one value", field="num")
-    low, high = float(arr.min()), float(arr.max())
+    # first read, and the caller may have changed its array by then; a long float array is
+    # copied with its ends read on the way (one pass over the values, not three)
+    if (
+        isinstance(values, np.ndarray)
+        and values.dtype == np.float64
+        and values.ndim == 1
+        and values.size > points.FINITE_BLOCK
+    ):
+        arr, low, high = points.copy_with_ends(values)
+    else:
+        arr = np.array(values, dtype=float)
+        if arr.ndim != 1 or arr.size == 0:
+            raise InputOutOfRange(
+                f"a sweep of {param.name} needs at least one value", field="num"
+            )
+        low, high = float(arr.min()), float(arr.max())
     inside = bool(points.in_range(param, np.array([low, high])).all())
     if not inside or param.kind == "int":
         bad = ~points.in_range(param, arr)
