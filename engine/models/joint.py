@@ -845,7 +845,8 @@ def _least_clamp_force(f_kr: Callable[[Any], Any], loads: _Extremes) -> Any:
     if bool(np.all(bounds >= 0.0)):
         return bounds
     falls, rises = bounds[1] <= bounds[0], bounds[1] > bounds[0]
-    ends = [end for end, read in ((loads.low(), not falls), (loads.high(), not rises)) if read]
+    # each end read only where it is needed: each is a pass over the points
+    ends = ([] if falls else [loads.low()]) + ([] if rises else [loads.high()])
     if any(end != end for end in ends):
         return f_kr(loads.points())
     return f_kr(np.array(ends))
