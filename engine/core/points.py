@@ -145,6 +145,8 @@ class Vector:
     warnings: list[str]
     #: Per check name, int8 per point: 1 passes, 0 fails, -1 not reported there.
     checks: dict[str, np.ndarray]
+    #: The columns the model found finite at every point (:attr:`Result.finite`).
+    finite: frozenset[str] = frozenset()
 
 
 def vector(
@@ -215,7 +217,8 @@ def vector(
         codes = arr.astype(np.int8) if arr.dtype == bool else np.asarray(arr, dtype=np.int8)
         checks[name] = np.broadcast_to(codes, (n,)).copy()
     notes = [plain(n) for n in result.notes]
-    return Vector(values, computed, notes, [plain(w) for w in result.warnings], checks)
+    warnings = [plain(w) for w in result.warnings]
+    return Vector(values, computed, notes, warnings, checks, result.finite & computed)
 
 
 def scalar_gives(

@@ -816,7 +816,8 @@ def sweep(
             column = vec.values[name]
             computed[name] = None
             if column.dtype.kind == "f" and not every_finite:
-                if points.all_finite(column):  # no NaN in it: every point has a value
+                # no NaN in it (the model tested it, or a pass here): every point has a value
+                if name in vec.finite or points.all_finite(column):
                     every_finite = True
                 else:
                     finite = np.isfinite(column)

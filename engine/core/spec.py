@@ -545,6 +545,10 @@ class Result:
     #: as a bool array (or int8: 1 passes, 0 fails, -1 does not apply at that point).
     #: The same names and verdicts the scalar compute gives in ``checks`` point by point.
     check_arrays: dict[str, Any] = field(default_factory=dict)
+    #: Array paths only: the float columns of ``values`` the path has tested and found to
+    #: hold no NaN nor inf at any point; a caller need not test them again (a pass over
+    #: the points each).
+    finite: frozenset[str] = frozenset()
 
 
 @dataclass(frozen=True)

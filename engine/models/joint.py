@@ -2777,7 +2777,7 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "residual_clamp_force_min and slip_safety are 0 there"
         )
 
-    values: dict[str, Any] = _output_columns(
+    values, finite = _output_columns(
         s,
         [name for name in _SCALARS if name in ctx.outputs],
         n,
@@ -2806,6 +2806,7 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         notes=notes,
         warnings=warnings,
         check_arrays=reported,
+        finite=finite,
     )
 
 
@@ -2820,13 +2821,14 @@ def _output_columns(
     n: int,
     refused: np.ndarray | None,
     foreign: tuple[Any, ...],
-) -> dict[str, np.ndarray]:
+) -> tuple[dict[str, np.ndarray], frozenset[str]]:
     """The ``asked`` outputs of the solved joint ``s`` as float columns of ``n`` points: null
     (NaN) where not finite, as the runner makes a non-finite value, and at the ``refused``
     points. From :data:`IN_PLACE_FROM` points on, an array the procedure made for this
     request is written in place; the rest (a number, an input or bolt value in ``foreign``,
     a column given already) is copied into one table, each a row, tested for a non-finite
-    value in one pass."""
+    value in one pass. With the columns, the names of those found finite at every point
+    (none where a point is refused): the caller need not test them again."""
     made: dict[str, np.ndarray] = {}
     if n >= IN_PLACE_FROM:
         taken = {id(v) for v in foreign if isinstance(v, np.ndarray)}
@@ -2844,18 +2846,23 @@ def _output_columns(
                 taken.add(id(value))
     rest = [name for name in asked if name not in made]
     columns = [*made.values()]
+    held = [[name] for name in made]  # the names each column holds
     if rest:
         table = np.empty((len(rest), n))
         for row, name in zip(table, rest, strict=True):
             row[...] = s[name]
         columns.append(table)
-    for column in columns:
+        held.append(rest)
+    finite: list[str] = []
+    for names, column in zip(held, columns, strict=True):
         if not all_finite(column):  # a NaN or inf: one pass more to find them
             column[~np.isfinite(column)] = np.nan
+        elif refused is None:
+            finite += names
         if refused is not None:
             column[..., refused] = np.nan
     given = {**made, **(dict(zip(rest, table, strict=True)) if rest else {})}
-    return {name: given[name] for name in asked}
+    return {name: given[name] for name in asked}, frozenset(finite)
 
 
 def _scalar_hooks(x: Mapping[str, Any], solution: JointSolution) -> tuple[list[Check], list[str]]:

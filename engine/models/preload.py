@@ -603,9 +603,10 @@ def _finish(
     n: int,
     wanted: frozenset[str],
     borrowed: Iterable[Any] = (),
-) -> dict[str, Any]:
+) -> tuple[dict[str, Any], frozenset[str]]:
     """The array path's ``wanted`` values: NaN (floats) or None (flags, texts) where a point
-    is refused.
+    is refused; with them, the names of the float columns tested here and found finite at
+    every point (:attr:`Result.finite`: the runner need not test them again).
 
     Non-finite floats are NaN too: the scalar path returns them as null. A value not asked
     for is left out: each costs a pass over the points. A float column the step made for
@@ -615,6 +616,7 @@ def _finish(
     two columns, and no column and an input, share memory.
     """
     out: dict[str, Any] = {}
+    finite: list[str] = []
     every = bool(ok.all())
     taken = {id(v) for v in borrowed if isinstance(v, np.ndarray)}
     for name, v in values.items():
@@ -633,10 +635,11 @@ def _finish(
         if every and _own_column(arr, n, taken) and all_finite(arr):
             out[name] = arr
             taken.add(id(arr))
+            finite.append(name)
             continue
         arr = np.broadcast_to(arr.astype(float, copy=False), (n,))
         out[name] = np.where(ok & np.isfinite(arr), arr, np.nan)
-    return out
+    return out, frozenset(finite)
 
 
 def _borrowed(x: Mapping[str, Any], bolt: BoltArrays) -> list[Any]:
@@ -928,13 +931,15 @@ def _tightening_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
         _bought_part_verdicts(x, bolt, force, total, values, verdicts)
     else:
         _bought_part_refusals(x, bolt)
+    columns, finite = _finish(values, bolt.ok, n, ctx.outputs, _borrowed(x, bolt))
     return Result(
-        values=_finish(values, bolt.ok, n, ctx.outputs, _borrowed(x, bolt)),
+        values=columns,
         rung=ctx.rung,
         error_estimate=None,
         notes=notes,
         warnings=warnings,
         check_arrays=_verdicts(verdicts, bolt.ok, n) if ctx.checks else {},
+        finite=finite,
     )
 
 
@@ -2095,13 +2100,15 @@ def _control_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "bearing_friction_max)",
             field="thread_friction_min",
         )
+    columns, finite = _finish(values, ok, n, ctx.outputs, _borrowed(x, bolt))
     return Result(
-        values=_finish(values, ok, n, ctx.outputs, _borrowed(x, bolt)),
+        values=columns,
         rung=ctx.rung,
         error_estimate=None,
         notes=notes,
         warnings=warnings,
         check_arrays=_verdicts(verdicts, ok, n) if ctx.checks else {},
+        finite=finite,
     )
 
 

@@ -593,9 +593,19 @@ def test_the_columns_null_exactly_the_values_not_finite(
         "fixed": 5.0,
     }
     refused = np.array([False, False, False, True])
-    got = joint_model._output_columns(s, ["large", "odd", "fixed"], 4, refused, ())
+    got, finite = joint_model._output_columns(s, ["large", "odd", "fixed"], 4, refused, ())
     assert got["large"][:3].tolist() == [1e308, 1e308, 2.0]
     assert got["odd"][0] == 1.0
     assert np.isnan(got["odd"][1:]).all()
     assert got["fixed"][:3].tolist() == [5.0, 5.0, 5.0]
     assert np.isnan([got["large"][3], got["fixed"][3]]).all()
+    assert finite == frozenset()  # a refused point is null in every column
+    # no point refused: the columns found finite at every point are named as such, never
+    # one that is not (the copied table is tested as one: "odd" leaves every row of it out)
+    s["large"] = np.array([1e308, 1e308, 2.0, 3.0])
+    s["odd"] = np.array([1.0, np.inf, -np.inf, np.nan])
+    got, finite = joint_model._output_columns(s, ["large", "odd", "fixed"], 4, None, ())
+    assert finite == ({"large", "fixed"} if in_place_from == 1 else frozenset())
+    assert got["large"].tolist() == [1e308, 1e308, 2.0, 3.0]
+    assert got["fixed"].tolist() == [5.0] * 4
+    assert got["odd"][0] == 1.0 and np.isnan(got["odd"][1:]).all()
