@@ -56,6 +56,49 @@ def test_an_out_of_range_value_anywhere_is_refused_naming_the_field(bad: float) 
     assert info.value.field == "diameter"
 
 
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -0.1, 0.0, 20.0])
+@pytest.mark.parametrize("where", [0, 2, 3, 9])
+def test_a_long_array_is_refused_at_a_bad_value_anywhere_and_kept_as_the_sweeps_own(
+    bad: float, where: int, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A float array longer than a block is copied with its ends read block by block
+    (blocks of 3 here: a bad value first, at a block's edge or last is refused); a good one
+    is the sweep's own copy, equal to the caller's and unchanged when the caller's changes."""
+    monkeypatch.setattr(points, "FINITE_BLOCK", 3)
+    values = np.linspace(0.1, 0.3, 10)
+    bad_values = values.copy()
+    bad_values[where] = bad
+    with pytest.raises(InputOutOfRange) as info:
+        engine.sweep(TOY, BASE, "diameter", bad_values, fidelity="exact")
+    assert info.value.field == "diameter"
+    s = engine.sweep(TOY, BASE, "diameter", values, fidelity="exact", outputs=["energy"])
+    assert s.value_array.tolist() == values.tolist()
+    assert not np.shares_memory(s.value_array, values)
+    values[where] = bad  # the caller reuses its array
+    assert s.value_array.tolist() == np.linspace(0.1, 0.3, 10).tolist()
+    assert s.results["energy"] == pytest.approx([0.5 * d**2 / 8 * 1e4 for d in s.values])
+
+
+@pytest.mark.parametrize("block", [1, 3, 1 << 16])
+def test_copy_with_ends_equals_a_copy_and_its_min_and_max(
+    block: int, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The blocked copy equals the values, its ends their min() and max() (NaN where a value
+    is NaN, at the first, a block's edge or the last place; ±inf kept)."""
+    monkeypatch.setattr(points, "FINITE_BLOCK", block)
+    rng = np.random.default_rng(11)
+    cases = [rng.normal(size=10), np.array([-0.0, 0.0]), np.array([5.0])]
+    for bad in (np.nan, np.inf, -np.inf):
+        for where in (0, 2, 3, 9):
+            column = rng.normal(size=10)
+            column[where] = bad
+            cases.append(column)
+    for column in cases:
+        got, low, high = points.copy_with_ends(column)
+        assert np.array_equal(got, column, equal_nan=True) and not np.shares_memory(got, column)
+        assert np.array_equal([low, high], [column.min(), column.max()], equal_nan=True)
+
+
 def test_the_recommended_range_warning_counts_the_points_outside() -> None:
     # the toy's speed: recommended 0…500 rad/s, allowed up to 1e4
     inside = engine.sweep(TOY, BASE, "speed", [0.0, 500.0], fidelity="exact")
