@@ -1358,13 +1358,11 @@ def _solve(
     f_s_max = jt.max_bolt_force(fm_max, add_load, th_top)
     read_stress = need("working_stress", "yield_safety")
     force_ranges: tuple[Callable[[], Any], ...] = ()
+
+    def force_at(loads: Callable[[], Any]) -> Callable[[], Any]:
+        return lambda: jt.max_bolt_force(fm_max, jt.additional_bolt_load(phi_n, loads()), th_top)
+
     if f_a_alone and not read_stress:  # F_S,max over F_A's declared range, else the points'
-
-        def force_at(loads: Callable[[], Any]) -> Callable[[], Any]:
-            return lambda: jt.max_bolt_force(
-                fm_max, jt.additional_bolt_load(phi_n, loads()), th_top
-            )
-
         force_ranges = (
             force_at(f_a_range.declared),
             force_at(lambda: np.array([f_a_range.low(), f_a_range.high()])),
@@ -1447,6 +1445,25 @@ def _solve(
         f_kr_raw = _least_clamp_force(
             lambda loads: jt.residual_clamp_force(fm_min, loads, phi_n, f_z, th_loss), f_a_range
         )
+    # F_A swept alone, F_K,erf one number: F_SA, F_PA, F_M,min and F_S,max are monotone in
+    # F_A (every rounding too), so where they are finite at both ends of F_A's declared range
+    # (no point lies outside it) they are finite at every point, told without a pass over them
+    finite: frozenset[str] = frozenset()
+    if f_a_alone and not isinstance(f_kerf, np.ndarray) and outputs is not None:
+        ends = f_a_range.declared
+        at_ends = {
+            "additional_bolt_load": lambda: jt.additional_bolt_load(phi_n, ends()),
+            "clamp_load_reduction": lambda: jt.clamp_load_reduction(phi_n, ends()),
+            "required_preload_min": lambda: jt.minimum_assembly_preload(
+                f_kerf, ends(), phi_n, f_z, th_loss
+            ),
+            "max_bolt_force": force_at(ends),
+        }
+        finite = frozenset(
+            name
+            for name, value in at_ends.items()
+            if name in outputs and bool(np.isfinite(value()).all())
+        )
 
     return {
         "tightening_factor": alpha_a,
@@ -1522,6 +1539,7 @@ def _solve(
         "_m_u": m_u,
         "_f_kr_raw": f_kr_raw,
         "_f_kr_ends": f_kr_ends,
+        "_finite": finite,
         "_nut": (nut, f_nut, f_mzul_bolt, nut_limits),
     }
 
@@ -2783,6 +2801,7 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         n,
         refused if any_refused else None,
         (*x.values(), *b.values()),
+        s["_finite"],
     )
     verdicts: dict[str, Any] = {}
     if ctx.checks:  # a sweep reads none of them
@@ -2821,14 +2840,16 @@ def _output_columns(
     n: int,
     refused: np.ndarray | None,
     foreign: tuple[Any, ...],
+    finite: frozenset[str] = frozenset(),
 ) -> tuple[dict[str, np.ndarray], frozenset[str]]:
     """The ``asked`` outputs of the solved joint ``s`` as float columns of ``n`` points: null
     (NaN) where not finite, as the runner makes a non-finite value, and at the ``refused``
     points. From :data:`IN_PLACE_FROM` points on, an array the procedure made for this
     request is written in place; the rest (a number, an input or bolt value in ``foreign``,
     a column given already) is copied into one table, each a row, tested for a non-finite
-    value in one pass. With the columns, the names of those found finite at every point
-    (none where a point is refused): the caller need not test them again."""
+    value in one pass; a column named in ``finite`` (the procedure knows it finite at every
+    point) is not tested. With the columns, the names of those finite at every point (none
+    where a point is refused): the caller need not test them again."""
     made: dict[str, np.ndarray] = {}
     if n >= IN_PLACE_FROM:
         taken = {id(v) for v in foreign if isinstance(v, np.ndarray)}
@@ -2853,16 +2874,16 @@ def _output_columns(
             row[...] = s[name]
         columns.append(table)
         held.append(rest)
-    finite: list[str] = []
+    found: list[str] = []
     for names, column in zip(held, columns, strict=True):
-        if not all_finite(column):  # a NaN or inf: one pass more to find them
-            column[~np.isfinite(column)] = np.nan
+        if not (finite.issuperset(names) or all_finite(column)):
+            column[~np.isfinite(column)] = np.nan  # a NaN or inf: one pass more to find them
         elif refused is None:
-            finite += names
+            found += names
         if refused is not None:
             column[..., refused] = np.nan
     given = {**made, **(dict(zip(rest, table, strict=True)) if rest else {})}
-    return {name: given[name] for name in asked}, frozenset(finite)
+    return {name: given[name] for name in asked}, frozenset(found)
 
 
 def _scalar_hooks(x: Mapping[str, Any], solution: JointSolution) -> tuple[list[Check], list[str]]:

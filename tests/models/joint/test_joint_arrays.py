@@ -464,6 +464,61 @@ def test_scattered_bolt_values_with_catalogue_parts(base):
     _assert_matches_single_runs(base, columns)
 
 
+@pytest.mark.parametrize(
+    ("given", "varied", "named"),
+    [
+        # F_A swept alone: F_SA, F_PA, F_M,min and F_S,max finite at F_A's declared ends
+        (
+            {},
+            {},
+            {
+                "additional_bolt_load",
+                "clamp_load_reduction",
+                "required_preload_min",
+                "max_bolt_force",
+            },
+        ),
+        # F_A below F_A,min refused: null there, so no column is finite at every point
+        ({"working_load_min": 5e3}, {}, set()),
+        # F_K,erf varies with F_A: tested point by point, every value finite
+        (
+            {},
+            {"transverse_load": np.linspace(0.0, 9e3, 9)},
+            {
+                "additional_bolt_load",
+                "clamp_load_reduction",
+                "required_preload_min",
+                "max_bolt_force",
+            },
+        ),
+    ],
+)
+def test_the_columns_named_finite_are_finite_at_every_point(
+    given: dict[str, float], varied: dict[str, Any], named: set[str]
+) -> None:
+    """The array path names the columns finite at every point (Result.finite, what the
+    sweep then does not test again), told from F_A's declared ends where F_A is swept alone
+    or from the points; each named column is finite and equals single runs, point by point."""
+    asked = (*FLOOR_OUTPUTS, "clamp_load_reduction")
+    x, _ = JOINT.validate({**JOINT.examples[0], **given})
+    loads = np.linspace(0.0, 20e3, 9)
+    ctx = RunContext(rung="closed_form", outputs=frozenset(asked), tolerance=0.01, checks=False)
+    got = joint_model._vectorized({**x, "working_load": loads, **varied}, ctx)
+    assert got.finite == named
+    for name in named:
+        assert np.isfinite(got.values[name]).all(), name
+    for j in (0, 4, 8):
+        point = {**JOINT.examples[0], **given, "working_load": float(loads[j])}
+        point.update({k: float(v[j]) for k, v in varied.items()})
+        try:
+            alone = run(JOINT, point, outputs=asked).results
+        except EngineError:
+            assert all(math.isnan(got.values[name][j]) for name in asked)
+            continue
+        for name in asked:
+            assert got.values[name][j] == alone[name], (name, j)
+
+
 def test_a_refusal_is_the_same_line_alone_and_among_many():
     """One procedure refuses: alone with the field and the range, among many as a masked
     point; where every point is refused the array path says why (the first point's reason)."""
