@@ -795,6 +795,7 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
     if any(x[name] is None for name in needed):
         return Result(values={}, rung=ctx.rung, error_estimate=None)
     wire = x["spring_wire_diameter"] if helical else None
+    finite: frozenset[str] = frozenset()
     with np.errstate(all="ignore"):
         ok, refusals = _feasible(x, wire)
         spring = asbuilt.Spring(x)
@@ -811,6 +812,7 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
             # a caller reading no checks (a sweep) gets the outputs it asked for alone
             wanted = None if ctx.checks else ctx.outputs
             values = _forward_values(x, as_built=False, forces=forces, wanted=wanted)
+            finite = _finite_over_deflection(x, forces, wanted) if helical else frozenset()
             if ctx.checks or ctx.wants("self_locking_margin"):
                 values["self_locking_margin"] = asbuilt.margin(x)
             skip = _AS_BUILT
@@ -830,6 +832,44 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
             *refusals,
         ],
         check_arrays=check_arrays,
+        finite=finite if bool(np.all(ok)) else frozenset(),
+    )
+
+
+#: Points from which the paper's outputs over a swept deflection are told finite from the
+#: deflection's declared ends (:func:`_finite_over_deflection`): below, a pass over the points
+#: costs less than the outputs at the two ends.
+FINITE_ENDS_FROM = 8192
+
+
+def _finite_over_deflection(
+    x: Mapping[str, Any], forces: bool, wanted: frozenset[str] | None
+) -> frozenset[str]:
+    """The paper's outputs (:func:`_forward_values` without the characteristic) finite at
+    every point, told from the ends of spring_deflection's declared range where the
+    deflection alone varies over :data:`FINITE_ENDS_FROM` points or more (empty otherwise).
+
+    With a helical spring each of them is the deflection times factors fixed by the other
+    inputs (F = c Δ [001, eq. 2], T ∝ F [eq. 3], the ball forces ∝ T [eq. 1], τ ∝ F) or does
+    not depend on it: monotone in Δ, every rounding too, so finite at both ends of the range
+    no point lies outside, they are finite at every point, told without a pass over them.
+    """
+    deflection = x["spring_deflection"]
+    if not isinstance(deflection, np.ndarray) or deflection.size < FINITE_ENDS_FROM:
+        return frozenset()
+    if any(isinstance(v, np.ndarray) for k, v in x.items() if k != "spring_deflection"):
+        return frozenset()
+    declared = BALL_CLUTCH.param("spring_deflection")
+    if declared.minimum is None or declared.maximum is None:
+        return frozenset()
+    ends = np.array([declared.minimum, declared.maximum], dtype=float)
+    at_ends = _forward_values(
+        {**x, "spring_deflection": ends}, as_built=False, forces=forces, wanted=wanted
+    )
+    return frozenset(
+        name
+        for name, value in at_ends.items()
+        if value is not None and bool(np.isfinite(value).all())
     )
 
 

@@ -535,3 +535,58 @@ def test_a_caller_reading_no_checks_gets_the_asked_outputs_alone_and_the_same(
     for name in skipped:  # computed for the checks, left out without them
         assert lean.values.get(name) is None, name
         assert full.values.get(name) is not None, name
+
+
+PAPER_OUTPUTS = ("spring_force", "torque_limit", "ball_tangential_force", "spring_shear_stress")
+
+
+@pytest.mark.parametrize(
+    ("case", "named"),
+    [
+        ("alone", set(PAPER_OUTPUTS)),  # Δ alone over a helical spring: told from Δ's ends
+        ("refused", set()),  # the balls wedge at some points: null there
+        ("with_wire", set()),  # the wire varies too: the runner tests the columns
+        ("disc", set()),  # a disc spring's force is not proportional to Δ
+    ],
+)
+def test_the_paper_outputs_named_finite_over_a_deflection_are_finite_and_equal_single_runs(
+    case: str, named: set[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Δ swept alone on a helical spring: the paper's outputs are proportional to Δ, so the
+    array path names them finite at every point from Δ's declared ends (Result.finite, what
+    the sweep then does not test); a named column is finite, and every value equals a single
+    run's, bit for bit."""
+    from engine.models import clutch as clutch_model
+
+    monkeypatch.setattr(clutch_model, "FINITE_ENDS_FROM", 1)
+    example = (
+        next(e for e in BALL_CLUTCH.examples if e.get("spring_type", "helical") == case)
+        if case == "disc"
+        else BALL_CLUTCH.examples[0]
+    )
+    base = dict(example)
+    n = 7
+    cols: dict[str, np.ndarray] = {"spring_deflection": np.linspace(0.002, 0.006, n)}
+    if case == "with_wire":
+        cols["spring_wire_diameter"] = np.full(n, base["spring_wire_diameter"])
+    if case == "refused":  # α below the friction angle at the first points: the balls wedge
+        base["flank_friction"] = 0.2
+        cols["groove_angle"] = np.linspace(5.0, 45.0, n) * DEG
+    x, _ = BALL_CLUTCH.validate(base)
+    ctx = RunContext(
+        rung="closed_form", outputs=frozenset(PAPER_OUTPUTS), tolerance=0.01, checks=False
+    )
+    got = BALL_CLUTCH.vectorized({**x, **cols}, ctx)
+    assert got.finite & set(PAPER_OUTPUTS) == named
+    for name in got.finite:  # the three ball forces come together: each named is finite
+        assert np.isfinite(np.asarray(got.values[name], dtype=float)).all(), name
+    for j in range(n):
+        point = {**base, **{k: float(v[j]) for k, v in cols.items()}}
+        try:
+            alone = engine.run(BALL_CLUTCH, point, outputs=PAPER_OUTPUTS).results
+        except engine.EngineError:
+            for name in PAPER_OUTPUTS:
+                assert math.isnan(np.broadcast_to(got.values[name], (n,))[j]), (name, j)
+            continue
+        for name in PAPER_OUTPUTS:
+            assert np.broadcast_to(got.values[name], (n,))[j] == alone[name], (name, j)
