@@ -233,6 +233,25 @@ def scalar_gives(
     return any(values.get(name) is not None for name in names)
 
 
+def keep_ends(scratch: Scratch, name: str, low: float, high: float) -> None:
+    """Leave in ``scratch`` the least and the largest value of input ``name`` over every
+    point of the request (a sweep reads them to check its values), for the array path."""
+    scratch.once(f"ends of {name}", lambda: (low, high))
+
+
+def swept_ends(scratch: Scratch, name: str) -> tuple[float, float] | None:
+    """The least and the largest value of input ``name`` over every point where the caller
+    left them in ``scratch`` (:func:`keep_ends`), else None: an array path need not read
+    them again (a pass over the points each).
+
+    >>> s = Scratch()
+    >>> swept_ends(s, "load"), keep_ends(s, "speed", 1.0, 2.0), swept_ends(s, "speed")
+    (None, None, (1.0, 2.0))
+    """
+    ends: tuple[float, float] | None = scratch.once(f"ends of {name}", lambda: None)
+    return ends
+
+
 #: Values tested at a time: the flags of a block (64 KiB) stay in the processor's cache and
 #: come from the heap, where the flags of a whole column (1 MB for 10⁶ points) would be pages
 #: fresh from the kernel on each call, and a pass more.

@@ -736,6 +736,7 @@ def sweep(
     notes: list[str] = []
     refused = np.zeros(n, dtype=bool)  # points an estimate refuses: run alone, to say why
     scratch = Scratch()  # the estimates' work on x, for the array path on the same x
+    points.keep_ends(scratch, vary, low, high)  # read once here, for the array path
     _check_tolerance(tol)
     # each rung group: its rung, the points it holds (None: every point)
     groups: list[tuple[int, np.ndarray | None]]
@@ -1046,9 +1047,7 @@ def _sweep_column(param: Param, values: Sequence[float]) -> tuple[np.ndarray, fl
     else:
         arr = np.array(values, dtype=float)
         if arr.ndim != 1 or arr.size == 0:
-            raise InputOutOfRange(
-                f"a sweep of {param.name} needs at least one value", field="num"
-            )
+            raise InputOutOfRange(f"a sweep of {param.name} needs at least one value", field="num")
         low, high = float(arr.min()), float(arr.max())
     inside = bool(points.in_range(param, np.array([low, high])).all())
     if not inside or param.kind == "int":

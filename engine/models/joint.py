@@ -22,7 +22,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from ..core.errors import InputOutOfRange
-from ..core.points import all_finite
+from ..core.points import all_finite, swept_ends
 from ..core.spec import (
     Answer,
     Check,
@@ -797,14 +797,22 @@ def _exceeds(value: Any, varied: Any, name: str) -> Any:
 class _Extremes:
     """A varied input's range: as declared (no pass over the points), or its least and
     largest value at the points not refused so far (one pass each, once per mask; NaN
-    where a value is NaN or every point is refused)."""
+    where a value is NaN or every point is refused). ``known``: the least and largest at
+    every point, where the caller read them (a sweep): no pass while no point is refused."""
 
-    __slots__ = ("name", "refusals", "seen", "values")
+    __slots__ = ("known", "name", "refusals", "seen", "values")
 
-    def __init__(self, values: Any, name: str, refusals: _Refusals) -> None:
+    def __init__(
+        self,
+        values: Any,
+        name: str,
+        refusals: _Refusals,
+        known: tuple[float, float] | None = None,
+    ) -> None:
         self.values = values
         self.name = name
         self.refusals = refusals
+        self.known = known
         self.seen: dict[str, tuple[Any, float]] = {}  # "min"/"max": (mask, value)
 
     def declared(self) -> np.ndarray:
@@ -819,6 +827,8 @@ class _Extremes:
 
     def _end(self, which: str) -> float:
         mask = self.refusals.mask
+        if self.known is not None and not isinstance(mask, np.ndarray) and not mask:
+            return self.known[0 if which == "min" else 1]  # every point, none refused
         seen = self.seen.get(which)
         if seen is None or seen[0] is not mask:
             values = self.points()
@@ -1001,6 +1011,7 @@ def _solve(
     b: Mapping[str, Any],
     refusals: _Refusals,
     outputs: frozenset[str] | None = None,
+    load_ends: tuple[float, float] | None = None,
 ) -> dict[str, Any]:
     """The VDI 2230-1 chain R0–R13 for the inputs ``x`` and the bolt columns ``b``.
 
@@ -1009,7 +1020,8 @@ def _solve(
     intermediate values the checks, notes and series need (keys starting with ``_``), and
     per check ``(applies, passes)`` under ``_checks``. Given ``outputs`` (an array run
     that reads no check), a late step that no output in it needs and that refuses no
-    point is left out: its outputs are NaN and ``_checks`` is empty.
+    point is left out: its outputs are NaN and ``_checks`` is empty. ``load_ends``: the
+    least and largest working load over every point, where the caller read them.
     """
 
     def col_or(name: str, other: Any) -> Any:
@@ -1334,7 +1346,7 @@ def _solve(
     f_a_alone = type(f_a) is not float and _varied_alone(
         f_a, fm_min, fm_max, phi_n, f_z, th_loss, th_top, pitch, d2, d0, mu_g_lo
     )
-    f_a_range: Any = _Extremes(f_a, "working_load", refusals) if f_a_alone else None
+    f_a_range: Any = _Extremes(f_a, "working_load", refusals, load_ends) if f_a_alone else None
     read_kr = need("residual_clamp_force_min", "slip_safety")
     f_kr_ends = f_a_alone and not read_kr
     f_kr_raw: Any = None if f_kr_ends else jt.residual_clamp_force(fm_min, f_a, phi_n, f_z, th_loss)
@@ -2709,7 +2721,14 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
     refusals = _Refusals(refused, many=True)
     # a sweep reads no check: the steps only they (and no asked output) read are left out
-    s = _solve(x, col, b, refusals, None if ctx.checks else ctx.outputs)
+    s = _solve(
+        x,
+        col,
+        b,
+        refusals,
+        None if ctx.checks else ctx.outputs,
+        swept_ends(ctx.scratch, "working_load"),
+    )
     mask = refusals.mask
     every_refused = bool(mask.all()) if isinstance(mask, np.ndarray) else bool(mask)
     any_refused = bool(mask.any()) if isinstance(mask, np.ndarray) else every_refused

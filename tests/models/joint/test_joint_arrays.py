@@ -573,6 +573,9 @@ FLOOR_OUTPUTS = ("additional_bolt_load", "required_preload_min", "max_bolt_force
         # the joint opens above about 20 kN
         ({"working_load_min": 5e3}, 60e3, 3, True),
         ({"working_load_min": 5e3}, 15e3, 10, False),
+        # none refused: the ends of F_A are the sweep's own least and largest value
+        ({}, 60e3, 0, True),
+        ({}, 15e3, 0, False),
         # 90 N·m of prevailing torque eat the 80 N·m: F_M = 0, so F_S,max = 0 and σ_red,B = 0
         # at F_A = 0 (refused), and no clamp force is left anywhere (the joint opens)
         ({"tightening_torque": 80.0, "prevailing_torque": 90.0}, 10e3, 1, True),
