@@ -2814,7 +2814,7 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
             "residual_clamp_force_min and slip_safety are 0 there"
         )
 
-    values, finite = _output_columns(
+    columns, finite = _output_columns(
         s,
         [name for name in _SCALARS if name in ctx.outputs],
         n,
@@ -2822,6 +2822,7 @@ def _vector_solution(x: Mapping[str, Any], ctx: RunContext) -> Result:
         (*x.values(), *b.values()),
         s["_finite"],
     )
+    values: dict[str, Any] = dict(columns)
     verdicts: dict[str, Any] = {}
     if ctx.checks:  # a sweep reads none of them
         verdicts = {
