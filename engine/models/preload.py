@@ -17,7 +17,7 @@ import numpy as np
 
 from ..core.errors import EngineError, InputOutOfRange
 from ..core.params import count, friction_coefficient
-from ..core.points import all_finite
+from ..core.points import all_finite, one_number
 from ..core.spec import (
     Answer,
     Check,
@@ -610,7 +610,10 @@ def _finish(
     Non-finite floats are NaN too: the scalar path returns them as null. A value not asked
     for is left out: each costs a pass over the points. A float column the step made for
     itself, every point of it kept and finite, is given as it is: a copy would cost a pass
-    and, at 10⁶ points, 8 MB of fresh pages. An array the step did not make (an input, a
+    and, at 10⁶ points, 8 MB of fresh pages. A number (a bolt's dimension, most outputs of
+    a study) with every point kept is a read-only zero-stride view of it
+    (:func:`engine.core.points.one_number`), which :func:`engine.core.points.vector` copies
+    for a caller that wants columns of its own. An array the step did not make (an input, a
     bolt number: ``borrowed``) or one already given under another name is copied, so no
     two columns, and no column and an input, share memory.
     """
@@ -633,6 +636,9 @@ def _finish(
         if every and _own_column(arr, n, taken) and all_finite(arr):
             out[name] = arr
             taken.add(id(arr))
+            continue
+        if every and arr.ndim == 0:  # one number at every point: no column of copies
+            out[name] = one_number(arr, n)
             continue
         arr = np.broadcast_to(arr.astype(float, copy=False), (n,))
         out[name] = np.where(ok & np.isfinite(arr), arr, np.nan)
