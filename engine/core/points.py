@@ -102,8 +102,24 @@ def auto_index(
     """``auto``'s rung index per point, as :func:`engine.core.runner.choose_rung` picks it.
 
     The cheapest rung whose estimate is within ``tol``; else the most accurate rung
-    with an estimate; else the last rung.
+    with an estimate; else the last rung. Where the first rung with an estimate has it
+    finite and within ``tol`` at every point (the common case: a model's closed form on
+    its own inputs), every point takes that rung, found in two passes over its estimates.
+
+    >>> from engine.models import get_model
+    >>> spec = get_model("preload.tightening")
+    >>> auto_index(spec, {0: np.array([0.0, 0.01])}, 2, 0.02).tolist()
+    [0, 0]
+    >>> auto_index(spec, {0: np.array([0.0, np.nan])}, 2, 0.02).tolist()
+    [0, 0]
     """
+    first = next((i for i in range(len(spec.rungs)) if estimates.get(i) is not None), None)
+    if first is not None:
+        arr = estimates[first]
+        assert arr is not None
+        # every estimate within tol, no NaN (a comparison with NaN is false) and no -inf
+        if arr.size == n and bool((arr <= tol).all()) and (n == 0 or arr.min() > -np.inf):
+            return np.full(n, first, dtype=np.int64)
     choice = np.full(n, -1, dtype=np.int64)
     best = np.full(n, np.inf)
     best_i = np.full(n, -1, dtype=np.int64)

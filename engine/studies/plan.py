@@ -1211,10 +1211,11 @@ class Moments:
         if finite[lo] == finite[hi]:  # one value: its mean, no spread (not their rounding)
             mean, m2, residual = float(finite[lo]), 0.0, 0.0
         else:
-            mean = float(finite.mean())
+            # numpy's mean, the sum over the count, without its Python wrapper
+            mean = float(np.add.reduce(finite)) / finite.size
             work = _work(finite.size) if finite.size <= 2 * BLOCK else None
             deviation = np.subtract(finite, mean, out=work)
-            residual = float(deviation.mean())
+            residual = float(np.add.reduce(deviation)) / finite.size
             np.multiply(deviation, deviation, out=deviation)  # in place: one array, not two
             m2 = float(np.add.reduce(deviation))
         return Moments(
