@@ -1801,11 +1801,10 @@ def _binned_ranks(
         return None
     counts = np.zeros(bins, dtype=np.int64)
     kernels.count_bins(x, lo, scale, bins - 1, 0, counts)  # one compiled pass
-    c = counts[counts > 1].astype(float)
-    delta = math.sqrt(float(np.add.reduce(c * c * c - c)) / (float(n) ** 3 - n))
+    mid = np.empty(bins)  # the average rank of each bin's values, and Σ(c³ - c) at once
+    delta = math.sqrt(kernels.rank_table(counts, mid) / (float(n) ** 3 - n))
     if not math.asin(min(delta, 1.0)) <= tolerance / 2:
         return None
-    mid = np.cumsum(counts) - 0.5 * (counts - 1)  # the average rank of each bin's values
     ranks = np.empty(n)
     kernels.lookup_bins(x, lo, scale, bins - 1, 0, mid, ranks)  # each value's bin's, again
     return ranks
