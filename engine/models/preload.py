@@ -550,10 +550,10 @@ def _rung_estimate(x: Mapping[str, Any], scratch: Scratch) -> Any:
     try:
         n = _points(x)
         if n:
+            # the torque terms with their deviation, left for the array path of the same
+            # inputs (which reads them where it gives the deviation)
             bolt_arrays, _ = resolve_bolts(x, n, labels=False)
-            dev = _deviation(
-                bolt_arrays, x["thread_friction"], x["bearing_friction"], str(x["torque_formula"])
-            )
+            _, dev = _request_torque_terms(x, bolt_arrays, scratch)
             return np.where(bolt_arrays.ok, dev, np.nan)
         bolt = _design(x, scratch).bolt
         return float(_request_torque_terms(x, bolt, scratch)[1])
@@ -919,8 +919,14 @@ def _tightening_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     bolt, notes = resolve_bolts(x, n, labels=ctx.wants("fastener"))
     given = x.get("preload") is not None
     below_yield = given and ctx.checks  # the check of a given preload reads σ_red
+    # the rung estimate's torque terms, where they are wanted with their deviation (a study
+    # of every output): the estimate computed them on the same inputs
+    shared = ctx.scratch if "torque_formula_deviation" in ctx.outputs else None
     values = _tightening_values(
-        x, bolt, wanted=ctx.outputs | {"equivalent_stress"} if below_yield else ctx.outputs
+        x,
+        bolt,
+        shared,
+        wanted=ctx.outputs | {"equivalent_stress"} if below_yield else ctx.outputs,
     )
     nut, nut_verdicts = values.pop("_nut")
     verdicts: dict[str, Any] = _nut_verdicts(nut_verdicts)

@@ -801,7 +801,7 @@ def evaluate_chunk(
             whole = bool(sel.all())  # the estimates' inputs: their work applies to them
             vec = vector(
                 spec,
-                take(x, n, sel),
+                x if whole else take(x, n, sel),  # every point: the inputs as they are
                 rung,
                 outputs,
                 tol,
