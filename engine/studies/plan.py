@@ -330,28 +330,6 @@ def _transform(param: Param, var: Variable, u: np.ndarray) -> np.ndarray:
 
 #: Uniform numbers a law's quantile function takes at once while a study is drawn.
 DRAW_BLOCK = 65_536
-#: Where a study's whole columns start: on a huge page (2 MiB on x86-64 and arm64 Linux).
-HUGE_PAGE = 1 << 21
-
-
-def _column(n: int) -> np.ndarray:
-    """An empty float column of ``n`` values whose memory starts on a :data:`HUGE_PAGE`
-    boundary, for a study's whole columns (its drawn inputs, its outputs).
-
-    Linux backs the 2 MiB-aligned parts of a large mapping with transparent huge pages
-    (where they are enabled), each made by one fault on its first touch, and the rest with
-    4 KiB pages, a fault each. ``np.empty`` maps 8 MB for 10⁶ values with no alignment:
-    its first 2 MiB were some 500 small faults. Aligned, fifteen such columns filled chunk
-    by chunk took 10 ms of CPU against 18 ms (1,300 faults against 7,800, measured). The
-    part before the boundary is never touched, so it takes no memory, only addresses.
-
-    >>> y = _column(5)
-    >>> y.shape, y.ctypes.data % HUGE_PAGE
-    ((5,), 0)
-    """
-    raw = np.empty(n + HUGE_PAGE // 8)
-    start = (-raw.ctypes.data % HUGE_PAGE) // 8
-    return raw[start : start + n]
 
 
 def _transform_blocks(param: Param, var: Variable, u: np.ndarray) -> np.ndarray:
@@ -368,7 +346,7 @@ def _transform_blocks(param: Param, var: Variable, u: np.ndarray) -> np.ndarray:
     """
     if u.size <= DRAW_BLOCK:
         return _transform(param, var, u)
-    out = _column(u.size)
+    out = np.empty(u.size)
     for a in range(0, u.size, DRAW_BLOCK):
         out[a : a + DRAW_BLOCK] = _transform(param, var, u[a : a + DRAW_BLOCK])
     return out
@@ -973,7 +951,7 @@ class Columns(Mapping[str, np.ndarray]):
             if one is not None:
                 self._pieces[name][start] = one  # one number, to the bit: no memory
                 return
-            whole = self._whole[name] = _column(self.n_points)
+            whole = self._whole[name] = np.empty(self.n_points)
             for a, piece in self._pieces[name].items():
                 whole[a : a + piece.size] = piece
             self._pieces[name] = {}
