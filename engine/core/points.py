@@ -102,8 +102,24 @@ def auto_index(
     """``auto``'s rung index per point, as :func:`engine.core.runner.choose_rung` picks it.
 
     The cheapest rung whose estimate is within ``tol``; else the most accurate rung
-    with an estimate; else the last rung.
+    with an estimate; else the last rung. Where the first rung with an estimate has it
+    finite and within ``tol`` at every point (the common case: a model's closed form on
+    its own inputs), every point takes that rung, found in two passes over its estimates.
+
+    >>> from engine.models import get_model
+    >>> spec = get_model("preload.tightening")
+    >>> auto_index(spec, {0: np.array([0.0, 0.01])}, 2, 0.02).tolist()
+    [0, 0]
+    >>> auto_index(spec, {0: np.array([0.0, np.nan])}, 2, 0.02).tolist()
+    [0, 0]
     """
+    first = next((i for i in range(len(spec.rungs)) if estimates.get(i) is not None), None)
+    if first is not None:
+        arr = estimates[first]
+        assert arr is not None
+        # every estimate within tol, no NaN (a comparison with NaN is false) and no -inf
+        if arr.size == n and bool((arr <= tol).all()) and (n == 0 or arr.min() > -np.inf):
+            return np.full(n, first, dtype=np.int64)
     choice = np.full(n, -1, dtype=np.int64)
     best = np.full(n, np.inf)
     best_i = np.full(n, -1, dtype=np.int64)
@@ -118,6 +134,29 @@ def auto_index(
         choice = np.where((choice < 0) & ok & (arr <= tol), i, choice)
     fallback = np.where(best_i >= 0, best_i, len(spec.rungs) - 1)
     return np.where(choice >= 0, choice, fallback)
+
+
+def one_number(value: Any, n: int) -> np.ndarray:
+    """``value`` (a float) at ``n`` points as a read-only zero-stride view of one float:
+    NaN where it is not finite (the array contract's refused or not-computed value). An
+    output that is one number at every point then costs neither memory nor a pass over
+    the points; :func:`vector` gives a caller that wants columns of their own a copy.
+
+    >>> y = one_number(2.5, 4)
+    >>> y.tolist(), y.strides, y.flags.writeable, one_number(np.inf, 2).tolist()
+    ([2.5, 2.5, 2.5, 2.5], (0,), False, [nan, nan])
+    """
+    v = float(value)
+    return np.broadcast_to(np.array(v if np.isfinite(v) else np.nan), (n,))
+
+
+def is_one_number(y: np.ndarray) -> bool:
+    """``y`` is a zero-stride view of one number (as :func:`one_number` gives it).
+
+    >>> is_one_number(one_number(1.0, 3)), is_one_number(np.ones(3)), is_one_number(np.ones(1))
+    (True, False, False)
+    """
+    return y.ndim == 1 and y.size > 1 and y.strides == (0,)
 
 
 def take(x: Mapping[str, Any], n: int, sel: np.ndarray) -> dict[str, Any]:
@@ -159,6 +198,7 @@ def vector(
     dtype: Any = float,
     scratch: Scratch | None = None,
     read_checks: bool = True,
+    one_numbers: bool = False,
 ) -> Vector | None:
     """The array path for ``n`` points, or None where the model has none for this rung.
 
@@ -169,6 +209,10 @@ def vector(
     ``dtype=None`` keeps each column's own type (integers stay integers). ``scratch``
     is what :func:`rung_estimates` left for the same ``x`` (a new one when None).
     ``read_checks=False``: the caller does not read the checks (``Vector.checks`` may be empty).
+    ``one_numbers=True``: the caller only reads the columns (a study's chunk), and a column
+    of one number (a NaN column, an output the array path gives as one number: a
+    read-only zero-stride view, :func:`one_number`) stays that view; else each column is
+    an array of its own.
     """
     if spec.vectorized is None or rung not in spec.vector_rungs:
         return None
@@ -194,14 +238,15 @@ def vector(
     values: dict[str, np.ndarray] = {}
     for name in outputs:
         if name not in result.values or name in absent:
-            values[name] = np.full(n, np.nan)  # not computed by this rung
+            # not computed by this rung
+            values[name] = one_number(np.nan, n) if one_numbers else np.full(n, np.nan)
             continue
         got = result.values[name]
         if (
             isinstance(got, np.ndarray)
             and got.shape == (n,)
             and (dtype is None or got.dtype == np.dtype(dtype))
-            and got.flags.writeable
+            and (got.flags.writeable or (one_numbers and is_one_number(got)))
         ):
             values[name] = got  # already a column of its own (the common case): no copy
             continue

@@ -17,7 +17,7 @@ import numpy as np
 
 from ..core.errors import EngineError, InputOutOfRange
 from ..core.params import count, friction_coefficient
-from ..core.points import all_finite
+from ..core.points import all_finite, one_number
 from ..core.spec import (
     Answer,
     Check,
@@ -550,10 +550,10 @@ def _rung_estimate(x: Mapping[str, Any], scratch: Scratch) -> Any:
     try:
         n = _points(x)
         if n:
+            # the torque terms with their deviation, left for the array path of the same
+            # inputs (which reads them where it gives the deviation)
             bolt_arrays, _ = resolve_bolts(x, n, labels=False)
-            dev = _deviation(
-                bolt_arrays, x["thread_friction"], x["bearing_friction"], str(x["torque_formula"])
-            )
+            _, dev = _request_torque_terms(x, bolt_arrays, scratch)
             return np.where(bolt_arrays.ok, dev, np.nan)
         bolt = _design(x, scratch).bolt
         return float(_request_torque_terms(x, bolt, scratch)[1])
@@ -611,7 +611,10 @@ def _finish(
     Non-finite floats are NaN too: the scalar path returns them as null. A value not asked
     for is left out: each costs a pass over the points. A float column the step made for
     itself, every point of it kept and finite, is given as it is: a copy would cost a pass
-    and, at 10⁶ points, 8 MB of fresh pages. An array the step did not make (an input, a
+    and, at 10⁶ points, 8 MB of fresh pages. A number (a bolt's dimension, most outputs of
+    a study) with every point kept is a read-only zero-stride view of it
+    (:func:`engine.core.points.one_number`), which :func:`engine.core.points.vector` copies
+    for a caller that wants columns of its own. An array the step did not make (an input, a
     bolt number: ``borrowed``) or one already given under another name is copied, so no
     two columns, and no column and an input, share memory.
     """
@@ -636,6 +639,9 @@ def _finish(
             out[name] = arr
             taken.add(id(arr))
             finite.append(name)
+            continue
+        if every and arr.ndim == 0:  # one number at every point: no column of copies
+            out[name] = one_number(arr, n)
             continue
         arr = np.broadcast_to(arr.astype(float, copy=False), (n,))
         out[name] = np.where(ok & np.isfinite(arr), arr, np.nan)
@@ -916,8 +922,14 @@ def _tightening_vectorized(x: Mapping[str, Any], ctx: RunContext) -> Result:
     bolt, notes = resolve_bolts(x, n, labels=ctx.wants("fastener"))
     given = x.get("preload") is not None
     below_yield = given and ctx.checks  # the check of a given preload reads σ_red
+    # the rung estimate's torque terms, where they are wanted with their deviation (a study
+    # of every output): the estimate computed them on the same inputs
+    shared = ctx.scratch if "torque_formula_deviation" in ctx.outputs else None
     values = _tightening_values(
-        x, bolt, wanted=ctx.outputs | {"equivalent_stress"} if below_yield else ctx.outputs
+        x,
+        bolt,
+        shared,
+        wanted=ctx.outputs | {"equivalent_stress"} if below_yield else ctx.outputs,
     )
     nut, nut_verdicts = values.pop("_nut")
     verdicts: dict[str, Any] = _nut_verdicts(nut_verdicts)

@@ -223,15 +223,36 @@ def truncated_normal_ppf(u: Any, mean: Any, sd: Any, low: Any, high: Any) -> Any
     """
     a, b = _truncated(mean, sd, low, high)
     mass = _normal_mass(a, b)
-    if np.all(mass > _SMALLEST_MASS):
-        u = np.asarray(u, dtype=float)
-        below = special.ndtr(a) + u * mass
-        lower_half = below <= 0.5
-        z = special.ndtri(np.where(lower_half, below, special.ndtr(-b) + (1.0 - u) * mass))
-        z = np.where(lower_half, z, -z)
-    else:
-        z = stats.truncnorm.ppf(u, a, b)
-    return mean + sd * np.clip(z, a, b)
+    if not np.all(mass > _SMALLEST_MASS):
+        return mean + sd * np.clip(stats.truncnorm.ppf(u, a, b), a, b)
+    # three arrays of the points' size, each written in place: a fresh one per operation
+    # (twelve) cost the first touch of its pages in a study's draw, more than the
+    # arithmetic; and numpy's where takes a branch per value, which a half chosen at random
+    # mispredicts half the time (a select and a sign flip of 65,536 values 420 µs, on
+    # their bits 80 µs, measured)
+    u = np.asarray(u, dtype=float)
+    shape = np.broadcast_shapes(u.shape, np.shape(mass))  # the answer's
+    below = np.atleast_1d(u * mass)
+    below += special.ndtr(a)  # Φ(α) + u Z
+    lower_half = below <= 0.5
+    z = np.atleast_1d(1.0 - u) * mass  # the mass above the point, Φ(−β) + (1 − u) Z
+    z += special.ndtr(-b)
+    # the probability each point is inverted from: Φ(α) + u Z in the lower half, else the
+    # mass above it (the bits of ``below`` put in ``z`` where ``lower_half``)
+    mask = lower_half.astype(np.int64)
+    np.negative(mask, out=mask)  # every bit set in the lower half
+    bits, other = below.view(np.int64), z.view(np.int64)
+    bits ^= other
+    bits &= mask
+    other ^= bits
+    special.ndtri(z, out=z)
+    np.invert(mask, out=mask)  # every bit set in the upper half: −z there (its sign bit)
+    mask &= np.iinfo(np.int64).min
+    other ^= mask
+    np.clip(z, a, b, out=z)
+    z *= sd
+    z += mean
+    return z.reshape(shape)[()]
 
 
 def truncated_normal_pdf(x: Any, mean: Any, sd: Any, low: Any, high: Any) -> Any:

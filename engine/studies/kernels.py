@@ -9,8 +9,9 @@ loop compiled by numba (:func:`engine.numerics.ode.jit`, cached on disk), and ev
 places a value in its bin by the one rule of :func:`uniform_bin`, so the counts, the
 gathered values and the edges' bins agree to the last value.
 
-Nothing here sums floating-point numbers: the means and sums of squares stay numpy's
-(pairwise summation), so a summary's numbers do not depend on these loops. (The extremes
+Nothing here sums floating-point numbers that could round: the means and sums of squares
+stay numpy's (pairwise summation), so a summary's numbers do not depend on these loops;
+:func:`rank_table` adds whole numbers only, exactly in any order (below 2⁵³). (The extremes
 and the one-number test stay numpy's too: its SIMD ``argmin``/``argmax`` and comparisons
 are three times faster than a compiled loop with a branch per value, measured.)
 
@@ -32,6 +33,7 @@ __all__ = [
     "count_bins",
     "gather_bins",
     "lookup_bins",
+    "rank_table",
     "uniform_bin",
     "warm",
 ]
@@ -118,10 +120,24 @@ def _gather_bins(y, low, scale, top, first, wanted, values, labels, k):  # type:
     return k
 
 
+def _rank_table(counts, mid):  # type: ignore[no-untyped-def]
+    total = 0
+    spread = 0.0
+    for b in range(counts.size):
+        c = counts[b]
+        total += c
+        mid[b] = float(total) - 0.5 * float(c - 1)
+        if c > 1:
+            f = float(c)
+            spread += f * f * f - f
+    return spread
+
+
 _count_bins_c = jit(_count_bins, error_model="numpy")
 _bins_counted_c = jit(_bins_counted, error_model="numpy")
 _lookup_bins_c = jit(_lookup_bins, error_model="numpy")
 _gather_bins_c = jit(_gather_bins, error_model="numpy")
+_rank_table_c = jit(_rank_table, error_model="numpy")
 
 
 def _floats(y: np.ndarray) -> np.ndarray:
@@ -218,6 +234,23 @@ def gather_bins(
     )
 
 
+def rank_table(counts: np.ndarray, mid: np.ndarray) -> float:
+    r"""The average rank of each bin's values into ``mid`` (floats, as long as ``counts``,
+    the values per bin, int64), and :math:`\sum_b (c_b^3 - c_b)` over the bins, in one pass.
+
+    A bin's c values above u in the bins below take ranks u + 1 … u + c, on average
+    u + (c + 1)/2 = (u + c) − (c − 1)/2. Every number here is a whole number or a half,
+    exact in floats below 2⁵³: for up to 208,063 values (n³ < 2⁵³) the sum is numpy's
+    ``np.add.reduce(c * c * c - c)`` of the counts above 1, to the bit, and ``mid`` is
+    ``np.cumsum(counts) - 0.5 * (counts - 1)``, without their eight passes and temporaries.
+
+    >>> mid = np.empty(3)
+    >>> rank_table(np.array([2, 0, 3]), mid), mid.tolist()
+    (30.0, [1.5, 2.5, 4.0])
+    """
+    return float(_rank_table_c(np.ascontiguousarray(counts, dtype=np.int64), mid))
+
+
 def warm() -> None:
     """Call each kernel once with the types a study gives them: numba loads them from
     its disk cache (or compiles them) now, not in a study.
@@ -231,3 +264,4 @@ def warm() -> None:
     bins_counted(y[:3], 0.0, 1.0, 2.0, 0, labels, counts)
     gather_bins(y, 0.0, 1.0, 2.0, 1, np.ones(4, dtype=bool), np.empty(4), labels, 0)
     lookup_bins(y[:3], 0.0, 1.0, 2.0, 0, np.arange(4.0), np.empty(3))
+    rank_table(counts, np.empty(4))

@@ -35,7 +35,15 @@ from typing import Any
 import numpy as np
 
 from ..core.errors import BudgetExceeded, Cancelled, EngineError, InputOutOfRange
-from ..core.points import at, auto_index, in_range, rung_estimates, take, vector
+from ..core.points import (
+    at,
+    auto_index,
+    in_range,
+    is_one_number,
+    rung_estimates,
+    take,
+    vector,
+)
 from ..core.runner import (
     DEFAULT_BUDGET_S,
     DEFAULT_TOLERANCE,
@@ -153,7 +161,7 @@ class ChunkResult:
         # number and its length, where pickle would send the length's worth of copies
         state = dict(self.__dict__)
         state["values"] = {
-            name: (y[:1].copy(), y.size) if _is_one_number(y) else y
+            name: (y[:1].copy(), y.size) if is_one_number(y) else y
             for name, y in self.values.items()
         }
         return state
@@ -166,17 +174,12 @@ class ChunkResult:
         self.__dict__.update(state)
 
 
-def _is_one_number(y: np.ndarray) -> bool:
-    """``y`` is a zero-stride view of one number (:func:`_one_number`)."""
-    return y.ndim == 1 and y.size > 1 and y.strides == (0,)
-
-
 def _one_number(y: np.ndarray) -> np.ndarray | None:
     """``y`` as a read-only zero-stride view of its first value where every value has its
     bits (so -0.0 and 0.0 stay apart, and NaNs of other payloads), else None."""
     if y.ndim != 1 or y.size < 2:
         return None
-    if _is_one_number(y):
+    if is_one_number(y):
         return y
     first = y[:1].copy()
     same = y.view(np.int64) == first.view(np.int64)[0]
@@ -776,12 +779,13 @@ def evaluate_chunk(
             whole = bool(sel.all())  # the estimates' inputs: their work applies to them
             vec = vector(
                 spec,
-                take(x, n, sel),
+                x if whole else take(x, n, sel),  # every point: the inputs as they are
                 rung,
                 outputs,
                 tol,
                 int(sel.sum()),
                 scratch=scratch if whole else None,
+                one_numbers=True,  # read here, never written: one number stays a view
             )
             if vec is None or not vec.computed:
                 # none of the asked outputs comes from this rung's array path here: its
@@ -790,14 +794,18 @@ def evaluate_chunk(
                 loop |= sel
                 continue
             got = vec.values
-            # a point with no finite output is one the model refuses (NaN by the array contract)
+            # a point with no finite output is one the model refuses (NaN by the array
+            # contract); once every point has one, no further column is looked at
             dead = np.ones(int(sel.sum()), dtype=bool)
+            some_dead = True
             for name, column in got.items():
                 if whole:
                     values[name] = np.asarray(column, dtype=float)
                 else:
                     nan_column(name)[sel] = column
-                dead &= np.isnan(column)
+                if some_dead:
+                    dead &= np.isnan(column)
+                    some_dead = bool(dead.any())
             if dead.any():
                 key = "not computable on the array path (an infeasible design)"
                 refusals[key] = refusals.get(key, 0) + int(dead.sum())
@@ -978,7 +986,7 @@ class Columns(Mapping[str, np.ndarray]):
                 break
             out.append(piece[: m - size])
             size += out[-1].size
-        one = out and all(_is_one_number(y) for y in out)
+        one = out and all(is_one_number(y) for y in out)
         if one and len({y[:1].tobytes() for y in out}) == 1:  # one number, to the bit
             return np.broadcast_to(out[0][:1], (size,))
         return np.concatenate(out) if out else np.empty(0)
@@ -1183,6 +1191,11 @@ class Moments:
         """The moments of ``y``'s finite values; None when it has none."""
         if y.size == 0:
             return None
+        if is_one_number(y):  # one number (a zero-stride view): what the passes would find
+            v = float(y[0])
+            if not math.isfinite(v):
+                return None
+            return Moments(count=y.size, mean=v, m2=0.0, low=v, high=v, first_low=0, first_high=0)
         # extremes both finite: no NaN (where the extremes' search stops) and no ±inf, so
         # every value is finite and no mask is made (the usual chunk)
         lo, hi = int(y.argmin()), int(y.argmax())
@@ -1198,10 +1211,11 @@ class Moments:
         if finite[lo] == finite[hi]:  # one value: its mean, no spread (not their rounding)
             mean, m2, residual = float(finite[lo]), 0.0, 0.0
         else:
-            mean = float(finite.mean())
+            # numpy's mean, the sum over the count, without its Python wrapper
+            mean = float(np.add.reduce(finite)) / finite.size
             work = _work(finite.size) if finite.size <= 2 * BLOCK else None
             deviation = np.subtract(finite, mean, out=work)
-            residual = float(deviation.mean())
+            residual = float(np.add.reduce(deviation)) / finite.size
             np.multiply(deviation, deviation, out=deviation)  # in place: one array, not two
             m2 = float(np.add.reduce(deviation))
         return Moments(
@@ -1765,11 +1779,10 @@ def _binned_ranks(
         return None
     counts = np.zeros(bins, dtype=np.int64)
     kernels.count_bins(x, lo, scale, bins - 1, 0, counts)  # one compiled pass
-    c = counts[counts > 1].astype(float)
-    delta = math.sqrt(float(np.add.reduce(c * c * c - c)) / (float(n) ** 3 - n))
+    mid = np.empty(bins)  # the average rank of each bin's values, and Σ(c³ - c) at once
+    delta = math.sqrt(kernels.rank_table(counts, mid) / (float(n) ** 3 - n))
     if not math.asin(min(delta, 1.0)) <= tolerance / 2:
         return None
-    mid = np.cumsum(counts) - 0.5 * (counts - 1)  # the average rank of each bin's values
     ranks = np.empty(n)
     kernels.lookup_bins(x, lo, scale, bins - 1, 0, mid, ranks)  # each value's bin's, again
     return ranks
@@ -1808,7 +1821,7 @@ def rank_correlations(
     ] = {}
     for name in values:
         y = values[name][:RANK_POINTS]  # one output at a time (:func:`_heads` makes it then)
-        if _is_one_number(y):  # one number (a zero-stride view): no rank moves
+        if is_one_number(y):  # one number (a zero-stride view): no rank moves
             out[name] = dict.fromkeys(columns)
             continue
         ok = np.isfinite(y)
