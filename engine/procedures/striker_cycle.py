@@ -2106,8 +2106,29 @@ def _contact_params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
 
 
 def _jacobian_matrix(p: np.ndarray) -> np.ndarray:
-    """The 4 x 4 constraint Jacobian of :data:`CONTACTS` (:func:`_jacobian`, row by row)."""
+    """The 4 x 4 constraint Jacobian of :data:`CONTACTS` (:func:`_jacobian`, row by row).
+
+    Kept for the last slopes asked (:func:`_jacobian` reads the faces' slopes ``p[U_TA]``,
+    ``p[U_TB]`` alone, and a study that does not vary the cone angle asks the same every
+    design: sixteen Python calls a design); the kernels and :func:`_catch` only read it.
+    Slopes of 0 (equal to -0.0 as a key, not in their negations) are made anew.
+    """
+    key = (float(p[U_TA]), float(p[U_TB]))
+    if key[0] == 0.0 or key[1] == 0.0:
+        return _make_jacobian(p)
+    made = _JACOBIANS.get(key)
+    if made is None:
+        if len(_JACOBIANS) >= 256:
+            _JACOBIANS.clear()
+        made = _JACOBIANS[key] = _make_jacobian(p)
+    return made
+
+
+def _make_jacobian(p: np.ndarray) -> np.ndarray:
     return np.array([[_jacobian(p, i, j) for j in range(4)] for i in range(4)])
+
+
+_JACOBIANS: dict[tuple[float, float], np.ndarray] = {}
 
 
 def _contact_rates(p, jac, q, v, tol, cand, rate):  # type: ignore[no-untyped-def]
@@ -2383,6 +2404,7 @@ def _stage3_one_sided(
     clear: float,
     steps_per_period: int,
     t_ret: float,
+    matrices: tuple[float, float, float],
 ) -> tuple[float, float, list[str]]:
     r"""Stage 3 from ``state`` with the rollers as free bodies between the cones.
 
@@ -2396,7 +2418,8 @@ def _stage3_one_sided(
     restitution for the rollers) whose impulses are found with the contacts that stay
     (:func:`_catch`, :func:`_active_set`). While both faces hold, this is the
     two-degree-of-freedom stage 3 of the module notes. The event loop is compiled
-    (:func:`_one_sided`). Returns (return time, home time, notes) from the blow.
+    (:func:`_one_sided`). ``matrices``: :func:`_stage3_matrices` of ``x`` and ``g`` (the
+    caller's). Returns (return time, home time, notes) from the blow.
     """
     p = _contact_params(x, g)
     t, _, yh, ys, vh, vs = state
@@ -2408,7 +2431,7 @@ def _stage3_one_sided(
     jac = _jacobian_matrix(p)
     m1, m3 = x["half_coupling_mass"], x["striker_mass"]
     w_free = math.sqrt(max(x["power_spring_rate"] / m1, x["return_spring_rate"] / m3))
-    m11, m12, m22 = _stage3_matrices(x, g)
+    m11, m12, m22 = matrices
     det = float(m11 * m22 - m12 * m12)
     w_both = math.sqrt(max(x["power_spring_rate"], x["return_spring_rate"]) / (det / max(m11, m22)))
     h = 2.0 * math.pi / (steps_per_period * max(w_free, w_both))
@@ -2481,9 +2504,11 @@ def simulate_cycle(
     big = m1 + nm + m3
 
     # ---- stage 1: spin-up from rest; the half-coupling rests until lift-off -------------
-    w_0 = liftoff_speed_of(x)
-    w_qs = release_speed_of(x)  # also refuses a design whose preloads do not hold
-    r = _speeds(x, g)[0]  # release_radius_of without its door (x is converted already)
+    # liftoff_speed_of, release_speed_of and release_radius_of without their doors (x is
+    # converted already, g made): one look at the request's stage-1 speeds
+    r, w_0, w_qs = _speeds(x, g)
+    if not _held(x, g):  # release_speed_of's refusal of a design whose preloads do not hold
+        raise _preloads_do_not_hold(x, g)
     inertia_0 = _inertia(x, g, x["roller_radius"])
     t_l = _time_to_speed(x, inertia_0, w_0)
     t_qs = _time_to_speed(x, _inertia(x, g, r), w_qs)
@@ -2646,7 +2671,7 @@ def simulate_cycle(
     for _ in range(64):
         if _gfun_c(mode, 4, run.p, *state[1:]) < 0.0:  # already at a mode's start
             t_ret, t_home, said = _stage3_one_sided(
-                run, x, g, state, t_blow, t3_end, clear, steps_per_period, t_ret
+                run, x, g, state, t_blow, t3_end, clear, steps_per_period, t_ret, (m11, m12, m22)
             )
             notes.extend(said)
             break
@@ -2686,7 +2711,7 @@ def simulate_cycle(
                 label = "stop"
         if label == "pull":  # a face lets the rollers go: one-sided contacts from here
             t_ret, t_home, said = _stage3_one_sided(
-                run, x, g, state, t_blow, t3_end, clear, steps_per_period, t_ret
+                run, x, g, state, t_blow, t3_end, clear, steps_per_period, t_ret, (m11, m12, m22)
             )
             notes.extend(said)
             break
