@@ -2504,11 +2504,10 @@ def simulate_cycle(
     big = m1 + nm + m3
 
     # ---- stage 1: spin-up from rest; the half-coupling rests until lift-off -------------
-    # liftoff_speed_of, release_speed_of and release_radius_of without their doors (x is
-    # converted already, g made): one look at the request's stage-1 speeds
-    r, w_0, w_qs = _speeds(x, g)
-    if not _held(x, g):  # release_speed_of's refusal of a design whose preloads do not hold
-        raise _preloads_do_not_hold(x, g)
+    # liftoff_speed_of and release_radius_of without their doors (x is converted already,
+    # g made): the request's stage-1 speeds, once
+    r, w_0, _ = _speeds(x, g)
+    w_qs = release_speed_of(x)  # also refuses a design whose preloads do not hold
     inertia_0 = _inertia(x, g, x["roller_radius"])
     t_l = _time_to_speed(x, inertia_0, w_0)
     t_qs = _time_to_speed(x, _inertia(x, g, r), w_qs)
