@@ -545,6 +545,10 @@ class Result:
     #: as a bool array (or int8: 1 passes, 0 fails, -1 does not apply at that point).
     #: The same names and verdicts the scalar compute gives in ``checks`` point by point.
     check_arrays: dict[str, Any] = field(default_factory=dict)
+    #: Where the caller reads no sentences (:attr:`RunContext.sentences` False): the checks'
+    #: verdicts as (name, passes) pairs, in place of ``checks`` (a :class:`Check` costs
+    #: about a µs to make, which a study's looped point paid six times for two values).
+    verdicts: list[tuple[str, bool]] | None = None
 
 
 @dataclass(frozen=True)
@@ -572,7 +576,8 @@ class RunContext:
     checks: bool = True
     #: Whether the caller reads the sentences (notes, warnings, the checks' details): a
     #: study's looped points keep the values and the verdicts alone
-    #: (:func:`engine.core.runner.run_point`), so a compute may leave the sentences out.
+    #: (:func:`engine.core.runner.run_point`), so a compute may leave the sentences out
+    #: and give :attr:`Result.verdicts` for its checks.
     sentences: bool = True
 
     def once(self, key: str, compute: Callable[[], Any]) -> Any:
