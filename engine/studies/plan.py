@@ -821,21 +821,49 @@ def evaluate_chunk(
     # (run_point); under auto (each point's own estimates) or where a value is refused, the
     # point goes through engine.run as a request would
     named = asked != "auto"
-    varied = [(name, spec.param(name), x[name]) for name in cols]
+    to_loop = np.flatnonzero(loop).tolist()
+    # each varied column as Python numbers once (what .item() gives a point at a time)
+    varied = [(name, spec.param(name), x[name].tolist()) for name in cols] if to_loop else []
     # the looped points' outputs, a row each in the order of ``outputs`` (None where null),
     # put into their columns in one assignment a column every LOOP_ROWS points (a value a
-    # time cost µs a point: 21 outputs of the striker's study)
+    # time cost µs a point: 21 outputs of the striker's study); their verdicts likewise
     looped: list[int] = []
     rows: list[list[Any]] = []
+    verdicts: list[list[tuple[str, bool]]] = []
+
+    def check_column(name: str) -> np.ndarray:
+        arr = checks.get(name)
+        if arr is None:
+            arr = checks[name] = np.full(n, CHECK_UNKNOWN, dtype=np.int8)
+        return arr
 
     def put_rows() -> None:
         block = np.array(rows, dtype=float)  # None: NaN, as float() of each value
         for i, name in enumerate(outputs):
             nan_column(name)[looped] = block[:, i]
+        try:  # (point, check, name or verdict) where every point has the same checks
+            pairs = np.array(verdicts, dtype=object)
+        except ValueError:
+            pairs = None
+        if (
+            pairs is not None
+            and pairs.ndim == 3
+            and pairs.shape[2] == 2
+            and bool((pairs[:, :, 0] == pairs[:1, :, 0]).all())
+        ):
+            for c, name in enumerate(pairs[0, :, 0].tolist()):
+                check_column(name)[looped] = np.where(
+                    pairs[:, c, 1].astype(bool), CHECK_OK, CHECK_FAILED
+                )
+        else:
+            for j, flags in zip(looped, verdicts, strict=True):
+                for name, ok in flags:
+                    check_column(name)[j] = CHECK_OK if ok else CHECK_FAILED
         looped.clear()
         rows.clear()
+        verdicts.clear()
 
-    for j in np.flatnonzero(loop).tolist():
+    for j in to_loop:
         if cancel is not None and cancel.is_set():
             break
         if deadline is not None and time.perf_counter() > deadline:
@@ -884,13 +912,9 @@ def evaluate_chunk(
         rungs[j], results, flags = res
         looped.append(j)
         rows.append(list(map(results.get, outputs)))
+        verdicts.append(flags)  # the verdicts alone: no sentence is made
         if len(rows) >= LOOP_ROWS:
             put_rows()
-        for name, ok in flags:  # the verdicts alone: no sentence is made
-            arr = checks.get(name)
-            if arr is None:
-                arr = checks[name] = np.full(n, CHECK_UNKNOWN, dtype=np.int8)
-            arr[j] = CHECK_OK if ok else CHECK_FAILED
     if rows:
         put_rows()
     values = {o: nan_column(o) for o in outputs} | values  # the asked order, every one
@@ -903,7 +927,7 @@ def evaluate_chunk(
 
 
 def _point_values(
-    fixed: Mapping[str, Any], varied: Sequence[tuple[str, Param, np.ndarray]], j: int
+    fixed: Mapping[str, Any], varied: Sequence[tuple[str, Param, list[Any]]], j: int
 ) -> dict[str, Any] | None:
     """Point ``j``'s validated inputs: ``fixed`` (the chunk's, validated once) with its
     varied values, each checked as :meth:`ModelSpec.validate` checks it; None where one is
@@ -911,7 +935,7 @@ def _point_values(
     values = dict(fixed)
     try:
         for name, param, column in varied:
-            values[name] = param.check(column[j].item())
+            values[name] = param.check(column[j])
     except InputOutOfRange:
         return None
     return values
