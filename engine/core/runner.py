@@ -566,7 +566,11 @@ def run_point(
         )
         result = _computed(spec, values, ctx, False, [])
     got = result.values.get  # None where not given: _scalar keeps it
-    scalars = {name: _scalar(got(name)) for name in outputs}
+    isfinite = math.isfinite
+    scalars = {}
+    for name in outputs:
+        v = got(name)
+        scalars[name] = v if v.__class__ is float and isfinite(v) else _scalar(v)
     verdicts = result.verdicts  # the level does not come into a verdict
     if verdicts is None:
         verdicts = [(c.name, c.ok) for c in spec.levelled(result.checks)]

@@ -229,7 +229,7 @@ class _Numbers(dict[str, Any]):
     def __init__(self, x: Mapping[str, Any]) -> None:
         super().__init__(x)
         self.memo: dict[tuple[str, str], Any] = {}
-        self.many = is_array(*x.values())
+        self.many = np.ndarray in set(map(type, x.values()))  # is_array, with no call a value
 
 
 def _once(x: Mapping[str, Any], key: tuple[str, str], compute: Callable[[], Any]) -> Any:
@@ -2003,14 +2003,17 @@ class _Run:
                 mode, self.p, t, w, q0, q1, v0, v1, h, chunk, t_end, *events,
                 clamp0, stride, *bufs, n_rec,
             )  # fmt: skip
-            if measure:
+            # (a warm StepCost folds in chunks of 10,000 steps or more alone)
+            if measure and (used >= 10_000 or not _COST.warm):
                 _COST.measured(used, time.perf_counter() - began)
             self.steps += used
             if status != 0:
                 break
-        fin = math.isfinite
-        if not (fin(t) and fin(w) and fin(q0) and fin(q1) and fin(v0) and fin(v1)):
-            raise SolverFailed("the cycle integration diverged", field="fidelity")
+        # a finite sum has finite terms (an inf or NaN term makes it inf or NaN): one look
+        if not math.isfinite(t + w + q0 + q1 + v0 + v1):
+            fin = math.isfinite
+            if not (fin(t) and fin(w) and fin(q0) and fin(q1) and fin(v0) and fin(v1)):
+                raise SolverFailed("the cycle integration diverged", field="fidelity")
         if rec.on:
             rec.add(mode, bufs, n_rec)
         return status, which, (t, w, q0, q1, v0, v1)
@@ -2440,19 +2443,20 @@ def _stage3_one_sided(
     st = np.zeros(_U_NI, dtype=np.int64)
     run.go_one_sided(p, jac, fs, st, q, v)
     notes = []
-    left = {i: float(fs[6 + i]) for i in (2, 3) if not math.isnan(fs[6 + i])}
+    fs_, st_ = fs.tolist(), st.tolist()  # Python numbers, read once
+    left = {i: fs_[6 + i] for i in (2, 3) if not math.isnan(fs_[6 + i])}
     if left:
-        first = int(st[_U_FIRST])
+        first = st_[_U_FIRST]
         if len(left) == 2 and left[5 - first] < left[first]:
             first = 5 - first
-        free_both = int(st[_U_FREE])
+        free_both = st_[_U_FREE]
         notes.append(
             f"stage 3: {left[first] * 1e3:.3g} ms after the blow {CONTACTS[first]} would have "
             "to pull the rollers; it lets them go and the return is followed with one-sided "
             "contacts (the rollers free between the cones, a plastic catch where a gap closes)"
             + (f"; they flew free of both faces {free_both} time(s)" if free_both else "")
         )
-    return float(fs[_U_TRET]), float(fs[_U_THOME]), notes
+    return fs_[_U_TRET], fs_[_U_THOME], notes
 
 
 def simulate_cycle(
@@ -2504,10 +2508,11 @@ def simulate_cycle(
     big = m1 + nm + m3
 
     # ---- stage 1: spin-up from rest; the half-coupling rests until lift-off -------------
-    # liftoff_speed_of and release_radius_of without their doors (x is converted already,
-    # g made): the request's stage-1 speeds, once
-    r, w_0, _ = _speeds(x, g)
-    w_qs = release_speed_of(x)  # also refuses a design whose preloads do not hold
+    # liftoff_speed_of, release_speed_of and release_radius_of without their doors (x is
+    # converted already, g made): the request's stage-1 speeds, once
+    r, w_0, w_qs = _speeds(x, g)
+    if not _held(x, g):
+        release_speed_of(x)  # raises its refusal: the preloads do not hold the half-coupling
     inertia_0 = _inertia(x, g, x["roller_radius"])
     t_l = _time_to_speed(x, inertia_0, w_0)
     t_qs = _time_to_speed(x, _inertia(x, g, r), w_qs)
