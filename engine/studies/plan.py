@@ -822,8 +822,17 @@ def evaluate_chunk(
     # point goes through engine.run as a request would
     named = asked != "auto"
     to_loop = np.flatnonzero(loop).tolist()
-    # each varied column as Python numbers once (what .item() gives a point at a time)
-    varied = [(name, spec.param(name), x[name].tolist()) for name in cols] if to_loop else []
+    # each varied column as Python numbers once (what .item() gives a point at a time); a
+    # looped point is in ``valid`` (finite and within the declared bounds, as Param.check
+    # asks), so of a float input's check only the fold of -0.0 is left: made on the column
+    # (x + 0.0 is x, and 0.0 for -0.0); an int input is checked point by point (whole)
+    varied: list[tuple[str, Param | None, list[Any]]] = []
+    for name in cols if to_loop else ():
+        param = spec.param(name)
+        if param.kind == "float":
+            varied.append((name, None, (x[name] + 0.0).tolist()))
+        else:
+            varied.append((name, param, x[name].tolist()))
     # the looped points' outputs, a row each in the order of ``outputs`` (None where null),
     # put into their columns in one assignment a column every LOOP_ROWS points (a value a
     # time cost µs a point: 21 outputs of the striker's study); their verdicts likewise
@@ -927,15 +936,16 @@ def evaluate_chunk(
 
 
 def _point_values(
-    fixed: Mapping[str, Any], varied: Sequence[tuple[str, Param, list[Any]]], j: int
+    fixed: Mapping[str, Any], varied: Sequence[tuple[str, Param | None, list[Any]]], j: int
 ) -> dict[str, Any] | None:
     """Point ``j``'s validated inputs: ``fixed`` (the chunk's, validated once) with its
-    varied values, each checked as :meth:`ModelSpec.validate` checks it; None where one is
-    refused (the point then goes through :func:`engine.run`, which says why)."""
+    varied values, each checked as :meth:`ModelSpec.validate` checks it (a column whose
+    param is None is checked already: taken as it is); None where one is refused (the
+    point then goes through :func:`engine.run`, which says why)."""
     values = dict(fixed)
     try:
         for name, param, column in varied:
-            values[name] = param.check(column[j])
+            values[name] = column[j] if param is None else param.check(column[j])
     except InputOutOfRange:
         return None
     return values
