@@ -340,6 +340,10 @@ def geometry(name: str, cone_angle: Any) -> Geometry:
 
 def _geometry_of(x: Mapping[str, Any], name: str) -> Geometry:
     """:func:`geometry` ``name`` at ``x``'s cone angle, made once for :func:`step_inputs`."""
+    if x.__class__ is _Numbers:  # kept already: no closure made (several looks a design)
+        kept: Geometry | None = x.memo.get(("geometry", name))
+        if kept is not None:
+            return kept
     g: Geometry = _once(x, ("geometry", name), lambda: geometry(name, x["cone_angle"]))
     return g
 
@@ -350,6 +354,10 @@ def _speeds(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, Any]:
     :func:`_radius`, :func:`_liftoff_speed` and :func:`_release_speed`, which the cycle,
     its error estimate and the release speed share.
     """
+    if x.__class__ is _Numbers:  # kept already: no closure made (several looks a design)
+        kept: tuple[Any, Any, Any] | None = x.memo.get(("stage 1", g.name))
+        if kept is not None:
+            return kept
 
     def compute() -> tuple[Any, Any, Any]:
         r = _radius(x, g)
