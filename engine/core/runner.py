@@ -13,6 +13,7 @@ import math
 import threading
 import time
 from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Set as AbstractSet
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any, Literal
 
@@ -454,7 +455,7 @@ def _check_tolerance(tol: float) -> None:
         )
 
 
-def _check_outputs(spec: ModelSpec, asked: set[str]) -> None:
+def _check_outputs(spec: ModelSpec, asked: AbstractSet[str]) -> None:
     """Refuse output names ``spec`` does not offer, listing the ones it does."""
     unknown = sorted(asked - spec.units.keys())
     if unknown:
@@ -552,10 +553,11 @@ def run_point(
     with _arithmetic_refused(spec):
         _check_tolerance(tolerance)
         choose_rung(spec, values, rung, tolerance)  # refuses an unknown rung name
-        _check_outputs(spec, set(outputs))
+        asked = frozenset(outputs)  # _wanted's set: outputs named, no series
+        _check_outputs(spec, asked)
         ctx = RunContext(
             rung=rung,
-            outputs=frozenset(_wanted(spec, set(outputs), named=True, series=False)),
+            outputs=asked,
             tolerance=tolerance,
             deadline=None if budget_s is None else time.perf_counter() + budget_s,
             max_steps=max_steps,
@@ -563,9 +565,16 @@ def run_point(
             sentences=False,
         )
         result = _computed(spec, values, ctx, False, [])
-    got = result.values
-    scalars = {name: _scalar(got[name]) if name in got else None for name in outputs}
-    return result.rung, scalars, [(c.name, c.ok) for c in spec.levelled(result.checks)]
+    got = result.values.get  # None where not given: _scalar keeps it
+    isfinite = math.isfinite
+    scalars = {}
+    for name in outputs:
+        v = got(name)
+        scalars[name] = v if v.__class__ is float and isfinite(v) else _scalar(v)
+    verdicts = result.verdicts  # the level does not come into a verdict
+    if verdicts is None:
+        verdicts = [(c.name, c.ok) for c in spec.levelled(result.checks)]
+    return result.rung, scalars, verdicts
 
 
 def run(

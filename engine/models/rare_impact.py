@@ -666,7 +666,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
             values=_values(x, o, ctx.rung),
             rung=ctx.rung,
             error_estimate=error,
-            checks=[Check(name, bool(ok), "") for name, ok in _verdicts(x, o).items()],
+            verdicts=[(name, bool(ok)) for name, ok in _verdicts(x, o).items()],
         )
     notes = list(o.notes)
     warnings = list(o.warnings)

@@ -382,7 +382,11 @@ def as_numbers(x: Mapping[str, Any]) -> dict[str, Any]:
     >>> as_numbers({"a": 1, "b": np.float64(2.5), "c": "v", "d": None, "e": True})
     {'a': 1.0, 'b': 2.5, 'c': 'v', 'd': None, 'e': True}
     """
-    return {k: float(v) if v.__class__ in _PLAIN else v for k, v in x.items()}
+    # a float as it is first (most inputs are: float() would give the same object back)
+    return {
+        k: v if v.__class__ is float else float(v) if v.__class__ in _PLAIN else v
+        for k, v in x.items()
+    }
 
 
 def is_array(*values: Any) -> bool:

@@ -229,7 +229,7 @@ class _Numbers(dict[str, Any]):
     def __init__(self, x: Mapping[str, Any]) -> None:
         super().__init__(x)
         self.memo: dict[tuple[str, str], Any] = {}
-        self.many = is_array(*x.values())
+        self.many = np.ndarray in set(map(type, x.values()))  # is_array, with no call a value
 
 
 def _once(x: Mapping[str, Any], key: tuple[str, str], compute: Callable[[], Any]) -> Any:
@@ -340,6 +340,10 @@ def geometry(name: str, cone_angle: Any) -> Geometry:
 
 def _geometry_of(x: Mapping[str, Any], name: str) -> Geometry:
     """:func:`geometry` ``name`` at ``x``'s cone angle, made once for :func:`step_inputs`."""
+    if x.__class__ is _Numbers:  # kept already: no closure made (several looks a design)
+        kept: Geometry | None = x.memo.get(("geometry", name))
+        if kept is not None:
+            return kept
     g: Geometry = _once(x, ("geometry", name), lambda: geometry(name, x["cone_angle"]))
     return g
 
@@ -350,6 +354,10 @@ def _speeds(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, Any]:
     :func:`_radius`, :func:`_liftoff_speed` and :func:`_release_speed`, which the cycle,
     its error estimate and the release speed share.
     """
+    if x.__class__ is _Numbers:  # kept already: no closure made (several looks a design)
+        kept: tuple[Any, Any, Any] | None = x.memo.get(("stage 1", g.name))
+        if kept is not None:
+            return kept
 
     def compute() -> tuple[Any, Any, Any]:
         r = _radius(x, g)
@@ -2003,14 +2011,17 @@ class _Run:
                 mode, self.p, t, w, q0, q1, v0, v1, h, chunk, t_end, *events,
                 clamp0, stride, *bufs, n_rec,
             )  # fmt: skip
-            if measure:
+            # (a warm StepCost folds in chunks of 10,000 steps or more alone)
+            if measure and (used >= 10_000 or not _COST.warm):
                 _COST.measured(used, time.perf_counter() - began)
             self.steps += used
             if status != 0:
                 break
-        fin = math.isfinite
-        if not (fin(t) and fin(w) and fin(q0) and fin(q1) and fin(v0) and fin(v1)):
-            raise SolverFailed("the cycle integration diverged", field="fidelity")
+        # a finite sum has finite terms (an inf or NaN term makes it inf or NaN): one look
+        if not math.isfinite(t + w + q0 + q1 + v0 + v1):
+            fin = math.isfinite
+            if not (fin(t) and fin(w) and fin(q0) and fin(q1) and fin(v0) and fin(v1)):
+                raise SolverFailed("the cycle integration diverged", field="fidelity")
         if rec.on:
             rec.add(mode, bufs, n_rec)
         return status, which, (t, w, q0, q1, v0, v1)
@@ -2106,8 +2117,29 @@ def _contact_params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
 
 
 def _jacobian_matrix(p: np.ndarray) -> np.ndarray:
-    """The 4 x 4 constraint Jacobian of :data:`CONTACTS` (:func:`_jacobian`, row by row)."""
+    """The 4 x 4 constraint Jacobian of :data:`CONTACTS` (:func:`_jacobian`, row by row).
+
+    Kept for the last slopes asked (:func:`_jacobian` reads the faces' slopes ``p[U_TA]``,
+    ``p[U_TB]`` alone, and a study that does not vary the cone angle asks the same every
+    design: sixteen Python calls a design); the kernels and :func:`_catch` only read it.
+    Slopes of 0 (equal to -0.0 as a key, not in their negations) are made anew.
+    """
+    key = (float(p[U_TA]), float(p[U_TB]))
+    if key[0] == 0.0 or key[1] == 0.0:
+        return _make_jacobian(p)
+    made = _JACOBIANS.get(key)
+    if made is None:
+        if len(_JACOBIANS) >= 256:
+            _JACOBIANS.clear()
+        made = _JACOBIANS[key] = _make_jacobian(p)
+    return made
+
+
+def _make_jacobian(p: np.ndarray) -> np.ndarray:
     return np.array([[_jacobian(p, i, j) for j in range(4)] for i in range(4)])
+
+
+_JACOBIANS: dict[tuple[float, float], np.ndarray] = {}
 
 
 def _contact_rates(p, jac, q, v, tol, cand, rate):  # type: ignore[no-untyped-def]
@@ -2383,6 +2415,7 @@ def _stage3_one_sided(
     clear: float,
     steps_per_period: int,
     t_ret: float,
+    matrices: tuple[float, float, float],
 ) -> tuple[float, float, list[str]]:
     r"""Stage 3 from ``state`` with the rollers as free bodies between the cones.
 
@@ -2396,7 +2429,8 @@ def _stage3_one_sided(
     restitution for the rollers) whose impulses are found with the contacts that stay
     (:func:`_catch`, :func:`_active_set`). While both faces hold, this is the
     two-degree-of-freedom stage 3 of the module notes. The event loop is compiled
-    (:func:`_one_sided`). Returns (return time, home time, notes) from the blow.
+    (:func:`_one_sided`). ``matrices``: :func:`_stage3_matrices` of ``x`` and ``g`` (the
+    caller's). Returns (return time, home time, notes) from the blow.
     """
     p = _contact_params(x, g)
     t, _, yh, ys, vh, vs = state
@@ -2408,7 +2442,7 @@ def _stage3_one_sided(
     jac = _jacobian_matrix(p)
     m1, m3 = x["half_coupling_mass"], x["striker_mass"]
     w_free = math.sqrt(max(x["power_spring_rate"] / m1, x["return_spring_rate"] / m3))
-    m11, m12, m22 = _stage3_matrices(x, g)
+    m11, m12, m22 = matrices
     det = float(m11 * m22 - m12 * m12)
     w_both = math.sqrt(max(x["power_spring_rate"], x["return_spring_rate"]) / (det / max(m11, m22)))
     h = 2.0 * math.pi / (steps_per_period * max(w_free, w_both))
@@ -2417,19 +2451,20 @@ def _stage3_one_sided(
     st = np.zeros(_U_NI, dtype=np.int64)
     run.go_one_sided(p, jac, fs, st, q, v)
     notes = []
-    left = {i: float(fs[6 + i]) for i in (2, 3) if not math.isnan(fs[6 + i])}
+    fs_, st_ = fs.tolist(), st.tolist()  # Python numbers, read once
+    left = {i: fs_[6 + i] for i in (2, 3) if not math.isnan(fs_[6 + i])}
     if left:
-        first = int(st[_U_FIRST])
+        first = st_[_U_FIRST]
         if len(left) == 2 and left[5 - first] < left[first]:
             first = 5 - first
-        free_both = int(st[_U_FREE])
+        free_both = st_[_U_FREE]
         notes.append(
             f"stage 3: {left[first] * 1e3:.3g} ms after the blow {CONTACTS[first]} would have "
             "to pull the rollers; it lets them go and the return is followed with one-sided "
             "contacts (the rollers free between the cones, a plastic catch where a gap closes)"
             + (f"; they flew free of both faces {free_both} time(s)" if free_both else "")
         )
-    return float(fs[_U_TRET]), float(fs[_U_THOME]), notes
+    return fs_[_U_TRET], fs_[_U_THOME], notes
 
 
 def simulate_cycle(
@@ -2481,9 +2516,11 @@ def simulate_cycle(
     big = m1 + nm + m3
 
     # ---- stage 1: spin-up from rest; the half-coupling rests until lift-off -------------
-    w_0 = liftoff_speed_of(x)
-    w_qs = release_speed_of(x)  # also refuses a design whose preloads do not hold
-    r = _speeds(x, g)[0]  # release_radius_of without its door (x is converted already)
+    # liftoff_speed_of, release_speed_of and release_radius_of without their doors (x is
+    # converted already, g made): the request's stage-1 speeds, once
+    r, w_0, w_qs = _speeds(x, g)
+    if not _held(x, g):
+        release_speed_of(x)  # raises its refusal: the preloads do not hold the half-coupling
     inertia_0 = _inertia(x, g, x["roller_radius"])
     t_l = _time_to_speed(x, inertia_0, w_0)
     t_qs = _time_to_speed(x, _inertia(x, g, r), w_qs)
@@ -2646,7 +2683,7 @@ def simulate_cycle(
     for _ in range(64):
         if _gfun_c(mode, 4, run.p, *state[1:]) < 0.0:  # already at a mode's start
             t_ret, t_home, said = _stage3_one_sided(
-                run, x, g, state, t_blow, t3_end, clear, steps_per_period, t_ret
+                run, x, g, state, t_blow, t3_end, clear, steps_per_period, t_ret, (m11, m12, m22)
             )
             notes.extend(said)
             break
@@ -2686,7 +2723,7 @@ def simulate_cycle(
                 label = "stop"
         if label == "pull":  # a face lets the rollers go: one-sided contacts from here
             t_ret, t_home, said = _stage3_one_sided(
-                run, x, g, state, t_blow, t3_end, clear, steps_per_period, t_ret
+                run, x, g, state, t_blow, t3_end, clear, steps_per_period, t_ret, (m11, m12, m22)
             )
             notes.extend(said)
             break
