@@ -264,8 +264,8 @@ class Settings:
         default_factory=lambda: _int("HEAVY_PER_CLIENT", max(1, usable_cpus() // 2))
     )
     #: Time box of a cheap computation run inline on the event loop, without the thread
-    #: hop (service.workers.Inline); a (model, rung) measured slower moves to the quick
-    #: lane. 0: every computation in a lane [s].
+    #: hop (service.workers.Inline); a (model, rung) measured slower (in processor time)
+    #: moves to the quick lane. 0: every computation in a lane [s].
     inline_budget_s: float = field(default_factory=lambda: _float("INLINE_BUDGET_S", 0.002))
     #: How long a request may wait for a slot before it gets 503 with Retry-After [s].
     admission_wait_s: float = field(default_factory=lambda: _float("ADMISSION_WAIT_S", 0.5))

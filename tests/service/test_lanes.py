@@ -324,3 +324,27 @@ def test_readyz_declares_each_status_of_its_503_in_the_openapi_document() -> Non
     said = app_with().openapi()["paths"]["/readyz"]["get"]["responses"]["503"]["description"]
     for status in ("warming", "busy", "store_error"):
         assert f'"{status}"' in said, status
+
+
+def test_the_inline_mean_counts_the_computations_processor_time_not_the_wall_clock() -> None:
+    """A key leaves the event loop for what its computation costs, not for the time the
+    process waited for a processor on a busy machine: a 30 ms wait (here a sleep, 15 × the
+    2 ms time box) leaves the key inline, 30 ms of processor time sends it to the lane, in
+    the lane's measure as in the loop's."""
+    from service.workers import Inline
+
+    def waits(budget_s: float, cancel: Any) -> None:
+        time.sleep(0.03)
+
+    def burns(budget_s: float, cancel: Any) -> None:
+        end = time.thread_time() + 0.03
+        while time.thread_time() < end:
+            pass
+
+    inline = Inline(0.002)
+    inline.run(waits, "waits", 1.0)
+    inline.timed(waits, "waits in a lane")(1.0, None)  # type: ignore[arg-type]
+    assert inline.allows("waits") and inline.allows("waits in a lane")
+    inline.run(burns, "burns", 1.0)
+    inline.timed(burns, "burns in a lane")(1.0, None)  # type: ignore[arg-type]
+    assert not inline.allows("burns") and not inline.allows("burns in a lane")
