@@ -183,8 +183,14 @@ def _digits(shown: str, text: str) -> int:
     limits = _LIMITS.get(shown)
     if limits is None:
         limits = _limits(shown)
-    if isinstance(limits, int):
+    if type(limits) is int:
         return limits
+    return _counted(limits, text)
+
+
+def _counted(limits: tuple[int | None, int], text: str) -> int:
+    """:func:`_digits` where they are counted in ``text``: ``limits`` (at most, characters
+    of the number) as :data:`_LIMITS` holds them."""
     most, length = limits
     # the significant digits the number shows ("0.0450" → 3, "-1.50e+03" → 3): its
     # mantissa without sign, leading zeros and point, counted in one expression
@@ -197,16 +203,30 @@ def _digits(shown: str, text: str) -> int:
 
 
 #: What :func:`_digits` reads of a quantity's digits field, per field as written: the
-#: digits, or ``(at most, characters of the number)`` (None: no upper limit). q() writes
-#: few distinct fields (the digits asked, the number's length), so each is read once.
-_LIMITS: dict[str, int | tuple[int | None, int]] = {}
+#: digits, or ``(at most, characters of the number)`` (None: no upper limit) to count
+#: them in the text. q() writes few distinct fields (the digits asked, the number's
+#: length), so each is read once. A number of at most 3 characters shows at most 3 digits,
+#: counted as 3 (the least), so its field gives them without the text (``"4:2"``: 3): a
+#: third of the fields q() writes, read without counting.
+_LIMITS: dict[str, int | tuple[int | None, int]] = {"1": 1, "2": 2, "3": 3}
 
 
 def _limits(shown: str) -> int | tuple[int | None, int]:
     """:data:`_LIMITS`'s entry for ``shown``, kept there (ValueError where it is not a
-    digits field, kept nowhere)."""
+    digits field, kept nowhere).
+
+    >>> _limits("4"), _limits("4:5"), _limits(":6"), _limits("4:3"), _limits(":2"), _limits("2:3")
+    (4, (4, 5), (None, 6), 3, 3, 2)
+    """
     most, counted, length = shown.partition(":")
-    limits = int(most) if not counted else (int(most) if most else None, int(length))
+    if not counted:
+        limits: int | tuple[int | None, int] = int(most)
+    else:
+        at_most, characters = (int(most) if most else None, int(length))
+        if 0 <= characters <= 3:  # the count would find at most 3: it is 3, or fewer if capped
+            limits = 3 if at_most is None else min(3, at_most)
+        else:
+            limits = (at_most, characters)
     if len(_LIMITS) < 1024 and len(shown) <= 16:  # bounded whatever sentences are read
         _LIMITS[shown] = limits
     return limits
@@ -262,7 +282,7 @@ def _read(sentence: str) -> tuple[str | None, Parts]:
     append = out.append
     see = seen.append
     unit_of = _SI_UNIT
-    shown_digits = _SHOWN
+    known = _LIMITS
     unpack = _DOUBLE.unpack
     fromhex = bytes.fromhex
     for piece in marked:
@@ -277,9 +297,10 @@ def _read(sentence: str) -> tuple[str | None, Parts]:
         try:
             (value,) = unpack(fromhex(raw))
             if value - value == 0.0:  # finite
-                digits = shown_digits.get(shown)
-                if digits is None:
-                    digits = _digits(shown, text)
+                limits = known.get(shown)
+                if limits is None:
+                    limits = _limits(shown)
+                digits = limits if type(limits) is int else _counted(limits, text)
             else:
                 value, digits = None, 3
         except (ValueError, struct.error):
@@ -306,8 +327,6 @@ def _read(sentence: str) -> tuple[str | None, Parts]:
 
 #: Per display unit, its SI unit (the first column of :data:`DISPLAY`).
 _SI_UNIT: dict[str, str] = {k: v[0] for k, v in DISPLAY.items()}
-#: The digits of a quantity :func:`q` wrote with at most 3 (its mark carries the number).
-_SHOWN: dict[str, int] = {"1": 1, "2": 2, "3": 3}
 
 
 def _parts_marked(sentence: str) -> Parts:
