@@ -580,6 +580,11 @@ def plain_reader(spec: ModelSpec) -> Callable[[Any], Body | None]:
     every error. tests/service/test_plain_reader.py holds the two to the same answers.
     """
     readers: dict[str, Callable[[Any], Any]] = {}
+    # a JSON number for a numeric input: its validator would call Param.check on it and
+    # nothing else, so it is called straight (~0.2 µs an input)
+    numbers: dict[str, Callable[[Any], Any]] = {
+        p.name: p.check for p in spec.inputs if p.kind not in ("choice", "bool", "text", "samples")
+    }
     for p in spec.inputs:
         if p.kind == "choice":
             readers[p.name] = _choice_reader(p.choices)
@@ -602,14 +607,20 @@ def plain_reader(spec: ModelSpec) -> Callable[[Any], Body | None]:
         inputs: dict[str, Any] = {}
         try:
             for name, value in data.items():
-                if value is None:
+                kind = type(value)
+                if kind is float or kind is int:
+                    check = numbers.get(name)
+                    if check is not None:
+                        inputs[name] = check(value)
+                        continue
+                elif value is None:
                     return None
                 reader = readers.get(name)
                 if reader is not None:
                     inputs[name] = reader(value)
                 elif name not in _COMMON:
                     return None
-        except (PydanticCustomError, _NotPlain):
+        except (PydanticCustomError, _NotPlain, InputOutOfRange):
             return None
         if any(name not in inputs for name in required):
             return None
