@@ -183,7 +183,7 @@ def _digits(shown: str, text: str) -> int:
     limits = _LIMITS.get(shown)
     if limits is None:
         limits = _limits(shown)
-    if type(limits) is int:
+    if isinstance(limits, int):
         return limits
     return _counted(limits, text)
 
@@ -300,7 +300,7 @@ def _read(sentence: str) -> tuple[str | None, Parts]:
                 limits = known.get(shown)
                 if limits is None:
                     limits = _limits(shown)
-                digits = limits if type(limits) is int else _counted(limits, text)
+                digits = limits if isinstance(limits, int) else _counted(limits, text)
             else:
                 value, digits = None, 3
         except (ValueError, struct.error):
