@@ -236,6 +236,10 @@ def vector(
     if missing and scalar_gives(spec, x, ctx, missing):
         return None  # an output the array version lacks but this rung gives: loop
     values: dict[str, np.ndarray] = {}
+    # the varied inputs: an output that is one of them (an input given back as it is, or a
+    # view of it) is copied, so that no caller writing into an output column writes into
+    # the request's inputs (a study's drawn columns, a sweep's values)
+    inputs = [v for v in x.values() if isinstance(v, np.ndarray) and v.ndim]
     for name in outputs:
         if name not in result.values or name in absent:
             # not computed by this rung
@@ -247,6 +251,7 @@ def vector(
             and got.shape == (n,)
             and (dtype is None or got.dtype == np.dtype(dtype))
             and (got.flags.writeable or (one_numbers and is_one_number(got)))
+            and not any(np.may_share_memory(got, v) for v in inputs)
         ):
             values[name] = got  # already a column of its own (the common case): no copy
             continue

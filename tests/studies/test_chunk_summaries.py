@@ -435,3 +435,37 @@ def test_a_chunk_with_no_value_travels_as_one_nan() -> None:
     assert back.values["none"].shape == (size,) and back.values["none"].strides == (0,)
     for name, y in part.values.items():  # every bit as it was
         assert np.array_equal(back.values[name].view(np.int64), y.view(np.int64))
+
+
+@pytest.mark.parametrize(
+    ("model", "varied"),
+    [
+        ("tool.capability", ("mean_torque", "torque_sd", "lower_limit", "upper_limit")),
+        ("nutrunner.drive", ("idle_spindle_friction_torque",)),
+        ("clutch.ball", ("allowable_shear_stress",)),
+    ],
+)
+def test_a_chunk_output_that_is_an_input_given_back_is_a_column_of_its_own(
+    model: str, varied: tuple[str, ...]
+) -> None:
+    """An array path may give an input back as an output (tool.capability's limits, the
+    clutch's permissible stress); the chunk's column is then a copy, not the study's drawn
+    column: a later write into an output column cannot change the study's inputs."""
+    spec = engine.get_model(model)
+    example = dict(spec.examples[0])
+    if model == "clutch.ball":  # its example leaves τ_zul out
+        example["allowable_shear_stress"] = 700e6
+    n = 40
+    columns = {k: float(example[k]) * np.linspace(0.99, 1.01, n) for k in varied if example.get(k)}
+    assert columns, "the example gives the varied inputs"
+    base = {k: v for k, v in example.items() if k not in columns}
+    from engine.studies.plan import evaluate_chunk
+
+    outputs = [o.name for o in spec.outputs if not o.series and o.kind == "float"]
+    chunk = evaluate_chunk(spec, base, columns, outputs)
+    given_back = 0
+    for name, y in chunk.values.items():
+        for k, column in columns.items():
+            assert not np.shares_memory(y, column), (name, k)
+            given_back += bool(np.array_equal(y, column))
+    assert given_back, "some output is one of the inputs, value for value"
