@@ -136,7 +136,7 @@ import math
 import time
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any, NamedTuple
+from typing import Any, NamedTuple, TypeVar
 
 import numpy as np
 
@@ -1913,15 +1913,24 @@ def _events(*rows: tuple[int, float, float, float, float]) -> tuple[np.ndarray, 
     for r in rows:  # a loop, not all() over a generator: five times a design
         if r[3] == 0.0 and math.copysign(1.0, r[3]) < 0.0:
             return _make_events(rows)
-    made = _EVENTS.get(rows)
-    if made is None:
-        if len(_EVENTS) >= 256:
-            _EVENTS.clear()
-        made = _EVENTS[rows] = _make_events(rows)
-    return made
+    return _remembered(_EVENTS, rows, _make_events)
 
 
 _EVENTS: dict[tuple[tuple[int, float, float, float, float], ...], tuple[np.ndarray, ...]] = {}
+
+_K = TypeVar("_K")
+_V = TypeVar("_V")
+
+
+def _remembered(kept: dict[_K, _V], key: _K, make: Callable[[_K], _V]) -> _V:
+    """``make(key)``, kept in ``kept`` for the next call with an equal key; ``kept`` is
+    emptied when it holds 256 (bounded whatever a process asks)."""
+    made = kept.get(key)
+    if made is None:
+        if len(kept) >= 256:
+            kept.clear()
+        made = kept[key] = make(key)
+    return made
 
 
 def _make_events(
@@ -2127,12 +2136,7 @@ def _jacobian_matrix(p: np.ndarray) -> np.ndarray:
     key = (float(p[U_TA]), float(p[U_TB]))
     if key[0] == 0.0 or key[1] == 0.0:
         return _make_jacobian(p)
-    made = _JACOBIANS.get(key)
-    if made is None:
-        if len(_JACOBIANS) >= 256:
-            _JACOBIANS.clear()
-        made = _JACOBIANS[key] = _make_jacobian(p)
-    return made
+    return _remembered(_JACOBIANS, key, lambda _: _make_jacobian(p))
 
 
 def _make_jacobian(p: np.ndarray) -> np.ndarray:
