@@ -185,12 +185,6 @@ def _digits(shown: str, text: str) -> int:
         limits = _limits(shown)
     if isinstance(limits, int):
         return limits
-    return _counted(limits, text)
-
-
-def _counted(limits: tuple[int | None, int], text: str) -> int:
-    """:func:`_digits` where they are counted in ``text``: ``limits`` (at most, characters
-    of the number) as :data:`_LIMITS` holds them."""
     most, length = limits
     # the significant digits the number shows ("0.0450" → 3, "-1.50e+03" → 3): its
     # mantissa without sign, leading zeros and point, counted in one expression
@@ -297,10 +291,9 @@ def _read(sentence: str) -> tuple[str | None, Parts]:
         try:
             (value,) = unpack(fromhex(raw))
             if value - value == 0.0:  # finite
-                limits = known.get(shown)
-                if limits is None:
-                    limits = _limits(shown)
-                digits = limits if isinstance(limits, int) else _counted(limits, text)
+                digits = known.get(shown)  # the common case: the field gives the digits
+                if digits.__class__ is not int:
+                    digits = _digits(shown, text)
             else:
                 value, digits = None, 3
         except (ValueError, struct.error):
