@@ -229,7 +229,13 @@ class _Numbers(dict[str, Any]):
     def __init__(self, x: Mapping[str, Any]) -> None:
         super().__init__(x)
         self.memo: dict[tuple[str, str], Any] = {}
-        self.many = np.ndarray in set(map(type, x.values()))  # is_array, with no call a value
+        self.many = is_array(*x.values())
+
+
+def _known(x: Mapping[str, Any], key: tuple[str, str]) -> Any:
+    """What :func:`_once` kept for ``key`` in a :func:`step_inputs` mapping, else None
+    (nothing yet, or a plain mapping): a caller that looks before it makes its closure."""
+    return x.memo.get(key) if x.__class__ is _Numbers else None
 
 
 def _once(x: Mapping[str, Any], key: tuple[str, str], compute: Callable[[], Any]) -> Any:
@@ -340,10 +346,9 @@ def geometry(name: str, cone_angle: Any) -> Geometry:
 
 def _geometry_of(x: Mapping[str, Any], name: str) -> Geometry:
     """:func:`geometry` ``name`` at ``x``'s cone angle, made once for :func:`step_inputs`."""
-    if x.__class__ is _Numbers:  # kept already: no closure made (several looks a design)
-        kept: Geometry | None = x.memo.get(("geometry", name))
-        if kept is not None:
-            return kept
+    kept: Geometry | None = _known(x, ("geometry", name))  # no closure made (several looks)
+    if kept is not None:
+        return kept
     g: Geometry = _once(x, ("geometry", name), lambda: geometry(name, x["cone_angle"]))
     return g
 
@@ -354,10 +359,9 @@ def _speeds(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, Any]:
     :func:`_radius`, :func:`_liftoff_speed` and :func:`_release_speed`, which the cycle,
     its error estimate and the release speed share.
     """
-    if x.__class__ is _Numbers:  # kept already: no closure made (several looks a design)
-        kept: tuple[Any, Any, Any] | None = x.memo.get(("stage 1", g.name))
-        if kept is not None:
-            return kept
+    kept: tuple[Any, Any, Any] | None = _known(x, ("stage 1", g.name))  # no closure made
+    if kept is not None:
+        return kept
 
     def compute() -> tuple[Any, Any, Any]:
         r = _radius(x, g)
