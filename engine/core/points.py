@@ -298,7 +298,7 @@ def swept_ends(scratch: Scratch, name: str) -> tuple[float, float] | None:
     >>> swept_ends(s, "load"), keep_ends(s, "speed", 1.0, 2.0), swept_ends(s, "speed")
     (None, None, (1.0, 2.0))
     """
-    ends: tuple[float, float] | None = scratch.once(f"ends of {name}", lambda: None)
+    ends: tuple[float, float] | None = scratch.get(f"ends of {name}")
     return ends
 
 

@@ -378,6 +378,11 @@ class Scratch:
         value = memo[key] = compute()
         return value
 
+    def get(self, key: str) -> Any:
+        """What :meth:`once` keeps under ``key``, None where nothing was computed yet (and
+        nothing is computed here)."""
+        return self._memo.get(key)
+
 
 @dataclass(frozen=True)
 class Rung:
