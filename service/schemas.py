@@ -583,7 +583,7 @@ def plain_reader(spec: ModelSpec) -> Callable[[Any], Body | None]:
     # a JSON number for a numeric input: its validator would call Param.check on it and
     # nothing else, so it is called straight (~0.2 µs an input)
     numbers: dict[str, Callable[[Any], Any]] = {
-        p.name: p.check for p in spec.inputs if p.kind not in ("choice", "bool", "text", "samples")
+        p.name: p.check for p in spec.inputs if p.is_numeric
     }
     for p in spec.inputs:
         if p.kind == "choice":
