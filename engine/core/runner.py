@@ -743,14 +743,17 @@ def sweep(
     tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
     asked = _fidelity(spec, fidelity, tolerance)
     notes: list[str] = []
-    refused = np.zeros(n, dtype=bool)  # points an estimate refuses: run alone, to say why
     scratch = Scratch()  # the estimates' work on x, for the array path on the same x
     points.keep_ends(scratch, vary, low, high)  # read once here, for the array path
     _check_tolerance(tol)
     # each rung group: its rung, the points it holds (None: every point)
     groups: list[tuple[int, np.ndarray | None]]
     estimates: Mapping[int, np.ndarray | None] | None
+    # the points an estimate refuses, run alone to say why: only ``auto`` makes the estimates
+    # here, so a named rung's sweep spends no column on them
+    refused: np.ndarray | None = None
     if asked == "auto":  # the estimates choose the rung per point: needed now
+        refused = np.zeros(n, dtype=bool)
         estimates = points.rung_estimates(
             spec, x, n, point=lambda j: points.at(x, n, j), refused=refused, scratch=scratch
         )
@@ -777,7 +780,8 @@ def sweep(
     # for the error estimates, made when read: (rung, its points or None, where refused)
     given: list[tuple[int, np.ndarray | None, np.ndarray | None]] = []
     looped_errors: dict[int, float] = {}
-    loop = refused.copy() if index is not None else None  # None: no point loops yet
+    # the points that run alone (None: none yet): those refused, where an estimate refused any
+    loop = None if refused is None or not refused.any() else refused.copy()
     counts_of_groups: dict[str, int] = {}
     bad_total = 0
     for k, sel in groups:
@@ -874,7 +878,9 @@ def sweep(
             point = run(
                 spec,
                 {**base, vary: value},
-                fidelity=asked if index is None or refused[j] else spec.rung_names[int(index[j])],
+                fidelity=asked
+                if index is None or refused is None or refused[j]
+                else spec.rung_names[int(index[j])],
                 tolerance=tolerance,
                 outputs=wanted,
                 budget_s=remaining,
