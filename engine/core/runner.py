@@ -643,7 +643,8 @@ def run(
 
     scalars: dict[str, Value] = {}
     curves: dict[str, list[float]] = {}
-    notes = notes + list(spec.assumptions) + result.notes
+    notes += spec.assumptions  # the run's own list (made from the prepared notes above)
+    notes += result.notes
     isfinite = math.isfinite
     for name, value in result.values.items():
         if name not in wanted:

@@ -845,6 +845,8 @@ class ModelSpec:
         for name in self._required:
             if values[name] is None:
                 raise InputOutOfRange(f"{name} is required", field=name)
+        if not advice:  # the common case: every given value within its recommended range
+            return values, []
         advice.sort(key=lambda item: item[0])
         return values, [w for _, w in advice]
 
