@@ -714,12 +714,14 @@ def _feasible(x: Mapping[str, Any], wire: Any) -> tuple[npt.NDArray[np.bool_], l
     ok = np.asarray(True)
     for where in refused.values():
         ok = ok & ~np.asarray(where, dtype=bool)
+    if ok.ndim == 0 and ok:  # one design, or fixed inputs no reason refuses: no note to count
+        return ok, []
     n = _array_inputs(x) or 1
     return ok, _refusal_notes(refused, n)
 
 
 def _masked(values: Mapping[str, Any], ok: npt.NDArray[np.bool_]) -> dict[str, Any]:
-    if np.all(ok):  # the common case in a study: nothing refused, no copies
+    if ok.all():  # the common case in a study: nothing refused, no copies
         return {k: np.asarray(v, dtype=float) for k, v in values.items()}
     return {k: np.where(ok, np.asarray(v, dtype=float), np.nan) for k, v in values.items()}
 
@@ -832,7 +834,7 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
             *refusals,
         ],
         check_arrays=check_arrays,
-        finite=finite if bool(np.all(ok)) else frozenset(),
+        finite=finite if ok.all() else frozenset(),
     )
 
 
