@@ -778,8 +778,8 @@ def sweep(
         estimates = None
         index = None
         groups = [(spec.rung_names.index(asked), None)]
-    known = [o.name for o in spec.outputs if not o.series]
-    scalar_names = known if wanted is None else [o for o in wanted if o in known]
+    known = spec.scalar_outputs
+    scalar_names = spec.scalar_output_names if wanted is None else [o for o in wanted if o in known]
     # per output: a float column (NaN where not computed), or an object column (None) for
     # texts and flags that miss points, filled from the array groups and the looped points
     columns: dict[str, np.ndarray] = {}
@@ -921,8 +921,7 @@ def sweep(
         if isinstance(first_refusal, InputOutOfRange) and first_refusal.field != vary:
             raise first_refusal  # the fixed inputs themselves are out of range
         notes.append("no point of the sweep could be computed")
-    declared = set(known)
-    order = [o for o in scalar_names if o in computed] + [o for o in computed if o not in declared]
+    order = [o for o in scalar_names if o in computed] + [o for o in computed if o not in known]
     # one array group and no loop: its count is known; else count the codes
     counts = counts_of_groups if not looped and len(given) <= 1 else _rung_counts(codes, names)
     rung, mixed = _rung_summary(counts)
@@ -932,7 +931,7 @@ def sweep(
         ran = _declared(spec, name)
         if ran is not None and ran.estimate_caveat and ran.estimate_caveat not in notes:
             notes.append(ran.estimate_caveat)  # the points it ran at: ``rungs``
-    units = {o.name: o.unit for o in spec.outputs}
+    units = spec.units  # the spec's own table: read here, not changed
     # a large sweep does not keep its array path's work alive for its estimates
     kept = scratch if n <= MAX_SWEEP_POINTS else None
 

@@ -687,6 +687,7 @@ class ModelSpec:
     _defaults: dict[str, Any] = field(init=False, repr=False, compare=False)
     _units: dict[str, str] = field(init=False, repr=False, compare=False)
     _scalar_outputs: frozenset[str] = field(init=False, repr=False, compare=False)
+    _scalar_output_names: tuple[str, ...] = field(init=False, repr=False, compare=False)
     _series_outputs: frozenset[str] = field(init=False, repr=False, compare=False)
     _rung_names: tuple[str, ...] = field(init=False, repr=False, compare=False)
     _required: tuple[str, ...] = field(init=False, repr=False, compare=False)
@@ -700,6 +701,7 @@ class ModelSpec:
             "_defaults": {p.name: None if p.required else p.default for p in self.inputs},
             "_units": {o.name: o.unit for o in self.outputs},
             "_scalar_outputs": frozenset(o.name for o in self.outputs if not o.series),
+            "_scalar_output_names": tuple(o.name for o in self.outputs if not o.series),
             "_series_outputs": frozenset(o.name for o in self.outputs if o.series),
             "_rung_names": tuple(r.name for r in self.rungs),
             "_required": tuple(p.name for p in self.inputs if p.required),
@@ -762,6 +764,11 @@ class ModelSpec:
     @property
     def scalar_outputs(self) -> frozenset[str]:
         return self._scalar_outputs
+
+    @property
+    def scalar_output_names(self) -> tuple[str, ...]:
+        """The scalar outputs' names in declaration order (:attr:`scalar_outputs` as a set)."""
+        return self._scalar_output_names
 
     @property
     def series_outputs(self) -> frozenset[str]:
