@@ -733,19 +733,21 @@ def _array_inputs(x: Mapping[str, Any]) -> int | None:
 
 
 def _with_absent(
-    values: dict[str, Any], outputs: tuple[Output, ...], skip: tuple[str, ...] = ()
+    values: dict[str, Any], scalars: tuple[str, ...], skip: tuple[str, ...] = ()
 ) -> dict[str, Any]:
     """``values`` with None for every scalar output the scalar compute does not give here.
 
     The array paths mirror the scalar compute's branches (which outputs exist depends only
     on inputs that are the same at every point), so an output they leave out is one the
     scalar compute leaves out too: None tells :func:`engine.core.points.vector` so, sparing a
-    scalar run to find out. ``skip``: outputs left out for speed (the caller loops if asked).
+    scalar run to find out. ``scalars``: the spec's scalar outputs
+    (:attr:`ModelSpec.scalar_output_names`); ``skip``: outputs left out for speed (the caller
+    loops if asked).
     """
     out: dict[str, Any] = dict(values)
-    for o in outputs:
-        if not o.series and o.name not in out and o.name not in skip:
-            out[o.name] = None
+    for name in scalars:
+        if name not in out and name not in skip:
+            out[name] = None
     return out
 
 
@@ -826,7 +828,7 @@ def _vectorized_ball(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
         values = _masked({k: v for k, v in values.items() if v is not None}, ok)
     return Result(
-        values=_with_absent(values, BALL_CLUTCH.outputs, skip),
+        values=_with_absent(values, BALL_CLUTCH.scalar_output_names, skip),
         rung=ctx.rung,
         error_estimate=None,
         notes=[
@@ -1379,7 +1381,7 @@ def _vectorized_setting(x: Mapping[str, Any], ctx: RunContext) -> Result:
         )
         values = _masked(v, ok)
     return Result(
-        values=_with_absent(values, BALL_CLUTCH_SETTING.outputs),
+        values=_with_absent(values, BALL_CLUTCH_SETTING.scalar_output_names),
         rung=ctx.rung,
         error_estimate=None,
         notes=refusals,
