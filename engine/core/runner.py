@@ -651,7 +651,7 @@ def run(
             continue
         kind = type(value)
         if kind is float:  # the common case (a float subclass, np.float64, goes below)
-            if not isfinite(value):
+            if not isfinite(value):  # type: ignore[arg-type]  # a float: its type is float
                 notes.append(f"{name} could not be computed for these inputs (non-finite); null")
                 value = None
         elif not (kind is int or kind is str or kind is bool or value is None):
