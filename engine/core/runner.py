@@ -178,34 +178,48 @@ class SweepResult:
     error_array: np.ndarray = field(default_factory=lambda: np.empty(0))
 
     @classmethod
-    def _of(cls, errors: Callable[[], np.ndarray], **fields: Any) -> SweepResult:
-        """A sweep whose ``error_array`` is ``errors()``, made when first read."""
+    def _of(
+        cls,
+        errors: Callable[[], np.ndarray],
+        codes: Callable[[], np.ndarray] | None = None,
+        **fields: Any,
+    ) -> SweepResult:
+        """A sweep whose ``error_array`` is ``errors()``, made when first read; with
+        ``codes``, its ``rung_codes`` are ``codes()``, made when first read too (a column of
+        the sweep's own: a caller that reads only the columns does not pay for it)."""
         self = cls(**fields)
-        del self.__dict__["error_array"]
-        self.__dict__["_errors"] = errors
+        made = self.__dict__
+        del made["error_array"]
+        made["_errors"] = errors
+        if codes is not None:
+            del made["rung_codes"]
+            made["_codes"] = codes
         return self
 
-    if not TYPE_CHECKING:  # the type checker sees the field as declared
+    if not TYPE_CHECKING:  # the type checker sees the fields as declared
 
         def __getattr__(self, name: str) -> Any:
-            """``error_array`` of a sweep :meth:`_of` made, on its first reading."""
+            """``error_array`` or ``rung_codes`` of a sweep :meth:`_of` made, on its first
+            reading."""
             made = self.__dict__
-            errors = made.get("_errors")
-            if errors is None or name != "error_array":
+            key = _LATER.get(name)
+            maker = None if key is None else made.get(key)
+            if maker is None:
                 # another thread may have made it since this lookup missed it
                 if name in made:
                     return made[name]
                 raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
-            made["error_array"] = value = errors()
-            made.pop("_errors", None)
+            made[name] = value = maker()
+            made.pop(key, None)
             return value
 
     def __getstate__(self) -> dict[str, Any]:
-        """The fields, ``error_array`` made if it was not yet (its maker is a closure,
-        which does not pickle)."""
-        if "_errors" in self.__dict__:
-            self.error_array  # noqa: B018  (made now, kept in __dict__)
-        return {k: v for k, v in self.__dict__.items() if k != "_errors"}
+        """The fields, ``error_array`` and ``rung_codes`` made if they were not yet (their
+        makers are closures, which do not pickle)."""
+        for name, key in _LATER.items():
+            if key in self.__dict__:
+                getattr(self, name)  # made now, kept in __dict__
+        return {k: v for k, v in self.__dict__.items() if k not in _MAKERS}
 
     @functools.cached_property
     def values(self) -> list[float]:
@@ -228,6 +242,12 @@ class SweepResult:
     @functools.cached_property
     def error_estimates(self) -> list[float | None]:
         return _listed(self.error_array)  # type: ignore[return-value]
+
+
+#: The fields of :class:`SweepResult` that :meth:`SweepResult._of` may leave to their first
+#: reading, each with the key of its maker.
+_LATER = {"error_array": "_errors", "rung_codes": "_codes"}
+_MAKERS = frozenset(_LATER.values())
 
 
 def _listed(column: np.ndarray) -> list[Value]:
@@ -786,8 +806,10 @@ def sweep(
     computed: dict[str, None] = {}  # the outputs given, in the order first given
     names = list(spec.rung_names)
     # the rung of each point, an index into names (-1 where refused): made at the first
-    # group that gives values, or before the loop
+    # group that gives values, or before the loop; where one rung ran at every point
+    # (``one_rung``, the common case), when first read
     codes: np.ndarray | None = None
+    one_rung: int | None = None
     # for the error estimates, made when read: (rung, its points or None, where refused)
     given: list[tuple[int, np.ndarray | None, np.ndarray | None]] = []
     looped_errors: dict[int, float] = {}
@@ -850,10 +872,13 @@ def sweep(
                     every_finite = bool(some_finite.all())
             _put(columns, name, column, sel, whole)
         bad = None if some_finite is None or every_finite else ~some_finite
-        if codes is None and whole and bad is None:
-            codes = _one_rung(n, k)  # the common case: one rung ran at every point
+        if codes is None and one_rung is None and whole and bad is None:
+            one_rung = k  # the common case: one rung ran at every point
         else:
-            codes = np.full(n, -1, dtype=np.int8) if codes is None else codes
+            if codes is None:
+                codes = (
+                    np.full(n, -1, dtype=np.int8) if one_rung is None else _one_rung(n, one_rung)
+                )
             codes[slice(None) if whole else sel] = k if bad is None else np.where(bad, -1, k)
         given.append((k, None if whole else sel, bad))
         refused_here = 0 if bad is None else int(np.count_nonzero(bad))
@@ -868,11 +893,12 @@ def sweep(
                 warnings.append(w)
     if bad_total:
         notes.append(f"{bad_total} of {n} points could not be computed; null there")
-    if codes is None:  # no group gave values: the loop sets the points it computes
-        codes = np.full(n, -1, dtype=np.int8)
     deadline = None if budget_s is None else start + budget_s
     first_refusal: EngineError | None = None
     looped = [] if loop is None else np.flatnonzero(loop).tolist()
+    if codes is None and (one_rung is None or looped):
+        # no group gave values (the loop sets the points it computes), or points loop
+        codes = np.full(n, -1, dtype=np.int8) if one_rung is None else _one_rung(n, one_rung)
     any_point = n - len(looped) > 0
     for count, j in enumerate(looped):
         if cancel is not None and cancel.is_set():
@@ -909,6 +935,7 @@ def sweep(
         any_point = True
         if point.rung not in names:
             names.append(point.rung)
+        assert codes is not None  # made above wherever points loop
         codes[j] = names.index(point.rung)
         looped_errors[j] = np.nan if point.error_estimate is None else point.error_estimate
         for name, v in point.results.items():
@@ -923,7 +950,11 @@ def sweep(
         notes.append("no point of the sweep could be computed")
     order = [o for o in scalar_names if o in computed] + [o for o in computed if o not in known]
     # one array group and no loop: its count is known; else count the codes
-    counts = counts_of_groups if not looped and len(given) <= 1 else _rung_counts(codes, names)
+    counts = (
+        counts_of_groups
+        if codes is None or (not looped and len(given) <= 1)
+        else _rung_counts(codes, names)
+    )
     rung, mixed = _rung_summary(counts)
     if asked == "auto" and not mixed and rung:
         notes.insert(0, f"auto: chose {rung!r} at every point (tolerance {tol:.2g})")
@@ -963,8 +994,13 @@ def sweep(
             out[j] = e
         return out
 
+    later: Callable[[], np.ndarray] | None = None
+    if codes is None:  # one rung at every point, no point looped: the codes made when read
+        assert one_rung is not None
+        later = functools.partial(_one_rung, n, one_rung)
     result = SweepResult._of(
         errors,
+        later,
         model=spec.name,
         vary=vary,
         value_array=arr,
