@@ -1821,47 +1821,32 @@ _LOADED = False
 
 
 def _kernels_loaded() -> bool:
-    """Whether both kernels are loaded; asked once a design, so the answer is kept once yes.
+    """Whether the cycle's compiled driver is loaded; asked once a design, so the answer is
+    kept once yes.
 
-    (A numba dispatcher's ``signatures`` costs tens of µs a look: a design asked it up to
-    three times.)
+    (A numba dispatcher's ``signatures`` costs tens of µs a look.)
     """
     global _LOADED
     if not _LOADED:
-        _LOADED = all(
-            getattr(k, "signatures", None) != []
-            for k in (_advance_c, _one_sided_c, _gfun_c, _stages_c)
-        )
+        _LOADED = getattr(_stages_c, "signatures", None) != []
     return _LOADED
 
 
 def _ensure_compiled(p: np.ndarray) -> float:
-    """Load (or compile) the kernels now if they are not yet; returns the seconds it took.
+    """Load (or compile) the cycle's kernels now if they are not yet; returns the seconds it
+    took.
 
-    The cycle kernel (stage 1's), the compiled driver of stages 2 to 4 (:func:`_stages`,
-    with the cycle kernel and the one-sided stage 3's it calls) and the one-sided stage 3's
-    and the event function alone (a test or a caller may call them).
+    The one compiled function a design calls, :func:`_stages` (the cycle kernel, the
+    one-sided stage 3's and the event function it calls are compiled into it; called alone,
+    by a test, they load their own).
     """
     if _kernels_loaded():
         return 0.0
     start = time.perf_counter()
-    buf = np.empty(1)
-    if getattr(_advance_c, "signatures", None) == []:
-        _advance_c(S2, p, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-6, 0, 1.0,
-                   *_events((0, 1.0, 0.0, 1.0, 1.0)), False, 0, buf, buf, buf, buf, 0)  # fmt: skip
-    if getattr(_gfun_c, "signatures", None) == []:
-        _gfun_c(S3, 4, p, 0.0, 0.0, 0.0, 0.0, 0.0)
-    if getattr(_one_sided_c, "signatures", None) == []:
-        st = np.zeros(_U_NI, dtype=np.int64)
-        st[_U_PHASE], st[_U_SEGS] = 2, _MAX_SWITCHES  # returns at once (too many segments)
-        flags = np.zeros(4, dtype=np.bool_)
-        _one_sided_c(np.ones(U_NPAR), np.zeros((4, 4)), np.zeros(_U_NF), st, flags,
-                     flags.copy(), np.zeros(4), np.zeros(4), buf, buf, buf, buf)  # fmt: skip
-    if getattr(_stages_c, "signatures", None) == []:
-        iw = np.zeros(_I_N, dtype=np.int64)
-        iw[_I_PHASE] = _P_DONE  # returns at once
-        _stages_c(p, np.zeros(_C_N), np.ones(U_NPAR), np.zeros((4, 4)), np.zeros(_F_N), iw,
-                  np.zeros(8, dtype=np.bool_), *_NO_BUFFERS, _NO_PARTS)  # fmt: skip
+    iw = np.zeros(_I_N, dtype=np.int64)
+    iw[_I_PHASE] = _P_DONE  # returns at once
+    _stages_c(p, np.zeros(_C_N), np.ones(U_NPAR), np.zeros((4, 4)), np.zeros(_F_N), iw,
+              np.zeros(8, dtype=np.bool_), *_NO_BUFFERS, _NO_PARTS)  # fmt: skip
     return time.perf_counter() - start
 
 
