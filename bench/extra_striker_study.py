@@ -4,9 +4,9 @@ Issue 35's target: a 10⁴-design simulation study of the striker's reference de
 (power spring rate and preload, roller mass, motor torque; uniform, Monte Carlo) at the
 product's default tolerance spends ≤ 10 % beyond its kernels' time. The study runs in
 process with the simulation rung named. The compiled kernels
-(``striker_cycle._advance_c``: stage 1's; ``_stages_c``: stages 2 to 4 with the logic
-between their events, the cycle kernel and ``_one_sided_c``, the one-sided stage 3 with its
-event loop and contact sets, which it calls; ``_one_sided_c`` where called alone) are
+(``striker_cycle._stages_c``: the cycle from lift-off, the logic between the stages'
+events with the calls of the cycle kernel ``_advance_c`` and of ``_one_sided_c``, the
+one-sided stage 3 with its event loop and contact sets; those two where called alone) are
 wrapped for the run by a counter that adds up the CPU time of each call; everything else
 (the stages' set-up from the inputs, the runner, validation, the error estimate, notes, the
 summary) is the overhead.

@@ -2445,9 +2445,9 @@ _I_N = _I_U + _U_NI
  _R_STEPS3, _R_STEPSU, _R_STEPS4, _R_U) = range(12)  # fmt: skip
 # stage 3's event rows
 (_L_HOME, _L_BOTTOM, _L_CLEAR, _L_PULL, _L_STOP, _L_LEAVE, _L_STUCK) = range(7)  # fmt: skip
-#: The most stage events the driver's record holds (stages 2 and 3 64 rounds each, stage 4
-#: and the one-sided stage 3).
-_PARTS = 130
+#: The most parts the driver's record holds: stage 1, stages 2 and 3 64 rounds each, the
+#: one-sided stage 3 and stage 4.
+_PARTS = 1 + 64 + 64 + 1 + 1
 
 
 def _row(fw, iw, e, kind, c0, c1, level, way):  # type: ignore[no-untyped-def]
