@@ -2806,8 +2806,10 @@ def _stages(p, c, pu, jac, fw, iw, flags, rt, rw, rq0, rq1, parts):  # type: ign
 _stages_c = jit(_stages, error_model="numpy")
 
 
-def _one_sided_notes(fs: list[float], st: list[int]) -> list[str]:
-    r"""The note of a stage 3 that went one-sided, from its ``fs`` and ``st`` (:func:`_one_sided`).
+def _one_sided_notes(left2: float, left3: float, first: int, free_both: int) -> list[str]:
+    r"""The note of a stage 3 that went one-sided, from its ``fs`` and ``st`` (:func:`_one_sided`):
+    when face B and face A let the rollers go (NaN: never), the face that went first, how
+    often the rollers flew free of both.
 
     Stage 3 with the rollers as free bodies between the cones: four coordinates
     :math:`q = (y_h, y_s, x - x_0, y_r)`, the n rollers moving as one (mass :math:`n m_p`,
@@ -2821,15 +2823,19 @@ def _one_sided_notes(fs: list[float], st: list[int]) -> list[str]:
     hold, this is the two-degree-of-freedom stage 3 of the module notes. :func:`_stages`
     starts it where a face would have to pull and runs its event loop (:func:`_one_sided`).
     """
-    left = {i: fs[6 + i] for i in (2, 3) if not math.isnan(fs[6 + i])}
-    if not left:
-        return []
-    first = st[_U_FIRST]
-    if len(left) == 2 and left[5 - first] < left[first]:
-        first = 5 - first
-    free_both = st[_U_FREE]
+    if left2 != left2:  # NaN: face B never let go
+        if left3 != left3:
+            return []
+        first, at = 3, left3
+    elif left3 != left3:
+        first, at = 2, left2
+    else:  # both: the first to let go (the one the kernel noted first where they tie)
+        at = left2 if first == 2 else left3
+        other = left3 if first == 2 else left2
+        if other < at:
+            first, at = 5 - first, other
     return [
-        f"stage 3: {left[first] * 1e3:.3g} ms after the blow {CONTACTS[first]} would have "
+        f"stage 3: {at * 1e3:.3g} ms after the blow {CONTACTS[first]} would have "
         "to pull the rollers; it lets them go and the return is followed with one-sided "
         "contacts (the rollers free between the cones, a plastic catch where a gap closes)"
         + (f"; they flew free of both faces {free_both} time(s)" if free_both else "")
@@ -3068,7 +3074,10 @@ def simulate_cycle(
         c_b = (big * x["gravity"] + c1 * z_off - c3 * lam3) / (c1 + c3)
         max_travel = max(max_travel, h2, 2.0 * c_b)
     if iw[_I_ONE_SIDED]:
-        notes.extend(_one_sided_notes(fw[_F_U : _F_U + _U_NF].tolist(), iw[_I_U:_I_N].tolist()))
+        left2, left3 = fw[_F_U + _U_LEFT2 : _F_U + _U_LEFT3 + 1].tolist()
+        notes.extend(
+            _one_sided_notes(left2, left3, int(iw[_I_U + _U_FIRST]), int(iw[_I_U + _U_FREE]))
+        )
     if math.isinf(t_home):
         warnings.append(
             "the return spring does not bring the striker home: the balls cannot re-lock it"
