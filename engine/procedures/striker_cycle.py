@@ -123,7 +123,10 @@ Numerics: one compiled fixed-step RK4 kernel (numba) for every mode, 200 steps
 per shortest natural period of the mode, with every event (a level of a
 position, checked on the cubic Hermite interpolant for end crossings *and*
 interior grazes; or a sign change of a velocity or contact reaction) located
-by bisection on the cubic and polished by Newton on a real RK4 sub-step. The
+by bisection on the cubic and polished by Newton on a real RK4 sub-step. One compiled
+function drives the modes from lift-off to the re-lock (:func:`_stages`); the Python
+around it works out what the stages take from the inputs and does the refusals, the
+clock and the one-sided stage 3's plastic catches. The
 closed forms of :mod:`engine.physics.rare_impact` are the cheap rung; their error
 against this simulation is measured in the tests over a grid of designs.
 """
@@ -2390,7 +2393,7 @@ _one_sided_c = jit(_one_sided, error_model="numpy")
 
 
 # ---------------------------------------------------------------------------
-# Stages 2 to 4 in one compiled call: the driver between the kernels' events
+# The cycle from lift-off in one compiled call: the driver between the kernels' events
 # ---------------------------------------------------------------------------
 
 # the per-design numbers the driver is handed (:func:`simulate_cycle` works them out from
@@ -2501,7 +2504,8 @@ _part_c = jit(_part, error_model="numpy")
 
 
 def _stages(p, c, pu, jac, fw, iw, flags, rt, rw, rq0, rq1, parts):  # type: ignore[no-untyped-def]
-    """Stages 2 to 4 of :func:`simulate_cycle` from the release, compiled (module notes).
+    """The cycle of :func:`simulate_cycle` from lift-off (stage 1's integration to the
+    release, stages 2 to 4), compiled (module notes).
 
     ``p``: the cycle kernel's parameters; ``c``: the design's numbers (``_C_*``); ``pu``,
     ``jac``: the one-sided stage 3's parameters and constraint Jacobian; ``fw``, ``iw``: the
