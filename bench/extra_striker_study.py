@@ -170,7 +170,7 @@ def measure() -> list[dict[str, Any]]:
             f"rungs {f['rungs']}; per design beyond the kernels' "
             f"{f['kernel_s'] / n * 1e6:.0f} µs: "
             + ", ".join(f"{k} {v * 1e6:.0f} µs" for k, v in f["layers_s"].items())
-            + f" (the cycle's Python driver around its {f['calls'] / n:.0f} kernel calls; "
+            + f" (the cycle's Python driver around its {f['calls'] / n:.0f} kernel call(s); "
             "a point's run with the model's outputs, error estimate and verdicts; the "
             "study's loop with its validation)",
         }
