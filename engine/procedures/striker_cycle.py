@@ -106,7 +106,7 @@ auxiliary :math:`c_2^+(\lambda_2 - y_{sh})` the shaft, return
   + \tfrac12 n m_p(\dot x^2 + \dot y_r^2)`;
   the half-coupling's stop at :math:`y_h = 0` is plastic (its generalised
   impulse only). The faces can only push: where one would have to pull a roller, the
-  rollers become free bodies :math:`(x, y_r)` between the cones (:func:`_stage3_one_sided`:
+  rollers become free bodies :math:`(x, y_r)` between the cones (:func:`_one_sided_notes`:
   four one-sided contacts, the stop, the jaws' bottom and the two faces, each leaving when
   its reaction would pull and caught plastically when its gap closes). The return is
   over when the striker has come back the jaw height (:math:`y_s = h_2 - h_3`, the
@@ -123,7 +123,10 @@ Numerics: one compiled fixed-step RK4 kernel (numba) for every mode, 200 steps
 per shortest natural period of the mode, with every event (a level of a
 position, checked on the cubic Hermite interpolant for end crossings *and*
 interior grazes; or a sign change of a velocity or contact reaction) located
-by bisection on the cubic and polished by Newton on a real RK4 sub-step. The
+by bisection on the cubic and polished by Newton on a real RK4 sub-step. One compiled
+function drives the modes from lift-off to the re-lock (:func:`_stages`); the Python
+around it works out what the stages take from the inputs and does the refusals, the
+clock and the one-sided stage 3's plastic catches. The
 closed forms of :mod:`engine.physics.rare_impact` are the cheap rung; their error
 against this simulation is measured in the tests over a grid of designs.
 """
@@ -134,6 +137,7 @@ import functools
 import itertools
 import math
 import time
+import types
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any, NamedTuple, TypeVar
@@ -1820,41 +1824,32 @@ _LOADED = False
 
 
 def _kernels_loaded() -> bool:
-    """Whether both kernels are loaded; asked once a design, so the answer is kept once yes.
+    """Whether the cycle's compiled driver is loaded; asked once a design, so the answer is
+    kept once yes.
 
-    (A numba dispatcher's ``signatures`` costs tens of µs a look: a design asked it up to
-    three times.)
+    (A numba dispatcher's ``signatures`` costs tens of µs a look.)
     """
     global _LOADED
     if not _LOADED:
-        _LOADED = all(
-            getattr(k, "signatures", None) != [] for k in (_advance_c, _one_sided_c, _gfun_c)
-        )
+        _LOADED = getattr(_stages_c, "signatures", None) != []
     return _LOADED
 
 
 def _ensure_compiled(p: np.ndarray) -> float:
-    """Load (or compile) the kernels now if they are not yet; returns the seconds it took.
+    """Load (or compile) the cycle's kernels now if they are not yet; returns the seconds it
+    took.
 
-    The cycle kernel, the one-sided stage 3's (a design finds out only in stage 3 whether
-    it needs the latter, when its deadline is already running) and the event function the
-    driver asks at stage 3's start.
+    The one compiled function a design calls, :func:`_stages` (the cycle kernel, the
+    one-sided stage 3's and the event function it calls are compiled into it; called alone,
+    by a test, they load their own).
     """
     if _kernels_loaded():
         return 0.0
     start = time.perf_counter()
-    buf = np.empty(1)
-    if getattr(_advance_c, "signatures", None) == []:
-        _advance_c(S2, p, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1e-6, 0, 1.0,
-                   *_events((0, 1.0, 0.0, 1.0, 1.0)), False, 0, buf, buf, buf, buf, 0)  # fmt: skip
-    if getattr(_gfun_c, "signatures", None) == []:
-        _gfun_c(S3, 4, p, 0.0, 0.0, 0.0, 0.0, 0.0)
-    if getattr(_one_sided_c, "signatures", None) == []:
-        st = np.zeros(_U_NI, dtype=np.int64)
-        st[_U_PHASE], st[_U_SEGS] = 2, _MAX_SWITCHES  # returns at once (too many segments)
-        flags = np.zeros(4, dtype=np.bool_)
-        _one_sided_c(np.ones(U_NPAR), np.zeros((4, 4)), np.zeros(_U_NF), st, flags,
-                     flags.copy(), np.zeros(4), np.zeros(4), buf, buf, buf, buf)  # fmt: skip
+    iw = np.zeros(_I_N, dtype=np.int64)
+    iw[_I_PHASE] = _P_DONE  # returns at once
+    _stages_c(p, np.zeros(_C_N), np.ones(U_NPAR), np.zeros((4, 4)), np.zeros(_F_N), iw,
+              np.zeros(8, dtype=np.bool_), *_NO_BUFFERS, _NO_PARTS)  # fmt: skip
     return time.perf_counter() - start
 
 
@@ -1886,6 +1881,7 @@ def _params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
 
 
 _NO_BUFFERS = (np.empty(1), np.empty(1), np.empty(1), np.empty(1))
+_NO_PARTS = np.zeros((1, 3), dtype=np.int64)
 
 
 class _Recorder:
@@ -1894,12 +1890,6 @@ class _Recorder:
     def __init__(self, on: bool) -> None:
         self.on = on
         self.parts: list[tuple[int, np.ndarray, np.ndarray, np.ndarray, np.ndarray]] = []
-
-    def buffers(self) -> tuple[np.ndarray, ...]:
-        if not self.on:  # stride 0: the kernels never write them
-            return _NO_BUFFERS
-        n = _SERIES_POINTS + 16
-        return np.empty(n), np.empty(n), np.empty(n), np.empty(n)
 
     def add(self, mode: int, bufs: tuple[np.ndarray, ...], n: int) -> None:
         if self.on and n > 0:
@@ -1960,17 +1950,9 @@ class _Run:
     max_steps: int
     steps: int = 0
 
-    def go(
-        self,
-        mode: int,
-        state: tuple[float, float, float, float, float, float],
-        h: float,
-        t_end: float,
-        events: tuple[np.ndarray, ...],
-        expected: float,
-        clamp0: bool = False,
-    ) -> tuple[int, int, tuple[float, float, float, float, float, float]]:
-        """Run ``mode`` from ``state`` = (t, ω, q0, q1, v0, v1) to its first event."""
+    def admit(self, expected: float) -> None:
+        """Refuse a stage of ``expected`` RK4 steps up front: a count that is not finite, or
+        one past the step budget (BudgetExceeded)."""
         if not math.isfinite(expected):
             # a stage whose period has no end (a spring of rate ~0 under a shaft heavy enough
             # to beat the friction) has no step count: NaN passed the comparison below and the
@@ -2000,79 +1982,73 @@ class _Run:
                 expected_steps=self.steps + expected,
                 step_budget=self.max_steps,
             )
-        rec = self.rec
-        stride = max(1, int(expected / _SERIES_POINTS * 4)) if rec.on else 0
-        bufs = rec.buffers() if rec.on else _NO_BUFFERS
-        n_rec = 0
-        t, w, q0, q1, v0, v1 = state
-        measure = type(self) is _Run
-        while True:
-            if self.deadline is not None and time.perf_counter() > self.deadline:
-                raise BudgetExceeded(
-                    f"the cycle simulation stopped at its time budget after {self.steps} steps",
-                    field="fidelity",
-                )
-            chunk = min(_CHUNK, self.max_steps - self.steps)
-            if chunk <= 0:
-                raise BudgetExceeded(
-                    f"the cycle simulation used its budget of {self.max_steps} steps; use "
-                    "fidelity 'closed_form'",
-                    field="fidelity",
-                )
-            began = time.perf_counter()
-            status, which, t, w, q0, q1, v0, v1, used, n_rec = _advance_c(
-                mode, self.p, t, w, q0, q1, v0, v1, h, chunk, t_end, *events,
-                clamp0, stride, *bufs, n_rec,
-            )  # fmt: skip
-            # (a warm StepCost folds in chunks of 10,000 steps or more alone)
-            if measure and (used >= 10_000 or not _COST.warm):
-                _COST.measured(used, time.perf_counter() - began)
-            self.steps += used
-            if status != 0:
-                break
-        # a finite sum has finite terms (an inf or NaN term makes it inf or NaN): one look
-        if not math.isfinite(t + w + q0 + q1 + v0 + v1):
-            fin = math.isfinite
-            if not (fin(t) and fin(w) and fin(q0) and fin(q1) and fin(v0) and fin(v1)):
-                raise SolverFailed("the cycle integration diverged", field="fidelity")
-        if rec.on:
-            rec.add(mode, bufs, n_rec)
-        return status, which, (t, w, q0, q1, v0, v1)
 
-    def go_one_sided(
-        self, p: np.ndarray, jac: np.ndarray, fs: np.ndarray, st: np.ndarray, q: np.ndarray,
-        v: np.ndarray,
-    ) -> None:  # fmt: skip
-        """Run the one-sided stage 3 (:func:`_one_sided`) from the state in ``fs``, ``st``,
-        ``q`` and ``v`` until the striker is home or ``t_end``; they are updated in place.
+    def past_deadline(self) -> BudgetExceeded:
+        return BudgetExceeded(
+            f"the cycle simulation stopped at its time budget after {self.steps} steps",
+            field="fidelity",
+        )
 
-        The kernel comes back here for what it does not do itself: the time budget's look
-        at the clock (between chunks of :data:`_CONTACT_CHUNK` steps), a plastic catch's
-        impulses (:func:`_catch`) and the refusals.
+    def used_up(self) -> BudgetExceeded:
+        return BudgetExceeded(
+            f"the cycle simulation used its budget of {self.max_steps} steps; use fidelity "
+            "'closed_form'",
+            field="fidelity",
+        )
+
+    def stages(
+        self, c: np.ndarray, pu: np.ndarray, jac: np.ndarray, fw: np.ndarray, iw: np.ndarray,
+        bufs: tuple[np.ndarray, ...], parts: np.ndarray,
+    ) -> int:  # fmt: skip
+        """Run the cycle from lift-off (:func:`_stages`) to its end; 0, or the code of what
+        the caller refuses: no release by stage 1's end (``_R_NO_RELEASE``), a stage whose
+        step sizes it could not work out (``_R_STEPS*``).
+
+        The compiled driver comes back here for what it does not do itself: the time
+        budget's look at the clock (before it starts and between chunks: the kernels' steps
+        are bounded by the step budget, which is what the time left affords), a plastic
+        catch's impulses in the one-sided stage 3 (:func:`_catch`) and the refusals.
         """
-        active = np.zeros(4, dtype=np.bool_)
-        cand = np.zeros(4, dtype=np.bool_)
-        if self.rec.on:  # room for every segment's points
-            n = (_SERIES_POINTS + 16) * _MAX_SWITCHES
-            bufs = (np.empty(n), np.empty(n), np.empty(n), np.empty(n))
-        else:  # stride 0: the kernel writes at most an event's point there, read by no one
-            bufs = _NO_BUFFERS
-        st[_U_REC] = 1 if self.rec.on else 0
-        st[_U_STEPS], st[_U_MAX] = self.steps, self.max_steps
+        flags = np.zeros(8, dtype=np.bool_)  # the one-sided stage 3's active, candidate contacts
+        measure = type(self) is _Run and _kernels_loaded()  # not a call that compiles
         while True:
             if self.deadline is not None and time.perf_counter() > self.deadline:
-                raise BudgetExceeded(
-                    f"the cycle simulation stopped at its time budget after {self.steps} steps",
-                    field="fidelity",
-                )
-            code = _one_sided_c(p, jac, fs, st, active, cand, q, v, *bufs)
-            self.steps = int(st[_U_STEPS])
-            if code == _U_DONE:
-                break
+                raise self.past_deadline()
+            iw[_I_USED] = iw[_I_LONG] = 0
+            before = self.steps
+            began = time.perf_counter()
+            code = self.driver()(self.p, c, pu, jac, fw, iw, flags, *bufs, parts)
+            self.steps = int(iw[_I_STEPS])
+            used = int(iw[_I_USED])
+            # a call that came back after a chunk of 10,000 steps or more (the first in the
+            # process: to mark the cost warm), with the cycle kernel's steps alone (no one-sided
+            # stage 3's among them), as the Python driver folded in its chunks
+            if (
+                measure
+                and (iw[_I_LONG] or not _COST.warm)
+                and self.steps - before == used
+                and used > 0
+            ):
+                _COST.measured(used, time.perf_counter() - began)
+            if code == _R_DONE:
+                return 0
+            if code == _R_CHUNK:
+                continue
+            if code in (_R_UNCOUNTED, _R_BUDGET):
+                self.admit(float(fw[_F_EXPECTED]))  # refuses it
+            if code == _R_USED:
+                raise self.used_up()
+            if code == _R_DIVERGED:
+                raise _diverged()
+            if code < _R_U:  # no release, a stage's step sizes (_R_STEPS2 ...)
+                return code
+            code -= _R_U
             if code == _U_CATCH:
-                v[:] = _catch(p, v, [i for i in range(4) if cand[i]], jac, float(fs[_U_VSCALE]))
+                v = fw[_F_V : _F_V + 4]
+                cand = [i for i in range(4) if flags[4 + i]]
+                v[:] = _catch(pu, v, cand, jac, float(fw[_F_U + _U_VSCALE]))
             elif code == _U_BUDGET:
-                expected = float(fs[_U_EXPECTED])
+                expected = float(fw[_F_U + _U_EXPECTED])
                 raise BudgetExceeded(
                     f"the cycle simulation would take about {self.steps + expected:.2g} RK4 "
                     f"steps in stage 3 (budget {self.max_steps:.2g}); use fidelity "
@@ -2082,11 +2058,7 @@ class _Run:
                     step_budget=self.max_steps,
                 )
             elif code == _U_USED:
-                raise BudgetExceeded(
-                    f"the cycle simulation used its budget of {self.max_steps} steps; use "
-                    "fidelity 'closed_form'",
-                    field="fidelity",
-                )
+                raise self.used_up()
             elif code == _U_DIVERGED:
                 raise SolverFailed("the cycle integration diverged in stage 3", field="fidelity")
             elif code == _U_NO_SET:
@@ -2100,7 +2072,14 @@ class _Run:
                     field="fidelity",
                 )
             # _U_CHUNK: a look at the clock, then on
-        self.rec.add(S3U, bufs, int(st[_U_NREC]))
+
+    def driver(self) -> Callable[..., int]:
+        """The stages' driver: :func:`_stages` compiled."""
+        return _stages_c
+
+
+def _diverged() -> SolverFailed:
+    return SolverFailed("the cycle integration diverged", field="fidelity")
 
 
 def _contact_params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
@@ -2296,7 +2275,7 @@ _MAX_SWITCHES = 400
 
 
 def _one_sided(p, jac, fs, st, active, cand, q, v, rt, rx, rq0, rq1):  # type: ignore[no-untyped-def]
-    """The one-sided stage 3's event loop (:func:`_stage3_one_sided`), compiled.
+    """The one-sided stage 3's event loop (:func:`_one_sided_notes`), compiled.
 
     Runs from the state in ``fs`` and ``st`` (the ``_U_*`` slots), ``active``, ``q`` and
     ``v``, updating them, until the striker is home or ``t_end`` (returns ``_U_DONE``) or
@@ -2413,66 +2392,520 @@ def _one_sided(p, jac, fs, st, active, cand, q, v, rt, rx, rq0, rq1):  # type: i
 _one_sided_c = jit(_one_sided, error_model="numpy")
 
 
-def _stage3_one_sided(
-    run: _Run,
-    x: Mapping[str, Any],
-    g: Geometry,
-    state: tuple[float, float, float, float, float, float],
-    t_blow: float,
-    t_end: float,
-    clear: float,
-    steps_per_period: int,
-    t_ret: float,
-    matrices: tuple[float, float, float],
-) -> tuple[float, float, list[str]]:
-    r"""Stage 3 from ``state`` with the rollers as free bodies between the cones.
+# ---------------------------------------------------------------------------
+# The cycle from lift-off in one compiled call: the driver between the kernels' events
+# ---------------------------------------------------------------------------
 
-    Four coordinates :math:`q = (y_h, y_s, x - x_0, y_r)`, the n rollers moving as one
-    (mass :math:`n m_p`, point masses), and four one-sided constraints (:data:`CONTACTS`):
-    the half-coupling's stop :math:`y_h \le 0`, the jaws' bottom :math:`y_s \le h_2`, and the
-    two faces, :math:`g_B = y_r - y_h - t_B(x - x_0) \ge 0`,
-    :math:`g_A = y_s - y_r - t_A(x - x_0) \ge 0`. A face that would have to pull lets the
-    rollers go (its reaction's sign change is the event); a gap that closes is a plastic
-    catch (no rebound: the same assumption as the seed's other catches, [002] gives no
-    restitution for the rollers) whose impulses are found with the contacts that stay
-    (:func:`_catch`, :func:`_active_set`). While both faces hold, this is the
-    two-degree-of-freedom stage 3 of the module notes. The event loop is compiled
-    (:func:`_one_sided`). ``matrices``: :func:`_stage3_matrices` of ``x`` and ``g`` (the
-    caller's). Returns (return time, home time, notes) from the blow.
+# the per-design numbers the driver is handed (:func:`simulate_cycle` works them out from
+# the inputs; the driver does the arithmetic that needs the simulated states): stage 1's
+# mode, start (lift-off time and speed), step, end and expected steps; stage 2's catch
+# masses, period, step and span, the rest levels, stage 3's mass matrix, step and span, the
+# jaws' clearing level, the roller kinematics, the one-sided stage 3's tolerance and step,
+# stage 4's drive (1.0 where the auxiliary spring beats the friction), period and step, and
+# whether stage 2's, stage 3's, the one-sided stage 3's and stage 4's steps could be worked
+# out (0.0: their arithmetic raised, and raises again where that stage starts, as when the
+# driver was Python)
+(_C_MODE1, _C_TL, _C_W0, _C_HS1, _C_T1END, _C_N1, _C_LIFT, _C_CATCH, _C_BIG, _C_PER2,
+ _C_H2S, _C_T2, _C_ZOFF, _C_H1, _C_H2, _C_LAM3, _C_M11, _C_M12, _C_M22, _C_H3S, _C_T3,
+ _C_CLEAR, _C_KAP, _C_AH, _C_AS, _C_TOL, _C_HU, _C_DRIVE, _C_PER4, _C_H4, _C_STEPS2,
+ _C_STEPS3, _C_STEPSU, _C_STEPS4, _C_N) = range(35)  # fmt: skip
+# the driver's floats between its returns: the state (t, ω, q0, q1, v0, v1), the running
+# stage's step, end and expected steps, the release's time, speed and half-coupling speed,
+# the blow, the stage-2 reach and the striker's speed where the half-coupling stops, the
+# return, home and re-lock times, stage 4's start; the event rows' columns (kernel order:
+# c0, c1, level, direction); the one-sided stage 3's ``fs``, ``q`` and ``v``
+(_F_T, _F_W, _F_Q0, _F_Q1, _F_V0, _F_V1, _F_H, _F_TEND, _F_EXPECTED, _F_TREL, _F_WREL,
+ _F_VREL, _F_TBLOW, _F_REACH, _F_VSTOP, _F_TRET, _F_THOME, _F_TLOCK, _F_T0) = range(19)  # fmt: skip
+_EV = 8  # room for a stage's event rows
+_F_EC0, _F_EC1, _F_ELVL, _F_EDIR = 19, 19 + _EV, 19 + 2 * _EV, 19 + 3 * _EV
+_F_U = 19 + 4 * _EV
+_F_Q, _F_V = _F_U + _U_NF, _F_U + _U_NF + 4
+_F_N = _F_V + 4
+# ... and its integers: the phase (below), the phase after the running stage's events,
+# the mode, the loop's rounds, the kernel's status and event, steps, step budget, event
+# rows, stride, points in the running buffer, the next free point, recorded parts,
+# recording, the cycle kernel's steps of this call, whether the one-sided stage 3 ran,
+# the plastic stop under q0 (stage 1's rest), whether the call came back after a chunk of
+# 10,000 steps or more; the labels of stage 3's event rows; the kinds of the event rows;
+# the one-sided stage 3's ``st``
+(_I_PHASE, _I_AFTER, _I_MODE, _I_ROUND, _I_STATUS, _I_WHICH, _I_STEPS, _I_MAX, _I_NEV,
+ _I_STRIDE, _I_NREC, _I_BASE, _I_PARTS, _I_REC, _I_USED, _I_ONE_SIDED, _I_CLAMP,
+ _I_LONG) = range(18)  # fmt: skip
+_I_LABEL, _I_KIND = 18, 18 + _EV
+_I_U = 18 + 2 * _EV
+_I_N = _I_U + _U_NI
+# phases: a stage's kernel running; stage 1's start and event; stage 2's start, round and
+# event; the end of stage 2; stage 3's start, round and event; the one-sided stage 3's start
+# and run; the end of stage 3; stage 4's event; done
+(_P_GO, _P_S1, _P_S1_EVENT, _P_S2, _P_S2_ROUND, _P_S2_EVENT, _P_S2_END, _P_S3, _P_S3_ROUND,
+ _P_S3_EVENT, _P_U, _P_U_RUN, _P_S3_END, _P_S4_EVENT, _P_DONE) = range(15)  # fmt: skip
+# what the driver comes back for: done, a chunk's end (a look at the clock; after a chunk
+# of 10,000 steps or more, also its cost), a stage whose steps cannot be counted or that
+# would pass the budget, the budget used, a diverged state, no release by stage 1's end,
+# stage 2's, stage 3's, the one-sided stage 3's or stage 4's steps not worked out; the
+# one-sided stage 3's codes from _R_U on
+(_R_DONE, _R_CHUNK, _R_UNCOUNTED, _R_BUDGET, _R_USED, _R_DIVERGED, _R_NO_RELEASE, _R_STEPS2,
+ _R_STEPS3, _R_STEPSU, _R_STEPS4, _R_U) = range(12)  # fmt: skip
+# stage 3's event rows
+(_L_HOME, _L_BOTTOM, _L_CLEAR, _L_PULL, _L_STOP, _L_LEAVE, _L_STUCK) = range(7)  # fmt: skip
+#: The most parts the driver's record holds: stage 1, stages 2 and 3 64 rounds each, the
+#: one-sided stage 3 and stage 4.
+_PARTS = 1 + 64 + 64 + 1 + 1
+
+
+def _row(fw, iw, e, kind, c0, c1, level, way):  # type: ignore[no-untyped-def]
+    """Event row ``e`` of the running stage (:func:`_events`' columns) into the driver's
+    arrays."""
+    iw[_I_KIND + e] = kind
+    fw[_F_EC0 + e] = c0
+    fw[_F_EC1 + e] = c1
+    fw[_F_ELVL + e] = level
+    fw[_F_EDIR + e] = way
+
+
+_row_c = jit(_row, error_model="numpy", inline=True)
+
+
+def _begin(fw, iw, mode, h, t_end, expected, n_ev, after, clamp0):  # type: ignore[no-untyped-def]
+    """Start ``mode`` from the driver's state (:meth:`_Run.admit`'s checks); 0, or the code to
+    come back with."""
+    fw[_F_EXPECTED] = expected
+    if not math.isfinite(expected):
+        return _R_UNCOUNTED
+    if iw[_I_STEPS] + expected > iw[_I_MAX]:
+        return _R_BUDGET
+    iw[_I_MODE] = mode
+    fw[_F_H] = h
+    fw[_F_TEND] = t_end
+    iw[_I_NEV] = n_ev
+    iw[_I_STRIDE] = max(1, int(expected / _SERIES_POINTS * 4)) if iw[_I_REC] else 0
+    iw[_I_NREC] = 0
+    iw[_I_CLAMP] = clamp0
+    iw[_I_AFTER] = after
+    iw[_I_PHASE] = _P_GO
+    return 0
+
+
+_begin_c = jit(_begin, error_model="numpy")
+
+
+def _part(iw, parts, mode, n):  # type: ignore[no-untyped-def]
+    """File ``n`` recorded points from the next free one under ``mode`` (when recording)."""
+    if iw[_I_REC] and n > 0:
+        k = iw[_I_PARTS]
+        parts[k, 0] = mode
+        parts[k, 1] = iw[_I_BASE]
+        parts[k, 2] = n
+        iw[_I_PARTS] = k + 1
+        iw[_I_BASE] += n
+
+
+_part_c = jit(_part, error_model="numpy")
+
+
+def _stages(p, c, pu, jac, fw, iw, flags, rt, rw, rq0, rq1, parts):  # type: ignore[no-untyped-def]
+    """The cycle of :func:`simulate_cycle` from lift-off (stage 1's integration to the
+    release, stages 2 to 4), compiled (module notes).
+
+    ``p``: the cycle kernel's parameters; ``c``: the design's numbers (``_C_*``); ``pu``,
+    ``jac``: the one-sided stage 3's parameters and constraint Jacobian; ``fw``, ``iw``: the
+    driver's state between its returns (``_F_*``, ``_I_*``); ``flags``: the one-sided stage
+    3's active and candidate contacts; ``rt``…: the record's points, ``parts`` its (mode,
+    first point, points) rows. Runs the stages' kernels (:func:`_advance`,
+    :func:`_one_sided`) and the logic between their events until the cycle is over
+    (``_R_DONE``: the times in ``fw``) or something only the caller does: a look at the
+    clock between chunks (``_R_CHUNK``), a refusal, a plastic catch of the one-sided stage
+    3 (``_R_U`` + its code); the caller then calls again, and the driver goes on where it
+    stopped.
     """
-    p = _contact_params(x, g)
-    t, _, yh, ys, vh, vs = state
-    kap = float(g.kappa)
-    q = np.array([yh, ys, kap * (ys - yh), g.a_h * yh + g.a_s * ys])
-    v = np.array([vh, vs, kap * (vs - vh), g.a_h * vh + g.a_s * vs])
-    scale = _x_scale(run.p)
-    tol = 1e-12 * scale
-    jac = _jacobian_matrix(p)
+    cap = _SERIES_POINTS + 16
+    while True:
+        ph = iw[_I_PHASE]
+        if ph == _P_GO:  # the running stage's kernel, chunk by chunk to its first event
+            chunk = min(_CHUNK, iw[_I_MAX] - iw[_I_STEPS])
+            if chunk <= 0:
+                return _R_USED
+            n = iw[_I_NEV]
+            a = iw[_I_BASE]
+            status, which, t, w, q0, q1, v0, v1, used, n_rec = _advance_c(
+                iw[_I_MODE], p, fw[_F_T], fw[_F_W], fw[_F_Q0], fw[_F_Q1], fw[_F_V0], fw[_F_V1],
+                fw[_F_H], chunk, fw[_F_TEND], iw[_I_KIND:_I_KIND + n], fw[_F_EC0:_F_EC0 + n],
+                fw[_F_EC1:_F_EC1 + n], fw[_F_ELVL:_F_ELVL + n], fw[_F_EDIR:_F_EDIR + n],
+                iw[_I_CLAMP] != 0, iw[_I_STRIDE], rt[a:a + cap], rw[a:a + cap], rq0[a:a + cap],
+                rq1[a:a + cap], iw[_I_NREC],
+            )  # fmt: skip
+            fw[_F_T], fw[_F_W], fw[_F_Q0], fw[_F_Q1], fw[_F_V0], fw[_F_V1] = t, w, q0, q1, v0, v1
+            iw[_I_STEPS] += used
+            iw[_I_USED] += used
+            iw[_I_NREC] = n_rec
+            iw[_I_LONG] = 1 if used >= 10_000 else 0
+            if status == 0:
+                return _R_CHUNK
+            for s in (t, w, q0, q1, v0, v1):
+                if not math.isfinite(s):
+                    return _R_DIVERGED
+            _part_c(iw, parts, iw[_I_MODE], n_rec)
+            iw[_I_STATUS] = status
+            iw[_I_WHICH] = which
+            iw[_I_PHASE] = iw[_I_AFTER]
+            if iw[_I_LONG]:  # its cost is measured (StepCost: chunks of 10,000 steps or more)
+                return _R_CHUNK
+            continue
+        h1 = c[_C_H1]
+        h2 = c[_C_H2]
+        if ph == _P_S1:  # spin-up from lift-off (the half-coupling rested until then)
+            fw[_F_T], fw[_F_W], fw[_F_Q0], fw[_F_Q1] = c[_C_TL], c[_C_W0], 0.0, 0.0
+            fw[_F_V0], fw[_F_V1] = 0.0, 0.0
+            _row_c(fw, iw, 0, 0, 1.0, 0.0, h1, 1.0)  # the release: the half-coupling at h1
+            code = _begin_c(fw, iw, int(c[_C_MODE1]), c[_C_HS1], c[_C_T1END], c[_C_N1], 1,
+                            _P_S1_EVENT, 1)  # fmt: skip
+            if code != 0:
+                return code
+            continue
+        if ph == _P_S1_EVENT:
+            if iw[_I_STATUS] != 1:
+                return _R_NO_RELEASE
+            fw[_F_TREL], fw[_F_WREL], fw[_F_VREL] = fw[_F_T], fw[_F_W], fw[_F_V0]
+            iw[_I_PHASE] = _P_S2
+            continue
+        if ph == _P_S2:  # engagement at constant ω_M, the state carried from the release
+            if c[_C_STEPS2] == 0.0:
+                return _R_STEPS2
+            v_start = -c[_C_LIFT] * fw[_F_VREL] / c[_C_CATCH]
+            iw[_I_MODE] = S2S if v_start < 0.0 else S2
+            fw[_F_T], fw[_F_W], fw[_F_Q0], fw[_F_Q1] = fw[_F_TREL], fw[_F_WREL], 0.0, 0.0
+            fw[_F_V0], fw[_F_V1] = v_start, 0.0
+            fw[_F_TBLOW] = math.inf
+            fw[_F_REACH] = 0.0
+            fw[_F_VSTOP] = 0.0  # the striker's speed where the half-coupling stops (h2 > h1)
+            iw[_I_ROUND] = 0
+            iw[_I_PHASE] = _P_S2_ROUND
+            continue
+        if ph == _P_S2_ROUND:
+            if iw[_I_ROUND] >= 64:
+                iw[_I_PHASE] = _P_S2_END
+                continue
+            iw[_I_ROUND] += 1
+            mode = iw[_I_MODE]
+            if mode == S2S:
+                _row_c(fw, iw, 0, 0, 1.0, 0.0, 0.0, 1.0)  # back at the release: shaft caught
+                _row_c(fw, iw, 1, 0, 1.0, 0.0, -c[_C_LAM3], -1.0)  # return spring leaves
+                _row_c(fw, iw, 2, 0, 1.0, 0.0, -c[_C_LAM3], 1.0)  # contact (kink)
+                _row_c(fw, iw, 3, 1, 0.0, 0.0, 0.0, -1.0)  # turning forward->back: never back
+                n_ev = 4
+            elif mode == S2F:
+                _row_c(fw, iw, 0, 0, 1.0, 0.0, h2, 1.0)  # the blow
+                _row_c(fw, iw, 1, 1, 0.0, 0.0, 0.0, -1.0)  # turning below h2: never engages
+                n_ev = 2
+            else:
+                # beyond h1 the half-coupling is on its stop (h2 > h1); z_off = λ1 + h1 ≥ h1
+                # is then never reached, and for h2 ≤ h1 neither: the rows keep their count
+                level = h1 if h2 > h1 else c[_C_ZOFF]
+                _row_c(fw, iw, 0, 0, 1.0, 0.0, h2, 1.0)  # the blow
+                _row_c(fw, iw, 1, 0, 1.0, 0.0, level, 1.0)  # half-coupling on its stop
+                _row_c(fw, iw, 2, 0, 1.0, 0.0, level, -1.0)
+                _row_c(fw, iw, 3, 1, 0.0, 0.0, 0.0, -1.0)  # turning below h2: never engages
+                _row_c(fw, iw, 4, 0, 1.0, 0.0, 0.0, -1.0)  # back below the release: the shaft
+                n_ev = 5
+            code = _begin_c(fw, iw, mode, c[_C_H2S], fw[_F_TREL] + c[_C_T2],
+                            c[_C_PER2] / c[_C_H2S], n_ev, _P_S2_EVENT, 0)  # fmt: skip
+            if code != 0:
+                return code
+            continue
+        if ph == _P_S2_EVENT:
+            if fw[_F_Q0] > fw[_F_REACH]:
+                fw[_F_REACH] = fw[_F_Q0]
+            iw[_I_PHASE] = _P_S2_ROUND
+            mode = iw[_I_MODE]
+            which = iw[_I_WHICH]
+            if iw[_I_STATUS] != 1:
+                iw[_I_PHASE] = _P_S2_END
+            elif mode == S2S:
+                if which == 0:
+                    iw[_I_MODE] = S2
+                elif which == 3:
+                    iw[_I_PHASE] = _P_S2_END
+            elif mode == S2F:
+                if which == 0:
+                    fw[_F_TBLOW] = fw[_F_T]
+                iw[_I_PHASE] = _P_S2_END  # the blow, or turned back short of h2
+            elif which == 0:
+                fw[_F_TBLOW] = fw[_F_T]
+                iw[_I_PHASE] = _P_S2_END
+            elif which == 1 and h2 > h1:  # the half-coupling stops (plastic); the striker on
+                fw[_F_VSTOP] = fw[_F_V0]
+                iw[_I_MODE] = S2F
+            elif which == 3:
+                iw[_I_PHASE] = _P_S2_END
+            elif which == 4:  # plastic pick-up of the resting shaft
+                fw[_F_V0] = fw[_F_V0] * c[_C_BIG] / c[_C_CATCH]
+                iw[_I_MODE] = S2S
+            continue
+        if ph == _P_S2_END:
+            iw[_I_PHASE] = _P_S3 if math.isfinite(fw[_F_TBLOW]) else _P_DONE
+            continue
+        t_blow = fw[_F_TBLOW]
+        t3_end = t_blow + c[_C_T3]
+        clear = c[_C_CLEAR]
+        if ph == _P_S3:  # return with the rollers; the blow stopped the flywheel and sandwich
+            if c[_C_STEPS3] == 0.0:
+                return _R_STEPS3
+            y_h0 = h2 - h1
+            iw[_I_MODE] = S3H if y_h0 >= 0.0 else S3
+            fw[_F_T], fw[_F_W], fw[_F_Q0], fw[_F_Q1] = t_blow, 0.0, y_h0 if y_h0 < 0.0 else 0.0, h2
+            fw[_F_V0], fw[_F_V1] = 0.0, 0.0
+            fw[_F_TRET] = math.inf
+            fw[_F_THOME] = math.inf
+            iw[_I_ROUND] = 0
+            iw[_I_PHASE] = _P_S3_ROUND
+            continue
+        if ph == _P_S3_ROUND:
+            # while both faces press the rollers, the two-degree-of-freedom stage 3; where one
+            # would have to pull (kind 4), the one-sided stage 3 takes over
+            if iw[_I_ROUND] >= 64:
+                iw[_I_PHASE] = _P_S3_END
+                continue
+            iw[_I_ROUND] += 1
+            mode = iw[_I_MODE]
+            if _gfun_c(mode, 4, p, fw[_F_W], fw[_F_Q0], fw[_F_Q1], fw[_F_V0], fw[_F_V1]) < 0.0:
+                iw[_I_PHASE] = _P_U  # already at a mode's start
+                continue
+            _row_c(fw, iw, 0, 0, 0.0, 1.0, 0.0, -1.0)  # striker home: the balls can re-lock
+            iw[_I_LABEL] = _L_HOME
+            _row_c(fw, iw, 1, 0, 0.0, 1.0, h2, 1.0)  # back on the jaws' bottom (plastic)
+            iw[_I_LABEL + 1] = _L_BOTTOM
+            e = 2
+            if math.isinf(fw[_F_TRET]) and clear > 0.0:
+                _row_c(fw, iw, e, 0, 0.0, 1.0, clear, -1.0)  # clear of the jaws: return over
+                iw[_I_LABEL + e] = _L_CLEAR
+                e += 1
+            _row_c(fw, iw, e, 4, 0.0, 0.0, 0.0, -1.0)  # a face would have to pull a roller
+            iw[_I_LABEL + e] = _L_PULL
+            e += 1
+            if mode == S3:
+                _row_c(fw, iw, e, 0, 1.0, 0.0, 0.0, 1.0)  # half-coupling onto its stop
+                iw[_I_LABEL + e] = _L_STOP
+                e += 1
+            else:
+                _row_c(fw, iw, e, 3, 0.0, 0.0, 0.0, -1.0)  # the stop would pull: it leaves
+                iw[_I_LABEL + e] = _L_LEAVE
+                _row_c(fw, iw, e + 1, 2, 0.0, 0.0, 0.0, 1.0)  # turning above home: stuck
+                iw[_I_LABEL + e + 1] = _L_STUCK
+                e += 2
+            code = _begin_c(fw, iw, mode, c[_C_H3S], t3_end, (t3_end - t_blow) / c[_C_H3S], e,
+                            _P_S3_EVENT, 0)  # fmt: skip
+            if code != 0:
+                return code
+            continue
+        if ph == _P_S3_EVENT:
+            if iw[_I_STATUS] != 1:
+                iw[_I_PHASE] = _P_S3_END
+                continue
+            mode = iw[_I_MODE]
+            label = iw[_I_LABEL + iw[_I_WHICH]]
+            t = fw[_F_T]
+            yh, ys, vh, vs = fw[_F_Q0], fw[_F_Q1], fw[_F_V0], fw[_F_V1]
+            if label == _L_PULL:
+                # a level crossed at the same instant (a spring leaving contact kinks the force)
+                if ys <= 0.0:
+                    label = _L_HOME
+                elif ys >= h2 and vs > 0.0:
+                    label = _L_BOTTOM
+                elif math.isinf(fw[_F_TRET]) and clear > 0.0 and ys <= clear:
+                    label = _L_CLEAR
+                elif mode == S3 and yh >= 0.0 and vh > 0.0:
+                    label = _L_STOP
+            iw[_I_PHASE] = _P_S3_ROUND
+            if label == _L_PULL:  # a face lets the rollers go: one-sided contacts from here
+                iw[_I_PHASE] = _P_U
+            elif label == _L_HOME:
+                fw[_F_THOME] = t - t_blow
+                if math.isinf(fw[_F_TRET]):
+                    fw[_F_TRET] = fw[_F_THOME]
+                iw[_I_PHASE] = _P_S3_END
+            elif label == _L_BOTTOM:
+                m11 = c[_C_M11]
+                fw[_F_V0] = (m11 * vh + c[_C_M12] * vs) / m11 if mode == S3 else 0.0
+                fw[_F_V1] = 0.0
+            elif label == _L_CLEAR:
+                fw[_F_TRET] = t - t_blow
+            elif label == _L_STOP:  # plastic: the stop's impulse acts on y_h alone
+                m22 = c[_C_M22]
+                fw[_F_Q0], fw[_F_V0], fw[_F_V1] = 0.0, 0.0, (c[_C_M12] * vh + m22 * vs) / m22
+                iw[_I_MODE] = S3H
+            elif label == _L_LEAVE:
+                iw[_I_MODE] = S3
+            else:
+                iw[_I_PHASE] = _P_S3_END
+            continue
+        if ph == _P_U:  # the one-sided stage 3 from the state (the rollers as free bodies)
+            if c[_C_STEPSU] == 0.0:
+                return _R_STEPSU
+            t, yh, ys, vh, vs = fw[_F_T], fw[_F_Q0], fw[_F_Q1], fw[_F_V0], fw[_F_V1]
+            kap, a_h, a_s = c[_C_KAP], c[_C_AH], c[_C_AS]
+            q = fw[_F_Q : _F_Q + 4]
+            v = fw[_F_V : _F_V + 4]
+            q[0], q[1], q[2], q[3] = yh, ys, kap * (ys - yh), a_h * yh + a_s * ys
+            v[0], v[1], v[2], v[3] = vh, vs, kap * (vs - vh), a_h * vh + a_s * vs
+            fs = fw[_F_U : _F_U + _U_NF]
+            tol = c[_C_TOL]
+            fs[_U_T], fs[_U_TBLOW], fs[_U_TEND], fs[_U_H] = t, t_blow, t3_end, c[_C_HU]
+            fs[_U_CLEAR], fs[_U_TRET], fs[_U_THOME], fs[_U_TOL] = clear, fw[_F_TRET], math.inf, tol
+            fs[_U_LEFT2], fs[_U_LEFT3], fs[_U_EXPECTED], fs[_U_VSCALE] = (
+                math.nan,
+                math.nan,
+                0.0,
+                0.0,
+            )
+            fs[_U_TOL0] = tol
+            st = iw[_I_U : _I_U + _U_NI]
+            st[:] = 0
+            st[_U_REC] = 1 if iw[_I_REC] else 0
+            st[_U_STEPS], st[_U_MAX] = iw[_I_STEPS], iw[_I_MAX]
+            flags[:] = False
+            iw[_I_ONE_SIDED] = 1
+            iw[_I_PHASE] = _P_U_RUN
+            continue
+        if ph == _P_U_RUN:
+            st = iw[_I_U : _I_U + _U_NI]
+            a = iw[_I_BASE]
+            b = a + cap * _MAX_SWITCHES if iw[_I_REC] else a + cap
+            code = _one_sided_c(pu, jac, fw[_F_U:_F_U + _U_NF], st, flags[:4], flags[4:],
+                                fw[_F_Q:_F_Q + 4], fw[_F_V:_F_V + 4], rt[a:b], rw[a:b],
+                                rq0[a:b], rq1[a:b])  # fmt: skip
+            iw[_I_STEPS] = st[_U_STEPS]
+            if code != _U_DONE:
+                return _R_U + code
+            _part_c(iw, parts, S3U, st[_U_NREC])
+            fw[_F_TRET] = fw[_F_U + _U_TRET]
+            fw[_F_THOME] = fw[_F_U + _U_THOME]
+            iw[_I_PHASE] = _P_S3_END
+            continue
+        if ph == _P_S3_END:  # stage 4: the shaft goes back against friction
+            fw[_F_TLOCK] = math.inf
+            iw[_I_PHASE] = _P_DONE
+            if math.isfinite(fw[_F_THOME]) and c[_C_DRIVE] > 0.0:
+                if c[_C_STEPS4] == 0.0:
+                    return _R_STEPS4
+                t0 = t_blow + fw[_F_THOME]
+                fw[_F_T0] = t0
+                fw[_F_T], fw[_F_W], fw[_F_Q0], fw[_F_Q1], fw[_F_V0], fw[_F_V1] = (
+                    t0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                )  # fmt: skip
+                _row_c(fw, iw, 0, 0, 1.0, 0.0, h1, 1.0)
+                _row_c(fw, iw, 1, 1, 0.0, 0.0, 0.0, -1.0)
+                per4, h4 = c[_C_PER4], c[_C_H4]
+                code = _begin_c(fw, iw, S4, h4, t0 + per4, per4 / h4, 2, _P_S4_EVENT, 0)
+                if code != 0:
+                    return code
+            continue
+        if ph == _P_S4_EVENT:
+            if iw[_I_STATUS] == 1 and iw[_I_WHICH] == 0:
+                fw[_F_TLOCK] = fw[_F_T] - fw[_F_T0]
+            iw[_I_PHASE] = _P_DONE
+            continue
+        return _R_DONE
+
+
+_stages_c = jit(_stages, error_model="numpy")
+
+
+def _one_sided_notes(left2: float, left3: float, first: int, free_both: int) -> list[str]:
+    r"""The note of a stage 3 that went one-sided, from its ``fs`` and ``st`` (:func:`_one_sided`):
+    when face B and face A let the rollers go (NaN: never), the face that went first, how
+    often the rollers flew free of both.
+
+    Stage 3 with the rollers as free bodies between the cones: four coordinates
+    :math:`q = (y_h, y_s, x - x_0, y_r)`, the n rollers moving as one (mass :math:`n m_p`,
+    point masses), and four one-sided constraints (:data:`CONTACTS`): the half-coupling's
+    stop :math:`y_h \le 0`, the jaws' bottom :math:`y_s \le h_2`, and the two faces,
+    :math:`g_B = y_r - y_h - t_B(x - x_0) \ge 0`, :math:`g_A = y_s - y_r - t_A(x - x_0) \ge
+    0`. A face that would have to pull lets the rollers go (its reaction's sign change is the
+    event); a gap that closes is a plastic catch (no rebound: the same assumption as the
+    seed's other catches, [002] gives no restitution for the rollers) whose impulses are
+    found with the contacts that stay (:func:`_catch`, :func:`_active_set`). While both faces
+    hold, this is the two-degree-of-freedom stage 3 of the module notes. :func:`_stages`
+    starts it where a face would have to pull and runs its event loop (:func:`_one_sided`).
+    """
+    if left2 != left2:  # NaN: face B never let go
+        if left3 != left3:
+            return []
+        first, at = 3, left3
+    elif left3 != left3:
+        first, at = 2, left2
+    else:  # both: the first to let go (the one the kernel noted first where they tie)
+        at = left2 if first == 2 else left3
+        other = left3 if first == 2 else left2
+        if other < at:
+            first, at = 5 - first, other
+    return [
+        f"stage 3: {at * 1e3:.3g} ms after the blow {CONTACTS[first]} would have "
+        "to pull the rollers; it lets them go and the return is followed with one-sided "
+        "contacts (the rollers free between the cones, a plastic catch where a gap closes)"
+        + (f"; they flew free of both faces {free_both} time(s)" if free_both else "")
+    ]
+
+
+def _stage2_steps(x: Mapping[str, Any], g: Geometry, steps_per_period: int) -> tuple[float, float]:
+    """Stage 2's period (of the sandwich with the shaft on all three springs) and RK4 step
+    (``steps_per_period`` a period of the sandwich alone) [s]."""
+    c123 = x["power_spring_rate"] + x["auxiliary_spring_rate"] + x["return_spring_rate"]
+    m2 = x["stepped_shaft_mass"]
+    big = x["half_coupling_mass"] + x["roller_count"] * x["roller_mass"] + x["striker_mass"]
+    per2 = 2.0 * math.pi * math.sqrt((big + m2) / c123)
+    return per2, 2.0 * math.pi * math.sqrt(big / c123) / steps_per_period
+
+
+def _stage3_steps(
+    x: Mapping[str, Any], g: Geometry, matrices: tuple[float, float, float], steps_per_period: int
+) -> tuple[float, float]:
+    """Stage 3's RK4 step and longest span [s]: ``steps_per_period`` steps per period of its
+    fastest mode, 30 periods of its slowest."""
+    c1, c3 = x["power_spring_rate"], x["return_spring_rate"]
+    m1, m3 = x["half_coupling_mass"], x["striker_mass"]
+    nm = x["roller_count"] * x["roller_mass"]
+    m11, m12, m22 = matrices
+    det = m1 * m3 + nm * (m1 * (g.kappa**2 + g.a_s**2) + m3 * (g.kappa**2 + g.a_h**2))
+    det += nm * nm * g.kappa**2 * (g.a_h + g.a_s) ** 2  # m11 m22 - m12², cancellation-free
+    w_hi = math.sqrt(max(c1, c3) / min(det / m22, det / m11))
+    w_lo = math.sqrt(max(min(c1, c3), 1e-300) / (m11 + m22 + 2.0 * abs(m12)))
+    return 2.0 * math.pi / (steps_per_period * w_hi), 30.0 * 2.0 * math.pi / w_lo
+
+
+def _one_sided_step(
+    x: Mapping[str, Any], matrices: tuple[float, float, float], steps_per_period: int
+) -> tuple[float]:
+    """The one-sided stage 3's RK4 step [s]: ``steps_per_period`` steps per period of the
+    faster of the free parts and the two-degree-of-freedom stage 3."""
     m1, m3 = x["half_coupling_mass"], x["striker_mass"]
     w_free = math.sqrt(max(x["power_spring_rate"] / m1, x["return_spring_rate"] / m3))
     m11, m12, m22 = matrices
     det = float(m11 * m22 - m12 * m12)
     w_both = math.sqrt(max(x["power_spring_rate"], x["return_spring_rate"]) / (det / max(m11, m22)))
-    h = 2.0 * math.pi / (steps_per_period * max(w_free, w_both))
-    fs = np.array([t, t_blow, t_end, h, clear, t_ret, math.inf, tol, math.nan, math.nan, 0.0,
-                   0.0, tol, 0.0])  # fmt: skip
-    st = np.zeros(_U_NI, dtype=np.int64)
-    run.go_one_sided(p, jac, fs, st, q, v)
-    notes = []
-    fs_, st_ = fs.tolist(), st.tolist()  # Python numbers, read once
-    left = {i: fs_[6 + i] for i in (2, 3) if not math.isnan(fs_[6 + i])}
-    if left:
-        first = st_[_U_FIRST]
-        if len(left) == 2 and left[5 - first] < left[first]:
-            first = 5 - first
-        free_both = st_[_U_FREE]
-        notes.append(
-            f"stage 3: {left[first] * 1e3:.3g} ms after the blow {CONTACTS[first]} would have "
-            "to pull the rollers; it lets them go and the return is followed with one-sided "
-            "contacts (the rollers free between the cones, a plastic catch where a gap closes)"
-            + (f"; they flew free of both faces {free_both} time(s)" if free_both else "")
-        )
-    return fs_[_U_TRET], fs_[_U_THOME], notes
+    return (2.0 * math.pi / (steps_per_period * max(w_free, w_both)),)
+
+
+def _stage4_steps(
+    x: Mapping[str, Any], p: np.ndarray, steps_per_period: int
+) -> tuple[float, float]:
+    """Stage 4's span (a period of the shaft on the auxiliary spring) and RK4 step [s]; 0 and
+    0 where the auxiliary spring does not beat the friction (the shaft does not go back)."""
+    drive = x["auxiliary_spring_rate"] * (x["auxiliary_spring_preload"] + x["release_travel"])
+    drive += x["stepped_shaft_mass"] * x["gravity"]
+    if not drive > p[FF]:
+        return 0.0, 0.0
+    per4 = 2.0 * math.pi * math.sqrt(x["stepped_shaft_mass"] / x["auxiliary_spring_rate"])
+    return per4, per4 / steps_per_period
+
+
+def _guarded(fn: Callable[..., tuple[float, ...]], width: int, *args: Any) -> tuple[float, ...]:
+    """``fn(*args)`` and 1.0, or ``width`` NaNs and 0.0 where its arithmetic raises: the
+    compiled driver comes back where that stage starts, and the caller calls ``fn`` again
+    there, which raises as the Python driver did."""
+    try:
+        return (*fn(*args), 1.0)
+    except (ArithmeticError, ValueError):
+        return (math.nan,) * width + (0.0,)
 
 
 def simulate_cycle(
@@ -2552,87 +2985,63 @@ def simulate_cycle(
             else w_nl * -np.expm1(-tt * x["motor_torque"] / (inertia_0 * w_nl))
         )
         rec.parts.append((S1, tt, w_dw, np.zeros_like(tt), np.zeros_like(tt)))
-    status, _, st = run.go(
-        S1P if g.paper else S1,
-        (t_l, w_0, 0.0, 0.0, 0.0, 0.0),
-        h,
-        t_end,
-        _events((0, 1.0, 0.0, h1, 1.0)),
-        span / h,
-        clamp0=True,
-    )
-    if status != 1:
+    # stage 1's step count, refused before the clock is looked at (a budget refusal names
+    # the steps it would take: the runner's fallback reads them)
+    run.admit(span / h)
+
+    # ---- stages 1 (from lift-off) to 4: one compiled driver (_stages) ----------------------
+    # the design's numbers the stages take; the driver does what needs the simulated states
+    per2, h2s, ok2 = _guarded(_stage2_steps, 2, x, g, steps_per_period)
+    z_off = x["power_spring_preload"] + h1
+    stops = h2 > h1  # the half-coupling reaches its stop at h1 before the blow
+    matrices = _stage3_matrices(x, g)
+    m11, m12, m22 = matrices
+    h3s, span3, ok3 = _guarded(_stage3_steps, 2, x, g, matrices, steps_per_period)
+    (h_u, ok_u) = _guarded(_one_sided_step, 1, x, matrices, steps_per_period)
+    per4, h4, ok4 = _guarded(_stage4_steps, 2, x, p, steps_per_period)
+    pu = _contact_params(x, g)
+    fw = np.empty(_F_N)
+    iw = np.zeros(_I_N, dtype=np.int64)
+    iw[_I_PHASE], iw[_I_STEPS], iw[_I_MAX] = _P_S1, run.steps, run.max_steps
+    if record:
+        iw[_I_REC] = 1
+        n = (_SERIES_POINTS + 16) * (_PARTS + _MAX_SWITCHES)
+        bufs = (np.empty(n), np.empty(n), np.empty(n), np.empty(n))
+        parts = np.zeros((_PARTS, 3), dtype=np.int64)
+    else:  # stride 0: the kernels write at most an event's point there, read by no one
+        bufs, parts = _NO_BUFFERS, _NO_PARTS
+    c = np.array(
+        [
+            S1P if g.paper else S1, t_l, w_0, h, t_end, span / h, m1 + m2 + nm * g.a_h, big + m2,
+            big, per2, h2s, 20.0 * per2, z_off, h1, h2, lam3, m11, m12, m22, h3s, span3,
+            h2 - min(h3, h2), float(g.kappa), g.a_h, g.a_s, 1e-12 * _x_scale(p), h_u,
+            0.0 if per4 == 0.0 else 1.0, per4, h4, ok2, ok3, ok_u, ok4,
+        ],
+        dtype=float,
+    )  # fmt: skip
+    failed = run.stages(c, pu, _jacobian_matrix(pu), fw, iw, bufs, parts)
+    if failed == _R_NO_RELEASE:
         raise SolverFailed(
             f"the half-coupling did not reach h1 by t = {t_end:.4g} s although the "
             f"quasi-static release is at {t_qs:.4g} s; report this design",
             field="fidelity",
         )
-    t_rel, w_rel, _, _, v_rel, _ = st
-
-    # ---- stage 2: engagement at constant ω_M, state carried from the release --------------
-    v0 = -(m1 + m2 + nm * g.a_h) * v_rel / (big + m2)
-    per2 = 2.0 * math.pi * math.sqrt((big + m2) / (c1 + c2 + c3))
-    h2s = 2.0 * math.pi * math.sqrt(big / (c1 + c2 + c3)) / steps_per_period
-    t2_end = t_rel + 20.0 * per2
-    z_off = x["power_spring_preload"] + h1
-    stops = h2 > h1  # the half-coupling reaches its stop at h1 before the blow
-    mode = S2S if v0 < 0.0 else S2
-    state = (t_rel, w_rel, 0.0, 0.0, v0, 0.0)
-    t_blow = math.inf
-    max_travel = 0.0
-    v_stop = 0.0  # the striker's speed where the half-coupling stops (h2 > h1)
-    for _ in range(64):
-        if mode == S2S:
-            ev = _events(
-                (0, 1.0, 0.0, 0.0, 1.0),  # back at the release position: shaft caught
-                (0, 1.0, 0.0, -lam3, -1.0),  # return spring leaves contact (kink)
-                (0, 1.0, 0.0, -lam3, 1.0),
-                (1, 0.0, 0.0, 0.0, -1.0),  # turning forward->back: never comes back
-            )
-        elif mode == S2F:
-            ev = _events(
-                (0, 1.0, 0.0, h2, 1.0),  # the blow
-                (1, 0.0, 0.0, 0.0, -1.0),  # turning point below h2: never engages
-            )
+    if failed:  # a stage whose step sizes raised where it starts, as they did there
+        if failed == _R_STEPS2:
+            _stage2_steps(x, g, steps_per_period)
+        elif failed == _R_STEPS3:
+            _stage3_steps(x, g, matrices, steps_per_period)
+        elif failed == _R_STEPSU:
+            _one_sided_step(x, matrices, steps_per_period)
         else:
-            # beyond h1 the half-coupling is on its stop (h2 > h1); z_off = λ1 + h1 ≥ h1 is
-            # then never reached, and for h2 ≤ h1 neither: the rows keep the same count
-            level = h1 if stops else z_off
-            ev = _events(
-                (0, 1.0, 0.0, h2, 1.0),  # the blow
-                (0, 1.0, 0.0, level, 1.0),  # half-coupling on its stop
-                (0, 1.0, 0.0, level, -1.0),
-                (1, 0.0, 0.0, 0.0, -1.0),  # turning point below h2: never engages
-                (0, 1.0, 0.0, 0.0, -1.0),  # back below the release position: picks up shaft
-            )
-        status, which, state = run.go(mode, state, h2s, t2_end, ev, per2 / h2s)
-        max_travel = max(max_travel, state[2])
-        if status != 1:
-            break
-        if mode == S2S:
-            if which == 0:
-                mode = S2
-            elif which == 3:
-                break
-        elif mode == S2F:
-            if which == 0:
-                t_blow = state[0]
-                break
-            break  # turned back short of h2
-        else:
-            if which == 0:
-                t_blow = state[0]
-                break
-            if which == 1 and stops:  # the half-coupling stops (plastic); the striker goes on
-                v_stop = state[4]
-                mode = S2F
-                continue
-            if which == 3:
-                break
-            if which == 4:  # plastic pick-up of the resting shaft
-                t_, w_, q0_, q1_, v0_, v1_ = state
-                state = (t_, w_, q0_, q1_, v0_ * big / (big + m2), v1_)
-                mode = S2S
+            _stage4_steps(x, p, steps_per_period)
+        raise SolverFailed("the cycle's step sizes could not be worked out", field="fidelity")
+    if record:  # the driver's parts of its one record, as the recorder files them
+        for mode, a, k in parts[: iw[_I_PARTS]].tolist():
+            rec.add(mode, tuple(b[a : a + k] for b in bufs), k)
+    t_rel, w_rel, v_rel, t_blow, max_travel, v_stop, t_ret, t_home, t_lock = fw[
+        _F_TREL : _F_TLOCK + 1
+    ].tolist()
     t_eng = t_blow - t_rel
     if not math.isfinite(t_blow):
         if max_travel < h2:
@@ -2668,116 +3077,18 @@ def simulate_cycle(
         # the balance of the mechanism at the blow, for the stage-2 reach without the blow
         c_b = (big * x["gravity"] + c1 * z_off - c3 * lam3) / (c1 + c3)
         max_travel = max(max_travel, h2, 2.0 * c_b)
-
-    # ---- stage 3: return with the rollers; the blow stopped the flywheel and the sandwich ----
-    m11, m12, m22 = _stage3_matrices(x, g)
-    det = m1 * m3 + nm * (m1 * (g.kappa**2 + g.a_s**2) + m3 * (g.kappa**2 + g.a_h**2))
-    det += nm * nm * g.kappa**2 * (g.a_h + g.a_s) ** 2  # m11 m22 - m12², cancellation-free
-    w_hi = math.sqrt(max(c1, c3) / min(det / m22, det / m11))
-    w_lo = math.sqrt(max(min(c1, c3), 1e-300) / (m11 + m22 + 2.0 * abs(m12)))
-    h3s = 2.0 * math.pi / (steps_per_period * w_hi)
-    t_blow_ = t_blow
-    t3_end = t_blow + 30.0 * 2.0 * math.pi / w_lo
-    clear = h2 - min(h3, h2)
-    y_h0 = h2 - h1
-    if y_h0 >= 0.0:
-        mode, state = S3H, (t_blow, 0.0, 0.0, h2, 0.0, 0.0)
-    else:
-        mode, state = S3, (t_blow, 0.0, y_h0, h2, 0.0, 0.0)
-    t_ret = math.inf
-    t_home = math.inf
-    # while both faces press the rollers, the two-degree-of-freedom stage 3; where one would
-    # have to pull (kind 4), the one-sided stage 3 takes over (_stage3_one_sided)
-    for _ in range(64):
-        if _gfun_c(mode, 4, run.p, *state[1:]) < 0.0:  # already at a mode's start
-            t_ret, t_home, said = _stage3_one_sided(
-                run, x, g, state, t_blow, t3_end, clear, steps_per_period, t_ret, (m11, m12, m22)
-            )
-            notes.extend(said)
-            break
-        labels = ["home", "bottom"]
-        rows: list[tuple[int, float, float, float, float]] = [
-            (0, 0.0, 1.0, 0.0, -1.0),  # striker home: the balls can re-lock it
-            (0, 0.0, 1.0, h2, 1.0),  # striker back on the jaws' bottom (plastic)
-        ]
-        if math.isinf(t_ret) and clear > 0.0:
-            labels.append("clear")
-            rows.append((0, 0.0, 1.0, clear, -1.0))  # clear of the jaws: return over
-        labels.append("pull")
-        rows.append((4, 0.0, 0.0, 0.0, -1.0))  # a face would have to pull a roller
-        if mode == S3:
-            labels.append("stop")
-            rows.append((0, 1.0, 0.0, 0.0, 1.0))  # half-coupling onto its stop
-        else:
-            labels += ["leave", "stuck"]
-            rows.append((3, 0.0, 0.0, 0.0, -1.0))  # the stop would have to pull: leaves it
-            rows.append((2, 0.0, 0.0, 0.0, 1.0))  # turning back above home: never gets home
-        status, which, state = run.go(
-            mode, state, h3s, t3_end, _events(*rows), (t3_end - t_blow_) / h3s
+    if iw[_I_ONE_SIDED]:
+        left2, left3 = fw[_F_U + _U_LEFT2 : _F_U + _U_LEFT3 + 1].tolist()
+        notes.extend(
+            _one_sided_notes(left2, left3, int(iw[_I_U + _U_FIRST]), int(iw[_I_U + _U_FREE]))
         )
-        if status != 1:
-            break
-        label = labels[which]
-        t_, w_, yh, ys, vh, vs = state
-        if label == "pull":
-            # a level crossed at the same instant (a spring leaving contact kinks the force)
-            if ys <= 0.0:
-                label = "home"
-            elif ys >= h2 and vs > 0.0:
-                label = "bottom"
-            elif math.isinf(t_ret) and clear > 0.0 and ys <= clear:
-                label = "clear"
-            elif mode == S3 and yh >= 0.0 and vh > 0.0:
-                label = "stop"
-        if label == "pull":  # a face lets the rollers go: one-sided contacts from here
-            t_ret, t_home, said = _stage3_one_sided(
-                run, x, g, state, t_blow, t3_end, clear, steps_per_period, t_ret, (m11, m12, m22)
-            )
-            notes.extend(said)
-            break
-        if label == "home":
-            t_home = t_ - t_blow
-            if math.isinf(t_ret):
-                t_ret = t_home
-            break
-        if label == "bottom":
-            vh_new = (m11 * vh + m12 * vs) / m11 if mode == S3 else 0.0
-            state = (t_, w_, yh, ys, vh_new, 0.0)
-        elif label == "clear":
-            t_ret = t_ - t_blow
-        elif label == "stop":  # plastic: the stop's impulse acts on y_h alone
-            state = (t_, w_, 0.0, ys, 0.0, (m12 * vh + m22 * vs) / m22)
-            mode = S3H
-        elif label == "leave":
-            mode = S3
-        else:
-            break
     if math.isinf(t_home):
         warnings.append(
             "the return spring does not bring the striker home: the balls cannot re-lock it"
             + ("" if math.isfinite(t_ret) else " (it does not even clear the jaws)")
         )
-
-    # ---- stage 4: the shaft goes back against friction ---------------------------------------
-    t_lock = math.inf
-    if math.isfinite(t_home):
-        drive = c2 * (x["auxiliary_spring_preload"] + h1) + m2 * x["gravity"]
-        if drive > p[FF]:
-            per4 = 2.0 * math.pi * math.sqrt(m2 / c2)
-            h4 = per4 / steps_per_period
-            t0 = t_blow + t_home
-            status, which, state = run.go(
-                S4,
-                (t0, 0.0, 0.0, 0.0, 0.0, 0.0),
-                h4,
-                t0 + per4,
-                _events((0, 1.0, 0.0, h1, 1.0), (1, 0.0, 0.0, 0.0, -1.0)),
-                per4 / h4,
-            )
-            if status == 1 and which == 0:
-                t_lock = state[0] - t0
-        if math.isinf(t_lock):
-            warnings.append("the auxiliary spring does not push the stepped shaft back: no re-lock")
+    elif math.isinf(t_lock):
+        warnings.append("the auxiliary spring does not push the stepped shaft back: no re-lock")
     return CycleOutcome(
         release_speed=w_rel,
         spin_up_time=t_rel,
@@ -3144,7 +3455,8 @@ def closed_form_errors(x: Mapping[str, Any], outcome: CycleOutcome) -> dict[str,
 
 
 class _RunScipy(_Run):
-    """:meth:`_Run.go` by ``solve_ivp`` with terminal events on the same modes and events."""
+    """The cycle of :func:`_stages` with each call of the cycle kernel (:func:`_advance`) made
+    by ``solve_ivp`` (:meth:`go`), with terminal events on the same modes and events."""
 
     rtol: float = 1e-10
     method: str = "DOP853"
@@ -3219,6 +3531,22 @@ class _RunScipy(_Run):
         ye = sol.y_events[i][0]
         return 1, i, (float(te), *map(float, ye))  # type: ignore[return-value]
 
+    def driver(self) -> Callable[..., int]:
+        """:func:`_stages` run by Python, each stage's kernel call made by :meth:`go`."""
+
+        def advance(  # type: ignore[no-untyped-def]
+            mode, p, t, w, q0, q1, v0, v1, h, n_max, t_end, ekind, ec0, ec1, elvl, edir,
+            clamp0, stride, rt, rw, rq0, rq1, n_rec,
+        ):  # fmt: skip
+            events = (ekind, ec0, ec1, elvl, edir)
+            state = (t, w, q0, q1, v0, v1)
+            status, which, state = self.go(int(mode), state, h, t_end, events, 0.0, clamp0)
+            return (status, which, *state, 0, n_rec)
+
+        names = {**globals(), "_advance_c": advance, "_row_c": _row, "_begin_c": _begin}
+        names["_part_c"] = _part
+        return types.FunctionType(_stages.__code__, names, "_stages")
+
 
 def _x_scale(p: np.ndarray) -> float:
     """A length scale of the mechanism for absolute tolerances [m]."""
@@ -3245,7 +3573,7 @@ def simulate_cycle_scipy(
     Notes
     -----
     Terminal events at the same levels; the one-sided stage 3 (rollers free between the
-    cones, :func:`_stage3_one_sided`) keeps the compiled RK4. ``max_step_fraction`` bounds
+    cones, :func:`_one_sided_notes`) keeps the compiled RK4. ``max_step_fraction`` bounds
     the step to that fraction of the mode's shortest period (None: scipy's own control,
     which can step over a grazing first crossing). Returns (outcome, RHS evaluations).
     """

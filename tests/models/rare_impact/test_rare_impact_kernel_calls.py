@@ -1,6 +1,8 @@
 """The Python around the cycle's kernels: kept event arrays, contact masks, loaded kernels."""
 
+import dataclasses
 import math
+import types
 
 import numpy as np
 
@@ -43,3 +45,28 @@ def test_the_one_sided_return_leaves_the_shared_masks_alone():
     assert all((a == b).all() for a, b in zip(before, C._ACTIVE, strict=True))
     assert C._kernels_loaded()
     assert C._ensure_compiled(np.zeros(C.NPAR)) == 0.0
+
+
+class _ShortChunks(C._Run):
+    """The driver's own text run by Python with chunks of 50 steps: it comes back after every
+    chunk and is called again (the clock's looks of a long stage)."""
+
+    def driver(self):  # type: ignore[no-untyped-def]
+        names = {**vars(C), "_CHUNK": 50, "_row_c": C._row, "_begin_c": C._begin}
+        names["_part_c"] = C._part
+        return types.FunctionType(C._stages.__code__, names, "_stages")
+
+
+def test_the_driver_goes_on_where_it_stopped(monkeypatch):
+    # stage 1's thousands of steps in chunks of 50, then stages 2 to 4 and the one-sided stage
+    # 3 with its catches: the same outcome bit for bit (a series keeps every stride-th step
+    # of a chunk, so its points follow the chunks, as they did)
+    x = {**R, "roller_geometry": "symmetric_v"}
+    whole = C.simulate_cycle(x)
+    recorded = C.simulate_cycle(x, record=True)
+    monkeypatch.setattr(C, "_Run_impl", _ShortChunks)
+    assert C.simulate_cycle(x) == whole
+    chunked = C.simulate_cycle(x, record=True)
+    assert chunked.series["stage"][-1] == 4.0 and set(chunked.series["stage"]) == {1, 2, 3, 4}
+    assert dataclasses.replace(chunked, series={}) == dataclasses.replace(recorded, series={})
+    assert any("one-sided" in n for n in chunked.notes)
