@@ -639,7 +639,16 @@ def _time_to_speed(x: Mapping[str, Any], inertia: Any, w: Any) -> Any:
 
 
 def _never_fast_enough(x: Mapping[str, Any], w: Any) -> InfeasibleDesign:
-    w_nl = x["motor_no_load_speed"]
+    """The refusal of a design whose motor does not bring the striker to its release speed
+    ``w`` in a finite time: a linear motor's no-load speed not above it, or (a motor of
+    constant torque) a time to speed beyond the floats."""
+    w_nl = x.get("motor_no_load_speed")
+    if w_nl is None:
+        return InfeasibleDesign(
+            f"the motor does not reach the release speed {w * 30 / math.pi:.0f} rpm in a finite "
+            "time; use a stronger motor, lighter rollers, or weaker power/auxiliary springs",
+            field="motor_torque",
+        )
     return InfeasibleDesign(
         f"the motor never reaches the release speed: its no-load speed {w_nl * 30 / math.pi:.0f}"
         f" rpm is not above the release speed {w * 30 / math.pi:.0f} rpm; use a faster motor, "

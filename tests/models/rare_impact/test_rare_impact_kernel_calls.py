@@ -70,3 +70,16 @@ def test_the_driver_goes_on_where_it_stopped(monkeypatch):
     assert chunked.series["stage"][-1] == 4.0 and set(chunked.series["stage"]) == {1, 2, 3, 4}
     assert dataclasses.replace(chunked, series={}) == dataclasses.replace(recorded, series={})
     assert any("one-sided" in n for n in chunked.notes)
+
+
+def test_the_refusal_of_a_motor_too_slow_names_the_field_whatever_the_motor():
+    """A linear motor's refusal names its no-load speed; a motor of constant torque has none,
+    and its refusal (a time to speed beyond the floats) names its torque instead of failing
+    on the missing input."""
+    w = 100.0 * math.pi / 30  # 100 rpm
+    linear = C._never_fast_enough({"motor_no_load_speed": 50.0 * math.pi / 30}, w)
+    assert linear.field == "motor_no_load_speed"
+    assert "no-load speed 50 rpm is not above the release speed 100 rpm" in str(linear)
+    constant = C._never_fast_enough({"motor_torque": 1.0}, w)
+    assert constant.field == "motor_torque"
+    assert "does not reach the release speed 100 rpm in a finite time" in str(constant)
