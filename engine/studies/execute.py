@@ -20,6 +20,14 @@ scheduler, which runs in its own process, in process (``inproc://``, no socket),
 fetches results from the workers over TLS. An existing scheduler is
 reached with the certificate files it is given (:class:`TLSFiles`), over TLS.
 
+A study whose raw values the caller does not keep (:func:`run_study`'s ``keep_values``)
+leaves the values of its chunks past the first :data:`~engine.studies.plan.RANK_POINTS`
+points on the Dask workers (the chunks' futures): each sends its partial summary and its
+outputs' counts in the fine bins its study's first chunk placed, and the summary asks the
+workers, in one round, for the values of the few bins that hold a quantile or a histogram
+edge (:class:`~engine.studies.plan.Held`); the summary is the same, bit for bit, with a
+fraction of the bytes moved.
+
 Progress is reported after every chunk; a cancel event stops the study
 between chunks. On Dask a study has a few chunks in flight at once (``IN_FLIGHT_PER_THREAD``
 per worker thread) and submits the next as one finishes, and its first chunk has a

@@ -1046,6 +1046,10 @@ class Columns(Mapping[str, np.ndarray]):
     that was larger than the merge). The summary reads the pieces (:meth:`pieces`) and the
     first points (:meth:`head`), copying nothing; ``columns[name]`` is a new array.
 
+    With ``whole`` False (a study whose raw values are not kept) no whole column is
+    made: each chunk is kept as it came, an array or a :class:`Held` piece whose values
+    stayed where the chunk ran, and the summary reads the pieces.
+
     >>> c = Columns(5, ("y", "k"))
     >>> c.put("y", 3, np.array([7.0, 7.0]))
     >>> c.put("k", 0, np.full(3, 2.0)); c.put("k", 3, np.full(2, 2.0))
