@@ -1906,21 +1906,6 @@ class _Recorder:
             self.parts.append((mode, t, w, q0, q1))
 
 
-def _events(*rows: tuple[int, float, float, float, float]) -> tuple[np.ndarray, ...]:
-    """The kernel's event arrays (kind, c0, c1, level, direction) of ``rows``.
-
-    Kept for the last rows asked (a study that varies neither h1, h2 nor λ3 asks the same
-    rows every design); the kernels only read them. Rows with a level -0.0 (equal to 0.0
-    as a key) are made anew.
-    """
-    for r in rows:  # a loop, not all() over a generator: five times a design
-        if r[3] == 0.0 and math.copysign(1.0, r[3]) < 0.0:
-            return _make_events(rows)
-    return _remembered(_EVENTS, rows, _make_events)
-
-
-_EVENTS: dict[tuple[tuple[int, float, float, float, float], ...], tuple[np.ndarray, ...]] = {}
-
 _K = TypeVar("_K")
 _V = TypeVar("_V")
 
@@ -1934,19 +1919,6 @@ def _remembered(kept: dict[_K, _V], key: _K, make: Callable[[_K], _V]) -> _V:
             kept.clear()
         made = kept[key] = make(key)
     return made
-
-
-def _make_events(
-    rows: tuple[tuple[int, float, float, float, float], ...],
-) -> tuple[np.ndarray, ...]:
-    kind, c0, c1, level, way = zip(*rows, strict=True)
-    return (
-        np.array(kind, dtype=np.int64),
-        np.array(c0, dtype=float),
-        np.array(c1, dtype=float),
-        np.array(level, dtype=float),
-        np.array(way, dtype=float),
-    )
 
 
 @dataclass
@@ -2463,8 +2435,8 @@ _PARTS = 1 + 64 + 64 + 1 + 1
 
 
 def _row(fw, iw, e, kind, c0, c1, level, way):  # type: ignore[no-untyped-def]
-    """Event row ``e`` of the running stage (:func:`_events`' columns) into the driver's
-    arrays."""
+    """Event row ``e`` of the running stage (kind, c0, c1, level, direction: the event
+    columns the kernels read) into the driver's arrays."""
     iw[_I_KIND + e] = kind
     fw[_F_EC0 + e] = c0
     fw[_F_EC1 + e] = c1

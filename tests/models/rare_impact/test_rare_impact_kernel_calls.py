@@ -10,23 +10,6 @@ from engine.models.rare_impact import REFERENCE_DESIGN as R
 from engine.procedures import striker_cycle as C
 
 
-def test_event_arrays_kept_per_rows_and_laid_out_per_column():
-    rows = ((0, 1.0, 0.0, 0.004, 1.0), (1, 0.0, 0.0, 0.0, -1.0))
-    kind, c0, c1, level, direction = C._events(*rows)
-    assert kind.dtype == np.int64 and kind.tolist() == [0, 1]
-    assert c0.tolist() == [1.0, 0.0] and c1.tolist() == [0.0, 0.0]
-    assert level.tolist() == [0.004, 0.0] and direction.tolist() == [1.0, -1.0]
-    assert C._events(*rows)[3] is level  # the same rows: the same arrays, not made again
-    assert C._events((0, 1.0, 0.0, 0.005, 1.0))[3].tolist() == [0.005]
-
-
-def test_a_negative_zero_level_keeps_its_sign():
-    # -0.0 == 0.0 as a key: such rows must not be served the arrays of 0.0
-    C._events((0, 1.0, 0.0, 0.0, 1.0))
-    level = C._events((0, 1.0, 0.0, -0.0, 1.0))[3]
-    assert math.copysign(1.0, level[0]) == -1.0
-
-
 def test_contact_masks_are_the_bits_of_their_index():
     assert [m.tolist() for m in C._ACTIVE[:4]] == [
         [False, False, False, False],

@@ -227,7 +227,8 @@ def test_grazing_first_crossing_is_not_skipped():
     for shortfall in (1e-4, 1e-7, 1e-12):
         level = z_pk * (1 - shortfall)
         t_cross = brentq(lambda t, lv=level: dense(t)[1] - lv, t_pk - 2e-3, t_pk, xtol=1e-15)
-        ev = C._events((0, 1.0, 0.0, level, 1.0))
+        # one event row (kind, c0, c1, level, direction): z1 rising through the level
+        ev = (np.array([0]), np.array([1.0]), np.array([0.0]), np.array([level]), np.array([1.0]))
         bufs = (np.empty(1),) * 4
         out = C._advance_c(C.S1, p, t0, w0, 0.0, 0.0, 0.0, 0.0, h, 10**7, t0 + 1.0, *ev,
                            True, 0, *bufs, 0)  # fmt: skip
