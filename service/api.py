@@ -217,8 +217,8 @@ async def _body(request: Request) -> bytes:
 async def _json(request: Request) -> Any:
     """The request body parsed as FastAPI's own body handling parses it (the values its
     JSON parser gives, :func:`_parsed`; the same errors and their ``loc``), without its
-    dependency machinery (~30 µs a request). The error handlers in :mod:`service.errors` turn what this raises
-    into the same 400/422 answers."""
+    dependency machinery (~30 µs a request). The error handlers in :mod:`service.errors`
+    turn what this raises into the same 400/422 answers."""
     raw = await _body(request)  # BodyGuard has checked the content type and the size
     if not raw:
         raise RequestValidationError(
