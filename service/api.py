@@ -215,17 +215,17 @@ async def _body(request: Request) -> bytes:
 
 
 async def _json(request: Request) -> Any:
-    """The request body parsed as FastAPI's own body handling parses it (the same JSON
-    parser, the same errors and their ``loc``), without its dependency machinery (~30 µs a
-    request). The error handlers in :mod:`service.errors` turn what this raises
-    into the same 400/422 answers."""
+    """The request body parsed as FastAPI's own body handling parses it (the values its
+    JSON parser gives, :func:`_parsed`; the same errors and their ``loc``), without its
+    dependency machinery (~30 µs a request). The error handlers in :mod:`service.errors`
+    turn what this raises into the same 400/422 answers."""
     raw = await _body(request)  # BodyGuard has checked the content type and the size
     if not raw:
         raise RequestValidationError(
             [{"type": "missing", "loc": ("body",), "msg": "Field required", "input": None}]
         )
     try:
-        return json.loads(raw)
+        return _parsed(raw)
     except json.JSONDecodeError as exc:
         raise RequestValidationError(
             [
@@ -240,6 +240,36 @@ async def _json(request: Request) -> Any:
         ) from exc
     except Exception as exc:  # not UTF-8, nested too deeply, a number of 4,300+ digits
         raise HTTPException(status_code=400, detail="There was an error parsing the body") from exc
+
+
+def _parsed(raw: bytes) -> Any:
+    """``json.loads(raw)``: by orjson where that gives the same value, which costs a fifth
+    to a third of it (a request's body of 8 inputs 2.0 -> 0.3 µs; trace.analysis's two
+    lists of 281 values 35 -> 8.5 µs, trace.batch's 16.5 kB 116 -> 36 µs), else by json.
+
+    orjson reads every float as json does (0 of 287,597 lists of random literals differed,
+    halfway cases and subnormals among them) and every integer that fits 64 bits. It is
+    not asked where it would read otherwise: an integer literal of 19 digits or more
+    (orjson gives a float past 64 bits where json gives the int, and json refuses 4,300
+    digits), or a body of :data:`_NESTED` brackets or more (json refuses a nesting its
+    recursion limit cannot reach, orjson only past 1,024). A body orjson refuses (a
+    lone surrogate, a byte order mark, NaN, a number past the double's range, invalid
+    JSON) goes to json, which reads it or raises the error it always raised.
+    tests/service/test_body_parse.py holds the two to the same values.
+    """
+    if raw.count(b"[") + raw.count(b"{") < _NESTED and _LONG not in raw.translate(_DIGITS):
+        try:
+            return orjson.loads(raw)
+        except orjson.JSONDecodeError:
+            pass
+    return json.loads(raw)
+
+
+#: Every digit read as "0" (:func:`_parsed` looks for a run of 19: a long integer literal).
+_DIGITS = bytes.maketrans(b"0123456789", b"0000000000")
+_LONG = b"0" * 19
+#: Bodies with this many brackets or more are read by json alone (:func:`_parsed`).
+_NESTED = 200
 
 
 def _model(data: Any, model: type[BaseModel]) -> Any:

@@ -302,18 +302,45 @@ class Lane:
             self._release(ticket.client, end, ticket.cancel)
             raise
 
+        # The thread's end comes back to the loop once (one call_soon_threadsafe, one wake-up)
+        # and does both things there: frees the slot and hands the outcome to ``waiter``;
+        # the ceiling is one timer. This was ``wait_for(wrap_future(future), ceiling)``,
+        # which made two more futures and chained them with a second call from the thread:
+        # a hand-off of a computation doing nothing took ~49 µs of processor time (32 on
+        # the loop's thread), ~40 this way (measured, 9 rounds of 300).
+        waiter: asyncio.Future[T] = loop.create_future()
+
+        def finish() -> None:
+            self._release(ticket.client, end, ticket.cancel)
+            if waiter.done():  # timed out, or the request was cancelled
+                return
+            if future.cancelled():
+                waiter.cancel()
+                return
+            exc = future.exception()
+            if exc is None:
+                waiter.set_result(future.result())
+            else:
+                waiter.set_exception(exc)
+
         def done(_: Future[Any]) -> None:
             if not loop.is_closed():  # a test's loop may end before an abandoned thread
-                loop.call_soon_threadsafe(self._release, ticket.client, end, ticket.cancel)
+                loop.call_soon_threadsafe(finish)
+
+        def expire() -> None:
+            if not waiter.done():
+                waiter.set_exception(TimeoutError())
 
         future.add_done_callback(done)
+        timer = loop.call_later(budget_s + self.grace_s, expire)
         try:
-            return await asyncio.wait_for(asyncio.wrap_future(future), budget_s + self.grace_s)
+            return await waiter
         except Cancelled:
             if self.stopping and not ticket.gone.is_set():
                 raise self._stopped(what) from None  # an answer the client can act on
             raise
         except TimeoutError:
+            future.cancel()  # as wait_for did (a computation that has started goes on)
             log.warning(
                 "%s ignored its %g s deadline; left running in the background", what, budget_s
             )
@@ -321,6 +348,11 @@ class Lane:
                 f"{what} did not finish within its {budget_s:g} s wall-clock budget (BUDGET_S)",
                 budget_s=budget_s,
             ) from None
+        except asyncio.CancelledError:
+            future.cancel()  # as wait_for did: work not started yet never starts
+            raise
+        finally:
+            timer.cancel()
 
     def stop(self) -> None:
         """The server is stopping (SIGTERM): running work stops at its next budget check and
