@@ -2868,15 +2868,24 @@ def _one_sided_step(
 
 def _stage4_steps(
     x: Mapping[str, Any], p: np.ndarray, steps_per_period: int
-) -> tuple[float, float]:
-    """Stage 4's span (a period of the shaft on the auxiliary spring) and RK4 step [s]; 0 and
-    0 where the auxiliary spring does not beat the friction (the shaft does not go back)."""
+) -> tuple[float, float, float]:
+    """Whether stage 4 runs (1.0: the auxiliary spring beats the friction and pushes the shaft
+    back; 0.0: it does not), its span (a period of the shaft on the auxiliary spring) and its
+    RK4 step [s] (0 and 0 where it does not run).
+
+    A period that rounds to zero (a shaft of a few ulp of mass, which the input's exclusive
+    minimum of 0 lets through) has no step count: ZeroDivisionError, as the count at the
+    stage's start raised, not a stage skipped as if the spring did not push.
+    """
     drive = x["auxiliary_spring_rate"] * (x["auxiliary_spring_preload"] + x["release_travel"])
     drive += x["stepped_shaft_mass"] * x["gravity"]
     if not drive > p[FF]:
-        return 0.0, 0.0
+        return 0.0, 0.0, 0.0
     per4 = 2.0 * math.pi * math.sqrt(x["stepped_shaft_mass"] / x["auxiliary_spring_rate"])
-    return per4, per4 / steps_per_period
+    h4 = per4 / steps_per_period
+    if h4 == 0.0:
+        raise ZeroDivisionError("stage 4's period rounds to zero: no step count")
+    return 1.0, per4, h4
 
 
 def _guarded(fn: Callable[..., tuple[float, ...]], width: int, *args: Any) -> tuple[float, ...]:
@@ -2979,7 +2988,7 @@ def simulate_cycle(
     m11, m12, m22 = matrices
     h3s, span3, ok3 = _guarded(_stage3_steps, 2, x, g, matrices, steps_per_period)
     (h_u, ok_u) = _guarded(_one_sided_step, 1, x, matrices, steps_per_period)
-    per4, h4, ok4 = _guarded(_stage4_steps, 2, x, p, steps_per_period)
+    beats4, per4, h4, ok4 = _guarded(_stage4_steps, 3, x, p, steps_per_period)
     pu = _contact_params(x, g)
     fw = np.empty(_F_N)
     iw = np.zeros(_I_N, dtype=np.int64)
@@ -2996,7 +3005,7 @@ def simulate_cycle(
             S1P if g.paper else S1, t_l, w_0, h, t_end, span / h, m1 + m2 + nm * g.a_h, big + m2,
             big, per2, h2s, 20.0 * per2, z_off, h1, h2, lam3, m11, m12, m22, h3s, span3,
             h2 - min(h3, h2), float(g.kappa), g.a_h, g.a_s, 1e-12 * _x_scale(p), h_u,
-            0.0 if per4 == 0.0 else 1.0, per4, h4, ok2, ok3, ok_u, ok4,
+            0.0 if beats4 == 0.0 else 1.0, per4, h4, ok2, ok3, ok_u, ok4,  # NaN: raised
         ],
         dtype=float,
     )  # fmt: skip

@@ -66,3 +66,23 @@ def test_the_refusal_of_a_motor_too_slow_names_the_field_whatever_the_motor():
     constant = C._never_fast_enough({"motor_torque": 1.0}, w)
     assert constant.field == "motor_torque"
     assert "does not reach the release speed 100 rpm in a finite time" in str(constant)
+
+
+def test_a_shaft_whose_period_rounds_to_zero_is_refused_not_said_to_stay():
+    """stepped_shaft_mass has an exclusive minimum of 0: 5e-324 kg passes, and stage 4's
+    period 2π·sqrt(m2/c2) rounds to 0. The auxiliary spring does beat the friction (26 N
+    against 10.9 N), so the stage has no step count and the design is refused; it must not
+    be answered as a shaft the spring does not push back (relock_time inf, 'no re-lock')."""
+    import pytest
+
+    from engine import run
+    from engine.core.errors import SolverFailed
+    from engine.models.rare_impact import RARE_IMPACT
+
+    x = {**R, "roller_geometry": "symmetric_v", "stepped_shaft_mass": 5e-324}
+    with pytest.raises(ZeroDivisionError):  # as the count at stage 4's start raised
+        C.simulate_cycle(x)
+    with pytest.raises(SolverFailed, match="arithmetic"):  # the runner's refusal of it
+        run(RARE_IMPACT, x, fidelity="simulation", budget_s=None)
+    light = C.simulate_cycle({**x, "stepped_shaft_mass": 1e-300})  # a period of 1e-150 s
+    assert light.relock_time == 0.0 and not light.warnings
