@@ -2429,9 +2429,11 @@ _I_N = _I_U + _U_NI
  _R_STEPS3, _R_STEPSU, _R_STEPS4, _R_U) = range(12)  # fmt: skip
 # stage 3's event rows
 (_L_HOME, _L_BOTTOM, _L_CLEAR, _L_PULL, _L_STOP, _L_LEAVE, _L_STUCK) = range(7)  # fmt: skip
-#: The most parts the driver's record holds: stage 1, stages 2 and 3 64 rounds each, the
+#: The most rounds (kernel calls between events) stage 2 and stage 3 each take.
+_ROUNDS = 64
+#: The most parts the driver's record holds: stage 1, stages 2 and 3 their rounds each, the
 #: one-sided stage 3 and stage 4.
-_PARTS = 1 + 64 + 64 + 1 + 1
+_PARTS = 1 + _ROUNDS + _ROUNDS + 1 + 1
 
 
 def _row(fw, iw, e, kind, c0, c1, level, way):  # type: ignore[no-untyped-def]
@@ -2474,6 +2476,8 @@ def _part(iw, parts, mode, n):  # type: ignore[no-untyped-def]
     """File ``n`` recorded points from the next free one under ``mode`` (when recording)."""
     if iw[_I_REC] and n > 0:
         k = iw[_I_PARTS]
+        if k >= parts.shape[0]:  # never, with _PARTS counted from _ROUNDS: no write past it
+            return
         parts[k, 0] = mode
         parts[k, 1] = iw[_I_BASE]
         parts[k, 2] = n
@@ -2563,7 +2567,7 @@ def _stages(p, c, pu, jac, fw, iw, flags, rt, rw, rq0, rq1, parts):  # type: ign
             iw[_I_PHASE] = _P_S2_ROUND
             continue
         if ph == _P_S2_ROUND:
-            if iw[_I_ROUND] >= 64:
+            if iw[_I_ROUND] >= _ROUNDS:
                 iw[_I_PHASE] = _P_S2_END
                 continue
             iw[_I_ROUND] += 1
@@ -2643,7 +2647,7 @@ def _stages(p, c, pu, jac, fw, iw, flags, rt, rw, rq0, rq1, parts):  # type: ign
         if ph == _P_S3_ROUND:
             # while both faces press the rollers, the two-degree-of-freedom stage 3; where one
             # would have to pull (kind 4), the one-sided stage 3 takes over
-            if iw[_I_ROUND] >= 64:
+            if iw[_I_ROUND] >= _ROUNDS:
                 iw[_I_PHASE] = _P_S3_END
                 continue
             iw[_I_ROUND] += 1
