@@ -3537,9 +3537,16 @@ class _RunScipy(_Run):
             status, which, state = self.go(int(mode), state, h, t_end, events, 0.0, clamp0)
             return (status, which, *state, 0, n_rec)
 
-        names = {**globals(), "_advance_c": advance, "_row_c": _row, "_begin_c": _begin}
-        names["_part_c"] = _part
-        return types.FunctionType(_stages.__code__, names, "_stages")
+        return _stages_in_python(_advance_c=advance)
+
+
+def _stages_in_python(**replaced: Any) -> Callable[..., int]:
+    """:func:`_stages`' own text run by Python: its compiled helpers (``_row_c``,
+    ``_begin_c``, ``_part_c``) as their Python functions, and the module's names in
+    ``replaced`` (a kernel, a chunk's length) replaced. The scipy reference (:class:`_RunScipy`)
+    and the tests that stop the driver after short chunks run it so, one driver for all."""
+    names = {**globals(), "_row_c": _row, "_begin_c": _begin, "_part_c": _part, **replaced}
+    return types.FunctionType(_stages.__code__, names, "_stages")
 
 
 def _x_scale(p: np.ndarray) -> float:

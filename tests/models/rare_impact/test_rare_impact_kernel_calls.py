@@ -2,7 +2,6 @@
 
 import dataclasses
 import math
-import types
 
 import numpy as np
 
@@ -35,9 +34,7 @@ class _ShortChunks(C._Run):
     chunk and is called again (the clock's looks of a long stage)."""
 
     def driver(self):  # type: ignore[no-untyped-def]
-        names = {**vars(C), "_CHUNK": 50, "_row_c": C._row, "_begin_c": C._begin}
-        names["_part_c"] = C._part
-        return types.FunctionType(C._stages.__code__, names, "_stages")
+        return C._stages_in_python(_CHUNK=50)
 
 
 def test_the_driver_goes_on_where_it_stopped(monkeypatch):
