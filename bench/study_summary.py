@@ -31,13 +31,7 @@ nine quantiles, the histogram, Spearman's rank correlation with each input on th
 :data:`~engine.studies.plan.RANK_POINTS` points); the ratio study / floor prints
 (target ≤ ×3). Last, the preload study at 10⁵ and 10⁶ points through ``POST …/study`` of
 a service process on loopback (its local Dask cluster warmed by a first study) against
-the same study in this process, wall seconds (target ≤ ×1.3). The HTTP study keeps no
-raw points (no ``keep_points``), so its chunks past the first
-:data:`~engine.studies.plan.RANK_POINTS` points leave their values on the workers and
-send their partial summaries and fine-bin counts (``run_study``'s ``keep_values``): at
-10⁶ points 4 of its 16 chunks' columns reach the service, where all 16 (122 MB) did
-before; at 10⁵ every chunk is within the first RANK_POINTS and still comes whole. The
-summary is the same, bit for bit, as the in-process study's.
+the same study in this process, wall seconds (target ≤ ×1.3).
 
 Why the 30 % share is out of reach while a study keeps its raw values (measured
 2026-11-26, load 5–6 on 2 cores): at 30 % the joint study's summary and merge may take

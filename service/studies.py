@@ -312,13 +312,9 @@ class ClientShare:
     client: str
 
     def map(
-        self,
-        calls: list[ChunkArgs],
-        cancel: threading.Event,
-        budget: Budget | None = None,
-        head: int | None = None,
+        self, calls: list[ChunkArgs], cancel: threading.Event, budget: Budget | None = None
     ) -> Iterator[tuple[int, ChunkResult]]:
-        return self.dask.map(calls, cancel, budget, owner=self.client, head=head)
+        return self.dask.map(calls, cancel, budget, owner=self.client)
 
 
 def _malloc_trim() -> Callable[[int], int] | None:
@@ -702,8 +698,6 @@ class Studies:
                 cancel=job.cancel,
                 budget_s=self.settings.budget_s,
                 planned=p,
-                # the raw values only for the points file: else the workers keep them
-                keep_values=job.keep_points,
             )
             summary = _json_clean(result.summary)
             written = 0

@@ -20,14 +20,6 @@ scheduler, which runs in its own process, in process (``inproc://``, no socket),
 fetches results from the workers over TLS. An existing scheduler is
 reached with the certificate files it is given (:class:`TLSFiles`), over TLS.
 
-A study whose raw values the caller does not keep (:func:`run_study`'s ``keep_values``)
-leaves the values of its chunks past the first :data:`~engine.studies.plan.RANK_POINTS`
-points on the Dask workers (the chunks' futures): each sends its partial summary and its
-outputs' counts in the fine bins its study's first chunk placed, and the summary asks the
-workers, in one round, for the values of the few bins that hold a quantile or a histogram
-edge (:class:`~engine.studies.plan.Held`); the summary is the same, bit for bit, with a
-fraction of the bytes moved.
-
 Progress is reported after every chunk; a cancel event stops the study
 between chunks. On Dask a study has a few chunks in flight at once (``IN_FLIGHT_PER_THREAD``
 per worker thread) and submits the next as one finishes, and its first chunk has a
@@ -49,31 +41,23 @@ import os
 import threading
 import time
 import uuid
-from collections.abc import Callable, Iterator, Sequence
-from dataclasses import dataclass, replace
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
 from typing import Any, Protocol
 
 import numpy as np
 
 from ..core.errors import BudgetExceeded, Cancelled
-from ..core.points import is_one_number
 from ..core.spec import ModelSpec
 from .plan import (
-    GATHER_POINTS,
-    RANK_POINTS,
     ChunkResult,
-    FineCounts,
-    Held,
     Merger,
     Plan,
-    Request,
     Study,
-    answer,
     chunks,
     evaluate_chunk,
     one_numbers,
     plan,
-    same_request,
     summarize,
     summarize_chunk,
 )
@@ -158,16 +142,10 @@ Budget = Callable[[int], float]
 class Executor(Protocol):
     """Runs chunk evaluations; yields ``(index, ChunkResult)`` as they finish. With a
     ``budget``, a chunk's time budget is ``budget(points)`` asked when it starts (the
-    ``deadline_s`` in its arguments otherwise). With ``head`` (a number of points), the
-    values of a chunk past the study's first ``head`` points may stay where the chunk
-    ran (:class:`~engine.studies.plan.Held`), the first chunk yielded first."""
+    ``deadline_s`` in its arguments otherwise)."""
 
     def map(
-        self,
-        calls: list[ChunkArgs],
-        cancel: threading.Event,
-        budget: Budget | None = None,
-        head: int | None = None,
+        self, calls: list[ChunkArgs], cancel: threading.Event, budget: Budget | None = None
     ) -> Iterator[tuple[int, ChunkResult]]: ...
 
 
@@ -225,11 +203,7 @@ class InProcess:
     """Evaluate chunks one after another in the calling thread."""
 
     def map(
-        self,
-        calls: list[ChunkArgs],
-        cancel: threading.Event,
-        budget: Budget | None = None,
-        head: int | None = None,
+        self, calls: list[ChunkArgs], cancel: threading.Event, budget: Budget | None = None
     ) -> Iterator[tuple[int, ChunkResult]]:
         for i, args in enumerate(calls):
             if cancel.is_set():
@@ -287,128 +261,6 @@ def evaluate_remote(
             evaluate_chunk(spec, base, columns, outputs, fidelity, tolerance, deadline_s, cancel)
         )
     )
-
-
-Placements = dict[str, tuple[float, float]]
-
-
-@dataclass
-class Binned:
-    """A chunk's output as a worker sends it when its values stay there: its length and
-    its finite values' counts in the study's fine bins (None: no bins placed)."""
-
-    size: int
-    counts: np.ndarray | None
-
-
-def kept_on_worker(part: ChunkResult, placements: Placements) -> ChunkResult:
-    """``part`` (:func:`evaluate_remote`'s, kept on its worker) as it is sent when its
-    values stay there: each output of one number as that number, each other one as its
-    counts in the fine bins ``placements`` place (:class:`Binned`): a few kB where the
-    values were 512 kB an output."""
-    values: dict[str, Any] = {}
-    for name, y in part.values.items():
-        if is_one_number(y):
-            values[name] = y
-            continue
-        placed = placements.get(name)
-        counts = None
-        if placed is not None:
-            fine = FineCounts.at(placed)
-            fine.add(y)
-            # at most the chunk's points in a bin: 2 or 4 bytes a count, not 8
-            counts = fine.counts.astype(np.uint16 if y.size < 2**16 else np.uint32)
-        values[name] = Binned(y.size, counts)
-    return replace(part, values=values)
-
-
-def answer_on_worker(part: ChunkResult, requests: dict[str, Request]) -> dict[str, Any]:
-    """Per output of ``requests``, the kept chunk ``part``'s answer
-    (:func:`~engine.studies.plan.answer`)."""
-    return {name: answer(part.values[name], request) for name, request in requests.items()}
-
-
-def values_on_worker(part: ChunkResult, name: str) -> np.ndarray:
-    """One output's values of the kept chunk ``part``, as an array."""
-    return np.ascontiguousarray(part.values[name])
-
-
-class _Keeper:
-    """The chunks of one study kept on the Dask workers: their futures, asked together."""
-
-    def __init__(self, client: Any) -> None:
-        self.client = client
-        self.futures: dict[int, Any] = {}
-
-    def release(self) -> None:
-        futures, self.futures = list(self.futures.values()), {}
-        if futures:
-            self.client.cancel(futures)
-
-
-class _OnWorker(Held):
-    """One output's values of a chunk kept on a Dask worker (the chunk's future)."""
-
-    def __init__(self, keeper: _Keeper, chunk: int, name: str, binned: Binned) -> None:
-        self.keeper, self.chunk, self.name, self.size = keeper, chunk, name, binned.size
-        self.fine: FineCounts | None = None
-        self._counts = binned.counts
-        self._got: tuple[Request, Any] | None = None  # a request prefetched, its answer
-
-    def placed(self, placement: tuple[float, float] | None) -> _OnWorker:
-        if placement is not None and self._counts is not None:
-            self.fine = FineCounts.at(placement)
-            self.fine.counts += self._counts
-        self._counts = None
-        return self
-
-    def _future(self) -> Any:
-        future = self.keeper.futures.get(self.chunk)
-        if future is None:
-            raise RuntimeError("the study's chunks on the workers were let go")
-        return future
-
-    def ask(self, request: Request) -> Any:
-        got = self._got
-        if got is not None and same_request(got[0], request):
-            return got[1]
-        client = self.keeper.client
-        asked = {self.name: request}
-        return client.submit(answer_on_worker, self._future(), asked, pure=False).result()[
-            self.name
-        ]
-
-    def prefetch(self, asked: Sequence[tuple[Held, Request]]) -> None:
-        by_chunk: dict[int, list[tuple[_OnWorker, Request]]] = {}
-        for piece, request in asked:
-            if isinstance(piece, _OnWorker) and piece.keeper is self.keeper:
-                by_chunk.setdefault(piece.chunk, []).append((piece, request))
-        client = self.keeper.client
-        asks = {
-            chunk: client.submit(
-                answer_on_worker,
-                self.keeper.futures[chunk],
-                {p.name: request for p, request in items},
-                pure=False,
-            )
-            for chunk, items in by_chunk.items()
-            if chunk in self.keeper.futures
-        }
-        answers = dict(zip(asks, client.gather(list(asks.values())), strict=True))
-        for chunk, items in by_chunk.items():
-            for p, request in items:
-                if chunk in answers:
-                    p._got = (request, answers[chunk][p.name])
-
-    def fetch(self) -> np.ndarray:
-        client = self.keeper.client
-        values: np.ndarray = client.submit(
-            values_on_worker, self._future(), self.name, pure=False
-        ).result()
-        return values
-
-    def release(self) -> None:
-        self.keeper.release()
 
 
 class DaskExecutor:
@@ -526,26 +378,16 @@ class DaskExecutor:
         cancel: threading.Event,
         budget: Budget | None = None,
         owner: str | None = None,
-        head: int | None = None,
     ) -> Iterator[tuple[int, ChunkResult]]:
         """The chunks' results as they finish; ``owner`` (a client) shares one window of
-        chunks in flight between its studies (None: the study is a client of its own).
-
-        With ``head``, a chunk that starts at or past the study's ``head``-th point keeps
-        its values on its worker: the worker sends its partial summary, checks and rungs,
-        and each moving output's counts in the fine bins the first chunk's values placed
-        (:func:`kept_on_worker`), the values becoming :class:`~engine.studies.plan.Held`
-        pieces the summary asks for a few bins of (a 10⁶-point preload study moved 122 MB
-        from the workers to summarise them). The first chunk is yielded first (its values
-        place the bins), the kept chunks stay on the workers until the pieces are let go
-        (:meth:`~engine.studies.plan.Columns.release`)."""
+        chunks in flight between its studies (None: the study is a client of its own)."""
         client = self.client()
         name = f"study-cancel-{uuid.uuid4().hex}"
         key = owner if owner is not None else name
         with self._lock:
             self._owners[key] = self._owners.get(key, 0) + 1
         try:
-            yield from self._map(client, name, key, calls, cancel, budget, head)
+            yield from self._map(client, name, key, calls, cancel, budget)
         finally:
             with self._lock:
                 self._owners[key] -= 1
@@ -560,7 +402,6 @@ class DaskExecutor:
         calls: list[ChunkArgs],
         cancel: threading.Event,
         budget: Budget | None,
-        head: int | None,
     ) -> Iterator[tuple[int, ChunkResult]]:
         from dask.distributed import Event, as_completed
 
@@ -577,30 +418,9 @@ class DaskExecutor:
             with self._lock:
                 return max(1, window // self._owners.get(owner, 1))
 
-        starts, a = [], 0
-        for args in calls:
-            starts.append(a)
-            a += len(next(iter(args[2].values())))
-        keeper = _Keeper(client) if head is not None else None
         index: dict[str, int] = {}
-        flying: dict[int, list[Any]] = {}  # per chunk submitted and not taken, its futures
+        flying: set[Any] = set()
         lock = threading.Lock()
-        waiting: list[int] = []  # kept chunks whose counts wait for the bins' placement
-        placements: Placements | None = None
-
-        def kept(i: int) -> bool:
-            return keeper is not None and head is not None and i > 0 and starts[i] >= head
-
-        def send(i: int) -> Any:
-            """The answer of kept chunk ``i``, counted in the placed bins (placements)."""
-            assert keeper is not None
-            fut = client.submit(
-                kept_on_worker, keeper.futures[i], placements, pure=False, priority=-1
-            )
-            index[fut.key] = i
-            with lock:
-                flying[i].append(fut)
-            return fut
 
         def submit(i: int) -> Any:
             args = calls[i]
@@ -621,21 +441,14 @@ class DaskExecutor:
                 pure=False,
                 priority=priority,
             )
+            index[fut.key] = i
             with lock:
-                flying[i] = [fut]
-            if not kept(i):
-                index[fut.key] = i
-                return fut
-            assert keeper is not None
-            keeper.futures[i] = fut
-            if placements is None:
-                waiting.append(i)
-                return None
-            return send(i)
+                flying.add(fut)
+            return fut
 
         def in_flight() -> list[Any]:
             with lock:
-                return [f for futs in flying.values() for f in futs if not f.done()]
+                return [f for f in flying if not f.done()]
 
         finished = threading.Event()
 
@@ -651,39 +464,15 @@ class DaskExecutor:
         first = [submit(i) for i in range(min(share(), len(calls)))]
         following = len(first)
         threading.Thread(target=watch, name="study-cancel", daemon=True).start()
-        done = as_completed(
-            [f for f in first if f is not None], loop=client.loop, with_results=False
-        )
-        ended = False
-        held_back: list[tuple[int, ChunkResult]] = []  # taken before the first chunk
+        done = as_completed(first, loop=client.loop, with_results=False)
         try:
             for fut in done:
                 if cancel.is_set():
                     break
                 result = fut.result()
-                i = index[fut.key]
                 with lock:
-                    flying.pop(i, None)
-                if keeper is not None and i == 0:
-                    placements = _placements(result)
-                    for j in waiting:
-                        done.add(send(j))
-                    waiting.clear()
-                if kept(i):
-                    assert keeper is not None and placements is not None
-                    values = {
-                        k: _OnWorker(keeper, i, k, y).placed(placements.get(k))
-                        if isinstance(y, Binned)
-                        else y
-                        for k, y in result.values.items()
-                    }
-                    result = replace(result, values=values)
-                if placements is not None or keeper is None:  # the first chunk in: placed
-                    yield i, result
-                    yield from held_back
-                    held_back.clear()
-                else:
-                    held_back.append((i, result))
+                    flying.discard(fut)
+                yield index[fut.key], result
                 # after the caller took the result: its cost is in the next chunk's budget;
                 # as many as the owner's share allows now (it grows when another of its
                 # studies ends), and one at least
@@ -694,19 +483,14 @@ class DaskExecutor:
                         flying_now = len(flying)
                     if flying_now and flying_now >= share():
                         break
-                    sent = submit(following)
-                    if sent is not None:
-                        done.add(sent)
+                    done.add(submit(following))
                     following += 1
-            ended = True
         finally:
             finished.set()
             pending = in_flight()
             if pending:
                 stop.set()  # a budget or an error ended the study: its chunks stop too
                 client.cancel(pending)
-            if keeper is not None and not (ended and following == len(calls)):
-                keeper.release()
 
     def close(self) -> None:
         with self._lock:
@@ -715,19 +499,6 @@ class DaskExecutor:
             if self._cluster is not None:
                 self._cluster.close()
             self._client = self._cluster = None
-
-
-def _placements(first: ChunkResult) -> Placements:
-    """The fine bins the study's first chunk places, per output (the rule and the order
-    :class:`~engine.studies.plan.Merger` places them by: its first chunk is this one)."""
-    assert first.summary is not None
-    placed = {}
-    for name, y in first.values.items():
-        moments = first.summary.moments.get(name)
-        fine = None if moments is None else FineCounts.pilot(y, moments)
-        if fine is not None:
-            placed[name] = fine.placement
-    return placed
 
 
 def _name(spec: ModelSpec | str) -> str:
@@ -789,7 +560,6 @@ def run_study(
     budget_s: float | None = None,
     chunk_budget_s: float | None = CHUNK_FLOOR_S,
     planned: Plan | None = None,
-    keep_values: bool = True,
 ) -> StudyRun:
     """Plan, evaluate and summarise ``study``; raise Cancelled or BudgetExceeded when stopped.
 
@@ -797,13 +567,6 @@ def run_study(
     already drawn its points (the service does, to refuse a bad study at once): they are
     not drawn again. ``chunk_budget_s`` is a chunk's least time budget; it grows with the
     cost of the chunks measured before it (:class:`ChunkBudget`); None: no chunk budget.
-
-    ``keep_values`` False: the caller wants the summary alone, not the raw values
-    (``StudyRun.merged.values`` then holds what the summary read, no more): an executor
-    that can keeps the values of the chunks past the first :data:`RANK_POINTS` points
-    where they ran (:meth:`DaskExecutor.map`'s ``head``), for a Monte Carlo, LHS or
-    points study of :data:`GATHER_POINTS` points or more whose summary needs no output
-    whole (no ``feasible_when``); the summary is the same, bit for bit.
     """
     start = time.perf_counter()
     p = plan(spec, study) if planned is None else planned
@@ -822,52 +585,34 @@ def run_study(
         )
         for a, b in slices
     ]
-    # the summary's reads of an output past its first points: the fine bins alone
-    light = (
-        not keep_values
-        and p.n_points >= GATHER_POINTS
-        and p.sobol_base is None
-        and p.grid_shape is None
-        and study.feasible_when is None
-        and executor is not None
-        and not isinstance(executor, InProcess)
-    )
     # each chunk goes to its place as it arrives (the study holds its values once)
-    merger = Merger(p.n_points, p.outputs, whole=not light)
+    merger = Merger(p.n_points, p.outputs)
+    done = 0
     if progress:
         progress(0, p.n_points)
     budget = None
     if chunk_budget_s is not None:
         deadline = None if budget_s is None else start + budget_s
         budget = ChunkBudget(chunk_budget_s, CHUNK_MARGIN, deadline)
-    done = 0
-    try:
-        chunks_in = (
-            executor.map(calls, cancel, budget, head=RANK_POINTS)
-            if light and executor is not None
-            else (executor or InProcess()).map(calls, cancel, budget)
-        )
-        for i, part in chunks_in:
-            a, b = slices[i]
-            if budget is not None:
-                budget.observe(b - a, part.elapsed_s)
-            merger.add(a, part)
-            done += b - a
-            if progress:
-                progress(done, p.n_points)
-            if budget_s is not None and time.perf_counter() - start > budget_s:
-                cancel.set()
-                raise BudgetExceeded(
-                    f"the study stopped after {done} of {p.n_points} points at its "
-                    f"{budget_s:g} s budget",
-                    field="samples",
-                )
-        if cancel.is_set() or merger.received < len(calls):
-            raise Cancelled(f"the study was cancelled after {done} of {p.n_points} points")
-        merged = merger.result()
-        summary = summarize(spec, study, p, merged)
-        elapsed = time.perf_counter() - start
-        summary["elapsed_s"] = elapsed
-        return StudyRun(summary, p, merged, elapsed)
-    finally:
-        merger.values.release()  # the chunks kept where they ran, let go
+    for i, part in (executor or InProcess()).map(calls, cancel, budget):
+        a, b = slices[i]
+        if budget is not None:
+            budget.observe(b - a, part.elapsed_s)
+        merger.add(a, part)
+        done += b - a
+        if progress:
+            progress(done, p.n_points)
+        if budget_s is not None and time.perf_counter() - start > budget_s:
+            cancel.set()
+            raise BudgetExceeded(
+                f"the study stopped after {done} of {p.n_points} points at its {budget_s:g} s "
+                "budget",
+                field="samples",
+            )
+    if cancel.is_set() or merger.received < len(calls):
+        raise Cancelled(f"the study was cancelled after {done} of {p.n_points} points")
+    merged = merger.result()
+    summary = summarize(spec, study, p, merged)
+    elapsed = time.perf_counter() - start
+    summary["elapsed_s"] = elapsed
+    return StudyRun(summary, p, merged, elapsed)

@@ -161,7 +161,7 @@ class ChunkResult:
         # number and its length, where pickle would send the length's worth of copies
         state = dict(self.__dict__)
         state["values"] = {
-            name: (y[:1].copy(), y.size) if isinstance(y, np.ndarray) and is_one_number(y) else y
+            name: (y[:1].copy(), y.size) if is_one_number(y) else y
             for name, y in self.values.items()
         }
         return state
@@ -964,75 +964,6 @@ def _as_point(res: RunResult, outputs: Sequence[str]) -> tuple[str, dict[str, An
     return res.rung, {name: res.results.get(name) for name in outputs}, res.check_flags
 
 
-#: What a summary asks of a chunk's values where it does not read them all:
-#: ``("bins", placement, wanted)``, the values in the wanted fine bins and their bins
-#: (:meth:`FineCounts.gather`); ``("at_most", floats)``, how many finite values are at
-#: most each of a few floats (:func:`_at_most`).
-Request = tuple[Any, ...]
-
-
-def answer(y: np.ndarray, request: Request) -> Any:
-    """The answer of a chunk's values ``y`` to ``request`` (:data:`Request`), where ``y``
-    is (a Dask worker, for a chunk kept there).
-
-    >>> answer(np.array([1.0, np.nan, 3.0, -np.inf]), ("at_most", np.array([1.0, 2.0, 3.0])))
-    array([1, 1, 2])
-    """
-    if request[0] == "bins":
-        return FineCounts.at(request[1]).gather(y, request[2])
-    return _at_most(y, request[1])
-
-
-def _at_most(y: np.ndarray, floats: np.ndarray) -> np.ndarray:
-    """How many finite values of ``y`` are at most each of ``floats``."""
-    finite = y if bool(np.isfinite(y).all()) else y[np.isfinite(y)]
-    return np.array([np.count_nonzero(finite <= v) for v in floats.tolist()], dtype=np.int64)
-
-
-def same_request(a: Request, b: Request) -> bool:
-    """Whether two requests ask the same (their arrays equal)."""
-    return len(a) == len(b) and all(
-        np.array_equal(x, y) if isinstance(x, np.ndarray) else x == y
-        for x, y in zip(a, b, strict=True)
-    )
-
-
-class Held:
-    """One output's values of one chunk, kept where the chunk ran (a Dask worker) and
-    not sent: what a study's summary needs of them comes in small answers.
-
-    ``size``: the chunk's points; ``fine``: its finite values counted there in the fine
-    bins the study's pilot placed (:class:`FineCounts`), None where none were placed.
-    :meth:`ask` answers a :data:`Request` (the values of the few fine bins that hold a
-    quantile or a histogram edge: :meth:`FineCounts.resolve`; counts at a few floats:
-    :func:`_stats`), :meth:`fetch` gives all the values (a summary that cannot do with
-    those: rare). An executor that keeps chunks subclasses it.
-    """
-
-    size: int
-    fine: FineCounts | None
-
-    def ask(self, request: Request) -> Any:
-        """:func:`answer` of these values to ``request``."""
-        return answer(self.fetch(), request)
-
-    def fetch(self) -> np.ndarray:
-        """The values themselves."""
-        raise NotImplementedError
-
-    def prefetch(self, asked: Sequence[tuple[Held, Request]]) -> None:
-        """Ask several pieces (of the same keeper) at once, a round trip for all, not one
-        each; :meth:`ask` then answers at once."""
-
-    def release(self) -> None:
-        """Let the kept values go (the study is summarised)."""
-
-
-def _array(y: np.ndarray | Held) -> np.ndarray:
-    """A piece's values: the array, or a :class:`Held` piece fetched."""
-    return y.fetch() if isinstance(y, Held) else y
-
-
 class Columns(Mapping[str, np.ndarray]):
     """A study's output columns, each made whole once, as the chunks arrive.
 
@@ -1046,10 +977,6 @@ class Columns(Mapping[str, np.ndarray]):
     that was larger than the merge). The summary reads the pieces (:meth:`pieces`) and the
     first points (:meth:`head`), copying nothing; ``columns[name]`` is a new array.
 
-    With ``whole`` False (a study whose raw values are not kept) no whole column is
-    made: each chunk is kept as it came, an array or a :class:`Held` piece whose values
-    stayed where the chunk ran, and the summary reads the pieces.
-
     >>> c = Columns(5, ("y", "k"))
     >>> c.put("y", 3, np.array([7.0, 7.0]))
     >>> c.put("k", 0, np.full(3, 2.0)); c.put("k", 3, np.full(2, 2.0))
@@ -1060,28 +987,17 @@ class Columns(Mapping[str, np.ndarray]):
     ([1.0, 2.0, 3.0, 7.0, 7.0], [1.0, 2.0, 3.0, 7.0], [2.0, 2.0, 2.0, 2.0, 2.0], 40)
     """
 
-    def __init__(self, n_points: int, names: Sequence[str], whole: bool = True) -> None:
+    def __init__(self, n_points: int, names: Sequence[str]) -> None:
         self.n_points = n_points
-        self._pieces: dict[str, dict[int, Any]] = {name: {} for name in names}
+        self._pieces: dict[str, dict[int, np.ndarray]] = {name: {} for name in names}
         self._whole: dict[str, np.ndarray] = {}
-        #: False: each chunk is kept as it came (an array, or :class:`Held` where it
-        #: ran), no whole column made: a study whose raw values are not kept
-        self.whole = whole
 
-    def put(
-        self, name: str, start: int, y: np.ndarray | Held, moments: Moments | None = None
-    ) -> None:
+    def put(self, name: str, start: int, y: np.ndarray, moments: Moments | None = None) -> None:
         """Keep ``y``, the values of points ``start`` onward of output ``name``.
 
         ``moments``: the partial summary of ``y``'s finite values where the caller has it,
         which tells whether they are one number without comparing their bits where it can
         (:func:`_one_of`); None: they are compared."""
-        if isinstance(y, Held):
-            if self.whole:
-                y = y.fetch()
-            else:
-                self._pieces[name][start] = y
-                return
         y = np.asarray(y, dtype=float)
         whole = self._whole.get(name)
         if whole is None:
@@ -1089,45 +1005,20 @@ class Columns(Mapping[str, np.ndarray]):
             if one is not None:
                 self._pieces[name][start] = one  # one number, to the bit: no memory
                 return
-            if not self.whole:
-                self._pieces[name][start] = y
-                return
             whole = self._whole[name] = np.empty(self.n_points)
             for a, piece in self._pieces[name].items():
                 whole[a : a + piece.size] = piece
             self._pieces[name] = {}
         whole[start : start + y.size] = y
 
-    def pieces(self, name: str) -> list[Any]:
+    def pieces(self, name: str) -> list[np.ndarray]:
         """The column's pieces in the points' order (every chunk put): its whole array
-        where it has one; a :class:`Held` piece where its chunk's values stayed where it
-        ran."""
+        where it has one."""
         whole = self._whole.get(name)
         if whole is not None:
             return [whole]
         got = self._pieces[name]
         return [got[a] for a in sorted(got)]
-
-    def held(self) -> list[Held]:
-        """The pieces kept where their chunks ran."""
-        return [y for got in self._pieces.values() for y in got.values() if isinstance(y, Held)]
-
-    def prefetch(self, requests: Mapping[str, Request]) -> None:
-        """Ask the held pieces of each output in ``requests`` all at once
-        (:meth:`Held.prefetch`), before the summary asks them one by one."""
-        asked = [
-            (y, request)
-            for name, request in requests.items()
-            for y in self.pieces(name)
-            if isinstance(y, Held)
-        ]
-        if asked:
-            asked[0][0].prefetch(asked)
-
-    def release(self) -> None:
-        """Let the held pieces go (:meth:`Held.release`)."""
-        for y in self.held():
-            y.release()
 
     def head(self, name: str, m: int) -> np.ndarray:
         """The column's first ``m`` values (fewer if it is shorter): a view where the
@@ -1147,7 +1038,7 @@ class Columns(Mapping[str, np.ndarray]):
         for piece in self.pieces(name):
             if size >= m:
                 break
-            out.append(_array(piece)[: m - size])
+            out.append(piece[: m - size])
             size += out[-1].size
         one = out and all(is_one_number(y) for y in out)
         if one and len({y[:1].tobytes() for y in out}) == 1:  # one number, to the bit
@@ -1171,7 +1062,7 @@ class Columns(Mapping[str, np.ndarray]):
             piece = got[start]
             lo, hi = max(a, start), min(b, start + piece.size)
             if lo < hi:
-                out.append(_array(piece)[lo - start : hi - start])
+                out.append(piece[lo - start : hi - start])
         return np.concatenate(out) if out else np.empty(0)
 
     @property
@@ -1180,7 +1071,7 @@ class Columns(Mapping[str, np.ndarray]):
         return sum(y.nbytes for y in self._whole.values())
 
     def __getitem__(self, name: str) -> np.ndarray:
-        pieces = [_array(y) for y in self.pieces(name)]
+        pieces = self.pieces(name)
         return np.concatenate(pieces) if pieces else np.empty(0)  # a new array
 
     def __iter__(self) -> Iterator[str]:
@@ -1207,9 +1098,9 @@ class Merger:
     that hold them.
     """
 
-    def __init__(self, n_points: int, outputs: Sequence[str], whole: bool = True) -> None:
+    def __init__(self, n_points: int, outputs: Sequence[str]) -> None:
         self.n_points = n_points
-        self.values = Columns(n_points, outputs, whole)
+        self.values = Columns(n_points, outputs)
         self.checks: dict[str, np.ndarray] = {}
         self._first: dict[str, tuple[int, int]] = {}  # (chunk start, place in its chunk)
         self.rungs: list[str | None] = [None] * n_points
@@ -1245,20 +1136,12 @@ class Merger:
         self.elapsed_s += part.elapsed_s
         self.received += 1
 
-    def _count_fine(self, name: str, y: np.ndarray | Held, moments: Moments) -> None:
+    def _count_fine(self, name: str, y: np.ndarray, moments: Moments) -> None:
         """Count output ``name``'s chunk ``y`` in its fine bins, placed by the first chunk
-        with values (the pilot); a :class:`Held` chunk counted where it ran, in the same
-        bins, adds its counts (one placed otherwise is fetched and counted here)."""
-        if isinstance(y, Held):
-            fine = self._fine.get(name)
-            if fine is None and name in self._fine:
-                return  # no bins placed: nothing counted
-            if fine is not None and y.fine is not None and y.fine.placement == fine.placement:
-                fine.counts += y.fine.counts
-                return
-            y = y.fetch()
+        with values (the pilot)."""
         if name not in self._fine:
-            self._fine[name] = FineCounts.pilot(y, moments)
+            finite = y if moments.count == y.size else y[np.isfinite(y)]
+            self._fine[name] = FineCounts(finite) if finite.size >= PILOT_MIN else None
         fine = self._fine[name]
         if fine is not None:
             fine.add(y)  # its finite values
@@ -1541,40 +1424,12 @@ class FineCounts:
         low, high = float(sample[cut]), float(sample[sample.size - 1 - cut])
         if not high > low:  # most of the pilot at one value: span all of it
             low, high = float(sample[0]), float(sample[-1])
-        scale = FINE_BINS / (high - low) if high > low else 0.0
-        self._place(low, scale)
-
-    def _place(self, low: float, scale: float) -> None:
         self.low = low
+        scale = FINE_BINS / (high - low) if high > low else 0.0
         # a constant pilot, or extremes too far apart for their difference: not counted
         self.active = 0.0 < scale < math.inf
         self.scale = scale if self.active else 0.0
         self.counts = np.zeros(FINE_BINS + 2, dtype=np.int64)
-
-    @staticmethod
-    def pilot(y: np.ndarray, moments: Moments) -> FineCounts | None:
-        """The fine bins an output's first chunk ``y`` (its finite values' ``moments``)
-        places, None where it has fewer than :data:`PILOT_MIN` finite values."""
-        finite = y if moments.count == y.size else y[np.isfinite(y)]
-        return FineCounts(finite) if finite.size >= PILOT_MIN else None
-
-    @staticmethod
-    def at(placement: tuple[float, float]) -> FineCounts:
-        """Empty counts in the bins of :attr:`placement` (placed elsewhere: on the worker
-        that counts a chunk, the bins its study's pilot placed).
-
-        >>> fine = FineCounts(np.linspace(0.0, 1.0, 5_000))
-        >>> FineCounts.at(fine.placement).placement == fine.placement
-        True
-        """
-        fine = FineCounts.__new__(FineCounts)
-        fine._place(*placement)
-        return fine
-
-    @property
-    def placement(self) -> tuple[float, float]:
-        """The bins' lowest edge and scale (bins per unit): what places them."""
-        return self.low, self.scale
 
     def bins(self, y: np.ndarray) -> np.ndarray:
         """Each finite value's bin, 0 (below the range) … FINE_BINS + 1 (above it), by
@@ -1594,37 +1449,9 @@ class FineCounts:
         if self.active:
             kernels.count_bins(y, self.low, self.scale, FINE_BINS, 1, self.counts)
 
-    def wanted(
-        self, ranks: np.ndarray, edges: np.ndarray, count: int
-    ) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
-        """The bins to look into for the values of rank ``ranks`` and the values below
-        each of ``edges`` (bool per bin), with the ranks' and the edges' bins; None where
-        they hold more than :data:`GATHER_SHARE` of the ``count`` values counted, or the
-        counts are not those of ``count`` values."""
-        if not self.active:
-            return None
-        total = np.cumsum(self.counts)  # values in this bin and the ones below
-        if total[-1] != count:  # pragma: no cover - defensive: every chunk is added
-            return None
-        rank_bins = np.searchsorted(total, ranks, side="right")
-        edge_bins = self.bins(np.asarray(edges, dtype=float))
-        wanted = np.zeros(self.counts.size, dtype=bool)
-        wanted[rank_bins] = wanted[edge_bins] = True
-        if int(self.counts[wanted].sum()) > GATHER_SHARE * count:
-            return None
-        return wanted, rank_bins, edge_bins
-
-    def gather(self, y: np.ndarray, wanted: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
-        """The finite values of ``y`` in the ``wanted`` bins, in order, and their bins
-        (:func:`engine.studies.kernels.gather_bins`); None where ``y`` was not counted
-        in these bins (more values there than counted)."""
-        kept, labels = np.empty(y.size), np.empty(y.size, dtype=np.intp)
-        k = kernels.gather_bins(y, self.low, self.scale, FINE_BINS, 1, wanted, kept, labels, 0)
-        return None if k < 0 else (kept[:k], labels[:k])
-
     def resolve(
         self,
-        y: np.ndarray | Sequence[np.ndarray | Held],
+        y: np.ndarray | Sequence[np.ndarray],
         ranks: np.ndarray,
         edges: np.ndarray,
         count: int | None = None,
@@ -1635,28 +1462,25 @@ class FineCounts:
         were all added; None where the bins to look into hold too many of them.
 
         The values of the bins looked into are gathered in the points' order in one
-        compiled pass (:func:`engine.studies.kernels.gather_bins`); a piece held where
-        its chunk ran (:class:`Held`) gathers its own and sends them."""
+        compiled pass (:func:`engine.studies.kernels.gather_bins`)."""
         if not self.active:
             return None
         pieces = [y] if isinstance(y, np.ndarray) else y
         if count is None:
-            count = sum(int(np.count_nonzero(np.isfinite(_array(piece)))) for piece in pieces)
-        plan = self.wanted(ranks, edges, count)
-        if plan is None:
+            count = sum(int(np.count_nonzero(np.isfinite(piece))) for piece in pieces)
+        total = np.cumsum(self.counts)  # values in this bin and the ones below
+        if total[-1] != count:  # pragma: no cover - defensive: every chunk is added
             return None
-        wanted, rank_bins, edge_bins = plan
+        under = total - self.counts  # values in the bins below
+        rank_bins = np.searchsorted(total, ranks, side="right")
+        edge_bins = self.bins(np.asarray(edges, dtype=float))
+        wanted = np.zeros(self.counts.size, dtype=bool)
+        wanted[rank_bins] = wanted[edge_bins] = True
         held = int(self.counts[wanted].sum())
-        under = np.cumsum(self.counts) - self.counts  # values in the bins below
+        if held > GATHER_SHARE * count:
+            return None
         kept, labels, k = np.empty(held), np.empty(held, dtype=np.intp), 0
         for piece in pieces:
-            if isinstance(piece, Held):
-                got = piece.ask(("bins", self.placement, wanted))
-                if got is None or k + got[0].size > held:  # defensive, as below
-                    return None
-                kept[k : k + got[0].size], labels[k : k + got[0].size] = got
-                k += got[0].size
-                continue
             k = kernels.gather_bins(
                 piece, self.low, self.scale, FINE_BINS, 1, wanted, kept, labels, k
             )
@@ -1699,37 +1523,8 @@ def _work(size: int) -> np.ndarray:
 # --------------------------------------------------------------------------- summaries
 
 
-def _layout(moments: Moments, bins: int) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
-    """An output's histogram from its ``moments`` alone: numpy's edges for the range
-    numpy would find itself (min, max) and its counts were every value the lowest (a
-    constant output: common in a study, one not moved by the varied inputs); and the
-    floats between min and max where they are too close for the bins (one bin around
-    them, :func:`_floats_between`), else None."""
-    lo, hi, count = moments.low, moments.high, moments.count
-    try:
-        counts, edges = np.histogram(np.array([lo]), bins=bins, range=(lo, hi))
-        counts *= count
-    except ValueError:  # min and max too close for the bins: one bin around them
-        return np.array([count]), np.array([lo, hi]), _floats_between(lo, hi)
-    return counts, edges, None
-
-
-def _request(moments: Moments | None, bins: int, fine: FineCounts | None) -> Request | None:
-    """What :func:`_stats` will ask of each piece of an output (:data:`Request`), None
-    where it asks nothing of them or reads them whole."""
-    if moments is None or moments.low == moments.high:
-        return None
-    _, edges, few = _layout(moments, bins)
-    if few is not None:
-        return ("at_most", few)
-    if fine is None:
-        return None
-    plan = fine.wanted(_quantile_ranks(moments.count), edges[:-1], moments.count)
-    return None if plan is None else ("bins", fine.placement, plan[0])
-
-
 def _stats(
-    column: np.ndarray | Sequence[np.ndarray | Held],
+    column: np.ndarray | Sequence[np.ndarray],
     bins: int,
     moments: Moments | None,
     fine: FineCounts | None = None,
@@ -1751,20 +1546,26 @@ def _stats(
     def finite() -> list[np.ndarray]:
         """The finite values' pieces: made only where read (the fine counts' pass leaves
         NaN and ±inf out itself)."""
-        arrays = [_array(y) for y in given]
-        if count == sum(y.size for y in arrays):
-            return arrays
-        return [y[np.isfinite(y)] for y in arrays]
+        if count == sum(y.size for y in given):
+            return given
+        return [y[np.isfinite(y)] for y in given]
 
-    counts, edges, few = _layout(moments, bins)
+    few = None
+    try:
+        # numpy's edges for the range numpy would find itself (min, max); a constant
+        # output (common in a study: one not moved by the varied inputs) has its
+        # histogram from one value times the count and every quantile at that value
+        counts, edges = np.histogram(np.array([lo]), bins=bins, range=(lo, hi))
+        counts *= count
+    except ValueError:  # min and max too close for the bins: one bin around them
+        counts, edges = np.array([count]), np.array([lo, hi])
+        few = _floats_between(lo, hi)
     if lo == hi:
         quantiles = np.full(len(QUANTILES), lo)
     elif few is not None:  # an output moved by rounding alone: a few floats, counted
         ranks = _quantile_ranks(count)
-        at_most = sum(
-            (y.ask(("at_most", few)) if isinstance(y, Held) else _at_most(y, few) for y in given),
-            np.zeros(few.size, dtype=np.int64),
-        )
+        pieces = finite()
+        at_most = np.array([sum(int(np.count_nonzero(y <= v)) for y in pieces) for v in few])
         quantiles = _interpolate(count, ranks, few[np.searchsorted(at_most, ranks, "right")])
     else:
         ranks = _quantile_ranks(count)
@@ -2222,14 +2023,6 @@ def summarize(spec: ModelSpec, study: Study, p: Plan, merged: ChunkResult) -> di
     # values, as of one chunk, where the merge did not combine them)
     partial = merged.summary or summarize_chunk(replace(merged)).summary
     assert partial is not None
-    if isinstance(merged.values, Columns) and merged.values.held():
-        # values kept where their chunks ran: the wanted bins of every output asked at once
-        requests = {}
-        for name in p.outputs:
-            request = _request(partial.moments[name], study.bins, partial.fine.get(name))
-            if request is not None:
-                requests[name] = request
-        merged.values.prefetch(requests)
     outputs = {
         name: _stats(
             _pieces(merged.values, name), study.bins, partial.moments[name], partial.fine.get(name)

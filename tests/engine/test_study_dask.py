@@ -138,44 +138,6 @@ def test_a_local_cluster_gives_the_in_process_result(reference: StudyRun) -> Non
         executor.close()
 
 
-def test_a_study_whose_values_stay_on_the_workers_gives_the_same_summary() -> None:
-    """Without its raw values kept, a study past RANK_POINTS points leaves its later chunks'
-    values on the workers and asks them for a few fine bins (and, for an output that only
-    rounding moves, counts at a few floats): the summary is the in-process one, bit for
-    bit, and the kept chunks are let go once it is made."""
-    from engine.studies.execute import _OnWorker
-    from engine.studies.plan import RANK_POINTS, Columns
-
-    preload = engine.get_model("preload.tightening")
-    ex = preload.examples[0]
-    study = Study(
-        variables=(
-            Variable("thread_friction", "uniform", low=0.08, high=0.16),
-            Variable("bearing_friction", "normal", mean=0.12, sd=0.012),
-        ),
-        base={k: v for k, v in ex.items() if k != "thread_friction"},
-        samples=RANK_POINTS + 2 * VECTOR_CHUNK + 123,
-        seed=3,
-    )
-    strip = ("elapsed_s", "compute_s")
-    expected = {k: v for k, v in run_study(preload, study).summary.items() if k not in strip}
-    executor = DaskExecutor(n_workers=2)
-    try:
-        run = run_study(preload, study, executor, keep_values=False)
-        assert {k: v for k, v in run.summary.items() if k not in strip} == expected
-        values = run.merged.values
-        assert isinstance(values, Columns)
-        held = values.held()
-        assert held and all(isinstance(y, _OnWorker) for y in held)
-        assert not any(y.keeper.futures for y in held if isinstance(y, _OnWorker))  # let go
-        # with the values kept, the same summary from whole columns
-        kept = run_study(preload, study, executor)
-        assert {k: v for k, v in kept.summary.items() if k not in strip} == expected
-        assert isinstance(kept.merged.values, Columns) and not kept.merged.values.held()
-    finally:
-        executor.close()
-
-
 @pytest.fixture()
 def scheduler() -> Iterator[str]:
     port = _free_port()
