@@ -335,8 +335,9 @@ def all_finite(values: np.ndarray) -> bool:
 
 
 def copy_with_ends(values: np.ndarray) -> tuple[np.ndarray, float, float]:
-    """A copy of the 1-d float array ``values``, with its least and its largest value (NaN
-    where a value is NaN).
+    """A copy of the 1-d float array ``values``, -0.0 folded to 0.0 (as a single run's
+    :meth:`~engine.core.spec.Param.check` folds it: x + 0.0 is x for every other value), with
+    its least and its largest value (NaN where a value is NaN).
 
     Copied a block of :data:`FINITE_BLOCK` values at a time, each block's least and largest
     taken while it is in the processor's cache: one pass over memory where a copy and then
@@ -345,6 +346,8 @@ def copy_with_ends(values: np.ndarray) -> tuple[np.ndarray, float, float]:
 
     >>> copy_with_ends(np.array([2.0, -1.0, 3.0]))
     (array([ 2., -1.,  3.]), -1.0, 3.0)
+    >>> copy_with_ends(np.array([-0.0, -0.0]))
+    (array([0., 0.]), 0.0, 0.0)
     >>> v = np.arange(FINITE_BLOCK + 3.0)
     >>> v[FINITE_BLOCK + 1] = np.nan
     >>> got, low, high = copy_with_ends(v)
@@ -362,7 +365,7 @@ def copy_with_ends(values: np.ndarray) -> tuple[np.ndarray, float, float]:
     for i, start in enumerate(starts):
         end = start + FINITE_BLOCK
         block = out[start:end]
-        np.copyto(block, values[start:end])
+        np.add(values[start:end], 0.0, out=block)  # the copy, -0.0 folded on the way
         lows[i] = least(block)
         highs[i] = largest(block)
     low = float(lows.min())

@@ -1097,7 +1097,8 @@ def _sweep_column(param: Param, values: Sequence[float]) -> tuple[np.ndarray, fl
     """
     # a copy, the sweep's own: a named rung's estimates are made from these values when
     # first read, and the caller may have changed its array by then; a long float array is
-    # copied with its ends read on the way (one pass over the values, not three)
+    # copied with its ends read on the way (one pass over the values, not three). -0.0 is
+    # folded to 0.0, as a single run's check folds it: one answer for one input
     if (
         isinstance(values, np.ndarray)
         and values.dtype == np.float64
@@ -1109,6 +1110,7 @@ def _sweep_column(param: Param, values: Sequence[float]) -> tuple[np.ndarray, fl
         arr = np.array(values, dtype=float)
         if arr.ndim != 1 or arr.size == 0:
             raise InputOutOfRange(f"a sweep of {param.name} needs at least one value", field="num")
+        arr += 0.0  # -0.0 folded (x + 0.0 is x for every other value)
         low, high = float(arr.min()), float(arr.max())
     inside = bool(points.in_range(param, np.array([low, high])).all())
     if not inside or param.kind == "int":

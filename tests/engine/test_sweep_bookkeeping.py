@@ -287,3 +287,29 @@ def test_all_finite_says_no_exactly_where_a_value_is_nan_or_infinite(
             cases.append(column)
     for column in cases:
         assert points.all_finite(column) == bool(np.isfinite(column).all())
+
+
+def test_a_swept_negative_zero_answers_as_a_single_run_of_it():
+    """A single run folds -0.0 to 0.0 (Param.check); a sweep folds its values the same way,
+    on the short path and on the long one (copied with its ends, over 65,536 values), so
+    F_SA at F_A = -0.0 is +0.0 either way, and the swept values' largest is +0.0."""
+    import math
+
+    import numpy as np
+
+    import engine
+    from engine.core import points
+
+    spec = engine.get_model("joint.vdi2230")
+    base = dict(spec.examples[0])
+    single = engine.run(spec, {**base, "working_load": -0.0}).results["additional_bolt_load"]
+    assert single == 0.0 and math.copysign(1.0, single) == 1.0
+    long = np.r_[np.full(points.FINITE_BLOCK + 5, -0.0), 0.0]
+    for values in ([-0.0, 100.0], long):
+        sweep = engine.sweep(spec, base, "working_load", values)
+        assert math.copysign(1.0, sweep.value_array[0]) == 1.0
+        column = sweep.columns["additional_bolt_load"]
+        assert column[0] == 0.0 and math.copysign(1.0, column[0]) == 1.0
+    copied, low, high = points.copy_with_ends(long)
+    assert (low, high) == (0.0, 0.0) and math.copysign(1.0, high) == 1.0
+    assert not np.signbit(copied).any()
