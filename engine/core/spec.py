@@ -728,12 +728,13 @@ class ModelSpec:
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "path", "/" + self.name.replace(".", "/"))
+        scalars = tuple(o.name for o in self.outputs if not o.series)  # declaration order
         tables: dict[str, Any] = {
             "_params": {p.name: p for p in self.inputs},
             "_defaults": {p.name: None if p.required else p.default for p in self.inputs},
             "_units": {o.name: o.unit for o in self.outputs},
-            "_scalar_outputs": frozenset(o.name for o in self.outputs if not o.series),
-            "_scalar_output_names": tuple(o.name for o in self.outputs if not o.series),
+            "_scalar_outputs": frozenset(scalars),
+            "_scalar_output_names": scalars,
             "_series_outputs": frozenset(o.name for o in self.outputs if o.series),
             "_rung_names": tuple(r.name for r in self.rungs),
             "_required": tuple(p.name for p in self.inputs if p.required),
