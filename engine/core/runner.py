@@ -876,9 +876,7 @@ def sweep(
             one_rung = k  # the common case: one rung ran at every point
         else:
             if codes is None:
-                codes = (
-                    np.full(n, -1, dtype=np.int8) if one_rung is None else _one_rung(n, one_rung)
-                )
+                codes = _codes_so_far(n, one_rung)
             codes[slice(None) if whole else sel] = k if bad is None else np.where(bad, -1, k)
         given.append((k, None if whole else sel, bad))
         refused_here = 0 if bad is None else int(np.count_nonzero(bad))
@@ -898,7 +896,7 @@ def sweep(
     looped = [] if loop is None else np.flatnonzero(loop).tolist()
     if codes is None and (one_rung is None or looped):
         # no group gave values (the loop sets the points it computes), or points loop
-        codes = np.full(n, -1, dtype=np.int8) if one_rung is None else _one_rung(n, one_rung)
+        codes = _codes_so_far(n, one_rung)
     any_point = n - len(looped) > 0
     for count, j in enumerate(looped):
         if cancel is not None and cancel.is_set():
@@ -1016,6 +1014,16 @@ def sweep(
     if estimates is not None:
         result.error_array  # noqa: B018  (auto's estimates are made: keep the errors, not them)
     return result
+
+
+def _codes_so_far(n: int, one_rung: int | None) -> np.ndarray:
+    """The rung codes of a sweep's ``n`` points where they are first written: ``one_rung``
+    at every point where one rung has run at all of them, else -1 (none given yet).
+
+    >>> _codes_so_far(2, None), _codes_so_far(2, 1)
+    (array([-1, -1], dtype=int8), array([1, 1], dtype=int8))
+    """
+    return np.full(n, -1, dtype=np.int8) if one_rung is None else _one_rung(n, one_rung)
 
 
 def _one_rung(n: int, k: int) -> np.ndarray:
