@@ -310,6 +310,11 @@ def step_budget(
     return int(min(left * share / step_cost, 1e15))
 
 
+#: The fewest steps of a kernel call whose time measures the cost of a step
+#: (:meth:`StepCost.measured`; a shorter call is mostly its dispatch).
+MEASURED_STEPS = 10_000
+
+
 @dataclass
 class StepCost:
     """One kernel's cost per step in this process: a running mean of its own chunks.
@@ -338,7 +343,7 @@ class StepCost:
         if not self.warm:
             self.warm = True
             return
-        if used >= 10_000 and seconds > 0.0:
+        if used >= MEASURED_STEPS and seconds > 0.0:
             self.seconds = 0.7 * self.seconds + 0.3 * min(seconds / used, STEP_COST_CAP)
 
     def budget(self, deadline: float | None, max_steps: int) -> int:

@@ -146,6 +146,7 @@ import numpy as np
 
 from ..core.errors import BudgetExceeded, EngineError, InfeasibleDesign, SolverFailed
 from ..numerics.ode import (
+    MEASURED_STEPS,
     StepCost,
     all_true,
     any_true,
@@ -2001,7 +2002,7 @@ class _Run:
             code = self.driver()(self.p, c, pu, jac, fw, iw, flags, *bufs, parts)
             self.steps = int(iw[_I_STEPS])
             used = int(iw[_I_USED])
-            # a call that came back after a chunk of 10,000 steps or more (the first in the
+            # a call that came back after a chunk of MEASURED_STEPS steps or more (the first in the
             # process: to mark the cost warm), with the cycle kernel's steps alone (no one-sided
             # stage 3's among them), as the Python driver folded in its chunks
             if (
@@ -2523,7 +2524,7 @@ def _stages(p, c, pu, jac, fw, iw, flags, rt, rw, rq0, rq1, parts):  # type: ign
             iw[_I_STEPS] += used
             iw[_I_USED] += used
             iw[_I_NREC] = n_rec
-            iw[_I_LONG] = 1 if used >= 10_000 else 0
+            iw[_I_LONG] = 1 if used >= MEASURED_STEPS else 0
             if status == 0:
                 return _R_CHUNK
             for s in (t, w, q0, q1, v0, v1):
