@@ -2257,7 +2257,19 @@ _MAX_SWITCHES = 400
 
 
 def _one_sided(p, jac, fs, st, active, cand, q, v, rt, rx, rq0, rq1):  # type: ignore[no-untyped-def]
-    """The one-sided stage 3's event loop (:func:`_one_sided_notes`), compiled.
+    r"""The one-sided stage 3's event loop, compiled.
+
+    Stage 3 with the rollers as free bodies between the cones: four coordinates
+    :math:`q = (y_h, y_s, x - x_0, y_r)`, the n rollers moving as one (mass :math:`n m_p`,
+    point masses), and four one-sided constraints (:data:`CONTACTS`): the half-coupling's
+    stop :math:`y_h \le 0`, the jaws' bottom :math:`y_s \le h_2`, and the two faces,
+    :math:`g_B = y_r - y_h - t_B(x - x_0) \ge 0`, :math:`g_A = y_s - y_r - t_A(x - x_0) \ge
+    0`. A face that would have to pull lets the rollers go (its reaction's sign change is the
+    event); a gap that closes is a plastic catch (no rebound: the same assumption as the
+    seed's other catches, [002] gives no restitution for the rollers) whose impulses are
+    found with the contacts that stay (:func:`_catch`, :func:`_active_set`). While both faces
+    hold, this is the two-degree-of-freedom stage 3 of the module notes. :func:`_stages`
+    starts it where a face would have to pull and runs this event loop.
 
     Runs from the state in ``fs`` and ``st`` (the ``_U_*`` slots), ``active``, ``q`` and
     ``v``, updating them, until the striker is home or ``t_end`` (returns ``_U_DONE``) or
@@ -2797,21 +2809,10 @@ _stages_c = jit(_stages, error_model="numpy")
 
 
 def _one_sided_notes(left2: float, left3: float, first: int, free_both: int) -> list[str]:
-    r"""The note of a stage 3 that went one-sided, from its ``fs`` and ``st`` (:func:`_one_sided`):
-    when face B and face A let the rollers go (NaN: never), the face that went first, how
-    often the rollers flew free of both.
-
-    Stage 3 with the rollers as free bodies between the cones: four coordinates
-    :math:`q = (y_h, y_s, x - x_0, y_r)`, the n rollers moving as one (mass :math:`n m_p`,
-    point masses), and four one-sided constraints (:data:`CONTACTS`): the half-coupling's
-    stop :math:`y_h \le 0`, the jaws' bottom :math:`y_s \le h_2`, and the two faces,
-    :math:`g_B = y_r - y_h - t_B(x - x_0) \ge 0`, :math:`g_A = y_s - y_r - t_A(x - x_0) \ge
-    0`. A face that would have to pull lets the rollers go (its reaction's sign change is the
-    event); a gap that closes is a plastic catch (no rebound: the same assumption as the
-    seed's other catches, [002] gives no restitution for the rollers) whose impulses are
-    found with the contacts that stay (:func:`_catch`, :func:`_active_set`). While both faces
-    hold, this is the two-degree-of-freedom stage 3 of the module notes. :func:`_stages`
-    starts it where a face would have to pull and runs its event loop (:func:`_one_sided`).
+    """The note of a stage 3 that went one-sided (:func:`_one_sided`), from what its state
+    holds: when face B (``left2``) and face A (``left3``) let the rollers go after the blow
+    [s] (NaN: never), the face the kernel noted first (``first``, 2 or 3) and how often the
+    rollers flew free of both (``free_both``).
     """
     if left2 != left2:  # NaN: face B never let go
         if left3 != left3:
