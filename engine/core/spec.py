@@ -618,7 +618,8 @@ class RunContext:
     #: Whether the caller reads the sentences (notes, warnings, the checks' details): a
     #: study's looped points keep the values and the verdicts alone
     #: (:func:`engine.core.runner.run_point`), so a compute may leave the sentences out
-    #: and give :attr:`Result.verdicts` for its checks.
+    #: and give :attr:`Result.verdicts` for its checks, and leave out the error estimate
+    #: too (None: such a caller does not read it).
     sentences: bool = True
 
     @classmethod
