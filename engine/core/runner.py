@@ -552,6 +552,25 @@ def _scalar(value: Value) -> Value:
     return value
 
 
+def point_outputs(
+    spec: ModelSpec,
+    values: Mapping[str, Any],
+    rung: str,
+    outputs: Sequence[str],
+    tolerance: float,
+) -> frozenset[str]:
+    """The checks :func:`run_point` makes of what is the same for every point of a study's
+    chunk (the tolerance, the rung's name, the output names), and ``outputs`` as the set its
+    context reads; raises what :func:`run_point` would raise for each point. ``values``:
+    a point's inputs (a named rung is only checked against the declared names).
+    """
+    _check_tolerance(tolerance)
+    choose_rung(spec, values, rung, tolerance)  # refuses an unknown rung name
+    asked = frozenset(outputs)  # _wanted's set: outputs named, no series
+    _check_outputs(spec, asked)
+    return asked
+
+
 def run_point(
     spec: ModelSpec,
     values: dict[str, Any],
@@ -562,6 +581,7 @@ def run_point(
     budget_s: float | None,
     max_steps: int = DEFAULT_MAX_STEPS,
     cancel: threading.Event | None = None,
+    checked: frozenset[str] | None = None,
 ) -> tuple[str, dict[str, Value], list[tuple[str, bool]]]:
     """One point as a study keeps it: the rung that ran, the ``outputs`` and the checks'
     verdicts, what :func:`run` gives for the same point without its sentences.
@@ -570,20 +590,22 @@ def run_point(
     named, not ``"auto"`` (a study's chunk validates its points as arrays and picks the rung
     once); the model is told it need not write its sentences (``RunContext.sentences``).
     The same compute, fallback, nulls (None where run gives null) and refusals as
-    :func:`run`.
+    :func:`run`. ``checked``: what :func:`point_outputs` gave for the same ``spec``,
+    ``rung``, ``outputs`` and ``tolerance`` (a caller that runs many points checks them
+    once); None: they are checked here.
     """
     with _arithmetic_refused(spec):
-        _check_tolerance(tolerance)
-        choose_rung(spec, values, rung, tolerance)  # refuses an unknown rung name
-        asked = frozenset(outputs)  # _wanted's set: outputs named, no series
-        _check_outputs(spec, asked)
-        ctx = RunContext(
-            rung=rung,
-            outputs=asked,
-            tolerance=tolerance,
-            deadline=None if budget_s is None else time.perf_counter() + budget_s,
-            max_steps=max_steps,
-            cancel=cancel,
+        asked = (
+            point_outputs(spec, values, rung, outputs, tolerance) if checked is None else checked
+        )
+        ctx = RunContext.of_request(
+            rung,
+            asked,
+            tolerance,
+            None if budget_s is None else time.perf_counter() + budget_s,
+            max_steps,
+            cancel,
+            Scratch(),
             sentences=False,
         )
         result = _computed(spec, values, ctx, False, [])

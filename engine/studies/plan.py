@@ -49,6 +49,7 @@ from ..core.runner import (
     DEFAULT_TOLERANCE,
     RunResult,
     choose_rung,
+    point_outputs,
     run,
     run_point,
 )
@@ -830,6 +831,14 @@ def evaluate_chunk(
     # point goes through engine.run as a request would
     named = asked != "auto"
     to_loop = np.flatnonzero(loop).tolist()
+    # what run_point checks of the tolerance, the rung and the outputs is the chunk's: checked
+    # once here (where it refuses, each point checks and is refused as before)
+    checked: frozenset[str] | None = None
+    if named and to_loop:
+        try:
+            checked = point_outputs(spec, fixed, asked, outputs, tol)
+        except EngineError:
+            checked = None
     # each varied column as Python numbers once (what .item() gives a point at a time); a
     # looped point is in ``valid`` (finite and within the declared bounds, as Param.check
     # asks), so of a float input's check only the fold of -0.0 is left: made on the column
@@ -893,7 +902,14 @@ def evaluate_chunk(
         try:
             if values_j is not None:
                 res = run_point(
-                    spec, values_j, asked, outputs, tolerance=tol, budget_s=left, cancel=cancel
+                    spec,
+                    values_j,
+                    asked,
+                    outputs,
+                    tolerance=tol,
+                    budget_s=left,
+                    cancel=cancel,
+                    checked=checked,
                 )
             else:
                 res = _as_point(
