@@ -1864,10 +1864,12 @@ def _ensure_compiled(p: np.ndarray) -> float:
 
 
 def _params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
-    """The cycle kernel's parameter vector (indices ``C1`` … ``PUSHP``), made in one call."""
+    """The cycle kernel's parameter vector (indices ``C1`` … ``PUSHP``), made in one call.
+
+    ``MEP`` and ``PUSHP``, the printed [002, eq. 1]'s effective mass and push, are read by
+    its stage 1 alone (mode ``S1P``): NaN for the other geometries.
+    """
     w_nl = x.get("motor_no_load_speed")
-    t = math.tan(x["cone_angle"])
-    nm = x["roller_count"] * x["roller_mass"]
     m1, m2 = x["half_coupling_mass"], x["stepped_shaft_mass"]
     return np.array(
         [
@@ -1882,9 +1884,9 @@ def _params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
             0.0 if w_nl is None else w_nl,
             x["release_travel"], x["engagement_height"],
             relock_friction(x),
-            t,
-            m1 + m2 + nm / (2.0 * t * t),
-            nm / (2.0 * t),
+            g.tan_a,
+            _effective_mass(x, g) if g.paper else math.nan,
+            _push_per_w2(x, g) if g.paper else math.nan,
         ],
         dtype=float,
     )  # fmt: skip
