@@ -382,12 +382,19 @@ def _geo(x: Mapping[str, Any]) -> Geometry:
 
 
 def _effective_mass(x: Mapping[str, Any], g: Geometry) -> Any:
-    r""":math:`m_e = m_1 + m_2 + n m_p(\kappa^2+\rho^2)` (paper: :math:`n m_p/(2\tan^2\alpha)`)."""
+    r""":math:`m_e = m_1 + m_2 + n m_p(\kappa^2+\rho^2)` (paper: :func:`_paper_effective_mass`)."""
+    if g.paper:
+        return _paper_effective_mass(x, g.tan_a)
     nm = x["roller_count"] * x["roller_mass"]
     m12 = x["half_coupling_mass"] + x["stepped_shaft_mass"]
-    if g.paper:
-        return m12 + nm / (2.0 * g.tan_a * g.tan_a)
     return m12 + nm * (g.kappa * g.kappa + g.a_h * g.a_h)
+
+
+def _paper_effective_mass(x: Mapping[str, Any], tan_a: Any) -> Any:
+    r"""The printed [002, eq. 1]'s :math:`m_e = m_1 + m_2 + n m_p/(2\tan^2\alpha)` [kg]."""
+    nm = x["roller_count"] * x["roller_mass"]
+    m12 = x["half_coupling_mass"] + x["stepped_shaft_mass"]
+    return m12 + nm / (2.0 * tan_a * tan_a)
 
 
 def stage1_effective_mass(x: Mapping[str, Any]) -> Any:
@@ -424,10 +431,15 @@ def _weight(x: Mapping[str, Any], g: Geometry) -> Any:
 
 def _push_per_w2(x: Mapping[str, Any], g: Geometry) -> Any:
     """Axial push on the half-coupling per ω² and per metre of roller radius [kg]."""
-    nm = x["roller_count"] * x["roller_mass"]
     if g.paper:
-        return nm / (2.0 * g.tan_a)
-    return nm * g.kappa
+        return _paper_push_per_w2(x, g.tan_a)
+    return x["roller_count"] * x["roller_mass"] * g.kappa
+
+
+def _paper_push_per_w2(x: Mapping[str, Any], tan_a: Any) -> Any:
+    """The printed [002, eq. 1]'s push per ω² and per metre of roller radius,
+    :math:`n m_p/(2\tan\alpha)` [kg]."""
+    return x["roller_count"] * x["roller_mass"] / (2.0 * tan_a)
 
 
 def _preload_force(x: Mapping[str, Any], g: Geometry) -> Any:
@@ -1866,8 +1878,8 @@ def _ensure_compiled(p: np.ndarray) -> float:
 def _params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
     """The cycle kernel's parameter vector (indices ``C1`` … ``PUSHP``), made in one call.
 
-    ``MEP`` and ``PUSHP``, the printed [002, eq. 1]'s effective mass and push, are read by
-    its stage 1 alone (mode ``S1P``): NaN for the other geometries.
+    ``TANA``, ``MEP`` and ``PUSHP``: tan α and the printed [002, eq. 1]'s effective mass and
+    push at the design's cone angle (mode ``S1P``), for every geometry.
     """
     w_nl = x.get("motor_no_load_speed")
     m1, m2 = x["half_coupling_mass"], x["stepped_shaft_mass"]
@@ -1884,9 +1896,9 @@ def _params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
             0.0 if w_nl is None else w_nl,
             x["release_travel"], x["engagement_height"],
             relock_friction(x),
-            g.tan_a,
-            _effective_mass(x, g) if g.paper else math.nan,
-            _push_per_w2(x, g) if g.paper else math.nan,
+            g.tan_a,  # the geometry's: worked out once a request
+            _paper_effective_mass(x, g.tan_a),
+            _paper_push_per_w2(x, g.tan_a),
         ],
         dtype=float,
     )  # fmt: skip
