@@ -135,6 +135,7 @@ def _outcome(x: Mapping[str, Any], ctx: RunContext) -> CycleOutcome:
             record=ctx.wants(*_SERIES),
             deadline=ctx.deadline,
             max_steps=ctx.max_steps,
+            sentences=ctx.sentences,
         )
     o = _cycle(x, ctx.scratch)
     if o.refused:

@@ -2925,6 +2925,7 @@ def simulate_cycle(
     deadline: float | None = None,
     max_steps: int = 1_000_000,
     steps_per_period: int = STEPS_PER_PERIOD,
+    sentences: bool = True,
 ) -> CycleOutcome:
     """The whole impact as one hybrid simulation (module notes); series when ``record``.
 
@@ -2941,6 +2942,9 @@ def simulate_cycle(
         is what the time left affords (:func:`engine.numerics.ode.step_budget`)
     steps_per_period : int
         RK4 steps per shortest natural period of each mode, [-]
+    sentences : bool
+        Write the one-sided stage 3's note (False: a caller that reads no sentences, a
+        study's looped point; its numbers formatted cost a µs a design)
 
     Examples
     --------
@@ -3087,7 +3091,7 @@ def simulate_cycle(
         # the balance of the mechanism at the blow, for the stage-2 reach without the blow
         c_b = (big * x["gravity"] + c1 * z_off - c3 * lam3) / (c1 + c3)
         max_travel = max(max_travel, h2, 2.0 * c_b)
-    if iw[_I_ONE_SIDED]:
+    if sentences and iw[_I_ONE_SIDED]:
         left2, left3 = fw[_F_U + _U_LEFT2 : _F_U + _U_LEFT3 + 1].tolist()
         notes.extend(
             _one_sided_notes(left2, left3, int(iw[_I_U + _U_FIRST]), int(iw[_I_U + _U_FREE]))
