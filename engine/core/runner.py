@@ -467,7 +467,7 @@ def prepare(
     return Prepared(*_prepare(spec, inputs, fidelity, tolerance, guarded=False))
 
 
-def _check_tolerance(tol: float) -> None:
+def check_tolerance(tol: float) -> None:
     """Refuse a tolerance outside (0, 1), naming the field."""
     if not (math.isfinite(tol) and 0.0 < tol < 1.0):
         raise InputOutOfRange(
@@ -499,7 +499,7 @@ def _prepare(
     :class:`Prepared` of its own (a frozen dataclass: ~0.6 µs a call)."""
     values, warnings = spec.validate(inputs)
     tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
-    _check_tolerance(tol)
+    check_tolerance(tol)
     asked = _fidelity(spec, fidelity, tolerance)
     scratch = Scratch()
     if asked == "auto" and not guarded:  # the estimates run: one numpy error state for them
@@ -564,7 +564,7 @@ def point_outputs(
     context reads; raises what :func:`run_point` would raise for each point. ``values``:
     a point's inputs (a named rung is only checked against the declared names).
     """
-    _check_tolerance(tolerance)
+    check_tolerance(tolerance)
     choose_rung(spec, values, rung, tolerance)  # refuses an unknown rung name
     asked = frozenset(outputs)  # _wanted's set: outputs named, no series
     _check_outputs(spec, asked)
@@ -798,7 +798,7 @@ def sweep(
     notes: list[str] = []
     scratch = Scratch()  # the estimates' work on x, for the array path on the same x
     points.keep_ends(scratch, vary, low, high)  # read once here, for the array path
-    _check_tolerance(tol)
+    check_tolerance(tol)
     # each rung group: its rung, the points it holds (None: every point)
     groups: list[tuple[int, np.ndarray | None]]
     estimates: Mapping[int, np.ndarray | None] | None

@@ -168,7 +168,12 @@ from ..numerics.ode import (
     tan,
     where,
 )
-from ..physics.rare_impact import relock_time, rotating_inertia, striker_oscillation
+from ..physics.rare_impact import (
+    relock_time,
+    rotating_inertia,
+    stage1_mass_at_slope,
+    striker_oscillation,
+)
 
 __all__ = [
     "GEOMETRIES",
@@ -391,10 +396,11 @@ def _effective_mass(x: Mapping[str, Any], g: Geometry) -> Any:
 
 
 def _paper_effective_mass(x: Mapping[str, Any], tan_a: Any) -> Any:
-    r"""The printed [002, eq. 1]'s :math:`m_e = m_1 + m_2 + n m_p/(2\tan^2\alpha)` [kg]."""
-    nm = x["roller_count"] * x["roller_mass"]
-    m12 = x["half_coupling_mass"] + x["stepped_shaft_mass"]
-    return m12 + nm / (2.0 * tan_a * tan_a)
+    r"""The printed [002, eq. 1]'s :math:`m_e = m_1 + m_2 + n m_p/(2\tan^2\alpha)` [kg]
+    (:func:`engine.physics.rare_impact.stage1_mass_at_slope`)."""
+    return stage1_mass_at_slope(
+        x["half_coupling_mass"], x["stepped_shaft_mass"], x["roller_mass"], x["roller_count"], tan_a
+    )
 
 
 def stage1_effective_mass(x: Mapping[str, Any]) -> Any:
@@ -437,7 +443,7 @@ def _push_per_w2(x: Mapping[str, Any], g: Geometry) -> Any:
 
 
 def _paper_push_per_w2(x: Mapping[str, Any], tan_a: Any) -> Any:
-    """The printed [002, eq. 1]'s push per ω² and per metre of roller radius,
+    r"""The printed [002, eq. 1]'s push per ω² and per metre of roller radius,
     :math:`n m_p/(2\tan\alpha)` [kg]."""
     return x["roller_count"] * x["roller_mass"] / (2.0 * tan_a)
 
@@ -2988,7 +2994,7 @@ def simulate_cycle(
     slow = 2.0 * math.pi / math.sqrt(max(k_qs, 1e-300) / m_e)
     t_end = t_qs + span + min(50.0 * slow, 10.0 * span + 1.0)
     w_end = w_nl if w_nl is not None else x["motor_torque"] / inertia_0 * t_end
-    push = _push_per_w2(x, g) * (g.kappa if not g.paper else 1.0 / math.tan(x["cone_angle"]))
+    push = _push_per_w2(x, g) * g.kappa  # the paper's κ is 1/tan α: the same float
     om_max = math.sqrt(max(c1 + c2, push * w_end * w_end) / m_e)
     h = 2.0 * math.pi / (steps_per_period * om_max)
     if record and t_l > 0.0:

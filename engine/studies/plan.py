@@ -48,6 +48,7 @@ from ..core.runner import (
     DEFAULT_BUDGET_S,
     DEFAULT_TOLERANCE,
     RunResult,
+    check_tolerance,
     choose_rung,
     point_outputs,
     run,
@@ -456,6 +457,8 @@ def _checked(
 ) -> tuple[list[Param], tuple[str, ...], int, dict[str, np.ndarray] | None]:
     """What :func:`plan` needs before drawing: the varied params, the outputs to collect,
     the number of points and (a grid) its axes; every cheap refusal is raised here."""
+    if study.tolerance is not None:  # as engine.run refuses it, before a point is drawn
+        check_tolerance(float(study.tolerance))
     if study.method not in METHODS:
         raise InputOutOfRange(
             f"method = {study.method!r} is not allowed: must be one of {', '.join(METHODS)}",
