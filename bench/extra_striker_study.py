@@ -8,8 +8,9 @@ process with the simulation rung named. The compiled kernels
 events with the calls of the cycle kernel ``_advance_c`` and of ``_one_sided_c``, the
 one-sided stage 3 with its event loop and contact sets; those two where called alone) are
 wrapped for the run by a counter that adds up the CPU time of each call; everything else
-(the stages' set-up from the inputs, the runner, validation, the error estimate, notes, the
-summary) is the overhead.
+(the stages' set-up from the inputs, the runner, validation, the outputs and verdicts, the
+summary) is the overhead. A study's looped point keeps no error estimate nor sentences, so
+the model makes none (``RunContext.sentences``).
 Times are CPU seconds (``time.process_time``): the machine is shared.
 
 ``STRIKER_STUDY_POINTS`` sets the study's size (default 10,000);
@@ -171,8 +172,8 @@ def measure() -> list[dict[str, Any]]:
             f"{f['kernel_s'] / n * 1e6:.0f} µs: "
             + ", ".join(f"{k} {v * 1e6:.0f} µs" for k, v in f["layers_s"].items())
             + f" (the cycle's Python driver around its {f['calls'] / n:.0f} kernel call(s); "
-            "a point's run with the model's outputs, error estimate and verdicts; the "
-            "study's loop with its validation)",
+            "a point's run with the model's outputs and verdicts (a study keeps no error "
+            "estimate); the study's loop with its validation)",
         }
     ]
 

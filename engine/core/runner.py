@@ -467,7 +467,7 @@ def prepare(
     return Prepared(*_prepare(spec, inputs, fidelity, tolerance, guarded=False))
 
 
-def _check_tolerance(tol: float) -> None:
+def check_tolerance(tol: float) -> None:
     """Refuse a tolerance outside (0, 1), naming the field."""
     if not (math.isfinite(tol) and 0.0 < tol < 1.0):
         raise InputOutOfRange(
@@ -499,7 +499,7 @@ def _prepare(
     :class:`Prepared` of its own (a frozen dataclass: ~0.6 µs a call)."""
     values, warnings = spec.validate(inputs)
     tol = DEFAULT_TOLERANCE if tolerance is None else float(tolerance)
-    _check_tolerance(tol)
+    check_tolerance(tol)
     asked = _fidelity(spec, fidelity, tolerance)
     scratch = Scratch()
     if asked == "auto" and not guarded:  # the estimates run: one numpy error state for them
@@ -552,6 +552,25 @@ def _scalar(value: Value) -> Value:
     return value
 
 
+def point_outputs(
+    spec: ModelSpec,
+    values: Mapping[str, Any],
+    rung: str,
+    outputs: Sequence[str],
+    tolerance: float,
+) -> frozenset[str]:
+    """The checks :func:`run_point` makes of what is the same for every point of a study's
+    chunk (the tolerance, the rung's name, the output names), and ``outputs`` as the set its
+    context reads; raises what :func:`run_point` would raise for each point. ``values``:
+    a point's inputs (a named rung is only checked against the declared names).
+    """
+    check_tolerance(tolerance)
+    choose_rung(spec, values, rung, tolerance)  # refuses an unknown rung name
+    asked = frozenset(outputs)  # _wanted's set: outputs named, no series
+    _check_outputs(spec, asked)
+    return asked
+
+
 def run_point(
     spec: ModelSpec,
     values: dict[str, Any],
@@ -562,6 +581,7 @@ def run_point(
     budget_s: float | None,
     max_steps: int = DEFAULT_MAX_STEPS,
     cancel: threading.Event | None = None,
+    checked: frozenset[str] | None = None,
 ) -> tuple[str, dict[str, Value], list[tuple[str, bool]]]:
     """One point as a study keeps it: the rung that ran, the ``outputs`` and the checks'
     verdicts, what :func:`run` gives for the same point without its sentences.
@@ -570,20 +590,22 @@ def run_point(
     named, not ``"auto"`` (a study's chunk validates its points as arrays and picks the rung
     once); the model is told it need not write its sentences (``RunContext.sentences``).
     The same compute, fallback, nulls (None where run gives null) and refusals as
-    :func:`run`.
+    :func:`run`. ``checked``: what :func:`point_outputs` gave for the same ``spec``,
+    ``rung``, ``outputs`` and ``tolerance`` (a caller that runs many points checks them
+    once); None: they are checked here.
     """
     with _arithmetic_refused(spec):
-        _check_tolerance(tolerance)
-        choose_rung(spec, values, rung, tolerance)  # refuses an unknown rung name
-        asked = frozenset(outputs)  # _wanted's set: outputs named, no series
-        _check_outputs(spec, asked)
-        ctx = RunContext(
-            rung=rung,
-            outputs=asked,
-            tolerance=tolerance,
-            deadline=None if budget_s is None else time.perf_counter() + budget_s,
-            max_steps=max_steps,
-            cancel=cancel,
+        asked = (
+            point_outputs(spec, values, rung, outputs, tolerance) if checked is None else checked
+        )
+        ctx = RunContext.of_request(
+            rung,
+            asked,
+            tolerance,
+            None if budget_s is None else time.perf_counter() + budget_s,
+            max_steps,
+            cancel,
+            Scratch(),
             sentences=False,
         )
         result = _computed(spec, values, ctx, False, [])
@@ -776,7 +798,7 @@ def sweep(
     notes: list[str] = []
     scratch = Scratch()  # the estimates' work on x, for the array path on the same x
     points.keep_ends(scratch, vary, low, high)  # read once here, for the array path
-    _check_tolerance(tol)
+    check_tolerance(tol)
     # each rung group: its rung, the points it holds (None: every point)
     groups: list[tuple[int, np.ndarray | None]]
     estimates: Mapping[int, np.ndarray | None] | None

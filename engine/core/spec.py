@@ -618,7 +618,8 @@ class RunContext:
     #: Whether the caller reads the sentences (notes, warnings, the checks' details): a
     #: study's looped points keep the values and the verdicts alone
     #: (:func:`engine.core.runner.run_point`), so a compute may leave the sentences out
-    #: and give :attr:`Result.verdicts` for its checks.
+    #: and give :attr:`Result.verdicts` for its checks, and leave out the error estimate
+    #: too (None: such a caller does not read it).
     sentences: bool = True
 
     @classmethod
@@ -631,15 +632,21 @@ class RunContext:
         max_steps: int,
         cancel: threading.Event | None,
         scratch: Scratch,
+        *,
+        sentences: bool = True,
     ) -> RunContext:
-        """The context of one request, checks and sentences read: equal to
+        """The context of one request, checks read (and the sentences, unless
+        ``sentences`` is False: a study's looped point): equal to
         ``RunContext(rung, outputs, ...)`` with these fields, made by filling its fields at
         once where the frozen dataclass's constructor sets them one ``object.__setattr__``
-        at a time (1.0 against 0.3 µs, on each :func:`engine.run`).
+        at a time (1.0 against 0.3 µs, on each :func:`engine.run` and study point).
 
         >>> s = Scratch()
         >>> made = RunContext.of_request("closed_form", frozenset({"a"}), 0.01, None, 5, None, s)
         >>> made == RunContext("closed_form", frozenset({"a"}), 0.01, None, 5, None, s)
+        True
+        >>> RunContext.of_request("a", frozenset(), 0.01, None, 5, None, s, sentences=False) == (
+        ...     RunContext("a", frozenset(), 0.01, None, 5, None, s, sentences=False))
         True
         """
         self = object.__new__(cls)
@@ -652,7 +659,7 @@ class RunContext:
             cancel=cancel,
             scratch=scratch,
             checks=True,
-            sentences=True,
+            sentences=sentences,
         )
         return self
 

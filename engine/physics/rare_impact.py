@@ -87,6 +87,7 @@ __all__ = [
     "return_time",
     "spin_up_time",
     "spring_height_limit",
+    "stage1_mass_at_slope",
     "striker_oscillation",
     "striker_travel",
     "time_to_travel",
@@ -298,7 +299,37 @@ def effective_stage1_mass(
     >>> round(float(effective_stage1_mass(0.15, 0.05, 0.05, 6, math.pi / 4)), 6)
     0.35
     """
-    t = np.tan(cone_angle)
+    return stage1_mass_at_slope(
+        half_coupling_mass, stepped_shaft_mass, roller_mass, roller_count, np.tan(cone_angle)
+    )
+
+
+def stage1_mass_at_slope(
+    half_coupling_mass: Any, stepped_shaft_mass: Any, roller_mass: Any, roller_count: Any,
+    tan_cone: Any,
+) -> Any:  # fmt: skip
+    r""":func:`effective_stage1_mass` from the cone's slope :math:`\tan\alpha` [kg], for a
+    caller that has the tangent already (the striker's cycle works it out once a design).
+
+    Parameters
+    ----------
+    half_coupling_mass : float or ndarray
+        Half-coupling mass :math:`m_1`, [kg]
+    stepped_shaft_mass : float or ndarray
+        Stepped shaft mass :math:`m_2`, [kg]
+    roller_mass : float or ndarray
+        Mass of one roller :math:`m_p`, [kg]
+    roller_count : float or ndarray
+        Number of rollers :math:`n`, [-]
+    tan_cone : float or ndarray
+        Slope of the cone :math:`\tan\alpha`, [-]
+
+    Examples
+    --------
+    >>> round(float(stage1_mass_at_slope(0.15, 0.05, 0.05, 6, 1.0)), 6)
+    0.35
+    """
+    t = tan_cone
     return half_coupling_mass + stepped_shaft_mass + roller_count * roller_mass / (2.0 * t * t)
 
 

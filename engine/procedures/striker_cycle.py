@@ -168,7 +168,12 @@ from ..numerics.ode import (
     tan,
     where,
 )
-from ..physics.rare_impact import relock_time, rotating_inertia, striker_oscillation
+from ..physics.rare_impact import (
+    relock_time,
+    rotating_inertia,
+    stage1_mass_at_slope,
+    striker_oscillation,
+)
 
 __all__ = [
     "GEOMETRIES",
@@ -382,12 +387,20 @@ def _geo(x: Mapping[str, Any]) -> Geometry:
 
 
 def _effective_mass(x: Mapping[str, Any], g: Geometry) -> Any:
-    r""":math:`m_e = m_1 + m_2 + n m_p(\kappa^2+\rho^2)` (paper: :math:`n m_p/(2\tan^2\alpha)`)."""
+    r""":math:`m_e = m_1 + m_2 + n m_p(\kappa^2+\rho^2)` (paper: :func:`_paper_effective_mass`)."""
+    if g.paper:
+        return _paper_effective_mass(x, g.tan_a)
     nm = x["roller_count"] * x["roller_mass"]
     m12 = x["half_coupling_mass"] + x["stepped_shaft_mass"]
-    if g.paper:
-        return m12 + nm / (2.0 * g.tan_a * g.tan_a)
     return m12 + nm * (g.kappa * g.kappa + g.a_h * g.a_h)
+
+
+def _paper_effective_mass(x: Mapping[str, Any], tan_a: Any) -> Any:
+    r"""The printed [002, eq. 1]'s :math:`m_e = m_1 + m_2 + n m_p/(2\tan^2\alpha)` [kg]
+    (:func:`engine.physics.rare_impact.stage1_mass_at_slope`)."""
+    return stage1_mass_at_slope(
+        x["half_coupling_mass"], x["stepped_shaft_mass"], x["roller_mass"], x["roller_count"], tan_a
+    )
 
 
 def stage1_effective_mass(x: Mapping[str, Any]) -> Any:
@@ -424,10 +437,15 @@ def _weight(x: Mapping[str, Any], g: Geometry) -> Any:
 
 def _push_per_w2(x: Mapping[str, Any], g: Geometry) -> Any:
     """Axial push on the half-coupling per ω² and per metre of roller radius [kg]."""
-    nm = x["roller_count"] * x["roller_mass"]
     if g.paper:
-        return nm / (2.0 * g.tan_a)
-    return nm * g.kappa
+        return _paper_push_per_w2(x, g.tan_a)
+    return x["roller_count"] * x["roller_mass"] * g.kappa
+
+
+def _paper_push_per_w2(x: Mapping[str, Any], tan_a: Any) -> Any:
+    r"""The printed [002, eq. 1]'s push per ω² and per metre of roller radius,
+    :math:`n m_p/(2\tan\alpha)` [kg]."""
+    return x["roller_count"] * x["roller_mass"] / (2.0 * tan_a)
 
 
 def _preload_force(x: Mapping[str, Any], g: Geometry) -> Any:
@@ -1864,10 +1882,12 @@ def _ensure_compiled(p: np.ndarray) -> float:
 
 
 def _params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
-    """The cycle kernel's parameter vector (indices ``C1`` … ``PUSHP``), made in one call."""
+    """The cycle kernel's parameter vector (indices ``C1`` … ``PUSHP``), made in one call.
+
+    ``TANA``, ``MEP`` and ``PUSHP``: tan α and the printed [002, eq. 1]'s effective mass and
+    push at the design's cone angle (mode ``S1P``), for every geometry.
+    """
     w_nl = x.get("motor_no_load_speed")
-    t = math.tan(x["cone_angle"])
-    nm = x["roller_count"] * x["roller_mass"]
     m1, m2 = x["half_coupling_mass"], x["stepped_shaft_mass"]
     return np.array(
         [
@@ -1882,9 +1902,9 @@ def _params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
             0.0 if w_nl is None else w_nl,
             x["release_travel"], x["engagement_height"],
             relock_friction(x),
-            t,
-            m1 + m2 + nm / (2.0 * t * t),
-            nm / (2.0 * t),
+            g.tan_a,  # the geometry's: worked out once a request
+            _paper_effective_mass(x, g.tan_a),
+            _paper_push_per_w2(x, g.tan_a),
         ],
         dtype=float,
     )  # fmt: skip
@@ -2911,6 +2931,7 @@ def simulate_cycle(
     deadline: float | None = None,
     max_steps: int = 1_000_000,
     steps_per_period: int = STEPS_PER_PERIOD,
+    sentences: bool = True,
 ) -> CycleOutcome:
     """The whole impact as one hybrid simulation (module notes); series when ``record``.
 
@@ -2927,6 +2948,9 @@ def simulate_cycle(
         is what the time left affords (:func:`engine.numerics.ode.step_budget`)
     steps_per_period : int
         RK4 steps per shortest natural period of each mode, [-]
+    sentences : bool
+        Write the one-sided stage 3's note (False: a caller that reads no sentences, a
+        study's looped point; its numbers formatted cost a µs a design)
 
     Examples
     --------
@@ -2970,7 +2994,7 @@ def simulate_cycle(
     slow = 2.0 * math.pi / math.sqrt(max(k_qs, 1e-300) / m_e)
     t_end = t_qs + span + min(50.0 * slow, 10.0 * span + 1.0)
     w_end = w_nl if w_nl is not None else x["motor_torque"] / inertia_0 * t_end
-    push = _push_per_w2(x, g) * (g.kappa if not g.paper else 1.0 / math.tan(x["cone_angle"]))
+    push = _push_per_w2(x, g) * g.kappa  # the paper's κ is 1/tan α: the same float
     om_max = math.sqrt(max(c1 + c2, push * w_end * w_end) / m_e)
     h = 2.0 * math.pi / (steps_per_period * om_max)
     if record and t_l > 0.0:
@@ -3073,7 +3097,7 @@ def simulate_cycle(
         # the balance of the mechanism at the blow, for the stage-2 reach without the blow
         c_b = (big * x["gravity"] + c1 * z_off - c3 * lam3) / (c1 + c3)
         max_travel = max(max_travel, h2, 2.0 * c_b)
-    if iw[_I_ONE_SIDED]:
+    if sentences and iw[_I_ONE_SIDED]:
         left2, left3 = fw[_F_U + _U_LEFT2 : _F_U + _U_LEFT3 + 1].tolist()
         notes.extend(
             _one_sided_notes(left2, left3, int(iw[_I_U + _U_FIRST]), int(iw[_I_U + _U_FREE]))

@@ -48,7 +48,9 @@ from ..core.runner import (
     DEFAULT_BUDGET_S,
     DEFAULT_TOLERANCE,
     RunResult,
+    check_tolerance,
     choose_rung,
+    point_outputs,
     run,
     run_point,
 )
@@ -455,6 +457,8 @@ def _checked(
 ) -> tuple[list[Param], tuple[str, ...], int, dict[str, np.ndarray] | None]:
     """What :func:`plan` needs before drawing: the varied params, the outputs to collect,
     the number of points and (a grid) its axes; every cheap refusal is raised here."""
+    if study.tolerance is not None:  # as engine.run refuses it, before a point is drawn
+        check_tolerance(float(study.tolerance))
     if study.method not in METHODS:
         raise InputOutOfRange(
             f"method = {study.method!r} is not allowed: must be one of {', '.join(METHODS)}",
@@ -830,6 +834,14 @@ def evaluate_chunk(
     # point goes through engine.run as a request would
     named = asked != "auto"
     to_loop = np.flatnonzero(loop).tolist()
+    # what run_point checks of the tolerance, the rung and the outputs is the chunk's: checked
+    # once here (where it refuses, each point checks and is refused as before)
+    checked: frozenset[str] | None = None
+    if named and to_loop:
+        try:
+            checked = point_outputs(spec, fixed, asked, outputs, tol)
+        except EngineError:
+            checked = None
     # each varied column as Python numbers once (what .item() gives a point at a time); a
     # looped point is in ``valid`` (finite and within the declared bounds, as Param.check
     # asks), so of a float input's check only the fold of -0.0 is left: made on the column
@@ -893,7 +905,14 @@ def evaluate_chunk(
         try:
             if values_j is not None:
                 res = run_point(
-                    spec, values_j, asked, outputs, tolerance=tol, budget_s=left, cancel=cancel
+                    spec,
+                    values_j,
+                    asked,
+                    outputs,
+                    tolerance=tol,
+                    budget_s=left,
+                    cancel=cancel,
+                    checked=checked,
                 )
             else:
                 res = _as_point(
