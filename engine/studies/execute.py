@@ -37,6 +37,7 @@ idle within that and one point's time, where they ran a 256-point chunk to its e
 
 from __future__ import annotations
 
+import copy
 import os
 import threading
 import time
@@ -469,7 +470,10 @@ class DaskExecutor:
             for fut in done:
                 if cancel.is_set():
                     break
-                result = fut.result()
+                try:
+                    result = fut.result()
+                except BaseException as exc:
+                    raise _detached(exc) from None
                 with lock:
                     flying.discard(fut)
                 yield index[fut.key], result
@@ -499,6 +503,32 @@ class DaskExecutor:
             if self._cluster is not None:
                 self._cluster.close()
             self._client = self._cluster = None
+
+
+def _detached(exc: BaseException) -> BaseException:
+    """A chunk's error (a worker's exception, a cancel) as a new exception of the same
+    type, message and fields, and Dask's own let go of this study.
+
+    Dask keeps the exception a failed future raises for as long as its client knows the
+    key, and raising it adds the raiser's frames to its traceback: the study's frames then
+    held its inputs, its merged values and the futures (which keep the key known) for the
+    client's life, some 100 MB a failed 10⁶-point study. The stored one gets its traceback
+    back from Dask each time it is raised.
+
+    >>> stored = ValueError("boom")
+    >>> try:
+    ...     raise stored
+    ... except ValueError as e:
+    ...     got = _detached(e)
+    >>> got is not stored, str(got), stored.__traceback__ is None
+    (True, 'boom', True)
+    """
+    exc.__traceback__ = None
+    try:
+        copied = copy.copy(exc)
+    except Exception:  # an exception that cannot be remade from its args: raised as it is
+        return exc
+    return copied if type(copied) is type(exc) and str(copied) == str(exc) else exc
 
 
 def _name(spec: ModelSpec | str) -> str:

@@ -238,3 +238,55 @@ def test_the_service_sends_a_study_to_the_scheduler_it_is_told(
     got = {k: v for k, v in state["result"].items() if k not in strip}
     want = {k: v for k, v in reference.summary.items() if k not in strip}
     assert got == want
+
+
+def test_a_failed_chunk_leaves_nothing_of_its_study_behind() -> None:
+    """A chunk that raises on its worker fails the study with the worker's error, and the
+    study's values, futures and keys go with it: Dask keeps the exception it raised for as
+    long as the client knows the key, so the study's frames must not end up in it."""
+    import gc
+
+    from engine.studies.plan import Merger, chunks, plan
+
+    spec = engine.get_model("preload.tightening")
+    ex = dict(spec.examples[0])
+    study = Study(
+        variables=(Variable("thread_friction", "uniform", low=0.08, high=0.16),),
+        base={k: v for k, v in ex.items() if k != "thread_friction"},
+        samples=4 * VECTOR_CHUNK,
+        seed=5,
+    )
+    p = plan(spec, study)
+    starts = [a for a, _ in chunks(p.n_points, VECTOR_CHUNK)]
+    bad = float(p.columns["thread_friction"][starts[2]])  # the third chunk's first point
+
+    def install() -> None:
+        import engine.studies.execute as remote
+
+        kept = getattr(remote, "_kept_evaluate_chunk", remote.evaluate_chunk)
+        remote._kept_evaluate_chunk = kept  # type: ignore[attr-defined]
+
+        def failing(spec: Any, base: Any, columns: Any, *args: Any, **kwargs: Any) -> Any:
+            if float(columns["thread_friction"][0]) == bad:
+                raise ValueError("a worker's error in the third chunk")
+            return kept(spec, base, columns, *args, **kwargs)
+
+        remote.evaluate_chunk = failing  # type: ignore[assignment]
+
+    executor = DaskExecutor(n_workers=1)
+    try:
+        client = executor.client()
+        client.run(install)
+        for _ in range(2):
+            with pytest.raises(ValueError, match="a worker's error in the third chunk"):
+                run_study(spec, study, executor)
+        end = time.monotonic() + 10.0
+        while True:
+            gc.collect()
+            left = (len(client.futures), sum(isinstance(o, Merger) for o in gc.get_objects()))
+            if left == (0, 0) or time.monotonic() > end:
+                break
+            time.sleep(0.1)
+        assert left == (0, 0), f"futures the client still knows, studies' values alive: {left}"
+    finally:
+        executor.close()
