@@ -659,6 +659,18 @@ def _values(x: Mapping[str, Any], o: CycleOutcome, rung: str) -> dict[str, Any]:
     return values
 
 
+def _raw_values(x: Mapping[str, Any], o: CycleOutcome, rung: str) -> dict[str, Any]:
+    """:func:`_values` before its conversion (inf or NaN where never reached), for a caller
+    that reads no sentences: :func:`engine.core.runner.run_point` makes each value what a
+    run gives (a float, None where not finite) as it takes it, which converted them a
+    second time (21 ``math.isfinite`` a point of the striker's study, twice)."""
+    values = _outputs(x, o)
+    values["half_coupling_release_speed"] = (
+        float(o.release_velocity) if rung == "simulation" else None
+    )
+    return values
+
+
 def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     o = _outcome(x, ctx)
     if not ctx.sentences:
@@ -666,7 +678,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         # estimate: the simulation's bound re-derived stage 1's quasi-static terms, 4 µs a
         # design of a 3000-design study's 77 µs beyond its kernels)
         return Result(
-            values=_values(x, o, ctx.rung),
+            values=_raw_values(x, o, ctx.rung),
             rung=ctx.rung,
             error_estimate=None,
             verdicts=[(name, bool(ok)) for name, ok in _verdicts(x, o).items()],
