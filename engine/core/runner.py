@@ -618,10 +618,10 @@ def run_point(
         result = _computed(spec, values, ctx, False, [])
     got = result.values.get  # None where not given: _scalar keeps it
     isfinite = math.isfinite
-    scalars = {}
-    for name in outputs:
-        v = got(name)
-        scalars[name] = v if v.__class__ is float and isfinite(v) else _scalar(v)
+    scalars = {
+        name: v if v.__class__ is float and isfinite(v) else _scalar(v)
+        for name, v in zip(outputs, map(got, outputs), strict=True)
+    }
     verdicts = result.verdicts  # the level does not come into a verdict
     if verdicts is None:
         verdicts = [(c.name, c.ok) for c in spec.levelled(result.checks)]

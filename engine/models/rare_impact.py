@@ -677,11 +677,12 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         # the values and the verdicts alone (a study's looped point, which keeps no error
         # estimate: the simulation's bound re-derived stage 1's quasi-static terms, 4 µs a
         # design of a 3000-design study's 77 µs beyond its kernels)
+        verdict = _verdicts(x, o)
         return Result(
             values=_raw_values(x, o, ctx.rung),
             rung=ctx.rung,
             error_estimate=None,
-            verdicts=[(name, bool(ok)) for name, ok in _verdicts(x, o).items()],
+            verdicts=list(zip(verdict.keys(), map(bool, verdict.values()), strict=True)),
         )
     error = _error(x, ctx, o)
     notes = list(o.notes)

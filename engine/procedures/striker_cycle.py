@@ -231,15 +231,23 @@ class _Numbers(dict[str, Any]):
 
     ``memo`` keeps what a step derived from these inputs alone (:func:`_once`): the
     roller geometries, the stage-1 speeds, stage 2's coefficients; ``many`` says whether
-    they are arrays (many designs) or floats (one).
+    they are arrays (many designs) or floats (one), looked at on its first read: the
+    cycle's simulation never reads it (23 values' classes, 1 µs of a study's point).
     """
 
-    __slots__ = ("many", "memo")
+    __slots__ = ("_many", "memo")
 
     def __init__(self, x: Mapping[str, Any]) -> None:
         super().__init__(x)
         self.memo: dict[tuple[str, str], Any] = {}
-        self.many = is_array(*x.values())
+        self._many: bool | None = None
+
+    @property
+    def many(self) -> bool:
+        many = self._many
+        if many is None:
+            many = self._many = is_array(*self.values())
+        return many
 
 
 def _known(x: Mapping[str, Any], key: tuple[str, str]) -> Any:
@@ -1927,6 +1935,10 @@ class _Recorder:
             self.parts.append((mode, t, w, q0, q1))
 
 
+#: The recorder of a run that records nothing (it keeps nothing, so one serves every run).
+_NO_RECORD = _Recorder(False)
+
+
 _K = TypeVar("_K")
 _V = TypeVar("_V")
 
@@ -2965,7 +2977,7 @@ def simulate_cycle(
     if deadline is not None:
         # loading or compiling the kernel (once per process) is not the design's time
         deadline += _ensure_compiled(p)
-    rec = _Recorder(record)
+    rec = _Recorder(record) if record else _NO_RECORD
     run = _Run_impl(p, rec, deadline, _COST.budget(deadline, max_steps))
     notes: list[str] = []
     warnings: list[str] = []

@@ -953,7 +953,10 @@ def evaluate_chunk(
                 continue
             rungs[j], results, flags = res
             looped.append(j)
-            rows.append(list(map(results.get, outputs)))
+            # run_point's dict has the outputs in their order, each once: its values are
+            # the row (a repeated name has one key, and takes the names' lookups)
+            row = list(results.values())
+            rows.append(row if len(row) == len(outputs) else list(map(results.get, outputs)))
             verdicts.append(flags)  # the verdicts alone: no sentence is made
             if len(rows) >= LOOP_ROWS:
                 put_rows()
