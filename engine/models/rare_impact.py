@@ -120,12 +120,23 @@ def spring_height_bounds(moving_mass: Any, gravity: Any, c1: Any, c3: Any) -> tu
     """
     d = c3 - c1
     w = 2.0 * moving_mass * gravity
+    lower = where((d < 0.0) & (w < 0.0), w / where(d < 0.0, d, -1.0), 0.0)
+    return lower, spring_height_upper(moving_mass, gravity, c1, c3)
+
+
+def spring_height_upper(moving_mass: Any, gravity: Any, c1: Any, c3: Any) -> Any:
+    """The upper of :func:`spring_height_bounds` alone [m] (the ``spring_height_limit``
+    output, which reads no lower bound).
+
+    >>> spring_height_upper(0.85, 9.80665, 50000.0, 52000.0)  # 16.671/2000
+    0.0083356525
+    """
+    d = c3 - c1
+    w = 2.0 * moving_mass * gravity
     # the paper's limit (inf for c3 <= c1), never below 0; none at all for c3 = c1, g < 0
-    upper = where(
+    return where(
         (d == 0.0) & (w < 0.0), 0.0, pymax(spring_height_limit(moving_mass, gravity, c1, c3), 0.0)
     )
-    lower = where((d < 0.0) & (w < 0.0), w / where(d < 0.0, d, -1.0), 0.0)
-    return lower, upper
 
 
 def _outcome(x: Mapping[str, Any], ctx: RunContext) -> CycleOutcome:
@@ -278,7 +289,7 @@ def _outputs(
             )
             out["blow_time"] = t_blow
         if every or "spring_height_limit" in want:
-            out["spring_height_limit"] = spring_height_bounds(_moving_mass(x), g, c1, c3)[1]
+            out["spring_height_limit"] = spring_height_upper(_moving_mass(x), g, c1, c3)
         if every or "min_return_spring_rate" in want:
             out["min_return_spring_rate"] = min_return_spring_rate(
                 x["striker_mass"],

@@ -256,6 +256,18 @@ def _known(x: Mapping[str, Any], key: tuple[str, str]) -> Any:
     return x.memo.get(key) if x.__class__ is _Numbers else None
 
 
+_T = TypeVar("_T")
+
+
+def _keep(x: Mapping[str, Any], key: tuple[str, str], value: _T) -> _T:
+    """``value``, kept for ``key`` in a :func:`step_inputs` mapping (as :func:`_once` keeps
+    it): for a caller that found nothing with :func:`_known` and worked it out, without
+    the closure and the second look of :func:`_once`."""
+    if x.__class__ is _Numbers:
+        x.memo[key] = value
+    return value
+
+
 def _once(x: Mapping[str, Any], key: tuple[str, str], compute: Callable[[], Any]) -> Any:
     """``compute()``, once per :func:`step_inputs` mapping (every time on a plain mapping).
 
@@ -367,8 +379,7 @@ def _geometry_of(x: Mapping[str, Any], name: str) -> Geometry:
     kept: Geometry | None = _known(x, ("geometry", name))  # no closure made (several looks)
     if kept is not None:
         return kept
-    g: Geometry = _once(x, ("geometry", name), lambda: geometry(name, x["cone_angle"]))
-    return g
+    return _keep(x, ("geometry", name), geometry(name, x["cone_angle"]))
 
 
 def _speeds(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, Any]:
@@ -381,13 +392,9 @@ def _speeds(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, Any]:
     if kept is not None:
         return kept
 
-    def compute() -> tuple[Any, Any, Any]:
-        r = _radius(x, g)
-        w_0 = _liftoff_speed(x, g)
-        return r, w_0, _release_speed(x, g, w_0, r)
-
-    speeds: tuple[Any, Any, Any] = _once(x, ("stage 1", g.name), compute)
-    return speeds
+    r = _radius(x, g)
+    w_0 = _liftoff_speed(x, g)
+    return _keep(x, ("stage 1", g.name), (r, w_0, _release_speed(x, g, w_0, r)))
 
 
 def _geo(x: Mapping[str, Any]) -> Geometry:
@@ -523,6 +530,8 @@ def _release_speed(x: Mapping[str, Any], g: Geometry, w_0: Any, r: Any) -> Any:
         + _weight(x, g)
     )
     w_m = sqrt(fm / (_push_per_w2(x, g) * r))
+    if w_0.__class__ is float and w_m.__class__ is float and w_0 <= w_m:
+        return w_m  # one design that does not snap: the where below without its other side
     # snap-through: the rollers fly out at once, conserving the angular momentum
     snapped = w_0 * _inertia(x, g, x["roller_radius"]) / _inertia(x, g, r)
     return where(w_0 <= w_m, w_m, snapped)
