@@ -142,7 +142,9 @@ def spring_height_upper(moving_mass: Any, gravity: Any, c1: Any, c3: Any) -> Any
 def _outcome(x: Mapping[str, Any], ctx: RunContext) -> CycleOutcome:
     if ctx.rung == "simulation":
         return simulate_cycle(
-            _inputs(x, ctx.scratch),
+            # a looped point's scratch is its own and nothing else reads its inputs (no
+            # error estimate, no geometry note): converted without the scratch's closure
+            _inputs(x, ctx.scratch) if ctx.sentences else step_inputs(x),
             record=ctx.wants(*_SERIES),
             deadline=ctx.deadline,
             max_steps=ctx.max_steps,
