@@ -619,9 +619,13 @@ def liftoff_speed_of(x: Mapping[str, Any]) -> Any:
 
 def _stage1_stiffness(x: Mapping[str, Any], g: Geometry, w: Any) -> Any:
     """:math:`K(\\omega) = c_1 + c_2 - A\\kappa\\omega^2` [N/m]: negative means snap-through."""
-    return (
-        x["power_spring_rate"] + x["auxiliary_spring_rate"] - _push_per_w2(x, g) * g.kappa * w * w
-    )
+    return _stiffness_at(x, _push_per_w2(x, g) * g.kappa, w)
+
+
+def _stiffness_at(x: Mapping[str, Any], push: Any, w: Any) -> Any:
+    """:func:`_stage1_stiffness` with its :math:`A\\kappa` given (``push``): the cycle, which
+    works it out once for its three reads."""
+    return x["power_spring_rate"] + x["auxiliary_spring_rate"] - push * w * w
 
 
 def snaps_at_liftoff(x: Mapping[str, Any]) -> Any:
@@ -3011,11 +3015,11 @@ def simulate_cycle(
     m_e = _effective_mass(x, g)  # stage1_effective_mass without its door
     w_nl = x.get("motor_no_load_speed")
     span = max(t_qs - t_l, 0.0)
-    k_qs = _stage1_stiffness(x, g, w_qs)
+    push = _push_per_w2(x, g) * g.kappa  # the paper's κ is 1/tan α: the same float
+    k_qs = _stiffness_at(x, push, w_qs)
     slow = 2.0 * math.pi / math.sqrt(max(k_qs, 1e-300) / m_e)
     t_end = t_qs + span + min(50.0 * slow, 10.0 * span + 1.0)
     w_end = w_nl if w_nl is not None else x["motor_torque"] / inertia_0 * t_end
-    push = _push_per_w2(x, g) * g.kappa  # the paper's κ is 1/tan α: the same float
     om_max = math.sqrt(max(c1 + c2, push * w_end * w_end) / m_e)
     h = 2.0 * math.pi / (steps_per_period * om_max)
     if record and t_l > 0.0:
@@ -3100,7 +3104,7 @@ def simulate_cycle(
             return_time=math.inf,
             home_time=math.inf,
             relock_time=math.inf,
-            snap=_stage1_stiffness(x, g, w_0) < 0.0,  # snaps_at_liftoff
+            snap=_stiffness_at(x, push, w_0) < 0.0,  # snaps_at_liftoff
             notes=notes,
             warnings=warnings,
             series=_series(rec, x, g, r) if record else {},
@@ -3140,7 +3144,7 @@ def simulate_cycle(
         return_time=t_ret,
         home_time=t_home,
         relock_time=t_lock,
-        snap=_stage1_stiffness(x, g, w_0) < 0.0,  # snaps_at_liftoff
+        snap=_stiffness_at(x, push, w_0) < 0.0,  # snaps_at_liftoff
         notes=notes,
         warnings=warnings,
         series=_series(rec, x, g, r) if record else {},
