@@ -120,18 +120,31 @@ def spring_height_bounds(moving_mass: Any, gravity: Any, c1: Any, c3: Any) -> tu
     """
     d = c3 - c1
     w = 2.0 * moving_mass * gravity
+    lower = where((d < 0.0) & (w < 0.0), w / where(d < 0.0, d, -1.0), 0.0)
+    return lower, spring_height_upper(moving_mass, gravity, c1, c3)
+
+
+def spring_height_upper(moving_mass: Any, gravity: Any, c1: Any, c3: Any) -> Any:
+    """The upper of :func:`spring_height_bounds` alone [m] (the ``spring_height_limit``
+    output, which reads no lower bound).
+
+    >>> spring_height_upper(0.85, 9.80665, 50000.0, 52000.0)  # 16.671/2000
+    0.0083356525
+    """
+    d = c3 - c1
+    w = 2.0 * moving_mass * gravity
     # the paper's limit (inf for c3 <= c1), never below 0; none at all for c3 = c1, g < 0
-    upper = where(
+    return where(
         (d == 0.0) & (w < 0.0), 0.0, pymax(spring_height_limit(moving_mass, gravity, c1, c3), 0.0)
     )
-    lower = where((d < 0.0) & (w < 0.0), w / where(d < 0.0, d, -1.0), 0.0)
-    return lower, upper
 
 
 def _outcome(x: Mapping[str, Any], ctx: RunContext) -> CycleOutcome:
     if ctx.rung == "simulation":
         return simulate_cycle(
-            _inputs(x, ctx.scratch),
+            # a looped point's scratch is its own and nothing else reads its inputs (no
+            # error estimate, no geometry note): converted without the scratch's closure
+            _inputs(x, ctx.scratch) if ctx.sentences else step_inputs(x),
             record=ctx.wants(*_SERIES),
             deadline=ctx.deadline,
             max_steps=ctx.max_steps,
@@ -278,7 +291,7 @@ def _outputs(
             )
             out["blow_time"] = t_blow
         if every or "spring_height_limit" in want:
-            out["spring_height_limit"] = spring_height_bounds(_moving_mass(x), g, c1, c3)[1]
+            out["spring_height_limit"] = spring_height_upper(_moving_mass(x), g, c1, c3)
         if every or "min_return_spring_rate" in want:
             out["min_return_spring_rate"] = min_return_spring_rate(
                 x["striker_mass"],
@@ -659,17 +672,30 @@ def _values(x: Mapping[str, Any], o: CycleOutcome, rung: str) -> dict[str, Any]:
     return values
 
 
+def _raw_values(x: Mapping[str, Any], o: CycleOutcome, rung: str) -> dict[str, Any]:
+    """:func:`_values` before its conversion (inf or NaN where never reached), for a caller
+    that reads no sentences: :func:`engine.core.runner.run_point` makes each value what a
+    run gives (a float, None where not finite) as it takes it, which converted them a
+    second time (21 ``math.isfinite`` a point of the striker's study, twice)."""
+    values = _outputs(x, o)
+    values["half_coupling_release_speed"] = (
+        float(o.release_velocity) if rung == "simulation" else None
+    )
+    return values
+
+
 def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     o = _outcome(x, ctx)
     if not ctx.sentences:
         # the values and the verdicts alone (a study's looped point, which keeps no error
         # estimate: the simulation's bound re-derived stage 1's quasi-static terms, 4 µs a
         # design of a 3000-design study's 77 µs beyond its kernels)
+        verdict = _verdicts(x, o)
         return Result(
-            values=_values(x, o, ctx.rung),
+            values=_raw_values(x, o, ctx.rung),
             rung=ctx.rung,
             error_estimate=None,
-            verdicts=[(name, bool(ok)) for name, ok in _verdicts(x, o).items()],
+            verdicts=list(zip(verdict.keys(), map(bool, verdict.values()), strict=True)),
         )
     error = _error(x, ctx, o)
     notes = list(o.notes)

@@ -105,3 +105,19 @@ def test_the_cycle_without_sentences_is_the_same_cycle(design: str) -> None:
     if design == "one_sided":
         assert any("one-sided" in n for n in said.notes)
         assert not any("one-sided" in n for n in quiet.notes)
+
+
+@pytest.mark.parametrize("rung", ["closed_form", "simulation"])
+def test_a_point_under_the_chunks_error_state_is_the_point_alone(rung: str) -> None:
+    """run_point(silenced=True) under the chunk's one np.errstate gives what it gives alone,
+    every output (nulls included) and verdict; a refusal of failed arithmetic still refuses."""
+    outputs = tuple(o.name for o in SPEC.outputs if not o.series)
+    designs = [dict(EXAMPLE), {**EXAMPLE, "return_spring_rate": 0.5 * EXAMPLE["power_spring_rate"]}]
+    for values in designs:
+        alone = run_point(SPEC, dict(values), rung, outputs, tolerance=0.05, budget_s=None)
+        with np.errstate(all="ignore"):
+            quiet = run_point(
+                SPEC, dict(values), rung, outputs, tolerance=0.05, budget_s=None, silenced=True
+            )
+        assert repr(quiet) == repr(alone)
+        assert list(quiet[1]) == list(outputs)

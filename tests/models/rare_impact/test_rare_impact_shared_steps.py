@@ -138,3 +138,25 @@ def test_a_different_design_is_never_answered_from_another_ones_work() -> None:
     assert round(w1, 2) == 243.96
     assert w2 == closed_form_cycle({**REFERENCE_DESIGN, "power_spring_rate": 75000.0}).release_speed
     assert w2 > w1 * 1.1
+
+
+def test_the_inputs_say_whether_they_are_arrays_on_the_first_read() -> None:
+    """step_inputs looks at its values' classes when ``many`` is first read: arrays anywhere
+    make it True, numbers alone False, and the answer is kept."""
+    from engine.procedures.striker_cycle import step_inputs
+
+    one = step_inputs(dict(REFERENCE_DESIGN))
+    assert one.many is False and one.many is False  # type: ignore[attr-defined]
+    many = step_inputs({**REFERENCE_DESIGN, "roller_mass": np.array([0.04, 0.05])})
+    assert many.many is True  # type: ignore[attr-defined]
+
+
+def test_a_release_speed_that_does_not_snap_is_the_array_paths() -> None:
+    """One design's quasi-static release speed (no snap: where's other side left out) equals
+    the array path's at that point, and a snapping design's too."""
+    from engine.procedures.striker_cycle import release_speed_of
+
+    for lam1 in (0.002, 0.09):  # 0.09: snaps at lift-off (snaps_at_liftoff's doctest)
+        x = {**REFERENCE_DESIGN, "power_spring_preload": lam1, "roller_geometry": "symmetric_v"}
+        arrays = {**x, "power_spring_preload": np.array([lam1, lam1])}
+        assert release_speed_of(x) == float(release_speed_of(arrays)[0])
