@@ -619,7 +619,9 @@ class RunContext:
     #: study's looped points keep the values and the verdicts alone
     #: (:func:`engine.core.runner.run_point`), so a compute may leave the sentences out
     #: and give :attr:`Result.verdicts` for its checks, and leave out the error estimate
-    #: too (None: such a caller does not read it).
+    #: too (None: such a caller does not read it); its values may then be as computed (inf,
+    #: NaN, numpy scalars), which :func:`engine.core.runner.run_point` converts as a run
+    #: does.
     sentences: bool = True
 
     @classmethod

@@ -118,10 +118,15 @@ def spring_height_bounds(moving_mass: Any, gravity: Any, c1: Any, c3: Any) -> tu
     >>> spring_height_bounds(0.85, -9.80665, 52000.0, 50000.0)
     (0.0083356525, inf)
     """
-    d = c3 - c1
-    w = 2.0 * moving_mass * gravity
+    d, w = _spring_height_terms(moving_mass, gravity, c1, c3)
     lower = where((d < 0.0) & (w < 0.0), w / where(d < 0.0, d, -1.0), 0.0)
     return lower, spring_height_upper(moving_mass, gravity, c1, c3)
+
+
+def _spring_height_terms(moving_mass: Any, gravity: Any, c1: Any, c3: Any) -> tuple[Any, Any]:
+    r""":math:`c_3 - c_1` and :math:`2M_2g` of :func:`spring_height_bounds`' inequality
+    :math:`h(c_3 - c_1) \le 2M_2g`."""
+    return c3 - c1, 2.0 * moving_mass * gravity
 
 
 def spring_height_upper(moving_mass: Any, gravity: Any, c1: Any, c3: Any) -> Any:
@@ -131,8 +136,7 @@ def spring_height_upper(moving_mass: Any, gravity: Any, c1: Any, c3: Any) -> Any
     >>> spring_height_upper(0.85, 9.80665, 50000.0, 52000.0)  # 16.671/2000
     0.0083356525
     """
-    d = c3 - c1
-    w = 2.0 * moving_mass * gravity
+    d, w = _spring_height_terms(moving_mass, gravity, c1, c3)
     # the paper's limit (inf for c3 <= c1), never below 0; none at all for c3 = c1, g < 0
     return where(
         (d == 0.0) & (w < 0.0), 0.0, pymax(spring_height_limit(moving_mass, gravity, c1, c3), 0.0)
@@ -658,17 +662,19 @@ def _error(x: Mapping[str, Any], ctx: RunContext, o: CycleOutcome) -> float | No
 
 
 def _values(x: Mapping[str, Any], o: CycleOutcome, rung: str) -> dict[str, Any]:
-    """One design's outputs as a run gives them: None where never reached (inf or NaN)."""
+    """One design's outputs as a run gives them (:func:`_raw_values` converted): None where
+    never reached (inf or NaN), the half-coupling's speed at release after the release
+    radius."""
+    raw = _raw_values(x, o, rung)
+    speed = raw.pop("half_coupling_release_speed")
     values: dict[str, Any] = {}
-    for name, v in _outputs(x, o).items():
+    for name, v in raw.items():
         if name == "full_engagement":
             values[name] = bool(v)
         else:  # inf or NaN: never reached, null
             values[name] = float(v) if math.isfinite(v) else None
         if name == "release_radius":
-            values["half_coupling_release_speed"] = (
-                float(o.release_velocity) if rung == "simulation" else None
-            )
+            values["half_coupling_release_speed"] = speed
     return values
 
 
@@ -676,7 +682,8 @@ def _raw_values(x: Mapping[str, Any], o: CycleOutcome, rung: str) -> dict[str, A
     """:func:`_values` before its conversion (inf or NaN where never reached), for a caller
     that reads no sentences: :func:`engine.core.runner.run_point` makes each value what a
     run gives (a float, None where not finite) as it takes it, which converted them a
-    second time (21 ``math.isfinite`` a point of the striker's study, twice)."""
+    second time (21 ``math.isfinite`` a point of the striker's study, twice). The
+    half-coupling's speed at release is the simulation's (None on the closed form), last."""
     values = _outputs(x, o)
     values["half_coupling_release_speed"] = (
         float(o.release_velocity) if rung == "simulation" else None

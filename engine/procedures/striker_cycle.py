@@ -229,7 +229,8 @@ def _one_or_many(v: Any) -> Any:
 class _Numbers(dict[str, Any]):
     """Inputs already as the steps take them (:func:`step_inputs`): passed on as they are.
 
-    ``memo`` keeps what a step derived from these inputs alone (:func:`_once`): the
+    ``memo`` keeps what a step derived from these inputs alone (:func:`_once`, or
+    :func:`_keep` after :func:`_known` found nothing): the
     roller geometries, the stage-1 speeds, stage 2's coefficients; ``many`` says whether
     they are arrays (many designs) or floats (one), looked at on its first read: the
     cycle's simulation never reads it (23 values' classes, 1 µs of a study's point).

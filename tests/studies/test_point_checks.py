@@ -121,3 +121,67 @@ def test_a_point_under_the_chunks_error_state_is_the_point_alone(rung: str) -> N
             )
         assert repr(quiet) == repr(alone)
         assert list(quiet[1]) == list(outputs)
+
+
+@pytest.mark.parametrize("rung", ["closed_form", "simulation"])
+def test_a_looped_point_is_engine_run_field_by_field(rung: str) -> None:
+    """Every output of a looped point (run_point, no sentences, the values as computed and
+    converted once) equals engine.run's, nulls included: the simulation's speed of the
+    half-coupling at release, and None for it on the closed form."""
+    every = tuple(SPEC.scalar_output_names)
+    _, point, _ = run_point(
+        SPEC, dict(EXAMPLE), rung, every, tolerance=0.05, budget_s=None, max_steps=DEFAULT_MAX_STEPS
+    )
+    alone = engine.run(SPEC, EXAMPLE, fidelity=rung, outputs=list(every)).results
+    assert point == {k: alone[k] for k in every}
+    speed = point["half_coupling_release_speed"]
+    if rung == "simulation":
+        assert isinstance(speed, float) and speed > 0.0
+    else:
+        assert speed is None
+
+
+def test_a_chunks_loop_runs_its_points_under_numpys_quiet_error_state(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The chunk enters numpy's error state for its loop (run_point(silenced=True) relies
+    on it), and leaves the caller's as it was."""
+    from engine.studies import plan as plan_module
+
+    seen: list[dict[str, str]] = []
+    kept = plan_module.run_point
+
+    def looked(*args, **kwargs):  # type: ignore[no-untyped-def]
+        seen.append(np.geterr())
+        assert kwargs.get("silenced") is True
+        return kept(*args, **kwargs)
+
+    monkeypatch.setattr(plan_module, "run_point", looked)
+    m = EXAMPLE["roller_mass"]
+    base = {k: v for k, v in EXAMPLE.items() if k != "roller_mass"}
+    with np.errstate(all="raise"):
+        part = evaluate_chunk(
+            SPEC, base, {"roller_mass": np.array([m, 1.05 * m])}, OUTPUTS, "simulation", 0.05
+        )
+        assert np.geterr()["divide"] == "raise"
+    assert part.rungs == ["simulation", "simulation"]
+    assert len(seen) == 2
+    assert all(set(state.values()) == {"ignore"} for state in seen)
+
+
+@pytest.mark.parametrize("silenced", [False, True])
+def test_failed_arithmetic_is_refused_silenced_or_not(silenced: bool) -> None:
+    """_arithmetic_refused enters numpy's quiet error state unless told the caller holds it,
+    and turns failed arithmetic into a refusal either way."""
+    from engine.core.runner import _arithmetic_refused
+
+    with np.errstate(all="raise"):
+        with _arithmetic_refused(SPEC, silenced=silenced):
+            inside = np.geterr()["over"]
+        assert inside == ("raise" if silenced else "ignore")
+        with (
+            pytest.raises(engine.EngineError, match="cannot be evaluated") as err,
+            _arithmetic_refused(SPEC, silenced=silenced),
+        ):
+            raise ZeroDivisionError("float division by zero")
+    assert err.value.kind == "solver_failed"
