@@ -531,11 +531,12 @@ def _release_speed(x: Mapping[str, Any], g: Geometry, w_0: Any, r: Any) -> Any:
         + _weight(x, g)
     )
     w_m = sqrt(fm / (_push_per_w2(x, g) * r))
-    if w_0.__class__ is float and w_m.__class__ is float and w_0 <= w_m:
-        return w_m  # one design that does not snap: the where below without its other side
+    holds = w_0 <= w_m  # no snap: a bool for one design of floats, else numpy's
+    if holds is True:
+        return w_m  # one design that does not snap: the snap's speed is not needed
     # snap-through: the rollers fly out at once, conserving the angular momentum
     snapped = w_0 * _inertia(x, g, x["roller_radius"]) / _inertia(x, g, r)
-    return where(w_0 <= w_m, w_m, snapped)
+    return where(holds, w_m, snapped)
 
 
 def _preloads_do_not_hold(x: Mapping[str, Any], g: Geometry) -> InfeasibleDesign:

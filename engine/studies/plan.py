@@ -934,8 +934,8 @@ def evaluate_chunk(
                     )
             except Cancelled:
                 break
-            except BudgetExceeded as exc:
-                if left is not None and left < DEFAULT_BUDGET_S:
+            except EngineError as exc:
+                if isinstance(exc, BudgetExceeded) and left is not None and left < DEFAULT_BUDGET_S:
                     # with a deadline every step budget is the time it leaves: refused with less
                     # time than a request alone has (DEFAULT_BUDGET_S), the chunk's time ran out,
                     # not the point's; counted as a refusal it would depend on the machine's load,
@@ -944,10 +944,6 @@ def evaluate_chunk(
                         f"a chunk of the study ran past its {deadline_s:g} s budget",
                         field="samples",
                     ) from exc
-                key = type(exc).__name__ + ": " + exc.message.split(":")[0][:120]
-                refusals[key] = refusals.get(key, 0) + 1
-                continue
-            except EngineError as exc:
                 key = type(exc).__name__ + ": " + exc.message.split(":")[0][:120]
                 refusals[key] = refusals.get(key, 0) + 1
                 continue
