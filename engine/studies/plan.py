@@ -25,6 +25,7 @@ Jansen (1999) for the total index (see ``docs/sources.md``, [Saltelli2010]).
 from __future__ import annotations
 
 import math
+import re
 import threading
 import time
 from collections import Counter
@@ -709,6 +710,32 @@ def chunks(n_points: int, size: int) -> list[tuple[int, int]]:
 # --------------------------------------------------------------------------- evaluation
 
 
+#: A number in a refusal's reason: a sign, digits, decimals, an exponent; not one that is part
+#: of a name (M10, R_p0.2, 898-1) nor a standard's number (ISO 261, VDI 2230, DIN 912, EN 13906)
+_REASON_NUMBER = re.compile(
+    r"(?<![\w.\-])(?<!ISO )(?<!VDI )(?<!DIN )(?<!EN )"
+    r"[-+]?\d+(?:[.,]\d+)*(?:[eE][-+]?\d+)?(?![\w.]|-\d)"
+)
+
+
+def refusal_key(exc: EngineError) -> str:
+    """The row a refused point is counted in: the error's class and its message's reason (the
+    text before its first colon, at most 120 characters), each number in it written "…".
+
+    The reason is what the design did wrong; its figures are the design's own: a step
+    budget's refusal says how many steps that design would take (about 3.1e+08 RK4 steps,
+    about 2.6e+08, …), and counted by its whole text a study of stiff strikers had a row per
+    design where it has one.
+
+    >>> from engine.core.errors import BudgetExceeded, InfeasibleDesign
+    >>> refusal_key(BudgetExceeded("it would take about 3.1e+08 RK4 steps (budget 1e+06): x"))
+    'BudgetExceeded: it would take about … RK4 steps (budget …)'
+    >>> refusal_key(InfeasibleDesign("no ISO 261 pitch, d = 13.5 mm (M10, R_p0.2, 898-1, -2): y"))
+    'InfeasibleDesign: no ISO 261 pitch, d = … mm (M10, R_p0.2, 898-1, …)'
+    """
+    return type(exc).__name__ + ": " + _REASON_NUMBER.sub("…", exc.message.split(":")[0][:120])
+
+
 #: Looped points whose outputs :func:`evaluate_chunk` keeps as rows before it puts them into
 #: the columns (bounds the rows' memory where a large chunk loops).
 LOOP_ROWS = 256
@@ -944,7 +971,7 @@ def evaluate_chunk(
                         f"a chunk of the study ran past its {deadline_s:g} s budget",
                         field="samples",
                     ) from exc
-                key = type(exc).__name__ + ": " + exc.message.split(":")[0][:120]
+                key = refusal_key(exc)
                 refusals[key] = refusals.get(key, 0) + 1
                 continue
             rungs[j], results, flags = res
