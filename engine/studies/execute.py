@@ -37,6 +37,7 @@ idle within that and one point's time, where they ran a 256-point chunk to its e
 
 from __future__ import annotations
 
+import contextlib
 import copy
 import os
 import threading
@@ -67,6 +68,10 @@ VECTOR_CHUNK = 65_536
 LOOP_CHUNK = 256
 #: How often a chunk on a Dask worker asks whether its study was cancelled [s].
 CANCEL_POLL_S = 0.1
+#: How long a study waits for the scheduler to answer it [s] (its stop event set, its
+#: workers' threads counted): a scheduler that does not answer (stopped, its host lost) must
+#: not hold up a cancel nor a study's start for ever.
+SCHEDULER_WAIT_S = 10.0
 #: Chunks of one study on Dask at once, per worker thread: enough to keep every worker
 #: busy, few enough that another study's chunks wait at most about two chunks' time.
 IN_FLIGHT_PER_THREAD = 2
@@ -404,16 +409,21 @@ class DaskExecutor:
         cancel: threading.Event,
         budget: Budget | None,
     ) -> Iterator[tuple[int, ChunkResult]]:
-        from dask.distributed import Event, as_completed
+        from dask.distributed import as_completed
 
-        stop = Event(name, client=client)
         # a window of chunks in flight, the next submitted as one finishes: what another
         # study submits meanwhile queues before this one's next chunks (Dask runs equal
         # priorities in the order submitted), so studies take turns, each in proportion to
         # its chunks in flight; the window is the owner's, split between its studies, so
         # clients take turns, not studies; a study's first chunk goes before the spare
         # ones of a study that is running
-        window = max(2, IN_FLIGHT_PER_THREAD * sum(client.nthreads().values()))
+        try:
+            threads = client.sync(client.scheduler.ncores, callback_timeout=SCHEDULER_WAIT_S)
+        except TimeoutError:
+            raise TimeoutError(
+                f"the Dask scheduler did not answer within {SCHEDULER_WAIT_S:g} s"
+            ) from None
+        window = max(2, IN_FLIGHT_PER_THREAD * sum(threads.values()))
 
         def share() -> int:
             with self._lock:
@@ -453,13 +463,23 @@ class DaskExecutor:
 
         finished = threading.Event()
 
+        def halt(futures: list[Any]) -> None:
+            # the client lets go of the futures at once (no answer awaited), then tells the
+            # running chunks through the event, waiting for the scheduler a bounded time: a
+            # chunk the event does not reach stops at its deadline
+            client.cancel(futures)
+            # a scheduler that does not answer, or is gone: the chunks stop at their deadline
+            with contextlib.suppress(Exception):
+                client.sync(
+                    client.scheduler.event_set, name=name, callback_timeout=SCHEDULER_WAIT_S
+                )
+
         def watch() -> None:
             # the moment the study is cancelled, not when the next chunk happens to finish:
             # the running chunks read the event, the pending ones are cancelled
             while not finished.wait(0.02):
                 if cancel.is_set():
-                    stop.set()
-                    client.cancel(in_flight())
+                    halt(in_flight())
                     return
 
         first = [submit(i) for i in range(min(share(), len(calls)))]
@@ -493,8 +513,7 @@ class DaskExecutor:
             finished.set()
             pending = in_flight()
             if pending:
-                stop.set()  # a budget or an error ended the study: its chunks stop too
-                client.cancel(pending)
+                halt(pending)  # a budget or an error ended the study: its chunks stop too
 
     def close(self) -> None:
         with self._lock:

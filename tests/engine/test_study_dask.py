@@ -139,7 +139,14 @@ def test_a_local_cluster_gives_the_in_process_result(reference: StudyRun) -> Non
 
 
 @pytest.fixture()
-def scheduler() -> Iterator[str]:
+def scheduler(cluster_processes: tuple[str, list[subprocess.Popen[bytes]]]) -> str:
+    return cluster_processes[0]
+
+
+@pytest.fixture()
+def cluster_processes() -> Iterator[tuple[str, list[subprocess.Popen[bytes]]]]:
+    """A scheduler and two one-thread workers, the address and the processes (scheduler
+    first)."""
     port = _free_port()
     env = {**os.environ, "PYTHONPATH": str(ROOT)}
     bindir = Path(sys.executable).parent
@@ -180,7 +187,7 @@ def scheduler() -> Iterator[str]:
         )
     )
     try:
-        yield address
+        yield address, procs
     finally:
         for p in reversed(procs):
             p.terminate()
@@ -289,4 +296,66 @@ def test_a_failed_chunk_leaves_nothing_of_its_study_behind() -> None:
             time.sleep(0.1)
         assert left == (0, 0), f"futures the client still knows, studies' values alive: {left}"
     finally:
+        executor.close()
+
+
+def test_a_cancel_ends_the_study_when_the_scheduler_does_not_answer(
+    cluster_processes: tuple[str, list[subprocess.Popen[bytes]]],
+) -> None:
+    """A scheduler stopped (SIGSTOP) while a study runs on it: the cancel ends the study
+    within seconds, where setting the study's stop event waited on the scheduler for ever
+    and the study's futures, cancelled after it, were never let go."""
+    import signal
+    import threading
+
+    from engine.core.errors import Cancelled
+
+    address, procs = cluster_processes
+    executor = DaskExecutor(address)
+    stopped = False
+    try:
+        client = executor.client()
+        deadline = time.monotonic() + 60
+        while len(client.scheduler_info()["workers"]) < 2:
+            assert time.monotonic() < deadline, "the two workers did not register"
+            time.sleep(0.2)
+        study = _study()
+        study = Study(**{**vars(study), "samples": 40 * LOOP_CHUNK})  # about 10 s of chunks
+        cancel = threading.Event()
+        progressed = threading.Event()
+        ended: list[BaseException | None] = []
+
+        def run() -> None:
+            try:
+                run_study(
+                    RARE,
+                    study,
+                    executor,
+                    cancel=cancel,
+                    progress=lambda done, _: done and progressed.set(),
+                )
+                ended.append(None)
+            except BaseException as exc:
+                ended.append(exc)
+
+        worker = threading.Thread(target=run, daemon=True)
+        worker.start()
+        assert progressed.wait(60), "no chunk finished"
+        procs[0].send_signal(signal.SIGSTOP)
+        stopped = True
+        t0 = time.monotonic()
+        cancel.set()
+        worker.join(20)
+        took = time.monotonic() - t0
+        assert not worker.is_alive(), "the cancelled study still waits on the scheduler"
+        assert isinstance(ended[0], Cancelled), ended
+        assert took < 10, took
+        # a study started while the scheduler does not answer fails, saying so
+        t0 = time.monotonic()
+        with pytest.raises(TimeoutError, match="the Dask scheduler did not answer within 10 s"):
+            run_study(RARE, study, executor)
+        assert time.monotonic() - t0 < 15
+    finally:
+        if stopped:
+            procs[0].send_signal(signal.SIGCONT)
         executor.close()
