@@ -50,6 +50,7 @@ from ..procedures.striker_cycle import (
     closed_form_cycle,
     closed_form_errors,
     closed_form_release,
+    cycle_setups,
     release_speed_of,
     relock_friction,
     simulate_cycle,
@@ -153,11 +154,20 @@ def _outcome(x: Mapping[str, Any], ctx: RunContext) -> CycleOutcome:
             deadline=ctx.deadline,
             max_steps=ctx.max_steps,
             sentences=ctx.sentences,
+            setup=ctx.prepared,  # a study's row of cycle_setups (_prepare_points), or None
         )
     o = _cycle(x, ctx.scratch)
     if o.refused:
         closed_form_cycle(x)  # raises the refusal with its reason
     return o
+
+
+def _prepare_points(x: Mapping[str, Any], rung: str) -> list[Any] | None:
+    """A study's looped points' set-up of the simulation, made for them at once
+    (:func:`engine.procedures.striker_cycle.cycle_setups`: the kernel's parameters, stage
+    1's speeds, times and step, the stages' step sizes, a row per design); the closed form
+    has none (its points go through the array path)."""
+    return cycle_setups(x) if rung == "simulation" else None
 
 
 def _cycle(x: Mapping[str, Any], scratch: Scratch) -> CycleOutcome:
@@ -1366,5 +1376,6 @@ RARE_IMPACT = ModelSpec(
     compute=_compute,
     examples=(REFERENCE_DESIGN, HORIZONTAL_DESIGN, PAPER_DESIGN),
     vectorized=_vectorized,
+    prepare_points=_prepare_points,
     vector_rungs=("closed_form",),
 )
