@@ -148,8 +148,13 @@ def _outcome(x: Mapping[str, Any], ctx: RunContext) -> CycleOutcome:
     if ctx.rung == "simulation":
         return simulate_cycle(
             # a looped point's scratch is its own and nothing else reads its inputs (no
-            # error estimate, no geometry note): converted without the scratch's closure
-            _inputs(x, ctx.scratch) if ctx.sentences else step_inputs(x),
+            # error estimate, no geometry note): converted without the scratch's closure,
+            # or not at all where its set-up was made for its chunk (ctx.prepared)
+            _inputs(x, ctx.scratch)
+            if ctx.sentences
+            else step_inputs(x)
+            if ctx.prepared is None
+            else x,
             record=ctx.wants(*_SERIES),
             deadline=ctx.deadline,
             max_steps=ctx.max_steps,

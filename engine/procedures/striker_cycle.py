@@ -3125,7 +3125,9 @@ def simulate_cycle(
     setup : ndarray, optional
         This design's row of :func:`cycle_setups` (a study's looped point): its set-up from
         the inputs alone, made for the chunk at once (the same numbers as made here; not
-        read where ``record``)
+        read where ``record``). ``x`` is then read as it is, not converted: a validated
+        design's numbers (Python floats, and the roller count an int, which every line
+        multiplies by a float: the same numbers)
 
     Examples
     --------
@@ -3134,9 +3136,9 @@ def simulate_cycle(
     >>> round(o.release_speed, 2), round(o.engagement_time * 1e3, 3)
     (244.12, 6.558)
     """
-    x = _numbers(x)  # once for the stage-1 steps below (their geometry and speeds)
     row = None if record else setup  # None: the design's set-up made here
     if row is None:
+        x = _numbers(x)  # once for the stage-1 steps below (their geometry and speeds)
         g = _geo(x)
         entries = _param_entries(x, g)
         p = np.array(entries, dtype=float)  # _params
