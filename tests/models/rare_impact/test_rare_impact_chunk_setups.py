@@ -149,3 +149,25 @@ def test_a_looped_point_with_its_row_is_run_point_alone() -> None:
         assert _bits(np.array(got)) == _bits(np.array(want))
         for name, ok in verdicts:
             assert chunk.checks[name][j] == (CHECK_OK if ok else CHECK_FAILED)
+
+
+def test_the_outputs_of_the_inputs_alone_are_each_designs_own() -> None:
+    """_prepare_points' outputs of the inputs alone are _of_inputs' of each design alone,
+    bit for bit and in its order (an int roller count varied as an int array included);
+    where numpy raises on them, the points work them out."""
+    from engine.models import rare_impact as ri
+
+    x = _chunk("paper", 30, seed=13)
+    x["roller_count"] = np.arange(30, dtype=np.int64) % 6 + 2
+    x["gravity"] = -9.80665
+    prepared = ri._prepare_points(x, "simulation")
+    assert prepared is not None and ri._prepare_points(x, "closed_form") is None
+    for j, (setup, known) in enumerate(prepared):
+        one = {k: (v[j].item() if isinstance(v, np.ndarray) else v) for k, v in x.items()}
+        alone = ri._of_inputs(one, True, frozenset())
+        assert setup is not None and list(known) == list(alone) == list(ri._OF_INPUTS)
+        assert repr(known) == repr(alone)
+    x["striker_mass"] = 0.0 * x["striker_mass"]
+    x["half_coupling_mass"] = 0.0
+    x["roller_mass"] = 0.0 * x["roller_mass"]  # the moving mass divides: 0
+    assert all(known is None for _, known in ri._prepare_points(x, "simulation"))
