@@ -184,12 +184,8 @@ def _prepare_points(x: Mapping[str, Any], rung: str) -> list[Any] | None:
             got = _of_inputs(x, True, frozenset())
     except (ArithmeticError, ValueError):
         return [(setup, None) for setup in setups]
-    columns = [v.tolist() if isinstance(v, np.ndarray) else [v] * n for v in got.values()]
-    names = tuple(got)
-    return [
-        (setup, dict(zip(names, row, strict=True)))
-        for setup, row in zip(setups, zip(*columns, strict=True), strict=True)
-    ]
+    columns = [v.tolist() if isinstance(v, np.ndarray) else [v] * n for v in got]
+    return list(zip(setups, zip(*columns, strict=True), strict=True))
 
 
 def _cycle(x: Mapping[str, Any], scratch: Scratch) -> CycleOutcome:
@@ -269,14 +265,14 @@ def _simulation_estimate(x: Mapping[str, Any]) -> float:
     return _SIMULATION_ERROR  # a constant: broadcast over the points of a sweep
 
 
-def _of_inputs(x: Mapping[str, Any], every: bool, want: AbstractSet[str]) -> dict[str, Any]:
-    """The outputs of the inputs alone (:data:`_OF_INPUTS`) asked for (``want``, or every
-    one), one design (numbers) or many (arrays): :func:`_outputs`' lines that read no
-    cycle, which a study's looped chunk runs for its points at once
-    (:func:`_prepare_points`)."""
+def _of_inputs(x: Mapping[str, Any], every: bool, want: AbstractSet[str]) -> tuple[Any, ...]:
+    """The outputs of the inputs alone (:data:`_OF_INPUTS`, in its order; None where not
+    asked for in ``want``, unless ``every``), one design (numbers) or many (arrays):
+    :func:`_outputs`' lines that read no cycle, which a study's looped chunk runs for its
+    points at once (:func:`_prepare_points`)."""
     c1, c3 = x["power_spring_rate"], x["return_spring_rate"]
     g = x["gravity"]
-    out: dict[str, Any] = {}
+    b = k = limit = c3_min = margin = None
     if every or "engagement_acceleration" in want or "engagement_frequency" in want:
         b, k = striker_oscillation(
             c1,
@@ -287,12 +283,10 @@ def _of_inputs(x: Mapping[str, Any], every: bool, want: AbstractSet[str]) -> dic
             _moving_mass(x),
             g,
         )
-        out["engagement_acceleration"] = b
-        out["engagement_frequency"] = k
     if every or "spring_height_limit" in want:
-        out["spring_height_limit"] = spring_height_upper(_moving_mass(x), g, c1, c3)
+        limit = spring_height_upper(_moving_mass(x), g, c1, c3)
     if every or "min_return_spring_rate" in want:
-        out["min_return_spring_rate"] = min_return_spring_rate(
+        c3_min = min_return_spring_rate(
             x["striker_mass"],
             g,
             x["return_spring_preload"],
@@ -300,14 +294,14 @@ def _of_inputs(x: Mapping[str, Any], every: bool, want: AbstractSet[str]) -> dic
             x["jaw_height"],
         )
     if every or "relock_margin" in want:
-        out["relock_margin"] = relock_margin(
+        margin = relock_margin(
             x["auxiliary_spring_rate"],
             x["auxiliary_spring_preload"],
             x["stepped_shaft_mass"],
             g,
             relock_friction(x),
         )
-    return out
+    return b, k, limit, c3_min, margin
 
 
 #: The outputs :func:`_of_inputs` gives, in its order.
@@ -324,7 +318,7 @@ def _outputs(
     x: Mapping[str, Any],
     o: CycleOutcome | Release,
     wanted: AbstractSet[str] | None = None,
-    of_inputs: Mapping[str, Any] | None = None,
+    of_inputs: tuple[Any, ...] | None = None,
 ) -> dict[str, Any]:
     """Every numeric output (and full_engagement) from the inputs and a cycle's outcome.
 
@@ -342,7 +336,7 @@ def _outputs(
     c = cast(CycleOutcome, o)
     out: dict[str, Any] = {}
     with quiet(is_array(o.release_speed)):
-        known = _of_inputs(x, every, want) if of_inputs is None else of_inputs
+        b, k, limit, c3_min, margin = _of_inputs(x, every, want) if of_inputs is None else of_inputs
         window = (
             divide(x["engagement_angle"], o.release_speed)
             if every or not _WINDOW_READERS.isdisjoint(want) or not _CYCLE_READERS.isdisjoint(want)
@@ -354,9 +348,9 @@ def _outputs(
             out["spin_up_time"] = o.spin_up_time
         if every or "release_radius" in want:
             out["release_radius"] = o.release_radius
-        if "engagement_acceleration" in known:  # in _outputs' order, which run gives
-            out["engagement_acceleration"] = known["engagement_acceleration"]
-            out["engagement_frequency"] = known["engagement_frequency"]
+        if b is not None:  # in _outputs' order, which run gives
+            out["engagement_acceleration"] = b
+            out["engagement_frequency"] = k
         if every or not _CYCLE_READERS.isdisjoint(want):
             t_blow = o.spin_up_time + c.engagement_time
             out["max_striker_travel"] = c.max_travel
@@ -371,12 +365,12 @@ def _outputs(
                 c.blow, divide(window - c.engagement_time, window), math.nan
             )
             out["blow_time"] = t_blow
-        if "spring_height_limit" in known:
-            out["spring_height_limit"] = known["spring_height_limit"]
-        if "min_return_spring_rate" in known:
-            out["min_return_spring_rate"] = known["min_return_spring_rate"]
-        if "relock_margin" in known:
-            out["relock_margin"] = known["relock_margin"]
+        if limit is not None:
+            out["spring_height_limit"] = limit
+        if c3_min is not None:
+            out["min_return_spring_rate"] = c3_min
+        if margin is not None:
+            out["relock_margin"] = margin
         if every or not _CYCLE_READERS.isdisjoint(want):
             out["return_time"] = where(c.returns, c.return_time, math.nan)
             out["striker_home_time"] = where(c.returns, t_blow + c.home_time, math.nan)
@@ -744,7 +738,7 @@ def _values(x: Mapping[str, Any], o: CycleOutcome, rung: str) -> dict[str, Any]:
 
 
 def _raw_values(
-    x: Mapping[str, Any], o: CycleOutcome, rung: str, of_inputs: Mapping[str, Any] | None = None
+    x: Mapping[str, Any], o: CycleOutcome, rung: str, of_inputs: tuple[Any, ...] | None = None
 ) -> dict[str, Any]:
     """:func:`_values` before its conversion (inf or NaN where never reached), for a caller
     that reads no sentences: :func:`engine.core.runner.run_point` makes each value what a
