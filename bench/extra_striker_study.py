@@ -10,7 +10,9 @@ one-sided stage 3 with its event loop and contact sets; those two where called a
 wrapped for the run by a counter that adds up the CPU time of each call; everything else
 (the stages' set-up from the inputs, the runner, validation, the outputs and verdicts, the
 summary) is the overhead. A study's looped point keeps no error estimate nor sentences, so
-the model makes none (``RunContext.sentences``).
+the model makes none (``RunContext.sentences``); its simulation's set-up from the inputs and
+the outputs of the inputs alone are made for its chunk at once (``ModelSpec.prepare_points``:
+``striker_cycle.cycle_setups``), which the "study" layer counts.
 Times are CPU seconds (``time.process_time``): the machine is shared.
 
 ``STRIKER_STUDY_POINTS`` sets the study's size (default 10,000);

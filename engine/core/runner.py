@@ -587,6 +587,7 @@ def run_point(
     cancel: threading.Event | None = None,
     checked: frozenset[str] | None = None,
     silenced: bool = False,
+    prepared: Any = None,
 ) -> tuple[str, dict[str, Value], list[tuple[str, bool]]]:
     """One point as a study keeps it: the rung that ran, the ``outputs`` and the checks'
     verdicts, what :func:`run` gives for the same point without its sentences.
@@ -599,7 +600,8 @@ def run_point(
     ``rung``, ``outputs`` and ``tolerance`` (a caller that runs many points checks them
     once); None: they are checked here. ``silenced``: the caller runs it under
     ``np.errstate(all="ignore")`` (a chunk's loop, entered once), which :func:`run` and
-    this enter otherwise.
+    this enter otherwise. ``prepared``: the point's entry of the model's
+    :attr:`~engine.core.spec.ModelSpec.prepare_points` (``ctx.prepared``).
     """
     with _arithmetic_refused(spec, silenced=silenced):
         asked = (
@@ -614,6 +616,7 @@ def run_point(
             cancel,
             Scratch(),
             sentences=False,
+            prepared=prepared,
         )
         result = _computed(spec, values, ctx, False, [])
     got = result.values.get  # None where not given: _scalar keeps it

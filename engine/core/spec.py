@@ -17,7 +17,7 @@ import functools
 import math
 import threading
 import time
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
@@ -623,6 +623,9 @@ class RunContext:
     #: NaN, numpy scalars), which :func:`engine.core.runner.run_point` converts as a run
     #: does.
     sentences: bool = True
+    #: What the model's :attr:`ModelSpec.prepare_points` made for this point of a study's
+    #: chunk (None: nothing; the compute works it out itself).
+    prepared: Any = None
 
     @classmethod
     def of_request(
@@ -636,6 +639,7 @@ class RunContext:
         scratch: Scratch,
         *,
         sentences: bool = True,
+        prepared: Any = None,
     ) -> RunContext:
         """The context of one request, checks read (and the sentences, unless
         ``sentences`` is False: a study's looped point): equal to
@@ -662,6 +666,7 @@ class RunContext:
             scratch=scratch,
             checks=True,
             sentences=sentences,
+            prepared=prepared,
         )
         return self
 
@@ -708,6 +713,13 @@ class ModelSpec:
     #: cannot be computed). Used only when the chosen rung is in ``vector_rungs``.
     vectorized: Compute | None = None
     vector_rungs: tuple[str, ...] = ()
+    #: Optional: for a study's points that run one by one on a named rung
+    #: (:func:`engine.studies.plan.evaluate_chunk`), the work each point's ``compute`` does
+    #: from its inputs alone, made once for them: called with their validated inputs (the
+    #: varied as arrays, others scalar) and the rung, it gives one entry a point (None:
+    #: that point does its own), or None for all; a point's entry reaches ``compute`` as
+    #: :attr:`RunContext.prepared`.
+    prepare_points: Callable[[Mapping[str, Any], str], Sequence[Any] | None] | None = None
     #: Sentences true of every answer of this model (idealisations the source makes,
     #: reconstructions): the runner adds them to each result's notes, and the
     #: catalogue lists them.

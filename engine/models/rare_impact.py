@@ -50,6 +50,7 @@ from ..procedures.striker_cycle import (
     closed_form_cycle,
     closed_form_errors,
     closed_form_release,
+    cycle_setups,
     release_speed_of,
     relock_friction,
     simulate_cycle,
@@ -145,19 +146,46 @@ def spring_height_upper(moving_mass: Any, gravity: Any, c1: Any, c3: Any) -> Any
 
 def _outcome(x: Mapping[str, Any], ctx: RunContext) -> CycleOutcome:
     if ctx.rung == "simulation":
+        setup = None if ctx.prepared is None else ctx.prepared[0]  # _prepare_points'
         return simulate_cycle(
             # a looped point's scratch is its own and nothing else reads its inputs (no
-            # error estimate, no geometry note): converted without the scratch's closure
-            _inputs(x, ctx.scratch) if ctx.sentences else step_inputs(x),
+            # error estimate, no geometry note): converted without the scratch's closure,
+            # or not at all where its set-up was made for its chunk (ctx.prepared)
+            _inputs(x, ctx.scratch) if ctx.sentences else step_inputs(x) if setup is None else x,
             record=ctx.wants(*_SERIES),
             deadline=ctx.deadline,
             max_steps=ctx.max_steps,
             sentences=ctx.sentences,
+            setup=setup,
         )
     o = _cycle(x, ctx.scratch)
     if o.refused:
         closed_form_cycle(x)  # raises the refusal with its reason
     return o
+
+
+def _prepare_points(x: Mapping[str, Any], rung: str) -> list[Any] | None:
+    """A study's looped points' work from their inputs alone, made for them at once: a
+    (setup, outputs) pair a point, the simulation's set-up
+    (:func:`engine.procedures.striker_cycle.cycle_setups`: the kernel's parameters, stage
+    1's speeds, times and step, the stages' step sizes, a row per design) and the outputs
+    of the inputs alone (:func:`_of_inputs`), either None where the point works it out
+    itself; the closed form has none (its points go through the array path).
+
+    The outputs on arrays where numpy raises on a division by zero, an overflow and an
+    invalid operation (where one design's floats could raise, the points work them out).
+    """
+    if rung != "simulation":
+        return None
+    n = next(len(v) for v in x.values() if isinstance(v, np.ndarray))
+    setups = cycle_setups(x) or [None] * n
+    try:
+        with np.errstate(divide="raise", over="raise", invalid="raise", under="ignore"):
+            got = _of_inputs(x, True, frozenset())
+    except (ArithmeticError, ValueError):
+        return [(setup, None) for setup in setups]
+    columns = [v.tolist() if isinstance(v, np.ndarray) else [v] * n for v in got]
+    return list(zip(setups, zip(*columns, strict=True), strict=True))
 
 
 def _cycle(x: Mapping[str, Any], scratch: Scratch) -> CycleOutcome:
@@ -237,8 +265,60 @@ def _simulation_estimate(x: Mapping[str, Any]) -> float:
     return _SIMULATION_ERROR  # a constant: broadcast over the points of a sweep
 
 
+def _of_inputs(x: Mapping[str, Any], every: bool, want: AbstractSet[str]) -> tuple[Any, ...]:
+    """The outputs of the inputs alone (:data:`_OF_INPUTS`, in its order; None where not
+    asked for in ``want``, unless ``every``), one design (numbers) or many (arrays):
+    :func:`_outputs`' lines that read no cycle, which a study's looped chunk runs for its
+    points at once (:func:`_prepare_points`)."""
+    c1, c3 = x["power_spring_rate"], x["return_spring_rate"]
+    g = x["gravity"]
+    b = k = limit = c3_min = margin = None
+    if every or "engagement_acceleration" in want or "engagement_frequency" in want:
+        b, k = striker_oscillation(
+            c1,
+            x["power_spring_preload"],
+            c3,
+            x["return_spring_preload"],
+            x["release_travel"],
+            _moving_mass(x),
+            g,
+        )
+    if every or "spring_height_limit" in want:
+        limit = spring_height_upper(_moving_mass(x), g, c1, c3)
+    if every or "min_return_spring_rate" in want:
+        c3_min = min_return_spring_rate(
+            x["striker_mass"],
+            g,
+            x["return_spring_preload"],
+            x["engagement_height"],
+            x["jaw_height"],
+        )
+    if every or "relock_margin" in want:
+        margin = relock_margin(
+            x["auxiliary_spring_rate"],
+            x["auxiliary_spring_preload"],
+            x["stepped_shaft_mass"],
+            g,
+            relock_friction(x),
+        )
+    return b, k, limit, c3_min, margin
+
+
+#: The outputs :func:`_of_inputs` gives, in its order.
+_OF_INPUTS = (
+    "engagement_acceleration",
+    "engagement_frequency",
+    "spring_height_limit",
+    "min_return_spring_rate",
+    "relock_margin",
+)
+
+
 def _outputs(
-    x: Mapping[str, Any], o: CycleOutcome | Release, wanted: AbstractSet[str] | None = None
+    x: Mapping[str, Any],
+    o: CycleOutcome | Release,
+    wanted: AbstractSet[str] | None = None,
+    of_inputs: tuple[Any, ...] | None = None,
 ) -> dict[str, Any]:
     """Every numeric output (and full_engagement) from the inputs and a cycle's outcome.
 
@@ -247,16 +327,16 @@ def _outputs(
     ``wanted``: the outputs to give (every one when None; more may come), each line run
     only where its output is asked for (those of the later stages together); a
     :class:`~engine.procedures.striker_cycle.Release` (stage 1 alone) serves the outputs
-    of :data:`_RELEASE_OUTPUTS`.
+    of :data:`_RELEASE_OUTPUTS`. ``of_inputs``: what :func:`_of_inputs` gives for ``x`` and
+    ``wanted``, where it was worked out already (a study's looped point, its chunk's).
     """
-    c1, c3 = x["power_spring_rate"], x["return_spring_rate"]
-    g = x["gravity"]
     every = wanted is None
     want: AbstractSet[str] = frozenset() if wanted is None else wanted
     # read only by the lines of the later stages, which a Release is never asked for
     c = cast(CycleOutcome, o)
     out: dict[str, Any] = {}
     with quiet(is_array(o.release_speed)):
+        b, k, limit, c3_min, margin = _of_inputs(x, every, want) if of_inputs is None else of_inputs
         window = (
             divide(x["engagement_angle"], o.release_speed)
             if every or not _WINDOW_READERS.isdisjoint(want) or not _CYCLE_READERS.isdisjoint(want)
@@ -268,16 +348,7 @@ def _outputs(
             out["spin_up_time"] = o.spin_up_time
         if every or "release_radius" in want:
             out["release_radius"] = o.release_radius
-        if every or "engagement_acceleration" in want or "engagement_frequency" in want:
-            b, k = striker_oscillation(
-                c1,
-                x["power_spring_preload"],
-                c3,
-                x["return_spring_preload"],
-                x["release_travel"],
-                _moving_mass(x),
-                g,
-            )
+        if b is not None:  # in _outputs' order, which run gives
             out["engagement_acceleration"] = b
             out["engagement_frequency"] = k
         if every or not _CYCLE_READERS.isdisjoint(want):
@@ -294,24 +365,12 @@ def _outputs(
                 c.blow, divide(window - c.engagement_time, window), math.nan
             )
             out["blow_time"] = t_blow
-        if every or "spring_height_limit" in want:
-            out["spring_height_limit"] = spring_height_upper(_moving_mass(x), g, c1, c3)
-        if every or "min_return_spring_rate" in want:
-            out["min_return_spring_rate"] = min_return_spring_rate(
-                x["striker_mass"],
-                g,
-                x["return_spring_preload"],
-                x["engagement_height"],
-                x["jaw_height"],
-            )
-        if every or "relock_margin" in want:
-            out["relock_margin"] = relock_margin(
-                x["auxiliary_spring_rate"],
-                x["auxiliary_spring_preload"],
-                x["stepped_shaft_mass"],
-                g,
-                relock_friction(x),
-            )
+        if limit is not None:
+            out["spring_height_limit"] = limit
+        if c3_min is not None:
+            out["min_return_spring_rate"] = c3_min
+        if margin is not None:
+            out["relock_margin"] = margin
         if every or not _CYCLE_READERS.isdisjoint(want):
             out["return_time"] = where(c.returns, c.return_time, math.nan)
             out["striker_home_time"] = where(c.returns, t_blow + c.home_time, math.nan)
@@ -678,13 +737,16 @@ def _values(x: Mapping[str, Any], o: CycleOutcome, rung: str) -> dict[str, Any]:
     return values
 
 
-def _raw_values(x: Mapping[str, Any], o: CycleOutcome, rung: str) -> dict[str, Any]:
+def _raw_values(
+    x: Mapping[str, Any], o: CycleOutcome, rung: str, of_inputs: tuple[Any, ...] | None = None
+) -> dict[str, Any]:
     """:func:`_values` before its conversion (inf or NaN where never reached), for a caller
     that reads no sentences: :func:`engine.core.runner.run_point` makes each value what a
     run gives (a float, None where not finite) as it takes it, which converted them a
     second time (21 ``math.isfinite`` a point of the striker's study, twice). The
-    half-coupling's speed at release is the simulation's (None on the closed form), last."""
-    values = _outputs(x, o)
+    half-coupling's speed at release is the simulation's (None on the closed form), last.
+    ``of_inputs``: :func:`_of_inputs`' of ``x`` where its chunk made them."""
+    values = _outputs(x, o, None, of_inputs)
     values["half_coupling_release_speed"] = (
         float(o.release_velocity) if rung == "simulation" else None
     )
@@ -699,7 +761,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
         # design of a 3000-design study's 77 µs beyond its kernels)
         verdict = _verdicts(x, o)
         return Result(
-            values=_raw_values(x, o, ctx.rung),
+            values=_raw_values(x, o, ctx.rung, None if ctx.prepared is None else ctx.prepared[1]),
             rung=ctx.rung,
             error_estimate=None,
             verdicts=list(zip(verdict.keys(), map(bool, verdict.values()), strict=True)),
@@ -1366,5 +1428,6 @@ RARE_IMPACT = ModelSpec(
     compute=_compute,
     examples=(REFERENCE_DESIGN, HORIZONTAL_DESIGN, PAPER_DESIGN),
     vectorized=_vectorized,
+    prepare_points=_prepare_points,
     vector_rungs=("closed_form",),
 )

@@ -183,6 +183,7 @@ __all__ = [
     "closed_form_cycle",
     "closed_form_errors",
     "closed_form_release",
+    "cycle_setups",
     "face_forces",
     "geometry",
     "liftoff_speed_of",
@@ -224,6 +225,12 @@ step_budget = _COST.budget
 def _one_or_many(v: Any) -> Any:
     """One design's number as a Python float; arrays as they are."""
     return v if isinstance(v, np.ndarray) else float(v)
+
+
+def _root(v: Any) -> Any:
+    """``math.sqrt`` on one design (ValueError below 0: the step sizes' guard,
+    :func:`_guarded`, takes it for a stage that cannot start), ``np.sqrt`` on arrays."""
+    return np.sqrt(v) if v.__class__ is np.ndarray else math.sqrt(v)
 
 
 class _Numbers(dict[str, Any]):
@@ -1905,32 +1912,36 @@ def _ensure_compiled(p: np.ndarray) -> float:
 
 
 def _params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
-    """The cycle kernel's parameter vector (indices ``C1`` … ``PUSHP``), made in one call.
+    """The cycle kernel's parameter vector (indices ``C1`` … ``PUSHP``), made in one call
+    (:func:`_param_entries`)."""
+    return np.array(_param_entries(x, g), dtype=float)
+
+
+def _param_entries(x: Mapping[str, Any], g: Geometry) -> list[Any]:
+    """The entries of :func:`_params`, numbers or arrays (one design or many: a study's
+    chunk makes a row of them per design at once, :func:`cycle_setups`).
 
     ``TANA``, ``MEP`` and ``PUSHP``: tan α and the printed [002, eq. 1]'s effective mass and
     push at the design's cone angle (mode ``S1P``), for every geometry.
     """
     w_nl = x.get("motor_no_load_speed")
     m1, m2 = x["half_coupling_mass"], x["stepped_shaft_mass"]
-    return np.array(
-        [
-            x["power_spring_rate"], x["power_spring_preload"],
-            x["auxiliary_spring_rate"], x["auxiliary_spring_preload"],
-            x["return_spring_rate"], x["return_spring_preload"],
-            x["gravity"],
-            m1, m2, x["striker_mass"],
-            x["roller_mass"], x["roller_count"], x["roller_radius"],
-            g.kappa, g.a_h, g.a_s,
-            x["flywheel_inertia"], x["motor_torque"],
-            0.0 if w_nl is None else w_nl,
-            x["release_travel"], x["engagement_height"],
-            relock_friction(x),
-            g.tan_a,  # the geometry's: worked out once a request
-            _paper_effective_mass(x, g.tan_a),
-            _paper_push_per_w2(x, g.tan_a),
-        ],
-        dtype=float,
-    )  # fmt: skip
+    return [
+        x["power_spring_rate"], x["power_spring_preload"],
+        x["auxiliary_spring_rate"], x["auxiliary_spring_preload"],
+        x["return_spring_rate"], x["return_spring_preload"],
+        x["gravity"],
+        m1, m2, x["striker_mass"],
+        x["roller_mass"], x["roller_count"], x["roller_radius"],
+        g.kappa, g.a_h, g.a_s,
+        x["flywheel_inertia"], x["motor_torque"],
+        0.0 if w_nl is None else w_nl,
+        x["release_travel"], x["engagement_height"],
+        relock_friction(x),
+        g.tan_a,  # the geometry's: worked out once a request
+        _paper_effective_mass(x, g.tan_a),
+        _paper_push_per_w2(x, g.tan_a),
+    ]  # fmt: skip
 
 
 _NO_BUFFERS = (np.empty(1), np.empty(1), np.empty(1), np.empty(1))
@@ -2112,29 +2123,32 @@ def _diverged() -> SolverFailed:
 
 
 def _contact_params(x: Mapping[str, Any], g: Geometry) -> np.ndarray:
-    r"""Parameters of the one-sided stage 3: masses, springs, gravity, the faces' slopes.
+    r"""Parameters of the one-sided stage 3: masses, springs, gravity, the faces' slopes
+    (:func:`_contact_entries`, in the order of the indices ``U_M1`` ... ``U_H2``)."""
+    return np.array(_contact_entries(x, g), dtype=float)
+
+
+def _contact_entries(x: Mapping[str, Any], g: Geometry) -> list[Any]:
+    r"""The entries of :func:`_contact_params`, numbers or arrays.
 
     The faces' slopes from the geometry's kinematics: :math:`t_B = a_s/\kappa`,
     :math:`t_A = a_h/\kappa` (so that both contacts give :math:`x - x_0 = \kappa(y_s - y_h)`
     and :math:`y_r = a_h y_h + a_s y_s`): tan α on both faces for the symmetric V, tan α and
     0 (the striker's flat face) for the single cone.
     """
-    return np.array(  # in the order of the indices U_M1 ... U_H2
-        [
-            x["half_coupling_mass"],
-            x["striker_mass"],
-            x["roller_count"] * x["roller_mass"],
-            x["power_spring_rate"],
-            x["power_spring_preload"],
-            x["return_spring_rate"],
-            x["return_spring_preload"],
-            x["gravity"],
-            g.a_h / g.kappa,
-            g.a_s / g.kappa,
-            x["engagement_height"],
-        ],
-        dtype=float,
-    )
+    return [  # in the order of the indices U_M1 ... U_H2
+        x["half_coupling_mass"],
+        x["striker_mass"],
+        x["roller_count"] * x["roller_mass"],
+        x["power_spring_rate"],
+        x["power_spring_preload"],
+        x["return_spring_rate"],
+        x["return_spring_preload"],
+        x["gravity"],
+        g.a_h / g.kappa,
+        g.a_s / g.kappa,
+        x["engagement_height"],
+    ]
 
 
 def _jacobian_matrix(p: np.ndarray) -> np.ndarray:
@@ -2886,8 +2900,8 @@ def _stage2_steps(x: Mapping[str, Any], g: Geometry, steps_per_period: int) -> t
     c123 = x["power_spring_rate"] + x["auxiliary_spring_rate"] + x["return_spring_rate"]
     m2 = x["stepped_shaft_mass"]
     big = x["half_coupling_mass"] + x["roller_count"] * x["roller_mass"] + x["striker_mass"]
-    per2 = 2.0 * math.pi * math.sqrt((big + m2) / c123)
-    return per2, 2.0 * math.pi * math.sqrt(big / c123) / steps_per_period
+    per2 = 2.0 * math.pi * _root((big + m2) / c123)
+    return per2, 2.0 * math.pi * _root(big / c123) / steps_per_period
 
 
 def _stage3_steps(
@@ -2901,8 +2915,8 @@ def _stage3_steps(
     m11, m12, m22 = matrices
     det = m1 * m3 + nm * (m1 * (g.kappa**2 + g.a_s**2) + m3 * (g.kappa**2 + g.a_h**2))
     det += nm * nm * g.kappa**2 * (g.a_h + g.a_s) ** 2  # m11 m22 - m12², cancellation-free
-    w_hi = math.sqrt(max(c1, c3) / min(det / m22, det / m11))
-    w_lo = math.sqrt(max(min(c1, c3), 1e-300) / (m11 + m22 + 2.0 * abs(m12)))
+    w_hi = _root(pymax(c1, c3) / pymin(det / m22, det / m11))
+    w_lo = _root(pymax(pymin(c1, c3), 1e-300) / (m11 + m22 + 2.0 * abs(m12)))
     return 2.0 * math.pi / (steps_per_period * w_hi), 30.0 * 2.0 * math.pi / w_lo
 
 
@@ -2912,11 +2926,11 @@ def _one_sided_step(
     """The one-sided stage 3's RK4 step [s]: ``steps_per_period`` steps per period of the
     faster of the free parts and the two-degree-of-freedom stage 3."""
     m1, m3 = x["half_coupling_mass"], x["striker_mass"]
-    w_free = math.sqrt(max(x["power_spring_rate"] / m1, x["return_spring_rate"] / m3))
+    w_free = _root(pymax(x["power_spring_rate"] / m1, x["return_spring_rate"] / m3))
     m11, m12, m22 = matrices
-    det = float(m11 * m22 - m12 * m12)
-    w_both = math.sqrt(max(x["power_spring_rate"], x["return_spring_rate"]) / (det / max(m11, m22)))
-    return (2.0 * math.pi / (steps_per_period * max(w_free, w_both)),)
+    det = m11 * m22 - m12 * m12
+    w_both = _root(pymax(x["power_spring_rate"], x["return_spring_rate"]) / (det / pymax(m11, m22)))
+    return (2.0 * math.pi / (steps_per_period * pymax(w_free, w_both)),)
 
 
 def _stage4_steps(
@@ -2928,17 +2942,146 @@ def _stage4_steps(
 
     A period that rounds to zero (a shaft of a few ulp of mass, which the input's exclusive
     minimum of 0 lets through) has no step count: ZeroDivisionError, as the count at the
-    stage's start raised, not a stage skipped as if the spring did not push.
+    stage's start raised, not a stage skipped as if the spring did not push. Many designs
+    (arrays, :func:`cycle_setups`): each one's three, the period worked out at all of them
+    (ZeroDivisionError where one that runs stage 4 has none).
     """
     drive = x["auxiliary_spring_rate"] * (x["auxiliary_spring_preload"] + x["release_travel"])
     drive += x["stepped_shaft_mass"] * x["gravity"]
-    if not drive > p[FF]:
+    beats = drive > p[FF]
+    many = beats.__class__ is np.ndarray
+    if not many and not beats:
         return 0.0, 0.0, 0.0
-    per4 = 2.0 * math.pi * math.sqrt(x["stepped_shaft_mass"] / x["auxiliary_spring_rate"])
+    per4 = 2.0 * math.pi * _root(x["stepped_shaft_mass"] / x["auxiliary_spring_rate"])
     h4 = per4 / steps_per_period
-    if h4 == 0.0:
+    if any_true(beats & (h4 == 0.0)) if many else h4 == 0.0:
         raise ZeroDivisionError("stage 4's period rounds to zero: no step count")
+    if many:
+        return where(beats, 1.0, 0.0), where(beats, per4, 0.0), where(beats, h4, 0.0)
     return 1.0, per4, h4
+
+
+def _spin_up(
+    x: Mapping[str, Any], g: Geometry, r: Any, w_0: Any, w_qs: Any
+) -> tuple[Any, Any, Any]:
+    """Stage 1's spin-up: the flywheel's inertia with the rollers at rest, the lift-off time
+    and the quasi-static release's [kg·m², s, s] (inf where the motor never gets there)."""
+    inertia_0 = _inertia(x, g, x["roller_radius"])
+    t_l = _time_to_speed(x, inertia_0, w_0)
+    return inertia_0, t_l, _time_to_speed(x, _inertia(x, g, r), w_qs)
+
+
+def _stage1_span(
+    x: Mapping[str, Any], g: Geometry, inertia_0: Any, t_l: Any, t_qs: Any, w_qs: Any,
+    steps_per_period: int,
+) -> tuple[Any, Any, Any, Any]:  # fmt: skip
+    r"""Stage 1's integration from lift-off: its push per ω² (:math:`A\kappa`), the span to
+    the quasi-static release, its end (past that release by the slowest period's fifty, at
+    most ten spans and a second) and its RK4 step (``steps_per_period`` a period of the
+    stiffest the springs or the push at the end's speed make) [kg, s, s, s]."""
+    c1, c2 = x["power_spring_rate"], x["auxiliary_spring_rate"]
+    m_e = _effective_mass(x, g)  # stage1_effective_mass without its door
+    w_nl = x.get("motor_no_load_speed")
+    span = pymax(t_qs - t_l, 0.0)
+    push = _push_per_w2(x, g) * g.kappa  # the paper's κ is 1/tan α: the same float
+    k_qs = _stiffness_at(x, push, w_qs)
+    slow = 2.0 * math.pi / _root(pymax(k_qs, 1e-300) / m_e)
+    t_end = t_qs + span + pymin(50.0 * slow, 10.0 * span + 1.0)
+    w_end = w_nl if w_nl is not None else x["motor_torque"] / inertia_0 * t_end
+    om_max = _root(pymax(c1 + c2, push * w_end * w_end) / m_e)
+    return push, span, t_end, 2.0 * math.pi / (steps_per_period * om_max)
+
+
+def _driver_entries(
+    x: Mapping[str, Any], g: Geometry, p: Any, t_l: Any, w_0: Any, h: Any, t_end: Any,
+    span: Any, steps1: Any, steps_per_period: int,
+) -> list[Any]:  # fmt: skip
+    """The design's numbers the compiled driver takes (indices ``_C_*``), numbers or arrays:
+    stage 1's start and step, the stages' masses, periods and steps (NaN where a stage's
+    step sizes raise, its ``_C_STEPS*`` 0: :func:`_guarded`); ``p``: :func:`_params` or its
+    entries, ``steps1``: stage 1's step count ``span / h``."""
+    nm = x["roller_count"] * x["roller_mass"]
+    h1, h2, h3 = x["release_travel"], x["engagement_height"], x["jaw_height"]
+    m1, m2, m3 = x["half_coupling_mass"], x["stepped_shaft_mass"], x["striker_mass"]
+    big = m1 + nm + m3
+    per2, h2s, ok2 = _guarded(_stage2_steps, 2, x, g, steps_per_period)
+    z_off = x["power_spring_preload"] + h1
+    matrices = _stage3_matrices(x, g)
+    m11, m12, m22 = matrices
+    h3s, span3, ok3 = _guarded(_stage3_steps, 2, x, g, matrices, steps_per_period)
+    (h_u, ok_u) = _guarded(_one_sided_step, 1, x, matrices, steps_per_period)
+    beats4, per4, h4, ok4 = _guarded(_stage4_steps, 3, x, p, steps_per_period)
+    return [
+        S1P if g.paper else S1, t_l, w_0, h, t_end, steps1, m1 + m2 + nm * g.a_h, big + m2,
+        big, per2, h2s, 20.0 * per2, z_off, h1, h2, x["return_spring_preload"], m11, m12, m22,
+        h3s, span3, h2 - pymin(h3, h2), _one_or_many(g.kappa), g.a_h, g.a_s,
+        1e-12 * _x_scale(p), h_u, where(beats4 == 0.0, 0.0, 1.0), per4, h4,
+        ok2, ok3, ok_u, ok4,  # NaN: raised
+    ]  # fmt: skip
+
+
+#: Where a row of :func:`cycle_setups` holds the driver's numbers (``_C_*``, after the
+#: kernel's parameters), the one-sided stage 3's, and the numbers the cycle reads after
+#: the driver (r, ω_0, Aκ, stage 1's end, the quasi-static release's time, its steps).
+_SETUP_PU = NPAR + _C_N
+_SETUP_TAIL = _SETUP_PU + U_NPAR
+
+
+def cycle_setups(
+    x: Mapping[str, Any], steps_per_period: int = STEPS_PER_PERIOD
+) -> list[np.ndarray | None] | None:
+    """What :func:`simulate_cycle` works out from the inputs alone before its compiled
+    driver, for many designs at once (a study's looped chunk): a row per design (its
+    ``setup``), None for a design that sets itself up (the cycle refuses it, or one of its
+    numbers is not finite: a stage's step sizes that raise), or None for all.
+
+    Parameters
+    ----------
+    x : Mapping
+        The designs' inputs in SI (names as in ``impact.rare``, with ``roller_geometry``):
+        numbers, and arrays of one shape for those that vary
+    steps_per_period : int
+        RK4 steps per shortest natural period of each mode, [-] (:func:`simulate_cycle`'s)
+
+    Notes
+    -----
+    The same functions on arrays as on one design's floats (numpy's arithmetic and square
+    root are IEEE's, as Python's floats: the same numbers to the last bit), run where
+    numpy raises on a division by zero, an overflow and an invalid operation: where one
+    design's floats would raise (ZeroDivisionError, math's ValueError), the chunk is left
+    to its designs (None). None as well where the cone angle or the motor's no-load speed
+    is given (arrays' tan and log1p are numpy's own, which need not be libm's to the last
+    bit).
+    """
+    x = _numbers(x)
+    sizes = [v.shape for v in x.values() if v.__class__ is np.ndarray]
+    if (
+        not sizes
+        or x.get("motor_no_load_speed") is not None
+        or x["cone_angle"].__class__ is np.ndarray
+    ):
+        return None
+    try:
+        with np.errstate(divide="raise", over="raise", invalid="raise", under="ignore"):
+            g = _geo(x)
+            entries = _param_entries(x, g)
+            r, w_0, w_qs = _speeds(x, g)
+            held = _held(x, g)
+            inertia_0, t_l, t_qs = _spin_up(x, g, r, w_0, w_qs)
+            push, span, t_end, h = _stage1_span(x, g, inertia_0, t_l, t_qs, w_qs, steps_per_period)
+            steps1 = span / h
+            entries += _driver_entries(
+                x, g, entries, t_l, w_0, h, t_end, span, steps1, steps_per_period
+            )
+            entries += _contact_entries(x, g)
+            entries += [r, w_0, push, t_end, t_qs, steps1]
+            rows = np.empty(sizes[0] + (len(entries),))
+            for i, column in enumerate(entries):
+                rows[:, i] = column
+    except (ArithmeticError, ValueError):
+        return None
+    own = ~(held & np.isfinite(rows).all(axis=1))
+    return [None if k else row for row, k in zip(rows, own.tolist(), strict=True)]
 
 
 def _guarded(fn: Callable[..., tuple[float, ...]], width: int, *args: Any) -> tuple[float, ...]:
@@ -2959,6 +3102,7 @@ def simulate_cycle(
     max_steps: int = 1_000_000,
     steps_per_period: int = STEPS_PER_PERIOD,
     sentences: bool = True,
+    setup: np.ndarray | None = None,
 ) -> CycleOutcome:
     """The whole impact as one hybrid simulation (module notes); series when ``record``.
 
@@ -2978,6 +3122,12 @@ def simulate_cycle(
     sentences : bool
         Write the one-sided stage 3's note (False: a caller that reads no sentences, a
         study's looped point; its numbers formatted cost a µs a design)
+    setup : ndarray, optional
+        This design's row of :func:`cycle_setups` (a study's looped point): its set-up from
+        the inputs alone, made for the chunk at once (the same numbers as made here; not
+        read where ``record``). ``x`` is then read as it is, not converted: a validated
+        design's numbers (Python floats, and the roller count an int, which every line
+        multiplies by a float: the same numbers)
 
     Examples
     --------
@@ -2986,9 +3136,14 @@ def simulate_cycle(
     >>> round(o.release_speed, 2), round(o.engagement_time * 1e3, 3)
     (244.12, 6.558)
     """
-    x = _numbers(x)  # once for the stage-1 steps below (their geometry and speeds)
-    g = _geo(x)
-    p = _params(x, g)
+    row = None if record else setup  # None: the design's set-up made here
+    if row is None:
+        x = _numbers(x)  # once for the stage-1 steps below (their geometry and speeds)
+        g = _geo(x)
+        entries = _param_entries(x, g)
+        p = np.array(entries, dtype=float)  # _params
+    else:
+        p = row[:NPAR]
     if deadline is not None:
         # loading or compiling the kernel (once per process) is not the design's time
         deadline += _ensure_compiled(p)
@@ -2996,57 +3151,48 @@ def simulate_cycle(
     run = _Run_impl(p, rec, deadline, _COST.budget(deadline, max_steps))
     notes: list[str] = []
     warnings: list[str] = []
-    nm = x["roller_count"] * x["roller_mass"]
-    c1, c2, c3 = x["power_spring_rate"], x["auxiliary_spring_rate"], x["return_spring_rate"]
+    c1, c3 = x["power_spring_rate"], x["return_spring_rate"]
     lam3 = x["return_spring_preload"]
-    h1, h2, h3 = x["release_travel"], x["engagement_height"], x["jaw_height"]
-    m1, m2, m3 = x["half_coupling_mass"], x["stepped_shaft_mass"], x["striker_mass"]
-    big = m1 + nm + m3
+    h1, h2 = x["release_travel"], x["engagement_height"]
+    big = x["half_coupling_mass"] + x["roller_count"] * x["roller_mass"] + x["striker_mass"]
 
-    # ---- stage 1: spin-up from rest; the half-coupling rests until lift-off -------------
-    # liftoff_speed_of, release_speed_of and release_radius_of without their doors (x is
-    # converted already, g made): the request's stage-1 speeds, once
-    r, w_0, w_qs = _speeds(x, g)
-    if not _held(x, g):
-        release_speed_of(x)  # raises its refusal: the preloads do not hold the half-coupling
-    inertia_0 = _inertia(x, g, x["roller_radius"])
-    t_l = _time_to_speed(x, inertia_0, w_0)
-    t_qs = _time_to_speed(x, _inertia(x, g, r), w_qs)
-    if not (math.isfinite(t_qs) and math.isfinite(t_l)):
-        raise _never_fast_enough(x, max(w_qs, w_0))
-    m_e = _effective_mass(x, g)  # stage1_effective_mass without its door
-    w_nl = x.get("motor_no_load_speed")
-    span = max(t_qs - t_l, 0.0)
-    push = _push_per_w2(x, g) * g.kappa  # the paper's κ is 1/tan α: the same float
-    k_qs = _stiffness_at(x, push, w_qs)
-    slow = 2.0 * math.pi / math.sqrt(max(k_qs, 1e-300) / m_e)
-    t_end = t_qs + span + min(50.0 * slow, 10.0 * span + 1.0)
-    w_end = w_nl if w_nl is not None else x["motor_torque"] / inertia_0 * t_end
-    om_max = math.sqrt(max(c1 + c2, push * w_end * w_end) / m_e)
-    h = 2.0 * math.pi / (steps_per_period * om_max)
-    if record and t_l > 0.0:
-        tt = np.linspace(0.0, t_l, 12, endpoint=False)
-        w_dw = (
-            x["motor_torque"] / inertia_0 * tt
-            if w_nl is None
-            else w_nl * -np.expm1(-tt * x["motor_torque"] / (inertia_0 * w_nl))
+    if row is None:
+        # ---- stage 1: spin-up from rest; the half-coupling rests until lift-off ---------
+        # liftoff_speed_of, release_speed_of and release_radius_of without their doors (x is
+        # converted already, g made): the request's stage-1 speeds, once
+        r, w_0, w_qs = _speeds(x, g)
+        if not _held(x, g):
+            release_speed_of(x)  # raises its refusal: the preloads do not hold the half-coupling
+        inertia_0, t_l, t_qs = _spin_up(x, g, r, w_0, w_qs)
+        if not (math.isfinite(t_qs) and math.isfinite(t_l)):
+            raise _never_fast_enough(x, max(w_qs, w_0))
+        push, span, t_end, h = _stage1_span(x, g, inertia_0, t_l, t_qs, w_qs, steps_per_period)
+        w_nl = x.get("motor_no_load_speed")
+        if record and t_l > 0.0:
+            tt = np.linspace(0.0, t_l, 12, endpoint=False)
+            w_dw = (
+                x["motor_torque"] / inertia_0 * tt
+                if w_nl is None
+                else w_nl * -np.expm1(-tt * x["motor_torque"] / (inertia_0 * w_nl))
+            )
+            rec.parts.append((S1, tt, w_dw, np.zeros_like(tt), np.zeros_like(tt)))
+        # stage 1's step count, refused before the clock is looked at (a budget refusal names
+        # the steps it would take: the runner's fallback reads them)
+        steps1 = span / h
+        run.admit(steps1)
+        # ---- stages 1 (from lift-off) to 4: one compiled driver (_stages) ------------------
+        # the design's numbers the stages take; the driver does what needs the simulated states
+        c = np.array(
+            _driver_entries(x, g, entries, t_l, w_0, h, t_end, span, steps1, steps_per_period),
+            dtype=float,
         )
-        rec.parts.append((S1, tt, w_dw, np.zeros_like(tt), np.zeros_like(tt)))
-    # stage 1's step count, refused before the clock is looked at (a budget refusal names
-    # the steps it would take: the runner's fallback reads them)
-    run.admit(span / h)
-
-    # ---- stages 1 (from lift-off) to 4: one compiled driver (_stages) ----------------------
-    # the design's numbers the stages take; the driver does what needs the simulated states
-    per2, h2s, ok2 = _guarded(_stage2_steps, 2, x, g, steps_per_period)
-    z_off = x["power_spring_preload"] + h1
+        pu = _contact_params(x, g)
+    else:  # a study's row (cycle_setups): the same numbers, made for its chunk at once
+        c = row[NPAR:_SETUP_PU]
+        pu = row[_SETUP_PU:_SETUP_TAIL]
+        r, w_0, push, t_end, t_qs, steps1 = row[_SETUP_TAIL:].tolist()
+        run.admit(steps1)
     stops = h2 > h1  # the half-coupling reaches its stop at h1 before the blow
-    matrices = _stage3_matrices(x, g)
-    m11, m12, m22 = matrices
-    h3s, span3, ok3 = _guarded(_stage3_steps, 2, x, g, matrices, steps_per_period)
-    (h_u, ok_u) = _guarded(_one_sided_step, 1, x, matrices, steps_per_period)
-    beats4, per4, h4, ok4 = _guarded(_stage4_steps, 3, x, p, steps_per_period)
-    pu = _contact_params(x, g)
     fw = np.empty(_F_N)
     iw = np.zeros(_I_N, dtype=np.int64)
     iw[_I_PHASE], iw[_I_STEPS], iw[_I_MAX] = _P_S1, run.steps, run.max_steps
@@ -3057,15 +3203,6 @@ def simulate_cycle(
         parts = np.zeros((_PARTS, 3), dtype=np.int64)
     else:  # stride 0: the kernels write at most an event's point there, read by no one
         bufs, parts = _NO_BUFFERS, _NO_PARTS
-    c = np.array(
-        [
-            S1P if g.paper else S1, t_l, w_0, h, t_end, span / h, m1 + m2 + nm * g.a_h, big + m2,
-            big, per2, h2s, 20.0 * per2, z_off, h1, h2, lam3, m11, m12, m22, h3s, span3,
-            h2 - min(h3, h2), float(g.kappa), g.a_h, g.a_s, 1e-12 * _x_scale(p), h_u,
-            0.0 if beats4 == 0.0 else 1.0, per4, h4, ok2, ok3, ok_u, ok4,  # NaN: raised
-        ],
-        dtype=float,
-    )  # fmt: skip
     failed = run.stages(c, pu, _jacobian_matrix(pu), fw, iw, bufs, parts)
     if failed == _R_NO_RELEASE:
         raise SolverFailed(
@@ -3074,6 +3211,8 @@ def simulate_cycle(
             field="fidelity",
         )
     if failed:  # a stage whose step sizes raised where it starts, as they did there
+        g = _geo(x)
+        matrices = _stage3_matrices(x, g)
         if failed == _R_STEPS2:
             _stage2_steps(x, g, steps_per_period)
         elif failed == _R_STEPS3:
@@ -3122,6 +3261,7 @@ def simulate_cycle(
         max_travel = max(max_travel, h2, float(_peak(h1, v_stop, acc_f, w2_f)))
     else:
         # the balance of the mechanism at the blow, for the stage-2 reach without the blow
+        z_off = x["power_spring_preload"] + h1
         c_b = (big * x["gravity"] + c1 * z_off - c3 * lam3) / (c1 + c3)
         max_travel = max(max_travel, h2, 2.0 * c_b)
     if sentences and iw[_I_ONE_SIDED]:
@@ -3602,9 +3742,11 @@ def _stages_in_python(**replaced: Any) -> Callable[..., int]:
     return types.FunctionType(_stages.__code__, names, "_stages")
 
 
-def _x_scale(p: np.ndarray) -> float:
-    """A length scale of the mechanism for absolute tolerances [m]."""
-    return float(min(p[H1], p[H2]))
+def _x_scale(p: Any) -> Any:
+    """A length scale of the mechanism for absolute tolerances [m] (of :func:`_params` or
+    its entries: arrays for many designs)."""
+    scale = pymin(p[H1], p[H2])
+    return scale if scale.__class__ is np.ndarray else float(scale)
 
 
 def simulate_cycle_scipy(

@@ -874,12 +874,23 @@ def evaluate_chunk(
     # asks), so of a float input's check only the fold of -0.0 is left: made on the column
     # (x + 0.0 is x, and 0.0 for -0.0); an int input is checked point by point (whole)
     varied: list[tuple[str, Param | None, list[Any]]] = []
+    folded: dict[str, Any] = {}  # the looped points' varied inputs as they take them
     for name in cols if to_loop else ():
         param = spec.param(name)
         if param.kind == "float":
-            varied.append((name, None, (x[name] + 0.0).tolist()))
+            folded[name] = x[name] + 0.0
+            varied.append((name, None, folded[name].tolist()))
         else:
+            folded[name] = x[name]
             varied.append((name, param, x[name].tolist()))
+    # the work a looped point's model does from its inputs alone, made for them at once
+    # where the model says how (ModelSpec.prepare_points: an entry a point, or None)
+    prepared: Sequence[Any] | None = None
+    if named and to_loop and spec.prepare_points is not None:
+        points = {**x, **folded}
+        prepared = spec.prepare_points(
+            points if len(to_loop) == n else take(points, n, loop), asked
+        )
     # the looped points' outputs, a row each in the order of ``outputs`` (None where null),
     # put into their columns in one assignment a column every LOOP_ROWS points (a value a
     # time cost µs a point: 21 outputs of the striker's study); their verdicts likewise
@@ -923,7 +934,7 @@ def evaluate_chunk(
     # once for the loop: run_point made and entered one a point (2 µs of the striker's
     # study); a point through engine.run enters its own as a request does
     with np.errstate(all="ignore"):
-        for j in to_loop:
+        for k, j in enumerate(to_loop):
             if cancel is not None and cancel.is_set():
                 break
             if deadline is not None and time.perf_counter() > deadline:
@@ -945,6 +956,7 @@ def evaluate_chunk(
                         cancel=cancel,
                         checked=checked,
                         silenced=True,
+                        prepared=None if prepared is None else prepared[k],
                     )
                 else:
                     res = _as_point(
