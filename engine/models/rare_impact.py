@@ -38,6 +38,8 @@ from ..core.text import q
 from ..numerics.ode import divide, is_array, pymax, quiet, where
 from ..physics.rare_impact import (
     G0,
+    engagement_window,
+    full_engagement,
     min_return_spring_rate,
     relock_margin,
     spring_height_limit,
@@ -338,7 +340,7 @@ def _outputs(
     with quiet(is_array(o.release_speed)):
         b, k, limit, c3_min, margin = _of_inputs(x, every, want) if of_inputs is None else of_inputs
         window = (
-            divide(x["engagement_angle"], o.release_speed)
+            engagement_window(x["engagement_angle"], o.release_speed)
             if every or not _WINDOW_READERS.isdisjoint(want) or not _CYCLE_READERS.isdisjoint(want)
             else None
         )
@@ -360,7 +362,7 @@ def _outputs(
             out["engagement_start"] = o.spin_up_time
             out["engagement_end"] = o.spin_up_time + window
         if every or not _CYCLE_READERS.isdisjoint(want):
-            out["full_engagement"] = c.blow & (c.engagement_time <= window)
+            out["full_engagement"] = full_engagement(c.blow, c.engagement_time, window)
             out["engagement_margin"] = where(
                 c.blow, divide(window - c.engagement_time, window), math.nan
             )
@@ -419,14 +421,14 @@ _RELEASE_OUTPUTS = frozenset(
 
 def _verdicts(x: Mapping[str, Any], o: CycleOutcome) -> dict[str, Any]:
     """The verdict of every check (:func:`design_checks`, in its order), one design or many."""
-    window = divide(x["engagement_angle"], o.release_speed)
+    window = engagement_window(x["engagement_angle"], o.release_speed)
     return {
         "c3 > c1": x["return_spring_rate"] > x["power_spring_rate"],
         "λ1 < λ3": x["power_spring_preload"] < x["return_spring_preload"],
         "eq. 6 (engagement height)": o.blow,
         "return": o.returns,
         "relock": o.relocks,
-        "full engagement": o.blow & (o.engagement_time <= window),
+        "full engagement": full_engagement(o.blow, o.engagement_time, window),
     }
 
 
@@ -665,7 +667,7 @@ def design_checks(x: Mapping[str, Any], o: CycleOutcome) -> list[Check]:
                 f"{ff_text}: the shaft will not re-lock; {paper_relock}: raise c2·λ2",
             )
         )
-    window = divide(x["engagement_angle"], o.release_speed)
+    window = engagement_window(x["engagement_angle"], o.release_speed)
     if ok["full engagement"]:
         checks.append(
             Check(

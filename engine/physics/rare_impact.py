@@ -489,12 +489,36 @@ def engagement_window(engagement_angle: Any, release_speed: Any) -> Any:
         t_{eng} = \varphi_{eng}/\omega_M
 
 
-    [002, after eq. 5].
+    [002, after eq. 5]. A release speed of 0 gives inf (numpy's quotient, floats too).
 
     >>> round(engagement_window(math.pi / 2, 197.71), 6)
     0.007945
+    >>> engagement_window(math.pi / 2, 0.0)
+    inf
     """
-    return engagement_angle / release_speed
+    return divide(engagement_angle, release_speed)
+
+
+def full_engagement(blow: Any, engagement_time: Any, window: Any) -> Any:
+    r"""True where the striker strikes and travels the engagement height within the
+    window: :math:`t_e \le t_{eng}` [002, after eq. 5].
+
+    Parameters
+    ----------
+    blow : bool or array of bool
+        True where the striker reaches the engagement height (the cycle's blow), [-]
+    engagement_time : float or array
+        Time the striker takes to travel the engagement height, :math:`t_e`, [s]
+    window : float or array
+        Time the flywheel takes to turn through the anvil's opening,
+        :func:`engagement_window`, :math:`t_{eng}`, [s]
+
+    >>> full_engagement(True, 0.0065, 0.0079), full_engagement(True, 0.0081, 0.0079)
+    (True, False)
+    >>> full_engagement(False, 0.0065, 0.0079)
+    False
+    """
+    return blow & (engagement_time <= window)
 
 
 def spring_height_limit(
