@@ -513,6 +513,8 @@ def full_engagement(blow: Any, engagement_time: Any, window: Any) -> Any:
         Time the flywheel takes to turn through the anvil's opening,
         :func:`engagement_window`, :math:`t_{eng}`, [s]
 
+    Examples
+    --------
     >>> full_engagement(True, 0.0065, 0.0079), full_engagement(True, 0.0081, 0.0079)
     (True, False)
     >>> full_engagement(False, 0.0065, 0.0079)
