@@ -198,16 +198,21 @@ def cluster_processes() -> Iterator[tuple[str, list[subprocess.Popen[bytes]]]]:
                 p.kill()
 
 
+def _two_workers(executor: DaskExecutor) -> None:
+    """Wait (up to a minute) for the separate scheduler's two workers to register."""
+    client = executor.client()
+    deadline = time.monotonic() + 60
+    while len(client.scheduler_info()["workers"]) < 2:
+        assert time.monotonic() < deadline, "the two workers did not register"
+        time.sleep(0.2)
+
+
 def test_a_separate_scheduler_with_two_workers_gives_the_same_result(
     reference: StudyRun, scheduler: str
 ) -> None:
     executor = DaskExecutor(scheduler)
     try:
-        client = executor.client()
-        deadline = time.monotonic() + 60
-        while len(client.scheduler_info()["workers"]) < 2:
-            assert time.monotonic() < deadline, "the two workers did not register"
-            time.sleep(0.2)
+        _two_workers(executor)
         _equal(reference, run_study(RARE, _study(), executor))
     finally:
         executor.close()
@@ -314,11 +319,7 @@ def test_a_cancel_ends_the_study_when_the_scheduler_does_not_answer(
     executor = DaskExecutor(address)
     stopped = False
     try:
-        client = executor.client()
-        deadline = time.monotonic() + 60
-        while len(client.scheduler_info()["workers"]) < 2:
-            assert time.monotonic() < deadline, "the two workers did not register"
-            time.sleep(0.2)
+        _two_workers(executor)
         study = _study()
         study = Study(**{**vars(study), "samples": 40 * LOOP_CHUNK})  # about 10 s of chunks
         cancel = threading.Event()
