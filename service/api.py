@@ -167,19 +167,19 @@ def _encoder(spec: ModelSpec) -> Any:
             if value is not None and type(value) is not exact[name]:
                 results[name] = _coerce(kinds[name], value)
         checks = answer["checks"]
-        for c in checks:
+        for i, c in enumerate(checks):
             if not (type(c["name"]) is str and type(c["detail"]) is str):
                 raise WrongKind("a check's name and detail are texts")
-        answer["checks"] = [
-            {
-                "name": c["name"],
-                "ok": c["ok"] if type(c["ok"]) is bool else _coerce("bool", c["ok"]),
-                "detail": c["detail"],
-                "level": c.get("level", "requirement"),
-                "detail_parts": c.get("detail_parts") or [c["detail"]],
-            }
-            for c in checks
-        ]
+            # as _response made it (these five keys, in this order): kept as it is where
+            # the response model would change nothing, else made again as it made it
+            if type(c["ok"]) is not bool or "level" not in c or not c.get("detail_parts"):
+                checks[i] = {
+                    "name": c["name"],
+                    "ok": c["ok"] if type(c["ok"]) is bool else _coerce("bool", c["ok"]),
+                    "detail": c["detail"],
+                    "level": c.get("level", "requirement"),
+                    "detail_parts": c.get("detail_parts") or [c["detail"]],
+                }
         for text in (*answer["notes"], *answer["warnings"]):
             if type(text) is not str:
                 raise WrongKind("notes and warnings are texts")
