@@ -1373,7 +1373,7 @@ NUTRUNNER_DRIVE = ModelSpec(
             "rotor inertia and belt/gear efficiency; needs motor_curve ≠ 'none'",
             _estimate_motor_curve,
             typical_error="quadrature error ~1e-10 (the curve itself is the model)",
-            typical_time="~1 ms",
+            typical_time="~0.1 ms",
         ),
     ),
     compute=_compute,

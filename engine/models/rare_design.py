@@ -343,7 +343,7 @@ SEARCH = Rung(
     typical_error="impact.rare's closed form's (1e-3 to 1e-2, bench/accuracy_striker.py) for "
     "the design found, which keeps the engagement margin asked for (0.02) beyond it; the "
     "search is local",
-    typical_time="about 0.1 s (some 7,000 designs)",
+    typical_time="1–15 ms (the examples; up to some 7,000 designs)",
     steps=(
         sd.design_box,
         sd.shell_samples,

@@ -1398,7 +1398,7 @@ RARE_IMPACT = ModelSpec(
             typical_error="1e-3 to 1e-2 (a bound per design and output, derived from the terms "
             "the closed form leaves out; none where the rollers fly at the blow; "
             "bench/accuracy_striker.py)",
-            typical_time="~60 µs",
+            typical_time="~0.1 ms",
             shared_estimate=_closed_form_estimate,
             steps=(
                 closed_form_cycle,
@@ -1415,7 +1415,7 @@ RARE_IMPACT = ModelSpec(
             _simulation_estimate,
             typical_error="1e-6 for the times (RK4 at 200 steps a period lags θ⁴/120 = 8e-9); "
             "the half-coupling's speed at release per design (bench/accuracy_striker.py)",
-            typical_time="~1 ms (plus a one-off numba load in a fresh process)",
+            typical_time="~0.6 ms (plus a one-off numba load in a fresh process)",
             heavy=True,
             fallback="closed_form",
             steps=(
