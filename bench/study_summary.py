@@ -56,7 +56,8 @@ import functools
 import os
 import sys
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from dataclasses import asdict
 from pathlib import Path
 from typing import Any
@@ -482,13 +483,10 @@ WAIT_S = 30.0
 HTTP_RATIO_TARGET = 1.3
 
 
-def http_vs_inprocess(
-    sizes: tuple[int, ...] = (100_000, POINTS), rounds: int = 3
-) -> list[dict[str, Any]]:
-    """The preload study through ``POST …/study`` of a service process on loopback (its
-    studies on its local Dask cluster, started and warmed by a first study) against the
-    same study run in this process (:class:`~engine.studies.execute.InProcess`), in wall
-    seconds (the HTTP study runs in other processes), alternating, medians of ``rounds``."""
+@contextmanager
+def _service(**env_extra: str) -> Iterator[str]:
+    """A service process on loopback (its own job store; ``env_extra`` set), its address
+    once ``/readyz`` answers; stopped after."""
     import subprocess
     import tempfile
 
@@ -502,12 +500,11 @@ def http_vs_inprocess(
     proc = subprocess.Popen(
         [sys.executable, "-m", "service", "--port", str(port)],
         cwd=ROOT,
-        env=env,
+        env={**env, **env_extra},
         stdout=subprocess.DEVNULL,
         stderr=subprocess.DEVNULL,
     )
     url = f"http://127.0.0.1:{port}"
-    rows = []
     try:
         deadline = time.monotonic() + 120.0
         while True:
@@ -519,16 +516,45 @@ def http_vs_inprocess(
             if time.monotonic() > deadline or proc.poll() is not None:
                 raise RuntimeError("the service did not start")
             time.sleep(0.2)
+        yield url
+    finally:
+        proc.terminate()
+        try:
+            proc.wait(timeout=30)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+
+
+def http_vs_inprocess(
+    sizes: tuple[int, ...] = (100_000, POINTS), rounds: int = 3
+) -> list[dict[str, Any]]:
+    """The preload study through ``POST …/study`` of a service process on loopback (its
+    studies on its local Dask cluster, started and warmed by a first study) against the
+    same study run in this process (:class:`~engine.studies.execute.InProcess`), in wall
+    seconds (the HTTP study runs in other processes), alternating, medians of ``rounds``.
+
+    Beside it, in the same rounds, the same study through a second service that runs it in
+    its job thread (``STUDY_INPROCESS_POINTS`` above the study's size: no Dask): the cost
+    of the job's way through the service (the POST drawing the points, the job store, the
+    service's thread, the answer) apart from the cluster's."""
+    rows = []
+    with (
+        _service() as url,
+        _service(STUDY_INPROCESS_POINTS=str(max(sizes))) as url_thread,
+    ):
         _http_study(url, PRELOAD.path, _body(preload_study(20_000)))  # the cluster, warm
+        _http_study(url_thread, PRELOAD.path, _body(preload_study(20_000)))
         for n in sizes:
             study = preload_study(n)
-            http, local = [], []
+            http, thread, local = [], [], []
             for _ in range(rounds):
                 http.append(_http_study(url, PRELOAD.path, _body(study))[0])
+                thread.append(_http_study(url_thread, PRELOAD.path, _body(study))[0])
                 t0 = time.perf_counter()
                 run_study(PRELOAD, study)
                 local.append(time.perf_counter() - t0)
             t_http, t_local = float(np.median(http)), float(np.median(local))
+            t_thread = float(np.median(thread))
             ratio = t_http / t_local
             rows.append(
                 _row(
@@ -539,19 +565,16 @@ def http_vs_inprocess(
                     n,
                     f"HTTP {t_http:.2f} s, in-process {t_local:.2f} s (wall, medians of "
                     f"{rounds}), HTTP/in-process ×{ratio:.2f} (target ≤ ×{HTTP_RATIO_TARGET:g}); "
+                    f"the same study through a service that runs it in its job thread (no "
+                    f"Dask) {t_thread:.2f} s, ×{t_thread / t_local:.2f}; "
                     f"load average {os.getloadavg()[0]:.1f}",
                     http_s=t_http,
                     inprocess_s=t_local,
+                    thread_s=t_thread,
                     ratio=ratio,
                     met=ratio <= HTTP_RATIO_TARGET,
                 )
             )
-    finally:
-        proc.terminate()
-        try:
-            proc.wait(timeout=30)
-        except subprocess.TimeoutExpired:
-            proc.kill()
     return rows
 
 
