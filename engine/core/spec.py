@@ -718,7 +718,9 @@ class ModelSpec:
     #: from its inputs alone, made once for them: called with their validated inputs (the
     #: varied as arrays, others scalar) and the rung, it gives one entry a point (None:
     #: that point does its own), or None for all; a point's entry reaches ``compute`` as
-    #: :attr:`RunContext.prepared`.
+    #: :attr:`RunContext.prepared`, at the rung asked and at its fallback (a compute reads
+    #: of it what holds at the rung that runs). Called before the chunk's first point, under
+    #: no error state of the chunk's: it must not raise (what it cannot make is None).
     prepare_points: Callable[[Mapping[str, Any], str], Sequence[Any] | None] | None = None
     #: Sentences true of every answer of this model (idealisations the source makes,
     #: reconstructions): the runner adds them to each result's notes, and the

@@ -140,7 +140,7 @@ import time
 import types
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any, NamedTuple, TypeVar
+from typing import Any, NamedTuple, TypeVar, cast
 
 import numpy as np
 
@@ -2994,7 +2994,7 @@ def _stage1_span(
 
 def _driver_entries(
     x: Mapping[str, Any], g: Geometry, p: Any, t_l: Any, w_0: Any, h: Any, t_end: Any,
-    span: Any, steps1: Any, steps_per_period: int,
+    steps1: Any, steps_per_period: int,
 ) -> list[Any]:  # fmt: skip
     """The design's numbers the compiled driver takes (indices ``_C_*``), numbers or arrays:
     stage 1's start and step, the stages' masses, periods and steps (NaN where a stage's
@@ -3032,8 +3032,10 @@ def cycle_setups(
 ) -> list[np.ndarray | None] | None:
     """What :func:`simulate_cycle` works out from the inputs alone before its compiled
     driver, for many designs at once (a study's looped chunk): a row per design (its
-    ``setup``), None for a design that sets itself up (the cycle refuses it, or one of its
-    numbers is not finite: a stage's step sizes that raise), or None for all.
+    ``setup``), None for a design that sets itself up (its preloads do not hold the
+    half-coupling, which the cycle refuses, or one of its numbers is not finite), or None
+    for all (see the notes: then every design of the chunk sets itself up, as before there
+    was a chunk's set-up: the same numbers, slower).
 
     Parameters
     ----------
@@ -3047,11 +3049,14 @@ def cycle_setups(
     -----
     The same functions on arrays as on one design's floats (numpy's arithmetic and square
     root are IEEE's, as Python's floats: the same numbers to the last bit), run where
-    numpy raises on a division by zero, an overflow and an invalid operation: where one
-    design's floats would raise (ZeroDivisionError, math's ValueError), the chunk is left
-    to its designs (None). None as well where the cone angle or the motor's no-load speed
-    is given (arrays' tan and log1p are numpy's own, which need not be libm's to the last
-    bit).
+    numpy raises on a division by zero, an overflow and an invalid operation, so that no
+    design's numbers come from arithmetic its floats would have raised on
+    (ZeroDivisionError, math's ValueError) or taken another way (a NaN that ``pymax``
+    passes over). Where it raises for one design (a stage's step size of a mass at the
+    range's end, a float overflow, a root of a rounding's negative), the whole chunk is left
+    to its designs (None): numpy tells no design apart. None as well where the cone angle
+    or the motor's no-load speed is varied or given (arrays' tan and log1p are numpy's own,
+    which need not be libm's to the last bit).
     """
     x = _numbers(x)
     sizes = [v.shape for v in x.values() if v.__class__ is np.ndarray]
@@ -3063,25 +3068,35 @@ def cycle_setups(
         return None
     try:
         with np.errstate(divide="raise", over="raise", invalid="raise", under="ignore"):
+            # the designs whose preloads do not hold the half-coupling are refused, and set
+            # themselves up: left out here, where their release speed's root of a negative
+            # number would raise for the whole chunk (the float path's NaN refuses the one)
+            held = np.broadcast_to(_held(x, _geo(x)), sizes[0])
+            if not held.any():
+                return None
+            if not held.all():
+                x = _Numbers({k: v[held] if v.__class__ is np.ndarray else v for k, v in x.items()})
             g = _geo(x)
             entries = _param_entries(x, g)
             r, w_0, w_qs = _speeds(x, g)
-            held = _held(x, g)
             inertia_0, t_l, t_qs = _spin_up(x, g, r, w_0, w_qs)
             push, span, t_end, h = _stage1_span(x, g, inertia_0, t_l, t_qs, w_qs, steps_per_period)
             steps1 = span / h
-            entries += _driver_entries(
-                x, g, entries, t_l, w_0, h, t_end, span, steps1, steps_per_period
-            )
+            entries += _driver_entries(x, g, entries, t_l, w_0, h, t_end, steps1, steps_per_period)
             entries += _contact_entries(x, g)
             entries += [r, w_0, push, t_end, t_qs, steps1]
-            rows = np.empty(sizes[0] + (len(entries),))
+            rows = np.empty((int(np.count_nonzero(held)), len(entries)))
             for i, column in enumerate(entries):
                 rows[:, i] = column
     except (ArithmeticError, ValueError):
         return None
-    own = ~(held & np.isfinite(rows).all(axis=1))
-    return [None if k else row for row, k in zip(rows, own.tolist(), strict=True)]
+    finite = cast(list[bool], np.isfinite(rows).all(axis=1).tolist())
+    made = iter(zip(rows, finite, strict=True))
+    setups: list[np.ndarray | None] = []
+    for holds in held.tolist():
+        row, usable = next(made) if holds else (None, False)
+        setups.append(row if usable else None)
+    return setups
 
 
 def _guarded(fn: Callable[..., tuple[float, ...]], width: int, *args: Any) -> tuple[float, ...]:
@@ -3140,8 +3155,7 @@ def simulate_cycle(
     if row is None:
         x = _numbers(x)  # once for the stage-1 steps below (their geometry and speeds)
         g = _geo(x)
-        entries = _param_entries(x, g)
-        p = np.array(entries, dtype=float)  # _params
+        p = _params(x, g)
     else:
         p = row[:NPAR]
     if deadline is not None:
@@ -3154,7 +3168,6 @@ def simulate_cycle(
     c1, c3 = x["power_spring_rate"], x["return_spring_rate"]
     lam3 = x["return_spring_preload"]
     h1, h2 = x["release_travel"], x["engagement_height"]
-    big = x["half_coupling_mass"] + x["roller_count"] * x["roller_mass"] + x["striker_mass"]
 
     if row is None:
         # ---- stage 1: spin-up from rest; the half-coupling rests until lift-off ---------
@@ -3183,7 +3196,7 @@ def simulate_cycle(
         # ---- stages 1 (from lift-off) to 4: one compiled driver (_stages) ------------------
         # the design's numbers the stages take; the driver does what needs the simulated states
         c = np.array(
-            _driver_entries(x, g, entries, t_l, w_0, h, t_end, span, steps1, steps_per_period),
+            _driver_entries(x, g, p, t_l, w_0, h, t_end, steps1, steps_per_period),
             dtype=float,
         )
         pu = _contact_params(x, g)
@@ -3261,7 +3274,8 @@ def simulate_cycle(
         max_travel = max(max_travel, h2, float(_peak(h1, v_stop, acc_f, w2_f)))
     else:
         # the balance of the mechanism at the blow, for the stage-2 reach without the blow
-        z_off = x["power_spring_preload"] + h1
+        # the moving mass and the power spring's length at the blow, as the driver took them
+        big, z_off = float(c[_C_BIG]), float(c[_C_ZOFF])
         c_b = (big * x["gravity"] + c1 * z_off - c3 * lam3) / (c1 + c3)
         max_travel = max(max_travel, h2, 2.0 * c_b)
     if sentences and iw[_I_ONE_SIDED]:

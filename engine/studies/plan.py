@@ -720,7 +720,8 @@ _REASON_NUMBER = re.compile(
 
 def refusal_key(exc: EngineError) -> str:
     """The row a refused point is counted in: the error's class and its message's reason (the
-    text before its first colon, at most 120 characters), each number in it written "…".
+    text before its first colon), each number in it written "…", at most 120 characters of it
+    (cut after the numbers are written: a reason with longer figures is the same row).
 
     The reason is what the design did wrong; its figures are the design's own: a step
     budget's refusal says how many steps that design would take (about 3.1e+08 RK4 steps,
@@ -733,7 +734,8 @@ def refusal_key(exc: EngineError) -> str:
     >>> refusal_key(InfeasibleDesign("no ISO 261 pitch, d = 13.5 mm (M10, R_p0.2, 898-1, -2): y"))
     'InfeasibleDesign: no ISO 261 pitch, d = … mm (M10, R_p0.2, 898-1, …)'
     """
-    return type(exc).__name__ + ": " + _REASON_NUMBER.sub("…", exc.message.split(":")[0][:120])
+    reason = _REASON_NUMBER.sub("…", exc.message.split(":")[0])
+    return type(exc).__name__ + ": " + reason[:120]
 
 
 #: Looped points whose outputs :func:`evaluate_chunk` keeps as rows before it puts them into

@@ -42,3 +42,20 @@ def test_a_reason_keeps_its_names_and_standards() -> None:
     )
     assert key == "InputOutOfRange: thread M12 of class … (ISO 898-1, VDI 2230 R7) at … N"
     assert refusal_key(BudgetExceeded("no colon, 12 steps")) == "BudgetExceeded: no colon, … steps"
+
+
+def test_a_reason_is_cut_after_its_numbers_are_written() -> None:
+    """Cut at 120 characters before the numbers were written, one reason made a row per
+    length of its figures ("… report this design", "… report this d")."""
+    from engine.core.errors import SolverFailed
+
+    def key(t: str) -> str:
+        return refusal_key(
+            SolverFailed(
+                f"the half-coupling did not reach h1 by t = {t} s although the quasi-static "
+                f"release is at {t} s; report this design"
+            )
+        )
+
+    assert key("0.1") == key("1.234567e-05")
+    assert key("0.1").endswith("; report this design")

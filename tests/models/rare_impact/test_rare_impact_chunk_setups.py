@@ -171,3 +171,24 @@ def test_the_outputs_of_the_inputs_alone_are_each_designs_own() -> None:
     x["half_coupling_mass"] = 0.0
     x["roller_mass"] = 0.0 * x["roller_mass"]  # the moving mass divides: 0
     assert all(known is None for _, known in ri._prepare_points(x, "simulation"))
+
+
+def test_a_design_whose_release_speed_has_no_root_leaves_its_neighbours_their_rows() -> None:
+    """Springs of 10 N/m under g = -100: the preloads do not hold the half-coupling and
+    the release speed's root is of a negative number (NaN on one design's floats, refused;
+    numpy's raising state raised for the whole chunk, which took every design's row): the
+    design sets itself up and is refused, its neighbours keep their rows."""
+    x = _chunk("symmetric_v", 6, seed=11)
+    x["gravity"] = -100.0
+    x["power_spring_rate"][2] = 10.0
+    x["auxiliary_spring_rate"] = np.full(6, REFERENCE_DESIGN["auxiliary_spring_rate"])
+    x["auxiliary_spring_rate"][2] = 10.0
+    rows = sc.cycle_setups(x)
+    assert rows is not None
+    assert [row is None for row in rows] == [False, False, True, False, False, False]
+    with pytest.raises(engine.InfeasibleDesign, match="do not hold the half-coupling"):
+        sc.simulate_cycle(_one(x, 2))
+    for j in (0, 1, 3, 4, 5):
+        own = sc.simulate_cycle(_one(x, j), sentences=False)
+        made = sc.simulate_cycle(_one(x, j), sentences=False, setup=rows[j])
+        assert repr(dataclasses.asdict(made)) == repr(dataclasses.asdict(own))
