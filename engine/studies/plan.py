@@ -16,7 +16,8 @@ rank correlations otherwise).
 
 Everything is seeded and computed from the whole set of points in a fixed
 order, so a study repeats exactly, bit for bit, whichever executor ran its
-chunks.
+chunks, on one kind of processor (numpy chooses its vectorised exp, log, sin … for
+the processor: a lognormal law's draws, for one, may differ in the last bit on another).
 
 Sobol' indices follow Saltelli et al. (2010) for the first-order index and
 Jansen (1999) for the total index (see ``docs/sources.md``, [Saltelli2010]).
