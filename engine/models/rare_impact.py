@@ -53,6 +53,7 @@ from ..procedures.striker_cycle import (
     closed_form_errors,
     closed_form_release,
     cycle_setups,
+    moving_mass,
     release_speed_of,
     relock_friction,
     simulate_cycle,
@@ -95,11 +96,6 @@ _GEOMETRY_TEXT = {
     "single_cone": "single cone (x = x0 + z1/tan α, striker face flat)",
     "paper": "the paper's printed eq. 1",
 }
-
-
-def _moving_mass(x: Mapping[str, Any]) -> Any:
-    """:math:`M_2 = m_1 + n m_p + m_3` [002, eq. 2]."""
-    return x["half_coupling_mass"] + x["roller_count"] * x["roller_mass"] + x["striker_mass"]
 
 
 def spring_height_bounds(moving_mass: Any, gravity: Any, c1: Any, c3: Any) -> tuple[Any, Any]:
@@ -282,11 +278,11 @@ def _of_inputs(x: Mapping[str, Any], every: bool, want: AbstractSet[str]) -> tup
             c3,
             x["return_spring_preload"],
             x["release_travel"],
-            _moving_mass(x),
+            moving_mass(x),
             g,
         )
     if every or "spring_height_limit" in want:
-        limit = spring_height_upper(_moving_mass(x), g, c1, c3)
+        limit = spring_height_upper(moving_mass(x), g, c1, c3)
     if every or "min_return_spring_rate" in want:
         c3_min = min_return_spring_rate(
             x["striker_mass"],
@@ -810,7 +806,7 @@ def _compute(x: Mapping[str, Any], ctx: RunContext) -> Result:
     c1, c3 = x["power_spring_rate"], x["return_spring_rate"]
     lam1, h1, g = x["power_spring_preload"], x["release_travel"], x["gravity"]
     values = _values(x, o, ctx.rung)
-    lower, upper = spring_height_bounds(_moving_mass(x), g, c1, c3)
+    lower, upper = spring_height_bounds(moving_mass(x), g, c1, c3)
     if not o.blow:
         notes.append(
             "the striker never reaches the engagement height: engagement_time, "

@@ -188,6 +188,7 @@ __all__ = [
     "geometry",
     "liftoff_speed_of",
     "linear_reach",
+    "moving_mass",
     "quasi_static_error",
     "quasi_static_release_velocity",
     "release_radius_of",
@@ -939,6 +940,36 @@ def _striker_alone(x: Mapping[str, Any], y: Any) -> tuple[Any, Any]:
     return x["gravity"] - c3 * (x["return_spring_preload"] + y) / m3, c3 / m3
 
 
+def moving_mass(x: Mapping[str, Any]) -> Any:
+    """:math:`M_2 = m_1 + n m_p + m_3` [kg]: the half-coupling, rollers and striker that
+    move together in stage 2 [002, eq. 2].
+
+    Parameters
+    ----------
+    x : Mapping
+        The model's inputs in SI (names as in ``impact.rare``): ``half_coupling_mass``,
+        ``roller_count``, ``roller_mass`` and ``striker_mass`` [kg, -, kg, kg], numbers or
+        arrays of one shape
+
+    Examples
+    --------
+    >>> from engine.models.rare_impact import REFERENCE_DESIGN as R
+    >>> round(moving_mass(R), 12)  # 0.15 + 6·0.05 + 0.4
+    0.85
+    """
+    return x["half_coupling_mass"] + x["roller_count"] * x["roller_mass"] + x["striker_mass"]
+
+
+def _lift_mass(x: Mapping[str, Any], g: Geometry) -> Any:
+    """:math:`m_1 + m_2 + n m_p a_h` [kg]: what the half-coupling lifts with the shaft, the
+    rollers' share by the geometry's :math:`a_h` (the catch of stage 2's start)."""
+    return (
+        x["half_coupling_mass"]
+        + x["stepped_shaft_mass"]
+        + (x["roller_count"] * x["roller_mass"]) * g.a_h
+    )
+
+
 def _stage2_terms(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, Any, Any, Any, Any]:
     r"""Stage 2's terms that do not depend on the release velocity [002, eqs. 2 and 5].
 
@@ -963,15 +994,13 @@ def _stage2_terms(x: Mapping[str, Any], g: Geometry) -> tuple[Any, Any, Any, Any
         x["return_spring_preload"],
     )
     h1, grav = x["release_travel"], x["gravity"]
-    m1, m2, m3 = x["half_coupling_mass"], x["stepped_shaft_mass"], x["striker_mass"]
-    nm = x["roller_count"] * x["roller_mass"]
-    big = m1 + nm + m3
-    mass = big + m2
+    big = moving_mass(x)
+    mass = big + x["stepped_shaft_mass"]
     f_at0 = mass * grav + c1 * (lam1 + h1) + c2 * (lam2 + h1) - c3 * lam3
     k_a = sqrt((c1 + c2 + c3) / mass)
     # the striker's own stage-2 motion, B and k of [002, eqs. 2 and 5]
     acc0, k = striker_oscillation(c1, lam1, c3, lam3, h1, big, grav)
-    return -(m1 + m2 + nm * g.a_h), mass, k_a, divide(f_at0 / mass, k_a * k_a), acc0, k * k
+    return -_lift_mass(x, g), mass, k_a, divide(f_at0 / mass, k_a * k_a), acc0, k * k
 
 
 def _stage2(x: Mapping[str, Any], v_release: Any, g: Geometry) -> tuple[Any, Any]:
@@ -2898,9 +2927,8 @@ def _stage2_steps(x: Mapping[str, Any], g: Geometry, steps_per_period: int) -> t
     """Stage 2's period (of the sandwich with the shaft on all three springs) and RK4 step
     (``steps_per_period`` a period of the sandwich alone) [s]."""
     c123 = x["power_spring_rate"] + x["auxiliary_spring_rate"] + x["return_spring_rate"]
-    m2 = x["stepped_shaft_mass"]
-    big = x["half_coupling_mass"] + x["roller_count"] * x["roller_mass"] + x["striker_mass"]
-    per2 = 2.0 * math.pi * _root((big + m2) / c123)
+    big = moving_mass(x)
+    per2 = 2.0 * math.pi * _root((big + x["stepped_shaft_mass"]) / c123)
     return per2, 2.0 * math.pi * _root(big / c123) / steps_per_period
 
 
@@ -3000,10 +3028,8 @@ def _driver_entries(
     stage 1's start and step, the stages' masses, periods and steps (NaN where a stage's
     step sizes raise, its ``_C_STEPS*`` 0: :func:`_guarded`); ``p``: :func:`_params` or its
     entries, ``steps1``: stage 1's step count ``span / h``."""
-    nm = x["roller_count"] * x["roller_mass"]
     h1, h2, h3 = x["release_travel"], x["engagement_height"], x["jaw_height"]
-    m1, m2, m3 = x["half_coupling_mass"], x["stepped_shaft_mass"], x["striker_mass"]
-    big = m1 + nm + m3
+    big = moving_mass(x)
     per2, h2s, ok2 = _guarded(_stage2_steps, 2, x, g, steps_per_period)
     z_off = x["power_spring_preload"] + h1
     matrices = _stage3_matrices(x, g)
@@ -3012,7 +3038,8 @@ def _driver_entries(
     (h_u, ok_u) = _guarded(_one_sided_step, 1, x, matrices, steps_per_period)
     beats4, per4, h4, ok4 = _guarded(_stage4_steps, 3, x, p, steps_per_period)
     return [
-        S1P if g.paper else S1, t_l, w_0, h, t_end, steps1, m1 + m2 + nm * g.a_h, big + m2,
+        S1P if g.paper else S1, t_l, w_0, h, t_end, steps1, _lift_mass(x, g),
+        big + x["stepped_shaft_mass"],
         big, per2, h2s, 20.0 * per2, z_off, h1, h2, x["return_spring_preload"], m11, m12, m22,
         h3s, span3, h2 - pymin(h3, h2), _one_or_many(g.kappa), g.a_h, g.a_s,
         1e-12 * _x_scale(p), h_u, where(beats4 == 0.0, 0.0, 1.0), per4, h4,
