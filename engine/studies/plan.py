@@ -933,6 +933,11 @@ def evaluate_chunk(
         rows.clear()
         verdicts.clear()
 
+    def past_budget() -> BudgetExceeded:
+        return BudgetExceeded(
+            f"a chunk of the study ran past its {deadline_s:g} s budget", field="samples"
+        )
+
     # numpy's error state as every point's evaluation sets it (all="ignore"), entered
     # once for the loop: run_point made and entered one a point (2 µs of the striker's
     # study); a point through engine.run enters its own as a request does
@@ -941,9 +946,7 @@ def evaluate_chunk(
             if cancel is not None and cancel.is_set():
                 break
             if deadline is not None and time.perf_counter() > deadline:
-                raise BudgetExceeded(
-                    f"a chunk of the study ran past its {deadline_s:g} s budget", field="samples"
-                )
+                raise past_budget()
             values_j = _point_values(fixed, varied, j) if named else None
             # a point has what is left of the chunk's budget (none without one)
             left = None if deadline is None else max(deadline - time.perf_counter(), 1e-3)
@@ -982,10 +985,7 @@ def evaluate_chunk(
                     # time than a request alone has (DEFAULT_BUDGET_S), the chunk's time ran out,
                     # not the point's; counted as a refusal it would depend on the machine's load,
                     # so the chunk stops as its budget says
-                    raise BudgetExceeded(
-                        f"a chunk of the study ran past its {deadline_s:g} s budget",
-                        field="samples",
-                    ) from exc
+                    raise past_budget() from exc
                 key = refusal_key(exc)
                 refusals[key] = refusals.get(key, 0) + 1
                 continue
