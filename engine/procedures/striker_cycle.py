@@ -2117,13 +2117,15 @@ class _Run:
                 cand = [i for i in range(4) if flags[4 + i]]
                 v[:] = _catch(pu, v, cand, jac, float(fw[_F_U + _U_VSCALE]))
             elif code == _U_BUDGET:
-                expected = float(fw[_F_U + _U_EXPECTED])
+                # in the budget's steps, as the kernel weighed it: each of the one-sided
+                # stage's steps counts _CONTACT_STEP_COST of the cycle kernel's
+                expected = self.steps + _CONTACT_STEP_COST * float(fw[_F_U + _U_EXPECTED])
                 raise BudgetExceeded(
-                    f"the cycle simulation would take about {self.steps + expected:.2g} RK4 "
-                    f"steps in stage 3 (budget {self.max_steps:.2g}); use fidelity "
-                    "'closed_form'",
+                    f"the cycle simulation would take about {expected:.2g} RK4 steps with "
+                    f"stage 3's contacts, each of their steps counted as {_CONTACT_STEP_COST} "
+                    f"(budget {self.max_steps:.2g}); use fidelity 'closed_form'",
                     field="fidelity",
-                    expected_steps=self.steps + expected,
+                    expected_steps=expected,
                     step_budget=self.max_steps,
                 )
             elif code == _U_USED:

@@ -591,3 +591,19 @@ def test_property_quasi_static_stage1_within_its_estimate(
     e_sim = sim.error_estimate or 0.0
     assert _rel(cf.results["release_speed"], sim.results["release_speed"]) <= est_w + e_sim
     assert _rel(cf.results["spin_up_time"], sim.results["spin_up_time"]) <= est_t + e_sim
+
+
+def test_a_step_budget_refusal_names_more_steps_than_its_budget() -> None:
+    """The reference design under step budgets from 10³ to 3·10⁵: each refusal's expected
+    steps are over its budget, in the budget's steps. The one-sided stage 3 weighs each of
+    its steps as _CONTACT_STEP_COST of the kernel's, and its refusal said the steps
+    unweighed: "about 2e+04 RK4 steps in stage 3 (budget 7e+04)", at 14 of these budgets
+    (and the runner's fallback note repeated it)."""
+    said = set()
+    for max_steps in np.geomspace(1e3, 3e5, 60).astype(int).tolist():
+        try:
+            C.simulate_cycle(C.step_inputs(R), max_steps=max_steps)
+        except BudgetExceeded as exc:
+            said.add(exc.message.split(" RK4")[1][:40])
+            assert exc.context["expected_steps"] > exc.context["step_budget"], exc.message
+    assert any("stage 3's contacts" in s for s in said), said  # the one-sided stage's refused
