@@ -466,10 +466,11 @@ class DaskExecutor:
         def halt(futures: list[Any]) -> None:
             # the client lets go of the futures at once (no answer awaited), then tells the
             # running chunks through the event, waiting for the scheduler a bounded time: a
-            # chunk the event does not reach stops at its deadline
-            client.cancel(futures)
-            # a scheduler that does not answer, or is gone: the chunks stop at their deadline
+            # chunk the event does not reach stops at its deadline; a client closed meanwhile
+            # (the watchdog closed a cluster without workers) has nothing left to let go of,
+            # and a scheduler that does not answer, or is gone, nothing to tell
             with contextlib.suppress(Exception):
+                client.cancel(futures)
                 client.sync(
                     client.scheduler.event_set, name=name, callback_timeout=SCHEDULER_WAIT_S
                 )
