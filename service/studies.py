@@ -9,9 +9,12 @@ address. A small pool of job threads drives studies; a study of at most
 ``STUDY_INPROCESS_POINTS`` points runs in that thread, a larger one on Dask
 (:class:`engine.studies.execute.DaskExecutor`): a local cluster sized to the
 machine, started when the first large study arrives, or the scheduler named
-by ``DASK_SCHEDULER``. Studies never use the engine pool that serves single
-calculations, and their heavy compute runs in Dask's worker processes, not in
-the service's interpreter.
+by ``DASK_SCHEDULER``. A larger study on the array path runs its first chunk in the
+thread, and the rest there too when that chunk says the whole takes at most
+``STUDY_INPROCESS_S`` (1 s): a cluster's transfers would cost the service more than the
+evaluation (:class:`engine.studies.execute.HereIfCheap`). Studies never use the engine
+pool that serves single calculations, and their heavy compute (simulations, long
+studies) runs in Dask's worker processes, not in the service's interpreter.
 
 Budgets: ``STUDY_MAX_POINTS`` points and ``STUDY_BUDGET_S`` seconds per study;
 at most ``STUDY_PER_CLIENT`` unfinished studies per client (its address, or its API key,
@@ -62,6 +65,7 @@ from engine.studies.execute import (
     Cancelled,
     ChunkArgs,
     DaskExecutor,
+    HereIfCheap,
     InProcess,
     StudyRun,
     run_study,
@@ -111,6 +115,10 @@ class StudySettings:
     per_client: int = field(default_factory=lambda: _int("STUDY_PER_CLIENT", 2))
     max_active: int = field(default_factory=lambda: _int("STUDY_MAX_ACTIVE", 4))
     inprocess_points: int = field(default_factory=lambda: _int("STUDY_INPROCESS_POINTS", 2000))
+    #: A larger study whose first array-path chunk says the whole would take at most this
+    #: long in the job thread stays there (:class:`engine.studies.execute.HereIfCheap`)
+    #: [s]; 0: every larger study on Dask.
+    inprocess_s: float = field(default_factory=lambda: _float("STUDY_INPROCESS_S", 1.0))
     keep_s: float = field(default_factory=lambda: _float("STUDY_KEEP_S", 3600.0))
     keep_points_max: int = field(default_factory=lambda: _int("STUDY_KEEP_POINTS", 1_000_000))
     #: The job store's folder (SQLite database and points files), shared by every server
@@ -143,6 +151,11 @@ class StudySettings:
             if not value >= lowest:
                 note = f" ({meaning})" if meaning else ""
                 raise ValueError(f"{name} must be an integer >= {lowest}{note}, not {value!r}")
+        if not (0.0 <= self.inprocess_s < math.inf):  # NaN too
+            raise ValueError(
+                "STUDY_INPROCESS_S must be a number of seconds >= 0 (0: every study of more "
+                f"than STUDY_INPROCESS_POINTS points on Dask), not {self.inprocess_s!r}"
+            )
         for name, seconds in (("STUDY_BUDGET_S", self.budget_s), ("STUDY_KEEP_S", self.keep_s)):
             if not seconds > 0:  # NaN too
                 raise ValueError(f"{name} must be a number of seconds > 0, not {seconds!r}")
@@ -682,14 +695,18 @@ class Studies:
             job.phase = "summarising" if done == total else "evaluating"
 
         try:
-            if job.total <= self.settings.inprocess_points:
-                executor: InProcess | ClientShare = InProcess()
-            else:
+
+            def remote() -> ClientShare:
                 dask = self.dask()
                 job.phase = "starting the Dask workers"
                 dask.client()
                 job.dask = dask
-                executor = ClientShare(dask, job.client)
+                return ClientShare(dask, job.client)
+
+            if job.total <= self.settings.inprocess_points:
+                executor: InProcess | HereIfCheap = InProcess()
+            else:
+                executor = HereIfCheap(remote, self.settings.inprocess_s)
             result = run_study(
                 spec,
                 study,

@@ -10,7 +10,10 @@ the same summary, bit for bit, whichever executor ran them:
 * :class:`DaskExecutor` sends them to ``dask.distributed`` workers: a local
   cluster sized to the machine (processes, one thread each), started on first
   use, or an existing scheduler at ``address`` (``DASK_SCHEDULER``), whose
-  workers must have this package installed.
+  workers must have this package installed;
+* :class:`HereIfCheap` runs an array-path study's first chunk in the calling thread
+  and keeps the rest there when that chunk says the whole is cheap (a cluster's
+  transfers would cost more than the evaluation), on Dask otherwise.
 
 The local cluster is private: its scheduler and workers speak mutual TLS with a key and
 a self-signed certificate made in memory when it starts (Dask's
@@ -216,6 +219,54 @@ class InProcess:
                 return
             deadline = args[6] if budget is None else budget(len(next(iter(args[2].values()))))
             yield i, summarize_chunk(evaluate_chunk(*args[:6], deadline, cancel=cancel))
+
+
+class HereIfCheap:
+    r"""A study's first array-path chunk here; the rest here too when that chunk says the
+    whole study is cheap, on ``remote()`` (Dask) otherwise.
+
+    With :math:`t_0` the first chunk's wall time in the calling thread (evaluated and
+    summarised) and :math:`k` the study's chunks, the other chunks stay here when
+
+    .. math:: k \, t_0 \le t_{here}
+
+    (``here_s``). A cheap study then needs no cluster: its values are not sent to a
+    worker and back, which cost a 10⁶-point preload study more of the service's CPU than
+    its evaluation (7.5 MB of values a chunk over TLS). Chunks of one-by-one points (a
+    simulation per point, up to a chunk's budget each) go to ``remote()`` from the first:
+    only array-path chunks (more than ``LOOP_CHUNK`` points) are timed here, at most
+    ``VECTOR_CHUNK`` points of the array path. The chunks are the same whichever runs
+    them, so the values are too (bit for bit).
+    """
+
+    def __init__(self, remote: Callable[[], Executor], here_s: float) -> None:
+        self.remote = remote
+        self.here_s = here_s
+        #: Where the study's chunks after the first ran: "here" or "remote" (None: not yet).
+        self.rest: str | None = None
+
+    def map(
+        self, calls: list[ChunkArgs], cancel: threading.Event, budget: Budget | None = None
+    ) -> Iterator[tuple[int, ChunkResult]]:
+        here = InProcess()
+        first = calls[:1] if _array_chunks(calls) and self.here_s > 0 else []
+        t0 = time.perf_counter()
+        yield from here.map(first, cancel, budget)
+        spent = time.perf_counter() - t0
+        rest = calls[len(first) :]
+        if not rest or (first and cancel.is_set()):
+            return
+        cheap = bool(first) and spent * len(calls) <= self.here_s
+        self.rest = "here" if cheap else "remote"
+        runner = here if cheap else self.remote()
+        for i, part in runner.map(rest, cancel, budget):
+            yield i + len(first), part
+
+
+def _array_chunks(calls: list[ChunkArgs]) -> bool:
+    """Whether ``calls`` are array-path chunks: their size (:func:`chunk_size`; the first
+    chunk is a whole one, or the whole study) is above a one-by-one chunk's."""
+    return bool(calls) and len(next(iter(calls[0][2].values()), ())) > LOOP_CHUNK
 
 
 class RemoteCancel(threading.Event):

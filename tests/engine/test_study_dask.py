@@ -226,7 +226,8 @@ def test_the_service_sends_a_study_to_the_scheduler_it_is_told(
     from service import create_app
 
     monkeypatch.setenv("DASK_SCHEDULER", scheduler)
-    monkeypatch.setenv("STUDY_INPROCESS_POINTS", "0")
+    monkeypatch.setenv("STUDY_INPROCESS_POINTS", "0")  # every study on Dask
+    monkeypatch.setenv("STUDY_INPROCESS_S", "0")  # not even a cheap one in the job thread
     study = _study()
     body = {
         "base": dict(study.base),

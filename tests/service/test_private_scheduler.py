@@ -112,7 +112,7 @@ def test_an_outside_client_is_refused_while_the_service_studies_run(tmp_path: Pa
         "samples": 100_000,
         "fidelity": "closed_form",
     }
-    settings = StudySettings(store=str(tmp_path), inprocess_points=0, dask_workers=1)
+    settings = StudySettings(store=str(tmp_path), inprocess_points=0, inprocess_s=0, dask_workers=1)
     app = create_app(study_settings=settings)
     with TestClient(app) as client:
         first = client.post("/api/v1/nutrunner/drive/study", json=body)

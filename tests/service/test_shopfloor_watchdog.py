@@ -91,7 +91,7 @@ def test_a_study_on_a_cluster_without_workers_fails_naming_the_cause(
     With NO_WORKERS_S = 2 it fails within about that, says why, leaks no address, and the
     service answers meanwhile."""
     monkeypatch.setattr(service.studies, "NO_WORKERS_S", 2.0)
-    settings = StudySettings(inprocess_points=0, dask_workers=1, per_client=1)
+    settings = StudySettings(inprocess_points=0, inprocess_s=0, dask_workers=1, per_client=1)
     with TestClient(create_app(models=[TOY], study_settings=settings)) as client:
         studies = client.app.state.studies  # type: ignore[attr-defined]
         dask = studies.dask()

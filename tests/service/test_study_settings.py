@@ -17,8 +17,10 @@ def test_good_values_are_read(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setenv("STUDY_INPROCESS_POINTS", "0")  # allowed: every study on Dask
     monkeypatch.setenv("STUDY_KEEP_POINTS", "0")  # allowed: raw points never kept
     monkeypatch.setenv("DASK_WORKERS", "0")  # allowed: one worker per core
+    monkeypatch.setenv("STUDY_INPROCESS_S", "0")  # allowed: no larger study in the job thread
     s = StudySettings()
     assert (s.max_points, s.budget_s, s.inprocess_points, s.keep_points_max) == (5000, 12.5, 0, 0)
+    assert s.inprocess_s == 0.0
     assert s.dask_workers is None
 
 
@@ -46,6 +48,18 @@ def test_good_values_are_read(monkeypatch: pytest.MonkeyPatch) -> None:
         ("STUDY_BUDGET_S", "0", "STUDY_BUDGET_S must be a number of seconds > 0, not 0.0"),
         ("STUDY_BUDGET_S", "nan", "STUDY_BUDGET_S must be a number of seconds > 0, not nan"),
         ("STUDY_KEEP_S", "-1", "STUDY_KEEP_S must be a number of seconds > 0, not -1.0"),
+        (
+            "STUDY_INPROCESS_S",
+            "-0.5",
+            "STUDY_INPROCESS_S must be a number of seconds >= 0 (0: every study of more than "
+            "STUDY_INPROCESS_POINTS points on Dask), not -0.5",
+        ),
+        (
+            "STUDY_INPROCESS_S",
+            "inf",
+            "STUDY_INPROCESS_S must be a number of seconds >= 0 (0: every study of more than "
+            "STUDY_INPROCESS_POINTS points on Dask), not inf",
+        ),
         ("STUDY_MAX_POINTS", "lots", "STUDY_MAX_POINTS must be an integer, not 'lots'"),
         ("STUDY_KEEP_S", "1 h", "STUDY_KEEP_S must be a number, not '1 h'"),
     ],
