@@ -543,7 +543,9 @@ class DaskExecutor:
                 if cancel.is_set():
                     break
                 try:
-                    result = fut.result()
+                    result = _fetch(client, fut, cancel)
+                except Cancelled:
+                    break
                 except BaseException as exc:
                     raise _detached(exc) from None
                 with lock:
@@ -574,6 +576,30 @@ class DaskExecutor:
             if self._cluster is not None:
                 self._cluster.close()
             self._client = self._cluster = None
+
+
+def _fetch(client: Any, fut: Any, cancel: threading.Event) -> ChunkResult:
+    """A finished chunk's result, or Cancelled once ``cancel`` is set while it is fetched.
+
+    The values come from the worker through the scheduler, which may stop answering (a
+    stopped process, a lost host) while they do: ``Future.result`` then waited for ever,
+    and a study cancelled meanwhile never ended (a test stopping the scheduler with
+    SIGSTOP caught it 3 times in 4). The fetch runs on the client's loop and is looked at
+    every ``CANCEL_POLL_S``; a cancel stops it.
+    """
+    import asyncio
+
+    pending = asyncio.run_coroutine_threadsafe(
+        client.gather(fut, asynchronous=True), client.loop.asyncio_loop
+    )
+    while True:
+        try:
+            result: ChunkResult = pending.result(timeout=CANCEL_POLL_S)
+            return result
+        except TimeoutError:
+            if cancel.is_set():
+                pending.cancel()
+                raise Cancelled("the study was cancelled while a chunk's values came") from None
 
 
 def _detached(exc: BaseException) -> BaseException:
