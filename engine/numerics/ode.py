@@ -311,18 +311,21 @@ def step_budget(
 
 
 #: The fewest steps of a kernel call whose time measures the cost of a step
-#: (:meth:`StepCost.measured`; a shorter call is mostly its dispatch).
+#: (:meth:`StepCost.measured`; shorter calls are measured in sums of this many steps).
 MEASURED_STEPS = 10_000
 
 
 @dataclass
 class StepCost:
-    """One kernel's cost per step in this process: a running mean of its own chunks.
+    """One kernel's cost per step in this process: a running mean of its own calls.
 
     ``seconds`` starts at a slow machine's figure (1 µs, some 3-5× the 2-core CI box)
-    and :meth:`measured` folds in every chunk of 10,000 steps or more, except the
-    kernel's first call in the process (it compiles, or loads from numba's cache:
-    seconds that are not the cost of a step), each capped at :data:`STEP_COST_CAP`.
+    and :meth:`measured` folds in every call of 10,000 steps or more, and shorter calls
+    in sums of that many steps (a short design's whole cycle is one call: a process that
+    ran only those kept the slow prior, and declined designs as too long for a chunk's
+    time that take a fifth of it), except the kernel's first call in the process (it
+    compiles, or loads from numba's cache: seconds that are not the cost of a step), each
+    capped at :data:`STEP_COST_CAP`.
 
     >>> cost = StepCost()
     >>> cost.measured(20_000, 3.0)  # the first call compiles: not counted
@@ -331,20 +334,35 @@ class StepCost:
     >>> cost.measured(20_000, 3.0)  # a 3 s pause: capped at 1e-5 s a step
     >>> round(cost.seconds, 15)  # 0.7·1e-6 + 0.3·1e-5
     3.7e-06
+    >>> for _ in range(5):  # short calls: folded in once they make 10,000 steps
+    ...     cost.measured(2_000, 0.0004)
+    >>> round(cost.seconds, 15)  # 0.7·3.7e-6 + 0.3·(0.002 s / 10,000)
+    2.65e-06
     >>> cost.budget(None, 77)
     77
     """
 
     seconds: float = 1e-6
     warm: bool = False
+    #: Steps and seconds of the short calls not folded in yet.
+    short_steps: int = 0
+    short_s: float = 0.0
 
     def measured(self, used: int, seconds: float) -> None:
-        """Fold one chunk of ``used`` steps that took ``seconds`` into :attr:`seconds`."""
+        """Fold one call of ``used`` steps that took ``seconds`` into :attr:`seconds`."""
         if not self.warm:
             self.warm = True
             return
-        if used >= MEASURED_STEPS and seconds > 0.0:
-            self.seconds = 0.7 * self.seconds + 0.3 * min(seconds / used, STEP_COST_CAP)
+        if used <= 0 or not seconds > 0.0:
+            return
+        if used < MEASURED_STEPS:
+            self.short_steps += used
+            self.short_s += seconds
+            if self.short_steps < MEASURED_STEPS:
+                return
+            used, seconds = self.short_steps, self.short_s
+            self.short_steps, self.short_s = 0, 0.0
+        self.seconds = 0.7 * self.seconds + 0.3 * min(seconds / used, STEP_COST_CAP)
 
     def budget(self, deadline: float | None, max_steps: int) -> int:
         """:func:`step_budget` at this kernel's measured cost per step."""

@@ -2088,17 +2088,14 @@ class _Run:
             began = time.perf_counter()
             code = self.driver()(self.p, c, pu, jac, fw, iw, flags, *bufs, parts)
             self.steps = int(iw[_I_STEPS])
-            used = int(iw[_I_USED])
-            # a call that came back after a chunk of MEASURED_STEPS steps or more (the first in the
-            # process: to mark the cost warm), with the cycle kernel's steps alone (no one-sided
-            # stage 3's among them), as the Python driver folded in its chunks
-            if (
-                measure
-                and (iw[_I_LONG] or not _COST.warm)
-                and self.steps - before == used
-                and used > 0
-            ):
-                _COST.measured(used, time.perf_counter() - began)
+            # the call's steps as the step budget counts them (a one-sided stage 3's each as
+            # _CONTACT_STEP_COST of the cycle kernel's), so the budget's cost per step is what
+            # such steps took: a long chunk, or a short design's whole cycle (StepCost sums
+            # short calls); measured on the cycle kernel's steps alone, a process running only
+            # short designs with a one-sided stage 3 (the reference design) kept the 1 µs
+            # prior, some 5 times the cost, and declined designs a chunk had time for
+            if measure and self.steps > before:
+                _COST.measured(self.steps - before, time.perf_counter() - began)
             if code == _R_DONE:
                 return 0
             if code == _R_CHUNK:
