@@ -2093,7 +2093,7 @@ class _Run:
             # such steps took: a long chunk, or a short design's whole cycle (StepCost sums
             # short calls); measured on the cycle kernel's steps alone, a process running only
             # short designs with a one-sided stage 3 (the reference design) kept the 1 µs
-            # prior, some 5 times the cost, and declined designs a chunk had time for
+            # prior, ten times the 80-107 ns measured, and declined designs a chunk had time for
             if measure and self.steps > before:
                 _COST.measured(self.steps - before, time.perf_counter() - began)
             if code == _R_DONE:
