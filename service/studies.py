@@ -9,12 +9,13 @@ address. A small pool of job threads drives studies; a study of at most
 ``STUDY_INPROCESS_POINTS`` points runs in that thread, a larger one on Dask
 (:class:`engine.studies.execute.DaskExecutor`): a local cluster sized to the
 machine, started when the first large study arrives, or the scheduler named
-by ``DASK_SCHEDULER``. A larger study on the array path runs its first chunk in the
-thread, and the rest there too when that chunk says the whole takes at most
-``STUDY_INPROCESS_S`` (1 s): a cluster's transfers would cost the service more than the
-evaluation (:class:`engine.studies.execute.HereIfCheap`). Studies never use the engine
-pool that serves single calculations, and their heavy compute (simulations, long
-studies) runs in Dask's worker processes, not in the service's interpreter.
+by ``DASK_SCHEDULER``. A larger study all of whose points are on the array path runs
+its chunks in the thread while they show the whole taking at most ``STUDY_INPROCESS_S``
+(1 s), and the rest on Dask once they do not: for a cheap study a cluster's transfers
+would cost the service more than the evaluation
+(:class:`engine.studies.execute.HereIfCheap`). Studies never use the engine pool that
+serves single calculations, and their heavy compute (simulations, long studies) runs in
+Dask's worker processes, not in the service's interpreter.
 
 Budgets: ``STUDY_MAX_POINTS`` points and ``STUDY_BUDGET_S`` seconds per study;
 at most ``STUDY_PER_CLIENT`` unfinished studies per client (its address, or its API key,
@@ -115,8 +116,8 @@ class StudySettings:
     per_client: int = field(default_factory=lambda: _int("STUDY_PER_CLIENT", 2))
     max_active: int = field(default_factory=lambda: _int("STUDY_MAX_ACTIVE", 4))
     inprocess_points: int = field(default_factory=lambda: _int("STUDY_INPROCESS_POINTS", 2000))
-    #: A larger study whose first array-path chunk says the whole would take at most this
-    #: long in the job thread stays there (:class:`engine.studies.execute.HereIfCheap`)
+    #: A larger study on the array path runs in the job thread while its chunks show the
+    #: whole taking at most this long there (:class:`engine.studies.execute.HereIfCheap`)
     #: [s]; 0: every larger study on Dask.
     inprocess_s: float = field(default_factory=lambda: _float("STUDY_INPROCESS_S", 1.0))
     keep_s: float = field(default_factory=lambda: _float("STUDY_KEEP_S", 3600.0))

@@ -30,9 +30,10 @@ from __future__ import annotations
 
 import contextlib
 import math
+import threading
 import time
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Literal
 
 import numpy as np
@@ -348,6 +349,9 @@ class StepCost:
     #: Steps and seconds of the short calls not folded in yet.
     short_steps: int = 0
     short_s: float = 0.0
+    #: The engine's threads measure calls side by side: a sum is one call's steps and
+    #: seconds together.
+    lock: threading.Lock = field(default_factory=threading.Lock, repr=False, compare=False)
 
     def measured(self, used: int, seconds: float) -> None:
         """Fold one call of ``used`` steps that took ``seconds`` into :attr:`seconds`."""
@@ -356,14 +360,15 @@ class StepCost:
             return
         if used <= 0 or not seconds > 0.0:
             return
-        if used < MEASURED_STEPS:
-            self.short_steps += used
-            self.short_s += seconds
-            if self.short_steps < MEASURED_STEPS:
-                return
-            used, seconds = self.short_steps, self.short_s
-            self.short_steps, self.short_s = 0, 0.0
-        self.seconds = 0.7 * self.seconds + 0.3 * min(seconds / used, STEP_COST_CAP)
+        with self.lock:
+            if used < MEASURED_STEPS:
+                self.short_steps += used
+                self.short_s += seconds
+                if self.short_steps < MEASURED_STEPS:
+                    return
+                used, seconds = self.short_steps, self.short_s
+                self.short_steps, self.short_s = 0, 0.0
+            self.seconds = 0.7 * self.seconds + 0.3 * min(seconds / used, STEP_COST_CAP)
 
     def budget(self, deadline: float | None, max_steps: int) -> int:
         """:func:`step_budget` at this kernel's measured cost per step."""

@@ -11,9 +11,9 @@ the same summary, bit for bit, whichever executor ran them:
   cluster sized to the machine (processes, one thread each), started on first
   use, or an existing scheduler at ``address`` (``DASK_SCHEDULER``), whose
   workers must have this package installed;
-* :class:`HereIfCheap` runs an array-path study's first chunk in the calling thread
-  and keeps the rest there when that chunk says the whole is cheap (a cluster's
-  transfers would cost more than the evaluation), on Dask otherwise.
+* :class:`HereIfCheap` runs an array-path study's chunks in the calling thread while they
+  show the whole cheap (a cluster's transfers would cost more than the evaluation), and
+  the rest on Dask once they do not.
 
 The local cluster is private: its scheduler and workers speak mutual TLS with a key and
 a self-signed certificate made in memory when it starts (Dask's
@@ -222,51 +222,86 @@ class InProcess:
 
 
 class HereIfCheap:
-    r"""A study's first array-path chunk here; the rest here too when that chunk says the
-    whole study is cheap, on ``remote()`` (Dask) otherwise.
+    r"""An array-path study's chunks here while they show the whole study cheap, the rest
+    on ``remote()`` (Dask).
 
-    With :math:`t_0` the first chunk's wall time in the calling thread (evaluated and
-    summarised) and :math:`k` the study's chunks, the other chunks stay here when
+    With :math:`t_j` the wall time of the :math:`j`-th chunk run in the calling thread
+    (evaluated and summarised), :math:`m` the chunks run here so far and :math:`k` the
+    study's chunks, the next chunk runs here while
 
-    .. math:: k \, t_0 \le t_{here}
+    .. math:: \frac{k}{m} \sum_{j \le m} t_j \le t_{here}
 
-    (``here_s``). A cheap study then needs no cluster: its values are not sent to a
-    worker and back, which cost a 10⁶-point preload study more of the service's CPU than
-    its evaluation (7.5 MB of values a chunk over TLS). Chunks of one-by-one points (a
-    simulation per point, up to a chunk's budget each) go to ``remote()`` from the first:
-    only array-path chunks (more than ``LOOP_CHUNK`` points) are timed here, at most
-    ``VECTOR_CHUNK`` points of the array path. The chunks are the same whichever runs
-    them, so the values are too (bit for bit).
+    (``here_s``), and all that are left go to ``remote()`` once it is not. A cheap study
+    then needs no cluster: its values are not sent to a worker and back, which cost a
+    10⁶-point preload study more of the service's CPU than its evaluation (7.5 MB of
+    values a chunk over TLS). The time here stays below :math:`t_{here}` and one chunk,
+    even where the first chunks are cheaper than the others (designs given in an order).
+    Only a study whose every point is on the array path (:func:`array_only`: a named
+    array rung, or ``auto`` on a model without a looped rung) runs here at all: an
+    ``auto`` study's chunk may simulate some of its points one by one (up to a chunk's
+    budget), and it goes to ``remote()`` from the first. The chunks are the same whichever
+    runs them, so the values are too (bit for bit).
     """
 
-    def __init__(self, remote: Callable[[], Executor], here_s: float) -> None:
+    def __init__(
+        self,
+        remote: Callable[[], Executor],
+        here_s: float,
+        clock: Callable[[], float] = time.perf_counter,
+    ) -> None:
         self.remote = remote
         self.here_s = here_s
-        #: Where the study's chunks after the first ran: "here" or "remote" (None: not yet).
-        self.rest: str | None = None
+        self.clock = clock
+        #: The study's chunks that ran in the calling thread.
+        self.here = 0
 
     def map(
         self, calls: list[ChunkArgs], cancel: threading.Event, budget: Budget | None = None
     ) -> Iterator[tuple[int, ChunkResult]]:
-        here = InProcess()
-        first = calls[:1] if _array_chunks(calls) and self.here_s > 0 else []
-        t0 = time.perf_counter()
-        yield from here.map(first, cancel, budget)
-        spent = time.perf_counter() - t0
-        rest = calls[len(first) :]
-        if not rest or (first and cancel.is_set()):
+        k = len(calls)
+        spent = 0.0
+        if self.here_s > 0 and calls and array_only(*_asked(calls[0])):
+            here = InProcess()
+            while self.here < k:
+                i = self.here
+                t0 = self.clock()
+                for _, part in here.map(calls[i : i + 1], cancel, budget):
+                    yield i, part
+                spent += self.clock() - t0
+                if cancel.is_set():
+                    return
+                self.here += 1
+                if spent / self.here * k > self.here_s:
+                    break
+        if self.here == k:
             return
-        cheap = bool(first) and spent * len(calls) <= self.here_s
-        self.rest = "here" if cheap else "remote"
-        runner = here if cheap else self.remote()
-        for i, part in runner.map(rest, cancel, budget):
-            yield i + len(first), part
+        m = self.here
+        for i, part in self.remote().map(calls[m:], cancel, budget):
+            yield i + m, part
 
 
-def _array_chunks(calls: list[ChunkArgs]) -> bool:
-    """Whether ``calls`` are array-path chunks: their size (:func:`chunk_size`; the first
-    chunk is a whole one, or the whole study) is above a one-by-one chunk's."""
-    return bool(calls) and len(next(iter(calls[0][2].values()), ())) > LOOP_CHUNK
+def _asked(args: ChunkArgs) -> tuple[ModelSpec | str, str | None, float | None]:
+    """A chunk's model, fidelity and tolerance."""
+    return args[0], args[4], args[5]
+
+
+def _rung(spec: ModelSpec, fidelity: str | None, tolerance: float | None) -> str:
+    """The rung a study asks for: the one named, ``auto`` with a tolerance, or the model's
+    default."""
+    return fidelity or ("auto" if tolerance is not None else spec.default_fidelity)
+
+
+def array_only(spec: ModelSpec | str, fidelity: str | None, tolerance: float | None) -> bool:
+    """Whether every point of a study of ``spec`` asked at ``fidelity`` (or ``auto`` at
+    ``tolerance``) is computed on the array path: its rung is an array rung, or ``auto``
+    on a model all of whose rungs are (a model named by its name: not known here, False).
+    """
+    if isinstance(spec, str) or spec.vectorized is None:
+        return False
+    rung = _rung(spec, fidelity, tolerance)
+    if rung != "auto":
+        return rung in spec.vector_rungs
+    return set(spec.rung_names) <= set(spec.vector_rungs)
 
 
 class RemoteCancel(threading.Event):
@@ -643,7 +678,7 @@ def chunk_size(spec: ModelSpec, study: Study, planned: Plan | None = None) -> in
     ``PROBE_POINTS`` points takes such a rung (:func:`engine.core.runner.prepare`, the
     rung a single run would choose), its chunks are the looped ones.
     """
-    rung = study.fidelity or ("auto" if study.tolerance is not None else spec.default_fidelity)
+    rung = _rung(spec, study.fidelity, study.tolerance)
     if spec.vectorized is None:
         return LOOP_CHUNK
     if rung != "auto":

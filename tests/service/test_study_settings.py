@@ -56,6 +56,12 @@ def test_good_values_are_read(monkeypatch: pytest.MonkeyPatch) -> None:
         ),
         (
             "STUDY_INPROCESS_S",
+            "nan",
+            "STUDY_INPROCESS_S must be a number of seconds >= 0 (0: every study of more than "
+            "STUDY_INPROCESS_POINTS points on Dask), not nan",
+        ),
+        (
+            "STUDY_INPROCESS_S",
             "inf",
             "STUDY_INPROCESS_S must be a number of seconds >= 0 (0: every study of more than "
             "STUDY_INPROCESS_POINTS points on Dask), not inf",

@@ -1,5 +1,6 @@
-"""A large array-path study times its first chunk here and stays here when that says the whole
-is cheap; a dear or one-by-one study goes to the remote executor, chunk for chunk the same."""
+"""A large array-path study runs here while its chunks show the whole cheap; a dear one goes
+to the remote executor once they do not, and a study that may simulate points one by one goes
+there from the first: chunk for chunk the same values."""
 
 from __future__ import annotations
 
@@ -18,6 +19,7 @@ from engine.studies.execute import (
     HereIfCheap,
     InProcess,
     StudyRun,
+    array_only,
     run_study,
 )
 from engine.studies.plan import ChunkResult, Study, Variable
@@ -72,15 +74,27 @@ def test_a_cheap_study_stays_here_and_never_asks_for_the_cluster(reference: Stud
 
     executor = HereIfCheap(remote, here_s=60.0)
     _same(run_study(SPEC, _study(SAMPLES), executor), reference)
-    assert executor.rest == "here"
+    assert executor.here == 4
 
 
 def test_a_dear_study_sends_every_chunk_after_the_first_once(reference: StudyRun) -> None:
     recorder = Recorder()
     executor = HereIfCheap(lambda: recorder, here_s=1e-9)  # no chunk is that fast
     _same(run_study(SPEC, _study(SAMPLES), executor), reference)
-    assert executor.rest == "remote"
+    assert executor.here == 1
     assert recorder.sizes == [VECTOR_CHUNK, VECTOR_CHUNK, 1000]
+
+
+def test_chunks_dearer_than_the_first_go_remote_once_they_show_it(reference: StudyRun) -> None:
+    """Designs in a given order, the first chunks cheap: the time here stays within the
+    limit and one chunk (on the first chunk alone it would stay here for all four)."""
+    ticks = iter([0.0, 0.01, 0.01, 0.51, 0.51, 1.51])  # chunks of 0.01 s, then 0.5 s
+    recorder = Recorder()
+    executor = HereIfCheap(lambda: recorder, here_s=1.0, clock=lambda: next(ticks))
+    _same(run_study(SPEC, _study(SAMPLES), executor), reference)
+    # after two chunks: 0.51 s / 2 x 4 chunks = 1.02 s > 1 s
+    assert executor.here == 2
+    assert recorder.sizes == [VECTOR_CHUNK, 1000]
 
 
 def test_with_no_time_here_every_chunk_goes_to_the_remote(reference: StudyRun) -> None:
@@ -88,6 +102,7 @@ def test_with_no_time_here_every_chunk_goes_to_the_remote(reference: StudyRun) -
     executor = HereIfCheap(lambda: recorder, here_s=0.0)
     _same(run_study(SPEC, _study(SAMPLES), executor), reference)
     assert recorder.sizes == [VECTOR_CHUNK, VECTOR_CHUNK, VECTOR_CHUNK, 1000]
+    assert executor.here == 0
 
 
 def test_one_by_one_chunks_are_never_run_here() -> None:
@@ -112,7 +127,47 @@ def test_one_by_one_chunks_are_never_run_here() -> None:
     executor = HereIfCheap(lambda: recorder, here_s=1e9)
     _same(run_study(spec, study, executor), run_study(spec, study, InProcess()))
     assert recorder.sizes == [LOOP_CHUNK, 4]
-    assert executor.rest == "remote"
+    assert executor.here == 0
+
+
+def test_an_auto_study_that_may_simulate_is_never_run_here() -> None:
+    """At a tolerance, impact.rare's points take the closed form or the simulation: its
+    chunks are of the array path's size (its first points take the closed form) and
+    might still simulate some of their 65,536 points one by one, for minutes."""
+    spec = engine.get_model("impact.rare")
+    ex = dict(spec.examples[0])
+    rate = ex.pop("power_spring_rate")
+    study = Study(
+        variables=(Variable("power_spring_rate", "uniform", low=rate, high=1.5 * rate),),
+        base=ex,
+        samples=VECTOR_CHUNK + 10,
+        seed=3,
+        tolerance=0.05,
+    )
+    recorder = Recorder()
+    executor = HereIfCheap(lambda: recorder, here_s=1e9)
+    run = run_study(spec, study, executor)
+    assert recorder.sizes == [VECTOR_CHUNK, 10]  # array-path chunks, all sent
+    assert executor.here == 0
+    assert run.summary["points"] == VECTOR_CHUNK + 10
+
+
+@pytest.mark.parametrize(
+    ("model", "fidelity", "tolerance", "expected"),
+    [
+        ("preload.tightening", "closed_form", None, True),
+        ("preload.tightening", None, None, True),
+        ("impact.rare", "closed_form", None, True),
+        ("impact.rare", "simulation", None, False),
+        ("impact.rare", None, 0.05, False),  # auto: some points may be simulated
+        ("impact.rare", "closed_form", 0.05, True),  # the rung named: no fallback
+    ],
+)
+def test_which_studies_are_on_the_array_path_alone(
+    model: str, fidelity: str | None, tolerance: float | None, expected: bool
+) -> None:
+    assert array_only(engine.get_model(model), fidelity, tolerance) is expected
+    assert array_only(model, fidelity, tolerance) is False  # a name: not known here
 
 
 def test_a_study_cancelled_in_its_first_chunk_starts_no_cluster() -> None:
@@ -128,4 +183,4 @@ def test_a_study_cancelled_in_its_first_chunk_starts_no_cluster() -> None:
     executor = HereIfCheap(remote, here_s=1e-9)
     with pytest.raises(engine.EngineError, match="cancelled after 65536 of"):
         run_study(SPEC, _study(SAMPLES), executor, progress=progress, cancel=cancel)
-    assert executor.rest is None
+    assert executor.here == 0  # cancelled as its first chunk came in: nothing more here
