@@ -549,8 +549,8 @@ def http_vs_inprocess(
     default settings, its local Dask cluster started and warm (a simulation study sent there
     first), against the same study run in this process
     (:class:`~engine.studies.execute.InProcess`), in wall seconds, alternating, medians of
-    ``rounds``. The service keeps a study in its job thread when the first chunk shows the
-    whole cheap (``STUDY_INPROCESS_S``): this one is.
+    ``rounds``. The service keeps a study on the array path in its job thread while its
+    chunks show the whole cheap (``STUDY_INPROCESS_S``): this one is.
 
     Beside it, in the same rounds, the same study through a second service that sends every
     study past ``STUDY_INPROCESS_POINTS`` to its (warm) cluster (``STUDY_INPROCESS_S=0``):
@@ -583,8 +583,8 @@ def http_vs_inprocess(
                     n,
                     f"HTTP {t_http:.2f} s, in-process {t_local:.2f} s (wall, medians of "
                     f"{rounds}), HTTP/in-process ×{ratio:.2f} (target ≤ ×{HTTP_RATIO_TARGET:g}; "
-                    "the service's default settings, its cluster warm: the study's first "
-                    "chunk showed it cheap, and it ran in the job thread); the same study "
+                    "the service's default settings, its cluster warm: the study's chunks "
+                    "showed it cheap, and it ran in the job thread); the same study "
                     f"sent to the warm cluster (STUDY_INPROCESS_S=0) {t_dask:.2f} s, "
                     f"×{t_dask / t_local:.2f}; load average {os.getloadavg()[0]:.1f}",
                     http_s=t_http,
