@@ -2083,7 +2083,7 @@ class _Run:
         while True:
             if self.deadline is not None and time.perf_counter() > self.deadline:
                 raise self.past_deadline()
-            iw[_I_USED] = iw[_I_LONG] = 0
+            iw[_I_LONG] = 0
             before = self.steps
             began = time.perf_counter()
             code = self.driver()(self.p, c, pu, jac, fw, iw, flags, *bufs, parts)
@@ -2507,15 +2507,15 @@ _F_N = _F_V + 4
 # ... and its integers: the phase (below), the phase after the running stage's events,
 # the mode, the loop's rounds, the kernel's status and event, steps, step budget, event
 # rows, stride, points in the running buffer, the next free point, recorded parts,
-# recording, the cycle kernel's steps of this call, whether the one-sided stage 3 ran,
-# the plastic stop under q0 (stage 1's rest), whether the call came back after a chunk of
-# 10,000 steps or more; the labels of stage 3's event rows; the kinds of the event rows;
-# the one-sided stage 3's ``st``
+# recording, whether the one-sided stage 3 ran, the plastic stop under q0 (stage 1's
+# rest), whether the call came back after a chunk of 10,000 steps or more; the labels of
+# stage 3's event rows; the kinds of the event rows; the one-sided stage 3's ``st``
 (_I_PHASE, _I_AFTER, _I_MODE, _I_ROUND, _I_STATUS, _I_WHICH, _I_STEPS, _I_MAX, _I_NEV,
- _I_STRIDE, _I_NREC, _I_BASE, _I_PARTS, _I_REC, _I_USED, _I_ONE_SIDED, _I_CLAMP,
- _I_LONG) = range(18)  # fmt: skip
-_I_LABEL, _I_KIND = 18, 18 + _EV
-_I_U = 18 + 2 * _EV
+ _I_STRIDE, _I_NREC, _I_BASE, _I_PARTS, _I_REC, _I_ONE_SIDED, _I_CLAMP,
+ _I_LONG) = range(17)  # fmt: skip
+_I_LABEL = _I_LONG + 1
+_I_KIND = _I_LABEL + _EV
+_I_U = _I_LABEL + 2 * _EV
 _I_N = _I_U + _U_NI
 # phases: a stage's kernel running; stage 1's start and event; stage 2's start, round and
 # event; the end of stage 2; stage 3's start, round and event; the one-sided stage 3's start
@@ -2623,7 +2623,6 @@ def _stages(p, c, pu, jac, fw, iw, flags, rt, rw, rq0, rq1, parts):  # type: ign
             )  # fmt: skip
             fw[_F_T], fw[_F_W], fw[_F_Q0], fw[_F_Q1], fw[_F_V0], fw[_F_V1] = t, w, q0, q1, v0, v1
             iw[_I_STEPS] += used
-            iw[_I_USED] += used
             iw[_I_NREC] = n_rec
             iw[_I_LONG] = 1 if used >= MEASURED_STEPS else 0
             if status == 0:
