@@ -226,8 +226,8 @@ class HereIfCheap:
     on ``remote()`` (Dask).
 
     With :math:`t_j` the wall time of the :math:`j`-th chunk run in the calling thread
-    (evaluated and summarised), :math:`m` the chunks run here so far and :math:`k` the
-    study's chunks, the next chunk runs here while
+    (evaluated, summarised, and taken in by the study), :math:`m` the chunks run here so
+    far and :math:`k` the study's chunks, the next chunk runs here while
 
     .. math:: \frac{k}{m} \sum_{j \le m} t_j \le t_{here}
 
@@ -678,14 +678,13 @@ def chunk_size(spec: ModelSpec, study: Study, planned: Plan | None = None) -> in
     ``PROBE_POINTS`` points takes such a rung (:func:`engine.core.runner.prepare`, the
     rung a single run would choose), its chunks are the looped ones.
     """
-    rung = _rung(spec, study.fidelity, study.tolerance)
-    if spec.vectorized is None:
-        return LOOP_CHUNK
-    if rung != "auto":
-        return VECTOR_CHUNK if rung in spec.vector_rungs else LOOP_CHUNK
-    looped = set(spec.rung_names) - set(spec.vector_rungs)
-    if not looped or planned is None:
+    if array_only(spec, study.fidelity, study.tolerance):
         return VECTOR_CHUNK
+    if spec.vectorized is None or _rung(spec, study.fidelity, study.tolerance) != "auto":
+        return LOOP_CHUNK
+    if planned is None:
+        return VECTOR_CHUNK
+    looped = set(spec.rung_names) - set(spec.vector_rungs)
     return LOOP_CHUNK if _loops(spec, study, planned, looped) else VECTOR_CHUNK
 
 
