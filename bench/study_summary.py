@@ -66,6 +66,7 @@ import numpy as np
 from scipy import special
 
 import engine
+from bench import shopfloor
 from bench.extra_joint import monte_carlo as joint_monte_carlo
 from engine.physics import preload as pl
 from engine.studies.execute import ChunkArgs, chunk_size, run_study
@@ -100,6 +101,7 @@ MEMORY_TARGET = 1.5
 ROUNDS = 3
 
 PRELOAD = engine.get_model("preload.tightening")
+RARE = engine.get_model("impact.rare")
 #: μ_G's box and μ_K's mean and standard deviation in the preload study.
 MU_G = (0.08, 0.16)
 MU_K = (0.12, 0.012)
@@ -525,23 +527,6 @@ def _service(**env_extra: str) -> Iterator[str]:
             proc.kill()
 
 
-RARE = engine.get_model("impact.rare")
-
-
-def _dear_body(n: int = 2_100) -> dict[str, Any]:
-    """A study the service sends to its cluster: striker designs simulated one by one (the
-    reference design's power spring ±10 %), over ``STUDY_INPROCESS_POINTS``."""
-    ex = dict(RARE.examples[0])
-    rate = float(ex.pop("power_spring_rate"))
-    return {
-        "base": ex,
-        "variables": [{"name": "power_spring_rate", "low": 0.9 * rate, "high": 1.1 * rate}],
-        "samples": n,
-        "seed": 1,
-        "fidelity": "simulation",
-    }
-
-
 def http_vs_inprocess(
     sizes: tuple[int, ...] = (100_000, POINTS), rounds: int = 3
 ) -> list[dict[str, Any]]:
@@ -560,7 +545,8 @@ def http_vs_inprocess(
         _service() as url,
         _service(STUDY_INPROCESS_S="0") as url_dask,
     ):
-        _http_study(url, RARE.path, _dear_body())  # the default service's cluster, warm
+        # the default service's cluster, warm: a simulation study over STUDY_INPROCESS_POINTS
+        _http_study(url, RARE.path, shopfloor.rare_study(2_100))
         _http_study(url_dask, PRELOAD.path, _body(preload_study(20_000)))
         for n in sizes:
             study = preload_study(n)
